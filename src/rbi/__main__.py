@@ -1,0 +1,3 @@
+from rbi.cli.app import main
+
+main()

@@ -1,0 +1,62 @@
+"""The typer application: registers each command and turns input errors into exit status 2.
+
+Command modules import their heavy dependencies (scipy, numba, matplotlib) inside the
+command functions, so ``rbi inertia`` never pays for the integrator.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+
+import typer
+
+from rbi import __version__
+from rbi.cli import mass_commands
+from rbi.spec.errors import InputError
+
+app = typer.Typer(
+    name="rbi",
+    help="Rigid-body calculator: mass properties, principal axes, momentum and motion of a body "
+         "described in a YAML spec. Every command takes --format table|json|csv.",
+    no_args_is_help=True,
+    add_completion=False,
+    pretty_exceptions_enable=False,
+    rich_markup_mode=None,
+    context_settings={"help_option_names": ["-h", "--help"]},
+)
+
+
+def _version(value: bool) -> None:
+    if value:
+        print(f"rbi {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def _root(
+    version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Print the version and exit."),
+) -> None:
+    """Rigid-body calculator."""
+
+
+app.command("inertia")(mass_commands.inertia)
+app.command("principal")(mass_commands.principal)
+app.command("momentum")(mass_commands.momentum)
+
+
+def main() -> None:
+    """Console entry point: exit 2 with one line on bad input, never a traceback."""
+    try:
+        app()
+    except InputError as exc:
+        print(f"rbi: {exc}", file=sys.stderr)
+        sys.exit(2)
+    except KeyboardInterrupt:
+        print("rbi: interrupted", file=sys.stderr)
+        sys.exit(130)
+    except Exception as exc:  # a bug, not bad input: say so on one line unless debugging
+        if os.environ.get("RBI_DEBUG"):
+            raise
+        print(f"rbi: internal error: {type(exc).__name__}: {exc} (RBI_DEBUG=1 shows the traceback)", file=sys.stderr)
+        sys.exit(1)

@@ -1,0 +1,162 @@
+"""`rbi inertia`, `rbi principal`, `rbi momentum`: mass properties of a body."""
+
+from __future__ import annotations
+
+from typing import Annotated, Optional
+
+import numpy as np
+import typer
+
+from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_rotation, parse_vector
+from rbi.cli.render import emit, number
+
+
+def _header(body, about_label: str, about_point) -> dict:
+    return {
+        "name": body.name,
+        "units": body.units,
+        "mass": body.props.mass,
+        "center_of_mass": body.props.com,
+        "about": about_point,
+        "about_label": about_label,
+    }
+
+
+def inertia(
+    file: SpecFile,
+    about: AboutOption = "com",
+    rotate: Annotated[
+        Optional[list[str]],
+        typer.Option("--rotate", "-r", metavar="AXIS:DEG",
+                     help="Turn the body about a world axis (x, y or z) by DEG degrees; repeat to chain, "
+                          "applied in order. The inertia is then given in world axes: R I Rᵀ."),
+    ] = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
+    """Mass, centre of mass and the inertia matrix about a point, in body or rotated axes."""
+    from rbi.core.inertia import inertia_about, re_express
+    from rbi.core.rotation import compose_world_rotations
+    from rbi.spec.load import load_body
+
+    turns = [parse_rotation(r) for r in rotate or []]
+    body = load_body(file)
+    about_label, point = parse_about(about, body)
+    I = inertia_about(body.props, point) if about_label != "com" else body.props.inertia_com
+    if turns:
+        I = re_express(I, compose_world_rotations(turns))
+    result = _header(body, about_label, point) | {
+        "frame": "world (rotated)" if turns else "body",
+        "rotations": [f"{a}:{np.degrees(t):g}" for a, t in turns],
+        "inertia": I,
+    }
+
+    def table():
+        from rbi.cli import tables
+
+        labels = body.labels
+        frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
+        return tables.stack(
+            tables.quantities(_title(body, "inertia"), [
+                ("mass", labels["mass"], number(body.props.mass, 8)),
+                ("centre of mass", labels["length"], tables.vector(body.props.com)),
+                (f"about ({about_label})", labels["length"], tables.vector(point)),
+            ]),
+            tables.matrix(f"Inertia about {about_label}, {frame}", I, labels["inertia"]),
+        )
+
+    emit(format.value, result, table)
+
+
+def principal(file: SpecFile, about: AboutOption = "com", format: FormatOption = OutputFormat.table) -> None:
+    """Principal moments (ascending) and axes (unit, right-handed, body frame)."""
+    from rbi.core.inertia import inertia_about, principal_axes
+    from rbi.spec.load import load_body
+
+    body = load_body(file)
+    about_label, point = parse_about(about, body)
+    I = inertia_about(body.props, point) if about_label != "com" else body.props.inertia_com
+    moments, axes = principal_axes(I)
+    result = _header(body, about_label, point) | {"moments": moments, "axes": axes}
+
+    def table():
+        from rich import box
+        from rich.table import Table
+
+        from rbi.cli import tables
+        from rbi.cli.render import matrix_digits
+
+        labels = body.labels
+        scale, scale_text = matrix_digits(moments)
+        t = Table(title=f"Principal axes about {about_label} (body frame)", box=box.SIMPLE_HEAD,
+                  title_justify="left", show_edge=False)
+        t.add_column("#")
+        t.add_column(tables.unit_header("moment", labels["inertia"], scale_text), justify="right")
+        for c in "xyz":
+            t.add_column(f"axis {c}", justify="right")
+        for i, (m, a) in enumerate(zip(moments, axes), start=1):
+            t.add_row(f"I{i}", number(m / scale, 7), *(number(v, 7) for v in a))
+        return tables.stack(
+            tables.quantities(_title(body, "principal"), [
+                ("mass", labels["mass"], number(body.props.mass, 8)),
+                ("centre of mass", labels["length"], tables.vector(body.props.com)),
+                (f"about ({about_label})", labels["length"], tables.vector(point)),
+            ]),
+            t,
+        )
+
+    emit(format.value, result, table)
+
+
+def momentum(
+    file: SpecFile,
+    omega: Annotated[str, typer.Option("--omega", "-w", metavar="WX,WY,WZ",
+                                       help="Angular velocity in body axes, rad/s.", show_default=False)],
+    about: AboutOption = "com",
+    velocity: Annotated[Optional[str], typer.Option(
+        "--velocity", "-v", metavar="VX,VY,VZ",
+        help="Velocity of the centre of mass (body axes, file length unit/s). Without it the "
+             "--about point is taken as fixed, so the body turns about it.")] = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
+    """Angular momentum h, its angle to ω, and kinetic energy."""
+    from rbi.core.dynamics import angle_between_deg, angular_momentum_about_point, kinetic_energy
+    from rbi.spec.load import load_body
+
+    w = np.array(parse_vector(omega, "--omega"))
+    v_given = None if velocity is None else np.array(parse_vector(velocity, "--velocity"))
+    body = load_body(file)
+    about_label, point = parse_about(about, body)
+    props = body.props
+    com_from_point = props.com - np.asarray(point)
+    # Without a given velocity the reference point is fixed: v_c = ω × r_{c/o} (zero at the CoM).
+    v_com = v_given if v_given is not None else np.cross(w, com_from_point)
+    h = angular_momentum_about_point(props.inertia_com, props.mass, com_from_point, w, v_com)
+    energy = kinetic_energy(props.inertia_com, w, props.mass, v_com)
+    result = _header(body, about_label, point) | {
+        "omega": w,
+        "com_velocity": v_com,
+        "angular_momentum": h,
+        "angle_deg": angle_between_deg(h, w),
+        "kinetic_energy": energy,
+    }
+
+    def table():
+        from rbi.cli import tables
+
+        labels = body.labels
+        return tables.quantities(_title(body, f"momentum about {about_label}"), [
+            ("mass", labels["mass"], number(props.mass, 8)),
+            ("centre of mass", labels["length"], tables.vector(props.com)),
+            (f"about ({about_label})", labels["length"], tables.vector(point)),
+            ("ω (body axes)", "rad/s", tables.vector(w)),
+            ("v of centre of mass", labels["velocity"], tables.vector(v_com)),
+            ("angular momentum h", labels["angular_momentum"], tables.vector(h)),
+            ("angle between h and ω", "deg", number(result["angle_deg"], 6)),
+            ("kinetic energy", labels["energy"], number(energy, 8)),
+        ])
+
+    emit(format.value, result, table)
+
+
+def _title(body, what: str) -> str:
+    return f"{body.name or body.path} — {what}"

@@ -1,0 +1,146 @@
+"""Rendering: JSON, CSV and rich tables. The only module that formats numbers."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+import sys
+from typing import Any, Callable, Iterable
+
+import numpy as np
+
+
+def plain(value: Any) -> Any:
+    """Recursively turn numpy arrays and scalars into plain Python lists, floats and ints.
+
+    ``-0.0`` becomes ``0.0``; JSON then carries each float's shortest round-tripping repr.
+    """
+    if isinstance(value, dict):
+        return {k: plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [plain(v) for v in value]
+    if isinstance(value, np.ndarray):
+        return plain(value.tolist())
+    if isinstance(value, (np.floating, float)):
+        f = float(value)
+        return 0.0 if f == 0.0 else f
+    if isinstance(value, np.integer):
+        return int(value)
+    if isinstance(value, np.bool_):
+        return bool(value)
+    return value
+
+
+def to_json(result: dict[str, Any]) -> str:
+    """One JSON object; non-finite floats become null (JSON has no NaN)."""
+    return json.dumps(_finite_or_none(plain(result)))
+
+
+def _finite_or_none(value: Any) -> Any:
+    if isinstance(value, dict):
+        return {k: _finite_or_none(v) for k, v in value.items()}
+    if isinstance(value, list):
+        return [_finite_or_none(v) for v in value]
+    if isinstance(value, float) and not math.isfinite(value):
+        return None
+    return value
+
+
+_XYZ = ("x", "y", "z")
+
+
+def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Flatten nested results into CSV columns: vectors get ``_x/_y/_z``, 3×3 matrices
+    ``_xx … _zz``, nested mappings ``outer_inner``, other lists ``_1, _2, …``."""
+    out: dict[str, Any] = {}
+    for key, value in plain(result).items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(flatten(value, prefix=f"{name}_"))
+        elif isinstance(value, list) and len(value) == 3 and all(isinstance(r, list) and len(r) == 3 for r in value):
+            if key == "axes":
+                for i, row in enumerate(value):
+                    for axis, v in zip(_XYZ, row):
+                        out[f"{name}_{i + 1}_{axis}"] = v
+            else:
+                for i, row in enumerate(value):
+                    for j, v in enumerate(row):
+                        out[f"{name}_{_XYZ[i]}{_XYZ[j]}"] = v
+        elif isinstance(value, list) and len(value) == 3 and not any(isinstance(v, list) for v in value) and key != "moments":
+            for axis, v in zip(_XYZ, value):
+                out[f"{name}_{axis}"] = v
+        elif isinstance(value, list):
+            for i, v in enumerate(value):
+                out[f"{name}_{i + 1}"] = v
+        else:
+            out[name] = value
+    return out
+
+
+def to_csv(rows: Iterable[dict[str, Any]]) -> str:
+    """CSV text: a header row from the first row's (flattened) keys, then one line a row."""
+    rows = [flatten(r) for r in rows]
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    if rows:
+        writer.writerow(rows[0].keys())
+        for row in rows:
+            writer.writerow(["" if v is None else repr(v) if isinstance(v, float) else v for v in row.values()])
+    return buffer.getvalue()
+
+
+def number(value: float | None, digits: int = 6) -> str:
+    """A number for people: ``digits`` significant figures, no noise like ``-0``."""
+    if value is None:
+        return "—"
+    value = float(value)
+    if value == 0.0:
+        return "0"
+    if not math.isfinite(value):
+        return str(value)
+    return f"{value:.{digits}g}"
+
+
+def matrix_digits(matrix) -> tuple[float, str]:
+    """A common power-of-ten scale for a matrix, so a table can print ``×10⁻⁶`` once."""
+    peak = float(np.max(np.abs(matrix))) if np.size(matrix) else 0.0
+    if peak == 0.0 or 1e-3 <= peak < 1e4:
+        return 1.0, ""
+    exponent = int(math.floor(math.log10(peak)))
+    return 10.0 ** exponent, f"×10{_superscript(exponent)}"
+
+
+_SUPER = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
+
+
+def _superscript(n: int) -> str:
+    return str(n).translate(_SUPER)
+
+
+def stdout_console():
+    from rich.console import Console
+
+    return Console(highlight=False, soft_wrap=False)
+
+
+def stderr_console():
+    from rich.console import Console
+
+    return Console(stderr=True, highlight=False)
+
+
+def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None) -> None:
+    """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
+    lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``."""
+    if fmt == "json":
+        sys.stdout.write(to_json(result) + "\n")
+    elif fmt == "csv":
+        sys.stdout.write(to_csv(csv_rows if csv_rows is not None else [result]))
+    else:
+        stdout_console().print(table())
+
+
+def vector_text(v, digits: int = 6) -> str:
+    return "[" + ", ".join(number(x, digits) for x in np.asarray(v, dtype=float)) + "]"

@@ -1,0 +1,52 @@
+"""Rich building blocks shared by the commands' tables (imported only for table output)."""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+import numpy as np
+from rich import box
+from rich.console import Group
+from rich.markup import escape
+from rich.table import Table
+
+from rbi.cli.render import matrix_digits, number, vector_text
+
+
+def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
+    """A table of (quantity, unit, value) rows."""
+    table = Table(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    table.add_column("quantity")
+    rows = [(name, escape(unit), escape(value)) for name, unit, value in rows]
+    table.add_column("unit", style="dim")
+    table.add_column("value", justify="right")
+    for name, unit, value in rows:
+        table.add_row(name, unit, value)
+    return table
+
+
+def matrix(title: str, values, unit: str, row_labels: Sequence[str] = ("x", "y", "z"),
+           column_labels: Sequence[str] = ("x", "y", "z")) -> Table:
+    """A 3×3 matrix with a common power-of-ten scale written once in the title."""
+    values = np.asarray(values, dtype=float)
+    scale, scale_text = matrix_digits(values)
+    table = Table(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    table.add_column(unit_header("", unit, scale_text).strip(), style="bold")
+    for label in column_labels:
+        table.add_column(label, justify="right")
+    for label, row in zip(row_labels, values):
+        table.add_row(label, *(number(v / scale, 7) for v in row))
+    return table
+
+
+def unit_header(label: str, unit: str, scale_text: str = "") -> str:
+    """A column header such as ``moment [kg·m²] ×10⁻⁴`` (brackets escaped from rich markup)."""
+    return escape(f"{label} [{unit}]") + (f" {scale_text}" if scale_text else "")
+
+
+def stack(*renderables) -> Group:
+    return Group(*renderables)
+
+
+def vector(v) -> str:
+    return vector_text(v)

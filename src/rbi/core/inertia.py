@@ -1,0 +1,206 @@
+"""Assembling parts into a body, moving the reference point, turning the frame, principal axes.
+
+Conventions: ``I = ∫ (|r|² E − r rᵀ) dm`` (products of inertia carry a minus sign);
+``R`` always maps body coordinates to world coordinates.
+"""
+
+from __future__ import annotations
+
+from typing import Iterable, NamedTuple
+
+import numpy as np
+
+from rbi.core.shapes import MassElement
+
+
+class MassProperties(NamedTuple):
+    """A rigid body's mass properties.
+
+    mass: M. com: centre of mass, body frame, L. inertia_com: inertia about ``com`` in body
+    axes, M·L².
+    """
+
+    mass: float
+    com: np.ndarray
+    inertia_com: np.ndarray
+
+
+def point_mass_inertia(mass: float, offset: np.ndarray) -> np.ndarray:
+    """Inertia ``m (|r|² E − r rᵀ)`` of a point mass at ``offset`` from the reference point."""
+    r = np.asarray(offset, dtype=float)
+    return mass * (np.dot(r, r) * np.eye(3) - np.outer(r, r))
+
+
+def parallel_axis(inertia_com: np.ndarray, mass: float, offset: np.ndarray) -> np.ndarray:
+    """Inertia about a point ``offset`` away from the centre of mass (parallel-axis theorem).
+
+    ``inertia_com`` is about the centre of mass; the result has the same axes. Only the length
+    and direction of the offset matter, not its sign.
+    """
+    return np.asarray(inertia_com, dtype=float) + point_mass_inertia(mass, offset)
+
+
+def parallel_axis_to_com(inertia_about_point: np.ndarray, mass: float, offset: np.ndarray) -> np.ndarray:
+    """Inverse of :func:`parallel_axis`: inertia about the centre of mass from that about a
+    point ``offset`` away from it."""
+    return np.asarray(inertia_about_point, dtype=float) - point_mass_inertia(mass, offset)
+
+
+def centre_of_mass(masses: np.ndarray, positions: np.ndarray) -> np.ndarray:
+    """Mass-weighted mean of ``positions`` (N×3), accurate far from the origin.
+
+    Positions are averaged relative to the heaviest part, then one correction pass removes
+    the rounding left over, so that a small body 1 km from the origin keeps its digits.
+    """
+    m = np.asarray(masses, dtype=float)
+    p = np.asarray(positions, dtype=float).reshape(-1, 3)
+    total = m.sum()
+    reference = p[int(np.argmax(np.abs(m)))]
+    com = reference + (m @ (p - reference)) / total
+    return com + (m @ (p - com)) / total
+
+
+def combine(masses: np.ndarray, coms: np.ndarray, inertias_com: np.ndarray | None = None) -> MassProperties:
+    """Mass properties of a body made of parts.
+
+    masses: (N,) M (a negative mass removes material). coms: (N, 3) each part's centre of
+    mass, body frame, L. inertias_com: (N, 3, 3) each part about its own centre of mass,
+    M·L², or None when every part is a point mass. Each part is shifted straight to the
+    body's centre of mass, so only the small offsets between nearby points enter.
+    """
+    m = np.asarray(masses, dtype=float).reshape(-1)
+    c = np.asarray(coms, dtype=float).reshape(-1, 3)
+    total = float(m.sum())
+    if not total > 0.0:
+        raise ValueError(f"total mass must be positive, got {total!r}")
+    com = centre_of_mass(m, c)
+    d = c - com
+    second_moment = (d * m[:, None]).T @ d  # Σ m d dᵀ
+    inertia = np.trace(second_moment) * np.eye(3) - second_moment
+    if inertias_com is not None:
+        inertia = inertia + np.asarray(inertias_com, dtype=float).reshape(-1, 3, 3).sum(axis=0)
+    return MassProperties(total, com, symmetrize(inertia))
+
+
+def combine_elements(elements: Iterable[MassElement]) -> MassProperties:
+    """:func:`combine` for a sequence of :class:`MassElement`."""
+    elements = list(elements)
+    return combine(
+        np.array([e.mass for e in elements]),
+        np.array([e.com for e in elements]),
+        np.array([e.inertia_com for e in elements]),
+    )
+
+
+def inertia_about(props: MassProperties, point: np.ndarray) -> np.ndarray:
+    """Inertia about ``point`` (body frame, L) in body axes, M·L²."""
+    offset = np.asarray(point, dtype=float) - props.com
+    return symmetrize(parallel_axis(props.inertia_com, props.mass, offset))
+
+
+def re_express(inertia: np.ndarray, R: np.ndarray) -> np.ndarray:
+    """Inertia in world axes, ``R I Rᵀ``, for a body turned by ``R`` (body -> world)."""
+    R = np.asarray(R, dtype=float)
+    return symmetrize(R @ np.asarray(inertia, dtype=float) @ R.T)
+
+
+def symmetrize(matrix: np.ndarray) -> np.ndarray:
+    """``(A + Aᵀ)/2``: removes the rounding asymmetry of a computed symmetric matrix."""
+    return 0.5 * (matrix + matrix.T)
+
+
+# --- principal axes ------------------------------------------------------------------------
+
+DEGENERATE_RTOL = 1e-9
+"""Moments closer than this (relative to the largest) are treated as equal: their axes are
+then any orthonormal pair of the shared plane, and rbi picks a canonical one."""
+
+
+def principal_axes(inertia: np.ndarray, rtol: float = DEGENERATE_RTOL) -> tuple[np.ndarray, np.ndarray]:
+    """Principal moments (ascending) and axes of a symmetric inertia matrix.
+
+    Returns ``moments`` (3,) and ``axes`` (3, 3) with ``axes[i]`` the unit axis of
+    ``moments[i]``, in the same frame as ``inertia``. The axes always form a right-handed
+    orthonormal set and are chosen deterministically: each axis of a distinct moment points
+    with its largest component positive; where two moments coincide (to ``rtol``) the pair is
+    built from the coordinate axis closest to their shared plane; where all three coincide
+    the axes are the coordinate axes.
+    """
+    moments, vectors = symmetric_eigen(np.asarray(inertia, dtype=float))
+    scale = float(np.max(np.abs(moments))) or 1.0
+    close = np.diff(moments) <= rtol * scale  # close[i]: moments i and i+1 coincide
+    axes = vectors.T.copy()
+    if close.all():
+        return moments, np.eye(3)
+    if close.any():
+        lone = 2 if close[0] else 0
+        u = _canonical_sign(axes[lone])
+        a = _closest_coordinate_axis_in_plane(u)
+        pair = (a, np.cross(u, a))
+        if lone == 2:
+            axes = np.array([pair[0], pair[1], u])
+        else:
+            axes = np.array([u, pair[0], pair[1]])
+        return moments, axes
+    axes[0] = _canonical_sign(axes[0])
+    axes[1] = _canonical_sign(axes[1])
+    third = np.cross(axes[0], axes[1])
+    axes[2] = third / np.linalg.norm(third)
+    return moments, axes
+
+
+def symmetric_eigen(matrix: np.ndarray, max_sweeps: int = 30) -> tuple[np.ndarray, np.ndarray]:
+    """Eigenvalues (ascending) and eigenvectors (columns) of a symmetric 3×3 matrix by cyclic
+    Jacobi rotations.
+
+    Chosen over LAPACK's ``eigh`` for two reasons: an off-diagonal entry that is exactly zero
+    is never touched, so a body symmetric about a coordinate plane gets axes with exact zeros
+    instead of 1e-16 noise; and Jacobi's stopping rule ``|a_pq| ≤ ε·sqrt(a_pp·a_qq)`` keeps
+    small eigenvalues of positive definite matrices accurate relative to themselves.
+    """
+    A = symmetrize(np.array(matrix, dtype=float))
+    V = np.eye(3)
+    eps = np.finfo(float).eps
+    for _ in range(max_sweeps):
+        rotated = False
+        for p, q in ((0, 1), (0, 2), (1, 2)):
+            apq = A[p, q]
+            if apq == 0.0:
+                continue
+            if abs(apq) <= eps * np.sqrt(abs(A[p, p] * A[q, q])):
+                A[p, q] = A[q, p] = 0.0
+                continue
+            theta = (A[q, q] - A[p, p]) / (2.0 * apq)
+            t = np.copysign(1.0, theta) / (abs(theta) + np.sqrt(theta * theta + 1.0))
+            c = 1.0 / np.sqrt(t * t + 1.0)
+            s = t * c
+            J = np.eye(3)
+            J[p, p] = J[q, q] = c
+            J[p, q] = s
+            J[q, p] = -s
+            A = J.T @ A @ J
+            A[p, q] = A[q, p] = 0.0
+            V = V @ J
+            rotated = True
+        if not rotated:
+            break
+    values = np.diag(A).copy()
+    order = np.argsort(values, kind="stable")
+    return values[order], V[:, order]
+
+
+def _canonical_sign(v: np.ndarray) -> np.ndarray:
+    """``v`` or ``-v``: the one whose largest-magnitude component is positive (earliest
+    component wins near-ties, so rounding noise cannot flip the choice)."""
+    magnitudes = np.abs(v)
+    k = int(np.argmax(magnitudes >= magnitudes.max() * (1.0 - 1e-9)))
+    return v if v[k] > 0 else -v
+
+
+def _closest_coordinate_axis_in_plane(normal: np.ndarray) -> np.ndarray:
+    """Unit projection, onto the plane ⟂ ``normal``, of the coordinate axis that lies most in
+    that plane (earliest axis wins near-ties)."""
+    projections = np.eye(3) - np.outer(normal, normal)  # row k: e_k projected onto the plane
+    norms = np.linalg.norm(projections, axis=1)
+    k = int(np.argmax(norms >= norms.max() * (1.0 - 1e-9)))
+    return projections[k] / norms[k]

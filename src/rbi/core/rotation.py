@@ -1,0 +1,120 @@
+"""Rotations: matrices and unit quaternions.
+
+Quaternions are ``[w, x, y, z]`` (scalar first) and map body coordinates to world
+coordinates: ``v_world = quaternion_to_matrix(q) @ v_body``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+_AXES = {"x": 0, "y": 1, "z": 2}
+
+
+def axis_angle_matrix(axis: np.ndarray, angle_rad: float) -> np.ndarray:
+    """Rotation matrix turning vectors by ``angle_rad`` about ``axis`` (right-hand rule).
+
+    ``axis`` need not be normalised but must be non-zero.
+    """
+    u = np.asarray(axis, dtype=float)
+    u = u / np.linalg.norm(u)
+    c, s = np.cos(angle_rad), np.sin(angle_rad)
+    K = skew(u)
+    return c * np.eye(3) + s * K + (1.0 - c) * np.outer(u, u)
+
+
+def elementary_rotation(axis: str, angle_rad: float) -> np.ndarray:
+    """Rotation by ``angle_rad`` about the coordinate axis ``'x'``, ``'y'`` or ``'z'``.
+
+    Built entry by entry so that the untouched axis stays exactly 0/1.
+    """
+    i = _AXES[axis]
+    j, k = (i + 1) % 3, (i + 2) % 3
+    c, s = np.cos(angle_rad), np.sin(angle_rad)
+    R = np.zeros((3, 3))
+    R[i, i] = 1.0
+    R[j, j] = c
+    R[k, k] = c
+    R[k, j] = s
+    R[j, k] = -s
+    return R
+
+
+def compose_world_rotations(rotations: list[tuple[str, float]]) -> np.ndarray:
+    """Matrix of successive turns about fixed world axes, applied in the order given.
+
+    ``[(a1, t1), (a2, t2)]`` gives ``R = R2 @ R1``: the body is first turned by ``t1``
+    about world axis ``a1``, then by ``t2`` about world axis ``a2``. Angles in radians.
+    """
+    R = np.eye(3)
+    for axis, angle in rotations:
+        R = elementary_rotation(axis, angle) @ R
+    return R
+
+
+def skew(v: np.ndarray) -> np.ndarray:
+    """Cross-product matrix ``[v]x`` such that ``skew(v) @ u == np.cross(v, u)``."""
+    x, y, z = v
+    return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
+
+
+def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
+    """Rotation matrix (body -> world) of the quaternion ``q = [w, x, y, z]``.
+
+    ``q`` is normalised first, so a slightly drifted quaternion still gives a rotation.
+    """
+    w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )
+
+
+def quaternion_from_axis_angle(axis: np.ndarray, angle_rad: float) -> np.ndarray:
+    """Unit quaternion ``[w, x, y, z]`` of a turn by ``angle_rad`` about ``axis``."""
+    u = np.asarray(axis, dtype=float)
+    u = u / np.linalg.norm(u)
+    half = 0.5 * angle_rad
+    return np.concatenate(([np.cos(half)], np.sin(half) * u))
+
+
+def quaternion_multiply(p: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """Hamilton product ``p * r`` of two ``[w, x, y, z]`` quaternions."""
+    pw, px, py, pz = p
+    rw, rx, ry, rz = r
+    return np.array(
+        [
+            pw * rw - px * rx - py * ry - pz * rz,
+            pw * rx + px * rw + py * rz - pz * ry,
+            pw * ry - px * rz + py * rw + pz * rx,
+            pw * rz + px * ry - py * rx + pz * rw,
+        ]
+    )
+
+
+def matrix_to_quaternion(R: np.ndarray) -> np.ndarray:
+    """Unit quaternion ``[w, x, y, z]`` (with ``w >= 0``) of a rotation matrix.
+
+    Uses the largest of the four squared components to stay accurate near 180 degrees.
+    """
+    R = np.asarray(R, dtype=float)
+    trace = np.trace(R)
+    candidates = np.array([trace, R[0, 0], R[1, 1], R[2, 2]])
+    k = int(np.argmax(candidates))
+    if k == 0:
+        s = 2.0 * np.sqrt(1.0 + trace)
+        q = np.array([0.25 * s, (R[2, 1] - R[1, 2]) / s, (R[0, 2] - R[2, 0]) / s, (R[1, 0] - R[0, 1]) / s])
+    else:
+        i = k - 1
+        j, m = (i + 1) % 3, (i + 2) % 3
+        s = 2.0 * np.sqrt(1.0 + R[i, i] - R[j, j] - R[m, m])
+        q = np.empty(4)
+        q[0] = (R[m, j] - R[j, m]) / s
+        q[1 + i] = 0.25 * s
+        q[1 + j] = (R[j, i] + R[i, j]) / s
+        q[1 + m] = (R[m, i] + R[i, m]) / s
+    q /= np.linalg.norm(q)
+    return q if q[0] >= 0 else -q

@@ -1,0 +1,1 @@
+"""The body spec: YAML text -> validated pydantic models -> plain core inputs."""

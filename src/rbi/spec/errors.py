@@ -1,0 +1,95 @@
+"""Input errors, each rendered as one line: ``file: part: field: what is wrong``."""
+
+from __future__ import annotations
+
+import difflib
+from typing import Any
+
+
+class InputError(Exception):
+    """Bad input from the user (spec file or command-line value). The CLI prints ``str(self)``
+    on one line and exits with status 2."""
+
+
+def format_location(loc: tuple[Any, ...], raw: Any) -> tuple[str, list[str]]:
+    """Split a pydantic error location into a part label (``parts[1] (stem)``) and the field
+    path inside it. ``raw`` is the parsed YAML, used to find a part's name."""
+    loc = list(loc)
+    part_label = ""
+    if len(loc) >= 2 and loc[0] == "parts" and isinstance(loc[1], int):
+        index = loc[1]
+        part_label = f"parts[{index}]"
+        name = _part_name(raw, index)
+        if name is not None:
+            part_label += f" ({name})"
+        loc = loc[2:]
+        if loc and isinstance(loc[0], str) and _part_shape(raw, index) == loc[0]:
+            loc = loc[1:]  # the discriminator tag pydantic inserts for a union member
+    field = ""
+    for item in loc:
+        if isinstance(item, int):
+            field += f"[{item}]"
+        else:
+            field += ("." if field else "") + str(item)
+    return part_label, [field] if field else []
+
+
+def _part_name(raw: Any, index: int) -> str | None:
+    part = _raw_part(raw, index)
+    name = part.get("name") if isinstance(part, dict) else None
+    return name if isinstance(name, str) else None
+
+
+def _part_shape(raw: Any, index: int) -> str | None:
+    part = _raw_part(raw, index)
+    return part.get("shape") if isinstance(part, dict) else None
+
+
+def _raw_part(raw: Any, index: int) -> Any:
+    parts = raw.get("parts") if isinstance(raw, dict) else None
+    if isinstance(parts, list) and 0 <= index < len(parts):
+        return parts[index]
+    return None
+
+
+def describe_error(error: dict[str, Any], known_fields: list[str] | None = None) -> str:
+    """Plain-words message for one pydantic error dict."""
+    kind = error["type"]
+    ctx = error.get("ctx") or {}
+    value = error.get("input")
+    if kind == "missing":
+        return "missing required field"
+    if kind == "extra_forbidden":
+        field = str(error["loc"][-1]) if error["loc"] else ""
+        hint = difflib.get_close_matches(field, known_fields or [], n=1)
+        return "unknown field" + (f" (did you mean '{hint[0]}'?)" if hint else "")
+    if kind == "greater_than":
+        return f"must be greater than {ctx.get('gt'):g} (got {value!r})"
+    if tuple(error["loc"]) == ("parts",) and kind in ("too_short", "list_type"):
+        return f"must be a non-empty list of parts (got {_show(value)})"
+    if kind == "finite_number":
+        return f"must be a finite number (got {value!r})"
+    if kind in ("float_type", "float_parsing", "int_type"):
+        return f"must be a number (got {_show(value)})"
+    if kind in ("too_short", "too_long"):
+        return f"must be a list of {ctx.get('min_length', ctx.get('max_length'))} numbers [x, y, z] (got {_show(value)})"
+    if kind == "list_type":
+        return f"must be a list of 3 numbers [x, y, z] (got {_show(value)})"
+    if kind == "literal_error":
+        return f"must be one of {ctx.get('expected')} (got {_show(value)})"
+    if kind == "union_tag_invalid":
+        return f"shape: unknown shape {ctx.get('tag')!r} (expected one of {ctx.get('expected_tags')})"
+    if kind == "union_tag_not_found":
+        return "shape: missing required field (which solid is this part?)"
+    if kind in ("model_type", "model_attributes_type", "dict_type"):
+        return f"must be a mapping of fields (got {_show(value)})"
+    if kind == "string_type":
+        return f"must be text (got {_show(value)})"
+    if kind == "value_error":
+        return str(ctx.get("error", error["msg"]))
+    return error["msg"]
+
+
+def _show(value: Any) -> str:
+    text = repr(value)
+    return text if len(text) <= 40 else text[:37] + "..."
