@@ -12,7 +12,7 @@ import sys
 import typer
 
 from rbi import __version__
-from rbi.cli import mass_commands
+from rbi.cli import bench_command, check_command, export_command, mass_commands, schema_command, simulate_command
 from rbi.spec.errors import InputError
 
 app = typer.Typer(
@@ -43,6 +43,12 @@ def _root(
 app.command("inertia")(mass_commands.inertia)
 app.command("principal")(mass_commands.principal)
 app.command("momentum")(mass_commands.momentum)
+app.command("simulate")(simulate_command.simulate)
+app.command("export")(export_command.export)
+app.command("check")(check_command.check)
+app.command("validate")(schema_command.validate)
+app.command("schema")(schema_command.schema)
+app.command("bench")(bench_command.bench)
 
 
 def main() -> None:
