@@ -12,7 +12,15 @@ import sys
 import typer
 
 from rbi import __version__
-from rbi.cli import bench_command, check_command, export_command, mass_commands, schema_command, simulate_command
+from rbi.cli import (
+    bench_command,
+    check_command,
+    dynamics_command,
+    export_command,
+    mass_commands,
+    schema_command,
+    simulate_command,
+)
 from rbi.spec.errors import InputError
 
 app = typer.Typer(
@@ -43,6 +51,7 @@ def _root(
 app.command("inertia")(mass_commands.inertia)
 app.command("principal")(mass_commands.principal)
 app.command("momentum")(mass_commands.momentum)
+app.command("dynamics")(dynamics_command.dynamics)
 app.command("simulate")(simulate_command.simulate)
 app.command("export")(export_command.export)
 app.command("check")(check_command.check)

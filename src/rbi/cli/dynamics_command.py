@@ -1,0 +1,101 @@
+"""`rbi dynamics`: the Newton–Euler equations of the body, inverse or forward."""
+
+from __future__ import annotations
+
+from typing import Annotated, Optional
+
+import numpy as np
+import typer
+
+from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_vector
+from rbi.cli.render import emit, number
+from rbi.spec.errors import InputError
+
+_VEC = "X,Y,Z"
+
+
+def dynamics(
+    file: SpecFile,
+    omega: Annotated[str, typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity, rad/s.")] = "0,0,0",
+    alpha: Annotated[Optional[str], typer.Option("--alpha", metavar="AX,AY,AZ",
+                                                 help="Angular acceleration, rad/s² (inverse dynamics).")] = None,
+    accel: Annotated[Optional[str], typer.Option("--accel", metavar=_VEC,
+                                                 help="Acceleration of the --about point, length/s² (default 0: a fixed point).")] = None,
+    force: Annotated[Optional[str], typer.Option("--force", metavar=_VEC,
+                                                 help="Applied force, mass·length/s² (forward dynamics).")] = None,
+    torque: Annotated[Optional[str], typer.Option("--torque", metavar=_VEC,
+                                                  help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
+                                                       "Without --force a non-CoM --about point is held (a pivot): "
+                                                       "the force needed to hold it is reported.")] = None,
+    about: AboutOption = "com",
+    format: FormatOption = OutputFormat.table,
+) -> None:
+    """Newton–Euler: force and torque for a given motion (--alpha), or the motion a force and
+    torque produce (--force/--torque). All vectors in body axes, at this instant."""
+    from rbi.core import dynamics as ne
+    from rbi.core.inertia import inertia_about
+    from rbi.spec.load import load_body
+
+    inverse = alpha is not None
+    forward = force is not None or torque is not None
+    if inverse == forward:
+        raise InputError("dynamics: give either --alpha (inverse: force and torque) or --force/--torque (forward: accelerations)")
+    w = np.array(parse_vector(omega, "--omega"))
+    body = load_body(file)
+    about_label, point = parse_about(about, body)
+    props = body.props
+    r = props.com - np.asarray(point)
+    I_point = inertia_about(props, point)
+    labels = body.labels
+    if inverse:
+        a = np.array(parse_vector(alpha, "--alpha"))
+        acc = np.array(parse_vector(accel, "--accel")) if accel else np.zeros(3)
+        if about_label == "com":
+            wrench = ne.newton_euler_com(props.mass, props.inertia_com, w, a, acc)
+        else:
+            wrench = ne.newton_euler_point(props.mass, I_point, r, w, a, acc)
+        motion = {"alpha": a, "point_acceleration": acc}
+        loads = {"force": wrench.force, "torque": wrench.torque}
+    else:
+        t = np.array(parse_vector(torque, "--torque")) if torque else np.zeros(3)
+        if np.linalg.matrix_rank(I_point) < 3:
+            raise InputError(f"{file}: the inertia about the {about_label} is singular: the body cannot be given an angular acceleration")
+        if force is None and about_label != "com":
+            # The point is held (a pivot): its acceleration is prescribed and the force that
+            # holds it is part of the answer.
+            acc = np.array(parse_vector(accel, "--accel")) if accel else np.zeros(3)
+            a = np.linalg.solve(I_point, t - np.cross(w, I_point @ w) - props.mass * np.cross(r, acc))
+            f = ne.newton_euler_point(props.mass, I_point, r, w, a, acc).force
+            motion = {"alpha": a, "point_acceleration": acc}
+            loads = {"force": f, "torque": t}
+        else:
+            f = np.array(parse_vector(force, "--force")) if force else np.zeros(3)
+            if about_label == "com":
+                result_acc = ne.newton_euler_com_forward(props.mass, props.inertia_com, w, f, t)
+            else:
+                result_acc = ne.newton_euler_point_forward(props.mass, I_point, r, w, f, t)
+            motion = {"alpha": result_acc.angular, "point_acceleration": result_acc.linear}
+            loads = {"force": f, "torque": t}
+    result = {
+        "name": body.name, "units": body.units, "mode": "inverse" if inverse else "forward",
+        "mass": props.mass, "center_of_mass": props.com, "about": point, "about_label": about_label,
+        "omega": w, **motion, **loads,
+    }
+
+    def table():
+        from rbi.cli import tables
+
+        given, found = ("given", "result") if inverse else ("result", "given")
+        held = not inverse and force is None and about_label != "com"
+        force_note = "needed to hold the point" if held else found
+        return tables.quantities(f"{body.name or body.path} — Newton–Euler about {about_label} ({result['mode']})", [
+            ("mass", labels["mass"], number(props.mass, 8)),
+            (f"about ({about_label})", labels["length"], tables.vector(point)),
+            ("ω", "rad/s", tables.vector(w)),
+            (f"α ({given})", "rad/s²", tables.vector(result["alpha"])),
+            (f"a of {about_label} ({'given' if held else given})", f"{labels['length']}/s²", tables.vector(result["point_acceleration"])),
+            (f"force ({force_note})", f"{labels['mass']}·{labels['length']}/s²", tables.vector(result["force"])),
+            (f"torque about {about_label} ({found})", f"{labels['mass']}·{labels['length']}²/s²", tables.vector(result["torque"])),
+        ])
+
+    emit(format.value, result, table)
