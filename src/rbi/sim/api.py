@@ -1,0 +1,190 @@
+"""Simulating a scene: one entry point for every method.
+
+Public names:
+
+- :func:`simulate` ``(scene, q0, omega0, duration, samples, method="default", rtol=None,
+  progress=None) -> Trajectory``
+- :class:`Trajectory`: ``t (N,)``, ``q (N, 4)`` [w, x, y, z] body -> world, ``omega (N, 3)``
+  body frame rad/s, ``steps``, ``rhs_evals``, ``wall_seconds`` (time of the integration
+  itself, in this process, excluding loading the compiled kernel), ``method``.
+- :data:`METHODS`: ``"default"`` (compiled adaptive DOP853, quaternion projected to unit length
+  every step), ``"rk45"`` (the seed chapter's set-up: scipy ``solve_ivp`` RK45, rtol 1e-8,
+  atol 1e-10, Python right-hand side), ``"dop853"`` (scipy DOP853, same Python right-hand
+  side), ``"exact"`` (closed forms of :mod:`rbi.sim.exact`, where they apply).
+- :func:`sample_times`: the time grid a run reports.
+"""
+
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from rbi.sim.scene import Scene
+
+METHODS = ("default", "rk45", "dop853", "exact")
+
+DEFAULT_RTOL = 1e-12
+"""Tolerance of the default method (local error per step; see :mod:`rbi.sim.kernels`)."""
+
+RTOL_RANGE = (1e-15, 1e-2)
+"""Tolerances accepted by :func:`simulate`."""
+
+SCIPY_DEFAULT_RTOL = 1e-8
+SCIPY_ATOL_RATIO = 1e-2  # atol = rtol / 100, as in the chapter's (1e-8, 1e-10)
+
+CHUNK_STEPS = 20_000
+"""Steps per call of the compiled kernel: between calls the progress is reported and Ctrl-C
+can interrupt."""
+
+
+class SimulationError(ValueError):
+    """The integration could not be carried out (step size underflow, overflow, or a method
+    that does not apply to the scene)."""
+
+
+@dataclass
+class Trajectory:
+    """Samples of a simulated motion.
+
+    t (N,) s; q (N, 4) unit quaternions [w, x, y, z], body -> world; omega (N, 3) body-frame
+    angular velocity, rad/s. steps: accepted integration steps (0 for a closed form);
+    rejected_steps; rhs_evals: right-hand-side evaluations; wall_seconds: time of the
+    integration in this process; method: one of :data:`METHODS`; rtol: the tolerance used
+    (None for a closed form); integrator: a description of the solver; load_seconds: time
+    spent loading the compiled kernel in this process (0 after the first run);
+    quaternion_norm_error: the largest ``| |q| - 1 |`` the solver produced before rbi
+    normalised its output.
+    """
+
+    t: np.ndarray
+    q: np.ndarray
+    omega: np.ndarray
+    steps: int
+    rhs_evals: int
+    wall_seconds: float
+    method: str
+    rtol: float | None = None
+    rejected_steps: int = 0
+    integrator: str = ""
+    load_seconds: float = 0.0
+    quaternion_norm_error: float = 0.0
+
+
+def sample_times(duration: float, samples: int) -> np.ndarray:
+    """``samples`` equally spaced times from 0 to ``duration`` (both included).
+
+    One sample is the final time; a zero duration gives the single time 0.
+    """
+    if duration == 0.0:
+        return np.zeros(1)
+    if samples == 1:
+        return np.array([float(duration)])
+    return np.linspace(0.0, float(duration), int(samples))
+
+
+def validate_run(duration: float, samples: int, rtol: float | None) -> None:
+    """ValueError for a run that cannot be made (negative duration, no samples ...)."""
+    if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration >= 0.0):
+        raise ValueError(f"duration must be a finite number >= 0 (got {duration!r})")
+    if int(samples) != samples or samples < 1:
+        raise ValueError(f"samples must be a whole number >= 1 (got {samples!r})")
+    if rtol is not None and not (math.isfinite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
+        raise ValueError(f"rtol must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
+
+
+def simulate(scene: Scene, q0, omega0, duration: float, samples: int, method: str = "default",
+             rtol: float | None = None, progress: Callable[[float], None] | None = None) -> Trajectory:
+    """Integrate the scene from ``(q0, omega0)`` at t = 0 and sample it at
+    :func:`sample_times` ``(duration, samples)``.
+
+    q0: [w, x, y, z] (normalised here), omega0: body frame, rad/s. method: one of
+    :data:`METHODS`. rtol: the method's tolerance (default :data:`DEFAULT_RTOL` for
+    ``default``, 1e-8 for the scipy methods; ignored by ``exact``). progress: called with the
+    fraction done, now and then, by the default method.
+    """
+    validate_run(duration, samples, rtol)
+    if method not in METHODS:
+        raise ValueError(f"unknown method {method!r} (expected one of {', '.join(METHODS)})")
+    q0 = np.asarray(q0, dtype=float)
+    q0 = q0 / np.linalg.norm(q0)
+    omega0 = np.asarray(omega0, dtype=float).reshape(3)
+    t = sample_times(duration, samples)
+    if method == "default":
+        return _run_compiled(scene, q0, omega0, t, DEFAULT_RTOL if rtol is None else rtol, progress)
+    if method == "exact":
+        return _run_exact(scene, q0, omega0, t)
+    return _run_scipy(scene, q0, omega0, t, method, SCIPY_DEFAULT_RTOL if rtol is None else rtol)
+
+
+def _run_compiled(scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress) -> Trajectory:
+    from rbi.sim.compiled import integrator
+    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL
+
+    loaded = integrator()
+    y = np.concatenate((q0, omega0))
+    clock = np.array([0.0, 0.0])
+    out = np.empty((t.size, 7))
+    counts = np.zeros(4, dtype=np.int64)
+    settings = np.array([rtol, max(scene.natural_rate, 0.0)])
+    inertia = np.ascontiguousarray(scene.inertia, dtype=float)
+    inertia_inv = np.ascontiguousarray(scene.inertia_inv, dtype=float)
+    c = np.ascontiguousarray(scene.gravity_moment, dtype=float)
+    t_end = float(t[-1])
+    start = time.perf_counter()
+    while True:
+        status = loaded.integrate(y, clock, t, out, inertia, inertia_inv, c, settings, counts, CHUNK_STEPS)
+        if status != STATUS_MORE:
+            break
+        if progress is not None and t_end > 0.0:
+            progress(clock[0] / t_end)
+    wall = time.perf_counter() - start
+    if status != STATUS_DONE:
+        why = "the step size fell below the time resolution" if status == STATUS_STEP_TOO_SMALL else \
+            "the state stopped being finite (overflow)"
+        raise SimulationError(f"integration failed at t = {clock[0]:.6g} s: {why}")
+    if progress is not None:
+        progress(1.0)
+    return Trajectory(
+        t=t, q=out[:, :4].copy(), omega=out[:, 4:].copy(), steps=int(counts[1]), rhs_evals=int(counts[3]),
+        wall_seconds=wall, method="default", rtol=rtol, rejected_steps=int(counts[2]),
+        integrator=f"DOP853, compiled ({loaded.how}), unit quaternion projection",
+        load_seconds=loaded.load_seconds,
+    )
+
+
+def _run_scipy(scene: Scene, q0, omega0, t: np.ndarray, method: str, rtol: float) -> Trajectory:
+    from rbi.sim.baselines import solve_with_scipy
+
+    atol = rtol * SCIPY_ATOL_RATIO
+    solver = {"rk45": "RK45", "dop853": "DOP853"}[method]
+    start = time.perf_counter()
+    try:
+        y, steps, nfev = solve_with_scipy(scene, q0, omega0, t, solver, rtol, atol)
+    except RuntimeError as exc:
+        raise SimulationError(str(exc)) from None
+    wall = time.perf_counter() - start
+    q_raw = y[:4].T
+    norms = np.linalg.norm(q_raw, axis=1)
+    return Trajectory(
+        t=t, q=q_raw / norms[:, None], omega=y[4:].T.copy(), steps=steps, rhs_evals=nfev, wall_seconds=wall,
+        method=method, rtol=rtol, integrator=f"scipy solve_ivp {solver}, rtol {rtol:g}, atol {atol:g}, Python right-hand side",
+        quaternion_norm_error=float(np.max(np.abs(norms - 1.0))),
+    )
+
+
+def _run_exact(scene: Scene, q0, omega0, t: np.ndarray) -> Trajectory:
+    from rbi.sim import exact
+
+    start = time.perf_counter()
+    try:
+        solution = exact.solve(scene, q0, omega0)
+    except exact.NotIntegrable as exc:
+        raise SimulationError(f"--method exact does not apply: {exc}") from None
+    q, omega = solution.state_at(t)
+    wall = time.perf_counter() - start
+    return Trajectory(t=t, q=q, omega=omega, steps=0, rhs_evals=0, wall_seconds=wall, method="exact",
+                      integrator=f"closed form: {solution.description}")

@@ -1,0 +1,249 @@
+"""What a trajectory knows about its own accuracy, and what the scene's stability is.
+
+Public names:
+
+- :func:`up_in_body`, :func:`tilt_deg`, :func:`precession_deg`: geometry of samples.
+- :func:`energy`, :func:`angular_momentum_world`: along a trajectory.
+- :func:`conserved_quantities` ``(scene, q, omega) -> dict``: every quantity the scene
+  conserves (energy; vertical angular momentum about the pivot; the spin of an axisymmetric
+  top; the whole angular momentum vector of a free body), each with its relative drift.
+- :func:`orientation_error_deg`: the angle between two orientations.
+- :func:`symmetry_axis`: the axis of an axisymmetric top (or None).
+- :func:`stability`: the sleeping-top criterion, or the intermediate-axis (Dzhanibekov) verdict.
+
+Frames: q [w, x, y, z] maps body to world; omega is in the body frame (rad/s). Energies are in
+M·L²/s², angular momenta in M·L²/s, about the pivot (or the centre of mass of a free body).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from rbi.sim.scene import Scene
+
+AXISYMMETRY_RTOL = 1e-9
+"""Two principal moments this close (relative) count as equal."""
+
+
+def up_in_body(q: np.ndarray) -> np.ndarray:
+    """The world's up axis (+z) in body coordinates, ``R(q)ᵀ e_z`` (N, 3), for unit q (N, 4)."""
+    q = np.atleast_2d(q)
+    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    return np.stack((2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z), axis=1)
+
+
+def body_z_in_world(q: np.ndarray) -> np.ndarray:
+    """The body's z axis in world coordinates, ``R(q) e_z`` (N, 3)."""
+    q = np.atleast_2d(q)
+    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    return np.stack((2 * (x * z + w * y), 2 * (y * z - w * x), w * w - x * x - y * y + z * z), axis=1)
+
+
+def tilt_deg(q: np.ndarray) -> np.ndarray:
+    """Angle between the body z axis and the world vertical, degrees (N,).
+
+    ``2 atan2(√(x²+y²), √(w²+z²))``: accurate near 0 and 180 degrees.
+    """
+    q = np.atleast_2d(q)
+    return np.degrees(2.0 * np.arctan2(np.hypot(q[:, 1], q[:, 2]), np.hypot(q[:, 0], q[:, 3])))
+
+
+def precession_deg(q: np.ndarray) -> np.ndarray:
+    """Azimuth of the body z axis seen from above (world x towards y), degrees, unwrapped so
+    that it is continuous along the samples (N,). Undefined (0) while the axis is vertical."""
+    axis = body_z_in_world(q)
+    return np.degrees(np.unwrap(np.arctan2(axis[:, 1], axis[:, 0])))
+
+
+def energy(scene: Scene, q: np.ndarray, omega: np.ndarray) -> np.ndarray:
+    """Total energy (N,): kinetic ``½ ωᵀ I ω`` about the fixed point plus gravity's
+    ``m g z_com`` (height of the centre of mass above the pivot), M·L²/s²."""
+    return kinetic_energy(scene, omega) + potential_energy(scene, q)
+
+
+def kinetic_energy(scene: Scene, omega: np.ndarray) -> np.ndarray:
+    omega = np.atleast_2d(omega)
+    return 0.5 * np.einsum("ni,ij,nj->n", omega, scene.inertia, omega)
+
+
+def potential_energy(scene: Scene, q: np.ndarray) -> np.ndarray:
+    return up_in_body(q) @ scene.gravity_moment
+
+
+def angular_momentum_body(scene: Scene, omega: np.ndarray) -> np.ndarray:
+    """``I ω`` (N, 3) about the fixed point, body axes."""
+    return np.atleast_2d(omega) @ scene.inertia.T
+
+
+def angular_momentum_world(scene: Scene, q: np.ndarray, omega: np.ndarray) -> np.ndarray:
+    """``R (I ω)`` (N, 3) about the fixed point, world axes."""
+    from rbi.core.rotation import quaternion_to_matrix
+
+    h_body = angular_momentum_body(scene, omega)
+    return np.stack([quaternion_to_matrix(qi) @ hi for qi, hi in zip(np.atleast_2d(q), h_body)])
+
+
+def symmetry_axis(scene: Scene) -> np.ndarray | None:
+    """Unit symmetry axis (body frame) when the scene is an axisymmetric top (two equal
+    principal moments about the fixed point, centre of mass on the third axis) or a free body
+    with two equal moments; otherwise None. Points towards the centre of mass when there is
+    an offset."""
+    moments, axes = scene.principal_moments, scene.principal_axes
+    scale = moments[-1]
+    if abs(moments[1] - moments[0]) <= AXISYMMETRY_RTOL * scale:
+        axis = axes[2]
+    elif abs(moments[2] - moments[1]) <= AXISYMMETRY_RTOL * scale:
+        axis = axes[0]
+    else:
+        return None
+    r = np.asarray(scene.com_from_pivot, dtype=float)
+    length = float(np.linalg.norm(r))
+    if length == 0.0:
+        return axis
+    if np.linalg.norm(np.cross(axis, r)) > AXISYMMETRY_RTOL * length:
+        return None
+    return axis if axis @ r > 0 else -axis
+
+
+def conserved_quantities(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict[str, dict[str, Any]]:
+    """The scene's invariants along the samples, each as ``{"initial", "drift", "unit"}``.
+
+    ``drift`` is ``max |value(t) − value(0)|`` relative to the quantity's size along the run
+    (energy: the largest kinetic plus |potential| energy; momenta: the largest |h|), so that
+    a quantity that happens to start at zero still gets a meaningful relative drift.
+    """
+    q = np.atleast_2d(q)
+    omega = np.atleast_2d(omega)
+    kinetic = kinetic_energy(scene, omega)
+    potential = potential_energy(scene, q)
+    total = kinetic + potential
+    h_body = angular_momentum_body(scene, omega)
+    h_size = float(np.max(np.linalg.norm(h_body, axis=1)))
+    out: dict[str, dict[str, Any]] = {
+        "energy": _drift(total, float(np.max(kinetic + np.abs(potential))), "energy"),
+    }
+    if scene.pivoted:
+        h_vertical = np.einsum("ni,ni->n", up_in_body(q), h_body)
+        out["h_vertical"] = _drift(h_vertical, h_size, "angular_momentum")
+        axis = symmetry_axis(scene)
+        if axis is not None:
+            out["h_spin"] = _drift(h_body @ axis, h_size, "angular_momentum")
+    else:
+        h_world = angular_momentum_world(scene, q, omega)
+        drift = float(np.max(np.linalg.norm(h_world - h_world[0], axis=1)))
+        out["h_world"] = {"initial": h_world[0], "drift": _relative(drift, h_size), "unit": "angular_momentum"}
+    return out
+
+
+def _drift(values: np.ndarray, size: float, unit: str) -> dict[str, Any]:
+    return {"initial": float(values[0]), "drift": _relative(float(np.max(np.abs(values - values[0]))), size),
+            "unit": unit}
+
+
+def _relative(change: float, size: float) -> float:
+    return change / size if size > 0.0 else 0.0
+
+
+def orientation_error_deg(q: np.ndarray, r: np.ndarray) -> np.ndarray:
+    """Angle of the rotation taking orientation ``r`` to ``q`` (degrees, (N,) or scalar), by
+    ``2 atan2(|vector part|, |scalar part|)`` of ``r* q``: accurate for tiny angles, blind to
+    the sign of either quaternion."""
+    q = np.atleast_2d(q) / np.linalg.norm(np.atleast_2d(q), axis=1)[:, None]
+    r = np.atleast_2d(r) / np.linalg.norm(np.atleast_2d(r), axis=1)[:, None]
+    scalar = np.einsum("ni,ni->n", q, r)
+    vector = (r[:, :1] * q[:, 1:] - q[:, :1] * r[:, 1:] - np.cross(r[:, 1:], q[:, 1:]))
+    angle = np.degrees(2.0 * np.arctan2(np.linalg.norm(vector, axis=1), np.abs(scalar)))
+    return angle if angle.size > 1 else float(angle[0])
+
+
+def sleeping_threshold(scene: Scene) -> dict[str, float] | None:
+    """The sleeping-top threshold of an axisymmetric top with its centre of mass above the
+    pivot on the axis: ``ω₃² = 4 m g l I₁ / I₃²`` (I₁ the transverse moment about the pivot).
+    Returns ``{"omega3", "I1", "I3", "l"}`` or None when it does not apply."""
+    axis = symmetry_axis(scene)
+    length = float(np.linalg.norm(scene.com_from_pivot))
+    if not scene.pivoted or axis is None or length == 0.0 or scene.gravity <= 0.0:
+        return None
+    I3 = float(axis @ scene.inertia @ axis)
+    moments = scene.principal_moments
+    I1 = float(moments[2] if abs(moments[0] - I3) < abs(moments[2] - I3) else moments[0])
+    omega3 = math.sqrt(4.0 * scene.mass * scene.gravity * length * I1) / I3
+    return {"omega3": omega3, "I1": I1, "I3": I3, "l": length}
+
+
+def stability(scene: Scene, q0: np.ndarray, omega0: np.ndarray) -> dict[str, Any]:
+    """A plain statement of the stability of the motion started from ``(q0, omega0)``.
+
+    Axisymmetric top: compares the spin about the symmetry axis with the sleeping-top
+    threshold (upright spin stable above it, unstable below). Free body: which principal axis
+    the spin is closest to; near the intermediate axis the spin is unstable (Dzhanibekov).
+    Returns ``{"kind", "verdict", ...}`` with numbers for scripts.
+    """
+    omega0 = np.asarray(omega0, dtype=float)
+    if scene.pivoted:
+        return _top_stability(scene, q0, omega0)
+    return _free_stability(scene, omega0)
+
+
+def _top_stability(scene: Scene, q0, omega0) -> dict[str, Any]:
+    threshold = sleeping_threshold(scene)
+    length = float(np.linalg.norm(scene.com_from_pivot))
+    if length == 0.0 or scene.gravity <= 0.0:
+        return {"kind": "balanced", "verdict": "the centre of mass is at the pivot: gravity exerts no torque, "
+                                               "the body turns as a free body"}
+    if threshold is None:
+        return {"kind": "asymmetric top",
+                "verdict": "not an axisymmetric top with its centre of mass on the axis, so the sleeping-top "
+                           "criterion does not apply: gravity pulls at a point off any spin axis and the "
+                           "top wobbles from the start"}
+    axis = symmetry_axis(scene)
+    spin = float(omega0 @ axis)
+    up = float(up_in_body(q0)[0] @ axis)
+    result = {"kind": "axisymmetric top", "sleeping_threshold_rad_s": threshold["omega3"], "spin_rad_s": spin,
+              "above_threshold": abs(spin) > threshold["omega3"]}
+    if up < 0.0:
+        result["verdict"] = ("the centre of mass starts below the pivot: the hanging position is stable "
+                             "whatever the spin")
+        return result
+    w = f"{abs(spin):.6g} rad/s"
+    limit = f"{threshold['omega3']:.6g} rad/s"
+    if abs(spin) > threshold["omega3"]:
+        result["verdict"] = (f"spin {w} is above the sleeping-top threshold {limit} "
+                             f"(ω₃² = 4 m g l I₁ / I₃²): the upright spin is stable, a small tilt only nutates")
+    else:
+        result["verdict"] = (f"spin {w} is below the sleeping-top threshold {limit} "
+                             f"(ω₃² = 4 m g l I₁ / I₃²): the upright spin is unstable, any small tilt grows "
+                             f"and the top falls away from vertical")
+    return result
+
+
+def _free_stability(scene: Scene, omega0) -> dict[str, Any]:
+    moments, axes = scene.principal_moments, scene.principal_axes
+    h = moments * (axes @ omega0)  # principal components of I ω
+    if not np.any(h):
+        return {"kind": "free body", "verdict": "not rotating"}
+    scale = moments[-1]
+    if moments[2] - moments[0] <= AXISYMMETRY_RTOL * scale:
+        return {"kind": "free body", "verdict": "spherical inertia: ω stays constant, every axis is stable"}
+    # share of the kinetic energy carried by each principal axis
+    share = h * h / moments
+    nearest = int(np.argmax(share))
+    equal_low = moments[1] - moments[0] <= AXISYMMETRY_RTOL * scale
+    equal_high = moments[2] - moments[1] <= AXISYMMETRY_RTOL * scale
+    result = {"kind": "free body", "principal_moments": moments, "nearest_axis": nearest + 1}
+    if equal_low or equal_high:
+        result["verdict"] = ("axisymmetric body: ω precesses steadily about the symmetry axis, "
+                             "the motion is stable")
+        return result
+    name = ("smallest", "intermediate", "largest")[nearest]
+    if nearest == 1:
+        result["intermediate_axis"] = True
+        result["verdict"] = ("spin near the intermediate principal axis: unstable (Dzhanibekov effect), "
+                             "the body flips over periodically")
+    else:
+        result["intermediate_axis"] = False
+        result["verdict"] = f"spin near the {name}-moment principal axis: stable (the body wobbles about it)"
+    return result

@@ -1,0 +1,119 @@
+"""What a simulation needs to know about the body, in plain floats and arrays.
+
+Public names (other modules and ``rbi bench`` code against these):
+
+- :class:`Scene`: mass, inertia about the fixed point (the pivot of a top, the centre of mass
+  of a free body) in body axes, ``com_from_pivot``, gravity, ``pivoted``.
+- :func:`scene_from_properties`: a :class:`Scene` from :class:`rbi.core.inertia.MassProperties`.
+- :func:`initial_state`: the contract's initial orientation and angular velocity.
+
+Units are the spec file's own (length L, mass M, time s); angles in radians unless a name
+ends in ``_deg``. Gravity acts along world −z.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rbi.core.inertia import MassProperties, inertia_about, principal_axes
+
+SINGULAR_RTOL = 1e-12
+"""Smallest principal moment below this fraction of the largest: the inertia is singular."""
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A heavy top on a fixed frictionless pivot, or a torque-free body.
+
+    mass: M. inertia: (3, 3) about the pivot (``pivoted``) or about the centre of mass (free),
+    body axes, M·L². com_from_pivot: (3,) centre of mass relative to the pivot, body frame, L
+    (zeros for a free body). gravity: magnitude in L/s² (0 for a free body), acting along
+    world −z. pivot: the pivot in body coordinates (None for a free body); com: the centre of
+    mass in body coordinates.
+    """
+
+    mass: float
+    inertia: np.ndarray
+    com_from_pivot: np.ndarray
+    gravity: float
+    pivoted: bool
+    pivot: np.ndarray | None = None
+    com: np.ndarray = field(default_factory=lambda: np.zeros(3))
+
+    @property
+    def inertia_inv(self) -> np.ndarray:
+        return np.linalg.inv(self.inertia)
+
+    @property
+    def gravity_moment(self) -> np.ndarray:
+        """``c = m g r_{c/o}`` (body frame, M·L²/s²): the gravity torque about the pivot is
+        ``e_z × c`` with ``e_z`` the world's up axis seen in the body."""
+        return self.mass * self.gravity * np.asarray(self.com_from_pivot, dtype=float)
+
+    @property
+    def principal_moments(self) -> np.ndarray:
+        """Principal moments of ``inertia`` (ascending), M·L²."""
+        return principal_axes(self.inertia)[0]
+
+    @property
+    def principal_axes(self) -> np.ndarray:
+        """Unit principal axes (rows, body frame) matching :attr:`principal_moments`."""
+        return principal_axes(self.inertia)[1]
+
+    @property
+    def natural_rate(self) -> float:
+        """A rate (rad/s) the motion cannot be much slower than: the pendulum frequency
+        ``sqrt(m g l / I_max)`` of a pivoted body (0 for a free body)."""
+        if not self.pivoted:
+            return 0.0
+        moment = self.mass * self.gravity * float(np.linalg.norm(self.com_from_pivot))
+        return float(np.sqrt(moment / self.principal_moments[-1]))
+
+
+def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravity: float) -> Scene:
+    """The scene of a body with mass properties ``props``.
+
+    pivot: the fixed point in body coordinates (L), or None for a free body (gravity is then
+    ignored: a free body's centre of mass falls, but its rotation is torque-free). gravity:
+    magnitude in L/s². Raises ValueError when the inertia about the pivot (or the centre of
+    mass) is singular, i.e. all the mass lies on a line through that point.
+    """
+    if pivot is None:
+        inertia = np.array(props.inertia_com, dtype=float)
+        com_from_pivot = np.zeros(3)
+        where = "centre of mass"
+        g = 0.0
+    else:
+        pivot = np.asarray(pivot, dtype=float)
+        inertia = inertia_about(props, pivot)
+        com_from_pivot = np.asarray(props.com, dtype=float) - pivot
+        where = "pivot"
+        g = float(gravity)
+    moments = np.linalg.eigvalsh(inertia)
+    if not (moments[0] > SINGULAR_RTOL * moments[-1] and np.all(np.isfinite(moments))):
+        raise ValueError(
+            f"the inertia about the {where} is singular (principal moments {moments[0]:.3g} and "
+            f"{moments[-1]:.3g}): all the mass lies on a line through the {where}, so a spin about "
+            f"that line has no inertia and the motion is undefined")
+    return Scene(
+        mass=float(props.mass),
+        inertia=inertia,
+        com_from_pivot=com_from_pivot,
+        gravity=g,
+        pivoted=pivot is not None,
+        pivot=None if pivot is None else pivot,
+        com=np.asarray(props.com, dtype=float),
+    )
+
+
+def initial_state(tilt_deg: float, omega_body) -> tuple[np.ndarray, np.ndarray]:
+    """The contract's initial state: identity orientation turned by ``tilt_deg`` degrees about
+    the world y axis; ``omega_body`` (rad/s, body frame).
+
+    Returns ``(q0, omega0)``: q0 = [w, x, y, z] body -> world, omega0 (3,).
+    """
+    half = 0.5 * np.radians(float(tilt_deg))
+    q0 = np.array([np.cos(half), 0.0, np.sin(half), 0.0])
+    return q0, np.array(omega_body, dtype=float).reshape(3)
