@@ -20,6 +20,28 @@ def run_rbi(*args: str, check: bool = False) -> subprocess.CompletedProcess:
     return proc
 
 
+def run_rbi_inprocess(*args: str) -> subprocess.CompletedProcess:
+    """Run ``rbi.cli.app.main`` in this process (fast; for the many error and format cases)
+    with stdout and stderr captured; the same result shape as :func:`run_rbi`."""
+    import contextlib
+    import io
+
+    from rbi.cli.app import main
+
+    out, err = io.StringIO(), io.StringIO()
+    argv = ["rbi", *map(str, args)]
+    saved, sys.argv = sys.argv, argv
+    code = 0
+    try:
+        with contextlib.redirect_stdout(out), contextlib.redirect_stderr(err):
+            main()
+    except SystemExit as exc:
+        code = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+    finally:
+        sys.argv = saved
+    return subprocess.CompletedProcess(argv, code, out.getvalue(), err.getvalue())
+
+
 @pytest.fixture
 def bodies() -> Path:
     return BODIES

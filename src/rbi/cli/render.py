@@ -119,16 +119,24 @@ def _superscript(n: int) -> str:
     return str(n).translate(_SUPER)
 
 
+def _color_system() -> str | None:
+    # rich's own NO_COLOR handling drops colours but keeps bold, dim and italic escapes;
+    # NO_COLOR users get plain text.
+    import os
+
+    return None if os.environ.get("NO_COLOR") else "auto"
+
+
 def stdout_console():
     from rich.console import Console
 
-    return Console(highlight=False, soft_wrap=False)
+    return Console(highlight=False, soft_wrap=False, color_system=_color_system())
 
 
 def stderr_console():
     from rich.console import Console
 
-    return Console(stderr=True, highlight=False)
+    return Console(stderr=True, highlight=False, color_system=_color_system())
 
 
 def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None) -> None:

@@ -167,11 +167,15 @@ def symmetric_eigen(matrix: np.ndarray, max_sweeps: int = 30) -> tuple[np.ndarra
             apq = A[p, q]
             if apq == 0.0:
                 continue
-            if abs(apq) <= eps * np.sqrt(abs(A[p, p] * A[q, q])):
+            if abs(apq) <= eps * np.sqrt(abs(A[p, p])) * np.sqrt(abs(A[q, q])):  # no overflow
                 A[p, q] = A[q, p] = 0.0
                 continue
-            theta = (A[q, q] - A[p, p]) / (2.0 * apq)
-            t = np.copysign(1.0, theta) / (abs(theta) + np.sqrt(theta * theta + 1.0))
+            gap = A[q, q] - A[p, p]
+            if abs(apq) <= 1e-150 * abs(gap):  # θ² would overflow; t = 1/(2θ) to full precision
+                t = apq / gap
+            else:
+                theta = gap / (2.0 * apq)
+                t = np.copysign(1.0, theta) / (abs(theta) + np.sqrt(theta * theta + 1.0))
             c = 1.0 / np.sqrt(t * t + 1.0)
             s = t * c
             J = np.eye(3)

@@ -1,0 +1,93 @@
+"""Layering and start-up cost: the core stays pure numpy, and the mass-property commands never
+load the integrators, the compiler or the plotting library."""
+
+from __future__ import annotations
+
+import ast
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+SRC = Path(__file__).resolve().parents[1] / "src" / "rbi"
+
+
+def imported_modules(path: Path) -> set[str]:
+    """Every module a file imports, at any depth (function-level imports included); relative
+    imports are resolved against the package."""
+    tree = ast.parse(path.read_text(), filename=str(path))
+    package = ".".join(path.relative_to(SRC.parent).with_suffix("").parts[:-1])
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            found.update(alias.name for alias in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            if node.level:
+                base = package.rsplit(".", node.level - 1)[0] if node.level > 1 else package
+                module = f"{base}.{node.module}" if node.module else base
+            else:
+                module = node.module
+            found.add(module)
+            found.update(f"{module}.{alias.name}" for alias in node.names)
+    return found
+
+
+def offending(layer: str, forbidden: tuple[str, ...]) -> dict[str, list[str]]:
+    bad = {}
+    for path in sorted((SRC / layer).rglob("*.py")):
+        hits = sorted(m for m in imported_modules(path)
+                      if any(m == f or m.startswith(f + ".") for f in forbidden))
+        if hits:
+            bad[str(path.relative_to(SRC))] = hits
+    return bad
+
+
+def test_import_scanner_sees_function_level_and_relative_imports(tmp_path, monkeypatch):
+    sample = SRC / "core" / "dynamics.py"
+    assert "rbi.core.rotation" in imported_modules(sample)
+    fake_src = tmp_path / "rbi"
+    (fake_src / "core").mkdir(parents=True)
+    probe = fake_src / "core" / "probe.py"
+    probe.write_text("def f():\n    from ..spec import models\n    import rich.table\n")
+    monkeypatch.setattr(sys.modules[__name__], "SRC", fake_src)
+    assert {"rbi.spec", "rbi.spec.models", "rich.table"} <= imported_modules(probe)
+
+
+def test_core_imports_no_spec_cli_or_interface_libraries():
+    forbidden = ("rbi.spec", "rbi.cli", "rbi.sim", "pydantic", "typer", "rich", "yaml", "click")
+    assert offending("core", forbidden) == {}
+
+
+def test_spec_does_not_reach_up_into_the_cli():
+    assert offending("spec", ("rbi.cli", "typer", "rich", "click")) == {}
+
+
+PROBE = """
+import json, sys
+from typer.testing import CliRunner
+from rbi.cli.app import app
+body = sys.argv[1]
+runs = [["inertia", body], ["inertia", body, "--format", "json", "--rotate", "y:30"],
+        ["principal", body, "--format", "csv"], ["momentum", body, "--omega", "0,0,100"]]
+codes = [CliRunner().invoke(app, args).exit_code for args in runs]
+print(json.dumps({"codes": codes, "modules": sorted(sys.modules)}))
+"""
+
+
+@pytest.fixture(scope="module")
+def modules_after_mass_commands():
+    body = SRC.parents[1] / "bodies" / "top_bolted.yaml"
+    proc = subprocess.run([sys.executable, "-c", PROBE, str(body)], capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    out = json.loads(proc.stdout)
+    assert out["codes"] == [0, 0, 0, 0]
+    return set(out["modules"])
+
+
+@pytest.mark.parametrize("heavy", ["scipy.integrate", "numba", "matplotlib", "sympy", "hypothesis"])
+def test_mass_commands_do_not_load_heavy_modules(modules_after_mass_commands, heavy):
+    assert "rbi.core.inertia" in modules_after_mass_commands  # the probe really ran the commands
+    loaded = sorted(m for m in modules_after_mass_commands if m == heavy or m.startswith(heavy + "."))
+    assert loaded == []
