@@ -107,14 +107,28 @@ SHAPE_MODELS: dict[str, type[_Part]] = {
 Part = Annotated[Union[tuple(SHAPE_MODELS.values())], Field(discriminator="shape")]
 
 
+class PointCloudRef(_Strict):
+    """Many point masses from one file (see :mod:`rbi.spec.point_cloud`): a ``.csv`` with the
+    columns mass,x,y,z or a ``.npy`` (N, 4) array; path relative to the spec's folder."""
+
+    file: Annotated[str, Field(min_length=1)]
+
+
 class BodySpec(_Strict):
-    """A rigid body: parts placed in the body frame, an optional fixed pivot."""
+    """A rigid body: parts placed in the body frame (and/or a point cloud), an optional fixed pivot."""
 
     name: str | None = None
     units: Units = Units()
     pivot: Vector3 | None = None
-    parts: Annotated[list[Part], Field(min_length=1)]
+    parts: list[Part] = Field(default_factory=list)
+    point_cloud: PointCloudRef | None = None
     expect: dict[str, Any] | None = None
+
+    @model_validator(mode="after")
+    def _has_mass(self):
+        if not self.parts and self.point_cloud is None:
+            raise ValueError("parts: must be a non-empty list of parts (or give a point_cloud: {file: ...})")
+        return self
 
     @model_validator(mode="after")
     def _unique_names(self):

@@ -54,6 +54,12 @@ def body_from_spec(spec: models.BodySpec, path: str):
         if not (np.isfinite(element.mass) and np.all(np.isfinite(element.inertia_com))):
             raise InputError(f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows")
         elements.append(element)
+    part_names = [p.name for p in spec.parts]
+    if spec.point_cloud is not None:  # the whole cloud enters as one part, reduced vectorised
+        from rbi.spec.point_cloud import cloud_element
+
+        elements.append(cloud_element(path, spec.point_cloud.file))
+        part_names.append("point_cloud")
     try:
         props = combine_elements(elements)
     except ValueError as exc:
@@ -67,7 +73,7 @@ def body_from_spec(spec: models.BodySpec, path: str):
         props=props,
         pivot=pivot,
         elements=elements,
-        part_names=[p.name for p in spec.parts],
+        part_names=part_names,
         expect=spec.expect,
         spec=spec,
     )
