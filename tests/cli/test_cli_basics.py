@@ -98,3 +98,11 @@ def test_installed_console_script_matches_python_m(bodies):
     installed = subprocess.run([str(script), *args], capture_output=True, text=True, timeout=60)
     assert installed.returncode == 0 and installed.stderr == ""
     assert installed.stdout == run_rbi(*args, check=True).stdout
+
+
+@pytest.mark.parametrize("args", [["inertia"], ["principal"], ["momentum", "--omega", "0,0,1"]])
+def test_names_are_printed_as_text_not_read_as_markup(write_spec, bodies, args):
+    text = (bodies / "top.yaml").read_text().replace("name: spinning-top", 'name: "[bold]top [/] v2"')
+    proc = run_rbi_inprocess(args[0], write_spec(text, name="[red]top.yaml"), *args[1:])
+    assert proc.returncode == 0, proc.stderr
+    assert "[bold]top [/] v2" in proc.stdout

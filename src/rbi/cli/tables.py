@@ -14,8 +14,9 @@ from rbi.cli.render import matrix_digits, number, vector_text
 
 
 def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
-    """A table of (quantity, unit, value) rows."""
-    table = Table(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    """A table of (quantity, unit, value) rows. ``title`` is plain text (it carries the body's
+    name or path, which must not be read as rich markup)."""
+    table = Table(title=escape(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
     table.add_column("quantity")
     rows = [(name, escape(unit), escape(value)) for name, unit, value in rows]
     table.add_column("unit", style="dim")
@@ -30,7 +31,7 @@ def matrix(title: str, values, unit: str, row_labels: Sequence[str] = ("x", "y",
     """A 3×3 matrix with a common power-of-ten scale written once in the title."""
     values = np.asarray(values, dtype=float)
     scale, scale_text = matrix_digits(values)
-    table = Table(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    table = Table(title=escape(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
     table.add_column(unit_header("", unit, scale_text).strip(), style="bold")
     for label in column_labels:
         table.add_column(label, justify="right")
