@@ -62,16 +62,34 @@ app.command("bench")(bench_command.bench)
 
 def main() -> None:
     """Console entry point: exit 2 with one line on bad input, never a traceback."""
+    from typer._click import exceptions as click_errors
+
+    import numpy as np
+
+    np.seterr(all="ignore")  # non-finite results are refused explicitly (render.emit), not warned about
+    if len(sys.argv) == 1:
+        sys.argv.append("--help")
     try:
-        app()
+        status = app(standalone_mode=False)
+    except click_errors.UsageError as exc:
+        command = exc.ctx.command_path if exc.ctx is not None else "rbi"
+        print(f"rbi: {exc.format_message()} (see `{command} --help`)", file=sys.stderr)
+        sys.exit(2)
+    except typer.Abort:
+        print("rbi: aborted", file=sys.stderr)
+        sys.exit(130)
     except InputError as exc:
         print(f"rbi: {exc}", file=sys.stderr)
         sys.exit(2)
     except KeyboardInterrupt:
         print("rbi: interrupted", file=sys.stderr)
         sys.exit(130)
+    except BrokenPipeError:  # `rbi ... | head`: the reader left; not an error of ours
+        sys.stderr.close()
+        sys.exit(0)
     except Exception as exc:  # a bug, not bad input: say so on one line unless debugging
         if os.environ.get("RBI_DEBUG"):
             raise
         print(f"rbi: internal error: {type(exc).__name__}: {exc} (RBI_DEBUG=1 shows the traceback)", file=sys.stderr)
         sys.exit(1)
+    sys.exit(status if isinstance(status, int) else 0)

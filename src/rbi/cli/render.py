@@ -142,12 +142,31 @@ def stderr_console():
 def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None) -> None:
     """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
     lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``."""
+    _refuse_non_finite(result)
     if fmt == "json":
         sys.stdout.write(to_json(result) + "\n")
     elif fmt == "csv":
         sys.stdout.write(to_csv(csv_rows if csv_rows is not None else [result]))
     else:
         stdout_console().print(table())
+
+
+def _refuse_non_finite(result: dict[str, Any]) -> None:
+    """Inputs of absurd size (``--omega 1e200,0,0``) overflow to inf/NaN: refuse them as bad
+    input (exit 2) rather than print nulls."""
+    from rbi.spec.errors import InputError
+
+    bad = [key for key, value in plain(result).items() if _has_non_finite(value)]
+    if bad:
+        raise InputError(f"result {', '.join(bad)} is not finite: the input values are too large for double precision")
+
+
+def _has_non_finite(value: Any) -> bool:
+    if isinstance(value, dict):
+        return any(_has_non_finite(v) for v in value.values())
+    if isinstance(value, list):
+        return any(_has_non_finite(v) for v in value)
+    return isinstance(value, float) and not math.isfinite(value)
 
 
 def vector_text(v, digits: int = 6) -> str:

@@ -1,0 +1,32 @@
+"""Whole-process behaviour of the entry point: usage errors and overflow are one line, exit 2."""
+
+import pytest
+
+from tests.conftest import BODIES, run_rbi
+
+TOP = BODIES / "top.yaml"
+
+
+@pytest.mark.parametrize(
+    "args, needle",
+    [
+        (["momentum", TOP], "--omega"),                                   # a required option missing
+        (["inertia", TOP, "--format", "xml"], "--format"),                # a bad choice
+        (["bogus"], "bogus"),                                             # an unknown command
+        (["inertia", TOP, "--about", "1e200,0,0", "-f", "json"], "not finite"),  # overflow, not nulls
+        (["momentum", TOP, "--omega", "1e200,0,0"], "not finite"),
+    ],
+)
+def test_bad_invocations_exit_2_with_one_line(args, needle):
+    proc = run_rbi(*args)
+    assert proc.returncode == 2
+    lines = proc.stderr.strip().splitlines()
+    assert len(lines) == 1 and needle in lines[0], proc.stderr
+    assert proc.stdout == ""
+
+
+def test_no_arguments_prints_the_command_list():
+    proc = run_rbi()
+    assert proc.returncode == 0
+    for command in ("inertia", "principal", "momentum", "simulate"):
+        assert command in proc.stdout
