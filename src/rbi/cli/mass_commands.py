@@ -7,7 +7,8 @@ from typing import Annotated, Optional
 import numpy as np
 import typer
 
-from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_rotation, parse_vector
+from rbi.cli.options import (AboutOption, FormatOption, OutputFormat, SpecFile, UnitsOption, in_output_units, parse_about,
+                             parse_rotation, parse_vector)
 from rbi.cli.render import emit, number
 
 
@@ -31,6 +32,7 @@ def inertia(
                      help="Turn the body about a world axis (x, y or z) by DEG degrees; repeat to chain, "
                           "applied in order. The inertia is then given in world axes: R I Rᵀ."),
     ] = None,
+    units: UnitsOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Mass, centre of mass and the inertia matrix about a point, in body or rotated axes."""
@@ -41,6 +43,7 @@ def inertia(
     turns = [parse_rotation(r) for r in rotate or []]
     body = load_body(file)
     about_label, point = parse_about(about, body)
+    body, (point,) = in_output_units(body, units, point)
     I = inertia_about(body.props, point) if about_label != "com" else body.props.inertia_com
     if turns:
         I = re_express(I, compose_world_rotations(turns))
@@ -67,13 +70,15 @@ def inertia(
     emit(format.value, result, table)
 
 
-def principal(file: SpecFile, about: AboutOption = "com", format: FormatOption = OutputFormat.table) -> None:
+def principal(file: SpecFile, about: AboutOption = "com", units: UnitsOption = None,
+              format: FormatOption = OutputFormat.table) -> None:
     """Principal moments (ascending) and axes (unit, right-handed, body frame)."""
     from rbi.core.inertia import inertia_about, principal_axes
     from rbi.spec.load import load_body
 
     body = load_body(file)
     about_label, point = parse_about(about, body)
+    body, (point,) = in_output_units(body, units, point)
     I = inertia_about(body.props, point) if about_label != "com" else body.props.inertia_com
     moments, axes = principal_axes(I)
     result = _header(body, about_label, point) | {"moments": moments, "axes": axes}
@@ -116,6 +121,7 @@ def momentum(
         "--velocity", "-v", metavar="VX,VY,VZ",
         help="Velocity of the centre of mass (body axes, file length unit/s). Without it the "
              "--about point is taken as fixed, so the body turns about it.")] = None,
+    units: UnitsOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Angular momentum h, its angle to ω, and kinetic energy."""
@@ -126,6 +132,8 @@ def momentum(
     v_given = None if velocity is None else np.array(parse_vector(velocity, "--velocity"))
     body = load_body(file)
     about_label, point = parse_about(about, body)
+    body, (point, v_given) = in_output_units(body, units, point, v_given)
+    v_given = None if v_given is None else np.array(v_given)
     props = body.props
     com_from_point = props.com - np.asarray(point)
     # Without a given velocity the reference point is fixed: v_c = ω × r_{c/o} (zero at the CoM).

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import math
 from enum import Enum
-from typing import Annotated
+from typing import Annotated, Optional
 
 import typer
 
@@ -65,3 +65,24 @@ def parse_rotation(text: str) -> tuple[str, float]:
     if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
         raise InputError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
     return axis, math.radians(degrees)
+
+
+UnitsOption = Annotated[
+    Optional[str],
+    typer.Option("--units", "-u", metavar="SI|LENGTH,MASS",
+                 help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
+                      "units. Command-line inputs (--about X,Y,Z, --velocity) stay in the file's units."),
+]
+
+
+def in_output_units(body, units: str | None, *lengths):
+    """The body converted to ``--units`` (unchanged when None), and each of ``lengths`` (points
+    or velocities in the file's length unit, or None) scaled alongside."""
+    if units is None:
+        return body, lengths
+    from rbi.spec.units import convert_body, parse_output_units, scale_factors
+
+    target = parse_output_units(units)
+    factor, _ = scale_factors((body.length_unit, body.mass_unit), target)
+    scaled = tuple(None if v is None else [factor * float(x) for x in v] for v in lengths)
+    return convert_body(body, *target), scaled

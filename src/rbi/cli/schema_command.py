@@ -1,15 +1,80 @@
-"""`rbi schema` (placeholder: to be implemented)."""
+"""`rbi schema` (the JSON Schema of the spec) and `rbi validate` (check many spec files)."""
 
 from __future__ import annotations
 
-from rbi.spec.errors import InputError
+import sys
+from typing import Annotated, Any
+
+import typer
+
+from rbi.cli.options import FormatOption, OutputFormat
+
+def spec_schema() -> dict[str, Any]:
+    """JSON Schema (draft 2020-12) of a body spec, generated from the pydantic models."""
+    from rbi.spec.models import BodySpec
+
+    schema = BodySpec.model_json_schema(mode="validation")
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "rbi body spec",
+    } | {k: v for k, v in schema.items() if k != "title"}
 
 
-def schema() -> None:
-    """Print the JSON schema (stub)."""
-    raise InputError("rbi schema is not implemented yet")
+def schema(format: FormatOption = OutputFormat.table) -> None:
+    """Print the JSON Schema of the YAML spec (for editors: see docs/schema.md)."""
+    import json
+
+    from rbi.spec.errors import InputError
+
+    if format is OutputFormat.csv:
+        raise InputError("--format csv: the schema is a JSON document; use --format table (indented) or json")
+    indent = 2 if format is OutputFormat.table else None
+    sys.stdout.write(json.dumps(spec_schema(), indent=indent, ensure_ascii=False) + "\n")
 
 
-def validate() -> None:
-    """Validate spec files (stub)."""
-    raise InputError("rbi validate is not implemented yet")
+def file_problems(path: str) -> list[str]:
+    """Every problem found in one spec file, one line each (empty when it is valid):
+    unreadable or malformed YAML, each field the models refuse, then the first problem met
+    while building the body (an unphysical custom inertia, a hole removing too much)."""
+    from rbi.spec.errors import InputError
+    from rbi.spec.load import read_yaml, validation_messages
+    from rbi.spec.translate import body_from_spec
+
+    try:
+        raw = read_yaml(path)
+    except InputError as exc:
+        return [str(exc)]
+    spec, problems = validation_messages(path, raw)
+    if problems:
+        return problems
+    try:
+        body_from_spec(spec, path)
+    except InputError as exc:
+        return [str(exc)]
+    return []
+
+
+def validate(
+    files: Annotated[list[str], typer.Argument(help="Spec files (YAML) to check.", show_default=False, metavar="FILE...")],
+    format: FormatOption = OutputFormat.table,
+) -> None:
+    """Check spec files without computing anything: one line per problem; exit 2 if any file fails."""
+    from rbi.cli.render import emit
+
+    reports = [{"file": path, "problems": file_problems(path)} for path in files]
+    bad = [r for r in reports if r["problems"]]
+    count = sum(len(r["problems"]) for r in reports)
+    if format is OutputFormat.table:
+        for report in reports:
+            for line in report["problems"]:
+                print(line)
+        summary = (f"{len(files)} file(s) valid" if not bad else
+                   f"{len(bad)} of {len(files)} file(s) invalid, {count} problem(s)")
+        print(f"rbi: {summary}", file=sys.stderr)
+    else:
+        result = {"ok": not bad, "files": [r | {"ok": not r["problems"]} for r in reports]}
+        rows = [{"file": r["file"], "ok": not r["problems"], "problem": line}
+                for r in reports for line in (r["problems"] or [""])]
+        emit(format.value, result, lambda: None, csv_rows=rows)
+    if bad:
+        raise typer.Exit(2)

@@ -94,3 +94,150 @@ def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> 
 def point(mass: float, position: np.ndarray) -> MassElement:
     """A point mass: no inertia about its own position."""
     return MassElement(mass, np.asarray(position, dtype=float), np.zeros((3, 3)))
+
+
+# --- shapes with an orientation --------------------------------------------------------------
+
+def _turned(principal_moments: np.ndarray, rotation: np.ndarray | None) -> np.ndarray:
+    """``R diag(moments) Rᵀ``: a part's inertia built along its own axes, expressed in body
+    axes. ``rotation`` maps part axes to body axes (None: they coincide)."""
+    diagonal = np.diag(np.asarray(principal_moments, dtype=float))
+    if rotation is None:
+        return diagonal
+    R = np.asarray(rotation, dtype=float)
+    turned = R @ diagonal @ R.T
+    return 0.5 * (turned + turned.T)
+
+
+# --- rectangular box -----------------------------------------------------------------------
+
+def box_volume(size: np.ndarray) -> float:
+    """Volume of a rectangular box with edge lengths ``size = [a, b, c]`` (L³)."""
+    a, b, c = (float(s) for s in size)
+    return a * b * c
+
+
+def box(mass: float, size: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None) -> MassElement:
+    """Solid rectangular box with edges ``size = [a, b, c]`` along its own x, y, z axes.
+
+    About its centre, in its own axes: m (b² + c²)/12, m (a² + c²)/12, m (a² + b²)/12.
+    ``rotation`` maps the box's axes to body axes.
+    """
+    a, b, c = (float(s) for s in size)
+    moments = mass / 12.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+    return MassElement(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
+
+
+# --- solid ellipsoid -----------------------------------------------------------------------
+
+def ellipsoid_volume(semi_axes: np.ndarray) -> float:
+    """Volume 4/3 π a b c of a solid ellipsoid with semi-axes ``[a, b, c]`` (L³)."""
+    a, b, c = (float(s) for s in semi_axes)
+    return 4.0 / 3.0 * math.pi * a * b * c
+
+
+def ellipsoid(mass: float, semi_axes: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None) -> MassElement:
+    """Solid ellipsoid with semi-axes ``[a, b, c]`` along its own x, y, z axes.
+
+    About its centre, in its own axes: m (b² + c²)/5, m (a² + c²)/5, m (a² + b²)/5.
+    """
+    a, b, c = (float(s) for s in semi_axes)
+    moments = mass / 5.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+    return MassElement(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
+
+
+# --- spheres -------------------------------------------------------------------------------
+
+def sphere_volume(radius: float) -> float:
+    """Volume of a solid sphere (L³)."""
+    return 4.0 / 3.0 * math.pi * radius ** 3
+
+
+def sphere(mass: float, radius: float, center: np.ndarray) -> MassElement:
+    """Solid sphere: 2/5 m r² about every axis through its centre."""
+    return MassElement(mass, np.asarray(center, dtype=float), 0.4 * mass * radius * radius * np.eye(3))
+
+
+def spherical_shell_volume(outer_radius: float, inner_radius: float) -> float:
+    """Volume 4/3 π (R³ − r³) of a thick spherical shell, written as
+    4/3 π (R − r)(R² + R r + r²) so that a thin wall keeps its digits (L³)."""
+    R, r = outer_radius, inner_radius
+    return 4.0 / 3.0 * math.pi * (R - r) * (R * R + R * r + r * r)
+
+
+def spherical_shell(mass: float, outer_radius: float, inner_radius: float, center: np.ndarray) -> MassElement:
+    """Thick spherical shell (a sphere of radius R with a concentric hole of radius r).
+
+    Moment about any axis through the centre: 2/5 m (R⁵ − r⁵)/(R³ − r³), evaluated as
+    2/5 m (R⁴ + R³r + R²r² + Rr³ + r⁴)/(R² + Rr + r²), which has no cancellation and is
+    exact in the limits: r = 0 gives the solid sphere (2/5 m R²), r = R the thin shell
+    (2/3 m R²).
+    """
+    R, r = outer_radius, inner_radius
+    ratio = (R ** 4 + R ** 3 * r + R * R * r * r + R * r ** 3 + r ** 4) / (R * R + R * r + r * r)
+    return MassElement(mass, np.asarray(center, dtype=float), 0.4 * mass * ratio * np.eye(3))
+
+
+# --- tube (hollow circular cylinder) ---------------------------------------------------------
+
+def tube_volume(outer_radius: float, inner_radius: float, length: float) -> float:
+    """Volume π (R − r)(R + r) L of a tube (L³); a thin wall keeps its digits."""
+    R, r = outer_radius, inner_radius
+    return math.pi * (R - r) * (R + r) * length
+
+
+def tube(mass: float, outer_radius: float, inner_radius: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+    """Hollow circular cylinder (outer radius R, bore r) between the centres of its end faces.
+
+    About its centre: axial m (R² + r²)/2, transverse m (3 (R² + r²) + L²)/12. r = 0 gives
+    the solid cylinder, r = R a thin-walled tube.
+    """
+    start = np.asarray(start, dtype=float)
+    end = np.asarray(end, dtype=float)
+    u, length = axis_between(start, end)
+    squares = outer_radius * outer_radius + inner_radius * inner_radius
+    axial = 0.5 * mass * squares
+    transverse = mass * (3.0 * squares + length * length) / 12.0
+    return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))
+
+
+# --- frustum (truncated cone) ----------------------------------------------------------------
+
+def frustum_volume(start_radius: float, end_radius: float, length: float) -> float:
+    """Volume π h (a² + a b + b²)/3 of a truncated cone with end radii a, b (L³)."""
+    a, b = start_radius, end_radius
+    return math.pi * length * (a * a + a * b + b * b) / 3.0
+
+
+def frustum(mass: float, start_radius: float, end_radius: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+    """Solid truncated cone: a disc of radius a centred on ``start``, one of radius b on
+    ``end`` (either radius may be 0, giving a cone; a = b gives a cylinder).
+
+    With S = a² + ab + b² and h = |end − start|:
+    centre of mass at h (a² + 2ab + 3b²)/(4 S) from ``start``;
+    axial moment 3/10 m (a⁴ + a³b + a²b² + ab³ + b⁴)/S;
+    transverse moment about the centre of mass
+    3/20 m (a⁴ + a³b + a²b² + ab³ + b⁴)/S + 3/80 m h² (a⁴ + 4a³b + 10a²b² + 4ab³ + b⁴)/S².
+    Every term is positive, so no digits cancel.
+    """
+    a, b = float(start_radius), float(end_radius)
+    start = np.asarray(start, dtype=float)
+    u, h = axis_between(start, end)
+    S = a * a + a * b + b * b
+    quartic = a ** 4 + a ** 3 * b + a * a * b * b + a * b ** 3 + b ** 4
+    along = h * (a * a + 2.0 * a * b + 3.0 * b * b) / (4.0 * S)
+    axial = 0.3 * mass * quartic / S
+    spread = a ** 4 + 4.0 * a ** 3 * b + 10.0 * a * a * b * b + 4.0 * a * b ** 3 + b ** 4
+    transverse = 0.15 * mass * quartic / S + 3.0 * mass * h * h * spread / (80.0 * S * S)
+    return MassElement(mass, start + along * u, axisymmetric_inertia(axial, transverse, u))
+
+
+# --- thin rod --------------------------------------------------------------------------------
+
+def rod(mass: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+    """Thin straight rod (a line mass) from ``start`` to ``end``: m L²/12 about any line
+    through its middle perpendicular to it, 0 about its own axis."""
+    start = np.asarray(start, dtype=float)
+    end = np.asarray(end, dtype=float)
+    u, length = axis_between(start, end)
+    return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(0.0, mass * length * length / 12.0, u))

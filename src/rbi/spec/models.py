@@ -10,18 +10,18 @@ from __future__ import annotations
 from typing import Annotated, Any, Literal, Union
 
 import numpy as np
-from pydantic import BaseModel, ConfigDict, Field, model_validator
+from pydantic import Field, model_validator
 
-Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
-Positive = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0)]
-Vector3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
+from rbi.spec.expect import Expect
+from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
+
+PositiveVector3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
 
 LengthUnit = Literal["m", "cm", "mm", "in", "ft"]
 MassUnit = Literal["kg", "g", "lb"]
 
 
-class _Strict(BaseModel):
-    model_config = ConfigDict(extra="forbid", frozen=True)
+_Strict = StrictModel
 
 
 class Units(_Strict):
@@ -36,10 +36,12 @@ class _Part(_Strict):
 
 
 class _Solid(_Part):
-    """A solid with either a total ``mass`` or a ``density`` (mass per length³)."""
+    """A solid with either a total ``mass`` or a ``density`` (mass per length³, or a built-in
+    material name). ``subtract: true`` makes it a hole: its material is removed."""
 
     mass: Positive | None = None
-    density: Positive | None = None
+    density: Density | None = None
+    subtract: Flag = Field(False, description="Remove this solid's material (a hole) instead of adding it.")
 
     @model_validator(mode="after")
     def _mass_or_density(self):
@@ -92,15 +94,166 @@ class PointPart(_Part):
     @model_validator(mode="before")
     @classmethod
     def _no_density(cls, data: Any):
-        if isinstance(data, dict) and "density" in data:
-            raise ValueError("density: a point mass takes `mass` only (it has no volume)")
-        return data
+        return _mass_only(data, "a point mass")
+
+
+def _mass_only(data: Any, what: str) -> Any:
+    """Refuse ``density`` and ``subtract`` on a part without volume (before field checks)."""
+    if isinstance(data, dict) and "density" in data:
+        raise ValueError(f"density: {what} takes `mass` only (it has no volume)")
+    if isinstance(data, dict) and "subtract" in data:
+        raise ValueError(f"subtract: only solids with a volume can be subtracted, not {what}")
+    return data
+
+
+# --- shapes added for engineering parts (docs/spec.md gives each closed form) ---------------
+
+class Rotation(_Strict):
+    """A turn by ``angle_deg`` degrees about ``axis`` (right-hand rule), mapping the part's own
+    axes to body axes. The part turns about its own centre."""
+
+    axis: Vector3
+    angle_deg: Number
+
+    @model_validator(mode="after")
+    def _axis_not_zero(self):
+        if not any(self.axis):
+            raise ValueError("axis: must not be the zero vector [0, 0, 0]")
+        return self
+
+
+def _hollow(part, what: str) -> None:
+    if part.inner_radius > part.outer_radius:
+        raise ValueError(f"inner_radius: must not exceed outer_radius ({part.inner_radius!r} > {part.outer_radius!r})")
+    if part.inner_radius == part.outer_radius and part.density is not None:
+        raise ValueError(f"density: a thin-walled {what} (inner_radius = outer_radius) has no volume; give its `mass`")
+
+
+class BoxPart(_Solid):
+    """Solid rectangular box: edges ``size = [a, b, c]`` along its own x, y, z axes, centred on
+    ``center``, turned by ``rotation``."""
+
+    shape: Literal["box"]
+    center: Vector3
+    size: PositiveVector3
+    rotation: Rotation | None = None
+
+
+class SpherePart(_Solid):
+    """Solid sphere."""
+
+    shape: Literal["sphere"]
+    center: Vector3
+    radius: Positive
+
+
+class SphericalShellPart(_Solid):
+    """Thick spherical shell between ``inner_radius`` and ``outer_radius`` (equal radii: a thin
+    shell, given by `mass`)."""
+
+    shape: Literal["spherical_shell"]
+    center: Vector3
+    outer_radius: Positive
+    inner_radius: NonNegative
+
+    @model_validator(mode="after")
+    def _radii(self):
+        _hollow(self, "shell")
+        return self
+
+
+class TubePart(_Solid):
+    """Hollow circular cylinder (outer and inner radius) between the centres of its end faces."""
+
+    shape: Literal["tube"]
+    start: Vector3
+    end: Vector3
+    outer_radius: Positive
+    inner_radius: NonNegative
+
+    @model_validator(mode="after")
+    def _checks(self):
+        _distinct(self.start, self.end, "start, end")
+        _hollow(self, "tube")
+        return self
+
+
+class FrustumPart(_Solid):
+    """Solid truncated cone: a disc of ``start_radius`` centred on ``start``, one of
+    ``end_radius`` on ``end``."""
+
+    shape: Literal["frustum"]
+    start: Vector3
+    end: Vector3
+    start_radius: NonNegative
+    end_radius: NonNegative
+
+    @model_validator(mode="after")
+    def _checks(self):
+        _distinct(self.start, self.end, "start, end")
+        if self.start_radius == 0 and self.end_radius == 0:
+            raise ValueError("start_radius, end_radius: at least one must be greater than 0")
+        return self
+
+
+class EllipsoidPart(_Solid):
+    """Solid ellipsoid: ``semi_axes = [a, b, c]`` along its own x, y, z axes, turned by
+    ``rotation``."""
+
+    shape: Literal["ellipsoid"]
+    center: Vector3
+    semi_axes: PositiveVector3
+    rotation: Rotation | None = None
+
+
+class RodPart(_Part):
+    """Thin straight rod (a line mass) from ``start`` to ``end``: `mass` only."""
+
+    shape: Literal["rod"]
+    mass: Positive
+    start: Vector3
+    end: Vector3
+
+    @model_validator(mode="before")
+    @classmethod
+    def _no_density(cls, data: Any):
+        return _mass_only(data, "a thin rod")
+
+    @model_validator(mode="after")
+    def _has_length(self):
+        _distinct(self.start, self.end, "start, end")
+        return self
+
+
+class CustomPart(_Part):
+    """Mass properties given directly: ``inertia`` about ``about`` (default: the centre of mass)
+    in the part's axes, turned into body axes by ``rotation``."""
+
+    shape: Literal["custom"]
+    mass: Positive
+    center_of_mass: Vector3
+    inertia: InertiaMatrix
+    about: Vector3 | None = None
+    rotation: Rotation | None = None
+
+    @model_validator(mode="before")
+    @classmethod
+    def _no_density(cls, data: Any):
+        return _mass_only(data, "a custom part")
 
 
 SHAPE_MODELS: dict[str, type[_Part]] = {
     "cone": ConePart,
     "cylinder": CylinderPart,
     "point": PointPart,
+    "box": BoxPart,
+    "sphere": SpherePart,
+    "spherical_shell": SphericalShellPart,
+    "tube": TubePart,
+    "frustum": FrustumPart,
+    "ellipsoid": EllipsoidPart,
+    "rod": RodPart,
+    "custom": CustomPart,
 }
 """Every part model by its ``shape`` tag; new shapes are added here."""
 
@@ -122,7 +275,7 @@ class BodySpec(_Strict):
     pivot: Vector3 | None = None
     parts: list[Part] = Field(default_factory=list)
     point_cloud: PointCloudRef | None = None
-    expect: dict[str, Any] | None = None
+    expect: Expect | None = None
 
     @model_validator(mode="after")
     def _has_mass(self):

@@ -7,36 +7,130 @@ from typing import Callable
 import numpy as np
 
 from rbi.core import shapes
-from rbi.core.inertia import combine_elements
+from rbi.core.inertia import combine_elements, parallel_axis_to_com, re_express
+from rbi.core.rotation import axis_angle_matrix
+from rbi.core.validity import inertia_problem
 from rbi.spec import models
 from rbi.spec.errors import InputError
+from rbi.spec.materials import density_in_units
 
 
-def _solid_mass(part, volume: float) -> float:
-    return part.mass if part.mass is not None else part.density * volume
+def _solid_mass(part, volume: float, units: models.Units) -> float:
+    """The part's mass: given, or density × volume (a material name is looked up and
+    converted to the file's units)."""
+    if part.mass is not None:
+        return part.mass
+    density = part.density
+    if isinstance(density, str):
+        density = density_in_units(density, units.length, units.mass)
+    return density * volume
 
 
-def cone_element(part: models.ConePart) -> shapes.MassElement:
-    height = float(np.linalg.norm(np.subtract(part.base, part.apex)))
-    mass = _solid_mass(part, shapes.cone_volume(part.radius, height))
+def _length(start, end) -> float:
+    return float(np.linalg.norm(np.subtract(end, start)))
+
+
+def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
+    """Matrix (part axes -> body axes) of a spec ``rotation``; None for no rotation.
+
+    Entries below 1e-15 are rounding left by sin/cos of exact quarter turns and are set to
+    zero, so that a box turned by 90° keeps exact zero products of inertia.
+    """
+    if rotation is None:
+        return None
+    R = axis_angle_matrix(np.asarray(rotation.axis, dtype=float), np.radians(rotation.angle_deg))
+    R[np.abs(R) < 1e-15] = 0.0
+    return R
+
+
+def cone_element(part: models.ConePart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.cone_volume(part.radius, _length(part.apex, part.base)), units)
     return shapes.cone(mass, part.radius, part.apex, part.base)
 
 
-def cylinder_element(part: models.CylinderPart) -> shapes.MassElement:
-    length = float(np.linalg.norm(np.subtract(part.end, part.start)))
-    mass = _solid_mass(part, shapes.cylinder_volume(part.radius, length))
+def cylinder_element(part: models.CylinderPart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.cylinder_volume(part.radius, _length(part.start, part.end)), units)
     return shapes.cylinder(mass, part.radius, part.start, part.end)
 
 
-def point_element(part: models.PointPart) -> shapes.MassElement:
+def point_element(part: models.PointPart, units: models.Units) -> shapes.MassElement:
     return shapes.point(part.mass, part.position)
+
+
+def box_element(part: models.BoxPart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.box_volume(part.size), units)
+    return shapes.box(mass, part.size, part.center, rotation_matrix(part.rotation))
+
+
+def sphere_element(part: models.SpherePart, units: models.Units) -> shapes.MassElement:
+    return shapes.sphere(_solid_mass(part, shapes.sphere_volume(part.radius), units), part.radius, part.center)
+
+
+def spherical_shell_element(part: models.SphericalShellPart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.spherical_shell_volume(part.outer_radius, part.inner_radius), units)
+    return shapes.spherical_shell(mass, part.outer_radius, part.inner_radius, part.center)
+
+
+def tube_element(part: models.TubePart, units: models.Units) -> shapes.MassElement:
+    volume = shapes.tube_volume(part.outer_radius, part.inner_radius, _length(part.start, part.end))
+    mass = _solid_mass(part, volume, units)
+    return shapes.tube(mass, part.outer_radius, part.inner_radius, part.start, part.end)
+
+
+def frustum_element(part: models.FrustumPart, units: models.Units) -> shapes.MassElement:
+    volume = shapes.frustum_volume(part.start_radius, part.end_radius, _length(part.start, part.end))
+    mass = _solid_mass(part, volume, units)
+    return shapes.frustum(mass, part.start_radius, part.end_radius, part.start, part.end)
+
+
+def ellipsoid_element(part: models.EllipsoidPart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.ellipsoid_volume(part.semi_axes), units)
+    return shapes.ellipsoid(mass, part.semi_axes, part.center, rotation_matrix(part.rotation))
+
+
+def rod_element(part: models.RodPart, units: models.Units) -> shapes.MassElement:
+    return shapes.rod(part.mass, part.start, part.end)
+
+
+def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassElement:
+    """The given inertia turned into body axes, then moved from ``about`` to the centre of
+    mass. Raises ValueError (``field: what is wrong``) when either is not physical."""
+    given = np.asarray(part.inertia, dtype=float)
+    problem = inertia_problem(given)
+    if problem is not None:
+        raise ValueError(f"inertia: {problem.message}")
+    R = rotation_matrix(part.rotation)
+    inertia = given if R is None else re_express(given, R)
+    com = np.asarray(part.center_of_mass, dtype=float)
+    if part.about is not None:
+        inertia = parallel_axis_to_com(inertia, part.mass, com - np.asarray(part.about, dtype=float))
+        problem = inertia_problem(inertia, scale=0.5 * float(np.trace(given)))
+        if problem is not None:
+            raise ValueError(f"inertia: about the centre of mass (after the parallel-axis shift from `about`) "
+                             f"the inertia is {problem.message}: the given inertia is too small for this mass "
+                             f"and offset")
+    return shapes.MassElement(part.mass, com, 0.5 * (inertia + inertia.T))
 
 
 ELEMENT_BUILDERS: dict[type, Callable[..., shapes.MassElement]] = {
     models.ConePart: cone_element,
     models.CylinderPart: cylinder_element,
     models.PointPart: point_element,
+    models.BoxPart: box_element,
+    models.SpherePart: sphere_element,
+    models.SphericalShellPart: spherical_shell_element,
+    models.TubePart: tube_element,
+    models.FrustumPart: frustum_element,
+    models.EllipsoidPart: ellipsoid_element,
+    models.RodPart: rod_element,
+    models.CustomPart: custom_element,
 }
+"""Each part model's translation ``(part, units) -> MassElement`` (file units)."""
+
+
+def _removed(element: shapes.MassElement) -> shapes.MassElement:
+    """A hole: the same solid with negative mass and inertia."""
+    return shapes.MassElement(-element.mass, element.com, -element.inertia_com)
 
 
 def part_label(index: int, part) -> str:
@@ -50,20 +144,32 @@ def body_from_spec(spec: models.BodySpec, path: str):
 
     elements = []
     for i, part in enumerate(spec.parts):
-        element = ELEMENT_BUILDERS[type(part)](part)
+        try:
+            with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported just below
+                element = ELEMENT_BUILDERS[type(part)](part, spec.units)
+        except ValueError as exc:
+            raise InputError(f"{path}: {part_label(i, part)}: {exc}") from None
         if not (np.isfinite(element.mass) and np.all(np.isfinite(element.inertia_com))):
             raise InputError(f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows")
-        elements.append(element)
+        elements.append(_removed(element) if getattr(part, "subtract", False) else element)
     part_names = [p.name for p in spec.parts]
     if spec.point_cloud is not None:  # the whole cloud enters as one part, reduced vectorised
         from rbi.spec.point_cloud import cloud_element
 
         elements.append(cloud_element(path, spec.point_cloud.file))
         part_names.append("point_cloud")
+    holes = [i for i, part in enumerate(spec.parts) if getattr(part, "subtract", False)]
+    if holes:
+        from rbi.spec.holes import check_holes
+
+        check_holes(path, spec, elements, holes)
     try:
-        props = combine_elements(elements)
+        with np.errstate(over="ignore", invalid="ignore"):
+            props = combine_elements(elements)
     except ValueError as exc:
         raise InputError(f"{path}: {exc}") from None
+    if not all(np.all(np.isfinite(x)) for x in props):
+        raise InputError(f"{path}: numbers too large: the body's mass, centre of mass or inertia overflows")
     pivot = None if spec.pivot is None else np.asarray(spec.pivot, dtype=float)
     return LoadedBody(
         path=path,

@@ -31,3 +31,54 @@ def unit_labels(length: str, mass: str) -> dict[str, str]:
         "velocity": f"{length}/s",
         "omega": "rad/s",
     }
+
+
+# --- converting results to other units (`--units`, exports) --------------------------------
+
+def parse_output_units(text: str) -> tuple[str, str]:
+    """``--units`` value -> (length unit, mass unit): ``SI`` (m, kg) or ``LENGTH,MASS`` such
+    as ``mm,g``. Raises :class:`~rbi.spec.errors.InputError` otherwise."""
+    from rbi.spec.errors import InputError
+
+    key = text.strip()
+    if key.lower() == "si":
+        return "m", "kg"
+    length, _, mass = key.partition(",")
+    length, mass = length.strip(), mass.strip()
+    if length not in LENGTH_UNITS_IN_M or mass not in MASS_UNITS_IN_KG:
+        raise InputError(f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(LENGTH_UNITS_IN_M)} "
+                         f"and MASS one of {', '.join(MASS_UNITS_IN_KG)} (e.g. mm,g), got {text!r}")
+    return length, mass
+
+
+def scale_factors(from_units: tuple[str, str], to_units: tuple[str, str]) -> tuple[float, float]:
+    """Factors (length, mass) that turn numbers in ``from_units`` into ``to_units``, each a
+    (length, mass) pair."""
+    length = LENGTH_UNITS_IN_M[from_units[0]] / LENGTH_UNITS_IN_M[to_units[0]]
+    mass = MASS_UNITS_IN_KG[from_units[1]] / MASS_UNITS_IN_KG[to_units[1]]
+    return length, mass
+
+
+def convert_body(body, length_unit: str, mass_unit: str):
+    """The same :class:`~rbi.spec.load.LoadedBody` with every number in other units: masses,
+    centres of mass, inertias (mass·length²) and the pivot. The body's own units are
+    returned unchanged (no rounding added)."""
+    import dataclasses
+
+    import numpy as np
+
+    if (body.length_unit, body.mass_unit) == (length_unit, mass_unit):
+        return body
+    L, M = scale_factors((body.length_unit, body.mass_unit), (length_unit, mass_unit))
+
+    def element(e):
+        return type(e)(e.mass * M, np.asarray(e.com) * L, np.asarray(e.inertia_com) * (M * L * L))
+
+    return dataclasses.replace(
+        body,
+        length_unit=length_unit,
+        mass_unit=mass_unit,
+        props=element(body.props),
+        pivot=None if body.pivot is None else body.pivot * L,
+        elements=[element(e) for e in body.elements],
+    )

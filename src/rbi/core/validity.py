@@ -1,0 +1,68 @@
+"""Is a 3×3 matrix a physically possible inertia matrix?
+
+The tests follow MuJoCo's compiler and Drake's ``RotationalInertia::CouldBePhysicallyValid``:
+finite, symmetric, principal moments not negative, and the triangle inequality
+``I1 + I2 ≥ I3`` on the principal moments (no real mass distribution violates it: each
+moment is a sum of two of the three second moments ∫x² dm, ∫y² dm, ∫z² dm).
+
+Rounding is forgiven relative to the size of the matrix, never with an absolute floor:
+a tolerance of ``rtol · scale`` where ``scale`` defaults to the largest moment the matrix
+could have (half its trace). Inertias of small parts in SI (10⁻⁹ kg·m² and less) are thus
+judged exactly as strictly as large ones.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+INERTIA_RTOL = 1e-9
+"""Default relative tolerance: well above the rounding of any double computation on the
+matrix (Drake uses 16 ε ≈ 3.6·10⁻¹⁵), well below any physical difference."""
+
+
+class InertiaProblem(NamedTuple):
+    """Why a matrix is not a valid inertia: ``kind`` is ``'not finite'``, ``'not symmetric'``,
+    ``'negative moment'`` or ``'triangle inequality'``; ``message`` says it in words with the
+    numbers."""
+
+    kind: str
+    message: str
+
+
+def inertia_problem(inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: float | None = None) -> InertiaProblem | None:
+    """The first reason ``inertia`` (M·L², any axes, about any point) is not physically
+    possible, or None when it is.
+
+    ``scale`` (M·L²) sets the size against which ``rtol`` forgives rounding; give the gross
+    size when the matrix is a small difference of large ones (a body with holes).
+    """
+    I = np.asarray(inertia, dtype=float)
+    if I.shape != (3, 3) or not np.all(np.isfinite(I)):
+        return InertiaProblem("not finite", "inertia must be a finite 3×3 matrix")
+    size = 0.5 * abs(float(np.trace(I))) if scale is None else float(scale)
+    tol = rtol * size
+    asymmetry = float(np.max(np.abs(I - I.T)))
+    if asymmetry > tol:
+        i, j = np.unravel_index(int(np.argmax(np.abs(I - I.T))), (3, 3))
+        i, j = sorted((int(i), int(j)))
+        return InertiaProblem(
+            "not symmetric",
+            f"not symmetric: entry [{i}][{j}] = {I[i, j]:.6g} but [{j}][{i}] = {I[j, i]:.6g}",
+        )
+    moments = np.linalg.eigvalsh(0.5 * (I + I.T))  # ascending
+    I1, I2, I3 = (float(m) for m in moments)
+    if I1 < -tol:
+        return InertiaProblem(
+            "negative moment",
+            f"not positive definite: principal moment I1 = {I1:.6g} < 0 "
+            f"(principal moments {I1:.6g}, {I2:.6g}, {I3:.6g})",
+        )
+    if I1 + I2 < I3 - tol:
+        return InertiaProblem(
+            "triangle inequality",
+            f"violates the triangle inequality I1 + I2 >= I3 on the principal moments: "
+            f"{I1:.6g} + {I2:.6g} = {I1 + I2:.6g} < {I3:.6g}",
+        )
+    return None

@@ -1,0 +1,226 @@
+"""Field types of the spec that accept more than one form (a number or a material name, a
+matrix or its six components, a percentage or an absolute tolerance).
+
+Each is validated by one plain function that raises ``ValueError`` with the message the user
+sees (after ``file: part: field:``), and carries its own JSON Schema for ``rbi schema``.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from typing import Annotated, Any
+
+from pydantic import AfterValidator, BaseModel, ConfigDict, Field, PlainValidator, WithJsonSchema
+
+from rbi.spec.errors import _show
+from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
+
+Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
+Positive = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0)]
+Vector3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
+
+
+class StrictModel(BaseModel):
+    """Base of every spec model: unknown fields refused, instances immutable."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True)
+
+
+def _is_number(value: Any) -> bool:
+    return isinstance(value, (int, float)) and not isinstance(value, bool)
+
+
+def _finite_number(value: Any, what: str = "a number") -> float:
+    if not _is_number(value):
+        raise ValueError(f"must be {what} (got {_show(value)})")
+    if not math.isfinite(value):
+        raise ValueError(f"must be a finite number (got {value!r})")
+    return float(value)
+
+
+def _looks_numeric(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
+
+
+# --- true or false ---------------------------------------------------------------------------
+
+def _flag(value: Any) -> bool:
+    if not isinstance(value, bool):
+        raise ValueError(f"must be true or false (got {_show(value)})")
+    return value
+
+
+Flag = Annotated[Any, PlainValidator(_flag), WithJsonSchema({"type": "boolean"})]
+
+
+# --- non-negative number -------------------------------------------------------------------
+
+def _non_negative(value: float) -> float:
+    if value < 0:
+        raise ValueError(f"must not be negative (got {value!r})")
+    return value
+
+
+NonNegative = Annotated[
+    float,
+    Field(strict=True, allow_inf_nan=False, json_schema_extra={"minimum": 0}),
+    AfterValidator(_non_negative),
+]
+
+
+# --- density: a number or a material name ----------------------------------------------------
+
+def _density(value: Any) -> float | str:
+    if isinstance(value, str):
+        if _looks_numeric(value):
+            raise ValueError(f"must be a number, not text (write {value.strip()} without quotes)")
+        if canonical_name(value) is None:
+            raise ValueError(unknown_material_message(value))
+        return value
+    number = _finite_number(value, "a number (mass per length³) or a material name such as steel")
+    if number <= 0:
+        raise ValueError(f"must be greater than 0 (got {value!r})")
+    return number
+
+
+def _material_spellings() -> list[str]:
+    """Names an editor should accept: each table name and alias in lower, UPPER and Title case,
+    with spaces, ``_`` or ``-`` (rbi itself ignores case and separators)."""
+    spellings = set()
+    for name in set(MATERIAL_DENSITIES_SI) | set(ALIASES):
+        for cased in (name, name.upper(), name.title()):
+            spellings |= {cased, cased.replace(" ", "_"), cased.replace(" ", "-")}
+    return sorted(spellings)
+
+
+Density = Annotated[
+    Any,
+    PlainValidator(_density),
+    WithJsonSchema({
+        "anyOf": [
+            {"type": "number", "exclusiveMinimum": 0},
+            {"type": "string", "enum": _material_spellings()},
+        ],
+        "description": "Mass per length³ in the file's units, or a built-in material name "
+                       "(converted from kg/m³ to the file's units).",
+    }),
+]
+
+
+# --- inertia matrix: 3×3 or six components -------------------------------------------------
+
+_COMPONENTS = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+_MATRIX_FORMS = ("a 3×3 matrix [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] or a mapping "
+                 "{ixx, iyy, izz, ixy, ixz, iyz}")
+
+
+def _inertia_matrix(value: Any) -> list[list[float]]:
+    if isinstance(value, dict):
+        unknown = [k for k in value if k not in _COMPONENTS]
+        if unknown:
+            raise ValueError(f"{unknown[0]}: unknown component (expected {', '.join(_COMPONENTS)})")
+        missing = [k for k in _COMPONENTS[:3] if k not in value]
+        if missing:
+            raise ValueError(f"{missing[0]}: missing required component")
+        c = {k: _component(k, value.get(k, 0.0)) for k in _COMPONENTS}
+        return [[c["ixx"], c["ixy"], c["ixz"]], [c["ixy"], c["iyy"], c["iyz"]], [c["ixz"], c["iyz"], c["izz"]]]
+    if not (isinstance(value, list) and len(value) == 3 and all(isinstance(r, list) and len(r) == 3 for r in value)):
+        raise ValueError(f"must be {_MATRIX_FORMS} (got {_show(value)})")
+    rows = []
+    for i, row in enumerate(value):
+        rows.append([_component(f"[{i}][{j}]", v) for j, v in enumerate(row)])
+    return rows
+
+
+def _component(name: str, value: Any) -> float:
+    try:
+        return _finite_number(value)
+    except ValueError as exc:
+        raise ValueError(f"{name}: {exc}") from None
+
+
+_NUMBER_ROW = {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3}
+
+InertiaMatrix = Annotated[
+    Any,
+    PlainValidator(_inertia_matrix),
+    WithJsonSchema({
+        "anyOf": [
+            {"type": "array", "items": _NUMBER_ROW, "minItems": 3, "maxItems": 3},
+            {
+                "type": "object",
+                "properties": {k: {"type": "number"} for k in _COMPONENTS},
+                "required": list(_COMPONENTS[:3]),
+                "additionalProperties": False,
+            },
+        ],
+        "description": "Inertia matrix (mass·length²): products are the matrix entries "
+                       "(ixy = −∫xy dm), as in `rbi inertia` and URDF.",
+    }),
+]
+
+
+# --- tolerance: a percentage or an absolute number -----------------------------------------
+
+_PERCENT = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*%\s*$")
+
+
+def _tolerance(value: Any) -> float | str:
+    if isinstance(value, str):
+        match = _PERCENT.match(value)
+        if not match or not math.isfinite(float(match.group(1))):
+            raise ValueError(f"must be a percentage such as 1% or an absolute number in file units (got {_show(value)})")
+        return value.strip()
+    number = _finite_number(value, "a percentage such as 1% or an absolute number in file units")
+    if number < 0:
+        raise ValueError(f"must not be negative (got {value!r})")
+    return number
+
+
+def tolerance_allowed(tol: float | str, reference: float) -> float:
+    """The allowed absolute deviation: ``tol`` itself, or ``tol``% of ``reference`` (the
+    magnitude of the expected value)."""
+    if isinstance(tol, str):
+        return float(_PERCENT.match(tol).group(1)) / 100.0 * abs(reference)
+    return float(tol)
+
+
+Tolerance = Annotated[
+    Any,
+    PlainValidator(_tolerance),
+    WithJsonSchema({
+        "anyOf": [
+            {"type": "number", "minimum": 0},
+            {"type": "string", "pattern": r"^\s*[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?\s*%\s*$"},
+        ],
+        "description": "Absolute (file units) or a percentage of the expected value's magnitude, e.g. 1%.",
+    }),
+]
+
+
+# --- reference point: com, origin, pivot or [x, y, z] ---------------------------------------
+
+def _about(value: Any) -> str | list[float]:
+    if isinstance(value, str) and value.strip().lower() in ("com", "origin", "pivot"):
+        return value.strip().lower()
+    if isinstance(value, list) and len(value) == 3:
+        return [_component(f"[{i}]", v) for i, v in enumerate(value)]
+    raise ValueError(f"must be com, origin, pivot or a point [x, y, z] (got {_show(value)})")
+
+
+AboutPoint = Annotated[
+    Any,
+    PlainValidator(_about),
+    WithJsonSchema({
+        "anyOf": [
+            {"type": "string", "enum": ["com", "origin", "pivot"]},
+            {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3},
+        ],
+        "description": "Reference point: com, origin, pivot, or [x, y, z] in body coordinates.",
+    }),
+]
