@@ -188,43 +188,54 @@ class _ProgressBar:
 
 
 def _table(body, result: dict):
+    from rich.text import Text
+
     from rbi.cli import tables
 
     labels = body.labels
     final = result["final"]
-    rows = [
+    motion = [
         ("scene", "", result["scene"]),
-        ("method", "", f"{result['method']} ({result['integrator']})"),
+        ("method", "", result["method"]),
         ("duration, samples", "s", f"{number(result['duration'])}, {result['samples']}"),
-        ("final t", "s", number(final["t"])),
         ("final q [w, x, y, z]", "", tables.vector(final["q"])),
         ("final ω (body axes)", "rad/s", tables.vector(final["omega"])),
         ("final tilt of body z", "deg", number(final["tilt_deg"])),
-        ("nutation: tilt min … max", "deg", f"{number(result['tilt_min_deg'])} … {number(result['tilt_max_deg'])}"),
+        ("tilt min … max (nutation)", "deg", f"{number(result['tilt_min_deg'])} … {number(result['tilt_max_deg'])}"),
         ("mean precession rate", "deg/s", number(result["mean_precession_rate_deg_s"])),
     ]
-    names = {"energy": "energy", "h_vertical": "vertical h (about pivot)", "h_spin": "spin h·axis",
-             "h_world": "angular momentum h (world)"}
+    names = {"energy": "energy", "h_vertical": "vertical h about pivot", "h_spin": "spin h·axis",
+             "h_world": "h (world axes)"}
+    accuracy = []
     for key, item in result["conserved"].items():
-        unit = labels[item["unit"]]
         initial = item["initial"]
         shown = tables.vector(initial) if np.ndim(initial) else number(initial, 10)
-        rows.append((f"{names[key]}: initial", unit, shown))
-        rows.append((f"{names[key]}: relative drift", "", number(item["drift"], 3)))
-    rows.append(("| |q| − 1 | max", "", number(result["quaternion_norm_error"], 3)))
+        accuracy.append((f"{names[key]}", labels[item["unit"]], f"{shown}  (drift {number(item['drift'], 2)})"))
+    accuracy.append(("| |q| − 1 | largest", "", number(result["quaternion_norm_error"], 2)))
     estimate = result.get("error_estimate")
     if estimate:
-        rows.append(("error estimate: orientation", "deg", number(estimate["orientation_deg"], 3)))
-        rows.append(("error estimate: ω", "rad/s", number(estimate["omega_rad_s"], 3)))
-    rows += [
+        accuracy.append(("error estimate: orientation", "deg", number(estimate["orientation_deg"], 2)))
+        accuracy.append(("error estimate: ω", "rad/s", number(estimate["omega_rad_s"], 2)))
+    accuracy += [
         ("steps (rejected)", "", f"{result['steps']} ({result['rejected_steps']})"),
         ("right-hand-side evaluations", "", str(result["rhs_evals"])),
         ("integration wall time", "s", number(result["wall_seconds"], 3)),
     ]
     if result["load_seconds"] > 0.05:
-        rows.append(("loading the compiled kernel", "s", number(result["load_seconds"], 3)))
-    stability = result["stability"]
-    rows.append(("stability", "", stability["verdict"]))
+        accuracy.append(("loading the compiled kernel", "s", number(result["load_seconds"], 3)))
+    notes = [f"Integrator: {result['integrator']}.", f"Stability: {result['stability']['verdict']}."]
+    facts = result.get("closed_form")
+    if facts and facts.get("kind") == "Lagrange top":
+        notes.append(f"Closed form (Lagrange top): tilt between {number(facts['nutation_tilt_min_deg'])} and "
+                     f"{number(facts['nutation_tilt_max_deg'])} deg, nutation period {number(facts['nutation_period_s'])} s, "
+                     f"mean precession {number(facts['mean_precession_rate_deg_s'])} deg/s.")
+    elif facts and facts.get("kind") == "asymmetric free body":
+        notes.append(f"Closed form (Euler–Poinsot): ω repeats every {number(facts['omega_period_s'])} s "
+                     f"(4K(m)/λ, m = {number(facts['elliptic_parameter'])}).")
     if "out" in result:
-        rows.append(("trajectory written to", "", result["out"]))
-    return tables.quantities(f"{body.name or body.path} — simulate", rows)
+        notes.append(f"Trajectory written to {result['out']}.")
+    return tables.stack(
+        tables.quantities(f"{body.name or body.path} — simulate", motion),
+        tables.quantities("Accuracy and cost", accuracy),
+        Text("\n".join(notes)),
+    )

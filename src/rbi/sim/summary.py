@@ -89,4 +89,18 @@ def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any
         "max_relative_drift": max(v["drift"] for v in conserved.values()),
         "quaternion_norm_error": max(float(np.max(np.abs(norms - 1.0))), trajectory.quaternion_norm_error),
         "stability": diagnostics.stability(scene, q0, omega0),
+        "closed_form": closed_form_facts(scene, q0, omega0),
     }
+
+
+def closed_form_facts(scene: Scene, q0, omega0) -> dict[str, Any] | None:
+    """Characteristic numbers of the closed-form solution (nutation bounds and period of a
+    Lagrange top, period of ω of a free body ...), or None when the scene has none."""
+    from rbi.sim import exact
+
+    if scene.pivoted and scene.gravity > 0 and np.any(scene.com_from_pivot) and diagnostics.symmetry_axis(scene) is None:
+        return None  # a heavy asymmetric top: no closed form (checked here to avoid importing scipy)
+    try:
+        return exact.solve(scene, q0, omega0).facts()
+    except exact.NotIntegrable:
+        return None
