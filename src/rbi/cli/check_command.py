@@ -133,15 +133,13 @@ def _csv_rows(checks) -> list[dict[str, Any]]:
 
 
 def _table(body, checks, failed: int):
-    from rich import box
     from rich.markup import escape
-    from rich.table import Table
 
+    from rbi.cli import tables
     from rbi.cli.render import number
 
     verdict = "all expectations hold" if not failed else f"{failed} of {len(checks)} expectations FAIL"
-    t = Table(title=f"{body.name or body.path} — check: {verdict}", box=box.SIMPLE_HEAD,
-              title_justify="left", show_edge=False)
+    t = tables.titled(f"{body.name or body.path} — check: {verdict}")
     for header, justify in (("quantity", "left"), ("unit", "left"), ("expected", "right"), ("actual", "right"),
                             ("deviation", "right"), ("allowed", "right"), ("", "left")):
         t.add_column(header, justify=justify)

@@ -84,16 +84,12 @@ def principal(file: SpecFile, about: AboutOption = "com", units: UnitsOption = N
     result = _header(body, about_label, point) | {"moments": moments, "axes": axes}
 
     def table():
-        from rich import box
-        from rich.table import Table
-
         from rbi.cli import tables
         from rbi.cli.render import matrix_digits
 
         labels = body.labels
         scale, scale_text = matrix_digits(moments)
-        t = Table(title=f"Principal axes about {about_label} (body frame)", box=box.SIMPLE_HEAD,
-                  title_justify="left", show_edge=False)
+        t = tables.titled(f"Principal axes about {about_label} (body frame)")
         t.add_column("#")
         t.add_column(tables.unit_header("moment", labels["inertia"], scale_text), justify="right")
         for c in "xyz":

@@ -13,10 +13,16 @@ from rich.table import Table
 from rbi.cli.render import matrix_digits, number, vector_text
 
 
+def titled(title: str) -> Table:
+    """An empty table in rbi's style; the title is plain text (a body name like ``top [v2]``
+    is not read as rich markup)."""
+    return Table(title=escape(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+
+
 def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
     """A table of (quantity, unit, value) rows. ``title`` is plain text (it carries the body's
     name or path, which must not be read as rich markup)."""
-    table = Table(title=escape(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    table = titled(title)
     table.add_column("quantity")
     rows = [(name, escape(unit), escape(value)) for name, unit, value in rows]
     table.add_column("unit", style="dim")
@@ -31,7 +37,7 @@ def matrix(title: str, values, unit: str, row_labels: Sequence[str] = ("x", "y",
     """A 3×3 matrix with a common power-of-ten scale written once in the title."""
     values = np.asarray(values, dtype=float)
     scale, scale_text = matrix_digits(values)
-    table = Table(title=escape(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    table = titled(title)
     table.add_column(unit_header("", unit, scale_text).strip(), style="bold")
     for label in column_labels:
         table.add_column(label, justify="right")

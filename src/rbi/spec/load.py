@@ -128,16 +128,43 @@ def _format_error(path: str, error: dict[str, Any], raw: Any) -> str:
 
 
 def _known_fields(loc: tuple[Any, ...], raw: Any) -> list[str]:
-    """Field names valid where an unknown field was found (for 'did you mean')."""
-    from rbi.spec.models import SHAPE_MODELS, BodySpec, Units
+    """Field names valid where an unknown field was found (for 'did you mean'): walk the
+    models along the error's location, through optional, list and union-of-shape fields."""
+    from pydantic import BaseModel
 
-    if len(loc) <= 1:
-        return list(BodySpec.model_fields)
-    if loc[0] == "units":
-        return list(Units.model_fields)
-    if loc[0] == "parts" and len(loc) >= 3 and loc[2] in SHAPE_MODELS:
-        return list(SHAPE_MODELS[loc[2]].model_fields)
-    return []
+    from rbi.spec.models import SHAPE_MODELS, BodySpec
+
+    model: Any = BodySpec
+    for item in loc[:-1]:
+        if isinstance(item, int):
+            continue
+        if model is BodySpec and item == "parts":
+            model = SHAPE_MODELS
+            continue
+        if model is SHAPE_MODELS:
+            model = SHAPE_MODELS.get(item)
+        elif isinstance(model, type) and issubclass(model, BaseModel) and item in model.model_fields:
+            model = _model_inside(model.model_fields[item].annotation)
+        else:
+            model = None
+        if model is None:
+            return []
+    return list(model.model_fields) if isinstance(model, type) and issubclass(model, BaseModel) else []
+
+
+def _model_inside(annotation: Any) -> Any:
+    """The pydantic model an annotation holds (``X | None``, ``list[X]``, ``Annotated[X, ...]``)."""
+    from typing import get_args
+
+    from pydantic import BaseModel
+
+    if isinstance(annotation, type) and issubclass(annotation, BaseModel):
+        return annotation
+    for arg in get_args(annotation):
+        found = _model_inside(arg)
+        if found is not None:
+            return found
+    return None
 
 
 def load_spec(path: str | Path):
