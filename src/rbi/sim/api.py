@@ -126,7 +126,7 @@ def _run_compiled(scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress
 
     loaded = integrator()
     y = np.concatenate((q0, omega0))
-    clock = np.array([0.0, 0.0])
+    clock = np.zeros(9)
     out = np.empty((t.size, 7))
     counts = np.zeros(4, dtype=np.int64)
     settings = np.array([rtol, max(scene.natural_rate, 0.0)])

@@ -149,7 +149,7 @@ def _warm_up(integrate: Callable) -> None:
     integration."""
     y = np.array([1.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0])
     eye = np.eye(3)
-    integrate(y, np.zeros(2), np.array([0.0, 0.1]), np.empty((2, 7)), eye, eye, np.zeros(3),
+    integrate(y, np.zeros(9), np.array([0.0, 0.1]), np.empty((2, 7)), eye, eye, np.zeros(3),
               np.array([1e-6, 1.0]), np.zeros(4, dtype=np.int64), 100)
 
 

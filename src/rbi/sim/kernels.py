@@ -115,8 +115,9 @@ def _normalise_quaternion(y):
 def integrate(y, clock, t_samples, out, inertia, inertia_inv, c, settings, counts, max_steps):
     """Advance the state, filling ``out[k]`` with the state at ``t_samples[k]``.
 
-    y (7,): current state, updated in place. clock (2,): ``[t, h]``, current time and the next
-    trial step, updated (``h <= 0`` asks for an automatic first step). t_samples (N,):
+    y (7,): current state, updated in place. clock (9,): ``[t, h, f(y)...]``, current time,
+    the next trial step and the derivative at y, updated (``h <= 0`` asks for an automatic
+    first step and a fresh derivative). t_samples (N,):
     increasing sample times, the last one is where integration stops. out (N, 7).
     settings (2,): ``[rtol, omega_ref]``. counts (4,) int: ``[next sample index, accepted
     steps, rejected steps, rhs evaluations]``, updated. Samples at or before the current time
@@ -142,8 +143,12 @@ def integrate(y, clock, t_samples, out, inertia, inertia_inv, c, settings, count
     y_new = np.empty(NSTATE)
     tmp = np.empty(NSTATE)
     F = np.empty((7, NSTATE))  # dense-output coefficients of the current step
-    rhs(y, inertia, inertia_inv, c, K[0])
-    counts[3] += 1
+    if h > 0.0:  # continuing: the derivative at y was kept from the last step (first-same-as-last)
+        for i in range(NSTATE):
+            K[0, i] = clock[2 + i]
+    else:
+        rhs(y, inertia, inertia_inv, c, K[0])
+        counts[3] += 1
     if h <= 0.0:
         # a first step that turns the body by about rtol^(1/8) / 4 radians
         rate = max(omega_ref, np.sqrt(y[4] * y[4] + y[5] * y[5] + y[6] * y[6]))
@@ -235,4 +240,6 @@ def integrate(y, clock, t_samples, out, inertia, inertia_inv, c, settings, count
             return STATUS_DONE
     clock[0] = t
     clock[1] = h
+    for i in range(NSTATE):
+        clock[2 + i] = K[0, i]
     return STATUS_MORE
