@@ -1,10 +1,127 @@
-"""`rbi bench` (placeholder: to be implemented)."""
+"""`rbi bench`: work-precision, mass-property throughput and latency, measured in one run."""
 
 from __future__ import annotations
 
+import contextlib
+import sys
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from rbi.cli.options import FormatOption, OutputFormat
 from rbi.spec.errors import InputError
 
+SECTION_NAMES = ("workprecision", "throughput", "latency")
 
-def bench() -> None:
-    """Benchmarks (stub)."""
-    raise InputError("rbi bench is not implemented yet")
+
+def bench(
+    quick: Annotated[bool, typer.Option("--quick", help="A CI-sized run of a few seconds: shorter cases, fewer "
+                                                        "tolerances and sizes, fewer repeats.")] = False,
+    only: Annotated[Optional[str], typer.Option(
+        "--only", metavar="SECTIONS",
+        help="Comma-separated sections to run: workprecision, throughput, latency (default: all).")] = None,
+    plot: Annotated[Optional[str], typer.Option(
+        "--plot", metavar="FILE.png", help="Write a log–log plot of error against time (needs matplotlib).")] = None,
+    write_docs: Annotated[Optional[str], typer.Option(
+        "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md).")] = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
+    """Measure what accuracy costs and how fast rbi is: error against time for each integrator
+    and the chapter's set-up, mass properties of 10³…10⁶ point masses, whole-process latency."""
+    from rbi.bench import suite
+    from rbi.cli import bench_report
+    from rbi.cli.render import emit
+
+    sections = _sections(only)
+    if plot and "workprecision" not in sections:
+        raise InputError("--plot: needs the workprecision section (drop --only or include it)")
+    if plot:
+        _check_writable(plot, "--plot")
+        _check_matplotlib()
+    if write_docs:
+        _check_writable(write_docs, "--write-docs")
+    command = _command_line(quick, only, plot, write_docs)
+
+    with _progress(format, suite.planned_steps(quick, sections)) as step:
+        result = suite.run(quick, sections, step)
+    result["command"] = command
+    result["headline"] = bench_report.headline(result)
+
+    if plot:
+        from rbi.bench.workprecision import plot as draw
+
+        draw(result["workprecision"], plot)
+    if write_docs:
+        link = None
+        if plot:
+            link = _relative_link(Path(plot), Path(write_docs))
+        Path(write_docs).write_text(bench_report.markdown(result, command, link), encoding="utf-8")
+        print(f"rbi: wrote {write_docs}", file=sys.stderr)
+    emit(format.value, result, lambda: bench_report.tables(result), csv_rows=bench_report.csv_rows(result))
+
+
+def _sections(only: str | None) -> list[str]:
+    if only is None:
+        return list(SECTION_NAMES)
+    chosen = [s.strip().lower() for s in only.split(",") if s.strip()]
+    unknown = [s for s in chosen if s not in SECTION_NAMES]
+    if unknown or not chosen:
+        raise InputError(f"--only: expected a comma-separated list of {', '.join(SECTION_NAMES)} (got {only!r})")
+    return chosen
+
+
+def _check_writable(path: str, option: str) -> None:
+    folder = Path(path).resolve().parent
+    if not folder.is_dir():
+        raise InputError(f"{option}: {path}: folder {folder} does not exist")
+
+
+def _check_matplotlib() -> None:
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        raise InputError("--plot: needs matplotlib: pip install 'rbi[plot]' (or pip install matplotlib)") from None
+
+
+def _command_line(quick: bool, only: str | None, plot: str | None, write_docs: str | None) -> str:
+    words = ["rbi", "bench"]
+    if quick:
+        words.append("--quick")
+    if only:
+        words += ["--only", only]
+    if write_docs:
+        words += ["--write-docs", write_docs]
+    if plot:
+        words += ["--plot", plot]
+    return " ".join(words)
+
+
+def _relative_link(target: Path, document: Path) -> str:
+    import os
+
+    return os.path.relpath(target.resolve(), document.resolve().parent)
+
+
+@contextlib.contextmanager
+def _progress(format: OutputFormat, total: int):
+    """A step callback: a rich progress bar on a terminal (table output only), else silent."""
+    if format != OutputFormat.table or not sys.stderr.isatty():
+        yield lambda _label: None
+        return
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+
+    from rbi.cli.render import stderr_console
+
+    with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
+                  console=stderr_console(), transient=True) as progress:
+        task = progress.add_task("rbi bench", total=total)
+        started = [False]
+
+        def step(label: str) -> None:
+            if started[0]:
+                progress.advance(task)
+            started[0] = True
+            progress.update(task, description=label)
+
+        yield step

@@ -92,6 +92,9 @@ def read_yaml(path: str | Path) -> Any:
         raise InputError(f"{path}: not UTF-8 text (byte {exc.start})") from None
     if not text.strip():
         raise InputError(f"{path}: file is empty")
+    parsed = _parse_json(text)
+    if parsed is not _NOT_JSON:
+        return parsed
     try:
         return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
     except yaml.MarkedYAMLError as exc:
@@ -101,6 +104,30 @@ def read_yaml(path: str | Path) -> Any:
         raise InputError(f"{path}: YAML syntax error: {where}{problem}") from None
     except yaml.YAMLError as exc:
         raise InputError(f"{path}: YAML syntax error: {exc}") from None
+
+
+_NOT_JSON = object()
+
+
+def _parse_json(text: str) -> Any:
+    """Fast path for a spec written as one JSON object (valid YAML too, and what a program that
+    writes 10⁵ parts emits): the json module reads it about 100 times faster than PyYAML.
+    Anything else — YAML, invalid JSON, a key given twice — returns ``_NOT_JSON`` and goes to
+    the YAML parser, which reports the problem with its line and column."""
+    if not text.lstrip().startswith("{"):
+        return _NOT_JSON
+    import json
+
+    def unique(pairs):
+        keys = [k for k, _ in pairs]
+        if len(set(keys)) != len(keys):
+            raise ValueError("duplicate key")
+        return dict(pairs)
+
+    try:
+        return json.loads(text, object_pairs_hook=unique)
+    except ValueError:
+        return _NOT_JSON
 
 
 def validation_messages(path: str, raw: Any) -> tuple[Any, list[str]]:

@@ -1,0 +1,222 @@
+"""Mass-property throughput: bodies of many point masses and of many solid parts.
+
+Point clouds (10³ … 10⁶ points): the core's vectorised reduction (mass, centre of mass,
+inertia, principal axes) on arrays in memory, and the whole load from a spec file that names
+a CSV or ``.npy`` cloud (:mod:`rbi.spec.point_cloud`). Solid parts (10³ … 10⁵ cones,
+cylinders and points written out in YAML, and the same spec as JSON): what reading,
+validating and translating such a spec costs, step by step.
+
+Every body is random but seeded, so two runs time the same work.
+"""
+
+from __future__ import annotations
+
+import json
+import tempfile
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from rbi.bench.timing import measure, time_once
+
+QUICK_CLOUDS = (10**3, 10**4, 10**5)
+FULL_CLOUDS = (10**3, 10**4, 10**5, 10**6)
+QUICK_PARTS = (10**3,)
+FULL_PARTS = (10**4, 10**5)
+CSV_FORMAT = "%.10g"
+"""Digits written to the generated CSV clouds (a scanner or CAD export carries about this many;
+full double precision, %.17g, makes the file about 1.7 times larger and slower to parse)."""
+
+Progress = Callable[[str], None]
+
+
+def random_cloud(n: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
+    """``n`` positive masses (kg) and positions (m) scattered around a point off the origin."""
+    rng = np.random.default_rng(seed)
+    masses = rng.uniform(0.5, 1.5, n) / n
+    positions = rng.normal(size=(n, 3)) * [0.3, 0.2, 0.1] + [1.0, -2.0, 0.5]
+    return masses, positions
+
+
+def core_timings(masses: np.ndarray, positions: np.ndarray) -> dict:
+    """Median seconds of each step of the in-memory reduction."""
+    from rbi.core.inertia import centre_of_mass, combine, principal_axes
+
+    props = combine(masses, positions)
+    mass = measure(lambda: masses.sum())
+    com = measure(lambda: centre_of_mass(masses, positions))
+    inertia = measure(lambda: combine(masses, positions))
+    principal = measure(lambda: principal_axes(props.inertia_com))
+    total = measure(lambda: principal_axes(combine(masses, positions).inertia_com))
+    return {
+        "mass_s": mass.median,
+        "com_s": com.median,
+        "combine_s": inertia.median,  # mass, centre of mass and inertia together
+        "principal_s": principal.median,
+        "total_s": total.median,
+        "ns_per_point": 1e9 * total.median / masses.size,
+    }
+
+
+def write_cloud(folder: Path, masses: np.ndarray, positions: np.ndarray) -> dict[str, Path]:
+    """A CSV and a ``.npy`` cloud of the same points, and a spec naming each."""
+    table = np.column_stack((masses, positions))
+    csv_path = folder / "cloud.csv"
+    np.savetxt(csv_path, table, delimiter=",", fmt=CSV_FORMAT, header="mass,x,y,z", comments="")
+    np.save(folder / "cloud.npy", table)
+    specs = {}
+    for kind in ("csv", "npy"):
+        spec = folder / f"cloud_{kind}.yaml"
+        spec.write_text(f"name: cloud-{masses.size}\npoint_cloud: {{file: cloud.{kind}}}\n")
+        specs[kind] = spec
+    return specs
+
+
+def file_timings(specs: dict[str, Path], repeats: int) -> dict:
+    """Median seconds to load each spec (YAML, cloud file, validation, reduction) and find the
+    principal axes: what ``rbi principal`` spends after start-up."""
+    from rbi.core.inertia import principal_axes
+    from rbi.spec.load import load_body
+
+    out = {}
+    for kind, spec in specs.items():
+        timing = measure(lambda: principal_axes(load_body(spec).props.inertia_com),
+                         min_repeats=repeats, max_repeats=repeats, min_seconds=0.0)
+        out[f"load_{kind}_s"] = timing.median
+    out["csv_megabytes"] = (specs["csv"].parent / "cloud.csv").stat().st_size / 1e6
+    return out
+
+
+def check_against_direct_sum(specs: dict[str, Path], masses: np.ndarray, positions: np.ndarray) -> float:
+    """Largest relative difference between the loaded body's inertia and a direct
+    ``Σ m (|d|² E − d dᵀ)`` (a guard that the timed code computes the right thing)."""
+    from rbi.spec.load import load_body
+
+    props = load_body(specs["npy"]).props
+    com = masses @ positions / masses.sum()
+    d = positions - com
+    second = (d * masses[:, None]).T @ d
+    direct = np.trace(second) * np.eye(3) - second
+    return float(np.max(np.abs(props.inertia_com - direct)) / np.max(np.abs(direct)))
+
+
+def point_clouds(sizes, progress: Progress) -> list[dict]:
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
+        _warm_up_loader(Path(tmp))
+        for n in sizes:
+            progress(f"point cloud of {n:,} points")
+            masses, positions = random_cloud(n)
+            row = {"points": n} | core_timings(masses, positions)
+            folder = Path(tmp) / f"cloud{n}"
+            folder.mkdir()
+            specs = write_cloud(folder, masses, positions)
+            row |= file_timings(specs, repeats=3 if n < 10**6 else 3)
+            row["relative_difference_to_direct_sum"] = check_against_direct_sum(specs, masses, positions)
+            rows.append(row)
+    return rows
+
+
+def scaling_exponent(rows: list[dict], key: str = "total_s") -> float | None:
+    """Slope of log(time) against log(size) over the sizes ≥ 10⁴ (1 = linear); smaller
+    bodies are dominated by fixed per-call costs."""
+    pts = [(r["points"], r[key]) for r in rows if r["points"] >= 10**4 and r[key] > 0]
+    if len(pts) < 2:
+        return None
+    x, y = np.log10(np.array(pts, dtype=float)).T
+    return float(np.polyfit(x, y, 1)[0])
+
+
+# --- solid parts written in YAML ----------------------------------------------------------
+
+def parts_yaml(n: int, seed: int = 1) -> str:
+    """A spec of ``n`` parts cycling through cone, cylinder (by density) and point mass, one
+    flow mapping per line (the compact form a generator would write)."""
+    rng = np.random.default_rng(seed)
+    a = rng.normal(size=(n, 3))
+    b = a + rng.normal(size=(n, 3))
+    mass = rng.uniform(0.1, 1.0, n)
+    radius = rng.uniform(0.01, 0.1, n)
+
+    def v(p):
+        return f"[{p[0]:.6g}, {p[1]:.6g}, {p[2]:.6g}]"
+
+    lines = [f"name: parts-{n}", "parts:"]
+    for i in range(n):
+        kind = i % 3
+        if kind == 0:
+            lines.append(f"  - {{shape: cone, mass: {mass[i]:.6g}, radius: {radius[i]:.6g}, apex: {v(a[i])}, base: {v(b[i])}}}")
+        elif kind == 1:
+            lines.append(f"  - {{shape: cylinder, density: {1000 * mass[i]:.6g}, radius: {radius[i]:.6g}, "
+                         f"start: {v(a[i])}, end: {v(b[i])}}}")
+        else:
+            lines.append(f"  - {{shape: point, mass: {mass[i]:.6g}, position: {v(a[i])}}}")
+    return "\n".join(lines) + "\n"
+
+
+def solid_parts(sizes, progress: Progress) -> list[dict]:
+    """Seconds for each step of loading a spec of many parts, once each (these are slow)."""
+    from rbi.core.inertia import combine, principal_axes
+    from rbi.spec.load import read_yaml, validation_messages
+    from rbi.spec.translate import body_from_spec
+
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
+        _warm_up_loader(Path(tmp))
+        for n in sizes:
+            progress(f"spec of {n:,} parts in YAML")
+            path = Path(tmp) / f"parts{n}.yaml"
+            path.write_text(parts_yaml(n))
+            read_s, raw = time_once(lambda: read_yaml(path))
+            validate_s, (spec, problems) = time_once(lambda: validation_messages(str(path), raw))
+            if problems:
+                raise RuntimeError(f"generated spec is invalid: {problems[0]}")
+            translate_s, body = time_once(lambda: body_from_spec(spec, str(path)))
+            masses = np.array([e.mass for e in body.elements])
+            coms = np.array([e.com for e in body.elements])
+            inertias = np.array([e.inertia_com for e in body.elements])
+            core = measure(lambda: principal_axes(combine(masses, coms, inertias).inertia_com))
+            total = read_s + validate_s + translate_s
+            # The same spec as one JSON object (also valid YAML), as a generating program would write it.
+            as_json = path.with_suffix(".json")
+            as_json.write_text(json.dumps(raw))
+            json_s, _ = time_once(lambda: body_from_spec(
+                validation_messages(str(as_json), read_yaml(as_json))[0], str(as_json)))
+            rows.append({
+                "parts": n,
+                "yaml_megabytes": path.stat().st_size / 1e6,
+                "read_yaml_s": read_s,
+                "validate_s": validate_s,
+                "translate_s": translate_s,
+                "load_total_s": total,
+                "us_per_part": 1e6 * total / n,
+                "load_total_json_s": json_s,
+                "core_s": core.median,
+            })
+    return rows
+
+
+def _warm_up_loader(folder: Path) -> None:
+    """Import and exercise the loader once, so the timings exclude one-off import costs."""
+    from rbi.spec.load import load_body
+
+    spec = folder / "warm.yaml"
+    spec.write_text("parts:\n  - {shape: point, mass: 1.0, position: [0, 0, 0]}\n"
+                    "  - {shape: point, mass: 1.0, position: [1, 0, 0]}\n")
+    load_body(spec)
+
+
+def planned_steps(quick: bool) -> int:
+    return len(QUICK_CLOUDS if quick else FULL_CLOUDS) + len(QUICK_PARTS if quick else FULL_PARTS)
+
+
+def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+    clouds = point_clouds(QUICK_CLOUDS if quick else FULL_CLOUDS, progress)
+    parts = solid_parts(QUICK_PARTS if quick else FULL_PARTS, progress)
+    return {
+        "point_clouds": clouds,
+        "scaling_exponent": scaling_exponent(clouds),
+        "csv_format": CSV_FORMAT,
+        "solid_parts": parts,
+    }

@@ -1,0 +1,238 @@
+"""Work against precision: how the error of a simulated motion falls as each method is given
+more work, and what the seed chapter's set-up costs for the accuracy it reaches.
+
+Two cases:
+
+- the bolted top (``bodies/top_bolted.yaml``, upright, 200 rad/s about body z, 4 s), a heavy
+  top with no closed form: the reference is rbi's own integrator at rtol 1e-14, checked
+  against scipy's DOP853 at rtol 1e-13 (an independent integrator; their difference is
+  reported as the reference's own uncertainty);
+- a torque-free asymmetric body (``bodies/tbar.yaml``, ω₀ = (12, 16, 20) rad/s, 4 s): the
+  reference is the closed form (Euler–Poinsot, :mod:`rbi.sim.exact`).
+
+For each method × tolerance: the error of the final orientation (degrees) and angular
+velocity (rad/s) against the reference, the largest relative drift of the conserved
+quantities, accepted steps, right-hand-side evaluations, and the in-process time of the
+integration (:attr:`rbi.sim.api.Trajectory.wall_seconds`; the median of repeated runs for the
+fast methods). The chapter's set-up is ``rk45`` at rtol 1e-8 (atol 1e-10).
+"""
+
+from __future__ import annotations
+
+import statistics
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from rbi.bench.latency import bodies_folder
+
+Progress = Callable[[str], None]
+
+CHAPTER = ("rk45", 1e-8)
+"""The seed chapter's set-up: scipy solve_ivp RK45, rtol 1e-8, atol 1e-10, Python right-hand side."""
+
+
+@dataclass(frozen=True)
+class Case:
+    name: str
+    spec: str  # file name in bodies/
+    omega0: tuple[float, float, float]
+    tilt_deg: float
+    duration: float
+    samples: int
+    reference: str  # "tight" (rbi at rtol 1e-14, checked by scipy DOP853) or "exact"
+
+
+def cases(quick: bool) -> list[Case]:
+    top_duration = 0.5 if quick else 4.0
+    return [
+        Case("bolted top", "top_bolted.yaml", (0.0, 0.0, 200.0), 0.0, top_duration,
+             int(round(120 * top_duration)) + 1, "tight"),
+        Case("free asymmetric body", "tbar.yaml", (12.0, 16.0, 20.0), 0.0, 4.0, 481, "exact"),
+    ]
+
+
+def sweeps(quick: bool) -> dict[str, list[float]]:
+    """Tolerances tried for each method."""
+    if quick:
+        return {"default": [1e-8, 1e-11], "rk45": [1e-8], "dop853": [1e-10]}
+    return {
+        "default": [1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13],
+        "rk45": [1e-6, 1e-7, 1e-8, 1e-9, 1e-10],
+        "dop853": [1e-6, 1e-8, 1e-10, 1e-12],
+    }
+
+
+def scene_of(case: Case):
+    from rbi.sim.scene import initial_state, scene_from_properties
+    from rbi.spec.load import load_body
+    from rbi.spec.units import gravity_in
+
+    body = load_body(bodies_folder() / case.spec)
+    scene = scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit))
+    q0, omega0 = initial_state(case.tilt_deg, case.omega0)
+    return scene, q0, omega0
+
+
+def timed_run(scene, q0, omega0, case: Case, method: str, rtol: float | None, min_seconds: float):
+    """One trajectory and the median in-process integration time over repeats (a run of the
+    compiled method takes about a millisecond, too short to time once on a busy machine)."""
+    from rbi.sim.api import simulate
+
+    runs = []
+    spent = 0.0
+    while not runs or (spent < min_seconds and len(runs) < 500):
+        trajectory = simulate(scene, q0, omega0, case.duration, case.samples, method=method, rtol=rtol)
+        runs.append(trajectory.wall_seconds)
+        spent += trajectory.wall_seconds
+    return trajectory, statistics.median(runs), len(runs)
+
+
+def errors(scene, trajectory, reference) -> dict:
+    from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg
+
+    drifts = {name: item["drift"] for name, item in conserved_quantities(scene, trajectory.q, trajectory.omega).items()}
+    return {
+        "orientation_error_deg": float(orientation_error_deg(trajectory.q[-1], reference.q[-1])),
+        "omega_error": float(np.linalg.norm(trajectory.omega[-1] - reference.omega[-1])),
+        "max_orientation_error_deg": float(np.max(orientation_error_deg(trajectory.q, reference.q))),
+        "drift": max(drifts.values()),
+        "drifts": drifts,
+    }
+
+
+def reference_of(case: Case, scene, q0, omega0, quick: bool) -> tuple[object, dict]:
+    from rbi.sim.api import simulate
+    from rbi.sim.diagnostics import orientation_error_deg
+
+    if case.reference == "exact":
+        ref = simulate(scene, q0, omega0, case.duration, case.samples, method="exact")
+        return ref, {"method": "exact", "description": ref.integrator}
+    ref = simulate(scene, q0, omega0, case.duration, case.samples, method="default", rtol=1e-14)
+    check_rtol = 1e-12 if quick else 1e-13
+    check = simulate(scene, q0, omega0, case.duration, case.samples, method="dop853", rtol=check_rtol)
+    return ref, {
+        "method": "default", "rtol": 1e-14,
+        "check": {"method": "dop853", "rtol": check_rtol,
+                  "orientation_difference_deg": float(orientation_error_deg(check.q[-1], ref.q[-1])),
+                  "omega_difference": float(np.linalg.norm(check.omega[-1] - ref.omega[-1]))},
+    }
+
+
+def run_case(case: Case, quick: bool, progress: Progress) -> dict:
+    from rbi.sim.compiled import integrator
+
+    load_seconds = integrator().load_seconds  # compile or load once, outside every timing
+    scene, q0, omega0 = scene_of(case)
+    progress(f"{case.name}: reference")
+    reference, reference_info = reference_of(case, scene, q0, omega0, quick)
+    rows = []
+    for method, tolerances in sweeps(quick).items():
+        for rtol in tolerances:
+            progress(f"{case.name}: {method} rtol {rtol:g}")
+            compiled = method == "default"
+            chapter = (method, rtol) == CHAPTER
+            min_seconds = 0.3 if compiled else (2.0 if chapter and not quick else 0.0)
+            trajectory, seconds, repeats = timed_run(scene, q0, omega0, case, method, rtol, min_seconds)
+            rows.append({
+                "method": method, "rtol": rtol, "chapter_setup": chapter,
+                **errors(scene, trajectory, reference),
+                "steps": trajectory.steps, "rhs_evals": trajectory.rhs_evals,
+                "seconds": seconds, "repeats": repeats,
+            })
+    progress(f"{case.name}: rbi default settings")
+    trajectory, seconds, repeats = timed_run(scene, q0, omega0, case, "default", None, 0.3)
+    default_row = {"method": "default", "rtol": trajectory.rtol, "chapter_setup": False, "default_settings": True,
+                   **errors(scene, trajectory, reference), "steps": trajectory.steps,
+                   "rhs_evals": trajectory.rhs_evals, "seconds": seconds, "repeats": repeats}
+    return {
+        "name": case.name, "spec": f"bodies/{case.spec}", "omega0": list(case.omega0), "tilt_deg": case.tilt_deg,
+        "duration": case.duration, "samples": case.samples, "reference": reference_info,
+        "kernel_load_seconds": load_seconds,
+        "runs": rows, "default": default_row, "speedup": speedup(rows, default_row),
+    }
+
+
+def speedup(rows: list[dict], default_row: dict) -> dict | None:
+    """The chapter's time over rbi's, (a) with rbi's default settings, (b) for the fastest
+    run of rbi's default method whose final errors are no larger than the chapter's."""
+    chapter = next((r for r in rows if r["chapter_setup"]), None)
+    if chapter is None:
+        return None
+
+    def no_worse(row):
+        return (row["orientation_error_deg"] <= chapter["orientation_error_deg"]
+                and row["omega_error"] <= chapter["omega_error"])
+
+    out = {
+        "chapter_seconds": chapter["seconds"],
+        "chapter_orientation_error_deg": chapter["orientation_error_deg"],
+        "chapter_omega_error": chapter["omega_error"],
+        "default_seconds": default_row["seconds"],
+        "default_orientation_error_deg": default_row["orientation_error_deg"],
+        "default_omega_error": default_row["omega_error"],
+        "default_no_worse": no_worse(default_row),
+        "ratio_default": chapter["seconds"] / default_row["seconds"],
+        "ratio_error": chapter["orientation_error_deg"] / max(default_row["orientation_error_deg"], 1e-300),
+    }
+    matching = [r for r in rows if r["method"] == "default" and no_worse(r)]
+    if matching:
+        best = min(matching, key=lambda r: r["seconds"])
+        out["best_matching_rtol"] = best["rtol"]
+        out["ratio_best_matching"] = chapter["seconds"] / best["seconds"]
+    return out
+
+
+def planned_steps(quick: bool) -> int:
+    return len(cases(quick)) * (2 + sum(len(t) for t in sweeps(quick).values()))
+
+
+def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+    return {"chapter_setup": {"method": CHAPTER[0], "rtol": CHAPTER[1], "atol": CHAPTER[1] / 100},
+            "cases": [run_case(case, quick, progress) for case in cases(quick)]}
+
+
+def plot(result: dict, path: str | Path) -> None:
+    """Log–log plot of the final orientation error against in-process time, one panel per
+    case, one line per method; the chapter's set-up and rbi's defaults are marked."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    styles = {"default": ("rbi default method (compiled DOP853)", "C0", "o"),
+              "rk45": ("scipy RK45, Python RHS", "C3", "s"),
+              "dop853": ("scipy DOP853, Python RHS", "C2", "^")}
+    cases_ = result["cases"]
+    fig, axes = plt.subplots(1, len(cases_), figsize=(6.2 * len(cases_), 4.8), squeeze=False)
+    floor = 1e-14
+    for ax, case in zip(axes[0], cases_):
+        for method, (label, colour, marker) in styles.items():
+            rows = sorted((r for r in case["runs"] if r["method"] == method), key=lambda r: r["rtol"])
+            if not rows:
+                continue
+            x = [r["seconds"] for r in rows]
+            y = [max(r["orientation_error_deg"], floor) for r in rows]
+            ax.loglog(x, y, marker=marker, color=colour, label=label)
+            for r, xi, yi in zip(rows, x, y):
+                ax.annotate(f"{r['rtol']:.0e}", (xi, yi), textcoords="offset points", xytext=(4, 3), fontsize=7, color=colour)
+        chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
+        if chapter:
+            ax.loglog([chapter["seconds"]], [max(chapter["orientation_error_deg"], floor)], "*", color="k",
+                      markersize=14, label="the chapter's set-up (RK45, rtol 1e-8)")
+        d = case["default"]
+        ax.loglog([d["seconds"]], [max(d["orientation_error_deg"], floor)], "P", color="C0", markersize=12,
+                  markeredgecolor="k", label=f"rbi defaults (rtol {d['rtol']:g})")
+        omega = ", ".join(f"{w:g}" for w in case["omega0"])
+        ax.set_title(f"{case['name']} ({case['spec']}, ω₀ = ({omega}) rad/s, {case['duration']:g} s)", fontsize=9)
+        ax.set_xlabel("in-process integration time [s]")
+        ax.set_ylabel("final orientation error [deg]")
+        ax.grid(True, which="both", alpha=0.3)
+    handles, labels = axes[0][0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8, frameon=False)
+    fig.suptitle("rbi work-precision: error against time (lower left is better)")
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
+    fig.savefig(path, dpi=120)
+    plt.close(fig)

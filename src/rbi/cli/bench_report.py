@@ -1,0 +1,307 @@
+"""Rendering ``rbi bench`` results: rich tables for people, Markdown for docs/performance.md,
+CSV rows for spreadsheets. Numbers are formatted here (with :func:`rbi.cli.render.number`);
+the measurements themselves come from :mod:`rbi.bench`."""
+
+from __future__ import annotations
+
+from typing import Any
+
+from rbi.cli.render import number
+
+METHOD_NAMES = {
+    "default": "rbi",
+    "rk45": "scipy RK45",
+    "dop853": "scipy DOP853",
+}
+METHOD_NOTE = ("rbi: the default method (compiled DOP853, unit-quaternion projection); scipy: solve_ivp's "
+               "solver with a Python right-hand side, atol = rtol/100; ★: the chapter's set-up (RK45, rtol 1e-8, "
+               "atol 1e-10); \"rbi defaults\": `rbi simulate` with no options.")
+
+
+def _sci(value: float | None, digits: int = 2) -> str:
+    return "—" if value is None else number(value, digits)
+
+
+def _times(value: float | None) -> str:
+    """A ratio such as ``1,830×``."""
+    if value is None:
+        return "—"
+    return f"{value:,.0f}×" if value >= 100 else f"{value:.3g}×"
+
+
+# --- headline --------------------------------------------------------------------------------
+
+def headline(result: dict) -> list[str]:
+    """The few sentences a reader needs: speed-ups at equal or better error, throughput, latency."""
+    lines = []
+    for case in result.get("workprecision", {}).get("cases", []):
+        s = case.get("speedup")
+        if not s:
+            continue
+        verdict = "better" if s["default_no_worse"] else "WORSE"
+        line = (f"{case['name']} ({case['spec']}, {case['duration']:g} s): rbi's defaults are "
+                f"{_times(s['ratio_default'])} faster in-process than the chapter's set-up "
+                f"({number(s['default_seconds'], 3)} s against {number(s['chapter_seconds'], 3)} s), with a {verdict} "
+                f"final orientation error ({_sci(s['default_orientation_error_deg'])}° against "
+                f"{_sci(s['chapter_orientation_error_deg'])}°)")
+        if "ratio_best_matching" in s:
+            line += (f"; at equal or better error the fastest rbi run (rtol {s['best_matching_rtol']:g}) is "
+                     f"{_times(s['ratio_best_matching'])} faster")
+        lines.append(line + ".")
+    tp = result.get("throughput")
+    if tp and tp["point_clouds"]:
+        big = tp["point_clouds"][-1]
+        lines.append(
+            f"{big['points']:,} point masses: mass, centre of mass, inertia and principal axes in "
+            f"{number(big['total_s'], 3)} s from arrays ({number(big['ns_per_point'], 3)} ns per point; time grows as "
+            f"size^{number(tp['scaling_exponent'], 3)}), {number(big['load_csv_s'], 3)} s including reading the spec "
+            f"and a {number(big['csv_megabytes'], 3)} MB CSV cloud, {number(big['load_npy_s'], 3)} s from .npy.")
+    if tp and tp["solid_parts"]:
+        big = tp["solid_parts"][-1]
+        lines.append(
+            f"A YAML spec of {big['parts']:,} parts ({number(big['yaml_megabytes'], 3)} MB) takes "
+            f"{number(big['load_total_s'], 3)} s to load ({number(big['us_per_part'], 3)} µs per part; "
+            f"{_share(big, 'read_yaml_s')} of it parsing YAML); written as JSON (also valid YAML) it loads in "
+            f"{number(big['load_total_json_s'], 3)} s. For many point masses, a point cloud file is faster still.")
+    lat = result.get("latency")
+    if lat:
+        for row in lat["commands"][1:]:
+            if "ratio_to_numpy_import" in row and row["command"].startswith(("rbi inertia", "rbi simulate")):
+                lines.append(f"`{row['command']}` as a whole process: {_times(row['ratio_to_numpy_import'])} the time of "
+                             f"`{lat['baseline']}` ({number(row['median_s'], 3)} s median).")
+    return lines
+
+
+def _share(row: dict, key: str) -> str:
+    return f"{100 * row[key] / row['load_total_s']:.0f}%"
+
+
+# --- rich tables -----------------------------------------------------------------------------
+
+def tables(result: dict):
+    from rich import box
+    from rich.console import Group
+    from rich.table import Table
+    from rich.text import Text
+
+    from rbi.cli.tables import unit_header
+
+    def table(title):
+        return Table(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+
+    parts: list[Any] = [Text(machine_line(result), style="dim")]
+    for case in result.get("workprecision", {}).get("cases", []):
+        t = table(f"Work-precision: {case['name']} ({case['spec']}, ω₀ = {_vector(case['omega0'])} rad/s, "
+                  f"{case['duration']:g} s) — reference: {reference_text(case)}")
+        for header, justify in WORK_COLUMNS:
+            t.add_column(unit_header(*header) if isinstance(header, tuple) else header, justify=justify)
+        for row in work_rows(case):
+            t.add_row(*row)
+        parts.append(t)
+    if result.get("workprecision"):
+        parts.append(Text(METHOD_NOTE, style="dim"))
+    tp = result.get("throughput")
+    if tp:
+        t = table(f"Mass properties of point clouds (time grows as size^{number(tp['scaling_exponent'], 3)})")
+        for header in CLOUD_COLUMNS:
+            t.add_column(header, justify="right")
+        for row in cloud_rows(tp):
+            t.add_row(*row)
+        parts.append(t)
+        t = table("Specs of many solid parts, written in YAML")
+        for header in PARTS_COLUMNS:
+            t.add_column(header, justify="right")
+        for row in parts_rows(tp):
+            t.add_row(*row)
+        parts.append(t)
+    lat = result.get("latency")
+    if lat:
+        t = table(f"Whole-process latency (median of repeated runs) against {lat['baseline']}")
+        for header in LATENCY_COLUMNS:
+            t.add_column(header, justify="left" if header == "command" else "right")
+        for row in latency_rows(lat):
+            t.add_row(*row)
+        parts.append(t)
+    lines = headline(result)
+    if lines:
+        parts.append(Text("\n".join("• " + line for line in lines)))
+    return Group(*parts)
+
+
+def _vector(v) -> str:
+    return "(" + ", ".join(number(x, 6) for x in v) + ")"
+
+
+def machine_line(result: dict) -> str:
+    m = result["machine"]
+    load = m.get("load_average_1min")
+    return (f"{m['date']} · {m['cpu']} · {m['cores']} cores · load average {load} at start · Python {m['python']}, "
+            f"numpy {m['numpy']}, scipy {m['scipy']}, numba {m.get('numba')} · {'quick' if result['quick'] else 'full'} run")
+
+
+def reference_text(case: dict) -> str:
+    ref = case["reference"]
+    if ref["method"] == "exact":
+        return "closed form (Euler–Poinsot)"
+    check = ref.get("check", {})
+    return (f"rbi at rtol {ref['rtol']:g}; scipy DOP853 at rtol {check.get('rtol', 0):g} differs from it by "
+            f"{_sci(check.get('orientation_difference_deg'))}°")
+
+
+WORK_COLUMNS = [
+    ("method", "left"), ("rtol", "right"), (("orient. error", "deg"), "right"), (("ω error", "rad/s"), "right"),
+    ("rel. drift", "right"), ("steps", "right"), ("RHS evals", "right"), (("time", "s"), "right"),
+    ("chapter ÷ this", "right"),
+]
+
+
+def work_rows(case: dict) -> list[list[str]]:
+    chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
+    rows = []
+    for r in case["runs"] + [case["default"]]:
+        name = METHOD_NAMES[r["method"]]
+        if r.get("chapter_setup"):
+            name += " ★"
+        if r.get("default_settings"):
+            name = "rbi defaults (no options)"
+        ratio = chapter["seconds"] / r["seconds"] if chapter and r["seconds"] > 0 else None
+        rows.append([name, f"{r['rtol']:g}", _sci(r["orientation_error_deg"]), _sci(r["omega_error"]),
+                     _sci(r["drift"]), f"{r['steps']:,}", f"{r['rhs_evals']:,}", number(r["seconds"], 2), _times(ratio)])
+    return rows
+
+
+CLOUD_COLUMNS = ["points", "mass [ms]", "CoM [ms]", "+inertia [ms]", "principal [ms]", "total [ms]",
+                 "ns/point", "CSV spec [ms]", ".npy spec [ms]", "CSV [MB]"]
+
+
+def cloud_rows(tp: dict) -> list[list[str]]:
+    def ms(seconds):
+        return number(1e3 * seconds, 2)
+
+    return [[f"{r['points']:,}", ms(r["mass_s"]), ms(r["com_s"]), ms(r["combine_s"]), ms(r["principal_s"]),
+             ms(r["total_s"]), number(r["ns_per_point"], 3), ms(r["load_csv_s"]), ms(r["load_npy_s"]),
+             number(r["csv_megabytes"], 3)] for r in tp["point_clouds"]]
+
+
+PARTS_COLUMNS = ["parts", "YAML [MB]", "parse YAML [s]", "validate [s]", "translate [s]", "load total [s]",
+                 "µs/part", "same as JSON [s]", "core [s]"]
+
+
+def parts_rows(tp: dict) -> list[list[str]]:
+    return [[f"{r['parts']:,}", number(r["yaml_megabytes"], 3), number(r["read_yaml_s"], 3), number(r["validate_s"], 3),
+             number(r["translate_s"], 3), number(r["load_total_s"], 3), number(r["us_per_part"], 3),
+             number(r["load_total_json_s"], 3), _sci(r["core_s"])]
+            for r in tp["solid_parts"]]
+
+
+LATENCY_COLUMNS = ["command", "median [s]", "best [s]", "× numpy import", "spread"]
+
+
+def latency_rows(lat: dict) -> list[list[str]]:
+    rows = []
+    for r in lat["commands"]:
+        if "error" in r:
+            rows.append([r["command"], "failed", "", "", r["error"]])
+        else:
+            rows.append([r["command"], number(r["median_s"], 3), number(r["best_s"], 3),
+                         _times(r.get("ratio_to_numpy_import")), f"{100 * r['spread']:.0f}%"])
+    return rows
+
+
+# --- Markdown --------------------------------------------------------------------------------
+
+def _md_table(headers: list[str], rows: list[list[str]]) -> str:
+    out = ["| " + " | ".join(headers) + " |", "|" + "|".join("---" for _ in headers) + "|"]
+    out += ["| " + " | ".join(cell.replace("|", "\\|") for cell in row) + " |" for row in rows]
+    return "\n".join(out)
+
+
+def markdown(result: dict, command: str, plot_link: str | None) -> str:
+    """docs/performance.md: how it was made, on what, the headline, then every table."""
+    m = result["machine"]
+    noisy = (m.get("load_average_1min") or 0) > 0.5
+    out = [
+        "# Performance",
+        "",
+        "Generated by `rbi bench`; do not edit by hand. To regenerate, on a machine that is otherwise idle:",
+        "",
+        "```",
+        command,
+        "```",
+        "",
+        f"- Date: {m['date']}",
+        f"- Machine: {m['cpu']}, {m['cores']} cores, {m['platform']}",
+        f"- Software: Python {m['python']}, numpy {m['numpy']}, scipy {m['scipy']}, numba {m.get('numba')}",
+        f"- Load average (1 min) when the run started: {m.get('load_average_1min')}",
+        f"- Run: {'quick (`--quick`, shortened cases)' if result['quick'] else 'full'}",
+        "",
+        ("> **Noise.** These numbers were measured on a shared machine while other work was running "
+         "(see the load average), so single timings may be off by tens of percent. Ratios measured in "
+         "the same run (rbi against the chapter's set-up, commands against `python -c \"import numpy\"`) "
+         "are more trustworthy than the seconds. Re-run the command above on a quiet machine for "
+         "publishable numbers.") if noisy else
+        ("> Timings are wall-clock; ratios measured in the same run are more trustworthy than the "
+         "seconds themselves."),
+        "",
+        "## Headline",
+        "",
+    ]
+    out += [f"- {line}" for line in headline(result)]
+    wp = result.get("workprecision")
+    if wp:
+        out += ["", "## Work against precision", "",
+                "Final orientation error (angle between the computed and the reference orientation at the "
+                "last sample) and angular-velocity error against in-process integration time "
+                "(`Trajectory.wall_seconds`: the integration only, with the compiled kernel already loaded; "
+                "the median of repeated runs for the fast method). \"max rel. drift\" is the largest relative "
+                "change of any conserved quantity along the run (energy, vertical and spin angular momentum for "
+                "the top; energy and the angular-momentum vector for the free body). The chapter's set-up is "
+                "scipy `solve_ivp` RK45 at rtol 1e-8, atol 1e-10 with a Python right-hand side "
+                "(`--method rk45`); the last column is its time divided by each row's. " + METHOD_NOTE]
+        for case in wp["cases"]:
+            out += ["", f"### {case['name']}: `{case['spec']}`, ω₀ = {_vector(case['omega0'])} rad/s, "
+                        f"tilt {case['tilt_deg']:g}°, {case['duration']:g} s, {case['samples']} samples", "",
+                    f"Reference: {reference_text(case)}. Loading the compiled kernel cost "
+                    f"{number(case['kernel_load_seconds'], 3)} s once in this process (not in any time below).", ""]
+            headers = [h if isinstance(h, str) else f"{h[0]} [{h[1]}]" for h, _ in WORK_COLUMNS]
+            out.append(_md_table(headers, work_rows(case)))
+        if plot_link:
+            out += ["", f"![Final orientation error against in-process time]({plot_link})"]
+    tp = result.get("throughput")
+    if tp:
+        out += ["", "## Mass-property throughput", "",
+                "Random point masses (seeded). \"mass+CoM+inertia\" is `rbi.core.inertia.combine` on arrays in memory; "
+                "\"total\" adds the principal axes. \"from … spec\" is the whole load of a spec file naming the cloud "
+                f"(`point_cloud: {{file: cloud.csv}}`: YAML, validation, reading the cloud, the reduction) plus the "
+                f"principal axes, as `rbi principal` does after start-up; the CSV holds `{tp['csv_format']}` numbers. "
+                f"Time grows as size^{number(tp['scaling_exponent'], 3)} from 10⁴ points up (1 = linear).", "",
+                _md_table(CLOUD_COLUMNS, cloud_rows(tp)),
+                "", "### Specs of many solid parts", "",
+                "Cones, cylinders (by density) and point masses in turn, one YAML flow mapping per line. Parsing uses "
+                "libyaml's C parser; validation is pydantic; translation builds one mass element per part in Python. "
+                "\"same as JSON\" is the whole load of the same spec written as one JSON object (JSON is valid YAML; "
+                "rbi reads it with Python's json module when the file starts with `{`). "
+                "\"core\" is the vectorised reduction (mass, CoM, inertia, principal axes) of the translated parts.", "",
+                _md_table(PARTS_COLUMNS, parts_rows(tp))]
+    lat = result.get("latency")
+    if lat:
+        out += ["", "## Whole-process latency", "",
+                f"Each command ran once untimed (warm caches, numba's on-disk cache filled), then repeatedly; the "
+                f"median is compared with `{lat['baseline']}` measured in the same run.", "",
+                _md_table(LATENCY_COLUMNS, latency_rows(lat))]
+    return "\n".join(out) + "\n"
+
+
+# --- CSV -------------------------------------------------------------------------------------
+
+def csv_rows(result: dict) -> list[dict]:
+    """One row per work-precision run (the table scripts most often want)."""
+    rows = []
+    for case in result.get("workprecision", {}).get("cases", []):
+        for r in case["runs"] + [case["default"]]:
+            rows.append({"case": case["name"], "method": r["method"], "rtol": r["rtol"],
+                         "chapter_setup": r.get("chapter_setup", False),
+                         "default_settings": r.get("default_settings", False),
+                         "orientation_error_deg": r["orientation_error_deg"], "omega_error": r["omega_error"],
+                         "drift": r["drift"], "steps": r["steps"], "rhs_evals": r["rhs_evals"], "seconds": r["seconds"]})
+    return rows
