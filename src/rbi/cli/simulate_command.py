@@ -15,6 +15,9 @@ from rbi.cli.options import FormatOption, OutputFormat, SpecFile, parse_vector
 from rbi.cli.render import emit, number, to_csv
 from rbi.spec.errors import InputError
 
+PLOT_SAMPLES = 8001
+"""Samples drawn in a plot: enough to show nutation loops and the wobble of a fast top."""
+
 METHOD_HELP = ("default: compiled adaptive DOP853 (fast, tight); rk45: the seed chapter's set-up (scipy RK45, "
                "rtol 1e-8, Python right-hand side); dop853: scipy DOP853, Python right-hand side; exact: closed "
                "form (free body; axisymmetric top with its centre of mass on the axis).")
@@ -99,7 +102,12 @@ def simulate(
     if plot is not None:
         from rbi.cli.plot import plot_trajectory
 
-        _write_atomically(plot, None, lambda path: plot_trajectory(columns, path, title=body.name or file))
+        shown = columns
+        if method in ("default", "exact") and trajectory.t.size < PLOT_SAMPLES and duration > 0:
+            # the same run sampled more densely (dense output: the steps do not change)
+            dense = run(scene, q0, omega0, duration, PLOT_SAMPLES, method=method, rtol=rtol)
+            shown = sample_columns(scene, dense)
+        _write_atomically(plot, None, lambda path: plot_trajectory(shown, path, title=body.name or file))
     result = {
         "name": body.name,
         "units": body.units,
@@ -230,8 +238,10 @@ def _table(body, result: dict):
                      f"{number(facts['nutation_tilt_max_deg'])} deg, nutation period {number(facts['nutation_period_s'])} s, "
                      f"mean precession {number(facts['mean_precession_rate_deg_s'])} deg/s.")
     elif facts and facts.get("kind") == "asymmetric free body":
+        flips = (f"; near the intermediate axis the body turns over every {number(facts['half_period_s'])} s"
+                 if result["stability"].get("intermediate_axis") else "")
         notes.append(f"Closed form (Euler–Poinsot): ω repeats every {number(facts['omega_period_s'])} s "
-                     f"(4K(m)/λ, m = {number(facts['elliptic_parameter'])}).")
+                     f"(4K(m)/λ, m = {number(facts['elliptic_parameter'])}){flips}.")
     if "out" in result:
         notes.append(f"Trajectory written to {result['out']}.")
     return tables.stack(

@@ -217,6 +217,9 @@ def _top_stability(scene: Scene, q0, omega0) -> dict[str, Any]:
         result["verdict"] = (f"spin {w} is below the sleeping-top threshold {limit} "
                              f"(ω₃² = 4 m g l I₁ / I₃²): the upright spin is unstable, any small tilt grows "
                              f"and the top falls away from vertical")
+        if up >= 1.0 and not np.any(np.cross(omega0, axis)):
+            result["verdict"] += (" (started exactly upright it stays up, an unstable equilibrium: any "
+                                  "perturbation, such as --tilt 0.01, makes it fall)")
     return result
 
 
