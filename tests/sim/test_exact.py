@@ -25,7 +25,7 @@ FREE_SPINS = [
 ]
 
 
-def _omega_world_from_quaternions(t, q):
+def _omega_body_from_quaternions(t, q):
     """ω in body axes from a central difference of q: ω_body = 2 vec(q* q̇)."""
     dq = (q[2:] - q[:-2]) / (t[2:] - t[:-2])[:, None]
     conj = q[1:-1] * np.array([1.0, -1.0, -1.0, -1.0])
@@ -42,7 +42,7 @@ def test_euler_poinsot_obeys_kinematics_and_conservation(free_scene, spin):
     np.testing.assert_allclose(omega[0], w0, rtol=0, atol=1e-13 * np.linalg.norm(w0))
     assert orientation_error_deg(q[0], q0) < 1e-12
     # the orientation and ω belong together: q' = ½ q ⊗ ω (to the finite difference's accuracy)
-    np.testing.assert_allclose(_omega_world_from_quaternions(t, q), omega[1:-1], atol=2e-5 * np.linalg.norm(w0))
+    np.testing.assert_allclose(_omega_body_from_quaternions(t, q), omega[1:-1], atol=2e-5 * np.linalg.norm(w0))
     # energy and the world angular momentum are constant
     drifts = conserved_quantities(free_scene, q, omega)
     assert drifts["energy"]["drift"] < 1e-13

@@ -105,6 +105,8 @@ def _ahead_of_time() -> Callable | None:
             path.parent.mkdir(parents=True, exist_ok=True)
         except OSError:
             return None
+        if not os.access(path.parent, os.W_OK):
+            return None  # nowhere to keep it: use the just-in-time route, without retrying each run
         print("rbi: compiling the simulation kernel (first run only, a few seconds) ...", file=sys.stderr)
         proc = subprocess.run([sys.executable, "-m", "rbi.sim.compiled", str(path)], capture_output=True, text=True)
         if proc.returncode != 0 or not path.exists():
