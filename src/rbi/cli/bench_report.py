@@ -176,7 +176,7 @@ CLOUD_COLUMNS = ["points", "mass [ms]", "CoM [ms]", "+inertia [ms]", "principal 
 
 def cloud_rows(tp: dict) -> list[list[str]]:
     def ms(seconds):
-        return number(1e3 * seconds, 2)
+        return number(1e3 * seconds, 3)
 
     return [[f"{r['points']:,}", ms(r["mass_s"]), ms(r["com_s"]), ms(r["combine_s"]), ms(r["principal_s"]),
              ms(r["total_s"]), number(r["ns_per_point"], 3), ms(r["load_csv_s"]), ms(r["load_npy_s"]),
@@ -251,9 +251,9 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
     if wp:
         out += ["", "## Work against precision", "",
                 "Final orientation error (angle between the computed and the reference orientation at the "
-                "last sample) and angular-velocity error against in-process integration time "
-                "(`Trajectory.wall_seconds`: the integration only, with the compiled kernel already loaded; "
-                "the median of repeated runs for the fast method). \"max rel. drift\" is the largest relative "
+                "last sample) and angular-velocity error against in-process time (one whole call of "
+                "`rbi.sim.api.simulate`, with the compiled kernel already loaded; the median of repeated runs "
+                "for the fast method). \"rel. drift\" is the largest relative "
                 "change of any conserved quantity along the run (energy, vertical and spin angular momentum for "
                 "the top; energy and the angular-momentum vector for the free body). The chapter's set-up is "
                 "scipy `solve_ivp` RK45 at rtol 1e-8, atol 1e-10 with a Python right-hand side "
