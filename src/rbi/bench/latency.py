@@ -18,28 +18,13 @@ from typing import Callable
 
 import numpy as np
 
+from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.bench.throughput import random_cloud, write_cloud
 
 QUICK_REPEATS = 3
 FULL_REPEATS = 11
 
 Progress = Callable[[str], None]
-
-
-def bodies_folder() -> Path:
-    """The bundled example bodies (``bodies/`` of the source checkout)."""
-    here = Path(__file__).resolve()
-    for parent in here.parents:
-        candidate = parent / "bodies" / "top_bolted.yaml"
-        if candidate.is_file():
-            return candidate.parent
-    raise FileNotFoundError("rbi bench needs the example bodies (bodies/top_bolted.yaml) of a source checkout")
-
-
-def rbi_command() -> list[str]:
-    """The installed ``rbi`` script next to this Python, else ``python -m rbi``."""
-    script = Path(sys.executable).with_name("rbi")
-    return [str(script)] if script.is_file() else [sys.executable, "-m", "rbi"]
 
 
 def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[str, list[str]]]:

@@ -27,7 +27,7 @@ from typing import Callable
 
 import numpy as np
 
-from rbi.bench.latency import bodies_folder
+from rbi.bench.paths import bodies_folder
 
 Progress = Callable[[str], None]
 

@@ -42,6 +42,12 @@ def bench(
     if write_docs:
         _check_writable(write_docs, "--write-docs")
     command = _command_line(quick, only, plot, write_docs)
+    from rbi.bench.paths import bodies_folder
+
+    try:
+        bodies_folder()
+    except FileNotFoundError as exc:
+        raise InputError(str(exc)) from None
 
     with _progress(format, suite.planned_steps(quick, sections)) as step:
         result = suite.run(quick, sections, step)
