@@ -94,7 +94,8 @@ def tables(result: dict):
         t = table(f"Work-precision: {case['name']} ({case['spec']}, ω₀ = {_vector(case['omega0'])} rad/s, "
                   f"{case['duration']:g} s) — reference: {reference_text(case)}")
         for header, justify in WORK_COLUMNS:
-            t.add_column(unit_header(*header) if isinstance(header, tuple) else header, justify=justify)
+            t.add_column(unit_header(*header) if isinstance(header, tuple) else header, justify=justify,
+                         no_wrap=header == "method")
         for row in work_rows(case):
             t.add_row(*row)
         parts.append(t)
@@ -163,7 +164,7 @@ def work_rows(case: dict) -> list[list[str]]:
         if r.get("chapter_setup"):
             name += " ★"
         if r.get("default_settings"):
-            name = "rbi defaults (no options)"
+            name = "rbi defaults"
         ratio = chapter["seconds"] / r["seconds"] if chapter and r["seconds"] > 0 else None
         rows.append([name, f"{r['rtol']:g}", _sci(r["orientation_error_deg"]), _sci(r["omega_error"]),
                      _sci(r["drift"]), f"{r['steps']:,}", f"{r['rhs_evals']:,}", number(r["seconds"], 2), _times(ratio)])
