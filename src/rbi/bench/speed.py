@@ -1,6 +1,6 @@
 """Speed check of ``rbi simulate`` against the seed chapter's set-up, in one run.
 
-    python -m rbi.sim.speed [--spec bodies/top_bolted.yaml] [--repeat 20] [--first-run]
+    python -m rbi.bench.speed [--spec bodies/top_bolted.yaml] [--repeat 20] [--first-run]
 
 Integrates the spec (default: the bolted top) with spin 200 rad/s for 4 s, 481 samples:
 
