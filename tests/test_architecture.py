@@ -55,6 +55,11 @@ def test_import_scanner_sees_function_level_and_relative_imports(tmp_path, monke
     assert {"rbi.spec", "rbi.spec.models", "rich.table"} <= imported_modules(probe)
 
 
+def test_sim_imports_only_the_core_and_numerical_libraries():
+    forbidden = ("rbi.spec", "rbi.cli", "rbi.bench", "pydantic", "typer", "rich", "yaml", "click")
+    assert offending("sim", forbidden) == {}
+
+
 def test_core_imports_no_spec_cli_or_interface_libraries():
     forbidden = ("rbi.spec", "rbi.cli", "rbi.sim", "pydantic", "typer", "rich", "yaml", "click")
     assert offending("core", forbidden) == {}
