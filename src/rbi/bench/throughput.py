@@ -112,7 +112,7 @@ def point_clouds(sizes, progress: Progress) -> list[dict]:
             folder = Path(tmp) / f"cloud{n}"
             folder.mkdir()
             specs = write_cloud(folder, masses, positions)
-            row |= file_timings(specs, repeats=3 if n < 10**6 else 3)
+            row |= file_timings(specs, repeats=3)
             row["relative_difference_to_direct_sum"] = check_against_direct_sum(specs, masses, positions)
             rows.append(row)
     return rows

@@ -44,7 +44,7 @@ def inertia(
     body = load_body(file)
     about_label, point = parse_about(about, body)
     body, (point,) = in_output_units(body, units, point)
-    I = inertia_about(body.props, point) if about_label != "com" else body.props.inertia_com
+    I = inertia_about(body.props, point)
     if turns:
         I = re_express(I, compose_world_rotations(turns))
     result = _header(body, about_label, point) | {
@@ -79,7 +79,7 @@ def principal(file: SpecFile, about: AboutOption = "com", units: UnitsOption = N
     body = load_body(file)
     about_label, point = parse_about(about, body)
     body, (point,) = in_output_units(body, units, point)
-    I = inertia_about(body.props, point) if about_label != "com" else body.props.inertia_com
+    I = inertia_about(body.props, point)
     moments, axes = principal_axes(I)
     result = _header(body, about_label, point) | {"moments": moments, "axes": axes}
 

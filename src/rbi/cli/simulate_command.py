@@ -97,8 +97,9 @@ def simulate(
 
     columns = sample_columns(scene, trajectory)
     rows = [dict(zip(CSV_COLUMNS, values)) for values in zip(*(columns[c] for c in CSV_COLUMNS))]
+    trajectory_csv = to_csv(rows) if out is not None or format == OutputFormat.csv else ""
     if out is not None:
-        _write_atomically(out, to_csv(rows))
+        _write_atomically(out, trajectory_csv)
     if plot is not None:
         from rbi.cli.plot import plot_trajectory
 
@@ -122,7 +123,7 @@ def simulate(
         result["out"] = out
 
     if format == OutputFormat.csv:
-        sys.stdout.write(to_csv(rows))
+        sys.stdout.write(trajectory_csv)
         return
     emit(format.value, result, lambda: _table(body, result))
 

@@ -143,6 +143,7 @@ def body_from_spec(spec: models.BodySpec, path: str):
     from rbi.spec.load import LoadedBody
 
     elements = []
+    holes = []
     for i, part in enumerate(spec.parts):
         try:
             with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported just below
@@ -151,14 +152,16 @@ def body_from_spec(spec: models.BodySpec, path: str):
             raise InputError(f"{path}: {part_label(i, part)}: {exc}") from None
         if not (np.isfinite(element.mass) and np.all(np.isfinite(element.inertia_com))):
             raise InputError(f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows")
-        elements.append(_removed(element) if getattr(part, "subtract", False) else element)
+        if getattr(part, "subtract", False):
+            holes.append(i)
+            element = _removed(element)
+        elements.append(element)
     part_names = [p.name for p in spec.parts]
     if spec.point_cloud is not None:  # the whole cloud enters as one part, reduced vectorised
         from rbi.spec.point_cloud import cloud_element
 
         elements.append(cloud_element(path, spec.point_cloud.file))
         part_names.append("point_cloud")
-    holes = [i for i, part in enumerate(spec.parts) if getattr(part, "subtract", False)]
     if holes:
         from rbi.spec.holes import check_holes
 
