@@ -1,6 +1,6 @@
 """`rbi simulate --plot`: tilt against time and the path of the body z axis seen from above.
 
-matplotlib is an optional extra (``pip install 'rbi[plot]'``); it is imported only here.
+matplotlib is an optional extra (``pip install '.[plot]' from rbi's source folder, or pip install matplotlib``); it is imported only here.
 """
 
 from __future__ import annotations
@@ -15,10 +15,10 @@ def require_matplotlib() -> None:
     try:
         import matplotlib  # noqa: F401
     except ImportError:
-        raise InputError("--plot: needs matplotlib, which is not installed: pip install 'rbi[plot]'") from None
+        raise InputError("--plot: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib") from None
 
 
-def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "") -> None:
+def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", format: str = "png") -> None:
     """Two panels saved as a PNG at ``path``: the tilt of the body z axis from vertical against
     time, and the path of that axis's tip (unit length) projected on the horizontal plane."""
     require_matplotlib()
@@ -29,7 +29,7 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "") 
 
     t = columns["t"]
     tilt = columns["tilt_deg"]
-    azimuth = np.radians(columns["precession_deg"])
+    azimuth = np.nan_to_num(np.radians(columns["precession_deg"]))  # undefined while vertical: radius 0
     radius = np.sin(np.radians(tilt))
     x, y = radius * np.cos(azimuth), radius * np.sin(azimuth)
     fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.8), gridspec_kw={"width_ratios": [1.6, 1]})
@@ -52,5 +52,5 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "") 
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(path, format="png", dpi=120)
+    fig.savefig(path, format=format, dpi=120)
     plt.close(fig)

@@ -87,8 +87,15 @@ def to_csv(rows: Iterable[dict[str, Any]]) -> str:
     if rows:
         writer.writerow(rows[0].keys())
         for row in rows:
-            writer.writerow(["" if v is None else repr(v) if isinstance(v, float) else v for v in row.values()])
+            writer.writerow([_csv_cell(v) for v in row.values()])
     return buffer.getvalue()
+
+
+def _csv_cell(value: Any) -> Any:
+    """A CSV cell: floats at full precision, empty for a missing or undefined (NaN) value."""
+    if value is None or (isinstance(value, float) and math.isnan(value)):
+        return ""
+    return repr(value) if isinstance(value, float) else value
 
 
 def number(value: float | None, digits: int = 6) -> str:
@@ -142,7 +149,7 @@ def stderr_console():
 def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None) -> None:
     """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
     lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``."""
-    _refuse_non_finite(result)
+    refuse_non_finite(result)
     if fmt == "json":
         sys.stdout.write(to_json(result) + "\n")
     elif fmt == "csv":
@@ -151,7 +158,7 @@ def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: l
         stdout_console().print(table())
 
 
-def _refuse_non_finite(result: dict[str, Any]) -> None:
+def refuse_non_finite(result: dict[str, Any]) -> None:
     """Inputs of absurd size (``--omega 1e200,0,0``) overflow to inf/NaN: refuse them as bad
     input (exit 2) rather than print nulls."""
     from rbi.spec.errors import InputError

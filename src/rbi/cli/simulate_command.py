@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-import os
 import sys
-import tempfile
 import time
 from typing import Annotated, Optional
 
@@ -13,7 +11,12 @@ import typer
 
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile, parse_vector
 from rbi.cli.render import emit, number, to_csv
+from rbi.sim.budget import DEFAULT_MAX_STEPS
 from rbi.spec.errors import InputError
+
+PLOT_FORMATS = ("png", "svg", "pdf")
+MAX_SAMPLES = 1_000_000
+"""Most samples one run reports (a CSV of 10⁶ rows is about 250 MB)."""
 
 PLOT_SAMPLES = 8001
 """Samples drawn in a plot: enough to show nutation loops and the wobble of a fast top."""
@@ -30,28 +33,43 @@ def simulate(
     omega: Annotated[Optional[str], typer.Option("--omega", "-w", metavar="WX,WY,WZ",
                                                  help="Initial angular velocity in body axes, rad/s.")] = None,
     tilt: Annotated[float, typer.Option("--tilt", metavar="DEG",
-                                        help="Initial tilt about the world y axis, degrees.")] = 0.0,
+                                        help="Initial tilt about the world y axis (see --tilt-axis), degrees.")] = 0.0,
+    tilt_axis: Annotated[str, typer.Option("--tilt-axis", metavar="x|y",
+                                           help="World axis the initial tilt turns about.")] = "y",
+    gravity: Annotated[Optional[float], typer.Option(
+        "--gravity", "-g", metavar="G", help="Gravity's magnitude in m/s² (SI, whatever the spec's units); "
+                                             "0 switches it off. Default 9.81.")] = None,
     duration: Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")] = 4.0,
     samples: Annotated[int, typer.Option("--samples", "-n", metavar="N",
                                          help="Samples, equally spaced from t=0 to t=T (1: only the end).")] = 481,
     out: Annotated[Optional[str], typer.Option("--out", "-o", metavar="FILE.csv",
-                                               help="Write the trajectory as CSV (only if the run succeeds).")] = None,
+                                               help="Write the trajectory as CSV (only if the run succeeds; "
+                                                    "'-' for standard output).")] = None,
     method: Annotated[str, typer.Option("--method", "-m", help=METHOD_HELP)] = "default",
     rtol: Annotated[Optional[float], typer.Option(
         "--rtol", help="Tolerance of the integrator (default 1e-12 for default, 1e-8 for rk45/dop853): smaller "
                        "is more accurate and slower.")] = None,
     error_estimate: Annotated[bool, typer.Option(
         "--error-estimate/--no-error-estimate",
-        help="Estimate the trajectory's error with a second run at a 1000x tighter tolerance.")] = True,
-    plot: Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png",
+        help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
+             "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).")] = True,
+    max_steps: Annotated[Optional[int], typer.Option(
+        "--max-steps", metavar="N", help="Most integration steps this run may take (default "
+                                         f"{DEFAULT_MAX_STEPS:.0e}); a run estimated to need more is refused "
+                                         "before it starts.")] = None,
+    yes: Annotated[bool, typer.Option("--yes", "-y", help="Run even when the run is estimated to exceed the "
+                                                          "step budget (the budget still stops it).")] = False,
+    plot: Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png|.svg|.pdf",
                                                 help="Plot tilt against time and the path of the body z axis "
-                                                     "seen from above (needs matplotlib: pip install 'rbi[plot]').")] = None,
+                                                     "seen from above (needs matplotlib: pip install '.[plot]' "
+                                                     "from rbi's source folder, or pip install matplotlib).")] = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body."""
+    from rbi.cli.output import check_distinct, output_target
     from rbi.sim.api import METHODS, RTOL_RANGE, SimulationError
     from rbi.spec.load import load_body
-    from rbi.spec.units import gravity_in
+    from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 
     if method not in METHODS:
         raise InputError(f"--method: must be one of {', '.join(METHODS)} (got {method!r})")
@@ -64,31 +82,51 @@ def simulate(
     w0 = parse_vector(omega, "--omega") if omega is not None else [0.0, 0.0, 0.0 if spin is None else spin]
     if not (np.isfinite(duration) and duration >= 0.0):
         raise InputError(f"--duration: must be a finite number of seconds >= 0 (got {duration!r})")
-    if samples < 1:
-        raise InputError(f"--samples: must be at least 1 (got {samples!r})")
+    if samples < 1 or samples > MAX_SAMPLES:
+        raise InputError(f"--samples: must be between 1 and {MAX_SAMPLES:,} (got {samples!r})")
+    if tilt_axis.lower() not in ("x", "y"):
+        raise InputError(f"--tilt-axis: must be x or y (got {tilt_axis!r})")
+    if gravity is not None and not (np.isfinite(gravity) and gravity >= 0.0):
+        raise InputError(f"--gravity: must be a finite number of m/s² >= 0 (got {gravity!r})")
+    if max_steps is not None and max_steps < 1:
+        raise InputError(f"--max-steps: must be at least 1 (got {max_steps!r})")
     if rtol is not None and not (np.isfinite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
         raise InputError(f"--rtol: must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
-    for path, option in ((out, "--out"), (plot, "--plot")):
-        if path is not None:
-            _check_writable(path, option)
+    out_target = None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
+    plot_target = None if plot is None else output_target(plot, "--plot", PLOT_FORMATS, inputs=[file])
+    check_distinct([out_target, plot_target])
+    if out_target is not None and out_target.is_stdout and format != OutputFormat.csv:
+        format = OutputFormat.csv  # the trajectory is what goes to standard output
     if plot is not None:
         from rbi.cli.plot import require_matplotlib
 
         require_matplotlib()
 
     body = load_body(file)
-    scene = _scene(body, gravity_in(body.length_unit))
+    g_si = STANDARD_GRAVITY_SI if gravity is None else float(gravity)
+    scene = _scene(body, gravity_in(body.length_unit, g_si))
+    from rbi.sim.budget import estimated_steps
     from rbi.sim.scene import initial_state
     from rbi.sim.summary import CSV_COLUMNS, error_estimate as estimate, sample_columns, summarize
 
-    q0, omega0 = initial_state(tilt, w0)
+    q0, omega0 = initial_state(tilt, w0, tilt_axis.lower())
+    budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)
+    if method != "exact":
+        needed = estimated_steps(scene, omega0, duration, method, rtol)
+        if needed > budget and not yes:
+            raise InputError(
+                f"{file}: this run is estimated to need about {needed:.2g} integration steps, more than the "
+                f"budget of {budget:.2g}: shorten --duration, lower the spin, loosen --rtol, or raise the budget "
+                f"with --max-steps N (or --yes to try anyway)")
     progress = _ProgressBar() if format == OutputFormat.table and sys.stdout.isatty() else None
     try:
         from rbi.sim.api import simulate as run
 
-        trajectory = run(scene, q0, omega0, duration, samples, method=method, rtol=rtol, progress=progress)
+        trajectory = run(scene, q0, omega0, duration, samples, method=method, rtol=rtol, progress=progress,
+                         max_steps=budget)
         result = summarize(scene, trajectory, q0, omega0)
-        result["error_estimate"] = estimate(scene, trajectory, q0, omega0) if error_estimate else None
+        result["error_estimate"] = (estimate(scene, trajectory, q0, omega0, max_steps=budget)
+                                    if error_estimate and method != "exact" else None)
     except SimulationError as exc:
         raise InputError(f"{file}: {exc}") from None
     finally:
@@ -96,19 +134,16 @@ def simulate(
             progress.close()
 
     columns = sample_columns(scene, trajectory)
+    _refuse_non_finite(file, columns)
+    shown = columns
+    if plot is not None and method in ("default", "exact") and trajectory.t.size < PLOT_SAMPLES and duration > 0:
+        try:  # the same run sampled more densely (dense output: the steps do not change)
+            dense = run(scene, q0, omega0, duration, PLOT_SAMPLES, method=method, rtol=rtol, max_steps=budget)
+        except SimulationError as exc:
+            raise InputError(f"{file}: {exc}") from None
+        shown = sample_columns(scene, dense)
     rows = [dict(zip(CSV_COLUMNS, values)) for values in zip(*(columns[c] for c in CSV_COLUMNS))]
     trajectory_csv = to_csv(rows) if out is not None or format == OutputFormat.csv else ""
-    if out is not None:
-        _write_atomically(out, trajectory_csv)
-    if plot is not None:
-        from rbi.cli.plot import plot_trajectory
-
-        shown = columns
-        if method in ("default", "exact") and trajectory.t.size < PLOT_SAMPLES and duration > 0:
-            # the same run sampled more densely (dense output: the steps do not change)
-            dense = run(scene, q0, omega0, duration, PLOT_SAMPLES, method=method, rtol=rtol)
-            shown = sample_columns(scene, dense)
-        _write_atomically(plot, None, lambda path: plot_trajectory(shown, path, title=body.name or file))
     result = {
         "name": body.name,
         "units": body.units,
@@ -119,13 +154,35 @@ def simulate(
         "samples": int(trajectory.t.size),
         "initial": {"t": 0.0, "q": q0, "omega": omega0, "tilt_deg": float(tilt)},
     } | result
-    if out is not None:
+    if out is not None and not out_target.is_stdout:
         result["out"] = out
+    if format != OutputFormat.csv:
+        from rbi.cli.render import refuse_non_finite
 
+        refuse_non_finite(result)
+
+    from rbi.cli.output import write_output
+
+    if out_target is not None and not out_target.is_stdout:
+        write_output(out_target, trajectory_csv)
+    if plot_target is not None:
+        from rbi.cli.plot import plot_trajectory
+
+        title = f"{body.name or file}: spin {number(float(np.linalg.norm(omega0)))} rad/s, tilt {number(tilt)}°"
+        write_output(plot_target, writer=lambda path: plot_trajectory(shown, path, title=title,
+                                                                       format=plot_target.format))
     if format == OutputFormat.csv:
         sys.stdout.write(trajectory_csv)
         return
     emit(format.value, result, lambda: _table(body, result))
+
+
+def _refuse_non_finite(file: str, columns: dict) -> None:
+    """A trajectory that overflowed is bad input (absurd spin or inertia), never written out."""
+    for name, values in columns.items():
+        if name != "precession_deg" and not np.all(np.isfinite(values)):
+            raise InputError(f"{file}: the trajectory's {name} is not finite: the input values are too large "
+                             "for double precision")
 
 
 def _scene(body, gravity: float):
@@ -136,35 +193,6 @@ def _scene(body, gravity: float):
     except ValueError as exc:
         where = "pivot: " if body.pivot is not None else ""
         raise InputError(f"{body.path}: {where}cannot simulate: {exc}") from None
-
-
-def _check_writable(path: str, option: str) -> None:
-    folder = os.path.dirname(os.path.abspath(path))
-    if not os.path.isdir(folder):
-        raise InputError(f"{option}: {path}: folder {folder} does not exist")
-    if os.path.isdir(path):
-        raise InputError(f"{option}: {path}: is a folder, not a file")
-    if not os.access(folder, os.W_OK):
-        raise InputError(f"{option}: {path}: folder {folder} is not writable")
-
-
-def _write_atomically(path: str, text: str | None, writer=None) -> None:
-    """Write ``text`` (or let ``writer(temp_path)`` write) to a temporary file beside ``path``,
-    then rename it into place: ``path`` never holds a half-written file."""
-    folder = os.path.dirname(os.path.abspath(path))
-    suffix = os.path.splitext(path)[1]
-    fd, temp = tempfile.mkstemp(prefix=".rbi-", suffix=suffix, dir=folder)
-    try:
-        with os.fdopen(fd, "w") as handle:
-            if text is not None:
-                handle.write(text)
-        if writer is not None:
-            writer(temp)
-        os.replace(temp, path)
-    except BaseException:
-        if os.path.exists(temp):
-            os.unlink(temp)
-        raise
 
 
 class _ProgressBar:
@@ -211,7 +239,8 @@ def _table(body, result: dict):
         ("final ω (body axes)", "rad/s", tables.vector(final["omega"])),
         ("final tilt of body z", "deg", number(final["tilt_deg"])),
         ("tilt min … max (nutation)", "deg", f"{number(result['tilt_min_deg'])} … {number(result['tilt_max_deg'])}"),
-        ("mean precession rate", "deg/s", number(result["mean_precession_rate_deg_s"])),
+        ("mean precession rate", "deg/s", "undefined (the axis was vertical)"
+         if result["mean_precession_rate_deg_s"] is None else number(result["mean_precession_rate_deg_s"])),
     ]
     names = {"energy": "energy", "h_vertical": "vertical h about pivot", "h_spin": "spin h·axis",
              "h_world": "h (world axes)"}
@@ -222,7 +251,9 @@ def _table(body, result: dict):
         accuracy.append((f"{names[key]}", labels[item["unit"]], f"{shown}  (drift {number(item['drift'], 2)})"))
     accuracy.append(("| |q| − 1 | largest", "", number(result["quaternion_norm_error"], 2)))
     estimate = result.get("error_estimate")
-    if estimate:
+    if estimate and estimate.get("orientation_deg") is None:
+        accuracy.append(("error estimate", "", estimate["reference"]))
+    elif estimate:
         accuracy.append(("error estimate: orientation", "deg", number(estimate["orientation_deg"], 2)))
         accuracy.append(("error estimate: ω", "rad/s", number(estimate["omega_rad_s"], 2)))
     accuracy += [

@@ -97,14 +97,16 @@ def validate_run(duration: float, samples: int, rtol: float | None) -> None:
 
 
 def simulate(scene: Scene, q0, omega0, duration: float, samples: int, method: str = "default",
-             rtol: float | None = None, progress: Callable[[float], None] | None = None) -> Trajectory:
+             rtol: float | None = None, progress: Callable[[float], None] | None = None,
+             max_steps: int | None = None) -> Trajectory:
     """Integrate the scene from ``(q0, omega0)`` at t = 0 and sample it at
     :func:`sample_times` ``(duration, samples)``.
 
     q0: [w, x, y, z] (normalised here), omega0: body frame, rad/s. method: one of
     :data:`METHODS`. rtol: the method's tolerance (default :data:`DEFAULT_RTOL` for
     ``default``, 1e-8 for the scipy methods; ignored by ``exact``). progress: called with the
-    fraction done, now and then, by the default method.
+    fraction done, now and then, by the default method. max_steps: the default method stops
+    with :class:`SimulationError` once it has taken more accepted steps than this.
     """
     validate_run(duration, samples, rtol)
     if method not in METHODS:
@@ -114,13 +116,14 @@ def simulate(scene: Scene, q0, omega0, duration: float, samples: int, method: st
     omega0 = np.asarray(omega0, dtype=float).reshape(3)
     t = sample_times(duration, samples)
     if method == "default":
-        return _run_compiled(scene, q0, omega0, t, DEFAULT_RTOL if rtol is None else rtol, progress)
+        return _run_compiled(scene, q0, omega0, t, DEFAULT_RTOL if rtol is None else rtol, progress, max_steps)
     if method == "exact":
         return _run_exact(scene, q0, omega0, t)
     return _run_scipy(scene, q0, omega0, t, method, SCIPY_DEFAULT_RTOL if rtol is None else rtol)
 
 
-def _run_compiled(scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress) -> Trajectory:
+def _run_compiled(scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress,
+                  max_steps: int | None = None) -> Trajectory:
     from rbi.sim.compiled import integrator
     from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL
 
@@ -136,9 +139,13 @@ def _run_compiled(scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress
     t_end = float(t[-1])
     start = time.perf_counter()
     while True:
-        status = loaded.integrate(y, clock, t, out, inertia, inertia_inv, c, settings, counts, CHUNK_STEPS)
+        chunk = CHUNK_STEPS if max_steps is None else max(1, min(CHUNK_STEPS, max_steps - int(counts[1])))
+        status = loaded.integrate(y, clock, t, out, inertia, inertia_inv, c, settings, counts, chunk)
         if status != STATUS_MORE:
             break
+        if max_steps is not None and counts[1] >= max_steps:
+            raise SimulationError(f"stopped at t = {clock[0]:.6g} s after {int(counts[1]):,} steps, the step "
+                                  "budget (raise it with --max-steps)")
         if progress is not None and t_end > 0.0:
             progress(clock[0] / t_end)
     wall = time.perf_counter() - start

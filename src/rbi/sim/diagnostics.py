@@ -51,11 +51,21 @@ def tilt_deg(q: np.ndarray) -> np.ndarray:
     return np.degrees(2.0 * np.arctan2(np.hypot(q[:, 1], q[:, 2]), np.hypot(q[:, 0], q[:, 3])))
 
 
+VERTICAL_TOLERANCE = 1e-12
+"""Horizontal extent of the unit body z axis below which it counts as vertical: its azimuth
+(the precession angle) is then undefined."""
+
+
 def precession_deg(q: np.ndarray) -> np.ndarray:
     """Azimuth of the body z axis seen from above (world x towards y), degrees, unwrapped so
-    that it is continuous along the samples (N,). Undefined (0) while the axis is vertical."""
+    that it is continuous along the samples (N,). NaN where the axis is vertical (within
+    :data:`VERTICAL_TOLERANCE`), since the azimuth is undefined there."""
     axis = body_z_in_world(q)
-    return np.degrees(np.unwrap(np.arctan2(axis[:, 1], axis[:, 0])))
+    defined = np.hypot(axis[:, 0], axis[:, 1]) > VERTICAL_TOLERANCE
+    out = np.full(axis.shape[0], np.nan)
+    if np.any(defined):
+        out[defined] = np.degrees(np.unwrap(np.arctan2(axis[defined, 1], axis[defined, 0])))
+    return out
 
 
 def energy(scene: Scene, q: np.ndarray, omega: np.ndarray) -> np.ndarray:

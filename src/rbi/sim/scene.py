@@ -108,12 +108,16 @@ def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravi
     )
 
 
-def initial_state(tilt_deg: float, omega_body) -> tuple[np.ndarray, np.ndarray]:
-    """The contract's initial state: identity orientation turned by ``tilt_deg`` degrees about
-    the world y axis; ``omega_body`` (rad/s, body frame).
+def initial_state(tilt_deg: float, omega_body, tilt_axis: str = "y") -> tuple[np.ndarray, np.ndarray]:
+    """The initial state rbi simulates from: identity orientation turned by ``tilt_deg``
+    degrees about the world ``tilt_axis`` (``"x"`` or ``"y"``); ``omega_body`` (rad/s, body
+    frame).
 
     Returns ``(q0, omega0)``: q0 = [w, x, y, z] body -> world, omega0 (3,).
     """
     half = 0.5 * np.radians(float(tilt_deg))
-    q0 = np.array([np.cos(half), 0.0, np.sin(half), 0.0])
+    if tilt_axis not in ("x", "y"):
+        raise ValueError(f"tilt_axis must be 'x' or 'y' (got {tilt_axis!r})")
+    q0 = np.array([np.cos(half), np.sin(half), 0.0, 0.0]) if tilt_axis == "x" else \
+        np.array([np.cos(half), 0.0, np.sin(half), 0.0])
     return q0, np.array(omega_body, dtype=float).reshape(3)
