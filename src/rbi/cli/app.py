@@ -18,6 +18,7 @@ from rbi.cli import (
     dynamics_command,
     export_command,
     mass_commands,
+    parts_command,
     schema_command,
     simulate_command,
 )
@@ -57,6 +58,7 @@ app.command("export")(export_command.export)
 app.command("check")(check_command.check)
 app.command("validate")(schema_command.validate)
 app.command("schema")(schema_command.schema)
+app.command("parts")(parts_command.parts)
 app.command("bench")(bench_command.bench)
 
 

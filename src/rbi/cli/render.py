@@ -98,6 +98,15 @@ def _csv_cell(value: Any) -> Any:
     return repr(value) if isinstance(value, float) else value
 
 
+def terminal_safe(text: str) -> str:
+    """``text`` with every control character (C0, DEL, C1: escape sequences, bells, carriage
+    returns) written as a visible ``\\xNN`` escape, so a name in a spec cannot set the terminal's
+    title, clear the screen or write to the clipboard."""
+    if not any(ord(c) < 32 or 127 <= ord(c) < 160 for c in text):
+        return text
+    return "".join(f"\\x{ord(c):02x}" if ord(c) < 32 or 127 <= ord(c) < 160 else c for c in text)
+
+
 def number(value: float | None, digits: int = 6) -> str:
     """A number for people: ``digits`` significant figures, no noise like ``-0``."""
     if value is None:

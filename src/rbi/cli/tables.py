@@ -10,13 +10,18 @@ from rich.console import Group
 from rich.markup import escape
 from rich.table import Table
 
-from rbi.cli.render import matrix_digits, number, vector_text
+from rbi.cli.render import matrix_digits, number, terminal_safe, vector_text
+
+
+def plain_text(text: str) -> str:
+    """Text from a spec (a name) shown as it is: not read as rich markup (``top [v2]``), and
+    with control characters escaped so a name cannot drive the terminal."""
+    return escape(terminal_safe(text))
 
 
 def titled(title: str) -> Table:
-    """An empty table in rbi's style; the title is plain text (a body name like ``top [v2]``
-    is not read as rich markup)."""
-    return Table(title=escape(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    """An empty table in rbi's style; the title is plain text (see :func:`plain_text`)."""
+    return Table(title=plain_text(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
 
 
 def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:

@@ -6,7 +6,7 @@ Conventions: ``I = ∫ (|r|² E − r rᵀ) dm`` (products of inertia carry a mi
 
 from __future__ import annotations
 
-from typing import Iterable, NamedTuple
+from typing import Iterable, NamedTuple, Sequence
 
 import numpy as np
 
@@ -96,6 +96,21 @@ def inertia_about(props: MassProperties, point: np.ndarray) -> np.ndarray:
     """Inertia about ``point`` (body frame, L) in body axes, M·L²."""
     offset = np.asarray(point, dtype=float) - props.com
     return symmetrize(parallel_axis(props.inertia_com, props.mass, offset))
+
+
+def inertia_shares(elements: Sequence[MassElement], props: MassProperties) -> np.ndarray:
+    """Each element's share of the trace of the body's inertia about the body's centre of mass
+    (fractions that add up to 1; a hole's share is negative).
+
+    The trace is the sum of the three moments, ``2 ∫ |r|² dm``, so the share says which part
+    carries the body's rotational inertia whatever the axes.
+    """
+    total = float(np.trace(props.inertia_com))
+    shares = np.empty(len(elements))
+    for i, element in enumerate(elements):
+        about_body_com = parallel_axis(element.inertia_com, element.mass, np.asarray(element.com) - props.com)
+        shares[i] = float(np.trace(about_body_com)) / total if total != 0.0 else 0.0
+    return shares
 
 
 def re_express(inertia: np.ndarray, R: np.ndarray) -> np.ndarray:

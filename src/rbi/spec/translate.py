@@ -128,6 +128,25 @@ ELEMENT_BUILDERS: dict[type, Callable[..., shapes.MassElement]] = {
 """Each part model's translation ``(part, units) -> MassElement`` (file units)."""
 
 
+PART_VOLUMES: dict[type, Callable[[object], float]] = {
+    models.ConePart: lambda p: shapes.cone_volume(p.radius, _length(p.apex, p.base)),
+    models.CylinderPart: lambda p: shapes.cylinder_volume(p.radius, _length(p.start, p.end)),
+    models.BoxPart: lambda p: shapes.box_volume(p.size),
+    models.SpherePart: lambda p: shapes.sphere_volume(p.radius),
+    models.SphericalShellPart: lambda p: shapes.spherical_shell_volume(p.outer_radius, p.inner_radius),
+    models.TubePart: lambda p: shapes.tube_volume(p.outer_radius, p.inner_radius, _length(p.start, p.end)),
+    models.FrustumPart: lambda p: shapes.frustum_volume(p.start_radius, p.end_radius, _length(p.start, p.end)),
+    models.EllipsoidPart: lambda p: shapes.ellipsoid_volume(p.semi_axes),
+}
+"""Volume (L³) of each solid part model; points, rods and custom parts have none."""
+
+
+def part_volume(part) -> float | None:
+    """The part's volume in the file's length unit cubed, or None for a part without one."""
+    volume = PART_VOLUMES.get(type(part))
+    return None if volume is None else float(volume(part))
+
+
 def _removed(element: shapes.MassElement) -> shapes.MassElement:
     """A hole: the same solid with negative mass and inertia."""
     return shapes.MassElement(-element.mass, element.com, -element.inertia_com)

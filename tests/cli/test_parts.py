@@ -1,0 +1,63 @@
+"""`rbi parts`: each part's numbers against hand-worked closed forms."""
+
+from __future__ import annotations
+
+import json
+import math
+
+import pytest
+
+from tests.conftest import BODIES, run_rbi_inprocess as rbi
+
+
+def parts_json(path):
+    proc = rbi("parts", path, "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    return json.loads(proc.stdout), proc.stderr
+
+
+def test_the_bolted_top_part_by_part():
+    out, warnings = parts_json(BODIES / "top_bolted.yaml")
+    assert warnings == ""
+    cone, stem, bolt = out["parts"]
+    assert [p["name"] for p in out["parts"]] == ["cone", "stem", "bolt"]
+    assert [p["shape"] for p in out["parts"]] == ["cone", "cylinder", "point"]
+    # cone: m 0.4, r 0.04, h 0.06, CoM 3h/4 from the apex; I about its CoM 3/20 m r² + 3/80 m h², axial 3/10 m r²
+    assert cone["center_of_mass"] == pytest.approx([0, 0, 0.045], abs=1e-15)
+    transverse = 3 / 20 * 0.4 * 0.04**2 + 3 / 80 * 0.4 * 0.06**2
+    assert cone["inertia_about_com"][0][0] == pytest.approx(transverse, rel=1e-13)
+    assert cone["inertia_about_com"][2][2] == pytest.approx(3 / 10 * 0.4 * 0.04**2, rel=1e-13)
+    assert cone["implied_density"] == pytest.approx(0.4 / (math.pi * 0.04**2 * 0.06 / 3), rel=1e-13)
+    # stem: m 0.1, r 0.008, l 0.04 from z 0.06 to 0.10: I = m(3r² + l²)/12, axial m r²/2
+    assert stem["inertia_about_com"][1][1] == pytest.approx(0.1 * (3 * 0.008**2 + 0.04**2) / 12, rel=1e-13)
+    assert bolt["implied_density"] is None and bolt["inertia_about_com"] == [[0.0] * 3] * 3
+    assert sum(p["mass"] for p in out["parts"]) == pytest.approx(out["mass"], rel=1e-15)
+    assert sum(p["inertia_share"] for p in out["parts"]) == pytest.approx(1.0, rel=1e-12)
+    # the bolt's share: m |d|² twice over (trace of a point mass's inertia is 2 m |d|²) over the body's trace
+    com = out["center_of_mass"]
+    d2 = (0.04 - com[0]) ** 2 + com[1] ** 2 + (0.06 - com[2]) ** 2
+    body = json.loads(rbi("inertia", BODIES / "top_bolted.yaml", "--format", "json").stdout)
+    trace = sum(body["inertia"][i][i] for i in range(3))
+    assert bolt["inertia_share"] == pytest.approx(2 * 0.02 * d2 / trace, rel=1e-12)
+
+
+def test_holes_count_negative_and_the_masses_still_add_up():
+    out, _ = parts_json(BODIES / "wheel_with_holes.yaml")
+    holes = [p for p in out["parts"] if p["hole"]]
+    assert holes and all(p["mass"] < 0 for p in holes)
+    assert sum(p["mass"] for p in out["parts"]) == pytest.approx(out["mass"], rel=1e-12)
+
+
+def test_a_spec_written_in_millimetres_without_saying_so_is_flagged(write_spec):
+    spec = write_spec("parts:\n  - {name: cone, shape: cone, mass: 0.4, radius: 40, apex: [0, 0, 0], base: [0, 0, 60]}\n")
+    out, warnings = parts_json(spec)
+    assert out["parts"][0]["implied_density_si"] == pytest.approx(0.4 / (math.pi * 40**2 * 60 / 3), rel=1e-12)
+    assert "warning" in warnings and "(cone)" in warnings and "length: mm" in warnings
+    assert len(warnings.strip().splitlines()) == 1
+
+
+def test_table_and_csv(write_spec):
+    table = rbi("parts", BODIES / "top_bolted.yaml")
+    assert table.returncode == 0 and "kg/m³" in table.stdout and "bolt" in table.stdout
+    rows = rbi("parts", BODIES / "top_bolted.yaml", "--format", "csv").stdout.splitlines()
+    assert len(rows) == 4 and rows[0].startswith("name,shape,")
