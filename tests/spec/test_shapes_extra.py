@@ -164,3 +164,54 @@ def test_field_errors_name_part_and_field(write_spec, part, expected):
     message = error(write_spec, f"- {part}\n")
     assert expected in message, message
     assert "Traceback" not in message and "\n" not in message
+
+
+ELLIPSOID = "- {{shape: ellipsoid, mass: 5, center: [1, 2, 3], semi_axes: [0.3, 0.2, 0.1], rotation: {rotation}}}\n"
+
+
+def _own_ellipsoid_inertia():
+    return np.diag([0.2**2 + 0.1**2, 0.3**2 + 0.1**2, 0.3**2 + 0.2**2])
+
+
+@pytest.mark.parametrize("sequence", ["xyz", "zyx", "zxz", "XYZ", "ZYX", "ZXZ", "yxy"])
+def test_euler_form_matches_scipy_from_euler(write_spec, sequence):
+    angles = [25.0, -40.0, 70.0]
+    b = body(write_spec, ELLIPSOID.format(rotation=f"{{euler_deg: {angles}, sequence: {sequence}}}"))
+    R = Rotation.from_euler(sequence, angles, degrees=True).as_matrix()
+    np.testing.assert_allclose(b.props.inertia_com, R @ _own_ellipsoid_inertia() @ R.T, rtol=1e-13, atol=1e-15)
+
+
+def test_quaternion_form_matches_scipy_and_is_normalised(write_spec):
+    q_wxyz = np.array([0.9, 0.1, -0.3, 0.2])
+    b = body(write_spec, ELLIPSOID.format(rotation=f"{{quaternion: {(3 * q_wxyz).tolist()}}}"))
+    R = Rotation.from_quat(np.r_[q_wxyz[1:], q_wxyz[0]]).as_matrix()  # scipy is scalar-last
+    np.testing.assert_allclose(b.props.inertia_com, R @ _own_ellipsoid_inertia() @ R.T, rtol=1e-13, atol=1e-15)
+
+
+def test_one_rotation_written_three_ways_gives_bit_close_inertia(write_spec):
+    # A quarter turn about z: axis-angle, quaternion [cos 45°, 0, 0, sin 45°], Euler z=90°.
+    forms = ["{axis: [0, 0, 1], angle_deg: 90}",
+             f"{{quaternion: [{float(np.cos(np.pi / 4))!r}, 0, 0, {float(np.sin(np.pi / 4))!r}]}}",
+             "{euler_deg: [90, 0, 0], sequence: zyx}",
+             "{euler_deg: [0, 0, 90], sequence: XYZ}"]
+    results = [body(write_spec, ELLIPSOID.format(rotation=form)).props.inertia_com for form in forms]
+    for other in results[1:]:
+        np.testing.assert_allclose(other, results[0], rtol=0, atol=1e-15)
+    np.testing.assert_allclose(results[0], 5 / 5 * np.diag([0.3**2 + 0.1**2, 0.2**2 + 0.1**2, 0.3**2 + 0.2**2]),
+                               rtol=1e-15)
+
+
+@pytest.mark.parametrize("rotation, expected", [
+    ("{quaternion: [0, 0, 0, 0]}", "rotation: quaternion: must not be zero"),
+    ("{quaternion: [1, 0, 0]}", "rotation.quaternion:"),
+    ("{euler_deg: [1, 2, 3]}", "rotation: euler_deg, sequence: give both"),
+    ("{euler_deg: [1, 2, 3], sequence: xYz}", "rotation.sequence:"),
+    ("{euler_deg: [1, 2, 3], sequence: xwz}", "rotation.sequence:"),
+    ("{axis: [0, 0, 1], angle_deg: 9, quaternion: [1, 0, 0, 0]}", "give exactly one form"),
+    ("{axis: [0, 0, 1]}", "rotation: axis, angle_deg: give both"),
+    ("{}", "give exactly one form"),
+])
+def test_rotation_form_errors_name_the_field(write_spec, rotation, expected):
+    message = error(write_spec, ELLIPSOID.format(rotation=rotation))
+    assert "parts[0]" in message and expected in message, message
+    assert "\n" not in message

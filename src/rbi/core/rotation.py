@@ -52,6 +52,23 @@ def compose_world_rotations(rotations: list[tuple[str, float]]) -> np.ndarray:
     return R
 
 
+def euler_matrix(angles_rad, sequence: str) -> np.ndarray:
+    """Rotation matrix of three successive turns ``angles_rad`` about the axes named by
+    ``sequence`` (three letters of x, y, z).
+
+    Lower case (``"xyz"``): about the fixed (extrinsic) axes, first about the first letter, so
+    ``R = R3 R2 R1``. Upper case (``"XYZ"``): about the moving (intrinsic) axes, ``R = R1 R2 R3``.
+    This is the convention of scipy's ``Rotation.from_euler``.
+    """
+    if len(sequence) != 3 or not (sequence.islower() or sequence.isupper()) \
+            or set(sequence.lower()) - set("xyz"):
+        raise ValueError(f"sequence must be three letters of x, y, z, all lower or all upper case (got {sequence!r})")
+    turns = [elementary_rotation(axis, angle) for axis, angle in zip(sequence.lower(), angles_rad)]
+    if sequence.islower():
+        return turns[2] @ turns[1] @ turns[0]
+    return turns[0] @ turns[1] @ turns[2]
+
+
 def skew(v: np.ndarray) -> np.ndarray:
     """Cross-product matrix ``[v]x`` such that ``skew(v) @ u == np.cross(v, u)``."""
     x, y, z = v

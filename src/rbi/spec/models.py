@@ -109,16 +109,38 @@ def _mass_only(data: Any, what: str) -> Any:
 # --- shapes added for engineering parts (docs/spec.md gives each closed form) ---------------
 
 class Rotation(_Strict):
-    """A turn by ``angle_deg`` degrees about ``axis`` (right-hand rule), mapping the part's own
-    axes to body axes. The part turns about its own centre."""
+    """How the part's own axes are turned into body axes, in one of three forms: ``axis`` and
+    ``angle_deg`` (right-hand rule); ``quaternion`` ``[w, x, y, z]`` (normalised); or
+    ``euler_deg`` with a ``sequence`` of three axis letters (lower case: fixed axes, upper
+    case: moving axes, as scipy's ``Rotation.from_euler``). The part turns about its own centre."""
 
-    axis: Vector3
-    angle_deg: Number
+    axis: Vector3 | None = Field(None, description="Axis of an axis-angle rotation (need not be unit length).")
+    angle_deg: Number | None = Field(None, description="Angle of an axis-angle rotation, degrees, right-hand rule.")
+    quaternion: Annotated[list[Number], Field(min_length=4, max_length=4)] | None = Field(
+        None, description="Unit quaternion [w, x, y, z] (scalar first), part axes to body axes; normalised.")
+    euler_deg: Vector3 | None = Field(None, description="Three Euler angles, degrees, applied in `sequence` order.")
+    sequence: str | None = Field(
+        None, pattern=r"^([xyz]{3}|[XYZ]{3})$",
+        description="Axes of the Euler angles: lower case = fixed (extrinsic) axes, upper case = moving (intrinsic).")
 
     @model_validator(mode="after")
-    def _axis_not_zero(self):
-        if not any(self.axis):
-            raise ValueError("axis: must not be the zero vector [0, 0, 0]")
+    def _one_form(self):
+        forms = [name for name, given in (("axis, angle_deg", self.axis is not None or self.angle_deg is not None),
+                                          ("quaternion", self.quaternion is not None),
+                                          ("euler_deg, sequence", self.euler_deg is not None or self.sequence is not None))
+                 if given]
+        if len(forms) != 1:
+            raise ValueError("give exactly one form: {axis, angle_deg}, {quaternion} or {euler_deg, sequence}"
+                             + (f" (got {' and '.join(forms)})" if forms else " (got none)"))
+        if forms[0] == "axis, angle_deg":
+            if self.axis is None or self.angle_deg is None:
+                raise ValueError("axis, angle_deg: give both")
+            if not any(self.axis):
+                raise ValueError("axis: must not be the zero vector [0, 0, 0]")
+        if forms[0] == "euler_deg, sequence" and (self.euler_deg is None or self.sequence is None):
+            raise ValueError("euler_deg, sequence: give both")
+        if self.quaternion is not None and not any(self.quaternion):
+            raise ValueError("quaternion: must not be zero [0, 0, 0, 0]")
         return self
 
 

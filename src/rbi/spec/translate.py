@@ -8,7 +8,7 @@ import numpy as np
 
 from rbi.core import shapes
 from rbi.core.inertia import combine_elements, parallel_axis_to_com, re_express
-from rbi.core.rotation import axis_angle_matrix
+from rbi.core.rotation import axis_angle_matrix, euler_matrix, quaternion_to_matrix
 from rbi.core.validity import inertia_problem
 from rbi.spec import models
 from rbi.spec.errors import InputError
@@ -38,7 +38,12 @@ def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
     """
     if rotation is None:
         return None
-    R = axis_angle_matrix(np.asarray(rotation.axis, dtype=float), np.radians(rotation.angle_deg))
+    if rotation.quaternion is not None:
+        R = quaternion_to_matrix(np.asarray(rotation.quaternion, dtype=float))
+    elif rotation.euler_deg is not None:
+        R = euler_matrix(np.radians(rotation.euler_deg), rotation.sequence)
+    else:
+        R = axis_angle_matrix(np.asarray(rotation.axis, dtype=float), np.radians(rotation.angle_deg))
     R[np.abs(R) < 1e-15] = 0.0
     return R
 
