@@ -151,3 +151,25 @@ def test_gravity_is_given_in_si_and_converted_to_the_spec_units(write_spec):
     assert math.isclose(out["gravity"], 1620.0, rel_tol=1e-15)
     one_line_exit_2(rbi("simulate", spec, "--spin", "200", "--gravity", "-1"), "--gravity")
     one_line_exit_2(rbi("simulate", spec, "--spin", "200", "--tilt-axis", "z"), "--tilt-axis")
+
+
+def test_no_code_from_the_current_folder_runs_and_no_writable_home_is_needed(tmp_path):
+    """The installed `rbi` in a folder holding modules named like rbi's build tools and
+    dependencies, with HOME and the cache folder unwritable: it simulates, prints no
+    'compiling' line, and none of those modules runs."""
+    import subprocess
+    import sys
+    from pathlib import Path
+
+    marker = tmp_path / "ran"
+    for name in ("numba", "Cython", "rbi_kernels", "sitecustomize", "usercustomize"):
+        (tmp_path / f"{name}.py").write_text(f"open({str(marker)!r}, 'a').write({name!r})\n")
+    home = tmp_path / "home"
+    home.mkdir(mode=0o500)
+    env = dict(os.environ, HOME=str(home), XDG_CACHE_HOME=str(home / "cache"), PYTHONPATH="")
+    rbi_script = Path(sys.executable).with_name("rbi")
+    proc = subprocess.run([str(rbi_script), "simulate", str(TOP), "--spin", "200", "--duration", "0.2",
+                           "--format", "json"], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
+    assert proc.returncode == 0, proc.stderr
+    assert "compiling" not in proc.stderr and json.loads(proc.stdout)["final"]["t"] == 0.2
+    assert not marker.exists()

@@ -63,39 +63,6 @@ def test_the_chapter_set_up_is_what_the_issue_says(bolted_scene):
     assert np.max(orientation_error_deg(dop.q, reference.q)) < 1e-6
 
 
-@settings(max_examples=30, deadline=None)
-@given(
-    q=st.lists(st.floats(-1, 1), min_size=4, max_size=4).filter(lambda v: np.linalg.norm(v) > 0.1),
-    w=st.lists(st.floats(-300, 300), min_size=3, max_size=3),
-)
-def test_compiled_rhs_equals_the_chapter_style_python_rhs(bolted_scene, q, w):
-    from rbi.sim.kernels import rhs
-
-    y = np.concatenate((np.asarray(q) / np.linalg.norm(q), w))
-    out = np.empty(7)
-    rhs(y, bolted_scene.inertia, bolted_scene.inertia_inv, bolted_scene.gravity_moment, out)
-    expected = np.asarray(python_rhs(bolted_scene)(0.0, y))
-    np.testing.assert_allclose(out, expected, rtol=1e-12, atol=1e-12 * (1 + np.abs(expected).max()))
-
-
-def test_ahead_of_time_and_jit_kernels_agree_bit_for_bit(bolted_scene):
-    from rbi.sim.compiled import integrator
-    from rbi.sim.kernels import integrate as jit_integrate
-
-    loaded = integrator()
-    t = np.linspace(0.0, 1.0, 11)
-    results = []
-    for integrate in (loaded.integrate, jit_integrate):
-        y = np.array([1.0, 0, 0, 0, 0, 0, 200.0])
-        out = np.empty((t.size, 7))
-        counts = np.zeros(4, dtype=np.int64)
-        integrate(y, np.zeros(9), t, out, bolted_scene.inertia, bolted_scene.inertia_inv,
-                  bolted_scene.gravity_moment, np.array([1e-12, bolted_scene.natural_rate]), counts, 10**9)
-        results.append((out, counts))
-    np.testing.assert_array_equal(results[0][0], results[1][0])
-    np.testing.assert_array_equal(results[0][1], results[1][1])
-
-
 def test_progress_chunks_do_not_change_the_result(bolted_scene, monkeypatch):
     from rbi.sim import api
 

@@ -1,7 +1,7 @@
 """Whole-process latency: how long a user waits for ``rbi inertia`` and ``rbi simulate``,
 compared with starting Python and importing numpy (the floor for any numpy program).
 
-Each command runs once untimed (so numba's on-disk cache and the OS file cache are warm, as on
+Each command runs once untimed (so the OS file cache is warm, as on
 a machine that has run rbi before), then ``repeats`` times; the median is reported, and the
 ratio to the median of ``python -c "import numpy"`` measured in the same run.
 """

@@ -57,12 +57,9 @@ def machine() -> dict:
         "scipy": scipy.__version__,
         "executable": sys.executable,
     }
-    try:
-        import numba
+    from rbi.sim.compiled import integrator
 
-        info["numba"] = numba.__version__
-    except ImportError:  # pragma: no cover - numba is a dependency
-        info["numba"] = None
+    info["kernel"] = integrator().how
     return info
 
 

@@ -137,7 +137,7 @@ def machine_line(result: dict) -> str:
     m = result["machine"]
     load = m.get("load_average_1min")
     return (f"{m['date']} · {m['cpu']} · {m['cores']} cores · load average {load} at start · Python {m['python']}, "
-            f"numpy {m['numpy']}, scipy {m['scipy']}, numba {m.get('numba')} · {'quick' if result['quick'] else 'full'} run")
+            f"numpy {m['numpy']}, scipy {m['scipy']}, kernel: {m.get('kernel')} · {'quick' if result['quick'] else 'full'} run")
 
 
 def reference_text(case: dict) -> str:
@@ -232,7 +232,7 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
         "",
         f"- Date: {m['date']}",
         f"- Machine: {m['cpu']}, {m['cores']} cores, {m['platform']}",
-        f"- Software: Python {m['python']}, numpy {m['numpy']}, scipy {m['scipy']}, numba {m.get('numba')}",
+        f"- Software: Python {m['python']}, numpy {m['numpy']}, scipy {m['scipy']}, kernel: {m.get('kernel')}",
         f"- Load average (1 min) when the run started: {m.get('load_average_1min')}",
         f"- Run: {'quick (`--quick`, shortened cases)' if result['quick'] else 'full'}",
         "",
@@ -287,7 +287,7 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
     lat = result.get("latency")
     if lat:
         out += ["", "## Whole-process latency", "",
-                f"Each command ran once untimed (warm caches, numba's on-disk cache filled), then repeatedly; the "
+                f"Each command ran once untimed (warm OS file caches), then repeatedly; the "
                 f"median is compared with `{lat['baseline']}` measured in the same run.", "",
                 _md_table(LATENCY_COLUMNS, latency_rows(lat))]
     return "\n".join(out) + "\n"
