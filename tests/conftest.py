@@ -42,6 +42,15 @@ def run_rbi_inprocess(*args: str) -> subprocess.CompletedProcess:
     return subprocess.CompletedProcess(argv, code, out.getvalue(), err.getvalue())
 
 
+def one_line_exit_2(proc, *words):
+    """The CLI refused bad input the contract's way: exit 2, one line, no traceback, naming
+    each of ``words``."""
+    assert proc.returncode == 2, proc.stderr
+    assert len(proc.stderr.strip().splitlines()) == 1 and "Traceback" not in proc.stderr
+    for word in words:
+        assert word in proc.stderr, proc.stderr
+
+
 @pytest.fixture
 def bodies() -> Path:
     return BODIES

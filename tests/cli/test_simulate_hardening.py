@@ -12,18 +12,11 @@ import stat
 
 import pytest
 
-from tests.conftest import BODIES, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
 
 TOP = BODIES / "top.yaml"
 BOLTED = BODIES / "top_bolted.yaml"
 TBAR = BODIES / "tbar.yaml"
-
-
-def one_line_exit_2(proc, *words):
-    assert proc.returncode == 2, proc.stderr
-    assert len(proc.stderr.strip().splitlines()) == 1 and "Traceback" not in proc.stderr
-    for word in words:
-        assert word in proc.stderr, proc.stderr
 
 
 def test_out_naming_the_input_spec_is_refused_and_the_spec_kept(tmp_path):

@@ -19,6 +19,7 @@ from rbi.cli import (
     export_command,
     mass_commands,
     parts_command,
+    sweep_command,
     schema_command,
     simulate_command,
 )
@@ -59,6 +60,7 @@ app.command("check")(check_command.check)
 app.command("validate")(schema_command.validate)
 app.command("schema")(schema_command.schema)
 app.command("parts")(parts_command.parts)
+app.command("sweep")(sweep_command.sweep)
 app.command("bench")(bench_command.bench)
 
 

@@ -14,6 +14,7 @@ ends in ``_deg``. Gravity acts along world −z.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import cached_property
 
 import numpy as np
 
@@ -42,7 +43,7 @@ class Scene:
     pivot: np.ndarray | None = None
     com: np.ndarray = field(default_factory=lambda: np.zeros(3))
 
-    @property
+    @cached_property
     def inertia_inv(self) -> np.ndarray:
         return np.linalg.inv(self.inertia)
 
@@ -52,17 +53,21 @@ class Scene:
         ``e_z × c`` with ``e_z`` the world's up axis seen in the body."""
         return self.mass * self.gravity * np.asarray(self.com_from_pivot, dtype=float)
 
+    @cached_property
+    def _principal(self) -> tuple[np.ndarray, np.ndarray]:
+        return principal_axes(self.inertia)
+
     @property
     def principal_moments(self) -> np.ndarray:
         """Principal moments of ``inertia`` (ascending), M·L²."""
-        return principal_axes(self.inertia)[0]
+        return self._principal[0]
 
     @property
     def principal_axes(self) -> np.ndarray:
         """Unit principal axes (rows, body frame) matching :attr:`principal_moments`."""
-        return principal_axes(self.inertia)[1]
+        return self._principal[1]
 
-    @property
+    @cached_property
     def natural_rate(self) -> float:
         """A rate (rad/s) the motion cannot be much slower than: the pendulum frequency
         ``sqrt(m g l / I_max)`` of a pivoted body (0 for a free body)."""

@@ -77,21 +77,33 @@ def error_estimate(scene: Scene, trajectory: Trajectory, q0, omega0, max_steps: 
     }
 
 
-def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any]:
-    """The run's summary: final state, nutation bounds, mean precession rate, invariants and
-    their drift, cost, stability."""
-    q, omega, t = trajectory.q, trajectory.omega, trajectory.t
+def motion_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
+    """The figures of a sampled motion that a run and a sweep row report: tilt of the body z
+    axis from vertical (min, max, final; deg), mean precession rate (deg/s; None when the axis
+    stood vertical at some sample, where the azimuth is undefined) and the conserved quantities
+    with their relative drift."""
     tilt = diagnostics.tilt_deg(q)
     precession = diagnostics.precession_deg(q)
     duration = float(t[-1] - t[0])
     if np.any(np.isnan(precession)):
-        rate_deg = None  # the axis stood vertical at some sample: the azimuth is undefined there
+        rate_deg = None
     else:
         rate_deg = float((precession[-1] - precession[0]) / duration) if duration > 0 and t.size > 1 else 0.0
-    conserved = diagnostics.conserved_quantities(scene, q, omega)
+    return {"min_tilt_deg": float(np.min(tilt)), "max_tilt_deg": float(np.max(tilt)),
+            "final_tilt_deg": float(tilt[-1]), "precession_rate_deg_s": rate_deg,
+            "conserved": diagnostics.conserved_quantities(scene, q, omega)}
+
+
+def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any]:
+    """The run's summary: final state, nutation bounds, mean precession rate, invariants and
+    their drift, cost, stability."""
+    q, omega, t = trajectory.q, trajectory.omega, trajectory.t
+    figures = motion_figures(scene, t, q, omega)
+    rate_deg = figures["precession_rate_deg_s"]
+    conserved = figures["conserved"]
     norms = np.linalg.norm(q, axis=1)
     return {
-        "final": {"t": float(t[-1]), "q": q[-1], "omega": omega[-1], "tilt_deg": float(tilt[-1])},
+        "final": {"t": float(t[-1]), "q": q[-1], "omega": omega[-1], "tilt_deg": figures["final_tilt_deg"]},
         "method": trajectory.method,
         "integrator": trajectory.integrator,
         "rtol": trajectory.rtol,
@@ -100,8 +112,8 @@ def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any
         "rhs_evals": trajectory.rhs_evals,
         "wall_seconds": trajectory.wall_seconds,
         "load_seconds": trajectory.load_seconds,
-        "tilt_min_deg": float(np.min(tilt)),
-        "tilt_max_deg": float(np.max(tilt)),
+        "tilt_min_deg": figures["min_tilt_deg"],
+        "tilt_max_deg": figures["max_tilt_deg"],
         "mean_precession_rate_deg_s": rate_deg,
         "mean_precession_rate_rad_s": None if rate_deg is None else float(np.radians(rate_deg)),
         "conserved": conserved,

@@ -197,7 +197,12 @@ def _model_inside(annotation: Any) -> Any:
 def load_spec(path: str | Path):
     """Read and validate a spec file; raises :class:`InputError` with the first problem."""
     path = str(path)
-    raw = read_yaml(path)
+    return spec_from_raw(path, read_yaml(path))
+
+
+def spec_from_raw(path: str, raw: Any):
+    """Validate already parsed YAML (``raw``) of the spec file ``path``; raises
+    :class:`InputError` with the first problem."""
     spec, problems = validation_messages(path, raw)
     if problems:
         more = f" (+{len(problems) - 1} more; `rbi validate {path}` lists all)" if len(problems) > 1 else ""

@@ -1,0 +1,154 @@
+"""A chunk of sweep runs → rows: each run's body re-derived from the varied spec, all runs of
+the chunk integrated in one call of the batched compiled kernel, each summarised as
+``rbi simulate`` summarises a single run.
+
+Everything here is picklable plain data, so a chunk can run in this process or on a Dask
+worker and give the same rows.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from rbi.spec.variations import FieldPath
+from rbi.sweep.plan import Plan
+
+RESULT_COLUMNS = ("max_tilt_deg", "final_tilt_deg", "min_tilt_deg", "precession_rate_deg_s", "energy_drift",
+                  "steps", "status")
+"""Columns after ``run`` and the swept values, in order."""
+
+OUT_BYTES_PER_CHUNK = 64 * 2**20
+"""Most memory the sampled states of one chunk may take."""
+
+
+@dataclass(frozen=True)
+class SweepJob:
+    """What every run of a sweep shares. path: the spec file (for messages and files it names);
+    raw: the parsed spec; varied: the paths of ``plan``'s axes after spin and tilt; duration (s),
+    samples, rtol: as ``rbi simulate``; gravity_si: m/s²; tilt_axis: "x" or "y"; max_steps: per
+    run."""
+
+    path: str
+    raw: Any
+    plan: Plan
+    varied: tuple[FieldPath, ...]
+    duration: float
+    samples: int
+    rtol: float
+    gravity_si: float
+    tilt_axis: str = "y"
+    max_steps: int = 10**7
+    _bodies: dict = field(default_factory=dict, compare=False, repr=False)
+    _scenes: dict = field(default_factory=dict, compare=False, repr=False)
+
+    @property
+    def columns(self) -> list[str]:
+        return ["run", *self.plan.names, *RESULT_COLUMNS]
+
+    def chunk_size(self, threads: int) -> int:
+        """Runs per kernel call: enough to keep every thread busy, bounded in memory."""
+        per_run = self.samples * 7 * 8
+        return int(max(1, min(max(64, 16 * threads), OUT_BYTES_PER_CHUNK // per_run)))
+
+    def body(self, values: tuple[float, ...]):
+        """The body with the varied fields set to ``values`` (cached per distinct values), or the
+        one-line reason it cannot be built."""
+        key = tuple(values)
+        if key not in self._bodies:
+            if len(self._bodies) > 4096:
+                self._bodies.clear()
+            self._bodies[key] = _derive_body(self.path, self.raw, self.varied, key)
+        return self._bodies[key]
+
+
+def _derive_body(path: str, raw: Any, varied: tuple[FieldPath, ...], values: tuple[float, ...]):
+    from rbi.spec.errors import InputError
+    from rbi.spec.load import spec_from_raw
+    from rbi.spec.translate import body_from_spec
+    from rbi.spec.variations import with_values
+
+    try:
+        spec_raw = with_values(raw, list(varied), values) if varied else raw
+        return body_from_spec(spec_from_raw(path, spec_raw), path)
+    except InputError as exc:
+        return _one_line(str(exc).removeprefix(f"{path}: "))
+
+
+def _scene(job: SweepJob, values: tuple[float, ...]):
+    """The run's scene, or the reason it has none (cached per distinct values)."""
+    if values not in job._scenes:
+        if len(job._scenes) > 4096:
+            job._scenes.clear()
+        job._scenes[values] = _derive_scene(job, values)
+    return job._scenes[values]
+
+
+def _derive_scene(job: SweepJob, values: tuple[float, ...]):
+    from rbi.sim.scene import scene_from_properties
+    from rbi.spec.units import gravity_in
+
+    body = job.body(values)
+    if isinstance(body, str):
+        return body
+    try:
+        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, job.gravity_si))
+    except ValueError as exc:
+        return _one_line(f"cannot simulate: {exc}")
+
+
+def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[list[Any]]:
+    """Rows of runs ``start .. stop-1`` (each a list in :attr:`SweepJob.columns` order)."""
+    from rbi.sim.api import sample_times
+    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
+    from rbi.sim.scene import initial_state
+    from rbi.sim.summary import motion_figures
+
+    values = job.plan.values(start, stop)
+    t = sample_times(job.duration, job.samples)
+    rows: list[list[Any]] = [[start + i, *map(float, v)] for i, v in enumerate(values)]
+    scenes, starts, ready = [], [], []
+    for i, v in enumerate(values):
+        scene = _scene(job, tuple(v[2:]))
+        if isinstance(scene, str):
+            rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + [scene]
+            continue
+        q0, omega0 = initial_state(v[1], [0.0, 0.0, v[0]], job.tilt_axis)
+        scenes.append(scene)
+        starts.append(np.concatenate((q0 / np.linalg.norm(q0), omega0)))
+        ready.append(i)
+    if not ready:
+        return rows
+    B = len(ready)
+    out = np.empty((B, t.size, 7))
+    counts = np.zeros((B, 4), dtype=np.int64)
+    status = np.full(B, -1, dtype=np.int64)
+    with np.errstate(all="ignore"):
+        inertia_inv = np.array([s.inertia_inv for s in scenes])
+    integrator().integrate_batch(
+        np.array(starts), t, np.array([s.inertia for s in scenes]), inertia_inv,
+        np.array([s.gravity_moment for s in scenes]), np.array([max(s.natural_rate, 0.0) for s in scenes]),
+        float(job.rtol), int(job.max_steps), out, counts, status, int(threads))
+    for b, i in enumerate(ready):
+        if status[b] == STATUS_DONE:
+            q, omega = out[b, :, :4], out[b, :, 4:]
+            if not np.all(np.isfinite(out[b])):
+                rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + ["failed: the state stopped being finite (overflow)"]
+                continue
+            with np.errstate(all="ignore"):
+                figures = motion_figures(scenes[b], t, q, omega)
+            rows[i] += [figures["max_tilt_deg"], figures["final_tilt_deg"], figures["min_tilt_deg"],
+                        figures["precession_rate_deg_s"], figures["conserved"]["energy"]["drift"],
+                        int(counts[b, 1]), "ok"]
+            continue
+        reason = {STATUS_MORE: f"failed: step budget of {job.max_steps:,} steps reached",
+                  STATUS_STEP_TOO_SMALL: "failed: the step size fell below the time resolution"}.get(
+            int(status[b]), "failed: the state stopped being finite (overflow)")
+        rows[i] += [None] * (len(RESULT_COLUMNS) - 2) + [int(counts[b, 1]), reason]
+    return rows
+
+
+def _one_line(text: str) -> str:
+    return " ".join(text.split())

@@ -1,0 +1,61 @@
+"""Varying spec fields by path: resolution, errors that name the path, and re-derivation
+through the ordinary translation (a varied radius changes a density part's mass)."""
+
+from __future__ import annotations
+
+import math
+
+import pytest
+
+from rbi.spec.errors import InputError
+from rbi.spec.load import read_yaml, spec_from_raw
+from rbi.spec.translate import body_from_spec
+from rbi.spec.variations import current_values, resolve, with_values
+
+SPEC = """
+name: rotor
+pivot: [0, 0, 0]
+parts:
+  - {name: disc, shape: cylinder, density: 7800, radius: 0.1, start: [0, 0, 0], end: [0, 0, 0.02]}
+  - {name: bolt, shape: point, mass: 0.02, position: [0.05, 0, 0.01]}
+  - {shape: sphere, mass: 1, center: [0, 0, 0.3], radius: 0.01}
+"""
+
+
+@pytest.fixture
+def raw(write_spec):
+    return read_yaml(write_spec(SPEC))
+
+
+def test_paths_reach_numbers_by_part_name_index_and_component(raw):
+    assert resolve(raw, "parts.bolt.position[0]").steps == ("parts", 1, "position", 0)
+    assert resolve(raw, "parts.2.mass").steps == ("parts", 2, "mass")
+    assert resolve(raw, "pivot[2]").steps == ("pivot", 2)
+    assert current_values(raw, [resolve(raw, "parts.disc.radius"), resolve(raw, "parts.bolt.mass")]) == [0.1, 0.02]
+
+
+@pytest.mark.parametrize("path, words", [
+    ("parts.nut.mass", ["parts has no entry 'nut'", "disc, bolt"]),
+    ("parts.bolt.masss", ["parts.bolt.masss: no such field", "mass, name, position, shape"]),
+    ("parts.bolt.position[3]", ["parts.bolt.position has no entry 3"]),
+    ("parts.bolt.position", ["must name a number", "list"]),
+    ("parts.bolt.shape", ["must name a number", "'point'"]),
+    ("name", ["must name a number"]),
+    ("parts..mass", ["cannot read"]),
+    ("", ["field path"]),
+])
+def test_bad_paths_name_the_path_and_what_is_there(raw, path, words):
+    with pytest.raises(InputError) as info:
+        resolve(raw, path)
+    assert f"--vary {path}:" in str(info.value)
+    for word in words:
+        assert word in str(info.value), str(info.value)
+
+
+def test_a_varied_radius_changes_the_mass_of_a_density_part_and_the_original_is_untouched(raw):
+    path = resolve(raw, "parts.disc.radius")
+    changed = with_values(raw, [path], [0.2])
+    body = body_from_spec(spec_from_raw("rotor.yaml", changed), "rotor.yaml")
+    disc_mass = 7800 * math.pi * 0.2**2 * 0.02
+    assert body.props.mass == pytest.approx(disc_mass + 0.02 + 1, rel=1e-12)
+    assert raw["parts"][0]["radius"] == 0.1
