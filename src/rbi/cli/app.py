@@ -1,7 +1,9 @@
-"""The typer application: registers each command and turns input errors into exit status 2.
+"""The typer application: a table of commands loaded on demand, and the entry point that turns
+input errors into one line and exit status 2.
 
-Command modules import their heavy dependencies (scipy, numba, matplotlib) inside the
-command functions, so ``rbi inertia`` never pays for the integrator.
+``rbi --help`` and ``rbi --version`` load no command module (and so no numpy); ``rbi inertia``
+loads only its own module. Each command module imports its heavy dependencies (scipy, the
+integrator, matplotlib) inside the command function.
 """
 
 from __future__ import annotations
@@ -10,25 +12,64 @@ import os
 import sys
 
 import typer
+from typer.core import TyperGroup
 
 from rbi import __version__
-from rbi.cli import (
-    bench_command,
-    check_command,
-    dynamics_command,
-    export_command,
-    mass_commands,
-    parts_command,
-    sweep_command,
-    schema_command,
-    simulate_command,
-)
-from rbi.spec.errors import InputError
+
+COMMANDS: dict[str, tuple[str, str, str]] = {
+    # name: (module, function, the one-line summary `rbi --help` shows)
+    "inertia": ("rbi.cli.mass_commands", "inertia", "Mass, centre of mass and inertia matrix about a point, in any frame."),
+    "principal": ("rbi.cli.mass_commands", "principal", "Principal moments (ascending) and right-handed principal axes."),
+    "parts": ("rbi.cli.parts_command", "parts", "Per-part mass, centre of mass, inertia and share of the body's inertia."),
+    "momentum": ("rbi.cli.mass_commands", "momentum", "Angular momentum and kinetic energy for a given spin."),
+    "dynamics": ("rbi.cli.dynamics_command", "dynamics", "Newton-Euler: the force and torque for a motion, or the motion for a load."),
+    "simulate": ("rbi.cli.simulate_command", "simulate", "Motion of a top on its pivot or of a free body, with its accuracy."),
+    "sweep": ("rbi.cli.sweep_command", "sweep", "Many simulations at once: stability maps and tolerance studies."),
+    "animate": ("rbi.cli.animate_command", "animate", "Animation of the motion: a 3D HTML page or a GIF."),
+    "export": ("rbi.cli.export_command", "export", "The <inertial> element for URDF, MJCF or SDF (SI units)."),
+    "check": ("rbi.cli.check_command", "check", "Compare the spec's expect: block with the computed values."),
+    "validate": ("rbi.cli.schema_command", "validate", "Validate many specs at once, one line per problem."),
+    "schema": ("rbi.cli.schema_command", "schema", "JSON Schema of the spec, for editors."),
+    "bench": ("rbi.cli.bench_command", "bench", "Speed against error, throughput and start-up latency."),
+}
+
+
+class _LazyGroup(TyperGroup):
+    """A command group that imports a command's module only when that command runs."""
+
+    def list_commands(self, ctx) -> list[str]:
+        return list(COMMANDS)
+
+    def get_command(self, ctx, cmd_name: str):
+        if cmd_name not in COMMANDS:
+            return None
+        if cmd_name not in self.commands:
+            self.commands[cmd_name] = _build_command(cmd_name)
+        return self.commands[cmd_name]
+
+    def format_commands(self, ctx, formatter) -> None:
+        with formatter.section("Commands"):
+            formatter.write_dl([(name, summary) for name, (_, _, summary) in COMMANDS.items()])
+
+
+def _build_command(name: str):
+    import importlib
+
+    from typer.main import get_command_from_info
+    from typer.models import CommandInfo
+
+    module_name, function_name, summary = COMMANDS[name]
+    callback = getattr(importlib.import_module(module_name), function_name)
+    return get_command_from_info(CommandInfo(name=name, callback=callback, short_help=summary),
+                                 pretty_exceptions_short=True, rich_markup_mode=None)
+
 
 app = typer.Typer(
     name="rbi",
+    cls=_LazyGroup,
     help="Rigid-body calculator: mass properties, principal axes, momentum and motion of a body "
-         "described in a YAML spec. Every command takes --format table|json|csv.",
+         "described in a YAML spec. Every command takes --format table|json|csv and --help. "
+         "Files a spec names are read only from the spec's folder unless --allow-outside-paths is given.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -46,35 +87,40 @@ def _version(value: bool) -> None:
 @app.callback()
 def _root(
     version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Print the version and exit."),
+    allow_outside_paths: bool = typer.Option(
+        False, "--allow-outside-paths",
+        help="Let a spec name files outside its own folder (point clouds, meshes); also accepted after the command."),
 ) -> None:
     """Rigid-body calculator."""
 
 
-app.command("inertia")(mass_commands.inertia)
-app.command("principal")(mass_commands.principal)
-app.command("momentum")(mass_commands.momentum)
-app.command("dynamics")(dynamics_command.dynamics)
-app.command("simulate")(simulate_command.simulate)
-app.command("export")(export_command.export)
-app.command("check")(check_command.check)
-app.command("validate")(schema_command.validate)
-app.command("schema")(schema_command.schema)
-app.command("parts")(parts_command.parts)
-app.command("sweep")(sweep_command.sweep)
-app.command("bench")(bench_command.bench)
+def _take_flag(argv: list[str], flag: str) -> bool:
+    """Remove every ``flag`` before a ``--`` from ``argv``; whether there was one."""
+    end = argv.index("--") if "--" in argv else len(argv)
+    found = flag in argv[:end]
+    if found:
+        argv[:end] = [a for a in argv[:end] if a != flag]
+    return found
 
 
 def main() -> None:
     """Console entry point: exit 2 with one line on bad input, never a traceback."""
     from typer._click import exceptions as click_errors
 
-    import numpy as np
+    from rbi.spec.errors import InputError
+    from rbi.spec.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
 
-    np.seterr(all="ignore")  # non-finite results are refused explicitly (render.emit), not warned about
-    if len(sys.argv) == 1:
-        sys.argv.append("--help")
+    import warnings
+
+    # numpy's floating-point warnings: non-finite results are refused explicitly (render.emit)
+    warnings.simplefilter("ignore", RuntimeWarning)
+    args = sys.argv[1:]
+    allow_outside = _take_flag(args, ALLOW_OUTSIDE_FLAG)
+    if not args:
+        args = ["--help"]
     try:
-        status = app(standalone_mode=False)
+        with outside_paths_allowed(allow_outside):
+            status = app(args=args, prog_name="rbi", standalone_mode=False)
     except click_errors.UsageError as exc:
         command = exc.ctx.command_path if exc.ctx is not None else "rbi"
         print(f"rbi: {exc.format_message()} (see `{command} --help`)", file=sys.stderr)

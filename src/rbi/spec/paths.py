@@ -1,0 +1,60 @@
+"""Files a spec names (``point_cloud.file``, ``mesh.file``): where they are, and whether rbi may
+read them.
+
+A path in a spec is relative to the spec's own folder. One that leaves that folder (an absolute
+path, a ``..`` that climbs out, or a symlink that points out) is refused unless the user asked
+for it with ``--allow-outside-paths``: a spec from somebody else must not make rbi read
+``/etc/shadow`` or ``/proc/self/environ``. Messages name the path as written in the spec, never
+anything read from the file.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import contextvars
+from pathlib import Path
+
+from rbi.spec.errors import InputError
+
+ALLOW_OUTSIDE_FLAG = "--allow-outside-paths"
+
+_outside_allowed: contextvars.ContextVar[bool] = contextvars.ContextVar("rbi_outside_paths_allowed", default=False)
+
+
+@contextlib.contextmanager
+def outside_paths_allowed(allowed: bool = True):
+    """Within this block, spec paths may leave the spec's folder (the CLI's
+    ``--allow-outside-paths``)."""
+    token = _outside_allowed.set(bool(allowed))
+    try:
+        yield
+    finally:
+        _outside_allowed.reset(token)
+
+
+def spec_relative_file(spec_path: str | Path, file: str, label: str) -> Path:
+    """The file named ``file`` in the spec at ``spec_path``, resolved against the spec's folder.
+
+    ``label`` prefixes every message (for instance ``top.yaml: point_cloud: file: c.csv``).
+    Raises :class:`InputError` when the path leaves the spec's folder and that was not allowed,
+    or when nothing (or not a regular file) is there.
+    """
+    folder = Path(spec_path).parent
+    named = Path(file)
+    candidate = named if named.is_absolute() else folder / named
+    if not _outside_allowed.get():
+        try:
+            inside = candidate.resolve().is_relative_to(folder.resolve())
+        except (OSError, RuntimeError):  # a symlink loop, or a path the OS cannot resolve
+            inside = False
+        if named.is_absolute() or not inside:
+            raise InputError(f"{label}: the path leaves the spec's folder (absolute, '..' or a symlink out of it); "
+                             f"rbi reads only files beside the spec unless given {ALLOW_OUTSIDE_FLAG}")
+    try:
+        is_file = candidate.is_file()
+        exists = is_file or candidate.exists()
+    except OSError:
+        is_file = exists = False
+    if not is_file:
+        raise InputError(f"{label}: " + ("not a regular file" if exists else "no such file"))
+    return candidate
