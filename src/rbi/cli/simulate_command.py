@@ -67,31 +67,11 @@ def simulate(
 ) -> None:
     """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body."""
     from rbi.cli.output import check_distinct, output_target
-    from rbi.sim.api import METHODS, RTOL_RANGE, SimulationError
-    from rbi.spec.load import load_body
-    from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
+    from rbi.sim.api import SimulationError
 
-    if method not in METHODS:
-        raise InputError(f"--method: must be one of {', '.join(METHODS)} (got {method!r})")
-    if spin is not None and omega is not None:
-        raise InputError("--spin and --omega: give one or the other, not both")
-    if spin is not None and not np.isfinite(spin):
-        raise InputError(f"--spin: must be a finite number (got {spin!r})")
-    if not np.isfinite(tilt):
-        raise InputError(f"--tilt: must be a finite number (got {tilt!r})")
-    w0 = parse_vector(omega, "--omega") if omega is not None else [0.0, 0.0, 0.0 if spin is None else spin]
-    if not (np.isfinite(duration) and duration >= 0.0):
-        raise InputError(f"--duration: must be a finite number of seconds >= 0 (got {duration!r})")
+    check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol)
     if samples < 1 or samples > MAX_SAMPLES:
         raise InputError(f"--samples: must be between 1 and {MAX_SAMPLES:,} (got {samples!r})")
-    if tilt_axis.lower() not in ("x", "y"):
-        raise InputError(f"--tilt-axis: must be x or y (got {tilt_axis!r})")
-    if gravity is not None and not (np.isfinite(gravity) and gravity >= 0.0):
-        raise InputError(f"--gravity: must be a finite number of m/s² >= 0 (got {gravity!r})")
-    if max_steps is not None and max_steps < 1:
-        raise InputError(f"--max-steps: must be at least 1 (got {max_steps!r})")
-    if rtol is not None and not (np.isfinite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
-        raise InputError(f"--rtol: must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
     out_target = None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
     plot_target = None if plot is None else output_target(plot, "--plot", PLOT_FORMATS, inputs=[file])
     check_distinct([out_target, plot_target])
@@ -102,22 +82,10 @@ def simulate(
 
         require_matplotlib()
 
-    body = load_body(file)
-    g_si = STANDARD_GRAVITY_SI if gravity is None else float(gravity)
-    scene = _scene(body, gravity_in(body.length_unit, g_si))
-    from rbi.sim.budget import estimated_steps
-    from rbi.sim.scene import initial_state
+    body, scene, q0, omega0, budget = prepare_run(file, spin, omega, tilt, tilt_axis, gravity, duration, method,
+                                                  rtol, max_steps, yes)
     from rbi.sim.summary import CSV_COLUMNS, error_estimate as estimate, sample_columns, summarize
 
-    q0, omega0 = initial_state(tilt, w0, tilt_axis.lower())
-    budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)
-    if method != "exact":
-        needed = estimated_steps(scene, omega0, duration, method, rtol)
-        if needed > budget and not yes:
-            raise InputError(
-                f"{file}: this run is estimated to need about {needed:.2g} integration steps, more than the "
-                f"budget of {budget:.2g}: shorten --duration, lower the spin, loosen --rtol, or raise the budget "
-                f"with --max-steps N (or --yes to try anyway)")
     progress = _ProgressBar() if format == OutputFormat.table and sys.stdout.isatty() else None
     try:
         from rbi.sim.api import simulate as run
@@ -175,6 +143,57 @@ def simulate(
         sys.stdout.write(trajectory_csv)
         return
     emit(format.value, result, lambda: _table(body, result))
+
+
+def check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol) -> None:
+    """Refuse, before any work, the run options that `simulate` and `animate` share."""
+    from rbi.sim.api import METHODS, RTOL_RANGE
+
+    if method not in METHODS:
+        raise InputError(f"--method: must be one of {', '.join(METHODS)} (got {method!r})")
+    if spin is not None and omega is not None:
+        raise InputError("--spin and --omega: give one or the other, not both")
+    if spin is not None and not np.isfinite(spin):
+        raise InputError(f"--spin: must be a finite number (got {spin!r})")
+    if not np.isfinite(tilt):
+        raise InputError(f"--tilt: must be a finite number (got {tilt!r})")
+    if not (np.isfinite(duration) and duration >= 0.0):
+        raise InputError(f"--duration: must be a finite number of seconds >= 0 (got {duration!r})")
+    if tilt_axis.lower() not in ("x", "y"):
+        raise InputError(f"--tilt-axis: must be x or y (got {tilt_axis!r})")
+    if gravity is not None and not (np.isfinite(gravity) and gravity >= 0.0):
+        raise InputError(f"--gravity: must be a finite number of m/s² >= 0 (got {gravity!r})")
+    if max_steps is not None and max_steps < 1:
+        raise InputError(f"--max-steps: must be at least 1 (got {max_steps!r})")
+    if rtol is not None and not (np.isfinite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
+        raise InputError(f"--rtol: must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
+    if omega is not None:
+        parse_vector(omega, "--omega")
+
+
+def prepare_run(file, spin, omega, tilt, tilt_axis, gravity, duration, method, rtol, max_steps, yes):
+    """Load the spec and set up the run: ``(body, scene, q0, omega0, step budget)``; the run
+    estimated to exceed the budget is refused unless ``yes``."""
+    from rbi.spec.load import load_body
+    from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
+
+    w0 = parse_vector(omega, "--omega") if omega is not None else [0.0, 0.0, 0.0 if spin is None else spin]
+    body = load_body(file)
+    g_si = STANDARD_GRAVITY_SI if gravity is None else float(gravity)
+    scene = _scene(body, gravity_in(body.length_unit, g_si))
+    from rbi.sim.budget import estimated_steps
+    from rbi.sim.scene import initial_state
+
+    q0, omega0 = initial_state(tilt, w0, tilt_axis.lower())
+    budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)
+    if method != "exact":
+        needed = estimated_steps(scene, omega0, duration, method, rtol)
+        if needed > budget and not yes:
+            raise InputError(
+                f"{file}: this run is estimated to need about {needed:.2g} integration steps, more than the "
+                f"budget of {budget:.2g}: shorten --duration, lower the spin, loosen --rtol, or raise the budget "
+                f"with --max-steps N (or --yes to try anyway)")
+    return body, scene, q0, omega0, budget
 
 
 def _refuse_non_finite(file: str, columns: dict) -> None:

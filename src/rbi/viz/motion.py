@@ -1,0 +1,95 @@
+"""The data an animation plays: the parts placed about the point the body turns about, the
+orientation keyframes, and the path of the tip of the body's marked axis.
+
+World axes: z up (gravity along −z); the pivot of a top (or the centre of mass of a free body)
+at the origin. Quaternions are given in three.js order ``[x, y, z, w]``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+MAX_TURN_PER_KEYFRAME = 0.5
+"""Largest turn (rad) between two keyframes, so that slerp between them follows the motion."""
+
+MIN_KEYFRAMES = 481
+MAX_KEYFRAMES = 40_000
+
+
+def keyframe_count(duration: float, fastest_rate: float) -> int:
+    """Samples needed so no keyframe interval turns the body more than
+    :data:`MAX_TURN_PER_KEYFRAME` (bounded to keep the page small)."""
+    if duration <= 0:
+        return 1
+    needed = math.ceil(duration * max(fastest_rate, 0.0) / MAX_TURN_PER_KEYFRAME) + 1
+    return int(min(MAX_KEYFRAMES, max(MIN_KEYFRAMES, needed)))
+
+
+def marked_axis(scene) -> np.ndarray:
+    """The body axis whose tip the animation traces: the symmetry axis when there is one,
+    otherwise the axis of the largest principal moment (body frame, unit; pointing up at t = 0
+    for a top)."""
+    from rbi.sim.diagnostics import symmetry_axis
+
+    axis = symmetry_axis(scene)
+    if axis is None:
+        axis = scene.principal_axes[-1]
+        if scene.pivoted and np.dot(axis, scene.com_from_pivot) < 0:
+            axis = -axis
+    return np.asarray(axis, dtype=float)
+
+
+def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndarray, q: np.ndarray,
+                   omega: np.ndarray, tilt_deg: np.ndarray, length_unit: str) -> dict[str, Any]:
+    """Everything the page needs, as JSON-ready lists. ``geometry``: from
+    :func:`rbi.spec.geometry.part_geometry` (body frame); ``q`` (N, 4) [w, x, y, z] body → world;
+    ``omega`` (N, 3) body frame, rad/s."""
+    from rbi.core.rotation import quaternion_to_matrix
+
+    origin = np.asarray(scene.pivot if scene.pivoted else scene.com, dtype=float)
+    parts = [_shifted(item, origin) for item in geometry]
+    size = _body_size(parts)
+    axis = marked_axis(scene)
+    tip = axis * size
+    trace = np.array([quaternion_to_matrix(qi) @ tip for qi in q])
+    return {
+        "title": title,
+        "length_unit": length_unit,
+        "pivoted": bool(scene.pivoted),
+        "size": size,
+        "parts": parts,
+        "com": (np.asarray(scene.com, dtype=float) - origin).tolist(),
+        "axis_tip": tip.tolist(),
+        "times": np.asarray(t, dtype=float).tolist(),
+        "quaternions": np.column_stack((q[:, 1], q[:, 2], q[:, 3], q[:, 0])).tolist(),
+        "tilt_deg": np.asarray(tilt_deg, dtype=float).tolist(),
+        "omega": np.linalg.norm(omega, axis=1).tolist(),
+        "trace": trace.tolist(),
+    }
+
+
+def _shifted(item: dict[str, Any], origin: np.ndarray) -> dict[str, Any]:
+    out = dict(item)
+    for key in ("start", "end", "center", "position"):
+        if key in out:
+            out[key] = (np.asarray(out[key], dtype=float) - origin).tolist()
+    return out
+
+
+def _body_size(parts: list[dict[str, Any]]) -> float:
+    """A length the scene is drawn at: the farthest reach of any part from the origin."""
+    reach = 0.0
+    for item in parts:
+        if item["kind"] == "frustum":
+            extra = max(item["start_radius"], item["end_radius"])
+            reach = max(reach, np.linalg.norm(item["start"]) + extra, np.linalg.norm(item["end"]) + extra)
+        elif item["kind"] == "ellipsoid":
+            reach = max(reach, np.linalg.norm(item["center"]) + max(item["semi_axes"]))
+        elif item["kind"] == "box":
+            reach = max(reach, np.linalg.norm(item["center"]) + 0.5 * np.linalg.norm(item["size"]))
+        else:
+            reach = max(reach, float(np.linalg.norm(item["position"])))
+    return float(reach) if reach > 0 else 1.0
