@@ -241,3 +241,80 @@ def rod(mass: float, start: np.ndarray, end: np.ndarray) -> MassElement:
     end = np.asarray(end, dtype=float)
     u, length = axis_between(start, end)
     return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(0.0, mass * length * length / 12.0, u))
+
+
+# --- torus -----------------------------------------------------------------------------------
+
+def torus_volume(major_radius: float, minor_radius: float) -> float:
+    """Volume 2 π² R a² of a solid torus (ring radius R, tube radius a) (L³)."""
+    return 2.0 * math.pi * math.pi * major_radius * minor_radius * minor_radius
+
+
+def torus(mass: float, major_radius: float, minor_radius: float, center: np.ndarray, axis: np.ndarray) -> MassElement:
+    """Solid torus: a disc of radius a (``minor_radius``) swept around ``axis`` at distance R
+    (``major_radius``) from ``center``. Needs a ≤ R.
+
+    About its centre: axial moment m (R² + 3/4 a²), transverse (about a diameter)
+    m (R²/2 + 5/8 a²) (Pappus: each ring of the tube's cross-section adds its own ring
+    moment).
+    """
+    u = np.asarray(axis, dtype=float)
+    u = u / np.linalg.norm(u)
+    R2, a2 = major_radius * major_radius, minor_radius * minor_radius
+    axial = mass * (R2 + 0.75 * a2)
+    transverse = mass * (0.5 * R2 + 0.625 * a2)
+    return MassElement(mass, np.asarray(center, dtype=float), axisymmetric_inertia(axial, transverse, u))
+
+
+# --- hemisphere ------------------------------------------------------------------------------
+
+def hemisphere_volume(radius: float) -> float:
+    """Volume 2/3 π r³ of a solid hemisphere (L³)."""
+    return 2.0 / 3.0 * math.pi * radius ** 3
+
+
+HEMISPHERE_COM_FRACTION = 3.0 / 8.0
+"""Distance of a solid hemisphere's centre of mass from its flat face, as a fraction of r."""
+
+
+def hemisphere(mass: float, radius: float, center: np.ndarray, axis: np.ndarray) -> MassElement:
+    """Solid hemisphere: flat face centred on ``center``, dome towards ``axis``.
+
+    The centre of mass lies 3/8 r along the axis. About the flat face's centre every moment is
+    2/5 m r² (half a sphere); moved to the centre of mass, the axial moment stays 2/5 m r² and
+    the transverse one becomes (2/5 − 9/64) m r² = 83/320 m r².
+    """
+    u = np.asarray(axis, dtype=float)
+    u = u / np.linalg.norm(u)
+    r2 = radius * radius
+    com = np.asarray(center, dtype=float) + HEMISPHERE_COM_FRACTION * radius * u
+    return MassElement(mass, com, axisymmetric_inertia(0.4 * mass * r2, 83.0 / 320.0 * mass * r2, u))
+
+
+# --- capsule ---------------------------------------------------------------------------------
+
+def capsule_volume(radius: float, length: float) -> float:
+    """Volume π r² (L + 4/3 r) of a capsule: a cylinder of length L and two hemispherical caps
+    (L³)."""
+    return math.pi * radius * radius * (length + 4.0 / 3.0 * radius)
+
+
+def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+    """Capsule: a solid cylinder from ``start`` to ``end`` (length L) with a hemisphere of the
+    same radius r on each end face, uniform density.
+
+    The cylinder holds m_c = m L / (L + 4/3 r) and the caps m_s = m − m_c. About the centre:
+    axial m_c r²/2 + 2/5 m_s r²; transverse m_c (3 r² + L²)/12 + m_s (2/5 r² + L²/4 + 3/8 L r)
+    — the caps' 83/320 m r² about their own centres of mass plus the parallel-axis term for
+    their distance L/2 + 3/8 r, gathered so that every term is positive.
+    """
+    start = np.asarray(start, dtype=float)
+    end = np.asarray(end, dtype=float)
+    u, length = axis_between(start, end)
+    r = float(radius)
+    cylinder_mass = mass * length / (length + 4.0 / 3.0 * r)
+    caps_mass = mass * (4.0 / 3.0 * r) / (length + 4.0 / 3.0 * r)
+    axial = 0.5 * cylinder_mass * r * r + 0.4 * caps_mass * r * r
+    transverse = (cylinder_mass * (3.0 * r * r + length * length) / 12.0
+                  + caps_mass * (0.4 * r * r + 0.25 * length * length + 0.375 * length * r))
+    return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))
