@@ -63,15 +63,14 @@ def animate(
     from rbi.sim.api import SimulationError, simulate
     from rbi.sim.diagnostics import tilt_deg
     from rbi.spec.geometry import part_geometry
-    from rbi.viz.motion import animation_data, keyframe_count
-
     from rbi.sim.summary import sample_columns
+    from rbi.viz.motion import MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframe_count
 
     try:
-        probe = simulate(scene, q0, omega0, duration, 481, rtol=rtol, max_steps=budget)
+        probe = simulate(scene, q0, omega0, duration, MIN_KEYFRAMES, rtol=rtol, max_steps=budget)
         fastest = float(np.max(np.linalg.norm(probe.omega, axis=1)))
-        count = keyframe_count(duration, fastest) if target.format == "html" else max(2, int(duration * fps) + 1)
-        run = probe if count == 481 else simulate(scene, q0, omega0, duration, count, rtol=rtol, max_steps=budget)
+        count = keyframe_count(duration, fastest)
+        run = probe if count == MIN_KEYFRAMES else simulate(scene, q0, omega0, duration, count, rtol=rtol, max_steps=budget)
     except SimulationError as exc:
         raise InputError(f"{file}: {exc}") from None
     if not (np.all(np.isfinite(run.q)) and np.all(np.isfinite(run.omega))):
@@ -79,15 +78,17 @@ def animate(
     title = f"{body.name or file}: spin {float(np.linalg.norm(omega0)):g} rad/s, tilt {tilt:g}°"
     data = animation_data(title, part_geometry(body), scene, run.t, run.q, run.omega, tilt_deg(run.q),
                           body.length_unit)
-    data["legend"] = (f"{len(data['parts'])} parts · red line: path of the axis tip · lengths in {body.length_unit}"
+    data["legend"] = (f"{len(data['parts'])} parts · red line: path of the axis tip over the last {TRAIL_SECONDS:g} s · lengths in {body.length_unit}"
                       + (" · on a pivot" if scene.pivoted else " · free body, about its centre of mass"))
     if target.format == "html":
         from rbi.viz.page import html_page
 
         write_output(target, html_page(data, speed=speed))
+        shown = f"{run.t.size} keyframes"
     else:
-        from rbi.viz.frames import write_gif
+        from rbi.viz.frames import frame_indices, write_gif
 
         write_output(target, writer=lambda path: write_gif(data, path, fps=fps))
+        shown = f"{frame_indices(run.t, fps).size} frames"
     columns = sample_columns(scene, run)
-    print(f"{out}: {run.t.size} frames over {duration:g} s, largest tilt {float(np.max(columns['tilt_deg'])):.3g}°")
+    print(f"{out}: {shown} over {duration:g} s, largest tilt {float(np.max(columns['tilt_deg'])):.3g}°")

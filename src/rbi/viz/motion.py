@@ -15,6 +15,9 @@ import numpy as np
 MAX_TURN_PER_KEYFRAME = 0.5
 """Largest turn (rad) between two keyframes, so that slerp between them follows the motion."""
 
+TRAIL_SECONDS = 0.5
+"""How far back the drawn path of the axis tip reaches (the whole path would hide the body)."""
+
 MIN_KEYFRAMES = 481
 MAX_KEYFRAMES = 40_000
 
@@ -29,17 +32,21 @@ def keyframe_count(duration: float, fastest_rate: float) -> int:
 
 
 def marked_axis(scene) -> np.ndarray:
-    """The body axis whose tip the animation traces: the symmetry axis when there is one,
-    otherwise the axis of the largest principal moment (body frame, unit; pointing up at t = 0
-    for a top)."""
+    """The body axis whose tip the animation traces (body frame, unit): the symmetry axis when
+    there is one; for a top without one, the principal axis about the pivot nearest to the line
+    from the pivot to the centre of mass (its figure axis, pointing at the centre of mass);
+    otherwise the axis of the largest principal moment."""
     from rbi.sim.diagnostics import symmetry_axis
 
     axis = symmetry_axis(scene)
-    if axis is None:
-        axis = scene.principal_axes[-1]
-        if scene.pivoted and np.dot(axis, scene.com_from_pivot) < 0:
-            axis = -axis
-    return np.asarray(axis, dtype=float)
+    if axis is not None:
+        return np.asarray(axis, dtype=float)
+    axes = np.asarray(scene.principal_axes, dtype=float)
+    offset = np.asarray(scene.com_from_pivot, dtype=float) if scene.pivoted else np.zeros(3)
+    if np.linalg.norm(offset) == 0.0:
+        return axes[-1]
+    axis = axes[int(np.argmax(np.abs(axes @ offset)))]
+    return axis if axis @ offset > 0 else -axis
 
 
 def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndarray, q: np.ndarray,
@@ -68,6 +75,7 @@ def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndar
         "tilt_deg": np.asarray(tilt_deg, dtype=float).tolist(),
         "omega": np.linalg.norm(omega, axis=1).tolist(),
         "trace": trace.tolist(),
+        "trail_seconds": TRAIL_SECONDS,
     }
 
 

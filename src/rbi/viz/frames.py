@@ -1,0 +1,139 @@
+"""The animation page's view drawn with matplotlib, frame by frame, and written as a GIF (pillow).
+
+Same world as :mod:`rbi.viz.motion`: z up, the pivot (or a free body's centre of mass) at the
+origin; the camera looks from the same direction as the page's. matplotlib and pillow are
+imported inside the functions (the ``plot`` extra).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from rbi.viz.solids import part_quads, shade
+
+PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#c0504d", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
+HOLE_RGBA = (0.88, 0.19, 0.19, 0.35)
+POINT_RGBA = (0.2, 0.2, 0.2, 1.0)
+VIEW_ELEVATION_DEG = 24.0
+VIEW_AZIMUTH_DEG = -48.0
+GIF_PIXELS = 400
+GIF_COLOURS = 64
+
+
+def body_mesh(parts: list[dict[str, Any]], size: float) -> tuple[np.ndarray, np.ndarray]:
+    """All parts as quads ``(n, 4, 3)`` with an RGBA colour each (stripes darker; holes red and
+    translucent; point masses dark grey)."""
+    from matplotlib.colors import to_rgba
+
+    all_quads, all_colours = [], []
+    for index, item in enumerate(parts):
+        quads, stripes = part_quads(item, size)
+        if item.get("hole"):
+            colours = np.tile(HOLE_RGBA, (len(quads), 1))
+        elif item["kind"] == "point":
+            colours = np.tile(POINT_RGBA, (len(quads), 1))
+        else:
+            base = np.array(to_rgba(PALETTE[index % len(PALETTE)], 0.55 if item.get("stand_in") else 1.0))
+            colours = np.tile(base, (len(quads), 1))
+            colours[stripes, :3] *= 0.62
+        all_quads.append(quads)
+        all_colours.append(colours)
+    if not all_quads:
+        return np.zeros((0, 4, 3)), np.zeros((0, 4))
+    return np.concatenate(all_quads), np.concatenate(all_colours)
+
+
+def quaternion_matrix_xyzw(q) -> np.ndarray:
+    """Rotation matrix of a unit quaternion given as [x, y, z, w] (the page's order)."""
+    from rbi.core.rotation import quaternion_to_matrix
+
+    x, y, z, w = (float(c) for c in q)
+    return quaternion_to_matrix(np.array([w, x, y, z]))
+
+
+def _scene_axes(fig, data: dict[str, Any]):
+    """3D axes framed on the body's reach, ground disc and pivot drawn (a top), axes hidden."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    size = float(data["size"])
+    ax = fig.add_axes((0.0, 0.0, 1.0, 0.9), projection="3d")
+    ax.computed_zorder = False
+    ax.view_init(elev=VIEW_ELEVATION_DEG, azim=VIEW_AZIMUTH_DEG)
+    reach = 1.05 * size
+    if data["pivoted"]:
+        z_low, z_high = -0.05 * size, 1.1 * size
+        angles = np.linspace(0, 2 * np.pi, 97)
+        disc = np.column_stack((1.2 * size * np.cos(angles), 1.2 * size * np.sin(angles), np.zeros_like(angles)))
+        ax.add_collection3d(Poly3DCollection([disc], facecolors=(0.85, 0.86, 0.89, 1.0), edgecolors="none",
+                                             zorder=0))
+        ax.scatter([0], [0], [0], color="black", s=14, zorder=3)
+    else:
+        z_low, z_high = -reach, reach
+    ax.set_xlim(-reach, reach)
+    ax.set_ylim(-reach, reach)
+    ax.set_zlim(z_low, z_high)
+    ax.set_box_aspect((2 * reach, 2 * reach, z_high - z_low))
+    ax.set_axis_off()
+    return ax
+
+
+def _draw_body(ax, quads: np.ndarray, colours: np.ndarray, rotation: np.ndarray, zorder: int = 2):
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    turned = quads @ rotation.T
+    collection = Poly3DCollection(turned, facecolors=shade(turned, colours), edgecolors="none", zorder=zorder)
+    ax.add_collection3d(collection)
+    return collection
+
+
+def frame_indices(times, fps: float) -> np.ndarray:
+    """Indices of the samples nearest to the frame times 0, 1/fps, 2/fps, … (real time)."""
+    times = np.asarray(times, dtype=float)
+    wanted = np.arange(0.0, times[-1] + 0.5 / fps, 1.0 / fps)
+    return np.unique(np.clip(np.searchsorted(times, wanted - 1e-12), 0, times.size - 1))
+
+
+def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
+    """Yield one RGB image (``(pixels, pixels, 3)`` uint8 array) per sample index in ``indices``;
+    the trace of the axis tip is drawn through every sample of the last ``data['trail_seconds']``."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    size = float(data["size"])
+    quads, colours = body_mesh(data["parts"], size)
+    trace = np.asarray(data["trace"], dtype=float)
+    dpi = 100
+    fig = plt.figure(figsize=(pixels / dpi, pixels / dpi), dpi=dpi)
+    try:
+        ax = _scene_axes(fig, data)
+        fig.text(0.02, 0.965, data.get("title", ""), fontsize=8.5, weight="bold", va="top")
+        readout = fig.text(0.02, 0.915, "", fontsize=8, va="top", family="monospace")
+        for index in indices:
+            t = data["times"][index]
+            rotation = quaternion_matrix_xyzw(data["quaternions"][index])
+            body = _draw_body(ax, quads, colours, rotation)
+            first = int(np.searchsorted(data["times"], t - data["trail_seconds"]))
+            recent = trace[first: index + 1]
+            (path,) = ax.plot(recent[:, 0], recent[:, 1], recent[:, 2], color="#c03030", lw=0.9, zorder=1)
+            readout.set_text(f"t = {t:6.3f} s   tilt = {data['tilt_deg'][index]:6.2f}°   "
+                             f"|ω| = {data['omega'][index]:.2f} rad/s")
+            fig.canvas.draw()
+            yield np.asarray(fig.canvas.buffer_rgba())[..., :3].copy()
+            body.remove()
+            path.remove()
+    finally:
+        plt.close(fig)
+
+
+def write_gif(data: dict[str, Any], path: str, fps: int = 25) -> None:
+    """A looping GIF that plays ``data`` in real time at ``fps`` frames per second."""
+    from PIL import Image
+
+    images = [Image.fromarray(frame).quantize(colors=GIF_COLOURS, method=Image.Quantize.MEDIANCUT)
+              for frame in render_frames(data, frame_indices(data["times"], fps))]
+    images[0].save(path, format="GIF", save_all=True, append_images=images[1:], duration=round(1000 / fps),
+                   loop=0, optimize=True, disposal=1)

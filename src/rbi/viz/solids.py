@@ -1,0 +1,109 @@
+"""The drawable primitives of :mod:`rbi.spec.geometry` as flat quadrilaterals, for the matplotlib
+pictures (``rbi animate --out F.gif``, ``rbi show --out F.png``).
+
+Every solid becomes an array of quads ``(n, 4, 3)`` in the coordinates of its primitive (body
+frame, file length unit) and, for each quad, a stripe flag (alternate bands around the part's
+axis, so a turn about that axis can be seen). Nothing here draws; numpy only.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+SEGMENTS = 32
+"""Facets around a round solid (even, so stripes alternate all the way round)."""
+STRIPES = 8
+POINT_RADIUS_FRACTION = 0.035
+"""Radius of the small sphere drawn for a point mass, as a fraction of the body's size."""
+
+
+def _perpendiculars(axis: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
+    u = np.cross(axis, helper)
+    u /= np.linalg.norm(u)
+    return u, np.cross(axis, u)
+
+
+def _grid_quads(points: np.ndarray) -> np.ndarray:
+    """Quads of a grid of points ``(rows, columns, 3)``."""
+    return np.stack((points[:-1, :-1], points[:-1, 1:], points[1:, 1:], points[1:, :-1]), axis=2) \
+        .reshape(-1, 4, 3)
+
+
+def _stripe_flags(rows: int, columns: int) -> np.ndarray:
+    band = (np.arange(columns) * STRIPES // columns) % 2 == 1
+    return np.tile(band, rows)
+
+
+def frustum_quads(start, end, start_radius: float, end_radius: float, inner_radius: float = 0.0):
+    """Side, end caps (annuli when ``inner_radius`` > 0) and inner wall of a frustum."""
+    a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    length = float(np.linalg.norm(b - a))
+    axis = (b - a) / length if length > 0 else np.array([0.0, 0.0, 1.0])
+    u, v = _perpendiculars(axis)
+    angles = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)
+    ring = np.cos(angles)[:, None] * u + np.sin(angles)[:, None] * v  # (S+1, 3)
+
+    def surface(r0, p0, r1, p1):
+        points = np.stack((p0 + r0 * ring, p1 + r1 * ring))
+        return _grid_quads(points), _stripe_flags(1, SEGMENTS)
+
+    pieces = [surface(start_radius, a, end_radius, b),
+              surface(inner_radius, a, start_radius, a),
+              surface(end_radius, b, inner_radius, b)]
+    if inner_radius > 0:
+        pieces.append(surface(inner_radius, b, inner_radius, a))
+    return _join(pieces)
+
+
+def ellipsoid_quads(center, semi_axes, rotation):
+    """A latitude-longitude mesh of the ellipsoid (stripes around the part's z axis)."""
+    rows = SEGMENTS // 2
+    polar = np.linspace(0.0, np.pi, rows + 1)[:, None]
+    azimuth = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
+    local = np.stack((np.sin(polar) * np.cos(azimuth), np.sin(polar) * np.sin(azimuth),
+                      np.cos(polar) * np.ones_like(azimuth)), axis=-1) * np.asarray(semi_axes, dtype=float)
+    points = local @ np.asarray(rotation, dtype=float).T + np.asarray(center, dtype=float)
+    return _grid_quads(points), _stripe_flags(rows, SEGMENTS)
+
+
+def box_quads(center, size, rotation):
+    """The six faces of a box (no stripes)."""
+    half = 0.5 * np.asarray(size, dtype=float)
+    corners = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float) * half
+    faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
+    quads = corners[np.array(faces)] @ np.asarray(rotation, dtype=float).T + np.asarray(center, dtype=float)
+    return quads, np.zeros(6, dtype=bool)
+
+
+def _join(pieces):
+    return np.concatenate([p[0] for p in pieces]), np.concatenate([p[1] for p in pieces])
+
+
+def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarray]:
+    """Quads and stripe flags of one primitive; ``size``: the body's size (for point masses)."""
+    kind = item["kind"]
+    if kind == "frustum":
+        return frustum_quads(item["start"], item["end"], item["start_radius"], item["end_radius"],
+                             item.get("inner_radius", 0.0))
+    if kind == "ellipsoid":
+        return ellipsoid_quads(item["center"], item["semi_axes"], item["rotation"])
+    if kind == "box":
+        floor = 1e-3 * size
+        return box_quads(item["center"], np.maximum(np.asarray(item["size"], dtype=float), floor), item["rotation"])
+    radius = POINT_RADIUS_FRACTION * size
+    return ellipsoid_quads(item["position"], [radius] * 3, np.eye(3))
+
+
+def shade(quads: np.ndarray, colors: np.ndarray, light=(0.35, -0.45, 0.82)) -> np.ndarray:
+    """RGBA colours lit by a distant light (Lambert, two-sided, with an ambient floor)."""
+    normals = np.cross(quads[:, 2] - quads[:, 0], quads[:, 3] - quads[:, 1])
+    lengths = np.linalg.norm(normals, axis=1, keepdims=True)
+    normals = np.divide(normals, lengths, out=np.zeros_like(normals), where=lengths > 0)
+    direction = np.asarray(light, dtype=float) / np.linalg.norm(light)
+    intensity = 0.55 + 0.45 * np.abs(normals @ direction)
+    out = np.array(colors, dtype=float, copy=True)
+    out[:, :3] *= intensity[:, None]
+    return out
