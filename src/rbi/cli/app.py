@@ -40,11 +40,20 @@ class _LazyGroup(TyperGroup):
     def list_commands(self, ctx) -> list[str]:
         return list(COMMANDS)
 
+    def parse_args(self, ctx, args):
+        from rbi.cli import fast_params
+
+        fast_params.install(self, ctx)
+        return super().parse_args(ctx, args)
+
     def get_command(self, ctx, cmd_name: str):
         if cmd_name not in COMMANDS:
             return None
         if cmd_name not in self.commands:
+            from rbi.cli import fast_params
+
             self.commands[cmd_name] = _build_command(cmd_name)
+            fast_params.install(self.commands[cmd_name], ctx)
         return self.commands[cmd_name]
 
     def format_commands(self, ctx, formatter) -> None:
@@ -58,6 +67,9 @@ def _build_command(name: str):
     from typer.main import get_command_from_info
     from typer.models import CommandInfo
 
+    from rbi.cli import fast_params
+
+    fast_params.quiet_pydantic_plugins()
     module_name, function_name, summary = COMMANDS[name]
     callback = getattr(importlib.import_module(module_name), function_name)
     return get_command_from_info(CommandInfo(name=name, callback=callback, short_help=summary),
