@@ -46,17 +46,29 @@ class MeshVolumeProperties(NamedTuple):
     inertia_per_density: np.ndarray
 
 
-def merge_equal_vertices(vertices: np.ndarray, faces: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """One vertex per distinct position: faces re-indexed onto bit-identical coordinates.
+WELD_RTOL = 1e-9
+"""Vertices closer than about this fraction of the bounding box's diagonal are one vertex."""
+
+
+def weld_vertices(vertices: np.ndarray, faces: np.ndarray, rtol: float = WELD_RTOL) -> tuple[np.ndarray, np.ndarray]:
+    """One vertex per position: faces re-indexed onto vertices that coincide.
 
     STL files store every triangle with its own three corners, so a mesh read from one shares
-    no vertex indices until equal positions are merged; only exactly equal coordinates merge
-    (no tolerance), so distinct vertices are never joined by accident.
+    no vertex indices until equal positions are joined. CAD exporters write the same corner
+    with rounding noise (``-1.7e-17`` for ``0``), so positions are compared on a grid of
+    ``rtol`` times the bounding box's diagonal, far below the spacing of single-precision
+    coordinates; each welded vertex keeps the coordinates of its first occurrence.
     """
     vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
     faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
-    unique, inverse = np.unique(vertices + 0.0, axis=0, return_inverse=True)  # + 0.0: -0.0 equals 0.0
-    return unique, inverse.reshape(-1)[faces]
+    low = vertices.min(axis=0)
+    diagonal = float(np.linalg.norm(vertices.max(axis=0) - low))
+    if diagonal == 0.0:
+        keys = np.zeros((vertices.shape[0], 3), dtype=np.int64)
+    else:
+        keys = np.round((vertices - low) / (rtol * diagonal)).astype(np.int64)
+    _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
+    return vertices[first], inverse.reshape(-1)[faces]
 
 
 def mesh_defects(faces: np.ndarray) -> MeshDefects:

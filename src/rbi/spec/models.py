@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Annotated, Any, Literal, Union
 
 import numpy as np
-from pydantic import Field, model_validator
+from pydantic import Field, PrivateAttr, model_validator
 
 from rbi.spec.expect import Expect
 from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
@@ -31,8 +31,33 @@ class Units(_Strict):
     mass: MassUnit = "kg"
 
 
+class Pattern(_Strict):
+    """Copies of a part: ``count`` equal copies turned evenly about the line along ``axis``
+    through ``through`` (the part as written is the first), or ``count`` copies in a row,
+    each ``step`` further on. ``mass`` and ``density`` are per copy."""
+
+    count: Annotated[int, Field(strict=True, ge=1, le=100_000,
+                                description="Number of copies, the part as written included (1 to 100000).")]
+    axis: Vector3 | None = Field(None, description="Direction of the line the copies turn about (need not be unit length).")
+    through: Vector3 | None = Field(None, description="A point on that line (default [0, 0, 0]).")
+    step: Vector3 | None = Field(None, description="Offset from one copy to the next, for a row of copies.")
+
+    @model_validator(mode="after")
+    def _one_form(self):
+        circular = self.axis is not None or self.through is not None
+        if circular == (self.step is not None):
+            raise ValueError("give either {count, axis, through} (copies turned about a line) or {count, step} "
+                             "(copies in a row)" + (" (got both)" if circular else " (got neither axis nor step)"))
+        if circular and self.axis is None:
+            raise ValueError("axis: missing required field (the direction of the line the copies turn about)")
+        if self.axis is not None and not any(self.axis):
+            raise ValueError("axis: must not be the zero vector [0, 0, 0]")
+        return self
+
+
 class _Part(_Strict):
     name: str | None = None
+    pattern: Pattern | None = Field(None, description="Repeat this part: copies about an axis line or in a row.")
 
 
 class _Solid(_Part):
@@ -264,6 +289,74 @@ class CustomPart(_Part):
         return _mass_only(data, "a custom part")
 
 
+def _nonzero(vector: list[float], name: str) -> None:
+    if not any(vector):
+        raise ValueError(f"{name}: must not be the zero vector [0, 0, 0]")
+
+
+class TorusPart(_Solid):
+    """Solid torus (a ring): a disc of ``minor_radius`` swept around ``axis`` at
+    ``major_radius`` from ``center``."""
+
+    shape: Literal["torus"]
+    center: Vector3 = Field(description="Centre of the ring (on its axis).")
+    axis: Vector3 = Field(description="Direction of the ring's axis of symmetry (need not be unit length).")
+    major_radius: Positive = Field(description="Distance from the centre to the middle of the tube.")
+    minor_radius: Positive = Field(description="Radius of the tube; at most major_radius.")
+
+    @model_validator(mode="after")
+    def _checks(self):
+        _nonzero(self.axis, "axis")
+        if self.minor_radius > self.major_radius:
+            raise ValueError(f"minor_radius: must not exceed major_radius ({self.minor_radius!r} > "
+                             f"{self.major_radius!r}; the tube would pass through the axis)")
+        return self
+
+
+class HemispherePart(_Solid):
+    """Solid hemisphere: flat face centred on ``center``, dome towards ``axis``."""
+
+    shape: Literal["hemisphere"]
+    center: Vector3 = Field(description="Centre of the flat face.")
+    axis: Vector3 = Field(description="Direction from the flat face into the dome (need not be unit length).")
+    radius: Positive = Field(description="Radius of the sphere it is half of.")
+
+    @model_validator(mode="after")
+    def _checks(self):
+        _nonzero(self.axis, "axis")
+        return self
+
+
+class CapsulePart(_Solid):
+    """Capsule: a solid cylinder from ``start`` to ``end`` with a hemispherical cap of the
+    same ``radius`` on each end."""
+
+    shape: Literal["capsule"]
+    start: Vector3 = Field(description="Centre of one end face of the cylinder (where a cap's flat face sits).")
+    end: Vector3 = Field(description="Centre of the other end face; |end - start| is the cylinder's length.")
+    radius: Positive = Field(description="Radius of the cylinder and of both caps.")
+
+    @model_validator(mode="after")
+    def _has_length(self):
+        _distinct(self.start, self.end, "start, end")
+        return self
+
+
+class MeshPart(_Solid):
+    """A closed triangle mesh read from ``file`` (STL binary or ASCII, OBJ, PLY): the solid it
+    encloses. Mesh coordinates are multiplied by ``scale``, turned by ``rotation`` about the
+    mesh's own origin, then that origin is put at ``position``."""
+
+    shape: Literal["mesh"]
+    file: Annotated[str, Field(min_length=1, description=(
+        "Mesh file (.stl, .obj, .ply), relative to the spec's folder."))]
+    scale: Positive = Field(1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m).")
+    position: Vector3 = Field([0.0, 0.0, 0.0], description="Where the mesh's own origin goes, body frame.")
+    rotation: Rotation | None = Field(None, description="How the mesh's axes are turned into body axes (about its origin).")
+
+    _enclosed_volume: float | None = PrivateAttr(None)  # L³ in the spec's units, set when the file is read
+
+
 SHAPE_MODELS: dict[str, type[_Part]] = {
     "cone": ConePart,
     "cylinder": CylinderPart,
@@ -276,6 +369,10 @@ SHAPE_MODELS: dict[str, type[_Part]] = {
     "ellipsoid": EllipsoidPart,
     "rod": RodPart,
     "custom": CustomPart,
+    "torus": TorusPart,
+    "hemisphere": HemispherePart,
+    "capsule": CapsulePart,
+    "mesh": MeshPart,
 }
 """Every part model by its ``shape`` tag; new shapes are added here."""
 

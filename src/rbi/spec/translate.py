@@ -117,6 +117,65 @@ def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassE
     return shapes.MassElement(part.mass, com, 0.5 * (inertia + inertia.T))
 
 
+def torus_element(part: models.TorusPart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.torus_volume(part.major_radius, part.minor_radius), units)
+    return shapes.torus(mass, part.major_radius, part.minor_radius, part.center, part.axis)
+
+
+def hemisphere_element(part: models.HemispherePart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.hemisphere_volume(part.radius), units)
+    return shapes.hemisphere(mass, part.radius, part.center, part.axis)
+
+
+def capsule_element(part: models.CapsulePart, units: models.Units) -> shapes.MassElement:
+    mass = _solid_mass(part, shapes.capsule_volume(part.radius, _length(part.start, part.end)), units)
+    return shapes.capsule(mass, part.radius, part.start, part.end)
+
+
+def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> shapes.MassElement:
+    """The solid a mesh file encloses, placed in the body: ``scale``, then ``rotation`` about
+    the mesh origin, then the origin moved to ``position``. Raises ValueError naming the file
+    (as written in the spec) and what is wrong with it."""
+    from rbi.spec.mesh_file import read_mesh_solid
+    from rbi.spec.paths import spec_relative_file
+
+    try:
+        file = spec_relative_file(spec_path, part.file, f"file: {part.file}")
+    except InputError as exc:
+        raise ValueError(str(exc)) from None
+    try:
+        solid = read_mesh_solid(file)
+    except ValueError as exc:
+        raise ValueError(f"file: {part.file}: {exc}") from None
+    properties = solid.properties
+    scale = float(part.scale)
+    volume = properties.volume * scale ** 3
+    part._enclosed_volume = volume
+    mass = _solid_mass(part, volume, units)
+    # inertia per density scales as scale⁵, the density as mass / (volume·scale³)
+    inertia = properties.inertia_per_density * (mass / properties.volume * scale * scale)
+    com = properties.centroid * scale
+    R = rotation_matrix(part.rotation)
+    if R is not None:
+        com = R @ com
+        inertia = re_express(inertia, R)
+    return shapes.MassElement(mass, np.asarray(part.position, dtype=float) + com, 0.5 * (inertia + inertia.T))
+
+
+def part_element(part, units: models.Units, spec_path: str) -> shapes.MassElement:
+    """One written part's mass element in file units: built from its fields (a mesh read from
+    its file beside the spec), then, with a ``pattern``, every copy combined into one."""
+    if isinstance(part, models.MeshPart):
+        element = mesh_element(part, units, spec_path)
+    else:
+        element = ELEMENT_BUILDERS[type(part)](part, units)
+    if part.pattern is not None and part.pattern.count > 1:
+        from rbi.spec.pattern import patterned
+
+        element = patterned(element, part.pattern)
+    return element
+
+
 ELEMENT_BUILDERS: dict[type, Callable[..., shapes.MassElement]] = {
     models.ConePart: cone_element,
     models.CylinderPart: cylinder_element,
@@ -129,8 +188,12 @@ ELEMENT_BUILDERS: dict[type, Callable[..., shapes.MassElement]] = {
     models.EllipsoidPart: ellipsoid_element,
     models.RodPart: rod_element,
     models.CustomPart: custom_element,
+    models.TorusPart: torus_element,
+    models.HemispherePart: hemisphere_element,
+    models.CapsulePart: capsule_element,
 }
-"""Each part model's translation ``(part, units) -> MassElement`` (file units)."""
+"""Each part model's translation ``(part, units) -> MassElement`` (file units); meshes, which
+need the spec's folder, and patterns go through :func:`part_element`."""
 
 
 PART_VOLUMES: dict[type, Callable[[object], float]] = {
@@ -142,14 +205,22 @@ PART_VOLUMES: dict[type, Callable[[object], float]] = {
     models.TubePart: lambda p: shapes.tube_volume(p.outer_radius, p.inner_radius, _length(p.start, p.end)),
     models.FrustumPart: lambda p: shapes.frustum_volume(p.start_radius, p.end_radius, _length(p.start, p.end)),
     models.EllipsoidPart: lambda p: shapes.ellipsoid_volume(p.semi_axes),
+    models.TorusPart: lambda p: shapes.torus_volume(p.major_radius, p.minor_radius),
+    models.HemispherePart: lambda p: shapes.hemisphere_volume(p.radius),
+    models.CapsulePart: lambda p: shapes.capsule_volume(p.radius, _length(p.start, p.end)),
+    models.MeshPart: lambda p: p._enclosed_volume,  # known once the mesh has been read
 }
 """Volume (L³) of each solid part model; points, rods and custom parts have none."""
 
 
 def part_volume(part) -> float | None:
-    """The part's volume in the file's length unit cubed, or None for a part without one."""
+    """The part's volume in the file's length unit cubed (all copies of a ``pattern``), or None
+    for a part without one (or a mesh not yet read)."""
     volume = PART_VOLUMES.get(type(part))
-    return None if volume is None else float(volume(part))
+    one = None if volume is None else volume(part)
+    if one is None:
+        return None
+    return float(one) * (1 if part.pattern is None else part.pattern.count)
 
 
 def _removed(element: shapes.MassElement) -> shapes.MassElement:
@@ -171,7 +242,7 @@ def body_from_spec(spec: models.BodySpec, path: str):
     for i, part in enumerate(spec.parts):
         try:
             with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported just below
-                element = ELEMENT_BUILDERS[type(part)](part, spec.units)
+                element = part_element(part, spec.units, path)
         except ValueError as exc:
             raise InputError(f"{path}: {part_label(i, part)}: {exc}") from None
         if not (np.isfinite(element.mass) and np.all(np.isfinite(element.inertia_com))):

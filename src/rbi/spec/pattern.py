@@ -1,0 +1,49 @@
+"""``pattern:`` on a part: equal copies turned evenly about an axis line, or in a row.
+
+The copies of one written part are combined into a single mass element (their total mass,
+common centre of mass, and inertia about it), so a patterned part stays one part in ``rbi
+parts`` and in hole checks; a pattern on a hole removes every copy.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from rbi.core.inertia import combine
+from rbi.core.rotation import axis_angle_matrix
+from rbi.core.shapes import MassElement
+
+ROUNDING_ZERO = 1e-15
+"""Rotation-matrix entries below this are rounding left by sin/cos of exact quarter turns."""
+
+
+def copy_rotations(count: int, axis) -> np.ndarray:
+    """(count, 3, 3) matrices turning by 360°·k/count about ``axis``, k = 0 … count − 1 (the
+    first is the identity)."""
+    rotations = np.array([axis_angle_matrix(np.asarray(axis, dtype=float), 2.0 * math.pi * k / count)
+                          for k in range(count)])
+    rotations[np.abs(rotations) < ROUNDING_ZERO] = 0.0
+    rotations[0] = np.eye(3)
+    return rotations
+
+
+def patterned(element: MassElement, pattern) -> MassElement:
+    """The ``pattern.count`` copies of ``element`` (a part's own mass element, positive mass)
+    as one element. ``pattern`` has ``count`` and either ``axis`` (with ``through``, default
+    the origin) or ``step``."""
+    count = int(pattern.count)
+    com = np.asarray(element.com, dtype=float)
+    inertia = np.asarray(element.inertia_com, dtype=float)
+    if pattern.step is not None:
+        offsets = np.arange(count)[:, None] * np.asarray(pattern.step, dtype=float)
+        coms = com + offsets
+        inertias = np.broadcast_to(inertia, (count, 3, 3))
+    else:
+        through = np.zeros(3) if pattern.through is None else np.asarray(pattern.through, dtype=float)
+        rotations = copy_rotations(count, pattern.axis)
+        coms = through + np.einsum("kij,j->ki", rotations, com - through)
+        inertias = np.einsum("kij,jl,kml->kim", rotations, inertia, rotations)
+    props = combine(np.full(count, float(element.mass)), coms, inertias)
+    return MassElement(props.mass, props.com, props.inertia_com)
