@@ -26,6 +26,7 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
     "simulate": ("rbi.cli.simulate_command", "simulate", "Motion of a top on its pivot or of a free body, with its accuracy."),
     "sweep": ("rbi.cli.sweep_command", "sweep", "Many simulations at once: stability maps and tolerance studies."),
     "animate": ("rbi.cli.animate_command", "animate", "Animation of the motion: a 3D HTML page or a GIF."),
+    "show": ("rbi.cli.show_command", "show", "Picture of the body as specified: parts, CoM, principal axes."),
     "export": ("rbi.cli.export_command", "export", "The <inertial> element for URDF, MJCF or SDF (SI units)."),
     "check": ("rbi.cli.check_command", "check", "Compare the spec's expect: block with the computed values."),
     "validate": ("rbi.cli.schema_command", "validate", "Validate many specs at once, one line per problem."),

@@ -223,3 +223,50 @@ def _closest_coordinate_axis_in_plane(normal: np.ndarray) -> np.ndarray:
     norms = np.linalg.norm(projections, axis=1)
     k = int(np.argmax(norms >= norms.max() * (1.0 - 1e-9)))
     return projections[k] / norms[k]
+
+
+# --- one axis, radii of gyration, the sign of products --------------------------------------
+
+def unit_axis(axis: Sequence[float]) -> np.ndarray:
+    """``axis`` scaled to unit length; ValueError when it is zero or not finite."""
+    n = np.asarray(axis, dtype=float).reshape(3)
+    length = float(np.linalg.norm(n))
+    if not np.all(np.isfinite(n)) or not np.isfinite(length) or length == 0.0:
+        raise ValueError(f"the axis must be a non-zero finite direction, got {n.tolist()}")
+    return n / length
+
+
+def moment_about_axis(inertia_about_point: np.ndarray, axis: Sequence[float]) -> float:
+    """Scalar moment of inertia ``nᵀ I n`` (M·L²) about the line through the reference point
+    of ``inertia_about_point`` along ``axis`` (any non-zero length, same axes as the matrix).
+
+    It equals ``∫ d² dm`` with ``d`` the distance of each mass element from that line.
+    """
+    n = unit_axis(axis)
+    return float(n @ np.asarray(inertia_about_point, dtype=float) @ n)
+
+
+def radii_of_gyration(moments: Sequence[float], mass: float) -> np.ndarray:
+    """Radius of gyration ``k = sqrt(I / m)`` (L) for each moment (M·L²): the distance from
+    the axis at which the whole mass would have the same moment. A moment that rounding made
+    slightly negative gives 0."""
+    I = np.asarray(moments, dtype=float)
+    return np.sqrt(np.clip(I, 0.0, None) / float(mass))
+
+
+PRODUCT_SIGNS = ("tensor", "cad")
+"""``tensor``: off-diagonal entries as in the inertia matrix, ``I_xy = −∫xy dm``.
+``cad``: the positive integrals ``P_xy = +∫xy dm`` that SolidWorks and CATIA print."""
+
+
+def with_product_sign(inertia: np.ndarray, sign: str) -> np.ndarray:
+    """The inertia matrix with its off-diagonal entries in convention ``sign``
+    (see :data:`PRODUCT_SIGNS`); the moments on the diagonal never change."""
+    I = np.array(inertia, dtype=float)
+    if sign == "tensor":
+        return I
+    if sign == "cad":
+        off_diagonal = ~np.eye(3, dtype=bool)
+        I[off_diagonal] = 0.0 - I[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
+        return I
+    raise ValueError(f"unknown products sign {sign!r} (expected one of {PRODUCT_SIGNS})")

@@ -22,14 +22,17 @@ GIF_PIXELS = 400
 GIF_COLOURS = 64
 
 
-def body_mesh(parts: list[dict[str, Any]], size: float) -> tuple[np.ndarray, np.ndarray]:
-    """All parts as quads ``(n, 4, 3)`` with an RGBA colour each (stripes darker; holes red and
-    translucent; point masses dark grey)."""
+def body_mesh(parts: list[dict[str, Any]], size: float, holes: bool = True,
+              stripes: bool = True) -> tuple[np.ndarray, np.ndarray]:
+    """The parts as quads ``(n, 4, 3)`` with an RGBA colour each (stripes darker; holes red and
+    translucent, or left out when ``holes`` is false; point masses dark grey)."""
     from matplotlib.colors import to_rgba
 
     all_quads, all_colours = [], []
     for index, item in enumerate(parts):
-        quads, stripes = part_quads(item, size)
+        if item.get("hole") and not holes:
+            continue
+        quads, banded = part_quads(item, size)
         if item.get("hole"):
             colours = np.tile(HOLE_RGBA, (len(quads), 1))
         elif item["kind"] == "point":
@@ -37,7 +40,8 @@ def body_mesh(parts: list[dict[str, Any]], size: float) -> tuple[np.ndarray, np.
         else:
             base = np.array(to_rgba(PALETTE[index % len(PALETTE)], 0.55 if item.get("stand_in") else 1.0))
             colours = np.tile(base, (len(quads), 1))
-            colours[stripes, :3] *= 0.62
+            if stripes:
+                colours[banded, :3] *= 0.62
         all_quads.append(quads)
         all_colours.append(colours)
     if not all_quads:

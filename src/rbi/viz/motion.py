@@ -57,8 +57,8 @@ def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndar
     from rbi.core.rotation import quaternion_to_matrix
 
     origin = np.asarray(scene.pivot if scene.pivoted else scene.com, dtype=float)
-    parts = [_shifted(item, origin) for item in geometry]
-    size = _body_size(parts)
+    parts = [shifted(item, origin) for item in geometry]
+    size = body_size(parts)
     axis = marked_axis(scene)
     tip = axis * size
     trace = np.array([quaternion_to_matrix(qi) @ tip for qi in q])
@@ -79,7 +79,7 @@ def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndar
     }
 
 
-def _shifted(item: dict[str, Any], origin: np.ndarray) -> dict[str, Any]:
+def shifted(item: dict[str, Any], origin: np.ndarray) -> dict[str, Any]:
     out = dict(item)
     for key in ("start", "end", "center", "position"):
         if key in out:
@@ -87,7 +87,7 @@ def _shifted(item: dict[str, Any], origin: np.ndarray) -> dict[str, Any]:
     return out
 
 
-def _body_size(parts: list[dict[str, Any]]) -> float:
+def body_size(parts: list[dict[str, Any]]) -> float:
     """A length the scene is drawn at: the farthest reach of any part from the origin."""
     reach = 0.0
     for item in parts:

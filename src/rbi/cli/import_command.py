@@ -1,0 +1,176 @@
+"""`rbi import`: the links of a URDF, SDF or MJCF file as rbi specs (one custom part each)."""
+
+from __future__ import annotations
+
+import re
+import sys
+from typing import Annotated, Optional
+
+import typer
+
+from rbi.cli.options import FormatOption, OutputFormat
+from rbi.spec.errors import InputError
+
+
+def import_robot(
+    file: Annotated[str, typer.Argument(help="Robot description: .urdf, .sdf, or MJCF (.xml).",
+                                        show_default=False, metavar="FILE")],
+    link: Annotated[Optional[list[str]], typer.Option(
+        "--link", "-l", metavar="NAME", help="Import only this link (MJCF: body); repeat for several.")] = None,
+    out: Annotated[Optional[str], typer.Option(
+        "--out", "-o", metavar="DIR|FILE.yaml",
+        help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
+             "link is imported. Without it the specs are printed (YAML documents separated by ---).")] = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
+    """Turn each link of a robot file into an rbi spec: its mass, centre of mass and inertia as a custom part.
+
+    The specs are in SI units and in the link's own frame; the inertial frame's orientation
+    (URDF/SDF rpy, MJCF quat) becomes the part's rotation. --format json lists the links with
+    their mass properties (inertia in link axes) instead of printing YAML; a link whose inertia
+    is not physical is warned about on stderr (rbi validate FILE gates on it).
+
+    \b
+    Examples:
+      rbi import two_link_arm.urdf
+      rbi import two_link_arm.urdf --link forearm --out forearm.yaml
+      rbi import robot.sdf --out specs/
+      rbi import humanoid.xml --format json
+    """
+    from rbi.spec.robot_files import link_problems, read_robot_file
+
+    robot = read_robot_file(file)
+    links = _selected(robot, link or [])
+    if not links:
+        raise InputError(f"{file}: no {robot.link_word} with an <inertial> element to import")
+    targets = _targets(robot, links, out, file) if out is not None else None
+    if not link:
+        for label, reason in robot.skipped:
+            print(f"rbi: note: {file}: {label}: skipped: {reason}", file=sys.stderr)
+    for each in links:
+        for line in link_problems(robot, each):
+            print(f"rbi: warning: {line}", file=sys.stderr)
+    if targets is not None:
+        _write(robot, targets)
+    if format is OutputFormat.table:
+        if targets is None:
+            sys.stdout.write("---\n".join(_yaml_text(robot, each) for each in links))
+        else:
+            for target, _ in targets:
+                print(target.given)
+        return
+    _emit_listing(format, robot, links, targets)
+
+
+def _selected(robot, names: list[str]):
+    if not names:
+        return robot.links
+    by_name = {each.name: each for each in robot.links}
+    missing = [name for name in names if name not in by_name]
+    if missing:
+        import difflib
+
+        hint = difflib.get_close_matches(missing[0], [n for n in by_name if n], n=1)
+        raise InputError(f"--link: {robot.path} has no {robot.link_word} named {missing[0]!r} with an <inertial>"
+                         + (f" (did you mean {hint[0]!r}?)" if hint else ""))
+    return [by_name[name] for name in dict.fromkeys(names)]
+
+
+def _targets(robot, links, out: str, source: str):
+    """(checked output target, link) pairs, all checked before anything is written."""
+    import os
+
+    from rbi.cli.output import check_distinct, output_target
+
+    if os.path.isdir(out) or out.endswith(("/", os.sep)):
+        if not os.path.isdir(out):
+            raise InputError(f"--out: {out}: folder does not exist")
+        names = _file_names(links, robot.link_word)
+        targets = [(output_target(os.path.join(out, name), "--out", ("yaml",), inputs=[source]), each)
+                   for name, each in zip(names, links)]
+    else:
+        if len(links) != 1:
+            raise InputError(f"--out: {out}: {len(links)} {robot.link_word}s to import; name a folder "
+                             f"(--out DIR/) or pick one with --link NAME")
+        targets = [(output_target(out, "--out", ("yaml", "yml"), inputs=[source]), links[0])]
+    check_distinct([target for target, _ in targets])
+    return targets
+
+
+_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
+
+
+def _file_names(links, word: str) -> list[str]:
+    """A safe, distinct ``NAME.yaml`` for each link (characters other than letters, digits,
+    ``.``, ``_`` and ``-`` become ``_``; a clash gets the link's index appended)."""
+    names, seen = [], set()
+    for each in links:
+        stem = _UNSAFE.sub("_", each.name or "").strip("._") or f"{word}{each.index}"
+        stem = stem[:200]
+        if stem.lower() in seen:
+            stem = f"{stem}_{each.index}"
+        seen.add(stem.lower())
+        names.append(stem + ".yaml")
+    return names
+
+
+def _yaml_text(robot, link) -> str:
+    import os
+
+    import yaml
+
+    from rbi.spec.robot_files import link_spec
+
+    source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
+    header = (f"# rbi import of {os.path.basename(robot.path)}, {link.label(robot.link_word)}, from its {source} <inertial>:\n"
+              "# SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,\n"
+              "# turned into link axes by `rotation`.\n")
+    header = header.replace("\r", " ")
+    return header + yaml.safe_dump(link_spec(robot, link), sort_keys=False, allow_unicode=True,
+                                   default_flow_style=None, width=100)
+
+
+def _write(robot, targets) -> None:
+    from rbi.cli.output import write_output
+
+    for target, each in targets:
+        write_output(target, _yaml_text(robot, each))
+
+
+def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
+    from rbi.cli.render import emit
+    from rbi.spec.robot_files import link_problems
+
+    written = {id(each): target.given for target, each in targets or []}
+    rows = []
+    for each in links:
+        rows.append({
+            "name": each.name,
+            "index": each.index,
+            "mass": each.mass,
+            "center_of_mass": each.com,
+            "inertia": each.inertia_in_link_axes(),
+            "inertial_quaternion": each.quaternion if each.quaternion is not None else _quaternion(each),
+            "problems": link_problems(robot, each),
+            "file": written.get(id(each)),
+        })
+    result = {
+        "file": robot.path,
+        "format": robot.format,
+        "model": robot.name,
+        "units": {"length": "m", "mass": "kg"},
+        "links": rows,
+        "skipped": [{"link": label, "reason": reason} for label, reason in robot.skipped],
+    }
+    csv_rows = [{k: v for k, v in row.items() if k != "problems"} | {"ok": not row["problems"]} for row in rows]
+    emit(format.value, result, lambda: None, csv_rows=csv_rows)
+
+
+def _quaternion(link):
+    """``[w, x, y, z]`` of the inertial frame (identity when the file gave none)."""
+    import numpy as np
+
+    from rbi.core.rotation import matrix_to_quaternion
+
+    R = link.rotation_matrix()
+    return np.array([1.0, 0.0, 0.0, 0.0]) if R is None else matrix_to_quaternion(R)

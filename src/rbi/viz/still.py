@@ -1,0 +1,140 @@
+"""``rbi show``: a picture of the body as specified — every part in place (holes red and
+translucent), the centre of mass, the principal axes about it drawn with lengths in proportion
+to their moments, and the pivot.
+
+:func:`view_data` gathers what to draw (body frame, file units, origin at the pivot or at the
+centre of mass); :func:`draw_still` draws it with matplotlib (PNG, SVG); the HTML form is the
+animation page with a single time (:func:`rbi.viz.page.html_page`).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from rbi.viz.motion import body_size, shifted
+
+AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
+"""Colours of the principal axes of the smallest, middle and largest moment."""
+LONGEST_AXIS_FRACTION = 0.75
+"""Half-length of the axis of the largest moment, as a fraction of the body's size."""
+
+
+def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivot, length_unit: str,
+              inertia_unit: str) -> dict[str, Any]:
+    """What :func:`draw_still` and the page draw, JSON-ready. ``geometry``: from
+    :func:`rbi.spec.geometry.part_geometry`; ``com`` and ``pivot`` (or None) body frame;
+    ``inertia_com`` about the centre of mass in body axes. Coordinates are shifted so the pivot
+    (or, without one, the centre of mass) is at the origin; the body is not turned."""
+    from rbi.core.inertia import principal_axes
+
+    com = np.asarray(com, dtype=float)
+    origin = com if pivot is None else np.asarray(pivot, dtype=float)
+    parts = [shifted(item, origin) for item in geometry]
+    size = body_size(parts + [{"kind": "point", "position": (com - origin).tolist()}])
+    moments, axes = principal_axes(np.asarray(inertia_com, dtype=float))
+    largest = float(np.max(np.abs(moments))) or 1.0
+    principal = [{"moment": float(m), "direction": axis.tolist(),
+                  "half_length": LONGEST_AXIS_FRACTION * size * max(abs(float(m)) / largest, 0.08),
+                  "label": f"I{k + 1} = {float(m):.4g} {inertia_unit}", "colour": AXIS_COLOURS[k]}
+                 for k, (m, axis) in enumerate(zip(moments, axes))]
+    com_shifted = (com - origin).tolist()
+    return {
+        "title": title, "length_unit": length_unit, "pivoted": False, "size": size, "parts": parts,
+        "com": com_shifted, "view_center": com_shifted, "pivot": None if pivot is None else [0.0, 0.0, 0.0],
+        "principal_axes": principal, "axis_tip": com_shifted,
+        "times": [0.0], "quaternions": [[0.0, 0.0, 0.0, 1.0]], "tilt_deg": [0.0], "omega": [0.0],
+        "trace": [com_shifted], "trail_seconds": 0.0,
+    }
+
+
+def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
+    """The body in 3D (matplotlib), saved at ``path`` as ``format`` (png or svg)."""
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+    from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh
+    from rbi.viz.solids import shade
+
+    size = float(data["size"])
+    quads, colours = body_mesh(data["parts"], size, holes=False, stripes=False)
+    holes = [item for item in data["parts"] if item.get("hole")]
+    hole_quads, hole_colours = body_mesh(holes, size)
+    fig = plt.figure(figsize=(10, 7))
+    ax = fig.add_axes((0.0, 0.02, 0.6, 0.9), projection="3d")
+    ax.computed_zorder = False  # holes, axes and markers stay in front of the solids
+    ax.view_init(elev=22, azim=-55)
+    if len(quads):
+        if len(hole_quads):
+            colours[:, 3] = np.minimum(colours[:, 3], 0.75)  # so that holes inside a part show through
+        ax.add_collection3d(Poly3DCollection(quads, facecolors=shade(quads, colours), edgecolors=(0, 0, 0, 0.06),
+                                             linewidths=0.2, zorder=1))
+    if len(hole_quads):
+        ax.add_collection3d(Poly3DCollection(hole_quads, facecolors=hole_colours, edgecolors=(0.75, 0.1, 0.1, 0.5),
+                                             linewidths=0.3, zorder=2))
+    quads = np.concatenate((quads, hole_quads)) if len(hole_quads) else quads
+    com = np.asarray(data["com"], dtype=float)
+    handles = []
+    for axis in data["principal_axes"]:
+        direction = np.asarray(axis["direction"]) * axis["half_length"]
+        ends = np.stack((com - direction, com + direction))
+        ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color=axis["colour"], lw=2.2, zorder=10)
+        tip = com + 1.08 * direction
+        ax.text(tip[0], tip[1], tip[2], f"I{data['principal_axes'].index(axis) + 1}", color=axis["colour"],
+                fontsize=10, weight="bold", zorder=11)
+        handles.append(Line2D([], [], color=axis["colour"], lw=2.2, label=axis["label"]))
+    ax.scatter(*com, color="black", s=40, marker="o", depthshade=False, zorder=12)
+    handles.append(Line2D([], [], color="black", marker="o", ls="none", label="centre of mass"))
+    if data.get("pivot") is not None:
+        ax.scatter(*data["pivot"], color="black", s=70, marker="^", depthshade=False, zorder=12)
+        handles.append(Line2D([], [], color="black", marker="^", ls="none", label="pivot (origin of the axes)"))
+    seen_hole = False
+    for index, item in enumerate(data["parts"]):
+        if item.get("hole"):
+            if not seen_hole:
+                handles.append(Patch(facecolor=HOLE_RGBA, edgecolor="#b02020", label="hole (subtracted)"))
+                seen_hole = True
+            continue
+        if index < 14:
+            colour = "#333333" if item["kind"] == "point" else PALETTE[index % len(PALETTE)]
+            name = item.get("name") or f"parts[{index}]"
+            extra = " (box of equal inertia)" if item.get("stand_in") else ""
+            handles.append(Patch(facecolor=colour, label=f"{name}: {item['shape']}{extra}"))
+    if len(data["parts"]) > 14:
+        handles.append(Patch(facecolor="white", label=f"… {len(data['parts'])} parts in all"))
+    fig.legend(handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5, frameon=False)
+    _frame(ax, quads, com, data)
+    unit = data["length_unit"]
+    ax.set_xlabel(f"x [{unit}]")
+    ax.set_ylabel(f"y [{unit}]")
+    ax.set_zlabel(f"z [{unit}]")
+    origin = "the pivot" if data.get("pivot") is not None else "the centre of mass"
+    fig.suptitle(f"{data['title']}\nbody axes, origin at {origin}; principal axes about the centre of mass, "
+                 f"lengths in proportion to their moments", fontsize=10)
+    fig.savefig(path, format=format, dpi=110)
+    plt.close(fig)
+
+
+def _frame(ax, quads: np.ndarray, com: np.ndarray, data: dict[str, Any]) -> None:
+    """Equal scales on the three axes, framing every part, the CoM, the axes and the pivot."""
+    points = [quads.reshape(-1, 3)] if len(quads) else []
+    points.append(com[None, :])
+    for axis in data["principal_axes"]:
+        direction = np.asarray(axis["direction"]) * axis["half_length"] * 1.1
+        points.append(np.stack((com - direction, com + direction)))
+    if data.get("pivot") is not None:
+        points.append(np.asarray(data["pivot"], dtype=float)[None, :])
+    cloud = np.concatenate(points)
+    low, high = cloud.min(axis=0), cloud.max(axis=0)
+    centre = 0.5 * (low + high)
+    half = 0.5 * float(np.max(high - low)) or 1.0
+    ax.set_xlim(centre[0] - half, centre[0] + half)
+    ax.set_ylim(centre[1] - half, centre[1] + half)
+    ax.set_zlim(centre[2] - half, centre[2] + half)
+    ax.set_box_aspect((1, 1, 1))
