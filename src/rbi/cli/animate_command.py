@@ -65,6 +65,7 @@ def animate(
     from rbi.spec.geometry import part_geometry
     from rbi.sim.summary import sample_columns
     from rbi.viz.motion import MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframe_count
+    from rbi.viz.still import part_count
 
     try:
         probe = simulate(scene, q0, omega0, duration, MIN_KEYFRAMES, rtol=rtol, max_steps=budget)
@@ -78,7 +79,7 @@ def animate(
     title = f"{body.name or file}: spin {float(np.linalg.norm(omega0)):g} rad/s, tilt {tilt:g}°"
     data = animation_data(title, part_geometry(body), scene, run.t, run.q, run.omega, tilt_deg(run.q),
                           body.length_unit)
-    data["legend"] = (f"{len(data['parts'])} parts · red line: path of the axis tip over the last {TRAIL_SECONDS:g} s · lengths in {body.length_unit}"
+    data["legend"] = (f"{part_count(data['parts'])} parts · red line: path of the axis tip over the last {TRAIL_SECONDS:g} s · lengths in {body.length_unit}"
                       + (" · on a pivot" if scene.pivoted else " · free body, about its centre of mass"))
     if target.format == "html":
         from rbi.viz.page import html_page

@@ -34,7 +34,7 @@ def show(
         require_matplotlib()
     from rbi.spec.geometry import part_geometry
     from rbi.spec.load import load_body
-    from rbi.viz.still import view_data
+    from rbi.viz.still import part_count, view_data
 
     body = load_body(file)
     data = view_data(body.name or file, part_geometry(body), body.props.com, body.props.inertia_com, body.pivot,
@@ -42,7 +42,7 @@ def show(
     if target.format == "html":
         from rbi.viz.page import html_page
 
-        data["legend"] = (f"{len(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
+        data["legend"] = (f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
                           "axes · " + " · ".join(a["label"] for a in data["principal_axes"])
                           + f" · lengths in {body.length_unit}")
         write_output(target, html_page(data))
@@ -50,4 +50,4 @@ def show(
         from rbi.viz.still import draw_still
 
         write_output(target, writer=lambda path: draw_still(data, path, format=target.format))
-    print(f"{out}: {len(data['parts'])} parts drawn")
+    print(f"{out}: {part_count(data['parts'])} parts drawn")

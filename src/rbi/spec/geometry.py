@@ -9,9 +9,17 @@ Every solid is one of:
 - ``{"kind": "box", "center", "size", "rotation"}``: boxes, and any part without a drawable
   shape of its own (custom parts, point clouds, shapes added later), drawn as the uniform box
   with the same mass and principal moments about the same centre (``"stand_in": true``);
+- ``{"kind": "torus", "center", "axis", "major_radius", "minor_radius"}``;
+- ``{"kind": "hemisphere", "center", "axis", "radius"}`` (``center`` of the flat face, ``axis``
+  unit, into the dome);
+- ``{"kind": "capsule", "start", "end", "radius"}``;
+- ``{"kind": "mesh", "vertices", "faces"}`` (body frame; a mesh of more than
+  :data:`MAX_DRAWN_TRIANGLES` triangles is drawn as its stand-in box);
 - ``{"kind": "point", "position"}``: point masses.
 
-Each also has ``name``, ``shape`` (as written), ``hole`` (a subtracted solid) and ``mass``.
+A part with a ``pattern`` gives one primitive per copy. Each primitive also has
+``part`` (the index of the written part it comes from), ``name``, ``shape`` (as written),
+``hole`` (a subtracted solid) and ``mass`` (per copy).
 Coordinates are body-frame, in the file's length unit; ``rotation`` is a 3×3 matrix (rows),
 part axes to body axes.
 """
@@ -25,23 +33,61 @@ import numpy as np
 from rbi.spec import models
 
 ROD_RADIUS_FRACTION = 0.01
+MAX_DRAWN_TRIANGLES = 20_000
+"""Largest mesh drawn triangle by triangle (pages stay small); bigger ones get a stand-in box."""
+MAX_DRAWN_COPIES = 1000
+"""Most copies of a patterned part drawn; beyond that the pattern is drawn as one stand-in box."""
 
 
 def part_geometry(body) -> list[dict[str, Any]]:
-    """The drawable primitives of a :class:`~rbi.spec.load.LoadedBody`, one per part in file
-    order (a point cloud as one stand-in box)."""
+    """The drawable primitives of a :class:`~rbi.spec.load.LoadedBody` in file order: one per
+    part, one per copy of a patterned part (a point cloud as one stand-in box)."""
     spec = body.spec
     out = []
     parts = list(spec.parts) if spec is not None else []
     for index, element in enumerate(body.elements):
         part = parts[index] if index < len(parts) else None
         shape = part.shape if part is not None else "point_cloud"
-        item = _primitive(part) if part is not None else None
-        if item is None:
-            item = _stand_in(element)
-        item |= {"name": body.part_names[index] if index < len(body.part_names) else None, "shape": shape,
-                 "hole": bool(getattr(part, "subtract", False)), "mass": float(element.mass)}
-        out.append(item)
+        pattern = getattr(part, "pattern", None)
+        count = 1 if pattern is None else int(pattern.count)
+        item = _primitive(part, body.path) if part is not None and count <= MAX_DRAWN_COPIES else None
+        copies = [_stand_in(element)] if item is None else [moved(item, R, t) for R, t in _copy_motions(pattern)]
+        for copy in copies:
+            copy |= {"part": index, "name": body.part_names[index] if index < len(body.part_names) else None, "shape": shape,
+                     "hole": bool(getattr(part, "subtract", False)), "mass": float(element.mass) / len(copies)}
+            out.append(copy)
+    return out
+
+
+def _copy_motions(pattern) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(R, t) of each copy, x -> R x + t (the first is the part as written)."""
+    if pattern is None or pattern.count <= 1:
+        return [(np.eye(3), np.zeros(3))]
+    if pattern.step is not None:
+        return [(np.eye(3), k * np.asarray(pattern.step, dtype=float)) for k in range(pattern.count)]
+    from rbi.spec.pattern import copy_rotations
+
+    through = np.zeros(3) if pattern.through is None else np.asarray(pattern.through, dtype=float)
+    return [(R, through - R @ through) for R in copy_rotations(pattern.count, pattern.axis)]
+
+
+POINT_KEYS = ("start", "end", "center", "position")
+DIRECTION_KEYS = ("axis",)
+
+
+def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray) -> dict[str, Any]:
+    """The primitive turned by ``R`` and moved by ``t`` (x -> R x + t)."""
+    out = dict(item)
+    for key in POINT_KEYS:
+        if key in out:
+            out[key] = (R @ np.asarray(out[key], dtype=float) + t).tolist()
+    for key in DIRECTION_KEYS:
+        if key in out:
+            out[key] = (R @ np.asarray(out[key], dtype=float)).tolist()
+    if "rotation" in out:
+        out["rotation"] = (R @ np.asarray(out["rotation"], dtype=float)).tolist()
+    if "vertices" in out:
+        out["vertices"] = (np.asarray(out["vertices"], dtype=float) @ R.T + t).tolist()
     return out
 
 
@@ -49,7 +95,7 @@ def _vector(v) -> list[float]:
     return [float(x) for x in v]
 
 
-def _primitive(part) -> dict[str, Any] | None:
+def _primitive(part, spec_path: str) -> dict[str, Any] | None:
     from rbi.spec.translate import rotation_matrix
 
     if isinstance(part, models.ConePart):
@@ -75,7 +121,40 @@ def _primitive(part) -> dict[str, Any] | None:
                 "rotation": (np.eye(3) if R is None else R).tolist()}
     if isinstance(part, models.PointPart):
         return {"kind": "point", "position": _vector(part.position)}
+    if isinstance(part, models.TorusPart):
+        return {"kind": "torus", "center": _vector(part.center), "axis": _unit(part.axis),
+                "major_radius": float(part.major_radius), "minor_radius": float(part.minor_radius)}
+    if isinstance(part, models.HemispherePart):
+        return {"kind": "hemisphere", "center": _vector(part.center), "axis": _unit(part.axis),
+                "radius": float(part.radius)}
+    if isinstance(part, models.CapsulePart):
+        return {"kind": "capsule", "start": _vector(part.start), "end": _vector(part.end), "radius": float(part.radius)}
+    if isinstance(part, models.MeshPart):
+        return _mesh(part, spec_path)
     return None
+
+
+def _unit(v) -> list[float]:
+    v = np.asarray(v, dtype=float)
+    return (v / np.linalg.norm(v)).tolist()
+
+
+def _mesh(part, spec_path: str) -> dict[str, Any] | None:
+    """The mesh's triangles placed in the body as the mass properties place them: ``scale``,
+    then ``rotation`` about the mesh origin, then the origin to ``position``."""
+    from rbi.spec.mesh_file import read_mesh_solid
+    from rbi.spec.paths import spec_relative_file
+    from rbi.spec.translate import rotation_matrix
+
+    solid = read_mesh_solid(spec_relative_file(spec_path, part.file, f"file: {part.file}"))  # cached: read once
+    if len(solid.faces) > MAX_DRAWN_TRIANGLES:
+        return None
+    R = rotation_matrix(part.rotation)
+    vertices = np.asarray(solid.vertices, dtype=float) * float(part.scale)
+    if R is not None:
+        vertices = vertices @ R.T
+    vertices = vertices + np.asarray(part.position, dtype=float)
+    return {"kind": "mesh", "vertices": vertices.tolist(), "faces": np.asarray(solid.faces, dtype=int).tolist()}
 
 
 def _frustum(start, end, start_radius, end_radius, inner_radius=0.0) -> dict[str, Any]:

@@ -38,7 +38,7 @@ def body_mesh(parts: list[dict[str, Any]], size: float, holes: bool = True,
         elif item["kind"] == "point":
             colours = np.tile(POINT_RGBA, (len(quads), 1))
         else:
-            base = np.array(to_rgba(PALETTE[index % len(PALETTE)], 0.55 if item.get("stand_in") else 1.0))
+            base = np.array(to_rgba(PALETTE[item.get("part", index) % len(PALETTE)], 0.55 if item.get("stand_in") else 1.0))
             colours = np.tile(base, (len(quads), 1))
             if stripes:
                 colours[banded, :3] *= 0.62

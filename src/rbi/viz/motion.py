@@ -80,24 +80,21 @@ def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndar
 
 
 def shifted(item: dict[str, Any], origin: np.ndarray) -> dict[str, Any]:
-    out = dict(item)
-    for key in ("start", "end", "center", "position"):
-        if key in out:
-            out[key] = (np.asarray(out[key], dtype=float) - origin).tolist()
-    return out
+    from rbi.spec.geometry import moved
+
+    return moved(item, np.eye(3), -np.asarray(origin, dtype=float))
 
 
 def body_size(parts: list[dict[str, Any]]) -> float:
     """A length the scene is drawn at: the farthest reach of any part from the origin."""
+    from rbi.viz.solids import part_quads
+
     reach = 0.0
     for item in parts:
-        if item["kind"] == "frustum":
-            extra = max(item["start_radius"], item["end_radius"])
-            reach = max(reach, np.linalg.norm(item["start"]) + extra, np.linalg.norm(item["end"]) + extra)
-        elif item["kind"] == "ellipsoid":
-            reach = max(reach, np.linalg.norm(item["center"]) + max(item["semi_axes"]))
-        elif item["kind"] == "box":
-            reach = max(reach, np.linalg.norm(item["center"]) + 0.5 * np.linalg.norm(item["size"]))
-        else:
+        if item["kind"] == "point":
             reach = max(reach, float(np.linalg.norm(item["position"])))
+        else:
+            quads, _ = part_quads(item, 0.0)
+            if len(quads):
+                reach = max(reach, float(np.max(np.linalg.norm(quads.reshape(-1, 3), axis=1))))
     return float(reach) if reach > 0 else 1.0

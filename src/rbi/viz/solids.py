@@ -78,6 +78,49 @@ def box_quads(center, size, rotation):
     return quads, np.zeros(6, dtype=bool)
 
 
+def torus_quads(center, axis, major_radius: float, minor_radius: float):
+    """A ring mesh; stripes around the ring's axis."""
+    axis = np.asarray(axis, dtype=float)
+    u, v = _perpendiculars(axis / np.linalg.norm(axis))
+    around = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
+    tube = np.linspace(0.0, 2 * np.pi, SEGMENTS // 2 + 1)[:, None]
+    radial = np.cos(around)[..., None] * u + np.sin(around)[..., None] * v  # (1, S+1, 3)
+    points = (np.asarray(center, dtype=float) + (major_radius + minor_radius * np.cos(tube))[..., None] * radial
+              + (minor_radius * np.sin(tube))[..., None] * (axis / np.linalg.norm(axis)))
+    return _grid_quads(points), _stripe_flags(SEGMENTS // 2, SEGMENTS)
+
+
+def hemisphere_quads(center, axis, radius: float):
+    """Dome and flat face; stripes around the axis."""
+    axis = np.asarray(axis, dtype=float)
+    axis = axis / np.linalg.norm(axis)
+    u, v = _perpendiculars(axis)
+    rows = SEGMENTS // 4
+    polar = np.linspace(0.0, np.pi / 2, rows + 1)[:, None]
+    azimuth = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
+    points = np.asarray(center, dtype=float) + radius * (
+        (np.sin(polar) * np.cos(azimuth))[..., None] * u + (np.sin(polar) * np.sin(azimuth))[..., None] * v
+        + np.cos(polar)[..., None] * axis)
+    dome = (_grid_quads(points), _stripe_flags(rows, SEGMENTS))
+    ring = np.cos(azimuth[0])[:, None] * u + np.sin(azimuth[0])[:, None] * v
+    centre = np.asarray(center, dtype=float)
+    face = (_grid_quads(np.stack((centre + 0.0 * ring, centre + radius * ring))), _stripe_flags(1, SEGMENTS))
+    return _join([dome, face])
+
+
+def capsule_quads(start, end, radius: float):
+    """Cylinder from ``start`` to ``end`` with a hemispherical cap on each end."""
+    a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    side = frustum_quads(a, b, radius, radius)
+    return _join([side, hemisphere_quads(b, b - a, radius), hemisphere_quads(a, a - b, radius)])
+
+
+def mesh_quads(vertices, faces):
+    """Triangles as quads with the last corner repeated; no stripes."""
+    triangles = np.asarray(vertices, dtype=float)[np.asarray(faces, dtype=int)]
+    return np.concatenate((triangles, triangles[:, 2:3]), axis=1), np.zeros(len(triangles), dtype=bool)
+
+
 def _join(pieces):
     return np.concatenate([p[0] for p in pieces]), np.concatenate([p[1] for p in pieces])
 
@@ -90,6 +133,14 @@ def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarra
                              item.get("inner_radius", 0.0))
     if kind == "ellipsoid":
         return ellipsoid_quads(item["center"], item["semi_axes"], item["rotation"])
+    if kind == "torus":
+        return torus_quads(item["center"], item["axis"], item["major_radius"], item["minor_radius"])
+    if kind == "hemisphere":
+        return hemisphere_quads(item["center"], item["axis"], item["radius"])
+    if kind == "capsule":
+        return capsule_quads(item["start"], item["end"], item["radius"])
+    if kind == "mesh":
+        return mesh_quads(item["vertices"], item["faces"])
     if kind == "box":
         floor = 1e-3 * size
         return box_quads(item["center"], np.maximum(np.asarray(item["size"], dtype=float), floor), item["rotation"])

@@ -17,6 +17,7 @@ from rbi.viz.motion import body_size, shifted
 
 AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
 """Colours of the principal axes of the smallest, middle and largest moment."""
+MAX_LEGEND_PARTS = 14
 LONGEST_AXIS_FRACTION = 0.75
 """Half-length of the axis of the largest moment, as a fraction of the body's size."""
 
@@ -47,6 +48,11 @@ def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivo
         "times": [0.0], "quaternions": [[0.0, 0.0, 0.0, 1.0]], "tilt_deg": [0.0], "omega": [0.0],
         "trace": [com_shifted], "trail_seconds": 0.0,
     }
+
+
+def part_count(parts: list[dict[str, Any]]) -> int:
+    """Written parts among the primitives (the copies of a pattern count once)."""
+    return len({item.get("part", index) for index, item in enumerate(parts)})
 
 
 def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
@@ -94,20 +100,25 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     if data.get("pivot") is not None:
         ax.scatter(*data["pivot"], color="black", s=70, marker="^", depthshade=False, zorder=12)
         handles.append(Line2D([], [], color="black", marker="^", ls="none", label="pivot (origin of the axes)"))
-    seen_hole = False
+    seen_hole, listed = False, set()
     for index, item in enumerate(data["parts"]):
+        part = item.get("part", index)
         if item.get("hole"):
             if not seen_hole:
                 handles.append(Patch(facecolor=HOLE_RGBA, edgecolor="#b02020", label="hole (subtracted)"))
                 seen_hole = True
             continue
-        if index < 14:
-            colour = "#333333" if item["kind"] == "point" else PALETTE[index % len(PALETTE)]
-            name = item.get("name") or f"parts[{index}]"
-            extra = " (box of equal inertia)" if item.get("stand_in") else ""
+        if part in listed:
+            continue
+        listed.add(part)
+        if len(listed) <= MAX_LEGEND_PARTS:
+            colour = "#333333" if item["kind"] == "point" else PALETTE[part % len(PALETTE)]
+            name = item.get("name") or f"parts[{part}]"
+            copies = sum(1 for other in data["parts"] if other.get("part", -1) == part)
+            extra = (f" ×{copies}" if copies > 1 else "") + (" (box of equal inertia)" if item.get("stand_in") else "")
             handles.append(Patch(facecolor=colour, label=f"{name}: {item['shape']}{extra}"))
-    if len(data["parts"]) > 14:
-        handles.append(Patch(facecolor="white", label=f"… {len(data['parts'])} parts in all"))
+    if len(listed) > MAX_LEGEND_PARTS:
+        handles.append(Patch(facecolor="white", label=f"… {part_count(data['parts'])} parts in all"))
     fig.legend(handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5, frameon=False)
     _frame(ax, quads, com, data)
     unit = data["length_unit"]
