@@ -131,6 +131,14 @@ def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MeshV
     return MeshVolumeProperties(volume, centroid, inertia)
 
 
+def enclosed_volume(vertices: np.ndarray, faces: np.ndarray) -> float:
+    """Signed volume the mesh encloses (L³): positive when wound outward, negative inside out."""
+    vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
+    corners = vertices[np.asarray(faces, dtype=np.int64).reshape(-1, 3)]
+    reference = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
+    return float(_tetra_sums(corners - reference)[0].sum())
+
+
 def bounding_box_volume(vertices: np.ndarray) -> float:
     """Volume of the axis-aligned box around the vertices (L³): the scale against which an
     enclosed volume counts as none."""
@@ -163,11 +171,10 @@ def mesh_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
     if defects.misoriented_edges:
         return (f"not consistently wound: {defects.misoriented_edges} edge{'s' * (defects.misoriented_edges != 1)} "
                 f"run the same way in both of their triangles (some faces point inward)")
-    props = enclosed_volume_properties(vertices, faces)
-    box = bounding_box_volume(vertices)
-    if not abs(props.volume) > VOLUME_RTOL * box:
+    volume = enclosed_volume(vertices, faces)
+    if not abs(volume) > VOLUME_RTOL * bounding_box_volume(vertices):
         return "encloses no volume (the surface is flat or folds onto itself)"
-    if props.volume < 0:
-        return (f"inside out: the enclosed volume is negative ({props.volume:.6g}); every face is wound "
+    if volume < 0:
+        return (f"inside out: the enclosed volume is negative ({volume:.6g}); every face is wound "
                 f"clockwise seen from outside")
     return None
