@@ -129,3 +129,11 @@ def test_help_has_examples(command):
     proc = run_rbi_inprocess(command, "--help")
     assert proc.returncode == 0
     assert "Examples:" in proc.stdout and f"rbi {command} " in proc.stdout
+
+
+def test_radii_in_csv_are_numbered_like_the_moments(write_spec):
+    path = write_spec("parts:\n  - {shape: box, mass: 12.0, size: [1, 2, 3], center: [0, 0, 0]}\n")
+    header, row = run_rbi_inprocess("principal", path, "--format", "csv").stdout.splitlines()[:2]
+    values = dict(zip(header.split(","), row.split(",")))
+    # box 1 × 2 × 3, 12 kg: moments m(b² + c²)/12 → 5, 10, 13; k_i² = I_i / m
+    assert [float(values[f"radii_of_gyration_{i}"]) ** 2 for i in (1, 2, 3)] == pytest.approx([5 / 12, 10 / 12, 13 / 12])

@@ -158,7 +158,10 @@ def principal(file: SpecFile, about: AboutOption = "com", units: UnitsOption = N
             t,
         )
 
-    emit(format.value, result, table)
+    # CSV: radii numbered like the moments they belong to (radii_of_gyration_1 ...), not _x, _y, _z
+    csv_row = {k: v for k, v in result.items() if k != "radii_of_gyration"}
+    csv_row |= {f"radii_of_gyration_{i}": k for i, k in enumerate(radii, start=1)}
+    emit(format.value, result, table, csv_rows=[csv_row])
 
 
 def momentum(

@@ -69,16 +69,24 @@ class RobotLink:
     def label(self, word: str) -> str:
         return f"{word}[{self.index}]" + (f" ({self.name})" if self.name is not None else "")
 
-    def rotation_matrix(self) -> np.ndarray | None:
-        """Inertial frame → link frame, or None for the identity."""
-        from rbi.core.rotation import euler_matrix, quaternion_to_matrix
-
-        if self.rpy is not None:  # roll, pitch, yaw about the fixed x, y, z axes
-            return euler_matrix(np.asarray(self.rpy), "xyz")
+    def spec_rotation(self) -> dict[str, Any] | None:
+        """The rotation (inertial frame → link frame) as a spec ``rotation:`` mapping: URDF/SDF
+        roll, pitch, yaw as Euler angles about the fixed x, y, z axes, MJCF's quaternion as it
+        is; None when the frames coincide."""
+        if self.rpy is not None:
+            return {"euler_deg": [math.degrees(a) for a in self.rpy], "sequence": "xyz"}
         if self.quaternion is not None:
-            q = np.asarray(self.quaternion, dtype=float)
-            return quaternion_to_matrix(q / np.linalg.norm(q))
+            return {"quaternion": [float(v) for v in self.quaternion]}
         return None
+
+    def rotation_matrix(self) -> np.ndarray | None:
+        """Inertial frame → link frame, exactly as rbi reads the spec's rotation; None for the
+        identity."""
+        from rbi.spec.models import Rotation
+        from rbi.spec.translate import rotation_matrix
+
+        rotation = self.spec_rotation()
+        return None if rotation is None else rotation_matrix(Rotation.model_validate(rotation))
 
     def inertia_in_link_axes(self) -> np.ndarray:
         """The inertia about the centre of mass in the link frame's axes, kg·m²."""
@@ -390,10 +398,9 @@ def link_spec(robot: RobotFile, link: RobotLink) -> dict[str, Any]:
         "inertia": {"ixx": float(I[0, 0]), "iyy": float(I[1, 1]), "izz": float(I[2, 2]),
                     "ixy": float(I[0, 1]), "ixz": float(I[0, 2]), "iyz": float(I[1, 2])},
     }
-    if link.rpy is not None:
-        part["rotation"] = {"euler_deg": [math.degrees(a) for a in link.rpy], "sequence": "xyz"}
-    elif link.quaternion is not None:
-        part["rotation"] = {"quaternion": [float(v) for v in link.quaternion]}
+    rotation = link.spec_rotation()
+    if rotation is not None:
+        part["rotation"] = rotation
     return {
         "name": part["name"],
         "units": {"length": "m", "mass": "kg"},
