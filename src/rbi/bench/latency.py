@@ -1,9 +1,10 @@
-"""Whole-process latency: how long a user waits for ``rbi inertia`` and ``rbi simulate``,
-compared with starting Python and importing numpy (the floor for any numpy program).
+"""Whole-process latency: how long a user waits for ``rbi --help``, ``rbi inertia`` and
+``rbi simulate``, compared with starting the same Python and importing numpy (the floor for any
+numpy program), and what a first ``rbi simulate`` in a fresh HOME costs against a later one.
 
-Each command runs once untimed (so the OS file cache is warm, as on
-a machine that has run rbi before), then ``repeats`` times; the median is reported, and the
-ratio to the median of ``python -c "import numpy"`` measured in the same run.
+Each command runs once untimed (so the OS file cache is warm, as on a machine that has run rbi
+before), then ``repeats`` rounds in which every command runs once; the median is reported, and
+the ratio to the median of ``python -c "import numpy"`` measured in the same rounds.
 """
 
 from __future__ import annotations
@@ -27,13 +28,31 @@ FULL_REPEATS = 11
 Progress = Callable[[str], None]
 
 
+TARGETS = {
+    "rbi inertia bodies/top.yaml": 2.0,
+    "rbi inertia bodies/top.yaml --format json": 2.0,
+    "rbi --help": 1.3,
+    "rbi simulate bodies/top.yaml --spin 200 --tilt 10": 2.5,
+}
+"""Issue 9's limits on whole-process time, as multiples of ``python -c "import numpy"``."""
+
+FIRST_RUN_TARGET = 1.3
+"""Issue 9: the first ``rbi simulate`` with a fresh HOME at most this multiple of a later one."""
+
+
 def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[str, list[str]]]:
-    """(label, argv) of every timed command; the first is the baseline."""
+    """(label, argv) of every timed command; the first is the baseline (this Python, the one rbi
+    runs on)."""
     rbi = rbi_command()
+    top = str(bodies / "top.yaml")
     out = [
         ('python -c "import numpy"', [sys.executable, "-c", "import numpy"]),
-        ("rbi inertia bodies/top.yaml", rbi + ["inertia", str(bodies / "top.yaml"), "--format", "json"]),
+        ("rbi --help", rbi + ["--help"]),
+        ("rbi --version", rbi + ["--version"]),
+        ("rbi inertia bodies/top.yaml", rbi + ["inertia", top]),
+        ("rbi inertia bodies/top.yaml --format json", rbi + ["inertia", top, "--format", "json"]),
         ("rbi principal bodies/top_bolted.yaml", rbi + ["principal", str(bodies / "top_bolted.yaml"), "--format", "json"]),
+        ("rbi simulate bodies/top.yaml --spin 200 --tilt 10", rbi + ["simulate", top, "--spin", "200", "--tilt", "10"]),
         ("rbi simulate bodies/top_bolted.yaml --spin 200",
          rbi + ["simulate", str(bodies / "top_bolted.yaml"), "--spin", "200", "--format", "json"]),
     ]
@@ -44,17 +63,43 @@ def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[st
     return out
 
 
-def time_process(argv: list[str]) -> tuple[float, int, str]:
+def first_run(bodies: Path, repeats: int) -> dict:
+    """The first ``rbi simulate`` in a fresh, empty HOME (and cache folder) against the run just
+    after it in the same HOME, ``repeats`` times with a new HOME each time; medians and their
+    ratio. Nothing is compiled or cached at run time, so the two should match (the package's own
+    files are installed and in the OS file cache either way)."""
+    import os
+
+    argv = rbi_command() + ["simulate", str(bodies / "top.yaml"), "--spin", "200", "--tilt", "10"]
+    firsts, laters, messages = [], [], []
+    for _ in range(repeats):
+        with tempfile.TemporaryDirectory(prefix="rbi-bench-home-") as home:
+            env = dict(os.environ, HOME=home, XDG_CACHE_HOME=os.path.join(home, ".cache"),
+                       XDG_CONFIG_HOME=os.path.join(home, ".config"))
+            seconds, status, message = time_process(argv, env)
+            if status != 0:
+                return {"error": f"exit {status}: {message}"}
+            firsts.append(seconds)
+            laters.append(time_process(argv, env)[0])
+            messages.append(message)
+            left = sorted(str(p.relative_to(home)) for p in Path(home).rglob("*"))
+    first, later = statistics.median(firsts), statistics.median(laters)
+    return {"command": "rbi simulate bodies/top.yaml --spin 200 --tilt 10", "first_median_s": first,
+            "later_median_s": later, "ratio": first / later, "repeats": repeats, "target": FIRST_RUN_TARGET,
+            "files_left_in_home": left, "compiling_line": any("compil" in m.lower() for m in messages)}
+
+
+def time_process(argv: list[str], env: dict | None = None) -> tuple[float, int, str]:
     """Wall seconds, exit status and the last line of stderr of one run."""
     start = time.perf_counter()
-    proc = subprocess.run(argv, capture_output=True, text=True, timeout=600)
+    proc = subprocess.run(argv, capture_output=True, text=True, timeout=600, env=env)
     elapsed = time.perf_counter() - start
     last = proc.stderr.strip().splitlines()[-1] if proc.stderr.strip() else ""
     return elapsed, proc.returncode, last
 
 
 def planned_steps(quick: bool) -> int:
-    return 4 if quick else 6
+    return len(commands(Path("."), None)) + 1 + (0 if quick else 2)
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
@@ -67,20 +112,33 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
             n = 10**6
             masses, positions = random_cloud(n)
             cloud = dict(write_cloud(Path(tmp), masses, positions), points=n)
+        timed = []
         for label, argv in commands(bodies, cloud):
             progress(f"latency: {label}")
             _, status, message = time_process(argv)  # warm-up (and a check that it works)
             if status != 0:
                 rows.append({"command": label, "error": f"exit {status}: {message}"})
                 continue
-            times = [time_process(argv)[0] for _ in range(repeats)]
-            rows.append({"command": label, "median_s": statistics.median(times), "best_s": min(times),
-                         "spread": spread(times), "repeats": repeats})
+            rows.append({"command": label, "times": []})
+            timed.append((rows[-1], argv))
+        # round-robin: each round times every command once, so a change in the machine's load
+        # during the run hits the baseline and the commands alike
+        for _ in range(repeats):
+            for row, argv in timed:
+                row["times"].append(time_process(argv)[0])
+        for row, _ in timed:
+            times = row.pop("times")
+            row.update({"median_s": statistics.median(times), "best_s": min(times), "spread": spread(times),
+                        "repeats": repeats})
+        progress("latency: first rbi simulate in a fresh HOME")
+        first = first_run(bodies, 3 if quick else 7)
     baseline = rows[0].get("median_s")
     for row in rows:
         if baseline and "median_s" in row:
             row["ratio_to_numpy_import"] = row["median_s"] / baseline
-    return {"baseline": rows[0]["command"], "commands": rows}
+        if row["command"] in TARGETS:
+            row["target"] = TARGETS[row["command"]]
+    return {"baseline": rows[0]["command"], "commands": rows, "first_run": first}
 
 
 def spread(values: list[float]) -> float:

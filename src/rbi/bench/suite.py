@@ -4,13 +4,16 @@ from __future__ import annotations
 
 from typing import Callable
 
-from rbi.bench import latency, throughput, workprecision
+from rbi.bench import kernel, largespec, latency, sweep, throughput, workprecision
 from rbi.bench.timing import machine
 
 SECTIONS = {
+    "kernel": kernel,
     "workprecision": workprecision,
     "throughput": throughput,
+    "largespec": largespec,
     "latency": latency,
+    "sweep": sweep,
 }
 """Every section by name, in the order they run."""
 

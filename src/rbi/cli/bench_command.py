@@ -12,7 +12,7 @@ import typer
 from rbi.cli.options import FormatOption, OutputFormat
 from rbi.spec.errors import InputError
 
-SECTION_NAMES = ("workprecision", "throughput", "latency")
+SECTION_NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep")
 
 
 def bench(
@@ -20,15 +20,19 @@ def bench(
                                                         "tolerances and sizes, fewer repeats.")] = False,
     only: Annotated[Optional[str], typer.Option(
         "--only", metavar="SECTIONS",
-        help="Comma-separated sections to run: workprecision, throughput, latency (default: all).")] = None,
+        help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
+             "sweep (default: all).")] = None,
     plot: Annotated[Optional[str], typer.Option(
-        "--plot", metavar="FILE.png", help="Write a log–log plot of error against time (needs matplotlib).")] = None,
+        "--plot", metavar="FILE.png", help="Write a log–log plot of error against time, .png, .svg or .pdf (needs matplotlib: "
+                                 "pip install '.[plot]' from rbi's source folder).")] = None,
     write_docs: Annotated[Optional[str], typer.Option(
         "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md).")] = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
-    """Measure what accuracy costs and how fast rbi is: error against time for each integrator
-    and the chapter's set-up, mass properties of 10³…10⁶ point masses, whole-process latency."""
+    """Measure what accuracy costs and how fast rbi is, each target against its baseline measured in
+    the same run: the kernel against the chapter's set-up and a minimal loop, error against time
+    for each integrator, mass properties of 10³…10⁶ point masses, large specs against a bare YAML
+    load, whole-process latency against importing numpy, sweep throughput and memory."""
     from rbi.bench import suite
     from rbi.cli import bench_report
     from rbi.cli.render import emit
@@ -36,11 +40,13 @@ def bench(
     sections = _sections(only)
     if plot and "workprecision" not in sections:
         raise InputError("--plot: needs the workprecision section (drop --only or include it)")
+    from rbi.cli.output import check_distinct, output_target, write_output
+
+    plot_target = output_target(plot, "--plot", ("png", "svg", "pdf")) if plot is not None else None
+    docs_target = output_target(write_docs, "--write-docs", ("md",)) if write_docs is not None else None
+    check_distinct([plot_target, docs_target])
     if plot:
-        _check_writable(plot, "--plot")
         _check_matplotlib()
-    if write_docs:
-        _check_writable(write_docs, "--write-docs")
     command = _command_line(quick, only, plot, write_docs)
     from rbi.bench.paths import bodies_folder
 
@@ -52,17 +58,18 @@ def bench(
     with _progress(format, suite.planned_steps(quick, sections)) as step:
         result = suite.run(quick, sections, step)
     result["command"] = command
+    result["targets"] = bench_report.targets(result)
     result["headline"] = bench_report.headline(result)
 
     if plot:
         from rbi.bench.workprecision import plot as draw
 
-        draw(result["workprecision"], plot)
+        write_output(plot_target, writer=lambda temp: draw(result["workprecision"], temp))
     if write_docs:
         link = None
         if plot:
             link = _relative_link(Path(plot), Path(write_docs))
-        Path(write_docs).write_text(bench_report.markdown(result, command, link), encoding="utf-8")
+        write_output(docs_target, bench_report.markdown(result, command, link))
         print(f"rbi: wrote {write_docs}", file=sys.stderr)
     emit(format.value, result, lambda: bench_report.tables(result), csv_rows=bench_report.csv_rows(result))
 
@@ -77,17 +84,10 @@ def _sections(only: str | None) -> list[str]:
     return chosen
 
 
-def _check_writable(path: str, option: str) -> None:
-    folder = Path(path).resolve().parent
-    if not folder.is_dir():
-        raise InputError(f"{option}: {path}: folder {folder} does not exist")
-
-
 def _check_matplotlib() -> None:
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        raise InputError("--plot: needs matplotlib: pip install 'rbi[plot]' (or pip install matplotlib)") from None
+    from rbi.cli.plot import require_matplotlib
+
+    require_matplotlib()
 
 
 def _command_line(quick: bool, only: str | None, plot: str | None, write_docs: str | None) -> str:

@@ -29,6 +29,104 @@ def _times(value: float | None) -> str:
     return f"{value:,.0f}×" if value >= 100 else f"{value:.3g}×"
 
 
+# --- targets (issues 9 and 10) ------------------------------------------------------------
+
+def _target(issue: int, what: str, measured: float | None, limit: float, at_least: bool, baseline: str,
+            detail: str = "") -> dict:
+    met = None if measured is None else (measured >= limit if at_least else measured <= limit)
+    return {"issue": issue, "target": what, "measured": measured, "limit": limit,
+            "comparison": "≥" if at_least else "≤", "baseline": baseline, "met": met, "detail": detail}
+
+
+def targets(result: dict) -> list[dict]:
+    """Every speed target of issues 9 and 10 that this run measured: the ratio, its limit and the
+    baseline it was measured against (in the same run)."""
+    out = []
+    k = result.get("kernel")
+    if k:
+        chapter = (f"the chapter's set-up (scipy RK45, rtol 1e-8, Python RHS): {number(k['chapter']['seconds'], 3)} s, "
+                   f"error {_sci(k['chapter']['orientation_error_deg'])}°")
+        out.append(_target(9, f"in-process simulate at defaults ({k['case']['spec']}, {k['case']['duration']:g} s) "
+                              "÷ the chapter's set-up, speed-up", k["ratio_default"],
+                           k["targets"]["ratio_default"], True, chapter,
+                           f"rbi {number(k['default']['seconds'], 3)} s, error "
+                           f"{_sci(k['default']['orientation_error_deg'])}°"))
+        best = k.get("best_matching")
+        out.append(_target(9, "the same at equal-or-better error, speed-up", k.get("ratio_best_matching"),
+                           k["targets"]["ratio_best_matching"], True, chapter,
+                           "no rbi tolerance reached the chapter's error" if not best else
+                           f"rbi at rtol {best['rtol']:g}: {number(best['seconds'], 3)} s, error "
+                           f"{_sci(best['orientation_error_deg'])}°"))
+        m = k["minimal_loop"]
+        same = "same steps and samples" if m["same_steps"] and m["same_samples"] else "DIFFERENT steps or samples"
+        out.append(_target(9, "in-process simulate at defaults ÷ a minimal loop with the same DOP853 steps, time",
+                           k["ratio_to_minimal_loop"], k["targets"]["ratio_to_minimal_loop"], False,
+                           f"rbi.sim._dop853.integrate_minimal: {number(m['seconds'], 3)} s ({same})",
+                           f"simulate {number(k['default']['seconds'], 3)} s, {k['default']['steps']:,} steps"))
+    lat = result.get("latency")
+    if lat:
+        first = lat.get("first_run") or {}
+        if "ratio" in first:
+            out.append(_target(9, f"first `{first['command']}` in a fresh HOME ÷ a later one, time", first["ratio"],
+                               first["target"], False, f"the run after it: {number(first['later_median_s'], 3)} s",
+                               f"first {number(first['first_median_s'], 3)} s; median of {first['repeats']} fresh "
+                               f"HOMEs; files left in HOME: {len(first['files_left_in_home'])}"))
+        elif "error" in first:
+            out.append(_target(9, "first rbi simulate in a fresh HOME ÷ a later one", None, 1.3, False, "", first["error"]))
+        for row in lat["commands"]:
+            if "target" in row:
+                out.append(_target(9, f"`{row['command']}` as a whole process, time", row.get("ratio_to_numpy_import"),
+                                   row["target"], False, f"{lat['baseline']}: {number(lat['commands'][0].get('median_s'), 3)} s"
+                                   if "median_s" in lat["commands"][0] else lat["baseline"],
+                                   row.get("error") or f"{number(row['median_s'], 3)} s median of {row['repeats']}"))
+    ls = result.get("largespec")
+    if ls:
+        for row in ls.get("specs", []) or [{"error": ls.get("error")}]:
+            ratio = row.get("ratio")
+            label = f"{row.get('n_parts', 0):,} × {row.get('shape', '?')}" if "n_parts" in row else "large specs"
+            base = row.get("baseline_s", row.get("bare_yaml_s"))
+            out.append(_target(9, f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
+                               ratio, ls["target"], False,
+                               "bare yaml.load(f, Loader=yaml.CSafeLoader) in a plain Python" +
+                               (f": {number(base, 3)} s" if isinstance(base, float) else ""),
+                               row.get("error") or ""))
+    sw = result.get("sweep")
+    if sw:
+        single, loop, sweep = sw["single_run"], sw["process_loop"], sw["sweep"]
+        out.append(_target(10, f"`rbi sweep` throughput over {sweep['runs']:,} runs ÷ (cores × single-run rate)",
+                           sw["ratio_to_cores_x_single"], sw["targets"]["ratio_to_cores_x_single"], True,
+                           f"{sw['cores']} cores × {number(single['runs_per_second'], 3)} runs/s (simulate, one run "
+                           f"after another, {single['runs']} grid points)",
+                           f"sweep {number(sweep['runs_per_second'], 3)} runs/s ({number(sweep['seconds'], 3)} s)"))
+        out.append(_target(10, "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
+                           sw["ratio_to_process_loop"], sw["targets"]["ratio_to_process_loop"], True,
+                           f"{loop['runs']} processes: {number(loop['runs_per_second'], 3)} runs/s",
+                           f"sweep {number(sweep['runs_per_second'], 3)} runs/s"))
+        mem = sw["memory"]
+        out.append(_target(10, f"peak resident memory of a streaming sweep of {mem.get('runs', 0):,} runs, MB",
+                           mem.get("peak_rss_mb"), sw["targets"]["peak_rss_mb"], False, "500 MB (absolute)",
+                           mem.get("error") or f"RSS {number(mem['rss_first_quarter_mb'], 3)} MB in the first quarter, "
+                           f"{number(mem['rss_last_quarter_mb'], 3)} MB in the last ({mem['rows_written']:,} rows)"))
+    return out
+
+
+TARGET_COLUMNS = ["issue", "target", "measured", "limit", "met", "baseline (same run)", "detail"]
+
+
+def target_rows(rows: list[dict]) -> list[list[str]]:
+    def value(x):
+        return "—" if x is None else (_times(x) if not isinstance(x, float) or x >= 0 else number(x, 3))
+
+    out = []
+    for r in rows:
+        measured = r["measured"]
+        shown = "—" if measured is None else (number(measured, 3) if "MB" in r["target"] else _times(measured))
+        limit = number(r["limit"], 3) if "MB" in r["target"] else _times(r["limit"])
+        met = {True: "yes", False: "NO", None: "—"}[r["met"]]
+        out.append([str(r["issue"]), r["target"], shown, f"{r['comparison']} {limit}", met, r["baseline"], r["detail"]])
+    return out
+
+
 # --- headline --------------------------------------------------------------------------------
 
 def headline(result: dict) -> list[str]:
@@ -90,6 +188,14 @@ def tables(result: dict):
         return Table(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
 
     parts: list[Any] = [Text(machine_line(result), style="dim")]
+    if result.get("targets"):
+        t = table("Targets of issues 9 and 10, each against its baseline measured in this run")
+        for header in TARGET_COLUMNS:
+            t.add_column(header, justify="right" if header in ("measured", "limit") else "left",
+                         no_wrap=header in ("measured", "limit", "met"))
+        for row in target_rows(result["targets"]):
+            t.add_row(*row)
+        parts.append(t)
     for case in result.get("workprecision", {}).get("cases", []):
         t = table(f"Work-precision: {case['name']} ({case['spec']}, ω₀ = {_vector(case['omega0'])} rad/s, "
                   f"{case['duration']:g} s) — reference: {reference_text(case)}")
@@ -248,6 +354,13 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
         "",
     ]
     out += [f"- {line}" for line in headline(result)]
+    if result.get("targets"):
+        out += ["", "## Targets", "",
+                "Each target of issues 9 (kernel, start-up, large specs) and 10 (sweep) with the baseline it "
+                "was measured against in this same run.", "",
+                _md_table(TARGET_COLUMNS, target_rows(result["targets"]))]
+    out += _kernel_markdown(result.get("kernel"))
+    out += _sweep_markdown(result.get("sweep"))
     wp = result.get("workprecision")
     if wp:
         out += ["", "## Work against precision", "",
@@ -291,6 +404,51 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
                 f"median is compared with `{lat['baseline']}` measured in the same run.", "",
                 _md_table(LATENCY_COLUMNS, latency_rows(lat))]
     return "\n".join(out) + "\n"
+
+
+def _kernel_markdown(k: dict | None) -> list[str]:
+    if not k:
+        return []
+    rows = [[f"{t['rtol']:g}", _sci(t["orientation_error_deg"]), _sci(t["omega_error"]), f"{t['steps']:,}",
+             "yes" if t["no_worse"] else "no", "—" if t["seconds"] is None else number(t["seconds"], 3),
+             "—" if t["seconds"] is None else _times(k["chapter"]["seconds"] / t["seconds"])] for t in k["trials"]]
+    return ["", "## The kernel against its baselines", "",
+            f"`{k['case']['spec']}`, ω₀ = {_vector(k['case']['omega0'])} rad/s, {k['case']['duration']:g} s, "
+            f"{k['case']['samples']} samples, in this process with the compiled kernel loaded. The chapter's set-up "
+            f"took {number(k['chapter']['seconds'], 3)} s ({k['chapter']['steps']:,} steps, final orientation error "
+            f"{_sci(k['chapter']['orientation_error_deg'])}°); `simulate` at its defaults (rtol "
+            f"{k['default']['rtol']:g}) {number(k['default']['seconds'], 3)} s; the minimal loop "
+            f"(`rbi.sim._dop853.integrate_minimal`: the same DOP853 steps without chunking, step budget, counters "
+            f"or the result object, called on prepared arrays) {number(k['minimal_loop']['seconds'], 3)} s with "
+            f"{k['minimal_loop']['steps']:,} steps (same steps: {k['minimal_loop']['same_steps']}, same samples bit "
+            f"for bit: {k['minimal_loop']['same_samples']}). Errors are against rbi at rtol 1e-14. The fastest "
+            "tolerance at the chapter's error or better:", "",
+            _md_table(["rtol", "orient. error [deg]", "ω error [rad/s]", "steps", "no worse than chapter",
+                       "time [s]", "chapter ÷ this"], rows)]
+
+
+def _sweep_markdown(sw: dict | None) -> list[str]:
+    if not sw:
+        return []
+    g, mem = sw["grid"], sw["memory"]
+    out = ["", "## Sweep throughput and memory", "",
+           f"Grid: spin {g['spin'][0]:g}–{g['spin'][1]:g} rad/s × {g['spin'][2]}, tilt {g['tilt_deg'][0]:g}–"
+           f"{g['tilt_deg'][1]:g}° × {g['tilt_deg'][2]}, {g['duration']:g} s a run, default rtol, on "
+           f"{sw['cores']} cores: `{sw['sweep']['command']}` ran in this process in "
+           f"{number(sw['sweep']['seconds'], 3)} s ({number(sw['sweep']['runs_per_second'], 3)} runs/s, "
+           f"{_times(sw['ratio_to_single'])} the single-run rate). The single-run rate is `simulate` called "
+           f"for {sw['single_run']['runs']} grid points one after another in this process; the process loop is "
+           f"`rbi simulate FILE --spin S --tilt T --duration {g['duration']:g}` for "
+           f"{sw['process_loop']['runs']} grid points."]
+    if "error" in mem:
+        return out + ["", f"Memory: the child sweep failed: {mem['error']}"]
+    out += ["", f"Memory: `{mem['command']}` as a child process: peak resident memory "
+                f"{number(mem['peak_rss_mb'], 3)} MB over {mem['rows_written']:,} rows streamed in "
+                f"{number(mem['seconds'], 3)} s; resident memory sampled while it ran (flat means bounded):", "",
+            _md_table(["time [s]", "RSS [MB]", "CSV written [MB]"],
+                      [[number(s["seconds"], 3), number(s["rss_mb"], 3), number(s["csv_bytes"] / 2**20, 3)]
+                       for s in mem["samples"]])]
+    return out
 
 
 # --- CSV -------------------------------------------------------------------------------------

@@ -357,3 +357,119 @@ def derivative(const double[::1] y, const double[:, ::1] inertia, const double[:
         raise ValueError("derivative: y (7,), inertia and inertia_inv (3, 3), c (3,) expected")
     rhs(&y[0], &inertia[0, 0], &inertia_inv[0, 0], &c[0], out)
     return [out[i] for i in range(NSTATE)]
+
+
+cdef Py_ssize_t _minimal_loop(double* y, const double* t_samples, Py_ssize_t n, double* out, const double* I,
+                              const double* Iinv, const double* c, double rtol, double omega_ref) noexcept nogil:
+    """DOP853 from t = 0 to ``t_samples[n - 1]`` in one straight loop: no chunks, no resuming,
+    no step budget, no counters but the step count, no failure exits. The same arithmetic as
+    :func:`advance`, so the same steps and the same samples."""
+    cdef double K[16][7]
+    cdef double F[7][7]
+    cdef double y_new[7]
+    cdef double tmp[7]
+    cdef double t = 0.0, h, t_end = t_samples[n - 1], t_new, step, err, factor, rate, acc, dy, x, v
+    cdef Py_ssize_t k = 0, steps = 0
+    cdef int i, j, s, m
+    cdef bint rejected = False
+    while k < n and t_samples[k] <= t:
+        for i in range(NSTATE):
+            out[k * NSTATE + i] = y[i]
+        k += 1
+    if k >= n:
+        return 0
+    rhs(y, I, Iinv, c, K[0])
+    rate = sqrt(y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
+    if omega_ref > rate:
+        rate = omega_ref
+    h = 0.25 * pow(rtol, 0.125) / rate if rate > 0.0 else t_end - t
+    while k < n:
+        t_new = t + h
+        if t_new >= t_end:
+            t_new = t_end
+        step = t_new - t
+        if not step > 0.0:  # the step underflowed: give up rather than loop forever
+            return -1
+        for s in range(1, 12):
+            stage_state(y, K, s, step, tmp)
+            rhs(tmp, I, Iinv, c, K[s])
+        for i in range(NSTATE):
+            acc = 0.0
+            for j in range(12):
+                acc += DOP853_B[j] * K[j][i]
+            y_new[i] = y[i] + step * acc
+        rhs(y_new, I, Iinv, c, K[12])
+        err = error_norm(K, step, y, y_new, rtol, omega_ref)
+        if err > 1.0:
+            factor = SAFETY * pow(err, ERROR_EXPONENT)
+            h = step * (factor if factor > MIN_FACTOR else MIN_FACTOR)
+            rejected = True
+            continue
+        if err == 0.0:
+            factor = MAX_FACTOR
+        else:
+            factor = SAFETY * pow(err, ERROR_EXPONENT)
+            if factor > MAX_FACTOR:
+                factor = MAX_FACTOR
+        if rejected and factor > 1.0:
+            factor = 1.0
+        rejected = False
+        if t_samples[k] < t_new:
+            for s in range(13, 16):
+                stage_state(y, K, s, step, tmp)
+                rhs(tmp, I, Iinv, c, K[s])
+            for i in range(NSTATE):
+                dy = y_new[i] - y[i]
+                F[0][i] = dy
+                F[1][i] = step * K[0][i] - dy
+                F[2][i] = 2.0 * dy - step * (K[12][i] + K[0][i])
+                for m in range(4):
+                    acc = 0.0
+                    for j in range(16):
+                        acc += DOP853_D[m][j] * K[j][i]
+                    F[3 + m][i] = step * acc
+            while k < n and t_samples[k] < t_new:
+                x = (t_samples[k] - t) / step
+                for i in range(NSTATE):
+                    v = 0.0
+                    for m in range(6, -1, -1):
+                        v += F[m][i]
+                        if (6 - m) % 2 == 0:
+                            v *= x
+                        else:
+                            v *= (1.0 - x)
+                    out[k * NSTATE + i] = y[i] + v
+                normalise_quaternion(&out[k * NSTATE])
+                k += 1
+        for i in range(NSTATE):
+            y[i] = y_new[i]
+        normalise_quaternion(y)
+        t = t_new
+        h = step * factor
+        steps += 1
+        for i in range(NSTATE):
+            K[0][i] = K[12][i]
+        while k < n and t_samples[k] <= t:
+            for i in range(NSTATE):
+                out[k * NSTATE + i] = y[i]
+            k += 1
+    return steps
+
+
+def integrate_minimal(double[::1] y, const double[::1] t_samples, const double[:, ::1] inertia,
+                      const double[:, ::1] inertia_inv, const double[::1] c, double rtol, double omega_ref,
+                      double[:, ::1] out):
+    """The benchmark's baseline (``rbi bench``, section kernel): the smallest loop that takes
+    the same DOP853 steps as :func:`integrate` and gives the same samples, with none of the
+    machinery a command needs (chunks for progress and Ctrl-C, a step budget, counters,
+    failure statuses, shape checks beyond memory safety). Fills ``out`` (N, 7) and returns the
+    number of accepted steps (−1 if the step size underflowed); ``y`` (7,) ends as the final state. Not used by rbi's commands."""
+    if y.shape[0] != NSTATE or out.shape[0] != t_samples.shape[0] or out.shape[1] != NSTATE \
+            or t_samples.shape[0] < 1 or inertia.shape[0] != 3 or inertia.shape[1] != 3 \
+            or inertia_inv.shape[0] != 3 or inertia_inv.shape[1] != 3 or c.shape[0] != 3:
+        raise ValueError("integrate_minimal: y (7,), out (N, 7), inertia (3, 3), c (3,) expected")
+    cdef Py_ssize_t steps
+    with nogil:
+        steps = _minimal_loop(&y[0], &t_samples[0], t_samples.shape[0], &out[0, 0], &inertia[0, 0],
+                              &inertia_inv[0, 0], &c[0], rtol, omega_ref)
+    return steps

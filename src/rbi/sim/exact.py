@@ -110,12 +110,9 @@ def _pi_incomplete(n: float, phi: np.ndarray, m: float) -> np.ndarray:
 
 
 def _pi_complete(n: float, m: float) -> float:
-    from scipy.special import elliprf, elliprj
+    from rbi.sim.elliptic import ellippi
 
-    value = float(elliprf(0.0, 1.0 - m, 1.0))
-    if n != 0.0:
-        value += n / 3.0 * float(elliprj(0.0, 1.0 - m, 1.0, 1.0 - n))
-    return value
+    return ellippi(n, m)
 
 
 class _Elliptic:
@@ -123,12 +120,12 @@ class _Elliptic:
     integral ``G(n; u) = ∫₀^u du' / (1 − n sn²u')`` for any real u."""
 
     def __init__(self, m: float) -> None:
-        from scipy.special import ellipk
+        from rbi.sim.elliptic import ellipk
 
         if not 0.0 <= m < 1.0:
             raise NotIntegrable(f"elliptic parameter m = {m!r} outside [0, 1) (the motion is on a separatrix)")
         self.m = m
-        self.K = float(ellipk(m))
+        self.K = ellipk(m)  # scalars in plain Python: the facts of a run need no scipy import
 
     def functions(self, u: np.ndarray):
         """(sn, cn, dn, am_reduced, j) with u = 2K j + r, r in [−K, K); am_reduced = am(r)."""
@@ -146,9 +143,9 @@ class _Elliptic:
         return 2.0 * j * _pi_complete(n, self.m) + _pi_incomplete(n, am, self.m)
 
     def F(self, phi: float) -> float:
-        from scipy.special import ellipkinc
+        from rbi.sim.elliptic import ellipkinc
 
-        return float(ellipkinc(phi, self.m))
+        return ellipkinc(phi, self.m)
 
 
 # --- solutions ---------------------------------------------------------------------------------
@@ -385,8 +382,7 @@ class LagrangeTop:
         self.sigma0 = math.copysign(self.ell.F(math.asin(math.sqrt(ratio))), u_dot0 if u_dot0 != 0 else (1.0 if ratio > 0.5 else -1.0))
         self.n_plus = self.delta / (1.0 - self.u1)
         self.n_minus = -self.delta / (1.0 + self.u1)
-        s0 = np.array([self.sigma0])
-        self.J0 = (float(self.ell.G(self.n_plus, s0)[0]), float(self.ell.G(self.n_minus, s0)[0]))
+        self._J0: tuple[float, float] | None = None
         self.description = "Lagrange top (Jacobi elliptic functions, elliptic integrals)"
 
     def _roots(self, u_dot0: float) -> tuple[float, float, float]:
@@ -420,6 +416,15 @@ class LagrangeTop:
             polished = [self.u0, r1, r2]
         polished.sort()
         return polished[0], polished[1], polished[2]
+
+    @property
+    def J0(self) -> tuple[float, float]:
+        """G(n±; σ₀): the third-kind integrals at the start (computed when a state is asked for,
+        so that :meth:`facts` needs no scipy)."""
+        if self._J0 is None:
+            s0 = np.array([self.sigma0])
+            self._J0 = (float(self.ell.G(self.n_plus, s0)[0]), float(self.ell.G(self.n_minus, s0)[0]))
+        return self._J0
 
     def _angles(self, t: np.ndarray):
         sigma = self.sigma_rate * t + self.sigma0

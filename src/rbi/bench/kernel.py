@@ -1,0 +1,136 @@
+"""The simulation kernel's speed targets, each against a baseline measured in the same run.
+
+On the bolted top (``bodies/top_bolted.yaml``, upright, 200 rad/s, 4 s, 481 samples; 0.5 s in a
+quick run), in this process, with the compiled kernel already loaded:
+
+- ``rbi.sim.api.simulate`` at its defaults against the seed chapter's set-up (scipy RK45, rtol
+  1e-8, atol 1e-10, Python right-hand side; :mod:`rbi.sim.baselines`): target ≥ 3,000×;
+- the fastest rbi tolerance whose final orientation and ω errors are no larger than the
+  chapter's (errors against rbi at rtol 1e-14) against the same chapter run: target ≥ 6,000×;
+- ``simulate`` at defaults against :func:`rbi.sim._dop853.integrate_minimal`, the smallest loop
+  that takes the same DOP853 steps (checked here: same step count, same samples bit for bit),
+  called directly on prepared arrays: target ≤ 1.3× (what ``simulate`` adds around the kernel:
+  checks, arrays, chunking for progress and Ctrl-C, the result object).
+"""
+
+from __future__ import annotations
+
+import statistics
+import time
+from typing import Callable
+
+import numpy as np
+
+from rbi.bench import workprecision
+
+Progress = Callable[[str], None]
+
+TRIAL_RTOLS = (1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
+"""Tolerances tried for the fastest run at the chapter's error or better."""
+
+TARGETS = {"ratio_default": 3000.0, "ratio_best_matching": 6000.0, "ratio_to_minimal_loop": 1.3}
+
+
+def _median_seconds(call: Callable[[], object], min_seconds: float, max_repeats: int = 2000) -> tuple[float, int]:
+    times: list[float] = []
+    spent = 0.0
+    while len(times) < 5 or (spent < min_seconds and len(times) < max_repeats):
+        start = time.perf_counter()
+        call()
+        times.append(time.perf_counter() - start)
+        spent += times[-1]
+    return statistics.median(times), len(times)
+
+
+def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: float):
+    """``(call, result)``: a no-argument call of the minimal loop on arrays prepared once (as a
+    hand-written program would hold them), and where it writes ``(y, out)``."""
+    from rbi.sim._dop853 import integrate_minimal
+    from rbi.sim.api import sample_times
+
+    t = sample_times(duration, samples)
+    q0 = np.asarray(q0, dtype=float)
+    start = np.concatenate((q0 / np.linalg.norm(q0), np.asarray(omega0, dtype=float)))
+    inertia = np.ascontiguousarray(scene.inertia, dtype=float)
+    inertia_inv = np.ascontiguousarray(scene.inertia_inv, dtype=float)
+    c = np.ascontiguousarray(scene.gravity_moment, dtype=float)
+    omega_ref = max(scene.natural_rate, 0.0)
+    y = start.copy()
+    out = np.empty((t.size, 7))
+    steps = [0]
+
+    def call():
+        y[:] = start
+        steps[0] = integrate_minimal(y, t, inertia, inertia_inv, c, rtol, omega_ref, out)
+
+    return call, (y, out, steps)
+
+
+def planned_steps(quick: bool) -> int:
+    return 4
+
+
+def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+    from rbi.sim.api import DEFAULT_RTOL, simulate
+    from rbi.sim.compiled import integrator
+
+    integrator()  # load once, outside every timing
+    case = workprecision.cases(quick)[0]
+    scene, q0, omega0 = workprecision.scene_of(case)
+    min_seconds = 0.3 if quick else 1.5
+
+    progress("kernel: reference and the chapter's set-up")
+    reference, _ = workprecision.reference_of(case, scene, q0, omega0, quick)
+    chapter, chapter_s, _ = workprecision.timed_run(scene, q0, omega0, case, *workprecision.CHAPTER, 0.0)
+    chapter_err = workprecision.errors(scene, chapter, reference)
+
+    def simulate_call(rtol=None):
+        return lambda: simulate(scene, q0, omega0, case.duration, case.samples, rtol=rtol)
+
+    progress("kernel: rbi at its defaults and the minimal loop")
+    default = simulate_call()()
+    default_err = workprecision.errors(scene, default, reference)
+    call, (_, out, steps) = minimal_loop_call(scene, q0, omega0, case.duration, case.samples, DEFAULT_RTOL)
+    call()
+    same_steps = steps[0] == default.steps
+    same_samples = bool(np.array_equal(out[:, :4], default.q) and np.array_equal(out[:, 4:], default.omega))
+    # interleave the two timings so that a change in the machine's load hits both alike
+    default_times, minimal_times = [], []
+    for _ in range(5):
+        default_times.append(_median_seconds(simulate_call(), min_seconds / 5)[0])
+        minimal_times.append(_median_seconds(call, min_seconds / 5)[0])
+    default_s, minimal_s = statistics.median(default_times), statistics.median(minimal_times)
+
+    progress("kernel: the fastest tolerance at the chapter's error or better")
+    trials = []
+    for rtol in TRIAL_RTOLS:
+        trajectory = simulate_call(rtol)()
+        err = workprecision.errors(scene, trajectory, reference)
+        no_worse = (err["orientation_error_deg"] <= chapter_err["orientation_error_deg"]
+                    and err["omega_error"] <= chapter_err["omega_error"])
+        seconds = _median_seconds(simulate_call(rtol), min_seconds / 3)[0] if no_worse else None
+        trials.append({"rtol": rtol, "orientation_error_deg": err["orientation_error_deg"],
+                       "omega_error": err["omega_error"], "steps": trajectory.steps, "no_worse": no_worse,
+                       "seconds": seconds})
+    matching = [t for t in trials if t["no_worse"]]
+    best = min(matching, key=lambda t: t["seconds"]) if matching else None
+
+    progress("kernel: done")
+    return {
+        "case": {"name": case.name, "spec": f"bodies/{case.spec}", "omega0": list(case.omega0),
+                 "duration": case.duration, "samples": case.samples},
+        "chapter": {"seconds": chapter_s, "steps": chapter.steps, "rtol": workprecision.CHAPTER[1],
+                    "orientation_error_deg": chapter_err["orientation_error_deg"],
+                    "omega_error": chapter_err["omega_error"]},
+        "default": {"seconds": default_s, "steps": default.steps, "rtol": default.rtol,
+                    "orientation_error_deg": default_err["orientation_error_deg"],
+                    "omega_error": default_err["omega_error"]},
+        "minimal_loop": {"seconds": minimal_s, "steps": steps[0], "same_steps": same_steps,
+                         "same_samples": same_samples},
+        "trials": trials,
+        "best_matching": best,
+        "ratio_default": chapter_s / default_s,
+        "ratio_best_matching": chapter_s / best["seconds"] if best else None,
+        "ratio_to_minimal_loop": default_s / minimal_s,
+        "targets": TARGETS,
+    }

@@ -1,0 +1,189 @@
+"""``rbi sweep`` throughput and memory (issue 10), each against a baseline measured in the same run.
+
+- Throughput: a grid of ``rbi sweep bodies/top.yaml --spin 150:260:100 --tilt 0.01:1:100`` (10⁴
+  runs of 4 s at the default rtol; 20 × 10 runs of 0.5 s in a quick run), run in this process
+  through the command itself (``--out`` a CSV), in runs per second. Baselines: the single-run
+  in-process rate (``rbi.sim.api.simulate`` on one run after another, over an evenly spaced
+  sample of the same grid points) times the number of cores (target ≥ 0.8), and a loop of
+  ``rbi simulate FILE --spin S --tilt T`` processes over a sample of the same runs (target ≥ 300×).
+- Memory: a child ``rbi sweep`` of 10⁵ short runs (0.02 s, 2 samples; 10⁴ in a quick run)
+  streaming to ``--out``; its resident memory is sampled while it runs, against the rows
+  written so far, and its peak is read from the kernel's accounting (``ru_maxrss``). A flat
+  profile (the last quarter no higher than the first by more than a few MB) is what bounds a
+  10⁶-run sweep; the target is 500 MB.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import os
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from pathlib import Path
+from typing import Callable
+
+from rbi.bench.paths import bodies_folder, rbi_command
+
+Progress = Callable[[str], None]
+
+TARGETS = {"ratio_to_cores_x_single": 0.8, "ratio_to_process_loop": 300.0, "peak_rss_mb": 500.0}
+
+
+def grid(quick: bool) -> dict:
+    if quick:
+        return {"spin": (150.0, 260.0, 20), "tilt": (0.01, 1.0, 10), "duration": 0.5}
+    return {"spin": (150.0, 260.0, 100), "tilt": (0.01, 1.0, 100), "duration": 4.0}
+
+
+def _axis_text(axis) -> str:
+    return f"{axis[0]:g}:{axis[1]:g}:{axis[2]}"
+
+
+def _values(axis) -> list[float]:
+    import numpy as np
+
+    return [float(v) for v in np.linspace(axis[0], axis[1], axis[2])]
+
+
+def sample_runs(g: dict, count: int) -> list[tuple[float, float]]:
+    """``count`` (spin, tilt) points spread evenly over the grid, in run order."""
+    spins, tilts = _values(g["spin"]), _values(g["tilt"])
+    total = len(spins) * len(tilts)
+    picks = sorted({int(round(i * (total - 1) / max(count - 1, 1))) for i in range(count)})
+    return [(spins[k // len(tilts)], tilts[k % len(tilts)]) for k in picks]
+
+
+def _in_process_rbi(args: list[str]) -> None:
+    from rbi.cli.app import app
+
+    with contextlib.redirect_stdout(io.StringIO()):
+        status = app(args=args, prog_name="rbi", standalone_mode=False)
+    if status not in (None, 0):
+        raise RuntimeError(f"rbi {' '.join(args)}: exit {status}")
+
+
+def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:
+    """Runs per second of ``simulate`` called once per run, one after another, in this process
+    (the body loaded once, as a sweep does)."""
+    from rbi.sim.api import simulate
+    from rbi.sim.scene import initial_state, scene_from_properties
+    from rbi.spec.load import load_body
+    from rbi.spec.units import gravity_in
+
+    body = load_body(spec)
+    scene = scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit))
+    samples = 481  # as rbi sweep and rbi simulate by default
+    simulate(scene, *initial_state(runs[0][1], [0.0, 0.0, runs[0][0]]), duration, samples)  # warm
+    start = time.perf_counter()
+    for spin, tilt in runs:
+        q0, omega0 = initial_state(tilt, [0.0, 0.0, spin])
+        simulate(scene, q0, omega0, duration, samples)
+    seconds = time.perf_counter() - start
+    return {"runs": len(runs), "seconds": seconds, "runs_per_second": len(runs) / seconds}
+
+
+def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:
+    """Runs per second of a shell loop of whole ``rbi simulate`` processes."""
+    start = time.perf_counter()
+    for spin, tilt in runs:
+        proc = subprocess.run(rbi_command() + ["simulate", str(spec), "--spin", f"{spin!r}", "--tilt", f"{tilt!r}",
+                                               "--duration", f"{duration:g}"], capture_output=True, text=True)
+        if proc.returncode != 0:
+            raise RuntimeError(f"rbi simulate: exit {proc.returncode}: {proc.stderr.strip()[-200:]}")
+    seconds = time.perf_counter() - start
+    return {"runs": len(runs), "seconds": seconds, "runs_per_second": len(runs) / seconds}
+
+
+def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
+    out = folder / "sweep.csv"
+    args = ["sweep", str(spec), "--spin", _axis_text(g["spin"]), "--tilt", _axis_text(g["tilt"]),
+            "--duration", f"{g['duration']:g}", "--out", str(out), "--yes", "--format", "json"]
+    runs = g["spin"][2] * g["tilt"][2]
+    start = time.perf_counter()
+    _in_process_rbi(args)
+    seconds = time.perf_counter() - start
+    with open(out, encoding="utf-8") as stream:
+        lines = sum(1 for _ in stream) - 1
+    return {"command": "rbi " + " ".join(a if a != str(spec) else "bodies/top.yaml" for a in args
+                                         if not a.startswith(str(folder))).replace("--out", "--out FILE.csv"),
+            "runs": runs, "rows_written": lines, "seconds": seconds, "runs_per_second": runs / seconds}
+
+
+def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
+    """Resident memory of a child sweep streaming to --out, sampled as the rows arrive."""
+    spins = 100 if quick else 1000
+    out = folder / "memory.csv"
+    argv = rbi_command() + ["sweep", str(spec), "--spin", f"150:260:{spins}", "--tilt", "0.01:1:100",
+                            "--duration", "0.02", "--samples", "2", "--out", str(out), "--yes"]
+    runs = spins * 100
+    samples = []
+    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    start = time.perf_counter()
+    proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    status_file = Path(f"/proc/{proc.pid}/status")
+    while proc.poll() is None:
+        try:
+            rss_kb = next(int(line.split()[1]) for line in status_file.read_text().splitlines()
+                          if line.startswith("VmRSS:"))
+            size = out.stat().st_size if out.exists() else 0
+        except (OSError, StopIteration, ValueError):
+            rss_kb, size = None, 0
+        if rss_kb is not None:
+            samples.append({"seconds": round(time.perf_counter() - start, 3), "rss_mb": rss_kb / 1024,
+                            "csv_bytes": size})
+        time.sleep(0.1)
+    stderr = proc.stderr.read()
+    seconds = time.perf_counter() - start
+    peak_kb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
+    if proc.returncode != 0:
+        return {"error": f"exit {proc.returncode}: {stderr.strip()[-200:]}"}
+    with open(out, encoding="utf-8") as stream:
+        rows = sum(1 for _ in stream) - 1
+    quarter = max(1, len(samples) // 4)
+    first = [s["rss_mb"] for s in samples[:quarter]]
+    last = [s["rss_mb"] for s in samples[-quarter:]]
+    return {
+        "command": (f"rbi sweep bodies/top.yaml --spin 150:260:{spins} --tilt 0.01:1:100 --duration 0.02 "
+                    "--samples 2 --out FILE.csv --yes"),
+        "runs": runs, "rows_written": rows, "seconds": seconds,
+        # ru_maxrss of all waited-for children: the largest of any child so far (kB on Linux)
+        "peak_rss_mb": peak_kb / 1024 if peak_kb > before else max((s["rss_mb"] for s in samples), default=None),
+        "rss_first_quarter_mb": max(first) if first else None,
+        "rss_last_quarter_mb": max(last) if last else None,
+        "samples": samples[:: max(1, len(samples) // 40)],
+    }
+
+
+def planned_steps(quick: bool) -> int:
+    return 4
+
+
+def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+    from rbi.sweep.execute import available_cores
+
+    spec = bodies_folder() / "top.yaml"
+    g = grid(quick)
+    cores = available_cores()
+    with tempfile.TemporaryDirectory(prefix="rbi-bench-sweep-") as tmp:
+        folder = Path(tmp)
+        progress("sweep: the single-run in-process rate")
+        single = single_run_rate(spec, sample_runs(g, 50 if quick else 500), g["duration"])
+        progress("sweep: rbi sweep over the grid")
+        sweep = sweep_rate(spec, g, folder)
+        progress("sweep: a loop of rbi simulate processes")
+        loop = process_loop_rate(spec, sample_runs(g, 3 if quick else 10), g["duration"])
+        progress("sweep: memory while streaming")
+        memory = memory_profile(spec, quick, folder)
+    return {
+        "grid": {"spin": list(g["spin"]), "tilt_deg": list(g["tilt"]), "duration": g["duration"]},
+        "cores": cores, "single_run": single, "sweep": sweep, "process_loop": loop, "memory": memory,
+        "ratio_to_cores_x_single": sweep["runs_per_second"] / (cores * single["runs_per_second"]),
+        "ratio_to_single": sweep["runs_per_second"] / single["runs_per_second"],
+        "ratio_to_process_loop": sweep["runs_per_second"] / loop["runs_per_second"],
+        "targets": TARGETS,
+    }
