@@ -1,0 +1,67 @@
+"""`rbi show`: a picture of every bundled body, in each format, and its refusals."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+import pytest
+
+from tests.conftest import BODIES, one_line_exit_2, run_rbi, run_rbi_inprocess
+
+SPECS = sorted(p.name for p in BODIES.glob("*.yaml"))
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_every_bundled_body_is_drawn(tmp_path, name):
+    pytest.importorskip("matplotlib")
+    from PIL import Image
+
+    out = tmp_path / "body.png"
+    proc = run_rbi_inprocess("show", BODIES / name, "--out", out)
+    assert proc.returncode == 0, proc.stderr
+    image = np.asarray(Image.open(out).convert("RGB"), dtype=int)
+    assert ((image.max(axis=2) - image.min(axis=2)) > 60).sum() > 2000  # coloured parts, not an empty frame
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_every_bundled_body_has_a_page(tmp_path, name):
+    out = tmp_path / "body.html"
+    proc = run_rbi_inprocess("show", BODIES / name, "--out", out)
+    assert proc.returncode == 0, proc.stderr
+    text = out.read_text(encoding="utf-8")
+    data = json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.S).group(1))
+    assert len(data["times"]) == 1 and len(data["principal_axes"]) == 3
+
+
+def test_principal_axes_are_scaled_by_their_moments_and_labelled(tmp_path, bodies):
+    out = tmp_path / "top.html"
+    assert run_rbi_inprocess("show", bodies / "wheel_with_holes.yaml", "--out", out).returncode == 0
+    text = out.read_text(encoding="utf-8")
+    axes = json.loads(re.search(r'id="data">(.*?)</script>', text, re.S).group(1))["principal_axes"]
+    moments = [a["moment"] for a in axes]
+    lengths = [a["half_length"] for a in axes]
+    assert moments == sorted(moments)
+    np.testing.assert_allclose(np.array(lengths) / lengths[-1], np.array(moments) / moments[-1], rtol=1e-12)
+    # a wheel with evenly spaced holes: equal moments about two diameters, the largest about the axle (z)
+    assert moments[0] == pytest.approx(moments[1], rel=1e-9)
+    assert abs(axes[2]["direction"][2]) == pytest.approx(1.0, abs=1e-12)
+    assert all(a["label"].startswith(f"I{k + 1} = ") and "g·mm²" in a["label"] for k, a in enumerate(axes))
+
+
+def test_svg_end_to_end(tmp_path, bodies):
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "top.svg"
+    proc = run_rbi("show", bodies / "top_bolted.yaml", "--out", out)
+    assert proc.returncode == 0, proc.stderr
+    text = out.read_text()
+    assert "<svg" in text and "centre of mass" in text and "pivot" in text
+
+
+def test_bad_extension_and_bad_spec(tmp_path, write_spec):
+    one_line_exit_2(run_rbi_inprocess("show", BODIES / "top.yaml", "--out", tmp_path / "a.gif"), "--out")
+    bad = write_spec("parts:\n  - {name: stem, shape: cylinder, mass: 1, radius: -1, start: [0,0,0], end: [0,0,1]}\n")
+    proc = run_rbi_inprocess("show", bad, "--out", tmp_path / "a.png")
+    one_line_exit_2(proc, "stem", "radius")
+    assert not (tmp_path / "a.png").exists()
