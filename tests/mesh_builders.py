@@ -103,7 +103,7 @@ def write_binary_stl(path: Path, vertices, faces, header: bytes = b"solid writte
 def write_ascii_stl(path: Path, vertices, faces) -> Path:
     normals, tri = _normals(vertices, faces)
     lines = ["solid test"]
-    for n, t in zip(normals, tri):
+    for n, t in zip(normals.tolist(), tri.tolist()):
         lines.append(f"  facet normal {n[0]!r} {n[1]!r} {n[2]!r}")
         lines.append("    outer loop")
         lines.extend(f"      vertex {p[0]!r} {p[1]!r} {p[2]!r}" for p in t)
@@ -115,8 +115,8 @@ def write_ascii_stl(path: Path, vertices, faces) -> Path:
 
 
 def write_obj(path: Path, vertices, faces) -> Path:
-    lines = [f"v {p[0]!r} {p[1]!r} {p[2]!r}" for p in np.asarray(vertices, float)]
-    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in np.asarray(faces)]
+    lines = [f"v {p[0]!r} {p[1]!r} {p[2]!r}" for p in np.asarray(vertices, float).tolist()]
+    lines += [f"f {a + 1} {b + 1} {c + 1}" for a, b, c in np.asarray(faces).tolist()]
     Path(path).write_text("\n".join(lines) + "\n")
     return path
 
@@ -127,8 +127,8 @@ def write_ply(path: Path, vertices, faces) -> Path:
     lines = ["ply", "format ascii 1.0", f"element vertex {len(vertices)}", "property double x",
              "property double y", "property double z", f"element face {len(faces)}",
              "property list uchar int vertex_indices", "end_header"]
-    lines += [f"{p[0]!r} {p[1]!r} {p[2]!r}" for p in vertices]
-    lines += [f"3 {a} {b} {c}" for a, b, c in faces]
+    lines += [f"{p[0]!r} {p[1]!r} {p[2]!r}" for p in vertices.tolist()]
+    lines += [f"3 {a} {b} {c}" for a, b, c in faces.tolist()]
     Path(path).write_text("\n".join(lines) + "\n")
     return path
 
