@@ -117,7 +117,37 @@ def _take_flag(argv: list[str], flag: str) -> bool:
 
 
 def main() -> None:
-    """Console entry point: exit 2 with one line on bad input, never a traceback."""
+    """Console entry point: exit 2 with one line on bad input, never a traceback.
+
+    Every message printed here has control characters escaped (a spec's name or a file name
+    cannot drive the terminal) and falls back to ASCII on a terminal that cannot encode it;
+    Ctrl-C is ``rbi: interrupted`` (exit 130), SIGTERM unwinds the run so that no temporary
+    output file is left behind (exit 143).
+    """
+    import signal
+
+    from rbi.cli import terminal
+
+    terminal.prepare_streams()
+    previous_sigterm = signal.getsignal(signal.SIGTERM)
+    terminal.install_signal_handlers()
+    try:
+        _run()
+    finally:
+        try:
+            signal.signal(signal.SIGTERM, previous_sigterm if previous_sigterm is not None else signal.SIG_DFL)
+        except ValueError:  # not the main thread: nothing was installed
+            pass
+
+
+def _say(message: str) -> None:
+    """One line on stderr: ``rbi: message`` with control characters escaped."""
+    from rbi.cli.terminal import terminal_safe
+
+    print(f"rbi: {terminal_safe(message)}", file=sys.stderr)
+
+
+def _run() -> None:
     from typer._click import exceptions as click_errors
 
     from rbi.spec.errors import InputError
@@ -136,16 +166,16 @@ def main() -> None:
             status = app(args=args, prog_name="rbi", standalone_mode=False)
     except click_errors.UsageError as exc:
         command = exc.ctx.command_path if exc.ctx is not None else "rbi"
-        print(f"rbi: {exc.format_message()} (see `{command} --help`)", file=sys.stderr)
+        _say(f"{exc.format_message()} (see `{command} --help`)")
         sys.exit(2)
     except typer.Abort:
-        print("rbi: aborted", file=sys.stderr)
+        _say("aborted")
         sys.exit(130)
     except InputError as exc:
-        print(f"rbi: {exc}", file=sys.stderr)
+        _say(str(exc))
         sys.exit(2)
     except KeyboardInterrupt:
-        print("rbi: interrupted", file=sys.stderr)
+        _say("interrupted")
         sys.exit(130)
     except BrokenPipeError:  # `rbi ... | head`: the reader left; not an error of ours
         sys.stderr.close()
@@ -153,6 +183,11 @@ def main() -> None:
     except Exception as exc:  # a bug, not bad input: say so on one line unless debugging
         if os.environ.get("RBI_DEBUG"):
             raise
-        print(f"rbi: internal error: {type(exc).__name__}: {exc} (RBI_DEBUG=1 shows the traceback)", file=sys.stderr)
+    except Terminated:
+        _say("terminated")
+        raise
+        _say(f"internal error: {type(exc).__name__}: {exc} (RBI_DEBUG=1 shows the traceback)")
         sys.exit(1)
     sys.exit(status if isinstance(status, int) else 0)
+    if status == 130:  # typer turns Ctrl-C (KeyboardInterrupt) into a silent exit status 130
+        _say("interrupted")
