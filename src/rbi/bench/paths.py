@@ -5,15 +5,19 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+BENCH_BODIES = ("top.yaml", "top_bolted.yaml", "tbar.yaml")
+"""The example bodies the benchmark simulates; shipped inside the package (``rbi/data/bodies``,
+copies of the source checkout's ``bodies/``), so ``rbi bench`` works after ``pip install .``."""
+
 
 def bodies_folder() -> Path:
-    """The bundled example bodies (``bodies/`` of the source checkout)."""
-    here = Path(__file__).resolve()
-    for parent in here.parents:
-        candidate = parent / "bodies" / "top_bolted.yaml"
-        if candidate.is_file():
-            return candidate.parent
-    raise FileNotFoundError("rbi bench needs the example bodies (bodies/top_bolted.yaml) of a source checkout")
+    """The example bodies inside the installed package (``rbi/data/bodies``)."""
+    folder = Path(__file__).resolve().parents[1] / "data" / "bodies"
+    missing = [name for name in BENCH_BODIES if not (folder / name).is_file()]
+    if missing:
+        raise FileNotFoundError(f"rbi bench needs the example bodies {', '.join(missing)} in {folder}; "
+                                "this installation of rbi is incomplete: reinstall it")
+    return folder
 
 
 def rbi_command() -> list[str]:

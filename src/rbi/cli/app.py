@@ -150,6 +150,7 @@ def _say(message: str) -> None:
 def _run() -> None:
     from typer._click import exceptions as click_errors
 
+    from rbi.cli.terminal import Terminated
     from rbi.spec.errors import InputError
     from rbi.spec.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
 
@@ -177,17 +178,17 @@ def _run() -> None:
     except KeyboardInterrupt:
         _say("interrupted")
         sys.exit(130)
+    except Terminated:
+        _say("terminated")
+        raise
     except BrokenPipeError:  # `rbi ... | head`: the reader left; not an error of ours
         sys.stderr.close()
         sys.exit(0)
     except Exception as exc:  # a bug, not bad input: say so on one line unless debugging
         if os.environ.get("RBI_DEBUG"):
             raise
-    except Terminated:
-        _say("terminated")
-        raise
         _say(f"internal error: {type(exc).__name__}: {exc} (RBI_DEBUG=1 shows the traceback)")
         sys.exit(1)
-    sys.exit(status if isinstance(status, int) else 0)
     if status == 130:  # typer turns Ctrl-C (KeyboardInterrupt) into a silent exit status 130
         _say("interrupted")
+    sys.exit(status if isinstance(status, int) else 0)

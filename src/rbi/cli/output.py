@@ -29,6 +29,9 @@ from typing import IO, Callable, Iterator, Sequence
 from rbi.spec.errors import InputError
 
 STDOUT = "-"
+STDOUT_ALIASES = ("/dev/stdout", "/dev/fd/1", "/proc/self/fd/1")
+"""Paths that name standard output itself: written as a stream like ``-`` (replacing them
+would need root, and would replace the device rather than print)."""
 NAME_MAX = 255
 """Longest file name (one path component), in bytes, on the file systems rbi writes to."""
 
@@ -59,10 +62,10 @@ def output_target(path: str, option: str, formats: Sequence[str], *, inputs: Seq
     run reads (the spec), which are never overwritten. stdout_format: the format written for
     ``-``; None when the command cannot stream to standard output.
     """
-    if path == STDOUT:
+    if path == STDOUT or path in STDOUT_ALIASES:
         if stdout_format is None:
-            raise InputError(f"{option}: this output cannot go to standard output ('-'); name a file")
-        return OutputTarget(path, path, option, stdout_format)
+            raise InputError(f"{option}: this output cannot go to standard output ({path!r}); name a file")
+        return OutputTarget(STDOUT, STDOUT, option, stdout_format)
     if not path or not path.strip():
         raise InputError(f"{option}: the path is empty")
     if "\0" in path:
@@ -82,6 +85,7 @@ def output_target(path: str, option: str, formats: Sequence[str], *, inputs: Seq
         raise InputError(f"{option}: {shown}: folder {_shown(folder)} does not exist")
     if not os.access(folder, os.W_OK | os.X_OK):
         raise InputError(f"{option}: {shown}: folder {_shown(folder)} is not writable")
+    _probe(folder, option, shown)
     for source in inputs:
         if _same_file(real, source):
             raise InputError(f"{option}: {shown}: is an input of this run ({_shown(source)}); "
@@ -182,6 +186,18 @@ def _resolved(path: str, option: str) -> str:
         raise InputError(f"{option}: {shown}: is a {_kind(info.st_mode)}, not a regular file; rbi will "
                          "not replace it")
     return os.path.abspath(path)
+
+
+def _probe(folder: str, option: str, shown: str) -> None:
+    """Create and remove an empty temporary file in ``folder``: proves before any work that the
+    output can be written there (``os.access`` says yes to root even on /sys or a read-only
+    file system)."""
+    try:
+        fd, temp = tempfile.mkstemp(prefix=".rbi-", suffix=".probe", dir=folder)
+    except OSError as exc:
+        raise InputError(f"{option}: {shown}: cannot write: {exc.strerror or exc}") from None
+    os.close(fd)
+    _remove(temp)
 
 
 def _kind(mode: int) -> str:

@@ -11,6 +11,8 @@ from typing import Any, Callable, Iterable
 
 import numpy as np
 
+from rbi.cli.terminal import terminal_safe  # noqa: F401  (re-exported: tables and commands escape names with it)
+
 
 def plain(value: Any) -> Any:
     """Recursively turn numpy arrays and scalars into plain Python lists, floats and ints.
@@ -92,19 +94,35 @@ def to_csv(rows: Iterable[dict[str, Any]]) -> str:
 
 
 def _csv_cell(value: Any) -> Any:
-    """A CSV cell: floats at full precision, empty for a missing or undefined (NaN) value."""
+    """A CSV cell: floats at full precision, empty for a missing or undefined (NaN) value,
+    text made safe for spreadsheets (see :func:`spreadsheet_safe`)."""
     if value is None or (isinstance(value, float) and math.isnan(value)):
         return ""
+    if isinstance(value, str):
+        return spreadsheet_safe(value)
     return repr(value) if isinstance(value, float) else value
 
 
-def terminal_safe(text: str) -> str:
-    """``text`` with every control character (C0, DEL, C1: escape sequences, bells, carriage
-    returns) written as a visible ``\\xNN`` escape, so a name in a spec cannot set the terminal's
-    title, clear the screen or write to the clipboard."""
-    if not any(ord(c) < 32 or 127 <= ord(c) < 160 for c in text):
-        return text
-    return "".join(f"\\x{ord(c):02x}" if ord(c) < 32 or 127 <= ord(c) < 160 else c for c in text)
+_FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+
+
+def spreadsheet_safe(text: str) -> str:
+    """A text cell a spreadsheet will not run: one starting with ``=``, ``+``, ``-``, ``@``, a
+    tab or a carriage return (a name such as ``=HYPERLINK(...)``) gets a leading ``'`` (OWASP's
+    advice against CSV injection), and control characters are escaped as in
+    :func:`terminal_safe`. Numbers are never touched, nor is text that reads as a number
+    (``-0.5``)."""
+    if text.startswith(_FORMULA_STARTS) and not _is_number(text):
+        text = "'" + text
+    return terminal_safe(text)
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return text.strip() == text
 
 
 def number(value: float | None, digits: int = 6) -> str:
@@ -144,15 +162,30 @@ def _color_system() -> str | None:
 
 
 def stdout_console():
-    from rich.console import Console
-
-    return Console(highlight=False, soft_wrap=False, color_system=_color_system())
+    return _safe_console(highlight=False, soft_wrap=False, color_system=_color_system())
 
 
 def stderr_console():
-    from rich.console import Console
+    return _safe_console(stderr=True, highlight=False, color_system=_color_system())
 
-    return Console(stderr=True, highlight=False, color_system=_color_system())
+
+def _safe_console(**options):
+    """A rich Console whose printed text never carries a control character from data: the last
+    line of defence behind :func:`rbi.cli.tables.plain_text` (rich's own colour and cursor codes
+    are styles and control segments, not text, and pass unchanged)."""
+    from rich.console import Console
+    from rich.segment import Segment
+
+    class SafeConsole(Console):
+        def render(self, renderable, options=None):
+            for segment in super().render(renderable, options):
+                if segment.control or not segment.text:
+                    yield segment
+                else:
+                    text = terminal_safe(segment.text, keep="\n")
+                    yield segment if text is segment.text else Segment(text, segment.style, segment.control)
+
+    return SafeConsole(**options)
 
 
 def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None) -> None:

@@ -11,6 +11,7 @@ from rich.markup import escape
 from rich.table import Table
 
 from rbi.cli.render import matrix_digits, number, terminal_safe, vector_text
+from rbi.cli.terminal import ERROR_HANDLER, ascii_only
 
 
 def plain_text(text: str) -> str:
@@ -19,9 +20,35 @@ def plain_text(text: str) -> str:
     return escape(terminal_safe(text))
 
 
+class SafeTable(Table):
+    """A rich Table whose title, headers and cells never carry a control character (escaped as
+    in :func:`rbi.cli.render.terminal_safe`, before the layout so columns stay aligned), and
+    which spells rbi's symbols in ASCII (``kg*m^2``, ``deg``) when standard output cannot
+    encode them. Every table rbi prints is built on it (:func:`titled`)."""
+
+    def __init__(self, *args, title=None, **kwargs):
+        super().__init__(*args, title=_cell(title), **kwargs)
+
+    def add_column(self, header="", *args, **kwargs):
+        super().add_column(_cell(header), *args, **kwargs)
+
+    def add_row(self, *renderables, **kwargs):
+        super().add_row(*(_cell(r) for r in renderables), **kwargs)
+
+
+def _cell(value):
+    """A table string made safe (other renderables pass unchanged)."""
+    if not isinstance(value, str):
+        return value
+    value = terminal_safe(value)
+    if ascii_only():
+        value = value.encode("ascii", errors=ERROR_HANDLER).decode("ascii")
+    return value
+
+
 def titled(title: str) -> Table:
     """An empty table in rbi's style; the title is plain text (see :func:`plain_text`)."""
-    return Table(title=plain_text(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    return SafeTable(title=plain_text(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
 
 
 def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:

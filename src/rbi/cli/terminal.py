@@ -1,0 +1,132 @@
+"""What reaches the terminal: control characters from a spec shown escaped, an ASCII fallback
+for terminals that cannot encode rbi's symbols, and the signals that end a run.
+
+Imported by :func:`rbi.cli.app.main` before any command runs, so it uses the standard library
+only (``rbi --help`` stays fast).
+"""
+
+from __future__ import annotations
+
+import codecs
+import signal
+import sys
+import unicodedata
+
+_BIDI_CONTROLS = frozenset("\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
+"""Characters that reorder the text around them (right-to-left overrides, isolates, marks):
+a name holding one could make a table or message read differently from what it is."""
+
+
+def _is_unsafe(char: str) -> bool:
+    code = ord(char)
+    return code < 32 or 127 <= code < 160 or char in _BIDI_CONTROLS
+
+
+def terminal_safe(text: str, keep: str = "") -> str:
+    """``text`` with every control character (C0 such as ESC, BEL and CR; DEL; C1 such as CSI
+    and OSC) and every bidirectional override written as a visible escape (``\\x1b``,
+    ``\\u202e``), so a name in a spec cannot set the terminal's title, clear the screen, write
+    to the clipboard or reorder what is shown. Characters in ``keep`` (e.g. a newline) pass."""
+    if not any(_is_unsafe(c) for c in text):
+        return text
+    return "".join(_escaped(c) if _is_unsafe(c) and c not in keep else c for c in text)
+
+
+def _escaped(char: str) -> str:
+    code = ord(char)
+    return f"\\x{code:02x}" if code < 256 else f"\\u{code:04x}"
+
+
+# --- terminals that cannot encode every character ------------------------------------------
+
+SUPERSCRIPTS = {"⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5", "⁶": "6", "⁷": "7", "⁸": "8",
+                "⁹": "9", "⁻": "-", "ᵀ": "T"}
+"""Superscripts, spelled ``^`` and the plain characters (``m²`` → ``m^2``, ``10⁻⁴`` → ``10^-4``)."""
+
+ASCII_SPELLINGS = {
+    "·": "*", "×": "x", "÷": "/", "−": "-", "–": "-", "—": "-", "…": "...",
+    "°": "deg", "±": "+/-", "µ": "u", "½": "1/2", "≈": "~", "≤": "<=", "≥": ">=", "→": "->", "√": "sqrt",
+    "∝": "~", "∫": "int", "⟂": "_|_", "⊗": "(x)", "•": "*", "★": "*", "‖": "||",
+    "ω": "omega", "θ": "theta", "φ": "phi", "ψ": "psi", "α": "alpha", "β": "beta", "ε": "eps",
+    "λ": "lambda", "ν": "nu", "π": "pi", "σ": "sigma", "τ": "tau", "Ω": "Omega", "Σ": "Sigma",
+    "Π": "Pi", "ᵢ": "_i", "₀": "0", "₁": "1", "₂": "2", "₃": "3",
+    # rich's table rules and its ellipsis, should an ASCII box not be chosen
+    "─": "-", "━": "-", "│": "|", "┃": "|", "┼": "+", "╇": "+", "╸": "-", "╺": "-",
+}
+"""Readable ASCII for the symbols rbi prints (units such as ``kg·m²``, Greek letters), used
+only when the terminal's encoding cannot show the symbol itself."""
+
+ERROR_HANDLER = "rbi-ascii"
+
+
+def _ascii_fallback(error: UnicodeError):
+    """A codec error handler: each unencodable character as its ASCII spelling, else its
+    decomposition's ASCII letters (``é`` → ``e``), else a ``\\uXXXX`` escape."""
+    if not isinstance(error, UnicodeEncodeError):
+        raise error
+    pieces = []
+    text = error.object
+    for index in range(error.start, error.end):
+        char = text[index]
+        spelling = ASCII_SPELLINGS.get(char)
+        if char in SUPERSCRIPTS:
+            after_superscript = index > 0 and text[index - 1] in SUPERSCRIPTS
+            spelling = ("" if after_superscript else "^") + SUPERSCRIPTS[char]
+        elif spelling is None:
+            base = unicodedata.normalize("NFKD", char).encode("ascii", "ignore").decode("ascii")
+            spelling = base if base.isprintable() and base else _escaped(char)
+        pieces.append(spelling)
+    return "".join(pieces), error.end
+
+
+codecs.register_error(ERROR_HANDLER, _ascii_fallback)
+
+
+def encodes_unicode(stream) -> bool:
+    """Whether ``stream`` writes an encoding that can hold every character (UTF-8/16/32); a
+    text buffer without an encoding (``io.StringIO``) holds any text."""
+    encoding = getattr(stream, "encoding", None)
+    return encoding is None or encoding.lower().replace("_", "-").startswith("utf")
+
+
+def prepare_streams() -> None:
+    """Let stdout and stderr fall back to ASCII spellings (:data:`ASCII_SPELLINGS`) instead of
+    raising UnicodeEncodeError on a terminal whose encoding (``PYTHONIOENCODING=cp1252``,
+    ``latin-1``, ``ascii``) cannot show a character. UTF-8 streams are left alone; JSON is
+    always ASCII and unaffected."""
+    for stream in (sys.stdout, sys.stderr):
+        if stream is not None and hasattr(stream, "reconfigure") and not encodes_unicode(stream):
+            try:
+                stream.reconfigure(errors=ERROR_HANDLER)
+            except (ValueError, OSError):  # a closed or detached stream: nothing to print to
+                pass
+
+
+def ascii_only() -> bool:
+    """Whether standard output cannot show rbi's symbols, so tables should spell them in ASCII."""
+    return not encodes_unicode(sys.stdout)
+
+
+# --- signals --------------------------------------------------------------------------------
+
+class Terminated(SystemExit):
+    """Raised by the SIGTERM handler: unwinds like an exit (a half-written output's temporary
+    file is removed on the way), then ends the process with status 143 (128 + SIGTERM)."""
+
+    def __init__(self) -> None:
+        super().__init__(128 + signal.SIGTERM)
+
+
+def _on_sigterm(signum, frame) -> None:
+    raise Terminated()
+
+
+def install_signal_handlers() -> None:
+    """SIGTERM unwinds the run (see :class:`Terminated`) instead of killing the process where it
+    stands, so no temporary output file is left behind. Ctrl-C (SIGINT) already raises
+    KeyboardInterrupt. Only the main thread may install handlers; elsewhere nothing changes."""
+    try:
+        if signal.getsignal(signal.SIGTERM) in (signal.SIG_DFL, None):
+            signal.signal(signal.SIGTERM, _on_sigterm)
+    except ValueError:  # not the main thread (an embedding program): leave its handlers alone
+        pass
