@@ -23,7 +23,7 @@ def animate(
     gravity: Annotated[Optional[float], typer.Option("--gravity", "-g", metavar="G",
                                                      help="Gravity in m/s² (default 9.81).")] = None,
     duration: Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")] = 4.0,
-    rtol: Annotated[Optional[float], typer.Option("--rtol", help="Integrator tolerance (default 1e-12).")] = None,
+    rtol: Annotated[Optional[float], typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (default 1e-12).")] = None,
     max_steps: Annotated[Optional[int], typer.Option("--max-steps", metavar="N",
                                                      help="Most integration steps the run may take.")] = None,
     yes: Annotated[bool, typer.Option("--yes", "-y", help="Run even past the estimated step budget.")] = False,

@@ -18,12 +18,12 @@ from rbi import __version__
 
 COMMANDS: dict[str, tuple[str, str, str]] = {
     # name: (module, function, the one-line summary `rbi --help` shows)
-    "inertia": ("rbi.cli.mass_commands", "inertia", "Mass, centre of mass and inertia matrix about a point, in any frame."),
+    "inertia": ("rbi.cli.mass_commands", "inertia", "Mass, centre of mass and inertia about a point, in any frame."),
     "principal": ("rbi.cli.mass_commands", "principal", "Principal moments (ascending) and right-handed principal axes."),
-    "parts": ("rbi.cli.parts_command", "parts", "Per-part mass, centre of mass, inertia and share of the body's inertia."),
+    "parts": ("rbi.cli.parts_command", "parts", "Per-part mass, centre of mass, inertia and share of the whole."),
     "momentum": ("rbi.cli.mass_commands", "momentum", "Angular momentum and kinetic energy for a given spin."),
-    "dynamics": ("rbi.cli.dynamics_command", "dynamics", "Newton-Euler: the force and torque for a motion, or the motion for a load."),
-    "simulate": ("rbi.cli.simulate_command", "simulate", "Motion of a top on its pivot or of a free body, with its accuracy."),
+    "dynamics": ("rbi.cli.dynamics_command", "dynamics", "Newton–Euler: the load for a motion, or the motion for a load."),
+    "simulate": ("rbi.cli.simulate_command", "simulate", "Motion of a top on its pivot or of a free body, with its error."),
     "sweep": ("rbi.cli.sweep_command", "sweep", "Many simulations at once: stability maps and tolerance studies."),
     "animate": ("rbi.cli.animate_command", "animate", "Animation of the motion: a 3D HTML page or a GIF."),
     "show": ("rbi.cli.show_command", "show", "Picture of the body as specified: parts, CoM, principal axes."),
@@ -73,8 +73,12 @@ def _build_command(name: str):
     fast_params.quiet_pydantic_plugins()
     module_name, function_name, summary = COMMANDS[name]
     callback = getattr(importlib.import_module(module_name), function_name)
-    return get_command_from_info(CommandInfo(name=name, callback=callback, short_help=summary),
-                                 pretty_exceptions_short=True, rich_markup_mode=None)
+    command = get_command_from_info(CommandInfo(name=name, callback=callback, short_help=summary),
+                                    pretty_exceptions_short=True, rich_markup_mode=None)
+    from rbi.cli.options import plain_argument_help
+
+    plain_argument_help(command)
+    return command
 
 
 app = typer.Typer(

@@ -32,7 +32,13 @@ def bench(
     """Measure what accuracy costs and how fast rbi is, each target against its baseline measured in
     the same run: the kernel against the chapter's set-up and a minimal loop, error against time
     for each integrator, mass properties of 10³…10⁶ point masses, large specs against a bare YAML
-    load, whole-process latency against importing numpy, sweep throughput and memory."""
+    load, whole-process latency against importing numpy, sweep throughput and memory.
+
+    \b
+    Examples:
+      rbi bench --quick
+      rbi bench --write-docs docs/performance.md --plot docs/performance-workprecision.png
+    """
     from rbi.bench import suite
     from rbi.cli import bench_report
     from rbi.cli.render import emit

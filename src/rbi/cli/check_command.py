@@ -79,7 +79,15 @@ def run_checks(body) -> list[dict[str, Any]]:
 
 
 def check(file: SpecFile, format: FormatOption = OutputFormat.table) -> None:
-    """Compare mass, centre of mass, principal moments and inertia with the spec's `expect:` block."""
+    """Compare mass, centre of mass, principal moments and inertia with the spec's `expect:` block.
+
+    Exit 0 when every expectation holds, 1 when any fails (for CI), 2 on bad input.
+
+    \b
+    Examples:
+      rbi check robot_link.yaml
+      rbi check wheel_with_holes.yaml --format json
+    """
     from rbi.cli.render import emit
     from rbi.spec.errors import InputError
     from rbi.spec.load import load_body

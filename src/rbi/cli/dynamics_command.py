@@ -31,7 +31,13 @@ def dynamics(
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Newton–Euler: force and torque for a given motion (--alpha), or the motion a force and
-    torque produce (--force/--torque). All vectors in body axes, at this instant."""
+    torque produce (--force/--torque). All vectors in body axes, at this instant.
+
+    \b
+    Examples:
+      rbi dynamics robot_link.yaml --alpha 0,0,10 --omega 0,0,2 --about pivot
+      rbi dynamics cubesat.yaml --torque 0,0,1e-3 --format json
+    """
     from rbi.core import dynamics as ne
     from rbi.core.inertia import inertia_about
     from rbi.spec.load import load_body
@@ -94,8 +100,21 @@ def dynamics(
             ("ω", "rad/s", tables.vector(w)),
             (f"α ({given})", "rad/s²", tables.vector(result["alpha"])),
             (f"a of {about_label} ({'given' if held else given})", f"{labels['length']}/s²", tables.vector(result["point_acceleration"])),
-            (f"force ({force_note})", f"{labels['mass']}·{labels['length']}/s²", tables.vector(result["force"])),
-            (f"torque about {about_label} ({found})", f"{labels['mass']}·{labels['length']}²/s²", tables.vector(result["torque"])),
+            (f"force ({force_note})", _load_unit(body, 1), tables.vector(result["force"])),
+            (f"torque about {about_label} ({found})", _load_unit(body, 2), tables.vector(result["torque"])),
         ])
 
     emit(format.value, result, table)
+
+
+def _load_unit(body, length_power: int) -> str:
+    """Unit of a force (``length_power`` 1) or torque (2) in the file's units: N and N·m in SI,
+    otherwise the file's unit with its value in N or N·m."""
+    from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
+
+    si = "N" if length_power == 1 else "N·m"
+    length = body.length_unit if length_power == 1 else f"{body.length_unit}²"
+    factor = MASS_UNITS_IN_KG[body.mass_unit] * LENGTH_UNITS_IN_M[body.length_unit] ** length_power
+    if factor == 1.0:
+        return si
+    return f"{body.mass_unit}·{length}/s² (= {factor:g} {si})"

@@ -27,7 +27,13 @@ def export(
                                            "principal frame (quat) instead of fullinertia.")] = False,
     format: FormatOption = OutputFormat.table,
 ) -> None:
-    """The <inertial> element (mass, centre of mass, inertia about it) in SI units: kg, m, kg·m²."""
+    """The <inertial> element (mass, centre of mass, inertia about it) in SI units: kg, m, kg·m².
+
+    \b
+    Examples:
+      rbi export robot_link.yaml --to urdf
+      rbi export robot_link.yaml --to mjcf --diagonal --document
+    """
     from pathlib import Path
 
     from rbi.cli.export_format import export_xml

@@ -24,7 +24,8 @@ FormatOption = Annotated[
 SpecFile = Annotated[str, typer.Argument(help="Body spec (YAML).", show_default=False, metavar="FILE")]
 AboutOption = Annotated[
     str,
-    typer.Option("--about", "-a", help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units)."),
+    typer.Option("--about", "-a", metavar="com|origin|pivot|X,Y,Z",
+                 help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units)."),
 ]
 
 
@@ -51,7 +52,11 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
         if body.pivot is None:
             raise InputError(f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none")
         return "pivot", body.pivot.tolist()
-    return "point", parse_vector(text, "--about")
+    try:
+        return "point", parse_vector(text, "--about")
+    except InputError:
+        raise InputError(f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
+                         f"commas, file units), got {text!r}") from None
 
 
 def parse_rotation(text: str) -> tuple[str, float]:
@@ -86,3 +91,30 @@ def in_output_units(body, units: str | None, *lengths):
     factor, _ = scale_factors((body.length_unit, body.mass_unit), target)
     scaled = tuple(None if v is None else [factor * float(x) for x in v] for v in lengths)
     return convert_body(body, *target), scaled
+
+
+def plain_argument_help(command) -> None:
+    """Show ``command``'s positional arguments by their metavar alone: ``rbi inertia
+    [OPTIONS] FILE`` rather than ``{FILE}`` in the usage line and ``FILE <str>`` in the list."""
+    from typer.core import TyperArgument
+
+    for param in command.params:
+        if isinstance(param, TyperArgument) and param.metavar is not None:
+            param.__class__ = _PlainArgument
+
+
+def _plain_argument_class():
+    from typer.core import TyperArgument
+
+    class PlainArgument(TyperArgument):
+        def _usage_display_name(self) -> str:
+            name = self.metavar if self.required else f"[{self.metavar}]"
+            return name if self.nargs == 1 or self.metavar.endswith("...") else name + "..."
+
+        def display_type_rich(self, ctx) -> None:
+            return None
+
+    return PlainArgument
+
+
+_PlainArgument = _plain_argument_class()

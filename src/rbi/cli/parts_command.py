@@ -20,7 +20,10 @@ def parts(file: SpecFile, format: FormatOption = OutputFormat.table) -> None:
     """Per-part breakdown: mass and its share, centre of mass, inertia about the part's own
     centre of mass, share of the body's inertia, implied density.
 
-    Example: rbi parts bodies/top_bolted.yaml --format json
+    \b
+    Examples:
+      rbi parts top_bolted.yaml
+      rbi parts wheel_with_holes.yaml --format json
     """
     from rbi.core.inertia import inertia_shares
     from rbi.spec.load import load_body

@@ -21,7 +21,14 @@ def spec_schema() -> dict[str, Any]:
 
 
 def schema(format: FormatOption = OutputFormat.table) -> None:
-    """Print the JSON Schema of the YAML spec (for editors: see docs/schema.md)."""
+    """Print the JSON Schema of the YAML spec (for editors: see docs/schema.md).
+
+    \b
+    Examples:
+      rbi schema --format json > rbi-spec.schema.json
+      # then, first line of a spec, for YAML language servers:
+      # yaml-language-server: $schema=rbi-spec.schema.json
+    """
     import json
 
     from rbi.spec.errors import InputError
@@ -61,7 +68,13 @@ def validate(
     files: Annotated[list[str], typer.Argument(help="Spec files (YAML) to check.", show_default=False, metavar="FILE...")],
     format: FormatOption = OutputFormat.table,
 ) -> None:
-    """Check spec files without computing anything: one line per problem; exit 2 if any file fails."""
+    """Check spec files without computing anything: one line per problem; exit 2 if any file fails.
+
+    \b
+    Examples:
+      rbi validate bodies/*.yaml
+      rbi validate top.yaml wheel.yaml --format json
+    """
     from rbi.cli.render import emit
 
     reports = [{"file": path, "problems": file_problems(path)} for path in files]

@@ -45,9 +45,9 @@ def simulate(
     out: Annotated[Optional[str], typer.Option("--out", "-o", metavar="FILE.csv",
                                                help="Write the trajectory as CSV (only if the run succeeds; "
                                                     "'-' for standard output).")] = None,
-    method: Annotated[str, typer.Option("--method", "-m", help=METHOD_HELP)] = "default",
+    method: Annotated[str, typer.Option("--method", "-m", metavar="NAME", help=METHOD_HELP)] = "default",
     rtol: Annotated[Optional[float], typer.Option(
-        "--rtol", help="Tolerance of the integrator (default 1e-12 for default, 1e-8 for rk45/dop853): smaller "
+        "--rtol", metavar="RTOL", help="Tolerance of the integrator (default 1e-12 for default, 1e-8 for rk45/dop853): smaller "
                        "is more accurate and slower.")] = None,
     error_estimate: Annotated[bool, typer.Option(
         "--error-estimate/--no-error-estimate",
@@ -65,7 +65,18 @@ def simulate(
                                                      "from rbi's source folder, or pip install matplotlib).")] = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
-    """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body."""
+    """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body.
+
+    Prints the conserved quantities' drift, an error estimate and, for a top, whether it
+    sleeps; --out writes the trajectory (t, quaternion, ω, tilt, precession) as CSV, --plot
+    draws it.
+
+    \b
+    Examples:
+      rbi simulate top.yaml --spin 200 --tilt 0.01 --plot top.png
+      rbi simulate top_bolted.yaml --spin 200 --duration 2 --out run.csv
+      rbi simulate tbar.yaml --omega 0.01,5,0 --duration 10 --plot flip.png
+    """
     from rbi.cli.output import check_distinct, output_target
     from rbi.sim.api import SimulationError
 

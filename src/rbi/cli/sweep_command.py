@@ -40,7 +40,7 @@ def sweep(
     duration: Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")] = 4.0,
     samples: Annotated[int, typer.Option("--samples", "-n", metavar="N",
                                          help="Samples per run the summaries are taken over (as rbi simulate).")] = 481,
-    rtol: Annotated[float, typer.Option("--rtol", help="Integrator tolerance (as rbi simulate).")] = 1e-12,
+    rtol: Annotated[float, typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (as rbi simulate).")] = 1e-12,
     gravity: Annotated[Optional[float], typer.Option("--gravity", "-g", metavar="G",
                                                      help="Gravity in m/s² (default 9.81).")] = None,
     tilt_axis: Annotated[str, typer.Option("--tilt-axis", metavar="x|y",
@@ -454,4 +454,3 @@ def _table(result, columns, rows, file):
         parts.append(spread)
     parts.append(Text("\n".join(notes)))
     return tables.stack(*parts)
-

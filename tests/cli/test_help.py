@@ -1,0 +1,59 @@
+"""Help a newcomer can live in: an example in every command's --help, whole summaries in
+`rbi --help` on an 80-column terminal, plain FILE in usage lines."""
+
+from __future__ import annotations
+
+import os
+
+import pytest
+
+from rbi.cli.app import COMMANDS
+from tests.conftest import run_rbi, run_rbi_inprocess
+
+
+def _help(*args: str) -> str:
+    saved = os.environ.get("COLUMNS")
+    os.environ["COLUMNS"] = "80"
+    try:
+        proc = run_rbi_inprocess(*args, "--help")
+    finally:
+        if saved is None:
+            os.environ.pop("COLUMNS", None)
+        else:
+            os.environ["COLUMNS"] = saved
+    assert proc.returncode == 0, proc.stderr
+    return proc.stdout
+
+
+@pytest.mark.parametrize("command", list(COMMANDS))
+def test_every_command_help_has_a_runnable_looking_example(command):
+    text = _help(command)
+    assert "Example" in text
+    assert f"rbi {command} " in text.split("Example", 1)[1]
+
+
+@pytest.mark.parametrize("command", list(COMMANDS))
+def test_usage_lines_read_naturally(command):
+    text = _help(command)
+    usage = text.splitlines()[0]
+    assert "{" not in usage and "<str>" not in text and "<float>" not in text, usage
+
+
+def test_summaries_are_whole_on_an_80_column_terminal():
+    proc = run_rbi("--help")
+    env_text = _help()
+    for text in (proc.stdout, env_text):
+        assert "..." not in text.split("Commands:", 1)[1]
+    commands = env_text.split("Commands:", 1)[1].splitlines()[1:]
+    # one line per command: no summary wrapped onto a second line
+    assert [line.split()[0] for line in commands if line.strip()] == list(COMMANDS)
+
+
+def test_every_summary_fits_in_seventy_characters():
+    assert all(len(summary) <= 70 for _, _, summary in COMMANDS.values())
+
+
+def test_about_errors_list_the_named_points(bodies):
+    proc = run_rbi_inprocess("inertia", bodies / "top.yaml", "--about", "middle")
+    assert proc.returncode == 2
+    assert all(word in proc.stderr for word in ("com", "origin", "pivot", "X,Y,Z"))
