@@ -454,3 +454,4 @@ def _table(result, columns, rows, file):
         parts.append(spread)
     parts.append(Text("\n".join(notes)))
     return tables.stack(*parts)
+
