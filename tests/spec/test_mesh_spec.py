@@ -182,7 +182,7 @@ def test_inside_out_mesh_is_refused(tmp_path):
     (b"", "file is empty"),
     (b"   \n\n", "file is empty"),
     (b"solid nothing\nendsolid nothing\n", "holds no triangles"),
-    (bytes(range(256)) * 8, "cannot be read as a STL mesh"),
+    (bytes(range(256)) * 8, "cannot be read as STL"),
 ])
 def test_empty_and_unreadable_stl(tmp_path, content, words):
     (tmp_path / "bad.stl").write_bytes(content)
@@ -191,7 +191,7 @@ def test_empty_and_unreadable_stl(tmp_path, content, words):
 
 def test_a_ply_that_is_not_a_ply_is_refused(tmp_path):
     (tmp_path / "bad.ply").write_text("this is not a ply file\n")
-    one_line_exit_2(run_rbi_inprocess("inertia", mesh_spec(tmp_path, "bad.ply")), "cannot be read as a PLY mesh")
+    one_line_exit_2(run_rbi_inprocess("inertia", mesh_spec(tmp_path, "bad.ply")), "cannot be read as PLY")
 
 
 def test_nan_vertex_and_bad_index(tmp_path):

@@ -88,7 +88,7 @@ def _parse(data: bytes, file_type: str) -> tuple[np.ndarray, np.ndarray]:
         vertices = np.asarray(mesh.vertices, dtype=float)
         faces = np.asarray(mesh.faces, dtype=np.int64)
     except Exception:  # noqa: BLE001 - any parser failure on untrusted bytes is the same user error
-        raise ValueError(f"cannot be read as a {file_type.upper()} mesh (damaged or not a mesh file)") from None
+        raise ValueError(f"cannot be read as {file_type.upper()} (damaged, or not a mesh file)") from None
     return vertices, faces
 
 
