@@ -50,8 +50,8 @@ class Pattern(_Strict):
                              "(copies in a row)" + (" (got both)" if circular else " (got neither axis nor step)"))
         if circular and self.axis is None:
             raise ValueError("axis: missing required field (the direction of the line the copies turn about)")
-        if self.axis is not None and not any(self.axis):
-            raise ValueError("axis: must not be the zero vector [0, 0, 0]")
+        if self.axis is not None:
+            _nonzero(self.axis, "axis")
         return self
 
 
