@@ -13,11 +13,29 @@ def spec_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of a body spec, generated from the pydantic models."""
     from rbi.spec.models import BodySpec
 
-    schema = BodySpec.model_json_schema(mode="validation")
+    schema = _plain_descriptions(BodySpec.model_json_schema(mode="validation"))
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "title": "rbi body spec",
     } | {k: v for k, v in schema.items() if k != "title"}
+
+
+def _plain_descriptions(node: Any) -> Any:
+    """Descriptions as editors show them: the docstrings' reStructuredText literals (double
+    backquotes) and Sphinx roles (:mod:`x`) written as plain `x`, line breaks joined."""
+    import re
+
+    if isinstance(node, dict):
+        out = {}
+        for key, value in node.items():
+            if key == "description" and isinstance(value, str):
+                value = re.sub(r":\w+:`~?([^`]+)`", r"`\1`", value).replace("``", "`")
+                value = re.sub(r"\s*\n\s*", " ", value).strip()
+            out[key] = _plain_descriptions(value)
+        return out
+    if isinstance(node, list):
+        return [_plain_descriptions(v) for v in node]
+    return node
 
 
 def schema(format: FormatOption = OutputFormat.table) -> None:

@@ -6,44 +6,44 @@ absolute number or a percentage of the expected value's magnitude.
 
 from __future__ import annotations
 
-from pydantic import model_validator
+from pydantic import Field, model_validator
 
 from rbi.spec.fields import AboutPoint, InertiaMatrix, Number, StrictModel as _Strict, Tolerance, Vector3
 
 
 class ScalarExpectation(_Strict):
-    value: Number
-    tol: Tolerance
+    value: Number = Field(description="Expected value, in the file's units.")
+    tol: Tolerance = Field(description="Allowed deviation: an absolute number in file units, or a percentage such as 1%.")
 
 
 class VectorExpectation(_Strict):
-    value: Vector3
-    tol: Tolerance
+    value: Vector3 = Field(description="Expected point [x, y, z], body frame, file units.")
+    tol: Tolerance = Field(description="Allowed deviation of each component: an absolute number in file units, or a percentage.")
 
 
 class MomentsExpectation(_Strict):
     """Principal moments (compared in ascending order) about ``about``."""
 
-    value: Vector3
-    tol: Tolerance
-    about: AboutPoint = "com"
+    value: Vector3 = Field(description="Expected principal moments, ascending, mass·length².")
+    tol: Tolerance = Field(description="Allowed deviation of each moment: an absolute number, or a percentage.")
+    about: AboutPoint = Field("com", description="Point the moments are about: com, origin, pivot or [x, y, z].")
 
 
 class InertiaExpectation(_Strict):
     """The inertia matrix about ``about``, body axes."""
 
-    value: InertiaMatrix
-    tol: Tolerance
-    about: AboutPoint = "com"
+    value: InertiaMatrix = Field(description="Expected inertia matrix, body axes, mass·length².")
+    tol: Tolerance = Field(description="Allowed deviation of each entry: an absolute number, or a percentage.")
+    about: AboutPoint = Field("com", description="Point the inertia is about: com, origin, pivot or [x, y, z].")
 
 
 class Expect(_Strict):
     """What ``rbi check`` compares: at least one of the quantities below."""
 
-    mass: ScalarExpectation | None = None
-    center_of_mass: VectorExpectation | None = None
-    moments: MomentsExpectation | None = None
-    inertia: InertiaExpectation | None = None
+    mass: ScalarExpectation | None = Field(None, description="Expected total mass.")
+    center_of_mass: VectorExpectation | None = Field(None, description="Expected centre of mass.")
+    moments: MomentsExpectation | None = Field(None, description="Expected principal moments.")
+    inertia: InertiaExpectation | None = Field(None, description="Expected inertia matrix.")
 
     @model_validator(mode="after")
     def _not_empty(self):

@@ -88,14 +88,20 @@ def _density(value: Any) -> float | str:
     return number
 
 
-def _material_spellings() -> list[str]:
-    """Names an editor should accept: each table name and alias in lower, UPPER and Title case,
-    with spaces, ``_`` or ``-`` (rbi itself ignores case and separators)."""
-    spellings = set()
-    for name in set(MATERIAL_DENSITIES_SI) | set(ALIASES):
-        for cased in (name, name.upper(), name.title()):
-            spellings |= {cased, cased.replace(" ", "_"), cased.replace(" ", "-")}
-    return sorted(spellings)
+def _material_names() -> list[str]:
+    """Each built-in material name and alias once, as the tables write it (rbi accepts any case,
+    and spaces, ``_`` or ``-`` alike)."""
+    return sorted(set(MATERIAL_DENSITIES_SI) | set(ALIASES))
+
+
+def _any_case_pattern(names: list[str]) -> str:
+    """A regular expression matching any of ``names`` in any case, a space, ``_`` or ``-``
+    standing for one another (JSON Schema patterns have no case-insensitive flag)."""
+    def one(name: str) -> str:
+        return "".join(f"[{c.lower()}{c.upper()}]" if c.isalpha() else "[ _-]" if c in " _-" else re.escape(c)
+                       for c in name)
+
+    return "^(?:" + "|".join(one(name) for name in names) + ")$"
 
 
 Density = Annotated[
@@ -104,7 +110,9 @@ Density = Annotated[
     WithJsonSchema({
         "anyOf": [
             {"type": "number", "exclusiveMinimum": 0},
-            {"type": "string", "enum": _material_spellings()},
+            {"type": "string", "enum": _material_names()},
+            {"type": "string", "pattern": _any_case_pattern(_material_names()),
+             "description": "A material name above in any case, with spaces, _ or - alike (e.g. Stainless_Steel)."},
         ],
         "description": "Mass per length³ in the file's units, or a built-in material name "
                        "(converted from kg/m³ to the file's units).",
@@ -154,7 +162,9 @@ InertiaMatrix = Annotated[
             {"type": "array", "items": _NUMBER_ROW, "minItems": 3, "maxItems": 3},
             {
                 "type": "object",
-                "properties": {k: {"type": "number"} for k in _COMPONENTS},
+                "properties": {k: {"type": "number", "description": f"I{k[1:]}, mass·length²" + (
+                    " (product of inertia, with the minus sign inside the matrix)" if k[1] != k[2] else "")}
+                    for k in _COMPONENTS},
                 "required": list(_COMPONENTS[:3]),
                 "additionalProperties": False,
             },

@@ -27,8 +27,8 @@ _Strict = StrictModel
 class Units(_Strict):
     """Units of every number in the file, inputs and outputs alike."""
 
-    length: LengthUnit = "m"
-    mass: MassUnit = "kg"
+    length: LengthUnit = Field("m", description="Length unit: m, cm, mm, in or ft.")
+    mass: MassUnit = Field("kg", description="Mass unit: kg, g or lb.")
 
 
 class Pattern(_Strict):
@@ -56,7 +56,7 @@ class Pattern(_Strict):
 
 
 class _Part(_Strict):
-    name: str | None = None
+    name: str | None = Field(None, description="A name for the part, shown in tables and error messages; unique within the body.")
     pattern: Pattern | None = Field(None, description="Repeat this part: copies about an axis line or in a row.")
 
 
@@ -64,8 +64,8 @@ class _Solid(_Part):
     """A solid with either a total ``mass`` or a ``density`` (mass per length³, or a built-in
     material name). ``subtract: true`` makes it a hole: its material is removed."""
 
-    mass: Positive | None = None
-    density: Density | None = None
+    mass: Positive | None = Field(None, description="Mass of the solid (per copy with a pattern), in the file's mass unit; give this or density.")
+    density: Density | None = Field(None, description="Mass per length³ in the file's units, or a built-in material name; give this or mass.")
     subtract: Flag = Field(False, description="Remove this solid's material (a hole) instead of adding it.")
 
     @model_validator(mode="after")
@@ -84,10 +84,10 @@ def _distinct(a: list[float], b: list[float], names: str) -> None:
 class ConePart(_Solid):
     """Solid right circular cone: ``apex`` (tip) to ``base`` (centre of the base disc)."""
 
-    shape: Literal["cone"]
-    radius: Positive
-    apex: Vector3
-    base: Vector3
+    shape: Literal["cone"] = Field(description="A solid right circular cone.")
+    radius: Positive = Field(description="Radius of the base disc.")
+    apex: Vector3 = Field(description="The tip, body frame.")
+    base: Vector3 = Field(description="Centre of the base disc, body frame.")
 
     @model_validator(mode="after")
     def _has_height(self):
@@ -98,10 +98,10 @@ class ConePart(_Solid):
 class CylinderPart(_Solid):
     """Solid circular cylinder between the centres of its end faces ``start`` and ``end``."""
 
-    shape: Literal["cylinder"]
-    radius: Positive
-    start: Vector3
-    end: Vector3
+    shape: Literal["cylinder"] = Field(description="A solid circular cylinder.")
+    radius: Positive = Field(description="Radius of the cylinder.")
+    start: Vector3 = Field(description="Centre of one end face, body frame.")
+    end: Vector3 = Field(description="Centre of the other end face, body frame.")
 
     @model_validator(mode="after")
     def _has_length(self):
@@ -112,9 +112,9 @@ class CylinderPart(_Solid):
 class PointPart(_Part):
     """A point mass at ``position``."""
 
-    shape: Literal["point"]
-    mass: Positive
-    position: Vector3
+    shape: Literal["point"] = Field(description="A point mass.")
+    mass: Positive = Field(description="Mass, in the file's mass unit.")
+    position: Vector3 = Field(description="Where the mass is, body frame.")
 
     @model_validator(mode="before")
     @classmethod
@@ -180,28 +180,28 @@ class BoxPart(_Solid):
     """Solid rectangular box: edges ``size = [a, b, c]`` along its own x, y, z axes, centred on
     ``center``, turned by ``rotation``."""
 
-    shape: Literal["box"]
-    center: Vector3
-    size: PositiveVector3
-    rotation: Rotation | None = None
+    shape: Literal["box"] = Field(description="A solid rectangular box.")
+    center: Vector3 = Field(description="Centre of the box, body frame.")
+    size: PositiveVector3 = Field(description="Edge lengths [a, b, c] along the box's own x, y, z axes.")
+    rotation: Rotation | None = Field(None, description="How the box's axes are turned into body axes (about its centre); default: aligned.")
 
 
 class SpherePart(_Solid):
     """Solid sphere."""
 
-    shape: Literal["sphere"]
-    center: Vector3
-    radius: Positive
+    shape: Literal["sphere"] = Field(description="A solid sphere.")
+    center: Vector3 = Field(description="Centre of the sphere, body frame.")
+    radius: Positive = Field(description="Radius of the sphere.")
 
 
 class SphericalShellPart(_Solid):
     """Thick spherical shell between ``inner_radius`` and ``outer_radius`` (equal radii: a thin
     shell, given by `mass`)."""
 
-    shape: Literal["spherical_shell"]
-    center: Vector3
-    outer_radius: Positive
-    inner_radius: NonNegative
+    shape: Literal["spherical_shell"] = Field(description="A hollow sphere (thick, or thin with equal radii).")
+    center: Vector3 = Field(description="Centre of the shell, body frame.")
+    outer_radius: Positive = Field(description="Outer radius.")
+    inner_radius: NonNegative = Field(description="Inner radius, at most outer_radius (equal: a thin shell, given by mass).")
 
     @model_validator(mode="after")
     def _radii(self):
@@ -212,11 +212,11 @@ class SphericalShellPart(_Solid):
 class TubePart(_Solid):
     """Hollow circular cylinder (outer and inner radius) between the centres of its end faces."""
 
-    shape: Literal["tube"]
-    start: Vector3
-    end: Vector3
-    outer_radius: Positive
-    inner_radius: NonNegative
+    shape: Literal["tube"] = Field(description="A hollow circular cylinder.")
+    start: Vector3 = Field(description="Centre of one end face, body frame.")
+    end: Vector3 = Field(description="Centre of the other end face, body frame.")
+    outer_radius: Positive = Field(description="Outer radius.")
+    inner_radius: NonNegative = Field(description="Inner radius (the bore), at most outer_radius.")
 
     @model_validator(mode="after")
     def _checks(self):
@@ -229,11 +229,11 @@ class FrustumPart(_Solid):
     """Solid truncated cone: a disc of ``start_radius`` centred on ``start``, one of
     ``end_radius`` on ``end``."""
 
-    shape: Literal["frustum"]
-    start: Vector3
-    end: Vector3
-    start_radius: NonNegative
-    end_radius: NonNegative
+    shape: Literal["frustum"] = Field(description="A solid truncated cone.")
+    start: Vector3 = Field(description="Centre of the disc of start_radius, body frame.")
+    end: Vector3 = Field(description="Centre of the disc of end_radius, body frame.")
+    start_radius: NonNegative = Field(description="Radius at start (0 for a cone's tip).")
+    end_radius: NonNegative = Field(description="Radius at end (0 for a cone's tip).")
 
     @model_validator(mode="after")
     def _checks(self):
@@ -247,19 +247,19 @@ class EllipsoidPart(_Solid):
     """Solid ellipsoid: ``semi_axes = [a, b, c]`` along its own x, y, z axes, turned by
     ``rotation``."""
 
-    shape: Literal["ellipsoid"]
-    center: Vector3
-    semi_axes: PositiveVector3
-    rotation: Rotation | None = None
+    shape: Literal["ellipsoid"] = Field(description="A solid ellipsoid.")
+    center: Vector3 = Field(description="Centre of the ellipsoid, body frame.")
+    semi_axes: PositiveVector3 = Field(description="Semi-axes [a, b, c] along the ellipsoid's own x, y, z axes.")
+    rotation: Rotation | None = Field(None, description="How the ellipsoid's axes are turned into body axes (about its centre); default: aligned.")
 
 
 class RodPart(_Part):
     """Thin straight rod (a line mass) from ``start`` to ``end``: `mass` only."""
 
-    shape: Literal["rod"]
-    mass: Positive
-    start: Vector3
-    end: Vector3
+    shape: Literal["rod"] = Field(description="A thin straight rod (a line mass).")
+    mass: Positive = Field(description="Mass, in the file's mass unit.")
+    start: Vector3 = Field(description="One end, body frame.")
+    end: Vector3 = Field(description="The other end, body frame.")
 
     @model_validator(mode="before")
     @classmethod
@@ -276,12 +276,12 @@ class CustomPart(_Part):
     """Mass properties given directly: ``inertia`` about ``about`` (default: the centre of mass)
     in the part's axes, turned into body axes by ``rotation``."""
 
-    shape: Literal["custom"]
-    mass: Positive
-    center_of_mass: Vector3
-    inertia: InertiaMatrix
-    about: Vector3 | None = None
-    rotation: Rotation | None = None
+    shape: Literal["custom"] = Field(description="Mass properties given directly (e.g. from CAD).")
+    mass: Positive = Field(description="Mass, in the file's mass unit.")
+    center_of_mass: Vector3 = Field(description="Centre of mass, body frame.")
+    inertia: InertiaMatrix = Field(description="Inertia about `about` in the part's axes, mass·length² (products of inertia with the minus sign inside).")
+    about: Vector3 | None = Field(None, description="Point the inertia is given about, body frame; default: the centre of mass.")
+    rotation: Rotation | None = Field(None, description="How the part's axes are turned into body axes; default: aligned.")
 
     @model_validator(mode="before")
     @classmethod
@@ -298,7 +298,7 @@ class TorusPart(_Solid):
     """Solid torus (a ring): a disc of ``minor_radius`` swept around ``axis`` at
     ``major_radius`` from ``center``."""
 
-    shape: Literal["torus"]
+    shape: Literal["torus"] = Field(description="A solid torus (a ring).")
     center: Vector3 = Field(description="Centre of the ring (on its axis).")
     axis: Vector3 = Field(description="Direction of the ring's axis of symmetry (need not be unit length).")
     major_radius: Positive = Field(description="Distance from the centre to the middle of the tube.")
@@ -316,7 +316,7 @@ class TorusPart(_Solid):
 class HemispherePart(_Solid):
     """Solid hemisphere: flat face centred on ``center``, dome towards ``axis``."""
 
-    shape: Literal["hemisphere"]
+    shape: Literal["hemisphere"] = Field(description="A solid hemisphere.")
     center: Vector3 = Field(description="Centre of the flat face.")
     axis: Vector3 = Field(description="Direction from the flat face into the dome (need not be unit length).")
     radius: Positive = Field(description="Radius of the sphere it is half of.")
@@ -331,7 +331,7 @@ class CapsulePart(_Solid):
     """Capsule: a solid cylinder from ``start`` to ``end`` with a hemispherical cap of the
     same ``radius`` on each end."""
 
-    shape: Literal["capsule"]
+    shape: Literal["capsule"] = Field(description="A cylinder with a hemispherical cap on each end.")
     start: Vector3 = Field(description="Centre of one end face of the cylinder (where a cap's flat face sits).")
     end: Vector3 = Field(description="Centre of the other end face; |end - start| is the cylinder's length.")
     radius: Positive = Field(description="Radius of the cylinder and of both caps.")
@@ -347,7 +347,7 @@ class MeshPart(_Solid):
     encloses. Mesh coordinates are multiplied by ``scale``, turned by ``rotation`` about the
     mesh's own origin, then that origin is put at ``position``."""
 
-    shape: Literal["mesh"]
+    shape: Literal["mesh"] = Field(description="The solid a closed triangle mesh encloses.")
     file: Annotated[str, Field(min_length=1, description=(
         "Mesh file (.stl, .obj, .ply), relative to the spec's folder."))]
     scale: Positive = Field(1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m).")
@@ -383,18 +383,18 @@ class PointCloudRef(_Strict):
     """Many point masses from one file (see :mod:`rbi.spec.point_cloud`): a ``.csv`` with the
     columns mass,x,y,z or a ``.npy`` (N, 4) array; path relative to the spec's folder."""
 
-    file: Annotated[str, Field(min_length=1)]
+    file: Annotated[str, Field(min_length=1, description="A .csv (columns mass,x,y,z) or .npy (N×4) file, relative to the spec's folder.")]
 
 
 class BodySpec(_Strict):
     """A rigid body: parts placed in the body frame (and/or a point cloud), an optional fixed pivot."""
 
-    name: str | None = None
-    units: Units = Units()
-    pivot: Vector3 | None = None
-    parts: list[Part] = Field(default_factory=list)
-    point_cloud: PointCloudRef | None = None
-    expect: Expect | None = None
+    name: str | None = Field(None, description="Name of the body, shown in titles.")
+    units: Units = Field(Units(), description="Units of every number in the file (default m and kg).")
+    pivot: Vector3 | None = Field(None, description="The fixed point a top turns about, body frame; without it the body is free.")
+    parts: list[Part] = Field(default_factory=list, description="The parts, each placed in the body frame.")
+    point_cloud: PointCloudRef | None = Field(None, description="Many point masses read from one file.")
+    expect: Expect | None = Field(None, description="Expected values that `rbi check` compares with the computed ones.")
 
     @model_validator(mode="after")
     def _has_mass(self):
