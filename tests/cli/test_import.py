@@ -10,6 +10,8 @@ import math
 import numpy as np
 import pytest
 import yaml
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from tests.conftest import BODIES, one_line_exit_2, run_rbi, run_rbi_inprocess
 
@@ -400,3 +402,34 @@ def test_end_to_end_import_then_principal(tmp_path):
     principal = run_rbi("principal", out, "--format", "json", check=True)
     moments = json.loads(principal.stdout)["moments"]
     assert moments[0] == pytest.approx(0.8 * (0.04**2 + 0.04**2) / 12, rel=1e-15)
+
+
+def test_sdf_pose_as_quaternion_xyzw(tmp_path):
+    half = math.sqrt(0.5)  # a quarter turn about z: (x, y, z, w) = (0, 0, √½, √½)
+    text = SDF.replace("<pose>1 2 3 0 0 90</pose>",
+                       f'<pose rotation_format="quat_xyzw">1 2 3 0 0 {half!r} {half!r}</pose>')
+    turned, _ = links_json(write(tmp_path, "m.sdf", text))
+    assert np.allclose(turned["inertia"], np.diag([0.2, 0.1, 0.3]), rtol=0, atol=1e-15)
+    assert turned["inertial_quaternion"] == pytest.approx([half, 0, 0, half])
+
+
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(st.lists(st.tuples(st.floats(0.1, 5), st.floats(-1, 1), st.floats(-1, 1), st.floats(-1, 1)), min_size=4, max_size=6),
+       st.tuples(*[st.floats(-math.pi, math.pi)] * 3))
+def test_urdf_rpy_turns_the_inertia_as_scipy_does(tmp_path, points, rpy):
+    # any real mass distribution (point masses), its inertia written in a turned inertial frame
+    from scipy.spatial.transform import Rotation
+
+    masses = np.array([p[0] for p in points])
+    r = np.array([p[1:] for p in points])
+    r = r - masses @ r / masses.sum()
+    second = (r * masses[:, None]).T @ r
+    inertia = np.trace(second) * np.eye(3) - second
+    names = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+    values = (inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2])
+    attributes = " ".join(f'{k}="{float(v)!r}"' for k, v in zip(names, values))
+    text = (f'<robot name="r"><link name="l"><inertial><origin xyz="0 0 0" rpy="{rpy[0]!r} {rpy[1]!r} {rpy[2]!r}"/>'
+            f'<mass value="{float(masses.sum())!r}"/><inertia {attributes}/></inertial></link></robot>')
+    (link,) = links_json(write(tmp_path, "r.urdf", text))
+    R = Rotation.from_euler("xyz", rpy).as_matrix()  # URDF: fixed-axis roll, pitch, yaw
+    assert np.allclose(link["inertia"], R @ inertia @ R.T, rtol=0, atol=1e-13 * np.trace(inertia))
