@@ -1,4 +1,6 @@
-"""`rbi simulate --plot`: tilt against time and the path of the body z axis seen from above.
+"""`rbi simulate --plot`: the path of the body z axis seen from above, tilt (or, for a free body,
+each principal axis's turn) against time, ω and the energy drift; `rbi sweep --plot`: the
+stability map.
 
 matplotlib is an optional extra (``pip install '.[plot]' from rbi's source folder, or pip install matplotlib``); it is imported only here.
 """
@@ -18,41 +20,103 @@ def require_matplotlib() -> None:
         raise InputError("--plot: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib") from None
 
 
-def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", format: str = "png") -> None:
-    """Two panels saved as a PNG at ``path``: the tilt of the body z axis from vertical against
-    time, and the path of that axis's tip (unit length) projected on the horizontal plane."""
+def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
+    """``v`` (body frame) turned into world axes by each unit quaternion [w, x, y, z] of ``q``
+    (N, 4): v + 2w (u × v) + 2 u × (u × v) with u = (x, y, z)."""
+    v = np.broadcast_to(np.asarray(v, dtype=float), (len(q), 3))
+    w, u = q[:, :1], q[:, 1:]
+    uv = np.cross(u, v)
+    return v + 2.0 * w * uv + 2.0 * np.cross(u, uv)
+
+
+def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", format: str = "png", *,
+                    principal_axes=None, inertia=None, energy_unit: str = "J") -> None:
+    """Four panels saved at ``path``: the path of the body z axis's tip seen from above,
+    coloured by time; the tilt of that axis against time (a top) or, when ``principal_axes``
+    (body frame, rows, ascending moments) and the ``inertia`` about the centre of mass (body
+    axes) are given (a free body), the angle between each principal axis and the angular
+    momentum (fixed in space), where a flip of the intermediate axis shows as a swing from
+    0° to 180°; the body-frame ω components; and the drift of the total energy."""
     require_matplotlib()
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
+    from matplotlib.collections import LineCollection
+    from matplotlib.ticker import MaxNLocator
 
-    t = columns["t"]
-    tilt = columns["tilt_deg"]
-    azimuth = np.nan_to_num(np.radians(columns["precession_deg"]))  # undefined while vertical: radius 0
-    radius = np.sin(np.radians(tilt))
-    x, y = radius * np.cos(azimuth), radius * np.sin(azimuth)
-    fig, (left, right) = plt.subplots(1, 2, figsize=(11, 4.8), gridspec_kw={"width_ratios": [1.6, 1]})
-    left.plot(t, tilt, lw=1.0)
-    left.set_xlabel("time [s]")
-    left.set_ylabel("tilt of body z axis from vertical [deg]")
-    left.grid(alpha=0.3)
-    right.plot(x, y, lw=0.8)
-    right.plot(x[:1], y[:1], "o", ms=4, label="start")
-    right.plot(x[-1:], y[-1:], "s", ms=4, label="end")
-    extent = max(float(np.max(np.abs(np.concatenate((x, y))))), 1e-12) * 1.1
-    right.set_xlim(-extent, extent)
-    right.set_ylim(-extent, extent)
-    right.set_aspect("equal")
-    right.set_xlabel("world x (tip of unit body z axis)")
-    right.set_ylabel("world y")
-    right.set_title("seen from above", fontsize=10)
-    right.legend(loc="upper right", fontsize=8)
-    right.grid(alpha=0.3)
+    t = np.asarray(columns["t"], dtype=float)
+    q = np.column_stack([columns[k] for k in ("qw", "qx", "qy", "qz")])
+    tip = rotate_by_quaternions(q, [0.0, 0.0, 1.0])  # unit body z axis, world frame
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8.4), gridspec_kw={"width_ratios": [1.45, 1]})
+    (angle_ax, above), (omega_ax, energy_ax) = axes
+
+    if principal_axes is None:
+        angle_ax.plot(t, columns["tilt_deg"], lw=1.0, color="#1f77b4")
+        angle_ax.set_ylabel("tilt of body z axis from vertical [deg]")
+        top = float(np.max(columns["tilt_deg"])) if t.size else 0.0
+        angle_ax.set_ylim(-0.05 * max(top, 1.0), 1.1 * max(top, 1.0))
+    else:
+        omega0 = np.array([columns["wx"][0], columns["wy"][0], columns["wz"][0]])
+        momentum = rotate_by_quaternions(q[:1], np.asarray(inertia, dtype=float) @ omega0)[0]
+        direction = momentum / (np.linalg.norm(momentum) or 1.0)
+        for k, (axis, colour) in enumerate(zip(np.asarray(principal_axes, dtype=float), ("#d62728", "#2ca02c", "#1f77b4"))):
+            world = rotate_by_quaternions(q, axis)
+            angle = np.degrees(np.arccos(np.clip(world @ direction, -1.0, 1.0)))
+            name = ("smallest", "intermediate", "largest")[k]
+            angle_ax.plot(t, angle, lw=1.1, color=colour, label=f"axis of the {name} moment (I{k + 1})")
+        angle_ax.set_ylim(-5, 185)
+        angle_ax.set_yticks([0, 45, 90, 135, 180])
+        angle_ax.set_ylabel("angle to the angular momentum [deg]")
+        angle_ax.legend(loc="upper right", fontsize=8, framealpha=0.9)
+    angle_ax.set_xlabel("time [s]")
+    angle_ax.grid(alpha=0.3)
+
+    # the tip of the body z axis seen from above, coloured by time
+    x, y = tip[:, 0], tip[:, 1]
+    reach = float(np.max(np.hypot(x, y))) if t.size else 0.0
+    extent = max(1.15 * reach, np.sin(np.radians(1.0)))  # an upright top still gets a readable frame
+    if t.size > 1:
+        segments = np.stack((np.column_stack((x[:-1], y[:-1])), np.column_stack((x[1:], y[1:]))), axis=1)
+        line = LineCollection(segments, cmap="viridis", linewidths=1.0)
+        line.set_array(0.5 * (t[:-1] + t[1:]))
+        above.add_collection(line)
+        fig.colorbar(line, ax=above, label="time [s]", fraction=0.046, pad=0.04)
+    above.plot(x[:1], y[:1], "o", ms=11, mfc="none", mec="black", mew=1.6, label=f"start (t = {t[0]:g} s)")
+    above.plot(x[-1:], y[-1:], "s", ms=5, color="#d62728", label=f"end (t = {t[-1]:g} s)")
+    if reach < 1e-9:
+        above.text(0.5, 0.12, "the axis stays vertical", transform=above.transAxes, ha="center", fontsize=9)
+    above.set_xlim(-extent, extent)
+    above.set_ylim(-extent, extent)
+    above.xaxis.set_major_locator(MaxNLocator(5))
+    above.yaxis.set_major_locator(MaxNLocator(5))
+    above.set_aspect("equal")
+    above.set_xlabel("world x (tip of the unit body z axis)")
+    above.set_ylabel("world y")
+    above.set_title("body z axis seen from above", fontsize=10)
+    above.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    above.grid(alpha=0.3)
+
+    for key, colour in (("wx", "#d62728"), ("wy", "#2ca02c"), ("wz", "#1f77b4")):
+        omega_ax.plot(t, columns[key], lw=0.9, color=colour, label=f"ω{key[1]}")
+    omega_ax.set_xlabel("time [s]")
+    omega_ax.set_ylabel("ω in body axes [rad/s]")
+    omega_ax.legend(loc="upper right", fontsize=8, ncols=3, framealpha=0.9)
+    omega_ax.grid(alpha=0.3)
+
+    energy = np.asarray(columns["energy"], dtype=float)
+    drift = energy - energy[0]
+    scale = float(np.max(np.abs(energy))) or 1.0
+    energy_ax.plot(t, drift, lw=0.9, color="#444444")
+    energy_ax.set_xlabel("time [s]")
+    energy_ax.set_ylabel(f"energy − initial energy [{energy_unit}]")
+    energy_ax.set_title(f"energy drift (largest {np.max(np.abs(drift)) / scale:.1e} of |E|)", fontsize=10)
+    energy_ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
+    energy_ax.grid(alpha=0.3)
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    fig.savefig(path, format=format, dpi=120)
+    fig.savefig(path, format=format, dpi=110)
     plt.close(fig)
 
 

@@ -60,8 +60,9 @@ def simulate(
     yes: Annotated[bool, typer.Option("--yes", "-y", help="Run even when the run is estimated to exceed the "
                                                           "step budget (the budget still stops it).")] = False,
     plot: Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png|.svg|.pdf",
-                                                help="Plot tilt against time and the path of the body z axis "
-                                                     "seen from above (needs matplotlib: pip install '.[plot]' "
+                                                help="Plot the path of the body z axis seen from above, tilt "
+                                                     "(a free body: each principal axis's turn), ω and energy "
+                                                     "drift against time (needs matplotlib: pip install '.[plot]' "
                                                      "from rbi's source folder, or pip install matplotlib).")] = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
@@ -75,7 +76,7 @@ def simulate(
     Examples:
       rbi simulate top.yaml --spin 200 --tilt 0.01 --plot top.png
       rbi simulate top_bolted.yaml --spin 200 --duration 2 --out run.csv
-      rbi simulate tbar.yaml --omega 0.01,5,0 --duration 10 --plot flip.png
+      rbi simulate tbar.yaml --omega 0.01,0.01,3 --duration 20 --plot flip.png
     """
     from rbi.cli.output import check_distinct, output_target
     from rbi.sim.api import SimulationError
@@ -148,8 +149,10 @@ def simulate(
         from rbi.cli.plot import plot_trajectory
 
         title = f"{body.name or file}: spin {number(float(np.linalg.norm(omega0)))} rad/s, tilt {number(tilt)}°"
-        write_output(plot_target, writer=lambda path: plot_trajectory(shown, path, title=title,
-                                                                       format=plot_target.format))
+        energy_unit = "J" if body.labels["energy"] == "kg·m²/s²" else body.labels["energy"]
+        free = {} if scene.pivoted else {"principal_axes": scene.principal_axes, "inertia": scene.inertia}
+        write_output(plot_target, writer=lambda path: plot_trajectory(
+            shown, path, title=title, format=plot_target.format, energy_unit=energy_unit, **free))
     if format == OutputFormat.csv:
         sys.stdout.write(trajectory_csv)
         return
