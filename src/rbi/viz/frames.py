@@ -13,7 +13,7 @@ import numpy as np
 
 from rbi.viz.solids import part_quads, shade
 
-PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#c0504d", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
+PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#6b8e23", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
 HOLE_RGBA = (0.88, 0.19, 0.19, 0.35)
 POINT_RGBA = (0.2, 0.2, 0.2, 1.0)
 VIEW_ELEVATION_DEG = 24.0

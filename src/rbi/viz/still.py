@@ -19,7 +19,8 @@ AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
 """Colours of the principal axes of the smallest, middle and largest moment."""
 MAX_LEGEND_PARTS = 14
 LONGEST_AXIS_FRACTION = 0.75
-"""Half-length of the axis of the largest moment, as a fraction of the body's size."""
+"""Half-length of the axis of the largest moment, as a fraction of the body's reach from its
+centre of mass."""
 
 
 def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivot, length_unit: str,
@@ -36,8 +37,9 @@ def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivo
     size = body_size(parts + [{"kind": "point", "position": (com - origin).tolist()}])
     moments, axes = principal_axes(np.asarray(inertia_com, dtype=float))
     largest = float(np.max(np.abs(moments))) or 1.0
+    reach_from_com = body_size([shifted(item, com) for item in geometry])
     principal = [{"moment": float(m), "direction": axis.tolist(),
-                  "half_length": LONGEST_AXIS_FRACTION * size * max(abs(float(m)) / largest, 0.08),
+                  "half_length": LONGEST_AXIS_FRACTION * reach_from_com * max(abs(float(m)) / largest, 0.08),
                   "label": f"I{k + 1} = {float(m):.4g} {inertia_unit}", "colour": AXIS_COLOURS[k]}
                  for k, (m, axis) in enumerate(zip(moments, axes))]
     com_shifted = (com - origin).tolist()
@@ -93,7 +95,8 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
         ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color=axis["colour"], lw=2.2, zorder=10)
         tip = com + 1.08 * direction
         ax.text(tip[0], tip[1], tip[2], f"I{data['principal_axes'].index(axis) + 1}", color=axis["colour"],
-                fontsize=10, weight="bold", zorder=11)
+                fontsize=10, weight="bold", zorder=11,
+                bbox={"boxstyle": "round,pad=0.15", "facecolor": "white", "edgecolor": "none", "alpha": 0.8})
         handles.append(Line2D([], [], color=axis["colour"], lw=2.2, label=axis["label"]))
     ax.scatter(*com, color="black", s=40, marker="o", depthshade=False, zorder=12)
     handles.append(Line2D([], [], color="black", marker="o", ls="none", label="centre of mass"))
