@@ -239,7 +239,19 @@ def body_from_spec(spec: models.BodySpec, path: str):
 
     elements = []
     holes = []
+    from rbi.spec.translate_batch import MIN_PARTS, batch_elements
+
+    batched, batched_holes = {}, set()
+    if len(spec.parts) >= MIN_PARTS:  # many parts: the plain ones of the common shapes as whole arrays
+        batched, batched_holes = batch_elements(spec.parts, spec.units)
     for i, part in enumerate(spec.parts):
+        if i in batched:  # built as whole arrays and checked finite there
+            element = batched[i]
+            if i in batched_holes:
+                holes.append(i)
+                element = _removed(element)
+            elements.append(element)
+            continue
         try:
             with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported just below
                 element = part_element(part, spec.units, path)

@@ -1,0 +1,175 @@
+"""Translating many plain parts at once: the parts of the common shapes (point, cylinder, cone,
+sphere, box without rotation) that carry no ``pattern`` are gathered by shape and their mass
+elements computed with whole-array arithmetic, the same formulas as :mod:`rbi.core.shapes` in
+the same order of operations (so the same numbers to within a rounding or two; tested against
+the per-part path in ``tests/spec/test_translate_batch.py``).
+
+:func:`batch_elements` returns the elements it could build, by part index; every other part
+(other shapes, patterns, rotations, a density naming an unknown material, any part whose
+numbers fail) is left to the per-part path of :func:`rbi.spec.translate.body_from_spec`, which
+then reports errors naming the part exactly as before.
+
+Used for specs of at least :data:`MIN_PARTS` parts (below that the per-part path is as fast).
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Any
+
+import numpy as np
+
+from rbi.core.shapes import MassElement
+from rbi.spec import models
+from rbi.spec.materials import density_in_units
+
+MIN_PARTS = 64
+"""Specs with fewer parts are translated part by part."""
+
+
+def _densities(parts: list, units: models.Units) -> tuple[np.ndarray, np.ndarray]:
+    """``(mass_given, density)`` per part (NaN where not given); ``density`` NaN also where a
+    material name cannot be looked up (the per-part path will say why)."""
+    n = len(parts)
+    mass = np.full(n, np.nan)
+    density = np.full(n, np.nan)
+    looked_up: dict[str, float] = {}
+    for i, part in enumerate(parts):
+        if part.mass is not None:
+            mass[i] = part.mass
+            continue
+        d = part.density
+        if isinstance(d, str):
+            if d not in looked_up:
+                try:
+                    looked_up[d] = density_in_units(d, units.length, units.mass)
+                except (ValueError, KeyError):
+                    looked_up[d] = math.nan
+            d = looked_up[d]
+        density[i] = math.nan if d is None else d
+    return mass, density
+
+
+def _solid_masses(parts: list, units: models.Units, volume: np.ndarray) -> np.ndarray:
+    given, density = _densities(parts, units)
+    return np.where(np.isnan(given), density * volume, given)
+
+
+def _lengths(d: np.ndarray) -> np.ndarray:
+    return np.sqrt(np.einsum("ij,ij->i", d, d))
+
+
+def _axisymmetric(axial: np.ndarray, transverse: np.ndarray, u: np.ndarray) -> np.ndarray:
+    """``axial uuᵀ + transverse (E − uuᵀ)`` for each row, as :func:`rbi.core.shapes.axisymmetric_inertia`."""
+    uu = u[:, :, None] * u[:, None, :]
+    return axial[:, None, None] * uu + transverse[:, None, None] * (np.eye(3) - uu)
+
+
+def _vectors(parts: list, field: str) -> np.ndarray:
+    return np.array([getattr(p, field) for p in parts], dtype=float).reshape(len(parts), 3)
+
+
+def _scalars(parts: list, field: str) -> np.ndarray:
+    return np.array([getattr(p, field) for p in parts], dtype=float)
+
+
+def _points(parts, units):
+    masses = _scalars(parts, "mass")
+    return masses, _vectors(parts, "position"), np.zeros((len(parts), 3, 3))
+
+
+def _cylinders(parts, units):
+    radius = _scalars(parts, "radius")
+    start, end = _vectors(parts, "start"), _vectors(parts, "end")
+    d = end - start
+    length = _lengths(d)
+    mass = _solid_masses(parts, units, math.pi * radius * radius * length)
+    u = d / length[:, None]
+    axial = 0.5 * mass * radius * radius
+    transverse = mass * (3.0 * radius * radius + length * length) / 12.0
+    return mass, 0.5 * (start + end), _axisymmetric(axial, transverse, u)
+
+
+def _cones(parts, units):
+    radius = _scalars(parts, "radius")
+    apex, base = _vectors(parts, "apex"), _vectors(parts, "base")
+    d = base - apex
+    height = _lengths(d)
+    mass = _solid_masses(parts, units, math.pi * radius * radius * height / 3.0)
+    u = d / height[:, None]
+    com = apex + (0.75 * height)[:, None] * u
+    axial = 0.3 * mass * radius * radius
+    transverse = 3.0 * mass * (4.0 * radius * radius + height * height) / 80.0
+    return mass, com, _axisymmetric(axial, transverse, u)
+
+
+def _spheres(parts, units):
+    radius = _scalars(parts, "radius")
+    mass = _solid_masses(parts, units, 4.0 / 3.0 * math.pi * radius ** 3)
+    inertia = (0.4 * mass * radius * radius)[:, None, None] * np.eye(3)
+    return mass, _vectors(parts, "center"), inertia
+
+
+def _boxes(parts, units):
+    size = _vectors(parts, "size")
+    a, b, c = size[:, 0], size[:, 1], size[:, 2]
+    mass = _solid_masses(parts, units, a * b * c)
+    moments = (mass / 12.0)[:, None] * np.stack([b * b + c * c, a * a + c * c, a * a + b * b], axis=1)
+    inertia = np.zeros((len(parts), 3, 3))
+    inertia[:, [0, 1, 2], [0, 1, 2]] = moments
+    return mass, _vectors(parts, "center"), inertia
+
+
+BUILDERS = {
+    models.PointPart: _points,
+    models.CylinderPart: _cylinders,
+    models.ConePart: _cones,
+    models.SpherePart: _spheres,
+    models.BoxPart: _boxes,
+}
+"""Each batched part model's ``(parts, units) -> (mass (n,), com (n, 3), inertia (n, 3, 3))``."""
+
+
+def _fields(kind: type) -> set[str]:
+    return set(getattr(kind, "model_fields", {}))
+
+
+def _plain(part: Any, fields: set[str]) -> bool:
+    """No pattern of more than one copy, no rotation (fields looked up only where the model has
+    them: a missing attribute on a pydantic model is slow to ask for)."""
+    if "pattern" in fields and part.pattern is not None and part.pattern.count > 1:
+        return False
+    return "rotation" not in fields or part.rotation is None
+
+
+def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassElement], set[int]]:
+    """``(elements, holes)``: the mass elements (file units, as written: not negated) of the
+    plain parts of the batched shapes, by index in ``parts``, and which of those indices are
+    holes (``subtract: true``). Parts left out go through the per-part path; so do elements
+    whose numbers are not all finite, so that the per-part path reports them naming the part."""
+    groups: dict[type, list[int]] = {}
+    fields_of: dict[type, set[str]] = {}
+    for i, part in enumerate(parts):
+        kind = type(part)
+        if kind not in BUILDERS:
+            continue
+        fields = fields_of.get(kind)
+        if fields is None:
+            fields = fields_of[kind] = _fields(kind)
+        if _plain(part, fields):
+            groups.setdefault(kind, []).append(i)
+    out: dict[int, MassElement] = {}
+    holes: set[int] = set()
+    for kind, indices in groups.items():
+        chosen = [parts[i] for i in indices]
+        with np.errstate(all="ignore"):
+            mass, com, inertia = BUILDERS[kind](chosen, units)
+            finite = np.isfinite(mass) & np.all(np.isfinite(com), axis=1) & np.all(np.isfinite(inertia), axis=(1, 2))
+        masses = mass.tolist()
+        ok = finite.tolist()
+        for k, i in enumerate(indices):
+            if ok[k]:
+                out[i] = MassElement(masses[k], com[k], inertia[k])
+        if "subtract" in fields_of[kind]:
+            holes.update(i for i, part in zip(indices, chosen) if part.subtract and i in out)
+    return out, holes

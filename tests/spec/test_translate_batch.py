@@ -1,0 +1,124 @@
+"""Whole-array translation of many plain parts (rbi.spec.translate_batch) gives the elements the
+per-part path gives, and errors still name the part."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from rbi.core.inertia import combine_elements
+from rbi.spec.errors import InputError
+from rbi.spec.load import spec_from_raw
+from rbi.spec.translate import _removed, body_from_spec, part_element
+from rbi.spec.translate_batch import MIN_PARTS, batch_elements
+
+coordinate = st.floats(-5.0, 5.0, allow_nan=False)
+vector = st.lists(coordinate, min_size=3, max_size=3)
+positive = st.floats(1e-3, 3.0)
+amount = st.one_of(st.builds(lambda m: {"mass": m}, positive),
+                   st.builds(lambda d: {"density": d}, st.floats(1.0, 2e4)),
+                   st.sampled_from([{"density": "steel"}, {"density": "aluminium"}, {"density": "water"}]))
+hole = st.sampled_from([{}, {}, {}, {"subtract": True}])
+
+
+def _apart(a, b) -> bool:
+    return float(np.linalg.norm(np.subtract(a, b))) > 1e-2
+
+
+point = st.builds(lambda m, p: {"shape": "point", "mass": m, "position": p}, positive, vector)
+cylinder = st.builds(lambda a, h, r, s, e: {"shape": "cylinder", "radius": r, "start": s, "end": e, **a, **h},
+                     amount, hole, positive, vector, vector).filter(lambda p: _apart(p["start"], p["end"]))
+cone = st.builds(lambda a, h, r, s, e: {"shape": "cone", "radius": r, "apex": s, "base": e, **a, **h},
+                 amount, hole, positive, vector, vector).filter(lambda p: _apart(p["apex"], p["base"]))
+sphere = st.builds(lambda a, h, r, c: {"shape": "sphere", "radius": r, "center": c, **a, **h},
+                   amount, hole, positive, vector)
+box = st.builds(lambda a, h, s, c: {"shape": "box", "size": s, "center": c, **a, **h},
+                amount, hole, st.lists(positive, min_size=3, max_size=3), vector)
+turned_box = st.builds(lambda a, s, c, ang: {"shape": "box", "size": s, "center": c,
+                                             "rotation": {"axis": [0, 0, 1], "angle_deg": ang}, **a},
+                       amount, st.lists(positive, min_size=3, max_size=3), vector, st.floats(1.0, 89.0))
+patterned = st.builds(lambda p: {**p, "pattern": {"count": 3, "step": [0.1, 0.0, 0.0]}}, cylinder)
+any_part = st.one_of(point, cylinder, cone, sphere, box, turned_box, patterned)
+
+
+def _spec(parts):
+    named = [{**p, "name": f"p{i}"} for i, p in enumerate(parts)]
+    return spec_from_raw("batch.yaml", {"name": "batch", "parts": named})
+
+
+def _per_part(spec):
+    out = []
+    for part in spec.parts:
+        element = part_element(part, spec.units, "batch.yaml")
+        out.append(_removed(element) if getattr(part, "subtract", False) else element)
+    return out
+
+
+def _close(a, b, scale):
+    return np.max(np.abs(np.asarray(a) - np.asarray(b))) <= 4e-15 * scale
+
+
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@given(st.lists(any_part, min_size=MIN_PARTS, max_size=MIN_PARTS + 40))
+def test_batched_elements_equal_the_per_part_path(parts):
+    spec = _spec(parts)
+    batched, holes = batch_elements(spec.parts, spec.units)
+    # plain parts of the batched shapes were all built at once; rotated boxes and patterns were not
+    plain = {i for i, p in enumerate(parts) if "rotation" not in p and "pattern" not in p}
+    assert set(batched) == plain
+    assert holes == {i for i in plain if parts[i].get("subtract")}
+    for i, element in batched.items():
+        want = part_element(spec.parts[i], spec.units, "batch.yaml")
+        assert element.mass == pytest.approx(want.mass, rel=1e-15, abs=0)
+        assert _close(element.com, want.com, max(1.0, float(np.max(np.abs(want.com)))))
+        assert _close(element.inertia_com, want.inertia_com, float(np.max(np.abs(want.inertia_com))) or 1e-300)
+    # the whole body, holes left out (they must lie inside a solid, which random parts do not)
+    solid = _spec([{k: v for k, v in p.items() if k != "subtract"} for p in parts])
+    expected = _per_part(solid)
+    body = body_from_spec(solid, "batch.yaml")
+    assert len(body.elements) == len(expected)
+    for got, want in zip(body.elements, expected):
+        assert got.mass == pytest.approx(want.mass, rel=1e-15, abs=0)
+        assert _close(got.inertia_com, want.inertia_com, float(np.max(np.abs(want.inertia_com))) or 1e-300)
+    props = combine_elements(expected)
+    assert body.props.mass == pytest.approx(props.mass, rel=1e-14)
+    assert np.allclose(body.props.com, props.com, rtol=1e-13, atol=1e-13)
+    assert np.allclose(body.props.inertia_com, props.inertia_com, rtol=1e-12,
+                       atol=1e-12 * np.max(np.abs(props.inertia_com)))
+
+
+def test_a_hole_through_the_batch():
+    """A spec of many parts with a hole: the hole is negated as in the per-part path."""
+    parts = [{"shape": "cylinder", "density": 1000.0, "radius": 0.5, "start": [0, 0, 0], "end": [0, 0, 1]}]
+    parts += [{"shape": "point", "mass": 0.001, "position": [0.1, 0.0, 0.5]}] * 80
+    parts.append({"shape": "cylinder", "density": 1000.0, "radius": 0.1, "start": [0, 0, 0], "end": [0, 0, 1],
+                  "subtract": True})
+    body = body_from_spec(_spec(parts), "batch.yaml")
+    full, hole = 1000.0 * np.pi * 0.25, 1000.0 * np.pi * 0.01
+    assert body.props.mass == pytest.approx(full - hole + 0.08, rel=1e-14)
+    assert body.elements[-1].mass == pytest.approx(-hole, rel=1e-15)
+    assert body.props.inertia_com[2, 2] == pytest.approx(0.5 * full * 0.25 - 0.5 * hole * 0.01
+                                                          + 80 * 0.001 * 0.01 - (0.08 ** 2 * 0.01) / body.props.mass,
+                                                          rel=1e-12)
+
+
+def test_cylinder_closed_form_through_the_batch():
+    """An independent check: 100 equal steel cylinders along z, by density, give n times the
+    textbook cylinder (m = ρπr²L, I_zz = ½ m r², I_xx = m (3r² + L²)/12)."""
+    parts = [{"shape": "cylinder", "density": 7850.0, "radius": 0.1, "start": [0, 0, 0], "end": [0, 0, 2.0]}] * 100
+    body = body_from_spec(_spec(parts), "batch.yaml")
+    m = 7850.0 * np.pi * 0.01 * 2.0
+    assert body.props.mass == pytest.approx(100 * m, rel=1e-14)
+    assert body.props.inertia_com[2, 2] == pytest.approx(100 * 0.5 * m * 0.01, rel=1e-13)
+    assert body.props.inertia_com[0, 0] == pytest.approx(100 * m * (3 * 0.01 + 4.0) / 12, rel=1e-13)
+
+
+def test_errors_still_name_the_part():
+    parts = [{"shape": "point", "mass": 1.0, "position": [i, 0, 0]} for i in range(100)]
+    parts[57] = {"shape": "cylinder", "mass": 1e300, "radius": 1e200, "start": [0, 0, 0], "end": [0, 0, 1]}
+    with pytest.raises(InputError, match=r"parts\[57\] \(p57\)"):
+        body_from_spec(_spec(parts), "batch.yaml")
+    batched, _ = batch_elements(_spec(parts).parts, _spec(parts).units)
+    assert 57 not in batched and len(batched) == 99
