@@ -93,7 +93,7 @@ def validate(
       rbi validate bodies/*.yaml
       rbi validate top.yaml wheel.yaml --format json
     """
-    from rbi.cli.render import emit
+    from rbi.cli.render import emit, terminal_safe
 
     reports = [{"file": path, "problems": file_problems(path)} for path in files]
     bad = [r for r in reports if r["problems"]]
@@ -101,7 +101,7 @@ def validate(
     if format is OutputFormat.table:
         for report in reports:
             for line in report["problems"]:
-                print(line)
+                print(terminal_safe(line))
         summary = (f"{len(files)} file(s) valid" if not bad else
                    f"{len(bad)} of {len(files)} file(s) invalid, {count} problem(s)")
         print(f"rbi: {summary}", file=sys.stderr)
