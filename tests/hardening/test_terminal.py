@@ -175,3 +175,21 @@ def _wait_until_running(proc) -> None:
             pass
         time.sleep(0.1)
     assert proc.poll() is None, proc.communicate()
+
+
+def test_warnings_name_parts_escaped(tmp_path):
+    """rbi parts warns about an implausible density naming the part: escaped like errors."""
+    path = tmp_path / "light.yaml"
+    path.write_text(json.dumps({"parts": [{"name": "ball\x1b]0;t\x07", "shape": "sphere", "mass": 1e-6,
+                                           "radius": 1, "center": [0, 0, 0]}]}))
+    proc = rbi("parts", path)
+    assert proc.returncode == 0 and "warning" in proc.stderr, proc.stderr
+    assert "ball\\x1b]0;t\\x07" in proc.stderr
+    _assert_no_raw_controls(proc.stderr)
+
+
+def test_validate_lists_problems_escaped(tmp_path):
+    spec = _spec(tmp_path, "b", "p\x1b[2J", mass="-1")
+    proc = rbi("validate", spec)
+    assert proc.returncode == 2 and "p\\x1b[2J" in proc.stdout
+    _assert_no_raw_controls(proc.stdout)

@@ -147,9 +147,9 @@ def main() -> None:
 
 def _say(message: str) -> None:
     """One line on stderr: ``rbi: message`` with control characters escaped."""
-    from rbi.cli.terminal import terminal_safe
+    from rbi.cli.terminal import say
 
-    print(f"rbi: {terminal_safe(message)}", file=sys.stderr)
+    say(message)
 
 
 def _run() -> None:

@@ -4,10 +4,10 @@ body's inertia, and the density each solid implies (a check on the spec's units)
 from __future__ import annotations
 
 import math
-import sys
 
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, number
+from rbi.cli.terminal import say
 
 PLAUSIBLE_DENSITY_KG_M3 = (1.0, 25_000.0)
 """Densities a solid can have: from aerogels and foams (a few kg/m³) to osmium (22,590)."""
@@ -55,7 +55,7 @@ def parts(file: SpecFile, format: FormatOption = OutputFormat.table) -> None:
     for i, row in enumerate(rows):
         warning = density_warning(row, body, i)
         if warning:
-            print(f"rbi: warning: {file}: {warning}", file=sys.stderr)
+            say(f"warning: {file}: {warning}")
     result = {"name": body.name, "units": body.units, "mass": body.props.mass,
               "center_of_mass": body.props.com, "parts": rows}
     emit(format.value, result, lambda: _table(body, rows), csv_rows=rows)

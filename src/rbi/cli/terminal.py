@@ -32,6 +32,12 @@ def terminal_safe(text: str, keep: str = "") -> str:
     return "".join(_escaped(c) if _is_unsafe(c) and c not in keep else c for c in text)
 
 
+def say(message: str) -> None:
+    """One line on stderr, ``rbi: message``, with control characters escaped (see
+    :func:`terminal_safe`): how every error, warning and note reaches the user."""
+    print(f"rbi: {terminal_safe(message)}", file=sys.stderr)
+
+
 def _escaped(char: str) -> str:
     code = ord(char)
     return f"\\x{code:02x}" if code < 256 else f"\\u{code:04x}"
