@@ -157,3 +157,21 @@ def test_a_pdf_plot_is_a_pdf(tmp_path):
     assert proc.returncode == 0, proc.stderr
     assert pdf.read_bytes()[:5] == b"%PDF-"
     assert sorted(p.name for p in tmp_path.iterdir()) == ["x.pdf"]
+
+
+def test_the_cli_writes_with_the_umask_and_keeps_a_replaced_files_mode(tmp_path):
+    import stat
+
+    new, old = tmp_path / "new.csv", tmp_path / "old.csv"
+    old.write_text("x\n")
+    os.chmod(old, 0o644)
+    previous = os.umask(0o022)
+    try:
+        for out in (new, old):
+            proc = rbi("simulate", TOP, "--spin", "200", "--duration", "0.1", "--samples", "3", "--out", out)
+            assert proc.returncode == 0, proc.stderr
+    finally:
+        os.umask(previous)
+    assert stat.S_IMODE(os.stat(new).st_mode) == 0o644  # 0666 less the umask, not mkstemp's 0600
+    assert stat.S_IMODE(os.stat(old).st_mode) == 0o644
+    assert old.read_text().startswith("t,qw")
