@@ -211,6 +211,28 @@ def test_messages_never_repeat_the_files_content(tmp_path):
         assert proc.returncode == 2 and secret not in proc.stderr + proc.stdout, proc.stderr
 
 
+def test_an_obj_never_makes_rbi_open_its_material_file(tmp_path, monkeypatch):
+    import builtins
+
+    vertices, faces = box_mesh()
+    write_obj(tmp_path / "box.obj", vertices, faces)
+    (tmp_path / "box.obj").write_text("mtllib box.mtl\n" + (tmp_path / "box.obj").read_text())
+    (tmp_path / "box.mtl").write_text("newmtl steel\nKd 0.5 0.5 0.5\n")
+    opened = []
+    real_open = builtins.open
+
+    def recording_open(file, *args, **kwargs):
+        opened.append(str(file))
+        return real_open(file, *args, **kwargs)
+
+    monkeypatch.setattr(builtins, "open", recording_open)
+    proc = run_rbi_inprocess("inertia", mesh_spec(tmp_path, "box.obj"), "--format", "json")
+    monkeypatch.undo()
+    assert proc.returncode == 0, proc.stderr
+    assert any(name.endswith("box.obj") for name in opened)
+    assert not any(name.endswith(".mtl") for name in opened), opened
+
+
 def test_unknown_extension_and_missing_file(tmp_path):
     (tmp_path / "part.step").write_text("ISO-10303-21;\n")
     one_line_exit_2(run_rbi_inprocess("inertia", mesh_spec(tmp_path, "part.step")), "unknown mesh format '.step'")

@@ -84,7 +84,9 @@ def _parse(data: bytes, file_type: str) -> tuple[np.ndarray, np.ndarray]:
     import trimesh
 
     try:
-        mesh = trimesh.load(file_obj=io.BytesIO(data), file_type=file_type, force="mesh", process=False)
+        # from bytes, without a resolver: trimesh cannot open any other file (an OBJ's mtllib)
+        extra = {"skip_materials": True} if file_type == "obj" else {}
+        mesh = trimesh.load(file_obj=io.BytesIO(data), file_type=file_type, force="mesh", process=False, **extra)
         vertices = np.asarray(mesh.vertices, dtype=float)
         faces = np.asarray(mesh.faces, dtype=np.int64)
     except Exception:  # noqa: BLE001 - any parser failure on untrusted bytes is the same user error
