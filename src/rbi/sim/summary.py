@@ -78,10 +78,22 @@ def error_estimate(scene: Scene, trajectory: Trajectory, q0, omega0, max_steps: 
 
 
 def motion_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
-    """The figures of a sampled motion that a run and a sweep row report: tilt of the body z
-    axis from vertical (min, max, final; deg), mean precession rate (deg/s; None when the axis
-    stood vertical at some sample, where the azimuth is undefined) and the conserved quantities
-    with their relative drift."""
+    """The figures of a sampled motion that a run reports: tilt of the body z axis from
+    vertical (min, max, final; deg), mean precession rate (deg/s; None when the axis stood
+    vertical at some sample, where the azimuth is undefined) and the conserved quantities with
+    their relative drift."""
+    return {**tilt_figures(t, q), "conserved": diagnostics.conserved_quantities(scene, q, omega)}
+
+
+def sweep_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
+    """What a sweep row reports of a run: :func:`motion_figures`' tilts and precession rate and
+    the energy's drift, computed by the same functions (so equal to a single run's), without
+    the other conserved quantities."""
+    return {**tilt_figures(t, q), "energy_drift": diagnostics.energy_conservation(scene, q, omega)["drift"]}
+
+
+def tilt_figures(t: np.ndarray, q: np.ndarray) -> dict[str, Any]:
+    """Smallest, largest and final tilt (deg) and the mean precession rate (deg/s or None)."""
     tilt = diagnostics.tilt_deg(q)
     precession = diagnostics.precession_deg(q)
     duration = float(t[-1] - t[0])
@@ -90,8 +102,7 @@ def motion_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray
     else:
         rate_deg = float((precession[-1] - precession[0]) / duration) if duration > 0 and t.size > 1 else 0.0
     return {"min_tilt_deg": float(np.min(tilt)), "max_tilt_deg": float(np.max(tilt)),
-            "final_tilt_deg": float(tilt[-1]), "precession_rate_deg_s": rate_deg,
-            "conserved": diagnostics.conserved_quantities(scene, q, omega)}
+            "final_tilt_deg": float(tilt[-1]), "precession_rate_deg_s": rate_deg}
 
 
 def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any]:

@@ -104,7 +104,7 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
     from rbi.sim.api import sample_times
     from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
     from rbi.sim.scene import initial_state
-    from rbi.sim.summary import motion_figures
+    from rbi.sim.summary import sweep_figures
 
     values = job.plan.values(start, stop)
     t = sample_times(job.duration, job.samples)
@@ -138,9 +138,9 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
                 rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + ["failed: the state stopped being finite (overflow)"]
                 continue
             with np.errstate(all="ignore"):
-                figures = motion_figures(scenes[b], t, q, omega)
+                figures = sweep_figures(scenes[b], t, q, omega)
             rows[i] += [figures["max_tilt_deg"], figures["final_tilt_deg"], figures["min_tilt_deg"],
-                        figures["precession_rate_deg_s"], figures["conserved"]["energy"]["drift"],
+                        figures["precession_rate_deg_s"], figures["energy_drift"],
                         int(counts[b, 1]), "ok"]
             continue
         reason = {STATUS_MORE: f"failed: step budget of {job.max_steps:,} steps reached",
