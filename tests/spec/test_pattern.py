@@ -9,6 +9,8 @@ import math
 
 import numpy as np
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess
@@ -155,3 +157,31 @@ def test_a_pattern_of_holes_that_removes_too_much_names_the_hole(write_spec):
                       "  - {name: holes, shape: cylinder, density: 1000, radius: 0.05, start: [0.05, 0, 0], end: [0.05, 0, 0.01],\n"
                       "     subtract: true, pattern: {count: 12, axis: [0, 0, 1], through: [0, 0, 0]}}\n")
     one_line_exit_2(run_rbi_inprocess("inertia", spec), "parts[1] (holes)", "subtract")
+
+
+@settings(max_examples=60, deadline=None)
+@given(count=st.integers(3, 40),
+       axis=st.tuples(*[st.floats(-1, 1) for _ in range(3)]).filter(lambda v: np.linalg.norm(v) > 0.1),
+       through=st.tuples(*[st.floats(-2, 2) for _ in range(3)]),
+       size=st.tuples(*[st.floats(0.01, 1) for _ in range(3)]),
+       center=st.tuples(*[st.floats(-2, 2) for _ in range(3)]))
+def test_three_or_more_copies_about_an_axis_are_symmetric_about_it(count, axis, through, size, center):
+    """N ≥ 3 equal copies turned evenly about a line have the line's symmetry: the centre of
+    mass lies on it and the inertia is axial·uuᵀ + transverse·(E − uuᵀ), whatever the part."""
+    from types import SimpleNamespace
+
+    from rbi.core.shapes import box
+    from rbi.spec.pattern import patterned
+
+    R = Rotation.from_rotvec([0.3, -0.2, 0.5]).as_matrix()
+    element = patterned(box(1.0, np.array(size), np.array(center), R),
+                        SimpleNamespace(count=count, axis=list(axis), through=list(through), step=None))
+    u = np.array(axis) / np.linalg.norm(axis)
+    offset = element.com - np.array(through)
+    scale = 1.0 + float(np.linalg.norm(center)) + float(np.linalg.norm(through))
+    np.testing.assert_allclose(offset - (offset @ u) * u, 0, atol=1e-12 * scale)
+    I = element.inertia_com
+    axial = u @ I @ u
+    transverse = 0.5 * (np.trace(I) - axial)
+    expected = axial * np.outer(u, u) + transverse * (np.eye(3) - np.outer(u, u))
+    np.testing.assert_allclose(I, expected, rtol=0, atol=1e-11 * np.trace(I))
