@@ -111,9 +111,9 @@ def test_a_large_cloud_matches_the_vectorised_definition(tmp_path):
 
 @pytest.mark.parametrize("content, expected", [
     ("mass,x,y\n1,2,3\n", "header must name the columns mass, x, y, z (missing z"),
-    ("mass,x,y,z\n1,0,0,0\n2,0,abc,0\n", "line 3: column 3: must be a number (got 'abc')"),
+    ("mass,x,y,z\n1,0,0,0\n2,0,abc,0\n", "line 3: column 3: must be a number"),
     ("mass,x,y,z\n1,0,0,0\n2,0,0\n", "line 3: has 3 columns"),
-    ("mass,x,y,z\n1,0,0,0\n-2,0,0,0\n", "point 1: mass: must be greater than 0 (got -2.0)"),
+    ("mass,x,y,z\n1,0,0,0\n-2,0,0,0\n", "point 1: mass: must be greater than 0"),
     ("mass,x,y,z\n1,0,0,0\n0,0,0,0\n", "point 1: mass: must be greater than 0"),
     ("mass,x,y,z\n1,0,nan,0\n", "point 0: y: must be a finite number"),
     ("mass,x,y,z\n", "holds no points"),

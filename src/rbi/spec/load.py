@@ -2,7 +2,10 @@
 
 from __future__ import annotations
 
-import re
+import contextlib
+import gc
+import os
+import stat
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -14,6 +17,7 @@ from rbi.core.inertia import MassProperties
 from rbi.core.shapes import MassElement
 from rbi.spec.errors import InputError, describe_error, format_location
 from rbi.spec.units import unit_labels
+from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
 
 @dataclass(frozen=True)
@@ -44,66 +48,110 @@ class LoadedBody:
         return unit_labels(self.length_unit, self.mass_unit)
 
 
-class _UniqueKeyLoader(getattr(yaml, "CSafeLoader", yaml.SafeLoader)):
-    """Safe loader that refuses a key given twice in one mapping (PyYAML keeps the last).
-
-    Built on libyaml's C parser where PyYAML has it: about 3 times faster on large specs
-    (10⁴ parts), with the same line and column in syntax errors."""
+MAX_SPEC_BYTES = 64 * 1024 * 1024
+"""Largest spec file rbi reads (64 MiB: about 8 × 10⁵ parts written one a line)."""
 
 
-def _construct_mapping(loader: _UniqueKeyLoader, node: yaml.MappingNode, deep: bool = False):
-    seen: set[Any] = set()
-    for key_node, _ in node.value:
-        key = loader.construct_object(key_node, deep=deep)
-        if isinstance(key, (str, int, float, bool)) and key in seen:
-            raise yaml.constructor.ConstructorError(
-                None, None, f"duplicate key {key!r}", key_node.start_mark)
-        seen.add(key)
-    return loader.construct_mapping(node, deep=deep)
+@contextlib.contextmanager
+def paused_gc():
+    """Pause the cyclic garbage collector for the block (re-enabled afterwards if it was on).
+
+    Building 10⁵ parts allocates millions of containers and none of them is garbage; the
+    collector's passes over the growing heap would otherwise take most of the load time."""
+    was_enabled = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if was_enabled:
+            gc.enable()
 
 
-_UniqueKeyLoader.add_constructor(yaml.resolver.BaseResolver.DEFAULT_MAPPING_TAG, _construct_mapping)
-# PyYAML follows YAML 1.1, where `1e-3` and `7.8e3` (no dot, or no exponent sign) are text;
-# read them as numbers, as YAML 1.2 and every user expects.
-_UniqueKeyLoader.add_implicit_resolver(
-    "tag:yaml.org,2002:float",
-    re.compile(r"^[-+]?(?:[0-9][0-9_]*(?:\.[0-9_]*)?|\.[0-9_]+)[eE][-+]?[0-9]+$"),
-    list("-+0123456789."),
-)
+class _RawFile:
+    """An open descriptor read in full up to a bound (no buffering layer to set up)."""
+
+    def __init__(self, descriptor: int):
+        self.descriptor = descriptor
+
+    def read(self, limit: int) -> bytes:
+        chunks, size = [], 0
+        while size < limit:
+            chunk = os.read(self.descriptor, min(limit - size, 1 << 24))
+            if not chunk:
+                break
+            chunks.append(chunk)
+            size += len(chunk)
+        return b"".join(chunks)
+
+    def close(self) -> None:
+        os.close(self.descriptor)
 
 
-def read_yaml(path: str | Path) -> Any:
-    """Parsed YAML of a spec file; :class:`InputError` for a missing, empty, binary or
-    malformed file."""
+def read_spec_text(path: str | Path) -> str:
+    """The text of a spec file; :class:`InputError` for a missing, non-regular, over-large,
+    empty, binary or non-UTF-8 file. Refused before reading: a device, a FIFO, a directory or a
+    file larger than :data:`MAX_SPEC_BYTES` (a file that grows while read is cut there too).
+    A UTF-8 byte-order mark at the start is dropped."""
     path = str(path)
     try:
-        data = Path(path).read_bytes()
+        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
     except FileNotFoundError:
         raise InputError(f"{path}: no such file") from None
     except IsADirectoryError:
         raise InputError(f"{path}: is a directory, not a spec file") from None
     except OSError as exc:
         raise InputError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    with contextlib.closing(_RawFile(descriptor)) as stream:
+        info = os.fstat(descriptor)
+        if stat.S_ISDIR(info.st_mode):
+            raise InputError(f"{path}: is a directory, not a spec file")
+        if not stat.S_ISREG(info.st_mode):
+            raise InputError(f"{path}: not a regular file (a device, FIFO or socket); give a spec file")
+        if info.st_size > MAX_SPEC_BYTES:
+            raise InputError(f"{path}: too large ({info.st_size:,} bytes; a spec may have at most "
+                             f"{MAX_SPEC_BYTES:,}: put many points in a point_cloud file)")
+        try:
+            data = stream.read(MAX_SPEC_BYTES + 1)
+        except OSError as exc:
+            raise InputError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    if len(data) > MAX_SPEC_BYTES:
+        raise InputError(f"{path}: too large (more than {MAX_SPEC_BYTES:,} bytes)")
     if b"\x00" in data:
         raise InputError(f"{path}: not a text file (binary data)")
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
         raise InputError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+    if text.startswith("\ufeff"):
+        text = text[1:]
     if not text.strip():
         raise InputError(f"{path}: file is empty")
-    parsed = _parse_json(text)
-    if parsed is not _NOT_JSON:
-        return parsed
-    try:
-        return yaml.load(text, Loader=_UniqueKeyLoader)  # noqa: S506 - a SafeLoader subclass
-    except yaml.MarkedYAMLError as exc:
-        mark = exc.problem_mark or exc.context_mark
-        where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark else ""
-        problem = exc.problem or exc.context or "invalid YAML"
-        raise InputError(f"{path}: YAML syntax error: {where}{problem}") from None
-    except yaml.YAMLError as exc:
-        raise InputError(f"{path}: YAML syntax error: {exc}") from None
+    return text
+
+
+def read_yaml(path: str | Path) -> Any:
+    """Parsed YAML of a spec file (see :mod:`rbi.spec.yaml_reader` for what is refused);
+    :class:`InputError` for a missing, empty, binary or malformed file."""
+    path = str(path)
+    text = read_spec_text(path)
+    with paused_gc():
+        parsed = _parse_json(text)
+        if parsed is not _NOT_JSON:
+            return parsed
+        try:
+            return read_document(text)
+        except YamlProblem as exc:
+            part_label, field_path = format_location(exc.where, None)
+            where = [part_label] if part_label else []
+            where += field_path
+            raise InputError(": ".join([path, *where, f"line {exc.line}, column {exc.column}: {exc.problem}"])) from None
+        except yaml.MarkedYAMLError as exc:
+            mark = exc.problem_mark or exc.context_mark
+            where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark else ""
+            problem = exc.problem or exc.context or "invalid YAML"
+            raise InputError(f"{path}: YAML syntax error: {where}{problem}") from None
+        except yaml.YAMLError as exc:
+            raise InputError(f"{path}: YAML syntax error: {str(exc)[:200]}") from None
 
 
 _NOT_JSON = object()
@@ -112,8 +160,9 @@ _NOT_JSON = object()
 def _parse_json(text: str) -> Any:
     """Fast path for a spec written as one JSON object (valid YAML too, and what a program that
     writes 10⁵ parts emits): the json module reads it about 100 times faster than PyYAML.
-    Anything else — YAML, invalid JSON, a key given twice — returns ``_NOT_JSON`` and goes to
-    the YAML parser, which reports the problem with its line and column."""
+    Anything else — YAML, invalid JSON, a key given twice, nesting deeper than the YAML
+    reader's limit, an integer too long for Python — returns ``_NOT_JSON`` and goes to the YAML
+    reader, which reports the problem with its line and column."""
     if not text.lstrip().startswith("{"):
         return _NOT_JSON
     import json
@@ -125,9 +174,22 @@ def _parse_json(text: str) -> Any:
         return dict(pairs)
 
     try:
-        return json.loads(text, object_pairs_hook=unique)
-    except ValueError:
+        parsed = json.loads(text, object_pairs_hook=unique)
+    except (ValueError, RecursionError):
         return _NOT_JSON
+    return parsed if _depth_within(parsed, MAX_DEPTH) else _NOT_JSON
+
+
+def _depth_within(value: Any, limit: int) -> bool:
+    """Whether lists and dicts in ``value`` nest at most ``limit`` levels (level by level, no
+    recursion)."""
+    level = [value] if isinstance(value, (dict, list)) else []
+    for _ in range(limit):
+        if not level:
+            return True
+        level = [child for item in level for child in (item.values() if isinstance(item, dict) else item)
+                 if isinstance(child, (dict, list))]
+    return not level
 
 
 def validation_messages(path: str, raw: Any) -> tuple[Any, list[str]]:
@@ -141,7 +203,8 @@ def validation_messages(path: str, raw: Any) -> tuple[Any, list[str]]:
     if not isinstance(raw, dict):
         return None, [f"{path}: must be a mapping with a `parts` list at the top level (got {type(raw).__name__})"]
     try:
-        return BodySpec.model_validate(raw), []
+        with paused_gc():
+            return BodySpec.model_validate(raw), []
     except ValidationError as exc:
         errors = sorted(exc.errors(include_url=False), key=lambda e: e["type"] != "extra_forbidden")
         return None, [_format_error(path, err, raw) for err in errors]
@@ -215,4 +278,5 @@ def load_body(path: str | Path) -> LoadedBody:
     from rbi.spec.translate import body_from_spec
 
     path = str(path)
-    return body_from_spec(load_spec(path), path)
+    with paused_gc():
+        return body_from_spec(load_spec(path), path)

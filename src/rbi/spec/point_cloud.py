@@ -1,10 +1,12 @@
 """Point clouds: many point masses read from one file instead of one YAML entry each.
 
 A spec names the file with ``point_cloud: {file: cloud.csv}``; the path is relative to the
-spec file's folder and every number is in the spec's own units. Two formats:
+spec file's folder (one leaving it is refused unless ``--allow-outside-paths`` is given) and
+every number is in the spec's own units. Two formats:
 
-- ``.csv``: a header row naming the columns ``mass``, ``x``, ``y``, ``z`` (any order; further
-  columns are ignored), then one point a row. Lines starting with ``#`` are comments.
+- ``.csv``: a header row naming the columns ``mass``, ``x``, ``y``, ``z`` (any order, each
+  once; further columns are ignored), then one point a row. Lines starting with ``#`` are
+  comments; a UTF-8 byte-order mark is skipped.
 - ``.npy``: a float array of shape (N, 4) with the columns ``mass, x, y, z`` — the fastest
   to load (no text to parse).
 
@@ -14,6 +16,8 @@ one vectorised pass: it never becomes a Python list of per-point objects.
 
 from __future__ import annotations
 
+import os
+import stat
 import warnings
 from pathlib import Path
 
@@ -22,34 +26,46 @@ import numpy as np
 from rbi.core.inertia import combine
 from rbi.core.shapes import MassElement
 from rbi.spec.errors import InputError
+from rbi.spec.paths import spec_relative_file
 
 COLUMNS = ("mass", "x", "y", "z")
-
-
-def resolve(spec_path: str, file: str) -> Path:
-    """Where a cloud file named in the spec at ``spec_path`` lives."""
-    cloud = Path(file).expanduser()
-    return cloud if cloud.is_absolute() else Path(spec_path).parent / cloud
+MAX_CSV_BYTES = 4 * 1024**3
+"""Largest CSV cloud read (4 GiB, some 5 × 10⁷ points); a larger cloud belongs in a ``.npy``."""
+_HEADER_LINE_CHARS = 4096
 
 
 def read_point_cloud(path: str | Path, label: str) -> tuple[np.ndarray, np.ndarray]:
     """Masses (N,) and positions (N, 3) of a cloud file; :class:`InputError` prefixed with
-    ``label`` (for instance ``top.yaml: point_cloud: cloud.csv``) on any problem."""
+    ``label`` (for instance ``top.yaml: point_cloud: file: cloud.csv``) on any problem.
+
+    Messages name the line, column or point at fault but never quote the file's content: the
+    file may be one a spec named to leak it."""
     path = Path(path)
-    if not path.is_file():
-        raise InputError(f"{label}: no such file" if not path.exists() else f"{label}: not a file")
-    if path.suffix.lower() == ".npy":
-        table = _read_npy(path, label)
-    else:
-        table = _read_csv(path, label)
+    try:
+        info = path.stat()
+    except OSError:
+        raise InputError(f"{label}: no such file") from None
+    if not stat.S_ISREG(info.st_mode):
+        raise InputError(f"{label}: not a regular file")
+    try:
+        if path.suffix.lower() == ".npy":
+            table = _read_npy(path, label)
+        else:
+            if info.st_size > MAX_CSV_BYTES:
+                raise InputError(f"{label}: too large for a CSV cloud ({info.st_size:,} bytes, at most "
+                                 f"{MAX_CSV_BYTES:,}); save it as .npy")
+            table = _read_csv(path, label)
+    except OSError as exc:  # unreadable: permissions, an I/O error, a kernel file that refuses reads
+        raise InputError(f"{label}: cannot read: {exc.strerror or type(exc).__name__}") from None
     _check_values(table, label)
     return table[:, 0].copy(), table[:, 1:4]
 
 
 def cloud_element(spec_path: str, file: str) -> MassElement:
-    """The whole cloud as one part: its mass, centre of mass and inertia about that centre."""
+    """The whole cloud as one part: its mass, centre of mass and inertia about that centre.
+    ``file`` is resolved against the spec's folder (see :func:`rbi.spec.paths.spec_relative_file`)."""
     label = f"{spec_path}: point_cloud: file: {file}"
-    masses, positions = read_point_cloud(resolve(spec_path, file), label)
+    masses, positions = read_point_cloud(spec_relative_file(spec_path, file, label), label)
     props = combine(masses, positions)
     if not (np.isfinite(props.mass) and np.all(np.isfinite(props.inertia_com))):
         raise InputError(f"{label}: numbers too large: mass or inertia overflows")
@@ -57,14 +73,44 @@ def cloud_element(spec_path: str, file: str) -> MassElement:
 
 
 def _read_npy(path: Path, label: str) -> np.ndarray:
-    try:
-        table = np.load(path, allow_pickle=False)
-    except (OSError, ValueError) as exc:
-        raise InputError(f"{label}: not a readable .npy array ({exc})") from None
-    if table.ndim != 2 or table.shape[1] != 4 or table.dtype.kind not in "fiu":
-        raise InputError(f"{label}: a .npy cloud must be a numeric array of shape (N, 4) with columns "
-                         f"mass, x, y, z (got shape {table.shape}, dtype {table.dtype})")
+    """The (N, 4) table of a ``.npy`` file, its header checked against the file's size before
+    any array is allocated."""
+    from numpy.lib import format as npy
+
+    not_npy = f"{label}: not a readable .npy array (expected a numeric array of shape (N, 4) with columns mass, x, y, z)"
+    with open(path, "rb") as stream:
+        try:
+            version = npy.read_magic(stream)
+            if version == (1, 0):
+                shape, fortran_order, dtype = npy.read_array_header_1_0(stream)
+            elif version in ((2, 0), (3, 0)):
+                shape, fortran_order, dtype = npy.read_array_header_2_0(stream)
+            else:
+                raise ValueError("unknown version")
+        except (ValueError, SyntaxError, TypeError, EOFError, UnicodeDecodeError):
+            raise InputError(not_npy) from None
+        if dtype.hasobject or dtype.kind not in "fiu" or dtype.shape != () or len(shape) != 2 or shape[1] != 4:
+            raise InputError(f"{label}: a .npy cloud must be a numeric array of shape (N, 4) with columns "
+                             f"mass, x, y, z (got shape {tuple(shape)}, dtype {_plain_dtype_name(dtype)})")
+        if shape[0] == 0:
+            raise InputError(f"{label}: holds no points (an array of shape (0, 4))")
+        data_bytes = os.fstat(stream.fileno()).st_size - stream.tell()
+        if data_bytes != shape[0] * 4 * dtype.itemsize:
+            raise InputError(f"{label}: the header says {shape[0]:,} points ({shape[0] * 4 * dtype.itemsize:,} bytes) "
+                             f"but the file holds {data_bytes:,} bytes of data (truncated or not a .npy file)")
+        stream.seek(0)
+        try:
+            table = npy.read_array(stream, allow_pickle=False)
+        except ValueError:
+            raise InputError(not_npy) from None
     return np.asarray(table, dtype=float)
+
+
+def _plain_dtype_name(dtype: np.dtype) -> str:
+    """A dtype's name when it is a plain number type; never a structured dtype's field names
+    (text from the file)."""
+    plain = dtype.fields is None and dtype.shape == () and dtype.kind in "biufc"
+    return str(dtype) if plain else "not a plain number type"
 
 
 def _read_csv(path: Path, label: str) -> np.ndarray:
@@ -72,13 +118,16 @@ def _read_csv(path: Path, label: str) -> np.ndarray:
     missing = [c for c in COLUMNS if c not in header]
     if missing:
         raise InputError(f"{label}: line {header_line}: header must name the columns mass, x, y, z "
-                         f"(missing {', '.join(missing)}; got {', '.join(header) or 'nothing'})")
+                         f"(missing {', '.join(missing)})")
+    twice = [c for c in COLUMNS if header.count(c) > 1]
+    if twice:
+        raise InputError(f"{label}: line {header_line}: column {twice[0]} is named twice in the header")
     usecols = [header.index(c) for c in COLUMNS]
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)  # "no data": reported below instead
             table = np.loadtxt(path, delimiter=",", skiprows=header_line, usecols=usecols, ndmin=2,
-                               dtype=float, comments="#", encoding="utf-8")
+                               dtype=float, comments="#", encoding="utf-8-sig")
     except ValueError as exc:
         # numpy counts rows after the skipped header; name the line a text editor shows.
         raise InputError(f"{label}: {_describe_parse_error(str(exc), header_line)}") from None
@@ -90,10 +139,21 @@ def _read_csv(path: Path, label: str) -> np.ndarray:
 
 
 def _header(path: Path, label: str) -> tuple[list[str], int]:
-    """Column names of the first non-comment, non-blank line, and that line's number."""
+    """Column names of the first non-comment, non-blank line, and that line's number (a
+    byte-order mark, as spreadsheets write, is skipped)."""
     try:
-        with open(path, encoding="utf-8") as stream:
-            for number, line in enumerate(stream, start=1):
+        with open(path, encoding="utf-8-sig", newline="") as stream:
+            number = 0
+            while True:
+                line = stream.readline(_HEADER_LINE_CHARS)
+                if not line:
+                    break
+                number += 1
+                if "\x00" in line:
+                    raise InputError(f"{label}: not a text file (binary data)")
+                if len(line) >= _HEADER_LINE_CHARS and not line.endswith("\n"):
+                    raise InputError(f"{label}: line {number}: longer than {_HEADER_LINE_CHARS} characters "
+                                     "(expected a header row mass,x,y,z)")
                 text = line.strip()
                 if text and not text.startswith("#"):
                     return [c.strip().lower() for c in text.split(",")], number
@@ -103,27 +163,26 @@ def _header(path: Path, label: str) -> tuple[list[str], int]:
 
 
 def _describe_parse_error(message: str, header_line: int) -> str:
-    """numpy's loadtxt message with its row (counted after the header) turned into a file line."""
+    """numpy's loadtxt message turned into a file line and column, without the offending text."""
     import re
 
     # numpy counts the rows after the header from 0 in conversion errors, from 1 in column errors.
-    convert = re.search(r"could not convert string (.*) to float64 at row (\d+), column (\d+)", message)
+    convert = re.search(r"could not convert string .* to float64 at row (\d+), column (\d+)", message)
     if convert:
-        line = int(convert.group(2)) + header_line + 1
-        return f"line {line}: column {convert.group(3)}: must be a number (got {convert.group(1)})"
+        line = int(convert.group(1)) + header_line + 1
+        return f"line {line}: column {convert.group(2)}: must be a number"
     columns = re.search(r"at row (\d+) with (\d+) columns?", message)
     if columns:
         line = int(columns.group(1)) + header_line
         return f"line {line}: has {columns.group(2)} columns, fewer than the header names"
-    return message.rstrip(".")
+    return "cannot be read as rows of comma-separated numbers"
 
 
 def _check_values(table: np.ndarray, label: str) -> None:
     finite = np.isfinite(table)
     if not finite.all():
         row, col = np.argwhere(~finite)[0]
-        raise InputError(f"{label}: point {row}: {COLUMNS[col]}: must be a finite number (got {float(table[row, col])!r})")
+        raise InputError(f"{label}: point {row}: {COLUMNS[col]}: must be a finite number")
     bad = np.flatnonzero(table[:, 0] <= 0.0)
     if bad.size:
-        row = int(bad[0])
-        raise InputError(f"{label}: point {row}: mass: must be greater than 0 (got {float(table[row, 0])!r})")
+        raise InputError(f"{label}: point {int(bad[0])}: mass: must be greater than 0")

@@ -1,0 +1,310 @@
+"""A bounded YAML reader for spec files: libyaml's event stream built into plain Python values.
+
+Why not ``yaml.load``: PyYAML's composer and constructor recurse once per nesting level (30 000
+nested ``[`` crash the C composer, 1 000 raise RecursionError), they hand aliased values out
+shared but never count how far they expand (a "billion laughs" document of a few hundred bytes
+stands for 10¹⁰ values that validation or an error message would then walk), and they follow
+YAML 1.1, where ``010`` is 8 and ``1:30`` is 90. This reader walks the parser's events with an
+explicit stack and so:
+
+- refuses nesting deeper than :data:`MAX_DEPTH` levels the moment it is reached;
+- counts every value an alias stands for and refuses a document whose aliases add more than
+  :data:`ALIAS_BUDGET` values (or as many as the file writes out, when that is more);
+- reads plain scalars by the YAML 1.2 core schema restricted to decimal numbers: ``null``/``~``,
+  ``true``/``false``, decimal integers and floats (``1e-3`` included), ``.inf``/``.nan``; a
+  number written in a form YAML 1.1 reads differently (leading zero, ``0x``/``0o``/``0b``,
+  base 60 ``1:30``, ``1_000``) is refused with its field rather than guessed;
+- supports merge keys (``<<: *defaults`` or ``<<: [*a, *b]``; keys written in the mapping win,
+  then the first merged mapping) while refusing a key written twice in one mapping;
+- refuses complex (collection) keys, tags other than the standard scalar/collection ones, and
+  more than one document.
+
+Every problem raises :class:`YamlProblem` with the line, column and field path; the caller adds
+the file name. Only the offending scalar (cut to a few characters) is ever quoted.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Any
+
+import yaml
+
+MAX_DEPTH = 100
+"""Deepest nesting of lists and mappings accepted (a spec uses about five)."""
+
+ALIAS_BUDGET = 1_000_000
+"""Values aliases may add to a document beyond those written out (more if the file itself
+writes out more values than this)."""
+
+MAX_INTEGER_DIGITS = 4300
+"""Longest integer accepted (Python's own limit for converting text to int)."""
+
+_YAML = "tag:yaml.org,2002:"
+_DECIMAL = re.compile(r"[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?")
+_FLOAT_CHARS = frozenset(".eE")
+_WORDS: dict[str, Any] = {
+    "": None, "~": None, "null": None, "Null": None, "NULL": None,
+    "true": True, "True": True, "TRUE": True, "false": False, "False": False, "FALSE": False,
+    ".inf": float("inf"), ".Inf": float("inf"), ".INF": float("inf"),
+    "+.inf": float("inf"), "+.Inf": float("inf"), "+.INF": float("inf"),
+    "-.inf": float("-inf"), "-.Inf": float("-inf"), "-.INF": float("-inf"),
+    ".nan": float("nan"), ".NaN": float("nan"), ".NAN": float("nan"),
+}
+_NUMBER_START = frozenset("-+.0123456789")
+# Plain scalars YAML 1.1 reads as numbers and YAML 1.2 does not (or reads differently).
+_YAML11_NUMBERS = [
+    (re.compile(r"[-+]?0[0-9_]+"), "leading zero (YAML 1.1 reads it as octal); write the decimal number without it, "
+                                   "or quote it if it is text"),
+    (re.compile(r"[-+]?0[xX][0-9a-fA-F_]+"), "hexadecimal; write the number in decimal"),
+    (re.compile(r"[-+]?0[oO][0-7_]+"), "octal; write the number in decimal"),
+    (re.compile(r"[-+]?0[bB][01_]+"), "binary; write the number in decimal"),
+    (re.compile(r"[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?"),
+     "base 60 (YAML 1.1 reads 1:30 as 90); write the number in decimal, or quote it if it is text"),
+    (re.compile(r"[-+]?[0-9_]*_[0-9_]*(?:\.[0-9_]*)?(?:[eE][-+]?[0-9]+)?|[-+]?\.[0-9_]*_[0-9_]*"),
+     "digit separator '_' (YAML 1.1 only); write the number without underscores"),
+]
+_SCALAR_TAGS = {_YAML + "str", _YAML + "int", _YAML + "float", _YAML + "bool", _YAML + "null", "!"}
+_COLLECTION_TAGS = {_YAML + "seq", _YAML + "map", "!"}
+_MERGE = object()
+
+
+class YamlProblem(Exception):
+    """A document rbi will not read: ``where`` is the field path (``parts[2].mass``, or empty),
+    ``line``/``column`` 1-based."""
+
+    def __init__(self, problem: str, line: int, column: int, where: tuple = ()):
+        super().__init__(problem)
+        self.problem, self.line, self.column, self.where = problem, line, column, where
+
+
+def _parser(text: str):
+    cparser = getattr(getattr(yaml, "cyaml", None), "CParser", None)
+    if cparser is not None:
+        return cparser(text)
+    return yaml.loader.BaseLoader(text)  # the pure-Python parser: iterative as well
+
+
+def _short(text: str) -> str:
+    """A scalar from the document quoted for a message, cut to a few characters."""
+    return repr(text if len(text) <= 24 else text[:21] + "...")
+
+
+def _show_tag(tag: str) -> str:
+    """A tag as written (``!!set``), cut to a few characters."""
+    shown = "!!" + tag[len(_YAML):] if tag.startswith(_YAML) else tag
+    return shown if len(shown) <= 40 else shown[:37] + "..."
+
+
+class _Frame:
+    """One open list or mapping."""
+
+    __slots__ = ("value", "is_map", "key", "key_mark", "anchor", "start_total", "height", "merges", "mark")
+
+    def __init__(self, value, is_map, anchor, start_total, mark):
+        self.value, self.is_map, self.anchor, self.start_total, self.mark = value, is_map, anchor, start_total, mark
+        self.key = _NO_KEY
+        self.key_mark = None
+        self.height = 1
+        self.merges = None
+
+
+_NO_KEY = object()
+
+
+def read_document(text: str) -> Any:
+    """The single YAML document in ``text`` as dicts, lists, str, int, float, bool and None.
+
+    Raises :class:`YamlProblem` for anything this module refuses and ``yaml.YAMLError`` (with a
+    mark) for a syntax error found by the parser."""
+    get_event = _parser(text).get_event
+    ScalarEvent, AliasEvent = yaml.ScalarEvent, yaml.AliasEvent
+    MappingStartEvent, SequenceStartEvent = yaml.MappingStartEvent, yaml.SequenceStartEvent
+    MappingEndEvent, SequenceEndEvent = yaml.MappingEndEvent, yaml.SequenceEndEvent
+    DocumentStartEvent, StreamEndEvent = yaml.DocumentStartEvent, yaml.StreamEndEvent
+    words, number_start, decimal, float_chars = _WORDS, _NUMBER_START, _DECIMAL.fullmatch, _FLOAT_CHARS
+
+    stack: list[_Frame] = []
+    top: _Frame | None = None  # stack[-1]
+    anchors: dict[str, tuple[Any, int, int]] = {}  # name -> (value, values it stands for, height)
+    total = 0  # values in the document so far, aliases expanded
+    through_aliases = 0  # of which added by aliases
+    documents = 0
+    result: Any = None
+
+    def fail(problem: str, mark, in_key: bool = False):
+        raise YamlProblem(problem, mark.line + 1, mark.column + 1, _where(stack, in_key))
+
+    while True:
+        event = get_event()
+        kind = type(event)
+        if kind is ScalarEvent:
+            total += 1
+            value = event.value
+            if event.tag is None:
+                if not event.style:  # plain: resolve by the core schema
+                    if value in words:
+                        value = words[value]
+                    elif value[0] in number_start:
+                        if decimal(value) and (not float_chars.isdisjoint(value)):
+                            value = float(value)  # the common cases, checked inline
+                        elif value[0] in "123456789" and len(value) < 16 and decimal(value):
+                            value = int(value)
+                        else:
+                            value = _number(value, event.start_mark, fail)
+                    elif value == "<<":
+                        value = _MERGE
+            elif event.tag != "!":
+                value = _tagged_scalar(event, fail)
+            if event.anchor is not None:
+                anchors[event.anchor] = (value, 1, 0)
+            if top is None:
+                result = "<<" if value is _MERGE else value
+            elif value is _MERGE:
+                _add(top, value, event.start_mark, fail)
+            elif not top.is_map:  # the common cases inline: a list item, a new key, a value
+                top.value.append(value)
+            elif top.key is _NO_KEY:
+                if value in top.value:
+                    _add(top, value, event.start_mark, fail)
+                top.key = value
+            elif top.key is _MERGE:
+                _add(top, value, event.start_mark, fail)
+            else:
+                top.value[top.key] = value
+                top.key = _NO_KEY
+        elif kind is MappingStartEvent or kind is SequenceStartEvent:
+            total += 1
+            if event.tag is not None and event.tag not in _COLLECTION_TAGS:
+                fail(f"tag {_show_tag(event.tag)} is not supported (only plain lists, mappings and scalars)",
+                     event.start_mark)
+            if len(stack) >= MAX_DEPTH:
+                fail(f"nested more than {MAX_DEPTH} levels deep", event.start_mark)
+            if stack and stack[-1].is_map and stack[-1].key is _NO_KEY:
+                fail(_COMPLEX_KEY, event.start_mark, in_key=True)
+            is_map = kind is MappingStartEvent
+            top = _Frame({} if is_map else [], is_map, event.anchor, total - 1, event.start_mark)
+            stack.append(top)
+        elif kind is MappingEndEvent or kind is SequenceEndEvent:
+            frame = stack.pop()
+            top = stack[-1] if stack else None
+            value = frame.value
+            if frame.merges:
+                _apply_merges(value, frame.merges)
+            if frame.anchor is not None:
+                anchors[frame.anchor] = (value, total - frame.start_total, frame.height)
+            if stack:
+                parent = stack[-1]
+                if frame.height >= parent.height:
+                    parent.height = frame.height + 1
+                _add(parent, value, event.start_mark, fail)
+            else:
+                result = value
+        elif kind is AliasEvent:
+            found = anchors.get(event.anchor)
+            if found is None:
+                fail(f"alias *{_short(event.anchor)[1:-1]} names no anchor defined before it", event.start_mark)
+            value, size, height = found
+            total += size
+            through_aliases += size
+            budget = max(ALIAS_BUDGET, total - through_aliases)
+            if through_aliases > budget:
+                fail(f"aliases expand to more than {budget:,} values (an alias bomb?)", event.start_mark)
+            if len(stack) + height > MAX_DEPTH:
+                fail(f"nested more than {MAX_DEPTH} levels deep (through an alias)", event.start_mark)
+            if stack:
+                parent = stack[-1]
+                if parent.is_map and parent.key is _NO_KEY and isinstance(value, (dict, list)):
+                    fail(_COMPLEX_KEY, event.start_mark, in_key=True)
+                if height >= parent.height:
+                    parent.height = height + 1
+                _add(parent, value, event.start_mark, fail)
+            else:
+                result = value
+        elif kind is DocumentStartEvent:
+            documents += 1
+            if documents > 1:
+                fail("more than one YAML document in the file (a spec is one document)", event.start_mark)
+        elif kind is StreamEndEvent:
+            return result
+
+
+_COMPLEX_KEY = "a key must be text or a number, not a list or mapping (complex keys are not supported)"
+
+
+def _add(frame: _Frame, value: Any, mark, fail) -> None:
+    """Put ``value`` into the open list or mapping ``frame`` (as a key or as a value)."""
+    if not frame.is_map:
+        frame.value.append("<<" if value is _MERGE else value)
+    elif frame.key is _NO_KEY:
+        if value is _MERGE:
+            if frame.merges is not None:
+                fail("'<<' given twice in one mapping (merge several with <<: [*a, *b])", mark, in_key=True)
+        elif value in frame.value:
+            fail(f"duplicate key {_short(str(value))}", mark, in_key=True)
+        frame.key = value
+    else:
+        key, frame.key = frame.key, _NO_KEY
+        if key is _MERGE:
+            merged = value if isinstance(value, list) else [value]
+            if not merged or not all(isinstance(m, dict) for m in merged):
+                frame.key = _MERGE
+                fail("'<<' (merge) needs a mapping or a list of mappings, usually aliases: <<: *defaults", mark)
+            frame.merges = merged
+        else:
+            frame.value[key] = "<<" if value is _MERGE else value
+
+
+def _apply_merges(mapping: dict, merges: list[dict]) -> None:
+    """Keys of the merged mappings that ``mapping`` does not set itself; the first merged
+    mapping wins over later ones."""
+    for source in merges:
+        for key, value in source.items():
+            if key not in mapping:
+                mapping[key] = value
+
+
+def _number(value: str, mark, fail) -> Any:
+    """A plain scalar starting like a number: int, float, or text when YAML 1.1 would not read
+    it as a number either; refused when YAML 1.1 reads it as a number differently from 1.2."""
+    if _DECIMAL.fullmatch(value):
+        if not _FLOAT_CHARS.isdisjoint(value):
+            return float(value)
+        digits = value.lstrip("+-")
+        if len(digits) > MAX_INTEGER_DIGITS:
+            fail(f"integer of {len(digits)} digits is too long (at most {MAX_INTEGER_DIGITS})", mark)
+        if len(digits) > 1 and digits[0] == "0":
+            fail(f"{_short(value)} is not a decimal number: {_YAML11_NUMBERS[0][1]}", mark)
+        return int(value)
+    for pattern, meaning in _YAML11_NUMBERS:
+        if pattern.fullmatch(value):
+            fail(f"{_short(value)} is not a decimal number: {meaning}", mark)
+    return value
+
+
+def _tagged_scalar(event, fail) -> Any:
+    """A scalar with an explicit standard tag (``!!str 010``, ``!!float 1``)."""
+    tag, value = event.tag, event.value
+    if tag not in _SCALAR_TAGS:
+        fail(f"tag {_show_tag(tag)} is not supported (only plain lists, mappings and scalars)", event.start_mark)
+    if tag == _YAML + "str":
+        return value
+    resolved = _WORDS[value] if value in _WORDS else _number(value, event.start_mark, fail) if value else value
+    expected = {_YAML + "int": int, _YAML + "float": (int, float), _YAML + "bool": bool, _YAML + "null": type(None)}[tag]
+    if not isinstance(resolved, expected) or (isinstance(resolved, bool) and tag != _YAML + "bool"):
+        fail(f"{_short(value)} is not a valid {tag[len(_YAML):]}", event.start_mark)
+    return float(resolved) if tag == _YAML + "float" else resolved
+
+
+def _where(stack: list[_Frame], in_key: bool) -> tuple:
+    """The field path of the value being read, from the open collections (a key being read
+    ends the path at its mapping)."""
+    path: list[Any] = []
+    for frame in stack:
+        if frame.is_map:
+            if frame.key is _NO_KEY or frame.key is _MERGE:
+                break
+            path.append(frame.key if isinstance(frame.key, (str, int)) else str(frame.key))
+        else:
+            path.append(len(frame.value))
+    return tuple(path)
