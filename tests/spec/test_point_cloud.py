@@ -150,3 +150,61 @@ def test_a_spec_needs_parts_or_a_cloud_and_the_cli_says_so(tmp_path):
     proc = run_rbi("inertia", tmp_path / "bad.yaml")
     assert proc.returncode == 2
     assert "point_cloud.colour: unknown field" in proc.stderr
+
+
+# -- hostile or odd cloud files: each refused with one line before the expensive work -----------
+
+def _spec_for(tmp_path, file):
+    (tmp_path / "body.yaml").write_text(f"point_cloud: {{file: {file}}}\n")
+    return tmp_path / "body.yaml"
+
+
+def test_an_empty_npy_cloud_is_refused(tmp_path):
+    np.save(tmp_path / "empty.npy", np.zeros((0, 4)))
+    with pytest.raises(InputError, match="empty.npy: holds no points"):
+        load_body(_spec_for(tmp_path, "empty.npy"))
+
+
+def test_an_npy_header_claiming_more_rows_than_the_file_holds_is_refused_before_allocating(tmp_path):
+    from numpy.lib import format as npy
+
+    path = tmp_path / "liar.npy"
+    with open(path, "wb") as stream:
+        npy.write_array_header_1_0(stream, {"descr": "<f8", "fortran_order": False, "shape": (10**11, 4)})
+        stream.write(np.ones(8).tobytes())  # 2 points' worth of data, not 10¹¹
+    with pytest.raises(InputError, match=r"header says 100,000,000,000 points .* holds 64 bytes"):
+        load_body(_spec_for(tmp_path, "liar.npy"))
+
+
+def test_a_truncated_or_structured_npy_is_refused_without_its_field_names(tmp_path):
+    np.save(tmp_path / "cut.npy", np.ones((10, 4)))
+    (tmp_path / "cut.npy").write_bytes((tmp_path / "cut.npy").read_bytes()[:-8])
+    with pytest.raises(InputError, match="header says 10 points"):
+        load_body(_spec_for(tmp_path, "cut.npy"))
+    np.save(tmp_path / "rec.npy", np.zeros((3, 4), dtype=[("hidden_field_name", "f8")]))
+    with pytest.raises(InputError) as error:
+        load_body(_spec_for(tmp_path, "rec.npy"))
+    assert "hidden_field_name" not in str(error.value) and "shape (N, 4)" in str(error.value)
+
+
+def test_a_csv_cloud_with_a_byte_order_mark_is_the_same_cloud(tmp_path):
+    write_csv(tmp_path / "plain.csv", [1.0, 3.0], [[0, 0, 1.0], [0, 2.0, -1.0]])
+    (tmp_path / "bom.csv").write_bytes(b"\xef\xbb\xbf" + (tmp_path / "plain.csv").read_bytes())
+    (tmp_path / "a.yaml").write_text("point_cloud: {file: plain.csv}\n")
+    (tmp_path / "b.yaml").write_text("point_cloud: {file: bom.csv}\n")
+    a, b = load_body(tmp_path / "a.yaml").props, load_body(tmp_path / "b.yaml").props
+    assert b.mass == a.mass == 4.0
+    np.testing.assert_array_equal(b.com, [0.0, 1.5, -0.5])
+    np.testing.assert_array_equal(b.inertia_com, a.inertia_com)
+
+
+def test_a_column_named_twice_is_refused(tmp_path):
+    (tmp_path / "twice.csv").write_text("mass,x,y,z,x\n1,0,0,0,5\n")
+    with pytest.raises(InputError, match="line 1: column x is named twice"):
+        load_body(_spec_for(tmp_path, "twice.csv"))
+
+
+def test_a_binary_file_named_csv_is_refused(tmp_path):
+    (tmp_path / "zeros.csv").write_bytes(b"\x00" * 100_000)
+    with pytest.raises(InputError, match="binary data"):
+        load_body(_spec_for(tmp_path, "zeros.csv"))

@@ -91,5 +91,11 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
 
 
 def _show(value: Any) -> str:
-    text = repr(value)
+    """``value`` for a message in at most 40 characters, built without walking all of a large
+    list or mapping (a value shared through YAML aliases may stand for millions)."""
+    import reprlib
+
+    shorter = reprlib.Repr()
+    shorter.maxlevel, shorter.maxlist, shorter.maxdict, shorter.maxstring, shorter.maxother = 3, 4, 4, 40, 40
+    text = shorter.repr(value)
     return text if len(text) <= 40 else text[:37] + "..."
