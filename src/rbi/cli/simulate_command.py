@@ -149,14 +149,18 @@ def simulate(
         from rbi.cli.plot import plot_trajectory
 
         title = f"{body.name or file}: spin {number(float(np.linalg.norm(omega0)))} rad/s, tilt {number(tilt)}°"
-        energy_unit = "J" if body.labels["energy"] == "kg·m²/s²" else body.labels["energy"]
         free = {} if scene.pivoted else {"principal_axes": scene.principal_axes, "inertia": scene.inertia}
         write_output(plot_target, writer=lambda path: plot_trajectory(
-            shown, path, title=title, format=plot_target.format, energy_unit=energy_unit, **free))
+            shown, path, title=title, format=plot_target.format, energy_unit=energy_unit(body), **free))
     if format == OutputFormat.csv:
         sys.stdout.write(trajectory_csv)
         return
     emit(format.value, result, lambda: _table(body, result))
+
+
+def energy_unit(body) -> str:
+    """The unit of an energy in the spec's units: J in SI, otherwise mass·length²/s²."""
+    return "J" if (body.mass_unit, body.length_unit) == ("kg", "m") else body.labels["energy"]
 
 
 def check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol) -> None:
@@ -281,7 +285,8 @@ def _table(body, result: dict):
     for key, item in result["conserved"].items():
         initial = item["initial"]
         shown = tables.vector(initial) if np.ndim(initial) else number(initial, 10)
-        accuracy.append((f"{names[key]}", labels[item["unit"]], f"{shown}  (drift {number(item['drift'], 2)})"))
+        unit = energy_unit(body) if item["unit"] == "energy" else labels[item["unit"]]
+        accuracy.append((f"{names[key]}", unit, f"{shown}  (drift {number(item['drift'], 2)})"))
     accuracy.append(("| |q| − 1 | largest", "", number(result["quaternion_norm_error"], 2)))
     estimate = result.get("error_estimate")
     if estimate and estimate.get("orientation_deg") is None:
