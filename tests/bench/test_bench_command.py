@@ -23,7 +23,8 @@ def quick_run(tmp_path_factory):
 def test_quick_bench_prints_one_json_object_with_every_section(quick_run):
     result, _, _ = quick_run
     assert result["quick"] is True
-    assert {"workprecision", "throughput", "latency", "machine", "headline", "command"} <= set(result)
+    assert {"kernel", "workprecision", "throughput", "largespec", "latency", "sweep", "machine", "headline",
+            "command", "targets"} <= set(result)
     assert result["command"].startswith("rbi bench --quick")
     for key in ("date", "cpu", "cores", "python", "numpy", "scipy"):
         assert result["machine"][key]
@@ -76,6 +77,8 @@ def test_docs_page_and_plot_are_written(quick_run):
     assert text.startswith("# Performance")
     assert "rbi bench --quick" in text and result["machine"]["cpu"] in text
     assert "| method | rtol |" in text
+    assert "## Targets" in text and "## The kernel against its baselines" in text
+    assert "## Sweep throughput and memory" in text
     assert "![Final orientation error against in-process time](workprecision.png)" in text
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
@@ -90,3 +93,63 @@ def test_bad_options_exit_2_with_one_line(args, message):
     assert proc.returncode == 2
     assert message in proc.stderr
     assert len(proc.stderr.strip().splitlines()) == 1
+
+
+def test_kernel_section_compares_with_the_chapter_and_the_minimal_loop(quick_run):
+    result, _, _ = quick_run
+    k = result["kernel"]
+    assert k["ratio_default"] == pytest.approx(k["chapter"]["seconds"] / k["default"]["seconds"])
+    assert k["ratio_to_minimal_loop"] == pytest.approx(k["default"]["seconds"] / k["minimal_loop"]["seconds"])
+    # the baseline loop really is the same computation
+    assert k["minimal_loop"]["same_steps"] is True and k["minimal_loop"]["same_samples"] is True
+    assert k["minimal_loop"]["steps"] == k["default"]["steps"] > 0
+    best = k["best_matching"]
+    assert best is not None and best["no_worse"]
+    assert best["orientation_error_deg"] <= k["chapter"]["orientation_error_deg"]
+    assert k["ratio_best_matching"] == pytest.approx(k["chapter"]["seconds"] / best["seconds"])
+    # tighter tolerances take more steps
+    steps = [t["steps"] for t in k["trials"]]
+    assert steps == sorted(steps)
+
+
+def test_latency_has_first_run_and_every_timed_target(quick_run):
+    result, _, _ = quick_run
+    lat = result["latency"]
+    labels = {r["command"]: r for r in lat["commands"]}
+    for label in ("rbi --help", "rbi inertia bodies/top.yaml", "rbi inertia bodies/top.yaml --format json",
+                  "rbi simulate bodies/top.yaml --spin 200 --tilt 10"):
+        row = labels[label]
+        assert "error" not in row, row
+        assert row["ratio_to_numpy_import"] == pytest.approx(row["median_s"] / lat["commands"][0]["median_s"])
+        assert row["target"] in (1.3, 2.0, 2.5)
+    first = lat["first_run"]
+    assert first["ratio"] == pytest.approx(first["first_median_s"] / first["later_median_s"])
+    assert first["files_left_in_home"] == []  # nothing compiled or cached in HOME
+    assert first["compiling_line"] is False
+
+
+def test_sweep_section_ratios_are_against_their_baselines(quick_run):
+    result, _, _ = quick_run
+    sw = result["sweep"]
+    runs = sw["grid"]["spin"][2] * sw["grid"]["tilt_deg"][2]
+    assert sw["sweep"]["runs"] == sw["sweep"]["rows_written"] == runs
+    assert sw["ratio_to_cores_x_single"] == pytest.approx(
+        sw["sweep"]["runs_per_second"] / (sw["cores"] * sw["single_run"]["runs_per_second"]))
+    assert sw["ratio_to_process_loop"] == pytest.approx(
+        sw["sweep"]["runs_per_second"] / sw["process_loop"]["runs_per_second"])
+    mem = sw["memory"]
+    assert "error" not in mem, mem
+    assert mem["rows_written"] == mem["runs"]
+    assert 0 < mem["peak_rss_mb"] < 10_000 and mem["samples"]
+
+
+def test_targets_list_each_ratio_with_its_limit(quick_run):
+    result, _, _ = quick_run
+    targets = result["targets"]
+    assert {t["issue"] for t in targets} == {9, 10}
+    assert len(targets) >= 12
+    for t in targets:
+        assert t["baseline"]
+        if t["measured"] is not None:
+            expected = t["measured"] >= t["limit"] if t["comparison"] == "≥" else t["measured"] <= t["limit"]
+            assert t["met"] is expected

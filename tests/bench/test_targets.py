@@ -1,0 +1,48 @@
+"""rbi.cli.bench_report.targets: each target's ratio, limit and verdict from the sections'
+measurements (synthetic numbers: no timing here)."""
+
+from __future__ import annotations
+
+from rbi.bench import sweep
+from rbi.cli.bench_report import target_rows, targets
+
+
+def _kernel(chapter=3.0, default=0.001, minimal=0.0009, best=0.0004):
+    return {"case": {"spec": "bodies/top_bolted.yaml", "duration": 4.0},
+            "chapter": {"seconds": chapter, "orientation_error_deg": 1e-3},
+            "default": {"seconds": default, "orientation_error_deg": 1e-7, "steps": 2000},
+            "minimal_loop": {"seconds": minimal, "same_steps": True, "same_samples": True},
+            "best_matching": {"rtol": 1e-9, "seconds": best, "orientation_error_deg": 5e-4},
+            "ratio_default": chapter / default, "ratio_best_matching": chapter / best,
+            "ratio_to_minimal_loop": default / minimal,
+            "targets": {"ratio_default": 3000.0, "ratio_best_matching": 6000.0, "ratio_to_minimal_loop": 1.3}}
+
+
+def test_kernel_targets_and_verdicts():
+    rows = targets({"kernel": _kernel()})
+    assert [r["met"] for r in rows] == [True, True, True]
+    assert rows[0]["measured"] == 3000.0 and rows[0]["comparison"] == "≥"
+    assert rows[2]["measured"] == 0.001 / 0.0009 and rows[2]["comparison"] == "≤"
+    slow = targets({"kernel": _kernel(default=0.002, best=0.0006)})
+    assert [r["met"] for r in slow] == [False, False, False]
+    assert all(len(row) == 7 for row in target_rows(slow))
+
+
+def test_missing_measurement_is_not_a_pass():
+    rows = targets({"largespec": {"target": 0.5, "specs": [{"n_parts": 10, "shape": "point", "error": "x"}]}})
+    assert rows[0]["met"] is None and rows[0]["measured"] is None
+
+
+def test_largespec_uses_the_measured_ratio():
+    rows = targets({"largespec": {"target": 0.5, "specs": [{"n_parts": 100000, "shape": "point", "ratio": 0.4},
+                                                            {"n_parts": 10000, "shape": "cylinder", "ratio": 0.7}]}})
+    assert [r["met"] for r in rows] == [True, False]
+    assert "100,000 × point" in rows[0]["target"]
+
+
+def test_sample_runs_spread_over_the_grid():
+    g = {"spin": (150.0, 260.0, 100), "tilt": (0.01, 1.0, 100), "duration": 4.0}
+    picks = sweep.sample_runs(g, 10)
+    assert len(picks) == 10
+    assert picks[0] == (150.0, 0.01) and picks[-1] == (260.0, 1.0)
+    assert len(set(picks)) == 10
