@@ -65,3 +65,13 @@ def test_bad_extension_and_bad_spec(tmp_path, write_spec):
     proc = run_rbi_inprocess("show", bad, "--out", tmp_path / "a.png")
     one_line_exit_2(proc, "stem", "radius")
     assert not (tmp_path / "a.png").exists()
+
+
+@pytest.mark.parametrize("name", SPECS)
+def test_rbi_parts_works_on_every_bundled_body(name):
+    """The part masses add up to the body's mass, and the inertia shares to one."""
+    proc = run_rbi_inprocess("parts", BODIES / name, "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    result = json.loads(proc.stdout)
+    assert sum(p["mass"] for p in result["parts"]) == pytest.approx(result["mass"], rel=1e-12)
+    assert sum(p["inertia_share"] for p in result["parts"]) == pytest.approx(1.0, rel=1e-9)
