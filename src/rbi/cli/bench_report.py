@@ -84,12 +84,16 @@ def targets(result: dict) -> list[dict]:
         for row in ls.get("specs", []) or [{"error": ls.get("error")}]:
             ratio = row.get("ratio")
             label = f"{row.get('n_parts', 0):,} × {row.get('shape', '?')}" if "n_parts" in row else "large specs"
-            base = row.get("baseline_s", row.get("bare_yaml_s"))
+            base = row.get("bare_s")
+            detail = row.get("error") or ""
+            if "rbi_load_s" in row:
+                detail = (f"rbi {number(row['rbi_load_s'], 3)} s (read {number(row['rbi_read_s'], 3)}, validate "
+                          f"{number(row['rbi_validate_s'], 3)}, translate {number(row['rbi_translate_s'], 3)}); "
+                          f"{number(row['yaml_megabytes'], 3)} MB")
             out.append(_target(9, f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
                                ratio, ls["target"], False,
                                "bare yaml.load(f, Loader=yaml.CSafeLoader) in a plain Python" +
-                               (f": {number(base, 3)} s" if isinstance(base, float) else ""),
-                               row.get("error") or ""))
+                               (f": {number(base, 3)} s" if isinstance(base, float) else ""), detail))
     sw = result.get("sweep")
     if sw:
         single, loop, sweep = sw["single_run"], sw["process_loop"], sw["sweep"]
