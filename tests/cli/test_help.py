@@ -57,3 +57,14 @@ def test_about_errors_list_the_named_points(bodies):
     proc = run_rbi_inprocess("inertia", bodies / "top.yaml", "--about", "middle")
     assert proc.returncode == 2
     assert all(word in proc.stderr for word in ("com", "origin", "pivot", "X,Y,Z"))
+
+
+def test_dynamics_table_gives_force_and_torque_units(bodies):
+    proc = run_rbi_inprocess("dynamics", bodies / "robot_link.yaml", "--alpha", "0,0,10", "--about", "pivot")
+    assert proc.returncode == 0, proc.stderr
+    force = next(line for line in proc.stdout.splitlines() if line.strip().startswith("force"))
+    torque = next(line for line in proc.stdout.splitlines() if line.strip().startswith("torque"))
+    assert " N " in force and " N·m " in torque
+    # a spec in g and mm: 1 g·mm/s² is 1e-6 N, 1 g·mm²/s² is 1e-9 N·m
+    proc = run_rbi_inprocess("dynamics", bodies / "wheel_with_holes.yaml", "--alpha", "0,0,10")
+    assert "g·mm/s² (= 1e-06 N)" in proc.stdout and "g·mm²/s² (= 1e-09 N·m)" in proc.stdout
