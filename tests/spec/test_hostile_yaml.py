@@ -93,9 +93,13 @@ def test_billion_laughs_is_refused_fast_in_bounded_memory(tmp_path):
     assert len(proc.stderr) < 300  # the expanded value is never printed
 
 
-def test_aliases_within_the_budget_are_shared_values():
-    data = read_document("a: &v [1, 2, 3]\nb: *v\nc: [*v, *v]\n")
-    assert data == {"a": [1, 2, 3], "b": [1, 2, 3], "c": [[1, 2, 3], [1, 2, 3]]}
+def test_aliases_within_the_budget_are_independent_copies():
+    data = read_document("a: &v [1, 2, 3]\nb: *v\nc: [*v, *v]\nd: &m {p: *v}\ne: {<<: *m}\n")
+    assert data == {"a": [1, 2, 3], "b": [1, 2, 3], "c": [[1, 2, 3], [1, 2, 3]], "d": {"p": [1, 2, 3]},
+                    "e": {"p": [1, 2, 3]}}
+    data["b"][0] = 9
+    data["e"]["p"][0] = 8  # merged from d: editing it (as rbi sweep --vary does) leaves d alone
+    assert data["a"] == data["c"][0] == data["c"][1] == data["d"]["p"] == [1, 2, 3]
 
 
 def test_an_alias_must_name_an_earlier_anchor(write_spec):

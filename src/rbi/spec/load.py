@@ -141,9 +141,11 @@ def read_yaml(path: str | Path) -> Any:
         try:
             return read_document(text)
         except YamlProblem as exc:
-            part_label, field_path = format_location(exc.where, None)
-            where = [part_label] if part_label else []
-            where += field_path
+            shown = 6  # path components named; a deeply nested one is cut
+            part_label, field_path = format_location(exc.where[:shown], None)
+            if len(exc.where) > shown:
+                field_path = [(field_path[0] if field_path else "") + "..."]
+            where = ([part_label] if part_label else []) + field_path
             raise InputError(": ".join([path, *where, f"line {exc.line}, column {exc.column}: {exc.problem}"])) from None
         except yaml.MarkedYAMLError as exc:
             mark = exc.problem_mark or exc.context_mark

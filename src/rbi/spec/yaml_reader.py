@@ -9,7 +9,9 @@ explicit stack and so:
 
 - refuses nesting deeper than :data:`MAX_DEPTH` levels the moment it is reached;
 - counts every value an alias stands for and refuses a document whose aliases add more than
-  :data:`ALIAS_BUDGET` values (or as many as the file writes out, when that is more);
+  :data:`ALIAS_BUDGET` values (or as many as the file writes out, when that is more), before
+  copying anything; each alias then gets its own copy, so the result is a tree (changing one
+  part's list never changes another's);
 - reads plain scalars by the YAML 1.2 core schema restricted to decimal numbers: ``null``/``~``,
   ``true``/``false``, decimal integers and floats (``1e-3`` included), ``.inf``/``.nan``; a
   number written in a form YAML 1.1 reads differently (leading zero, ``0x``/``0o``/``0b``,
@@ -212,6 +214,8 @@ def read_document(text: str) -> Any:
                 fail(f"aliases expand to more than {budget:,} values (an alias bomb?)", event.start_mark)
             if len(stack) + height > MAX_DEPTH:
                 fail(f"nested more than {MAX_DEPTH} levels deep (through an alias)", event.start_mark)
+            if height:
+                value = _fresh_copy(value)  # a tree, not a graph: editing one place never edits another
             if stack:
                 parent = stack[-1]
                 if parent.is_map and parent.key is _NO_KEY and isinstance(value, (dict, list)):
@@ -253,6 +257,15 @@ def _add(frame: _Frame, value: Any, mark, fail) -> None:
             frame.merges = merged
         else:
             frame.value[key] = "<<" if value is _MERGE else value
+
+
+def _fresh_copy(value: Any) -> Any:
+    """``value`` with every list and mapping in it copied (at most :data:`MAX_DEPTH` deep)."""
+    if isinstance(value, dict):
+        return {key: _fresh_copy(item) for key, item in value.items()}
+    if isinstance(value, list):
+        return [_fresh_copy(item) for item in value]
+    return value
 
 
 def _apply_merges(mapping: dict, merges: list[dict]) -> None:
