@@ -16,6 +16,7 @@ from pathlib import Path
 import pytest
 
 from tests.conftest import BODIES
+from tests.hardening.users import as_ordinary_user
 
 PLANTED = ("numpy", "rbi", "typer", "rich", "yaml", "pydantic", "scipy", "sitecustomize", "usercustomize",
            "Cython", "numba")
@@ -30,17 +31,6 @@ def _console_script() -> Path:
     return script
 
 
-def _ordinary_user() -> list[str]:
-    """A prefix that runs a command as an ordinary user (root ignores file permissions, so a
-    read-only folder is read-only only to someone else)."""
-    if os.geteuid() != 0:
-        return []
-    setpriv = shutil.which("setpriv")
-    if setpriv is None:
-        pytest.skip("running as root without setpriv")
-    return [setpriv, "--reuid=nobody", "--regid=nogroup", "--clear-groups"]
-
-
 def _plant(folder: Path, marker: Path) -> None:
     for name in PLANTED:
         (folder / f"{name}.py").write_text(f"open({str(marker)!r}, 'a').write({name!r} + ' ran\\n')\n")
@@ -50,7 +40,7 @@ def _plant(folder: Path, marker: Path) -> None:
 
 def test_the_console_script_runs_no_code_from_a_read_only_current_folder_without_home():
     script = _console_script()
-    prefix = _ordinary_user()
+    prefix = as_ordinary_user()
     base = Path(tempfile.mkdtemp(prefix="rbi-env-"))
     try:
         os.chmod(base, 0o777)  # the marker may be written there by whatever runs as nobody

@@ -19,6 +19,7 @@ import pytest
 from rbi.cli.output import output_target
 from rbi.spec.errors import InputError
 from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.hardening.users import as_ordinary_user
 
 TOP = BODIES / "top.yaml"
 
@@ -72,22 +73,13 @@ def test_standard_output_under_its_device_names_is_a_stream(alias, tmp_path, mon
     assert list(tmp_path.iterdir()) == []
 
 
-def _as_nobody() -> list[str]:
-    if os.geteuid() != 0:
-        return []
-    setpriv = shutil.which("setpriv")
-    if setpriv is None:
-        pytest.skip("running as root without setpriv: cannot drop to an ordinary user")
-    return [setpriv, "--reuid=nobody", "--regid=nogroup", "--clear-groups"]
-
-
 @pytest.mark.parametrize("out", ["-", "/dev/stdout"])
 def test_a_non_root_user_streams_to_standard_output(out):
     script = Path(sys.executable).with_name("rbi")
     folder = tempfile.mkdtemp(prefix="rbi-nobody-")
     try:
         os.chmod(folder, 0o755)  # nobody may enter, not write
-        proc = subprocess.run([*_as_nobody(), str(script), "simulate", str(TOP), "--spin", "200", "--duration", "0.1",
+        proc = subprocess.run([*as_ordinary_user(), str(script), "simulate", str(TOP), "--spin", "200", "--duration", "0.1",
                                "--samples", "3", "--out", out], capture_output=True, text=True, cwd=folder, timeout=120)
         assert proc.returncode == 0, proc.stderr
         assert proc.stdout.startswith("t,qw,qx,qy,qz,wx,wy,wz") and len(proc.stdout.splitlines()) == 4
