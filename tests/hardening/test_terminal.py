@@ -151,11 +151,16 @@ def test_c_locale_is_fine():
 def test_ctrl_c_says_interrupted_exits_130_and_writes_nothing(tmp_path):
     out = tmp_path / "long.csv"
     proc = subprocess.Popen([str(RBI_SCRIPT), "simulate", str(BODIES / "top.yaml"), "--spin", "200", "--tilt", "5",
-                             "--duration", "1000000", "--yes", "--out", str(out)],
+                             "--duration", "1000000", "--yes", "--max-steps", "1000000000000", "--out", str(out)],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
-    _wait_until_running(proc)
-    proc.send_signal(signal.SIGINT)
-    _, err = proc.communicate(timeout=60)
+    try:
+        _wait_until_running(proc)
+        proc.send_signal(signal.SIGINT)
+        _, err = proc.communicate(timeout=60)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+            proc.communicate()
     assert proc.returncode == 130
     assert err.strip().splitlines() == ["rbi: interrupted"]
     assert list(tmp_path.iterdir()) == []
