@@ -433,3 +433,18 @@ def test_urdf_rpy_turns_the_inertia_as_scipy_does(tmp_path, points, rpy):
     (link,) = links_json(write(tmp_path, "r.urdf", text))
     R = Rotation.from_euler("xyz", rpy).as_matrix()  # URDF: fixed-axis roll, pitch, yaw
     assert np.allclose(link["inertia"], R @ inertia @ R.T, rtol=0, atol=1e-13 * np.trace(inertia))
+
+
+def test_notes_and_warnings_show_link_names_escaped(tmp_path):
+    """XML 1.0 allows C1 control characters and bidi overrides in a name: the note about a
+    skipped link must reach the terminal with them escaped, never raw."""
+    name = "evil\u202e\u009b2J"
+    path = write(tmp_path, "arm.urdf", f"""<robot name="r">
+  <link name="{name}"/>
+  <link name="ok"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+</robot>""")
+    proc = run_rbi_inprocess("import", path, "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    assert "skipped" in proc.stderr
+    assert "\u202e" not in proc.stderr and "\u009b" not in proc.stderr
+    assert "\\u202e" in proc.stderr and "\\x9b" in proc.stderr

@@ -37,6 +37,7 @@ def import_robot(
       rbi import robot.sdf --out specs/
       rbi import humanoid.xml --format json
     """
+    from rbi.cli.terminal import say
     from rbi.spec.robot_files import link_problems, read_robot_file
 
     robot = read_robot_file(file)
@@ -46,10 +47,10 @@ def import_robot(
     targets = _targets(robot, links, out, file) if out is not None else None
     if not link:
         for label, reason in robot.skipped:
-            print(f"rbi: note: {file}: {label}: skipped: {reason}", file=sys.stderr)
+            say(f"note: {file}: {label}: skipped: {reason}")
     for each in links:
         for line in link_problems(robot, each):
-            print(f"rbi: warning: {line}", file=sys.stderr)
+            say(f"warning: {line}")
     if targets is not None:
         _write(robot, targets)
     if format is OutputFormat.table:
