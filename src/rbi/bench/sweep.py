@@ -6,9 +6,9 @@
   in-process rate (``rbi.sim.api.simulate`` on one run after another, over an evenly spaced
   sample of the same grid points) times the number of cores (target ≥ 0.8), and a loop of
   ``rbi simulate FILE --spin S --tilt T`` processes over a sample of the same runs (target ≥ 300×).
-- Memory: a child ``rbi sweep`` of 10⁵ short runs (0.02 s, 2 samples; 10⁴ in a quick run)
-  streaming to ``--out``; its resident memory is sampled while it runs, against the rows
-  written so far, and its peak is read from the kernel's accounting (``ru_maxrss``). A flat
+- Memory: a child ``rbi sweep`` of 101,000 short runs (0.02 s, 2 samples; 10⁴ in a quick run),
+  more than the 10⁵ rows ``rbi sweep`` keeps in memory to print, streaming to ``--out``; its resident memory is sampled while it runs, against the rows
+  written so far, and its peak is the kernel's account of that child (``wait4``'s ``ru_maxrss``). A flat
   profile (the last quarter no higher than the first by more than a few MB) is what bounds a
   10⁶-run sweep; the target is 500 MB.
 """
@@ -18,7 +18,6 @@ from __future__ import annotations
 import contextlib
 import io
 import os
-import resource
 import statistics
 import subprocess
 import sys
@@ -116,17 +115,21 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
 
 def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     """Resident memory of a child sweep streaming to --out, sampled as the rows arrive."""
-    spins = 100 if quick else 1000
+    # more runs than rbi sweep keeps in memory to print (MAX_ROWS_SHOWN, 10⁵): rows only streamed
+    spins = 100 if quick else 1010
     out = folder / "memory.csv"
     argv = rbi_command() + ["sweep", str(spec), "--spin", f"150:260:{spins}", "--tilt", "0.01:1:100",
                             "--duration", "0.02", "--samples", "2", "--out", str(out), "--yes"]
     runs = spins * 100
     samples = []
-    before = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
     start = time.perf_counter()
     proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     status_file = Path(f"/proc/{proc.pid}/status")
-    while proc.poll() is None:
+    while True:
+        pid, status, usage = os.wait4(proc.pid, os.WNOHANG)  # the child's own rusage once it ends
+        if pid != 0:
+            proc.returncode = os.waitstatus_to_exitcode(status)
+            break
         try:
             rss_kb = next(int(line.split()[1]) for line in status_file.read_text().splitlines()
                           if line.startswith("VmRSS:"))
@@ -138,8 +141,8 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
                             "csv_bytes": size})
         time.sleep(0.1)
     stderr = proc.stderr.read()
+    proc.stderr.close()
     seconds = time.perf_counter() - start
-    peak_kb = resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss
     if proc.returncode != 0:
         return {"error": f"exit {proc.returncode}: {stderr.strip()[-200:]}"}
     with open(out, encoding="utf-8") as stream:
@@ -151,8 +154,8 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
         "command": (f"rbi sweep bodies/top.yaml --spin 150:260:{spins} --tilt 0.01:1:100 --duration 0.02 "
                     "--samples 2 --out FILE.csv --yes"),
         "runs": runs, "rows_written": rows, "seconds": seconds,
-        # ru_maxrss of all waited-for children: the largest of any child so far (kB on Linux)
-        "peak_rss_mb": peak_kb / 1024 if peak_kb > before else max((s["rss_mb"] for s in samples), default=None),
+        # the child's peak resident set (kB on Linux), or the largest sample if that is higher
+        "peak_rss_mb": max([usage.ru_maxrss / 1024] + [s["rss_mb"] for s in samples]),
         "rss_first_quarter_mb": max(first) if first else None,
         "rss_last_quarter_mb": max(last) if last else None,
         "samples": samples[:: max(1, len(samples) // 40)],
