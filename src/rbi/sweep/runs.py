@@ -104,7 +104,7 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
     from rbi.sim.api import sample_times
     from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
     from rbi.sim.scene import initial_state
-    from rbi.sim.summary import sweep_figures
+    from rbi.sim.summary import sweep_figures_batch
 
     values = job.plan.values(start, stop)
     t = sample_times(job.duration, job.samples)
@@ -131,14 +131,22 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
         np.array(starts), t, np.array([s.inertia for s in scenes]), inertia_inv,
         np.array([s.gravity_moment for s in scenes]), np.array([max(s.natural_rate, 0.0) for s in scenes]),
         float(job.rtol), int(job.max_steps), out, counts, status, int(threads))
+    finite = np.all(np.isfinite(out), axis=(1, 2))
+    figures_of: dict[int, dict] = {}
+    by_scene: dict[int, list[int]] = {}  # runs of one scene are summarised together
+    for b in range(B):
+        if status[b] == STATUS_DONE and finite[b]:
+            by_scene.setdefault(id(scenes[b]), []).append(b)
+    for group in by_scene.values():
+        with np.errstate(all="ignore"):
+            batch = sweep_figures_batch(scenes[group[0]], t, out[group, :, :4], out[group, :, 4:])
+        figures_of.update(zip(group, batch))
     for b, i in enumerate(ready):
         if status[b] == STATUS_DONE:
-            q, omega = out[b, :, :4], out[b, :, 4:]
-            if not np.all(np.isfinite(out[b])):
+            if not finite[b]:
                 rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + ["failed: the state stopped being finite (overflow)"]
                 continue
-            with np.errstate(all="ignore"):
-                figures = sweep_figures(scenes[b], t, q, omega)
+            figures = figures_of[b]
             rows[i] += [figures["max_tilt_deg"], figures["final_tilt_deg"], figures["min_tilt_deg"],
                         figures["precession_rate_deg_s"], figures["energy_drift"],
                         int(counts[b, 1]), "ok"]
