@@ -69,3 +69,30 @@ def test_the_spec_itself_is_never_overwritten(tmp_path, bodies):
     proc = run_rbi_inprocess("animate", spec, "--spin", "100", "--out", spec)
     one_line_exit_2(proc, "--out")
     assert spec.read_text() == before
+
+
+def test_a_gif_too_long_is_refused_before_any_work(tmp_path, bodies):
+    out = tmp_path / "a.gif"
+    proc = run_rbi_inprocess("animate", bodies / "dumbbell.yaml", "--duration", "1e9", "--out", out)
+    one_line_exit_2(proc, "--duration", "frames")
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_a_motion_too_fast_to_keyframe_is_refused(tmp_path, bodies):
+    # 1e6 rad/s for 1 s turns the body 1e6 rad: 2e6 keyframes of at most 0.5 rad each
+    out = tmp_path / "a.html"
+    proc = run_rbi_inprocess("animate", bodies / "top.yaml", "--spin", "1e6", "--duration", "1", "--yes", "--out", out)
+    one_line_exit_2(proc, "--duration", "keyframes")
+    assert not out.exists()
+
+
+def test_a_long_slow_gif_still_plays_in_real_time(tmp_path, bodies):
+    pytest.importorskip("matplotlib")
+    from PIL import Image
+
+    out = tmp_path / "a.gif"
+    # fewer keyframes are needed than frames: the run is sampled at least once per frame
+    proc = run_rbi_inprocess("animate", bodies / "dumbbell.yaml", "--omega", "0,0,0.1", "--duration", "30", "--fps",
+                             "20", "--out", out)
+    assert proc.returncode == 0, proc.stderr
+    assert Image.open(out).n_frames == 601

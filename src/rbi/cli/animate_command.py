@@ -52,10 +52,17 @@ def animate(
     if not 1 <= fps <= 60:
         raise InputError(f"--fps: must be between 1 and 60 (got {fps})")
     target = output_target(out, "--out", ("html", "gif"), inputs=[file])
+    gif_frames = 0
     if target.format == "gif":
         from rbi.cli.plot import require_matplotlib
+        from rbi.viz.frames import MAX_GIF_FRAMES
 
         require_matplotlib()
+        gif_frames = int(duration * fps) + 1
+        if gif_frames > MAX_GIF_FRAMES:
+            raise InputError(f"--duration: a GIF of {duration:g} s at {fps} frames per second would have "
+                             f"{gif_frames:.3g} frames, more than {MAX_GIF_FRAMES}: shorten --duration, lower --fps, "
+                             "or write .html")
     body, scene, q0, omega0, budget = prepare_run(file, spin, omega, tilt, tilt_axis, gravity, duration, "default",
                                                   rtol, max_steps, yes)
     import numpy as np
@@ -64,13 +71,17 @@ def animate(
     from rbi.sim.diagnostics import tilt_deg
     from rbi.spec.geometry import part_geometry
     from rbi.sim.summary import sample_columns
-    from rbi.viz.motion import MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframe_count
+    from rbi.viz.motion import MAX_KEYFRAMES, MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframes_needed
     from rbi.viz.still import part_count
 
     try:
         probe = simulate(scene, q0, omega0, duration, MIN_KEYFRAMES, rtol=rtol, max_steps=budget)
         fastest = float(np.max(np.linalg.norm(probe.omega, axis=1)))
-        count = keyframe_count(duration, fastest)
+        needed = keyframes_needed(duration, fastest)
+        if needed > MAX_KEYFRAMES:
+            raise InputError(f"--duration: {duration:g} s of this motion needs {needed:.3g} keyframes to play "
+                             f"smoothly, more than {MAX_KEYFRAMES}: shorten --duration")
+        count = max(MIN_KEYFRAMES, needed, gif_frames)
         run = probe if count == MIN_KEYFRAMES else simulate(scene, q0, omega0, duration, count, rtol=rtol, max_steps=budget)
     except SimulationError as exc:
         raise InputError(f"{file}: {exc}") from None

@@ -20,6 +20,8 @@ VIEW_ELEVATION_DEG = 24.0
 VIEW_AZIMUTH_DEG = -48.0
 GIF_PIXELS = 400
 GIF_COLOURS = 64
+MAX_GIF_FRAMES = 1500
+"""Most frames a GIF may have (a minute at 25 frames per second, some tens of MB)."""
 
 
 def body_mesh(parts: list[dict[str, Any]], size: float, holes: bool = True,

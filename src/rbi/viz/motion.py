@@ -22,13 +22,20 @@ MIN_KEYFRAMES = 481
 MAX_KEYFRAMES = 40_000
 
 
-def keyframe_count(duration: float, fastest_rate: float) -> int:
-    """Samples needed so no keyframe interval turns the body more than
-    :data:`MAX_TURN_PER_KEYFRAME` (bounded to keep the page small)."""
+def keyframes_needed(duration: float, fastest_rate: float) -> int:
+    """Samples needed so that no keyframe interval turns the body more than
+    :data:`MAX_TURN_PER_KEYFRAME` (``fastest_rate``: the largest |ω|, rad/s)."""
     if duration <= 0:
         return 1
-    needed = math.ceil(duration * max(fastest_rate, 0.0) / MAX_TURN_PER_KEYFRAME) + 1
-    return int(min(MAX_KEYFRAMES, max(MIN_KEYFRAMES, needed)))
+    return int(math.ceil(duration * max(fastest_rate, 0.0) / MAX_TURN_PER_KEYFRAME)) + 1
+
+
+def keyframe_count(duration: float, fastest_rate: float) -> int:
+    """:func:`keyframes_needed`, at least :data:`MIN_KEYFRAMES` and at most
+    :data:`MAX_KEYFRAMES` (a page stays a few MB)."""
+    if duration <= 0:
+        return 1
+    return int(min(MAX_KEYFRAMES, max(MIN_KEYFRAMES, keyframes_needed(duration, fastest_rate))))
 
 
 def marked_axis(scene) -> np.ndarray:
