@@ -144,3 +144,22 @@ def test_every_bundled_body_has_drawable_parts(name, bodies):
     for item in items:
         quads = part_quads(item, 1.0)[0] if item["kind"] != "point" else np.zeros((1, 4, 3))
         assert np.all(np.isfinite(quads))
+
+
+def test_point_cloud_points_are_drawn_where_the_file_puts_them(write_spec, tmp_path):
+    (tmp_path / "pts.csv").write_text("mass,x,y,z\n1,0,0,0\n2,1,0,0\n3,0,2,0\n")
+    items = _geometry(write_spec, "  - {name: rod, shape: rod, mass: 1, start: [0, 0, 0], end: [0, 0, 1]}\n",
+                      extra="point_cloud: {file: pts.csv}\n")
+    cloud = items[-1]
+    assert cloud["kind"] == "points" and cloud["shape"] == "point_cloud" and cloud["part"] == 1
+    assert cloud["positions"] == [[0, 0, 0], [1, 0, 0], [0, 2, 0]]
+    assert cloud["mass"] == pytest.approx(6.0)
+
+
+def test_a_cloud_too_big_to_draw_point_by_point_gets_its_stand_in_box(write_spec, tmp_path, monkeypatch):
+    import rbi.spec.geometry as geometry
+
+    monkeypatch.setattr(geometry, "MAX_DRAWN_POINTS", 2)
+    (tmp_path / "pts.csv").write_text("mass,x,y,z\n1,1,0,0\n1,-1,0,0\n1,0,1,0\n1,0,-1,0\n")
+    (item,) = part_geometry(load_body(write_spec("point_cloud: {file: pts.csv}\n")))
+    assert item["kind"] == "box" and item["stand_in"] is True

@@ -15,7 +15,9 @@ Every solid is one of:
 - ``{"kind": "capsule", "start", "end", "radius"}``;
 - ``{"kind": "mesh", "vertices", "faces"}`` (body frame; a mesh of more than
   :data:`MAX_DRAWN_TRIANGLES` triangles is drawn as its stand-in box);
-- ``{"kind": "point", "position"}``: point masses.
+- ``{"kind": "point", "position"}``: point masses;
+- ``{"kind": "points", "positions"}``: the points of a ``point_cloud`` file (a cloud of more
+  than :data:`MAX_DRAWN_POINTS` points is drawn as its stand-in box).
 
 A part with a ``pattern`` gives one primitive per copy. Each primitive also has
 ``part`` (the index of the written part it comes from), ``name``, ``shape`` (as written),
@@ -35,13 +37,15 @@ from rbi.spec import models
 ROD_RADIUS_FRACTION = 0.01
 MAX_DRAWN_TRIANGLES = 20_000
 """Largest mesh drawn triangle by triangle (pages stay small); bigger ones get a stand-in box."""
+MAX_DRAWN_POINTS = 5000
+"""Largest point cloud drawn point by point."""
 MAX_DRAWN_COPIES = 1000
 """Most copies of a patterned part drawn; beyond that the pattern is drawn as one stand-in box."""
 
 
 def part_geometry(body) -> list[dict[str, Any]]:
     """The drawable primitives of a :class:`~rbi.spec.load.LoadedBody` in file order: one per
-    part, one per copy of a patterned part (a point cloud as one stand-in box)."""
+    part, one per copy of a patterned part, and the point cloud's points."""
     spec = body.spec
     out = []
     parts = list(spec.parts) if spec is not None else []
@@ -50,7 +54,10 @@ def part_geometry(body) -> list[dict[str, Any]]:
         shape = part.shape if part is not None else "point_cloud"
         pattern = getattr(part, "pattern", None)
         count = 1 if pattern is None else int(pattern.count)
-        item = _primitive(part, body.path) if part is not None and count <= MAX_DRAWN_COPIES else None
+        if part is None:
+            item = _cloud_points(spec, body.path)
+        else:
+            item = _primitive(part, body.path) if count <= MAX_DRAWN_COPIES else None
         copies = [_stand_in(element)] if item is None else [moved(item, R, t) for R, t in _copy_motions(pattern)]
         for copy in copies:
             copy |= {"part": index, "name": body.part_names[index] if index < len(body.part_names) else None, "shape": shape,
@@ -86,8 +93,9 @@ def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray) -> dict[str, Any]:
             out[key] = (R @ np.asarray(out[key], dtype=float)).tolist()
     if "rotation" in out:
         out["rotation"] = (R @ np.asarray(out["rotation"], dtype=float)).tolist()
-    if "vertices" in out:
-        out["vertices"] = (np.asarray(out["vertices"], dtype=float) @ R.T + t).tolist()
+    for key in ("vertices", "positions"):
+        if key in out:
+            out[key] = (np.asarray(out[key], dtype=float) @ R.T + t).tolist()
     return out
 
 
@@ -165,6 +173,21 @@ def _frustum(start, end, start_radius, end_radius, inner_radius=0.0) -> dict[str
 def _ellipsoid(center, semi_axes, R) -> dict[str, Any]:
     return {"kind": "ellipsoid", "center": _vector(center), "semi_axes": _vector(semi_axes),
             "rotation": (np.eye(3) if R is None else R).tolist()}
+
+
+def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
+    """The cloud's points (already read once for its mass properties), or None when there are
+    too many to draw one by one."""
+    from rbi.spec.paths import spec_relative_file
+    from rbi.spec.point_cloud import read_point_cloud
+
+    if spec is None or spec.point_cloud is None:
+        return None
+    label = f"{spec_path}: point_cloud: file: {spec.point_cloud.file}"
+    _, positions = read_point_cloud(spec_relative_file(spec_path, spec.point_cloud.file, label), label)
+    if len(positions) > MAX_DRAWN_POINTS:
+        return None
+    return {"kind": "points", "positions": np.asarray(positions, dtype=float).tolist()}
 
 
 def _stand_in(element) -> dict[str, Any]:

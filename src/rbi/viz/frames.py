@@ -51,6 +51,12 @@ def body_mesh(parts: list[dict[str, Any]], size: float, holes: bool = True,
     return np.concatenate(all_quads), np.concatenate(all_colours)
 
 
+def cloud_points(parts: list[dict[str, Any]]) -> np.ndarray:
+    """Every point of a point cloud among the parts, ``(n, 3)``."""
+    clouds = [np.asarray(item["positions"], dtype=float).reshape(-1, 3) for item in parts if item["kind"] == "points"]
+    return np.concatenate(clouds) if clouds else np.zeros((0, 3))
+
+
 def quaternion_matrix_xyzw(q) -> np.ndarray:
     """Rotation matrix of a unit quaternion given as [x, y, z, w] (the page's order)."""
     from rbi.core.rotation import quaternion_to_matrix
@@ -111,6 +117,7 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
 
     size = float(data["size"])
     quads, colours = body_mesh(data["parts"], size)
+    points = cloud_points(data["parts"])
     trace = np.asarray(data["trace"], dtype=float)
     dpi = 100
     fig = plt.figure(figsize=(pixels / dpi, pixels / dpi), dpi=dpi)
@@ -122,6 +129,9 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
             t = data["times"][index]
             rotation = quaternion_matrix_xyzw(data["quaternions"][index])
             body = _draw_body(ax, quads, colours, rotation)
+            turned = points @ rotation.T
+            dots = ax.scatter(turned[:, 0], turned[:, 1], turned[:, 2], s=4, color="#333333", depthshade=False,
+                              zorder=2)
             first = int(np.searchsorted(data["times"], t - data["trail_seconds"]))
             recent = trace[first: index + 1]
             (path,) = ax.plot(recent[:, 0], recent[:, 1], recent[:, 2], color="#c03030", lw=0.9, zorder=1)
@@ -131,6 +141,7 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
             yield np.asarray(fig.canvas.buffer_rgba())[..., :3].copy()
             body.remove()
             path.remove()
+            dots.remove()
     finally:
         plt.close(fig)
 

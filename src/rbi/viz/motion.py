@@ -100,6 +100,8 @@ def body_size(parts: list[dict[str, Any]]) -> float:
     for item in parts:
         if item["kind"] == "point":
             reach = max(reach, float(np.linalg.norm(item["position"])))
+        elif item["kind"] == "points":
+            reach = max(reach, float(np.max(np.linalg.norm(item["positions"], axis=1), initial=0.0)))
         else:
             quads, _ = part_quads(item, 0.0)
             if len(quads):

@@ -141,6 +141,8 @@ def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarra
         return capsule_quads(item["start"], item["end"], item["radius"])
     if kind == "mesh":
         return mesh_quads(item["vertices"], item["faces"])
+    if kind == "points":  # drawn as dots, not as surfaces
+        return np.zeros((0, 4, 3)), np.zeros(0, dtype=bool)
     if kind == "box":
         floor = 1e-3 * size
         return box_quads(item["center"], np.maximum(np.asarray(item["size"], dtype=float), floor), item["rotation"])

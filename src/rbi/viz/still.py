@@ -67,7 +67,7 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     from matplotlib.patches import Patch
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh
+    from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
     from rbi.viz.solids import shade
 
     size = float(data["size"])
@@ -87,6 +87,9 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
         ax.add_collection3d(Poly3DCollection(hole_quads, facecolors=hole_colours, edgecolors=(0.75, 0.1, 0.1, 0.5),
                                              linewidths=0.3, zorder=2))
     quads = np.concatenate((quads, hole_quads)) if len(hole_quads) else quads
+    points = cloud_points(data["parts"])
+    if len(points):
+        ax.scatter(points[:, 0], points[:, 1], points[:, 2], s=6, color="#333333", depthshade=False, zorder=3)
     com = np.asarray(data["com"], dtype=float)
     handles = []
     for axis in data["principal_axes"]:
@@ -115,7 +118,7 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
             continue
         listed.add(part)
         if len(listed) <= MAX_LEGEND_PARTS:
-            colour = "#333333" if item["kind"] == "point" else PALETTE[part % len(PALETTE)]
+            colour = "#333333" if item["kind"] in ("point", "points") else PALETTE[part % len(PALETTE)]
             name = item.get("name") or f"parts[{part}]"
             copies = sum(1 for other in data["parts"] if other.get("part", -1) == part)
             extra = (f" ×{copies}" if copies > 1 else "") + (" (box of equal inertia)" if item.get("stand_in") else "")
@@ -137,8 +140,11 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
 
 def _frame(ax, quads: np.ndarray, com: np.ndarray, data: dict[str, Any]) -> None:
     """Equal scales on the three axes, framing every part, the CoM, the axes and the pivot."""
+    from rbi.viz.frames import cloud_points
+
     points = [quads.reshape(-1, 3)] if len(quads) else []
     points.append(com[None, :])
+    points.append(cloud_points(data["parts"]))
     for axis in data["principal_axes"]:
         direction = np.asarray(axis["direction"]) * axis["half_length"] * 1.1
         points.append(np.stack((com - direction, com + direction)))
