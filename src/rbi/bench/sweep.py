@@ -8,7 +8,7 @@
   ``rbi simulate FILE --spin S --tilt T`` processes over a sample of the same runs (target ≥ 300×).
 - Memory: a child ``rbi sweep`` of 101,000 short runs (0.02 s, 2 samples; 10⁴ in a quick run),
   more than the 10⁵ rows ``rbi sweep`` keeps in memory to print, streaming to ``--out``; its resident memory is sampled while it runs, against the rows
-  written so far, and its peak is the kernel's account of that child (``wait4``'s ``ru_maxrss``). A flat
+  written so far, and its peak is its high-water mark (``VmHWM`` in ``/proc/PID/status``). A flat
   profile (the last quarter no higher than the first by more than a few MB) is what bounds a
   10⁶-run sweep; the target is 500 MB.
 """
@@ -126,19 +126,19 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     status_file = Path(f"/proc/{proc.pid}/status")
     while True:
-        pid, status, usage = os.wait4(proc.pid, os.WNOHANG)  # the child's own rusage once it ends
+        pid, status = os.waitpid(proc.pid, os.WNOHANG)
         if pid != 0:
             proc.returncode = os.waitstatus_to_exitcode(status)
             break
         try:
-            rss_kb = next(int(line.split()[1]) for line in status_file.read_text().splitlines()
-                          if line.startswith("VmRSS:"))
+            fields = dict(line.split(":", 1) for line in status_file.read_text().splitlines() if ":" in line)
+            rss_kb, peak_kb = int(fields["VmRSS"].split()[0]), int(fields["VmHWM"].split()[0])
             size = out.stat().st_size if out.exists() else 0
-        except (OSError, StopIteration, ValueError):
+        except (OSError, KeyError, ValueError):
             rss_kb, size = None, 0
         if rss_kb is not None:
             samples.append({"seconds": round(time.perf_counter() - start, 3), "rss_mb": rss_kb / 1024,
-                            "csv_bytes": size})
+                            "peak_mb": peak_kb / 1024, "csv_bytes": size})
         time.sleep(0.1)
     stderr = proc.stderr.read()
     proc.stderr.close()
@@ -154,8 +154,9 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
         "command": (f"rbi sweep bodies/top.yaml --spin 150:260:{spins} --tilt 0.01:1:100 --duration 0.02 "
                     "--samples 2 --out FILE.csv --yes"),
         "runs": runs, "rows_written": rows, "seconds": seconds,
-        # the child's peak resident set (kB on Linux), or the largest sample if that is higher
-        "peak_rss_mb": max([usage.ru_maxrss / 1024] + [s["rss_mb"] for s in samples]),
+        # the child's high-water mark of resident memory (VmHWM) at the last sample: wait4's
+        # ru_maxrss would also count the bench process's own memory at the fork
+        "peak_rss_mb": max((s["peak_mb"] for s in samples), default=None),
         "rss_first_quarter_mb": max(first) if first else None,
         "rss_last_quarter_mb": max(last) if last else None,
         "samples": samples[:: max(1, len(samples) // 40)],
