@@ -78,7 +78,7 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
     if kind == "literal_error":
         return f"must be one of {ctx.get('expected')} (got {_show(value)})"
     if kind == "union_tag_invalid":
-        return f"shape: unknown shape {ctx.get('tag')!r} (expected one of {ctx.get('expected_tags')})"
+        return f"shape: unknown shape {_show(ctx.get('tag'))} (expected one of {ctx.get('expected_tags')})"
     if kind == "union_tag_not_found":
         return "shape: missing required field (which solid is this part?)"
     if kind in ("model_type", "model_attributes_type", "dict_type"):
