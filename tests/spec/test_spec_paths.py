@@ -123,3 +123,15 @@ def test_a_fifo_beside_the_spec_is_refused_without_blocking(tmp_path):
     proc = subprocess.run([sys.executable, "-m", "rbi", "inertia", str(write(tmp_path, "pts.csv"))],
                           capture_output=True, text=True, timeout=60)
     one_line_exit_2(proc, "not a regular file")
+
+
+@pytest.mark.parametrize("file, words", [
+    ('"a\\0b.csv"', ["NUL"]),
+    ('"' + "a" * 300 + '.csv"', ["no such file"]),
+    ('"."', ["not a regular file"]),
+], ids=["nul-character", "300-character-name", "the-folder-itself"])
+def test_odd_paths_are_one_line_errors(tmp_path, file, words):
+    spec = tmp_path / "odd.yaml"
+    spec.write_text(f"point_cloud: {{file: {file}}}\n")
+    for extra in ([], ["--allow-outside-paths"]):
+        one_line_exit_2(run_rbi_inprocess("inertia", spec, *extra), "point_cloud: file:", *words)

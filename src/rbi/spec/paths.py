@@ -39,6 +39,8 @@ def spec_relative_file(spec_path: str | Path, file: str, label: str) -> Path:
     Raises :class:`InputError` when the path leaves the spec's folder and that was not allowed,
     or when nothing (or not a regular file) is there.
     """
+    if "\x00" in file:
+        raise InputError(f"{label}: not a usable path (it contains a NUL character)")
     folder = Path(spec_path).parent
     named = Path(file)
     candidate = named if named.is_absolute() else folder / named
