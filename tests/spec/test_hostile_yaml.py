@@ -287,7 +287,7 @@ documents = st.recursive(scalars, lambda children: st.one_of(
 ), max_leaves=30)
 
 
-@settings(max_examples=200, deadline=None, derandomize=True)
+@settings(max_examples=100, deadline=None, derandomize=True)
 @given(documents, st.booleans())
 def test_reads_what_pyyaml_writes_as_pyyaml_reads_it(document, flow):
     """For documents PyYAML writes (strings of letters, decimal numbers), this reader and
