@@ -124,7 +124,8 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     return {
         "case": {"name": case.name, "spec": f"bodies/{case.spec}", "omega0": list(case.omega0),
                  "duration": case.duration, "samples": case.samples},
-        "chapter": {"seconds": chapter_s, "repeats": len(chapter_times), "steps": chapter.steps, "rtol": workprecision.CHAPTER[1],
+        "chapter": {"seconds": chapter_s, "repeats": len(chapter_times), "steps": chapter.steps,
+                    "rtol": workprecision.CHAPTER[1],
                     "orientation_error_deg": chapter_err["orientation_error_deg"],
                     "omega_error": chapter_err["omega_error"]},
         "default": {"seconds": default_s, "steps": default.steps, "rtol": default.rtol,

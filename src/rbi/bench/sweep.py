@@ -7,8 +7,9 @@
   sample of the same grid points) times the number of cores (target ≥ 0.8), and a loop of
   ``rbi simulate FILE --spin S --tilt T`` processes over a sample of the same runs (target ≥ 300×).
 - Memory: a child ``rbi sweep`` of 101,000 short runs (0.02 s, 2 samples; 10⁴ in a quick run),
-  more than the 10⁵ rows ``rbi sweep`` keeps in memory to print, streaming to ``--out``; its resident memory is sampled while it runs, against the rows
-  written so far, and its peak is its high-water mark (``VmHWM`` in ``/proc/PID/status``). A flat
+  more than the 10⁵ rows ``rbi sweep`` keeps in memory to print, streaming to ``--out``; its
+  resident memory is sampled while it runs, against the rows written so far, and its peak is
+  its high-water mark (``VmHWM`` in ``/proc/PID/status``). A flat
   profile (the last quarter no higher than the first by more than a few MB) is what bounds a
   10⁶-run sweep; the target is 500 MB.
 """
