@@ -104,14 +104,26 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     args = ["sweep", str(spec), "--spin", _axis_text(g["spin"]), "--tilt", _axis_text(g["tilt"]),
             "--duration", f"{g['duration']:g}", "--out", str(out), "--yes", "--format", "json"]
     runs = g["spin"][2] * g["tilt"][2]
+    cpu_start = _cpu_seconds()
     start = time.perf_counter()
     _in_process_rbi(args)
     seconds = time.perf_counter() - start
+    cpu = _cpu_seconds() - cpu_start
     with open(out, encoding="utf-8") as stream:
         lines = sum(1 for _ in stream) - 1
     return {"command": "rbi " + " ".join(a if a != str(spec) else "bodies/top.yaml" for a in args
                                          if not a.startswith(str(folder))).replace("--out", "--out FILE.csv"),
-            "runs": runs, "rows_written": lines, "seconds": seconds, "runs_per_second": runs / seconds}
+            "runs": runs, "rows_written": lines, "seconds": seconds, "runs_per_second": runs / seconds,
+            # CPU time of every thread of this process over the wall time: how many cores the
+            # sweep actually got (the machine's other work takes the rest)
+            "cpu_seconds": cpu, "cores_used": cpu / seconds}
+
+
+def _cpu_seconds() -> float:
+    import resource
+
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return usage.ru_utime + usage.ru_stime
 
 
 def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:

@@ -101,7 +101,8 @@ def targets(result: dict) -> list[dict]:
                            sw["ratio_to_cores_x_single"], sw["targets"]["ratio_to_cores_x_single"], True,
                            f"{sw['cores']} cores × {number(single['runs_per_second'], 3)} runs/s (simulate, one run "
                            f"after another, {single['runs']} grid points)",
-                           f"sweep {number(sweep['runs_per_second'], 3)} runs/s ({number(sweep['seconds'], 3)} s)"))
+                           f"sweep {number(sweep['runs_per_second'], 3)} runs/s ({number(sweep['seconds'], 3)} s; "
+                           f"CPU time ÷ wall time {number(sweep.get('cores_used', float('nan')), 3)})"))
         out.append(_target(10, "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
                            sw["ratio_to_process_loop"], sw["targets"]["ratio_to_process_loop"], True,
                            f"{loop['runs']} processes: {number(loop['runs_per_second'], 3)} runs/s",
