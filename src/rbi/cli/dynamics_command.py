@@ -52,6 +52,9 @@ def dynamics(
     props = body.props
     r = props.com - np.asarray(point)
     I_point = inertia_about(props, point)
+    if not np.all(np.isfinite(I_point)):
+        raise InputError(f"--about: the point is too far from the body: the inertia about it overflows "
+                         f"double precision (got {about!r})")
     labels = body.labels
     if inverse:
         a = np.array(parse_vector(alpha, "--alpha"))
