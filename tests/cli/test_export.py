@@ -113,3 +113,16 @@ def test_bad_requests_exit_2():
 def test_installed_command_prints_parseable_xml():
     proc = run_rbi("export", BODIES / "top.yaml", "--to", "urdf", check=True)
     assert float(ET.fromstring(proc.stdout).find("mass").get("value")) == 0.5
+
+
+@pytest.mark.parametrize("to", ["urdf", "sdf", "mjcf"])
+def test_names_with_control_characters_give_well_formed_xml_and_reach_the_terminal_escaped(tmp_path, to):
+    """XML 1.0 cannot hold ESC or BEL, and printed raw they would drive the terminal; a comment
+    cannot hold '--' (here from the file's name)."""
+    spec = tmp_path / "a---b.yaml"
+    spec.write_text('name: "arm\\e]0;title\\a"\nparts:\n  - {shape: sphere, mass: 1, radius: 0.1, center: [0, 0, 0]}\n')
+    proc = run_rbi_inprocess("export", spec, "--to", to, "--document")
+    assert proc.returncode == 0, proc.stderr
+    assert not any(ord(c) < 32 and c not in "\n\t" for c in proc.stdout)
+    root = ET.fromstring(proc.stdout)  # well formed, the leading comment included
+    assert "arm\\x1b]0;title\\x07" in ET.tostring(root, encoding="unicode")

@@ -112,9 +112,20 @@ def export_xml(to: str, mass: float, com, inertia, *, name: str, document: bool 
     else:
         element = mjcf_inertial(mass, com, inertia, diagonal=diagonal)
     if document:
-        element = DOCUMENTS[to](name, element)
+        element = DOCUMENTS[to](xml_safe(name), element)
     ET.indent(element, space="  ")
     text = ET.tostring(element, encoding="unicode")
     if comment:
-        text = f"<!-- {comment.replace('--', '-')} -->\n{text}"
+        comment = xml_safe(comment)
+        while "--" in comment:  # a comment may not hold "--"
+            comment = comment.replace("--", "-")
+        text = f"<!-- {comment} -->\n{text}"
     return text + "\n"
+
+
+def xml_safe(text: str) -> str:
+    """``text`` with control characters written as visible escapes: XML 1.0 cannot hold them,
+    and a name from a spec must not reach the terminal raw when the XML is printed."""
+    from rbi.cli.terminal import terminal_safe
+
+    return terminal_safe(text)
