@@ -14,7 +14,8 @@ from rbi.cli import fast_params
 from rbi.cli.app import COMMANDS, _build_command
 
 INPUTS = ["0", "7", "-3", "+12", "007", "1.5", "-2.25e3", "1e-3", "1E5", ".5", "5.", "inf", "-inf", "nan",
-          " 4", "4 ", "1_000", "0x10", "", "abc", "table", "json", "JSON", "csv", "y", "x", "true", "1.0"]
+          " 4", "4 ", "1_000", "0x10", "", "abc", "table", "json", "JSON", "csv", "y", "x", "true", "1.0",
+          "1e400", "-0", "00.5", "1.5e-400", "-0.0", "123456789012345678901234567890", "+0", "1e", "--1"]
 
 
 def _descriptors():
