@@ -29,37 +29,37 @@ def _times(value: float | None) -> str:
     return f"{value:,.0f}×" if value >= 100 else f"{value:.3g}×"
 
 
-# --- targets (issues 9 and 10) ------------------------------------------------------------
+# --- targets (kernel, start-up, large specs, sweep) ------------------------------------------------------------
 
-def _target(issue: int, what: str, measured: float | None, limit: float, at_least: bool, baseline: str,
+def _target(area: str, what: str, measured: float | None, limit: float, at_least: bool, baseline: str,
             detail: str = "") -> dict:
     met = None if measured is None else (measured >= limit if at_least else measured <= limit)
-    return {"issue": issue, "target": what, "measured": measured, "limit": limit,
+    return {"area": area, "target": what, "measured": measured, "limit": limit,
             "comparison": "≥" if at_least else "≤", "baseline": baseline, "met": met, "detail": detail}
 
 
 def targets(result: dict) -> list[dict]:
-    """Every speed target of issues 9 and 10 that this run measured: the ratio, its limit and the
+    """Every speed target (kernel, start-up, large specs, sweep) that this run measured: the ratio, its limit and the
     baseline it was measured against (in the same run)."""
     out = []
     k = result.get("kernel")
     if k:
         chapter = (f"the chapter's set-up (scipy RK45, rtol 1e-8, Python RHS): {number(k['chapter']['seconds'], 3)} s, "
                    f"error {_sci(k['chapter']['orientation_error_deg'])}°")
-        out.append(_target(9, f"in-process simulate at defaults ({k['case']['spec']}, {k['case']['duration']:g} s) "
+        out.append(_target("kernel", f"in-process simulate at defaults ({k['case']['spec']}, {k['case']['duration']:g} s) "
                               "÷ the chapter's set-up, speed-up", k["ratio_default"],
                            k["targets"]["ratio_default"], True, chapter,
                            f"rbi {number(k['default']['seconds'], 3)} s, error "
                            f"{_sci(k['default']['orientation_error_deg'])}°"))
         best = k.get("best_matching")
-        out.append(_target(9, "the same at equal-or-better error, speed-up", k.get("ratio_best_matching"),
+        out.append(_target("kernel", "the same at equal-or-better error, speed-up", k.get("ratio_best_matching"),
                            k["targets"]["ratio_best_matching"], True, chapter,
                            "no rbi tolerance reached the chapter's error" if not best else
                            f"rbi at rtol {best['rtol']:g}: {number(best['seconds'], 3)} s, error "
                            f"{_sci(best['orientation_error_deg'])}°"))
         m = k["minimal_loop"]
         same = "same steps and samples" if m["same_steps"] and m["same_samples"] else "DIFFERENT steps or samples"
-        out.append(_target(9, "in-process simulate at defaults ÷ a minimal loop with the same DOP853 steps, time",
+        out.append(_target("kernel", "in-process simulate at defaults ÷ a minimal loop with the same DOP853 steps, time",
                            k["ratio_to_minimal_loop"], k["targets"]["ratio_to_minimal_loop"], False,
                            f"rbi.sim._dop853.integrate_minimal: {number(m['seconds'], 3)} s ({same})",
                            f"simulate {number(k['default']['seconds'], 3)} s, {k['default']['steps']:,} steps"))
@@ -67,15 +67,15 @@ def targets(result: dict) -> list[dict]:
     if lat:
         first = lat.get("first_run") or {}
         if "ratio" in first:
-            out.append(_target(9, f"first `{first['command']}` in a fresh HOME ÷ a later one, time", first["ratio"],
+            out.append(_target("start-up", f"first `{first['command']}` in a fresh HOME ÷ a later one, time", first["ratio"],
                                first["target"], False, f"the run after it: {number(first['later_median_s'], 3)} s",
                                f"first {number(first['first_median_s'], 3)} s; median of {first['repeats']} fresh "
                                f"HOMEs; files left in HOME: {len(first['files_left_in_home'])}"))
         elif "error" in first:
-            out.append(_target(9, "first rbi simulate in a fresh HOME ÷ a later one", None, 1.3, False, "", first["error"]))
+            out.append(_target("start-up", "first rbi simulate in a fresh HOME ÷ a later one", None, 1.3, False, "", first["error"]))
         for row in lat["commands"]:
             if "target" in row:
-                out.append(_target(9, f"`{row['command']}` as a whole process, time", row.get("ratio_to_numpy_import"),
+                out.append(_target("start-up", f"`{row['command']}` as a whole process, time", row.get("ratio_to_numpy_import"),
                                    row["target"], False, f"{lat['baseline']}: {number(lat['commands'][0].get('median_s'), 3)} s"
                                    if "median_s" in lat["commands"][0] else lat["baseline"],
                                    row.get("error") or f"{number(row['median_s'], 3)} s median of {row['repeats']}"))
@@ -90,32 +90,32 @@ def targets(result: dict) -> list[dict]:
                 detail = (f"rbi {number(row['rbi_load_s'], 3)} s (read {number(row['rbi_read_s'], 3)}, validate "
                           f"{number(row['rbi_validate_s'], 3)}, translate {number(row['rbi_translate_s'], 3)}); "
                           f"{number(row['yaml_megabytes'], 3)} MB")
-            out.append(_target(9, f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
+            out.append(_target("large specs", f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
                                ratio, ls["target"], False,
                                "bare yaml.load(f, Loader=yaml.CSafeLoader) in a plain Python" +
                                (f": {number(base, 3)} s" if isinstance(base, float) else ""), detail))
     sw = result.get("sweep")
     if sw:
         single, loop, sweep = sw["single_run"], sw["process_loop"], sw["sweep"]
-        out.append(_target(10, f"`rbi sweep` throughput over {sweep['runs']:,} runs ÷ (cores × single-run rate)",
+        out.append(_target("sweep", f"`rbi sweep` throughput over {sweep['runs']:,} runs ÷ (cores × single-run rate)",
                            sw["ratio_to_cores_x_single"], sw["targets"]["ratio_to_cores_x_single"], True,
                            f"{sw['cores']} cores × {number(single['runs_per_second'], 3)} runs/s (simulate, one run "
                            f"after another, {single['runs']} grid points)",
                            f"sweep {number(sweep['runs_per_second'], 3)} runs/s ({number(sweep['seconds'], 3)} s; "
                            f"CPU time ÷ wall time {number(sweep.get('cores_used', float('nan')), 3)})"))
-        out.append(_target(10, "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
+        out.append(_target("sweep", "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
                            sw["ratio_to_process_loop"], sw["targets"]["ratio_to_process_loop"], True,
                            f"{loop['runs']} processes: {number(loop['runs_per_second'], 3)} runs/s",
                            f"sweep {number(sweep['runs_per_second'], 3)} runs/s"))
         mem = sw["memory"]
-        out.append(_target(10, f"peak resident memory of a streaming sweep of {mem.get('runs', 0):,} runs, MB",
+        out.append(_target("sweep", f"peak resident memory of a streaming sweep of {mem.get('runs', 0):,} runs, MB",
                            mem.get("peak_rss_mb"), sw["targets"]["peak_rss_mb"], False, "500 MB (absolute)",
                            mem.get("error") or f"RSS {number(mem['rss_first_quarter_mb'], 3)} MB in the first quarter, "
                            f"{number(mem['rss_last_quarter_mb'], 3)} MB in the last ({mem['rows_written']:,} rows)"))
     return out
 
 
-TARGET_COLUMNS = ["issue", "target", "measured", "limit", "met", "baseline (same run)", "detail"]
+TARGET_COLUMNS = ["area", "target", "measured", "limit", "met", "baseline (same run)", "detail"]
 
 
 def target_rows(rows: list[dict]) -> list[list[str]]:
@@ -128,7 +128,7 @@ def target_rows(rows: list[dict]) -> list[list[str]]:
         shown = "—" if measured is None else (number(measured, 3) if "MB" in r["target"] else _times(measured))
         limit = number(r["limit"], 3) if "MB" in r["target"] else _times(r["limit"])
         met = {True: "yes", False: "NO", None: "—"}[r["met"]]
-        out.append([str(r["issue"]), r["target"], shown, f"{r['comparison']} {limit}", met, r["baseline"], r["detail"]])
+        out.append([str(r["area"]), r["target"], shown, f"{r['comparison']} {limit}", met, r["baseline"], r["detail"]])
     return out
 
 
@@ -194,7 +194,7 @@ def tables(result: dict):
 
     parts: list[Any] = [Text(machine_line(result), style="dim")]
     if result.get("targets"):
-        t = table("Targets of issues 9 and 10, each against its baseline measured in this run")
+        t = table("Targets, each against its baseline measured in this run")
         for header in TARGET_COLUMNS:
             t.add_column(header, justify="right" if header in ("measured", "limit") else "left",
                          no_wrap=header in ("measured", "limit", "met"))
@@ -361,8 +361,8 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
     out += [f"- {line}" for line in headline(result)]
     if result.get("targets"):
         out += ["", "## Targets", "",
-                "Each target of issues 9 (kernel, start-up, large specs) and 10 (sweep) with the baseline it "
-                "was measured against in this same run.", "",
+                "Each speed target (kernel, start-up, large specs, sweep) with the baseline it was measured "
+                "against in this same run.", "",
                 _md_table(TARGET_COLUMNS, target_rows(result["targets"]))]
     out += _kernel_markdown(result.get("kernel"))
     out += _sweep_markdown(result.get("sweep"))
