@@ -230,3 +230,14 @@ def test_mass_properties_spread_of_a_moved_point_mass_is_exact(tmp_path):
     # the nominal position (0.04, the middle run) leaves the principal axes where they were
     assert max(rows[2][f"axis_{k}_tilt_deg"] for k in (1, 2, 3)) < 1e-6
     assert rows[0]["axis_1_tilt_deg"] > 1e-3 and all(r["status"] == "ok" for r in rows)
+
+
+def test_the_table_never_cuts_a_number_short_in_80_columns(monkeypatch):
+    """Piped or in a narrow terminal (80 columns), every cell is shown whole (wrapped if it
+    must be): a drift shown as '7.9e-…' would hide its exponent."""
+    monkeypatch.setenv("COLUMNS", "80")
+    proc = rbi("sweep", BOLTED, "--spin", "150:250:2", "--tilt", "1",
+              "--vary", "parts.bolt.position[0]=0.03:0.04:2", "--duration", "0.5")
+    assert proc.returncode == 0, proc.stderr
+    assert "…" not in proc.stdout
+    assert max(len(line) for line in proc.stdout.splitlines()) <= 80

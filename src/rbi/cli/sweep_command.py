@@ -431,13 +431,17 @@ def _table(result, columns, rows, file):
         columns = [columns[i] for i in keep]
         shown = [None if row is None else [row[i] for i in keep] for row in shown]
         for name in columns:
-            table.add_column(f"{name}\n{units.get(name, '')}".rstrip(), justify="left" if name == "status" else "right")
+            # words wrap in a narrow terminal and no cell is cut short: a number is never shown truncated
+            words = name.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
+            header = tables.plain_text(name if name.startswith("parts.") else words)
+            table.add_column(f"{header}\n{units.get(name, '')}".rstrip(), overflow="fold",
+                             justify="left" if name == "status" else "right")
         for row in shown:
             if row is None:
                 table.add_row(*["…"] * len(columns))
                 continue
             table.add_row(*[tables.plain_text(str(v)) if isinstance(v, str) else
-                            ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 5))) for v in row])
+                            ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 4))) for v in row])
         parts.append(table)
     if result.get("spread"):
         spread = Table(title="Spread over the ok runs")
