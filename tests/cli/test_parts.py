@@ -61,3 +61,13 @@ def test_table_and_csv(write_spec):
     assert table.returncode == 0 and "kg/m³" in table.stdout and "bolt" in table.stdout
     rows = rbi("parts", BODIES / "top_bolted.yaml", "--format", "csv").stdout.splitlines()
     assert len(rows) == 4 and rows[0].startswith("name,shape,")
+
+
+def test_the_table_never_cuts_a_name_or_number_short_in_80_columns(monkeypatch):
+    """Piped or in a narrow terminal, long part names and long numbers wrap instead of ending
+    in '…' (a cut number would be a wrong number)."""
+    monkeypatch.setenv("COLUMNS", "80")
+    for body in ("wheel_pattern.yaml", "cubesat.yaml", "robot_link.yaml", "bracket.yaml"):
+        proc = rbi("parts", BODIES / body)
+        assert proc.returncode == 0, proc.stderr
+        assert "…" not in proc.stdout, body

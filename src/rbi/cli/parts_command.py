@@ -95,7 +95,7 @@ def _table(body, rows):
     for header, justify in (("part", "left"), ("shape", "left"), (tables.unit_header("mass", labels["mass"]), "right"),
                             ("mass share [%]", "right"), (tables.unit_header("centre of mass", labels["length"]), "right"),
                             ("inertia share [%]", "right"), (tables.unit_header("density", density_unit), "right")):
-        table.add_column(header, justify=justify)
+        table.add_column(header, justify=justify, overflow="fold")  # wrapped, never cut short, in a narrow terminal
     for row in rows:
         table.add_row(tables.plain_text(row["name"]), row["shape"] + (" (hole)" if row["hole"] else ""),
                       number(row["mass"]), number(100 * row["mass_share"], 4), tables.vector(row["center_of_mass"]),
