@@ -133,6 +133,77 @@ cdef inline void normalise_quaternion(double* y) noexcept nogil:
         y[i] /= n
 
 
+cdef inline void dop853_step(const double* y, double K[16][7], double step, double* y_new, double* tmp,
+                             const double* I, const double* Iinv, const double* c) noexcept nogil:
+    """One DOP853 step of size ``step`` from ``y`` (whose derivative is already in ``K[0]``):
+    stages ``K[1..11]``, the 8th-order result ``y_new`` and its derivative ``K[12]``."""
+    cdef int i, j, s
+    cdef double acc
+    for s in range(1, 12):
+        stage_state(y, K, s, step, tmp)
+        rhs(tmp, I, Iinv, c, K[s])
+    for i in range(NSTATE):
+        acc = 0.0
+        for j in range(12):
+            acc += DOP853_B[j] * K[j][i]
+        y_new[i] = y[i] + step * acc
+    rhs(y_new, I, Iinv, c, K[12])
+
+
+cdef inline double accepted_step_factor(double err, bint after_rejection) noexcept nogil:
+    """How much to grow (or shrink) the step after an accepted step with error norm ``err``:
+    never more than MAX_FACTOR, and not at all right after a rejected step."""
+    cdef double factor
+    if err == 0.0:
+        factor = MAX_FACTOR
+    else:
+        factor = SAFETY * pow(err, ERROR_EXPONENT)
+        if factor > MAX_FACTOR:
+            factor = MAX_FACTOR
+    if after_rejection and factor > 1.0:
+        factor = 1.0
+    return factor
+
+
+cdef inline void dense_coefficients(const double* y, const double* y_new, double K[16][7], double step,
+                                    double F[7][7], double* tmp, const double* I, const double* Iinv,
+                                    const double* c) noexcept nogil:
+    """The 7th-order interpolant over the step from ``y`` to ``y_new``: three more stages into
+    ``K[13..15]``, then the coefficients ``F`` that :func:`dense_sample` evaluates."""
+    cdef int i, j, s, m
+    cdef double dy, acc
+    for s in range(13, 16):
+        stage_state(y, K, s, step, tmp)
+        rhs(tmp, I, Iinv, c, K[s])
+    for i in range(NSTATE):
+        dy = y_new[i] - y[i]
+        F[0][i] = dy
+        F[1][i] = step * K[0][i] - dy
+        F[2][i] = 2.0 * dy - step * (K[12][i] + K[0][i])
+        for m in range(4):
+            acc = 0.0
+            for j in range(16):
+                acc += DOP853_D[m][j] * K[j][i]
+            F[3 + m][i] = step * acc
+
+
+cdef inline void dense_sample(const double* y, double F[7][7], double x, double* out) noexcept nogil:
+    """The state at the fraction ``x`` of the step (0 at its start, 1 at its end) into ``out``,
+    its quaternion projected back to unit length."""
+    cdef int i, m
+    cdef double v
+    for i in range(NSTATE):
+        v = 0.0
+        for m in range(6, -1, -1):
+            v += F[m][i]
+            if (6 - m) % 2 == 0:
+                v *= x
+            else:
+                v *= (1.0 - x)
+        out[i] = y[i] + v
+    normalise_quaternion(out)
+
+
 cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n_samples, double* out,
                  const double* I, const double* Iinv, const double* c, double rtol, double omega_ref,
                  int64_t* counts, int64_t max_steps) noexcept nogil:
@@ -142,9 +213,9 @@ cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n
     cdef double y_new[7]
     cdef double tmp[7]
     cdef double t = clock[0], h = clock[1], t_end = t_samples[n_samples - 1]
-    cdef double t_new, step, err, factor, rate, min_step, acc, dy, x, v
+    cdef double t_new, step, err, factor, rate, min_step
     cdef Py_ssize_t k = counts[0]
-    cdef int i, j, s, m
+    cdef int i
     cdef bint rejected = False
     cdef int64_t steps_here = 0
 
@@ -178,15 +249,7 @@ cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n
         if t_new >= t_end:
             t_new = t_end
         step = t_new - t
-        for s in range(1, 12):
-            stage_state(y, K, s, step, tmp)
-            rhs(tmp, I, Iinv, c, K[s])
-        for i in range(NSTATE):
-            acc = 0.0
-            for j in range(12):
-                acc += DOP853_B[j] * K[j][i]
-            y_new[i] = y[i] + step * acc
-        rhs(y_new, I, Iinv, c, K[12])
+        dop853_step(y, K, step, y_new, tmp, I, Iinv, c)
         counts[3] += 12
         err = error_norm(K, step, y, y_new, rtol, omega_ref)
         if not isfinite(err):
@@ -199,43 +262,14 @@ cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n
             rejected = True
             counts[2] += 1
             continue
-        if err == 0.0:
-            factor = MAX_FACTOR
-        else:
-            factor = SAFETY * pow(err, ERROR_EXPONENT)
-            if factor > MAX_FACTOR:
-                factor = MAX_FACTOR
-        if rejected and factor > 1.0:
-            factor = 1.0
+        factor = accepted_step_factor(err, rejected)
         rejected = False
         # samples inside the step: 7th-order dense output
         if k < n_samples and t_samples[k] < t_new:
-            for s in range(13, 16):
-                stage_state(y, K, s, step, tmp)
-                rhs(tmp, I, Iinv, c, K[s])
+            dense_coefficients(y, y_new, K, step, F, tmp, I, Iinv, c)
             counts[3] += 3
-            for i in range(NSTATE):
-                dy = y_new[i] - y[i]
-                F[0][i] = dy
-                F[1][i] = step * K[0][i] - dy
-                F[2][i] = 2.0 * dy - step * (K[12][i] + K[0][i])
-                for m in range(4):
-                    acc = 0.0
-                    for j in range(16):
-                        acc += DOP853_D[m][j] * K[j][i]
-                    F[3 + m][i] = step * acc
             while k < n_samples and t_samples[k] < t_new:
-                x = (t_samples[k] - t) / step
-                for i in range(NSTATE):
-                    v = 0.0
-                    for m in range(6, -1, -1):
-                        v += F[m][i]
-                        if (6 - m) % 2 == 0:
-                            v *= x
-                        else:
-                            v *= (1.0 - x)
-                    out[k * NSTATE + i] = y[i] + v
-                normalise_quaternion(&out[k * NSTATE])
+                dense_sample(y, F, (t_samples[k] - t) / step, &out[k * NSTATE])
                 k += 1
         for i in range(NSTATE):
             y[i] = y_new[i]
@@ -368,9 +402,9 @@ cdef Py_ssize_t _minimal_loop(double* y, const double* t_samples, Py_ssize_t n, 
     cdef double F[7][7]
     cdef double y_new[7]
     cdef double tmp[7]
-    cdef double t = 0.0, h, t_end = t_samples[n - 1], t_new, step, err, factor, rate, acc, dy, x, v
+    cdef double t = 0.0, h, t_end = t_samples[n - 1], t_new, step, err, factor, rate
     cdef Py_ssize_t k = 0, steps = 0
-    cdef int i, j, s, m
+    cdef int i
     cdef bint rejected = False
     while k < n and t_samples[k] <= t:
         for i in range(NSTATE):
@@ -390,56 +424,19 @@ cdef Py_ssize_t _minimal_loop(double* y, const double* t_samples, Py_ssize_t n, 
         step = t_new - t
         if not step > 0.0:  # the step underflowed: give up rather than loop forever
             return -1
-        for s in range(1, 12):
-            stage_state(y, K, s, step, tmp)
-            rhs(tmp, I, Iinv, c, K[s])
-        for i in range(NSTATE):
-            acc = 0.0
-            for j in range(12):
-                acc += DOP853_B[j] * K[j][i]
-            y_new[i] = y[i] + step * acc
-        rhs(y_new, I, Iinv, c, K[12])
+        dop853_step(y, K, step, y_new, tmp, I, Iinv, c)
         err = error_norm(K, step, y, y_new, rtol, omega_ref)
         if err > 1.0:
             factor = SAFETY * pow(err, ERROR_EXPONENT)
             h = step * (factor if factor > MIN_FACTOR else MIN_FACTOR)
             rejected = True
             continue
-        if err == 0.0:
-            factor = MAX_FACTOR
-        else:
-            factor = SAFETY * pow(err, ERROR_EXPONENT)
-            if factor > MAX_FACTOR:
-                factor = MAX_FACTOR
-        if rejected and factor > 1.0:
-            factor = 1.0
+        factor = accepted_step_factor(err, rejected)
         rejected = False
         if t_samples[k] < t_new:
-            for s in range(13, 16):
-                stage_state(y, K, s, step, tmp)
-                rhs(tmp, I, Iinv, c, K[s])
-            for i in range(NSTATE):
-                dy = y_new[i] - y[i]
-                F[0][i] = dy
-                F[1][i] = step * K[0][i] - dy
-                F[2][i] = 2.0 * dy - step * (K[12][i] + K[0][i])
-                for m in range(4):
-                    acc = 0.0
-                    for j in range(16):
-                        acc += DOP853_D[m][j] * K[j][i]
-                    F[3 + m][i] = step * acc
+            dense_coefficients(y, y_new, K, step, F, tmp, I, Iinv, c)
             while k < n and t_samples[k] < t_new:
-                x = (t_samples[k] - t) / step
-                for i in range(NSTATE):
-                    v = 0.0
-                    for m in range(6, -1, -1):
-                        v += F[m][i]
-                        if (6 - m) % 2 == 0:
-                            v *= x
-                        else:
-                            v *= (1.0 - x)
-                    out[k * NSTATE + i] = y[i] + v
-                normalise_quaternion(&out[k * NSTATE])
+                dense_sample(y, F, (t_samples[k] - t) / step, &out[k * NSTATE])
                 k += 1
         for i in range(NSTATE):
             y[i] = y_new[i]
