@@ -34,17 +34,48 @@ def axis_between(start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, float]
     return d / length, length
 
 
-def axisymmetric_inertia(axial: float, transverse: float, axis: np.ndarray) -> np.ndarray:
+def axisymmetric_inertia(axial, transverse, axis: np.ndarray) -> np.ndarray:
     """Inertia matrix of a body symmetric about the unit vector ``axis``.
 
     ``axial`` is the moment about the axis, ``transverse`` about any perpendicular line through
     the same point. Written as ``axial·uuᵀ + transverse·(E − uuᵀ)`` rather than
     ``transverse·E + (axial − transverse)·uuᵀ``: for an axis along a coordinate direction the
     small moment is then exact instead of the difference of two large ones (a thin rod).
+
+    Also for many bodies at once: ``axial`` and ``transverse`` of shape (n,) with ``axis``
+    (n, 3) give (n, 3, 3).
     """
     u = np.asarray(axis, dtype=float)
-    uu = np.outer(u, u)
+    uu = u[..., :, None] * u[..., None, :]
+    axial = np.asarray(axial, dtype=float)[..., None, None]
+    transverse = np.asarray(transverse, dtype=float)[..., None, None]
     return axial * uu + transverse * (np.eye(3) - uu)
+
+
+# The moments below are plain arithmetic, so they take numbers or whole numpy arrays (many
+# parts at once, as rbi.spec.translate_batch uses them) and give the same bits either way.
+
+def cone_moments(mass, radius, height):
+    """``(axial, transverse)`` moments of a solid right circular cone about its centre of mass:
+    3/10 m r² and 3/80 m (4 r² + h²)."""
+    return 0.3 * mass * radius * radius, 3.0 * mass * (4.0 * radius * radius + height * height) / 80.0
+
+
+def cylinder_moments(mass, radius, length):
+    """``(axial, transverse)`` moments of a solid circular cylinder about its centre: m r²/2
+    and m (3 r² + L²)/12."""
+    return 0.5 * mass * radius * radius, mass * (3.0 * radius * radius + length * length) / 12.0
+
+
+def box_moments(mass, a, b, c):
+    """Moments of a solid box with edges a, b, c about its centre, along its own axes:
+    m (b² + c²)/12, m (a² + c²)/12, m (a² + b²)/12."""
+    return mass / 12.0 * (b * b + c * c), mass / 12.0 * (a * a + c * c), mass / 12.0 * (a * a + b * b)
+
+
+def sphere_moment(mass, radius):
+    """Moment 2/5 m r² of a solid sphere about any axis through its centre."""
+    return 0.4 * mass * radius * radius
 
 
 # --- solid right circular cone -------------------------------------------------------------
@@ -63,8 +94,7 @@ def cone(mass: float, radius: float, apex: np.ndarray, base: np.ndarray) -> Mass
     apex = np.asarray(apex, dtype=float)
     u, height = axis_between(apex, base)
     com = apex + 0.75 * height * u
-    axial = 0.3 * mass * radius * radius
-    transverse = 3.0 * mass * (4.0 * radius * radius + height * height) / 80.0
+    axial, transverse = cone_moments(mass, radius, height)
     return MassElement(mass, com, axisymmetric_inertia(axial, transverse, u))
 
 
@@ -84,8 +114,7 @@ def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> 
     end = np.asarray(end, dtype=float)
     u, length = axis_between(start, end)
     com = 0.5 * (start + end)
-    axial = 0.5 * mass * radius * radius
-    transverse = mass * (3.0 * radius * radius + length * length) / 12.0
+    axial, transverse = cylinder_moments(mass, radius, length)
     return MassElement(mass, com, axisymmetric_inertia(axial, transverse, u))
 
 
@@ -124,7 +153,7 @@ def box(mass: float, size: np.ndarray, center: np.ndarray, rotation: np.ndarray 
     ``rotation`` maps the box's axes to body axes.
     """
     a, b, c = (float(s) for s in size)
-    moments = mass / 12.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+    moments = np.array(box_moments(mass, a, b, c))
     return MassElement(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
 
 
@@ -155,7 +184,7 @@ def sphere_volume(radius: float) -> float:
 
 def sphere(mass: float, radius: float, center: np.ndarray) -> MassElement:
     """Solid sphere: 2/5 m r² about every axis through its centre."""
-    return MassElement(mass, np.asarray(center, dtype=float), 0.4 * mass * radius * radius * np.eye(3))
+    return MassElement(mass, np.asarray(center, dtype=float), sphere_moment(mass, radius) * np.eye(3))
 
 
 def spherical_shell_volume(outer_radius: float, inner_radius: float) -> float:

@@ -1,8 +1,8 @@
 """Translating many plain parts at once: the parts of the common shapes (point, cylinder, cone,
 sphere, box without rotation) that carry no ``pattern`` are gathered by shape and their mass
-elements computed with whole-array arithmetic, the same formulas as :mod:`rbi.core.shapes` in
-the same order of operations (so the same numbers to within a rounding or two; tested against
-the per-part path in ``tests/spec/test_translate_batch.py``).
+elements computed with whole-array arithmetic by the closed forms of :mod:`rbi.core.shapes`
+(its moment and volume functions take arrays), so the same numbers to within a rounding or
+two of the lengths (tested against the per-part path in ``tests/spec/test_translate_batch.py``).
 
 :func:`batch_elements` returns the elements it could build, by part index; every other part
 (other shapes, patterns, rotations, a density naming an unknown material, any part whose
@@ -19,6 +19,7 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core import shapes
 from rbi.core.shapes import MassElement
 from rbi.spec import models
 from rbi.spec.materials import density_in_units
@@ -59,12 +60,6 @@ def _lengths(d: np.ndarray) -> np.ndarray:
     return np.sqrt(np.einsum("ij,ij->i", d, d))
 
 
-def _axisymmetric(axial: np.ndarray, transverse: np.ndarray, u: np.ndarray) -> np.ndarray:
-    """``axial uuᵀ + transverse (E − uuᵀ)`` for each row, as :func:`rbi.core.shapes.axisymmetric_inertia`."""
-    uu = u[:, :, None] * u[:, None, :]
-    return axial[:, None, None] * uu + transverse[:, None, None] * (np.eye(3) - uu)
-
-
 def _vectors(parts: list, field: str) -> np.ndarray:
     return np.array([getattr(p, field) for p in parts], dtype=float).reshape(len(parts), 3)
 
@@ -83,11 +78,9 @@ def _cylinders(parts, units):
     start, end = _vectors(parts, "start"), _vectors(parts, "end")
     d = end - start
     length = _lengths(d)
-    mass = _solid_masses(parts, units, math.pi * radius * radius * length)
-    u = d / length[:, None]
-    axial = 0.5 * mass * radius * radius
-    transverse = mass * (3.0 * radius * radius + length * length) / 12.0
-    return mass, 0.5 * (start + end), _axisymmetric(axial, transverse, u)
+    mass = _solid_masses(parts, units, shapes.cylinder_volume(radius, length))
+    axial, transverse = shapes.cylinder_moments(mass, radius, length)
+    return mass, 0.5 * (start + end), shapes.axisymmetric_inertia(axial, transverse, d / length[:, None])
 
 
 def _cones(parts, units):
@@ -95,28 +88,25 @@ def _cones(parts, units):
     apex, base = _vectors(parts, "apex"), _vectors(parts, "base")
     d = base - apex
     height = _lengths(d)
-    mass = _solid_masses(parts, units, math.pi * radius * radius * height / 3.0)
+    mass = _solid_masses(parts, units, shapes.cone_volume(radius, height))
     u = d / height[:, None]
     com = apex + (0.75 * height)[:, None] * u
-    axial = 0.3 * mass * radius * radius
-    transverse = 3.0 * mass * (4.0 * radius * radius + height * height) / 80.0
-    return mass, com, _axisymmetric(axial, transverse, u)
+    axial, transverse = shapes.cone_moments(mass, radius, height)
+    return mass, com, shapes.axisymmetric_inertia(axial, transverse, u)
 
 
 def _spheres(parts, units):
     radius = _scalars(parts, "radius")
-    mass = _solid_masses(parts, units, 4.0 / 3.0 * math.pi * radius ** 3)
-    inertia = (0.4 * mass * radius * radius)[:, None, None] * np.eye(3)
-    return mass, _vectors(parts, "center"), inertia
+    mass = _solid_masses(parts, units, shapes.sphere_volume(radius))
+    return mass, _vectors(parts, "center"), shapes.sphere_moment(mass, radius)[:, None, None] * np.eye(3)
 
 
 def _boxes(parts, units):
     size = _vectors(parts, "size")
     a, b, c = size[:, 0], size[:, 1], size[:, 2]
     mass = _solid_masses(parts, units, a * b * c)
-    moments = (mass / 12.0)[:, None] * np.stack([b * b + c * c, a * a + c * c, a * a + b * b], axis=1)
     inertia = np.zeros((len(parts), 3, 3))
-    inertia[:, [0, 1, 2], [0, 1, 2]] = moments
+    inertia[:, [0, 1, 2], [0, 1, 2]] = np.stack(shapes.box_moments(mass, a, b, c), axis=1)
     return mass, _vectors(parts, "center"), inertia
 
 
