@@ -145,17 +145,10 @@ def main() -> None:
             pass
 
 
-def _say(message: str) -> None:
-    """One line on stderr: ``rbi: message`` with control characters escaped."""
-    from rbi.cli.terminal import say
-
-    say(message)
-
-
 def _run() -> None:
     from typer._click import exceptions as click_errors
 
-    from rbi.cli.terminal import Terminated
+    from rbi.cli.terminal import Terminated, say
     from rbi.spec.errors import InputError
     from rbi.spec.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
 
@@ -172,19 +165,19 @@ def _run() -> None:
             status = app(args=args, prog_name="rbi", standalone_mode=False)
     except click_errors.UsageError as exc:
         command = exc.ctx.command_path if exc.ctx is not None else "rbi"
-        _say(f"{exc.format_message()} (see `{command} --help`)")
+        say(f"{exc.format_message()} (see `{command} --help`)")
         sys.exit(2)
     except typer.Abort:
-        _say("aborted")
+        say("aborted")
         sys.exit(130)
     except InputError as exc:
-        _say(str(exc))
+        say(str(exc))
         sys.exit(2)
     except KeyboardInterrupt:
-        _say("interrupted")
+        say("interrupted")
         sys.exit(130)
     except Terminated:
-        _say("terminated")
+        say("terminated")
         raise
     except BrokenPipeError:  # `rbi ... | head`: the reader left; not an error of ours
         sys.stderr.close()
@@ -192,8 +185,8 @@ def _run() -> None:
     except Exception as exc:  # a bug, not bad input: say so on one line unless debugging
         if os.environ.get("RBI_DEBUG"):
             raise
-        _say(f"internal error: {type(exc).__name__}: {exc} (RBI_DEBUG=1 shows the traceback)")
+        say(f"internal error: {type(exc).__name__}: {exc} (RBI_DEBUG=1 shows the traceback)")
         sys.exit(1)
     if status == 130:  # typer turns Ctrl-C (KeyboardInterrupt) into a silent exit status 130
-        _say("interrupted")
+        say("interrupted")
     sys.exit(status if isinstance(status, int) else 0)
