@@ -70,7 +70,6 @@ def animate(
     from rbi.sim.api import SimulationError, simulate
     from rbi.sim.diagnostics import tilt_deg
     from rbi.spec.geometry import part_geometry
-    from rbi.sim.summary import sample_columns
     from rbi.viz.motion import MAX_KEYFRAMES, MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframes_needed
     from rbi.viz.still import part_count
 
@@ -88,8 +87,8 @@ def animate(
     if not (np.all(np.isfinite(run.q)) and np.all(np.isfinite(run.omega))):
         raise InputError(f"{file}: the motion is not finite: the input values are too large for double precision")
     title = f"{body.name or file}: spin {float(np.linalg.norm(omega0)):g} rad/s, tilt {tilt:g}°"
-    data = animation_data(title, part_geometry(body), scene, run.t, run.q, run.omega, tilt_deg(run.q),
-                          body.length_unit)
+    tilts = tilt_deg(run.q)
+    data = animation_data(title, part_geometry(body), scene, run.t, run.q, run.omega, tilts, body.length_unit)
     data["legend"] = (f"{part_count(data['parts'])} parts · red line: path of the axis tip over the last {TRAIL_SECONDS:g} s · lengths in {body.length_unit}"
                       + (" · on a pivot" if scene.pivoted else " · free body, about its centre of mass"))
     if target.format == "html":
@@ -102,5 +101,4 @@ def animate(
 
         write_output(target, writer=lambda path: write_gif(data, path, fps=fps))
         shown = f"{frame_indices(run.t, fps).size} frames"
-    columns = sample_columns(scene, run)
-    print(f"{out}: {shown} over {duration:g} s, largest tilt {float(np.max(columns['tilt_deg'])):.3g}°")
+    print(f"{out}: {shown} over {duration:g} s, largest tilt {float(np.max(tilts)):.3g}°")
