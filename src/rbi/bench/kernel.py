@@ -16,12 +16,12 @@ quick run), in this process, with the compiled kernel already loaded:
 from __future__ import annotations
 
 import statistics
-import time
 from typing import Callable
 
 import numpy as np
 
 from rbi.bench import workprecision
+from rbi.bench.timing import measure
 
 Progress = Callable[[str], None]
 
@@ -31,15 +31,9 @@ TRIAL_RTOLS = (1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
 TARGETS = {"ratio_default": 3000.0, "ratio_best_matching": 6000.0, "ratio_to_minimal_loop": 1.3}
 
 
-def _median_seconds(call: Callable[[], object], min_seconds: float, max_repeats: int = 2000) -> tuple[float, int]:
-    times: list[float] = []
-    spent = 0.0
-    while len(times) < 5 or (spent < min_seconds and len(times) < max_repeats):
-        start = time.perf_counter()
-        call()
-        times.append(time.perf_counter() - start)
-        spent += times[-1]
-    return statistics.median(times), len(times)
+def _median_seconds(call: Callable[[], object], min_seconds: float) -> float:
+    """Median time of ``call`` over at least 5 runs and ``min_seconds`` (at most 2000 runs)."""
+    return measure(call, min_repeats=5, max_repeats=2000, min_seconds=min_seconds).median
 
 
 def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: float):
@@ -102,8 +96,8 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     # interleave the two timings so that a change in the machine's load hits both alike
     default_times, minimal_times = [], []
     for _ in range(5):
-        default_times.append(_median_seconds(simulate_call(), min_seconds / 5)[0])
-        minimal_times.append(_median_seconds(call, min_seconds / 5)[0])
+        default_times.append(_median_seconds(simulate_call(), min_seconds / 5))
+        minimal_times.append(_median_seconds(call, min_seconds / 5))
     default_s, minimal_s = statistics.median(default_times), statistics.median(minimal_times)
 
     progress("kernel: the fastest tolerance at the chapter's error or better")
@@ -113,7 +107,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         err = workprecision.errors(scene, trajectory, reference)
         no_worse = (err["orientation_error_deg"] <= chapter_err["orientation_error_deg"]
                     and err["omega_error"] <= chapter_err["omega_error"])
-        seconds = _median_seconds(simulate_call(rtol), min_seconds / 3)[0] if no_worse else None
+        seconds = _median_seconds(simulate_call(rtol), min_seconds / 3) if no_worse else None
         trials.append({"rtol": rtol, "orientation_error_deg": err["orientation_error_deg"],
                        "omega_error": err["omega_error"], "steps": trajectory.steps, "no_worse": no_worse,
                        "seconds": seconds})
