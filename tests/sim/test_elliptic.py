@@ -7,7 +7,6 @@ import math
 import subprocess
 import sys
 
-import numpy as np
 import pytest
 import scipy.special as sp
 from hypothesis import given, settings

@@ -19,9 +19,7 @@ from __future__ import annotations
 import contextlib
 import io
 import os
-import statistics
 import subprocess
-import sys
 import tempfile
 import time
 from pathlib import Path

@@ -56,7 +56,7 @@ def carlson_rj(x: float, y: float, z: float, p: float) -> float:
     zero, p > 0."""
     if min(x, y, z) < 0.0 or (x == 0.0) + (y == 0.0) + (z == 0.0) > 1 or not p > 0.0:
         raise ValueError("carlson_rj: x, y, z must be >= 0 with at most one zero, and p > 0")
-    x0, y0, z0, p0 = x, y, z, p
+    x0, y0, z0 = x, y, z
     a0 = a = (x + y + z + 2.0 * p) / 5.0
     delta = (p - x) * (p - y) * (p - z)
     q = _RJ_FACTOR * max(abs(a0 - x), abs(a0 - y), abs(a0 - z), abs(a0 - p))
