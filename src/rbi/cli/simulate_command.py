@@ -165,7 +165,7 @@ def energy_unit(body) -> str:
 
 def check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol) -> None:
     """Refuse, before any work, the run options that `simulate` and `animate` share."""
-    from rbi.sim.api import METHODS, RTOL_RANGE
+    from rbi.sim.api import METHODS
 
     if method not in METHODS:
         raise InputError(f"--method: must be one of {', '.join(METHODS)} (got {method!r})")
@@ -175,6 +175,16 @@ def check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, m
         raise InputError(f"--spin: must be a finite number (got {spin!r})")
     if not np.isfinite(tilt):
         raise InputError(f"--tilt: must be a finite number (got {tilt!r})")
+    check_run_settings(duration, tilt_axis, gravity, max_steps, rtol)
+    if omega is not None:
+        parse_vector(omega, "--omega")
+
+
+def check_run_settings(duration, tilt_axis, gravity, max_steps, rtol) -> None:
+    """Refuse, before any work, the settings of a run that `simulate`, `animate` and `sweep`
+    all take: duration, tilt axis, gravity, step budget and tolerance."""
+    from rbi.sim.api import RTOL_RANGE
+
     if not (np.isfinite(duration) and duration >= 0.0):
         raise InputError(f"--duration: must be a finite number of seconds >= 0 (got {duration!r})")
     if tilt_axis.lower() not in ("x", "y"):
@@ -185,8 +195,6 @@ def check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, m
         raise InputError(f"--max-steps: must be at least 1 (got {max_steps!r})")
     if rtol is not None and not (np.isfinite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
         raise InputError(f"--rtol: must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
-    if omega is not None:
-        parse_vector(omega, "--omega")
 
 
 def prepare_run(file, spin, omega, tilt, tilt_axis, gravity, duration, method, rtol, max_steps, yes):

@@ -4,7 +4,6 @@ or, with --mass-properties, the spread of the mass properties alone."""
 from __future__ import annotations
 
 import hashlib
-import math
 import signal
 import sys
 from pathlib import Path
@@ -82,22 +81,14 @@ def sweep(
     from rbi.cli.output import check_distinct, output_target
     from rbi.spec.load import read_yaml
     from rbi.spec.variations import current_values, resolve
+    from rbi.cli.simulate_command import check_run_settings
     from rbi.sweep.plan import Plan, parse_axis
 
     if runs < 1:
         raise InputError(f"--runs: must be at least 1 (got {runs})")
-    if not (math.isfinite(duration) and duration >= 0):
-        raise InputError(f"--duration: must be a finite number of seconds >= 0 (got {duration!r})")
+    check_run_settings(duration, tilt_axis, gravity, max_steps, rtol)
     if not 1 <= samples <= 100_000:
         raise InputError(f"--samples: must be between 1 and 100,000 for a sweep (got {samples})")
-    if not (math.isfinite(rtol) and 1e-15 <= rtol < 1e-2):
-        raise InputError(f"--rtol: must be between 1e-15 and 0.01 (got {rtol!r})")
-    if gravity is not None and not (math.isfinite(gravity) and gravity >= 0):
-        raise InputError(f"--gravity: must be a finite number of m/s² >= 0 (got {gravity!r})")
-    if tilt_axis.lower() not in ("x", "y"):
-        raise InputError(f"--tilt-axis: must be x or y (got {tilt_axis!r})")
-    if max_steps is not None and max_steps < 1:
-        raise InputError(f"--max-steps: must be at least 1 (got {max_steps})")
     if workers is not None and not 1 <= workers <= 1024:
         raise InputError(f"--workers: must be between 1 and 1024 (got {workers})")
     if resume and out is None:
