@@ -11,6 +11,18 @@ import numpy as np
 _AXES = {"x": 0, "y": 1, "z": 2}
 
 
+ROUNDING_ZERO = 1e-15
+"""Rotation-matrix entries below this are rounding left by sin and cos of exact quarter turns."""
+
+
+def without_rounding_noise(R: np.ndarray) -> np.ndarray:
+    """``R`` (one matrix or a stack) with entries below :data:`ROUNDING_ZERO` set to exactly
+    zero, so that a part turned by 90° keeps exact zero products of inertia. Changes ``R``
+    in place and returns it."""
+    R[np.abs(R) < ROUNDING_ZERO] = 0.0
+    return R
+
+
 def axis_angle_matrix(axis: np.ndarray, angle_rad: float) -> np.ndarray:
     """Rotation matrix turning vectors by ``angle_rad`` about ``axis`` (right-hand rule).
 

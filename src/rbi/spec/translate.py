@@ -8,7 +8,7 @@ import numpy as np
 
 from rbi.core import shapes
 from rbi.core.inertia import combine_elements, parallel_axis_to_com, re_express
-from rbi.core.rotation import axis_angle_matrix, euler_matrix, quaternion_to_matrix
+from rbi.core.rotation import axis_angle_matrix, euler_matrix, quaternion_to_matrix, without_rounding_noise
 from rbi.core.validity import inertia_problem
 from rbi.spec import models
 from rbi.spec.errors import InputError
@@ -33,8 +33,9 @@ def _length(start, end) -> float:
 def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
     """Matrix (part axes -> body axes) of a spec ``rotation``; None for no rotation.
 
-    Entries below 1e-15 are rounding left by sin/cos of exact quarter turns and are set to
-    zero, so that a box turned by 90° keeps exact zero products of inertia.
+    Rounding left by sin/cos of exact quarter turns is set to zero
+    (:func:`rbi.core.rotation.without_rounding_noise`), so that a box turned by 90° keeps exact
+    zero products of inertia.
     """
     if rotation is None:
         return None
@@ -44,8 +45,7 @@ def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
         R = euler_matrix(np.radians(rotation.euler_deg), rotation.sequence)
     else:
         R = axis_angle_matrix(np.asarray(rotation.axis, dtype=float), np.radians(rotation.angle_deg))
-    R[np.abs(R) < 1e-15] = 0.0
-    return R
+    return without_rounding_noise(R)
 
 
 def cone_element(part: models.ConePart, units: models.Units) -> shapes.MassElement:
