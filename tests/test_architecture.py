@@ -96,3 +96,8 @@ def test_mass_commands_do_not_load_heavy_modules(modules_after_mass_commands, he
     assert "rbi.core.inertia" in modules_after_mass_commands  # the probe really ran the commands
     loaded = sorted(m for m in modules_after_mass_commands if m == heavy or m.startswith(heavy + "."))
     assert loaded == []
+
+
+def test_file_readers_know_nothing_of_specs_or_the_terminal():
+    forbidden = ("rbi.spec", "rbi.cli", "rbi.sim", "rbi.sweep", "rbi.viz", "pydantic", "typer", "rich", "click")
+    assert offending("formats", forbidden) == {}

@@ -342,7 +342,7 @@ def test_deep_nesting_is_refused(tmp_path):
 
 
 def test_huge_file_is_refused(tmp_path, monkeypatch):
-    from rbi.spec import robot_files
+    from rbi.formats import robot_files
 
     monkeypatch.setattr(robot_files, "MAX_FILE_BYTES", 200)
     one_line_exit_2(run_rbi_inprocess("import", write(tmp_path, "hand.urdf", URDF)), "hand.urdf", "larger than")

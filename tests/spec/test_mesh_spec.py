@@ -240,7 +240,7 @@ def test_unknown_extension_and_missing_file(tmp_path):
 
 
 def test_too_large_a_file_is_refused_before_reading(tmp_path, monkeypatch):
-    from rbi.spec import mesh_file
+    from rbi.formats import mesh_file
 
     write_binary_stl(tmp_path / "cube.stl", *box_mesh())
     monkeypatch.setattr(mesh_file, "MAX_MESH_BYTES", 100)

@@ -2,7 +2,7 @@
 
 Point clouds (10³ … 10⁶ points): the core's vectorised reduction (mass, centre of mass,
 inertia, principal axes) on arrays in memory, and the whole load from a spec file that names
-a CSV or ``.npy`` cloud (:mod:`rbi.spec.point_cloud`). Solid parts (10³ … 10⁵ cones,
+a CSV or ``.npy`` cloud (:mod:`rbi.formats.point_cloud`). Solid parts (10³ … 10⁵ cones,
 cylinders and points written out in YAML, and the same spec as JSON): what reading,
 validating and translating such a spec costs, step by step.
 

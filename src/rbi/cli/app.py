@@ -150,7 +150,7 @@ def _run() -> None:
 
     from rbi.cli.terminal import Terminated, say
     from rbi.spec.errors import InputError
-    from rbi.spec.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
+    from rbi.formats.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
 
     import warnings
 

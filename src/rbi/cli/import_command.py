@@ -38,7 +38,7 @@ def import_robot(
       rbi import humanoid.xml --format json
     """
     from rbi.cli.terminal import say
-    from rbi.spec.robot_files import link_problems, read_robot_file
+    from rbi.formats.robot_files import link_problems, read_robot_file
 
     robot = read_robot_file(file)
     links = _selected(robot, link or [])
@@ -120,7 +120,7 @@ def _yaml_text(robot, link) -> str:
 
     import yaml
 
-    from rbi.spec.robot_files import link_spec
+    from rbi.formats.robot_files import link_spec
 
     source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
     header = (f"# rbi import of {os.path.basename(robot.path)}, {link.label(robot.link_word)}, from its {source} <inertial>:\n"
@@ -140,7 +140,7 @@ def _write(robot, targets) -> None:
 
 def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
     from rbi.cli.render import emit
-    from rbi.spec.robot_files import link_problems
+    from rbi.formats.robot_files import link_problems
 
     written = {id(each): target.given for target, each in targets or []}
     rows = []

@@ -63,7 +63,7 @@ def file_problems(path: str) -> list[str]:
     while building the body (an unphysical custom inertia, a hole removing too much)."""
     from rbi.spec.errors import InputError
     from rbi.spec.load import read_yaml, validation_messages
-    from rbi.spec.robot_files import is_robot_file, robot_file_problems
+    from rbi.formats.robot_files import is_robot_file, robot_file_problems
     from rbi.spec.translate import body_from_spec
 
     if is_robot_file(path):  # URDF, SDF, MJCF: every link whose inertia is not physical

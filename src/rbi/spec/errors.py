@@ -6,9 +6,7 @@ import difflib
 from typing import Any
 
 
-class InputError(Exception):
-    """Bad input from the user (spec file or command-line value). The CLI prints ``str(self)``
-    on one line and exits with status 2."""
+from rbi.errors import InputError  # noqa: F401  (the spec layer's errors are InputErrors)
 
 
 def format_location(loc: tuple[Any, ...], raw: Any) -> tuple[str, list[str]]:

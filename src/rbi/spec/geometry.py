@@ -150,8 +150,8 @@ def _unit(v) -> list[float]:
 def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     """The mesh's triangles placed in the body as the mass properties place them: ``scale``,
     then ``rotation`` about the mesh origin, then the origin to ``position``."""
-    from rbi.spec.mesh_file import read_mesh_solid
-    from rbi.spec.paths import spec_relative_file
+    from rbi.formats.mesh_file import read_mesh_solid
+    from rbi.formats.paths import spec_relative_file
     from rbi.spec.translate import rotation_matrix
 
     solid = read_mesh_solid(spec_relative_file(spec_path, part.file, f"file: {part.file}"))  # cached: read once
@@ -178,8 +178,8 @@ def _ellipsoid(center, semi_axes, R) -> dict[str, Any]:
 def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
     """The cloud's points (already read once for its mass properties), or None when there are
     too many to draw one by one."""
-    from rbi.spec.paths import spec_relative_file
-    from rbi.spec.point_cloud import read_point_cloud
+    from rbi.formats.paths import spec_relative_file
+    from rbi.formats.point_cloud import read_point_cloud
 
     if spec is None or spec.point_cloud is None:
         return None

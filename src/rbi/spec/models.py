@@ -380,7 +380,7 @@ Part = Annotated[Union[tuple(SHAPE_MODELS.values())], Field(discriminator="shape
 
 
 class PointCloudRef(_Strict):
-    """Many point masses from one file (see :mod:`rbi.spec.point_cloud`): a ``.csv`` with the
+    """Many point masses from one file (see :mod:`rbi.formats.point_cloud`): a ``.csv`` with the
     columns mass,x,y,z or a ``.npy`` (N, 4) array; path relative to the spec's folder."""
 
     file: Annotated[str, Field(min_length=1, description="A .csv (columns mass,x,y,z) or .npy (N×4) file, relative to the spec's folder.")]

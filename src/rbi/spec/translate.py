@@ -136,8 +136,8 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     """The solid a mesh file encloses, placed in the body: ``scale``, then ``rotation`` about
     the mesh origin, then the origin moved to ``position``. Raises ValueError naming the file
     (as written in the spec) and what is wrong with it."""
-    from rbi.spec.mesh_file import read_mesh_solid
-    from rbi.spec.paths import spec_relative_file
+    from rbi.formats.mesh_file import read_mesh_solid
+    from rbi.formats.paths import spec_relative_file
 
     try:
         file = spec_relative_file(spec_path, part.file, f"file: {part.file}")
@@ -265,7 +265,7 @@ def body_from_spec(spec: models.BodySpec, path: str):
         elements.append(element)
     part_names = [p.name for p in spec.parts]
     if spec.point_cloud is not None:  # the whole cloud enters as one part, reduced vectorised
-        from rbi.spec.point_cloud import cloud_element
+        from rbi.formats.point_cloud import cloud_element
 
         elements.append(cloud_element(path, spec.point_cloud.file))
         part_names.append("point_cloud")

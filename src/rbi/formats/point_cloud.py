@@ -25,8 +25,8 @@ import numpy as np
 
 from rbi.core.inertia import combine
 from rbi.core.shapes import MassElement
-from rbi.spec.errors import InputError
-from rbi.spec.paths import spec_relative_file
+from rbi.errors import InputError
+from rbi.formats.paths import spec_relative_file
 
 COLUMNS = ("mass", "x", "y", "z")
 MAX_CSV_BYTES = 4 * 1024**3
@@ -63,7 +63,7 @@ def read_point_cloud(path: str | Path, label: str) -> tuple[np.ndarray, np.ndarr
 
 def cloud_element(spec_path: str, file: str) -> MassElement:
     """The whole cloud as one part: its mass, centre of mass and inertia about that centre.
-    ``file`` is resolved against the spec's folder (see :func:`rbi.spec.paths.spec_relative_file`)."""
+    ``file`` is resolved against the spec's folder (see :func:`rbi.formats.paths.spec_relative_file`)."""
     label = f"{spec_path}: point_cloud: file: {file}"
     masses, positions = read_point_cloud(spec_relative_file(spec_path, file, label), label)
     props = combine(masses, positions)

@@ -14,7 +14,7 @@ import contextlib
 import contextvars
 from pathlib import Path
 
-from rbi.spec.errors import InputError
+from rbi.errors import InputError
 
 ALLOW_OUTSIDE_FLAG = "--allow-outside-paths"
 

@@ -34,7 +34,7 @@ import numpy as np
 
 from rbi.core.inertia import re_express
 from rbi.core.validity import inertia_problem
-from rbi.spec.errors import InputError
+from rbi.errors import InputError
 
 MAX_FILE_BYTES = 64 * 1024 * 1024
 """Largest robot file read (64 MiB): far above any real description, whose meshes live in
@@ -82,11 +82,13 @@ class RobotLink:
     def rotation_matrix(self) -> np.ndarray | None:
         """Inertial frame → link frame, exactly as rbi reads the spec's rotation; None for the
         identity."""
-        from rbi.spec.models import Rotation
-        from rbi.spec.translate import rotation_matrix
+        from rbi.core.rotation import euler_matrix, quaternion_to_matrix, without_rounding_noise
 
-        rotation = self.spec_rotation()
-        return None if rotation is None else rotation_matrix(Rotation.model_validate(rotation))
+        if self.rpy is not None:
+            return without_rounding_noise(euler_matrix(np.asarray(self.rpy, dtype=float), "xyz"))
+        if self.quaternion is not None:
+            return without_rounding_noise(quaternion_to_matrix(np.asarray(self.quaternion, dtype=float)))
+        return None
 
     def inertia_in_link_axes(self) -> np.ndarray:
         """The inertia about the centre of mass in the link frame's axes, kg·m²."""
