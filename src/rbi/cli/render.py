@@ -140,7 +140,7 @@ def number(value: float | None, digits: int = 6) -> str:
 def matrix_digits(matrix) -> tuple[float, str]:
     """A common power-of-ten scale for a matrix, so a table can print ``×10⁻⁶`` once."""
     peak = float(np.max(np.abs(matrix))) if np.size(matrix) else 0.0
-    if peak == 0.0 or 1e-3 <= peak < 1e4:
+    if peak == 0.0 or 1e-3 <= peak < 1e4 or not 1e-300 < peak < 1e300:  # 10.0**-324 is 0: print as is
         return 1.0, ""
     exponent = int(math.floor(math.log10(peak)))
     return 10.0 ** exponent, f"×10{_superscript(exponent)}"

@@ -131,6 +131,8 @@ def sweep(
 
     if runs > 1 and not any(isinstance(a, Draw) for a in axes):
         raise InputError("--runs: Monte Carlo needs a --vary PATH=normal(MEAN,SD) or uniform(LOW,HIGH)")
+    if seed < 0:
+        raise InputError(f"--seed: must be a whole number 0 or above (got {seed})")
     plan = Plan(tuple(axes), runs=runs, seed=seed)
     if plan.size > 10**8:
         raise InputError(f"the sweep has {plan.size:.3g} runs, more than the 1e8 one sweep may have")

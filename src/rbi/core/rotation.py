@@ -23,13 +23,39 @@ def without_rounding_noise(R: np.ndarray) -> np.ndarray:
     return R
 
 
+def vector_length(v) -> float | np.ndarray:
+    """Euclidean length of ``v`` (or of each row of a stack) computed without squaring the
+    components directly: they are divided by the largest |component| first, so a vector of
+    components near 1e200 or 1e-200 has its length (not inf or 0). Inf only when the length
+    itself exceeds the largest double."""
+    v = np.asarray(v, dtype=float)
+    largest = np.max(np.abs(v), axis=-1)
+    safe = np.where(largest > 0, largest, 1.0)
+    with np.errstate(over="ignore"):
+        return largest * np.sqrt(np.sum((v / safe[..., None]) ** 2, axis=-1))
+
+
+def unit_vector(v) -> np.ndarray:
+    """``v / |v|`` (or each row of a stack) for any finite non-zero vector, however large or
+    small its components (from 5e-324 up to 1.8e308): scaled by the largest |component| before
+    the norm, so nothing overflows to inf or underflows to 0. ValueError for a zero or
+    non-finite vector."""
+    v = np.asarray(v, dtype=float)
+    if not np.all(np.isfinite(v)):
+        raise ValueError(f"a direction must be finite (got {v.tolist()})")
+    largest = np.max(np.abs(v), axis=-1, keepdims=True)
+    if np.any(largest == 0):
+        raise ValueError("a direction must not be the zero vector")
+    scaled = v / largest
+    return scaled / np.sqrt(np.sum(scaled * scaled, axis=-1, keepdims=True))
+
+
 def axis_angle_matrix(axis: np.ndarray, angle_rad: float) -> np.ndarray:
     """Rotation matrix turning vectors by ``angle_rad`` about ``axis`` (right-hand rule).
 
-    ``axis`` need not be normalised but must be non-zero.
+    ``axis`` need not be normalised but must be finite and non-zero (any size).
     """
-    u = np.asarray(axis, dtype=float)
-    u = u / np.linalg.norm(u)
+    u = unit_vector(axis)
     c, s = np.cos(angle_rad), np.sin(angle_rad)
     K = skew(u)
     return c * np.eye(3) + s * K + (1.0 - c) * np.outer(u, u)
@@ -90,9 +116,10 @@ def skew(v: np.ndarray) -> np.ndarray:
 def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
     """Rotation matrix (body -> world) of the quaternion ``q = [w, x, y, z]``.
 
-    ``q`` is normalised first, so a slightly drifted quaternion still gives a rotation.
+    ``q`` is normalised first (:func:`unit_vector`, so any finite non-zero size), so a slightly
+    drifted quaternion still gives a rotation.
     """
-    w, x, y, z = np.asarray(q, dtype=float) / np.linalg.norm(q)
+    w, x, y, z = unit_vector(q)
     return np.array(
         [
             [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
@@ -104,8 +131,7 @@ def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
 
 def quaternion_from_axis_angle(axis: np.ndarray, angle_rad: float) -> np.ndarray:
     """Unit quaternion ``[w, x, y, z]`` of a turn by ``angle_rad`` about ``axis``."""
-    u = np.asarray(axis, dtype=float)
-    u = u / np.linalg.norm(u)
+    u = unit_vector(axis)
     half = 0.5 * angle_rad
     return np.concatenate(([np.cos(half)], np.sin(half) * u))
 
@@ -145,5 +171,5 @@ def matrix_to_quaternion(R: np.ndarray) -> np.ndarray:
         q[1 + i] = 0.25 * s
         q[1 + j] = (R[j, i] + R[i, j]) / s
         q[1 + m] = (R[m, i] + R[i, m]) / s
-    q /= np.linalg.norm(q)
+    q = unit_vector(q)
     return q if q[0] >= 0 else -q

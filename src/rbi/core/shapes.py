@@ -14,6 +14,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from rbi.core.rotation import unit_vector, vector_length
+
 
 class MassElement(NamedTuple):
     """One part's mass properties.
@@ -28,10 +30,10 @@ class MassElement(NamedTuple):
 
 
 def axis_between(start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, float]:
-    """Unit vector from ``start`` to ``end`` and the distance between them (L)."""
+    """Unit vector from ``start`` to ``end`` and the distance between them (L), both computed
+    without overflow (the distance is inf only when it exceeds the largest double)."""
     d = np.asarray(end, dtype=float) - np.asarray(start, dtype=float)
-    length = float(np.linalg.norm(d))
-    return d / length, length
+    return unit_vector(d), float(vector_length(d))
 
 
 def axisymmetric_inertia(axial, transverse, axis: np.ndarray) -> np.ndarray:
@@ -247,17 +249,20 @@ def frustum(mass: float, start_radius: float, end_radius: float, start: np.ndarr
     axial moment 3/10 m (a⁴ + a³b + a²b² + ab³ + b⁴)/S;
     transverse moment about the centre of mass
     3/20 m (a⁴ + a³b + a²b² + ab³ + b⁴)/S + 3/80 m h² (a⁴ + 4a³b + 10a²b² + 4ab³ + b⁴)/S².
-    Every term is positive, so no digits cancel.
+    Every term is positive, so no digits cancel. The ratios are evaluated on a/c and b/c with
+    c = max(a, b) (then multiplied by c²), so radii near 1e-160 or 1e160 neither underflow to
+    0/0 nor overflow in the fourth powers.
     """
-    a, b = float(start_radius), float(end_radius)
+    c = max(float(start_radius), float(end_radius))
+    a, b = float(start_radius) / c, float(end_radius) / c
     start = np.asarray(start, dtype=float)
     u, h = axis_between(start, end)
     S = a * a + a * b + b * b
     quartic = a ** 4 + a ** 3 * b + a * a * b * b + a * b ** 3 + b ** 4
     along = h * (a * a + 2.0 * a * b + 3.0 * b * b) / (4.0 * S)
-    axial = 0.3 * mass * quartic / S
+    axial = 0.3 * mass * c * c * quartic / S
     spread = a ** 4 + 4.0 * a ** 3 * b + 10.0 * a * a * b * b + 4.0 * a * b ** 3 + b ** 4
-    transverse = 0.15 * mass * quartic / S + 3.0 * mass * h * h * spread / (80.0 * S * S)
+    transverse = 0.15 * mass * c * c * quartic / S + 3.0 * mass * h * h * spread / (80.0 * S * S)
     return MassElement(mass, start + along * u, axisymmetric_inertia(axial, transverse, u))
 
 
@@ -287,8 +292,7 @@ def torus(mass: float, major_radius: float, minor_radius: float, center: np.ndar
     m (R²/2 + 5/8 a²) (Pappus: each ring of the tube's cross-section adds its own ring
     moment).
     """
-    u = np.asarray(axis, dtype=float)
-    u = u / np.linalg.norm(u)
+    u = unit_vector(axis)
     R2, a2 = major_radius * major_radius, minor_radius * minor_radius
     axial = mass * (R2 + 0.75 * a2)
     transverse = mass * (0.5 * R2 + 0.625 * a2)
@@ -313,8 +317,7 @@ def hemisphere(mass: float, radius: float, center: np.ndarray, axis: np.ndarray)
     2/5 m r² (half a sphere); moved to the centre of mass, the axial moment stays 2/5 m r² and
     the transverse one becomes (2/5 − 9/64) m r² = 83/320 m r².
     """
-    u = np.asarray(axis, dtype=float)
-    u = u / np.linalg.norm(u)
+    u = unit_vector(axis)
     r2 = radius * radius
     com = np.asarray(center, dtype=float) + HEMISPHERE_COM_FRACTION * radius * u
     return MassElement(mass, com, axisymmetric_inertia(0.4 * mass * r2, 83.0 / 320.0 * mass * r2, u))

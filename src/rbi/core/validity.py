@@ -24,7 +24,8 @@ matrix (Drake uses 16 ε ≈ 3.6·10⁻¹⁵), well below any physical differenc
 
 class InertiaProblem(NamedTuple):
     """Why a matrix is not a valid inertia: ``kind`` is ``'not finite'``, ``'not symmetric'``,
-    ``'negative moment'`` or ``'triangle inequality'``; ``message`` says it in words with the
+    ``'negative moment'`` or ``'triangle inequality'`` (``'not finite'`` also when the entries
+    are so large that their sum overflows); ``message`` says it in words with the
     numbers."""
 
     kind: str
@@ -41,6 +42,10 @@ def inertia_problem(inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: floa
     I = np.asarray(inertia, dtype=float)
     if I.shape != (3, 3) or not np.all(np.isfinite(I)):
         return InertiaProblem("not finite", "inertia must be a finite 3×3 matrix")
+    if not np.isfinite(np.sum(np.abs(I))):
+        return InertiaProblem("not finite", f"numbers too large: the entries (largest {float(np.max(np.abs(I))):.3g}) "
+                                            f"add up beyond the largest double, {np.finfo(float).max:.3g}; "
+                                            "is the unit right?")
     size = 0.5 * abs(float(np.trace(I))) if scale is None else float(scale)
     tol = rtol * size
     asymmetry = float(np.max(np.abs(I - I.T)))
@@ -51,7 +56,7 @@ def inertia_problem(inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: floa
             "not symmetric",
             f"not symmetric: entry [{i}][{j}] = {I[i, j]:.6g} but [{j}][{i}] = {I[j, i]:.6g}",
         )
-    moments = np.linalg.eigvalsh(0.5 * (I + I.T))  # ascending
+    moments = np.linalg.eigvalsh(0.5 * I + 0.5 * I.T)  # ascending; I + I.T could overflow
     I1, I2, I3 = (float(m) for m in moments)
     if I1 < -tol:
         return InertiaProblem(

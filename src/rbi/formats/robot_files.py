@@ -139,8 +139,27 @@ def read_robot_file(path: str) -> RobotFile:
             robot.skipped.append((label, "no <inertial> element"))
             continue
         read = {"urdf": _urdf_inertial, "sdf": _sdf_inertial, "mjcf": _mjcf_inertial}[fmt]
-        robot.links.append(read(_Where(path, label), index, name, inertial))
+        where = _Where(path, label)
+        robot.links.append(_in_range(where, read(where, index, name, inertial)))
     return robot
+
+
+MAX_ANGLE_RAD = 1e9
+"""Largest inertial-frame angle read (rad): beyond it a double cannot place the angle within a
+microradian, so the value cannot be meant (and in degrees it may not even be finite)."""
+
+
+def _in_range(where: _Where, link: RobotLink) -> RobotLink:
+    """``link``, or InputError when its numbers cannot be computed with: an rpy angle beyond
+    :data:`MAX_ANGLE_RAD`, or inertia entries whose sum overflows a double."""
+    for axis, angle in zip(("roll", "pitch", "yaw"), link.rpy or ()):
+        if abs(angle) > MAX_ANGLE_RAD:
+            raise where.error(f"inertial rpy: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
+                              f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})")
+    if not np.isfinite(np.sum(np.abs(link.inertia))):
+        raise where.error(f"inertia: numbers too large: the entries (largest {float(np.max(np.abs(link.inertia))):.3g}) "
+                          f"add up beyond the largest double, {np.finfo(float).max:.3g}; give the inertia in kg·m²")
+    return link
 
 
 def _parse_xml(path: str):
@@ -365,7 +384,8 @@ def link_problems(robot: RobotFile, link: RobotLink) -> list[str]:
         problems.append(f"{where}: mass: must be greater than 0 (got {link.mass!r} kg)")
     problem = inertia_problem(link.inertia)
     if problem is not None:
-        I1, I2, I3 = (float(m) for m in np.linalg.eigvalsh(link.inertia))
+        if problem.kind in ("negative moment", "triangle inequality"):
+            I1, I2, I3 = (float(m) for m in np.linalg.eigvalsh(link.inertia))
         if problem.kind == "negative moment":
             margin = f"margin {I1:.6g} kg·m² below zero"
         elif problem.kind == "triangle inequality":

@@ -143,8 +143,9 @@ def _primitive(part, spec_path: str) -> dict[str, Any] | None:
 
 
 def _unit(v) -> list[float]:
-    v = np.asarray(v, dtype=float)
-    return (v / np.linalg.norm(v)).tolist()
+    from rbi.core.rotation import unit_vector
+
+    return unit_vector(v).tolist()
 
 
 def _mesh(part, spec_path: str) -> dict[str, Any] | None:

@@ -108,12 +108,19 @@ def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassE
     inertia = given if R is None else re_express(given, R)
     com = np.asarray(part.center_of_mass, dtype=float)
     if part.about is not None:
-        inertia = parallel_axis_to_com(inertia, part.mass, com - np.asarray(part.about, dtype=float))
+        offset = com - np.asarray(part.about, dtype=float)
+        inertia = parallel_axis_to_com(inertia, part.mass, offset)
+        if not np.all(np.isfinite(inertia)) or not np.isfinite(np.sum(np.abs(inertia))):
+            raise ValueError(f"about: numbers too large: moving the inertia {float(np.max(np.abs(offset))):.3g} "
+                             f"from `about` to the centre of mass overflows (beyond {np.finfo(float).max:.3g}); "
+                             "`about` is the point the inertia is taken about, near the part")
         problem = inertia_problem(inertia, scale=0.5 * float(np.trace(given)))
         if problem is not None:
-            raise ValueError(f"inertia: about the centre of mass (after the parallel-axis shift from `about`) "
-                             f"the inertia is {problem.message}: the given inertia is too small for this mass "
-                             f"and offset")
+            shift = float(part.mass) * float(offset @ offset)
+            raise ValueError(f"inertia: about the centre of mass (moved there from `about`): {problem.message}: "
+                             f"an inertia taken about `about` exceeds the one about the centre of mass by mass × "
+                             f"offset² = {shift:.6g} on the axes across the offset, so the given one is too small; "
+                             "is `about` the point it was taken about?")
     return shapes.MassElement(part.mass, com, 0.5 * (inertia + inertia.T))
 
 
@@ -257,8 +264,12 @@ def body_from_spec(spec: models.BodySpec, path: str):
                 element = part_element(part, spec.units, path)
         except ValueError as exc:
             raise InputError(f"{path}: {part_label(i, part)}: {exc}") from None
-        if not (np.isfinite(element.mass) and np.all(np.isfinite(element.inertia_com))):
-            raise InputError(f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows")
+        except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
+            element = None
+        if element is None or not (np.isfinite(element.mass) and np.all(np.isfinite(element.com))
+                                   and np.all(np.isfinite(element.inertia_com))):
+            raise InputError(f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows "
+                             f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?")
         if getattr(part, "subtract", False):
             holes.append(i)
             element = _removed(element)

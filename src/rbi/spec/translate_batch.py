@@ -20,6 +20,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core import shapes
+from rbi.core.rotation import vector_length
 from rbi.core.shapes import MassElement
 from rbi.spec import models
 from rbi.spec.materials import density_in_units
@@ -57,7 +58,7 @@ def _solid_masses(parts: list, units: models.Units, volume: np.ndarray) -> np.nd
 
 
 def _lengths(d: np.ndarray) -> np.ndarray:
-    return np.sqrt(np.einsum("ij,ij->i", d, d))
+    return vector_length(d)
 
 
 def _vectors(parts: list, field: str) -> np.ndarray:

@@ -68,6 +68,9 @@ def parse_axis(name: str, text: str) -> GridAxis | Draw:
             raise ValueError(f"the standard deviation must not be negative (got {text!r})")
         if kind == "uniform" and b < a:
             raise ValueError(f"uniform(LOW,HIGH) needs LOW <= HIGH (got {text!r})")
+        if kind == "uniform" and not math.isfinite(b - a):
+            raise ValueError(f"uniform(LOW,HIGH): HIGH - LOW overflows a double (got {text!r}); the range must be "
+                             f"narrower than {np.finfo(float).max:.3g}")
         return Draw(name, kind, a, b)
     try:
         value = float(text)

@@ -12,6 +12,8 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.rotation import unit_vector
+
 SEGMENTS = 32
 """Facets around a round solid (even, so stripes alternate all the way round)."""
 STRIPES = 8
@@ -21,8 +23,7 @@ POINT_RADIUS_FRACTION = 0.035
 
 def _perpendiculars(axis: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     helper = np.array([1.0, 0.0, 0.0]) if abs(axis[0]) < 0.9 else np.array([0.0, 1.0, 0.0])
-    u = np.cross(axis, helper)
-    u /= np.linalg.norm(u)
+    u = unit_vector(np.cross(axis, helper))
     return u, np.cross(axis, u)
 
 
@@ -40,8 +41,7 @@ def _stripe_flags(rows: int, columns: int) -> np.ndarray:
 def frustum_quads(start, end, start_radius: float, end_radius: float, inner_radius: float = 0.0):
     """Side, end caps (annuli when ``inner_radius`` > 0) and inner wall of a frustum."""
     a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
-    length = float(np.linalg.norm(b - a))
-    axis = (b - a) / length if length > 0 else np.array([0.0, 0.0, 1.0])
+    axis = unit_vector(b - a) if np.any(b != a) else np.array([0.0, 0.0, 1.0])
     u, v = _perpendiculars(axis)
     angles = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)
     ring = np.cos(angles)[:, None] * u + np.sin(angles)[:, None] * v  # (S+1, 3)
@@ -80,20 +80,19 @@ def box_quads(center, size, rotation):
 
 def torus_quads(center, axis, major_radius: float, minor_radius: float):
     """A ring mesh; stripes around the ring's axis."""
-    axis = np.asarray(axis, dtype=float)
-    u, v = _perpendiculars(axis / np.linalg.norm(axis))
+    axis = unit_vector(axis)
+    u, v = _perpendiculars(axis)
     around = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
     tube = np.linspace(0.0, 2 * np.pi, SEGMENTS // 2 + 1)[:, None]
     radial = np.cos(around)[..., None] * u + np.sin(around)[..., None] * v  # (1, S+1, 3)
     points = (np.asarray(center, dtype=float) + (major_radius + minor_radius * np.cos(tube))[..., None] * radial
-              + (minor_radius * np.sin(tube))[..., None] * (axis / np.linalg.norm(axis)))
+              + (minor_radius * np.sin(tube))[..., None] * axis)
     return _grid_quads(points), _stripe_flags(SEGMENTS // 2, SEGMENTS)
 
 
 def hemisphere_quads(center, axis, radius: float):
     """Dome and flat face; stripes around the axis."""
-    axis = np.asarray(axis, dtype=float)
-    axis = axis / np.linalg.norm(axis)
+    axis = unit_vector(axis)
     u, v = _perpendiculars(axis)
     rows = SEGMENTS // 4
     polar = np.linspace(0.0, np.pi / 2, rows + 1)[:, None]
