@@ -57,8 +57,10 @@ def import_robot(
         if targets is None:
             sys.stdout.write("---\n".join(_yaml_text(robot, each) for each in links))
         else:
+            from rbi.spec.yaml_writer import visible
+
             for target, _ in targets:
-                print(target.given)
+                print(visible(str(target.given)))
         return
     _emit_listing(format, robot, links, targets)
 
@@ -116,19 +118,20 @@ def _file_names(links, word: str) -> list[str]:
 
 
 def _yaml_text(robot, link) -> str:
+    """One link's spec: a comment header, then the spec written by the YAML dumper. Names from
+    the file (the file's own, the link's) are data: escaped in the comment, quoted and escaped
+    by the dumper where they hold anything but visible characters (rbi.spec.yaml_writer)."""
     import os
 
-    import yaml
-
     from rbi.formats.robot_files import link_spec
+    from rbi.spec.yaml_writer import comment, dump
 
     source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
-    header = (f"# rbi import of {os.path.basename(robot.path)}, {link.label(robot.link_word)}, from its {source} <inertial>:\n"
-              "# SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,\n"
-              "# turned into link axes by `rotation`.\n")
-    header = header.replace("\r", " ")
-    return header + yaml.safe_dump(link_spec(robot, link), sort_keys=False, allow_unicode=True,
-                                   default_flow_style=None, width=100)
+    header = comment(f"rbi import of {os.path.basename(robot.path)}, {link.label(robot.link_word)}, from its {source} "
+                     "<inertial>:",
+                     "SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,",
+                     "turned into link axes by `rotation`.")
+    return header + dump(link_spec(robot, link))
 
 
 def _write(robot, targets) -> None:
@@ -163,7 +166,10 @@ def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
         "links": rows,
         "skipped": [{"link": label, "reason": reason} for label, reason in robot.skipped],
     }
-    csv_rows = [{k: v for k, v in row.items() if k != "problems"} | {"ok": not row["problems"]} for row in rows]
+    from rbi.spec.yaml_writer import visible
+
+    csv_rows = [{k: (visible(v) if isinstance(v, str) else v) for k, v in row.items() if k != "problems"}
+                | {"ok": not row["problems"]} for row in rows]  # names escaped: CSV often reaches a terminal
     emit(format.value, result, lambda: None, csv_rows=csv_rows)
 
 

@@ -1,0 +1,91 @@
+"""Writing specs as YAML text: every string is data, whatever it holds.
+
+A name read from another file (a robot file's link, a mesh's object) can hold newlines, YAML
+syntax, control characters, bidirectional overrides or Unicode's line separators (which YAML
+takes as line breaks). Specs are therefore written only through PyYAML's dumper, never by
+pasting strings: a string holding any character that is not plainly visible is written
+double-quoted with escapes (``"arm\\npivot: [0, 0, 9]"``, ``"\\u202Eevil"``), so the text a
+terminal shows is the text the file holds and reading it back gives the name exactly.
+Comments (which the dumper cannot write) go through :func:`comment`, which escapes the same
+characters and every line break, so nothing in a comment can end it.
+"""
+
+from __future__ import annotations
+
+import unicodedata
+from typing import Any
+
+_VISIBLE_CATEGORIES_EXCEPT = ("Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp")
+"""Unicode categories written escaped: controls, format characters (bidirectional overrides,
+zero-width characters, the byte order mark), surrogates, private use, unassigned, line and
+paragraph separators. Spaces other than U+0020 (Zs) are escaped too, so none hides in a name."""
+
+
+def is_hidden(char: str) -> bool:
+    """Whether ``char`` would not show as itself on a terminal (or would move the text around
+    it): a control, format, separator, unassigned or private character, or a space other than
+    the plain space."""
+    category = unicodedata.category(char)
+    return category in _VISIBLE_CATEGORIES_EXCEPT or (category == "Zs" and char != " ")
+
+
+def visible(text: str) -> str:
+    """``text`` with every hidden character (see :func:`is_hidden`) written as an escape
+    (``\\n``, ``\\x9b``, ``\\u202e``), and backslashes doubled, so the result is one line of
+    plainly visible characters from which ``text`` can be read back."""
+    if not any(is_hidden(c) or c == "\\" for c in text):
+        return text
+    out = []
+    for char in text:
+        if char == "\\":
+            out.append("\\\\")
+        elif not is_hidden(char):
+            out.append(char)
+        elif char in _SHORT_ESCAPES:
+            out.append(_SHORT_ESCAPES[char])
+        else:
+            code = ord(char)
+            out.append(f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}")
+    return "".join(out)
+
+
+_SHORT_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+
+
+def comment(*lines: str) -> str:
+    """Each of ``lines`` as one YAML comment line (``# ...``), made :func:`visible`: a line
+    break or any other character in it cannot end the comment."""
+    return "".join(f"# {visible(line)}".rstrip() + "\n" for line in lines)
+
+
+def dump(data: Any, *, width: int = 100) -> str:
+    """``data`` (plain dicts, lists, numbers, strings) as block-style YAML with flow-style
+    leaf lists, keys in the order given. Strings holding a hidden character are written
+    double-quoted with escapes; other non-ASCII text (``名前``, ``ü``) stays as it is."""
+    import yaml
+
+    class Dumper(yaml.SafeDumper):
+        pass
+
+    def represent_str(dumper, value: str):
+        style = '"' if any(is_hidden(c) for c in value) else None
+        return dumper.represent_scalar("tag:yaml.org,2002:str", value, style=style)
+
+    Dumper.add_representer(str, represent_str)
+    # PyYAML's double-quoted writer escapes controls, NEL, U+2028/9 and the BOM itself, but
+    # with allow_unicode it keeps format characters (U+202E) raw: turn it off for such text.
+    allow_unicode = not any(unicodedata.category(c) in ("Cf", "Co", "Cn") for s in _strings(data) for c in s)
+    return yaml.dump(data, Dumper=Dumper, sort_keys=False, allow_unicode=allow_unicode, default_flow_style=None,
+                     width=width)
+
+
+def _strings(data: Any):
+    if isinstance(data, str):
+        yield data
+    elif isinstance(data, dict):
+        for key, value in data.items():
+            yield from _strings(key)
+            yield from _strings(value)
+    elif isinstance(data, (list, tuple)):
+        for item in data:
+            yield from _strings(item)
