@@ -101,3 +101,13 @@ def test_mass_commands_do_not_load_heavy_modules(modules_after_mass_commands, he
 def test_file_readers_know_nothing_of_specs_or_the_terminal():
     forbidden = ("rbi.spec", "rbi.cli", "rbi.sim", "rbi.sweep", "rbi.viz", "pydantic", "typer", "rich", "click")
     assert offending("formats", forbidden) == {}
+
+
+def test_runs_know_nothing_of_the_cli_or_the_terminal():
+    assert offending("runs", ("rbi.cli", "rbi.api", "typer", "rich", "click")) == {}
+
+
+def test_the_api_is_below_the_cli():
+    hits = sorted(m for m in imported_modules(SRC / "api.py")
+                  if any(m == f or m.startswith(f + ".") for f in ("rbi.cli", "typer", "click")))
+    assert hits == []

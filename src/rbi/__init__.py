@@ -1,8 +1,40 @@
-"""rbi: a command-line rigid-body calculator.
+"""rbi: a rigid-body calculator — mass properties, principal axes, momentum and motion of a body
+described in a YAML spec, as a command-line tool (``rbi``) and a Python library.
 
-Layers (each imports only those below it):
-``core`` (pure numpy physics) <- ``spec`` (YAML, units, validation) <- ``sim`` (time evolution)
-<- ``cli`` (typer commands and rendering).
+```python
+import rbi
+
+body = rbi.load("top.yaml")
+print(body.mass, body.center_of_mass, body.principal().moments)
+run = rbi.simulate(body, spin=200.0, tilt_deg=0.01, duration=2.0)
+```
+
+The public names are those in ``__all__``; everything else (the subpackages included) is
+private and may change. ``import rbi`` alone is cheap: :mod:`rbi.api` (and numpy) are imported
+on first use of a public name.
+
+Layers (each imports only those below it): ``formats`` (readers of outside files) ←
+``spec`` (YAML, units, validation) ← ``core`` (pure numpy physics) ← ``sim``, ``sweep``,
+``viz``, ``bench``, ``runs`` ← ``api`` (the public Python API) ← ``cli`` (typer commands and
+rendering).
 """
 
 __version__ = "0.1.0"
+
+__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "SpecError", "__version__"]
+
+_API_NAMES = frozenset(__all__) - {"__version__"}
+
+
+def __getattr__(name: str):
+    if name in _API_NAMES:
+        from rbi import api
+
+        value = getattr(api, name)
+        globals()[name] = value
+        return value
+    raise AttributeError(f"module 'rbi' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | _API_NAMES)

@@ -44,7 +44,9 @@ def animate(
       rbi animate top_bolted.yaml --spin 200 --duration 2 --out top.gif
     """
     from rbi.cli.output import output_target, write_output
-    from rbi.cli.simulate_command import check_run_options, prepare_run
+    from rbi.runs.prepare import prepare_run
+    from rbi.runs.settings import check_run_options
+    from rbi.spec.load import load_body
 
     check_run_options("default", spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol)
     if not (0.1 <= speed <= 2.0):
@@ -63,8 +65,9 @@ def animate(
             raise InputError(f"--duration: a GIF of {duration:g} s at {fps} frames per second would have "
                              f"{gif_frames:.3g} frames, more than {MAX_GIF_FRAMES}: shorten --duration, lower --fps, "
                              "or write .html")
-    body, scene, q0, omega0, budget = prepare_run(file, spin, omega, tilt, tilt_axis, gravity, duration, "default",
-                                                  rtol, max_steps, yes)
+    prepared = prepare_run(load_body(file), spin=spin, omega=omega, tilt=tilt, tilt_axis=tilt_axis, gravity=gravity,
+                           duration=duration, rtol=rtol, max_steps=max_steps, yes=yes)
+    body, scene, q0, omega0, budget = prepared.body, prepared.scene, prepared.q0, prepared.omega0, prepared.budget
     import numpy as np
 
     from rbi.sim.api import SimulationError, simulate

@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from rbi.runs.values import parse_vector  # noqa: F401  (re-exported: the commands parse vectors with it)
 from rbi.spec.errors import InputError
 
 
@@ -27,18 +28,6 @@ AboutOption = Annotated[
     typer.Option("--about", "-a", metavar="com|origin|pivot|X,Y,Z",
                  help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units)."),
 ]
-
-
-def parse_vector(text: str, option: str, count: int = 3) -> list[float]:
-    """``"1,2,3"`` -> ``[1.0, 2.0, 3.0]``; :class:`InputError` naming the option otherwise."""
-    pieces = [p.strip() for p in text.replace(";", ",").split(",")]
-    try:
-        values = [float(p) for p in pieces]
-    except ValueError:
-        values = []
-    if len(values) != count or not all(math.isfinite(v) for v in values):
-        raise InputError(f"{option}: expected {count} finite numbers separated by commas, got {text!r}")
-    return values
 
 
 def parse_about(text: str, body) -> tuple[str, list[float]]:

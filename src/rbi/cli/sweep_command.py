@@ -81,7 +81,7 @@ def sweep(
     from rbi.cli.output import check_distinct, output_target
     from rbi.spec.load import read_yaml
     from rbi.spec.variations import current_values, resolve
-    from rbi.cli.simulate_command import check_run_settings
+    from rbi.runs.settings import check_run_settings
     from rbi.sweep.plan import Plan, parse_axis
 
     if runs < 1:

@@ -133,7 +133,26 @@ def read_yaml(path: str | Path) -> Any:
     """Parsed YAML of a spec file (see :mod:`rbi.spec.yaml_reader` for what is refused);
     :class:`InputError` for a missing, empty, binary or malformed file."""
     path = str(path)
-    text = read_spec_text(path)
+    return parse_spec_text(read_spec_text(path), path)
+
+
+def check_spec_text(text: str, label: str) -> str:
+    """Spec text given in memory (not read from a file) held to the rules of
+    :func:`read_spec_text`: not empty, no NUL, at most :data:`MAX_SPEC_BYTES`; a leading
+    byte-order mark dropped. ``label`` names it in messages (``<stdin>``, ``<string>``)."""
+    if len(text) > MAX_SPEC_BYTES:
+        raise InputError(f"{label}: too large (more than {MAX_SPEC_BYTES:,} bytes)")
+    if "\x00" in text:
+        raise InputError(f"{label}: not a text file (binary data)")
+    if text.startswith("\ufeff"):
+        text = text[1:]
+    if not text.strip():
+        raise InputError(f"{label}: file is empty")
+    return text
+
+
+def parse_spec_text(text: str, path: str) -> Any:
+    """Parsed YAML (or JSON) of spec text, messages prefixed with ``path``."""
     with paused_gc():
         parsed = _parse_json(text)
         if parsed is not _NOT_JSON:
@@ -271,8 +290,27 @@ def spec_from_raw(path: str, raw: Any):
     spec, problems = validation_messages(path, raw)
     if problems:
         more = f" (+{len(problems) - 1} more; `rbi validate {path}` lists all)" if len(problems) > 1 else ""
-        raise InputError(problems[0] + more)
+        part, field = _first_location(raw)
+        raise InputError(problems[0] + more, file=path, part=part, field=field)
     return spec
+
+
+def _first_location(raw: Any) -> tuple[str | None, str | None]:
+    """The part label and field path of the first validation problem (as the messages order
+    them), for :class:`InputError`'s ``part`` and ``field``."""
+    from pydantic import ValidationError
+
+    from rbi.spec.models import BodySpec
+
+    if not isinstance(raw, dict):
+        return None, None
+    try:
+        BodySpec.model_validate(raw)
+    except ValidationError as exc:
+        errors = sorted(exc.errors(include_url=False), key=lambda e: e["type"] != "extra_forbidden")
+        part_label, field_path = format_location(tuple(errors[0]["loc"]), raw)
+        return part_label or None, ".".join(field_path) or None
+    return None, None
 
 
 def load_body(path: str | Path) -> LoadedBody:
@@ -282,3 +320,12 @@ def load_body(path: str | Path) -> LoadedBody:
     path = str(path)
     with paused_gc():
         return body_from_spec(load_spec(path), path)
+
+
+def body_from_raw(raw: Any, path: str) -> LoadedBody:
+    """Validate and translate already parsed YAML (a dict shaped like the spec) named ``path``
+    in messages; files it names are looked for beside ``path``."""
+    from rbi.spec.translate import body_from_spec
+
+    with paused_gc():
+        return body_from_spec(spec_from_raw(path, raw), path)

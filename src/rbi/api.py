@@ -1,0 +1,501 @@
+"""The public Python API of rbi: load a body, ask for its mass properties, simulate its motion.
+
+```python
+import rbi
+
+body = rbi.load("bodies/top_bolted.yaml")
+body.mass                      # kg (the spec's mass unit)
+body.principal().moments       # ascending, kg·m² (the spec's units)
+run = rbi.simulate(body, spin=200.0, tilt_deg=0.01, duration=2.0)
+run.t, run.q, run.omega        # numpy arrays: s; [w, x, y, z] body → world; body frame rad/s
+```
+
+Every number is in the spec's own units (``body.units``) unless a name says otherwise: lengths in
+``units["length"]``, masses in ``units["mass"]``, inertias in mass·length². Points and vectors are
+in the body frame (the spec's coordinates) unless a name says ``world``. Bad input of any kind
+raises :class:`SpecError`, whose ``str()`` is the one line the CLI prints for the same mistake.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from rbi.errors import InputError as SpecError
+
+__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "SpecError"]
+
+Point = Any
+"""A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates
+(spec length unit); text ``"x,y,z"`` is accepted too."""
+
+
+def load(source: str | os.PathLike | dict, *, allow_outside_paths: bool = False) -> Body:
+    """Read, validate and translate a body spec.
+
+    Args:
+        source: a path to a spec file (``str`` or ``os.PathLike``; ``"-"`` reads standard
+            input, named ``<stdin>`` in messages); YAML or JSON text (a ``str`` holding a
+            newline, named ``<string>``); or a ``dict`` shaped like the YAML spec (named
+            ``<dict>``). Files the spec names (meshes, point clouds) are looked for beside the
+            spec file, or in the current folder for text and dicts.
+        allow_outside_paths: let the spec name files outside its own folder (the CLI's
+            ``--allow-outside-paths``).
+
+    Returns:
+        The :class:`Body`.
+
+    Raises:
+        SpecError: the file is missing or unreadable, the YAML is malformed, or the spec is
+            invalid; ``str(error)`` is ``file: part: field: what is wrong``.
+    """
+    from rbi.formats.paths import outside_paths_allowed
+
+    try:
+        with outside_paths_allowed(allow_outside_paths):
+            loaded, raw = _load(source)
+    except SpecError as exc:
+        label = _label(source)
+        if exc.file is None and label is not None and str(exc).startswith(label + ": "):
+            exc.file = label
+        raise
+    return Body(loaded, raw)
+
+
+def _label(source) -> str | None:
+    """How messages name ``source``."""
+    if isinstance(source, dict):
+        return "<dict>"
+    if isinstance(source, str):
+        return "<stdin>" if source == "-" else "<string>" if "\n" in source else source
+    if isinstance(source, os.PathLike):
+        return os.fsdecode(os.fspath(source))
+    return None
+
+
+def load_file(path: str) -> Body:
+    """The body of the spec file at ``path`` (never read as text, whatever it holds)."""
+    from rbi.spec import load as spec_load
+
+    raw = spec_load.read_yaml(path)
+    return Body(spec_load.body_from_raw(raw, path), raw)
+
+
+def _load(source):
+    from rbi.spec import load as spec_load
+
+    if isinstance(source, dict):
+        return spec_load.body_from_raw(source, "<dict>"), source
+    if isinstance(source, str) and ("\n" in source or source == "-"):
+        if source == "-":
+            import sys
+
+            label, text = "<stdin>", sys.stdin.read()
+        else:
+            label, text = "<string>", source
+        raw = spec_load.parse_spec_text(spec_load.check_spec_text(text, label), label)
+        return spec_load.body_from_raw(raw, label), raw
+    if isinstance(source, (str, os.PathLike)):
+        path = os.fspath(source)
+        if isinstance(path, bytes):
+            path = os.fsdecode(path)
+        raw = spec_load.read_yaml(path)
+        return spec_load.body_from_raw(raw, path), raw
+    raise SpecError(f"rbi.load: expected a path, spec text or a dict (got {type(source).__name__})")
+
+
+@dataclass(frozen=True)
+class Principal:
+    """Principal moments and axes about a point.
+
+    Attributes:
+        moments: (3,) ascending, mass·length² (spec units).
+        axes: (3, 3) unit vectors in the body frame, one per **row** (``axes[i]`` belongs to
+            ``moments[i]``), right-handed — as ``rbi principal`` prints them.
+        radii_of_gyration: (3,) ``sqrt(moment / mass)``, length unit.
+        about: (3,) the reference point, body frame, length unit.
+    """
+
+    moments: np.ndarray
+    axes: np.ndarray
+    radii_of_gyration: np.ndarray
+    about: np.ndarray
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of a body, in file order (spec units, body frame).
+
+    Attributes:
+        name: the part's ``name`` (``parts[i]`` when it has none).
+        shape: the part's shape (``cylinder``, ``mesh`` ... or ``point_cloud``).
+        hole: True for a part removed from the body (``subtract: true``).
+        mass: the part's mass (negative for a hole).
+        center_of_mass: (3,) the part's centre of mass.
+        inertia_about_com: (3, 3) the part's inertia about its own centre of mass, body axes.
+        volume: the solid's volume (length³), or None when it has none (points, custom parts).
+    """
+
+    name: str
+    shape: str
+    hole: bool
+    mass: float
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray
+    volume: float | None
+
+
+@dataclass(frozen=True)
+class Momentum:
+    """Angular momentum and kinetic energy of the body at one instant (spec units, body axes).
+
+    Attributes:
+        omega: (3,) angular velocity, rad/s.
+        about: (3,) the reference point.
+        com_velocity: (3,) velocity of the centre of mass, length/s.
+        angular_momentum: (3,) about ``about``, mass·length²/s.
+        angle_deg: angle between the angular momentum and ω, degrees (None when either is zero).
+        kinetic_energy: mass·length²/s².
+    """
+
+    omega: np.ndarray
+    about: np.ndarray
+    com_velocity: np.ndarray
+    angular_momentum: np.ndarray
+    angle_deg: float | None
+    kinetic_energy: float
+
+
+class Body:
+    """A validated rigid body, as :func:`load` returns it.
+
+    All numbers are in the spec's own units (:attr:`units`) and the body frame (the spec's
+    coordinates). A Body does not change; every method returns new arrays.
+    """
+
+    def __init__(self, loaded, raw=None) -> None:
+        self._loaded = loaded
+        self._raw = raw
+        self.warnings: list[str] = []
+        """Warnings about the spec (implausible units ...), the lines the CLI prints on stderr."""
+
+    @property
+    def path(self) -> str:
+        """Where the spec came from: its path, or ``<stdin>``, ``<string>``, ``<dict>``."""
+        return self._loaded.path
+
+    @property
+    def name(self) -> str | None:
+        """The spec's ``name``, or None."""
+        return self._loaded.name
+
+    @property
+    def units(self) -> dict[str, str]:
+        """The spec's units: ``{"length": ..., "mass": ...}``, e.g. ``{"length": "m", "mass": "kg"}``."""
+        return dict(self._loaded.units)
+
+    @property
+    def mass(self) -> float:
+        """Total mass (holes subtracted), mass unit."""
+        return float(self._loaded.props.mass)
+
+    @property
+    def center_of_mass(self) -> np.ndarray:
+        """(3,) centre of mass, body frame, length unit."""
+        return np.array(self._loaded.props.com, dtype=float)
+
+    @property
+    def pivot(self) -> np.ndarray | None:
+        """(3,) the fixed point of a top, body frame, length unit; None for a free body."""
+        return None if self._loaded.pivot is None else np.array(self._loaded.pivot, dtype=float)
+
+    def point(self, about: Point = "com") -> np.ndarray:
+        """The reference point ``about`` as (3,) body coordinates, length unit.
+
+        ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
+        (:class:`SpecError` when there is none); or a point (x, y, z)."""
+        if isinstance(about, str):
+            key = about.strip().lower()
+            if key == "com":
+                return self.center_of_mass
+            if key == "origin":
+                return np.zeros(3)
+            if key == "pivot":
+                if self._loaded.pivot is None:
+                    raise SpecError(f"{self.path}: pivot: --about pivot needs a `pivot` in the spec, and there is "
+                                    "none", file=self.path, field="pivot")
+                return self.pivot
+        from rbi.runs.values import vector_value
+
+        try:
+            return np.array(vector_value(about, "--about"))
+        except SpecError:
+            raise SpecError(f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
+                            f"commas, file units), got {about!r}", field="about") from None
+
+    def inertia(self, about: Point = "com", axes=None) -> np.ndarray:
+        """The (3, 3) inertia matrix about a point, mass·length² (tensor sign: ``I_xy = -∫xy dm``).
+
+        Args:
+            about: the reference point (see :meth:`point`): ``"com"`` (default), ``"origin"``,
+                ``"pivot"`` or (x, y, z) in body coordinates.
+            axes: None for body axes; or turns of the body about world axes, applied in
+                order, as the CLI's ``--rotate`` — a list of ``("x"|"y"|"z", degrees)``;
+                or a (3, 3) rotation matrix R, body → world. The matrix is then given in
+                world axes: ``R I Rᵀ``.
+        """
+        from rbi.core.inertia import inertia_about, re_express
+
+        matrix = inertia_about(self._loaded.props, self.point(about))
+        if axes is None:
+            return matrix
+        return re_express(matrix, _rotation(axes))
+
+    def principal(self, about: Point = "com") -> Principal:
+        """Principal moments (ascending) and axes (rows, body frame, right-handed) about a point
+        (default the centre of mass), as ``rbi principal`` prints them."""
+        from rbi.core.inertia import inertia_about, principal_axes, radii_of_gyration
+
+        point = self.point(about)
+        moments, axes = principal_axes(inertia_about(self._loaded.props, point))
+        return Principal(moments=np.asarray(moments), axes=np.asarray(axes),
+                         radii_of_gyration=np.asarray(radii_of_gyration(moments, self.mass)), about=point)
+
+    def parts(self) -> list[Part]:
+        """Each part's mass properties, in file order (see :class:`Part`)."""
+        from rbi.spec.translate import part_volume
+
+        loaded = self._loaded
+        spec_parts = list(loaded.spec.parts) if loaded.spec is not None else []
+        out = []
+        for i, element in enumerate(loaded.elements):
+            part = spec_parts[i] if i < len(spec_parts) else None
+            out.append(Part(
+                name=loaded.part_names[i] or f"parts[{i}]",
+                shape=part.shape if part is not None else "point_cloud",
+                hole=bool(getattr(part, "subtract", False)),
+                mass=float(element.mass),
+                center_of_mass=np.array(element.com, dtype=float),
+                inertia_about_com=np.array(element.inertia_com, dtype=float),
+                volume=None if part is None else part_volume(part),
+            ))
+        return out
+
+    def momentum(self, omega, about: Point = "com", velocity=None) -> Momentum:
+        """Angular momentum about a point and kinetic energy, for angular velocity ``omega``
+        (body axes, rad/s).
+
+        Args:
+            omega: (3,) angular velocity, rad/s, body axes.
+            about: the reference point (see :meth:`point`).
+            velocity: (3,) velocity of the centre of mass, length/s, body axes. None: the
+                ``about`` point is fixed and the body turns about it (``v = ω × r``).
+        """
+        from rbi.core.dynamics import angle_between_deg, angular_momentum_about_point, kinetic_energy
+        from rbi.runs.values import vector_value
+
+        w = np.array(vector_value(omega, "--omega"))
+        point = self.point(about)
+        props = self._loaded.props
+        com_from_point = props.com - point
+        v_com = np.cross(w, com_from_point) if velocity is None else np.array(vector_value(velocity, "--velocity"))
+        h = angular_momentum_about_point(props.inertia_com, props.mass, com_from_point, w, v_com)
+        return Momentum(omega=w, about=point, com_velocity=v_com, angular_momentum=np.asarray(h),
+                        angle_deg=angle_between_deg(h, w),
+                        kinetic_energy=float(kinetic_energy(props.inertia_com, w, props.mass, v_com)))
+
+    def __repr__(self) -> str:
+        units = self.units
+        return (f"<rbi.Body {self.name or self.path!r}: mass {self.mass:.6g} {units['mass']}, "
+                f"{len(self._loaded.elements)} parts, {'pivot' if self._loaded.pivot is not None else 'free'}>")
+
+    def _summary_rows(self) -> list[tuple[str, str, str]]:
+        units = self.units
+        inertia_unit = f"{units['mass']}·{units['length']}²"
+        principal = self.principal()
+        rows = [("mass", units["mass"], f"{self.mass:.8g}"),
+                ("centre of mass", units["length"], _vector_text(self.center_of_mass))]
+        if self._loaded.pivot is not None:
+            rows.append(("pivot", units["length"], _vector_text(self.pivot)))
+        rows.append(("principal moments about CoM", inertia_unit, _vector_text(principal.moments)))
+        for i, axis in enumerate(principal.axes, start=1):
+            rows.append((f"principal axis {i}", "", _vector_text(axis)))
+        rows.append(("parts", "", str(len(self._loaded.elements))))
+        return rows
+
+    def __rich__(self):
+        return _rich_table(f"{self.name or self.path}", self._summary_rows())
+
+    def _repr_html_(self) -> str:
+        return _html_table(f"{self.name or self.path}", self._summary_rows())
+
+
+def _rotation(axes) -> np.ndarray:
+    """A body → world rotation matrix from ``axes`` (see :meth:`Body.inertia`)."""
+    from rbi.core.rotation import compose_world_rotations
+
+    array = np.asarray(axes, dtype=object)
+    if array.shape == (3, 3):
+        R = np.asarray(axes, dtype=float)
+        if not (np.all(np.isfinite(R)) and np.allclose(R @ R.T, np.eye(3), atol=1e-9)
+                and np.linalg.det(R) > 0):
+            raise SpecError("axes: a 3x3 matrix must be a rotation (orthonormal, determinant +1)", field="axes")
+        return R
+    turns = []
+    for turn in axes:
+        try:
+            axis, degrees = turn
+            axis, degrees = str(axis).strip().lower(), float(degrees)
+        except (TypeError, ValueError):
+            axis, degrees = "", float("nan")
+        if axis not in ("x", "y", "z") or not np.isfinite(degrees):
+            raise SpecError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {turn!r}",
+                            field="axes")
+        turns.append((axis, np.radians(degrees)))
+    return compose_world_rotations(turns)
+
+
+@dataclass(frozen=True, repr=False)
+class Trajectory:
+    """A simulated motion, sampled at equally spaced times (spec units).
+
+    Attributes:
+        t: (N,) time, s.
+        q: (N, 4) unit quaternions [w, x, y, z] (scalar first), body → world.
+        omega: (N, 3) angular velocity in the body frame, rad/s.
+        tilt_deg: (N,) angle of the body z axis from the upward vertical, degrees.
+        precession_deg: (N,) azimuth of that axis seen from above, degrees (unwrapped; NaN
+            while the axis stands vertical).
+        energy: (N,) total energy (kinetic + potential), mass·length²/s².
+        summary: what ``rbi simulate --format json`` prints for the run (initial state, final
+            state, tilt bounds, conserved quantities and their drift, error estimate, cost,
+            stability), as plain values and numpy arrays.
+    """
+
+    t: np.ndarray
+    q: np.ndarray
+    omega: np.ndarray
+    tilt_deg: np.ndarray
+    precession_deg: np.ndarray
+    energy: np.ndarray
+    summary: dict = field(default_factory=dict)
+
+    def to_csv(self) -> str:
+        """The trajectory as the CSV ``rbi simulate --out`` writes (columns t, qw, qx, qy, qz, wx,
+        wy, wz, tilt_deg, precession_deg, energy; full precision)."""
+        from rbi.runs.simulation import trajectory_csv
+
+        return trajectory_csv(self.columns())
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""
+        q, w = self.q, self.omega
+        return {"t": self.t, "qw": q[:, 0], "qx": q[:, 1], "qy": q[:, 2], "qz": q[:, 3],
+                "wx": w[:, 0], "wy": w[:, 1], "wz": w[:, 2], "tilt_deg": self.tilt_deg,
+                "precession_deg": self.precession_deg, "energy": self.energy}
+
+    def __repr__(self) -> str:
+        return (f"<rbi.Trajectory {self.t.size} samples over {float(self.t[-1]):g} s, "
+                f"{self.summary.get('method', '')}>")
+
+    def _summary_rows(self) -> list[tuple[str, str, str]]:
+        s = self.summary
+        final = s.get("final", {})
+        rows = [("scene", "", str(s.get("scene", ""))),
+                ("method", "", str(s.get("method", ""))),
+                ("duration, samples", "s", f"{float(self.t[-1]):g}, {self.t.size}"),
+                ("final q [w, x, y, z]", "", _vector_text(self.q[-1])),
+                ("final ω (body axes)", "rad/s", _vector_text(self.omega[-1])),
+                ("final tilt of body z", "deg", f"{float(self.tilt_deg[-1]):.6g}"),
+                ("tilt min … max", "deg", f"{np.min(self.tilt_deg):.6g} … {np.max(self.tilt_deg):.6g}")]
+        if final and "energy" in s.get("conserved", {}):
+            rows.append(("energy drift", "", f"{s['conserved']['energy']['drift']:.2g}"))
+        return rows
+
+    def __rich__(self):
+        return _rich_table(f"{self.summary.get('name') or 'trajectory'} — simulate", self._summary_rows())
+
+    def _repr_html_(self) -> str:
+        return _html_table(f"{self.summary.get('name') or 'trajectory'} — simulate", self._summary_rows())
+
+
+def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | None = None,
+             tilt_deg: float = 0.0, tilt_axis: str = "y", duration: float = 4.0, samples: int = 481,
+             gravity: float | None = None, method: str = "default", rtol: float | None = None,
+             max_steps: int | None = None, error_estimate: bool = True, check_budget: bool = True,
+             progress: Callable[[float], None] | None = None) -> Trajectory:
+    """Simulate the body: a heavy top on its pivot (a spec with ``pivot``) or a torque-free body
+    about its centre of mass — the run ``rbi simulate`` makes with the same settings.
+
+    Args:
+        body: the :class:`Body`.
+        spin: initial spin about the body z axis, rad/s (ω = [0, 0, spin]).
+        omega: initial angular velocity (3,), body axes, rad/s (instead of ``spin``).
+        tilt_deg: the body is turned at t = 0 by this angle (degrees) about the world axis
+            ``tilt_axis`` (``"x"`` or ``"y"``).
+        duration: simulated time, s.
+        samples: samples, equally spaced from t = 0 to ``duration`` (1: only the end).
+        gravity: gravity's magnitude in m/s² (SI whatever the spec's units); 0 switches it
+            off; None is 9.81.
+        method: ``"default"`` (compiled adaptive DOP853), ``"rk45"``, ``"dop853"`` (scipy) or
+            ``"exact"`` (closed forms, where they apply).
+        rtol: integrator tolerance (None: 1e-12 for default, 1e-8 for the scipy methods).
+        max_steps: most integration steps (None: rbi's default budget).
+        error_estimate: estimate the error with a second run 1000× tighter.
+        check_budget: refuse a run estimated to exceed ``max_steps`` before it starts (the
+            budget stops it in any case).
+        progress: called now and then with the fraction done (0…1).
+
+    Returns:
+        The :class:`Trajectory`.
+
+    Raises:
+        SpecError: a setting is out of range (named as the CLI's option, e.g.
+            ``--duration: ...``), or the run cannot be made (no mass, too many steps,
+            overflow).
+    """
+    from rbi.runs.prepare import prepare_run
+    from rbi.runs.settings import check_run_options, check_samples
+    from rbi.runs.simulation import simulate_run
+
+    if not isinstance(body, Body):
+        raise SpecError(f"rbi.simulate: expected a Body from rbi.load (got {type(body).__name__})")
+    check_run_options(method, spin, omega, tilt_deg, duration, tilt_axis, gravity, max_steps, rtol)
+    check_samples(samples)
+    prepared = prepare_run(body._loaded, spin=spin, omega=omega, tilt=tilt_deg, tilt_axis=tilt_axis,
+                           gravity=gravity, duration=duration, method=method, rtol=rtol, max_steps=max_steps,
+                           yes=not check_budget)
+    run = simulate_run(prepared, samples, error_estimate=error_estimate, progress=progress)
+    columns = run.columns
+    return Trajectory(t=columns["t"], q=run.trajectory.q, omega=run.trajectory.omega,
+                      tilt_deg=columns["tilt_deg"], precession_deg=columns["precession_deg"],
+                      energy=columns["energy"], summary=run.summary)
+
+
+def _vector_text(v) -> str:
+    return "[" + ", ".join(f"{float(x) + 0.0:.6g}" for x in np.asarray(v).ravel()) + "]"
+
+
+def _rich_table(title: str, rows):
+    from rich.table import Table
+    from rich.text import Text
+
+    table = Table(title=Text(title))  # Text: a name holding [brackets] is shown, not read as markup
+    table.add_column("quantity")
+    table.add_column("unit")
+    table.add_column("value", justify="right")
+    for row in rows:
+        table.add_row(*(Text(cell) for cell in row))
+    return table
+
+
+def _html_table(title: str, rows) -> str:
+    from html import escape
+
+    body = "".join(f"<tr><td>{escape(a)}</td><td>{escape(b)}</td><td style=\"text-align:right\">{escape(c)}</td></tr>"
+                   for a, b, c in rows)
+    return (f"<table><caption>{escape(title)}</caption>"
+            f"<thead><tr><th>quantity</th><th>unit</th><th>value</th></tr></thead><tbody>{body}</tbody></table>")

@@ -1,0 +1,95 @@
+"""The chapter's numbers for its spinning top (seed chapter, the values tests/test_seed_numbers.py
+checks through the CLI), read through the Python API's public names only."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+import rbi
+from tests.conftest import BODIES
+
+
+def printed(value, decimals):
+    """``approx`` at the chapter's printed rounding: half a unit in the last printed digit."""
+    return pytest.approx(value, rel=0, abs=0.5 * 10.0 ** -decimals)
+
+
+@pytest.fixture(scope="module")
+def top():
+    return rbi.load(BODIES / "top.yaml")
+
+
+@pytest.fixture(scope="module")
+def bolted():
+    return rbi.load(BODIES / "top_bolted.yaml")
+
+
+def test_mass_and_centre_of_mass(top, bolted):
+    assert top.mass == printed(0.50, 2)
+    assert list(top.center_of_mass) == [printed(0.0, 4), printed(0.0, 4), printed(0.0520, 4)]
+    assert list(bolted.center_of_mass) == [printed(0.00153846, 8), printed(0.0, 8), printed(0.05230769, 8)]
+    assert bolted.center_of_mass.shape == (3,)
+    assert top.units == {"length": "m", "mass": "kg"}
+
+
+def test_inertia_in_body_and_tilted_axes(top):
+    np.testing.assert_allclose(top.inertia() * 1e6, np.diag([262.93, 262.93, 195.2]), rtol=0, atol=0.005)
+    tilted = top.inertia(axes=[("y", 30)]) * 1e6
+    np.testing.assert_allclose(tilted, [[246.0, 0.0, -29.33], [0.0, 262.93, 0.0], [-29.33, 0.0, 212.13]],
+                               rtol=0, atol=0.005)
+    # the same turn given as the body -> world matrix
+    c, s = np.cos(np.radians(30)), np.sin(np.radians(30))
+    R = np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
+    np.testing.assert_allclose(top.inertia(axes=R) * 1e6, tilted, rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(np.linalg.eigvalsh(tilted), [195.2, 262.9333, 262.9333], rtol=0, atol=5e-5)
+
+
+def test_inertia_about_the_pivot_and_a_point(top):
+    # parallel axis theorem by hand: I_pivot = I_com + m (|d|² 1 - d dᵀ), d = CoM - pivot
+    d = top.center_of_mass - top.pivot
+    expected = top.inertia() + top.mass * (d @ d * np.eye(3) - np.outer(d, d))
+    np.testing.assert_allclose(top.inertia(about="pivot"), expected, rtol=1e-12)
+    np.testing.assert_allclose(top.inertia(about=(0.0, 0.0, 0.0)), expected, rtol=1e-12)
+    np.testing.assert_allclose(top.inertia(about="origin"), expected, rtol=1e-12)
+
+
+def test_principal_axes_are_rows_as_in_the_chapter(bolted):
+    principal = bolted.principal()
+    np.testing.assert_allclose(principal.moments * 1e6, [225.0022, 265.1311, 294.9333], rtol=0, atol=5e-5)
+    # The chapter prints the eigenvectors as the COLUMNS of a matrix; rbi gives axes as rows.
+    chapter = np.array([[-0.1552, -0.9879, 0.0], [0.0, 0.0, 1.0], [-0.9879, 0.1552, 0.0]])
+    for axis, column in zip(principal.axes, chapter.T):
+        np.testing.assert_allclose(np.sign(axis @ column) * axis, column, rtol=0, atol=5e-5)
+    # each row is an eigenvector of the inertia with its moment, and they form a right-handed frame
+    inertia = bolted.inertia()
+    for moment, axis in zip(principal.moments, principal.axes):
+        np.testing.assert_allclose(inertia @ axis, moment * axis, rtol=0, atol=1e-15)
+    assert np.linalg.det(principal.axes) == pytest.approx(1.0)
+
+
+def test_momentum_and_wobble_angle(top, bolted):
+    assert list(top.momentum([0, 0, 100]).angular_momentum) == [printed(0.0, 6), printed(0.0, 6), printed(0.01952, 6)]
+    out = bolted.momentum([0, 0, 100])
+    assert list(out.angular_momentum) == [printed(-0.000615, 6), printed(0.0, 6), printed(0.022597, 6)]
+    assert out.angle_deg == printed(1.5600, 4)
+    # kinetic energy ½ ωᵀ I ω about the CoM (turning about a fixed CoM)
+    w = np.array([0.0, 0.0, 100.0])
+    assert out.kinetic_energy == pytest.approx(0.5 * w @ bolted.inertia() @ w, rel=1e-12)
+
+
+def test_parts_add_up_to_the_body(bolted):
+    parts = bolted.parts()
+    assert [p.name for p in parts] == ["cone", "stem", "bolt"]
+    assert sum(p.mass for p in parts) == pytest.approx(bolted.mass, rel=1e-12)
+    com = sum(p.mass * p.center_of_mass for p in parts) / bolted.mass
+    np.testing.assert_allclose(com, bolted.center_of_mass, rtol=1e-12)
+    total = sum(p.inertia_about_com + p.mass * ((p.center_of_mass - com) @ (p.center_of_mass - com) * np.eye(3)
+                                               - np.outer(p.center_of_mass - com, p.center_of_mass - com))
+                for p in parts)
+    np.testing.assert_allclose(total, bolted.inertia(), rtol=1e-12, atol=1e-18)
+
+
+def test_pivot_and_warnings(top):
+    np.testing.assert_array_equal(top.pivot, [0.0, 0.0, 0.0])
+    assert top.warnings == []

@@ -1,0 +1,75 @@
+"""rbi.load takes a path, spec text, a dict or "-" (standard input); bad input raises
+rbi.SpecError whose str() is the line the CLI prints."""
+
+from __future__ import annotations
+
+import io
+import json
+import sys
+
+import numpy as np
+import pytest
+import yaml
+
+import rbi
+from tests.conftest import BODIES, run_rbi
+
+TOP = BODIES / "top.yaml"
+
+
+def same_body(a, b):
+    assert a.mass == b.mass
+    np.testing.assert_array_equal(a.center_of_mass, b.center_of_mass)
+    np.testing.assert_array_equal(a.inertia(), b.inertia())
+
+
+def test_path_text_dict_and_stdin_give_the_same_body(monkeypatch):
+    from_path = rbi.load(TOP)
+    text = TOP.read_text()
+    from_text = rbi.load(text)
+    from_dict = rbi.load(yaml.safe_load(text))
+    monkeypatch.setattr(sys, "stdin", io.StringIO(text))
+    from_stdin = rbi.load("-")
+    for body in (from_text, from_dict, from_stdin):
+        same_body(body, from_path)
+    assert from_path.path == str(TOP)
+    assert (from_text.path, from_dict.path, from_stdin.path) == ("<string>", "<dict>", "<stdin>")
+    assert rbi.load(str(TOP)).name == from_path.name
+
+
+def test_json_text_is_a_spec_too():
+    same_body(rbi.load(json.dumps(yaml.safe_load(TOP.read_text())) + "\n"), rbi.load(TOP))
+
+
+@pytest.mark.parametrize("args, make", [
+    (["nope.yaml"], lambda tmp: "nope.yaml"),
+    (["{tmp}/bad.yaml"], lambda tmp: f"{tmp}/bad.yaml"),
+    (["{tmp}/unknown.yaml"], lambda tmp: f"{tmp}/unknown.yaml"),
+])
+def test_spec_error_is_the_cli_error_line(tmp_path, args, make):
+    (tmp_path / "bad.yaml").write_text("parts: [\n")
+    (tmp_path / "unknown.yaml").write_text("parts:\n  - name: a\n    shape: sphere\n    radius: 1\n    mas: 2\n")
+    path = make(tmp_path)
+    with pytest.raises(rbi.SpecError) as caught:
+        rbi.load(path)
+    proc = run_rbi("inertia", path)
+    assert proc.returncode == 2
+    assert proc.stderr == f"rbi: {caught.value}\n"
+
+
+def test_spec_error_names_file_part_and_field_of_text():
+    text = "parts:\n  - name: cone\n    shape: cone\n    mass: 1\n    radius: -1\n    apex: [0, 0, 0]\n    base: [0, 0, 1]\n"
+    with pytest.raises(rbi.SpecError) as caught:
+        rbi.load(text)
+    message = str(caught.value)
+    assert message.startswith("<string>: ") and "cone" in message and "radius" in message
+    assert "\n" not in message
+    error = caught.value
+    assert (error.file, error.part, error.field) == ("<string>", "parts[0] (cone)", "radius")
+
+
+def test_a_dict_that_is_not_a_spec():
+    with pytest.raises(rbi.SpecError, match=r"^<dict>: "):
+        rbi.load({"parts": "nothing"})
+    with pytest.raises(rbi.SpecError):
+        rbi.load(42)

@@ -1,0 +1,64 @@
+"""rbi.simulate gives the arrays `rbi simulate --out` writes, and the summary its JSON prints."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+
+import numpy as np
+import pytest
+
+import rbi
+from tests.conftest import BODIES, run_rbi
+
+ARGS = ["--spin", "200", "--tilt", "0.01", "--duration", "0.5", "--samples", "101"]
+
+
+@pytest.fixture(scope="module")
+def run():
+    return rbi.simulate(rbi.load(BODIES / "top_bolted.yaml"), spin=200.0, tilt_deg=0.01, duration=0.5, samples=101)
+
+
+def test_arrays_equal_the_csv_of_the_cli(run, tmp_path):
+    out = tmp_path / "run.csv"
+    run_rbi("simulate", BODIES / "top_bolted.yaml", *ARGS, "--out", out, check=True)
+    rows = list(csv.DictReader(io.StringIO(out.read_text())))
+    column = {name: np.array([float(r[name]) for r in rows]) for name in rows[0]}
+    np.testing.assert_array_equal(run.t, column["t"])
+    np.testing.assert_array_equal(run.q, np.column_stack([column[c] for c in ("qw", "qx", "qy", "qz")]))
+    np.testing.assert_array_equal(run.omega, np.column_stack([column[c] for c in ("wx", "wy", "wz")]))
+    np.testing.assert_array_equal(run.tilt_deg, column["tilt_deg"])
+    assert run.to_csv() == out.read_text()
+    assert run.q.shape == (101, 4) and run.omega.shape == (101, 3)
+
+
+def test_summary_is_what_the_cli_prints(run):
+    printed = json.loads(run_rbi("simulate", BODIES / "top_bolted.yaml", *ARGS, "--format", "json", check=True).stdout)
+    summary = json.loads(json.dumps(run.summary, default=lambda v: v.tolist()))
+    assert list(summary) == list(printed)
+    for key in ("final", "conserved", "stability", "initial", "steps", "tilt_max_deg", "error_estimate"):
+        assert summary[key] == printed[key], key
+
+
+def test_the_motion_obeys_its_invariants(run):
+    # unit quaternions, and the energy of a top on a fixed pivot conserved
+    np.testing.assert_allclose(np.linalg.norm(run.q, axis=1), 1.0, rtol=0, atol=1e-12)
+    assert np.ptp(run.energy) < 1e-9 * np.max(np.abs(run.energy))
+    assert run.t[0] == 0.0 and run.t[-1] == 0.5
+
+
+@pytest.mark.parametrize("settings, option", [
+    ({"duration": -1.0}, "--duration"), ({"spin": 1.0, "omega": [0, 0, 1]}, "--spin and --omega"),
+    ({"samples": 0}, "--samples"), ({"tilt_axis": "z"}, "--tilt-axis"), ({"method": "euler"}, "--method"),
+])
+def test_bad_settings_raise_the_cli_error_line(settings, option):
+    body = rbi.load(BODIES / "top_bolted.yaml")
+    with pytest.raises(rbi.SpecError) as caught:
+        rbi.simulate(body, **settings)
+    assert str(caught.value).startswith(option)
+    cli = {"duration": ["--duration", "-1"], "spin": ["--spin", "1", "--omega", "0,0,1"], "samples": ["--samples", "0"],
+           "tilt_axis": ["--tilt-axis", "z"], "method": ["--method", "euler"]}[next(iter(settings))]
+    proc = run_rbi("simulate", BODIES / "top_bolted.yaml", *cli)
+    assert proc.returncode == 2
+    assert proc.stderr.replace("-1.0", "-1") == f"rbi: {caught.value}\n".replace("-1.0", "-1")
