@@ -1,10 +1,10 @@
-"""rbi.cli.bench_report.targets: each target's ratio, limit and verdict from the sections'
+"""rbi.bench.report.targets: each target's ratio, limit and verdict from the sections'
 measurements (synthetic numbers: no timing here)."""
 
 from __future__ import annotations
 
 from rbi.bench import sweep
-from rbi.cli.bench_report import target_rows, targets
+from rbi.bench.report import target_rows, targets
 
 
 def _kernel(chapter=3.0, default=0.001, minimal=0.0009, best=0.0004):

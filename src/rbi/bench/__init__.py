@@ -16,7 +16,7 @@ Sections (each a module with ``run(quick, progress)`` returning plain data and
 - :mod:`rbi.bench.sweep`: ``rbi sweep`` throughput against the single-run rate and a loop of
   processes, and its memory while streaming.
 
-:mod:`rbi.cli.bench_report` renders the results (a targets table first, rich tables, Markdown
+:mod:`rbi.bench.report` turns the results into a report (a targets table first, the tables, Markdown
 for docs/performance.md, a log–log plot). Times are wall-clock seconds on a possibly busy
 machine: the reports lead with ratios measured in the same run.
 """

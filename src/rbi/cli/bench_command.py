@@ -15,20 +15,21 @@ from rbi.spec.errors import InputError
 SECTION_NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep")
 
 
-def bench(
-    quick: Annotated[bool, typer.Option("--quick", help="A CI-sized run of a few seconds: shorter cases, fewer "
-                                                        "tolerances and sizes, fewer repeats.")] = False,
-    only: Annotated[Optional[str], typer.Option(
-        "--only", metavar="SECTIONS",
-        help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
-             "sweep (default: all).")] = None,
-    plot: Annotated[Optional[str], typer.Option(
-        "--plot", metavar="FILE.png", help="Write a log–log plot of error against time, .png, .svg or .pdf (needs matplotlib: "
-                                 "pip install '.[plot]' from rbi's source folder).")] = None,
-    write_docs: Annotated[Optional[str], typer.Option(
-        "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md).")] = None,
-    format: FormatOption = OutputFormat.table,
-) -> None:
+QuickOption = Annotated[bool, typer.Option("--quick", help="A CI-sized run of a few seconds: shorter cases, fewer "
+                                                           "tolerances and sizes, fewer repeats.")]
+OnlyOption = Annotated[Optional[str], typer.Option(
+    "--only", metavar="SECTIONS",
+    help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
+         "sweep (default: all).")]
+PlotOption = Annotated[Optional[str], typer.Option(
+    "--plot", metavar="FILE.png", help="Write a log–log plot of error against time, .png, .svg or .pdf (needs matplotlib: "
+                             "pip install '.[plot]' from rbi's source folder).")]
+WriteDocsOption = Annotated[Optional[str], typer.Option(
+    "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md).")]
+
+
+def bench(quick: QuickOption = False, only: OnlyOption = None, plot: PlotOption = None,
+          write_docs: WriteDocsOption = None, format: FormatOption = OutputFormat.table) -> None:
     """Measure what accuracy costs and how fast rbi is, each target against its baseline measured in
     the same run: the kernel against the chapter's set-up and a minimal loop, error against time
     for each integrator, mass properties of 10³…10⁶ point masses, large specs against a bare YAML
@@ -39,8 +40,7 @@ def bench(
       rbi bench --quick
       rbi bench --write-docs docs/performance.md --plot docs/performance-workprecision.png
     """
-    from rbi.bench import suite
-    from rbi.cli import bench_report
+    from rbi.bench import report, suite
     from rbi.cli.render import emit
 
     sections = _sections(only)
@@ -64,8 +64,8 @@ def bench(
     with _progress(format, suite.planned_steps(quick, sections)) as step:
         result = suite.run(quick, sections, step)
     result["command"] = command
-    result["targets"] = bench_report.targets(result)
-    result["headline"] = bench_report.headline(result)
+    result["targets"] = report.targets(result)
+    result["headline"] = report.headline(result)
 
     if plot:
         from rbi.bench.workprecision import plot as draw
@@ -75,9 +75,9 @@ def bench(
         link = None
         if plot:
             link = _relative_link(Path(plot), Path(write_docs))
-        write_output(docs_target, bench_report.markdown(result, command, link))
+        write_output(docs_target, report.markdown(result, command, link))
         print(f"rbi: wrote {write_docs}", file=sys.stderr)
-    emit(format.value, result, lambda: bench_report.tables(result), csv_rows=bench_report.csv_rows(result))
+    emit(format.value, result, lambda: _tables(result), csv_rows=report.csv_rows(result))
 
 
 def _sections(only: str | None) -> list[str]:
@@ -137,3 +137,28 @@ def _progress(format: OutputFormat, total: int):
             progress.update(task, description=label)
 
         yield step
+
+
+def _tables(result: dict):
+    """The report's blocks (:func:`rbi.bench.report.sections`) as rich tables and text."""
+    from rich import box
+    from rich.console import Group
+    from rich.table import Table
+    from rich.text import Text
+
+    from rbi.bench.report import sections
+    from rbi.cli.tables import unit_header
+
+    parts = []
+    for section in sections(result):
+        if "text" in section:
+            parts.append(Text(section["text"], style="dim" if section["dim"] else ""))
+            continue
+        table = Table(title=section["title"], box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+        for header, justify, no_wrap in section["columns"]:
+            table.add_column(unit_header(*header) if isinstance(header, tuple) else header, justify=justify,
+                             no_wrap=no_wrap)
+        for row in section["rows"]:
+            table.add_row(*row)
+        parts.append(table)
+    return Group(*parts)

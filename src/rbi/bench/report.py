@@ -1,12 +1,19 @@
-"""Rendering ``rbi bench`` results: rich tables for people, Markdown for docs/performance.md,
-CSV rows for spreadsheets. Numbers are formatted here (with :func:`rbi.cli.render.number`);
-the measurements themselves come from :mod:`rbi.bench`."""
+"""The report of ``rbi bench``: the targets each measured against its baseline, the headline,
+the rows of every table, Markdown for docs/performance.md and CSV rows for spreadsheets (the
+CLI draws the same rows as terminal tables). The measurements themselves come from the other
+modules of :mod:`rbi.bench`."""
 
 from __future__ import annotations
 
-from typing import Any
+import math
 
-from rbi.cli.render import number
+
+def number(value: float | None, digits: int = 6) -> str:
+    """A figure in a report: ``digits`` significant figures; ``—`` for none, ``0`` for zero."""
+    if value is None:
+        return "—"
+    value = float(value)
+    return "0" if value == 0.0 else (f"{value:.{digits}g}" if math.isfinite(value) else str(value))
 
 METHOD_NAMES = {
     "default": "rbi",
@@ -179,68 +186,41 @@ def _share(row: dict, key: str) -> str:
     return f"{100 * row[key] / row['load_total_s']:.0f}%"
 
 
-# --- rich tables -----------------------------------------------------------------------------
+def sections(result: dict) -> list[dict]:
+    """The report as a list of blocks for a terminal, in the order of docs/performance.md: each
+    ``{"title", "columns": [(header, justify, no_wrap)], "rows"}`` (header a string or a
+    ``(quantity, unit)`` pair) or ``{"text", "dim"}``."""
+    def block(title, columns, rows, justify=lambda header: "right", no_wrap=lambda header: False):
+        return {"title": title, "columns": [(h, justify(h), no_wrap(h)) for h in columns], "rows": rows}
 
-def tables(result: dict):
-    from rich import box
-    from rich.console import Group
-    from rich.table import Table
-    from rich.text import Text
-
-    from rbi.cli.tables import unit_header
-
-    def table(title):
-        return Table(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
-
-    parts: list[Any] = [Text(machine_line(result), style="dim")]
+    out = [{"text": machine_line(result), "dim": True}]
     if result.get("targets"):
-        t = table("Targets, each against its baseline measured in this run")
-        for header in TARGET_COLUMNS:
-            t.add_column(header, justify="right" if header in ("measured", "limit") else "left",
-                         no_wrap=header in ("measured", "limit", "met"))
-        for row in target_rows(result["targets"]):
-            t.add_row(*row)
-        parts.append(t)
+        out.append(block("Targets, each against its baseline measured in this run", TARGET_COLUMNS,
+                         target_rows(result["targets"]), lambda h: "right" if h in ("measured", "limit") else "left",
+                         lambda h: h in ("measured", "limit", "met")))
     for case in result.get("workprecision", {}).get("cases", []):
-        t = table(f"Work-precision: {case['name']} ({case['spec']}, ω₀ = {_vector(case['omega0'])} rad/s, "
-                  f"{case['duration']:g} s) — reference: {reference_text(case)}")
-        for header, justify in WORK_COLUMNS:
-            t.add_column(unit_header(*header) if isinstance(header, tuple) else header, justify=justify,
-                         no_wrap=header == "method")
-        for row in work_rows(case):
-            t.add_row(*row)
-        parts.append(t)
+        justify = dict(WORK_COLUMNS)
+        out.append(block(f"Work-precision: {case['name']} ({case['spec']}, ω₀ = {vector_text(case['omega0'])} rad/s, "
+                         f"{case['duration']:g} s) — reference: {reference_text(case)}", list(justify),
+                         work_rows(case), justify.get, lambda h: h == "method"))
     if result.get("workprecision"):
-        parts.append(Text(METHOD_NOTE, style="dim"))
+        out.append({"text": METHOD_NOTE, "dim": True})
     tp = result.get("throughput")
     if tp:
-        t = table(f"Mass properties of point clouds (time grows as size^{number(tp['scaling_exponent'], 3)})")
-        for header in CLOUD_COLUMNS:
-            t.add_column(header, justify="right")
-        for row in cloud_rows(tp):
-            t.add_row(*row)
-        parts.append(t)
-        t = table("Specs of many solid parts, written in YAML")
-        for header in PARTS_COLUMNS:
-            t.add_column(header, justify="right")
-        for row in parts_rows(tp):
-            t.add_row(*row)
-        parts.append(t)
+        out.append(block(f"Mass properties of point clouds (time grows as size^{number(tp['scaling_exponent'], 3)})",
+                         CLOUD_COLUMNS, cloud_rows(tp)))
+        out.append(block("Specs of many solid parts, written in YAML", PARTS_COLUMNS, parts_rows(tp)))
     lat = result.get("latency")
     if lat:
-        t = table(f"Whole-process latency (median of repeated runs) against {lat['baseline']}")
-        for header in LATENCY_COLUMNS:
-            t.add_column(header, justify="left" if header == "command" else "right")
-        for row in latency_rows(lat):
-            t.add_row(*row)
-        parts.append(t)
+        out.append(block(f"Whole-process latency (median of repeated runs) against {lat['baseline']}", LATENCY_COLUMNS,
+                         latency_rows(lat), lambda h: "left" if h == "command" else "right"))
     lines = headline(result)
     if lines:
-        parts.append(Text("\n".join("• " + line for line in lines)))
-    return Group(*parts)
+        out.append({"text": "\n".join("• " + line for line in lines), "dim": False})
+    return out
 
 
-def _vector(v) -> str:
+def vector_text(v) -> str:
     return "(" + ", ".join(number(x, 6) for x in v) + ")"
 
 
@@ -378,7 +358,7 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
                 "scipy `solve_ivp` RK45 at rtol 1e-8, atol 1e-10 with a Python right-hand side "
                 "(`--method rk45`); the last column is its time divided by each row's. " + METHOD_NOTE]
         for case in wp["cases"]:
-            out += ["", f"### {case['name']}: `{case['spec']}`, ω₀ = {_vector(case['omega0'])} rad/s, "
+            out += ["", f"### {case['name']}: `{case['spec']}`, ω₀ = {vector_text(case['omega0'])} rad/s, "
                         f"tilt {case['tilt_deg']:g}°, {case['duration']:g} s, {case['samples']} samples", "",
                     f"Reference: {reference_text(case)}. Loading the compiled kernel cost "
                     f"{number(case['kernel_load_seconds'], 3)} s once in this process (not in any time below).", ""]
@@ -418,7 +398,7 @@ def _kernel_markdown(k: dict | None) -> list[str]:
              "yes" if t["no_worse"] else "no", "—" if t["seconds"] is None else number(t["seconds"], 3),
              "—" if t["seconds"] is None else _times(k["chapter"]["seconds"] / t["seconds"])] for t in k["trials"]]
     return ["", "## The kernel against its baselines", "",
-            f"`{k['case']['spec']}`, ω₀ = {_vector(k['case']['omega0'])} rad/s, {k['case']['duration']:g} s, "
+            f"`{k['case']['spec']}`, ω₀ = {vector_text(k['case']['omega0'])} rad/s, {k['case']['duration']:g} s, "
             f"{k['case']['samples']} samples, in this process with the compiled kernel loaded. The chapter's set-up "
             f"took {number(k['chapter']['seconds'], 3)} s ({k['chapter']['steps']:,} steps, final orientation error "
             f"{_sci(k['chapter']['orientation_error_deg'])}°); `simulate` at its defaults (rtol "
