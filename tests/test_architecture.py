@@ -111,3 +111,15 @@ def test_the_api_is_below_the_cli():
     hits = sorted(m for m in imported_modules(SRC / "api.py")
                   if any(m == f or m.startswith(f + ".") for f in ("rbi.cli", "typer", "click")))
     assert hits == []
+
+
+def test_the_file_writer_stands_below_every_layer_that_writes():
+    """rbi.files (the one checked writer of every file rbi creates) needs only rbi.errors, so the
+    sweep store, the API and the CLI can all write through it."""
+    forbidden = ("rbi.spec", "rbi.cli", "rbi.core", "rbi.sim", "rbi.sweep", "rbi.formats", "rbi.viz", "rbi.bench",
+                 "rbi.api", "pydantic", "typer", "rich", "yaml", "click", "numpy")
+    assert offending("files", forbidden) == {}
+
+
+def test_the_sweep_package_never_reaches_up_into_the_cli():
+    assert offending("sweep", ("rbi.cli", "typer", "rich", "click")) == {}

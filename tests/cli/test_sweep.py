@@ -160,8 +160,8 @@ def test_interrupted_sweep_keeps_finished_runs_and_resume_completes_it(tmp_path,
     assert proc.returncode == 130 and "--resume" in proc.stderr
     kept = rows_of(out)
     assert 0 < len(kept) < 40 and [int(r["run"]) for r in kept] == list(range(len(kept)))
-    with open(out, "a") as handle:  # what a kill in the middle of a write leaves
-        handle.write("99,150.0,0.0,1.2")
+    with open(out, "a") as handle:  # what a kill in the middle of a write leaves: part of the next row
+        handle.write(f"{len(kept)},150.0,0.0,1.2")
     monkeypatch.setattr(runs, "run_chunk", real)
     proc = rbi("sweep", *args, "--out", out, "--resume")
     assert proc.returncode == 0, proc.stderr
@@ -172,7 +172,7 @@ def test_resume_with_other_settings_is_refused(tmp_path, monkeypatch):
     out = tmp_path / "s.csv"
     from rbi.sweep import store
 
-    store.write_settings(out, {"spin": "elsewhere"})
+    store.settings_path(out).write_text(json.dumps({"spin": "elsewhere"}))
     out.write_text("run\n")
     proc = rbi("sweep", BOLTED, "--spin", "150:250:4", "--out", out, "--resume")
     assert proc.returncode == 2 and "other settings" in proc.stderr
@@ -188,7 +188,7 @@ def test_sigterm_keeps_the_finished_rows_and_resume_finishes(tmp_path):
         time.sleep(0.05)
     proc.send_signal(signal.SIGTERM)
     _, err = proc.communicate(timeout=60)
-    assert proc.returncode == 130 and "interrupted" in err, err
+    assert proc.returncode == 143 and "terminated" in err and len(err.strip().splitlines()) == 1, err
     kept = rows_of(out)
     assert 2 <= len(kept) < 3000 and [int(r["run"]) for r in kept] == list(range(len(kept)))
     finished = subprocess.run(args + ["--resume"],

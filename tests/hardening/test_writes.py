@@ -93,7 +93,7 @@ def test_a_full_disk_is_one_line_exit_2_and_nothing_is_left(tmp_path, monkeypatc
     to fail instead)."""
     import builtins
 
-    import rbi.cli.output as output
+    import rbi.files.output as output
 
     real_open = builtins.open
 

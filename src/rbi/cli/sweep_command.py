@@ -4,7 +4,6 @@ or, with --mass-properties, the spread of the mass properties alone."""
 from __future__ import annotations
 
 import hashlib
-import signal
 import sys
 from pathlib import Path
 from typing import Annotated, Optional
@@ -252,95 +251,55 @@ def _execute(job, columns, compute, chunk, out_target, resume, workers, dask, fo
     plan = job.plan
     keep_in_memory = plan.size <= MAX_ROWS_SHOWN
     rows: list | None = [] if keep_in_memory else None
-    writer = None
+    output = None
     start = 0
     if out_target is not None:
-        path = Path(out_target.path)
-        settings = _settings(job, file, spin, tilt, vary, mass_properties)
-        if resume and path.exists():
-            store.check_settings(path, settings, resume=True)
-            kept = store.kept_rows(path, columns, out_target.format)
-            start = len(kept)
-            if rows is not None:
-                rows.extend(_typed(columns, r) for r in kept)
-            writer = store.RowWriter(path, columns, out_target.format, kept_rows=kept if
-                                     out_target.format == "parquet" else None)
-        else:
-            if resume:
-                raise InputError(f"{out}: cannot resume: the file does not exist")
-            _fresh(path)
-            store.write_settings(path, settings)
-            writer = store.RowWriter(path, columns, out_target.format)
+        output = store.SweepOutput(out_target, columns, plan, _settings(job, file, spin, tilt, vary, mass_properties))
+        kept = output.open(resume, keep=keep_in_memory)
+        start = output.done
+        if rows is not None:
+            rows.extend(kept)
     progress = _Progress(plan.size, start) if sys.stderr.isatty() else None
     done = [start]
 
     def on_rows(new_rows):
-        if writer is not None:
-            writer.write(new_rows)
+        if output is not None:
+            output.write(new_rows)
         if rows is not None:
             rows.extend(new_rows)
         done[0] += len(new_rows)
         if progress is not None:
             progress.update(done[0])
 
-    previous = signal.signal(signal.SIGTERM, _terminate)
+    from rbi.cli.terminal import Terminated, say
+
     try:
         ranges = chunk_ranges(start, plan.size, chunk)
         if dask is not None:
             run_dask(compute, ranges, dask, on_rows, workers)
         else:
             run_local(compute, ranges, workers or available_cores(), on_rows)
-    except KeyboardInterrupt:
-        if writer is not None:
-            writer.close()
-            writer = None
-            print(f"rbi: interrupted: {done[0]:,} of {plan.size:,} runs kept in {out}; run the same command with "
-                  "--resume to compute the rest", file=sys.stderr)
-            raise SystemExit(130) from None
-        raise
-    finally:
-        signal.signal(signal.SIGTERM, previous)
+    except (KeyboardInterrupt, Terminated) as stop:
+        if output is None:
+            raise
+        output.close()
         if progress is not None:
             progress.close()
-        if writer is not None:
-            writer.close()
-    if out_target is not None:
-        store.remove_settings(Path(out_target.path))
+            progress = None
+        word, code = ("terminated", 143) if isinstance(stop, Terminated) else ("interrupted", 130)
+        say(f"{word}: {output.done:,} of {plan.size:,} runs kept in {out}; run the same command with --resume "
+            "to compute the rest")
+        raise SystemExit(code) from None
+    except BaseException:
+        if output is not None:
+            output.close()  # a failed write has said how many runs are kept
+        raise
+    finally:
+        if progress is not None:
+            progress.close()
+    if output is not None:
+        output.finish()
     return rows, done[0]
-
-
-def _fresh(path: Path) -> None:
-    """Start --out empty (it was checked to be a regular file or absent)."""
-    from rbi.sweep import store
-
-    try:
-        if path.exists():
-            path.unlink()
-        temporary = path.with_name(f".{path.name}.rbi-partial")
-        if temporary.exists():
-            temporary.unlink()
-        store.remove_settings(path)
-    except OSError as exc:
-        raise InputError(f"{path}: cannot write: {exc.strerror or exc}") from None
-
-
-def _terminate(signum, frame):
-    raise KeyboardInterrupt
-
-
-def _typed(columns, row):
-    """A row read back from CSV, with numbers as numbers."""
-    out = []
-    for name, cell in zip(columns, row):
-        if name == "status" or not isinstance(cell, str):
-            out.append(cell)
-        elif cell == "":
-            out.append(None)
-        elif name in ("run", "steps"):
-            out.append(int(cell))
-        else:
-            out.append(float(cell))
-    return out
 
 
 class _Progress:

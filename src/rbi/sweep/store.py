@@ -1,16 +1,27 @@
-"""Sweep rows on disk: streamed as runs finish, in run order, resumable.
+"""Sweep rows on disk: streamed as runs finish, in run order, resumable, one writer at a time.
 
-The rows file always holds runs ``0 .. k-1`` complete (a row is written whole and flushed with
-its chunk), so an interrupted sweep keeps every finished run and ``--resume`` starts at run
-``k``. A small settings file beside it (``.NAME.rbi-sweep.json``) records what the rows are of
-(spec content, options, columns); a resume with other settings is refused, and the settings
-file is removed once the sweep is complete.
+Beside an output ``F`` (every name made by :func:`rbi.files.safe.beside`, shortened with a hash
+when ``F``'s name is long):
 
-CSV: floats written with Python's shortest round-trip repr (no digits lost); empty cells for
-undefined values. A text cell that a spreadsheet would run as a formula (starting with ``=``,
-``+``, ``-``, ``@``, tab or carriage return) is prefixed with ``'``. Parquet (``pyarrow``,
-optional): one row group per chunk; the footer is written when the sweep ends or is
-interrupted, and a resume rewrites the file with the kept rows first.
+- ``.F.rbi-lock``: held (``fcntl``) while a run writes ``F``; a second run on ``F`` is exit 2.
+- ``.F.rbi-sweep.json``: what the rows are of (spec content, options, format, columns). It
+  exists while the sweep is unfinished; ``--resume`` is refused without it or when it differs.
+- CSV: the rows stream into ``F`` itself, whole chunks at a time; ``F`` always holds runs
+  ``0 .. k-1`` complete (a write that fails, a full disk included, is cut back to the last
+  whole chunk; a kill in the middle of a write leaves at most a partial last line, which
+  ``--resume`` drops after it has checked every whole row).
+- Parquet: each finished chunk is one complete Parquet file in the private folder
+  ``.F.rbi-rows/`` (named by its first run), so a kill or a full disk loses no finished run;
+  ``F`` itself is written from them, atomically, when the sweep completes, and the folder goes.
+
+``--resume`` first checks everything (the settings, every kept row: its run number, the swept
+values this sweep gives that run, finite numbers of the right type, no row past the grid) and
+changes nothing until all of it holds: a file that is not this sweep's is exit 2 and stays
+byte-identical.
+
+CSV cells: floats written with Python's shortest round-trip repr (no digits lost); empty cells
+for undefined values. A text cell that a spreadsheet would run as a formula (starting with
+``=``, ``+``, ``-``, ``@``, tab or carriage return) is prefixed with ``'``.
 """
 
 from __future__ import annotations
@@ -18,17 +29,35 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 import os
 from pathlib import Path
-from typing import Any
+from typing import Any, Iterable
 
-from rbi.spec.errors import InputError
+from rbi.errors import InputError
+from rbi.files import safe
 
 FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+SETTINGS_SUFFIX = ".rbi-sweep.json"
+ROWS_SUFFIX = ".rbi-rows"
+SETTINGS_LIMIT = 1 << 20
+"""Largest settings sidecar rbi reads, in bytes (it writes a few hundred)."""
+PIECE_LIMIT = 256 << 20
+"""Largest Parquet chunk file rbi reads back on --resume, in bytes."""
+INT_COLUMNS = ("run", "steps")
+TEXT_COLUMNS = ("status",)
+OPTIONAL_WHEN_OK = ("precession_rate_deg_s",)
+"""Result columns that may be empty in an ok row (the precession rate of an axis that stood
+vertical)."""
+_CHECK_BATCH = 4096
 
 
-def settings_path(out: Path) -> Path:
-    return out.with_name(f".{out.name}.rbi-sweep.json")
+def settings_path(out: str | os.PathLike) -> Path:
+    return safe.beside(out, SETTINGS_SUFFIX)
+
+
+def rows_folder(out: str | os.PathLike) -> Path:
+    return safe.beside(out, ROWS_SUFFIX)
 
 
 def csv_cell(value: Any) -> Any:
@@ -40,53 +69,383 @@ def csv_cell(value: Any) -> Any:
     return value
 
 
-class RowWriter:
-    """Appends rows to ``path`` (CSV or Parquet), creating it with a header when new."""
+def csv_bytes(rows: Iterable[list[Any]]) -> bytes:
+    buffer = io.StringIO()
+    csv.writer(buffer, lineterminator="\n").writerows([csv_cell(v) for v in row] for row in rows)
+    return buffer.getvalue().encode("utf-8")
 
-    def __init__(self, path: Path, columns: list[str], format: str, kept_rows: list[list[Any]] | None = None):
-        self.path = Path(path)
-        self.columns = columns
-        self.format = format
-        self._parquet = None
-        if format == "csv":
-            new = not self.path.exists() or self.path.stat().st_size == 0
-            self._file = open(self.path, "a", newline="", encoding="utf-8")
-            self._csv = csv.writer(self._file, lineterminator="\n")
-            if new:
-                self._csv.writerow(columns)
-                self._file.flush()
+
+class SweepOutput:
+    """The ``--out`` file of one sweep and the files beside it.
+
+    target: the checked output (:func:`rbi.files.output.output_target`); columns: the row
+    columns; plan: the sweep's :class:`~rbi.sweep.plan.Plan` (to check kept rows); settings:
+    what makes two sweeps the same (compared on resume). :meth:`open` takes the lock and
+    starts or resumes; :meth:`write` adds rows; :meth:`finish` completes the output and
+    removes the files beside it; :meth:`close` stops writing and keeps what is there.
+    """
+
+    def __init__(self, target, columns: list[str], plan, settings: dict[str, Any]) -> None:
+        self.target = target
+        self.path = Path(target.path)
+        self.format = target.format
+        self.columns = list(columns)
+        self.plan = plan
+        self.settings = json.loads(json.dumps({**settings, "format": self.format, "columns": self.columns}))
+        self.done = 0
+        self._lock = None
+        self._fd = -1
+        self._size = 0
+        self._label = f"{target.option}: {safe.shown(target.given)}"
+
+    # --- starting -------------------------------------------------------------------------
+
+    def open(self, resume: bool, keep: bool) -> list[list[Any]]:
+        """Lock the output and start it empty, or (``resume``) check what is there and continue
+        after it. Returns the kept rows (typed) when ``keep``, else []."""
+        from rbi.files.lock import OutputLock
+
+        self._lock = OutputLock(self.path, self._label)
+        try:
+            side = settings_path(self.path)
+            safe.existing_regular(side, f"{self._label}: settings file {safe.shown(side.name)}")
+            safe.existing_private_folder(rows_folder(self.path), self._folder_label())
+            if resume:
+                return self._resume(keep)
+            self._start()
+            return []
+        except BaseException:
+            self.close()
+            raise
+
+    def _start(self) -> None:
+        side = settings_path(self.path)
+        safe.remove(side)
+        safe.remove_private_folder(rows_folder(self.path))
+        safe.replace_small(side, json.dumps(self.settings, sort_keys=True).encode(),
+                           f"{self._label}: settings file {safe.shown(side.name)}")
+        if self.format == "csv":
+            mode = None
+            if safe.existing_regular(self.path, self._label):
+                mode = os.stat(self.path).st_mode & 0o7777
+                safe.remove(self.path)
+            self._fd = safe.create_exclusive(self.path, self._label)
+            if mode is not None:
+                os.fchmod(self._fd, mode)
+            self._append(csv_bytes([self.columns]))
         else:
-            import pyarrow.parquet as pq
+            safe.make_private_folder(rows_folder(self.path), self._folder_label())
 
-            self._schema = _arrow_schema(columns)
-            self._temporary = self.path.with_name(f".{self.path.name}.rbi-partial")
-            self._parquet = pq.ParquetWriter(self._temporary, self._schema)
-            if kept_rows:
-                self._write_parquet(kept_rows)
+    def _resume(self, keep: bool) -> list[list[Any]]:
+        side = settings_path(self.path)
+        side_label = f"{self._label}: cannot resume: settings file {safe.shown(side.name)}"
+        if not safe.existing_regular(side, side_label):
+            raise InputError(f"{self._label}: cannot resume: no unfinished sweep there (the settings file "
+                             f"{safe.shown(side.name)} is missing: the sweep finished, or the file was not written "
+                             "by rbi sweep)")
+        try:
+            recorded = json.loads(safe.read_capped(side, SETTINGS_LIMIT, side_label).decode("utf-8"))
+        except (UnicodeDecodeError, ValueError, RecursionError):
+            raise InputError(f"{side_label}: is not a settings file rbi wrote") from None
+        if recorded != self.settings:
+            changed = sorted(k for k in set(recorded if isinstance(recorded, dict) else {}) | set(self.settings)
+                             if not isinstance(recorded, dict) or recorded.get(k) != self.settings.get(k))
+            raise InputError(f"{self._label}: cannot resume: the sweep there was made with other settings "
+                             f"({', '.join(changed[:6]) or 'all'} differ)")
+        if self.format == "csv":
+            return self._resume_csv(keep)
+        return self._resume_parquet(keep)
+
+    def _resume_csv(self, keep: bool) -> list[list[Any]]:
+        what = f"{self._label}: cannot resume"
+        fd = safe.open_regular(self.path, what, os.O_RDWR)
+        try:
+            checker = RowCheck(self.columns, self.plan, what)
+            kept: list[list[Any]] = []
+            good_end = 0
+            with os.fdopen(os.dup(fd), "rb") as handle:
+                header = handle.readline()
+                if header == b"":  # killed between creating the file and writing its header
+                    self._fd, fd = fd, -1
+                    self._append(csv_bytes([self.columns]))
+                    return []
+                if not header.endswith(b"\n") or _csv_line(header, what, 1) != self.columns:
+                    raise InputError(f"{what}: its columns are not those of this sweep "
+                                     f"(expected {','.join(self.columns)[:200]})")
+                good_end = len(header)
+                fragment = b""
+                batch: list[list[str]] = []
+                line_number = 1
+                for line in handle:
+                    if not line.endswith(b"\n"):
+                        fragment = line
+                        break
+                    line_number += 1
+                    batch.append(_csv_line(line, what, line_number))
+                    good_end += len(line)
+                    if len(batch) >= _CHECK_BATCH:
+                        kept.extend(checker.check(batch, text=True, keep=keep))
+                        batch = []
+                kept.extend(checker.check(batch, text=True, keep=keep))
+            if fragment:
+                checker.check_fragment(fragment)
+            self.done = checker.count
+            if fragment:
+                os.ftruncate(fd, good_end)  # a partial last line (a kill during a write): every whole row checked
+            self._fd, fd = fd, -1
+            self._size = good_end
+            os.lseek(self._fd, good_end, os.SEEK_SET)
+            return kept
+        except OSError as exc:
+            raise InputError(f"{what}: cannot read: {safe.reason(exc)}") from None
+        finally:
+            if fd >= 0:
+                os.close(fd)
+
+    def _resume_parquet(self, keep: bool) -> list[list[Any]]:
+        folder = rows_folder(self.path)
+        what = f"{self._label}: cannot resume"
+        if not safe.existing_private_folder(folder, self._folder_label()):
+            raise InputError(f"{what}: the folder of finished runs {safe.shown(folder.name)} is missing")
+        checker = RowCheck(self.columns, self.plan, what)
+        kept: list[list[Any]] = []
+        schema = _arrow_schema(self.columns)
+        for name in sorted(os.listdir(folder)):
+            piece = folder / name
+            if name.startswith(".rbi-"):
+                safe.remove(piece)  # a chunk file whose write never finished
+                continue
+            if not (name.endswith(".parquet") and name[:-8].isdigit() and len(name) == 20):
+                raise InputError(f"{what}: {safe.shown(folder.name)} holds {safe.shown(name)[:80]}, a file rbi "
+                                 "did not write")
+            label = f"{what}: {safe.shown(folder.name)}/{name}"
+            if int(name[:-8]) != checker.count:
+                raise InputError(f"{label}: does not start at run {checker.count}")
+            table = _read_piece(piece, label)
+            if table.schema != schema:
+                raise InputError(f"{label}: its columns are not those of this sweep")
+            rows = [[row[c] for c in self.columns] for row in table.to_pylist()]
+            kept.extend(checker.check(rows, text=False, keep=keep))
+        self.done = checker.count
+        return kept
+
+    def _folder_label(self) -> str:
+        return f"{self._label}: folder {safe.shown(rows_folder(self.path).name)}"
+
+    # --- writing --------------------------------------------------------------------------
 
     def write(self, rows: list[list[Any]]) -> None:
+        """Add finished rows (the next runs, in order). A failed write leaves the output as it
+        was before it (InputError saying how many runs are kept)."""
         if not rows:
             return
-        if self.format == "csv":
-            self._csv.writerows([csv_cell(v) for v in row] for row in rows)
-            self._file.flush()
-            os.fsync(self._file.fileno())
-        else:
-            self._write_parquet(rows)
+        rows = [[None if isinstance(v, float) and v != v else v for v in row] for row in rows]  # NaN: empty
+        try:
+            if self.format == "csv":
+                self._append(csv_bytes(rows))
+            else:
+                self._write_piece(rows)
+        except OSError as exc:
+            raise InputError(f"{self._label}: cannot write: {safe.reason(exc)}; {self.done:,} of {self.plan.size:,} "
+                             "runs are kept: make room and run the same command with --resume") from None
+        self.done += len(rows)
 
-    def _write_parquet(self, rows):
+    def _append(self, data: bytes) -> None:
+        try:
+            safe.write_all(self._fd, data)
+            os.fsync(self._fd)
+        except BaseException:
+            try:  # never leave part of a chunk: cut back to the last whole one
+                os.ftruncate(self._fd, self._size)
+                os.lseek(self._fd, self._size, os.SEEK_SET)
+            except OSError:
+                pass
+            raise
+        self._size += len(data)
+
+    def _write_piece(self, rows: list[list[Any]]) -> None:
+        import tempfile
+
         import pyarrow as pa
+        import pyarrow.parquet as pq
 
-        table = pa.Table.from_pylist([dict(zip(self.columns, row)) for row in rows], schema=self._schema)
-        self._parquet.write_table(table)
+        folder = rows_folder(self.path)
+        table = pa.Table.from_pylist([dict(zip(self.columns, row)) for row in rows], schema=_arrow_schema(self.columns))
+        fd, temporary = tempfile.mkstemp(prefix=".rbi-", suffix=".parquet", dir=folder)
+        try:
+            with os.fdopen(fd, "wb") as handle:
+                pq.write_table(table, handle)
+                handle.flush()
+                os.fsync(handle.fileno())
+            os.replace(temporary, folder / f"{int(rows[0][0]):012d}.parquet")
+        except BaseException:
+            safe.remove(temporary)
+            raise
+
+    # --- ending ---------------------------------------------------------------------------
+
+    def finish(self) -> None:
+        """The sweep is complete: the output gets its last form, the files beside it go."""
+        try:
+            if self.format == "parquet":
+                try:
+                    self._combine()
+                except InputError as exc:
+                    raise InputError(f"{exc}; all {self.done:,} runs are kept: make room and run the same command "
+                                     "with --resume") from None
+            elif self._fd >= 0:
+                os.fsync(self._fd)
+            safe.remove(settings_path(self.path))
+            safe.remove_private_folder(rows_folder(self.path))
+        finally:
+            self.close()
+
+    def _combine(self) -> None:
+        """Write the output from the chunk files, one row group each, atomically."""
+        import pyarrow.parquet as pq
+
+        from rbi.files.output import atomic_path
+
+        folder = rows_folder(self.path)
+        names = sorted(n for n in os.listdir(folder) if n.endswith(".parquet") and not n.startswith("."))
+        schema = _arrow_schema(self.columns)
+        with atomic_path(self.target) as temporary:
+            with pq.ParquetWriter(temporary, schema) as writer:
+                for name in names:
+                    writer.write_table(_read_piece(folder / name, f"{self._label}: {name}"))
 
     def close(self) -> None:
-        if self.format == "csv":
-            self._file.close()
-        elif self._parquet is not None:
-            self._parquet.close()
-            os.replace(self._temporary, self.path)
-            self._parquet = None
+        """Stop writing (what is written stays, for --resume) and give up the lock."""
+        if self._fd >= 0:
+            os.close(self._fd)
+            self._fd = -1
+        if self._lock is not None:
+            self._lock.release()
+            self._lock = None
+
+
+class RowCheck:
+    """Checks that rows read back are runs ``0, 1, 2, ...`` of this sweep: the columns, the
+    run number, the swept values the plan gives that run (exactly), and result cells of the
+    kinds the sweep writes (finite numbers or empty, whole steps, a status; an ok row has its
+    figures, a failed one none). ``count``: rows checked so far."""
+
+    def __init__(self, columns: list[str], plan, what: str) -> None:
+        self.columns = columns
+        self.plan = plan
+        self.what = what
+        self.count = 0
+        self.swept = len(plan.names)
+        self.results = columns[1 + self.swept:]
+        self.tilts = [i for i, c in enumerate(columns) if c.endswith("_tilt_deg") and i > self.swept]
+
+    def check(self, rows: list[list[Any]], text: bool, keep: bool) -> list[list[Any]]:
+        if not rows:
+            return []
+        start = self.count
+        if start + len(rows) > self.plan.size:
+            raise InputError(f"{self.what}: it has more rows than the {self.plan.size:,} runs of this sweep")
+        expected = self.plan.values(start, start + len(rows))
+        typed_rows = []
+        for offset, row in enumerate(rows):
+            k = start + offset
+            typed = self._typed(row, k, text)
+            swept = typed[1:1 + self.swept]
+            if any(v != float(e) for v, e in zip(swept, expected[offset])):
+                raise InputError(f"{self.what}: row of run {k} holds values that are not this sweep's run {k}")
+            self._check_results(typed, k)
+            if keep:
+                typed_rows.append(typed)
+        self.count += len(rows)
+        return typed_rows
+
+    def check_fragment(self, fragment: bytes) -> None:
+        """A partial last line is a cut-off row of the next run, or not this sweep's file."""
+        first = fragment.split(b",", 1)[0]
+        if self.count >= self.plan.size or not str(self.count).encode().startswith(first) \
+                or fragment.count(b",") >= len(self.columns):
+            raise InputError(f"{self.what}: its last line is not part of a row of this sweep")
+
+    def _typed(self, row: list[Any], k: int, text: bool) -> list[Any]:
+        if len(row) != len(self.columns):
+            raise InputError(f"{self.what}: row of run {k} has {len(row)} cells, not {len(self.columns)}")
+        typed = []
+        for name, cell in zip(self.columns, row):
+            value = _cell(name, cell, text)
+            if value is _BAD:
+                raise InputError(f"{self.what}: row of run {k}: {name}: {safe.shown(str(cell))[:40]!r} is not a "
+                                 "value this sweep writes")
+            typed.append(value)
+        if typed[0] != k:
+            raise InputError(f"{self.what}: row {k + 2} is not run {k} of this sweep")
+        return typed
+
+    def _check_results(self, typed: list[Any], k: int) -> None:
+        status = typed[-1]
+        if status is None:
+            raise InputError(f"{self.what}: row of run {k} has no status")
+        first = 1 + self.swept
+        for name, value in zip(self.columns[first:-1], typed[first:-1]):
+            if status == "ok" and value is None and name not in OPTIONAL_WHEN_OK:
+                raise InputError(f"{self.what}: row of run {k}: {name}: empty in a run marked ok")
+            if status != "ok" and value is not None and name not in INT_COLUMNS:
+                raise InputError(f"{self.what}: row of run {k}: {name}: a value in a failed run")
+        for i in self.tilts:
+            if typed[i] is not None and not 0.0 <= typed[i] <= 180.0:
+                raise InputError(f"{self.what}: row of run {k}: {self.columns[i]}: {typed[i]!r} is not an angle "
+                                 "between 0 and 180 degrees")
+
+
+_BAD = object()
+
+
+def _cell(name: str, cell: Any, text: bool) -> Any:
+    """A cell read back, typed as the sweep wrote it, or _BAD."""
+    if name in TEXT_COLUMNS:
+        if text:
+            if cell == "":
+                return None
+            if cell.startswith("'") and cell[1:].startswith(FORMULA_STARTS):
+                return cell[1:]
+            return _BAD if cell.startswith(FORMULA_STARTS) else cell
+        return cell if isinstance(cell, str) or cell is None else _BAD
+    if text:
+        if cell == "":
+            return None
+        if name in INT_COLUMNS:
+            return int(cell) if cell.isascii() and cell.isdigit() and str(int(cell)) == cell else _BAD
+        try:
+            value = float(cell)
+        except ValueError:
+            return _BAD
+        return value if math.isfinite(value) and repr(value) == cell else _BAD
+    if cell is None:
+        return None
+    if name in INT_COLUMNS:
+        return cell if type(cell) is int and cell >= 0 else _BAD
+    return cell if type(cell) is float and math.isfinite(cell) else _BAD
+
+
+def _csv_line(line: bytes, what: str, number: int) -> list[str]:
+    try:
+        text = line.decode("utf-8")
+    except UnicodeDecodeError:
+        raise InputError(f"{what}: line {number} is not UTF-8 text; not a file this sweep wrote") from None
+    if "\0" in text:
+        raise InputError(f"{what}: line {number} holds a NUL byte; not a file this sweep wrote")
+    cells = next(csv.reader([text]), [])
+    return cells
+
+
+def _read_piece(path: Path, what: str):
+    import pyarrow as pa
+    import pyarrow.parquet as pq
+
+    data = safe.read_capped(path, PIECE_LIMIT, what)
+    try:
+        return pq.read_table(pa.BufferReader(data))
+    except Exception as exc:  # pyarrow raises several types for a damaged file
+        raise InputError(f"{what}: not a Parquet file rbi wrote ({type(exc).__name__})") from None
 
 
 def _arrow_schema(columns: list[str]):
@@ -94,70 +453,3 @@ def _arrow_schema(columns: list[str]):
 
     types = {"run": pa.int64(), "steps": pa.int64(), "status": pa.string()}
     return pa.schema([(name, types.get(name, pa.float64())) for name in columns])
-
-
-def kept_rows(path: Path, columns: list[str], format: str) -> list[list[Any]]:
-    """The complete rows already in ``path`` (runs 0 .. k-1), for a resume. A trailing partial
-    CSV line (a run killed mid-write) is cut off. InputError when the file is not rows of this
-    sweep."""
-    if format == "parquet":
-        import pyarrow.parquet as pq
-
-        try:
-            table = pq.read_table(path)
-        except Exception as exc:  # pyarrow raises several types for a damaged file
-            raise InputError(f"{path}: cannot resume: not a readable Parquet file ({type(exc).__name__})") from None
-        if table.column_names != columns:
-            raise InputError(f"{path}: cannot resume: its columns are not those of this sweep")
-        rows = [[row[c] for c in columns] for row in table.to_pylist()]
-    else:
-        data = path.read_bytes()
-        end = data.rfind(b"\n") + 1
-        if end < len(data):
-            with open(path, "r+b") as handle:  # a partial last line: drop it
-                handle.truncate(end)
-            data = data[:end]
-        reader = csv.reader(io.StringIO(data.decode("utf-8", errors="replace")))
-        header = next(reader, None)
-        if header is None:
-            return []
-        if header != columns:
-            raise InputError(f"{path}: cannot resume: its columns are not those of this sweep "
-                             f"(expected {','.join(columns)})")
-        rows = [row for row in reader if row]
-    for k, row in enumerate(rows):
-        if str(row[0]) != str(k) or len(row) != len(columns):
-            raise InputError(f"{path}: cannot resume: row {k + 2} is not run {k} of this sweep")
-    return rows
-
-
-def check_settings(out: Path, settings: dict[str, Any], resume: bool) -> None:
-    """On resume, InputError unless the settings file beside ``out`` matches ``settings``."""
-    side = settings_path(out)
-    if not resume:
-        return
-    if not side.exists():
-        raise InputError(f"{out}: cannot resume: no unfinished sweep there (the settings file {side.name} is "
-                         "missing: the sweep finished, or the file was not written by rbi sweep)")
-    try:
-        recorded = json.loads(side.read_text())
-    except (OSError, ValueError):
-        raise InputError(f"{out}: cannot resume: {side.name} is unreadable") from None
-    if recorded != json.loads(json.dumps(settings)):
-        changed = sorted(k for k in set(recorded) | set(settings) if recorded.get(k) != settings.get(k))
-        raise InputError(f"{out}: cannot resume: the sweep there was made with other settings "
-                         f"({', '.join(changed)} differ)")
-
-
-def write_settings(out: Path, settings: dict[str, Any]) -> None:
-    side = settings_path(out)
-    temporary = side.with_name(side.name + ".tmp")
-    temporary.write_text(json.dumps(settings, sort_keys=True))
-    os.replace(temporary, side)
-
-
-def remove_settings(out: Path) -> None:
-    try:
-        settings_path(out).unlink()
-    except FileNotFoundError:
-        pass

@@ -1,0 +1,261 @@
+"""Opening, reading and creating the files rbi keeps beside an output (sidecars, partial files,
+locks) without ever following a symbolic link, waiting on a FIFO or reading a device.
+
+Every function here opens with ``O_NOFOLLOW | O_NONBLOCK`` and checks the open file itself
+(``fstat``), not the name, so nothing can be swapped in between a check and a use:
+
+- a symbolic link (even to a regular file), a FIFO, a device, a socket or a folder where a
+  regular file is expected is an :class:`~rbi.errors.InputError`, found without reading a byte
+  and without blocking (a FIFO with no writer opens at once with ``O_NONBLOCK``);
+- a file owned by another user is refused (it was planted: rbi created its own);
+- a read is capped: a sidecar linked to ``/dev/zero`` or grown to gigabytes is refused by its
+  size before anything is allocated;
+- new files are created exclusively (``O_CREAT | O_EXCL | O_NOFOLLOW``, or ``mkstemp`` in the
+  target folder for temporary names), so no name another user could have planted is written.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import errno
+import os
+import stat
+import tempfile
+from pathlib import Path
+from typing import Iterator
+
+from rbi.errors import InputError
+
+NAME_MAX = 255
+"""Longest file name (one path component), in bytes, on the file systems rbi writes to."""
+
+_NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
+_NONBLOCK = getattr(os, "O_NONBLOCK", 0)
+_CLOEXEC = getattr(os, "O_CLOEXEC", 0)
+_NOCTTY = getattr(os, "O_NOCTTY", 0)
+
+
+def shown(path: str | os.PathLike) -> str:
+    """A path as it may appear in a one-line message: control characters escaped."""
+    path = os.fspath(path)
+    return path.encode("unicode_escape", errors="backslashreplace").decode("ascii") \
+        if any(ord(c) < 32 or 127 <= ord(c) < 160 for c in path) else path
+
+
+def reason(exc: OSError) -> str:
+    """Why an operation failed, in the system's words (``No space left on device``), also for
+    the OSErrors of libraries that only put the errno in their message (pyarrow)."""
+    import re
+
+    number = exc.errno
+    if not number:
+        found = re.search(r"\[errno (\d+)\]", str(exc), re.IGNORECASE)
+        number = int(found[1]) if found else None
+    return os.strerror(number) if number else (exc.strerror or str(exc))
+
+
+def kind(mode: int) -> str:
+    """What a file of this ``st_mode`` is, in words."""
+    if stat.S_ISLNK(mode):
+        return "symbolic link"
+    if stat.S_ISDIR(mode):
+        return "folder"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "device"
+    if stat.S_ISFIFO(mode):
+        return "FIFO (named pipe)"
+    if stat.S_ISSOCK(mode):
+        return "socket"
+    return "special file"
+
+
+def existing_regular(path: str | os.PathLike, what: str) -> bool:
+    """Whether a regular file of this user stands at ``path`` (False: nothing there).
+    InputError for anything else there: a symbolic link (never followed), a FIFO, a device, a
+    socket, a folder, or a file of another user. ``what`` prefixes the message."""
+    info = _lstat(path, what)
+    if info is not None:
+        check_regular(info, path, what)
+    return info is not None
+
+
+def open_regular(path: str | os.PathLike, what: str, flags: int = os.O_RDONLY) -> int:
+    """A descriptor of the existing regular file at ``path``, opened with ``flags`` (no
+    creation) without following a link or blocking; InputError for anything else (see
+    :func:`existing_regular`). The caller closes it."""
+    try:
+        fd = os.open(path, flags | _NOFOLLOW | _NONBLOCK | _CLOEXEC | _NOCTTY)
+    except FileNotFoundError:
+        raise InputError(f"{what}: does not exist") from None
+    except OSError as exc:
+        if exc.errno in (errno.ELOOP, errno.EMLINK):
+            raise InputError(f"{what}: is a symbolic link; rbi never follows one here") from None
+        if exc.errno == errno.ENXIO:  # a FIFO opened for writing with no reader
+            raise InputError(f"{what}: is a {kind(stat.S_IFIFO)}, not a regular file; rbi will not use it") from None
+        raise InputError(f"{what}: cannot open: {reason(exc)}") from None
+    try:
+        check_regular(os.fstat(fd), path, what)
+        if _NONBLOCK:
+            os.set_blocking(fd, True)
+    except BaseException:
+        os.close(fd)
+        raise
+    return fd
+
+
+def read_capped(path: str | os.PathLike, limit: int, what: str) -> bytes:
+    """The bytes of the regular file at ``path``, at most ``limit`` of them; InputError when
+    it holds more (checked by size before reading, and again while reading) or is not a
+    regular file of this user."""
+    fd = open_regular(path, what)
+    try:
+        if os.fstat(fd).st_size > limit:
+            raise InputError(f"{what}: is larger than the {limit:,} bytes rbi writes there; not read")
+        data = b""
+        while len(data) <= limit:
+            block = os.read(fd, limit + 1 - len(data))
+            if not block:
+                break
+            data += block
+        if len(data) > limit:
+            raise InputError(f"{what}: is larger than the {limit:,} bytes rbi writes there; not read")
+        return data
+    finally:
+        os.close(fd)
+
+
+def create_exclusive(path: str | os.PathLike, what: str, mode: int = 0o666) -> int:
+    """A descriptor (read and write) of a new file created at ``path``: ``O_CREAT | O_EXCL |
+    O_NOFOLLOW``, so nothing that already stands there (a planted link or file) is ever
+    written. ``mode`` is reduced by the umask. InputError when the name is taken."""
+    try:
+        return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL | _NOFOLLOW | _CLOEXEC | _NOCTTY, mode)
+    except FileExistsError:
+        raise InputError(f"{what}: something appeared at this path while rbi was creating it; not written") from None
+    except OSError as exc:
+        raise InputError(f"{what}: cannot write: {reason(exc)}") from None
+
+
+def write_all(fd: int, data: bytes) -> None:
+    """Write every byte of ``data`` to ``fd`` (``os.write`` may write fewer)."""
+    view = memoryview(data)
+    while view:
+        written = os.write(fd, view)
+        view = view[written:]
+
+
+@contextlib.contextmanager
+def replacing(path: str | os.PathLike, what: str, suffix: str = ".tmp", mode: int | None = None) -> Iterator[tuple[int, str]]:
+    """A new temporary file beside ``path`` (``mkstemp``: a private name, created exclusively),
+    yielded as ``(descriptor, name)`` (the descriptor stays this function's to close; a writer
+    may also open the file by its name); when the block ends without an exception it is flushed,
+    given ``mode`` (default ``0666`` less the umask) and renamed over ``path``; otherwise it is
+    removed and ``path`` is as it was. An OSError is an InputError ``what: cannot write: ...``."""
+    folder = os.path.dirname(os.fspath(path)) or "."
+    try:
+        fd, temporary = tempfile.mkstemp(prefix=".rbi-", suffix=suffix, dir=folder)
+    except OSError as exc:
+        raise InputError(f"{what}: cannot write: {reason(exc)}") from None
+    try:
+        try:
+            yield fd, temporary
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+        os.chmod(temporary, 0o666 & ~_umask() if mode is None else mode)
+        os.replace(temporary, path)
+    except OSError as exc:
+        remove(temporary)
+        raise InputError(f"{what}: cannot write: {reason(exc)}") from None
+    except BaseException:
+        remove(temporary)
+        raise
+
+
+def replace_small(path: str | os.PathLike, data: bytes, what: str) -> None:
+    """Put ``data`` at ``path`` atomically (see :func:`replacing`). Refuses (InputError) when
+    something other than a regular file of this user stands at ``path``."""
+    existing_regular(path, what)
+    with replacing(path, what) as (fd, _):
+        write_all(fd, data)
+
+
+def remove(path: str | os.PathLike) -> None:
+    """Remove the name ``path`` if it is there (a link is removed, never its target)."""
+    with contextlib.suppress(FileNotFoundError, NotADirectoryError):
+        os.unlink(path)
+
+
+def existing_private_folder(path: str | os.PathLike, what: str) -> bool:
+    """Whether a folder of this user (not a link to one) stands at ``path``; False when nothing
+    does; InputError for anything else."""
+    info = _lstat(path, what)
+    if info is None:
+        return False
+    if not stat.S_ISDIR(info.st_mode):
+        raise InputError(f"{what}: is a {kind(info.st_mode)}, not the folder rbi keeps there; not used")
+    if hasattr(os, "geteuid") and info.st_uid != os.geteuid():
+        raise InputError(f"{what}: belongs to another user (rbi created its own); not used")
+    return True
+
+
+def make_private_folder(path: str | os.PathLike, what: str) -> None:
+    """Create the folder ``path`` readable by this user only (``mkdir`` is exclusive: a name
+    already taken is an InputError, never reused)."""
+    try:
+        os.mkdir(path, 0o700)
+    except FileExistsError:
+        raise InputError(f"{what}: something appeared at this path while rbi was creating it; not used") from None
+    except OSError as exc:
+        raise InputError(f"{what}: cannot write: {reason(exc)}") from None
+
+
+def remove_private_folder(path: str | os.PathLike) -> None:
+    """Remove a folder made by :func:`make_private_folder` and what is in it, never following a
+    link inside it."""
+    import shutil
+
+    if existing_private_folder(path, shown(path)):
+        shutil.rmtree(path)
+
+
+def beside(out: str | os.PathLike, suffix: str) -> Path:
+    """The hidden file ``.NAME<suffix>`` in the folder of ``out`` (NAME: its file name). When
+    that would pass the 255-byte limit of a file name, NAME is shortened to what fits and
+    followed by ``~`` and 16 hex digits of its SHA-256, so each output keeps its own file."""
+    import hashlib
+
+    out = Path(out)
+    name = os.fsencode(out.name)
+    candidate = b"." + name + os.fsencode(suffix)
+    if len(candidate) <= NAME_MAX:
+        return out.with_name(os.fsdecode(candidate))
+    digest = b"~" + hashlib.sha256(name).hexdigest()[:16].encode()
+    room = NAME_MAX - 1 - len(digest) - len(os.fsencode(suffix))
+    cut = name[:room]
+    while cut and len(cut) < len(name) and (name[len(cut)] & 0xC0) == 0x80:
+        cut = cut[:-1]  # never split a UTF-8 character
+    return out.with_name(os.fsdecode(b"." + cut + digest + os.fsencode(suffix)))
+
+
+def check_regular(info: os.stat_result, path, what: str) -> None:
+    """InputError unless ``info`` (of ``path``) is a regular file of this user."""
+    if not stat.S_ISREG(info.st_mode):
+        raise InputError(f"{what}: is a {kind(info.st_mode)}, not a regular file; rbi will not read or replace it")
+    if hasattr(os, "geteuid") and info.st_uid != os.geteuid():
+        raise InputError(f"{what}: belongs to another user (rbi created its own); not used")
+
+
+def _lstat(path, what: str) -> os.stat_result | None:
+    try:
+        return os.lstat(path)
+    except FileNotFoundError:
+        return None
+    except OSError as exc:
+        raise InputError(f"{what}: cannot use this path: {reason(exc)}") from None
+
+
+def _umask() -> int:
+    umask = os.umask(0)
+    os.umask(umask)
+    return umask
