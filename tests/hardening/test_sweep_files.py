@@ -444,3 +444,51 @@ def test_a_really_full_disk_keeps_the_finished_rows_readable_for_resume(small_di
     else:
         assert pq.read_table(out).to_pylist() == pq.read_table(reference).to_pylist()
     assert sorted(os.listdir(mount)) == [out.name]
+
+
+# --- items 2 and 8: a second writer, SIGTERM, and a resume that completes exactly -------------
+
+SLOW_SWEEP = """
+import sys, time
+from rbi.sweep import runs
+real = runs.run_chunk
+def slow(job, a, b, threads=0):
+    time.sleep(0.3)
+    return real(job, a, b, threads)
+runs.run_chunk = slow
+runs.SweepJob.chunk_size = lambda self, threads: 4
+sys.argv = ["rbi", *sys.argv[1:]]
+from rbi.cli.app import main
+main()
+"""
+
+
+def test_sigterm_exits_143_with_one_line_and_resume_completes_exactly(tmp_path, reference):
+    """A real process (chunks slowed down) stopped by SIGTERM: exit 143 and one line (rbi 2: 130);
+    while it ran, a second run on the same output was exit 2 and changed nothing; --resume
+    then gives byte for byte the rows of an uninterrupted sweep."""
+    import signal
+
+    out = tmp_path / "s.csv"
+    proc = subprocess.Popen([sys.executable, "-c", SLOW_SWEEP, "sweep", *map(str, ARGS), "--out", str(out)],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    try:
+        deadline = time.monotonic() + 60
+        while time.monotonic() < deadline and (not out.exists() or out.read_bytes().count(b"\n") < 5):
+            time.sleep(0.02)
+        for second in (["--resume"], []):
+            before = snapshot(tmp_path)
+            one_line_exit_2(rbi("sweep", *ARGS, "--out", out, *second), "another rbi run")
+            after = snapshot(tmp_path)
+            assert after.pop("s.csv").startswith(before.pop("s.csv")) and after == before  # only A wrote
+        proc.send_signal(signal.SIGTERM)
+        _, err = proc.communicate(timeout=60)
+    finally:
+        proc.kill()
+    assert proc.returncode == 143 and err.startswith("rbi: terminated:") and len(err.splitlines()) == 1, err
+    kept = out.read_bytes()
+    assert 4 <= kept.count(b"\n") - 1 < RUNS and reference.read_bytes().startswith(kept)
+    proc = rbi("sweep", *ARGS, "--out", out, "--resume")
+    assert proc.returncode == 0, proc.stderr
+    assert out.read_bytes() == reference.read_bytes()
+    assert sorted(os.listdir(tmp_path)) == ["s.csv"]
