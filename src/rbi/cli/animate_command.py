@@ -89,7 +89,9 @@ def animate(
         raise InputError(f"{file}: {exc}") from None
     if not (np.all(np.isfinite(run.q)) and np.all(np.isfinite(run.omega))):
         raise InputError(f"{file}: the motion is not finite: the input values are too large for double precision")
-    title = f"{body.name or file}: spin {float(np.linalg.norm(omega0)):g} rad/s, tilt {tilt:g}°"
+    from rbi.viz.labels import label
+
+    title = f"{label(body.name or file, 30)}: spin {float(np.linalg.norm(omega0)):g} rad/s, tilt {tilt:g}°"
     tilts = tilt_deg(run.q)
     data = animation_data(title, part_geometry(body), scene, run.t, run.q, run.omega, tilts, body.length_unit)
     data["legend"] = (f"{part_count(data['parts'])} parts · red line: path of the axis tip over the last {TRAIL_SECONDS:g} s · lengths in {body.length_unit}"

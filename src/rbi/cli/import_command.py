@@ -57,7 +57,7 @@ def import_robot(
         if targets is None:
             sys.stdout.write("---\n".join(_yaml_text(robot, each) for each in links))
         else:
-            from rbi.spec.yaml_writer import visible
+            from rbi.text import visible
 
             for target, _ in targets:
                 print(visible(str(target.given)))
@@ -166,7 +166,7 @@ def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
         "links": rows,
         "skipped": [{"link": label, "reason": reason} for label, reason in robot.skipped],
     }
-    from rbi.spec.yaml_writer import visible
+    from rbi.text import visible
 
     csv_rows = [{k: (visible(v) if isinstance(v, str) else v) for k, v in row.items() if k != "problems"}
                 | {"ok": not row["problems"]} for row in rows]  # names escaped: CSV often reaches a terminal

@@ -10,6 +10,7 @@ from __future__ import annotations
 import numpy as np
 
 from rbi.spec.errors import InputError
+from rbi.viz.labels import MAX_LABEL_CHARS, label, plain
 
 
 def require_matplotlib() -> None:
@@ -114,7 +115,7 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", 
     energy_ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
     energy_ax.grid(alpha=0.3)
     if title:
-        fig.suptitle(title)
+        plain(fig.suptitle(label(title, 2 * MAX_LABEL_CHARS)))
     fig.tight_layout()
     fig.savefig(path, format=format, dpi=110)
     plt.close(fig)
@@ -157,15 +158,15 @@ def plot_stability_map(xs, ys, values, path: str, x_label: str, y_label: str | N
         if np.any(~finite):
             ax.plot(xs[~finite], ys[~finite], "x", color="red", label="failed run")
         fig.colorbar(mesh, ax=ax, label="largest tilt [deg] (log scale)")
-        ax.set_ylabel(y_label)
+        plain(ax.set_ylabel(label(y_label, 2 * MAX_LABEL_CHARS)))
     if threshold is not None and np.isfinite(threshold):
         ax.axvline(threshold, color="white" if ys is not None else "black", ls="--", lw=1.2,
                    label=f"sleeping-top threshold {threshold:.4g} rad/s (closed form)")
-    ax.set_xlabel(x_label)
+    plain(ax.set_xlabel(label(x_label, 2 * MAX_LABEL_CHARS)))
     if ax.get_legend_handles_labels()[0]:
         ax.legend(loc="lower left", fontsize=8, framealpha=0.85)
     if title:
-        ax.set_title(title)
+        plain(ax.set_title(label(title, 2 * MAX_LABEL_CHARS)))
     fig.tight_layout()
     fig.savefig(path, format=format, dpi=120)
     plt.close(fig)

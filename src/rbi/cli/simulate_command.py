@@ -131,6 +131,7 @@ def _plot(target, body, run, settings: dict) -> None:
     from rbi import api
     from rbi.cli.output import write_output
     from rbi.cli.plot import plot_trajectory
+    from rbi.viz.labels import label
 
     shown = run.columns()
     if settings["method"] in ("default", "exact") and run.t.size < PLOT_SAMPLES and settings["duration"] > 0:
@@ -138,7 +139,7 @@ def _plot(target, body, run, settings: dict) -> None:
         shown = api.simulate(body, samples=PLOT_SAMPLES, error_estimate=False, **settings).columns()
     loaded = body._loaded
     omega0 = run.summary["initial"]["omega"]
-    title = (f"{body.name or body.path}: spin {number(float(np.linalg.norm(omega0)))} rad/s, "
+    title = (f"{label(body.name or body.path)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, "
              f"tilt {number(settings['tilt_deg'])}°")
     free = {}
     if loaded.pivot is None:  # a free body: each principal axis's turn against the angular momentum

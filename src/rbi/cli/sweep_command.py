@@ -348,7 +348,9 @@ def _plot(target, job, nominal, columns, rows, mass_properties) -> None:
     xs = [r[index[x_name]] for r in rows]
     ys = [r[index[y_name]] for r in rows] if y_name else None
     values = [r[index["max_tilt_deg"]] for r in rows]
-    title = f"{nominal.name or job.path}: largest tilt over {job.duration:g} s"
+    from rbi.viz.labels import label
+
+    title = f"{label(nominal.name or job.path)}: largest tilt over {job.duration:g} s"
     write_output(target, writer=lambda path: plot_stability_map(
         xs, ys, values, path, x_label=_label(x_name), y_label=_label(y_name) if y_name else None,
         threshold=threshold if x_name == "spin" else None, title=title, format=target.format))

@@ -15,41 +15,7 @@ from __future__ import annotations
 import unicodedata
 from typing import Any
 
-_VISIBLE_CATEGORIES_EXCEPT = ("Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp")
-"""Unicode categories written escaped: controls, format characters (bidirectional overrides,
-zero-width characters, the byte order mark), surrogates, private use, unassigned, line and
-paragraph separators. Spaces other than U+0020 (Zs) are escaped too, so none hides in a name."""
-
-
-def is_hidden(char: str) -> bool:
-    """Whether ``char`` would not show as itself on a terminal (or would move the text around
-    it): a control, format, separator, unassigned or private character, or a space other than
-    the plain space."""
-    category = unicodedata.category(char)
-    return category in _VISIBLE_CATEGORIES_EXCEPT or (category == "Zs" and char != " ")
-
-
-def visible(text: str) -> str:
-    """``text`` with every hidden character (see :func:`is_hidden`) written as an escape
-    (``\\n``, ``\\x9b``, ``\\u202e``), and backslashes doubled, so the result is one line of
-    plainly visible characters from which ``text`` can be read back."""
-    if not any(is_hidden(c) or c == "\\" for c in text):
-        return text
-    out = []
-    for char in text:
-        if char == "\\":
-            out.append("\\\\")
-        elif not is_hidden(char):
-            out.append(char)
-        elif char in _SHORT_ESCAPES:
-            out.append(_SHORT_ESCAPES[char])
-        else:
-            code = ord(char)
-            out.append(f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}")
-    return "".join(out)
-
-
-_SHORT_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+from rbi.text import is_hidden, visible
 
 
 def comment(*lines: str) -> str:

@@ -20,6 +20,8 @@ VIEW_ELEVATION_DEG = 24.0
 VIEW_AZIMUTH_DEG = -48.0
 GIF_PIXELS = 400
 GIF_COLOURS = 64
+MAX_TITLE_CHARS = 60
+"""Longest title drawn on a GIF frame (its name part is cut to :data:`rbi.viz.labels.MAX_LABEL_CHARS`)."""
 MAX_GIF_FRAMES = 1500
 """Most frames a GIF may have (a minute at 25 frames per second, some tens of MB)."""
 
@@ -123,7 +125,10 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
     fig = plt.figure(figsize=(pixels / dpi, pixels / dpi), dpi=dpi)
     try:
         ax = _scene_axes(fig, data)
-        fig.text(0.02, 0.965, data.get("title", ""), fontsize=8.5, weight="bold", va="top")
+        from rbi.viz.labels import label, plain
+
+        plain(fig.text(0.02, 0.965, label(data.get("title", ""), MAX_TITLE_CHARS), fontsize=8.5, weight="bold",
+                       va="top"))
         readout = fig.text(0.02, 0.915, "", fontsize=8, va="top", family="monospace")
         for index in indices:
             t = data["times"][index]

@@ -13,6 +13,7 @@ from typing import Any
 
 import numpy as np
 
+from rbi.viz.labels import label
 from rbi.viz.motion import body_size, shifted
 
 AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
@@ -44,7 +45,7 @@ def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivo
                  for k, (m, axis) in enumerate(zip(moments, axes))]
     com_shifted = (com - origin).tolist()
     return {
-        "title": title, "length_unit": length_unit, "pivoted": False, "size": size, "parts": parts,
+        "title": label(title), "length_unit": length_unit, "pivoted": False, "size": size, "parts": parts,
         "com": com_shifted, "view_center": com_shifted, "pivot": None if pivot is None else [0.0, 0.0, 0.0],
         "principal_axes": principal, "axis_tip": com_shifted,
         "times": [0.0], "quaternions": [[0.0, 0.0, 0.0, 1.0]], "tilt_deg": [0.0], "omega": [0.0],
@@ -68,6 +69,7 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
+    from rbi.viz.labels import plain, plain_legend
     from rbi.viz.solids import shade
 
     size = float(data["size"])
@@ -119,21 +121,22 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
         listed.add(part)
         if len(listed) <= MAX_LEGEND_PARTS:
             colour = "#333333" if item["kind"] in ("point", "points") else PALETTE[part % len(PALETTE)]
-            name = item.get("name") or f"parts[{part}]"
+            name = label(item.get("name") or f"parts[{part}]")
             copies = sum(1 for other in data["parts"] if other.get("part", -1) == part)
             extra = (f" ×{copies}" if copies > 1 else "") + (" (box of equal inertia)" if item.get("stand_in") else "")
             handles.append(Patch(facecolor=colour, label=f"{name}: {item['shape']}{extra}"))
     if len(listed) > MAX_LEGEND_PARTS:
         handles.append(Patch(facecolor="white", label=f"… {part_count(data['parts'])} parts in all"))
-    fig.legend(handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5, frameon=False)
+    plain_legend(fig.legend(handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5,
+                            frameon=False))
     _frame(ax, quads, com, data)
     unit = data["length_unit"]
     ax.set_xlabel(f"x [{unit}]")
     ax.set_ylabel(f"y [{unit}]")
     ax.set_zlabel(f"z [{unit}]")
     origin = "the pivot" if data.get("pivot") is not None else "the centre of mass"
-    fig.suptitle(f"{data['title']}\nbody axes, origin at {origin}; principal axes about the centre of mass, "
-                 f"lengths in proportion to their moments", fontsize=10)
+    plain(fig.suptitle(f"{label(data['title'])}\nbody axes, origin at {origin}; principal axes about the centre of "
+                       f"mass, lengths in proportion to their moments", fontsize=10))
     fig.savefig(path, format=format, dpi=110)
     plt.close(fig)
 

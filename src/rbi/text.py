@@ -1,0 +1,45 @@
+"""Text from outside (a name in a spec, a robot file, a file name) made plainly visible.
+
+Used wherever such text reaches a medium where a hidden character would act rather than show:
+YAML comments and values (:mod:`rbi.spec.yaml_writer`), picture labels
+(:mod:`rbi.viz.labels`), listings. Standard library only, importable from every layer.
+"""
+
+from __future__ import annotations
+
+import unicodedata
+
+_HIDDEN_CATEGORIES = ("Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp")
+"""Unicode categories written escaped: controls, format characters (bidirectional overrides,
+zero-width characters, the byte order mark), surrogates, private use, unassigned, line and
+paragraph separators. Spaces other than U+0020 (Zs) are escaped too, so none hides in a name."""
+
+
+def is_hidden(char: str) -> bool:
+    """Whether ``char`` would not show as itself on a terminal (or would move the text around
+    it): a control, format, separator, unassigned or private character, or a space other than
+    the plain space."""
+    category = unicodedata.category(char)
+    return category in _HIDDEN_CATEGORIES or (category == "Zs" and char != " ")
+
+
+def visible(text: str) -> str:
+    """``text`` with every hidden character (see :func:`is_hidden`) written as an escape
+    (``\\n``, ``\\x9b``, ``\\u202e``): one line of plainly visible characters, for showing (a
+    backslash already in ``text`` is kept as it is, so this is for the eye, not for reading
+    back: data goes through the YAML or JSON writer)."""
+    if not any(is_hidden(c) for c in text):
+        return text
+    out = []
+    for char in text:
+        if not is_hidden(char):
+            out.append(char)
+        elif char in _SHORT_ESCAPES:
+            out.append(_SHORT_ESCAPES[char])
+        else:
+            code = ord(char)
+            out.append(f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}")
+    return "".join(out)
+
+
+_SHORT_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}

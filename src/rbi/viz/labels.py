@@ -1,0 +1,70 @@
+"""Names from a spec as picture labels: shown as written, never as markup, never too long.
+
+matplotlib typesets text between ``$`` signs as mathtext, so a part named ``$\\frac{$`` would
+make the picture fail and ``$x^2$`` would be drawn as a formula. Every text that holds a name
+is drawn with mathtext off (:func:`plain`, :func:`plain_legend`) and made from :func:`label`:
+hidden characters shown as escapes (one line), cut to :data:`MAX_LABEL_CHARS` (a 1 MB name
+took minutes to lay out).
+"""
+
+from __future__ import annotations
+
+from rbi.text import visible
+
+MAX_LABEL_CHARS = 60
+"""Longest name drawn in a picture (characters); a longer one is cut and ends in ``…``."""
+
+
+def label(text: object, limit: int = MAX_LABEL_CHARS) -> str:
+    """``text`` as one line of at most ``limit`` visible characters: hidden characters as
+    escapes (``\\n``, ``\\u202e``), a longer text cut and ended with ``…``."""
+    text = str(text)[: 4 * limit]  # nothing past this can show; escapes at most quadruple it
+    shown = visible(text)
+    return shown if len(shown) <= limit else shown[: limit - 1] + "…"
+
+
+def plain(*texts):
+    """Turn mathtext off on matplotlib Text objects (``$`` is then just a dollar sign), and
+    write each character their font cannot draw as an escape (``\\u540d``) rather than a box
+    and a warning per glyph on stderr; returns the first, for chaining."""
+    for text in texts:
+        text.set_parse_math(False)
+        text.set_text(_drawable(text.get_text(), text.get_fontproperties()))
+    return texts[0] if texts else None
+
+
+def _drawable(text: str, font) -> str:
+    if text.isascii():
+        return text
+    covered = _characters_of(font)
+    return "".join(c if ord(c) in covered or c == "\n" else f"\\u{ord(c):04x}" for c in text)
+
+
+def _characters_of(font) -> frozenset[int]:
+    """Code points the fonts matplotlib would use for ``font`` can draw (with its fallbacks)."""
+    from matplotlib.font_manager import fontManager
+
+    paths = fontManager._find_fonts_by_props(font) if hasattr(fontManager, "_find_fonts_by_props") \
+        else [fontManager.findfont(font)]
+    return _charmaps(tuple(paths))
+
+
+_CHARMAPS: dict[tuple[str, ...], frozenset[int]] = {}
+
+
+def _charmaps(paths: tuple[str, ...]) -> frozenset[int]:
+    if paths not in _CHARMAPS:
+        from matplotlib.ft2font import FT2Font
+
+        codes: set[int] = set()
+        for path in paths:
+            codes.update(FT2Font(str(path)).get_charmap())
+        _CHARMAPS[paths] = frozenset(codes)
+    return _CHARMAPS[paths]
+
+
+def plain_legend(legend):
+    """:func:`plain` on every text of a matplotlib legend (None passes)."""
+    if legend is not None:
+        plain(*legend.get_texts())
+    return legend
