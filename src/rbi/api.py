@@ -236,7 +236,7 @@ class Body:
             raise SpecError(f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
                             f"commas, file units), got {about!r}", field="about") from None
 
-    def inertia(self, about: Point = "com", axes=None) -> np.ndarray:
+    def inertia(self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None) -> np.ndarray:
         """The (3, 3) inertia matrix about a point, mass·length² (tensor sign: ``I_xy = -∫xy dm``).
 
         Args:
@@ -261,7 +261,8 @@ class Body:
 
         point = self.point(about)
         moments, axes = principal_axes(inertia_about(self._loaded.props, point))
-        return Principal(moments=np.asarray(moments), axes=np.asarray(axes),
+        # + 0.0: no -0.0 components (the CLI prints 0 there too)
+        return Principal(moments=np.asarray(moments) + 0.0, axes=np.asarray(axes) + 0.0,
                          radii_of_gyration=np.asarray(radii_of_gyration(moments, self.mass)), about=point)
 
     def parts(self) -> list[Part]:
@@ -284,7 +285,8 @@ class Body:
             ))
         return out
 
-    def momentum(self, omega, about: Point = "com", velocity=None) -> Momentum:
+    def momentum(self, omega: Sequence[float] | str, about: Point = "com",
+                 velocity: Sequence[float] | str | None = None) -> Momentum:
         """Angular momentum about a point and kinetic energy, for angular velocity ``omega``
         (body axes, rad/s).
 

@@ -1,0 +1,57 @@
+"""The documentation site builds with warnings as errors, and every Python example of
+docs/python-api.md runs and prints exactly the output the page shows below it."""
+
+from __future__ import annotations
+
+import contextlib
+import io
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+PAGE = ROOT / "docs" / "python-api.md"
+
+
+def examples() -> list[tuple[str, str | None]]:
+    """Each ```python block of the page with the ```text block right after it (None if none)."""
+    blocks = re.findall(r"^```(\w*)\n(.*?)^```\n", PAGE.read_text(), re.S | re.M)
+    out = []
+    for i, (lang, code) in enumerate(blocks):
+        if lang == "python":
+            shown = blocks[i + 1][1] if i + 1 < len(blocks) and blocks[i + 1][0] == "text" else None
+            out.append((code, shown))
+    return out
+
+
+def test_the_page_has_the_walk_through():
+    text = PAGE.read_text()
+    for step in ("rbi.load(", ".principal()", "rbi.simulate(", "matplotlib", "rbi.SpecError"):
+        assert step in text, step
+    assert len(examples()) >= 5
+
+
+@pytest.mark.parametrize("index", range(len(examples())))
+def test_every_python_example_runs_and_prints_what_the_page_shows(index, tmp_path, monkeypatch):
+    pytest.importorskip("matplotlib")
+    code, shown = examples()[index]
+    (tmp_path / "bodies").symlink_to(ROOT / "bodies")
+    monkeypatch.chdir(tmp_path)
+    printed = io.StringIO()
+    with contextlib.redirect_stdout(printed):
+        exec(compile(code, f"{PAGE.name} example {index + 1}", "exec"), {"__name__": "__main__"})
+    if shown is not None:
+        assert printed.getvalue() == shown
+
+
+def test_the_site_builds_strictly(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "--quiet", "-f", str(ROOT / "mkdocs.yml"),
+                           "-d", str(tmp_path / "site")], capture_output=True, text=True, cwd=ROOT, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    reference = (tmp_path / "site" / "api" / "index.html").read_text()
+    for name in ("rbi.api.load", "rbi.api.Body.principal", "rbi.api.simulate", "rbi.api.Trajectory"):
+        assert f'id="{name}"' in reference, name
+    assert (tmp_path / "site" / "python-api" / "index.html").exists()
