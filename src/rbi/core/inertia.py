@@ -10,6 +10,7 @@ from typing import Iterable, NamedTuple, Sequence
 
 import numpy as np
 
+from rbi.core.rotation import unit_vector
 from rbi.core.shapes import MassElement
 
 
@@ -230,10 +231,9 @@ def _closest_coordinate_axis_in_plane(normal: np.ndarray) -> np.ndarray:
 def unit_axis(axis: Sequence[float]) -> np.ndarray:
     """``axis`` scaled to unit length; ValueError when it is zero or not finite."""
     n = np.asarray(axis, dtype=float).reshape(3)
-    length = float(np.linalg.norm(n))
-    if not np.all(np.isfinite(n)) or not np.isfinite(length) or length == 0.0:
+    if not np.all(np.isfinite(n)) or not np.any(n):
         raise ValueError(f"the axis must be a non-zero finite direction, got {n.tolist()}")
-    return n / length
+    return unit_vector(n)  # any size: 1e200 or 1e-200 components are still a direction
 
 
 def moment_about_axis(inertia_about_point: np.ndarray, axis: Sequence[float]) -> float:

@@ -54,7 +54,8 @@ def inertia_problem(inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: floa
         i, j = sorted((int(i), int(j)))
         return InertiaProblem(
             "not symmetric",
-            f"not symmetric: entry [{i}][{j}] = {I[i, j]:.6g} but [{j}][{i}] = {I[j, i]:.6g}",
+            f"not symmetric: entry [{i}][{j}] = {I[i, j]:.6g} but [{j}][{i}] = {I[j, i]:.6g}; an inertia matrix "
+            f"equals its transpose: give both the same value",
         )
     moments = np.linalg.eigvalsh(0.5 * I + 0.5 * I.T)  # ascending; I + I.T could overflow
     I1, I2, I3 = (float(m) for m in moments)
@@ -62,12 +63,14 @@ def inertia_problem(inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: floa
         return InertiaProblem(
             "negative moment",
             f"not positive definite: principal moment I1 = {I1:.6g} < 0 "
-            f"(principal moments {I1:.6g}, {I2:.6g}, {I3:.6g})",
+            f"(principal moments {I1:.6g}, {I2:.6g}, {I3:.6g}); no real body has a negative moment: check the "
+            f"signs (products are the matrix entries, −∫xy dm: a tool listing +∫xy dm needs them negated)",
         )
     if I1 + I2 < I3 - tol:
         return InertiaProblem(
             "triangle inequality",
             f"violates the triangle inequality I1 + I2 >= I3 on the principal moments: "
-            f"{I1:.6g} + {I2:.6g} = {I1 + I2:.6g} < {I3:.6g}",
+            f"{I1:.6g} + {I2:.6g} = {I1 + I2:.6g} < {I3:.6g}; no mass distribution has these moments (the largest "
+            f"is at most the sum of the other two): check that all are about one point and in one unit",
         )
     return None

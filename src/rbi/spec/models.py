@@ -51,7 +51,7 @@ class Pattern(_Strict):
         if circular and self.axis is None:
             raise ValueError("axis: missing required field (the direction of the line the copies turn about)")
         if self.axis is not None:
-            _nonzero(self.axis, "axis")
+            _nonzero(self.axis, "axis", "the direction of the line the copies turn about")
         return self
 
 
@@ -161,11 +161,13 @@ class Rotation(_Strict):
             if self.axis is None or self.angle_deg is None:
                 raise ValueError("axis, angle_deg: give both")
             if not any(self.axis):
-                raise ValueError("axis: must not be the zero vector [0, 0, 0]")
+                raise ValueError("axis: must not be the zero vector [0, 0, 0]: give the direction to turn about, "
+                                 "e.g. [0, 0, 1] for z (any length)")
         if forms[0] == "euler_deg, sequence" and (self.euler_deg is None or self.sequence is None):
             raise ValueError("euler_deg, sequence: give both")
         if self.quaternion is not None and not any(self.quaternion):
-            raise ValueError("quaternion: must not be zero [0, 0, 0, 0]")
+            raise ValueError("quaternion: must not be zero [0, 0, 0, 0]: the identity (no turn) is [1, 0, 0, 0], "
+                             "scalar first; any length")
         return self
 
 
@@ -289,9 +291,10 @@ class CustomPart(_Part):
         return _mass_only(data, "a custom part")
 
 
-def _nonzero(vector: list[float], name: str) -> None:
+def _nonzero(vector: list[float], name: str, meaning: str) -> None:
     if not any(vector):
-        raise ValueError(f"{name}: must not be the zero vector [0, 0, 0]")
+        raise ValueError(f"{name}: must not be the zero vector [0, 0, 0]: give {meaning}, e.g. [0, 0, 1] for z "
+                         "(any length)")
 
 
 class TorusPart(_Solid):
@@ -306,7 +309,7 @@ class TorusPart(_Solid):
 
     @model_validator(mode="after")
     def _checks(self):
-        _nonzero(self.axis, "axis")
+        _nonzero(self.axis, "axis", "the direction of the ring's axis of symmetry")
         if self.minor_radius > self.major_radius:
             raise ValueError(f"minor_radius: must not exceed major_radius ({self.minor_radius!r} > "
                              f"{self.major_radius!r}; the tube would pass through the axis)")
@@ -323,7 +326,7 @@ class HemispherePart(_Solid):
 
     @model_validator(mode="after")
     def _checks(self):
-        _nonzero(self.axis, "axis")
+        _nonzero(self.axis, "axis", "the direction from the flat face into the dome")
         return self
 
 
@@ -404,11 +407,22 @@ class BodySpec(_Strict):
 
     @model_validator(mode="after")
     def _unique_names(self):
+        """Part names are distinct, also after Unicode normalisation (NFC): two names that differ
+        only in how an accent is encoded look the same in every table and path."""
+        import unicodedata
+
         seen: dict[str, int] = {}
         for i, part in enumerate(self.parts):
             if part.name is None:
                 continue
-            if part.name in seen:
-                raise ValueError(f"parts[{i}] ({part.name}): name: duplicate part name (also parts[{seen[part.name]}])")
-            seen[part.name] = i
+            key = unicodedata.normalize("NFC", part.name)
+            if key in seen:
+                first = seen[key]
+                how = "also" if self.parts[first].name == part.name else \
+                    "written with other Unicode code points but looking the same as"
+                free = next(f"{part.name}-{n}" for n in range(2, len(self.parts) + 3)
+                            if unicodedata.normalize("NFC", f"{part.name}-{n}") not in seen)
+                raise ValueError(f"parts[{i}] ({part.name}): name: duplicate part name: {part.name!r} is {how} the name "
+                                 f"of parts[{first}]; each part needs its own name (e.g. {free!r}) or none")
+            seen[key] = i
         return self

@@ -111,9 +111,9 @@ def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassE
         offset = com - np.asarray(part.about, dtype=float)
         inertia = parallel_axis_to_com(inertia, part.mass, offset)
         if not np.all(np.isfinite(inertia)) or not np.isfinite(np.sum(np.abs(inertia))):
-            raise ValueError(f"about: numbers too large: moving the inertia {float(np.max(np.abs(offset))):.3g} "
-                             f"from `about` to the centre of mass overflows (beyond {np.finfo(float).max:.3g}); "
-                             "`about` is the point the inertia is taken about, near the part")
+            raise ValueError(f"about: numbers too large: moving the inertia from `about`, "
+                             f"{float(np.max(np.abs(offset))):.3g} away, to the centre of mass overflows (beyond "
+                             f"{np.finfo(float).max:.3g}); `about` is the point the inertia was taken about, near the part")
         problem = inertia_problem(inertia, scale=0.5 * float(np.trace(given)))
         if problem is not None:
             shift = float(part.mass) * float(offset @ offset)
