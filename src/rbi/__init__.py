@@ -21,12 +21,17 @@ rendering).
 
 __version__ = "0.1.0"
 
-__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "SpecError", "__version__"]
+__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "sweep", "SpecError",
+           "__version__"]
 
 _API_NAMES = frozenset(__all__) - {"__version__"}
 
 
 def __getattr__(name: str):
+    if name == "sweep":  # the package rbi.sweep, callable as rbi.api.sweep (see its docstring)
+        import importlib
+
+        return importlib.import_module("rbi.sweep")
     if name in _API_NAMES:
         from rbi import api
 

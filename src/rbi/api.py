@@ -26,7 +26,7 @@ import numpy as np
 
 from rbi.errors import InputError as SpecError
 
-__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "SpecError"]
+__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "sweep", "SpecError"]
 
 Point = Any
 """A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates
@@ -475,6 +475,78 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
     return Trajectory(t=columns["t"], q=run.trajectory.q, omega=run.trajectory.omega,
                       tilt_deg=columns["tilt_deg"], precession_deg=columns["precession_deg"],
                       energy=columns["energy"], summary=run.summary)
+
+
+def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
+          tilt: float | str | Sequence[float] | None = None, vary: dict[str, Any] | Sequence[str] | None = None,
+          runs: int = 1, seed: int = 0, duration: float = 4.0, samples: int = 481, rtol: float = 1e-12,
+          gravity: float | None = None, tilt_axis: str = "y", max_steps: int | None = None,
+          workers: int | None = None, mass_properties: bool = False, check_budget: bool = True) -> list[dict]:
+    """Many simulations of one body — a grid over spin, tilt and numbers of the spec, or Monte
+    Carlo draws — as ``rbi sweep`` runs them (on every core). One failed run never stops the
+    others: its row says why in ``status``.
+
+    Args:
+        body: the :class:`Body` (its spec is varied; files it names are read beside its path).
+        spin: initial spin about the body z axis, rad/s: one value, ``(start, stop, count)`` or
+            the text ``"START:STOP:COUNT"``; None for 0.
+        tilt: initial tilt, degrees, given the same way; None for 0.
+        vary: numbers of the spec to vary: ``{"parts.bolt.mass": (0.01, 0.03, 5)}`` (a grid),
+            ``{"parts.bolt.position[0]": "normal(0.04, 0.001)"}`` or ``"uniform(LOW,HIGH)"``
+            (draws, with ``runs``); or a list of ``"PATH=RANGE"`` texts as ``--vary`` takes.
+        runs: Monte Carlo draws of every ``normal``/``uniform`` variation per grid point.
+        seed: seed of the draws (same seed, same rows).
+        duration, samples, rtol, gravity, tilt_axis, max_steps: as :func:`simulate` (per run).
+        workers: cores to use (None: all).
+        mass_properties: simulate nothing; each row gives the mass properties (mass, centre of
+            mass, principal moments, principal-axis tilts) at the varied values.
+        check_budget: refuse a sweep estimated to exceed rbi's step budget (about four hours
+            of one core) before it starts.
+
+    Returns:
+        One dict per run, in run order: ``run``, the swept values (``spin``, ``tilt_deg``, each
+        varied path) and the results — ``max_tilt_deg``, ``final_tilt_deg``, ``min_tilt_deg``,
+        ``precession_rate_deg_s``, ``energy_drift``, ``steps``, ``status`` (``"ok"`` or why the
+        run failed); with ``mass_properties``, ``mass``, ``com_*``, ``moment_*`` and
+        ``axis_*_tilt_deg`` instead.
+
+    Raises:
+        SpecError: a setting or a variation is invalid (named as the CLI's option), or the
+            sweep has more than 100,000 runs (``rbi sweep --out`` streams larger ones to a file).
+    """
+    from rbi.sweep.study import Study, SweepSettings, check_mass_properties, check_settings
+
+    if not isinstance(body, Body):
+        raise SpecError(f"rbi.sweep: expected a Body from rbi.load (got {type(body).__name__})")
+    settings = SweepSettings(spin=_range_text(spin, "--spin"), tilt=_range_text(tilt, "--tilt"),
+                             vary=_vary_texts(vary), runs=runs, seed=seed, duration=duration, samples=samples,
+                             rtol=rtol, gravity=gravity, tilt_axis=tilt_axis, max_steps=max_steps, workers=workers,
+                             mass_properties=mass_properties, yes=not check_budget)
+    check_settings(settings)
+    check_mass_properties(settings)
+    study = Study(body.path, body._raw, settings)
+    return [dict(zip(study.columns, row)) for row in study.run()]
+
+
+def _range_text(value, option: str) -> str | None:
+    """A sweep axis as ``--spin`` takes it: one value, ``(start, stop, count)`` or the text."""
+    if value is None or isinstance(value, str):
+        return value
+    if isinstance(value, (int, float, np.floating, np.integer)):
+        return repr(float(value))
+    try:
+        start, stop, count = value
+        return f"{float(start)!r}:{float(stop)!r}:{int(count)}"
+    except (TypeError, ValueError):
+        raise SpecError(f"{option}: expected a number, (start, stop, count) or 'START:STOP:COUNT' (got {value!r})") from None
+
+
+def _vary_texts(vary) -> tuple[str, ...]:
+    if vary is None:
+        return ()
+    if isinstance(vary, dict):
+        return tuple(f"{path}={_range_text(value, f'--vary {path}')}" for path, value in vary.items())
+    return tuple(vary)
 
 
 def _vector_text(v) -> str:

@@ -2,10 +2,11 @@
 
 - Throughput: a grid of ``rbi sweep bodies/top.yaml --spin 150:260:100 --tilt 0.01:1:100`` (10⁴
   runs of 4 s at the default rtol; 20 × 10 runs of 0.5 s in a quick run), run in this process
-  through the command itself (``--out`` a CSV), in runs per second. Baselines: the single-run
-  in-process rate (``rbi.sim.api.simulate`` on one run after another, over an evenly spaced
-  sample of the same grid points) times the number of cores (target ≥ 0.8), and a loop of
-  ``rbi simulate FILE --spin S --tilt T`` processes over a sample of the same runs (target ≥ 300×).
+  as the command runs it (:class:`rbi.sweep.study.Study`, rows streamed to a CSV), in runs per
+  second. Baselines: the single-run in-process rate (``rbi.sim.api.simulate`` on one run after
+  another, over an evenly spaced sample of the same grid points) times the number of cores
+  (target ≥ 0.8), and a loop of ``rbi simulate FILE --spin S --tilt T`` processes over a sample
+  of the same runs (target ≥ 300×).
 - Memory: a child ``rbi sweep`` of 101,000 short runs (0.02 s, 2 samples; 10⁴ in a quick run),
   more than the 10⁵ rows ``rbi sweep`` keeps in memory to print, streaming to ``--out``; its
   resident memory is sampled while it runs, against the rows written so far, and its peak is
@@ -16,8 +17,6 @@
 
 from __future__ import annotations
 
-import contextlib
-import io
 import os
 import subprocess
 import tempfile
@@ -56,13 +55,17 @@ def sample_runs(g: dict, count: int) -> list[tuple[float, float]]:
     return [(spins[k // len(tilts)], tilts[k % len(tilts)]) for k in picks]
 
 
-def _in_process_rbi(args: list[str]) -> None:
-    from rbi.cli.app import app
+def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
+    """The sweep `rbi sweep` runs for this grid (:class:`rbi.sweep.study.Study`), in this process,
+    streaming its rows to the CSV ``out``."""
+    from rbi.files.output import output_target
+    from rbi.spec.load import read_yaml
+    from rbi.sweep.study import Study, SweepSettings, check_settings
 
-    with contextlib.redirect_stdout(io.StringIO()):
-        status = app(args=args, prog_name="rbi", standalone_mode=False)
-    if status not in (None, 0):
-        raise RuntimeError(f"rbi {' '.join(args)}: exit {status}")
+    settings = SweepSettings(spin=_axis_text(g["spin"]), tilt=_axis_text(g["tilt"]), duration=g["duration"], yes=True)
+    check_settings(settings)
+    study = Study(str(spec), read_yaml(spec), settings, rows_printed=False)
+    study.result(study.run(output_target(str(out), "--out", ("csv", "parquet"), inputs=[str(spec)])))
 
 
 def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:
@@ -104,7 +107,7 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     runs = g["spin"][2] * g["tilt"][2]
     cpu_start = _cpu_seconds()
     start = time.perf_counter()
-    _in_process_rbi(args)
+    _in_process_sweep(spec, g, out)
     seconds = time.perf_counter() - start
     cpu = _cpu_seconds() - cpu_start
     with open(out, encoding="utf-8") as stream:
