@@ -77,11 +77,12 @@ def _label(source) -> str | None:
 
 
 def load_file(path: str) -> Body:
-    """The body of the spec file at ``path`` (never read as text, whatever it holds)."""
+    """The body of the spec file at ``path`` (never read as text, whatever it holds); ``-``
+    reads one spec from standard input (named ``<stdin>``), as the CLI's FILE ``-``."""
     from rbi.spec import load as spec_load
 
-    raw = spec_load.read_yaml(path)
-    return Body(spec_load.body_from_raw(raw, path), raw)
+    raw = spec_load.read_yaml(path)  # "-" reads standard input
+    return Body(spec_load.body_from_raw(raw, spec_load.spec_label(path)), raw)
 
 
 def _load(source):
@@ -91,12 +92,10 @@ def _load(source):
         return spec_load.body_from_raw(source, "<dict>"), source
     if isinstance(source, str) and ("\n" in source or source == "-"):
         if source == "-":
-            import sys
-
-            label, text = "<stdin>", sys.stdin.read()
+            label, text = spec_load.STDIN_LABEL, spec_load.read_stdin_text()
         else:
-            label, text = "<string>", source
-        raw = spec_load.parse_spec_text(spec_load.check_spec_text(text, label), label)
+            label, text = "<string>", spec_load.check_spec_text(source, "<string>")
+        raw = spec_load.parse_spec_text(text, label)
         return spec_load.body_from_raw(raw, label), raw
     if isinstance(source, (str, os.PathLike)):
         path = os.fspath(source)

@@ -1,7 +1,7 @@
 """`rbi check`: compare the body with the spec's `expect:` block (mass budgets in CI).
 
 Exit 0 when every expectation holds, 1 when any fails, 2 on bad input (including a spec
-without an `expect:` block or with a malformed one).
+without an `expect:` block or with a malformed one); with several files, the worst of these.
 """
 
 from __future__ import annotations
@@ -9,9 +9,8 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
-import typer
 
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile
+from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
 
 
 def compare(quantity: str, expected, actual, tol, unit: str) -> dict[str, Any]:
@@ -78,23 +77,33 @@ def run_checks(body) -> list[dict[str, Any]]:
     return checks
 
 
-def check(file: SpecFile, format: FormatOption = OutputFormat.table) -> None:
+def check(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
     """Compare mass, centre of mass, principal moments and inertia with the spec's `expect:` block.
 
-    Exit 0 when every expectation holds, 1 when any fails (for CI), 2 on bad input.
+    Exit 0 when every expectation holds, 1 when any fails (for CI), 2 on bad input. With
+    several files: 2 if any file is bad input, else 1 if any expectation fails, else 0.
 
     \b
     Examples:
       rbi check robot_link.yaml
       rbi check wheel_with_holes.yaml --format json
+      rbi check specs/*.yaml --format csv
     """
-    from rbi.cli.render import emit
-    from rbi.spec.errors import InputError
-    from rbi.spec.load import load_body
+    from rbi.cli.each_file import report_each
+
+    return report_each(files, check_of, format.value)
+
+
+def check_of(file: str):
+    """What `rbi check` gives for one file (:class:`rbi.cli.each_file.FileReport`); among
+    several files, its CSV row is ``name, units, ok, passed, failed``."""
+    from rbi.cli.each_file import FileReport
+    from rbi.cli.mass_reports import load_body
+    from rbi.errors import InputError
 
     body = load_body(file)
     if body.spec.expect is None:
-        raise InputError(f"{file}: expect: the spec has no `expect:` block, so there is nothing to check "
+        raise InputError(f"{body.path}: expect: the spec has no `expect:` block, so there is nothing to check "
                          f"(see docs/check.md)")
     checks = run_checks(body)
     failed = sum(not c["pass"] for c in checks)
@@ -106,9 +115,9 @@ def check(file: SpecFile, format: FormatOption = OutputFormat.table) -> None:
         "failed": failed,
         "checks": [{k: v for k, v in c.items() if k != "component_deviation"} for c in checks],
     }
-    emit(format.value, result, lambda: _table(body, checks, failed), csv_rows=_csv_rows(checks))
-    if failed:
-        raise typer.Exit(1)
+    summary = {k: result[k] for k in ("name", "units", "ok", "passed", "failed")}
+    return FileReport(result, lambda: _table(body, checks, failed), csv_rows=_csv_rows(checks), summary=summary,
+                      failed=bool(failed))
 
 
 _SHORT = {"mass": "mass", "center_of_mass": "com", "moments": "", "inertia": "I"}

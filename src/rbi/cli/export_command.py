@@ -47,8 +47,8 @@ def export(
     source = load_body(file)
     body = convert_body(source, "m", "kg")
     props = body.props
-    name = body.name or Path(file).stem
-    comment = (f"rbi export of {Path(file).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, "
+    name = body.name or ("body" if file == "-" else Path(file).stem)
+    comment = (f"rbi export of {Path(source.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, "
                f"body axes" + (f"; spec units were {source.length_unit}, {source.mass_unit}"
                                if (source.length_unit, source.mass_unit) != ("m", "kg") else ""))
     xml = export_xml(to.value, props.mass, props.com, props.inertia_com, name=name, document=document,

@@ -1,15 +1,15 @@
-"""Parsing of command-line values (vectors, reference points, rotations) and shared options."""
+"""The options commands share, as typer declares them (their values are parsed in
+:mod:`rbi.cli.option_values`, which needs no typer)."""
 
 from __future__ import annotations
 
-import math
 from enum import Enum
 from typing import Annotated, Optional
 
 import typer
 
+from rbi.cli.option_values import in_output_units, parse_about, parse_rotation  # noqa: F401  (re-exported)
 from rbi.runs.values import parse_vector  # noqa: F401  (re-exported: the commands parse vectors with it)
-from rbi.spec.errors import InputError
 
 
 class OutputFormat(str, Enum):
@@ -22,43 +22,16 @@ FormatOption = Annotated[
     OutputFormat,
     typer.Option("--format", "-f", help="table (for people), json (one object) or csv (header + rows)."),
 ]
-SpecFile = Annotated[str, typer.Argument(help="Body spec (YAML).", show_default=False, metavar="FILE")]
+SpecFile = Annotated[str, typer.Argument(help="Body spec (YAML or JSON); - reads it from standard input.",
+                                         show_default=False, metavar="FILE")]
+SpecFiles = Annotated[list[str], typer.Argument(
+    help="Body specs (YAML or JSON), one or more (shell globs expand to several); - reads one from standard input.",
+    show_default=False, metavar="FILE...")]
 AboutOption = Annotated[
     str,
     typer.Option("--about", "-a", metavar="com|origin|pivot|X,Y,Z",
                  help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units)."),
 ]
-
-
-def parse_about(text: str, body) -> tuple[str, list[float]]:
-    """Resolve ``--about`` against a loaded body: (label, point in body coordinates)."""
-    key = text.strip().lower()
-    if key == "com":
-        return "com", body.props.com.tolist()
-    if key == "origin":
-        return "origin", [0.0, 0.0, 0.0]
-    if key == "pivot":
-        if body.pivot is None:
-            raise InputError(f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none")
-        return "pivot", body.pivot.tolist()
-    try:
-        return "point", parse_vector(text, "--about")
-    except InputError:
-        raise InputError(f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
-                         f"commas, file units), got {text!r}") from None
-
-
-def parse_rotation(text: str) -> tuple[str, float]:
-    """``"y:30"`` -> ``("y", radians(30))``."""
-    axis, sep, angle = text.partition(":")
-    axis = axis.strip().lower()
-    try:
-        degrees = float(angle)
-    except ValueError:
-        degrees = math.nan
-    if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
-        raise InputError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
-    return axis, math.radians(degrees)
 
 
 UnitsOption = Annotated[
@@ -67,19 +40,6 @@ UnitsOption = Annotated[
                  help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
                       "units. Command-line inputs (--about X,Y,Z, --velocity) stay in the file's units."),
 ]
-
-
-def in_output_units(body, units: str | None, *lengths):
-    """The body converted to ``--units`` (unchanged when None), and each of ``lengths`` (points
-    or velocities in the file's length unit, or None) scaled alongside."""
-    if units is None:
-        return body, lengths
-    from rbi.spec.units import convert_body, parse_output_units, scale_factors
-
-    target = parse_output_units(units)
-    factor, _ = scale_factors((body.length_unit, body.mass_unit), target)
-    scaled = tuple(None if v is None else [factor * float(x) for x in v] for v in lengths)
-    return convert_body(body, *target), scaled
 
 
 def plain_argument_help(command) -> None:

@@ -70,7 +70,7 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
                 for i, row in enumerate(value):
                     for j, v in enumerate(row):
                         out[f"{name}_{_XYZ[i]}{_XYZ[j]}"] = v
-        elif isinstance(value, list) and len(value) == 3 and not any(isinstance(v, list) for v in value) and key != "moments":
+        elif isinstance(value, list) and len(value) == 3 and not any(isinstance(v, list) for v in value) and not key.endswith("moments"):
             for axis, v in zip(_XYZ, value):
                 out[f"{name}_{axis}"] = v
         elif isinstance(value, list):

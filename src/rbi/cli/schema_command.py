@@ -62,7 +62,7 @@ def file_problems(path: str) -> list[str]:
     unreadable or malformed YAML, each field the models refuse, then the first problem met
     while building the body (an unphysical custom inertia, a hole removing too much)."""
     from rbi.spec.errors import InputError
-    from rbi.spec.load import read_yaml, validation_messages
+    from rbi.spec.load import read_yaml, spec_label, validation_messages
     from rbi.formats.robot_files import is_robot_file, robot_file_problems
     from rbi.spec.translate import body_from_spec
 
@@ -72,11 +72,11 @@ def file_problems(path: str) -> list[str]:
         raw = read_yaml(path)
     except InputError as exc:
         return [str(exc)]
-    spec, problems = validation_messages(path, raw)
+    spec, problems = validation_messages(spec_label(path), raw)
     if problems:
         return problems
     try:
-        body_from_spec(spec, path)
+        body_from_spec(spec, spec_label(path))
     except InputError as exc:
         return [str(exc)]
     return []

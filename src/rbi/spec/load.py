@@ -114,25 +114,64 @@ def read_spec_text(path: str | Path) -> str:
             data = stream.read(MAX_SPEC_BYTES + 1)
         except OSError as exc:
             raise InputError(f"{path}: cannot read: {exc.strerror or exc}") from None
+    return _spec_text(data, path)
+
+
+def _spec_text(data: bytes, label: str) -> str:
+    """Bytes read from a spec (file or standard input) as text, held to the rules of
+    :func:`read_spec_text`."""
     if len(data) > MAX_SPEC_BYTES:
-        raise InputError(f"{path}: too large (more than {MAX_SPEC_BYTES:,} bytes)")
+        raise InputError(f"{label}: too large (more than {MAX_SPEC_BYTES:,} bytes)")
     if b"\x00" in data:
-        raise InputError(f"{path}: not a text file (binary data)")
+        raise InputError(f"{label}: not a text file (binary data)")
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as exc:
-        raise InputError(f"{path}: not UTF-8 text (byte {exc.start})") from None
+        raise InputError(f"{label}: not UTF-8 text (byte {exc.start})") from None
     if text.startswith("\ufeff"):
         text = text[1:]
     if not text.strip():
-        raise InputError(f"{path}: file is empty")
+        raise InputError(f"{label}: file is empty")
     return text
+
+
+STDIN = "-"
+"""The FILE that means standard input."""
+
+STDIN_LABEL = "<stdin>"
+"""How messages and outputs name a spec read from standard input."""
+
+
+def spec_label(path: str | Path) -> str:
+    """How messages name the spec at ``path``: the path as given, ``<stdin>`` for ``-``."""
+    path = str(path)
+    return STDIN_LABEL if path == STDIN else path
+
+
+def read_stdin_text() -> str:
+    """One spec (YAML or JSON) read from standard input to its end, held to the rules of
+    :func:`read_spec_text` (UTF-8, at most :data:`MAX_SPEC_BYTES`, not empty), named
+    ``<stdin>`` in messages."""
+    import sys
+
+    stream = getattr(sys.stdin, "buffer", None)
+    try:
+        if stream is not None:
+            data = stream.read(MAX_SPEC_BYTES + 1)
+        else:  # a text stream without bytes underneath (a test's StringIO)
+            data = (sys.stdin.read(MAX_SPEC_BYTES + 1) if sys.stdin is not None else "").encode("utf-8")
+    except OSError as exc:
+        raise InputError(f"{STDIN_LABEL}: cannot read: {exc.strerror or exc}") from None
+    return _spec_text(data, STDIN_LABEL)
 
 
 def read_yaml(path: str | Path) -> Any:
     """Parsed YAML of a spec file (see :mod:`rbi.spec.yaml_reader` for what is refused);
-    :class:`InputError` for a missing, empty, binary or malformed file."""
+    :class:`InputError` for a missing, empty, binary or malformed file. ``-`` reads standard
+    input (named ``<stdin>`` in messages)."""
     path = str(path)
+    if path == STDIN:
+        return parse_spec_text(read_stdin_text(), STDIN_LABEL)
     return parse_spec_text(read_spec_text(path), path)
 
 
@@ -279,9 +318,10 @@ def _model_inside(annotation: Any) -> Any:
 
 
 def load_spec(path: str | Path):
-    """Read and validate a spec file; raises :class:`InputError` with the first problem."""
+    """Read and validate a spec file (``-``: standard input); raises :class:`InputError` with
+    the first problem."""
     path = str(path)
-    return spec_from_raw(path, read_yaml(path))
+    return spec_from_raw(spec_label(path), read_yaml(path))
 
 
 def spec_from_raw(path: str, raw: Any):
@@ -314,12 +354,13 @@ def _first_location(raw: Any) -> tuple[str | None, str | None]:
 
 
 def load_body(path: str | Path) -> LoadedBody:
-    """Read, validate and translate a spec file into core inputs."""
+    """Read, validate and translate a spec file (``-``: standard input, whose files are looked
+    for in the current folder) into core inputs."""
     from rbi.spec.translate import body_from_spec
 
     path = str(path)
     with paused_gc():
-        return body_from_spec(load_spec(path), path)
+        return body_from_spec(load_spec(path), spec_label(path))
 
 
 def body_from_raw(raw: Any, path: str) -> LoadedBody:

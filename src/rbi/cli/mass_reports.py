@@ -1,0 +1,157 @@
+"""What `rbi inertia` and `rbi principal` print for each file, given options already parsed.
+
+No typer here: :mod:`rbi.cli.mass_commands` declares the options, and :mod:`rbi.cli.quick`
+calls these functions directly for a plain command line (start-up time, docs/performance.md).
+Every number is in the spec's units unless ``--units`` asks for others.
+"""
+
+from __future__ import annotations
+
+from typing import Sequence
+
+PRODUCT_SIGNS = ("tensor", "cad")
+
+PRODUCT_SIGN_TITLES = {
+    "tensor": "products −∫xy dm",
+    "cad": "CAD products +∫xy dm",
+}
+
+
+def load_body(file: str):
+    """The body of the spec ``file`` (``-``: standard input) in the core's terms."""
+    from rbi import api
+
+    return api.load_file(file)._loaded
+
+
+def header(body, about_label: str, about_point) -> dict:
+    """The keys every mass-properties result starts with."""
+    return {
+        "name": body.name,
+        "units": body.units,
+        "mass": body.props.mass,
+        "center_of_mass": body.props.com,
+        "about": about_point,
+        "about_label": about_label,
+    }
+
+
+def title(body, what: str) -> str:
+    return f"{body.name or body.path} — {what}"
+
+
+def inertia(files: Sequence[str], about: str = "com", rotate: Sequence[str] | None = None, axis: str | None = None,
+            products: str = "tensor", units: str | None = None, fmt: str = "table") -> int:
+    """`rbi inertia FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
+    import numpy as np
+
+    from rbi.cli.each_file import report_each
+    from rbi.cli.option_values import parse_rotation, parse_vector
+    from rbi.core.inertia import unit_axis
+    from rbi.errors import InputError
+
+    turns = [parse_rotation(r) for r in rotate or []]
+    direction = None
+    if axis is not None:
+        try:
+            direction = unit_axis(np.asarray(parse_vector(axis, "--axis")))
+        except ValueError:
+            raise InputError(f"--axis: must be a non-zero direction X,Y,Z (got {axis!r})") from None
+    return report_each(files, lambda file: _inertia_of(file, about, turns, direction, products, units), fmt)
+
+
+def _inertia_of(file: str, about: str, turns, direction, products: str, units: str | None):
+    import numpy as np
+
+    from rbi.cli.each_file import FileReport
+    from rbi.cli.option_values import in_output_units, parse_about
+    from rbi.cli.render import number
+    from rbi.core.inertia import inertia_about, moment_about_axis, re_express, with_product_sign
+    from rbi.core.rotation import compose_world_rotations
+
+    body = load_body(file)
+    about_label, point = parse_about(about, body)
+    body, (point,) = in_output_units(body, units, point)
+    I = inertia_about(body.props, point)
+    if turns:
+        I = re_express(I, compose_world_rotations(turns))
+    shown = with_product_sign(I, products)
+    result = header(body, about_label, point) | {
+        "frame": "world (rotated)" if turns else "body",
+        "rotations": [f"{a}:{np.degrees(t):g}" for a, t in turns],
+        "products_sign": products,
+        "inertia": shown,
+    }
+    if direction is not None:
+        result |= {"axis": direction, "moment_about_axis": moment_about_axis(I, direction)}
+
+    def table():
+        from rbi.cli import tables
+
+        labels = body.labels
+        frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
+        rows = [
+            ("mass", labels["mass"], number(body.props.mass, 8)),
+            ("centre of mass", labels["length"], tables.vector(body.props.com)),
+            (f"about ({about_label})", labels["length"], tables.vector(point)),
+        ]
+        if direction is not None:
+            rows += [("axis (unit)", "", tables.vector(direction)),
+                     ("moment about axis", labels["inertia"], number(result["moment_about_axis"], 8))]
+        return tables.stack(
+            tables.quantities(title(body, "inertia"), rows),
+            tables.matrix(f"Inertia about {about_label}, {frame}; {PRODUCT_SIGN_TITLES[products]}",
+                          shown, labels["inertia"]),
+        )
+
+    return FileReport(result, table)
+
+
+def principal(files: Sequence[str], about: str = "com", units: str | None = None, fmt: str = "table") -> int:
+    """`rbi principal FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
+    from rbi.cli.each_file import report_each
+
+    return report_each(files, lambda file: _principal_of(file, about, units), fmt)
+
+
+def _principal_of(file: str, about: str, units: str | None):
+    from rbi.cli.each_file import FileReport
+    from rbi.cli.option_values import in_output_units, parse_about
+    from rbi.cli.render import number
+    from rbi.core.inertia import inertia_about, principal_axes, radii_of_gyration
+
+    body = load_body(file)
+    about_label, point = parse_about(about, body)
+    body, (point,) = in_output_units(body, units, point)
+    I = inertia_about(body.props, point)
+    moments, axes = principal_axes(I)
+    radii = radii_of_gyration(moments, body.props.mass)
+    result = header(body, about_label, point) | {"moments": moments, "axes": axes, "radii_of_gyration": radii}
+
+    def table():
+        from rbi.cli import tables
+        from rbi.cli.render import matrix_digits
+
+        labels = body.labels
+        scale, scale_text = matrix_digits(moments)
+        t = tables.titled(f"Principal axes about {about_label} (body frame)")
+        t.add_column("#")
+        t.add_column(tables.unit_header("moment", labels["inertia"], scale_text), justify="right")
+        for c in "xyz":
+            t.add_column(f"axis {c}", justify="right")
+        t.add_column(tables.unit_header("radius of gyration", labels["length"]), justify="right")
+        for i, (m, a, k) in enumerate(zip(moments, axes, radii), start=1):
+            t.add_row(f"I{i}", number(m / scale, 7), *(number(v, 7) for v in a), number(k, 7))
+        return tables.stack(
+            tables.quantities(title(body, "principal"), [
+                ("mass", labels["mass"], number(body.props.mass, 8)),
+                ("centre of mass", labels["length"], tables.vector(body.props.com)),
+                (f"about ({about_label})", labels["length"], tables.vector(point)),
+            ]),
+            t,
+        )
+
+    # CSV: radii numbered like the moments they belong to (radii_of_gyration_1 ...), not _x, _y, _z
+    csv_row = {k: v for k, v in result.items() if k != "radii_of_gyration"}
+    csv_row |= {f"radii_of_gyration_{i}": k for i, k in enumerate(radii, start=1)}
+    return FileReport(result, table, csv_rows=[csv_row])
