@@ -91,7 +91,7 @@ def _sections(only: str | None) -> list[str]:
 
 
 def _check_matplotlib() -> None:
-    from rbi.cli.plot import require_matplotlib
+    from rbi.viz.plots import require_matplotlib
 
     require_matplotlib()
 

@@ -14,22 +14,22 @@ from rbi.spec.errors import InputError
 _VEC = "X,Y,Z"
 
 
-def dynamics(
-    file: SpecFile,
-    omega: Annotated[str, typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity, rad/s.")] = "0,0,0",
-    alpha: Annotated[Optional[str], typer.Option("--alpha", metavar="AX,AY,AZ",
-                                                 help="Angular acceleration, rad/s² (inverse dynamics).")] = None,
-    accel: Annotated[Optional[str], typer.Option("--accel", metavar=_VEC,
-                                                 help="Acceleration of the --about point, length/s² (default 0: a fixed point).")] = None,
-    force: Annotated[Optional[str], typer.Option("--force", metavar=_VEC,
-                                                 help="Applied force, mass·length/s² (forward dynamics).")] = None,
-    torque: Annotated[Optional[str], typer.Option("--torque", metavar=_VEC,
-                                                  help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
-                                                       "Without --force a non-CoM --about point is held (a pivot): "
-                                                       "the force needed to hold it is reported.")] = None,
-    about: AboutOption = "com",
-    format: FormatOption = OutputFormat.table,
-) -> None:
+OmegaOption = Annotated[str, typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity, rad/s.")]
+AlphaOption = Annotated[Optional[str], typer.Option("--alpha", metavar="AX,AY,AZ",
+                                                    help="Angular acceleration, rad/s² (inverse dynamics).")]
+AccelOption = Annotated[Optional[str], typer.Option(
+    "--accel", metavar=_VEC, help="Acceleration of the --about point, length/s² (default 0: a fixed point).")]
+ForceOption = Annotated[Optional[str], typer.Option("--force", metavar=_VEC,
+                                                    help="Applied force, mass·length/s² (forward dynamics).")]
+TorqueOption = Annotated[Optional[str], typer.Option(
+    "--torque", metavar=_VEC, help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
+                                   "Without --force a non-CoM --about point is held (a pivot): "
+                                   "the force needed to hold it is reported.")]
+
+
+def dynamics(file: SpecFile, omega: OmegaOption = "0,0,0", alpha: AlphaOption = None, accel: AccelOption = None,
+             force: ForceOption = None, torque: TorqueOption = None, about: AboutOption = "com",
+             format: FormatOption = OutputFormat.table) -> None:
     """Newton–Euler: force and torque for a given motion (--alpha), or the motion a force and
     torque produce (--force/--torque). All vectors in body axes, at this instant.
 
@@ -38,7 +38,6 @@ def dynamics(
       rbi dynamics robot_link.yaml --alpha 0,0,10 --omega 0,0,2 --about pivot
       rbi dynamics cubesat.yaml --torque 0,0,1e-3 --format json
     """
-    from rbi.core import dynamics as ne
     from rbi.core.inertia import inertia_about
     from rbi.spec.load import load_body
 
@@ -57,34 +56,9 @@ def dynamics(
                          f"double precision (got {about!r})")
     labels = body.labels
     if inverse:
-        a = np.array(parse_vector(alpha, "--alpha"))
-        acc = np.array(parse_vector(accel, "--accel")) if accel else np.zeros(3)
-        if about_label == "com":
-            wrench = ne.newton_euler_com(props.mass, props.inertia_com, w, a, acc)
-        else:
-            wrench = ne.newton_euler_point(props.mass, I_point, r, w, a, acc)
-        motion = {"alpha": a, "point_acceleration": acc}
-        loads = {"force": wrench.force, "torque": wrench.torque}
+        motion, loads = _inverse(props, I_point, r, w, about_label, alpha, accel)
     else:
-        t = np.array(parse_vector(torque, "--torque")) if torque else np.zeros(3)
-        if np.linalg.matrix_rank(I_point) < 3:
-            raise InputError(f"{file}: the inertia about the {about_label} is singular: the body cannot be given an angular acceleration")
-        if force is None and about_label != "com":
-            # The point is held (a pivot): its acceleration is prescribed and the force that
-            # holds it is part of the answer.
-            acc = np.array(parse_vector(accel, "--accel")) if accel else np.zeros(3)
-            a = np.linalg.solve(I_point, t - np.cross(w, I_point @ w) - props.mass * np.cross(r, acc))
-            f = ne.newton_euler_point(props.mass, I_point, r, w, a, acc).force
-            motion = {"alpha": a, "point_acceleration": acc}
-            loads = {"force": f, "torque": t}
-        else:
-            f = np.array(parse_vector(force, "--force")) if force else np.zeros(3)
-            if about_label == "com":
-                result_acc = ne.newton_euler_com_forward(props.mass, props.inertia_com, w, f, t)
-            else:
-                result_acc = ne.newton_euler_point_forward(props.mass, I_point, r, w, f, t)
-            motion = {"alpha": result_acc.angular, "point_acceleration": result_acc.linear}
-            loads = {"force": f, "torque": t}
+        motion, loads = _forward(file, props, I_point, r, w, about_label, force, torque, accel)
     result = {
         "name": body.name, "units": body.units, "mode": "inverse" if inverse else "forward",
         "mass": props.mass, "center_of_mass": props.com, "about": point, "about_label": about_label,
@@ -108,6 +82,43 @@ def dynamics(
         ])
 
     emit(format.value, result, table)
+
+
+def _inverse(props, I_point, r, w, about_label: str, alpha, accel):
+    """The force and torque a given angular acceleration (and acceleration of the point) needs:
+    ``(motion, loads)``."""
+    from rbi.core import dynamics as ne
+
+    a = np.array(parse_vector(alpha, "--alpha"))
+    acc = np.array(parse_vector(accel, "--accel")) if accel else np.zeros(3)
+    if about_label == "com":
+        wrench = ne.newton_euler_com(props.mass, props.inertia_com, w, a, acc)
+    else:
+        wrench = ne.newton_euler_point(props.mass, I_point, r, w, a, acc)
+    return {"alpha": a, "point_acceleration": acc}, {"force": wrench.force, "torque": wrench.torque}
+
+
+def _forward(file, props, I_point, r, w, about_label: str, force, torque, accel):
+    """The motion an applied force and torque produce: ``(motion, loads)``; without a force, a
+    point other than the centre of mass is held and the force holding it is found."""
+    from rbi.core import dynamics as ne
+
+    t = np.array(parse_vector(torque, "--torque")) if torque else np.zeros(3)
+    if np.linalg.matrix_rank(I_point) < 3:
+        raise InputError(f"{file}: the inertia about the {about_label} is singular: the body cannot be given an angular acceleration")
+    if force is None and about_label != "com":
+        # The point is held (a pivot): its acceleration is prescribed and the force that
+        # holds it is part of the answer.
+        acc = np.array(parse_vector(accel, "--accel")) if accel else np.zeros(3)
+        a = np.linalg.solve(I_point, t - np.cross(w, I_point @ w) - props.mass * np.cross(r, acc))
+        f = ne.newton_euler_point(props.mass, I_point, r, w, a, acc).force
+        return {"alpha": a, "point_acceleration": acc}, {"force": f, "torque": t}
+    f = np.array(parse_vector(force, "--force")) if force else np.zeros(3)
+    if about_label == "com":
+        result_acc = ne.newton_euler_com_forward(props.mass, props.inertia_com, w, f, t)
+    else:
+        result_acc = ne.newton_euler_point_forward(props.mass, I_point, r, w, f, t)
+    return {"alpha": result_acc.angular, "point_acceleration": result_acc.linear}, {"force": f, "torque": t}
 
 
 def _load_unit(body, length_power: int) -> str:

@@ -89,7 +89,7 @@ def simulate(file: SpecFile, spin: SpinOption = None, omega: OmegaOption = None,
     if out_target is not None and out_target.is_stdout and format != OutputFormat.csv:
         format = OutputFormat.csv  # the trajectory is what goes to standard output
     if plot is not None:
-        from rbi.cli.plot import require_matplotlib
+        from rbi.viz.plots import require_matplotlib
 
         require_matplotlib()
     settings = dict(spin=spin, omega=omega, tilt_deg=tilt, tilt_axis=tilt_axis, gravity=gravity, duration=duration,
@@ -130,7 +130,7 @@ def _plot(target, body, run, settings: dict) -> None:
     """Draw the run (resampled densely when the method's dense output allows it) at ``target``."""
     from rbi import api
     from rbi.cli.output import write_output
-    from rbi.cli.plot import plot_trajectory
+    from rbi.viz.plots import plot_trajectory
     from rbi.viz.labels import label
 
     shown = run.columns()

@@ -91,7 +91,7 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
     if out_target is not None and out_target.format == "parquet":
         require("pyarrow", "parquet", "--out FILE.parquet")
     if plot is not None:
-        from rbi.cli.plot import require_matplotlib
+        from rbi.viz.plots import require_matplotlib
 
         require_matplotlib()
     if dask is not None:
@@ -151,7 +151,7 @@ class _Progress:
 
 def _plot(target, study, rows) -> None:
     from rbi.cli.output import write_output
-    from rbi.cli.plot import plot_stability_map
+    from rbi.viz.plots import plot_stability_map
 
     if rows is None:
         raise InputError("--plot: the map is drawn from the rows of this run; with more than "

@@ -1,0 +1,47 @@
+"""The run behind `rbi animate`: the motion sampled densely enough to play smoothly, and the
+plain data the page and the GIF are drawn from."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from rbi.errors import InputError
+from rbi.runs.prepare import PreparedRun
+from rbi.runs.simulation import integrate
+
+
+def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], Any, np.ndarray]:
+    """Simulate ``run`` at as many keyframes as its fastest turning needs (at least
+    ``gif_frames``) and assemble the animation's data (:func:`rbi.viz.motion.animation_data`,
+    with its title and legend). Returns ``(data, trajectory, tilt of body z in degrees)``.
+
+    :class:`InputError` when the motion would need more keyframes than a page can play, or is
+    not finite."""
+    from rbi.sim.diagnostics import tilt_deg
+    from rbi.spec.geometry import part_geometry
+    from rbi.viz.labels import label
+    from rbi.viz.motion import MAX_KEYFRAMES, MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframes_needed
+    from rbi.viz.still import part_count
+
+    body, scene, duration = run.body, run.scene, run.duration
+    probe = integrate(run, MIN_KEYFRAMES)
+    fastest = float(np.max(np.linalg.norm(probe.omega, axis=1)))
+    needed = keyframes_needed(duration, fastest)
+    if needed > MAX_KEYFRAMES:
+        raise InputError(f"--duration: {duration:g} s of this motion needs {needed:.3g} keyframes to play "
+                         f"smoothly, more than {MAX_KEYFRAMES}: shorten --duration")
+    count = max(MIN_KEYFRAMES, needed, gif_frames)
+    trajectory = probe if count == MIN_KEYFRAMES else integrate(run, count)
+    if not (np.all(np.isfinite(trajectory.q)) and np.all(np.isfinite(trajectory.omega))):
+        raise InputError(f"{body.path}: the motion is not finite: the input values are too large for double precision")
+    title = (f"{label(body.name or body.path, 30)}: spin {float(np.linalg.norm(run.omega0)):g} rad/s, "
+             f"tilt {run.tilt_deg:g}°")
+    tilts = tilt_deg(trajectory.q)
+    data = animation_data(title, part_geometry(body), scene, trajectory.t, trajectory.q, trajectory.omega, tilts,
+                          body.length_unit)
+    data["legend"] = (f"{part_count(data['parts'])} parts · red line: path of the axis tip over the last "
+                      f"{TRAIL_SECONDS:g} s · lengths in {body.length_unit}"
+                      + (" · on a pivot" if scene.pivoted else " · free body, about its centre of mass"))
+    return data, trajectory, tilts

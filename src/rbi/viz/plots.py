@@ -1,0 +1,172 @@
+"""`rbi simulate --plot`: the path of the body z axis seen from above, tilt (or, for a free body,
+each principal axis's turn) against time, ω and the energy drift; `rbi sweep --plot`: the
+stability map.
+
+matplotlib is an optional extra (``pip install '.[plot]' from rbi's source folder, or pip install matplotlib``); it is imported only here.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from rbi.spec.errors import InputError
+from rbi.viz.labels import MAX_LABEL_CHARS, label, plain
+
+
+def require_matplotlib() -> None:
+    """InputError with the install command when matplotlib is missing."""
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        raise InputError("--plot: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib") from None
+
+
+def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
+    """``v`` (body frame) turned into world axes by each unit quaternion [w, x, y, z] of ``q``
+    (N, 4): v + 2w (u × v) + 2 u × (u × v) with u = (x, y, z)."""
+    v = np.broadcast_to(np.asarray(v, dtype=float), (len(q), 3))
+    w, u = q[:, :1], q[:, 1:]
+    uv = np.cross(u, v)
+    return v + 2.0 * w * uv + 2.0 * np.cross(u, uv)
+
+
+def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", format: str = "png", *,
+                    principal_axes=None, inertia=None, energy_unit: str = "J") -> None:
+    """Four panels saved at ``path``: the path of the body z axis's tip seen from above,
+    coloured by time; the tilt of that axis against time (a top) or, when ``principal_axes``
+    (body frame, rows, ascending moments) and the ``inertia`` about the centre of mass (body
+    axes) are given (a free body), the angle between each principal axis and the angular
+    momentum (fixed in space), where a flip of the intermediate axis shows as a swing from
+    0° to 180°; the body-frame ω components; and the drift of the total energy."""
+    require_matplotlib()
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.collections import LineCollection
+    from matplotlib.ticker import MaxNLocator
+
+    t = np.asarray(columns["t"], dtype=float)
+    q = np.column_stack([columns[k] for k in ("qw", "qx", "qy", "qz")])
+    tip = rotate_by_quaternions(q, [0.0, 0.0, 1.0])  # unit body z axis, world frame
+    fig, axes = plt.subplots(2, 2, figsize=(12, 8.4), gridspec_kw={"width_ratios": [1.45, 1]})
+    (angle_ax, above), (omega_ax, energy_ax) = axes
+
+    if principal_axes is None:
+        angle_ax.plot(t, columns["tilt_deg"], lw=1.0, color="#1f77b4")
+        angle_ax.set_ylabel("tilt of body z axis from vertical [deg]")
+        top = float(np.max(columns["tilt_deg"])) if t.size else 0.0
+        angle_ax.set_ylim(-0.05 * max(top, 1.0), 1.1 * max(top, 1.0))
+    else:
+        omega0 = np.array([columns["wx"][0], columns["wy"][0], columns["wz"][0]])
+        momentum = rotate_by_quaternions(q[:1], np.asarray(inertia, dtype=float) @ omega0)[0]
+        direction = momentum / (np.linalg.norm(momentum) or 1.0)
+        for k, (axis, colour) in enumerate(zip(np.asarray(principal_axes, dtype=float), ("#d62728", "#2ca02c", "#1f77b4"))):
+            world = rotate_by_quaternions(q, axis)
+            angle = np.degrees(np.arccos(np.clip(world @ direction, -1.0, 1.0)))
+            name = ("smallest", "intermediate", "largest")[k]
+            angle_ax.plot(t, angle, lw=1.1, color=colour, label=f"axis of the {name} moment (I{k + 1})")
+        angle_ax.set_ylim(-5, 185)
+        angle_ax.set_yticks([0, 45, 90, 135, 180])
+        angle_ax.set_ylabel("angle to the angular momentum [deg]")
+        angle_ax.legend(loc="upper right", fontsize=8, framealpha=0.9)
+    angle_ax.set_xlabel("time [s]")
+    angle_ax.grid(alpha=0.3)
+
+    # the tip of the body z axis seen from above, coloured by time
+    x, y = tip[:, 0], tip[:, 1]
+    reach = float(np.max(np.hypot(x, y))) if t.size else 0.0
+    extent = max(1.15 * reach, np.sin(np.radians(1.0)))  # an upright top still gets a readable frame
+    if t.size > 1:
+        segments = np.stack((np.column_stack((x[:-1], y[:-1])), np.column_stack((x[1:], y[1:]))), axis=1)
+        line = LineCollection(segments, cmap="viridis", linewidths=1.0)
+        line.set_array(0.5 * (t[:-1] + t[1:]))
+        above.add_collection(line)
+        fig.colorbar(line, ax=above, label="time [s]", fraction=0.046, pad=0.04)
+    above.plot(x[:1], y[:1], "o", ms=11, mfc="none", mec="black", mew=1.6, label=f"start (t = {t[0]:g} s)")
+    above.plot(x[-1:], y[-1:], "s", ms=5, color="#d62728", label=f"end (t = {t[-1]:g} s)")
+    if reach < 1e-9:
+        above.text(0.5, 0.12, "the axis stays vertical", transform=above.transAxes, ha="center", fontsize=9)
+    above.set_xlim(-extent, extent)
+    above.set_ylim(-extent, extent)
+    above.xaxis.set_major_locator(MaxNLocator(5))
+    above.yaxis.set_major_locator(MaxNLocator(5))
+    above.set_aspect("equal")
+    above.set_xlabel("world x (tip of the unit body z axis)")
+    above.set_ylabel("world y")
+    above.set_title("body z axis seen from above", fontsize=10)
+    above.legend(loc="upper left", fontsize=8, framealpha=0.9)
+    above.grid(alpha=0.3)
+
+    for key, colour in (("wx", "#d62728"), ("wy", "#2ca02c"), ("wz", "#1f77b4")):
+        omega_ax.plot(t, columns[key], lw=0.9, color=colour, label=f"ω{key[1]}")
+    omega_ax.set_xlabel("time [s]")
+    omega_ax.set_ylabel("ω in body axes [rad/s]")
+    omega_ax.legend(loc="upper right", fontsize=8, ncols=3, framealpha=0.9)
+    omega_ax.grid(alpha=0.3)
+
+    energy = np.asarray(columns["energy"], dtype=float)
+    drift = energy - energy[0]
+    scale = float(np.max(np.abs(energy))) or 1.0
+    energy_ax.plot(t, drift, lw=0.9, color="#444444")
+    energy_ax.set_xlabel("time [s]")
+    energy_ax.set_ylabel(f"energy − initial energy [{energy_unit}]")
+    energy_ax.set_title(f"energy drift (largest {np.max(np.abs(drift)) / scale:.1e} of |E|)", fontsize=10)
+    energy_ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
+    energy_ax.grid(alpha=0.3)
+    if title:
+        plain(fig.suptitle(label(title, 2 * MAX_LABEL_CHARS)))
+    fig.tight_layout()
+    fig.savefig(path, format=format, dpi=110)
+    plt.close(fig)
+
+
+def plot_stability_map(xs, ys, values, path: str, x_label: str, y_label: str | None, threshold: float | None = None,
+                       title: str = "", format: str = "png") -> None:
+    """The largest tilt of each run (log colour scale) over one or two swept axes, saved at
+    ``path``. With one axis: tilt against it. ``threshold``: the sleeping-top spin (rad/s),
+    drawn as a vertical line on a spin axis."""
+    require_matplotlib()
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    from matplotlib.colors import LogNorm
+
+    xs = np.asarray(xs, dtype=float)
+    values = np.array([np.nan if v is None else float(v) for v in values])
+    finite = np.isfinite(values)
+    fig, ax = plt.subplots(figsize=(8, 5.2))
+    if ys is None:
+        ax.semilogy(xs[finite], np.maximum(values[finite], 1e-6), "o-", ms=3, lw=1)
+        ax.set_ylabel("largest tilt [deg]")
+        if np.any(~finite):
+            ax.plot(xs[~finite], np.full(int(np.sum(~finite)), ax.get_ylim()[0]), "x", color="red", label="failed run")
+    else:
+        ys = np.asarray(ys, dtype=float)
+        positive = values[finite & (values > 0)]
+        low = max(float(np.min(positive)), 1e-6) if positive.size else 1e-3
+        high = max(float(np.max(positive)), low * 10) if positive.size else 1.0
+        x_values, y_values = np.unique(xs), np.unique(ys)
+        if x_values.size > 1 and y_values.size > 1 and x_values.size * y_values.size == xs.size:
+            grid = np.full((y_values.size, x_values.size), np.nan)
+            grid[np.searchsorted(y_values, ys), np.searchsorted(x_values, xs)] = np.where(finite, np.maximum(values, low), np.nan)
+            mesh = ax.pcolormesh(x_values, y_values, grid, norm=LogNorm(low, high), shading="nearest", cmap="viridis")
+        else:
+            mesh = ax.scatter(xs[finite], ys[finite], c=np.maximum(values[finite], low), norm=LogNorm(low, high),
+                              cmap="viridis", s=18)
+        if np.any(~finite):
+            ax.plot(xs[~finite], ys[~finite], "x", color="red", label="failed run")
+        fig.colorbar(mesh, ax=ax, label="largest tilt [deg] (log scale)")
+        plain(ax.set_ylabel(label(y_label, 2 * MAX_LABEL_CHARS)))
+    if threshold is not None and np.isfinite(threshold):
+        ax.axvline(threshold, color="white" if ys is not None else "black", ls="--", lw=1.2,
+                   label=f"sleeping-top threshold {threshold:.4g} rad/s (closed form)")
+    plain(ax.set_xlabel(label(x_label, 2 * MAX_LABEL_CHARS)))
+    if ax.get_legend_handles_labels()[0]:
+        ax.legend(loc="lower left", fontsize=8, framealpha=0.85)
+    if title:
+        plain(ax.set_title(label(title, 2 * MAX_LABEL_CHARS)))
+    fig.tight_layout()
+    fig.savefig(path, format=format, dpi=120)
+    plt.close(fig)
