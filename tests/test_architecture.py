@@ -182,3 +182,13 @@ def test_the_size_rules_see_what_they_measure(tmp_path):
     assert long_functions(tmp_path, MAX_CLI_FUNCTION_LINES) == [("probe.py", "long", 71)]
     cli, total = package_lines()
     assert 0 < cli < total and total > 10_000
+
+
+def test_the_api_module_imports_nothing_heavy():
+    """``rbi.api`` is imported by every command that loads a spec: its heavy dependencies (the
+    spec models, the integrators, the terminal) are imported inside the functions that use them."""
+    code = ("import sys, rbi.api; print(sorted({m.split('.')[0] for m in sys.modules} & "
+            "{'scipy', 'pydantic', 'yaml', 'typer', 'rich', 'click', 'matplotlib', 'trimesh'}))")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == "[]"
