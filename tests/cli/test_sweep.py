@@ -119,6 +119,7 @@ def test_a_run_past_its_step_budget_fails_alone():
 
 def test_dask_local_cluster_gives_the_same_rows_in_the_same_order(tmp_path):
     pytest.importorskip("distributed")
+    pytest.importorskip("cryptography")  # the local cluster's private TLS certificates
     args = ["sweep", str(BOLTED), "--spin", "150:250:5", "--tilt", "0:2:2", "--duration", "0.3", "--format", "csv"]
     local = subprocess.run([sys.executable, "-m", "rbi", *args], capture_output=True, text=True, timeout=120)
     remote = subprocess.run([sys.executable, "-m", "rbi", *args, "--dask", "local", "--workers", "2"],

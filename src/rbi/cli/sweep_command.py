@@ -96,6 +96,10 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
         require_matplotlib()
     if dask is not None:
         require("distributed", "dask", "--dask")
+    if dask == "local":
+        require("cryptography", "dask", "--dask local")  # its private TLS certificates
+    if workers is not None and dask in (None, "local"):
+        settings = _clamped_workers(settings)
     study = Study(file, read_yaml(file), settings, rows_printed=out is None)
     rows = _run(study, out_target, resume, out)
     result = study.result(rows)
@@ -112,6 +116,20 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
         sys.stdout.write(to_csv(result.get("runs", [])))
         return
     emit(format.value, result, lambda: _table(result, study.columns, rows, file))
+
+
+def _clamped_workers(settings):
+    """--workers above the cores this process may use: say so, and use the cores."""
+    import dataclasses
+
+    from rbi.sweep.execute import available_cores, usable_workers
+
+    if usable_workers(settings.workers) >= settings.workers:
+        return settings
+    from rbi.cli.terminal import say
+
+    say(f"--workers {settings.workers}: this machine gives rbi {available_cores()} cores; using {available_cores()}")
+    return dataclasses.replace(settings, workers=usable_workers(settings.workers))
 
 
 def _run(study, out_target, resume: bool, out: str | None):

@@ -28,6 +28,7 @@ def run_local(compute: Callable[[int, int, int], Rows], ranges, threads: int, on
     """Each range through ``compute(a, b, threads)`` (whose kernel call spreads the runs over
     ``threads`` cores). Two chunks are in flight, so that one chunk's Python work (building
     bodies, summarising) overlaps the other's integration; rows are delivered in order."""
+    threads = usable_workers(threads)
     with ThreadPoolExecutor(max_workers=2, thread_name_prefix="rbi-sweep") as pool:
         pending: deque = deque()
         try:
@@ -42,20 +43,28 @@ def run_local(compute: Callable[[int, int, int], Rows], ranges, threads: int, on
                 future.cancel()
 
 
+CONNECT_SECONDS = 10.0
+"""How long ``--dask ADDRESS`` waits for a scheduler to answer (connection and handshake)."""
+
+
+def usable_workers(requested: int | None) -> int:
+    """Processes or threads to run on: ``requested`` (default: every core), at most the cores
+    this process may use — more would only compete for them, and thousands of threads or
+    processes can fail to start (an OpenMP runtime aborts then)."""
+    return min(requested or available_cores(), available_cores())
+
+
 def run_dask(compute: Callable[[int, int, int], Rows], ranges, address: str, on_rows: Callable[[Rows], None],
              workers: int | None = None) -> None:
     """Each range as a task on the Dask distributed scheduler at ``address`` (``"local"``
-    starts a LocalCluster of ``workers`` single-threaded processes, default one per core).
-    At most four tasks per worker thread are in flight; rows are delivered in run order."""
-    from dask.distributed import Client, LocalCluster
-
+    starts a private local cluster of ``workers`` single-threaded processes, default one per
+    core: see :func:`local_cluster`). At most four tasks per worker thread are in flight; rows
+    are delivered in run order."""
     cluster = None
     if address == "local":
-        cluster = LocalCluster(n_workers=workers or available_cores(), threads_per_worker=1, processes=True,
-                               dashboard_address=None, silence_logs=50)
-        client = Client(cluster)
+        cluster, client = local_cluster(usable_workers(workers))
     else:
-        client = Client(address, timeout="20s")
+        client = connect(address)
     try:
         compute_remote = client.scatter(compute, broadcast=True, hash=False)
         slots = 4 * max(1, sum(client.nthreads().values()))
@@ -67,9 +76,108 @@ def run_dask(compute: Callable[[int, int, int], Rows], ranges, address: str, on_
         while pending:
             on_rows(pending.popleft().result())
     finally:
-        client.close()
+        _quietly_close(client, cluster)
+
+
+def local_cluster(workers: int):
+    """A LocalCluster only this run can use, and its client.
+
+    Every connection between the scheduler, the nannies, the workers and this client is TLS
+    with mutual authentication by throw-away certificates made for this run
+    (``Security.temporary()``, held in memory), all bound to 127.0.0.1: a client without them
+    (another local user, a browser) gets nowhere. The scheduler's and workers' HTTP servers
+    (dashboard, metrics, health, the proxy) are stopped as soon as they are up and serve no
+    route meanwhile. The workers ignore Ctrl-C: the terminal's SIGINT reaches the whole process
+    group, and this process shuts them down itself (one line, no traceback from each)."""
+    import signal
+
+    import dask
+    from distributed import Client, LocalCluster
+    from distributed.security import Security
+
+    security = Security.temporary()
+    quiet_http = {"distributed.scheduler.http.routes": [], "distributed.worker.http.routes": []}
+    previous = _ignore_sigint()
+    try:
+        with dask.config.set(quiet_http):
+            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
+                                   protocol="tls://", security=security, dashboard_address=None,
+                                   silence_logs=50)
+    finally:
+        if previous is not None:
+            signal.signal(signal.SIGINT, previous)
+    client = Client(cluster, security=security, set_as_default=False)
+    _stop_http(cluster.scheduler)
+    client.run(_stop_http_of_worker)
+    return cluster, client
+
+
+def connect(address: str):
+    """A client of the scheduler at ``address``; InputError naming ``--dask`` when none answers
+    within :data:`CONNECT_SECONDS` (refused, unreachable, or a server that accepts and stays
+    silent, on which Dask's own timeout never fires)."""
+    import threading
+
+    from distributed import Client
+
+    from rbi.errors import InputError
+
+    box: dict = {}
+
+    def attempt():
+        try:
+            box["client"] = Client(address, timeout=f"{CONNECT_SECONDS}s", set_as_default=False)
+        except BaseException as exc:  # noqa: BLE001 - reported below, in the caller's thread
+            box["error"] = exc
+
+    thread = threading.Thread(target=attempt, name="rbi-dask-connect", daemon=True)
+    thread.start()
+    thread.join(CONNECT_SECONDS + 2)
+    if "client" in box:
+        return box["client"]
+    error = box.get("error")
+    why = "no answer" if error is None else " ".join(f"{type(error).__name__}: {error}".split())[:160]
+    raise InputError(f"--dask {address}: no Dask scheduler answered there within {CONNECT_SECONDS:g} s ({why})")
+
+
+def _ignore_sigint():
+    """Ignore SIGINT while worker processes start (they inherit it); the previous handler, or
+    None when this is not the main thread."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        return None
+    return signal.signal(signal.SIGINT, signal.SIG_IGN)
+
+
+def _stop_http(server) -> None:
+    http = getattr(server, "http_server", None)
+    if http is not None:
+        http.stop()
+
+
+def _stop_http_of_worker(dask_worker=None) -> None:
+    _stop_http(dask_worker)
+
+
+def _quietly_close(client, cluster) -> None:
+    """Close the client and the local cluster without the log lines and tracebacks Dask prints
+    while its connections go down."""
+    import contextlib
+    import logging
+
+    quiet = logging.getLogger("distributed")
+    level = quiet.level
+    quiet.setLevel(logging.CRITICAL + 1)
+    try:
+        with contextlib.suppress(Exception):
+            client.close()
         if cluster is not None:
-            cluster.close()
+            with contextlib.suppress(Exception):
+                cluster.close()
+    finally:
+        quiet.setLevel(level)
 
 
 def _call(compute, a: int, b: int) -> Rows:
