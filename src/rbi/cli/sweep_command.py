@@ -94,12 +94,7 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
         from rbi.viz.plots import require_matplotlib
 
         require_matplotlib()
-    if dask is not None:
-        require("distributed", "dask", "--dask")
-    if dask == "local":
-        require("cryptography", "dask", "--dask local")  # its private TLS certificates
-    if workers is not None and dask in (None, "local"):
-        settings = _clamped_workers(settings)
+    settings = _where_runs_go(settings)
     study = Study(file, read_yaml(file), settings, rows_printed=out is None)
     rows = _run(study, out_target, resume, out)
     result = study.result(rows)
@@ -118,13 +113,20 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
     emit(format.value, result, lambda: _table(result, study.columns, rows, file))
 
 
-def _clamped_workers(settings):
-    """--workers above the cores this process may use: say so, and use the cores."""
+def _where_runs_go(settings):
+    """The optional packages --dask needs; --workers above the cores this process may use is
+    said, and the cores are used."""
     import dataclasses
 
     from rbi.sweep.execute import available_cores, usable_workers
+    from rbi.sweep.study import require
 
-    if usable_workers(settings.workers) >= settings.workers:
+    if settings.dask is not None:
+        require("distributed", "dask", "--dask")
+    if settings.dask == "local":
+        require("cryptography", "dask", "--dask local")  # its private TLS certificates
+    if settings.workers is None or settings.dask not in (None, "local") or \
+            usable_workers(settings.workers) >= settings.workers:
         return settings
     from rbi.cli.terminal import say
 
