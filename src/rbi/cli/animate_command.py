@@ -69,9 +69,16 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
         write_output(target, html_page(data, speed=speed))
         shown = f"{run.t.size} keyframes"
     else:
+        from rbi.cli.progress import stderr_progress
         from rbi.viz.frames import frame_indices, write_gif
 
-        write_output(target, writer=lambda path: write_gif(data, path, fps=fps))
+        progress = stderr_progress("gif", "frames")
+        try:
+            write_output(target, writer=lambda path: write_gif(data, path, fps=fps,
+                                                                progress=progress.update if progress else None))
+        finally:
+            if progress is not None:
+                progress.close()
         shown = f"{frame_indices(run.t, fps).size} frames"
     print(f"{out}: {shown} over {duration:g} s, largest tilt {float(tilts.max()):.3g}°")
 

@@ -44,7 +44,7 @@ def show(
 
         data["legend"] = (f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
                           "axes · " + " · ".join(a["label"] for a in data["principal_axes"])
-                          + f" · lengths in {body.length_unit}")
+                          + f" · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}")
         write_output(target, html_page(data))
     else:
         from rbi.viz.still import draw_still

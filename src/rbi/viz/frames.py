@@ -68,7 +68,9 @@ def quaternion_matrix_xyzw(q) -> np.ndarray:
 
 
 def _scene_axes(fig, data: dict[str, Any]):
-    """3D axes framed on the body's reach, ground disc and pivot drawn (a top), axes hidden."""
+    """3D axes framed on the heights the body reaches, ground disc (just below the lowest point
+    the body reaches, see :func:`rbi.viz.motion.height_range`) and pivot drawn for a top, axes
+    hidden."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
     size = float(data["size"])
@@ -76,10 +78,12 @@ def _scene_axes(fig, data: dict[str, Any]):
     ax.computed_zorder = False
     ax.view_init(elev=VIEW_ELEVATION_DEG, azim=VIEW_AZIMUTH_DEG)
     reach = 1.05 * size
+    high = (data.get("height_range") or (-size, size))[1]
     if data["pivoted"]:
-        z_low, z_high = -0.05 * size, 1.1 * size
+        ground = float(data.get("ground_z") or 0.0) - 0.002 * size
+        z_low, z_high = ground - 0.05 * size, max(high, 0.0) + 0.1 * size
         angles = np.linspace(0, 2 * np.pi, 97)
-        disc = np.column_stack((1.2 * size * np.cos(angles), 1.2 * size * np.sin(angles), np.zeros_like(angles)))
+        disc = np.column_stack((1.2 * size * np.cos(angles), 1.2 * size * np.sin(angles), np.full_like(angles, ground)))
         ax.add_collection3d(Poly3DCollection([disc], facecolors=(0.85, 0.86, 0.89, 1.0), edgecolors="none",
                                              zorder=0))
         ax.scatter([0], [0], [0], color="black", s=14, zorder=3)
@@ -151,11 +155,16 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
         plt.close(fig)
 
 
-def write_gif(data: dict[str, Any], path: str, fps: int = 25) -> None:
-    """A looping GIF that plays ``data`` in real time at ``fps`` frames per second."""
+def write_gif(data: dict[str, Any], path: str, fps: int = 25, progress=None) -> None:
+    """A looping GIF that plays ``data`` in real time at ``fps`` frames per second.
+    ``progress(done, total)``, if given, is called after each frame is drawn."""
     from PIL import Image
 
-    images = [Image.fromarray(frame).quantize(colors=GIF_COLOURS, method=Image.Quantize.MEDIANCUT)
-              for frame in render_frames(data, frame_indices(data["times"], fps))]
+    indices = frame_indices(data["times"], fps)
+    images = []
+    for frame in render_frames(data, indices):
+        images.append(Image.fromarray(frame).quantize(colors=GIF_COLOURS, method=Image.Quantize.MEDIANCUT))
+        if progress is not None:
+            progress(len(images), len(indices))
     images[0].save(path, format="GIF", save_all=True, append_images=images[1:], duration=round(1000 / fps),
                    loop=0, optimize=True, disposal=1)

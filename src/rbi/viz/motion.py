@@ -69,6 +69,7 @@ def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndar
     axis = marked_axis(scene)
     tip = axis * size
     trace = np.array([quaternion_to_matrix(qi) @ tip for qi in q])
+    low, high = height_range(parts, size, q)
     return {
         "title": title,
         "length_unit": length_unit,
@@ -83,7 +84,51 @@ def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndar
         "omega": np.linalg.norm(omega, axis=1).tolist(),
         "trace": trace.tolist(),
         "trail_seconds": TRAIL_SECONDS,
+        # the ground (a top only) just below the lowest point the body reaches: a hanging
+        # pendulum hangs above it, a top stands on it at its pivot
+        "ground_z": min(0.0, low) if scene.pivoted else None,
+        "height_range": [low, high],
     }
+
+
+def drawn_points(parts: list[dict[str, Any]], size: float) -> np.ndarray:
+    """Every corner of the drawn solids (a point mass drawn as its small sphere) and every cloud
+    point, ``(n, 3)``, reduced to the corners of their convex hull (the extreme heights of a
+    turned body are there). Holes add nothing: they lie inside their solid."""
+    from rbi.viz.solids import part_quads
+
+    pieces = [np.zeros((1, 3))]
+    for item in parts:
+        if item["kind"] == "points":
+            pieces.append(np.asarray(item["positions"], dtype=float).reshape(-1, 3))
+        elif not item.get("hole"):
+            quads, _ = part_quads(item, size)
+            pieces.append(quads.reshape(-1, 3))
+    points = np.unique(np.concatenate(pieces), axis=0)
+    if len(points) > 64:
+        from scipy.spatial import ConvexHull, QhullError
+
+        try:
+            points = points[ConvexHull(points).vertices]
+        except (QhullError, ValueError):  # flat or degenerate: every point stays
+            pass
+    return points
+
+
+def height_range(parts: list[dict[str, Any]], size: float, q: np.ndarray) -> tuple[float, float]:
+    """Lowest and highest world z any drawn point of the body reaches over the motion ``q``
+    ((N, 4), [w, x, y, z] body → world; parts placed about the origin the body turns about)."""
+    points = drawn_points(parts, size)
+    q = np.asarray(q, dtype=float)
+    w, x, y, z = (q / np.linalg.norm(q, axis=1, keepdims=True)).T
+    # the last row of each rotation matrix: a body point's world height is this row times it
+    heights_of_axes = np.column_stack((2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)))
+    low, high = np.inf, -np.inf
+    chunk = max(1, 2_000_000 // len(points))  # bounded memory for long runs of large meshes
+    for start in range(0, len(heights_of_axes), chunk):
+        heights = points @ heights_of_axes[start: start + chunk].T
+        low, high = min(low, float(heights.min())), max(high, float(heights.max()))
+    return low, high
 
 
 def shifted(item: dict[str, Any], origin: np.ndarray) -> dict[str, Any]:

@@ -2,9 +2,10 @@
 translucent), the centre of mass, the principal axes about it drawn with lengths in proportion
 to their moments, and the pivot.
 
-:func:`view_data` gathers what to draw (body frame, file units, origin at the pivot or at the
-centre of mass); :func:`draw_still` draws it with matplotlib (PNG, SVG); the HTML form is the
-animation page with a single time (:func:`rbi.viz.page.html_page`).
+:func:`view_data` gathers what to draw in the spec's own coordinates (body frame, file units,
+the spec's origin: the ticks read as the YAML does); :func:`draw_still` draws it with
+matplotlib (PNG, SVG); the HTML form is the animation page with a single time
+(:func:`rbi.viz.page.html_page`), with the same legend of parts (:func:`part_legend`).
 """
 
 from __future__ import annotations
@@ -28,29 +29,62 @@ def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivo
               inertia_unit: str) -> dict[str, Any]:
     """What :func:`draw_still` and the page draw, JSON-ready. ``geometry``: from
     :func:`rbi.spec.geometry.part_geometry`; ``com`` and ``pivot`` (or None) body frame;
-    ``inertia_com`` about the centre of mass in body axes. Coordinates are shifted so the pivot
-    (or, without one, the centre of mass) is at the origin; the body is not turned."""
+    ``inertia_com`` about the centre of mass in body axes. Every coordinate is the spec's own
+    (body frame, file units, not shifted or turned), so a picture's ticks match the YAML;
+    ``size``, the scale the page's camera and markers are set by, is the body's reach from the
+    pivot (or, without one, from the centre of mass); ``axes_length`` the length of the drawn
+    x, y, z axes from the spec's origin."""
     from rbi.core.inertia import principal_axes
+    from rbi.viz.motion import drawn_points
 
     com = np.asarray(com, dtype=float)
-    origin = com if pivot is None else np.asarray(pivot, dtype=float)
-    parts = [shifted(item, origin) for item in geometry]
-    size = body_size(parts + [{"kind": "point", "position": (com - origin).tolist()}])
+    parts = [dict(item) for item in geometry]
+    centre = com if pivot is None else np.asarray(pivot, dtype=float)
+    size = body_size([shifted(item, centre) for item in geometry] + [{"kind": "point", "position": (com - centre).tolist()}])
     moments, axes = principal_axes(np.asarray(inertia_com, dtype=float))
     largest = float(np.max(np.abs(moments))) or 1.0
     reach_from_com = body_size([shifted(item, com) for item in geometry])
+    axes_length = 1.15 * float(np.max(np.abs(drawn_points(parts, size)))) or size
     principal = [{"moment": float(m), "direction": axis.tolist(),
                   "half_length": LONGEST_AXIS_FRACTION * reach_from_com * max(abs(float(m)) / largest, 0.08),
                   "label": f"I{k + 1} = {float(m):.4g} {inertia_unit}", "colour": AXIS_COLOURS[k]}
                  for k, (m, axis) in enumerate(zip(moments, axes))]
-    com_shifted = (com - origin).tolist()
     return {
         "title": label(title), "length_unit": length_unit, "pivoted": False, "size": size, "parts": parts,
-        "com": com_shifted, "view_center": com_shifted, "pivot": None if pivot is None else [0.0, 0.0, 0.0],
-        "principal_axes": principal, "axis_tip": com_shifted,
+        "com": com.tolist(), "view_center": com.tolist(),
+        "pivot": None if pivot is None else np.asarray(pivot, dtype=float).tolist(),
+        "principal_axes": principal, "axis_tip": None, "spec_axes": axes_length, "part_legend": part_legend(parts),
         "times": [0.0], "quaternions": [[0.0, 0.0, 0.0, 1.0]], "tilt_deg": [0.0], "omega": [0.0],
-        "trace": [com_shifted], "trail_seconds": 0.0,
+        "trace": [com.tolist()], "trail_seconds": 0.0,
     }
+
+
+def part_legend(parts: list[dict[str, Any]]) -> list[dict[str, Any]]:
+    """One entry per written part, in spec order: ``name`` (as a label: escaped, cut),
+    ``shape``, ``colour`` (as drawn), ``copies`` (a pattern), ``hole``, ``stand_in`` (a custom
+    part drawn as the box of equal inertia). The copies of a pattern are one entry."""
+    from rbi.viz.frames import PALETTE
+
+    entries: dict[int, dict[str, Any]] = {}
+    for index, item in enumerate(parts):
+        part = item.get("part", index)
+        if part in entries:
+            entries[part]["copies"] += 1
+            continue
+        colour = "#333333" if item["kind"] in ("point", "points") else PALETTE[part % len(PALETTE)]
+        entries[part] = {"name": label(item.get("name") or f"parts[{part}]"), "shape": str(item.get("shape", "")),
+                         "colour": HOLE_COLOUR if item.get("hole") else colour, "copies": 1,
+                         "hole": bool(item.get("hole")), "stand_in": bool(item.get("stand_in"))}
+    return list(entries.values())
+
+
+HOLE_COLOUR = "#e03030"
+
+
+def legend_text(entry: dict[str, Any]) -> str:
+    """``name: shape ×copies (hole)`` for one :func:`part_legend` entry."""
+    return (f"{entry['name']}: {entry['shape']}" + (f" ×{entry['copies']}" if entry["copies"] > 1 else "")
+            + (" (hole, subtracted)" if entry["hole"] else "") + (" (box of equal inertia)" if entry["stand_in"] else ""))
 
 
 def part_count(parts: list[dict[str, Any]]) -> int:
@@ -68,7 +102,7 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     from matplotlib.patches import Patch
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-    from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
+    from rbi.viz.frames import HOLE_RGBA, body_mesh, cloud_points
     from rbi.viz.labels import plain, plain_legend
     from rbi.viz.solids import shade
 
@@ -107,26 +141,16 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     handles.append(Line2D([], [], color="black", marker="o", ls="none", label="centre of mass"))
     if data.get("pivot") is not None:
         ax.scatter(*data["pivot"], color="black", s=70, marker="^", depthshade=False, zorder=12)
-        handles.append(Line2D([], [], color="black", marker="^", ls="none", label="pivot (origin of the axes)"))
-    seen_hole, listed = False, set()
-    for index, item in enumerate(data["parts"]):
-        part = item.get("part", index)
-        if item.get("hole"):
-            if not seen_hole:
-                handles.append(Patch(facecolor=HOLE_RGBA, edgecolor="#b02020", label="hole (subtracted)"))
-                seen_hole = True
-            continue
-        if part in listed:
-            continue
-        listed.add(part)
-        if len(listed) <= MAX_LEGEND_PARTS:
-            colour = "#333333" if item["kind"] in ("point", "points") else PALETTE[part % len(PALETTE)]
-            name = label(item.get("name") or f"parts[{part}]")
-            copies = sum(1 for other in data["parts"] if other.get("part", -1) == part)
-            extra = (f" ×{copies}" if copies > 1 else "") + (" (box of equal inertia)" if item.get("stand_in") else "")
-            handles.append(Patch(facecolor=colour, label=f"{name}: {item['shape']}{extra}"))
-    if len(listed) > MAX_LEGEND_PARTS:
-        handles.append(Patch(facecolor="white", label=f"… {part_count(data['parts'])} parts in all"))
+        handles.append(Line2D([], [], color="black", marker="^", ls="none", label="pivot"))
+    entries = data["part_legend"]
+    for entry in entries[:MAX_LEGEND_PARTS]:
+        if entry["hole"]:
+            handles.append(Patch(facecolor=HOLE_RGBA, edgecolor="#b02020", label=legend_text(entry)))
+        else:
+            handles.append(Patch(facecolor=entry["colour"], alpha=0.55 if entry["stand_in"] else 1.0,
+                                 label=legend_text(entry)))
+    if len(entries) > MAX_LEGEND_PARTS:
+        handles.append(Patch(facecolor="white", label=f"… {len(entries)} parts in all"))
     plain_legend(fig.legend(handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5,
                             frameon=False))
     _frame(ax, quads, com, data)
@@ -134,9 +158,8 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     ax.set_xlabel(f"x [{unit}]")
     ax.set_ylabel(f"y [{unit}]")
     ax.set_zlabel(f"z [{unit}]")
-    origin = "the pivot" if data.get("pivot") is not None else "the centre of mass"
-    plain(fig.suptitle(f"{label(data['title'])}\nbody axes, origin at {origin}; principal axes about the centre of "
-                       f"mass, lengths in proportion to their moments", fontsize=10))
+    plain(fig.suptitle(f"{label(data['title'])}\nbody axes and coordinates as in the spec; principal axes about the "
+                       f"centre of mass, lengths in proportion to their moments", fontsize=10))
     fig.savefig(path, format=format, dpi=110)
     plt.close(fig)
 
