@@ -385,6 +385,59 @@ def test_an_interrupted_parquet_sweep_resumes_to_the_rows_of_an_uninterrupted_on
     assert sorted(os.listdir(interrupted_parquet.parent)) == ["part.parquet"]
 
 
+def test_an_edited_spec_is_not_resumed_into_the_old_rows(tmp_path, monkeypatch):
+    spec = tmp_path / "top.yaml"
+    spec.write_bytes(BOLTED.read_bytes())
+    args = [spec, *ARGS[1:]]
+    restore = interrupt_after(monkeypatch, 1)
+    out = tmp_path / "s.csv"
+    assert rbi("sweep", *args, "--out", out).returncode == 130
+    restore()
+    spec.write_bytes(BOLTED.read_bytes().replace(b"0.02", b"0.03", 1))
+    refused_unchanged(out, "spec_sha256", args=args)
+
+
+def test_a_csv_killed_before_its_header_resumes(tmp_path, monkeypatch, reference):
+    restore = interrupt_after(monkeypatch, 0)
+    out = tmp_path / "s.csv"
+    assert rbi("sweep", *ARGS, "--out", out).returncode == 130
+    restore()
+    out.write_bytes(b"")  # what a kill between creating the file and writing its header leaves
+    proc = rbi("sweep", *ARGS, "--out", out, "--resume")
+    assert proc.returncode == 0, proc.stderr
+    assert out.read_bytes() == reference.read_bytes()
+
+
+def test_an_output_name_with_control_characters_stays_one_escaped_line(tmp_path, monkeypatch):
+    restore = interrupt_after(monkeypatch, 1)
+    out = tmp_path / "a\nb\x1b[2J.csv"
+    proc = rbi("sweep", *ARGS, "--out", out)
+    restore()
+    assert proc.returncode == 130 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+    assert "\x1b" not in proc.stderr
+    store.settings_path(out).write_bytes(b"{}")
+    refused_unchanged(out, "other settings")
+
+
+def test_a_fresh_sweep_replaces_an_existing_output_and_keeps_its_mode(tmp_path, reference):
+    out = tmp_path / "s.csv"
+    out.write_text("old rows\n")
+    out.chmod(0o640)
+    proc = rbi("sweep", *ARGS, "--out", out)
+    assert proc.returncode == 0, proc.stderr
+    assert out.read_bytes() == reference.read_bytes() and (out.stat().st_mode & 0o777) == 0o640
+
+
+def test_an_existing_parquet_output_stays_until_the_new_sweep_completes(tmp_path, monkeypatch):
+    pytest.importorskip("pyarrow")
+    out = tmp_path / "s.parquet"
+    out.write_bytes(b"yesterday's rows")
+    restore = interrupt_after(monkeypatch, 1)
+    assert rbi("sweep", *ARGS, "--out", out).returncode == 130
+    restore()
+    assert out.read_bytes() == b"yesterday's rows"
+
+
 # --- item 2: a full disk keeps every finished row, for --resume ---------------------------------
 
 def test_a_full_disk_mid_sweep_is_one_line_and_keeps_whole_chunks(tmp_path, monkeypatch, reference):

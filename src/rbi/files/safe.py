@@ -69,13 +69,13 @@ def kind(mode: int) -> str:
     return "special file"
 
 
-def existing_regular(path: str | os.PathLike, what: str) -> bool:
-    """Whether a regular file of this user stands at ``path`` (False: nothing there).
-    InputError for anything else there: a symbolic link (never followed), a FIFO, a device, a
-    socket, a folder, or a file of another user. ``what`` prefixes the message."""
+def existing_regular(path: str | os.PathLike, what: str, *, own: bool = True) -> bool:
+    """Whether a regular file (of this user, when ``own``) stands at ``path`` (False: nothing
+    there). InputError for anything else there: a symbolic link (never followed), a FIFO, a
+    device, a socket, a folder, or a file of another user. ``what`` prefixes the message."""
     info = _lstat(path, what)
     if info is not None:
-        check_regular(info, path, what)
+        check_regular(info, path, what, own=own)
     return info is not None
 
 
@@ -238,11 +238,11 @@ def beside(out: str | os.PathLike, suffix: str) -> Path:
     return out.with_name(os.fsdecode(b"." + cut + digest + os.fsencode(suffix)))
 
 
-def check_regular(info: os.stat_result, path, what: str) -> None:
-    """InputError unless ``info`` (of ``path``) is a regular file of this user."""
+def check_regular(info: os.stat_result, path, what: str, *, own: bool = True) -> None:
+    """InputError unless ``info`` (of ``path``) is a regular file (of this user, when ``own``)."""
     if not stat.S_ISREG(info.st_mode):
         raise InputError(f"{what}: is a {kind(info.st_mode)}, not a regular file; rbi will not read or replace it")
-    if hasattr(os, "geteuid") and info.st_uid != os.geteuid():
+    if own and hasattr(os, "geteuid") and info.st_uid != os.geteuid():
         raise InputError(f"{what}: belongs to another user (rbi created its own); not used")
 
 

@@ -126,7 +126,7 @@ class SweepOutput:
                            f"{self._label}: settings file {safe.shown(side.name)}")
         if self.format == "csv":
             mode = None
-            if safe.existing_regular(self.path, self._label):
+            if safe.existing_regular(self.path, self._label, own=False):  # an output the user names: replaced
                 mode = os.stat(self.path).st_mode & 0o7777
                 safe.remove(self.path)
             self._fd = safe.create_exclusive(self.path, self._label)
