@@ -195,3 +195,19 @@ def test_any_finite_numbers_give_an_answer_or_one_line_exit_2(tmp_path_factory, 
         one_line_exit_2(proc)
     else:
         assert "NaN" not in proc.stdout and "Infinity" not in proc.stdout, (text, proc.stdout)
+
+
+def test_mjcf_quaternion_of_any_size_turns_the_inertial_frame(tmp_path):
+    """MJCF quats are normalised by the same core helper: [1e200, 0, 0, 1e200] is a quarter
+    turn about z, exactly as [1, 0, 0, 1]."""
+    results = []
+    for quat in ("1 0 0 1", "1e200 0 0 1e200", "1e-200 0 0 1e-200"):
+        path = tmp_path / "robot.xml"
+        path.write_text(f'<mujoco><worldbody><body name="b"><inertial pos="0 0 0" quat="{quat}" mass="1" '
+                        f'diaginertia="1 2 3"/></body></worldbody></mujoco>')
+        proc = run_rbi_inprocess("import", path, "--format", "json")
+        assert proc.returncode == 0, proc.stderr
+        results.append(np.array(json.loads(proc.stdout)["links"][0]["inertia"]))
+    np.testing.assert_allclose(results[0], np.diag([2.0, 1.0, 3.0]), atol=1e-15)  # x and y swapped by the turn
+    for other in results[1:]:
+        np.testing.assert_allclose(other, results[0], atol=1e-15)

@@ -130,3 +130,40 @@ def test_characters_the_font_lacks_are_escapes_not_warnings(write_spec, tmp_path
     proc = run_rbi_inprocess("show", write_spec(spec("名前 🚀", "部品")), "--out", out)
     assert proc.returncode == 0 and proc.stderr == "", proc.stderr
     assert "\\u540d\\u524d" in svg_text(out) and "\\u90e8\\u54c1" in svg_text(out)
+
+
+def test_names_that_look_like_markup_are_text_on_the_page(write_spec, tmp_path):
+    """A name is text on the HTML page: it cannot close the data script or add elements."""
+    import re
+
+    name = "</script><img src=x onerror=alert(1)><!--"
+    out = tmp_path / "body.html"
+    assert run_rbi_inprocess("show", write_spec(spec(name, name)), "--out", out).returncode == 0
+    page = out.read_text(encoding="utf-8")
+    data_text = re.search(r'<script type="application/json" id="data">(.*?)</script>', page, re.S).group(1)
+    assert json.loads(data_text)["part_legend"][0]["name"] == name
+    assert "<img" not in page.split("<script>")[0]  # the head and heading hold no raw name
+
+
+@pytest.mark.parametrize("part", [
+    "{shape: sphere, mass: 1, radius: 1.0e-300, center: [0, 0, 0]}",
+    "{shape: box, mass: 1, size: [1.0e-300, 1, 1], center: [0, 0, 0]}",
+    "{shape: sphere, mass: 1, radius: 1.0e+100, center: [0, 0, 0]}",
+    "{shape: torus, mass: 1, major_radius: 1.0e+150, minor_radius: 1.0e+150, center: [0, 0, 0], axis: [0, 0, 1.0e+300]}",
+    "{shape: point, mass: 1, position: [1.0e+17, 0, 0]}",
+])
+@pytest.mark.parametrize("fmt", ["png", "html"])
+def test_bodies_of_extreme_size_are_drawn(write_spec, tmp_path, part, fmt):
+    text = f"parts:\n  - {part}\n  - {{shape: point, mass: 1, position: [0, 0, 1]}}\n"
+    out = tmp_path / f"body.{fmt}"
+    proc = run_rbi_inprocess("show", write_spec(text), "--out", out)
+    assert proc.returncode == 0, proc.stderr
+    assert out.stat().st_size > 1000
+
+
+def test_an_svg_stays_well_formed_xml_whatever_the_names(write_spec, tmp_path):
+    import xml.etree.ElementTree as ET
+
+    out = tmp_path / "body.svg"
+    assert run_rbi_inprocess("show", write_spec(spec("t-->x<y&z]]>", "a-->b<!--c&d\x85\u2028")), "--out", out).returncode == 0
+    ET.parse(out)  # raises on a comment or text a name broke
