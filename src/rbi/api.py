@@ -13,7 +13,7 @@ run.t, run.q, run.omega        # numpy arrays: s; [w, x, y, z] body → world; b
 Every number is in the spec's own units (``body.units``) unless a name says otherwise: lengths in
 ``units["length"]``, masses in ``units["mass"]``, inertias in mass·length². Points and vectors are
 in the body frame (the spec's coordinates) unless a name says ``world``. Bad input of any kind
-raises :class:`SpecError`, whose ``str()`` is the one line the CLI prints for the same mistake.
+raises `SpecError`, whose ``str()`` is the one line the CLI prints for the same mistake.
 """
 
 from __future__ import annotations
@@ -46,7 +46,7 @@ def load(source: str | os.PathLike | dict, *, allow_outside_paths: bool = False)
             ``--allow-outside-paths``).
 
     Returns:
-        The :class:`Body`.
+        The `Body`.
 
     Raises:
         SpecError: the file is missing or unreadable, the YAML is malformed, or the spec is
@@ -169,9 +169,9 @@ class Momentum:
 
 
 class Body:
-    """A validated rigid body, as :func:`load` returns it.
+    """A validated rigid body, as `load` returns it (not constructed directly).
 
-    All numbers are in the spec's own units (:attr:`units`) and the body frame (the spec's
+    All numbers are in the spec's own units (`units`) and the body frame (the spec's
     coordinates). A Body does not change; every method returns new arrays.
     """
 
@@ -215,7 +215,7 @@ class Body:
         """The reference point ``about`` as (3,) body coordinates, length unit.
 
         ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
-        (:class:`SpecError` when there is none); or a point (x, y, z)."""
+        (`SpecError` when there is none); or a point (x, y, z)."""
         if isinstance(about, str):
             key = about.strip().lower()
             if key == "com":
@@ -239,7 +239,7 @@ class Body:
         """The (3, 3) inertia matrix about a point, mass·length² (tensor sign: ``I_xy = -∫xy dm``).
 
         Args:
-            about: the reference point (see :meth:`point`): ``"com"`` (default), ``"origin"``,
+            about: the reference point (see `point`): ``"com"`` (default), ``"origin"``,
                 ``"pivot"`` or (x, y, z) in body coordinates.
             axes: None for body axes; or turns of the body about world axes, applied in
                 order, as the CLI's ``--rotate`` — a list of ``("x"|"y"|"z", degrees)``;
@@ -265,7 +265,7 @@ class Body:
                          radii_of_gyration=np.asarray(radii_of_gyration(moments, self.mass)), about=point)
 
     def parts(self) -> list[Part]:
-        """Each part's mass properties, in file order (see :class:`Part`)."""
+        """Each part's mass properties, in file order (see `Part`)."""
         from rbi.spec.translate import part_volume
 
         loaded = self._loaded
@@ -291,7 +291,7 @@ class Body:
 
         Args:
             omega: (3,) angular velocity, rad/s, body axes.
-            about: the reference point (see :meth:`point`).
+            about: the reference point (see `point`).
             velocity: (3,) velocity of the centre of mass, length/s, body axes. None: the
                 ``about`` point is fixed and the body turns about it (``v = ω × r``).
         """
@@ -335,7 +335,7 @@ class Body:
 
 
 def _rotation(axes) -> np.ndarray:
-    """A body → world rotation matrix from ``axes`` (see :meth:`Body.inertia`)."""
+    """A body → world rotation matrix from ``axes`` (see `Body.inertia`)."""
     from rbi.core.rotation import compose_world_rotations
 
     array = np.asarray(axes, dtype=object)
@@ -432,7 +432,7 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
     about its centre of mass — the run ``rbi simulate`` makes with the same settings.
 
     Args:
-        body: the :class:`Body`.
+        body: the `Body`.
         spin: initial spin about the body z axis, rad/s (ω = [0, 0, spin]).
         omega: initial angular velocity (3,), body axes, rad/s (instead of ``spin``).
         tilt_deg: the body is turned at t = 0 by this angle (degrees) about the world axis
@@ -451,7 +451,7 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
         progress: called now and then with the fraction done (0…1).
 
     Returns:
-        The :class:`Trajectory`.
+        The `Trajectory`.
 
     Raises:
         SpecError: a setting is out of range (named as the CLI's option, e.g.
@@ -486,7 +486,7 @@ def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
     others: its row says why in ``status``.
 
     Args:
-        body: the :class:`Body` (its spec is varied; files it names are read beside its path).
+        body: the `Body` (its spec is varied; files it names are read beside its path).
         spin: initial spin about the body z axis, rad/s: one value, ``(start, stop, count)`` or
             the text ``"START:STOP:COUNT"``; None for 0.
         tilt: initial tilt, degrees, given the same way; None for 0.
@@ -495,7 +495,7 @@ def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
             (draws, with ``runs``); or a list of ``"PATH=RANGE"`` texts as ``--vary`` takes.
         runs: Monte Carlo draws of every ``normal``/``uniform`` variation per grid point.
         seed: seed of the draws (same seed, same rows).
-        duration, samples, rtol, gravity, tilt_axis, max_steps: as :func:`simulate` (per run).
+        duration, samples, rtol, gravity, tilt_axis, max_steps: as `simulate` (per run).
         workers: cores to use (None: all).
         mass_properties: simulate nothing; each row gives the mass properties (mass, centre of
             mass, principal moments, principal-axis tilts) at the varied values.
