@@ -77,9 +77,12 @@ def test_a_local_cluster_lets_no_credential_less_client_in_and_ctrl_c_is_one_lin
     ran code as the sweep's user through it) and a dashboard on :8787; Ctrl-C printed 67 lines."""
     pytest.importorskip("cryptography")
     out = tmp_path / "d.csv"
+    scratch = tmp_path / "tmp"  # Dask's default scratch space is the fixed $TMPDIR/dask-scratch-space
+    scratch.mkdir()
     proc = subprocess.Popen([sys.executable, "-m", "rbi", "sweep", str(BOLTED), "--spin", "150:250:200000",
                              "--duration", "0.5", "--dask", "local", "--workers", "1", "--out", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
+                            env={**os.environ, "TMPDIR": str(scratch)})
     try:
         deadline = time.monotonic() + 120
         while time.monotonic() < deadline and proc.poll() is None and \
@@ -90,6 +93,7 @@ def test_a_local_cluster_lets_no_credential_less_client_in_and_ctrl_c_is_one_lin
         assert ports, "the cluster listens nowhere: nothing to check"
         assert all(address == "127.0.0.1" for address, _ in ports), ports
         assert 8787 not in {port for _, port in ports}
+        assert [p.name for p in scratch.iterdir() if not p.name.startswith("rbi-dask-")] == []
         assert plain_clients_get_in([f"{scheme}://127.0.0.1:{port}" for _, port in ports
                                      for scheme in ("tcp", "tls")]) == []
         assert [port for _, port in ports if http_answers(port)] == []
@@ -104,6 +108,7 @@ def test_a_local_cluster_lets_no_credential_less_client_in_and_ctrl_c_is_one_lin
     assert err.startswith("rbi: interrupted:") and len(err.strip().splitlines()) == 1, err
     time.sleep(0.5)
     assert not [w for w in workers if w.is_running() and w.status() != psutil.STATUS_ZOMBIE]
+    assert list(scratch.iterdir()) == []  # the private scratch folder is gone too
 
 
 @pytest.fixture

@@ -60,9 +60,9 @@ def run_dask(compute: Callable[[int, int, int], Rows], ranges, address: str, on_
     starts a private local cluster of ``workers`` single-threaded processes, default one per
     core: see :func:`local_cluster`). At most four tasks per worker thread are in flight; rows
     are delivered in run order."""
-    cluster = None
+    cluster = scratch = None
     if address == "local":
-        cluster, client = local_cluster(usable_workers(workers))
+        cluster, client, scratch = local_cluster(usable_workers(workers))
     else:
         client = connect(address)
     try:
@@ -77,17 +77,24 @@ def run_dask(compute: Callable[[int, int, int], Rows], ranges, address: str, on_
             on_rows(pending.popleft().result())
     finally:
         _quietly_close(client, cluster)
+        if scratch is not None:
+            import shutil
+
+            shutil.rmtree(scratch, ignore_errors=True)
 
 
 def local_cluster(workers: int):
-    """A LocalCluster only this run can use, and its client.
+    """A LocalCluster only this run can use, its client, and its private scratch folder (the
+    caller removes it).
 
     Every connection between the scheduler, the nannies, the workers and this client is TLS
     with mutual authentication by throw-away certificates made for this run
     (``Security.temporary()``, held in memory), all bound to 127.0.0.1: a client without them
     (another local user, a browser) gets nowhere. The scheduler's and workers' HTTP servers
     (dashboard, metrics, health, the proxy) are stopped as soon as they are up and serve no
-    route meanwhile. The workers ignore Ctrl-C: the terminal's SIGINT reaches the whole process
+    route meanwhile. The workers' scratch space (spilled data, lock files) is a new private
+    folder (``mkdtemp``), not Dask's fixed ``$TMPDIR/dask-scratch-space``, which another user
+    could create first and plant lock-file links in. The workers ignore Ctrl-C: the terminal's SIGINT reaches the whole process
     group, and this process shuts them down itself (one line, no traceback from each)."""
     import signal
 
@@ -95,21 +102,30 @@ def local_cluster(workers: int):
     from distributed import Client, LocalCluster
     from distributed.security import Security
 
+    import tempfile
+
     security = Security.temporary()
-    quiet_http = {"distributed.scheduler.http.routes": [], "distributed.worker.http.routes": []}
+    scratch = tempfile.mkdtemp(prefix="rbi-dask-")
+    private = {"distributed.scheduler.http.routes": [], "distributed.worker.http.routes": [],
+               "temporary-directory": scratch}
     previous = _ignore_sigint()
     try:
-        with dask.config.set(quiet_http):
+        with dask.config.set(private):
             cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
                                    protocol="tls://", security=security, dashboard_address=None,
-                                   silence_logs=50)
+                                   silence_logs=50, local_directory=scratch)
+    except BaseException:
+        import shutil
+
+        shutil.rmtree(scratch, ignore_errors=True)
+        raise
     finally:
         if previous is not None:
             signal.signal(signal.SIGINT, previous)
     client = Client(cluster, security=security, set_as_default=False)
     _stop_http(cluster.scheduler)
     client.run(_stop_http_of_worker)
-    return cluster, client
+    return cluster, client, scratch
 
 
 def connect(address: str):
