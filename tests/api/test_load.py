@@ -12,7 +12,7 @@ import pytest
 import yaml
 
 import rbi
-from tests.conftest import BODIES, run_rbi
+from tests.conftest import BODIES, run_rbi_inprocess as run_rbi
 
 TOP = BODIES / "top.yaml"
 

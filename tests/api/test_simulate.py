@@ -10,7 +10,14 @@ import numpy as np
 import pytest
 
 import rbi
-from tests.conftest import BODIES, run_rbi
+from tests.conftest import BODIES, run_rbi_inprocess as run_rbi
+
+
+def cli_ok(*args):
+    """`rbi ARGS` run in this process; its output when it succeeds."""
+    proc = run_rbi(*args)
+    assert proc.returncode == 0, proc.stderr
+    return proc
 
 ARGS = ["--spin", "200", "--tilt", "0.01", "--duration", "0.5", "--samples", "101"]
 
@@ -22,7 +29,7 @@ def run():
 
 def test_arrays_equal_the_csv_of_the_cli(run, tmp_path):
     out = tmp_path / "run.csv"
-    run_rbi("simulate", BODIES / "top_bolted.yaml", *ARGS, "--out", out, check=True)
+    cli_ok("simulate", BODIES / "top_bolted.yaml", *ARGS, "--out", out)
     rows = list(csv.DictReader(io.StringIO(out.read_text())))
     column = {name: np.array([float(r[name]) for r in rows]) for name in rows[0]}
     np.testing.assert_array_equal(run.t, column["t"])
@@ -34,7 +41,7 @@ def test_arrays_equal_the_csv_of_the_cli(run, tmp_path):
 
 
 def test_summary_is_what_the_cli_prints(run):
-    printed = json.loads(run_rbi("simulate", BODIES / "top_bolted.yaml", *ARGS, "--format", "json", check=True).stdout)
+    printed = json.loads(cli_ok("simulate", BODIES / "top_bolted.yaml", *ARGS, "--format", "json").stdout)
     summary = json.loads(json.dumps(run.summary, default=lambda v: v.tolist()))
     assert list(summary) == list(printed)
     for key in ("final", "conserved", "stability", "initial", "steps", "tilt_max_deg", "error_estimate"):

@@ -8,7 +8,14 @@ import numpy as np
 import pytest
 
 import rbi
-from tests.conftest import BODIES, run_rbi
+from tests.conftest import BODIES, run_rbi_inprocess as run_rbi
+
+
+def cli_ok(*args):
+    """`rbi ARGS` run in this process; its output when it succeeds."""
+    proc = run_rbi(*args)
+    assert proc.returncode == 0, proc.stderr
+    return proc
 
 
 @pytest.fixture(scope="module")
@@ -17,7 +24,7 @@ def bolted():
 
 
 def cli_runs(*args):
-    proc = run_rbi("sweep", BODIES / "top_bolted.yaml", *args, "--format", "json", "--workers", "1", check=True)
+    proc = cli_ok("sweep", BODIES / "top_bolted.yaml", *args, "--format", "json", "--workers", "1")
     return json.loads(proc.stdout)["runs"]
 
 
