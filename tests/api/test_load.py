@@ -73,3 +73,17 @@ def test_a_dict_that_is_not_a_spec():
         rbi.load({"parts": "nothing"})
     with pytest.raises(rbi.SpecError):
         rbi.load(42)
+
+
+def test_files_a_spec_names_are_read_beside_it_or_beside_the_caller(monkeypatch, tmp_path):
+    bracket = rbi.load(BODIES / "bracket.yaml")  # names the mesh bracket.stl beside it
+    text = (BODIES / "bracket.yaml").read_text()
+    monkeypatch.chdir(BODIES)
+    assert rbi.load(text).mass == bracket.mass  # text: files beside the current folder
+    monkeypatch.chdir(tmp_path)
+    with pytest.raises(rbi.SpecError, match=r"^<string>: parts\[0\] \(bracket\): file: bracket.stl: no such file$"):
+        rbi.load(text)
+    outside = text.replace("file: bracket.stl", f"file: {BODIES / 'bracket.stl'}")
+    with pytest.raises(rbi.SpecError, match="leaves the spec's folder"):
+        rbi.load(outside)
+    assert rbi.load(outside, allow_outside_paths=True).mass == bracket.mass
