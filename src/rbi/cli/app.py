@@ -1,8 +1,9 @@
-"""The typer application: a table of commands loaded on demand, and the entry point that turns
-input errors into one line and exit status 2.
+"""The entry point that turns input errors into one line and exit status 2, and the table of
+commands the typer application (:mod:`rbi.cli.typer_app`) loads on demand.
 
 ``rbi --help`` and ``rbi --version`` load no command module (and so no numpy); ``rbi inertia``
-loads only its own module. Each command module imports its heavy dependencies (scipy, the
+loads only its own module, and a plain ``rbi inertia FILE...`` not even typer
+(:mod:`rbi.cli.quick`). Each command module imports its heavy dependencies (scipy, the
 integrator, matplotlib) inside the command function.
 """
 
@@ -10,11 +11,6 @@ from __future__ import annotations
 
 import os
 import sys
-
-import typer
-from typer.core import TyperGroup
-
-from rbi import __version__
 
 COMMANDS: dict[str, tuple[str, str, str]] = {
     # name: (module, function, the one-line summary `rbi --help` shows)
@@ -36,80 +32,14 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
 }
 
 
-class _LazyGroup(TyperGroup):
-    """A command group that imports a command's module only when that command runs."""
+def __getattr__(name: str):
+    """The typer application and its pieces, built on first use (a plain ``rbi inertia FILE``
+    never needs them: see :mod:`rbi.cli.quick`)."""
+    if name in ("app", "_build_command", "_LazyGroup"):
+        from rbi.cli import typer_app
 
-    def list_commands(self, ctx) -> list[str]:
-        return list(COMMANDS)
-
-    def parse_args(self, ctx, args):
-        from rbi.cli import fast_params
-
-        fast_params.install(self, ctx)
-        return super().parse_args(ctx, args)
-
-    def get_command(self, ctx, cmd_name: str):
-        if cmd_name not in COMMANDS:
-            return None
-        if cmd_name not in self.commands:
-            from rbi.cli import fast_params
-
-            self.commands[cmd_name] = _build_command(cmd_name)
-            fast_params.install(self.commands[cmd_name], ctx)
-        return self.commands[cmd_name]
-
-    def format_commands(self, ctx, formatter) -> None:
-        with formatter.section("Commands"):
-            formatter.write_dl([(name, summary) for name, (_, _, summary) in COMMANDS.items()])
-
-
-def _build_command(name: str):
-    import importlib
-
-    from typer.main import get_command_from_info
-    from typer.models import CommandInfo
-
-    from rbi.cli import fast_params
-
-    fast_params.quiet_pydantic_plugins()
-    module_name, function_name, summary = COMMANDS[name]
-    callback = getattr(importlib.import_module(module_name), function_name)
-    command = get_command_from_info(CommandInfo(name=name, callback=callback, short_help=summary),
-                                    pretty_exceptions_short=True, rich_markup_mode=None)
-    from rbi.cli.options import plain_argument_help
-
-    plain_argument_help(command)
-    return command
-
-
-app = typer.Typer(
-    name="rbi",
-    cls=_LazyGroup,
-    help="Rigid-body calculator: mass properties, principal axes, momentum and motion of a body "
-         "described in a YAML spec. Every command takes --format table|json|csv and --help. "
-         "Files a spec names are read only from the spec's folder unless --allow-outside-paths is given.",
-    no_args_is_help=True,
-    add_completion=False,
-    pretty_exceptions_enable=False,
-    rich_markup_mode=None,
-    context_settings={"help_option_names": ["-h", "--help"]},
-)
-
-
-def _version(value: bool) -> None:
-    if value:
-        print(f"rbi {__version__}")
-        raise typer.Exit()
-
-
-@app.callback()
-def _root(
-    version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Print the version and exit."),
-    allow_outside_paths: bool = typer.Option(
-        False, "--allow-outside-paths",
-        help="Let a spec name files outside its own folder (point clouds, meshes); also accepted after the command."),
-) -> None:
-    """Rigid-body calculator."""
+        return getattr(typer_app, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
 
 
 def _take_flag(argv: list[str], flag: str) -> bool:
@@ -146,8 +76,7 @@ def main() -> None:
 
 
 def _run() -> None:
-    from typer._click import exceptions as click_errors
-
+    from rbi.cli import quick
     from rbi.cli.terminal import Terminated, say
     from rbi.spec.errors import InputError
     from rbi.formats.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
@@ -162,17 +91,21 @@ def _run() -> None:
         args = ["--help"]
     try:
         with outside_paths_allowed(allow_outside):
-            status = app(args=args, prog_name="rbi", standalone_mode=False)
-    except click_errors.UsageError as exc:
-        command = exc.ctx.command_path if exc.ctx is not None else "rbi"
-        say(f"{exc.format_message()} (see `{command} --help`)")
-        sys.exit(2)
-    except typer.Abort:
-        say("aborted")
-        sys.exit(130)
+            status = quick.run(args)  # None: not a plain command line, typer reads it
+            if status is None:
+                from rbi.cli.typer_app import app
+
+                status = app(args=args, prog_name="rbi", standalone_mode=False)
     except InputError as exc:
         say(str(exc))
         sys.exit(2)
+    except _typer_error("UsageError") as exc:  # (the except expressions run only on an error)
+        command = exc.ctx.command_path if exc.ctx is not None else "rbi"
+        say(f"{exc.format_message()} (see `{command} --help`)")
+        sys.exit(2)
+    except _typer_error("Abort"):
+        say("aborted")
+        sys.exit(130)
     except KeyboardInterrupt:
         say("interrupted")
         sys.exit(130)
@@ -190,3 +123,11 @@ def _run() -> None:
     if status == 130:  # typer turns Ctrl-C (KeyboardInterrupt) into a silent exit status 130
         say("interrupted")
     sys.exit(status if isinstance(status, int) else 0)
+
+
+def _typer_error(name: str) -> type:
+    """typer's ``UsageError`` or ``Abort`` (imported only when an error is being handled)."""
+    import typer
+    from typer._click import exceptions
+
+    return exceptions.UsageError if name == "UsageError" else typer.Abort

@@ -28,8 +28,31 @@ _DECIMAL_FLOAT = re.compile(r"[+-]?[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?\Z")
 def quiet_pydantic_plugins() -> None:
     """Skip pydantic's plugin discovery (a scan of every installed package's entry points, paid
     when the first model class is built); rbi uses no pydantic plugin. A value the user set
-    stays."""
+    stays.
+
+    With every plugin disabled, pydantic's plugin loader answers "no plugins" without looking,
+    yet importing it imports :mod:`importlib.metadata` (and the ``email`` package), about a
+    fifth of ``import numpy``'s time; the loader is then replaced, before its first use, by a
+    module whose ``get_plugins`` gives that same answer. A pydantic whose plugin machinery
+    differs (no ``pydantic.plugin._loader``) is left alone."""
+    import sys
+
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "1")
+    name = "pydantic.plugin._loader"
+    if os.environ["PYDANTIC_DISABLE_PLUGINS"] not in ("__all__", "1", "true") or name in sys.modules:
+        return
+    import importlib.util
+
+    try:
+        found = importlib.util.find_spec(name) is not None
+    except ImportError:
+        found = False
+    if found:
+        import types
+
+        loader = types.ModuleType(name, "pydantic's plugin loader while every plugin is disabled (rbi.cli.fast_params)")
+        loader.get_plugins = lambda: ()
+        sys.modules[name] = loader
 
 
 def _fast(annotation: Any, parameter_info: Any, value: Any, ctx: Any) -> tuple[bool, Any]:

@@ -1,18 +1,12 @@
 """`rbi parts`: the body part by part — mass, volume, centre of mass, own inertia and its
 principal moments, share of the body's inertia, and the density each solid implies (a check on
-the spec's units) — with a total row for the whole body."""
+the spec's units) — with a total row for the whole body.
+
+The options are declared here; what it prints for each file is in :mod:`rbi.cli.parts_report`."""
 
 from __future__ import annotations
 
-import math
-
 from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
-
-PLAUSIBLE_DENSITY_KG_M3 = (1.0, 25_000.0)
-"""Densities a solid can have: from aerogels and foams (a few kg/m³) to osmium (22,590)."""
-
-TYPICAL_DENSITY_KG_M3 = 3000.0
-"""The middle of engineering materials, used to guess which units a spec meant."""
 
 
 def parts(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
@@ -26,135 +20,6 @@ def parts(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
       rbi parts wheel_with_holes.yaml --format json
       rbi parts *.yaml --format csv
     """
-    from rbi.cli.each_file import report_each
+    from rbi.cli import parts_report
 
-    return report_each(files, parts_of, format.value)
-
-
-def parts_of(file: str):
-    """What `rbi parts` gives for one file (:class:`rbi.cli.each_file.FileReport`).
-
-    JSON: the contract's keys, and for each part ``volume`` (length³, all copies of a pattern;
-    null for a part without one), ``principal_moments`` (ascending, about the part's own centre
-    of mass; negative for a hole); at the top ``volume``, the solids' volume with holes taken
-    away (parts without a volume add none), and ``principal_moments`` of the body about its
-    centre of mass.
-    """
-    from rbi.cli.each_file import FileReport
-    from rbi.cli.mass_reports import load_body
-    from rbi.cli.terminal import say
-    from rbi.core.inertia import inertia_shares, principal_axes
-    from rbi.spec.translate import part_volume
-    from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
-
-    body = load_body(file)
-    spec_parts = list(body.spec.parts) if body.spec is not None else []
-    shares = inertia_shares(body.elements, body.props)
-    to_si = MASS_UNITS_IN_KG[body.mass_unit] / LENGTH_UNITS_IN_M[body.length_unit] ** 3
-    rows = []
-    for i, element in enumerate(body.elements):
-        part = spec_parts[i] if i < len(spec_parts) else None
-        volume = None if part is None else part_volume(part)
-        density = abs(element.mass) / volume if volume else None
-        rows.append({
-            "name": body.part_names[i] or f"parts[{i}]",
-            "shape": part.shape if part is not None else "point_cloud",
-            "hole": bool(getattr(part, "subtract", False)),
-            "mass": element.mass,
-            "mass_share": element.mass / body.props.mass,
-            "center_of_mass": element.com,
-            "inertia_about_com": element.inertia_com,
-            "principal_moments": principal_axes(element.inertia_com)[0],
-            "inertia_share": shares[i],
-            "volume": volume,
-            "implied_density": density,
-            "implied_density_si": None if density is None else density * to_si,
-        })
-    for i, row in enumerate(rows):
-        warning = density_warning(row, body, i)
-        if warning:
-            say(f"warning: {body.path}: {warning}")
-    volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
-    every_part_has_volume = all(row["volume"] is not None for row in rows)
-    total = {"volume": volume if any(row["volume"] is not None for row in rows) else None,
-             "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
-             "principal_moments": principal_axes(body.props.inertia_com)[0]}
-    result = {"name": body.name, "units": body.units, "mass": body.props.mass,
-              "center_of_mass": body.props.com, "volume": total["volume"],
-              "principal_moments": total["principal_moments"], "parts": rows}
-    summary = {"name": body.name, "units": body.units, "mass": body.props.mass, "center_of_mass": body.props.com,
-               "volume": total["volume"], "principal_moments": total["principal_moments"], "parts": len(rows)}
-    return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
-
-
-def density_warning(row: dict, body, index: int) -> str | None:
-    """A one-line warning when a solid's implied density is outside what any solid has, with
-    the units block that would make it plausible (or None)."""
-    from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
-
-    density = row["implied_density"]
-    si = row["implied_density_si"]
-    low, high = PLAUSIBLE_DENSITY_KG_M3
-    if si is None or low <= si <= high or si == 0.0:
-        return None
-    best = None
-    for length, metres in LENGTH_UNITS_IN_M.items():
-        for mass, kilograms in MASS_UNITS_IN_KG.items():
-            candidate = density * kilograms / metres ** 3
-            if low <= candidate <= high and (length, mass) != (body.length_unit, body.mass_unit):
-                distance = abs(math.log(candidate / TYPICAL_DENSITY_KG_M3))
-                if best is None or distance < best[0]:
-                    best = (distance, length, mass)
-    label = f"parts[{index}]" + (f" ({row['name']})" if not row["name"].startswith("parts[") else "")
-    text = f"{label}: implied density {si:.3g} kg/m³ is {'more' if si > high else 'less'} than any solid material has"
-    if best is not None:
-        text += f": is this spec in {best[1]} and {best[2]}? add `units: {{length: {best[1]}, mass: {best[2]}}}`"
-    return text
-
-
-def _table(body, rows, total):
-    """Two tables (so that each fits 80 columns): mass and volume, then where the mass is and
-    how it turns; each ends with the whole body's row."""
-    from rbi.cli import tables
-    from rbi.cli.render import matrix_digits, number
-
-    labels = body.labels
-    name = body.name or body.path
-    density_unit = f"{body.mass_unit}/{body.length_unit}³"
-    volume_unit = f"{body.length_unit}³"
-
-    def table(title, columns, cells, total_row):
-        """A table whose text columns wrap in a narrow terminal and whose numbers never do."""
-        t = tables.titled(title)
-        for i, (header, justify) in enumerate(columns):
-            widest = max(len(row[i]) for row in [*cells, total_row]) if justify == "right" else None
-            t.add_column(header, justify=justify, overflow="fold", min_width=widest)
-        for row in cells:
-            t.add_row(*row)
-        t.add_section()
-        t.add_row(*total_row)
-        return t
-
-    def signed_volume(row):
-        return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])
-
-    masses = table(f"{name}: parts — mass and volume", (
-        ("part", "left"), ("shape", "left"), (tables.unit_header("mass", labels["mass"]), "right"),
-        ("mass share [%]", "right"), (tables.unit_header("volume", volume_unit), "right"),
-        (tables.unit_header("density", density_unit), "right")),
-        [(tables.plain_text(row["name"]), row["shape"] + (" (hole)" if row["hole"] else ""), number(row["mass"]),
-          number(100 * row["mass_share"], 4), signed_volume(row), number(row["implied_density"], 4)) for row in rows],
-        ("total", "", number(body.props.mass), number(100.0, 4), number(total["volume"]), number(total["mean_density"], 4)))
-
-    scale, scale_text = matrix_digits([total["principal_moments"], *(row["principal_moments"] for row in rows)])
-    inertias = table(f"{name}: parts — centre of mass, principal moments about it", (
-        ("part", "left"), (tables.unit_header("centre of mass", labels["length"]), "left"),
-        *((tables.unit_header(f"I{i}", labels["inertia"], scale_text), "right") for i in (1, 2, 3)),
-        ("inertia share [%]", "right")),
-        [(tables.plain_text(row["name"]), tables.vector(row["center_of_mass"]),
-          *(number(m / scale, 5) for m in row["principal_moments"]), number(100 * row["inertia_share"], 4))
-         for row in rows],
-        ("total", tables.vector(body.props.com), *(number(m / scale, 5) for m in total["principal_moments"]),
-         number(100.0, 4)))
-    return tables.stack(masses, inertias)
-
+    return parts_report.parts(files, format.value)
