@@ -183,7 +183,7 @@ xml_text = st.text(st.characters(blacklist_categories=("Cs",),
 
 
 @given(st.lists(xml_text, min_size=1, max_size=3, unique=True), xml_text)
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 def test_any_names_give_specs_that_hold_them_as_data(tmp_path, names, robot):
     path = tmp_path / "robot.urdf"
     path.write_text(urdf(names, robot=robot), encoding="utf-8")

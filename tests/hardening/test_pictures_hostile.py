@@ -38,7 +38,7 @@ def svg_text(path) -> str:
     return path.read_text(encoding="utf-8")
 
 
-@pytest.mark.parametrize("name", BAD_MATH)
+@pytest.mark.parametrize("name", BAD_MATH[:4])  # all of them at once below
 def test_show_draws_dollar_names_as_written(write_spec, tmp_path, name):
     path = write_spec(spec(name, name))
     out = tmp_path / "body.svg"
@@ -113,14 +113,18 @@ def test_label_is_one_short_line_of_visible_characters(text):
 names = st.text(st.characters(blacklist_categories=("Cs",)), min_size=1, max_size=40)
 
 
-@given(names, names)
-@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-def test_show_draws_any_names(tmp_path, name, part):
+@given(names, st.lists(names, min_size=1, max_size=8, unique=True))
+@settings(max_examples=6, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+def test_show_draws_any_names(tmp_path, name, parts):
+    import yaml
+
     path = tmp_path / "body.yaml"
-    path.write_text(spec(name, part), encoding="utf-8")
-    out = tmp_path / "body.png"
+    path.write_text(yaml.safe_dump({"name": name, "parts": [
+        {"name": part, "shape": "point", "mass": 1, "position": [i, 0, 0]} for i, part in enumerate(parts)]}),
+        encoding="utf-8")
+    out = tmp_path / "body.svg"
     proc = run_rbi_inprocess("show", path, "--out", out)
-    assert proc.returncode == 0, (name, part, proc.stderr)
+    assert proc.returncode == 0 and proc.stderr == "", (name, parts, proc.stderr)
 
 
 def test_characters_the_font_lacks_are_escapes_not_warnings(write_spec, tmp_path):
