@@ -187,3 +187,7 @@ def test_the_api_module_imports_nothing_heavy():
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60)
     assert proc.returncode == 0, proc.stderr
     assert proc.stdout.strip() == "[]"
+
+
+def test_robot_audit_does_not_reach_up_into_the_cli():
+    assert offending("robot", ("rbi.cli", "typer", "rich", "click")) == {}

@@ -175,7 +175,7 @@ def test_mjcf_matches_mujoco_compiler(tmp_path):
     path = write(tmp_path, "hand.xml", MJCF)
     links = links_json(path)
     model = mujoco.MjModel.from_xml_path(str(path))
-    assert [link["name"] for link in links] == ["a", "b"]
+    assert [link["name"] for link in links] == ["a", "b", "c"]  # c: mass from its sphere geom, as MuJoCo
     for link in links:
         body = model.body(link["name"]).id
         R = np.zeros(9)
@@ -187,10 +187,11 @@ def test_mjcf_matches_mujoco_compiler(tmp_path):
         assert np.allclose(link["inertia"], expected, rtol=0, atol=1e-12 * np.trace(expected))
 
 
-def test_mjcf_body_without_inertial_is_listed_as_skipped(tmp_path):
-    listing = json.loads(ok("import", write(tmp_path, "hand.xml", MJCF), "--format", "json"))
+def test_mjcf_body_without_inertial_or_geoms_is_listed_as_skipped(tmp_path):
+    text = MJCF.replace('<geom type="sphere" size="0.05"/>', '<site pos="0 0 0"/>')
+    listing = json.loads(ok("import", write(tmp_path, "hand.xml", text), "--format", "json"))
     assert listing["format"] == "mjcf"
-    assert listing["skipped"] == [{"link": "body[2] (c)", "reason": "no <inertial> element"}]
+    assert listing["skipped"] == [{"link": "body[2] (c)", "reason": "no <inertial> element and no geoms with mass"}]
 
 
 def test_mjcf_quaternion_becomes_the_part_rotation(tmp_path):
@@ -215,6 +216,9 @@ CAD_URDF = """<robot name="cad-export">
   <link name="massless">
     <inertial><mass value="0"/><inertia ixx="0.001" ixy="0" ixz="0" iyy="0.001" iyz="0" izz="0.001"/></inertial>
   </link>
+  <joint name="moves_the_massless_link" type="revolute">
+    <parent link="base"/><child link="massless"/><axis xyz="0 0 1"/>
+  </joint>
 </robot>
 """
 
@@ -342,9 +346,9 @@ def test_deep_nesting_is_refused(tmp_path):
 
 
 def test_huge_file_is_refused(tmp_path, monkeypatch):
-    from rbi.formats import robot_files
+    from rbi.formats import robot_xml
 
-    monkeypatch.setattr(robot_files, "MAX_FILE_BYTES", 200)
+    monkeypatch.setattr(robot_xml, "MAX_FILE_BYTES", 200)
     one_line_exit_2(run_rbi_inprocess("import", write(tmp_path, "hand.urdf", URDF)), "hand.urdf", "larger than")
 
 
@@ -380,7 +384,7 @@ def test_malformed_urdf_is_one_line(tmp_path, text, words):
 @pytest.mark.parametrize("inertial, words", [
     ('<inertial pos="0 0 0" mass="1" diaginertia="1 1 1" fullinertia="1 1 1 0 0 0"/>', ["exactly one"]),
     ('<inertial pos="0 0 0" mass="1"/>', ["exactly one"]),
-    ('<inertial pos="0 0 0" mass="1" euler="0 0 90" diaginertia="1 1 1"/>', ["euler", "quat"]),
+    ('<inertial pos="0 0 0" mass="1" euler="0 0 90" fullinertia="1 1 1 0 0 0"/>', ["orientation", "fullinertia"]),
     ('<inertial pos="0 0 0" mass="1" quat="0 0 0 0" diaginertia="1 1 1"/>', ["quat", "zero"]),
     ('<inertial mass="1" diaginertia="1 1 1"/>', ["pos", "expected 3"]),
     ('<inertial pos="0 0 0" mass="NaN" diaginertia="1 1 1"/>', ["mass", "'NaN'"]),

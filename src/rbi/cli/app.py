@@ -25,6 +25,7 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
     "show": ("rbi.cli.show_command", "show", "Picture of the body as specified: parts, CoM, principal axes."),
     "export": ("rbi.cli.export_command", "export", "The <inertial> element for URDF, MJCF or SDF (SI units)."),
     "import": ("rbi.cli.import_command", "import_robot", "Links of a URDF, SDF or MJCF file as rbi specs (custom parts)."),
+    "audit": ("rbi.cli.audit_command", "audit", "A robot file's inertials against its own geometry; totals; --fix."),
     "check": ("rbi.cli.check_command", "check", "Compare the spec's expect: block with the computed values."),
     "validate": ("rbi.cli.schema_command", "validate", "Validate many specs at once, one line per problem."),
     "schema": ("rbi.cli.schema_command", "schema", "JSON Schema of the spec, for editors."),

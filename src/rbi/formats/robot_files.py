@@ -1,5 +1,7 @@
-"""Robot description files (URDF, SDF, MJCF): each link's (body's) inertial element, read with
-a hardened XML parser, checked for physical validity and turned into an rbi spec.
+"""Robot description files (URDF, SDF, MJCF): one reading (:func:`read_robot`, built on the
+readers in :mod:`rbi.formats.urdf`, :mod:`~rbi.formats.sdf` and :mod:`~rbi.formats.mjcf`) that
+``rbi import``, ``rbi validate`` and ``rbi audit`` share, so they agree on every file; each
+link's (body's) mass properties checked for physical validity and turned into an rbi spec.
 
 All three formats are SI (kg, m, kg·m²). Each link becomes one spec with one ``custom`` part:
 the mass, the centre of mass in the link frame, and the inertia about the centre of mass in
@@ -13,41 +15,36 @@ frame. The off-diagonal entries of all three formats are the inertia matrix's ow
 - SDF: ``<link name><inertial><pose>x y z roll pitch yaw</pose><mass/><inertia><ixx/>…``;
   the pose's angles follow URDF's; SDF's defaults (mass 1, ``ixx = iyy = izz = 1``) apply to
   missing elements inside ``<inertial>``.
-- MJCF: ``<body name><inertial pos quat mass diaginertia|fullinertia/>``; ``quat`` is
-  ``w x y z`` (inertial frame to body frame); ``fullinertia`` is ``ixx iyy izz ixy ixz iyz``
-  in the body frame.
+- MJCF: what MuJoCo's compiler gives each body: ``<inertial pos quat mass
+  diaginertia|fullinertia/>`` (``quat`` is ``w x y z``, inertial frame to body frame;
+  ``fullinertia`` is ``ixx iyy izz ixy ixz iyz`` in the body frame), or its geoms' mass
+  properties (see :mod:`rbi.formats.mjcf`).
 
-Hostile files are refused as :class:`InputError` (one line): XML entity declarations and
-external references (defusedxml), files over :data:`MAX_FILE_BYTES`, nesting deeper than
-:data:`MAX_DEPTH`, and any number that is not a plain finite decimal.
+Hostile files are refused as :class:`InputError` (one line; :mod:`rbi.formats.robot_xml`):
+XML entity declarations and external references, files over :data:`MAX_FILE_BYTES`, nesting
+deeper than :data:`MAX_DEPTH`, unknown encodings, duplicate link names, and any number that is
+not a plain finite decimal.
 """
 
 from __future__ import annotations
 
 import math
 import os
-import re
 from dataclasses import dataclass, field
-from typing import Any, Iterator
+from typing import Any
 
 import numpy as np
 
 from rbi.core.inertia import re_express
 from rbi.core.validity import inertia_problem
 from rbi.errors import InputError
+from rbi.formats.robot_model import RobotModel
+from rbi.formats.robot_model import short as _short
+from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
 
-MAX_FILE_BYTES = 64 * 1024 * 1024
-"""Largest robot file read (64 MiB): far above any real description, whose meshes live in
-other files."""
-
-MAX_DEPTH = 500
-"""Deepest element nesting read; an MJCF chain of 500 bodies is already far beyond any robot."""
-
-ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf")
+ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf", ".xacro")
 FORMAT_BY_ROOT = {"robot": "urdf", "sdf": "sdf", "mujoco": "mjcf"}
 LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
-
-_NUMBER = re.compile(r"^[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?$")
 
 
 @dataclass(frozen=True)
@@ -65,6 +62,8 @@ class RobotLink:
     inertia: np.ndarray
     quaternion: np.ndarray | None = None
     rpy: tuple[float, float, float] | None = None
+    rotation: np.ndarray | None = None
+    massless_allowed: bool = False
 
     def label(self, word: str) -> str:
         return f"{word}[{self.index}]" + (f" ({self.name})" if self.name is not None else "")
@@ -84,6 +83,8 @@ class RobotLink:
         identity."""
         from rbi.core.rotation import euler_matrix, quaternion_to_matrix, without_rounding_noise
 
+        if self.rotation is not None and self.rpy is None and self.quaternion is None:
+            return self.rotation
         if self.rpy is not None:
             return without_rounding_noise(euler_matrix(np.asarray(self.rpy, dtype=float), "xyz"))
         if self.quaternion is not None:
@@ -106,6 +107,8 @@ class RobotFile:
     name: str | None
     links: list[RobotLink] = field(default_factory=list)
     skipped: list[tuple[str, str]] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    unchecked: list[str] = field(default_factory=list)
 
     @property
     def link_word(self) -> str:
@@ -120,257 +123,68 @@ def is_robot_file(path: str) -> bool:
 
 # --- reading ---------------------------------------------------------------------------------
 
-def read_robot_file(path: str) -> RobotFile:
-    """Parse a URDF, SDF or MJCF file (the format from its root element); InputError, one line
-    naming the file, the link and the attribute, for anything unreadable or malformed."""
-    root = _parse_xml(path)
-    tag = _local(root.tag)
-    fmt = FORMAT_BY_ROOT.get(tag)
+def read_robot(path: str, package_paths: dict | None = None, geometry: bool = True) -> RobotModel:
+    """Parse a URDF, SDF or MJCF file (the format from its root element) into a
+    :class:`RobotModel`: links with their inertials, geometry (when ``geometry``; MJCF's geoms
+    always) and place in the tree. InputError, one line naming the file, the link and the
+    attribute, for anything unreadable, malformed or refused (duplicate link names, a mesh that
+    cannot be found)."""
+    from rbi.formats import robot_xml
+
+    path = str(path)
+    document = robot_xml.read_xml(path, _xacro_expanded(path) if path.lower().endswith(".xacro") else None)
+    fmt = FORMAT_BY_ROOT.get(document.root.tag)
     if fmt is None:
-        raise InputError(f"{path}: not a URDF, SDF or MJCF document (the root element is <{_short(tag)}>, "
-                         "expected <robot>, <sdf> or <mujoco>)")
-    robot = RobotFile(path, fmt, root.get("name") or root.get("model"))
-    reader = {"urdf": _urdf_links, "sdf": _sdf_links, "mjcf": _mjcf_links}[fmt]
-    for index, element in enumerate(reader(root, path)):
-        name = element.get("name")
-        label = f"{LINK_WORD[fmt]}[{index}]" + (f" ({_short(name)})" if name is not None else "")
-        inertial = _child(element, "inertial")
-        if inertial is None:
-            robot.skipped.append((label, "no <inertial> element"))
-            continue
-        read = {"urdf": _urdf_inertial, "sdf": _sdf_inertial, "mjcf": _mjcf_inertial}[fmt]
-        where = _Where(path, label)
-        robot.links.append(_in_range(where, read(where, index, name, inertial)))
-    return robot
-
-
-MAX_ANGLE_RAD = 1e9
-"""Largest inertial-frame angle read (rad): beyond it a double cannot place the angle within a
-microradian, so the value cannot be meant (and in degrees it may not even be finite)."""
-
-
-def _in_range(where: _Where, link: RobotLink) -> RobotLink:
-    """``link``, or InputError when its numbers cannot be computed with: an rpy angle beyond
-    :data:`MAX_ANGLE_RAD`, or inertia entries whose sum overflows a double."""
-    for axis, angle in zip(("roll", "pitch", "yaw"), link.rpy or ()):
-        if abs(angle) > MAX_ANGLE_RAD:
-            raise where.error(f"inertial rpy: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
-                              f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})")
-    if not np.isfinite(np.sum(np.abs(link.inertia))):
-        raise where.error(f"inertia: numbers too large: the entries (largest {float(np.max(np.abs(link.inertia))):.3g}) "
-                          f"add up beyond the largest double, {np.finfo(float).max:.3g}; give the inertia in kg·m²")
-    return link
-
-
-def _parse_xml(path: str):
-    from defusedxml import DefusedXmlException
-    from defusedxml.ElementTree import iterparse
-    from xml.etree.ElementTree import ParseError
-
-    try:
-        size = os.path.getsize(path)
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read: {exc.strerror}") from None
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: not a regular file")
-    if size > MAX_FILE_BYTES:
-        raise InputError(f"{path}: {size} bytes: larger than the {MAX_FILE_BYTES // 2**20} MiB rbi reads "
-                         "from a robot file")
-    depth = 0
-    root = None
-    try:
-        with open(path, "rb") as handle:
-            for event, element in iterparse(handle, events=("start", "end"), forbid_dtd=False,
-                                            forbid_entities=True, forbid_external=True):
-                if event == "start":
-                    depth += 1
-                    if root is None:
-                        root = element
-                    if depth > MAX_DEPTH:
-                        raise InputError(f"{path}: elements nested deeper than {MAX_DEPTH} levels; "
-                                         "refused as not a plausible robot description")
-                else:
-                    depth -= 1
-    except DefusedXmlException as exc:
-        raise InputError(f"{path}: refused: the file declares XML entities or external references "
-                         f"({type(exc).__name__}); rbi does not expand them") from None
-    except ParseError as exc:
-        line, column = getattr(exc, "position", (0, 0))
-        raise InputError(f"{path}: not well-formed XML (line {line}, column {column})") from None
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read: {exc.strerror}") from None
-    except RecursionError:
-        raise InputError(f"{path}: elements nested too deeply") from None
-    if root is None:
-        raise InputError(f"{path}: empty XML document")
-    return root
-
-
-class _Where:
-    """Where a value was read, for error messages: ``file: link[i] (name): what``."""
-
-    def __init__(self, path: str, label: str):
-        self.path, self.label = path, label
-
-    def error(self, what: str) -> InputError:
-        return InputError(f"{self.path}: {self.label}: {what}")
-
-
-def _numbers(where: _Where, text: str | None, what: str, count: int | tuple[int, ...]) -> list[float]:
-    """Whitespace-separated plain finite decimals (no NaN, inf, hex or underscores)."""
-    counts = (count,) if isinstance(count, int) else count
-    pieces = (text or "").split()
-    expected = " or ".join(str(c) for c in counts)
-    if len(pieces) not in counts:
-        raise where.error(f"{what}: expected {expected} number(s), got {len(pieces)} ({_short(text)!r})")
-    values = []
-    for piece in pieces:
-        if not _NUMBER.match(piece):
-            raise where.error(f"{what}: must be a finite number (got {_short(piece)!r})")
-        value = float(piece)
-        if not math.isfinite(value):
-            raise where.error(f"{what}: must be a finite number (got {_short(piece)!r}, too large)")
-        values.append(value)
-    return values
-
-
-def _number(where: _Where, text: str | None, what: str, default: float | None = None) -> float:
-    if text is None:
-        if default is None:
-            raise where.error(f"{what}: missing")
-        return default
-    return _numbers(where, text, what, 1)[0]
-
-
-def _from_six(ixx, iyy, izz, ixy, ixz, iyz) -> np.ndarray:
-    return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]], dtype=float)
-
-
-# URDF ----------------------------------------------------------------------------------------
-
-def _urdf_links(root, path: str) -> Iterator:
-    return (child for child in root if _local(child.tag) == "link")
-
-
-def _urdf_inertial(where: _Where, index: int, name: str | None, inertial) -> RobotLink:
-    origin = _child(inertial, "origin")
-    xyz = _numbers(where, origin.get("xyz", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: xyz", 3)
-    rpy = _numbers(where, origin.get("rpy", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: rpy", 3)
-    mass_element = _child(inertial, "mass")
-    if mass_element is None:
-        raise where.error("inertial/mass: missing")
-    mass = _number(where, mass_element.get("value"), "inertial/mass: value")
-    block = _child(inertial, "inertia")
-    if block is None:
-        raise where.error("inertial/inertia: missing")
-    six = {key: _number(where, block.get(key), f"inertial/inertia: {key}")
-           for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")}
-    return RobotLink(index, name, mass, np.array(xyz), _from_six(**six), rpy=_rpy_or_none(rpy))
-
-
-# SDF -----------------------------------------------------------------------------------------
-
-def _sdf_links(root, path: str) -> Iterator:
-    return (element for element in root.iter() if _local(element.tag) == "link")
-
-
-def _sdf_inertial(where: _Where, index: int, name: str | None, inertial) -> RobotLink:
-    pose = _child(inertial, "pose")
-    xyz, rpy, quaternion = [0.0, 0.0, 0.0], None, None
-    if pose is not None:
-        relative_to = pose.get("relative_to")
-        if relative_to not in (None, "", name):
-            raise where.error(f"inertial/pose: relative_to={_short(relative_to)!r}: only poses in the link's own "
-                              "frame are read")
-        if (pose.get("rotation_format") or "euler_rpy") == "quat_xyzw":
-            values = _numbers(where, pose.text, "inertial/pose", 7)
-            xyz, (qx, qy, qz, qw) = values[:3], values[3:]
-            quaternion = _quaternion_or_none(where, [qw, qx, qy, qz], "inertial/pose")
-        else:
-            values = _numbers(where, pose.text, "inertial/pose", 6)
-            xyz, angles = values[:3], values[3:]
-            if (pose.get("degrees") or "").strip().lower() in ("true", "1"):
-                angles = [math.radians(a) for a in angles]
-            rpy = _rpy_or_none(angles)
-    mass_element = _child(inertial, "mass")
-    mass = _number(where, None if mass_element is None else mass_element.text, "inertial/mass", default=1.0)
-    block = _child(inertial, "inertia")
-    six = {}
-    for key, default in (("ixx", 1.0), ("iyy", 1.0), ("izz", 1.0), ("ixy", 0.0), ("ixz", 0.0), ("iyz", 0.0)):
-        entry = None if block is None else _child(block, key)
-        six[key] = _number(where, None if entry is None else entry.text, f"inertial/inertia/{key}", default=default)
-    return RobotLink(index, name, mass, np.array(xyz, dtype=float), _from_six(**six), quaternion=quaternion, rpy=rpy)
-
-
-# MJCF ----------------------------------------------------------------------------------------
-
-def _mjcf_links(root, path: str) -> Iterator:
-    for element in root.iter():
-        tag = _local(element.tag)
-        if tag == "include":
-            raise InputError(f"{path}: include: <include> files are not followed; import the file with every body in "
-                             "it (MuJoCo's compiler can write one: mj_saveLastXML)")
-        if tag == "body":
-            yield element
-
-
-_MJCF_ORIENTATIONS = ("axisangle", "xyaxes", "zaxis", "euler")
-
-
-def _mjcf_inertial(where: _Where, index: int, name: str | None, inertial) -> RobotLink:
-    pos = _numbers(where, inertial.get("pos"), "inertial: pos", 3)
-    mass = _number(where, inertial.get("mass"), "inertial: mass")
-    for other in _MJCF_ORIENTATIONS:
-        if inertial.get(other) is not None:
-            raise where.error(f"inertial: {other}: only quat is read for the inertial frame; give its "
-                              "orientation as quat=\"w x y z\"")
-    full, diagonal = inertial.get("fullinertia"), inertial.get("diaginertia")
-    if (full is None) == (diagonal is None):
-        raise where.error("inertial: give exactly one of diaginertia and fullinertia")
-    quaternion = None
-    if inertial.get("quat") is not None:
-        if full is not None:
-            raise where.error("inertial: quat: not allowed with fullinertia (which is in the body frame)")
-        quaternion = _quaternion_or_none(where, _numbers(where, inertial.get("quat"), "inertial: quat", 4),
-                                         "inertial: quat")
-    if full is not None:
-        ixx, iyy, izz, ixy, ixz, iyz = _numbers(where, full, "inertial: fullinertia", 6)
-        inertia = _from_six(ixx, iyy, izz, ixy, ixz, iyz)
+        raise InputError(f"{path}: not a URDF, SDF or MJCF document (the root element is "
+                         f"<{_short(document.root.tag)}>, expected <robot>, <sdf> or <mujoco>)")
+    if fmt == "urdf":
+        from rbi.formats.urdf import read_urdf as reader
+    elif fmt == "sdf":
+        from rbi.formats.sdf import read_sdf as reader
     else:
-        inertia = np.diag(_numbers(where, diagonal, "inertial: diaginertia", 3))
-    return RobotLink(index, name, mass, np.array(pos), inertia, quaternion=quaternion)
+        from rbi.formats.mjcf import read_mjcf as reader
+    return reader(document, package_paths, geometry)
 
 
-# shared helpers --------------------------------------------------------------------------------
+def _xacro_expanded(path: str) -> bytes:
+    """The URDF a ``.xacro`` file expands to (through the optional ``xacro`` package; its
+    ``$(find ...)`` and ``$(arg ...)`` as xacro resolves them)."""
+    try:
+        import xacro
+    except ImportError:
+        raise InputError(f"{path}: a .xacro file needs the xacro package: pip install 'rbi[xacro]' (or run "
+                         "`xacro FILE > FILE.urdf` and read that)") from None
+    import io
+    import contextlib
 
-def _rpy_or_none(rpy) -> tuple[float, float, float] | None:
-    return None if not any(rpy) else (float(rpy[0]), float(rpy[1]), float(rpy[2]))
-
-
-def _quaternion_or_none(where: _Where, wxyz, what: str) -> np.ndarray | None:
-    q = np.asarray(wxyz, dtype=float)
-    if not np.any(q):
-        raise where.error(f"{what}: the quaternion must not be zero")
-    if q[0] != 0.0 and not np.any(q[1:]):
-        return None
-    return q
-
-
-def _child(element, tag: str):
-    for child in element:
-        if _local(child.tag) == tag:
-            return child
-    return None
-
-
-def _local(tag: Any) -> str:
-    return tag.rsplit("}", 1)[-1] if isinstance(tag, str) else ""
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: no such file")
+    try:
+        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+            document = xacro.process_file(path)
+    except Exception as exc:  # noqa: BLE001 - xacro raises many kinds; each is the file's problem
+        reason = " ".join(str(exc).split())[:200] or type(exc).__name__
+        raise InputError(f"{path}: xacro could not expand it: {reason}") from None
+    return document.toxml().encode("utf-8")
 
 
-def _short(text: Any, limit: int = 40) -> str:
-    text = "" if text is None else str(text)
-    text = text.encode("unicode_escape").decode("ascii")
-    return text if len(text) <= limit else text[: limit - 3] + "..."
+def read_robot_file(path: str) -> RobotFile:
+    """The links of a robot file that have mass properties (``links``) and those that do not
+    (``skipped``), read as :func:`read_robot` reads them; MJCF bodies carry what MuJoCo's
+    compiler gives them."""
+    model = read_robot(path)
+    robot = RobotFile(str(path), model.format, model.name, notes=list(model.notes), unchecked=list(model.unchecked))
+    for link in model.links:
+        inertial = link.inertial
+        if inertial is None:
+            robot.skipped.append((link.label, "no <inertial> element" if model.format != "mjcf"
+                                  else "no <inertial> element and no geoms with mass"))
+            continue
+        robot.links.append(RobotLink(link.index, link.name, inertial.mass, inertial.com, inertial.inertia,
+                                     quaternion=inertial.quaternion if inertial.rpy is None else None,
+                                     rpy=inertial.rpy, rotation=inertial.rotation,
+                                     massless_allowed=not link.moves))
+    return robot
 
 
 # --- validity ----------------------------------------------------------------------------------
@@ -380,6 +194,8 @@ def link_problems(robot: RobotFile, link: RobotLink) -> list[str]:
     by which the check fails (empty when the link is fine)."""
     where = f"{robot.path}: {link.label(robot.link_word)}"
     problems = []
+    if link.mass == 0.0 and link.massless_allowed:
+        return problems  # a root or fixed link without mass: how simulators mark a static base
     if not link.mass > 0.0:
         problems.append(f"{where}: mass: must be greater than 0 (got {link.mass!r} kg)")
     problem = inertia_problem(link.inertia)
@@ -403,7 +219,7 @@ def robot_file_problems(path: str) -> list[str]:
         robot = read_robot_file(path)
     except InputError as exc:
         return [str(exc)]
-    return [line for link in robot.links for line in link_problems(robot, link)]
+    return list(robot.unchecked) + [line for link in robot.links for line in link_problems(robot, link)]
 
 
 # --- specs ---------------------------------------------------------------------------------------

@@ -1,0 +1,173 @@
+"""`rbi audit`: a robot file's inertials against its own geometry, link by link, with the whole
+robot's totals; `--fix` writes a copy with the flagged inertials replaced.
+
+Exit 0 when no link has an error-level flag, 1 when one has (so it gates CI like `rbi check`),
+2 on bad input. With `--fix --out FILE`: 0 when the written file has no error-level flag left,
+1 when some flagged link could not be fixed.
+"""
+
+from __future__ import annotations
+
+import sys
+from typing import Annotated, Optional
+
+import typer
+
+from rbi.cli.options import FormatOption, OutputFormat
+
+
+def audit(
+    file: Annotated[str, typer.Argument(help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False,
+                                        metavar="ROBOT_FILE")],
+    package_path: Annotated[Optional[list[str]], typer.Option(
+        "--package-path", metavar="NAME=DIR",
+        help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
+             "(ROS_PACKAGE_PATH is searched too).")] = None,
+    geometry: Annotated[str, typer.Option(
+        "--geometry", metavar="collision|visual",
+        help="Which geometry gives a link's volume (a link without it falls back to the other).")] = "collision",
+    density: Annotated[Optional[float], typer.Option(
+        "--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³).")] = None,
+    material: Annotated[Optional[str], typer.Option(
+        "--material", metavar="NAME", help="Built-in material for links that declare no mass (steel, aluminium, ...).")] = None,
+    mesh_inertia: Annotated[str, typer.Option(
+        "--mesh-inertia", metavar="exact|convex|shell",
+        help="Mass of a mesh: the solid it encloses (exact; the mesh must be closed), its convex hull, "
+             "or its surface (shell, as MuJoCo).")] = "exact",
+    joints: Annotated[Optional[list[str]], typer.Option(
+        "--joints", metavar="NAME=VALUE",
+        help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
+             "repeat for several. Default: zero (MJCF: qpos0).")] = None,
+    fix: Annotated[bool, typer.Option(
+        "--fix", help="Replace each flagged inertial by its geometry's; without --out, show the changes only.")] = False,
+    out: Annotated[Optional[str], typer.Option(
+        "--out", "-o", metavar="FILE", help="With --fix: where to write the fixed copy of the robot file.")] = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
+    """Check each link's mass, centre of mass and inertia against its own geometry.
+
+    Per link: the declared mass properties, the geometry's at the same mass (with the density
+    that implies), the ratio of each declared moment to the geometry's, and flags: unphysical,
+    placeholder, mismatch, density, massless. Then the whole robot's mass, centre of mass and
+    inertia at the zero configuration (MJCF: qpos0) or at --joints. Exit 1 when a link has an
+    error-level flag.
+
+    \b
+    Examples:
+      rbi audit robot.urdf
+      rbi audit robot.urdf --package-path my_robot=~/ws/src/my_robot
+      rbi audit humanoid.xml --format json
+      rbi audit robot.urdf --fix                    (dry run: the changes as a diff)
+      rbi audit robot.urdf --fix --out fixed.urdf
+    """
+    from rbi.errors import InputError
+    from rbi.robot import audit as run_audit
+
+    if out is not None and not fix:
+        raise InputError("--out: writes the fixed copy, so it needs --fix")
+    target = None
+    if out is not None:
+        import os
+
+        from rbi.cli.output import output_target
+
+        extension = os.path.splitext(file)[1].lower().lstrip(".") or "xml"
+        target = output_target(out, "--out", (extension,), inputs=[file])
+    from rbi.formats.paths import _outside_allowed
+
+    report = run_audit(file, package_paths=package_path, geometry=geometry, density=density, material=material,
+                       mesh_inertia=mesh_inertia, joints=joints, fix=fix, allow_outside_paths=_outside_allowed.get())
+    code = report.exit_code
+    if fix and target is not None:
+        from rbi.cli.output import write_output
+
+        write_output(target, report.fix.content)
+        code = 1 if report.fix.unfixable or report.model.unchecked else 0
+    if format is OutputFormat.table:
+        _table(report)
+        if fix:
+            _fix_text(report, file, out)
+    else:
+        result = report.as_dict()
+        if fix:
+            result["fix"] = {"out": out, "changes": [{"link": c.link, "reason": c.reason}
+                                                      for c in report.fix.changes],
+                             "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable]}
+        from rbi.cli.render import emit
+
+        rows = [_csv_row(each) for each in report.links]
+        emit(format.value, result, lambda: None, csv_rows=rows)
+    if code:
+        raise typer.Exit(code)
+
+
+def _csv_row(each) -> dict:
+    from rbi.spec.yaml_writer import visible
+
+    declared, geo = each.declared, each.geometry
+    return {"link": visible(each.link.name or each.link.label),
+            "mass": declared.mass if declared else None,
+            "geometry_volume": geo.volume if geo else None,
+            "implied_density": geo.implied_density if geo else None,
+            "ratio_1": None if each.ratios is None else each.ratios[0],
+            "ratio_2": None if each.ratios is None else each.ratios[1],
+            "ratio_3": None if each.ratios is None else each.ratios[2],
+            "com_offset": each.com_offset,
+            "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags)}
+
+
+def _table(report) -> None:
+    import numpy as np
+
+    from rbi.cli.render import number, stdout_console, terminal_safe
+    from rbi.cli.tables import titled
+    from rbi.robot.audit import _worst_ratio
+    from rbi.cli.terminal import say
+
+    word = report.model.link_word
+    plural = "bodies" if word == "body" else word + "s"
+    table = titled(f"{report.path}: {len(report.links)} {plural} (ratio: the declared moment farthest from the "
+                   "geometry's, as a multiple of it)")
+    table.add_column(word, overflow="fold")
+    table.add_column("mass kg", justify="right", no_wrap=True)
+    table.add_column("ρ kg/m³", justify="right", no_wrap=True)
+    table.add_column("ratio", justify="right", no_wrap=True)
+    table.add_column("CoM off", justify="right", no_wrap=True)
+    table.add_column("flags", overflow="fold")
+    for each in report.links:
+        declared, geo = each.declared, each.geometry
+        worst = None if each.ratios is None else _worst_ratio(each.ratios)
+        flags = " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok"
+        table.add_row(each.link.name if each.link.name is not None else each.link.label,
+                      "-" if declared is None else number(declared.mass, 6),
+                      "-" if geo is None or geo.implied_density is None else f"{geo.implied_density:.4g}",
+                      "-" if worst is None else f"{worst:.3g}", "-" if each.com_offset is None else f"{each.com_offset:.2g}", flags)
+    stdout_console().print(table)
+    for each in report.links:
+        for flag in each.flags:
+            print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))
+    total = report.total
+    print(terminal_safe(f"total ({total.frame}): mass {number(total.mass, 6)} kg, centre of mass "
+                        f"[{', '.join(number(v, 6) for v in total.center_of_mass)}] m"))
+    moments = np.linalg.eigvalsh(total.inertia_about_com)
+    print(f"  principal moments about the centre of mass: {', '.join(number(v, 6) for v in moments)} kg·m²")
+    for note in report.notes:
+        say(f"note: {note}")
+    errors = sum(each.has_error for each in report.links)
+    warnings = sum(any(f.level == "warning" for f in each.flags) for each in report.links)
+    say(f"{errors} {word}(s) with errors (flag!), {warnings} with warnings")
+    sys.stdout.flush()
+
+
+def _fix_text(report, file: str, out: str | None) -> None:
+    plan = report.fix
+    if out is None:
+        diff = plan.diff(file)
+        from rbi.cli.render import terminal_safe
+
+        sys.stdout.write(terminal_safe(diff, keep="\n") if diff else "")
+        print(f"--fix: {len(plan.changes)} inertial(s) would change (dry run; --out FILE writes the copy)")
+    else:
+        print(f"--fix: {len(plan.changes)} inertial(s) replaced; wrote {out}")
+    for label, why in plan.unfixable:
+        print(f"--fix: {label}: not fixed: {why}")

@@ -1,0 +1,481 @@
+"""MJCF (MuJoCo's XML), read as MuJoCo's compiler reads it: bodies with their pose, joints,
+geoms and the mass properties the compiler gives them.
+
+What is honoured:
+- ``<include file>`` (relative to the main file's folder, under the spec path rules), nested;
+- ``<compiler angle eulerseq meshdir assetdir inertiafromgeom inertiagrouprange settotalmass
+  boundmass boundinertia>``;
+- ``<default>`` classes (nested, ``class`` and ``childclass``), ``<frame>``;
+- orientations ``quat``, ``axisangle``, ``euler``, ``xyaxes``, ``zaxis`` (``angle`` in degrees by
+  default, as MuJoCo); ``fromto`` for capsule, cylinder, box and ellipsoid geoms;
+- geom size conventions (sphere ``r``; capsule and cylinder ``r, half-length``; box half-edges;
+  ellipsoid semi-axes), geom ``mass`` or ``density`` (default 1000 kg/m³), ``shellinertia``,
+  ``group`` against ``inertiagrouprange``; mesh assets with ``file``, ``scale`` and ``inertia``
+  (``exact``, ``convex``, ``shell``; ``legacy`` is read as ``exact``);
+- a body's mass properties: the explicit ``<inertial>`` (``diaginertia`` or ``fullinertia``,
+  any orientation), or the sum of its geoms when ``inertiafromgeom`` is ``true`` (the explicit
+  one is then ignored, as MuJoCo ignores it) or ``auto`` without ``<inertial>``; then the bounds
+  and ``settotalmass``, which scales every body.
+
+The world body is not a link; its geoms (floors) are ignored, as MuJoCo does for mass.
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from pathlib import Path
+
+import numpy as np
+
+from rbi.errors import InputError
+from rbi.formats.robot_model import (Geom, Inertial, Link, Motion, Pose, RobotModel, Where, angles,
+                                     check_inertia_range, check_unique_names, from_six, number, numbers,
+                                     positive, quaternion_matrix, short, unit)
+
+MAX_INCLUDES = 100
+"""Most ``<include>`` elements followed in one model (a loop of includes is refused before)."""
+
+GEOM_KINDS = ("plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf")
+ORIENTATIONS = ("quat", "axisangle", "xyaxes", "zaxis", "euler")
+UNSUPPORTED = ("replicate", "attach", "composite", "flexcomp")
+
+
+class Compiler:
+    """The ``<compiler>`` settings that change mass properties or frames."""
+
+    def __init__(self):
+        self.degrees = True
+        self.eulerseq = "xyz"
+        self.meshdir = ""
+        self.assetdir = ""
+        self.inertiafromgeom = "auto"
+        self.group_range = (0, 5)
+        self.settotalmass = -1.0
+        self.boundmass = 0.0
+        self.boundinertia = 0.0
+
+    def read(self, where: Where, element) -> None:
+        angle = element.get("angle")
+        if angle is not None:
+            if angle not in ("degree", "radian"):
+                raise where.error(f"compiler: angle: {short(angle)!r}: must be degree or radian")
+            self.degrees = angle == "degree"
+        seq = element.get("eulerseq")
+        if seq is not None:
+            if len(seq) != 3 or any(c not in "xyzXYZ" for c in seq):
+                raise where.error(f"compiler: eulerseq: {short(seq)!r}: three of x, y, z (lower case: rotating "
+                                  "axes; upper case: fixed axes)")
+            self.eulerseq = seq
+        self.meshdir = element.get("meshdir", self.meshdir)
+        self.assetdir = element.get("assetdir", self.assetdir)
+        value = element.get("inertiafromgeom")
+        if value is not None:
+            if value not in ("true", "false", "auto"):
+                raise where.error(f"compiler: inertiafromgeom: {short(value)!r}: must be true, false or auto")
+            self.inertiafromgeom = value
+        if element.get("inertiagrouprange") is not None:
+            low, high = numbers(where, element.get("inertiagrouprange"), "compiler: inertiagrouprange", 2)
+            self.group_range = (low, high)
+        self.settotalmass = number(where, element.get("settotalmass"), "compiler: settotalmass", self.settotalmass)
+        self.boundmass = number(where, element.get("boundmass"), "compiler: boundmass", self.boundmass)
+        self.boundinertia = number(where, element.get("boundinertia"), "compiler: boundinertia", self.boundinertia)
+        if element.get("coordinate") == "global":
+            raise where.error("compiler: coordinate=\"global\": global coordinates are no longer read by MuJoCo; "
+                              "load and save the model with MuJoCo 2 to convert it")
+
+    def angle(self, value: float) -> float:
+        return math.radians(value) if self.degrees else value
+
+
+def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel:
+    """The bodies of an MJCF document, with the mass properties MuJoCo's compiler gives them.
+    The geoms are always read (they give the bodies their mass); ``geometry`` is ignored."""
+    path = document.path
+    root = _expanded(document)
+    model = RobotModel(path, "mjcf", root.get("model"), document=document)
+    compiler = Compiler()
+    for element in root.iter("compiler"):
+        compiler.read(Where(path), element)
+    for tag in UNSUPPORTED:
+        found = next(root.iter(tag), None)
+        if found is not None:
+            raise InputError(f"{path}: <{tag}> (line {found.line}): not read by rbi; compile the model with "
+                             "MuJoCo and save it (mj_saveLastXML) to audit it")
+    defaults = _defaults(root)
+    meshes = _mesh_assets(path, root, defaults, compiler)
+    reader = _Bodies(model, compiler, defaults, meshes)
+    for world in root.all("worldbody"):
+        reader.children(world, Pose.identity(), None, "main")
+    check_unique_names(path, model.links, "body")
+    _compile_inertia(model, compiler, reader.geoms)
+    return model
+
+
+# --- includes ---------------------------------------------------------------------------------
+
+def _expanded(document):
+    """The root with every ``<include>`` replaced by the children of the included file's root."""
+    from rbi.formats.paths import spec_relative_file
+    from rbi.formats.robot_xml import read_xml
+
+    count = [0]
+
+    def expand(element, chain):
+        out = []
+        for child in element.children:
+            if child.tag != "include":
+                expand(child, chain)
+                out.append(child)
+                continue
+            name = child.get("file")
+            label = f"{document.path}: include (line {child.line})"
+            if not name:
+                raise InputError(f"{label}: file: missing")
+            count[0] += 1
+            if count[0] > MAX_INCLUDES:
+                raise InputError(f"{label}: more than {MAX_INCLUDES} includes")
+            target = spec_relative_file(document.path, name, f"{label}: {short(name, 80)}")
+            key = os.path.realpath(target)
+            if key in chain:
+                raise InputError(f"{label}: {short(name, 80)}: includes itself (a loop of includes)")
+            included = read_xml(str(target)).root
+            for each in included.iter():
+                each.source = str(target)
+            expand(included, chain | {key})
+            for each in included.children:
+                each.parent = element
+            out.extend(included.children)
+        element.children = out
+
+    expand(document.root, frozenset({os.path.realpath(document.path)}))
+    return document.root
+
+
+# --- defaults ---------------------------------------------------------------------------------
+
+def _defaults(root) -> dict[str, dict[str, dict[str, str]]]:
+    """class name → element tag → attributes, each class holding its parents' values."""
+    classes: dict[str, dict[str, dict[str, str]]] = {"main": {}}
+
+    def walk(element, name, inherited):
+        own = {tag: dict(attrs) for tag, attrs in inherited.items()}
+        for child in element.children:
+            if child.tag != "default":
+                own.setdefault(child.tag, {}).update(child.attrib)
+        classes[name] = own
+        for child in element.children:
+            if child.tag == "default":
+                walk(child, child.get("class", "main"), own)
+
+    for top in root.all("default"):
+        walk(top, top.get("class", "main"), classes.get("main", {}))
+    return classes
+
+
+def _attributes(element, defaults, active_class: str) -> dict[str, str]:
+    name = element.get("class", active_class)
+    if name not in defaults:
+        raise InputError(f"{_where_line(element)}: class {short(name)!r}: no <default class> of that name")
+    merged = dict(defaults[name].get(element.tag, {}))
+    merged.update({k: v for k, v in element.attrib.items() if k != "class"})
+    return merged
+
+
+def _where_line(element) -> str:
+    return f"{getattr(element, 'source', None) or ''}line {element.line}".strip()
+
+
+# --- assets -----------------------------------------------------------------------------------
+
+def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dict]:
+    from rbi.formats.paths import spec_relative_file
+
+    meshes = {}
+    for asset in root.all("asset"):
+        for element in asset.all("mesh"):
+            attrs = _attributes(element, defaults, "main")
+            file = attrs.get("file")
+            name = attrs.get("name") or (Path(file).stem if file else None)
+            where = Where(path, f"mesh {short(name)!r}")
+            if not file:
+                meshes[name] = {"error": "no file (meshes given by vertices in the XML are not read)"}
+                continue
+            folder = compiler.meshdir or compiler.assetdir
+            relative = os.path.join(folder, file) if folder and not os.path.isabs(file) else file
+            scale = numbers(where, attrs.get("scale", "1 1 1"), "scale", 3)
+            mode = attrs.get("inertia", "legacy")
+            if mode not in ("legacy", "exact", "convex", "shell"):
+                raise where.error(f"inertia: {short(mode)!r}: must be convex, exact, legacy or shell")
+            meshes[name] = {"file": spec_relative_file(path, relative, f"{path}: mesh {short(name)!r}: "
+                                                        f"{short(relative, 80)}"),
+                            "scale": np.array(scale, dtype=float),
+                            "mode": "exact" if mode == "legacy" else mode}
+    return meshes
+
+
+# --- bodies -------------------------------------------------------------------------------------
+
+class _Bodies:
+    def __init__(self, model: RobotModel, compiler: Compiler, defaults, meshes):
+        self.model, self.compiler, self.defaults, self.meshes = model, compiler, defaults, meshes
+        self.geoms: dict[int, list[tuple[Geom, int]]] = {}
+
+    def children(self, element, frame: Pose, link: Link | None, active_class: str) -> None:
+        """Read the bodies, geoms and joints inside ``element``, whose children are placed by
+        ``frame`` in the frame of ``link`` (None: the world)."""
+        for child in element.children:
+            if child.tag == "body":
+                self.body(child, frame, link, active_class)
+            elif child.tag == "frame":
+                attrs = _attributes(child, self.defaults, active_class)
+                inner = frame.then(self.pose(child, attrs))
+                self.children(child, inner, link, child.get("childclass", active_class))
+            elif child.tag == "geom" and link is not None:
+                self.geom(child, frame, link, active_class)
+
+    def body(self, element, frame: Pose, parent: Link | None, active_class: str) -> None:
+        attrs = dict(element.attrib)
+        link = Link(len(self.model.links), element.get("name"), element=element, word="body")
+        where = Where(self.model.path, link.label)
+        link.parent = parent.name if parent is not None else None
+        link.origin = frame.then(self.pose(element, attrs, where))
+        self.model.links.append(link)
+        inner_class = element.get("childclass", active_class)
+        if inner_class not in self.defaults:
+            raise where.error(f"childclass {short(inner_class)!r}: no <default class> of that name")
+        for child in element.children:
+            if child.tag == "joint":
+                self.joint(where, child, link, inner_class)
+            elif child.tag == "freejoint":
+                link.motions.append(Motion(child.get("name"), "free", np.array([1.0, 0, 0]), np.zeros(3)))
+            elif child.tag == "inertial":
+                link.inertial = self.inertial(where, child)
+        self.geoms[link.index] = []
+        self.children(element, Pose.identity(), link, inner_class)
+        if parent is None and not link.motions:
+            link.parent = None
+
+    def pose(self, element, attrs, where: Where | None = None) -> Pose:
+        if where is None:
+            where = Where(self.model.path, f"<{element.tag}> (line {element.line})")
+        pos = numbers(where, attrs.get("pos", "0 0 0"), "pos", 3)
+        return Pose(self.orientation(where, attrs), np.array(pos, dtype=float))
+
+    def orientation(self, where: Where, attrs) -> np.ndarray:
+        given = [key for key in ORIENTATIONS if key in attrs]
+        if len(given) > 1:
+            raise where.error(f"orientation given twice ({', '.join(given)}); give one")
+        if not given:
+            return np.eye(3)
+        key = given[0]
+        value = attrs[key]
+        if key == "quat":
+            return quaternion_matrix(where, numbers(where, value, "quat", 4), "quat")
+        if key == "axisangle":
+            x, y, z, a = numbers(where, value, "axisangle", 4)
+            axis = unit(where, [x, y, z], "axisangle: axis")
+            angles(where, [self.compiler.angle(a)], "axisangle")
+            from rbi.core.rotation import axis_angle_matrix
+
+            return axis_angle_matrix(axis, self.compiler.angle(a))
+        if key == "euler":
+            values = [self.compiler.angle(v) for v in numbers(where, value, "euler", 3)]
+            angles(where, values, "euler")
+            from rbi.core.rotation import axis_angle_matrix
+
+            R = np.eye(3)
+            for letter, angle in zip(self.compiler.eulerseq, values):
+                Ri = axis_angle_matrix(np.eye(3)["xyz".index(letter.lower())], angle)
+                R = R @ Ri if letter.islower() else Ri @ R
+            return R
+        if key == "xyaxes":
+            v = numbers(where, value, "xyaxes", 6)
+            x = unit(where, v[:3], "xyaxes: x")
+            y = np.array(v[3:]) - np.dot(x, v[3:]) * x
+            y = unit(where, y, "xyaxes: y (along x)")
+            return np.column_stack([x, y, np.cross(x, y)])
+        return z_to(unit(where, numbers(where, value, "zaxis", 3), "zaxis"))
+
+    def joint(self, where: Where, element, link: Link, active_class: str) -> None:
+        attrs = _attributes(element, self.defaults, active_class)
+        kind = attrs.get("type", "hinge")
+        pos = np.array(numbers(where, attrs.get("pos", "0 0 0"), "joint: pos", 3))
+        axis = numbers(where, attrs.get("axis", "0 0 1"), "joint: axis", 3)
+        motion = {"hinge": "revolute", "slide": "prismatic", "ball": "ball", "free": "free"}.get(kind)
+        if motion is None:
+            raise where.error(f"joint: type {short(kind)!r}: must be free, ball, slide or hinge")
+        ref = number(where, attrs.get("ref"), "joint: ref", 0.0)
+        if motion == "revolute":
+            ref = self.compiler.angle(ref)
+        vector = unit(where, axis, "joint: axis") if motion in ("revolute", "prismatic") else np.array([0, 0, 1.0])
+        link.motions.append(Motion(attrs.get("name"), motion, vector, pos, ref))
+
+    def inertial(self, where: Where, element) -> Inertial:
+        attrs = element.attrib
+        pos = numbers(where, attrs.get("pos"), "inertial: pos", 3)
+        mass = number(where, attrs.get("mass"), "inertial: mass")
+        full, diagonal = attrs.get("fullinertia"), attrs.get("diaginertia")
+        if (full is None) == (diagonal is None):
+            raise where.error("inertial: give exactly one of diaginertia and fullinertia")
+        turned = any(key in attrs for key in ORIENTATIONS)
+        if turned and full is not None:
+            raise where.error("inertial: an orientation is not allowed with fullinertia (which is in the body frame)")
+        rotation = self.orientation(where, attrs) if turned else None
+        quaternion = None
+        if "quat" in attrs:
+            q = np.array(numbers(where, attrs["quat"], "inertial: quat", 4))
+            quaternion = q
+        if rotation is not None and np.allclose(rotation, np.eye(3), rtol=0, atol=0):
+            rotation, quaternion = None, None
+        elif rotation is not None and quaternion is None:
+            from rbi.core.rotation import matrix_to_quaternion
+
+            quaternion = matrix_to_quaternion(rotation)
+        if full is not None:
+            ixx, iyy, izz, ixy, ixz, iyz = numbers(where, full, "inertial: fullinertia", 6)
+            inertia = from_six(ixx, iyy, izz, ixy, ixz, iyz)
+        else:
+            inertia = np.diag(numbers(where, diagonal, "inertial: diaginertia", 3))
+        check_inertia_range(where, inertia)
+        return Inertial(mass, np.array(pos, dtype=float), inertia, rotation=rotation, quaternion=quaternion,
+                        element=element)
+
+    def geom(self, element, frame: Pose, link: Link, active_class: str) -> None:
+        attrs = _attributes(element, self.defaults, active_class)
+        index = len(self.geoms[link.index])
+        name = attrs.get("name")
+        label = f"geom[{index}]" + (f" ({short(name)})" if name else "")
+        where = Where(self.model.path, f"{link.label}: {label}")
+        kind = attrs.get("type", "sphere")
+        if kind not in GEOM_KINDS:
+            raise where.error(f"type: {short(kind)!r}: not a MuJoCo geom type ({', '.join(GEOM_KINDS)})")
+        group = number(where, attrs.get("group"), "group", 0.0)
+        size = numbers(where, attrs.get("size", "0 0 0"), "size", (1, 2, 3)) if "size" in attrs else []
+        pose, size = self.geom_frame(where, attrs, kind, size)
+        pose = frame.then(pose)
+        mass = number(where, attrs.get("mass"), "mass") if "mass" in attrs else None
+        density = number(where, attrs.get("density"), "density", 1000.0)
+        shell = (attrs.get("shellinertia") or "false") == "true"
+        geom = Geom(kind, (), pose, label, mass=mass, density=density, shell=shell)
+        if kind == "sphere":
+            geom.size = (_size(where, size, 1, kind)[0],)
+        elif kind in ("capsule", "cylinder"):
+            r, half = _size(where, size, 2, kind)
+            geom.size = (r, 2 * half)
+        elif kind == "box":
+            geom.size = tuple(2 * v for v in _size(where, size, 3, kind))
+        elif kind == "ellipsoid":
+            geom.size = tuple(_size(where, size, 3, kind))
+        elif kind == "mesh":
+            mesh_name = attrs.get("mesh")
+            asset = self.meshes.get(mesh_name)
+            if asset is None:
+                raise where.error(f"mesh: {short(mesh_name)!r}: no <mesh> asset of that name")
+            if "error" in asset:
+                raise where.error(f"mesh {short(mesh_name)!r}: {asset['error']}")
+            geom.mesh_file, geom.mesh_scale, geom.mesh_inertia = asset["file"], asset["scale"], asset["mode"]
+            if shell:
+                geom.mesh_inertia = "shell"
+        positive(where, geom.size, "size", allow_zero=True)
+        in_group = self.compiler.group_range[0] <= group <= self.compiler.group_range[1]
+        self.geoms[link.index].append((geom, in_group))
+        if in_group:
+            link.collisions.append(geom)
+
+    def geom_frame(self, where: Where, attrs, kind: str, size: list[float]) -> tuple[Pose, list[float]]:
+        fromto = attrs.get("fromto")
+        if fromto is None or kind not in ("capsule", "cylinder", "box", "ellipsoid"):
+            return self.pose(None, attrs, where), size
+        values = numbers(where, fromto, "fromto", 6)
+        start, end = np.array(values[:3]), np.array(values[3:])
+        direction = end - start
+        length = float(np.linalg.norm(direction))
+        if not length > 0:
+            raise where.error("fromto: the two ends coincide")
+        half = length / 2
+        if kind in ("capsule", "cylinder"):
+            size = [_size(where, size, 1, kind, fromto=True)[0], half]
+        else:
+            a, b = _size(where, size, 2, kind, fromto=True)[:2]
+            size = [a, b, half]
+        return Pose(z_to(direction / length), (start + end) / 2), size
+
+
+def _size(where: Where, size: list[float], needed: int, kind: str, fromto: bool = False) -> list[float]:
+    if len(size) < needed:
+        raise where.error(f"size: a {kind}{' with fromto' if fromto else ''} needs {needed} number(s), got {len(size)}")
+    return list(size[:needed])
+
+
+def z_to(direction) -> np.ndarray:
+    """The rotation MuJoCo uses to turn z onto ``direction`` (a unit vector): about z × direction,
+    the shortest turn; about x by half a turn when ``direction`` is −z."""
+    from rbi.core.rotation import axis_angle_matrix
+
+    d = np.asarray(direction, dtype=float)
+    axis = np.cross([0.0, 0.0, 1.0], d)
+    s = float(np.linalg.norm(axis))
+    if s < 1e-10:
+        axis = np.array([1.0, 0.0, 0.0])
+    else:
+        axis = axis / s
+    angle = math.atan2(s, d[2])
+    return axis_angle_matrix(axis, angle)
+
+
+# --- compiled mass properties ---------------------------------------------------------------
+
+def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
+    from rbi.formats.robot_geometry import combine, distribution
+
+    for link in model.links:
+        explicit = link.inertial
+        use_geoms = compiler.inertiafromgeom == "true" or (compiler.inertiafromgeom == "auto" and explicit is None)
+        if use_geoms:
+            pieces = []
+            for geom, counts in geoms.get(link.index, []):
+                if not counts:
+                    continue
+                found = distribution(geom, "exact", f"{model.path}: {link.label}: ")
+                if found is None or not found.measure > 0:
+                    continue
+                density = geom.mass / found.measure if geom.mass is not None else geom.density
+                mass = density * found.measure
+                pieces.append((mass, found.centroid, found.inertia * density))
+            if pieces:
+                props = combine(pieces)
+                link.inertial = Inertial(props.mass, props.com, props.inertia, element=None, source="geoms")
+                if explicit is not None:
+                    model.notes.append(f"{model.path}: {link.label}: <inertial> ignored: inertiafromgeom=\"true\" "
+                                       "takes the mass properties from the geoms, as MuJoCo does")
+            elif explicit is not None and compiler.inertiafromgeom == "true":
+                link.inertial = None
+        if link.inertial is not None and (compiler.boundmass > 0 or compiler.boundinertia > 0):
+            _bound(link, compiler)
+    if compiler.settotalmass > 0:
+        total = sum(link.inertial.mass for link in model.links if link.inertial is not None)
+        if total > 0:
+            scale = compiler.settotalmass / total
+            for link in model.links:
+                if link.inertial is not None:
+                    inertial = link.inertial
+                    link.inertial = Inertial(inertial.mass * scale, inertial.com, inertial.inertia * scale,
+                                             rotation=inertial.rotation, rpy=inertial.rpy,
+                                             quaternion=inertial.quaternion, element=inertial.element,
+                                             source=inertial.source)
+
+
+def _bound(link: Link, compiler: Compiler) -> None:
+    inertial = link.inertial
+    mass = max(inertial.mass, compiler.boundmass)
+    inertia = inertial.inertia
+    if compiler.boundinertia > 0:
+        I = inertial.inertia_in_link_axes()
+        moments, axes = np.linalg.eigh(I)
+        moments = np.maximum(moments, compiler.boundinertia)
+        inertia = (axes * moments) @ axes.T
+        link.inertial = Inertial(mass, inertial.com, inertia, element=inertial.element, source=inertial.source)
+        return
+    link.inertial = Inertial(mass, inertial.com, inertia, rotation=inertial.rotation, rpy=inertial.rpy,
+                             quaternion=inertial.quaternion, element=inertial.element, source=inertial.source)

@@ -1,0 +1,244 @@
+"""Mass properties of a robot link's geometry (the :class:`~rbi.formats.robot_model.Geom` pieces
+a reader returns), per unit density, in the link's frame.
+
+Primitives are closed forms (MuJoCo's, which are the exact ones: a capsule is a cylinder and two
+hemispheres); meshes are integrated by :mod:`rbi.core.mesh` in one of three modes, as MuJoCo
+names them: ``exact`` (the solid a closed mesh encloses), ``convex`` (the solid convex hull) and
+``shell`` (mass on the surface). A shell's density is mass per area (kg/m²), as MuJoCo reads a
+geom's density under ``shellinertia``.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import NamedTuple
+
+import numpy as np
+
+from rbi.errors import InputError
+from rbi.formats.robot_model import Geom
+
+MESH_INERTIA_MODES = ("exact", "convex", "shell")
+
+
+class Distribution(NamedTuple):
+    """Where a piece of geometry puts its mass per unit density, in the link frame: ``measure``
+    (m³, or m² for a shell), ``centroid`` (m), ``inertia`` about the centroid per unit density
+    (kg·m² per kg/m³, link axes), and the axis-aligned ``low``/``high`` corners of its bounds."""
+
+    measure: float
+    centroid: np.ndarray
+    inertia: np.ndarray
+    low: np.ndarray
+    high: np.ndarray
+    shell: bool
+
+
+def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[float, np.ndarray]:
+    """Volume (or area, for ``shell``) and the principal moments per unit density of a centred
+    primitive in its own axes (cylinder and capsule along z). Sizes as :class:`Geom` gives them."""
+    pi = math.pi
+    if kind == "sphere":
+        r, = size
+        if shell:
+            area = 4 * pi * r * r
+            return area, np.full(3, 2.0 / 3.0 * area * r * r)
+        volume = 4.0 / 3.0 * pi * r ** 3
+        return volume, np.full(3, 0.4 * volume * r * r)
+    if kind == "box":
+        a, b, c = size
+        if shell:
+            faces = ((b * c, a), (a * c, b), (a * b, c))  # (area of the pair of faces, their spacing)
+            S = np.zeros(3)
+            for axis, (area, spacing) in enumerate(faces):
+                for other in range(3):
+                    S[other] += 2 * area * (spacing ** 2 / 4 if other == axis else size[other] ** 2 / 12)
+            return 2 * (a * b + b * c + a * c), S.sum() - S
+        volume = a * b * c
+        return volume, volume / 12.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+    if kind == "ellipsoid":
+        a, b, c = size
+        if shell:
+            raise ValueError("a shell ellipsoid has no closed form; give it a volume (shellinertia off)")
+        volume = 4.0 / 3.0 * pi * a * b * c
+        return volume, volume / 5.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+    if kind == "cylinder":
+        r, length = size
+        if shell:
+            side, cap = 2 * pi * r * length, pi * r * r
+            S = np.array([side * r * r / 2 + 2 * cap * r * r / 4] * 2 + [side * length ** 2 / 12 + 2 * cap * length ** 2 / 4])
+            return side + 2 * cap, S.sum() - S
+        volume = pi * r * r * length
+        transverse = volume * (3 * r * r + length * length) / 12.0
+        return volume, np.array([transverse, transverse, volume * r * r / 2.0])
+    if kind == "capsule":
+        r, length = size
+        if shell:
+            side, sphere = 2 * pi * r * length, 4 * pi * r * r
+            Sxy = side * r * r / 2 + sphere * r * r / 3
+            Sz = side * length ** 2 / 12 + pi * r * r * length ** 2 + 2 * pi * r ** 3 * length + sphere * r * r / 3
+            S = np.array([Sxy, Sxy, Sz])
+            return side + sphere, S.sum() - S
+        cylinder = pi * r * r * length
+        sphere = 4.0 / 3.0 * pi * r ** 3
+        transverse = (cylinder * (3 * r * r + length * length) / 12.0
+                      + sphere * (0.4 * r * r + length * (3 * r + 2 * length) / 8.0))
+        return cylinder + sphere, np.array([transverse, transverse, cylinder * r * r / 2.0 + sphere * 0.4 * r * r])
+    raise ValueError(f"no volume: {kind}")
+
+
+def _half_extent(kind: str, size) -> np.ndarray:
+    if kind == "sphere":
+        return np.full(3, size[0])
+    if kind == "box":
+        return np.asarray(size, dtype=float) / 2
+    if kind == "ellipsoid":
+        return np.asarray(size, dtype=float)
+    if kind == "cylinder":
+        return np.array([size[0], size[0], size[1] / 2])
+    return np.array([size[0], size[0], size[1] / 2 + size[0]])  # capsule
+
+
+def distribution(geom: Geom, mode: str = "exact", where: str = "") -> Distribution | None:
+    """``geom``'s distribution in the link frame; None for a kind that carries no mass (plane,
+    height field). ``mode`` is the mesh inertia mode (MJCF geoms give their own)."""
+    R, p = geom.pose.rotation, geom.pose.translation
+    if geom.kind in ("box", "sphere", "cylinder", "capsule", "ellipsoid"):
+        try:
+            measure, moments = primitive(geom.kind, geom.size, geom.shell)
+        except ValueError as exc:
+            raise InputError(f"{where}{geom.label}: {exc}") from None
+        inertia = (R * moments) @ R.T
+        corners = np.abs(R) @ _half_extent(geom.kind, geom.size)
+        return Distribution(measure, p.copy(), 0.5 * (inertia + inertia.T), p - corners, p + corners, geom.shell)
+    if geom.kind == "mesh":
+        mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
+        measure, centroid, inertia, low, high = _mesh(geom, mode, where)
+        inertia = R @ inertia @ R.T
+        return Distribution(measure, R @ centroid + p, 0.5 * (inertia + inertia.T), *_turned_bounds(R, p, low, high),
+                            mode == "shell")
+    return None
+
+
+def _turned_bounds(R, p, low, high):
+    centre, half = (low + high) / 2, (high - low) / 2
+    extent = np.abs(R) @ half
+    middle = R @ centre + p
+    return middle - extent, middle + extent
+
+
+_MESHES: dict[tuple, tuple] = {}
+
+
+def _mesh(geom: Geom, mode: str, where: str):
+    """(measure, centroid, inertia per density, low, high) of the scaled mesh in its own frame."""
+    path = geom.mesh_file
+    scale = geom.mesh_scale if geom.mesh_scale is not None else np.ones(3)
+    try:
+        status = path.stat()
+        key = (str(path.resolve()), status.st_size, status.st_mtime_ns, tuple(scale), mode)
+    except OSError as exc:
+        raise InputError(f"{where}{geom.label}: {path.name}: cannot read: {exc.strerror}") from None
+    if key in _MESHES:
+        return _MESHES[key]
+    try:
+        vertices, faces = _mesh_arrays(path, mode)
+    except ValueError as exc:
+        raise InputError(f"{where}{geom.label}: {path.name}: {_hinted(str(exc), mode)}") from None
+    vertices = vertices * scale
+    if np.prod(np.sign(scale)) < 0:
+        faces = faces[:, ::-1]
+    if not np.all(scale):
+        raise InputError(f"{where}{geom.label}: scale {scale.tolist()}: a zero scale flattens the mesh")
+    from rbi.core import mesh as core_mesh
+
+    if hasattr(core_mesh, "mesh_distribution"):
+        try:
+            found = core_mesh.mesh_distribution(vertices, faces, mode)
+        except ValueError as exc:
+            raise InputError(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}") from None
+        measure, centroid, inertia = found.measure, found.centroid, found.inertia_per_density
+    else:
+        if mode == "convex":
+            from scipy.spatial import ConvexHull
+
+            hull = ConvexHull(vertices)
+            faces = _outward(hull.points, hull.simplices)
+            vertices = hull.points
+        elif mode == "shell":
+            raise InputError(f"{where}{geom.label}: mesh inertia 'shell' is not available in this build")
+        props = core_mesh.enclosed_volume_properties(vertices, faces)
+        measure, centroid, inertia = props.volume, props.centroid, props.inertia_per_density
+    used = vertices[np.unique(faces)]
+    result = (float(measure), np.asarray(centroid, float), np.asarray(inertia, float), used.min(axis=0),
+              used.max(axis=0))
+    _MESHES[key] = result
+    return result
+
+
+CLOSED_HINT = ("; audit it with --mesh-inertia convex (the solid convex hull) or --mesh-inertia shell (mass on "
+               "the surface)")
+
+
+def _hinted(message: str, mode: str) -> str:
+    """A mesh refusal in exact mode, with the audit options that read such a mesh."""
+    if mode != "exact" or "closed" not in message:
+        return message
+    return message.split("; for such a mesh")[0] + CLOSED_HINT
+
+
+def _outward(points, simplices):
+    centre = points.mean(axis=0)
+    faces = np.array(simplices, dtype=np.int64)
+    a, b, c = points[faces[:, 0]], points[faces[:, 1]], points[faces[:, 2]]
+    flip = np.einsum("ij,ij->i", np.cross(b - a, c - a), a - centre) < 0
+    faces[flip] = faces[flip][:, ::-1]
+    return faces
+
+
+def _mesh_arrays(path, mode: str):
+    """Vertices and faces of the mesh file, welded; for ``exact`` mode checked closed (ValueError
+    naming what is wrong)."""
+    from rbi.formats import mesh_file
+
+    if mode == "exact" and not hasattr(__import__("rbi.core.mesh", fromlist=["x"]), "mesh_distribution"):
+        solid = mesh_file.read_mesh_solid(path)
+        return solid.vertices, solid.faces
+    reader = getattr(mesh_file, "read_mesh_arrays", None)
+    if reader is not None:
+        return reader(path)
+    from rbi.core.mesh import weld_vertices
+
+    suffix = path.suffix.lower()
+    file_type = mesh_file.MESH_FILE_TYPES.get(suffix)
+    if file_type is None:
+        raise ValueError(f"unknown mesh format {suffix or '(no extension)'!r}: use one of "
+                         f"{', '.join(mesh_file.MESH_FILE_TYPES)}")
+    data = path.read_bytes()
+    if len(data) > mesh_file.MAX_MESH_BYTES:
+        raise ValueError("file too large for a mesh")
+    vertices, faces = mesh_file._parse(data, file_type)  # noqa: SLF001 - until formats.mesh_file offers arrays
+    if faces.ndim != 2 or faces.shape[0] == 0 or not np.all(np.isfinite(vertices)):
+        raise ValueError("mesh holds no triangles")
+    return weld_vertices(vertices, faces)
+
+
+class MassProperties(NamedTuple):
+    """Mass (kg), centre of mass (m, link frame), inertia about it (kg·m², link axes)."""
+
+    mass: float
+    com: np.ndarray
+    inertia: np.ndarray
+
+
+def combine(pieces: list[tuple[float, np.ndarray, np.ndarray]]) -> MassProperties:
+    """Mass properties of pieces given as (mass, centroid, inertia about the centroid)."""
+    total = sum(m for m, _, _ in pieces)
+    if not total > 0:
+        return MassProperties(0.0, np.zeros(3), np.zeros((3, 3)))
+    com = sum(m * c for m, c, _ in pieces) / total
+    inertia = np.zeros((3, 3))
+    for m, c, I in pieces:
+        d = c - com
+        inertia += I + m * (np.dot(d, d) * np.eye(3) - np.outer(d, d))
+    return MassProperties(float(total), com, 0.5 * (inertia + inertia.T))

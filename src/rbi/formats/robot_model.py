@@ -1,0 +1,280 @@
+"""The plain data a robot file reader returns (URDF, SDF and MJCF alike): links with their
+inertial element, their geometry and their place in the kinematic tree.
+
+Frames: every pose is a rotation matrix and a translation turning coordinates in a child frame
+into its parent's (``x_parent = R x_child + p``). A link's ``origin`` places it in its parent
+link's frame at the reference configuration (URDF/SDF: every joint at zero; MJCF: ``qpos0``);
+its ``motions`` move it from there (a joint's own coordinate: radians for revolute/hinge, metres
+for prismatic/slide). Geometry poses are in the link frame. SI units throughout (m, kg, kg·m²).
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from rbi.errors import InputError
+
+LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
+
+_NUMBER = re.compile(r"^[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?$")
+
+MAX_ANGLE_RAD = 1e9
+"""Largest angle read (rad): beyond it a double cannot place the angle within a microradian."""
+
+
+@dataclass(frozen=True)
+class Pose:
+    """Child frame → parent frame: ``x_parent = rotation @ x_child + translation``."""
+
+    rotation: np.ndarray
+    translation: np.ndarray
+
+    @staticmethod
+    def identity() -> "Pose":
+        return Pose(np.eye(3), np.zeros(3))
+
+    def then(self, inner: "Pose") -> "Pose":
+        """This pose applied after ``inner`` (``inner`` is expressed in this pose's child frame)."""
+        return Pose(self.rotation @ inner.rotation, self.rotation @ inner.translation + self.translation)
+
+    def inverse(self) -> "Pose":
+        return Pose(self.rotation.T, -self.rotation.T @ self.translation)
+
+    def apply(self, point) -> np.ndarray:
+        return self.rotation @ np.asarray(point, dtype=float) + self.translation
+
+
+@dataclass
+class Inertial:
+    """A link's declared mass properties: ``mass`` (kg), ``com`` the centre of mass in the link
+    frame (m), ``inertia`` about the centre of mass in the inertial frame's axes (kg·m²),
+    ``rotation`` the inertial frame's axes → link axes (None: the same axes). ``rpy`` and
+    ``quaternion`` repeat the rotation as the file gave it (URDF/SDF roll-pitch-yaw, MJCF/SDF
+    quaternion ``w x y z``). ``element`` is the XML element it was read from (None when MJCF's
+    compiler inferred it from the geoms); ``source`` says which: ``"inertial"`` or ``"geoms"``."""
+
+    mass: float
+    com: np.ndarray
+    inertia: np.ndarray
+    rotation: np.ndarray | None = None
+    rpy: tuple[float, float, float] | None = None
+    quaternion: np.ndarray | None = None
+    element: Any = None
+    source: str = "inertial"
+
+    def inertia_in_link_axes(self) -> np.ndarray:
+        """The inertia about the centre of mass in the link frame's axes, kg·m²."""
+        if self.rotation is None:
+            return self.inertia.copy()
+        R = self.rotation
+        return 0.5 * ((R @ self.inertia @ R.T) + (R @ self.inertia @ R.T).T)
+
+
+@dataclass
+class Geom:
+    """One piece of a link's geometry, placed in the link frame by ``pose`` (the shape's own
+    frame: centred on its centre, cylinder and capsule along z).
+
+    ``kind`` and ``size`` (m): ``box`` (x, y, z full edge lengths), ``cylinder`` (radius, length),
+    ``capsule`` (radius, length of the cylindrical part), ``sphere`` (radius,), ``ellipsoid``
+    (three semi-axes), ``mesh`` (``mesh_file`` scaled by ``mesh_scale`` about the mesh origin),
+    or a kind with no volume (``plane``, ``hfield``, …), which carries nothing.
+    MJCF only: ``mass`` or ``density`` (kg/m³, or kg/m² with ``shell``), ``mesh_inertia`` the mesh
+    asset's ``inertia`` mode."""
+
+    kind: str
+    size: tuple[float, ...]
+    pose: Pose
+    label: str
+    mesh_file: Path | None = None
+    mesh_scale: np.ndarray | None = None
+    mass: float | None = None
+    density: float | None = None
+    shell: bool = False
+    mesh_inertia: str | None = None
+
+
+@dataclass
+class Motion:
+    """One joint's motion of a link relative to its reference pose: ``kind`` ``revolute``
+    (about ``axis`` through ``anchor``, radians) or ``prismatic`` (along ``axis``, metres), or
+    ``fixed``/``free``/``ball``/``planar``/``floating`` (left at the reference pose). ``axis`` and
+    ``anchor`` are in the link's frame at the reference pose; ``reference`` the coordinate at
+    which the link is at that pose (MJCF ``ref``, else 0)."""
+
+    name: str | None
+    kind: str
+    axis: np.ndarray
+    anchor: np.ndarray
+    reference: float = 0.0
+
+
+@dataclass
+class Link:
+    """A link (MJCF: body): ``index`` in file order, ``name``, ``inertial`` (None when it
+    declares none), ``collisions`` and ``visuals``, ``parent`` (a link name, None for a root),
+    ``origin`` (its frame in the parent's at the reference configuration; for a root, in the
+    model frame), ``motions`` (the joints between it and its parent; empty when fixed) and the
+    XML ``element``."""
+
+    index: int
+    name: str | None
+    inertial: Inertial | None = None
+    collisions: list[Geom] = field(default_factory=list)
+    visuals: list[Geom] = field(default_factory=list)
+    parent: str | None = None
+    origin: Pose = field(default_factory=Pose.identity)
+    motions: list[Motion] = field(default_factory=list)
+    element: Any = None
+    word: str = "link"
+
+    @property
+    def label(self) -> str:
+        return f"{self.word}[{self.index}]" + (f" ({short(self.name)})" if self.name is not None else "")
+
+    @property
+    def moves(self) -> bool:
+        """Does a joint move this link relative to its parent (a root that is not MJCF's free
+        body counts as fixed)?"""
+        return self.parent is not None and any(m.kind not in ("fixed",) for m in self.motions)
+
+
+@dataclass
+class RobotModel:
+    """A parsed robot file: ``format`` (``urdf``, ``sdf``, ``mjcf``), ``name``, ``links`` in file
+    order, ``notes`` (what was read but not checked: unresolved includes, kinds of geometry
+    without volume), and ``document`` (the XML with element spans, for a fixed copy)."""
+
+    path: str
+    format: str
+    name: str | None
+    links: list[Link] = field(default_factory=list)
+    notes: list[str] = field(default_factory=list)
+    unchecked: list[str] = field(default_factory=list)
+    document: Any = None
+    options: dict[str, Any] = field(default_factory=dict)
+
+    @property
+    def link_word(self) -> str:
+        return LINK_WORD[self.format]
+
+    def link(self, name: str) -> Link | None:
+        for each in self.links:
+            if each.name == name:
+                return each
+        return None
+
+
+# --- reading numbers ----------------------------------------------------------------------------
+
+class Where:
+    """Where a value was read, for error messages: ``file: link[i] (name): what``."""
+
+    def __init__(self, path: str, label: str | None = None):
+        self.path, self.label = path, label
+
+    def error(self, what: str) -> InputError:
+        return InputError(f"{self.path}: {self.label}: {what}" if self.label else f"{self.path}: {what}")
+
+
+def numbers(where: Where, text: str | None, what: str, count: int | tuple[int, ...]) -> list[float]:
+    """Whitespace-separated plain finite decimals (no NaN, inf, hex or underscores)."""
+    counts = (count,) if isinstance(count, int) else count
+    pieces = (text or "").split()
+    expected = " or ".join(str(c) for c in counts)
+    if len(pieces) not in counts:
+        raise where.error(f"{what}: expected {expected} number(s), got {len(pieces)} ({short(text)!r})")
+    values = []
+    for piece in pieces:
+        if not _NUMBER.match(piece):
+            raise where.error(f"{what}: must be a finite number (got {short(piece)!r})")
+        value = float(piece)
+        if not math.isfinite(value):
+            raise where.error(f"{what}: must be a finite number (got {short(piece)!r}, too large)")
+        values.append(value)
+    return values
+
+
+def number(where: Where, text: str | None, what: str, default: float | None = None) -> float:
+    if text is None:
+        if default is None:
+            raise where.error(f"{what}: missing")
+        return default
+    return numbers(where, text, what, 1)[0]
+
+
+def positive(where: Where, values, what: str, allow_zero: bool = False) -> None:
+    for value in values:
+        if value < 0 or (value == 0 and not allow_zero):
+            raise where.error(f"{what}: must be {'zero or ' if allow_zero else ''}greater than 0 (got {value!r})")
+
+
+def angles(where: Where, values, what: str) -> list[float]:
+    for axis, angle in zip(("roll", "pitch", "yaw"), values):
+        if abs(angle) > MAX_ANGLE_RAD:
+            raise where.error(f"{what}: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
+                              f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})")
+    return list(values)
+
+
+def from_six(ixx, iyy, izz, ixy, ixz, iyz) -> np.ndarray:
+    return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]], dtype=float)
+
+
+def check_inertia_range(where: Where, inertia: np.ndarray) -> None:
+    if not np.isfinite(np.sum(np.abs(inertia))):
+        raise where.error(f"inertia: numbers too large: the entries (largest {float(np.max(np.abs(inertia))):.3g}) "
+                          f"add up beyond the largest double, {np.finfo(float).max:.3g}; give the inertia in kg·m²")
+
+
+def rpy_matrix(rpy) -> np.ndarray:
+    """URDF/SDF roll, pitch, yaw (rad) about the fixed x, y, z axes: ``Rz(yaw) Ry(pitch) Rx(roll)``."""
+    from rbi.core.rotation import euler_matrix, without_rounding_noise
+
+    return without_rounding_noise(euler_matrix(np.asarray(rpy, dtype=float), "xyz"))
+
+
+def quaternion_matrix(where: Where, wxyz, what: str) -> np.ndarray:
+    """Rotation of the quaternion ``w x y z`` (normalised; scaled first so huge components do
+    not overflow)."""
+    from rbi.core.rotation import quaternion_to_matrix, without_rounding_noise
+
+    q = np.asarray(wxyz, dtype=float)
+    largest = float(np.max(np.abs(q)))
+    if largest == 0.0:
+        raise where.error(f"{what}: the quaternion must not be zero")
+    q = q / largest
+    return without_rounding_noise(quaternion_to_matrix(q / np.linalg.norm(q)))
+
+
+def unit(where: Where, vector, what: str) -> np.ndarray:
+    v = np.asarray(vector, dtype=float)
+    largest = float(np.max(np.abs(v)))
+    if largest == 0.0:
+        raise where.error(f"{what}: must not be the zero vector")
+    v = v / largest
+    return v / np.linalg.norm(v)
+
+
+def short(text: Any, limit: int = 40) -> str:
+    text = "" if text is None else str(text)
+    text = text.encode("unicode_escape").decode("ascii")
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def check_unique_names(path: str, links: list[Link], word: str) -> None:
+    """InputError naming the first name two links share."""
+    seen: dict[str, Link] = {}
+    for each in links:
+        if each.name is None:
+            continue
+        if each.name in seen:
+            raise InputError(f"{path}: {each.label}: duplicate {word} name {short(each.name)!r} "
+                             f"(also {seen[each.name].label}); every {word} needs its own name")
+        seen[each.name] = each

@@ -1,0 +1,74 @@
+"""Where the mesh a robot file names is: ``package://NAME/...``, ``model://NAME/...``,
+``file:///...`` and paths relative to the robot file's folder.
+
+- ``package://NAME/REST`` (and SDF's ``model://NAME/REST``): in the folder given for NAME by
+  ``--package-path NAME=DIR``, else in ``DIR/NAME`` for each DIR of ``ROS_PACKAGE_PATH`` (and, for
+  ``model://``, ``GZ_SIM_RESOURCE_PATH``/``GAZEBO_MODEL_PATH``), else in the folder ``NAME`` beside
+  the robot file (or the robot file's own folder when it is called NAME, or REST directly beside
+  it, as pybullet does). A folder the user named (option or environment) is trusted; the file
+  must stay inside it.
+- ``file://`` and plain paths follow the spec path rules (:mod:`rbi.formats.paths`): inside the
+  robot file's folder unless ``--allow-outside-paths``.
+"""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from urllib.parse import unquote
+
+from rbi.errors import InputError
+from rbi.formats.paths import spec_relative_file
+
+
+def parse_package_paths(values: list[str] | None) -> dict[str, list[Path]]:
+    """``NAME=DIR`` strings (``--package-path``) as a mapping; InputError for a malformed one."""
+    found: dict[str, list[Path]] = {}
+    for value in values or []:
+        name, sep, folder = value.partition("=")
+        if not sep or not name.strip() or not folder.strip():
+            raise InputError(f"--package-path: {value!r}: give NAME=DIR (the package's name and its folder)")
+        if not os.path.isdir(folder):
+            raise InputError(f"--package-path: {name}={folder}: no such folder")
+        found.setdefault(name.strip(), []).append(Path(folder))
+    return found
+
+
+def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str, list[Path]] | None) -> Path:
+    """The mesh file ``uri`` names in the robot file at ``robot_path``; InputError (``label``
+    first) when it cannot be found or may not be read."""
+    if "\x00" in uri:
+        raise InputError(f"{label}: not a usable path (it contains a NUL character)")
+    for scheme in ("package://", "model://"):
+        if uri.startswith(scheme):
+            return _in_package(robot_path, uri, uri[len(scheme):], label, package_paths or {}, scheme)
+    if uri.startswith("file://"):
+        return spec_relative_file(robot_path, unquote(uri[len("file://"):]), label)
+    return spec_relative_file(robot_path, uri, label)
+
+
+def _in_package(robot_path: str, uri: str, rest: str, label: str, package_paths: dict[str, list[Path]],
+                scheme: str) -> Path:
+    name, _, inner = rest.partition("/")
+    trusted = list(package_paths.get(name, []))
+    variables = ["ROS_PACKAGE_PATH"] + (["GZ_SIM_RESOURCE_PATH", "GAZEBO_MODEL_PATH"] if scheme == "model://" else [])
+    for variable in variables:
+        for folder in filter(None, os.environ.get(variable, "").split(os.pathsep)):
+            trusted.append(Path(folder) / name)
+    for folder in trusted:
+        candidate = folder / inner
+        try:
+            inside = candidate.resolve().is_relative_to(folder.resolve())
+        except (OSError, RuntimeError):
+            inside = False
+        if inside and candidate.is_file():
+            return candidate
+    here = Path(robot_path).parent
+    beside = [f"{name}/{inner}", rest]
+    if here.resolve().name == name:
+        beside.insert(0, inner)
+    for relative in beside:
+        if (here / relative).is_file():
+            return spec_relative_file(robot_path, relative, label)
+    raise InputError(f"{label}: {uri}: no such file (looked in --package-path {name}=DIR, ROS_PACKAGE_PATH and "
+                     f"beside the robot file); give the package's folder with --package-path {name}=DIR")

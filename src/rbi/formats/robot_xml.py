@@ -1,0 +1,262 @@
+"""Hardened XML reading for robot description files: a small element tree that remembers where
+each element starts and ends in the file, so that a fixed copy can edit the original text at
+those spans and keep every other byte.
+
+What is refused, as :class:`InputError` (one line naming the file): files over
+:data:`MAX_FILE_BYTES`; entity declarations and external references (a robot file has no use
+for them and they are the door to entity-expansion and file-disclosure attacks); nesting deeper
+than :data:`MAX_DEPTH`; text in an encoding other than UTF-8, UTF-16, ASCII, ISO-8859-1 or
+Windows-1252 (named in the message, with the fix: save it as UTF-8); text that does not decode in
+the encoding it declares.
+
+What is accepted because files in the wild have it and pybullet, Pinocchio and MuJoCo load them:
+a byte-order mark, blank lines or spaces before ``<?xml``, and NULs or blank lines after the
+last element.
+
+The document is handed to expat in chunks of :data:`PARSE_CHUNK_BYTES` (expat re-scans an
+unfinished token on every feed, so a 63 MiB attribute fed 16 KiB at a time takes minutes; fed in
+large chunks, a second).
+"""
+
+from __future__ import annotations
+
+import codecs
+import os
+import re
+from dataclasses import dataclass, field
+from typing import Iterator
+
+from rbi.errors import InputError
+
+MAX_FILE_BYTES = 64 * 1024 * 1024
+"""Largest robot file read (64 MiB): far above any real description, whose meshes live in
+other files."""
+
+MAX_DEPTH = 500
+"""Deepest element nesting read; an MJCF chain of 500 bodies is already far beyond any robot."""
+
+PARSE_CHUNK_BYTES = 64 * 1024 * 1024
+"""Bytes handed to expat per call: the whole of any file rbi reads, in one feed."""
+
+ENCODINGS = {"utf-8": "utf-8", "utf8": "utf-8", "utf-16": "utf-16", "utf16": "utf-16", "us-ascii": "ascii",
+             "ascii": "ascii", "iso-8859-1": "latin-1", "iso8859-1": "latin-1", "latin-1": "latin-1",
+             "latin1": "latin-1", "windows-1252": "cp1252", "cp1252": "cp1252"}
+"""Declared encodings read (lower case) and Python's codec for each."""
+
+_DECLARATION = re.compile(rb"^<\?xml[^>]*?encoding\s*=\s*([\"'])([^\"']*)\1", re.S)
+_BOMS = ((codecs.BOM_UTF8, "utf-8"), (codecs.BOM_UTF16_LE, "utf-16-le"), (codecs.BOM_UTF16_BE, "utf-16-be"))
+
+
+@dataclass(eq=False)
+class XmlElement:
+    """One element: ``tag`` without namespace, ``attrib`` as written, ``text`` the character data
+    directly inside it (stripped), ``children`` in order, and its span ``start:end`` in
+    :attr:`XmlDocument.text` (UTF-8 bytes) from ``<`` to the closing ``>``; ``line`` is 1-based."""
+
+    tag: str
+    attrib: dict[str, str]
+    line: int
+    start: int
+    end: int = -1
+    text: str = ""
+    children: list["XmlElement"] = field(default_factory=list)
+    parent: "XmlElement | None" = None
+    source: str | None = None
+
+    def get(self, key: str, default: str | None = None) -> str | None:
+        return self.attrib.get(key, default)
+
+    def child(self, tag: str) -> "XmlElement | None":
+        for each in self.children:
+            if each.tag == tag:
+                return each
+        return None
+
+    def all(self, tag: str) -> list["XmlElement"]:
+        return [each for each in self.children if each.tag == tag]
+
+    def iter(self, tag: str | None = None) -> Iterator["XmlElement"]:
+        """This element and every element below it, document order."""
+        stack = [self]
+        while stack:
+            element = stack.pop()
+            if tag is None or element.tag == tag:
+                yield element
+            stack.extend(reversed(element.children))
+
+    def __iter__(self):
+        return iter(self.children)
+
+
+@dataclass
+class XmlDocument:
+    """A parsed file: ``root``; ``text`` the document as UTF-8 bytes (the spans index it);
+    ``prefix``/``suffix`` the original bytes before and after it (BOM, blank lines, NULs);
+    ``encoding`` the Python codec of the original file."""
+
+    path: str
+    root: XmlElement
+    text: bytes
+    prefix: bytes
+    suffix: bytes
+    encoding: str
+
+    def original_bytes(self, text: bytes) -> bytes:
+        """``text`` (UTF-8, this document's text edited) in the file's own encoding, with the
+        original bytes before and after it."""
+        body = text if self.encoding == "utf-8" else text.decode("utf-8").encode(self.encoding)
+        return self.prefix + body + self.suffix
+
+
+def read_xml(path: str, data: bytes | None = None) -> XmlDocument:
+    """Read and parse ``path`` (or the bytes ``data`` named by it); InputError for anything
+    refused or malformed."""
+    if data is None:
+        data = _read_bytes(path)
+    prefix, body, suffix, encoding = _split(path, data)
+    if encoding in ("utf-16-le", "utf-16-be"):
+        utf8 = body  # decoded from UTF-16 already (_split)
+    elif encoding == "utf-8":
+        utf8 = body
+        try:
+            utf8.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise InputError(f"{path}: not valid UTF-8 at byte {len(prefix) + exc.start} (the file declares UTF-8 "
+                             "or no encoding); save it as UTF-8") from None
+    else:
+        try:
+            utf8 = body.decode(encoding).encode("utf-8")
+        except UnicodeError:
+            raise InputError(f"{path}: the text does not decode as {encoding} (the encoding it declares); "
+                             "save it as UTF-8") from None
+    root = _parse(path, utf8)
+    return XmlDocument(path, root, utf8, prefix, suffix, encoding)
+
+
+def _read_bytes(path: str) -> bytes:
+    try:
+        if not os.path.isfile(path):
+            raise InputError(f"{path}: " + ("not a regular file" if os.path.exists(path) else "no such file"))
+        size = os.path.getsize(path)
+        if size > MAX_FILE_BYTES:
+            raise InputError(f"{path}: {size} bytes: larger than the {MAX_FILE_BYTES // 2**20} MiB rbi reads "
+                             "from a robot file")
+        with open(path, "rb") as handle:
+            data = handle.read(MAX_FILE_BYTES + 1)
+    except OSError as exc:
+        raise InputError(f"{path}: cannot read: {exc.strerror or type(exc).__name__}") from None
+    if len(data) > MAX_FILE_BYTES:
+        raise InputError(f"{path}: larger than the {MAX_FILE_BYTES // 2**20} MiB rbi reads from a robot file")
+    return data
+
+
+def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
+    """(prefix, document, suffix, codec): the BOM and blank space before the document, and the
+    blank space and NULs after it, set aside; the codec from the BOM or the declaration."""
+    for bom, codec in _BOMS:
+        if data.startswith(bom):
+            if codec != "utf-8":
+                try:
+                    text = data[len(bom):].decode(codec)
+                except UnicodeError:
+                    raise InputError(f"{path}: the text does not decode as {codec} (its byte-order mark says so); "
+                                     "save it as UTF-8") from None
+                # re-split the decoded text; the suffix and prefix are re-encoded on writing
+                inner = text.encode("utf-8")
+                stripped = inner.lstrip(b" \t\r\n")
+                end = len(stripped.rstrip(b" \t\r\n\x00"))
+                lead = inner[: len(inner) - len(stripped)]
+                return (bom + lead.decode("utf-8").encode(codec), stripped[:end],
+                        stripped[end:].decode("utf-8").encode(codec), codec)
+            data_prefix, data = bom, data[len(bom):]
+            break
+    else:
+        data_prefix = b""
+    stripped = data.lstrip(b" \t\r\n")
+    end = len(stripped.rstrip(b" \t\r\n\x00"))
+    prefix = data_prefix + data[: len(data) - len(stripped)]
+    body, suffix = stripped[:end], stripped[end:]
+    if not body:
+        raise InputError(f"{path}: not well-formed XML (line 1, column 0): the file is empty")
+    match = _DECLARATION.match(body[:512])
+    codec = "utf-8"
+    if match is not None:
+        declared = match.group(2).decode("ascii", "replace").strip()
+        codec = ENCODINGS.get(declared.lower())
+        if codec is None:
+            shown = declared.encode("unicode_escape").decode("ascii")[:40]
+            raise InputError(f"{path}: encoding {shown!r}: not an encoding rbi reads robot files in "
+                             "(UTF-8, UTF-16, ASCII, ISO-8859-1, Windows-1252); save the file as UTF-8")
+        if codec == "utf-16":
+            raise InputError(f"{path}: declares UTF-16 but has no byte-order mark; save it as UTF-8")
+    return prefix, body, suffix, codec
+
+
+def _parse(path: str, text: bytes) -> XmlElement:
+    from xml.parsers import expat
+
+    parser = expat.ParserCreate(encoding="utf-8")
+    parser.buffer_text = True
+    parser.buffer_size = 1 << 20
+    stack: list[XmlElement] = []
+    pieces: list[list[str]] = []
+    result: list[XmlElement] = []
+
+    def start(tag, attrib):
+        if len(stack) >= MAX_DEPTH:
+            raise InputError(f"{path}: elements nested deeper than {MAX_DEPTH} levels; refused as not a "
+                             "plausible robot description")
+        local = tag.rsplit("}", 1)[-1]
+        element = XmlElement(local, attrib, parser.CurrentLineNumber, parser.CurrentByteIndex,
+                             parent=stack[-1] if stack else None)
+        if stack:
+            stack[-1].children.append(element)
+        else:
+            result.append(element)
+        stack.append(element)
+        pieces.append([])
+
+    def end(tag):
+        element = stack.pop()
+        element.text = "".join(pieces.pop()).strip()
+        at = parser.CurrentByteIndex
+        element.end = _tag_end(text, at)
+
+    def characters(data):
+        if pieces:
+            pieces[-1].append(data)
+
+    def refuse(*_args):
+        raise InputError(f"{path}: refused: the file declares XML entities or external references; rbi does "
+                         "not expand them")
+
+    parser.StartElementHandler = start
+    parser.EndElementHandler = end
+    parser.CharacterDataHandler = characters
+    parser.EntityDeclHandler = refuse
+    parser.UnparsedEntityDeclHandler = refuse
+    parser.ExternalEntityRefHandler = refuse
+    try:
+        for offset in range(0, max(len(text), 1), PARSE_CHUNK_BYTES):
+            parser.Parse(text[offset: offset + PARSE_CHUNK_BYTES], False)
+        parser.Parse(b"", True)
+    except expat.ExpatError as exc:
+        raise InputError(f"{path}: not well-formed XML (line {exc.lineno}, column {exc.offset}): "
+                         f"{expat.ErrorString(exc.code)}") from None
+    except RecursionError:
+        raise InputError(f"{path}: elements nested too deeply") from None
+    if not result:
+        raise InputError(f"{path}: empty XML document")
+    return result[0]
+
+
+_TAG_PIECE = re.compile(rb'"[^"]*"|\'[^\']*\'|>')
+
+
+def _tag_end(text: bytes, at: int) -> int:
+    """Index just past the ``>`` that ends the tag starting at ``at`` (an end tag, or an empty
+    element's only tag), skipping ``>`` inside quoted attribute values."""
+    for match in _TAG_PIECE.finditer(text, at):
+        if match.group() == b">":
+            return match.end()
+    return len(text)

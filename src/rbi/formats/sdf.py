@@ -1,0 +1,233 @@
+"""SDF: ``<sdf>[<world>]<model name><pose/><link name><pose/><inertial/><collision/><visual/>
+</link><joint name type><parent/><child/><pose/><axis><xyz/></axis></joint></model>``.
+
+- A link's ``<pose>`` places it in its model's frame (at every joint's zero); a model's pose
+  places it in the world. ``x y z roll pitch yaw`` (radians unless ``degrees="true"``), or
+  ``rotation_format="quat_xyzw"``. Poses relative to other named frames are not read.
+- ``<inertial><pose/><mass/><inertia><ixx/>…</inertia>``: SDF's defaults (mass 1,
+  ``ixx = iyy = izz = 1``) fill missing elements.
+- Geometry: ``<box><size/>``, ``<cylinder><radius/><length/>``, ``<sphere><radius/>``,
+  ``<capsule><radius/><length/>``, ``<ellipsoid><radii/>``, ``<mesh><uri/><scale/>``.
+- A joint's ``<pose>`` is in the child link's frame; its ``<axis><xyz>`` in the joint frame
+  (in the model frame with ``use_parent_model_frame`` or ``expressed_in="__model__"``).
+- ``<include>`` of another model is not followed: it is listed in :attr:`RobotModel.unchecked`,
+  so no check reports the file as fine without having read those links.
+
+Link names are the model's own; when the file holds several models they are written
+``model::link``.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from rbi.formats.robot_model import (Geom, Inertial, Link, Motion, Pose, RobotModel, Where, angles,
+                                     check_inertia_range, check_unique_names, from_six, number, numbers,
+                                     positive, quaternion_matrix, rpy_matrix, short, unit)
+from rbi.formats.robot_paths import resolve_mesh
+
+JOINT_KINDS = {"revolute": "revolute", "continuous": "revolute", "prismatic": "prismatic", "fixed": "fixed",
+               "ball": "ball", "universal": "universal", "revolute2": "revolute2", "screw": "screw",
+               "gearbox": "gearbox"}
+
+
+def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
+    path, root = document.path, document.root
+    models = list(_models(root, Pose.identity()))
+    first = root.child("model") or (root.child("world").child("model") if root.child("world") is not None
+                                    and root.child("world").child("model") is not None else None)
+    name = first.get("name") if first is not None else None
+    robot = RobotModel(path, "sdf", name, document=document)
+    for include in (e for e in root.iter("include")):
+        uri = include.child("uri")
+        robot.unchecked.append(f"{path}: include {short(uri.text if uri is not None else '', 80)!r}: not followed; "
+                               "the links of the included model are not checked")
+    prefix = len(models) > 1
+    index = 0
+    for model_element, model_pose in models:
+        model_name = model_element.get("name") or ""
+        links: dict[str, Link] = {}
+        link_poses: dict[str, Pose] = {}
+        for element in model_element.all("link"):
+            own = element.get("name")
+            link = Link(index, f"{model_name}::{own}" if prefix and own is not None else own, element=element,
+                        word="link")
+            index += 1
+            where = Where(path, link.label)
+            pose = _pose(where, element.child("pose"), "pose", own)
+            link_poses[own] = model_pose.then(pose)
+            link.origin = link_poses[own]
+            inertial = element.child("inertial")
+            if inertial is not None:
+                link.inertial = _inertial(where, inertial, own)
+            if geometry:
+                link.collisions = _geoms(where, element, "collision", package_paths, own)
+                link.visuals = _geoms(where, element, "visual", package_paths, own)
+            check_unique_names(path, list(links.values()) + [link], "link")
+            links[own] = link
+            robot.links.append(link)
+        _joints(robot, model_element, links, link_poses, model_pose)
+    return robot
+
+
+def _models(element, pose: Pose):
+    """(model element, its pose in the world) for every model, nested ones too."""
+    for child in element.children:
+        if child.tag == "world":
+            yield from _models(child, pose)
+        elif child.tag == "model":
+            where = Where("", f"model {short(child.get('name'))}")
+            inner = pose.then(_pose(where, child.child("pose"), "pose", None, strict=False))
+            yield child, inner
+            yield from _models_nested(child, inner)
+
+
+def _models_nested(model, pose: Pose):
+    for child in model.children:
+        if child.tag == "model":
+            inner = pose.then(_pose(Where("", "model"), child.child("pose"), "pose", None, strict=False))
+            yield child, inner
+            yield from _models_nested(child, inner)
+
+
+def _pose(where: Where, element, what: str, own_name: str | None, strict: bool = True) -> Pose:
+    if element is None or not (element.text or "").strip():
+        return Pose.identity()
+    relative_to = element.get("relative_to")
+    if strict and relative_to not in (None, "", own_name, "__model__"):
+        raise where.error(f"{what}: relative_to={short(relative_to)!r}: only poses in the link's own or the "
+                          "model's frame are read")
+    if (element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
+        values = numbers(where, element.text, what, 7)
+        qx, qy, qz, qw = values[3:]
+        return Pose(quaternion_matrix(where, [qw, qx, qy, qz], what), np.array(values[:3], dtype=float))
+    values = numbers(where, element.text, what, 6)
+    rpy = values[3:]
+    if (element.get("degrees") or "").strip().lower() in ("true", "1"):
+        rpy = [math.radians(a) for a in rpy]
+    angles(where, rpy, what)
+    return Pose(rpy_matrix(rpy) if any(rpy) else np.eye(3), np.array(values[:3], dtype=float))
+
+
+def _inertial(where: Where, inertial, own_name) -> Inertial:
+    pose_element = inertial.child("pose")
+    rpy, quaternion = None, None
+    if pose_element is not None and (pose_element.text or "").strip():
+        relative_to = pose_element.get("relative_to")
+        if relative_to not in (None, "", own_name):
+            raise where.error(f"inertial/pose: relative_to={short(relative_to)!r}: only poses in the link's own "
+                              "frame are read")
+        pose = _pose(where, pose_element, "inertial/pose", own_name)
+        if (pose_element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
+            v = numbers(where, pose_element.text, "inertial/pose", 7)
+            quaternion = np.array([v[6], v[3], v[4], v[5]], dtype=float)
+        else:
+            v = numbers(where, pose_element.text, "inertial/pose", 6)
+            angles_ = v[3:]
+            if (pose_element.get("degrees") or "").strip().lower() in ("true", "1"):
+                angles_ = [math.radians(a) for a in angles_]
+            rpy = tuple(float(a) for a in angles_) if any(angles_) else None
+    else:
+        pose = Pose.identity()
+    mass_element = inertial.child("mass")
+    mass = number(where, None if mass_element is None else mass_element.text, "inertial/mass", default=1.0)
+    block = inertial.child("inertia")
+    six = {}
+    for key, default in (("ixx", 1.0), ("iyy", 1.0), ("izz", 1.0), ("ixy", 0.0), ("ixz", 0.0), ("iyz", 0.0)):
+        entry = None if block is None else block.child(key)
+        six[key] = number(where, None if entry is None else entry.text, f"inertial/inertia/{key}", default=default)
+    inertia = from_six(**six)
+    check_inertia_range(where, inertia)
+    turned = rpy is not None or (quaternion is not None and not np.allclose(pose.rotation, np.eye(3), 0, 0))
+    return Inertial(mass, pose.translation, inertia, rotation=pose.rotation if turned else None, rpy=rpy,
+                    quaternion=quaternion if turned and rpy is None else None, element=inertial)
+
+
+def _geoms(where: Where, link_element, tag: str, package_paths, own_name) -> list[Geom]:
+    found = []
+    for index, element in enumerate(link_element.all(tag)):
+        label = f"{tag}[{index}]" + (f" ({short(element.get('name'))})" if element.get("name") else "")
+        pose = _pose(where, element.child("pose"), f"{label}/pose", own_name)
+        holder = element.child("geometry")
+        shape = next(iter(holder.children), None) if holder is not None else None
+        if shape is None:
+            raise where.error(f"{label}/geometry: missing")
+        found.append(_geom(where, shape, pose, f"{label}/geometry/{shape.tag}", package_paths))
+    return found
+
+
+def _value(where: Where, shape, tag: str, label: str, count: int = 1) -> list[float]:
+    child = shape.child(tag)
+    if child is None:
+        raise where.error(f"{label}/{tag}: missing")
+    return numbers(where, child.text, f"{label}/{tag}", count)
+
+
+def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
+    kind = shape.tag
+    if kind == "box":
+        size = _value(where, shape, "size", label, 3)
+        positive(where, size, f"{label}/size", allow_zero=True)
+        return Geom("box", tuple(size), pose, label)
+    if kind in ("cylinder", "capsule"):
+        radius, = _value(where, shape, "radius", label)
+        length, = _value(where, shape, "length", label)
+        positive(where, (radius, length), f"{label}: radius and length", allow_zero=True)
+        return Geom(kind, (radius, length), pose, label)
+    if kind == "sphere":
+        radius, = _value(where, shape, "radius", label)
+        positive(where, (radius,), f"{label}/radius", allow_zero=True)
+        return Geom("sphere", (radius,), pose, label)
+    if kind == "ellipsoid":
+        radii = _value(where, shape, "radii", label, 3)
+        positive(where, radii, f"{label}/radii", allow_zero=True)
+        return Geom("ellipsoid", tuple(radii), pose, label)
+    if kind == "mesh":
+        uri = shape.child("uri")
+        if uri is None or not uri.text:
+            raise where.error(f"{label}/uri: missing")
+        scale_element = shape.child("scale")
+        scale = numbers(where, scale_element.text, f"{label}/scale", 3) if scale_element is not None else [1, 1, 1]
+        mesh = resolve_mesh(where.path, uri.text, f"{where.path}: {where.label}: {label}: {short(uri.text, 80)}",
+                            package_paths)
+        return Geom("mesh", (), pose, label, mesh_file=mesh, mesh_scale=np.array(scale, dtype=float))
+    return Geom(kind, (), pose, label)
+
+
+def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, model_pose: Pose) -> None:
+    path = robot.path
+    for index, element in enumerate(model_element.all("joint")):
+        name = element.get("name")
+        where = Where(path, f"joint[{index}]" + (f" ({short(name)})" if name is not None else ""))
+        parent_element, child_element = element.child("parent"), element.child("child")
+        if parent_element is None or child_element is None:
+            raise where.error("needs <parent> and <child>")
+        parent_name, child_name = parent_element.text, child_element.text
+        if child_name not in links:
+            raise where.error(f"child: no link named {short(child_name)!r} in this model")
+        child = links[child_name]
+        kind = JOINT_KINDS.get(element.get("type") or "", "other")
+        if parent_name in ("world", "__world__") or parent_name not in links:
+            child.motions = [Motion(name, "fixed" if kind == "fixed" else kind, np.array([1.0, 0, 0]), np.zeros(3))]
+            continue
+        if child.parent is not None:
+            raise where.error(f"child: link {short(child_name)!r} already has a parent joint")
+        child.parent = links[parent_name].name
+        child.origin = link_poses[parent_name].inverse().then(link_poses[child_name])
+        joint_pose = _pose(where, element.child("pose"), "pose", None, strict=False)
+        axis_element = element.child("axis")
+        xyz_element = axis_element.child("xyz") if axis_element is not None else None
+        axis = numbers(where, xyz_element.text, "axis/xyz", 3) if xyz_element is not None else [0.0, 0.0, 1.0]
+        if kind in ("revolute", "prismatic"):
+            axis = unit(where, axis, "axis/xyz")
+            in_model = (axis_element is not None and (axis_element.child("use_parent_model_frame") is not None and
+                        (axis_element.child("use_parent_model_frame").text or "").strip() in ("true", "1"))) or \
+                       (xyz_element is not None and xyz_element.get("expressed_in") == "__model__")
+            child_in_model = link_poses[child_name]
+            if in_model:
+                axis = child_in_model.rotation.T @ (model_pose.rotation @ axis)
+            else:
+                axis = joint_pose.rotation @ axis
+        child.motions = [Motion(name, kind, np.asarray(axis, dtype=float), joint_pose.translation)]

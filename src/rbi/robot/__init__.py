@@ -1,0 +1,53 @@
+"""Robot files audited: the kinematic tree (:mod:`rbi.robot.tree`), each link's declared mass
+properties against its geometry with flags (:mod:`rbi.robot.audit`), whole-robot totals, and
+the ``--fix`` rewrite plan (:mod:`rbi.robot.fix`). :func:`audit` runs it all."""
+
+from __future__ import annotations
+
+import os
+from typing import Mapping, Sequence
+
+from rbi.robot.audit import AuditReport
+
+
+def audit(robot_file: str | os.PathLike, *, package_paths: Mapping[str, str] | Sequence[str] | None = None,
+          geometry: str = "collision", density: float | None = None, material: str | None = None,
+          mesh_inertia: str = "exact", joints: Mapping[str, float] | Sequence[str] | None = None,
+          fix: bool = False, allow_outside_paths: bool = False) -> AuditReport:
+    """Audit a URDF, SDF or MJCF file: every link's declared mass properties against its
+    geometry, with flags, and the whole robot's totals at a configuration.
+
+    ``package_paths``: ``{NAME: DIR}`` (or ``["NAME=DIR", ...]``) for ``package://NAME/``;
+    ``geometry``: ``"collision"`` or ``"visual"`` (each link falls back to the other);
+    ``density`` (kg/m³) or ``material`` (a built-in name): for links that declare no mass;
+    ``mesh_inertia``: ``"exact"``, ``"convex"`` or ``"shell"``; ``joints``: ``{NAME: VALUE}`` (or
+    ``["NAME=VALUE", ...]``), radians for revolute joints, metres for prismatic ones (default:
+    zero, MJCF ``qpos0``); ``fix``: also plan the fixed copy (``report.fix``: its bytes, the
+    changes, the links that could not be fixed). Raises :class:`rbi.SpecError` on bad input.
+    """
+    from rbi.formats.paths import outside_paths_allowed
+    from rbi.formats.robot_files import read_robot
+    from rbi.formats.robot_paths import parse_package_paths
+    from rbi.robot.audit import audit_model, material_density
+    from rbi.robot.tree import parse_joint_values
+
+    if isinstance(package_paths, Mapping):
+        package_paths = [f"{name}={folder}" for name, folder in package_paths.items()]
+    packages = parse_package_paths(list(package_paths or []))
+    if isinstance(joints, Mapping):
+        joint_values = {str(k): float(v) for k, v in joints.items()}
+    else:
+        joint_values = parse_joint_values(list(joints or []))
+    rho = material_density(material, density)
+    with outside_paths_allowed(allow_outside_paths):
+        model = read_robot(os.fspath(robot_file), packages, geometry=True)
+        report = audit_model(model, geometry=geometry, density=rho, mesh_inertia=mesh_inertia, joints=joint_values)
+    report.fix = None
+    if fix:
+        from rbi.robot.fix import plan_fix
+
+        report.fix = plan_fix(report, rho)
+    return report
+
+
+__all__ = ["AuditReport", "audit"]

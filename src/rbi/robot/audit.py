@@ -1,0 +1,400 @@
+"""``rbi audit``: each link's declared mass properties against its own geometry, the flags that
+say what is wrong, and the whole robot's totals.
+
+Per link (all in the link frame, SI):
+
+- ``declared``: the inertial element (MJCF: what MuJoCo's compiler gives the body);
+- ``geometry``: the link's collision geometry (else visual; ``--geometry visual`` the other way
+  round) as a solid at the declared mass (so ``implied_density`` = mass / volume), or at the
+  given density when the link declares no mass;
+- ``ratios``: each declared moment about the geometry's principal axes divided by the
+  geometry's moment about that axis; ``com_offset``: the distance between the two centres of
+  mass as a fraction of the geometry's size (its bounding box's diagonal).
+
+Flags (code, level):
+
+- ``unphysical`` (error): a negative mass, or an inertia that is not positive semi-definite or
+  breaks the triangle inequality (with the margin);
+- ``placeholder``: a diagonal inertia of three equal moments, or of round numbers (1, 0.1,
+  0.001, …) with zero products: error when a moment is more than :data:`ERROR_RATIO` times or
+  less than 1/:data:`ERROR_RATIO` of the geometry's at the same mass, else a warning;
+- ``mismatch``: a moment ratio outside [1/:data:`ERROR_RATIO`, :data:`ERROR_RATIO`] (error) or
+  outside [1/:data:`WARNING_RATIO`, :data:`WARNING_RATIO`] (warning), or a centre of mass outside
+  the geometry's bounds (warning);
+- ``density`` (warning): an implied density outside :data:`SOLID_DENSITY_RANGE`;
+- ``massless``: a link moved by a joint that has no mass (error when nothing it carries has
+  mass either, warning otherwise). A root link, or a link fixed to its parent, without mass is
+  legal: it is how simulators mark a static base, and it adds nothing to the total.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from rbi.core.validity import inertia_problem
+from rbi.errors import InputError
+from rbi.formats.robot_geometry import MESH_INERTIA_MODES, combine, distribution
+from rbi.formats.robot_model import Inertial, Link, RobotModel
+
+ERROR_RATIO = 10.0
+"""A declared moment beyond this factor of the geometry's (either way) is an error."""
+
+WARNING_RATIO = 2.0
+"""A declared moment beyond this factor of the geometry's (either way) is a warning."""
+
+SOLID_DENSITY_RANGE = (50.0, 25000.0)
+"""Densities (kg/m³) a link's material can have: from rigid foam to above osmium (22,590)."""
+
+COM_MARGIN = 0.01
+"""A declared centre of mass may lie this fraction of the geometry's size outside its bounds."""
+
+
+@dataclass
+class Flag:
+    code: str
+    level: str
+    message: str
+
+    def as_dict(self) -> dict[str, str]:
+        return {"code": self.code, "level": self.level, "message": self.message}
+
+
+@dataclass
+class MassProps:
+    """Mass (kg), centre of mass (m), inertia about it (kg·m²), link frame and axes."""
+
+    mass: float
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray
+
+    @property
+    def moments(self) -> np.ndarray:
+        return np.linalg.eigvalsh(0.5 * (self.inertia_about_com + self.inertia_about_com.T))
+
+
+@dataclass
+class GeometryProps(MassProps):
+    """The geometry's mass properties, with its ``volume`` (m³; None when it is all shells),
+    ``implied_density`` (kg/m³), its bounds ``low``/``high`` (m, link frame) and ``source``
+    (``collision`` or ``visual``)."""
+
+    volume: float | None = None
+    implied_density: float | None = None
+    low: np.ndarray | None = None
+    high: np.ndarray | None = None
+    source: str = "collision"
+
+
+@dataclass
+class LinkAudit:
+    link: Link
+    declared: MassProps | None
+    geometry: GeometryProps | None
+    ratios: np.ndarray | None = None
+    com_offset: float | None = None
+    flags: list[Flag] = field(default_factory=list)
+
+    @property
+    def name(self) -> str | None:
+        return self.link.name
+
+    @property
+    def has_error(self) -> bool:
+        return any(flag.level == "error" for flag in self.flags)
+
+
+@dataclass
+class AuditReport:
+    """What ``rbi audit`` found: the model read, one :class:`LinkAudit` per link, the totals,
+    ``notes`` (what was read but not checked, inertials MuJoCo ignores) and the options used.
+    :meth:`as_dict` is the JSON the CLI prints."""
+
+    model: RobotModel
+    links: list[LinkAudit]
+    total: Any
+    notes: list[str]
+    settings: dict[str, Any]
+    fix: Any = None
+
+    @property
+    def path(self) -> str:
+        return self.model.path
+
+    @property
+    def has_error(self) -> bool:
+        return any(link.has_error for link in self.links) or bool(self.model.unchecked)
+
+    @property
+    def exit_code(self) -> int:
+        return 1 if self.has_error else 0
+
+    def as_dict(self) -> dict[str, Any]:
+        return {
+            "file": self.model.path,
+            "robot": self.model.name,
+            "format": self.model.format,
+            "units": {"length": "m", "mass": "kg"},
+            "links": [_link_dict(each) for each in self.links],
+            "total": {"mass": self.total.mass, "center_of_mass": self.total.center_of_mass,
+                      "inertia_about_com": self.total.inertia_about_com, "frame": self.total.frame},
+            "notes": list(self.notes),
+            "warnings": list(self.notes),
+        }
+
+
+def _link_dict(each: LinkAudit) -> dict[str, Any]:
+    declared = geometry = None
+    if each.declared is not None:
+        declared = {"mass": each.declared.mass, "center_of_mass": each.declared.center_of_mass,
+                    "inertia_about_com": each.declared.inertia_about_com, "moments": each.declared.moments}
+    if each.geometry is not None:
+        g = each.geometry
+        geometry = {"volume": g.volume, "mass": g.mass, "center_of_mass": g.center_of_mass,
+                    "inertia_about_com": g.inertia_about_com, "moments": g.moments,
+                    "implied_density": g.implied_density, "source": g.source}
+    return {"name": each.link.name, "index": each.link.index, "declared": declared, "geometry": geometry,
+            "moment_ratios": each.ratios, "com_offset": each.com_offset,
+            "flags": [flag.as_dict() for flag in each.flags]}
+
+
+def material_density(material: str | None, density: float | None) -> float | None:
+    """kg/m³ from ``--density`` or ``--material`` (InputError for both, a bad number or an
+    unknown material)."""
+    if material is not None and density is not None:
+        raise InputError("--density and --material: give one of them")
+    if density is not None:
+        if not (np.isfinite(density) and density > 0):
+            raise InputError(f"--density: {density!r}: must be a finite number greater than 0 (kg/m³)")
+        return float(density)
+    if material is not None:
+        from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
+
+        name = canonical_name(material)
+        if name is None:
+            raise InputError(f"--material: {unknown_material_message(material)}")
+        return MATERIAL_DENSITIES_SI[name]
+    return None
+
+
+def audit_model(model: RobotModel, *, geometry: str = "collision", density: float | None = None,
+                mesh_inertia: str = "exact", joints: dict[str, float] | None = None) -> AuditReport:
+    """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
+    from rbi.robot.tree import totals
+
+    if geometry not in ("collision", "visual"):
+        raise InputError(f"--geometry: {geometry!r}: must be collision or visual")
+    if mesh_inertia not in MESH_INERTIA_MODES:
+        raise InputError(f"--mesh-inertia: {mesh_inertia!r}: must be one of {', '.join(MESH_INERTIA_MODES)}")
+    carried = _carried_mass(model)
+    links = [audit_link(model, link, geometry=geometry, density=density, mesh_inertia=mesh_inertia,
+                        carries_mass=carried.get(link.index, False)) for link in model.links]
+    notes = list(model.unchecked) + list(model.notes)
+    return AuditReport(model, links, totals(model, joints), notes,
+                       {"geometry": geometry, "density": density, "mesh_inertia": mesh_inertia,
+                        "joints": dict(joints or {})})
+
+
+def _carried_mass(model: RobotModel) -> dict[int, bool]:
+    """For each link: does any link below it in the tree have mass?"""
+    children: dict[str | None, list[Link]] = {}
+    for link in model.links:
+        children.setdefault(link.parent, []).append(link)
+    result: dict[int, bool] = {}
+
+    def below(link: Link) -> bool:
+        found = False
+        stack = list(children.get(link.name, [])) if link.name is not None else []
+        seen = set()
+        while stack:
+            child = stack.pop()
+            if child.index in seen:
+                continue
+            seen.add(child.index)
+            if child.inertial is not None and child.inertial.mass > 0:
+                found = True
+                break
+            stack.extend(children.get(child.name, []))
+        return found
+
+    for link in model.links:
+        result[link.index] = below(link)
+    return result
+
+
+def link_geometry(model: RobotModel, link: Link, geometry: str, mesh_inertia: str):
+    """(source, pieces) for the link: each piece (distribution, mass or None); MJCF geoms carry
+    their own mass or density."""
+    first, second = (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
+    geoms, source = (first, geometry) if first else (second, "visual" if geometry == "collision" else "collision")
+    where = f"{model.path}: {link.label}: "
+    pieces = []
+    for geom in geoms:
+        found = distribution(geom, mesh_inertia, where)
+        if found is None or not found.measure > 0:
+            continue
+        own_mass = None
+        if model.format == "mjcf":
+            own_mass = geom.mass if geom.mass is not None else geom.density * found.measure
+        pieces.append((found, own_mass))
+    return source, pieces
+
+
+def audit_link(model: RobotModel, link: Link, *, geometry: str = "collision", density: float | None = None,
+               mesh_inertia: str = "exact", carries_mass: bool = False) -> LinkAudit:
+    inertial = link.inertial
+    declared = None
+    if inertial is not None:
+        declared = MassProps(inertial.mass, inertial.com.copy(), inertial.inertia_in_link_axes())
+    source, pieces = link_geometry(model, link, geometry, mesh_inertia)
+    geo = _geometry_props(model, pieces, source, declared, density)
+    result = LinkAudit(link, declared, geo)
+    result.flags = _flags(model, link, result, carries_mass)
+    return result
+
+
+def _geometry_props(model, pieces, source, declared: MassProps | None, density: float | None) -> GeometryProps | None:
+    if not pieces:
+        return None
+    solid = [d for d, _ in pieces if not d.shell]
+    volume = float(sum(d.measure for d in solid)) if solid else None
+    low = np.min([d.low for d, _ in pieces], axis=0)
+    high = np.max([d.high for d, _ in pieces], axis=0)
+    if model.format == "mjcf":
+        unit = combine([(m, d.centroid, d.inertia * (m / d.measure)) for d, m in pieces])
+    else:
+        unit = combine([(d.measure, d.centroid, d.inertia) for d, _ in pieces])  # at density 1
+    if not unit.mass > 0:
+        return None
+    if declared is not None and declared.mass > 0:
+        mass = declared.mass
+    elif density is not None and model.format != "mjcf":
+        mass = density * unit.mass
+    elif model.format == "mjcf":
+        mass = unit.mass
+    else:
+        mass = None
+    scale = (mass / unit.mass) if mass is not None else None
+    implied = mass / volume if mass is not None and volume and len(solid) == len(pieces) else None
+    return GeometryProps(mass if mass is not None else None, unit.com,
+                         unit.inertia * scale if scale is not None else None,
+                         volume=volume, implied_density=implied, low=low, high=high, source=source)
+
+
+def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool) -> list[Flag]:
+    flags: list[Flag] = []
+    declared, geo = result.declared, result.geometry
+    if declared is None or declared.mass == 0.0:
+        if link.moves:
+            what = "no <inertial>" if declared is None else "mass 0"
+            if carries_mass:
+                flags.append(Flag("massless", "warning", f"moved by a joint but has {what}; the links it carries "
+                                  "have mass, so the joint still moves a mass"))
+            else:
+                flags.append(Flag("massless", "error", f"moved by a joint but has {what}, and nothing it carries "
+                                  "has mass: a simulator cannot integrate that joint"))
+        return flags
+    I = declared.inertia_about_com
+    if declared.mass < 0:
+        flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative"))
+    problem = inertia_problem(I)
+    if problem is not None:
+        flags.append(Flag("unphysical", "error", _problem_text(problem, I)))
+    placeholder = _placeholder(model, link)
+    if geo is not None and geo.inertia_about_com is not None and geo.mass:
+        moments, axes = np.linalg.eigh(geo.inertia_about_com)
+        along = np.einsum("ji,jk,ki->i", axes, I, axes)
+        largest = float(np.max(moments))
+        usable = moments > 1e-9 * largest
+        ratios = np.full(3, np.nan)
+        ratios[usable] = along[usable] / moments[usable]
+        result.ratios = ratios
+        size = float(np.linalg.norm(geo.high - geo.low))
+        if size > 0:
+            result.com_offset = float(np.linalg.norm(declared.center_of_mass - geo.center_of_mass) / size)
+        worst = _worst_ratio(ratios)
+        code = "placeholder" if placeholder else "mismatch"
+        ratio_text = ", ".join("-" if np.isnan(r) else f"{r:.3g}" for r in ratios)
+        detail = (f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} "
+                  f"geometry's at the same mass")
+        if placeholder:
+            detail = f"{placeholder}; {detail}"
+        if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
+            flags.append(Flag(code, "error", detail))
+        elif worst is not None and (worst > WARNING_RATIO or worst < 1 / WARNING_RATIO):
+            flags.append(Flag(code, "warning", detail))
+        elif placeholder and _spread(moments) > 1.5:
+            flags.append(Flag("placeholder", "warning", detail))
+        margin = COM_MARGIN * size
+        if np.any(declared.center_of_mass < geo.low - margin) or np.any(declared.center_of_mass > geo.high + margin):
+            flags.append(Flag("mismatch", "warning", "the declared centre of mass lies outside the geometry's "
+                              f"bounds (offset {result.com_offset:.3g} of the geometry's size from its centre "
+                              "of mass)"))
+        if geo.implied_density is not None:
+            low, high = SOLID_DENSITY_RANGE
+            if not low <= geo.implied_density <= high:
+                flags.append(Flag("density", "warning", f"implied density {geo.implied_density:.4g} kg/m³ "
+                                  f"(mass {declared.mass:.6g} kg / {geo.source} volume {geo.volume:.4g} m³) is "
+                                  f"outside what a solid material has ({low:g} to {high:g} kg/m³)"))
+    elif placeholder:
+        flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))
+    return flags
+
+
+def _spread(moments) -> float:
+    moments = np.asarray(moments, dtype=float)
+    return float(moments.max() / moments.min()) if moments.min() > 0 else float("inf")
+
+
+def _worst_ratio(ratios) -> float | None:
+    """The ratio farthest from 1 (by factor), or None when there is none."""
+    finite = ratios[np.isfinite(ratios)]
+    if finite.size == 0:
+        return None
+    extreme = [float(finite.max()), float(finite.min())]
+    return max(extreme, key=lambda r: abs(np.log(r)) if r > 0 else np.inf)
+
+
+def _round(value: float) -> bool:
+    if value == 0:
+        return True
+    exponent = np.log10(abs(value))
+    return abs(exponent - round(exponent)) < 1e-12
+
+
+def _placeholder(model: RobotModel, link: Link) -> str | None:
+    """Words for a placeholder-looking inertia, or None."""
+    inertial = link.inertial
+    I = inertial.inertia
+    if np.any(I[~np.eye(3, dtype=bool)] != 0):
+        return None
+    diagonal = np.diag(I)
+    if model.format == "mjcf" and inertial.source == "geoms":
+        return None
+    if np.all(diagonal == diagonal[0]) and diagonal[0] > 0:
+        return f"three equal moments ({diagonal[0]:.6g} kg·m²) with no products, as exporters write a placeholder"
+    if all(_round(v) for v in diagonal):
+        return (f"moments of round values ({', '.join(f'{v:g}' for v in diagonal)} kg·m²) with no products, as "
+                "exporters write a placeholder")
+    return None
+
+
+def _problem_text(problem, I) -> str:
+    moments = np.linalg.eigvalsh(I)
+    I1, I2, I3 = (float(m) for m in moments)
+    if problem.kind == "negative moment":
+        return f"{problem.message}; margin {I1:.6g} kg·m² below zero"
+    if problem.kind == "triangle inequality":
+        return f"{problem.message}; margin I1 + I2 − I3 = {I1 + I2 - I3:.6g} kg·m² ({(I1 + I2 - I3) / I3:.3%} of I3)"
+    return problem.message
+
+
+def geometry_inertial(result: LinkAudit, density: float | None) -> Inertial | None:
+    """The inertial the geometry gives the link (at the declared mass, else ``density``), or
+    None when the link has no geometry with volume."""
+    geo = result.geometry
+    if geo is None or geo.inertia_about_com is None:
+        return None
+    return Inertial(geo.mass, geo.center_of_mass, geo.inertia_about_com)

@@ -1,0 +1,180 @@
+"""``rbi audit --fix``: a copy of the robot file in which each flagged link's inertial is the one
+its geometry gives (at the declared mass, or at the given density for a link without mass).
+
+The copy is the original text edited at the spans of the inertial elements (the parser records
+where each element starts and ends): every other byte is kept — comments, order, formatting,
+encoding. Each replaced element is preceded by an XML comment saying what it was and why it
+changed. Links whose inertial is in another file (an MJCF ``<include>``), or that MuJoCo's
+compiler fills from geoms, or that have no geometry, cannot be fixed; they are listed.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from rbi.robot.audit import AuditReport, LinkAudit
+
+FIXED_CODES = ("unphysical", "placeholder", "mismatch", "massless")
+
+
+@dataclass
+class Change:
+    """One replaced (or added) inertial: the link, what was there, what is written, and why."""
+
+    link: str
+    reason: str
+    old_text: str
+    new_text: str
+    start: int
+    end: int
+
+
+@dataclass
+class FixPlan:
+    """The edits, the links that could not be fixed (label, why), and the fixed file's bytes."""
+
+    changes: list[Change] = field(default_factory=list)
+    unfixable: list[tuple[str, str]] = field(default_factory=list)
+    content: bytes = b""
+
+    def diff(self, path: str, out: str | None = None) -> str:
+        """A unified diff between the original file and the fixed copy."""
+        import difflib
+
+        return "".join(difflib.unified_diff(self.original.decode("utf-8", "replace").splitlines(True),
+                                            self.content.decode("utf-8", "replace").splitlines(True),
+                                            fromfile=path, tofile=out or f"{path} (fixed)"))
+
+    original: bytes = b""
+
+
+def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
+    """The fixed copy of the audited file: every link with an error-level flag that the
+    geometry can fix gets the geometry's inertial."""
+    document = report.model.document
+    plan = FixPlan()
+    text = document.text
+    edits: list[Change] = []
+    for each in report.links:
+        codes = {flag.code for flag in each.flags if flag.level == "error"}
+        if not codes & set(FIXED_CODES):
+            continue
+        reason = "; ".join(f"{flag.code}: {flag.message}" for flag in each.flags if flag.level == "error")
+        why_not = _why_not(report, each, density)
+        if why_not is not None:
+            plan.unfixable.append((each.link.label, why_not))
+            continue
+        change = _change(report, each, density, reason, text)
+        if change is None:
+            plan.unfixable.append((each.link.label, "its element cannot be edited in place"))
+            continue
+        edits.append(change)
+    pieces, at = [], 0
+    for change in sorted(edits, key=lambda c: c.start):
+        pieces.append(text[at:change.start])
+        pieces.append(change.new_text.encode("utf-8"))
+        at = change.end
+    pieces.append(text[at:])
+    plan.changes = edits
+    plan.original = document.original_bytes(text)
+    plan.content = document.original_bytes(b"".join(pieces))
+    return plan
+
+
+def _why_not(report: AuditReport, each: LinkAudit, density: float | None) -> str | None:
+    geo = each.geometry
+    inertial = each.link.inertial
+    if geo is None:
+        return "it has no geometry with a volume to take the mass properties from"
+    if inertial is not None and inertial.element is None:
+        return "MuJoCo's compiler gives it its mass properties from its geoms; change the geoms instead"
+    if inertial is not None and getattr(inertial.element, "source", None):
+        return "its <inertial> is in an included file"
+    if geo.mass is None or geo.inertia_about_com is None:
+        return "it declares no mass; give --density or --material to fix it at a density"
+    if inertial is None and each.link.element is None:
+        return "its element cannot be edited"
+    return None
+
+
+def _indent(text: bytes, start: int) -> str:
+    line_start = text.rfind(b"\n", 0, start) + 1
+    lead = text[line_start:start]
+    return lead.decode("utf-8") if lead.strip() == b"" else ""
+
+
+def _number(value: float) -> str:
+    return repr(float(value)) if value != 0 else "0"
+
+
+def _comment(text: str) -> str:
+    safe = text.replace("--", "- -").replace("\n", " ")
+    while "--" in safe:
+        safe = safe.replace("--", "- -")
+    return f"<!-- {safe.rstrip('-')} -->"
+
+
+def _change(report: AuditReport, each: LinkAudit, density: float | None, reason: str, text: bytes) -> Change | None:
+    geo = each.geometry
+    fmt = report.model.format
+    inertial = each.link.inertial
+    mass, com, I = geo.mass, geo.center_of_mass, geo.inertia_about_com
+    source = f"its {geo.source} geometry"
+    basis = (f"at the declared mass {mass:.6g} kg" if each.declared is not None and each.declared.mass > 0
+             else f"at density {density:g} kg/m³ ({mass:.6g} kg)")
+    if inertial is not None and inertial.element is not None:
+        element = inertial.element
+        start, end = element.start, element.end
+        old = text[start:end].decode("utf-8")
+        indent = _indent(text, start)
+        inner = indent + ("  " if "\t" not in indent else "\t")
+    else:
+        link_element = each.link.element
+        start = end = _after_start_tag(text, link_element)
+        if start is None:
+            return None
+        old = ""
+        indent = _indent(text, link_element.start) + "  "
+        inner = indent + "  "
+    was = ("no mass" if each.declared is None or each.declared.mass == 0 else
+           f"mass {each.declared.mass:.6g} kg, principal moments "
+           f"{', '.join(f'{m:.4g}' for m in each.declared.moments)} kg·m²")
+    comment = _comment(f"rbi audit fix: was {was} ({reason}); now the mass properties of {source} {basis}")
+    body = _element_text(fmt, mass, com, I, inner, indent)
+    if old:
+        new = f"{comment}\n{indent}{body}"
+    else:
+        new = f"\n{indent}{comment}\n{indent}{body}"
+    return Change(each.link.name or each.link.label, reason, old, new, start, end)
+
+
+def _after_start_tag(text: bytes, element) -> int | None:
+    """Just after the start tag of ``element``, when it has an end tag (not ``<link/>``)."""
+    from rbi.formats.robot_xml import _tag_end
+
+    if element is None:
+        return None
+    stop = _tag_end(text, element.start)
+    if text[stop - 2:stop] == b"/>":
+        return None
+    return stop
+
+
+def _element_text(fmt: str, mass: float, com, I, inner: str, indent: str) -> str:
+    I = 0.5 * (np.asarray(I) + np.asarray(I).T)
+    x, y, z = (_number(v) for v in com)
+    if fmt == "urdf":
+        return (f"<inertial>\n{inner}<origin xyz=\"{x} {y} {z}\" rpy=\"0 0 0\"/>\n{inner}<mass value=\"{_number(mass)}\"/>\n"
+                f"{inner}<inertia ixx=\"{_number(I[0, 0])}\" ixy=\"{_number(I[0, 1])}\" ixz=\"{_number(I[0, 2])}\" "
+                f"iyy=\"{_number(I[1, 1])}\" iyz=\"{_number(I[1, 2])}\" izz=\"{_number(I[2, 2])}\"/>\n{indent}</inertial>")
+    if fmt == "sdf":
+        deeper = inner + "  "
+        entries = "".join(f"{deeper}<{key}>{_number(value)}</{key}>\n" for key, value in
+                          (("ixx", I[0, 0]), ("ixy", I[0, 1]), ("ixz", I[0, 2]), ("iyy", I[1, 1]), ("iyz", I[1, 2]),
+                           ("izz", I[2, 2])))
+        return (f"<inertial>\n{inner}<pose>{x} {y} {z} 0 0 0</pose>\n{inner}<mass>{_number(mass)}</mass>\n"
+                f"{inner}<inertia>\n{entries}{inner}</inertia>\n{indent}</inertial>")
+    six = " ".join(_number(v) for v in (I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]))
+    return f"<inertial pos=\"{x} {y} {z}\" mass=\"{_number(mass)}\" fullinertia=\"{six}\"/>"

@@ -1,0 +1,124 @@
+"""The kinematic tree of a robot model: each link's frame at a configuration, and the whole
+robot's mass properties there.
+
+A link's pose is its parent's pose, then its ``origin`` (where it sits at the reference
+configuration), then each of its joints' motions in order (a revolute joint turns about its
+axis through its anchor by ``q − reference`` radians; a prismatic joint slides along its axis
+by ``q − reference`` metres; other joints stay at the reference pose). The reference
+configuration is every joint at zero for URDF and SDF and MuJoCo's ``qpos0`` for MJCF (each
+joint at its ``ref``), so with no values given every link is where the file draws it.
+"""
+
+from __future__ import annotations
+
+from typing import NamedTuple
+
+import numpy as np
+
+from rbi.errors import InputError
+from rbi.formats.robot_model import Pose, RobotModel
+
+
+def parse_joint_values(values: list[str] | None) -> dict[str, float]:
+    """``NAME=VALUE`` strings (``--joints``) as a mapping; InputError for a malformed one."""
+    import math
+
+    found: dict[str, float] = {}
+    for value in values or []:
+        name, sep, number = value.rpartition("=")
+        try:
+            q = float(number)
+        except ValueError:
+            q = math.nan
+        if not sep or not name or not math.isfinite(q):
+            raise InputError(f"--joints: {value!r}: give NAME=VALUE with VALUE a finite number (radians for a "
+                             "revolute joint, metres for a prismatic one)")
+        found[name] = q
+    return found
+
+
+def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dict[int, Pose]:
+    """Every link's frame in the model's frame (URDF: the root link's; SDF, MJCF: the world's)
+    at the configuration ``joints`` (joint name → coordinate; others at the reference)."""
+    joints = dict(joints or {})
+    movable = {m.name: m for link in model.links for m in link.motions
+               if m.name is not None and m.kind in ("revolute", "prismatic")}
+    unknown = [name for name in joints if name not in movable]
+    if unknown:
+        import difflib
+
+        hint = difflib.get_close_matches(unknown[0], list(movable), n=1)
+        raise InputError(f"--joints: {model.path} has no revolute or prismatic joint named {unknown[0]!r}"
+                         + (f" (did you mean {hint[0]!r}?)" if hint else ""))
+    by_name = {link.name: link for link in model.links}
+    poses: dict[int, Pose] = {}
+
+    def pose_of(link) -> Pose:
+        if link.index in poses:
+            return poses[link.index]
+        base = Pose.identity() if link.parent is None else pose_of(by_name[link.parent])
+        pose = base.then(link.origin)
+        for motion in link.motions:
+            if motion.name in joints:
+                pose = pose.then(_motion(motion, joints[motion.name]))
+        poses[link.index] = pose
+        return pose
+
+    import sys
+
+    limit = sys.getrecursionlimit()
+    sys.setrecursionlimit(max(limit, 4 * len(model.links) + 100))
+    try:
+        for link in model.links:
+            pose_of(link)
+    finally:
+        sys.setrecursionlimit(limit)
+    return poses
+
+
+def _motion(motion, q: float) -> Pose:
+    from rbi.core.rotation import axis_angle_matrix
+
+    amount = q - motion.reference
+    if motion.kind == "prismatic":
+        return Pose(np.eye(3), motion.axis * amount)
+    R = axis_angle_matrix(motion.axis, amount)
+    return Pose(R, motion.anchor - R @ motion.anchor)
+
+
+class Totals(NamedTuple):
+    """The whole robot: ``mass`` (kg), ``center_of_mass`` (m) and ``inertia_about_com`` (kg·m²)
+    in ``frame`` (``"root link NAME"`` or ``"world"``)."""
+
+    mass: float
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray
+    frame: str
+
+
+def totals(model: RobotModel, joints: dict[str, float] | None = None) -> Totals:
+    """Total mass, centre of mass and inertia about it at a configuration: in the root link's
+    frame for URDF and SDF, in the world frame for MJCF. Links without mass add nothing."""
+    poses = link_poses(model, joints)
+    frame, to_frame = "world", Pose.identity()
+    if model.format != "mjcf":
+        roots = [link for link in model.links if link.parent is None]
+        if roots:
+            to_frame = poses[roots[0].index].inverse()
+            frame = f"root link {roots[0].name}"
+    masses, coms, inertias = [], [], []
+    for link in model.links:
+        inertial = link.inertial
+        if inertial is None or inertial.mass == 0.0:
+            continue
+        pose = to_frame.then(poses[link.index])
+        masses.append(inertial.mass)
+        coms.append(pose.apply(inertial.com))
+        I = inertial.inertia_in_link_axes()
+        inertias.append(pose.rotation @ I @ pose.rotation.T)
+    if not masses:
+        return Totals(0.0, np.zeros(3), np.zeros((3, 3)), frame)
+    from rbi.formats.robot_geometry import combine
+
+    props = combine(list(zip(masses, coms, inertias)))
+    return Totals(props.mass, props.com, props.inertia, frame)
