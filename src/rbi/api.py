@@ -26,7 +26,8 @@ import numpy as np
 
 from rbi.errors import InputError as SpecError
 
-__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "sweep", "SpecError"]
+__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "sweep", "audit",
+           "AuditReport", "SpecError"]
 
 Point = Any
 """A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates
@@ -525,6 +526,53 @@ def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
     check_mass_properties(settings)
     study = Study(body.path, body._raw, settings)
     return [dict(zip(study.columns, row)) for row in study.run()]
+
+
+def audit(robot_file: str | os.PathLike, *, package_paths: dict[str, str] | Sequence[str] | None = None,
+          geometry: str = "collision", density: float | None = None, material: str | None = None,
+          mesh_inertia: str = "exact", joints: dict[str, float] | Sequence[str] | None = None,
+          fix: bool = False, allow_outside_paths: bool = False) -> "AuditReport":
+    """Audit a robot file (URDF ``.urdf``, SDF ``.sdf``, MJCF ``.xml``, or ``.xacro`` with the
+    ``xacro`` extra) as ``rbi audit`` does: each link's declared mass properties against its own
+    geometry, with flags, and the whole robot's totals. SI units; vectors and matrices in each
+    link's frame (totals: the root link's frame for URDF/SDF, the world for MJCF).
+
+    Args:
+        robot_file: the file's path.
+        package_paths: ``{NAME: DIR}`` or ``["NAME=DIR", ...]`` for ``package://NAME/`` meshes
+            (``ROS_PACKAGE_PATH`` is searched too).
+        geometry: ``"collision"`` or ``"visual"``: which geometry gives a link's volume (a link
+            without it falls back to the other).
+        density, material: kg/m³, or a built-in material name, for links that declare no mass.
+        mesh_inertia: ``"exact"`` (the solid a closed mesh encloses), ``"convex"`` (its hull) or
+            ``"shell"`` (mass on the surface).
+        joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
+            metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
+        fix: also plan the fixed copy: ``report.fix.content`` (bytes), ``.changes``, ``.unfixable``.
+        allow_outside_paths: let the file name meshes and includes outside its folder.
+
+    Returns:
+        An :class:`AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``,
+        ``.flags``), ``.total``, ``.notes``, ``.exit_code`` (0, or 1 when a link has an
+        error-level flag) and ``.as_dict()`` (what ``rbi audit --format json`` prints).
+
+    Raises:
+        SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
+            read, or repeats a link name.
+    """
+    from rbi.robot import audit as run_audit
+
+    return run_audit(robot_file, package_paths=package_paths, geometry=geometry, density=density,
+                     material=material, mesh_inertia=mesh_inertia, joints=joints, fix=fix,
+                     allow_outside_paths=allow_outside_paths)
+
+
+def __getattr__(name: str):
+    if name == "AuditReport":  # imported on first use: the audit's modules stay unloaded for `import rbi.api`
+        from rbi.robot.audit import AuditReport
+
+        return AuditReport
+    raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")
 
 
 def _range_text(value, option: str) -> str | None:

@@ -60,45 +60,51 @@ def audit(
       rbi audit robot.urdf --fix                    (dry run: the changes as a diff)
       rbi audit robot.urdf --fix --out fixed.urdf
     """
-    from rbi.errors import InputError
-    from rbi.robot import audit as run_audit
-
-    if out is not None and not fix:
-        raise InputError("--out: writes the fixed copy, so it needs --fix")
-    target = None
-    if out is not None:
-        import os
-
-        from rbi.cli.output import output_target
-
-        extension = os.path.splitext(file)[1].lower().lstrip(".") or "xml"
-        target = output_target(out, "--out", (extension,), inputs=[file])
+    from rbi.api import audit as run_audit
     from rbi.formats.paths import _outside_allowed
 
+    target = _fix_target(file, fix, out)
     report = run_audit(file, package_paths=package_path, geometry=geometry, density=density, material=material,
                        mesh_inertia=mesh_inertia, joints=joints, fix=fix, allow_outside_paths=_outside_allowed.get())
     code = report.exit_code
-    if fix and target is not None:
+    if target is not None:
         from rbi.cli.output import write_output
 
         write_output(target, report.fix.content)
         code = 1 if report.fix.unfixable or report.model.unchecked else 0
+    _render(report, format, file, out if fix else None, fix)
+    if code:
+        raise typer.Exit(code)
+
+
+def _fix_target(file: str, fix: bool, out: str | None):
+    """The checked --out target (same extension as the robot file), or None."""
+    import os
+
+    from rbi.cli.output import output_target
+    from rbi.errors import InputError
+
+    if out is None:
+        return None
+    if not fix:
+        raise InputError("--out: writes the fixed copy, so it needs --fix")
+    extension = os.path.splitext(file)[1].lower().lstrip(".") or "xml"
+    return output_target(out, "--out", (extension,), inputs=[file])
+
+
+def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool) -> None:
     if format is OutputFormat.table:
         _table(report)
         if fix:
             _fix_text(report, file, out)
-    else:
-        result = report.as_dict()
-        if fix:
-            result["fix"] = {"out": out, "changes": [{"link": c.link, "reason": c.reason}
-                                                      for c in report.fix.changes],
-                             "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable]}
-        from rbi.cli.render import emit
+        return
+    result = report.as_dict()
+    if fix:
+        result["fix"] = {"out": out, "changes": [{"link": c.link, "reason": c.reason} for c in report.fix.changes],
+                         "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable]}
+    from rbi.cli.render import emit
 
-        rows = [_csv_row(each) for each in report.links]
-        emit(format.value, result, lambda: None, csv_rows=rows)
-    if code:
-        raise typer.Exit(code)
+    emit(format.value, result, lambda: None, csv_rows=[_csv_row(each) for each in report.links])
 
 
 def _csv_row(each) -> dict:
