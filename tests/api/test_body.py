@@ -93,3 +93,27 @@ def test_parts_add_up_to_the_body(bolted):
 def test_pivot_and_warnings(top):
     np.testing.assert_array_equal(top.pivot, [0.0, 0.0, 0.0])
     assert top.warnings == []
+
+
+@pytest.mark.parametrize("name", ["top", "top_bolted", "tbar", "bracket"])
+def test_principal_axes_rebuild_the_inertia_about_any_point(name):
+    # I = Aᵀ diag(moments) A with the axes A as rows, about the centre of mass and the origin
+    body = rbi.load(BODIES / f"{name}.yaml")
+    for about in ("com", "origin", (0.01, -0.02, 0.03)):
+        principal = body.principal(about=about)
+        rebuilt = principal.axes.T @ np.diag(principal.moments) @ principal.axes
+        inertia = body.inertia(about=about)
+        np.testing.assert_allclose(rebuilt, inertia, rtol=0, atol=1e-12 * np.max(np.abs(inertia)))
+        assert list(principal.moments) == sorted(principal.moments)
+        np.testing.assert_allclose(principal.radii_of_gyration, np.sqrt(principal.moments / body.mass), rtol=1e-12)
+
+
+def test_turned_inertia_is_r_i_rt_for_chained_turns(bolted):
+    def turn(axis, degrees):
+        c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
+        return {"x": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]), "y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]),
+                "z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])}[axis]
+
+    R = turn("z", -45.0) @ turn("x", 20.0)  # x:20 first, then z:-45, both about world axes
+    np.testing.assert_allclose(bolted.inertia(axes=[("x", 20), ("z", -45)]), R @ bolted.inertia() @ R.T,
+                               rtol=1e-12, atol=1e-18)
