@@ -89,6 +89,7 @@ HOSTILE_NAMES = [
     "tab\there",
     "\ufeffbom",
     "名前 ünïcödé 🚀",
+    "yes", "null", "~", "1e3", "0x10", ".inf", "2024-01-01", "12:30:00",  # scalars YAML would read as non-strings
 ]
 
 
@@ -104,7 +105,7 @@ def test_a_hostile_link_name_is_data_in_the_printed_spec(tmp_path, name):
     assert_terminal_safe(proc.stderr)
 
 
-@pytest.mark.parametrize("name", HOSTILE_NAMES[:8], ids=[repr(n)[:30] for n in HOSTILE_NAMES[:8]])
+@pytest.mark.parametrize("name", HOSTILE_NAMES[:8] + HOSTILE_NAMES[-8:], ids=[repr(n)[:30] for n in HOSTILE_NAMES[:8] + HOSTILE_NAMES[-8:]])
 def test_a_hostile_link_name_is_data_in_the_written_spec_and_rbi_reads_it_back(tmp_path, name):
     path = tmp_path / "robot.urdf"
     path.write_text(urdf([name]))

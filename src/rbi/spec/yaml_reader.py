@@ -277,6 +277,12 @@ def _apply_merges(mapping: dict, merges: list[dict]) -> None:
                 mapping[key] = value
 
 
+def plain_is_text(value: str) -> bool:
+    """Whether ``value`` written as a plain (unquoted) scalar reads back as this same text here:
+    not a word (null, true, .inf, ...), nothing that starts like a number, not a merge key."""
+    return bool(value) and value not in _WORDS and value[0] not in _NUMBER_START and value != "<<"
+
+
 def _number(value: str, mark, fail) -> Any:
     """A plain scalar starting like a number: int, float, or text when YAML 1.1 would not read
     it as a number either; refused when YAML 1.1 reads it as a number differently from 1.2."""

@@ -15,6 +15,7 @@ from __future__ import annotations
 import unicodedata
 from typing import Any
 
+from rbi.spec.yaml_reader import plain_is_text
 from rbi.text import is_hidden, visible
 
 
@@ -34,7 +35,9 @@ def dump(data: Any, *, width: int = 100) -> str:
         pass
 
     def represent_str(dumper, value: str):
-        style = '"' if any(is_hidden(c) for c in value) else None
+        # double quotes for hidden characters (escaped); single quotes where rbi's reader would
+        # read the plain text as something else (1e3 is a number to it, though not to YAML 1.1)
+        style = '"' if any(is_hidden(c) for c in value) else None if plain_is_text(value) else "'"
         return dumper.represent_scalar("tag:yaml.org,2002:str", value, style=style)
 
     Dumper.add_representer(str, represent_str)
