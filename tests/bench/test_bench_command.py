@@ -122,6 +122,13 @@ def test_latency_has_first_run_and_every_timed_target(quick_run):
         assert "error" not in row, row
         assert row["ratio_to_numpy_import"] == pytest.approx(row["median_s"] / lat["commands"][0]["median_s"])
         assert row["target"] in (1.3, 2.0, 2.5)
+    # many files in one process: the cost of each file after the first, and the start-up ratio, reported
+    per_file = lat["per_file"]
+    many = next(r for r in lat["commands"] if r["command"].startswith("rbi inertia (the bundled bodies"))
+    assert per_file["files"] == 600 and "600 files" in many["command"]
+    assert per_file["per_file_ms"] == pytest.approx(
+        1000 * (many["median_s"] - labels["rbi inertia bodies/top.yaml --format json"]["median_s"]) / 599)
+    assert per_file["target_ms"] == 5.0
     first = lat["first_run"]
     assert first["ratio"] == pytest.approx(first["first_median_s"] / first["later_median_s"])
     assert first["files_left_in_home"] == []  # nothing compiled or cached in HOME

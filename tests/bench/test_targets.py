@@ -40,6 +40,22 @@ def test_largespec_uses_the_measured_ratio():
     assert "100,000 × point" in rows[0]["target"]
 
 
+def test_start_up_targets_per_file_in_ms_and_whole_process_as_a_ratio():
+    lat = {"baseline": 'python -c "import numpy"',
+           "commands": [{"command": 'python -c "import numpy"', "median_s": 0.1, "repeats": 3},
+                        {"command": "rbi inertia bodies/top.yaml", "median_s": 0.24, "ratio_to_numpy_import": 2.4,
+                         "target": 2.5, "repeats": 3}],
+           "per_file": {"files": 120, "one_file_median_s": 0.24, "many_files_median_s": 0.714, "per_file_ms": 4.0,
+                        "target_ms": 5.0}}
+    per_file, inertia = targets({"latency": lat})
+    assert per_file["met"] is True and per_file["measured"] == 4.0 and per_file["comparison"] == "≤"
+    assert inertia["met"] is True and inertia["measured"] == 2.4
+    shown = target_rows([per_file, inertia])
+    assert shown[0][2:4] == ["4", "≤ 5"] and shown[1][2:4] == ["2.4×", "≤ 2.5×"]
+    lat["per_file"] = {"error": "exit 2: x", "target_ms": 5.0}
+    assert targets({"latency": lat})[0]["met"] is None
+
+
 def test_sample_runs_spread_over_the_grid():
     g = {"spin": (150.0, 260.0, 100), "tilt": (0.01, 1.0, 100), "duration": 4.0}
     picks = sweep.sample_runs(g, 10)

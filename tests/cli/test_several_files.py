@@ -197,11 +197,15 @@ def test_parts_table_ends_with_a_total_row(monkeypatch):
     proc = rbi("parts", BOLTED)
     assert proc.returncode == 0, proc.stderr
     totals = [line.split() for line in proc.stdout.splitlines() if line.strip().startswith("total")]
-    assert len(totals) == 2
-    mass_row, inertia_row = totals
-    assert mass_row[1] == "0.52" and mass_row[2] == "100"
+    assert len(totals) == 3  # mass and volume; centre of mass; principal moments
+    mass_row, com_row, moments_row = totals
+    assert mass_row[1:3] == ["0.52", "100"] and mass_row[4] == "—"  # no mean density: the bolt has no volume
     assert float(mass_row[3]) == pytest.approx(math.pi * 0.04**2 * 0.06 / 3 + math.pi * 0.008**2 * 0.04, rel=1e-5)
-    assert "volume [m³]" in proc.stdout and "I1 [kg·m²]" in proc.stdout and "…" not in proc.stdout
+    assert [float(x) for x in com_row[1:4]] == pytest.approx([0.02 * 0.04 / 0.52, 0, 0.0272 / 0.52], rel=1e-5)
+    json_moments = json.loads(rbi("parts", BOLTED, "--format", "json").stdout)["principal_moments"]
+    assert [float(x) * 1e-4 for x in moments_row[1:4]] == pytest.approx(json_moments, rel=1e-4)  # shown ×10⁻⁴
+    assert "[m³]" in proc.stdout and "×10⁻⁴" in proc.stdout and "…" not in proc.stdout
+    assert max(len(line) for line in proc.stdout.splitlines()) <= 80
 
 
 def test_holes_are_taken_from_the_total_volume():

@@ -29,12 +29,22 @@ Progress = Callable[[str], None]
 
 
 TARGETS = {
-    "rbi inertia bodies/top.yaml": 2.0,
-    "rbi inertia bodies/top.yaml --format json": 2.0,
+    "rbi inertia bodies/top.yaml": 2.5,
+    "rbi inertia bodies/top.yaml --format json": 2.5,
     "rbi --help": 1.3,
     "rbi simulate bodies/top.yaml --spin 200 --tilt 10": 2.5,
 }
-"""Issue 9's limits on whole-process time, as multiples of ``python -c "import numpy"``."""
+"""Limits on whole-process time, as multiples of ``python -c "import numpy"`` (issue 9; issue 21
+for ``rbi inertia``)."""
+
+PER_FILE_TARGET_MS = 5.0
+"""Issue 21: each additional file in one ``rbi inertia`` process costs at most this (ms)."""
+
+MANY_FILES = 600
+"""Files in the many-files run (the bundled bodies over and over): enough that their own time
+(a few seconds) stands well above the noise of one process's start-up."""
+
+ONE_FILE = "rbi inertia bodies/top.yaml --format json"
 
 FIRST_RUN_TARGET = 1.3
 """Issue 9: the first ``rbi simulate`` with a fresh HOME at most this multiple of a later one."""
@@ -50,7 +60,8 @@ def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[st
         ("rbi --help", rbi + ["--help"]),
         ("rbi --version", rbi + ["--version"]),
         ("rbi inertia bodies/top.yaml", rbi + ["inertia", top]),
-        ("rbi inertia bodies/top.yaml --format json", rbi + ["inertia", top, "--format", "json"]),
+        (ONE_FILE, rbi + ["inertia", top, "--format", "json"]),
+        many_files_command(bodies, rbi),
         ("rbi principal bodies/top_bolted.yaml", rbi + ["principal", str(bodies / "top_bolted.yaml"), "--format", "json"]),
         ("rbi simulate bodies/top.yaml --spin 200 --tilt 10", rbi + ["simulate", top, "--spin", "200", "--tilt", "10"]),
         ("rbi simulate bodies/top_bolted.yaml --spin 200",
@@ -61,6 +72,32 @@ def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[st
         out.append((f"rbi principal (cloud of {n:,} points, CSV)", rbi + ["principal", str(cloud_specs["csv"]), "--format", "json"]))
         out.append((f"rbi principal (cloud of {n:,} points, .npy)", rbi + ["principal", str(cloud_specs["npy"]), "--format", "json"]))
     return out
+
+
+def many_bodies(bodies: Path) -> list[str]:
+    """:data:`MANY_FILES` paths, the bundled YAML bodies in turn."""
+    found = [str(path) for path in sorted(bodies.glob("*.yaml"))]
+    return [found[i % len(found)] for i in range(MANY_FILES)] if found else []
+
+
+def many_files_command(bodies: Path, rbi: list[str]) -> tuple[str, list[str]]:
+    files = many_bodies(bodies)
+    return (f"rbi inertia (the bundled bodies in turn: {len(files)} files) --format json",
+            rbi + ["inertia", *files, "--format", "json"])
+
+
+def per_file_cost(rows: list[dict], files: int) -> dict:
+    """The cost of each file after the first in one ``rbi inertia`` process: (time of the
+    many-files run − time of the one-file run) ÷ (files − 1), from the medians of the same
+    rounds."""
+    one = next((r for r in rows if r["command"] == ONE_FILE), {})
+    many = next((r for r in rows if r["command"].startswith("rbi inertia (the bundled bodies")), {})
+    if "median_s" not in one or "median_s" not in many:
+        return {"error": one.get("error") or many.get("error") or "not measured", "target_ms": PER_FILE_TARGET_MS}
+    per_file = (many["median_s"] - one["median_s"]) / (files - 1)
+    return {"files": files, "one_file_median_s": one["median_s"], "many_files_median_s": many["median_s"],
+            "per_file_ms": 1000 * per_file, "target_ms": PER_FILE_TARGET_MS,
+            "ratio_to_one_file_process": per_file / one["median_s"]}
 
 
 def first_run(bodies: Path, repeats: int) -> dict:
@@ -138,7 +175,8 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
             row["ratio_to_numpy_import"] = row["median_s"] / baseline
         if row["command"] in TARGETS:
             row["target"] = TARGETS[row["command"]]
-    return {"baseline": rows[0]["command"], "commands": rows, "first_run": first}
+    return {"baseline": rows[0]["command"], "commands": rows, "first_run": first,
+            "per_file": per_file_cost(rows, len(many_bodies(bodies)))}
 
 
 def spread(values: list[float]) -> float:

@@ -80,6 +80,13 @@ def targets(result: dict) -> list[dict]:
                                f"HOMEs; files left in HOME: {len(first['files_left_in_home'])}"))
         elif "error" in first:
             out.append(_target("start-up", "first rbi simulate in a fresh HOME ÷ a later one", None, 1.3, False, "", first["error"]))
+        per_file = lat.get("per_file") or {}
+        if per_file:
+            out.append(_target("start-up", "each additional file in one `rbi inertia` process (the bundled bodies), ms",
+                               per_file.get("per_file_ms"), per_file["target_ms"], False,
+                               f"one file: {number(per_file['one_file_median_s'], 3)} s" if "files" in per_file else "",
+                               per_file.get("error") or f"{per_file['files']} files: "
+                               f"{number(per_file['many_files_median_s'], 3)} s"))
         for row in lat["commands"]:
             if "target" in row:
                 out.append(_target("start-up", f"`{row['command']}` as a whole process, time", row.get("ratio_to_numpy_import"),
@@ -132,8 +139,9 @@ def target_rows(rows: list[dict]) -> list[list[str]]:
     out = []
     for r in rows:
         measured = r["measured"]
-        shown = "—" if measured is None else (number(measured, 3) if "MB" in r["target"] else _times(measured))
-        limit = number(r["limit"], 3) if "MB" in r["target"] else _times(r["limit"])
+        absolute = r["target"].endswith(("MB", "ms"))  # a quantity in its unit, not a ratio
+        shown = "—" if measured is None else (number(measured, 3) if absolute else _times(measured))
+        limit = number(r["limit"], 3) if absolute else _times(r["limit"])
         met = {True: "yes", False: "NO", None: "—"}[r["met"]]
         out.append([str(r["area"]), r["target"], shown, f"{r['comparison']} {limit}", met, r["baseline"], r["detail"]])
     return out
@@ -176,9 +184,14 @@ def headline(result: dict) -> list[str]:
     lat = result.get("latency")
     if lat:
         for row in lat["commands"][1:]:
-            if "ratio_to_numpy_import" in row and row["command"].startswith(("rbi inertia", "rbi simulate")):
+            if "target" in row and "ratio_to_numpy_import" in row and row["command"].startswith(("rbi inertia", "rbi simulate")):
                 lines.append(f"`{row['command']}` as a whole process: {_times(row['ratio_to_numpy_import'])} the time of "
                              f"`{lat['baseline']}` ({number(row['median_s'], 3)} s median).")
+        per_file = lat.get("per_file") or {}
+        if "per_file_ms" in per_file:
+            lines.append(f"Each further file in the same `rbi inertia` process: {number(per_file['per_file_ms'], 3)} ms "
+                         f"({per_file['files']} files in {number(per_file['many_files_median_s'], 3)} s), against "
+                         f"{number(per_file['one_file_median_s'], 3)} s for a process of its own.")
     return lines
 
 

@@ -100,48 +100,51 @@ def density_warning(row: dict, body, index: int) -> str | None:
 
 
 def _table(body, rows, total):
-    """Two tables (so that each fits 80 columns): mass and volume, then where the mass is and
-    how it turns; each ends with the whole body's row."""
+    """Three tables, each narrow enough for 80 columns: mass and volume; centre of mass and
+    share of the inertia; principal moments. Each ends with the whole body's row."""
     from rbi.cli import tables
     from rbi.cli.render import matrix_digits, number
 
     labels = body.labels
     name = body.name or body.path
-    density_unit = f"{body.mass_unit}/{body.length_unit}³"
-    volume_unit = f"{body.length_unit}³"
+    names = [tables.plain_text(row["name"]) for row in rows]
 
-    def table(title, columns, cells, total_row):
-        """A table whose text columns wrap in a narrow terminal and whose numbers never do."""
-        t = tables.titled(title)
-        for i, (header, justify) in enumerate(columns):
-            widest = max(len(row[i]) for row in [*cells, total_row]) if justify == "right" else None
-            t.add_column(header, justify=justify, overflow="fold", min_width=widest)
-        for row in cells:
-            t.add_row(*row)
+    def table(what, headers, cells, total_row):
+        """Numbers never wrap (a column of them is as wide as its widest number); part names
+        and shapes wrap in a narrow terminal."""
+        from rich.text import Text
+
+        t = tables.titled(f"{name}: parts — {what}")
+        t.add_column("part", overflow="fold")
+        for header in headers:
+            numbers = not header.startswith("shape")
+            # the label over its unit (a rich Text: rbi's own words, never read as markup)
+            t.add_column(Text(header, justify="right" if numbers else "left"), justify="right" if numbers else "left",
+                         no_wrap=numbers, overflow="fold")
+        for part_name, row in zip(names, cells):
+            t.add_row(part_name, *row)
         t.add_section()
-        t.add_row(*total_row)
+        t.add_row("total", *total_row)
         return t
 
     def signed_volume(row):
         return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])
 
-    masses = table(f"{name}: parts — mass and volume", (
-        ("part", "left"), ("shape", "left"), (tables.unit_header("mass", labels["mass"]), "right"),
-        ("mass share [%]", "right"), (tables.unit_header("volume", volume_unit), "right"),
-        (tables.unit_header("density", density_unit), "right")),
-        [(tables.plain_text(row["name"]), row["shape"] + (" (hole)" if row["hole"] else ""), number(row["mass"]),
-          number(100 * row["mass_share"], 4), signed_volume(row), number(row["implied_density"], 4)) for row in rows],
-        ("total", "", number(body.props.mass), number(100.0, 4), number(total["volume"]), number(total["mean_density"], 4)))
-
+    length = labels["length"]
+    masses = table("mass and volume", (
+        "shape", f"mass\n[{labels['mass']}]", "mass\nshare [%]", f"volume\n[{body.length_unit}³]",
+        f"density\n[{body.mass_unit}/{body.length_unit}³]"),
+        [(row["shape"] + (" (hole)" if row["hole"] else ""), number(row["mass"]), number(100 * row["mass_share"], 4),
+          signed_volume(row), number(row["implied_density"], 4)) for row in rows],
+        ("", number(body.props.mass), number(100.0, 4), number(total["volume"]), number(total["mean_density"], 4)))
+    places = table("centre of mass", (
+        f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
+        [(*(number(c) for c in row["center_of_mass"]), number(100 * row["inertia_share"], 4)) for row in rows],
+        (*(number(c) for c in body.props.com), number(100.0, 4)))
     scale, scale_text = matrix_digits([total["principal_moments"], *(row["principal_moments"] for row in rows)])
-    inertias = table(f"{name}: parts — centre of mass, principal moments about it", (
-        ("part", "left"), (tables.unit_header("centre of mass", labels["length"]), "left"),
-        *((tables.unit_header(f"I{i}", labels["inertia"], scale_text), "right") for i in (1, 2, 3)),
-        ("inertia share [%]", "right")),
-        [(tables.plain_text(row["name"]), tables.vector(row["center_of_mass"]),
-          *(number(m / scale, 5) for m in row["principal_moments"]), number(100 * row["inertia_share"], 4))
-         for row in rows],
-        ("total", tables.vector(body.props.com), *(number(m / scale, 5) for m in total["principal_moments"]),
-         number(100.0, 4)))
-    return tables.stack(masses, inertias)
-
+    unit = f"[{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
+    moments = table("principal moments (own CoM)", (
+        f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
+        [tuple(number(m / scale, 5) for m in row["principal_moments"]) for row in rows],
+        tuple(number(m / scale, 5) for m in total["principal_moments"]))
+    return tables.stack(masses, places, moments)
