@@ -146,7 +146,7 @@ def test_welding_keeps_distinct_vertices_apart():
 
 def test_good_meshes_have_no_defects():
     for vertices, faces in (box_mesh(), cylinder_mesh(1, 1, 7), sphere_mesh(1, 5, 9)):
-        assert mesh_defects(faces) == (0, 0, 0, 0)
+        assert mesh_defects(faces) == (0, 0, 0, 0, 0)
         assert mesh_problem(vertices, faces) is None
 
 
@@ -175,25 +175,28 @@ def test_an_inside_out_mesh_has_negative_volume():
 def test_a_flat_double_sided_sheet_encloses_nothing():
     vertices = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
     faces = np.array([[0, 1, 2], [0, 2, 1]])
-    assert mesh_defects(faces) == (0, 0, 0, 0)
+    assert mesh_defects(faces) == (0, 0, 0, 0, 0)
     assert mesh_problem(vertices, faces).startswith("encloses no volume")
 
 
-def test_an_edge_shared_by_four_triangles_is_not_a_surface():
+def test_an_edge_shared_by_four_triangles_half_each_way_joins_two_solids():
+    # two tetrahedra touching along one edge, as a convex decomposition writes them
     v1, f1 = tetrahedron_mesh([[0, 0, 0], [0, 0, 1], [1, 0, 0], [0, 1, 0]])
     v2, f2 = tetrahedron_mesh([[0, 0, 0], [0, 0, 1], [-1, 0, 0], [0, -1, 0]])
     vertices = np.vstack([v1, v2[2:]])
     remap = np.array([0, 1, 4, 5])
     faces = np.vstack([f1, remap[f2]])
     defects = mesh_defects(faces)
-    assert defects.overshared_edges == 1 and defects.boundary_edges == 0
-    assert "shared by more than two triangles" in mesh_problem(vertices, faces)
+    assert defects.overshared_edges == 0 and defects.boundary_edges == 0 and defects.shared_edges == 1
+    assert mesh_problem(vertices, faces) is None
+    assert enclosed_volume_properties(vertices, faces).volume == pytest.approx(2 / 6, rel=1e-15)
 
 
 def test_empty_and_broken_arrays_are_named():
     assert mesh_problem(np.zeros((0, 3)), np.zeros((0, 3), int)) == "holds no triangles"
     vertices, faces = box_mesh()
-    assert mesh_problem(vertices, np.vstack([faces, [[0, 1, 99]]])) == "a face names a vertex that does not exist"
+    assert mesh_problem(vertices, np.vstack([faces, [[0, 1, 99]]])) == ("face 12 names a vertex that does not exist "
+                                                                 "(vertices are numbered 0 to 7)")
     vertices = vertices.copy()
     vertices[6, 1] = np.nan
     assert mesh_problem(vertices, faces) == "vertex 6: coordinates must be finite numbers"

@@ -1,5 +1,5 @@
-"""Closed triangle meshes: the volume they enclose, its centre of mass and inertia, and the
-checks that make those numbers meaningful.
+"""Triangle meshes: the solid they enclose or the surface they are, its centre of mass and
+inertia, and the checks that make those numbers meaningful.
 
 A mesh is ``vertices`` (N, 3) floats in any length unit L and ``faces`` (F, 3) vertex indices,
 each triangle wound counter-clockwise seen from outside (its normal by the right-hand rule
@@ -10,7 +10,24 @@ mesh describes. The reference point is taken inside the mesh's bounding box and 
 moments are summed about the centre of mass itself, so a small part far from the origin keeps
 its digits.
 
-Pure numpy, vectorised over faces; reading files is done elsewhere.
+Three ways to put mass on a mesh, named as MuJoCo names them (:data:`MESH_INERTIA_MODES`):
+
+- ``exact``: the solid the mesh encloses. The mesh must be closed: every edge used as often in
+  one direction as in the other. That admits what CAD exporters and convex decomposition
+  write: several closed pieces in one file, touching at vertices, along edges or on faces
+  (such an edge is used by four or more triangles, half each way), and cavities (a piece wound
+  inward inside another). A piece wound inside out that is no cavity would count its space
+  negatively: refused. Pieces that overlap count their shared space twice (as MuJoCo does):
+  accepted with a note.
+- ``convex``: the solid convex hull of the vertices (scipy's Qhull), never a silent fallback.
+- ``shell``: the mass spread evenly over the surface (MuJoCo's ``shellinertia``); any mesh with
+  area, open or closed. A density is then mass per area.
+
+:func:`repair_mesh` (opt-in) closes holes of three or four edges with trimesh's
+``fill_holes`` and reports the area it added.
+
+Pure numpy, vectorised over faces in chunks (bounded memory); scipy and trimesh are imported
+only by the functions that need them; reading files is done elsewhere.
 """
 
 from __future__ import annotations
@@ -19,21 +36,34 @@ from typing import NamedTuple
 
 import numpy as np
 
+MESH_INERTIA_MODES = ("exact", "convex", "shell")
+"""How a mesh carries its mass: the enclosed solid, the convex hull's solid, or the surface."""
+
+
+class MeshError(ValueError):
+    """A mesh that cannot give mass properties in the mode asked; ``str()`` says what is wrong
+    and what would be right (without the file's name: the caller adds it)."""
+
 
 class MeshDefects(NamedTuple):
-    """What keeps a triangle mesh from bounding a solid (all zero for a good mesh).
+    """What keeps a triangle mesh from bounding a solid (all but ``shared_edges`` zero for a
+    good mesh). Counts of undirected edges, each classed by how its triangles use it.
 
     boundary_edges: edges used by only one triangle (holes in the surface).
-    overshared_edges: edges used by more than two triangles (non-manifold).
-    misoriented_edges: edges whose two triangles run along them in the same direction (a
+    overshared_edges: edges used by more than two triangles whose uses do not balance (not as
+    many running one way as the other): a fin, or pieces glued inconsistently.
+    misoriented_edges: edges used by two triangles running along them in the same direction (a
     face wound against its neighbours, so that its normal points the wrong way).
     degenerate_faces: triangles that name one vertex twice (no area; ignored in the sums).
+    shared_edges: edges used by four or more triangles, half each way: closed pieces touching
+    along an edge. Not a defect.
     """
 
     boundary_edges: int
     overshared_edges: int
     misoriented_edges: int
     degenerate_faces: int
+    shared_edges: int = 0
 
 
 class MeshVolumeProperties(NamedTuple):
@@ -46,8 +76,66 @@ class MeshVolumeProperties(NamedTuple):
     inertia_per_density: np.ndarray
 
 
+class MeshSurfaceProperties(NamedTuple):
+    """Per unit area density: area (L²), centroid of the surface (L, mesh frame), and
+    ``∫ (|r|² E − r rᵀ) dA`` about that centroid (L⁴, mesh axes)."""
+
+    area: float
+    centroid: np.ndarray
+    inertia_per_density: np.ndarray
+
+
+class MeshDistribution(NamedTuple):
+    """Where a mode puts the mass, per unit density: ``measure`` is the volume (L³; modes
+    ``exact`` and ``convex``) or the area (L²; ``shell``) that carries it, ``centroid`` its
+    centre (L, mesh frame), ``inertia_per_density`` its inertia about the centroid per unit
+    density (L⁵ or L⁴, mesh axes). ``vertices`` and ``faces`` are the mesh integrated (the
+    hull's, for ``convex``). ``notes``: what the numbers deserve a word on (overlapping
+    pieces)."""
+
+    mode: str
+    measure: float
+    centroid: np.ndarray
+    inertia_per_density: np.ndarray
+    vertices: np.ndarray
+    faces: np.ndarray
+    notes: tuple[str, ...] = ()
+
+
+class MeshMassProperties(NamedTuple):
+    """A mesh's mass properties in its own frame and length unit L: ``mass`` (M),
+    ``center_of_mass`` (L), ``inertia_about_com`` (M·L², about the centre of mass, mesh axes),
+    ``volume`` (L³: the enclosed solid's, or the hull's for ``convex``; None for ``shell``) and
+    ``area`` (L²: the surface of the mesh integrated); ``notes`` as in :class:`MeshDistribution`."""
+
+    mode: str
+    mass: float
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray
+    volume: float | None
+    area: float
+    notes: tuple[str, ...] = ()
+
+
+class RepairedMesh(NamedTuple):
+    """A mesh after :func:`repair_mesh`: its vertices and faces (the added triangles last), the
+    number of triangles added and their total area (L²)."""
+
+    vertices: np.ndarray
+    faces: np.ndarray
+    added_faces: int
+    added_area: float
+
+
 WELD_RTOL = 1e-9
 """Vertices closer than about this fraction of the bounding box's diagonal are one vertex."""
+
+FACE_CHUNK = 1 << 16
+"""Faces integrated at a time: the temporaries stay near 20 MB whatever the mesh's size."""
+
+
+def _as_arrays(vertices, faces) -> tuple[np.ndarray, np.ndarray]:
+    return (np.asarray(vertices, dtype=float).reshape(-1, 3), np.asarray(faces, dtype=np.int64).reshape(-1, 3))
 
 
 def weld_vertices(vertices: np.ndarray, faces: np.ndarray, rtol: float = WELD_RTOL) -> tuple[np.ndarray, np.ndarray]:
@@ -55,88 +143,220 @@ def weld_vertices(vertices: np.ndarray, faces: np.ndarray, rtol: float = WELD_RT
 
     STL files store every triangle with its own three corners, so a mesh read from one shares
     no vertex indices until equal positions are joined. CAD exporters write the same corner
-    with rounding noise (``-1.7e-17`` for ``0``), so positions are compared on a grid of
-    ``rtol`` times the bounding box's diagonal, far below the spacing of single-precision
-    coordinates; each welded vertex keeps the coordinates of its first occurrence.
+    with rounding noise (``-1.7e-17`` for ``0``), so positions closer than a tolerance ``rtol``
+    times the bounding box's diagonal are joined too: equal positions are found by sorting
+    (in the input's precision, float32 or float64), then each remaining position is joined to
+    those within the tolerance (a k-d tree's neighbour query; never a rounding grid, which
+    splits two copies of a corner one ulp apart on either side of a grid line). Each welded
+    vertex keeps the coordinates of the lowest of its copies in lexicographic order; the
+    result is float64. The vertices must be finite. Raises :class:`MeshError` when more than
+    :data:`NEAR_NEIGHBOURS` distinct positions crowd within the tolerance of one.
     """
-    vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
+    vertices = np.asarray(vertices)
+    if vertices.dtype not in (np.float32, np.float64):
+        vertices = vertices.astype(float)
+    vertices = vertices.reshape(-1, 3)
     faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
-    low = vertices.min(axis=0)
-    diagonal = float(np.linalg.norm(vertices.max(axis=0) - low))
-    if diagonal == 0.0:
-        keys = np.zeros((vertices.shape[0], 3), dtype=np.int64)
-    else:
-        keys = np.round((vertices - low) / (rtol * diagonal)).astype(np.int64)
-    _, first, inverse = np.unique(keys, axis=0, return_index=True, return_inverse=True)
-    return vertices[first], inverse.reshape(-1)[faces]
+    if vertices.shape[0] == 0:
+        return vertices.astype(float), faces
+    order = np.lexsort((vertices[:, 2], vertices[:, 1], vertices[:, 0]))
+    ordered = vertices[order]
+    starts = np.empty(len(ordered), dtype=bool)
+    starts[0] = True
+    np.any(ordered[1:] != ordered[:-1], axis=1, out=starts[1:])  # -0.0 == 0.0: joined
+    unique = ordered[starts].astype(float)
+    del ordered
+    inverse = np.empty(len(order), dtype=np.int64)
+    inverse[order] = np.cumsum(starts) - 1
+    del order, starts
+    labels = _near_groups(unique, rtol)
+    if labels is not None:
+        _, first = np.unique(labels, return_index=True)
+        unique = unique[first]
+        inverse = labels[inverse]
+    return unique, inverse[faces]
+
+
+NEAR_NEIGHBOURS = 7
+"""Most distinct positions welding joins to one (rounding noise gives a handful); more within
+the tolerance is a degenerate mesh, refused rather than searched at any cost."""
+
+
+def _near_groups(points: np.ndarray, rtol: float) -> np.ndarray | None:
+    """Group labels (numbered in the points' order) joining distinct ``points`` closer than
+    ``rtol`` times their bounding diagonal, directly or through a chain; None when no two are
+    that close."""
+    if len(points) < 2:
+        return None
+    low = points.min(axis=0)
+    span = points.max(axis=0) - low
+    scale = float(np.max(span))
+    if not (np.isfinite(scale) and scale > 0):
+        return None
+    tol = rtol * scale * float(np.linalg.norm(span / scale))
+    from scipy.spatial import cKDTree
+
+    tree = cKDTree(points, balanced_tree=False, compact_nodes=False)
+    distance, neighbour = tree.query(points, k=NEAR_NEIGHBOURS + 2, distance_upper_bound=tol)
+    del tree
+    found = np.isfinite(distance) & (neighbour != np.arange(len(points))[:, None])
+    del distance
+    if not found.any():
+        return None
+    if found.sum(axis=1).max() > NEAR_NEIGHBOURS:
+        raise MeshError(f"more than {NEAR_NEIGHBOURS} distinct vertices lie within {tol:.3g} of one vertex "
+                        f"({rtol:g} of the mesh's size): a degenerate mesh, not rounding noise")
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    rows = np.nonzero(found)[0]
+    cols = neighbour[found]
+    graph = coo_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(len(points), len(points)))
+    _, group = connected_components(graph, directed=False)
+    return group  # labels follow the order of each group's first point
+
+
+def _edge_uses(faces: np.ndarray, n_vertices: int) -> tuple[np.ndarray, np.ndarray]:
+    """For each undirected edge of the non-degenerate faces: how many triangles use it, and
+    the balance of their directions (uses from the lower to the higher vertex index minus
+    uses the other way)."""
+    directed_from = faces.reshape(-1)
+    directed_to = faces[:, [1, 2, 0]].reshape(-1)
+    low = np.minimum(directed_from, directed_to)
+    high = np.maximum(directed_from, directed_to)
+    key = low * np.int64(max(n_vertices, 1)) + high
+    del low, high
+    _, edge, uses = np.unique(key, return_inverse=True, return_counts=True)
+    del key
+    direction = np.where(directed_from < directed_to, 1.0, -1.0)
+    balance = np.bincount(edge.reshape(-1), weights=direction, minlength=len(uses))
+    return uses, balance
 
 
 def mesh_defects(faces: np.ndarray) -> MeshDefects:
     """Edge counts that tell whether ``faces`` close a consistently wound surface.
 
-    Every edge of a closed, consistently wound surface is used by exactly two triangles, once
-    in each direction.
+    A set of triangles closes a consistently wound surface (the boundary of a solid, perhaps
+    of several pieces) when every edge is used as often in one direction as in the other:
+    then the divergence theorem holds and the enclosed volume does not depend on the
+    reference point. An ordinary closed mesh uses each edge exactly twice, once each way.
     """
     faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     degenerate = (faces[:, 0] == faces[:, 1]) | (faces[:, 1] == faces[:, 2]) | (faces[:, 2] == faces[:, 0])
     good = faces[~degenerate]
-    directed = np.concatenate([good[:, [0, 1]], good[:, [1, 2]], good[:, [2, 0]]])
-    undirected = np.sort(directed, axis=1)
-    _, uses = np.unique(undirected, axis=0, return_counts=True)
-    _, directed_uses = np.unique(directed, axis=0, return_counts=True)
+    if len(good) == 0:
+        return MeshDefects(0, 0, 0, int(np.count_nonzero(degenerate)), 0)
+    uses, balance = _edge_uses(good, int(good.max()) + 1)
+    unbalanced = balance != 0
     return MeshDefects(
         boundary_edges=int(np.count_nonzero(uses == 1)),
-        overshared_edges=int(np.count_nonzero(uses > 2)),
-        misoriented_edges=int(np.count_nonzero(directed_uses > 1)),
+        overshared_edges=int(np.count_nonzero(unbalanced & (uses > 2))),
+        misoriented_edges=int(np.count_nonzero(unbalanced & (uses == 2))),
         degenerate_faces=int(np.count_nonzero(degenerate)),
+        shared_edges=int(np.count_nonzero(~unbalanced & (uses > 2))),
     )
 
 
-def _tetra_sums(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Signed volumes (F,), first moments (F, 3) and second moments ∫ r rᵀ dV (F, 3, 3) of the
-    tetrahedra joining the origin to each triangle ``corners`` (F, 3, 3)."""
+def _face_chunks(n_faces: int):
+    for start in range(0, n_faces, FACE_CHUNK):
+        yield slice(start, min(start + FACE_CHUNK, n_faces))
+
+
+def _volume_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Signed volumes (F,), first moments (3,) summed and second moments ∫ r rᵀ dV (3, 3)
+    summed, of the tetrahedra joining the origin to each triangle ``corners`` (F, 3, 3)."""
     a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
-    six_volume = np.einsum("ij,ij->i", a, np.cross(b, c))
-    volume = six_volume / 6.0
+    volume = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
     total = a + b + c
-    first = volume[:, None] * total / 4.0
+    first = (volume[:, None] * total / 4.0).sum(axis=0)
     # ∫ r rᵀ dV over a tetrahedron with one corner at the origin: V/20 (Σ vᵢvᵢᵀ + s sᵀ), s = Σ vᵢ
-    outer = (np.einsum("fi,fj->fij", a, a) + np.einsum("fi,fj->fij", b, b) + np.einsum("fi,fj->fij", c, c)
-             + np.einsum("fi,fj->fij", total, total))
-    second = volume[:, None, None] * outer / 20.0
+    second = (volume[:, None, None] * _outer_sum(a, b, c, total) / 20.0).sum(axis=0)
     return volume, first, second
 
 
-def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MeshVolumeProperties:
-    """Volume, centroid and inertia per unit density of the solid a closed mesh encloses.
+def _outer_sum(a, b, c, total) -> np.ndarray:
+    return (np.einsum("fi,fj->fij", a, a) + np.einsum("fi,fj->fij", b, b) + np.einsum("fi,fj->fij", c, c)
+            + np.einsum("fi,fj->fij", total, total))
 
-    The sums run twice: once about the centre of the bounding box to find the centroid, then
-    about the centroid itself, so no large offset is squared and subtracted. A mesh wound
-    inside out gives a negative volume (and is reported by the caller, not fixed here).
-    """
-    vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
-    faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
-    corners = vertices[faces]
-    reference = 0.5 * (corners.reshape(-1, 3).min(axis=0) + corners.reshape(-1, 3).max(axis=0))
-    volumes, firsts, _ = _tetra_sums(corners - reference)
-    volume = float(volumes.sum())
-    centroid = reference + firsts.sum(axis=0) / volume
-    volumes, firsts, seconds = _tetra_sums(corners - centroid)
-    volume = float(volumes.sum())
-    drift = firsts.sum(axis=0) / volume  # what rounding left of the first moment about the centroid
-    second = seconds.sum(axis=0) - volume * np.outer(drift, drift)
+
+def _surface_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Areas (F,), first moments (3,) summed and second moments ∫ r rᵀ dA (3, 3) summed, of
+    the triangles ``corners`` (F, 3, 3)."""
+    a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
+    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
+    total = a + b + c
+    first = (area[:, None] * total / 3.0).sum(axis=0)
+    # ∫ r rᵀ dA over a triangle: A/12 (Σ vᵢvᵢᵀ + s sᵀ), s = Σ vᵢ
+    second = (area[:, None, None] * _outer_sum(a, b, c, total) / 12.0).sum(axis=0)
+    return area, first, second
+
+
+def _sums(vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, moments) -> tuple[float, np.ndarray, np.ndarray]:
+    measure, first, second = 0.0, np.zeros(3), np.zeros((3, 3))
+    for chunk in _face_chunks(len(faces)):
+        m, f, s = moments(vertices[faces[chunk]] - reference)
+        measure += float(m.sum())
+        first += f
+        second += s
+    return measure, first, second
+
+
+def _integrate(vertices: np.ndarray, faces: np.ndarray, moments) -> tuple[float, np.ndarray, np.ndarray]:
+    """Measure, centroid and inertia per unit density about the centroid. The sums run twice:
+    once about the centre of the bounding box to find the centroid, then about the centroid
+    itself, so no large offset is squared and subtracted."""
+    used = vertices[np.unique(faces)] if len(faces) else vertices
+    reference = 0.5 * (used.min(axis=0) + used.max(axis=0))
+    measure, first, _ = _sums(vertices, faces, reference, moments)
+    if not (np.isfinite(measure) and measure != 0.0):
+        return measure, np.full(3, np.nan), np.full((3, 3), np.nan)  # the callers refuse it
+    centroid = reference + first / measure
+    measure, first, second = _sums(vertices, faces, centroid, moments)
+    drift = first / measure  # what rounding left of the first moment about the centroid
+    second = second - measure * np.outer(drift, drift)
     centroid = centroid + drift
     second = 0.5 * (second + second.T)
-    inertia = np.trace(second) * np.eye(3) - second
-    return MeshVolumeProperties(volume, centroid, inertia)
+    return measure, centroid, np.trace(second) * np.eye(3) - second
+
+
+def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MeshVolumeProperties:
+    """Volume, centroid and inertia per unit density of the solid a closed mesh encloses. A
+    mesh wound inside out gives a negative volume (and is reported by the caller, not fixed
+    here)."""
+    vertices, faces = _as_arrays(vertices, faces)
+    return MeshVolumeProperties(*_integrate(vertices, faces, _volume_moments))
+
+
+def surface_properties(vertices: np.ndarray, faces: np.ndarray) -> MeshSurfaceProperties:
+    """Area, centroid and inertia per unit area density of the surface the triangles make
+    (each triangle counted once, whatever its winding; open or closed)."""
+    vertices, faces = _as_arrays(vertices, faces)
+    return MeshSurfaceProperties(*_integrate(vertices, faces, _surface_moments))
+
+
+def surface_area(vertices: np.ndarray, faces: np.ndarray) -> float:
+    """Total area of the triangles (L²)."""
+    vertices, faces = _as_arrays(vertices, faces)
+    total = 0.0
+    for chunk in _face_chunks(len(faces)):
+        c = vertices[faces[chunk]]
+        total += float(0.5 * np.linalg.norm(np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0]), axis=1).sum())
+    return total
+
+
+def _face_volumes(vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray) -> np.ndarray:
+    out = np.empty(len(faces))
+    for chunk in _face_chunks(len(faces)):
+        c = vertices[faces[chunk]] - reference
+        out[chunk] = np.einsum("ij,ij->i", c[:, 0], np.cross(c[:, 1], c[:, 2])) / 6.0
+    return out
 
 
 def enclosed_volume(vertices: np.ndarray, faces: np.ndarray) -> float:
     """Signed volume the mesh encloses (L³): positive when wound outward, negative inside out."""
-    vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
-    corners = vertices[np.asarray(faces, dtype=np.int64).reshape(-1, 3)]
+    vertices, faces = _as_arrays(vertices, faces)
     reference = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
-    return float(_tetra_sums(corners - reference)[0].sum())
+    return float(_face_volumes(vertices, faces, reference).sum())
 
 
 def bounding_box_volume(vertices: np.ndarray) -> float:
@@ -150,31 +370,241 @@ VOLUME_RTOL = 1e-12
 """An enclosed volume below this fraction of the bounding box's counts as none (a flat mesh)."""
 
 
-def mesh_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
-    """Why the mesh does not bound a solid rbi can integrate, in plain words, or None."""
-    vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
+def _plural(count: int, word: str) -> str:
+    return f"{count} {word}{'s' * (count != 1)}"
+
+
+def arrays_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
+    """What makes the arrays unusable for any mode (no triangles, an index out of range, a
+    coordinate that is not a finite number or too large to square), or None."""
+    vertices = np.asarray(vertices)  # float32 or float64 as read: no copy
     faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    if vertices.ndim != 2 or vertices.shape[1] != 3:
+        return "holds no triangles"
     if faces.shape[0] == 0 or vertices.shape[0] == 0:
         return "holds no triangles"
     if faces.min() < 0 or faces.max() >= vertices.shape[0]:
-        return "a face names a vertex that does not exist"
-    if not np.all(np.isfinite(vertices)):
-        bad = int(np.flatnonzero(~np.isfinite(vertices).all(axis=1))[0])
+        bad = int(np.flatnonzero((faces < 0).any(axis=1) | (faces >= vertices.shape[0]).any(axis=1))[0])
+        return (f"face {bad} names a vertex that does not exist (vertices are numbered 0 to "
+                f"{vertices.shape[0] - 1})")
+    finite = np.isfinite(vertices).all(axis=1)
+    if not finite.all():
+        bad = int(np.flatnonzero(~finite)[0])
         return f"vertex {bad}: coordinates must be finite numbers"
+    if float(np.abs(vertices).max()) > MAX_COORDINATE:
+        bad = int(np.flatnonzero((np.abs(vertices) > MAX_COORDINATE).any(axis=1))[0])
+        return (f"vertex {bad}: a coordinate beyond ±{MAX_COORDINATE:g} (its fifth power, which the "
+                f"inertia needs, would overflow); scale the mesh into a smaller unit")
+    return None
+
+
+MAX_COORDINATE = 1e50
+"""Largest coordinate magnitude rbi integrates: moments of inertia hold fifth powers of lengths,
+and (1e50)⁵ is far inside the float range while no real part is measured in such numbers."""
+
+
+def mesh_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
+    """Why the mesh does not bound a solid rbi can integrate (mode ``exact``), in plain words,
+    or None."""
+    return closed_mesh_check(vertices, faces)[0]
+
+
+def closed_mesh_check(vertices: np.ndarray, faces: np.ndarray) -> tuple[str | None, tuple[str, ...]]:
+    """Why the mesh does not bound a solid (or None), and notes on a mesh that does but whose
+    numbers deserve a word (pieces that overlap, whose shared space counts twice)."""
+    vertices, faces = _as_arrays(vertices, faces)
+    problem = arrays_problem(vertices, faces)
+    if problem is not None:
+        return problem, ()
     defects = mesh_defects(faces)
     if defects.boundary_edges:
-        return (f"not closed: {defects.boundary_edges} boundary edge{'s' * (defects.boundary_edges != 1)} "
-                f"(edges used by only one triangle)")
+        return f"not closed: {_plural(defects.boundary_edges, 'boundary edge')} (edges used by only one triangle)", ()
     if defects.overshared_edges:
-        return (f"not a closed surface: {defects.overshared_edges} edge{'s' * (defects.overshared_edges != 1)} "
-                f"shared by more than two triangles")
+        return (f"not a closed surface: {_plural(defects.overshared_edges, 'edge')} used by more than two "
+                f"triangles, not as many each way (closed pieces that touch use an edge equally often "
+                f"in each direction)"), ()
     if defects.misoriented_edges:
-        return (f"not consistently wound: {defects.misoriented_edges} edge{'s' * (defects.misoriented_edges != 1)} "
-                f"run the same way in both of their triangles (some faces point inward)")
+        return (f"not consistently wound: {_plural(defects.misoriented_edges, 'edge')} run the same way in "
+                f"both of their triangles (some faces point inward)"), ()
     volume = enclosed_volume(vertices, faces)
     if not abs(volume) > VOLUME_RTOL * bounding_box_volume(vertices):
-        return "encloses no volume (the surface is flat or folds onto itself)"
+        return "encloses no volume (the surface is flat or folds onto itself)", ()
     if volume < 0:
         return (f"inside out: the enclosed volume is negative ({volume:.6g}); every face is wound "
-                f"clockwise seen from outside")
-    return None
+                f"clockwise seen from outside"), ()
+    return _pieces_check(vertices, faces, defects)
+
+
+WINDING_BUDGET = 1_000_000
+"""Solid angles evaluated at most when checking how pieces of a mesh lie (a fraction of a second)."""
+
+OVERLAP_NOTE = ("pieces of the mesh overlap: the space inside two of them counts twice (as in MuJoCo, which "
+                "sums the pieces too); join them into one surface for the solid's own numbers")
+
+
+def _pieces_check(vertices: np.ndarray, faces: np.ndarray, defects: MeshDefects) -> tuple[str | None, tuple[str, ...]]:
+    """For a mesh of several pieces (or pieces touching along edges): a piece wound inside out
+    that is no cavity (its space would count negatively: refused), and pieces that overlap
+    (space counted twice, as the sum of the pieces: a note). Tested by the winding number just
+    in front of and just behind a sample of faces (every face of a small mesh): 0 or 1 for a
+    solid."""
+    face_piece = _piece_of_face(vertices.shape[0], faces)
+    if face_piece.max() == 0 and defects.shared_edges == 0:
+        return None, ()
+    corners = vertices[faces]
+    reference = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
+    corners = corners - reference
+    cross = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
+    double_area = np.linalg.norm(cross, axis=1)
+    perimeter = sum(np.linalg.norm(corners[:, (i + 1) % 3] - corners[:, i], axis=1) for i in range(3))
+    inradius = np.divide(double_area, perimeter, out=np.zeros(len(faces)), where=perimeter > 0)
+    size = float(np.linalg.norm(corners.reshape(-1, 3).max(axis=0) - corners.reshape(-1, 3).min(axis=0)))
+    usable = inradius > 1e-7 * size
+    samples = _sample_faces(face_piece, double_area, usable, max(1, WINDING_BUDGET // (2 * len(faces))))
+    if len(samples) == 0:
+        return None, ()
+    normal = cross[samples] / double_area[samples, None]
+    centre = corners[samples].mean(axis=1)
+    step = (1e-3 * inradius[samples])[:, None] * normal
+    points = np.vstack([centre + step, centre - step])
+    winding = _winding_numbers(corners, points)
+    near_integer = np.abs(winding - np.round(winding)) < 1e-3
+    counts = np.round(winding[near_integer])
+    if (counts < 0).any():
+        return ("inside out: a piece of the mesh is wound clockwise seen from outside and is no cavity "
+                "inside another piece (its space would count negatively); turn its faces around"), ()
+    return None, ((OVERLAP_NOTE,) if (counts > 1).any() else ())
+
+
+def _piece_of_face(n_vertices: int, faces: np.ndarray) -> np.ndarray:
+    """For each face, the number of the piece (faces connected through shared vertices) it
+    belongs to."""
+    from scipy.sparse import coo_matrix
+    from scipy.sparse.csgraph import connected_components
+
+    rows = np.concatenate([faces[:, 0], faces[:, 1]])
+    cols = np.concatenate([faces[:, 1], faces[:, 2]])
+    graph = coo_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(n_vertices, n_vertices))
+    _, vertex_piece = connected_components(graph, directed=False)
+    return vertex_piece[faces[:, 0]]
+
+
+def _sample_faces(face_piece: np.ndarray, weight: np.ndarray, usable: np.ndarray, count: int) -> np.ndarray:
+    """Up to about ``count`` usable faces: the largest of every piece, then evenly spread ones."""
+    candidates = np.flatnonzero(usable)
+    if len(candidates) <= count:
+        return candidates
+    order = candidates[np.lexsort((-weight[candidates], face_piece[candidates]))]
+    _, first = np.unique(face_piece[order], return_index=True)
+    largest = order[first][:count]
+    spread = candidates[np.linspace(0, len(candidates) - 1, max(count - len(largest), 0)).astype(np.int64)]
+    return np.unique(np.concatenate([largest, spread]))
+
+
+def _winding_numbers(corners: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """Generalised winding number of the triangles ``corners`` (F, 3, 3) at each point: the
+    sum of their signed solid angles over 4π (Van Oosterom and Strackee's formula)."""
+    out = np.empty(len(points))
+    per_chunk = max(1, 1_000_000 // max(len(corners), 1))
+    for start in range(0, len(points), per_chunk):
+        p = points[start:start + per_chunk]
+        a = corners[None, :, 0, :] - p[:, None, :]
+        b = corners[None, :, 1, :] - p[:, None, :]
+        c = corners[None, :, 2, :] - p[:, None, :]
+        la, lb, lc = (np.linalg.norm(x, axis=2) for x in (a, b, c))
+        numerator = np.einsum("pfi,pfi->pf", a, np.cross(b, c))
+        denominator = (la * lb * lc + np.einsum("pfi,pfi->pf", a, b) * lc + np.einsum("pfi,pfi->pf", a, c) * lb
+                       + np.einsum("pfi,pfi->pf", b, c) * la)
+        out[start:start + per_chunk] = 2.0 * np.arctan2(numerator, denominator).sum(axis=1) / (4.0 * np.pi)
+    return out
+
+
+def convex_hull_mesh(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The convex hull of the points (scipy's Qhull) as a closed mesh wound outward: its
+    corner points and faces. Raises :class:`MeshError` when the points span no volume."""
+    from scipy.spatial import ConvexHull, QhullError
+
+    points = np.asarray(vertices, dtype=float).reshape(-1, 3)
+    if len(points) < 4:
+        raise MeshError("the convex hull is flat: fewer than four vertices span no volume")
+    centre = 0.5 * (points.min(axis=0) + points.max(axis=0))
+    try:
+        hull = ConvexHull(points - centre)
+    except (QhullError, ValueError):
+        raise MeshError("the convex hull is flat: the vertices lie in one plane (or on one line) and span "
+                        "no volume; use inertia: shell for a flat surface") from None
+    corner_ids = hull.vertices
+    renumber = np.full(len(points), -1, dtype=np.int64)
+    renumber[corner_ids] = np.arange(len(corner_ids))
+    faces = renumber[hull.simplices]
+    hull_points = points[corner_ids]
+    c = hull_points[faces] - centre
+    outward = np.einsum("ij,ij->i", np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0]), hull.equations[:, :3])
+    faces[outward < 0] = faces[outward < 0][:, ::-1]
+    return hull_points, faces
+
+
+def repair_mesh(vertices: np.ndarray, faces: np.ndarray) -> RepairedMesh:
+    """Close small holes (three or four boundary edges) with trimesh's ``fill_holes``, which
+    winds each new triangle to match its neighbours. Larger holes are left open (the caller's
+    checks report them). The vertices should be welded first."""
+    import trimesh
+
+    vertices, faces = _as_arrays(vertices, faces)
+    if mesh_defects(faces).boundary_edges == 0:
+        return RepairedMesh(vertices, faces, 0, 0.0)
+    mesh = trimesh.Trimesh(vertices=vertices, faces=faces, process=False, validate=False)
+    trimesh.repair.fill_holes(mesh)
+    repaired = np.asarray(mesh.faces, dtype=np.int64)
+    if len(repaired) < len(faces) or not np.array_equal(repaired[:len(faces)], faces):
+        raise MeshError("repair changed the existing faces")  # trimesh appends: never expected
+    added = repaired[len(faces):]
+    return RepairedMesh(vertices, repaired, len(added), surface_area(vertices, added))
+
+
+NOT_CLOSED_HINT = ("; for such a mesh choose inertia: convex (the solid convex hull), inertia: shell (mass on "
+                   "the surface), or repair: true (closes holes of three or four edges)")
+"""Added to an ``exact``-mode refusal: the other ways to give the mesh mass properties."""
+
+
+def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exact") -> MeshDistribution:
+    """Where ``mode`` puts the mass of the mesh, per unit density (see :class:`MeshDistribution`).
+    Raises :class:`MeshError` naming what is wrong and, in ``exact`` mode, the other modes."""
+    vertices, faces = _as_arrays(vertices, faces)
+    if mode not in MESH_INERTIA_MODES:
+        raise MeshError(f"unknown mesh inertia mode {mode!r}: use exact, convex or shell")
+    problem = arrays_problem(vertices, faces)
+    if problem is not None:
+        raise MeshError(problem)
+    if mode == "convex":
+        vertices, faces = convex_hull_mesh(vertices[np.unique(faces)])
+    elif mode == "shell":
+        area, centroid, inertia = _integrate(vertices, faces, _surface_moments)
+        if not area > 0:
+            raise MeshError("has no area (every triangle is degenerate)")
+        return MeshDistribution(mode, area, centroid, inertia, vertices, faces)
+    problem, notes = closed_mesh_check(vertices, faces)
+    if problem is not None:
+        raise MeshError(problem + (NOT_CLOSED_HINT if mode == "exact" else ""))
+    volume, centroid, inertia = _integrate(vertices, faces, _volume_moments)
+    return MeshDistribution(mode, volume, centroid, inertia, vertices, faces, notes)
+
+
+def mesh_mass_properties(vertices: np.ndarray, faces: np.ndarray, mode: str = "exact", *,
+                         mass: float | None = None, density: float | None = None) -> MeshMassProperties:
+    """Mass properties of a mesh (vertices in length unit L, faces wound outward) in ``mode``
+    ``exact`` (the enclosed solid; the mesh must be closed), ``convex`` (the solid convex hull)
+    or ``shell`` (mass spread evenly over the surface, as MuJoCo's ``shellinertia``). Give
+    either ``mass`` (M) or ``density``: mass per volume (M/L³) for ``exact`` and ``convex``,
+    mass per area (M/L²) for ``shell``, as MuJoCo reads a geom's density. Everything in the
+    mesh's frame; the inertia about the centre of mass (M·L²). Raises :class:`MeshError`."""
+    if (mass is None) == (density is None):
+        raise MeshError("give either a mass or a density")
+    distribution = mesh_distribution(vertices, faces, mode)
+    if mass is None:
+        mass = float(density) * distribution.measure
+    mass = float(mass)
+    inertia = distribution.inertia_per_density * (mass / distribution.measure)
+    area = distribution.measure if mode == "shell" else surface_area(distribution.vertices, distribution.faces)
+    return MeshMassProperties(mode, mass, distribution.centroid, 0.5 * (inertia + inertia.T),
+                              None if mode == "shell" else distribution.measure, area, distribution.notes)

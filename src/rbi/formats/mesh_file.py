@@ -1,62 +1,131 @@
-"""Mesh files a spec names (``shape: mesh``): read with trimesh, checked, handed to the core as
-plain arrays.
+"""Mesh files a spec names (``shape: mesh``) or a robot file points to: read, welded, checked,
+and handed to the core as plain arrays.
 
-trimesh is used only to parse the file formats (binary and ASCII STL, OBJ, PLY); the volume
-integration and every check are rbi's own (:mod:`rbi.core.mesh`). The file is read into memory
-by rbi (at most :data:`MAX_MESH_BYTES`) and parsed from those bytes, so a hostile OBJ cannot
-make trimesh open other files (``mtllib``), and no message ever repeats what the file holds:
-only its name as written in the spec, counts and vertex numbers.
+STL (binary and ASCII) and OBJ are parsed here, in bounded memory and with the formats' own
+rules (OBJ numbers vertices from 1, and a negative number counts back from the last vertex read
+before the face); PLY is parsed by trimesh after its header's counts are checked against the
+file's size. The volume integration and every check are rbi's own (:mod:`rbi.core.mesh`). The
+file is read into memory by rbi (at most :data:`MAX_MESH_BYTES`) and parsed from those bytes, so
+a hostile OBJ cannot make a parser open other files (``mtllib``), and no message ever repeats
+what the file holds: only its name as written by the caller, counts, line and vertex numbers.
+
+A mesh of more than :data:`MAX_MESH_TRIANGLES` triangles is refused before its triangles are
+built: reading, welding and integrating one at that limit peaks near 1 GB.
 """
 
 from __future__ import annotations
 
-import io
+import re
+from array import array
+from collections import OrderedDict
 from pathlib import Path
 from typing import NamedTuple
 
 import numpy as np
 
-from rbi.core.mesh import MeshVolumeProperties, enclosed_volume_properties, weld_vertices, mesh_problem
+from rbi.core.mesh import MeshDistribution, arrays_problem, mesh_distribution, repair_mesh, weld_vertices
 
 MAX_MESH_BYTES = 256 * 2 ** 20
-"""Largest mesh file rbi reads (256 MiB: about 5 million triangles of binary STL)."""
+"""Largest mesh file rbi reads (256 MiB)."""
+
+MAX_MESH_TRIANGLES = 2_000_000
+"""Most triangles rbi reads from one mesh (a 95 MiB binary STL; an OBJ polygon counts as the
+triangles it splits into). Far above what mass properties need: decimate a finer mesh first."""
 
 MESH_FILE_TYPES = {".stl": "stl", ".obj": "obj", ".ply": "ply"}
-"""File extensions rbi reads as meshes, and trimesh's name for each format."""
+"""File extensions rbi reads as meshes, and the format of each."""
 
 
 class MeshSolid(NamedTuple):
-    """A checked mesh file: its merged vertices (mesh units) and faces, and the enclosed
-    solid's volume properties per unit density, in mesh units and axes."""
+    """A checked mesh file, ready to place: ``distribution`` says where its mass goes per unit
+    density in mode ``mode`` (mesh units and axes); ``vertices`` and ``faces`` are the mesh
+    integrated (welded; repaired when asked; the hull's in mode ``convex``); ``added_faces``
+    and ``added_area`` (mesh units²) what repair added (0 when it added nothing)."""
 
+    mode: str
+    distribution: MeshDistribution
     vertices: np.ndarray
     faces: np.ndarray
-    properties: MeshVolumeProperties
+    added_faces: int
+    added_area: float
 
 
-_CACHE: dict[tuple, MeshSolid] = {}
+_CACHE: OrderedDict[tuple, object] = OrderedDict()
 """Meshes already read in this process, keyed by resolved path, size and modification time
-(a sweep translates the same spec many times)."""
+(a sweep translates the same spec many times); the last few only, so memory stays bounded."""
+
+_CACHE_ENTRIES = 8
 
 
-def read_mesh_solid(path: Path) -> MeshSolid:
-    """Read, check and integrate the mesh at ``path``. Raises ``ValueError`` with a message
-    that names what is wrong (never the file's content); the caller adds file and part."""
-    file_type = MESH_FILE_TYPES.get(path.suffix.lower())
-    if file_type is None:
+def _cached(key: tuple, make):
+    if key in _CACHE:
+        _CACHE.move_to_end(key)
+        return _CACHE[key]
+    value = make()
+    _CACHE[key] = value
+    while len(_CACHE) > _CACHE_ENTRIES:
+        _CACHE.popitem(last=False)
+    return value
+
+
+def read_mesh_solid(path: Path, mode: str = "exact", repair: bool = False) -> MeshSolid:
+    """Read, weld, optionally repair, check and integrate the mesh at ``path`` in ``mode``
+    (``exact``, ``convex`` or ``shell``; see :mod:`rbi.core.mesh`). Raises ``ValueError``
+    with a message that names what is wrong (never the file's content); the caller adds file
+    and part."""
+    key = _file_key(path)
+
+    def make() -> MeshSolid:
+        vertices, faces = read_mesh_arrays(path)
+        added_faces, added_area = 0, 0.0
+        if repair:
+            repaired = repair_mesh(vertices, faces)
+            vertices, faces = repaired.vertices, repaired.faces
+            added_faces, added_area = repaired.added_faces, repaired.added_area
+        try:
+            distribution = mesh_distribution(vertices, faces, mode)
+        except ValueError as exc:
+            prefix = "after repair, " if added_faces else ""
+            raise ValueError(f"mesh {prefix}{exc}") from None
+        return MeshSolid(mode, distribution, distribution.vertices, distribution.faces, added_faces, added_area)
+
+    return _cached(key + (mode, bool(repair)), make)
+
+
+def read_mesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
+    """The welded vertices (N, 3) and faces (F, 3) of the mesh file at ``path``, checked to be
+    usable arrays (triangles, indices in range, finite coordinates) but not yet for closure."""
+    key = _file_key(path)
+    file_type = MESH_FILE_TYPES[path.suffix.lower()]
+
+    def make():
+        data = _read_bytes(path)
+        vertices, faces = _PARSERS[file_type](data)
+        del data
+        problem = arrays_problem(vertices, faces)
+        if problem is not None:
+            raise ValueError(f"mesh {problem}")
+        return weld_vertices(vertices, faces)
+
+    return _cached(key, make)
+
+
+def _file_key(path: Path) -> tuple:
+    if path.suffix.lower() not in MESH_FILE_TYPES:
         raise ValueError(f"unknown mesh format {path.suffix or '(no extension)'!r}: "
                          f"use one of {', '.join(MESH_FILE_TYPES)}")
     try:
         status = path.stat()
     except OSError as exc:
         raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
-    key = (str(path.resolve()), status.st_size, status.st_mtime_ns)
-    cached = _CACHE.get(key)
-    if cached is not None:
-        return cached
-    if status.st_size > MAX_MESH_BYTES:
-        raise ValueError(f"file too large for a mesh ({status.st_size} bytes; at most {MAX_MESH_BYTES})")
+    return (str(path.resolve()), status.st_size, status.st_mtime_ns)
+
+
+def _read_bytes(path: Path) -> bytes:
     try:
+        size = path.stat().st_size
+        if size > MAX_MESH_BYTES:
+            raise ValueError(f"file too large for a mesh ({size} bytes; at most {MAX_MESH_BYTES})")
         with open(path, "rb") as stream:
             data = stream.read(MAX_MESH_BYTES + 1)
     except OSError as exc:
@@ -65,40 +134,182 @@ def read_mesh_solid(path: Path) -> MeshSolid:
         raise ValueError(f"file too large for a mesh (more than {MAX_MESH_BYTES} bytes)")
     if not data.strip():
         raise ValueError("file is empty")
-    vertices, faces = _parse(data, file_type)
-    problem = _shape_problem(vertices, faces)
-    if problem is None:
-        vertices, faces = weld_vertices(vertices, faces)
-        problem = mesh_problem(vertices, faces)
-    if problem is not None:
-        raise ValueError(f"mesh {problem}")
-    solid = MeshSolid(vertices, faces, enclosed_volume_properties(vertices, faces))
-    _CACHE[key] = solid
-    return solid
+    return data
 
 
-def _parse(data: bytes, file_type: str) -> tuple[np.ndarray, np.ndarray]:
-    """Vertices and faces of mesh ``data`` as trimesh reads them, without its processing
-    (no merging, no repairs: what the file says is what gets checked, after rbi's own
-    welding of coincident vertices)."""
+def _too_many(count: int | None) -> ValueError:
+    have = f"more than {MAX_MESH_TRIANGLES}" if count is None else str(count)
+    return ValueError(f"mesh has {have} triangles; rbi reads at most {MAX_MESH_TRIANGLES} "
+                      f"(decimate it, e.g. with MeshLab's quadric edge collapse: mass properties need "
+                      f"far fewer)")
+
+
+# --- STL --------------------------------------------------------------------------------------
+
+_BINARY_STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attribute", "<u2")])
+
+
+def _parse_stl(data: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """Binary STL when the size matches the triangle count in its header (80-byte header,
+    uint32 count, 50 bytes a triangle), else ASCII STL (``solid`` ... ``endsolid``)."""
+    count = int.from_bytes(data[80:84], "little") if len(data) >= 84 else -1
+    if count >= 0 and len(data) == 84 + 50 * count:
+        if count > MAX_MESH_TRIANGLES:
+            raise _too_many(count)
+        records = np.frombuffer(data, dtype=_BINARY_STL_RECORD, count=count, offset=84)
+        corners = records["corners"].reshape(-1, 3)  # float32, a view into data: welded in float32
+        return corners, np.arange(3 * count, dtype=np.int64).reshape(count, 3)
+    if data.lstrip()[:5].lower() == b"solid":
+        return _parse_ascii_stl(data)
+    if count >= 0:
+        raise ValueError(f"cannot be read as STL (not ASCII, and as binary its header promises {count} "
+                         f"triangles: {84 + 50 * count} bytes, but the file has {len(data)})")
+    raise ValueError("cannot be read as STL (damaged, or not a mesh file)")
+
+
+_ASCII_VERTEX = re.compile(rb"\bvertex[ \t]+(\S+)[ \t]+(\S+)[ \t]+(\S+)", re.IGNORECASE)
+_ASCII_FACET = re.compile(rb"\bendfacet\b", re.IGNORECASE)
+
+
+def _parse_ascii_stl(data: bytes) -> tuple[np.ndarray, np.ndarray]:
+    count = sum(1 for _ in _ASCII_FACET.finditer(data))
+    if count > MAX_MESH_TRIANGLES:
+        raise _too_many(count)
+    batches, batch = [], []
+    for match in _ASCII_VERTEX.finditer(data):
+        batch.append(match.groups())
+        if len(batch) >= 30_000:
+            batches.append(_numbers(batch))
+            batch = []
+    if batch:
+        batches.append(_numbers(batch))
+    corners = np.concatenate(batches) if batches else np.zeros((0, 3))
+    if len(corners) % 3:
+        raise ValueError("cannot be read as STL (a facet does not have three vertices)")
+    if len(corners) // 3 > MAX_MESH_TRIANGLES:
+        raise _too_many(len(corners) // 3)
+    return corners, np.arange(len(corners), dtype=np.int64).reshape(-1, 3)
+
+
+def _numbers(rows: list) -> np.ndarray:
+    try:
+        return np.array(rows, dtype=bytes).astype(float)
+    except ValueError:
+        raise ValueError("cannot be read as STL (a vertex coordinate is not a number)") from None
+
+
+# --- OBJ --------------------------------------------------------------------------------------
+
+_LINES_PER_BLOCK = 1 << 22
+
+
+def _blocks(data: bytes):
+    """The file's lines in blocks of about 4 MiB, so no list of every line is ever built."""
+    start = 0
+    while start < len(data):
+        end = data.find(b"\n", start + _LINES_PER_BLOCK)
+        end = len(data) if end < 0 else end + 1
+        yield data[start:end].replace(b"\\\r\n", b" ").replace(b"\\\n", b" ").split(b"\n")
+        start = end
+
+
+def _parse_obj(data: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices (``v x y z``) and faces (``f a b c ...``, each corner ``i``, ``i/t``, ``i//n`` or
+    ``i/t/n``) of an OBJ file. Vertices are numbered from 1 in the order they appear; a
+    negative number counts back from the last vertex read before the face (``-1`` is that
+    vertex). A polygon is split into a fan of triangles from its first corner. Everything else
+    (normals, texture coordinates, groups, materials, lines) is ignored."""
+    coordinates = array("d")
+    corners = array("q")
+    face_lines = array("q")
+    line_number = 0
+    for lines in _blocks(data):
+        for line in lines:
+            line_number += 1
+            if line[:2] == b"v " or line[:2] == b"v\t":
+                fields = line.split()
+                if len(fields) < 4:
+                    raise ValueError(f"cannot be read as OBJ (line {line_number}: a vertex needs three coordinates)")
+                try:
+                    coordinates.extend((float(fields[1]), float(fields[2]), float(fields[3])))
+                except ValueError:
+                    raise ValueError(f"cannot be read as OBJ (line {line_number}: a vertex coordinate is "
+                                     f"not a number)") from None
+            elif line[:2] == b"f " or line[:2] == b"f\t":
+                _add_face(line.split()[1:], len(coordinates) // 3, line_number, corners, face_lines)
+                if len(face_lines) > MAX_MESH_TRIANGLES:
+                    raise _too_many(None)
+    vertices = np.frombuffer(coordinates, dtype=float).reshape(-1, 3) if coordinates else np.zeros((0, 3))
+    faces = np.frombuffer(corners, dtype=np.int64).reshape(-1, 3) if corners else np.zeros((0, 3), dtype=np.int64)
+    if len(faces) and faces.max() >= len(vertices):
+        face = int(np.flatnonzero((faces >= len(vertices)).any(axis=1))[0])
+        raise ValueError(f"mesh face on line {face_lines[face]} names vertex {int(faces[face].max()) + 1}, but the "
+                         f"file has {len(vertices)} vertices (numbered from 1)")
+    return vertices.copy(), faces.copy()
+
+
+def _add_face(fields: list, n_vertices: int, line_number: int, corners: array, face_lines: array) -> None:
+    """Append the triangles of one face line. A "face" of one or two corners (some exporters
+    write edges so) has no area and adds nothing, but its numbers are still checked."""
+    indices = []
+    for field in fields:
+        try:
+            number = int(field.split(b"/", 1)[0])
+        except ValueError:
+            raise ValueError(f"cannot be read as OBJ (line {line_number}: a face's vertex number is not a "
+                             f"whole number)") from None
+        if number > 0:
+            indices.append(number - 1)
+        elif number < 0:
+            if -number > n_vertices:
+                raise ValueError(f"mesh face on line {line_number} counts back {-number} vertices, but only "
+                                 f"{n_vertices} were read before it (-1 is the last vertex read)")
+            indices.append(n_vertices + number)
+        else:
+            raise ValueError(f"mesh face on line {line_number} names vertex 0: OBJ numbers vertices from 1 "
+                             f"(negative numbers count back from the last vertex read)")
+    if not indices:
+        raise ValueError(f"cannot be read as OBJ (line {line_number}: a face names no vertex)")
+    first = indices[0]
+    for second, third in zip(indices[1:-1], indices[2:]):
+        corners.extend((first, second, third))
+        face_lines.append(line_number)
+
+
+# --- PLY --------------------------------------------------------------------------------------
+
+_PLY_ELEMENT = re.compile(rb"^element[ \t]+(\w+)[ \t]+(\d+)", re.MULTILINE)
+
+
+def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """PLY through trimesh (its parser, without any processing), once the header's element
+    counts are known to fit in the file: a hostile header cannot make it allocate more than
+    the file could hold."""
+    import io
+
+    end = data.find(b"end_header")
+    if not data.startswith(b"ply") or end < 0:
+        raise ValueError("cannot be read as PLY (no `ply` ... `end_header` header)")
+    counts = {name.decode("ascii", "replace"): int(number) for name, number in _PLY_ELEMENT.findall(data[:end])}
+    body = len(data) - end
+    if counts.get("face", 0) > MAX_MESH_TRIANGLES:
+        raise _too_many(counts["face"])
+    if counts.get("vertex", 0) * 3 + counts.get("face", 0) * 4 > body:
+        raise ValueError(f"cannot be read as PLY (the header promises {counts.get('vertex', 0)} vertices and "
+                         f"{counts.get('face', 0)} faces, more than the file's {body} bytes after it hold)")
     import trimesh
 
     try:
-        # from bytes, without a resolver: trimesh cannot open any other file (an OBJ's mtllib)
-        extra = {"skip_materials": True} if file_type == "obj" else {}
-        mesh = trimesh.load(file_obj=io.BytesIO(data), file_type=file_type, force="mesh", process=False, **extra)
+        mesh = trimesh.load(file_obj=io.BytesIO(data), file_type="ply", force="mesh", process=False)
         vertices = np.asarray(mesh.vertices, dtype=float)
         faces = np.asarray(mesh.faces, dtype=np.int64)
     except Exception:  # noqa: BLE001 - any parser failure on untrusted bytes is the same user error
-        raise ValueError(f"cannot be read as {file_type.upper()} (damaged, or not a mesh file)") from None
+        raise ValueError("cannot be read as PLY (damaged, or not a mesh file)") from None
+    if vertices.ndim != 2 or vertices.shape[1:] != (3,) or faces.ndim != 2 or faces.shape[1:] != (3,):
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    if len(faces) > MAX_MESH_TRIANGLES:
+        raise _too_many(len(faces))
     return vertices, faces
 
 
-def _shape_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
-    """Problems to report before merging vertices (which needs well-formed arrays)."""
-    if vertices.ndim != 2 or vertices.shape[1] != 3 or faces.ndim != 2 or faces.shape[1] != 3 or faces.shape[0] == 0:
-        return "holds no triangles"
-    out_of_range = faces.min() < 0 or faces.max() >= vertices.shape[0]
-    if out_of_range or not np.all(np.isfinite(vertices)):
-        return mesh_problem(vertices, faces)  # names the bad vertex or index
-    return None
+_PARSERS = {"stl": _parse_stl, "obj": _parse_obj, "ply": _parse_ply}

@@ -155,7 +155,8 @@ def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     from rbi.formats.paths import spec_relative_file
     from rbi.spec.translate import rotation_matrix
 
-    solid = read_mesh_solid(spec_relative_file(spec_path, part.file, f"file: {part.file}"))  # cached: read once
+    solid = read_mesh_solid(spec_relative_file(spec_path, part.file, f"file: {part.file}"),
+                            part.inertia, part.repair)  # cached: read once; convex: the hull is drawn
     if len(solid.faces) > MAX_DRAWN_TRIANGLES:
         return None
     R = rotation_matrix(part.rotation)

@@ -356,8 +356,21 @@ class MeshPart(_Solid):
     scale: Positive = Field(1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m).")
     position: Vector3 = Field([0.0, 0.0, 0.0], description="Where the mesh's own origin goes, body frame.")
     rotation: Rotation | None = Field(None, description="How the mesh's axes are turned into body axes (about its origin).")
+    inertia: Literal["exact", "convex", "shell"] = Field("exact", description=(
+        "Where the mass goes, as MuJoCo names it: exact = the solid the closed mesh encloses; convex = "
+        "the solid convex hull of its vertices; shell = spread evenly over the surface (give mass, not density)."))
+    repair: Flag = Field(False, description=(
+        "Close holes of three or four edges (trimesh's fill_holes) before integrating; the area added is reported."))
 
     _enclosed_volume: float | None = PrivateAttr(None)  # L³ in the spec's units, set when the file is read
+    _repair_added: tuple[int, float] = PrivateAttr((0, 0.0))  # triangles and area (L²) repair added
+
+    @model_validator(mode="after")
+    def _shell_takes_a_mass(self):
+        if self.inertia == "shell" and self.density is not None:
+            raise ValueError("density: with inertia: shell the mass lies on the surface, which has no volume "
+                             "for a density to fill: give mass instead")
+        return self
 
 
 SHAPE_MODELS: dict[str, type[_Part]] = {

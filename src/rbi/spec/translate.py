@@ -140,9 +140,10 @@ def capsule_element(part: models.CapsulePart, units: models.Units) -> shapes.Mas
 
 
 def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> shapes.MassElement:
-    """The solid a mesh file encloses, placed in the body: ``scale``, then ``rotation`` about
-    the mesh origin, then the origin moved to ``position``. Raises ValueError naming the file
-    (as written in the spec) and what is wrong with it."""
+    """The mesh's mass in the body, as ``part.inertia`` places it (the enclosed solid, the convex
+    hull's solid, or the surface): ``scale``, then ``rotation`` about the mesh origin, then the
+    origin moved to ``position``. Raises ValueError naming the file (as written in the spec)
+    and what is wrong with it."""
     from rbi.formats.mesh_file import read_mesh_solid
     from rbi.formats.paths import spec_relative_file
 
@@ -151,17 +152,18 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     except InputError as exc:
         raise ValueError(str(exc)) from None
     try:
-        solid = read_mesh_solid(file)
+        solid = read_mesh_solid(file, part.inertia, part.repair)
     except ValueError as exc:
         raise ValueError(f"file: {part.file}: {exc}") from None
-    properties = solid.properties
+    distribution = solid.distribution
     scale = float(part.scale)
-    volume = properties.volume * scale ** 3
-    part._enclosed_volume = volume
-    mass = _solid_mass(part, volume, units)
-    # inertia per density scales as scale⁵, the density as mass / (volume·scale³)
-    inertia = properties.inertia_per_density * (mass / properties.volume * scale * scale)
-    com = properties.centroid * scale
+    measure = distribution.measure * scale ** (2 if part.inertia == "shell" else 3)  # area or volume
+    part._enclosed_volume = None if part.inertia == "shell" else measure
+    part._repair_added = (solid.added_faces, solid.added_area * scale * scale)
+    mass = _solid_mass(part, measure, units)
+    # inertia per density scales as scale⁵ (scale⁴ for a surface), the density as 1 / measure
+    inertia = distribution.inertia_per_density * (mass / distribution.measure * scale * scale)
+    com = distribution.centroid * scale
     R = rotation_matrix(part.rotation)
     if R is not None:
         com = R @ com
