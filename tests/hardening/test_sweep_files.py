@@ -29,7 +29,7 @@ from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
 BOLTED = BODIES / "top_bolted.yaml"
 ARGS = [BOLTED, "--spin", "150:250:24", "--duration", "0.1", "--workers", "1"]
 RUNS = 24
-MASS_ARGS = [BOLTED, "--mass-properties", "--vary", "parts.bolt.mass=uniform(0.01,0.03)", "--runs", "1000"]
+MASS_ARGS = [BOLTED, "--mass-properties", "--vary", "parts.bolt.mass=uniform(0.01,0.03)", "--runs", "500"]
 
 
 def rows_of(path):
@@ -178,6 +178,16 @@ def test_a_huge_sidecar_is_refused_by_its_size_without_reading_it(tmp_path, inte
     refused_unchanged(interrupted, "larger than")
 
 
+@pytest.mark.parametrize("where", ["after-the-rows", "whole-file"])
+def test_a_rows_file_with_gigabytes_and_no_newline_is_refused_without_reading_it(interrupted, where):
+    """A line is read at most 1 MiB at a time: rbi 2 read the whole file into memory."""
+    if where == "whole-file":
+        interrupted.write_bytes(b"")
+    with open(interrupted, "r+b") as handle:
+        handle.truncate(interrupted.stat().st_size + (8 << 30))  # sparse zeros, no newline
+    refused_unchanged(interrupted, "longer than")
+
+
 def test_a_sidecar_of_another_user_is_not_used(interrupted):
     if os.geteuid() != 0:
         pytest.skip("needs root to give a file to another user")
@@ -191,7 +201,7 @@ def test_a_sidecar_rbi_did_not_write_is_refused(interrupted, content):
     refused_unchanged(interrupted, "cannot resume")
 
 
-@pytest.mark.parametrize("plant", ["symlink", "fifo"])
+@pytest.mark.parametrize("plant", ["symlink", "fifo", "other-user"])
 def test_something_planted_at_the_lock_file_is_exit_2_and_followed_nowhere(tmp_path, plant):
     out = tmp_path / "s.csv"
     victim = tmp_path / "victim"
@@ -199,17 +209,32 @@ def test_something_planted_at_the_lock_file_is_exit_2_and_followed_nowhere(tmp_p
     lock = safe.beside(out, ".rbi-lock")
     if plant == "symlink":
         lock.symlink_to(victim)
-    else:
+    elif plant == "fifo":
         os.mkfifo(lock)
+    else:
+        if os.geteuid() != 0:
+            pytest.skip("needs root to give a file to another user")
+        lock.write_bytes(b"")
+        os.chown(lock, 65534, 65534)
     refused_unchanged(out, "rbi-lock", resume=False)
 
 
-def test_a_planted_rows_folder_link_is_exit_2_and_nothing_is_written_through_it(tmp_path):
+@pytest.mark.parametrize("plant", ["symlink", "file", "other-user"])
+def test_something_planted_at_the_rows_folder_is_exit_2_and_nothing_is_written_through_it(tmp_path, plant):
     pytest.importorskip("pyarrow")
     out = tmp_path / "s.parquet"
     elsewhere = tmp_path / "elsewhere"
     elsewhere.mkdir()
-    store.rows_folder(out).symlink_to(elsewhere)
+    folder = store.rows_folder(out)
+    if plant == "symlink":
+        folder.symlink_to(elsewhere)
+    elif plant == "file":
+        folder.write_text("not a folder")
+    else:
+        if os.geteuid() != 0:
+            pytest.skip("needs root to give a folder to another user")
+        folder.mkdir()
+        os.chown(folder, 65534, 65534)
     refused_unchanged(out, "rbi-rows", resume=False)
     assert list(elsewhere.iterdir()) == []
 
@@ -465,12 +490,12 @@ def test_a_full_disk_mid_sweep_is_one_line_and_keeps_whole_chunks(tmp_path, monk
 
 @pytest.fixture
 def small_disk(tmp_path):
-    """A 96 KiB tmpfs (root only), grown afterwards with ``grow()``."""
+    """A 48 KiB tmpfs (root only), grown afterwards with ``grow()``."""
     if os.geteuid() != 0 or shutil.which("mount") is None:
         pytest.skip("needs root to mount a small file system")
     mount = tmp_path / "disk"
     mount.mkdir()
-    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=96k", "tmpfs", str(mount)],
+    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=48k", "tmpfs", str(mount)],
                       capture_output=True).returncode != 0:
         pytest.skip("cannot mount a tmpfs here")
     try:

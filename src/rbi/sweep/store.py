@@ -44,6 +44,8 @@ SETTINGS_LIMIT = 1 << 20
 """Largest settings sidecar rbi reads, in bytes (it writes a few hundred)."""
 PIECE_LIMIT = 256 << 20
 """Largest Parquet chunk file rbi reads back on --resume, in bytes."""
+LINE_LIMIT = 1 << 20
+"""Longest line of a CSV rows file rbi reads back on --resume, in bytes (a row is a few hundred)."""
 INT_COLUMNS = ("run", "steps")
 TEXT_COLUMNS = ("status",)
 OPTIONAL_WHEN_OK = ("precession_rate_deg_s",)
@@ -164,7 +166,7 @@ class SweepOutput:
             kept: list[list[Any]] = []
             good_end = 0
             with os.fdopen(os.dup(fd), "rb") as handle:
-                header = handle.readline()
+                header = _line(handle, what, 1)
                 if header == b"":  # killed between creating the file and writing its header
                     self._fd, fd = fd, -1
                     self._append(csv_bytes([self.columns]))
@@ -176,7 +178,7 @@ class SweepOutput:
                 fragment = b""
                 batch: list[list[str]] = []
                 line_number = 1
-                for line in handle:
+                while line := _line(handle, what, line_number + 1):
                     if not line.endswith(b"\n"):
                         fragment = line
                         break
@@ -424,6 +426,15 @@ def _cell(name: str, cell: Any, text: bool) -> Any:
     if name in INT_COLUMNS:
         return cell if type(cell) is int and cell >= 0 else _BAD
     return cell if type(cell) is float and math.isfinite(cell) else _BAD
+
+
+def _line(handle, what: str, number: int) -> bytes:
+    """The next line of a rows file (b"" at its end), at most :data:`LINE_LIMIT` bytes: a file
+    with no newline for gigabytes is refused, never read whole."""
+    line = handle.readline(LINE_LIMIT + 1)
+    if len(line) > LINE_LIMIT:
+        raise InputError(f"{what}: line {number} is longer than any line this sweep writes ({LINE_LIMIT:,} bytes)")
+    return line
 
 
 def _csv_line(line: bytes, what: str, number: int) -> list[str]:
