@@ -219,6 +219,21 @@ def test_repair_in_a_spec_gives_the_cube(tmp_path):
     np.testing.assert_allclose(out["inertia"], 6 / 12 * 8 * np.eye(3), rtol=1e-14, atol=1e-15)
 
 
+def test_rbi_parts_reports_the_area_repair_added_and_overlapping_pieces(tmp_path):
+    vertices, faces = box_mesh((2, 2, 2))
+    write_obj(tmp_path / "open.obj", vertices, faces[1:])
+    write_obj(tmp_path / "twice.obj", vertices, np.vstack([faces, faces]))
+    spec = tmp_path / "body.yaml"
+    spec.write_text("parts:\n  - {name: mended, shape: mesh, file: open.obj, mass: 1, repair: true, scale: 0.5}\n"
+                    "  - {name: doubled, shape: mesh, file: twice.obj, mass: 1}\n")
+    proc = run_rbi_inprocess("parts", spec)
+    assert proc.returncode == 0, proc.stderr
+    # one triangle of a face of side 2 · 0.5: half of 1 m², 1/12 of the surface
+    assert "parts[0] (mended): file: open.obj: repair added 1 triangle closing holes, 0.5 m² (8.33% of the surface)" \
+        in proc.stderr
+    assert "parts[1] (doubled): file: twice.obj: pieces of the mesh overlap" in proc.stderr
+
+
 def test_shell_and_convex_in_a_spec(tmp_path):
     vertices, faces = box_mesh((2, 2, 2))
     write_obj(tmp_path / "cube.obj", vertices, faces[1:])  # open: fine for both

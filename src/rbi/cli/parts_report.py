@@ -61,6 +61,11 @@ def parts_of(file: str):
         warning = density_warning(row, body, i)
         if warning:
             say(f"warning: {body.path}: {warning}")
+    if body.spec is not None:
+        from rbi.spec.translate import mesh_notes
+
+        for note in mesh_notes(body.spec):
+            say(f"warning: {body.path}: {note}")
     volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
     every_part_has_volume = all(row["volume"] is not None for row in rows)
     total = {"volume": volume if any(row["volume"] is not None for row in rows) else None,

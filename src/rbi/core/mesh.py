@@ -567,6 +567,10 @@ NOT_CLOSED_HINT = ("; for such a mesh choose inertia: convex (the solid convex h
 """Added to an ``exact``-mode refusal: the other ways to give the mesh mass properties."""
 
 
+WINDING_HINT = "; turn those faces around, or choose inertia: convex or inertia: shell (neither depends on the winding)"
+"""Added to an ``exact``-mode refusal for winding: the modes that read such a mesh as it is."""
+
+
 def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exact") -> MeshDistribution:
     """Where ``mode`` puts the mass of the mesh, per unit density (see :class:`MeshDistribution`).
     Raises :class:`MeshError` naming what is wrong and, in ``exact`` mode, the other modes."""
@@ -585,7 +589,11 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
         return MeshDistribution(mode, area, centroid, inertia, vertices, faces)
     problem, notes = closed_mesh_check(vertices, faces)
     if problem is not None:
-        raise MeshError(problem + (NOT_CLOSED_HINT if mode == "exact" else ""))
+        if mode == "exact" and problem.startswith(("not closed", "not a closed surface")):
+            problem += NOT_CLOSED_HINT
+        elif mode == "exact" and problem.startswith(("not consistently wound", "inside out")):
+            problem += WINDING_HINT
+        raise MeshError(problem)
     volume, centroid, inertia = _integrate(vertices, faces, _volume_moments)
     return MeshDistribution(mode, volume, centroid, inertia, vertices, faces, notes)
 

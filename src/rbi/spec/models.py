@@ -363,7 +363,7 @@ class MeshPart(_Solid):
         "Close holes of three or four edges (trimesh's fill_holes) before integrating; the area added is reported."))
 
     _enclosed_volume: float | None = PrivateAttr(None)  # L³ in the spec's units, set when the file is read
-    _repair_added: tuple[int, float] = PrivateAttr((0, 0.0))  # triangles and area (L²) repair added
+    _mesh_notes: tuple[str, ...] = PrivateAttr(())  # what repair added, overlapping pieces: set when read
 
     @model_validator(mode="after")
     def _shell_takes_a_mass(self):

@@ -159,7 +159,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     scale = float(part.scale)
     measure = distribution.measure * scale ** (2 if part.inertia == "shell" else 3)  # area or volume
     part._enclosed_volume = None if part.inertia == "shell" else measure
-    part._repair_added = (solid.added_faces, solid.added_area * scale * scale)
+    part._mesh_notes = _mesh_notes(part, solid, units)
     mass = _solid_mass(part, measure, units)
     # inertia per density scales as scale⁵ (scale⁴ for a surface), the density as 1 / measure
     inertia = distribution.inertia_per_density * (mass / distribution.measure * scale * scale)
@@ -169,6 +169,29 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
         com = R @ com
         inertia = re_express(inertia, R)
     return shapes.MassElement(mass, np.asarray(part.position, dtype=float) + com, 0.5 * (inertia + inertia.T))
+
+
+def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str, ...]:
+    """What a reader of the numbers should know about the mesh: the surface repair added, and
+    pieces that overlap (their shared space counted twice)."""
+    notes = []
+    if solid.added_faces:
+        from rbi.core.mesh import surface_area
+
+        scale = float(part.scale)
+        added = solid.added_area * scale * scale
+        share = solid.added_area / surface_area(solid.vertices, solid.faces)
+        notes.append(f"file: {part.file}: repair added {solid.added_faces} triangle{'s' * (solid.added_faces != 1)} "
+                     f"closing holes, {added:.6g} {units.length}² ({100 * share:.3g}% of the surface)")
+    notes.extend(f"file: {part.file}: {note}" for note in solid.distribution.notes)
+    return tuple(notes)
+
+
+def mesh_notes(spec: models.BodySpec) -> list[str]:
+    """One line per note on the spec's mesh parts, each naming the part (after translation:
+    the notes are set when a mesh is read)."""
+    return [f"{part_label(i, part)}: {note}" for i, part in enumerate(spec.parts)
+            if isinstance(part, models.MeshPart) for note in part._mesh_notes]
 
 
 def part_element(part, units: models.Units, spec_path: str) -> shapes.MassElement:
