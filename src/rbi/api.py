@@ -212,6 +212,22 @@ class Body:
         """(3,) the fixed point of a top, body frame, length unit; None for a free body."""
         return None if self._loaded.pivot is None else np.array(self._loaded.pivot, dtype=float)
 
+    @property
+    def spin_axis(self) -> np.ndarray:
+        """(3,) unit vector, body frame: the axis `simulate`'s ``spin`` turns about and whose
+        tilt and precession it reports, unless told otherwise — the spec's ``spin_axis``, else
+        the body's symmetry axis (exactly two equal principal moments about the pivot, or about
+        the centre of mass of a free body), pointing from the pivot towards the centre of mass
+        (or with its largest component positive), else body z."""
+        from rbi.core.inertia import inertia_about
+        from rbi.core.spin_axis import default_spin_axis, unit_direction
+
+        loaded = self._loaded
+        if loaded.spin_axis is not None:
+            return unit_direction(loaded.spin_axis)
+        fixed = loaded.props.com if loaded.pivot is None else np.asarray(loaded.pivot, dtype=float)
+        return default_spin_axis(inertia_about(loaded.props, fixed), np.asarray(loaded.props.com) - fixed)
+
     def point(self, about: Point = "com") -> np.ndarray:
         """The reference point ``about`` as (3,) body coordinates, length unit.
 
@@ -428,16 +444,18 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
              tilt_deg: float = 0.0, tilt_axis: str = "y", duration: float = 4.0, samples: int = 481,
              gravity: float | None = None, method: str = "default", rtol: float | None = None,
              max_steps: int | None = None, error_estimate: bool = True, check_budget: bool = True,
-             progress: Callable[[float], None] | None = None) -> Trajectory:
+             progress: Callable[[float], None] | None = None,
+             spin_axis: str | Sequence[float] | None = None) -> Trajectory:
     """Simulate the body: a heavy top on its pivot (a spec with ``pivot``) or a torque-free body
     about its centre of mass — the run ``rbi simulate`` makes with the same settings.
 
     Args:
         body: the `Body`.
-        spin: initial spin about the body z axis, rad/s (ω = [0, 0, spin]).
+        spin: initial spin about the spin axis, rad/s (ω = spin × the unit spin axis).
         omega: initial angular velocity (3,), body axes, rad/s (instead of ``spin``).
-        tilt_deg: the body is turned at t = 0 by this angle (degrees) about the world axis
-            ``tilt_axis`` (``"x"`` or ``"y"``).
+        tilt_deg: the nudge: the body is turned at t = 0 by this angle (degrees) about the
+            world axis ``tilt_axis`` (``"x"`` or ``"y"``). The tilt the trajectory reports is
+            the angle of the spin axis from the upward vertical.
         duration: simulated time, s.
         samples: samples, equally spaced from t = 0 to ``duration`` (1: only the end).
         gravity: gravity's magnitude in m/s² (SI whatever the spec's units); 0 switches it
@@ -450,6 +468,9 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
         check_budget: refuse a run estimated to exceed ``max_steps`` before it starts (the
             budget stops it in any case).
         progress: called now and then with the fraction done (0…1).
+        spin_axis: the body-frame axis of ``spin`` and of the reported tilt and precession:
+            ``"x"``, ``"y"``, ``"z"`` or a direction (3,); None for the spec's ``spin_axis``,
+            else `Body.spin_axis`'s default (the symmetry axis, else z).
 
     Returns:
         The `Trajectory`.
@@ -469,7 +490,7 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
     check_samples(samples)
     prepared = prepare_run(body._loaded, spin=spin, omega=omega, tilt=tilt_deg, tilt_axis=tilt_axis,
                            gravity=gravity, duration=duration, method=method, rtol=rtol, max_steps=max_steps,
-                           yes=not check_budget)
+                           yes=not check_budget, spin_axis=spin_axis)
     run = simulate_run(prepared, samples, error_estimate=error_estimate, progress=progress)
     columns = run.columns
     return Trajectory(t=columns["t"], q=run.trajectory.q, omega=run.trajectory.omega,
@@ -477,18 +498,26 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
                       energy=columns["energy"], summary=run.summary)
 
 
+def _spin_axis_text(axis) -> str | None:
+    """A spin axis as `sweep`'s settings spell it: a name, or ``"X,Y,Z"``."""
+    if axis is None or isinstance(axis, str):
+        return axis
+    return ",".join(repr(float(c)) for c in axis)
+
+
 def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
           tilt: float | str | Sequence[float] | None = None, vary: dict[str, Any] | Sequence[str] | None = None,
           runs: int = 1, seed: int = 0, duration: float = 4.0, samples: int = 481, rtol: float = 1e-12,
           gravity: float | None = None, tilt_axis: str = "y", max_steps: int | None = None,
-          workers: int | None = None, mass_properties: bool = False, check_budget: bool = True) -> list[dict]:
+          workers: int | None = None, mass_properties: bool = False, check_budget: bool = True,
+          spin_axis: str | Sequence[float] | None = None) -> list[dict]:
     """Many simulations of one body — a grid over spin, tilt and numbers of the spec, or Monte
     Carlo draws — as ``rbi sweep`` runs them (on every core). One failed run never stops the
     others: its row says why in ``status``.
 
     Args:
         body: the `Body` (its spec is varied; files it names are read beside its path).
-        spin: initial spin about the body z axis, rad/s: one value, ``(start, stop, count)`` or
+        spin: initial spin about the spin axis, rad/s: one value, ``(start, stop, count)`` or
             the text ``"START:STOP:COUNT"``; None for 0.
         tilt: initial tilt, degrees, given the same way; None for 0.
         vary: numbers of the spec to vary: ``{"parts.bolt.mass": (0.01, 0.03, 5)}`` (a grid),
@@ -496,7 +525,8 @@ def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
             (draws, with ``runs``); or a list of ``"PATH=RANGE"`` texts as ``--vary`` takes.
         runs: Monte Carlo draws of every ``normal``/``uniform`` variation per grid point.
         seed: seed of the draws (same seed, same rows).
-        duration, samples, rtol, gravity, tilt_axis, max_steps: as `simulate` (per run).
+        duration, samples, rtol, gravity, tilt_axis, max_steps, spin_axis: as `simulate`
+            (per run; one spin axis for every run, the nominal body's unless given).
         workers: cores to use (None: all).
         mass_properties: simulate nothing; each row gives the mass properties (mass, centre of
             mass, principal moments, principal-axis tilts) at the varied values.
@@ -521,7 +551,8 @@ def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
     settings = SweepSettings(spin=_range_text(spin, "--spin"), tilt=_range_text(tilt, "--tilt"),
                              vary=_vary_texts(vary), runs=runs, seed=seed, duration=duration, samples=samples,
                              rtol=rtol, gravity=gravity, tilt_axis=tilt_axis, max_steps=max_steps, workers=workers,
-                             mass_properties=mass_properties, yes=not check_budget)
+                             mass_properties=mass_properties, yes=not check_budget,
+                             spin_axis=_spin_axis_text(spin_axis))
     check_settings(settings)
     check_mass_properties(settings)
     study = Study(body.path, body._raw, settings)
@@ -552,7 +583,7 @@ def audit(robot_file: str | os.PathLike, *, package_paths: dict[str, str] | Sequ
         allow_outside_paths: let the file name meshes and includes outside its folder.
 
     Returns:
-        An :class:`AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``,
+        An `AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``,
         ``.flags``), ``.total``, ``.notes``, ``.exit_code`` (0, or 1 when a link has an
         error-level flag) and ``.as_dict()`` (what ``rbi audit --format json`` prints).
 

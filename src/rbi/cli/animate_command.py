@@ -7,17 +7,19 @@ from typing import Annotated, Optional
 import typer
 
 from rbi.cli.options import SpecFile
+from rbi.cli.simulate_command import SpinAxisOption
 from rbi.spec.errors import InputError
 
 
 OutOption = Annotated[str, typer.Option("--out", "-o", metavar="FILE.html|FILE.gif",
                                         help="The animation: .html (3D, plays offline in a browser) or .gif.")]
 SpinOption = Annotated[Optional[float], typer.Option("--spin", "-s", metavar="W",
-                                                     help="Spin about the body z axis, rad/s.")]
+                                                     help="Initial spin about the spin axis, rad/s.")]
 OmegaOption = Annotated[Optional[str], typer.Option("--omega", "-w", metavar="WX,WY,WZ",
                                                     help="Initial angular velocity in body axes, rad/s.")]
-TiltOption = Annotated[float, typer.Option("--tilt", metavar="DEG", help="Initial tilt, degrees.")]
-TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y", help="World axis of the tilt.")]
+TiltOption = Annotated[float, typer.Option("--tilt", metavar="DEG",
+                                           help="Nudge at t=0: turn the body DEG degrees about --tilt-axis.")]
+TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y", help="World axis of the nudge.")]
 GravityOption = Annotated[Optional[float], typer.Option("--gravity", "-g", metavar="G",
                                                         help="Gravity in m/s² (default 9.81).")]
 DurationOption = Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")]
@@ -34,11 +36,11 @@ FpsOption = Annotated[int, typer.Option("--fps", metavar="N", help="Frames per s
 def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: OmegaOption = None, tilt: TiltOption = 0.0,
             tilt_axis: TiltAxisOption = "y", gravity: GravityOption = None, duration: DurationOption = 4.0,
             rtol: RtolOption = None, max_steps: MaxStepsOption = None, yes: YesOption = False,
-            speed: SpeedOption = 1.0, fps: FpsOption = 25) -> None:
+            speed: SpeedOption = 1.0, fps: FpsOption = 25, spin_axis: SpinAxisOption = None) -> None:
     """Animate the body's motion, simulated as `rbi simulate` does.
 
     The HTML page draws the parts as solids, the pivot and the ground, and the path of the tip
-    of the symmetry axis (or of the largest-moment axis); it plays in real time with
+    of the spin axis (see --spin-axis); it plays in real time with
     play/pause, a speed control and a time slider. A GIF shows the same view as frames (it
     needs matplotlib and pillow: pip install '.[plot]').
 
@@ -61,7 +63,7 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
     target = output_target(out, "--out", ("html", "gif"), inputs=[file])
     gif_frames = _gif_frames(duration, fps) if target.format == "gif" else 0
     prepared = prepare_run(load_body(file), spin=spin, omega=omega, tilt=tilt, tilt_axis=tilt_axis, gravity=gravity,
-                           duration=duration, rtol=rtol, max_steps=max_steps, yes=yes)
+                           duration=duration, rtol=rtol, max_steps=max_steps, yes=yes, spin_axis=spin_axis)
     data, run, tilts = animation(prepared, gif_frames)
     if target.format == "html":
         from rbi.viz.page import html_page
@@ -80,7 +82,7 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
             if progress is not None:
                 progress.close()
         shown = f"{frame_indices(run.t, fps).size} frames"
-    print(f"{out}: {shown} over {duration:g} s, largest tilt {float(tilts.max()):.3g}°")
+    print(f"{out}: {shown} over {duration:g} s, largest tilt of the spin axis {float(tilts.max()):.3g}°")
 
 
 def _gif_frames(duration: float, fps: int) -> int:

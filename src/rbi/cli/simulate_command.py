@@ -24,13 +24,20 @@ METHOD_HELP = ("default: compiled adaptive DOP853 (fast, tight); rk45: the seed 
                "form (free body; axisymmetric top with its centre of mass on the axis).")
 
 SpinOption = Annotated[Optional[float], typer.Option("--spin", "-s", metavar="W",
-                                                     help="Spin about the body z axis, rad/s (ω = [0, 0, W]).")]
+                                                     help="Initial spin about the spin axis (see --spin-axis), rad/s.")]
+SpinAxisOption = Annotated[Optional[str], typer.Option(
+    "--spin-axis", metavar="x|y|z|X,Y,Z",
+    help="The body-frame axis --spin turns about, whose tilt from vertical and precession are reported. "
+         "Default: the spec's spin_axis, else the body's symmetry axis (pointing from the pivot to the centre of "
+         "mass), else z.")]
 OmegaOption = Annotated[Optional[str], typer.Option("--omega", "-w", metavar="WX,WY,WZ",
                                                     help="Initial angular velocity in body axes, rad/s.")]
 TiltOption = Annotated[float, typer.Option("--tilt", metavar="DEG",
-                                           help="Initial tilt about the world y axis (see --tilt-axis), degrees.")]
+                                           help="Nudge at t=0: turn the body DEG degrees about the world y axis "
+                                                "(see --tilt-axis). The tilt reported is the spin axis's angle "
+                                                "from vertical.")]
 TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y",
-                                             help="World axis the initial tilt turns about.")]
+                                             help="World axis the nudge (--tilt) turns the body about.")]
 GravityOption = Annotated[Optional[float], typer.Option(
     "--gravity", "-g", metavar="G", help="Gravity's magnitude in m/s² (SI, whatever the spec's units); "
                                          "0 switches it off. Default 9.81.")]
@@ -55,7 +62,7 @@ MaxStepsOption = Annotated[Optional[int], typer.Option(
 YesOption = Annotated[bool, typer.Option("--yes", "-y", help="Run even when the run is estimated to exceed the "
                                                              "step budget (the budget still stops it).")]
 PlotOption = Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png|.svg|.pdf",
-                                                   help="Plot the path of the body z axis seen from above, tilt "
+                                                   help="Plot the path of the spin axis seen from above, its tilt "
                                                         "(a free body: each principal axis's turn), ω and energy "
                                                         "drift against time (needs matplotlib: pip install '.[plot]' "
                                                         "from rbi's source folder, or pip install matplotlib).")]
@@ -65,12 +72,13 @@ def simulate(file: SpecFile, spin: SpinOption = None, omega: OmegaOption = None,
              tilt_axis: TiltAxisOption = "y", gravity: GravityOption = None, duration: DurationOption = 4.0,
              samples: SamplesOption = 481, out: OutOption = None, method: MethodOption = "default",
              rtol: RtolOption = None, error_estimate: ErrorEstimateOption = True, max_steps: MaxStepsOption = None,
-             yes: YesOption = False, plot: PlotOption = None, format: FormatOption = OutputFormat.table) -> None:
+             yes: YesOption = False, plot: PlotOption = None, spin_axis: SpinAxisOption = None,
+             format: FormatOption = OutputFormat.table) -> None:
     """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body.
 
     Prints the conserved quantities' drift, an error estimate and, for a top, whether it
-    sleeps; --out writes the trajectory (t, quaternion, ω, tilt, precession) as CSV, --plot
-    draws it.
+    sleeps; --out writes the trajectory (t, quaternion, ω, tilt and precession of the spin axis)
+    as CSV, --plot draws it.
 
     \b
     Examples:
@@ -93,7 +101,7 @@ def simulate(file: SpecFile, spin: SpinOption = None, omega: OmegaOption = None,
 
         require_matplotlib()
     settings = dict(spin=spin, omega=omega, tilt_deg=tilt, tilt_axis=tilt_axis, gravity=gravity, duration=duration,
-                    method=method, rtol=rtol, max_steps=max_steps, check_budget=not yes)
+                    method=method, rtol=rtol, max_steps=max_steps, check_budget=not yes, spin_axis=spin_axis)
     body, run = _run(file, settings, samples, error_estimate, format)
     trajectory_csv = run.to_csv() if out is not None or format == OutputFormat.csv else ""
     result = dict(run.summary)
@@ -140,7 +148,7 @@ def _plot(target, body, run, settings: dict) -> None:
     loaded = body._loaded
     omega0 = run.summary["initial"]["omega"]
     title = (f"{label(body.name or body.path)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, "
-             f"tilt {number(settings['tilt_deg'])}°")
+             f"nudge {number(settings['tilt_deg'])}°")
     free = {}
     if loaded.pivot is None:  # a free body: each principal axis's turn against the angular momentum
         from rbi.runs.prepare import scene_of
@@ -148,7 +156,8 @@ def _plot(target, body, run, settings: dict) -> None:
         scene = scene_of(loaded, settings["gravity"])
         free = {"principal_axes": scene.principal_axes, "inertia": scene.inertia}
     write_output(target, writer=lambda path: plot_trajectory(
-        shown, path, title=title, format=target.format, energy_unit=energy_unit(loaded), **free))
+        shown, path, title=title, format=target.format, energy_unit=energy_unit(loaded),
+        spin_axis=run.summary["spin_axis"], **free))
 
 
 def energy_unit(body) -> str:
@@ -198,7 +207,9 @@ def _table(body, result: dict):
         ("duration, samples", "s", f"{number(result['duration'])}, {result['samples']}"),
         ("final q [w, x, y, z]", "", tables.vector(final["q"])),
         ("final ω (body axes)", "rad/s", tables.vector(final["omega"])),
-        ("final tilt of body z", "deg", number(final["tilt_deg"])),
+        ("spin axis (body axes)", "", tables.vector(result["spin_axis"])),
+        ("nudge at t=0 (--tilt)", "deg", number(result["initial"]["nudge_deg"])),
+        ("tilt of spin axis: final", "deg", number(final["tilt_deg"])),
         ("tilt min … max (nutation)", "deg", f"{number(result['tilt_min_deg'])} … {number(result['tilt_max_deg'])}"),
         ("mean precession rate", "deg/s", "undefined (the axis was vertical)"
          if result["mean_precession_rate_deg_s"] is None else number(result["mean_precession_rate_deg_s"])),

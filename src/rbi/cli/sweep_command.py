@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from rbi.cli.simulate_command import SpinAxisOption
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, number
 from rbi.sim.budget import DEFAULT_MAX_STEPS
@@ -15,9 +16,10 @@ from rbi.spec.errors import InputError
 from rbi.sweep.study import MAX_ROWS_SHOWN
 
 SpinOption = Annotated[str, typer.Option("--spin", "-s", metavar="START:STOP:COUNT",
-                                         help="Spins about the body z axis, rad/s (or one value).")]
+                                         help="Spins about the spin axis, rad/s (or one value).")]
 TiltOption = Annotated[str, typer.Option("--tilt", metavar="START:STOP:COUNT",
-                                         help="Initial tilts, degrees (or one value).")]
+                                         help="Nudges at t=0: turns of the body about --tilt-axis, "
+                                              "degrees (or one value).")]
 VaryOption = Annotated[Optional[list[str]], typer.Option(
     "--vary", metavar="PATH=RANGE", help="Vary a number of the spec: PATH is parts.NAME.FIELD or "
     "parts.NAME.FIELD[i] (e.g. parts.bolt.position[0]); RANGE is START:STOP:COUNT, or normal(MEAN,SD) / "
@@ -32,7 +34,7 @@ RtolOption = Annotated[float, typer.Option("--rtol", metavar="RTOL", help="Integ
 GravityOption = Annotated[Optional[float], typer.Option("--gravity", "-g", metavar="G",
                                                         help="Gravity in m/s² (default 9.81).")]
 TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y",
-                                             help="World axis the initial tilt turns about.")]
+                                             help="World axis the nudge (--tilt) turns the body about.")]
 MaxStepsOption = Annotated[Optional[int], typer.Option(
     "--max-steps", metavar="N", help=f"Most steps one run may take (default {DEFAULT_MAX_STEPS:.0e}); a run "
                                      "that needs more is a failed row.")]
@@ -61,10 +63,10 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
           max_steps: MaxStepsOption = None, workers: WorkersOption = None, dask: DaskOption = None,
           out: OutOption = None, resume: ResumeOption = False, plot: PlotOption = None,
           mass_properties: MassPropertiesOption = False, yes: YesOption = False,
-          format: FormatOption = OutputFormat.table) -> None:
+          spin_axis: SpinAxisOption = None, format: FormatOption = OutputFormat.table) -> None:
     """Many runs of one spec: a grid over spin, tilt and spec fields, or Monte Carlo draws.
 
-    One row per run: the swept values, the largest, final and smallest tilt of the body z axis,
+    One row per run: the swept values, the largest, final and smallest tilt of the spin axis,
     the mean precession rate, the energy drift, the steps taken and a status (ok, or why that
     run failed: one failed run never stops the others). Runs use every core.
 
@@ -80,7 +82,8 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
 
     settings = SweepSettings(spin=spin, tilt=tilt, vary=tuple(vary or []), runs=runs, seed=seed, duration=duration,
                              samples=samples, rtol=rtol, gravity=gravity, tilt_axis=tilt_axis, max_steps=max_steps,
-                             workers=workers, dask=dask, mass_properties=mass_properties, yes=yes)
+                             workers=workers, dask=dask, mass_properties=mass_properties, yes=yes,
+                             spin_axis=spin_axis)
     check_settings(settings)
     if resume and out is None:
         raise InputError("--resume: needs --out, the file of the interrupted sweep")

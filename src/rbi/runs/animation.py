@@ -37,8 +37,8 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
     if not (np.all(np.isfinite(trajectory.q)) and np.all(np.isfinite(trajectory.omega))):
         raise InputError(f"{body.path}: the motion is not finite: the input values are too large for double precision")
     title = (f"{label(body.name or body.path, 30)}: spin {float(np.linalg.norm(run.omega0)):g} rad/s, "
-             f"tilt {run.tilt_deg:g}°")
-    tilts = tilt_deg(trajectory.q)
+             f"nudge {run.tilt_deg:g}°")
+    tilts = tilt_deg(trajectory.q, scene.spin_frame)
     data = animation_data(title, part_geometry(body), scene, trajectory.t, trajectory.q, trajectory.omega, tilts,
                           body.length_unit)
     data["legend"] = (f"{part_count(data['parts'])} parts · red line: path of the axis tip over the last "

@@ -17,7 +17,8 @@ class PreparedRun:
     body: the :class:`~rbi.spec.load.LoadedBody` (spec units). scene: the
     :class:`~rbi.sim.scene.Scene` (pivot or free body, gravity in the spec's length unit/s²).
     q0: initial orientation [w, x, y, z], body → world. omega0: initial angular velocity, body
-    frame, rad/s. tilt_deg, tilt_axis: the initial turn about a world axis. duration (s),
+    frame, rad/s. tilt_deg, tilt_axis: the nudge, the body's turn at t=0 about a world axis
+    (the tilt is then the angle of the scene's spin axis from the vertical). duration (s),
     method, rtol (None: the method's own), budget: most integration steps.
     """
 
@@ -33,41 +34,69 @@ class PreparedRun:
     budget: int
 
 
-def scene_of(body, gravity_si: float | None):
+def scene_of(body, gravity_si: float | None, spin_axis=None):
     """The scene of a loaded body: a heavy top on its pivot (a spec with ``pivot``) or a free
     body, under gravity ``gravity_si`` m/s² (None: standard gravity), converted to the spec's
-    length unit. :class:`InputError` when the body cannot be simulated (no mass, a singular
-    inertia)."""
+    length unit. The spin axis is ``spin_axis`` (a body-frame direction), else the spec's
+    ``spin_axis:``, else :func:`rbi.core.spin_axis.default_spin_axis`. :class:`InputError` when
+    the body cannot be simulated (no mass, a singular inertia)."""
     from rbi.sim.scene import scene_from_properties
     from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 
     g_si = STANDARD_GRAVITY_SI if gravity_si is None else float(gravity_si)
+    if spin_axis is None:
+        spin_axis = getattr(body, "spin_axis", None)
     try:
-        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, g_si))
+        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, g_si), spin_axis)
     except ValueError as exc:
         where = "pivot: " if body.pivot is not None else ""
         raise InputError(f"{body.path}: {where}cannot simulate: {exc}") from None
 
 
-def initial_omega(spin, omega) -> list[float]:
+def initial_omega(spin, omega, spin_axis=(0.0, 0.0, 1.0)) -> list[float]:
     """The initial angular velocity (body frame, rad/s): ``omega`` (text ``"WX,WY,WZ"`` or three
-    numbers) when given, else ``spin`` about the body z axis, else rest."""
+    numbers) when given, else ``spin`` about the unit ``spin_axis`` (body frame), else rest."""
     if omega is not None:
         return vector_value(omega, "--omega")
-    return [0.0, 0.0, 0.0 if spin is None else float(spin)]
+    if spin is None:
+        return [0.0, 0.0, 0.0]
+    return [float(spin) * float(c) for c in spin_axis]
+
+
+def spin_axis_value(value) -> list[float] | None:
+    """A spin axis as given on the command line or to the API: ``x``, ``y``, ``z`` (optionally
+    signed, ``-y``), ``"X,Y,Z"`` or three numbers (any length, not zero); None stays None (the
+    spec's or the default axis)."""
+    if value is None:
+        return None
+    if isinstance(value, str):
+        named = {"x": [1.0, 0.0, 0.0], "y": [0.0, 1.0, 0.0], "z": [0.0, 0.0, 1.0]}
+        text = value.strip().lower()
+        sign = -1.0 if text.startswith("-") else 1.0
+        if text.lstrip("+-") in named:
+            return [sign * c + 0.0 for c in named[text.lstrip("+-")]]
+        if "," not in text:
+            raise InputError(f"--spin-axis: must be x, y, z or a direction X,Y,Z in body axes (got {value!r})")
+    vector = vector_value(value, "--spin-axis")
+    if not any(vector):
+        raise InputError("--spin-axis: must not be zero [0, 0, 0]: give a direction in body axes, e.g. 0,1,0 or y")
+    from rbi.core.spin_axis import unit_direction
+
+    return unit_direction(vector).tolist()
 
 
 def prepare_run(body, *, spin=None, omega=None, tilt=0.0, tilt_axis="y", gravity=None, duration=4.0,
-                method="default", rtol=None, max_steps=None, yes=False) -> PreparedRun:
+                method="default", rtol=None, max_steps=None, yes=False, spin_axis=None) -> PreparedRun:
     """Set up the run of a loaded ``body`` whose settings passed
     :func:`rbi.runs.settings.check_run_options`. A run estimated to need more integration steps
     than the budget (``max_steps``, default :data:`rbi.sim.budget.DEFAULT_MAX_STEPS`) is
-    refused with :class:`InputError` unless ``yes``."""
+    refused with :class:`InputError` unless ``yes``. ``spin_axis``: see :func:`scene_of` (a
+    ``--spin-axis`` value: name or direction)."""
     from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
     from rbi.sim.scene import initial_state
 
-    w0 = initial_omega(spin, omega)
-    scene = scene_of(body, gravity)
+    scene = scene_of(body, gravity, spin_axis_value(spin_axis))
+    w0 = initial_omega(spin, omega, scene.spin_axis)
     q0, omega0 = initial_state(tilt, w0, tilt_axis.lower())
     budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)
     if method != "exact":

@@ -63,9 +63,18 @@ def simulate_run(run: PreparedRun, samples: int, *, error_estimate: bool = True,
         "gravity": scene.gravity,
         "duration": run.duration,
         "samples": int(trajectory.t.size),
-        "initial": {"t": 0.0, "q": run.q0, "omega": run.omega0, "tilt_deg": run.tilt_deg},
+        "initial": {"t": 0.0, "q": run.q0, "omega": run.omega0,
+                    "tilt_deg": initial_tilt_deg(run),
+                    "nudge_deg": run.tilt_deg},
     } | figures
     return SimulationRun(trajectory=trajectory, columns=columns, summary=summary)
+
+
+def initial_tilt_deg(run: PreparedRun) -> float:
+    """The tilt of the spin axis from the upward vertical at t = 0, degrees."""
+    from rbi.sim.diagnostics import tilt_deg
+
+    return float(tilt_deg(run.q0, run.scene.spin_frame)[0])
 
 
 def refuse_non_finite(path: str, columns: dict) -> None:

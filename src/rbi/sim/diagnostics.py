@@ -2,7 +2,9 @@
 
 Public names:
 
-- :func:`up_in_body`, :func:`tilt_deg`, :func:`precession_deg`: geometry of samples.
+- :func:`up_in_body`, :func:`tilt_deg`, :func:`precession_deg`: geometry of samples. The tilt
+  and precession are those of the scene's spin axis: pass ``scene.spin_frame`` (see
+  :attr:`rbi.sim.scene.Scene.spin_frame`); without it, of the body z axis.
 - :func:`energy`, :func:`angular_momentum_world`: along a trajectory.
 - :func:`conserved_quantities` ``(scene, q, omega) -> dict``: every quantity the scene
   conserves (energy; vertical angular momentum about the pivot; the spin of an axisymmetric
@@ -35,32 +37,51 @@ def up_in_body(q: np.ndarray) -> np.ndarray:
     return np.stack((2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z), axis=1)
 
 
-def body_z_in_world(q: np.ndarray) -> np.ndarray:
-    """The body's z axis in world coordinates, ``R(q) e_z`` (N, 3)."""
+def in_spin_frame(q: np.ndarray, frame: np.ndarray | None) -> np.ndarray:
+    """``q ⊗ frame`` (N, 4): the orientation whose z axis is the spin axis that ``frame`` (a
+    scene's :attr:`~rbi.sim.scene.Scene.spin_frame`) turns body z onto; ``q`` itself for None."""
     q = np.atleast_2d(q)
+    if frame is None:
+        return q
+    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
+    fw, fx, fy, fz = (float(c) for c in frame)
+    return np.stack((w * fw - x * fx - y * fy - z * fz,
+                     w * fx + x * fw + y * fz - z * fy,
+                     w * fy - x * fz + y * fw + z * fx,
+                     w * fz + x * fy - y * fx + z * fw), axis=1)
+
+
+def spin_axis_in_world(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:
+    """The spin axis in world coordinates, ``R(q) a`` (N, 3); the body z axis without ``frame``."""
+    q = in_spin_frame(q, frame)
     w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
     return np.stack((2 * (x * z + w * y), 2 * (y * z - w * x), w * w - x * x - y * y + z * z), axis=1)
 
 
-def tilt_deg(q: np.ndarray) -> np.ndarray:
-    """Angle between the body z axis and the world vertical, degrees (N,).
+body_z_in_world = spin_axis_in_world
 
-    ``2 atan2(√(x²+y²), √(w²+z²))``: accurate near 0 and 180 degrees.
+
+def tilt_deg(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:
+    """Tilt: the angle between the spin axis (body z without ``frame``) and the upward vertical,
+    degrees (N,).
+
+    ``2 atan2(√(x²+y²), √(w²+z²))`` of ``q ⊗ frame``: accurate near 0 and 180 degrees.
     """
-    q = np.atleast_2d(q)
+    q = in_spin_frame(q, frame)
     return np.degrees(2.0 * np.arctan2(np.hypot(q[:, 1], q[:, 2]), np.hypot(q[:, 0], q[:, 3])))
 
 
 VERTICAL_TOLERANCE = 1e-12
-"""Horizontal extent of the unit body z axis below which it counts as vertical: its azimuth
+"""Horizontal extent of the unit spin axis below which it counts as vertical: its azimuth
 (the precession angle) is then undefined."""
 
 
-def precession_deg(q: np.ndarray) -> np.ndarray:
-    """Azimuth of the body z axis seen from above (world x towards y), degrees, unwrapped so
-    that it is continuous along the samples (N,). NaN where the axis is vertical (within
-    :data:`VERTICAL_TOLERANCE`), since the azimuth is undefined there."""
-    axis = body_z_in_world(q)
+def precession_deg(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:
+    """Precession: the azimuth of the spin axis's horizontal projection seen from above (world x
+    towards y), degrees, unwrapped so that it is continuous along the samples (N,). NaN where
+    the axis is vertical (within :data:`VERTICAL_TOLERANCE`), since the azimuth is undefined
+    there."""
+    axis = spin_axis_in_world(q, frame)
     defined = np.hypot(axis[:, 0], axis[:, 1]) > VERTICAL_TOLERANCE
     out = np.full(axis.shape[0], np.nan)
     if np.any(defined):
@@ -202,38 +223,68 @@ def stability(scene: Scene, q0: np.ndarray, omega0: np.ndarray) -> dict[str, Any
     return _free_stability(scene, omega0)
 
 
+LEVEL_TOLERANCE = 1e-9
+"""The centre of mass counts as level with the pivot when the sine of its elevation seen from the
+pivot is below this."""
+
+
+def com_elevation(scene: Scene, q0: np.ndarray) -> str:
+    """Where the centre of mass starts relative to the pivot: ``"above"``, ``"below"`` or
+    ``"level"`` (its height over the pivot within :data:`LEVEL_TOLERANCE` of its distance)."""
+    r = np.asarray(scene.com_from_pivot, dtype=float)
+    length = float(np.linalg.norm(r))
+    height = float(up_in_body(q0)[0] @ r)
+    if length == 0.0 or abs(height) <= LEVEL_TOLERANCE * length:
+        return "level"
+    return "above" if height > 0.0 else "below"
+
+
 def _top_stability(scene: Scene, q0, omega0) -> dict[str, Any]:
-    threshold = sleeping_threshold(scene)
     length = float(np.linalg.norm(scene.com_from_pivot))
     if length == 0.0 or scene.gravity <= 0.0:
         return {"kind": "balanced", "verdict": "the centre of mass is at the pivot: gravity exerts no torque, "
                                                "the body turns as a free body"}
+    where = com_elevation(scene, q0)
+    said = {"above": "above", "below": "below", "level": "level with"}[where]
+    threshold = sleeping_threshold(scene)
     if threshold is None:
-        return {"kind": "asymmetric top",
-                "verdict": "not an axisymmetric top with its centre of mass on the axis, so the sleeping-top "
-                           "criterion does not apply: gravity pulls at a point off any spin axis and the "
-                           "top wobbles from the start"}
+        return {"kind": "asymmetric top", "com_position": where,
+                "verdict": f"the centre of mass starts {said} the pivot, off any symmetry axis of the body, so the "
+                           "sleeping-top criterion does not apply: gravity pulls at a point off the spin axis "
+                           "and the top wobbles from the start"}
     axis = symmetry_axis(scene)
     spin = float(omega0 @ axis)
-    up = float(up_in_body(q0)[0] @ axis)
-    result = {"kind": "axisymmetric top", "sleeping_threshold_rad_s": threshold["omega3"], "spin_rad_s": spin,
-              "above_threshold": abs(spin) > threshold["omega3"]}
-    if up < 0.0:
+    result = {"kind": "axisymmetric top", "com_position": where, "sleeping_threshold_rad_s": threshold["omega3"],
+              "spin_rad_s": spin, "above_threshold": abs(spin) > threshold["omega3"]}
+    w = f"{abs(spin):.6g} rad/s"
+    if where == "below":
         result["verdict"] = ("the centre of mass starts below the pivot: the hanging position is stable "
                              "whatever the spin")
         return result
-    w = f"{abs(spin):.6g} rad/s"
+    if where == "level":
+        if spin == 0.0:
+            result["verdict"] = ("the centre of mass starts level with the pivot and the body does not spin about "
+                                 "its axis: it swings down like a pendulum")
+            return result
+        rate = scene.mass * scene.gravity * threshold["l"] / (threshold["I3"] * abs(spin))
+        result["gyroscopic_precession_rad_s"] = rate
+        result["verdict"] = (f"the centre of mass starts level with the pivot, spinning at {w} about its axis: "
+                             f"gravity's torque turns the axis sideways, a gyroscope precessing at about "
+                             f"{rate:.6g} rad/s (m g l / (I₃ ω), fast-spin approximation)")
+        return result
     limit = f"{threshold['omega3']:.6g} rad/s"
+    up = float(up_in_body(q0)[0] @ axis)
     if abs(spin) > threshold["omega3"]:
-        result["verdict"] = (f"spin {w} is above the sleeping-top threshold {limit} "
-                             f"(ω₃² = 4 m g l I₁ / I₃²): the upright spin is stable, a small tilt only nutates")
+        result["verdict"] = (f"the centre of mass starts above the pivot; spin {w} is above the sleeping-top "
+                             f"threshold {limit} (ω₃² = 4 m g l I₁ / I₃²): the upright spin is stable, a small "
+                             f"tilt only nutates")
     else:
-        result["verdict"] = (f"spin {w} is below the sleeping-top threshold {limit} "
-                             f"(ω₃² = 4 m g l I₁ / I₃²): the upright spin is unstable, any small tilt grows "
-                             f"and the top falls away from vertical")
+        result["verdict"] = (f"the centre of mass starts above the pivot; spin {w} is below the sleeping-top "
+                             f"threshold {limit} (ω₃² = 4 m g l I₁ / I₃²): the upright spin is unstable, any small "
+                             f"tilt grows and the top falls away from vertical")
         if up >= 1.0 and not np.any(np.cross(omega0, axis)):
             result["verdict"] += (" (started exactly upright it stays up, an unstable equilibrium: any "
-                                  "perturbation, such as --tilt 0.01, makes it fall)")
+                                  "perturbation, such as a nudge of --tilt 0.01, makes it fall)")
     return result
 
 

@@ -7,6 +7,10 @@ Public names (other modules and ``rbi bench`` code against these):
 - :func:`scene_from_properties`: a :class:`Scene` from :class:`rbi.core.inertia.MassProperties`.
 - :func:`initial_state`: the contract's initial orientation and angular velocity.
 
+The scene's ``spin_axis`` (unit, body frame) is the axis the run speaks of: ``--spin`` turns
+about it, and the tilt and precession a run reports are those of this axis
+(:mod:`rbi.core.spin_axis` gives the default).
+
 Units are the spec file's own (length L, mass M, time s); angles in radians unless a name
 ends in ``_deg``. Gravity acts along world −z.
 """
@@ -32,7 +36,8 @@ class Scene:
     body axes, M·L². com_from_pivot: (3,) centre of mass relative to the pivot, body frame, L
     (zeros for a free body). gravity: magnitude in L/s² (0 for a free body), acting along
     world −z. pivot: the pivot in body coordinates (None for a free body); com: the centre of
-    mass in body coordinates.
+    mass in body coordinates. spin_axis: (3,) unit vector, body frame: the axis the spin is
+    given about and whose tilt and precession are reported (body z unless set).
     """
 
     mass: float
@@ -42,6 +47,15 @@ class Scene:
     pivoted: bool
     pivot: np.ndarray | None = None
     com: np.ndarray = field(default_factory=lambda: np.zeros(3))
+    spin_axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
+
+    @cached_property
+    def spin_frame(self) -> np.ndarray:
+        """Quaternion [w, x, y, z] turning body z onto :attr:`spin_axis`: ``q ⊗ spin_frame``
+        carries the spin axis where ``q`` carries body z (exactly the identity for body z)."""
+        from rbi.core.spin_axis import quaternion_from_z_to
+
+        return quaternion_from_z_to(self.spin_axis)
 
     @cached_property
     def inertia_inv(self) -> np.ndarray:
@@ -77,14 +91,19 @@ class Scene:
         return float(np.sqrt(moment / self.principal_moments[-1]))
 
 
-def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravity: float) -> Scene:
+def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravity: float,
+                          spin_axis=None) -> Scene:
     """The scene of a body with mass properties ``props``.
 
     pivot: the fixed point in body coordinates (L), or None for a free body (gravity is then
     ignored: a free body's centre of mass falls, but its rotation is torque-free). gravity:
-    magnitude in L/s². Raises ValueError when the inertia about the pivot (or the centre of
-    mass) is singular, i.e. all the mass lies on a line through that point.
+    magnitude in L/s². spin_axis: a body-frame direction (any length), or None for
+    :func:`rbi.core.spin_axis.default_spin_axis` (the symmetry axis, else body z). Raises
+    ValueError when the inertia about the pivot (or the centre of mass) is singular, i.e. all
+    the mass lies on a line through that point, or when ``spin_axis`` is zero or not finite.
     """
+    from rbi.core.spin_axis import default_spin_axis, unit_direction
+
     if pivot is None:
         inertia = np.array(props.inertia_com, dtype=float)
         com_from_pivot = np.zeros(3)
@@ -102,6 +121,13 @@ def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravi
             f"the inertia about the {where} is singular (principal moments {moments[0]:.3g} and "
             f"{moments[-1]:.3g}): all the mass lies on a line through the {where}, so a spin about "
             f"that line has no inertia and the motion is undefined")
+    if spin_axis is None:
+        axis = default_spin_axis(inertia, com_from_pivot)
+    else:
+        try:
+            axis = unit_direction(spin_axis)
+        except ValueError as exc:
+            raise ValueError(f"spin axis: {exc}") from None
     return Scene(
         mass=float(props.mass),
         inertia=inertia,
@@ -110,6 +136,7 @@ def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravi
         pivoted=pivot is not None,
         pivot=None if pivot is None else pivot,
         com=np.asarray(props.com, dtype=float),
+        spin_axis=axis,
     )
 
 

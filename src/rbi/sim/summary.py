@@ -15,8 +15,9 @@ from rbi.sim.api import DEFAULT_RTOL, Trajectory, simulate
 from rbi.sim.scene import Scene
 
 CSV_COLUMNS = ("t", "qw", "qx", "qy", "qz", "wx", "wy", "wz", "tilt_deg", "precession_deg", "energy")
-"""Trajectory columns: the contract's eight, then the tilt of the body z axis from vertical
-(deg), the azimuth of that axis seen from above (deg, unwrapped) and the total energy."""
+"""Trajectory columns: the contract's eight, then the tilt of the spin axis from the upward
+vertical (deg), the azimuth of that axis seen from above (the precession angle, deg, unwrapped)
+and the total energy."""
 
 REFERENCE_RTOL_FACTOR = 1e-3
 REFERENCE_RTOL_FLOOR = 1e-15
@@ -31,8 +32,8 @@ def sample_columns(scene: Scene, trajectory: Trajectory) -> dict[str, np.ndarray
         "t": trajectory.t,
         "qw": q[:, 0], "qx": q[:, 1], "qy": q[:, 2], "qz": q[:, 3],
         "wx": omega[:, 0], "wy": omega[:, 1], "wz": omega[:, 2],
-        "tilt_deg": diagnostics.tilt_deg(q),
-        "precession_deg": diagnostics.precession_deg(q),
+        "tilt_deg": diagnostics.tilt_deg(q, scene.spin_frame),
+        "precession_deg": diagnostics.precession_deg(q, scene.spin_frame),
         "energy": diagnostics.energy(scene, q, omega),
     }
 
@@ -78,18 +79,18 @@ def error_estimate(scene: Scene, trajectory: Trajectory, q0, omega0, max_steps: 
 
 
 def motion_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
-    """The figures of a sampled motion that a run reports: tilt of the body z axis from
+    """The figures of a sampled motion that a run reports: tilt of the spin axis from the
     vertical (min, max, final; deg), mean precession rate (deg/s; None when the axis stood
     vertical at some sample, where the azimuth is undefined) and the conserved quantities with
     their relative drift."""
-    return {**tilt_figures(t, q), "conserved": diagnostics.conserved_quantities(scene, q, omega)}
+    return {**tilt_figures(t, q, scene.spin_frame), "conserved": diagnostics.conserved_quantities(scene, q, omega)}
 
 
 def sweep_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
     """What a sweep row reports of a run: :func:`motion_figures`' tilts and precession rate and
     the energy's drift, computed by the same functions (so equal to a single run's), without
     the other conserved quantities."""
-    return {**tilt_figures(t, q), "energy_drift": diagnostics.energy_conservation(scene, q, omega)["drift"]}
+    return {**tilt_figures(t, q, scene.spin_frame), "energy_drift": diagnostics.energy_conservation(scene, q, omega)["drift"]}
 
 
 def sweep_figures_batch(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> list[dict[str, Any]]:
@@ -98,8 +99,8 @@ def sweep_figures_batch(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.nd
     the same numbers for a fraction of the per-call overhead."""
     B, N = q.shape[0], q.shape[1]
     flat_q, flat_omega = q.reshape(B * N, 4), omega.reshape(B * N, 3)
-    tilt = diagnostics.tilt_deg(flat_q).reshape(B, N)
-    axis = diagnostics.body_z_in_world(flat_q).reshape(B, N, 3)
+    tilt = diagnostics.tilt_deg(flat_q, scene.spin_frame).reshape(B, N)
+    axis = diagnostics.spin_axis_in_world(flat_q, scene.spin_frame).reshape(B, N, 3)
     defined = np.hypot(axis[..., 0], axis[..., 1]) > diagnostics.VERTICAL_TOLERANCE
     azimuth = np.degrees(np.unwrap(np.arctan2(axis[..., 1], axis[..., 0]), axis=1))
     kinetic = diagnostics.kinetic_energy(scene, flat_omega).reshape(B, N)
@@ -122,10 +123,11 @@ def sweep_figures_batch(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.nd
     return out
 
 
-def tilt_figures(t: np.ndarray, q: np.ndarray) -> dict[str, Any]:
-    """Smallest, largest and final tilt (deg) and the mean precession rate (deg/s or None)."""
-    tilt = diagnostics.tilt_deg(q)
-    precession = diagnostics.precession_deg(q)
+def tilt_figures(t: np.ndarray, q: np.ndarray, frame: np.ndarray | None = None) -> dict[str, Any]:
+    """Smallest, largest and final tilt of the spin axis (deg; body z without ``frame``, see
+    :attr:`rbi.sim.scene.Scene.spin_frame`) and the mean precession rate (deg/s or None)."""
+    tilt = diagnostics.tilt_deg(q, frame)
+    precession = diagnostics.precession_deg(q, frame)
     duration = float(t[-1] - t[0])
     if np.any(np.isnan(precession)):
         rate_deg = None
@@ -144,6 +146,7 @@ def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any
     conserved = figures["conserved"]
     norms = np.linalg.norm(q, axis=1)
     return {
+        "spin_axis": np.array(scene.spin_axis, dtype=float),
         "final": {"t": float(t[-1]), "q": q[-1], "omega": omega[-1], "tilt_deg": figures["final_tilt_deg"]},
         "method": trajectory.method,
         "integrator": trajectory.integrator,

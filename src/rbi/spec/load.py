@@ -37,6 +37,7 @@ class LoadedBody:
     elements: list[MassElement]
     part_names: list[str | None]
     expect: dict[str, Any] | None = None
+    spin_axis: np.ndarray | None = None
     spec: Any = field(default=None, repr=False)
 
     @property

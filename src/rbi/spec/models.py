@@ -408,9 +408,19 @@ class BodySpec(_Strict):
     name: str | None = Field(None, description="Name of the body, shown in titles.")
     units: Units = Field(Units(), description="Units of every number in the file (default m and kg).")
     pivot: Vector3 | None = Field(None, description="The fixed point a top turns about, body frame; without it the body is free.")
+    spin_axis: Vector3 | None = Field(
+        None, description="The body-frame direction the body spins about (need not be unit length): --spin turns "
+                          "about it and the tilt and precession reported are its own. Default: the symmetry axis "
+                          "when the body has one, else z.")
     parts: list[Part] = Field(default_factory=list, description="The parts, each placed in the body frame.")
     point_cloud: PointCloudRef | None = Field(None, description="Many point masses read from one file.")
     expect: Expect | None = Field(None, description="Expected values that `rbi check` compares with the computed ones.")
+
+    @model_validator(mode="after")
+    def _spin_axis_has_a_direction(self):
+        if self.spin_axis is not None and not any(self.spin_axis):
+            raise ValueError("spin_axis: must not be zero [0, 0, 0]: give a direction in body axes, e.g. [0, 1, 0]")
+        return self
 
     @model_validator(mode="after")
     def _has_mass(self):

@@ -328,4 +328,5 @@ def body_from_spec(spec: models.BodySpec, path: str):
         part_names=part_names,
         expect=spec.expect,
         spec=spec,
+        spin_axis=None if spec.spin_axis is None else np.asarray(spec.spin_axis, dtype=float),
     )

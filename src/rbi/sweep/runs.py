@@ -29,7 +29,8 @@ class SweepJob:
     """What every run of a sweep shares. path: the spec file (for messages and files it names);
     raw: the parsed spec; varied: the paths of ``plan``'s axes after spin and tilt; duration (s),
     samples, rtol: as ``rbi simulate``; gravity_si: m/s²; tilt_axis: "x" or "y"; max_steps: per
-    run."""
+    run; spin_axis: the unit body-frame axis every run spins about and reports the tilt of (None:
+    each body's default)."""
 
     path: str
     raw: Any
@@ -41,6 +42,7 @@ class SweepJob:
     gravity_si: float
     tilt_axis: str = "y"
     max_steps: int = 10**7
+    spin_axis: tuple[float, float, float] | None = None
     _bodies: dict = field(default_factory=dict, compare=False, repr=False)
     _scenes: dict = field(default_factory=dict, compare=False, repr=False)
 
@@ -94,7 +96,8 @@ def _derive_scene(job: SweepJob, values: tuple[float, ...]):
     if isinstance(body, str):
         return body
     try:
-        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, job.gravity_si))
+        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, job.gravity_si),
+                                     job.spin_axis)
     except ValueError as exc:
         return _one_line(f"cannot simulate: {exc}")
 
@@ -115,7 +118,7 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
         if isinstance(scene, str):
             rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + [scene]
             continue
-        q0, omega0 = initial_state(v[1], [0.0, 0.0, v[0]], job.tilt_axis)
+        q0, omega0 = initial_state(v[1], v[0] * scene.spin_axis, job.tilt_axis)
         scenes.append(scene)
         starts.append(np.concatenate((q0 / np.linalg.norm(q0), omega0)))
         ready.append(i)

@@ -10,6 +10,7 @@ plans the sweep of a parsed spec and runs it. Messages name the CLI's options (`
 
 from __future__ import annotations
 
+import dataclasses
 import hashlib
 import json
 from dataclasses import dataclass
@@ -36,8 +37,9 @@ MAX_SWEEP_SAMPLES = 100_000
 class SweepSettings:
     """The settings of a sweep, as the CLI's options spell them.
 
-    spin, tilt: ``"START:STOP:COUNT"`` or one value (rad/s about the body z axis; degrees), None
-    for 0. vary: ``"PATH=RANGE"`` items (``parts.NAME.FIELD[i]=START:STOP:COUNT``,
+    spin, tilt: ``"START:STOP:COUNT"`` or one value (rad/s about the spin axis; the nudge in
+    degrees), None for 0. spin_axis: ``x|y|z|X,Y,Z`` (body frame), None for the spec's
+    ``spin_axis`` or the nominal body's default (:func:`rbi.core.spin_axis.default_spin_axis`). vary: ``"PATH=RANGE"`` items (``parts.NAME.FIELD[i]=START:STOP:COUNT``,
     ``=normal(MEAN,SD)`` or ``=uniform(LOW,HIGH)``). runs: Monte Carlo draws per grid point;
     seed: of the draws. duration (s), samples, rtol, gravity (m/s², None for 9.81), tilt_axis,
     max_steps (per run, None for the default): as a single simulation. workers: cores (None:
@@ -60,6 +62,7 @@ class SweepSettings:
     dask: str | None = None
     mass_properties: bool = False
     yes: bool = False
+    spin_axis: str | None = None
 
 
 def check_settings(settings: SweepSettings) -> None:
@@ -72,6 +75,9 @@ def check_settings(settings: SweepSettings) -> None:
     check_run_settings(settings.duration, settings.tilt_axis, settings.gravity, settings.max_steps, settings.rtol)
     if not 1 <= settings.samples <= MAX_SWEEP_SAMPLES:
         raise InputError(f"--samples: must be between 1 and {MAX_SWEEP_SAMPLES:,} for a sweep (got {settings.samples})")
+    from rbi.runs.prepare import spin_axis_value
+
+    spin_axis_value(settings.spin_axis)
     if settings.workers is not None and not 1 <= settings.workers <= 1024:
         raise InputError(f"--workers: must be between 1 and 1024 (got {settings.workers})")
 
@@ -118,6 +124,7 @@ class Study:
         self.nominal = self.job.body(tuple(current_values(raw, varied)))
         if isinstance(self.nominal, str):
             raise InputError(f"{path}: {self.nominal}")
+        self.job = dataclasses.replace(self.job, spin_axis=self._spin_axis())
         if settings.mass_properties:
             from rbi.sweep.tolerance import MASS_COLUMNS
 
@@ -179,9 +186,29 @@ class Study:
 
         body = self.nominal
         try:
-            return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, self.job.gravity_si))
+            return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, self.job.gravity_si),
+                                         self.job.spin_axis)
         except ValueError:
             return None
+
+    def _spin_axis(self) -> tuple[float, float, float]:
+        """The one spin axis of every run (unit, body frame): ``--spin-axis``, else the spec's
+        ``spin_axis``, else the nominal body's default, so that every row's tilt is of the same
+        body axis even where a varied value breaks the body's symmetry."""
+        from rbi.core.inertia import inertia_about
+        from rbi.core.spin_axis import default_spin_axis, unit_direction
+        from rbi.runs.prepare import spin_axis_value
+
+        import numpy as np
+
+        given = spin_axis_value(self.settings.spin_axis)
+        body = self.nominal
+        if given is None and body.spin_axis is not None:
+            given = unit_direction(body.spin_axis).tolist()
+        if given is None:
+            fixed = np.asarray(body.props.com if body.pivot is None else body.pivot, dtype=float)
+            given = default_spin_axis(inertia_about(body.props, fixed), np.asarray(body.props.com) - fixed).tolist()
+        return tuple(float(c) for c in given)
 
     def _compute(self):
         """``(compute(start, stop, threads) -> rows, chunk size)`` for the executors."""
@@ -212,7 +239,7 @@ class Study:
         return {"spec_sha256": hashlib.sha256(spec_bytes).hexdigest(), "spin": s.spin or "0", "tilt": s.tilt or "0",
                 "vary": list(s.vary), "runs": job.plan.runs, "seed": job.plan.seed, "duration": job.duration,
                 "samples": job.samples, "rtol": job.rtol, "gravity_si": job.gravity_si, "tilt_axis": job.tilt_axis,
-                "max_steps": job.max_steps, "mass_properties": s.mass_properties}
+                "spin_axis": list(job.spin_axis), "max_steps": job.max_steps, "mass_properties": s.mass_properties}
 
     def run(self, out_target=None, resume: bool = False,
             progress: Callable[[int, int], Any] | None = None) -> list[list[Any]] | None:

@@ -39,21 +39,9 @@ def keyframe_count(duration: float, fastest_rate: float) -> int:
 
 
 def marked_axis(scene) -> np.ndarray:
-    """The body axis whose tip the animation traces (body frame, unit): the symmetry axis when
-    there is one; for a top without one, the principal axis about the pivot nearest to the line
-    from the pivot to the centre of mass (its figure axis, pointing at the centre of mass);
-    otherwise the axis of the largest principal moment."""
-    from rbi.sim.diagnostics import symmetry_axis
-
-    axis = symmetry_axis(scene)
-    if axis is not None:
-        return np.asarray(axis, dtype=float)
-    axes = np.asarray(scene.principal_axes, dtype=float)
-    offset = np.asarray(scene.com_from_pivot, dtype=float) if scene.pivoted else np.zeros(3)
-    if np.linalg.norm(offset) == 0.0:
-        return axes[-1]
-    axis = axes[int(np.argmax(np.abs(axes @ offset)))]
-    return axis if axis @ offset > 0 else -axis
+    """The body axis whose tip the animation traces (body frame, unit): the scene's spin axis,
+    the one whose tilt and precession the run reports (see :mod:`rbi.core.spin_axis`)."""
+    return np.asarray(scene.spin_axis, dtype=float)
 
 
 def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndarray, q: np.ndarray,

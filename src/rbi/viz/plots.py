@@ -1,4 +1,4 @@
-"""`rbi simulate --plot`: the path of the body z axis seen from above, tilt (or, for a free body,
+"""`rbi simulate --plot`: the path of the spin axis seen from above, tilt (or, for a free body,
 each principal axis's turn) against time, ω and the energy drift; `rbi sweep --plot`: the
 stability map.
 
@@ -31,8 +31,9 @@ def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
 
 
 def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", format: str = "png", *,
-                    principal_axes=None, inertia=None, energy_unit: str = "J") -> None:
-    """Four panels saved at ``path``: the path of the body z axis's tip seen from above,
+                    principal_axes=None, inertia=None, energy_unit: str = "J", spin_axis=(0.0, 0.0, 1.0)) -> None:
+    """Four panels saved at ``path``: the path of the tip of the spin axis (``spin_axis``, unit,
+    body frame) seen from above,
     coloured by time; the tilt of that axis against time (a top) or, when ``principal_axes``
     (body frame, rows, ascending moments) and the ``inertia`` about the centre of mass (body
     axes) are given (a free body), the angle between each principal axis and the angular
@@ -48,13 +49,13 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", 
 
     t = np.asarray(columns["t"], dtype=float)
     q = np.column_stack([columns[k] for k in ("qw", "qx", "qy", "qz")])
-    tip = rotate_by_quaternions(q, [0.0, 0.0, 1.0])  # unit body z axis, world frame
+    tip = rotate_by_quaternions(q, np.asarray(spin_axis, dtype=float))  # unit spin axis, world frame
     fig, axes = plt.subplots(2, 2, figsize=(12, 8.4), gridspec_kw={"width_ratios": [1.45, 1]})
     (angle_ax, above), (omega_ax, energy_ax) = axes
 
     if principal_axes is None:
         angle_ax.plot(t, columns["tilt_deg"], lw=1.0, color="#1f77b4")
-        angle_ax.set_ylabel("tilt of body z axis from vertical [deg]")
+        angle_ax.set_ylabel("tilt of the spin axis from vertical [deg]")
         top = float(np.max(columns["tilt_deg"])) if t.size else 0.0
         angle_ax.set_ylim(-0.05 * max(top, 1.0), 1.1 * max(top, 1.0))
     else:
@@ -73,7 +74,7 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", 
     angle_ax.set_xlabel("time [s]")
     angle_ax.grid(alpha=0.3)
 
-    # the tip of the body z axis seen from above, coloured by time
+    # the tip of the spin axis seen from above, coloured by time
     x, y = tip[:, 0], tip[:, 1]
     reach = float(np.max(np.hypot(x, y))) if t.size else 0.0
     extent = max(1.15 * reach, np.sin(np.radians(1.0)))  # an upright top still gets a readable frame
@@ -92,9 +93,9 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", 
     above.xaxis.set_major_locator(MaxNLocator(5))
     above.yaxis.set_major_locator(MaxNLocator(5))
     above.set_aspect("equal")
-    above.set_xlabel("world x (tip of the unit body z axis)")
+    above.set_xlabel("world x (tip of the unit spin axis)")
     above.set_ylabel("world y")
-    above.set_title("body z axis seen from above", fontsize=10)
+    above.set_title("spin axis seen from above", fontsize=10)
     above.legend(loc="upper left", fontsize=8, framealpha=0.9)
     above.grid(alpha=0.3)
 
