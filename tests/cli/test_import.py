@@ -101,9 +101,10 @@ def test_urdf_link_without_inertial_is_skipped_with_a_note(tmp_path):
     proc = run_rbi_inprocess("import", path)
     assert proc.returncode == 0
     assert "link[0] (world): skipped: no <inertial> element" in proc.stderr
-    documents = [d for d in yaml.safe_load_all(proc.stdout)]
-    assert [d["name"] for d in documents] == ["box", "plate"]
-    assert documents[0]["parts"][0]["rotation"] == {"euler_deg": [0.0, 0.0, 90.0], "sequence": "xyz"}
+    (robot,) = [d for d in yaml.safe_load_all(proc.stdout)]  # one spec: the whole robot
+    assert [part["name"] for part in robot["parts"]] == ["box", "plate"]
+    box = yaml.safe_load(ok("import", path, "--link", "box"))  # one link: in its own frame
+    assert box["parts"][0]["rotation"] == {"euler_deg": [0.0, 0.0, 90.0], "sequence": "xyz"}
     assert json.loads(ok("import", path, "--format", "json"))["skipped"] == [
         {"link": "link[0] (world)", "reason": "no <inertial> element"}]
 

@@ -291,7 +291,7 @@ def test_fix_replaces_only_the_flagged_inertial_and_keeps_every_other_byte(tmp_p
     start = original.index("<inertial>", original.index('name="placeholder"'))
     end = original.index("</inertial>", start) + len("</inertial>")
     assert fixed.startswith(original[:start]) and fixed.endswith(original[end:])
-    assert "rbi audit fix: was mass 2 kg" in fixed and "placeholder" in fixed
+    assert "rbi audit fix: was principal moments 1, 1, 1" in fixed and "placeholder" in fixed
     again_proc, again = audit_json(out)
     assert again_proc.returncode == 0
     fixed_link = again["links"][1]
@@ -345,3 +345,85 @@ def test_xacro_files_are_expanded(tmp_path):
     proc, result = audit_json(write(tmp_path, "r.urdf.xacro", text))
     assert proc.returncode == 0, proc.stderr
     assert [link["name"] for link in result["links"]] == ["a", "b"] and result["total"]["mass"] == 4.0
+
+
+def test_import_without_out_prints_one_spec_that_rbi_reads_back_with_the_audit_totals(tmp_path):
+    from tests.conftest import BODIES
+
+    robot_file = BODIES / "two_link_arm.urdf"
+    proc = run_rbi_inprocess("import", robot_file)
+    assert proc.returncode == 0, proc.stderr
+    spec = write(tmp_path, "arm.yaml", proc.stdout)
+    inertia = json.loads(run_rbi_inprocess("inertia", spec, "--format", "json").stdout)
+    _, audited = audit_json(robot_file)
+    assert inertia["mass"] == pytest.approx(audited["total"]["mass"], rel=1e-15)
+    assert np.allclose(inertia["center_of_mass"], audited["total"]["center_of_mass"], rtol=1e-15, atol=1e-17)
+    assert np.allclose(inertia["inertia"], audited["total"]["inertia_about_com"], rtol=1e-14, atol=1e-18)
+
+
+FEATURES = """<mujoco model="features">
+  <compiler angle="radian" eulerseq="zyx" meshdir="meshes" inertiagrouprange="0 3"/>
+  <asset><mesh name="block" file="box.obj" scale="0.2 0.1 0.05"/></asset>
+  <default>
+    <geom density="800"/>
+    <default class="heavy"><geom density="7800" type="box" size="0.02 0.03 0.04"/></default>
+    <default class="light"><geom density="300"/></default>
+  </default>
+  <worldbody>
+    <geom type="plane" size="1 1 0.1"/>
+    <body name="a" euler="0.3 0.2 0.1">
+      <joint type="hinge" axis="1 0 0"/>
+      <geom class="heavy" pos="0.1 0 0" euler="0.5 -0.2 0.3"/>
+      <geom type="ellipsoid" size="0.03 0.04 0.05" xyaxes="0 1 0 -1 0 0" mass="0.7"/>
+      <geom type="box" fromto="0 0 0 0.1 0.2 0.3" size="0.01 0.02"/>
+      <geom type="sphere" size="0.5" group="4"/>
+      <body name="b" pos="0.3 0 0" axisangle="0 0 1 0.7" childclass="light">
+        <joint type="slide" axis="0 1 0"/>
+        <geom type="cylinder" fromto="0 0 -0.1 0 0.05 0.1" size="0.02"/>
+        <geom type="capsule" zaxis="1 1 0" size="0.01 0.05" pos="0 0.1 0"/>
+        <frame pos="0 0 0.2" quat="0.9 0.1 0.2 0.3">
+          <geom type="mesh" mesh="block"/>
+        </frame>
+      </body>
+      <body name="c" pos="0 0.4 0">
+        <joint type="ball"/>
+        <geom type="sphere" size="0.05" shellinertia="true" density="2"/>
+        <geom type="box" size="0.05 0.04 0.03" shellinertia="true" density="3" pos="0.1 0 0"/>
+        <geom type="cylinder" size="0.03 0.06" shellinertia="true" density="4" pos="0 0.1 0"/>
+        <geom type="capsule" size="0.03 0.06" shellinertia="true" density="5" pos="0 -0.1 0"/>
+      </body>
+    </body>
+  </worldbody>
+</mujoco>
+"""
+
+
+@pytest.mark.parametrize("settotalmass", [None, 12.5])
+def test_mjcf_compiler_features_agree_with_mujoco(tmp_path, settotalmass):
+    """Default classes and childclass, every orientation form with eulerseq, fromto boxes,
+    frames, mesh assets with meshdir and scale, geom groups outside inertiagrouprange, shell
+    inertia of primitives, settotalmass: each body as MuJoCo compiles it."""
+    mujoco = pytest.importorskip("mujoco")
+    text = FEATURES if settotalmass is None else FEATURES.replace(
+        'inertiagrouprange="0 3"', f'inertiagrouprange="0 3" settotalmass="{settotalmass}"')
+    (tmp_path / "meshes").mkdir()
+    (tmp_path / "meshes" / "box.obj").write_text(BOX_OBJ)
+    path = write(tmp_path, "features.xml", text)
+    proc, result = audit_json(path)
+    assert proc.returncode == 0, proc.stderr
+    model = mujoco.MjModel.from_xml_path(str(path))
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    for link in result["links"]:
+        body = model.body(link["name"]).id
+        R = np.zeros(9)
+        mujoco.mju_quat2Mat(R, model.body_iquat[body])
+        R = R.reshape(3, 3)
+        expected = R @ np.diag(model.body_inertia[body]) @ R.T
+        declared = link["declared"]
+        assert declared["mass"] == pytest.approx(model.body_mass[body], rel=1e-12), link["name"]
+        assert np.allclose(declared["center_of_mass"], model.body_ipos[body], rtol=0, atol=1e-14), link["name"]
+        assert np.allclose(declared["inertia_about_com"], expected, rtol=0, atol=1e-12 * np.max(np.abs(expected))), \
+            link["name"]
+    assert result["total"]["mass"] == pytest.approx(model.body_subtreemass[0], rel=1e-12)
+    assert np.allclose(result["total"]["center_of_mass"], data.subtree_com[0], rtol=0, atol=1e-13)

@@ -20,7 +20,8 @@ def import_robot(
     out: Annotated[Optional[str], typer.Option(
         "--out", "-o", metavar="DIR|FILE.yaml",
         help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
-             "link is imported. Without it the specs are printed (YAML documents separated by ---).")] = None,
+             "link is imported. Without it one spec is printed: the link given with --link, or the whole "
+             "robot (one part per link, placed at the zero configuration).")] = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Turn each link of a robot file into an rbi spec: its mass, centre of mass and inertia as a custom part.
@@ -54,8 +55,10 @@ def import_robot(
     if targets is not None:
         _write(robot, targets)
     if format is OutputFormat.table:
-        if targets is None:
-            sys.stdout.write("---\n".join(_yaml_text(robot, each) for each in links))
+        if targets is None and len(links) > 1:
+            sys.stdout.write(_robot_yaml_text(file))
+        elif targets is None:
+            sys.stdout.write(_yaml_text(robot, links[0]))
         else:
             from rbi.text import visible
 
@@ -132,6 +135,26 @@ def _yaml_text(robot, link) -> str:
                      "SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,",
                      "turned into link axes by `rotation`.")
     return header + dump(link_spec(robot, link))
+
+
+def _robot_yaml_text(file: str) -> str:
+    """The whole robot as one spec (each link with mass a custom part, placed at the reference
+    configuration): what `rbi inertia -` reads back."""
+    import os
+
+    from rbi.formats.robot_files import read_robot
+    from rbi.robot.specs import robot_spec
+    from rbi.spec.yaml_writer import comment, dump
+
+    model = read_robot(file)
+    spec, left_out = robot_spec(model)
+    frame = "the world frame at qpos0" if model.format == "mjcf" else "the root link's frame, every joint at zero"
+    lines = [f"rbi import of {os.path.basename(model.path)}: the whole robot, one custom part per "
+             f"{model.link_word} with mass,", f"placed in {frame}; SI units.",
+             "One link alone, in its own frame: --link NAME; one spec per link: --out DIR/."]
+    if left_out:
+        lines.append(f"Without mass (left out): {', '.join(left_out)}.")
+    return comment(*lines) + dump(spec)
 
 
 def _write(robot, targets) -> None:

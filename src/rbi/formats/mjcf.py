@@ -9,7 +9,8 @@ What is honoured:
 - orientations ``quat``, ``axisangle``, ``euler``, ``xyaxes``, ``zaxis`` (``angle`` in degrees by
   default, as MuJoCo); ``fromto`` for capsule, cylinder, box and ellipsoid geoms;
 - geom size conventions (sphere ``r``; capsule and cylinder ``r, half-length``; box half-edges;
-  ellipsoid semi-axes), geom ``mass`` or ``density`` (default 1000 kg/m³), ``shellinertia``,
+  ellipsoid semi-axes; with ``fromto`` a box or ellipsoid takes ``size[0]`` across both transverse
+  axes, as MuJoCo does), geom ``mass`` or ``density`` (default 1000 kg/m³), ``shellinertia``,
   ``group`` against ``inertiagrouprange``; mesh assets with ``file``, ``scale`` and ``inertia``
   (``exact``, ``convex``, ``shell``; ``legacy`` is read as ``exact``);
 - a body's mass properties: the explicit ``<inertial>`` (``diaginertia`` or ``fullinertia``,
@@ -394,11 +395,10 @@ class _Bodies:
         if not length > 0:
             raise where.error("fromto: the two ends coincide")
         half = length / 2
-        if kind in ("capsule", "cylinder"):
-            size = [_size(where, size, 1, kind, fromto=True)[0], half]
-        else:
-            a, b = _size(where, size, 2, kind, fromto=True)[:2]
-            size = [a, b, half]
+        radius = _size(where, size, 1, kind, fromto=True)[0]
+        # MuJoCo's compiler: a box or ellipsoid with fromto is as wide as size[0] across both
+        # transverse axes (size[1] is not read), as long as the segment
+        size = [radius, half] if kind in ("capsule", "cylinder") else [radius, radius, half]
         return Pose(z_to(direction / length), (start + end) / 2), size
 
 

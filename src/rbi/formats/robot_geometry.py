@@ -162,7 +162,11 @@ def _mesh(geom: Geom, mode: str, where: str):
         if mode == "convex":
             from scipy.spatial import ConvexHull
 
-            hull = ConvexHull(vertices)
+            try:
+                hull = ConvexHull(vertices)
+            except Exception:  # noqa: BLE001 - Qhull refuses flat or degenerate point sets
+                raise InputError(f"{where}{geom.label}: {path.name}: mesh encloses no volume: its points lie in a "
+                                 "plane or on a line, so even its convex hull is flat") from None
             faces = _outward(hull.points, hull.simplices)
             vertices = hull.points
         elif mode == "shell":

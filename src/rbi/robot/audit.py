@@ -54,9 +54,13 @@ COM_MARGIN = 0.01
 
 @dataclass
 class Flag:
+    """``code`` (unphysical, placeholder, mismatch, density, massless), ``level`` (error,
+    warning), ``message`` (what is wrong, with the numbers) and ``summary`` (a few words)."""
+
     code: str
     level: str
     message: str
+    summary: str = ""
 
     def as_dict(self) -> dict[str, str]:
         return {"code": self.code, "level": self.level, "message": self.message}
@@ -298,10 +302,10 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
         return flags
     I = declared.inertia_about_com
     if declared.mass < 0:
-        flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative"))
+        flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative", "negative mass"))
     problem = inertia_problem(I)
     if problem is not None:
-        flags.append(Flag("unphysical", "error", _problem_text(problem, I)))
+        flags.append(Flag("unphysical", "error", _problem_text(problem, I), problem.kind))
     placeholder = _placeholder(model, link)
     if geo is not None and geo.inertia_about_com is not None and geo.mass:
         moments, axes = np.linalg.eigh(geo.inertia_about_com)
@@ -321,12 +325,13 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
                   f"geometry's at the same mass")
         if placeholder:
             detail = f"{placeholder}; {detail}"
+        summary = "" if worst is None else f"a moment {worst:.3g} × the {geo.source} geometry's"
         if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
-            flags.append(Flag(code, "error", detail))
+            flags.append(Flag(code, "error", detail, summary))
         elif worst is not None and (worst > WARNING_RATIO or worst < 1 / WARNING_RATIO):
-            flags.append(Flag(code, "warning", detail))
+            flags.append(Flag(code, "warning", detail, summary))
         elif placeholder and _spread(moments) > 1.5:
-            flags.append(Flag("placeholder", "warning", detail))
+            flags.append(Flag("placeholder", "warning", detail, summary))
         margin = COM_MARGIN * size
         if np.any(declared.center_of_mass < geo.low - margin) or np.any(declared.center_of_mass > geo.high + margin):
             flags.append(Flag("mismatch", "warning", "the declared centre of mass lies outside the geometry's "

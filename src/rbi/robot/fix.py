@@ -61,7 +61,8 @@ def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
         codes = {flag.code for flag in each.flags if flag.level == "error"}
         if not codes & set(FIXED_CODES):
             continue
-        reason = "; ".join(f"{flag.code}: {flag.message}" for flag in each.flags if flag.level == "error")
+        reason = "; ".join(f"{flag.code}: {flag.summary or flag.message}" for flag in each.flags
+                           if flag.level == "error")
         why_not = _why_not(report, each, density)
         if why_not is not None:
             plan.unfixable.append((each.link.label, why_not))
@@ -139,9 +140,8 @@ def _change(report: AuditReport, each: LinkAudit, density: float | None, reason:
         indent = _indent(text, link_element.start) + "  "
         inner = indent + "  "
     was = ("no mass" if each.declared is None or each.declared.mass == 0 else
-           f"mass {each.declared.mass:.6g} kg, principal moments "
-           f"{', '.join(f'{m:.4g}' for m in each.declared.moments)} kg·m²")
-    comment = _comment(f"rbi audit fix: was {was} ({reason}); now the mass properties of {source} {basis}")
+           f"principal moments {', '.join(f'{m:.4g}' for m in each.declared.moments)} kg·m²")
+    comment = _comment(f"rbi audit fix: was {was} ({reason}); now {source}'s mass properties {basis}")
     body = _element_text(fmt, mass, com, I, inner, indent)
     if old:
         new = f"{comment}\n{indent}{body}"

@@ -1,0 +1,41 @@
+"""The whole robot as one rbi spec: each link with mass becomes a ``custom`` part placed where
+the link is at the reference configuration (URDF/SDF: every joint at zero, in the root link's
+frame; MJCF: ``qpos0``, in the world frame), its inertia turned into those axes. ``rbi inertia``
+on that spec gives the totals ``rbi audit`` prints."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from rbi.formats.robot_model import Pose, RobotModel
+
+
+def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tuple[dict[str, Any], list[str]]:
+    """(spec, names of the links left out because they have no mass)."""
+    from rbi.robot.tree import link_poses
+
+    poses = link_poses(model, joints)
+    to_frame = Pose.identity()
+    if model.format != "mjcf":
+        roots = [link for link in model.links if link.parent is None]
+        if roots:
+            to_frame = poses[roots[0].index].inverse()
+    parts, left_out, used = [], [], set()
+    for link in model.links:
+        inertial = link.inertial
+        name = link.name or f"{model.link_word}{link.index}"
+        if inertial is None or inertial.mass == 0.0:
+            left_out.append(name)
+            continue
+        pose = to_frame.then(poses[link.index])
+        I = pose.rotation @ inertial.inertia_in_link_axes() @ pose.rotation.T
+        I = 0.5 * (I + I.T)
+        unique = name if name not in used else f"{name}_{link.index}"
+        used.add(unique)
+        parts.append({"name": unique, "shape": "custom", "mass": float(inertial.mass),
+                      "center_of_mass": [float(v) for v in pose.apply(inertial.com)],
+                      "inertia": {"ixx": float(I[0, 0]), "iyy": float(I[1, 1]), "izz": float(I[2, 2]),
+                                  "ixy": float(I[0, 1]), "ixz": float(I[0, 2]), "iyz": float(I[1, 2])}})
+    return {"name": model.name or "robot", "units": {"length": "m", "mass": "kg"}, "parts": parts}, left_out
