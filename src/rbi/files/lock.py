@@ -11,7 +11,6 @@ a stale lock (only an empty file, which the next run reuses).
 from __future__ import annotations
 
 import os
-from pathlib import Path
 
 from rbi.errors import InputError
 from rbi.files import safe
@@ -67,8 +66,3 @@ class OutputLock:
 
     def __exit__(self, *exc) -> None:
         self.release()
-
-
-def lock_path(out: str | os.PathLike) -> Path:
-    """Where the lock of ``out`` lives."""
-    return safe.beside(out, OutputLock.SUFFIX)
