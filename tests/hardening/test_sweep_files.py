@@ -108,13 +108,14 @@ def interrupted_parquet(tmp_path, monkeypatch):
 
 
 def refused_unchanged(out: Path, *words, resume=True, args=ARGS):
-    """`--resume` (or a fresh run) on ``out`` is one line, exit 2, fast, and changes no file."""
+    """`--resume` (or a fresh run) on ``out`` is one line, exit 2, without waiting, and changes no
+    file (the whole command, spec loading included, on a shared machine: well under 5 s)."""
     before = snapshot(out.parent)
     started = time.monotonic()
     proc = rbi("sweep", *args, "--out", out, *(["--resume"] if resume else []))
     elapsed = time.monotonic() - started
     one_line_exit_2(proc, *words)
-    assert elapsed < 1.0, elapsed
+    assert elapsed < 5.0, elapsed  # the checks themselves take microseconds: tests/files/test_safe.py
     assert snapshot(out.parent) == before
     return proc
 
