@@ -129,6 +129,10 @@ def test_latency_has_first_run_and_every_timed_target(quick_run):
     assert per_file["per_file_ms"] == pytest.approx(
         1000 * (many["median_s"] - labels["rbi inertia bodies/top.yaml --format json"]["median_s"]) / 599)
     assert per_file["target_ms"] == 5.0
+    # where the start-up goes: every module's own import time, summed by package
+    imports = lat["imports"]
+    assert imports["groups_ms"]["numpy"] > 0 and imports["groups_ms"]["typer and click"] == 0  # the quick path
+    assert sum(imports["groups_ms"].values()) == pytest.approx(imports["total_ms"])
     first = lat["first_run"]
     assert first["ratio"] == pytest.approx(first["first_median_s"] / first["later_median_s"])
     assert first["files_left_in_home"] == []  # nothing compiled or cached in HOME

@@ -56,6 +56,14 @@ def test_start_up_targets_per_file_in_ms_and_whole_process_as_a_ratio():
     assert targets({"latency": lat})[0]["met"] is None
 
 
+def test_import_breakdown_rows_are_sorted_with_shares_and_a_total():
+    from rbi.bench.report import import_rows
+
+    rows = import_rows({"total_ms": 200.0, "groups_ms": {"numpy": 80.0, "pydantic": 100.0, "rich (tables)": 20.0}})
+    assert rows == [["pydantic", "100", "50%"], ["numpy", "80", "40%"], ["rich (tables)", "20", "10%"],
+                    ["all imports", "200", "100%"]]
+
+
 def test_sample_runs_spread_over_the_grid():
     g = {"spin": (150.0, 260.0, 100), "tilt": (0.01, 1.0, 100), "duration": 4.0}
     picks = sweep.sample_runs(g, 10)

@@ -100,6 +100,43 @@ def per_file_cost(rows: list[dict], files: int) -> dict:
             "ratio_to_one_file_process": per_file / one["median_s"]}
 
 
+IMPORT_GROUPS = (
+    # (group, module prefixes), first match wins; the rest is "the rest of the standard library"
+    ("numpy", ("numpy",)),
+    ("pydantic (and pydantic-core, typing helpers)", ("pydantic", "pydantic_core", "annotated_types", "typing_extensions",
+                                                      "typing_inspection")),
+    ("rbi's spec models (built by pydantic as they are defined)", ("rbi.spec.models", "rbi.spec.expect", "rbi.spec.fields")),
+    ("PyYAML", ("yaml", "_yaml")),
+    ("rich (tables)", ("rich",)),
+    ("typer and click", ("typer", "click")),
+    ("rbi, other modules", ("rbi",)),
+)
+
+
+def import_breakdown(bodies: Path, repeats: int) -> dict:
+    """Where ``rbi inertia bodies/top.yaml``'s start-up goes, from ``python -X importtime``: each
+    imported module's own time (its "self" column, so a package is counted once whoever
+    imported it first), the smallest of ``repeats`` runs, summed by :data:`IMPORT_GROUPS`."""
+    import re
+
+    argv = [sys.executable, "-X", "importtime", "-m", "rbi", "inertia", str(bodies / "top.yaml")]
+    best: dict[str, int] = {}
+    for _ in range(repeats):
+        proc = subprocess.run(argv, capture_output=True, text=True, timeout=600)
+        if proc.returncode != 0:
+            return {"error": f"exit {proc.returncode}"}
+        seen = {m[2]: int(m[1]) for m in re.finditer(r"import time:\s+(\d+) \|\s+\d+ \| *(\S+)", proc.stderr)}
+        best = seen if not best else {name: min(us, best.get(name, us)) for name, us in seen.items()}
+    groups = {name: 0 for name, _ in IMPORT_GROUPS} | {"the rest of the standard library": 0}
+    for module, us in best.items():
+        group = next((name for name, prefixes in IMPORT_GROUPS
+                      if any(module == p or module.startswith(p + ".") for p in prefixes)), "the rest of the standard library")
+        groups[group] += us
+    return {"command": "python -X importtime -m rbi inertia bodies/top.yaml", "repeats": repeats,
+            "modules": len(best), "groups_ms": {name: us / 1000 for name, us in groups.items()},
+            "total_ms": sum(best.values()) / 1000}
+
+
 def first_run(bodies: Path, repeats: int) -> dict:
     """The first ``rbi simulate`` in a fresh, empty HOME (and cache folder) against the run just
     after it in the same HOME, ``repeats`` times with a new HOME each time; medians and their
@@ -136,7 +173,7 @@ def time_process(argv: list[str], env: dict | None = None) -> tuple[float, int, 
 
 
 def planned_steps(quick: bool) -> int:
-    return len(commands(Path("."), None)) + 1 + (0 if quick else 2)
+    return len(commands(Path("."), None)) + 2 + (0 if quick else 2)
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
@@ -169,6 +206,8 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
                         "repeats": repeats})
         progress("latency: first rbi simulate in a fresh HOME")
         first = first_run(bodies, 3 if quick else 7)
+        progress("latency: where rbi inertia's start-up goes (python -X importtime)")
+        imports = import_breakdown(bodies, 3 if quick else 7)
     baseline = rows[0].get("median_s")
     for row in rows:
         if baseline and "median_s" in row:
@@ -176,7 +215,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         if row["command"] in TARGETS:
             row["target"] = TARGETS[row["command"]]
     return {"baseline": rows[0]["command"], "commands": rows, "first_run": first,
-            "per_file": per_file_cost(rows, len(many_bodies(bodies)))}
+            "per_file": per_file_cost(rows, len(many_bodies(bodies))), "imports": imports}
 
 
 def spread(values: list[float]) -> float:

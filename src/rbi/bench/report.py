@@ -401,7 +401,30 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
                 f"Each command ran once untimed (warm OS file caches), then repeatedly; the "
                 f"median is compared with `{lat['baseline']}` measured in the same run.", "",
                 _md_table(LATENCY_COLUMNS, latency_rows(lat))]
+        out += _imports_markdown(lat.get("imports"))
     return "\n".join(out) + "\n"
+
+
+IMPORT_COLUMNS = ["imported", "time [ms]", "share"]
+
+
+def import_rows(imports: dict) -> list[list[str]]:
+    total = imports["total_ms"]
+    groups = sorted(imports["groups_ms"].items(), key=lambda item: -item[1])
+    return [[name, number(ms, 3), f"{100 * ms / total:.0f}%"] for name, ms in groups] + [["all imports", number(total, 3), "100%"]]
+
+
+def _imports_markdown(imports: dict | None) -> list[str]:
+    if not imports or "error" in imports:
+        return []
+    return ["", "### Where `rbi inertia`'s start-up goes", "",
+            f"`{imports['command']}`: the time each of the {imports['modules']} imported modules takes itself "
+            f"(Python's \"self\" column, so a package counts once whoever imports it first), smallest of "
+            f"{imports['repeats']} runs, summed by package. `-X importtime` adds its own overhead, so these add up "
+            "to more than the import part of a plain run; the shares are what to compare. The rest of a run is "
+            "the interpreter's own start-up and the work itself (reading and validating the spec, about a "
+            "millisecond for a small one, then printing).", "",
+            _md_table(IMPORT_COLUMNS, import_rows(imports))]
 
 
 def _kernel_markdown(k: dict | None) -> list[str]:

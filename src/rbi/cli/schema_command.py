@@ -11,9 +11,9 @@ from rbi.cli.options import FormatOption, OutputFormat
 
 def spec_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of a body spec, generated from the pydantic models."""
-    from rbi.spec.models import BodySpec
+    from rbi.spec.models import body_spec_json_schema
 
-    schema = _plain_descriptions(BodySpec.model_json_schema(mode="validation"))
+    schema = _plain_descriptions(body_spec_json_schema())
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "title": "rbi body spec",

@@ -6,22 +6,28 @@ absolute number or a percentage of the expected value's magnitude.
 
 from __future__ import annotations
 
-from pydantic import Field, model_validator
+from pydantic import ConfigDict, Field, model_validator
 
 from rbi.spec.fields import AboutPoint, InertiaMatrix, Number, StrictModel as _Strict, Tolerance, Vector3
 
 
-class ScalarExpectation(_Strict):
+class _BuiltWhenUsed(_Strict):
+    """Built when a spec first has an `expect:` block (start-up time: see docs/performance.md)."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, defer_build=True)
+
+
+class ScalarExpectation(_BuiltWhenUsed):
     value: Number = Field(description="Expected value, in the file's units.")
     tol: Tolerance = Field(description="Allowed deviation: an absolute number in file units, or a percentage such as 1%.")
 
 
-class VectorExpectation(_Strict):
+class VectorExpectation(_BuiltWhenUsed):
     value: Vector3 = Field(description="Expected point [x, y, z], body frame, file units.")
     tol: Tolerance = Field(description="Allowed deviation of each component: an absolute number in file units, or a percentage.")
 
 
-class MomentsExpectation(_Strict):
+class MomentsExpectation(_BuiltWhenUsed):
     """Principal moments (compared in ascending order) about ``about``."""
 
     value: Vector3 = Field(description="Expected principal moments, ascending, mass·length².")
@@ -29,7 +35,7 @@ class MomentsExpectation(_Strict):
     about: AboutPoint = Field("com", description="Point the moments are about: com, origin, pivot or [x, y, z].")
 
 
-class InertiaExpectation(_Strict):
+class InertiaExpectation(_BuiltWhenUsed):
     """The inertia matrix about ``about``, body axes."""
 
     value: InertiaMatrix = Field(description="Expected inertia matrix, body axes, mass·length².")
@@ -37,7 +43,7 @@ class InertiaExpectation(_Strict):
     about: AboutPoint = Field("com", description="Point the inertia is about: com, origin, pivot or [x, y, z].")
 
 
-class Expect(_Strict):
+class Expect(_BuiltWhenUsed):
     """What ``rbi check`` compares: at least one of the quantities below."""
 
     mass: ScalarExpectation | None = Field(None, description="Expected total mass.")

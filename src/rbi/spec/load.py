@@ -283,14 +283,15 @@ def _known_fields(loc: tuple[Any, ...], raw: Any) -> list[str]:
     models along the error's location, through optional, list and union-of-shape fields."""
     from pydantic import BaseModel
 
+    from rbi.spec.expect import Expect
     from rbi.spec.models import SHAPE_MODELS, BodySpec
 
     model: Any = BodySpec
     for item in loc[:-1]:
         if isinstance(item, int):
             continue
-        if model is BodySpec and item == "parts":
-            model = SHAPE_MODELS
+        if model is BodySpec and item in ("parts", "expect"):  # fields read by a validator of their own
+            model = SHAPE_MODELS if item == "parts" else Expect
             continue
         if model is SHAPE_MODELS:
             model = SHAPE_MODELS.get(item)
@@ -330,7 +331,8 @@ def spec_from_raw(path: str, raw: Any):
     :class:`InputError` with the first problem."""
     spec, problems = validation_messages(path, raw)
     if problems:
-        more = f" (+{len(problems) - 1} more; `rbi validate {path}` lists all)" if len(problems) > 1 else ""
+        named = STDIN if path == STDIN_LABEL else path
+        more = f" (+{len(problems) - 1} more; `rbi validate {named}` lists all)" if len(problems) > 1 else ""
         part, field = _first_location(raw)
         raise InputError(problems[0] + more, file=path, part=part, field=field)
     return spec

@@ -10,7 +10,7 @@ from __future__ import annotations
 from typing import Annotated, Any, Literal, Union
 
 import numpy as np
-from pydantic import Field, PrivateAttr, model_validator
+from pydantic import ConfigDict, Field, PlainValidator, PrivateAttr, ValidationError, model_validator
 
 from rbi.spec.expect import Expect
 from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
@@ -22,6 +22,11 @@ MassUnit = Literal["kg", "g", "lb"]
 
 
 _Strict = StrictModel
+
+_BUILT_WHEN_USED = ConfigDict(extra="forbid", frozen=True, defer_build=True)
+"""Models of the parts (and what only parts hold): pydantic builds a model's validator when it
+is first used rather than when the class is defined, so reading a spec builds only the shapes
+it has (start-up time: see docs/performance.md)."""
 
 
 class Units(_Strict):
@@ -35,6 +40,8 @@ class Pattern(_Strict):
     """Copies of a part: ``count`` equal copies turned evenly about the line along ``axis``
     through ``through`` (the part as written is the first), or ``count`` copies in a row,
     each ``step`` further on. ``mass`` and ``density`` are per copy."""
+
+    model_config = _BUILT_WHEN_USED
 
     count: Annotated[int, Field(strict=True, ge=1, le=100_000,
                                 description="Number of copies, the part as written included (1 to 100000).")]
@@ -56,6 +63,8 @@ class Pattern(_Strict):
 
 
 class _Part(_Strict):
+    model_config = _BUILT_WHEN_USED
+
     name: str | None = Field(None, description="A name for the part, shown in tables and error messages; unique within the body.")
     pattern: Pattern | None = Field(None, description="Repeat this part: copies about an axis line or in a row.")
 
@@ -138,6 +147,8 @@ class Rotation(_Strict):
     ``angle_deg`` (right-hand rule); ``quaternion`` ``[w, x, y, z]`` (normalised); or
     ``euler_deg`` with a ``sequence`` of three axis letters (lower case: fixed axes, upper
     case: moving axes, as scipy's ``Rotation.from_euler``). The part turns about its own centre."""
+
+    model_config = _BUILT_WHEN_USED
 
     axis: Vector3 | None = Field(None, description="Axis of an axis-angle rotation (need not be unit length).")
     angle_deg: Number | None = Field(None, description="Angle of an axis-angle rotation, degrees, right-hand rule.")
@@ -393,6 +404,39 @@ SHAPE_MODELS: dict[str, type[_Part]] = {
 """Every part model by its ``shape`` tag; new shapes are added here."""
 
 Part = Annotated[Union[tuple(SHAPE_MODELS.values())], Field(discriminator="shape")]
+"""A part of any shape, as one discriminated union (what the JSON Schema describes)."""
+
+
+def _part_of_its_shape(value: Any) -> _Part:
+    """Validate one part with the model of its ``shape`` only, reporting problems exactly as
+    the union :data:`Part` does (same error types, context and locations, the shape tag
+    included), so that a spec builds only the part models it uses."""
+    if isinstance(value, _Part):
+        return value
+    if not isinstance(value, dict):
+        raise _union_error("model_attributes_type", value)
+    if "shape" not in value:
+        raise _union_error("union_tag_not_found", value, {"discriminator": "'shape'"})
+    tag = value["shape"] if isinstance(value["shape"], str) else str(value["shape"])
+    model = SHAPE_MODELS.get(tag)
+    if model is None:
+        raise _union_error("union_tag_invalid", value, {"discriminator": "'shape'", "tag": tag,
+                                                          "expected_tags": ", ".join(f"'{t}'" for t in SHAPE_MODELS)})
+    try:
+        return model.model_validate(value)
+    except ValidationError as exc:
+        raise ValidationError.from_exception_data("Part", [
+            {"type": e["type"], "loc": (tag, *e["loc"]), "input": e["input"], **({"ctx": e["ctx"]} if "ctx" in e else {})}
+            for e in exc.errors(include_url=False)]) from None
+
+
+def _union_error(kind: str, value: Any, ctx: dict | None = None) -> ValidationError:
+    return ValidationError.from_exception_data("Part", [{"type": kind, "loc": (), "input": value,
+                                                         **({"ctx": ctx} if ctx else {})}])
+
+
+PartOfItsShape = Annotated[Any, PlainValidator(_part_of_its_shape)]
+"""How :class:`BodySpec` reads a part: as :data:`Part`, building only the model of its shape."""
 
 
 class PointCloudRef(_Strict):
@@ -400,6 +444,19 @@ class PointCloudRef(_Strict):
     columns mass,x,y,z or a ``.npy`` (N, 4) array; path relative to the spec's folder."""
 
     file: Annotated[str, Field(min_length=1, description="A .csv (columns mass,x,y,z) or .npy (N×4) file, relative to the spec's folder.")]
+
+
+PARTS_DESCRIPTION = "The parts, each placed in the body frame."
+EXPECT_DESCRIPTION = "Expected values that `rbi check` compares with the computed ones."
+
+
+def _expectations(value: Any) -> Expect | None:
+    return value if value is None or isinstance(value, Expect) else Expect.model_validate(value)
+
+
+ExpectationsWhenGiven = Annotated[Any, PlainValidator(_expectations)]
+"""How :class:`BodySpec` reads ``expect:``: as ``Expect | None``, its models built only for a
+spec that has the block."""
 
 
 class BodySpec(_Strict):
@@ -412,9 +469,9 @@ class BodySpec(_Strict):
         None, description="The body-frame direction the body spins about (need not be unit length): --spin turns "
                           "about it and the tilt and precession reported are its own. Default: the symmetry axis "
                           "when the body has one, else z.")
-    parts: list[Part] = Field(default_factory=list, description="The parts, each placed in the body frame.")
+    parts: list[PartOfItsShape] = Field(default_factory=list, description=PARTS_DESCRIPTION)
     point_cloud: PointCloudRef | None = Field(None, description="Many point masses read from one file.")
-    expect: Expect | None = Field(None, description="Expected values that `rbi check` compares with the computed ones.")
+    expect: ExpectationsWhenGiven = Field(None, description=EXPECT_DESCRIPTION)
 
     @model_validator(mode="after")
     def _spin_axis_has_a_direction(self):
@@ -449,3 +506,14 @@ class BodySpec(_Strict):
                                  f"of parts[{first}]; each part needs its own name (e.g. {free!r}) or none")
             seen[key] = i
         return self
+
+
+def body_spec_json_schema() -> dict[str, Any]:
+    """The JSON Schema of :class:`BodySpec`, each part described as :data:`Part` (the union of
+    every shape) rather than as the validator that picks one."""
+    from pydantic import create_model
+
+    described = create_model("BodySpec", __base__=BodySpec, __doc__=BodySpec.__doc__,
+                             parts=(list[Part], Field(default_factory=list, description=PARTS_DESCRIPTION)),
+                             expect=(Expect | None, Field(None, description=EXPECT_DESCRIPTION)))
+    return described.model_json_schema(mode="validation")
