@@ -26,6 +26,7 @@ _RANDOM = [f for f in _ALL_URDFS if f"{os.sep}random_urdfs{os.sep}" in f]
 # the 1000 generated blobs are alike (one mesh, one placeholder inertia): every 20th is audited here
 URDFS = [f for f in _ALL_URDFS if f not in _RANDOM] + _RANDOM[::20]
 MJCFS = sorted(glob.glob(os.path.join(GYM, "*.xml")))
+SDFS = sorted(glob.glob(os.path.join(PYBULLET, "**", "*.sdf"), recursive=True))
 
 REFUSED = {  # file (relative to pybullet_data) → words of the one-line reason; defects of the files
     "bicycle/bike.urdf": "'0.07,'",                               # a comma inside xyz
@@ -34,6 +35,12 @@ REFUSED = {  # file (relative to pybullet_data) → words of the one-line reason
     "racecar/racecar_differential.urdf": "scale: expected 1 or 3",  # scale="1 1 1 1"
     "differential/diff_ring.urdf": "no such file",                # mesh path relative to the wrong folder
     "kuka_iiwa/model_for_sdf.urdf": "no such file",               # names meshes/coarse/, not shipped
+    "kuka_iiwa/model2.sdf": "no such file",                       # meshes/coarse/ again
+    "kuka_iiwa/kuka_world.sdf": "no such file",
+    "kuka_iiwa/kuka_with_gripper.sdf": "leaves the spec's folder",   # an absolute /meshes/link_0.stl
+    "kuka_iiwa/kuka_with_gripper2.sdf": "leaves the spec's folder",
+    "stadium.sdf": "no volume",                                    # a flat mesh its only geometry
+    "stadium_no_collision.sdf": "no volume",
 }
 
 TIMES: dict[str, float] = {}
@@ -148,3 +155,17 @@ def test_gymnasium_mjcf_agrees_with_mujoco(path):
         assert not each.has_error, each.flags  # MuJoCo compiled these: nothing unphysical
     assert report.total.mass == pytest.approx(model.body_subtreemass[0], rel=1e-9)
     assert _relative_error(report.total.center_of_mass, data.subtree_com[0]) < 1e-9
+
+
+@pytest.mark.parametrize("path", SDFS, ids=_relative)
+def test_pybullet_sdf(path):
+    """Read, or refused for a defect of the file; the totals are the sum of the links' masses."""
+    relative = _relative(path)
+    if relative in REFUSED:
+        with pytest.raises(InputError) as caught:
+            _audit(path)
+        assert REFUSED[relative] in str(caught.value)
+        return
+    report, _ = _audit(path)
+    masses = [each.declared.mass for each in report.links if each.declared is not None]
+    assert report.total.mass == pytest.approx(sum(masses), rel=1e-12)

@@ -110,6 +110,9 @@ def distribution(geom: Geom, mode: str = "exact", where: str = "") -> Distributi
             raise InputError(f"{where}{geom.label}: {exc}") from None
         inertia = (R * moments) @ R.T
         corners = np.abs(R) @ _half_extent(geom.kind, geom.size)
+        if not (np.isfinite(measure) and np.all(np.isfinite(inertia))):
+            raise InputError(f"{where}{geom.label}: size {list(geom.size)}: too large to compute with (its volume or "
+                             "inertia overflows a double); give sizes in metres")
         return Distribution(measure, p.copy(), 0.5 * (inertia + inertia.T), p - corners, p + corners, geom.shell)
     if geom.kind == "mesh":
         mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
@@ -142,7 +145,7 @@ def _mesh(geom: Geom, mode: str, where: str):
     if key in _MESHES:
         return _MESHES[key]
     try:
-        vertices, faces = _mesh_arrays(path, mode)
+        vertices, faces = _mesh_arrays(path)
     except ValueError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: {_hinted(str(exc), mode)}") from None
     vertices = vertices * scale
@@ -150,32 +153,18 @@ def _mesh(geom: Geom, mode: str, where: str):
         faces = faces[:, ::-1]
     if not np.all(scale):
         raise InputError(f"{where}{geom.label}: scale {scale.tolist()}: a zero scale flattens the mesh")
-    from rbi.core import mesh as core_mesh
+    from rbi.core.mesh import mesh_distribution
 
-    if hasattr(core_mesh, "mesh_distribution"):
-        try:
-            found = core_mesh.mesh_distribution(vertices, faces, mode)
-        except ValueError as exc:
-            raise InputError(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}") from None
-        measure, centroid, inertia = found.measure, found.centroid, found.inertia_per_density
-    else:
-        if mode == "convex":
-            from scipy.spatial import ConvexHull
-
-            try:
-                hull = ConvexHull(vertices)
-            except Exception:  # noqa: BLE001 - Qhull refuses flat or degenerate point sets
-                raise InputError(f"{where}{geom.label}: {path.name}: mesh encloses no volume: its points lie in a "
-                                 "plane or on a line, so even its convex hull is flat") from None
-            faces = _outward(hull.points, hull.simplices)
-            vertices = hull.points
-        elif mode == "shell":
-            raise InputError(f"{where}{geom.label}: mesh inertia 'shell' is not available in this build")
-        props = core_mesh.enclosed_volume_properties(vertices, faces)
-        measure, centroid, inertia = props.volume, props.centroid, props.inertia_per_density
-    used = vertices[np.unique(faces)]
-    result = (float(measure), np.asarray(centroid, float), np.asarray(inertia, float), used.min(axis=0),
-              used.max(axis=0))
+    try:
+        found = mesh_distribution(vertices, faces, mode)
+    except ValueError as exc:
+        raise InputError(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}") from None
+    if not (np.isfinite(found.measure) and np.all(np.isfinite(found.inertia_per_density))):
+        raise InputError(f"{where}{geom.label}: {path.name}: scale {scale.tolist()}: too large to compute with "
+                         "(the mesh's volume or inertia overflows a double)")
+    used = found.vertices[np.unique(found.faces)]
+    result = (float(found.measure), np.asarray(found.centroid, float), np.asarray(found.inertia_per_density, float),
+              used.min(axis=0), used.max(axis=0))
     _MESHES[key] = result
     return result
 
@@ -185,46 +174,22 @@ CLOSED_HINT = ("; audit it with --mesh-inertia convex (the solid convex hull) or
 
 
 def _hinted(message: str, mode: str) -> str:
-    """A mesh refusal in exact mode, with the audit options that read such a mesh."""
+    """A mesh refusal in exact mode, with the audit options that read such a mesh (instead of
+    the spec's keys that the core's message names)."""
     if mode != "exact" or "closed" not in message:
         return message
     return message.split("; for such a mesh")[0] + CLOSED_HINT
 
 
-def _outward(points, simplices):
-    centre = points.mean(axis=0)
-    faces = np.array(simplices, dtype=np.int64)
-    a, b, c = points[faces[:, 0]], points[faces[:, 1]], points[faces[:, 2]]
-    flip = np.einsum("ij,ij->i", np.cross(b - a, c - a), a - centre) < 0
-    faces[flip] = faces[flip][:, ::-1]
-    return faces
-
-
-def _mesh_arrays(path, mode: str):
-    """Vertices and faces of the mesh file, welded; for ``exact`` mode checked closed (ValueError
-    naming what is wrong)."""
-    from rbi.formats import mesh_file
-
-    if mode == "exact" and not hasattr(__import__("rbi.core.mesh", fromlist=["x"]), "mesh_distribution"):
-        solid = mesh_file.read_mesh_solid(path)
-        return solid.vertices, solid.faces
-    reader = getattr(mesh_file, "read_mesh_arrays", None)
-    if reader is not None:
-        return reader(path)
-    from rbi.core.mesh import weld_vertices
+def _mesh_arrays(path):
+    """Welded vertices and faces of the mesh file (ValueError naming what is wrong)."""
+    from rbi.formats.mesh_file import MESH_FILE_TYPES, read_mesh_arrays
 
     suffix = path.suffix.lower()
-    file_type = mesh_file.MESH_FILE_TYPES.get(suffix)
-    if file_type is None:
-        raise ValueError(f"unknown mesh format {suffix or '(no extension)'!r}: use one of "
-                         f"{', '.join(mesh_file.MESH_FILE_TYPES)}")
-    data = path.read_bytes()
-    if len(data) > mesh_file.MAX_MESH_BYTES:
-        raise ValueError("file too large for a mesh")
-    vertices, faces = mesh_file._parse(data, file_type)  # noqa: SLF001 - until formats.mesh_file offers arrays
-    if faces.ndim != 2 or faces.shape[0] == 0 or not np.all(np.isfinite(vertices)):
-        raise ValueError("mesh holds no triangles")
-    return weld_vertices(vertices, faces)
+    if suffix not in MESH_FILE_TYPES:
+        raise ValueError(f"unknown mesh format {suffix or '(no extension)'!r}: rbi reads "
+                         f"{', '.join(MESH_FILE_TYPES)}")
+    return read_mesh_arrays(path)
 
 
 class MassProperties(NamedTuple):
