@@ -133,6 +133,7 @@ def test_latency_has_first_run_and_every_timed_target(quick_run):
     imports = lat["imports"]
     assert imports["groups_ms"]["numpy"] > 0 and imports["groups_ms"]["typer and click"] == 0  # the quick path
     assert sum(imports["groups_ms"].values()) == pytest.approx(imports["total_ms"])
+    assert lat["bytecode_compiled"] is True  # no timed run compiles rbi's sources
     first = lat["first_run"]
     assert first["ratio"] == pytest.approx(first["first_median_s"] / first["later_median_s"])
     assert first["files_left_in_home"] == []  # nothing compiled or cached in HOME

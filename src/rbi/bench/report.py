@@ -399,7 +399,9 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
     if lat:
         out += ["", "## Whole-process latency", "",
                 f"Each command ran once untimed (warm OS file caches), then repeatedly; the "
-                f"median is compared with `{lat['baseline']}` measured in the same run.", "",
+                f"median is compared with `{lat['baseline']}` measured in the same run"
+                + (", rbi's bytecode having been compiled first, as `pip install` does." if lat.get("bytecode_compiled")
+                   else "."), "",
                 _md_table(LATENCY_COLUMNS, latency_rows(lat))]
         out += _imports_markdown(lat.get("imports"))
     return "\n".join(out) + "\n"
