@@ -562,7 +562,7 @@ def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
 def audit(robot_file: str | os.PathLike, *, package_paths: dict[str, str] | Sequence[str] | None = None,
           geometry: str = "collision", density: float | None = None, material: str | None = None,
           mesh_inertia: str = "exact", joints: dict[str, float] | Sequence[str] | None = None,
-          fix: bool = False, allow_outside_paths: bool = False) -> "AuditReport":
+          fix: bool = False, allow_outside_paths: bool = False, mesh_repair: bool = False) -> "AuditReport":
     """Audit a robot file (URDF ``.urdf``, SDF ``.sdf``, MJCF ``.xml``, or ``.xacro`` with the
     ``xacro`` extra) as ``rbi audit`` does: each link's declared mass properties against its own
     geometry, with flags, and the whole robot's totals. SI units; vectors and matrices in each
@@ -581,6 +581,8 @@ def audit(robot_file: str | os.PathLike, *, package_paths: dict[str, str] | Sequ
             metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
         fix: also plan the fixed copy: ``report.fix.content`` (bytes), ``.changes``, ``.unfixable``.
         allow_outside_paths: let the file name meshes and includes outside its folder.
+        mesh_repair: close meshes' holes of three or four edges first (each repair, with the
+            area it added, is listed in ``report.notes``).
 
     Returns:
         An `AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``,
@@ -595,7 +597,7 @@ def audit(robot_file: str | os.PathLike, *, package_paths: dict[str, str] | Sequ
 
     return run_audit(robot_file, package_paths=package_paths, geometry=geometry, density=density,
                      material=material, mesh_inertia=mesh_inertia, joints=joints, fix=fix,
-                     allow_outside_paths=allow_outside_paths)
+                     allow_outside_paths=allow_outside_paths, mesh_repair=mesh_repair)
 
 
 def __getattr__(name: str):

@@ -427,3 +427,15 @@ def test_mjcf_compiler_features_agree_with_mujoco(tmp_path, settotalmass):
             link["name"]
     assert result["total"]["mass"] == pytest.approx(model.body_subtreemass[0], rel=1e-12)
     assert np.allclose(result["total"]["center_of_mass"], data.subtree_com[0], rtol=0, atol=1e-13)
+
+
+def test_mesh_repair_closes_a_small_hole_and_says_so(tmp_path):
+    (tmp_path / "open.obj").write_text(BOX_OBJ.replace("f 5 6 7\n", ""))  # one triangle missing: a 3-edge hole
+    text = robot(urdf_link("a", 2.0, GOOD).replace('<box size="0.2 0.1 0.05"/>',
+                                                   '<mesh filename="open.obj" scale="0.2 0.1 0.05"/>'))
+    path = write(tmp_path, "r.urdf", text)
+    one_line_exit_2(run_rbi_inprocess("audit", path), "open.obj", "not closed", "--mesh-repair", "--mesh-inertia convex")
+    proc, result = audit_json(path, "--mesh-repair")
+    assert proc.returncode == 0, proc.stderr
+    assert result["links"][0]["geometry"]["volume"] == pytest.approx(0.001, rel=1e-14)
+    assert any("--mesh-repair closed holes with 1 triangle(s), 0.01 m²" in note for note in result["notes"])

@@ -15,33 +15,46 @@ import typer
 
 from rbi.cli.options import FormatOption, OutputFormat
 
-
-def audit(
-    file: Annotated[str, typer.Argument(help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False,
-                                        metavar="ROBOT_FILE")],
-    package_path: Annotated[Optional[list[str]], typer.Option(
+RobotFileArgument = Annotated[str, typer.Argument(help="Robot description: .urdf, .sdf or MJCF (.xml).",
+                                                  show_default=False, metavar="ROBOT_FILE")]
+PackagePathOption = Annotated[Optional[list[str]], typer.Option(
         "--package-path", metavar="NAME=DIR",
         help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
-             "(ROS_PACKAGE_PATH is searched too).")] = None,
-    geometry: Annotated[str, typer.Option(
+             "(ROS_PACKAGE_PATH is searched too).")]
+GeometryOption = Annotated[str, typer.Option(
         "--geometry", metavar="collision|visual",
-        help="Which geometry gives a link's volume (a link without it falls back to the other).")] = "collision",
-    density: Annotated[Optional[float], typer.Option(
-        "--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³).")] = None,
-    material: Annotated[Optional[str], typer.Option(
-        "--material", metavar="NAME", help="Built-in material for links that declare no mass (steel, aluminium, ...).")] = None,
-    mesh_inertia: Annotated[str, typer.Option(
+        help="Which geometry gives a link's volume (a link without it falls back to the other).")]
+DensityOption = Annotated[Optional[float], typer.Option(
+        "--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³).")]
+MaterialOption = Annotated[Optional[str], typer.Option(
+        "--material", metavar="NAME", help="Built-in material for links that declare no mass (steel, aluminium, ...).")]
+MeshInertiaOption = Annotated[str, typer.Option(
         "--mesh-inertia", metavar="exact|convex|shell",
         help="Mass of a mesh: the solid it encloses (exact; the mesh must be closed), its convex hull, "
-             "or its surface (shell, as MuJoCo).")] = "exact",
-    joints: Annotated[Optional[list[str]], typer.Option(
+             "or its surface (shell, as MuJoCo).")]
+MeshRepairOption = Annotated[bool, typer.Option(
+        "--mesh-repair", help="Close meshes' small holes (three or four edges) first; the area added is reported.")]
+JointsOption = Annotated[Optional[list[str]], typer.Option(
         "--joints", metavar="NAME=VALUE",
         help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
-             "repeat for several. Default: zero (MJCF: qpos0).")] = None,
-    fix: Annotated[bool, typer.Option(
-        "--fix", help="Replace each flagged inertial by its geometry's; without --out, show the changes only.")] = False,
-    out: Annotated[Optional[str], typer.Option(
-        "--out", "-o", metavar="FILE", help="With --fix: where to write the fixed copy of the robot file.")] = None,
+             "repeat for several. Default: zero (MJCF: qpos0).")]
+FixOption = Annotated[bool, typer.Option(
+        "--fix", help="Replace each flagged inertial by its geometry's; without --out, show the changes only.")]
+OutOption = Annotated[Optional[str], typer.Option(
+        "--out", "-o", metavar="FILE", help="With --fix: where to write the fixed copy of the robot file.")]
+
+
+def audit(
+    file: RobotFileArgument,
+    package_path: PackagePathOption = None,
+    geometry: GeometryOption = "collision",
+    density: DensityOption = None,
+    material: MaterialOption = None,
+    mesh_inertia: MeshInertiaOption = "exact",
+    mesh_repair: MeshRepairOption = False,
+    joints: JointsOption = None,
+    fix: FixOption = False,
+    out: OutOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Check each link's mass, centre of mass and inertia against its own geometry.
@@ -65,7 +78,8 @@ def audit(
 
     target = _fix_target(file, fix, out)
     report = run_audit(file, package_paths=package_path, geometry=geometry, density=density, material=material,
-                       mesh_inertia=mesh_inertia, joints=joints, fix=fix, allow_outside_paths=_outside_allowed.get())
+                       mesh_inertia=mesh_inertia, joints=joints, fix=fix, allow_outside_paths=_outside_allowed.get(),
+                       mesh_repair=mesh_repair)
     code = report.exit_code
     if target is not None:
         from rbi.cli.output import write_output

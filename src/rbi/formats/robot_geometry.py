@@ -99,9 +99,11 @@ def _half_extent(kind: str, size) -> np.ndarray:
     return np.array([size[0], size[0], size[1] / 2 + size[0]])  # capsule
 
 
-def distribution(geom: Geom, mode: str = "exact", where: str = "") -> Distribution | None:
+def distribution(geom: Geom, mode: str = "exact", where: str = "", repair: bool = False,
+                 notes: list[str] | None = None) -> Distribution | None:
     """``geom``'s distribution in the link frame; None for a kind that carries no mass (plane,
-    height field). ``mode`` is the mesh inertia mode (MJCF geoms give their own)."""
+    height field). ``mode`` is the mesh inertia mode (MJCF geoms give their own); ``repair``
+    closes a mesh's small holes first (trimesh's ``fill_holes``), each repair noted in ``notes``."""
     R, p = geom.pose.rotation, geom.pose.translation
     if geom.kind in ("box", "sphere", "cylinder", "capsule", "ellipsoid"):
         try:
@@ -116,7 +118,10 @@ def distribution(geom: Geom, mode: str = "exact", where: str = "") -> Distributi
         return Distribution(measure, p.copy(), 0.5 * (inertia + inertia.T), p - corners, p + corners, geom.shell)
     if geom.kind == "mesh":
         mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
-        measure, centroid, inertia, low, high = _mesh(geom, mode, where)
+        measure, centroid, inertia, low, high, added = _mesh(geom, mode, where, repair)
+        if added and notes is not None:
+            notes.append(f"{where}{geom.label}: {geom.mesh_file.name}: --mesh-repair closed holes with {added[0]} "
+                         f"triangle(s), {added[1]:.4g} m² in all")
         inertia = R @ inertia @ R.T
         return Distribution(measure, R @ centroid + p, 0.5 * (inertia + inertia.T), *_turned_bounds(R, p, low, high),
                             mode == "shell")
@@ -133,13 +138,14 @@ def _turned_bounds(R, p, low, high):
 _MESHES: dict[tuple, tuple] = {}
 
 
-def _mesh(geom: Geom, mode: str, where: str):
-    """(measure, centroid, inertia per density, low, high) of the scaled mesh in its own frame."""
+def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
+    """(measure, centroid, inertia per density, low, high, (faces added, area added) or None) of
+    the scaled mesh in its own frame."""
     path = geom.mesh_file
     scale = geom.mesh_scale if geom.mesh_scale is not None else np.ones(3)
     try:
         status = path.stat()
-        key = (str(path.resolve()), status.st_size, status.st_mtime_ns, tuple(scale), mode)
+        key = (str(path.resolve()), status.st_size, status.st_mtime_ns, tuple(scale), mode, repair)
     except OSError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: cannot read: {exc.strerror}") from None
     if key in _MESHES:
@@ -153,9 +159,14 @@ def _mesh(geom: Geom, mode: str, where: str):
         faces = faces[:, ::-1]
     if not np.all(scale):
         raise InputError(f"{where}{geom.label}: scale {scale.tolist()}: a zero scale flattens the mesh")
-    from rbi.core.mesh import mesh_distribution
+    from rbi.core.mesh import mesh_distribution, repair_mesh
 
+    added = None
     try:
+        if repair:
+            repaired = repair_mesh(vertices, faces)
+            faces = repaired.faces
+            added = (repaired.added_faces, repaired.added_area) if repaired.added_faces else None
         found = mesh_distribution(vertices, faces, mode)
     except ValueError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}") from None
@@ -164,13 +175,13 @@ def _mesh(geom: Geom, mode: str, where: str):
                          "(the mesh's volume or inertia overflows a double)")
     used = found.vertices[np.unique(found.faces)]
     result = (float(found.measure), np.asarray(found.centroid, float), np.asarray(found.inertia_per_density, float),
-              used.min(axis=0), used.max(axis=0))
+              used.min(axis=0), used.max(axis=0), added)
     _MESHES[key] = result
     return result
 
 
-CLOSED_HINT = ("; audit it with --mesh-inertia convex (the solid convex hull) or --mesh-inertia shell (mass on "
-               "the surface)")
+CLOSED_HINT = ("; audit it with --mesh-inertia convex (the solid convex hull), --mesh-inertia shell (mass on "
+               "the surface) or --mesh-repair (closes holes of three or four edges)")
 
 
 def _hinted(message: str, mode: str) -> str:

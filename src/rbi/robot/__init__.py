@@ -13,7 +13,7 @@ from rbi.robot.audit import AuditReport
 def audit(robot_file: str | os.PathLike, *, package_paths: Mapping[str, str] | Sequence[str] | None = None,
           geometry: str = "collision", density: float | None = None, material: str | None = None,
           mesh_inertia: str = "exact", joints: Mapping[str, float] | Sequence[str] | None = None,
-          fix: bool = False, allow_outside_paths: bool = False) -> AuditReport:
+          fix: bool = False, allow_outside_paths: bool = False, mesh_repair: bool = False) -> AuditReport:
     """Audit a URDF, SDF or MJCF file: every link's declared mass properties against its
     geometry, with flags, and the whole robot's totals at a configuration.
 
@@ -23,7 +23,8 @@ def audit(robot_file: str | os.PathLike, *, package_paths: Mapping[str, str] | S
     ``mesh_inertia``: ``"exact"``, ``"convex"`` or ``"shell"``; ``joints``: ``{NAME: VALUE}`` (or
     ``["NAME=VALUE", ...]``), radians for revolute joints, metres for prismatic ones (default:
     zero, MJCF ``qpos0``); ``fix``: also plan the fixed copy (``report.fix``: its bytes, the
-    changes, the links that could not be fixed). Raises :class:`rbi.SpecError` on bad input.
+    changes, the links that could not be fixed); ``mesh_repair``: close meshes' small holes
+    (three or four edges) first, each repair listed in ``report.notes``. Raises :class:`rbi.SpecError` on bad input.
     """
     from rbi.formats.paths import outside_paths_allowed
     from rbi.formats.robot_files import read_robot
@@ -41,7 +42,8 @@ def audit(robot_file: str | os.PathLike, *, package_paths: Mapping[str, str] | S
     rho = material_density(material, density)
     with outside_paths_allowed(allow_outside_paths):
         model = read_robot(os.fspath(robot_file), packages, geometry=True)
-        report = audit_model(model, geometry=geometry, density=rho, mesh_inertia=mesh_inertia, joints=joint_values)
+        report = audit_model(model, geometry=geometry, density=rho, mesh_inertia=mesh_inertia, joints=joint_values,
+                             mesh_repair=mesh_repair)
     report.fix = None
     if fix:
         from rbi.robot.fix import plan_fix

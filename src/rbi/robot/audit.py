@@ -184,7 +184,8 @@ def material_density(material: str | None, density: float | None) -> float | Non
 
 
 def audit_model(model: RobotModel, *, geometry: str = "collision", density: float | None = None,
-                mesh_inertia: str = "exact", joints: dict[str, float] | None = None) -> AuditReport:
+                mesh_inertia: str = "exact", joints: dict[str, float] | None = None,
+                mesh_repair: bool = False) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
     from rbi.robot.tree import totals
 
@@ -193,12 +194,14 @@ def audit_model(model: RobotModel, *, geometry: str = "collision", density: floa
     if mesh_inertia not in MESH_INERTIA_MODES:
         raise InputError(f"--mesh-inertia: {mesh_inertia!r}: must be one of {', '.join(MESH_INERTIA_MODES)}")
     carried = _carried_mass(model)
+    repairs: list[str] = []
     links = [audit_link(model, link, geometry=geometry, density=density, mesh_inertia=mesh_inertia,
-                        carries_mass=carried.get(link.index, False)) for link in model.links]
-    notes = list(model.unchecked) + list(model.notes)
+                        carries_mass=carried.get(link.index, False), mesh_repair=mesh_repair, notes=repairs)
+             for link in model.links]
+    notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
     return AuditReport(model, links, totals(model, joints), notes,
                        {"geometry": geometry, "density": density, "mesh_inertia": mesh_inertia,
-                        "joints": dict(joints or {})})
+                        "joints": dict(joints or {}), "mesh_repair": mesh_repair})
 
 
 def _carried_mass(model: RobotModel) -> dict[int, bool]:
@@ -228,7 +231,8 @@ def _carried_mass(model: RobotModel) -> dict[int, bool]:
     return result
 
 
-def link_geometry(model: RobotModel, link: Link, geometry: str, mesh_inertia: str):
+def link_geometry(model: RobotModel, link: Link, geometry: str, mesh_inertia: str, mesh_repair: bool = False,
+                  notes: list[str] | None = None):
     """(source, pieces) for the link: each piece (distribution, mass or None); MJCF geoms carry
     their own mass or density."""
     first, second = (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
@@ -236,7 +240,7 @@ def link_geometry(model: RobotModel, link: Link, geometry: str, mesh_inertia: st
     where = f"{model.path}: {link.label}: "
     pieces = []
     for geom in geoms:
-        found = distribution(geom, mesh_inertia, where)
+        found = distribution(geom, mesh_inertia, where, mesh_repair, notes)
         if found is None or not found.measure > 0:
             continue
         own_mass = None
@@ -247,12 +251,13 @@ def link_geometry(model: RobotModel, link: Link, geometry: str, mesh_inertia: st
 
 
 def audit_link(model: RobotModel, link: Link, *, geometry: str = "collision", density: float | None = None,
-               mesh_inertia: str = "exact", carries_mass: bool = False) -> LinkAudit:
+               mesh_inertia: str = "exact", carries_mass: bool = False, mesh_repair: bool = False,
+               notes: list[str] | None = None) -> LinkAudit:
     inertial = link.inertial
     declared = None
     if inertial is not None:
         declared = MassProps(inertial.mass, inertial.com.copy(), inertial.inertia_in_link_axes())
-    source, pieces = link_geometry(model, link, geometry, mesh_inertia)
+    source, pieces = link_geometry(model, link, geometry, mesh_inertia, mesh_repair, notes)
     geo = _geometry_props(model, pieces, source, declared, density)
     result = LinkAudit(link, declared, geo)
     result.flags = _flags(model, link, result, carries_mass)
