@@ -185,11 +185,14 @@ CLOSED_HINT = ("; audit it with --mesh-inertia convex (the solid convex hull), -
 
 
 def _hinted(message: str, mode: str) -> str:
-    """A mesh refusal in exact mode, with the audit options that read such a mesh (instead of
-    the spec's keys that the core's message names)."""
-    if mode != "exact" or "closed" not in message:
-        return message
-    return message.split("; for such a mesh")[0] + CLOSED_HINT
+    """A mesh refusal with the audit's options where the core's message names the spec's keys
+    (``inertia: convex`` is ``--mesh-inertia convex`` here, ``repair: true`` ``--mesh-repair``)."""
+    if mode == "exact" and "closed" in message:
+        return message.split("; for such a mesh")[0] + CLOSED_HINT
+    for key, option in (("inertia: convex", "--mesh-inertia convex"), ("inertia: shell", "--mesh-inertia shell"),
+                        ("inertia: exact", "--mesh-inertia exact"), ("repair: true", "--mesh-repair")):
+        message = message.replace(key, option)
+    return message
 
 
 def _mesh_arrays(path):
