@@ -160,6 +160,36 @@ def test_a_binary_stl_beyond_the_triangle_cap_is_refused_before_it_is_read(tmp_p
     one_line_exit_2(inertia(tmp_path, "cube.stl"), "mesh has 12 triangles; rbi reads at most 11", "decimate")
 
 
+PEAK_PROBE = """
+import resource, sys
+from pathlib import Path
+from rbi.formats.mesh_file import read_mesh_solid
+try:
+    read_mesh_solid(Path(sys.argv[1]))
+    print("read")
+except ValueError as exc:
+    print(exc)
+print(resource.getrusage(resource.RUSAGE_SELF).ru_maxrss)
+"""
+
+
+def test_a_252_mib_binary_stl_is_refused_from_its_header_in_little_memory(tmp_path):
+    # the file of issue 18 (5,274,750 triangles under the 256 MiB size cap peaked at 4.6 GB):
+    # a sparse file with that header, refused before any triangle is read
+    import subprocess
+    import sys
+
+    count = 5_274_750
+    path = tmp_path / "big.stl"
+    with open(path, "wb") as out:
+        out.write(b"binary".ljust(80, b" ") + struct.pack("<I", count))
+        out.truncate(84 + 50 * count)
+    proc = subprocess.run([sys.executable, "-c", PEAK_PROBE, str(path)], capture_output=True, text=True, timeout=120)
+    message, peak_kib = proc.stdout.strip().splitlines()
+    assert message.startswith("mesh has 5274750 triangles; rbi reads at most 2000000")
+    assert int(peak_kib) < 200 * 1024, peak_kib  # kilobytes on Linux: under 200 MB
+
+
 @pytest.mark.parametrize("name, text", [
     ("many.obj", TETRA + TETRA_FACES),
     ("many.stl", None),

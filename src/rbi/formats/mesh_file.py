@@ -99,6 +99,8 @@ def read_mesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
     file_type = MESH_FILE_TYPES[path.suffix.lower()]
 
     def make():
+        if file_type == "stl":
+            _binary_stl_cap(path)
         data = _read_bytes(path)
         vertices, faces = _PARSERS[file_type](data)
         del data
@@ -145,6 +147,20 @@ def _too_many(count: int | None) -> ValueError:
 
 
 # --- STL --------------------------------------------------------------------------------------
+
+def _binary_stl_cap(path: Path) -> None:
+    """Refuse a binary STL beyond the triangle cap from its header alone, before reading it."""
+    try:
+        with open(path, "rb") as stream:
+            head = stream.read(84)
+            size = path.stat().st_size
+    except OSError as exc:
+        raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
+    if len(head) == 84:
+        count = int.from_bytes(head[80:84], "little")
+        if size == 84 + 50 * count and count > MAX_MESH_TRIANGLES:
+            raise _too_many(count)
+
 
 _BINARY_STL_RECORD = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attribute", "<u2")])
 
