@@ -439,3 +439,60 @@ def test_mesh_repair_closes_a_small_hole_and_says_so(tmp_path):
     assert proc.returncode == 0, proc.stderr
     assert result["links"][0]["geometry"]["volume"] == pytest.approx(0.001, rel=1e-14)
     assert any("--mesh-repair closed holes with 1 triangle(s), 0.01 m²" in note for note in result["notes"])
+
+
+def test_mjcf_totals_at_joint_values_agree_with_mujoco(tmp_path):
+    """Hinge and slide coordinates (MuJoCo's qpos, radians and metres), with a ref, against
+    mj_forward's subtree mass and centre of mass."""
+    mujoco = pytest.importorskip("mujoco")
+    text = """<mujoco><compiler angle="degree"/><worldbody>
+      <body name="a" pos="0.1 0.2 0.3" euler="10 20 30"><joint name="h1" type="hinge" axis="0 1 1" pos="0 0 0.1" ref="15"/>
+        <geom type="capsule" fromto="0 0 0 0.3 0 0" size="0.03"/>
+        <body name="b" pos="0.3 0 0"><joint name="s1" type="slide" axis="1 0 0"/><joint name="h2" type="hinge" axis="0 0 1"/>
+          <geom type="box" size="0.1 0.02 0.03" pos="0.1 0 0"/></body></body></worldbody></mujoco>"""
+    path = write(tmp_path, "m.xml", text)
+    model = mujoco.MjModel.from_xml_path(str(path))
+    data = mujoco.MjData(model)
+    values = {"h1": 0.7, "s1": 0.05, "h2": -1.1}
+    for name, value in values.items():
+        data.qpos[model.jnt_qposadr[model.joint(name).id]] = value
+    mujoco.mj_forward(model, data)
+    _, result = audit_json(path, *[arg for name, value in values.items() for arg in ("--joints", f"{name}={value}")])
+    assert result["total"]["mass"] == pytest.approx(model.body_subtreemass[0], rel=1e-14)
+    assert np.allclose(result["total"]["center_of_mass"], data.subtree_com[0], rtol=0, atol=1e-14)
+
+
+SDF_ROBOT = """<?xml version="1.0"?>
+<sdf version="1.6">
+  <model name="m">
+    <link name="base">
+      <inertial><mass>2</mass><inertia><ixx>1</ixx><iyy>1</iyy><izz>1</izz></inertia></inertial>
+      <collision name="c"><geometry><box><size>0.2 0.1 0.05</size></box></geometry></collision>
+    </link>
+    <link name="arm">
+      <pose>0.5 0 0 0 0 0</pose>
+      <inertial><pose>0.1 0 0 0 0 0</pose><mass>1</mass>
+        <inertia><ixx>0.0001</ixx><iyy>0.0034</iyy><izz>0.0034</izz></inertia></inertial>
+      <collision name="c"><pose>0.1 0 0 0 0 0</pose><geometry><cylinder><radius>0.02</radius><length>0.2</length></cylinder></geometry></collision>
+    </link>
+    <joint name="j" type="revolute"><parent>base</parent><child>arm</child><axis><xyz>0 0 1</xyz></axis></joint>
+  </model>
+</sdf>
+"""
+
+
+def test_sdf_fix_and_joint_totals(tmp_path):
+    path = write(tmp_path, "m.sdf", SDF_ROBOT)
+    proc, result = audit_json(path)
+    assert proc.returncode == 1
+    assert [f["code"] for f in result["links"][0]["flags"]] == ["placeholder"]
+    assert np.allclose(result["total"]["center_of_mass"], [0.6 / 3, 0, 0], atol=1e-15)
+    _, turned = audit_json(path, "--joints", f"j={math.pi / 2}")  # the arm's CoM swings to (0.5, 0.1, 0)
+    assert np.allclose(turned["total"]["center_of_mass"], [0.5 / 3, 0.1 / 3, 0], atol=1e-15)
+    out = tmp_path / "fixed.sdf"
+    assert run_rbi_inprocess("audit", path, "--fix", "--out", out).returncode == 0
+    again_proc, again = audit_json(out)
+    assert again_proc.returncode == 0, again_proc.stdout
+    assert np.allclose(again["links"][0]["declared"]["inertia_about_com"], box_inertia(2.0, 0.2, 0.1, 0.05),
+                       rtol=1e-15, atol=0)
+    assert out.read_text().count("<link") == 2 and "rbi audit fix" in out.read_text()
