@@ -177,6 +177,13 @@ def test_shell_of_a_cube_is_six_plates():
     assert plates == pytest.approx(5 / 18 * m * a * a, rel=1e-15)
 
 
+def test_a_flat_mesh_in_exact_mode_is_pointed_to_shell():
+    square = np.array([[0, 0, 0], [2, 0, 0], [2, 1, 0], [0, 1, 0.0]])
+    sheet = np.array([[0, 1, 2], [0, 2, 3], [0, 2, 1], [0, 3, 2]])  # both sides: closed, but flat
+    with pytest.raises(MeshError, match="encloses no volume.*choose inertia: shell"):
+        mesh_mass_properties(square, sheet, "exact", mass=1.0)
+
+
 def test_shell_density_is_per_area_as_in_mujoco():
     vertices, faces = box_mesh((1, 2, 3))
     props = mesh_mass_properties(vertices, faces, "shell", density=0.5)

@@ -593,6 +593,8 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
             problem += NOT_CLOSED_HINT
         elif mode == "exact" and problem.startswith(("not consistently wound", "inside out")):
             problem += WINDING_HINT
+        elif mode == "exact" and problem.startswith("encloses no volume"):
+            problem += "; for a flat part choose inertia: shell (the mass spread over the surface)"
         raise MeshError(problem)
     volume, centroid, inertia = _integrate(vertices, faces, _volume_moments)
     return MeshDistribution(mode, volume, centroid, inertia, vertices, faces, notes)
