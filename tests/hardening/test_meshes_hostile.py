@@ -217,6 +217,15 @@ def test_a_ply_header_promising_a_trillion_vertices_is_refused_before_allocating
     one_line_exit_2(inertia(tmp_path, "liar.ply"), "header promises 1000000000000 vertices")
 
 
+def test_a_ply_beyond_its_byte_cap_is_refused_before_trimesh_parses_it(tmp_path, monkeypatch):
+    from rbi.formats import mesh_file
+    from tests.mesh_builders import write_ply
+
+    write_ply(tmp_path / "cube.ply", *box_mesh())
+    monkeypatch.setattr(mesh_file, "MAX_PLY_BYTES", 100)
+    one_line_exit_2(inertia(tmp_path, "cube.ply"), "PLY file too large", "convert it to binary STL")
+
+
 def test_an_ascii_stl_facet_with_four_vertices_is_refused(tmp_path):
     facet = ("facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\n"
              "endloop\nendfacet\n")

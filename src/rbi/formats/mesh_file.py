@@ -32,6 +32,11 @@ MAX_MESH_TRIANGLES = 2_000_000
 """Most triangles rbi reads from one mesh (a 95 MiB binary STL; an OBJ polygon counts as the
 triangles it splits into). Far above what mass properties need: decimate a finer mesh first."""
 
+MAX_PLY_BYTES = 32 * 2 ** 20
+"""Largest PLY file rbi reads (32 MiB: about 1.7 million triangles binary, 0.6 million ASCII).
+PLY is parsed by trimesh, which needs some 25 bytes of memory per byte of file (a binary PLY
+of 2 million triangles, 38 MB, peaks at 1 GB): convert a larger mesh to binary STL."""
+
 MESH_FILE_TYPES = {".stl": "stl", ".obj": "obj", ".ply": "ply"}
 """File extensions rbi reads as meshes, and the format of each."""
 
@@ -303,6 +308,9 @@ def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     the file could hold."""
     import io
 
+    if len(data) > MAX_PLY_BYTES:
+        raise ValueError(f"PLY file too large ({len(data)} bytes; rbi reads PLY up to {MAX_PLY_BYTES} bytes, "
+                         f"its parser needing some 25 bytes of memory per byte): convert it to binary STL")
     end = data.find(b"end_header")
     if not data.startswith(b"ply") or end < 0:
         raise ValueError("cannot be read as PLY (no `ply` ... `end_header` header)")
