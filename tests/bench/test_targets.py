@@ -70,3 +70,19 @@ def test_sample_runs_spread_over_the_grid():
     assert len(picks) == 10
     assert picks[0] == (150.0, 0.01) and picks[-1] == (260.0, 1.0)
     assert len(set(picks)) == 10
+
+
+def test_headline_quotes_the_kernel_measurement_the_targets_table_shows():
+    from rbi.bench.report import headline
+
+    kernel = _kernel(chapter=4.5, default=0.00188, best=0.000957)
+    kernel["chapter"]["omega_error"], kernel["default"]["omega_error"] = 6e-4, 4e-8
+    other_timing = {"ratio_default": 3197.0, "default_seconds": 0.00127, "chapter_seconds": 4.05,
+                    "chapter_orientation_error_deg": 1e-3, "default_orientation_error_deg": 1e-7,
+                    "default_no_worse": True}
+    case = {"name": "bolted top", "spec": "bodies/top_bolted.yaml", "duration": 4.0, "speedup": other_timing}
+    line = headline({"kernel": kernel, "workprecision": {"cases": [case]}})[0]
+    shown = target_rows(targets({"kernel": kernel}))[0][2]
+    assert shown == "2,394×" and f"are {shown} faster" in line and "0.00188 s against 4.5 s" in line
+    assert "(rtol 1e-09) is 4,702× faster" in line
+    assert "3,197" not in headline({"kernel": kernel, "workprecision": {"cases": [case]}})[0]

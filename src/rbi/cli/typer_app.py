@@ -60,7 +60,7 @@ app = typer.Typer(
     name="rbi",
     cls=_LazyGroup,
     help="Rigid-body calculator: mass properties, principal axes, momentum and motion of a body "
-         "described in a YAML spec. Every command takes --format table|json|csv and --help. "
+         "described in a YAML spec. Commands that print results take --format table|json|csv; every command takes --help. "
          "Files a spec names are read only from the spec's folder unless --allow-outside-paths is given.",
     no_args_is_help=True,
     add_completion=False,

@@ -1,0 +1,70 @@
+"""Every command shown with its output in README.md and docs/*.md is run, and what it prints
+is compared with what the page shows.
+
+How to write an example (the whole convention: tools/docs_examples.py and docs/README.md):
+
+    ```console
+    $ rbi inertia bodies/top.yaml --format json
+    {"name": "spinning-top", ...}
+    $ echo $?
+    0
+    ```
+
+* A fenced block whose first line starts with ``$ `` is an example; each ``$ `` line is run
+  (``rbi ...``, ``echo $?``, ``python SCRIPT``), the lines after it are its stdout and stderr
+  as a terminal shows them at ``COLUMNS=80``.
+* A page's commands run in order in one temporary folder with ``bodies/``, ``docs/``,
+  ``tools/`` linked in; a block starting ``# file: NAME`` (or ``<!-- file: NAME -->``) is
+  written there first, so a page can show the file its command reads.
+* ``...`` alone on a line: any lines; inside a line: any text (wall times and the like).
+* After changing output, rewrite every example from real runs:
+  ``.venv/bin/python tools/regen_docs.py`` (then read the diff).
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT / "tools"))
+
+import docs_examples  # noqa: E402
+
+PAGES_WITH_EXAMPLES = [p for p in docs_examples.PAGES if any(b.commands for b in docs_examples.blocks(p.read_text()))]
+
+
+@pytest.mark.parametrize("page", PAGES_WITH_EXAMPLES, ids=lambda p: p.name)
+def test_every_example_prints_what_the_page_shows(page, tmp_path):
+    wrong = []
+    for _, command, printed in docs_examples.run_page(page, tmp_path):
+        assert not any("internal error" in line or "Traceback" in line for line in printed), (command.line, printed)
+        if not docs_examples.output_matches(command.shown, printed):
+            wrong.append(f"$ {command.line}\n{docs_examples.difference(command.shown, printed)}")
+    assert not wrong, (f"{page.name}: output differs (tools/regen_docs.py rewrites it from real runs):\n\n"
+                       + "\n\n".join(wrong))
+
+
+def test_the_pages_show_commands_with_their_output():
+    shown = {p.name for p in PAGES_WITH_EXAMPLES}
+    for name in ("README.md", "inertia.md", "principal.md", "parts.md", "momentum.md", "simulate.md",
+                 "sweep.md", "export.md", "import.md", "check.md", "schema.md", "dynamics.md", "spec.md"):
+        assert name in shown, name
+
+
+def test_wildcards_match_as_documented():
+    match = docs_examples.output_matches
+    assert match(["a", "...", "d"], ["a", "b", "c", "d"]) and match(["a", "...", "b"], ["a", "b"])
+    assert not match(["a", "b"], ["a", "b", "c"])
+    assert match([" wall time   s   ..."], [" wall time   s   0.00181"])
+    assert match([" time ... s"], [" time 12.5 s"]) and not match([" time ... s"], [" time 12.5 s extra"])
+    assert match(["x  "], ["x", ""])  # trailing spaces and empty lines do not count
+
+
+def test_rewriting_keeps_the_wildcards_and_takes_the_rest_from_the_run():
+    rewrite = docs_examples.rewritten_output
+    assert rewrite(["a", "...", "tilt 31.7", "wall ... s"], ["a", "b", "tilt 31.8", "wall 0.4 s"]) == \
+        ["a", "...", "tilt 31.8", "wall ... s"]
+    assert rewrite(["old"], ["new", "lines"]) == ["new", "lines"]

@@ -1,0 +1,282 @@
+"""The command examples of README.md and docs/*.md: find them, run them, compare what they print.
+
+Shared by the docs test (tests/test_docs_examples.py) and the tool that rewrites the examples
+from real runs (tools/regen_docs.py). The convention, also described in docs/README.md:
+
+* A command example is a fenced block whose first line starts with ``$ ``. Every ``$ `` line
+  in it is run; the lines after it, up to the next ``$ `` line or the end of the block, are
+  what it prints: standard output and standard error interleaved, as a terminal shows them,
+  with ``COLUMNS=80`` and ``NO_COLOR=1``. Trailing spaces and trailing empty lines are ignored.
+* Commands that can be run: ``rbi ARGS`` (shell quoting and ``*`` globs as in bash), ``echo $?``
+  (the exit status of the command before), ``mkdir DIR``, and ``python SCRIPT ARGS`` or
+  ``.venv/bin/python SCRIPT ARGS``. Anything else (pipes, redirections) fails the test: show
+  such commands in a block without ``$ ``.
+* The commands of one page run in order, in one fresh temporary folder holding ``bodies/``,
+  ``docs/`` and ``tools/`` of the repository, so paths read as from the repository's root and
+  files a command writes land in the temporary folder.
+* A fenced block whose first line is ``# file: NAME`` (YAML, CSV, Python) or
+  ``<!-- file: NAME -->`` (XML) is written to NAME in that folder, whole, before the commands
+  after it on the page run: a page can show the file a command reads.
+* Output that changes from run to run (wall times, step counts that depend on the machine) is
+  written ``...``: a line that is just ``...`` stands for any number of lines (none included);
+  ``...`` inside a line for any text on that line, the spaces around it included (so a
+  right-aligned column may change width).
+"""
+
+from __future__ import annotations
+
+import contextlib
+import difflib
+import glob
+import io
+import os
+import re
+import shlex
+import subprocess
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[1]
+PAGES = [ROOT / "README.md", *sorted((ROOT / "docs").glob("*.md"))]
+LINKED = ("bodies", "docs", "tools")
+ENVIRONMENT = {"COLUMNS": "80", "NO_COLOR": "1", "LINES": "200"}
+WILDCARD = "..."
+
+_FENCE = re.compile(r"^(```+)([^\n]*)\n(.*?)^\1[ \t]*$", re.S | re.M)
+_FILE_MARK = re.compile(r"^(?:#|<!--)\s*file:\s*(\S+?)\s*(?:-->)?\s*$")
+
+
+@dataclass
+class Command:
+    """One ``$ `` line and the lines shown after it (``shown``: without trailing spaces)."""
+    line: str
+    shown: list[str]
+
+
+@dataclass
+class Block:
+    """A fenced block of a page: a command example, or a file to write (``file_name``)."""
+    start: int          # offset in the page's text of the block's body
+    end: int            # offset just past its body
+    commands: list[Command] = field(default_factory=list)
+    file_name: str | None = None
+    body: str = ""
+
+
+def blocks(text: str) -> list[Block]:
+    """The command examples and the files of a page's text, in order."""
+    found = []
+    for match in _FENCE.finditer(text):
+        body = match.group(3)
+        lines = body.split("\n")[:-1] if body.endswith("\n") else body.split("\n")
+        block = Block(start=match.start(3), end=match.end(3), body=body)
+        first = lines[0] if lines else ""
+        file_mark = _FILE_MARK.match(first)
+        if file_mark:
+            block.file_name = file_mark.group(1)
+        elif first.startswith("$ "):
+            for line in lines:
+                if line.startswith("$ "):
+                    block.commands.append(Command(line[2:], []))
+                else:
+                    block.commands[-1].shown.append(line.rstrip())
+        else:
+            continue
+        found.append(block)
+    return found
+
+
+# --- comparing ----------------------------------------------------------------------------
+
+def _line_pattern(line: str) -> re.Pattern:
+    pieces = line.split(WILDCARD)
+    pieces = [p.rstrip(" ") if i < len(pieces) - 1 else p for i, p in enumerate(pieces)]
+    pieces = [p.lstrip(" ") if i > 0 else p for i, p in enumerate(pieces)]
+    return re.compile(r"\s*.*?\s*".join(map(re.escape, pieces)) + r"\Z", re.S)
+
+
+def line_matches(shown: str, printed: str) -> bool:
+    if WILDCARD not in shown:
+        return shown == printed
+    return _line_pattern(shown).match(printed) is not None
+
+
+def _trimmed(lines: list[str]) -> list[str]:
+    lines = [line.rstrip() for line in lines]
+    while lines and not lines[-1]:
+        lines.pop()
+    return lines
+
+
+def output_matches(shown: list[str], printed: list[str]) -> bool:
+    """Whether ``printed`` is what ``shown`` describes (wildcards as in the module's docstring)."""
+    shown, printed = _trimmed(shown), _trimmed(printed)
+
+    def match(i: int, j: int) -> bool:
+        if i == len(shown):
+            return j == len(printed)
+        if shown[i].strip() == WILDCARD:
+            return any(match(i + 1, k) for k in range(j, len(printed) + 1))
+        return j < len(printed) and line_matches(shown[i], printed[j]) and match(i + 1, j + 1)
+
+    return match(0, 0)
+
+
+def difference(shown: list[str], printed: list[str]) -> str:
+    return "\n".join(difflib.unified_diff(_trimmed(shown), _trimmed(printed), "shown", "printed", lineterm=""))
+
+
+# --- running ------------------------------------------------------------------------------
+
+class Folder:
+    """The temporary folder a page's commands run in, with the state ``echo $?`` needs."""
+
+    def __init__(self, path: Path):
+        self.path = path
+        self.status = 0
+        for name in LINKED:
+            (path / name).symlink_to(ROOT / name)
+
+    def write(self, block: Block) -> None:
+        target = self.path / block.file_name
+        target.parent.mkdir(parents=True, exist_ok=True)
+        target.write_text(block.body)
+
+    def run(self, line: str) -> list[str]:
+        """What ``line`` prints, as lines; sets the status ``echo $?`` shows next."""
+        words = shlex.split(line)
+        if any(w in ("|", ">", ">>", "<", "2>", "&&", ";") for w in words):
+            raise ValueError(f"cannot run `{line}` (pipes and redirections): show it in a block without `$ `")
+        if words == ["echo", "$?"]:
+            return [str(self.status)]
+        if words and words[0] == "mkdir":
+            for name in words[1:]:
+                (self.path / name).mkdir(parents=True)
+            self.status = 0
+            return []
+        if words and words[0] == "rbi":
+            text, self.status = self._rbi(self._globbed(words[1:]))
+        elif words and Path(words[0]).name in ("python", "python3"):
+            text, self.status = self._python(words[1:])
+        else:
+            raise ValueError(f"cannot run `{line}`: only rbi, python, mkdir and `echo $?` are run")
+        return text.split("\n")
+
+    def _globbed(self, words: list[str]) -> list[str]:
+        out = []
+        for word in words:
+            matches = sorted(glob.glob(word, root_dir=self.path)) if any(c in word for c in "*?[") else []
+            out.extend(matches or [word])
+        return out
+
+    def _rbi(self, args: list[str]) -> tuple[str, int]:
+        """Run ``rbi.cli.app.main`` in this process (a fraction of a subprocess's start-up),
+        stdout and stderr into one buffer, in the folder, with :data:`ENVIRONMENT`."""
+        from rbi.cli.app import main
+
+        printed = io.StringIO()
+        saved = sys.argv, sys.stdin, os.getcwd(), {k: os.environ.get(k) for k in ENVIRONMENT}
+        sys.argv, sys.stdin = ["rbi", *args], io.StringIO("")
+        os.environ.update(ENVIRONMENT)
+        os.chdir(self.path)
+        status = 0
+        try:
+            with contextlib.redirect_stdout(printed), contextlib.redirect_stderr(printed):
+                main()
+        except SystemExit as exc:
+            status = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+        finally:
+            sys.argv, sys.stdin, cwd, env = saved
+            os.chdir(cwd)
+            for key, value in env.items():
+                if value is None:
+                    os.environ.pop(key, None)
+                else:
+                    os.environ[key] = value
+        return printed.getvalue(), status
+
+    def _python(self, args: list[str]) -> tuple[str, int]:
+        proc = subprocess.run([sys.executable, *args], cwd=self.path, stdout=subprocess.PIPE,
+                              stderr=subprocess.STDOUT, text=True, timeout=300,
+                              env={**os.environ, **ENVIRONMENT})
+        return proc.stdout, proc.returncode
+
+
+def run_page(page: Path, folder: Path) -> list[tuple[Block, Command, list[str]]]:
+    """Run every command example of ``page`` in ``folder``: (block, command, printed lines)."""
+    place = Folder(folder)
+    results = []
+    for block in blocks(page.read_text()):
+        if block.file_name:
+            place.write(block)
+            continue
+        for command in block.commands:
+            results.append((block, command, place.run(command.line)))
+    return results
+
+
+# --- rewriting ----------------------------------------------------------------------------
+
+def _similarity(a: str, b: str) -> float:
+    return difflib.SequenceMatcher(None, a, b).ratio()
+
+
+def _keep_inline_wildcards(shown: str, printed: str) -> str:
+    """``printed``, with the words ``shown`` had as ``...`` still ``...`` (same word count)."""
+    if line_matches(shown, printed) or WILDCARD not in shown:
+        return shown if line_matches(shown, printed) else printed
+    shown_words, printed_parts = shown.split(), re.split(r"(\s+)", printed)
+    printed_words = [p for p in printed_parts if p and not p.isspace()]
+    if len(shown_words) != len(printed_words):
+        return printed
+    words = iter(shown_words)
+    return "".join(p if not p or p.isspace() else (lambda w, p=p: WILDCARD if WILDCARD in w else p)(next(words))
+                   for p in printed_parts)
+
+
+def rewritten_output(shown: list[str], printed: list[str]) -> list[str]:
+    """The lines to show for a command that printed ``printed``: unchanged when they still
+    match, else ``printed`` itself, keeping ``shown``'s wildcards where they still fit."""
+    shown, printed = _trimmed(shown), _trimmed(printed)
+    if output_matches(shown, printed):
+        return shown
+    if not any(WILDCARD in line for line in shown):
+        return printed
+    out, position, after_gap = [], 0, False
+    for line in shown:
+        if line.strip() == WILDCARD:
+            out.append(line)
+            after_gap = True
+            continue
+        candidates = range(position, len(printed)) if after_gap else range(position, min(position + 1, len(printed)))
+        if not candidates:
+            break
+        best = max(candidates, key=lambda j: _similarity(line, printed[j]))
+        out.append(_keep_inline_wildcards(line, printed[best]))
+        position, after_gap = best + 1, False
+    if not (shown and shown[-1].strip() == WILDCARD):
+        out.extend(printed[position:])
+    return out
+
+
+def rewrite_page(page: Path, folder: Path) -> tuple[str, list[str]]:
+    """The page's text with every command's output taken from a real run, and the commands
+    whose shown output changed."""
+    text = page.read_text()
+    runs = run_page(page, folder)
+    changed = []
+    pieces, cursor = [], 0
+    for block in blocks(text):
+        if block.file_name:
+            continue
+        lines = []
+        for _, command, printed in [r for r in runs if r[0].start == block.start]:
+            new = rewritten_output(command.shown, printed)
+            if new != _trimmed(command.shown):
+                changed.append(command.line)
+            lines += [f"$ {command.line}", *new]
+        pieces += [text[cursor:block.start], "\n".join(lines) + "\n"]
+        cursor = block.end
+    pieces.append(text[cursor:])
+    return "".join(pieces), changed
