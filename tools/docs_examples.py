@@ -8,9 +8,9 @@ from real runs (tools/regen_docs.py). The convention, also described in docs/REA
   what it prints: standard output and standard error interleaved, as a terminal shows them,
   with ``COLUMNS=80`` and ``NO_COLOR=1``. Trailing spaces and trailing empty lines are ignored.
 * Commands that can be run: ``rbi ARGS`` (shell quoting and ``*`` globs as in bash), ``echo $?``
-  (the exit status of the command before), ``mkdir DIR``, and ``python SCRIPT ARGS`` or
-  ``.venv/bin/python SCRIPT ARGS``. Anything else (pipes, redirections) fails the test: show
-  such commands in a block without ``$ ``.
+  (the exit status of the command before), ``mkdir DIR``, ``cat FILE | rbi ARGS`` (FILE on
+  standard input), and ``python SCRIPT ARGS`` or ``.venv/bin/python SCRIPT ARGS``. Anything else
+  (other pipes, redirections) fails the test: show such commands in a block without ``$ ``.
 * The commands of one page run in order, in one fresh temporary folder holding ``bodies/``,
   ``docs/`` and ``tools/`` of the repository, so paths read as from the repository's root and
   files a command writes land in the temporary folder.
@@ -146,6 +146,9 @@ class Folder:
     def run(self, line: str) -> list[str]:
         """What ``line`` prints, as lines; sets the status ``echo $?`` shows next."""
         words = shlex.split(line)
+        stdin = ""
+        if len(words) > 3 and words[0] == "cat" and words[2] == "|":  # cat FILE | rbi ...: FILE on stdin
+            stdin, words = (self.path / words[1]).read_text(), words[3:]
         if any(w in ("|", ">", ">>", "<", "2>", "&&", ";") for w in words):
             raise ValueError(f"cannot run `{line}` (pipes and redirections): show it in a block without `$ `")
         if words == ["echo", "$?"]:
@@ -156,7 +159,7 @@ class Folder:
             self.status = 0
             return []
         if words and words[0] == "rbi":
-            text, self.status = self._rbi(self._globbed(words[1:]))
+            text, self.status = self._rbi(self._globbed(words[1:]), stdin)
         elif words and Path(words[0]).name in ("python", "python3"):
             text, self.status = self._python(words[1:])
         else:
@@ -170,14 +173,14 @@ class Folder:
             out.extend(matches or [word])
         return out
 
-    def _rbi(self, args: list[str]) -> tuple[str, int]:
+    def _rbi(self, args: list[str], stdin: str = "") -> tuple[str, int]:
         """Run ``rbi.cli.app.main`` in this process (a fraction of a subprocess's start-up),
         stdout and stderr into one buffer, in the folder, with :data:`ENVIRONMENT`."""
         from rbi.cli.app import main
 
         printed = io.StringIO()
         saved = sys.argv, sys.stdin, os.getcwd(), {k: os.environ.get(k) for k in ENVIRONMENT}
-        sys.argv, sys.stdin = ["rbi", *args], io.StringIO("")
+        sys.argv, sys.stdin = ["rbi", *args], io.StringIO(stdin)
         os.environ.update(ENVIRONMENT)
         os.chdir(self.path)
         status = 0
@@ -222,41 +225,68 @@ def _similarity(a: str, b: str) -> float:
     return difflib.SequenceMatcher(None, a, b).ratio()
 
 
-def _keep_inline_wildcards(shown: str, printed: str) -> str:
-    """``printed``, with the words ``shown`` had as ``...`` still ``...`` (same word count)."""
-    if line_matches(shown, printed) or WILDCARD not in shown:
-        return shown if line_matches(shown, printed) else printed
-    shown_words, printed_parts = shown.split(), re.split(r"(\s+)", printed)
-    printed_words = [p for p in printed_parts if p and not p.isspace()]
-    if len(shown_words) != len(printed_words):
-        return printed
-    words = iter(shown_words)
-    return "".join(p if not p or p.isspace() else (lambda w, p=p: WILDCARD if WILDCARD in w else p)(next(words))
-                   for p in printed_parts)
+def _likeness(shown: str, printed: str, tie_break: int) -> tuple:
+    """How likely ``printed`` is the line ``shown`` became: same first word, then similar text."""
+    same_start = shown.split()[:1] == printed.split()[:1]
+    return same_start, _similarity(shown, printed), tie_break
+
+
+def _with_inline_wildcards(line: str, shown: list[str]) -> str:
+    """``line`` as printed, or the ``shown`` line with ``...`` inside that stands for it: one
+    that matches it, else one that starts with the same words before its ``...`` (the value
+    changed: its words that were ``...`` stay ``...`` when the word count is the same)."""
+    wild = [w for w in shown if WILDCARD in w and w.strip() != WILDCARD]
+    for candidate in wild:
+        if line_matches(candidate, line):
+            return candidate
+    for candidate in wild:
+        head = candidate.split(WILDCARD)[0].strip()
+        if head and line.strip().startswith(head):
+            shown_words, parts = candidate.split(), re.split(r"(\s+)", line)
+            if len(shown_words) == len([p for p in parts if p and not p.isspace()]):
+                words = iter(shown_words)
+                return "".join(p if not p or p.isspace() else
+                               (WILDCARD if WILDCARD in (w := next(words)) else p) for p in parts)
+    return line
 
 
 def rewritten_output(shown: list[str], printed: list[str]) -> list[str]:
-    """The lines to show for a command that printed ``printed``: unchanged when they still
-    match, else ``printed`` itself, keeping ``shown``'s wildcards where they still fit."""
+    """The lines to show for a command that printed ``printed``: ``shown`` when it still
+    matches, else ``printed``, keeping ``shown``'s wildcards. Each run of lines between two
+    ``...`` lines is found again in ``printed`` (from the line most like its first to the line
+    most like its last); a run at the start or end of the output stays anchored there."""
     shown, printed = _trimmed(shown), _trimmed(printed)
     if output_matches(shown, printed):
         return shown
-    if not any(WILDCARD in line for line in shown):
-        return printed
-    out, position, after_gap = [], 0, False
+    segments, current = [], []
     for line in shown:
         if line.strip() == WILDCARD:
-            out.append(line)
-            after_gap = True
+            segments.append(current)
+            segments.append(line)
+            current = []
+        else:
+            current.append(line)
+    segments.append(current)
+    out, position = [], 0
+    for index, segment in enumerate(segments):
+        if isinstance(segment, str):  # a `...` line, kept as written
+            out.append(segment)
             continue
-        candidates = range(position, len(printed)) if after_gap else range(position, min(position + 1, len(printed)))
-        if not candidates:
+        at_start, at_end = index == 0, index == len(segments) - 1
+        if not segment or position > len(printed):
+            continue
+        rest = range(position, len(printed))
+        if not rest:
             break
-        best = max(candidates, key=lambda j: _similarity(line, printed[j]))
-        out.append(_keep_inline_wildcards(line, printed[best]))
-        position, after_gap = best + 1, False
-    if not (shown and shown[-1].strip() == WILDCARD):
-        out.extend(printed[position:])
+        first = position if at_start else max(rest, key=lambda j: _likeness(segment[0], printed[j], -j))
+        if at_end:
+            last = len(printed) - 1
+        else:
+            expected = first + len(segment) - 1
+            last = max(range(first, len(printed)),
+                       key=lambda j: _likeness(segment[-1], printed[j], -abs(j - expected)))
+        out += [_with_inline_wildcards(line, segment) for line in printed[first:last + 1]]
+        position = last + 1
     return out
 
 
