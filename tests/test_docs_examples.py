@@ -68,3 +68,4 @@ def test_rewriting_keeps_the_wildcards_and_takes_the_rest_from_the_run():
     assert rewrite(["a", "...", "tilt 31.7", "wall ... s"], ["a", "b", "tilt 31.8", "wall 0.4 s"]) == \
         ["a", "...", "tilt 31.8", "wall ... s"]
     assert rewrite(["old"], ["new", "lines"]) == ["new", "lines"]
+    assert rewrite([], ["first", "output"]) == ["first", "output"]

@@ -258,6 +258,8 @@ def rewritten_output(shown: list[str], printed: list[str]) -> list[str]:
     shown, printed = _trimmed(shown), _trimmed(printed)
     if output_matches(shown, printed):
         return shown
+    if not any(line.strip() == WILDCARD for line in shown):
+        return [_with_inline_wildcards(line, shown) for line in printed]
     segments, current = [], []
     for line in shown:
         if line.strip() == WILDCARD:

@@ -179,8 +179,10 @@ class Body:
     def __init__(self, loaded, raw=None) -> None:
         self._loaded = loaded
         self._raw = raw
-        self.warnings: list[str] = []
-        """Warnings about the spec (implausible units ...), the lines the CLI prints on stderr."""
+        self.warnings: list[str] = list(loaded.warnings)
+        """Warnings about the spec (units that look wrong for a spec without ``units:``: one
+        line naming the part and the ``units:`` that would fit), the lines the CLI prints on
+        stderr and puts in JSON as ``"warnings"``."""
 
     @property
     def path(self) -> str:

@@ -62,7 +62,11 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
         raise InputError(f"--fps: must be between 1 and 60 (got {fps})")
     target = output_target(out, "--out", ("html", "gif"), inputs=[file])
     gif_frames = _gif_frames(duration, fps) if target.format == "gif" else 0
-    prepared = prepare_run(load_body(file), spin=spin, omega=omega, tilt=tilt, tilt_axis=tilt_axis, gravity=gravity,
+    body = load_body(file)
+    from rbi.cli.render import say_warnings
+
+    say_warnings(body.warnings)
+    prepared = prepare_run(body, spin=spin, omega=omega, tilt=tilt, tilt_axis=tilt_axis, gravity=gravity,
                            duration=duration, rtol=rtol, max_steps=max_steps, yes=yes, spin_axis=spin_axis)
     data, run, tilts = animation(prepared, gif_frames)
     if target.format == "html":

@@ -95,6 +95,7 @@ def check_of(file: str):
     result = {
         "name": body.name,
         "units": body.units,
+        "warnings": list(body.warnings),
         "ok": failed == 0,
         "passed": len(checks) - failed,
         "failed": failed,

@@ -60,7 +60,7 @@ def dynamics(file: SpecFile, omega: OmegaOption = "0,0,0", alpha: AlphaOption = 
     else:
         motion, loads = _forward(file, props, I_point, r, w, about_label, force, torque, accel)
     result = {
-        "name": body.name, "units": body.units, "mode": "inverse" if inverse else "forward",
+        "name": body.name, "units": body.units, "warnings": list(body.warnings), "mode": "inverse" if inverse else "forward",
         "mass": props.mass, "center_of_mass": props.com, "about": point, "about_label": about_label,
         "omega": w, **motion, **loads,
     }

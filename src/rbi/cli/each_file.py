@@ -89,8 +89,11 @@ class _Several:
         return 2 if bad else 1 if failed else 0
 
     def write(self, label: str, one: FileReport) -> None:
-        from rbi.cli.render import to_json
+        from rbi.cli.render import say_warnings, to_json
 
+        if self.fmt != "json":
+            sys.stdout.flush()  # the warning line follows what earlier files printed
+            say_warnings(one.result.get("warnings", ()))
         if self.fmt == "json":
             sys.stdout.write(to_json({"file": label} | one.result) + "\n")
         elif self.fmt == "csv":

@@ -58,11 +58,16 @@ def export(
         "name": body.name,
         "to": to.value,
         "units": body.units,
+        "warnings": list(source.warnings),
         "mass": props.mass,
         "center_of_mass": props.com,
         "inertia": props.inertia_com,
         "xml": xml,
     }
+    if format is not OutputFormat.json:
+        from rbi.cli.render import say_warnings
+
+        say_warnings(source.warnings)
     if format is OutputFormat.table:
         sys.stdout.write(xml)
     elif format is OutputFormat.csv:

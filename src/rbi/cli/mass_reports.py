@@ -33,6 +33,7 @@ def header(body, about_label: str, about_point) -> dict:
         "center_of_mass": body.props.com,
         "about": about_point,
         "about_label": about_label,
+        "warnings": list(body.warnings),
     }
 
 

@@ -2,14 +2,6 @@
 
 from __future__ import annotations
 
-import math
-
-PLAUSIBLE_DENSITY_KG_M3 = (1.0, 25_000.0)
-"""Densities a solid can have: from aerogels and foams (a few kg/m³) to osmium (22,590)."""
-
-TYPICAL_DENSITY_KG_M3 = 3000.0
-"""The middle of engineering materials, used to guess which units a spec meant."""
-
 
 def parts(files, fmt: str = "table") -> int:
     """`rbi parts FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
@@ -57,10 +49,6 @@ def parts_of(file: str):
             "implied_density": density,
             "implied_density_si": None if density is None else density * to_si,
         })
-    for i, row in enumerate(rows):
-        warning = density_warning(row, body, i)
-        if warning:
-            say(f"warning: {body.path}: {warning}")
     if body.spec is not None:
         from rbi.spec.translate import mesh_notes
 
@@ -71,37 +59,12 @@ def parts_of(file: str):
     total = {"volume": volume if any(row["volume"] is not None for row in rows) else None,
              "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
              "principal_moments": principal_axes(body.props.inertia_com)[0]}
-    result = {"name": body.name, "units": body.units, "mass": body.props.mass,
+    result = {"name": body.name, "units": body.units, "warnings": list(body.warnings), "mass": body.props.mass,
               "center_of_mass": body.props.com, "volume": total["volume"],
               "principal_moments": total["principal_moments"], "parts": rows}
     summary = {"name": body.name, "units": body.units, "mass": body.props.mass, "center_of_mass": body.props.com,
                "volume": total["volume"], "principal_moments": total["principal_moments"], "parts": len(rows)}
     return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
-
-
-def density_warning(row: dict, body, index: int) -> str | None:
-    """A one-line warning when a solid's implied density is outside what any solid has, with
-    the units block that would make it plausible (or None)."""
-    from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
-
-    density = row["implied_density"]
-    si = row["implied_density_si"]
-    low, high = PLAUSIBLE_DENSITY_KG_M3
-    if si is None or low <= si <= high or si == 0.0:
-        return None
-    best = None
-    for length, metres in LENGTH_UNITS_IN_M.items():
-        for mass, kilograms in MASS_UNITS_IN_KG.items():
-            candidate = density * kilograms / metres ** 3
-            if low <= candidate <= high and (length, mass) != (body.length_unit, body.mass_unit):
-                distance = abs(math.log(candidate / TYPICAL_DENSITY_KG_M3))
-                if best is None or distance < best[0]:
-                    best = (distance, length, mass)
-    label = f"parts[{index}]" + (f" ({row['name']})" if not row["name"].startswith("parts[") else "")
-    text = f"{label}: implied density {si:.3g} kg/m³ is {'more' if si > high else 'less'} than any solid material has"
-    if best is not None:
-        text += f": is this spec in {best[1]} and {best[2]}? add `units: {{length: {best[1]}, mass: {best[2]}}}`"
-    return text
 
 
 def _table(body, rows, total):

@@ -82,8 +82,9 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
 
 
 def to_csv(rows: Iterable[dict[str, Any]]) -> str:
-    """CSV text: a header row from the first row's (flattened) keys, then one line a row."""
-    rows = [flatten(r) for r in rows]
+    """CSV text: a header row from the first row's (flattened) keys, then one line a row.
+    A row's ``warnings`` are not a column: they go to stderr (:func:`say_warnings`)."""
+    rows = [flatten({k: v for k, v in r.items() if k != "warnings"}) for r in rows]
     buffer = io.StringIO()
     writer = csv.writer(buffer, lineterminator="\n")
     if rows:
@@ -192,12 +193,23 @@ def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: l
     """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
     lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``."""
     refuse_non_finite(result)
+    if fmt != "json":
+        say_warnings(result.get("warnings", ()))
     if fmt == "json":
         sys.stdout.write(to_json(result) + "\n")
     elif fmt == "csv":
         sys.stdout.write(to_csv(csv_rows if csv_rows is not None else [result]))
     else:
         stdout_console().print(table())
+
+
+def say_warnings(warnings: Iterable[str]) -> None:
+    """Each warning about a body (``Body.warnings``: units that look wrong ...) as one line
+    ``rbi: warning: ...`` on stderr; JSON output carries them as ``"warnings"`` instead."""
+    from rbi.cli.terminal import say
+
+    for warning in warnings:
+        say(f"warning: {warning}")
 
 
 def refuse_non_finite(result: dict[str, Any]) -> None:

@@ -37,6 +37,9 @@ def show(
     from rbi.viz.still import part_count, view_data
 
     body = load_body(file)
+    from rbi.cli.render import say_warnings
+
+    say_warnings(body.warnings)
     data = view_data(body.name or file, part_geometry(body), body.props.com, body.props.inertia_com, body.pivot,
                      body.length_unit, body.labels["inertia"])
     if target.format == "html":

@@ -58,6 +58,7 @@ def simulate_run(run: PreparedRun, samples: int, *, error_estimate: bool = True,
     summary = {
         "name": body.name,
         "units": body.units,
+        "warnings": list(body.warnings),
         "scene": SCENE_NAMES[bool(scene.pivoted)],
         "pivot": scene.pivot,
         "gravity": scene.gravity,

@@ -39,6 +39,8 @@ class LoadedBody:
     expect: dict[str, Any] | None = None
     spin_axis: np.ndarray | None = None
     spec: Any = field(default=None, repr=False)
+    warnings: list[str] = field(default_factory=list)
+    """Lines about the spec a user should see (units that look wrong: :mod:`rbi.spec.plausibility`)."""
 
     @property
     def units(self) -> dict[str, str]:

@@ -268,6 +268,7 @@ def body_from_spec(spec: models.BodySpec, path: str):
     """Translate a validated :class:`~rbi.spec.models.BodySpec` into a
     :class:`~rbi.spec.load.LoadedBody`."""
     from rbi.spec.load import LoadedBody
+    from rbi.spec.plausibility import unit_warnings
 
     elements = []
     holes = []
@@ -329,4 +330,5 @@ def body_from_spec(spec: models.BodySpec, path: str):
         expect=spec.expect,
         spec=spec,
         spin_axis=None if spec.spin_axis is None else np.asarray(spec.spin_axis, dtype=float),
+        warnings=unit_warnings(spec, path),
     )

@@ -296,7 +296,8 @@ class Study:
     def result(self, rows: list[list[Any]] | None) -> dict[str, Any]:
         """What `rbi sweep --format json` prints: name, units, count, columns and, when the rows
         were held, the runs as objects, how many failed and (mass properties) their spread."""
-        result = {"name": self.nominal.name, "units": self.nominal.units, "count": self.plan.size,
+        result = {"name": self.nominal.name, "units": self.nominal.units,
+                  "warnings": list(self.nominal.warnings), "count": self.plan.size,
                   "columns": self.columns}
         if rows is not None:
             result["runs"] = [dict(zip(self.columns, r)) for r in rows]

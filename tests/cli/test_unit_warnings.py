@@ -1,0 +1,59 @@
+"""Every command that computes mass properties or simulates says the same one line about a
+spec whose units look wrong: on stderr for table (and CSV) output, as `"warnings"` in JSON
+(an empty list when there is nothing to say)."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from tests.conftest import BODIES, run_rbi_inprocess as rbi
+
+BALL_IN_MM = "parts:\n  - {name: ball, shape: sphere, radius: 10, mass: 0.0329, center: [0, 0, 0]}\n"
+HINT = "parts[0] (ball): implied density 7.85e-06 kg/m³ is outside 100–25,000 kg/m³ (balsa to osmium): " \
+       "lengths look like millimetres: add units: {length: mm}"
+
+COMMANDS = {
+    "inertia": [], "principal": [], "parts": [], "momentum": ["--omega", "0,0,1"],
+    "dynamics": ["--alpha", "0,0,1"], "export": ["--to", "urdf"], "simulate": ["--spin", "1", "--duration", "0.1"],
+    "sweep": ["--spin", "1:2:2", "--duration", "0.1"],
+}
+
+
+@pytest.fixture
+def ball(tmp_path):
+    path = tmp_path / "ball.yaml"
+    path.write_text(BALL_IN_MM)
+    return path
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_json_carries_the_warning_and_table_output_prints_it_once(command, ball):
+    args = COMMANDS[command]
+    as_json = rbi(command, ball, *args, "--format", "json")
+    assert as_json.returncode == 0, as_json.stderr
+    assert json.loads(as_json.stdout)["warnings"] == [f"{ball}: {HINT}"]
+    assert "rbi: warning:" not in as_json.stderr
+    table = rbi(command, ball, *args)
+    assert table.returncode == 0, table.stderr
+    assert table.stderr.splitlines().count(f"rbi: warning: {ball}: {HINT}") == 1
+    assert table.stderr.count("rbi: warning:") == 1
+
+
+@pytest.mark.parametrize("command", COMMANDS)
+def test_a_plausible_body_has_an_empty_list(command):
+    proc = rbi(command, BODIES / "top.yaml", *COMMANDS[command], "--format", "json")
+    assert json.loads(proc.stdout)["warnings"] == [] and proc.stderr == ""
+
+
+def test_check_and_several_files(ball, tmp_path):
+    budget = tmp_path / "budget.yaml"
+    budget.write_text(BALL_IN_MM + "expect:\n  mass: {value: 0.0329, tol: 1%}\n")
+    assert json.loads(rbi("check", budget, "--format", "json").stdout)["warnings"] == [f"{budget}: {HINT}"]
+    lines = rbi("inertia", ball, BODIES / "top.yaml", "--format", "json").stdout.splitlines()
+    assert [json.loads(line)["warnings"] for line in lines] == [[f"{ball}: {HINT}"], []]
+    several = rbi("inertia", ball, BODIES / "top.yaml")
+    assert several.stderr.count("rbi: warning:") == 1
+    csv = rbi("inertia", ball, "--format", "csv")
+    assert "warnings" not in csv.stdout and csv.stderr.count("rbi: warning:") == 1
