@@ -139,7 +139,7 @@ def _csv_row(each) -> dict:
 def _table(report) -> None:
     import numpy as np
 
-    from rbi.cli.render import number, stdout_console, terminal_safe
+    from rbi.cli.render import number, print_table, terminal_safe
     from rbi.cli.tables import titled
     from rbi.robot.audit import _worst_ratio
     from rbi.cli.terminal import say
@@ -162,7 +162,7 @@ def _table(report) -> None:
                       "-" if declared is None else number(declared.mass, 6),
                       "-" if geo is None or geo.implied_density is None else f"{geo.implied_density:.4g}",
                       "-" if worst is None else f"{worst:.3g}", "-" if each.com_offset is None else f"{each.com_offset:.2g}", flags)
-    stdout_console().print(table)
+    print_table(table)
     for each in report.links:
         for flag in each.flags:
             print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))

@@ -100,12 +100,13 @@ class _Several:
             self._csv_row({"file": label} | one.summary_row())
         else:
             from rbi.cli.render import stdout_console
+            from rbi.cli.tables import fitted
 
             console = stdout_console()
             if self.sections:
                 console.print()
             console.print(f"==> {label} <==", markup=False, highlight=False)
-            console.print(one.table())
+            console.print(fitted(one.table(), console))
             self.sections += 1
         sys.stdout.flush()
 

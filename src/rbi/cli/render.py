@@ -138,6 +138,21 @@ def number(value: float | None, digits: int = 6) -> str:
     return f"{value:.{digits}g}"
 
 
+NOISE_RELATIVE = 1e-12
+"""An entry smaller than this fraction of the largest entry of its matrix or vector is rounding
+noise (a 1e-18 beside a 1e-4) and prints as 0 in tables; JSON and CSV keep every digit."""
+
+
+def without_noise(values) -> np.ndarray:
+    """``values`` (a vector or matrix) with every entry below :data:`NOISE_RELATIVE` of the
+    largest magnitude among them set to 0, for printing."""
+    values = np.array(values, dtype=float)
+    finite = np.abs(values[np.isfinite(values)])
+    peak = float(finite.max()) if finite.size else 0.0
+    values[np.abs(values) < NOISE_RELATIVE * peak] = 0.0
+    return values
+
+
 def matrix_digits(matrix) -> tuple[float, str]:
     """A common power-of-ten scale for a matrix, so a table can print ``×10⁻⁶`` once."""
     peak = float(np.max(np.abs(matrix))) if np.size(matrix) else 0.0
@@ -200,7 +215,7 @@ def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: l
     elif fmt == "csv":
         sys.stdout.write(to_csv(csv_rows if csv_rows is not None else [result]))
     else:
-        stdout_console().print(table())
+        print_table(table())
 
 
 def say_warnings(warnings: Iterable[str]) -> None:
@@ -210,6 +225,15 @@ def say_warnings(warnings: Iterable[str]) -> None:
 
     for warning in warnings:
         say(f"warning: {warning}")
+
+
+def print_table(renderable) -> None:
+    """Print a table (or a group of them) on stdout fitted to the terminal's width: no number
+    cut, split or shortened (see :func:`rbi.cli.tables.fitted`)."""
+    from rbi.cli.tables import fitted
+
+    console = stdout_console()
+    console.print(fitted(renderable, console))
 
 
 def refuse_non_finite(result: dict[str, Any]) -> None:
@@ -231,4 +255,4 @@ def _has_non_finite(value: Any) -> bool:
 
 
 def vector_text(v, digits: int = 6) -> str:
-    return "[" + ", ".join(number(x, digits) for x in np.asarray(v, dtype=float)) + "]"
+    return "[" + ", ".join(number(x, digits) for x in without_noise(v)) + "]"

@@ -10,7 +10,7 @@ from rich.console import Group
 from rich.markup import escape
 from rich.table import Table
 
-from rbi.cli.render import matrix_digits, number, terminal_safe, vector_text
+from rbi.cli.render import matrix_digits, number, terminal_safe, vector_text, without_noise
 from rbi.cli.terminal import ERROR_HANDLER, ascii_only
 
 
@@ -61,13 +61,14 @@ def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
     table.add_column("value", justify="right")
     for name, unit, value in rows:
         table.add_row(name, unit, value)
+    table.rbi_layout = "quantities"  # stacked as `quantity [unit]  value` when too wide (see stacked)
     return table
 
 
 def matrix(title: str, values, unit: str, row_labels: Sequence[str] = ("x", "y", "z"),
            column_labels: Sequence[str] = ("x", "y", "z")) -> Table:
     """A 3×3 matrix with a common power-of-ten scale written once in the title."""
-    values = np.asarray(values, dtype=float)
+    values = without_noise(values)
     scale, scale_text = matrix_digits(values)
     table = titled(title)
     table.add_column(unit_header("", unit, scale_text).strip(), style="bold")
@@ -89,3 +90,88 @@ def stack(*renderables) -> Group:
 
 def vector(v) -> str:
     return vector_text(v)
+
+
+# --- fitting the terminal ---------------------------------------------------------------------
+
+def fitted(renderable, console):
+    """``renderable`` laid out for ``console``'s width, so that no number is cut, split across
+    lines or shortened to ``…``: each table's title goes on a line of its own (a long title
+    wraps as text, not squeezed to the table's width), and a table wider than the terminal is
+    printed stacked instead (:func:`stacked`). Groups are fitted part by part; anything else
+    passes unchanged."""
+    from rich.console import Group
+
+    if isinstance(renderable, Group):
+        return Group(*(fitted(part, console) for part in renderable.renderables))
+    if not isinstance(renderable, Table):
+        return renderable
+    title, renderable.title = renderable.title, None
+    if not _cells_intact(renderable, console):
+        renderable.title = title
+        return stacked(renderable, console.width)
+    return Group(_line(title), renderable) if title else renderable
+
+
+def _cells_intact(table: Table, console) -> bool:
+    """Whether ``table`` at ``console``'s width shows every cell whole on one line (headers may
+    wrap; a cell folded, wrapped or shortened to ``…`` is not whole)."""
+    from rich.text import Text
+
+    lines = ["".join(segment.text for segment in line)
+             for line in console.render_lines(table, console.options, pad=False)]
+    for column in table.columns:
+        for cell in column._cells:
+            text = cell.plain if isinstance(cell, Text) else Text.from_markup(cell).plain if isinstance(cell, str) else None
+            if text and not any(text in line for line in lines):
+                return False
+    return True
+
+
+def _line(text):
+    from rich.text import Text
+
+    return text if isinstance(text, Text) else Text.from_markup(text) if isinstance(text, str) else text
+
+
+def _plain(cell) -> str:
+    """A cell or header as the text it shows (markup read, lines joined by a space)."""
+    from rich.text import Text
+
+    if isinstance(cell, Text):
+        text = cell.plain
+    elif isinstance(cell, str):
+        text = Text.from_markup(cell).plain
+    else:
+        text = str(cell)
+    return " ".join(text.split())
+
+
+def stacked(table: Table, width: int):
+    """The rows of ``table`` one below the other, for a terminal too narrow for its columns.
+
+    A quantity/unit/value table (:func:`quantities`) gives one line a row, ``quantity [unit]``
+    on the left and the value on the right, or the value on the next line when both do not fit
+    on one. Any other table gives, per row, its first cell as a heading and then one line
+    ``header: value`` for each other column. Values are never wrapped."""
+    from rich.console import Group
+    from rich.text import Text
+
+    headers = [_plain(column.header) for column in table.columns]
+    rows = list(zip(*[[_plain(cell) for cell in column._cells] for column in table.columns]))
+    lines = [_line(table.title)] if table.title else []
+    if getattr(table, "rbi_layout", None) == "quantities":
+        for name, unit, value in rows:
+            left = f" {name}" + (f" [{unit}]" if unit else "")
+            if len(left) + 2 + len(value) <= width:
+                lines.append(Text(left + " " * (width - len(left) - len(value)) + value, no_wrap=True))
+            else:
+                lines += [Text(left), Text(" " * max(width - len(value), 3) + value, no_wrap=True)]
+        return Group(*lines)
+    label = max((len(h) for h in headers[1:]), default=0)
+    for row in rows:
+        lines.append(Text(f" {row[0]}" if row[0] else f" {headers[0]}", style="bold"))
+        for header, value in zip(headers[1:], row[1:]):
+            shown = f"{header + ':':<{label + 1}} {value}" if header else value
+            lines.append(Text(f"   {shown}", no_wrap=True))
+    return Group(*lines)

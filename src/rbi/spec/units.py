@@ -26,7 +26,7 @@ def unit_labels(length: str, mass: str) -> dict[str, str]:
         "mass": mass,
         "inertia": f"{mass}·{length}²",
         "angular_momentum": f"{mass}·{length}²/s",
-        "energy": f"{mass}·{length}²/s²",
+        "energy": "J" if (length, mass) == ("m", "kg") else f"{mass}·{length}²/s²",
         "density": f"{mass}/{length}³",
         "velocity": f"{length}/s",
         "omega": "rad/s",
