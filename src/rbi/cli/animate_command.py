@@ -42,7 +42,7 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
     The HTML page draws the parts as solids, the pivot and the ground, and the path of the tip
     of the spin axis (see --spin-axis); it plays in real time with
     play/pause, a speed control and a time slider. A GIF shows the same view as frames (it
-    needs matplotlib and pillow: pip install '.[plot]').
+    needs matplotlib and pillow: pip install '.[plot]' in rbi's source folder).
 
     \b
     Examples:

@@ -94,7 +94,10 @@ def _run() -> None:
         with outside_paths_allowed(allow_outside):
             status = quick.run(args)  # None: not a plain command line, typer reads it
             if status is None:
+                from rbi.cli.completion import enable
                 from rbi.cli.typer_app import app
+
+                enable()  # answers the shell's completion script (only when it is the caller)
 
                 status = app(args=args, prog_name="rbi", standalone_mode=False)
     except InputError as exc:
@@ -102,7 +105,9 @@ def _run() -> None:
         sys.exit(2)
     except _typer_error("UsageError") as exc:  # (the except expressions run only on an error)
         command = exc.ctx.command_path if exc.ctx is not None else "rbi"
-        say(f"{exc.format_message()} (see `{command} --help`)")
+        from rbi.cli.suggest import usage_message
+
+        say(f"{usage_message(exc)} (see `{command} --help`)")
         sys.exit(2)
     except _typer_error("Abort"):
         say("aborted")

@@ -9,6 +9,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat
 from rbi.spec.errors import InputError
 
@@ -22,8 +23,8 @@ OnlyOption = Annotated[Optional[str], typer.Option(
     help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
          "sweep (default: all).")]
 PlotOption = Annotated[Optional[str], typer.Option(
-    "--plot", metavar="FILE.png", help="Write a log–log plot of error against time, .png, .svg or .pdf (needs matplotlib: "
-                             "pip install '.[plot]' from rbi's source folder).")]
+    "--plot", metavar="FILE.png", help="Write a log–log plot of error against time, .png, .svg or .pdf "
+                             f"({needs('matplotlib', 'plot')}).")]
 WriteDocsOption = Annotated[Optional[str], typer.Option(
     "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md).")]
 
@@ -31,7 +32,7 @@ WriteDocsOption = Annotated[Optional[str], typer.Option(
 def bench(quick: QuickOption = False, only: OnlyOption = None, plot: PlotOption = None,
           write_docs: WriteDocsOption = None, format: FormatOption = OutputFormat.table) -> None:
     """Measure what accuracy costs and how fast rbi is, each target against its baseline measured in
-    the same run: the kernel against the chapter's set-up and a minimal loop, error against time
+    the same run: the integrator against the textbook's scipy RK45 set-up and a minimal loop, error against time
     for each integrator, mass properties of 10³…10⁶ point masses, large specs against a bare YAML
     load, whole-process latency against importing numpy, sweep throughput and memory.
 

@@ -13,7 +13,7 @@ def parts(files, fmt: str = "table") -> int:
 def parts_of(file: str):
     """What `rbi parts` gives for one file (:class:`rbi.cli.each_file.FileReport`).
 
-    JSON: the contract's keys, and for each part ``volume`` (length³, all copies of a pattern;
+    JSON: the keys docs/parts.md lists, and for each part ``volume`` (length³, all copies of a pattern;
     null for a part without one), ``principal_moments`` (ascending, about the part's own centre
     of mass; negative for a hole); at the top ``volume``, the solids' volume with holes taken
     away (parts without a volume add none), and ``principal_moments`` of the body about its

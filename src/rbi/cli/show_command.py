@@ -6,13 +6,15 @@ from typing import Annotated
 
 import typer
 
+from rbi.cli.extras import needs
 from rbi.cli.options import SpecFile
 
 
 def show(
     file: SpecFile,
     out: Annotated[str, typer.Option("--out", "-o", metavar="FILE.png|FILE.svg|FILE.html",
-                                     help="The picture: .png or .svg (matplotlib), or .html (3D, opens offline).")],
+                                     help="The picture: .png or .svg ("
+                                          f"{needs('matplotlib', 'plot')}), or .html (3D, opens offline).")],
 ) -> None:
     """Draw the body as specified: every part in place (holes red and translucent), the centre
     of mass, the principal axes about it (lengths in proportion to their moments, labelled

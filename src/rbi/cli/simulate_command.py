@@ -9,6 +9,7 @@ from typing import Annotated, Optional
 import numpy as np
 import typer
 
+from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, number
 from rbi.runs.settings import MAX_SAMPLES, check_run_options, check_run_settings  # noqa: F401  (re-exported)
@@ -19,8 +20,8 @@ PLOT_FORMATS = ("png", "svg", "pdf")
 PLOT_SAMPLES = 8001
 """Samples drawn in a plot: enough to show nutation loops and the wobble of a fast top."""
 
-METHOD_HELP = ("default: compiled adaptive DOP853 (fast, tight); rk45: the seed chapter's set-up (scipy RK45, "
-               "rtol 1e-8, Python right-hand side); dop853: scipy DOP853, Python right-hand side; exact: closed "
+METHOD_HELP = ("default: compiled adaptive DOP853 (fast, tight); rk45: scipy RK45 at rtol 1e-8 with a Python "
+               "right-hand side, as the textbook Mass and Inertia integrates it; dop853: scipy DOP853, Python right-hand side; exact: closed "
                "form (free body; axisymmetric top with its centre of mass on the axis).")
 
 SpinOption = Annotated[Optional[float], typer.Option("--spin", "-s", metavar="W",
@@ -64,8 +65,7 @@ YesOption = Annotated[bool, typer.Option("--yes", "-y", help="Run even when the 
 PlotOption = Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png|.svg|.pdf",
                                                    help="Plot the path of the spin axis seen from above, its tilt "
                                                         "(a free body: each principal axis's turn), ω and energy "
-                                                        "drift against time (needs matplotlib: pip install '.[plot]' "
-                                                        "from rbi's source folder, or pip install matplotlib).")]
+                                                        f"drift against time ({needs('matplotlib', 'plot')}).")]
 
 
 def simulate(file: SpecFile, spin: SpinOption = None, omega: OmegaOption = None, tilt: TiltOption = 0.0,

@@ -9,6 +9,7 @@ from typing import Annotated, Optional
 import typer
 
 from rbi.cli.simulate_command import SpinAxisOption
+from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, number
 from rbi.sim.budget import DEFAULT_MAX_STEPS
@@ -42,14 +43,15 @@ WorkersOption = Annotated[Optional[int], typer.Option("--workers", "-j", metavar
                                                       help="Cores to use (default: all).")]
 DaskOption = Annotated[Optional[str], typer.Option(
     "--dask", metavar="ADDRESS", help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
-                                      "for a local cluster (needs: pip install '.[dask]').")]
+                                      f"for a local cluster ({needs('Dask', 'dask')}).")]
 OutOption = Annotated[Optional[str], typer.Option("--out", "-o", metavar="FILE.csv|FILE.parquet",
-                                                  help="Write one row per run, streamed as runs finish.")]
+                                                  help="Write one row per run, streamed as runs finish (FILE.parquet "
+                                                       f"{needs('pyarrow', 'parquet')}).")]
 ResumeOption = Annotated[bool, typer.Option("--resume", help="Continue an interrupted sweep into --out: compute "
                                                              "only the runs missing there.")]
 PlotOption = Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png|.svg|.pdf",
                                                    help="Draw the map: largest tilt over the first two swept "
-                                                        "axes (needs matplotlib).")]
+                                                        f"axes ({needs('matplotlib', 'plot')}).")]
 MassPropertiesOption = Annotated[bool, typer.Option(
     "--mass-properties", help="No simulation: the spread of mass, centre of mass, principal moments and "
                               "principal-axis directions over the --vary values.")]

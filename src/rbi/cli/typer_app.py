@@ -22,6 +22,15 @@ class _LazyGroup(TyperGroup):
         fast_params.install(self, ctx)
         return super().parse_args(ctx, args)
 
+    def resolve_command(self, ctx, args):
+        """An unknown command is refused naming the nearest one (``did you mean inertia?``)."""
+        name = args[0] if args else None
+        if name is not None and name not in COMMANDS and not name.startswith("-"):
+            from rbi.cli.suggest import did_you_mean
+
+            ctx.fail(f"no such command {name!r}{did_you_mean(name, COMMANDS)}")
+        return super().resolve_command(ctx, args)
+
     def get_command(self, ctx, cmd_name: str):
         if cmd_name not in COMMANDS:
             return None
@@ -56,6 +65,8 @@ def _build_command(name: str):
     return command
 
 
+from rbi.cli import completion  # noqa: E402  (standard library only until an option is used)
+
 app = typer.Typer(
     name="rbi",
     cls=_LazyGroup,
@@ -79,6 +90,12 @@ def _version(value: bool) -> None:
 @app.callback()
 def _root(
     version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Print the version and exit."),
+    install_completion: bool = typer.Option(
+        False, "--install-completion", callback=completion.install_option, is_eager=True,
+        help="Install tab completion of commands, options and files for your shell (bash or zsh, from $SHELL)."),
+    show_completion: bool = typer.Option(
+        False, "--show-completion", callback=completion.show_option, is_eager=True,
+        help="Print the completion script for your shell, to install it by hand."),
     allow_outside_paths: bool = typer.Option(
         False, "--allow-outside-paths",
         help="Let a spec name files outside its own folder (point clouds, meshes); also accepted after the command."),

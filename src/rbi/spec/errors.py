@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import difflib
+import re
 from typing import Any
 
 
@@ -76,7 +77,10 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
     if kind == "literal_error":
         return f"must be one of {ctx.get('expected')} (got {_show(value)})"
     if kind == "union_tag_invalid":
-        return f"shape: unknown shape {_show(ctx.get('tag'))} (expected one of {ctx.get('expected_tags')})"
+        shapes = re.findall(r"'([^']+)'", str(ctx.get("expected_tags", "")))
+        hint = difflib.get_close_matches(str(ctx.get("tag")), shapes, n=1)
+        return (f"shape: unknown shape {_show(ctx.get('tag'))}" + (f" (did you mean '{hint[0]}'?)" if hint else "")
+                + f"; expected one of {ctx.get('expected_tags')}")
     if kind == "union_tag_not_found":
         return "shape: missing required field (which solid is this part?)"
     if kind in ("model_type", "model_attributes_type", "dict_type"):
