@@ -170,8 +170,12 @@ def stacked(table: Table, width: int):
         return Group(*lines)
     label = max((len(h) for h in headers[1:]), default=0)
     for row in rows:
+        if not any(row):  # a spacer row (before a total)
+            continue
         lines.append(Text(f" {row[0]}" if row[0] else f" {headers[0]}", style="bold"))
         for header, value in zip(headers[1:], row[1:]):
+            if not value:
+                continue
             shown = f"{header + ':':<{label + 1}} {value}" if header else value
             lines.append(Text(f"   {shown}", no_wrap=True))
     return Group(*lines)
