@@ -57,3 +57,10 @@ def test_check_and_several_files(ball, tmp_path):
     assert several.stderr.count("rbi: warning:") == 1
     csv = rbi("inertia", ball, "--format", "csv")
     assert "warnings" not in csv.stdout and csv.stderr.count("rbi: warning:") == 1
+
+
+@pytest.mark.parametrize("command, args", [("show", []), ("animate", ["--spin", "1", "--duration", "0.1"])])
+def test_pictures_print_the_warning_once(command, args, ball, tmp_path):
+    proc = rbi(command, ball, *args, "--out", tmp_path / f"{command}.html")
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stderr.splitlines().count(f"rbi: warning: {ball}: {HINT}") == 1
