@@ -190,6 +190,7 @@ def _plot(target, study, rows) -> None:
 def _table(result, columns, rows, file):
     from rbi.cli import tables
 
+    from rich import box
     from rich.table import Table
     from rich.text import Text
 
@@ -206,7 +207,8 @@ def _table(result, columns, rows, file):
     parts = []
     if rows is not None and not result.get("spread"):  # a tolerance study shows its spread instead
         shown = rows if len(rows) <= 40 else rows[:20] + [None] + rows[-20:]
-        table = Table(title=tables.plain_text(f"{result['name'] or file} — sweep"))
+        table = Table(title=tables.plain_text(f"{result['name'] or file} — sweep"), box=box.SIMPLE_HEAD,
+                      title_justify="left", show_edge=False)  # rbi's style; headers hold a line break
         hidden = {"min_tilt_deg", "precession_rate_deg_s", "steps"}  # in --out, json and csv
         keep = [i for i, name in enumerate(columns) if name not in hidden]
         columns = [columns[i] for i in keep]
@@ -225,7 +227,7 @@ def _table(result, columns, rows, file):
                             ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 4))) for v in row])
         parts.append(table)
     if result.get("spread"):
-        spread = Table(title="Spread over the ok runs")
+        spread = tables.titled("Spread over the ok runs")
         spread.add_column("quantity", no_wrap=True)
         spread.add_column("unit")
         for name in ("min", "median", "max", "std"):

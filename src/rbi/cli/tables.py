@@ -172,7 +172,8 @@ def stacked(table: Table, width: int):
     for row in rows:
         if not any(row):  # a spacer row (before a total)
             continue
-        lines.append(Text(f" {row[0]}" if row[0] else f" {headers[0]}", style="bold"))
+        heading = f"{headers[0]} {row[0]}" if row[0].isdigit() and headers[0] else row[0] or headers[0]
+        lines.append(Text(f" {heading}", style="bold"))  # `run 3`, `I1`, `beam`
         for header, value in zip(headers[1:], row[1:]):
             if not value:
                 continue
