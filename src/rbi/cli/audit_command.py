@@ -152,7 +152,7 @@ def _table(report) -> None:
     table.add_column("mass kg", justify="right", no_wrap=True)
     table.add_column("ρ kg/m³", justify="right", no_wrap=True)
     table.add_column("ratio", justify="right", no_wrap=True)
-    table.add_column("CoM off", justify="right", no_wrap=True)
+    table.add_column("CoM off ÷ size", justify="right", no_wrap=True)
     table.add_column("flags", overflow="fold")
     for each in report.links:
         declared, geo = each.declared, each.geometry
