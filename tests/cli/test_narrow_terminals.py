@@ -146,6 +146,9 @@ def test_bench_tables_at_every_width(monkeypatch):
         with contextlib.redirect_stdout(printed):
             print_table(_tables(result))
         check_printed(printed.getvalue(), known, width, "bench")
+        words = " ".join(printed.getvalue().split())
+        for target in result["targets"]:  # long texts wrap between words, never cut off
+            assert " ".join(str(target["detail"]).split()) in words, (width, target["detail"])
 
 
 def test_rounding_noise_prints_as_zero_and_json_keeps_it(monkeypatch):

@@ -155,6 +155,7 @@ def stacked(table: Table, width: int):
     on one. Any other table gives, per row, its first cell as a heading and then one line
     ``header: value`` for each other column. Values are never wrapped."""
     from rich.console import Group
+    from rich.padding import Padding
     from rich.text import Text
 
     headers = [_plain(column.header) for column in table.columns]
@@ -177,6 +178,9 @@ def stacked(table: Table, width: int):
         for header, value in zip(headers[1:], row[1:]):
             if not value:
                 continue
-            shown = f"{header + ':':<{label + 1}} {value}" if header else value
-            lines.append(Text(f"   {shown}", no_wrap=True))
+            shown = f"   {header + ':':<{label + 1}} {value}" if header else f"   {value}"
+            if len(shown) <= width:
+                lines.append(Text(shown, no_wrap=True))
+            else:  # a long text on lines of its own, wrapped between words (a number is one word)
+                lines += [Text(f"   {header}:"), Padding(Text(value), (0, 0, 0, 5))]
     return Group(*lines)
