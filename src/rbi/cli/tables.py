@@ -166,8 +166,10 @@ def stacked(table: Table, width: int):
             left = f" {name}" + (f" [{unit}]" if unit else "")
             if len(left) + 2 + len(value) <= width:
                 lines.append(Text(left + " " * (width - len(left) - len(value)) + value, no_wrap=True))
-            else:
-                lines += [Text(left), Text(" " * max(width - len(value), 3) + value, no_wrap=True)]
+            elif len(value) + 3 <= width:
+                lines += [Text(left), Text(" " * (width - len(value)) + value, no_wrap=True)]
+            else:  # longer than a line: wrapped between words (a number is one word), never cut
+                lines += [Text(left), Padding(Text(value), (0, 0, 0, 3))]
         return Group(*lines)
     label = max((len(h) for h in headers[1:]), default=0)
     for row in rows:
