@@ -75,3 +75,19 @@ def test_rbi_parts_works_on_every_bundled_body(name):
     result = json.loads(proc.stdout)
     assert sum(p["mass"] for p in result["parts"]) == pytest.approx(result["mass"], rel=1e-12)
     assert sum(p["inertia_share"] for p in result["parts"]) == pytest.approx(1.0, rel=1e-9)
+
+
+def test_a_picture_without_matplotlib_names_the_option_that_asked_for_it(monkeypatch, tmp_path, bodies):
+    """show and animate take the picture from --out; simulate and sweep from --plot."""
+    import sys
+
+    from tests.conftest import run_rbi_inprocess
+
+    monkeypatch.setitem(sys.modules, "matplotlib", None)  # import matplotlib now raises ImportError
+    shown = run_rbi_inprocess("show", bodies / "top.yaml", "--out", tmp_path / "top.png")
+    gif = run_rbi_inprocess("animate", bodies / "top.yaml", "--out", tmp_path / "top.gif")
+    plot = run_rbi_inprocess("simulate", bodies / "top.yaml", "--plot", tmp_path / "run.png")
+    for proc, option in ((shown, "--out"), (gif, "--out"), (plot, "--plot")):
+        assert proc.returncode == 2
+        assert proc.stderr.startswith(f"rbi: {option}: needs matplotlib"), proc.stderr
+    assert not any(tmp_path.iterdir())

@@ -94,7 +94,7 @@ def _gif_frames(duration: float, fps: int) -> int:
     from rbi.viz.plots import require_matplotlib
     from rbi.viz.frames import MAX_GIF_FRAMES
 
-    require_matplotlib()
+    require_matplotlib("--out")
     frames = int(duration * fps) + 1
     if frames > MAX_GIF_FRAMES:
         raise InputError(f"--duration: a GIF of {duration:g} s at {fps} frames per second would have "

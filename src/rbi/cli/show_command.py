@@ -33,7 +33,7 @@ def show(
     if target.format != "html":
         from rbi.cli.plot import require_matplotlib
 
-        require_matplotlib()
+        require_matplotlib("--out")
     from rbi.spec.geometry import part_geometry
     from rbi.spec.load import load_body
     from rbi.viz.still import part_count, view_data

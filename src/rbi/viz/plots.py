@@ -13,12 +13,13 @@ from rbi.spec.errors import InputError
 from rbi.viz.labels import MAX_LABEL_CHARS, label, plain
 
 
-def require_matplotlib() -> None:
-    """InputError with the install command when matplotlib is missing."""
+def require_matplotlib(option: str = "--plot") -> None:
+    """InputError naming ``option`` (the one that asked for a picture) with the install command
+    when matplotlib is missing."""
     try:
         import matplotlib  # noqa: F401
     except ImportError:
-        raise InputError("--plot: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib") from None
+        raise InputError(f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib") from None
 
 
 def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
