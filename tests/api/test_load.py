@@ -87,3 +87,12 @@ def test_files_a_spec_names_are_read_beside_it_or_beside_the_caller(monkeypatch,
     with pytest.raises(rbi.SpecError, match="leaves the spec's folder"):
         rbi.load(outside)
     assert rbi.load(outside, allow_outside_paths=True).mass == bracket.mass
+
+
+def test_several_problems_in_text_or_a_dict_are_counted_without_a_command_to_run():
+    """`rbi validate FILE` lists every problem of a file; a spec given as text or a dict has no
+    file to give it, so the message only counts them."""
+    with pytest.raises(rbi.SpecError) as caught:
+        rbi.load({"parts": [{"shape": "cone", "mass": -1}]})
+    message = str(caught.value)
+    assert message.startswith("<dict>: parts[0]: ") and "more)" in message and "rbi validate" not in message

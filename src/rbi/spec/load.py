@@ -334,7 +334,10 @@ def spec_from_raw(path: str, raw: Any):
     spec, problems = validation_messages(path, raw)
     if problems:
         named = STDIN if path == STDIN_LABEL else path
-        more = f" (+{len(problems) - 1} more; `rbi validate {named}` lists all)" if len(problems) > 1 else ""
+        more = ""
+        if len(problems) > 1:  # a spec given as text or a dict (rbi.load) has no file to validate
+            how = "" if named.startswith("<") else f"; `rbi validate {named}` lists all"
+            more = f" (+{len(problems) - 1} more{how})"
         part, field = _first_location(raw)
         raise InputError(problems[0] + more, file=path, part=part, field=field)
     return spec
