@@ -221,14 +221,9 @@ class Body:
         the body's symmetry axis (exactly two equal principal moments about the pivot, or about
         the centre of mass of a free body), pointing from the pivot towards the centre of mass
         (or with its largest component positive), else body z."""
-        from rbi.core.inertia import inertia_about
-        from rbi.core.spin_axis import default_spin_axis, unit_direction
+        from rbi.runs.prepare import body_spin_axis
 
-        loaded = self._loaded
-        if loaded.spin_axis is not None:
-            return unit_direction(loaded.spin_axis)
-        fixed = loaded.props.com if loaded.pivot is None else np.asarray(loaded.pivot, dtype=float)
-        return default_spin_axis(inertia_about(loaded.props, fixed), np.asarray(loaded.props.com) - fixed)
+        return body_spin_axis(self._loaded)
 
     def point(self, about: Point = "com") -> np.ndarray:
         """The reference point ``about`` as (3,) body coordinates, length unit.

@@ -6,9 +6,8 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from rbi.core.rotation import axis_angle_matrix, quaternion_to_matrix
-from rbi.core.spin_axis import (default_spin_axis, distinct_principal_axis, quaternion_from_z_to,
-                                unit_direction)
+from rbi.core.rotation import axis_angle_matrix, quaternion_to_matrix, unit_vector
+from rbi.core.spin_axis import default_spin_axis, distinct_principal_axis, quaternion_from_z_to
 
 ROD_ALONG_Y = np.diag([2.0, 1.0, 2.0])  # two equal moments: symmetry axis y
 
@@ -47,7 +46,7 @@ def test_an_axisymmetric_inertia_turned_anywhere_gives_its_turned_axis(axis, ang
 @settings(max_examples=60, deadline=None)
 @given(st.lists(st.floats(-1e300, 1e300), min_size=3, max_size=3).filter(lambda v: max(map(abs, v)) > 1e-300))
 def test_the_turn_from_z_carries_z_onto_the_axis_for_directions_of_any_size(vector):
-    a = unit_direction(vector)
+    a = unit_vector(vector)
     assert abs(np.linalg.norm(a) - 1.0) < 1e-15
     assert np.allclose(quaternion_to_matrix(quaternion_from_z_to(a)) @ [0.0, 0.0, 1.0], a, atol=1e-15)
 
@@ -60,4 +59,4 @@ def test_body_z_is_turned_by_exactly_the_identity_and_minus_z_by_half_a_turn():
 @pytest.mark.parametrize("bad", [[0.0, 0.0, 0.0], [np.nan, 0.0, 1.0], [np.inf, 0.0, 0.0]])
 def test_a_direction_needs_a_finite_length(bad):
     with pytest.raises(ValueError):
-        unit_direction(bad)
+        unit_vector(bad)

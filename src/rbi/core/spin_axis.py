@@ -3,7 +3,6 @@ vertical and azimuth (precession) a run reports.
 
 Public names:
 
-- :func:`unit_direction`: a direction of any finite size scaled to unit length.
 - :func:`distinct_principal_axis`: the axis of an axisymmetric inertia (exactly two equal moments).
 - :func:`default_spin_axis`: the rule every command uses when no axis is given.
 - :func:`quaternion_from_z_to`: the turn that carries body z onto a spin axis, so that code
@@ -18,25 +17,12 @@ from __future__ import annotations
 import numpy as np
 
 from rbi.core.inertia import principal_axes
+from rbi.core.rotation import unit_vector
 
 EQUAL_MOMENTS_RTOL = 1e-9
 """Two principal moments this close (relative to the largest) count as equal."""
 
 Z_AXIS = np.array([0.0, 0.0, 1.0])
-
-
-def unit_direction(vector) -> np.ndarray:
-    """``vector`` (3,) scaled to unit length. The largest component is divided out first, so
-    that components near the float limit (1e200) or far below it (1e-200) still give the right
-    direction. ValueError for a zero or non-finite vector."""
-    v = np.asarray(vector, dtype=float).reshape(3)
-    if not np.all(np.isfinite(v)):
-        raise ValueError(f"must be a finite direction (got {v.tolist()})")
-    largest = float(np.max(np.abs(v)))
-    if largest == 0.0:
-        raise ValueError("must not be zero [0, 0, 0]: a direction needs a length")
-    v = v / largest
-    return v / np.linalg.norm(v)
 
 
 def distinct_principal_axis(inertia: np.ndarray, rtol: float = EQUAL_MOMENTS_RTOL) -> np.ndarray | None:
@@ -78,7 +64,7 @@ def quaternion_from_z_to(axis) -> np.ndarray:
     """Unit quaternion [w, x, y, z] of the shortest turn carrying the body z axis onto the unit
     vector ``axis`` (a turn of 180° about x for ``-z``). For ``axis`` = z it is exactly
     [1, 0, 0, 0], so a quantity measured through it equals the body-z one bit for bit."""
-    a = unit_direction(axis)
+    a = unit_vector(axis)
     sine = float(np.hypot(a[0], a[1]))  # |z × a|
     if sine == 0.0:
         return np.array([1.0, 0.0, 0.0, 0.0]) if a[2] > 0.0 else np.array([0.0, 1.0, 0.0, 0.0])

@@ -37,20 +37,37 @@ class PreparedRun:
 def scene_of(body, gravity_si: float | None, spin_axis=None):
     """The scene of a loaded body: a heavy top on its pivot (a spec with ``pivot``) or a free
     body, under gravity ``gravity_si`` m/s² (None: standard gravity), converted to the spec's
-    length unit. The spin axis is ``spin_axis`` (a body-frame direction), else the spec's
-    ``spin_axis:``, else :func:`rbi.core.spin_axis.default_spin_axis`. :class:`InputError` when
-    the body cannot be simulated (no mass, a singular inertia)."""
+    length unit, spinning about :func:`body_spin_axis` (``spin_axis``: a ``--spin-axis``
+    value, or None). :class:`InputError` when the body cannot be simulated (no mass, a singular
+    inertia)."""
     from rbi.sim.scene import scene_from_properties
     from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 
     g_si = STANDARD_GRAVITY_SI if gravity_si is None else float(gravity_si)
-    if spin_axis is None:
-        spin_axis = getattr(body, "spin_axis", None)
+    axis = body_spin_axis(body, spin_axis)
     try:
-        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, g_si), spin_axis)
+        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, g_si), axis)
     except ValueError as exc:
         where = "pivot: " if body.pivot is not None else ""
         raise InputError(f"{body.path}: {where}cannot simulate: {exc}") from None
+
+
+def body_spin_axis(body, given=None) -> np.ndarray:
+    """The spin axis of a loaded body (unit, body frame): ``given`` (a ``--spin-axis`` value, see
+    :func:`spin_axis_value`), else the spec's ``spin_axis:``, else
+    :func:`rbi.core.spin_axis.default_spin_axis` of the inertia about the pivot (about the
+    centre of mass of a free body)."""
+    from rbi.core.inertia import inertia_about
+    from rbi.core.rotation import unit_vector
+    from rbi.core.spin_axis import default_spin_axis
+
+    axis = spin_axis_value(given)
+    if axis is not None:
+        return np.array(axis)
+    if body.spin_axis is not None:
+        return unit_vector(body.spin_axis)
+    fixed = np.asarray(body.props.com if body.pivot is None else body.pivot, dtype=float)
+    return default_spin_axis(inertia_about(body.props, fixed), np.asarray(body.props.com, dtype=float) - fixed)
 
 
 def initial_omega(spin, omega, spin_axis=(0.0, 0.0, 1.0)) -> list[float]:
@@ -80,9 +97,9 @@ def spin_axis_value(value) -> list[float] | None:
     vector = vector_value(value, "--spin-axis")
     if not any(vector):
         raise InputError("--spin-axis: must not be zero [0, 0, 0]: give a direction in body axes, e.g. 0,1,0 or y")
-    from rbi.core.spin_axis import unit_direction
+    from rbi.core.rotation import unit_vector
 
-    return unit_direction(vector).tolist()
+    return unit_vector(vector).tolist()
 
 
 def prepare_run(body, *, spin=None, omega=None, tilt=0.0, tilt_axis="y", gravity=None, duration=4.0,
@@ -95,7 +112,7 @@ def prepare_run(body, *, spin=None, omega=None, tilt=0.0, tilt_axis="y", gravity
     from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
     from rbi.sim.scene import initial_state
 
-    scene = scene_of(body, gravity, spin_axis_value(spin_axis))
+    scene = scene_of(body, gravity, spin_axis)
     w0 = initial_omega(spin, omega, scene.spin_axis)
     q0, omega0 = initial_state(tilt, w0, tilt_axis.lower())
     budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)

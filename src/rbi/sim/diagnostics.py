@@ -58,9 +58,6 @@ def spin_axis_in_world(q: np.ndarray, frame: np.ndarray | None = None) -> np.nda
     return np.stack((2 * (x * z + w * y), 2 * (y * z - w * x), w * w - x * x - y * y + z * z), axis=1)
 
 
-body_z_in_world = spin_axis_in_world
-
-
 def tilt_deg(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:
     """Tilt: the angle between the spin axis (body z without ``frame``) and the upward vertical,
     degrees (N,).

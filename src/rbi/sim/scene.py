@@ -102,7 +102,8 @@ def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravi
     ValueError when the inertia about the pivot (or the centre of mass) is singular, i.e. all
     the mass lies on a line through that point, or when ``spin_axis`` is zero or not finite.
     """
-    from rbi.core.spin_axis import default_spin_axis, unit_direction
+    from rbi.core.rotation import unit_vector
+    from rbi.core.spin_axis import default_spin_axis
 
     if pivot is None:
         inertia = np.array(props.inertia_com, dtype=float)
@@ -125,7 +126,7 @@ def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravi
         axis = default_spin_axis(inertia, com_from_pivot)
     else:
         try:
-            axis = unit_direction(spin_axis)
+            axis = unit_vector(spin_axis)
         except ValueError as exc:
             raise ValueError(f"spin axis: {exc}") from None
     return Scene(

@@ -195,20 +195,9 @@ class Study:
         """The one spin axis of every run (unit, body frame): ``--spin-axis``, else the spec's
         ``spin_axis``, else the nominal body's default, so that every row's tilt is of the same
         body axis even where a varied value breaks the body's symmetry."""
-        from rbi.core.inertia import inertia_about
-        from rbi.core.spin_axis import default_spin_axis, unit_direction
-        from rbi.runs.prepare import spin_axis_value
+        from rbi.runs.prepare import body_spin_axis
 
-        import numpy as np
-
-        given = spin_axis_value(self.settings.spin_axis)
-        body = self.nominal
-        if given is None and body.spin_axis is not None:
-            given = unit_direction(body.spin_axis).tolist()
-        if given is None:
-            fixed = np.asarray(body.props.com if body.pivot is None else body.pivot, dtype=float)
-            given = default_spin_axis(inertia_about(body.props, fixed), np.asarray(body.props.com) - fixed).tolist()
-        return tuple(float(c) for c in given)
+        return tuple(float(c) for c in body_spin_axis(self.nominal, self.settings.spin_axis))
 
     def _compute(self):
         """``(compute(start, stop, threads) -> rows, chunk size)`` for the executors."""
