@@ -14,7 +14,9 @@ BODIES = ROOT / "bodies"
 
 def run_rbi(*args: str, check: bool = False) -> subprocess.CompletedProcess:
     """Run the CLI in a subprocess exactly as a user would (``python -m rbi``)."""
-    proc = subprocess.run([sys.executable, "-m", "rbi", *map(str, args)], capture_output=True, text=True, timeout=300)
+    proc = subprocess.run(
+        [sys.executable, "-m", "rbi", *map(str, args)], capture_output=True, text=True, timeout=300
+    )
     if check and proc.returncode != 0:
         raise AssertionError(f"rbi {' '.join(map(str, args))} exited {proc.returncode}: {proc.stderr}")
     return proc

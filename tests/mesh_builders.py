@@ -16,16 +16,26 @@ import numpy as np
 def box_mesh(size=(1.0, 1.0, 1.0), center=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray]:
     """A box with edges ``size`` along x, y, z, centred on ``center``: 8 vertices, 12 faces."""
     a, b, c = (0.5 * float(s) for s in size)
-    corners = np.array([[x, y, z] for x in (-a, a) for y in (-b, b) for z in (-c, c)]) + np.asarray(center, float)
+    corners = np.array([[x, y, z] for x in (-a, a) for y in (-b, b) for z in (-c, c)]) + np.asarray(
+        center, float
+    )
     # vertex index = 4 i + 2 j + k for the signs (i, j, k) of (x, y, z)
-    faces = np.array([
-        [0, 1, 3], [0, 3, 2],  # x = -a, normal -x
-        [4, 6, 7], [4, 7, 5],  # x = +a
-        [0, 4, 5], [0, 5, 1],  # y = -b
-        [2, 3, 7], [2, 7, 6],  # y = +b
-        [0, 2, 6], [0, 6, 4],  # z = -c
-        [1, 5, 7], [1, 7, 3],  # z = +c
-    ])
+    faces = np.array(
+        [
+            [0, 1, 3],
+            [0, 3, 2],  # x = -a, normal -x
+            [4, 6, 7],
+            [4, 7, 5],  # x = +a
+            [0, 4, 5],
+            [0, 5, 1],  # y = -b
+            [2, 3, 7],
+            [2, 7, 6],  # y = +b
+            [0, 2, 6],
+            [0, 6, 4],  # z = -c
+            [1, 5, 7],
+            [1, 7, 3],  # z = +c
+        ]
+    )
     return corners, faces
 
 
@@ -61,7 +71,9 @@ def sphere_mesh(radius: float, rings: int, segments: int) -> tuple[np.ndarray, n
     polar = np.pi * np.arange(1, rings) / rings
     azimuth = 2.0 * np.pi * np.arange(segments) / segments
     P, A = np.meshgrid(polar, azimuth, indexing="ij")
-    body = radius * np.column_stack([(np.sin(P) * np.cos(A)).ravel(), (np.sin(P) * np.sin(A)).ravel(), np.cos(P).ravel()])
+    body = radius * np.column_stack(
+        [(np.sin(P) * np.cos(A)).ravel(), (np.sin(P) * np.sin(A)).ravel(), np.cos(P).ravel()]
+    )
     vertices = np.vstack([[[0, 0, radius]], body, [[0, 0, -radius]]])
     south = len(vertices) - 1
 
@@ -81,6 +93,7 @@ def sphere_mesh(radius: float, rings: int, segments: int) -> tuple[np.ndarray, n
 
 
 # --- file writers ------------------------------------------------------------------------------
+
 
 def _normals(vertices, faces):
     tri = np.asarray(vertices, float)[np.asarray(faces)]
@@ -124,14 +137,27 @@ def write_obj(path: Path, vertices, faces) -> Path:
 def write_ply(path: Path, vertices, faces) -> Path:
     vertices = np.asarray(vertices, float)
     faces = np.asarray(faces)
-    lines = ["ply", "format ascii 1.0", f"element vertex {len(vertices)}", "property double x",
-             "property double y", "property double z", f"element face {len(faces)}",
-             "property list uchar int vertex_indices", "end_header"]
+    lines = [
+        "ply",
+        "format ascii 1.0",
+        f"element vertex {len(vertices)}",
+        "property double x",
+        "property double y",
+        "property double z",
+        f"element face {len(faces)}",
+        "property list uchar int vertex_indices",
+        "end_header",
+    ]
     lines += [f"{p[0]!r} {p[1]!r} {p[2]!r}" for p in vertices.tolist()]
     lines += [f"3 {a} {b} {c}" for a, b, c in faces.tolist()]
     Path(path).write_text("\n".join(lines) + "\n")
     return path
 
 
-WRITERS = {"binary.stl": write_binary_stl, "ascii.stl": write_ascii_stl, "mesh.obj": write_obj, "mesh.ply": write_ply}
+WRITERS = {
+    "binary.stl": write_binary_stl,
+    "ascii.stl": write_ascii_stl,
+    "mesh.obj": write_obj,
+    "mesh.ply": write_ply,
+}
 """File name (its extension picks the format) -> writer."""

@@ -33,24 +33,44 @@ sys.path.insert(0, str(ROOT / "tools"))
 
 import docs_examples  # noqa: E402
 
-PAGES_WITH_EXAMPLES = [p for p in docs_examples.PAGES if any(b.commands for b in docs_examples.blocks(p.read_text()))]
+PAGES_WITH_EXAMPLES = [
+    p for p in docs_examples.PAGES if any(b.commands for b in docs_examples.blocks(p.read_text()))
+]
 
 
 @pytest.mark.parametrize("page", PAGES_WITH_EXAMPLES, ids=lambda p: p.name)
 def test_every_example_prints_what_the_page_shows(page, tmp_path):
     wrong = []
     for _, command, printed in docs_examples.run_page(page, tmp_path):
-        assert not any("internal error" in line or "Traceback" in line for line in printed), (command.line, printed)
+        assert not any("internal error" in line or "Traceback" in line for line in printed), (
+            command.line,
+            printed,
+        )
         if not docs_examples.output_matches(command.shown, printed):
             wrong.append(f"$ {command.line}\n{docs_examples.difference(command.shown, printed)}")
-    assert not wrong, (f"{page.name}: output differs (tools/regen_docs.py rewrites it from real runs):\n\n"
-                       + "\n\n".join(wrong))
+    assert not wrong, (
+        f"{page.name}: output differs (tools/regen_docs.py rewrites it from real runs):\n\n"
+        + "\n\n".join(wrong)
+    )
 
 
 def test_the_pages_show_commands_with_their_output():
     shown = {p.name for p in PAGES_WITH_EXAMPLES}
-    for name in ("README.md", "inertia.md", "principal.md", "parts.md", "momentum.md", "simulate.md",
-                 "sweep.md", "export.md", "import.md", "check.md", "schema.md", "dynamics.md", "spec.md"):
+    for name in (
+        "README.md",
+        "inertia.md",
+        "principal.md",
+        "parts.md",
+        "momentum.md",
+        "simulate.md",
+        "sweep.md",
+        "export.md",
+        "import.md",
+        "check.md",
+        "schema.md",
+        "dynamics.md",
+        "spec.md",
+    ):
         assert name in shown, name
 
 
@@ -65,7 +85,11 @@ def test_wildcards_match_as_documented():
 
 def test_rewriting_keeps_the_wildcards_and_takes_the_rest_from_the_run():
     rewrite = docs_examples.rewritten_output
-    assert rewrite(["a", "...", "tilt 31.7", "wall ... s"], ["a", "b", "tilt 31.8", "wall 0.4 s"]) == \
-        ["a", "...", "tilt 31.8", "wall ... s"]
+    assert rewrite(["a", "...", "tilt 31.7", "wall ... s"], ["a", "b", "tilt 31.8", "wall 0.4 s"]) == [
+        "a",
+        "...",
+        "tilt 31.8",
+        "wall ... s",
+    ]
     assert rewrite(["old"], ["new", "lines"]) == ["new", "lines"]
     assert rewrite([], ["first", "output"]) == ["first", "output"]

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import json
 import shlex
-from functools import lru_cache
+from functools import cache
 from pathlib import Path
 
 import numpy as np
@@ -18,7 +18,7 @@ from tests.conftest import BODIES, run_rbi
 EXPECTED = Path("/work/shared/cases/expected.json")
 
 
-@lru_cache(maxsize=None)
+@cache
 def rbi_json(body: str, args: str) -> dict:
     proc = run_rbi(*shlex.split(args.replace("FILE", str(BODIES / f"{body}.yaml"))), check=True)
     assert proc.stderr == ""
@@ -27,7 +27,7 @@ def rbi_json(body: str, args: str) -> dict:
 
 def printed(value, decimals):
     """``approx`` at the chapter's printed rounding: half a unit in the last printed digit."""
-    return pytest.approx(value, rel=0, abs=0.5 * 10.0 ** -decimals)
+    return pytest.approx(value, rel=0, abs=0.5 * 10.0**-decimals)
 
 
 def e6(matrix):
@@ -64,7 +64,9 @@ def test_body_frame_inertia():
 
 def test_tilted_inertia_and_its_eigenvalues():
     I = e6(rbi_json("top", "inertia FILE --rotate y:30 --format json")["inertia"])
-    np.testing.assert_allclose(I, [[246.0, 0.0, -29.33], [0.0, 262.93, 0.0], [-29.33, 0.0, 212.13]], rtol=0, atol=0.005)
+    np.testing.assert_allclose(
+        I, [[246.0, 0.0, -29.33], [0.0, 262.93, 0.0], [-29.33, 0.0, 212.13]], rtol=0, atol=0.005
+    )
     # The chapter's eigenvalues (4 decimals), for the body frame and the tilted frame alike.
     for matrix in (I, e6(rbi_json("top", "inertia FILE --format json")["inertia"])):
         np.testing.assert_allclose(np.linalg.eigvalsh(matrix), [195.2, 262.9333, 262.9333], rtol=0, atol=5e-5)
@@ -99,37 +101,67 @@ def test_bolted_principal_moments_and_axes():
 SHARED_ANSWERS = {
     "top": {
         "inertia --format json": {
-            "mass": 0.5, "center_of_mass": [0.0, 0.0, 0.052],
-            "inertia": [[0.00026293333333333335, 0.0, 0.0], [0.0, 0.00026293333333333335, 0.0],
-                        [0.0, 0.0, 0.00019520000000000006]]},
+            "mass": 0.5,
+            "center_of_mass": [0.0, 0.0, 0.052],
+            "inertia": [
+                [0.00026293333333333335, 0.0, 0.0],
+                [0.0, 0.00026293333333333335, 0.0],
+                [0.0, 0.0, 0.00019520000000000006],
+            ],
+        },
         "inertia --about pivot --format json": {
             "about": [0, 0, 0],
-            "inertia": [[0.0016149333333333334, 0.0, 0.0], [0.0, 0.0016149333333333334, 0.0],
-                        [0.0, 0.0, 0.00019520000000000006]]},
+            "inertia": [
+                [0.0016149333333333334, 0.0, 0.0],
+                [0.0, 0.0016149333333333334, 0.0],
+                [0.0, 0.0, 0.00019520000000000006],
+            ],
+        },
         "inertia --rotate y:30 --format json": {
-            "inertia": [[0.000246, 0.0, -2.9329393674832967e-05], [0.0, 0.00026293333333333335, 0.0],
-                        [-2.9329393674832967e-05, 0.0, 0.00021213333333333336]]},
+            "inertia": [
+                [0.000246, 0.0, -2.9329393674832967e-05],
+                [0.0, 0.00026293333333333335, 0.0],
+                [-2.9329393674832967e-05, 0.0, 0.00021213333333333336],
+            ]
+        },
         "principal --format json": {
-            "moments": [0.00019520000000000006, 0.00026293333333333335, 0.00026293333333333335]},
+            "moments": [0.00019520000000000006, 0.00026293333333333335, 0.00026293333333333335]
+        },
         "momentum --omega 0,0,100 --format json": {
-            "angular_momentum": [0.0, 0.0, 0.019520000000000006], "angle_deg": 0.0},
+            "angular_momentum": [0.0, 0.0, 0.019520000000000006],
+            "angle_deg": 0.0,
+        },
     },
     "top_bolted": {
         "inertia --format json": {
-            "mass": 0.52, "center_of_mass": [0.0015384615384615385, 0.0, 0.052307692307692305],
-            "inertia": [[0.0002641641025641026, 0.0, -6.153846153846153e-06], [0.0, 0.00029493333333333336, 0.0],
-                        [-6.153846153846153e-06, 0.0, 0.00022596923076923084]]},
+            "mass": 0.52,
+            "center_of_mass": [0.0015384615384615385, 0.0, 0.052307692307692305],
+            "inertia": [
+                [0.0002641641025641026, 0.0, -6.153846153846153e-06],
+                [0.0, 0.00029493333333333336, 0.0],
+                [-6.153846153846153e-06, 0.0, 0.00022596923076923084],
+            ],
+        },
         "inertia --about pivot --format json": {
             "about": [0, 0, 0],
-            "inertia": [[0.0016869333333333334, 0.0, -4.7999999999999994e-05], [0.0, 0.0017189333333333333, 0.0],
-                        [-4.8e-05, 0.0, 0.00022720000000000005]]},
+            "inertia": [
+                [0.0016869333333333334, 0.0, -4.7999999999999994e-05],
+                [0.0, 0.0017189333333333333, 0.0],
+                [-4.8e-05, 0.0, 0.00022720000000000005],
+            ],
+        },
         "principal --format json": {
             "moments": [0.00022500222348122352, 0.00026513110985210993, 0.00029493333333333336],
-            "axes": [[-0.1552338110747801, 0.0, -0.9878777575688195], [-0.9878777575688195, 0.0, 0.1552338110747801],
-                     [0.0, 1.0, 0.0]]},
+            "axes": [
+                [-0.1552338110747801, 0.0, -0.9878777575688195],
+                [-0.9878777575688195, 0.0, 0.1552338110747801],
+                [0.0, 1.0, 0.0],
+            ],
+        },
         "momentum --omega 0,0,100 --format json": {
             "angular_momentum": [-0.0006153846153846153, 0.0, 0.022596923076923084],
-            "angle_deg": 1.5599570120583215},
+            "angle_deg": 1.5599570120583215,
+        },
     },
 }
 
@@ -150,9 +182,14 @@ def assert_close(actual, expected, key):
     np.testing.assert_allclose(actual, expected, rtol=1e-9, atol=1e-9 * scale, err_msg=key)
 
 
-@pytest.mark.parametrize("body, command, values", [
-    pytest.param(body, command, values, id=f"{body}: {command}")
-    for body, cases in SHARED_ANSWERS.items() for command, values in cases.items()])
+@pytest.mark.parametrize(
+    "body, command, values",
+    [
+        pytest.param(body, command, values, id=f"{body}: {command}")
+        for body, cases in SHARED_ANSWERS.items()
+        for command, values in cases.items()
+    ],
+)
 def test_shared_expected_answers(body, command, values):
     name, options = command.split(" ", 1)
     out = rbi_json(body, f"{name} FILE {options}")

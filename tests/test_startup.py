@@ -28,8 +28,12 @@ print("STATUS " + json.dumps(status), file=sys.stderr)
 
 
 def loaded(*args: str) -> tuple[set[str], object, str]:
-    proc = subprocess.run([sys.executable, "-c", PROBE, json.dumps([str(a) for a in args])],
-                          capture_output=True, text=True, timeout=120)
+    proc = subprocess.run(
+        [sys.executable, "-c", PROBE, json.dumps([str(a) for a in args])],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     lines = proc.stderr.splitlines()
     modules = json.loads(next(line for line in lines if line.startswith("MODULES "))[8:])
     status = json.loads(next(line for line in lines if line.startswith("STATUS "))[7:])
@@ -45,8 +49,17 @@ def test_help_and_version_load_no_numpy_and_no_command_module(args):
     modules, status, out = loaded(*args)
     assert status in (0, None)
     assert out.strip()
-    for package in ("numpy", "pydantic", "yaml", "rich", "scipy", "rbi.spec.models", "rbi.spec.load", "rbi.sim",
-                    "rbi.core"):
+    for package in (
+        "numpy",
+        "pydantic",
+        "yaml",
+        "rich",
+        "scipy",
+        "rbi.spec.models",
+        "rbi.spec.load",
+        "rbi.sim",
+        "rbi.core",
+    ):
         assert not _any(modules, package), package
     assert not [m for m in modules if m.startswith("rbi.cli.") and m.endswith("_command")]
 
@@ -63,7 +76,9 @@ def test_inertia_loads_no_scipy_matplotlib_kernel_or_type_adapters(fmt):
 
 
 def test_simulate_of_a_symmetric_top_loads_no_scipy_or_matplotlib():
-    modules, status, out = loaded("simulate", BODIES / "top.yaml", "--spin", "200", "--tilt", "10", "--format", "json")
+    modules, status, out = loaded(
+        "simulate", BODIES / "top.yaml", "--spin", "200", "--tilt", "10", "--format", "json"
+    )
     assert status in (0, None)
     assert json.loads(out)
     assert "rbi.sim._dop853" in modules

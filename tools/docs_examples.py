@@ -50,6 +50,7 @@ _FILE_MARK = re.compile(r"^(?:#|<!--)\s*file:\s*(\S+?)\s*(?:-->)?\s*$")
 @dataclass
 class Command:
     """One ``$ `` line and the lines shown after it (``shown``: without trailing spaces)."""
+
     line: str
     shown: list[str]
 
@@ -57,8 +58,9 @@ class Command:
 @dataclass
 class Block:
     """A fenced block of a page: a command example, or a file to write (``file_name``)."""
-    start: int          # offset in the page's text of the block's body
-    end: int            # offset just past its body
+
+    start: int  # offset in the page's text of the block's body
+    end: int  # offset just past its body
     commands: list[Command] = field(default_factory=list)
     file_name: str | None = None
     body: str = ""
@@ -88,6 +90,7 @@ def blocks(text: str) -> list[Block]:
 
 
 # --- comparing ----------------------------------------------------------------------------
+
 
 def _line_pattern(line: str) -> re.Pattern:
     pieces = line.split(WILDCARD)
@@ -124,10 +127,13 @@ def output_matches(shown: list[str], printed: list[str]) -> bool:
 
 
 def difference(shown: list[str], printed: list[str]) -> str:
-    return "\n".join(difflib.unified_diff(_trimmed(shown), _trimmed(printed), "shown", "printed", lineterm=""))
+    return "\n".join(
+        difflib.unified_diff(_trimmed(shown), _trimmed(printed), "shown", "printed", lineterm="")
+    )
 
 
 # --- running ------------------------------------------------------------------------------
+
 
 class Folder:
     """The temporary folder a page's commands run in, with the state ``echo $?`` needs."""
@@ -200,9 +206,15 @@ class Folder:
         return printed.getvalue(), status
 
     def _python(self, args: list[str]) -> tuple[str, int]:
-        proc = subprocess.run([sys.executable, *args], cwd=self.path, stdout=subprocess.PIPE,
-                              stderr=subprocess.STDOUT, text=True, timeout=300,
-                              env={**os.environ, **ENVIRONMENT})
+        proc = subprocess.run(
+            [sys.executable, *args],
+            cwd=self.path,
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            timeout=300,
+            env={**os.environ, **ENVIRONMENT},
+        )
         return proc.stdout, proc.returncode
 
 
@@ -220,6 +232,7 @@ def run_page(page: Path, folder: Path) -> list[tuple[Block, Command, list[str]]]
 
 
 # --- rewriting ----------------------------------------------------------------------------
+
 
 def _similarity(a: str, b: str) -> float:
     return difflib.SequenceMatcher(None, a, b).ratio()
@@ -245,8 +258,9 @@ def _with_inline_wildcards(line: str, shown: list[str]) -> str:
             shown_words, parts = candidate.split(), re.split(r"(\s+)", line)
             if len(shown_words) == len([p for p in parts if p and not p.isspace()]):
                 words = iter(shown_words)
-                return "".join(p if not p or p.isspace() else
-                               (WILDCARD if WILDCARD in (w := next(words)) else p) for p in parts)
+                return "".join(
+                    p if not p or p.isspace() else (WILDCARD if WILDCARD in next(words) else p) for p in parts
+                )
     return line
 
 
@@ -285,9 +299,11 @@ def rewritten_output(shown: list[str], printed: list[str]) -> list[str]:
             last = len(printed) - 1
         else:
             expected = first + len(segment) - 1
-            last = max(range(first, len(printed)),
-                       key=lambda j: _likeness(segment[-1], printed[j], -abs(j - expected)))
-        out += [_with_inline_wildcards(line, segment) for line in printed[first:last + 1]]
+            last = max(
+                range(first, len(printed)),
+                key=lambda j: _likeness(segment[-1], printed[j], -abs(j - expected)),
+            )
+        out += [_with_inline_wildcards(line, segment) for line in printed[first : last + 1]]
         position = last + 1
     return out
 
@@ -308,7 +324,7 @@ def rewrite_page(page: Path, folder: Path) -> tuple[str, list[str]]:
             if new != _trimmed(command.shown):
                 changed.append(command.line)
             lines += [f"$ {command.line}", *new]
-        pieces += [text[cursor:block.start], "\n".join(lines) + "\n"]
+        pieces += [text[cursor : block.start], "\n".join(lines) + "\n"]
         cursor = block.end
     pieces.append(text[cursor:])
     return "".join(pieces), changed

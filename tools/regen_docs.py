@@ -23,7 +23,9 @@ import docs_examples  # noqa: E402
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("pages", nargs="*", type=Path, help="pages to rewrite (default: README.md and docs/*.md)")
+    parser.add_argument(
+        "pages", nargs="*", type=Path, help="pages to rewrite (default: README.md and docs/*.md)"
+    )
     parser.add_argument("--check", action="store_true", help="only report pages that would change")
     args = parser.parse_args(argv)
     pages = [p.resolve() for p in args.pages] or docs_examples.PAGES

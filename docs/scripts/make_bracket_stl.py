@@ -31,14 +31,14 @@ REFLEX_CORNER = 3  # the inner corner of the L: every cap triangle fans out from
 def bracket_triangles() -> np.ndarray:
     """(F, 3, 3) triangles of the extruded L, outward normals."""
     n = len(OUTLINE_XZ_MM)
-    front = np.column_stack([OUTLINE_XZ_MM[:, 0], np.zeros(n), OUTLINE_XZ_MM[:, 1]])       # y = 0
+    front = np.column_stack([OUTLINE_XZ_MM[:, 0], np.zeros(n), OUTLINE_XZ_MM[:, 1]])  # y = 0
     back = np.column_stack([OUTLINE_XZ_MM[:, 0], np.full(n, DEPTH_MM), OUTLINE_XZ_MM[:, 1]])  # y = depth
     triangles = []
     # Seen from -y (the front cap's outside) x points right and z up, so the outline runs
     # counter-clockwise there: the front cap keeps its order, the back cap reverses it, and
     # each side wall runs along the outline edge on the front and back along the rear.
     others = [i for i in range(n) if i != REFLEX_CORNER]
-    order = others[others.index((REFLEX_CORNER + 1) % n):] + others[:others.index((REFLEX_CORNER + 1) % n)]
+    order = others[others.index((REFLEX_CORNER + 1) % n) :] + others[: others.index((REFLEX_CORNER + 1) % n)]
     for a, b in zip(order[:-1], order[1:]):
         triangles.append([front[REFLEX_CORNER], front[a], front[b]])
         triangles.append([back[REFLEX_CORNER], back[b], back[a]])

@@ -2,9 +2,18 @@
 
 Run: .venv/bin/python docs/scripts/thin_wall_precision.py   (quoted in docs/spec.md)
 """
+
 import mpmath as mp
+
 from rbi.core import shapes
 from rbi.core.inertia import combine_elements
+
+
+def err(got, ref) -> float:
+    """Relative error of ``got`` against the high-precision ``ref``."""
+    return float(abs((mp.mpf(got) - ref) / ref))
+
+
 mp.mp.dps = 50
 R, L, rho = 1.0, 2.0, 7.85
 print("wall/R    subtraction: mass  Izz  Ixx  |  tube shape: mass  Izz  Ixx   (relative errors)")
@@ -18,6 +27,7 @@ for wall in [1e-1, 1e-2, 1e-3, 1e-4, 1e-6, 1e-9]:
     inner = shapes.cylinder(rho * shapes.cylinder_volume(r, L), r, [0, 0, 0], [0, 0, L])
     sub = combine_elements([outer, shapes.MassElement(-inner.mass, inner.com, -inner.inertia_com)])
     tube = shapes.tube(rho * shapes.tube_volume(R, r, L), R, r, [0, 0, 0], [0, 0, L])
-    err = lambda got, ref: float(abs((mp.mpf(got) - ref) / ref))
-    print(f"{wall:7.0e}   {err(sub.mass, m):9.1e} {err(sub.inertia_com[2,2], izz):9.1e} {err(sub.inertia_com[0,0], ixx):9.1e}"
-          f"   |   {err(tube.mass, m):9.1e} {err(tube.inertia_com[2,2], izz):9.1e} {err(tube.inertia_com[0,0], ixx):9.1e}")
+    print(
+        f"{wall:7.0e}   {err(sub.mass, m):9.1e} {err(sub.inertia_com[2, 2], izz):9.1e} {err(sub.inertia_com[0, 0], ixx):9.1e}"
+        f"   |   {err(tube.mass, m):9.1e} {err(tube.inertia_com[2, 2], izz):9.1e} {err(tube.inertia_com[0, 0], ixx):9.1e}"
+    )

@@ -21,8 +21,20 @@ rendering).
 
 __version__ = "0.1.0"
 
-__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "sweep", "audit",
-           "AuditReport", "SpecError", "__version__"]
+__all__ = [
+    "load",
+    "Body",
+    "Principal",
+    "Part",
+    "Momentum",
+    "simulate",
+    "Trajectory",
+    "sweep",
+    "audit",
+    "AuditReport",
+    "SpecError",
+    "__version__",
+]
 
 _API_NAMES = frozenset(__all__) - {"__version__"}
 

@@ -19,15 +19,30 @@ raises `SpecError`, whose ``str()`` is the one line the CLI prints for the same 
 from __future__ import annotations
 
 import os
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
-from typing import Any, Callable, Sequence
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from rbi.errors import InputError as SpecError
 
-__all__ = ["load", "Body", "Principal", "Part", "Momentum", "simulate", "Trajectory", "sweep", "audit",
-           "AuditReport", "SpecError"]
+if TYPE_CHECKING:
+    from rbi.robot.audit import AuditReport
+
+__all__ = [
+    "load",
+    "Body",
+    "Principal",
+    "Part",
+    "Momentum",
+    "simulate",
+    "Trajectory",
+    "sweep",
+    "audit",
+    "AuditReport",
+    "SpecError",
+]
 
 Point = Any
 """A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates
@@ -238,18 +253,26 @@ class Body:
                 return np.zeros(3)
             if key == "pivot":
                 if self._loaded.pivot is None:
-                    raise SpecError(f"{self.path}: pivot: --about pivot needs a `pivot` in the spec, and there is "
-                                    "none", file=self.path, field="pivot")
+                    raise SpecError(
+                        f"{self.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none",
+                        file=self.path,
+                        field="pivot",
+                    )
                 return self.pivot
         from rbi.runs.values import vector_value
 
         try:
             return np.array(vector_value(about, "--about"))
         except SpecError:
-            raise SpecError(f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
-                            f"commas, file units), got {about!r}", field="about") from None
+            raise SpecError(
+                f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
+                f"commas, file units), got {about!r}",
+                field="about",
+            ) from None
 
-    def inertia(self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None) -> np.ndarray:
+    def inertia(
+        self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None
+    ) -> np.ndarray:
         """The (3, 3) inertia matrix about a point, mass·length² (tensor sign: ``I_xy = -∫xy dm``).
 
         Args:
@@ -275,8 +298,12 @@ class Body:
         point = self.point(about)
         moments, axes = principal_axes(inertia_about(self._loaded.props, point))
         # + 0.0: no -0.0 components (the CLI prints 0 there too)
-        return Principal(moments=np.asarray(moments) + 0.0, axes=np.asarray(axes) + 0.0,
-                         radii_of_gyration=np.asarray(radii_of_gyration(moments, self.mass)), about=point)
+        return Principal(
+            moments=np.asarray(moments) + 0.0,
+            axes=np.asarray(axes) + 0.0,
+            radii_of_gyration=np.asarray(radii_of_gyration(moments, self.mass)),
+            about=point,
+        )
 
     def parts(self) -> list[Part]:
         """Each part's mass properties, in file order (see `Part`)."""
@@ -287,19 +314,25 @@ class Body:
         out = []
         for i, element in enumerate(loaded.elements):
             part = spec_parts[i] if i < len(spec_parts) else None
-            out.append(Part(
-                name=loaded.part_names[i] or f"parts[{i}]",
-                shape=part.shape if part is not None else "point_cloud",
-                hole=bool(getattr(part, "subtract", False)),
-                mass=float(element.mass),
-                center_of_mass=np.array(element.com, dtype=float),
-                inertia_about_com=np.array(element.inertia_com, dtype=float),
-                volume=None if part is None else part_volume(part),
-            ))
+            out.append(
+                Part(
+                    name=loaded.part_names[i] or f"parts[{i}]",
+                    shape=part.shape if part is not None else "point_cloud",
+                    hole=bool(getattr(part, "subtract", False)),
+                    mass=float(element.mass),
+                    center_of_mass=np.array(element.com, dtype=float),
+                    inertia_about_com=np.array(element.inertia_com, dtype=float),
+                    volume=None if part is None else part_volume(part),
+                )
+            )
         return out
 
-    def momentum(self, omega: Sequence[float] | str, about: Point = "com",
-                 velocity: Sequence[float] | str | None = None) -> Momentum:
+    def momentum(
+        self,
+        omega: Sequence[float] | str,
+        about: Point = "com",
+        velocity: Sequence[float] | str | None = None,
+    ) -> Momentum:
         """Angular momentum about a point and kinetic energy, for angular velocity ``omega``
         (body axes, rad/s).
 
@@ -316,23 +349,36 @@ class Body:
         point = self.point(about)
         props = self._loaded.props
         com_from_point = props.com - point
-        v_com = np.cross(w, com_from_point) if velocity is None else np.array(vector_value(velocity, "--velocity"))
+        v_com = (
+            np.cross(w, com_from_point)
+            if velocity is None
+            else np.array(vector_value(velocity, "--velocity"))
+        )
         h = angular_momentum_about_point(props.inertia_com, props.mass, com_from_point, w, v_com)
-        return Momentum(omega=w, about=point, com_velocity=v_com, angular_momentum=np.asarray(h),
-                        angle_deg=angle_between_deg(h, w),
-                        kinetic_energy=float(kinetic_energy(props.inertia_com, w, props.mass, v_com)))
+        return Momentum(
+            omega=w,
+            about=point,
+            com_velocity=v_com,
+            angular_momentum=np.asarray(h),
+            angle_deg=angle_between_deg(h, w),
+            kinetic_energy=float(kinetic_energy(props.inertia_com, w, props.mass, v_com)),
+        )
 
     def __repr__(self) -> str:
         units = self.units
-        return (f"<rbi.Body {self.name or self.path!r}: mass {self.mass:.6g} {units['mass']}, "
-                f"{len(self._loaded.elements)} parts, {'pivot' if self._loaded.pivot is not None else 'free'}>")
+        return (
+            f"<rbi.Body {self.name or self.path!r}: mass {self.mass:.6g} {units['mass']}, "
+            f"{len(self._loaded.elements)} parts, {'pivot' if self._loaded.pivot is not None else 'free'}>"
+        )
 
     def _summary_rows(self) -> list[tuple[str, str, str]]:
         units = self.units
         inertia_unit = f"{units['mass']}·{units['length']}²"
         principal = self.principal()
-        rows = [("mass", units["mass"], f"{self.mass:.8g}"),
-                ("centre of mass", units["length"], _vector_text(self.center_of_mass))]
+        rows = [
+            ("mass", units["mass"], f"{self.mass:.8g}"),
+            ("centre of mass", units["length"], _vector_text(self.center_of_mass)),
+        ]
         if self._loaded.pivot is not None:
             rows.append(("pivot", units["length"], _vector_text(self.pivot)))
         rows.append(("principal moments about CoM", inertia_unit, _vector_text(principal.moments)))
@@ -355,9 +401,12 @@ def _rotation(axes) -> np.ndarray:
     array = np.asarray(axes, dtype=object)
     if array.shape == (3, 3):
         R = np.asarray(axes, dtype=float)
-        if not (np.all(np.isfinite(R)) and np.allclose(R @ R.T, np.eye(3), atol=1e-9)
-                and np.linalg.det(R) > 0):
-            raise SpecError("axes: a 3x3 matrix must be a rotation (orthonormal, determinant +1)", field="axes")
+        if not (
+            np.all(np.isfinite(R)) and np.allclose(R @ R.T, np.eye(3), atol=1e-9) and np.linalg.det(R) > 0
+        ):
+            raise SpecError(
+                "axes: a 3x3 matrix must be a rotation (orthonormal, determinant +1)", field="axes"
+            )
         return R
     turns = []
     for turn in axes:
@@ -367,8 +416,10 @@ def _rotation(axes) -> np.ndarray:
         except (TypeError, ValueError):
             axis, degrees = "", float("nan")
         if axis not in ("x", "y", "z") or not np.isfinite(degrees):
-            raise SpecError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {turn!r}",
-                            field="axes")
+            raise SpecError(
+                f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {turn!r}",
+                field="axes",
+            )
         turns.append((axis, np.radians(degrees)))
     return compose_world_rotations(turns)
 
@@ -408,24 +459,38 @@ class Trajectory:
     def columns(self) -> dict[str, np.ndarray]:
         """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""
         q, w = self.q, self.omega
-        return {"t": self.t, "qw": q[:, 0], "qx": q[:, 1], "qy": q[:, 2], "qz": q[:, 3],
-                "wx": w[:, 0], "wy": w[:, 1], "wz": w[:, 2], "tilt_deg": self.tilt_deg,
-                "precession_deg": self.precession_deg, "energy": self.energy}
+        return {
+            "t": self.t,
+            "qw": q[:, 0],
+            "qx": q[:, 1],
+            "qy": q[:, 2],
+            "qz": q[:, 3],
+            "wx": w[:, 0],
+            "wy": w[:, 1],
+            "wz": w[:, 2],
+            "tilt_deg": self.tilt_deg,
+            "precession_deg": self.precession_deg,
+            "energy": self.energy,
+        }
 
     def __repr__(self) -> str:
-        return (f"<rbi.Trajectory {self.t.size} samples over {float(self.t[-1]):g} s, "
-                f"{self.summary.get('method', '')}>")
+        return (
+            f"<rbi.Trajectory {self.t.size} samples over {float(self.t[-1]):g} s, "
+            f"{self.summary.get('method', '')}>"
+        )
 
     def _summary_rows(self) -> list[tuple[str, str, str]]:
         s = self.summary
         final = s.get("final", {})
-        rows = [("scene", "", str(s.get("scene", ""))),
-                ("method", "", str(s.get("method", ""))),
-                ("duration, samples", "s", f"{float(self.t[-1]):g}, {self.t.size}"),
-                ("final q [w, x, y, z]", "", _vector_text(self.q[-1])),
-                ("final ω (body axes)", "rad/s", _vector_text(self.omega[-1])),
-                ("final tilt of body z", "deg", f"{float(self.tilt_deg[-1]):.6g}"),
-                ("tilt min … max", "deg", f"{np.min(self.tilt_deg):.6g} … {np.max(self.tilt_deg):.6g}")]
+        rows = [
+            ("scene", "", str(s.get("scene", ""))),
+            ("method", "", str(s.get("method", ""))),
+            ("duration, samples", "s", f"{float(self.t[-1]):g}, {self.t.size}"),
+            ("final q [w, x, y, z]", "", _vector_text(self.q[-1])),
+            ("final ω (body axes)", "rad/s", _vector_text(self.omega[-1])),
+            ("final tilt of body z", "deg", f"{float(self.tilt_deg[-1]):.6g}"),
+            ("tilt min … max", "deg", f"{np.min(self.tilt_deg):.6g} … {np.max(self.tilt_deg):.6g}"),
+        ]
         if final and "energy" in s.get("conserved", {}):
             rows.append(("energy drift", "", f"{s['conserved']['energy']['drift']:.2g}"))
         return rows
@@ -437,12 +502,24 @@ class Trajectory:
         return _html_table(f"{self.summary.get('name') or 'trajectory'} — simulate", self._summary_rows())
 
 
-def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | None = None,
-             tilt_deg: float = 0.0, tilt_axis: str = "y", duration: float = 4.0, samples: int = 481,
-             gravity: float | None = None, method: str = "default", rtol: float | None = None,
-             max_steps: int | None = None, error_estimate: bool = True, check_budget: bool = True,
-             progress: Callable[[float], None] | None = None,
-             spin_axis: str | Sequence[float] | None = None) -> Trajectory:
+def simulate(
+    body: Body,
+    *,
+    spin: float | None = None,
+    omega: Sequence[float] | None = None,
+    tilt_deg: float = 0.0,
+    tilt_axis: str = "y",
+    duration: float = 4.0,
+    samples: int = 481,
+    gravity: float | None = None,
+    method: str = "default",
+    rtol: float | None = None,
+    max_steps: int | None = None,
+    error_estimate: bool = True,
+    check_budget: bool = True,
+    progress: Callable[[float], None] | None = None,
+    spin_axis: str | Sequence[float] | None = None,
+) -> Trajectory:
     """Simulate the body: a heavy top on its pivot (a spec with ``pivot``) or a torque-free body
     about its centre of mass — the run ``rbi simulate`` makes with the same settings.
 
@@ -485,14 +562,31 @@ def simulate(body: Body, *, spin: float | None = None, omega: Sequence[float] | 
         raise SpecError(f"rbi.simulate: expected a Body from rbi.load (got {type(body).__name__})")
     check_run_options(method, spin, omega, tilt_deg, duration, tilt_axis, gravity, max_steps, rtol)
     check_samples(samples)
-    prepared = prepare_run(body._loaded, spin=spin, omega=omega, tilt=tilt_deg, tilt_axis=tilt_axis,
-                           gravity=gravity, duration=duration, method=method, rtol=rtol, max_steps=max_steps,
-                           yes=not check_budget, spin_axis=spin_axis)
+    prepared = prepare_run(
+        body._loaded,
+        spin=spin,
+        omega=omega,
+        tilt=tilt_deg,
+        tilt_axis=tilt_axis,
+        gravity=gravity,
+        duration=duration,
+        method=method,
+        rtol=rtol,
+        max_steps=max_steps,
+        yes=not check_budget,
+        spin_axis=spin_axis,
+    )
     run = simulate_run(prepared, samples, error_estimate=error_estimate, progress=progress)
     columns = run.columns
-    return Trajectory(t=columns["t"], q=run.trajectory.q, omega=run.trajectory.omega,
-                      tilt_deg=columns["tilt_deg"], precession_deg=columns["precession_deg"],
-                      energy=columns["energy"], summary=run.summary)
+    return Trajectory(
+        t=columns["t"],
+        q=run.trajectory.q,
+        omega=run.trajectory.omega,
+        tilt_deg=columns["tilt_deg"],
+        precession_deg=columns["precession_deg"],
+        energy=columns["energy"],
+        summary=run.summary,
+    )
 
 
 def _spin_axis_text(axis) -> str | None:
@@ -502,12 +596,25 @@ def _spin_axis_text(axis) -> str | None:
     return ",".join(repr(float(c)) for c in axis)
 
 
-def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
-          tilt: float | str | Sequence[float] | None = None, vary: dict[str, Any] | Sequence[str] | None = None,
-          runs: int = 1, seed: int = 0, duration: float = 4.0, samples: int = 481, rtol: float = 1e-12,
-          gravity: float | None = None, tilt_axis: str = "y", max_steps: int | None = None,
-          workers: int | None = None, mass_properties: bool = False, check_budget: bool = True,
-          spin_axis: str | Sequence[float] | None = None) -> list[dict]:
+def sweep(
+    body: Body,
+    *,
+    spin: float | str | Sequence[float] | None = None,
+    tilt: float | str | Sequence[float] | None = None,
+    vary: dict[str, Any] | Sequence[str] | None = None,
+    runs: int = 1,
+    seed: int = 0,
+    duration: float = 4.0,
+    samples: int = 481,
+    rtol: float = 1e-12,
+    gravity: float | None = None,
+    tilt_axis: str = "y",
+    max_steps: int | None = None,
+    workers: int | None = None,
+    mass_properties: bool = False,
+    check_budget: bool = True,
+    spin_axis: str | Sequence[float] | None = None,
+) -> list[dict]:
     """Many simulations of one body — a grid over spin, tilt and numbers of the spec, or Monte
     Carlo draws — as ``rbi sweep`` runs them (on every core). One failed run never stops the
     others: its row says why in ``status``.
@@ -545,21 +652,42 @@ def sweep(body: Body, *, spin: float | str | Sequence[float] | None = None,
 
     if not isinstance(body, Body):
         raise SpecError(f"rbi.sweep: expected a Body from rbi.load (got {type(body).__name__})")
-    settings = SweepSettings(spin=_range_text(spin, "--spin"), tilt=_range_text(tilt, "--tilt"),
-                             vary=_vary_texts(vary), runs=runs, seed=seed, duration=duration, samples=samples,
-                             rtol=rtol, gravity=gravity, tilt_axis=tilt_axis, max_steps=max_steps, workers=workers,
-                             mass_properties=mass_properties, yes=not check_budget,
-                             spin_axis=_spin_axis_text(spin_axis))
+    settings = SweepSettings(
+        spin=_range_text(spin, "--spin"),
+        tilt=_range_text(tilt, "--tilt"),
+        vary=_vary_texts(vary),
+        runs=runs,
+        seed=seed,
+        duration=duration,
+        samples=samples,
+        rtol=rtol,
+        gravity=gravity,
+        tilt_axis=tilt_axis,
+        max_steps=max_steps,
+        workers=workers,
+        mass_properties=mass_properties,
+        yes=not check_budget,
+        spin_axis=_spin_axis_text(spin_axis),
+    )
     check_settings(settings)
     check_mass_properties(settings)
     study = Study(body.path, body._raw, settings)
     return [dict(zip(study.columns, row)) for row in study.run()]
 
 
-def audit(robot_file: str | os.PathLike, *, package_paths: dict[str, str] | Sequence[str] | None = None,
-          geometry: str = "collision", density: float | None = None, material: str | None = None,
-          mesh_inertia: str = "exact", joints: dict[str, float] | Sequence[str] | None = None,
-          fix: bool = False, allow_outside_paths: bool = False, mesh_repair: bool = False) -> "AuditReport":
+def audit(
+    robot_file: str | os.PathLike,
+    *,
+    package_paths: dict[str, str] | Sequence[str] | None = None,
+    geometry: str = "collision",
+    density: float | None = None,
+    material: str | None = None,
+    mesh_inertia: str = "exact",
+    joints: dict[str, float] | Sequence[str] | None = None,
+    fix: bool = False,
+    allow_outside_paths: bool = False,
+    mesh_repair: bool = False,
+) -> AuditReport:
     """Audit a robot file (URDF ``.urdf``, SDF ``.sdf``, MJCF ``.xml``, or ``.xacro`` with the
     ``xacro`` extra) as ``rbi audit`` does: each link's declared mass properties against its own
     geometry, with flags, and the whole robot's totals. SI units; vectors and matrices in each
@@ -592,9 +720,18 @@ def audit(robot_file: str | os.PathLike, *, package_paths: dict[str, str] | Sequ
     """
     from rbi.robot import audit as run_audit
 
-    return run_audit(robot_file, package_paths=package_paths, geometry=geometry, density=density,
-                     material=material, mesh_inertia=mesh_inertia, joints=joints, fix=fix,
-                     allow_outside_paths=allow_outside_paths, mesh_repair=mesh_repair)
+    return run_audit(
+        robot_file,
+        package_paths=package_paths,
+        geometry=geometry,
+        density=density,
+        material=material,
+        mesh_inertia=mesh_inertia,
+        joints=joints,
+        fix=fix,
+        allow_outside_paths=allow_outside_paths,
+        mesh_repair=mesh_repair,
+    )
 
 
 def __getattr__(name: str):
@@ -615,7 +752,9 @@ def _range_text(value, option: str) -> str | None:
         start, stop, count = value
         return f"{float(start)!r}:{float(stop)!r}:{int(count)}"
     except (TypeError, ValueError):
-        raise SpecError(f"{option}: expected a number, (start, stop, count) or 'START:STOP:COUNT' (got {value!r})") from None
+        raise SpecError(
+            f"{option}: expected a number, (start, stop, count) or 'START:STOP:COUNT' (got {value!r})"
+        ) from None
 
 
 def _vary_texts(vary) -> tuple[str, ...]:
@@ -646,7 +785,11 @@ def _rich_table(title: str, rows):
 def _html_table(title: str, rows) -> str:
     from html import escape
 
-    body = "".join(f"<tr><td>{escape(a)}</td><td>{escape(b)}</td><td style=\"text-align:right\">{escape(c)}</td></tr>"
-                   for a, b, c in rows)
-    return (f"<table><caption>{escape(title)}</caption>"
-            f"<thead><tr><th>quantity</th><th>unit</th><th>value</th></tr></thead><tbody>{body}</tbody></table>")
+    body = "".join(
+        f'<tr><td>{escape(a)}</td><td>{escape(b)}</td><td style="text-align:right">{escape(c)}</td></tr>'
+        for a, b, c in rows
+    )
+    return (
+        f"<table><caption>{escape(title)}</caption>"
+        f"<thead><tr><th>quantity</th><th>unit</th><th>value</th></tr></thead><tbody>{body}</tbody></table>"
+    )

@@ -16,8 +16,9 @@ class InputError(Exception):
     ``file``, ``part`` and ``field`` name where the problem is, when known (None otherwise).
     """
 
-    def __init__(self, message: str = "", *, file: str | None = None, part: str | None = None,
-                 field: str | None = None) -> None:
+    def __init__(
+        self, message: str = "", *, file: str | None = None, part: str | None = None, field: str | None = None
+    ) -> None:
         super().__init__(message)
         self.file = file
         self.part = part

@@ -12,7 +12,7 @@ from tests.conftest import BODIES
 
 def printed(value, decimals):
     """``approx`` at the chapter's printed rounding: half a unit in the last printed digit."""
-    return pytest.approx(value, rel=0, abs=0.5 * 10.0 ** -decimals)
+    return pytest.approx(value, rel=0, abs=0.5 * 10.0**-decimals)
 
 
 @pytest.fixture(scope="module")
@@ -36,8 +36,9 @@ def test_mass_and_centre_of_mass(top, bolted):
 def test_inertia_in_body_and_tilted_axes(top):
     np.testing.assert_allclose(top.inertia() * 1e6, np.diag([262.93, 262.93, 195.2]), rtol=0, atol=0.005)
     tilted = top.inertia(axes=[("y", 30)]) * 1e6
-    np.testing.assert_allclose(tilted, [[246.0, 0.0, -29.33], [0.0, 262.93, 0.0], [-29.33, 0.0, 212.13]],
-                               rtol=0, atol=0.005)
+    np.testing.assert_allclose(
+        tilted, [[246.0, 0.0, -29.33], [0.0, 262.93, 0.0], [-29.33, 0.0, 212.13]], rtol=0, atol=0.005
+    )
     # the same turn given as the body -> world matrix
     c, s = np.cos(np.radians(30)), np.sin(np.radians(30))
     R = np.array([[c, 0.0, s], [0.0, 1.0, 0.0], [-s, 0.0, c]])
@@ -69,7 +70,11 @@ def test_principal_axes_are_rows_as_in_the_chapter(bolted):
 
 
 def test_momentum_and_wobble_angle(top, bolted):
-    assert list(top.momentum([0, 0, 100]).angular_momentum) == [printed(0.0, 6), printed(0.0, 6), printed(0.01952, 6)]
+    assert list(top.momentum([0, 0, 100]).angular_momentum) == [
+        printed(0.0, 6),
+        printed(0.0, 6),
+        printed(0.01952, 6),
+    ]
     out = bolted.momentum([0, 0, 100])
     assert list(out.angular_momentum) == [printed(-0.000615, 6), printed(0.0, 6), printed(0.022597, 6)]
     assert out.angle_deg == printed(1.5600, 4)
@@ -84,9 +89,15 @@ def test_parts_add_up_to_the_body(bolted):
     assert sum(p.mass for p in parts) == pytest.approx(bolted.mass, rel=1e-12)
     com = sum(p.mass * p.center_of_mass for p in parts) / bolted.mass
     np.testing.assert_allclose(com, bolted.center_of_mass, rtol=1e-12)
-    total = sum(p.inertia_about_com + p.mass * ((p.center_of_mass - com) @ (p.center_of_mass - com) * np.eye(3)
-                                               - np.outer(p.center_of_mass - com, p.center_of_mass - com))
-                for p in parts)
+    total = sum(
+        p.inertia_about_com
+        + p.mass
+        * (
+            (p.center_of_mass - com) @ (p.center_of_mass - com) * np.eye(3)
+            - np.outer(p.center_of_mass - com, p.center_of_mass - com)
+        )
+        for p in parts
+    )
     np.testing.assert_allclose(total, bolted.inertia(), rtol=1e-12, atol=1e-18)
 
 
@@ -105,15 +116,21 @@ def test_principal_axes_rebuild_the_inertia_about_any_point(name):
         inertia = body.inertia(about=about)
         np.testing.assert_allclose(rebuilt, inertia, rtol=0, atol=1e-12 * np.max(np.abs(inertia)))
         assert list(principal.moments) == sorted(principal.moments)
-        np.testing.assert_allclose(principal.radii_of_gyration, np.sqrt(principal.moments / body.mass), rtol=1e-12)
+        np.testing.assert_allclose(
+            principal.radii_of_gyration, np.sqrt(principal.moments / body.mass), rtol=1e-12
+        )
 
 
 def test_turned_inertia_is_r_i_rt_for_chained_turns(bolted):
     def turn(axis, degrees):
         c, s = np.cos(np.radians(degrees)), np.sin(np.radians(degrees))
-        return {"x": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]), "y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]),
-                "z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])}[axis]
+        return {
+            "x": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]),
+            "y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]),
+            "z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]]),
+        }[axis]
 
     R = turn("z", -45.0) @ turn("x", 20.0)  # x:20 first, then z:-45, both about world axes
-    np.testing.assert_allclose(bolted.inertia(axes=[("x", 20), ("z", -45)]), R @ bolted.inertia() @ R.T,
-                               rtol=1e-12, atol=1e-18)
+    np.testing.assert_allclose(
+        bolted.inertia(axes=[("x", 20), ("z", -45)]), R @ bolted.inertia() @ R.T, rtol=1e-12, atol=1e-18
+    )

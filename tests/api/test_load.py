@@ -12,7 +12,8 @@ import pytest
 import yaml
 
 import rbi
-from tests.conftest import BODIES, run_rbi_inprocess as run_rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as run_rbi
 
 TOP = BODIES / "top.yaml"
 
@@ -41,14 +42,19 @@ def test_json_text_is_a_spec_too():
     same_body(rbi.load(json.dumps(yaml.safe_load(TOP.read_text())) + "\n"), rbi.load(TOP))
 
 
-@pytest.mark.parametrize("args, make", [
-    (["nope.yaml"], lambda tmp: "nope.yaml"),
-    (["{tmp}/bad.yaml"], lambda tmp: f"{tmp}/bad.yaml"),
-    (["{tmp}/unknown.yaml"], lambda tmp: f"{tmp}/unknown.yaml"),
-])
+@pytest.mark.parametrize(
+    "args, make",
+    [
+        (["nope.yaml"], lambda tmp: "nope.yaml"),
+        (["{tmp}/bad.yaml"], lambda tmp: f"{tmp}/bad.yaml"),
+        (["{tmp}/unknown.yaml"], lambda tmp: f"{tmp}/unknown.yaml"),
+    ],
+)
 def test_spec_error_is_the_cli_error_line(tmp_path, args, make):
     (tmp_path / "bad.yaml").write_text("parts: [\n")
-    (tmp_path / "unknown.yaml").write_text("parts:\n  - name: a\n    shape: sphere\n    radius: 1\n    mas: 2\n")
+    (tmp_path / "unknown.yaml").write_text(
+        "parts:\n  - name: a\n    shape: sphere\n    radius: 1\n    mas: 2\n"
+    )
     path = make(tmp_path)
     with pytest.raises(rbi.SpecError) as caught:
         rbi.load(path)
@@ -81,7 +87,9 @@ def test_files_a_spec_names_are_read_beside_it_or_beside_the_caller(monkeypatch,
     monkeypatch.chdir(BODIES)
     assert rbi.load(text).mass == bracket.mass  # text: files beside the current folder
     monkeypatch.chdir(tmp_path)
-    with pytest.raises(rbi.SpecError, match=r"^<string>: parts\[0\] \(bracket\): file: bracket.stl: no such file$"):
+    with pytest.raises(
+        rbi.SpecError, match=r"^<string>: parts\[0\] \(bracket\): file: bracket.stl: no such file$"
+    ):
         rbi.load(text)
     outside = text.replace("file: bracket.stl", f"file: {BODIES / 'bracket.stl'}")
     with pytest.raises(rbi.SpecError, match="leaves the spec's folder"):

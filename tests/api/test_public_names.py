@@ -28,12 +28,22 @@ def private_uses(path: Path) -> list[str]:
         elif isinstance(node, ast.ImportFrom) and node.module and node.module.split(".")[0] == "rbi":
             if node.module != "rbi":
                 found.append(node.module)
-            found += [f"rbi.{a.name}" for a in node.names if node.module == "rbi" and a.name not in rbi.__all__]
+            found += [
+                f"rbi.{a.name}" for a in node.names if node.module == "rbi" and a.name not in rbi.__all__
+            ]
         elif isinstance(node, ast.Attribute):
-            if (isinstance(node.value, ast.Name) and node.value.id == "rbi" and node.attr not in rbi.__all__
-                    and not node.attr.startswith("__")):
+            if (
+                isinstance(node.value, ast.Name)
+                and node.value.id == "rbi"
+                and node.attr not in rbi.__all__
+                and not node.attr.startswith("__")
+            ):
                 found.append(f"rbi.{node.attr}")
-            elif node.attr.startswith("_") and not node.attr.startswith("__") and node.attr not in PROTOCOL_NAMES:
+            elif (
+                node.attr.startswith("_")
+                and not node.attr.startswith("__")
+                and node.attr not in PROTOCOL_NAMES
+            ):
                 found.append(f".{node.attr}")
     return found
 
@@ -45,8 +55,10 @@ def test_api_tests_use_public_names_only(path):
 
 def test_the_scanner_sees_private_uses(tmp_path):
     probe = tmp_path / "probe.py"
-    probe.write_text("import rbi.api\nfrom rbi.spec import load\nfrom rbi import load, api\nimport rbi\n"
-                     "rbi.cli\nrbi.load('x')._loaded\nrbi.Body.__init__\nx._repr_html_()\n")
+    probe.write_text(
+        "import rbi.api\nfrom rbi.spec import load\nfrom rbi import load, api\nimport rbi\n"
+        "rbi.cli\nrbi.load('x')._loaded\nrbi.Body.__init__\nx._repr_html_()\n"
+    )
     assert private_uses(probe) == ["rbi.api", "rbi.spec", "rbi.api", "rbi.cli", "._loaded"]
 
 

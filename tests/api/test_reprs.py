@@ -11,8 +11,20 @@ from rich.console import Console
 import rbi
 from tests.conftest import BODIES
 
-SPEC = {"name": "<b>[bold]odd</b>", "pivot": [0, 0, 0],
-        "parts": [{"name": "rod", "shape": "cylinder", "mass": 2.0, "radius": 0.01, "start": [0, 0, 0], "end": [0, 0, 1]}]}
+SPEC = {
+    "name": "<b>[bold]odd</b>",
+    "pivot": [0, 0, 0],
+    "parts": [
+        {
+            "name": "rod",
+            "shape": "cylinder",
+            "mass": 2.0,
+            "radius": 0.01,
+            "start": [0, 0, 0],
+            "end": [0, 0, 1],
+        }
+    ],
+}
 
 
 def rendered(value) -> str:

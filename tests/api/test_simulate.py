@@ -10,7 +10,8 @@ import numpy as np
 import pytest
 
 import rbi
-from tests.conftest import BODIES, run_rbi_inprocess as run_rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as run_rbi
 
 
 def cli_ok(*args):
@@ -19,12 +20,15 @@ def cli_ok(*args):
     assert proc.returncode == 0, proc.stderr
     return proc
 
+
 ARGS = ["--spin", "200", "--tilt", "0.01", "--duration", "0.5", "--samples", "101"]
 
 
 @pytest.fixture(scope="module")
 def run():
-    return rbi.simulate(rbi.load(BODIES / "top_bolted.yaml"), spin=200.0, tilt_deg=0.01, duration=0.5, samples=101)
+    return rbi.simulate(
+        rbi.load(BODIES / "top_bolted.yaml"), spin=200.0, tilt_deg=0.01, duration=0.5, samples=101
+    )
 
 
 def test_arrays_equal_the_csv_of_the_cli(run, tmp_path):
@@ -55,17 +59,28 @@ def test_the_motion_obeys_its_invariants(run):
     assert run.t[0] == 0.0 and run.t[-1] == 0.5
 
 
-@pytest.mark.parametrize("settings, option", [
-    ({"duration": -1.0}, "--duration"), ({"spin": 1.0, "omega": [0, 0, 1]}, "--spin and --omega"),
-    ({"samples": 0}, "--samples"), ({"tilt_axis": "z"}, "--tilt-axis"), ({"method": "euler"}, "--method"),
-])
+@pytest.mark.parametrize(
+    "settings, option",
+    [
+        ({"duration": -1.0}, "--duration"),
+        ({"spin": 1.0, "omega": [0, 0, 1]}, "--spin and --omega"),
+        ({"samples": 0}, "--samples"),
+        ({"tilt_axis": "z"}, "--tilt-axis"),
+        ({"method": "euler"}, "--method"),
+    ],
+)
 def test_bad_settings_raise_the_cli_error_line(settings, option):
     body = rbi.load(BODIES / "top_bolted.yaml")
     with pytest.raises(rbi.SpecError) as caught:
         rbi.simulate(body, **settings)
     assert str(caught.value).startswith(option)
-    cli = {"duration": ["--duration", "-1"], "spin": ["--spin", "1", "--omega", "0,0,1"], "samples": ["--samples", "0"],
-           "tilt_axis": ["--tilt-axis", "z"], "method": ["--method", "euler"]}[next(iter(settings))]
+    cli = {
+        "duration": ["--duration", "-1"],
+        "spin": ["--spin", "1", "--omega", "0,0,1"],
+        "samples": ["--samples", "0"],
+        "tilt_axis": ["--tilt-axis", "z"],
+        "method": ["--method", "euler"],
+    }[next(iter(settings))]
     proc = run_rbi("simulate", BODIES / "top_bolted.yaml", *cli)
     assert proc.returncode == 2
     assert proc.stderr.replace("-1.0", "-1") == f"rbi: {caught.value}\n".replace("-1.0", "-1")

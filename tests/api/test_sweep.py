@@ -8,7 +8,8 @@ import numpy as np
 import pytest
 
 import rbi
-from tests.conftest import BODIES, run_rbi_inprocess as run_rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as run_rbi
 
 
 def cli_ok(*args):
@@ -44,9 +45,12 @@ def test_a_sweep_row_is_the_single_run(bolted):
 
 
 def test_mass_property_draws_equal_the_cli(bolted):
-    rows = rbi.sweep(bolted, mass_properties=True, vary={"parts.bolt.mass": "uniform(0.01,0.03)"}, runs=5, seed=3)
-    assert rows == cli_runs("--mass-properties", "--vary", "parts.bolt.mass=uniform(0.01,0.03)", "--runs", "5",
-                            "--seed", "3")
+    rows = rbi.sweep(
+        bolted, mass_properties=True, vary={"parts.bolt.mass": "uniform(0.01,0.03)"}, runs=5, seed=3
+    )
+    assert rows == cli_runs(
+        "--mass-properties", "--vary", "parts.bolt.mass=uniform(0.01,0.03)", "--runs", "5", "--seed", "3"
+    )
     # mass = body without the bolt + the drawn bolt mass
     for r in rows:
         assert r["mass"] == pytest.approx(bolted.mass - 0.02 + r["parts.bolt.mass"], rel=1e-12)

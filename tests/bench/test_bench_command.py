@@ -23,8 +23,18 @@ def quick_run(tmp_path_factory):
 def test_quick_bench_prints_one_json_object_with_every_section(quick_run):
     result, _, _ = quick_run
     assert result["quick"] is True
-    assert {"kernel", "workprecision", "throughput", "largespec", "latency", "sweep", "machine", "headline",
-            "command", "targets"} <= set(result)
+    assert {
+        "kernel",
+        "workprecision",
+        "throughput",
+        "largespec",
+        "latency",
+        "sweep",
+        "machine",
+        "headline",
+        "command",
+        "targets",
+    } <= set(result)
     assert result["command"].startswith("rbi bench --quick")
     for key in ("date", "cpu", "cores", "python", "numpy", "scipy"):
         assert result["machine"][key]
@@ -83,11 +93,14 @@ def test_docs_page_and_plot_are_written(quick_run):
     assert png.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
-@pytest.mark.parametrize("args, message", [
-    (["--only", "speed"], "--only: expected a comma-separated list"),
-    (["--only", "latency", "--plot", "x.png"], "--plot: needs the workprecision section"),
-    (["--plot", "/no/such/folder/x.png"], "--plot: /no/such/folder/x.png: folder"),
-])
+@pytest.mark.parametrize(
+    "args, message",
+    [
+        (["--only", "speed"], "--only: expected a comma-separated list"),
+        (["--only", "latency", "--plot", "x.png"], "--plot: needs the workprecision section"),
+        (["--plot", "/no/such/folder/x.png"], "--plot: /no/such/folder/x.png: folder"),
+    ],
+)
 def test_bad_options_exit_2_with_one_line(args, message):
     proc = run_rbi("bench", *args)
     assert proc.returncode == 2
@@ -116,8 +129,12 @@ def test_latency_has_first_run_and_every_timed_target(quick_run):
     result, _, _ = quick_run
     lat = result["latency"]
     labels = {r["command"]: r for r in lat["commands"]}
-    for label in ("rbi --help", "rbi inertia bodies/top.yaml", "rbi inertia bodies/top.yaml --format json",
-                  "rbi simulate bodies/top.yaml --spin 200 --tilt 10"):
+    for label in (
+        "rbi --help",
+        "rbi inertia bodies/top.yaml",
+        "rbi inertia bodies/top.yaml --format json",
+        "rbi simulate bodies/top.yaml --spin 200 --tilt 10",
+    ):
         row = labels[label]
         assert "error" not in row, row
         assert row["ratio_to_numpy_import"] == pytest.approx(row["median_s"] / lat["commands"][0]["median_s"])
@@ -127,11 +144,14 @@ def test_latency_has_first_run_and_every_timed_target(quick_run):
     many = next(r for r in lat["commands"] if r["command"].startswith("rbi inertia (the bundled bodies"))
     assert per_file["files"] == 600 and "600 files" in many["command"]
     assert per_file["per_file_ms"] == pytest.approx(
-        1000 * (many["median_s"] - labels["rbi inertia bodies/top.yaml --format json"]["median_s"]) / 599)
+        1000 * (many["median_s"] - labels["rbi inertia bodies/top.yaml --format json"]["median_s"]) / 599
+    )
     assert per_file["target_ms"] == 5.0
     # where the start-up goes: every module's own import time, summed by package
     imports = lat["imports"]
-    assert imports["groups_ms"]["numpy"] > 0 and imports["groups_ms"]["typer and click"] == 0  # the quick path
+    assert (
+        imports["groups_ms"]["numpy"] > 0 and imports["groups_ms"]["typer and click"] == 0
+    )  # the quick path
     assert sum(imports["groups_ms"].values()) == pytest.approx(imports["total_ms"])
     assert lat["bytecode_compiled"] is True  # no timed run compiles rbi's sources
     first = lat["first_run"]
@@ -146,9 +166,11 @@ def test_sweep_section_ratios_are_against_their_baselines(quick_run):
     runs = sw["grid"]["spin"][2] * sw["grid"]["tilt_deg"][2]
     assert sw["sweep"]["runs"] == sw["sweep"]["rows_written"] == runs
     assert sw["ratio_to_cores_x_single"] == pytest.approx(
-        sw["sweep"]["runs_per_second"] / (sw["cores"] * sw["single_run"]["runs_per_second"]))
+        sw["sweep"]["runs_per_second"] / (sw["cores"] * sw["single_run"]["runs_per_second"])
+    )
     assert sw["ratio_to_process_loop"] == pytest.approx(
-        sw["sweep"]["runs_per_second"] / sw["process_loop"]["runs_per_second"])
+        sw["sweep"]["runs_per_second"] / sw["process_loop"]["runs_per_second"]
+    )
     mem = sw["memory"]
     assert "error" not in mem, mem
     assert mem["rows_written"] == mem["runs"]

@@ -8,14 +8,17 @@ from rbi.bench.report import target_rows, targets
 
 
 def _kernel(chapter=3.0, default=0.001, minimal=0.0009, best=0.0004):
-    return {"case": {"spec": "bodies/top_bolted.yaml", "duration": 4.0},
-            "chapter": {"seconds": chapter, "orientation_error_deg": 1e-3},
-            "default": {"seconds": default, "orientation_error_deg": 1e-7, "steps": 2000},
-            "minimal_loop": {"seconds": minimal, "same_steps": True, "same_samples": True},
-            "best_matching": {"rtol": 1e-9, "seconds": best, "orientation_error_deg": 5e-4},
-            "ratio_default": chapter / default, "ratio_best_matching": chapter / best,
-            "ratio_to_minimal_loop": default / minimal,
-            "targets": {"ratio_default": 3000.0, "ratio_best_matching": 6000.0, "ratio_to_minimal_loop": 1.3}}
+    return {
+        "case": {"spec": "bodies/top_bolted.yaml", "duration": 4.0},
+        "chapter": {"seconds": chapter, "orientation_error_deg": 1e-3},
+        "default": {"seconds": default, "orientation_error_deg": 1e-7, "steps": 2000},
+        "minimal_loop": {"seconds": minimal, "same_steps": True, "same_samples": True},
+        "best_matching": {"rtol": 1e-9, "seconds": best, "orientation_error_deg": 5e-4},
+        "ratio_default": chapter / default,
+        "ratio_best_matching": chapter / best,
+        "ratio_to_minimal_loop": default / minimal,
+        "targets": {"ratio_default": 3000.0, "ratio_best_matching": 6000.0, "ratio_to_minimal_loop": 1.3},
+    }
 
 
 def test_kernel_targets_and_verdicts():
@@ -34,19 +37,42 @@ def test_missing_measurement_is_not_a_pass():
 
 
 def test_largespec_uses_the_measured_ratio():
-    rows = targets({"largespec": {"target": 0.5, "specs": [{"n_parts": 100000, "shape": "point", "ratio": 0.4},
-                                                            {"n_parts": 10000, "shape": "cylinder", "ratio": 0.7}]}})
+    rows = targets(
+        {
+            "largespec": {
+                "target": 0.5,
+                "specs": [
+                    {"n_parts": 100000, "shape": "point", "ratio": 0.4},
+                    {"n_parts": 10000, "shape": "cylinder", "ratio": 0.7},
+                ],
+            }
+        }
+    )
     assert [r["met"] for r in rows] == [True, False]
     assert "100,000 × point" in rows[0]["target"]
 
 
 def test_start_up_targets_per_file_in_ms_and_whole_process_as_a_ratio():
-    lat = {"baseline": 'python -c "import numpy"',
-           "commands": [{"command": 'python -c "import numpy"', "median_s": 0.1, "repeats": 3},
-                        {"command": "rbi inertia bodies/top.yaml", "median_s": 0.24, "ratio_to_numpy_import": 2.4,
-                         "target": 2.5, "repeats": 3}],
-           "per_file": {"files": 120, "one_file_median_s": 0.24, "many_files_median_s": 0.714, "per_file_ms": 4.0,
-                        "target_ms": 5.0}}
+    lat = {
+        "baseline": 'python -c "import numpy"',
+        "commands": [
+            {"command": 'python -c "import numpy"', "median_s": 0.1, "repeats": 3},
+            {
+                "command": "rbi inertia bodies/top.yaml",
+                "median_s": 0.24,
+                "ratio_to_numpy_import": 2.4,
+                "target": 2.5,
+                "repeats": 3,
+            },
+        ],
+        "per_file": {
+            "files": 120,
+            "one_file_median_s": 0.24,
+            "many_files_median_s": 0.714,
+            "per_file_ms": 4.0,
+            "target_ms": 5.0,
+        },
+    }
     per_file, inertia = targets({"latency": lat})
     assert per_file["met"] is True and per_file["measured"] == 4.0 and per_file["comparison"] == "≤"
     assert inertia["met"] is True and inertia["measured"] == 2.4
@@ -59,9 +85,15 @@ def test_start_up_targets_per_file_in_ms_and_whole_process_as_a_ratio():
 def test_import_breakdown_rows_are_sorted_with_shares_and_a_total():
     from rbi.bench.report import import_rows
 
-    rows = import_rows({"total_ms": 200.0, "groups_ms": {"numpy": 80.0, "pydantic": 100.0, "rich (tables)": 20.0}})
-    assert rows == [["pydantic", "100", "50%"], ["numpy", "80", "40%"], ["rich (tables)", "20", "10%"],
-                    ["all imports", "200", "100%"]]
+    rows = import_rows(
+        {"total_ms": 200.0, "groups_ms": {"numpy": 80.0, "pydantic": 100.0, "rich (tables)": 20.0}}
+    )
+    assert rows == [
+        ["pydantic", "100", "50%"],
+        ["numpy", "80", "40%"],
+        ["rich (tables)", "20", "10%"],
+        ["all imports", "200", "100%"],
+    ]
 
 
 def test_sample_runs_spread_over_the_grid():
@@ -77,9 +109,14 @@ def test_headline_quotes_the_kernel_measurement_the_targets_table_shows():
 
     kernel = _kernel(chapter=4.5, default=0.00188, best=0.000957)
     kernel["chapter"]["omega_error"], kernel["default"]["omega_error"] = 6e-4, 4e-8
-    other_timing = {"ratio_default": 3197.0, "default_seconds": 0.00127, "chapter_seconds": 4.05,
-                    "chapter_orientation_error_deg": 1e-3, "default_orientation_error_deg": 1e-7,
-                    "default_no_worse": True}
+    other_timing = {
+        "ratio_default": 3197.0,
+        "default_seconds": 0.00127,
+        "chapter_seconds": 4.05,
+        "chapter_orientation_error_deg": 1e-3,
+        "default_orientation_error_deg": 1e-7,
+        "default_no_worse": True,
+    }
     case = {"name": "bolted top", "spec": "bodies/top_bolted.yaml", "duration": 4.0, "speedup": other_timing}
     line = headline({"kernel": kernel, "workprecision": {"cases": [case]}})[0]
     shown = target_rows(targets({"kernel": kernel}))[0][2]

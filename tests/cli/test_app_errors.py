@@ -10,9 +10,9 @@ TOP = BODIES / "top.yaml"
 @pytest.mark.parametrize(
     "args, needle",
     [
-        (["momentum", TOP], "--omega"),                                   # a required option missing
-        (["inertia", TOP, "--format", "xml"], "--format"),                # a bad choice
-        (["bogus"], "bogus"),                                             # an unknown command
+        (["momentum", TOP], "--omega"),  # a required option missing
+        (["inertia", TOP, "--format", "xml"], "--format"),  # a bad choice
+        (["bogus"], "bogus"),  # an unknown command
         (["inertia", TOP, "--about", "1e200,0,0", "-f", "json"], "not finite"),  # overflow, not nulls
         (["momentum", TOP, "--omega", "1e200,0,0"], "not finite"),
     ],

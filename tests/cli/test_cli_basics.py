@@ -34,8 +34,9 @@ def run_in_terminal(args, env_extra):
     env = {k: v for k, v in os.environ.items() if k not in ("NO_COLOR", "FORCE_COLOR", "TERM")}
     env.update({"TERM": "xterm-256color", "COLUMNS": "100"}, **env_extra)
     master, slave = pty.openpty()
-    proc = subprocess.Popen([sys.executable, "-m", "rbi", *map(str, args)], stdout=slave,
-                            stderr=subprocess.PIPE, env=env)
+    proc = subprocess.Popen(
+        [sys.executable, "-m", "rbi", *map(str, args)], stdout=slave, stderr=subprocess.PIPE, env=env
+    )
     os.close(slave)
     chunks = []
     while True:
@@ -61,8 +62,13 @@ def test_a_terminal_gets_styles_unless_no_color_is_set(bodies):
 
 def test_no_color_wins_over_force_color(bodies):
     env = {**os.environ, "NO_COLOR": "1", "FORCE_COLOR": "1"}
-    proc = subprocess.run([sys.executable, "-m", "rbi", "momentum", str(bodies / "top.yaml"), "--omega", "0,0,100"],
-                          capture_output=True, text=True, env=env, timeout=60)
+    proc = subprocess.run(
+        [sys.executable, "-m", "rbi", "momentum", str(bodies / "top.yaml"), "--omega", "0,0,100"],
+        capture_output=True,
+        text=True,
+        env=env,
+        timeout=60,
+    )
     assert proc.returncode == 0
     assert "\x1b" not in proc.stdout and "\x1b" not in proc.stderr
 

@@ -64,7 +64,9 @@ def test_mjcf_fullinertia_order_is_xx_yy_zz_xy_xz_yz(write_spec):
     root = ET.fromstring(export(write_spec(MM_G), "--to", "mjcf"))
     assert float(root.get("mass")) == pytest.approx(SI_MASS, rel=1e-15)
     assert floats(root.get("pos")) == pytest.approx(SI_COM, rel=1e-14)
-    assert floats(root.get("fullinertia")) == pytest.approx([0.003, 0.003, 0.006, 0.003, 0.0, 0.0], rel=1e-12, abs=1e-18)
+    assert floats(root.get("fullinertia")) == pytest.approx(
+        [0.003, 0.003, 0.006, 0.003, 0.0, 0.0], rel=1e-12, abs=1e-18
+    )
 
 
 def test_numbers_round_trip_exactly_against_rbi_inertia():
@@ -88,11 +90,14 @@ def test_mjcf_diagonal_form_rebuilds_the_matrix(bodies):
     assert floats(root.get("diaginertia")) == sorted(floats(root.get("diaginertia")))
 
 
-@pytest.mark.parametrize("to, root_tag, path", [
-    ("urdf", "robot", "link/inertial"),
-    ("sdf", "sdf", "model/link/inertial"),
-    ("mjcf", "mujoco", "worldbody/body/inertial"),
-])
+@pytest.mark.parametrize(
+    "to, root_tag, path",
+    [
+        ("urdf", "robot", "link/inertial"),
+        ("sdf", "sdf", "model/link/inertial"),
+        ("mjcf", "mujoco", "worldbody/body/inertial"),
+    ],
+)
 def test_document_wraps_the_element(to, root_tag, path):
     root = ET.fromstring(export(BODIES / "top.yaml", "--to", to, "--document"))
     assert root.tag == root_tag and root.find(path) is not None
@@ -120,7 +125,9 @@ def test_names_with_control_characters_give_well_formed_xml_and_reach_the_termin
     """XML 1.0 cannot hold ESC or BEL, and printed raw they would drive the terminal; a comment
     cannot hold '--' (here from the file's name)."""
     spec = tmp_path / "a---b.yaml"
-    spec.write_text('name: "arm\\e]0;title\\a"\nparts:\n  - {shape: sphere, mass: 1, radius: 0.1, center: [0, 0, 0]}\n')
+    spec.write_text(
+        'name: "arm\\e]0;title\\a"\nparts:\n  - {shape: sphere, mass: 1, radius: 0.1, center: [0, 0, 0]}\n'
+    )
     proc = run_rbi_inprocess("export", spec, "--to", to, "--document")
     assert proc.returncode == 0, proc.stderr
     assert not any(ord(c) < 32 and c not in "\n\t" for c in proc.stdout)

@@ -106,7 +106,8 @@ def test_urdf_link_without_inertial_is_skipped_with_a_note(tmp_path):
     box = yaml.safe_load(ok("import", path, "--link", "box"))  # one link: in its own frame
     assert box["parts"][0]["rotation"] == {"euler_deg": [0.0, 0.0, 90.0], "sequence": "xyz"}
     assert json.loads(ok("import", path, "--format", "json"))["skipped"] == [
-        {"link": "link[0] (world)", "reason": "no <inertial> element"}]
+        {"link": "link[0] (world)", "reason": "no <inertial> element"}
+    ]
 
 
 def test_imported_spec_works_with_principal_and_check(tmp_path):
@@ -192,7 +193,9 @@ def test_mjcf_body_without_inertial_or_geoms_is_listed_as_skipped(tmp_path):
     text = MJCF.replace('<geom type="sphere" size="0.05"/>', '<site pos="0 0 0"/>')
     listing = json.loads(ok("import", write(tmp_path, "hand.xml", text), "--format", "json"))
     assert listing["format"] == "mjcf"
-    assert listing["skipped"] == [{"link": "body[2] (c)", "reason": "no <inertial> element and no geoms with mass"}]
+    assert listing["skipped"] == [
+        {"link": "body[2] (c)", "reason": "no <inertial> element and no geoms with mass"}
+    ]
 
 
 def test_mjcf_quaternion_becomes_the_part_rotation(tmp_path):
@@ -253,8 +256,12 @@ def test_example_robot_file_is_valid_and_imports(tmp_path):
     upper, forearm = links_json(BODIES / "two_link_arm.urdf")
     # upper arm: solid cylinder 1.2 kg, r = 0.03, L = 0.3 along the link's x axis
     m, r, L = 1.2, 0.03, 0.3
-    assert np.allclose(upper["inertia"], np.diag([m * r**2 / 2, m * (3 * r**2 + L**2) / 12,
-                                                  m * (3 * r**2 + L**2) / 12]), rtol=1e-12, atol=1e-18)
+    assert np.allclose(
+        upper["inertia"],
+        np.diag([m * r**2 / 2, m * (3 * r**2 + L**2) / 12, m * (3 * r**2 + L**2) / 12]),
+        rtol=1e-12,
+        atol=1e-18,
+    )
     # forearm: box 0.8 kg, 0.25 × 0.04 × 0.04
     assert forearm["inertia"][1][1] == pytest.approx(0.8 * (0.25**2 + 0.04**2) / 12, rel=1e-15)
 
@@ -264,16 +271,23 @@ def test_import_warns_about_unphysical_links_but_writes_them(tmp_path):
     proc = run_rbi_inprocess("import", path, "--out", str(tmp_path) + "/")
     assert proc.returncode == 0
     assert proc.stderr.count("rbi: warning:") == 3
-    assert sorted(p.name for p in tmp_path.glob("*.yaml")) == ["base.yaml", "massless.yaml", "negative.yaml",
-                                                            "thin_plate.yaml"]
+    assert sorted(p.name for p in tmp_path.glob("*.yaml")) == [
+        "base.yaml",
+        "massless.yaml",
+        "negative.yaml",
+        "thin_plate.yaml",
+    ]
     one_line_exit_2(run_rbi_inprocess("inertia", tmp_path / "thin_plate.yaml"), "triangle inequality")
 
 
 # --- command-line behaviour ---------------------------------------------------------------------
 
+
 def test_out_file_needs_a_single_link(tmp_path):
     path = write(tmp_path, "hand.urdf", URDF)
-    one_line_exit_2(run_rbi_inprocess("import", path, "--out", tmp_path / "x.yaml"), "--out", "2 links", "--link")
+    one_line_exit_2(
+        run_rbi_inprocess("import", path, "--out", tmp_path / "x.yaml"), "--out", "2 links", "--link"
+    )
     assert not (tmp_path / "x.yaml").exists()
 
 
@@ -343,56 +357,82 @@ def test_entities_are_refused(tmp_path, text, command):
 def test_deep_nesting_is_refused(tmp_path):
     depth = 5000
     text = "<mujoco><worldbody>" + "<body>" * depth + "</body>" * depth + "</worldbody></mujoco>"
-    one_line_exit_2(run_rbi_inprocess("import", write(tmp_path, "deep.xml", text)), "deep.xml", "nested deeper")
+    one_line_exit_2(
+        run_rbi_inprocess("import", write(tmp_path, "deep.xml", text)), "deep.xml", "nested deeper"
+    )
 
 
 def test_huge_file_is_refused(tmp_path, monkeypatch):
     from rbi.formats import robot_xml
 
     monkeypatch.setattr(robot_xml, "MAX_FILE_BYTES", 200)
-    one_line_exit_2(run_rbi_inprocess("import", write(tmp_path, "hand.urdf", URDF)), "hand.urdf", "larger than")
+    one_line_exit_2(
+        run_rbi_inprocess("import", write(tmp_path, "hand.urdf", URDF)), "hand.urdf", "larger than"
+    )
 
 
-@pytest.mark.parametrize("value, words", [
-    ("abc", ["ixy", "'abc'"]),
-    ("nan", ["ixy", "'nan'"]),
-    ("inf", ["ixy", "'inf'"]),
-    ("1e400", ["ixy", "too large"]),
-    ("1_000", ["ixy", "'1_000'"]),
-    ("0x10", ["ixy", "'0x10'"]),
-    ("", ["ixy", "expected 1"]),
-])
+@pytest.mark.parametrize(
+    "value, words",
+    [
+        ("abc", ["ixy", "'abc'"]),
+        ("nan", ["ixy", "'nan'"]),
+        ("inf", ["ixy", "'inf'"]),
+        ("1e400", ["ixy", "too large"]),
+        ("1_000", ["ixy", "'1_000'"]),
+        ("0x10", ["ixy", "'0x10'"]),
+        ("", ["ixy", "expected 1"]),
+    ],
+)
 def test_bad_numbers_name_file_link_and_attribute(tmp_path, value, words):
     text = URDF.replace('ixy="-0.002"', f'ixy="{value}"')
     proc = run_rbi_inprocess("import", write(tmp_path, "hand.urdf", text))
     one_line_exit_2(proc, "hand.urdf", "link[2] (plate)", "inertial/inertia", *words)
 
 
-@pytest.mark.parametrize("text, words", [
-    ("<robot><link name='a'><inertial><mass value='1'/></inertial></link></robot>", ["link[0] (a)", "inertia: missing"]),
-    ("<robot><link name='a'><inertial><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>",
-     ["mass: missing"]),
-    ("<robot><link name='a'><inertial><origin xyz='1 2'/><mass value='1'/>"
-     "<inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>", ["xyz", "expected 3"]),
-    ("<html><body/></html>", ["not a URDF, SDF or MJCF", "<html>"]),
-    ("<robot><link name='a'>", ["not well-formed XML"]),
-    ("", ["not well-formed XML"]),
-])
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        (
+            "<robot><link name='a'><inertial><mass value='1'/></inertial></link></robot>",
+            ["link[0] (a)", "inertia: missing"],
+        ),
+        (
+            "<robot><link name='a'><inertial><inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>",
+            ["mass: missing"],
+        ),
+        (
+            "<robot><link name='a'><inertial><origin xyz='1 2'/><mass value='1'/>"
+            "<inertia ixx='1' ixy='0' ixz='0' iyy='1' iyz='0' izz='1'/></inertial></link></robot>",
+            ["xyz", "expected 3"],
+        ),
+        ("<html><body/></html>", ["not a URDF, SDF or MJCF", "<html>"]),
+        ("<robot><link name='a'>", ["not well-formed XML"]),
+        ("", ["not well-formed XML"]),
+    ],
+)
 def test_malformed_urdf_is_one_line(tmp_path, text, words):
     one_line_exit_2(run_rbi_inprocess("import", write(tmp_path, "bad.urdf", text)), "bad.urdf", *words)
 
 
-@pytest.mark.parametrize("inertial, words", [
-    ('<inertial pos="0 0 0" mass="1" diaginertia="1 1 1" fullinertia="1 1 1 0 0 0"/>', ["exactly one"]),
-    ('<inertial pos="0 0 0" mass="1"/>', ["exactly one"]),
-    ('<inertial pos="0 0 0" mass="1" euler="0 0 90" fullinertia="1 1 1 0 0 0"/>', ["orientation", "fullinertia"]),
-    ('<inertial pos="0 0 0" mass="1" quat="0 0 0 0" diaginertia="1 1 1"/>', ["quat", "zero"]),
-    ('<inertial mass="1" diaginertia="1 1 1"/>', ["pos", "expected 3"]),
-    ('<inertial pos="0 0 0" mass="NaN" diaginertia="1 1 1"/>', ["mass", "'NaN'"]),
-])
+@pytest.mark.parametrize(
+    "inertial, words",
+    [
+        ('<inertial pos="0 0 0" mass="1" diaginertia="1 1 1" fullinertia="1 1 1 0 0 0"/>', ["exactly one"]),
+        ('<inertial pos="0 0 0" mass="1"/>', ["exactly one"]),
+        (
+            '<inertial pos="0 0 0" mass="1" euler="0 0 90" fullinertia="1 1 1 0 0 0"/>',
+            ["orientation", "fullinertia"],
+        ),
+        ('<inertial pos="0 0 0" mass="1" quat="0 0 0 0" diaginertia="1 1 1"/>', ["quat", "zero"]),
+        ('<inertial mass="1" diaginertia="1 1 1"/>', ["pos", "expected 3"]),
+        ('<inertial pos="0 0 0" mass="NaN" diaginertia="1 1 1"/>', ["mass", "'NaN'"]),
+    ],
+)
 def test_malformed_mjcf_is_one_line(tmp_path, inertial, words):
     text = f'<mujoco><worldbody><body name="b">{inertial}</body></worldbody></mujoco>'
-    one_line_exit_2(run_rbi_inprocess("import", write(tmp_path, "m.xml", text)), "m.xml", "body[0] (b)", *words)
+    one_line_exit_2(
+        run_rbi_inprocess("import", write(tmp_path, "m.xml", text)), "m.xml", "body[0] (b)", *words
+    )
 
 
 def test_sdf_pose_relative_to_another_frame_is_refused(tmp_path):
@@ -411,16 +451,23 @@ def test_end_to_end_import_then_principal(tmp_path):
 
 def test_sdf_pose_as_quaternion_xyzw(tmp_path):
     half = math.sqrt(0.5)  # a quarter turn about z: (x, y, z, w) = (0, 0, √½, √½)
-    text = SDF.replace("<pose>1 2 3 0 0 90</pose>",
-                       f'<pose rotation_format="quat_xyzw">1 2 3 0 0 {half!r} {half!r}</pose>')
+    text = SDF.replace(
+        "<pose>1 2 3 0 0 90</pose>", f'<pose rotation_format="quat_xyzw">1 2 3 0 0 {half!r} {half!r}</pose>'
+    )
     turned, _ = links_json(write(tmp_path, "m.sdf", text))
     assert np.allclose(turned["inertia"], np.diag([0.2, 0.1, 0.3]), rtol=0, atol=1e-15)
     assert turned["inertial_quaternion"] == pytest.approx([half, 0, 0, half])
 
 
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(st.lists(st.tuples(st.floats(0.1, 5), st.floats(-1, 1), st.floats(-1, 1), st.floats(-1, 1)), min_size=4, max_size=6),
-       st.tuples(*[st.floats(-math.pi, math.pi)] * 3))
+@given(
+    st.lists(
+        st.tuples(st.floats(0.1, 5), st.floats(-1, 1), st.floats(-1, 1), st.floats(-1, 1)),
+        min_size=4,
+        max_size=6,
+    ),
+    st.tuples(*[st.floats(-math.pi, math.pi)] * 3),
+)
 def test_urdf_rpy_turns_the_inertia_as_scipy_does(tmp_path, points, rpy):
     # any real mass distribution (point masses), its inertia written in a turned inertial frame
     from scipy.spatial.transform import Rotation
@@ -433,8 +480,10 @@ def test_urdf_rpy_turns_the_inertia_as_scipy_does(tmp_path, points, rpy):
     names = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
     values = (inertia[0, 0], inertia[1, 1], inertia[2, 2], inertia[0, 1], inertia[0, 2], inertia[1, 2])
     attributes = " ".join(f'{k}="{float(v)!r}"' for k, v in zip(names, values))
-    text = (f'<robot name="r"><link name="l"><inertial><origin xyz="0 0 0" rpy="{rpy[0]!r} {rpy[1]!r} {rpy[2]!r}"/>'
-            f'<mass value="{float(masses.sum())!r}"/><inertia {attributes}/></inertial></link></robot>')
+    text = (
+        f'<robot name="r"><link name="l"><inertial><origin xyz="0 0 0" rpy="{rpy[0]!r} {rpy[1]!r} {rpy[2]!r}"/>'
+        f'<mass value="{float(masses.sum())!r}"/><inertia {attributes}/></inertial></link></robot>'
+    )
     (link,) = links_json(write(tmp_path, "r.urdf", text))
     R = Rotation.from_euler("xyz", rpy).as_matrix()  # URDF: fixed-axis roll, pitch, yaw
     assert np.allclose(link["inertia"], R @ inertia @ R.T, rtol=0, atol=1e-13 * np.trace(inertia))
@@ -444,10 +493,14 @@ def test_notes_and_warnings_show_link_names_escaped(tmp_path):
     """XML 1.0 allows C1 control characters and bidi overrides in a name: the note about a
     skipped link must reach the terminal with them escaped, never raw."""
     name = "evil\u202e\u009b2J"
-    path = write(tmp_path, "arm.urdf", f"""<robot name="r">
+    path = write(
+        tmp_path,
+        "arm.urdf",
+        f"""<robot name="r">
   <link name="{name}"/>
   <link name="ok"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
-</robot>""")
+</robot>""",
+    )
     proc = run_rbi_inprocess("import", path, "--format", "json")
     assert proc.returncode == 0, proc.stderr
     assert "skipped" in proc.stderr

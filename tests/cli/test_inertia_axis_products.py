@@ -73,14 +73,21 @@ def test_cad_products_are_positive_integrals_and_labelled(write_spec):
     tensor = json_of("inertia", path, "--about", "origin")
     cad = json_of("inertia", path, "--about", "origin", "--products", "cad")
     assert tensor["products_sign"] == "tensor" and cad["products_sign"] == "cad"
-    assert [cad["inertia"][0][1], cad["inertia"][0][2], cad["inertia"][1][2]] == pytest.approx([0.12, 0.3, 0.2])
-    assert [tensor["inertia"][0][1], tensor["inertia"][0][2], tensor["inertia"][1][2]] == pytest.approx([-0.12, -0.3, -0.2])
+    assert [cad["inertia"][0][1], cad["inertia"][0][2], cad["inertia"][1][2]] == pytest.approx(
+        [0.12, 0.3, 0.2]
+    )
+    assert [tensor["inertia"][0][1], tensor["inertia"][0][2], tensor["inertia"][1][2]] == pytest.approx(
+        [-0.12, -0.3, -0.2]
+    )
     assert cad["inertia"][1][0] == cad["inertia"][0][1]
     # the moments do not change: Ixx = Σ m (y² + z²) = 2 (0.04 + 0.25)
     assert cad["inertia"][0][0] == tensor["inertia"][0][0] == pytest.approx(0.58)
     table = run_rbi_inprocess("inertia", path, "--products", "cad").stdout
     assert "CAD products" in table
-    assert "products" in run_rbi_inprocess("inertia", path).stdout and "CAD" not in run_rbi_inprocess("inertia", path).stdout
+    assert (
+        "products" in run_rbi_inprocess("inertia", path).stdout
+        and "CAD" not in run_rbi_inprocess("inertia", path).stdout
+    )
 
 
 def test_moment_about_axis_does_not_depend_on_the_products_sign(write_spec):
@@ -136,4 +143,6 @@ def test_radii_in_csv_are_numbered_like_the_moments(write_spec):
     header, row = run_rbi_inprocess("principal", path, "--format", "csv").stdout.splitlines()[:2]
     values = dict(zip(header.split(","), row.split(",")))
     # box 1 × 2 × 3, 12 kg: moments m(b² + c²)/12 → 5, 10, 13; k_i² = I_i / m
-    assert [float(values[f"radii_of_gyration_{i}"]) ** 2 for i in (1, 2, 3)] == pytest.approx([5 / 12, 10 / 12, 13 / 12])
+    assert [float(values[f"radii_of_gyration_{i}"]) ** 2 for i in (1, 2, 3)] == pytest.approx(
+        [5 / 12, 10 / 12, 13 / 12]
+    )

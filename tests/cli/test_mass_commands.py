@@ -36,9 +36,11 @@ def hand_inertia(point):
 def rot(axis, degrees):
     t = math.radians(degrees)
     c, s = math.cos(t), math.sin(t)
-    return {"x": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]),
-            "y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]),
-            "z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]])}[axis]
+    return {
+        "x": np.array([[1, 0, 0], [0, c, -s], [0, s, c]]),
+        "y": np.array([[c, 0, s], [0, 1, 0], [-s, 0, c]]),
+        "z": np.array([[c, -s, 0], [s, c, 0], [0, 0, 1]]),
+    }[axis]
 
 
 def run_ok(*args):
@@ -73,8 +75,15 @@ def test_inertia_json_has_the_contract_keys(bolted):
     assert_matrix(out["inertia"], hand_inertia(COM))
 
 
-@pytest.mark.parametrize("about, point", [("origin", [0.0, 0.0, 0.0]), ("pivot", [0.0, 0.0, 0.0]),
-                                          ("0.01,-0.02,0.3", [0.01, -0.02, 0.3]), ("com", COM)])
+@pytest.mark.parametrize(
+    "about, point",
+    [
+        ("origin", [0.0, 0.0, 0.0]),
+        ("pivot", [0.0, 0.0, 0.0]),
+        ("0.01,-0.02,0.3", [0.01, -0.02, 0.3]),
+        ("com", COM),
+    ],
+)
 def test_inertia_about_a_point(bolted, about, point):
     out = rbi_json("inertia", bolted, "--about", about)
     np.testing.assert_allclose(out["about"], point, rtol=1e-14, atol=1e-18)
@@ -139,7 +148,9 @@ def test_momentum_about_the_held_pivot(bolted):
 def test_momentum_about_a_point_with_a_given_velocity(bolted):
     # h_o = I_c ω + m r_{c/o} × v_c and T = ½ ωᵀ I_c ω + ½ m |v_c|² (the chapter's extra term).
     w, v, o = np.array([0.0, 2.0, 10.0]), np.array([0.5, -0.25, 1.0]), np.array([0.1, 0.2, -0.3])
-    out = rbi_json("momentum", bolted, "--omega", "0,2,10", "--velocity", "0.5,-0.25,1", "--about", "0.1,0.2,-0.3")
+    out = rbi_json(
+        "momentum", bolted, "--omega", "0,2,10", "--velocity", "0.5,-0.25,1", "--about", "0.1,0.2,-0.3"
+    )
     I_c = hand_inertia(COM)
     np.testing.assert_allclose(out["angular_momentum"], I_c @ w + MASS * np.cross(COM - o, v), rtol=1e-12)
     assert out["kinetic_energy"] == pytest.approx(0.5 * w @ I_c @ w + 0.5 * MASS * v @ v, rel=1e-12)
@@ -151,8 +162,15 @@ def test_spin_about_a_principal_axis_has_h_parallel_to_omega(bolted):
     assert out["angle_deg"] == pytest.approx(0.0, abs=1e-6)
 
 
-@pytest.mark.parametrize("args", [["inertia"], ["inertia", "--about", "pivot", "--rotate", "y:30"],
-                                  ["principal"], ["momentum", "--omega", "0,0,100"]])
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["inertia"],
+        ["inertia", "--about", "pivot", "--rotate", "y:30"],
+        ["principal"],
+        ["momentum", "--omega", "0,0,100"],
+    ],
+)
 def test_csv_is_a_header_and_one_row_matching_json(bolted, args):
     rows = list(csv.reader(io.StringIO(run_ok(args[0], bolted, *args[1:], "--format", "csv"))))
     assert len(rows) == 2 and len(rows[0]) == len(rows[1])
@@ -167,12 +185,15 @@ def test_csv_is_a_header_and_one_row_matching_json(bolted, args):
         assert float(row["angle_deg"]) == out["angle_deg"]
 
 
-@pytest.mark.parametrize("args, labels", [
-    (["inertia"], ["kg·m²", "kg", "0.52"]),
-    (["inertia", "--rotate", "y:30"], ["kg·m²", "y:30"]),
-    (["principal"], ["kg·m²", "2.250022", "2.949333"]),
-    (["momentum", "--omega", "0,0,100"], ["kg·m²/s", "rad/s", "1.55996"]),
-])
+@pytest.mark.parametrize(
+    "args, labels",
+    [
+        (["inertia"], ["kg·m²", "kg", "0.52"]),
+        (["inertia", "--rotate", "y:30"], ["kg·m²", "y:30"]),
+        (["principal"], ["kg·m²", "2.250022", "2.949333"]),
+        (["momentum", "--omega", "0,0,100"], ["kg·m²/s", "rad/s", "1.55996"]),
+    ],
+)
 def test_table_is_readable_with_units(bolted, args, labels):
     text = run_ok(args[0], bolted, *args[1:])
     for label in labels:

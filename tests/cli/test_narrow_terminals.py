@@ -15,7 +15,8 @@ from pathlib import Path
 
 import pytest
 
-from tests.conftest import BODIES, run_rbi_inprocess as rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as rbi
 
 WIDTHS = (60, 80, 120)
 BAD_PARTS = "parts:\n  - {name: a, shape: point, mass: -1, position: [0, 0, 0]}\n"
@@ -26,16 +27,36 @@ COMMANDS = {
     "principal": ["principal", BODIES / "cubesat.yaml"],
     "parts": ["parts", BODIES / "robot_link.yaml"],
     "momentum": ["momentum", BODIES / "top_bolted.yaml", "--omega", "0,0,100"],
-    "dynamics": ["dynamics", BODIES / "top.yaml", "--about", "pivot", "--omega", "0,0,200", "--alpha", "1,0,0"],
+    "dynamics": [
+        "dynamics",
+        BODIES / "top.yaml",
+        "--about",
+        "pivot",
+        "--omega",
+        "0,0,200",
+        "--alpha",
+        "1,0,0",
+    ],
     "simulate": ["simulate", BODIES / "top_bolted.yaml", "--spin", "200", "--duration", "1"],
     "sweep": ["sweep", BODIES / "top.yaml", "--spin", "180:240:4", "--tilt", "0.01", "--duration", "1"],
-    "sweep spread": ["sweep", BODIES / "top_bolted.yaml", "--mass-properties", "--runs", "40", "--seed", "1",
-                     "--vary", "parts.bolt.position[0]=uniform(0.039,0.041)"],
+    "sweep spread": [
+        "sweep",
+        BODIES / "top_bolted.yaml",
+        "--mass-properties",
+        "--runs",
+        "40",
+        "--seed",
+        "1",
+        "--vary",
+        "parts.bolt.position[0]=uniform(0.039,0.041)",
+    ],
     "check": ["check", BODIES / "robot_link.yaml"],
     "several files": ["principal", BODIES / "top.yaml", BODIES / "tbar.yaml"],
 }
 
-_NUMBER = re.compile(r"(?<![\w.·^/])[-−]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?(?![\w⁰¹²³⁴⁵⁶⁷⁸⁹⁻.])")
+_NUMBER = re.compile(
+    r"(?<![\w.·^/])[-−]?(?:\d{1,3}(?:,\d{3})+|\d+)(?:\.\d+)?(?:e[-+]?\d+)?(?![\w⁰¹²³⁴⁵⁶⁷⁸⁹⁻.])"
+)
 
 
 def numbers_in(value) -> list[float]:
@@ -139,7 +160,9 @@ def test_bench_tables_at_every_width(monkeypatch):
     from rbi.cli.render import print_table
 
     result = json.loads((Path(__file__).parents[1] / "data" / "bench" / "quick_result.json").read_text())
-    known = Known(numbers_in(result) + numbers_in(__import__("rbi.bench.report", fromlist=["x"]).sections(result)))
+    known = Known(
+        numbers_in(result) + numbers_in(__import__("rbi.bench.report", fromlist=["x"]).sections(result))
+    )
     for width in WIDTHS:
         monkeypatch.setenv("COLUMNS", str(width))
         printed = io.StringIO()
@@ -161,7 +184,9 @@ def test_rounding_noise_prints_as_zero_and_json_keeps_it(monkeypatch):
     assert rows[-2][2] == "0" and rows[-1][1] == "0", rows
     from rbi.cli.render import vector_text
 
-    assert vector_text([1.0, 3.6e-37, -2e-13]) == "[1, 0, 0]" and vector_text([1e-20, 0, 0]) == "[1e-20, 0, 0]"
+    assert (
+        vector_text([1.0, 3.6e-37, -2e-13]) == "[1, 0, 0]" and vector_text([1e-20, 0, 0]) == "[1e-20, 0, 0]"
+    )
 
 
 def test_energy_is_in_joules_for_an_si_spec_and_every_header_has_its_unit():

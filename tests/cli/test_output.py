@@ -100,8 +100,10 @@ def test_the_extension_decides_the_format(tmp_path):
     assert output_target(str(tmp_path / "X.PNG"), "--plot", ("png",)).format == "png"
 
 
-@pytest.mark.parametrize("path,why", [("", "empty"), ("   ", "empty"), ("a\0b.csv", "NUL"),
-                                      ("x" * 300 + ".csv", "longer than 255")])
+@pytest.mark.parametrize(
+    "path,why",
+    [("", "empty"), ("   ", "empty"), ("a\0b.csv", "NUL"), ("x" * 300 + ".csv", "longer than 255")],
+)
 def test_impossible_paths_are_refused(path, why):
     with pytest.raises(InputError, match=why):
         output_target(path, "--out", ("csv",))

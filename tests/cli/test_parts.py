@@ -7,7 +7,8 @@ import math
 
 import pytest
 
-from tests.conftest import BODIES, run_rbi_inprocess as rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as rbi
 
 
 def parts_json(path):
@@ -49,7 +50,9 @@ def test_holes_count_negative_and_the_masses_still_add_up():
 
 
 def test_a_spec_written_in_millimetres_without_saying_so_is_flagged(write_spec):
-    spec = write_spec("parts:\n  - {name: cone, shape: cone, mass: 0.4, radius: 40, apex: [0, 0, 0], base: [0, 0, 60]}\n")
+    spec = write_spec(
+        "parts:\n  - {name: cone, shape: cone, mass: 0.4, radius: 40, apex: [0, 0, 0], base: [0, 0, 60]}\n"
+    )
     out, warnings = parts_json(spec)
     assert out["parts"][0]["implied_density_si"] == pytest.approx(0.4 / (math.pi * 40**2 * 60 / 3), rel=1e-12)
     assert warnings == "" and len(out["warnings"]) == 1  # JSON carries the warning (table output prints it)

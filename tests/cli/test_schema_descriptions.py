@@ -59,8 +59,17 @@ def test_each_material_name_is_listed_once():
     assert '"STEEL"' not in text and '"Steel"' not in text  # no case variants listed
 
 
-@pytest.mark.parametrize("density, valid", [("steel", True), ("Stainless_Steel", True), ("TI-6AL-4V", True),
-                                            ("aluminium-6061", True), ("unobtainium", False), ("steel!", False)])
+@pytest.mark.parametrize(
+    "density, valid",
+    [
+        ("steel", True),
+        ("Stainless_Steel", True),
+        ("TI-6AL-4V", True),
+        ("aluminium-6061", True),
+        ("unobtainium", False),
+        ("steel!", False),
+    ],
+)
 def test_schema_and_rbi_agree_on_material_spellings(write_spec, density, valid):
     spec = {"parts": [{"shape": "sphere", "density": density, "center": [0, 0, 0], "radius": 0.01}]}
     errors = list(jsonschema.Draft202012Validator(spec_schema()).iter_errors(spec))

@@ -26,14 +26,20 @@ def test_every_bundled_body_satisfies_the_schema(validator):
         assert not errors, (path.name, errors)
 
 
-@pytest.mark.parametrize("spec", [
-    {"parts": [{"shape": "box", "mass": 1, "center": [0, 0, 0], "size": [1, 1, 1], "colour": "red"}]},
-    {"parts": [{"shape": "cylindre", "mass": 1, "radius": 1, "start": [0, 0, 0], "end": [0, 0, 1]}]},
-    {"parts": [{"shape": "sphere", "density": "unobtainium", "center": [0, 0, 0], "radius": 1}]},
-    {"parts": [{"shape": "point", "mass": 1, "position": [0, 0]}]},
-    {"units": {"length": "furlong"}, "parts": [{"shape": "point", "mass": 1, "position": [0, 0, 0]}]},
-    {"parts": [{"shape": "point", "mass": 1, "position": [0, 0, 0]}], "expect": {"mass": {"value": 1, "tol": "1 percent"}}},
-])
+@pytest.mark.parametrize(
+    "spec",
+    [
+        {"parts": [{"shape": "box", "mass": 1, "center": [0, 0, 0], "size": [1, 1, 1], "colour": "red"}]},
+        {"parts": [{"shape": "cylindre", "mass": 1, "radius": 1, "start": [0, 0, 0], "end": [0, 0, 1]}]},
+        {"parts": [{"shape": "sphere", "density": "unobtainium", "center": [0, 0, 0], "radius": 1}]},
+        {"parts": [{"shape": "point", "mass": 1, "position": [0, 0]}]},
+        {"units": {"length": "furlong"}, "parts": [{"shape": "point", "mass": 1, "position": [0, 0, 0]}]},
+        {
+            "parts": [{"shape": "point", "mass": 1, "position": [0, 0, 0]}],
+            "expect": {"mass": {"value": 1, "tol": "1 percent"}},
+        },
+    ],
+)
 def test_schema_catches_typos_an_editor_should_flag(validator, spec):
     assert list(validator.iter_errors(spec))
 
@@ -58,15 +64,19 @@ def test_validate_reports_every_problem_of_every_file(write_spec):
     assert proc.returncode == 2
     lines = proc.stdout.splitlines()
     assert len(lines) == 3
-    assert lines[0].startswith(f"{bad}: parts[") and any("parts[0] (a): mass: must be greater than 0" in l for l in lines)
+    assert lines[0].startswith(f"{bad}: parts[") and any(
+        "parts[0] (a): mass: must be greater than 0" in l for l in lines
+    )
     assert any(f"{bad}: parts[1] (b): colour: unknown field" in l for l in lines)
     assert lines[2].startswith(f"{broken}: YAML syntax error")
     assert "1 of 3" not in proc.stderr and "2 of 3 file(s) invalid, 3 problem(s)" in proc.stderr
 
 
 def test_validate_sees_physical_problems_too(write_spec):
-    hole = write_spec("parts:\n  - {name: s, shape: sphere, mass: 1, radius: 1, center: [0, 0, 0]}\n"
-                      "  - {name: h, shape: sphere, mass: 2, radius: 1, center: [0, 0, 0], subtract: true}\n")
+    hole = write_spec(
+        "parts:\n  - {name: s, shape: sphere, mass: 1, radius: 1, center: [0, 0, 0]}\n"
+        "  - {name: h, shape: sphere, mass: 2, radius: 1, center: [0, 0, 0], subtract: true}\n"
+    )
     proc = run_rbi_inprocess("validate", hole, "-f", "json")
     out = json.loads(proc.stdout)
     assert proc.returncode == 2 and out["ok"] is False

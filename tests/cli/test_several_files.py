@@ -15,7 +15,8 @@ import sys
 import numpy as np
 import pytest
 
-from tests.conftest import BODIES, run_rbi_inprocess as rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as rbi
 
 TOP, BOLTED = BODIES / "top.yaml", BODIES / "top_bolted.yaml"
 TOP_MASS, BOLTED_MASS = 0.4 + 0.1, 0.4 + 0.1 + 0.02
@@ -72,7 +73,12 @@ def test_table_one_section_per_file_in_order(bad_spec):
     proc = rbi("principal", TOP, bad_spec, BOLTED)
     assert proc.returncode == 2
     out = proc.stdout
-    assert out.index(f"==> {TOP} <==") < out.index("spinning-top") < out.index(f"==> {BOLTED} <==") < out.index("bolted-top")
+    assert (
+        out.index(f"==> {TOP} <==")
+        < out.index("spinning-top")
+        < out.index(f"==> {BOLTED} <==")
+        < out.index("bolted-top")
+    )
     assert f"==> {bad_spec} <==" not in out
     assert len(proc.stderr.strip().splitlines()) == 1
 
@@ -91,10 +97,16 @@ def test_check_exit_status_is_the_worst_of_the_files(failing_check, bad_spec):
     failed = rbi("check", link, failing_check, "--format", "csv")
     assert failed.returncode == 1 and failed.stderr == ""
     rows = list(csv.DictReader(io.StringIO(failed.stdout)))
-    assert [(r["file"], r["ok"], r["failed"]) for r in rows] == [(str(link), "True", "0"), (str(failing_check), "False", "1")]
+    assert [(r["file"], r["ok"], r["failed"]) for r in rows] == [
+        (str(link), "True", "0"),
+        (str(failing_check), "False", "1"),
+    ]
     worst = rbi("check", failing_check, bad_spec, link, "--format", "json")
     assert worst.returncode == 2
-    assert [(line["file"], line["ok"]) for line in json_lines(worst.stdout)] == [(str(failing_check), False), (str(link), True)]
+    assert [(line["file"], line["ok"]) for line in json_lines(worst.stdout)] == [
+        (str(failing_check), False),
+        (str(link), True),
+    ]
     # a spec without expect: is bad input for check, the others still checked
     missing = rbi("check", TOP, link, "--format", "json")
     assert missing.returncode == 2 and "expect" in missing.stderr and len(json_lines(missing.stdout)) == 1
@@ -112,6 +124,7 @@ def test_parts_csv_among_several_files_is_one_summary_row_per_file():
 
 # --- standard input -------------------------------------------------------------------------
 
+
 def with_stdin(monkeypatch, text: str) -> None:
     monkeypatch.setattr(sys, "stdin", io.TextIOWrapper(io.BytesIO(text.encode("utf-8")), encoding="utf-8"))
 
@@ -124,8 +137,18 @@ def test_a_yaml_spec_from_standard_input(monkeypatch):
 
 
 def test_a_json_spec_from_standard_input_among_files(monkeypatch):
-    with_stdin(monkeypatch, json.dumps({"name": "two-points", "parts": [
-        {"shape": "point", "mass": 1.0, "position": [-1, 0, 0]}, {"shape": "point", "mass": 1.0, "position": [1, 0, 0]}]}))
+    with_stdin(
+        monkeypatch,
+        json.dumps(
+            {
+                "name": "two-points",
+                "parts": [
+                    {"shape": "point", "mass": 1.0, "position": [-1, 0, 0]},
+                    {"shape": "point", "mass": 1.0, "position": [1, 0, 0]},
+                ],
+            }
+        ),
+    )
     proc = rbi("principal", TOP, "-", "--format", "json")
     assert proc.returncode == 0, proc.stderr
     top, points = json_lines(proc.stdout)
@@ -140,8 +163,16 @@ def test_messages_name_standard_input_stdin(monkeypatch):
     assert proc.stderr.startswith("rbi: <stdin>: parts[0]") and "radius" in proc.stderr
 
 
-@pytest.mark.parametrize("command", [["check"], ["export", "--to", "urdf"], ["momentum", "--omega", "0,0,1"],
-                                     ["dynamics", "--alpha", "0,0,1"], ["simulate", "--spin", "100", "--duration", "0.01"]])
+@pytest.mark.parametrize(
+    "command",
+    [
+        ["check"],
+        ["export", "--to", "urdf"],
+        ["momentum", "--omega", "0,0,1"],
+        ["dynamics", "--alpha", "0,0,1"],
+        ["simulate", "--spin", "100", "--duration", "0.01"],
+    ],
+)
 def test_every_command_that_takes_a_spec_reads_standard_input(monkeypatch, command):
     with_stdin(monkeypatch, (BODIES / "robot_link.yaml").read_text())
     proc = rbi(command[0], "-", *command[1:], "--format", "json")
@@ -167,6 +198,7 @@ def test_mesh_paths_in_a_spec_from_standard_input_are_relative_to_the_current_fo
 
 # --- rbi parts: totals, volumes, principal moments (issue 19) --------------------------------
 
+
 def test_parts_totals_are_the_body_built_by_hand():
     """The bolted top: cone (m 0.4, r 0.04, h 0.06), stem (m 0.1, r 0.008, l 0.04), bolt
     (0.02 kg point at (0.04, 0, 0.06))."""
@@ -179,16 +211,26 @@ def test_parts_totals_are_the_body_built_by_hand():
     # principal moments of each part about its own centre of mass, ascending
     cone_t = 3 / 20 * 0.4 * 0.04**2 + 3 / 80 * 0.4 * 0.06**2
     stem_t = 0.1 * (3 * 0.008**2 + 0.04**2) / 12
-    expected = [sorted([cone_t, cone_t, 0.3 * 0.4 * 0.04**2]), sorted([stem_t, stem_t, 0.5 * 0.1 * 0.008**2]), [0, 0, 0]]
+    expected = [
+        sorted([cone_t, cone_t, 0.3 * 0.4 * 0.04**2]),
+        sorted([stem_t, stem_t, 0.5 * 0.1 * 0.008**2]),
+        [0, 0, 0],
+    ]
     for part, moments in zip(out["parts"], expected):
         assert part["principal_moments"] == pytest.approx(moments, rel=1e-12, abs=1e-18)
     # the body's principal moments: parallel axis for each part about the body's centre of mass
     masses = [0.4, 0.1, 0.02]
     centres = np.array([[0, 0, 0.045], [0, 0, 0.08], [0.04, 0, 0.06]])
-    own = [np.diag([cone_t, cone_t, 0.3 * 0.4 * 0.04**2]), np.diag([stem_t, stem_t, 0.5 * 0.1 * 0.008**2]), np.zeros((3, 3))]
+    own = [
+        np.diag([cone_t, cone_t, 0.3 * 0.4 * 0.04**2]),
+        np.diag([stem_t, stem_t, 0.5 * 0.1 * 0.008**2]),
+        np.zeros((3, 3)),
+    ]
     com = sum(m * c for m, c in zip(masses, centres)) / sum(masses)
-    total = sum(I + m * ((c - com) @ (c - com) * np.eye(3) - np.outer(c - com, c - com))
-                for m, c, I in zip(masses, centres, own))
+    total = sum(
+        I + m * ((c - com) @ (c - com) * np.eye(3) - np.outer(c - com, c - com))
+        for m, c, I in zip(masses, centres, own)
+    )
     assert out["principal_moments"] == pytest.approx(np.linalg.eigvalsh(total), rel=1e-12)
 
 
@@ -200,7 +242,9 @@ def test_parts_table_ends_with_a_total_row(monkeypatch):
     assert len(totals) == 3  # mass and volume; centre of mass; principal moments
     mass_row, com_row, moments_row = totals
     assert mass_row[1:3] == ["0.52", "100"] and mass_row[4] == "—"  # no mean density: the bolt has no volume
-    assert float(mass_row[3]) == pytest.approx(math.pi * 0.04**2 * 0.06 / 3 + math.pi * 0.008**2 * 0.04, rel=1e-5)
+    assert float(mass_row[3]) == pytest.approx(
+        math.pi * 0.04**2 * 0.06 / 3 + math.pi * 0.008**2 * 0.04, rel=1e-5
+    )
     assert [float(x) for x in com_row[1:4]] == pytest.approx([0.02 * 0.04 / 0.52, 0, 0.0272 / 0.52], rel=1e-5)
     json_moments = json.loads(rbi("parts", BOLTED, "--format", "json").stdout)["principal_moments"]
     assert [float(x) * 1e-4 for x in moments_row[1:4]] == pytest.approx(json_moments, rel=1e-4)  # shown ×10⁻⁴

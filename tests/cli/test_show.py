@@ -31,7 +31,9 @@ def test_every_bundled_body_has_a_page(tmp_path, name):
     proc = run_rbi_inprocess("show", BODIES / name, "--out", out)
     assert proc.returncode == 0, proc.stderr
     text = out.read_text(encoding="utf-8")
-    data = json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.S).group(1))
+    data = json.loads(
+        re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.S).group(1)
+    )
     assert len(data["times"]) == 1 and len(data["principal_axes"]) == 3
 
 
@@ -61,7 +63,9 @@ def test_svg_end_to_end(tmp_path, bodies):
 
 def test_bad_extension_and_bad_spec(tmp_path, write_spec):
     one_line_exit_2(run_rbi_inprocess("show", BODIES / "top.yaml", "--out", tmp_path / "a.gif"), "--out")
-    bad = write_spec("parts:\n  - {name: stem, shape: cylinder, mass: 1, radius: -1, start: [0,0,0], end: [0,0,1]}\n")
+    bad = write_spec(
+        "parts:\n  - {name: stem, shape: cylinder, mass: 1, radius: -1, start: [0,0,0], end: [0,0,1]}\n"
+    )
     proc = run_rbi_inprocess("show", bad, "--out", tmp_path / "a.png")
     one_line_exit_2(proc, "stem", "radius")
     assert not (tmp_path / "a.png").exists()

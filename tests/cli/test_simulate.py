@@ -35,14 +35,33 @@ def test_json_summary_of_the_bolted_top():
     assert out["max_relative_drift"] < 1e-9
     assert out["error_estimate"]["orientation_deg"] < 1e-5
     assert out["stability"]["kind"] == "asymmetric top"
-    for key in ("rhs_evals", "wall_seconds", "mean_precession_rate_deg_s", "conserved", "quaternion_norm_error"):
+    for key in (
+        "rhs_evals",
+        "wall_seconds",
+        "mean_precession_rate_deg_s",
+        "conserved",
+        "quaternion_norm_error",
+    ):
         assert key in out
 
 
 def test_csv_file_has_the_contract_columns_and_one_row_per_sample(tmp_path):
     path = tmp_path / "traj.csv"
-    run_rbi("simulate", TOP, "--spin", "200", "--tilt", "5", "--duration", "1", "--samples", "11", "--out", path,
-            check=True)
+    run_rbi(
+        "simulate",
+        TOP,
+        "--spin",
+        "200",
+        "--tilt",
+        "5",
+        "--duration",
+        "1",
+        "--samples",
+        "11",
+        "--out",
+        path,
+        check=True,
+    )
     rows = list(csv.reader(path.open()))
     assert rows[0][:8] == COLUMNS
     assert rows[0][8:] == ["tilt_deg", "precession_deg", "energy"]
@@ -55,8 +74,21 @@ def test_csv_file_has_the_contract_columns_and_one_row_per_sample(tmp_path):
 
 
 def test_format_csv_prints_the_trajectory():
-    proc = run_rbi("simulate", TOP, "--spin", "100", "--tilt", "3", "--duration", "0.5", "--samples", "6",
-                   "--format", "csv", check=True)
+    proc = run_rbi(
+        "simulate",
+        TOP,
+        "--spin",
+        "100",
+        "--tilt",
+        "3",
+        "--duration",
+        "0.5",
+        "--samples",
+        "6",
+        "--format",
+        "csv",
+        check=True,
+    )
     rows = list(csv.reader(io.StringIO(proc.stdout)))
     assert rows[0][:8] == COLUMNS and len(rows) == 7
 
@@ -83,28 +115,34 @@ def test_exact_method_and_the_scipy_baseline():
     q_a, q_b = np.array(exact["final"]["q"]), np.array(default["final"]["q"])
     assert abs(abs(q_a @ q_b) - 1.0) < 1e-13
     assert exact["steps"] == 0 and exact["error_estimate"] is None  # a closed form has no integration error
-    chapter = simulate_json(TOP, "--spin", "150", "--tilt", "20", "--method", "rk45", "--duration", "0.2",
-                            "--no-error-estimate")
+    chapter = simulate_json(
+        TOP, "--spin", "150", "--tilt", "20", "--method", "rk45", "--duration", "0.2", "--no-error-estimate"
+    )
     assert chapter["rtol"] == 1e-8 and chapter["error_estimate"] is None
 
 
 def test_duration_zero_and_one_sample(tmp_path):
     still = simulate_json(TOP, "--spin", "100", "--duration", "0")
-    assert still["final"]["t"] == 0.0 and still["final"]["omega"] == [0.0, 0.0, 100.0] and still["samples"] == 1
+    assert (
+        still["final"]["t"] == 0.0 and still["final"]["omega"] == [0.0, 0.0, 100.0] and still["samples"] == 1
+    )
     one = simulate_json(TOP, "--spin", "100", "--tilt", "5", "--duration", "1", "--samples", "1")
     assert one["final"]["t"] == 1.0 and one["samples"] == 1
 
 
-@pytest.mark.parametrize("args,words", [
-    (["--duration", "-1"], ["--duration"]),
-    (["--samples", "0"], ["--samples"]),
-    (["--samples", "-5"], ["--samples"]),
-    (["--spin", "10", "--omega", "1,2,3"], ["--spin", "--omega"]),
-    (["--omega", "1,2"], ["--omega"]),
-    (["--method", "euler"], ["--method"]),
-    (["--rtol", "0"], ["--rtol"]),
-    (["--method", "exact", "--spin", "200"], ["exact", "Lagrange"]),
-])
+@pytest.mark.parametrize(
+    "args,words",
+    [
+        (["--duration", "-1"], ["--duration"]),
+        (["--samples", "0"], ["--samples"]),
+        (["--samples", "-5"], ["--samples"]),
+        (["--spin", "10", "--omega", "1,2,3"], ["--spin", "--omega"]),
+        (["--omega", "1,2"], ["--omega"]),
+        (["--method", "euler"], ["--method"]),
+        (["--rtol", "0"], ["--rtol"]),
+        (["--method", "exact", "--spin", "200"], ["exact", "Lagrange"]),
+    ],
+)
 def test_bad_options_exit_2_with_one_line(args, words, tmp_path):
     out = tmp_path / "never.csv"
     proc = run_rbi("simulate", BOLTED, *args, "--out", out)

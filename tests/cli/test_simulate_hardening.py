@@ -12,7 +12,8 @@ import stat
 
 import pytest
 
-from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 
 TOP = BODIES / "top.yaml"
 BOLTED = BODIES / "top_bolted.yaml"
@@ -71,8 +72,14 @@ def test_an_overflowing_trajectory_writes_nothing_and_prints_no_inf(tmp_path):
     assert "inf" not in proc.stdout
 
 
-@pytest.mark.parametrize("args", [["--spin", "1e9"], ["--spin", "200", "--duration", "1e9"],
-                                  ["--spin", "200", "--method", "rk45", "--duration", "1e5"]])
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["--spin", "1e9"],
+        ["--spin", "200", "--duration", "1e9"],
+        ["--spin", "200", "--method", "rk45", "--duration", "1e5"],
+    ],
+)
 def test_a_run_far_over_the_step_budget_is_refused_before_it_starts(args, tmp_path):
     out = tmp_path / "x.csv"
     one_line_exit_2(rbi("simulate", TOP, *args, "--out", out), "budget", "--max-steps")
@@ -92,8 +99,20 @@ def test_absurd_sample_counts_are_refused(value):
 
 def test_an_upright_top_claims_no_precession(tmp_path):
     out = tmp_path / "x.csv"
-    proc = rbi("simulate", TOP, "--spin", "200", "--duration", "0.5", "--samples", "6", "--out", out,
-               "--format", "json")
+    proc = rbi(
+        "simulate",
+        TOP,
+        "--spin",
+        "200",
+        "--duration",
+        "0.5",
+        "--samples",
+        "6",
+        "--out",
+        out,
+        "--format",
+        "json",
+    )
     assert proc.returncode == 0, proc.stderr
     summary = json.loads(proc.stdout)
     assert summary["mean_precession_rate_deg_s"] is None
@@ -104,23 +123,46 @@ def test_an_upright_top_claims_no_precession(tmp_path):
 
 
 def test_the_error_estimate_is_strictly_tighter_or_says_it_cannot_be():
-    tight = json.loads(rbi("simulate", BOLTED, "--spin", "200", "--duration", "0.5", "--rtol", "1e-14",
-                           "--format", "json").stdout)
+    tight = json.loads(
+        rbi(
+            "simulate", BOLTED, "--spin", "200", "--duration", "0.5", "--rtol", "1e-14", "--format", "json"
+        ).stdout
+    )
     assert "1e-15" in tight["error_estimate"]["reference"]
-    floor = json.loads(rbi("simulate", BOLTED, "--spin", "200", "--duration", "0.5", "--rtol", "1e-15",
-                           "--format", "json").stdout)
+    floor = json.loads(
+        rbi(
+            "simulate", BOLTED, "--spin", "200", "--duration", "0.5", "--rtol", "1e-15", "--format", "json"
+        ).stdout
+    )
     assert floor["error_estimate"]["orientation_deg"] is None
     assert "not available" in floor["error_estimate"]["reference"]
-    default = json.loads(rbi("simulate", BOLTED, "--spin", "200", "--duration", "0.5", "--format", "json").stdout)
+    default = json.loads(
+        rbi("simulate", BOLTED, "--spin", "200", "--duration", "0.5", "--format", "json").stdout
+    )
     assert "1e-15" in default["error_estimate"]["reference"]  # 1000x tighter than 1e-12
 
 
 def test_tilt_about_x_is_the_mirror_of_tilt_about_y():
     """An axisymmetric top tilted 10° about world x or about world y nutates the same way: the
     two tilt histories are one motion turned by 90° about the vertical."""
+
     def tilts(axis):
-        proc = rbi("simulate", TOP, "--spin", "150", "--tilt", "10", "--tilt-axis", axis, "--duration", "0.5",
-                   "--samples", "26", "--format", "csv")
+        proc = rbi(
+            "simulate",
+            TOP,
+            "--spin",
+            "150",
+            "--tilt",
+            "10",
+            "--tilt-axis",
+            axis,
+            "--duration",
+            "0.5",
+            "--samples",
+            "26",
+            "--format",
+            "csv",
+        )
         assert proc.returncode == 0, proc.stderr
         return [float(r["tilt_deg"]) for r in csv.DictReader(io.StringIO(proc.stdout))]
 
@@ -137,10 +179,26 @@ def test_without_gravity_a_top_spinning_about_its_axis_keeps_its_tilt():
 
 
 def test_gravity_is_given_in_si_and_converted_to_the_spec_units(write_spec):
-    spec = write_spec("units: {length: mm, mass: g}\npivot: [0, 0, 0]\n"
-                      "parts:\n  - {shape: cone, mass: 400, radius: 40, apex: [0, 0, 0], base: [0, 0, 60]}\n")
-    out = json.loads(rbi("simulate", spec, "--spin", "200", "--tilt", "5", "--gravity", "1.62", "--duration", "0.1",
-                         "--format", "json").stdout)
+    spec = write_spec(
+        "units: {length: mm, mass: g}\npivot: [0, 0, 0]\n"
+        "parts:\n  - {shape: cone, mass: 400, radius: 40, apex: [0, 0, 0], base: [0, 0, 60]}\n"
+    )
+    out = json.loads(
+        rbi(
+            "simulate",
+            spec,
+            "--spin",
+            "200",
+            "--tilt",
+            "5",
+            "--gravity",
+            "1.62",
+            "--duration",
+            "0.1",
+            "--format",
+            "json",
+        ).stdout
+    )
     assert math.isclose(out["gravity"], 1620.0, rel_tol=1e-15)
     one_line_exit_2(rbi("simulate", spec, "--spin", "200", "--gravity", "-1"), "--gravity")
     one_line_exit_2(rbi("simulate", spec, "--spin", "200", "--tilt-axis", "z"), "--tilt-axis")
@@ -161,8 +219,14 @@ def test_no_code_from_the_current_folder_runs_and_no_writable_home_is_needed(tmp
     home.mkdir(mode=0o500)
     env = dict(os.environ, HOME=str(home), XDG_CACHE_HOME=str(home / "cache"), PYTHONPATH="")
     rbi_script = Path(sys.executable).with_name("rbi")
-    proc = subprocess.run([str(rbi_script), "simulate", str(TOP), "--spin", "200", "--duration", "0.2",
-                           "--format", "json"], cwd=tmp_path, env=env, capture_output=True, text=True, timeout=120)
+    proc = subprocess.run(
+        [str(rbi_script), "simulate", str(TOP), "--spin", "200", "--duration", "0.2", "--format", "json"],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert proc.returncode == 0, proc.stderr
     assert "compiling" not in proc.stderr and json.loads(proc.stdout)["final"]["t"] == 0.2
     assert not marker.exists()

@@ -22,11 +22,20 @@ def test_rotate_by_quaternions_matches_scipy():
     np.testing.assert_allclose(rotate_by_quaternions(q, v), expected, atol=1e-12)
 
 
-@pytest.mark.parametrize("args", [
-    ["top.yaml", "--spin", "200", "--tilt", "0.01", "--duration", "1"],
-    ["top.yaml", "--spin", "300", "--duration", "0.5"],  # upright and asleep: the axis never leaves vertical
-    ["tbar.yaml", "--omega", "0.01,0.01,3", "--duration", "2"],  # free body
-])
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["top.yaml", "--spin", "200", "--tilt", "0.01", "--duration", "1"],
+        [
+            "top.yaml",
+            "--spin",
+            "300",
+            "--duration",
+            "0.5",
+        ],  # upright and asleep: the axis never leaves vertical
+        ["tbar.yaml", "--omega", "0.01,0.01,3", "--duration", "2"],  # free body
+    ],
+)
 def test_plot_is_written(tmp_path, bodies, args):
     from PIL import Image
 
@@ -43,8 +52,18 @@ def test_the_intermediate_axis_of_a_free_body_flips_against_the_angular_momentum
     import csv
 
     out = tmp_path / "run.csv"
-    proc = run_rbi_inprocess("simulate", bodies / "tbar.yaml", "--omega", "0.01,0.01,3", "--duration", "20",
-                             "--samples", "2001", "--out", out)
+    proc = run_rbi_inprocess(
+        "simulate",
+        bodies / "tbar.yaml",
+        "--omega",
+        "0.01,0.01,3",
+        "--duration",
+        "20",
+        "--samples",
+        "2001",
+        "--out",
+        out,
+    )
     assert proc.returncode == 0, proc.stderr
     rows = list(csv.DictReader(out.open()))
     q = np.array([[float(r[k]) for k in ("qw", "qx", "qy", "qz")] for r in rows])

@@ -13,7 +13,8 @@ import sys
 import numpy as np
 import pytest
 
-from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 
 TOP = BODIES / "top.yaml"
 BOLTED = BODIES / "top_bolted.yaml"
@@ -45,17 +46,40 @@ def test_every_row_equals_rbi_simulate_of_that_run_alone():
     result = json_rows(BOLTED, "--spin", "180:220:2", "--tilt", "0:5:2", "--duration", "1")
     assert result["count"] == 4
     for row in result["runs"]:
-        single = rbi("simulate", BOLTED, "--spin", repr(row["spin"]), "--tilt", repr(row["tilt_deg"]), "--duration",
-                     "1", "--format", "json", "--no-error-estimate")
+        single = rbi(
+            "simulate",
+            BOLTED,
+            "--spin",
+            repr(row["spin"]),
+            "--tilt",
+            repr(row["tilt_deg"]),
+            "--duration",
+            "1",
+            "--format",
+            "json",
+            "--no-error-estimate",
+        )
         alone = json.loads(single.stdout)
         assert row["max_tilt_deg"] == pytest.approx(alone["tilt_max_deg"], rel=1e-12, abs=1e-12)
         assert row["final_tilt_deg"] == pytest.approx(alone["final"]["tilt_deg"], rel=1e-12, abs=1e-12)
-        assert row["energy_drift"] == pytest.approx(alone["conserved"]["energy"]["drift"], rel=1e-9, abs=1e-15)
+        assert row["energy_drift"] == pytest.approx(
+            alone["conserved"]["energy"]["drift"], rel=1e-9, abs=1e-15
+        )
         assert row["steps"] == alone["steps"]
 
 
 def test_monte_carlo_is_reproducible_with_a_seed_and_changes_with_it():
-    args = (BOLTED, "--spin", "200", "--vary", "parts.bolt.mass=normal(0.02,0.004)", "--runs", "6", "--duration", "0.3")
+    args = (
+        BOLTED,
+        "--spin",
+        "200",
+        "--vary",
+        "parts.bolt.mass=normal(0.02,0.004)",
+        "--runs",
+        "6",
+        "--duration",
+        "0.3",
+    )
     first = json_rows(*args, "--seed", "3")
     again = json_rows(*args, "--seed", "3")
     other = json_rows(*args, "--seed", "4")
@@ -76,21 +100,24 @@ def test_a_bad_vary_path_is_exit_2_naming_it():
     assert len(proc.stderr.strip().splitlines()) == 1
 
 
-@pytest.mark.parametrize("args, words", [
-    (["--spin", "1:2"], ["--spin"]),
-    (["--tilt", "x"], ["--tilt"]),
-    (["--runs", "0"], ["--runs"]),
-    (["--runs", "5"], ["--runs", "normal"]),
-    (["--resume"], ["--resume", "--out"]),
-    (["--mass-properties", "--spin", "1:2:2"], ["--mass-properties"]),
-    (["--mass-properties"], ["--vary"]),
-    (["--vary", "parts.bolt.mass"], ["PATH=RANGE"]),
-    (["--vary", "parts.bolt.mass=1:2:2", "--vary", "parts.bolt.mass=1:2:2"], ["twice"]),
-    (["--spin", "0:1:200000"], ["--out"]),
-    (["--out", "x.json"], ["--out"]),
-    (["--samples", "0"], ["--samples"]),
-    (["--rtol", "1"], ["--rtol"]),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--spin", "1:2"], ["--spin"]),
+        (["--tilt", "x"], ["--tilt"]),
+        (["--runs", "0"], ["--runs"]),
+        (["--runs", "5"], ["--runs", "normal"]),
+        (["--resume"], ["--resume", "--out"]),
+        (["--mass-properties", "--spin", "1:2:2"], ["--mass-properties"]),
+        (["--mass-properties"], ["--vary"]),
+        (["--vary", "parts.bolt.mass"], ["PATH=RANGE"]),
+        (["--vary", "parts.bolt.mass=1:2:2", "--vary", "parts.bolt.mass=1:2:2"], ["twice"]),
+        (["--spin", "0:1:200000"], ["--out"]),
+        (["--out", "x.json"], ["--out"]),
+        (["--samples", "0"], ["--samples"]),
+        (["--rtol", "1"], ["--rtol"]),
+    ],
+)
 def test_bad_options_are_one_line_exit_2(tmp_path, monkeypatch, args, words):
     monkeypatch.chdir(tmp_path)
     one_line_exit_2(rbi("sweep", BOLTED, *args), *words)
@@ -106,9 +133,13 @@ def test_out_naming_the_spec_is_refused(tmp_path):
 def test_a_failed_run_is_a_row_with_its_reason_and_the_others_run(tmp_path):
     spec = tmp_path / "top.yaml"
     spec.write_text(BOLTED.read_text())
-    result = json_rows(spec, "--spin", "200", "--vary", "parts.stem.radius=-0.008:0.008:3", "--duration", "0.2")
+    result = json_rows(
+        spec, "--spin", "200", "--vary", "parts.stem.radius=-0.008:0.008:3", "--duration", "0.2"
+    )
     status = [r["status"] for r in result["runs"]]
-    assert "radius" in status[0] and "greater than 0" in status[0] and result["runs"][0]["max_tilt_deg"] is None
+    assert (
+        "radius" in status[0] and "greater than 0" in status[0] and result["runs"][0]["max_tilt_deg"] is None
+    )
     assert status[2] == "ok" and result["failed"] >= 1
 
 
@@ -120,10 +151,25 @@ def test_a_run_past_its_step_budget_fails_alone():
 def test_dask_local_cluster_gives_the_same_rows_in_the_same_order(tmp_path):
     pytest.importorskip("distributed")
     pytest.importorskip("cryptography")  # the local cluster's private TLS certificates
-    args = ["sweep", str(BOLTED), "--spin", "150:250:5", "--tilt", "0:2:2", "--duration", "0.3", "--format", "csv"]
+    args = [
+        "sweep",
+        str(BOLTED),
+        "--spin",
+        "150:250:5",
+        "--tilt",
+        "0:2:2",
+        "--duration",
+        "0.3",
+        "--format",
+        "csv",
+    ]
     local = subprocess.run([sys.executable, "-m", "rbi", *args], capture_output=True, text=True, timeout=120)
-    remote = subprocess.run([sys.executable, "-m", "rbi", *args, "--dask", "local", "--workers", "2"],
-                            capture_output=True, text=True, timeout=300)
+    remote = subprocess.run(
+        [sys.executable, "-m", "rbi", *args, "--dask", "local", "--workers", "2"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert local.returncode == 0 and remote.returncode == 0, remote.stderr
     assert remote.stdout == local.stdout and len(remote.stdout.splitlines()) == 11
 
@@ -204,7 +250,9 @@ def test_mass_properties_spread_of_a_moved_point_mass_is_exact(tmp_path):
     for r in rows:
         assert r["com_x"] == pytest.approx(0.02 * r["parts.bolt.position[0]"] / total, rel=1e-12)
     spread = result["spread"]["com_x"]
-    assert spread["p0"] == pytest.approx(0.02 * 0.03 / total) and spread["p100"] == pytest.approx(0.02 * 0.05 / total)
+    assert spread["p0"] == pytest.approx(0.02 * 0.03 / total) and spread["p100"] == pytest.approx(
+        0.02 * 0.05 / total
+    )
     # the nominal position (0.04, the middle run) leaves the principal axes where they were
     assert max(rows[2][f"axis_{k}_tilt_deg"] for k in (1, 2, 3)) < 1e-6
     assert rows[0]["axis_1_tilt_deg"] > 1e-3 and all(r["status"] == "ok" for r in rows)
@@ -214,8 +262,18 @@ def test_the_table_never_cuts_a_number_short_in_80_columns(monkeypatch):
     """Piped or in a narrow terminal (80 columns), every cell is shown whole (wrapped if it
     must be): a drift shown as '7.9e-…' would hide its exponent."""
     monkeypatch.setenv("COLUMNS", "80")
-    proc = rbi("sweep", BOLTED, "--spin", "150:250:2", "--tilt", "1",
-              "--vary", "parts.bolt.position[0]=0.03:0.04:2", "--duration", "0.5")
+    proc = rbi(
+        "sweep",
+        BOLTED,
+        "--spin",
+        "150:250:2",
+        "--tilt",
+        "1",
+        "--vary",
+        "parts.bolt.position[0]=0.03:0.04:2",
+        "--duration",
+        "0.5",
+    )
     assert proc.returncode == 0, proc.stderr
     assert "…" not in proc.stdout
     assert max(len(line) for line in proc.stdout.splitlines()) <= 80

@@ -8,15 +8,23 @@ import json
 
 import pytest
 
-from tests.conftest import BODIES, run_rbi_inprocess as rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as rbi
 
 BALL_IN_MM = "parts:\n  - {name: ball, shape: sphere, radius: 10, mass: 0.0329, center: [0, 0, 0]}\n"
-HINT = "parts[0] (ball): implied density 7.85e-06 kg/m³ is outside 100–25,000 kg/m³ (balsa to osmium): " \
-       "lengths look like millimetres: add units: {length: mm}"
+HINT = (
+    "parts[0] (ball): implied density 7.85e-06 kg/m³ is outside 100–25,000 kg/m³ (balsa to osmium): "
+    "lengths look like millimetres: add units: {length: mm}"
+)
 
 COMMANDS = {
-    "inertia": [], "principal": [], "parts": [], "momentum": ["--omega", "0,0,1"],
-    "dynamics": ["--alpha", "0,0,1"], "export": ["--to", "urdf"], "simulate": ["--spin", "1", "--duration", "0.1"],
+    "inertia": [],
+    "principal": [],
+    "parts": [],
+    "momentum": ["--omega", "0,0,1"],
+    "dynamics": ["--alpha", "0,0,1"],
+    "export": ["--to", "urdf"],
+    "simulate": ["--spin", "1", "--duration", "0.1"],
     "sweep": ["--spin", "1:2:2", "--duration", "0.1"],
 }
 

@@ -83,7 +83,9 @@ def test_point_form_is_the_com_form_plus_transport(seed):
     at_com = newton_euler_com(b.mass, b.inertia_about(b.com), w, alpha, a_c)
     at_point = newton_euler_point(b.mass, b.inertia_about(o), r, w, alpha, a_o)
     np.testing.assert_allclose(at_point.force, b.mass * a_c, rtol=1e-12, atol=1e-12)
-    np.testing.assert_allclose(at_point.torque, at_com.torque + np.cross(r, at_com.force), rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(
+        at_point.torque, at_com.torque + np.cross(r, at_com.force), rtol=1e-12, atol=1e-12
+    )
 
 
 @pytest.mark.parametrize("seed", SEEDS)
@@ -106,7 +108,11 @@ def test_forward_about_the_com_is_eulers_equation_for_a_principal_body():
     I = np.diag([1.0, 2.0, 4.0])
     w = np.array([0.5, -1.0, 2.0])
     acc = newton_euler_com_forward(3.0, I, w, [3.0, 0.0, -6.0], [0.0, 0.0, 0.0])
-    expected = [(2.0 - 4.0) * w[1] * w[2] / 1.0, (4.0 - 1.0) * w[2] * w[0] / 2.0, (1.0 - 2.0) * w[0] * w[1] / 4.0]
+    expected = [
+        (2.0 - 4.0) * w[1] * w[2] / 1.0,
+        (4.0 - 1.0) * w[2] * w[0] / 2.0,
+        (1.0 - 2.0) * w[0] * w[1] / 4.0,
+    ]
     np.testing.assert_allclose(acc.angular, expected, rtol=1e-15)
     np.testing.assert_allclose(acc.linear, [1.0, 0.0, -2.0], rtol=1e-15)
 
@@ -142,7 +148,9 @@ def test_angle_between_is_accurate_near_0_and_180(t):
     close = np.array([math.cos(t), math.sin(t), 0.0]) * 5.0
     opposite = np.array([-math.cos(t), math.sin(t), 0.0]) * 0.5
     assert angle_between_deg(a, close) == pytest.approx(math.degrees(t), rel=1e-12)
-    assert 180.0 - angle_between_deg(a, opposite) == pytest.approx(math.degrees(t), rel=1e-12 if t > 1e-6 else 1e-3)
+    assert 180.0 - angle_between_deg(a, opposite) == pytest.approx(
+        math.degrees(t), rel=1e-12 if t > 1e-6 else 1e-3
+    )
     assert angle_between_deg(a, a) == 0.0
     assert angle_between_deg(a, -a) == 180.0
 

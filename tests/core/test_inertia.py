@@ -44,6 +44,7 @@ def assert_matrix_close(actual, expected, rel):
 
 # --- assembling parts ------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_point_masses_match_direct_sums(seed):
     masses, positions = point_cloud(seed)
@@ -107,10 +108,12 @@ def test_total_mass_must_be_positive():
 
 # A rotor with dyadic dimensions, so that every coordinate stays exactly representable when
 # the whole rotor is moved 1 km or 1000 km away: the input is then the same body, exactly.
-ROTOR_POINTS = [(Fraction(3, 64), (Fraction(1, 8), Fraction(0), Fraction(1, 32))),
-                (Fraction(5, 128), (Fraction(0), Fraction(-1, 8), Fraction(-1, 16))),
-                (Fraction(1, 32), (Fraction(-3, 32), Fraction(1, 16), Fraction(0)))]
-DISC = (Fraction(2), Fraction(1, 8), Fraction(-1, 32), Fraction(1, 32))   # mass, radius, z0, z1
+ROTOR_POINTS = [
+    (Fraction(3, 64), (Fraction(1, 8), Fraction(0), Fraction(1, 32))),
+    (Fraction(5, 128), (Fraction(0), Fraction(-1, 8), Fraction(-1, 16))),
+    (Fraction(1, 32), (Fraction(-3, 32), Fraction(1, 16), Fraction(0))),
+]
+DISC = (Fraction(2), Fraction(1, 8), Fraction(-1, 32), Fraction(1, 32))  # mass, radius, z0, z1
 HUB = (Fraction(1, 4), Fraction(1, 16), Fraction(1, 32), Fraction(5, 32))  # mass, radius, apex z, base z
 
 
@@ -129,8 +132,10 @@ def rotor_exact():
     m_d, r_d, z0, z1 = DISC
     m_h, r_h, za, zb = HUB
     L, h = z1 - z0, zb - za
-    items = [(m_d, (0, 0, (z0 + z1) / 2), (m_d * (3 * r_d**2 + L**2) / 12, m_d * r_d**2 / 2)),
-             (m_h, (0, 0, za + 3 * h / 4), (3 * m_h * (4 * r_h**2 + h**2) / 80, 3 * m_h * r_h**2 / 10))]
+    items = [
+        (m_d, (0, 0, (z0 + z1) / 2), (m_d * (3 * r_d**2 + L**2) / 12, m_d * r_d**2 / 2)),
+        (m_h, (0, 0, za + 3 * h / 4), (3 * m_h * (4 * r_h**2 + h**2) / 80, 3 * m_h * r_h**2 / 10)),
+    ]
     items += [(pm, p, (0, 0)) for pm, p in ROTOR_POINTS]
     mass = sum(m for m, _, _ in items)
     com = [sum(m * Fraction(p[k]) for m, p, _ in items) / mass for k in range(3)]
@@ -153,8 +158,9 @@ def test_rotor_at_the_origin_matches_exact_rational_answer():
     assert_matrix_close(props.inertia_com, inertia, rel=1e-13)
 
 
-@pytest.mark.parametrize("origin", [[1000.0, 0.0, 0.0], [-700.0, 1000.0, 250.0],
-                                    [1e6, 0.0, 0.0], [1e6, -1e6, 5e5]])
+@pytest.mark.parametrize(
+    "origin", [[1000.0, 0.0, 0.0], [-700.0, 1000.0, 250.0], [1e6, 0.0, 0.0], [1e6, -1e6, 5e5]]
+)
 def test_rotor_far_from_the_origin_keeps_its_central_inertia(origin):
     mass, com, inertia = rotor_exact()
     far = combine_elements(rotor_elements(origin))
@@ -165,6 +171,7 @@ def test_rotor_far_from_the_origin_keeps_its_central_inertia(origin):
 
 
 # --- re-expression --------------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_re_express_is_r_i_rt_and_keeps_eigenvalues(seed):
@@ -181,6 +188,7 @@ def test_re_express_is_r_i_rt_and_keeps_eigenvalues(seed):
 
 
 # --- principal axes -------------------------------------------------------------------------
+
 
 def assert_right_handed_orthonormal(axes, tol=1e-12):
     np.testing.assert_allclose(axes @ axes.T, np.eye(3), rtol=0, atol=tol)
@@ -250,9 +258,11 @@ def test_same_answer_twice_and_under_tiny_perturbations():
 
 def test_plane_symmetric_body_gets_exact_zeros():
     # The chapter's bolted top: symmetric about the xz plane, so y is exactly a principal axis.
-    elements = [shapes.cone(0.4, 0.04, [0, 0, 0], [0, 0, 0.06]),
-                shapes.cylinder(0.1, 0.008, [0, 0, 0.06], [0, 0, 0.10]),
-                shapes.point(0.02, [0.04, 0, 0.06])]
+    elements = [
+        shapes.cone(0.4, 0.04, [0, 0, 0], [0, 0, 0.06]),
+        shapes.cylinder(0.1, 0.008, [0, 0, 0.06], [0, 0, 0.10]),
+        shapes.point(0.02, [0.04, 0, 0.06]),
+    ]
     moments, axes = principal_axes(combine_elements(elements).inertia_com)
     assert_right_handed_orthonormal(axes)
     y_rows = [i for i in range(3) if abs(axes[i, 1]) == 1.0]
@@ -265,9 +275,11 @@ def test_coaxial_stack_along_any_axis_gives_a_clean_set(seed):
     Q = Rotation.random(random_state=100 + seed).as_matrix()
     u = Q[:, 2]
     o = np.array([0.3, -0.2, 1.0])
-    stack = [shapes.cone(0.4, 0.04, o, o + 0.06 * u),
-             shapes.cylinder(0.1, 0.008, o + 0.06 * u, o + 0.10 * u),
-             shapes.cylinder(0.05, 0.02, o - 0.03 * u, o)]
+    stack = [
+        shapes.cone(0.4, 0.04, o, o + 0.06 * u),
+        shapes.cylinder(0.1, 0.008, o + 0.06 * u, o + 0.10 * u),
+        shapes.cylinder(0.05, 0.02, o - 0.03 * u, o),
+    ]
     I = combine_elements(stack).inertia_com
     moments, axes = principal_axes(I)
     assert_right_handed_orthonormal(axes)
@@ -281,8 +293,9 @@ def test_coaxial_stack_along_any_axis_gives_a_clean_set(seed):
     np.testing.assert_allclose(principal_axes(nudged)[1], axes, atol=1e-10)
 
 
-@pytest.mark.parametrize("diagonal, lone", [([1.0, 1.0, 2.0], 2), ([2.0, 5.0, 5.0], 0),
-                                            ([3.0, 3.0 * (1 + 1e-12), 7.0], 2)])
+@pytest.mark.parametrize(
+    "diagonal, lone", [([1.0, 1.0, 2.0], 2), ([2.0, 5.0, 5.0], 0), ([3.0, 3.0 * (1 + 1e-12), 7.0], 2)]
+)
 def test_equal_moments_in_body_axes_give_coordinate_axes(diagonal, lone):
     moments, axes = principal_axes(np.diag(diagonal))
     np.testing.assert_allclose(moments, sorted(diagonal), rtol=1e-15)

@@ -9,8 +9,14 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rbi.core import shapes
-from rbi.core.inertia import (combine, moment_about_axis, parallel_axis, radii_of_gyration, unit_axis,
-                              with_product_sign)
+from rbi.core.inertia import (
+    combine,
+    moment_about_axis,
+    parallel_axis,
+    radii_of_gyration,
+    unit_axis,
+    with_product_sign,
+)
 
 
 def test_cylinder_about_a_diameter_through_its_end_face():
@@ -35,9 +41,14 @@ def test_point_mass_moment_is_mass_times_squared_distance_from_the_line():
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.lists(st.tuples(st.floats(0.1, 10), st.floats(-5, 5), st.floats(-5, 5), st.floats(-5, 5)),
-                min_size=2, max_size=8),
-       st.tuples(st.floats(-1, 1), st.floats(-1, 1), st.floats(-1, 1)).filter(lambda v: np.linalg.norm(v) > 0.1))
+@given(
+    st.lists(
+        st.tuples(st.floats(0.1, 10), st.floats(-5, 5), st.floats(-5, 5), st.floats(-5, 5)),
+        min_size=2,
+        max_size=8,
+    ),
+    st.tuples(st.floats(-1, 1), st.floats(-1, 1), st.floats(-1, 1)).filter(lambda v: np.linalg.norm(v) > 0.1),
+)
 def test_moment_equals_the_sum_of_mass_times_squared_distance(points, axis):
     masses = np.array([p[0] for p in points])
     positions = np.array([p[1:] for p in points])

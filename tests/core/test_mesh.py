@@ -39,8 +39,12 @@ def simplex_moments(corners):
     volume = det / 6.0
     first = det * (p0 / 6.0 + A @ np.full(3, 1.0 / 24.0))
     uu = (np.ones((3, 3)) + np.eye(3)) / 120.0
-    second = det * (np.outer(p0, p0) / 6.0 + np.outer(p0, A @ np.full(3, 1 / 24)) + np.outer(A @ np.full(3, 1 / 24), p0)
-                    + A @ uu @ A.T)
+    second = det * (
+        np.outer(p0, p0) / 6.0
+        + np.outer(p0, A @ np.full(3, 1 / 24))
+        + np.outer(A @ np.full(3, 1 / 24), p0)
+        + A @ uu @ A.T
+    )
     return volume, first / volume, second
 
 
@@ -61,7 +65,7 @@ def test_any_tetrahedron_matches_the_dirichlet_integrals(coordinates):
     corners = np.reshape(coordinates, (4, 3))
     A = corners[1:] - corners[0]
     scale = max(float(np.max(np.abs(A))), 1e-300)
-    if abs(np.linalg.det(A)) <= 1e-3 * scale ** 3:  # nearly flat: ill-conditioned for any method
+    if abs(np.linalg.det(A)) <= 1e-3 * scale**3:  # nearly flat: ill-conditioned for any method
         return
     volume, centroid, second = simplex_moments(corners)
     central = second - volume * np.outer(centroid, centroid)
@@ -69,8 +73,9 @@ def test_any_tetrahedron_matches_the_dirichlet_integrals(coordinates):
     props = enclosed_volume_properties(*tetrahedron_mesh(corners))
     assert props.volume == pytest.approx(volume, rel=1e-12)
     np.testing.assert_allclose(props.centroid, centroid, rtol=0, atol=1e-12 * max(scale, 1.0) * 10)
-    np.testing.assert_allclose(props.inertia_per_density, expected, rtol=0,
-                               atol=1e-9 * float(np.max(np.abs(expected))) + 1e-300)
+    np.testing.assert_allclose(
+        props.inertia_per_density, expected, rtol=0, atol=1e-9 * float(np.max(np.abs(expected))) + 1e-300
+    )
 
 
 def test_polygon_prism_is_exact_and_converges_to_the_cylinder_at_second_order():
@@ -96,7 +101,9 @@ def test_latitude_longitude_sphere_converges_to_two_fifths_m_r_squared():
     for n in (16, 32, 64, 128):
         props = enclosed_volume_properties(*sphere_mesh(r, n, 2 * n))
         moments = np.diag(props.inertia_per_density) / props.volume
-        errors.append(max(abs(props.volume / (4 / 3 * math.pi * r ** 3) - 1), np.max(np.abs(moments / (0.4 * r * r) - 1))))
+        errors.append(
+            max(abs(props.volume / (4 / 3 * math.pi * r**3) - 1), np.max(np.abs(moments / (0.4 * r * r) - 1)))
+        )
         np.testing.assert_allclose(props.centroid, 0, atol=1e-14)
     ratios = np.array(errors[:-1]) / np.array(errors[1:])
     assert np.all((ratios > 3.5) & (ratios < 4.5)), ratios
@@ -153,7 +160,9 @@ def test_good_meshes_have_no_defects():
 def test_a_missing_triangle_leaves_three_boundary_edges():
     vertices, faces = box_mesh()
     assert mesh_defects(faces[1:]).boundary_edges == 3
-    assert mesh_problem(vertices, faces[1:]) == "not closed: 3 boundary edges (edges used by only one triangle)"
+    assert (
+        mesh_problem(vertices, faces[1:]) == "not closed: 3 boundary edges (edges used by only one triangle)"
+    )
     assert mesh_defects(faces[2:]).boundary_edges == 4  # a whole side gone: its square outline
 
 
@@ -195,8 +204,9 @@ def test_an_edge_shared_by_four_triangles_half_each_way_joins_two_solids():
 def test_empty_and_broken_arrays_are_named():
     assert mesh_problem(np.zeros((0, 3)), np.zeros((0, 3), int)) == "holds no triangles"
     vertices, faces = box_mesh()
-    assert mesh_problem(vertices, np.vstack([faces, [[0, 1, 99]]])) == ("face 12 names a vertex that does not exist "
-                                                                 "(vertices are numbered 0 to 7)")
+    assert mesh_problem(vertices, np.vstack([faces, [[0, 1, 99]]])) == (
+        "face 12 names a vertex that does not exist (vertices are numbered 0 to 7)"
+    )
     vertices = vertices.copy()
     vertices[6, 1] = np.nan
     assert mesh_problem(vertices, faces) == "vertex 6: coordinates must be finite numbers"

@@ -4,13 +4,18 @@ boxes, thin plates and prisms, sympy integrals, and MuJoCo's compiled inertia.""
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pytest
 
-from rbi.core.mesh import (MeshError, convex_hull_mesh, mesh_defects, mesh_mass_properties, mesh_problem,
-                           repair_mesh, weld_vertices)
+from rbi.core.mesh import (
+    MeshError,
+    convex_hull_mesh,
+    mesh_defects,
+    mesh_mass_properties,
+    mesh_problem,
+    repair_mesh,
+    weld_vertices,
+)
 from tests.mesh_builders import box_mesh, sphere_mesh, tetrahedron_mesh
 
 
@@ -44,18 +49,26 @@ def joined(*meshes):
 
 # --- several closed pieces in one file --------------------------------------------------------
 
-@pytest.mark.parametrize("second_center, shares", [
-    ((1.5, 1.5, 0.5), "an edge"),
-    ((1.5, 1.5, 1.5), "a vertex"),
-    ((1.5, 0.5, 0.5), "a face"),
-])
+
+@pytest.mark.parametrize(
+    "second_center, shares",
+    [
+        ((1.5, 1.5, 0.5), "an edge"),
+        ((1.5, 1.5, 1.5), "a vertex"),
+        ((1.5, 0.5, 0.5), "a face"),
+    ],
+)
 def test_two_cubes_touching_are_twice_the_cube(second_center, shares):
     vertices, faces = joined(box_mesh(center=(0.5, 0.5, 0.5)), box_mesh(center=second_center))
     assert len(vertices) == {"an edge": 14, "a vertex": 15, "a face": 12}[shares]
     assert mesh_problem(vertices, faces) is None, shares
     props = mesh_mass_properties(vertices, faces, "exact", density=1.0)
-    mass, com, inertia = combined([(1.0, (0.5, 0.5, 0.5), box_inertia(1.0, (1, 1, 1))),
-                                   (1.0, second_center, box_inertia(1.0, (1, 1, 1)))])
+    mass, com, inertia = combined(
+        [
+            (1.0, (0.5, 0.5, 0.5), box_inertia(1.0, (1, 1, 1))),
+            (1.0, second_center, box_inertia(1.0, (1, 1, 1))),
+        ]
+    )
     assert props.volume == pytest.approx(2.0, rel=1e-15)
     assert props.mass == pytest.approx(mass, rel=1e-15)
     np.testing.assert_allclose(props.center_of_mass, com, rtol=1e-15)
@@ -103,8 +116,12 @@ def test_a_hollow_box_is_a_solid_with_a_cavity():
     vertices, faces = joined((outer, outer_faces), (inner, inner_faces[:, ::-1]))
     props = mesh_mass_properties(vertices, faces, "exact", density=1.0)
     assert props.volume == pytest.approx(56.0, rel=1e-15)
-    np.testing.assert_allclose(props.inertia_about_com, box_inertia(64, (4, 4, 4)) - box_inertia(8, (2, 2, 2)),
-                               rtol=1e-14, atol=1e-13)
+    np.testing.assert_allclose(
+        props.inertia_about_com,
+        box_inertia(64, (4, 4, 4)) - box_inertia(8, (2, 2, 2)),
+        rtol=1e-14,
+        atol=1e-13,
+    )
 
 
 def test_a_piece_wound_inside_out_beside_a_good_one_is_refused():
@@ -125,6 +142,7 @@ def test_overlapping_pieces_count_their_shared_space_twice_with_a_note():
 
 # --- welding ----------------------------------------------------------------------------------
 
+
 def test_corners_one_ulp_apart_across_a_grid_boundary_are_one_vertex():
     # the old weld rounded positions to a grid of 1e-9 of the diagonal: put the L's inner
     # corner (not an extreme, so the diagonal stays put) on a half-way point of that grid and
@@ -142,7 +160,8 @@ def test_corners_one_ulp_apart_across_a_grid_boundary_are_one_vertex():
     assert len(welded) == 12
     assert mesh_problem(welded, welded_faces) is None
     assert mesh_mass_properties(welded, welded_faces, density=1.0).volume == pytest.approx(
-        0.5 * (4 - (2 - x) ** 2), rel=1e-12)
+        0.5 * (4 - (2 - x) ** 2), rel=1e-12
+    )
 
 
 def test_welding_merges_chains_within_tolerance_but_not_distinct_corners():
@@ -153,6 +172,7 @@ def test_welding_merges_chains_within_tolerance_but_not_distinct_corners():
 
 
 # --- inertia modes ----------------------------------------------------------------------------
+
 
 def test_exact_mode_refuses_an_open_mesh_with_a_hint_naming_the_other_modes():
     vertices, faces = box_mesh()
@@ -218,7 +238,10 @@ def test_convex_mode_of_an_l_shaped_prism_is_the_hull():
     x, y, z = sp.symbols("x y z")
 
     def integral(f):
-        return float(sp.integrate(f, (z, 0, h), (y, 0, 2), (x, 0, 1)) + sp.integrate(f, (z, 0, h), (y, 0, 3 - x), (x, 1, 2)))
+        return float(
+            sp.integrate(f, (z, 0, h), (y, 0, 2), (x, 0, 1))
+            + sp.integrate(f, (z, 0, h), (y, 0, 3 - x), (x, 1, 2))
+        )
 
     volume = integral(1)
     com = np.array([integral(x), integral(y), integral(z)]) / volume
@@ -266,6 +289,7 @@ def test_unknown_mode_and_mass_and_density_together_are_refused():
 
 # --- repair -----------------------------------------------------------------------------------
 
+
 def test_repair_closes_a_missing_triangle_and_reports_its_area():
     a = 2.0
     vertices, faces = box_mesh((a, a, a))
@@ -273,7 +297,7 @@ def test_repair_closes_a_missing_triangle_and_reports_its_area():
     assert repaired.added_area == pytest.approx(a * a / 2, rel=1e-15)
     assert repaired.added_faces == 1
     props = mesh_mass_properties(repaired.vertices, repaired.faces, "exact", mass=8.0)
-    assert props.volume == pytest.approx(a ** 3, rel=1e-15)
+    assert props.volume == pytest.approx(a**3, rel=1e-15)
     np.testing.assert_allclose(props.inertia_about_com, box_inertia(8.0, (a, a, a)), rtol=1e-14, atol=1e-15)
 
 
@@ -295,12 +319,15 @@ def test_repair_leaves_a_large_hole_and_says_so():
 
 # --- MuJoCo's compiled mesh inertia -----------------------------------------------------------
 
+
 def mujoco_inertia(vertices, faces, mode, mass=1.0):
     mujoco = pytest.importorskip("mujoco")
     v = " ".join(repr(float(c)) for c in np.asarray(vertices).ravel())
     f = " ".join(str(int(i)) for i in np.asarray(faces).ravel())
-    xml = (f'<mujoco><asset><mesh name="m" inertia="{mode}" vertex="{v}" face="{f}"/></asset>'
-           f'<worldbody><body><freejoint/><geom type="mesh" mesh="m" mass="{mass!r}"/></body></worldbody></mujoco>')
+    xml = (
+        f'<mujoco><asset><mesh name="m" inertia="{mode}" vertex="{v}" face="{f}"/></asset>'
+        f'<worldbody><body><freejoint/><geom type="mesh" mesh="m" mass="{mass!r}"/></body></worldbody></mujoco>'
+    )
     model = mujoco.MjModel.from_xml_string(xml)
     return model.body_ipos[1].copy(), np.sort(model.body_inertia[1].copy())
 

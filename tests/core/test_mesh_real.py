@@ -27,9 +27,11 @@ def mujoco_mass_properties(vertices, faces, mode, density=1.0):
     """Mass, centre of mass and full inertia about it that MuJoCo compiles for one mesh geom."""
     v = " ".join(repr(float(c)) for c in np.asarray(vertices).ravel())
     f = " ".join(str(int(i)) for i in np.asarray(faces).ravel())
-    xml = (f'<mujoco><asset><mesh name="m" inertia="{mode}" vertex="{v}" face="{f}"/></asset>'
-           f'<worldbody><body><freejoint/><geom type="mesh" mesh="m" density="{density!r}"/></body>'
-           f'</worldbody></mujoco>')
+    xml = (
+        f'<mujoco><asset><mesh name="m" inertia="{mode}" vertex="{v}" face="{f}"/></asset>'
+        f'<worldbody><body><freejoint/><geom type="mesh" mesh="m" density="{density!r}"/></body>'
+        f"</worldbody></mujoco>"
+    )
     model = mujoco.MjModel.from_xml_string(xml)
     rotation = np.zeros(9)
     mujoco.mju_quat2Mat(rotation, model.body_iquat[1])
@@ -77,12 +79,15 @@ def test_a_convex_decomposition_once_refused_is_the_sum_of_its_pieces_in_mujoco(
     np.testing.assert_allclose(props.inertia_about_com, inertia, rtol=0, atol=1e-6 * np.abs(inertia).max())
 
 
-@pytest.mark.parametrize("name, modes", [
-    ("duck_vhacd.obj", ("exact", "shell", "convex")),
-    ("random_urdfs/065/065.obj", ("exact", "shell", "convex")),  # overlapping pieces: both sum them
-    ("a1/meshes/calf.obj", ("shell", "convex")),
-    ("objects/mug_col.obj", ("shell", "convex")),
-])
+@pytest.mark.parametrize(
+    "name, modes",
+    [
+        ("duck_vhacd.obj", ("exact", "shell", "convex")),
+        ("random_urdfs/065/065.obj", ("exact", "shell", "convex")),  # overlapping pieces: both sum them
+        ("a1/meshes/calf.obj", ("shell", "convex")),
+        ("objects/mug_col.obj", ("shell", "convex")),
+    ],
+)
 def test_real_meshes_agree_with_mujoco(name, modes):
     vertices, faces = single_precision(name)
     for mode in modes:
@@ -91,5 +96,6 @@ def test_real_meshes_agree_with_mujoco(name, modes):
         size = np.ptp(vertices, axis=0).max()
         assert props.mass == pytest.approx(mass, rel=1e-12), mode
         np.testing.assert_allclose(props.center_of_mass, com, rtol=0, atol=1e-12 * size, err_msg=mode)
-        np.testing.assert_allclose(np.linalg.eigvalsh(props.inertia_about_com), np.linalg.eigvalsh(inertia),
-                                   rtol=1e-12, err_msg=mode)
+        np.testing.assert_allclose(
+            np.linalg.eigvalsh(props.inertia_about_com), np.linalg.eigvalsh(inertia), rtol=1e-12, err_msg=mode
+        )

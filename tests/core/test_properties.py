@@ -57,9 +57,13 @@ rotations = st.lists(st.floats(-1.0, 1.0), min_size=4, max_size=4).filter(lambda
 
 def quaternion_matrix(q):
     w, x, y, z = np.asarray(q) / np.linalg.norm(q)
-    return np.array([[1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-                     [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-                     [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)]])
+    return np.array(
+        [
+            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
+            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
+            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
+        ]
+    )
 
 
 @SETTINGS
@@ -105,8 +109,9 @@ def test_reordering_parts_changes_nothing(spec, random):
     shuffled = combine_elements(elements)
     assert abs(shuffled.mass - loaded.props.mass) <= 1e-14 * shuffled.mass
     np.testing.assert_allclose(shuffled.com, loaded.props.com, rtol=0, atol=1e-14 * 2.0)
-    np.testing.assert_allclose(shuffled.inertia_com, loaded.props.inertia_com, rtol=0,
-                               atol=tolerance(loaded.props.inertia_com))
+    np.testing.assert_allclose(
+        shuffled.inertia_com, loaded.props.inertia_com, rtol=0, atol=tolerance(loaded.props.inertia_com)
+    )
 
 
 @SETTINGS

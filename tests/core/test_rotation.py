@@ -51,7 +51,9 @@ def test_elementary_rotation_leaves_its_axis_exactly_alone():
 
 
 def test_positive_turn_about_z_takes_x_to_y():
-    np.testing.assert_allclose(elementary_rotation("z", math.pi / 2) @ [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], atol=1e-16)
+    np.testing.assert_allclose(
+        elementary_rotation("z", math.pi / 2) @ [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], atol=1e-16
+    )
 
 
 def test_axis_angle_matches_scipy_rotvec():
@@ -125,8 +127,11 @@ def test_quaternion_from_axis_angle_matches_the_matrix():
 def test_quaternion_product_composes_like_matrices():
     p = quaternion_from_axis_angle([1.0, 2.0, 3.0], 0.7)
     r = quaternion_from_axis_angle([-1.0, 0.5, 0.0], 2.1)
-    np.testing.assert_allclose(quaternion_to_matrix(quaternion_multiply(p, r)),
-                               quaternion_to_matrix(p) @ quaternion_to_matrix(r), atol=1e-15)
+    np.testing.assert_allclose(
+        quaternion_to_matrix(quaternion_multiply(p, r)),
+        quaternion_to_matrix(p) @ quaternion_to_matrix(r),
+        atol=1e-15,
+    )
     # Against scipy, whose quaternion product is the same Hamilton product.
     sp = Rotation.from_quat([*p[1:], p[0]]) * Rotation.from_quat([*r[1:], r[0]])
     x, y, z, w = sp.as_quat()

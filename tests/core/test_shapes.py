@@ -4,7 +4,7 @@ then placed along arbitrary axes and compared with ``Q I Qᵀ`` for a random rot
 from __future__ import annotations
 
 import math
-from functools import lru_cache
+from functools import cache
 
 import numpy as np
 import pytest
@@ -33,14 +33,14 @@ def _solid_of_revolution(radius_at_z, height):
     return volume, z_com, inertia
 
 
-@lru_cache(maxsize=None)
+@cache
 def cone_integrals():
     """Apex at the origin, base disc of radius a at z = h."""
     volume, z_com, inertia = _solid_of_revolution(a_sym * z / h_sym, h_sym)
     return sp.lambdify((a_sym, h_sym), [volume, z_com, inertia.tolist()], "math")
 
 
-@lru_cache(maxsize=None)
+@cache
 def cylinder_integrals():
     """End faces at z = 0 and z = h, radius a."""
     volume, z_com, inertia = _solid_of_revolution(a_sym, h_sym)

@@ -96,7 +96,9 @@ ROT = Rotation.from_rotvec([0.3, -0.7, 0.5]).as_matrix()
 def test_box_turned_matches_exact_quadrature():
     size, center, density = np.array([0.3, 0.1, 0.05]), np.array([1.0, -2.0, 0.5]), 2700.0
     grid = [_gauss(2, -s / 2, s / 2) for s in size]  # 2-point Gauss: exact to degree 3
-    pts = np.array([center + ROT @ np.array([x, y, z]) for x in grid[0][0] for y in grid[1][0] for z in grid[2][0]])
+    pts = np.array(
+        [center + ROT @ np.array([x, y, z]) for x in grid[0][0] for y in grid[1][0] for z in grid[2][0]]
+    )
     vols = np.array([wx * wy * wz for wx in grid[0][1] for wy in grid[1][1] for wz in grid[2][1]])
     mass = density * shapes.box_volume(size)
     assert_matches(shapes.box(mass, size, center, ROT), pts, vols, density)
@@ -189,10 +191,16 @@ def test_frustum_with_a_point_end_is_the_cone(r, h):
 @settings(max_examples=40, deadline=None)
 @given(r=lengths, h=lengths)
 def test_tube_without_bore_is_the_cylinder_and_shell_without_hole_the_sphere(r, h):
-    np.testing.assert_allclose(shapes.tube(1.5, r, 0.0, [0, 0, 0], [0, 0, h]).inertia_com,
-                               shapes.cylinder(1.5, r, [0, 0, 0], [0, 0, h]).inertia_com, rtol=1e-13)
-    np.testing.assert_allclose(shapes.spherical_shell(1.5, r, 0.0, [0, 0, 0]).inertia_com,
-                               shapes.sphere(1.5, r, [0, 0, 0]).inertia_com, rtol=1e-13)
+    np.testing.assert_allclose(
+        shapes.tube(1.5, r, 0.0, [0, 0, 0], [0, 0, h]).inertia_com,
+        shapes.cylinder(1.5, r, [0, 0, 0], [0, 0, h]).inertia_com,
+        rtol=1e-13,
+    )
+    np.testing.assert_allclose(
+        shapes.spherical_shell(1.5, r, 0.0, [0, 0, 0]).inertia_com,
+        shapes.sphere(1.5, r, [0, 0, 0]).inertia_com,
+        rtol=1e-13,
+    )
 
 
 def test_box_with_equal_edges_turned_anyhow_stays_isotropic():

@@ -23,7 +23,9 @@ def axisymmetric_quadrature(z_low, z_high, rho_low, rho_high):
     opts = dict(epsabs=0, epsrel=1e-11)
 
     def integral(f):
-        return integrate.dblquad(lambda rho, z: 2 * math.pi * rho * f(rho, z), z_low, z_high, rho_low, rho_high, **opts)[0]
+        return integrate.dblquad(
+            lambda rho, z: 2 * math.pi * rho * f(rho, z), z_low, z_high, rho_low, rho_high, **opts
+        )[0]
 
     volume = integral(lambda rho, z: 1.0)
     z_bar = integral(lambda rho, z: z) / volume
@@ -43,7 +45,11 @@ def axial_and_transverse(element, axis):
 @pytest.mark.parametrize("R, a", [(1.0, 0.25), (0.3, 0.3), (2.0, 0.01)])
 def test_torus_against_quadrature(R, a):
     volume, z_bar, axial, transverse = axisymmetric_quadrature(
-        -a, a, lambda z: R - math.sqrt(max(a * a - z * z, 0.0)), lambda z: R + math.sqrt(max(a * a - z * z, 0.0)))
+        -a,
+        a,
+        lambda z: R - math.sqrt(max(a * a - z * z, 0.0)),
+        lambda z: R + math.sqrt(max(a * a - z * z, 0.0)),
+    )
     assert shapes.torus_volume(R, a) == pytest.approx(volume, rel=1e-10)
     assert z_bar == pytest.approx(0.0, abs=1e-12)
     element = shapes.torus(volume, R, a, [1.0, 2.0, 3.0], [0, 0, 1])
@@ -67,7 +73,9 @@ def test_thin_torus_is_a_ring():
 
 @pytest.mark.parametrize("r", [1.0, 0.037])
 def test_hemisphere_against_quadrature(r):
-    volume, z_bar, axial, transverse = axisymmetric_quadrature(0, r, lambda z: 0.0, lambda z: math.sqrt(max(r * r - z * z, 0.0)))
+    volume, z_bar, axial, transverse = axisymmetric_quadrature(
+        0, r, lambda z: 0.0, lambda z: math.sqrt(max(r * r - z * z, 0.0))
+    )
     assert shapes.hemisphere_volume(r) == pytest.approx(volume, rel=1e-10)
     element = shapes.hemisphere(volume, r, [0, 0, 0], [0, 0, 5])
     assert element.com[2] == pytest.approx(z_bar, rel=1e-10)
@@ -109,10 +117,14 @@ def test_short_capsule_tends_to_a_sphere():
 def test_capsule_matches_mujoco(radius, half_length):
     mujoco = pytest.importorskip("mujoco", reason="MuJoCo is not installed (pip install mujoco)")
     density = 1000.0
-    xml = (f'<mujoco><worldbody><body><geom type="capsule" size="{radius!r} {half_length!r}" '
-           f'density="{density!r}"/></body></worldbody></mujoco>')
+    xml = (
+        f'<mujoco><worldbody><body><geom type="capsule" size="{radius!r} {half_length!r}" '
+        f'density="{density!r}"/></body></worldbody></mujoco>'
+    )
     model = mujoco.MjModel.from_xml_string(xml)
     mass = density * shapes.capsule_volume(radius, 2 * half_length)
     assert model.body_mass[1] == pytest.approx(mass, rel=1e-12)
     element = shapes.capsule(mass, radius, [0, 0, -half_length], [0, 0, half_length])
-    np.testing.assert_allclose(np.sort(np.diag(element.inertia_com)), np.sort(model.body_inertia[1]), rtol=1e-12)
+    np.testing.assert_allclose(
+        np.sort(np.diag(element.inertia_com)), np.sort(model.body_inertia[1]), rtol=1e-12
+    )

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from rbi.core.rotation import axis_angle_matrix, quaternion_to_matrix, unit_vector
 from rbi.core.spin_axis import default_spin_axis, distinct_principal_axis, quaternion_from_z_to
@@ -33,8 +34,10 @@ def test_no_two_or_all_three_moments_equal_gives_body_z():
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3).filter(lambda v: np.linalg.norm(v) > 1e-3),
-       st.floats(0.0, 3.0))
+@given(
+    st.lists(st.floats(-1.0, 1.0), min_size=3, max_size=3).filter(lambda v: np.linalg.norm(v) > 1e-3),
+    st.floats(0.0, 3.0),
+)
 def test_an_axisymmetric_inertia_turned_anywhere_gives_its_turned_axis(axis, angle):
     R = axis_angle_matrix(np.array(axis), angle)
     inertia = R @ np.diag([1.0, 3.0, 3.0]) @ R.T  # symmetry axis: R x

@@ -49,8 +49,13 @@ def test_given_scale_widens_the_tolerance_for_differences_of_large_numbers():
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.lists(st.tuples(st.floats(1e-3, 1e3), st.floats(-5, 5), st.floats(-5, 5), st.floats(-5, 5)),
-                min_size=1, max_size=6))
+@given(
+    st.lists(
+        st.tuples(st.floats(1e-3, 1e3), st.floats(-5, 5), st.floats(-5, 5), st.floats(-5, 5)),
+        min_size=1,
+        max_size=6,
+    )
+)
 def test_any_set_of_point_masses_gives_a_valid_inertia(points):
     m = np.array([p[0] for p in points])
     r = np.array([p[1:] for p in points])

@@ -18,7 +18,8 @@ import urllib.request
 
 import pytest
 
-from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 
 pytest.importorskip("distributed")
 psutil = pytest.importorskip("psutil")
@@ -79,14 +80,37 @@ def test_a_local_cluster_lets_no_credential_less_client_in_and_ctrl_c_is_one_lin
     out = tmp_path / "d.csv"
     scratch = tmp_path / "tmp"  # Dask's default scratch space is the fixed $TMPDIR/dask-scratch-space
     scratch.mkdir()
-    proc = subprocess.Popen([sys.executable, "-m", "rbi", "sweep", str(BOLTED), "--spin", "150:250:200000",
-                             "--duration", "0.5", "--dask", "local", "--workers", "1", "--out", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True,
-                            env={**os.environ, "TMPDIR": str(scratch)})
+    proc = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "rbi",
+            "sweep",
+            str(BOLTED),
+            "--spin",
+            "150:250:200000",
+            "--duration",
+            "0.5",
+            "--dask",
+            "local",
+            "--workers",
+            "1",
+            "--out",
+            str(out),
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+        env={**os.environ, "TMPDIR": str(scratch)},
+    )
     try:
         deadline = time.monotonic() + 120
-        while time.monotonic() < deadline and proc.poll() is None and \
-                (not out.exists() or out.read_bytes().count(b"\n") < 2):
+        while (
+            time.monotonic() < deadline
+            and proc.poll() is None
+            and (not out.exists() or out.read_bytes().count(b"\n") < 2)
+        ):
             time.sleep(0.1)
         assert proc.poll() is None, proc.communicate()[1]
         ports = listening(proc.pid)
@@ -94,8 +118,12 @@ def test_a_local_cluster_lets_no_credential_less_client_in_and_ctrl_c_is_one_lin
         assert all(address == "127.0.0.1" for address, _ in ports), ports
         assert 8787 not in {port for _, port in ports}
         assert [p.name for p in scratch.iterdir() if not p.name.startswith("rbi-dask-")] == []
-        assert plain_clients_get_in([f"{scheme}://127.0.0.1:{port}" for _, port in ports
-                                     for scheme in ("tcp", "tls")]) == []
+        assert (
+            plain_clients_get_in(
+                [f"{scheme}://127.0.0.1:{port}" for _, port in ports for scheme in ("tcp", "tls")]
+            )
+            == []
+        )
         assert [port for _, port in ports if http_answers(port)] == []
         workers = psutil.Process(proc.pid).children(recursive=True)
         assert workers

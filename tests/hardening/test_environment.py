@@ -18,8 +18,19 @@ import pytest
 from tests.conftest import BODIES
 from tests.hardening.users import as_ordinary_user
 
-PLANTED = ("numpy", "rbi", "typer", "rich", "yaml", "pydantic", "scipy", "sitecustomize", "usercustomize",
-           "Cython", "numba")
+PLANTED = (
+    "numpy",
+    "rbi",
+    "typer",
+    "rich",
+    "yaml",
+    "pydantic",
+    "scipy",
+    "sitecustomize",
+    "usercustomize",
+    "Cython",
+    "numba",
+)
 
 
 def _console_script() -> Path:
@@ -51,17 +62,48 @@ def test_the_console_script_runs_no_code_from_a_read_only_current_folder_without
         os.chmod(work, 0o555)  # read-only current folder
         env = {k: v for k, v in os.environ.items() if not k.startswith(("PYTHON", "XDG_"))}
         env.update(HOME="/nonexistent", PATH=os.environ.get("PATH", "/usr/bin:/bin"))
-        for args in (["simulate", str(BODIES / "top.yaml"), "--spin", "200", "--tilt", "5", "--duration", "0.2",
-                      "--format", "json"],
-                     ["principal", str(BODIES / "top_bolted.yaml"), "--format", "json"]):
-            proc = subprocess.run([*prefix, str(script), *args], cwd=work, env=env, capture_output=True, text=True,
-                                  timeout=120)
+        for args in (
+            [
+                "simulate",
+                str(BODIES / "top.yaml"),
+                "--spin",
+                "200",
+                "--tilt",
+                "5",
+                "--duration",
+                "0.2",
+                "--format",
+                "json",
+            ],
+            ["principal", str(BODIES / "top_bolted.yaml"), "--format", "json"],
+        ):
+            proc = subprocess.run(
+                [*prefix, str(script), *args], cwd=work, env=env, capture_output=True, text=True, timeout=120
+            )
             assert proc.returncode == 0, proc.stderr
             assert json.loads(proc.stdout)["name"]
             assert not marker.exists(), marker.read_text()
-        simulated = json.loads(subprocess.run([*prefix, str(script), "simulate", str(BODIES / "top.yaml"), "--spin",
-                                               "200", "--duration", "0.2", "--format", "json"], cwd=work, env=env,
-                                              capture_output=True, text=True, timeout=120).stdout)
+        simulated = json.loads(
+            subprocess.run(
+                [
+                    *prefix,
+                    str(script),
+                    "simulate",
+                    str(BODIES / "top.yaml"),
+                    "--spin",
+                    "200",
+                    "--duration",
+                    "0.2",
+                    "--format",
+                    "json",
+                ],
+                cwd=work,
+                env=env,
+                capture_output=True,
+                text=True,
+                timeout=120,
+            ).stdout
+        )
         assert simulated["final"]["t"] == 0.2
     finally:
         os.chmod(base / "work", 0o755)
@@ -78,9 +120,24 @@ def test_a_library_planted_in_the_cache_is_never_loaded(tmp_path):
         for name in ("_dop853.so", "_dop853.cpython-311-x86_64-linux-gnu.so", "rbi_kernels.so", "kernel.so"):
             (cache / name).write_bytes(b"\x7fELF" + os.urandom(256))  # would crash if loaded
     env = dict(os.environ, HOME=str(home), XDG_CACHE_HOME=str(home / "xdg"))
-    proc = subprocess.run([str(script), "simulate", str(BODIES / "top_bolted.yaml"), "--spin", "200", "--duration",
-                           "0.2", "--format", "json"], cwd=tmp_path, env=env, capture_output=True, text=True,
-                          timeout=120)
+    proc = subprocess.run(
+        [
+            str(script),
+            "simulate",
+            str(BODIES / "top_bolted.yaml"),
+            "--spin",
+            "200",
+            "--duration",
+            "0.2",
+            "--format",
+            "json",
+        ],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
     assert proc.returncode == 0, proc.stderr
     assert json.loads(proc.stdout)["final"]["t"] == 0.2
 
@@ -91,11 +148,19 @@ def test_python_dash_m_puts_the_current_folder_first_as_documented(tmp_path):
     marker = tmp_path / "marker"
     (tmp_path / "rbi.py").write_text(f"open({str(marker)!r}, 'w').write('ran')\n")
     env = {k: v for k, v in os.environ.items() if not k.startswith("PYTHON")}
-    subprocess.run([sys.executable, "-m", "rbi", "--version"], cwd=tmp_path, env=env, capture_output=True, timeout=60)
+    subprocess.run(
+        [sys.executable, "-m", "rbi", "--version"], cwd=tmp_path, env=env, capture_output=True, timeout=60
+    )
     assert marker.exists()
     marker.unlink()
-    proc = subprocess.run([str(_console_script()), "--version"], cwd=tmp_path, env=env, capture_output=True,
-                          text=True, timeout=60)
+    proc = subprocess.run(
+        [str(_console_script()), "--version"],
+        cwd=tmp_path,
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert proc.returncode == 0 and proc.stdout.startswith("rbi ")
     assert not marker.exists()
     security = (Path(__file__).resolve().parents[2] / "docs" / "security.md").read_text()

@@ -23,14 +23,16 @@ from pathlib import Path
 
 import pytest
 import yaml
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from rbi.cli.app import COMMANDS
-from tests.conftest import BODIES, run_rbi_inprocess as rbi
+from tests.conftest import BODIES
+from tests.conftest import run_rbi_inprocess as rbi
 
 EXCLUDED = {
     "bench": "takes no spec and measures the machine for seconds to minutes (its refusals are "
-             "tested in tests/hardening/test_writes.py)",
+    "tested in tests/hardening/test_writes.py)",
 }
 OPTIONS_NOT_FUZZED = {
     "--dask": "starts a cluster or dials a network address",
@@ -47,48 +49,122 @@ EXAMPLES = int(os.environ.get("RBI_FUZZ_EXAMPLES", "12"))
 
 # --- documents ------------------------------------------------------------------------------------
 
+
 def _numbers():
-    return st.one_of(st.integers(-5, 5), st.floats(-1e3, 1e3, allow_nan=False),
-                     st.sampled_from([0, -0.0, 1e-300, 1e300, -1, 0.5, 1e160, float("inf"), float("nan")]))
+    return st.one_of(
+        st.integers(-5, 5),
+        st.floats(-1e3, 1e3, allow_nan=False),
+        st.sampled_from([0, -0.0, 1e-300, 1e300, -1, 0.5, 1e160, float("inf"), float("nan")]),
+    )
 
 
 def _vectors():
     return st.lists(_numbers(), min_size=0, max_size=4)
 
 
-SHAPES = ["point", "sphere", "cylinder", "box", "cone", "rod", "custom", "shell", "torus", "hemisphere",
-          "capsule", "mesh", "point_cloud", "tube", "nonsense"]
-FIELDS = ["mass", "density", "radius", "inner_radius", "length", "size", "center", "position", "start", "end",
-          "apex", "base", "axis", "rotation", "inertia", "subtract", "file", "major_radius", "minor_radius",
-          "pattern", "scale", "material", "name", "thickness"]
+SHAPES = [
+    "point",
+    "sphere",
+    "cylinder",
+    "box",
+    "cone",
+    "rod",
+    "custom",
+    "shell",
+    "torus",
+    "hemisphere",
+    "capsule",
+    "mesh",
+    "point_cloud",
+    "tube",
+    "nonsense",
+]
+FIELDS = [
+    "mass",
+    "density",
+    "radius",
+    "inner_radius",
+    "length",
+    "size",
+    "center",
+    "position",
+    "start",
+    "end",
+    "apex",
+    "base",
+    "axis",
+    "rotation",
+    "inertia",
+    "subtract",
+    "file",
+    "major_radius",
+    "minor_radius",
+    "pattern",
+    "scale",
+    "material",
+    "name",
+    "thickness",
+]
 
 
 def _field_values():
-    return st.one_of(_numbers(), _vectors(), st.booleans(), st.none(),
-                     st.text(max_size=8), st.fixed_dictionaries({}, optional={
-                         "axis": _vectors(), "angle_deg": _numbers(), "quaternion": _vectors(),
-                         "count": st.integers(-2, 5), "step": _vectors(), "through": _vectors()}))
+    return st.one_of(
+        _numbers(),
+        _vectors(),
+        st.booleans(),
+        st.none(),
+        st.text(max_size=8),
+        st.fixed_dictionaries(
+            {},
+            optional={
+                "axis": _vectors(),
+                "angle_deg": _numbers(),
+                "quaternion": _vectors(),
+                "count": st.integers(-2, 5),
+                "step": _vectors(),
+                "through": _vectors(),
+            },
+        ),
+    )
 
 
 def _nearly_valid_bodies():
-    part = st.fixed_dictionaries({"shape": st.sampled_from(SHAPES)},
-                                 optional={f: _field_values() for f in FIELDS})
+    part = st.fixed_dictionaries(
+        {"shape": st.sampled_from(SHAPES)}, optional={f: _field_values() for f in FIELDS}
+    )
     body = st.fixed_dictionaries(
         {"parts": st.lists(part, min_size=0, max_size=4)},
-        optional={"name": st.text(max_size=10), "pivot": _vectors(),
-                  "units": st.fixed_dictionaries({}, optional={"length": st.sampled_from(["m", "mm", "in", "x"]),
-                                                               "mass": st.sampled_from(["kg", "g", "lb", "?"])}),
-                  "expect": st.fixed_dictionaries({}, optional={
-                      "mass": st.fixed_dictionaries({"value": _numbers(), "tol": st.sampled_from([0.1, "1%", "x"])})})})
+        optional={
+            "name": st.text(max_size=10),
+            "pivot": _vectors(),
+            "units": st.fixed_dictionaries(
+                {},
+                optional={
+                    "length": st.sampled_from(["m", "mm", "in", "x"]),
+                    "mass": st.sampled_from(["kg", "g", "lb", "?"]),
+                },
+            ),
+            "expect": st.fixed_dictionaries(
+                {},
+                optional={
+                    "mass": st.fixed_dictionaries(
+                        {"value": _numbers(), "tol": st.sampled_from([0.1, "1%", "x"])}
+                    )
+                },
+            ),
+        },
+    )
     return body
 
 
 def _json_values():
-    return st.recursive(st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=False),
-                                  st.text(max_size=10)),
-                        lambda children: st.lists(children, max_size=4)
-                        | st.dictionaries(st.text(max_size=8), children, max_size=4),
-                        max_leaves=20)
+    return st.recursive(
+        st.one_of(st.none(), st.booleans(), st.integers(), st.floats(allow_nan=False), st.text(max_size=10)),
+        lambda children: (
+            st.lists(children, max_size=4) | st.dictionaries(st.text(max_size=8), children, max_size=4)
+        ),
+        max_leaves=20,
+    )
 
 
 def _valid_body_texts():
@@ -116,16 +192,43 @@ def _documents():
         st.tuples(st.sampled_from(["doc.yaml", "doc.yml"]), _json_values().map(as_yaml)),
         st.tuples(st.sampled_from(["raw.yaml", "raw.json", "raw.urdf"]), st.binary(max_size=200)),
         st.tuples(st.just("arm.urdf"), _robot_texts().map(str.encode)),
-        st.tuples(st.just("robot.urdf"), st.builds(
-            lambda name, x, mass, i: URDF.format(name=name, x=x, mass=mass, i=i).encode(),
-            st.sampled_from(["base", "a&b", "x\x1b[2J"]), _numbers(), _numbers(), _numbers())),
+        st.tuples(
+            st.just("robot.urdf"),
+            st.builds(
+                lambda name, x, mass, i: URDF.format(name=name, x=x, mass=mass, i=i).encode(),
+                st.sampled_from(["base", "a&b", "x\x1b[2J"]),
+                _numbers(),
+                _numbers(),
+                _numbers(),
+            ),
+        ),
     )
 
 
 # --- option values --------------------------------------------------------------------------------
 
-JUNK = st.sampled_from(["", "x", "nan", "inf", "-1", "0", "1e400", "1,2", "1,2,3,4", "a,b,c", "=1+1", "\x1b]0;t\x07",
-                        "-", "--", "10" * 30, "1_000", "0x10", "１"])
+JUNK = st.sampled_from(
+    [
+        "",
+        "x",
+        "nan",
+        "inf",
+        "-1",
+        "0",
+        "1e400",
+        "1,2",
+        "1,2,3,4",
+        "a,b,c",
+        "=1+1",
+        "\x1b]0;t\x07",
+        "-",
+        "--",
+        "10" * 30,
+        "1_000",
+        "0x10",
+        "１",
+    ]
+)
 
 
 def _mostly(*valid):
@@ -134,11 +237,28 @@ def _mostly(*valid):
     return st.one_of(good, good, good, JUNK)
 
 
-GOOD_VECTOR = st.tuples(*[st.sampled_from([0, 1, -2, 0.5, 10, 1e-9])] * 3).map(lambda v: ",".join(map(str, v)))
-VECTORS = st.one_of(GOOD_VECTOR, GOOD_VECTOR, st.tuples(_numbers(), _numbers(), _numbers()).map(
-    lambda v: ",".join(map(str, v))), JUNK)
-BAD_OUTPUTS = ["out.json", "out.yaml", "out", "-", "", "body.yaml", "/dev/null", "missing/x.csv", ".",
-               "x" * 300 + ".csv", "/sys/x.csv"]
+GOOD_VECTOR = st.tuples(*[st.sampled_from([0, 1, -2, 0.5, 10, 1e-9])] * 3).map(
+    lambda v: ",".join(map(str, v))
+)
+VECTORS = st.one_of(
+    GOOD_VECTOR,
+    GOOD_VECTOR,
+    st.tuples(_numbers(), _numbers(), _numbers()).map(lambda v: ",".join(map(str, v))),
+    JUNK,
+)
+BAD_OUTPUTS = [
+    "out.json",
+    "out.yaml",
+    "out",
+    "-",
+    "",
+    "body.yaml",
+    "/dev/null",
+    "missing/x.csv",
+    ".",
+    "x" * 300 + ".csv",
+    "/sys/x.csv",
+]
 
 
 def _outputs(*good):
@@ -153,8 +273,13 @@ BY_NAME = {
     "--about": st.one_of(_mostly("com", "origin", "pivot"), VECTORS),
     "--units": _mostly("SI", "mm,g", "in,lb", "cm,kg"),
     "--rotate": _mostly("principal", "x:90", "1,0,0:30", "0,0,1:-45"),
-    "--omega": VECTORS, "--velocity": VECTORS, "--alpha": VECTORS, "--accel": VECTORS, "--force": VECTORS,
-    "--torque": VECTORS, "--axis": VECTORS,
+    "--omega": VECTORS,
+    "--velocity": VECTORS,
+    "--alpha": VECTORS,
+    "--accel": VECTORS,
+    "--force": VECTORS,
+    "--torque": VECTORS,
+    "--axis": VECTORS,
     "--spin": _mostly("0", "10", "200", "-50", "1e9", "1e300", "100:200:3", "0:1:2"),
     "--tilt": _mostly("0", "5", "90", "180", "-10", "0:10:2", "1:2:1000000000"),
     "--gravity": _mostly("0", "9.81", "1.62", "1e300"),
@@ -164,14 +289,22 @@ BY_NAME = {
     "--rtol": _mostly("1e-12", "1e-15", "1e-16", "1e-6", "0.5"),
     "--runs": _mostly("1", "3", "0", "1e12"),
     "--seed": _mostly("0", "42", "-1"),
-    "--vary": _mostly("parts.cone.mass=0.1:0.5:2", "parts.bolt.mass=normal(0.02,0.001)",
-                      "parts.bolt.position[0]=0:0.1:2", "mass=1", "parts..=1:2:3"),
-    "--speed": _mostly("0.5", "1", "0", "1e9"), "--fps": _mostly("1", "5", "0", "1000"),
+    "--vary": _mostly(
+        "parts.cone.mass=0.1:0.5:2",
+        "parts.bolt.mass=normal(0.02,0.001)",
+        "parts.bolt.position[0]=0:0.1:2",
+        "mass=1",
+        "parts..=1:2:3",
+    ),
+    "--speed": _mostly("0.5", "1", "0", "1e9"),
+    "--fps": _mostly("1", "5", "0", "1000"),
     "--link": _mostly("base", "nope"),
     "--products": _mostly("tensor", "cad"),
     "--only": _mostly("latency"),
 }
-GENERIC = st.one_of(JUNK, VECTORS, _mostly("0", "1", "0.05"), _outputs("out.csv", "out.png"), st.text(max_size=10))
+GENERIC = st.one_of(
+    JUNK, VECTORS, _mostly("0", "1", "0.05"), _outputs("out.csv", "out.png"), st.text(max_size=10)
+)
 
 
 def _command_parameters(name: str):
@@ -203,13 +336,16 @@ def _option_arguments(name: str):
                 values = GENERIC
             choices.append(values.map(lambda v, o=option: [o, v]))
             if getattr(param, "required", False):  # present in most runs, so the run gets going
-                required_options.append((param, st.one_of(choices[-1], choices[-1], choices[-1], st.just([]))))
+                required_options.append(
+                    (param, st.one_of(choices[-1], choices[-1], choices[-1], st.just([])))
+                )
     if any(o == "--workers" for p in _command_parameters(name) for o in p.opts):
         choices.append(st.sampled_from([["--workers", "1"], ["--workers", "0"], ["--workers", "x"]]))
     required = [option_strategy for param, option_strategy in required_options]
     chosen = st.lists(st.one_of(choices), max_size=4) if choices else st.just([])
     return st.tuples(st.tuples(*required) if required else st.just(()), chosen).map(
-        lambda both: [a for group in (*both[0], *both[1]) for a in group])
+        lambda both: [a for group in (*both[0], *both[1]) for a in group]
+    )
 
 
 def _output_values(param):
@@ -229,9 +365,12 @@ def _takes_a_file(name: str) -> bool:
 
 # --- the property ---------------------------------------------------------------------------------
 
+
 def _listing(folder: Path) -> dict[str, bytes]:
-    return {str(p.relative_to(folder)): (p.read_bytes() if p.is_file() else b"")
-            for p in sorted(folder.rglob("*"))}
+    return {
+        str(p.relative_to(folder)): (p.read_bytes() if p.is_file() else b"")
+        for p in sorted(folder.rglob("*"))
+    }
 
 
 def _check_run(command: str, document, options: list[str]) -> None:
@@ -269,8 +408,13 @@ def _check_run(command: str, document, options: list[str]) -> None:
 def test_any_input_is_a_result_or_one_line_exit_2(command):
     options = _option_arguments(command)
 
-    @settings(max_examples=EXAMPLES, deadline=None, derandomize=True, database=None,
-              suppress_health_check=list(HealthCheck))
+    @settings(
+        max_examples=EXAMPLES,
+        deadline=None,
+        derandomize=True,
+        database=None,
+        suppress_health_check=list(HealthCheck),
+    )
     @given(document=_documents(), options=options)
     def run(document, options):
         _check_run(command, document, options)
@@ -283,8 +427,13 @@ def test_valid_bodies_with_random_options(command):
     """Bundled bodies (so the options, not the spec, decide the outcome)."""
     options = _option_arguments(command)
 
-    @settings(max_examples=EXAMPLES, deadline=None, derandomize=True, database=None,
-              suppress_health_check=list(HealthCheck))
+    @settings(
+        max_examples=EXAMPLES,
+        deadline=None,
+        derandomize=True,
+        database=None,
+        suppress_health_check=list(HealthCheck),
+    )
     @given(document=st.tuples(st.just("body.yaml"), _valid_body_texts().map(str.encode)), options=options)
     def run(document, options):
         _check_run(command, document, options)

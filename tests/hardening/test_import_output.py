@@ -25,8 +25,9 @@ from tests.conftest import run_rbi_inprocess
 SPEC_KEYS = {"name", "units", "parts"}
 PART_KEYS = {"name", "shape", "mass", "center_of_mass", "inertia", "rotation"}
 
-UNSAFE_ON_A_TERMINAL = re.compile("[\x00-\x09\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069"
-                                  "\u2028\u2029]")
+UNSAFE_ON_A_TERMINAL = re.compile(
+    "[\x00-\x09\x0b-\x1f\x7f-\x9f\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069\u2028\u2029]"
+)
 """Characters that must never reach stdout raw: C0 controls but the newline, DEL, C1 controls
 (CSI, NEL), bidirectional overrides and isolates, and Unicode's line and paragraph separators
 (line breaks to YAML)."""
@@ -40,9 +41,10 @@ def xml_attribute(text: str) -> str:
 
 def urdf(names: list[str], robot: str = "r") -> str:
     links = "".join(
-        f"<link name={xml_attribute(name)}><inertial><origin xyz=\"0 0 0\" rpy=\"0 0 0.5\"/><mass value=\"2\"/>"
-        f"<inertia ixx=\"1\" iyy=\"2\" izz=\"2.5\" ixy=\"0\" ixz=\"0\" iyz=\"0\"/></inertial></link>"
-        for name in names)
+        f'<link name={xml_attribute(name)}><inertial><origin xyz="0 0 0" rpy="0 0 0.5"/><mass value="2"/>'
+        f'<inertia ixx="1" iyy="2" izz="2.5" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+        for name in names
+    )
     return f"<robot name={xml_attribute(robot)}>{links}</robot>\n"
 
 
@@ -80,19 +82,21 @@ def check_robot_spec(text: str, names: list[str]) -> dict:
 
 def assert_terminal_safe(text: str) -> None:
     found = UNSAFE_ON_A_TERMINAL.search(text)
-    assert found is None, f"raw {found.group()!r} in output: {text[max(found.start() - 40, 0): found.end() + 40]!r}"
+    assert found is None, (
+        f"raw {found.group()!r} in output: {text[max(found.start() - 40, 0) : found.end() + 40]!r}"
+    )
 
 
 HOSTILE_NAMES = [
-    "arm\npivot: [0, 0, 9]\nexpect:\n  mass: 5",           # the reported injection: live keys after a newline
-    "arm\r\nparts: []",                                    # CR LF
-    "arm\u2028pivot: [0, 0, 9]",                            # YAML line separator, not a newline to Python's eye
+    "arm\npivot: [0, 0, 9]\nexpect:\n  mass: 5",  # the reported injection: live keys after a newline
+    "arm\r\nparts: []",  # CR LF
+    "arm\u2028pivot: [0, 0, 9]",  # YAML line separator, not a newline to Python's eye
     "arm\u2029units: {length: mm}",
-    "arm\x85name: other",                                   # NEL: a line break in YAML 1.1
-    "\u202eevil\u202c",                                      # right-to-left override
-    "\x9d0;pwned\x9c\x9b2J",                                 # C1 OSC (set the title), CSI clear screen
-    "\x9b31mred\x9b0m",                                      # C1 CSI
-    "--- !!python/object:os.system",                         # document separator and a tag
+    "arm\x85name: other",  # NEL: a line break in YAML 1.1
+    "\u202eevil\u202c",  # right-to-left override
+    "\x9d0;pwned\x9c\x9b2J",  # C1 OSC (set the title), CSI clear screen
+    "\x9b31mred\x9b0m",  # C1 CSI
+    "--- !!python/object:os.system",  # document separator and a tag
     "# not a comment",
     "&anchor *alias",
     "'quoted' \"double\" \\ back",
@@ -100,7 +104,14 @@ HOSTILE_NAMES = [
     "tab\there",
     "\ufeffbom",
     "名前 ünïcödé 🚀",
-    "yes", "null", "~", "1e3", "0x10", ".inf", "2024-01-01", "12:30:00",  # scalars YAML would read as non-strings
+    "yes",
+    "null",
+    "~",
+    "1e3",
+    "0x10",
+    ".inf",
+    "2024-01-01",
+    "12:30:00",  # scalars YAML would read as non-strings
 ]
 
 
@@ -116,7 +127,11 @@ def test_a_hostile_link_name_is_data_in_the_printed_spec(tmp_path, name):
     assert_terminal_safe(proc.stderr)
 
 
-@pytest.mark.parametrize("name", HOSTILE_NAMES[:8] + HOSTILE_NAMES[-8:], ids=[repr(n)[:30] for n in HOSTILE_NAMES[:8] + HOSTILE_NAMES[-8:]])
+@pytest.mark.parametrize(
+    "name",
+    HOSTILE_NAMES[:8] + HOSTILE_NAMES[-8:],
+    ids=[repr(n)[:30] for n in HOSTILE_NAMES[:8] + HOSTILE_NAMES[-8:]],
+)
 def test_a_hostile_link_name_is_data_in_the_written_spec_and_rbi_reads_it_back(tmp_path, name):
     path = tmp_path / "robot.urdf"
     path.write_text(urdf([name]))
@@ -177,7 +192,9 @@ def test_the_listing_escapes_names_for_the_terminal(tmp_path, fmt):
     assert proc.returncode == 0, proc.stderr
     assert_terminal_safe(proc.stdout)
     if fmt == "json":
-        assert [link["name"] for link in json.loads(proc.stdout)["links"]] == names  # JSON keeps the data exact
+        assert [
+            link["name"] for link in json.loads(proc.stdout)["links"]
+        ] == names  # JSON keeps the data exact
 
 
 def test_a_long_name_is_written_whole_and_quickly(tmp_path):
@@ -189,9 +206,11 @@ def test_a_long_name_is_written_whole_and_quickly(tmp_path):
     check_specs(proc.stdout, read_names(path))
 
 
-xml_text = st.text(st.characters(blacklist_categories=("Cs",),
-                                 blacklist_characters="\ufffe\uffff"), max_size=60) \
-    .map(lambda s: "".join(c for c in s if c in "\t\n\r" or ord(c) >= 0x20)).filter(lambda s: s.strip())
+xml_text = (
+    st.text(st.characters(blacklist_categories=("Cs",), blacklist_characters="\ufffe\uffff"), max_size=60)
+    .map(lambda s: "".join(c for c in s if c in "\t\n\r" or ord(c) >= 0x20))
+    .filter(lambda s: s.strip())
+)
 
 
 @given(st.lists(xml_text, min_size=1, max_size=3, unique=True), xml_text)

@@ -12,7 +12,8 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from rbi.core.mesh import MeshError, mesh_mass_properties
 from tests.conftest import one_line_exit_2, run_rbi_inprocess
@@ -40,10 +41,12 @@ def obj_text(vertices, faces, one_based=True):
 
 # --- OBJ numbering ----------------------------------------------------------------------------
 
+
 def test_obj_index_zero_is_refused_not_read_as_the_last_vertex(tmp_path):
     (tmp_path / "zero.obj").write_text(TETRA + "f 0 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n")
-    one_line_exit_2(inertia(tmp_path, "zero.obj"), "parts[0] (piece)", "line 5", "vertex 0",
-                    "OBJ numbers vertices from 1")
+    one_line_exit_2(
+        inertia(tmp_path, "zero.obj"), "parts[0] (piece)", "line 5", "vertex 0", "OBJ numbers vertices from 1"
+    )
 
 
 def test_negative_obj_indices_count_back_from_the_last_vertex_read(tmp_path):
@@ -72,12 +75,15 @@ def test_obj_index_beyond_the_last_vertex_names_the_line_and_count(tmp_path):
     one_line_exit_2(inertia(tmp_path, "far.obj"), "face on line 6 names vertex 9", "the file has 4 vertices")
 
 
-@pytest.mark.parametrize("line, words", [
-    ("v 1 2\n", "line 5: a vertex needs three coordinates"),
-    ("v 1 two 3\n", "line 5: a vertex coordinate is not a number"),
-    ("f \n", "line 5: a face names no vertex"),
-    ("f 1 2 x\n", "line 5: a face's vertex number is not a whole number"),
-])
+@pytest.mark.parametrize(
+    "line, words",
+    [
+        ("v 1 2\n", "line 5: a vertex needs three coordinates"),
+        ("v 1 two 3\n", "line 5: a vertex coordinate is not a number"),
+        ("f \n", "line 5: a face names no vertex"),
+        ("f 1 2 x\n", "line 5: a face's vertex number is not a whole number"),
+    ],
+)
 def test_malformed_obj_lines_name_the_line_never_the_content(tmp_path, line, words):
     (tmp_path / "bad.obj").write_text(TETRA + line + TETRA_FACES)
     proc = inertia(tmp_path, "bad.obj")
@@ -97,6 +103,7 @@ def test_obj_polygons_and_slashed_corners_are_read_as_the_format_says(tmp_path):
 
 
 # --- pieces -----------------------------------------------------------------------------------
+
 
 def test_two_cubes_on_one_edge_in_one_obj_are_twice_the_cube(tmp_path):
     a, fa = box_mesh(center=(0.5, 0.5, 0.5))
@@ -121,14 +128,18 @@ def test_a_cube_with_every_face_written_twice_is_flagged_as_overlapping():
 def test_a_small_inside_out_cube_beside_a_big_one_is_refused_not_subtracted(tmp_path):
     big, big_faces = box_mesh((2, 2, 2))
     small, small_faces = box_mesh(center=(5, 0, 0))
-    write_obj(tmp_path / "mixed.obj", np.vstack([big, small]), np.vstack([big_faces, small_faces[:, ::-1] + 8]))
+    write_obj(
+        tmp_path / "mixed.obj", np.vstack([big, small]), np.vstack([big_faces, small_faces[:, ::-1] + 8])
+    )
     one_line_exit_2(inertia(tmp_path, "mixed.obj"), "inside out", "no cavity")
 
 
 def test_a_cavity_is_still_a_cavity(tmp_path):
     outer, outer_faces = box_mesh((4, 4, 4))
     inner, inner_faces = box_mesh((2, 2, 2))
-    write_obj(tmp_path / "hollow.obj", np.vstack([outer, inner]), np.vstack([outer_faces, inner_faces[:, ::-1] + 8]))
+    write_obj(
+        tmp_path / "hollow.obj", np.vstack([outer, inner]), np.vstack([outer_faces, inner_faces[:, ::-1] + 8])
+    )
     out = json.loads(inertia(tmp_path, "hollow.obj", extra=", inertia: exact").stdout)
     # density 6/56: outer box 64 minus inner box 8
     rho = 6 / 56
@@ -137,6 +148,7 @@ def test_a_cavity_is_still_a_cavity(tmp_path):
 
 
 # --- numbers and headers ----------------------------------------------------------------------
+
 
 def test_coordinates_whose_fifth_power_overflows_are_refused(tmp_path):
     vertices, faces = box_mesh((1e200, 1e200, 1e200))
@@ -187,16 +199,21 @@ def test_a_252_mib_binary_stl_is_refused_from_its_header_in_little_memory(tmp_pa
     with open(path, "wb") as out:
         out.write(b"binary".ljust(80, b" ") + struct.pack("<I", count))
         out.truncate(84 + 50 * count)
-    proc = subprocess.run([sys.executable, "-c", PEAK_PROBE, str(path)], capture_output=True, text=True, timeout=120)
+    proc = subprocess.run(
+        [sys.executable, "-c", PEAK_PROBE, str(path)], capture_output=True, text=True, timeout=120
+    )
     message, peak_kib = proc.stdout.strip().splitlines()
     assert message.startswith("mesh has 5274750 triangles; rbi reads at most 2000000")
     assert int(peak_kib) < 200 * 1024, peak_kib  # kilobytes on Linux: under 200 MB
 
 
-@pytest.mark.parametrize("name, text", [
-    ("many.obj", TETRA + TETRA_FACES),
-    ("many.stl", None),
-])
+@pytest.mark.parametrize(
+    "name, text",
+    [
+        ("many.obj", TETRA + TETRA_FACES),
+        ("many.stl", None),
+    ],
+)
 def test_text_meshes_beyond_the_triangle_cap_are_refused(tmp_path, monkeypatch, name, text):
     from rbi.formats import mesh_file
     from tests.mesh_builders import write_ascii_stl
@@ -210,9 +227,11 @@ def test_text_meshes_beyond_the_triangle_cap_are_refused(tmp_path, monkeypatch, 
 
 
 def test_a_ply_header_promising_a_trillion_vertices_is_refused_before_allocating(tmp_path):
-    header = ("ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\n"
-              "property float y\nproperty float z\nelement face 2\nproperty list uchar int vertex_indices\n"
-              "end_header\n")
+    header = (
+        "ply\nformat binary_little_endian 1.0\nelement vertex 1000000000000\nproperty float x\n"
+        "property float y\nproperty float z\nelement face 2\nproperty list uchar int vertex_indices\n"
+        "end_header\n"
+    )
     (tmp_path / "liar.ply").write_bytes(header.encode() + bytes(64))
     one_line_exit_2(inertia(tmp_path, "liar.ply"), "header promises 1000000000000 vertices")
 
@@ -227,8 +246,10 @@ def test_a_ply_beyond_its_byte_cap_is_refused_before_trimesh_parses_it(tmp_path,
 
 
 def test_an_ascii_stl_facet_with_four_vertices_is_refused(tmp_path):
-    facet = ("facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\n"
-             "endloop\nendfacet\n")
+    facet = (
+        "facet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\n"
+        "endloop\nendfacet\n"
+    )
     (tmp_path / "quad.stl").write_text("solid q\n" + facet + "endsolid q\n")
     one_line_exit_2(inertia(tmp_path, "quad.stl"), "a facet does not have three vertices")
 
@@ -247,11 +268,17 @@ def test_vertices_crowding_within_the_weld_tolerance_are_refused_quickly():
 
 # --- modes through the spec -------------------------------------------------------------------
 
+
 def test_exact_refusal_names_the_other_modes(tmp_path):
     vertices, faces = box_mesh()
     write_obj(tmp_path / "open.obj", vertices, faces[1:])
-    one_line_exit_2(inertia(tmp_path, "open.obj"), "not closed: 3 boundary edges", "inertia: convex",
-                    "inertia: shell", "repair: true")
+    one_line_exit_2(
+        inertia(tmp_path, "open.obj"),
+        "not closed: 3 boundary edges",
+        "inertia: convex",
+        "inertia: shell",
+        "repair: true",
+    )
 
 
 def test_repair_in_a_spec_gives_the_cube(tmp_path):
@@ -266,13 +293,17 @@ def test_rbi_parts_reports_the_area_repair_added_and_overlapping_pieces(tmp_path
     write_obj(tmp_path / "open.obj", vertices, faces[1:])
     write_obj(tmp_path / "twice.obj", vertices, np.vstack([faces, faces]))
     spec = tmp_path / "body.yaml"
-    spec.write_text("parts:\n  - {name: mended, shape: mesh, file: open.obj, mass: 1, repair: true, scale: 0.5}\n"
-                    "  - {name: doubled, shape: mesh, file: twice.obj, mass: 1}\n")
+    spec.write_text(
+        "parts:\n  - {name: mended, shape: mesh, file: open.obj, mass: 1, repair: true, scale: 0.5}\n"
+        "  - {name: doubled, shape: mesh, file: twice.obj, mass: 1}\n"
+    )
     proc = run_rbi_inprocess("parts", spec)
     assert proc.returncode == 0, proc.stderr
     # one triangle of a face of side 2 · 0.5: half of 1 m², 1/12 of the surface
-    assert "parts[0] (mended): file: open.obj: repair added 1 triangle closing holes, 0.5 m² (8.33% of the surface)" \
+    assert (
+        "parts[0] (mended): file: open.obj: repair added 1 triangle closing holes, 0.5 m² (8.33% of the surface)"
         in proc.stderr
+    )
     assert "parts[1] (doubled): file: twice.obj: pieces of the mesh overlap" in proc.stderr
 
 
@@ -289,14 +320,19 @@ def test_shell_and_convex_in_a_spec(tmp_path):
 def test_shell_with_a_density_is_refused(tmp_path):
     write_obj(tmp_path / "cube.obj", *box_mesh())
     spec = tmp_path / "body.yaml"
-    spec.write_text("parts:\n  - {name: piece, shape: mesh, file: cube.obj, density: steel, inertia: shell}\n")
+    spec.write_text(
+        "parts:\n  - {name: piece, shape: mesh, file: cube.obj, density: steel, inertia: shell}\n"
+    )
     one_line_exit_2(run_rbi_inprocess("inertia", spec), "density", "give mass instead")
 
 
-@pytest.mark.parametrize("extra, words", [
-    (", inertia: legacy", "inertia"),
-    (", repair: maybe", "repair"),
-])
+@pytest.mark.parametrize(
+    "extra, words",
+    [
+        (", inertia: legacy", "inertia"),
+        (", repair: maybe", "repair"),
+    ],
+)
 def test_bad_mode_fields_are_refused(tmp_path, extra, words):
     write_obj(tmp_path / "cube.obj", *box_mesh())
     one_line_exit_2(inertia(tmp_path, "cube.obj", extra=extra), "parts[0] (piece)", words)
@@ -309,8 +345,10 @@ def test_convex_of_a_flat_mesh_is_refused(tmp_path):
 
 # --- random vertex and face data --------------------------------------------------------------
 
-coordinate = st.one_of(st.floats(-10, 10), st.sampled_from([0.0, -0.0, 1e-300, 1e49, 1e60, 1e308,
-                                                             float("nan"), float("inf"), -float("inf")]))
+coordinate = st.one_of(
+    st.floats(-10, 10),
+    st.sampled_from([0.0, -0.0, 1e-300, 1e49, 1e60, 1e308, float("nan"), float("inf"), -float("inf")]),
+)
 
 
 @st.composite

@@ -12,14 +12,17 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings, strategies as st
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
-from tests.conftest import BODIES, ROOT, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, ROOT, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 
 DOCS = ROOT / "docs"
 
 
 # --- rbi bench without a source checkout ---------------------------------------------------------
+
 
 def test_the_bench_bodies_ship_inside_the_package_and_equal_the_examples():
     from rbi.bench.paths import BENCH_BODIES, bodies_folder
@@ -29,7 +32,9 @@ def test_the_bench_bodies_ship_inside_the_package_and_equal_the_examples():
     assert folder.is_relative_to(package)  # not the checkout's bodies/
     for name in BENCH_BODIES:
         assert (folder / name).read_bytes() == (BODIES / name).read_bytes(), name
-    package_data = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"]["rbi"]
+    package_data = tomllib.loads((ROOT / "pyproject.toml").read_text())["tool"]["setuptools"]["package-data"][
+        "rbi"
+    ]
     assert "data/bodies/*.yaml" in package_data
 
 
@@ -46,6 +51,7 @@ def test_every_body_the_bench_opens_is_one_it_ships():
 
 
 # --- docs/check.md --------------------------------------------------------------------------------
+
 
 def _expect_block() -> str:
     text = (DOCS / "check.md").read_text()
@@ -72,7 +78,7 @@ def test_the_check_docs_example_holds_on_the_body_it_names(tmp_path):
 def test_the_check_docs_example_values_are_the_bolted_tops_by_hand():
     """Izz about the pivot by hand: cone 3/10 m r², stem 1/2 m r², bolt m r² (all on the z axis
     or at radius 0.04 m): 1.92e-4 + 3.2e-6 + 3.2e-5 = 2.272e-4 kg·m², the docs' figure."""
-    izz = 0.3 * 0.4 * 0.04 ** 2 + 0.5 * 0.1 * 0.008 ** 2 + 0.02 * 0.04 ** 2
+    izz = 0.3 * 0.4 * 0.04**2 + 0.5 * 0.1 * 0.008**2 + 0.02 * 0.04**2
     assert izz == pytest.approx(2.272e-4, rel=1e-12)
     assert "izz: 2.272e-4" in _expect_block()
 
@@ -97,8 +103,10 @@ def test_plot_help_and_error_name_the_install_command_the_readme_uses(tmp_path, 
         return real_import(name, *args, **kwargs)
 
     monkeypatch.setattr(builtins, "__import__", no_matplotlib)
-    for args in (["simulate", BODIES / "top.yaml", "--spin", "200", "--plot", tmp_path / "x.png"],
-                 ["bench", "--quick", "--plot", tmp_path / "x.png"]):
+    for args in (
+        ["simulate", BODIES / "top.yaml", "--spin", "200", "--plot", tmp_path / "x.png"],
+        ["bench", "--quick", "--plot", tmp_path / "x.png"],
+    ):
         proc = rbi(*args)
         one_line_exit_2(proc, "--plot", "matplotlib", INSTALL)
     assert list(tmp_path.iterdir()) == []
@@ -106,19 +114,46 @@ def test_plot_help_and_error_name_the_install_command_the_readme_uses(tmp_path, 
 
 # --- the error estimate ---------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("rtol", ["1e-12", "1e-13", "1e-14", "3e-15"])
 def test_the_error_estimate_is_strictly_tighter_than_the_run(rtol):
-    out = json.loads(rbi("simulate", BODIES / "top_bolted.yaml", "--spin", "200", "--duration", "0.3",
-                         "--rtol", rtol, "--format", "json").stdout)
+    out = json.loads(
+        rbi(
+            "simulate",
+            BODIES / "top_bolted.yaml",
+            "--spin",
+            "200",
+            "--duration",
+            "0.3",
+            "--rtol",
+            rtol,
+            "--format",
+            "json",
+        ).stdout
+    )
     estimate = out["error_estimate"]
     reference = float(re.search(r"rtol ([0-9.e+-]+)", estimate["reference"]).group(1))
     assert reference < float(rtol)
-    assert estimate["orientation_deg"] > 0.0 and estimate["omega_rad_s"] > 0.0  # not a run compared with itself
+    assert (
+        estimate["orientation_deg"] > 0.0 and estimate["omega_rad_s"] > 0.0
+    )  # not a run compared with itself
 
 
 def test_at_the_tightest_tolerance_the_estimate_says_it_cannot_be_given():
-    out = json.loads(rbi("simulate", BODIES / "top_bolted.yaml", "--spin", "200", "--duration", "0.3",
-                         "--rtol", "1e-15", "--format", "json").stdout)
+    out = json.loads(
+        rbi(
+            "simulate",
+            BODIES / "top_bolted.yaml",
+            "--spin",
+            "200",
+            "--duration",
+            "0.3",
+            "--rtol",
+            "1e-15",
+            "--format",
+            "json",
+        ).stdout
+    )
     assert out["error_estimate"]["orientation_deg"] is None
     assert "not available" in out["error_estimate"]["reference"]
 
@@ -134,6 +169,7 @@ def test_the_docs_state_the_real_factor():
 
 # --- principal axis signs (docs/conventions.md) --------------------------------------------------
 
+
 def test_the_conventions_example_box_gives_the_documented_axes(tmp_path):
     spec = tmp_path / "box.yaml"
     spec.write_text("parts:\n  - {shape: box, mass: 1, size: [2, 3, 1], center: [0, 0, 0]}\n")
@@ -144,8 +180,10 @@ def test_the_conventions_example_box_gives_the_documented_axes(tmp_path):
 
 
 @settings(max_examples=60, deadline=None)
-@given(st.lists(st.floats(-1, 1, allow_nan=False), min_size=3, max_size=3),
-       st.lists(st.floats(0.1, 10), min_size=3, max_size=3, unique=True))
+@given(
+    st.lists(st.floats(-1, 1, allow_nan=False), min_size=3, max_size=3),
+    st.lists(st.floats(0.1, 10), min_size=3, max_size=3, unique=True),
+)
 def test_the_documented_sign_rule_holds(rotation_vector, moments):
     """For distinct moments: axes[0] and axes[1] have their largest component positive and
     axes[2] is their cross product, whatever its sign."""

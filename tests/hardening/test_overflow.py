@@ -28,11 +28,17 @@ from rbi.core.rotation import (
 from tests.conftest import one_line_exit_2, run_rbi_inprocess
 
 # components from the smallest subnormal to the largest finite double
-magnitudes = st.sampled_from([5e-324, 1e-310, 1e-200, 1e-160, 1e154, 1.4e154, 1e200, 1e300, 1.7976931348623157e308])
+magnitudes = st.sampled_from(
+    [5e-324, 1e-310, 1e-200, 1e-160, 1e154, 1.4e154, 1e200, 1e300, 1.7976931348623157e308]
+)
 
 
-@given(st.lists(st.sampled_from([-2.0, -1.0, 0.0, 0.5, 1.0, 3.0]), min_size=3, max_size=3)
-       .filter(lambda v: any(v)), magnitudes)
+@given(
+    st.lists(st.sampled_from([-2.0, -1.0, 0.0, 0.5, 1.0, 3.0]), min_size=3, max_size=3).filter(
+        lambda v: any(v)
+    ),
+    magnitudes,
+)
 @settings(max_examples=200, deadline=None)
 def test_unit_vector_is_the_direction_at_any_scale(direction, scale):
     with np.errstate(over="ignore"):
@@ -60,8 +66,9 @@ def test_vector_length_is_finite_up_to_the_largest_double():
 def test_rotations_from_huge_and_tiny_axes_and_quaternions(scale):
     axis = np.array([0.5, -1.0, 1.0])
     np.testing.assert_allclose(axis_angle_matrix(axis * scale, 0.7), axis_angle_matrix(axis, 0.7), atol=1e-15)
-    np.testing.assert_allclose(quaternion_from_axis_angle(axis * scale, 0.7), quaternion_from_axis_angle(axis, 0.7),
-                               atol=1e-15)
+    np.testing.assert_allclose(
+        quaternion_from_axis_angle(axis * scale, 0.7), quaternion_from_axis_angle(axis, 0.7), atol=1e-15
+    )
     q = np.array([0.5, -0.5, 0.1, 0.7])
     np.testing.assert_allclose(quaternion_to_matrix(q * scale), quaternion_to_matrix(q), atol=1e-15)
     R = quaternion_to_matrix(q)
@@ -76,15 +83,21 @@ def _inertia(write_spec, text, name="body.yaml"):
 
 
 HUGE_SPECS = {
-    "box rotation axis": ("- {{shape: box, mass: 1, size: [1, 2, 3], center: [0, 0, 0], "
-                          "rotation: {{axis: [{a}, 0, {a}], angle_deg: 90}}}}"),
+    "box rotation axis": (
+        "- {{shape: box, mass: 1, size: [1, 2, 3], center: [0, 0, 0], "
+        "rotation: {{axis: [{a}, 0, {a}], angle_deg: 90}}}}"
+    ),
     "box quaternion": "- {{shape: box, mass: 1, size: [1, 2, 3], center: [0, 0, 0], rotation: {{quaternion: [{a}, {a}, 0, {a}]}}}}",
     "torus axis": "- {{shape: torus, mass: 1, major_radius: 1, minor_radius: 0.2, center: [0, 0, 0], axis: [{a}, 0, 0]}}",
     "hemisphere axis": "- {{shape: hemisphere, mass: 1, radius: 1, center: [0, 0, 0], axis: [0, {a}, {a}]}}",
-    "pattern axis": ("- {{shape: box, mass: 1, size: [1, 1, 2], center: [0, 0, 0], "
-                     "pattern: {{count: 3, axis: [{a}, 0, 0], through: [0, 1, 0]}}}}"),
-    "custom rotation": ("- {{shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {{ixx: 1, iyy: 2, izz: 2.5}}, "
-                        "rotation: {{quaternion: [{a}, {a}, {a}, 0]}}}}"),
+    "pattern axis": (
+        "- {{shape: box, mass: 1, size: [1, 1, 2], center: [0, 0, 0], "
+        "pattern: {{count: 3, axis: [{a}, 0, 0], through: [0, 1, 0]}}}}"
+    ),
+    "custom rotation": (
+        "- {{shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {{ixx: 1, iyy: 2, izz: 2.5}}, "
+        "rotation: {{quaternion: [{a}, {a}, {a}, 0]}}}}"
+    ),
 }
 
 
@@ -98,18 +111,30 @@ def test_huge_and_tiny_directions_turn_the_part_as_unit_ones(write_spec, case, s
     np.testing.assert_allclose(com, expected_com, rtol=1e-12, atol=1e-14)
 
 
-@pytest.mark.parametrize("text, words", [
-    ("- {shape: sphere, density: 1000, radius: 1.0e+200, center: [0, 0, 0]}", ("parts[0]", "too large")),
-    ("- {shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1.0e+308, iyy: 1.0e+308, izz: 1.0e+308}}",
-     ("parts[0]", "too large")),
-    ("- {shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1, iyy: 1, izz: 1}, about: [1.0e+200, 0, 0]}",
-     ("parts[0]", "too large")),
-    ("- {shape: box, density: 1.0e+300, size: [1.0e+10, 1.0e+10, 1.0e+10], center: [0, 0, 0]}", ("parts[0]", "too large")),
-])
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        ("- {shape: sphere, density: 1000, radius: 1.0e+200, center: [0, 0, 0]}", ("parts[0]", "too large")),
+        (
+            "- {shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1.0e+308, iyy: 1.0e+308, izz: 1.0e+308}}",
+            ("parts[0]", "too large"),
+        ),
+        (
+            "- {shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1, iyy: 1, izz: 1}, about: [1.0e+200, 0, 0]}",
+            ("parts[0]", "too large"),
+        ),
+        (
+            "- {shape: box, density: 1.0e+300, size: [1.0e+10, 1.0e+10, 1.0e+10], center: [0, 0, 0]}",
+            ("parts[0]", "too large"),
+        ),
+    ],
+)
 def test_overflowing_parts_are_one_line_exit_2(write_spec, text, words):
     proc = run_rbi_inprocess("inertia", write_spec("parts:\n  " + text + "\n"))
     one_line_exit_2(proc, *words)
-    assert "pydantic" not in proc.stderr and "Error:" not in proc.stderr and "internal error" not in proc.stderr
+    assert (
+        "pydantic" not in proc.stderr and "Error:" not in proc.stderr and "internal error" not in proc.stderr
+    )
 
 
 URDF = """<robot name="r"><link name="l"><inertial><origin xyz="0 0 0" rpy="{rpy}"/><mass value="1"/>
@@ -127,11 +152,14 @@ def test_robot_file_overflow_is_exit_2(tmp_path, rpy, inertia, command):
     assert "Error" not in proc.stderr.split(":", 1)[0] and "internal error" not in proc.stderr
 
 
-@pytest.mark.parametrize("args, words", [
-    (["--seed", "-1"], ("--seed",)),
-    (["--vary", "parts.bolt.position[0]=uniform(-1e308,1e308)"], ("--vary", "uniform")),
-    (["--vary", "parts.bolt.mass=normal(1,1e308)"], ()),
-])
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--seed", "-1"], ("--seed",)),
+        (["--vary", "parts.bolt.position[0]=uniform(-1e308,1e308)"], ("--vary", "uniform")),
+        (["--vary", "parts.bolt.mass=normal(1,1e308)"], ()),
+    ],
+)
 def test_sweep_draws_that_overflow_are_exit_2(bodies, args, words):
     base = ["sweep", bodies / "top_bolted.yaml", "--mass-properties", "--runs", "3"]
     if "--seed" in args:
@@ -142,20 +170,28 @@ def test_sweep_draws_that_overflow_are_exit_2(bodies, args, words):
 
 # --- cases found while hunting (hypothesis over huge and tiny finite numbers for each shape) ---
 
+
 def test_frustum_with_tiny_radii_is_a_thin_cylinder(write_spec):
     """Found: radii near 1e-160 made a² + ab + b² underflow to 0 and the frustum divided by
     zero (internal error, exit 1). Equal radii are a cylinder: axial ½ m r², transverse
     m (3r² + h²)/12."""
-    inertia, com = _inertia(write_spec, "parts:\n  - {shape: frustum, mass: 2, start_radius: 1.0e-160, "
-                                        "end_radius: 1.0e-160, start: [0, 0, 0], end: [0, 0, 3]}\n")
-    np.testing.assert_allclose(np.diag(inertia), [2 * 9 / 12, 2 * 9 / 12, 0.5 * 2 * 1e-320], rtol=1e-3, atol=0)
+    inertia, com = _inertia(
+        write_spec,
+        "parts:\n  - {shape: frustum, mass: 2, start_radius: 1.0e-160, "
+        "end_radius: 1.0e-160, start: [0, 0, 0], end: [0, 0, 3]}\n",
+    )
+    np.testing.assert_allclose(
+        np.diag(inertia), [2 * 9 / 12, 2 * 9 / 12, 0.5 * 2 * 1e-320], rtol=1e-3, atol=0
+    )
     np.testing.assert_allclose(com, [0, 0, 1.5])
 
 
 def test_subnormal_inertia_prints_its_value_not_inf(write_spec):
     """Found: a table scaled by 10**-324 (= 0) printed inf and nan for an inertia of 1e-323."""
-    proc = run_rbi_inprocess("inertia", write_spec("parts:\n  - {shape: sphere, density: 5.0e-324, radius: 1, "
-                                                   "center: [0, 0, 0]}\n"))
+    proc = run_rbi_inprocess(
+        "inertia",
+        write_spec("parts:\n  - {shape: sphere, density: 5.0e-324, radius: 1, center: [0, 0, 0]}\n"),
+    )
     assert proc.returncode == 0 and "inf" not in proc.stdout and "nan" not in proc.stdout, proc.stdout
 
 
@@ -175,15 +211,24 @@ SHAPE_TEMPLATES = {
     "capsule": "{{shape: capsule, {md}, radius: {r}, start: [0, 0, {p}], end: [{s}, 0, 0]}}",
     "custom": "{{shape: custom, mass: {m}, center_of_mass: [{p}, 0, 0], inertia: {{ixx: {r}, iyy: {r}, izz: {s}}}}}",
 }
-extreme = st.sampled_from(["5.0e-324", "1.0e-300", "1.0e-160", "1", "1.0e+154", "1.0e+160", "1.0e+200",
-                           "1.0e+300", "1.7e+308"])
+extreme = st.sampled_from(
+    ["5.0e-324", "1.0e-300", "1.0e-160", "1", "1.0e+154", "1.0e+160", "1.0e+200", "1.0e+300", "1.7e+308"]
+)
 
 
-@given(st.sampled_from(sorted(SHAPE_TEMPLATES)), extreme, extreme, extreme, extreme, st.booleans(),
-       st.sampled_from(["inertia", "principal", "check"]))
+@given(
+    st.sampled_from(sorted(SHAPE_TEMPLATES)),
+    extreme,
+    extreme,
+    extreme,
+    extreme,
+    st.booleans(),
+    st.sampled_from(["inertia", "principal", "check"]),
+)
 @settings(max_examples=120, deadline=None)
-def test_any_finite_numbers_give_an_answer_or_one_line_exit_2(tmp_path_factory, shape, m, p, r, s, by_density,
-                                                            command):
+def test_any_finite_numbers_give_an_answer_or_one_line_exit_2(
+    tmp_path_factory, shape, m, p, r, s, by_density, command
+):
     md = f"density: {m}" if by_density else f"mass: {m}"
     text = "parts:\n  - " + SHAPE_TEMPLATES[shape].format(m=m, p=p, r=r, s=s, md=md) + "\n"
     path = tmp_path_factory.mktemp("spec") / "body.yaml"
@@ -203,11 +248,15 @@ def test_mjcf_quaternion_of_any_size_turns_the_inertial_frame(tmp_path):
     results = []
     for quat in ("1 0 0 1", "1e200 0 0 1e200", "1e-200 0 0 1e-200"):
         path = tmp_path / "robot.xml"
-        path.write_text(f'<mujoco><worldbody><body name="b"><inertial pos="0 0 0" quat="{quat}" mass="1" '
-                        f'diaginertia="1 2 3"/></body></worldbody></mujoco>')
+        path.write_text(
+            f'<mujoco><worldbody><body name="b"><inertial pos="0 0 0" quat="{quat}" mass="1" '
+            f'diaginertia="1 2 3"/></body></worldbody></mujoco>'
+        )
         proc = run_rbi_inprocess("import", path, "--format", "json")
         assert proc.returncode == 0, proc.stderr
         results.append(np.array(json.loads(proc.stdout)["links"][0]["inertia"]))
-    np.testing.assert_allclose(results[0], np.diag([2.0, 1.0, 3.0]), atol=1e-15)  # x and y swapped by the turn
+    np.testing.assert_allclose(
+        results[0], np.diag([2.0, 1.0, 3.0]), atol=1e-15
+    )  # x and y swapped by the turn
     for other in results[1:]:
         np.testing.assert_allclose(other, results[0], atol=1e-15)

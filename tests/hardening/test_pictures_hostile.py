@@ -12,7 +12,6 @@ from __future__ import annotations
 import json
 import time
 
-import numpy as np
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
@@ -22,16 +21,41 @@ from tests.conftest import run_rbi_inprocess
 
 pytest.importorskip("matplotlib")
 
-BAD_MATH = ["$\\frac{$", "$x^$", "a $\\alpha$ b", "$", "$$", "\\$", "cost $5 and $6", "$\\mathrm{", "$\\left($"]
+BAD_MATH = [
+    "$\\frac{$",
+    "$x^$",
+    "a $\\alpha$ b",
+    "$",
+    "$$",
+    "\\$",
+    "cost $5 and $6",
+    "$\\mathrm{",
+    "$\\left($",
+]
 
 
 def spec(name: str, part: str) -> str:
     """A top of two parts, written by PyYAML (which escapes any name correctly)."""
     import yaml
 
-    return yaml.safe_dump({"name": name, "pivot": [0, 0, 0], "parts": [
-        {"name": part, "shape": "cylinder", "mass": 1, "radius": 0.05, "start": [0, 0, 0], "end": [0, 0, 0.2]},
-        {"name": part + "2", "shape": "point", "mass": 0.1, "position": [0.05, 0, 0.2]}]}, allow_unicode=False)
+    return yaml.safe_dump(
+        {
+            "name": name,
+            "pivot": [0, 0, 0],
+            "parts": [
+                {
+                    "name": part,
+                    "shape": "cylinder",
+                    "mass": 1,
+                    "radius": 0.05,
+                    "start": [0, 0, 0],
+                    "end": [0, 0, 0.2],
+                },
+                {"name": part + "2", "shape": "point", "mass": 0.1, "position": [0.05, 0, 0.2]},
+            ],
+        },
+        allow_unicode=False,
+    )
 
 
 def svg_text(path) -> str:
@@ -50,9 +74,10 @@ def test_show_draws_dollar_names_as_written(write_spec, tmp_path, name):
 
 @pytest.mark.parametrize("fmt", ["png", "svg"])
 def test_show_with_every_bad_name_at_once(write_spec, tmp_path, fmt):
-    text = "name: \"$\\\\frac{$\"\nparts:\n" + "".join(
+    text = 'name: "$\\\\frac{$"\nparts:\n' + "".join(
         f"  - {{name: {json.dumps(n + str(i))}, shape: point, mass: 1, position: [{i}, 0, 0]}}\n"
-        for i, n in enumerate(BAD_MATH))
+        for i, n in enumerate(BAD_MATH)
+    )
     out = tmp_path / f"body.{fmt}"
     proc = run_rbi_inprocess("show", write_spec(text, "$x^$.yaml"), "--out", out)
     assert proc.returncode == 0, proc.stderr
@@ -61,20 +86,32 @@ def test_show_with_every_bad_name_at_once(write_spec, tmp_path, fmt):
 
 def test_simulate_plot_and_sweep_plot_with_dollar_names(write_spec, tmp_path):
     path = write_spec(spec("$\\frac{$", "$x^$"), "$\\frac{$.yaml")
-    proc = run_rbi_inprocess("simulate", path, "--spin", "30", "--tilt", "5", "--duration", "0.2",
-                             "--plot", tmp_path / "run.png")
+    proc = run_rbi_inprocess(
+        "simulate", path, "--spin", "30", "--tilt", "5", "--duration", "0.2", "--plot", tmp_path / "run.png"
+    )
     assert proc.returncode == 0, proc.stderr
-    proc = run_rbi_inprocess("sweep", path, "--spin", "10:30:2", "--duration", "0.2", "--plot", tmp_path / "map.png")
+    proc = run_rbi_inprocess(
+        "sweep", path, "--spin", "10:30:2", "--duration", "0.2", "--plot", tmp_path / "map.png"
+    )
     assert proc.returncode == 0, proc.stderr
-    proc = run_rbi_inprocess("sweep", path, "--mass-properties", "--vary", "parts.$x^$2.mass=0.1:0.2:3",
-                             "--plot", tmp_path / "vary.svg")
+    proc = run_rbi_inprocess(
+        "sweep",
+        path,
+        "--mass-properties",
+        "--vary",
+        "parts.$x^$2.mass=0.1:0.2:3",
+        "--plot",
+        tmp_path / "vary.svg",
+    )
     assert proc.returncode in (0, 2), proc.stderr  # the path may not resolve; it must not crash
 
 
 def test_gif_with_a_dollar_name(write_spec, tmp_path):
     path = write_spec(spec("$\\frac{$", "$x^$"))
     out = tmp_path / "top.gif"
-    proc = run_rbi_inprocess("animate", path, "--spin", "30", "--duration", "0.12", "--fps", "10", "--out", out)
+    proc = run_rbi_inprocess(
+        "animate", path, "--spin", "30", "--duration", "0.12", "--fps", "10", "--out", out
+    )
     assert proc.returncode == 0, proc.stderr
     assert out.stat().st_size > 1000
 
@@ -119,9 +156,18 @@ def test_show_draws_any_names(tmp_path, name, parts):
     import yaml
 
     path = tmp_path / "body.yaml"
-    path.write_text(yaml.safe_dump({"name": name, "parts": [
-        {"name": part, "shape": "point", "mass": 1, "position": [i, 0, 0]} for i, part in enumerate(parts)]}),
-        encoding="utf-8")
+    path.write_text(
+        yaml.safe_dump(
+            {
+                "name": name,
+                "parts": [
+                    {"name": part, "shape": "point", "mass": 1, "position": [i, 0, 0]}
+                    for i, part in enumerate(parts)
+                ],
+            }
+        ),
+        encoding="utf-8",
+    )
     out = tmp_path / "body.svg"
     proc = run_rbi_inprocess("show", path, "--out", out)
     assert proc.returncode == 0 and proc.stderr == "", (name, parts, proc.stderr)
@@ -149,13 +195,16 @@ def test_names_that_look_like_markup_are_text_on_the_page(write_spec, tmp_path):
     assert "<img" not in page.split("<script>")[0]  # the head and heading hold no raw name
 
 
-@pytest.mark.parametrize("part", [
-    "{shape: sphere, mass: 1, radius: 1.0e-300, center: [0, 0, 0]}",
-    "{shape: box, mass: 1, size: [1.0e-300, 1, 1], center: [0, 0, 0]}",
-    "{shape: sphere, mass: 1, radius: 1.0e+100, center: [0, 0, 0]}",
-    "{shape: torus, mass: 1, major_radius: 1.0e+150, minor_radius: 1.0e+150, center: [0, 0, 0], axis: [0, 0, 1.0e+300]}",
-    "{shape: point, mass: 1, position: [1.0e+17, 0, 0]}",
-])
+@pytest.mark.parametrize(
+    "part",
+    [
+        "{shape: sphere, mass: 1, radius: 1.0e-300, center: [0, 0, 0]}",
+        "{shape: box, mass: 1, size: [1.0e-300, 1, 1], center: [0, 0, 0]}",
+        "{shape: sphere, mass: 1, radius: 1.0e+100, center: [0, 0, 0]}",
+        "{shape: torus, mass: 1, major_radius: 1.0e+150, minor_radius: 1.0e+150, center: [0, 0, 0], axis: [0, 0, 1.0e+300]}",
+        "{shape: point, mass: 1, position: [1.0e+17, 0, 0]}",
+    ],
+)
 @pytest.mark.parametrize("fmt", ["png", "html"])
 def test_bodies_of_extreme_size_are_drawn(write_spec, tmp_path, part, fmt):
     text = f"parts:\n  - {part}\n  - {{shape: point, mass: 1, position: [0, 0, 1]}}\n"
@@ -169,5 +218,10 @@ def test_an_svg_stays_well_formed_xml_whatever_the_names(write_spec, tmp_path):
     import xml.etree.ElementTree as ET
 
     out = tmp_path / "body.svg"
-    assert run_rbi_inprocess("show", write_spec(spec("t-->x<y&z]]>", "a-->b<!--c&d\x85\u2028")), "--out", out).returncode == 0
+    assert (
+        run_rbi_inprocess(
+            "show", write_spec(spec("t-->x<y&z]]>", "a-->b<!--c&d\x85\u2028")), "--out", out
+        ).returncode
+        == 0
+    )
     ET.parse(out)  # raises on a comment or text a name broke

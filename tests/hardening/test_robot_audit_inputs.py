@@ -14,8 +14,10 @@ from hypothesis import strategies as st
 
 from tests.conftest import one_line_exit_2, run_rbi_inprocess
 
-BOX = ('<inertial><mass value="2"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
-       '<collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision>')
+BOX = (
+    '<inertial><mass value="2"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
+    '<collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision>'
+)
 
 
 def with_mesh(uri: str) -> str:
@@ -40,8 +42,15 @@ def test_mjcf_includes_that_loop_or_leave_the_folder_are_exit_2(tmp_path, target
     assert "root:" not in proc.stderr
 
 
-@pytest.mark.parametrize("uri", ["package://pkg/../../secret.stl", "file:///etc/passwd", "../secret.stl",
-                                 "package://pkg/meshes/../../../secret.stl"])
+@pytest.mark.parametrize(
+    "uri",
+    [
+        "package://pkg/../../secret.stl",
+        "file:///etc/passwd",
+        "../secret.stl",
+        "package://pkg/meshes/../../../secret.stl",
+    ],
+)
 def test_mesh_paths_do_not_leave_the_folders_they_are_given(tmp_path, uri):
     (tmp_path / "secret.stl").write_text("solid x\nendsolid x\n")
     package = tmp_path / "ws" / "pkg"
@@ -56,32 +65,53 @@ def test_mesh_paths_do_not_leave_the_folders_they_are_given(tmp_path, uri):
 
 def test_a_fifo_where_a_mesh_should_be_is_refused_at_once(tmp_path):
     os.mkfifo(tmp_path / "mesh.stl")
-    one_line_exit_2(run_rbi_inprocess("audit", write(tmp_path, "r.urdf", with_mesh("mesh.stl"))), "not a regular file")
+    one_line_exit_2(
+        run_rbi_inprocess("audit", write(tmp_path, "r.urdf", with_mesh("mesh.stl"))), "not a regular file"
+    )
 
 
-@pytest.mark.parametrize("inertia, size", [("1e308", "0.2 0.1 0.05"), ("1", "1e200 1e200 1e200"),
-                                           ("1e-300", "1e-120 1e-120 1e-120")])
+@pytest.mark.parametrize(
+    "inertia, size",
+    [("1e308", "0.2 0.1 0.05"), ("1", "1e200 1e200 1e200"), ("1e-300", "1e-120 1e-120 1e-120")],
+)
 def test_extreme_numbers_are_a_result_or_one_line(tmp_path, inertia, size):
-    text = (f'<robot name="r"><link name="a"><inertial><mass value="2"/><inertia ixx="{inertia}" ixy="0" ixz="0" '
-            f'iyy="{inertia}" iyz="0" izz="{inertia}"/></inertial><collision><geometry><box size="{size}"/>'
-            '</geometry></collision></link></robot>')
+    text = (
+        f'<robot name="r"><link name="a"><inertial><mass value="2"/><inertia ixx="{inertia}" ixy="0" ixz="0" '
+        f'iyy="{inertia}" iyz="0" izz="{inertia}"/></inertial><collision><geometry><box size="{size}"/>'
+        "</geometry></collision></link></robot>"
+    )
     proc = run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text), "--format", "json")
-    assert proc.returncode in (0, 1, 2) and "Traceback" not in proc.stderr and "internal error" not in proc.stderr
+    assert (
+        proc.returncode in (0, 1, 2)
+        and "Traceback" not in proc.stderr
+        and "internal error" not in proc.stderr
+    )
     if proc.returncode == 2:
         assert len(proc.stderr.strip().splitlines()) == 1
 
 
 def test_a_chain_of_450_bodies_is_read(tmp_path):
     depth = 450
-    text = ("<mujoco><worldbody>" + '<body pos="0 0 0.1"><joint/><geom size="0.01"/>' * depth
-            + "</body>" * depth + "</worldbody></mujoco>")
+    text = (
+        "<mujoco><worldbody>"
+        + '<body pos="0 0 0.1"><joint/><geom size="0.01"/>' * depth
+        + "</body>" * depth
+        + "</worldbody></mujoco>"
+    )
     proc = run_rbi_inprocess("audit", write(tmp_path, "chain.xml", text), "--format", "json")
     assert proc.returncode == 0, proc.stderr
     assert len(json.loads(proc.stdout)["links"]) == depth
 
 
-names = st.text(st.characters(blacklist_categories=("Cs",), blacklist_characters="\ufffe\uffff"), min_size=1,
-                max_size=30).map(lambda s: "".join(c for c in s if c in "\t\n\r" or ord(c) >= 0x20)).filter(str.strip)
+names = (
+    st.text(
+        st.characters(blacklist_categories=("Cs",), blacklist_characters="\ufffe\uffff"),
+        min_size=1,
+        max_size=30,
+    )
+    .map(lambda s: "".join(c for c in s if c in "\t\n\r" or ord(c) >= 0x20))
+    .filter(str.strip)
+)
 
 
 @given(st.lists(names, min_size=1, max_size=3, unique=True))
@@ -89,8 +119,10 @@ names = st.text(st.characters(blacklist_categories=("Cs",), blacklist_characters
 def test_any_link_names_give_a_fixed_copy_that_is_xml_and_a_safe_terminal(tmp_path, link_names):
     from xml.sax.saxutils import quoteattr
 
-    links = "".join(f"<link name={quoteattr(n, {chr(10): '&#10;', chr(13): '&#13;', chr(9): '&#9;'})}>{BOX}</link>"
-                    for n in link_names)
+    links = "".join(
+        f"<link name={quoteattr(n, {chr(10): '&#10;', chr(13): '&#13;', chr(9): '&#9;'})}>{BOX}</link>"
+        for n in link_names
+    )
     path = write(tmp_path, "r.urdf", f'<robot name="r">{links}</robot>')
     out = tmp_path / "fixed.urdf"
     if out.exists():

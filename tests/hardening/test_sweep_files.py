@@ -20,11 +20,13 @@ import time
 from pathlib import Path
 
 import pytest
-from hypothesis import HealthCheck, given, settings, strategies as st
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 
 from rbi.files import safe
 from rbi.sweep import store
-from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 
 BOLTED = BODIES / "top_bolted.yaml"
 ARGS = [BOLTED, "--spin", "150:250:24", "--duration", "0.1", "--workers", "1"]
@@ -122,6 +124,7 @@ def refused_unchanged(out: Path, *words, resume=True, args=ARGS):
 
 # --- item 1: sidecars, partial files and locks are never followed, read or planted ----------
 
+
 def test_a_planted_link_at_the_old_fixed_temporary_names_writes_nothing_outside(tmp_path):
     """rbi 2 wrote its settings through `.X.rbi-sweep.json.tmp` and Parquet rows through
     `.X.rbi-partial`: a link planted there made it create or overwrite a file outside."""
@@ -166,8 +169,12 @@ def test_a_fifo_sidecar_does_not_hang_resume_in_a_real_process(tmp_path):
     out.write_text("run\n")
     os.mkfifo(store.settings_path(out))
     started = time.monotonic()
-    proc = subprocess.run([sys.executable, "-m", "rbi", "sweep", *map(str, ARGS), "--out", str(out), "--resume"],
-                          capture_output=True, text=True, timeout=30)
+    proc = subprocess.run(
+        [sys.executable, "-m", "rbi", "sweep", *map(str, ARGS), "--out", str(out), "--resume"],
+        capture_output=True,
+        text=True,
+        timeout=30,
+    )
     one_line_exit_2(proc, "FIFO")
     assert time.monotonic() - started < 10
 
@@ -240,8 +247,9 @@ def test_something_planted_at_the_rows_folder_is_exit_2_and_nothing_is_written_t
     assert list(elsewhere.iterdir()) == []
 
 
-legal_names = st.text(st.characters(blacklist_categories=("Cs",), blacklist_characters="/\0"), min_size=1) \
-    .filter(lambda n: n not in (".", "..") and len(n.encode()) <= 255)
+legal_names = st.text(
+    st.characters(blacklist_categories=("Cs",), blacklist_characters="/\0"), min_size=1
+).filter(lambda n: n not in (".", "..") and len(n.encode()) <= 255)
 
 
 @settings(max_examples=300, deadline=None, derandomize=True, database=None)
@@ -273,6 +281,7 @@ def test_a_sweep_into_a_255_byte_name_keeps_sidecars_and_resumes(tmp_path, monke
 
 # --- item 2: --resume accepts only this sweep's own rows, and changes nothing otherwise -------
 
+
 def _edit_row(out: Path, index: int, column: str, value: str) -> None:
     rows = rows_of(out)
     rows[index + 1][rows[0].index(column)] = value
@@ -281,10 +290,25 @@ def _edit_row(out: Path, index: int, column: str, value: str) -> None:
 
 
 HOSTILE_EDITS = [
-    ("max_tilt_deg", "inf"), ("max_tilt_deg", "-inf"), ("max_tilt_deg", "nan"), ("energy_drift", "1e400"),
-    ("max_tilt_deg", "1_0.5"), ("max_tilt_deg", " 1.5"), ("max_tilt_deg", "0x10"), ("max_tilt_deg", "500.0"),
-    ("max_tilt_deg", ""), ("spin", "150.5"), ("spin", "inf"), ("run", "3"), ("run", "-1"), ("run", "1.0"),
-    ("steps", "-5"), ("steps", "3.0"), ("steps", "１２"), ("status", ""), ("status", "=HYPERLINK(\"x\")"),
+    ("max_tilt_deg", "inf"),
+    ("max_tilt_deg", "-inf"),
+    ("max_tilt_deg", "nan"),
+    ("energy_drift", "1e400"),
+    ("max_tilt_deg", "1_0.5"),
+    ("max_tilt_deg", " 1.5"),
+    ("max_tilt_deg", "0x10"),
+    ("max_tilt_deg", "500.0"),
+    ("max_tilt_deg", ""),
+    ("spin", "150.5"),
+    ("spin", "inf"),
+    ("run", "3"),
+    ("run", "-1"),
+    ("run", "1.0"),
+    ("steps", "-5"),
+    ("steps", "3.0"),
+    ("steps", "１２"),
+    ("status", ""),
+    ("status", '=HYPERLINK("x")'),
 ]
 
 
@@ -301,7 +325,9 @@ def test_a_foreign_csv_is_refused_byte_identical_without_cutting_its_last_line(i
 
 def test_more_rows_than_the_grid_are_refused(interrupted, reference):
     """rbi 2 accepted them and reported "-100 failed"."""
-    extra = reference.read_bytes() + reference.read_bytes().splitlines(keepends=True)[-1].replace(b"23,", b"24,", 1)
+    extra = reference.read_bytes() + reference.read_bytes().splitlines(keepends=True)[-1].replace(
+        b"23,", b"24,", 1
+    )
     interrupted.write_bytes(extra)
     refused_unchanged(interrupted, "more rows")
 
@@ -328,9 +354,14 @@ def test_a_damaged_rows_file_is_refused(interrupted, change):
     refused_unchanged(interrupted, "cannot resume")
 
 
-@settings(max_examples=40, deadline=None, derandomize=True, database=None,
-          suppress_health_check=[HealthCheck.function_scoped_fixture])
-@given(text=st.text(st.characters(blacklist_characters="\n\r\0,\""), max_size=12))
+@settings(
+    max_examples=40,
+    deadline=None,
+    derandomize=True,
+    database=None,
+    suppress_health_check=[HealthCheck.function_scoped_fixture],
+)
+@given(text=st.text(st.characters(blacklist_characters='\n\r\0,"'), max_size=12))
 def test_any_cell_spelling_the_sweep_never_writes_is_refused(interrupted, text):
     """A float cell is taken back only in the exact spelling rbi writes (shortest repr)."""
     try:
@@ -398,7 +429,9 @@ def test_a_tampered_parquet_chunk_is_refused_byte_identical(interrupted_parquet,
     refused_unchanged(interrupted_parquet, "cannot resume")
 
 
-def test_an_interrupted_parquet_sweep_resumes_to_the_rows_of_an_uninterrupted_one(interrupted_parquet, reference):
+def test_an_interrupted_parquet_sweep_resumes_to_the_rows_of_an_uninterrupted_one(
+    interrupted_parquet, reference
+):
     pq = pytest.importorskip("pyarrow.parquet")
     proc = rbi("sweep", *ARGS, "--out", interrupted_parquet, "--resume")
     assert proc.returncode == 0, proc.stderr
@@ -406,8 +439,10 @@ def test_an_interrupted_parquet_sweep_resumes_to_the_rows_of_an_uninterrupted_on
     want = rows_of(reference)
     assert len(got) == RUNS and [r["run"] for r in got] == list(range(RUNS))
     for row, line in zip(got, want[1:]):
-        assert ["" if row[c] is None else repr(row[c]) if isinstance(row[c], float) else str(row[c])
-                for c in want[0]] == line
+        assert [
+            "" if row[c] is None else repr(row[c]) if isinstance(row[c], float) else str(row[c])
+            for c in want[0]
+        ] == line
     assert sorted(os.listdir(interrupted_parquet.parent)) == ["part.parquet"]
 
 
@@ -466,6 +501,7 @@ def test_an_existing_parquet_output_stays_until_the_new_sweep_completes(tmp_path
 
 # --- item 2: a full disk keeps every finished row, for --resume ---------------------------------
 
+
 def test_a_full_disk_mid_sweep_is_one_line_and_keeps_whole_chunks(tmp_path, monkeypatch, reference):
     """ENOSPC in the middle of a write (fault injection): the chunk being written is cut back,
     the rows before it stay, --resume completes the sweep exactly."""
@@ -496,8 +532,12 @@ def small_disk(tmp_path):
         pytest.skip("needs root to mount a small file system")
     mount = tmp_path / "disk"
     mount.mkdir()
-    if subprocess.run(["mount", "-t", "tmpfs", "-o", "size=48k", "tmpfs", str(mount)],
-                      capture_output=True).returncode != 0:
+    if (
+        subprocess.run(
+            ["mount", "-t", "tmpfs", "-o", "size=48k", "tmpfs", str(mount)], capture_output=True
+        ).returncode
+        != 0
+    ):
         pytest.skip("cannot mount a tmpfs here")
     try:
         yield mount, lambda: subprocess.run(["mount", "-o", "remount,size=4m", str(mount)], check=True)
@@ -549,8 +589,12 @@ def test_sigterm_exits_143_with_one_line_and_resume_completes_exactly(tmp_path, 
     import signal
 
     out = tmp_path / "s.csv"
-    proc = subprocess.Popen([sys.executable, "-c", SLOW_SWEEP, "sweep", *map(str, ARGS), "--out", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    proc = subprocess.Popen(
+        [sys.executable, "-c", SLOW_SWEEP, "sweep", *map(str, ARGS), "--out", str(out)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     try:
         deadline = time.monotonic() + 60
         while time.monotonic() < deadline and (not out.exists() or out.read_bytes().count(b"\n") < 5):

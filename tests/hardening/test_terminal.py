@@ -17,7 +17,8 @@ from pathlib import Path
 import pytest
 
 import rbi.cli.terminal  # noqa: F401  (registers the "rbi-ascii" codec error handler)
-from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 
 RBI_SCRIPT = Path(sys.executable).with_name("rbi")
 
@@ -32,15 +33,34 @@ HOSTILE = {
     "bidi override": "\u202eevil",
     "bidi isolate": "\u2066x\u2069",
 }
-RAW_CONTROLS = [chr(c) for c in range(32) if chr(c) != "\n"] + [chr(c) for c in range(127, 160)] + \
-               ["\u202e", "\u2066", "\u2069", "\u200f"]
+RAW_CONTROLS = (
+    [chr(c) for c in range(32) if chr(c) != "\n"]
+    + [chr(c) for c in range(127, 160)]
+    + ["\u202e", "\u2066", "\u2069", "\u200f"]
+)
 
 
 def _spec(tmp_path, body_name: str, part_name: str, mass: str = "1") -> Path:
     path = tmp_path / "hostile.yaml"
-    path.write_text(json.dumps({"name": body_name, "pivot": [0, 0, 0], "parts": [
-        {"name": part_name, "shape": "cylinder", "mass": float(mass), "radius": 0.02,
-         "start": [0, 0, 0], "end": [0, 0, 0.1]}], "expect": {"mass": {"value": 1.0, "tol": "1%"}}}))
+    path.write_text(
+        json.dumps(
+            {
+                "name": body_name,
+                "pivot": [0, 0, 0],
+                "parts": [
+                    {
+                        "name": part_name,
+                        "shape": "cylinder",
+                        "mass": float(mass),
+                        "radius": 0.02,
+                        "start": [0, 0, 0],
+                        "end": [0, 0, 0.1],
+                    }
+                ],
+                "expect": {"mass": {"value": 1.0, "tol": "1%"}},
+            }
+        )
+    )
     return path
 
 
@@ -88,7 +108,7 @@ def test_escaping_keeps_columns_aligned(tmp_path):
     assert any("p\\x1b[2Jq" in line for line in lines)
 
 
-@pytest.mark.parametrize("name", ["=HYPERLINK(\"http://x\",\"y\")", "+cmd", "-2+3", "@SUM(A1)", "\tx", "\rx"])
+@pytest.mark.parametrize("name", ['=HYPERLINK("http://x","y")', "+cmd", "-2+3", "@SUM(A1)", "\tx", "\rx"])
 def test_csv_cells_from_names_cannot_run_as_formulas(tmp_path, name):
     spec = _spec(tmp_path, name, name)
     proc = rbi("parts", spec, "--format", "csv")
@@ -110,6 +130,7 @@ def test_csv_numbers_and_plain_names_are_untouched(tmp_path):
 
 # --- terminals that cannot encode rbi's symbols ------------------------------------------------
 
+
 def _run_script(*args, env_extra=None):
     env = dict(os.environ, **(env_extra or {}))
     return subprocess.run([str(RBI_SCRIPT), *map(str, args)], capture_output=True, env=env, timeout=120)
@@ -122,8 +143,9 @@ def test_a_terminal_without_utf8_gets_ascii_spellings(encoding, tmp_path):
     assert table.returncode == 0, table.stderr
     text = table.stdout.decode(encoding)
     assert "kg*m^2" in text and "x10^-4" in text
-    simulate = _run_script("simulate", BODIES / "top.yaml", "--spin", "200", "--tilt", "5", "--duration", "0.1",
-                           env_extra=env)
+    simulate = _run_script(
+        "simulate", BODIES / "top.yaml", "--spin", "200", "--tilt", "5", "--duration", "0.1", env_extra=env
+    )
     assert simulate.returncode == 0, simulate.stderr
     assert "deg" in simulate.stdout.decode(encoding) and "omega" in simulate.stdout.decode(encoding)
     spec = _spec(tmp_path, "body", "ω² — part", mass="-1")
@@ -147,12 +169,32 @@ def test_c_locale_is_fine():
 
 # --- Ctrl-C ------------------------------------------------------------------------------------
 
+
 @pytest.mark.skipif(not RBI_SCRIPT.is_file(), reason="needs the installed rbi script")
 def test_ctrl_c_says_interrupted_exits_130_and_writes_nothing(tmp_path):
     out = tmp_path / "long.csv"
-    proc = subprocess.Popen([str(RBI_SCRIPT), "simulate", str(BODIES / "top.yaml"), "--spin", "200", "--tilt", "5",
-                             "--duration", "1000000", "--yes", "--max-steps", "1000000000000", "--out", str(out)],
-                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=tmp_path)
+    proc = subprocess.Popen(
+        [
+            str(RBI_SCRIPT),
+            "simulate",
+            str(BODIES / "top.yaml"),
+            "--spin",
+            "200",
+            "--tilt",
+            "5",
+            "--duration",
+            "1000000",
+            "--yes",
+            "--max-steps",
+            "1000000000000",
+            "--out",
+            str(out),
+        ],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        cwd=tmp_path,
+    )
     try:
         _wait_until_running(proc)
         proc.send_signal(signal.SIGINT)
@@ -185,8 +227,21 @@ def _wait_until_running(proc) -> None:
 def test_warnings_name_parts_escaped(tmp_path):
     """rbi parts warns about an implausible density naming the part: escaped like errors."""
     path = tmp_path / "light.yaml"
-    path.write_text(json.dumps({"parts": [{"name": "ball\x1b]0;t\x07", "shape": "sphere", "mass": 1e-6,
-                                           "radius": 1, "center": [0, 0, 0]}]}))
+    path.write_text(
+        json.dumps(
+            {
+                "parts": [
+                    {
+                        "name": "ball\x1b]0;t\x07",
+                        "shape": "sphere",
+                        "mass": 1e-6,
+                        "radius": 1,
+                        "center": [0, 0, 0],
+                    }
+                ]
+            }
+        )
+    )
     proc = rbi("parts", path)
     assert proc.returncode == 0 and "warning" in proc.stderr, proc.stderr
     assert "ball\\x1b]0;t\\x07" in proc.stderr

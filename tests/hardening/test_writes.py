@@ -18,7 +18,8 @@ import pytest
 
 from rbi.cli.output import output_target
 from rbi.spec.errors import InputError
-from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess as rbi
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 from tests.hardening.users import as_ordinary_user
 
 TOP = BODIES / "top.yaml"
@@ -48,8 +49,9 @@ def test_sigterm_during_the_write_leaves_no_temporary_file(tmp_path):
         sys.argv = ["rbi", "slow"]
         app.main()
     """)
-    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
-                            text=True)
+    proc = subprocess.Popen(
+        [sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )
     assert proc.stdout.readline().strip() == "writing", proc.stderr.read()
     assert any(p.name.startswith(".rbi-") for p in tmp_path.iterdir())  # mid-write indeed
     proc.send_signal(signal.SIGTERM)
@@ -79,8 +81,26 @@ def test_a_non_root_user_streams_to_standard_output(out):
     folder = tempfile.mkdtemp(prefix="rbi-nobody-")
     try:
         os.chmod(folder, 0o755)  # nobody may enter, not write
-        proc = subprocess.run([*as_ordinary_user(), str(script), "simulate", str(TOP), "--spin", "200", "--duration", "0.1",
-                               "--samples", "3", "--out", out], capture_output=True, text=True, cwd=folder, timeout=120)
+        proc = subprocess.run(
+            [
+                *as_ordinary_user(),
+                str(script),
+                "simulate",
+                str(TOP),
+                "--spin",
+                "200",
+                "--duration",
+                "0.1",
+                "--samples",
+                "3",
+                "--out",
+                out,
+            ],
+            capture_output=True,
+            text=True,
+            cwd=folder,
+            timeout=120,
+        )
         assert proc.returncode == 0, proc.stderr
         assert proc.stdout.startswith("t,qw,qx,qy,qz,wx,wy,wz") and len(proc.stdout.splitlines()) == 4
         assert os.listdir(folder) == []
@@ -121,10 +141,15 @@ def test_a_full_disk_is_one_line_exit_2_and_nothing_is_left(tmp_path, monkeypatc
     assert list(tmp_path.iterdir()) == []
 
 
-@pytest.mark.parametrize("path,words", [("", ["--out", "empty"]),
-                                        ("y" * 300 + ".csv", ["--out", "longer than 255"]),
-                                        ("/sys/x.csv", ["--out", "/sys/x.csv"]),
-                                        ("/nonexistent-folder/x.csv", ["does not exist"])])
+@pytest.mark.parametrize(
+    "path,words",
+    [
+        ("", ["--out", "empty"]),
+        ("y" * 300 + ".csv", ["--out", "longer than 255"]),
+        ("/sys/x.csv", ["--out", "/sys/x.csv"]),
+        ("/nonexistent-folder/x.csv", ["does not exist"]),
+    ],
+)
 def test_paths_the_file_system_refuses_are_exit_2_before_the_run(path, words):
     # --duration 1e9 would be refused by the step budget: the path is checked before it
     proc = rbi("simulate", TOP, "--spin", "200", "--duration", "100", "--out", path)

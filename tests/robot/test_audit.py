@@ -26,21 +26,29 @@ def box_inertia(m, a, b, c):
 
 def urdf_link(name, mass, I, size="0.2 0.1 0.05", xyz="0 0 0", extra=""):
     ixx, iyy, izz = I
-    return (f'  <link name="{name}">\n    <inertial>\n      <origin xyz="{xyz}"/>\n      <mass value="{mass}"/>\n'
-            f'      <inertia ixx="{ixx}" ixy="0" ixz="0" iyy="{iyy}" iyz="0" izz="{izz}"/>\n    </inertial>\n'
-            f'    <collision><geometry><box size="{size}"/></geometry></collision>{extra}\n  </link>\n')
+    return (
+        f'  <link name="{name}">\n    <inertial>\n      <origin xyz="{xyz}"/>\n      <mass value="{mass}"/>\n'
+        f'      <inertia ixx="{ixx}" ixy="0" ixz="0" iyy="{iyy}" iyz="0" izz="{izz}"/>\n    </inertial>\n'
+        f'    <collision><geometry><box size="{size}"/></geometry></collision>{extra}\n  </link>\n'
+    )
 
 
 def joint(name, parent, child, kind="revolute", xyz="0 0 0", axis="0 0 1"):
-    return (f'  <joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
-            f'<origin xyz="{xyz}"/><axis xyz="{axis}"/></joint>\n')
+    return (
+        f'  <joint name="{name}" type="{kind}"><parent link="{parent}"/><child link="{child}"/>'
+        f'<origin xyz="{xyz}"/><axis xyz="{axis}"/></joint>\n'
+    )
 
 
 GOOD = np.diag(box_inertia(2.0, 0.2, 0.1, 0.05))
 
 
 def robot(*pieces):
-    return '<?xml version="1.0"?>\n<!-- made for the tests -->\n<robot name="r">\n' + "".join(pieces) + "</robot>\n"
+    return (
+        '<?xml version="1.0"?>\n<!-- made for the tests -->\n<robot name="r">\n'
+        + "".join(pieces)
+        + "</robot>\n"
+    )
 
 
 def audit_json(path, *args):
@@ -50,28 +58,34 @@ def audit_json(path, *args):
 
 # --- flags ---------------------------------------------------------------------------------------
 
+
 def test_a_link_that_matches_its_box_has_no_flag_and_exit_0(tmp_path):
     path = write(tmp_path, "r.urdf", robot(urdf_link("base", 2.0, GOOD)))
     proc, result = audit_json(path)
     assert proc.returncode == 0, proc.stderr
-    link, = result["links"]
+    (link,) = result["links"]
     assert link["flags"] == []
     assert link["geometry"]["volume"] == pytest.approx(0.2 * 0.1 * 0.05, rel=1e-15)
     assert link["geometry"]["implied_density"] == pytest.approx(2.0 / 0.001, rel=1e-12)
-    assert np.allclose(link["geometry"]["inertia_about_com"], box_inertia(2.0, 0.2, 0.1, 0.05), rtol=1e-14, atol=0)
+    assert np.allclose(
+        link["geometry"]["inertia_about_com"], box_inertia(2.0, 0.2, 0.1, 0.05), rtol=1e-14, atol=0
+    )
     assert set(result) >= {"file", "robot", "units", "links", "total"}
     assert set(link) >= {"name", "declared", "geometry", "flags"}
     assert set(link["declared"]) == {"mass", "center_of_mass", "inertia_about_com", "moments"}
 
 
-@pytest.mark.parametrize("I, code, level", [
-    ((1, 1, 1), "placeholder", "error"),            # identity: 1 kg·m² on a 20 cm box of 2 kg
-    ((0.001, 0.001, 0.001), "placeholder", "warning"),  # within 10× of the box, but three equal moments
-    (tuple(20 * GOOD), "mismatch", "error"),        # 20× the geometry's
-    (tuple(3 * GOOD), "mismatch", "warning"),       # 3×
-    ((GOOD[0], GOOD[1], 3 * (GOOD[0] + GOOD[1])), "unphysical", "error"),  # triangle inequality
-    ((-GOOD[0], GOOD[1], GOOD[2]), "unphysical", "error"),  # a negative moment
-])
+@pytest.mark.parametrize(
+    "I, code, level",
+    [
+        ((1, 1, 1), "placeholder", "error"),  # identity: 1 kg·m² on a 20 cm box of 2 kg
+        ((0.001, 0.001, 0.001), "placeholder", "warning"),  # within 10× of the box, but three equal moments
+        (tuple(20 * GOOD), "mismatch", "error"),  # 20× the geometry's
+        (tuple(3 * GOOD), "mismatch", "warning"),  # 3×
+        ((GOOD[0], GOOD[1], 3 * (GOOD[0] + GOOD[1])), "unphysical", "error"),  # triangle inequality
+        ((-GOOD[0], GOOD[1], GOOD[2]), "unphysical", "error"),  # a negative moment
+    ],
+)
 def test_each_flag_with_its_level(tmp_path, I, code, level):
     path = write(tmp_path, "r.urdf", robot(urdf_link("base", 2.0, I)))
     proc, result = audit_json(path)
@@ -95,23 +109,38 @@ def test_com_outside_the_geometry_is_a_mismatch_warning(tmp_path):
 
 
 def test_massless_links_root_and_fixed_are_legal_moving_ones_are_flagged(tmp_path):
-    text = robot('  <link name="world"/>\n',
-                 '  <link name="bracket"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>\n',
-                 '  <link name="idler"/>\n',
-                 urdf_link("arm", 2.0, GOOD),
-                 '  <link name="tip"/>\n',
-                 joint("fix", "world", "bracket", "fixed"), joint("j1", "bracket", "idler"),
-                 joint("j2", "idler", "arm"), joint("j3", "arm", "tip"))
+    text = robot(
+        '  <link name="world"/>\n',
+        '  <link name="bracket"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>\n',
+        '  <link name="idler"/>\n',
+        urdf_link("arm", 2.0, GOOD),
+        '  <link name="tip"/>\n',
+        joint("fix", "world", "bracket", "fixed"),
+        joint("j1", "bracket", "idler"),
+        joint("j2", "idler", "arm"),
+        joint("j3", "arm", "tip"),
+    )
     proc, result = audit_json(write(tmp_path, "r.urdf", text))
     flags = {link["name"]: [(f["code"], f["level"]) for f in link["flags"]] for link in result["links"]}
     assert flags["world"] == [] and flags["bracket"] == []
-    assert flags["idler"] == [("massless", "warning")]   # carries the arm
-    assert flags["tip"] == [("massless", "error")]       # carries nothing
+    assert flags["idler"] == [("massless", "warning")]  # carries the arm
+    assert flags["tip"] == [("massless", "error")]  # carries nothing
     assert proc.returncode == 1
     assert result["total"]["mass"] == 2.0
-    assert run_rbi_inprocess("validate", write(tmp_path, "base.urdf", robot(
-        '  <link name="base"><inertial><mass value="0"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
-        '</inertial></link>\n'))).returncode == 0
+    assert (
+        run_rbi_inprocess(
+            "validate",
+            write(
+                tmp_path,
+                "base.urdf",
+                robot(
+                    '  <link name="base"><inertial><mass value="0"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
+                    "</inertial></link>\n"
+                ),
+            ),
+        ).returncode
+        == 0
+    )
 
 
 def test_tiny_negative_products_from_cad_are_read_not_crashed_on(tmp_path):
@@ -122,10 +151,13 @@ def test_tiny_negative_products_from_cad_are_read_not_crashed_on(tmp_path):
 
 # --- totals ----------------------------------------------------------------------------------------
 
+
 def test_totals_at_zero_and_at_a_joint_value(tmp_path):
     """Two 2 kg boxes, the second's centre 0.5 m along its link's x, on a hinge about z at the
     first's centre: at q = π/2 it sits at (0, 0.5, 0), and its box turns a quarter turn about z."""
-    text = robot(urdf_link("a", 2.0, GOOD), urdf_link("b", 2.0, GOOD, xyz="0.5 0 0"), joint("hinge", "a", "b"))
+    text = robot(
+        urdf_link("a", 2.0, GOOD), urdf_link("b", 2.0, GOOD, xyz="0.5 0 0"), joint("hinge", "a", "b")
+    )
     path = write(tmp_path, "r.urdf", text)
     _, zero = audit_json(path)
     assert zero["total"]["mass"] == 4.0
@@ -141,11 +173,16 @@ def test_totals_at_zero_and_at_a_joint_value(tmp_path):
 
 def test_unknown_joint_is_refused_with_a_hint(tmp_path):
     text = robot(urdf_link("a", 2.0, GOOD), urdf_link("b", 2.0, GOOD), joint("hinge", "a", "b"))
-    one_line_exit_2(run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text), "--joints", "hinje=1"),
-                    "--joints", "hinje", "did you mean 'hinge'")
+    one_line_exit_2(
+        run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text), "--joints", "hinje=1"),
+        "--joints",
+        "hinje",
+        "did you mean 'hinge'",
+    )
 
 
 # --- refusals -----------------------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("command", ["audit", "validate", "import"])
 def test_duplicate_link_names_are_exit_2_naming_the_name(tmp_path, command):
@@ -156,7 +193,9 @@ def test_duplicate_link_names_are_exit_2_naming_the_name(tmp_path, command):
 
 
 def test_a_missing_mesh_is_exit_2_naming_it(tmp_path):
-    text = robot(urdf_link("a", 2.0, GOOD).replace('<box size="0.2 0.1 0.05"/>', '<mesh filename="gone.stl"/>'))
+    text = robot(
+        urdf_link("a", 2.0, GOOD).replace('<box size="0.2 0.1 0.05"/>', '<mesh filename="gone.stl"/>')
+    )
     one_line_exit_2(run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text)), "gone.stl", "no such file")
 
 
@@ -164,8 +203,12 @@ def test_package_paths_resolve_through_the_option(tmp_path):
     mesh_folder = tmp_path / "pkg" / "meshes"
     mesh_folder.mkdir(parents=True)
     (mesh_folder / "box.obj").write_text(BOX_OBJ)
-    text = robot(urdf_link("a", 2.0, GOOD).replace('<box size="0.2 0.1 0.05"/>',
-                                                   '<mesh filename="package://my_robot/meshes/box.obj" scale="0.2 0.1 0.05"/>'))
+    text = robot(
+        urdf_link("a", 2.0, GOOD).replace(
+            '<box size="0.2 0.1 0.05"/>',
+            '<mesh filename="package://my_robot/meshes/box.obj" scale="0.2 0.1 0.05"/>',
+        )
+    )
     robot_folder = tmp_path / "robot"
     robot_folder.mkdir()
     path = write(robot_folder, "r.urdf", text)
@@ -193,14 +236,18 @@ def test_files_as_found_in_the_wild(tmp_path):
 
 @pytest.mark.parametrize("encoding", ["shift_jis", "x-unknown", "utf-7"])
 def test_unknown_encodings_are_exit_2(tmp_path, encoding):
-    text = robot(urdf_link("base", 2.0, GOOD)).replace('<?xml version="1.0"?>',
-                                                        f'<?xml version="1.0" encoding="{encoding}"?>')
-    one_line_exit_2(run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text)), "encoding", "save the file as UTF-8")
+    text = robot(urdf_link("base", 2.0, GOOD)).replace(
+        '<?xml version="1.0"?>', f'<?xml version="1.0" encoding="{encoding}"?>'
+    )
+    one_line_exit_2(
+        run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text)), "encoding", "save the file as UTF-8"
+    )
 
 
 def test_latin_1_is_read_and_kept_by_fix(tmp_path):
-    text = robot(urdf_link("bras_é", 2.0, (1, 1, 1))).replace('<?xml version="1.0"?>',
-                                                               '<?xml version="1.0" encoding="ISO-8859-1"?>')
+    text = robot(urdf_link("bras_é", 2.0, (1, 1, 1))).replace(
+        '<?xml version="1.0"?>', '<?xml version="1.0" encoding="ISO-8859-1"?>'
+    )
     path = write(tmp_path, "r.urdf", text.encode("latin-1"))
     out = tmp_path / "fixed.urdf"
     proc = run_rbi_inprocess("audit", path, "--fix", "--out", out)
@@ -223,9 +270,9 @@ def test_a_63_mib_token_is_parsed_in_seconds(tmp_path):
 def test_sdf_include_is_reported_as_not_checked(tmp_path):
     text = """<sdf version="1.6"><world name="w">
   <include><uri>model://other_robot</uri></include>
-  <model name="m"><link name="l"><inertial><mass>2</mass><inertia><ixx>%s</ixx><iyy>%s</iyy><izz>%s</izz></inertia>
+  <model name="m"><link name="l"><inertial><mass>2</mass><inertia><ixx>{}</ixx><iyy>{}</iyy><izz>{}</izz></inertia>
   </inertial><collision name="c"><geometry><box><size>0.2 0.1 0.05</size></box></geometry></collision></link></model>
-</world></sdf>""" % tuple(GOOD)
+</world></sdf>""".format(*tuple(GOOD))
     path = write(tmp_path, "w.sdf", text)
     proc = run_rbi_inprocess("validate", path)
     assert proc.returncode == 2 and "model://other_robot" in proc.stdout and "not checked" in proc.stdout
@@ -253,7 +300,9 @@ def test_mjcf_include_is_followed_as_mujoco_does(tmp_path):
     model = mujoco.MjModel.from_xml_path(str(path))
     assert [link["name"] for link in result["links"]] == ["a", "b"]
     for link in result["links"]:
-        assert link["declared"]["mass"] == pytest.approx(model.body_mass[model.body(link["name"]).id], rel=1e-12)
+        assert link["declared"]["mass"] == pytest.approx(
+            model.body_mass[model.body(link["name"]).id], rel=1e-12
+        )
     missing = tmp_path / "child.xml"
     missing.unlink()
     proc = run_rbi_inprocess("validate", path)
@@ -276,9 +325,14 @@ def test_mjcf_explicit_inertial_is_ignored_under_inertiafromgeom_true(tmp_path):
 
 # --- --fix -----------------------------------------------------------------------------------------
 
+
 def test_fix_replaces_only_the_flagged_inertial_and_keeps_every_other_byte(tmp_path):
-    text = robot(urdf_link("good", 2.0, GOOD), "  <!-- a comment,   spaced   oddly -->\n",
-                 urdf_link("placeholder", 2.0, (1, 1, 1)), joint("j", "good", "placeholder"))
+    text = robot(
+        urdf_link("good", 2.0, GOOD),
+        "  <!-- a comment,   spaced   oddly -->\n",
+        urdf_link("placeholder", 2.0, (1, 1, 1)),
+        joint("j", "good", "placeholder"),
+    )
     path = write(tmp_path, "r.urdf", text)
     dry = run_rbi_inprocess("audit", path, "--fix")
     assert dry.returncode == 1 and "would change" in dry.stdout and "+++" in dry.stdout
@@ -296,12 +350,16 @@ def test_fix_replaces_only_the_flagged_inertial_and_keeps_every_other_byte(tmp_p
     assert again_proc.returncode == 0
     fixed_link = again["links"][1]
     assert fixed_link["flags"] == []
-    assert np.allclose(fixed_link["declared"]["inertia_about_com"], box_inertia(2.0, 0.2, 0.1, 0.05), rtol=1e-15, atol=0)
+    assert np.allclose(
+        fixed_link["declared"]["inertia_about_com"], box_inertia(2.0, 0.2, 0.1, 0.05), rtol=1e-15, atol=0
+    )
 
 
 def test_fix_of_a_link_without_geometry_exits_1_and_still_writes(tmp_path):
-    text = robot('  <link name="bare"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" '
-                 'izz="3"/></inertial></link>\n')
+    text = robot(
+        '  <link name="bare"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" '
+        'izz="3"/></inertial></link>\n'
+    )
     out = tmp_path / "fixed.urdf"
     proc = run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text), "--fix", "--out", out)
     assert proc.returncode == 1 and out.exists() and "not fixed" in proc.stdout
@@ -322,7 +380,9 @@ def test_fix_of_an_mjcf_inertial(tmp_path):
     proc = run_rbi_inprocess("audit", write(tmp_path, "m.xml", text), "--fix", "--out", out)
     assert proc.returncode == 0, proc.stdout + proc.stderr
     model = mujoco.MjModel.from_xml_path(str(out))
-    assert np.allclose(np.sort(model.body_inertia[1]), np.sort(np.diag(box_inertia(2.0, 0.2, 0.1, 0.05))), rtol=1e-14)
+    assert np.allclose(
+        np.sort(model.body_inertia[1]), np.sort(np.diag(box_inertia(2.0, 0.2, 0.1, 0.05))), rtol=1e-14
+    )
 
 
 def test_api_audit_returns_the_report(tmp_path):
@@ -337,11 +397,15 @@ def test_api_audit_returns_the_report(tmp_path):
 
 def test_xacro_files_are_expanded(tmp_path):
     pytest.importorskip("xacro")
-    text = ('<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
-            '  <xacro:property name="m" value="2.0"/>\n'
-            '  <xacro:macro name="boxlink" params="name">\n' + urdf_link("${name}", "${m}", GOOD) +
-            '  </xacro:macro>\n  <xacro:boxlink name="a"/>\n  <xacro:boxlink name="b"/>\n' +
-            joint("j", "a", "b") + "</robot>\n")
+    text = (
+        '<?xml version="1.0"?>\n<robot name="r" xmlns:xacro="http://www.ros.org/wiki/xacro">\n'
+        '  <xacro:property name="m" value="2.0"/>\n'
+        '  <xacro:macro name="boxlink" params="name">\n'
+        + urdf_link("${name}", "${m}", GOOD)
+        + '  </xacro:macro>\n  <xacro:boxlink name="a"/>\n  <xacro:boxlink name="b"/>\n'
+        + joint("j", "a", "b")
+        + "</robot>\n"
+    )
     proc, result = audit_json(write(tmp_path, "r.urdf.xacro", text))
     assert proc.returncode == 0, proc.stderr
     assert [link["name"] for link in result["links"]] == ["a", "b"] and result["total"]["mass"] == 4.0
@@ -404,8 +468,13 @@ def test_mjcf_compiler_features_agree_with_mujoco(tmp_path, settotalmass):
     frames, mesh assets with meshdir and scale, geom groups outside inertiagrouprange, shell
     inertia of primitives, settotalmass: each body as MuJoCo compiles it."""
     mujoco = pytest.importorskip("mujoco")
-    text = FEATURES if settotalmass is None else FEATURES.replace(
-        'inertiagrouprange="0 3"', f'inertiagrouprange="0 3" settotalmass="{settotalmass}"')
+    text = (
+        FEATURES
+        if settotalmass is None
+        else FEATURES.replace(
+            'inertiagrouprange="0 3"', f'inertiagrouprange="0 3" settotalmass="{settotalmass}"'
+        )
+    )
     (tmp_path / "meshes").mkdir()
     (tmp_path / "meshes" / "box.obj").write_text(BOX_OBJ)
     path = write(tmp_path, "features.xml", text)
@@ -422,19 +491,29 @@ def test_mjcf_compiler_features_agree_with_mujoco(tmp_path, settotalmass):
         expected = R @ np.diag(model.body_inertia[body]) @ R.T
         declared = link["declared"]
         assert declared["mass"] == pytest.approx(model.body_mass[body], rel=1e-12), link["name"]
-        assert np.allclose(declared["center_of_mass"], model.body_ipos[body], rtol=0, atol=1e-14), link["name"]
-        assert np.allclose(declared["inertia_about_com"], expected, rtol=0, atol=1e-12 * np.max(np.abs(expected))), \
-            link["name"]
+        assert np.allclose(declared["center_of_mass"], model.body_ipos[body], rtol=0, atol=1e-14), link[
+            "name"
+        ]
+        assert np.allclose(
+            declared["inertia_about_com"], expected, rtol=0, atol=1e-12 * np.max(np.abs(expected))
+        ), link["name"]
     assert result["total"]["mass"] == pytest.approx(model.body_subtreemass[0], rel=1e-12)
     assert np.allclose(result["total"]["center_of_mass"], data.subtree_com[0], rtol=0, atol=1e-13)
 
 
 def test_mesh_repair_closes_a_small_hole_and_says_so(tmp_path):
-    (tmp_path / "open.obj").write_text(BOX_OBJ.replace("f 5 6 7\n", ""))  # one triangle missing: a 3-edge hole
-    text = robot(urdf_link("a", 2.0, GOOD).replace('<box size="0.2 0.1 0.05"/>',
-                                                   '<mesh filename="open.obj" scale="0.2 0.1 0.05"/>'))
+    (tmp_path / "open.obj").write_text(
+        BOX_OBJ.replace("f 5 6 7\n", "")
+    )  # one triangle missing: a 3-edge hole
+    text = robot(
+        urdf_link("a", 2.0, GOOD).replace(
+            '<box size="0.2 0.1 0.05"/>', '<mesh filename="open.obj" scale="0.2 0.1 0.05"/>'
+        )
+    )
     path = write(tmp_path, "r.urdf", text)
-    one_line_exit_2(run_rbi_inprocess("audit", path), "open.obj", "not closed", "--mesh-repair", "--mesh-inertia convex")
+    one_line_exit_2(
+        run_rbi_inprocess("audit", path), "open.obj", "not closed", "--mesh-repair", "--mesh-inertia convex"
+    )
     proc, result = audit_json(path, "--mesh-repair")
     assert proc.returncode == 0, proc.stderr
     assert result["links"][0]["geometry"]["volume"] == pytest.approx(0.001, rel=1e-14)
@@ -457,7 +536,9 @@ def test_mjcf_totals_at_joint_values_agree_with_mujoco(tmp_path):
     for name, value in values.items():
         data.qpos[model.jnt_qposadr[model.joint(name).id]] = value
     mujoco.mj_forward(model, data)
-    _, result = audit_json(path, *[arg for name, value in values.items() for arg in ("--joints", f"{name}={value}")])
+    _, result = audit_json(
+        path, *[arg for name, value in values.items() for arg in ("--joints", f"{name}={value}")]
+    )
     assert result["total"]["mass"] == pytest.approx(model.body_subtreemass[0], rel=1e-14)
     assert np.allclose(result["total"]["center_of_mass"], data.subtree_com[0], rtol=0, atol=1e-14)
 
@@ -493,6 +574,10 @@ def test_sdf_fix_and_joint_totals(tmp_path):
     assert run_rbi_inprocess("audit", path, "--fix", "--out", out).returncode == 0
     again_proc, again = audit_json(out)
     assert again_proc.returncode == 0, again_proc.stdout
-    assert np.allclose(again["links"][0]["declared"]["inertia_about_com"], box_inertia(2.0, 0.2, 0.1, 0.05),
-                       rtol=1e-15, atol=0)
+    assert np.allclose(
+        again["links"][0]["declared"]["inertia_about_com"],
+        box_inertia(2.0, 0.2, 0.1, 0.05),
+        rtol=1e-15,
+        atol=0,
+    )
     assert out.read_text().count("<link") == 2 and "rbi audit fix" in out.read_text()

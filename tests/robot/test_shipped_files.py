@@ -29,17 +29,17 @@ MJCFS = sorted(glob.glob(os.path.join(GYM, "*.xml")))
 SDFS = sorted(glob.glob(os.path.join(PYBULLET, "**", "*.sdf"), recursive=True))
 
 REFUSED = {  # file (relative to pybullet_data) → words of the one-line reason; defects of the files
-    "bicycle/bike.urdf": "'0.07,'",                               # a comma inside xyz
-    "husky/husky.urdf": "$(optenv",                               # an unexpanded xacro expression
-    "quadruped/microtaur/microtaur.urdf": "got 4",                # four numbers in an rpy
+    "bicycle/bike.urdf": "'0.07,'",  # a comma inside xyz
+    "husky/husky.urdf": "$(optenv",  # an unexpanded xacro expression
+    "quadruped/microtaur/microtaur.urdf": "got 4",  # four numbers in an rpy
     "racecar/racecar_differential.urdf": "scale: expected 1 or 3",  # scale="1 1 1 1"
-    "differential/diff_ring.urdf": "no such file",                # mesh path relative to the wrong folder
-    "kuka_iiwa/model_for_sdf.urdf": "no such file",               # names meshes/coarse/, not shipped
-    "kuka_iiwa/model2.sdf": "no such file",                       # meshes/coarse/ again
+    "differential/diff_ring.urdf": "no such file",  # mesh path relative to the wrong folder
+    "kuka_iiwa/model_for_sdf.urdf": "no such file",  # names meshes/coarse/, not shipped
+    "kuka_iiwa/model2.sdf": "no such file",  # meshes/coarse/ again
     "kuka_iiwa/kuka_world.sdf": "no such file",
-    "kuka_iiwa/kuka_with_gripper.sdf": "leaves the spec's folder",   # an absolute /meshes/link_0.stl
+    "kuka_iiwa/kuka_with_gripper.sdf": "leaves the spec's folder",  # an absolute /meshes/link_0.stl
     "kuka_iiwa/kuka_with_gripper2.sdf": "leaves the spec's folder",
-    "stadium.sdf": "no volume",                                    # a flat mesh its only geometry
+    "stadium.sdf": "no volume",  # a flat mesh its only geometry
     "stadium_no_collision.sdf": "no volume",
 }
 
@@ -122,7 +122,10 @@ def test_pybullet_urdf(path, record_property):
         total = totals(read_robot(path, geometry=False))
         assert total.mass == pytest.approx(mass, rel=1e-12, abs=0)
         if mass > 0:
-            assert _relative_error(total.center_of_mass, com) < 1e-12 or np.max(np.abs(total.center_of_mass - com)) < 1e-15
+            assert (
+                _relative_error(total.center_of_mass, com) < 1e-12
+                or np.max(np.abs(total.center_of_mass - com)) < 1e-15
+            )
             assert _relative_error(total.inertia_about_com, inertia) < 1e-12
         assert report.total.mass == total.mass
     TIMES[relative] = time.perf_counter() - start

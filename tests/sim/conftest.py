@@ -33,4 +33,6 @@ def bolted_scene():
 def free_scene():
     """A free body with principal moments 1, 2, 3 along axes turned away from the body axes."""
     R = axis_angle_matrix(np.array([1.0, 2.0, 3.0]), 0.7)
-    return scene_from_properties(MassProperties(2.0, np.zeros(3), R @ np.diag([1.0, 2.0, 3.0]) @ R.T), None, 9.81)
+    return scene_from_properties(
+        MassProperties(2.0, np.zeros(3), R @ np.diag([1.0, 2.0, 3.0]) @ R.T), None, 9.81
+    )

@@ -8,20 +8,26 @@ from pathlib import Path
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
-from hypothesis import strategies as st
 
 from rbi.core.inertia import MassProperties
 from rbi.sim import exact
 from rbi.sim.api import METHODS, SimulationError, sample_times, simulate
-from rbi.sim.baselines import python_rhs
-from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg, sleeping_threshold, stability, tilt_deg
+from rbi.sim.diagnostics import (
+    conserved_quantities,
+    orientation_error_deg,
+    sleeping_threshold,
+    stability,
+    tilt_deg,
+)
 from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.spec.load import load_body
 from rbi.spec.units import gravity_in
 
-EXPECTED = json.loads(Path("/work/shared/cases/expected.json").read_text()) if Path(
-    "/work/shared/cases/expected.json").exists() else None
+EXPECTED = (
+    json.loads(Path("/work/shared/cases/expected.json").read_text())
+    if Path("/work/shared/cases/expected.json").exists()
+    else None
+)
 # The same reference (DOP853 at rtol 1e-13, from shared/cases/expected.json), kept here so the
 # test also runs where the shared folder is absent.
 BOLTED_FINAL_Q = [-0.8115423374746441, -0.0004863881802677963, 0.4154746034509781, 0.4108280075651523]
@@ -111,7 +117,9 @@ def test_sleeping_threshold_matches_the_issue_and_decides_the_fate(top_scene):
     above = simulate(top_scene, *initial_state(0.01, [0, 0, 1.02 * threshold["omega3"]]), 4.0, 2001)
     assert np.max(tilt_deg(below.q)) > 10.0
     assert np.max(tilt_deg(above.q)) < 0.1
-    assert "stable" in stability(top_scene, *initial_state(0.01, [0, 0, 1.02 * threshold["omega3"]]))["verdict"]
+    assert (
+        "stable" in stability(top_scene, *initial_state(0.01, [0, 0, 1.02 * threshold["omega3"]]))["verdict"]
+    )
 
 
 def test_dzhanibekov_verdict(free_scene):
@@ -140,8 +148,12 @@ def test_duration_zero_and_single_sample(bolted_scene):
 
 def test_bad_runs_are_refused(bolted_scene):
     q0, w0 = initial_state(0.0, [0, 0, 200.0])
-    for duration, samples, rtol, method in ((-1.0, 10, None, "default"), (1.0, 0, None, "default"),
-                                            (1.0, 10, 0.5, "default"), (1.0, 10, None, "euler")):
+    for duration, samples, rtol, method in (
+        (-1.0, 10, None, "default"),
+        (1.0, 0, None, "default"),
+        (1.0, 10, 0.5, "default"),
+        (1.0, 10, None, "euler"),
+    ):
         with pytest.raises(ValueError):
             simulate(bolted_scene, q0, w0, duration, samples, rtol=rtol, method=method)
     with pytest.raises(SimulationError, match="exact"):

@@ -62,10 +62,12 @@ def test_simulating_a_symmetric_top_imports_no_scipy(tmp_path):
     from pathlib import Path
 
     top = Path(__file__).resolve().parents[2] / "bodies" / "top.yaml"
-    code = ("import sys, json\nfrom rbi.cli.app import main\n"
-            "sys.argv = ['rbi', 'simulate', sys.argv[1], '--spin', '200', '--tilt', '10', '--format', 'json']\n"
-            "try:\n    main()\nexcept SystemExit:\n    pass\n"
-            "print('SCIPY', any(m == 'scipy' or m.startswith('scipy.') for m in sys.modules), file=sys.stderr)\n")
+    code = (
+        "import sys, json\nfrom rbi.cli.app import main\n"
+        "sys.argv = ['rbi', 'simulate', sys.argv[1], '--spin', '200', '--tilt', '10', '--format', 'json']\n"
+        "try:\n    main()\nexcept SystemExit:\n    pass\n"
+        "print('SCIPY', any(m == 'scipy' or m.startswith('scipy.') for m in sys.modules), file=sys.stderr)\n"
+    )
     proc = subprocess.run([sys.executable, "-c", code, str(top)], capture_output=True, text=True)
     assert "SCIPY False" in proc.stderr, proc.stderr
     import json

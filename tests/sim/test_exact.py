@@ -17,11 +17,11 @@ from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg, til
 from rbi.sim.scene import initial_state, scene_from_properties
 
 FREE_SPINS = [
-    [1.0, 0.5, 2.0],     # circulates about the largest axis
-    [-1.0, 0.5, -2.0],   # same, other signs
-    [3.0, 0.5, 0.2],     # circulates about the smallest axis
+    [1.0, 0.5, 2.0],  # circulates about the largest axis
+    [-1.0, 0.5, -2.0],  # same, other signs
+    [3.0, 0.5, 0.2],  # circulates about the smallest axis
     [-3.0, -0.5, 0.2],
-    [0.01, 5.0, 0.01],   # next to the intermediate axis
+    [0.01, 5.0, 0.01],  # next to the intermediate axis
 ]
 
 
@@ -42,7 +42,9 @@ def test_euler_poinsot_obeys_kinematics_and_conservation(free_scene, spin):
     np.testing.assert_allclose(omega[0], w0, rtol=0, atol=1e-13 * np.linalg.norm(w0))
     assert orientation_error_deg(q[0], q0) < 1e-12
     # the orientation and ω belong together: q' = ½ q ⊗ ω (to the finite difference's accuracy)
-    np.testing.assert_allclose(_omega_body_from_quaternions(t, q), omega[1:-1], atol=2e-5 * np.linalg.norm(w0))
+    np.testing.assert_allclose(
+        _omega_body_from_quaternions(t, q), omega[1:-1], atol=2e-5 * np.linalg.norm(w0)
+    )
     # energy and the world angular momentum are constant
     drifts = conserved_quantities(free_scene, q, omega)
     assert drifts["energy"]["drift"] < 1e-13
@@ -97,8 +99,10 @@ def test_symmetric_free_body_is_steady_precession(free_scene):
     assert np.max(orientation_error_deg(numeric.q, q)) < 1e-8
 
 
-@pytest.mark.parametrize("tilt,spin", [(10.0, [0, 0, 200.0]), (10.0, [0, 0, 50.0]), (30.0, [1.0, 2.0, 100.0]),
-                                       (120.0, [0.0, 3.0, 20.0])])
+@pytest.mark.parametrize(
+    "tilt,spin",
+    [(10.0, [0, 0, 200.0]), (10.0, [0, 0, 50.0]), (30.0, [1.0, 2.0, 100.0]), (120.0, [0.0, 3.0, 20.0])],
+)
 def test_lagrange_top_matches_the_integrator_and_conserves(top_scene, tilt, spin):
     q0, w0 = initial_state(tilt, spin)
     closed = simulate(top_scene, q0, w0, 4.0, 481, method="exact")

@@ -18,12 +18,15 @@ def _scene(pivoted: bool):
     return scene_from_properties(props, np.zeros(3) if pivoted else None, 9.80665)
 
 
-@pytest.mark.parametrize("pivoted,tilt,omega,duration,samples,rtol", [
-    (True, 0.0, (0.0, 0.0, 200.0), 2.0, 241, DEFAULT_RTOL),
-    (True, 12.0, (1.0, -2.0, 150.0), 1.5, 7, 1e-9),
-    (False, 0.0, (12.0, 16.0, 20.0), 3.0, 481, 1e-10),
-    (True, 5.0, (0.0, 0.0, 80.0), 0.0, 1, DEFAULT_RTOL),
-])
+@pytest.mark.parametrize(
+    "pivoted,tilt,omega,duration,samples,rtol",
+    [
+        (True, 0.0, (0.0, 0.0, 200.0), 2.0, 241, DEFAULT_RTOL),
+        (True, 12.0, (1.0, -2.0, 150.0), 1.5, 7, 1e-9),
+        (False, 0.0, (12.0, 16.0, 20.0), 3.0, 481, 1e-10),
+        (True, 5.0, (0.0, 0.0, 80.0), 0.0, 1, DEFAULT_RTOL),
+    ],
+)
 def test_same_steps_and_samples_as_simulate(pivoted, tilt, omega, duration, samples, rtol):
     from rbi.sim._dop853 import integrate_minimal
 
@@ -33,9 +36,16 @@ def test_same_steps_and_samples_as_simulate(pivoted, tilt, omega, duration, samp
     t = sample_times(duration, samples)
     y = np.concatenate((q0 / np.linalg.norm(q0), omega0))
     out = np.empty((t.size, 7))
-    steps = integrate_minimal(y, t, np.ascontiguousarray(scene.inertia), np.ascontiguousarray(scene.inertia_inv),
-                              np.ascontiguousarray(scene.gravity_moment, dtype=float), rtol,
-                              max(scene.natural_rate, 0.0), out)
+    steps = integrate_minimal(
+        y,
+        t,
+        np.ascontiguousarray(scene.inertia),
+        np.ascontiguousarray(scene.inertia_inv),
+        np.ascontiguousarray(scene.gravity_moment, dtype=float),
+        rtol,
+        max(scene.natural_rate, 0.0),
+        out,
+    )
     assert steps == run.steps
     assert np.array_equal(out[:, :4], run.q) and np.array_equal(out[:, 4:], run.omega)
     if duration > 0:
@@ -49,6 +59,10 @@ def test_shape_errors_raise():
 
     eye = np.eye(3)
     with pytest.raises(ValueError):
-        integrate_minimal(np.zeros(6), np.array([0.0, 1.0]), eye, eye, np.zeros(3), 1e-9, 0.0, np.empty((2, 7)))
+        integrate_minimal(
+            np.zeros(6), np.array([0.0, 1.0]), eye, eye, np.zeros(3), 1e-9, 0.0, np.empty((2, 7))
+        )
     with pytest.raises(ValueError):
-        integrate_minimal(np.zeros(7), np.array([0.0, 1.0]), eye, eye, np.zeros(3), 1e-9, 0.0, np.empty((3, 7)))
+        integrate_minimal(
+            np.zeros(7), np.array([0.0, 1.0]), eye, eye, np.zeros(3), 1e-9, 0.0, np.empty((3, 7))
+        )

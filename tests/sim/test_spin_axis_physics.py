@@ -57,7 +57,9 @@ def test_a_fast_gyroscope_released_with_spin_alone_precesses_at_m_g_d_over_i_ome
     measured = np.polyfit(run.t, np.radians(run.precession_deg), 1)[0]
     assert measured == pytest.approx(steady_rate(spin), rel=2e-3)
     assert np.max(np.abs(run.tilt_deg - 90.0)) < 3.0  # it dips a little, it does not fall
-    assert run.summary["stability"]["gyroscopic_precession_rad_s"] == pytest.approx(steady_rate(spin), rel=1e-9)
+    assert run.summary["stability"]["gyroscopic_precession_rad_s"] == pytest.approx(
+        steady_rate(spin), rel=1e-9
+    )
     assert "level with the pivot" in run.summary["stability"]["verdict"]
     assert run.summary["spin_axis"].tolist() == [0.0, 1.0, 0.0]
     assert run.omega[0].tolist() == [0.0, spin, 0.0]
@@ -67,9 +69,27 @@ def _top_along(axis) -> dict:
     """The chapter's top (cone and stem) built along the unit ``axis`` from the pivot."""
     a = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
     at = lambda d: (d * a).tolist()  # noqa: E731
-    return {"pivot": [0, 0, 0], "parts": [
-        {"name": "cone", "shape": "cone", "mass": 0.4, "radius": 0.04, "apex": [0, 0, 0], "base": at(0.06)},
-        {"name": "stem", "shape": "cylinder", "mass": 0.1, "radius": 0.008, "start": at(0.06), "end": at(0.10)}]}
+    return {
+        "pivot": [0, 0, 0],
+        "parts": [
+            {
+                "name": "cone",
+                "shape": "cone",
+                "mass": 0.4,
+                "radius": 0.04,
+                "apex": [0, 0, 0],
+                "base": at(0.06),
+            },
+            {
+                "name": "stem",
+                "shape": "cylinder",
+                "mass": 0.1,
+                "radius": 0.008,
+                "start": at(0.06),
+                "end": at(0.10),
+            },
+        ],
+    }
 
 
 @pytest.mark.parametrize("axis", [[1, 0, 0], [0, 1, 0], [1, 1, 1], [0.3, -0.5, 0.8]])
@@ -79,9 +99,17 @@ def test_the_same_top_built_along_any_axis_moves_the_same(axis):
     the vertical: the tilt series agree and the precession angles differ by a constant."""
     a = np.asarray(axis, dtype=float) / np.linalg.norm(axis)
     theta = math.degrees(math.acos(a[2]))
-    along = rbi.simulate(rbi.load(_top_along(axis)), spin=150.0, duration=0.5, samples=101, error_estimate=False)
-    upright = rbi.simulate(rbi.load(_top_along([0, 0, 1])), spin=150.0, tilt_deg=theta, duration=0.5, samples=101,
-                           error_estimate=False)
+    along = rbi.simulate(
+        rbi.load(_top_along(axis)), spin=150.0, duration=0.5, samples=101, error_estimate=False
+    )
+    upright = rbi.simulate(
+        rbi.load(_top_along([0, 0, 1])),
+        spin=150.0,
+        tilt_deg=theta,
+        duration=0.5,
+        samples=101,
+        error_estimate=False,
+    )
     assert np.allclose(along.summary["spin_axis"], a, atol=1e-12)
     assert np.max(np.abs(along.tilt_deg - upright.tilt_deg)) < 1e-6
     offset = along.precession_deg - upright.precession_deg
@@ -90,16 +118,36 @@ def test_the_same_top_built_along_any_axis_moves_the_same(axis):
 
 def test_the_sleeping_top_threshold_of_a_top_built_along_y_is_the_one_built_along_z():
     # 4 m g l I1 / I3^2 from the chapter's numbers, as tests/test_seed_numbers.py quotes them
-    z_built = rbi.simulate(rbi.load(_top_along([0, 0, 1])), spin=150.0, tilt_deg=0.01, duration=0.01, samples=2,
-                           error_estimate=False)
-    y_built = rbi.simulate(rbi.load(_top_along([0, 1, 0])), spin=150.0, tilt_deg=90.01, tilt_axis="x",
-                           duration=0.01, samples=2, error_estimate=False)
+    z_built = rbi.simulate(
+        rbi.load(_top_along([0, 0, 1])),
+        spin=150.0,
+        tilt_deg=0.01,
+        duration=0.01,
+        samples=2,
+        error_estimate=False,
+    )
+    y_built = rbi.simulate(
+        rbi.load(_top_along([0, 1, 0])),
+        spin=150.0,
+        tilt_deg=90.01,
+        tilt_axis="x",
+        duration=0.01,
+        samples=2,
+        error_estimate=False,
+    )
     a, b = z_built.summary["stability"], y_built.summary["stability"]
     assert b["sleeping_threshold_rad_s"] == pytest.approx(a["sleeping_threshold_rad_s"], rel=1e-12)
     assert b["com_position"] == a["com_position"] == "above"
     assert "unstable" in b["verdict"] and b["spin_rad_s"] == pytest.approx(150.0)
-    hanging = rbi.simulate(rbi.load(_top_along([0, 1, 0])), spin=150.0, tilt_deg=-90, tilt_axis="x",
-                           duration=0.01, samples=2, error_estimate=False)
+    hanging = rbi.simulate(
+        rbi.load(_top_along([0, 1, 0])),
+        spin=150.0,
+        tilt_deg=-90,
+        tilt_axis="x",
+        duration=0.01,
+        samples=2,
+        error_estimate=False,
+    )
     assert hanging.summary["stability"]["com_position"] == "below"
     assert hanging.tilt_deg[0] == pytest.approx(180.0)
 
@@ -107,19 +155,39 @@ def test_the_sleeping_top_threshold_of_a_top_built_along_y_is_the_one_built_alon
 def test_spin_axis_option_spec_field_and_default_in_that_order(tmp_path):
     spec = tmp_path / "wheel.yaml"
     spec.write_text((BODIES / "gyroscope.yaml").read_text() + "spin_axis: [0, 0, 2]\n")
+
     def axis(*extra):
-        out = run_rbi_inprocess("simulate", spec, "--spin", "10", "--duration", "0.01", "--samples", "2",
-                                "--format", "json", *extra)
+        out = run_rbi_inprocess(
+            "simulate",
+            spec,
+            "--spin",
+            "10",
+            "--duration",
+            "0.01",
+            "--samples",
+            "2",
+            "--format",
+            "json",
+            *extra,
+        )
         assert out.returncode == 0, out.stderr
         return json.loads(out.stdout)["spin_axis"]
+
     assert axis() == [0.0, 0.0, 1.0]
     assert axis("--spin-axis", "x") == [1.0, 0.0, 0.0]
-    assert axis("--spin-axis", "1,1,0") == pytest.approx([2 ** -0.5, 2 ** -0.5, 0.0], abs=1e-15)
+    assert axis("--spin-axis", "1,1,0") == pytest.approx([2**-0.5, 2**-0.5, 0.0], abs=1e-15)
     spec.write_text((BODIES / "gyroscope.yaml").read_text())
     assert axis() == [0.0, 1.0, 0.0]
 
 
-@pytest.mark.parametrize("bad, words", [("0,0,0", "must not be zero"), ("w", "x, y, z"), ("1,nan,0", "finite")])
+@pytest.mark.parametrize(
+    "bad, words", [("0,0,0", "must not be zero"), ("w", "x, y, z"), ("1,nan,0", "finite")]
+)
 def test_a_bad_spin_axis_is_one_line_and_exit_2(bad, words):
     out = run_rbi_inprocess("simulate", BODIES / "gyroscope.yaml", "--spin", "10", "--spin-axis", bad)
-    assert out.returncode == 2 and out.stderr.count("\n") == 1 and "--spin-axis" in out.stderr and words in out.stderr
+    assert (
+        out.returncode == 2
+        and out.stderr.count("\n") == 1
+        and "--spin-axis" in out.stderr
+        and words in out.stderr
+    )

@@ -14,16 +14,19 @@ from rbi.sim.summary import motion_figures, sweep_figures, sweep_figures_batch
 def _top_scene(pivoted: bool):
     from rbi.core.inertia import MassProperties
 
-    props = MassProperties(mass=0.5, com=np.array([0.0, 0.0, 0.05]),
-                           inertia_com=np.diag([2.6e-4, 2.6e-4, 1.95e-4]))
+    props = MassProperties(
+        mass=0.5, com=np.array([0.0, 0.0, 0.05]), inertia_com=np.diag([2.6e-4, 2.6e-4, 1.95e-4])
+    )
     return scene_from_properties(props, np.zeros(3) if pivoted else None, 9.80665)
 
 
 @pytest.mark.parametrize("pivoted", [True, False])
 def test_batch_equals_one_by_one(pivoted):
     scene = _top_scene(pivoted)
-    runs = [simulate(scene, *initial_state(tilt, [0.3 * k, 0.0, spin]), 1.0, 121)
-            for k, (spin, tilt) in enumerate([(150, 0.0), (208, 0.01), (260, 1.0), (180, 20.0)])]
+    runs = [
+        simulate(scene, *initial_state(tilt, [0.3 * k, 0.0, spin]), 1.0, 121)
+        for k, (spin, tilt) in enumerate([(150, 0.0), (208, 0.01), (260, 1.0), (180, 20.0)])
+    ]
     q = np.array([r.q for r in runs])
     omega = np.array([r.omega for r in runs])
     batch = sweep_figures_batch(scene, runs[0].t, q, omega)

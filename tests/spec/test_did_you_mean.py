@@ -13,9 +13,16 @@ POINT = "parts: [{shape: point, mass: 1, position: [0, 0, 0]}]\n"
     [
         ("unit: {length: mm}\n" + POINT, "unit:", "units"),
         ("units: {lenght: mm}\n" + POINT, "units.lenght:", "length"),
-        ("parts: [{shape: cone, mass: 1, radius: 1, apex: [0, 0, 0], bsae: [0, 0, 1]}]\n", "parts[0]: bsae:", "base"),
-        ("parts: [{shape: box, mass: 1, center: [0, 0, 0], size: [1, 1, 1], rotation: {axis: [0, 0, 1], angle_dg: 3}}]\n",
-         "rotation.angle_dg:", "angle_deg"),
+        (
+            "parts: [{shape: cone, mass: 1, radius: 1, apex: [0, 0, 0], bsae: [0, 0, 1]}]\n",
+            "parts[0]: bsae:",
+            "base",
+        ),
+        (
+            "parts: [{shape: box, mass: 1, center: [0, 0, 0], size: [1, 1, 1], rotation: {axis: [0, 0, 1], angle_dg: 3}}]\n",
+            "rotation.angle_dg:",
+            "angle_deg",
+        ),
         (POINT + "expect: {masss: {value: 1, tol: 1%}}\n", "expect.masss:", "mass"),
         (POINT + "expect: {mass: {valeu: 1, tol: 1%}}\n", "expect.mass.valeu:", "value"),
     ],

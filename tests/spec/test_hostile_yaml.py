@@ -29,20 +29,27 @@ MEMORY_LIMIT = 1024**3  # bytes of address space a guarded subprocess may take b
 def run_guarded(*args: str, timeout: float = 30.0) -> subprocess.CompletedProcess:
     """``python -m rbi ARGS`` with its address space capped and a timeout: a crash shows as a
     signal exit code, a runaway as TimeoutExpired, either failing the test."""
+
     def limit():
         soft = resource.getrlimit(resource.RLIMIT_AS)[0]
         base = 2 * MEMORY_LIMIT  # the interpreter, numpy and pydantic start in well under this
         if soft == resource.RLIM_INFINITY or soft > base:
             resource.setrlimit(resource.RLIMIT_AS, (base, resource.getrlimit(resource.RLIMIT_AS)[1]))
 
-    return subprocess.run([sys.executable, "-m", "rbi", *map(str, args)], capture_output=True, text=True,
-                          timeout=timeout, preexec_fn=limit)
+    return subprocess.run(
+        [sys.executable, "-m", "rbi", *map(str, args)],
+        capture_output=True,
+        text=True,
+        timeout=timeout,
+        preexec_fn=limit,
+    )
 
 
 POINT = "{shape: point, mass: 1.0, position: [0, 0, 0]}"
 
 
 # -- nesting -------------------------------------------------------------------------------
+
 
 def test_thirty_thousand_nested_brackets_are_refused_not_a_crash(tmp_path):
     spec = tmp_path / "deep.yaml"
@@ -51,16 +58,27 @@ def test_thirty_thousand_nested_brackets_are_refused_not_a_crash(tmp_path):
     one_line_exit_2(proc, str(spec), "nested more than 100 levels")
 
 
-@pytest.mark.parametrize("text", [
-    "parts: " + "[" * 1000 + "]" * 1000 + "\n",
-    "parts: " + "{a: " * 1000 + "1" + "}" * 1000 + "\n",
-    "parts:\n" + "".join("  " * i + "- \n" for i in range(150)),
-    "parts:\n  " + "- " * 2000 + "1\n",
-    "parts:\n" + "".join(" " * i + f"k{i}:\n" for i in range(150)),
-    '{"parts": ' + "[" * 5000 + "]" * 5000 + "}",  # JSON: the fast path must obey the limit too
-    '{"parts": ' + "[" * 101 + "]" * 101 + "}",
-], ids=["flow-1000", "mapping-1000", "block-150", "compact-sequences-2000", "indented-keys-150",
-        "json-5000", "json-101"])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "parts: " + "[" * 1000 + "]" * 1000 + "\n",
+        "parts: " + "{a: " * 1000 + "1" + "}" * 1000 + "\n",
+        "parts:\n" + "".join("  " * i + "- \n" for i in range(150)),
+        "parts:\n  " + "- " * 2000 + "1\n",
+        "parts:\n" + "".join(" " * i + f"k{i}:\n" for i in range(150)),
+        '{"parts": ' + "[" * 5000 + "]" * 5000 + "}",  # JSON: the fast path must obey the limit too
+        '{"parts": ' + "[" * 101 + "]" * 101 + "}",
+    ],
+    ids=[
+        "flow-1000",
+        "mapping-1000",
+        "block-150",
+        "compact-sequences-2000",
+        "indented-keys-150",
+        "json-5000",
+        "json-101",
+    ],
+)
 def test_deep_nesting_is_exit_2_naming_the_limit(write_spec, text):
     proc = run_rbi_inprocess("inertia", write_spec(text))
     one_line_exit_2(proc, "nested more than 100 levels")
@@ -79,9 +97,11 @@ def test_nesting_up_to_the_limit_is_read_as_written():
 
 # -- aliases ---------------------------------------------------------------------------------
 
-BILLION_LAUGHS = "a: &a [lol, lol, lol, lol, lol, lol, lol, lol, lol, lol]\n" + "".join(
-    f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 10)}]\n" for i in range(9)
-) + "parts: *j\n"
+BILLION_LAUGHS = (
+    "a: &a [lol, lol, lol, lol, lol, lol, lol, lol, lol, lol]\n"
+    + "".join(f"{chr(98 + i)}: &{chr(98 + i)} [{', '.join(['*' + chr(97 + i)] * 10)}]\n" for i in range(9))
+    + "parts: *j\n"
+)
 
 
 def test_billion_laughs_is_refused_fast_in_bounded_memory(tmp_path):
@@ -95,8 +115,13 @@ def test_billion_laughs_is_refused_fast_in_bounded_memory(tmp_path):
 
 def test_aliases_within_the_budget_are_independent_copies():
     data = read_document("a: &v [1, 2, 3]\nb: *v\nc: [*v, *v]\nd: &m {p: *v}\ne: {<<: *m}\n")
-    assert data == {"a": [1, 2, 3], "b": [1, 2, 3], "c": [[1, 2, 3], [1, 2, 3]], "d": {"p": [1, 2, 3]},
-                    "e": {"p": [1, 2, 3]}}
+    assert data == {
+        "a": [1, 2, 3],
+        "b": [1, 2, 3],
+        "c": [[1, 2, 3], [1, 2, 3]],
+        "d": {"p": [1, 2, 3]},
+        "e": {"p": [1, 2, 3]},
+    }
     data["b"][0] = 9
     data["e"]["p"][0] = 8  # merged from d: editing it (as rbi sweep --vary does) leaves d alone
     assert data["a"] == data["c"][0] == data["c"][1] == data["d"]["p"] == [1, 2, 3]
@@ -148,9 +173,11 @@ def test_merge_keys_share_part_defaults(tmp_path):
 
 def test_a_spec_using_merge_keys_gives_the_written_out_body(tmp_path):
     merged = tmp_path / "merged.yaml"
-    merged.write_text("parts:\n  - &steel {shape: cylinder, density: 7800, radius: 0.01, name: shaft,"
-                      " start: [0, 0, 0], end: [0, 0, 0.1]}\n"
-                      "  - <<: *steel\n    name: disc\n    radius: 0.05\n    start: [0, 0, 0.1]\n    end: [0, 0, 0.2]\n")
+    merged.write_text(
+        "parts:\n  - &steel {shape: cylinder, density: 7800, radius: 0.01, name: shaft,"
+        " start: [0, 0, 0], end: [0, 0, 0.1]}\n"
+        "  - <<: *steel\n    name: disc\n    radius: 0.05\n    start: [0, 0, 0.1]\n    end: [0, 0, 0.2]\n"
+    )
     written = tmp_path / "written.yaml"
     written.write_text(WRITTEN_OUT)
     a, b = load_body(merged).props, load_body(written).props
@@ -160,28 +187,40 @@ def test_a_spec_using_merge_keys_gives_the_written_out_body(tmp_path):
     assert a.mass == pytest.approx(7800 * np.pi * (0.01**2 + 0.05**2) * 0.1, rel=1e-14)
 
 
-@pytest.mark.parametrize("text, words", [
-    ("parts: [{shape: point, mass: 1, mass: 2, position: [0, 0, 0]}]\n", ["duplicate key 'mass'", "line 1"]),
-    ("d: &d {mass: 1}\nparts: [{<<: *d, shape: point, position: [0, 0, 0], position: [1, 1, 1]}]\n",
-     ["duplicate key 'position'"]),
-    ("d: &d {mass: 1}\nparts: [{<<: *d, <<: *d, shape: point}]\n", ["'<<' given twice"]),
-    ("parts: [{<<: 3, shape: point}]\n", ["merge", "mapping"]),
-])
+@pytest.mark.parametrize(
+    "text, words",
+    [
+        (
+            "parts: [{shape: point, mass: 1, mass: 2, position: [0, 0, 0]}]\n",
+            ["duplicate key 'mass'", "line 1"],
+        ),
+        (
+            "d: &d {mass: 1}\nparts: [{<<: *d, shape: point, position: [0, 0, 0], position: [1, 1, 1]}]\n",
+            ["duplicate key 'position'"],
+        ),
+        ("d: &d {mass: 1}\nparts: [{<<: *d, <<: *d, shape: point}]\n", ["'<<' given twice"]),
+        ("parts: [{<<: 3, shape: point}]\n", ["merge", "mapping"]),
+    ],
+)
 def test_duplicate_keys_stay_refused_with_merge_keys_supported(write_spec, text, words):
     one_line_exit_2(run_rbi_inprocess("inertia", write_spec(text)), *words)
 
 
 # -- numbers: YAML 1.2 decimals only -----------------------------------------------------------
 
-@pytest.mark.parametrize("written, reason", [
-    ("010", "leading zero"),
-    ("-07", "leading zero"),
-    ("0x10", "hexadecimal"),
-    ("0o7", "octal"),
-    ("0b11", "binary"),
-    ("1:30", "base 60"),
-    ("1_000", "digit separator"),
-])
+
+@pytest.mark.parametrize(
+    "written, reason",
+    [
+        ("010", "leading zero"),
+        ("-07", "leading zero"),
+        ("0x10", "hexadecimal"),
+        ("0o7", "octal"),
+        ("0b11", "binary"),
+        ("1:30", "base 60"),
+        ("1_000", "digit separator"),
+    ],
+)
 def test_numbers_yaml_1_1_reads_differently_are_refused_naming_the_field(write_spec, written, reason):
     text = f"parts:\n  - name: bolt\n    shape: point\n    mass: {written}\n    position: [0, 0, 0]\n"
     proc = run_rbi_inprocess("inertia", write_spec(text))
@@ -194,11 +233,29 @@ def test_other_yaml_1_1_only_values_are_text_and_not_numbers(write_spec, written
     one_line_exit_2(run_rbi_inprocess("inertia", write_spec(text)), "parts[0]", "mass", "must be a number")
 
 
-@pytest.mark.parametrize("written, value", [
-    ("10", 10), ("+3", 3), ("-0", 0), ("0", 0), ("1e-3", 1e-3), ("7.8e3", 7800.0), ("2.", 2.0), (".5", 0.5),
-    ("-1.5E+2", -150.0), ("!!float 2", 2.0), ("!!int 12", 12), ("'010'", "010"), ("!!str 0x10", "0x10"),
-    ("null", None), ("~", None), ("true", True), ("False", False), (".inf", float("inf")),
-])
+@pytest.mark.parametrize(
+    "written, value",
+    [
+        ("10", 10),
+        ("+3", 3),
+        ("-0", 0),
+        ("0", 0),
+        ("1e-3", 1e-3),
+        ("7.8e3", 7800.0),
+        ("2.", 2.0),
+        (".5", 0.5),
+        ("-1.5E+2", -150.0),
+        ("!!float 2", 2.0),
+        ("!!int 12", 12),
+        ("'010'", "010"),
+        ("!!str 0x10", "0x10"),
+        ("null", None),
+        ("~", None),
+        ("true", True),
+        ("False", False),
+        (".inf", float("inf")),
+    ],
+)
 def test_decimal_numbers_and_core_schema_words_read_as_yaml_1_2_says(written, value):
     got = read_document(f"v: {written}\n")["v"]
     assert got == value and type(got) is type(value)
@@ -207,25 +264,33 @@ def test_decimal_numbers_and_core_schema_words_read_as_yaml_1_2_says(written, va
 def test_a_set_and_other_tags_are_refused(write_spec):
     proc = run_rbi_inprocess("inertia", write_spec("parts: !!set {a, b}\n"))
     one_line_exit_2(proc, "!!set", "not supported")
-    proc = run_rbi_inprocess("inertia", write_spec("parts:\n  - {shape: point, mass: !!timestamp 2001-12-14, "
-                                                    "position: [0, 0, 0]}\n"))
+    proc = run_rbi_inprocess(
+        "inertia",
+        write_spec("parts:\n  - {shape: point, mass: !!timestamp 2001-12-14, position: [0, 0, 0]}\n"),
+    )
     one_line_exit_2(proc, "parts[0]", "mass", "!!timestamp")
 
 
 def test_an_integer_too_long_for_python_is_exit_2(write_spec):
     digits = "9" * 5000
-    for text in (f"parts: [{{shape: point, mass: {digits}, position: [0, 0, 0]}}]\n",
-                 f'{{"parts": [{{"shape": "point", "mass": {digits}, "position": [0, 0, 0]}}]}}'):
+    for text in (
+        f"parts: [{{shape: point, mass: {digits}, position: [0, 0, 0]}}]\n",
+        f'{{"parts": [{{"shape": "point", "mass": {digits}, "position": [0, 0, 0]}}]}}',
+    ):
         one_line_exit_2(run_rbi_inprocess("inertia", write_spec(text)), "parts[0]", "mass", "5000 digits")
 
 
 # -- keys and documents --------------------------------------------------------------------------
 
-@pytest.mark.parametrize("text", [
-    "? [a, b]\n: 1\nparts: [" + POINT + "]\n",
-    "parts: [{[1, 2]: 3}]\n",
-    "k: &k [1]\nparts: [{*k : 3}]\n",
-])
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "? [a, b]\n: 1\nparts: [" + POINT + "]\n",
+        "parts: [{[1, 2]: 3}]\n",
+        "k: &k [1]\nparts: [{*k : 3}]\n",
+    ],
+)
 def test_complex_keys_are_refused(write_spec, text):
     one_line_exit_2(run_rbi_inprocess("inertia", write_spec(text)), "complex keys")
 
@@ -236,6 +301,7 @@ def test_more_than_one_document_is_refused(write_spec):
 
 
 # -- the spec file itself ------------------------------------------------------------------------
+
 
 def test_dev_zero_as_the_spec_is_refused_before_reading():
     proc = run_guarded("inertia", "/dev/zero", timeout=20)
@@ -256,10 +322,13 @@ def test_a_spec_larger_than_the_cap_is_refused_before_reading(tmp_path):
     one_line_exit_2(run_rbi_inprocess("inertia", huge), "too large", f"{MAX_SPEC_BYTES:,}")
 
 
-@pytest.mark.parametrize("text", [
-    "parts:\n  - " + POINT + "\n",
-    json.dumps({"parts": [{"shape": "point", "mass": 1.0, "position": [0, 0, 0]}]}),
-])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "parts:\n  - " + POINT + "\n",
+        json.dumps({"parts": [{"shape": "point", "mass": 1.0, "position": [0, 0, 0]}]}),
+    ],
+)
 def test_a_byte_order_mark_is_skipped(tmp_path, text):
     spec = tmp_path / "bom.yaml"
     spec.write_bytes(b"\xef\xbb\xbf" + text.encode())
@@ -277,14 +346,20 @@ def test_errors_name_the_field_and_never_echo_a_long_value(write_spec):
 # -- properties ------------------------------------------------------------------------------------
 
 scalars = st.one_of(
-    st.none(), st.booleans(), st.integers(-10**20, 10**20),
+    st.none(),
+    st.booleans(),
+    st.integers(-(10**20), 10**20),
     st.floats(allow_nan=False, allow_infinity=True),
     st.text(alphabet="abcdefghijklmnopqrstuvwxyz XYZ", max_size=12),
 )
-documents = st.recursive(scalars, lambda children: st.one_of(
-    st.lists(children, max_size=5),
-    st.dictionaries(st.text(alphabet="abcdefgh", min_size=1, max_size=6), children, max_size=5),
-), max_leaves=30)
+documents = st.recursive(
+    scalars,
+    lambda children: st.one_of(
+        st.lists(children, max_size=5),
+        st.dictionaries(st.text(alphabet="abcdefgh", min_size=1, max_size=6), children, max_size=5),
+    ),
+    max_leaves=30,
+)
 
 
 @settings(max_examples=100, deadline=None, derandomize=True)

@@ -31,12 +31,20 @@ def test_json_and_yaml_give_the_same_body(write_spec):
     np.testing.assert_array_equal(from_json.pivot, [0.0, 0.0, 0.0])
 
 
-@pytest.mark.parametrize("text, message", [
-    ('{"parts": [{"shape": "point", "mass": 1, "mass": 2, "position": [0, 0, 0]}]}',
-     "line 1, column 42: duplicate key 'mass'"),
-    ('{"parts": [{"shape": "point", "mass": 1 "position": [0, 0, 0]}]}', "YAML syntax error: line 1"),
-    ('{"parts": [{"shape": "point", "mass": NaN, "position": [0, 0, 0]}]}', "parts[0]: mass: must be a finite number"),
-])
+@pytest.mark.parametrize(
+    "text, message",
+    [
+        (
+            '{"parts": [{"shape": "point", "mass": 1, "mass": 2, "position": [0, 0, 0]}]}',
+            "line 1, column 42: duplicate key 'mass'",
+        ),
+        ('{"parts": [{"shape": "point", "mass": 1 "position": [0, 0, 0]}]}', "YAML syntax error: line 1"),
+        (
+            '{"parts": [{"shape": "point", "mass": NaN, "position": [0, 0, 0]}]}',
+            "parts[0]: mass: must be a finite number",
+        ),
+    ],
+)
 def test_bad_json_specs_are_one_line_errors(write_spec, text, message):
     with pytest.raises(InputError, match=message.replace("[", r"\[").replace("]", r"\]")):
         load_body(write_spec(text, "bad.json"))

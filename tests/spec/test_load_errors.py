@@ -42,9 +42,17 @@ CONE, STEM, BOLT = "parts[0] (cone)", "parts[1] (stem)", "parts[2]"
 SPEC_CASES = [
     ("missing-field", edit("    radius: 0.04\n", ""), [CONE, "radius", "missing"]),
     ("misspelt-field", edit("radius: 0.04", "raduis: 0.04"), [CONE, "raduis", "radius"]),
-    ("unknown-field", edit("    radius: 0.008\n", "    radius: 0.008\n    colour: red\n"), [STEM, "colour", "unknown"]),
+    (
+        "unknown-field",
+        edit("    radius: 0.008\n", "    radius: 0.008\n    colour: red\n"),
+        [STEM, "colour", "unknown"],
+    ),
     ("unknown-top-level-field", "colour: red\n" + TOP, ["colour", "unknown"]),
-    ("field-on-wrong-shape", edit("    mass: 0.02\n", "    mass: 0.02\n    radius: 0.01\n"), [BOLT, "radius"]),
+    (
+        "field-on-wrong-shape",
+        edit("    mass: 0.02\n", "    mass: 0.02\n    radius: 0.01\n"),
+        [BOLT, "radius"],
+    ),
     ("text-for-number", edit("radius: 0.04", "radius: big"), [CONE, "radius", "number"]),
     ("quoted-number", edit("radius: 0.04", 'radius: "0.04"'), [CONE, "radius", "number"]),
     ("bool-for-number", edit("mass: 0.1", "mass: true"), [STEM, "mass", "number"]),
@@ -83,7 +91,11 @@ SPEC_CASES = [
     ("bad-pivot", "pivot: [0, 0]\n" + TOP, ["pivot"]),
     ("yaml-syntax-error", edit("apex: [0, 0, 0]", "apex: [0, 0, 0"), ["line 8"]),
     ("yaml-tab-indent", edit("    mass: 0.1", "\tmass: 0.1"), ["line 11"]),
-    ("duplicate-yaml-key", edit("    mass: 0.1\n", "    mass: 0.1\n    mass: 0.2\n"), ["duplicate", "mass", "line 12"]),
+    (
+        "duplicate-yaml-key",
+        edit("    mass: 0.1\n", "    mass: 0.1\n    mass: 0.2\n"),
+        ["duplicate", "mass", "line 12"],
+    ),
     ("duplicate-top-level-key", TOP + "parts: []\n", ["duplicate", "parts"]),
     ("unsafe-yaml-tag", "parts: !!python/object/apply:os.system ['echo hi']\n", ["python/object"]),
     ("list-file", "- 1\n- 2\n", ["mapping"]),
@@ -133,12 +145,18 @@ def test_every_problem_command_reports_the_same_way(write_spec):
         assert_one_line_error(run_rbi_inprocess(args[0], path, *args[1:]), str(path), STEM, "radius")
 
 
-@pytest.mark.parametrize("text, mass", [
-    # YAML 1.1 would read 4e-2 and 1.0e-1 as text; users write them as numbers.
-    (edit("radius: 0.04", "radius: 4e-2").replace("mass: 0.1", "mass: 1.0e-1"), 0.52),
-    ("parts:\n  - {shape: point, mass: 2, position: [1, 0, 0]}\n"
-     "  - {shape: point, mass: 2, position: [-1, 0, 0]}\n", 4.0),
-])
+@pytest.mark.parametrize(
+    "text, mass",
+    [
+        # YAML 1.1 would read 4e-2 and 1.0e-1 as text; users write them as numbers.
+        (edit("radius: 0.04", "radius: 4e-2").replace("mass: 0.1", "mass: 1.0e-1"), 0.52),
+        (
+            "parts:\n  - {shape: point, mass: 2, position: [1, 0, 0]}\n"
+            "  - {shape: point, mass: 2, position: [-1, 0, 0]}\n",
+            4.0,
+        ),
+    ],
+)
 def test_exponents_and_integers_are_numbers(write_spec, text, mass):
     proc = run_rbi_inprocess("inertia", write_spec(text), "--format", "json")
     assert proc.returncode == 0, proc.stderr
@@ -147,8 +165,10 @@ def test_exponents_and_integers_are_numbers(write_spec, text, mass):
 
 def test_body_whose_sums_overflow(write_spec):
     # Each part is finite, the body's inertia is not: refused, not printed as null.
-    path = write_spec("parts:\n  - {shape: point, mass: 1.0, position: [1.0e+200, 0, 0]}\n"
-                      "  - {shape: point, mass: 1.0, position: [-1.0e+200, 0, 0]}\n")
+    path = write_spec(
+        "parts:\n  - {shape: point, mass: 1.0, position: [1.0e+200, 0, 0]}\n"
+        "  - {shape: point, mass: 1.0, position: [-1.0e+200, 0, 0]}\n"
+    )
     assert_one_line_error(run_rbi_inprocess("inertia", path, "--format", "json"), str(path), "too large")
 
 
@@ -177,6 +197,7 @@ def test_about_pivot_without_a_pivot(write_spec):
 
 
 # --- the same through the real program ---------------------------------------------------------
+
 
 @pytest.mark.parametrize("case", ["zero-radius", "yaml-syntax-error", "density-on-point", "too-large-part"])
 def test_through_a_subprocess(write_spec, case):

@@ -11,28 +11,38 @@ from rbi.spec.load import load_body
 from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name, density_in_units
 
 
-@pytest.mark.parametrize("name, length, mass, expected, rel", [
-    ("steel", "mm", "g", 0.00785, 1e-12),            # 7.85 g/cm³
-    ("steel", "cm", "g", 7.85, 1e-12),
-    ("aluminium 6061", "in", "lb", 0.0975, 1e-3),    # handbook: 0.0975 lb/in³
-    ("water", "ft", "lb", 62.3, 1e-3),               # 62.3 lb/ft³ at 20 °C
-    ("copper", "m", "kg", 8960.0, 0.0),
-])
+@pytest.mark.parametrize(
+    "name, length, mass, expected, rel",
+    [
+        ("steel", "mm", "g", 0.00785, 1e-12),  # 7.85 g/cm³
+        ("steel", "cm", "g", 7.85, 1e-12),
+        ("aluminium 6061", "in", "lb", 0.0975, 1e-3),  # handbook: 0.0975 lb/in³
+        ("water", "ft", "lb", 62.3, 1e-3),  # 62.3 lb/ft³ at 20 °C
+        ("copper", "m", "kg", 8960.0, 0.0),
+    ],
+)
 def test_conversion_to_file_units_matches_handbook_figures(name, length, mass, expected, rel):
     assert density_in_units(name, length, mass) == pytest.approx(expected, rel=rel)
 
 
-@pytest.mark.parametrize("spelling", ["Steel", "STAINLESS_STEEL", "aluminum-6061", "Aluminium", "Ti-6Al-4V", "ti64", " pla "])
+@pytest.mark.parametrize(
+    "spelling", ["Steel", "STAINLESS_STEEL", "aluminum-6061", "Aluminium", "Ti-6Al-4V", "ti64", " pla "]
+)
 def test_names_ignore_case_and_separators(spelling):
     assert canonical_name(spelling) in MATERIAL_DENSITIES_SI
 
 
 def test_named_density_gives_the_same_body_as_the_number(write_spec):
-    named = load_body(write_spec("""
+    named = load_body(
+        write_spec(
+            """
 units: {length: mm, mass: g}
 parts:
   - {shape: box, density: brass, center: [0, 0, 0], size: [10, 20, 30]}
-""", "named.yaml"))
+""",
+            "named.yaml",
+        )
+    )
     assert named.props.mass == pytest.approx(8500 * 1e-6 * 6000, rel=1e-13)  # 8.5 g/cm³ × 6 cm³
 
 
@@ -44,9 +54,14 @@ def test_every_table_density_is_plausible_for_a_solid_or_liquid():
 
 
 def test_unknown_material_suggests_the_closest_name(write_spec):
-    path = write_spec("parts:\n  - {name: arm, shape: sphere, density: stainles steel, center: [0, 0, 0], radius: 1}\n")
+    path = write_spec(
+        "parts:\n  - {name: arm, shape: sphere, density: stainles steel, center: [0, 0, 0], radius: 1}\n"
+    )
     with pytest.raises(InputError) as info:
         load_body(path)
     message = str(info.value)
-    assert "parts[0] (arm): density: unknown material 'stainles steel' (did you mean 'stainless steel'?)" in message
+    assert (
+        "parts[0] (arm): density: unknown material 'stainles steel' (did you mean 'stainless steel'?)"
+        in message
+    )
     assert "steel, stainless steel" in message

@@ -11,9 +11,9 @@ import pytest
 import rbi
 from tests.conftest import BODIES
 
-STEEL_BALL_KG = 7850 * 4 / 3 * math.pi * 0.01**3          # radius 10 mm: 0.0329 kg
-ALUMINIUM_CYLINDER_G = 2.7 * math.pi * 2**2 * 5            # radius 2 cm, length 5 cm, 2.7 g/cm³
-STEEL_BLOCK_LB = 24 * 7850 / 27679.9047                     # 2 × 3 × 4 in, steel in lb/in³
+STEEL_BALL_KG = 7850 * 4 / 3 * math.pi * 0.01**3  # radius 10 mm: 0.0329 kg
+ALUMINIUM_CYLINDER_G = 2.7 * math.pi * 2**2 * 5  # radius 2 cm, length 5 cm, 2.7 g/cm³
+STEEL_BLOCK_LB = 24 * 7850 / 27679.9047  # 2 × 3 × 4 in, steel in lb/in³
 
 
 def ball(radius, **mass_or_density):
@@ -22,25 +22,53 @@ def ball(radius, **mass_or_density):
 
 CASES = {
     # name: (part written in those units, the units it was written in, the hint expected)
-    "mm and kg": (ball(10, mass=STEEL_BALL_KG), {"length": "mm", "mass": "kg"},
-                  "lengths look like millimetres: add units: {length: mm}"),
-    "mm and g": (ball(10, mass=1000 * STEEL_BALL_KG), {"length": "mm", "mass": "g"},
-                 "lengths look like millimetres and masses like grams: add units: {length: mm, mass: g}"),
-    "cm and g": ({"name": "rod", "shape": "cylinder", "radius": 2, "start": [0, 0, 0], "end": [0, 0, 5],
-                  "mass": ALUMINIUM_CYLINDER_G}, {"length": "cm", "mass": "g"},
-                 "lengths look like centimetres and masses like grams: add units: {length: cm, mass: g}"),
-    "cm, density in g/cm³": ({"name": "block", "shape": "box", "center": [0, 0, 0], "size": [10, 20, 30],
-                              "density": 7.85}, {"length": "cm", "mass": "g"},
-                             "add units: {length: cm, mass: g}"),
-    "in and lb": ({"name": "block", "shape": "box", "center": [0, 0, 0], "size": [2, 3, 4], "mass": STEEL_BLOCK_LB},
-                  {"length": "in", "mass": "lb"},
-                  "lengths look like inches and masses like pounds: add units: {length: in, mass: lb}"),
-    "in, density in lb/in³": (ball(2, density=7850 / 27679.9047), {"length": "in", "mass": "lb"},
-                              "add units: {length: in, mass: lb}"),
-    "g": ({"name": "cube", "shape": "box", "center": [0, 0, 0], "size": [0.1, 0.1, 0.1], "mass": 7850.0},
-          {"length": "m", "mass": "g"}, "masses look like grams: add units: {mass: g}"),
-    "mm, density: steel": (ball(10, density="steel"), {"length": "mm", "mass": "kg"},
-                           "lengths look like millimetres (or "),
+    "mm and kg": (
+        ball(10, mass=STEEL_BALL_KG),
+        {"length": "mm", "mass": "kg"},
+        "lengths look like millimetres: add units: {length: mm}",
+    ),
+    "mm and g": (
+        ball(10, mass=1000 * STEEL_BALL_KG),
+        {"length": "mm", "mass": "g"},
+        "lengths look like millimetres and masses like grams: add units: {length: mm, mass: g}",
+    ),
+    "cm and g": (
+        {
+            "name": "rod",
+            "shape": "cylinder",
+            "radius": 2,
+            "start": [0, 0, 0],
+            "end": [0, 0, 5],
+            "mass": ALUMINIUM_CYLINDER_G,
+        },
+        {"length": "cm", "mass": "g"},
+        "lengths look like centimetres and masses like grams: add units: {length: cm, mass: g}",
+    ),
+    "cm, density in g/cm³": (
+        {"name": "block", "shape": "box", "center": [0, 0, 0], "size": [10, 20, 30], "density": 7.85},
+        {"length": "cm", "mass": "g"},
+        "add units: {length: cm, mass: g}",
+    ),
+    "in and lb": (
+        {"name": "block", "shape": "box", "center": [0, 0, 0], "size": [2, 3, 4], "mass": STEEL_BLOCK_LB},
+        {"length": "in", "mass": "lb"},
+        "lengths look like inches and masses like pounds: add units: {length: in, mass: lb}",
+    ),
+    "in, density in lb/in³": (
+        ball(2, density=7850 / 27679.9047),
+        {"length": "in", "mass": "lb"},
+        "add units: {length: in, mass: lb}",
+    ),
+    "g": (
+        {"name": "cube", "shape": "box", "center": [0, 0, 0], "size": [0.1, 0.1, 0.1], "mass": 7850.0},
+        {"length": "m", "mass": "g"},
+        "masses look like grams: add units: {mass: g}",
+    ),
+    "mm, density: steel": (
+        ball(10, density="steel"),
+        {"length": "mm", "mass": "kg"},
+        "lengths look like millimetres (or ",
+    ),
 }
 
 
@@ -71,7 +99,10 @@ def test_the_steel_ball_in_mm_and_kg_comes_out_as_exactly_steel():
 
 
 def test_several_wrong_parts_give_one_line_naming_the_first():
-    parts = [ball(10, mass=STEEL_BALL_KG), {**ball(5, mass=STEEL_BALL_KG / 8), "name": "small", "center": [30, 0, 0]}]
+    parts = [
+        ball(10, mass=STEEL_BALL_KG),
+        {**ball(5, mass=STEEL_BALL_KG / 8), "name": "small", "center": [30, 0, 0]},
+    ]
     warnings = rbi.load({"parts": parts}).warnings
     assert len(warnings) == 1 and "parts[0] (ball) (and 1 more part)" in warnings[0]
 

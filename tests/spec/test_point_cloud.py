@@ -31,10 +31,12 @@ def write_csv(path, masses, positions, header="mass,x,y,z"):
     path.write_text("\n".join(rows) + "\n")
 
 
-cloud = st.integers(2, 12).flatmap(lambda n: st.tuples(
-    st.lists(st.floats(0.01, 10.0), min_size=n, max_size=n),
-    st.lists(st.lists(st.floats(-5.0, 5.0), min_size=3, max_size=3), min_size=n, max_size=n),
-))
+cloud = st.integers(2, 12).flatmap(
+    lambda n: st.tuples(
+        st.lists(st.floats(0.01, 10.0), min_size=n, max_size=n),
+        st.lists(st.lists(st.floats(-5.0, 5.0), min_size=3, max_size=3), min_size=n, max_size=n),
+    )
+)
 
 
 @settings(max_examples=25, deadline=None, derandomize=True)
@@ -44,8 +46,10 @@ def test_a_csv_cloud_is_the_same_body_as_its_points_in_yaml(tmp_path_factory, po
     folder = tmp_path_factory.mktemp("cloud")
     write_csv(folder / "pts.csv", masses, positions)
     (folder / "cloud.yaml").write_text("point_cloud: {file: pts.csv}\n")
-    parts = "\n".join(f"  - {{shape: point, mass: {m:.17e}, position: [{p[0]:.17e}, {p[1]:.17e}, {p[2]:.17e}]}}"
-                      for m, p in zip(masses, positions))
+    parts = "\n".join(
+        f"  - {{shape: point, mass: {m:.17e}, position: [{p[0]:.17e}, {p[1]:.17e}, {p[2]:.17e}]}}"
+        for m, p in zip(masses, positions)
+    )
     (folder / "parts.yaml").write_text("parts:\n" + parts + "\n")
     from_cloud = load_body(folder / "cloud.yaml").props
     from_parts = load_body(folder / "parts.yaml").props
@@ -82,8 +86,10 @@ def test_a_cloud_and_parts_together_and_a_path_relative_to_the_spec(tmp_path, mo
     (tmp_path / "data").mkdir()
     write_csv(tmp_path / "data" / "pts.csv", [1.0, 3.0], [[0.0, 0.0, 1.0], [0.0, 0.0, -1.0]])
     spec = tmp_path / "body.yaml"
-    spec.write_text("parts:\n  - {shape: point, mass: 2.0, position: [2.0, 0.0, 0.0]}\n"
-                    "point_cloud: {file: data/pts.csv}\n")
+    spec.write_text(
+        "parts:\n  - {shape: point, mass: 2.0, position: [2.0, 0.0, 0.0]}\n"
+        "point_cloud: {file: data/pts.csv}\n"
+    )
     monkeypatch.chdir("/")  # the cloud is found next to the spec, not in the working folder
     body = load_body(spec)
     M, com, I = direct_sums([2.0, 1.0, 3.0], [[2.0, 0, 0], [0, 0, 1.0], [0, 0, -1.0]])
@@ -96,7 +102,9 @@ def test_a_large_cloud_matches_the_vectorised_definition(tmp_path):
     # 10⁵ points through the CSV reader (a check of the arithmetic at size, not of speed).
     rng = np.random.default_rng(5)
     n = 100_000
-    table = np.column_stack((rng.uniform(0.5, 1.5, n), rng.normal(size=(n, 3)) * [1.0, 2.0, 0.5] + [10.0, 0, 0]))
+    table = np.column_stack(
+        (rng.uniform(0.5, 1.5, n), rng.normal(size=(n, 3)) * [1.0, 2.0, 0.5] + [10.0, 0, 0])
+    )
     np.savetxt(tmp_path / "big.csv", table, delimiter=",", fmt="%.17g", header="mass,x,y,z", comments="")
     (tmp_path / "big.yaml").write_text("point_cloud: {file: big.csv}\n")
     props = load_body(tmp_path / "big.yaml").props
@@ -109,16 +117,19 @@ def test_a_large_cloud_matches_the_vectorised_definition(tmp_path):
     np.testing.assert_allclose(props.inertia_com, I, rtol=0, atol=1e-12 * np.max(np.abs(I)))
 
 
-@pytest.mark.parametrize("content, expected", [
-    ("mass,x,y\n1,2,3\n", "header must name the columns mass, x, y, z (missing z"),
-    ("mass,x,y,z\n1,0,0,0\n2,0,abc,0\n", "line 3: column 3: must be a number"),
-    ("mass,x,y,z\n1,0,0,0\n2,0,0\n", "line 3: has 3 columns"),
-    ("mass,x,y,z\n1,0,0,0\n-2,0,0,0\n", "point 1: mass: must be greater than 0"),
-    ("mass,x,y,z\n1,0,0,0\n0,0,0,0\n", "point 1: mass: must be greater than 0"),
-    ("mass,x,y,z\n1,0,nan,0\n", "point 0: y: must be a finite number"),
-    ("mass,x,y,z\n", "holds no points"),
-    ("", "file is empty"),
-])
+@pytest.mark.parametrize(
+    "content, expected",
+    [
+        ("mass,x,y\n1,2,3\n", "header must name the columns mass, x, y, z (missing z"),
+        ("mass,x,y,z\n1,0,0,0\n2,0,abc,0\n", "line 3: column 3: must be a number"),
+        ("mass,x,y,z\n1,0,0,0\n2,0,0\n", "line 3: has 3 columns"),
+        ("mass,x,y,z\n1,0,0,0\n-2,0,0,0\n", "point 1: mass: must be greater than 0"),
+        ("mass,x,y,z\n1,0,0,0\n0,0,0,0\n", "point 1: mass: must be greater than 0"),
+        ("mass,x,y,z\n1,0,nan,0\n", "point 0: y: must be a finite number"),
+        ("mass,x,y,z\n", "holds no points"),
+        ("", "file is empty"),
+    ],
+)
 def test_bad_csv_clouds_are_one_line_errors(tmp_path, content, expected):
     (tmp_path / "pts.csv").write_text(content)
     (tmp_path / "body.yaml").write_text("point_cloud: {file: pts.csv}\n")
@@ -153,6 +164,7 @@ def test_a_spec_needs_parts_or_a_cloud_and_the_cli_says_so(tmp_path):
 
 
 # -- hostile or odd cloud files: each refused with one line before the expensive work -----------
+
 
 def _spec_for(tmp_path, file):
     (tmp_path / "body.yaml").write_text(f"point_cloud: {{file: {file}}}\n")

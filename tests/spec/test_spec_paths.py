@@ -69,7 +69,9 @@ def test_paths_that_stay_inside_are_read(layout):
 def test_allow_outside_paths_before_or_after_the_command(layout, before):
     spec_dir, outside = layout
     spec = write(spec_dir, str(outside / "good.csv"))
-    args = ["--allow-outside-paths", "inertia", spec] if before else ["inertia", spec, "--allow-outside-paths"]
+    args = (
+        ["--allow-outside-paths", "inertia", spec] if before else ["inertia", spec, "--allow-outside-paths"]
+    )
     proc = run_rbi_inprocess(*args, "--format", "json")
     assert proc.returncode == 0, proc.stderr
     import json
@@ -79,7 +81,9 @@ def test_allow_outside_paths_before_or_after_the_command(layout, before):
     assert result["mass"] == 4.0
     np.testing.assert_allclose(result["center_of_mass"], [0, 0, -0.5], atol=1e-15)
     # ``..`` is allowed by the flag too
-    proc = run_rbi_inprocess("inertia", write(spec_dir, "../outside/good.csv", "b.yaml"), "--allow-outside-paths")
+    proc = run_rbi_inprocess(
+        "inertia", write(spec_dir, "../outside/good.csv", "b.yaml"), "--allow-outside-paths"
+    )
     assert proc.returncode == 0, proc.stderr
 
 
@@ -98,8 +102,13 @@ def test_proc_self_environ_is_refused_and_never_printed(tmp_path):
     spec.write_text("point_cloud: {file: /proc/self/environ}\n")
     env = dict(os.environ, RBI_TEST_SECRET=SECRET)
     for extra in ([], ["--allow-outside-paths"]):
-        proc = subprocess.run([sys.executable, "-m", "rbi", "inertia", str(spec), *extra], capture_output=True,
-                              text=True, timeout=60, env=env)
+        proc = subprocess.run(
+            [sys.executable, "-m", "rbi", "inertia", str(spec), *extra],
+            capture_output=True,
+            text=True,
+            timeout=60,
+            env=env,
+        )
         one_line_exit_2(proc, "/proc/self/environ")
         assert SECRET.lower() not in proc.stderr.lower()  # (the header is lower-cased before it is read)
 
@@ -120,16 +129,24 @@ def test_sys_paths_are_refused_or_missing(tmp_path):
 
 def test_a_fifo_beside_the_spec_is_refused_without_blocking(tmp_path):
     os.mkfifo(tmp_path / "pts.csv")
-    proc = subprocess.run([sys.executable, "-m", "rbi", "inertia", str(write(tmp_path, "pts.csv"))],
-                          capture_output=True, text=True, timeout=60)
+    proc = subprocess.run(
+        [sys.executable, "-m", "rbi", "inertia", str(write(tmp_path, "pts.csv"))],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     one_line_exit_2(proc, "not a regular file")
 
 
-@pytest.mark.parametrize("file, words", [
-    ('"a\\0b.csv"', ["NUL"]),
-    ('"' + "a" * 300 + '.csv"', ["no such file"]),
-    ('"."', ["not a regular file"]),
-], ids=["nul-character", "300-character-name", "the-folder-itself"])
+@pytest.mark.parametrize(
+    "file, words",
+    [
+        ('"a\\0b.csv"', ["NUL"]),
+        ('"' + "a" * 300 + '.csv"', ["no such file"]),
+        ('"."', ["not a regular file"]),
+    ],
+    ids=["nul-character", "300-character-name", "the-folder-itself"],
+)
 def test_odd_paths_are_one_line_errors(tmp_path, file, words):
     spec = tmp_path / "odd.yaml"
     spec.write_text(f"point_cloud: {{file: {file}}}\n")

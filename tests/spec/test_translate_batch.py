@@ -17,9 +17,11 @@ from rbi.spec.translate_batch import MIN_PARTS, batch_elements
 coordinate = st.floats(-5.0, 5.0, allow_nan=False)
 vector = st.lists(coordinate, min_size=3, max_size=3)
 positive = st.floats(1e-3, 3.0)
-amount = st.one_of(st.builds(lambda m: {"mass": m}, positive),
-                   st.builds(lambda d: {"density": d}, st.floats(1.0, 2e4)),
-                   st.sampled_from([{"density": "steel"}, {"density": "aluminium"}, {"density": "water"}]))
+amount = st.one_of(
+    st.builds(lambda m: {"mass": m}, positive),
+    st.builds(lambda d: {"density": d}, st.floats(1.0, 2e4)),
+    st.sampled_from([{"density": "steel"}, {"density": "aluminium"}, {"density": "water"}]),
+)
 hole = st.sampled_from([{}, {}, {}, {"subtract": True}])
 
 
@@ -28,17 +30,45 @@ def _apart(a, b) -> bool:
 
 
 point = st.builds(lambda m, p: {"shape": "point", "mass": m, "position": p}, positive, vector)
-cylinder = st.builds(lambda a, h, r, s, e: {"shape": "cylinder", "radius": r, "start": s, "end": e, **a, **h},
-                     amount, hole, positive, vector, vector).filter(lambda p: _apart(p["start"], p["end"]))
-cone = st.builds(lambda a, h, r, s, e: {"shape": "cone", "radius": r, "apex": s, "base": e, **a, **h},
-                 amount, hole, positive, vector, vector).filter(lambda p: _apart(p["apex"], p["base"]))
-sphere = st.builds(lambda a, h, r, c: {"shape": "sphere", "radius": r, "center": c, **a, **h},
-                   amount, hole, positive, vector)
-box = st.builds(lambda a, h, s, c: {"shape": "box", "size": s, "center": c, **a, **h},
-                amount, hole, st.lists(positive, min_size=3, max_size=3), vector)
-turned_box = st.builds(lambda a, s, c, ang: {"shape": "box", "size": s, "center": c,
-                                             "rotation": {"axis": [0, 0, 1], "angle_deg": ang}, **a},
-                       amount, st.lists(positive, min_size=3, max_size=3), vector, st.floats(1.0, 89.0))
+cylinder = st.builds(
+    lambda a, h, r, s, e: {"shape": "cylinder", "radius": r, "start": s, "end": e, **a, **h},
+    amount,
+    hole,
+    positive,
+    vector,
+    vector,
+).filter(lambda p: _apart(p["start"], p["end"]))
+cone = st.builds(
+    lambda a, h, r, s, e: {"shape": "cone", "radius": r, "apex": s, "base": e, **a, **h},
+    amount,
+    hole,
+    positive,
+    vector,
+    vector,
+).filter(lambda p: _apart(p["apex"], p["base"]))
+sphere = st.builds(
+    lambda a, h, r, c: {"shape": "sphere", "radius": r, "center": c, **a, **h}, amount, hole, positive, vector
+)
+box = st.builds(
+    lambda a, h, s, c: {"shape": "box", "size": s, "center": c, **a, **h},
+    amount,
+    hole,
+    st.lists(positive, min_size=3, max_size=3),
+    vector,
+)
+turned_box = st.builds(
+    lambda a, s, c, ang: {
+        "shape": "box",
+        "size": s,
+        "center": c,
+        "rotation": {"axis": [0, 0, 1], "angle_deg": ang},
+        **a,
+    },
+    amount,
+    st.lists(positive, min_size=3, max_size=3),
+    vector,
+    st.floats(1.0, 89.0),
+)
 patterned = st.builds(lambda p: {**p, "pattern": {"count": 3, "step": [0.1, 0.0, 0.0]}}, cylinder)
 any_part = st.one_of(point, cylinder, cone, sphere, box, turned_box, patterned)
 
@@ -60,7 +90,9 @@ def _close(a, b, scale):
     return np.max(np.abs(np.asarray(a) - np.asarray(b))) <= 4e-15 * scale
 
 
-@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+@settings(
+    max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large]
+)
 @given(st.lists(any_part, min_size=MIN_PARTS, max_size=MIN_PARTS + 40))
 def test_batched_elements_equal_the_per_part_path(parts):
     spec = _spec(parts)
@@ -73,7 +105,9 @@ def test_batched_elements_equal_the_per_part_path(parts):
         want = part_element(spec.parts[i], spec.units, "batch.yaml")
         assert element.mass == pytest.approx(want.mass, rel=1e-15, abs=0)
         assert _close(element.com, want.com, max(1.0, float(np.max(np.abs(want.com)))))
-        assert _close(element.inertia_com, want.inertia_com, float(np.max(np.abs(want.inertia_com))) or 1e-300)
+        assert _close(
+            element.inertia_com, want.inertia_com, float(np.max(np.abs(want.inertia_com))) or 1e-300
+        )
     # the whole body, holes left out (they must lie inside a solid, which random parts do not)
     solid = _spec([{k: v for k, v in p.items() if k != "subtract"} for p in parts])
     expected = _per_part(solid)
@@ -85,29 +119,41 @@ def test_batched_elements_equal_the_per_part_path(parts):
     props = combine_elements(expected)
     assert body.props.mass == pytest.approx(props.mass, rel=1e-14)
     assert np.allclose(body.props.com, props.com, rtol=1e-13, atol=1e-13)
-    assert np.allclose(body.props.inertia_com, props.inertia_com, rtol=1e-12,
-                       atol=1e-12 * np.max(np.abs(props.inertia_com)))
+    assert np.allclose(
+        body.props.inertia_com, props.inertia_com, rtol=1e-12, atol=1e-12 * np.max(np.abs(props.inertia_com))
+    )
 
 
 def test_a_hole_through_the_batch():
     """A spec of many parts with a hole: the hole is negated as in the per-part path."""
     parts = [{"shape": "cylinder", "density": 1000.0, "radius": 0.5, "start": [0, 0, 0], "end": [0, 0, 1]}]
     parts += [{"shape": "point", "mass": 0.001, "position": [0.1, 0.0, 0.5]}] * 80
-    parts.append({"shape": "cylinder", "density": 1000.0, "radius": 0.1, "start": [0, 0, 0], "end": [0, 0, 1],
-                  "subtract": True})
+    parts.append(
+        {
+            "shape": "cylinder",
+            "density": 1000.0,
+            "radius": 0.1,
+            "start": [0, 0, 0],
+            "end": [0, 0, 1],
+            "subtract": True,
+        }
+    )
     body = body_from_spec(_spec(parts), "batch.yaml")
     full, hole = 1000.0 * np.pi * 0.25, 1000.0 * np.pi * 0.01
     assert body.props.mass == pytest.approx(full - hole + 0.08, rel=1e-14)
     assert body.elements[-1].mass == pytest.approx(-hole, rel=1e-15)
-    assert body.props.inertia_com[2, 2] == pytest.approx(0.5 * full * 0.25 - 0.5 * hole * 0.01
-                                                          + 80 * 0.001 * 0.01 - (0.08 ** 2 * 0.01) / body.props.mass,
-                                                          rel=1e-12)
+    assert body.props.inertia_com[2, 2] == pytest.approx(
+        0.5 * full * 0.25 - 0.5 * hole * 0.01 + 80 * 0.001 * 0.01 - (0.08**2 * 0.01) / body.props.mass,
+        rel=1e-12,
+    )
 
 
 def test_cylinder_closed_form_through_the_batch():
     """An independent check: 100 equal steel cylinders along z, by density, give n times the
     textbook cylinder (m = ρπr²L, I_zz = ½ m r², I_xx = m (3r² + L²)/12)."""
-    parts = [{"shape": "cylinder", "density": 7850.0, "radius": 0.1, "start": [0, 0, 0], "end": [0, 0, 2.0]}] * 100
+    parts = [
+        {"shape": "cylinder", "density": 7850.0, "radius": 0.1, "start": [0, 0, 0], "end": [0, 0, 2.0]}
+    ] * 100
     body = body_from_spec(_spec(parts), "batch.yaml")
     m = 7850.0 * np.pi * 0.01 * 2.0
     assert body.props.mass == pytest.approx(100 * m, rel=1e-14)

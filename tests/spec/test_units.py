@@ -28,8 +28,13 @@ def spec_text(length_unit: str, mass_unit: str, L: float, M: float) -> str:
     lines = [f"units: {{length: {length_unit}, mass: {mass_unit}}}", f"pivot: {vec(SI_PIVOT)}", "parts:"]
     for shape, mass, radius, a, b in SI_PARTS:
         ends = ("apex", "base") if shape == "cone" else ("start", "end")
-        lines += [f"  - shape: {shape}", f"    mass: {mass / M!r}", f"    radius: {radius / L!r}",
-                  f"    {ends[0]}: {vec(a)}", f"    {ends[1]}: {vec(b)}"]
+        lines += [
+            f"  - shape: {shape}",
+            f"    mass: {mass / M!r}",
+            f"    radius: {radius / L!r}",
+            f"    {ends[0]}: {vec(a)}",
+            f"    {ends[1]}: {vec(b)}",
+        ]
     lines += ["  - shape: point", f"    mass: {SI_BOLT[0] / M!r}", f"    position: {vec(SI_BOLT[1])}"]
     return "\n".join(lines) + "\n"
 
@@ -41,8 +46,12 @@ def rbi_json(*args):
 
 
 # Exact definitions (NIST): 1 in = 0.0254 m, 1 ft = 0.3048 m, 1 lb = 0.45359237 kg.
-UNIT_SETS = [("mm", "g", 1e-3, 1e-3), ("cm", "kg", 1e-2, 1.0), ("in", "lb", 0.0254, 0.45359237),
-             ("ft", "g", 0.3048, 1e-3)]
+UNIT_SETS = [
+    ("mm", "g", 1e-3, 1e-3),
+    ("cm", "kg", 1e-2, 1.0),
+    ("in", "lb", 0.0254, 0.45359237),
+    ("ft", "g", 0.3048, 1e-3),
+]
 
 
 @pytest.mark.parametrize("length_unit, mass_unit, L, M", UNIT_SETS)
@@ -53,23 +62,31 @@ def test_results_come_back_in_the_files_units(write_spec, length_unit, mass_unit
         a, b = rbi_json("inertia", si, "--about", about), rbi_json("inertia", other, "--about", about)
         assert b["units"] == {"length": length_unit, "mass": mass_unit}
         assert b["mass"] == pytest.approx(a["mass"] / M, rel=1e-12)
-        np.testing.assert_allclose(b["center_of_mass"], np.array(a["center_of_mass"]) / L, rtol=1e-12, atol=1e-12)
+        np.testing.assert_allclose(
+            b["center_of_mass"], np.array(a["center_of_mass"]) / L, rtol=1e-12, atol=1e-12
+        )
         np.testing.assert_allclose(b["about"], np.array(a["about"]) / L, rtol=1e-12, atol=1e-12)
         expected = np.array(a["inertia"]) / (M * L * L)
         np.testing.assert_allclose(b["inertia"], expected, rtol=1e-10, atol=1e-12 * np.abs(expected).max())
     w = "0.5,-1.0,30.0"
     a, b = rbi_json("momentum", si, "--omega", w), rbi_json("momentum", other, "--omega", w)
-    np.testing.assert_allclose(b["angular_momentum"], np.array(a["angular_momentum"]) / (M * L * L), rtol=1e-10)
+    np.testing.assert_allclose(
+        b["angular_momentum"], np.array(a["angular_momentum"]) / (M * L * L), rtol=1e-10
+    )
     assert b["kinetic_energy"] == pytest.approx(a["kinetic_energy"] / (M * L * L), rel=1e-10)
     assert b["angle_deg"] == pytest.approx(a["angle_deg"], rel=1e-9)
 
 
 def test_density_is_mass_per_cubic_length_unit(write_spec):
     # Steel, 7850 kg/m³ = 0.00785 g/mm³: a 20 mm × 100 mm rod weighs 7850 π 0.01² 0.1 kg.
-    si = write_spec("parts:\n  - {shape: cylinder, density: 7850.0, radius: 0.01, start: [0, 0, 0], end: [0.1, 0, 0]}\n")
-    mm = write_spec("units: {length: mm, mass: g}\n"
-                    "parts:\n  - {shape: cylinder, density: 0.00785, radius: 10.0, start: [0, 0, 0], end: [100.0, 0, 0]}\n",
-                    name="mm.yaml")
+    si = write_spec(
+        "parts:\n  - {shape: cylinder, density: 7850.0, radius: 0.01, start: [0, 0, 0], end: [0.1, 0, 0]}\n"
+    )
+    mm = write_spec(
+        "units: {length: mm, mass: g}\n"
+        "parts:\n  - {shape: cylinder, density: 0.00785, radius: 10.0, start: [0, 0, 0], end: [100.0, 0, 0]}\n",
+        name="mm.yaml",
+    )
     kg = 7850.0 * np.pi * 0.01**2 * 0.1
     assert rbi_json("inertia", si)["mass"] == pytest.approx(kg, rel=1e-13)
     assert rbi_json("inertia", mm)["mass"] == pytest.approx(1000.0 * kg, rel=1e-13)
@@ -77,8 +94,11 @@ def test_density_is_mass_per_cubic_length_unit(write_spec):
 
 def test_table_headers_carry_the_files_units(write_spec):
     path = write_spec(spec_text("mm", "g", 1e-3, 1e-3))
-    for args, labels in ((["inertia"], ["g·mm²", "mm", " g "]), (["principal"], ["g·mm²"]),
-                         (["momentum", "--omega", "0,0,100"], ["g·mm²/s", "rad/s", "g·mm²/s²"])):
+    for args, labels in (
+        (["inertia"], ["g·mm²", "mm", " g "]),
+        (["principal"], ["g·mm²"]),
+        (["momentum", "--omega", "0,0,100"], ["g·mm²/s", "rad/s", "g·mm²/s²"]),
+    ):
         proc = run_rbi_inprocess(args[0], path, *args[1:])
         assert proc.returncode == 0, proc.stderr
         for label in labels:

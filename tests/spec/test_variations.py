@@ -31,19 +31,25 @@ def test_paths_reach_numbers_by_part_name_index_and_component(raw):
     assert resolve(raw, "parts.bolt.position[0]").steps == ("parts", 1, "position", 0)
     assert resolve(raw, "parts.2.mass").steps == ("parts", 2, "mass")
     assert resolve(raw, "pivot[2]").steps == ("pivot", 2)
-    assert current_values(raw, [resolve(raw, "parts.disc.radius"), resolve(raw, "parts.bolt.mass")]) == [0.1, 0.02]
+    assert current_values(raw, [resolve(raw, "parts.disc.radius"), resolve(raw, "parts.bolt.mass")]) == [
+        0.1,
+        0.02,
+    ]
 
 
-@pytest.mark.parametrize("path, words", [
-    ("parts.nut.mass", ["parts has no entry 'nut'", "disc, bolt"]),
-    ("parts.bolt.masss", ["parts.bolt.masss: no such field", "mass, name, position, shape"]),
-    ("parts.bolt.position[3]", ["parts.bolt.position has no entry 3"]),
-    ("parts.bolt.position", ["must name a number", "list"]),
-    ("parts.bolt.shape", ["must name a number", "'point'"]),
-    ("name", ["must name a number"]),
-    ("parts..mass", ["cannot read"]),
-    ("", ["field path"]),
-])
+@pytest.mark.parametrize(
+    "path, words",
+    [
+        ("parts.nut.mass", ["parts has no entry 'nut'", "disc, bolt"]),
+        ("parts.bolt.masss", ["parts.bolt.masss: no such field", "mass, name, position, shape"]),
+        ("parts.bolt.position[3]", ["parts.bolt.position has no entry 3"]),
+        ("parts.bolt.position", ["must name a number", "list"]),
+        ("parts.bolt.shape", ["must name a number", "'point'"]),
+        ("name", ["must name a number"]),
+        ("parts..mass", ["cannot read"]),
+        ("", ["field path"]),
+    ],
+)
 def test_bad_paths_name_the_path_and_what_is_there(raw, path, words):
     with pytest.raises(InputError) as info:
         resolve(raw, path)

@@ -37,6 +37,7 @@ def largest_drift(scene_, run) -> float:
 
 # --- high spin ------------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("omega", [[6e3, 0.0, 8e3], [3e3, 4e3, 5e3 * math.sqrt(2.0)]])
 def test_free_tumbling_at_ten_thousand_rad_per_s_follows_euler_poinsot(omega):
     # About 1600 turns in one second, a generic tumble of the T-handle.
@@ -64,6 +65,7 @@ def test_bolted_top_at_ten_thousand_rad_per_s_converges():
 
 # --- long runs ------------------------------------------------------------------------------
 
+
 def test_a_thousand_seconds_of_tumbling_against_the_closed_form():
     free = scene("tbar.yaml")
     q0, w0 = initial_state(0.0, [12.0, 16.0, 20.0])  # ~ 2600 periods of ω
@@ -79,6 +81,7 @@ def test_a_thousand_seconds_of_tumbling_against_the_closed_form():
 
 
 # --- the sleeping-top threshold, from both sides ----------------------------------------------
+
 
 def lowest_turning_point_deg(top, tilt0_deg: float, spin: float) -> float:
     """Largest tilt of a symmetric top started at tilt θ₀ with pure spin ω₃ and no other
@@ -117,6 +120,7 @@ def test_sleeping_threshold_to_a_tenth_of_a_percent(fraction):
 
 # --- the Dzhanibekov flip through the command line -------------------------------------------
 
+
 def t_handle_moments() -> tuple[float, float, float]:
     """Central moments of bodies/tbar.yaml about x, y, z, worked out by hand: handle (0.3 kg,
     r 0.01, length 0.2 along x, centred at the origin) and shank (0.2 kg, r 0.008, length 0.12
@@ -146,8 +150,21 @@ def test_t_handle_flips_with_the_elliptic_period_through_the_command_line(tmp_pa
     half_period = 2 * float(ellipk(k2)) / lam  # ω_z ∝ sn changes sign every 2K/λ
     out = tmp_path / "flip.csv"
     duration = 3.5 * half_period
-    run_rbi("simulate", BODIES / "tbar.yaml", "--omega", f"{w['x']},{w['y']},{w['z']}",
-            "--duration", repr(duration), "--samples", "20001", "--out", out, "--format", "json", check=True)
+    run_rbi(
+        "simulate",
+        BODIES / "tbar.yaml",
+        "--omega",
+        f"{w['x']},{w['y']},{w['z']}",
+        "--duration",
+        repr(duration),
+        "--samples",
+        "20001",
+        "--out",
+        out,
+        "--format",
+        "json",
+        check=True,
+    )
     rows = list(csv.DictReader(io.StringIO(out.read_text())))
     t = np.array([float(r["t"]) for r in rows])
     wz = np.array([float(r["wz"]) for r in rows])
@@ -159,15 +176,19 @@ def test_t_handle_flips_with_the_elliptic_period_through_the_command_line(tmp_pa
 
 # --- singular bodies ---------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("pivot", [None, "[-0.5, -0.5, -0.5]"])
 def test_bodies_of_collinear_points_cannot_be_simulated(write_spec, tmp_path, pivot):
     # Point masses on the slanted line through (1, 1, 1): no inertia about that line, through
     # their centre of mass (free body) or through a pivot on the same line.
-    spec = write_spec(("" if pivot is None else f"pivot: {pivot}\n") + """parts:
+    spec = write_spec(
+        ("" if pivot is None else f"pivot: {pivot}\n")
+        + """parts:
   - {shape: point, mass: 1.0, position: [1.0, 1.0, 1.0]}
   - {shape: point, mass: 2.0, position: [2.0, 2.0, 2.0]}
   - {shape: point, mass: 0.5, position: [-3.0, -3.0, -3.0]}
-""")
+"""
+    )
     out = tmp_path / "never.csv"
     proc = run_rbi("simulate", spec, "--omega", "1,2,3", "--out", out)
     assert proc.returncode == 2

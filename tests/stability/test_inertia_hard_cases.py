@@ -47,6 +47,7 @@ def parallel(u, v, tol):
 
 # --- near-degenerate moments -------------------------------------------------------------
 
+
 @pytest.mark.parametrize("seed", range(4))
 @pytest.mark.parametrize("relative_bump", [1e-12, -1e-12, 3e-13])
 def test_axisymmetric_body_with_a_tiny_perturbation(write_spec, seed, relative_bump):
@@ -60,19 +61,22 @@ def test_axisymmetric_body_with_a_tiny_perturbation(write_spec, seed, relative_b
     end = start + L * u
     centre = 0.5 * (start + end)
     transverse = m * (3 * r * r + L * L) / 12
-    speck = abs(relative_bump) * transverse / (0.1 ** 2)
+    speck = abs(relative_bump) * transverse / (0.1**2)
     off_axis = centre + 0.1 * (w if relative_bump > 0 else Q[:, 2])
-    body, moments, axes = principal_of(write_spec, f"""
+    body, moments, axes = principal_of(
+        write_spec,
+        f"""
 parts:
   - {{shape: cylinder, mass: {m}, radius: {r}, start: {vec(start)}, end: {vec(end)}}}
   - {{shape: point, mass: {num(speck)}, position: {vec(off_axis)}}}
-""")
+""",
+    )
     assert_clean_frame(axes)
     assert np.all(np.diff(moments) >= 0)
     axial = m * r * r / 2
     # The speck, 0.1 from the axis, adds speck·0.1² to the moments about u and about the
     # perpendicular it is not on (its pull on the centre of mass is of second order, ~1e-24).
-    bump = speck * 0.1 ** 2
+    bump = speck * 0.1**2
     np.testing.assert_allclose(moments, [axial + bump, transverse, transverse + bump], rtol=1e-14)
     # The axis of the distinct (axial) moment is the cylinder's axis, whatever the split.
     assert parallel(axes[0], u, 1e-11)
@@ -84,6 +88,7 @@ parts:
 
 
 # --- bodies whose three central moments are equal ---------------------------------------
+
 
 def test_cone_and_cylinder_proportions_with_equal_moments_symbolically():
     # Independent of rbi: integrate over the solids with sympy and find the proportions at
@@ -123,7 +128,9 @@ def test_equal_moments_give_a_clean_right_handed_set(write_spec, shape, seed):
         moment = m * r * r / 2
     else:
         h = 2.0 * r
-        spec = f"parts:\n  - {{shape: cone, mass: {m}, radius: {r}, apex: {vec(a)}, base: {vec(a + h * u)}}}\n"
+        spec = (
+            f"parts:\n  - {{shape: cone, mass: {m}, radius: {r}, apex: {vec(a)}, base: {vec(a + h * u)}}}\n"
+        )
         moment = 0.3 * m * r * r
     body, moments, axes = principal_of(write_spec, spec)
     np.testing.assert_allclose(moments, [moment] * 3, rtol=1e-13)
@@ -135,7 +142,9 @@ def test_equal_moments_give_a_clean_right_handed_set(write_spec, shape, seed):
 
 def test_equal_moments_through_the_command_line(write_spec):
     r = 0.05
-    path = write_spec(f"parts:\n  - {{shape: cone, mass: 2.0, radius: {r}, apex: [0, 0, 0], base: [0.06, 0.0, 0.08]}}\n")
+    path = write_spec(
+        f"parts:\n  - {{shape: cone, mass: 2.0, radius: {r}, apex: [0, 0, 0], base: [0.06, 0.0, 0.08]}}\n"
+    )
     out = json.loads(run_rbi("principal", path, "--format", "json", check=True).stdout)
     axes = np.array(out["axes"])
     assert_clean_frame(axes, tol=0)
@@ -143,6 +152,7 @@ def test_equal_moments_through_the_command_line(write_spec):
 
 
 # --- thin rod -------------------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("axis", [0, 1, 2])
 @pytest.mark.parametrize("start", [[0.0, 0.0, 0.0], [5.0, -3.0, 2.0]])
@@ -154,11 +164,14 @@ def test_thin_rod_along_a_coordinate_axis_keeps_its_tiny_moment(write_spec, axis
     # A second, heavier part on the same axis, so the tiny moment survives an assembly too.
     tip = np.array(start)
     tip[axis] -= 0.25
-    body, moments, axes = principal_of(write_spec, f"""
+    body, moments, axes = principal_of(
+        write_spec,
+        f"""
 parts:
   - {{shape: cylinder, mass: {m}, radius: {num(r)}, start: {vec(start)}, end: {vec(end)}}}
   - {{shape: point, mass: 0.5, position: {vec(tip)}}}
-""")
+""",
+    )
     tiny = m * r * r / 2
     assert abs(moments[0] - tiny) <= 1e-6 * tiny
     assert parallel(axes[0], np.eye(3)[axis], 0.0)
@@ -174,10 +187,13 @@ def test_thin_rod_along_a_slanted_axis_is_as_accurate_as_a_3x3_matrix_allows(wri
     m, L = 2.0, 1.0
     r = 1e-6 * L
     u = Rotation.random(random_state=seed).as_matrix()[:, 0]
-    body, moments, axes = principal_of(write_spec, f"""
+    body, moments, axes = principal_of(
+        write_spec,
+        f"""
 parts:
   - {{shape: cylinder, mass: {m}, radius: {num(r)}, start: [0.1, 0.2, 0.3], end: {vec(np.array([0.1, 0.2, 0.3]) + L * u)}}}
-""")
+""",
+    )
     tiny = m * r * r / 2
     transverse = m * (3 * r * r + L * L) / 12
     assert abs(moments[0] - tiny) <= 4 * EPS * transverse
@@ -188,10 +204,11 @@ parts:
 
 # --- small parts far from the origin -------------------------------------------------------
 
+
 def small_body(origin) -> str:
     # Dyadic sizes and offsets (multiples of 2⁻¹⁰ m ≈ 1 mm): every coordinate is exact in
     # binary even 1e6 m from the origin, so the far body is exactly the near one, moved.
-    d = 2.0 ** -10
+    d = 2.0**-10
     o = np.asarray(origin, dtype=float)
     return f"""
 parts:
@@ -210,7 +227,9 @@ def test_millimetre_parts_a_thousand_kilometres_away(write_spec, origin):
     np.testing.assert_allclose(far.com - origin, near.com, rtol=0, atol=2.5e-10)
     # ... and the inertia about it keeps nearly all its digits: an error δ in the reference
     # point changes the inertia only by m δ² (parallel-axis theorem).
-    np.testing.assert_allclose(far.inertia_com, near.inertia_com, rtol=0, atol=1e-9 * np.max(np.abs(near.inertia_com)))
+    np.testing.assert_allclose(
+        far.inertia_com, near.inertia_com, rtol=0, atol=1e-9 * np.max(np.abs(near.inertia_com))
+    )
     moments_far, axes_far = principal_axes(far.inertia_com)
     moments_near, axes_near = principal_axes(near.inertia_com)
     np.testing.assert_allclose(moments_far, moments_near, rtol=1e-9)
@@ -218,6 +237,7 @@ def test_millimetre_parts_a_thousand_kilometres_away(write_spec, origin):
 
 
 # --- a speck on a heavy rotor ----------------------------------------------------------------
+
 
 def rotor_with_bolt_exact(m_rotor, r, half_length, m_bolt, bolt):
     """Mass, CoM and central inertia in exact rational arithmetic (the cylinder's central
@@ -243,11 +263,14 @@ def rotor_with_bolt_exact(m_rotor, r, half_length, m_bolt, bolt):
 def test_microgram_bolt_on_a_tonne_rotor(write_spec):
     m_rotor, r, half, m_bolt = 1000.0, 0.5, 0.1, 1e-6
     bolt = [0.5, 0.0, 0.1]
-    body, moments, axes = principal_of(write_spec, f"""
+    body, moments, axes = principal_of(
+        write_spec,
+        f"""
 parts:
   - {{name: rotor, shape: cylinder, mass: {m_rotor}, radius: {r}, start: [0, 0, {-half}], end: [0, 0, {half}]}}
   - {{name: bolt, shape: point, mass: {num(m_bolt)}, position: {vec(bolt)}}}
-""")
+""",
+    )
     M, com, I = rotor_with_bolt_exact(m_rotor, r, half, m_bolt, bolt)
     props = body.props
     assert props.mass == pytest.approx(float(M), rel=1e-15)
@@ -267,17 +290,28 @@ parts:
 
 # --- rotations -------------------------------------------------------------------------------
 
+
 def test_a_chain_of_turns_and_its_reverse_through_the_command_line(bodies):
     there = ["x:37", "z:-120", "y:200", "x:0.001"]
     back = ["x:-0.001", "y:-200", "z:120", "x:-37"]
     args = [a for turn in there + back for a in ("--rotate", turn)]
     plain = json.loads(run_rbi("inertia", bodies / "top_bolted.yaml", "--format", "json", check=True).stdout)
-    round_trip = json.loads(run_rbi("inertia", bodies / "top_bolted.yaml", "--format", "json", *args, check=True).stdout)
+    round_trip = json.loads(
+        run_rbi("inertia", bodies / "top_bolted.yaml", "--format", "json", *args, check=True).stdout
+    )
     I = np.array(plain["inertia"])
     np.testing.assert_allclose(round_trip["inertia"], I, rtol=0, atol=1e-14 * np.max(np.abs(I)))
     # One way only: the world-axes inertia of scipy's rotation (an independent implementation).
-    one_way = json.loads(run_rbi("inertia", bodies / "top_bolted.yaml", "--format", "json",
-                                 *[a for t in there for a in ("--rotate", t)], check=True).stdout)
+    one_way = json.loads(
+        run_rbi(
+            "inertia",
+            bodies / "top_bolted.yaml",
+            "--format",
+            "json",
+            *[a for t in there for a in ("--rotate", t)],
+            check=True,
+        ).stdout
+    )
     turns = [Rotation.from_euler(t[0], float(t[2:]), degrees=True) for t in there]
     R = (turns[3] * turns[2] * turns[1] * turns[0]).as_matrix()  # p * q applies q first
     np.testing.assert_allclose(one_way["inertia"], R @ I @ R.T, rtol=0, atol=1e-14 * np.max(np.abs(I)))
@@ -298,12 +332,15 @@ def test_ten_thousand_small_turns_make_one_full_turn():
 
 # --- point masses only -----------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("seed", range(3))
 def test_collinear_point_masses_have_a_zero_moment_along_their_line(write_spec, seed):
     u = Rotation.random(random_state=30 + seed).as_matrix()[:, 1]
     p0 = np.array([1.0, 2.0, -0.5])
     masses, offsets = [1.0, 2.0, 0.5], [-0.3, 0.1, 0.7]
-    parts = "\n".join(f"  - {{shape: point, mass: {m}, position: {vec(p0 + s * u)}}}" for m, s in zip(masses, offsets))
+    parts = "\n".join(
+        f"  - {{shape: point, mass: {m}, position: {vec(p0 + s * u)}}}" for m, s in zip(masses, offsets)
+    )
     body, moments, axes = principal_of(write_spec, "parts:\n" + parts + "\n")
     M = sum(masses)
     s_com = sum(m * s for m, s in zip(masses, offsets)) / M
@@ -316,7 +353,9 @@ def test_collinear_point_masses_have_a_zero_moment_along_their_line(write_spec, 
 
 
 def test_a_single_point_mass_has_no_inertia_and_still_a_clean_frame(write_spec):
-    body, moments, axes = principal_of(write_spec, "parts:\n  - {shape: point, mass: 3.0, position: [1000000.0, -2.5, 7]}\n")
+    body, moments, axes = principal_of(
+        write_spec, "parts:\n  - {shape: point, mass: 3.0, position: [1000000.0, -2.5, 7]}\n"
+    )
     np.testing.assert_array_equal(body.props.com, [1e6, -2.5, 7])
     np.testing.assert_array_equal(body.props.inertia_com, np.zeros((3, 3)))
     np.testing.assert_array_equal(moments, np.zeros(3))
@@ -328,7 +367,10 @@ def test_flat_cloud_of_point_masses_obeys_the_perpendicular_axis_theorem(write_s
     Q = Rotation.random(random_state=4).as_matrix()
     normal = Q[:, 2]
     pts = rng.normal(size=(7, 2)) @ Q[:, :2].T + [0.5, 0.5, 0.5]
-    parts = "\n".join(f"  - {{shape: point, mass: {num(m)}, position: {vec(p)}}}" for m, p in zip(rng.uniform(0.5, 2, 7), pts))
+    parts = "\n".join(
+        f"  - {{shape: point, mass: {num(m)}, position: {vec(p)}}}"
+        for m, p in zip(rng.uniform(0.5, 2, 7), pts)
+    )
     body, moments, axes = principal_of(write_spec, "parts:\n" + parts + "\n")
     # Plane lamina: the moment about the normal is the sum of the two in-plane ones.
     assert moments[2] == pytest.approx(moments[0] + moments[1], rel=1e-13)

@@ -29,8 +29,13 @@ def part(draw):
     u = np.array(draw(direction))
     b = a + draw(st.floats(0.01, 2.0)) * u / np.linalg.norm(u)
     first, second = PLACEMENT[shape]
-    return {"shape": shape, "mass": draw(st.floats(0.01, 10.0)), "radius": draw(st.floats(0.001, 1.0)),
-            first: a.tolist(), second: b.tolist()}
+    return {
+        "shape": shape,
+        "mass": draw(st.floats(0.01, 10.0)),
+        "radius": draw(st.floats(0.001, 1.0)),
+        first: a.tolist(),
+        second: b.tolist(),
+    }
 
 
 specs = st.lists(part(), min_size=1, max_size=5).map(lambda parts: {"parts": parts})
@@ -70,9 +75,15 @@ def test_turning_the_geometry_turns_the_inertia(spec, seed):
     R = Rotation.random(random_state=seed).as_matrix()
     a, b = props(spec), props(moved(spec, lambda p: R @ p))
     np.testing.assert_allclose(b.com, R @ a.com, rtol=0, atol=1e-12 * 8)
-    np.testing.assert_allclose(b.inertia_com, R @ a.inertia_com @ R.T, rtol=0, atol=1e-11 * scale_of(a.inertia_com))
-    np.testing.assert_allclose(np.linalg.eigvalsh(b.inertia_com), np.linalg.eigvalsh(a.inertia_com),
-                               rtol=0, atol=1e-11 * scale_of(a.inertia_com))
+    np.testing.assert_allclose(
+        b.inertia_com, R @ a.inertia_com @ R.T, rtol=0, atol=1e-11 * scale_of(a.inertia_com)
+    )
+    np.testing.assert_allclose(
+        np.linalg.eigvalsh(b.inertia_com),
+        np.linalg.eigvalsh(a.inertia_com),
+        rtol=0,
+        atol=1e-11 * scale_of(a.inertia_com),
+    )
 
 
 @SETTINGS
@@ -82,7 +93,9 @@ def test_mirroring_the_geometry_mirrors_the_inertia(spec, axis):
     S[axis, axis] = -1.0
     a, b = props(spec), props(moved(spec, lambda p: S @ p))
     np.testing.assert_allclose(b.com, S @ a.com, rtol=0, atol=1e-13 * 8)
-    np.testing.assert_allclose(b.inertia_com, S @ a.inertia_com @ S, rtol=0, atol=1e-12 * scale_of(a.inertia_com))
+    np.testing.assert_allclose(
+        b.inertia_com, S @ a.inertia_com @ S, rtol=0, atol=1e-12 * scale_of(a.inertia_com)
+    )
 
 
 @SETTINGS
@@ -90,7 +103,7 @@ def test_mirroring_the_geometry_mirrors_the_inertia(spec, axis):
 def test_power_of_two_scalings_scale_mass_and_inertia_exactly(spec, length_exp, mass_exp):
     # Multiplying lengths by 2^k and masses by 2^j is exact in binary, so the inertia must
     # come out as exactly 2^(2k + j) times the original (up to the last bit).
-    k, j = 2.0 ** length_exp, 2.0 ** mass_exp
+    k, j = 2.0**length_exp, 2.0**mass_exp
     scaled = moved(spec, lambda p: k * p)
     for p in scaled["parts"]:
         p["mass"] = p["mass"] * j
@@ -99,8 +112,9 @@ def test_power_of_two_scalings_scale_mass_and_inertia_exactly(spec, length_exp, 
     a, b = props(spec), props(scaled)
     assert b.mass == a.mass * j
     np.testing.assert_allclose(b.com, k * a.com, rtol=0, atol=1e-14 * 8 * k)
-    np.testing.assert_allclose(b.inertia_com, k * k * j * a.inertia_com, rtol=0,
-                               atol=1e-14 * k * k * j * scale_of(a.inertia_com))
+    np.testing.assert_allclose(
+        b.inertia_com, k * k * j * a.inertia_com, rtol=0, atol=1e-14 * k * k * j * scale_of(a.inertia_com)
+    )
 
 
 @SETTINGS
@@ -117,7 +131,9 @@ def test_a_spec_in_millimetres_and_grams_gives_the_same_body_in_its_own_units(sp
     a, b = props(spec), props(in_mm)
     assert b.mass == np.float64(a.mass * 1000.0) or abs(b.mass / (a.mass * 1000.0) - 1) < 1e-15
     np.testing.assert_allclose(b.com, 1000.0 * a.com, rtol=0, atol=1e-12 * 8 * 1000.0)
-    np.testing.assert_allclose(b.inertia_com, 1e9 * a.inertia_com, rtol=0, atol=1e-12 * 1e9 * scale_of(a.inertia_com))
+    np.testing.assert_allclose(
+        b.inertia_com, 1e9 * a.inertia_com, rtol=0, atol=1e-12 * 1e9 * scale_of(a.inertia_com)
+    )
 
 
 @SETTINGS
@@ -125,15 +141,28 @@ def test_a_spec_in_millimetres_and_grams_gives_the_same_body_in_its_own_units(sp
 def test_cutting_a_cylinder_in_two_changes_nothing(spec, cut):
     cylinders = [i for i, p in enumerate(spec["parts"]) if p["shape"] == "cylinder"]
     if not cylinders:
-        spec = spec | {"parts": spec["parts"] + [{"shape": "cylinder", "mass": 1.0, "radius": 0.1,
-                                                   "start": [0.0, 0.0, 0.0], "end": [0.3, -0.2, 0.5]}]}
+        spec = spec | {
+            "parts": spec["parts"]
+            + [
+                {
+                    "shape": "cylinder",
+                    "mass": 1.0,
+                    "radius": 0.1,
+                    "start": [0.0, 0.0, 0.0],
+                    "end": [0.3, -0.2, 0.5],
+                }
+            ]
+        }
         cylinders = [len(spec["parts"]) - 1]
     i = cylinders[0]
     whole = spec["parts"][i]
     start, end = np.array(whole["start"]), np.array(whole["end"])
     middle = (start + cut * (end - start)).tolist()
-    pieces = [dict(whole, mass=whole["mass"] * cut, end=middle), dict(whole, mass=whole["mass"] * (1 - cut), start=middle)]
-    cut_spec = spec | {"parts": spec["parts"][:i] + pieces + spec["parts"][i + 1:]}
+    pieces = [
+        dict(whole, mass=whole["mass"] * cut, end=middle),
+        dict(whole, mass=whole["mass"] * (1 - cut), start=middle),
+    ]
+    cut_spec = spec | {"parts": spec["parts"][:i] + pieces + spec["parts"][i + 1 :]}
     a, b = props(spec), props(cut_spec)
     assert b.mass == np.float64(a.mass) or abs(b.mass / a.mass - 1) < 1e-14
     np.testing.assert_allclose(b.com, a.com, rtol=0, atol=1e-13 * 8)

@@ -19,8 +19,23 @@ def test_range_single_value_and_draws_parse():
     assert parse_axis("x", "uniform(-1e-3,2e-3)") == Draw("x", "uniform", -1e-3, 2e-3)
 
 
-@pytest.mark.parametrize("text", ["1:2", "a:b:3", "1:2:0", "1:2:-3", "nan", "inf:1:2", "normal(1)", "uniform(2,1)",
-                                  "normal(0,-1)", "1:2:3:4", "", "1:2:1e9"])
+@pytest.mark.parametrize(
+    "text",
+    [
+        "1:2",
+        "a:b:3",
+        "1:2:0",
+        "1:2:-3",
+        "nan",
+        "inf:1:2",
+        "normal(1)",
+        "uniform(2,1)",
+        "normal(0,-1)",
+        "1:2:3:4",
+        "",
+        "1:2:1e9",
+    ],
+)
 def test_bad_axes_are_refused(text):
     with pytest.raises(ValueError):
         parse_axis("spin", text)
@@ -36,8 +51,11 @@ def test_the_last_axis_changes_fastest_and_every_combination_appears_once():
 @settings(max_examples=25, deadline=None)
 @given(cut=st.integers(0, 40), seed=st.integers(0, 2**31))
 def test_a_run_has_the_same_values_in_whatever_chunk_it_is_made(cut, seed):
-    plan = Plan((parse_axis("spin", "100:200:4"), parse_axis("m", "normal(1,0.1)"), parse_axis("r", "uniform(2,3)")),
-                runs=10, seed=seed)
+    plan = Plan(
+        (parse_axis("spin", "100:200:4"), parse_axis("m", "normal(1,0.1)"), parse_axis("r", "uniform(2,3)")),
+        runs=10,
+        seed=seed,
+    )
     whole = plan.values(0, plan.size)
     np.testing.assert_array_equal(np.vstack((plan.values(0, cut), plan.values(cut, plan.size))), whole)
     assert np.all((whole[:, 2] >= 2) & (whole[:, 2] <= 3))

@@ -16,18 +16,37 @@ import pytest
 from tests.conftest import BODIES, run_rbi
 
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
-pytestmark = pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium is not installed (apt-get install chromium)")
+pytestmark = pytest.mark.skipif(
+    CHROMIUM is None, reason="headless Chromium is not installed (apt-get install chromium)"
+)
 
 WIDTH, HEIGHT = 800, 600
 
 
 def _chromium(tmp_path, url: str, *action: str) -> subprocess.CompletedProcess:
     return subprocess.run(
-        [CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
-         "--enable-unsafe-swiftshader", "--disable-background-networking", "--disable-component-update",
-         "--disable-sync", "--no-first-run", "--mute-audio", f"--user-data-dir={tmp_path / 'profile'}",
-         f"--window-size={WIDTH},{HEIGHT}", "--virtual-time-budget=2000", *action, url],
-        capture_output=True, text=True, timeout=60)
+        [
+            CHROMIUM,
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--use-angle=swiftshader",
+            "--enable-unsafe-swiftshader",
+            "--disable-background-networking",
+            "--disable-component-update",
+            "--disable-sync",
+            "--no-first-run",
+            "--mute-audio",
+            f"--user-data-dir={tmp_path / 'profile'}",
+            f"--window-size={WIDTH},{HEIGHT}",
+            "--virtual-time-budget=2000",
+            *action,
+            url,
+        ],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
 
 
 def _screenshot(tmp_path, page, t: float, name: str) -> np.ndarray:
@@ -48,7 +67,9 @@ def _body_pixels(image: np.ndarray) -> np.ndarray:
 def page(tmp_path_factory):
     folder = tmp_path_factory.mktemp("animate")
     out = folder / "top.html"
-    run_rbi("animate", BODIES / "top_bolted.yaml", "--spin", "200", "--duration", "1.5", "--out", out, check=True)
+    run_rbi(
+        "animate", BODIES / "top_bolted.yaml", "--spin", "200", "--duration", "1.5", "--out", out, check=True
+    )
     return out
 
 
@@ -59,7 +80,9 @@ def test_the_top_is_drawn_and_moves(page, tmp_path):
     middle = (slice(HEIGHT // 5, 4 * HEIGHT // 5), slice(WIDTH // 4, 3 * WIDTH // 4))
     for image in (early, late):
         assert _body_pixels(image)[middle].sum() > 2000, "no body where the top stands"
-        assert _body_pixels(image).sum() - _body_pixels(image)[middle].sum() < _body_pixels(image)[middle].sum()
+        assert (
+            _body_pixels(image).sum() - _body_pixels(image)[middle].sum() < _body_pixels(image)[middle].sum()
+        )
     changed = np.abs(early - late).max(axis=2) > 40
     assert changed[middle].sum() > 1000, "the body did not move between t = 0.05 s and t = 1.2 s"
 

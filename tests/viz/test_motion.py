@@ -22,7 +22,9 @@ def _run(bodies, name, spin, tilt, duration=0.5, samples=None):
     q0, w0 = initial_state(tilt, [0.0, 0.0, spin])
     count = samples or keyframe_count(duration, abs(spin) * 1.05)
     run = simulate(scene, q0, w0, duration, count)
-    data = animation_data("t", part_geometry(body), scene, run.t, run.q, run.omega, tilt_deg(run.q), body.length_unit)
+    data = animation_data(
+        "t", part_geometry(body), scene, run.t, run.q, run.omega, tilt_deg(run.q), body.length_unit
+    )
     return body, scene, run, data
 
 
@@ -45,7 +47,9 @@ def test_sleeping_top_trace_stays_at_the_top(bodies):
     # 1000 rad/s is far above the sleeping threshold (about 208 rad/s) and the top starts exactly upright
     _, _, _, data = _run(bodies, "top.yaml", 1000.0, 0.0)
     trace = np.array(data["trace"])
-    np.testing.assert_allclose(trace, np.tile([0.0, 0.0, data["size"]], (len(trace), 1)), atol=1e-9 * data["size"])
+    np.testing.assert_allclose(
+        trace, np.tile([0.0, 0.0, data["size"]], (len(trace), 1)), atol=1e-9 * data["size"]
+    )
 
 
 def test_tilted_fast_top_trace_is_tilted_by_the_start_angle_towards_x(bodies):

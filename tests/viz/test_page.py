@@ -9,9 +9,21 @@ from rbi.viz.page import html_page, script_safe_json
 
 
 def _data(**extra):
-    data = {"title": "t", "length_unit": "m", "pivoted": True, "size": 1.0, "parts": [], "com": [0, 0, 0.5],
-            "axis_tip": [0, 0, 1], "times": [0.0, 1.0], "quaternions": [[0, 0, 0, 1], [0, 0, 0, 1]],
-            "tilt_deg": [0, 0], "omega": [1, 1], "trace": [[0, 0, 1], [0, 0, 1]], "trail_seconds": 0.5}
+    data = {
+        "title": "t",
+        "length_unit": "m",
+        "pivoted": True,
+        "size": 1.0,
+        "parts": [],
+        "com": [0, 0, 0.5],
+        "axis_tip": [0, 0, 1],
+        "times": [0.0, 1.0],
+        "quaternions": [[0, 0, 0, 1], [0, 0, 0, 1]],
+        "tilt_deg": [0, 0],
+        "omega": [1, 1],
+        "trace": [[0, 0, 1], [0, 0, 1]],
+        "trail_seconds": 0.5,
+    }
     return data | extra
 
 

@@ -16,21 +16,27 @@ import pytest
 
 from tests.conftest import BODIES, run_rbi_inprocess
 
-FAR = ("pivot: [100, 200, 290]\nparts:\n"
-       "  - {name: block, shape: box, mass: 1, size: [2, 2, 2], center: [100, 200, 300]}\n"
-       "  - {name: drill, shape: cylinder, radius: 0.2, start: [100, 200, 299], end: [100, 200, 301], "
-       "density: 1, subtract: true}\n"
-       "  - {name: bolt, shape: point, mass: 0.1, position: [101, 200, 301], "
-       "pattern: {count: 4, axis: [0, 0, 1], through: [100, 200, 0]}}\n")
+FAR = (
+    "pivot: [100, 200, 290]\nparts:\n"
+    "  - {name: block, shape: box, mass: 1, size: [2, 2, 2], center: [100, 200, 300]}\n"
+    "  - {name: drill, shape: cylinder, radius: 0.2, start: [100, 200, 299], end: [100, 200, 301], "
+    "density: 1, subtract: true}\n"
+    "  - {name: bolt, shape: point, mass: 0.1, position: [101, 200, 301], "
+    "pattern: {count: 4, axis: [0, 0, 1], through: [100, 200, 0]}}\n"
+)
 
-PENDULUM = ("name: pendulum\npivot: [0, 0, 0]\nparts:\n"
-            "  - {name: string, shape: rod, mass: 0.01, start: [0, 0, 0], end: [0, 0, -1]}\n"
-            "  - {name: bob, shape: sphere, mass: 1, radius: 0.1, center: [0, 0, -1]}\n")
+PENDULUM = (
+    "name: pendulum\npivot: [0, 0, 0]\nparts:\n"
+    "  - {name: string, shape: rod, mass: 0.01, start: [0, 0, 0], end: [0, 0, -1]}\n"
+    "  - {name: bob, shape: sphere, mass: 1, radius: 0.1, center: [0, 0, -1]}\n"
+)
 
 
 def page_data(path) -> dict:
     text = path.read_text(encoding="utf-8")
-    return json.loads(re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.S).group(1))
+    return json.loads(
+        re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.S).group(1)
+    )
 
 
 def svg_ticks(path) -> list[list[float]]:
@@ -83,15 +89,31 @@ CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 def test_the_page_lists_the_parts_in_a_browser(tmp_path, bodies):
     out = tmp_path / "wheel.html"
     assert run_rbi_inprocess("show", bodies / "wheel_with_holes.yaml", "--out", out).returncode == 0
-    dom = subprocess.run([CHROMIUM, "--headless", "--no-sandbox", "--disable-gpu", "--use-angle=swiftshader",
-                          "--enable-unsafe-swiftshader", "--no-first-run", f"--user-data-dir={tmp_path / 'profile'}",
-                          "--virtual-time-budget=2000", "--dump-dom", out.as_uri()],
-                         capture_output=True, text=True, timeout=60).stdout
+    dom = subprocess.run(
+        [
+            CHROMIUM,
+            "--headless",
+            "--no-sandbox",
+            "--disable-gpu",
+            "--use-angle=swiftshader",
+            "--enable-unsafe-swiftshader",
+            "--no-first-run",
+            f"--user-data-dir={tmp_path / 'profile'}",
+            "--virtual-time-budget=2000",
+            "--dump-dom",
+            out.as_uri(),
+        ],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    ).stdout
     assert '<div id="status" hidden="">ready</div>' in dom, dom[-2000:]
     items = re.findall(r'<li><span class="swatch"[^>]*></span>(.*?)</li>', dom)
     import yaml
 
-    spec_names = [part["name"] for part in yaml.safe_load((bodies / "wheel_with_holes.yaml").read_text())["parts"]]
+    spec_names = [
+        part["name"] for part in yaml.safe_load((bodies / "wheel_with_holes.yaml").read_text())["parts"]
+    ]
     assert [item.split(":")[0] for item in items] == spec_names, items
 
 
@@ -113,14 +135,23 @@ def test_a_hanging_pendulum_hangs_above_the_ground(write_spec, tmp_path):
 
 def test_a_top_stands_on_the_ground_at_its_pivot(tmp_path, bodies):
     out = tmp_path / "top.html"
-    assert run_rbi_inprocess("animate", bodies / "top.yaml", "--spin", "200", "--tilt", "10", "--duration", "0.5",
-                             "--out", out).returncode == 0
+    assert (
+        run_rbi_inprocess(
+            "animate", bodies / "top.yaml", "--spin", "200", "--tilt", "10", "--duration", "0.5", "--out", out
+        ).returncode
+        == 0
+    )
     assert page_data(out)["ground_z"] == 0.0  # the tip stays at the pivot; the rest stays above it
 
 
 def test_a_free_body_has_no_ground(write_spec, tmp_path):
-    data = _animation(write_spec, tmp_path, "parts:\n  - {shape: box, mass: 1, size: [1, 2, 3], center: [0, 0, 0]}\n",
-                      "--omega", "0.1,3,0.1")
+    data = _animation(
+        write_spec,
+        tmp_path,
+        "parts:\n  - {shape: box, mass: 1, size: [1, 2, 3], center: [0, 0, 0]}\n",
+        "--omega",
+        "0.1,3,0.1",
+    )
     assert data["ground_z"] is None and data["pivoted"] is False
 
 
@@ -132,7 +163,7 @@ def test_the_gif_frames_show_the_pendulum_below_its_pivot(write_spec, tmp_path):
     proc = run_rbi_inprocess("animate", write_spec(PENDULUM), "--duration", "0.2", "--fps", "5", "--out", out)
     assert proc.returncode == 0, proc.stderr
     frame = np.asarray(Image.open(out).convert("RGB"), dtype=int)
-    bob = (np.abs(frame - [0xd0, 0x8a, 0x2a]).max(axis=2) < 60)  # the bob's orange (second part colour)
+    bob = np.abs(frame - [0xD0, 0x8A, 0x2A]).max(axis=2) < 60  # the bob's orange (second part colour)
     rows = np.nonzero(bob.any(axis=1))[0]
     assert bob.sum() > 50, "the bob is not in the frame"  # about 100 pixels, a few fewer with the palette
     dark_pivot = np.nonzero((frame.max(axis=2) < 40).any(axis=1))[0]
@@ -144,9 +175,26 @@ def _animate_gif_in_a_terminal(out) -> str:
     import pty
 
     controller, terminal = pty.openpty()
-    proc = subprocess.Popen([sys.executable, "-m", "rbi", "animate", str(BODIES / "top.yaml"), "--spin", "100",
-                             "--duration", "0.6", "--fps", "25", "--out", str(out)],
-                            stdout=subprocess.PIPE, stderr=terminal, env={**os.environ, "COLUMNS": "100"})
+    proc = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "rbi",
+            "animate",
+            str(BODIES / "top.yaml"),
+            "--spin",
+            "100",
+            "--duration",
+            "0.6",
+            "--fps",
+            "25",
+            "--out",
+            str(out),
+        ],
+        stdout=subprocess.PIPE,
+        stderr=terminal,
+        env={**os.environ, "COLUMNS": "100"},
+    )
     os.close(terminal)
     seen = b""
     while True:
@@ -167,6 +215,16 @@ def test_a_gif_shows_its_progress_on_a_terminal_and_nothing_in_a_pipe(tmp_path):
     pytest.importorskip("matplotlib")
     shown = re.sub(r"\x1b\[[0-9;?]*[A-Za-z]", "", _animate_gif_in_a_terminal(tmp_path / "top.gif"))
     assert re.search(r"gif ━+ +\d+/16 frames", shown), shown[-500:]
-    piped = run_rbi_inprocess("animate", BODIES / "top.yaml", "--spin", "100", "--duration", "0.2", "--fps", "10",
-                              "--out", tmp_path / "quiet.gif")
+    piped = run_rbi_inprocess(
+        "animate",
+        BODIES / "top.yaml",
+        "--spin",
+        "100",
+        "--duration",
+        "0.2",
+        "--fps",
+        "10",
+        "--out",
+        tmp_path / "quiet.gif",
+    )
     assert piped.returncode == 0 and piped.stderr == ""

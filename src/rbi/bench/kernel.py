@@ -16,7 +16,7 @@ quick run), in this process, with the compiled kernel already loaded:
 from __future__ import annotations
 
 import statistics
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
@@ -105,28 +105,54 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     for rtol in TRIAL_RTOLS:
         trajectory = simulate_call(rtol)()
         err = workprecision.errors(scene, trajectory, reference)
-        no_worse = (err["orientation_error_deg"] <= chapter_err["orientation_error_deg"]
-                    and err["omega_error"] <= chapter_err["omega_error"])
+        no_worse = (
+            err["orientation_error_deg"] <= chapter_err["orientation_error_deg"]
+            and err["omega_error"] <= chapter_err["omega_error"]
+        )
         seconds = _median_seconds(simulate_call(rtol), min_seconds / 3) if no_worse else None
-        trials.append({"rtol": rtol, "orientation_error_deg": err["orientation_error_deg"],
-                       "omega_error": err["omega_error"], "steps": trajectory.steps, "no_worse": no_worse,
-                       "seconds": seconds})
+        trials.append(
+            {
+                "rtol": rtol,
+                "orientation_error_deg": err["orientation_error_deg"],
+                "omega_error": err["omega_error"],
+                "steps": trajectory.steps,
+                "no_worse": no_worse,
+                "seconds": seconds,
+            }
+        )
     matching = [t for t in trials if t["no_worse"]]
     best = min(matching, key=lambda t: t["seconds"]) if matching else None
 
     progress("kernel: done")
     return {
-        "case": {"name": case.name, "spec": f"bodies/{case.spec}", "omega0": list(case.omega0),
-                 "duration": case.duration, "samples": case.samples},
-        "chapter": {"seconds": chapter_s, "repeats": len(chapter_times), "steps": chapter.steps,
-                    "rtol": workprecision.CHAPTER[1],
-                    "orientation_error_deg": chapter_err["orientation_error_deg"],
-                    "omega_error": chapter_err["omega_error"]},
-        "default": {"seconds": default_s, "steps": default.steps, "rtol": default.rtol,
-                    "orientation_error_deg": default_err["orientation_error_deg"],
-                    "omega_error": default_err["omega_error"]},
-        "minimal_loop": {"seconds": minimal_s, "steps": steps[0], "same_steps": same_steps,
-                         "same_samples": same_samples},
+        "case": {
+            "name": case.name,
+            "spec": f"bodies/{case.spec}",
+            "omega0": list(case.omega0),
+            "duration": case.duration,
+            "samples": case.samples,
+        },
+        "chapter": {
+            "seconds": chapter_s,
+            "repeats": len(chapter_times),
+            "steps": chapter.steps,
+            "rtol": workprecision.CHAPTER[1],
+            "orientation_error_deg": chapter_err["orientation_error_deg"],
+            "omega_error": chapter_err["omega_error"],
+        },
+        "default": {
+            "seconds": default_s,
+            "steps": default.steps,
+            "rtol": default.rtol,
+            "orientation_error_deg": default_err["orientation_error_deg"],
+            "omega_error": default_err["omega_error"],
+        },
+        "minimal_loop": {
+            "seconds": minimal_s,
+            "steps": steps[0],
+            "same_steps": same_steps,
+            "same_samples": same_samples,
+        },
         "trials": trials,
         "best_matching": best,
         "ratio_default": chapter_s / default_s,

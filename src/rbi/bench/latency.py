@@ -14,8 +14,8 @@ import subprocess
 import sys
 import tempfile
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 
@@ -62,15 +62,33 @@ def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[st
         ("rbi inertia bodies/top.yaml", rbi + ["inertia", top]),
         (ONE_FILE, rbi + ["inertia", top, "--format", "json"]),
         many_files_command(bodies, rbi),
-        ("rbi principal bodies/top_bolted.yaml", rbi + ["principal", str(bodies / "top_bolted.yaml"), "--format", "json"]),
-        ("rbi simulate bodies/top.yaml --spin 200 --tilt 10", rbi + ["simulate", top, "--spin", "200", "--tilt", "10"]),
-        ("rbi simulate bodies/top_bolted.yaml --spin 200",
-         rbi + ["simulate", str(bodies / "top_bolted.yaml"), "--spin", "200", "--format", "json"]),
+        (
+            "rbi principal bodies/top_bolted.yaml",
+            rbi + ["principal", str(bodies / "top_bolted.yaml"), "--format", "json"],
+        ),
+        (
+            "rbi simulate bodies/top.yaml --spin 200 --tilt 10",
+            rbi + ["simulate", top, "--spin", "200", "--tilt", "10"],
+        ),
+        (
+            "rbi simulate bodies/top_bolted.yaml --spin 200",
+            rbi + ["simulate", str(bodies / "top_bolted.yaml"), "--spin", "200", "--format", "json"],
+        ),
     ]
     if cloud_specs:
         n = cloud_specs["points"]
-        out.append((f"rbi principal (cloud of {n:,} points, CSV)", rbi + ["principal", str(cloud_specs["csv"]), "--format", "json"]))
-        out.append((f"rbi principal (cloud of {n:,} points, .npy)", rbi + ["principal", str(cloud_specs["npy"]), "--format", "json"]))
+        out.append(
+            (
+                f"rbi principal (cloud of {n:,} points, CSV)",
+                rbi + ["principal", str(cloud_specs["csv"]), "--format", "json"],
+            )
+        )
+        out.append(
+            (
+                f"rbi principal (cloud of {n:,} points, .npy)",
+                rbi + ["principal", str(cloud_specs["npy"]), "--format", "json"],
+            )
+        )
     return out
 
 
@@ -82,8 +100,10 @@ def many_bodies(bodies: Path) -> list[str]:
 
 def many_files_command(bodies: Path, rbi: list[str]) -> tuple[str, list[str]]:
     files = many_bodies(bodies)
-    return (f"rbi inertia (the bundled bodies in turn: {len(files)} files) --format json",
-            rbi + ["inertia", *files, "--format", "json"])
+    return (
+        f"rbi inertia (the bundled bodies in turn: {len(files)} files) --format json",
+        rbi + ["inertia", *files, "--format", "json"],
+    )
 
 
 def per_file_cost(rows: list[dict], files: int) -> dict:
@@ -93,19 +113,32 @@ def per_file_cost(rows: list[dict], files: int) -> dict:
     one = next((r for r in rows if r["command"] == ONE_FILE), {})
     many = next((r for r in rows if r["command"].startswith("rbi inertia (the bundled bodies")), {})
     if "median_s" not in one or "median_s" not in many:
-        return {"error": one.get("error") or many.get("error") or "not measured", "target_ms": PER_FILE_TARGET_MS}
+        return {
+            "error": one.get("error") or many.get("error") or "not measured",
+            "target_ms": PER_FILE_TARGET_MS,
+        }
     per_file = (many["median_s"] - one["median_s"]) / (files - 1)
-    return {"files": files, "one_file_median_s": one["median_s"], "many_files_median_s": many["median_s"],
-            "per_file_ms": 1000 * per_file, "target_ms": PER_FILE_TARGET_MS,
-            "ratio_to_one_file_process": per_file / one["median_s"]}
+    return {
+        "files": files,
+        "one_file_median_s": one["median_s"],
+        "many_files_median_s": many["median_s"],
+        "per_file_ms": 1000 * per_file,
+        "target_ms": PER_FILE_TARGET_MS,
+        "ratio_to_one_file_process": per_file / one["median_s"],
+    }
 
 
 IMPORT_GROUPS = (
     # (group, module prefixes), first match wins; the rest is "the rest of the standard library"
     ("numpy", ("numpy",)),
-    ("pydantic (and pydantic-core, typing helpers)", ("pydantic", "pydantic_core", "annotated_types", "typing_extensions",
-                                                      "typing_inspection")),
-    ("rbi's spec models (built by pydantic as they are defined)", ("rbi.spec.models", "rbi.spec.expect", "rbi.spec.fields")),
+    (
+        "pydantic (and pydantic-core, typing helpers)",
+        ("pydantic", "pydantic_core", "annotated_types", "typing_extensions", "typing_inspection"),
+    ),
+    (
+        "rbi's spec models (built by pydantic as they are defined)",
+        ("rbi.spec.models", "rbi.spec.expect", "rbi.spec.fields"),
+    ),
     ("PyYAML", ("yaml", "_yaml")),
     ("rich (tables)", ("rich",)),
     ("typer and click", ("typer", "click")),
@@ -129,12 +162,22 @@ def import_breakdown(bodies: Path, repeats: int) -> dict:
         best = seen if not best else {name: min(us, best.get(name, us)) for name, us in seen.items()}
     groups = {name: 0 for name, _ in IMPORT_GROUPS} | {"the rest of the standard library": 0}
     for module, us in best.items():
-        group = next((name for name, prefixes in IMPORT_GROUPS
-                      if any(module == p or module.startswith(p + ".") for p in prefixes)), "the rest of the standard library")
+        group = next(
+            (
+                name
+                for name, prefixes in IMPORT_GROUPS
+                if any(module == p or module.startswith(p + ".") for p in prefixes)
+            ),
+            "the rest of the standard library",
+        )
         groups[group] += us
-    return {"command": "python -X importtime -m rbi inertia bodies/top.yaml", "repeats": repeats,
-            "modules": len(best), "groups_ms": {name: us / 1000 for name, us in groups.items()},
-            "total_ms": sum(best.values()) / 1000}
+    return {
+        "command": "python -X importtime -m rbi inertia bodies/top.yaml",
+        "repeats": repeats,
+        "modules": len(best),
+        "groups_ms": {name: us / 1000 for name, us in groups.items()},
+        "total_ms": sum(best.values()) / 1000,
+    }
 
 
 def first_run(bodies: Path, repeats: int) -> dict:
@@ -148,8 +191,12 @@ def first_run(bodies: Path, repeats: int) -> dict:
     firsts, laters, messages = [], [], []
     for _ in range(repeats):
         with tempfile.TemporaryDirectory(prefix="rbi-bench-home-") as home:
-            env = dict(os.environ, HOME=home, XDG_CACHE_HOME=os.path.join(home, ".cache"),
-                       XDG_CONFIG_HOME=os.path.join(home, ".config"))
+            env = dict(
+                os.environ,
+                HOME=home,
+                XDG_CACHE_HOME=os.path.join(home, ".cache"),
+                XDG_CONFIG_HOME=os.path.join(home, ".config"),
+            )
             seconds, status, message = time_process(argv, env)
             if status != 0:
                 return {"error": f"exit {status}: {message}"}
@@ -158,9 +205,16 @@ def first_run(bodies: Path, repeats: int) -> dict:
             messages.append(message)
             left = sorted(str(p.relative_to(home)) for p in Path(home).rglob("*"))
     first, later = statistics.median(firsts), statistics.median(laters)
-    return {"command": "rbi simulate bodies/top.yaml --spin 200 --tilt 10", "first_median_s": first,
-            "later_median_s": later, "ratio": first / later, "repeats": repeats, "target": FIRST_RUN_TARGET,
-            "files_left_in_home": left, "compiling_line": any("compil" in m.lower() for m in messages)}
+    return {
+        "command": "rbi simulate bodies/top.yaml --spin 200 --tilt 10",
+        "first_median_s": first,
+        "later_median_s": later,
+        "ratio": first / later,
+        "repeats": repeats,
+        "target": FIRST_RUN_TARGET,
+        "files_left_in_home": left,
+        "compiling_line": any("compil" in m.lower() for m in messages),
+    }
 
 
 def time_process(argv: list[str], env: dict | None = None) -> tuple[float, int, str]:
@@ -182,8 +236,8 @@ def compile_bytecode() -> bool:
     ``PYTHONDONTWRITEBYTECODE`` would recompile every changed module in every run: tens of
     milliseconds). Whether every module compiled (False also when the folder is read-only)."""
     import compileall
-    import io
     import contextlib
+    import io
 
     package = Path(__file__).resolve().parents[1]
     try:
@@ -220,8 +274,14 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
                 row["times"].append(time_process(argv)[0])
         for row, _ in timed:
             times = row.pop("times")
-            row.update({"median_s": statistics.median(times), "best_s": min(times), "spread": spread(times),
-                        "repeats": repeats})
+            row.update(
+                {
+                    "median_s": statistics.median(times),
+                    "best_s": min(times),
+                    "spread": spread(times),
+                    "repeats": repeats,
+                }
+            )
         progress("latency: first rbi simulate in a fresh HOME")
         first = first_run(bodies, 3 if quick else 7)
         progress("latency: where rbi inertia's start-up goes (python -X importtime)")
@@ -232,9 +292,14 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
             row["ratio_to_numpy_import"] = row["median_s"] / baseline
         if row["command"] in TARGETS:
             row["target"] = TARGETS[row["command"]]
-    return {"baseline": rows[0]["command"], "commands": rows, "first_run": first,
-            "per_file": per_file_cost(rows, len(many_bodies(bodies))), "imports": imports,
-            "bytecode_compiled": bytecode}
+    return {
+        "baseline": rows[0]["command"],
+        "commands": rows,
+        "first_run": first,
+        "per_file": per_file_cost(rows, len(many_bodies(bodies))),
+        "imports": imports,
+        "bytecode_compiled": bytecode,
+    }
 
 
 def spread(values: list[float]) -> float:

@@ -15,8 +15,10 @@ def bodies_folder() -> Path:
     folder = Path(__file__).resolve().parents[1] / "data" / "bodies"
     missing = [name for name in BENCH_BODIES if not (folder / name).is_file()]
     if missing:
-        raise FileNotFoundError(f"rbi bench needs the example bodies {', '.join(missing)} in {folder}; "
-                                "this installation of rbi is incomplete: reinstall it")
+        raise FileNotFoundError(
+            f"rbi bench needs the example bodies {', '.join(missing)} in {folder}; "
+            "this installation of rbi is incomplete: reinstall it"
+        )
     return folder
 
 

@@ -42,8 +42,10 @@ def _scene(spec: str):
 def _errors(run, reference) -> dict[str, float]:
     from rbi.sim.diagnostics import orientation_error_deg
 
-    return {"final_orientation_error_deg": float(orientation_error_deg(run.q[-1], reference.q[-1])),
-            "final_omega_error_rad_s": float(np.max(np.abs(run.omega[-1] - reference.omega[-1])))}
+    return {
+        "final_orientation_error_deg": float(orientation_error_deg(run.q[-1], reference.q[-1])),
+        "final_omega_error_rad_s": float(np.max(np.abs(run.omega[-1] - reference.omega[-1]))),
+    }
 
 
 def _process_seconds(spec: str, repeat: int, env=None) -> list[float]:
@@ -61,8 +63,10 @@ def _first_run_costs(spec: str) -> dict[str, float]:
     run after it (the kernel is built at install time, so the two should match)."""
     with tempfile.TemporaryDirectory() as folder:
         env = dict(os.environ, HOME=folder, XDG_CACHE_HOME=os.path.join(folder, "cache"))
-        return {"first_run_fresh_home_seconds": _process_seconds(spec, 1, env)[0],
-                "second_run_seconds": _process_seconds(spec, 1, env)[0]}
+        return {
+            "first_run_fresh_home_seconds": _process_seconds(spec, 1, env)[0],
+            "second_run_seconds": _process_seconds(spec, 1, env)[0],
+        }
 
 
 def measure(spec: str, repeat: int, first_run: bool) -> dict:
@@ -77,11 +81,21 @@ def measure(spec: str, repeat: int, first_run: bool) -> dict:
     fast_seconds = statistics.median(r.wall_seconds for r in fast_runs)
     report = {
         "spec": spec,
-        "rk45": {"seconds": chapter.wall_seconds, "steps": chapter.steps, "rhs_evals": chapter.rhs_evals,
-                 **_errors(chapter, reference)},
-        "default": {"seconds_median": fast_seconds, "seconds_min": min(r.wall_seconds for r in fast_runs),
-                    "steps": fast_runs[0].steps, "rhs_evals": fast_runs[0].rhs_evals, "rtol": fast_runs[0].rtol,
-                    "kernel": fast_runs[0].integrator, **_errors(fast_runs[0], reference)},
+        "rk45": {
+            "seconds": chapter.wall_seconds,
+            "steps": chapter.steps,
+            "rhs_evals": chapter.rhs_evals,
+            **_errors(chapter, reference),
+        },
+        "default": {
+            "seconds_median": fast_seconds,
+            "seconds_min": min(r.wall_seconds for r in fast_runs),
+            "steps": fast_runs[0].steps,
+            "rhs_evals": fast_runs[0].rhs_evals,
+            "rtol": fast_runs[0].rtol,
+            "kernel": fast_runs[0].integrator,
+            **_errors(fast_runs[0], reference),
+        },
         "speedup_median": chapter.wall_seconds / fast_seconds,
         "process_seconds": _process_seconds(spec, 5),
     }
@@ -92,7 +106,9 @@ def measure(spec: str, repeat: int, first_run: bool) -> dict:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("--spec", default=str(Path(__file__).resolve().parents[3] / "bodies" / "top_bolted.yaml"))
+    parser.add_argument(
+        "--spec", default=str(Path(__file__).resolve().parents[3] / "bodies" / "top_bolted.yaml")
+    )
     parser.add_argument("--repeat", type=int, default=20)
     parser.add_argument("--first-run", action="store_true", help="also measure first-run (empty cache) costs")
     args = parser.parse_args()

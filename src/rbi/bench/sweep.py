@@ -21,8 +21,8 @@ import os
 import subprocess
 import tempfile
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from rbi.bench.paths import bodies_folder, rbi_command
 
@@ -62,7 +62,9 @@ def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
     from rbi.spec.load import read_yaml
     from rbi.sweep.study import Study, SweepSettings, check_settings
 
-    settings = SweepSettings(spin=_axis_text(g["spin"]), tilt=_axis_text(g["tilt"]), duration=g["duration"], yes=True)
+    settings = SweepSettings(
+        spin=_axis_text(g["spin"]), tilt=_axis_text(g["tilt"]), duration=g["duration"], yes=True
+    )
     check_settings(settings)
     study = Study(str(spec), read_yaml(spec), settings, rows_printed=False)
     study.result(study.run(output_target(str(out), "--out", ("csv", "parquet"), inputs=[str(spec)])))
@@ -92,8 +94,21 @@ def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: flo
     """Runs per second of a shell loop of whole ``rbi simulate`` processes."""
     start = time.perf_counter()
     for spin, tilt in runs:
-        proc = subprocess.run(rbi_command() + ["simulate", str(spec), "--spin", f"{spin!r}", "--tilt", f"{tilt!r}",
-                                               "--duration", f"{duration:g}"], capture_output=True, text=True)
+        proc = subprocess.run(
+            rbi_command()
+            + [
+                "simulate",
+                str(spec),
+                "--spin",
+                f"{spin!r}",
+                "--tilt",
+                f"{tilt!r}",
+                "--duration",
+                f"{duration:g}",
+            ],
+            capture_output=True,
+            text=True,
+        )
         if proc.returncode != 0:
             raise RuntimeError(f"rbi simulate: exit {proc.returncode}: {proc.stderr.strip()[-200:]}")
     seconds = time.perf_counter() - start
@@ -102,8 +117,21 @@ def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: flo
 
 def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     out = folder / "sweep.csv"
-    args = ["sweep", str(spec), "--spin", _axis_text(g["spin"]), "--tilt", _axis_text(g["tilt"]),
-            "--duration", f"{g['duration']:g}", "--out", str(out), "--yes", "--format", "json"]
+    args = [
+        "sweep",
+        str(spec),
+        "--spin",
+        _axis_text(g["spin"]),
+        "--tilt",
+        _axis_text(g["tilt"]),
+        "--duration",
+        f"{g['duration']:g}",
+        "--out",
+        str(out),
+        "--yes",
+        "--format",
+        "json",
+    ]
     runs = g["spin"][2] * g["tilt"][2]
     cpu_start = _cpu_seconds()
     start = time.perf_counter()
@@ -112,12 +140,20 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     cpu = _cpu_seconds() - cpu_start
     with open(out, encoding="utf-8") as stream:
         lines = sum(1 for _ in stream) - 1
-    return {"command": "rbi " + " ".join(a if a != str(spec) else "bodies/top.yaml" for a in args
-                                         if not a.startswith(str(folder))).replace("--out", "--out FILE.csv"),
-            "runs": runs, "rows_written": lines, "seconds": seconds, "runs_per_second": runs / seconds,
-            # CPU time of every thread of this process over the wall time: how many cores the
-            # sweep actually got (the machine's other work takes the rest)
-            "cpu_seconds": cpu, "cores_used": cpu / seconds}
+    return {
+        "command": "rbi "
+        + " ".join(
+            a if a != str(spec) else "bodies/top.yaml" for a in args if not a.startswith(str(folder))
+        ).replace("--out", "--out FILE.csv"),
+        "runs": runs,
+        "rows_written": lines,
+        "seconds": seconds,
+        "runs_per_second": runs / seconds,
+        # CPU time of every thread of this process over the wall time: how many cores the
+        # sweep actually got (the machine's other work takes the rest)
+        "cpu_seconds": cpu,
+        "cores_used": cpu / seconds,
+    }
 
 
 def _cpu_seconds() -> float:
@@ -132,8 +168,21 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     # more runs than rbi sweep keeps in memory to print (MAX_ROWS_SHOWN, 10⁵): rows only streamed
     spins = 100 if quick else 1010
     out = folder / "memory.csv"
-    argv = rbi_command() + ["sweep", str(spec), "--spin", f"150:260:{spins}", "--tilt", "0.01:1:100",
-                            "--duration", "0.02", "--samples", "2", "--out", str(out), "--yes"]
+    argv = rbi_command() + [
+        "sweep",
+        str(spec),
+        "--spin",
+        f"150:260:{spins}",
+        "--tilt",
+        "0.01:1:100",
+        "--duration",
+        "0.02",
+        "--samples",
+        "2",
+        "--out",
+        str(out),
+        "--yes",
+    ]
     runs = spins * 100
     samples = []
     start = time.perf_counter()
@@ -151,8 +200,14 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
         except (OSError, KeyError, ValueError):
             rss_kb, size = None, 0
         if rss_kb is not None:
-            samples.append({"seconds": round(time.perf_counter() - start, 3), "rss_mb": rss_kb / 1024,
-                            "peak_mb": peak_kb / 1024, "csv_bytes": size})
+            samples.append(
+                {
+                    "seconds": round(time.perf_counter() - start, 3),
+                    "rss_mb": rss_kb / 1024,
+                    "peak_mb": peak_kb / 1024,
+                    "csv_bytes": size,
+                }
+            )
         time.sleep(0.1)
     stderr = proc.stderr.read()
     proc.stderr.close()
@@ -165,9 +220,13 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     first = [s["rss_mb"] for s in samples[:quarter]]
     last = [s["rss_mb"] for s in samples[-quarter:]]
     return {
-        "command": (f"rbi sweep bodies/top.yaml --spin 150:260:{spins} --tilt 0.01:1:100 --duration 0.02 "
-                    "--samples 2 --out FILE.csv --yes"),
-        "runs": runs, "rows_written": rows, "seconds": seconds,
+        "command": (
+            f"rbi sweep bodies/top.yaml --spin 150:260:{spins} --tilt 0.01:1:100 --duration 0.02 "
+            "--samples 2 --out FILE.csv --yes"
+        ),
+        "runs": runs,
+        "rows_written": rows,
+        "seconds": seconds,
         # the child's high-water mark of resident memory (VmHWM) at the last sample: wait4's
         # ru_maxrss would also count the bench process's own memory at the fork
         "peak_rss_mb": max((s["peak_mb"] for s in samples), default=None),
@@ -199,7 +258,11 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         memory = memory_profile(spec, quick, folder)
     return {
         "grid": {"spin": list(g["spin"]), "tilt_deg": list(g["tilt"]), "duration": g["duration"]},
-        "cores": cores, "single_run": single, "sweep": sweep, "process_loop": loop, "memory": memory,
+        "cores": cores,
+        "single_run": single,
+        "sweep": sweep,
+        "process_loop": loop,
+        "memory": memory,
         "ratio_to_cores_x_single": sweep["runs_per_second"] / (cores * single["runs_per_second"]),
         "ratio_to_single": sweep["runs_per_second"] / single["runs_per_second"],
         "ratio_to_process_loop": sweep["runs_per_second"] / loop["runs_per_second"],

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import json
 import tempfile
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 
@@ -81,8 +81,12 @@ def file_timings(specs: dict[str, Path], repeats: int) -> dict:
 
     out = {}
     for kind, spec in specs.items():
-        timing = measure(lambda: principal_axes(load_body(spec).props.inertia_com),
-                         min_repeats=repeats, max_repeats=repeats, min_seconds=0.0)
+        timing = measure(
+            lambda: principal_axes(load_body(spec).props.inertia_com),
+            min_repeats=repeats,
+            max_repeats=repeats,
+            min_seconds=0.0,
+        )
         out[f"load_{kind}_s"] = timing.median
     out["csv_megabytes"] = (specs["csv"].parent / "cloud.csv").stat().st_size / 1e6
     return out
@@ -130,6 +134,7 @@ def scaling_exponent(rows: list[dict], key: str = "total_s") -> float | None:
 
 # --- solid parts written in YAML ----------------------------------------------------------
 
+
 def parts_yaml(n: int, seed: int = 1) -> str:
     """A spec of ``n`` parts cycling through cone, cylinder (by density) and point mass, one
     flow mapping per line (the compact form a generator would write)."""
@@ -146,10 +151,14 @@ def parts_yaml(n: int, seed: int = 1) -> str:
     for i in range(n):
         kind = i % 3
         if kind == 0:
-            lines.append(f"  - {{shape: cone, mass: {mass[i]:.6g}, radius: {radius[i]:.6g}, apex: {v(a[i])}, base: {v(b[i])}}}")
+            lines.append(
+                f"  - {{shape: cone, mass: {mass[i]:.6g}, radius: {radius[i]:.6g}, apex: {v(a[i])}, base: {v(b[i])}}}"
+            )
         elif kind == 1:
-            lines.append(f"  - {{shape: cylinder, density: {1000 * mass[i]:.6g}, radius: {radius[i]:.6g}, "
-                         f"start: {v(a[i])}, end: {v(b[i])}}}")
+            lines.append(
+                f"  - {{shape: cylinder, density: {1000 * mass[i]:.6g}, radius: {radius[i]:.6g}, "
+                f"start: {v(a[i])}, end: {v(b[i])}}}"
+            )
         else:
             lines.append(f"  - {{shape: point, mass: {mass[i]:.6g}, position: {v(a[i])}}}")
     return "\n".join(lines) + "\n"
@@ -181,19 +190,22 @@ def solid_parts(sizes, progress: Progress) -> list[dict]:
             # The same spec as one JSON object (also valid YAML), as a generating program would write it.
             as_json = path.with_suffix(".json")
             as_json.write_text(json.dumps(raw))
-            json_s, _ = time_once(lambda: body_from_spec(
-                validation_messages(str(as_json), read_yaml(as_json))[0], str(as_json)))
-            rows.append({
-                "parts": n,
-                "yaml_megabytes": path.stat().st_size / 1e6,
-                "read_yaml_s": read_s,
-                "validate_s": validate_s,
-                "translate_s": translate_s,
-                "load_total_s": total,
-                "us_per_part": 1e6 * total / n,
-                "load_total_json_s": json_s,
-                "core_s": core.median,
-            })
+            json_s, _ = time_once(
+                lambda: body_from_spec(validation_messages(str(as_json), read_yaml(as_json))[0], str(as_json))
+            )
+            rows.append(
+                {
+                    "parts": n,
+                    "yaml_megabytes": path.stat().st_size / 1e6,
+                    "read_yaml_s": read_s,
+                    "validate_s": validate_s,
+                    "translate_s": translate_s,
+                    "load_total_s": total,
+                    "us_per_part": 1e6 * total / n,
+                    "load_total_json_s": json_s,
+                    "core_s": core.median,
+                }
+            )
     return rows
 
 
@@ -202,8 +214,10 @@ def _warm_up_loader(folder: Path) -> None:
     from rbi.spec.load import load_body
 
     spec = folder / "warm.yaml"
-    spec.write_text("parts:\n  - {shape: point, mass: 1.0, position: [0, 0, 0]}\n"
-                    "  - {shape: point, mass: 1.0, position: [1, 0, 0]}\n")
+    spec.write_text(
+        "parts:\n  - {shape: point, mass: 1.0, position: [0, 0, 0]}\n"
+        "  - {shape: point, mass: 1.0, position: [1, 0, 0]}\n"
+    )
     load_body(spec)
 
 

@@ -7,8 +7,9 @@ import platform
 import statistics
 import sys
 import time
-from datetime import datetime, timezone
-from typing import Callable, NamedTuple
+from collections.abc import Callable
+from datetime import UTC, datetime
+from typing import NamedTuple
 
 
 class Timing(NamedTuple):
@@ -19,8 +20,9 @@ class Timing(NamedTuple):
     repeats: int
 
 
-def measure(call: Callable[[], object], min_repeats: int = 3, max_repeats: int = 50,
-            min_seconds: float = 0.2) -> Timing:
+def measure(
+    call: Callable[[], object], min_repeats: int = 3, max_repeats: int = 50, min_seconds: float = 0.2
+) -> Timing:
     """Time ``call`` at least ``min_repeats`` times and until ``min_seconds`` have been spent
     (at most ``max_repeats`` times); the median resists the other users of a shared machine."""
     times: list[float] = []
@@ -47,7 +49,7 @@ def machine() -> dict:
     import scipy
 
     info = {
-        "date": datetime.now(timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+        "date": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
         "cpu": _cpu_model(),
         "cores": os.cpu_count(),
         "load_average_1min": _load_average(),

@@ -21,9 +21,9 @@ from __future__ import annotations
 
 import statistics
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 
@@ -49,8 +49,15 @@ class Case:
 def cases(quick: bool) -> list[Case]:
     top_duration = 0.5 if quick else 4.0
     return [
-        Case("bolted top", "top_bolted.yaml", (0.0, 0.0, 200.0), 0.0, top_duration,
-             int(round(120 * top_duration)) + 1, "tight"),
+        Case(
+            "bolted top",
+            "top_bolted.yaml",
+            (0.0, 0.0, 200.0),
+            0.0,
+            top_duration,
+            int(round(120 * top_duration)) + 1,
+            "tight",
+        ),
         Case("free asymmetric body", "tbar.yaml", (12.0, 16.0, 20.0), 0.0, 4.0, 481, "exact"),
     ]
 
@@ -96,7 +103,10 @@ def timed_run(scene, q0, omega0, case: Case, method: str, rtol: float | None, mi
 def errors(scene, trajectory, reference) -> dict:
     from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg
 
-    drifts = {name: item["drift"] for name, item in conserved_quantities(scene, trajectory.q, trajectory.omega).items()}
+    drifts = {
+        name: item["drift"]
+        for name, item in conserved_quantities(scene, trajectory.q, trajectory.omega).items()
+    }
     return {
         "orientation_error_deg": float(orientation_error_deg(trajectory.q[-1], reference.q[-1])),
         "omega_error": float(np.linalg.norm(trajectory.omega[-1] - reference.omega[-1])),
@@ -117,10 +127,14 @@ def reference_of(case: Case, scene, q0, omega0, quick: bool) -> tuple[object, di
     check_rtol = 1e-12 if quick else 1e-13
     check = simulate(scene, q0, omega0, case.duration, case.samples, method="dop853", rtol=check_rtol)
     return ref, {
-        "method": "default", "rtol": 1e-14,
-        "check": {"method": "dop853", "rtol": check_rtol,
-                  "orientation_difference_deg": float(orientation_error_deg(check.q[-1], ref.q[-1])),
-                  "omega_difference": float(np.linalg.norm(check.omega[-1] - ref.omega[-1]))},
+        "method": "default",
+        "rtol": 1e-14,
+        "check": {
+            "method": "dop853",
+            "rtol": check_rtol,
+            "orientation_difference_deg": float(orientation_error_deg(check.q[-1], ref.q[-1])),
+            "omega_difference": float(np.linalg.norm(check.omega[-1] - ref.omega[-1])),
+        },
     }
 
 
@@ -139,22 +153,43 @@ def run_case(case: Case, quick: bool, progress: Progress) -> dict:
             chapter = (method, rtol) == CHAPTER
             min_seconds = 0.3 if compiled else (2.0 if chapter and not quick else 0.0)
             trajectory, seconds, repeats = timed_run(scene, q0, omega0, case, method, rtol, min_seconds)
-            rows.append({
-                "method": method, "rtol": rtol, "chapter_setup": chapter,
-                **errors(scene, trajectory, reference),
-                "steps": trajectory.steps, "rhs_evals": trajectory.rhs_evals,
-                "seconds": seconds, "repeats": repeats,
-            })
+            rows.append(
+                {
+                    "method": method,
+                    "rtol": rtol,
+                    "chapter_setup": chapter,
+                    **errors(scene, trajectory, reference),
+                    "steps": trajectory.steps,
+                    "rhs_evals": trajectory.rhs_evals,
+                    "seconds": seconds,
+                    "repeats": repeats,
+                }
+            )
     progress(f"{case.name}: rbi default settings")
     trajectory, seconds, repeats = timed_run(scene, q0, omega0, case, "default", None, 0.3)
-    default_row = {"method": "default", "rtol": trajectory.rtol, "chapter_setup": False, "default_settings": True,
-                   **errors(scene, trajectory, reference), "steps": trajectory.steps,
-                   "rhs_evals": trajectory.rhs_evals, "seconds": seconds, "repeats": repeats}
+    default_row = {
+        "method": "default",
+        "rtol": trajectory.rtol,
+        "chapter_setup": False,
+        "default_settings": True,
+        **errors(scene, trajectory, reference),
+        "steps": trajectory.steps,
+        "rhs_evals": trajectory.rhs_evals,
+        "seconds": seconds,
+        "repeats": repeats,
+    }
     return {
-        "name": case.name, "spec": f"bodies/{case.spec}", "omega0": list(case.omega0), "tilt_deg": case.tilt_deg,
-        "duration": case.duration, "samples": case.samples, "reference": reference_info,
+        "name": case.name,
+        "spec": f"bodies/{case.spec}",
+        "omega0": list(case.omega0),
+        "tilt_deg": case.tilt_deg,
+        "duration": case.duration,
+        "samples": case.samples,
+        "reference": reference_info,
         "kernel_load_seconds": load_seconds,
-        "runs": rows, "default": default_row, "speedup": speedup(rows, default_row),
+        "runs": rows,
+        "default": default_row,
+        "speedup": speedup(rows, default_row),
     }
 
 
@@ -166,8 +201,10 @@ def speedup(rows: list[dict], default_row: dict) -> dict | None:
         return None
 
     def no_worse(row):
-        return (row["orientation_error_deg"] <= chapter["orientation_error_deg"]
-                and row["omega_error"] <= chapter["omega_error"])
+        return (
+            row["orientation_error_deg"] <= chapter["orientation_error_deg"]
+            and row["omega_error"] <= chapter["omega_error"]
+        )
 
     out = {
         "chapter_seconds": chapter["seconds"],
@@ -193,8 +230,10 @@ def planned_steps(quick: bool) -> int:
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    return {"chapter_setup": {"method": CHAPTER[0], "rtol": CHAPTER[1], "atol": CHAPTER[1] / 100},
-            "cases": [run_case(case, quick, progress) for case in cases(quick)]}
+    return {
+        "chapter_setup": {"method": CHAPTER[0], "rtol": CHAPTER[1], "atol": CHAPTER[1] / 100},
+        "cases": [run_case(case, quick, progress) for case in cases(quick)],
+    }
 
 
 def plot(result: dict, path: str | Path) -> None:
@@ -205,9 +244,11 @@ def plot(result: dict, path: str | Path) -> None:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
-    styles = {"default": ("rbi default method (compiled DOP853)", "C0", "o"),
-              "rk45": ("scipy RK45, Python RHS", "C3", "s"),
-              "dop853": ("scipy DOP853, Python RHS", "C2", "^")}
+    styles = {
+        "default": ("rbi default method (compiled DOP853)", "C0", "o"),
+        "rk45": ("scipy RK45, Python RHS", "C3", "s"),
+        "dop853": ("scipy DOP853, Python RHS", "C2", "^"),
+    }
     cases_ = result["cases"]
     fig, axes = plt.subplots(1, len(cases_), figsize=(6.2 * len(cases_), 4.8), squeeze=False)
     floor = 1e-14
@@ -220,16 +261,38 @@ def plot(result: dict, path: str | Path) -> None:
             y = [max(r["orientation_error_deg"], floor) for r in rows]
             ax.loglog(x, y, marker=marker, color=colour, label=label)
             for r, xi, yi in zip(rows, x, y):
-                ax.annotate(f"{r['rtol']:.0e}", (xi, yi), textcoords="offset points", xytext=(4, 3), fontsize=7, color=colour)
+                ax.annotate(
+                    f"{r['rtol']:.0e}",
+                    (xi, yi),
+                    textcoords="offset points",
+                    xytext=(4, 3),
+                    fontsize=7,
+                    color=colour,
+                )
         chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
         if chapter:
-            ax.loglog([chapter["seconds"]], [max(chapter["orientation_error_deg"], floor)], "*", color="k",
-                      markersize=14, label="the chapter's set-up (RK45, rtol 1e-8)")
+            ax.loglog(
+                [chapter["seconds"]],
+                [max(chapter["orientation_error_deg"], floor)],
+                "*",
+                color="k",
+                markersize=14,
+                label="the chapter's set-up (RK45, rtol 1e-8)",
+            )
         d = case["default"]
-        ax.loglog([d["seconds"]], [max(d["orientation_error_deg"], floor)], "P", color="C0", markersize=12,
-                  markeredgecolor="k", label=f"rbi defaults (rtol {d['rtol']:g})")
+        ax.loglog(
+            [d["seconds"]],
+            [max(d["orientation_error_deg"], floor)],
+            "P",
+            color="C0",
+            markersize=12,
+            markeredgecolor="k",
+            label=f"rbi defaults (rtol {d['rtol']:g})",
+        )
         omega = ", ".join(f"{w:g}" for w in case["omega0"])
-        ax.set_title(f"{case['name']} ({case['spec']}, ω₀ = ({omega}) rad/s, {case['duration']:g} s)", fontsize=9)
+        ax.set_title(
+            f"{case['name']} ({case['spec']}, ω₀ = ({omega}) rad/s, {case['duration']:g} s)", fontsize=9
+        )
         ax.set_xlabel("in-process time of one simulate() call [s]")
         ax.set_ylabel("final orientation error [deg]")
         ax.grid(True, which="both", alpha=0.3)

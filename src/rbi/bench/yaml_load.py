@@ -71,13 +71,17 @@ def spec_text(n_parts: int, shape: str, seed: int = 0) -> str:
     if shape == "point":
         lines += [f"  - {{shape: point, mass: {m:.6g}, position: {v(p)}}}" for m, p in zip(sizes, starts)]
     else:
-        lines += [f"  - {{shape: cylinder, density: {1000 * m:.6g}, radius: {0.1 * m:.6g}, start: {v(a)}, end: {v(b)}}}"
-                  for m, a, b in zip(sizes, starts, ends)]
+        lines += [
+            f"  - {{shape: cylinder, density: {1000 * m:.6g}, radius: {0.1 * m:.6g}, start: {v(a)}, end: {v(b)}}}"
+            for m, a, b in zip(sizes, starts, ends)
+        ]
     return "\n".join(lines) + "\n"
 
 
 def _python(code: str, *args: str, timeout: float) -> str:
-    proc = subprocess.run([sys.executable, "-c", code, *args], capture_output=True, text=True, timeout=timeout)
+    proc = subprocess.run(
+        [sys.executable, "-c", code, *args], capture_output=True, text=True, timeout=timeout
+    )
     if proc.returncode != 0:
         raise RuntimeError(f"benchmark subprocess failed: {proc.stderr.strip()[-500:]}")
     return proc.stdout.strip()
@@ -92,8 +96,12 @@ def yaml_load_ratio(n_parts: int, shape: str, timeout: float = 600.0) -> dict:
         bare_s = float(_python(_BARE, str(path), timeout=timeout))
         steps = json.loads(_python(_RBI, str(path), timeout=timeout))
         start = time.perf_counter()
-        proc = subprocess.run([sys.executable, "-m", "rbi", "inertia", str(path), "--format", "json"],
-                              capture_output=True, text=True, timeout=timeout)
+        proc = subprocess.run(
+            [sys.executable, "-m", "rbi", "inertia", str(path), "--format", "json"],
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+        )
         process_s = time.perf_counter() - start
         if proc.returncode != 0:
             raise RuntimeError(f"rbi inertia failed on the generated spec: {proc.stderr.strip()[-500:]}")

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -10,33 +10,62 @@ from rbi.cli.options import SpecFile
 from rbi.cli.simulate_command import SpinAxisOption
 from rbi.spec.errors import InputError
 
-
-OutOption = Annotated[str, typer.Option("--out", "-o", metavar="FILE.html|FILE.gif",
-                                        help="The animation: .html (3D, plays offline in a browser) or .gif.")]
-SpinOption = Annotated[Optional[float], typer.Option("--spin", "-s", metavar="W",
-                                                     help="Initial spin about the spin axis, rad/s.")]
-OmegaOption = Annotated[Optional[str], typer.Option("--omega", "-w", metavar="WX,WY,WZ",
-                                                    help="Initial angular velocity in body axes, rad/s.")]
-TiltOption = Annotated[float, typer.Option("--tilt", metavar="DEG",
-                                           help="Nudge at t=0: turn the body DEG degrees about --tilt-axis.")]
+OutOption = Annotated[
+    str,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="FILE.html|FILE.gif",
+        help="The animation: .html (3D, plays offline in a browser) or .gif.",
+    ),
+]
+SpinOption = Annotated[
+    float | None,
+    typer.Option("--spin", "-s", metavar="W", help="Initial spin about the spin axis, rad/s."),
+]
+OmegaOption = Annotated[
+    str | None,
+    typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Initial angular velocity in body axes, rad/s."),
+]
+TiltOption = Annotated[
+    float,
+    typer.Option("--tilt", metavar="DEG", help="Nudge at t=0: turn the body DEG degrees about --tilt-axis."),
+]
 TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y", help="World axis of the nudge.")]
-GravityOption = Annotated[Optional[float], typer.Option("--gravity", "-g", metavar="G",
-                                                        help="Gravity in m/s² (default 9.81).")]
+GravityOption = Annotated[
+    float | None, typer.Option("--gravity", "-g", metavar="G", help="Gravity in m/s² (default 9.81).")
+]
 DurationOption = Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")]
-RtolOption = Annotated[Optional[float], typer.Option("--rtol", metavar="RTOL",
-                                                     help="Integrator tolerance (default 1e-12).")]
-MaxStepsOption = Annotated[Optional[int], typer.Option("--max-steps", metavar="N",
-                                                       help="Most integration steps the run may take.")]
+RtolOption = Annotated[
+    float | None, typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (default 1e-12).")
+]
+MaxStepsOption = Annotated[
+    int | None, typer.Option("--max-steps", metavar="N", help="Most integration steps the run may take.")
+]
 YesOption = Annotated[bool, typer.Option("--yes", "-y", help="Run even past the estimated step budget.")]
-SpeedOption = Annotated[float, typer.Option("--speed", metavar="X",
-                                            help="Playback speed the page starts at (0.1–2; 1 = real time).")]
+SpeedOption = Annotated[
+    float,
+    typer.Option("--speed", metavar="X", help="Playback speed the page starts at (0.1–2; 1 = real time)."),
+]
 FpsOption = Annotated[int, typer.Option("--fps", metavar="N", help="Frames per second of a GIF.")]
 
 
-def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: OmegaOption = None, tilt: TiltOption = 0.0,
-            tilt_axis: TiltAxisOption = "y", gravity: GravityOption = None, duration: DurationOption = 4.0,
-            rtol: RtolOption = None, max_steps: MaxStepsOption = None, yes: YesOption = False,
-            speed: SpeedOption = 1.0, fps: FpsOption = 25, spin_axis: SpinAxisOption = None) -> None:
+def animate(
+    file: SpecFile,
+    out: OutOption,
+    spin: SpinOption = None,
+    omega: OmegaOption = None,
+    tilt: TiltOption = 0.0,
+    tilt_axis: TiltAxisOption = "y",
+    gravity: GravityOption = None,
+    duration: DurationOption = 4.0,
+    rtol: RtolOption = None,
+    max_steps: MaxStepsOption = None,
+    yes: YesOption = False,
+    speed: SpeedOption = 1.0,
+    fps: FpsOption = 25,
+    spin_axis: SpinAxisOption = None,
+) -> None:
     """Animate the body's motion, simulated as `rbi simulate` does.
 
     The HTML page draws the parts as solids, the pivot and the ground, and the path of the tip
@@ -66,8 +95,19 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
     from rbi.cli.render import say_warnings
 
     say_warnings(body.warnings)
-    prepared = prepare_run(body, spin=spin, omega=omega, tilt=tilt, tilt_axis=tilt_axis, gravity=gravity,
-                           duration=duration, rtol=rtol, max_steps=max_steps, yes=yes, spin_axis=spin_axis)
+    prepared = prepare_run(
+        body,
+        spin=spin,
+        omega=omega,
+        tilt=tilt,
+        tilt_axis=tilt_axis,
+        gravity=gravity,
+        duration=duration,
+        rtol=rtol,
+        max_steps=max_steps,
+        yes=yes,
+        spin_axis=spin_axis,
+    )
     data, run, tilts = animation(prepared, gif_frames)
     if target.format == "html":
         from rbi.viz.page import html_page
@@ -80,8 +120,12 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
 
         progress = stderr_progress("gif", "frames")
         try:
-            write_output(target, writer=lambda path: write_gif(data, path, fps=fps,
-                                                                progress=progress.update if progress else None))
+            write_output(
+                target,
+                writer=lambda path: write_gif(
+                    data, path, fps=fps, progress=progress.update if progress else None
+                ),
+            )
         finally:
             if progress is not None:
                 progress.close()
@@ -91,13 +135,15 @@ def animate(file: SpecFile, out: OutOption, spin: SpinOption = None, omega: Omeg
 
 def _gif_frames(duration: float, fps: int) -> int:
     """Frames of a GIF of ``duration`` s at ``fps``; refused past what a GIF may hold."""
-    from rbi.viz.plots import require_matplotlib
     from rbi.viz.frames import MAX_GIF_FRAMES
+    from rbi.viz.plots import require_matplotlib
 
     require_matplotlib("--out")
     frames = int(duration * fps) + 1
     if frames > MAX_GIF_FRAMES:
-        raise InputError(f"--duration: a GIF of {duration:g} s at {fps} frames per second would have "
-                         f"{frames:.3g} frames, more than {MAX_GIF_FRAMES}: shorten --duration, lower --fps, "
-                         "or write .html")
+        raise InputError(
+            f"--duration: a GIF of {duration:g} s at {fps} frames per second would have "
+            f"{frames:.3g} frames, more than {MAX_GIF_FRAMES}: shorten --duration, lower --fps, "
+            "or write .html"
+        )
     return frames

@@ -14,18 +14,58 @@ import sys
 
 COMMANDS: dict[str, tuple[str, str, str]] = {
     # name: (module, function, the one-line summary `rbi --help` shows)
-    "inertia": ("rbi.cli.mass_commands", "inertia", "Mass, centre of mass and inertia about a point, in any frame."),
-    "principal": ("rbi.cli.mass_commands", "principal", "Principal moments (ascending) and right-handed principal axes."),
-    "parts": ("rbi.cli.parts_command", "parts", "Per-part mass, centre of mass, inertia and share of the whole."),
-    "momentum": ("rbi.cli.mass_commands", "momentum", "Angular momentum and kinetic energy for a given spin."),
-    "dynamics": ("rbi.cli.dynamics_command", "dynamics", "Newton–Euler: the load for a motion, or the motion for a load."),
-    "simulate": ("rbi.cli.simulate_command", "simulate", "Motion of a top on its pivot or of a free body, with its error."),
-    "sweep": ("rbi.cli.sweep_command", "sweep", "Many simulations at once: stability maps and tolerance studies."),
+    "inertia": (
+        "rbi.cli.mass_commands",
+        "inertia",
+        "Mass, centre of mass and inertia about a point, in any frame.",
+    ),
+    "principal": (
+        "rbi.cli.mass_commands",
+        "principal",
+        "Principal moments (ascending) and right-handed principal axes.",
+    ),
+    "parts": (
+        "rbi.cli.parts_command",
+        "parts",
+        "Per-part mass, centre of mass, inertia and share of the whole.",
+    ),
+    "momentum": (
+        "rbi.cli.mass_commands",
+        "momentum",
+        "Angular momentum and kinetic energy for a given spin.",
+    ),
+    "dynamics": (
+        "rbi.cli.dynamics_command",
+        "dynamics",
+        "Newton–Euler: the load for a motion, or the motion for a load.",
+    ),
+    "simulate": (
+        "rbi.cli.simulate_command",
+        "simulate",
+        "Motion of a top on its pivot or of a free body, with its error.",
+    ),
+    "sweep": (
+        "rbi.cli.sweep_command",
+        "sweep",
+        "Many simulations at once: stability maps and tolerance studies.",
+    ),
     "animate": ("rbi.cli.animate_command", "animate", "Animation of the motion: a 3D HTML page or a GIF."),
     "show": ("rbi.cli.show_command", "show", "Picture of the body as specified: parts, CoM, principal axes."),
-    "export": ("rbi.cli.export_command", "export", "The <inertial> element for URDF, MJCF or SDF (SI units)."),
-    "import": ("rbi.cli.import_command", "import_robot", "Links of a URDF, SDF or MJCF file as rbi specs (custom parts)."),
-    "audit": ("rbi.cli.audit_command", "audit", "A robot file's inertials against its own geometry; totals; --fix."),
+    "export": (
+        "rbi.cli.export_command",
+        "export",
+        "The <inertial> element for URDF, MJCF or SDF (SI units).",
+    ),
+    "import": (
+        "rbi.cli.import_command",
+        "import_robot",
+        "Links of a URDF, SDF or MJCF file as rbi specs (custom parts).",
+    ),
+    "audit": (
+        "rbi.cli.audit_command",
+        "audit",
+        "A robot file's inertials against its own geometry; totals; --fix.",
+    ),
     "check": ("rbi.cli.check_command", "check", "Compare the spec's expect: block with the computed values."),
     "validate": ("rbi.cli.schema_command", "validate", "Validate many specs at once, one line per problem."),
     "schema": ("rbi.cli.schema_command", "schema", "JSON Schema of the spec, for editors."),
@@ -71,18 +111,20 @@ def main() -> None:
         _run()
     finally:
         try:
-            signal.signal(signal.SIGTERM, previous_sigterm if previous_sigterm is not None else signal.SIG_DFL)
+            signal.signal(
+                signal.SIGTERM, previous_sigterm if previous_sigterm is not None else signal.SIG_DFL
+            )
         except ValueError:  # not the main thread: nothing was installed
             pass
 
 
 def _run() -> None:
+    import warnings
+
     from rbi.cli import quick
     from rbi.cli.terminal import Terminated, say
-    from rbi.spec.errors import InputError
     from rbi.formats.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
-
-    import warnings
+    from rbi.spec.errors import InputError
 
     # numpy's floating-point warnings: non-finite results are refused explicitly (render.emit)
     warnings.simplefilter("ignore", RuntimeWarning)

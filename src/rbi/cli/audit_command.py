@@ -9,39 +9,84 @@ Exit 0 when no link has an error-level flag, 1 when one has (so it gates CI like
 from __future__ import annotations
 
 import sys
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
 from rbi.cli.options import FormatOption, OutputFormat
 
-RobotFileArgument = Annotated[str, typer.Argument(help="Robot description: .urdf, .sdf or MJCF (.xml).",
-                                                  show_default=False, metavar="ROBOT_FILE")]
-PackagePathOption = Annotated[Optional[list[str]], typer.Option(
-        "--package-path", metavar="NAME=DIR",
+RobotFileArgument = Annotated[
+    str,
+    typer.Argument(
+        help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False, metavar="ROBOT_FILE"
+    ),
+]
+PackagePathOption = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--package-path",
+        metavar="NAME=DIR",
         help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
-             "(ROS_PACKAGE_PATH is searched too).")]
-GeometryOption = Annotated[str, typer.Option(
-        "--geometry", metavar="collision|visual",
-        help="Which geometry gives a link's volume (a link without it falls back to the other).")]
-DensityOption = Annotated[Optional[float], typer.Option(
-        "--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³).")]
-MaterialOption = Annotated[Optional[str], typer.Option(
-        "--material", metavar="NAME", help="Built-in material for links that declare no mass (steel, aluminium, ...).")]
-MeshInertiaOption = Annotated[str, typer.Option(
-        "--mesh-inertia", metavar="exact|convex|shell",
+        "(ROS_PACKAGE_PATH is searched too).",
+    ),
+]
+GeometryOption = Annotated[
+    str,
+    typer.Option(
+        "--geometry",
+        metavar="collision|visual",
+        help="Which geometry gives a link's volume (a link without it falls back to the other).",
+    ),
+]
+DensityOption = Annotated[
+    float | None,
+    typer.Option("--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³)."),
+]
+MaterialOption = Annotated[
+    str | None,
+    typer.Option(
+        "--material",
+        metavar="NAME",
+        help="Built-in material for links that declare no mass (steel, aluminium, ...).",
+    ),
+]
+MeshInertiaOption = Annotated[
+    str,
+    typer.Option(
+        "--mesh-inertia",
+        metavar="exact|convex|shell",
         help="Mass of a mesh: the solid it encloses (exact; the mesh must be closed), its convex hull, "
-             "or its surface (shell, as MuJoCo).")]
-MeshRepairOption = Annotated[bool, typer.Option(
-        "--mesh-repair", help="Close meshes' small holes (three or four edges) first; the area added is reported.")]
-JointsOption = Annotated[Optional[list[str]], typer.Option(
-        "--joints", metavar="NAME=VALUE",
+        "or its surface (shell, as MuJoCo).",
+    ),
+]
+MeshRepairOption = Annotated[
+    bool,
+    typer.Option(
+        "--mesh-repair",
+        help="Close meshes' small holes (three or four edges) first; the area added is reported.",
+    ),
+]
+JointsOption = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--joints",
+        metavar="NAME=VALUE",
         help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
-             "repeat for several. Default: zero (MJCF: qpos0).")]
-FixOption = Annotated[bool, typer.Option(
-        "--fix", help="Replace each flagged inertial by its geometry's; without --out, show the changes only.")]
-OutOption = Annotated[Optional[str], typer.Option(
-        "--out", "-o", metavar="FILE", help="With --fix: where to write the fixed copy of the robot file.")]
+        "repeat for several. Default: zero (MJCF: qpos0).",
+    ),
+]
+FixOption = Annotated[
+    bool,
+    typer.Option(
+        "--fix", help="Replace each flagged inertial by its geometry's; without --out, show the changes only."
+    ),
+]
+OutOption = Annotated[
+    str | None,
+    typer.Option(
+        "--out", "-o", metavar="FILE", help="With --fix: where to write the fixed copy of the robot file."
+    ),
+]
 
 
 def audit(
@@ -77,9 +122,18 @@ def audit(
     from rbi.formats.paths import _outside_allowed
 
     target = _fix_target(file, fix, out)
-    report = run_audit(file, package_paths=package_path, geometry=geometry, density=density, material=material,
-                       mesh_inertia=mesh_inertia, joints=joints, fix=fix, allow_outside_paths=_outside_allowed.get(),
-                       mesh_repair=mesh_repair)
+    report = run_audit(
+        file,
+        package_paths=package_path,
+        geometry=geometry,
+        density=density,
+        material=material,
+        mesh_inertia=mesh_inertia,
+        joints=joints,
+        fix=fix,
+        allow_outside_paths=_outside_allowed.get(),
+        mesh_repair=mesh_repair,
+    )
     code = report.exit_code
     if target is not None:
         from rbi.cli.output import write_output
@@ -114,8 +168,11 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
         return
     result = report.as_dict()
     if fix:
-        result["fix"] = {"out": out, "changes": [{"link": c.link, "reason": c.reason} for c in report.fix.changes],
-                         "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable]}
+        result["fix"] = {
+            "out": out,
+            "changes": [{"link": c.link, "reason": c.reason} for c in report.fix.changes],
+            "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable],
+        }
     from rbi.cli.render import emit
 
     emit(format.value, result, lambda: None, csv_rows=[_csv_row(each) for each in report.links])
@@ -125,15 +182,17 @@ def _csv_row(each) -> dict:
     from rbi.spec.yaml_writer import visible
 
     declared, geo = each.declared, each.geometry
-    return {"link": visible(each.link.name or each.link.label),
-            "mass": declared.mass if declared else None,
-            "geometry_volume": geo.volume if geo else None,
-            "implied_density": geo.implied_density if geo else None,
-            "ratio_1": None if each.ratios is None else each.ratios[0],
-            "ratio_2": None if each.ratios is None else each.ratios[1],
-            "ratio_3": None if each.ratios is None else each.ratios[2],
-            "com_offset": each.com_offset,
-            "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags)}
+    return {
+        "link": visible(each.link.name or each.link.label),
+        "mass": declared.mass if declared else None,
+        "geometry_volume": geo.volume if geo else None,
+        "implied_density": geo.implied_density if geo else None,
+        "ratio_1": None if each.ratios is None else each.ratios[0],
+        "ratio_2": None if each.ratios is None else each.ratios[1],
+        "ratio_3": None if each.ratios is None else each.ratios[2],
+        "com_offset": each.com_offset,
+        "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags),
+    }
 
 
 def _table(report) -> None:
@@ -141,13 +200,15 @@ def _table(report) -> None:
 
     from rbi.cli.render import number, print_table, terminal_safe
     from rbi.cli.tables import titled
-    from rbi.robot.audit import _worst_ratio
     from rbi.cli.terminal import say
+    from rbi.robot.audit import _worst_ratio
 
     word = report.model.link_word
     plural = "bodies" if word == "body" else word + "s"
-    table = titled(f"{report.path}: {len(report.links)} {plural} (ratio: the declared moment farthest from the "
-                   "geometry's, as a multiple of it)")
+    table = titled(
+        f"{report.path}: {len(report.links)} {plural} (ratio: the declared moment farthest from the "
+        "geometry's, as a multiple of it)"
+    )
     table.add_column(word, overflow="fold")
     table.add_column("mass kg", justify="right", no_wrap=True)
     table.add_column("ρ kg/m³", justify="right", no_wrap=True)
@@ -158,17 +219,25 @@ def _table(report) -> None:
         declared, geo = each.declared, each.geometry
         worst = None if each.ratios is None else _worst_ratio(each.ratios)
         flags = " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok"
-        table.add_row(each.link.name if each.link.name is not None else each.link.label,
-                      "-" if declared is None else number(declared.mass, 6),
-                      "-" if geo is None or geo.implied_density is None else f"{geo.implied_density:.4g}",
-                      "-" if worst is None else f"{worst:.3g}", "-" if each.com_offset is None else f"{each.com_offset:.2g}", flags)
+        table.add_row(
+            each.link.name if each.link.name is not None else each.link.label,
+            "-" if declared is None else number(declared.mass, 6),
+            "-" if geo is None or geo.implied_density is None else f"{geo.implied_density:.4g}",
+            "-" if worst is None else f"{worst:.3g}",
+            "-" if each.com_offset is None else f"{each.com_offset:.2g}",
+            flags,
+        )
     print_table(table)
     for each in report.links:
         for flag in each.flags:
             print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))
     total = report.total
-    print(terminal_safe(f"total ({total.frame}): mass {number(total.mass, 6)} kg, centre of mass "
-                        f"[{', '.join(number(v, 6) for v in total.center_of_mass)}] m"))
+    print(
+        terminal_safe(
+            f"total ({total.frame}): mass {number(total.mass, 6)} kg, centre of mass "
+            f"[{', '.join(number(v, 6) for v in total.center_of_mass)}] m"
+        )
+    )
     moments = np.linalg.eigvalsh(total.inertia_about_com)
     print(f"  principal moments about the centre of mass: {', '.join(number(v, 6) for v in moments)} kg·m²")
     for note in report.notes:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import contextlib
 import sys
 from pathlib import Path
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -16,21 +16,46 @@ from rbi.spec.errors import InputError
 SECTION_NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep")
 
 
-QuickOption = Annotated[bool, typer.Option("--quick", help="A CI-sized run of a few seconds: shorter cases, fewer "
-                                                           "tolerances and sizes, fewer repeats.")]
-OnlyOption = Annotated[Optional[str], typer.Option(
-    "--only", metavar="SECTIONS",
-    help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
-         "sweep (default: all).")]
-PlotOption = Annotated[Optional[str], typer.Option(
-    "--plot", metavar="FILE.png", help="Write a log–log plot of error against time, .png, .svg or .pdf "
-                             f"({needs('matplotlib', 'plot')}).")]
-WriteDocsOption = Annotated[Optional[str], typer.Option(
-    "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md).")]
+QuickOption = Annotated[
+    bool,
+    typer.Option(
+        "--quick",
+        help="A CI-sized run of a few seconds: shorter cases, fewer tolerances and sizes, fewer repeats.",
+    ),
+]
+OnlyOption = Annotated[
+    str | None,
+    typer.Option(
+        "--only",
+        metavar="SECTIONS",
+        help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
+        "sweep (default: all).",
+    ),
+]
+PlotOption = Annotated[
+    str | None,
+    typer.Option(
+        "--plot",
+        metavar="FILE.png",
+        help="Write a log–log plot of error against time, .png, .svg or .pdf "
+        f"({needs('matplotlib', 'plot')}).",
+    ),
+]
+WriteDocsOption = Annotated[
+    str | None,
+    typer.Option(
+        "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md)."
+    ),
+]
 
 
-def bench(quick: QuickOption = False, only: OnlyOption = None, plot: PlotOption = None,
-          write_docs: WriteDocsOption = None, format: FormatOption = OutputFormat.table) -> None:
+def bench(
+    quick: QuickOption = False,
+    only: OnlyOption = None,
+    plot: PlotOption = None,
+    write_docs: WriteDocsOption = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
     """Measure what accuracy costs and how fast rbi is, each target against its baseline measured in
     the same run: the integrator against the textbook's scipy RK45 set-up and a minimal loop, error against time
     for each integrator, mass properties of 10³…10⁶ point masses, large specs against a bare YAML
@@ -87,7 +112,9 @@ def _sections(only: str | None) -> list[str]:
     chosen = [s.strip().lower() for s in only.split(",") if s.strip()]
     unknown = [s for s in chosen if s not in SECTION_NAMES]
     if unknown or not chosen:
-        raise InputError(f"--only: expected a comma-separated list of {', '.join(SECTION_NAMES)} (got {only!r})")
+        raise InputError(
+            f"--only: expected a comma-separated list of {', '.join(SECTION_NAMES)} (got {only!r})"
+        )
     return chosen
 
 
@@ -126,8 +153,14 @@ def _progress(format: OutputFormat, total: int):
 
     from rbi.cli.render import stderr_console
 
-    with Progress(TextColumn("{task.description}"), BarColumn(), MofNCompleteColumn(), TimeElapsedColumn(),
-                  console=stderr_console(), transient=True) as progress:
+    with Progress(
+        TextColumn("{task.description}"),
+        BarColumn(),
+        MofNCompleteColumn(),
+        TimeElapsedColumn(),
+        console=stderr_console(),
+        transient=True,
+    ) as progress:
         task = progress.add_task("rbi bench", total=total)
         started = [False]
 
@@ -157,8 +190,11 @@ def _tables(result: dict):
             continue
         table = Table(title=section["title"], box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
         for header, justify, no_wrap in section["columns"]:
-            table.add_column(unit_header(*header) if isinstance(header, tuple) else header, justify=justify,
-                             no_wrap=no_wrap)
+            table.add_column(
+                unit_header(*header) if isinstance(header, tuple) else header,
+                justify=justify,
+                no_wrap=no_wrap,
+            )
         for row in section["rows"]:
             table.add_row(*row)
         parts.append(table)

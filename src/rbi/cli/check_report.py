@@ -63,12 +63,16 @@ def run_checks(body) -> list[dict[str, Any]]:
         e = expect.moments
         label, point = _point(e.about, body)
         moments, _ = principal_axes(inertia_about(body.props, point))
-        checks.append(compare("moments", sorted(e.value), moments, e.tol, labels["inertia"]) | {"about": label})
+        checks.append(
+            compare("moments", sorted(e.value), moments, e.tol, labels["inertia"]) | {"about": label}
+        )
     if expect.inertia is not None:
         e = expect.inertia
         label, point = _point(e.about, body)
-        checks.append(compare("inertia", e.value, inertia_about(body.props, point), e.tol, labels["inertia"])
-                      | {"about": label})
+        checks.append(
+            compare("inertia", e.value, inertia_about(body.props, point), e.tol, labels["inertia"])
+            | {"about": label}
+        )
     return checks
 
 
@@ -88,8 +92,10 @@ def check_of(file: str):
 
     body = load_body(file)
     if body.spec.expect is None:
-        raise InputError(f"{body.path}: expect: the spec has no `expect:` block, so there is nothing to check "
-                         f"(see docs/check.md)")
+        raise InputError(
+            f"{body.path}: expect: the spec has no `expect:` block, so there is nothing to check "
+            f"(see docs/check.md)"
+        )
     checks = run_checks(body)
     failed = sum(not c["pass"] for c in checks)
     result = {
@@ -102,8 +108,13 @@ def check_of(file: str):
         "checks": [{k: v for k, v in c.items() if k != "component_deviation"} for c in checks],
     }
     summary = {k: result[k] for k in ("name", "units", "ok", "passed", "failed")}
-    return FileReport(result, lambda: _table(body, checks, failed), csv_rows=_csv_rows(checks), summary=summary,
-                      failed=bool(failed))
+    return FileReport(
+        result,
+        lambda: _table(body, checks, failed),
+        csv_rows=_csv_rows(checks),
+        summary=summary,
+        failed=bool(failed),
+    )
 
 
 _SHORT = {"mass": "mass", "center_of_mass": "com", "moments": "", "inertia": "I"}
@@ -127,11 +138,20 @@ def _csv_rows(checks) -> list[dict[str, Any]]:
     rows = []
     for c in checks:
         for label, want, got, deviation in _components(c):
-            rows.append({
-                "quantity": c["quantity"], "component": label.split(" @")[0], "about": c.get("about", ""), "unit": c["unit"],
-                "expected": want, "actual": got, "deviation": deviation, "allowed": c["allowed"],
-                "tol": str(c["tol"]), "pass": bool(deviation <= c["allowed"]),
-            })
+            rows.append(
+                {
+                    "quantity": c["quantity"],
+                    "component": label.split(" @")[0],
+                    "about": c.get("about", ""),
+                    "unit": c["unit"],
+                    "expected": want,
+                    "actual": got,
+                    "deviation": deviation,
+                    "allowed": c["allowed"],
+                    "tol": str(c["tol"]),
+                    "pass": bool(deviation <= c["allowed"]),
+                }
+            )
     return rows
 
 
@@ -143,12 +163,26 @@ def _table(body, checks, failed: int):
 
     verdict = "all expectations hold" if not failed else f"{failed} of {len(checks)} expectations FAIL"
     t = tables.titled(f"{body.name or body.path} — check: {verdict}")
-    for header, justify in (("quantity", "left"), ("unit", "left"), ("expected", "right"), ("actual", "right"),
-                            ("deviation", "right"), ("allowed", "right"), ("", "left")):
+    for header, justify in (
+        ("quantity", "left"),
+        ("unit", "left"),
+        ("expected", "right"),
+        ("actual", "right"),
+        ("deviation", "right"),
+        ("allowed", "right"),
+        ("", "left"),
+    ):
         t.add_column(header, justify=justify)
     for c in checks:
         for label, want, got, deviation in _components(c):
             ok = deviation <= c["allowed"]
-            t.add_row(escape(label), escape(c["unit"]), number(want, 6), number(got, 6),
-                      number(deviation, 3), number(c["allowed"], 3), "ok" if ok else "[bold red]FAIL[/]")
+            t.add_row(
+                escape(label),
+                escape(c["unit"]),
+                number(want, 6),
+                number(got, 6),
+                number(deviation, 3),
+                number(c["allowed"], 3),
+                "ok" if ok else "[bold red]FAIL[/]",
+            )
     return t

@@ -39,8 +39,10 @@ def shell_name() -> str:
 
     shell = Path(os.environ.get("SHELL", "")).name
     if shell not in SHELLS:
-        raise InputError(f"--install-completion: cannot tell the shell from $SHELL ({shell or 'not set'!r}): "
-                         f"completion is available for {' and '.join(SHELLS)}; set SHELL=/bin/bash or /bin/zsh")
+        raise InputError(
+            f"--install-completion: cannot tell the shell from $SHELL ({shell or 'not set'!r}): "
+            f"completion is available for {' and '.join(SHELLS)}; set SHELL=/bin/bash or /bin/zsh"
+        )
     return shell
 
 
@@ -91,7 +93,9 @@ def install_option(value: bool) -> None:
 
         shell = shell_name()
         target, rc = install(shell)
-        print(f"{shell} completion for rbi written to {target} and loaded from {rc}; open a new terminal to use it")
+        print(
+            f"{shell} completion for rbi written to {target} and loaded from {rc}; open a new terminal to use it"
+        )
         sys.stdout.flush()
         raise typer.Exit()
 

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Annotated, Optional
+from typing import Annotated
 
 import numpy as np
 import typer
@@ -14,22 +14,47 @@ from rbi.spec.errors import InputError
 _VEC = "X,Y,Z"
 
 
-OmegaOption = Annotated[str, typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity, rad/s.")]
-AlphaOption = Annotated[Optional[str], typer.Option("--alpha", metavar="AX,AY,AZ",
-                                                    help="Angular acceleration, rad/s² (inverse dynamics).")]
-AccelOption = Annotated[Optional[str], typer.Option(
-    "--accel", metavar=_VEC, help="Acceleration of the --about point, length/s² (default 0: a fixed point).")]
-ForceOption = Annotated[Optional[str], typer.Option("--force", metavar=_VEC,
-                                                    help="Applied force, mass·length/s² (forward dynamics).")]
-TorqueOption = Annotated[Optional[str], typer.Option(
-    "--torque", metavar=_VEC, help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
-                                   "Without --force a non-CoM --about point is held (a pivot): "
-                                   "the force needed to hold it is reported.")]
+OmegaOption = Annotated[
+    str, typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity, rad/s.")
+]
+AlphaOption = Annotated[
+    str | None,
+    typer.Option("--alpha", metavar="AX,AY,AZ", help="Angular acceleration, rad/s² (inverse dynamics)."),
+]
+AccelOption = Annotated[
+    str | None,
+    typer.Option(
+        "--accel",
+        metavar=_VEC,
+        help="Acceleration of the --about point, length/s² (default 0: a fixed point).",
+    ),
+]
+ForceOption = Annotated[
+    str | None,
+    typer.Option("--force", metavar=_VEC, help="Applied force, mass·length/s² (forward dynamics)."),
+]
+TorqueOption = Annotated[
+    str | None,
+    typer.Option(
+        "--torque",
+        metavar=_VEC,
+        help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
+        "Without --force a non-CoM --about point is held (a pivot): "
+        "the force needed to hold it is reported.",
+    ),
+]
 
 
-def dynamics(file: SpecFile, omega: OmegaOption = "0,0,0", alpha: AlphaOption = None, accel: AccelOption = None,
-             force: ForceOption = None, torque: TorqueOption = None, about: AboutOption = "com",
-             format: FormatOption = OutputFormat.table) -> None:
+def dynamics(
+    file: SpecFile,
+    omega: OmegaOption = "0,0,0",
+    alpha: AlphaOption = None,
+    accel: AccelOption = None,
+    force: ForceOption = None,
+    torque: TorqueOption = None,
+    about: AboutOption = "com",
+    format: FormatOption = OutputFormat.table,
+) -> None:
     """Newton–Euler: force and torque for a given motion (--alpha), or the motion a force and
     torque produce (--force/--torque). All vectors in body axes, at this instant.
 
@@ -44,7 +69,9 @@ def dynamics(file: SpecFile, omega: OmegaOption = "0,0,0", alpha: AlphaOption = 
     inverse = alpha is not None
     forward = force is not None or torque is not None
     if inverse == forward:
-        raise InputError("dynamics: give either --alpha (inverse: force and torque) or --force/--torque (forward: accelerations)")
+        raise InputError(
+            "dynamics: give either --alpha (inverse: force and torque) or --force/--torque (forward: accelerations)"
+        )
     w = np.array(parse_vector(omega, "--omega"))
     body = load_body(file)
     about_label, point = parse_about(about, body)
@@ -52,17 +79,27 @@ def dynamics(file: SpecFile, omega: OmegaOption = "0,0,0", alpha: AlphaOption = 
     r = props.com - np.asarray(point)
     I_point = inertia_about(props, point)
     if not np.all(np.isfinite(I_point)):
-        raise InputError(f"--about: the point is too far from the body: the inertia about it overflows "
-                         f"double precision (got {about!r})")
+        raise InputError(
+            f"--about: the point is too far from the body: the inertia about it overflows "
+            f"double precision (got {about!r})"
+        )
     labels = body.labels
     if inverse:
         motion, loads = _inverse(props, I_point, r, w, about_label, alpha, accel)
     else:
         motion, loads = _forward(file, props, I_point, r, w, about_label, force, torque, accel)
     result = {
-        "name": body.name, "units": body.units, "warnings": list(body.warnings), "mode": "inverse" if inverse else "forward",
-        "mass": props.mass, "center_of_mass": props.com, "about": point, "about_label": about_label,
-        "omega": w, **motion, **loads,
+        "name": body.name,
+        "units": body.units,
+        "warnings": list(body.warnings),
+        "mode": "inverse" if inverse else "forward",
+        "mass": props.mass,
+        "center_of_mass": props.com,
+        "about": point,
+        "about_label": about_label,
+        "omega": w,
+        **motion,
+        **loads,
     }
 
     def table():
@@ -71,15 +108,26 @@ def dynamics(file: SpecFile, omega: OmegaOption = "0,0,0", alpha: AlphaOption = 
         given, found = ("given", "result") if inverse else ("result", "given")
         held = not inverse and force is None and about_label != "com"
         force_note = "needed to hold the point" if held else found
-        return tables.quantities(f"{body.name or body.path} — Newton–Euler about {about_label} ({result['mode']})", [
-            ("mass", labels["mass"], number(props.mass, 8)),
-            (f"about ({about_label})", labels["length"], tables.vector(point)),
-            ("ω", "rad/s", tables.vector(w)),
-            (f"α ({given})", "rad/s²", tables.vector(result["alpha"])),
-            (f"a of {about_label} ({'given' if held else given})", f"{labels['length']}/s²", tables.vector(result["point_acceleration"])),
-            (f"force ({force_note})", _load_unit(body, 1), tables.vector(result["force"])),
-            (f"torque about {about_label} ({found})", _load_unit(body, 2), tables.vector(result["torque"])),
-        ])
+        return tables.quantities(
+            f"{body.name or body.path} — Newton–Euler about {about_label} ({result['mode']})",
+            [
+                ("mass", labels["mass"], number(props.mass, 8)),
+                (f"about ({about_label})", labels["length"], tables.vector(point)),
+                ("ω", "rad/s", tables.vector(w)),
+                (f"α ({given})", "rad/s²", tables.vector(result["alpha"])),
+                (
+                    f"a of {about_label} ({'given' if held else given})",
+                    f"{labels['length']}/s²",
+                    tables.vector(result["point_acceleration"]),
+                ),
+                (f"force ({force_note})", _load_unit(body, 1), tables.vector(result["force"])),
+                (
+                    f"torque about {about_label} ({found})",
+                    _load_unit(body, 2),
+                    tables.vector(result["torque"]),
+                ),
+            ],
+        )
 
     emit(format.value, result, table)
 
@@ -105,7 +153,9 @@ def _forward(file, props, I_point, r, w, about_label: str, force, torque, accel)
 
     t = np.array(parse_vector(torque, "--torque")) if torque else np.zeros(3)
     if np.linalg.matrix_rank(I_point) < 3:
-        raise InputError(f"{file}: the inertia about the {about_label} is singular: the body cannot be given an angular acceleration")
+        raise InputError(
+            f"{file}: the inertia about the {about_label} is singular: the body cannot be given an angular acceleration"
+        )
     if force is None and about_label != "com":
         # The point is held (a pivot): its acceleration is prescribed and the force that
         # holds it is part of the answer.

@@ -16,8 +16,9 @@ failed, else 0. FILE ``-`` (standard input) is called ``<stdin>`` in the output.
 from __future__ import annotations
 
 import sys
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from typing import Any, Callable, Sequence
+from typing import Any
 
 STDIN = "-"
 STDIN_LABEL = "<stdin>"

@@ -19,12 +19,26 @@ class ExportTarget(str, Enum):
 
 def export(
     file: SpecFile,
-    to: Annotated[ExportTarget, typer.Option("--to", "-t", help="Robot description format: urdf, mjcf or sdf.",
-                                             show_default=False)],
-    document: Annotated[bool, typer.Option("--document", help="Print a whole minimal document (robot/link, "
-                                           "mujoco/worldbody/body, sdf/model/link) instead of the bare element.")] = False,
-    diagonal: Annotated[bool, typer.Option("--diagonal", help="MJCF only: principal moments (diaginertia) and the "
-                                           "principal frame (quat) instead of fullinertia.")] = False,
+    to: Annotated[
+        ExportTarget,
+        typer.Option("--to", "-t", help="Robot description format: urdf, mjcf or sdf.", show_default=False),
+    ],
+    document: Annotated[
+        bool,
+        typer.Option(
+            "--document",
+            help="Print a whole minimal document (robot/link, "
+            "mujoco/worldbody/body, sdf/model/link) instead of the bare element.",
+        ),
+    ] = False,
+    diagonal: Annotated[
+        bool,
+        typer.Option(
+            "--diagonal",
+            help="MJCF only: principal moments (diaginertia) and the "
+            "principal frame (quat) instead of fullinertia.",
+        ),
+    ] = False,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """The <inertial> element (mass, centre of mass, inertia about it) in SI units: kg, m, kg·m².
@@ -43,16 +57,32 @@ def export(
     from rbi.spec.units import convert_body
 
     if diagonal and to is not ExportTarget.mjcf:
-        raise InputError("--diagonal: only for --to mjcf (URDF and SDF take the full matrix about the centre of mass)")
+        raise InputError(
+            "--diagonal: only for --to mjcf (URDF and SDF take the full matrix about the centre of mass)"
+        )
     source = load_body(file)
     body = convert_body(source, "m", "kg")
     props = body.props
     name = body.name or ("body" if file == "-" else Path(file).stem)
-    comment = (f"rbi export of {Path(source.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, "
-               f"body axes" + (f"; spec units were {source.length_unit}, {source.mass_unit}"
-                               if (source.length_unit, source.mass_unit) != ("m", "kg") else ""))
-    xml = export_xml(to.value, props.mass, props.com, props.inertia_com, name=name, document=document,
-                     diagonal=diagonal, comment=comment)
+    comment = (
+        f"rbi export of {Path(source.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, "
+        f"body axes"
+        + (
+            f"; spec units were {source.length_unit}, {source.mass_unit}"
+            if (source.length_unit, source.mass_unit) != ("m", "kg")
+            else ""
+        )
+    )
+    xml = export_xml(
+        to.value,
+        props.mass,
+        props.com,
+        props.inertia_com,
+        name=name,
+        document=document,
+        diagonal=diagonal,
+        comment=comment,
+    )
     _warn_if_singular(props.inertia_com)
     result = {
         "name": body.name,
@@ -81,5 +111,8 @@ def _warn_if_singular(inertia) -> None:
 
     moments = np.linalg.eigvalsh(np.asarray(inertia, dtype=float))
     if moments[0] <= 1e-12 * max(moments[-1], 0.0):
-        print("rbi: warning: the inertia has a zero principal moment (a point mass or thin rod); "
-              "simulators such as MuJoCo refuse a moving body without rotational inertia", file=sys.stderr)
+        print(
+            "rbi: warning: the inertia has a zero principal moment (a point mass or thin rod); "
+            "simulators such as MuJoCo refuse a moving body without rotational inertia",
+            file=sys.stderr,
+        )

@@ -9,7 +9,7 @@ Numbers are written with the shortest repr that round-trips, so nothing is lost.
 from __future__ import annotations
 
 import xml.etree.ElementTree as ET
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
@@ -34,10 +34,18 @@ def urdf_inertial(mass: float, com: np.ndarray, inertia: np.ndarray) -> ET.Eleme
     inertial = ET.Element("inertial")
     ET.SubElement(inertial, "origin", xyz=_numbers(com), rpy="0 0 0")
     ET.SubElement(inertial, "mass", value=xml_number(mass))
-    ET.SubElement(inertial, "inertia", {
-        "ixx": xml_number(I[0, 0]), "ixy": xml_number(I[0, 1]), "ixz": xml_number(I[0, 2]),
-        "iyy": xml_number(I[1, 1]), "iyz": xml_number(I[1, 2]), "izz": xml_number(I[2, 2]),
-    })
+    ET.SubElement(
+        inertial,
+        "inertia",
+        {
+            "ixx": xml_number(I[0, 0]),
+            "ixy": xml_number(I[0, 1]),
+            "ixz": xml_number(I[0, 2]),
+            "iyy": xml_number(I[1, 1]),
+            "iyz": xml_number(I[1, 2]),
+            "izz": xml_number(I[2, 2]),
+        },
+    )
     return inertial
 
 
@@ -49,8 +57,14 @@ def sdf_inertial(mass: float, com: np.ndarray, inertia: np.ndarray) -> ET.Elemen
     ET.SubElement(inertial, "pose").text = _numbers(list(com) + [0.0, 0.0, 0.0])
     ET.SubElement(inertial, "mass").text = xml_number(mass)
     block = ET.SubElement(inertial, "inertia")
-    for name, (i, j) in (("ixx", (0, 0)), ("ixy", (0, 1)), ("ixz", (0, 2)),
-                         ("iyy", (1, 1)), ("iyz", (1, 2)), ("izz", (2, 2))):
+    for name, (i, j) in (
+        ("ixx", (0, 0)),
+        ("ixy", (0, 1)),
+        ("ixz", (0, 2)),
+        ("iyy", (1, 1)),
+        ("iyz", (1, 2)),
+        ("izz", (2, 2)),
+    ):
         ET.SubElement(block, name).text = xml_number(I[i, j])
     return inertial
 
@@ -101,8 +115,17 @@ DOCUMENTS: dict[str, Callable[[str, ET.Element], ET.Element]] = {
 }
 
 
-def export_xml(to: str, mass: float, com, inertia, *, name: str, document: bool = False,
-               diagonal: bool = False, comment: str | None = None) -> str:
+def export_xml(
+    to: str,
+    mass: float,
+    com,
+    inertia,
+    *,
+    name: str,
+    document: bool = False,
+    diagonal: bool = False,
+    comment: str | None = None,
+) -> str:
     """The XML text for format ``to`` (``urdf``, ``mjcf`` or ``sdf``): the inertial element,
     or a minimal document holding it; ``comment`` goes first as an XML comment."""
     if to == "urdf":

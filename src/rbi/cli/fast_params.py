@@ -50,7 +50,9 @@ def quiet_pydantic_plugins() -> None:
     if found:
         import types
 
-        loader = types.ModuleType(name, "pydantic's plugin loader while every plugin is disabled (rbi.cli.fast_params)")
+        loader = types.ModuleType(
+            name, "pydantic's plugin loader while every plugin is disabled (rbi.cli.fast_params)"
+        )
         loader.get_plugins = lambda: ()
         sys.modules[name] = loader
 
@@ -83,8 +85,9 @@ def _fast(annotation: Any, parameter_info: Any, value: Any, ctx: Any) -> tuple[b
             from typer._param_types import coerce_cli_choice
 
             try:
-                return True, coerce_cli_choice(value, choices=list(annotation),
-                                               case_sensitive=parameter_info.case_sensitive, ctx=ctx)
+                return True, coerce_cli_choice(
+                    value, choices=list(annotation), case_sensitive=parameter_info.case_sensitive, ctx=ctx
+                )
             except ValueError:
                 return False, None
         return False, None
@@ -126,8 +129,11 @@ def install(command, ctx=None) -> None:
     params = list(getattr(command, "params", ()))
     if ctx is not None and hasattr(command, "get_help_option"):
         params.append(command.get_help_option(ctx))
-    params = [p for p in params if getattr(p, "_runtime_param", 0) is None
-              and getattr(p, "type_descriptor", None) is not None]
+    params = [
+        p
+        for p in params
+        if getattr(p, "_runtime_param", 0) is None and getattr(p, "type_descriptor", None) is not None
+    ]
     if not params:
         return
     try:
@@ -137,5 +143,8 @@ def install(command, ctx=None) -> None:
     for param in params:
         descriptor = param.type_descriptor
         if descriptor.file_annotation is None:
-            param._runtime_param = fast_param(annotation=descriptor.annotation,
-                                             parameter_info=descriptor.parameter_info, descriptor=descriptor)
+            param._runtime_param = fast_param(
+                annotation=descriptor.annotation,
+                parameter_info=descriptor.parameter_info,
+                descriptor=descriptor,
+            )

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 import sys
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -13,15 +13,29 @@ from rbi.spec.errors import InputError
 
 
 def import_robot(
-    file: Annotated[str, typer.Argument(help="Robot description: .urdf, .sdf, or MJCF (.xml).",
-                                        show_default=False, metavar="FILE")],
-    link: Annotated[Optional[list[str]], typer.Option(
-        "--link", "-l", metavar="NAME", help="Import only this link (MJCF: body); repeat for several.")] = None,
-    out: Annotated[Optional[str], typer.Option(
-        "--out", "-o", metavar="DIR|FILE.yaml",
-        help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
-             "link is imported. Without it one spec is printed: the link given with --link, or the whole "
-             "robot (one part per link, placed at the zero configuration).")] = None,
+    file: Annotated[
+        str,
+        typer.Argument(
+            help="Robot description: .urdf, .sdf, or MJCF (.xml).", show_default=False, metavar="FILE"
+        ),
+    ],
+    link: Annotated[
+        list[str] | None,
+        typer.Option(
+            "--link", "-l", metavar="NAME", help="Import only this link (MJCF: body); repeat for several."
+        ),
+    ] = None,
+    out: Annotated[
+        str | None,
+        typer.Option(
+            "--out",
+            "-o",
+            metavar="DIR|FILE.yaml",
+            help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
+            "link is imported. Without it one spec is printed: the link given with --link, or the whole "
+            "robot (one part per link, placed at the zero configuration).",
+        ),
+    ] = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Turn each link of a robot file into an rbi spec: its mass, centre of mass and inertia as a custom part.
@@ -77,8 +91,10 @@ def _selected(robot, names: list[str]):
         import difflib
 
         hint = difflib.get_close_matches(missing[0], [n for n in by_name if n], n=1)
-        raise InputError(f"--link: {robot.path} has no {robot.link_word} named {missing[0]!r} with an <inertial>"
-                         + (f" (did you mean {hint[0]!r}?)" if hint else ""))
+        raise InputError(
+            f"--link: {robot.path} has no {robot.link_word} named {missing[0]!r} with an <inertial>"
+            + (f" (did you mean {hint[0]!r}?)" if hint else "")
+        )
     return [by_name[name] for name in dict.fromkeys(names)]
 
 
@@ -92,12 +108,16 @@ def _targets(robot, links, out: str, source: str):
         if not os.path.isdir(out):
             raise InputError(f"--out: {out}: folder does not exist")
         names = _file_names(links, robot.link_word)
-        targets = [(output_target(os.path.join(out, name), "--out", ("yaml",), inputs=[source]), each)
-                   for name, each in zip(names, links)]
+        targets = [
+            (output_target(os.path.join(out, name), "--out", ("yaml",), inputs=[source]), each)
+            for name, each in zip(names, links)
+        ]
     else:
         if len(links) != 1:
-            raise InputError(f"--out: {out}: {len(links)} {robot.link_word}s to import; name a folder "
-                             f"(--out DIR/) or pick one with --link NAME")
+            raise InputError(
+                f"--out: {out}: {len(links)} {robot.link_word}s to import; name a folder "
+                f"(--out DIR/) or pick one with --link NAME"
+            )
         targets = [(output_target(out, "--out", ("yaml", "yml"), inputs=[source]), links[0])]
     check_distinct([target for target, _ in targets])
     return targets
@@ -130,10 +150,12 @@ def _yaml_text(robot, link) -> str:
     from rbi.spec.yaml_writer import comment, dump
 
     source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
-    header = comment(f"rbi import of {os.path.basename(robot.path)}, {link.label(robot.link_word)}, from its {source} "
-                     "<inertial>:",
-                     "SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,",
-                     "turned into link axes by `rotation`.")
+    header = comment(
+        f"rbi import of {os.path.basename(robot.path)}, {link.label(robot.link_word)}, from its {source} "
+        "<inertial>:",
+        "SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,",
+        "turned into link axes by `rotation`.",
+    )
     return header + dump(link_spec(robot, link))
 
 
@@ -148,10 +170,15 @@ def _robot_yaml_text(file: str) -> str:
 
     model = read_robot(file)
     spec, left_out = robot_spec(model)
-    frame = "the world frame at qpos0" if model.format == "mjcf" else "the root link's frame, every joint at zero"
-    lines = [f"rbi import of {os.path.basename(model.path)}: the whole robot, one custom part per "
-             f"{model.link_word} with mass,", f"placed in {frame}; SI units.",
-             "One link alone, in its own frame: --link NAME; one spec per link: --out DIR/."]
+    frame = (
+        "the world frame at qpos0" if model.format == "mjcf" else "the root link's frame, every joint at zero"
+    )
+    lines = [
+        f"rbi import of {os.path.basename(model.path)}: the whole robot, one custom part per "
+        f"{model.link_word} with mass,",
+        f"placed in {frame}; SI units.",
+        "One link alone, in its own frame: --link NAME; one spec per link: --out DIR/.",
+    ]
     if left_out:
         lines.append(f"Without mass (left out): {', '.join(left_out)}.")
     return comment(*lines) + dump(spec)
@@ -171,16 +198,18 @@ def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
     written = {id(each): target.given for target, each in targets or []}
     rows = []
     for each in links:
-        rows.append({
-            "name": each.name,
-            "index": each.index,
-            "mass": each.mass,
-            "center_of_mass": each.com,
-            "inertia": each.inertia_in_link_axes(),
-            "inertial_quaternion": each.quaternion if each.quaternion is not None else _quaternion(each),
-            "problems": link_problems(robot, each),
-            "file": written.get(id(each)),
-        })
+        rows.append(
+            {
+                "name": each.name,
+                "index": each.index,
+                "mass": each.mass,
+                "center_of_mass": each.com,
+                "inertia": each.inertia_in_link_axes(),
+                "inertial_quaternion": each.quaternion if each.quaternion is not None else _quaternion(each),
+                "problems": link_problems(robot, each),
+                "file": written.get(id(each)),
+            }
+        )
     result = {
         "file": robot.path,
         "format": robot.format,
@@ -191,8 +220,11 @@ def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
     }
     from rbi.text import visible
 
-    csv_rows = [{k: (visible(v) if isinstance(v, str) else v) for k, v in row.items() if k != "problems"}
-                | {"ok": not row["problems"]} for row in rows]  # names escaped: CSV often reaches a terminal
+    csv_rows = [
+        {k: (visible(v) if isinstance(v, str) else v) for k, v in row.items() if k != "problems"}
+        | {"ok": not row["problems"]}
+        for row in rows
+    ]  # names escaped: CSV often reaches a terminal
     emit(format.value, result, lambda: None, csv_rows=csv_rows)
 
 

@@ -6,13 +6,22 @@ The options are declared here; what `inertia` and `principal` print for each fil
 from __future__ import annotations
 
 from enum import Enum
-from typing import Annotated, Optional
+from typing import Annotated
 
 import numpy as np
 import typer
 
-from rbi.cli.options import (AboutOption, FormatOption, OutputFormat, SpecFile, SpecFiles, UnitsOption, in_output_units,
-                             parse_about, parse_vector)
+from rbi.cli.options import (
+    AboutOption,
+    FormatOption,
+    OutputFormat,
+    SpecFile,
+    SpecFiles,
+    UnitsOption,
+    in_output_units,
+    parse_about,
+    parse_vector,
+)
 from rbi.cli.render import emit, number
 
 
@@ -25,19 +34,34 @@ def inertia(
     files: SpecFiles,
     about: AboutOption = "com",
     rotate: Annotated[
-        Optional[list[str]],
-        typer.Option("--rotate", "-r", metavar="AXIS:DEG",
-                     help="Turn the body about a world axis (x, y or z) by DEG degrees; repeat to chain, "
-                          "applied in order. The inertia is then given in world axes: R I Rᵀ."),
+        list[str] | None,
+        typer.Option(
+            "--rotate",
+            "-r",
+            metavar="AXIS:DEG",
+            help="Turn the body about a world axis (x, y or z) by DEG degrees; repeat to chain, "
+            "applied in order. The inertia is then given in world axes: R I Rᵀ.",
+        ),
     ] = None,
-    axis: Annotated[Optional[str], typer.Option(
-        "--axis", metavar="X,Y,Z",
-        help="Also give the scalar moment of inertia about the line through the --about point along "
-             "this direction (any length; in the axes the matrix is given in: body axes, or world "
-             "axes after --rotate).", show_default=False)] = None,
-    products: Annotated[ProductsSign, typer.Option(
-        "--products", help="Sign of the off-diagonal entries: tensor (the matrix, I_xy = -∫xy dm) or "
-                           "cad (the positive integrals +∫xy dm that SolidWorks and CATIA print).")] = ProductsSign.tensor,
+    axis: Annotated[
+        str | None,
+        typer.Option(
+            "--axis",
+            metavar="X,Y,Z",
+            help="Also give the scalar moment of inertia about the line through the --about point along "
+            "this direction (any length; in the axes the matrix is given in: body axes, or world "
+            "axes after --rotate).",
+            show_default=False,
+        ),
+    ] = None,
+    products: Annotated[
+        ProductsSign,
+        typer.Option(
+            "--products",
+            help="Sign of the off-diagonal entries: tensor (the matrix, I_xy = -∫xy dm) or "
+            "cad (the positive integrals +∫xy dm that SolidWorks and CATIA print).",
+        ),
+    ] = ProductsSign.tensor,
     units: UnitsOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> int:
@@ -55,8 +79,12 @@ def inertia(
     return mass_reports.inertia(files, about, rotate, axis, products.value, units, format.value)
 
 
-def principal(files: SpecFiles, about: AboutOption = "com", units: UnitsOption = None,
-              format: FormatOption = OutputFormat.table) -> int:
+def principal(
+    files: SpecFiles,
+    about: AboutOption = "com",
+    units: UnitsOption = None,
+    format: FormatOption = OutputFormat.table,
+) -> int:
     """Principal moments (ascending), axes (unit, right-handed, body frame) and radii of gyration.
 
     \b
@@ -72,13 +100,27 @@ def principal(files: SpecFiles, about: AboutOption = "com", units: UnitsOption =
 
 def momentum(
     file: SpecFile,
-    omega: Annotated[str, typer.Option("--omega", "-w", metavar="WX,WY,WZ",
-                                       help="Angular velocity in body axes, rad/s.", show_default=False)],
+    omega: Annotated[
+        str,
+        typer.Option(
+            "--omega",
+            "-w",
+            metavar="WX,WY,WZ",
+            help="Angular velocity in body axes, rad/s.",
+            show_default=False,
+        ),
+    ],
     about: AboutOption = "com",
-    velocity: Annotated[Optional[str], typer.Option(
-        "--velocity", "-v", metavar="VX,VY,VZ",
-        help="Velocity of the centre of mass (body axes, file length unit/s). Without it the "
-             "--about point is taken as fixed, so the body turns about it.")] = None,
+    velocity: Annotated[
+        str | None,
+        typer.Option(
+            "--velocity",
+            "-v",
+            metavar="VX,VY,VZ",
+            help="Velocity of the centre of mass (body axes, file length unit/s). Without it the "
+            "--about point is taken as fixed, so the body turns about it.",
+        ),
+    ] = None,
     units: UnitsOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
@@ -117,15 +159,18 @@ def momentum(
         from rbi.cli import tables
 
         labels = body.labels
-        return tables.quantities(title(body, f"momentum about {about_label}"), [
-            ("mass", labels["mass"], number(props.mass, 8)),
-            ("centre of mass", labels["length"], tables.vector(props.com)),
-            (f"about ({about_label})", labels["length"], tables.vector(point)),
-            ("ω (body axes)", "rad/s", tables.vector(w)),
-            ("v of centre of mass", labels["velocity"], tables.vector(v_com)),
-            ("angular momentum h", labels["angular_momentum"], tables.vector(h)),
-            ("angle between h and ω", "deg", number(result["angle_deg"], 6)),
-            ("kinetic energy", labels["energy"], number(energy, 8)),
-        ])
+        return tables.quantities(
+            title(body, f"momentum about {about_label}"),
+            [
+                ("mass", labels["mass"], number(props.mass, 8)),
+                ("centre of mass", labels["length"], tables.vector(props.com)),
+                (f"about ({about_label})", labels["length"], tables.vector(point)),
+                ("ω (body axes)", "rad/s", tables.vector(w)),
+                ("v of centre of mass", labels["velocity"], tables.vector(v_com)),
+                ("angular momentum h", labels["angular_momentum"], tables.vector(h)),
+                ("angle between h and ω", "deg", number(result["angle_deg"], 6)),
+                ("kinetic energy", labels["energy"], number(energy, 8)),
+            ],
+        )
 
     emit(format.value, result, table)

@@ -7,7 +7,7 @@ Every number is in the spec's units unless ``--units`` asks for others.
 
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
 PRODUCT_SIGNS = ("tensor", "cad")
 
@@ -41,8 +41,15 @@ def title(body, what: str) -> str:
     return f"{body.name or body.path} — {what}"
 
 
-def inertia(files: Sequence[str], about: str = "com", rotate: Sequence[str] | None = None, axis: str | None = None,
-            products: str = "tensor", units: str | None = None, fmt: str = "table") -> int:
+def inertia(
+    files: Sequence[str],
+    about: str = "com",
+    rotate: Sequence[str] | None = None,
+    axis: str | None = None,
+    products: str = "tensor",
+    units: str | None = None,
+    fmt: str = "table",
+) -> int:
     """`rbi inertia FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
     import numpy as np
 
@@ -97,12 +104,17 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
             (f"about ({about_label})", labels["length"], tables.vector(point)),
         ]
         if direction is not None:
-            rows += [("axis (unit)", "", tables.vector(direction)),
-                     ("moment about axis", labels["inertia"], number(result["moment_about_axis"], 8))]
+            rows += [
+                ("axis (unit)", "", tables.vector(direction)),
+                ("moment about axis", labels["inertia"], number(result["moment_about_axis"], 8)),
+            ]
         return tables.stack(
             tables.quantities(title(body, "inertia"), rows),
-            tables.matrix(f"Inertia about {about_label}, {frame}; {PRODUCT_SIGN_TITLES[products]}",
-                          shown, labels["inertia"]),
+            tables.matrix(
+                f"Inertia about {about_label}, {frame}; {PRODUCT_SIGN_TITLES[products]}",
+                shown,
+                labels["inertia"],
+            ),
         )
 
     return FileReport(result, table)
@@ -144,11 +156,14 @@ def _principal_of(file: str, about: str, units: str | None):
         for i, (m, a, k) in enumerate(zip(moments, axes, radii), start=1):
             t.add_row(f"I{i}", number(m / scale, 7), *(number(v, 7) for v in a), number(k, 7))
         return tables.stack(
-            tables.quantities(title(body, "principal"), [
-                ("mass", labels["mass"], number(body.props.mass, 8)),
-                ("centre of mass", labels["length"], tables.vector(body.props.com)),
-                (f"about ({about_label})", labels["length"], tables.vector(point)),
-            ]),
+            tables.quantities(
+                title(body, "principal"),
+                [
+                    ("mass", labels["mass"], number(body.props.mass, 8)),
+                    ("centre of mass", labels["length"], tables.vector(body.props.com)),
+                    (f"about ({about_label})", labels["length"], tables.vector(point)),
+                ],
+            ),
             t,
         )
 

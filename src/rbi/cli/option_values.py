@@ -18,13 +18,17 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
         return "origin", [0.0, 0.0, 0.0]
     if key == "pivot":
         if body.pivot is None:
-            raise InputError(f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none")
+            raise InputError(
+                f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none"
+            )
         return "pivot", body.pivot.tolist()
     try:
         return "point", parse_vector(text, "--about")
     except InputError:
-        raise InputError(f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
-                         f"commas, file units), got {text!r}") from None
+        raise InputError(
+            f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
+            f"commas, file units), got {text!r}"
+        ) from None
 
 
 def parse_rotation(text: str) -> tuple[str, float]:

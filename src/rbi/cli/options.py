@@ -4,7 +4,7 @@
 from __future__ import annotations
 
 from enum import Enum
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
@@ -22,23 +22,40 @@ FormatOption = Annotated[
     OutputFormat,
     typer.Option("--format", "-f", help="table (for people), json (one object) or csv (header + rows)."),
 ]
-SpecFile = Annotated[str, typer.Argument(help="Body spec (YAML or JSON); - reads it from standard input.",
-                                         show_default=False, metavar="FILE")]
-SpecFiles = Annotated[list[str], typer.Argument(
-    help="Body specs (YAML or JSON), one or more (shell globs expand to several); - reads one from standard input.",
-    show_default=False, metavar="FILE...")]
+SpecFile = Annotated[
+    str,
+    typer.Argument(
+        help="Body spec (YAML or JSON); - reads it from standard input.", show_default=False, metavar="FILE"
+    ),
+]
+SpecFiles = Annotated[
+    list[str],
+    typer.Argument(
+        help="Body specs (YAML or JSON), one or more (shell globs expand to several); - reads one from standard input.",
+        show_default=False,
+        metavar="FILE...",
+    ),
+]
 AboutOption = Annotated[
     str,
-    typer.Option("--about", "-a", metavar="com|origin|pivot|X,Y,Z",
-                 help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units)."),
+    typer.Option(
+        "--about",
+        "-a",
+        metavar="com|origin|pivot|X,Y,Z",
+        help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units).",
+    ),
 ]
 
 
 UnitsOption = Annotated[
-    Optional[str],
-    typer.Option("--units", "-u", metavar="SI|LENGTH,MASS",
-                 help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
-                      "units. Command-line inputs (--about X,Y,Z, --velocity) stay in the file's units."),
+    str | None,
+    typer.Option(
+        "--units",
+        "-u",
+        metavar="SI|LENGTH,MASS",
+        help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
+        "units. Command-line inputs (--about X,Y,Z, --velocity) stay in the file's units.",
+    ),
 ]
 
 

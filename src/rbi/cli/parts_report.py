@@ -35,20 +35,22 @@ def parts_of(file: str):
         part = spec_parts[i] if i < len(spec_parts) else None
         volume = None if part is None else part_volume(part)
         density = abs(element.mass) / volume if volume else None
-        rows.append({
-            "name": body.part_names[i] or f"parts[{i}]",
-            "shape": part.shape if part is not None else "point_cloud",
-            "hole": bool(getattr(part, "subtract", False)),
-            "mass": element.mass,
-            "mass_share": element.mass / body.props.mass,
-            "center_of_mass": element.com,
-            "inertia_about_com": element.inertia_com,
-            "principal_moments": principal_axes(element.inertia_com)[0],
-            "inertia_share": shares[i],
-            "volume": volume,
-            "implied_density": density,
-            "implied_density_si": None if density is None else density * to_si,
-        })
+        rows.append(
+            {
+                "name": body.part_names[i] or f"parts[{i}]",
+                "shape": part.shape if part is not None else "point_cloud",
+                "hole": bool(getattr(part, "subtract", False)),
+                "mass": element.mass,
+                "mass_share": element.mass / body.props.mass,
+                "center_of_mass": element.com,
+                "inertia_about_com": element.inertia_com,
+                "principal_moments": principal_axes(element.inertia_com)[0],
+                "inertia_share": shares[i],
+                "volume": volume,
+                "implied_density": density,
+                "implied_density_si": None if density is None else density * to_si,
+            }
+        )
     if body.spec is not None:
         from rbi.spec.translate import mesh_notes
 
@@ -56,14 +58,30 @@ def parts_of(file: str):
             say(f"warning: {body.path}: {note}")
     volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
     every_part_has_volume = all(row["volume"] is not None for row in rows)
-    total = {"volume": volume if any(row["volume"] is not None for row in rows) else None,
-             "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
-             "principal_moments": principal_axes(body.props.inertia_com)[0]}
-    result = {"name": body.name, "units": body.units, "warnings": list(body.warnings), "mass": body.props.mass,
-              "center_of_mass": body.props.com, "volume": total["volume"],
-              "principal_moments": total["principal_moments"], "parts": rows}
-    summary = {"name": body.name, "units": body.units, "mass": body.props.mass, "center_of_mass": body.props.com,
-               "volume": total["volume"], "principal_moments": total["principal_moments"], "parts": len(rows)}
+    total = {
+        "volume": volume if any(row["volume"] is not None for row in rows) else None,
+        "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
+        "principal_moments": principal_axes(body.props.inertia_com)[0],
+    }
+    result = {
+        "name": body.name,
+        "units": body.units,
+        "warnings": list(body.warnings),
+        "mass": body.props.mass,
+        "center_of_mass": body.props.com,
+        "volume": total["volume"],
+        "principal_moments": total["principal_moments"],
+        "parts": rows,
+    }
+    summary = {
+        "name": body.name,
+        "units": body.units,
+        "mass": body.props.mass,
+        "center_of_mass": body.props.com,
+        "volume": total["volume"],
+        "principal_moments": total["principal_moments"],
+        "parts": len(rows),
+    }
     return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
 
 
@@ -87,8 +105,12 @@ def _table(body, rows, total):
         for header in headers:
             numbers = not header.startswith("shape")
             # the label over its unit (a rich Text: rbi's own words, never read as markup)
-            t.add_column(Text(header, justify="right" if numbers else "left"), justify="right" if numbers else "left",
-                         no_wrap=numbers, overflow="fold")
+            t.add_column(
+                Text(header, justify="right" if numbers else "left"),
+                justify="right" if numbers else "left",
+                no_wrap=numbers,
+                overflow="fold",
+            )
         for part_name, row in zip(names, cells):
             t.add_row(part_name, *row)
         t.add_section()
@@ -99,20 +121,50 @@ def _table(body, rows, total):
         return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])
 
     length = labels["length"]
-    masses = table("mass and volume", (
-        "shape", f"mass\n[{labels['mass']}]", "mass\nshare [%]", f"volume\n[{body.length_unit}³]",
-        f"density\n[{body.mass_unit}/{body.length_unit}³]"),
-        [(row["shape"] + (" (hole)" if row["hole"] else ""), number(row["mass"]), number(100 * row["mass_share"], 4),
-          signed_volume(row), number(row["implied_density"], 4)) for row in rows],
-        ("", number(body.props.mass), number(100.0, 4), number(total["volume"]), number(total["mean_density"], 4)))
-    places = table("centre of mass", (
-        f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
-        [(*(number(c) for c in row["center_of_mass"]), number(100 * row["inertia_share"], 4)) for row in rows],
-        (*(number(c) for c in body.props.com), number(100.0, 4)))
-    scale, scale_text = matrix_digits([total["principal_moments"], *(row["principal_moments"] for row in rows)])
+    masses = table(
+        "mass and volume",
+        (
+            "shape",
+            f"mass\n[{labels['mass']}]",
+            "mass\nshare [%]",
+            f"volume\n[{body.length_unit}³]",
+            f"density\n[{body.mass_unit}/{body.length_unit}³]",
+        ),
+        [
+            (
+                row["shape"] + (" (hole)" if row["hole"] else ""),
+                number(row["mass"]),
+                number(100 * row["mass_share"], 4),
+                signed_volume(row),
+                number(row["implied_density"], 4),
+            )
+            for row in rows
+        ],
+        (
+            "",
+            number(body.props.mass),
+            number(100.0, 4),
+            number(total["volume"]),
+            number(total["mean_density"], 4),
+        ),
+    )
+    places = table(
+        "centre of mass",
+        (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
+        [
+            (*(number(c) for c in row["center_of_mass"]), number(100 * row["inertia_share"], 4))
+            for row in rows
+        ],
+        (*(number(c) for c in body.props.com), number(100.0, 4)),
+    )
+    scale, scale_text = matrix_digits(
+        [total["principal_moments"], *(row["principal_moments"] for row in rows)]
+    )
     unit = f"[{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
-    moments = table("principal moments (own CoM)", (
-        f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
+    moments = table(
+        "principal moments (own CoM)",
+        (f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
         [tuple(number(m / scale, 5) for m in row["principal_moments"]) for row in rows],
-        tuple(number(m / scale, 5) for m in total["principal_moments"]))
+        tuple(number(m / scale, 5) for m in total["principal_moments"]),
+    )
     return tables.stack(masses, places, moments)

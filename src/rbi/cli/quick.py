@@ -14,8 +14,8 @@ paths print the same bytes.
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Sequence
 
 FORMATS = ("table", "json", "csv")
 
@@ -37,9 +37,18 @@ _UNITS = Opt(("--units", "-u"), "units")
 
 COMMANDS: dict[str, tuple[str, str, tuple[Opt, ...]]] = {
     # command: (module, function taking (files, **keywords) and returning the exit status, options)
-    "inertia": ("rbi.cli.mass_reports", "inertia", (
-        _ABOUT, Opt(("--rotate", "-r"), "rotate", repeated=True), Opt(("--axis",), "axis"),
-        Opt(("--products",), "products", ("tensor", "cad")), _UNITS, _FORMAT)),
+    "inertia": (
+        "rbi.cli.mass_reports",
+        "inertia",
+        (
+            _ABOUT,
+            Opt(("--rotate", "-r"), "rotate", repeated=True),
+            Opt(("--axis",), "axis"),
+            Opt(("--products",), "products", ("tensor", "cad")),
+            _UNITS,
+            _FORMAT,
+        ),
+    ),
     "principal": ("rbi.cli.mass_reports", "principal", (_ABOUT, _UNITS, _FORMAT)),
     "parts": ("rbi.cli.parts_report", "parts", (_FORMAT,)),
     "check": ("rbi.cli.check_report", "check", (_FORMAT,)),

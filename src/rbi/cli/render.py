@@ -7,7 +7,8 @@ import io
 import json
 import math
 import sys
-from typing import Any, Callable, Iterable
+from collections.abc import Callable, Iterable
+from typing import Any
 
 import numpy as np
 
@@ -61,7 +62,11 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
         name = f"{prefix}{key}"
         if isinstance(value, dict):
             out.update(flatten(value, prefix=f"{name}_"))
-        elif isinstance(value, list) and len(value) == 3 and all(isinstance(r, list) and len(r) == 3 for r in value):
+        elif (
+            isinstance(value, list)
+            and len(value) == 3
+            and all(isinstance(r, list) and len(r) == 3 for r in value)
+        ):
             if key == "axes":
                 for i, row in enumerate(value):
                     for axis, v in zip(_XYZ, row):
@@ -70,7 +75,12 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
                 for i, row in enumerate(value):
                     for j, v in enumerate(row):
                         out[f"{name}_{_XYZ[i]}{_XYZ[j]}"] = v
-        elif isinstance(value, list) and len(value) == 3 and not any(isinstance(v, list) for v in value) and not key.endswith("moments"):
+        elif (
+            isinstance(value, list)
+            and len(value) == 3
+            and not any(isinstance(v, list) for v in value)
+            and not key.endswith("moments")
+        ):
             for axis, v in zip(_XYZ, value):
                 out[f"{name}_{axis}"] = v
         elif isinstance(value, list):
@@ -159,7 +169,7 @@ def matrix_digits(matrix) -> tuple[float, str]:
     if peak == 0.0 or 1e-3 <= peak < 1e4 or not 1e-300 < peak < 1e300:  # 10.0**-324 is 0: print as is
         return 1.0, ""
     exponent = int(math.floor(math.log10(peak)))
-    return 10.0 ** exponent, f"×10{_superscript(exponent)}"
+    return 10.0**exponent, f"×10{_superscript(exponent)}"
 
 
 _SUPER = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
@@ -204,7 +214,9 @@ def _safe_console(**options):
     return SafeConsole(**options)
 
 
-def emit(fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None) -> None:
+def emit(
+    fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None
+) -> None:
     """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
     lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``."""
     refuse_non_finite(result)
@@ -243,7 +255,9 @@ def refuse_non_finite(result: dict[str, Any]) -> None:
 
     bad = [key for key, value in plain(result).items() if _has_non_finite(value)]
     if bad:
-        raise InputError(f"result {', '.join(bad)} is not finite: the input values are too large for double precision")
+        raise InputError(
+            f"result {', '.join(bad)} is not finite: the input values are too large for double precision"
+        )
 
 
 def _has_non_finite(value: Any) -> bool:

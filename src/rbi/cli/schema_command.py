@@ -9,6 +9,7 @@ import typer
 
 from rbi.cli.options import FormatOption, OutputFormat
 
+
 def spec_schema() -> dict[str, Any]:
     """JSON Schema (draft 2020-12) of a body spec, generated from the pydantic models."""
     from rbi.spec.models import body_spec_json_schema
@@ -61,9 +62,9 @@ def file_problems(path: str) -> list[str]:
     """Every problem found in one spec file, one line each (empty when it is valid):
     unreadable or malformed YAML, each field the models refuse, then the first problem met
     while building the body (an unphysical custom inertia, a hole removing too much)."""
+    from rbi.formats.robot_files import is_robot_file, robot_file_problems
     from rbi.spec.errors import InputError
     from rbi.spec.load import read_yaml, spec_label, validation_messages
-    from rbi.formats.robot_files import is_robot_file, robot_file_problems
     from rbi.spec.translate import body_from_spec
 
     if is_robot_file(path):  # URDF, SDF, MJCF: every link whose inertia is not physical
@@ -83,7 +84,9 @@ def file_problems(path: str) -> list[str]:
 
 
 def validate(
-    files: Annotated[list[str], typer.Argument(help="Spec files (YAML) to check.", show_default=False, metavar="FILE...")],
+    files: Annotated[
+        list[str], typer.Argument(help="Spec files (YAML) to check.", show_default=False, metavar="FILE...")
+    ],
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Check spec files without computing anything: one line per problem; exit 2 if any file fails.
@@ -102,13 +105,19 @@ def validate(
         for report in reports:
             for line in report["problems"]:
                 print(terminal_safe(line))
-        summary = (f"{len(files)} file(s) valid" if not bad else
-                   f"{len(bad)} of {len(files)} file(s) invalid, {count} problem(s)")
+        summary = (
+            f"{len(files)} file(s) valid"
+            if not bad
+            else f"{len(bad)} of {len(files)} file(s) invalid, {count} problem(s)"
+        )
         print(f"rbi: {summary}", file=sys.stderr)
     else:
         result = {"ok": not bad, "files": [r | {"ok": not r["problems"]} for r in reports]}
-        rows = [{"file": r["file"], "ok": not r["problems"], "problem": line}
-                for r in reports for line in (r["problems"] or [""])]
+        rows = [
+            {"file": r["file"], "ok": not r["problems"], "problem": line}
+            for r in reports
+            for line in (r["problems"] or [""])
+        ]
         emit(format.value, result, lambda: None, csv_rows=rows)
     if bad:
         raise typer.Exit(2)

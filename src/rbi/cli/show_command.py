@@ -12,9 +12,15 @@ from rbi.cli.options import SpecFile
 
 def show(
     file: SpecFile,
-    out: Annotated[str, typer.Option("--out", "-o", metavar="FILE.png|FILE.svg|FILE.html",
-                                     help="The picture: .png or .svg ("
-                                          f"{needs('matplotlib', 'plot')}), or .html (3D, opens offline).")],
+    out: Annotated[
+        str,
+        typer.Option(
+            "--out",
+            "-o",
+            metavar="FILE.png|FILE.svg|FILE.html",
+            help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
+        ),
+    ],
 ) -> None:
     """Draw the body as specified: every part in place (holes red and translucent), the centre
     of mass, the principal axes about it (lengths in proportion to their moments, labelled
@@ -42,14 +48,24 @@ def show(
     from rbi.cli.render import say_warnings
 
     say_warnings(body.warnings)
-    data = view_data(body.name or file, part_geometry(body), body.props.com, body.props.inertia_com, body.pivot,
-                     body.length_unit, body.labels["inertia"])
+    data = view_data(
+        body.name or file,
+        part_geometry(body),
+        body.props.com,
+        body.props.inertia_com,
+        body.pivot,
+        body.length_unit,
+        body.labels["inertia"],
+    )
     if target.format == "html":
         from rbi.viz.page import html_page
 
-        data["legend"] = (f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
-                          "axes · " + " · ".join(a["label"] for a in data["principal_axes"])
-                          + f" · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}")
+        data["legend"] = (
+            f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
+            "axes · "
+            + " · ".join(a["label"] for a in data["principal_axes"])
+            + f" · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}"
+        )
         write_output(target, html_page(data))
     else:
         from rbi.viz.still import draw_still

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import sys
 import time
-from typing import Annotated, Optional
+from typing import Annotated
 
 import numpy as np
 import typer
@@ -20,60 +20,138 @@ PLOT_FORMATS = ("png", "svg", "pdf")
 PLOT_SAMPLES = 8001
 """Samples drawn in a plot: enough to show nutation loops and the wobble of a fast top."""
 
-METHOD_HELP = ("default: compiled adaptive DOP853 (fast, tight); rk45: scipy RK45 at rtol 1e-8 with a Python "
-               "right-hand side, as the textbook Mass and Inertia integrates it; dop853: scipy DOP853, Python right-hand side; exact: closed "
-               "form (free body; axisymmetric top with its centre of mass on the axis).")
+METHOD_HELP = (
+    "default: compiled adaptive DOP853 (fast, tight); rk45: scipy RK45 at rtol 1e-8 with a Python "
+    "right-hand side, as the textbook Mass and Inertia integrates it; dop853: scipy DOP853, Python right-hand side; exact: closed "
+    "form (free body; axisymmetric top with its centre of mass on the axis)."
+)
 
-SpinOption = Annotated[Optional[float], typer.Option("--spin", "-s", metavar="W",
-                                                     help="Initial spin about the spin axis (see --spin-axis), rad/s.")]
-SpinAxisOption = Annotated[Optional[str], typer.Option(
-    "--spin-axis", metavar="x|y|z|X,Y,Z",
-    help="The body-frame axis --spin turns about, whose tilt from vertical and precession are reported. "
-         "Default: the spec's spin_axis, else the body's symmetry axis (pointing from the pivot to the centre of "
-         "mass), else z.")]
-OmegaOption = Annotated[Optional[str], typer.Option("--omega", "-w", metavar="WX,WY,WZ",
-                                                    help="Initial angular velocity in body axes, rad/s.")]
-TiltOption = Annotated[float, typer.Option("--tilt", metavar="DEG",
-                                           help="Nudge at t=0: turn the body DEG degrees about the world y axis "
-                                                "(see --tilt-axis). The tilt reported is the spin axis's angle "
-                                                "from vertical.")]
-TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y",
-                                             help="World axis the nudge (--tilt) turns the body about.")]
-GravityOption = Annotated[Optional[float], typer.Option(
-    "--gravity", "-g", metavar="G", help="Gravity's magnitude in m/s² (SI, whatever the spec's units); "
-                                         "0 switches it off. Default 9.81.")]
+SpinOption = Annotated[
+    float | None,
+    typer.Option(
+        "--spin", "-s", metavar="W", help="Initial spin about the spin axis (see --spin-axis), rad/s."
+    ),
+]
+SpinAxisOption = Annotated[
+    str | None,
+    typer.Option(
+        "--spin-axis",
+        metavar="x|y|z|X,Y,Z",
+        help="The body-frame axis --spin turns about, whose tilt from vertical and precession are reported. "
+        "Default: the spec's spin_axis, else the body's symmetry axis (pointing from the pivot to the centre of "
+        "mass), else z.",
+    ),
+]
+OmegaOption = Annotated[
+    str | None,
+    typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Initial angular velocity in body axes, rad/s."),
+]
+TiltOption = Annotated[
+    float,
+    typer.Option(
+        "--tilt",
+        metavar="DEG",
+        help="Nudge at t=0: turn the body DEG degrees about the world y axis "
+        "(see --tilt-axis). The tilt reported is the spin axis's angle "
+        "from vertical.",
+    ),
+]
+TiltAxisOption = Annotated[
+    str,
+    typer.Option("--tilt-axis", metavar="x|y", help="World axis the nudge (--tilt) turns the body about."),
+]
+GravityOption = Annotated[
+    float | None,
+    typer.Option(
+        "--gravity",
+        "-g",
+        metavar="G",
+        help="Gravity's magnitude in m/s² (SI, whatever the spec's units); 0 switches it off. Default 9.81.",
+    ),
+]
 DurationOption = Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")]
-SamplesOption = Annotated[int, typer.Option("--samples", "-n", metavar="N",
-                                            help="Samples, equally spaced from t=0 to t=T (1: only the end).")]
-OutOption = Annotated[Optional[str], typer.Option("--out", "-o", metavar="FILE.csv",
-                                                  help="Write the trajectory as CSV (only if the run succeeds; "
-                                                       "'-' for standard output).")]
+SamplesOption = Annotated[
+    int,
+    typer.Option(
+        "--samples", "-n", metavar="N", help="Samples, equally spaced from t=0 to t=T (1: only the end)."
+    ),
+]
+OutOption = Annotated[
+    str | None,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="FILE.csv",
+        help="Write the trajectory as CSV (only if the run succeeds; '-' for standard output).",
+    ),
+]
 MethodOption = Annotated[str, typer.Option("--method", "-m", metavar="NAME", help=METHOD_HELP)]
-RtolOption = Annotated[Optional[float], typer.Option(
-    "--rtol", metavar="RTOL", help="Tolerance of the integrator (default 1e-12 for default, 1e-8 for rk45/dop853): smaller "
-                   "is more accurate and slower.")]
-ErrorEstimateOption = Annotated[bool, typer.Option(
-    "--error-estimate/--no-error-estimate",
-    help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
-         "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).")]
-MaxStepsOption = Annotated[Optional[int], typer.Option(
-    "--max-steps", metavar="N", help="Most integration steps this run may take (default "
-                                     f"{DEFAULT_MAX_STEPS:.0e}); a run estimated to need more is refused "
-                                     "before it starts.")]
-YesOption = Annotated[bool, typer.Option("--yes", "-y", help="Run even when the run is estimated to exceed the "
-                                                             "step budget (the budget still stops it).")]
-PlotOption = Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png|.svg|.pdf",
-                                                   help="Plot the path of the spin axis seen from above, its tilt "
-                                                        "(a free body: each principal axis's turn), ω and energy "
-                                                        f"drift against time ({needs('matplotlib', 'plot')}).")]
+RtolOption = Annotated[
+    float | None,
+    typer.Option(
+        "--rtol",
+        metavar="RTOL",
+        help="Tolerance of the integrator (default 1e-12 for default, 1e-8 for rk45/dop853): smaller "
+        "is more accurate and slower.",
+    ),
+]
+ErrorEstimateOption = Annotated[
+    bool,
+    typer.Option(
+        "--error-estimate/--no-error-estimate",
+        help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
+        "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).",
+    ),
+]
+MaxStepsOption = Annotated[
+    int | None,
+    typer.Option(
+        "--max-steps",
+        metavar="N",
+        help="Most integration steps this run may take (default "
+        f"{DEFAULT_MAX_STEPS:.0e}); a run estimated to need more is refused "
+        "before it starts.",
+    ),
+]
+YesOption = Annotated[
+    bool,
+    typer.Option(
+        "--yes",
+        "-y",
+        help="Run even when the run is estimated to exceed the step budget (the budget still stops it).",
+    ),
+]
+PlotOption = Annotated[
+    str | None,
+    typer.Option(
+        "--plot",
+        metavar="FILE.png|.svg|.pdf",
+        help="Plot the path of the spin axis seen from above, its tilt "
+        "(a free body: each principal axis's turn), ω and energy "
+        f"drift against time ({needs('matplotlib', 'plot')}).",
+    ),
+]
 
 
-def simulate(file: SpecFile, spin: SpinOption = None, omega: OmegaOption = None, tilt: TiltOption = 0.0,
-             tilt_axis: TiltAxisOption = "y", gravity: GravityOption = None, duration: DurationOption = 4.0,
-             samples: SamplesOption = 481, out: OutOption = None, method: MethodOption = "default",
-             rtol: RtolOption = None, error_estimate: ErrorEstimateOption = True, max_steps: MaxStepsOption = None,
-             yes: YesOption = False, plot: PlotOption = None, spin_axis: SpinAxisOption = None,
-             format: FormatOption = OutputFormat.table) -> None:
+def simulate(
+    file: SpecFile,
+    spin: SpinOption = None,
+    omega: OmegaOption = None,
+    tilt: TiltOption = 0.0,
+    tilt_axis: TiltAxisOption = "y",
+    gravity: GravityOption = None,
+    duration: DurationOption = 4.0,
+    samples: SamplesOption = 481,
+    out: OutOption = None,
+    method: MethodOption = "default",
+    rtol: RtolOption = None,
+    error_estimate: ErrorEstimateOption = True,
+    max_steps: MaxStepsOption = None,
+    yes: YesOption = False,
+    plot: PlotOption = None,
+    spin_axis: SpinAxisOption = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
     """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body.
 
     Prints the conserved quantities' drift, an error estimate and, for a top, whether it
@@ -91,7 +169,9 @@ def simulate(file: SpecFile, spin: SpinOption = None, omega: OmegaOption = None,
 
     check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol)
     check_samples(samples)
-    out_target = None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
+    out_target = (
+        None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
+    )
     plot_target = None if plot is None else output_target(plot, "--plot", PLOT_FORMATS, inputs=[file])
     check_distinct([out_target, plot_target])
     if out_target is not None and out_target.is_stdout and format != OutputFormat.csv:
@@ -100,8 +180,19 @@ def simulate(file: SpecFile, spin: SpinOption = None, omega: OmegaOption = None,
         from rbi.viz.plots import require_matplotlib
 
         require_matplotlib()
-    settings = dict(spin=spin, omega=omega, tilt_deg=tilt, tilt_axis=tilt_axis, gravity=gravity, duration=duration,
-                    method=method, rtol=rtol, max_steps=max_steps, check_budget=not yes, spin_axis=spin_axis)
+    settings = dict(
+        spin=spin,
+        omega=omega,
+        tilt_deg=tilt,
+        tilt_axis=tilt_axis,
+        gravity=gravity,
+        duration=duration,
+        method=method,
+        rtol=rtol,
+        max_steps=max_steps,
+        check_budget=not yes,
+        spin_axis=spin_axis,
+    )
     body, run = _run(file, settings, samples, error_estimate, format)
     trajectory_csv = run.to_csv() if out is not None or format == OutputFormat.csv else ""
     result = dict(run.summary)
@@ -128,7 +219,9 @@ def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: 
     body = api.load_file(file)
     progress = _ProgressBar() if format == OutputFormat.table and sys.stdout.isatty() else None
     try:
-        return body, api.simulate(body, samples=samples, error_estimate=error_estimate, progress=progress, **settings)
+        return body, api.simulate(
+            body, samples=samples, error_estimate=error_estimate, progress=progress, **settings
+        )
     finally:
         if progress is not None:
             progress.close()
@@ -138,8 +231,8 @@ def _plot(target, body, run, settings: dict) -> None:
     """Draw the run (resampled densely when the method's dense output allows it) at ``target``."""
     from rbi import api
     from rbi.cli.output import write_output
-    from rbi.viz.plots import plot_trajectory
     from rbi.viz.labels import label
+    from rbi.viz.plots import plot_trajectory
 
     shown = run.columns()
     if settings["method"] in ("default", "exact") and run.t.size < PLOT_SAMPLES and settings["duration"] > 0:
@@ -147,17 +240,28 @@ def _plot(target, body, run, settings: dict) -> None:
         shown = api.simulate(body, samples=PLOT_SAMPLES, error_estimate=False, **settings).columns()
     loaded = body._loaded
     omega0 = run.summary["initial"]["omega"]
-    title = (f"{label(body.name or body.path)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, "
-             f"nudge {number(settings['tilt_deg'])}°")
+    title = (
+        f"{label(body.name or body.path)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, "
+        f"nudge {number(settings['tilt_deg'])}°"
+    )
     free = {}
     if loaded.pivot is None:  # a free body: each principal axis's turn against the angular momentum
         from rbi.runs.prepare import scene_of
 
         scene = scene_of(loaded, settings["gravity"])
         free = {"principal_axes": scene.principal_axes, "inertia": scene.inertia}
-    write_output(target, writer=lambda path: plot_trajectory(
-        shown, path, title=title, format=target.format, energy_unit=energy_unit(loaded),
-        spin_axis=run.summary["spin_axis"], **free))
+    write_output(
+        target,
+        writer=lambda path: plot_trajectory(
+            shown,
+            path,
+            title=title,
+            format=target.format,
+            energy_unit=energy_unit(loaded),
+            spin_axis=run.summary["spin_axis"],
+            **free,
+        ),
+    )
 
 
 def energy_unit(body) -> str:
@@ -183,8 +287,14 @@ class _ProgressBar:
 
             from rbi.cli.render import stdout_console
 
-            self.bar = Progress(TextColumn("simulating"), BarColumn(), TextColumn("{task.percentage:>3.0f}%"),
-                                TimeRemainingColumn(), console=stdout_console(), transient=True)
+            self.bar = Progress(
+                TextColumn("simulating"),
+                BarColumn(),
+                TextColumn("{task.percentage:>3.0f}%"),
+                TimeRemainingColumn(),
+                console=stdout_console(),
+                transient=True,
+            )
             self.task = self.bar.add_task("simulate", total=1.0)
             self.bar.start()
         self.bar.update(self.task, completed=min(max(fraction, 0.0), 1.0))
@@ -210,12 +320,25 @@ def _table(body, result: dict):
         ("spin axis (body axes)", "", tables.vector(result["spin_axis"])),
         ("nudge at t=0 (--tilt)", "deg", number(result["initial"]["nudge_deg"])),
         ("tilt of spin axis: final", "deg", number(final["tilt_deg"])),
-        ("tilt min … max (nutation)", "deg", f"{number(result['tilt_min_deg'])} … {number(result['tilt_max_deg'])}"),
-        ("mean precession rate", "deg/s", "undefined (the axis was vertical)"
-         if result["mean_precession_rate_deg_s"] is None else number(result["mean_precession_rate_deg_s"])),
+        (
+            "tilt min … max (nutation)",
+            "deg",
+            f"{number(result['tilt_min_deg'])} … {number(result['tilt_max_deg'])}",
+        ),
+        (
+            "mean precession rate",
+            "deg/s",
+            "undefined (the axis was vertical)"
+            if result["mean_precession_rate_deg_s"] is None
+            else number(result["mean_precession_rate_deg_s"]),
+        ),
     ]
-    names = {"energy": "energy", "h_vertical": "vertical h about pivot", "h_spin": "spin h·axis",
-             "h_world": "h (world axes)"}
+    names = {
+        "energy": "energy",
+        "h_vertical": "vertical h about pivot",
+        "h_spin": "spin h·axis",
+        "h_world": "h (world axes)",
+    }
     accuracy = []
     for key, item in result["conserved"].items():
         initial = item["initial"]
@@ -239,14 +362,21 @@ def _table(body, result: dict):
     notes = [f"Integrator: {result['integrator']}.", f"Stability: {result['stability']['verdict']}."]
     facts = result.get("closed_form")
     if facts and facts.get("kind") == "Lagrange top":
-        notes.append(f"Closed form (Lagrange top): tilt between {number(facts['nutation_tilt_min_deg'])} and "
-                     f"{number(facts['nutation_tilt_max_deg'])} deg, nutation period {number(facts['nutation_period_s'])} s, "
-                     f"mean precession {number(facts['mean_precession_rate_deg_s'])} deg/s.")
+        notes.append(
+            f"Closed form (Lagrange top): tilt between {number(facts['nutation_tilt_min_deg'])} and "
+            f"{number(facts['nutation_tilt_max_deg'])} deg, nutation period {number(facts['nutation_period_s'])} s, "
+            f"mean precession {number(facts['mean_precession_rate_deg_s'])} deg/s."
+        )
     elif facts and facts.get("kind") == "asymmetric free body":
-        flips = (f"; near the intermediate axis the body turns over every {number(facts['half_period_s'])} s"
-                 if result["stability"].get("intermediate_axis") else "")
-        notes.append(f"Closed form (Euler–Poinsot): ω repeats every {number(facts['omega_period_s'])} s "
-                     f"(4K(m)/λ, m = {number(facts['elliptic_parameter'])}){flips}.")
+        flips = (
+            f"; near the intermediate axis the body turns over every {number(facts['half_period_s'])} s"
+            if result["stability"].get("intermediate_axis")
+            else ""
+        )
+        notes.append(
+            f"Closed form (Euler–Poinsot): ω repeats every {number(facts['omega_period_s'])} s "
+            f"(4K(m)/λ, m = {number(facts['elliptic_parameter'])}){flips}."
+        )
     if "out" in result:
         notes.append(f"Trajectory written to {result['out']}.")
     return tables.stack(

@@ -1,9 +1,9 @@
-""""Did you mean …?": the nearest valid name for a misspelt command or option."""
+""" "Did you mean …?": the nearest valid name for a misspelt command or option."""
 
 from __future__ import annotations
 
 import difflib
-from typing import Iterable
+from collections.abc import Iterable
 
 
 def nearest(name: str, valid: Iterable[str]) -> str | None:
@@ -24,7 +24,11 @@ def usage_message(error) -> str:
     from typer._click.exceptions import NoSuchOption
 
     if isinstance(error, NoSuchOption) and error.ctx is not None:
-        options = [name for param in error.ctx.command.params for name in (*param.opts, *param.secondary_opts)
-                   if name.startswith("-")]
+        options = [
+            name
+            for param in error.ctx.command.params
+            for name in (*param.opts, *param.secondary_opts)
+            if name.startswith("-")
+        ]
         return f"no such option: {error.option_name}{did_you_mean(error.option_name, options)}"
     return error.format_message()

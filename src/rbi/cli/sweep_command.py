@@ -4,68 +4,149 @@ or, with --mass-properties, the spread of the mass properties alone."""
 from __future__ import annotations
 
 import sys
-from typing import Annotated, Optional
+from typing import Annotated
 
 import typer
 
-from rbi.cli.simulate_command import SpinAxisOption
 from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, number
+from rbi.cli.simulate_command import SpinAxisOption
 from rbi.sim.budget import DEFAULT_MAX_STEPS
 from rbi.spec.errors import InputError
 from rbi.sweep.study import MAX_ROWS_SHOWN
 
-SpinOption = Annotated[str, typer.Option("--spin", "-s", metavar="START:STOP:COUNT",
-                                         help="Spins about the spin axis, rad/s (or one value).")]
-TiltOption = Annotated[str, typer.Option("--tilt", metavar="START:STOP:COUNT",
-                                         help="Nudges at t=0: turns of the body about --tilt-axis, "
-                                              "degrees (or one value).")]
-VaryOption = Annotated[Optional[list[str]], typer.Option(
-    "--vary", metavar="PATH=RANGE", help="Vary a number of the spec: PATH is parts.NAME.FIELD or "
-    "parts.NAME.FIELD[i] (e.g. parts.bolt.position[0]); RANGE is START:STOP:COUNT, or normal(MEAN,SD) / "
-    "uniform(LOW,HIGH) with --runs. Repeatable.")]
-RunsOption = Annotated[int, typer.Option("--runs", metavar="N", help="Monte Carlo: N draws of every "
-                                         "normal()/uniform() --vary per grid point.")]
-SeedOption = Annotated[int, typer.Option("--seed", metavar="S", help="Seed of the draws (same seed, same rows).")]
+SpinOption = Annotated[
+    str,
+    typer.Option(
+        "--spin", "-s", metavar="START:STOP:COUNT", help="Spins about the spin axis, rad/s (or one value)."
+    ),
+]
+TiltOption = Annotated[
+    str,
+    typer.Option(
+        "--tilt",
+        metavar="START:STOP:COUNT",
+        help="Nudges at t=0: turns of the body about --tilt-axis, degrees (or one value).",
+    ),
+]
+VaryOption = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--vary",
+        metavar="PATH=RANGE",
+        help="Vary a number of the spec: PATH is parts.NAME.FIELD or "
+        "parts.NAME.FIELD[i] (e.g. parts.bolt.position[0]); RANGE is START:STOP:COUNT, or normal(MEAN,SD) / "
+        "uniform(LOW,HIGH) with --runs. Repeatable.",
+    ),
+]
+RunsOption = Annotated[
+    int,
+    typer.Option(
+        "--runs", metavar="N", help="Monte Carlo: N draws of every normal()/uniform() --vary per grid point."
+    ),
+]
+SeedOption = Annotated[
+    int, typer.Option("--seed", metavar="S", help="Seed of the draws (same seed, same rows).")
+]
 DurationOption = Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")]
-SamplesOption = Annotated[int, typer.Option("--samples", "-n", metavar="N",
-                                            help="Samples per run the summaries are taken over (as rbi simulate).")]
-RtolOption = Annotated[float, typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (as rbi simulate).")]
-GravityOption = Annotated[Optional[float], typer.Option("--gravity", "-g", metavar="G",
-                                                        help="Gravity in m/s² (default 9.81).")]
-TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y",
-                                             help="World axis the nudge (--tilt) turns the body about.")]
-MaxStepsOption = Annotated[Optional[int], typer.Option(
-    "--max-steps", metavar="N", help=f"Most steps one run may take (default {DEFAULT_MAX_STEPS:.0e}); a run "
-                                     "that needs more is a failed row.")]
-WorkersOption = Annotated[Optional[int], typer.Option("--workers", "-j", metavar="N",
-                                                      help="Cores to use (default: all).")]
-DaskOption = Annotated[Optional[str], typer.Option(
-    "--dask", metavar="ADDRESS", help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
-                                      f"for a local cluster ({needs('Dask', 'dask')}).")]
-OutOption = Annotated[Optional[str], typer.Option("--out", "-o", metavar="FILE.csv|FILE.parquet",
-                                                  help="Write one row per run, streamed as runs finish (FILE.parquet "
-                                                       f"{needs('pyarrow', 'parquet')}).")]
-ResumeOption = Annotated[bool, typer.Option("--resume", help="Continue an interrupted sweep into --out: compute "
-                                                             "only the runs missing there.")]
-PlotOption = Annotated[Optional[str], typer.Option("--plot", metavar="FILE.png|.svg|.pdf",
-                                                   help="Draw the map: largest tilt over the first two swept "
-                                                        f"axes ({needs('matplotlib', 'plot')}).")]
-MassPropertiesOption = Annotated[bool, typer.Option(
-    "--mass-properties", help="No simulation: the spread of mass, centre of mass, principal moments and "
-                              "principal-axis directions over the --vary values.")]
-YesOption = Annotated[bool, typer.Option("--yes", "-y", help="Run even when the sweep is estimated to take "
-                                                             "longer than the budget.")]
+SamplesOption = Annotated[
+    int,
+    typer.Option(
+        "--samples", "-n", metavar="N", help="Samples per run the summaries are taken over (as rbi simulate)."
+    ),
+]
+RtolOption = Annotated[
+    float, typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (as rbi simulate).")
+]
+GravityOption = Annotated[
+    float | None, typer.Option("--gravity", "-g", metavar="G", help="Gravity in m/s² (default 9.81).")
+]
+TiltAxisOption = Annotated[
+    str,
+    typer.Option("--tilt-axis", metavar="x|y", help="World axis the nudge (--tilt) turns the body about."),
+]
+MaxStepsOption = Annotated[
+    int | None,
+    typer.Option(
+        "--max-steps",
+        metavar="N",
+        help=f"Most steps one run may take (default {DEFAULT_MAX_STEPS:.0e}); a run "
+        "that needs more is a failed row.",
+    ),
+]
+WorkersOption = Annotated[
+    int | None, typer.Option("--workers", "-j", metavar="N", help="Cores to use (default: all).")
+]
+DaskOption = Annotated[
+    str | None,
+    typer.Option(
+        "--dask",
+        metavar="ADDRESS",
+        help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
+        f"for a local cluster ({needs('Dask', 'dask')}).",
+    ),
+]
+OutOption = Annotated[
+    str | None,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="FILE.csv|FILE.parquet",
+        help=f"Write one row per run, streamed as runs finish (FILE.parquet {needs('pyarrow', 'parquet')}).",
+    ),
+]
+ResumeOption = Annotated[
+    bool,
+    typer.Option(
+        "--resume", help="Continue an interrupted sweep into --out: compute only the runs missing there."
+    ),
+]
+PlotOption = Annotated[
+    str | None,
+    typer.Option(
+        "--plot",
+        metavar="FILE.png|.svg|.pdf",
+        help=f"Draw the map: largest tilt over the first two swept axes ({needs('matplotlib', 'plot')}).",
+    ),
+]
+MassPropertiesOption = Annotated[
+    bool,
+    typer.Option(
+        "--mass-properties",
+        help="No simulation: the spread of mass, centre of mass, principal moments and "
+        "principal-axis directions over the --vary values.",
+    ),
+]
+YesOption = Annotated[
+    bool,
+    typer.Option("--yes", "-y", help="Run even when the sweep is estimated to take longer than the budget."),
+]
 
 
-def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: VaryOption = None,
-          runs: RunsOption = 1, seed: SeedOption = 0, duration: DurationOption = 4.0, samples: SamplesOption = 481,
-          rtol: RtolOption = 1e-12, gravity: GravityOption = None, tilt_axis: TiltAxisOption = "y",
-          max_steps: MaxStepsOption = None, workers: WorkersOption = None, dask: DaskOption = None,
-          out: OutOption = None, resume: ResumeOption = False, plot: PlotOption = None,
-          mass_properties: MassPropertiesOption = False, yes: YesOption = False,
-          spin_axis: SpinAxisOption = None, format: FormatOption = OutputFormat.table) -> None:
+def sweep(
+    file: SpecFile,
+    spin: SpinOption = "0",
+    tilt: TiltOption = "0",
+    vary: VaryOption = None,
+    runs: RunsOption = 1,
+    seed: SeedOption = 0,
+    duration: DurationOption = 4.0,
+    samples: SamplesOption = 481,
+    rtol: RtolOption = 1e-12,
+    gravity: GravityOption = None,
+    tilt_axis: TiltAxisOption = "y",
+    max_steps: MaxStepsOption = None,
+    workers: WorkersOption = None,
+    dask: DaskOption = None,
+    out: OutOption = None,
+    resume: ResumeOption = False,
+    plot: PlotOption = None,
+    mass_properties: MassPropertiesOption = False,
+    yes: YesOption = False,
+    spin_axis: SpinAxisOption = None,
+    format: FormatOption = OutputFormat.table,
+) -> None:
     """Many runs of one spec: a grid over spin, tilt and spec fields, or Monte Carlo draws.
 
     One row per run: the swept values, the largest, final and smallest tilt of the spin axis,
@@ -80,18 +161,34 @@ def sweep(file: SpecFile, spin: SpinOption = "0", tilt: TiltOption = "0", vary: 
     """
     from rbi.cli.output import check_distinct, output_target
     from rbi.spec.load import read_yaml
-    from rbi.sweep.study import SweepSettings, Study, check_mass_properties, check_settings, require
+    from rbi.sweep.study import Study, SweepSettings, check_mass_properties, check_settings, require
 
-    settings = SweepSettings(spin=spin, tilt=tilt, vary=tuple(vary or []), runs=runs, seed=seed, duration=duration,
-                             samples=samples, rtol=rtol, gravity=gravity, tilt_axis=tilt_axis, max_steps=max_steps,
-                             workers=workers, dask=dask, mass_properties=mass_properties, yes=yes,
-                             spin_axis=spin_axis)
+    settings = SweepSettings(
+        spin=spin,
+        tilt=tilt,
+        vary=tuple(vary or []),
+        runs=runs,
+        seed=seed,
+        duration=duration,
+        samples=samples,
+        rtol=rtol,
+        gravity=gravity,
+        tilt_axis=tilt_axis,
+        max_steps=max_steps,
+        workers=workers,
+        dask=dask,
+        mass_properties=mass_properties,
+        yes=yes,
+        spin_axis=spin_axis,
+    )
     check_settings(settings)
     if resume and out is None:
         raise InputError("--resume: needs --out, the file of the interrupted sweep")
     check_mass_properties(settings)
     out_target = None if out is None else output_target(out, "--out", ("csv", "parquet"), inputs=[file])
-    plot_target = None if plot is None else output_target(plot, "--plot", ("png", "svg", "pdf"), inputs=[file])
+    plot_target = (
+        None if plot is None else output_target(plot, "--plot", ("png", "svg", "pdf"), inputs=[file])
+    )
     check_distinct([out_target, plot_target])
     if out_target is not None and out_target.format == "parquet":
         require("pyarrow", "parquet", "--out FILE.parquet")
@@ -130,12 +227,17 @@ def _where_runs_go(settings):
         require("distributed", "dask", "--dask")
     if settings.dask == "local":
         require("cryptography", "dask", "--dask local")  # its private TLS certificates
-    if settings.workers is None or settings.dask not in (None, "local") or \
-            usable_workers(settings.workers) >= settings.workers:
+    if (
+        settings.workers is None
+        or settings.dask not in (None, "local")
+        or usable_workers(settings.workers) >= settings.workers
+    ):
         return settings
     from rbi.cli.terminal import say
 
-    say(f"--workers {settings.workers}: this machine gives rbi {available_cores()} cores; using {available_cores()}")
+    say(
+        f"--workers {settings.workers}: this machine gives rbi {available_cores()} cores; using {available_cores()}"
+    )
     return dataclasses.replace(settings, workers=usable_workers(settings.workers))
 
 
@@ -150,8 +252,10 @@ def _run(study, out_target, resume: bool, out: str | None):
         if study.output is None:
             raise
         word, code = ("terminated", 143) if isinstance(stop, Terminated) else ("interrupted", 130)
-        say(f"{word}: {study.output.done:,} of {study.plan.size:,} runs kept in {out}; run the same command with "
-            "--resume to compute the rest")
+        say(
+            f"{word}: {study.output.done:,} of {study.plan.size:,} runs kept in {out}; run the same command with "
+            "--resume to compute the rest"
+        )
         raise SystemExit(code) from None
 
 
@@ -162,8 +266,15 @@ class _Progress:
         from rich.console import Console
         from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
 
-        self.bar = Progress(TextColumn("sweep"), BarColumn(), MofNCompleteColumn(), TextColumn("runs"),
-                            TimeRemainingColumn(), console=Console(stderr=True), transient=True)
+        self.bar = Progress(
+            TextColumn("sweep"),
+            BarColumn(),
+            MofNCompleteColumn(),
+            TextColumn("runs"),
+            TimeRemainingColumn(),
+            console=Console(stderr=True),
+            transient=True,
+        )
         self.task = self.bar.add_task("sweep", total=total, completed=done)
         self.bar.start()
 
@@ -179,24 +290,46 @@ def _plot(target, study, rows) -> None:
     from rbi.viz.plots import plot_stability_map
 
     if rows is None:
-        raise InputError("--plot: the map is drawn from the rows of this run; with more than "
-                         f"{MAX_ROWS_SHOWN:,} runs draw it from the --out file")
+        raise InputError(
+            "--plot: the map is drawn from the rows of this run; with more than "
+            f"{MAX_ROWS_SHOWN:,} runs draw it from the --out file"
+        )
     data = study.stability_map(rows)
-    write_output(target, writer=lambda path: plot_stability_map(
-        data["x"], data["y"], data["values"], path, x_label=data["x_label"], y_label=data["y_label"],
-        threshold=data["threshold"], title=data["title"], format=target.format))
+    write_output(
+        target,
+        writer=lambda path: plot_stability_map(
+            data["x"],
+            data["y"],
+            data["values"],
+            path,
+            x_label=data["x_label"],
+            y_label=data["y_label"],
+            threshold=data["threshold"],
+            title=data["title"],
+            format=target.format,
+        ),
+    )
 
 
 def _table(result, columns, rows, file):
-    from rbi.cli import tables
-
     from rich import box
     from rich.table import Table
     from rich.text import Text
 
-    units = {"spin": "rad/s", "tilt_deg": "deg", "max_tilt_deg": "deg", "final_tilt_deg": "deg",
-             "min_tilt_deg": "deg", "precession_rate_deg_s": "deg/s", "energy_drift": "relative",
-             "axis_1_tilt_deg": "deg", "axis_2_tilt_deg": "deg", "axis_3_tilt_deg": "deg"}
+    from rbi.cli import tables
+
+    units = {
+        "spin": "rad/s",
+        "tilt_deg": "deg",
+        "max_tilt_deg": "deg",
+        "final_tilt_deg": "deg",
+        "min_tilt_deg": "deg",
+        "precession_rate_deg_s": "deg/s",
+        "energy_drift": "relative",
+        "axis_1_tilt_deg": "deg",
+        "axis_2_tilt_deg": "deg",
+        "axis_3_tilt_deg": "deg",
+    }
     notes = [f"{result['count']:,} runs"]
     if "failed" in result:
         notes[0] += f", {result['failed']:,} failed"
@@ -207,8 +340,12 @@ def _table(result, columns, rows, file):
     parts = []
     if rows is not None and not result.get("spread"):  # a tolerance study shows its spread instead
         shown = rows if len(rows) <= 40 else rows[:20] + [None] + rows[-20:]
-        table = Table(title=tables.plain_text(f"{result['name'] or file} — sweep"), box=box.SIMPLE_HEAD,
-                      title_justify="left", show_edge=False)  # rbi's style; headers hold a line break
+        table = Table(
+            title=tables.plain_text(f"{result['name'] or file} — sweep"),
+            box=box.SIMPLE_HEAD,
+            title_justify="left",
+            show_edge=False,
+        )  # rbi's style; headers hold a line break
         hidden = {"min_tilt_deg", "precession_rate_deg_s", "steps"}  # in --out, json and csv
         keep = [i for i, name in enumerate(columns) if name not in hidden]
         columns = [columns[i] for i in keep]
@@ -217,14 +354,23 @@ def _table(result, columns, rows, file):
             # words wrap in a narrow terminal and no cell is cut short: a number is never shown truncated
             words = name.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
             header = tables.plain_text(name if name.startswith("parts.") else words)
-            table.add_column(f"{header}\n{units.get(name, '')}".rstrip(), overflow="fold",
-                             justify="left" if name == "status" else "right")
+            table.add_column(
+                f"{header}\n{units.get(name, '')}".rstrip(),
+                overflow="fold",
+                justify="left" if name == "status" else "right",
+            )
         for row in shown:
             if row is None:
                 table.add_row(*["…"] * len(columns))
                 continue
-            table.add_row(*[tables.plain_text(str(v)) if isinstance(v, str) else
-                            ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 4))) for v in row])
+            table.add_row(
+                *[
+                    tables.plain_text(str(v))
+                    if isinstance(v, str)
+                    else ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 4)))
+                    for v in row
+                ]
+            )
         parts.append(table)
     if result.get("spread"):
         spread = tables.titled("Spread over the ok runs")
@@ -234,11 +380,18 @@ def _table(result, columns, rows, file):
             spread.add_column(name, justify="right")
         labels = {"mass": result["units"]["mass"], "com_x": result["units"]["length"]}
         for name, stats in result["spread"].items():
-            unit = units.get(name) or labels.get(name) or ("" if not name.startswith(("com_", "moment_")) else
-                                                           result["units"]["length"] if name.startswith("com_") else
-                                                           f"{result['units']['mass']}·{result['units']['length']}²")
+            unit = (
+                units.get(name)
+                or labels.get(name)
+                or (
+                    ""
+                    if not name.startswith(("com_", "moment_"))
+                    else result["units"]["length"]
+                    if name.startswith("com_")
+                    else f"{result['units']['mass']}·{result['units']['length']}²"
+                )
+            )
             spread.add_row(name, unit, *[number(stats[k], 4) for k in ("p0", "p50", "p100", "std")])
         parts.append(spread)
     parts.append(Text("\n".join(notes)))
     return tables.stack(*parts)
-

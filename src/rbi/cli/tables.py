@@ -2,9 +2,8 @@
 
 from __future__ import annotations
 
-from typing import Sequence
+from collections.abc import Sequence
 
-import numpy as np
 from rich import box
 from rich.console import Group
 from rich.markup import escape
@@ -65,8 +64,13 @@ def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
     return table
 
 
-def matrix(title: str, values, unit: str, row_labels: Sequence[str] = ("x", "y", "z"),
-           column_labels: Sequence[str] = ("x", "y", "z")) -> Table:
+def matrix(
+    title: str,
+    values,
+    unit: str,
+    row_labels: Sequence[str] = ("x", "y", "z"),
+    column_labels: Sequence[str] = ("x", "y", "z"),
+) -> Table:
     """A 3×3 matrix with a common power-of-ten scale written once in the title."""
     values = without_noise(values)
     scale, scale_text = matrix_digits(values)
@@ -94,6 +98,7 @@ def vector(v) -> str:
 
 # --- fitting the terminal ---------------------------------------------------------------------
 
+
 def fitted(renderable, console):
     """``renderable`` laid out for ``console``'s width, so that no number is cut, split across
     lines or shortened to ``…``: each table's title goes on a line of its own (a long title
@@ -118,11 +123,19 @@ def _cells_intact(table: Table, console) -> bool:
     wrap; a cell folded, wrapped or shortened to ``…`` is not whole)."""
     from rich.text import Text
 
-    lines = ["".join(segment.text for segment in line)
-             for line in console.render_lines(table, console.options, pad=False)]
+    lines = [
+        "".join(segment.text for segment in line)
+        for line in console.render_lines(table, console.options, pad=False)
+    ]
     for column in table.columns:
         for cell in column._cells:
-            text = cell.plain if isinstance(cell, Text) else Text.from_markup(cell).plain if isinstance(cell, str) else None
+            text = (
+                cell.plain
+                if isinstance(cell, Text)
+                else Text.from_markup(cell).plain
+                if isinstance(cell, str)
+                else None
+            )
             if text and not any(text in line for line in lines):
                 return False
     return True

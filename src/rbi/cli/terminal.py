@@ -45,19 +45,75 @@ def _escaped(char: str) -> str:
 
 # --- terminals that cannot encode every character ------------------------------------------
 
-SUPERSCRIPTS = {"⁰": "0", "¹": "1", "²": "2", "³": "3", "⁴": "4", "⁵": "5", "⁶": "6", "⁷": "7", "⁸": "8",
-                "⁹": "9", "⁻": "-", "ᵀ": "T"}
+SUPERSCRIPTS = {
+    "⁰": "0",
+    "¹": "1",
+    "²": "2",
+    "³": "3",
+    "⁴": "4",
+    "⁵": "5",
+    "⁶": "6",
+    "⁷": "7",
+    "⁸": "8",
+    "⁹": "9",
+    "⁻": "-",
+    "ᵀ": "T",
+}
 """Superscripts, spelled ``^`` and the plain characters (``m²`` → ``m^2``, ``10⁻⁴`` → ``10^-4``)."""
 
 ASCII_SPELLINGS = {
-    "·": "*", "×": "x", "÷": "/", "−": "-", "–": "-", "—": "-", "…": "...",
-    "°": "deg", "±": "+/-", "µ": "u", "½": "1/2", "≈": "~", "≤": "<=", "≥": ">=", "→": "->", "√": "sqrt",
-    "∝": "~", "∫": "int", "⟂": "_|_", "⊗": "(x)", "•": "*", "★": "*", "‖": "||",
-    "ω": "omega", "θ": "theta", "φ": "phi", "ψ": "psi", "α": "alpha", "β": "beta", "ε": "eps",
-    "λ": "lambda", "ν": "nu", "π": "pi", "σ": "sigma", "τ": "tau", "Ω": "Omega", "Σ": "Sigma",
-    "Π": "Pi", "ᵢ": "_i", "₀": "0", "₁": "1", "₂": "2", "₃": "3",
+    "·": "*",
+    "×": "x",
+    "÷": "/",
+    "−": "-",
+    "–": "-",
+    "—": "-",
+    "…": "...",
+    "°": "deg",
+    "±": "+/-",
+    "µ": "u",
+    "½": "1/2",
+    "≈": "~",
+    "≤": "<=",
+    "≥": ">=",
+    "→": "->",
+    "√": "sqrt",
+    "∝": "~",
+    "∫": "int",
+    "⟂": "_|_",
+    "⊗": "(x)",
+    "•": "*",
+    "★": "*",
+    "‖": "||",
+    "ω": "omega",
+    "θ": "theta",
+    "φ": "phi",
+    "ψ": "psi",
+    "α": "alpha",
+    "β": "beta",
+    "ε": "eps",
+    "λ": "lambda",
+    "ν": "nu",
+    "π": "pi",
+    "σ": "sigma",
+    "τ": "tau",
+    "Ω": "Omega",
+    "Σ": "Sigma",
+    "Π": "Pi",
+    "ᵢ": "_i",
+    "₀": "0",
+    "₁": "1",
+    "₂": "2",
+    "₃": "3",
     # rich's table rules and its ellipsis, should an ASCII box not be chosen
-    "─": "-", "━": "-", "│": "|", "┃": "|", "┼": "+", "╇": "+", "╸": "-", "╺": "-",
+    "─": "-",
+    "━": "-",
+    "│": "|",
+    "┃": "|",
+    "┼": "+",
+    "╇": "+",
+    "╸": "-",
+    "╺": "-",
 }
 """Readable ASCII for the symbols rbi prints (units such as ``kg·m²``, Greek letters), used
 only when the terminal's encoding cannot show the symbol itself."""
@@ -114,6 +170,7 @@ def ascii_only() -> bool:
 
 
 # --- signals --------------------------------------------------------------------------------
+
 
 class Terminated(SystemExit):
     """Raised by the SIGTERM handler: unwinds like an exit (a half-written output's temporary

@@ -57,8 +57,11 @@ def _build_command(name: str):
     fast_params.quiet_pydantic_plugins()
     module_name, function_name, summary = COMMANDS[name]
     callback = getattr(importlib.import_module(module_name), function_name)
-    command = get_command_from_info(CommandInfo(name=name, callback=callback, short_help=summary),
-                                    pretty_exceptions_short=True, rich_markup_mode=None)
+    command = get_command_from_info(
+        CommandInfo(name=name, callback=callback, short_help=summary),
+        pretty_exceptions_short=True,
+        rich_markup_mode=None,
+    )
     from rbi.cli.options import plain_argument_help
 
     plain_argument_help(command)
@@ -71,8 +74,8 @@ app = typer.Typer(
     name="rbi",
     cls=_LazyGroup,
     help="Rigid-body calculator: mass properties, principal axes, momentum and motion of a body "
-         "described in a YAML spec. Commands that print results take --format table|json|csv; every command takes --help. "
-         "Files a spec names are read only from the spec's folder unless --allow-outside-paths is given.",
+    "described in a YAML spec. Commands that print results take --format table|json|csv; every command takes --help. "
+    "Files a spec names are read only from the spec's folder unless --allow-outside-paths is given.",
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
@@ -89,15 +92,27 @@ def _version(value: bool) -> None:
 
 @app.callback()
 def _root(
-    version: bool = typer.Option(False, "--version", callback=_version, is_eager=True, help="Print the version and exit."),
+    version: bool = typer.Option(
+        False, "--version", callback=_version, is_eager=True, help="Print the version and exit."
+    ),
     install_completion: bool = typer.Option(
-        False, "--install-completion", callback=completion.install_option, is_eager=True,
-        help="Install tab completion of commands, options and files for your shell (bash or zsh, from $SHELL)."),
+        False,
+        "--install-completion",
+        callback=completion.install_option,
+        is_eager=True,
+        help="Install tab completion of commands, options and files for your shell (bash or zsh, from $SHELL).",
+    ),
     show_completion: bool = typer.Option(
-        False, "--show-completion", callback=completion.show_option, is_eager=True,
-        help="Print the completion script for your shell, to install it by hand."),
+        False,
+        "--show-completion",
+        callback=completion.show_option,
+        is_eager=True,
+        help="Print the completion script for your shell, to install it by hand.",
+    ),
     allow_outside_paths: bool = typer.Option(
-        False, "--allow-outside-paths",
-        help="Let a spec name files outside its own folder (point clouds, meshes); also accepted after the command."),
+        False,
+        "--allow-outside-paths",
+        help="Let a spec name files outside its own folder (point clouds, meshes); also accepted after the command.",
+    ),
 ) -> None:
     """Rigid-body calculator."""

@@ -36,7 +36,9 @@ def angular_momentum_about_point(
     return angular_momentum(inertia_com, omega) + mass * np.cross(r, np.asarray(com_velocity, dtype=float))
 
 
-def kinetic_energy(inertia_com: np.ndarray, omega: np.ndarray, mass: float = 0.0, com_velocity=(0.0, 0.0, 0.0)) -> float:
+def kinetic_energy(
+    inertia_com: np.ndarray, omega: np.ndarray, mass: float = 0.0, com_velocity=(0.0, 0.0, 0.0)
+) -> float:
     """``T = ½ ωᵀ I_c ω + ½ m |v_c|²``."""
     w = np.asarray(omega, dtype=float)
     v = np.asarray(com_velocity, dtype=float)
@@ -55,6 +57,7 @@ def angle_between_deg(a: np.ndarray, b: np.ndarray) -> float | None:
 
 # --- Newton–Euler about the centre of mass -------------------------------------------------
 
+
 class Wrench(NamedTuple):
     """A force (M·L/s²) and a torque (M·L²/s²) about a stated point."""
 
@@ -69,7 +72,9 @@ class Acceleration(NamedTuple):
     angular: np.ndarray
 
 
-def newton_euler_com(mass: float, inertia_com: np.ndarray, omega: np.ndarray, alpha: np.ndarray, com_acceleration: np.ndarray) -> Wrench:
+def newton_euler_com(
+    mass: float, inertia_com: np.ndarray, omega: np.ndarray, alpha: np.ndarray, com_acceleration: np.ndarray
+) -> Wrench:
     """Inverse dynamics about the centre of mass: ``F = m a_c``, ``τ_c = I α + ω × I ω``."""
     I = np.asarray(inertia_com, dtype=float)
     w = np.asarray(omega, dtype=float)
@@ -78,7 +83,9 @@ def newton_euler_com(mass: float, inertia_com: np.ndarray, omega: np.ndarray, al
     return Wrench(force, torque)
 
 
-def newton_euler_com_forward(mass: float, inertia_com: np.ndarray, omega: np.ndarray, force: np.ndarray, torque_com: np.ndarray) -> Acceleration:
+def newton_euler_com_forward(
+    mass: float, inertia_com: np.ndarray, omega: np.ndarray, force: np.ndarray, torque_com: np.ndarray
+) -> Acceleration:
     """Forward dynamics about the centre of mass: ``a_c = F/m``, ``α = I⁻¹(τ_c − ω × I ω)``."""
     I = np.asarray(inertia_com, dtype=float)
     w = np.asarray(omega, dtype=float)
@@ -88,7 +95,10 @@ def newton_euler_com_forward(mass: float, inertia_com: np.ndarray, omega: np.nda
 
 # --- Newton–Euler about a point o ----------------------------------------------------------
 
-def spatial_inertia_about_point(mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray) -> np.ndarray:
+
+def spatial_inertia_about_point(
+    mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray
+) -> np.ndarray:
     """The 6×6 block matrix ``[[m E, −m[r]×], [m[r]×, I_o]]`` acting on ``[a_o; α]``.
 
     ``inertia_point`` is the inertia about o; ``com_from_point`` is r_{c/o}.
@@ -102,7 +112,9 @@ def spatial_inertia_about_point(mass: float, inertia_point: np.ndarray, com_from
     return block
 
 
-def velocity_terms_about_point(mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray, omega: np.ndarray) -> np.ndarray:
+def velocity_terms_about_point(
+    mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray, omega: np.ndarray
+) -> np.ndarray:
     """The velocity-dependent 6-vector ``[m ω × (ω × r_{c/o}); ω × I_o ω]``."""
     w = np.asarray(omega, dtype=float)
     r = np.asarray(com_from_point, dtype=float)
@@ -110,7 +122,14 @@ def velocity_terms_about_point(mass: float, inertia_point: np.ndarray, com_from_
     return np.concatenate((mass * np.cross(w, np.cross(w, r)), np.cross(w, I @ w)))
 
 
-def newton_euler_point(mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray, omega: np.ndarray, alpha: np.ndarray, point_acceleration: np.ndarray) -> Wrench:
+def newton_euler_point(
+    mass: float,
+    inertia_point: np.ndarray,
+    com_from_point: np.ndarray,
+    omega: np.ndarray,
+    alpha: np.ndarray,
+    point_acceleration: np.ndarray,
+) -> Wrench:
     """Inverse dynamics about a body point o: force on the body and torque about o.
 
     ``[F; τ_o] = [[m E, −m[r]×], [m[r]×, I_o]] [a_o; α] + [m ω×(ω×r); ω × I_o ω]``
@@ -122,7 +141,14 @@ def newton_euler_point(mass: float, inertia_point: np.ndarray, com_from_point: n
     return Wrench(out[:3], out[3:])
 
 
-def newton_euler_point_forward(mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray, omega: np.ndarray, force: np.ndarray, torque_point: np.ndarray) -> Acceleration:
+def newton_euler_point_forward(
+    mass: float,
+    inertia_point: np.ndarray,
+    com_from_point: np.ndarray,
+    omega: np.ndarray,
+    force: np.ndarray,
+    torque_point: np.ndarray,
+) -> Acceleration:
     """Forward dynamics about a body point o: ``a_o`` and ``α`` from the force and the torque
     about o, solving the block system of :func:`newton_euler_point`."""
     block = spatial_inertia_about_point(mass, inertia_point, com_from_point)

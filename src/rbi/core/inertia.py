@@ -6,7 +6,8 @@ Conventions: ``I = ∫ (|r|² E − r rᵀ) dm`` (products of inertia carry a mi
 
 from __future__ import annotations
 
-from typing import Iterable, NamedTuple, Sequence
+from collections.abc import Iterable, Sequence
+from typing import NamedTuple
 
 import numpy as np
 
@@ -227,6 +228,7 @@ def _closest_coordinate_axis_in_plane(normal: np.ndarray) -> np.ndarray:
 
 
 # --- one axis, radii of gyration, the sign of products --------------------------------------
+
 
 def unit_axis(axis: Sequence[float]) -> np.ndarray:
     """``axis`` scaled to unit length; ValueError when it is zero or not finite."""

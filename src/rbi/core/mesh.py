@@ -135,10 +135,15 @@ FACE_CHUNK = 1 << 16
 
 
 def _as_arrays(vertices, faces) -> tuple[np.ndarray, np.ndarray]:
-    return (np.asarray(vertices, dtype=float).reshape(-1, 3), np.asarray(faces, dtype=np.int64).reshape(-1, 3))
+    return (
+        np.asarray(vertices, dtype=float).reshape(-1, 3),
+        np.asarray(faces, dtype=np.int64).reshape(-1, 3),
+    )
 
 
-def weld_vertices(vertices: np.ndarray, faces: np.ndarray, rtol: float = WELD_RTOL) -> tuple[np.ndarray, np.ndarray]:
+def weld_vertices(
+    vertices: np.ndarray, faces: np.ndarray, rtol: float = WELD_RTOL
+) -> tuple[np.ndarray, np.ndarray]:
     """One vertex per position: faces re-indexed onto vertices that coincide.
 
     STL files store every triangle with its own three corners, so a mesh read from one shares
@@ -204,8 +209,10 @@ def _near_groups(points: np.ndarray, rtol: float) -> np.ndarray | None:
     if not found.any():
         return None
     if found.sum(axis=1).max() > NEAR_NEIGHBOURS:
-        raise MeshError(f"more than {NEAR_NEIGHBOURS} distinct vertices lie within {tol:.3g} of one vertex "
-                        f"({rtol:g} of the mesh's size): a degenerate mesh, not rounding noise")
+        raise MeshError(
+            f"more than {NEAR_NEIGHBOURS} distinct vertices lie within {tol:.3g} of one vertex "
+            f"({rtol:g} of the mesh's size): a degenerate mesh, not rounding noise"
+        )
     from scipy.sparse import coo_matrix
     from scipy.sparse.csgraph import connected_components
 
@@ -275,8 +282,12 @@ def _volume_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nda
 
 
 def _outer_sum(a, b, c, total) -> np.ndarray:
-    return (np.einsum("fi,fj->fij", a, a) + np.einsum("fi,fj->fij", b, b) + np.einsum("fi,fj->fij", c, c)
-            + np.einsum("fi,fj->fij", total, total))
+    return (
+        np.einsum("fi,fj->fij", a, a)
+        + np.einsum("fi,fj->fij", b, b)
+        + np.einsum("fi,fj->fij", c, c)
+        + np.einsum("fi,fj->fij", total, total)
+    )
 
 
 def _surface_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -291,7 +302,9 @@ def _surface_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nd
     return area, first, second
 
 
-def _sums(vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, moments) -> tuple[float, np.ndarray, np.ndarray]:
+def _sums(
+    vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, moments
+) -> tuple[float, np.ndarray, np.ndarray]:
     measure, first, second = 0.0, np.zeros(3), np.zeros((3, 3))
     for chunk in _face_chunks(len(faces)):
         m, f, s = moments(vertices[faces[chunk]] - reference)
@@ -385,16 +398,20 @@ def arrays_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
         return "holds no triangles"
     if faces.min() < 0 or faces.max() >= vertices.shape[0]:
         bad = int(np.flatnonzero((faces < 0).any(axis=1) | (faces >= vertices.shape[0]).any(axis=1))[0])
-        return (f"face {bad} names a vertex that does not exist (vertices are numbered 0 to "
-                f"{vertices.shape[0] - 1})")
+        return (
+            f"face {bad} names a vertex that does not exist (vertices are numbered 0 to "
+            f"{vertices.shape[0] - 1})"
+        )
     finite = np.isfinite(vertices).all(axis=1)
     if not finite.all():
         bad = int(np.flatnonzero(~finite)[0])
         return f"vertex {bad}: coordinates must be finite numbers"
     if float(np.abs(vertices).max()) > MAX_COORDINATE:
         bad = int(np.flatnonzero((np.abs(vertices) > MAX_COORDINATE).any(axis=1))[0])
-        return (f"vertex {bad}: a coordinate beyond ±{MAX_COORDINATE:g} (its fifth power, which the "
-                f"inertia needs, would overflow); scale the mesh into a smaller unit")
+        return (
+            f"vertex {bad}: a coordinate beyond ±{MAX_COORDINATE:g} (its fifth power, which the "
+            f"inertia needs, would overflow); scale the mesh into a smaller unit"
+        )
     return None
 
 
@@ -418,31 +435,44 @@ def closed_mesh_check(vertices: np.ndarray, faces: np.ndarray) -> tuple[str | No
         return problem, ()
     defects = mesh_defects(faces)
     if defects.boundary_edges:
-        return f"not closed: {_plural(defects.boundary_edges, 'boundary edge')} (edges used by only one triangle)", ()
+        return (
+            f"not closed: {_plural(defects.boundary_edges, 'boundary edge')} (edges used by only one triangle)",
+            (),
+        )
     if defects.overshared_edges:
-        return (f"not a closed surface: {_plural(defects.overshared_edges, 'edge')} used by more than two "
-                f"triangles, not as many each way (closed pieces that touch use an edge equally often "
-                f"in each direction)"), ()
+        return (
+            f"not a closed surface: {_plural(defects.overshared_edges, 'edge')} used by more than two "
+            f"triangles, not as many each way (closed pieces that touch use an edge equally often "
+            f"in each direction)"
+        ), ()
     if defects.misoriented_edges:
-        return (f"not consistently wound: {_plural(defects.misoriented_edges, 'edge')} run the same way in "
-                f"both of their triangles (some faces point inward)"), ()
+        return (
+            f"not consistently wound: {_plural(defects.misoriented_edges, 'edge')} run the same way in "
+            f"both of their triangles (some faces point inward)"
+        ), ()
     volume = enclosed_volume(vertices, faces)
     if not abs(volume) > VOLUME_RTOL * bounding_box_volume(vertices):
         return "encloses no volume (the surface is flat or folds onto itself)", ()
     if volume < 0:
-        return (f"inside out: the enclosed volume is negative ({volume:.6g}); every face is wound "
-                f"clockwise seen from outside"), ()
+        return (
+            f"inside out: the enclosed volume is negative ({volume:.6g}); every face is wound "
+            f"clockwise seen from outside"
+        ), ()
     return _pieces_check(vertices, faces, defects)
 
 
 WINDING_BUDGET = 1_000_000
 """Solid angles evaluated at most when checking how pieces of a mesh lie (a fraction of a second)."""
 
-OVERLAP_NOTE = ("pieces of the mesh overlap: the space inside two of them counts twice (as in MuJoCo, which "
-                "sums the pieces too); join them into one surface for the solid's own numbers")
+OVERLAP_NOTE = (
+    "pieces of the mesh overlap: the space inside two of them counts twice (as in MuJoCo, which "
+    "sums the pieces too); join them into one surface for the solid's own numbers"
+)
 
 
-def _pieces_check(vertices: np.ndarray, faces: np.ndarray, defects: MeshDefects) -> tuple[str | None, tuple[str, ...]]:
+def _pieces_check(
+    vertices: np.ndarray, faces: np.ndarray, defects: MeshDefects
+) -> tuple[str | None, tuple[str, ...]]:
     """For a mesh of several pieces (or pieces touching along edges): a piece wound inside out
     that is no cavity (its space would count negatively: refused), and pieces that overlap
     (space counted twice, as the sum of the pieces: a note). Tested by the winding number just
@@ -471,8 +501,10 @@ def _pieces_check(vertices: np.ndarray, faces: np.ndarray, defects: MeshDefects)
     near_integer = np.abs(winding - np.round(winding)) < 1e-3
     counts = np.round(winding[near_integer])
     if (counts < 0).any():
-        return ("inside out: a piece of the mesh is wound clockwise seen from outside and is no cavity "
-                "inside another piece (its space would count negatively); turn its faces around"), ()
+        return (
+            "inside out: a piece of the mesh is wound clockwise seen from outside and is no cavity "
+            "inside another piece (its space would count negatively); turn its faces around"
+        ), ()
     return None, ((OVERLAP_NOTE,) if (counts > 1).any() else ())
 
 
@@ -507,15 +539,19 @@ def _winding_numbers(corners: np.ndarray, points: np.ndarray) -> np.ndarray:
     out = np.empty(len(points))
     per_chunk = max(1, 1_000_000 // max(len(corners), 1))
     for start in range(0, len(points), per_chunk):
-        p = points[start:start + per_chunk]
+        p = points[start : start + per_chunk]
         a = corners[None, :, 0, :] - p[:, None, :]
         b = corners[None, :, 1, :] - p[:, None, :]
         c = corners[None, :, 2, :] - p[:, None, :]
         la, lb, lc = (np.linalg.norm(x, axis=2) for x in (a, b, c))
         numerator = np.einsum("pfi,pfi->pf", a, np.cross(b, c))
-        denominator = (la * lb * lc + np.einsum("pfi,pfi->pf", a, b) * lc + np.einsum("pfi,pfi->pf", a, c) * lb
-                       + np.einsum("pfi,pfi->pf", b, c) * la)
-        out[start:start + per_chunk] = 2.0 * np.arctan2(numerator, denominator).sum(axis=1) / (4.0 * np.pi)
+        denominator = (
+            la * lb * lc
+            + np.einsum("pfi,pfi->pf", a, b) * lc
+            + np.einsum("pfi,pfi->pf", a, c) * lb
+            + np.einsum("pfi,pfi->pf", b, c) * la
+        )
+        out[start : start + per_chunk] = 2.0 * np.arctan2(numerator, denominator).sum(axis=1) / (4.0 * np.pi)
     return out
 
 
@@ -531,8 +567,10 @@ def convex_hull_mesh(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     try:
         hull = ConvexHull(points - centre)
     except (QhullError, ValueError):
-        raise MeshError("the convex hull is flat: the vertices lie in one plane (or on one line) and span "
-                        "no volume; use inertia: shell for a flat surface") from None
+        raise MeshError(
+            "the convex hull is flat: the vertices lie in one plane (or on one line) and span "
+            "no volume; use inertia: shell for a flat surface"
+        ) from None
     corner_ids = hull.vertices
     renumber = np.full(len(points), -1, dtype=np.int64)
     renumber[corner_ids] = np.arange(len(corner_ids))
@@ -556,18 +594,22 @@ def repair_mesh(vertices: np.ndarray, faces: np.ndarray) -> RepairedMesh:
     mesh = trimesh.Trimesh(vertices=vertices, faces=faces, process=False, validate=False)
     trimesh.repair.fill_holes(mesh)
     repaired = np.asarray(mesh.faces, dtype=np.int64)
-    if len(repaired) < len(faces) or not np.array_equal(repaired[:len(faces)], faces):
+    if len(repaired) < len(faces) or not np.array_equal(repaired[: len(faces)], faces):
         raise MeshError("repair changed the existing faces")  # trimesh appends: never expected
-    added = repaired[len(faces):]
+    added = repaired[len(faces) :]
     return RepairedMesh(vertices, repaired, len(added), surface_area(vertices, added))
 
 
-NOT_CLOSED_HINT = ("; for such a mesh choose inertia: convex (the solid convex hull), inertia: shell (mass on "
-                   "the surface), or repair: true (closes holes of three or four edges)")
+NOT_CLOSED_HINT = (
+    "; for such a mesh choose inertia: convex (the solid convex hull), inertia: shell (mass on "
+    "the surface), or repair: true (closes holes of three or four edges)"
+)
 """Added to an ``exact``-mode refusal: the other ways to give the mesh mass properties."""
 
 
-WINDING_HINT = "; turn those faces around, or choose inertia: convex or inertia: shell (neither depends on the winding)"
+WINDING_HINT = (
+    "; turn those faces around, or choose inertia: convex or inertia: shell (neither depends on the winding)"
+)
 """Added to an ``exact``-mode refusal for winding: the modes that read such a mesh as it is."""
 
 
@@ -600,8 +642,14 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
     return MeshDistribution(mode, volume, centroid, inertia, vertices, faces, notes)
 
 
-def mesh_mass_properties(vertices: np.ndarray, faces: np.ndarray, mode: str = "exact", *,
-                         mass: float | None = None, density: float | None = None) -> MeshMassProperties:
+def mesh_mass_properties(
+    vertices: np.ndarray,
+    faces: np.ndarray,
+    mode: str = "exact",
+    *,
+    mass: float | None = None,
+    density: float | None = None,
+) -> MeshMassProperties:
     """Mass properties of a mesh (vertices in length unit L, faces wound outward) in ``mode``
     ``exact`` (the enclosed solid; the mesh must be closed), ``convex`` (the solid convex hull)
     or ``shell`` (mass spread evenly over the surface, as MuJoCo's ``shellinertia``). Give
@@ -615,6 +663,15 @@ def mesh_mass_properties(vertices: np.ndarray, faces: np.ndarray, mode: str = "e
         mass = float(density) * distribution.measure
     mass = float(mass)
     inertia = distribution.inertia_per_density * (mass / distribution.measure)
-    area = distribution.measure if mode == "shell" else surface_area(distribution.vertices, distribution.faces)
-    return MeshMassProperties(mode, mass, distribution.centroid, 0.5 * (inertia + inertia.T),
-                              None if mode == "shell" else distribution.measure, area, distribution.notes)
+    area = (
+        distribution.measure if mode == "shell" else surface_area(distribution.vertices, distribution.faces)
+    )
+    return MeshMassProperties(
+        mode,
+        mass,
+        distribution.centroid,
+        0.5 * (inertia + inertia.T),
+        None if mode == "shell" else distribution.measure,
+        area,
+        distribution.notes,
+    )

@@ -98,9 +98,14 @@ def euler_matrix(angles_rad, sequence: str) -> np.ndarray:
     ``R = R3 R2 R1``. Upper case (``"XYZ"``): about the moving (intrinsic) axes, ``R = R1 R2 R3``.
     This is the convention of scipy's ``Rotation.from_euler``.
     """
-    if len(sequence) != 3 or not (sequence.islower() or sequence.isupper()) \
-            or set(sequence.lower()) - set("xyz"):
-        raise ValueError(f"sequence must be three letters of x, y, z, all lower or all upper case (got {sequence!r})")
+    if (
+        len(sequence) != 3
+        or not (sequence.islower() or sequence.isupper())
+        or set(sequence.lower()) - set("xyz")
+    ):
+        raise ValueError(
+            f"sequence must be three letters of x, y, z, all lower or all upper case (got {sequence!r})"
+        )
     turns = [elementary_rotation(axis, angle) for axis, angle in zip(sequence.lower(), angles_rad)]
     if sequence.islower():
         return turns[2] @ turns[1] @ turns[0]

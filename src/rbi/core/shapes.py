@@ -57,6 +57,7 @@ def axisymmetric_inertia(axial, transverse, axis: np.ndarray) -> np.ndarray:
 # The moments below are plain arithmetic, so they take numbers or whole numpy arrays (many
 # parts at once, as rbi.spec.translate_batch uses them) and give the same bits either way.
 
+
 def cone_moments(mass, radius, height):
     """``(axial, transverse)`` moments of a solid right circular cone about its centre of mass:
     3/10 m r² and 3/80 m (4 r² + h²)."""
@@ -82,6 +83,7 @@ def sphere_moment(mass, radius):
 
 # --- solid right circular cone -------------------------------------------------------------
 
+
 def cone_volume(radius: float, height: float) -> float:
     """Volume of a solid right circular cone (L³)."""
     return math.pi * radius * radius * height / 3.0
@@ -101,6 +103,7 @@ def cone(mass: float, radius: float, apex: np.ndarray, base: np.ndarray) -> Mass
 
 
 # --- solid circular cylinder ---------------------------------------------------------------
+
 
 def cylinder_volume(radius: float, length: float) -> float:
     """Volume of a solid circular cylinder (L³)."""
@@ -122,12 +125,14 @@ def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> 
 
 # --- point mass ----------------------------------------------------------------------------
 
+
 def point(mass: float, position: np.ndarray) -> MassElement:
     """A point mass: no inertia about its own position."""
     return MassElement(mass, np.asarray(position, dtype=float), np.zeros((3, 3)))
 
 
 # --- shapes with an orientation --------------------------------------------------------------
+
 
 def _turned(principal_moments: np.ndarray, rotation: np.ndarray | None) -> np.ndarray:
     """``R diag(moments) Rᵀ``: a part's inertia built along its own axes, expressed in body
@@ -141,6 +146,7 @@ def _turned(principal_moments: np.ndarray, rotation: np.ndarray | None) -> np.nd
 
 
 # --- rectangular box -----------------------------------------------------------------------
+
 
 def box_volume(size: np.ndarray) -> float:
     """Volume of a rectangular box with edge lengths ``size = [a, b, c]`` (L³)."""
@@ -161,13 +167,16 @@ def box(mass: float, size: np.ndarray, center: np.ndarray, rotation: np.ndarray 
 
 # --- solid ellipsoid -----------------------------------------------------------------------
 
+
 def ellipsoid_volume(semi_axes: np.ndarray) -> float:
     """Volume 4/3 π a b c of a solid ellipsoid with semi-axes ``[a, b, c]`` (L³)."""
     a, b, c = (float(s) for s in semi_axes)
     return 4.0 / 3.0 * math.pi * a * b * c
 
 
-def ellipsoid(mass: float, semi_axes: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None) -> MassElement:
+def ellipsoid(
+    mass: float, semi_axes: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None
+) -> MassElement:
     """Solid ellipsoid with semi-axes ``[a, b, c]`` along its own x, y, z axes.
 
     About its centre, in its own axes: m (b² + c²)/5, m (a² + c²)/5, m (a² + b²)/5.
@@ -179,9 +188,10 @@ def ellipsoid(mass: float, semi_axes: np.ndarray, center: np.ndarray, rotation: 
 
 # --- spheres -------------------------------------------------------------------------------
 
+
 def sphere_volume(radius: float) -> float:
     """Volume of a solid sphere (L³)."""
-    return 4.0 / 3.0 * math.pi * radius ** 3
+    return 4.0 / 3.0 * math.pi * radius**3
 
 
 def sphere(mass: float, radius: float, center: np.ndarray) -> MassElement:
@@ -205,11 +215,12 @@ def spherical_shell(mass: float, outer_radius: float, inner_radius: float, cente
     (2/3 m R²).
     """
     R, r = outer_radius, inner_radius
-    ratio = (R ** 4 + R ** 3 * r + R * R * r * r + R * r ** 3 + r ** 4) / (R * R + R * r + r * r)
+    ratio = (R**4 + R**3 * r + R * R * r * r + R * r**3 + r**4) / (R * R + R * r + r * r)
     return MassElement(mass, np.asarray(center, dtype=float), 0.4 * mass * ratio * np.eye(3))
 
 
 # --- tube (hollow circular cylinder) ---------------------------------------------------------
+
 
 def tube_volume(outer_radius: float, inner_radius: float, length: float) -> float:
     """Volume π (R − r)(R + r) L of a tube (L³); a thin wall keeps its digits."""
@@ -217,7 +228,9 @@ def tube_volume(outer_radius: float, inner_radius: float, length: float) -> floa
     return math.pi * (R - r) * (R + r) * length
 
 
-def tube(mass: float, outer_radius: float, inner_radius: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+def tube(
+    mass: float, outer_radius: float, inner_radius: float, start: np.ndarray, end: np.ndarray
+) -> MassElement:
     """Hollow circular cylinder (outer radius R, bore r) between the centres of its end faces.
 
     About its centre: axial m (R² + r²)/2, transverse m (3 (R² + r²) + L²)/12. r = 0 gives
@@ -234,13 +247,16 @@ def tube(mass: float, outer_radius: float, inner_radius: float, start: np.ndarra
 
 # --- frustum (truncated cone) ----------------------------------------------------------------
 
+
 def frustum_volume(start_radius: float, end_radius: float, length: float) -> float:
     """Volume π h (a² + a b + b²)/3 of a truncated cone with end radii a, b (L³)."""
     a, b = start_radius, end_radius
     return math.pi * length * (a * a + a * b + b * b) / 3.0
 
 
-def frustum(mass: float, start_radius: float, end_radius: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+def frustum(
+    mass: float, start_radius: float, end_radius: float, start: np.ndarray, end: np.ndarray
+) -> MassElement:
     """Solid truncated cone: a disc of radius a centred on ``start``, one of radius b on
     ``end`` (either radius may be 0, giving a cone; a = b gives a cylinder).
 
@@ -258,15 +274,16 @@ def frustum(mass: float, start_radius: float, end_radius: float, start: np.ndarr
     start = np.asarray(start, dtype=float)
     u, h = axis_between(start, end)
     S = a * a + a * b + b * b
-    quartic = a ** 4 + a ** 3 * b + a * a * b * b + a * b ** 3 + b ** 4
+    quartic = a**4 + a**3 * b + a * a * b * b + a * b**3 + b**4
     along = h * (a * a + 2.0 * a * b + 3.0 * b * b) / (4.0 * S)
     axial = 0.3 * mass * c * c * quartic / S
-    spread = a ** 4 + 4.0 * a ** 3 * b + 10.0 * a * a * b * b + 4.0 * a * b ** 3 + b ** 4
+    spread = a**4 + 4.0 * a**3 * b + 10.0 * a * a * b * b + 4.0 * a * b**3 + b**4
     transverse = 0.15 * mass * c * c * quartic / S + 3.0 * mass * h * h * spread / (80.0 * S * S)
     return MassElement(mass, start + along * u, axisymmetric_inertia(axial, transverse, u))
 
 
 # --- thin rod --------------------------------------------------------------------------------
+
 
 def rod(mass: float, start: np.ndarray, end: np.ndarray) -> MassElement:
     """Thin straight rod (a line mass) from ``start`` to ``end``: m L²/12 about any line
@@ -279,12 +296,15 @@ def rod(mass: float, start: np.ndarray, end: np.ndarray) -> MassElement:
 
 # --- torus -----------------------------------------------------------------------------------
 
+
 def torus_volume(major_radius: float, minor_radius: float) -> float:
     """Volume 2 π² R a² of a solid torus (ring radius R, tube radius a) (L³)."""
     return 2.0 * math.pi * math.pi * major_radius * minor_radius * minor_radius
 
 
-def torus(mass: float, major_radius: float, minor_radius: float, center: np.ndarray, axis: np.ndarray) -> MassElement:
+def torus(
+    mass: float, major_radius: float, minor_radius: float, center: np.ndarray, axis: np.ndarray
+) -> MassElement:
     """Solid torus: a disc of radius a (``minor_radius``) swept around ``axis`` at distance R
     (``major_radius``) from ``center``. Needs a ≤ R.
 
@@ -301,9 +321,10 @@ def torus(mass: float, major_radius: float, minor_radius: float, center: np.ndar
 
 # --- hemisphere ------------------------------------------------------------------------------
 
+
 def hemisphere_volume(radius: float) -> float:
     """Volume 2/3 π r³ of a solid hemisphere (L³)."""
-    return 2.0 / 3.0 * math.pi * radius ** 3
+    return 2.0 / 3.0 * math.pi * radius**3
 
 
 HEMISPHERE_COM_FRACTION = 3.0 / 8.0
@@ -324,6 +345,7 @@ def hemisphere(mass: float, radius: float, center: np.ndarray, axis: np.ndarray)
 
 
 # --- capsule ---------------------------------------------------------------------------------
+
 
 def capsule_volume(radius: float, length: float) -> float:
     """Volume π r² (L + 4/3 r) of a capsule: a cylinder of length L and two hemispherical caps
@@ -347,6 +369,7 @@ def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> M
     cylinder_mass = mass * length / (length + 4.0 / 3.0 * r)
     caps_mass = mass * (4.0 / 3.0 * r) / (length + 4.0 / 3.0 * r)
     axial = 0.5 * cylinder_mass * r * r + 0.4 * caps_mass * r * r
-    transverse = (cylinder_mass * (3.0 * r * r + length * length) / 12.0
-                  + caps_mass * (0.4 * r * r + 0.25 * length * length + 0.375 * length * r))
+    transverse = cylinder_mass * (3.0 * r * r + length * length) / 12.0 + caps_mass * (
+        0.4 * r * r + 0.25 * length * length + 0.375 * length * r
+    )
     return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))

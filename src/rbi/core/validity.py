@@ -32,7 +32,9 @@ class InertiaProblem(NamedTuple):
     message: str
 
 
-def inertia_problem(inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: float | None = None) -> InertiaProblem | None:
+def inertia_problem(
+    inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: float | None = None
+) -> InertiaProblem | None:
     """The first reason ``inertia`` (M·L², any axes, about any point) is not physically
     possible, or None when it is.
 
@@ -43,9 +45,12 @@ def inertia_problem(inertia: np.ndarray, rtol: float = INERTIA_RTOL, scale: floa
     if I.shape != (3, 3) or not np.all(np.isfinite(I)):
         return InertiaProblem("not finite", "inertia must be a finite 3×3 matrix")
     if not np.isfinite(np.sum(np.abs(I))):
-        return InertiaProblem("not finite", f"numbers too large: the entries (largest {float(np.max(np.abs(I))):.3g}) "
-                                            f"add up beyond the largest double, {np.finfo(float).max:.3g}; "
-                                            "is the unit right?")
+        return InertiaProblem(
+            "not finite",
+            f"numbers too large: the entries (largest {float(np.max(np.abs(I))):.3g}) "
+            f"add up beyond the largest double, {np.finfo(float).max:.3g}; "
+            "is the unit right?",
+        )
     size = 0.5 * abs(float(np.trace(I))) if scale is None else float(scale)
     tol = rtol * size
     asymmetry = float(np.max(np.abs(I - I.T)))

@@ -27,8 +27,13 @@ class OutputLock:
 
         self.path = safe.beside(out, self.SUFFIX)
         label = f"{what}: lock file {safe.shown(self.path.name)}"
-        flags = os.O_RDWR | os.O_CREAT | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0) \
+        flags = (
+            os.O_RDWR
+            | os.O_CREAT
+            | getattr(os, "O_NOFOLLOW", 0)
+            | getattr(os, "O_NONBLOCK", 0)
             | getattr(os, "O_CLOEXEC", 0)
+        )
         safe.existing_regular(self.path, label)
         try:
             self._fd = os.open(self.path, flags, 0o600)
@@ -40,8 +45,10 @@ class OutputLock:
             try:
                 fcntl.flock(self._fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
             except BlockingIOError:
-                raise InputError(f"{what}: another rbi run is writing this file now; wait for it to end "
-                                 "(two runs on one output would write its rows twice)") from None
+                raise InputError(
+                    f"{what}: another rbi run is writing this file now; wait for it to end "
+                    "(two runs on one output would write its rows twice)"
+                ) from None
             # the name must still be this file: a run that just finished removes it, and a third
             # run could have created a new one that it holds
             try:
@@ -61,7 +68,7 @@ class OutputLock:
         os.close(self._fd)
         self._fd = -1
 
-    def __enter__(self) -> "OutputLock":
+    def __enter__(self) -> OutputLock:
         return self
 
     def __exit__(self, *exc) -> None:

@@ -23,11 +23,15 @@ import os
 import stat
 import sys
 import tempfile
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass
-from typing import IO, Callable, Iterator, Sequence
+from typing import IO
 
 from rbi.errors import InputError
-from rbi.files.safe import NAME_MAX, kind as _kind, reason as _reason, replacing, shown as _shown
+from rbi.files.safe import NAME_MAX, replacing
+from rbi.files.safe import kind as _kind
+from rbi.files.safe import reason as _reason
+from rbi.files.safe import shown as _shown
 
 STDOUT = "-"
 STDOUT_ALIASES = ("/dev/stdout", "/dev/fd/1", "/proc/self/fd/1")
@@ -52,8 +56,14 @@ class OutputTarget:
         return self.given == STDOUT
 
 
-def output_target(path: str, option: str, formats: Sequence[str], *, inputs: Sequence[str] = (),
-                  stdout_format: str | None = None) -> OutputTarget:
+def output_target(
+    path: str,
+    option: str,
+    formats: Sequence[str],
+    *,
+    inputs: Sequence[str] = (),
+    stdout_format: str | None = None,
+) -> OutputTarget:
     """Check one output path before any work is done; :class:`InputError` if rbi must not
     (or cannot) write there.
 
@@ -87,8 +97,10 @@ def output_target(path: str, option: str, formats: Sequence[str], *, inputs: Seq
     _probe(folder, option, shown)
     for source in inputs:
         if _same_file(real, source):
-            raise InputError(f"{option}: {shown}: is an input of this run ({_shown(source)}); "
-                             "rbi never overwrites its input")
+            raise InputError(
+                f"{option}: {shown}: is an input of this run ({_shown(source)}); "
+                "rbi never overwrites its input"
+            )
     return OutputTarget(path, real, option, extension)
 
 
@@ -101,8 +113,10 @@ def check_distinct(targets: Sequence[OutputTarget | None]) -> None:
         key = os.path.normcase(os.path.abspath(target.path))
         if key in seen:
             first = seen[key]
-            raise InputError(f"{target.option}: {_shown(target.given)}: is also the {first.option} output of "
-                             "this run; give each output its own file")
+            raise InputError(
+                f"{target.option}: {_shown(target.given)}: is also the {first.option} output of "
+                "this run; give each output its own file"
+            )
         seen[key] = target
 
 
@@ -133,8 +147,9 @@ def open_output(target: OutputTarget, binary: bool = False) -> Iterator[IO]:
             yield handle
 
 
-def write_output(target: OutputTarget, content: str | bytes | None = None,
-                 writer: Callable[[str], None] | None = None) -> None:
+def write_output(
+    target: OutputTarget, content: str | bytes | None = None, writer: Callable[[str], None] | None = None
+) -> None:
     """Write ``content`` (text or bytes), or let ``writer(temp_path)`` write the file, to the
     target atomically."""
     if writer is not None:
@@ -162,15 +177,19 @@ def _resolved(path: str, option: str) -> str:
         try:
             info = os.stat(real)
         except OSError:
-            raise InputError(f"{option}: {shown}: is a symbolic link to nothing; rbi writes only to "
-                             "regular files") from None
+            raise InputError(
+                f"{option}: {shown}: is a symbolic link to nothing; rbi writes only to regular files"
+            ) from None
         if not stat.S_ISREG(info.st_mode):
-            raise InputError(f"{option}: {shown}: is a symbolic link to a {_kind(info.st_mode)}, not a "
-                             "regular file; rbi will not replace it")
+            raise InputError(
+                f"{option}: {shown}: is a symbolic link to a {_kind(info.st_mode)}, not a "
+                "regular file; rbi will not replace it"
+            )
         return real
     if not stat.S_ISREG(info.st_mode):
-        raise InputError(f"{option}: {shown}: is a {_kind(info.st_mode)}, not a regular file; rbi will "
-                         "not replace it")
+        raise InputError(
+            f"{option}: {shown}: is a {_kind(info.st_mode)}, not a regular file; rbi will not replace it"
+        )
     return os.path.abspath(path)
 
 

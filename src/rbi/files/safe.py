@@ -21,8 +21,8 @@ import errno
 import os
 import stat
 import tempfile
+from collections.abc import Iterator
 from pathlib import Path
-from typing import Iterator
 
 from rbi.errors import InputError
 
@@ -38,8 +38,11 @@ _NOCTTY = getattr(os, "O_NOCTTY", 0)
 def shown(path: str | os.PathLike) -> str:
     """A path as it may appear in a one-line message: control characters escaped."""
     path = os.fspath(path)
-    return path.encode("unicode_escape", errors="backslashreplace").decode("ascii") \
-        if any(ord(c) < 32 or 127 <= ord(c) < 160 for c in path) else path
+    return (
+        path.encode("unicode_escape", errors="backslashreplace").decode("ascii")
+        if any(ord(c) < 32 or 127 <= ord(c) < 160 for c in path)
+        else path
+    )
 
 
 def reason(exc: OSError) -> str:
@@ -91,7 +94,9 @@ def open_regular(path: str | os.PathLike, what: str, flags: int = os.O_RDONLY) -
         if exc.errno in (errno.ELOOP, errno.EMLINK):
             raise InputError(f"{what}: is a symbolic link; rbi never follows one here") from None
         if exc.errno == errno.ENXIO:  # a FIFO opened for writing with no reader
-            raise InputError(f"{what}: is a {kind(stat.S_IFIFO)}, not a regular file; rbi will not use it") from None
+            raise InputError(
+                f"{what}: is a {kind(stat.S_IFIFO)}, not a regular file; rbi will not use it"
+            ) from None
         raise InputError(f"{what}: cannot open: {reason(exc)}") from None
     try:
         check_regular(os.fstat(fd), path, what)
@@ -131,7 +136,9 @@ def create_exclusive(path: str | os.PathLike, what: str, mode: int = 0o666) -> i
     try:
         return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL | _NOFOLLOW | _CLOEXEC | _NOCTTY, mode)
     except FileExistsError:
-        raise InputError(f"{what}: something appeared at this path while rbi was creating it; not written") from None
+        raise InputError(
+            f"{what}: something appeared at this path while rbi was creating it; not written"
+        ) from None
     except OSError as exc:
         raise InputError(f"{what}: cannot write: {reason(exc)}") from None
 
@@ -145,7 +152,9 @@ def write_all(fd: int, data: bytes) -> None:
 
 
 @contextlib.contextmanager
-def replacing(path: str | os.PathLike, what: str, suffix: str = ".tmp", mode: int | None = None) -> Iterator[tuple[int, str]]:
+def replacing(
+    path: str | os.PathLike, what: str, suffix: str = ".tmp", mode: int | None = None
+) -> Iterator[tuple[int, str]]:
     """A new temporary file beside ``path`` (``mkstemp``: a private name, created exclusively),
     yielded as ``(descriptor, name)`` (the descriptor stays this function's to close; a writer
     may also open the file by its name); when the block ends without an exception it is flushed,
@@ -205,7 +214,9 @@ def make_private_folder(path: str | os.PathLike, what: str) -> None:
     try:
         os.mkdir(path, 0o700)
     except FileExistsError:
-        raise InputError(f"{what}: something appeared at this path while rbi was creating it; not used") from None
+        raise InputError(
+            f"{what}: something appeared at this path while rbi was creating it; not used"
+        ) from None
     except OSError as exc:
         raise InputError(f"{what}: cannot write: {reason(exc)}") from None
 
@@ -241,7 +252,9 @@ def beside(out: str | os.PathLike, suffix: str) -> Path:
 def check_regular(info: os.stat_result, path, what: str, *, own: bool = True) -> None:
     """InputError unless ``info`` (of ``path``) is a regular file (of this user, when ``own``)."""
     if not stat.S_ISREG(info.st_mode):
-        raise InputError(f"{what}: is a {kind(info.st_mode)}, not a regular file; rbi will not read or replace it")
+        raise InputError(
+            f"{what}: is a {kind(info.st_mode)}, not a regular file; rbi will not read or replace it"
+        )
     if own and hasattr(os, "geteuid") and info.st_uid != os.geteuid():
         raise InputError(f"{what}: belongs to another user (rbi created its own); not used")
 

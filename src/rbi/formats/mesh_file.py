@@ -25,14 +25,14 @@ import numpy as np
 
 from rbi.core.mesh import MeshDistribution, arrays_problem, mesh_distribution, repair_mesh, weld_vertices
 
-MAX_MESH_BYTES = 256 * 2 ** 20
+MAX_MESH_BYTES = 256 * 2**20
 """Largest mesh file rbi reads (256 MiB)."""
 
 MAX_MESH_TRIANGLES = 2_000_000
 """Most triangles rbi reads from one mesh (a 95 MiB binary STL; an OBJ polygon counts as the
 triangles it splits into). Far above what mass properties need: decimate a finer mesh first."""
 
-MAX_PLY_BYTES = 32 * 2 ** 20
+MAX_PLY_BYTES = 32 * 2**20
 """Largest PLY file rbi reads (32 MiB: about 1.7 million triangles binary, 0.6 million ASCII).
 PLY is parsed by trimesh, which needs some 25 bytes of memory per byte of file (a binary PLY
 of 2 million triangles, 38 MB, peaks at 1 GB): convert a larger mesh to binary STL."""
@@ -92,7 +92,9 @@ def read_mesh_solid(path: Path, mode: str = "exact", repair: bool = False) -> Me
         except ValueError as exc:
             prefix = "after repair, " if added_faces else ""
             raise ValueError(f"mesh {prefix}{exc}") from None
-        return MeshSolid(mode, distribution, distribution.vertices, distribution.faces, added_faces, added_area)
+        return MeshSolid(
+            mode, distribution, distribution.vertices, distribution.faces, added_faces, added_area
+        )
 
     return _cached(key + (mode, bool(repair)), make)
 
@@ -119,8 +121,10 @@ def read_mesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
 
 def _file_key(path: Path) -> tuple:
     if path.suffix.lower() not in MESH_FILE_TYPES:
-        raise ValueError(f"unknown mesh format {path.suffix or '(no extension)'!r}: "
-                         f"use one of {', '.join(MESH_FILE_TYPES)}")
+        raise ValueError(
+            f"unknown mesh format {path.suffix or '(no extension)'!r}: "
+            f"use one of {', '.join(MESH_FILE_TYPES)}"
+        )
     try:
         status = path.stat()
     except OSError as exc:
@@ -146,12 +150,15 @@ def _read_bytes(path: Path) -> bytes:
 
 def _too_many(count: int | None) -> ValueError:
     have = f"more than {MAX_MESH_TRIANGLES}" if count is None else str(count)
-    return ValueError(f"mesh has {have} triangles; rbi reads at most {MAX_MESH_TRIANGLES} "
-                      f"(decimate it, e.g. with MeshLab's quadric edge collapse: mass properties need "
-                      f"far fewer)")
+    return ValueError(
+        f"mesh has {have} triangles; rbi reads at most {MAX_MESH_TRIANGLES} "
+        f"(decimate it, e.g. with MeshLab's quadric edge collapse: mass properties need "
+        f"far fewer)"
+    )
 
 
 # --- STL --------------------------------------------------------------------------------------
+
 
 def _binary_stl_cap(path: Path) -> None:
     """Refuse a binary STL beyond the triangle cap from its header alone, before reading it."""
@@ -183,8 +190,10 @@ def _parse_stl(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     if data.lstrip()[:5].lower() == b"solid":
         return _parse_ascii_stl(data)
     if count >= 0:
-        raise ValueError(f"cannot be read as STL (not ASCII, and as binary its header promises {count} "
-                         f"triangles: {84 + 50 * count} bytes, but the file has {len(data)})")
+        raise ValueError(
+            f"cannot be read as STL (not ASCII, and as binary its header promises {count} "
+            f"triangles: {84 + 50 * count} bytes, but the file has {len(data)})"
+        )
     raise ValueError("cannot be read as STL (damaged, or not a mesh file)")
 
 
@@ -250,22 +259,29 @@ def _parse_obj(data: bytes) -> tuple[np.ndarray, np.ndarray]:
             if line[:2] == b"v " or line[:2] == b"v\t":
                 fields = line.split()
                 if len(fields) < 4:
-                    raise ValueError(f"cannot be read as OBJ (line {line_number}: a vertex needs three coordinates)")
+                    raise ValueError(
+                        f"cannot be read as OBJ (line {line_number}: a vertex needs three coordinates)"
+                    )
                 try:
                     coordinates.extend((float(fields[1]), float(fields[2]), float(fields[3])))
                 except ValueError:
-                    raise ValueError(f"cannot be read as OBJ (line {line_number}: a vertex coordinate is "
-                                     f"not a number)") from None
+                    raise ValueError(
+                        f"cannot be read as OBJ (line {line_number}: a vertex coordinate is not a number)"
+                    ) from None
             elif line[:2] == b"f " or line[:2] == b"f\t":
                 _add_face(line.split()[1:], len(coordinates) // 3, line_number, corners, face_lines)
                 if len(face_lines) > MAX_MESH_TRIANGLES:
                     raise _too_many(None)
     vertices = np.frombuffer(coordinates, dtype=float).reshape(-1, 3) if coordinates else np.zeros((0, 3))
-    faces = np.frombuffer(corners, dtype=np.int64).reshape(-1, 3) if corners else np.zeros((0, 3), dtype=np.int64)
+    faces = (
+        np.frombuffer(corners, dtype=np.int64).reshape(-1, 3) if corners else np.zeros((0, 3), dtype=np.int64)
+    )
     if len(faces) and faces.max() >= len(vertices):
         face = int(np.flatnonzero((faces >= len(vertices)).any(axis=1))[0])
-        raise ValueError(f"mesh face on line {face_lines[face]} names vertex {int(faces[face].max()) + 1}, but the "
-                         f"file has {len(vertices)} vertices (numbered from 1)")
+        raise ValueError(
+            f"mesh face on line {face_lines[face]} names vertex {int(faces[face].max()) + 1}, but the "
+            f"file has {len(vertices)} vertices (numbered from 1)"
+        )
     return vertices.copy(), faces.copy()
 
 
@@ -277,18 +293,23 @@ def _add_face(fields: list, n_vertices: int, line_number: int, corners: array, f
         try:
             number = int(field.split(b"/", 1)[0])
         except ValueError:
-            raise ValueError(f"cannot be read as OBJ (line {line_number}: a face's vertex number is not a "
-                             f"whole number)") from None
+            raise ValueError(
+                f"cannot be read as OBJ (line {line_number}: a face's vertex number is not a whole number)"
+            ) from None
         if number > 0:
             indices.append(number - 1)
         elif number < 0:
             if -number > n_vertices:
-                raise ValueError(f"mesh face on line {line_number} counts back {-number} vertices, but only "
-                                 f"{n_vertices} were read before it (-1 is the last vertex read)")
+                raise ValueError(
+                    f"mesh face on line {line_number} counts back {-number} vertices, but only "
+                    f"{n_vertices} were read before it (-1 is the last vertex read)"
+                )
             indices.append(n_vertices + number)
         else:
-            raise ValueError(f"mesh face on line {line_number} names vertex 0: OBJ numbers vertices from 1 "
-                             f"(negative numbers count back from the last vertex read)")
+            raise ValueError(
+                f"mesh face on line {line_number} names vertex 0: OBJ numbers vertices from 1 "
+                f"(negative numbers count back from the last vertex read)"
+            )
     if not indices:
         raise ValueError(f"cannot be read as OBJ (line {line_number}: a face names no vertex)")
     first = indices[0]
@@ -309,18 +330,24 @@ def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     import io
 
     if len(data) > MAX_PLY_BYTES:
-        raise ValueError(f"PLY file too large ({len(data)} bytes; rbi reads PLY up to {MAX_PLY_BYTES} bytes, "
-                         f"its parser needing some 25 bytes of memory per byte): convert it to binary STL")
+        raise ValueError(
+            f"PLY file too large ({len(data)} bytes; rbi reads PLY up to {MAX_PLY_BYTES} bytes, "
+            f"its parser needing some 25 bytes of memory per byte): convert it to binary STL"
+        )
     end = data.find(b"end_header")
     if not data.startswith(b"ply") or end < 0:
         raise ValueError("cannot be read as PLY (no `ply` ... `end_header` header)")
-    counts = {name.decode("ascii", "replace"): int(number) for name, number in _PLY_ELEMENT.findall(data[:end])}
+    counts = {
+        name.decode("ascii", "replace"): int(number) for name, number in _PLY_ELEMENT.findall(data[:end])
+    }
     body = len(data) - end
     if counts.get("face", 0) > MAX_MESH_TRIANGLES:
         raise _too_many(counts["face"])
     if counts.get("vertex", 0) * 3 + counts.get("face", 0) * 4 > body:
-        raise ValueError(f"cannot be read as PLY (the header promises {counts.get('vertex', 0)} vertices and "
-                         f"{counts.get('face', 0)} faces, more than the file's {body} bytes after it hold)")
+        raise ValueError(
+            f"cannot be read as PLY (the header promises {counts.get('vertex', 0)} vertices and "
+            f"{counts.get('face', 0)} faces, more than the file's {body} bytes after it hold)"
+        )
     import trimesh
 
     try:

@@ -30,9 +30,25 @@ from pathlib import Path
 import numpy as np
 
 from rbi.errors import InputError
-from rbi.formats.robot_model import (Geom, Inertial, Link, Motion, Pose, RobotModel, Where, angles,
-                                     check_inertia_range, check_unique_names, from_six, number, numbers,
-                                     positive, quaternion_matrix, short, unit)
+from rbi.formats.robot_model import (
+    Geom,
+    Inertial,
+    Link,
+    Motion,
+    Pose,
+    RobotModel,
+    Where,
+    angles,
+    check_inertia_range,
+    check_unique_names,
+    from_six,
+    number,
+    numbers,
+    positive,
+    quaternion_matrix,
+    short,
+    unit,
+)
 
 MAX_INCLUDES = 100
 """Most ``<include>`` elements followed in one model (a loop of includes is refused before)."""
@@ -65,8 +81,10 @@ class Compiler:
         seq = element.get("eulerseq")
         if seq is not None:
             if len(seq) != 3 or any(c not in "xyzXYZ" for c in seq):
-                raise where.error(f"compiler: eulerseq: {short(seq)!r}: three of x, y, z (lower case: rotating "
-                                  "axes; upper case: fixed axes)")
+                raise where.error(
+                    f"compiler: eulerseq: {short(seq)!r}: three of x, y, z (lower case: rotating "
+                    "axes; upper case: fixed axes)"
+                )
             self.eulerseq = seq
         self.meshdir = element.get("meshdir", self.meshdir)
         self.assetdir = element.get("assetdir", self.assetdir)
@@ -78,12 +96,18 @@ class Compiler:
         if element.get("inertiagrouprange") is not None:
             low, high = numbers(where, element.get("inertiagrouprange"), "compiler: inertiagrouprange", 2)
             self.group_range = (low, high)
-        self.settotalmass = number(where, element.get("settotalmass"), "compiler: settotalmass", self.settotalmass)
+        self.settotalmass = number(
+            where, element.get("settotalmass"), "compiler: settotalmass", self.settotalmass
+        )
         self.boundmass = number(where, element.get("boundmass"), "compiler: boundmass", self.boundmass)
-        self.boundinertia = number(where, element.get("boundinertia"), "compiler: boundinertia", self.boundinertia)
+        self.boundinertia = number(
+            where, element.get("boundinertia"), "compiler: boundinertia", self.boundinertia
+        )
         if element.get("coordinate") == "global":
-            raise where.error("compiler: coordinate=\"global\": global coordinates are no longer read by MuJoCo; "
-                              "load and save the model with MuJoCo 2 to convert it")
+            raise where.error(
+                'compiler: coordinate="global": global coordinates are no longer read by MuJoCo; '
+                "load and save the model with MuJoCo 2 to convert it"
+            )
 
     def angle(self, value: float) -> float:
         return math.radians(value) if self.degrees else value
@@ -101,8 +125,10 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     for tag in UNSUPPORTED:
         found = next(root.iter(tag), None)
         if found is not None:
-            raise InputError(f"{path}: <{tag}> (line {found.line}): not read by rbi; compile the model with "
-                             "MuJoCo and save it (mj_saveLastXML) to audit it")
+            raise InputError(
+                f"{path}: <{tag}> (line {found.line}): not read by rbi; compile the model with "
+                "MuJoCo and save it (mj_saveLastXML) to audit it"
+            )
     defaults = _defaults(root)
     meshes = _mesh_assets(path, root, defaults, compiler)
     reader = _Bodies(model, compiler, defaults, meshes)
@@ -114,6 +140,7 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
 
 
 # --- includes ---------------------------------------------------------------------------------
+
 
 def _expanded(document):
     """The root with every ``<include>`` replaced by the children of the included file's root."""
@@ -155,6 +182,7 @@ def _expanded(document):
 
 # --- defaults ---------------------------------------------------------------------------------
 
+
 def _defaults(root) -> dict[str, dict[str, dict[str, str]]]:
     """class name → element tag → attributes, each class holding its parents' values."""
     classes: dict[str, dict[str, dict[str, str]]] = {"main": {}}
@@ -189,6 +217,7 @@ def _where_line(element) -> str:
 
 # --- assets -----------------------------------------------------------------------------------
 
+
 def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dict]:
     from rbi.formats.paths import spec_relative_file
 
@@ -208,14 +237,18 @@ def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dic
             mode = attrs.get("inertia", "legacy")
             if mode not in ("legacy", "exact", "convex", "shell"):
                 raise where.error(f"inertia: {short(mode)!r}: must be convex, exact, legacy or shell")
-            meshes[name] = {"file": spec_relative_file(path, relative, f"{path}: mesh {short(name)!r}: "
-                                                        f"{short(relative, 80)}"),
-                            "scale": np.array(scale, dtype=float),
-                            "mode": "exact" if mode == "legacy" else mode}
+            meshes[name] = {
+                "file": spec_relative_file(
+                    path, relative, f"{path}: mesh {short(name)!r}: {short(relative, 80)}"
+                ),
+                "scale": np.array(scale, dtype=float),
+                "mode": "exact" if mode == "legacy" else mode,
+            }
     return meshes
 
 
 # --- bodies -------------------------------------------------------------------------------------
+
 
 class _Bodies:
     def __init__(self, model: RobotModel, compiler: Compiler, defaults, meshes):
@@ -309,7 +342,9 @@ class _Bodies:
         ref = number(where, attrs.get("ref"), "joint: ref", 0.0)
         if motion == "revolute":
             ref = self.compiler.angle(ref)
-        vector = unit(where, axis, "joint: axis") if motion in ("revolute", "prismatic") else np.array([0, 0, 1.0])
+        vector = (
+            unit(where, axis, "joint: axis") if motion in ("revolute", "prismatic") else np.array([0, 0, 1.0])
+        )
         link.motions.append(Motion(attrs.get("name"), motion, vector, pos, ref))
 
     def inertial(self, where: Where, element) -> Inertial:
@@ -321,7 +356,9 @@ class _Bodies:
             raise where.error("inertial: give exactly one of diaginertia and fullinertia")
         turned = any(key in attrs for key in ORIENTATIONS)
         if turned and full is not None:
-            raise where.error("inertial: an orientation is not allowed with fullinertia (which is in the body frame)")
+            raise where.error(
+                "inertial: an orientation is not allowed with fullinertia (which is in the body frame)"
+            )
         rotation = self.orientation(where, attrs) if turned else None
         quaternion = None
         if "quat" in attrs:
@@ -339,8 +376,14 @@ class _Bodies:
         else:
             inertia = np.diag(numbers(where, diagonal, "inertial: diaginertia", 3))
         check_inertia_range(where, inertia)
-        return Inertial(mass, np.array(pos, dtype=float), inertia, rotation=rotation, quaternion=quaternion,
-                        element=element)
+        return Inertial(
+            mass,
+            np.array(pos, dtype=float),
+            inertia,
+            rotation=rotation,
+            quaternion=quaternion,
+            element=element,
+        )
 
     def geom(self, element, frame: Pose, link: Link, active_class: str) -> None:
         attrs = _attributes(element, self.defaults, active_class)
@@ -404,7 +447,9 @@ class _Bodies:
 
 def _size(where: Where, size: list[float], needed: int, kind: str, fromto: bool = False) -> list[float]:
     if len(size) < needed:
-        raise where.error(f"size: a {kind}{' with fromto' if fromto else ''} needs {needed} number(s), got {len(size)}")
+        raise where.error(
+            f"size: a {kind}{' with fromto' if fromto else ''} needs {needed} number(s), got {len(size)}"
+        )
     return list(size[:needed])
 
 
@@ -426,12 +471,15 @@ def z_to(direction) -> np.ndarray:
 
 # --- compiled mass properties ---------------------------------------------------------------
 
+
 def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
     from rbi.formats.robot_geometry import combine, distribution
 
     for link in model.links:
         explicit = link.inertial
-        use_geoms = compiler.inertiafromgeom == "true" or (compiler.inertiafromgeom == "auto" and explicit is None)
+        use_geoms = compiler.inertiafromgeom == "true" or (
+            compiler.inertiafromgeom == "auto" and explicit is None
+        )
         if use_geoms:
             pieces = []
             for geom, counts in geoms.get(link.index, []):
@@ -447,8 +495,10 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
                 props = combine(pieces)
                 link.inertial = Inertial(props.mass, props.com, props.inertia, element=None, source="geoms")
                 if explicit is not None:
-                    model.notes.append(f"{model.path}: {link.label}: <inertial> ignored: inertiafromgeom=\"true\" "
-                                       "takes the mass properties from the geoms, as MuJoCo does")
+                    model.notes.append(
+                        f'{model.path}: {link.label}: <inertial> ignored: inertiafromgeom="true" '
+                        "takes the mass properties from the geoms, as MuJoCo does"
+                    )
             elif explicit is not None and compiler.inertiafromgeom == "true":
                 link.inertial = None
         if link.inertial is not None and (compiler.boundmass > 0 or compiler.boundinertia > 0):
@@ -460,10 +510,16 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
             for link in model.links:
                 if link.inertial is not None:
                     inertial = link.inertial
-                    link.inertial = Inertial(inertial.mass * scale, inertial.com, inertial.inertia * scale,
-                                             rotation=inertial.rotation, rpy=inertial.rpy,
-                                             quaternion=inertial.quaternion, element=inertial.element,
-                                             source=inertial.source)
+                    link.inertial = Inertial(
+                        inertial.mass * scale,
+                        inertial.com,
+                        inertial.inertia * scale,
+                        rotation=inertial.rotation,
+                        rpy=inertial.rpy,
+                        quaternion=inertial.quaternion,
+                        element=inertial.element,
+                        source=inertial.source,
+                    )
 
 
 def _bound(link: Link, compiler: Compiler) -> None:
@@ -475,7 +531,17 @@ def _bound(link: Link, compiler: Compiler) -> None:
         moments, axes = np.linalg.eigh(I)
         moments = np.maximum(moments, compiler.boundinertia)
         inertia = (axes * moments) @ axes.T
-        link.inertial = Inertial(mass, inertial.com, inertia, element=inertial.element, source=inertial.source)
+        link.inertial = Inertial(
+            mass, inertial.com, inertia, element=inertial.element, source=inertial.source
+        )
         return
-    link.inertial = Inertial(mass, inertial.com, inertia, rotation=inertial.rotation, rpy=inertial.rpy,
-                             quaternion=inertial.quaternion, element=inertial.element, source=inertial.source)
+    link.inertial = Inertial(
+        mass,
+        inertial.com,
+        inertia,
+        rotation=inertial.rotation,
+        rpy=inertial.rpy,
+        quaternion=inertial.quaternion,
+        element=inertial.element,
+        source=inertial.source,
+    )

@@ -18,7 +18,9 @@ from rbi.errors import InputError
 
 ALLOW_OUTSIDE_FLAG = "--allow-outside-paths"
 
-_outside_allowed: contextvars.ContextVar[bool] = contextvars.ContextVar("rbi_outside_paths_allowed", default=False)
+_outside_allowed: contextvars.ContextVar[bool] = contextvars.ContextVar(
+    "rbi_outside_paths_allowed", default=False
+)
 
 
 @contextlib.contextmanager
@@ -50,8 +52,10 @@ def spec_relative_file(spec_path: str | Path, file: str, label: str) -> Path:
         except (OSError, RuntimeError):  # a symlink loop, or a path the OS cannot resolve
             inside = False
         if named.is_absolute() or not inside:
-            raise InputError(f"{label}: the path leaves the spec's folder (absolute, '..' or a symlink out of it); "
-                             f"rbi reads only files beside the spec unless given {ALLOW_OUTSIDE_FLAG}")
+            raise InputError(
+                f"{label}: the path leaves the spec's folder (absolute, '..' or a symlink out of it); "
+                f"rbi reads only files beside the spec unless given {ALLOW_OUTSIDE_FLAG}"
+            )
     try:
         is_file = candidate.is_file()
         exists = is_file or candidate.exists()

@@ -52,8 +52,10 @@ def read_point_cloud(path: str | Path, label: str) -> tuple[np.ndarray, np.ndarr
             table = _read_npy(path, label)
         else:
             if info.st_size > MAX_CSV_BYTES:
-                raise InputError(f"{label}: too large for a CSV cloud ({info.st_size:,} bytes, at most "
-                                 f"{MAX_CSV_BYTES:,}); save it as .npy")
+                raise InputError(
+                    f"{label}: too large for a CSV cloud ({info.st_size:,} bytes, at most "
+                    f"{MAX_CSV_BYTES:,}); save it as .npy"
+                )
             table = _read_csv(path, label)
     except OSError as exc:  # unreadable: permissions, an I/O error, a kernel file that refuses reads
         raise InputError(f"{label}: cannot read: {exc.strerror or type(exc).__name__}") from None
@@ -89,15 +91,25 @@ def _read_npy(path: Path, label: str) -> np.ndarray:
                 raise ValueError("unknown version")
         except (ValueError, SyntaxError, TypeError, EOFError, UnicodeDecodeError):
             raise InputError(not_npy) from None
-        if dtype.hasobject or dtype.kind not in "fiu" or dtype.shape != () or len(shape) != 2 or shape[1] != 4:
-            raise InputError(f"{label}: a .npy cloud must be a numeric array of shape (N, 4) with columns "
-                             f"mass, x, y, z (got shape {tuple(shape)}, dtype {_plain_dtype_name(dtype)})")
+        if (
+            dtype.hasobject
+            or dtype.kind not in "fiu"
+            or dtype.shape != ()
+            or len(shape) != 2
+            or shape[1] != 4
+        ):
+            raise InputError(
+                f"{label}: a .npy cloud must be a numeric array of shape (N, 4) with columns "
+                f"mass, x, y, z (got shape {tuple(shape)}, dtype {_plain_dtype_name(dtype)})"
+            )
         if shape[0] == 0:
             raise InputError(f"{label}: holds no points (an array of shape (0, 4))")
         data_bytes = os.fstat(stream.fileno()).st_size - stream.tell()
         if data_bytes != shape[0] * 4 * dtype.itemsize:
-            raise InputError(f"{label}: the header says {shape[0]:,} points ({shape[0] * 4 * dtype.itemsize:,} bytes) "
-                             f"but the file holds {data_bytes:,} bytes of data (truncated or not a .npy file)")
+            raise InputError(
+                f"{label}: the header says {shape[0]:,} points ({shape[0] * 4 * dtype.itemsize:,} bytes) "
+                f"but the file holds {data_bytes:,} bytes of data (truncated or not a .npy file)"
+            )
         stream.seek(0)
         try:
             table = npy.read_array(stream, allow_pickle=False)
@@ -117,8 +129,10 @@ def _read_csv(path: Path, label: str) -> np.ndarray:
     header, header_line = _header(path, label)
     missing = [c for c in COLUMNS if c not in header]
     if missing:
-        raise InputError(f"{label}: line {header_line}: header must name the columns mass, x, y, z "
-                         f"(missing {', '.join(missing)})")
+        raise InputError(
+            f"{label}: line {header_line}: header must name the columns mass, x, y, z "
+            f"(missing {', '.join(missing)})"
+        )
     twice = [c for c in COLUMNS if header.count(c) > 1]
     if twice:
         raise InputError(f"{label}: line {header_line}: column {twice[0]} is named twice in the header")
@@ -126,8 +140,16 @@ def _read_csv(path: Path, label: str) -> np.ndarray:
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)  # "no data": reported below instead
-            table = np.loadtxt(path, delimiter=",", skiprows=header_line, usecols=usecols, ndmin=2,
-                               dtype=float, comments="#", encoding="utf-8-sig")
+            table = np.loadtxt(
+                path,
+                delimiter=",",
+                skiprows=header_line,
+                usecols=usecols,
+                ndmin=2,
+                dtype=float,
+                comments="#",
+                encoding="utf-8-sig",
+            )
     except ValueError as exc:
         # numpy counts rows after the skipped header; name the line a text editor shows.
         raise InputError(f"{label}: {_describe_parse_error(str(exc), header_line)}") from None
@@ -152,8 +174,10 @@ def _header(path: Path, label: str) -> tuple[list[str], int]:
                 if "\x00" in line:
                     raise InputError(f"{label}: not a text file (binary data)")
                 if len(line) >= _HEADER_LINE_CHARS and not line.endswith("\n"):
-                    raise InputError(f"{label}: line {number}: longer than {_HEADER_LINE_CHARS} characters "
-                                     "(expected a header row mass,x,y,z)")
+                    raise InputError(
+                        f"{label}: line {number}: longer than {_HEADER_LINE_CHARS} characters "
+                        "(expected a header row mass,x,y,z)"
+                    )
                 text = line.strip()
                 if text and not text.startswith("#"):
                     return [c.strip().lower() for c in text.split(",")], number

@@ -123,6 +123,7 @@ def is_robot_file(path: str) -> bool:
 
 # --- reading ---------------------------------------------------------------------------------
 
+
 def read_robot(path: str, package_paths: dict | None = None, geometry: bool = True) -> RobotModel:
     """Parse a URDF, SDF or MJCF file (the format from its root element) into a
     :class:`RobotModel`: links with their inertials, geometry (when ``geometry``; MJCF's geoms
@@ -135,8 +136,10 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
     document = robot_xml.read_xml(path, _xacro_expanded(path) if path.lower().endswith(".xacro") else None)
     fmt = FORMAT_BY_ROOT.get(document.root.tag)
     if fmt is None:
-        raise InputError(f"{path}: not a URDF, SDF or MJCF document (the root element is "
-                         f"<{_short(document.root.tag)}>, expected <robot>, <sdf> or <mujoco>)")
+        raise InputError(
+            f"{path}: not a URDF, SDF or MJCF document (the root element is "
+            f"<{_short(document.root.tag)}>, expected <robot>, <sdf> or <mujoco>)"
+        )
     if fmt == "urdf":
         from rbi.formats.urdf import read_urdf as reader
     elif fmt == "sdf":
@@ -152,10 +155,12 @@ def _xacro_expanded(path: str) -> bytes:
     try:
         import xacro
     except ImportError:
-        raise InputError(f"{path}: a .xacro file needs the xacro package: pip install 'rbi[xacro]' (or run "
-                         "`xacro FILE > FILE.urdf` and read that)") from None
-    import io
+        raise InputError(
+            f"{path}: a .xacro file needs the xacro package: pip install 'rbi[xacro]' (or run "
+            "`xacro FILE > FILE.urdf` and read that)"
+        ) from None
     import contextlib
+    import io
 
     if not os.path.isfile(path):
         raise InputError(f"{path}: no such file")
@@ -173,21 +178,39 @@ def read_robot_file(path: str) -> RobotFile:
     (``skipped``), read as :func:`read_robot` reads them; MJCF bodies carry what MuJoCo's
     compiler gives them."""
     model = read_robot(path)
-    robot = RobotFile(str(path), model.format, model.name, notes=list(model.notes), unchecked=list(model.unchecked))
+    robot = RobotFile(
+        str(path), model.format, model.name, notes=list(model.notes), unchecked=list(model.unchecked)
+    )
     for link in model.links:
         inertial = link.inertial
         if inertial is None:
-            robot.skipped.append((link.label, "no <inertial> element" if model.format != "mjcf"
-                                  else "no <inertial> element and no geoms with mass"))
+            robot.skipped.append(
+                (
+                    link.label,
+                    "no <inertial> element"
+                    if model.format != "mjcf"
+                    else "no <inertial> element and no geoms with mass",
+                )
+            )
             continue
-        robot.links.append(RobotLink(link.index, link.name, inertial.mass, inertial.com, inertial.inertia,
-                                     quaternion=inertial.quaternion if inertial.rpy is None else None,
-                                     rpy=inertial.rpy, rotation=inertial.rotation,
-                                     massless_allowed=not link.moves))
+        robot.links.append(
+            RobotLink(
+                link.index,
+                link.name,
+                inertial.mass,
+                inertial.com,
+                inertial.inertia,
+                quaternion=inertial.quaternion if inertial.rpy is None else None,
+                rpy=inertial.rpy,
+                rotation=inertial.rotation,
+                massless_allowed=not link.moves,
+            )
+        )
     return robot
 
 
 # --- validity ----------------------------------------------------------------------------------
+
 
 def link_problems(robot: RobotFile, link: RobotLink) -> list[str]:
     """Every reason the link's mass properties are not physical, one line each with the margin
@@ -224,6 +247,7 @@ def robot_file_problems(path: str) -> list[str]:
 
 # --- specs ---------------------------------------------------------------------------------------
 
+
 def link_spec(robot: RobotFile, link: RobotLink) -> dict[str, Any]:
     """The rbi spec (plain dict, SI) of one link: one custom part with the link's mass, centre
     of mass, inertia about it in the inertial frame's axes, and the rotation into link axes."""
@@ -233,8 +257,14 @@ def link_spec(robot: RobotFile, link: RobotLink) -> dict[str, Any]:
         "shape": "custom",
         "mass": float(link.mass),
         "center_of_mass": [float(v) for v in link.com],
-        "inertia": {"ixx": float(I[0, 0]), "iyy": float(I[1, 1]), "izz": float(I[2, 2]),
-                    "ixy": float(I[0, 1]), "ixz": float(I[0, 2]), "iyz": float(I[1, 2])},
+        "inertia": {
+            "ixx": float(I[0, 0]),
+            "iyy": float(I[1, 1]),
+            "izz": float(I[2, 2]),
+            "ixy": float(I[0, 1]),
+            "ixz": float(I[0, 2]),
+            "iyz": float(I[1, 2]),
+        },
     }
     rotation = link.spec_rotation()
     if rotation is not None:

@@ -39,11 +39,11 @@ def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[
     primitive in its own axes (cylinder and capsule along z). Sizes as :class:`Geom` gives them."""
     pi = math.pi
     if kind == "sphere":
-        r, = size
+        (r,) = size
         if shell:
             area = 4 * pi * r * r
             return area, np.full(3, 2.0 / 3.0 * area * r * r)
-        volume = 4.0 / 3.0 * pi * r ** 3
+        volume = 4.0 / 3.0 * pi * r**3
         return volume, np.full(3, 0.4 * volume * r * r)
     if kind == "box":
         a, b, c = size
@@ -52,7 +52,7 @@ def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[
             S = np.zeros(3)
             for axis, (area, spacing) in enumerate(faces):
                 for other in range(3):
-                    S[other] += 2 * area * (spacing ** 2 / 4 if other == axis else size[other] ** 2 / 12)
+                    S[other] += 2 * area * (spacing**2 / 4 if other == axis else size[other] ** 2 / 12)
             return 2 * (a * b + b * c + a * c), S.sum() - S
         volume = a * b * c
         return volume, volume / 12.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
@@ -66,7 +66,10 @@ def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[
         r, length = size
         if shell:
             side, cap = 2 * pi * r * length, pi * r * r
-            S = np.array([side * r * r / 2 + 2 * cap * r * r / 4] * 2 + [side * length ** 2 / 12 + 2 * cap * length ** 2 / 4])
+            S = np.array(
+                [side * r * r / 2 + 2 * cap * r * r / 4] * 2
+                + [side * length**2 / 12 + 2 * cap * length**2 / 4]
+            )
             return side + 2 * cap, S.sum() - S
         volume = pi * r * r * length
         transverse = volume * (3 * r * r + length * length) / 12.0
@@ -76,14 +79,17 @@ def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[
         if shell:
             side, sphere = 2 * pi * r * length, 4 * pi * r * r
             Sxy = side * r * r / 2 + sphere * r * r / 3
-            Sz = side * length ** 2 / 12 + pi * r * r * length ** 2 + 2 * pi * r ** 3 * length + sphere * r * r / 3
+            Sz = side * length**2 / 12 + pi * r * r * length**2 + 2 * pi * r**3 * length + sphere * r * r / 3
             S = np.array([Sxy, Sxy, Sz])
             return side + sphere, S.sum() - S
         cylinder = pi * r * r * length
-        sphere = 4.0 / 3.0 * pi * r ** 3
-        transverse = (cylinder * (3 * r * r + length * length) / 12.0
-                      + sphere * (0.4 * r * r + length * (3 * r + 2 * length) / 8.0))
-        return cylinder + sphere, np.array([transverse, transverse, cylinder * r * r / 2.0 + sphere * 0.4 * r * r])
+        sphere = 4.0 / 3.0 * pi * r**3
+        transverse = cylinder * (3 * r * r + length * length) / 12.0 + sphere * (
+            0.4 * r * r + length * (3 * r + 2 * length) / 8.0
+        )
+        return cylinder + sphere, np.array(
+            [transverse, transverse, cylinder * r * r / 2.0 + sphere * 0.4 * r * r]
+        )
     raise ValueError(f"no volume: {kind}")
 
 
@@ -99,8 +105,9 @@ def _half_extent(kind: str, size) -> np.ndarray:
     return np.array([size[0], size[0], size[1] / 2 + size[0]])  # capsule
 
 
-def distribution(geom: Geom, mode: str = "exact", where: str = "", repair: bool = False,
-                 notes: list[str] | None = None) -> Distribution | None:
+def distribution(
+    geom: Geom, mode: str = "exact", where: str = "", repair: bool = False, notes: list[str] | None = None
+) -> Distribution | None:
     """``geom``'s distribution in the link frame; None for a kind that carries no mass (plane,
     height field). ``mode`` is the mesh inertia mode (MJCF geoms give their own); ``repair``
     closes a mesh's small holes first (trimesh's ``fill_holes``), each repair noted in ``notes``."""
@@ -113,18 +120,29 @@ def distribution(geom: Geom, mode: str = "exact", where: str = "", repair: bool 
         inertia = (R * moments) @ R.T
         corners = np.abs(R) @ _half_extent(geom.kind, geom.size)
         if not (np.isfinite(measure) and np.all(np.isfinite(inertia))):
-            raise InputError(f"{where}{geom.label}: size {list(geom.size)}: too large to compute with (its volume or "
-                             "inertia overflows a double); give sizes in metres")
-        return Distribution(measure, p.copy(), 0.5 * (inertia + inertia.T), p - corners, p + corners, geom.shell)
+            raise InputError(
+                f"{where}{geom.label}: size {list(geom.size)}: too large to compute with (its volume or "
+                "inertia overflows a double); give sizes in metres"
+            )
+        return Distribution(
+            measure, p.copy(), 0.5 * (inertia + inertia.T), p - corners, p + corners, geom.shell
+        )
     if geom.kind == "mesh":
         mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
         measure, centroid, inertia, low, high, added = _mesh(geom, mode, where, repair)
         if added and notes is not None:
-            notes.append(f"{where}{geom.label}: {geom.mesh_file.name}: --mesh-repair closed holes with {added[0]} "
-                         f"triangle(s), {added[1]:.4g} m² in all")
+            notes.append(
+                f"{where}{geom.label}: {geom.mesh_file.name}: --mesh-repair closed holes with {added[0]} "
+                f"triangle(s), {added[1]:.4g} m² in all"
+            )
         inertia = R @ inertia @ R.T
-        return Distribution(measure, R @ centroid + p, 0.5 * (inertia + inertia.T), *_turned_bounds(R, p, low, high),
-                            mode == "shell")
+        return Distribution(
+            measure,
+            R @ centroid + p,
+            0.5 * (inertia + inertia.T),
+            *_turned_bounds(R, p, low, high),
+            mode == "shell",
+        )
     return None
 
 
@@ -171,17 +189,27 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
     except ValueError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}") from None
     if not (np.isfinite(found.measure) and np.all(np.isfinite(found.inertia_per_density))):
-        raise InputError(f"{where}{geom.label}: {path.name}: scale {scale.tolist()}: too large to compute with "
-                         "(the mesh's volume or inertia overflows a double)")
+        raise InputError(
+            f"{where}{geom.label}: {path.name}: scale {scale.tolist()}: too large to compute with "
+            "(the mesh's volume or inertia overflows a double)"
+        )
     used = found.vertices[np.unique(found.faces)]
-    result = (float(found.measure), np.asarray(found.centroid, float), np.asarray(found.inertia_per_density, float),
-              used.min(axis=0), used.max(axis=0), added)
+    result = (
+        float(found.measure),
+        np.asarray(found.centroid, float),
+        np.asarray(found.inertia_per_density, float),
+        used.min(axis=0),
+        used.max(axis=0),
+        added,
+    )
     _MESHES[key] = result
     return result
 
 
-CLOSED_HINT = ("; audit it with --mesh-inertia convex (the solid convex hull), --mesh-inertia shell (mass on "
-               "the surface) or --mesh-repair (closes holes of three or four edges)")
+CLOSED_HINT = (
+    "; audit it with --mesh-inertia convex (the solid convex hull), --mesh-inertia shell (mass on "
+    "the surface) or --mesh-repair (closes holes of three or four edges)"
+)
 
 
 def _hinted(message: str, mode: str) -> str:
@@ -189,8 +217,12 @@ def _hinted(message: str, mode: str) -> str:
     (``inertia: convex`` is ``--mesh-inertia convex`` here, ``repair: true`` ``--mesh-repair``)."""
     if mode == "exact" and "closed" in message:
         return message.split("; for such a mesh")[0] + CLOSED_HINT
-    for key, option in (("inertia: convex", "--mesh-inertia convex"), ("inertia: shell", "--mesh-inertia shell"),
-                        ("inertia: exact", "--mesh-inertia exact"), ("repair: true", "--mesh-repair")):
+    for key, option in (
+        ("inertia: convex", "--mesh-inertia convex"),
+        ("inertia: shell", "--mesh-inertia shell"),
+        ("inertia: exact", "--mesh-inertia exact"),
+        ("repair: true", "--mesh-repair"),
+    ):
         message = message.replace(key, option)
     return message
 
@@ -201,8 +233,9 @@ def _mesh_arrays(path):
 
     suffix = path.suffix.lower()
     if suffix not in MESH_FILE_TYPES:
-        raise ValueError(f"unknown mesh format {suffix or '(no extension)'!r}: rbi reads "
-                         f"{', '.join(MESH_FILE_TYPES)}")
+        raise ValueError(
+            f"unknown mesh format {suffix or '(no extension)'!r}: rbi reads {', '.join(MESH_FILE_TYPES)}"
+        )
     return read_mesh_arrays(path)
 
 

@@ -36,14 +36,14 @@ class Pose:
     translation: np.ndarray
 
     @staticmethod
-    def identity() -> "Pose":
+    def identity() -> Pose:
         return Pose(np.eye(3), np.zeros(3))
 
-    def then(self, inner: "Pose") -> "Pose":
+    def then(self, inner: Pose) -> Pose:
         """This pose applied after ``inner`` (``inner`` is expressed in this pose's child frame)."""
         return Pose(self.rotation @ inner.rotation, self.rotation @ inner.translation + self.translation)
 
-    def inverse(self) -> "Pose":
+    def inverse(self) -> Pose:
         return Pose(self.rotation.T, -self.rotation.T @ self.translation)
 
     def apply(self, point) -> np.ndarray:
@@ -173,6 +173,7 @@ class RobotModel:
 
 # --- reading numbers ----------------------------------------------------------------------------
 
+
 class Where:
     """Where a value was read, for error messages: ``file: link[i] (name): what``."""
 
@@ -212,14 +213,18 @@ def number(where: Where, text: str | None, what: str, default: float | None = No
 def positive(where: Where, values, what: str, allow_zero: bool = False) -> None:
     for value in values:
         if value < 0 or (value == 0 and not allow_zero):
-            raise where.error(f"{what}: must be {'zero or ' if allow_zero else ''}greater than 0 (got {value!r})")
+            raise where.error(
+                f"{what}: must be {'zero or ' if allow_zero else ''}greater than 0 (got {value!r})"
+            )
 
 
 def angles(where: Where, values, what: str) -> list[float]:
     for axis, angle in zip(("roll", "pitch", "yaw"), values):
         if abs(angle) > MAX_ANGLE_RAD:
-            raise where.error(f"{what}: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
-                              f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})")
+            raise where.error(
+                f"{what}: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
+                f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})"
+            )
     return list(values)
 
 
@@ -229,8 +234,10 @@ def from_six(ixx, iyy, izz, ixy, ixz, iyz) -> np.ndarray:
 
 def check_inertia_range(where: Where, inertia: np.ndarray) -> None:
     if not np.isfinite(np.sum(np.abs(inertia))):
-        raise where.error(f"inertia: numbers too large: the entries (largest {float(np.max(np.abs(inertia))):.3g}) "
-                          f"add up beyond the largest double, {np.finfo(float).max:.3g}; give the inertia in kg·m²")
+        raise where.error(
+            f"inertia: numbers too large: the entries (largest {float(np.max(np.abs(inertia))):.3g}) "
+            f"add up beyond the largest double, {np.finfo(float).max:.3g}; give the inertia in kg·m²"
+        )
 
 
 def rpy_matrix(rpy) -> np.ndarray:
@@ -275,6 +282,8 @@ def check_unique_names(path: str, links: list[Link], word: str) -> None:
         if each.name is None:
             continue
         if each.name in seen:
-            raise InputError(f"{path}: {each.label}: duplicate {word} name {short(each.name)!r} "
-                             f"(also {seen[each.name].label}); every {word} needs its own name")
+            raise InputError(
+                f"{path}: {each.label}: duplicate {word} name {short(each.name)!r} "
+                f"(also {seen[each.name].label}); every {word} needs its own name"
+            )
         seen[each.name] = each

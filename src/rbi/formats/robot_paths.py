@@ -41,17 +41,20 @@ def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str,
         raise InputError(f"{label}: not a usable path (it contains a NUL character)")
     for scheme in ("package://", "model://"):
         if uri.startswith(scheme):
-            return _in_package(robot_path, uri, uri[len(scheme):], label, package_paths or {}, scheme)
+            return _in_package(robot_path, uri, uri[len(scheme) :], label, package_paths or {}, scheme)
     if uri.startswith("file://"):
-        return spec_relative_file(robot_path, unquote(uri[len("file://"):]), label)
+        return spec_relative_file(robot_path, unquote(uri[len("file://") :]), label)
     return spec_relative_file(robot_path, uri, label)
 
 
-def _in_package(robot_path: str, uri: str, rest: str, label: str, package_paths: dict[str, list[Path]],
-                scheme: str) -> Path:
+def _in_package(
+    robot_path: str, uri: str, rest: str, label: str, package_paths: dict[str, list[Path]], scheme: str
+) -> Path:
     name, _, inner = rest.partition("/")
     trusted = list(package_paths.get(name, []))
-    variables = ["ROS_PACKAGE_PATH"] + (["GZ_SIM_RESOURCE_PATH", "GAZEBO_MODEL_PATH"] if scheme == "model://" else [])
+    variables = ["ROS_PACKAGE_PATH"] + (
+        ["GZ_SIM_RESOURCE_PATH", "GAZEBO_MODEL_PATH"] if scheme == "model://" else []
+    )
     for variable in variables:
         for folder in filter(None, os.environ.get(variable, "").split(os.pathsep)):
             trusted.append(Path(folder) / name)
@@ -70,5 +73,7 @@ def _in_package(robot_path: str, uri: str, rest: str, label: str, package_paths:
     for relative in beside:
         if (here / relative).is_file():
             return spec_relative_file(robot_path, relative, label)
-    raise InputError(f"{label}: {uri}: no such file (looked in --package-path {name}=DIR, ROS_PACKAGE_PATH and "
-                     f"beside the robot file); give the package's folder with --package-path {name}=DIR")
+    raise InputError(
+        f"{label}: {uri}: no such file (looked in --package-path {name}=DIR, ROS_PACKAGE_PATH and "
+        f"beside the robot file); give the package's folder with --package-path {name}=DIR"
+    )

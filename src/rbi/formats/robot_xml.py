@@ -23,8 +23,8 @@ from __future__ import annotations
 import codecs
 import os
 import re
+from collections.abc import Iterator
 from dataclasses import dataclass, field
-from typing import Iterator
 
 from rbi.errors import InputError
 
@@ -38,9 +38,20 @@ MAX_DEPTH = 500
 PARSE_CHUNK_BYTES = 64 * 1024 * 1024
 """Bytes handed to expat per call: the whole of any file rbi reads, in one feed."""
 
-ENCODINGS = {"utf-8": "utf-8", "utf8": "utf-8", "utf-16": "utf-16", "utf16": "utf-16", "us-ascii": "ascii",
-             "ascii": "ascii", "iso-8859-1": "latin-1", "iso8859-1": "latin-1", "latin-1": "latin-1",
-             "latin1": "latin-1", "windows-1252": "cp1252", "cp1252": "cp1252"}
+ENCODINGS = {
+    "utf-8": "utf-8",
+    "utf8": "utf-8",
+    "utf-16": "utf-16",
+    "utf16": "utf-16",
+    "us-ascii": "ascii",
+    "ascii": "ascii",
+    "iso-8859-1": "latin-1",
+    "iso8859-1": "latin-1",
+    "latin-1": "latin-1",
+    "latin1": "latin-1",
+    "windows-1252": "cp1252",
+    "cp1252": "cp1252",
+}
 """Declared encodings read (lower case) and Python's codec for each."""
 
 _DECLARATION = re.compile(rb"^<\?xml[^>]*?encoding\s*=\s*([\"'])([^\"']*)\1", re.S)
@@ -59,23 +70,23 @@ class XmlElement:
     start: int
     end: int = -1
     text: str = ""
-    children: list["XmlElement"] = field(default_factory=list)
-    parent: "XmlElement | None" = None
+    children: list[XmlElement] = field(default_factory=list)
+    parent: XmlElement | None = None
     source: str | None = None
 
     def get(self, key: str, default: str | None = None) -> str | None:
         return self.attrib.get(key, default)
 
-    def child(self, tag: str) -> "XmlElement | None":
+    def child(self, tag: str) -> XmlElement | None:
         for each in self.children:
             if each.tag == tag:
                 return each
         return None
 
-    def all(self, tag: str) -> list["XmlElement"]:
+    def all(self, tag: str) -> list[XmlElement]:
         return [each for each in self.children if each.tag == tag]
 
-    def iter(self, tag: str | None = None) -> Iterator["XmlElement"]:
+    def iter(self, tag: str | None = None) -> Iterator[XmlElement]:
         """This element and every element below it, document order."""
         stack = [self]
         while stack:
@@ -121,14 +132,17 @@ def read_xml(path: str, data: bytes | None = None) -> XmlDocument:
         try:
             utf8.decode("utf-8")
         except UnicodeDecodeError as exc:
-            raise InputError(f"{path}: not valid UTF-8 at byte {len(prefix) + exc.start} (the file declares UTF-8 "
-                             "or no encoding); save it as UTF-8") from None
+            raise InputError(
+                f"{path}: not valid UTF-8 at byte {len(prefix) + exc.start} (the file declares UTF-8 "
+                "or no encoding); save it as UTF-8"
+            ) from None
     else:
         try:
             utf8 = body.decode(encoding).encode("utf-8")
         except UnicodeError:
-            raise InputError(f"{path}: the text does not decode as {encoding} (the encoding it declares); "
-                             "save it as UTF-8") from None
+            raise InputError(
+                f"{path}: the text does not decode as {encoding} (the encoding it declares); save it as UTF-8"
+            ) from None
     root = _parse(path, utf8)
     return XmlDocument(path, root, utf8, prefix, suffix, encoding)
 
@@ -139,8 +153,10 @@ def _read_bytes(path: str) -> bytes:
             raise InputError(f"{path}: " + ("not a regular file" if os.path.exists(path) else "no such file"))
         size = os.path.getsize(path)
         if size > MAX_FILE_BYTES:
-            raise InputError(f"{path}: {size} bytes: larger than the {MAX_FILE_BYTES // 2**20} MiB rbi reads "
-                             "from a robot file")
+            raise InputError(
+                f"{path}: {size} bytes: larger than the {MAX_FILE_BYTES // 2**20} MiB rbi reads "
+                "from a robot file"
+            )
         with open(path, "rb") as handle:
             data = handle.read(MAX_FILE_BYTES + 1)
     except OSError as exc:
@@ -157,18 +173,24 @@ def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
         if data.startswith(bom):
             if codec != "utf-8":
                 try:
-                    text = data[len(bom):].decode(codec)
+                    text = data[len(bom) :].decode(codec)
                 except UnicodeError:
-                    raise InputError(f"{path}: the text does not decode as {codec} (its byte-order mark says so); "
-                                     "save it as UTF-8") from None
+                    raise InputError(
+                        f"{path}: the text does not decode as {codec} (its byte-order mark says so); "
+                        "save it as UTF-8"
+                    ) from None
                 # re-split the decoded text; the suffix and prefix are re-encoded on writing
                 inner = text.encode("utf-8")
                 stripped = inner.lstrip(b" \t\r\n")
                 end = len(stripped.rstrip(b" \t\r\n\x00"))
                 lead = inner[: len(inner) - len(stripped)]
-                return (bom + lead.decode("utf-8").encode(codec), stripped[:end],
-                        stripped[end:].decode("utf-8").encode(codec), codec)
-            data_prefix, data = bom, data[len(bom):]
+                return (
+                    bom + lead.decode("utf-8").encode(codec),
+                    stripped[:end],
+                    stripped[end:].decode("utf-8").encode(codec),
+                    codec,
+                )
+            data_prefix, data = bom, data[len(bom) :]
             break
     else:
         data_prefix = b""
@@ -185,8 +207,10 @@ def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
         codec = ENCODINGS.get(declared.lower())
         if codec is None:
             shown = declared.encode("unicode_escape").decode("ascii")[:40]
-            raise InputError(f"{path}: encoding {shown!r}: not an encoding rbi reads robot files in "
-                             "(UTF-8, UTF-16, ASCII, ISO-8859-1, Windows-1252); save the file as UTF-8")
+            raise InputError(
+                f"{path}: encoding {shown!r}: not an encoding rbi reads robot files in "
+                "(UTF-8, UTF-16, ASCII, ISO-8859-1, Windows-1252); save the file as UTF-8"
+            )
         if codec == "utf-16":
             raise InputError(f"{path}: declares UTF-16 but has no byte-order mark; save it as UTF-8")
     return prefix, body, suffix, codec
@@ -204,11 +228,18 @@ def _parse(path: str, text: bytes) -> XmlElement:
 
     def start(tag, attrib):
         if len(stack) >= MAX_DEPTH:
-            raise InputError(f"{path}: elements nested deeper than {MAX_DEPTH} levels; refused as not a "
-                             "plausible robot description")
+            raise InputError(
+                f"{path}: elements nested deeper than {MAX_DEPTH} levels; refused as not a "
+                "plausible robot description"
+            )
         local = tag.rsplit("}", 1)[-1]
-        element = XmlElement(local, attrib, parser.CurrentLineNumber, parser.CurrentByteIndex,
-                             parent=stack[-1] if stack else None)
+        element = XmlElement(
+            local,
+            attrib,
+            parser.CurrentLineNumber,
+            parser.CurrentByteIndex,
+            parent=stack[-1] if stack else None,
+        )
         if stack:
             stack[-1].children.append(element)
         else:
@@ -227,8 +258,10 @@ def _parse(path: str, text: bytes) -> XmlElement:
             pieces[-1].append(data)
 
     def refuse(*_args):
-        raise InputError(f"{path}: refused: the file declares XML entities or external references; rbi does "
-                         "not expand them")
+        raise InputError(
+            f"{path}: refused: the file declares XML entities or external references; rbi does "
+            "not expand them"
+        )
 
     parser.StartElementHandler = start
     parser.EndElementHandler = end
@@ -238,11 +271,13 @@ def _parse(path: str, text: bytes) -> XmlElement:
     parser.ExternalEntityRefHandler = refuse
     try:
         for offset in range(0, max(len(text), 1), PARSE_CHUNK_BYTES):
-            parser.Parse(text[offset: offset + PARSE_CHUNK_BYTES], False)
+            parser.Parse(text[offset : offset + PARSE_CHUNK_BYTES], False)
         parser.Parse(b"", True)
     except expat.ExpatError as exc:
-        raise InputError(f"{path}: not well-formed XML (line {exc.lineno}, column {exc.offset}): "
-                         f"{expat.ErrorString(exc.code)}") from None
+        raise InputError(
+            f"{path}: not well-formed XML (line {exc.lineno}, column {exc.offset}): "
+            f"{expat.ErrorString(exc.code)}"
+        ) from None
     except RecursionError:
         raise InputError(f"{path}: elements nested too deeply") from None
     if not result:

@@ -23,27 +23,57 @@ import math
 
 import numpy as np
 
-from rbi.formats.robot_model import (Geom, Inertial, Link, Motion, Pose, RobotModel, Where, angles,
-                                     check_inertia_range, check_unique_names, from_six, number, numbers,
-                                     positive, quaternion_matrix, rpy_matrix, short, unit)
+from rbi.formats.robot_model import (
+    Geom,
+    Inertial,
+    Link,
+    Motion,
+    Pose,
+    RobotModel,
+    Where,
+    angles,
+    check_inertia_range,
+    check_unique_names,
+    from_six,
+    number,
+    numbers,
+    positive,
+    quaternion_matrix,
+    rpy_matrix,
+    short,
+    unit,
+)
 from rbi.formats.robot_paths import resolve_mesh
 
-JOINT_KINDS = {"revolute": "revolute", "continuous": "revolute", "prismatic": "prismatic", "fixed": "fixed",
-               "ball": "ball", "universal": "universal", "revolute2": "revolute2", "screw": "screw",
-               "gearbox": "gearbox"}
+JOINT_KINDS = {
+    "revolute": "revolute",
+    "continuous": "revolute",
+    "prismatic": "prismatic",
+    "fixed": "fixed",
+    "ball": "ball",
+    "universal": "universal",
+    "revolute2": "revolute2",
+    "screw": "screw",
+    "gearbox": "gearbox",
+}
 
 
 def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     path, root = document.path, document.root
     models = list(_models(root, Pose.identity()))
-    first = root.child("model") or (root.child("world").child("model") if root.child("world") is not None
-                                    and root.child("world").child("model") is not None else None)
+    first = root.child("model") or (
+        root.child("world").child("model")
+        if root.child("world") is not None and root.child("world").child("model") is not None
+        else None
+    )
     name = first.get("name") if first is not None else None
     robot = RobotModel(path, "sdf", name, document=document)
     for include in (e for e in root.iter("include")):
         uri = include.child("uri")
-        robot.unchecked.append(f"{path}: include {short(uri.text if uri is not None else '', 80)!r}: not followed; "
-                               "the links of the included model are not checked")
+        robot.unchecked.append(
+            f"{path}: include {short(uri.text if uri is not None else '', 80)!r}: not followed; "
+            "the links of the included model are not checked"
+        )
     prefix = len(models) > 1
     index = 0
     for model_element, model_pose in models:
@@ -52,8 +82,12 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
         link_poses: dict[str, Pose] = {}
         for element in model_element.all("link"):
             own = element.get("name")
-            link = Link(index, f"{model_name}::{own}" if prefix and own is not None else own, element=element,
-                        word="link")
+            link = Link(
+                index,
+                f"{model_name}::{own}" if prefix and own is not None else own,
+                element=element,
+                word="link",
+            )
             index += 1
             where = Where(path, link.label)
             pose = _pose(where, element.child("pose"), "pose", own)
@@ -97,8 +131,10 @@ def _pose(where: Where, element, what: str, own_name: str | None, strict: bool =
         return Pose.identity()
     relative_to = element.get("relative_to")
     if strict and relative_to not in (None, "", own_name, "__model__"):
-        raise where.error(f"{what}: relative_to={short(relative_to)!r}: only poses in the link's own or the "
-                          "model's frame are read")
+        raise where.error(
+            f"{what}: relative_to={short(relative_to)!r}: only poses in the link's own or the "
+            "model's frame are read"
+        )
     if (element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
         values = numbers(where, element.text, what, 7)
         qx, qy, qz, qw = values[3:]
@@ -117,8 +153,10 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
     if pose_element is not None and (pose_element.text or "").strip():
         relative_to = pose_element.get("relative_to")
         if relative_to not in (None, "", own_name):
-            raise where.error(f"inertial/pose: relative_to={short(relative_to)!r}: only poses in the link's own "
-                              "frame are read")
+            raise where.error(
+                f"inertial/pose: relative_to={short(relative_to)!r}: only poses in the link's own "
+                "frame are read"
+            )
         pose = _pose(where, pose_element, "inertial/pose", own_name)
         if (pose_element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
             v = numbers(where, pose_element.text, "inertial/pose", 7)
@@ -137,12 +175,21 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
     six = {}
     for key, default in (("ixx", 1.0), ("iyy", 1.0), ("izz", 1.0), ("ixy", 0.0), ("ixz", 0.0), ("iyz", 0.0)):
         entry = None if block is None else block.child(key)
-        six[key] = number(where, None if entry is None else entry.text, f"inertial/inertia/{key}", default=default)
+        six[key] = number(
+            where, None if entry is None else entry.text, f"inertial/inertia/{key}", default=default
+        )
     inertia = from_six(**six)
     check_inertia_range(where, inertia)
     turned = rpy is not None or (quaternion is not None and not np.allclose(pose.rotation, np.eye(3), 0, 0))
-    return Inertial(mass, pose.translation, inertia, rotation=pose.rotation if turned else None, rpy=rpy,
-                    quaternion=quaternion if turned and rpy is None else None, element=inertial)
+    return Inertial(
+        mass,
+        pose.translation,
+        inertia,
+        rotation=pose.rotation if turned else None,
+        rpy=rpy,
+        quaternion=quaternion if turned and rpy is None else None,
+        element=inertial,
+    )
 
 
 def _geoms(where: Where, link_element, tag: str, package_paths, own_name) -> list[Geom]:
@@ -172,12 +219,12 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
         positive(where, size, f"{label}/size", allow_zero=True)
         return Geom("box", tuple(size), pose, label)
     if kind in ("cylinder", "capsule"):
-        radius, = _value(where, shape, "radius", label)
-        length, = _value(where, shape, "length", label)
+        (radius,) = _value(where, shape, "radius", label)
+        (length,) = _value(where, shape, "length", label)
         positive(where, (radius, length), f"{label}: radius and length", allow_zero=True)
         return Geom(kind, (radius, length), pose, label)
     if kind == "sphere":
-        radius, = _value(where, shape, "radius", label)
+        (radius,) = _value(where, shape, "radius", label)
         positive(where, (radius,), f"{label}/radius", allow_zero=True)
         return Geom("sphere", (radius,), pose, label)
     if kind == "ellipsoid":
@@ -189,9 +236,17 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
         if uri is None or not uri.text:
             raise where.error(f"{label}/uri: missing")
         scale_element = shape.child("scale")
-        scale = numbers(where, scale_element.text, f"{label}/scale", 3) if scale_element is not None else [1, 1, 1]
-        mesh = resolve_mesh(where.path, uri.text, f"{where.path}: {where.label}: {label}: {short(uri.text, 80)}",
-                            package_paths)
+        scale = (
+            numbers(where, scale_element.text, f"{label}/scale", 3)
+            if scale_element is not None
+            else [1, 1, 1]
+        )
+        mesh = resolve_mesh(
+            where.path,
+            uri.text,
+            f"{where.path}: {where.label}: {label}: {short(uri.text, 80)}",
+            package_paths,
+        )
         return Geom("mesh", (), pose, label, mesh_file=mesh, mesh_scale=np.array(scale, dtype=float))
     return Geom(kind, (), pose, label)
 
@@ -210,7 +265,9 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, mod
         child = links[child_name]
         kind = JOINT_KINDS.get(element.get("type") or "", "other")
         if parent_name in ("world", "__world__") or parent_name not in links:
-            child.motions = [Motion(name, "fixed" if kind == "fixed" else kind, np.array([1.0, 0, 0]), np.zeros(3))]
+            child.motions = [
+                Motion(name, "fixed" if kind == "fixed" else kind, np.array([1.0, 0, 0]), np.zeros(3))
+            ]
             continue
         if child.parent is not None:
             raise where.error(f"child: link {short(child_name)!r} already has a parent joint")
@@ -222,9 +279,13 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, mod
         axis = numbers(where, xyz_element.text, "axis/xyz", 3) if xyz_element is not None else [0.0, 0.0, 1.0]
         if kind in ("revolute", "prismatic"):
             axis = unit(where, axis, "axis/xyz")
-            in_model = (axis_element is not None and (axis_element.child("use_parent_model_frame") is not None and
-                        (axis_element.child("use_parent_model_frame").text or "").strip() in ("true", "1"))) or \
-                       (xyz_element is not None and xyz_element.get("expressed_in") == "__model__")
+            in_model = (
+                axis_element is not None
+                and (
+                    axis_element.child("use_parent_model_frame") is not None
+                    and (axis_element.child("use_parent_model_frame").text or "").strip() in ("true", "1")
+                )
+            ) or (xyz_element is not None and xyz_element.get("expressed_in") == "__model__")
             child_in_model = link_poses[child_name]
             if in_model:
                 axis = child_in_model.rotation.T @ (model_pose.rotation @ axis)

@@ -17,13 +17,37 @@ from __future__ import annotations
 import numpy as np
 
 from rbi.errors import InputError
-from rbi.formats.robot_model import (Geom, Inertial, Link, Motion, Pose, RobotModel, Where, angles,
-                                     check_inertia_range, check_unique_names, from_six, number, numbers,
-                                     positive, rpy_matrix, short, unit)
+from rbi.formats.robot_model import (
+    Geom,
+    Inertial,
+    Link,
+    Motion,
+    Pose,
+    RobotModel,
+    Where,
+    angles,
+    check_inertia_range,
+    check_unique_names,
+    from_six,
+    number,
+    numbers,
+    positive,
+    rpy_matrix,
+    short,
+    unit,
+)
 from rbi.formats.robot_paths import resolve_mesh
 
-MOVING = {"revolute": "revolute", "continuous": "revolute", "prismatic": "prismatic", "floating": "floating",
-          "planar": "planar", "fixed": "fixed", "spherical": "ball", "ball": "ball"}
+MOVING = {
+    "revolute": "revolute",
+    "continuous": "revolute",
+    "prismatic": "prismatic",
+    "floating": "floating",
+    "planar": "planar",
+    "fixed": "fixed",
+    "spherical": "ball",
+    "ball": "ball",
+}
 
 
 def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
@@ -49,14 +73,20 @@ def _origin(where: Where, element, what: str) -> Pose:
     if origin is None:
         return Pose.identity()
     xyz = numbers(where, origin.get("xyz", "0 0 0"), f"{what}/origin: xyz", 3)
-    rpy = angles(where, numbers(where, origin.get("rpy", "0 0 0"), f"{what}/origin: rpy", 3), f"{what}/origin: rpy")
+    rpy = angles(
+        where, numbers(where, origin.get("rpy", "0 0 0"), f"{what}/origin: rpy", 3), f"{what}/origin: rpy"
+    )
     return Pose(rpy_matrix(rpy) if any(rpy) else np.eye(3), np.array(xyz, dtype=float))
 
 
 def _inertial(where: Where, inertial) -> Inertial:
     origin = inertial.child("origin")
-    xyz = numbers(where, origin.get("xyz", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: xyz", 3)
-    rpy = numbers(where, origin.get("rpy", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: rpy", 3)
+    xyz = numbers(
+        where, origin.get("xyz", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: xyz", 3
+    )
+    rpy = numbers(
+        where, origin.get("rpy", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: rpy", 3
+    )
     angles(where, rpy, "inertial rpy")
     mass_element = inertial.child("mass")
     if mass_element is None:
@@ -65,13 +95,21 @@ def _inertial(where: Where, inertial) -> Inertial:
     block = inertial.child("inertia")
     if block is None:
         raise where.error("inertial/inertia: missing")
-    six = {key: number(where, block.get(key), f"inertial/inertia: {key}")
-           for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")}
+    six = {
+        key: number(where, block.get(key), f"inertial/inertia: {key}")
+        for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+    }
     inertia = from_six(**six)
     check_inertia_range(where, inertia)
     has_rpy = any(rpy)
-    return Inertial(mass, np.array(xyz, dtype=float), inertia, rotation=rpy_matrix(rpy) if has_rpy else None,
-                    rpy=tuple(float(a) for a in rpy) if has_rpy else None, element=inertial)
+    return Inertial(
+        mass,
+        np.array(xyz, dtype=float),
+        inertia,
+        rotation=rpy_matrix(rpy) if has_rpy else None,
+        rpy=tuple(float(a) for a in rpy) if has_rpy else None,
+        element=inertial,
+    )
 
 
 def _geoms(where: Where, link_element, tag: str, package_paths) -> list[Geom]:
@@ -110,8 +148,12 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
             raise where.error(f"{label}: filename: missing")
         scale = numbers(where, shape.get("scale", "1 1 1"), f"{label}: scale", (1, 3))
         scale = scale * 3 if len(scale) == 1 else scale
-        mesh = resolve_mesh(where.path, filename, f"{where.path}: {where.label}: {label}: {short(filename, 80)}",
-                            package_paths)
+        mesh = resolve_mesh(
+            where.path,
+            filename,
+            f"{where.path}: {where.label}: {label}: {short(filename, 80)}",
+            package_paths,
+        )
         return Geom("mesh", (), pose, label, mesh_file=mesh, mesh_scale=np.array(scale, dtype=float))
     return Geom(kind, (), pose, label)
 
@@ -131,17 +173,29 @@ def _joints(model: RobotModel, root) -> None:
                 raise where.error(f"{role}: no link named {short(link_name)!r}")
         link = by_name[child_name]
         if link.parent is not None:
-            raise where.error(f"child: link {short(child_name)!r} already has a parent joint; a URDF's links form a tree")
+            raise where.error(
+                f"child: link {short(child_name)!r} already has a parent joint; a URDF's links form a tree"
+            )
         kind = element.get("type") or ""
         if kind not in MOVING:
-            raise where.error(f"type: {short(kind)!r} is not a URDF joint type (revolute, continuous, prismatic, "
-                              "fixed, floating, planar)")
+            raise where.error(
+                f"type: {short(kind)!r} is not a URDF joint type (revolute, continuous, prismatic, "
+                "fixed, floating, planar)"
+            )
         link.parent = parent_name
         link.origin = _origin(where, element, "joint")
         axis_element = element.child("axis")
-        axis = numbers(where, axis_element.get("xyz", "1 0 0"), "axis: xyz", 3) if axis_element is not None else [1, 0, 0]
+        axis = (
+            numbers(where, axis_element.get("xyz", "1 0 0"), "axis: xyz", 3)
+            if axis_element is not None
+            else [1, 0, 0]
+        )
         motion_kind = MOVING[kind]
-        axis_vector = unit(where, axis, "axis: xyz") if motion_kind in ("revolute", "prismatic") else np.array(axis, float)
+        axis_vector = (
+            unit(where, axis, "axis: xyz")
+            if motion_kind in ("revolute", "prismatic")
+            else np.array(axis, float)
+        )
         link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3))]
     _check_tree(model)
 
@@ -153,7 +207,9 @@ def _check_tree(model: RobotModel) -> None:
         at = link
         while at.parent is not None:
             if at.name in seen:
-                raise InputError(f"{model.path}: {link.label}: the joints form a loop through link "
-                                 f"{short(at.name)!r}; a URDF's links form a tree")
+                raise InputError(
+                    f"{model.path}: {link.label}: the joints form a loop through link "
+                    f"{short(at.name)!r}; a URDF's links form a tree"
+                )
             seen.add(at.name)
             at = by_name[at.parent]

@@ -5,15 +5,24 @@ the ``--fix`` rewrite plan (:mod:`rbi.robot.fix`). :func:`audit` runs it all."""
 from __future__ import annotations
 
 import os
-from typing import Mapping, Sequence
+from collections.abc import Mapping, Sequence
 
 from rbi.robot.audit import AuditReport
 
 
-def audit(robot_file: str | os.PathLike, *, package_paths: Mapping[str, str] | Sequence[str] | None = None,
-          geometry: str = "collision", density: float | None = None, material: str | None = None,
-          mesh_inertia: str = "exact", joints: Mapping[str, float] | Sequence[str] | None = None,
-          fix: bool = False, allow_outside_paths: bool = False, mesh_repair: bool = False) -> AuditReport:
+def audit(
+    robot_file: str | os.PathLike,
+    *,
+    package_paths: Mapping[str, str] | Sequence[str] | None = None,
+    geometry: str = "collision",
+    density: float | None = None,
+    material: str | None = None,
+    mesh_inertia: str = "exact",
+    joints: Mapping[str, float] | Sequence[str] | None = None,
+    fix: bool = False,
+    allow_outside_paths: bool = False,
+    mesh_repair: bool = False,
+) -> AuditReport:
     """Audit a URDF, SDF or MJCF file: every link's declared mass properties against its
     geometry, with flags, and the whole robot's totals at a configuration.
 
@@ -42,8 +51,14 @@ def audit(robot_file: str | os.PathLike, *, package_paths: Mapping[str, str] | S
     rho = material_density(material, density)
     with outside_paths_allowed(allow_outside_paths):
         model = read_robot(os.fspath(robot_file), packages, geometry=True)
-        report = audit_model(model, geometry=geometry, density=rho, mesh_inertia=mesh_inertia, joints=joint_values,
-                             mesh_repair=mesh_repair)
+        report = audit_model(
+            model,
+            geometry=geometry,
+            density=rho,
+            mesh_inertia=mesh_inertia,
+            joints=joint_values,
+            mesh_repair=mesh_repair,
+        )
     report.fix = None
     if fix:
         from rbi.robot.fix import plan_fix

@@ -142,8 +142,12 @@ class AuditReport:
             "format": self.model.format,
             "units": {"length": "m", "mass": "kg"},
             "links": [_link_dict(each) for each in self.links],
-            "total": {"mass": self.total.mass, "center_of_mass": self.total.center_of_mass,
-                      "inertia_about_com": self.total.inertia_about_com, "frame": self.total.frame},
+            "total": {
+                "mass": self.total.mass,
+                "center_of_mass": self.total.center_of_mass,
+                "inertia_about_com": self.total.inertia_about_com,
+                "frame": self.total.frame,
+            },
             "notes": list(self.notes),
             "warnings": list(self.notes),
         }
@@ -152,16 +156,32 @@ class AuditReport:
 def _link_dict(each: LinkAudit) -> dict[str, Any]:
     declared = geometry = None
     if each.declared is not None:
-        declared = {"mass": each.declared.mass, "center_of_mass": each.declared.center_of_mass,
-                    "inertia_about_com": each.declared.inertia_about_com, "moments": each.declared.moments}
+        declared = {
+            "mass": each.declared.mass,
+            "center_of_mass": each.declared.center_of_mass,
+            "inertia_about_com": each.declared.inertia_about_com,
+            "moments": each.declared.moments,
+        }
     if each.geometry is not None:
         g = each.geometry
-        geometry = {"volume": g.volume, "mass": g.mass, "center_of_mass": g.center_of_mass,
-                    "inertia_about_com": g.inertia_about_com, "moments": g.moments,
-                    "implied_density": g.implied_density, "source": g.source}
-    return {"name": each.link.name, "index": each.link.index, "declared": declared, "geometry": geometry,
-            "moment_ratios": each.ratios, "com_offset": each.com_offset,
-            "flags": [flag.as_dict() for flag in each.flags]}
+        geometry = {
+            "volume": g.volume,
+            "mass": g.mass,
+            "center_of_mass": g.center_of_mass,
+            "inertia_about_com": g.inertia_about_com,
+            "moments": g.moments,
+            "implied_density": g.implied_density,
+            "source": g.source,
+        }
+    return {
+        "name": each.link.name,
+        "index": each.link.index,
+        "declared": declared,
+        "geometry": geometry,
+        "moment_ratios": each.ratios,
+        "com_offset": each.com_offset,
+        "flags": [flag.as_dict() for flag in each.flags],
+    }
 
 
 def material_density(material: str | None, density: float | None) -> float | None:
@@ -183,9 +203,15 @@ def material_density(material: str | None, density: float | None) -> float | Non
     return None
 
 
-def audit_model(model: RobotModel, *, geometry: str = "collision", density: float | None = None,
-                mesh_inertia: str = "exact", joints: dict[str, float] | None = None,
-                mesh_repair: bool = False) -> AuditReport:
+def audit_model(
+    model: RobotModel,
+    *,
+    geometry: str = "collision",
+    density: float | None = None,
+    mesh_inertia: str = "exact",
+    joints: dict[str, float] | None = None,
+    mesh_repair: bool = False,
+) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
     from rbi.robot.tree import totals
 
@@ -195,13 +221,33 @@ def audit_model(model: RobotModel, *, geometry: str = "collision", density: floa
         raise InputError(f"--mesh-inertia: {mesh_inertia!r}: must be one of {', '.join(MESH_INERTIA_MODES)}")
     carried = _carried_mass(model)
     repairs: list[str] = []
-    links = [audit_link(model, link, geometry=geometry, density=density, mesh_inertia=mesh_inertia,
-                        carries_mass=carried.get(link.index, False), mesh_repair=mesh_repair, notes=repairs)
-             for link in model.links]
+    links = [
+        audit_link(
+            model,
+            link,
+            geometry=geometry,
+            density=density,
+            mesh_inertia=mesh_inertia,
+            carries_mass=carried.get(link.index, False),
+            mesh_repair=mesh_repair,
+            notes=repairs,
+        )
+        for link in model.links
+    ]
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
-    return AuditReport(model, links, totals(model, joints), notes,
-                       {"geometry": geometry, "density": density, "mesh_inertia": mesh_inertia,
-                        "joints": dict(joints or {}), "mesh_repair": mesh_repair})
+    return AuditReport(
+        model,
+        links,
+        totals(model, joints),
+        notes,
+        {
+            "geometry": geometry,
+            "density": density,
+            "mesh_inertia": mesh_inertia,
+            "joints": dict(joints or {}),
+            "mesh_repair": mesh_repair,
+        },
+    )
 
 
 def _carried_mass(model: RobotModel) -> dict[int, bool]:
@@ -231,12 +277,22 @@ def _carried_mass(model: RobotModel) -> dict[int, bool]:
     return result
 
 
-def link_geometry(model: RobotModel, link: Link, geometry: str, mesh_inertia: str, mesh_repair: bool = False,
-                  notes: list[str] | None = None):
+def link_geometry(
+    model: RobotModel,
+    link: Link,
+    geometry: str,
+    mesh_inertia: str,
+    mesh_repair: bool = False,
+    notes: list[str] | None = None,
+):
     """(source, pieces) for the link: each piece (distribution, mass or None); MJCF geoms carry
     their own mass or density."""
-    first, second = (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
-    geoms, source = (first, geometry) if first else (second, "visual" if geometry == "collision" else "collision")
+    first, second = (
+        (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
+    )
+    geoms, source = (
+        (first, geometry) if first else (second, "visual" if geometry == "collision" else "collision")
+    )
     where = f"{model.path}: {link.label}: "
     pieces = []
     for geom in geoms:
@@ -250,9 +306,17 @@ def link_geometry(model: RobotModel, link: Link, geometry: str, mesh_inertia: st
     return source, pieces
 
 
-def audit_link(model: RobotModel, link: Link, *, geometry: str = "collision", density: float | None = None,
-               mesh_inertia: str = "exact", carries_mass: bool = False, mesh_repair: bool = False,
-               notes: list[str] | None = None) -> LinkAudit:
+def audit_link(
+    model: RobotModel,
+    link: Link,
+    *,
+    geometry: str = "collision",
+    density: float | None = None,
+    mesh_inertia: str = "exact",
+    carries_mass: bool = False,
+    mesh_repair: bool = False,
+    notes: list[str] | None = None,
+) -> LinkAudit:
     inertial = link.inertial
     declared = None
     if inertial is not None:
@@ -264,7 +328,9 @@ def audit_link(model: RobotModel, link: Link, *, geometry: str = "collision", de
     return result
 
 
-def _geometry_props(model, pieces, source, declared: MassProps | None, density: float | None) -> GeometryProps | None:
+def _geometry_props(
+    model, pieces, source, declared: MassProps | None, density: float | None
+) -> GeometryProps | None:
     if not pieces:
         return None
     solid = [d for d, _ in pieces if not d.shell]
@@ -287,9 +353,16 @@ def _geometry_props(model, pieces, source, declared: MassProps | None, density: 
         mass = None
     scale = (mass / unit.mass) if mass is not None else None
     implied = mass / volume if mass is not None and volume and len(solid) == len(pieces) else None
-    return GeometryProps(mass if mass is not None else None, unit.com,
-                         unit.inertia * scale if scale is not None else None,
-                         volume=volume, implied_density=implied, low=low, high=high, source=source)
+    return GeometryProps(
+        mass if mass is not None else None,
+        unit.com,
+        unit.inertia * scale if scale is not None else None,
+        volume=volume,
+        implied_density=implied,
+        low=low,
+        high=high,
+        source=source,
+    )
 
 
 def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool) -> list[Flag]:
@@ -299,11 +372,23 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
         if link.moves:
             what = "no <inertial>" if declared is None else "mass 0"
             if carries_mass:
-                flags.append(Flag("massless", "warning", f"moved by a joint but has {what}; the links it carries "
-                                  "have mass, so the joint still moves a mass"))
+                flags.append(
+                    Flag(
+                        "massless",
+                        "warning",
+                        f"moved by a joint but has {what}; the links it carries "
+                        "have mass, so the joint still moves a mass",
+                    )
+                )
             else:
-                flags.append(Flag("massless", "error", f"moved by a joint but has {what}, and nothing it carries "
-                                  "has mass: a simulator cannot integrate that joint"))
+                flags.append(
+                    Flag(
+                        "massless",
+                        "error",
+                        f"moved by a joint but has {what}, and nothing it carries "
+                        "has mass: a simulator cannot integrate that joint",
+                    )
+                )
         return flags
     I = declared.inertia_about_com
     if declared.mass < 0:
@@ -326,8 +411,10 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
         worst = _worst_ratio(ratios)
         code = "placeholder" if placeholder else "mismatch"
         ratio_text = ", ".join("-" if np.isnan(r) else f"{r:.3g}" for r in ratios)
-        detail = (f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} "
-                  f"geometry's at the same mass")
+        detail = (
+            f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} "
+            f"geometry's at the same mass"
+        )
         if placeholder:
             detail = f"{placeholder}; {detail}"
         summary = "" if worst is None else f"a moment {worst:.3g} × the {geo.source} geometry's"
@@ -338,16 +425,30 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
         elif placeholder and _spread(moments) > 1.5:
             flags.append(Flag("placeholder", "warning", detail, summary))
         margin = COM_MARGIN * size
-        if np.any(declared.center_of_mass < geo.low - margin) or np.any(declared.center_of_mass > geo.high + margin):
-            flags.append(Flag("mismatch", "warning", "the declared centre of mass lies outside the geometry's "
-                              f"bounds (offset {result.com_offset:.3g} of the geometry's size from its centre "
-                              "of mass)"))
+        if np.any(declared.center_of_mass < geo.low - margin) or np.any(
+            declared.center_of_mass > geo.high + margin
+        ):
+            flags.append(
+                Flag(
+                    "mismatch",
+                    "warning",
+                    "the declared centre of mass lies outside the geometry's "
+                    f"bounds (offset {result.com_offset:.3g} of the geometry's size from its centre "
+                    "of mass)",
+                )
+            )
         if geo.implied_density is not None:
             low, high = SOLID_DENSITY_RANGE
             if not low <= geo.implied_density <= high:
-                flags.append(Flag("density", "warning", f"implied density {geo.implied_density:.4g} kg/m³ "
-                                  f"(mass {declared.mass:.6g} kg / {geo.source} volume {geo.volume:.4g} m³) is "
-                                  f"outside what a solid material has ({low:g} to {high:g} kg/m³)"))
+                flags.append(
+                    Flag(
+                        "density",
+                        "warning",
+                        f"implied density {geo.implied_density:.4g} kg/m³ "
+                        f"(mass {declared.mass:.6g} kg / {geo.source} volume {geo.volume:.4g} m³) is "
+                        f"outside what a solid material has ({low:g} to {high:g} kg/m³)",
+                    )
+                )
     elif placeholder:
         flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))
     return flags
@@ -386,8 +487,10 @@ def _placeholder(model: RobotModel, link: Link) -> str | None:
     if np.all(diagonal == diagonal[0]) and diagonal[0] > 0:
         return f"three equal moments ({diagonal[0]:.6g} kg·m²) with no products, as exporters write a placeholder"
     if all(_round(v) for v in diagonal):
-        return (f"moments of round values ({', '.join(f'{v:g}' for v in diagonal)} kg·m²) with no products, as "
-                "exporters write a placeholder")
+        return (
+            f"moments of round values ({', '.join(f'{v:g}' for v in diagonal)} kg·m²) with no products, as "
+            "exporters write a placeholder"
+        )
     return None
 
 

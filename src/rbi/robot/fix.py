@@ -43,9 +43,14 @@ class FixPlan:
         """A unified diff between the original file and the fixed copy."""
         import difflib
 
-        return "".join(difflib.unified_diff(self.original.decode("utf-8", "replace").splitlines(True),
-                                            self.content.decode("utf-8", "replace").splitlines(True),
-                                            fromfile=path, tofile=out or f"{path} (fixed)"))
+        return "".join(
+            difflib.unified_diff(
+                self.original.decode("utf-8", "replace").splitlines(True),
+                self.content.decode("utf-8", "replace").splitlines(True),
+                fromfile=path,
+                tofile=out or f"{path} (fixed)",
+            )
+        )
 
     original: bytes = b""
 
@@ -61,8 +66,9 @@ def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
         codes = {flag.code for flag in each.flags if flag.level == "error"}
         if not codes & set(FIXED_CODES):
             continue
-        reason = "; ".join(f"{flag.code}: {flag.summary or flag.message}" for flag in each.flags
-                           if flag.level == "error")
+        reason = "; ".join(
+            f"{flag.code}: {flag.summary or flag.message}" for flag in each.flags if flag.level == "error"
+        )
         why_not = _why_not(report, each, density)
         if why_not is not None:
             plan.unfixable.append((each.link.label, why_not))
@@ -74,7 +80,7 @@ def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
         edits.append(change)
     pieces, at = [], 0
     for change in sorted(edits, key=lambda c: c.start):
-        pieces.append(text[at:change.start])
+        pieces.append(text[at : change.start])
         pieces.append(change.new_text.encode("utf-8"))
         at = change.end
     pieces.append(text[at:])
@@ -117,14 +123,19 @@ def _comment(text: str) -> str:
     return f"<!-- {safe.rstrip('-')} -->"
 
 
-def _change(report: AuditReport, each: LinkAudit, density: float | None, reason: str, text: bytes) -> Change | None:
+def _change(
+    report: AuditReport, each: LinkAudit, density: float | None, reason: str, text: bytes
+) -> Change | None:
     geo = each.geometry
     fmt = report.model.format
     inertial = each.link.inertial
     mass, com, I = geo.mass, geo.center_of_mass, geo.inertia_about_com
     source = f"its {geo.source} geometry"
-    basis = (f"at the declared mass {mass:.6g} kg" if each.declared is not None and each.declared.mass > 0
-             else f"at density {density:g} kg/m³ ({mass:.6g} kg)")
+    basis = (
+        f"at the declared mass {mass:.6g} kg"
+        if each.declared is not None and each.declared.mass > 0
+        else f"at density {density:g} kg/m³ ({mass:.6g} kg)"
+    )
     if inertial is not None and inertial.element is not None:
         element = inertial.element
         start, end = element.start, element.end
@@ -139,8 +150,11 @@ def _change(report: AuditReport, each: LinkAudit, density: float | None, reason:
         old = ""
         indent = _indent(text, link_element.start) + "  "
         inner = indent + "  "
-    was = ("no mass" if each.declared is None or each.declared.mass == 0 else
-           f"principal moments {', '.join(f'{m:.4g}' for m in each.declared.moments)} kg·m²")
+    was = (
+        "no mass"
+        if each.declared is None or each.declared.mass == 0
+        else f"principal moments {', '.join(f'{m:.4g}' for m in each.declared.moments)} kg·m²"
+    )
     comment = _comment(f"rbi audit fix: was {was} ({reason}); now {source}'s mass properties {basis}")
     body = _element_text(fmt, mass, com, I, inner, indent)
     if old:
@@ -157,7 +171,7 @@ def _after_start_tag(text: bytes, element) -> int | None:
     if element is None:
         return None
     stop = _tag_end(text, element.start)
-    if text[stop - 2:stop] == b"/>":
+    if text[stop - 2 : stop] == b"/>":
         return None
     return stop
 
@@ -166,15 +180,27 @@ def _element_text(fmt: str, mass: float, com, I, inner: str, indent: str) -> str
     I = 0.5 * (np.asarray(I) + np.asarray(I).T)
     x, y, z = (_number(v) for v in com)
     if fmt == "urdf":
-        return (f"<inertial>\n{inner}<origin xyz=\"{x} {y} {z}\" rpy=\"0 0 0\"/>\n{inner}<mass value=\"{_number(mass)}\"/>\n"
-                f"{inner}<inertia ixx=\"{_number(I[0, 0])}\" ixy=\"{_number(I[0, 1])}\" ixz=\"{_number(I[0, 2])}\" "
-                f"iyy=\"{_number(I[1, 1])}\" iyz=\"{_number(I[1, 2])}\" izz=\"{_number(I[2, 2])}\"/>\n{indent}</inertial>")
+        return (
+            f'<inertial>\n{inner}<origin xyz="{x} {y} {z}" rpy="0 0 0"/>\n{inner}<mass value="{_number(mass)}"/>\n'
+            f'{inner}<inertia ixx="{_number(I[0, 0])}" ixy="{_number(I[0, 1])}" ixz="{_number(I[0, 2])}" '
+            f'iyy="{_number(I[1, 1])}" iyz="{_number(I[1, 2])}" izz="{_number(I[2, 2])}"/>\n{indent}</inertial>'
+        )
     if fmt == "sdf":
         deeper = inner + "  "
-        entries = "".join(f"{deeper}<{key}>{_number(value)}</{key}>\n" for key, value in
-                          (("ixx", I[0, 0]), ("ixy", I[0, 1]), ("ixz", I[0, 2]), ("iyy", I[1, 1]), ("iyz", I[1, 2]),
-                           ("izz", I[2, 2])))
-        return (f"<inertial>\n{inner}<pose>{x} {y} {z} 0 0 0</pose>\n{inner}<mass>{_number(mass)}</mass>\n"
-                f"{inner}<inertia>\n{entries}{inner}</inertia>\n{indent}</inertial>")
+        entries = "".join(
+            f"{deeper}<{key}>{_number(value)}</{key}>\n"
+            for key, value in (
+                ("ixx", I[0, 0]),
+                ("ixy", I[0, 1]),
+                ("ixz", I[0, 2]),
+                ("iyy", I[1, 1]),
+                ("iyz", I[1, 2]),
+                ("izz", I[2, 2]),
+            )
+        )
+        return (
+            f"<inertial>\n{inner}<pose>{x} {y} {z} 0 0 0</pose>\n{inner}<mass>{_number(mass)}</mass>\n"
+            f"{inner}<inertia>\n{entries}{inner}</inertia>\n{indent}</inertial>"
+        )
     six = " ".join(_number(v) for v in (I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]))
-    return f"<inertial pos=\"{x} {y} {z}\" mass=\"{_number(mass)}\" fullinertia=\"{six}\"/>"
+    return f'<inertial pos="{x} {y} {z}" mass="{_number(mass)}" fullinertia="{six}"/>'

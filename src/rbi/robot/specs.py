@@ -7,7 +7,6 @@ from __future__ import annotations
 
 from typing import Any
 
-
 from rbi.formats.robot_model import Pose, RobotModel
 
 
@@ -33,8 +32,20 @@ def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tup
         I = 0.5 * (I + I.T)
         unique = name if name not in used else f"{name}_{link.index}"
         used.add(unique)
-        parts.append({"name": unique, "shape": "custom", "mass": float(inertial.mass),
-                      "center_of_mass": [float(v) for v in pose.apply(inertial.com)],
-                      "inertia": {"ixx": float(I[0, 0]), "iyy": float(I[1, 1]), "izz": float(I[2, 2]),
-                                  "ixy": float(I[0, 1]), "ixz": float(I[0, 2]), "iyz": float(I[1, 2])}})
+        parts.append(
+            {
+                "name": unique,
+                "shape": "custom",
+                "mass": float(inertial.mass),
+                "center_of_mass": [float(v) for v in pose.apply(inertial.com)],
+                "inertia": {
+                    "ixx": float(I[0, 0]),
+                    "iyy": float(I[1, 1]),
+                    "izz": float(I[2, 2]),
+                    "ixy": float(I[0, 1]),
+                    "ixz": float(I[0, 2]),
+                    "iyz": float(I[1, 2]),
+                },
+            }
+        )
     return {"name": model.name or "robot", "units": {"length": "m", "mass": "kg"}, "parts": parts}, left_out

@@ -31,8 +31,10 @@ def parse_joint_values(values: list[str] | None) -> dict[str, float]:
         except ValueError:
             q = math.nan
         if not sep or not name or not math.isfinite(q):
-            raise InputError(f"--joints: {value!r}: give NAME=VALUE with VALUE a finite number (radians for a "
-                             "revolute joint, metres for a prismatic one)")
+            raise InputError(
+                f"--joints: {value!r}: give NAME=VALUE with VALUE a finite number (radians for a "
+                "revolute joint, metres for a prismatic one)"
+            )
         found[name] = q
     return found
 
@@ -41,15 +43,21 @@ def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dic
     """Every link's frame in the model's frame (URDF: the root link's; SDF, MJCF: the world's)
     at the configuration ``joints`` (joint name → coordinate; others at the reference)."""
     joints = dict(joints or {})
-    movable = {m.name: m for link in model.links for m in link.motions
-               if m.name is not None and m.kind in ("revolute", "prismatic")}
+    movable = {
+        m.name: m
+        for link in model.links
+        for m in link.motions
+        if m.name is not None and m.kind in ("revolute", "prismatic")
+    }
     unknown = [name for name in joints if name not in movable]
     if unknown:
         import difflib
 
         hint = difflib.get_close_matches(unknown[0], list(movable), n=1)
-        raise InputError(f"--joints: {model.path} has no revolute or prismatic joint named {unknown[0]!r}"
-                         + (f" (did you mean {hint[0]!r}?)" if hint else ""))
+        raise InputError(
+            f"--joints: {model.path} has no revolute or prismatic joint named {unknown[0]!r}"
+            + (f" (did you mean {hint[0]!r}?)" if hint else "")
+        )
     by_name = {link.name: link for link in model.links}
     poses: dict[int, Pose] = {}
 

@@ -30,18 +30,34 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
     fastest = float(np.max(np.linalg.norm(probe.omega, axis=1)))
     needed = keyframes_needed(duration, fastest)
     if needed > MAX_KEYFRAMES:
-        raise InputError(f"--duration: {duration:g} s of this motion needs {needed:.3g} keyframes to play "
-                         f"smoothly, more than {MAX_KEYFRAMES}: shorten --duration")
+        raise InputError(
+            f"--duration: {duration:g} s of this motion needs {needed:.3g} keyframes to play "
+            f"smoothly, more than {MAX_KEYFRAMES}: shorten --duration"
+        )
     count = max(MIN_KEYFRAMES, needed, gif_frames)
     trajectory = probe if count == MIN_KEYFRAMES else integrate(run, count)
     if not (np.all(np.isfinite(trajectory.q)) and np.all(np.isfinite(trajectory.omega))):
-        raise InputError(f"{body.path}: the motion is not finite: the input values are too large for double precision")
-    title = (f"{label(body.name or body.path, 30)}: spin {float(np.linalg.norm(run.omega0)):g} rad/s, "
-             f"nudge {run.tilt_deg:g}°")
+        raise InputError(
+            f"{body.path}: the motion is not finite: the input values are too large for double precision"
+        )
+    title = (
+        f"{label(body.name or body.path, 30)}: spin {float(np.linalg.norm(run.omega0)):g} rad/s, "
+        f"nudge {run.tilt_deg:g}°"
+    )
     tilts = tilt_deg(trajectory.q, scene.spin_frame)
-    data = animation_data(title, part_geometry(body), scene, trajectory.t, trajectory.q, trajectory.omega, tilts,
-                          body.length_unit)
-    data["legend"] = (f"{part_count(data['parts'])} parts · red line: path of the axis tip over the last "
-                      f"{TRAIL_SECONDS:g} s · lengths in {body.length_unit}"
-                      + (" · on a pivot" if scene.pivoted else " · free body, about its centre of mass"))
+    data = animation_data(
+        title,
+        part_geometry(body),
+        scene,
+        trajectory.t,
+        trajectory.q,
+        trajectory.omega,
+        tilts,
+        body.length_unit,
+    )
+    data["legend"] = (
+        f"{part_count(data['parts'])} parts · red line: path of the axis tip over the last "
+        f"{TRAIL_SECONDS:g} s · lengths in {body.length_unit}"
+        + (" · on a pivot" if scene.pivoted else " · free body, about its centre of mass")
+    )
     return data, trajectory, tilts

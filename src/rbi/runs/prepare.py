@@ -67,7 +67,9 @@ def body_spin_axis(body, given=None) -> np.ndarray:
     if body.spin_axis is not None:
         return unit_vector(body.spin_axis)
     fixed = np.asarray(body.props.com if body.pivot is None else body.pivot, dtype=float)
-    return default_spin_axis(inertia_about(body.props, fixed), np.asarray(body.props.com, dtype=float) - fixed)
+    return default_spin_axis(
+        inertia_about(body.props, fixed), np.asarray(body.props.com, dtype=float) - fixed
+    )
 
 
 def initial_omega(spin, omega, spin_axis=(0.0, 0.0, 1.0)) -> list[float]:
@@ -93,17 +95,34 @@ def spin_axis_value(value) -> list[float] | None:
         if text.lstrip("+-") in named:
             return [sign * c + 0.0 for c in named[text.lstrip("+-")]]
         if "," not in text:
-            raise InputError(f"--spin-axis: must be x, y, z or a direction X,Y,Z in body axes (got {value!r})")
+            raise InputError(
+                f"--spin-axis: must be x, y, z or a direction X,Y,Z in body axes (got {value!r})"
+            )
     vector = vector_value(value, "--spin-axis")
     if not any(vector):
-        raise InputError("--spin-axis: must not be zero [0, 0, 0]: give a direction in body axes, e.g. 0,1,0 or y")
+        raise InputError(
+            "--spin-axis: must not be zero [0, 0, 0]: give a direction in body axes, e.g. 0,1,0 or y"
+        )
     from rbi.core.rotation import unit_vector
 
     return unit_vector(vector).tolist()
 
 
-def prepare_run(body, *, spin=None, omega=None, tilt=0.0, tilt_axis="y", gravity=None, duration=4.0,
-                method="default", rtol=None, max_steps=None, yes=False, spin_axis=None) -> PreparedRun:
+def prepare_run(
+    body,
+    *,
+    spin=None,
+    omega=None,
+    tilt=0.0,
+    tilt_axis="y",
+    gravity=None,
+    duration=4.0,
+    method="default",
+    rtol=None,
+    max_steps=None,
+    yes=False,
+    spin_axis=None,
+) -> PreparedRun:
     """Set up the run of a loaded ``body`` whose settings passed
     :func:`rbi.runs.settings.check_run_options`. A run estimated to need more integration steps
     than the budget (``max_steps``, default :data:`rbi.sim.budget.DEFAULT_MAX_STEPS`) is
@@ -122,6 +141,17 @@ def prepare_run(body, *, spin=None, omega=None, tilt=0.0, tilt_axis="y", gravity
             raise InputError(
                 f"{body.path}: this run is estimated to need about {needed:.2g} integration steps, more than the "
                 f"budget of {budget:.2g}: shorten --duration, lower the spin, loosen --rtol, or raise the budget "
-                f"with --max-steps N (or --yes to try anyway)")
-    return PreparedRun(body=body, scene=scene, q0=q0, omega0=omega0, tilt_deg=float(tilt),
-                       tilt_axis=tilt_axis.lower(), duration=float(duration), method=method, rtol=rtol, budget=budget)
+                f"with --max-steps N (or --yes to try anyway)"
+            )
+    return PreparedRun(
+        body=body,
+        scene=scene,
+        q0=q0,
+        omega0=omega0,
+        tilt_deg=float(tilt),
+        tilt_axis=tilt_axis.lower(),
+        duration=float(duration),
+        method=method,
+        rtol=rtol,
+        budget=budget,
+    )

@@ -3,8 +3,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 import numpy as np
 
@@ -31,25 +32,43 @@ def integrate(run: PreparedRun, samples: int, progress: Callable[[float], None] 
     from rbi.sim.api import SimulationError, simulate
 
     try:
-        return simulate(run.scene, run.q0, run.omega0, run.duration, samples, method=run.method, rtol=run.rtol,
-                        progress=progress, max_steps=run.budget)
+        return simulate(
+            run.scene,
+            run.q0,
+            run.omega0,
+            run.duration,
+            samples,
+            method=run.method,
+            rtol=run.rtol,
+            progress=progress,
+            max_steps=run.budget,
+        )
     except SimulationError as exc:
         raise InputError(f"{run.body.path}: {exc}") from None
 
 
-def simulate_run(run: PreparedRun, samples: int, *, error_estimate: bool = True,
-                 progress: Callable[[float], None] | None = None) -> SimulationRun:
+def simulate_run(
+    run: PreparedRun,
+    samples: int,
+    *,
+    error_estimate: bool = True,
+    progress: Callable[[float], None] | None = None,
+) -> SimulationRun:
     """Integrate ``run``, summarise it and (unless ``error_estimate`` is False or the method is
     the closed form) estimate its error by a tighter second run. A trajectory that overflowed
     is refused with :class:`InputError` (absurd spin or inertia)."""
     from rbi.sim.api import SimulationError
-    from rbi.sim.summary import error_estimate as estimate, sample_columns, summarize
+    from rbi.sim.summary import error_estimate as estimate
+    from rbi.sim.summary import sample_columns, summarize
 
     trajectory = integrate(run, samples, progress)
     try:
         figures = summarize(run.scene, trajectory, run.q0, run.omega0)
-        figures["error_estimate"] = (estimate(run.scene, trajectory, run.q0, run.omega0, max_steps=run.budget)
-                                     if error_estimate and run.method != "exact" else None)
+        figures["error_estimate"] = (
+            estimate(run.scene, trajectory, run.q0, run.omega0, max_steps=run.budget)
+            if error_estimate and run.method != "exact"
+            else None
+        )
     except SimulationError as exc:
         raise InputError(f"{run.body.path}: {exc}") from None
     columns = sample_columns(run.scene, trajectory)
@@ -64,9 +83,13 @@ def simulate_run(run: PreparedRun, samples: int, *, error_estimate: bool = True,
         "gravity": scene.gravity,
         "duration": run.duration,
         "samples": int(trajectory.t.size),
-        "initial": {"t": 0.0, "q": run.q0, "omega": run.omega0,
-                    "tilt_deg": initial_tilt_deg(run),
-                    "nudge_deg": run.tilt_deg},
+        "initial": {
+            "t": 0.0,
+            "q": run.q0,
+            "omega": run.omega0,
+            "tilt_deg": initial_tilt_deg(run),
+            "nudge_deg": run.tilt_deg,
+        },
     } | figures
     return SimulationRun(trajectory=trajectory, columns=columns, summary=summary)
 
@@ -82,8 +105,10 @@ def refuse_non_finite(path: str, columns: dict) -> None:
     """A trajectory that overflowed is bad input (absurd spin or inertia), never written out."""
     for name, values in columns.items():
         if name != "precession_deg" and not np.all(np.isfinite(values)):
-            raise InputError(f"{path}: the trajectory's {name} is not finite: the input values are too large "
-                             "for double precision")
+            raise InputError(
+                f"{path}: the trajectory's {name} is not finite: the input values are too large "
+                "for double precision"
+            )
 
 
 def trajectory_csv(columns: dict[str, np.ndarray]) -> str:

@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import math
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
@@ -96,9 +96,17 @@ def validate_run(duration: float, samples: int, rtol: float | None) -> None:
         raise ValueError(f"rtol must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
 
 
-def simulate(scene: Scene, q0, omega0, duration: float, samples: int, method: str = "default",
-             rtol: float | None = None, progress: Callable[[float], None] | None = None,
-             max_steps: int | None = None) -> Trajectory:
+def simulate(
+    scene: Scene,
+    q0,
+    omega0,
+    duration: float,
+    samples: int,
+    method: str = "default",
+    rtol: float | None = None,
+    progress: Callable[[float], None] | None = None,
+    max_steps: int | None = None,
+) -> Trajectory:
     """Integrate the scene from ``(q0, omega0)`` at t = 0 and sample it at
     :func:`sample_times` ``(duration, samples)``.
 
@@ -116,16 +124,18 @@ def simulate(scene: Scene, q0, omega0, duration: float, samples: int, method: st
     omega0 = np.asarray(omega0, dtype=float).reshape(3)
     t = sample_times(duration, samples)
     if method == "default":
-        return _run_compiled(scene, q0, omega0, t, DEFAULT_RTOL if rtol is None else rtol, progress, max_steps)
+        return _run_compiled(
+            scene, q0, omega0, t, DEFAULT_RTOL if rtol is None else rtol, progress, max_steps
+        )
     if method == "exact":
         return _run_exact(scene, q0, omega0, t)
     return _run_scipy(scene, q0, omega0, t, method, SCIPY_DEFAULT_RTOL if rtol is None else rtol)
 
 
-def _run_compiled(scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress,
-                  max_steps: int | None = None) -> Trajectory:
-    from rbi.sim.compiled import integrator
-    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL
+def _run_compiled(
+    scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress, max_steps: int | None = None
+) -> Trajectory:
+    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
 
     loaded = integrator()
     y = np.concatenate((q0, omega0))
@@ -144,20 +154,32 @@ def _run_compiled(scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress
         if status != STATUS_MORE:
             break
         if max_steps is not None and counts[1] >= max_steps:
-            raise SimulationError(f"stopped at t = {clock[0]:.6g} s after {int(counts[1]):,} steps, the step "
-                                  "budget (raise it with --max-steps)")
+            raise SimulationError(
+                f"stopped at t = {clock[0]:.6g} s after {int(counts[1]):,} steps, the step "
+                "budget (raise it with --max-steps)"
+            )
         if progress is not None and t_end > 0.0:
             progress(clock[0] / t_end)
     wall = time.perf_counter() - start
     if status != STATUS_DONE:
-        why = "the step size fell below the time resolution" if status == STATUS_STEP_TOO_SMALL else \
-            "the state stopped being finite (overflow)"
+        why = (
+            "the step size fell below the time resolution"
+            if status == STATUS_STEP_TOO_SMALL
+            else "the state stopped being finite (overflow)"
+        )
         raise SimulationError(f"integration failed at t = {clock[0]:.6g} s: {why}")
     if progress is not None:
         progress(1.0)
     return Trajectory(
-        t=t, q=out[:, :4].copy(), omega=out[:, 4:].copy(), steps=int(counts[1]), rhs_evals=int(counts[3]),
-        wall_seconds=wall, method="default", rtol=rtol, rejected_steps=int(counts[2]),
+        t=t,
+        q=out[:, :4].copy(),
+        omega=out[:, 4:].copy(),
+        steps=int(counts[1]),
+        rhs_evals=int(counts[3]),
+        wall_seconds=wall,
+        method="default",
+        rtol=rtol,
+        rejected_steps=int(counts[2]),
         integrator=f"DOP853, compiled ({loaded.how}), unit quaternion projection",
         load_seconds=loaded.load_seconds,
     )
@@ -177,8 +199,15 @@ def _run_scipy(scene: Scene, q0, omega0, t: np.ndarray, method: str, rtol: float
     q_raw = y[:4].T
     norms = np.linalg.norm(q_raw, axis=1)
     return Trajectory(
-        t=t, q=q_raw / norms[:, None], omega=y[4:].T.copy(), steps=steps, rhs_evals=nfev, wall_seconds=wall,
-        method=method, rtol=rtol, integrator=f"scipy solve_ivp {solver}, rtol {rtol:g}, atol {atol:g}, Python right-hand side",
+        t=t,
+        q=q_raw / norms[:, None],
+        omega=y[4:].T.copy(),
+        steps=steps,
+        rhs_evals=nfev,
+        wall_seconds=wall,
+        method=method,
+        rtol=rtol,
+        integrator=f"scipy solve_ivp {solver}, rtol {rtol:g}, atol {atol:g}, Python right-hand side",
         quaternion_norm_error=float(np.max(np.abs(norms - 1.0))),
     )
 
@@ -193,5 +222,13 @@ def _run_exact(scene: Scene, q0, omega0, t: np.ndarray) -> Trajectory:
         raise SimulationError(f"--method exact does not apply: {exc}") from None
     q, omega = solution.state_at(t)
     wall = time.perf_counter() - start
-    return Trajectory(t=t, q=q, omega=omega, steps=0, rhs_evals=0, wall_seconds=wall, method="exact",
-                      integrator=f"closed form: {solution.description}")
+    return Trajectory(
+        t=t,
+        q=q,
+        omega=omega,
+        steps=0,
+        rhs_evals=0,
+        wall_seconds=wall,
+        method="exact",
+        integrator=f"closed form: {solution.description}",
+    )

@@ -33,12 +33,14 @@ def python_rhs(scene: Scene):
         torque_body = R.T @ np.cross(R @ r_com, weight_world)
         alpha = inertia_inv @ (torque_body - np.cross(omega, inertia @ omega))
         w, x, yq, z = q
-        dq = 0.5 * np.array([
-            -x * omega[0] - yq * omega[1] - z * omega[2],
-            w * omega[0] + yq * omega[2] - z * omega[1],
-            w * omega[1] - x * omega[2] + z * omega[0],
-            w * omega[2] + x * omega[1] - yq * omega[0],
-        ])
+        dq = 0.5 * np.array(
+            [
+                -x * omega[0] - yq * omega[1] - z * omega[2],
+                w * omega[0] + yq * omega[2] - z * omega[1],
+                w * omega[1] - x * omega[2] + z * omega[0],
+                w * omega[2] + x * omega[1] - yq * omega[0],
+            ]
+        )
         return [*dq, *alpha]
 
     return f

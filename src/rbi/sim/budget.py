@@ -28,7 +28,9 @@ SCIPY_COST = {"rk45": 300.0, "dop853": 100.0}
 budget serves every method."""
 
 
-def estimated_steps(scene, omega0, duration: float, method: str = "default", rtol: float | None = None) -> float:
+def estimated_steps(
+    scene, omega0, duration: float, method: str = "default", rtol: float | None = None
+) -> float:
     """Roughly how many compiled-step equivalents integrating ``scene`` from body angular
     velocity ``omega0`` (rad/s) for ``duration`` seconds costs."""
     from rbi.sim.api import DEFAULT_RTOL, SCIPY_DEFAULT_RTOL
@@ -43,6 +45,12 @@ def estimated_steps(scene, omega0, duration: float, method: str = "default", rto
         tolerance = SCIPY_DEFAULT_RTOL if rtol is None else rtol
         # order 5 (rk45) / 8 (dop853): steps scale as rtol^(-1/order)
         order = 5.0 if method == "rk45" else 8.0
-        return SCIPY_COST[method] * STEPS_PER_RADIAN * radians * (DEFAULT_RTOL / tolerance) ** (1.0 / order) * 0.1
+        return (
+            SCIPY_COST[method]
+            * STEPS_PER_RADIAN
+            * radians
+            * (DEFAULT_RTOL / tolerance) ** (1.0 / order)
+            * 0.1
+        )
     tolerance = DEFAULT_RTOL if rtol is None else rtol
     return STEPS_PER_RADIAN * radians * (DEFAULT_RTOL / tolerance) ** 0.125

@@ -10,7 +10,8 @@ module's source, ``_dop853.pyx``, documents the equations and the integrator.
 from __future__ import annotations
 
 import time
-from typing import Callable, NamedTuple
+from collections.abc import Callable
+from typing import NamedTuple
 
 STATUS_DONE = 0
 STATUS_MORE = 1  # max_steps reached: call again to continue
@@ -42,7 +43,8 @@ def integrator() -> Loaded:
         except ImportError as exc:
             raise KernelMissing(
                 "the compiled simulation kernel is missing (rbi.sim._dop853): install rbi with "
-                "`pip install .` (or `pip install -e .`) from its source folder, which builds it") from exc
+                "`pip install .` (or `pip install -e .`) from its source folder, which builds it"
+            ) from exc
         how = "Cython, OpenMP" if _dop853.openmp_enabled() else "Cython"
         _LOADED = Loaded(_dop853.integrate, _dop853.integrate_batch, how, time.perf_counter() - start)
     return _LOADED

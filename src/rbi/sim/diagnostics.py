@@ -45,10 +45,15 @@ def in_spin_frame(q: np.ndarray, frame: np.ndarray | None) -> np.ndarray:
         return q
     w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
     fw, fx, fy, fz = (float(c) for c in frame)
-    return np.stack((w * fw - x * fx - y * fy - z * fz,
-                     w * fx + x * fw + y * fz - z * fy,
-                     w * fy - x * fz + y * fw + z * fx,
-                     w * fz + x * fy - y * fx + z * fw), axis=1)
+    return np.stack(
+        (
+            w * fw - x * fx - y * fy - z * fz,
+            w * fx + x * fw + y * fz - z * fy,
+            w * fy - x * fz + y * fw + z * fx,
+            w * fz + x * fy - y * fx + z * fw,
+        ),
+        axis=1,
+    )
 
 
 def spin_axis_in_world(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:
@@ -157,7 +162,11 @@ def conserved_quantities(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict
     else:
         h_world = angular_momentum_world(scene, q, omega)
         drift = float(np.max(np.linalg.norm(h_world - h_world[0], axis=1)))
-        out["h_world"] = {"initial": h_world[0], "drift": _relative(drift, h_size), "unit": "angular_momentum"}
+        out["h_world"] = {
+            "initial": h_world[0],
+            "drift": _relative(drift, h_size),
+            "unit": "angular_momentum",
+        }
     return out
 
 
@@ -171,8 +180,11 @@ def energy_conservation(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict[
 
 
 def _drift(values: np.ndarray, size: float, unit: str) -> dict[str, Any]:
-    return {"initial": float(values[0]), "drift": _relative(float(np.max(np.abs(values - values[0]))), size),
-            "unit": unit}
+    return {
+        "initial": float(values[0]),
+        "drift": _relative(float(np.max(np.abs(values - values[0]))), size),
+        "unit": unit,
+    }
 
 
 def _relative(change: float, size: float) -> float:
@@ -186,7 +198,7 @@ def orientation_error_deg(q: np.ndarray, r: np.ndarray) -> np.ndarray:
     q = np.atleast_2d(q) / np.linalg.norm(np.atleast_2d(q), axis=1)[:, None]
     r = np.atleast_2d(r) / np.linalg.norm(np.atleast_2d(r), axis=1)[:, None]
     scalar = np.einsum("ni,ni->n", q, r)
-    vector = (r[:, :1] * q[:, 1:] - q[:, :1] * r[:, 1:] - np.cross(r[:, 1:], q[:, 1:]))
+    vector = r[:, :1] * q[:, 1:] - q[:, :1] * r[:, 1:] - np.cross(r[:, 1:], q[:, 1:])
     angle = np.degrees(2.0 * np.arctan2(np.linalg.norm(vector, axis=1), np.abs(scalar)))
     return angle if angle.size > 1 else float(angle[0])
 
@@ -239,49 +251,71 @@ def com_elevation(scene: Scene, q0: np.ndarray) -> str:
 def _top_stability(scene: Scene, q0, omega0) -> dict[str, Any]:
     length = float(np.linalg.norm(scene.com_from_pivot))
     if length == 0.0 or scene.gravity <= 0.0:
-        return {"kind": "balanced", "verdict": "the centre of mass is at the pivot: gravity exerts no torque, "
-                                               "the body turns as a free body"}
+        return {
+            "kind": "balanced",
+            "verdict": "the centre of mass is at the pivot: gravity exerts no torque, "
+            "the body turns as a free body",
+        }
     where = com_elevation(scene, q0)
     said = {"above": "above", "below": "below", "level": "level with"}[where]
     threshold = sleeping_threshold(scene)
     if threshold is None:
-        return {"kind": "asymmetric top", "com_position": where,
-                "verdict": f"the centre of mass starts {said} the pivot, off any symmetry axis of the body, so the "
-                           "sleeping-top criterion does not apply: gravity pulls at a point off the spin axis "
-                           "and the top wobbles from the start"}
+        return {
+            "kind": "asymmetric top",
+            "com_position": where,
+            "verdict": f"the centre of mass starts {said} the pivot, off any symmetry axis of the body, so the "
+            "sleeping-top criterion does not apply: gravity pulls at a point off the spin axis "
+            "and the top wobbles from the start",
+        }
     axis = symmetry_axis(scene)
     spin = float(omega0 @ axis)
-    result = {"kind": "axisymmetric top", "com_position": where, "sleeping_threshold_rad_s": threshold["omega3"],
-              "spin_rad_s": spin, "above_threshold": abs(spin) > threshold["omega3"]}
+    result = {
+        "kind": "axisymmetric top",
+        "com_position": where,
+        "sleeping_threshold_rad_s": threshold["omega3"],
+        "spin_rad_s": spin,
+        "above_threshold": abs(spin) > threshold["omega3"],
+    }
     w = f"{abs(spin):.6g} rad/s"
     if where == "below":
-        result["verdict"] = ("the centre of mass starts below the pivot: the hanging position is stable "
-                             "whatever the spin")
+        result["verdict"] = (
+            "the centre of mass starts below the pivot: the hanging position is stable whatever the spin"
+        )
         return result
     if where == "level":
         if spin == 0.0:
-            result["verdict"] = ("the centre of mass starts level with the pivot and the body does not spin about "
-                                 "its axis: it swings down like a pendulum")
+            result["verdict"] = (
+                "the centre of mass starts level with the pivot and the body does not spin about "
+                "its axis: it swings down like a pendulum"
+            )
             return result
         rate = scene.mass * scene.gravity * threshold["l"] / (threshold["I3"] * abs(spin))
         result["gyroscopic_precession_rad_s"] = rate
-        result["verdict"] = (f"the centre of mass starts level with the pivot, spinning at {w} about its axis: "
-                             f"gravity's torque turns the axis sideways, a gyroscope precessing at about "
-                             f"{rate:.6g} rad/s (m g l / (I₃ ω), fast-spin approximation)")
+        result["verdict"] = (
+            f"the centre of mass starts level with the pivot, spinning at {w} about its axis: "
+            f"gravity's torque turns the axis sideways, a gyroscope precessing at about "
+            f"{rate:.6g} rad/s (m g l / (I₃ ω), fast-spin approximation)"
+        )
         return result
     limit = f"{threshold['omega3']:.6g} rad/s"
     up = float(up_in_body(q0)[0] @ axis)
     if abs(spin) > threshold["omega3"]:
-        result["verdict"] = (f"the centre of mass starts above the pivot; spin {w} is above the sleeping-top "
-                             f"threshold {limit} (ω₃² = 4 m g l I₁ / I₃²): the upright spin is stable, a small "
-                             f"tilt only nutates")
+        result["verdict"] = (
+            f"the centre of mass starts above the pivot; spin {w} is above the sleeping-top "
+            f"threshold {limit} (ω₃² = 4 m g l I₁ / I₃²): the upright spin is stable, a small "
+            f"tilt only nutates"
+        )
     else:
-        result["verdict"] = (f"the centre of mass starts above the pivot; spin {w} is below the sleeping-top "
-                             f"threshold {limit} (ω₃² = 4 m g l I₁ / I₃²): the upright spin is unstable, any small "
-                             f"tilt grows and the top falls away from vertical")
+        result["verdict"] = (
+            f"the centre of mass starts above the pivot; spin {w} is below the sleeping-top "
+            f"threshold {limit} (ω₃² = 4 m g l I₁ / I₃²): the upright spin is unstable, any small "
+            f"tilt grows and the top falls away from vertical"
+        )
         if up >= 1.0 and not np.any(np.cross(omega0, axis)):
-            result["verdict"] += (" (started exactly upright it stays up, an unstable equilibrium: any "
-                                  "perturbation, such as a nudge of --tilt 0.01, makes it fall)")
+            result["verdict"] += (
+                " (started exactly upright it stays up, an unstable equilibrium: any "
+                "perturbation, such as a nudge of --tilt 0.01, makes it fall)"
+            )
     return result
 
 
@@ -300,14 +334,17 @@ def _free_stability(scene: Scene, omega0) -> dict[str, Any]:
     equal_high = moments[2] - moments[1] <= AXISYMMETRY_RTOL * scale
     result = {"kind": "free body", "principal_moments": moments, "nearest_axis": nearest + 1}
     if equal_low or equal_high:
-        result["verdict"] = ("axisymmetric body: ω precesses steadily about the symmetry axis, "
-                             "the motion is stable")
+        result["verdict"] = (
+            "axisymmetric body: ω precesses steadily about the symmetry axis, the motion is stable"
+        )
         return result
     name = ("smallest", "intermediate", "largest")[nearest]
     if nearest == 1:
         result["intermediate_axis"] = True
-        result["verdict"] = ("spin near the intermediate principal axis: unstable (Dzhanibekov effect), "
-                             "the body flips over periodically")
+        result["verdict"] = (
+            "spin near the intermediate principal axis: unstable (Dzhanibekov effect), "
+            "the body flips over periodically"
+        )
     else:
         result["intermediate_axis"] = False
         result["verdict"] = f"spin near the {name}-moment principal axis: stable (the body wobbles about it)"

@@ -17,8 +17,8 @@ from __future__ import annotations
 
 import math
 
-_RF_FACTOR = (3.0 * 2.0 ** -53) ** (-1.0 / 6.0)
-_RJ_FACTOR = (0.25 * 2.0 ** -53) ** (-1.0 / 6.0)
+_RF_FACTOR = (3.0 * 2.0**-53) ** (-1.0 / 6.0)
+_RJ_FACTOR = (0.25 * 2.0**-53) ** (-1.0 / 6.0)
 
 
 def carlson_rf(x: float, y: float, z: float) -> float:
@@ -74,11 +74,18 @@ def carlson_rj(x: float, y: float, z: float, p: float) -> float:
     dx, dy, dz = ((a0 - v) * scale / a for v in (x0, y0, z0))
     dp = -0.5 * (dx + dy + dz)
     e2 = dx * dy + dx * dz + dy * dz - 3.0 * dp * dp
-    e3 = dx * dy * dz + 2.0 * e2 * dp + 4.0 * dp ** 3
-    e4 = (2.0 * dx * dy * dz + e2 * dp + 3.0 * dp ** 3) * dp
+    e3 = dx * dy * dz + 2.0 * e2 * dp + 4.0 * dp**3
+    e4 = (2.0 * dx * dy * dz + e2 * dp + 3.0 * dp**3) * dp
     e5 = dx * dy * dz * dp * dp
-    series = (1.0 - 3.0 * e2 / 14.0 + e3 / 6.0 + 9.0 * e2 * e2 / 88.0 - 3.0 * e4 / 22.0
-              - 9.0 * e2 * e3 / 52.0 + 3.0 * e5 / 26.0)
+    series = (
+        1.0
+        - 3.0 * e2 / 14.0
+        + e3 / 6.0
+        + 9.0 * e2 * e2 / 88.0
+        - 3.0 * e4 / 22.0
+        - 9.0 * e2 * e3 / 52.0
+        + 3.0 * e5 / 26.0
+    )
     return scale * series / (a * math.sqrt(a)) + 6.0 * total
 
 

@@ -53,16 +53,20 @@ class NotIntegrable(ValueError):
 
 # --- quaternion helpers (rows are samples) ---------------------------------------------------
 
+
 def _qmul(p: np.ndarray, r: np.ndarray) -> np.ndarray:
     """Hamilton product of quaternion arrays (..., 4), broadcasting."""
     pw, px, py, pz = np.moveaxis(np.asarray(p, dtype=float), -1, 0)
     rw, rx, ry, rz = np.moveaxis(np.asarray(r, dtype=float), -1, 0)
-    return np.stack([
-        pw * rw - px * rx - py * ry - pz * rz,
-        pw * rx + px * rw + py * rz - pz * ry,
-        pw * ry - px * rz + py * rw + pz * rx,
-        pw * rz + px * ry - py * rx + pz * rw,
-    ], axis=-1)
+    return np.stack(
+        [
+            pw * rw - px * rx - py * ry - pz * rz,
+            pw * rx + px * rw + py * rz - pz * ry,
+            pw * ry - px * rz + py * rw + pz * rx,
+            pw * rz + px * ry - py * rx + pz * rw,
+        ],
+        axis=-1,
+    )
 
 
 def _conj(q: np.ndarray) -> np.ndarray:
@@ -96,6 +100,7 @@ def _normalised(q: np.ndarray) -> np.ndarray:
 
 # --- elliptic integrals ----------------------------------------------------------------------
 
+
 def _pi_incomplete(n: float, phi: np.ndarray, m: float) -> np.ndarray:
     """Π(n; φ | m) = ∫₀^φ dθ / ((1 − n sin²θ) √(1 − m sin²θ)) for |φ| ≤ π/2 (Carlson form)."""
     from scipy.special import elliprf, elliprj
@@ -105,7 +110,7 @@ def _pi_incomplete(n: float, phi: np.ndarray, m: float) -> np.ndarray:
     d2 = 1.0 - m * s * s
     value = s * elliprf(c2, d2, 1.0)
     if n != 0.0:
-        value = value + (n / 3.0) * s ** 3 * elliprj(c2, d2, 1.0, 1.0 - n * s * s)
+        value = value + (n / 3.0) * s**3 * elliprj(c2, d2, 1.0, 1.0 - n * s * s)
     return value
 
 
@@ -123,7 +128,9 @@ class _Elliptic:
         from rbi.sim.elliptic import ellipk
 
         if not 0.0 <= m < 1.0:
-            raise NotIntegrable(f"elliptic parameter m = {m!r} outside [0, 1) (the motion is on a separatrix)")
+            raise NotIntegrable(
+                f"elliptic parameter m = {m!r} outside [0, 1) (the motion is on a separatrix)"
+            )
         self.m = m
         self.K = ellipk(m)  # scalars in plain Python: the facts of a run need no scipy import
 
@@ -149,6 +156,7 @@ class _Elliptic:
 
 
 # --- solutions ---------------------------------------------------------------------------------
+
 
 class UniformRotation:
     """Steady rotation with constant body ω about a principal axis (that axis then stays
@@ -201,8 +209,11 @@ class SymmetricFreeBody:
         return q, omega
 
     def facts(self) -> dict[str, Any]:
-        return {"kind": "symmetric free body", "precession_rate_rad_s": self.h / self.I_t,
-                "body_spin_rate_rad_s": self.spin_rate}
+        return {
+            "kind": "symmetric free body",
+            "precession_rate_rad_s": self.h / self.I_t,
+            "body_spin_rate_rad_s": self.spin_rate,
+        }
 
 
 def _rotate_into_body(q: np.ndarray, v_world: np.ndarray) -> np.ndarray:
@@ -233,7 +244,11 @@ class EulerPoinsot:
         self.M = math.sqrt(I1 * I1 * p * p + I2 * I2 * q * q + I3 * I3 * r * r)
         if b < 0.0:  # about axis 3: ω = (s A1 cn, A2 sn, s A3 dn)
             self.polar = 3
-            A1, A2, A3 = math.sqrt(a3 / (I1 * (I3 - I1))), math.sqrt(a3 / (I2 * (I3 - I2))), math.sqrt(a1 / (I3 * (I3 - I1)))
+            A1, A2, A3 = (
+                math.sqrt(a3 / (I1 * (I3 - I1))),
+                math.sqrt(a3 / (I2 * (I3 - I2))),
+                math.sqrt(a1 / (I3 * (I3 - I1))),
+            )
             self.lam = math.sqrt((I3 - I2) * a1 / (I1 * I2 * I3))
             m = (I2 - I1) * a3 / ((I3 - I2) * a1)
             s = math.copysign(1.0, r)
@@ -245,7 +260,11 @@ class EulerPoinsot:
             n1_over_d1 = 1.0 / I3
         else:  # about axis 1: ω = (s A1 dn, A2 sn, s A3 cn)
             self.polar = 1
-            A1, A2, A3 = math.sqrt(a3 / (I1 * (I3 - I1))), math.sqrt(a1 / (I2 * (I2 - I1))), math.sqrt(a1 / (I3 * (I3 - I1)))
+            A1, A2, A3 = (
+                math.sqrt(a3 / (I1 * (I3 - I1))),
+                math.sqrt(a1 / (I2 * (I2 - I1))),
+                math.sqrt(a1 / (I3 * (I3 - I1))),
+            )
             self.lam = math.sqrt((I2 - I1) * a3 / (I1 * I2 * I3))
             m = (I3 - I2) * a1 / ((I2 - I1) * a3) if a3 > 0 else 0.0
             s = math.copysign(1.0, p)
@@ -263,13 +282,17 @@ class EulerPoinsot:
         self.nu = -d1 / d0
         self.h_cn, self.h_sn = I_cn * A_cn, I_sn * A_sn
         self.rate_mean_part = self.M * n1_over_d1
-        self.rate_periodic = self.M * I_cn * I_sn * (A_cn * A_sn) ** 2 * (I_sn - I_cn) / (d0 * d1) if d1 != 0 else 0.0
+        self.rate_periodic = (
+            self.M * I_cn * I_sn * (A_cn * A_sn) ** 2 * (I_sn - I_cn) / (d0 * d1) if d1 != 0 else 0.0
+        )
         self.G0 = float(self.ell.G(self.nu, np.array([self.tau0]))[0])
         # fixed frame: q_wb(t) = q_wH ⊗ zxz(φ, θ, ψ) ⊗ q_tb
         rows = axes[list(self.triad)]
         self.q_tb = _frame_quaternion(rows)
         phi0, theta0, psi0 = self._angles(np.array([0.0]))
-        self.q_wH = _qmul(_qmul(np.asarray(q0, dtype=float), _conj(self.q_tb)), _conj(_zxz(phi0, theta0, psi0)))[0]
+        self.q_wH = _qmul(
+            _qmul(np.asarray(q0, dtype=float), _conj(self.q_tb)), _conj(_zxz(phi0, theta0, psi0))
+        )[0]
         self.description = "torque-free asymmetric body (Jacobi elliptic functions, elliptic integrals)"
 
     def omega_principal(self, t: np.ndarray) -> np.ndarray:
@@ -305,7 +328,9 @@ class EulerPoinsot:
         psi = self._psi(am + np.pi * j)
         phi = self.rate_mean_part * t
         if self.rate_periodic != 0.0:
-            phi = phi + self.rate_periodic / self.lam * (self.ell.G(self.nu, self.lam * t + self.tau0) - self.G0)
+            phi = phi + self.rate_periodic / self.lam * (
+                self.ell.G(self.nu, self.lam * t + self.tau0) - self.G0
+            )
         return phi, theta, psi
 
     def state_at(self, t: np.ndarray):
@@ -321,8 +346,13 @@ class EulerPoinsot:
         return 4.0 * self.ell.K / self.lam
 
     def facts(self) -> dict[str, Any]:
-        return {"kind": "asymmetric free body", "circulates_about_axis": self.polar, "elliptic_parameter": self.ell.m,
-                "omega_period_s": self.period, "half_period_s": 0.5 * self.period}
+        return {
+            "kind": "asymmetric free body",
+            "circulates_about_axis": self.polar,
+            "elliptic_parameter": self.ell.m,
+            "omega_period_s": self.period,
+            "half_period_s": 0.5 * self.period,
+        }
 
 
 class LagrangeTop:
@@ -359,8 +389,8 @@ class LagrangeTop:
         self.w3 = float(w_t[2])
         h_t = np.array([self.I1 * w_t[0], self.I1 * w_t[1], self.I3 * w_t[2]])
         hz = float(R[2] @ h_t)
-        energy = 0.5 * (self.I1 * (w_t[0] ** 2 + w_t[1] ** 2) + self.I3 * self.w3 ** 2) + self.mgl * self.u0
-        self.alpha = (2.0 * energy - self.I3 * self.w3 ** 2) / self.I1
+        energy = 0.5 * (self.I1 * (w_t[0] ** 2 + w_t[1] ** 2) + self.I3 * self.w3**2) + self.mgl * self.u0
+        self.alpha = (2.0 * energy - self.I3 * self.w3**2) / self.I1
         self.beta = 2.0 * self.mgl / self.I1
         self.a = hz / self.I1
         self.b = self.I3 * self.w3 / self.I1
@@ -368,18 +398,24 @@ class LagrangeTop:
         if sin_theta0 == 0.0:
             if transverse == 0.0:
                 raise _Sleeping()
-            raise NotIntegrable("the top starts exactly upright with a transverse ω: its axis passes through the "
-                                "vertical, where the Euler angles of the closed form break down")
+            raise NotIntegrable(
+                "the top starts exactly upright with a transverse ω: its axis passes through the "
+                "vertical, where the Euler angles of the closed form break down"
+            )
         self.u1, self.u2, self.u3 = self._roots(-sin_theta0 * theta_dot0)
         self.delta = self.u2 - self.u1
         if 1.0 - self.u2 <= VERTICAL_MARGIN or 1.0 + self.u1 <= VERTICAL_MARGIN:
-            raise NotIntegrable("the top's axis passes through the vertical (straight up or down), where the "
-                                "Euler angles of the closed form break down")
+            raise NotIntegrable(
+                "the top's axis passes through the vertical (straight up or down), where the "
+                "Euler angles of the closed form break down"
+            )
         self.sigma_rate = 0.5 * math.sqrt(self.beta * (self.u3 - self.u1))
         self.ell = _Elliptic(self.delta / (self.u3 - self.u1))
         u_dot0 = -sin_theta0 * theta_dot0
         ratio = min(max((self.u0 - self.u1) / self.delta, 0.0), 1.0) if self.delta > 0 else 0.0
-        self.sigma0 = math.copysign(self.ell.F(math.asin(math.sqrt(ratio))), u_dot0 if u_dot0 != 0 else (1.0 if ratio > 0.5 else -1.0))
+        self.sigma0 = math.copysign(
+            self.ell.F(math.asin(math.sqrt(ratio))), u_dot0 if u_dot0 != 0 else (1.0 if ratio > 0.5 else -1.0)
+        )
         self.n_plus = self.delta / (1.0 - self.u1)
         self.n_minus = -self.delta / (1.0 + self.u1)
         self._J0: tuple[float, float] | None = None
@@ -449,9 +485,14 @@ class LagrangeTop:
         phi, theta, psi, phi_dot, theta_dot = self._angles(t)
         q = _normalised(_qmul(_zxz(phi, theta, psi), self.q_tb))
         st = np.sin(theta)
-        w_t = np.stack((phi_dot * st * np.sin(psi) + theta_dot * np.cos(psi),
-                        phi_dot * st * np.cos(psi) - theta_dot * np.sin(psi),
-                        np.full_like(t, self.w3)), axis=-1)
+        w_t = np.stack(
+            (
+                phi_dot * st * np.sin(psi) + theta_dot * np.cos(psi),
+                phi_dot * st * np.cos(psi) - theta_dot * np.sin(psi),
+                np.full_like(t, self.w3),
+            ),
+            axis=-1,
+        )
         return q, w_t @ self.rows
 
     @property
@@ -470,14 +511,20 @@ class LagrangeTop:
         period_sigma = 2.0 * self.ell.K
         jp = 2.0 * _pi_complete(self.n_plus, self.ell.m) / (self.sigma_rate * (1.0 - self.u1))
         jm = 2.0 * _pi_complete(self.n_minus, self.ell.m) / (self.sigma_rate * (1.0 + self.u1))
-        return (0.5 * (self.a - self.b) * jp + 0.5 * (self.a + self.b) * jm) / (period_sigma / self.sigma_rate)
+        return (0.5 * (self.a - self.b) * jp + 0.5 * (self.a + self.b) * jm) / (
+            period_sigma / self.sigma_rate
+        )
 
     def facts(self) -> dict[str, Any]:
         low, high = self.tilt_bounds_deg
-        return {"kind": "Lagrange top", "nutation_tilt_min_deg": low, "nutation_tilt_max_deg": high,
-                "nutation_period_s": self.nutation_period,
-                "mean_precession_rate_deg_s": math.degrees(self.mean_precession_rate),
-                "cos_tilt_roots": [self.u1, self.u2, self.u3]}
+        return {
+            "kind": "Lagrange top",
+            "nutation_tilt_min_deg": low,
+            "nutation_tilt_max_deg": high,
+            "nutation_period_s": self.nutation_period,
+            "mean_precession_rate_deg_s": math.degrees(self.mean_precession_rate),
+            "cos_tilt_roots": [self.u1, self.u2, self.u3],
+        }
 
 
 class _Sleeping(Exception):
@@ -494,8 +541,10 @@ def solve(scene: Scene, q0, omega0):
         return _free(scene, q0, omega0)
     axis = symmetry_axis(scene)
     if axis is None:
-        raise NotIntegrable("a heavy top has a closed form only when it is axisymmetric about the pivot with its "
-                            "centre of mass on the axis (Lagrange top); this one is not")
+        raise NotIntegrable(
+            "a heavy top has a closed form only when it is axisymmetric about the pivot with its "
+            "centre of mass on the axis (Lagrange top); this one is not"
+        )
     try:
         return LagrangeTop(scene, q0, omega0, axis)
     except _Sleeping:

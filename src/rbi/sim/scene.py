@@ -91,8 +91,9 @@ class Scene:
         return float(np.sqrt(moment / self.principal_moments[-1]))
 
 
-def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravity: float,
-                          spin_axis=None) -> Scene:
+def scene_from_properties(
+    props: MassProperties, pivot: np.ndarray | None, gravity: float, spin_axis=None
+) -> Scene:
     """The scene of a body with mass properties ``props``.
 
     pivot: the fixed point in body coordinates (L), or None for a free body (gravity is then
@@ -121,7 +122,8 @@ def scene_from_properties(props: MassProperties, pivot: np.ndarray | None, gravi
         raise ValueError(
             f"the inertia about the {where} is singular (principal moments {moments[0]:.3g} and "
             f"{moments[-1]:.3g}): all the mass lies on a line through the {where}, so a spin about "
-            f"that line has no inertia and the motion is undefined")
+            f"that line has no inertia and the motion is undefined"
+        )
     if spin_axis is None:
         axis = default_spin_axis(inertia, com_from_pivot)
     else:
@@ -151,6 +153,9 @@ def initial_state(tilt_deg: float, omega_body, tilt_axis: str = "y") -> tuple[np
     half = 0.5 * np.radians(float(tilt_deg))
     if tilt_axis not in ("x", "y"):
         raise ValueError(f"tilt_axis must be 'x' or 'y' (got {tilt_axis!r})")
-    q0 = np.array([np.cos(half), np.sin(half), 0.0, 0.0]) if tilt_axis == "x" else \
-        np.array([np.cos(half), 0.0, np.sin(half), 0.0])
+    q0 = (
+        np.array([np.cos(half), np.sin(half), 0.0, 0.0])
+        if tilt_axis == "x"
+        else np.array([np.cos(half), 0.0, np.sin(half), 0.0])
+    )
     return q0, np.array(omega_body, dtype=float).reshape(3)

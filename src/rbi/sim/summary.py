@@ -30,8 +30,13 @@ def sample_columns(scene: Scene, trajectory: Trajectory) -> dict[str, np.ndarray
     q, omega = trajectory.q, trajectory.omega
     return {
         "t": trajectory.t,
-        "qw": q[:, 0], "qx": q[:, 1], "qy": q[:, 2], "qz": q[:, 3],
-        "wx": omega[:, 0], "wy": omega[:, 1], "wz": omega[:, 2],
+        "qw": q[:, 0],
+        "qx": q[:, 1],
+        "qy": q[:, 2],
+        "qz": q[:, 3],
+        "wx": omega[:, 0],
+        "wy": omega[:, 1],
+        "wz": omega[:, 2],
         "tilt_deg": diagnostics.tilt_deg(q, scene.spin_frame),
         "precession_deg": diagnostics.precession_deg(q, scene.spin_frame),
         "energy": diagnostics.energy(scene, q, omega),
@@ -50,7 +55,9 @@ def reference_rtol(trajectory: Trajectory) -> float | None:
     return reference if reference < rtol else None
 
 
-def error_estimate(scene: Scene, trajectory: Trajectory, q0, omega0, max_steps: int | None = None) -> dict[str, Any]:
+def error_estimate(
+    scene: Scene, trajectory: Trajectory, q0, omega0, max_steps: int | None = None
+) -> dict[str, Any]:
     """Estimate the trajectory's error by a second run of the default (compiled) method at
     :func:`reference_rtol`: the largest orientation difference over the samples
     (deg) and the largest ω difference (rad/s, and relative to the largest |ω|). At the
@@ -58,13 +65,26 @@ def error_estimate(scene: Scene, trajectory: Trajectory, q0, omega0, max_steps: 
     ``reference`` says why."""
     rtol = reference_rtol(trajectory)
     if rtol is None:
-        return {"reference": f"not available: rtol {trajectory.rtol:g} is already the tightest the integrator "
-                             "accepts, so no tighter run can check it",
-                "orientation_deg": None, "omega_rad_s": None, "omega_relative": None,
-                "final_orientation_deg": None, "final_omega_rad_s": None}
+        return {
+            "reference": f"not available: rtol {trajectory.rtol:g} is already the tightest the integrator "
+            "accepts, so no tighter run can check it",
+            "orientation_deg": None,
+            "omega_rad_s": None,
+            "omega_relative": None,
+            "final_orientation_deg": None,
+            "final_omega_rad_s": None,
+        }
     duration = float(trajectory.t[-1])
-    reference = simulate(scene, q0, omega0, duration, trajectory.t.size, method="default", rtol=rtol,
-                         max_steps=None if max_steps is None else 4 * max_steps)
+    reference = simulate(
+        scene,
+        q0,
+        omega0,
+        duration,
+        trajectory.t.size,
+        method="default",
+        rtol=rtol,
+        max_steps=None if max_steps is None else 4 * max_steps,
+    )
     angle = np.atleast_1d(diagnostics.orientation_error_deg(trajectory.q, reference.q))
     d_omega = float(np.max(np.abs(trajectory.omega - reference.omega)))
     size = float(np.max(np.linalg.norm(reference.omega, axis=1)))
@@ -83,17 +103,25 @@ def motion_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray
     vertical (min, max, final; deg), mean precession rate (deg/s; None when the axis stood
     vertical at some sample, where the azimuth is undefined) and the conserved quantities with
     their relative drift."""
-    return {**tilt_figures(t, q, scene.spin_frame), "conserved": diagnostics.conserved_quantities(scene, q, omega)}
+    return {
+        **tilt_figures(t, q, scene.spin_frame),
+        "conserved": diagnostics.conserved_quantities(scene, q, omega),
+    }
 
 
 def sweep_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
     """What a sweep row reports of a run: :func:`motion_figures`' tilts and precession rate and
     the energy's drift, computed by the same functions (so equal to a single run's), without
     the other conserved quantities."""
-    return {**tilt_figures(t, q, scene.spin_frame), "energy_drift": diagnostics.energy_conservation(scene, q, omega)["drift"]}
+    return {
+        **tilt_figures(t, q, scene.spin_frame),
+        "energy_drift": diagnostics.energy_conservation(scene, q, omega)["drift"],
+    }
 
 
-def sweep_figures_batch(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> list[dict[str, Any]]:
+def sweep_figures_batch(
+    scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray
+) -> list[dict[str, Any]]:
     """:func:`sweep_figures` of B runs of one scene at once (q (B, N, 4), omega (B, N, 3)): the
     same element-wise functions on all samples together and the same reductions per run, so
     the same numbers for a fraction of the per-call overhead."""
@@ -117,9 +145,15 @@ def sweep_figures_batch(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.nd
             rate = float((azimuth[b, -1] - azimuth[b, 0]) / duration)
         else:
             rate = 0.0
-        out.append({"min_tilt_deg": float(np.min(tilt[b])), "max_tilt_deg": float(np.max(tilt[b])),
-                    "final_tilt_deg": float(tilt[b, -1]), "precession_rate_deg_s": rate,
-                    "energy_drift": diagnostics._relative(float(change[b]), float(size[b]))})
+        out.append(
+            {
+                "min_tilt_deg": float(np.min(tilt[b])),
+                "max_tilt_deg": float(np.max(tilt[b])),
+                "final_tilt_deg": float(tilt[b, -1]),
+                "precession_rate_deg_s": rate,
+                "energy_drift": diagnostics._relative(float(change[b]), float(size[b])),
+            }
+        )
     return out
 
 
@@ -133,8 +167,12 @@ def tilt_figures(t: np.ndarray, q: np.ndarray, frame: np.ndarray | None = None) 
         rate_deg = None
     else:
         rate_deg = float((precession[-1] - precession[0]) / duration) if duration > 0 and t.size > 1 else 0.0
-    return {"min_tilt_deg": float(np.min(tilt)), "max_tilt_deg": float(np.max(tilt)),
-            "final_tilt_deg": float(tilt[-1]), "precession_rate_deg_s": rate_deg}
+    return {
+        "min_tilt_deg": float(np.min(tilt)),
+        "max_tilt_deg": float(np.max(tilt)),
+        "final_tilt_deg": float(tilt[-1]),
+        "precession_rate_deg_s": rate_deg,
+    }
 
 
 def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any]:
@@ -173,7 +211,12 @@ def closed_form_facts(scene: Scene, q0, omega0) -> dict[str, Any] | None:
     Lagrange top, period of ω of a free body ...), or None when the scene has none."""
     from rbi.sim import exact
 
-    if scene.pivoted and scene.gravity > 0 and np.any(scene.com_from_pivot) and diagnostics.symmetry_axis(scene) is None:
+    if (
+        scene.pivoted
+        and scene.gravity > 0
+        and np.any(scene.com_from_pivot)
+        and diagnostics.symmetry_axis(scene) is None
+    ):
         return None  # a heavy asymmetric top: no closed form (checked here to avoid importing scipy)
     try:
         return exact.solve(scene, q0, omega0).facts()

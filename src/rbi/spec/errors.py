@@ -6,7 +6,6 @@ import difflib
 import re
 from typing import Any
 
-
 from rbi.errors import InputError  # noqa: F401  (the spec layer's errors are InputErrors)
 
 
@@ -79,8 +78,11 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
     if kind == "union_tag_invalid":
         shapes = re.findall(r"'([^']+)'", str(ctx.get("expected_tags", "")))
         hint = difflib.get_close_matches(str(ctx.get("tag")), shapes, n=1)
-        return (f"shape: unknown shape {_show(ctx.get('tag'))}" + (f" (did you mean '{hint[0]}'?)" if hint else "")
-                + f"; expected one of {ctx.get('expected_tags')}")
+        return (
+            f"shape: unknown shape {_show(ctx.get('tag'))}"
+            + (f" (did you mean '{hint[0]}'?)" if hint else "")
+            + f"; expected one of {ctx.get('expected_tags')}"
+        )
     if kind == "union_tag_not_found":
         return "shape: missing required field (which solid is this part?)"
     if kind in ("model_type", "model_attributes_type", "dict_type"):

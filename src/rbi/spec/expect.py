@@ -8,7 +8,8 @@ from __future__ import annotations
 
 from pydantic import ConfigDict, Field, model_validator
 
-from rbi.spec.fields import AboutPoint, InertiaMatrix, Number, StrictModel as _Strict, Tolerance, Vector3
+from rbi.spec.fields import AboutPoint, InertiaMatrix, Number, Tolerance, Vector3
+from rbi.spec.fields import StrictModel as _Strict
 
 
 class _BuiltWhenUsed(_Strict):
@@ -19,28 +20,40 @@ class _BuiltWhenUsed(_Strict):
 
 class ScalarExpectation(_BuiltWhenUsed):
     value: Number = Field(description="Expected value, in the file's units.")
-    tol: Tolerance = Field(description="Allowed deviation: an absolute number in file units, or a percentage such as 1%.")
+    tol: Tolerance = Field(
+        description="Allowed deviation: an absolute number in file units, or a percentage such as 1%."
+    )
 
 
 class VectorExpectation(_BuiltWhenUsed):
     value: Vector3 = Field(description="Expected point [x, y, z], body frame, file units.")
-    tol: Tolerance = Field(description="Allowed deviation of each component: an absolute number in file units, or a percentage.")
+    tol: Tolerance = Field(
+        description="Allowed deviation of each component: an absolute number in file units, or a percentage."
+    )
 
 
 class MomentsExpectation(_BuiltWhenUsed):
     """Principal moments (compared in ascending order) about ``about``."""
 
     value: Vector3 = Field(description="Expected principal moments, ascending, mass·length².")
-    tol: Tolerance = Field(description="Allowed deviation of each moment: an absolute number, or a percentage.")
-    about: AboutPoint = Field("com", description="Point the moments are about: com, origin, pivot or [x, y, z].")
+    tol: Tolerance = Field(
+        description="Allowed deviation of each moment: an absolute number, or a percentage."
+    )
+    about: AboutPoint = Field(
+        "com", description="Point the moments are about: com, origin, pivot or [x, y, z]."
+    )
 
 
 class InertiaExpectation(_BuiltWhenUsed):
     """The inertia matrix about ``about``, body axes."""
 
     value: InertiaMatrix = Field(description="Expected inertia matrix, body axes, mass·length².")
-    tol: Tolerance = Field(description="Allowed deviation of each entry: an absolute number, or a percentage.")
-    about: AboutPoint = Field("com", description="Point the inertia is about: com, origin, pivot or [x, y, z].")
+    tol: Tolerance = Field(
+        description="Allowed deviation of each entry: an absolute number, or a percentage."
+    )
+    about: AboutPoint = Field(
+        "com", description="Point the inertia is about: com, origin, pivot or [x, y, z]."
+    )
 
 
 class Expect(_BuiltWhenUsed):

@@ -49,6 +49,7 @@ def _looks_numeric(text: str) -> bool:
 
 # --- true or false ---------------------------------------------------------------------------
 
+
 def _flag(value: Any) -> bool:
     if not isinstance(value, bool):
         raise ValueError(f"must be true or false (got {_show(value)})")
@@ -59,6 +60,7 @@ Flag = Annotated[Any, PlainValidator(_flag), WithJsonSchema({"type": "boolean"})
 
 
 # --- non-negative number -------------------------------------------------------------------
+
 
 def _non_negative(value: float) -> float:
     if value < 0:
@@ -74,6 +76,7 @@ NonNegative = Annotated[
 
 
 # --- density: a number or a material name ----------------------------------------------------
+
 
 def _density(value: Any) -> float | str:
     if isinstance(value, str):
@@ -97,9 +100,12 @@ def _material_names() -> list[str]:
 def _any_case_pattern(names: list[str]) -> str:
     """A regular expression matching any of ``names`` in any case, a space, ``_`` or ``-``
     standing for one another (JSON Schema patterns have no case-insensitive flag)."""
+
     def one(name: str) -> str:
-        return "".join(f"[{c.lower()}{c.upper()}]" if c.isalpha() else "[ _-]" if c in " _-" else re.escape(c)
-                       for c in name)
+        return "".join(
+            f"[{c.lower()}{c.upper()}]" if c.isalpha() else "[ _-]" if c in " _-" else re.escape(c)
+            for c in name
+        )
 
     return "^(?:" + "|".join(one(name) for name in names) + ")$"
 
@@ -107,24 +113,31 @@ def _any_case_pattern(names: list[str]) -> str:
 Density = Annotated[
     Any,
     PlainValidator(_density),
-    WithJsonSchema({
-        "anyOf": [
-            {"type": "number", "exclusiveMinimum": 0},
-            {"type": "string", "enum": _material_names()},
-            {"type": "string", "pattern": _any_case_pattern(_material_names()),
-             "description": "A material name above in any case, with spaces, _ or - alike (e.g. Stainless_Steel)."},
-        ],
-        "description": "Mass per length³ in the file's units, or a built-in material name "
-                       "(converted from kg/m³ to the file's units).",
-    }),
+    WithJsonSchema(
+        {
+            "anyOf": [
+                {"type": "number", "exclusiveMinimum": 0},
+                {"type": "string", "enum": _material_names()},
+                {
+                    "type": "string",
+                    "pattern": _any_case_pattern(_material_names()),
+                    "description": "A material name above in any case, with spaces, _ or - alike (e.g. Stainless_Steel).",
+                },
+            ],
+            "description": "Mass per length³ in the file's units, or a built-in material name "
+            "(converted from kg/m³ to the file's units).",
+        }
+    ),
 ]
 
 
 # --- inertia matrix: 3×3 or six components -------------------------------------------------
 
 _COMPONENTS = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
-_MATRIX_FORMS = ("a 3×3 matrix [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] or a mapping "
-                 "{ixx, iyy, izz, ixy, ixz, iyz}")
+_MATRIX_FORMS = (
+    "a 3×3 matrix [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] or a mapping "
+    "{ixx, iyy, izz, ixy, ixz, iyz}"
+)
 
 
 def _inertia_matrix(value: Any) -> list[list[float]]:
@@ -136,8 +149,16 @@ def _inertia_matrix(value: Any) -> list[list[float]]:
         if missing:
             raise ValueError(f"{missing[0]}: missing required component")
         c = {k: _component(k, value.get(k, 0.0)) for k in _COMPONENTS}
-        return [[c["ixx"], c["ixy"], c["ixz"]], [c["ixy"], c["iyy"], c["iyz"]], [c["ixz"], c["iyz"], c["izz"]]]
-    if not (isinstance(value, list) and len(value) == 3 and all(isinstance(r, list) and len(r) == 3 for r in value)):
+        return [
+            [c["ixx"], c["ixy"], c["ixz"]],
+            [c["ixy"], c["iyy"], c["iyz"]],
+            [c["ixz"], c["iyz"], c["izz"]],
+        ]
+    if not (
+        isinstance(value, list)
+        and len(value) == 3
+        and all(isinstance(r, list) and len(r) == 3 for r in value)
+    ):
         raise ValueError(f"must be {_MATRIX_FORMS} (got {_show(value)})")
     rows = []
     for i, row in enumerate(value):
@@ -157,21 +178,32 @@ _NUMBER_ROW = {"type": "array", "items": {"type": "number"}, "minItems": 3, "max
 InertiaMatrix = Annotated[
     Any,
     PlainValidator(_inertia_matrix),
-    WithJsonSchema({
-        "anyOf": [
-            {"type": "array", "items": _NUMBER_ROW, "minItems": 3, "maxItems": 3},
-            {
-                "type": "object",
-                "properties": {k: {"type": "number", "description": f"I{k[1:]}, mass·length²" + (
-                    " (product of inertia, with the minus sign inside the matrix)" if k[1] != k[2] else "")}
-                    for k in _COMPONENTS},
-                "required": list(_COMPONENTS[:3]),
-                "additionalProperties": False,
-            },
-        ],
-        "description": "Inertia matrix (mass·length²): products are the matrix entries "
-                       "(ixy = −∫xy dm), as in `rbi inertia` and URDF.",
-    }),
+    WithJsonSchema(
+        {
+            "anyOf": [
+                {"type": "array", "items": _NUMBER_ROW, "minItems": 3, "maxItems": 3},
+                {
+                    "type": "object",
+                    "properties": {
+                        k: {
+                            "type": "number",
+                            "description": f"I{k[1:]}, mass·length²"
+                            + (
+                                " (product of inertia, with the minus sign inside the matrix)"
+                                if k[1] != k[2]
+                                else ""
+                            ),
+                        }
+                        for k in _COMPONENTS
+                    },
+                    "required": list(_COMPONENTS[:3]),
+                    "additionalProperties": False,
+                },
+            ],
+            "description": "Inertia matrix (mass·length²): products are the matrix entries "
+            "(ixy = −∫xy dm), as in `rbi inertia` and URDF.",
+        }
+    ),
 ]
 
 
@@ -184,7 +216,9 @@ def _tolerance(value: Any) -> float | str:
     if isinstance(value, str):
         match = _PERCENT.match(value)
         if not match or not math.isfinite(float(match.group(1))):
-            raise ValueError(f"must be a percentage such as 1% or an absolute number in file units (got {_show(value)})")
+            raise ValueError(
+                f"must be a percentage such as 1% or an absolute number in file units (got {_show(value)})"
+            )
         return value.strip()
     number = _finite_number(value, "a percentage such as 1% or an absolute number in file units")
     if number < 0:
@@ -203,17 +237,20 @@ def tolerance_allowed(tol: float | str, reference: float) -> float:
 Tolerance = Annotated[
     Any,
     PlainValidator(_tolerance),
-    WithJsonSchema({
-        "anyOf": [
-            {"type": "number", "minimum": 0},
-            {"type": "string", "pattern": r"^\s*[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?\s*%\s*$"},
-        ],
-        "description": "Absolute (file units) or a percentage of the expected value's magnitude, e.g. 1%.",
-    }),
+    WithJsonSchema(
+        {
+            "anyOf": [
+                {"type": "number", "minimum": 0},
+                {"type": "string", "pattern": r"^\s*[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?\s*%\s*$"},
+            ],
+            "description": "Absolute (file units) or a percentage of the expected value's magnitude, e.g. 1%.",
+        }
+    ),
 ]
 
 
 # --- reference point: com, origin, pivot or [x, y, z] ---------------------------------------
+
 
 def _about(value: Any) -> str | list[float]:
     if isinstance(value, str) and value.strip().lower() in ("com", "origin", "pivot"):
@@ -226,11 +263,13 @@ def _about(value: Any) -> str | list[float]:
 AboutPoint = Annotated[
     Any,
     PlainValidator(_about),
-    WithJsonSchema({
-        "anyOf": [
-            {"type": "string", "enum": ["com", "origin", "pivot"]},
-            {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3},
-        ],
-        "description": "Reference point: com, origin, pivot, or [x, y, z] in body coordinates.",
-    }),
+    WithJsonSchema(
+        {
+            "anyOf": [
+                {"type": "string", "enum": ["com", "origin", "pivot"]},
+                {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3},
+            ],
+            "description": "Reference point: com, origin, pivot, or [x, y, z] in body coordinates.",
+        }
+    ),
 ]

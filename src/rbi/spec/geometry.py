@@ -58,10 +58,17 @@ def part_geometry(body) -> list[dict[str, Any]]:
             item = _cloud_points(spec, body.path)
         else:
             item = _primitive(part, body.path) if count <= MAX_DRAWN_COPIES else None
-        copies = [_stand_in(element)] if item is None else [moved(item, R, t) for R, t in _copy_motions(pattern)]
+        copies = (
+            [_stand_in(element)] if item is None else [moved(item, R, t) for R, t in _copy_motions(pattern)]
+        )
         for copy in copies:
-            copy |= {"part": index, "name": body.part_names[index] if index < len(body.part_names) else None, "shape": shape,
-                     "hole": bool(getattr(part, "subtract", False)), "mass": float(element.mass) / len(copies)}
+            copy |= {
+                "part": index,
+                "name": body.part_names[index] if index < len(body.part_names) else None,
+                "shape": shape,
+                "hole": bool(getattr(part, "subtract", False)),
+                "mass": float(element.mass) / len(copies),
+            }
             out.append(copy)
     return out
 
@@ -125,18 +132,36 @@ def _primitive(part, spec_path: str) -> dict[str, Any] | None:
         return _ellipsoid(part.center, part.semi_axes, rotation_matrix(part.rotation))
     if isinstance(part, models.BoxPart):
         R = rotation_matrix(part.rotation)
-        return {"kind": "box", "center": _vector(part.center), "size": _vector(part.size),
-                "rotation": (np.eye(3) if R is None else R).tolist()}
+        return {
+            "kind": "box",
+            "center": _vector(part.center),
+            "size": _vector(part.size),
+            "rotation": (np.eye(3) if R is None else R).tolist(),
+        }
     if isinstance(part, models.PointPart):
         return {"kind": "point", "position": _vector(part.position)}
     if isinstance(part, models.TorusPart):
-        return {"kind": "torus", "center": _vector(part.center), "axis": _unit(part.axis),
-                "major_radius": float(part.major_radius), "minor_radius": float(part.minor_radius)}
+        return {
+            "kind": "torus",
+            "center": _vector(part.center),
+            "axis": _unit(part.axis),
+            "major_radius": float(part.major_radius),
+            "minor_radius": float(part.minor_radius),
+        }
     if isinstance(part, models.HemispherePart):
-        return {"kind": "hemisphere", "center": _vector(part.center), "axis": _unit(part.axis),
-                "radius": float(part.radius)}
+        return {
+            "kind": "hemisphere",
+            "center": _vector(part.center),
+            "axis": _unit(part.axis),
+            "radius": float(part.radius),
+        }
     if isinstance(part, models.CapsulePart):
-        return {"kind": "capsule", "start": _vector(part.start), "end": _vector(part.end), "radius": float(part.radius)}
+        return {
+            "kind": "capsule",
+            "start": _vector(part.start),
+            "end": _vector(part.end),
+            "radius": float(part.radius),
+        }
     if isinstance(part, models.MeshPart):
         return _mesh(part, spec_path)
     return None
@@ -155,8 +180,9 @@ def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     from rbi.formats.paths import spec_relative_file
     from rbi.spec.translate import rotation_matrix
 
-    solid = read_mesh_solid(spec_relative_file(spec_path, part.file, f"file: {part.file}"),
-                            part.inertia, part.repair)  # cached: read once; convex: the hull is drawn
+    solid = read_mesh_solid(
+        spec_relative_file(spec_path, part.file, f"file: {part.file}"), part.inertia, part.repair
+    )  # cached: read once; convex: the hull is drawn
     if len(solid.faces) > MAX_DRAWN_TRIANGLES:
         return None
     R = rotation_matrix(part.rotation)
@@ -164,17 +190,31 @@ def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     if R is not None:
         vertices = vertices @ R.T
     vertices = vertices + np.asarray(part.position, dtype=float)
-    return {"kind": "mesh", "vertices": vertices.tolist(), "faces": np.asarray(solid.faces, dtype=int).tolist()}
+    return {
+        "kind": "mesh",
+        "vertices": vertices.tolist(),
+        "faces": np.asarray(solid.faces, dtype=int).tolist(),
+    }
 
 
 def _frustum(start, end, start_radius, end_radius, inner_radius=0.0) -> dict[str, Any]:
-    return {"kind": "frustum", "start": _vector(start), "end": _vector(end), "start_radius": float(start_radius),
-            "end_radius": float(end_radius), "inner_radius": float(inner_radius)}
+    return {
+        "kind": "frustum",
+        "start": _vector(start),
+        "end": _vector(end),
+        "start_radius": float(start_radius),
+        "end_radius": float(end_radius),
+        "inner_radius": float(inner_radius),
+    }
 
 
 def _ellipsoid(center, semi_axes, R) -> dict[str, Any]:
-    return {"kind": "ellipsoid", "center": _vector(center), "semi_axes": _vector(semi_axes),
-            "rotation": (np.eye(3) if R is None else R).tolist()}
+    return {
+        "kind": "ellipsoid",
+        "center": _vector(center),
+        "semi_axes": _vector(semi_axes),
+        "rotation": (np.eye(3) if R is None else R).tolist(),
+    }
 
 
 def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
@@ -204,5 +244,10 @@ def _stand_in(element) -> dict[str, Any]:
     else:
         total = float(np.sum(moments))
         size = np.sqrt(np.maximum(6.0 * (total - 2.0 * moments) / mass, 0.0))
-    return {"kind": "box", "center": _vector(element.com), "size": size.tolist(), "rotation": axes.T.tolist(),
-            "stand_in": True}
+    return {
+        "kind": "box",
+        "center": _vector(element.com),
+        "size": size.tolist(),
+        "rotation": axes.T.tolist(),
+        "stand_in": True,
+    }

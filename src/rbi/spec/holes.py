@@ -22,7 +22,9 @@ MASS_RTOL = 1e-9
 
 
 def _gross(elements: list[MassElement]) -> MassProperties:
-    return combine_elements(MassElement(abs(e.mass), e.com, np.sign(e.mass) * e.inertia_com) for e in elements)
+    return combine_elements(
+        MassElement(abs(e.mass), e.com, np.sign(e.mass) * e.inertia_com) for e in elements
+    )
 
 
 def body_problem(elements: list[MassElement], mass_unit: str = "") -> str | None:
@@ -53,4 +55,6 @@ def check_holes(path: str, spec, elements: list[MassElement], holes: list[int]) 
         problem = body_problem(running, spec.units.mass)
         if problem is not None:
             raise InputError(f"{path}: {part_label(i, spec.parts[i])}: subtract: {problem}")
-    raise InputError(f"{path}: the body with its holes is not physical")  # not reached: the last step is the whole body
+    raise InputError(
+        f"{path}: the body with its holes is not physical"
+    )  # not reached: the last step is the whole body

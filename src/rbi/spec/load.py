@@ -111,8 +111,10 @@ def read_spec_text(path: str | Path) -> str:
         if not stat.S_ISREG(info.st_mode):
             raise InputError(f"{path}: not a regular file (a device, FIFO or socket); give a spec file")
         if info.st_size > MAX_SPEC_BYTES:
-            raise InputError(f"{path}: too large ({info.st_size:,} bytes; a spec may have at most "
-                             f"{MAX_SPEC_BYTES:,}: put many points in a point_cloud file)")
+            raise InputError(
+                f"{path}: too large ({info.st_size:,} bytes; a spec may have at most "
+                f"{MAX_SPEC_BYTES:,}: put many points in a point_cloud file)"
+            )
         try:
             data = stream.read(MAX_SPEC_BYTES + 1)
         except OSError as exc:
@@ -207,7 +209,9 @@ def parse_spec_text(text: str, path: str) -> Any:
             if len(exc.where) > shown:
                 field_path = [(field_path[0] if field_path else "") + "..."]
             where = ([part_label] if part_label else []) + field_path
-            raise InputError(": ".join([path, *where, f"line {exc.line}, column {exc.column}: {exc.problem}"])) from None
+            raise InputError(
+                ": ".join([path, *where, f"line {exc.line}, column {exc.column}: {exc.problem}"])
+            ) from None
         except yaml.MarkedYAMLError as exc:
             mark = exc.problem_mark or exc.context_mark
             where = f"line {mark.line + 1}, column {mark.column + 1}: " if mark else ""
@@ -250,8 +254,12 @@ def _depth_within(value: Any, limit: int) -> bool:
     for _ in range(limit):
         if not level:
             return True
-        level = [child for item in level for child in (item.values() if isinstance(item, dict) else item)
-                 if isinstance(child, (dict, list))]
+        level = [
+            child
+            for item in level
+            for child in (item.values() if isinstance(item, dict) else item)
+            if isinstance(child, (dict, list))
+        ]
     return not level
 
 
@@ -264,7 +272,9 @@ def validation_messages(path: str, raw: Any) -> tuple[Any, list[str]]:
     if raw is None:
         return None, [f"{path}: file holds no YAML document"]
     if not isinstance(raw, dict):
-        return None, [f"{path}: must be a mapping with a `parts` list at the top level (got {type(raw).__name__})"]
+        return None, [
+            f"{path}: must be a mapping with a `parts` list at the top level (got {type(raw).__name__})"
+        ]
     try:
         with paused_gc():
             return BodySpec.model_validate(raw), []

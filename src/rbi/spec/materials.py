@@ -51,7 +51,9 @@ def _normal(name: str) -> str:
     return " ".join(name.strip().lower().replace("_", " ").replace("-", " ").split())
 
 
-_LOOKUP: dict[str, str] = {_normal(n): n for n in MATERIAL_DENSITIES_SI} | {_normal(a): n for a, n in ALIASES.items()}
+_LOOKUP: dict[str, str] = {_normal(n): n for n in MATERIAL_DENSITIES_SI} | {
+    _normal(a): n for a, n in ALIASES.items()
+}
 
 
 def canonical_name(name: str) -> str | None:
@@ -64,8 +66,10 @@ def unknown_material_message(name: str) -> str:
     names = list(MATERIAL_DENSITIES_SI) + list(ALIASES)
     hint = difflib.get_close_matches(name.strip().lower(), names, n=1, cutoff=0.6)
     suggestion = f" (did you mean '{hint[0]}'?)" if hint else ""
-    return (f"unknown material {name!r}{suggestion}; give a number (mass per length³ in the file's units) "
-            f"or one of: {', '.join(MATERIAL_DENSITIES_SI)}")
+    return (
+        f"unknown material {name!r}{suggestion}; give a number (mass per length³ in the file's units) "
+        f"or one of: {', '.join(MATERIAL_DENSITIES_SI)}"
+    )
 
 
 def density_in_units(name: str, length_unit: str, mass_unit: str) -> float:

@@ -43,9 +43,18 @@ class Pattern(_Strict):
 
     model_config = _BUILT_WHEN_USED
 
-    count: Annotated[int, Field(strict=True, ge=1, le=100_000,
-                                description="Number of copies, the part as written included (1 to 100000).")]
-    axis: Vector3 | None = Field(None, description="Direction of the line the copies turn about (need not be unit length).")
+    count: Annotated[
+        int,
+        Field(
+            strict=True,
+            ge=1,
+            le=100_000,
+            description="Number of copies, the part as written included (1 to 100000).",
+        ),
+    ]
+    axis: Vector3 | None = Field(
+        None, description="Direction of the line the copies turn about (need not be unit length)."
+    )
     through: Vector3 | None = Field(None, description="A point on that line (default [0, 0, 0]).")
     step: Vector3 | None = Field(None, description="Offset from one copy to the next, for a row of copies.")
 
@@ -53,8 +62,10 @@ class Pattern(_Strict):
     def _one_form(self):
         circular = self.axis is not None or self.through is not None
         if circular == (self.step is not None):
-            raise ValueError("give either {count, axis, through} (copies turned about a line) or {count, step} "
-                             "(copies in a row)" + (" (got both)" if circular else " (got neither axis nor step)"))
+            raise ValueError(
+                "give either {count, axis, through} (copies turned about a line) or {count, step} "
+                "(copies in a row)" + (" (got both)" if circular else " (got neither axis nor step)")
+            )
         if circular and self.axis is None:
             raise ValueError("axis: missing required field (the direction of the line the copies turn about)")
         if self.axis is not None:
@@ -65,16 +76,26 @@ class Pattern(_Strict):
 class _Part(_Strict):
     model_config = _BUILT_WHEN_USED
 
-    name: str | None = Field(None, description="A name for the part, shown in tables and error messages; unique within the body.")
-    pattern: Pattern | None = Field(None, description="Repeat this part: copies about an axis line or in a row.")
+    name: str | None = Field(
+        None, description="A name for the part, shown in tables and error messages; unique within the body."
+    )
+    pattern: Pattern | None = Field(
+        None, description="Repeat this part: copies about an axis line or in a row."
+    )
 
 
 class _Solid(_Part):
     """A solid with either a total ``mass`` or a ``density`` (mass per length³, or a built-in
     material name). ``subtract: true`` makes it a hole: its material is removed."""
 
-    mass: Positive | None = Field(None, description="Mass of the solid (per copy with a pattern), in the file's mass unit; give this or density.")
-    density: Density | None = Field(None, description="Mass per length³ in the file's units, or a built-in material name; give this or mass.")
+    mass: Positive | None = Field(
+        None,
+        description="Mass of the solid (per copy with a pattern), in the file's mass unit; give this or density.",
+    )
+    density: Density | None = Field(
+        None,
+        description="Mass per length³ in the file's units, or a built-in material name; give this or mass.",
+    )
     subtract: Flag = Field(False, description="Remove this solid's material (a hole) instead of adding it.")
 
     @model_validator(mode="after")
@@ -142,6 +163,7 @@ def _mass_only(data: Any, what: str) -> Any:
 
 # --- shapes added for engineering parts (docs/spec.md gives each closed form) ---------------
 
+
 class Rotation(_Strict):
     """How the part's own axes are turned into body axes, in one of three forms: ``axis`` and
     ``angle_deg`` (right-hand rule); ``quaternion`` ``[w, x, y, z]`` (normalised); or
@@ -150,43 +172,67 @@ class Rotation(_Strict):
 
     model_config = _BUILT_WHEN_USED
 
-    axis: Vector3 | None = Field(None, description="Axis of an axis-angle rotation (need not be unit length).")
-    angle_deg: Number | None = Field(None, description="Angle of an axis-angle rotation, degrees, right-hand rule.")
+    axis: Vector3 | None = Field(
+        None, description="Axis of an axis-angle rotation (need not be unit length)."
+    )
+    angle_deg: Number | None = Field(
+        None, description="Angle of an axis-angle rotation, degrees, right-hand rule."
+    )
     quaternion: Annotated[list[Number], Field(min_length=4, max_length=4)] | None = Field(
-        None, description="Unit quaternion [w, x, y, z] (scalar first), part axes to body axes; normalised.")
-    euler_deg: Vector3 | None = Field(None, description="Three Euler angles, degrees, applied in `sequence` order.")
+        None, description="Unit quaternion [w, x, y, z] (scalar first), part axes to body axes; normalised."
+    )
+    euler_deg: Vector3 | None = Field(
+        None, description="Three Euler angles, degrees, applied in `sequence` order."
+    )
     sequence: str | None = Field(
-        None, pattern=r"^([xyz]{3}|[XYZ]{3})$",
-        description="Axes of the Euler angles: lower case = fixed (extrinsic) axes, upper case = moving (intrinsic).")
+        None,
+        pattern=r"^([xyz]{3}|[XYZ]{3})$",
+        description="Axes of the Euler angles: lower case = fixed (extrinsic) axes, upper case = moving (intrinsic).",
+    )
 
     @model_validator(mode="after")
     def _one_form(self):
-        forms = [name for name, given in (("axis, angle_deg", self.axis is not None or self.angle_deg is not None),
-                                          ("quaternion", self.quaternion is not None),
-                                          ("euler_deg, sequence", self.euler_deg is not None or self.sequence is not None))
-                 if given]
+        forms = [
+            name
+            for name, given in (
+                ("axis, angle_deg", self.axis is not None or self.angle_deg is not None),
+                ("quaternion", self.quaternion is not None),
+                ("euler_deg, sequence", self.euler_deg is not None or self.sequence is not None),
+            )
+            if given
+        ]
         if len(forms) != 1:
-            raise ValueError("give exactly one form: {axis, angle_deg}, {quaternion} or {euler_deg, sequence}"
-                             + (f" (got {' and '.join(forms)})" if forms else " (got none)"))
+            raise ValueError(
+                "give exactly one form: {axis, angle_deg}, {quaternion} or {euler_deg, sequence}"
+                + (f" (got {' and '.join(forms)})" if forms else " (got none)")
+            )
         if forms[0] == "axis, angle_deg":
             if self.axis is None or self.angle_deg is None:
                 raise ValueError("axis, angle_deg: give both")
             if not any(self.axis):
-                raise ValueError("axis: must not be the zero vector [0, 0, 0]: give the direction to turn about, "
-                                 "e.g. [0, 0, 1] for z (any length)")
+                raise ValueError(
+                    "axis: must not be the zero vector [0, 0, 0]: give the direction to turn about, "
+                    "e.g. [0, 0, 1] for z (any length)"
+                )
         if forms[0] == "euler_deg, sequence" and (self.euler_deg is None or self.sequence is None):
             raise ValueError("euler_deg, sequence: give both")
         if self.quaternion is not None and not any(self.quaternion):
-            raise ValueError("quaternion: must not be zero [0, 0, 0, 0]: the identity (no turn) is [1, 0, 0, 0], "
-                             "scalar first; any length")
+            raise ValueError(
+                "quaternion: must not be zero [0, 0, 0, 0]: the identity (no turn) is [1, 0, 0, 0], "
+                "scalar first; any length"
+            )
         return self
 
 
 def _hollow(part, what: str) -> None:
     if part.inner_radius > part.outer_radius:
-        raise ValueError(f"inner_radius: must not exceed outer_radius ({part.inner_radius!r} > {part.outer_radius!r})")
+        raise ValueError(
+            f"inner_radius: must not exceed outer_radius ({part.inner_radius!r} > {part.outer_radius!r})"
+        )
     if part.inner_radius == part.outer_radius and part.density is not None:
-        raise ValueError(f"density: a thin-walled {what} (inner_radius = outer_radius) has no volume; give its `mass`")
+        raise ValueError(
+            f"density: a thin-walled {what} (inner_radius = outer_radius) has no volume; give its `mass`"
+        )
 
 
 class BoxPart(_Solid):
@@ -196,7 +242,9 @@ class BoxPart(_Solid):
     shape: Literal["box"] = Field(description="A solid rectangular box.")
     center: Vector3 = Field(description="Centre of the box, body frame.")
     size: PositiveVector3 = Field(description="Edge lengths [a, b, c] along the box's own x, y, z axes.")
-    rotation: Rotation | None = Field(None, description="How the box's axes are turned into body axes (about its centre); default: aligned.")
+    rotation: Rotation | None = Field(
+        None, description="How the box's axes are turned into body axes (about its centre); default: aligned."
+    )
 
 
 class SpherePart(_Solid):
@@ -211,10 +259,14 @@ class SphericalShellPart(_Solid):
     """Thick spherical shell between ``inner_radius`` and ``outer_radius`` (equal radii: a thin
     shell, given by `mass`)."""
 
-    shape: Literal["spherical_shell"] = Field(description="A hollow sphere (thick, or thin with equal radii).")
+    shape: Literal["spherical_shell"] = Field(
+        description="A hollow sphere (thick, or thin with equal radii)."
+    )
     center: Vector3 = Field(description="Centre of the shell, body frame.")
     outer_radius: Positive = Field(description="Outer radius.")
-    inner_radius: NonNegative = Field(description="Inner radius, at most outer_radius (equal: a thin shell, given by mass).")
+    inner_radius: NonNegative = Field(
+        description="Inner radius, at most outer_radius (equal: a thin shell, given by mass)."
+    )
 
     @model_validator(mode="after")
     def _radii(self):
@@ -262,8 +314,13 @@ class EllipsoidPart(_Solid):
 
     shape: Literal["ellipsoid"] = Field(description="A solid ellipsoid.")
     center: Vector3 = Field(description="Centre of the ellipsoid, body frame.")
-    semi_axes: PositiveVector3 = Field(description="Semi-axes [a, b, c] along the ellipsoid's own x, y, z axes.")
-    rotation: Rotation | None = Field(None, description="How the ellipsoid's axes are turned into body axes (about its centre); default: aligned.")
+    semi_axes: PositiveVector3 = Field(
+        description="Semi-axes [a, b, c] along the ellipsoid's own x, y, z axes."
+    )
+    rotation: Rotation | None = Field(
+        None,
+        description="How the ellipsoid's axes are turned into body axes (about its centre); default: aligned.",
+    )
 
 
 class RodPart(_Part):
@@ -292,9 +349,15 @@ class CustomPart(_Part):
     shape: Literal["custom"] = Field(description="Mass properties given directly (e.g. from CAD).")
     mass: Positive = Field(description="Mass, in the file's mass unit.")
     center_of_mass: Vector3 = Field(description="Centre of mass, body frame.")
-    inertia: InertiaMatrix = Field(description="Inertia about `about` in the part's axes, mass·length² (products of inertia with the minus sign inside).")
-    about: Vector3 | None = Field(None, description="Point the inertia is given about, body frame; default: the centre of mass.")
-    rotation: Rotation | None = Field(None, description="How the part's axes are turned into body axes; default: aligned.")
+    inertia: InertiaMatrix = Field(
+        description="Inertia about `about` in the part's axes, mass·length² (products of inertia with the minus sign inside)."
+    )
+    about: Vector3 | None = Field(
+        None, description="Point the inertia is given about, body frame; default: the centre of mass."
+    )
+    rotation: Rotation | None = Field(
+        None, description="How the part's axes are turned into body axes; default: aligned."
+    )
 
     @model_validator(mode="before")
     @classmethod
@@ -304,8 +367,10 @@ class CustomPart(_Part):
 
 def _nonzero(vector: list[float], name: str, meaning: str) -> None:
     if not any(vector):
-        raise ValueError(f"{name}: must not be the zero vector [0, 0, 0]: give {meaning}, e.g. [0, 0, 1] for z "
-                         "(any length)")
+        raise ValueError(
+            f"{name}: must not be the zero vector [0, 0, 0]: give {meaning}, e.g. [0, 0, 1] for z "
+            "(any length)"
+        )
 
 
 class TorusPart(_Solid):
@@ -322,8 +387,10 @@ class TorusPart(_Solid):
     def _checks(self):
         _nonzero(self.axis, "axis", "the direction of the ring's axis of symmetry")
         if self.minor_radius > self.major_radius:
-            raise ValueError(f"minor_radius: must not exceed major_radius ({self.minor_radius!r} > "
-                             f"{self.major_radius!r}; the tube would pass through the axis)")
+            raise ValueError(
+                f"minor_radius: must not exceed major_radius ({self.minor_radius!r} > "
+                f"{self.major_radius!r}; the tube would pass through the axis)"
+            )
         return self
 
 
@@ -346,7 +413,9 @@ class CapsulePart(_Solid):
     same ``radius`` on each end."""
 
     shape: Literal["capsule"] = Field(description="A cylinder with a hemispherical cap on each end.")
-    start: Vector3 = Field(description="Centre of one end face of the cylinder (where a cap's flat face sits).")
+    start: Vector3 = Field(
+        description="Centre of one end face of the cylinder (where a cap's flat face sits)."
+    )
     end: Vector3 = Field(description="Centre of the other end face; |end - start| is the cylinder's length.")
     radius: Positive = Field(description="Radius of the cylinder and of both caps.")
 
@@ -362,16 +431,29 @@ class MeshPart(_Solid):
     mesh's own origin, then that origin is put at ``position``."""
 
     shape: Literal["mesh"] = Field(description="The solid a closed triangle mesh encloses.")
-    file: Annotated[str, Field(min_length=1, description=(
-        "Mesh file (.stl, .obj, .ply), relative to the spec's folder."))]
-    scale: Positive = Field(1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m).")
+    file: Annotated[
+        str, Field(min_length=1, description=("Mesh file (.stl, .obj, .ply), relative to the spec's folder."))
+    ]
+    scale: Positive = Field(
+        1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m)."
+    )
     position: Vector3 = Field([0.0, 0.0, 0.0], description="Where the mesh's own origin goes, body frame.")
-    rotation: Rotation | None = Field(None, description="How the mesh's axes are turned into body axes (about its origin).")
-    inertia: Literal["exact", "convex", "shell"] = Field("exact", description=(
-        "Where the mass goes, as MuJoCo names it: exact = the solid the closed mesh encloses; convex = "
-        "the solid convex hull of its vertices; shell = spread evenly over the surface (give mass, not density)."))
-    repair: Flag = Field(False, description=(
-        "Close holes of three or four edges (trimesh's fill_holes) before integrating; the area added is reported."))
+    rotation: Rotation | None = Field(
+        None, description="How the mesh's axes are turned into body axes (about its origin)."
+    )
+    inertia: Literal["exact", "convex", "shell"] = Field(
+        "exact",
+        description=(
+            "Where the mass goes, as MuJoCo names it: exact = the solid the closed mesh encloses; convex = "
+            "the solid convex hull of its vertices; shell = spread evenly over the surface (give mass, not density)."
+        ),
+    )
+    repair: Flag = Field(
+        False,
+        description=(
+            "Close holes of three or four edges (trimesh's fill_holes) before integrating; the area added is reported."
+        ),
+    )
 
     _enclosed_volume: float | None = PrivateAttr(None)  # L³ in the spec's units, set when the file is read
     _mesh_notes: tuple[str, ...] = PrivateAttr(())  # what repair added, overlapping pieces: set when read
@@ -379,8 +461,10 @@ class MeshPart(_Solid):
     @model_validator(mode="after")
     def _shell_takes_a_mass(self):
         if self.inertia == "shell" and self.density is not None:
-            raise ValueError("density: with inertia: shell the mass lies on the surface, which has no volume "
-                             "for a density to fill: give mass instead")
+            raise ValueError(
+                "density: with inertia: shell the mass lies on the surface, which has no volume "
+                "for a density to fill: give mass instead"
+            )
         return self
 
 
@@ -403,7 +487,7 @@ SHAPE_MODELS: dict[str, type[_Part]] = {
 }
 """Every part model by its ``shape`` tag; new shapes are added here."""
 
-Part = Annotated[Union[tuple(SHAPE_MODELS.values())], Field(discriminator="shape")]
+Part = Annotated[Union[tuple(SHAPE_MODELS.values())], Field(discriminator="shape")]  # noqa: UP007 (a union built at run time)
 """A part of any shape, as one discriminated union (what the JSON Schema describes)."""
 
 
@@ -420,19 +504,36 @@ def _part_of_its_shape(value: Any) -> _Part:
     tag = value["shape"] if isinstance(value["shape"], str) else str(value["shape"])
     model = SHAPE_MODELS.get(tag)
     if model is None:
-        raise _union_error("union_tag_invalid", value, {"discriminator": "'shape'", "tag": tag,
-                                                          "expected_tags": ", ".join(f"'{t}'" for t in SHAPE_MODELS)})
+        raise _union_error(
+            "union_tag_invalid",
+            value,
+            {
+                "discriminator": "'shape'",
+                "tag": tag,
+                "expected_tags": ", ".join(f"'{t}'" for t in SHAPE_MODELS),
+            },
+        )
     try:
         return model.model_validate(value)
     except ValidationError as exc:
-        raise ValidationError.from_exception_data("Part", [
-            {"type": e["type"], "loc": (tag, *e["loc"]), "input": e["input"], **({"ctx": e["ctx"]} if "ctx" in e else {})}
-            for e in exc.errors(include_url=False)]) from None
+        raise ValidationError.from_exception_data(
+            "Part",
+            [
+                {
+                    "type": e["type"],
+                    "loc": (tag, *e["loc"]),
+                    "input": e["input"],
+                    **({"ctx": e["ctx"]} if "ctx" in e else {}),
+                }
+                for e in exc.errors(include_url=False)
+            ],
+        ) from None
 
 
 def _union_error(kind: str, value: Any, ctx: dict | None = None) -> ValidationError:
-    return ValidationError.from_exception_data("Part", [{"type": kind, "loc": (), "input": value,
-                                                         **({"ctx": ctx} if ctx else {})}])
+    return ValidationError.from_exception_data(
+        "Part", [{"type": kind, "loc": (), "input": value, **({"ctx": ctx} if ctx else {})}]
+    )
 
 
 PartOfItsShape = Annotated[Any, PlainValidator(_part_of_its_shape)]
@@ -443,7 +544,13 @@ class PointCloudRef(_Strict):
     """Many point masses from one file (see :mod:`rbi.formats.point_cloud`): a ``.csv`` with the
     columns mass,x,y,z or a ``.npy`` (N, 4) array; path relative to the spec's folder."""
 
-    file: Annotated[str, Field(min_length=1, description="A .csv (columns mass,x,y,z) or .npy (N×4) file, relative to the spec's folder.")]
+    file: Annotated[
+        str,
+        Field(
+            min_length=1,
+            description="A .csv (columns mass,x,y,z) or .npy (N×4) file, relative to the spec's folder.",
+        ),
+    ]
 
 
 PARTS_DESCRIPTION = "The parts, each placed in the body frame."
@@ -464,11 +571,15 @@ class BodySpec(_Strict):
 
     name: str | None = Field(None, description="Name of the body, shown in titles.")
     units: Units = Field(Units(), description="Units of every number in the file (default m and kg).")
-    pivot: Vector3 | None = Field(None, description="The fixed point a top turns about, body frame; without it the body is free.")
+    pivot: Vector3 | None = Field(
+        None, description="The fixed point a top turns about, body frame; without it the body is free."
+    )
     spin_axis: Vector3 | None = Field(
-        None, description="The body-frame direction the body spins about (need not be unit length): --spin turns "
-                          "about it and the tilt and precession reported are its own. Default: the symmetry axis "
-                          "when the body has one, else z.")
+        None,
+        description="The body-frame direction the body spins about (need not be unit length): --spin turns "
+        "about it and the tilt and precession reported are its own. Default: the symmetry axis "
+        "when the body has one, else z.",
+    )
     parts: list[PartOfItsShape] = Field(default_factory=list, description=PARTS_DESCRIPTION)
     point_cloud: PointCloudRef | None = Field(None, description="Many point masses read from one file.")
     expect: ExpectationsWhenGiven = Field(None, description=EXPECT_DESCRIPTION)
@@ -476,7 +587,9 @@ class BodySpec(_Strict):
     @model_validator(mode="after")
     def _spin_axis_has_a_direction(self):
         if self.spin_axis is not None and not any(self.spin_axis):
-            raise ValueError("spin_axis: must not be zero [0, 0, 0]: give a direction in body axes, e.g. [0, 1, 0]")
+            raise ValueError(
+                "spin_axis: must not be zero [0, 0, 0]: give a direction in body axes, e.g. [0, 1, 0]"
+            )
         return self
 
     @model_validator(mode="after")
@@ -498,12 +611,20 @@ class BodySpec(_Strict):
             key = unicodedata.normalize("NFC", part.name)
             if key in seen:
                 first = seen[key]
-                how = "also" if self.parts[first].name == part.name else \
-                    "written with other Unicode code points but looking the same as"
-                free = next(f"{part.name}-{n}" for n in range(2, len(self.parts) + 3)
-                            if unicodedata.normalize("NFC", f"{part.name}-{n}") not in seen)
-                raise ValueError(f"parts[{i}] ({part.name}): name: duplicate part name: {part.name!r} is {how} the name "
-                                 f"of parts[{first}]; each part needs its own name (e.g. {free!r}) or none")
+                how = (
+                    "also"
+                    if self.parts[first].name == part.name
+                    else "written with other Unicode code points but looking the same as"
+                )
+                free = next(
+                    f"{part.name}-{n}"
+                    for n in range(2, len(self.parts) + 3)
+                    if unicodedata.normalize("NFC", f"{part.name}-{n}") not in seen
+                )
+                raise ValueError(
+                    f"parts[{i}] ({part.name}): name: duplicate part name: {part.name!r} is {how} the name "
+                    f"of parts[{first}]; each part needs its own name (e.g. {free!r}) or none"
+                )
             seen[key] = i
         return self
 
@@ -513,7 +634,11 @@ def body_spec_json_schema() -> dict[str, Any]:
     every shape) rather than as the validator that picks one."""
     from pydantic import create_model
 
-    described = create_model("BodySpec", __base__=BodySpec, __doc__=BodySpec.__doc__,
-                             parts=(list[Part], Field(default_factory=list, description=PARTS_DESCRIPTION)),
-                             expect=(Expect | None, Field(None, description=EXPECT_DESCRIPTION)))
+    described = create_model(
+        "BodySpec",
+        __base__=BodySpec,
+        __doc__=BodySpec.__doc__,
+        parts=(list[Part], Field(default_factory=list, description=PARTS_DESCRIPTION)),
+        expect=(Expect | None, Field(None, description=EXPECT_DESCRIPTION)),
+    )
     return described.model_json_schema(mode="validation")

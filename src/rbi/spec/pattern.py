@@ -15,11 +15,13 @@ from rbi.core.inertia import combine
 from rbi.core.rotation import axis_angle_matrix, without_rounding_noise
 from rbi.core.shapes import MassElement
 
+
 def copy_rotations(count: int, axis) -> np.ndarray:
     """(count, 3, 3) matrices turning by 360°·k/count about ``axis``, k = 0 … count − 1 (the
     first is the identity)."""
-    rotations = np.array([axis_angle_matrix(np.asarray(axis, dtype=float), 2.0 * math.pi * k / count)
-                          for k in range(count)])
+    rotations = np.array(
+        [axis_angle_matrix(np.asarray(axis, dtype=float), 2.0 * math.pi * k / count) for k in range(count)]
+    )
     without_rounding_noise(rotations)
     rotations[0] = np.eye(3)
     return rotations

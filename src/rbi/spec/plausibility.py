@@ -29,9 +29,23 @@ LARGEST_PART_M = 5.0
 """The largest plausible size of one part given a density, metres (cube root of its volume:
 a 125 m³ solid); a spec drawn in millimetres and read as metres is far beyond it."""
 
-COMMON_UNITS = [("m", "kg"), ("mm", "kg"), ("mm", "g"), ("cm", "g"), ("in", "lb"), ("cm", "kg"), ("m", "g"),
-                ("in", "kg"), ("ft", "lb"), ("mm", "lb"), ("in", "g"), ("cm", "lb"), ("ft", "kg"), ("m", "lb"),
-                ("ft", "g")]
+COMMON_UNITS = [
+    ("m", "kg"),
+    ("mm", "kg"),
+    ("mm", "g"),
+    ("cm", "g"),
+    ("in", "lb"),
+    ("cm", "kg"),
+    ("m", "g"),
+    ("in", "kg"),
+    ("ft", "lb"),
+    ("mm", "lb"),
+    ("in", "g"),
+    ("cm", "lb"),
+    ("ft", "kg"),
+    ("m", "lb"),
+    ("ft", "g"),
+]
 """Every length and mass unit pair, the ones CAD programs and people use most first."""
 
 MAX_CHECKED_PARTS = 200
@@ -46,6 +60,7 @@ MASS_WORDS = {"kg": "kilograms", "g": "grams", "lb": "pounds"}
 class _Solid:
     """One solid as the file gives it: volume (one copy, file length³) and its mass (file
     mass unit), density number (file units) or material name."""
+
     label: str
     volume: float
     mass: float | None = None
@@ -78,7 +93,9 @@ class _Solid:
             what = "implied density" if self.mass is not None else "density"
             return f"{what} {density:.3g} kg/m³ is outside {low:,.0f}–{high:,.0f} kg/m³ (balsa to osmium)"
         material = f" of {self.material}" if self.material else ""
-        kilograms = self.volume * (MATERIAL_DENSITIES_SI[self.material] if self.material else self.density or 0.0)
+        kilograms = self.volume * (
+            MATERIAL_DENSITIES_SI[self.material] if self.material else self.density or 0.0
+        )
         return f"{self.size_m('m'):.3g} m across ({kilograms:.3g} kg{material}), larger than any part"
 
 
@@ -128,7 +145,9 @@ def hint(length: str, mass: str, other_lengths: list[str] = ()) -> str:
     looks, block = [], []
     if length != "m":
         others = [LENGTH_WORDS[u] for u in other_lengths if u not in (length, "m")]
-        looks.append(f"lengths look like {LENGTH_WORDS[length]}" + (f" (or {', '.join(others)})" if others else ""))
+        looks.append(
+            f"lengths look like {LENGTH_WORDS[length]}" + (f" (or {', '.join(others)})" if others else "")
+        )
         block.append(f"length: {length}")
     if mass != "kg":
         looks.append(f"masses {'' if looks else 'look '}like {MASS_WORDS[mass]}")

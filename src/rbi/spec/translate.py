@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 
@@ -68,7 +68,9 @@ def box_element(part: models.BoxPart, units: models.Units) -> shapes.MassElement
 
 
 def sphere_element(part: models.SpherePart, units: models.Units) -> shapes.MassElement:
-    return shapes.sphere(_solid_mass(part, shapes.sphere_volume(part.radius), units), part.radius, part.center)
+    return shapes.sphere(
+        _solid_mass(part, shapes.sphere_volume(part.radius), units), part.radius, part.center
+    )
 
 
 def spherical_shell_element(part: models.SphericalShellPart, units: models.Units) -> shapes.MassElement:
@@ -111,16 +113,20 @@ def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassE
         offset = com - np.asarray(part.about, dtype=float)
         inertia = parallel_axis_to_com(inertia, part.mass, offset)
         if not np.all(np.isfinite(inertia)) or not np.isfinite(np.sum(np.abs(inertia))):
-            raise ValueError(f"about: numbers too large: moving the inertia from `about`, "
-                             f"{float(np.max(np.abs(offset))):.3g} away, to the centre of mass overflows (beyond "
-                             f"{np.finfo(float).max:.3g}); `about` is the point the inertia was taken about, near the part")
+            raise ValueError(
+                f"about: numbers too large: moving the inertia from `about`, "
+                f"{float(np.max(np.abs(offset))):.3g} away, to the centre of mass overflows (beyond "
+                f"{np.finfo(float).max:.3g}); `about` is the point the inertia was taken about, near the part"
+            )
         problem = inertia_problem(inertia, scale=0.5 * float(np.trace(given)))
         if problem is not None:
             shift = float(part.mass) * float(offset @ offset)
-            raise ValueError(f"inertia: about the centre of mass (moved there from `about`): {problem.message}: "
-                             f"an inertia taken about `about` exceeds the one about the centre of mass by mass × "
-                             f"offset² = {shift:.6g} on the axes across the offset, so the given one is too small; "
-                             "is `about` the point it was taken about?")
+            raise ValueError(
+                f"inertia: about the centre of mass (moved there from `about`): {problem.message}: "
+                f"an inertia taken about `about` exceeds the one about the centre of mass by mass × "
+                f"offset² = {shift:.6g} on the axes across the offset, so the given one is too small; "
+                "is `about` the point it was taken about?"
+            )
     return shapes.MassElement(part.mass, com, 0.5 * (inertia + inertia.T))
 
 
@@ -181,8 +187,10 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
         scale = float(part.scale)
         added = solid.added_area * scale * scale
         share = solid.added_area / surface_area(solid.vertices, solid.faces)
-        notes.append(f"file: {part.file}: repair added {solid.added_faces} triangle{'s' * (solid.added_faces != 1)} "
-                     f"closing holes, {added:.6g} {units.length}² ({100 * share:.3g}% of the surface)")
+        notes.append(
+            f"file: {part.file}: repair added {solid.added_faces} triangle{'s' * (solid.added_faces != 1)} "
+            f"closing holes, {added:.6g} {units.length}² ({100 * share:.3g}% of the surface)"
+        )
     notes.extend(f"file: {part.file}: {note}" for note in solid.distribution.notes)
     return tuple(notes)
 
@@ -190,8 +198,12 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
 def mesh_notes(spec: models.BodySpec) -> list[str]:
     """One line per note on the spec's mesh parts, each naming the part (after translation:
     the notes are set when a mesh is read)."""
-    return [f"{part_label(i, part)}: {note}" for i, part in enumerate(spec.parts)
-            if isinstance(part, models.MeshPart) for note in part._mesh_notes]
+    return [
+        f"{part_label(i, part)}: {note}"
+        for i, part in enumerate(spec.parts)
+        if isinstance(part, models.MeshPart)
+        for note in part._mesh_notes
+    ]
 
 
 def part_element(part, units: models.Units, spec_path: str) -> shapes.MassElement:
@@ -235,7 +247,9 @@ PART_VOLUMES: dict[type, Callable[[object], float]] = {
     models.SpherePart: lambda p: shapes.sphere_volume(p.radius),
     models.SphericalShellPart: lambda p: shapes.spherical_shell_volume(p.outer_radius, p.inner_radius),
     models.TubePart: lambda p: shapes.tube_volume(p.outer_radius, p.inner_radius, _length(p.start, p.end)),
-    models.FrustumPart: lambda p: shapes.frustum_volume(p.start_radius, p.end_radius, _length(p.start, p.end)),
+    models.FrustumPart: lambda p: shapes.frustum_volume(
+        p.start_radius, p.end_radius, _length(p.start, p.end)
+    ),
     models.EllipsoidPart: lambda p: shapes.ellipsoid_volume(p.semi_axes),
     models.TorusPart: lambda p: shapes.torus_volume(p.major_radius, p.minor_radius),
     models.HemispherePart: lambda p: shapes.hemisphere_volume(p.radius),
@@ -292,10 +306,15 @@ def body_from_spec(spec: models.BodySpec, path: str):
             raise InputError(f"{path}: {part_label(i, part)}: {exc}") from None
         except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
             element = None
-        if element is None or not (np.isfinite(element.mass) and np.all(np.isfinite(element.com))
-                                   and np.all(np.isfinite(element.inertia_com))):
-            raise InputError(f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows "
-                             f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?")
+        if element is None or not (
+            np.isfinite(element.mass)
+            and np.all(np.isfinite(element.com))
+            and np.all(np.isfinite(element.inertia_com))
+        ):
+            raise InputError(
+                f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows "
+                f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?"
+            )
         if getattr(part, "subtract", False):
             holes.append(i)
             element = _removed(element)

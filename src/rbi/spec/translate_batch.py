@@ -155,7 +155,11 @@ def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassElem
         chosen = [parts[i] for i in indices]
         with np.errstate(all="ignore"):
             mass, com, inertia = BUILDERS[kind](chosen, units)
-            finite = np.isfinite(mass) & np.all(np.isfinite(com), axis=1) & np.all(np.isfinite(inertia), axis=(1, 2))
+            finite = (
+                np.isfinite(mass)
+                & np.all(np.isfinite(com), axis=1)
+                & np.all(np.isfinite(inertia), axis=(1, 2))
+            )
         masses = mass.tolist()
         ok = finite.tolist()
         for k, i in enumerate(indices):

@@ -35,6 +35,7 @@ def unit_labels(length: str, mass: str) -> dict[str, str]:
 
 # --- converting results to other units (`--units`, exports) --------------------------------
 
+
 def parse_output_units(text: str) -> tuple[str, str]:
     """``--units`` value -> (length unit, mass unit): ``SI`` (m, kg) or ``LENGTH,MASS`` such
     as ``mm,g``. Raises :class:`~rbi.spec.errors.InputError` otherwise."""
@@ -46,8 +47,10 @@ def parse_output_units(text: str) -> tuple[str, str]:
     length, _, mass = key.partition(",")
     length, mass = length.strip(), mass.strip()
     if length not in LENGTH_UNITS_IN_M or mass not in MASS_UNITS_IN_KG:
-        raise InputError(f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(LENGTH_UNITS_IN_M)} "
-                         f"and MASS one of {', '.join(MASS_UNITS_IN_KG)} (e.g. mm,g), got {text!r}")
+        raise InputError(
+            f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(LENGTH_UNITS_IN_M)} "
+            f"and MASS one of {', '.join(MASS_UNITS_IN_KG)} (e.g. mm,g), got {text!r}"
+        )
     return length, mass
 
 

@@ -37,8 +37,10 @@ def parse_path(text: str) -> list[Any]:
     tokens: list[Any] = []
     position = 0
     for match in _TOKEN.finditer(text):
-        if match.start() != position and text[position:match.start()] != ".":
-            raise ValueError(f"cannot read {text!r} as a field path (near {text[position:match.start() + 1]!r})")
+        if match.start() != position and text[position : match.start()] != ".":
+            raise ValueError(
+                f"cannot read {text!r} as a field path (near {text[position : match.start() + 1]!r})"
+            )
         name, index = match.groups()
         tokens.append(name if name is not None else int(index))
         position = match.end()
@@ -69,8 +71,10 @@ def resolve(raw: Any, text: str) -> FieldPath:
         elif isinstance(node, dict):
             if not isinstance(token, str) or token not in node:
                 fields = ", ".join(sorted(map(str, node)))
-                raise InputError(f"--vary {text}: {_written(tokens[:k + 1])}: no such field in the spec"
-                                 f" (fields here: {fields})")
+                raise InputError(
+                    f"--vary {text}: {_written(tokens[: k + 1])}: no such field in the spec"
+                    f" (fields here: {fields})"
+                )
             steps.append(token)
             node = node[token]
         else:

@@ -46,25 +46,49 @@ _YAML = "tag:yaml.org,2002:"
 _DECIMAL = re.compile(r"[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?")
 _FLOAT_CHARS = frozenset(".eE")
 _WORDS: dict[str, Any] = {
-    "": None, "~": None, "null": None, "Null": None, "NULL": None,
-    "true": True, "True": True, "TRUE": True, "false": False, "False": False, "FALSE": False,
-    ".inf": float("inf"), ".Inf": float("inf"), ".INF": float("inf"),
-    "+.inf": float("inf"), "+.Inf": float("inf"), "+.INF": float("inf"),
-    "-.inf": float("-inf"), "-.Inf": float("-inf"), "-.INF": float("-inf"),
-    ".nan": float("nan"), ".NaN": float("nan"), ".NAN": float("nan"),
+    "": None,
+    "~": None,
+    "null": None,
+    "Null": None,
+    "NULL": None,
+    "true": True,
+    "True": True,
+    "TRUE": True,
+    "false": False,
+    "False": False,
+    "FALSE": False,
+    ".inf": float("inf"),
+    ".Inf": float("inf"),
+    ".INF": float("inf"),
+    "+.inf": float("inf"),
+    "+.Inf": float("inf"),
+    "+.INF": float("inf"),
+    "-.inf": float("-inf"),
+    "-.Inf": float("-inf"),
+    "-.INF": float("-inf"),
+    ".nan": float("nan"),
+    ".NaN": float("nan"),
+    ".NAN": float("nan"),
 }
 _NUMBER_START = frozenset("-+.0123456789")
 # Plain scalars YAML 1.1 reads as numbers and YAML 1.2 does not (or reads differently).
 _YAML11_NUMBERS = [
-    (re.compile(r"[-+]?0[0-9_]+"), "leading zero (YAML 1.1 reads it as octal); write the decimal number without it, "
-                                   "or quote it if it is text"),
+    (
+        re.compile(r"[-+]?0[0-9_]+"),
+        "leading zero (YAML 1.1 reads it as octal); write the decimal number without it, "
+        "or quote it if it is text",
+    ),
     (re.compile(r"[-+]?0[xX][0-9a-fA-F_]+"), "hexadecimal; write the number in decimal"),
     (re.compile(r"[-+]?0[oO][0-7_]+"), "octal; write the number in decimal"),
     (re.compile(r"[-+]?0[bB][01_]+"), "binary; write the number in decimal"),
-    (re.compile(r"[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?"),
-     "base 60 (YAML 1.1 reads 1:30 as 90); write the number in decimal, or quote it if it is text"),
-    (re.compile(r"[-+]?[0-9_]*_[0-9_]*(?:\.[0-9_]*)?(?:[eE][-+]?[0-9]+)?|[-+]?\.[0-9_]*_[0-9_]*"),
-     "digit separator '_' (YAML 1.1 only); write the number without underscores"),
+    (
+        re.compile(r"[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?"),
+        "base 60 (YAML 1.1 reads 1:30 as 90); write the number in decimal, or quote it if it is text",
+    ),
+    (
+        re.compile(r"[-+]?[0-9_]*_[0-9_]*(?:\.[0-9_]*)?(?:[eE][-+]?[0-9]+)?|[-+]?\.[0-9_]*_[0-9_]*"),
+        "digit separator '_' (YAML 1.1 only); write the number without underscores",
+    ),
 ]
 _SCALAR_TAGS = {_YAML + "str", _YAML + "int", _YAML + "float", _YAML + "bool", _YAML + "null", "!"}
 _COLLECTION_TAGS = {_YAML + "seq", _YAML + "map", "!"}
@@ -94,7 +118,7 @@ def _short(text: str) -> str:
 
 def _show_tag(tag: str) -> str:
     """A tag as written (``!!set``), cut to a few characters."""
-    shown = "!!" + tag[len(_YAML):] if tag.startswith(_YAML) else tag
+    shown = "!!" + tag[len(_YAML) :] if tag.startswith(_YAML) else tag
     return shown if len(shown) <= 40 else shown[:37] + "..."
 
 
@@ -104,7 +128,13 @@ class _Frame:
     __slots__ = ("value", "is_map", "key", "key_mark", "anchor", "start_total", "height", "merges", "mark")
 
     def __init__(self, value, is_map, anchor, start_total, mark):
-        self.value, self.is_map, self.anchor, self.start_total, self.mark = value, is_map, anchor, start_total, mark
+        self.value, self.is_map, self.anchor, self.start_total, self.mark = (
+            value,
+            is_map,
+            anchor,
+            start_total,
+            mark,
+        )
         self.key = _NO_KEY
         self.key_mark = None
         self.height = 1
@@ -178,8 +208,10 @@ def read_document(text: str) -> Any:
         elif kind is MappingStartEvent or kind is SequenceStartEvent:
             total += 1
             if event.tag is not None and event.tag not in _COLLECTION_TAGS:
-                fail(f"tag {_show_tag(event.tag)} is not supported (only plain lists, mappings and scalars)",
-                     event.start_mark)
+                fail(
+                    f"tag {_show_tag(event.tag)} is not supported (only plain lists, mappings and scalars)",
+                    event.start_mark,
+                )
             if len(stack) >= MAX_DEPTH:
                 fail(f"nested more than {MAX_DEPTH} levels deep", event.start_mark)
             if stack and stack[-1].is_map and stack[-1].key is _NO_KEY:
@@ -205,7 +237,9 @@ def read_document(text: str) -> Any:
         elif kind is AliasEvent:
             found = anchors.get(event.anchor)
             if found is None:
-                fail(f"alias *{_short(event.anchor)[1:-1]} names no anchor defined before it", event.start_mark)
+                fail(
+                    f"alias *{_short(event.anchor)[1:-1]} names no anchor defined before it", event.start_mark
+                )
             value, size, height = found
             total += size
             through_aliases += size
@@ -253,7 +287,9 @@ def _add(frame: _Frame, value: Any, mark, fail) -> None:
             merged = value if isinstance(value, list) else [value]
             if not merged or not all(isinstance(m, dict) for m in merged):
                 frame.key = _MERGE
-                fail("'<<' (merge) needs a mapping or a list of mappings, usually aliases: <<: *defaults", mark)
+                fail(
+                    "'<<' (merge) needs a mapping or a list of mappings, usually aliases: <<: *defaults", mark
+                )
             frame.merges = merged
         else:
             frame.value[key] = "<<" if value is _MERGE else value
@@ -305,13 +341,23 @@ def _tagged_scalar(event, fail) -> Any:
     """A scalar with an explicit standard tag (``!!str 010``, ``!!float 1``)."""
     tag, value = event.tag, event.value
     if tag not in _SCALAR_TAGS:
-        fail(f"tag {_show_tag(tag)} is not supported (only plain lists, mappings and scalars)", event.start_mark)
+        fail(
+            f"tag {_show_tag(tag)} is not supported (only plain lists, mappings and scalars)",
+            event.start_mark,
+        )
     if tag == _YAML + "str":
         return value
-    resolved = _WORDS[value] if value in _WORDS else _number(value, event.start_mark, fail) if value else value
-    expected = {_YAML + "int": int, _YAML + "float": (int, float), _YAML + "bool": bool, _YAML + "null": type(None)}[tag]
+    resolved = (
+        _WORDS[value] if value in _WORDS else _number(value, event.start_mark, fail) if value else value
+    )
+    expected = {
+        _YAML + "int": int,
+        _YAML + "float": (int, float),
+        _YAML + "bool": bool,
+        _YAML + "null": type(None),
+    }[tag]
     if not isinstance(resolved, expected) or (isinstance(resolved, bool) and tag != _YAML + "bool"):
-        fail(f"{_short(value)} is not a valid {tag[len(_YAML):]}", event.start_mark)
+        fail(f"{_short(value)} is not a valid {tag[len(_YAML) :]}", event.start_mark)
     return float(resolved) if tag == _YAML + "float" else resolved
 
 

@@ -44,8 +44,14 @@ def dump(data: Any, *, width: int = 100) -> str:
     # PyYAML's double-quoted writer escapes controls, NEL, U+2028/9 and the BOM itself, but
     # with allow_unicode it keeps format characters (U+202E) raw: turn it off for such text.
     allow_unicode = not any(unicodedata.category(c) in ("Cf", "Co", "Cn") for s in _strings(data) for c in s)
-    return yaml.dump(data, Dumper=Dumper, sort_keys=False, allow_unicode=allow_unicode, default_flow_style=None,
-                     width=width)
+    return yaml.dump(
+        data,
+        Dumper=Dumper,
+        sort_keys=False,
+        allow_unicode=allow_unicode,
+        default_flow_style=None,
+        width=width,
+    )
 
 
 def _strings(data: Any):

@@ -5,8 +5,9 @@ from __future__ import annotations
 
 import os
 from collections import deque
+from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
-from typing import Any, Callable
+from typing import Any
 
 Rows = list[list[Any]]
 
@@ -24,7 +25,9 @@ def available_cores() -> int:
         return max(1, os.cpu_count() or 1)
 
 
-def run_local(compute: Callable[[int, int, int], Rows], ranges, threads: int, on_rows: Callable[[Rows], None]) -> None:
+def run_local(
+    compute: Callable[[int, int, int], Rows], ranges, threads: int, on_rows: Callable[[Rows], None]
+) -> None:
     """Each range through ``compute(a, b, threads)`` (whose kernel call spreads the runs over
     ``threads`` cores). Two chunks are in flight, so that one chunk's Python work (building
     bodies, summarising) overlaps the other's integration; rows are delivered in order."""
@@ -54,8 +57,13 @@ def usable_workers(requested: int | None) -> int:
     return min(requested or available_cores(), available_cores())
 
 
-def run_dask(compute: Callable[[int, int, int], Rows], ranges, address: str, on_rows: Callable[[Rows], None],
-             workers: int | None = None) -> None:
+def run_dask(
+    compute: Callable[[int, int, int], Rows],
+    ranges,
+    address: str,
+    on_rows: Callable[[Rows], None],
+    workers: int | None = None,
+) -> None:
     """Each range as a task on the Dask distributed scheduler at ``address`` (``"local"``
     starts a private local cluster of ``workers`` single-threaded processes, default one per
     core: see :func:`local_cluster`). At most four tasks per worker thread are in flight; rows
@@ -97,23 +105,33 @@ def local_cluster(workers: int):
     could create first and plant lock-file links in. The workers ignore Ctrl-C: the terminal's SIGINT reaches the whole process
     group, and this process shuts them down itself (one line, no traceback from each)."""
     import signal
+    import tempfile
 
     import dask
     from distributed import Client, LocalCluster
     from distributed.security import Security
 
-    import tempfile
-
     security = Security.temporary()
     scratch = tempfile.mkdtemp(prefix="rbi-dask-")
-    private = {"distributed.scheduler.http.routes": [], "distributed.worker.http.routes": [],
-               "temporary-directory": scratch}
+    private = {
+        "distributed.scheduler.http.routes": [],
+        "distributed.worker.http.routes": [],
+        "temporary-directory": scratch,
+    }
     previous = _ignore_sigint()
     try:
         with dask.config.set(private):
-            cluster = LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, host="127.0.0.1",
-                                   protocol="tls://", security=security, dashboard_address=None,
-                                   silence_logs=50, local_directory=scratch)
+            cluster = LocalCluster(
+                n_workers=workers,
+                threads_per_worker=1,
+                processes=True,
+                host="127.0.0.1",
+                protocol="tls://",
+                security=security,
+                dashboard_address=None,
+                silence_logs=50,
+                local_directory=scratch,
+            )
     except BaseException:
         import shutil
 
@@ -153,7 +171,9 @@ def connect(address: str):
         return box["client"]
     error = box.get("error")
     why = "no answer" if error is None else " ".join(f"{type(error).__name__}: {error}".split())[:160]
-    raise InputError(f"--dask {address}: no Dask scheduler answered there within {CONNECT_SECONDS:g} s ({why})")
+    raise InputError(
+        f"--dask {address}: no Dask scheduler answered there within {CONNECT_SECONDS:g} s ({why})"
+    )
 
 
 def _ignore_sigint():

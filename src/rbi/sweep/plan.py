@@ -69,14 +69,17 @@ def parse_axis(name: str, text: str) -> GridAxis | Draw:
         if kind == "uniform" and b < a:
             raise ValueError(f"uniform(LOW,HIGH) needs LOW <= HIGH (got {text!r})")
         if kind == "uniform" and not math.isfinite(b - a):
-            raise ValueError(f"uniform(LOW,HIGH): HIGH - LOW overflows a double (got {text!r}); the range must be "
-                             f"narrower than {np.finfo(float).max:.3g}")
+            raise ValueError(
+                f"uniform(LOW,HIGH): HIGH - LOW overflows a double (got {text!r}); the range must be "
+                f"narrower than {np.finfo(float).max:.3g}"
+            )
         return Draw(name, kind, a, b)
     try:
         value = float(text)
     except ValueError:
-        raise ValueError(f"expected START:STOP:COUNT, a number, normal(MEAN,SD) or uniform(LOW,HIGH) "
-                         f"(got {text[:60]!r})") from None
+        raise ValueError(
+            f"expected START:STOP:COUNT, a number, normal(MEAN,SD) or uniform(LOW,HIGH) (got {text[:60]!r})"
+        ) from None
     if not math.isfinite(value):
         raise ValueError(f"must be a finite number (got {text!r})")
     return GridAxis(name, value, value, 1)

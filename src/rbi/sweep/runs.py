@@ -16,8 +16,15 @@ import numpy as np
 from rbi.spec.variations import FieldPath
 from rbi.sweep.plan import Plan
 
-RESULT_COLUMNS = ("max_tilt_deg", "final_tilt_deg", "min_tilt_deg", "precession_rate_deg_s", "energy_drift",
-                  "steps", "status")
+RESULT_COLUMNS = (
+    "max_tilt_deg",
+    "final_tilt_deg",
+    "min_tilt_deg",
+    "precession_rate_deg_s",
+    "energy_drift",
+    "steps",
+    "status",
+)
 """Columns after ``run`` and the swept values, in order."""
 
 OUT_BYTES_PER_CHUNK = 64 * 2**20
@@ -96,8 +103,9 @@ def _derive_scene(job: SweepJob, values: tuple[float, ...]):
     if isinstance(body, str):
         return body
     try:
-        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, job.gravity_si),
-                                     job.spin_axis)
+        return scene_from_properties(
+            body.props, body.pivot, gravity_in(body.length_unit, job.gravity_si), job.spin_axis
+        )
     except ValueError as exc:
         return _one_line(f"cannot simulate: {exc}")
 
@@ -131,9 +139,19 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
     with np.errstate(all="ignore"):
         inertia_inv = np.array([s.inertia_inv for s in scenes])
     integrator().integrate_batch(
-        np.array(starts), t, np.array([s.inertia for s in scenes]), inertia_inv,
-        np.array([s.gravity_moment for s in scenes]), np.array([max(s.natural_rate, 0.0) for s in scenes]),
-        float(job.rtol), int(job.max_steps), out, counts, status, int(threads))
+        np.array(starts),
+        t,
+        np.array([s.inertia for s in scenes]),
+        inertia_inv,
+        np.array([s.gravity_moment for s in scenes]),
+        np.array([max(s.natural_rate, 0.0) for s in scenes]),
+        float(job.rtol),
+        int(job.max_steps),
+        out,
+        counts,
+        status,
+        int(threads),
+    )
     finite = np.all(np.isfinite(out), axis=(1, 2))
     figures_of: dict[int, dict] = {}
     by_scene: dict[int, list[int]] = {}  # runs of one scene are summarised together
@@ -147,16 +165,25 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
     for b, i in enumerate(ready):
         if status[b] == STATUS_DONE:
             if not finite[b]:
-                rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + ["failed: the state stopped being finite (overflow)"]
+                rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + [
+                    "failed: the state stopped being finite (overflow)"
+                ]
                 continue
             figures = figures_of[b]
-            rows[i] += [figures["max_tilt_deg"], figures["final_tilt_deg"], figures["min_tilt_deg"],
-                        figures["precession_rate_deg_s"], figures["energy_drift"],
-                        int(counts[b, 1]), "ok"]
+            rows[i] += [
+                figures["max_tilt_deg"],
+                figures["final_tilt_deg"],
+                figures["min_tilt_deg"],
+                figures["precession_rate_deg_s"],
+                figures["energy_drift"],
+                int(counts[b, 1]),
+                "ok",
+            ]
             continue
-        reason = {STATUS_MORE: f"failed: step budget of {job.max_steps:,} steps reached",
-                  STATUS_STEP_TOO_SMALL: "failed: the step size fell below the time resolution"}.get(
-            int(status[b]), "failed: the state stopped being finite (overflow)")
+        reason = {
+            STATUS_MORE: f"failed: step budget of {job.max_steps:,} steps reached",
+            STATUS_STEP_TOO_SMALL: "failed: the step size fell below the time resolution",
+        }.get(int(status[b]), "failed: the state stopped being finite (overflow)")
         rows[i] += [None] * (len(RESULT_COLUMNS) - 2) + [int(counts[b, 1]), reason]
     return rows
 

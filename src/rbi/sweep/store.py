@@ -31,8 +31,9 @@ import io
 import json
 import math
 import os
+from collections.abc import Iterable
 from pathlib import Path
-from typing import Any, Iterable
+from typing import Any
 
 from rbi.errors import InputError
 from rbi.files import safe
@@ -124,8 +125,11 @@ class SweepOutput:
         side = settings_path(self.path)
         safe.remove(side)
         safe.remove_private_folder(rows_folder(self.path))
-        safe.replace_small(side, json.dumps(self.settings, sort_keys=True).encode(),
-                           f"{self._label}: settings file {safe.shown(side.name)}")
+        safe.replace_small(
+            side,
+            json.dumps(self.settings, sort_keys=True).encode(),
+            f"{self._label}: settings file {safe.shown(side.name)}",
+        )
         if self.format == "csv":
             mode = None
             if safe.existing_regular(self.path, self._label, own=False):  # an output the user names: replaced
@@ -142,18 +146,25 @@ class SweepOutput:
         side = settings_path(self.path)
         side_label = f"{self._label}: cannot resume: settings file {safe.shown(side.name)}"
         if not safe.existing_regular(side, side_label):
-            raise InputError(f"{self._label}: cannot resume: no unfinished sweep there (the settings file "
-                             f"{safe.shown(side.name)} is missing: the sweep finished, or the file was not written "
-                             "by rbi sweep)")
+            raise InputError(
+                f"{self._label}: cannot resume: no unfinished sweep there (the settings file "
+                f"{safe.shown(side.name)} is missing: the sweep finished, or the file was not written "
+                "by rbi sweep)"
+            )
         try:
             recorded = json.loads(safe.read_capped(side, SETTINGS_LIMIT, side_label).decode("utf-8"))
         except (UnicodeDecodeError, ValueError, RecursionError):
             raise InputError(f"{side_label}: is not a settings file rbi wrote") from None
         if recorded != self.settings:
-            changed = sorted(k for k in set(recorded if isinstance(recorded, dict) else {}) | set(self.settings)
-                             if not isinstance(recorded, dict) or recorded.get(k) != self.settings.get(k))
-            raise InputError(f"{self._label}: cannot resume: the sweep there was made with other settings "
-                             f"({', '.join(changed[:6]) or 'all'} differ)")
+            changed = sorted(
+                k
+                for k in set(recorded if isinstance(recorded, dict) else {}) | set(self.settings)
+                if not isinstance(recorded, dict) or recorded.get(k) != self.settings.get(k)
+            )
+            raise InputError(
+                f"{self._label}: cannot resume: the sweep there was made with other settings "
+                f"({', '.join(changed[:6]) or 'all'} differ)"
+            )
         if self.format == "csv":
             return self._resume_csv(keep)
         return self._resume_parquet(keep)
@@ -172,8 +183,10 @@ class SweepOutput:
                     self._append(csv_bytes([self.columns]))
                     return []
                 if not header.endswith(b"\n") or _csv_line(header, what, 1) != self.columns:
-                    raise InputError(f"{what}: its columns are not those of this sweep "
-                                     f"(expected {','.join(self.columns)[:200]})")
+                    raise InputError(
+                        f"{what}: its columns are not those of this sweep "
+                        f"(expected {','.join(self.columns)[:200]})"
+                    )
                 good_end = len(header)
                 fragment = b""
                 batch: list[list[str]] = []
@@ -193,7 +206,9 @@ class SweepOutput:
                 checker.check_fragment(fragment)
             self.done = checker.count
             if fragment:
-                os.ftruncate(fd, good_end)  # a partial last line (a kill during a write): every whole row checked
+                os.ftruncate(
+                    fd, good_end
+                )  # a partial last line (a kill during a write): every whole row checked
             self._fd, fd = fd, -1
             self._size = good_end
             os.lseek(self._fd, good_end, os.SEEK_SET)
@@ -218,8 +233,10 @@ class SweepOutput:
                 safe.remove(piece)  # a chunk file whose write never finished
                 continue
             if not (name.endswith(".parquet") and name[:-8].isdigit() and len(name) == 20):
-                raise InputError(f"{what}: {safe.shown(folder.name)} holds {safe.shown(name)[:80]}, a file rbi "
-                                 "did not write")
+                raise InputError(
+                    f"{what}: {safe.shown(folder.name)} holds {safe.shown(name)[:80]}, a file rbi "
+                    "did not write"
+                )
             label = f"{what}: {safe.shown(folder.name)}/{name}"
             if int(name[:-8]) != checker.count:
                 raise InputError(f"{label}: does not start at run {checker.count}")
@@ -248,8 +265,10 @@ class SweepOutput:
             else:
                 self._write_piece(rows)
         except OSError as exc:
-            raise InputError(f"{self._label}: cannot write: {safe.reason(exc)}; {self.done:,} of {self.plan.size:,} "
-                             "runs are kept: make room and run the same command with --resume") from None
+            raise InputError(
+                f"{self._label}: cannot write: {safe.reason(exc)}; {self.done:,} of {self.plan.size:,} "
+                "runs are kept: make room and run the same command with --resume"
+            ) from None
         self.done += len(rows)
 
     def _append(self, data: bytes) -> None:
@@ -272,7 +291,9 @@ class SweepOutput:
         import pyarrow.parquet as pq
 
         folder = rows_folder(self.path)
-        table = pa.Table.from_pylist([dict(zip(self.columns, row)) for row in rows], schema=_arrow_schema(self.columns))
+        table = pa.Table.from_pylist(
+            [dict(zip(self.columns, row)) for row in rows], schema=_arrow_schema(self.columns)
+        )
         fd, temporary = tempfile.mkstemp(prefix=".rbi-", suffix=".parquet", dir=folder)
         try:
             with os.fdopen(fd, "wb") as handle:
@@ -293,8 +314,10 @@ class SweepOutput:
                 try:
                     self._combine()
                 except InputError as exc:
-                    raise InputError(f"{exc}; all {self.done:,} runs are kept: make room and run the same command "
-                                     "with --resume") from None
+                    raise InputError(
+                        f"{exc}; all {self.done:,} runs are kept: make room and run the same command "
+                        "with --resume"
+                    ) from None
             elif self._fd >= 0:
                 os.fsync(self._fd)
             safe.remove(settings_path(self.path))
@@ -338,7 +361,7 @@ class RowCheck:
         self.what = what
         self.count = 0
         self.swept = len(plan.names)
-        self.results = columns[1 + self.swept:]
+        self.results = columns[1 + self.swept :]
         self.tilts = [i for i, c in enumerate(columns) if c.endswith("_tilt_deg") and i > self.swept]
 
     def check(self, rows: list[list[Any]], text: bool, keep: bool) -> list[list[Any]]:
@@ -352,9 +375,11 @@ class RowCheck:
         for offset, row in enumerate(rows):
             k = start + offset
             typed = self._typed(row, k, text)
-            swept = typed[1:1 + self.swept]
+            swept = typed[1 : 1 + self.swept]
             if any(v != float(e) for v, e in zip(swept, expected[offset])):
-                raise InputError(f"{self.what}: row of run {k} holds values that are not this sweep's run {k}")
+                raise InputError(
+                    f"{self.what}: row of run {k} holds values that are not this sweep's run {k}"
+                )
             self._check_results(typed, k)
             if keep:
                 typed_rows.append(typed)
@@ -364,8 +389,11 @@ class RowCheck:
     def check_fragment(self, fragment: bytes) -> None:
         """A partial last line is a cut-off row of the next run, or not this sweep's file."""
         first = fragment.split(b",", 1)[0]
-        if self.count >= self.plan.size or not str(self.count).encode().startswith(first) \
-                or fragment.count(b",") >= len(self.columns):
+        if (
+            self.count >= self.plan.size
+            or not str(self.count).encode().startswith(first)
+            or fragment.count(b",") >= len(self.columns)
+        ):
             raise InputError(f"{self.what}: its last line is not part of a row of this sweep")
 
     def _typed(self, row: list[Any], k: int, text: bool) -> list[Any]:
@@ -375,8 +403,10 @@ class RowCheck:
         for name, cell in zip(self.columns, row):
             value = _cell(name, cell, text)
             if value is _BAD:
-                raise InputError(f"{self.what}: row of run {k}: {name}: {safe.shown(str(cell))[:40]!r} is not a "
-                                 "value this sweep writes")
+                raise InputError(
+                    f"{self.what}: row of run {k}: {name}: {safe.shown(str(cell))[:40]!r} is not a "
+                    "value this sweep writes"
+                )
             typed.append(value)
         if typed[0] != k:
             raise InputError(f"{self.what}: row {k + 2} is not run {k} of this sweep")
@@ -394,8 +424,10 @@ class RowCheck:
                 raise InputError(f"{self.what}: row of run {k}: {name}: a value in a failed run")
         for i in self.tilts:
             if typed[i] is not None and not 0.0 <= typed[i] <= 180.0:
-                raise InputError(f"{self.what}: row of run {k}: {self.columns[i]}: {typed[i]!r} is not an angle "
-                                 "between 0 and 180 degrees")
+                raise InputError(
+                    f"{self.what}: row of run {k}: {self.columns[i]}: {typed[i]!r} is not an angle "
+                    "between 0 and 180 degrees"
+                )
 
 
 _BAD = object()
@@ -433,7 +465,9 @@ def _line(handle, what: str, number: int) -> bytes:
     with no newline for gigabytes is refused, never read whole."""
     line = handle.readline(LINE_LIMIT + 1)
     if len(line) > LINE_LIMIT:
-        raise InputError(f"{what}: line {number} is longer than any line this sweep writes ({LINE_LIMIT:,} bytes)")
+        raise InputError(
+            f"{what}: line {number} is longer than any line this sweep writes ({LINE_LIMIT:,} bytes)"
+        )
     return line
 
 

@@ -13,9 +13,10 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any
 
 from rbi.errors import InputError
 
@@ -72,9 +73,13 @@ def check_settings(settings: SweepSettings) -> None:
 
     if settings.runs < 1:
         raise InputError(f"--runs: must be at least 1 (got {settings.runs})")
-    check_run_settings(settings.duration, settings.tilt_axis, settings.gravity, settings.max_steps, settings.rtol)
+    check_run_settings(
+        settings.duration, settings.tilt_axis, settings.gravity, settings.max_steps, settings.rtol
+    )
     if not 1 <= settings.samples <= MAX_SWEEP_SAMPLES:
-        raise InputError(f"--samples: must be between 1 and {MAX_SWEEP_SAMPLES:,} for a sweep (got {settings.samples})")
+        raise InputError(
+            f"--samples: must be between 1 and {MAX_SWEEP_SAMPLES:,} for a sweep (got {settings.samples})"
+        )
     from rbi.runs.prepare import spin_axis_value
 
     spin_axis_value(settings.spin_axis)
@@ -93,8 +98,10 @@ def require(module: str, extra: str, option: str) -> None:
     import importlib.util
 
     if importlib.util.find_spec(module) is None:
-        raise InputError(f"{option}: needs the optional package {module!r}: pip install '.[{extra}]' from rbi's "
-                         f"source folder, or pip install {module}")
+        raise InputError(
+            f"{option}: needs the optional package {module!r}: pip install '.[{extra}]' from rbi's "
+            f"source folder, or pip install {module}"
+        )
 
 
 class Study:
@@ -115,12 +122,18 @@ class Study:
         self.path, self.raw, self.settings = path, raw, settings
         axes, varied = self._axes()
         self.plan = _plan(axes, settings, rows_printed)
-        self.job = SweepJob(path=str(path), raw=raw, plan=self.plan, varied=tuple(varied),
-                            duration=float(settings.duration), samples=int(settings.samples),
-                            rtol=float(settings.rtol),
-                            gravity_si=STANDARD_GRAVITY_SI if settings.gravity is None else float(settings.gravity),
-                            tilt_axis=settings.tilt_axis.lower(),
-                            max_steps=DEFAULT_MAX_STEPS if settings.max_steps is None else int(settings.max_steps))
+        self.job = SweepJob(
+            path=str(path),
+            raw=raw,
+            plan=self.plan,
+            varied=tuple(varied),
+            duration=float(settings.duration),
+            samples=int(settings.samples),
+            rtol=float(settings.rtol),
+            gravity_si=STANDARD_GRAVITY_SI if settings.gravity is None else float(settings.gravity),
+            tilt_axis=settings.tilt_axis.lower(),
+            max_steps=DEFAULT_MAX_STEPS if settings.max_steps is None else int(settings.max_steps),
+        )
         self.nominal = self.job.body(tuple(current_values(raw, varied)))
         if isinstance(self.nominal, str):
             raise InputError(f"{path}: {self.nominal}")
@@ -141,8 +154,14 @@ class Study:
         from rbi.sweep.plan import parse_axis
 
         s = self.settings
-        axes = [] if s.mass_properties else [_axis(parse_axis, "spin", s.spin or "0", "--spin"),
-                                             _axis(parse_axis, "tilt_deg", s.tilt or "0", "--tilt")]
+        axes = (
+            []
+            if s.mass_properties
+            else [
+                _axis(parse_axis, "spin", s.spin or "0", "--spin"),
+                _axis(parse_axis, "tilt_deg", s.tilt or "0", "--tilt"),
+            ]
+        )
         varied = []
         for item in s.vary:
             path_text, sep, range_text = item.partition("=")
@@ -172,12 +191,16 @@ class Study:
             return  # every run will say why it cannot be simulated
         spins = [a for a in self.plan.axes if a.name == "spin"][0]
         fastest = max(abs(spins.start), abs(spins.stop)) if hasattr(spins, "start") else 0.0
-        per_run = estimated_steps(scene, np.array([0.0, 0.0, fastest]), self.job.duration, "default", self.job.rtol)
+        per_run = estimated_steps(
+            scene, np.array([0.0, 0.0, fastest]), self.job.duration, "default", self.job.rtol
+        )
         total = per_run * self.plan.size
         if total > SWEEP_STEP_BUDGET and not self.settings.yes:
-            raise InputError(f"{self.job.path}: this sweep is estimated to need about {total:.2g} integration steps "
-                             f"({self.plan.size:,} runs), more than the budget of {SWEEP_STEP_BUDGET:.0e}: fewer runs, "
-                             "a shorter --duration or a looser --rtol, or --yes to run it anyway")
+            raise InputError(
+                f"{self.job.path}: this sweep is estimated to need about {total:.2g} integration steps "
+                f"({self.plan.size:,} runs), more than the budget of {SWEEP_STEP_BUDGET:.0e}: fewer runs, "
+                "a shorter --duration or a looser --rtol, or --yes to run it anyway"
+            )
 
     def nominal_scene(self):
         """The scene of the nominal body, or None when it cannot be simulated."""
@@ -186,8 +209,9 @@ class Study:
 
         body = self.nominal
         try:
-            return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, self.job.gravity_si),
-                                         self.job.spin_axis)
+            return scene_from_properties(
+                body.props, body.pivot, gravity_in(body.length_unit, self.job.gravity_si), self.job.spin_axis
+            )
         except ValueError:
             return None
 
@@ -209,12 +233,14 @@ class Study:
 
             def compute(a, b, threads):
                 return mass_rows(job, axes_nominal, a, b)
+
             return compute, 256
         from rbi.sweep.execute import available_cores
         from rbi.sweep.runs import run_chunk
 
         def compute(a, b, threads):
             return run_chunk(job, a, b, threads)
+
         return compute, job.chunk_size(self.settings.workers or available_cores())
 
     def store_settings(self) -> dict:
@@ -225,13 +251,26 @@ class Study:
             spec_bytes = Path(self.path).read_bytes()
         except OSError:
             spec_bytes = json.dumps(self.raw, sort_keys=True, default=str).encode()
-        return {"spec_sha256": hashlib.sha256(spec_bytes).hexdigest(), "spin": s.spin or "0", "tilt": s.tilt or "0",
-                "vary": list(s.vary), "runs": job.plan.runs, "seed": job.plan.seed, "duration": job.duration,
-                "samples": job.samples, "rtol": job.rtol, "gravity_si": job.gravity_si, "tilt_axis": job.tilt_axis,
-                "spin_axis": list(job.spin_axis), "max_steps": job.max_steps, "mass_properties": s.mass_properties}
+        return {
+            "spec_sha256": hashlib.sha256(spec_bytes).hexdigest(),
+            "spin": s.spin or "0",
+            "tilt": s.tilt or "0",
+            "vary": list(s.vary),
+            "runs": job.plan.runs,
+            "seed": job.plan.seed,
+            "duration": job.duration,
+            "samples": job.samples,
+            "rtol": job.rtol,
+            "gravity_si": job.gravity_si,
+            "tilt_axis": job.tilt_axis,
+            "spin_axis": list(job.spin_axis),
+            "max_steps": job.max_steps,
+            "mass_properties": s.mass_properties,
+        }
 
-    def run(self, out_target=None, resume: bool = False,
-            progress: Callable[[int, int], Any] | None = None) -> list[list[Any]] | None:
+    def run(
+        self, out_target=None, resume: bool = False, progress: Callable[[int, int], Any] | None = None
+    ) -> list[list[Any]] | None:
         """Run every run not already in the output: rows (lists in :attr:`columns` order) when
         the sweep has at most :data:`MAX_ROWS_SHOWN` runs, else None (they are in the output).
 
@@ -285,9 +324,13 @@ class Study:
     def result(self, rows: list[list[Any]] | None) -> dict[str, Any]:
         """What `rbi sweep --format json` prints: name, units, count, columns and, when the rows
         were held, the runs as objects, how many failed and (mass properties) their spread."""
-        result = {"name": self.nominal.name, "units": self.nominal.units,
-                  "warnings": list(self.nominal.warnings), "count": self.plan.size,
-                  "columns": self.columns}
+        result = {
+            "name": self.nominal.name,
+            "units": self.nominal.units,
+            "warnings": list(self.nominal.warnings),
+            "count": self.plan.size,
+            "columns": self.columns,
+        }
         if rows is not None:
             result["runs"] = [dict(zip(self.columns, r)) for r in rows]
             result["failed"] = self.plan.size - sum(1 for r in rows if r[-1] == "ok")
@@ -319,10 +362,15 @@ class Study:
             threshold = None if found is None else found["omega3"]
         x_name, y_name = swept[0], swept[1] if len(swept) > 1 else None
         index = {name: i for i, name in enumerate(self.columns)}
-        return {"x": [r[index[x_name]] for r in rows], "y": [r[index[y_name]] for r in rows] if y_name else None,
-                "values": [r[index["max_tilt_deg"]] for r in rows], "x_label": _label(x_name),
-                "y_label": _label(y_name) if y_name else None, "threshold": threshold,
-                "title": f"{self.nominal.name or self.job.path}: largest tilt over {self.job.duration:g} s"}
+        return {
+            "x": [r[index[x_name]] for r in rows],
+            "y": [r[index[y_name]] for r in rows] if y_name else None,
+            "values": [r[index["max_tilt_deg"]] for r in rows],
+            "x_label": _label(x_name),
+            "y_label": _label(y_name) if y_name else None,
+            "threshold": threshold,
+            "title": f"{self.nominal.name or self.job.path}: largest tilt over {self.job.duration:g} s",
+        }
 
 
 def _plan(axes, settings: SweepSettings, rows_printed: bool):
@@ -336,8 +384,10 @@ def _plan(axes, settings: SweepSettings, rows_printed: bool):
     if plan.size > MAX_RUNS:
         raise InputError(f"the sweep has {plan.size:.3g} runs, more than the 1e8 one sweep may have")
     if rows_printed and plan.size > MAX_ROWS_SHOWN:
-        raise InputError(f"the sweep has {plan.size:,} runs: more than {MAX_ROWS_SHOWN:,} are written to a file "
-                         "only: add --out FILE.csv")
+        raise InputError(
+            f"the sweep has {plan.size:,} runs: more than {MAX_ROWS_SHOWN:,} are written to a file "
+            "only: add --out FILE.csv"
+        )
     return plan
 
 

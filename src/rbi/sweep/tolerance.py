@@ -10,8 +10,19 @@ import numpy as np
 
 from rbi.sweep.runs import SweepJob
 
-MASS_COLUMNS = ("mass", "com_x", "com_y", "com_z", "moment_1", "moment_2", "moment_3",
-                "axis_1_tilt_deg", "axis_2_tilt_deg", "axis_3_tilt_deg", "status")
+MASS_COLUMNS = (
+    "mass",
+    "com_x",
+    "com_y",
+    "com_z",
+    "moment_1",
+    "moment_2",
+    "moment_3",
+    "axis_1_tilt_deg",
+    "axis_2_tilt_deg",
+    "axis_3_tilt_deg",
+    "status",
+)
 """Columns after ``run`` and the varied values: mass (M), centre of mass (L, body axes),
 principal moments about the centre of mass (M·L², ascending) and the angle of each principal
 axis from the nominal body's (deg, sign-free)."""
@@ -43,8 +54,16 @@ def mass_rows(job: SweepJob, nominal: np.ndarray, start: int, stop: int, threads
             continue
         moments, axes = principal_axes(body.props.inertia_com)
         tilts = np.degrees(np.arccos(np.clip(np.abs(np.sum(axes * nominal, axis=1)), 0.0, 1.0)))
-        rows.append(row + [float(body.props.mass), *map(float, body.props.com), *map(float, moments),
-                           *map(float, tilts), "ok"])
+        rows.append(
+            row
+            + [
+                float(body.props.mass),
+                *map(float, body.props.com),
+                *map(float, moments),
+                *map(float, tilts),
+                "ok",
+            ]
+        )
     return rows
 
 
@@ -58,6 +77,9 @@ def spread(columns: list[str], rows: list[list[Any]], skip: int) -> dict[str, di
             continue
         values = np.array([float(r[j]) for r in ok])
         stats = {f"p{p}": float(v) for p, v in zip(PERCENTILES, np.percentile(values, PERCENTILES))}
-        stats |= {"mean": float(np.mean(values)), "std": float(np.std(values, ddof=1)) if values.size > 1 else 0.0}
+        stats |= {
+            "mean": float(np.mean(values)),
+            "std": float(np.std(values, ddof=1)) if values.size > 1 else 0.0,
+        }
         out[name] = stats
     return out

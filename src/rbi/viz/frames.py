@@ -26,8 +26,9 @@ MAX_GIF_FRAMES = 1500
 """Most frames a GIF may have (a minute at 25 frames per second, some tens of MB)."""
 
 
-def body_mesh(parts: list[dict[str, Any]], size: float, holes: bool = True,
-              stripes: bool = True) -> tuple[np.ndarray, np.ndarray]:
+def body_mesh(
+    parts: list[dict[str, Any]], size: float, holes: bool = True, stripes: bool = True
+) -> tuple[np.ndarray, np.ndarray]:
     """The parts as quads ``(n, 4, 3)`` with an RGBA colour each (stripes darker; holes red and
     translucent, or left out when ``holes`` is false; point masses dark grey)."""
     from matplotlib.colors import to_rgba
@@ -42,7 +43,11 @@ def body_mesh(parts: list[dict[str, Any]], size: float, holes: bool = True,
         elif item["kind"] == "point":
             colours = np.tile(POINT_RGBA, (len(quads), 1))
         else:
-            base = np.array(to_rgba(PALETTE[item.get("part", index) % len(PALETTE)], 0.55 if item.get("stand_in") else 1.0))
+            base = np.array(
+                to_rgba(
+                    PALETTE[item.get("part", index) % len(PALETTE)], 0.55 if item.get("stand_in") else 1.0
+                )
+            )
             colours = np.tile(base, (len(quads), 1))
             if stripes:
                 colours[banded, :3] *= 0.62
@@ -55,7 +60,11 @@ def body_mesh(parts: list[dict[str, Any]], size: float, holes: bool = True,
 
 def cloud_points(parts: list[dict[str, Any]]) -> np.ndarray:
     """Every point of a point cloud among the parts, ``(n, 3)``."""
-    clouds = [np.asarray(item["positions"], dtype=float).reshape(-1, 3) for item in parts if item["kind"] == "points"]
+    clouds = [
+        np.asarray(item["positions"], dtype=float).reshape(-1, 3)
+        for item in parts
+        if item["kind"] == "points"
+    ]
     return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 
@@ -83,9 +92,12 @@ def _scene_axes(fig, data: dict[str, Any]):
         ground = float(data.get("ground_z") or 0.0) - 0.002 * size
         z_low, z_high = ground - 0.05 * size, max(high, 0.0) + 0.1 * size
         angles = np.linspace(0, 2 * np.pi, 97)
-        disc = np.column_stack((1.2 * size * np.cos(angles), 1.2 * size * np.sin(angles), np.full_like(angles, ground)))
-        ax.add_collection3d(Poly3DCollection([disc], facecolors=(0.85, 0.86, 0.89, 1.0), edgecolors="none",
-                                             zorder=0))
+        disc = np.column_stack(
+            (1.2 * size * np.cos(angles), 1.2 * size * np.sin(angles), np.full_like(angles, ground))
+        )
+        ax.add_collection3d(
+            Poly3DCollection([disc], facecolors=(0.85, 0.86, 0.89, 1.0), edgecolors="none", zorder=0)
+        )
         ax.scatter([0], [0], [0], color="black", s=14, zorder=3)
     else:
         z_low, z_high = -reach, reach
@@ -131,21 +143,32 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
         ax = _scene_axes(fig, data)
         from rbi.viz.labels import label, plain
 
-        plain(fig.text(0.02, 0.965, label(data.get("title", ""), MAX_TITLE_CHARS), fontsize=8.5, weight="bold",
-                       va="top"))
+        plain(
+            fig.text(
+                0.02,
+                0.965,
+                label(data.get("title", ""), MAX_TITLE_CHARS),
+                fontsize=8.5,
+                weight="bold",
+                va="top",
+            )
+        )
         readout = fig.text(0.02, 0.915, "", fontsize=8, va="top", family="monospace")
         for index in indices:
             t = data["times"][index]
             rotation = quaternion_matrix_xyzw(data["quaternions"][index])
             body = _draw_body(ax, quads, colours, rotation)
             turned = points @ rotation.T
-            dots = ax.scatter(turned[:, 0], turned[:, 1], turned[:, 2], s=4, color="#333333", depthshade=False,
-                              zorder=2)
+            dots = ax.scatter(
+                turned[:, 0], turned[:, 1], turned[:, 2], s=4, color="#333333", depthshade=False, zorder=2
+            )
             first = int(np.searchsorted(data["times"], t - data["trail_seconds"]))
-            recent = trace[first: index + 1]
+            recent = trace[first : index + 1]
             (path,) = ax.plot(recent[:, 0], recent[:, 1], recent[:, 2], color="#c03030", lw=0.9, zorder=1)
-            readout.set_text(f"t = {t:6.3f} s   tilt = {data['tilt_deg'][index]:6.2f}°   "
-                             f"|ω| = {data['omega'][index]:.2f} rad/s")
+            readout.set_text(
+                f"t = {t:6.3f} s   tilt = {data['tilt_deg'][index]:6.2f}°   "
+                f"|ω| = {data['omega'][index]:.2f} rad/s"
+            )
             fig.canvas.draw()
             yield np.asarray(fig.canvas.buffer_rgba())[..., :3].copy()
             body.remove()
@@ -166,5 +189,13 @@ def write_gif(data: dict[str, Any], path: str, fps: int = 25, progress=None) -> 
         images.append(Image.fromarray(frame).quantize(colors=GIF_COLOURS, method=Image.Quantize.MEDIANCUT))
         if progress is not None:
             progress(len(images), len(indices))
-    images[0].save(path, format="GIF", save_all=True, append_images=images[1:], duration=round(1000 / fps),
-                   loop=0, optimize=True, disposal=1)
+    images[0].save(
+        path,
+        format="GIF",
+        save_all=True,
+        append_images=images[1:],
+        duration=round(1000 / fps),
+        loop=0,
+        optimize=True,
+        disposal=1,
+    )

@@ -44,8 +44,16 @@ def marked_axis(scene) -> np.ndarray:
     return np.asarray(scene.spin_axis, dtype=float)
 
 
-def animation_data(title: str, geometry: list[dict[str, Any]], scene, t: np.ndarray, q: np.ndarray,
-                   omega: np.ndarray, tilt_deg: np.ndarray, length_unit: str) -> dict[str, Any]:
+def animation_data(
+    title: str,
+    geometry: list[dict[str, Any]],
+    scene,
+    t: np.ndarray,
+    q: np.ndarray,
+    omega: np.ndarray,
+    tilt_deg: np.ndarray,
+    length_unit: str,
+) -> dict[str, Any]:
     """Everything the page needs, as JSON-ready lists. ``geometry``: from
     :func:`rbi.spec.geometry.part_geometry` (body frame); ``q`` (N, 4) [w, x, y, z] body → world;
     ``omega`` (N, 3) body frame, rad/s."""
@@ -114,7 +122,7 @@ def height_range(parts: list[dict[str, Any]], size: float, q: np.ndarray) -> tup
     low, high = np.inf, -np.inf
     chunk = max(1, 2_000_000 // len(points))  # bounded memory for long runs of large meshes
     for start in range(0, len(heights_of_axes), chunk):
-        heights = points @ heights_of_axes[start: start + chunk].T
+        heights = points @ heights_of_axes[start : start + chunk].T
         low, high = min(low, float(heights.min())), max(high, float(heights.max()))
     return low, high
 

@@ -21,8 +21,13 @@ def _resource(*parts: str) -> str:
 def script_safe_json(data: Any) -> str:
     """JSON text that can sit inside a ``<script>`` element whatever strings it holds."""
     text = json.dumps(data, separators=(",", ":"), allow_nan=False, ensure_ascii=False)
-    return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026") \
-        .replace("\u2028", "\\u2028").replace("\u2029", "\\u2029")
+    return (
+        text.replace("<", "\\u003c")
+        .replace(">", "\\u003e")
+        .replace("&", "\\u0026")
+        .replace("\u2028", "\\u2028")
+        .replace("\u2029", "\\u2029")
+    )
 
 
 def html_page(data: dict[str, Any], speed: float = 1.0) -> str:
@@ -31,7 +36,13 @@ def html_page(data: dict[str, Any], speed: float = 1.0) -> str:
     three = _resource("vendor", "three", "three.bundle.min.js")
     if "</script" in three.lower():  # pragma: no cover - checked when the bundle is vendored
         raise ValueError("the three.js bundle cannot be inlined")
-    fill = {"TITLE": html.escape(str(data.get("title", "rbi"))), "SPEED": f"{float(speed):g}",
-            "DATA": script_safe_json(data), "THREE": three}
+    fill = {
+        "TITLE": html.escape(str(data.get("title", "rbi"))),
+        "SPEED": f"{float(speed):g}",
+        "DATA": script_safe_json(data),
+        "THREE": three,
+    }
     # one pass over the template: text put in is never searched for placeholders again
-    return re.sub(r"__(TITLE|SPEED|DATA|THREE)__", lambda m: fill[m.group(1)], _resource("templates", "page.html"))
+    return re.sub(
+        r"__(TITLE|SPEED|DATA|THREE)__", lambda m: fill[m.group(1)], _resource("templates", "page.html")
+    )

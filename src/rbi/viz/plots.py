@@ -19,7 +19,9 @@ def require_matplotlib(option: str = "--plot") -> None:
     try:
         import matplotlib  # noqa: F401
     except ImportError:
-        raise InputError(f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib") from None
+        raise InputError(
+            f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
+        ) from None
 
 
 def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
@@ -31,8 +33,17 @@ def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
     return v + 2.0 * w * uv + 2.0 * np.cross(u, uv)
 
 
-def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", format: str = "png", *,
-                    principal_axes=None, inertia=None, energy_unit: str = "J", spin_axis=(0.0, 0.0, 1.0)) -> None:
+def plot_trajectory(
+    columns: dict[str, np.ndarray],
+    path: str,
+    title: str = "",
+    format: str = "png",
+    *,
+    principal_axes=None,
+    inertia=None,
+    energy_unit: str = "J",
+    spin_axis=(0.0, 0.0, 1.0),
+) -> None:
     """Four panels saved at ``path``: the path of the tip of the spin axis (``spin_axis``, unit,
     body frame) seen from above,
     coloured by time; the tilt of that axis against time (a top) or, when ``principal_axes``
@@ -63,7 +74,9 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", 
         omega0 = np.array([columns["wx"][0], columns["wy"][0], columns["wz"][0]])
         momentum = rotate_by_quaternions(q[:1], np.asarray(inertia, dtype=float) @ omega0)[0]
         direction = momentum / (np.linalg.norm(momentum) or 1.0)
-        for k, (axis, colour) in enumerate(zip(np.asarray(principal_axes, dtype=float), ("#d62728", "#2ca02c", "#1f77b4"))):
+        for k, (axis, colour) in enumerate(
+            zip(np.asarray(principal_axes, dtype=float), ("#d62728", "#2ca02c", "#1f77b4"))
+        ):
             world = rotate_by_quaternions(q, axis)
             angle = np.degrees(np.arccos(np.clip(world @ direction, -1.0, 1.0)))
             name = ("smallest", "intermediate", "largest")[k]
@@ -123,8 +136,17 @@ def plot_trajectory(columns: dict[str, np.ndarray], path: str, title: str = "", 
     plt.close(fig)
 
 
-def plot_stability_map(xs, ys, values, path: str, x_label: str, y_label: str | None, threshold: float | None = None,
-                       title: str = "", format: str = "png") -> None:
+def plot_stability_map(
+    xs,
+    ys,
+    values,
+    path: str,
+    x_label: str,
+    y_label: str | None,
+    threshold: float | None = None,
+    title: str = "",
+    format: str = "png",
+) -> None:
     """The largest tilt of each run (log colour scale) over one or two swept axes, saved at
     ``path``. With one axis: tilt against it. ``threshold``: the sleeping-top spin (rad/s),
     drawn as a vertical line on a spin axis."""
@@ -143,7 +165,13 @@ def plot_stability_map(xs, ys, values, path: str, x_label: str, y_label: str | N
         ax.semilogy(xs[finite], np.maximum(values[finite], 1e-6), "o-", ms=3, lw=1)
         ax.set_ylabel("largest tilt [deg]")
         if np.any(~finite):
-            ax.plot(xs[~finite], np.full(int(np.sum(~finite)), ax.get_ylim()[0]), "x", color="red", label="failed run")
+            ax.plot(
+                xs[~finite],
+                np.full(int(np.sum(~finite)), ax.get_ylim()[0]),
+                "x",
+                color="red",
+                label="failed run",
+            )
     else:
         ys = np.asarray(ys, dtype=float)
         positive = values[finite & (values > 0)]
@@ -152,18 +180,33 @@ def plot_stability_map(xs, ys, values, path: str, x_label: str, y_label: str | N
         x_values, y_values = np.unique(xs), np.unique(ys)
         if x_values.size > 1 and y_values.size > 1 and x_values.size * y_values.size == xs.size:
             grid = np.full((y_values.size, x_values.size), np.nan)
-            grid[np.searchsorted(y_values, ys), np.searchsorted(x_values, xs)] = np.where(finite, np.maximum(values, low), np.nan)
-            mesh = ax.pcolormesh(x_values, y_values, grid, norm=LogNorm(low, high), shading="nearest", cmap="viridis")
+            grid[np.searchsorted(y_values, ys), np.searchsorted(x_values, xs)] = np.where(
+                finite, np.maximum(values, low), np.nan
+            )
+            mesh = ax.pcolormesh(
+                x_values, y_values, grid, norm=LogNorm(low, high), shading="nearest", cmap="viridis"
+            )
         else:
-            mesh = ax.scatter(xs[finite], ys[finite], c=np.maximum(values[finite], low), norm=LogNorm(low, high),
-                              cmap="viridis", s=18)
+            mesh = ax.scatter(
+                xs[finite],
+                ys[finite],
+                c=np.maximum(values[finite], low),
+                norm=LogNorm(low, high),
+                cmap="viridis",
+                s=18,
+            )
         if np.any(~finite):
             ax.plot(xs[~finite], ys[~finite], "x", color="red", label="failed run")
         fig.colorbar(mesh, ax=ax, label="largest tilt [deg] (log scale)")
         plain(ax.set_ylabel(label(y_label, 2 * MAX_LABEL_CHARS)))
     if threshold is not None and np.isfinite(threshold):
-        ax.axvline(threshold, color="white" if ys is not None else "black", ls="--", lw=1.2,
-                   label=f"sleeping-top threshold {threshold:.4g} rad/s (closed form)")
+        ax.axvline(
+            threshold,
+            color="white" if ys is not None else "black",
+            ls="--",
+            lw=1.2,
+            label=f"sleeping-top threshold {threshold:.4g} rad/s (closed form)",
+        )
     plain(ax.set_xlabel(label(x_label, 2 * MAX_LABEL_CHARS)))
     if ax.get_legend_handles_labels()[0]:
         ax.legend(loc="lower left", fontsize=8, framealpha=0.85)

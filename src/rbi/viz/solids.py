@@ -29,8 +29,9 @@ def _perpendiculars(axis: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _grid_quads(points: np.ndarray) -> np.ndarray:
     """Quads of a grid of points ``(rows, columns, 3)``."""
-    return np.stack((points[:-1, :-1], points[:-1, 1:], points[1:, 1:], points[1:, :-1]), axis=2) \
-        .reshape(-1, 4, 3)
+    return np.stack((points[:-1, :-1], points[:-1, 1:], points[1:, 1:], points[1:, :-1]), axis=2).reshape(
+        -1, 4, 3
+    )
 
 
 def _stripe_flags(rows: int, columns: int) -> np.ndarray:
@@ -50,9 +51,11 @@ def frustum_quads(start, end, start_radius: float, end_radius: float, inner_radi
         points = np.stack((p0 + r0 * ring, p1 + r1 * ring))
         return _grid_quads(points), _stripe_flags(1, SEGMENTS)
 
-    pieces = [surface(start_radius, a, end_radius, b),
-              surface(inner_radius, a, start_radius, a),
-              surface(end_radius, b, inner_radius, b)]
+    pieces = [
+        surface(start_radius, a, end_radius, b),
+        surface(inner_radius, a, start_radius, a),
+        surface(end_radius, b, inner_radius, b),
+    ]
     if inner_radius > 0:
         pieces.append(surface(inner_radius, b, inner_radius, a))
     return _join(pieces)
@@ -63,8 +66,14 @@ def ellipsoid_quads(center, semi_axes, rotation):
     rows = SEGMENTS // 2
     polar = np.linspace(0.0, np.pi, rows + 1)[:, None]
     azimuth = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
-    local = np.stack((np.sin(polar) * np.cos(azimuth), np.sin(polar) * np.sin(azimuth),
-                      np.cos(polar) * np.ones_like(azimuth)), axis=-1) * np.asarray(semi_axes, dtype=float)
+    local = np.stack(
+        (
+            np.sin(polar) * np.cos(azimuth),
+            np.sin(polar) * np.sin(azimuth),
+            np.cos(polar) * np.ones_like(azimuth),
+        ),
+        axis=-1,
+    ) * np.asarray(semi_axes, dtype=float)
     points = local @ np.asarray(rotation, dtype=float).T + np.asarray(center, dtype=float)
     return _grid_quads(points), _stripe_flags(rows, SEGMENTS)
 
@@ -72,7 +81,9 @@ def ellipsoid_quads(center, semi_axes, rotation):
 def box_quads(center, size, rotation):
     """The six faces of a box (no stripes)."""
     half = 0.5 * np.asarray(size, dtype=float)
-    corners = np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float) * half
+    corners = (
+        np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float) * half
+    )
     faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
     quads = corners[np.array(faces)] @ np.asarray(rotation, dtype=float).T + np.asarray(center, dtype=float)
     return quads, np.zeros(6, dtype=bool)
@@ -85,8 +96,11 @@ def torus_quads(center, axis, major_radius: float, minor_radius: float):
     around = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
     tube = np.linspace(0.0, 2 * np.pi, SEGMENTS // 2 + 1)[:, None]
     radial = np.cos(around)[..., None] * u + np.sin(around)[..., None] * v  # (1, S+1, 3)
-    points = (np.asarray(center, dtype=float) + (major_radius + minor_radius * np.cos(tube))[..., None] * radial
-              + (minor_radius * np.sin(tube))[..., None] * axis)
+    points = (
+        np.asarray(center, dtype=float)
+        + (major_radius + minor_radius * np.cos(tube))[..., None] * radial
+        + (minor_radius * np.sin(tube))[..., None] * axis
+    )
     return _grid_quads(points), _stripe_flags(SEGMENTS // 2, SEGMENTS)
 
 
@@ -98,8 +112,10 @@ def hemisphere_quads(center, axis, radius: float):
     polar = np.linspace(0.0, np.pi / 2, rows + 1)[:, None]
     azimuth = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
     points = np.asarray(center, dtype=float) + radius * (
-        (np.sin(polar) * np.cos(azimuth))[..., None] * u + (np.sin(polar) * np.sin(azimuth))[..., None] * v
-        + np.cos(polar)[..., None] * axis)
+        (np.sin(polar) * np.cos(azimuth))[..., None] * u
+        + (np.sin(polar) * np.sin(azimuth))[..., None] * v
+        + np.cos(polar)[..., None] * axis
+    )
     dome = (_grid_quads(points), _stripe_flags(rows, SEGMENTS))
     ring = np.cos(azimuth[0])[:, None] * u + np.sin(azimuth[0])[:, None] * v
     centre = np.asarray(center, dtype=float)
@@ -128,8 +144,13 @@ def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarra
     """Quads and stripe flags of one primitive; ``size``: the body's size (for point masses)."""
     kind = item["kind"]
     if kind == "frustum":
-        return frustum_quads(item["start"], item["end"], item["start_radius"], item["end_radius"],
-                             item.get("inner_radius", 0.0))
+        return frustum_quads(
+            item["start"],
+            item["end"],
+            item["start_radius"],
+            item["end_radius"],
+            item.get("inner_radius", 0.0),
+        )
     if kind == "ellipsoid":
         return ellipsoid_quads(item["center"], item["semi_axes"], item["rotation"])
     if kind == "torus":
@@ -144,7 +165,9 @@ def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarra
         return np.zeros((0, 4, 3)), np.zeros(0, dtype=bool)
     if kind == "box":
         floor = 1e-3 * size
-        return box_quads(item["center"], np.maximum(np.asarray(item["size"], dtype=float), floor), item["rotation"])
+        return box_quads(
+            item["center"], np.maximum(np.asarray(item["size"], dtype=float), floor), item["rotation"]
+        )
     radius = POINT_RADIUS_FRACTION * size
     return ellipsoid_quads(item["position"], [radius] * 3, np.eye(3))
 

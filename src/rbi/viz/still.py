@@ -25,8 +25,9 @@ LONGEST_AXIS_FRACTION = 0.75
 centre of mass."""
 
 
-def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivot, length_unit: str,
-              inertia_unit: str) -> dict[str, Any]:
+def view_data(
+    title: str, geometry: list[dict[str, Any]], com, inertia_com, pivot, length_unit: str, inertia_unit: str
+) -> dict[str, Any]:
     """What :func:`draw_still` and the page draw, JSON-ready. ``geometry``: from
     :func:`rbi.spec.geometry.part_geometry`; ``com`` and ``pivot`` (or None) body frame;
     ``inertia_com`` about the centre of mass in body axes. Every coordinate is the spec's own
@@ -40,22 +41,43 @@ def view_data(title: str, geometry: list[dict[str, Any]], com, inertia_com, pivo
     com = np.asarray(com, dtype=float)
     parts = [dict(item) for item in geometry]
     centre = com if pivot is None else np.asarray(pivot, dtype=float)
-    size = body_size([shifted(item, centre) for item in geometry] + [{"kind": "point", "position": (com - centre).tolist()}])
+    size = body_size(
+        [shifted(item, centre) for item in geometry]
+        + [{"kind": "point", "position": (com - centre).tolist()}]
+    )
     moments, axes = principal_axes(np.asarray(inertia_com, dtype=float))
     largest = float(np.max(np.abs(moments))) or 1.0
     reach_from_com = body_size([shifted(item, com) for item in geometry])
     axes_length = 1.15 * float(np.max(np.abs(drawn_points(parts, size)))) or size
-    principal = [{"moment": float(m), "direction": axis.tolist(),
-                  "half_length": LONGEST_AXIS_FRACTION * reach_from_com * max(abs(float(m)) / largest, 0.08),
-                  "label": f"I{k + 1} = {float(m):.4g} {inertia_unit}", "colour": AXIS_COLOURS[k]}
-                 for k, (m, axis) in enumerate(zip(moments, axes))]
+    principal = [
+        {
+            "moment": float(m),
+            "direction": axis.tolist(),
+            "half_length": LONGEST_AXIS_FRACTION * reach_from_com * max(abs(float(m)) / largest, 0.08),
+            "label": f"I{k + 1} = {float(m):.4g} {inertia_unit}",
+            "colour": AXIS_COLOURS[k],
+        }
+        for k, (m, axis) in enumerate(zip(moments, axes))
+    ]
     return {
-        "title": label(title), "length_unit": length_unit, "pivoted": False, "size": size, "parts": parts,
-        "com": com.tolist(), "view_center": com.tolist(),
+        "title": label(title),
+        "length_unit": length_unit,
+        "pivoted": False,
+        "size": size,
+        "parts": parts,
+        "com": com.tolist(),
+        "view_center": com.tolist(),
         "pivot": None if pivot is None else np.asarray(pivot, dtype=float).tolist(),
-        "principal_axes": principal, "axis_tip": None, "spec_axes": axes_length, "part_legend": part_legend(parts),
-        "times": [0.0], "quaternions": [[0.0, 0.0, 0.0, 1.0]], "tilt_deg": [0.0], "omega": [0.0],
-        "trace": [com.tolist()], "trail_seconds": 0.0,
+        "principal_axes": principal,
+        "axis_tip": None,
+        "spec_axes": axes_length,
+        "part_legend": part_legend(parts),
+        "times": [0.0],
+        "quaternions": [[0.0, 0.0, 0.0, 1.0]],
+        "tilt_deg": [0.0],
+        "omega": [0.0],
+        "trace": [com.tolist()],
+        "trail_seconds": 0.0,
     }
 
 
@@ -72,9 +94,14 @@ def part_legend(parts: list[dict[str, Any]]) -> list[dict[str, Any]]:
             entries[part]["copies"] += 1
             continue
         colour = "#333333" if item["kind"] in ("point", "points") else PALETTE[part % len(PALETTE)]
-        entries[part] = {"name": label(item.get("name") or f"parts[{part}]"), "shape": str(item.get("shape", "")),
-                         "colour": HOLE_COLOUR if item.get("hole") else colour, "copies": 1,
-                         "hole": bool(item.get("hole")), "stand_in": bool(item.get("stand_in"))}
+        entries[part] = {
+            "name": label(item.get("name") or f"parts[{part}]"),
+            "shape": str(item.get("shape", "")),
+            "colour": HOLE_COLOUR if item.get("hole") else colour,
+            "copies": 1,
+            "hole": bool(item.get("hole")),
+            "stand_in": bool(item.get("stand_in")),
+        }
     return list(entries.values())
 
 
@@ -83,8 +110,12 @@ HOLE_COLOUR = "#e03030"
 
 def legend_text(entry: dict[str, Any]) -> str:
     """``name: shape ×copies (hole)`` for one :func:`part_legend` entry."""
-    return (f"{entry['name']}: {entry['shape']}" + (f" ×{entry['copies']}" if entry["copies"] > 1 else "")
-            + (" (hole, subtracted)" if entry["hole"] else "") + (" (box of equal inertia)" if entry["stand_in"] else ""))
+    return (
+        f"{entry['name']}: {entry['shape']}"
+        + (f" ×{entry['copies']}" if entry["copies"] > 1 else "")
+        + (" (hole, subtracted)" if entry["hole"] else "")
+        + (" (box of equal inertia)" if entry["stand_in"] else "")
+    )
 
 
 def part_count(parts: list[dict[str, Any]]) -> int:
@@ -117,11 +148,21 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     if len(quads):
         if len(hole_quads):
             colours[:, 3] = np.minimum(colours[:, 3], 0.75)  # so that holes inside a part show through
-        ax.add_collection3d(Poly3DCollection(quads, facecolors=shade(quads, colours), edgecolors=(0, 0, 0, 0.06),
-                                             linewidths=0.2, zorder=1))
+        ax.add_collection3d(
+            Poly3DCollection(
+                quads, facecolors=shade(quads, colours), edgecolors=(0, 0, 0, 0.06), linewidths=0.2, zorder=1
+            )
+        )
     if len(hole_quads):
-        ax.add_collection3d(Poly3DCollection(hole_quads, facecolors=hole_colours, edgecolors=(0.75, 0.1, 0.1, 0.5),
-                                             linewidths=0.3, zorder=2))
+        ax.add_collection3d(
+            Poly3DCollection(
+                hole_quads,
+                facecolors=hole_colours,
+                edgecolors=(0.75, 0.1, 0.1, 0.5),
+                linewidths=0.3,
+                zorder=2,
+            )
+        )
     quads = np.concatenate((quads, hole_quads)) if len(hole_quads) else quads
     points = cloud_points(data["parts"])
     if len(points):
@@ -133,9 +174,17 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
         ends = np.stack((com - direction, com + direction))
         ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color=axis["colour"], lw=2.2, zorder=10)
         tip = com + 1.08 * direction
-        ax.text(tip[0], tip[1], tip[2], f"I{data['principal_axes'].index(axis) + 1}", color=axis["colour"],
-                fontsize=10, weight="bold", zorder=11,
-                bbox={"boxstyle": "round,pad=0.15", "facecolor": "white", "edgecolor": "none", "alpha": 0.8})
+        ax.text(
+            tip[0],
+            tip[1],
+            tip[2],
+            f"I{data['principal_axes'].index(axis) + 1}",
+            color=axis["colour"],
+            fontsize=10,
+            weight="bold",
+            zorder=11,
+            bbox={"boxstyle": "round,pad=0.15", "facecolor": "white", "edgecolor": "none", "alpha": 0.8},
+        )
         handles.append(Line2D([], [], color=axis["colour"], lw=2.2, label=axis["label"]))
     ax.scatter(*com, color="black", s=40, marker="o", depthshade=False, zorder=12)
     handles.append(Line2D([], [], color="black", marker="o", ls="none", label="centre of mass"))
@@ -147,19 +196,32 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
         if entry["hole"]:
             handles.append(Patch(facecolor=HOLE_RGBA, edgecolor="#b02020", label=legend_text(entry)))
         else:
-            handles.append(Patch(facecolor=entry["colour"], alpha=0.55 if entry["stand_in"] else 1.0,
-                                 label=legend_text(entry)))
+            handles.append(
+                Patch(
+                    facecolor=entry["colour"],
+                    alpha=0.55 if entry["stand_in"] else 1.0,
+                    label=legend_text(entry),
+                )
+            )
     if len(entries) > MAX_LEGEND_PARTS:
         handles.append(Patch(facecolor="white", label=f"… {len(entries)} parts in all"))
-    plain_legend(fig.legend(handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5,
-                            frameon=False))
+    plain_legend(
+        fig.legend(
+            handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5, frameon=False
+        )
+    )
     _frame(ax, quads, com, data)
     unit = data["length_unit"]
     ax.set_xlabel(f"x [{unit}]")
     ax.set_ylabel(f"y [{unit}]")
     ax.set_zlabel(f"z [{unit}]")
-    plain(fig.suptitle(f"{label(data['title'])}\nbody axes and coordinates as in the spec; principal axes about the "
-                       f"centre of mass, lengths in proportion to their moments", fontsize=10))
+    plain(
+        fig.suptitle(
+            f"{label(data['title'])}\nbody axes and coordinates as in the spec; principal axes about the "
+            f"centre of mass, lengths in proportion to their moments",
+            fontsize=10,
+        )
+    )
     fig.savefig(path, format=format, dpi=110)
     plt.close(fig)
 
