@@ -32,7 +32,7 @@ from tests.conftest import run_rbi_inprocess as rbi
 
 EXCLUDED = {
     "bench": "takes no spec and measures the machine for seconds to minutes (its refusals are "
-    "tested in tests/hardening/test_writes.py)",
+    "tested in tests/files/test_writes.py)",
 }
 OPTIONS_NOT_FUZZED = {
     "--dask": "starts a cluster or dials a network address",

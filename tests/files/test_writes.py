@@ -20,7 +20,7 @@ from rbi.cli.output import output_target
 from rbi.spec.errors import InputError
 from tests.conftest import BODIES, one_line_exit_2
 from tests.conftest import run_rbi_inprocess as rbi
-from tests.hardening.users import as_ordinary_user
+from tests.users import as_ordinary_user
 
 TOP = BODIES / "top.yaml"
 

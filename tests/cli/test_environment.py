@@ -16,7 +16,7 @@ from pathlib import Path
 import pytest
 
 from tests.conftest import BODIES
-from tests.hardening.users import as_ordinary_user
+from tests.users import as_ordinary_user
 
 PLANTED = (
     "numpy",
