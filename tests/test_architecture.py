@@ -279,7 +279,7 @@ def test_the_cycle_finder_sees_a_cycle(tmp_path, monkeypatch):
 
 @pytest.mark.xfail(
     strict=True,
-    reason="spec.load/translate/plausibility/holes, cli.app/typer_app and cli.render/tables import each "
+    reason="cli.app/typer_app and cli.render/tables import each "
     "other; issue 24 breaks these cycles (then drop this mark)",
 )
 def test_no_module_imports_itself_through_others():

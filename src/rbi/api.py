@@ -307,7 +307,7 @@ class Body:
 
     def parts(self) -> list[Part]:
         """Each part's mass properties, in file order (see `Part`)."""
-        from rbi.spec.translate import part_volume
+        from rbi.spec.volumes import part_volume
 
         loaded = self._loaded
         spec_parts = list(loaded.spec.parts) if loaded.spec is not None else []

@@ -23,8 +23,8 @@ def parts_of(file: str):
     from rbi.cli.mass_reports import load_body
     from rbi.cli.terminal import say
     from rbi.core.inertia import inertia_shares, principal_axes
-    from rbi.spec.translate import part_volume
     from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
+    from rbi.spec.volumes import part_volume
 
     body = load_body(file)
     spec_parts = list(body.spec.parts) if body.spec is not None else []

@@ -14,7 +14,7 @@ from rbi.runs.values import vector_value
 class PreparedRun:
     """Everything a run needs, checked.
 
-    body: the :class:`~rbi.spec.load.LoadedBody` (spec units). scene: the
+    body: the :class:`~rbi.spec.translate.LoadedBody` (spec units). scene: the
     :class:`~rbi.sim.scene.Scene` (pivot or free body, gravity in the spec's length unit/s²).
     q0: initial orientation [w, x, y, z], body → world. omega0: initial angular velocity, body
     frame, rad/s. tilt_deg, tilt_axis: the nudge, the body's turn at t=0 about a world axis

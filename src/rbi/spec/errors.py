@@ -103,3 +103,8 @@ def _show(value: Any) -> str:
     shorter.maxlevel, shorter.maxlist, shorter.maxdict, shorter.maxstring, shorter.maxother = 3, 4, 4, 40, 40
     text = shorter.repr(value)
     return text if len(text) <= 40 else text[:37] + "..."
+
+
+def part_label(index: int, part) -> str:
+    """How messages name the part at ``index``: ``parts[2] (bolt)``."""
+    return f"parts[{index}]" + (f" ({part.name})" if part.name else "")

@@ -44,7 +44,7 @@ MAX_DRAWN_COPIES = 1000
 
 
 def part_geometry(body) -> list[dict[str, Any]]:
-    """The drawable primitives of a :class:`~rbi.spec.load.LoadedBody` in file order: one per
+    """The drawable primitives of a :class:`~rbi.spec.translate.LoadedBody` in file order: one per
     part, one per copy of a patterned part, and the point cloud's points."""
     spec = body.spec
     out = []

@@ -46,7 +46,7 @@ def check_holes(path: str, spec, elements: list[MassElement], holes: list[int]) 
     stops being physical; the material parts are counted first."""
     if body_problem(elements, spec.units.mass) is None:
         return
-    from rbi.spec.translate import part_label
+    from rbi.spec.errors import part_label
 
     hole_set = set(holes)
     running = [e for i, e in enumerate(elements) if i not in hole_set]

@@ -6,49 +6,16 @@ import contextlib
 import gc
 import os
 import stat
-from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-import numpy as np
 import yaml
 
-from rbi.core.inertia import MassProperties
-from rbi.core.shapes import MassElement
 from rbi.spec.errors import InputError, describe_error, format_location
-from rbi.spec.units import unit_labels
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
-
-@dataclass(frozen=True)
-class LoadedBody:
-    """A validated body in the core's terms (all numbers in the file's own units).
-
-    props: mass properties (CoM and inertia in the body frame). pivot: the fixed point, body
-    frame, or None. elements: each part's mass properties, in file order.
-    """
-
-    path: str
-    name: str | None
-    length_unit: str
-    mass_unit: str
-    props: MassProperties
-    pivot: np.ndarray | None
-    elements: list[MassElement]
-    part_names: list[str | None]
-    expect: dict[str, Any] | None = None
-    spin_axis: np.ndarray | None = None
-    spec: Any = field(default=None, repr=False)
-    warnings: list[str] = field(default_factory=list)
-    """Lines about the spec a user should see (units that look wrong: :mod:`rbi.spec.plausibility`)."""
-
-    @property
-    def units(self) -> dict[str, str]:
-        return {"length": self.length_unit, "mass": self.mass_unit}
-
-    @property
-    def labels(self) -> dict[str, str]:
-        return unit_labels(self.length_unit, self.mass_unit)
+if TYPE_CHECKING:
+    from rbi.spec.translate import LoadedBody
 
 
 MAX_SPEC_BYTES = 64 * 1024 * 1024

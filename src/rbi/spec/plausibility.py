@@ -100,7 +100,8 @@ class _Solid:
 
 
 def _solids(spec) -> list[_Solid]:
-    from rbi.spec.translate import part_label, part_volume
+    from rbi.spec.errors import part_label
+    from rbi.spec.volumes import part_volume
 
     out = []
     for index, part in enumerate(spec.parts):

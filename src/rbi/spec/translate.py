@@ -3,16 +3,51 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
 from rbi.core import shapes
-from rbi.core.inertia import combine_elements, parallel_axis_to_com, re_express
+from rbi.core.inertia import MassProperties, combine_elements, parallel_axis_to_com, re_express
 from rbi.core.rotation import axis_angle_matrix, euler_matrix, quaternion_to_matrix, without_rounding_noise
 from rbi.core.validity import inertia_problem
 from rbi.spec import models
-from rbi.spec.errors import InputError
+from rbi.spec.errors import InputError, part_label
 from rbi.spec.materials import density_in_units
+from rbi.spec.units import unit_labels
+from rbi.spec.volumes import one_volume
+
+
+@dataclass(frozen=True)
+class LoadedBody:
+    """A validated body in the core's terms (all numbers in the file's own units).
+
+    props: mass properties (CoM and inertia in the body frame). pivot: the fixed point, body
+    frame, or None. elements: each part's mass properties, in file order.
+    """
+
+    path: str
+    name: str | None
+    length_unit: str
+    mass_unit: str
+    props: MassProperties
+    pivot: np.ndarray | None
+    elements: list[shapes.MassElement]
+    part_names: list[str | None]
+    expect: dict[str, Any] | None = None
+    spin_axis: np.ndarray | None = None
+    spec: Any = field(default=None, repr=False)
+    warnings: list[str] = field(default_factory=list)
+    """Lines about the spec a user should see (units that look wrong: :mod:`rbi.spec.plausibility`)."""
+
+    @property
+    def units(self) -> dict[str, str]:
+        return {"length": self.length_unit, "mass": self.mass_unit}
+
+    @property
+    def labels(self) -> dict[str, str]:
+        return unit_labels(self.length_unit, self.mass_unit)
 
 
 def _solid_mass(part, volume: float, units: models.Units) -> float:
@@ -24,10 +59,6 @@ def _solid_mass(part, volume: float, units: models.Units) -> float:
     if isinstance(density, str):
         density = density_in_units(density, units.length, units.mass)
     return density * volume
-
-
-def _length(start, end) -> float:
-    return float(np.linalg.norm(np.subtract(end, start)))
 
 
 def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
@@ -49,12 +80,12 @@ def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
 
 
 def cone_element(part: models.ConePart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.cone_volume(part.radius, _length(part.apex, part.base)), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.cone(mass, part.radius, part.apex, part.base)
 
 
 def cylinder_element(part: models.CylinderPart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.cylinder_volume(part.radius, _length(part.start, part.end)), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.cylinder(mass, part.radius, part.start, part.end)
 
 
@@ -63,35 +94,33 @@ def point_element(part: models.PointPart, units: models.Units) -> shapes.MassEle
 
 
 def box_element(part: models.BoxPart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.box_volume(part.size), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.box(mass, part.size, part.center, rotation_matrix(part.rotation))
 
 
 def sphere_element(part: models.SpherePart, units: models.Units) -> shapes.MassElement:
-    return shapes.sphere(
-        _solid_mass(part, shapes.sphere_volume(part.radius), units), part.radius, part.center
-    )
+    return shapes.sphere(_solid_mass(part, one_volume(part), units), part.radius, part.center)
 
 
 def spherical_shell_element(part: models.SphericalShellPart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.spherical_shell_volume(part.outer_radius, part.inner_radius), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.spherical_shell(mass, part.outer_radius, part.inner_radius, part.center)
 
 
 def tube_element(part: models.TubePart, units: models.Units) -> shapes.MassElement:
-    volume = shapes.tube_volume(part.outer_radius, part.inner_radius, _length(part.start, part.end))
+    volume = one_volume(part)
     mass = _solid_mass(part, volume, units)
     return shapes.tube(mass, part.outer_radius, part.inner_radius, part.start, part.end)
 
 
 def frustum_element(part: models.FrustumPart, units: models.Units) -> shapes.MassElement:
-    volume = shapes.frustum_volume(part.start_radius, part.end_radius, _length(part.start, part.end))
+    volume = one_volume(part)
     mass = _solid_mass(part, volume, units)
     return shapes.frustum(mass, part.start_radius, part.end_radius, part.start, part.end)
 
 
 def ellipsoid_element(part: models.EllipsoidPart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.ellipsoid_volume(part.semi_axes), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.ellipsoid(mass, part.semi_axes, part.center, rotation_matrix(part.rotation))
 
 
@@ -131,17 +160,17 @@ def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassE
 
 
 def torus_element(part: models.TorusPart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.torus_volume(part.major_radius, part.minor_radius), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.torus(mass, part.major_radius, part.minor_radius, part.center, part.axis)
 
 
 def hemisphere_element(part: models.HemispherePart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.hemisphere_volume(part.radius), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.hemisphere(mass, part.radius, part.center, part.axis)
 
 
 def capsule_element(part: models.CapsulePart, units: models.Units) -> shapes.MassElement:
-    mass = _solid_mass(part, shapes.capsule_volume(part.radius, _length(part.start, part.end)), units)
+    mass = _solid_mass(part, one_volume(part), units)
     return shapes.capsule(mass, part.radius, part.start, part.end)
 
 
@@ -240,48 +269,14 @@ ELEMENT_BUILDERS: dict[type, Callable[..., shapes.MassElement]] = {
 need the spec's folder, and patterns go through :func:`part_element`."""
 
 
-PART_VOLUMES: dict[type, Callable[[object], float]] = {
-    models.ConePart: lambda p: shapes.cone_volume(p.radius, _length(p.apex, p.base)),
-    models.CylinderPart: lambda p: shapes.cylinder_volume(p.radius, _length(p.start, p.end)),
-    models.BoxPart: lambda p: shapes.box_volume(p.size),
-    models.SpherePart: lambda p: shapes.sphere_volume(p.radius),
-    models.SphericalShellPart: lambda p: shapes.spherical_shell_volume(p.outer_radius, p.inner_radius),
-    models.TubePart: lambda p: shapes.tube_volume(p.outer_radius, p.inner_radius, _length(p.start, p.end)),
-    models.FrustumPart: lambda p: shapes.frustum_volume(
-        p.start_radius, p.end_radius, _length(p.start, p.end)
-    ),
-    models.EllipsoidPart: lambda p: shapes.ellipsoid_volume(p.semi_axes),
-    models.TorusPart: lambda p: shapes.torus_volume(p.major_radius, p.minor_radius),
-    models.HemispherePart: lambda p: shapes.hemisphere_volume(p.radius),
-    models.CapsulePart: lambda p: shapes.capsule_volume(p.radius, _length(p.start, p.end)),
-    models.MeshPart: lambda p: p._enclosed_volume,  # known once the mesh has been read
-}
-"""Volume (L³) of each solid part model; points, rods and custom parts have none."""
-
-
-def part_volume(part) -> float | None:
-    """The part's volume in the file's length unit cubed (all copies of a ``pattern``), or None
-    for a part without one (or a mesh not yet read)."""
-    volume = PART_VOLUMES.get(type(part))
-    one = None if volume is None else volume(part)
-    if one is None:
-        return None
-    return float(one) * (1 if part.pattern is None else part.pattern.count)
-
-
 def _removed(element: shapes.MassElement) -> shapes.MassElement:
     """A hole: the same solid with negative mass and inertia."""
     return shapes.MassElement(-element.mass, element.com, -element.inertia_com)
 
 
-def part_label(index: int, part) -> str:
-    return f"parts[{index}]" + (f" ({part.name})" if part.name else "")
-
-
 def body_from_spec(spec: models.BodySpec, path: str):
     """Translate a validated :class:`~rbi.spec.models.BodySpec` into a
-    :class:`~rbi.spec.load.LoadedBody`."""
-    from rbi.spec.load import LoadedBody
+    :class:`LoadedBody`."""
     from rbi.spec.plausibility import unit_warnings
 
     elements = []

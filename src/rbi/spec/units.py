@@ -63,7 +63,7 @@ def scale_factors(from_units: tuple[str, str], to_units: tuple[str, str]) -> tup
 
 
 def convert_body(body, length_unit: str, mass_unit: str):
-    """The same :class:`~rbi.spec.load.LoadedBody` with every number in other units: masses,
+    """The same :class:`~rbi.spec.translate.LoadedBody` with every number in other units: masses,
     centres of mass, inertias (mass·length²) and the pivot. The body's own units are
     returned unchanged (no rounding added)."""
     import dataclasses

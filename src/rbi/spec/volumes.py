@@ -1,0 +1,53 @@
+"""The volume of each solid part of a spec (one copy, and all copies of a ``pattern``), in the
+file's length unit cubed: the one table the translation, the parts report and the unit-slip
+rule read."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+
+import numpy as np
+
+from rbi.core import shapes
+from rbi.spec import models
+
+
+def segment_length(start, end) -> float:
+    """|end − start|, file length unit."""
+    return float(np.linalg.norm(np.subtract(end, start)))
+
+
+_length = segment_length
+
+PART_VOLUMES: dict[type, Callable[[object], float]] = {
+    models.ConePart: lambda p: shapes.cone_volume(p.radius, _length(p.apex, p.base)),
+    models.CylinderPart: lambda p: shapes.cylinder_volume(p.radius, _length(p.start, p.end)),
+    models.BoxPart: lambda p: shapes.box_volume(p.size),
+    models.SpherePart: lambda p: shapes.sphere_volume(p.radius),
+    models.SphericalShellPart: lambda p: shapes.spherical_shell_volume(p.outer_radius, p.inner_radius),
+    models.TubePart: lambda p: shapes.tube_volume(p.outer_radius, p.inner_radius, _length(p.start, p.end)),
+    models.FrustumPart: lambda p: shapes.frustum_volume(
+        p.start_radius, p.end_radius, _length(p.start, p.end)
+    ),
+    models.EllipsoidPart: lambda p: shapes.ellipsoid_volume(p.semi_axes),
+    models.TorusPart: lambda p: shapes.torus_volume(p.major_radius, p.minor_radius),
+    models.HemispherePart: lambda p: shapes.hemisphere_volume(p.radius),
+    models.CapsulePart: lambda p: shapes.capsule_volume(p.radius, _length(p.start, p.end)),
+    models.MeshPart: lambda p: p._enclosed_volume,  # known once the mesh has been read
+}
+"""Volume (L³) of each solid part model; points, rods and custom parts have none."""
+
+
+def one_volume(part) -> float:
+    """The volume of one copy of a solid part (L³)."""
+    return float(PART_VOLUMES[type(part)](part))
+
+
+def part_volume(part) -> float | None:
+    """The part's volume in the file's length unit cubed (all copies of a ``pattern``), or None
+    for a part without one (or a mesh not yet read)."""
+    volume = PART_VOLUMES.get(type(part))
+    one = None if volume is None else volume(part)
+    if one is None:
+        return None
+    return float(one) * (1 if part.pattern is None else part.pattern.count)
