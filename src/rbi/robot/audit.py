@@ -80,16 +80,28 @@ class MassProps:
 
 
 @dataclass
-class GeometryProps(MassProps):
+class GeometryProps:
     """The geometry's mass properties, with its ``volume`` (m³; None when it is all shells),
     ``implied_density`` (kg/m³), its bounds ``low``/``high`` (m, link frame) and ``source``
-    (``collision`` or ``visual``)."""
+    (``collision`` or ``visual``). ``center_of_mass`` (m, link frame) is the geometry's centroid;
+    ``mass`` (kg), ``inertia_about_com`` (kg·m², link axes) and ``moments`` are None when the link
+    declares no mass and no density was given (the geometry has a shape but no mass)."""
 
+    mass: float | None
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray | None
     volume: float | None = None
     implied_density: float | None = None
     low: np.ndarray | None = None
     high: np.ndarray | None = None
     source: str = "collision"
+
+    @property
+    def moments(self) -> np.ndarray | None:
+        """Principal moments (kg·m², ascending), or None when the mass is unknown."""
+        if self.inertia_about_com is None:
+            return None
+        return np.linalg.eigvalsh(0.5 * (self.inertia_about_com + self.inertia_about_com.T))
 
 
 @dataclass

@@ -1,0 +1,99 @@
+"""Every output form of ``rbi audit`` (table, ``--format json``, ``--format csv``) on robot files the
+other tests read (pybullet_data's URDFs and SDFs, gymnasium's MJCF), and on a copy written by
+``--fix``: no internal error, a JSON document with one object per link, a CSV with one row per
+link. The files with a massless link that has geometry (cartpole, kuka_iiwa) once crashed the JSON
+and CSV forms while the table printed."""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import os
+import shutil
+
+import pytest
+
+from tests.conftest import run_rbi_inprocess
+
+pybullet_data = pytest.importorskip("pybullet_data")
+gymnasium = pytest.importorskip("gymnasium")
+
+PYBULLET = pybullet_data.getDataPath()
+GYM = os.path.join(os.path.dirname(gymnasium.__file__), "envs", "mujoco", "assets")
+
+FILES = [  # (path, extra options); the kuka's link_0.stl is not closed, so it is read as its hull
+    (os.path.join(PYBULLET, "cartpole.urdf"), ()),
+    (os.path.join(PYBULLET, "kuka_iiwa", "model.urdf"), ("--mesh-inertia", "convex")),
+    (os.path.join(PYBULLET, "r2d2.urdf"), ("--mesh-inertia", "convex")),
+    (os.path.join(PYBULLET, "TwoJointRobot_w_fixedJoints.urdf"), ()),
+    (os.path.join(PYBULLET, "pendulum5.urdf"), ()),
+    (os.path.join(PYBULLET, "kuka_iiwa", "model.sdf"), ("--mesh-inertia", "convex")),
+    (os.path.join(GYM, "hopper.xml"), ()),
+    (os.path.join(GYM, "ant.xml"), ()),
+    (os.path.join(GYM, "inverted_pendulum.xml"), ()),
+]
+
+CSV_COLUMNS = [
+    "link",
+    "mass",
+    "geometry_volume",
+    "implied_density",
+    "ratio_1",
+    "ratio_2",
+    "ratio_3",
+    "com_offset",
+    "flags",
+]
+
+
+def _no_internal_error(proc) -> None:
+    assert proc.returncode in (0, 1), proc.stderr
+    assert "internal error" not in proc.stderr and "Traceback" not in proc.stderr, proc.stderr
+
+
+def _three_forms(path: str, *options: str) -> int:
+    """Audit ``path`` in each form, check each is well formed; the number of links."""
+    table = run_rbi_inprocess("audit", path, *options)
+    _no_internal_error(table)
+    assert "total (" in table.stdout
+    proc = run_rbi_inprocess("audit", path, *options, "--format", "json")
+    _no_internal_error(proc)
+    assert proc.returncode == table.returncode
+    document = json.loads(proc.stdout)
+    links = document["links"]
+    assert links and all("name" in link and "flags" in link for link in links)
+    for link in links:
+        geometry = link["geometry"]
+        if geometry is not None and geometry["mass"] is None:  # a shape with no mass: no moments
+            assert geometry["inertia_about_com"] is None and geometry["moments"] is None
+        if geometry is not None and geometry["mass"] is not None:
+            assert len(geometry["moments"]) == 3
+    assert document["total"]["mass"] >= 0
+    proc = run_rbi_inprocess("audit", path, *options, "--format", "csv")
+    _no_internal_error(proc)
+    rows = list(csv.reader(io.StringIO(proc.stdout)))
+    assert rows[0] == CSV_COLUMNS
+    assert len(rows) == 1 + len(links) and all(len(row) == len(CSV_COLUMNS) for row in rows)
+    for row, link in zip(rows[1:], links, strict=True):  # unnamed MJCF bodies show their label
+        assert link["name"] is None or row[0] == link["name"]
+    return len(links)
+
+
+@pytest.mark.parametrize("path,options", FILES, ids=lambda value: os.path.basename(str(value)))
+def test_every_form_of_audit(path, options):
+    _three_forms(path, *options)
+
+
+@pytest.mark.parametrize("path,options", FILES[:3], ids=lambda value: os.path.basename(str(value)))
+def test_every_form_of_audit_on_the_fixed_copy(tmp_path, path, options):
+    folder = os.path.dirname(path)
+    for entry in os.listdir(folder):  # the meshes beside the copy, where the file names them
+        if entry.endswith((".stl", "meshes")):
+            copy = shutil.copytree if entry == "meshes" else shutil.copy
+            copy(os.path.join(folder, entry), tmp_path / entry)
+    fixed = tmp_path / os.path.basename(path)
+    proc = run_rbi_inprocess("audit", path, *options, "--fix", "--out", fixed)
+    _no_internal_error(proc)
+    assert fixed.exists()
+    assert _three_forms(str(fixed), *options) == _three_forms(path, *options)
