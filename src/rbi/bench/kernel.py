@@ -75,11 +75,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
 
     progress("kernel: reference and the chapter's set-up")
     reference, _ = workprecision.reference_of(case, scene, q0, omega0, quick)
-    # the chapter's run takes seconds: the median of three in a full run (one in a quick run)
-    chapter_times = []
-    for _ in range(1 if quick else 3):
-        chapter, seconds, _ = workprecision.timed_run(scene, q0, omega0, case, *workprecision.CHAPTER, 0.0)
-        chapter_times.append(seconds)
+    chapter, chapter_times = _chapter_runs(scene, q0, omega0, case, quick)
     chapter_s = statistics.median(chapter_times)
     chapter_err = workprecision.errors(scene, chapter, reference)
 
@@ -91,16 +87,44 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     default_err = workprecision.errors(scene, default, reference)
     call, (_, out, steps) = minimal_loop_call(scene, q0, omega0, case.duration, case.samples, DEFAULT_RTOL)
     call()
-    same_steps = steps[0] == default.steps
-    same_samples = bool(np.array_equal(out[:, :4], default.q) and np.array_equal(out[:, 4:], default.omega))
-    # interleave the two timings so that a change in the machine's load hits both alike
-    default_times, minimal_times = [], []
-    for _ in range(5):
-        default_times.append(_median_seconds(simulate_call(), min_seconds / 5))
-        minimal_times.append(_median_seconds(call, min_seconds / 5))
-    default_s, minimal_s = statistics.median(default_times), statistics.median(minimal_times)
+    default_s, minimal_s = _interleaved_medians(simulate_call(), call, min_seconds)
 
     progress("kernel: the fastest tolerance at the chapter's error or better")
+    trials = _tolerance_trials(simulate_call, scene, reference, chapter_err, min_seconds)
+    matching = [t for t in trials if t["no_worse"]]
+    best = min(matching, key=lambda t: t["seconds"]) if matching else None
+
+    progress("kernel: done")
+    return {
+        "case": _case_entry(case),
+        "chapter": {
+            "seconds": chapter_s,
+            "repeats": len(chapter_times),
+            "steps": chapter.steps,
+            "rtol": workprecision.CHAPTER[1],
+            "orientation_error_deg": chapter_err["orientation_error_deg"],
+            "omega_error": chapter_err["omega_error"],
+        },
+        "default": {
+            "seconds": default_s,
+            "steps": default.steps,
+            "rtol": default.rtol,
+            "orientation_error_deg": default_err["orientation_error_deg"],
+            "omega_error": default_err["omega_error"],
+        },
+        "minimal_loop": _minimal_loop_entry(minimal_s, steps[0], out, default),
+        "trials": trials,
+        "best_matching": best,
+        "ratio_default": chapter_s / default_s,
+        "ratio_best_matching": chapter_s / best["seconds"] if best else None,
+        "ratio_to_minimal_loop": default_s / minimal_s,
+        "targets": TARGETS,
+    }
+
+
+def _tolerance_trials(simulate_call, scene, reference, chapter_err: dict, min_seconds: float) -> list[dict]:
+    """Each of :data:`TRIAL_RTOLS`: its errors against ``reference``, and its time where its
+    error is no worse than the chapter's set-up (``chapter_err``)."""
     trials = []
     for rtol in TRIAL_RTOLS:
         trajectory = simulate_call(rtol)()
@@ -120,43 +144,47 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
                 "seconds": seconds,
             }
         )
-    matching = [t for t in trials if t["no_worse"]]
-    best = min(matching, key=lambda t: t["seconds"]) if matching else None
+    return trials
 
-    progress("kernel: done")
+
+def _chapter_runs(scene, q0, omega0, case, quick: bool) -> tuple:
+    """``(trajectory, seconds of each run)`` of the chapter's set-up on ``case``: it takes
+    seconds, so the median of three in a full run (one in a quick run)."""
+    chapter_times = []
+    for _ in range(1 if quick else 3):
+        chapter, seconds, _ = workprecision.timed_run(scene, q0, omega0, case, *workprecision.CHAPTER, 0.0)
+        chapter_times.append(seconds)
+    return chapter, chapter_times
+
+
+def _case_entry(case) -> dict:
+    """The bench case as the result records it."""
     return {
-        "case": {
-            "name": case.name,
-            "spec": f"bodies/{case.spec}",
-            "omega0": list(case.omega0),
-            "duration": case.duration,
-            "samples": case.samples,
-        },
-        "chapter": {
-            "seconds": chapter_s,
-            "repeats": len(chapter_times),
-            "steps": chapter.steps,
-            "rtol": workprecision.CHAPTER[1],
-            "orientation_error_deg": chapter_err["orientation_error_deg"],
-            "omega_error": chapter_err["omega_error"],
-        },
-        "default": {
-            "seconds": default_s,
-            "steps": default.steps,
-            "rtol": default.rtol,
-            "orientation_error_deg": default_err["orientation_error_deg"],
-            "omega_error": default_err["omega_error"],
-        },
-        "minimal_loop": {
-            "seconds": minimal_s,
-            "steps": steps[0],
-            "same_steps": same_steps,
-            "same_samples": same_samples,
-        },
-        "trials": trials,
-        "best_matching": best,
-        "ratio_default": chapter_s / default_s,
-        "ratio_best_matching": chapter_s / best["seconds"] if best else None,
-        "ratio_to_minimal_loop": default_s / minimal_s,
-        "targets": TARGETS,
+        "name": case.name,
+        "spec": f"bodies/{case.spec}",
+        "omega0": list(case.omega0),
+        "duration": case.duration,
+        "samples": case.samples,
+    }
+
+
+def _interleaved_medians(first, second, min_seconds: float) -> tuple[float, float]:
+    """Median seconds of two calls timed in turn, five rounds each, so that a change in the
+    machine's load hits both alike."""
+    first_times, second_times = [], []
+    for _ in range(5):
+        first_times.append(_median_seconds(first, min_seconds / 5))
+        second_times.append(_median_seconds(second, min_seconds / 5))
+    return statistics.median(first_times), statistics.median(second_times)
+
+
+def _minimal_loop_entry(seconds: float, steps: int, out: np.ndarray, default) -> dict:
+    """The minimal loop's time, and whether it took the same steps and gave the same samples
+    (``out``: its [q, ω] rows) as rbi's ``default`` trajectory."""
+    same_samples = bool(np.array_equal(out[:, :4], default.q) and np.array_equal(out[:, 4:], default.omega))
+    return {
+        "seconds": seconds,
+        "steps": steps,
+        "same_steps": steps == default.steps,
+        "same_samples": same_samples,
     }

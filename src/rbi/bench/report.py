@@ -68,7 +68,15 @@ def targets(result: dict) -> list[dict]:
     """Every speed target (kernel, start-up, large specs, sweep) that this run measured: the ratio, its limit and the
     baseline it was measured against (in the same run)."""
     out = []
-    k = result.get("kernel")
+    for section, section_targets in SECTION_TARGETS.items():
+        if result.get(section):
+            out += section_targets(result[section])
+    return out
+
+
+def _kernel_targets(k: dict) -> list[dict]:
+    """The compiled kernel against the chapter's set-up and against a minimal loop."""
+    out = []
     if k:
         chapter = (
             f"the chapter's set-up (scipy RK45, rtol 1e-8, Python RHS): {number(k['chapter']['seconds'], 3)} s, "
@@ -119,7 +127,12 @@ def targets(result: dict) -> list[dict]:
                 f"simulate {number(k['default']['seconds'], 3)} s, {k['default']['steps']:,} steps",
             )
         )
-    lat = result.get("latency")
+    return out
+
+
+def _latency_targets(lat: dict) -> list[dict]:
+    """Start-up: the first run in a fresh HOME, each additional file, each command as a whole process."""
+    out = []
     if lat:
         first = lat.get("first_run") or {}
         if "ratio" in first:
@@ -176,7 +189,12 @@ def targets(result: dict) -> list[dict]:
                         row.get("error") or f"{number(row['median_s'], 3)} s median of {row['repeats']}",
                     )
                 )
-    ls = result.get("largespec")
+    return out
+
+
+def _largespec_targets(ls: dict) -> list[dict]:
+    """Loading large specs against a bare yaml.load."""
+    out = []
     if ls:
         for row in ls.get("specs", []) or [{"error": ls.get("error")}]:
             ratio = row.get("ratio")
@@ -203,7 +221,12 @@ def targets(result: dict) -> list[dict]:
                     detail,
                 )
             )
-    sw = result.get("sweep")
+    return out
+
+
+def _sweep_targets(sw: dict) -> list[dict]:
+    """Sweep throughput against single runs and process loops, and its peak memory."""
+    out = []
     if sw:
         single, loop, sweep = sw["single_run"], sw["process_loop"], sw["sweep"]
         out.append(
@@ -245,6 +268,15 @@ def targets(result: dict) -> list[dict]:
             )
         )
     return out
+
+
+SECTION_TARGETS = {
+    "kernel": _kernel_targets,
+    "latency": _latency_targets,
+    "largespec": _largespec_targets,
+    "sweep": _sweep_targets,
+}
+"""Each section of a bench result that has speed targets, and the function that lists them."""
 
 
 TARGET_COLUMNS = ["area", "target", "measured", "limit", "met", "baseline (same run)", "detail"]
@@ -584,6 +616,17 @@ def _md_table(headers: list[str], rows: list[list[str]]) -> str:
 
 def markdown(result: dict, command: str, plot_link: str | None) -> str:
     """docs/performance.md: how it was made, on what, the headline, then every table."""
+    out = _preamble(result, command)
+    out += _kernel_markdown(result.get("kernel"))
+    out += _sweep_markdown(result.get("sweep"))
+    out += _workprecision_markdown(result.get("workprecision"), plot_link)
+    out += _throughput_markdown(result.get("throughput"))
+    out += _latency_markdown(result.get("latency"))
+    return "\n".join(out) + "\n"
+
+
+def _preamble(result: dict, command: str) -> list[str]:
+    """How the page was made, on what machine, the headline and the targets."""
     m = result["machine"]
     noisy = (m.get("load_average_1min") or 0) > 0.5
     out = [
@@ -628,9 +671,12 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
             "",
             _md_table(TARGET_COLUMNS, target_rows(result["targets"])),
         ]
-    out += _kernel_markdown(result.get("kernel"))
-    out += _sweep_markdown(result.get("sweep"))
-    wp = result.get("workprecision")
+    return out
+
+
+def _workprecision_markdown(wp: dict | None, plot_link: str | None) -> list[str]:
+    """Work against precision: each case's error and time per method."""
+    out: list[str] = []
     if wp:
         out += [
             "",
@@ -659,7 +705,12 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
             out.append(_md_table(headers, work_rows(case)))
         if plot_link:
             out += ["", f"![Final orientation error against in-process time]({plot_link})"]
-    tp = result.get("throughput")
+    return out
+
+
+def _throughput_markdown(tp: dict | None) -> list[str]:
+    """Mass-property throughput: point clouds and specs of many solid parts."""
+    out: list[str] = []
     if tp:
         out += [
             "",
@@ -683,7 +734,12 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
             "",
             _md_table(PARTS_COLUMNS, parts_rows(tp)),
         ]
-    lat = result.get("latency")
+    return out
+
+
+def _latency_markdown(lat: dict | None) -> list[str]:
+    """Whole-process latency of each command, and where the start-up goes."""
+    out: list[str] = []
     if lat:
         out += [
             "",
@@ -700,7 +756,7 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
             _md_table(LATENCY_COLUMNS, latency_rows(lat)),
         ]
         out += _imports_markdown(lat.get("imports"))
-    return "\n".join(out) + "\n"
+    return out
 
 
 IMPORT_COLUMNS = ["imported", "time [ms]", "share"]

@@ -184,31 +184,9 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
         "--yes",
     ]
     runs = spins * 100
-    samples = []
     start = time.perf_counter()
     proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    status_file = Path(f"/proc/{proc.pid}/status")
-    while True:
-        pid, status = os.waitpid(proc.pid, os.WNOHANG)
-        if pid != 0:
-            proc.returncode = os.waitstatus_to_exitcode(status)
-            break
-        try:
-            fields = dict(line.split(":", 1) for line in status_file.read_text().splitlines() if ":" in line)
-            rss_kb, peak_kb = int(fields["VmRSS"].split()[0]), int(fields["VmHWM"].split()[0])
-            size = out.stat().st_size if out.exists() else 0
-        except (OSError, KeyError, ValueError):
-            rss_kb, size = None, 0
-        if rss_kb is not None:
-            samples.append(
-                {
-                    "seconds": round(time.perf_counter() - start, 3),
-                    "rss_mb": rss_kb / 1024,
-                    "peak_mb": peak_kb / 1024,
-                    "csv_bytes": size,
-                }
-            )
-        time.sleep(0.1)
+    samples = _sample_memory(proc, out, start)
     stderr = proc.stderr.read()
     proc.stderr.close()
     seconds = time.perf_counter() - start
@@ -268,3 +246,32 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         "ratio_to_process_loop": sweep["runs_per_second"] / loop["runs_per_second"],
         "targets": TARGETS,
     }
+
+
+def _sample_memory(proc: subprocess.Popen, out: Path, start: float) -> list[dict]:
+    """Resident memory (now and its high-water mark, MB) of the running child ``proc`` and the
+    size of its output ``out``, every 0.1 s until it exits (its return code is set)."""
+    samples = []
+    status_file = Path(f"/proc/{proc.pid}/status")
+    while True:
+        pid, status = os.waitpid(proc.pid, os.WNOHANG)
+        if pid != 0:
+            proc.returncode = os.waitstatus_to_exitcode(status)
+            break
+        try:
+            fields = dict(line.split(":", 1) for line in status_file.read_text().splitlines() if ":" in line)
+            rss_kb, peak_kb = int(fields["VmRSS"].split()[0]), int(fields["VmHWM"].split()[0])
+            size = out.stat().st_size if out.exists() else 0
+        except (OSError, KeyError, ValueError):
+            rss_kb, size = None, 0
+        if rss_kb is not None:
+            samples.append(
+                {
+                    "seconds": round(time.perf_counter() - start, 3),
+                    "rss_mb": rss_kb / 1024,
+                    "peak_mb": peak_kb / 1024,
+                    "csv_bytes": size,
+                }
+            )
+        time.sleep(0.1)
+    return samples

@@ -253,52 +253,56 @@ def plot(result: dict, path: str | Path) -> None:
     fig, axes = plt.subplots(1, len(cases_), figsize=(6.2 * len(cases_), 4.8), squeeze=False)
     floor = 1e-14
     for ax, case in zip(axes[0], cases_):
-        for method, (label, colour, marker) in styles.items():
-            rows = sorted((r for r in case["runs"] if r["method"] == method), key=lambda r: r["rtol"])
-            if not rows:
-                continue
-            x = [r["seconds"] for r in rows]
-            y = [max(r["orientation_error_deg"], floor) for r in rows]
-            ax.loglog(x, y, marker=marker, color=colour, label=label)
-            for r, xi, yi in zip(rows, x, y):
-                ax.annotate(
-                    f"{r['rtol']:.0e}",
-                    (xi, yi),
-                    textcoords="offset points",
-                    xytext=(4, 3),
-                    fontsize=7,
-                    color=colour,
-                )
-        chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
-        if chapter:
-            ax.loglog(
-                [chapter["seconds"]],
-                [max(chapter["orientation_error_deg"], floor)],
-                "*",
-                color="k",
-                markersize=14,
-                label="the chapter's set-up (RK45, rtol 1e-8)",
-            )
-        d = case["default"]
-        ax.loglog(
-            [d["seconds"]],
-            [max(d["orientation_error_deg"], floor)],
-            "P",
-            color="C0",
-            markersize=12,
-            markeredgecolor="k",
-            label=f"rbi defaults (rtol {d['rtol']:g})",
-        )
-        omega = ", ".join(f"{w:g}" for w in case["omega0"])
-        ax.set_title(
-            f"{case['name']} ({case['spec']}, ω₀ = ({omega}) rad/s, {case['duration']:g} s)", fontsize=9
-        )
-        ax.set_xlabel("in-process time of one simulate() call [s]")
-        ax.set_ylabel("final orientation error [deg]")
-        ax.grid(True, which="both", alpha=0.3)
+        _plot_case(ax, case, styles, floor)
     handles, labels = axes[0][0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="lower center", ncol=3, fontsize=8, frameon=False)
     fig.suptitle("rbi work-precision: error against time (lower left is better)")
     fig.tight_layout(rect=(0, 0.1, 1, 1))
     fig.savefig(path, dpi=120)
     plt.close(fig)
+
+
+def _plot_case(ax, case: dict, styles: dict, floor: float) -> None:
+    """One panel of :func:`plot`: each method's error against time, the chapter's set-up and
+    rbi's defaults marked; errors below ``floor`` drawn at it."""
+    for method, (label, colour, marker) in styles.items():
+        rows = sorted((r for r in case["runs"] if r["method"] == method), key=lambda r: r["rtol"])
+        if not rows:
+            continue
+        x = [r["seconds"] for r in rows]
+        y = [max(r["orientation_error_deg"], floor) for r in rows]
+        ax.loglog(x, y, marker=marker, color=colour, label=label)
+        for r, xi, yi in zip(rows, x, y):
+            ax.annotate(
+                f"{r['rtol']:.0e}",
+                (xi, yi),
+                textcoords="offset points",
+                xytext=(4, 3),
+                fontsize=7,
+                color=colour,
+            )
+    chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
+    if chapter:
+        ax.loglog(
+            [chapter["seconds"]],
+            [max(chapter["orientation_error_deg"], floor)],
+            "*",
+            color="k",
+            markersize=14,
+            label="the chapter's set-up (RK45, rtol 1e-8)",
+        )
+    d = case["default"]
+    ax.loglog(
+        [d["seconds"]],
+        [max(d["orientation_error_deg"], floor)],
+        "P",
+        color="C0",
+        markersize=12,
+        markeredgecolor="k",
+        label=f"rbi defaults (rtol {d['rtol']:g})",
+    )
+    omega = ", ".join(f"{w:g}" for w in case["omega0"])
+    ax.set_title(f"{case['name']} ({case['spec']}, ω₀ = ({omega}) rad/s, {case['duration']:g} s)", fontsize=9)
+    ax.set_xlabel("in-process time of one simulate() call [s]")
+    ax.set_ylabel("final orientation error [deg]")
+    ax.grid(True, which="both", alpha=0.3)
