@@ -137,6 +137,9 @@ def audit(
     code = report.exit_code
     if target is not None:
         from rbi.cli.output import write_output
+        from rbi.robot.fix import check_out_not_read
+
+        check_out_not_read(target.path, report.model)
 
         write_output(target, report.fix.content)
         code = 1 if report.fix.unfixable or report.model.unchecked else 0
@@ -157,6 +160,8 @@ def _fix_target(file: str, fix: bool, out: str | None):
     if not fix:
         raise InputError("--out: writes the fixed copy, so it needs --fix")
     extension = os.path.splitext(file)[1].lower().lstrip(".") or "xml"
+    if extension == "xacro":
+        extension = "urdf"  # a .xacro is never rewritten: the fixed copy is the expanded robot
     return output_target(out, "--out", (extension,), inputs=[file])
 
 

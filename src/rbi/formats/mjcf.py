@@ -131,6 +131,7 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
             )
     defaults = _defaults(root)
     meshes = _mesh_assets(path, root, defaults, compiler)
+    document.includes.extend(os.path.realpath(m["file"]) for m in meshes.values() if "file" in m)
     reader = _Bodies(model, compiler, defaults, meshes)
     for world in root.all("worldbody"):
         reader.children(world, Pose.identity(), None, "main")
@@ -167,6 +168,7 @@ def _expanded(document):
             key = os.path.realpath(target)
             if key in chain:
                 raise InputError(f"{label}: {short(name, 80)}: includes itself (a loop of includes)")
+            document.includes.append(key)
             included = read_xml(str(target)).root
             for each in included.iter():
                 each.source = str(target)

@@ -133,7 +133,15 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
     from rbi.formats import robot_xml
 
     path = str(path)
-    document = robot_xml.read_xml(path, _xacro_expanded(path) if path.lower().endswith(".xacro") else None)
+    if path.lower().endswith(".xacro"):
+        from rbi.formats.paths import _outside_allowed
+        from rbi.formats.xacro_sandbox import expand_xacro
+
+        expanded, includes = expand_xacro(path, _outside_allowed.get())
+        document = robot_xml.read_xml(path, expanded)
+        document.includes.extend(includes)
+    else:
+        document = robot_xml.read_xml(path)
     fmt = FORMAT_BY_ROOT.get(document.root.tag)
     if fmt is None:
         raise InputError(
@@ -147,30 +155,6 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
     else:
         from rbi.formats.mjcf import read_mjcf as reader
     return reader(document, package_paths, geometry)
-
-
-def _xacro_expanded(path: str) -> bytes:
-    """The URDF a ``.xacro`` file expands to (through the optional ``xacro`` package; its
-    ``$(find ...)`` and ``$(arg ...)`` as xacro resolves them)."""
-    try:
-        import xacro
-    except ImportError:
-        raise InputError(
-            f"{path}: a .xacro file needs the xacro package: pip install 'rbi[xacro]' (or run "
-            "`xacro FILE > FILE.urdf` and read that)"
-        ) from None
-    import contextlib
-    import io
-
-    if not os.path.isfile(path):
-        raise InputError(f"{path}: no such file")
-    try:
-        with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
-            document = xacro.process_file(path)
-    except Exception as exc:  # noqa: BLE001 - xacro raises many kinds; each is the file's problem
-        reason = " ".join(str(exc).split())[:200] or type(exc).__name__
-        raise InputError(f"{path}: xacro could not expand it: {reason}") from None
-    return document.toxml().encode("utf-8")
 
 
 def read_robot_file(path: str) -> RobotFile:

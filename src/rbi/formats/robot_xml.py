@@ -111,6 +111,8 @@ class XmlDocument:
     prefix: bytes
     suffix: bytes
     encoding: str
+    includes: list[str] = field(default_factory=list)
+    """Other files the robot reads (xacro and MJCF includes, MJCF mesh assets), resolved."""
 
     def original_bytes(self, text: bytes) -> bytes:
         """``text`` (UTF-8, this document's text edited) in the file's own encoding, with the
@@ -250,8 +252,11 @@ def _parse(path: str, text: bytes) -> XmlElement:
     def end(tag):
         element = stack.pop()
         element.text = "".join(pieces.pop()).strip()
-        at = parser.CurrentByteIndex
-        element.end = _tag_end(text, at)
+        opening_end = _tag_end(text, element.start)
+        if text[opening_end - 2 : opening_end] == b"/>":
+            element.end = opening_end  # <tag .../>: its one tag is the whole element
+        else:
+            element.end = _tag_end(text, parser.CurrentByteIndex)
 
     def characters(data):
         if pieces:
@@ -263,6 +268,15 @@ def _parse(path: str, text: bytes) -> XmlElement:
             "not expand them"
         )
 
+    def attribute_default(element_name, attribute, _type, default, _required):
+        if default is not None:
+            raise InputError(
+                f"{path}: refused: the document type declaration gives <{element_name}> a default "
+                f"{attribute}={default[:40]!r}; pybullet and urdfdom do not apply it, so the file means "
+                "different things to different readers: write the attribute where it is used"
+            )
+
+    parser.AttlistDeclHandler = attribute_default
     parser.StartElementHandler = start
     parser.EndElementHandler = end
     parser.CharacterDataHandler = characters

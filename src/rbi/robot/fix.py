@@ -12,8 +12,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-import numpy as np
-
+from rbi.errors import InputError
 from rbi.robot.audit import AuditReport, LinkAudit
 
 FIXED_CODES = ("unphysical", "placeholder", "mismatch", "massless")
@@ -112,55 +111,50 @@ def _indent(text: bytes, start: int) -> str:
     return lead.decode("utf-8") if lead.strip() == b"" else ""
 
 
-def _number(value: float) -> str:
-    return repr(float(value)) if value != 0 else "0"
-
-
-def _comment(text: str) -> str:
-    safe = text.replace("--", "- -").replace("\n", " ")
-    while "--" in safe:
-        safe = safe.replace("--", "- -")
-    return f"<!-- {safe.rstrip('-')} -->"
+def _step(indent: str) -> str:
+    return "\t" if "\t" in indent else "  "
 
 
 def _change(
     report: AuditReport, each: LinkAudit, density: float | None, reason: str, text: bytes
 ) -> Change | None:
+    from rbi.formats.inertial_xml import inertial_text, xml_comment
+
     geo = each.geometry
-    fmt = report.model.format
     inertial = each.link.inertial
-    mass, com, I = geo.mass, geo.center_of_mass, geo.inertia_about_com
-    source = f"its {geo.source} geometry"
     basis = (
-        f"at the declared mass {mass:.6g} kg"
+        f"at the declared mass {geo.mass:.6g} kg"
         if each.declared is not None and each.declared.mass > 0
-        else f"at density {density:g} kg/m³ ({mass:.6g} kg)"
+        else f"at density {density:g} kg/m³ ({geo.mass:.6g} kg)"
     )
     if inertial is not None and inertial.element is not None:
-        element = inertial.element
-        start, end = element.start, element.end
+        start, end = inertial.element.start, inertial.element.end
         old = text[start:end].decode("utf-8")
         indent = _indent(text, start)
-        inner = indent + ("  " if "\t" not in indent else "\t")
     else:
-        link_element = each.link.element
-        start = end = _after_start_tag(text, link_element)
+        start = end = _after_start_tag(text, each.link.element)
         if start is None:
             return None
         old = ""
-        indent = _indent(text, link_element.start) + "  "
-        inner = indent + "  "
+        outer = _indent(text, each.link.element.start)
+        indent = outer + _step(outer)
     was = (
         "no mass"
         if each.declared is None or each.declared.mass == 0
         else f"principal moments {', '.join(f'{m:.4g}' for m in each.declared.moments)} kg·m²"
     )
-    comment = _comment(f"rbi audit fix: was {was} ({reason}); now {source}'s mass properties {basis}")
-    body = _element_text(fmt, mass, com, I, inner, indent)
-    if old:
-        new = f"{comment}\n{indent}{body}"
-    else:
-        new = f"\n{indent}{comment}\n{indent}{body}"
+    comment = xml_comment(
+        f"rbi audit fix: was {was} ({reason}); now its {geo.source} geometry's mass properties {basis}"
+    )
+    body = inertial_text(
+        report.model.format,
+        geo.mass,
+        geo.center_of_mass,
+        geo.inertia_about_com,
+        indent=indent,
+        step=_step(indent),
+    )
+    new = f"{comment}\n{indent}{body}" if old else f"\n{indent}{comment}\n{indent}{body}"
     return Change(each.link.name or each.link.label, reason, old, new, start, end)
 
 
@@ -176,31 +170,33 @@ def _after_start_tag(text: bytes, element) -> int | None:
     return stop
 
 
-def _element_text(fmt: str, mass: float, com, I, inner: str, indent: str) -> str:
-    I = 0.5 * (np.asarray(I) + np.asarray(I).T)
-    x, y, z = (_number(v) for v in com)
-    if fmt == "urdf":
-        return (
-            f'<inertial>\n{inner}<origin xyz="{x} {y} {z}" rpy="0 0 0"/>\n{inner}<mass value="{_number(mass)}"/>\n'
-            f'{inner}<inertia ixx="{_number(I[0, 0])}" ixy="{_number(I[0, 1])}" ixz="{_number(I[0, 2])}" '
-            f'iyy="{_number(I[1, 1])}" iyz="{_number(I[1, 2])}" izz="{_number(I[2, 2])}"/>\n{indent}</inertial>'
-        )
-    if fmt == "sdf":
-        deeper = inner + "  "
-        entries = "".join(
-            f"{deeper}<{key}>{_number(value)}</{key}>\n"
-            for key, value in (
-                ("ixx", I[0, 0]),
-                ("ixy", I[0, 1]),
-                ("ixz", I[0, 2]),
-                ("iyy", I[1, 1]),
-                ("iyz", I[1, 2]),
-                ("izz", I[2, 2]),
+def files_read(model) -> list[str]:
+    """Every file the robot reads: the robot file, its includes (xacro, MJCF), its mesh
+    assets and meshes, as real paths."""
+    import os
+
+    found = [model.path, *getattr(model.document, "includes", [])]
+    for link in model.links:
+        found.extend(str(geom.mesh_file) for geom in (*link.collisions, *link.visuals) if geom.mesh_file)
+    return list(dict.fromkeys(os.path.realpath(each) for each in found))
+
+
+def check_out_not_read(out: str, model) -> None:
+    """InputError when ``out`` names a file the robot reads: writing there would replace an
+    include or a mesh (or the robot file) with the fixed copy."""
+    import os
+
+    from rbi.files.safe import shown
+
+    for each in files_read(model):
+        try:
+            same = os.path.samefile(out, each)
+        except OSError:
+            same = os.path.realpath(out) == each
+        if same:
+            what = (
+                "the robot file itself" if each == os.path.realpath(model.path) else "a file the robot reads"
             )
-        )
-        return (
-            f"<inertial>\n{inner}<pose>{x} {y} {z} 0 0 0</pose>\n{inner}<mass>{_number(mass)}</mass>\n"
-            f"{inner}<inertia>\n{entries}{inner}</inertia>\n{indent}</inertial>"
-        )
-    six = " ".join(_number(v) for v in (I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]))
-    return f'<inertial pos="{x} {y} {z}" mass="{_number(mass)}" fullinertia="{six}"/>'
+            raise InputError(
+                f"--out: {shown(out)}: is {what} ({shown(each)}); write the fixed copy to a new file"
+            )

@@ -1,0 +1,110 @@
+"""The one writer of ``<inertial>`` elements (URDF, SDF, MJCF), used by ``rbi export`` and by
+``rbi audit --fix``.
+
+Every writer takes SI numbers (kg, m, kg·m²): the mass, the centre of mass in the link (body)
+frame and the inertia matrix about the centre of mass in link axes, whose off-diagonal entries
+are the matrix entries (``ixy = I[0][1] = −∫xy dm``), the convention of all three formats.
+Numbers are written with the shortest repr that round-trips, so nothing is lost.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+
+import numpy as np
+
+FORMATS = ("urdf", "mjcf", "sdf")
+
+_SIX = (("ixx", (0, 0)), ("ixy", (0, 1)), ("ixz", (0, 2)), ("iyy", (1, 1)), ("iyz", (1, 2)), ("izz", (2, 2)))
+
+
+def xml_number(value: float) -> str:
+    """Shortest round-tripping text of a float (``-0.0`` written as ``0.0``)."""
+    return repr(float(value) + 0.0)
+
+
+def _numbers(values) -> str:
+    return " ".join(xml_number(v) for v in values)
+
+
+def _symmetric(inertia) -> np.ndarray:
+    I = np.asarray(inertia, dtype=float)
+    return 0.5 * (I + I.T)
+
+
+def urdf_inertial(mass: float, com, inertia) -> ET.Element:
+    """URDF: ``<origin xyz rpy>`` places the inertial frame at the centre of mass, axes
+    parallel to the link's; ``<inertia ixx ixy ixz iyy iyz izz>`` about it."""
+    I = _symmetric(inertia)
+    inertial = ET.Element("inertial")
+    ET.SubElement(inertial, "origin", xyz=_numbers(com), rpy="0 0 0")
+    ET.SubElement(inertial, "mass", value=xml_number(mass))
+    ET.SubElement(inertial, "inertia", {name: xml_number(I[i, j]) for name, (i, j) in _SIX})
+    return inertial
+
+
+def sdf_inertial(mass: float, com, inertia) -> ET.Element:
+    """SDF: ``<pose>x y z roll pitch yaw</pose>`` (the centre of mass, axes parallel to the
+    link's), ``<mass>``, and ``<inertia>`` with child elements ixx ixy ixz iyy iyz izz."""
+    I = _symmetric(inertia)
+    inertial = ET.Element("inertial")
+    ET.SubElement(inertial, "pose").text = _numbers(list(com) + [0.0, 0.0, 0.0])
+    ET.SubElement(inertial, "mass").text = xml_number(mass)
+    block = ET.SubElement(inertial, "inertia")
+    for name, (i, j) in _SIX:
+        ET.SubElement(block, name).text = xml_number(I[i, j])
+    return inertial
+
+
+def mjcf_inertial(mass: float, com, inertia, diagonal: bool = False) -> ET.Element:
+    """MJCF: ``<inertial pos mass fullinertia>`` with fullinertia in MuJoCo's order
+    Ixx Iyy Izz Ixy Ixz Iyz; or, with ``diagonal``, the principal moments as ``diaginertia``
+    and ``quat`` (w x y z) turning the principal frame into the body frame."""
+    I = _symmetric(inertia)
+    attributes = {"pos": _numbers(com), "mass": xml_number(mass)}
+    if diagonal:
+        from rbi.core.inertia import principal_axes
+        from rbi.core.rotation import matrix_to_quaternion
+
+        moments, axes = principal_axes(I)
+        attributes["quat"] = _numbers(matrix_to_quaternion(axes.T))  # columns: principal axes in body axes
+        attributes["diaginertia"] = _numbers(moments)
+    else:
+        attributes["fullinertia"] = _numbers([I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]])
+    return ET.Element("inertial", attributes)
+
+
+def inertial_element(fmt: str, mass: float, com, inertia, diagonal: bool = False) -> ET.Element:
+    """The ``<inertial>`` element of format ``fmt`` (``urdf``, ``sdf`` or ``mjcf``)."""
+    if fmt == "urdf":
+        return urdf_inertial(mass, com, inertia)
+    if fmt == "sdf":
+        return sdf_inertial(mass, com, inertia)
+    if fmt == "mjcf":
+        return mjcf_inertial(mass, com, inertia, diagonal=diagonal)
+    raise ValueError(f"no inertial writer for {fmt!r}")
+
+
+def element_text(element: ET.Element, indent: str = "", step: str = "  ") -> str:
+    """``element`` as text, its children indented by ``step`` per level; every line after the
+    first starts with ``indent`` (the first is placed by the caller)."""
+    ET.indent(element, space=step)
+    text = ET.tostring(element, encoding="unicode")
+    return ("\n" + indent).join(text.split("\n"))
+
+
+def inertial_text(
+    fmt: str, mass: float, com, inertia, *, indent: str = "", step: str = "  ", diagonal: bool = False
+) -> str:
+    """The ``<inertial>`` element of ``fmt`` as text, for a place in a file whose lines there
+    start with ``indent`` and whose nesting steps by ``step``."""
+    return element_text(inertial_element(fmt, mass, com, inertia, diagonal), indent, step)
+
+
+def xml_comment(text: str) -> str:
+    """``<!-- text -->`` on one line; an XML comment may not hold ``--`` nor end in ``-``, so
+    runs of hyphens are shortened to one and a final one dropped."""
+    text = " ".join(text.split("\n"))
+    while "--" in text:
+        text = text.replace("--", "-")
+    return f"<!-- {text.rstrip('-')} -->"

@@ -1,0 +1,137 @@
+"""A ``.xacro`` file expanded in a sandbox: a child Python process with no environment
+variables, no file outside the robot file's folder (unless ``--allow-outside-paths``), no
+subprocess or network, at most :data:`TIME_LIMIT_S` seconds and :data:`MEMORY_LIMIT_BYTES` of
+memory; past any of them, :class:`InputError` (exit 2).
+
+xacro evaluates Python expressions (``${...}``), reads environment variables (``$(env X)``) and
+files (``<xacro:include>``, ``xacro.load_yaml``): a robot file from somebody else must not make
+rbi print ``/etc/shadow`` or ``$AWS_SECRET_ACCESS_KEY``, hang on ``${10**10**8}`` or a FIFO,
+nor grow to gigabytes. The child is ``python -I`` (no user site, no ``PYTHON*`` variables) with
+an empty environment; resource limits (address space, CPU time, open files, file size 0) are
+set before xacro is imported, and an audit hook refuses every ``open`` outside the folder
+(Python's own modules excepted), every non-regular file (a FIFO, a device), and every process
+or socket. The parent waits at most :data:`TIME_LIMIT_S` seconds of wall time, then kills it.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+
+from rbi.errors import InputError
+
+TIME_LIMIT_S = 10.0
+"""Wall-clock (and CPU) seconds a xacro expansion may take."""
+
+MEMORY_LIMIT_BYTES = 1 << 30
+"""Address space the expanding process may use (1 GiB)."""
+
+MAX_OUTPUT_BYTES = 64 * 1024 * 1024
+"""Largest expanded document accepted (the limit rbi reads any robot file at)."""
+
+_CHILD = r"""
+import json, os, re, resource, stat, sys
+folder, path, allow, memory, seconds, largest = sys.argv[1], sys.argv[2], sys.argv[3] == "1", *map(int, sys.argv[4:7])
+def out(**answer):
+    sys.stdout.write(json.dumps(answer)); sys.stdout.flush(); os._exit(0)
+resource.setrlimit(resource.RLIMIT_AS, (memory, memory))
+resource.setrlimit(resource.RLIMIT_CPU, (seconds, seconds + 1))
+resource.setrlimit(resource.RLIMIT_FSIZE, (0, 0))
+resource.setrlimit(resource.RLIMIT_NPROC, (0, 0)) if hasattr(resource, "RLIMIT_NPROC") and os.getuid() != 0 else None
+try:
+    import xacro, xml.dom.minidom, yaml, encodings.idna, encodings.utf_8, encodings.latin_1
+except ImportError as exc:
+    out(error="missing", detail=str(exc))
+code = tuple(os.path.realpath(p) + os.sep for p in {sys.prefix, sys.base_prefix, sys.exec_prefix} | {p for p in sys.path if p and os.path.isdir(p) and os.path.realpath(p) != os.path.realpath(folder)})
+inside = os.path.realpath(folder) + os.sep
+def hook(event, args):
+    if event == "open":
+        name, mode = args[0], args[1]
+        if isinstance(name, int):
+            return
+        real = os.path.realpath(os.fsdecode(name))
+        if mode is not None and any(c in str(mode) for c in "wax+"):
+            raise PermissionError(13, "xacro may not write files", os.fsdecode(name))
+        if real.endswith((".py", ".pyc", ".so")) and real.startswith(code):
+            return
+        if not allow and not real.startswith(inside):
+            raise PermissionError(13, "outside the robot file's folder (give --allow-outside-paths to read it)", os.fsdecode(name))
+        try:
+            regular = stat.S_ISREG(os.stat(real).st_mode)
+        except OSError:
+            return
+        if not regular:
+            raise PermissionError(13, "not a regular file", os.fsdecode(name))
+    elif event.split(".")[0] in ("subprocess", "socket", "ctypes") or event in ("os.system", "os.exec", "os.spawn", "os.posix_spawn", "os.fork", "os.forkpty", "pty.spawn", "webbrowser.open", "urllib.Request"):
+        raise PermissionError(f"xacro may not {event}")
+sys.addaudithook(hook)
+import io, contextlib
+try:
+    with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
+        document = xacro.process_file(path)
+        text = document.toxml()
+except MemoryError:
+    out(error="memory")
+except RecursionError:
+    out(error="xacro could not expand it: macros or properties nested too deeply")
+except BaseException as exc:
+    words = " ".join(str(exc).split())
+    words = re.sub(r"^<class '[^']*'>:\s*", "", words)
+    out(error="xacro could not expand it: " + (words[:300] or type(exc).__name__))
+if len(text) > largest:
+    out(error=f"the expanded document is larger than the {largest // 2**20} MiB rbi reads from a robot file")
+out(xml=text, includes=sorted({os.path.realpath(p) for p in xacro.all_includes}))
+"""
+
+
+def expand_xacro(path: str, allow_outside: bool = False) -> tuple[bytes, list[str]]:
+    """(the URDF ``path`` expands to as UTF-8 bytes, the files it included), expanded in the
+    sandbox described above; InputError naming the file for anything refused or past a limit."""
+    if not os.path.isfile(path):
+        raise InputError(f"{path}: " + ("not a regular file" if os.path.exists(path) else "no such file"))
+    folder = os.path.dirname(os.path.abspath(path))
+    command = [
+        sys.executable,
+        "-I",
+        "-c",
+        _CHILD,
+        folder,
+        os.path.abspath(path),
+        "1" if allow_outside else "0",
+        str(MEMORY_LIMIT_BYTES),
+        str(int(TIME_LIMIT_S)),
+        str(MAX_OUTPUT_BYTES),
+    ]
+    try:
+        done = subprocess.run(
+            command, env={}, cwd=folder, capture_output=True, timeout=TIME_LIMIT_S, stdin=subprocess.DEVNULL
+        )
+    except subprocess.TimeoutExpired:
+        raise InputError(
+            f"{path}: xacro took longer than {TIME_LIMIT_S:g} s to expand it; refused (a file that "
+            "loops, computes a huge number or includes a FIFO)"
+        ) from None
+    return _answer(path, done)
+
+
+def _answer(path: str, done: subprocess.CompletedProcess) -> tuple[bytes, list[str]]:
+    try:
+        answer = json.loads(done.stdout.decode("utf-8"))
+    except (UnicodeDecodeError, ValueError):
+        answer = {"error": "memory" if b"MemoryError" in done.stderr or done.returncode < 0 else "crash"}
+    error = answer.get("error")
+    if error == "missing":
+        raise InputError(
+            f"{path}: a .xacro file needs the xacro package: pip install 'rbi[xacro]' (or run "
+            "`xacro FILE > FILE.urdf` and read that)"
+        )
+    if error in ("memory", "crash"):
+        raise InputError(
+            f"{path}: xacro needed more than {MEMORY_LIMIT_BYTES // 2**30} GiB of memory or "
+            f"{TIME_LIMIT_S:g} s to expand it; refused"
+        )
+    if error:
+        raise InputError(f"{path}: {error}")
+    return answer["xml"].encode("utf-8"), list(answer["includes"])
