@@ -682,7 +682,7 @@ def audit(
     geometry: str = "collision",
     density: float | None = None,
     material: str | None = None,
-    mesh_inertia: str = "exact",
+    mesh_inertia: str = "auto",
     joints: dict[str, float] | Sequence[str] | None = None,
     fix: bool = False,
     allow_outside_paths: bool = False,
@@ -698,10 +698,12 @@ def audit(
         package_paths: ``{NAME: DIR}`` or ``["NAME=DIR", ...]`` for ``package://NAME/`` meshes
             (``ROS_PACKAGE_PATH`` is searched too).
         geometry: ``"collision"`` or ``"visual"``: which geometry gives a link's volume (a link
-            without it falls back to the other).
+            without it falls back to the other); ``"none"``: no geometry, the declared inertials
+            and totals only.
         density, material: kg/m³, or a built-in material name, for links that declare no mass.
-        mesh_inertia: ``"exact"`` (the solid a closed mesh encloses), ``"convex"`` (its hull) or
-            ``"shell"`` (mass on the surface).
+        mesh_inertia: ``"auto"`` (exact where a mesh is closed, else its convex hull, flagged
+            ``mesh``), ``"exact"`` (the solid a closed mesh encloses), ``"convex"`` (its hull)
+            or ``"shell"`` (mass on the surface).
         joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
             metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
         fix: also plan the fixed copy: ``report.fix.content`` (bytes), ``.changes``, ``.unfixable``.

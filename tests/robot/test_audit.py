@@ -512,9 +512,18 @@ def test_mesh_repair_closes_a_small_hole_and_says_so(tmp_path):
     )
     path = write(tmp_path, "r.urdf", text)
     one_line_exit_2(
-        run_rbi_inprocess("audit", path), "open.obj", "not closed", "--mesh-repair", "--mesh-inertia convex"
+        run_rbi_inprocess("audit", path, "--mesh-inertia", "exact"),
+        "open.obj",
+        "not closed",
+        "--mesh-repair",
+        "--mesh-inertia convex",
     )
-    proc, result = audit_json(path, "--mesh-repair")
+    proc, result = audit_json(path)  # auto: the hull of the open box is the box, with a warning
+    assert proc.returncode == 0, proc.stderr
+    assert result["links"][0]["geometry"]["volume"] == pytest.approx(0.001, rel=1e-14)
+    (flag,) = [f for f in result["links"][0]["flags"] if f["code"] == "mesh"]
+    assert flag["level"] == "warning" and "open.obj" in flag["message"] and "convex hull" in flag["message"]
+    proc, result = audit_json(path, "--mesh-repair", "--mesh-inertia", "exact")
     assert proc.returncode == 0, proc.stderr
     assert result["links"][0]["geometry"]["volume"] == pytest.approx(0.001, rel=1e-14)
     assert any("--mesh-repair closed holes with 1 triangle(s), 0.01 m²" in note for note in result["notes"])

@@ -39,8 +39,6 @@ REFUSED = {  # file (relative to pybullet_data) → words of the one-line reason
     "kuka_iiwa/kuka_world.sdf": "no such file",
     "kuka_iiwa/kuka_with_gripper.sdf": "leaves the spec's folder",  # an absolute /meshes/link_0.stl
     "kuka_iiwa/kuka_with_gripper2.sdf": "leaves the spec's folder",
-    "stadium.sdf": "no volume",  # a flat mesh its only geometry
-    "stadium_no_collision.sdf": "no volume",
 }
 
 TIMES: dict[str, float] = {}
@@ -51,16 +49,12 @@ def _relative(path: str) -> str:
 
 
 def _audit(path: str):
-    """Audit with exact mesh inertia; a mesh that is not closed is refused with the options that
-    read it, and is then audited as its convex hull."""
+    """Audit with the default mesh inertia, auto: exact where a mesh is closed, its convex hull
+    (flagged ``mesh``) where not; a flat mesh (stadium.sdf's) is left out, flagged."""
     from rbi.robot import audit
 
-    try:
-        return audit(path), "exact"
-    except InputError as exc:
-        if "--mesh-inertia convex" not in str(exc):
-            raise
-    return audit(path, mesh_inertia="convex"), "convex"
+    report = audit(path)
+    return report, "convex" if any(f.code == "mesh" for each in report.links for f in each.flags) else "exact"
 
 
 def _relative_error(a, b) -> float:

@@ -34,8 +34,9 @@ GeometryOption = Annotated[
     str,
     typer.Option(
         "--geometry",
-        metavar="collision|visual",
-        help="Which geometry gives a link's volume (a link without it falls back to the other).",
+        metavar="collision|visual|none",
+        help="Which geometry gives a link's volume (a link without it falls back to the other); none: "
+        "read no geometry, check the declared inertials and totals only.",
     ),
 ]
 DensityOption = Annotated[
@@ -54,9 +55,9 @@ MeshInertiaOption = Annotated[
     str,
     typer.Option(
         "--mesh-inertia",
-        metavar="exact|convex|shell",
-        help="Mass of a mesh: the solid it encloses (exact; the mesh must be closed), its convex hull, "
-        "or its surface (shell, as MuJoCo).",
+        metavar="auto|exact|convex|shell",
+        help="Mass of a mesh: auto (the solid a closed mesh encloses, else its convex hull, flagged 'mesh'), "
+        "exact (the mesh must be closed), convex (its hull), or shell (its surface, as MuJoCo).",
     ),
 ]
 MeshRepairOption = Annotated[
@@ -95,7 +96,7 @@ def audit(
     geometry: GeometryOption = "collision",
     density: DensityOption = None,
     material: MaterialOption = None,
-    mesh_inertia: MeshInertiaOption = "exact",
+    mesh_inertia: MeshInertiaOption = "auto",
     mesh_repair: MeshRepairOption = False,
     joints: JointsOption = None,
     fix: FixOption = False,

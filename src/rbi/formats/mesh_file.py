@@ -1,7 +1,7 @@
 """Mesh files a spec names (``shape: mesh``) or a robot file points to: read, welded, checked,
 and handed to the core as plain arrays.
 
-STL (binary and ASCII) and OBJ are parsed here, in bounded memory and with the formats' own
+STL (binary and ASCII), OBJ and Collada (:mod:`rbi.formats.collada`) are parsed here, in bounded memory and with the formats' own
 rules (OBJ numbers vertices from 1, and a negative number counts back from the last vertex read
 before the face); PLY is parsed by trimesh after its header's counts are checked against the
 file's size. The volume integration and every check are rbi's own (:mod:`rbi.core.mesh`). The
@@ -37,7 +37,7 @@ MAX_PLY_BYTES = 32 * 2**20
 PLY is parsed by trimesh, which needs some 25 bytes of memory per byte of file (a binary PLY
 of 2 million triangles, 38 MB, peaks at 1 GB): convert a larger mesh to binary STL."""
 
-MESH_FILE_TYPES = {".stl": "stl", ".obj": "obj", ".ply": "ply"}
+MESH_FILE_TYPES = {".stl": "stl", ".obj": "obj", ".ply": "ply", ".dae": "dae"}
 """File extensions rbi reads as meshes, and the format of each."""
 
 
@@ -363,4 +363,14 @@ def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     return vertices, faces
 
 
-_PARSERS = {"stl": _parse_stl, "obj": _parse_obj, "ply": _parse_ply}
+def _parse_dae(data: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """Collada: every triangle its scene places, in metres (:mod:`rbi.formats.collada`)."""
+    from rbi.formats.collada import parse_collada
+
+    vertices, faces = parse_collada(data, max_triangles=MAX_MESH_TRIANGLES)
+    if len(faces) > MAX_MESH_TRIANGLES:
+        raise _too_many(len(faces))
+    return vertices, faces
+
+
+_PARSERS = {"stl": _parse_stl, "obj": _parse_obj, "ply": _parse_ply, "dae": _parse_dae}

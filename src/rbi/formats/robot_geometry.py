@@ -18,7 +18,27 @@ import numpy as np
 from rbi.errors import InputError
 from rbi.formats.robot_model import Geom
 
-MESH_INERTIA_MODES = ("exact", "convex", "shell")
+MESH_INERTIA_MODES = ("auto", "exact", "convex", "shell")
+"""``auto``: ``exact`` for a closed mesh; for one that is not (open, inconsistently wound, no
+volume), its solid convex hull, with a warning saying so (:class:`MeshFallback`)."""
+
+
+class MeshFallback(NamedTuple):
+    """A mesh that ``auto`` could not integrate exactly: the mesh file's name and why; ``used``
+    is ``convex`` (its hull stands in) or None (left out: not even its hull has a volume)."""
+
+    file: str
+    label: str
+    reason: str
+    used: str | None
+
+    def message(self) -> str:
+        instead = (
+            "its convex hull is used instead"
+            if self.used
+            else "it is left out (even its convex hull has no volume)"
+        )
+        return f"{self.label}: mesh {self.file}: {self.reason}; {instead}"
 
 
 class Distribution(NamedTuple):
@@ -106,11 +126,17 @@ def _half_extent(kind: str, size) -> np.ndarray:
 
 
 def distribution(
-    geom: Geom, mode: str = "exact", where: str = "", repair: bool = False, notes: list[str] | None = None
+    geom: Geom,
+    mode: str = "exact",
+    where: str = "",
+    repair: bool = False,
+    notes: list[str] | None = None,
+    fallbacks: list[MeshFallback] | None = None,
 ) -> Distribution | None:
     """``geom``'s distribution in the link frame; None for a kind that carries no mass (plane,
     height field). ``mode`` is the mesh inertia mode (MJCF geoms give their own); ``repair``
-    closes a mesh's small holes first (trimesh's ``fill_holes``), each repair noted in ``notes``."""
+    closes a mesh's small holes first (trimesh's ``fill_holes``), each repair noted in ``notes``;
+    in mode ``auto`` a mesh integrated other than exactly is listed in ``fallbacks``."""
     R, p = geom.pose.rotation, geom.pose.translation
     if geom.kind in ("box", "sphere", "cylinder", "capsule", "ellipsoid"):
         try:
@@ -129,6 +155,12 @@ def distribution(
         )
     if geom.kind == "mesh":
         mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
+        if mode == "auto":
+            mode, fallback = _auto_mode(geom, where, repair)
+            if fallback is not None and fallbacks is not None:
+                fallbacks.append(fallback)
+            if mode is None:
+                return None
         measure, centroid, inertia, low, high, added = _mesh(geom, mode, where, repair)
         if added and notes is not None:
             notes.append(
@@ -154,6 +186,29 @@ def _turned_bounds(R, p, low, high):
 
 
 _MESHES: dict[tuple, tuple] = {}
+
+
+def _auto_mode(geom: Geom, where: str, repair: bool) -> tuple[str | None, MeshFallback | None]:
+    """``exact`` when the mesh is closed; else ``convex`` (or None when the hull has no volume
+    either), with the fallback that says why. A mesh that cannot be read is still refused."""
+    try:
+        _mesh(geom, "exact", where, repair)
+        return "exact", None
+    except _NotIntegrable as exc:
+        reason = exc.reason
+    try:
+        _mesh(geom, "convex", where, repair)
+        used = "convex"
+    except _NotIntegrable:
+        used = None
+    return used, MeshFallback(geom.mesh_file.name, geom.label, reason, used)
+
+
+class _NotIntegrable(InputError):
+    """A mesh that was read but cannot be integrated in the mode asked (open, flat, ...);
+    ``reason`` is what is wrong with it, in a few words."""
+
+    reason = ""
 
 
 def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
@@ -187,7 +242,9 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
             added = (repaired.added_faces, repaired.added_area) if repaired.added_faces else None
         found = mesh_distribution(vertices, faces, mode)
     except ValueError as exc:
-        raise InputError(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}") from None
+        refusal = _NotIntegrable(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}")
+        refusal.reason = str(exc).split("; for such a mesh")[0].split("; audit it with")[0]
+        raise refusal from None
     if not (np.isfinite(found.measure) and np.all(np.isfinite(found.inertia_per_density))):
         raise InputError(
             f"{where}{geom.label}: {path.name}: scale {scale.tolist()}: too large to compute with "

@@ -17,7 +17,7 @@ def audit(
     geometry: str = "collision",
     density: float | None = None,
     material: str | None = None,
-    mesh_inertia: str = "exact",
+    mesh_inertia: str = "auto",
     joints: Mapping[str, float] | Sequence[str] | None = None,
     fix: bool = False,
     allow_outside_paths: bool = False,
@@ -27,9 +27,11 @@ def audit(
     geometry, with flags, and the whole robot's totals at a configuration.
 
     ``package_paths``: ``{NAME: DIR}`` (or ``["NAME=DIR", ...]``) for ``package://NAME/``;
-    ``geometry``: ``"collision"`` or ``"visual"`` (each link falls back to the other);
+    ``geometry``: ``"collision"`` or ``"visual"`` (each link falls back to the other), or
+    ``"none"`` (no geometry read: the declared inertials and totals only);
     ``density`` (kg/m³) or ``material`` (a built-in name): for links that declare no mass;
-    ``mesh_inertia``: ``"exact"``, ``"convex"`` or ``"shell"``; ``joints``: ``{NAME: VALUE}`` (or
+    ``mesh_inertia``: ``"auto"`` (exact where a mesh is closed, else its convex hull with a
+    warning flag ``mesh``), ``"exact"``, ``"convex"`` or ``"shell"``; ``joints``: ``{NAME: VALUE}`` (or
     ``["NAME=VALUE", ...]``), radians for revolute joints, metres for prismatic ones (default:
     zero, MJCF ``qpos0``); ``fix``: also plan the fixed copy (``report.fix``: its bytes, the
     changes, the links that could not be fixed); ``mesh_repair``: close meshes' small holes
@@ -50,7 +52,7 @@ def audit(
         joint_values = parse_joint_values(list(joints or []))
     rho = material_density(material, density)
     with outside_paths_allowed(allow_outside_paths):
-        model = read_robot(os.fspath(robot_file), packages, geometry=True)
+        model = read_robot(os.fspath(robot_file), packages, geometry=geometry != "none")
         report = audit_model(
             model,
             geometry=geometry,

@@ -48,6 +48,9 @@ WARNING_RATIO = 2.0
 SOLID_DENSITY_RANGE = (50.0, 25000.0)
 """Densities (kg/m³) a link's material can have: from rigid foam to above osmium (22,590)."""
 
+GEOMETRY_CHOICES = ("collision", "visual", "none")
+"""Which geometry gives a link's volume; ``none`` reads none (the declared inertials alone)."""
+
 COM_MARGIN = 0.01
 """A declared centre of mass may lie this fraction of the geometry's size outside its bounds."""
 
@@ -220,15 +223,15 @@ def audit_model(
     *,
     geometry: str = "collision",
     density: float | None = None,
-    mesh_inertia: str = "exact",
+    mesh_inertia: str = "auto",
     joints: dict[str, float] | None = None,
     mesh_repair: bool = False,
 ) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
     from rbi.robot.tree import totals
 
-    if geometry not in ("collision", "visual"):
-        raise InputError(f"--geometry: {geometry!r}: must be collision or visual")
+    if geometry not in GEOMETRY_CHOICES:
+        raise InputError(f"--geometry: {geometry!r}: must be collision, visual or none")
     if mesh_inertia not in MESH_INERTIA_MODES:
         raise InputError(f"--mesh-inertia: {mesh_inertia!r}: must be one of {', '.join(MESH_INERTIA_MODES)}")
     carried = _carried_mass(model)
@@ -296,9 +299,13 @@ def link_geometry(
     mesh_inertia: str,
     mesh_repair: bool = False,
     notes: list[str] | None = None,
+    fallbacks: list | None = None,
 ):
     """(source, pieces) for the link: each piece (distribution, mass or None); MJCF geoms carry
-    their own mass or density."""
+    their own mass or density. ``fallbacks`` collects the meshes ``auto`` could not integrate
+    exactly."""
+    if geometry == "none":
+        return None, []
     first, second = (
         (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
     )
@@ -308,7 +315,7 @@ def link_geometry(
     where = f"{model.path}: {link.label}: "
     pieces = []
     for geom in geoms:
-        found = distribution(geom, mesh_inertia, where, mesh_repair, notes)
+        found = distribution(geom, mesh_inertia, where, mesh_repair, notes, fallbacks)
         if found is None or not found.measure > 0:
             continue
         own_mass = None
@@ -324,7 +331,7 @@ def audit_link(
     *,
     geometry: str = "collision",
     density: float | None = None,
-    mesh_inertia: str = "exact",
+    mesh_inertia: str = "auto",
     carries_mass: bool = False,
     mesh_repair: bool = False,
     notes: list[str] | None = None,
@@ -333,10 +340,12 @@ def audit_link(
     declared = None
     if inertial is not None:
         declared = MassProps(inertial.mass, inertial.com.copy(), inertial.inertia_in_link_axes())
-    source, pieces = link_geometry(model, link, geometry, mesh_inertia, mesh_repair, notes)
+    fallbacks: list = []
+    source, pieces = link_geometry(model, link, geometry, mesh_inertia, mesh_repair, notes, fallbacks)
     geo = _geometry_props(model, pieces, source, declared, density)
     result = LinkAudit(link, declared, geo)
-    result.flags = _flags(model, link, result, carries_mass)
+    result.flags = [Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks]
+    result.flags += _flags(model, link, result, carries_mass)
     return result
 
 
