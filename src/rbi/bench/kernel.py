@@ -22,6 +22,8 @@ import numpy as np
 
 from rbi.bench import workprecision
 from rbi.bench.timing import measure
+from rbi.sim.api import DEFAULT_RTOL, sample_times, simulate
+from rbi.sim.compiled import integrator
 
 Progress = Callable[[str], None]
 
@@ -40,7 +42,6 @@ def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: fl
     """``(call, result)``: a no-argument call of the minimal loop on arrays prepared once (as a
     hand-written program would hold them), and where it writes ``(y, out)``."""
     from rbi.sim._dop853 import integrate_minimal
-    from rbi.sim.api import sample_times
 
     t = sample_times(duration, samples)
     q0 = np.asarray(q0, dtype=float)
@@ -65,8 +66,6 @@ def planned_steps(quick: bool) -> int:
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    from rbi.sim.api import DEFAULT_RTOL, simulate
-    from rbi.sim.compiled import integrator
 
     integrator()  # load once, outside every timing
     case = workprecision.cases(quick)[0]

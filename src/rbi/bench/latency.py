@@ -9,6 +9,11 @@ the ratio to the median of ``python -c "import numpy"`` measured in the same rou
 
 from __future__ import annotations
 
+import compileall
+import contextlib
+import io
+import os
+import re
 import statistics
 import subprocess
 import sys
@@ -150,7 +155,6 @@ def import_breakdown(bodies: Path, repeats: int) -> dict:
     """Where ``rbi inertia bodies/top.yaml``'s start-up goes, from ``python -X importtime``: each
     imported module's own time (its "self" column, so a package is counted once whoever
     imported it first), the smallest of ``repeats`` runs, summed by :data:`IMPORT_GROUPS`."""
-    import re
 
     argv = [sys.executable, "-X", "importtime", "-m", "rbi", "inertia", str(bodies / "top.yaml")]
     best: dict[str, int] = {}
@@ -185,7 +189,6 @@ def first_run(bodies: Path, repeats: int) -> dict:
     after it in the same HOME, ``repeats`` times with a new HOME each time; medians and their
     ratio. Nothing is compiled or cached at run time, so the two should match (the package's own
     files are installed and in the OS file cache either way)."""
-    import os
 
     argv = rbi_command() + ["simulate", str(bodies / "top.yaml"), "--spin", "200", "--tilt", "10"]
     firsts, laters, messages = [], [], []
@@ -235,9 +238,6 @@ def compile_bytecode() -> bool:
     does, so that no timed run compiles rbi's sources (an editable checkout run with
     ``PYTHONDONTWRITEBYTECODE`` would recompile every changed module in every run: tens of
     milliseconds). Whether every module compiled (False also when the folder is read-only)."""
-    import compileall
-    import contextlib
-    import io
 
     package = Path(__file__).resolve().parents[1]
     try:

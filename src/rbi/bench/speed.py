@@ -29,18 +29,20 @@ from pathlib import Path
 
 import numpy as np
 
+from rbi.sim.api import simulate
+from rbi.sim.diagnostics import orientation_error_deg
+from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.spec.load import load_body
+from rbi.spec.units import gravity_in
+
 
 def _scene(spec: str):
-    from rbi.sim.scene import scene_from_properties
-    from rbi.spec.load import load_body
-    from rbi.spec.units import gravity_in
 
     body = load_body(spec)
     return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit))
 
 
 def _errors(run, reference) -> dict[str, float]:
-    from rbi.sim.diagnostics import orientation_error_deg
 
     return {
         "final_orientation_error_deg": float(orientation_error_deg(run.q[-1], reference.q[-1])),
@@ -70,8 +72,6 @@ def _first_run_costs(spec: str) -> dict[str, float]:
 
 
 def measure(spec: str, repeat: int, first_run: bool) -> dict:
-    from rbi.sim.api import simulate
-    from rbi.sim.scene import initial_state
 
     scene = _scene(spec)
     q0, w0 = initial_state(0.0, [0.0, 0.0, 200.0])

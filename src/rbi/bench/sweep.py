@@ -18,13 +18,23 @@
 from __future__ import annotations
 
 import os
+import resource
 import subprocess
 import tempfile
 import time
 from collections.abc import Callable
 from pathlib import Path
 
+import numpy as np
+
 from rbi.bench.paths import bodies_folder, rbi_command
+from rbi.files.output import output_target
+from rbi.sim.api import simulate
+from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.spec.load import load_body, read_yaml
+from rbi.spec.units import gravity_in
+from rbi.sweep.execute import available_cores
+from rbi.sweep.study import Study, SweepSettings, check_settings
 
 Progress = Callable[[str], None]
 
@@ -42,7 +52,6 @@ def _axis_text(axis) -> str:
 
 
 def _values(axis) -> list[float]:
-    import numpy as np
 
     return [float(v) for v in np.linspace(axis[0], axis[1], axis[2])]
 
@@ -58,9 +67,6 @@ def sample_runs(g: dict, count: int) -> list[tuple[float, float]]:
 def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
     """The sweep `rbi sweep` runs for this grid (:class:`rbi.sweep.study.Study`), in this process,
     streaming its rows to the CSV ``out``."""
-    from rbi.files.output import output_target
-    from rbi.spec.load import read_yaml
-    from rbi.sweep.study import Study, SweepSettings, check_settings
 
     settings = SweepSettings(
         spin=_axis_text(g["spin"]), tilt=_axis_text(g["tilt"]), duration=g["duration"], yes=True
@@ -73,10 +79,6 @@ def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
 def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:
     """Runs per second of ``simulate`` called once per run, one after another, in this process
     (the body loaded once, as a sweep does)."""
-    from rbi.sim.api import simulate
-    from rbi.sim.scene import initial_state, scene_from_properties
-    from rbi.spec.load import load_body
-    from rbi.spec.units import gravity_in
 
     body = load_body(spec)
     scene = scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit))
@@ -157,7 +159,6 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
 
 
 def _cpu_seconds() -> float:
-    import resource
 
     usage = resource.getrusage(resource.RUSAGE_SELF)
     return usage.ru_utime + usage.ru_stime
@@ -219,7 +220,6 @@ def planned_steps(quick: bool) -> int:
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    from rbi.sweep.execute import available_cores
 
     spec = bodies_folder() / "top.yaml"
     g = grid(quick)

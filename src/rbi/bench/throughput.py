@@ -19,6 +19,9 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench.timing import measure, time_once
+from rbi.core.inertia import centre_of_mass, combine, principal_axes
+from rbi.spec.load import load_body, read_yaml, validation_messages
+from rbi.spec.translate import body_from_spec
 
 QUICK_CLOUDS = (10**3, 10**4, 10**5)
 FULL_CLOUDS = (10**3, 10**4, 10**5, 10**6)
@@ -41,7 +44,6 @@ def random_cloud(n: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
 
 def core_timings(masses: np.ndarray, positions: np.ndarray) -> dict:
     """Median seconds of each step of the in-memory reduction."""
-    from rbi.core.inertia import centre_of_mass, combine, principal_axes
 
     props = combine(masses, positions)
     mass = measure(lambda: masses.sum())
@@ -76,8 +78,6 @@ def write_cloud(folder: Path, masses: np.ndarray, positions: np.ndarray) -> dict
 def file_timings(specs: dict[str, Path], repeats: int) -> dict:
     """Median seconds to load each spec (YAML, cloud file, validation, reduction) and find the
     principal axes: what ``rbi principal`` spends after start-up."""
-    from rbi.core.inertia import principal_axes
-    from rbi.spec.load import load_body
 
     out = {}
     for kind, spec in specs.items():
@@ -95,7 +95,6 @@ def file_timings(specs: dict[str, Path], repeats: int) -> dict:
 def check_against_direct_sum(specs: dict[str, Path], masses: np.ndarray, positions: np.ndarray) -> float:
     """Largest relative difference between the loaded body's inertia and a direct
     ``Σ m (|d|² E − d dᵀ)`` (a guard that the timed code computes the right thing)."""
-    from rbi.spec.load import load_body
 
     props = load_body(specs["npy"]).props
     com = masses @ positions / masses.sum()
@@ -166,9 +165,6 @@ def parts_yaml(n: int, seed: int = 1) -> str:
 
 def solid_parts(sizes, progress: Progress) -> list[dict]:
     """Seconds for each step of loading a spec of many parts, once each (these are slow)."""
-    from rbi.core.inertia import combine, principal_axes
-    from rbi.spec.load import read_yaml, validation_messages
-    from rbi.spec.translate import body_from_spec
 
     rows = []
     with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
@@ -211,7 +207,6 @@ def solid_parts(sizes, progress: Progress) -> list[dict]:
 
 def _warm_up_loader(folder: Path) -> None:
     """Import and exercise the loader once, so the timings exclude one-off import costs."""
-    from rbi.spec.load import load_body
 
     spec = folder / "warm.yaml"
     spec.write_text(

@@ -11,6 +11,10 @@ from collections.abc import Callable
 from datetime import UTC, datetime
 from typing import NamedTuple
 
+import numpy
+
+from rbi.sim.compiled import integrator
+
 
 class Timing(NamedTuple):
     """Repeated wall-clock timings of one call, seconds."""
@@ -45,8 +49,7 @@ def time_once(call: Callable[[], object]) -> tuple[float, object]:
 
 def machine() -> dict:
     """What the numbers were measured on: CPU, core count, load, Python and library versions."""
-    import numpy
-    import scipy
+    import scipy  # loaded only by the commands that need it (start-up cost)
 
     info = {
         "date": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
@@ -59,7 +62,6 @@ def machine() -> dict:
         "scipy": scipy.__version__,
         "executable": sys.executable,
     }
-    from rbi.sim.compiled import integrator
 
     info["kernel"] = integrator().how
     return info

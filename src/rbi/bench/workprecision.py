@@ -28,6 +28,12 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench.paths import bodies_folder
+from rbi.sim.api import simulate
+from rbi.sim.compiled import integrator
+from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg
+from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.spec.load import load_body
+from rbi.spec.units import gravity_in
 
 Progress = Callable[[str], None]
 
@@ -74,9 +80,6 @@ def sweeps(quick: bool) -> dict[str, list[float]]:
 
 
 def scene_of(case: Case):
-    from rbi.sim.scene import initial_state, scene_from_properties
-    from rbi.spec.load import load_body
-    from rbi.spec.units import gravity_in
 
     body = load_body(bodies_folder() / case.spec)
     scene = scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit))
@@ -88,7 +91,6 @@ def timed_run(scene, q0, omega0, case: Case, method: str, rtol: float | None, mi
     """One trajectory and the median in-process time of the whole :func:`rbi.sim.api.simulate`
     call over repeats (a run of the compiled method takes about a millisecond, too short to
     time once on a busy machine)."""
-    from rbi.sim.api import simulate
 
     runs = []
     spent = 0.0
@@ -101,7 +103,6 @@ def timed_run(scene, q0, omega0, case: Case, method: str, rtol: float | None, mi
 
 
 def errors(scene, trajectory, reference) -> dict:
-    from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg
 
     drifts = {
         name: item["drift"]
@@ -117,8 +118,6 @@ def errors(scene, trajectory, reference) -> dict:
 
 
 def reference_of(case: Case, scene, q0, omega0, quick: bool) -> tuple[object, dict]:
-    from rbi.sim.api import simulate
-    from rbi.sim.diagnostics import orientation_error_deg
 
     if case.reference == "exact":
         ref = simulate(scene, q0, omega0, case.duration, case.samples, method="exact")
@@ -139,7 +138,6 @@ def reference_of(case: Case, scene, q0, omega0, quick: bool) -> tuple[object, di
 
 
 def run_case(case: Case, quick: bool, progress: Progress) -> dict:
-    from rbi.sim.compiled import integrator
 
     load_seconds = integrator().load_seconds  # compile or load once, outside every timing
     scene, q0, omega0 = scene_of(case)
@@ -239,10 +237,10 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
 def plot(result: dict, path: str | Path) -> None:
     """Log–log plot of the final orientation error against in-process time, one panel per
     case, one line per method; the chapter's set-up and rbi's defaults are marked."""
-    import matplotlib
+    import matplotlib  # optional extra `plot`, loaded only to draw
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
 
     styles = {
         "default": ("rbi default method (compiled DOP853)", "C0", "o"),

@@ -55,7 +55,7 @@ print(json.dumps({"read": read - start, "validate": validated - read, "translate
 def spec_text(n_parts: int, shape: str, seed: int = 0) -> str:
     """A valid spec of ``n_parts`` parts of one ``shape`` ('point' or 'cylinder'), one flow
     mapping a line, numbers with 6 significant digits (what a generating program writes)."""
-    import numpy as np
+    import numpy as np  # lazy: importing this module must load nothing a baseline would pay for
 
     if shape not in SHAPES:
         raise ValueError(f"shape must be one of {SHAPES} (got {shape!r})")

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.rotation import quaternion_to_matrix
 from rbi.viz.solids import part_quads, shade
 
 PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#6b8e23", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
@@ -31,7 +32,7 @@ def body_mesh(
 ) -> tuple[np.ndarray, np.ndarray]:
     """The parts as quads ``(n, 4, 3)`` with an RGBA colour each (stripes darker; holes red and
     translucent, or left out when ``holes`` is false; point masses dark grey)."""
-    from matplotlib.colors import to_rgba
+    from matplotlib.colors import to_rgba  # optional extra `plot`, loaded only to draw
 
     all_quads, all_colours = [], []
     for index, item in enumerate(parts):
@@ -70,7 +71,6 @@ def cloud_points(parts: list[dict[str, Any]]) -> np.ndarray:
 
 def quaternion_matrix_xyzw(q) -> np.ndarray:
     """Rotation matrix of a unit quaternion given as [x, y, z, w] (the page's order)."""
-    from rbi.core.rotation import quaternion_to_matrix
 
     x, y, z, w = (float(c) for c in q)
     return quaternion_to_matrix(np.array([w, x, y, z]))
@@ -80,7 +80,7 @@ def _scene_axes(fig, data: dict[str, Any]):
     """3D axes framed on the heights the body reaches, ground disc (just below the lowest point
     the body reaches, see :func:`rbi.viz.motion.height_range`) and pivot drawn for a top, axes
     hidden."""
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
 
     size = float(data["size"])
     ax = fig.add_axes((0.0, 0.0, 1.0, 0.9), projection="3d")
@@ -110,7 +110,7 @@ def _scene_axes(fig, data: dict[str, Any]):
 
 
 def _draw_body(ax, quads: np.ndarray, colours: np.ndarray, rotation: np.ndarray, zorder: int = 2):
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
 
     turned = quads @ rotation.T
     collection = Poly3DCollection(turned, facecolors=shade(turned, colours), edgecolors="none", zorder=zorder)
@@ -128,10 +128,10 @@ def frame_indices(times, fps: float) -> np.ndarray:
 def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
     """Yield one RGB image (``(pixels, pixels, 3)`` uint8 array) per sample index in ``indices``;
     the trace of the axis tip is drawn through every sample of the last ``data['trail_seconds']``."""
-    import matplotlib
+    import matplotlib  # optional extra `plot`, loaded only to draw
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
 
     size = float(data["size"])
     quads, colours = body_mesh(data["parts"], size)
@@ -181,7 +181,7 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
 def write_gif(data: dict[str, Any], path: str, fps: int = 25, progress=None) -> None:
     """A looping GIF that plays ``data`` in real time at ``fps`` frames per second.
     ``progress(done, total)``, if given, is called after each frame is drawn."""
-    from PIL import Image
+    from PIL import Image  # ships with matplotlib (extra `plot`), loaded only to write a GIF
 
     indices = frame_indices(data["times"], fps)
     images = []

@@ -42,7 +42,7 @@ def _drawable(text: str, font) -> str:
 
 def _characters_of(font) -> frozenset[int]:
     """Code points the fonts matplotlib would use for ``font`` can draw (with its fallbacks)."""
-    from matplotlib.font_manager import fontManager
+    from matplotlib.font_manager import fontManager  # optional extra `plot`, loaded only to draw
 
     paths = (
         fontManager._find_fonts_by_props(font)
@@ -57,7 +57,7 @@ _CHARMAPS: dict[tuple[str, ...], frozenset[int]] = {}
 
 def _charmaps(paths: tuple[str, ...]) -> frozenset[int]:
     if paths not in _CHARMAPS:
-        from matplotlib.ft2font import FT2Font
+        from matplotlib.ft2font import FT2Font  # optional extra `plot`, loaded only to draw
 
         codes: set[int] = set()
         for path in paths:

@@ -12,6 +12,10 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.rotation import quaternion_to_matrix
+from rbi.spec.geometry import moved
+from rbi.viz.solids import part_quads
+
 MAX_TURN_PER_KEYFRAME = 0.5
 """Largest turn (rad) between two keyframes, so that slerp between them follows the motion."""
 
@@ -57,7 +61,6 @@ def animation_data(
     """Everything the page needs, as JSON-ready lists. ``geometry``: from
     :func:`rbi.spec.geometry.part_geometry` (body frame); ``q`` (N, 4) [w, x, y, z] body → world;
     ``omega`` (N, 3) body frame, rad/s."""
-    from rbi.core.rotation import quaternion_to_matrix
 
     origin = np.asarray(scene.pivot if scene.pivoted else scene.com, dtype=float)
     parts = [shifted(item, origin) for item in geometry]
@@ -91,7 +94,6 @@ def drawn_points(parts: list[dict[str, Any]], size: float) -> np.ndarray:
     """Every corner of the drawn solids (a point mass drawn as its small sphere) and every cloud
     point, ``(n, 3)``, reduced to the corners of their convex hull (the extreme heights of a
     turned body are there). Holes add nothing: they lie inside their solid."""
-    from rbi.viz.solids import part_quads
 
     pieces = [np.zeros((1, 3))]
     for item in parts:
@@ -102,7 +104,10 @@ def drawn_points(parts: list[dict[str, Any]], size: float) -> np.ndarray:
             pieces.append(quads.reshape(-1, 3))
     points = np.unique(np.concatenate(pieces), axis=0)
     if len(points) > 64:
-        from scipy.spatial import ConvexHull, QhullError
+        from scipy.spatial import (
+            ConvexHull,
+            QhullError,
+        )  # loaded only by the commands that need it (start-up cost)
 
         try:
             points = points[ConvexHull(points).vertices]
@@ -128,14 +133,12 @@ def height_range(parts: list[dict[str, Any]], size: float, q: np.ndarray) -> tup
 
 
 def shifted(item: dict[str, Any], origin: np.ndarray) -> dict[str, Any]:
-    from rbi.spec.geometry import moved
 
     return moved(item, np.eye(3), -np.asarray(origin, dtype=float))
 
 
 def body_size(parts: list[dict[str, Any]]) -> float:
     """A length the scene is drawn at: the farthest reach of any part from the origin."""
-    from rbi.viz.solids import part_quads
 
     reach = 0.0
     for item in parts:

@@ -52,12 +52,12 @@ def plot_trajectory(
     momentum (fixed in space), where a flip of the intermediate axis shows as a swing from
     0° to 180°; the body-frame ω components; and the drift of the total energy."""
     require_matplotlib()
-    import matplotlib
+    import matplotlib  # optional extra `plot`, loaded only to draw
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.collections import LineCollection
-    from matplotlib.ticker import MaxNLocator
+    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    from matplotlib.collections import LineCollection  # optional extra `plot`, loaded only to draw
+    from matplotlib.ticker import MaxNLocator  # optional extra `plot`, loaded only to draw
 
     t = np.asarray(columns["t"], dtype=float)
     q = np.column_stack([columns[k] for k in ("qw", "qx", "qy", "qz")])
@@ -151,11 +151,11 @@ def plot_stability_map(
     ``path``. With one axis: tilt against it. ``threshold``: the sleeping-top spin (rad/s),
     drawn as a vertical line on a spin axis."""
     require_matplotlib()
-    import matplotlib
+    import matplotlib  # optional extra `plot`, loaded only to draw
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.colors import LogNorm
+    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    from matplotlib.colors import LogNorm  # optional extra `plot`, loaded only to draw
 
     xs = np.asarray(xs, dtype=float)
     values = np.array([np.nan if v is None else float(v) for v in values])

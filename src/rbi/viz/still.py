@@ -14,8 +14,11 @@ from typing import Any
 
 import numpy as np
 
-from rbi.viz.labels import label
-from rbi.viz.motion import body_size, shifted
+from rbi.core.inertia import principal_axes
+from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
+from rbi.viz.labels import label, plain, plain_legend
+from rbi.viz.motion import body_size, drawn_points, shifted
+from rbi.viz.solids import shade
 
 AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
 """Colours of the principal axes of the smallest, middle and largest moment."""
@@ -35,8 +38,6 @@ def view_data(
     ``size``, the scale the page's camera and markers are set by, is the body's reach from the
     pivot (or, without one, from the centre of mass); ``axes_length`` the length of the drawn
     x, y, z axes from the spec's origin."""
-    from rbi.core.inertia import principal_axes
-    from rbi.viz.motion import drawn_points
 
     com = np.asarray(com, dtype=float)
     parts = [dict(item) for item in geometry]
@@ -85,7 +86,6 @@ def part_legend(parts: list[dict[str, Any]]) -> list[dict[str, Any]]:
     """One entry per written part, in spec order: ``name`` (as a label: escaped, cut),
     ``shape``, ``colour`` (as drawn), ``copies`` (a pattern), ``hole``, ``stand_in`` (a custom
     part drawn as the box of equal inertia). The copies of a pattern are one entry."""
-    from rbi.viz.frames import PALETTE
 
     entries: dict[int, dict[str, Any]] = {}
     for index, item in enumerate(parts):
@@ -125,17 +125,13 @@ def part_count(parts: list[dict[str, Any]]) -> int:
 
 def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     """The body in 3D (matplotlib), saved at ``path`` as ``format`` (png or svg)."""
-    import matplotlib
+    import matplotlib  # optional extra `plot`, loaded only to draw
 
     matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from matplotlib.lines import Line2D
-    from matplotlib.patches import Patch
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-
-    from rbi.viz.frames import HOLE_RGBA, body_mesh, cloud_points
-    from rbi.viz.labels import plain, plain_legend
-    from rbi.viz.solids import shade
+    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    from matplotlib.lines import Line2D  # optional extra `plot`, loaded only to draw
+    from matplotlib.patches import Patch  # optional extra `plot`, loaded only to draw
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
 
     size = float(data["size"])
     quads, colours = body_mesh(data["parts"], size, holes=False, stripes=False)
@@ -228,7 +224,6 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
 
 def _frame(ax, quads: np.ndarray, com: np.ndarray, data: dict[str, Any]) -> None:
     """Equal scales on the three axes, framing every part, the CoM, the axes and the pivot."""
-    from rbi.viz.frames import cloud_points
 
     points = [quads.reshape(-1, 3)] if len(quads) else []
     points.append(com[None, :])
