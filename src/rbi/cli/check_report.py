@@ -1,5 +1,5 @@
 """What `rbi check` prints for one file: each expectation of the spec's `expect:` block against
-the computed value (no typer here: see :mod:`rbi.cli.quick`)."""
+the computed value (the options are declared in :mod:`rbi.cli.check_command`)."""
 
 from __future__ import annotations
 

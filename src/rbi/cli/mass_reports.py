@@ -1,7 +1,6 @@
 """What `rbi inertia` and `rbi principal` print for each file, given options already parsed.
 
-No typer here: :mod:`rbi.cli.mass_commands` declares the options, and :mod:`rbi.cli.quick`
-calls these functions directly for a plain command line (start-up time, docs/performance.md).
+:mod:`rbi.cli.mass_commands` declares the options.
 Every number is in the spec's units unless ``--units`` asks for others.
 """
 

@@ -1,5 +1,5 @@
 """Parsing of command-line values (reference points, rotations, output units) into what the
-commands compute with; no typer here, so the fast path of :mod:`rbi.cli.quick` can use them."""
+commands compute with."""
 
 from __future__ import annotations
 

@@ -1,4 +1,4 @@
-"""What `rbi parts` prints for one file (no typer here: see :mod:`rbi.cli.quick`)."""
+"""What `rbi parts` prints for one file (the options are declared in :mod:`rbi.cli.parts_command`)."""
 
 from __future__ import annotations
 
