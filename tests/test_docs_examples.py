@@ -93,3 +93,41 @@ def test_rewriting_keeps_the_wildcards_and_takes_the_rest_from_the_run():
     ]
     assert rewrite(["old"], ["new", "lines"]) == ["new", "lines"]
     assert rewrite([], ["first", "output"]) == ["first", "output"]
+
+
+# --- the number-by-number comparison (tools/docs_examples.numbers_match) -------------------
+
+
+def test_zero_on_the_page_matches_rounding_noise_of_its_vector():
+    match = docs_examples.line_matches
+    shown = '<inertial pos="0.0 0.0 0.0" mass="0.8118070195620548" />'
+    assert match(
+        shown, '<inertial pos="1.750521290499351e-20 3.143046496895522e-20 0.0" mass="0.8118070195620548" />'
+    )
+    row = " x                  2.641641          0   -0.06153846"
+    assert match(row, " x                  2.641641   1.2e-17   -0.06153846")
+    # an all-zero vector takes its scale from the output it is in
+    assert docs_examples.output_matches(
+        ['pos="0.0 0.0 0.0"', 'mass="0.81"'], ['pos="1e-20 3e-20 0.0"', 'mass="0.81"']
+    )
+
+
+def test_full_precision_numbers_match_to_the_last_ulps():
+    shown = "<pose>0.21973855418517876 0.0003930733668116799 0.009249805029743147 0.0</pose>"
+    printed = "<pose>0.21973855418517876 0.00039307336681167996 0.009249805029743149 0.0</pose>"
+    assert docs_examples.line_matches(shown, printed)
+    assert docs_examples.numbers_match("0.52", "0.5200000000000001", 1.0)
+
+
+def test_a_real_drift_still_fails():
+    match = docs_examples.line_matches
+    assert not match(
+        "<pose>0.21973855418517876 0.0003930</pose>", "<pose>0.21973855418517876 0.0003931</pose>"
+    )
+    assert not match("mass 0.0003930733668116799", "mass 0.0003930733668126799")  # 2.5e-12 relative
+    assert not match(" x   2.641641   0   -0.06153846", " x   2.641642   0   -0.06153846")  # last shown digit
+    assert not match(" x   2.641641   0   -0.06153846", " x   2.641641   1.2e-05   -0.06153846")  # not noise
+    assert not match("mass 0.52 kg", "mass 0.52 g")  # the text around numbers is compared as text
+    assert not match("wall ... s, 3 steps", "wall 12 s, 4 steps")
+    assert match("wall ... s, 3 steps", "wall 12 s, 3 steps")
+    assert not docs_examples.output_matches(["pos 0 0 0"], ["pos 1e-20 0 0"])  # no scale: exact

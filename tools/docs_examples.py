@@ -92,17 +92,108 @@ def blocks(text: str) -> list[Block]:
 # --- comparing ----------------------------------------------------------------------------
 
 
-def _line_pattern(line: str) -> re.Pattern:
+# Numbers are compared as numbers, not as text: rounding noise differs between numpy/BLAS
+# builds. A number the page shows matches a printed one when
+# * both are below ``ZERO`` times the scale of the vector they sit in (a 0 on the page is
+#   matched by noise, and noise on the page by a 0): the scale is the largest shown entry of
+#   its vector (numbers on the line with only spaces, commas and brackets between them), else
+#   of its line, else of the whole output shown for the command (an all-zero vector takes its
+#   scale from the table it is in);
+# * either is written at full precision (``FULL`` or more significant digits: repr output,
+#   whose last digits are the build's rounding noise) and they agree to a relative ``FULL_REL``;
+# * otherwise they are equal: a number rounded for a table must show the same digits.
+ZERO = 1e-12
+FULL = 15
+FULL_REL = 1e-12
+NUMBER = r"[-+\u2212]?(?:\d+(?:\.\d*)?|\.\d+)(?:[eE][-+]?\d+)?"
+_NUMBER = re.compile(rf"(?<![\w.]){NUMBER}(?!\.?\w)")
+_VECTOR_GAP = re.compile(r"[\s,;\[\]()]*\Z")
+
+
+def _value(text: str) -> float:
+    return float(text.replace("\u2212", "-"))
+
+
+def _digits(text: str) -> int:
+    """Significant digits written in a number's text."""
+    mantissa = re.split("[eE]", text)[0].lstrip("+-\u2212").replace(".", "").lstrip("0")
+    return len(mantissa)
+
+
+def _vector_scales(line: str, numbers: list[re.Match]) -> list[float]:
+    """The scale of each number of ``line``: the largest magnitude in its vector, else in its
+    line (0 when the line holds only zeros)."""
+    scales, group = [0.0] * len(numbers), []
+    for i, number in enumerate(numbers):
+        if group and not _VECTOR_GAP.match(line[numbers[group[-1]].end() : number.start()]):
+            group = []
+        group.append(i)
+        largest = max(abs(_value(numbers[j].group())) for j in group)
+        for j in group:
+            scales[j] = largest
+    whole = max((abs(_value(n.group())) for n in numbers), default=0.0)
+    return [s or whole for s in scales]
+
+
+def numbers_match(shown: str, printed: str, scale: float) -> bool:
+    """Whether the printed number ``printed`` is the number the page shows as ``shown``, in a
+    vector whose largest shown entry is ``scale`` (the rule above this function)."""
+    if shown == printed:
+        return True
+    s, p = _value(shown), _value(printed)
+    if abs(s) <= ZERO * scale and abs(p) <= ZERO * scale:
+        return True
+    if max(_digits(shown), _digits(printed)) >= FULL:
+        return abs(p - s) <= FULL_REL * max(abs(s), abs(p))
+    return s == p
+
+
+def _line_pattern(line: str) -> tuple[re.Pattern, list[str]]:
+    """A pattern for printed lines like ``line``: its text as written (spaces next to a number
+    may change width, a right-aligned column), any number where it shows one (captured), and
+    any text where it shows ``...``; with the numbers it shows, in order."""
+    pattern, shown = [], []
     pieces = line.split(WILDCARD)
-    pieces = [p.rstrip(" ") if i < len(pieces) - 1 else p for i, p in enumerate(pieces)]
-    pieces = [p.lstrip(" ") if i > 0 else p for i, p in enumerate(pieces)]
-    return re.compile(r"\s*.*?\s*".join(map(re.escape, pieces)) + r"\Z", re.S)
+    for index, piece in enumerate(pieces):
+        if index:
+            pattern.append(r"\s*.*?\s*")
+            piece = piece.lstrip(" ")
+        if index < len(pieces) - 1:
+            piece = piece.rstrip(" ")
+        cursor = 0
+        for number in _NUMBER.finditer(piece):
+            pattern.append(re.escape(piece[cursor : number.start()].rstrip(" ")) + r"\s*")
+            pattern.append(rf"(?<![\w.])({NUMBER})(?!\.?\w)")
+            shown.append(number.group())
+            cursor = number.end()
+            rest = piece[cursor:]
+            if rest[:1] == " ":
+                pattern.append(r"\s+" if rest.strip() else r"\s*")
+                cursor += len(rest) - len(rest.lstrip(" "))
+        pattern.append(re.escape(piece[cursor:]))
+    return re.compile("".join(pattern) + r"\Z", re.S), shown
 
 
-def line_matches(shown: str, printed: str) -> bool:
-    if WILDCARD not in shown:
-        return shown == printed
-    return _line_pattern(shown).match(printed) is not None
+def line_matches(shown: str, printed: str, scale: float = 0.0) -> bool:
+    """Whether the printed line is the shown one: the same text, ``...`` standing for any text,
+    and numbers compared by :func:`numbers_match` (``scale``: the scale of an all-zero line)."""
+    if shown == printed:
+        return True
+    if WILDCARD not in shown and not _NUMBER.search(shown):
+        return False
+    pattern, numbers = _line_pattern(shown)
+    found = pattern.match(printed)
+    if found is None:
+        return False
+    scales = [s or scale for s in _vector_scales(shown, list(_NUMBER.finditer(shown.replace(WILDCARD, " "))))]
+    if len(scales) != len(numbers):  # a number glued to a wildcard: only exact text
+        scales = [scale] * len(numbers)
+    return all(numbers_match(s, p, k) for s, p, k in zip(numbers, found.groups(), scales, strict=True))
+
+
+def _output_scale(lines: list[str]) -> float:
+    """The largest magnitude of any number shown: the scale of an all-zero table."""
+    return max((abs(_value(n.group())) for line in lines for n in _NUMBER.finditer(line)), default=0.0)
 
 
 def _trimmed(lines: list[str]) -> list[str]:
@@ -115,13 +206,14 @@ def _trimmed(lines: list[str]) -> list[str]:
 def output_matches(shown: list[str], printed: list[str]) -> bool:
     """Whether ``printed`` is what ``shown`` describes (wildcards as in the module's docstring)."""
     shown, printed = _trimmed(shown), _trimmed(printed)
+    scale = _output_scale(shown)
 
     def match(i: int, j: int) -> bool:
         if i == len(shown):
             return j == len(printed)
         if shown[i].strip() == WILDCARD:
             return any(match(i + 1, k) for k in range(j, len(printed) + 1))
-        return j < len(printed) and line_matches(shown[i], printed[j]) and match(i + 1, j + 1)
+        return j < len(printed) and line_matches(shown[i], printed[j], scale) and match(i + 1, j + 1)
 
     return match(0, 0)
 

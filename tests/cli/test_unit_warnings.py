@@ -13,7 +13,7 @@ from tests.conftest import run_rbi_inprocess as rbi
 
 BALL_IN_MM = "parts:\n  - {name: ball, shape: sphere, radius: 10, mass: 0.0329, center: [0, 0, 0]}\n"
 HINT = (
-    "parts[0] (ball): implied density 7.85e-06 kg/m³ is outside 100–25,000 kg/m³ (balsa to osmium): "
+    "parts[0] (ball): implied density 7.85e-06 kg/m³ is outside 9–23,000 kg/m³ (foam to osmium): "
     "lengths look like millimetres: add units: {length: mm}"
 )
 

@@ -80,7 +80,7 @@ def test_a_non_root_user_streams_to_standard_output(out):
     script = Path(sys.executable).with_name("rbi")
     folder = tempfile.mkdtemp(prefix="rbi-nobody-")
     try:
-        os.chmod(folder, 0o755)  # nobody may enter, not write
+        os.chmod(folder, 0o555)  # an ordinary user may enter, not write
         proc = subprocess.run(
             [
                 *as_ordinary_user(),

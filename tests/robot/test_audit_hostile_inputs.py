@@ -9,7 +9,7 @@ import os
 import xml.etree.ElementTree as ET
 
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, example, given, settings
 from hypothesis import strategies as st
 
 from tests.conftest import one_line_exit_2, run_rbi_inprocess
@@ -115,6 +115,7 @@ names = (
 
 
 @given(st.lists(names, min_size=1, max_size=3, unique=True))
+@example(["0\u2028"])  # found by hypothesis: the line separator was printed raw
 @settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 def test_any_link_names_give_a_fixed_copy_that_is_xml_and_a_safe_terminal(tmp_path, link_names):
     from xml.sax.saxutils import quoteattr

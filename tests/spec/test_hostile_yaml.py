@@ -381,3 +381,49 @@ def test_depth_is_refused_exactly_past_the_limit(depth, opener):
     else:
         with pytest.raises(Exception, match=f"nested more than {MAX_DEPTH}"):
             read_document(text)
+
+
+# -- names: only what YAML 1.1 really reads as a number is handled specially ------------------
+
+
+@pytest.mark.parametrize(
+    "written", ["08", "09", "+08", "0_8", "1e3", "1e-3", "0o7", "0X1F", "0:30", "1:70", "1.2.3"]
+)
+def test_a_name_yaml_1_1_reads_as_text_is_that_text(written):
+    """Found by hypothesis: a part named ``08``, written unquoted by PyYAML (YAML 1.1 reads it as
+    text), was refused as 'YAML 1.1 reads it as octal'."""
+    import yaml
+
+    assert yaml.safe_load(f"v: {written}\n")["v"] == written  # YAML 1.1 reads it as text
+    assert read_document(f"name: {written}\nparts: [{{name: {written}}}]\n") == {
+        "name": written,
+        "parts": [{"name": written}],
+    }
+
+
+@pytest.mark.parametrize(
+    "written, reason",
+    [
+        ("010", "octal"),
+        ("0x1F", "hexadecimal"),
+        ("1_000", "digit separator"),
+        ("0b101", "binary"),
+        ("1:30", "base 60"),
+        ("190:20:30", "base 60"),
+    ],
+)
+def test_a_name_yaml_1_1_reads_as_a_number_is_refused_saying_quote_it(write_spec, written, reason):
+    text = f"parts:\n  - name: {written}\n    shape: point\n    mass: 1\n    position: [0, 0, 0]\n"
+    one_line_exit_2(run_rbi_inprocess("inertia", write_spec(text)), "parts[0]", "name", reason, "quote it")
+
+
+@pytest.mark.parametrize("written, value", [("12", 12), (".5", 0.5), ("1.5", 1.5)])
+def test_a_name_yaml_1_1_reads_as_a_decimal_is_a_number(written, value):
+    assert read_document(f"name: {written}\n")["name"] == value
+
+
+def test_a_leading_zero_yaml_1_1_reads_as_text_is_not_called_octal(write_spec):
+    text = "parts:\n  - {shape: point, mass: 08, position: [0, 0, 0]}\n"
+    proc = run_rbi_inprocess("inertia", write_spec(text))
+    one_line_exit_2(proc, "parts[0]", "mass", "'08'", "YAML 1.2 as 8", "write 8")
+    assert "octal" not in proc.stderr

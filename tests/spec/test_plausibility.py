@@ -64,10 +64,10 @@ CASES = {
         {"length": "m", "mass": "g"},
         "masses look like grams: add units: {mass: g}",
     ),
-    "mm, density: steel": (
-        ball(10, density="steel"),
+    "mm, density: steel": (  # only size tells: a part over 0.2 m read as metres is over 200 m
+        ball(300, density="steel"),
         {"length": "mm", "mass": "kg"},
-        "lengths look like millimetres (or ",
+        "lengths look like millimetres: add units: {length: mm}",
     ),
 }
 

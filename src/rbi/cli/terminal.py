@@ -16,17 +16,22 @@ _BIDI_CONTROLS = frozenset("\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u20
 """Characters that reorder the text around them (right-to-left overrides, isolates, marks):
 a name holding one could make a table or message read differently from what it is."""
 
+_LINE_BREAKS = frozenset("\u2028\u2029")
+"""The Unicode line and paragraph separators: terminals and pagers may break the line there,
+so a name holding one could split a table row or a one-line message in two."""
+
 
 def _is_unsafe(char: str) -> bool:
     code = ord(char)
-    return code < 32 or 127 <= code < 160 or char in _BIDI_CONTROLS
+    return code < 32 or 127 <= code < 160 or char in _BIDI_CONTROLS or char in _LINE_BREAKS
 
 
 def terminal_safe(text: str, keep: str = "") -> str:
     """``text`` with every control character (C0 such as ESC, BEL and CR; DEL; C1 such as CSI
-    and OSC) and every bidirectional override written as a visible escape (``\\x1b``,
-    ``\\u202e``), so a name in a spec cannot set the terminal's title, clear the screen, write
-    to the clipboard or reorder what is shown. Characters in ``keep`` (e.g. a newline) pass."""
+    and OSC), every bidirectional override and the line and paragraph separators U+2028/9
+    written as a visible escape (``\\x1b``, ``\\u202e``), so a name in a spec cannot set the
+    terminal's title, clear the screen, write to the clipboard, reorder what is shown or break
+    a line. Characters in ``keep`` (e.g. a newline) pass."""
     if not any(_is_unsafe(c) for c in text):
         return text
     return "".join(_escaped(c) if _is_unsafe(c) and c not in keep else c for c in text)

@@ -1,15 +1,24 @@
-"""Unit slips: a spec without ``units:`` is read in metres and kilograms; when its solids then
-imply a density no material has, or sizes no part has, the spec was most likely written in
-other units. :func:`unit_warnings` says so in one line, naming the part and the ``units:``
-block that makes the body plausible. A spec that states its units is never warned about.
+"""Unit slips: a spec without ``units:`` is read in metres and kilograms; when a part then
+has a density no body has, the spec was most likely written in other units. :func:`unit_warnings`
+says so in one line, naming the part and the ``units:`` block that makes the body plausible. A
+spec that states its units is never warned about.
 
-How the units are guessed: every length unit (m, cm, mm, in, ft) with every mass unit (kg, g,
-lb) is tried. A unit pair is plausible when every checked solid then has a density between
-:data:`PLAUSIBLE_DENSITY_KG_M3` (a part given its mass: mass ÷ volume; a part given a density
-number: that number) and a size (cube root of its volume) up to :data:`LARGEST_PART_M` (a part
-given a density). Among the plausible pairs the one whose densities lie nearest to a built-in
-material wins (a steel ball drawn in mm with its mass in kg comes out at exactly steel's 7850
-kg/m³), then the more common pair (:data:`COMMON_UNITS`).
+When it warns: a part given its mass (mass ÷ volume) or a density number has a density outside
+:data:`POSSIBLE_DENSITY_KG_M3`, or a part given a density is larger than :data:`LARGEST_PART_M`.
+The range is wide on purpose: a foam block (25 kg/m³), a satellite bus or a ship hull drawn as one
+solid of its outside size (50–500 kg/m³) and osmium (22,590) are all plausible SI bodies.
+
+Which units it names: every length unit with every mass unit is tried; among the pairs under
+which every part is possible, the one whose densities lie nearest the densities solids usually
+have (:data:`USUAL_DENSITY_KG_M3`, wood to lead; distance measured in decades outside that band)
+wins, then the more common pair (:data:`COMMON_UNITS`).
+
+What it cannot tell apart (docs/spec.md says it too): one unit pair differs from another by a
+factor on every density, so a body in inches and pounds reads as an ordinary solid in mm and g
+(36× denser) or in cm and g (28× lighter), and mostly gets one of those hints; a body lighter
+than 100 kg/m³ in cm and g gets the inches-and-pounds hint; parts denser than 9 g/cm³ written
+in cm and g read as 9–23 kg/m³ in SI, light foams, and are not warned about; and mm with g gives
+the same densities as cm with kg (mm and g is named).
 """
 
 from __future__ import annotations
@@ -20,33 +29,41 @@ from dataclasses import dataclass
 from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
 
-PLAUSIBLE_DENSITY_KG_M3 = (100.0, 25_000.0)
-"""Densities of the solids bodies are made of: from balsa (about 150 kg/m³) to osmium (22,590).
-Foams and aerogels are lighter and get a warning they can ignore; a spec in cm and g read as m
-and kg is 1000× too light (a few kg/m³) and must not pass."""
+POSSIBLE_DENSITY_KG_M3 = (9.0, 23_000.0)
+"""Densities a part of a real body can have, kg/m³: from polystyrene foam and a vehicle or a
+satellite drawn as one solid of its outside size (15–100) to osmium (22,590). A spec in mm and
+g read as m and kg is a million times too light and cannot pass; one in cm and g is a thousand
+times too light and passes only for parts denser than 9 g/cm³ (lead, gold, tungsten)."""
 
-LARGEST_PART_M = 5.0
-"""The largest plausible size of one part given a density, metres (cube root of its volume:
-a 125 m³ solid); a spec drawn in millimetres and read as metres is far beyond it."""
+USUAL_DENSITY_KG_M3 = (100.0, 12_000.0)
+"""Densities most bodies have, kg/m³ (balsa to lead): when several unit pairs make a body
+possible, the one that puts its parts nearest this band is named."""
 
-COMMON_UNITS = [
-    ("m", "kg"),
-    ("mm", "kg"),
-    ("mm", "g"),
-    ("cm", "g"),
-    ("in", "lb"),
-    ("cm", "kg"),
-    ("m", "g"),
-    ("in", "kg"),
-    ("ft", "lb"),
-    ("mm", "lb"),
-    ("in", "g"),
-    ("cm", "lb"),
-    ("ft", "kg"),
-    ("m", "lb"),
-    ("ft", "g"),
-]
-"""Every length and mass unit pair, the ones CAD programs and people use most first."""
+LARGEST_PART_M = 200.0
+"""The largest plausible size of one part given a density, metres (cube root of its volume: a
+ship's hull); a spec drawn in millimetres and read as metres is far beyond it for parts over
+0.2 m."""
+
+COMMON_UNITS = {
+    ("m", "kg"): 0.0,
+    ("mm", "kg"): 0.0,
+    ("mm", "g"): 0.0,
+    ("cm", "g"): 0.0,
+    ("in", "lb"): 0.0,
+    ("cm", "kg"): 0.5,
+    ("m", "g"): 0.5,
+    ("ft", "lb"): 0.5,
+    ("in", "kg"): 1.0,
+    ("mm", "lb"): 1.0,
+    ("in", "g"): 1.0,
+    ("cm", "lb"): 1.0,
+    ("ft", "kg"): 1.0,
+    ("m", "lb"): 1.0,
+    ("ft", "g"): 1.0,
+}
+"""Every length and mass unit pair, the ones CAD programs and people use most first, each with
+how much less likely it is than the five common ones (in decades of density distance: a pair
+mixing metric and imperial units must fit the usual band a decade better to be named)."""
 
 MAX_CHECKED_PARTS = 200
 """Solids looked at (the first ones in the file): a unit slip shows in every part, and a spec of
@@ -79,19 +96,27 @@ class _Solid:
         return self.volume ** (1 / 3) * LENGTH_UNITS_IN_M[length]
 
     def plausible(self, length: str, mass: str) -> bool:
-        low, high = PLAUSIBLE_DENSITY_KG_M3
+        low, high = POSSIBLE_DENSITY_KG_M3
         density = self.density_si(length, mass)
         if density is not None and not low <= density <= high:
             return False
         return self.mass is not None or self.size_m(length) <= LARGEST_PART_M
 
+    def unusualness(self, length: str, mass: str) -> float:
+        """How far the part's density lies outside :data:`USUAL_DENSITY_KG_M3`, in decades."""
+        density = self.density_si(length, mass)
+        if not density:
+            return 0.0
+        low, high = USUAL_DENSITY_KG_M3
+        return max(0.0, math.log10(low / density), math.log10(density / high))
+
     def problem(self) -> str:
         """What is wrong with the part read in metres and kilograms."""
         density = self.density_si("m", "kg")
-        low, high = PLAUSIBLE_DENSITY_KG_M3
+        low, high = POSSIBLE_DENSITY_KG_M3
         if density is not None and not low <= density <= high:
             what = "implied density" if self.mass is not None else "density"
-            return f"{what} {density:.3g} kg/m³ is outside {low:,.0f}–{high:,.0f} kg/m³ (balsa to osmium)"
+            return f"{what} {density:.3g} kg/m³ is outside {low:,.0f}–{high:,.0f} kg/m³ (foam to osmium)"
         material = f" of {self.material}" if self.material else ""
         kilograms = self.volume * (
             MATERIAL_DENSITIES_SI[self.material] if self.material else self.density or 0.0
@@ -121,23 +146,32 @@ def _solids(spec) -> list[_Solid]:
 
 
 def _distance_to_materials(solids: list[_Solid], length: str, mass: str) -> float:
-    """How far the parts' densities lie from the nearest built-in material (sum of |log ratio|)."""
+    """How far the parts' densities lie from the nearest built-in material (mean |log10 ratio|)."""
     total = 0.0
     for solid in solids:
         density = solid.density_si(length, mass)
-        if density is not None and density > 0:
-            total += min(abs(math.log(density / known)) for known in MATERIAL_DENSITIES_SI.values())
-    return total
+        if density:
+            total += min(abs(math.log10(density / known)) for known in MATERIAL_DENSITIES_SI.values())
+    return total / max(len(solids), 1)
 
 
 def likely_units(solids: list[_Solid]) -> list[tuple[str, str]]:
-    """The unit pairs that make every solid plausible and lie equally near real materials,
-    the most common first (several when only sizes tell, e.g. parts given a material: mm, cm
-    and in may all fit); empty when no pair makes the body plausible."""
+    """The unit pairs that make every solid possible and are equally likely, the most likely
+    first: their parts' mean distance from the usual densities (decades) plus the pair's rarity
+    (:data:`COMMON_UNITS`), to 0.01; then, among pairs as likely, those whose densities lie
+    nearest a built-in material (to 0.01 decade: a steel block in inches and pounds comes out
+    at steel's 7850 kg/m³). Several when only sizes tell (parts given a material: mm, cm and
+    in may all fit); empty when no pair makes the body possible."""
     plausible = [pair for pair in COMMON_UNITS if all(s.plausible(*pair) for s in solids)]
-    distance = {pair: round(_distance_to_materials(solids, *pair), 6) for pair in plausible}
-    nearest = min(distance.values(), default=None)
-    return [pair for pair in plausible if distance[pair] == nearest]
+    cost = {
+        pair: (
+            round(sum(s.unusualness(*pair) for s in solids) / max(len(solids), 1) + COMMON_UNITS[pair], 2),
+            round(_distance_to_materials(solids, *pair), 2),
+        )
+        for pair in plausible
+    }
+    nearest = min(cost.values(), default=None)
+    return [pair for pair in plausible if cost[pair] == nearest]
 
 
 def hint(length: str, mass: str, other_lengths: list[str] = ()) -> str:

@@ -71,25 +71,46 @@ _WORDS: dict[str, Any] = {
     ".NAN": float("nan"),
 }
 _NUMBER_START = frozenset("-+.0123456789")
-# Plain scalars YAML 1.1 reads as numbers and YAML 1.2 does not (or reads differently).
+# YAML 1.1's own patterns (yaml.org/type/int.html and float.html; the float's digits after
+# the point written [0-9_]* as every YAML 1.1 library reads them): a plain scalar matching one
+# is a number in YAML 1.1, anything else is text there.
+_YAML11_INT = re.compile(
+    r"[-+]?0b[0-1_]+|[-+]?0[0-7_]+|[-+]?(?:0|[1-9][0-9_]*)|[-+]?0x[0-9a-fA-F_]+"
+    r"|[-+]?[1-9][0-9_]*(?::[0-5]?[0-9])+"
+)
+_YAML11_FLOAT = re.compile(
+    r"[-+]?(?:[0-9][0-9_]*)?\.[0-9_]*(?:[eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+\.[0-9_]*"
+)
+_SEPARATOR = (
+    "digit separator '_' (YAML 1.1 only); write the number without underscores, or quote it if it is text"
+)
+_LEADING_ZERO = "leading zero (YAML 1.1 reads it as octal); write the decimal number without it, or quote it if it is text"
+# Plain scalars that are not YAML 1.2 decimals and that YAML 1.1 (or YAML 1.2's core schema)
+# reads as a number: refused, rbi would read them differently from some other reader.
 _YAML11_NUMBERS = [
     (
-        re.compile(r"[-+]?0[0-9_]+"),
-        "leading zero (YAML 1.1 reads it as octal); write the decimal number without it, "
-        "or quote it if it is text",
+        re.compile(r"[-+]?0x[0-9a-fA-F_]+"),
+        "hexadecimal; write the number in decimal, or quote it if it is text",
     ),
-    (re.compile(r"[-+]?0[xX][0-9a-fA-F_]+"), "hexadecimal; write the number in decimal"),
-    (re.compile(r"[-+]?0[oO][0-7_]+"), "octal; write the number in decimal"),
-    (re.compile(r"[-+]?0[bB][01_]+"), "binary; write the number in decimal"),
+    (re.compile(r"[-+]?0o[0-7]+"), "octal; write the number in decimal, or quote it if it is text"),
+    (re.compile(r"[-+]?0b[01_]+"), "binary; write the number in decimal, or quote it if it is text"),
     (
-        re.compile(r"[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?"),
+        re.compile(r"[-+]?[1-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?"),
         "base 60 (YAML 1.1 reads 1:30 as 90); write the number in decimal, or quote it if it is text",
     ),
-    (
-        re.compile(r"[-+]?[0-9_]*_[0-9_]*(?:\.[0-9_]*)?(?:[eE][-+]?[0-9]+)?|[-+]?\.[0-9_]*_[0-9_]*"),
-        "digit separator '_' (YAML 1.1 only); write the number without underscores",
-    ),
+    (re.compile(r"[-+]?0[0-7_]+"), _LEADING_ZERO),
+    (_YAML11_INT, _SEPARATOR),  # what is left: 1_000, 1__0
+    (_YAML11_FLOAT, _SEPARATOR),
 ]
+
+
+def yaml11_reads_as_number(value: str) -> bool:
+    """Whether YAML 1.1 (PyYAML and most YAML libraries) reads the plain scalar ``value`` as
+    an int or float (``010``, ``0x1F``, ``1_000``, ``.5``, ``1:30``); ``08``, ``1e3``, ``0o7``
+    are text there."""
+    return bool(_YAML11_INT.fullmatch(value) or _YAML11_FLOAT.fullmatch(value))
+
+
 _SCALAR_TAGS = {_YAML + "str", _YAML + "int", _YAML + "float", _YAML + "bool", _YAML + "null", "!"}
 _COLLECTION_TAGS = {_YAML + "seq", _YAML + "map", "!"}
 _MERGE = object()
@@ -178,7 +199,9 @@ def read_document(text: str) -> Any:
                     if value in words:
                         value = words[value]
                     elif value[0] in number_start:
-                        if decimal(value) and (not float_chars.isdisjoint(value)):
+                        if top is not None and top.is_map and top.key == "name":
+                            value = _number(value, event.start_mark, fail, text_field=True)
+                        elif decimal(value) and (not float_chars.isdisjoint(value)):
                             value = float(value)  # the common cases, checked inline
                         elif value[0] in "123456789" and len(value) < 16 and decimal(value):
                             value = int(value)
@@ -319,9 +342,13 @@ def plain_is_text(value: str) -> bool:
     return bool(value) and value not in _WORDS and value[0] not in _NUMBER_START and value != "<<"
 
 
-def _number(value: str, mark, fail) -> Any:
-    """A plain scalar starting like a number: int, float, or text when YAML 1.1 would not read
-    it as a number either; refused when YAML 1.1 reads it as a number differently from 1.2."""
+def _number(value: str, mark, fail, text_field: bool = False) -> Any:
+    """A plain scalar starting like a number: int, float, or text when neither YAML 1.2 nor 1.1
+    reads it as a number; refused when YAML 1.1 reads it as a number differently from 1.2.
+    In a ``text_field`` (a name), what YAML 1.1 reads as text stays text (``08``, ``1e3``):
+    a YAML 1.1 writer such as PyYAML leaves such a name unquoted."""
+    if text_field and not yaml11_reads_as_number(value):
+        return value
     if _DECIMAL.fullmatch(value):
         if not _FLOAT_CHARS.isdisjoint(value):
             return float(value)
@@ -329,7 +356,13 @@ def _number(value: str, mark, fail) -> Any:
         if len(digits) > MAX_INTEGER_DIGITS:
             fail(f"integer of {len(digits)} digits is too long (at most {MAX_INTEGER_DIGITS})", mark)
         if len(digits) > 1 and digits[0] == "0":
-            fail(f"{_short(value)} is not a decimal number: {_YAML11_NUMBERS[0][1]}", mark)
+            if _YAML11_INT.fullmatch(value):
+                fail(f"{_short(value)} is not a decimal number: {_LEADING_ZERO}", mark)
+            fail(
+                f"{_short(value)} is not a decimal number: leading zero (YAML 1.1 reads it as text, "
+                f"YAML 1.2 as {int(value)}); write {int(value)}, or quote it if it is text",
+                mark,
+            )
         return int(value)
     for pattern, meaning in _YAML11_NUMBERS:
         if pattern.fullmatch(value):

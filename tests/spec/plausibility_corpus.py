@@ -1,0 +1,163 @@
+"""Real objects in SI, for the unit-slip corpus test (tests/spec/test_plausibility_corpus.py).
+
+Each object: (name, shape, sizes in metres, mass in kg, where the numbers come from). Shapes:
+``box`` (x, y, z), ``cylinder`` (radius, length), ``sphere`` (radius); a list of such parts for
+an object of several. Masses are published figures or a handbook density times the volume;
+bodies that are mostly air (a satellite bus, a car, a ship) are one solid of their outside
+size and their real mass, as an author sketching them would write them.
+"""
+
+from __future__ import annotations
+
+import math
+
+STEEL, ALUMINIUM, COPPER, LEAD, GOLD, TUNGSTEN, OSMIUM = 7850, 2700, 8960, 11340, 19300, 19300, 22590
+
+
+def box_mass(x, y, z, density):
+    return x * y * z * density
+
+
+def cylinder_mass(radius, length, density):
+    return math.pi * radius**2 * length * density
+
+
+def sphere_mass(radius, density):
+    return 4 / 3 * math.pi * radius**3 * density
+
+
+OBJECTS = [
+    ("1U CubeSat", "box", (0.1, 0.1, 0.1135), 1.33, "CubeSat spec: up to 1.33 kg"),
+    ("satellite bus", "box", (2.0, 2.0, 2.0), 500.0, "a 500 kg smallsat bus, 2 m cube"),
+    ("fuselage section", "cylinder", (3.0, 12.0), 40000.0, "wide-body barrel, 6 m across"),
+    ("rocket first stage", "cylinder", (1.83, 42.0), 25600.0, "Falcon 9 stage 1, dry"),
+    ("space station module", "cylinder", (2.1, 8.5), 12000.0, "pressurised module"),
+    ("foam block", "box", (1.0, 0.5, 0.2), 2.5, "25 kg/m³ polyurethane foam"),
+    ("EPS packing block", "box", (0.3, 0.2, 0.1), box_mass(0.3, 0.2, 0.1, 15), "EPS 15 kg/m³"),
+    ("aerogel tile", "box", (0.1, 0.1, 0.02), box_mass(0.1, 0.1, 0.02, 100), "silica aerogel 100 kg/m³"),
+    ("balsa plank", "box", (0.1, 0.01, 1.0), 0.15, "balsa 150 kg/m³"),
+    ("cork stopper", "cylinder", (0.012, 0.044), cylinder_mass(0.012, 0.044, 240), "cork 240 kg/m³"),
+    ("lead brick", "box", (0.2, 0.1, 0.05), box_mass(0.2, 0.1, 0.05, LEAD), "lead 11340 kg/m³"),
+    ("lead shot", "sphere", (0.001,), sphere_mass(0.001, LEAD), "2 mm pellet"),
+    ("osmium cube", "box", (0.01, 0.01, 0.01), box_mass(0.01, 0.01, 0.01, OSMIUM), "osmium 22590 kg/m³"),
+    ("gold bar", "box", (0.25, 0.07, 0.04), 12.4, "400 oz bar, as a box"),
+    ("tungsten counterweight", "cylinder", (0.01, 0.02), cylinder_mass(0.01, 0.02, TUNGSTEN), "W"),
+    ("1 euro coin", "cylinder", (0.011625, 0.00233), 0.0075, "ECB: 23.25 mm, 2.33 mm, 7.5 g"),
+    ("US quarter", "cylinder", (0.012130, 0.00175), 0.00567, "US Mint: 24.26 mm, 1.75 mm, 5.67 g"),
+    ("gold coin", "cylinder", (0.0163, 0.00284), 0.0339, "Krugerrand: 32.6 mm, 33.9 g"),
+    ("hair-thin copper wire", "cylinder", (25e-6, 1.0), cylinder_mass(25e-6, 1.0, COPPER), "50 µm"),
+    ("paperclip wire", "cylinder", (0.0005, 0.1), cylinder_mass(0.0005, 0.1, STEEL), "1 mm steel"),
+    ("sewing needle", "cylinder", (0.0004, 0.04), cylinder_mass(0.0004, 0.04, STEEL), "steel"),
+    ("guitar string", "cylinder", (0.000127, 0.65), cylinder_mass(0.000127, 0.65, STEEL), "0.010 in"),
+    ("ship hull", "box", (300.0, 40.0, 25.0), 1.0e8, "100,000 t displacement"),
+    ("oil tanker", "box", (330.0, 60.0, 30.0), 3.0e8, "VLCC, loaded"),
+    ("shipping container", "box", (12.19, 2.44, 2.59), 3750.0, "40 ft, empty"),
+    ("car", "box", (4.5, 1.8, 1.5), 1500.0, "a saloon"),
+    ("truck", "box", (12.0, 2.5, 3.5), 15000.0, "a rigid lorry"),
+    ("wind turbine blade", "box", (60.0, 3.0, 1.0), 15000.0, "a 60 m blade"),
+    ("steel ball bearing", "sphere", (0.005,), sphere_mass(0.005, STEEL), "10 mm ball"),
+    ("bowling ball", "sphere", (0.108,), 7.26, "16 lb ball"),
+    ("basketball", "sphere", (0.12,), 0.62, "size 7"),
+    ("tennis ball", "sphere", (0.0335,), 0.058, "ITF"),
+    ("ping-pong ball", "sphere", (0.02,), 0.0027, "ITTF"),
+    ("golf ball", "sphere", (0.02135,), 0.0459, "R&A"),
+    ("glass marble", "sphere", (0.008,), sphere_mass(0.008, 2500), "glass"),
+    ("clay brick", "box", (0.215, 0.1025, 0.065), 2.3, "UK brick"),
+    ("concrete block", "box", (0.44, 0.215, 0.1), 10.0, "hollow block"),
+    ("oak beam", "box", (0.1, 0.2, 4.0), box_mass(0.1, 0.2, 4.0, 700), "oak 700 kg/m³"),
+    ("granite slab", "box", (2.0, 1.0, 0.03), box_mass(2.0, 1.0, 0.03, 2700), "granite"),
+    ("steel I-beam", "box", (0.3, 0.15, 6.0), 252.0, "42 kg/m section, as its bounding box"),
+    ("aluminium extrusion", "box", (0.04, 0.04, 1.0), 1.5, "hollow profile, as its bounding box"),
+    ("flywheel", "cylinder", (0.25, 0.05), cylinder_mass(0.25, 0.05, STEEL), "steel disc"),
+    ("water tank", "box", (10.0, 5.0, 2.0), 1.0e5, "full of water"),
+    ("ice cube", "box", (0.03, 0.03, 0.03), box_mass(0.03, 0.03, 0.03, 917), "ice"),
+    ("concrete pillar", "cylinder", (0.3, 3.0), cylinder_mass(0.3, 3.0, 2400), "concrete"),
+    ("water bottle", "cylinder", (0.035, 0.22), 0.52, "0.5 l, full"),
+    ("smartphone", "box", (0.147, 0.0715, 0.0078), 0.171, "a phone"),
+    ("laptop", "box", (0.30, 0.21, 0.016), 1.3, "a 13 in laptop"),
+    ("AA battery", "cylinder", (0.00725, 0.0505), 0.023, "alkaline AA"),
+    ("brass nut", "cylinder", (0.005, 0.005), cylinder_mass(0.005, 0.005, 8500), "brass"),
+    ("titanium bolt", "cylinder", (0.004, 0.03), cylinder_mass(0.004, 0.03, 4430), "Ti-6Al-4V"),
+    ("pencil", "cylinder", (0.0035, 0.175), 0.006, "a pencil"),
+    ("violin", "box", (0.6, 0.21, 0.1), 0.45, "as its bounding box"),
+    ("guitar", "box", (1.0, 0.35, 0.1), 3.5, "as its bounding box"),
+    ("bicycle wheel", "cylinder", (0.35, 0.04), 1.0, "as a disc"),
+    ("bicycle frame", "box", (1.0, 0.1, 0.6), 2.0, "as its bounding box"),
+    ("human body", "cylinder", (0.15, 1.75), 70.0, "as a cylinder"),
+    ("robot arm link", "cylinder", (0.04, 0.4), 2.0, "aluminium tube as a cylinder"),
+    ("aluminium rod", "cylinder", (0.02, 0.5), cylinder_mass(0.02, 0.5, ALUMINIUM), "6061"),
+    ("copper busbar", "box", (0.01, 0.05, 0.5), box_mass(0.01, 0.05, 0.5, COPPER), "copper"),
+    ("propeller blade", "box", (0.25, 0.02, 0.005), 0.012, "drone propeller"),
+    (
+        "quadcopter",
+        [
+            ("hub", "box", (0.15, 0.15, 0.05), 0.8),
+            ("arm", "cylinder", (0.01, 0.2), 0.025),
+            ("motor", "cylinder", (0.014, 0.03), 0.05),
+        ],
+        None,
+        None,
+        "a 450 mm quadcopter: hub, an arm, a motor",
+    ),
+    (
+        "satellite with panels",
+        [
+            ("bus", "box", (1.0, 1.0, 1.2), 180.0),
+            ("solar panel", "box", (2.0, 1.0, 0.03), 12.0),
+            ("antenna", "cylinder", (0.3, 0.05), 4.0),
+        ],
+        None,
+        None,
+        "a small satellite",
+    ),
+]
+
+SLIPS = {
+    # the units an author drew in, and the hint that names them
+    "mm/g": ({"length": "mm", "mass": "g"}, "add units: {length: mm, mass: g}"),
+    "mm/kg": ({"length": "mm", "mass": "kg"}, "add units: {length: mm}"),
+    "cm/g": ({"length": "cm", "mass": "g"}, "add units: {length: cm, mass: g}"),
+    "in/lb": ({"length": "in", "mass": "lb"}, "add units: {length: in, mass: lb}"),
+}
+LENGTH_M = {"m": 1.0, "mm": 0.001, "cm": 0.01, "in": 0.0254}
+MASS_KG = {"kg": 1.0, "g": 0.001, "lb": 0.45359237}
+
+
+def _part(name, shape, sizes, mass, length, mass_unit):
+    s = [v / LENGTH_M[length] for v in sizes]
+    m = mass / MASS_KG[mass_unit]
+    if shape == "box":
+        return {"name": name, "shape": "box", "center": [0, 0, 0], "size": s, "mass": m}
+    if shape == "cylinder":
+        return {
+            "name": name,
+            "shape": "cylinder",
+            "radius": s[0],
+            "start": [0, 0, 0],
+            "end": [0, 0, s[1]],
+            "mass": m,
+        }
+    return {"name": name, "shape": "sphere", "radius": s[0], "center": [0, 0, 0], "mass": m}
+
+
+def spec(entry, length="m", mass="kg"):
+    """The spec of a corpus object with its numbers written in ``length`` and ``mass``, no
+    ``units:`` block."""
+    name, shape, sizes, kilograms, _ = entry
+    if isinstance(shape, list):
+        parts = [_part(*p, length, mass) for p in shape]
+        for i, part in enumerate(parts):  # side by side, apart
+            part["name"] = f"{part['name']}"
+            if "center" in part:
+                part["center"] = [3.0 * i / LENGTH_M[length], 0, 0]
+            else:
+                part["start"], part["end"] = (
+                    [3.0 * i / LENGTH_M[length], 0, 0],
+                    [
+                        3.0 * i / LENGTH_M[length],
+                        0,
+                        part["end"][2],
+                    ],
+                )
+        return {"name": name, "parts": parts}
+    return {"name": name, "parts": [_part(name, shape, sizes, kilograms, length, mass)]}
