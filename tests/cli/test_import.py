@@ -82,6 +82,8 @@ URDF = f"""<?xml version="1.0"?>
       <inertia ixx="0.01" ixy="-0.002" ixz="0.001" iyy="0.02" iyz="0.003" izz="0.025"/>
     </inertial>
   </link>
+  <joint name="box_on_world" type="fixed"><parent link="world"/><child link="box"/></joint>
+  <joint name="plate_on_world" type="fixed"><parent link="world"/><child link="plate"/></joint>
 </robot>
 """
 
@@ -191,6 +193,11 @@ def test_mjcf_matches_mujoco_compiler(tmp_path):
 
 def test_mjcf_body_without_inertial_or_geoms_is_listed_as_skipped(tmp_path):
     text = MJCF.replace('<geom type="sphere" size="0.05"/>', '<site pos="0 0 0"/>')
+    # moved by a joint, MuJoCo's compiler refuses it (exit 2); fixed to its parent, it is skipped
+    assert (
+        run_rbi_inprocess("import", write(tmp_path, "moving.xml", text), "--format", "json").returncode == 2
+    )
+    text = text.replace('<joint type="hinge" axis="0 1 0"/>', "")
     listing = json.loads(ok("import", write(tmp_path, "hand.xml", text), "--format", "json"))
     assert listing["format"] == "mjcf"
     assert listing["skipped"] == [
@@ -223,6 +230,8 @@ CAD_URDF = """<robot name="cad-export">
   <joint name="moves_the_massless_link" type="revolute">
     <parent link="base"/><child link="massless"/><axis xyz="0 0 1"/>
   </joint>
+  <joint name="plate_on_base" type="fixed"><parent link="base"/><child link="thin_plate"/></joint>
+  <joint name="negative_on_base" type="fixed"><parent link="base"/><child link="negative"/></joint>
 </robot>
 """
 
@@ -238,7 +247,7 @@ def test_validate_reports_every_unphysical_link_with_its_margin(tmp_path):
     assert "link[1] (thin_plate): inertia:" in triangle and "triangle inequality" in triangle
     assert "-0.001 kg·m²" in triangle and "-33.333% of I3" in triangle
     assert "link[2] (negative): inertia:" in negative and "-0.001 kg·m² below zero" in negative
-    assert "link[3] (massless): mass: must be greater than 0" in massless
+    assert "link[3] (massless): inertia: mass 0 with non-zero moments" in massless
     assert all(line.startswith(str(path)) for line in lines)
 
 
@@ -304,7 +313,7 @@ def test_out_refuses_other_extensions_and_the_input(tmp_path):
 
 
 def test_out_folder_gets_safe_distinct_names(tmp_path):
-    text = URDF.replace('name="box"', 'name="../../evil box"').replace('name="plate"', 'name="evil_box"')
+    text = URDF.replace('"box"', '"../../evil box"').replace('"plate"', '"evil_box"')
     path = write(tmp_path, "hand.urdf", text)
     out = tmp_path / "specs"
     out.mkdir()
@@ -499,6 +508,7 @@ def test_notes_and_warnings_show_link_names_escaped(tmp_path):
         f"""<robot name="r">
   <link name="{name}"/>
   <link name="ok"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>
+  <joint name="j" type="fixed"><parent link="{name}"/><child link="ok"/></joint>
 </robot>""",
     )
     proc = run_rbi_inprocess("import", path, "--format", "json")

@@ -45,7 +45,11 @@ def urdf(names: list[str], robot: str = "r") -> str:
         f'<inertia ixx="1" iyy="2" izz="2.5" ixy="0" ixz="0" iyz="0"/></inertial></link>'
         for name in names
     )
-    return f"<robot name={xml_attribute(robot)}>{links}</robot>\n"
+    joints = "".join(  # one root link: the others fixed to the first
+        f'<joint name="j{i}" type="fixed"><parent link={xml_attribute(names[0])}/><child link={xml_attribute(name)}/></joint>'
+        for i, name in enumerate(names[1:])
+    )
+    return f"<robot name={xml_attribute(robot)}>{links}{joints}</robot>\n"
 
 
 def read_names(path) -> list[str]:

@@ -127,20 +127,32 @@ def test_massless_links_root_and_fixed_are_legal_moving_ones_are_flagged(tmp_pat
     assert flags["tip"] == [("massless", "error")]  # carries nothing
     assert proc.returncode == 1
     assert result["total"]["mass"] == 2.0
-    assert (
-        run_rbi_inprocess(
-            "validate",
-            write(
-                tmp_path,
-                "base.urdf",
-                robot(
-                    '  <link name="base"><inertial><mass value="0"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/>'
-                    "</inertial></link>\n"
-                ),
-            ),
-        ).returncode
-        == 0
-    )
+    base = '  <link name="base"><inertial><mass value="0"/><inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>\n'
+    assert run_rbi_inprocess("validate", write(tmp_path, "base.urdf", robot(base))).returncode == 0
+
+
+def test_mass_0_with_moments_is_unphysical_even_on_a_static_base(tmp_path):
+    base = '  <link name="base"><inertial><mass value="0"/><inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial></link>\n'
+    path = write(tmp_path, "base.urdf", robot(base))
+    proc, result = audit_json(path)
+    assert proc.returncode == 1
+    assert [(f["code"], f["level"]) for f in result["links"][0]["flags"]] == [("unphysical", "error")]
+    assert run_rbi_inprocess("validate", path).returncode == 2  # validate: an invalid file
+
+
+@pytest.mark.parametrize(
+    "mass, ixx, flagged",
+    [
+        (0.53, "-5.4e-20", False),  # a CAD export's rounding noise: below 0.53 kg x (1 um)^2
+        (0.53, "-1e-12", True),  # twice that: flagged
+        (2.0, "-1e-12", False),  # below 2 kg x (1 um)^2 = 2e-12
+    ],
+)
+def test_unphysical_ignores_rounding_noise(tmp_path, mass, ixx, flagged):
+    link = f'  <link name="a"><inertial><mass value="{mass}"/><inertia ixx="{ixx}" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>\n'
+    _, result = audit_json(write(tmp_path, "r.urdf", robot(link)))
+    codes = [f["code"] for f in result["links"][0]["flags"]]
+    assert ("unphysical" in codes) is flagged
 
 
 def test_tiny_negative_products_from_cad_are_read_not_crashed_on(tmp_path):

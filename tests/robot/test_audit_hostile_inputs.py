@@ -120,11 +120,15 @@ names = (
 def test_any_link_names_give_a_fixed_copy_that_is_xml_and_a_safe_terminal(tmp_path, link_names):
     from xml.sax.saxutils import quoteattr
 
-    links = "".join(
-        f"<link name={quoteattr(n, {chr(10): '&#10;', chr(13): '&#13;', chr(9): '&#9;'})}>{BOX}</link>"
-        for n in link_names
+    def attr(n):
+        return quoteattr(n, {chr(10): "&#10;", chr(13): "&#13;", chr(9): "&#9;"})
+
+    links = "".join(f"<link name={attr(n)}>{BOX}</link>" for n in link_names)
+    joints = "".join(  # one root link: each other link fixed to the first
+        f'<joint name="j{i}" type="fixed"><parent link={attr(link_names[0])}/><child link={attr(n)}/></joint>'
+        for i, n in enumerate(link_names[1:])
     )
-    path = write(tmp_path, "r.urdf", f'<robot name="r">{links}</robot>')
+    path = write(tmp_path, "r.urdf", f'<robot name="r">{links}{joints}</robot>')
     out = tmp_path / "fixed.urdf"
     if out.exists():
         out.unlink()

@@ -39,6 +39,7 @@ REFUSED = {  # file (relative to pybullet_data) → words of the one-line reason
     "kuka_iiwa/kuka_world.sdf": "no such file",
     "kuka_iiwa/kuka_with_gripper.sdf": "leaves the spec's folder",  # an absolute /meshes/link_0.stl
     "kuka_iiwa/kuka_with_gripper2.sdf": "leaves the spec's folder",
+    "torus_deform.urdf": "no <link>",  # a deformable body: pybullet's loadSoftBody, not a robot
 }
 
 TIMES: dict[str, float] = {}

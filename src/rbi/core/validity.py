@@ -79,3 +79,19 @@ def inertia_problem(
             f"is at most the sum of the other two): check that all are about one point and in one unit",
         )
     return None
+
+
+NOISE_LENGTH = 1e-6
+"""A declared inertia's rounding noise may reach its mass times this length squared (1 µm)²."""
+
+
+def declared_inertia_problem(mass: float, inertia: np.ndarray) -> InertiaProblem | None:
+    """:func:`inertia_problem` for an inertia a file declares with a mass: a negative moment or
+    triangle-inequality deficit smaller than ``INERTIA_RTOL`` of the largest moment, or than
+    ``mass × (1 µm)²``, is rounding noise (a CAD export's ``ixx = -5.4e-20`` on a 0.53 kg link)."""
+    I = np.asarray(inertia, dtype=float)
+    if I.shape == (3, 3) and np.all(np.isfinite(I)) and np.isfinite(np.sum(np.abs(I))):
+        largest = float(np.max(np.abs(np.linalg.eigvalsh(0.5 * I + 0.5 * I.T))))
+        floor = max(float(mass), 0.0) * NOISE_LENGTH**2 / INERTIA_RTOL
+        return inertia_problem(I, scale=max(largest, floor, 0.5 * abs(float(np.trace(I)))))
+    return inertia_problem(I)

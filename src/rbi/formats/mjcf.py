@@ -137,7 +137,44 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
         reader.children(world, Pose.identity(), None, "main")
     check_unique_names(path, model.links, "body")
     _compile_inertia(model, compiler, reader.geoms)
+    _check_moving_bodies(model)
     return model
+
+
+MJ_MINVAL = 1e-15
+"""MuJoCo's ``mjMINVAL``: a moving body's mass and principal moments must exceed it."""
+
+
+def _check_moving_bodies(model: RobotModel) -> None:
+    """InputError for a body moved by a joint whose compiled mass (or a principal moment) is not
+    above :data:`MJ_MINVAL`, as MuJoCo's compiler refuses it ("mass and inertia of moving bodies
+    must be larger than mjMINVAL")."""
+    for link in model.links:
+        if not link.motions:
+            continue
+        inertial = link.inertial
+        mass = inertial.mass if inertial is not None else 0.0
+        smallest = float(np.linalg.eigvalsh(inertial.inertia).min()) if inertial is not None else 0.0
+        if mass > MJ_MINVAL and smallest > MJ_MINVAL:
+            continue
+        if inertial is None:
+            why = "has no <inertial> and no geom with mass"
+        elif inertial.source == "geoms":
+            why = (
+                f"its geoms give it mass {mass:.6g} kg"
+                if mass <= MJ_MINVAL
+                else "its geoms give it no inertia"
+            )
+        else:
+            why = (
+                f"its <inertial> has mass {mass:.6g} kg"
+                if mass <= MJ_MINVAL
+                else "its <inertial> has a zero moment"
+            )
+        raise InputError(
+            f"{model.path}: {link.label}: moved by a joint but {why}; MuJoCo's compiler refuses it "
+            "(mass and inertia of moving bodies must be larger than 1e-15): give it an <inertial> or a geom with mass"
+        )
 
 
 # --- includes ---------------------------------------------------------------------------------
@@ -402,6 +439,9 @@ class _Bodies:
         pose = frame.then(pose)
         mass = number(where, attrs.get("mass"), "mass") if "mass" in attrs else None
         density = number(where, attrs.get("density"), "density", 1000.0)
+        if (mass if mass is not None else density) < 0:
+            what = f"mass {mass!r}" if mass is not None else f"density {density!r}"
+            raise where.error(f"{what} is negative; MuJoCo's compiler refuses the model")
         shell = (attrs.get("shellinertia") or "false") == "true"
         geom = Geom(kind, (), pose, label, mass=mass, density=density, shell=shell)
         if kind == "sphere":

@@ -36,7 +36,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core.inertia import re_express
-from rbi.core.validity import inertia_problem
+from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats.robot_model import RobotModel
 from rbi.formats.robot_model import short as _short
@@ -201,11 +201,15 @@ def link_problems(robot: RobotFile, link: RobotLink) -> list[str]:
     by which the check fails (empty when the link is fine)."""
     where = f"{robot.path}: {link.label(robot.link_word)}"
     problems = []
+    if link.mass == 0.0 and np.any(link.inertia != 0):
+        return [
+            f"{where}: inertia: mass 0 with non-zero moments; no body without mass has a moment of inertia"
+        ]
     if link.mass == 0.0 and link.massless_allowed:
         return problems  # a root or fixed link without mass: how simulators mark a static base
     if not link.mass > 0.0:
         problems.append(f"{where}: mass: must be greater than 0 (got {link.mass!r} kg)")
-    problem = inertia_problem(link.inertia)
+    problem = declared_inertia_problem(link.mass, link.inertia)
     if problem is not None:
         if problem.kind in ("negative moment", "triangle inequality"):
             I1, I2, I3 = (float(m) for m in np.linalg.eigvalsh(link.inertia))

@@ -5,7 +5,10 @@
   places it in the world. ``x y z roll pitch yaw`` (radians unless ``degrees="true"``), or
   ``rotation_format="quat_xyzw"``. Poses relative to other named frames are not read.
 - ``<inertial><pose/><mass/><inertia><ixx/>…</inertia>``: SDF's defaults (mass 1,
-  ``ixx = iyy = izz = 1``) fill missing elements.
+  ``ixx = iyy = izz = 1``) fill missing elements; a link with no ``<inertial>`` has that default
+  inertial at its origin (``source="default"``), as SDFormat, Gazebo and Drake give it;
+  ``<inertial auto="true">`` (SDFormat 1.11) is computed from the collision geometry at each
+  collision's ``<density>`` (default 1000 kg/m³), scaled to a given ``<mass>``.
 - Geometry: ``<box><size/>``, ``<cylinder><radius/><length/>``, ``<sphere><radius/>``,
   ``<capsule><radius/><length/>``, ``<ellipsoid><radii/>``, ``<mesh><uri/><scale/>``.
 - A joint's ``<pose>`` is in the child link's frame; its ``<axis><xyz>`` in the joint frame
@@ -94,11 +97,17 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
             link_poses[own] = model_pose.then(pose)
             link.origin = link_poses[own]
             inertial = element.child("inertial")
-            if inertial is not None:
-                link.inertial = _inertial(where, inertial, own)
-            if geometry:
+            auto = inertial is not None and (inertial.get("auto") or "").strip().lower() in ("true", "1")
+            if geometry or auto:
                 link.collisions = _geoms(where, element, "collision", package_paths, own)
+            if geometry:
                 link.visuals = _geoms(where, element, "visual", package_paths, own)
+            if auto:
+                link.inertial = _auto_inertial(where, inertial, link.collisions)
+            elif inertial is not None:
+                link.inertial = _inertial(where, inertial, own)
+            else:  # SDFormat's default inertial: 1 kg, unit moments, at the link origin
+                link.inertial = Inertial(1.0, np.zeros(3), np.eye(3), element=None, source="default")
             check_unique_names(path, list(links.values()) + [link], "link")
             links[own] = link
             robot.links.append(link)
@@ -192,6 +201,36 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
     )
 
 
+SDF_DENSITY = 1000.0
+"""SDFormat's default ``<collision><density>`` (kg/m³), for ``<inertial auto="true">``."""
+
+
+def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
+    """``<inertial auto="true">`` (SDFormat 1.11): the mass properties of the link's collision
+    geometry at each collision's ``<density>`` (default 1000 kg/m³), scaled to the inertial's
+    ``<mass>`` when it gives one."""
+    from rbi.formats.robot_geometry import combine, distribution
+
+    pieces = []
+    for geom in collisions:
+        found = distribution(geom, "auto", f"{where.path}: {where.label}: ")
+        if found is not None and found.measure > 0:
+            density = geom.density if geom.density is not None else SDF_DENSITY
+            pieces.append((density * found.measure, found.centroid, density * found.inertia))
+    props = combine(pieces)
+    if not props.mass > 0:
+        raise where.error(
+            'inertial auto="true": the link has no collision geometry with a volume to compute it from'
+        )
+    mass_element = inertial.child("mass")
+    if mass_element is not None and (mass_element.text or "").strip():
+        mass = number(where, mass_element.text, "inertial/mass")
+        positive(where, (mass,), "inertial/mass")
+        scale = mass / props.mass
+        props = props._replace(mass=mass, inertia=props.inertia * scale)
+    return Inertial(props.mass, props.com, props.inertia, element=inertial, source="auto")
+
+
 def _geoms(where: Where, link_element, tag: str, package_paths, own_name) -> list[Geom]:
     found = []
     for index, element in enumerate(link_element.all(tag)):
@@ -201,7 +240,12 @@ def _geoms(where: Where, link_element, tag: str, package_paths, own_name) -> lis
         shape = next(iter(holder.children), None) if holder is not None else None
         if shape is None:
             raise where.error(f"{label}/geometry: missing")
-        found.append(_geom(where, shape, pose, f"{label}/geometry/{shape.tag}", package_paths))
+        geom = _geom(where, shape, pose, f"{label}/geometry/{shape.tag}", package_paths)
+        density = element.child("density")
+        if density is not None and (density.text or "").strip():
+            geom.density = number(where, density.text, f"{label}/density")
+            positive(where, (geom.density,), f"{label}/density")
+        found.append(geom)
     return found
 
 

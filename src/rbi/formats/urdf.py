@@ -53,8 +53,15 @@ MOVING = {
 def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     path, root = document.path, document.root
     model = RobotModel(path, "urdf", root.get("name"), document=document)
+    if not root.all("link"):
+        raise InputError(f"{path}: no <link>: a URDF needs at least one (urdfdom and pybullet refuse it)")
     for index, element in enumerate(root.all("link")):
         link = Link(index, element.get("name"), element=element, word="link")
+        if not link.name:
+            raise InputError(
+                f"{path}: link[{index}] (line {element.line}): name: missing; every link needs a name "
+                "(urdfdom and pybullet refuse it)"
+            )
         where = Where(path, link.label)
         inertial = element.child("inertial")
         if inertial is not None:
@@ -174,7 +181,8 @@ def _joints(model: RobotModel, root) -> None:
         link = by_name[child_name]
         if link.parent is not None:
             raise where.error(
-                f"child: link {short(child_name)!r} already has a parent joint; a URDF's links form a tree"
+                f"child: link {short(child_name)!r} is already the child of link {short(link.parent)!r}: "
+                "two joints close a loop, and a URDF's links form a tree (model a closed chain in SDF or MJCF)"
             )
         kind = element.get("type") or ""
         if kind not in MOVING:
@@ -202,6 +210,13 @@ def _joints(model: RobotModel, root) -> None:
 
 def _check_tree(model: RobotModel) -> None:
     by_name = {link.name: link for link in model.links}
+    roots = [link for link in model.links if link.parent is None]
+    if len(roots) > 1:
+        names = ", ".join(repr(short(link.name)) for link in roots[:4]) + (", ..." if len(roots) > 4 else "")
+        raise InputError(
+            f"{model.path}: {len(roots)} root links ({names}): no joint joins them; a URDF has one root "
+            "link that every other hangs from (urdfdom and pybullet refuse it)"
+        )
     for link in model.links:
         seen = set()
         at = link

@@ -34,7 +34,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.validity import inertia_problem
+from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, combine, distribution
 from rbi.formats.robot_model import Inertial, Link, RobotModel
@@ -387,91 +387,109 @@ def _geometry_props(
 
 
 def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool) -> list[Flag]:
-    flags: list[Flag] = []
     declared, geo = result.declared, result.geometry
     if declared is None or declared.mass == 0.0:
-        if link.moves:
-            what = "no <inertial>" if declared is None else "mass 0"
-            if carries_mass:
-                flags.append(
-                    Flag(
-                        "massless",
-                        "warning",
-                        f"moved by a joint but has {what}; the links it carries "
-                        "have mass, so the joint still moves a mass",
-                    )
-                )
-            else:
-                flags.append(
-                    Flag(
-                        "massless",
-                        "error",
-                        f"moved by a joint but has {what}, and nothing it carries "
-                        "has mass: a simulator cannot integrate that joint",
-                    )
-                )
-        return flags
+        return _zero_mass_flags(link, declared, carries_mass)
+    flags: list[Flag] = []
     I = declared.inertia_about_com
     if declared.mass < 0:
         flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative", "negative mass"))
-    problem = inertia_problem(I)
+    problem = declared_inertia_problem(declared.mass, I)
     if problem is not None:
         flags.append(Flag("unphysical", "error", _problem_text(problem, I), problem.kind))
+    has_geometry = geo is not None and geo.inertia_about_com is not None and geo.mass
+    if link.inertial is not None and link.inertial.source == "default":
+        if has_geometry:
+            _geometry_flags(result, None)  # the ratios only: the default is not the file's claim
+        return flags + [Flag("placeholder", "warning", _DEFAULT_TEXT, "SDFormat's default inertial")]
     placeholder = _placeholder(model, link)
-    if geo is not None and geo.inertia_about_com is not None and geo.mass:
-        moments, axes = np.linalg.eigh(geo.inertia_about_com)
-        along = np.einsum("ji,jk,ki->i", axes, I, axes)
-        largest = float(np.max(moments))
-        usable = moments > 1e-9 * largest
-        ratios = np.full(3, np.nan)
-        ratios[usable] = along[usable] / moments[usable]
-        result.ratios = ratios
-        size = float(np.linalg.norm(geo.high - geo.low))
-        if size > 0:
-            result.com_offset = float(np.linalg.norm(declared.center_of_mass - geo.center_of_mass) / size)
-        worst = _worst_ratio(ratios)
-        code = "placeholder" if placeholder else "mismatch"
-        ratio_text = ", ".join("-" if np.isnan(r) else f"{r:.3g}" for r in ratios)
-        detail = (
-            f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} "
-            f"geometry's at the same mass"
-        )
-        if placeholder:
-            detail = f"{placeholder}; {detail}"
-        summary = "" if worst is None else f"a moment {worst:.3g} × the {geo.source} geometry's"
-        if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
-            flags.append(Flag(code, "error", detail, summary))
-        elif worst is not None and (worst > WARNING_RATIO or worst < 1 / WARNING_RATIO):
-            flags.append(Flag(code, "warning", detail, summary))
-        elif placeholder and _spread(moments) > 1.5:
-            flags.append(Flag("placeholder", "warning", detail, summary))
-        margin = COM_MARGIN * size
-        if np.any(declared.center_of_mass < geo.low - margin) or np.any(
-            declared.center_of_mass > geo.high + margin
-        ):
-            flags.append(
-                Flag(
-                    "mismatch",
-                    "warning",
-                    "the declared centre of mass lies outside the geometry's "
-                    f"bounds (offset {result.com_offset:.3g} of the geometry's size from its centre "
-                    "of mass)",
-                )
-            )
-        if geo.implied_density is not None:
-            low, high = SOLID_DENSITY_RANGE
-            if not low <= geo.implied_density <= high:
-                flags.append(
-                    Flag(
-                        "density",
-                        "warning",
-                        f"implied density {geo.implied_density:.4g} kg/m³ "
-                        f"(mass {declared.mass:.6g} kg / {geo.source} volume {geo.volume:.4g} m³) is "
-                        f"outside what a solid material has ({low:g} to {high:g} kg/m³)",
-                    )
-                )
+    if has_geometry:
+        flags += _geometry_flags(result, placeholder)
     elif placeholder:
         flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))
+    return flags
+
+
+_DEFAULT_TEXT = (
+    "no <inertial>: SDFormat, Gazebo and Drake give the link mass 1 kg and a unit inertia "
+    "(1 kg·m² about each axis) at its origin; declare its own"
+)
+
+
+def _zero_mass_flags(link: Link, declared: MassProps | None, carries_mass: bool) -> list[Flag]:
+    """A link without mass: ``unphysical`` when it declares moments anyway; ``massless`` when a
+    joint moves it (an error when nothing it carries has mass either)."""
+    flags = []
+    if declared is not None and np.any(declared.inertia_about_com != 0):
+        moments = ", ".join(f"{m:.4g}" for m in np.linalg.eigvalsh(declared.inertia_about_com))
+        flags.append(
+            Flag(
+                "unphysical",
+                "error",
+                f"mass 0 with principal moments {moments} kg·m²: no body without mass has a moment "
+                "of inertia (simulators disagree on what it means)",
+                "mass 0 with moments",
+            )
+        )
+    if not link.moves:
+        return flags
+    what = "no <inertial>" if declared is None else "mass 0"
+    if carries_mass:
+        text = f"moved by a joint but has {what}; the links it carries have mass, so the joint still moves a mass"
+        flags.append(Flag("massless", "warning", text))
+    else:
+        text = (
+            f"moved by a joint but has {what}, and nothing it carries has mass: a simulator cannot "
+            "integrate that joint"
+        )
+        flags.append(Flag("massless", "error", text))
+    return flags
+
+
+def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
+    """``placeholder``/``mismatch`` from the moment ratios, ``mismatch`` for a centre of mass
+    outside the geometry, ``density`` for an implausible implied density; sets the link's
+    ``ratios`` and ``com_offset``."""
+    declared, geo = result.declared, result.geometry
+    flags: list[Flag] = []
+    moments, axes = np.linalg.eigh(geo.inertia_about_com)
+    along = np.einsum("ji,jk,ki->i", axes, declared.inertia_about_com, axes)
+    usable = moments > 1e-9 * float(np.max(moments))
+    ratios = np.full(3, np.nan)
+    ratios[usable] = along[usable] / moments[usable]
+    result.ratios = ratios
+    size = float(np.linalg.norm(geo.high - geo.low))
+    if size > 0:
+        result.com_offset = float(np.linalg.norm(declared.center_of_mass - geo.center_of_mass) / size)
+    worst = _worst_ratio(ratios)
+    code = "placeholder" if placeholder else "mismatch"
+    ratio_text = ", ".join("-" if np.isnan(r) else f"{r:.3g}" for r in ratios)
+    detail = f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} geometry's at the same mass"
+    if placeholder:
+        detail = f"{placeholder}; {detail}"
+    summary = "" if worst is None else f"a moment {worst:.3g} × the {geo.source} geometry's"
+    if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
+        flags.append(Flag(code, "error", detail, summary))
+    elif worst is not None and (worst > WARNING_RATIO or worst < 1 / WARNING_RATIO):
+        flags.append(Flag(code, "warning", detail, summary))
+    elif placeholder and _spread(moments) > 1.5:
+        flags.append(Flag("placeholder", "warning", detail, summary))
+    margin = COM_MARGIN * size
+    if np.any(declared.center_of_mass < geo.low - margin) or np.any(
+        declared.center_of_mass > geo.high + margin
+    ):
+        text = (
+            "the declared centre of mass lies outside the geometry's bounds (offset "
+            f"{result.com_offset:.3g} of the geometry's size from its centre of mass)"
+        )
+        flags.append(Flag("mismatch", "warning", text))
+    low, high = SOLID_DENSITY_RANGE
+    if geo.implied_density is not None and not low <= geo.implied_density <= high:
+        text = (
+            f"implied density {geo.implied_density:.4g} kg/m³ (mass {declared.mass:.6g} kg / {geo.source} "
+            f"volume {geo.volume:.4g} m³) is outside what a solid material has ({low:g} to {high:g} kg/m³)"
+        )
+        flags.append(Flag("density", "warning", text))
     return flags
 
 

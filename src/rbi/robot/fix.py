@@ -94,7 +94,7 @@ def _why_not(report: AuditReport, each: LinkAudit, density: float | None) -> str
     inertial = each.link.inertial
     if geo is None:
         return "it has no geometry with a volume to take the mass properties from"
-    if inertial is not None and inertial.element is None:
+    if inertial is not None and inertial.element is None and inertial.source == "geoms":
         return "MuJoCo's compiler gives it its mass properties from its geoms; change the geoms instead"
     if inertial is not None and getattr(inertial.element, "source", None):
         return "its <inertial> is in an included file"

@@ -1,0 +1,129 @@
+"""What each format's own readers do, rbi does: SDFormat's default and automatic inertials,
+MuJoCo's compiler refusals (checked against mujoco itself), urdfdom/pybullet's URDF refusals."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+from tests.conftest import run_rbi_inprocess
+
+BOX = "<geometry><box><size>0.2 0.1 0.05</size></box></geometry>"
+
+
+def sdf(*links: str) -> str:
+    return f'<?xml version="1.0"?><sdf version="1.11"><model name="m">{"".join(links)}</model></sdf>'
+
+
+def audit(tmp_path, name, text, *args):
+    path = tmp_path / name
+    path.write_text(text)
+    proc = run_rbi_inprocess("audit", str(path), "--format", "json", *args)
+    return proc, (json.loads(proc.stdout) if proc.stdout.strip() else None)
+
+
+def box_moments(m, a=0.2, b=0.1, c=0.05):
+    return m / 12 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+
+
+def test_sdf_link_without_inertial_has_sdformats_default_and_a_placeholder_warning(tmp_path):
+    proc, result = audit(
+        tmp_path, "m.sdf", sdf(f'<link name="a"><collision name="c">{BOX}</collision></link>')
+    )
+    assert proc.returncode == 0, proc.stderr
+    link = result["links"][0]
+    assert link["declared"]["mass"] == 1.0
+    np.testing.assert_array_equal(link["declared"]["inertia_about_com"], np.eye(3))
+    assert [(f["code"], f["level"]) for f in link["flags"]] == [("placeholder", "warning")]
+    assert result["total"]["mass"] == 1.0
+
+
+@pytest.mark.parametrize("mass", [None, 2.0])
+def test_sdf_auto_inertial_from_collisions_and_their_density(tmp_path, mass):
+    given = f"<mass>{mass}</mass>" if mass else ""
+    link = (
+        f'<link name="a"><inertial auto="true">{given}</inertial>'
+        f'<collision name="c"><density>500</density>{BOX}</collision>'
+        '<collision name="d"><pose>1 0 0 0 0 0</pose><geometry><sphere><radius>0.1</radius></sphere></geometry></collision></link>'
+    )
+    proc, result = audit(tmp_path, "m.sdf", sdf(link), "--geometry", "none")
+    assert proc.returncode == 0, proc.stderr
+    box_mass, sphere_mass = 500 * 0.001, 1000 * 4 / 3 * np.pi * 0.1**3
+    total = box_mass + sphere_mass
+    declared = result["links"][0]["declared"]
+    scale = (mass / total) if mass else 1.0
+    assert declared["mass"] == pytest.approx(total * scale, rel=1e-14)
+    np.testing.assert_allclose(declared["center_of_mass"], [sphere_mass / total, 0, 0], rtol=1e-14)
+    d = np.array([1.0, 0, 0]) - declared["center_of_mass"]
+    expected = (
+        np.diag(box_moments(box_mass))
+        + box_mass
+        * (
+            np.dot(declared["center_of_mass"], declared["center_of_mass"]) * np.eye(3)
+            - np.outer(declared["center_of_mass"], declared["center_of_mass"])
+        )
+        + np.eye(3) * 0.4 * sphere_mass * 0.01
+        + sphere_mass * (np.dot(d, d) * np.eye(3) - np.outer(d, d))
+    )
+    np.testing.assert_allclose(declared["inertia_about_com"], expected * scale, rtol=1e-12, atol=1e-18)
+
+
+MJCF_CASES = {
+    "no_mass_body_moves": '<body name="a"><joint type="hinge"/><body name="b" pos="1 0 0"><joint type="hinge"/><geom size="0.1"/></body></body>',
+    "density_zero": '<body name="a"><joint type="hinge"/><geom size="0.1" density="0"/></body>',
+    "density_negative": '<body name="a"><joint type="hinge"/><geom size="0.1" density="-5"/></body>',
+    "density_negative_static": '<body name="a"><geom size="0.1" density="-5"/></body>',
+    "inertial_mass_0": '<body name="a"><joint type="hinge"/><inertial pos="0 0 0" mass="0" diaginertia="1 1 1"/></body>',
+    "inertial_mass_0_static": '<body name="a"><inertial pos="0 0 0" mass="0" diaginertia="0 0 0"/></body>',
+    "geom_mass_negative": '<body name="a"><joint type="hinge"/><geom size="0.1" mass="-1"/></body>',
+    "mass_wins_over_density": '<body name="a"><joint type="hinge"/><geom size="0.1" mass="1" density="-1"/></body>',
+    "free_without_mass": '<body name="a"><freejoint/></body>',
+    "ok": '<body name="a"><joint type="hinge"/><geom size="0.1"/></body>',
+}
+
+
+@pytest.mark.parametrize("case", sorted(MJCF_CASES))
+def test_mjcf_refused_exactly_when_mujoco_refuses(tmp_path, case):
+    mujoco = pytest.importorskip("mujoco")
+    text = f"<mujoco><worldbody>{MJCF_CASES[case]}</worldbody></mujoco>"
+    try:
+        mujoco.MjModel.from_xml_string(text)
+        refused = False
+    except ValueError:
+        refused = True
+    proc, _ = audit(tmp_path, "m.xml", text)
+    assert (proc.returncode == 2) is refused, proc.stderr
+    if refused:
+        assert len(proc.stderr.strip().splitlines()) == 1 and "m.xml" in proc.stderr
+
+
+URDF_REFUSED = {
+    "no link": ('<robot name="r"><joint name="j" type="fixed"/></robot>', "no <link>"),
+    "unnamed link": ('<robot name="r"><link/></robot>', "name: missing"),
+    "two roots": ('<robot name="r"><link name="a"/><link name="b"/></robot>', "2 root links"),
+    "attribute default": (
+        '<?xml version="1.0"?><!DOCTYPE robot [<!ATTLIST mass value CDATA "5">]><robot name="r"><link name="a">'
+        '<inertial><mass/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link></robot>',
+        "default",
+    ),
+    "closed chain": (
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+        '<joint name="j1" type="fixed"><parent link="a"/><child link="c"/></joint>'
+        '<joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint></robot>',
+        "loop",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", sorted(URDF_REFUSED))
+def test_urdf_refusals_of_urdfdom_and_pybullet(tmp_path, case):
+    text, words = URDF_REFUSED[case]
+    for command in (("audit",), ("import",), ("validate",)):
+        path = tmp_path / "r.urdf"
+        path.write_text(text)
+        proc = run_rbi_inprocess(*command, str(path))
+        assert proc.returncode == 2, (command, proc.stdout, proc.stderr)
+        message = (proc.stderr + proc.stdout).strip()
+        assert words in message and "r.urdf" in message and "Traceback" not in message
