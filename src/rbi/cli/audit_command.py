@@ -13,14 +13,8 @@ from typing import Annotated
 
 import typer
 
-from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.options import FormatOption, OutputFormat, RobotFile
 
-RobotFileArgument = Annotated[
-    str,
-    typer.Argument(
-        help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False, metavar="ROBOT_FILE"
-    ),
-]
 PackagePathOption = Annotated[
     list[str] | None,
     typer.Option(
@@ -91,7 +85,7 @@ OutOption = Annotated[
 
 
 def audit(
-    file: RobotFileArgument,
+    file: RobotFile,
     package_path: PackagePathOption = None,
     geometry: GeometryOption = "collision",
     density: DensityOption = None,
