@@ -18,6 +18,7 @@ raises `SpecError`, whose ``str()`` is the one line the CLI prints for the same 
 
 from __future__ import annotations
 
+import numbers
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -25,7 +26,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbi.errors import InputError as SpecError
+from rbi.errors import SpecError
 
 if TYPE_CHECKING:
     from rbi.robot.audit import AuditReport
@@ -105,6 +106,7 @@ def _load(source):
     from rbi.spec import load as spec_load
 
     if isinstance(source, dict):
+        spec_load.refuse_lone_surrogates(source, "<dict>")
         return spec_load.body_from_raw(source, "<dict>"), source
     if isinstance(source, str) and ("\n" in source or source == "-"):
         if source == "-":
@@ -396,7 +398,7 @@ class Body:
 
 def _rotation(axes) -> np.ndarray:
     """A body → world rotation matrix from ``axes`` (see `Body.inertia`)."""
-    from rbi.core.rotation import compose_world_rotations
+    from rbi.core.rotation import angle_is_kept, compose_world_rotations
 
     array = np.asarray(axes, dtype=object)
     if array.shape == (3, 3):
@@ -420,6 +422,10 @@ def _rotation(axes) -> np.ndarray:
                 f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {turn!r}",
                 field="axes",
             )
+        if not angle_is_kept(degrees):
+            raise SpecError(
+                f"axes: {degrees!r} degrees is too large to be a turn: rounding loses it", field="axes"
+            )
         turns.append((axis, np.radians(degrees)))
     return compose_world_rotations(turns)
 
@@ -432,7 +438,8 @@ class Trajectory:
         t: (N,) time, s.
         q: (N, 4) unit quaternions [w, x, y, z] (scalar first), body → world.
         omega: (N, 3) angular velocity in the body frame, rad/s.
-        tilt_deg: (N,) angle of the body z axis from the upward vertical, degrees.
+        tilt_deg: (N,) angle of the spin axis (body z unless ``spin_axis`` says otherwise) from
+            the upward vertical, degrees.
         precession_deg: (N,) azimuth of that axis seen from above, degrees (unwrapped; NaN
             while the axis stands vertical).
         energy: (N,) total energy (kinetic + potential), mass·length²/s².
@@ -488,7 +495,7 @@ class Trajectory:
             ("duration, samples", "s", f"{float(self.t[-1]):g}, {self.t.size}"),
             ("final q [w, x, y, z]", "", _vector_text(self.q[-1])),
             ("final ω (body axes)", "rad/s", _vector_text(self.omega[-1])),
-            ("final tilt of body z", "deg", f"{float(self.tilt_deg[-1]):.6g}"),
+            (f"final tilt of {_axis_name(s.get('spin_axis'))}", "deg", f"{float(self.tilt_deg[-1]):.6g}"),
             ("tilt min … max", "deg", f"{np.min(self.tilt_deg):.6g} … {np.max(self.tilt_deg):.6g}"),
         ]
         if final and "energy" in s.get("conserved", {}):
@@ -560,6 +567,8 @@ def simulate(
 
     if not isinstance(body, Body):
         raise SpecError(f"rbi.simulate: expected a Body from rbi.load (got {type(body).__name__})")
+    _numbers_only("rbi.simulate", spin=spin, tilt_deg=tilt_deg, duration=duration, gravity=gravity, rtol=rtol)
+    _numbers_only("rbi.simulate", integral=True, samples=samples, max_steps=max_steps)
     check_run_options(method, spin, omega, tilt_deg, duration, tilt_axis, gravity, max_steps, rtol)
     check_samples(samples)
     prepared = prepare_run(
@@ -587,6 +596,27 @@ def simulate(
         energy=columns["energy"],
         summary=run.summary,
     )
+
+
+def _numbers_only(function: str, integral: bool = False, **values) -> None:
+    """TypeError naming the parameter when one of ``values`` (None allowed) is not a number
+    (``spin=True``, ``duration="4"``); with ``integral``, not a whole number."""
+    kind = numbers.Integral if integral else numbers.Real
+    for name, value in values.items():
+        if value is not None and (isinstance(value, bool) or not isinstance(value, kind)):
+            what = "a whole number" if integral else "a number"
+            raise TypeError(f"{function}: {name} must be {what} (got {type(value).__name__} {value!r})")
+
+
+def _axis_name(axis) -> str:
+    """``body y`` for a coordinate axis of the body frame, else ``the spin axis [x, y, z]``."""
+    if axis is None:
+        return "the spin axis"
+    axis = np.asarray(axis, dtype=float)
+    for index, name in enumerate("xyz"):
+        if axis[index] == 1.0:
+            return f"body {name}"
+    return f"the spin axis {_vector_text(axis)}"
 
 
 def _spin_axis_text(axis) -> str | None:

@@ -57,7 +57,7 @@ def report_each(files: Sequence[str], report: Callable[[str], FileReport], fmt: 
 
     if len(files) == 1:
         one = report(files[0])
-        emit(fmt, one.result, one.table, csv_rows=one.csv_rows)
+        emit(fmt, one.result, one.table, csv_rows=one.csv_rows, source=file_label(files[0]))
         return 1 if one.failed else 0
     return _Several(fmt).run(files, report)
 
@@ -79,7 +79,7 @@ class _Several:
         for file in files:
             try:
                 one = report(file)
-                refuse_non_finite(one.result)
+                refuse_non_finite(one.result, file_label(file))
             except InputError as exc:
                 sys.stdout.flush()  # what earlier files printed comes before this file's error line
                 say(str(exc))

@@ -94,13 +94,14 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
 
     def table():
         from rbi.cli import tables
+        from rbi.cli.render import body_size
 
         labels = body.labels
         frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
         rows = [
             ("mass", labels["mass"], number(body.props.mass, 8)),
-            ("centre of mass", labels["length"], tables.vector(body.props.com)),
-            (f"about ({about_label})", labels["length"], tables.vector(point)),
+            ("centre of mass", labels["length"], tables.vector(body.props.com, body_size(body.props))),
+            (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body.props))),
         ]
         if direction is not None:
             rows += [
@@ -142,7 +143,7 @@ def _principal_of(file: str, about: str, units: str | None):
 
     def table():
         from rbi.cli import tables
-        from rbi.cli.render import matrix_digits
+        from rbi.cli.render import body_size, matrix_digits
 
         labels = body.labels
         scale, scale_text = matrix_digits(moments)
@@ -159,8 +160,12 @@ def _principal_of(file: str, about: str, units: str | None):
                 title(body, "principal"),
                 [
                     ("mass", labels["mass"], number(body.props.mass, 8)),
-                    ("centre of mass", labels["length"], tables.vector(body.props.com)),
-                    (f"about ({about_label})", labels["length"], tables.vector(point)),
+                    (
+                        "centre of mass",
+                        labels["length"],
+                        tables.vector(body.props.com, body_size(body.props)),
+                    ),
+                    (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body.props))),
                 ],
             ),
             t,

@@ -33,6 +33,8 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
 
 def parse_rotation(text: str) -> tuple[str, float]:
     """``"y:30"`` -> ``("y", radians(30))``."""
+    from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept
+
     axis, sep, angle = text.partition(":")
     axis = axis.strip().lower()
     try:
@@ -41,6 +43,11 @@ def parse_rotation(text: str) -> tuple[str, float]:
         degrees = math.nan
     if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
         raise InputError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
+    if not angle_is_kept(degrees):
+        raise InputError(
+            f"--rotate: {angle.strip()} degrees is too large to be a turn: rounding loses it "
+            f"(at most {LARGEST_ANGLE_DEG:g} degrees)"
+        )
     return axis, math.radians(degrees)
 
 

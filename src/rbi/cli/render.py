@@ -153,12 +153,13 @@ NOISE_RELATIVE = 1e-12
 noise (a 1e-18 beside a 1e-4) and prints as 0 in tables; JSON and CSV keep every digit."""
 
 
-def without_noise(values) -> np.ndarray:
+def without_noise(values, scale: float = 0.0) -> np.ndarray:
     """``values`` (a vector or matrix) with every entry below :data:`NOISE_RELATIVE` of the
-    largest magnitude among them set to 0, for printing."""
+    largest magnitude among them, or of ``scale`` (a position: the body's size), set to 0, for
+    printing."""
     values = np.array(values, dtype=float)
     finite = np.abs(values[np.isfinite(values)])
-    peak = float(finite.max()) if finite.size else 0.0
+    peak = max(float(finite.max()) if finite.size else 0.0, scale if math.isfinite(scale) else 0.0)
     values[np.abs(values) < NOISE_RELATIVE * peak] = 0.0
     return values
 
@@ -215,11 +216,16 @@ def _safe_console(**options):
 
 
 def emit(
-    fmt: str, result: dict[str, Any], table: Callable[[], Any], csv_rows: list[dict[str, Any]] | None = None
+    fmt: str,
+    result: dict[str, Any],
+    table: Callable[[], Any],
+    csv_rows: list[dict[str, Any]] | None = None,
+    source: str | None = None,
 ) -> None:
     """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
-    lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``."""
-    refuse_non_finite(result)
+    lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``;
+    ``source`` names the file in an error."""
+    refuse_non_finite(result, source)
     if fmt != "json":
         say_warnings(result.get("warnings", ()))
     if fmt == "json":
@@ -248,15 +254,17 @@ def print_table(renderable) -> None:
     console.print(fitted(renderable, console))
 
 
-def refuse_non_finite(result: dict[str, Any]) -> None:
+def refuse_non_finite(result: dict[str, Any], source: str | None = None) -> None:
     """Inputs of absurd size (``--omega 1e200,0,0``) overflow to inf/NaN: refuse them as bad
-    input (exit 2) rather than print nulls."""
+    input (exit 2, naming the file ``source`` when given) rather than print nulls."""
     from rbi.spec.errors import InputError
 
     bad = [key for key, value in plain(result).items() if _has_non_finite(value)]
     if bad:
+        where = f"{source}: " if source else ""
         raise InputError(
-            f"result {', '.join(bad)} is not finite: the input values are too large for double precision"
+            f"{where}result {', '.join(bad)} is not finite: the input values are too large for double "
+            "precision"
         )
 
 
@@ -268,5 +276,17 @@ def _has_non_finite(value: Any) -> bool:
     return isinstance(value, float) and not math.isfinite(value)
 
 
-def vector_text(v, digits: int = 6) -> str:
-    return "[" + ", ".join(number(x, digits) for x in without_noise(v)) + "]"
+def vector_text(v, digits: int = 6, scale: float = 0.0) -> str:
+    """``[x, y, z]`` with noise below :data:`NOISE_RELATIVE` of the vector's largest entry, or
+    of ``scale``, printed as 0."""
+    return "[" + ", ".join(number(x, digits) for x in without_noise(v, scale)) + "]"
+
+
+def body_size(props) -> float:
+    """A body's size for telling a position from rounding noise: its radius of gyration about
+    the centre of mass, √(trace I / 2m), file length unit (0 without mass or inertia)."""
+    try:
+        size = math.sqrt(float(np.trace(props.inertia_com)) / (2.0 * float(props.mass)))
+    except (ValueError, ZeroDivisionError, OverflowError):
+        return 0.0
+    return size if math.isfinite(size) else 0.0

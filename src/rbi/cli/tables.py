@@ -92,8 +92,10 @@ def stack(*renderables) -> Group:
     return Group(*renderables)
 
 
-def vector(v) -> str:
-    return vector_text(v)
+def vector(v, scale: float = 0.0) -> str:
+    """A vector for a table cell; entries below 1e-12 of ``scale`` (a position: the body's
+    size, :func:`rbi.cli.render.body_size`) or of its largest entry print as 0."""
+    return vector_text(v, scale=scale)
 
 
 # --- fitting the terminal ---------------------------------------------------------------------

@@ -6,6 +6,8 @@ coordinates: ``v_world = quaternion_to_matrix(q) @ v_body``.
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 _AXES = {"x": 0, "y": 1, "z": 2}
@@ -13,6 +15,17 @@ _AXES = {"x": 0, "y": 1, "z": 2}
 
 ROUNDING_ZERO = 1e-15
 """Rotation-matrix entries below this are rounding left by sin and cos of exact quarter turns."""
+
+
+LARGEST_ANGLE_DEG = 1e9
+"""Largest angle accepted as a turn, degrees (2.8 million turns): beyond it neighbouring doubles
+are more than 1e-7 degree apart, and by 1e17 degrees not even the turn is known (``--tilt
+1e300`` is some angle, not the one meant)."""
+
+
+def angle_is_kept(degrees: float) -> bool:
+    """Whether a turn of ``degrees`` is finite and small enough that rounding keeps it."""
+    return math.isfinite(degrees) and abs(degrees) <= LARGEST_ANGLE_DEG
 
 
 def without_rounding_noise(R: np.ndarray) -> np.ndarray:

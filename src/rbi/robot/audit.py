@@ -137,8 +137,6 @@ class AuditReport:
     notes: list[str]
     settings: dict[str, Any]
     fix: Any = None
-    joints: list = field(default_factory=list)
-    """Each joint coordinate's holding torque (:class:`rbi.robot.statics.JointTorque`)."""
 
     @property
     def path(self) -> str:
@@ -165,16 +163,6 @@ class AuditReport:
                 "inertia_about_com": self.total.inertia_about_com,
                 "frame": self.total.frame,
             },
-            "joints": [
-                {
-                    "name": each.name,
-                    "type": each.type,
-                    "torque": each.torque,
-                    "effort_limit": each.effort_limit,
-                    "flags": list(each.flags),
-                }
-                for each in self.joints
-            ],
             "notes": list(self.notes),
             "warnings": list(self.notes),
         }
@@ -225,7 +213,9 @@ def material_density(material: str | None, density: float | None) -> float | Non
 
         name = canonical_name(material)
         if name is None:
-            raise InputError(f"--material: {unknown_material_message(material)}")
+            raise InputError(
+                f"--material: {unknown_material_message(material, numbers_too=False)} (or --density KG_PER_M3)"
+            )
         return MATERIAL_DENSITIES_SI[name]
     return None
 
@@ -240,7 +230,6 @@ def audit_model(
     mesh_repair: bool = False,
 ) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
-    from rbi.robot.statics import joint_torques
     from rbi.robot.tree import totals
 
     if geometry not in GEOMETRY_CHOICES:
@@ -275,7 +264,6 @@ def audit_model(
             "joints": dict(joints or {}),
             "mesh_repair": mesh_repair,
         },
-        joints=joint_torques(model, joints),
     )
 
 

@@ -35,6 +35,10 @@ def parse_joint_values(values: list[str] | None) -> dict[str, float]:
                 f"--joints: {value!r}: give NAME=VALUE with VALUE a finite number (radians for a "
                 "revolute joint, metres for a prismatic one)"
             )
+        if name in found:
+            raise InputError(
+                f"--joints: {name!r} is given twice ({found[name]:g} and {q:g}): give each joint once"
+            )
         found[name] = q
     return found
 

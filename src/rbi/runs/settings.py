@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 import numbers
 
+from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept
 from rbi.errors import InputError
 from rbi.runs.values import vector_value
 
@@ -55,6 +56,11 @@ def check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, m
         raise InputError(f"--spin: must be a finite number (got {spin!r})")
     if not _finite(tilt):
         raise InputError(f"--tilt: must be a finite number (got {tilt!r})")
+    if not angle_is_kept(tilt):
+        raise InputError(
+            f"--tilt: {tilt!r} degrees is too large to be a turn: rounding loses it "
+            f"(at most {LARGEST_ANGLE_DEG:g} degrees)"
+        )
     check_run_settings(duration, tilt_axis, gravity, max_steps, rtol)
     if omega is not None:
         vector_value(omega, "--omega")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import difflib
+import math
 import re
 from typing import Any
 
@@ -62,11 +63,11 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         hint = difflib.get_close_matches(field, known_fields or [], n=1)
         return "unknown field" + (f" (did you mean '{hint[0]}'?)" if hint else "")
     if kind == "greater_than":
-        return f"must be greater than {ctx.get('gt'):g} (got {value!r})"
+        return f"must be greater than {ctx.get('gt'):g} (got {_show(value)})"
     if tuple(error["loc"]) == ("parts",) and kind in ("too_short", "list_type"):
         return f"must be a non-empty list of parts (got {_show(value)})"
     if kind == "finite_number":
-        return f"must be a finite number (got {value!r})"
+        return f"must be a finite number (got {_show(value)})"
     if kind in ("float_type", "float_parsing", "int_type"):
         return f"must be a number (got {_show(value)})"
     if kind in ("too_short", "too_long"):
@@ -99,6 +100,8 @@ def _show(value: Any) -> str:
     list or mapping (a value shared through YAML aliases may stand for millions)."""
     import reprlib
 
+    if isinstance(value, int) and value.bit_length() > 64:  # too long to print (or to convert)
+        return f"an integer of {int(value.bit_length() * math.log10(2)) + 1} digits"
     shorter = reprlib.Repr()
     shorter.maxlevel, shorter.maxlist, shorter.maxdict, shorter.maxstring, shorter.maxother = 3, 4, 4, 40, 40
     text = shorter.repr(value)

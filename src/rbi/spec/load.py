@@ -5,6 +5,7 @@ from __future__ import annotations
 import contextlib
 import gc
 import os
+import re
 import stat
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -162,8 +163,41 @@ def check_spec_text(text: str, label: str) -> str:
     return text
 
 
+_SURROGATE_ESCAPE = re.compile(r"\\[uU]0{0,4}[dD][89a-fA-F][0-9a-fA-F]{2}")
+"""``\\ud800`` … ``\\udfff`` written as an escape: the only way a lone surrogate gets into a spec."""
+
+
+def refuse_lone_surrogates(value: Any, path: str, where: str = "") -> None:
+    """InputError naming the field when a string (key or value) holds a lone surrogate: half of a
+    UTF-16 pair, not a character, that no terminal, JSON or CSV writer can encode."""
+    stack = [(value, where)]
+    while stack:
+        item, at = stack.pop()
+        if isinstance(item, dict):
+            for key, child in item.items():
+                stack.append((key, at))
+                stack.append((child, f"{at}.{key}" if at else str(key)))
+        elif isinstance(item, list):
+            stack.extend((child, f"{at}[{i}]") for i, child in enumerate(item))
+        elif isinstance(item, str) and any("\ud800" <= c <= "\udfff" for c in item):
+            bad = next(c for c in item if "\ud800" <= c <= "\udfff")
+            raise InputError(
+                f"{path}: {at.encode('ascii', 'backslashreplace').decode() or 'text'}: holds a lone "
+                f"surrogate \\u{ord(bad):04x} (half of a UTF-16 pair, not a character); write the "
+                "character itself or its full pair"
+            )
+
+
 def parse_spec_text(text: str, path: str) -> Any:
-    """Parsed YAML (or JSON) of spec text, messages prefixed with ``path``."""
+    """Parsed YAML (or JSON) of spec text, messages prefixed with ``path``; a lone surrogate
+    written as an escape is refused naming its field."""
+    parsed = _parse_spec_text(text, path)
+    if _SURROGATE_ESCAPE.search(text):
+        refuse_lone_surrogates(parsed, path)
+    return parsed
+
+
+def _parse_spec_text(text: str, path: str) -> Any:
     with paused_gc():
         parsed = _parse_json(text)
         if parsed is not _NOT_JSON:

@@ -61,15 +61,16 @@ def canonical_name(name: str) -> str | None:
     return _LOOKUP.get(_normal(name))
 
 
-def unknown_material_message(name: str) -> str:
-    """The one-line complaint for a name that is not in the table, with a suggestion."""
+def unknown_material_message(name: str, numbers_too: bool = True) -> str:
+    """The one-line complaint for a name that is not in the table, with a suggestion; a spec's
+    ``density`` also takes a number (``numbers_too``), ``rbi audit --material`` only a name."""
     names = list(MATERIAL_DENSITIES_SI) + list(ALIASES)
     hint = difflib.get_close_matches(name.strip().lower(), names, n=1, cutoff=0.6)
     suggestion = f" (did you mean '{hint[0]}'?)" if hint else ""
-    return (
-        f"unknown material {name!r}{suggestion}; give a number (mass per length³ in the file's units) "
-        f"or one of: {', '.join(MATERIAL_DENSITIES_SI)}"
+    choices = (
+        "give a number (mass per length³ in the file's units) or one of" if numbers_too else "give one of"
     )
+    return f"unknown material {name!r}{suggestion}; {choices}: {', '.join(MATERIAL_DENSITIES_SI)}"
 
 
 def density_in_units(name: str, length_unit: str, mass_unit: str) -> float:

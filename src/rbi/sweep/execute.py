@@ -4,6 +4,7 @@ way the rows reach ``on_rows`` chunk by chunk in run order."""
 from __future__ import annotations
 
 import os
+import re
 from collections import deque
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -144,6 +145,37 @@ def local_cluster(workers: int):
     _stop_http(cluster.scheduler)
     client.run(_stop_http_of_worker)
     return cluster, client, scratch
+
+
+_ADDRESS = re.compile(r"(tcp|tls)://(\[[0-9A-Fa-f:.]+\]|[A-Za-z0-9_.-]+):([0-9]{1,5})")
+_TLS_CLIENT = ("distributed.comm.tls.client.cert", "distributed.comm.tls.ca-file")
+
+
+def check_address(address: str) -> None:
+    """Refuse at once (before any file is read or connection tried) a ``--dask`` address that
+    is not ``local``, ``tcp://HOST:PORT`` or ``tls://HOST:PORT``, and a TLS address when Dask's
+    configuration holds no client certificate and CA (``distributed.comm.tls.client.cert``,
+    ``.key``, ``distributed.comm.tls.ca-file``): without them no TLS scheduler answers."""
+    from rbi.errors import InputError
+
+    if address == "local":
+        return
+    found = _ADDRESS.fullmatch(address)
+    if found is None or not 0 < int(found.group(3)) < 65536:
+        raise InputError(
+            f"--dask: {address!r} is not a scheduler address: give local, tcp://HOST:PORT or "
+            "tls://HOST:PORT (e.g. tcp://10.0.0.5:8786)"
+        )
+    if found.group(1) == "tls":
+        import dask
+
+        missing = [key for key in _TLS_CLIENT if not dask.config.get(key, None)]
+        if missing:
+            raise InputError(
+                f"--dask {address}: a TLS scheduler needs this client's certificate and the CA: set "
+                f"{' and '.join(missing)} (and distributed.comm.tls.client.key) in Dask's configuration, "
+                "e.g. DASK_DISTRIBUTED__COMM__TLS__CLIENT__CERT=client.pem"
+            )
 
 
 def connect(address: str):

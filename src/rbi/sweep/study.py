@@ -85,6 +85,10 @@ def check_settings(settings: SweepSettings) -> None:
     spin_axis_value(settings.spin_axis)
     if settings.workers is not None and not 1 <= settings.workers <= 1024:
         raise InputError(f"--workers: must be between 1 and 1024 (got {settings.workers})")
+    if settings.dask is not None:
+        from rbi.sweep.execute import check_address
+
+        check_address(settings.dask)
 
 
 def check_mass_properties(settings: SweepSettings) -> None:

@@ -1,0 +1,71 @@
+"""Bad values given to the API are refused naming the parameter: rbi.SpecError for bad input,
+TypeError for a value of the wrong type (issue 26's open doors)."""
+
+from __future__ import annotations
+
+import traceback
+
+import pytest
+
+import rbi
+from tests.conftest import BODIES
+
+
+@pytest.fixture(scope="module")
+def top():
+    return rbi.load(BODIES / "top.yaml")
+
+
+@pytest.mark.parametrize(
+    "settings, name",
+    [
+        ({"spin": True}, "spin"),
+        ({"spin": 10.0, "duration": "1"}, "duration"),
+        ({"spin": 10.0, "tilt_deg": False}, "tilt_deg"),
+        ({"spin": 10.0, "samples": 3.0}, "samples"),
+        ({"spin": 10.0, "max_steps": True}, "max_steps"),
+    ],
+)
+def test_simulate_refuses_a_value_that_is_not_a_number_naming_it(top, settings, name):
+    with pytest.raises(TypeError, match=rf"rbi\.simulate: {name} must be"):
+        rbi.simulate(top, **{"duration": 0.01, **settings})
+
+
+def test_an_integer_too_long_to_print_is_a_spec_error():
+    with pytest.raises(rbi.SpecError, match=r"mass: must be a number \(got an integer of 5001 digits\)"):
+        rbi.load({"parts": [{"shape": "point", "mass": 10**5000, "position": [0, 0, 0]}]})
+
+
+def test_a_turn_lost_to_rounding_is_refused(top):
+    with pytest.raises(rbi.SpecError, match="too large to be a turn"):
+        top.inertia(axes=[("y", 1e300)])
+    with pytest.raises(rbi.SpecError, match="--tilt: .*too large to be a turn"):
+        rbi.simulate(top, spin=10.0, tilt_deg=1e300, duration=0.01)
+    assert top.inertia(axes=[("y", 720.0)]) == pytest.approx(top.inertia(), abs=1e-15)
+
+
+def test_a_traceback_names_spec_error():
+    with pytest.raises(rbi.SpecError) as caught:
+        rbi.load("/nonexistent/body.yaml")
+    text = "".join(traceback.format_exception(caught.value))
+    assert text.splitlines()[-1] == "rbi.errors.SpecError: /nonexistent/body.yaml: no such file"
+    assert rbi.SpecError.__name__ == "SpecError"
+
+
+@pytest.mark.parametrize("axis, label", [("y", "final tilt of body y"), (None, "final tilt of body z")])
+def test_the_trajectory_table_names_the_axis_it_tilts(top, axis, label):
+    from rich.console import Console
+
+    run = rbi.simulate(top, spin=10.0, spin_axis=axis, duration=0.01, samples=3)
+    console = Console(width=120, color_system=None)
+    with console.capture() as shown:
+        console.print(run)
+    assert label in shown.get() and shown.get().count("final tilt") == 1, shown.get()
+
+
+def test_a_lone_surrogate_in_a_dict_or_text_is_a_spec_error():
+    part = {"shape": "point", "mass": 1, "position": [0, 0, 0]}
+    with pytest.raises(rbi.SpecError, match=r"<dict>: name: holds a lone surrogate \\ud800"):
+        rbi.load({"name": "a\ud800", "parts": [part]})
+    with pytest.raises(rbi.SpecError, match=r"parts\[0\]\.name: holds a lone surrogate"):
+        rbi.load('{"parts": [{"name": "\\udfff", "shape": "point", "mass": 1, "position": [0, 0, 0]}]}\n')

@@ -1,0 +1,102 @@
+"""Issue 26's doors: each bad input is one line, exit 2, no traceback, naming the option or
+the file."""
+
+from __future__ import annotations
+
+import pytest
+
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
+
+TOP = BODIES / "top.yaml"
+ARM = BODIES / "two_link_arm.urdf"
+
+
+@pytest.mark.parametrize("fmt", ["table", "json", "csv"])
+def test_about_a_point_so_far_the_inertia_overflows_names_the_file(fmt):
+    one_line_exit_2(rbi("inertia", TOP, "--about", "1e200,0,0", "-f", fmt), str(TOP), "not finite")
+
+
+def test_several_files_name_the_one_that_overflowed():
+    proc = rbi("inertia", TOP, BODIES / "cubesat.yaml", "--about", "1e200,0,0", "-f", "json")
+    assert proc.returncode == 2 and f"rbi: {TOP}: result inertia is not finite" in proc.stderr
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["simulate", TOP, "--spin", "100", "--tilt", "1e300", "--duration", "0.01"], ["--tilt", "1e+300"]),
+        (["simulate", TOP, "--spin", "100", "--tilt", "-2e9", "--duration", "0.01"], ["--tilt"]),
+        (["inertia", TOP, "--rotate", "y:1e300"], ["--rotate", "1e300", "too large to be a turn"]),
+    ],
+)
+def test_a_turn_lost_to_rounding_is_refused(args, words):
+    one_line_exit_2(rbi(*args), *words)
+
+
+def test_a_turn_of_many_whole_turns_is_still_a_turn():
+    plain, turned = rbi("inertia", TOP, "-f", "json"), rbi("inertia", TOP, "--rotate", "y:3600", "-f", "json")
+    assert plain.returncode == turned.returncode == 0, turned.stderr
+
+
+def test_a_joint_given_twice_is_refused():
+    proc = rbi("audit", ARM, "--joints", "shoulder=0.1", "--joints", "shoulder=0.2")
+    one_line_exit_2(proc, "--joints", "'shoulder'", "twice")
+
+
+def test_the_material_option_asks_for_a_name_not_a_number():
+    proc = rbi("audit", ARM, "--material", "stel")
+    one_line_exit_2(proc, "--material", "did you mean 'steel'", "give one of: steel", "--density")
+    assert "give a number" not in proc.stderr
+
+
+def test_a_spec_density_still_takes_a_number_or_a_name(write_spec):
+    text = "parts:\n  - {shape: sphere, radius: 1, density: stel, center: [0, 0, 0]}\n"
+    one_line_exit_2(rbi("inertia", write_spec(text)), "density", "give a number")
+
+
+@pytest.mark.parametrize("command", ["inertia", "principal"])
+def test_a_centre_of_mass_of_rounding_noise_prints_0(command):
+    """wheel_with_holes' centre of mass is 1.75e-17, 3.14e-17 mm from its axis by rounding
+    (the body is 170 mm across): the table prints [0, 0, 0]; JSON keeps every digit."""
+    table = rbi(command, BODIES / "wheel_with_holes.yaml")
+    assert table.returncode == 0 and "centre of mass   mm     [0, 0, 0]" in table.stdout, table.stdout
+    assert "e-17" not in table.stdout
+
+
+@pytest.mark.parametrize("fmt", ["table", "json", "csv"])
+def test_a_lone_surrogate_in_a_json_spec_is_refused_naming_the_field(tmp_path, fmt):
+    path = tmp_path / "s.json"
+    path.write_text(
+        '{"name": "a", "parts": [{"name": "p\\udc00", "shape": "point", "mass": 1, "position": [0, 0, 0]}]}'
+    )
+    proc = rbi("inertia", path, "-f", fmt)
+    one_line_exit_2(proc, str(path), "parts[0].name", "lone surrogate \\udc00")
+    assert proc.stdout == ""
+
+
+def test_a_surrogate_pair_is_one_character(tmp_path):
+    path = tmp_path / "s.json"
+    path.write_text(
+        '{"name": "a\\ud83d\\ude00", "parts": [{"shape": "point", "mass": 1, "position": [0, 0, 0]}]}'
+    )
+    proc = rbi("inertia", path, "-f", "json")
+    assert proc.returncode == 0 and '"name": "a\\ud83d\\ude00"' in proc.stdout.replace("😀", "\\ud83d\\ude00")
+
+
+@pytest.mark.parametrize(
+    "address, words",
+    [
+        ("tcp://garbage", ["is not a scheduler address", "tcp://HOST:PORT"]),
+        ("tcp://", ["is not a scheduler address"]),
+        ("tcp://host:99999", ["is not a scheduler address"]),
+        ("udp://host:8786", ["is not a scheduler address"]),
+        ("tls://127.0.0.1:1", ["TLS scheduler needs this client's certificate", "client.cert"]),
+    ],
+)
+def test_a_dask_address_that_cannot_work_is_refused_before_connecting(address, words, monkeypatch):
+    """Each took 22-28 s (Dask's connect and close timeouts) and printed a traceback."""
+    for key in ("DASK_DISTRIBUTED__COMM__TLS__CLIENT__CERT", "DASK_DISTRIBUTED__COMM__TLS__CA_FILE"):
+        monkeypatch.delenv(key, raising=False)
+    proc = rbi("sweep", TOP, "--spin", "100:200:2", "--duration", "0.01", "--dask", address)
+    one_line_exit_2(proc, "--dask", *words)
