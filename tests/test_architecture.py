@@ -200,10 +200,6 @@ def long_functions(folder: Path, limit: int) -> list[tuple[str, str, int]]:
     return found
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="ruff format spread 12 cli functions past 60 lines; issue 24's CLI work shortens them (then drop this mark)",
-)
 def test_no_cli_function_is_longer_than_a_screen():
     assert long_functions(SRC / "cli", MAX_CLI_FUNCTION_LINES) == []
 

@@ -7,7 +7,19 @@ from typing import Annotated
 import typer
 
 from rbi.cli.options import SpecFile
-from rbi.cli.simulate_command import SpinAxisOption
+from rbi.cli.render import say_warnings
+from rbi.cli.run_options import (
+    DurationOption,
+    GravityOption,
+    MaxStepsOption,
+    OmegaOption,
+    RtolOption,
+    SpinAxisOption,
+    SpinOption,
+    TiltAxisOption,
+    TiltOption,
+    YesOption,
+)
 from rbi.spec.errors import InputError
 
 OutOption = Annotated[
@@ -19,30 +31,6 @@ OutOption = Annotated[
         help="The animation: .html (3D, plays offline in a browser) or .gif.",
     ),
 ]
-SpinOption = Annotated[
-    float | None,
-    typer.Option("--spin", "-s", metavar="W", help="Initial spin about the spin axis, rad/s."),
-]
-OmegaOption = Annotated[
-    str | None,
-    typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Initial angular velocity in body axes, rad/s."),
-]
-TiltOption = Annotated[
-    float,
-    typer.Option("--tilt", metavar="DEG", help="Nudge at t=0: turn the body DEG degrees about --tilt-axis."),
-]
-TiltAxisOption = Annotated[str, typer.Option("--tilt-axis", metavar="x|y", help="World axis of the nudge.")]
-GravityOption = Annotated[
-    float | None, typer.Option("--gravity", "-g", metavar="G", help="Gravity in m/s² (default 9.81).")
-]
-DurationOption = Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")]
-RtolOption = Annotated[
-    float | None, typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (default 1e-12).")
-]
-MaxStepsOption = Annotated[
-    int | None, typer.Option("--max-steps", metavar="N", help="Most integration steps the run may take.")
-]
-YesOption = Annotated[bool, typer.Option("--yes", "-y", help="Run even past the estimated step budget.")]
 SpeedOption = Annotated[
     float,
     typer.Option("--speed", metavar="X", help="Playback speed the page starts at (0.1–2; 1 = real time)."),
@@ -78,22 +66,17 @@ def animate(
       rbi animate top_bolted.yaml --spin 200 --out top.html
       rbi animate top_bolted.yaml --spin 200 --duration 2 --out top.gif
     """
-    from rbi.cli.output import output_target, write_output
+    from rbi.cli.output import output_target
     from rbi.runs.animation import animation
     from rbi.runs.prepare import prepare_run
     from rbi.runs.settings import check_run_options
     from rbi.spec.load import load_body
 
     check_run_options("default", spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol)
-    if not (0.1 <= speed <= 2.0):
-        raise InputError(f"--speed: must be between 0.1 and 2 (got {speed!r})")
-    if not 1 <= fps <= 60:
-        raise InputError(f"--fps: must be between 1 and 60 (got {fps})")
+    _check_playback(speed, fps)
     target = output_target(out, "--out", ("html", "gif"), inputs=[file])
     gif_frames = _gif_frames(duration, fps) if target.format == "gif" else 0
     body = load_body(file)
-    from rbi.cli.render import say_warnings
-
     say_warnings(body.warnings)
     prepared = prepare_run(
         body,
@@ -110,26 +93,9 @@ def animate(
     )
     data, run, tilts = animation(prepared, gif_frames)
     if target.format == "html":
-        from rbi.viz.page import html_page
-
-        write_output(target, html_page(data, speed=speed))
-        shown = f"{run.t.size} keyframes"
+        shown = _write_page(target, data, run, speed)
     else:
-        from rbi.cli.progress import stderr_progress
-        from rbi.viz.frames import frame_indices, write_gif
-
-        progress = stderr_progress("gif", "frames")
-        try:
-            write_output(
-                target,
-                writer=lambda path: write_gif(
-                    data, path, fps=fps, progress=progress.update if progress else None
-                ),
-            )
-        finally:
-            if progress is not None:
-                progress.close()
-        shown = f"{frame_indices(run.t, fps).size} frames"
+        shown = _write_gif(target, data, run, fps)
     print(f"{out}: {shown} over {duration:g} s, largest tilt of the spin axis {float(tilts.max()):.3g}°")
 
 
@@ -147,3 +113,39 @@ def _gif_frames(duration: float, fps: int) -> int:
             "or write .html"
         )
     return frames
+
+
+def _check_playback(speed: float, fps: int) -> None:
+    if not (0.1 <= speed <= 2.0):
+        raise InputError(f"--speed: must be between 0.1 and 2 (got {speed!r})")
+    if not 1 <= fps <= 60:
+        raise InputError(f"--fps: must be between 1 and 60 (got {fps})")
+
+
+def _write_page(target, data: dict, run, speed: float) -> str:
+    """Write the 3D page at ``target``; what it holds (``N keyframes``)."""
+    from rbi.cli.output import write_output
+    from rbi.viz.page import html_page
+
+    write_output(target, html_page(data, speed=speed))
+    return f"{run.t.size} keyframes"
+
+
+def _write_gif(target, data: dict, run, fps: int) -> str:
+    """Write the GIF at ``target`` with a progress bar on a terminal; what it holds (``N frames``)."""
+    from rbi.cli.output import write_output
+    from rbi.cli.progress import stderr_progress
+    from rbi.viz.frames import frame_indices, write_gif
+
+    progress = stderr_progress("gif", "frames")
+    try:
+        write_output(
+            target,
+            writer=lambda path: write_gif(
+                data, path, fps=fps, progress=progress.update if progress else None
+            ),
+        )
+    finally:
+        if progress is not None:
+            progress.close()
+    return f"{frame_indices(run.t, fps).size} frames"

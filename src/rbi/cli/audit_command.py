@@ -13,14 +13,8 @@ from typing import Annotated
 
 import typer
 
-from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.options import FormatOption, OutputFormat, RobotFile
 
-RobotFileArgument = Annotated[
-    str,
-    typer.Argument(
-        help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False, metavar="ROBOT_FILE"
-    ),
-]
 PackagePathOption = Annotated[
     list[str] | None,
     typer.Option(
@@ -91,7 +85,7 @@ OutOption = Annotated[
 
 
 def audit(
-    file: RobotFileArgument,
+    file: RobotFile,
     package_path: PackagePathOption = None,
     geometry: GeometryOption = "collision",
     density: DensityOption = None,
@@ -246,12 +240,38 @@ def _table(report) -> None:
     )
     moments = np.linalg.eigvalsh(total.inertia_about_com)
     print(f"  principal moments about the centre of mass: {', '.join(number(v, 6) for v in moments)} kg·m²")
+    _joints_table(report)
     for note in report.notes:
         say(f"note: {note}")
     errors = sum(each.has_error for each in report.links)
     warnings = sum(any(f.level == "warning" for f in each.flags) for each in report.links)
     say(f"{errors} {word}(s) with errors (flag!), {warnings} with warnings")
     sys.stdout.flush()
+
+
+def _joints_table(report) -> None:
+    """Each joint's holding torque against gravity, its declared effort limit and the margin."""
+    if not report.joints:
+        return
+    from rbi.cli.render import number, print_table, terminal_safe
+    from rbi.cli.tables import titled
+
+    table = titled("joints: torque that holds the pose (N·m; N for prismatic)")
+    for heading in ("joint", "type", "torque", "limit", "margin", "flags"):
+        table.add_column(heading, justify="left" if heading in ("joint", "type", "flags") else "right")
+    for each in report.joints:
+        table.add_row(
+            "-" if each.name is None else each.name,
+            each.type,
+            number(each.torque, 6),
+            "-" if each.effort_limit is None else number(each.effort_limit, 6),
+            "-" if each.margin is None else number(each.margin, 6),
+            " ".join(flag["code"] for flag in each.flags) or "ok",
+        )
+    print_table(table)
+    for each in report.joints:
+        for flag in each.flags:
+            print(terminal_safe(f"{flag['level']}: joint {each.name}: {flag['code']}: {flag['message']}"))
 
 
 def _fix_text(report, file: str, out: str | None) -> None:

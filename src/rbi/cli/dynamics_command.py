@@ -83,7 +83,6 @@ def dynamics(
             f"--about: the point is too far from the body: the inertia about it overflows "
             f"double precision (got {about!r})"
         )
-    labels = body.labels
     if inverse:
         motion, loads = _inverse(props, I_point, r, w, about_label, alpha, accel)
     else:
@@ -101,35 +100,33 @@ def dynamics(
         **motion,
         **loads,
     }
+    held = not inverse and force is None and about_label != "com"
+    emit(format.value, result, lambda: _table(body, result, held))
 
-    def table():
-        from rbi.cli import tables
 
-        given, found = ("given", "result") if inverse else ("result", "given")
-        held = not inverse and force is None and about_label != "com"
-        force_note = "needed to hold the point" if held else found
-        return tables.quantities(
-            f"{body.name or body.path} — Newton–Euler about {about_label} ({result['mode']})",
-            [
-                ("mass", labels["mass"], number(props.mass, 8)),
-                (f"about ({about_label})", labels["length"], tables.vector(point)),
-                ("ω", "rad/s", tables.vector(w)),
-                (f"α ({given})", "rad/s²", tables.vector(result["alpha"])),
-                (
-                    f"a of {about_label} ({'given' if held else given})",
-                    f"{labels['length']}/s²",
-                    tables.vector(result["point_acceleration"]),
-                ),
-                (f"force ({force_note})", _load_unit(body, 1), tables.vector(result["force"])),
-                (
-                    f"torque about {about_label} ({found})",
-                    _load_unit(body, 2),
-                    tables.vector(result["torque"]),
-                ),
-            ],
-        )
+def _table(body, result: dict, held: bool):
+    """The table of a Newton–Euler result; ``held``: the --about point was held (a pivot)."""
+    from rbi.cli import tables
 
-    emit(format.value, result, table)
+    labels, about_label = body.labels, result["about_label"]
+    given, found = ("given", "result") if result["mode"] == "inverse" else ("result", "given")
+    force_note = "needed to hold the point" if held else found
+    return tables.quantities(
+        f"{body.name or body.path} — Newton–Euler about {about_label} ({result['mode']})",
+        [
+            ("mass", labels["mass"], number(result["mass"], 8)),
+            (f"about ({about_label})", labels["length"], tables.vector(result["about"])),
+            ("ω", "rad/s", tables.vector(result["omega"])),
+            (f"α ({given})", "rad/s²", tables.vector(result["alpha"])),
+            (
+                f"a of {about_label} ({'given' if held else given})",
+                f"{labels['length']}/s²",
+                tables.vector(result["point_acceleration"]),
+            ),
+            (f"force ({force_note})", _load_unit(body, 1), tables.vector(result["force"])),
+            (f"torque about {about_label} ({found})", _load_unit(body, 2), tables.vector(result["torque"])),
+        ],
+    )
 
 
 def _inverse(props, I_point, r, w, about_label: str, alpha, accel):

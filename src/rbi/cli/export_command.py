@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import sys
 from enum import Enum
+from pathlib import Path
 from typing import Annotated
 
 import typer
@@ -17,28 +18,33 @@ class ExportTarget(str, Enum):
     sdf = "sdf"
 
 
+ToOption = Annotated[
+    ExportTarget,
+    typer.Option("--to", "-t", help="Robot description format: urdf, mjcf or sdf.", show_default=False),
+]
+DocumentOption = Annotated[
+    bool,
+    typer.Option(
+        "--document",
+        help="Print a whole minimal document (robot/link, "
+        "mujoco/worldbody/body, sdf/model/link) instead of the bare element.",
+    ),
+]
+DiagonalOption = Annotated[
+    bool,
+    typer.Option(
+        "--diagonal",
+        help="MJCF only: principal moments (diaginertia) and the "
+        "principal frame (quat) instead of fullinertia.",
+    ),
+]
+
+
 def export(
     file: SpecFile,
-    to: Annotated[
-        ExportTarget,
-        typer.Option("--to", "-t", help="Robot description format: urdf, mjcf or sdf.", show_default=False),
-    ],
-    document: Annotated[
-        bool,
-        typer.Option(
-            "--document",
-            help="Print a whole minimal document (robot/link, "
-            "mujoco/worldbody/body, sdf/model/link) instead of the bare element.",
-        ),
-    ] = False,
-    diagonal: Annotated[
-        bool,
-        typer.Option(
-            "--diagonal",
-            help="MJCF only: principal moments (diaginertia) and the "
-            "principal frame (quat) instead of fullinertia.",
-        ),
-    ] = False,
+    to: ToOption,
+    document: DocumentOption = False,
+    diagonal: DiagonalOption = False,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """The <inertial> element (mass, centre of mass, inertia about it) in SI units: kg, m, kg·m².
@@ -48,8 +54,6 @@ def export(
       rbi export robot_link.yaml --to urdf
       rbi export robot_link.yaml --to mjcf --diagonal --document
     """
-    from pathlib import Path
-
     from rbi.cli.export_format import export_xml
     from rbi.cli.render import emit, to_csv
     from rbi.spec.errors import InputError
@@ -64,15 +68,6 @@ def export(
     body = convert_body(source, "m", "kg")
     props = body.props
     name = body.name or ("body" if file == "-" else Path(file).stem)
-    comment = (
-        f"rbi export of {Path(source.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, "
-        f"body axes"
-        + (
-            f"; spec units were {source.length_unit}, {source.mass_unit}"
-            if (source.length_unit, source.mass_unit) != ("m", "kg")
-            else ""
-        )
-    )
     xml = export_xml(
         to.value,
         props.mass,
@@ -81,7 +76,7 @@ def export(
         name=name,
         document=document,
         diagonal=diagonal,
-        comment=comment,
+        comment=_comment(source),
     )
     _warn_if_singular(props.inertia_com)
     result = {
@@ -104,6 +99,19 @@ def export(
         sys.stdout.write(to_csv([{k: v for k, v in result.items() if k != "xml"}]))
     else:
         emit(format.value, result, lambda: None)
+
+
+def _comment(source) -> str:
+    """The comment above the element: where it came from, in which units."""
+    return (
+        f"rbi export of {Path(source.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, "
+        f"body axes"
+        + (
+            f"; spec units were {source.length_unit}, {source.mass_unit}"
+            if (source.length_unit, source.mass_unit) != ("m", "kg")
+            else ""
+        )
+    )
 
 
 def _warn_if_singular(inertia) -> None:

@@ -8,34 +8,32 @@ from typing import Annotated
 
 import typer
 
-from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.options import FormatOption, OutputFormat, RobotFile
 from rbi.spec.errors import InputError
+
+LinkOption = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--link", "-l", metavar="NAME", help="Import only this link (MJCF: body); repeat for several."
+    ),
+]
+OutOption = Annotated[
+    str | None,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="DIR|FILE.yaml",
+        help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
+        "link is imported. Without it one spec is printed: the link given with --link, or the whole "
+        "robot (one part per link, placed at the zero configuration).",
+    ),
+]
 
 
 def import_robot(
-    file: Annotated[
-        str,
-        typer.Argument(
-            help="Robot description: .urdf, .sdf, or MJCF (.xml).", show_default=False, metavar="FILE"
-        ),
-    ],
-    link: Annotated[
-        list[str] | None,
-        typer.Option(
-            "--link", "-l", metavar="NAME", help="Import only this link (MJCF: body); repeat for several."
-        ),
-    ] = None,
-    out: Annotated[
-        str | None,
-        typer.Option(
-            "--out",
-            "-o",
-            metavar="DIR|FILE.yaml",
-            help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
-            "link is imported. Without it one spec is printed: the link given with --link, or the whole "
-            "robot (one part per link, placed at the zero configuration).",
-        ),
-    ] = None,
+    file: RobotFile,
+    link: LinkOption = None,
+    out: OutOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Turn each link of a robot file into an rbi spec: its mass, centre of mass and inertia as a custom part.

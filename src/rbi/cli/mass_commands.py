@@ -132,7 +132,7 @@ def momentum(
       rbi momentum top_bolted.yaml --omega 1,0,200 --about pivot --format json
       rbi momentum rocket.yaml --omega 0,0,10 --velocity 0,0,50
     """
-    from rbi.cli.mass_reports import header, load_body, title
+    from rbi.cli.mass_reports import header, load_body
     from rbi.core.dynamics import angle_between_deg, angular_momentum_about_point, kinetic_energy
 
     w = np.array(parse_vector(omega, "--omega"))
@@ -155,23 +155,34 @@ def momentum(
         "kinetic_energy": energy,
     }
 
-    def table():
-        from rbi.cli import tables
-        from rbi.cli.render import body_size
+    emit(format.value, result, lambda: _momentum_table(body, result, about_label))
 
-        labels = body.labels
-        return tables.quantities(
-            title(body, f"momentum about {about_label}"),
-            [
-                ("mass", labels["mass"], number(props.mass, 8)),
-                ("centre of mass", labels["length"], tables.vector(props.com, body_size(props))),
-                (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body.props))),
-                ("ω (body axes)", "rad/s", tables.vector(w)),
-                ("v of centre of mass", labels["velocity"], tables.vector(v_com)),
-                ("angular momentum h", labels["angular_momentum"], tables.vector(h)),
-                ("angle between h and ω", "deg", number(result["angle_deg"], 6)),
-                ("kinetic energy", labels["energy"], number(energy, 8)),
-            ],
-        )
 
-    emit(format.value, result, table)
+def _momentum_table(body, result: dict, about_label: str):
+    """The table of ``rbi momentum``'s result."""
+    from rbi.cli import tables
+    from rbi.cli.mass_reports import title
+    from rbi.cli.render import body_size
+
+    labels = body.labels
+    return tables.quantities(
+        title(body, f"momentum about {about_label}"),
+        [
+            ("mass", labels["mass"], number(result["mass"], 8)),
+            (
+                "centre of mass",
+                labels["length"],
+                tables.vector(result["center_of_mass"], body_size(body.props)),
+            ),
+            (
+                f"about ({about_label})",
+                labels["length"],
+                tables.vector(result["about"], body_size(body.props)),
+            ),
+            ("ω (body axes)", "rad/s", tables.vector(result["omega"])),
+            ("v of centre of mass", labels["velocity"], tables.vector(result["com_velocity"])),
+            ("angular momentum h", labels["angular_momentum"], tables.vector(result["angular_momentum"])),
+            ("angle between h and ω", "deg", number(result["angle_deg"], 6)),
+            ("kinetic energy", labels["energy"], number(result["kinetic_energy"], 8)),
+        ],
+    )

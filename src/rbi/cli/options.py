@@ -36,6 +36,12 @@ SpecFiles = Annotated[
         metavar="FILE...",
     ),
 ]
+RobotFile = Annotated[
+    str,
+    typer.Argument(
+        help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False, metavar="ROBOT_FILE"
+    ),
+]
 AboutOption = Annotated[
     str,
     typer.Option(

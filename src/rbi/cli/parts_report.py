@@ -22,11 +22,43 @@ def parts_of(file: str):
     from rbi.cli.each_file import FileReport
     from rbi.cli.mass_reports import load_body
     from rbi.cli.terminal import say
+    from rbi.core.inertia import principal_axes
+
+    body = load_body(file)
+    rows = _part_rows(body)
+    if body.spec is not None:
+        from rbi.spec.translate import mesh_notes
+
+        for note in mesh_notes(body.spec):
+            say(f"warning: {body.path}: {note}")
+    volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
+    every_part_has_volume = all(row["volume"] is not None for row in rows)
+    total = {
+        "volume": volume if any(row["volume"] is not None for row in rows) else None,
+        "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
+        "principal_moments": principal_axes(body.props.inertia_com)[0],
+    }
+    result = {
+        "name": body.name,
+        "units": body.units,
+        "warnings": list(body.warnings),
+        "mass": body.props.mass,
+        "center_of_mass": body.props.com,
+        "volume": total["volume"],
+        "principal_moments": total["principal_moments"],
+        "parts": rows,
+    }
+    summary = {key: value for key, value in result.items() if key != "warnings"} | {"parts": len(rows)}
+    return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
+
+
+def _part_rows(body) -> list[dict]:
+    """One row per part: its mass, share, centre of mass, inertia about it, principal moments,
+    share of the inertia, volume and the density they imply (file units and SI)."""
     from rbi.core.inertia import inertia_shares, principal_axes
     from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
     from rbi.spec.volumes import part_volume
 
-    body = load_body(file)
     spec_parts = list(body.spec.parts) if body.spec is not None else []
     shares = inertia_shares(body.elements, body.props)
     to_si = MASS_UNITS_IN_KG[body.mass_unit] / LENGTH_UNITS_IN_M[body.length_unit] ** 3
@@ -51,38 +83,7 @@ def parts_of(file: str):
                 "implied_density_si": None if density is None else density * to_si,
             }
         )
-    if body.spec is not None:
-        from rbi.spec.translate import mesh_notes
-
-        for note in mesh_notes(body.spec):
-            say(f"warning: {body.path}: {note}")
-    volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
-    every_part_has_volume = all(row["volume"] is not None for row in rows)
-    total = {
-        "volume": volume if any(row["volume"] is not None for row in rows) else None,
-        "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
-        "principal_moments": principal_axes(body.props.inertia_com)[0],
-    }
-    result = {
-        "name": body.name,
-        "units": body.units,
-        "warnings": list(body.warnings),
-        "mass": body.props.mass,
-        "center_of_mass": body.props.com,
-        "volume": total["volume"],
-        "principal_moments": total["principal_moments"],
-        "parts": rows,
-    }
-    summary = {
-        "name": body.name,
-        "units": body.units,
-        "mass": body.props.mass,
-        "center_of_mass": body.props.com,
-        "volume": total["volume"],
-        "principal_moments": total["principal_moments"],
-        "parts": len(rows),
-    }
-    return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
+    return rows
 
 
 def _table(body, rows, total):
@@ -94,35 +95,10 @@ def _table(body, rows, total):
     labels = body.labels
     name = body.name or body.path
     names = [tables.plain_text(row["name"]) for row in rows]
-
-    def table(what, headers, cells, total_row):
-        """Numbers never wrap (a column of them is as wide as its widest number); part names
-        and shapes wrap in a narrow terminal."""
-        from rich.text import Text
-
-        t = tables.titled(f"{name}: parts — {what}")
-        t.add_column("part", overflow="fold")
-        for header in headers:
-            numbers = not header.startswith("shape")
-            # the label over its unit (a rich Text: rbi's own words, never read as markup)
-            t.add_column(
-                Text(header, justify="right" if numbers else "left"),
-                justify="right" if numbers else "left",
-                no_wrap=numbers,
-                overflow="fold",
-            )
-        for part_name, row in zip(names, cells):
-            t.add_row(part_name, *row)
-        t.add_section()
-        t.add_row("total", *total_row)
-        return t
-
-    def signed_volume(row):
-        return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])
-
     length = labels["length"]
-    masses = table(
-        "mass and volume",
+    masses = _titled_table(
+        f"{name}: parts — mass and volume",
+        names,
         (
             "shape",
             f"mass\n[{labels['mass']}]",
@@ -135,7 +111,7 @@ def _table(body, rows, total):
                 row["shape"] + (" (hole)" if row["hole"] else ""),
                 number(row["mass"]),
                 number(100 * row["mass_share"], 4),
-                signed_volume(row),
+                _signed_volume(row),
                 number(row["implied_density"], 4),
             )
             for row in rows
@@ -148,8 +124,9 @@ def _table(body, rows, total):
             number(total["mean_density"], 4),
         ),
     )
-    places = table(
-        "centre of mass",
+    places = _titled_table(
+        f"{name}: parts — centre of mass",
+        names,
         (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
         [
             (*(number(c) for c in row["center_of_mass"]), number(100 * row["inertia_share"], 4))
@@ -161,10 +138,42 @@ def _table(body, rows, total):
         [total["principal_moments"], *(row["principal_moments"] for row in rows)]
     )
     unit = f"[{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
-    moments = table(
-        "principal moments (own CoM)",
+    moments = _titled_table(
+        f"{name}: parts — principal moments (own CoM)",
+        names,
         (f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
         [tuple(number(m / scale, 5) for m in row["principal_moments"]) for row in rows],
         tuple(number(m / scale, 5) for m in total["principal_moments"]),
     )
     return tables.stack(masses, places, moments)
+
+
+def _titled_table(title: str, names: list, headers, cells, total_row):
+    """Numbers never wrap (a column of them is as wide as its widest number); part names
+    and shapes wrap in a narrow terminal."""
+    from rich.text import Text
+
+    from rbi.cli import tables
+
+    t = tables.titled(title)
+    t.add_column("part", overflow="fold")
+    for header in headers:
+        numbers = not header.startswith("shape")
+        # the label over its unit (a rich Text: rbi's own words, never read as markup)
+        t.add_column(
+            Text(header, justify="right" if numbers else "left"),
+            justify="right" if numbers else "left",
+            no_wrap=numbers,
+            overflow="fold",
+        )
+    for part_name, row in zip(names, cells):
+        t.add_row(part_name, *row)
+    t.add_section()
+    t.add_row("total", *total_row)
+    return t
+
+
+def _signed_volume(row) -> str:
+    from rbi.cli.render import number
+
+    return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])

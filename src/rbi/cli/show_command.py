@@ -9,18 +9,20 @@ import typer
 from rbi.cli.extras import needs
 from rbi.cli.options import SpecFile
 
+OutOption = Annotated[
+    str,
+    typer.Option(
+        "--out",
+        "-o",
+        metavar="FILE.png|FILE.svg|FILE.html",
+        help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
+    ),
+]
+
 
 def show(
     file: SpecFile,
-    out: Annotated[
-        str,
-        typer.Option(
-            "--out",
-            "-o",
-            metavar="FILE.png|FILE.svg|FILE.html",
-            help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
-        ),
-    ],
+    out: OutOption,
 ) -> None:
     """Draw the body as specified: every part in place (holes red and translucent), the centre
     of mass, the principal axes about it (lengths in proportion to their moments, labelled

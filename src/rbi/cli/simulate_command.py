@@ -11,9 +11,20 @@ import typer
 
 from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import emit, number
+from rbi.cli.render import emit, number, refuse_non_finite
+from rbi.cli.run_options import (
+    DurationOption,
+    GravityOption,
+    MaxStepsOption,
+    OmegaOption,
+    RtolOption,
+    SpinAxisOption,
+    SpinOption,
+    TiltAxisOption,
+    TiltOption,
+    YesOption,
+)
 from rbi.runs.settings import MAX_SAMPLES, check_run_options, check_run_settings  # noqa: F401  (re-exported)
-from rbi.sim.budget import DEFAULT_MAX_STEPS
 
 PLOT_FORMATS = ("png", "svg", "pdf")
 
@@ -26,50 +37,6 @@ METHOD_HELP = (
     "form (free body; axisymmetric top with its centre of mass on the axis)."
 )
 
-SpinOption = Annotated[
-    float | None,
-    typer.Option(
-        "--spin", "-s", metavar="W", help="Initial spin about the spin axis (see --spin-axis), rad/s."
-    ),
-]
-SpinAxisOption = Annotated[
-    str | None,
-    typer.Option(
-        "--spin-axis",
-        metavar="x|y|z|X,Y,Z",
-        help="The body-frame axis --spin turns about, whose tilt from vertical and precession are reported. "
-        "Default: the spec's spin_axis, else the body's symmetry axis (pointing from the pivot to the centre of "
-        "mass), else z.",
-    ),
-]
-OmegaOption = Annotated[
-    str | None,
-    typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Initial angular velocity in body axes, rad/s."),
-]
-TiltOption = Annotated[
-    float,
-    typer.Option(
-        "--tilt",
-        metavar="DEG",
-        help="Nudge at t=0: turn the body DEG degrees about the world y axis "
-        "(see --tilt-axis). The tilt reported is the spin axis's angle "
-        "from vertical.",
-    ),
-]
-TiltAxisOption = Annotated[
-    str,
-    typer.Option("--tilt-axis", metavar="x|y", help="World axis the nudge (--tilt) turns the body about."),
-]
-GravityOption = Annotated[
-    float | None,
-    typer.Option(
-        "--gravity",
-        "-g",
-        metavar="G",
-        help="Gravity's magnitude in m/s² (SI, whatever the spec's units); 0 switches it off. Default 9.81.",
-    ),
-]
-DurationOption = Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")]
 SamplesOption = Annotated[
     int,
     typer.Option(
@@ -86,39 +53,12 @@ OutOption = Annotated[
     ),
 ]
 MethodOption = Annotated[str, typer.Option("--method", "-m", metavar="NAME", help=METHOD_HELP)]
-RtolOption = Annotated[
-    float | None,
-    typer.Option(
-        "--rtol",
-        metavar="RTOL",
-        help="Tolerance of the integrator (default 1e-12 for default, 1e-8 for rk45/dop853): smaller "
-        "is more accurate and slower.",
-    ),
-]
 ErrorEstimateOption = Annotated[
     bool,
     typer.Option(
         "--error-estimate/--no-error-estimate",
         help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
         "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).",
-    ),
-]
-MaxStepsOption = Annotated[
-    int | None,
-    typer.Option(
-        "--max-steps",
-        metavar="N",
-        help="Most integration steps this run may take (default "
-        f"{DEFAULT_MAX_STEPS:.0e}); a run estimated to need more is refused "
-        "before it starts.",
-    ),
-]
-YesOption = Annotated[
-    bool,
-    typer.Option(
-        "--yes",
-        "-y",
-        help="Run even when the run is estimated to exceed the step budget (the budget still stops it).",
     ),
 ]
 PlotOption = Annotated[
@@ -164,43 +104,23 @@ def simulate(
       rbi simulate top_bolted.yaml --spin 200 --duration 2 --out run.csv
       rbi simulate tbar.yaml --omega 0.01,0.01,3 --duration 20 --plot flip.png
     """
-    from rbi.cli.output import check_distinct, output_target, write_output
+    from rbi.cli.output import write_output
     from rbi.runs.settings import check_samples
 
     check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol)
     check_samples(samples)
-    out_target = (
-        None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
-    )
-    plot_target = None if plot is None else output_target(plot, "--plot", PLOT_FORMATS, inputs=[file])
-    check_distinct([out_target, plot_target])
-    if out_target is not None and out_target.is_stdout and format != OutputFormat.csv:
+    out_target, plot_target = _targets(file, out, plot)
+    if out_target is not None and out_target.is_stdout:
         format = OutputFormat.csv  # the trajectory is what goes to standard output
-    if plot is not None:
-        from rbi.viz.plots import require_matplotlib
-
-        require_matplotlib()
-    settings = dict(
-        spin=spin,
-        omega=omega,
-        tilt_deg=tilt,
-        tilt_axis=tilt_axis,
-        gravity=gravity,
-        duration=duration,
-        method=method,
-        rtol=rtol,
-        max_steps=max_steps,
-        check_budget=not yes,
-        spin_axis=spin_axis,
-    )
+    settings = dict(spin=spin, omega=omega, tilt_deg=tilt, tilt_axis=tilt_axis, spin_axis=spin_axis)
+    settings |= dict(gravity=gravity, duration=duration, method=method, rtol=rtol)
+    settings |= dict(max_steps=max_steps, check_budget=not yes)
     body, run = _run(file, settings, samples, error_estimate, format)
     trajectory_csv = run.to_csv() if out is not None or format == OutputFormat.csv else ""
     result = dict(run.summary)
     if out is not None and not out_target.is_stdout:
         result["out"] = out
     if format != OutputFormat.csv:
-        from rbi.cli.render import refuse_non_finite
-
         refuse_non_finite(result, file)
     if out_target is not None and not out_target.is_stdout:
         write_output(out_target, trajectory_csv)
@@ -210,6 +130,23 @@ def simulate(
         sys.stdout.write(trajectory_csv)
         return
     emit(format.value, result, lambda: _table(body._loaded, result))
+
+
+def _targets(file: str, out: str | None, plot: str | None):
+    """The checked ``--out`` and ``--plot`` targets (None when not asked for); matplotlib is
+    required before any work when a plot is."""
+    from rbi.cli.output import check_distinct, output_target
+
+    out_target = (
+        None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
+    )
+    plot_target = None if plot is None else output_target(plot, "--plot", PLOT_FORMATS, inputs=[file])
+    check_distinct([out_target, plot_target])
+    if plot is not None:
+        from rbi.viz.plots import require_matplotlib
+
+        require_matplotlib()
+    return out_target, plot_target
 
 
 def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: OutputFormat):
@@ -309,9 +246,19 @@ def _table(body, result: dict):
 
     from rbi.cli import tables
 
-    labels = body.labels
+    return tables.stack(
+        tables.quantities(f"{body.name or body.path} — simulate", _motion_rows(result)),
+        tables.quantities("Accuracy and cost", _accuracy_rows(body, result)),
+        Text("\n".join(_notes(result))),
+    )
+
+
+def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
+    """(quantity, unit, value) rows of the motion: scene, method, final state, tilt, precession."""
+    from rbi.cli import tables
+
     final = result["final"]
-    motion = [
+    return [
         ("scene", "", result["scene"]),
         ("method", "", result["method"]),
         ("duration, samples", "s", f"{number(result['duration'])}, {result['samples']}"),
@@ -333,6 +280,14 @@ def _table(body, result: dict):
             else number(result["mean_precession_rate_deg_s"]),
         ),
     ]
+
+
+def _accuracy_rows(body, result: dict) -> list[tuple[str, str, str]]:
+    """(quantity, unit, value) rows of the run's accuracy (conserved quantities' drift, error
+    estimate) and cost (steps, evaluations, time)."""
+    from rbi.cli import tables
+
+    labels = body.labels
     names = {
         "energy": "energy",
         "h_vertical": "vertical h about pivot",
@@ -359,6 +314,11 @@ def _table(body, result: dict):
     ]
     if result["load_seconds"] > 0.05:
         accuracy.append(("loading the compiled kernel", "s", number(result["load_seconds"], 3)))
+    return accuracy
+
+
+def _notes(result: dict) -> list[str]:
+    """The sentences under the tables: integrator, stability, closed form, file written."""
     notes = [f"Integrator: {result['integrator']}.", f"Stability: {result['stability']['verdict']}."]
     facts = result.get("closed_form")
     if facts and facts.get("kind") == "Lagrange top":
@@ -379,8 +339,4 @@ def _table(body, result: dict):
         )
     if "out" in result:
         notes.append(f"Trajectory written to {result['out']}.")
-    return tables.stack(
-        tables.quantities(f"{body.name or body.path} — simulate", motion),
-        tables.quantities("Accuracy and cost", accuracy),
-        Text("\n".join(notes)),
-    )
+    return notes

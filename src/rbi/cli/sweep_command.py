@@ -10,8 +10,8 @@ import typer
 
 from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import emit, number
-from rbi.cli.simulate_command import SpinAxisOption
+from rbi.cli.render import emit, number, to_csv
+from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
 from rbi.sim.budget import DEFAULT_MAX_STEPS
 from rbi.spec.errors import InputError
 from rbi.sweep.study import MAX_ROWS_SHOWN
@@ -49,7 +49,6 @@ RunsOption = Annotated[
 SeedOption = Annotated[
     int, typer.Option("--seed", metavar="S", help="Seed of the draws (same seed, same rows).")
 ]
-DurationOption = Annotated[float, typer.Option("--duration", "-t", metavar="T", help="Simulated time, s.")]
 SamplesOption = Annotated[
     int,
     typer.Option(
@@ -58,13 +57,6 @@ SamplesOption = Annotated[
 ]
 RtolOption = Annotated[
     float, typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (as rbi simulate).")
-]
-GravityOption = Annotated[
-    float | None, typer.Option("--gravity", "-g", metavar="G", help="Gravity in m/s² (default 9.81).")
-]
-TiltAxisOption = Annotated[
-    str,
-    typer.Option("--tilt-axis", metavar="x|y", help="World axis the nudge (--tilt) turns the body about."),
 ]
 MaxStepsOption = Annotated[
     int | None,
@@ -124,6 +116,21 @@ YesOption = Annotated[
 ]
 
 
+UNITS = {
+    "spin": "rad/s",
+    "tilt_deg": "deg",
+    "max_tilt_deg": "deg",
+    "final_tilt_deg": "deg",
+    "min_tilt_deg": "deg",
+    "precession_rate_deg_s": "deg/s",
+    "energy_drift": "relative",
+    "axis_1_tilt_deg": "deg",
+    "axis_2_tilt_deg": "deg",
+    "axis_3_tilt_deg": "deg",
+}
+"""The unit shown under each swept or summary column."""
+
+
 def sweep(
     file: SpecFile,
     spin: SpinOption = "0",
@@ -159,32 +166,48 @@ def sweep(
       rbi sweep top_bolted.yaml --spin 200 --vary 'parts.bolt.mass=normal(0.02,0.002)' --runs 500
       rbi sweep top_bolted.yaml --mass-properties --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
-    from rbi.cli.output import check_distinct, output_target
     from rbi.spec.load import read_yaml
-    from rbi.sweep.study import Study, SweepSettings, check_mass_properties, check_settings, require
+    from rbi.sweep.study import Study, SweepSettings, check_mass_properties, check_settings
 
-    settings = SweepSettings(
-        spin=spin,
-        tilt=tilt,
-        vary=tuple(vary or []),
-        runs=runs,
-        seed=seed,
-        duration=duration,
-        samples=samples,
-        rtol=rtol,
-        gravity=gravity,
-        tilt_axis=tilt_axis,
-        max_steps=max_steps,
-        workers=workers,
-        dask=dask,
-        mass_properties=mass_properties,
-        yes=yes,
-        spin_axis=spin_axis,
-    )
+    grid = dict(spin=spin, tilt=tilt, vary=tuple(vary or []), runs=runs, seed=seed)
+    each_run = dict(duration=duration, samples=samples, rtol=rtol, gravity=gravity, max_steps=max_steps)
+    where = dict(workers=workers, dask=dask, mass_properties=mass_properties, yes=yes)
+    settings = SweepSettings(**grid, **each_run, **where, tilt_axis=tilt_axis, spin_axis=spin_axis)
     check_settings(settings)
     if resume and out is None:
         raise InputError("--resume: needs --out, the file of the interrupted sweep")
     check_mass_properties(settings)
+    out_target, plot_target = _targets(file, out, plot)
+    settings = _where_runs_go(settings)
+    study = Study(file, read_yaml(file), settings, rows_printed=out is None)
+    rows = _run(study, out_target, resume, out)
+    result = _result(study, rows, out, plot_target, plot)
+    if format == OutputFormat.csv:
+        sys.stdout.write(to_csv(result.get("runs", [])))
+        return
+    emit(format.value, result, lambda: _table(result, study.columns, rows, file))
+
+
+def _result(study, rows, out: str | None, plot_target, plot: str | None) -> dict:
+    """The sweep's result: its rows (when printed), the files written, the mass-properties
+    spread (--mass-properties); the map is drawn here."""
+    result = study.result(rows)
+    if out is not None:
+        result["out"] = out
+    if study.settings.mass_properties and rows is not None:
+        result["spread"] = study.spread(rows)
+    if plot_target is not None:
+        _plot(plot_target, study, rows)
+        result["plot"] = plot
+    return result
+
+
+def _targets(file: str, out: str | None, plot: str | None):
+    """The checked ``--out`` and ``--plot`` targets (None when not asked for); the optional
+    packages they need are required before any work."""
+    from rbi.cli.output import check_distinct, output_target
+    from rbi.sweep.study import require
+
     out_target = None if out is None else output_target(out, "--out", ("csv", "parquet"), inputs=[file])
     plot_target = (
         None if plot is None else output_target(plot, "--plot", ("png", "svg", "pdf"), inputs=[file])
@@ -196,23 +219,7 @@ def sweep(
         from rbi.viz.plots import require_matplotlib
 
         require_matplotlib()
-    settings = _where_runs_go(settings)
-    study = Study(file, read_yaml(file), settings, rows_printed=out is None)
-    rows = _run(study, out_target, resume, out)
-    result = study.result(rows)
-    if out is not None:
-        result["out"] = out
-    if mass_properties and rows is not None:
-        result["spread"] = study.spread(rows)
-    if plot_target is not None:
-        _plot(plot_target, study, rows)
-        result["plot"] = plot
-    if format == OutputFormat.csv:
-        from rbi.cli.render import to_csv
-
-        sys.stdout.write(to_csv(result.get("runs", [])))
-        return
-    emit(format.value, result, lambda: _table(result, study.columns, rows, file))
+    return out_target, plot_target
 
 
 def _where_runs_go(settings):
@@ -312,24 +319,10 @@ def _plot(target, study, rows) -> None:
 
 
 def _table(result, columns, rows, file):
-    from rich import box
-    from rich.table import Table
     from rich.text import Text
 
     from rbi.cli import tables
 
-    units = {
-        "spin": "rad/s",
-        "tilt_deg": "deg",
-        "max_tilt_deg": "deg",
-        "final_tilt_deg": "deg",
-        "min_tilt_deg": "deg",
-        "precession_rate_deg_s": "deg/s",
-        "energy_drift": "relative",
-        "axis_1_tilt_deg": "deg",
-        "axis_2_tilt_deg": "deg",
-        "axis_3_tilt_deg": "deg",
-    }
     notes = [f"{result['count']:,} runs"]
     if "failed" in result:
         notes[0] += f", {result['failed']:,} failed"
@@ -339,59 +332,76 @@ def _table(result, columns, rows, file):
         notes.append(f"Map drawn in {result['plot']}.")
     parts = []
     if rows is not None and not result.get("spread"):  # a tolerance study shows its spread instead
-        shown = rows if len(rows) <= 40 else rows[:20] + [None] + rows[-20:]
-        table = Table(
-            title=tables.plain_text(f"{result['name'] or file} — sweep"),
-            box=box.SIMPLE_HEAD,
-            title_justify="left",
-            show_edge=False,
-        )  # rbi's style; headers hold a line break
-        hidden = {"min_tilt_deg", "precession_rate_deg_s", "steps"}  # in --out, json and csv
-        keep = [i for i, name in enumerate(columns) if name not in hidden]
-        columns = [columns[i] for i in keep]
-        shown = [None if row is None else [row[i] for i in keep] for row in shown]
-        for name in columns:
-            # words wrap in a narrow terminal and no cell is cut short: a number is never shown truncated
-            words = name.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
-            header = tables.plain_text(name if name.startswith("parts.") else words)
-            table.add_column(
-                f"{header}\n{units.get(name, '')}".rstrip(),
-                overflow="fold",
-                justify="left" if name == "status" else "right",
-            )
-        for row in shown:
-            if row is None:
-                table.add_row(*["…"] * len(columns))
-                continue
-            table.add_row(
-                *[
-                    tables.plain_text(str(v))
-                    if isinstance(v, str)
-                    else ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 4)))
-                    for v in row
-                ]
-            )
-        parts.append(table)
+        parts.append(_runs_table(result, columns, rows, file))
     if result.get("spread"):
-        spread = tables.titled("Spread over the ok runs")
-        spread.add_column("quantity", no_wrap=True)
-        spread.add_column("unit")
-        for name in ("min", "median", "max", "std"):
-            spread.add_column(name, justify="right")
-        labels = {"mass": result["units"]["mass"], "com_x": result["units"]["length"]}
-        for name, stats in result["spread"].items():
-            unit = (
-                units.get(name)
-                or labels.get(name)
-                or (
-                    ""
-                    if not name.startswith(("com_", "moment_"))
-                    else result["units"]["length"]
-                    if name.startswith("com_")
-                    else f"{result['units']['mass']}·{result['units']['length']}²"
-                )
-            )
-            spread.add_row(name, unit, *[number(stats[k], 4) for k in ("p0", "p50", "p100", "std")])
-        parts.append(spread)
+        parts.append(_spread_table(result))
     parts.append(Text("\n".join(notes)))
     return tables.stack(*parts)
+
+
+def _runs_table(result, columns, rows, file):
+    """One row per run (the first and last 20 of more than 40), in rbi's table style."""
+    from rich import box
+    from rich.table import Table
+
+    from rbi.cli import tables
+
+    shown = rows if len(rows) <= 40 else rows[:20] + [None] + rows[-20:]
+    table = Table(
+        title=tables.plain_text(f"{result['name'] or file} — sweep"),
+        box=box.SIMPLE_HEAD,
+        title_justify="left",
+        show_edge=False,
+    )  # rbi's style; headers hold a line break
+    hidden = {"min_tilt_deg", "precession_rate_deg_s", "steps"}  # in --out, json and csv
+    keep = [i for i, name in enumerate(columns) if name not in hidden]
+    columns = [columns[i] for i in keep]
+    shown = [None if row is None else [row[i] for i in keep] for row in shown]
+    for name in columns:
+        # words wrap in a narrow terminal and no cell is cut short: a number is never shown truncated
+        words = name.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
+        header = tables.plain_text(name if name.startswith("parts.") else words)
+        table.add_column(
+            f"{header}\n{UNITS.get(name, '')}".rstrip(),
+            overflow="fold",
+            justify="left" if name == "status" else "right",
+        )
+    for row in shown:
+        if row is None:
+            table.add_row(*["…"] * len(columns))
+            continue
+        table.add_row(
+            *[
+                tables.plain_text(str(v))
+                if isinstance(v, str)
+                else ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 4)))
+                for v in row
+            ]
+        )
+    return table
+
+
+def _spread_table(result):
+    """min, median, max and standard deviation of each quantity over the ok runs."""
+    from rbi.cli import tables
+
+    spread = tables.titled("Spread over the ok runs")
+    spread.add_column("quantity", no_wrap=True)
+    spread.add_column("unit")
+    for name in ("min", "median", "max", "std"):
+        spread.add_column(name, justify="right")
+    labels = {"mass": result["units"]["mass"], "com_x": result["units"]["length"]}
+    for name, stats in result["spread"].items():
+        unit = (
+            UNITS.get(name)
+            or labels.get(name)
+            or (
+                ""
+                if not name.startswith(("com_", "moment_"))
+                else result["units"]["length"]
+                if name.startswith("com_")
+                else f"{result['units']['mass']}·{result['units']['length']}²"
+            )
+        )
+        spread.add_row(name, unit, *[number(stats[k], 4) for k in ("p0", "p50", "p100", "std")])
+    return spread

@@ -136,9 +136,49 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     for world in root.all("worldbody"):
         reader.children(world, Pose.identity(), None, "main")
     check_unique_names(path, model.links, "body")
+    _actuator_limits(model, root, defaults)
+    model.options["gravity"] = _gravity(path, root)
     _compile_inertia(model, compiler, reader.geoms)
     _check_moving_bodies(model)
     return model
+
+
+ACTUATORS = ("general", "motor", "position", "velocity", "intvelocity", "damper", "cylinder", "muscle")
+
+
+def _actuator_limits(model: RobotModel, root, defaults) -> None:
+    """A joint without ``actuatorfrcrange`` takes the force ranges of the actuators that drive
+    it, each times its gear (the joint's effort is the actuator's force times the gear)."""
+    motions = {m.name: m for link in model.links for m in link.motions if m.name}
+    found: dict[str, float] = {}
+    for block in root.all("actuator"):
+        for element in block.children:
+            if element.tag not in ACTUATORS:
+                continue
+            attrs = _attributes(element, defaults, "main")
+            joint = attrs.get("joint")
+            if (
+                joint not in motions
+                or attrs.get("forcerange") is None
+                or attrs.get("forcelimited") == "false"
+            ):
+                continue
+            where = Where(model.path, f"actuator {short(attrs.get('name') or joint)!r}")
+            low, high = numbers(where, attrs["forcerange"], "forcerange", 2)
+            gear = numbers(where, attrs.get("gear", "1"), "gear", (1, 2, 3, 4, 5, 6))[0]
+            found[joint] = found.get(joint, 0.0) + max(abs(low), abs(high)) * abs(gear)
+    for joint, limit in found.items():
+        if motions[joint].effort_limit is None and limit > 0:
+            motions[joint].effort_limit = limit
+
+
+def _gravity(path: str, root) -> np.ndarray:
+    """``<option gravity>`` (m/s², world frame); MuJoCo's default ``0 0 -9.81``."""
+    gravity = [0.0, 0.0, -9.81]
+    for option in root.all("option"):
+        if option.get("gravity") is not None:
+            gravity = numbers(Where(path), option.get("gravity"), "option: gravity", 3)
+    return np.array(gravity, dtype=float)
 
 
 MJ_MINVAL = 1e-15
@@ -384,7 +424,11 @@ class _Bodies:
         vector = (
             unit(where, axis, "joint: axis") if motion in ("revolute", "prismatic") else np.array([0, 0, 1.0])
         )
-        link.motions.append(Motion(attrs.get("name"), motion, vector, pos, ref))
+        effort = None
+        if attrs.get("actuatorfrcrange") is not None and attrs.get("actuatorfrclimited", "auto") != "false":
+            low, high = numbers(where, attrs["actuatorfrcrange"], "joint: actuatorfrcrange", 2)
+            effort = max(abs(low), abs(high)) if (low, high) != (0.0, 0.0) else None
+        link.motions.append(Motion(attrs.get("name"), motion, vector, pos, ref, effort_limit=effort))
 
     def inertial(self, where: Where, element) -> Inertial:
         attrs = element.attrib

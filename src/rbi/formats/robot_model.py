@@ -106,13 +106,17 @@ class Motion:
     (about ``axis`` through ``anchor``, radians) or ``prismatic`` (along ``axis``, metres), or
     ``fixed``/``free``/``ball``/``planar``/``floating`` (left at the reference pose). ``axis`` and
     ``anchor`` are in the link's frame at the reference pose; ``reference`` the coordinate at
-    which the link is at that pose (MJCF ``ref``, else 0)."""
+    which the link is at that pose (MJCF ``ref``, else 0); ``effort_limit`` the declared limit on
+    the joint's effort (URDF/SDF ``<limit effort>``, MJCF ``actuatorfrcrange`` or its actuators'
+    force range times their gear), or None."""
 
     name: str | None
     kind: str
     axis: np.ndarray
     anchor: np.ndarray
     reference: float = 0.0
+    effort_limit: float | None = None
+    """The declared limit of the joint's effort (N·m revolute, N prismatic), or None."""
 
 
 @dataclass

@@ -335,4 +335,12 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, mod
                 axis = child_in_model.rotation.T @ (model_pose.rotation @ axis)
             else:
                 axis = joint_pose.rotation @ axis
-        child.motions = [Motion(name, kind, np.asarray(axis, dtype=float), joint_pose.translation)]
+        limit = axis_element.child("limit") if axis_element is not None else None
+        effort_element = limit.child("effort") if limit is not None else None
+        effort = None
+        if effort_element is not None and (effort_element.text or "").strip():
+            effort = abs(number(where, effort_element.text, "axis/limit/effort"))
+            effort = None if effort == -1 or not math.isfinite(effort) else effort
+        child.motions = [
+            Motion(name, kind, np.asarray(axis, dtype=float), joint_pose.translation, effort_limit=effort)
+        ]

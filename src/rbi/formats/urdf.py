@@ -204,7 +204,11 @@ def _joints(model: RobotModel, root) -> None:
             if motion_kind in ("revolute", "prismatic")
             else np.array(axis, float)
         )
-        link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3))]
+        limit = element.child("limit")
+        effort = None
+        if limit is not None and limit.get("effort") is not None:
+            effort = abs(number(where, limit.get("effort"), "limit: effort"))
+        link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3), effort_limit=effort)]
     _check_tree(model)
 
 

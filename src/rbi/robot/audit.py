@@ -137,6 +137,8 @@ class AuditReport:
     notes: list[str]
     settings: dict[str, Any]
     fix: Any = None
+    joints: list = field(default_factory=list)
+    """Each joint coordinate's holding torque (:class:`rbi.robot.statics.JointTorque`)."""
 
     @property
     def path(self) -> str:
@@ -163,6 +165,16 @@ class AuditReport:
                 "inertia_about_com": self.total.inertia_about_com,
                 "frame": self.total.frame,
             },
+            "joints": [
+                {
+                    "name": each.name,
+                    "type": each.type,
+                    "torque": each.torque,
+                    "effort_limit": each.effort_limit,
+                    "flags": list(each.flags),
+                }
+                for each in self.joints
+            ],
             "notes": list(self.notes),
             "warnings": list(self.notes),
         }
@@ -230,6 +242,7 @@ def audit_model(
     mesh_repair: bool = False,
 ) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
+    from rbi.robot.statics import joint_torques
     from rbi.robot.tree import totals
 
     if geometry not in GEOMETRY_CHOICES:
@@ -264,6 +277,7 @@ def audit_model(
             "joints": dict(joints or {}),
             "mesh_repair": mesh_repair,
         },
+        joints=joint_torques(model, joints),
     )
 
 
