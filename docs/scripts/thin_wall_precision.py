@@ -6,7 +6,7 @@ Run: .venv/bin/python docs/scripts/thin_wall_precision.py   (quoted in docs/spec
 import mpmath as mp
 
 from rbi.core import shapes
-from rbi.core.inertia import combine_elements
+from rbi.core.mass import MassProperties
 
 
 def err(got, ref) -> float:
@@ -25,9 +25,11 @@ for wall in [1e-1, 1e-2, 1e-3, 1e-4, 1e-6, 1e-9]:
     ixx = m * (3 * (Rm**2 + rm**2) + L**2) / 12
     outer = shapes.cylinder(rho * shapes.cylinder_volume(R, L), R, [0, 0, 0], [0, 0, L])
     inner = shapes.cylinder(rho * shapes.cylinder_volume(r, L), r, [0, 0, 0], [0, 0, L])
-    sub = combine_elements([outer, shapes.MassElement(-inner.mass, inner.com, -inner.inertia_com)])
+    sub = MassProperties.sum(
+        [outer, MassProperties(-inner.mass, inner.center_of_mass, -inner.inertia_about_com)]
+    )
     tube = shapes.tube(rho * shapes.tube_volume(R, r, L), R, r, [0, 0, 0], [0, 0, L])
     print(
-        f"{wall:7.0e}   {err(sub.mass, m):9.1e} {err(sub.inertia_com[2, 2], izz):9.1e} {err(sub.inertia_com[0, 0], ixx):9.1e}"
-        f"   |   {err(tube.mass, m):9.1e} {err(tube.inertia_com[2, 2], izz):9.1e} {err(tube.inertia_com[0, 0], ixx):9.1e}"
+        f"{wall:7.0e}   {err(sub.mass, m):9.1e} {err(sub.inertia_about_com[2, 2], izz):9.1e} {err(sub.inertia_about_com[0, 0], ixx):9.1e}"
+        f"   |   {err(tube.mass, m):9.1e} {err(tube.inertia_about_com[2, 2], izz):9.1e} {err(tube.inertia_about_com[0, 0], ixx):9.1e}"
     )

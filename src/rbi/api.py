@@ -224,7 +224,7 @@ class Body:
     @property
     def center_of_mass(self) -> np.ndarray:
         """(3,) centre of mass, body frame, length unit."""
-        return np.array(self._loaded.props.com, dtype=float)
+        return np.array(self._loaded.props.center_of_mass, dtype=float)
 
     @property
     def pivot(self) -> np.ndarray | None:
@@ -285,9 +285,9 @@ class Body:
                 or a (3, 3) rotation matrix R, body → world. The matrix is then given in
                 world axes: ``R I Rᵀ``.
         """
-        from rbi.core.inertia import inertia_about, re_express
+        from rbi.core.inertia import re_express
 
-        matrix = inertia_about(self._loaded.props, self.point(about))
+        matrix = self._loaded.props.inertia_about(self.point(about))
         if axes is None:
             return matrix
         return re_express(matrix, _rotation(axes))
@@ -295,10 +295,10 @@ class Body:
     def principal(self, about: Point = "com") -> Principal:
         """Principal moments (ascending) and axes (rows, body frame, right-handed) about a point
         (default the centre of mass), as ``rbi principal`` prints them."""
-        from rbi.core.inertia import inertia_about, principal_axes, radii_of_gyration
+        from rbi.core.inertia import principal_axes, radii_of_gyration
 
         point = self.point(about)
-        moments, axes = principal_axes(inertia_about(self._loaded.props, point))
+        moments, axes = principal_axes(self._loaded.props.inertia_about(point))
         # + 0.0: no -0.0 components (the CLI prints 0 there too)
         return Principal(
             moments=np.asarray(moments) + 0.0,
@@ -322,8 +322,8 @@ class Body:
                     shape=part.shape if part is not None else "point_cloud",
                     hole=bool(getattr(part, "subtract", False)),
                     mass=float(element.mass),
-                    center_of_mass=np.array(element.com, dtype=float),
-                    inertia_about_com=np.array(element.inertia_com, dtype=float),
+                    center_of_mass=np.array(element.center_of_mass, dtype=float),
+                    inertia_about_com=np.array(element.inertia_about_com, dtype=float),
                     volume=None if part is None else part_volume(part),
                 )
             )
@@ -350,20 +350,20 @@ class Body:
         w = np.array(vector_value(omega, "--omega"))
         point = self.point(about)
         props = self._loaded.props
-        com_from_point = props.com - point
+        com_from_point = props.center_of_mass - point
         v_com = (
             np.cross(w, com_from_point)
             if velocity is None
             else np.array(vector_value(velocity, "--velocity"))
         )
-        h = angular_momentum_about_point(props.inertia_com, props.mass, com_from_point, w, v_com)
+        h = angular_momentum_about_point(props.inertia_about_com, props.mass, com_from_point, w, v_com)
         return Momentum(
             omega=w,
             about=point,
             com_velocity=v_com,
             angular_momentum=np.asarray(h),
             angle_deg=angle_between_deg(h, w),
-            kinetic_energy=float(kinetic_energy(props.inertia_com, w, props.mass, v_com)),
+            kinetic_energy=float(kinetic_energy(props.inertia_about_com, w, props.mass, v_com)),
         )
 
     def __repr__(self) -> str:

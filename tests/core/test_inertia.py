@@ -11,17 +11,8 @@ import pytest
 from scipy.spatial.transform import Rotation
 
 from rbi.core import shapes
-from rbi.core.inertia import (
-    MassProperties,
-    combine,
-    combine_elements,
-    inertia_about,
-    parallel_axis,
-    parallel_axis_to_com,
-    principal_axes,
-    re_express,
-    symmetric_eigen,
-)
+from rbi.core.inertia import parallel_axis, parallel_axis_to_com, principal_axes, re_express, symmetric_eigen
+from rbi.core.mass import MassProperties, combine
 
 
 def direct_inertia(masses, positions, point):
@@ -51,33 +42,33 @@ def test_point_masses_match_direct_sums(seed):
     props = combine(masses, positions)
     com = sum(m * p for m, p in zip(masses, positions)) / sum(masses)
     assert props.mass == pytest.approx(sum(masses), rel=1e-15)
-    np.testing.assert_allclose(props.com, com, rtol=0, atol=1e-15)
-    assert_matrix_close(props.inertia_com, direct_inertia(masses, positions, com), rel=1e-13)
+    np.testing.assert_allclose(props.center_of_mass, com, rtol=0, atol=1e-15)
+    assert_matrix_close(props.inertia_about_com, direct_inertia(masses, positions, com), rel=1e-13)
 
 
 @pytest.mark.parametrize("seed", [4, 5])
 def test_inertia_about_any_point_matches_direct_sum(seed):
     masses, positions = point_cloud(seed)
     props = combine(masses, positions)
-    for point in ([0.0, 0.0, 0.0], [1.5, -2.0, 0.25], props.com + 1e-3):
-        assert_matrix_close(inertia_about(props, point), direct_inertia(masses, positions, point), rel=1e-13)
+    for point in ([0.0, 0.0, 0.0], [1.5, -2.0, 0.25], props.center_of_mass + 1e-3):
+        assert_matrix_close(props.inertia_about(point), direct_inertia(masses, positions, point), rel=1e-13)
 
 
 def test_inertia_about_the_com_is_the_central_inertia():
     masses, positions = point_cloud(6)
     props = combine(masses, positions)
-    assert_matrix_close(inertia_about(props, props.com), props.inertia_com, rel=1e-15)
+    assert_matrix_close(props.inertia_about(props.center_of_mass), props.inertia_about_com, rel=1e-15)
 
 
 def test_parallel_axis_round_trip_and_direction_of_offset():
     masses, positions = point_cloud(7)
     props = combine(masses, positions)
     offset = np.array([0.3, -1.1, 2.0])
-    shifted = parallel_axis(props.inertia_com, props.mass, offset)
+    shifted = parallel_axis(props.inertia_about_com, props.mass, offset)
     # Moving away from the CoM adds m(|d|²E − d dᵀ): a positive semi-definite change.
-    assert np.linalg.eigvalsh(shifted - props.inertia_com).min() >= -1e-14
-    assert_matrix_close(parallel_axis(props.inertia_com, props.mass, -offset), shifted, rel=1e-15)
-    assert_matrix_close(parallel_axis_to_com(shifted, props.mass, offset), props.inertia_com, rel=1e-13)
+    assert np.linalg.eigvalsh(shifted - props.inertia_about_com).min() >= -1e-14
+    assert_matrix_close(parallel_axis(props.inertia_about_com, props.mass, -offset), shifted, rel=1e-15)
+    assert_matrix_close(parallel_axis_to_com(shifted, props.mass, offset), props.inertia_about_com, rel=1e-13)
 
 
 def test_parts_enter_with_their_own_inertia_plus_transport():
@@ -85,18 +76,18 @@ def test_parts_enter_with_their_own_inertia_plus_transport():
     # m(|d|²E − d dᵀ), worked here from the closed form independently of combine().
     cyl = shapes.cylinder(2.0, 0.1, [0.0, 0.0, 0.0], [0.0, 0.0, 0.4])
     bolt = shapes.point(0.5, [0.1, 0.0, 0.4])
-    props = combine_elements([cyl, bolt])
+    props = MassProperties.sum([cyl, bolt])
     com = (2.0 * np.array([0.0, 0.0, 0.2]) + 0.5 * np.array([0.1, 0.0, 0.4])) / 2.5
     own = np.diag([2.0 * (3 * 0.01 + 0.16) / 12, 2.0 * (3 * 0.01 + 0.16) / 12, 2.0 * 0.01 / 2])
     expected = own + direct_inertia([2.0, 0.5], [[0.0, 0.0, 0.2], [0.1, 0.0, 0.4]], com)
-    np.testing.assert_allclose(props.com, com, rtol=1e-15, atol=1e-17)
-    assert_matrix_close(props.inertia_com, expected, rel=1e-14)
+    np.testing.assert_allclose(props.center_of_mass, com, rtol=1e-15, atol=1e-17)
+    assert_matrix_close(props.inertia_about_com, expected, rel=1e-14)
 
 
 def test_combined_inertia_is_exactly_symmetric():
     masses, positions = point_cloud(8)
     props = combine(masses, positions)
-    np.testing.assert_array_equal(props.inertia_com, props.inertia_com.T)
+    np.testing.assert_array_equal(props.inertia_about_com, props.inertia_about_com.T)
 
 
 def test_total_mass_must_be_positive():
@@ -152,10 +143,10 @@ def rotor_exact():
 
 def test_rotor_at_the_origin_matches_exact_rational_answer():
     mass, com, inertia = rotor_exact()
-    props = combine_elements(rotor_elements([0.0, 0.0, 0.0]))
+    props = MassProperties.sum(rotor_elements([0.0, 0.0, 0.0]))
     assert props.mass == pytest.approx(mass, rel=1e-15)
-    np.testing.assert_allclose(props.com, com, rtol=1e-14, atol=1e-17)
-    assert_matrix_close(props.inertia_com, inertia, rel=1e-13)
+    np.testing.assert_allclose(props.center_of_mass, com, rtol=1e-14, atol=1e-17)
+    assert_matrix_close(props.inertia_about_com, inertia, rel=1e-13)
 
 
 @pytest.mark.parametrize(
@@ -163,11 +154,11 @@ def test_rotor_at_the_origin_matches_exact_rational_answer():
 )
 def test_rotor_far_from_the_origin_keeps_its_central_inertia(origin):
     mass, com, inertia = rotor_exact()
-    far = combine_elements(rotor_elements(origin))
+    far = MassProperties.sum(rotor_elements(origin))
     expected_com = np.asarray(origin) + com  # exact sum: both are short dyadic numbers
     assert far.mass == pytest.approx(mass, rel=1e-12)
-    np.testing.assert_allclose(far.com, expected_com, rtol=1e-12, atol=0)
-    assert_matrix_close(far.inertia_com, inertia, rel=1e-9)
+    np.testing.assert_allclose(far.center_of_mass, expected_com, rtol=1e-12, atol=0)
+    assert_matrix_close(far.inertia_about_com, inertia, rel=1e-9)
 
 
 # --- re-expression --------------------------------------------------------------------------
@@ -176,7 +167,7 @@ def test_rotor_far_from_the_origin_keeps_its_central_inertia(origin):
 @pytest.mark.parametrize("seed", [1, 2, 3])
 def test_re_express_is_r_i_rt_and_keeps_eigenvalues(seed):
     masses, positions = point_cloud(seed)
-    I = combine(masses, positions).inertia_com
+    I = combine(masses, positions).inertia_about_com
     R = Rotation.random(random_state=seed).as_matrix()
     # Rotating every mass by R and summing directly gives the world-axes inertia.
     world_positions = positions @ R.T
@@ -263,7 +254,7 @@ def test_plane_symmetric_body_gets_exact_zeros():
         shapes.cylinder(0.1, 0.008, [0, 0, 0.06], [0, 0, 0.10]),
         shapes.point(0.02, [0.04, 0, 0.06]),
     ]
-    moments, axes = principal_axes(combine_elements(elements).inertia_com)
+    moments, axes = principal_axes(MassProperties.sum(elements).inertia_about_com)
     assert_right_handed_orthonormal(axes)
     y_rows = [i for i in range(3) if abs(axes[i, 1]) == 1.0]
     assert len(y_rows) == 1
@@ -280,7 +271,7 @@ def test_coaxial_stack_along_any_axis_gives_a_clean_set(seed):
         shapes.cylinder(0.1, 0.008, o + 0.06 * u, o + 0.10 * u),
         shapes.cylinder(0.05, 0.02, o - 0.03 * u, o),
     ]
-    I = combine_elements(stack).inertia_com
+    I = MassProperties.sum(stack).inertia_about_com
     moments, axes = principal_axes(I)
     assert_right_handed_orthonormal(axes)
     assert_reconstructs(moments, axes, I, rel=1e-12)
@@ -330,7 +321,7 @@ def test_zero_and_rank_deficient_inertia():
     # Two point masses on a line along (1, 1, 1): zero moment about that line.
     d = np.array([1.0, 1.0, 1.0]) / np.sqrt(3.0)
     props = combine([1.0, 1.0], [d, -d])
-    moments, axes = principal_axes(props.inertia_com)
+    moments, axes = principal_axes(props.inertia_about_com)
     np.testing.assert_allclose(moments, [0.0, 2.0, 2.0], atol=1e-15)
     assert same_up_to_sign(axes[0], d, 1e-15)
     assert_right_handed_orthonormal(axes)
@@ -338,7 +329,7 @@ def test_zero_and_rank_deficient_inertia():
 
 def test_principal_axes_about_a_point_of_a_mass_properties_tuple():
     props = MassProperties(2.0, np.array([0.0, 0.0, 1.0]), np.diag([1.0, 1.0, 0.5]))
-    I_origin = inertia_about(props, [0.0, 0.0, 0.0])
+    I_origin = props.inertia_about([0.0, 0.0, 0.0])
     np.testing.assert_allclose(I_origin, np.diag([3.0, 3.0, 0.5]), rtol=1e-15)
     moments, axes = principal_axes(I_origin)
     np.testing.assert_allclose(moments, [0.5, 3.0, 3.0], rtol=1e-15)

@@ -70,9 +70,9 @@ def test_two_cubes_touching_are_twice_the_cube(second_center, shares):
         ]
     )
     assert props.volume == pytest.approx(2.0, rel=1e-15)
-    assert props.mass == pytest.approx(mass, rel=1e-15)
-    np.testing.assert_allclose(props.center_of_mass, com, rtol=1e-15)
-    np.testing.assert_allclose(props.inertia_about_com, inertia, rtol=1e-14, atol=1e-15)
+    assert props.properties.mass == pytest.approx(mass, rel=1e-15)
+    np.testing.assert_allclose(props.properties.center_of_mass, com, rtol=1e-15)
+    np.testing.assert_allclose(props.properties.inertia_about_com, inertia, rtol=1e-14, atol=1e-15)
 
 
 def test_an_edge_used_four_times_balanced_is_counted_as_shared_not_as_a_defect():
@@ -87,8 +87,8 @@ def test_two_tetrahedra_on_one_edge_are_their_sum():
     v2, f2 = tetrahedron_mesh([[0, 0, 0], [0, 0, 1], [-1, 0, 0], [0, -1, 0]])
     vertices, faces = joined((v1, f1), (v2, f2))
     props = mesh_mass_properties(vertices, faces, "exact", density=6.0)
-    assert props.mass == pytest.approx(2.0, rel=1e-15)
-    np.testing.assert_allclose(props.center_of_mass, [0, 0, 0.25], atol=1e-16)
+    assert props.properties.mass == pytest.approx(2.0, rel=1e-15)
+    np.testing.assert_allclose(props.properties.center_of_mass, [0, 0, 0.25], atol=1e-16)
 
 
 def test_an_edge_whose_uses_do_not_balance_is_still_refused():
@@ -117,7 +117,7 @@ def test_a_hollow_box_is_a_solid_with_a_cavity():
     props = mesh_mass_properties(vertices, faces, "exact", density=1.0)
     assert props.volume == pytest.approx(56.0, rel=1e-15)
     np.testing.assert_allclose(
-        props.inertia_about_com,
+        props.properties.inertia_about_com,
         box_inertia(64, (4, 4, 4)) - box_inertia(8, (2, 2, 2)),
         rtol=1e-14,
         atol=1e-13,
@@ -189,11 +189,11 @@ def test_shell_of_a_cube_is_six_plates():
     vertices, faces = box_mesh((a, a, a), (1, 2, 3))
     props = mesh_mass_properties(vertices, faces, "shell", mass=m)
     assert props.area == pytest.approx(6 * a * a, rel=1e-15)
-    np.testing.assert_allclose(props.center_of_mass, [1, 2, 3], rtol=1e-15)
+    np.testing.assert_allclose(props.properties.center_of_mass, [1, 2, 3], rtol=1e-15)
     # each face a square plate of mass m/6: about its own normal (m/6)a²/6; about an in-plane
     # axis (m/6)a²/12, moved a/2 away from the cube's centre
     plates = 2 * (m / 6) * a * a / 6 + 4 * (m / 6) * (a * a / 12 + a * a / 4)
-    np.testing.assert_allclose(props.inertia_about_com, plates * np.eye(3), rtol=1e-14, atol=1e-15)
+    np.testing.assert_allclose(props.properties.inertia_about_com, plates * np.eye(3), rtol=1e-14, atol=1e-15)
     assert plates == pytest.approx(5 / 18 * m * a * a, rel=1e-15)
 
 
@@ -207,20 +207,22 @@ def test_a_flat_mesh_in_exact_mode_is_pointed_to_shell():
 def test_shell_density_is_per_area_as_in_mujoco():
     vertices, faces = box_mesh((1, 2, 3))
     props = mesh_mass_properties(vertices, faces, "shell", density=0.5)
-    assert props.mass == pytest.approx(0.5 * 2 * (2 + 3 + 6), rel=1e-15)
+    assert props.properties.mass == pytest.approx(0.5 * 2 * (2 + 3 + 6), rel=1e-15)
 
 
 def test_shell_of_a_fine_sphere_approaches_the_thin_spherical_shell():
     r, m = 0.7, 2.0
     for n, tol in ((40, 3e-3), (160, 2e-4)):
         props = mesh_mass_properties(*sphere_mesh(r, n, 2 * n), "shell", mass=m)
-        np.testing.assert_allclose(np.diag(props.inertia_about_com), 2 / 3 * m * r * r, rtol=tol)
+        np.testing.assert_allclose(np.diag(props.properties.inertia_about_com), 2 / 3 * m * r * r, rtol=tol)
 
 
 def test_shell_takes_an_open_or_flat_surface():
     square = np.array([[0, 0, 0], [2, 0, 0], [2, 1, 0], [0, 1, 0.0]])
     props = mesh_mass_properties(square, np.array([[0, 1, 2], [0, 2, 3]]), "shell", mass=6.0)
-    np.testing.assert_allclose(props.inertia_about_com, box_inertia(6.0, (2, 1, 0)), rtol=1e-15, atol=1e-15)
+    np.testing.assert_allclose(
+        props.properties.inertia_about_com, box_inertia(6.0, (2, 1, 0)), rtol=1e-15, atol=1e-15
+    )
     assert props.volume is None
 
 
@@ -248,8 +250,8 @@ def test_convex_mode_of_an_l_shaped_prism_is_the_hull():
     second = np.array([[integral(p * q) for q in (x, y, z)] for p in (x, y, z)]) - volume * np.outer(com, com)
     inertia = np.trace(second) * np.eye(3) - second
     assert hull.volume == pytest.approx(volume, rel=1e-14) and volume == pytest.approx(3.5 * h)
-    np.testing.assert_allclose(hull.center_of_mass, com, rtol=1e-14)
-    np.testing.assert_allclose(hull.inertia_about_com, inertia, rtol=1e-13, atol=1e-15)
+    np.testing.assert_allclose(hull.properties.center_of_mass, com, rtol=1e-14)
+    np.testing.assert_allclose(hull.properties.inertia_about_com, inertia, rtol=1e-13, atol=1e-15)
 
 
 def extruded(outline, height):
@@ -298,7 +300,9 @@ def test_repair_closes_a_missing_triangle_and_reports_its_area():
     assert repaired.added_faces == 1
     props = mesh_mass_properties(repaired.vertices, repaired.faces, "exact", mass=8.0)
     assert props.volume == pytest.approx(a**3, rel=1e-15)
-    np.testing.assert_allclose(props.inertia_about_com, box_inertia(8.0, (a, a, a)), rtol=1e-14, atol=1e-15)
+    np.testing.assert_allclose(
+        props.properties.inertia_about_com, box_inertia(8.0, (a, a, a)), rtol=1e-14, atol=1e-15
+    )
 
 
 def test_repair_of_a_closed_mesh_changes_nothing():
@@ -343,5 +347,5 @@ def test_principal_moments_agree_with_mujoco(mode, shape):
     vertices = vertices.astype(np.float32).astype(float)  # MuJoCo keeps mesh vertices in single precision
     com, moments = mujoco_inertia(vertices, faces, mode, mass=2.5)
     props = mesh_mass_properties(vertices, faces, mode, mass=2.5)
-    np.testing.assert_allclose(props.center_of_mass, com, rtol=1e-9, atol=1e-12)
-    np.testing.assert_allclose(np.linalg.eigvalsh(props.inertia_about_com), moments, rtol=1e-12)
+    np.testing.assert_allclose(props.properties.center_of_mass, com, rtol=1e-9, atol=1e-12)
+    np.testing.assert_allclose(np.linalg.eigvalsh(props.properties.inertia_about_com), moments, rtol=1e-12)

@@ -71,12 +71,14 @@ def test_a_convex_decomposition_once_refused_is_the_sum_of_its_pieces_in_mujoco(
     mass, com, inertia = combined(pieces)
     props = mesh_mass_properties(vertices, faces, "exact", density=1.0)
     size = np.ptp(vertices, axis=0).max()
-    assert props.mass == pytest.approx(mass, rel=1e-12)
-    np.testing.assert_allclose(props.center_of_mass, com, rtol=0, atol=1e-12 * size)
+    assert props.properties.mass == pytest.approx(mass, rel=1e-12)
+    np.testing.assert_allclose(props.properties.center_of_mass, com, rtol=0, atol=1e-12 * size)
     # the trace does not depend on the axes; MuJoCo's principal axes (body_iquat) are good to
     # about 1e-7 only (per piece: moments agree to 5e-14, the rebuilt tensor to 8e-8)
-    assert np.trace(props.inertia_about_com) == pytest.approx(np.trace(inertia), rel=1e-12)
-    np.testing.assert_allclose(props.inertia_about_com, inertia, rtol=0, atol=1e-6 * np.abs(inertia).max())
+    assert np.trace(props.properties.inertia_about_com) == pytest.approx(np.trace(inertia), rel=1e-12)
+    np.testing.assert_allclose(
+        props.properties.inertia_about_com, inertia, rtol=0, atol=1e-6 * np.abs(inertia).max()
+    )
 
 
 @pytest.mark.parametrize(
@@ -94,8 +96,13 @@ def test_real_meshes_agree_with_mujoco(name, modes):
         mass, com, inertia = mujoco_mass_properties(vertices, faces, mode, density=1000.0)
         props = mesh_mass_properties(vertices, faces, mode, density=1000.0)
         size = np.ptp(vertices, axis=0).max()
-        assert props.mass == pytest.approx(mass, rel=1e-12), mode
-        np.testing.assert_allclose(props.center_of_mass, com, rtol=0, atol=1e-12 * size, err_msg=mode)
+        assert props.properties.mass == pytest.approx(mass, rel=1e-12), mode
         np.testing.assert_allclose(
-            np.linalg.eigvalsh(props.inertia_about_com), np.linalg.eigvalsh(inertia), rtol=1e-12, err_msg=mode
+            props.properties.center_of_mass, com, rtol=0, atol=1e-12 * size, err_msg=mode
+        )
+        np.testing.assert_allclose(
+            np.linalg.eigvalsh(props.properties.inertia_about_com),
+            np.linalg.eigvalsh(inertia),
+            rtol=1e-12,
+            err_msg=mode,
         )

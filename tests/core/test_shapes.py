@@ -76,8 +76,8 @@ def test_solid_along_z_matches_the_volume_integral(solid, radius, height):
     assert volume_of(radius, height) == pytest.approx(volume, rel=1e-14)
     element = build(mass, radius, [0.0, 0.0, 0.0], [0.0, 0.0, height])
     assert element.mass == mass
-    np.testing.assert_allclose(element.com, [0.0, 0.0, z_com], rtol=1e-14, atol=0)
-    assert_inertia_close(element.inertia_com, inertia)
+    np.testing.assert_allclose(element.center_of_mass, [0.0, 0.0, z_com], rtol=1e-14, atol=0)
+    assert_inertia_close(element.inertia_about_com, inertia)
 
 
 def test_cone_integral_sanity_against_textbook_closed_forms():
@@ -102,29 +102,29 @@ def test_solid_along_any_axis_is_the_rotated_integral(solid, Q, origin):
     mass, radius, height = 1.3, 0.2, 0.45
     _, z_com, inertia = expected_from_integrals(integrals(), mass, radius, height)
     element = build(mass, radius, origin, origin + Q @ [0.0, 0.0, height])
-    np.testing.assert_allclose(element.com, origin + Q @ [0.0, 0.0, z_com], rtol=0, atol=1e-14)
-    assert_inertia_close(element.inertia_com, Q @ inertia @ Q.T, rel=1e-13)
+    np.testing.assert_allclose(element.center_of_mass, origin + Q @ [0.0, 0.0, z_com], rtol=0, atol=1e-14)
+    assert_inertia_close(element.inertia_about_com, Q @ inertia @ Q.T, rel=1e-13)
 
 
 def test_reversed_cylinder_is_the_same_solid():
     forward = shapes.cylinder(1.0, 0.1, [1.0, 2.0, 3.0], [1.5, 1.0, 3.2])
     backward = shapes.cylinder(1.0, 0.1, [1.5, 1.0, 3.2], [1.0, 2.0, 3.0])
-    np.testing.assert_allclose(forward.com, backward.com, rtol=0, atol=1e-15)
-    assert_inertia_close(forward.inertia_com, backward.inertia_com, rel=1e-14)
+    np.testing.assert_allclose(forward.center_of_mass, backward.center_of_mass, rtol=0, atol=1e-15)
+    assert_inertia_close(forward.inertia_about_com, backward.inertia_about_com, rel=1e-14)
 
 
 def test_thin_rod_along_x_keeps_its_tiny_axial_moment():
     # m r²/2 with r = 1e-6 next to transverse moments ~ m L²/12 = 1/12: 11 orders apart.
     element = shapes.cylinder(1.0, 1e-6, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0])
-    assert element.inertia_com[0, 0] == pytest.approx(0.5e-12, rel=1e-12)
-    assert element.inertia_com[1, 1] == pytest.approx((3e-12 + 1.0) / 12.0, rel=1e-14)
+    assert element.inertia_about_com[0, 0] == pytest.approx(0.5e-12, rel=1e-12)
+    assert element.inertia_about_com[1, 1] == pytest.approx((3e-12 + 1.0) / 12.0, rel=1e-14)
 
 
 def test_point_mass_sits_at_its_position_with_no_own_inertia():
     element = shapes.point(0.02, [0.04, 0.0, 0.06])
     assert element.mass == 0.02
-    np.testing.assert_array_equal(element.com, [0.04, 0.0, 0.06])
-    np.testing.assert_array_equal(element.inertia_com, np.zeros((3, 3)))
+    np.testing.assert_array_equal(element.center_of_mass, [0.04, 0.0, 0.06])
+    np.testing.assert_array_equal(element.inertia_about_com, np.zeros((3, 3)))
 
 
 DENSITY_SPEC = """

@@ -86,8 +86,10 @@ def ball(center, radii, rotation, inner=0.0, n=8):
 def assert_matches(element, points, volumes, density):
     m, com, inertia = mass_properties(points, density * volumes)
     assert element.mass == pytest.approx(m, rel=RTOL)
-    np.testing.assert_allclose(element.com, com, rtol=RTOL, atol=RTOL * np.abs(points).max())
-    np.testing.assert_allclose(element.inertia_com, inertia, rtol=RTOL, atol=RTOL * np.abs(inertia).max())
+    np.testing.assert_allclose(element.center_of_mass, com, rtol=RTOL, atol=RTOL * np.abs(points).max())
+    np.testing.assert_allclose(
+        element.inertia_about_com, inertia, rtol=RTOL, atol=RTOL * np.abs(inertia).max()
+    )
 
 
 ROT = Rotation.from_rotvec([0.3, -0.7, 0.5]).as_matrix()
@@ -135,7 +137,7 @@ def test_thin_shell_limit_is_two_thirds_m_r_squared():
     mean_x2 = (w * x * x).sum() / w.sum()
     R, m = 0.25, 3.0
     shell = shapes.spherical_shell(m, R, R, np.zeros(3))
-    np.testing.assert_allclose(shell.inertia_com, 2 * mean_x2 * m * R * R * np.eye(3), rtol=1e-13)
+    np.testing.assert_allclose(shell.inertia_about_com, 2 * mean_x2 * m * R * R * np.eye(3), rtol=1e-13)
     assert 2 * mean_x2 == pytest.approx(2.0 / 3.0, rel=1e-13)
 
 
@@ -163,8 +165,8 @@ def test_rod_matches_line_quadrature():
     pts = start + t[:, None] * (end - start)
     mass, com, inertia = mass_properties(pts, m * w)
     rod = shapes.rod(m, start, end)
-    np.testing.assert_allclose(rod.com, com, rtol=1e-14)
-    np.testing.assert_allclose(rod.inertia_com, inertia, rtol=1e-12, atol=1e-16)
+    np.testing.assert_allclose(rod.center_of_mass, com, rtol=1e-14)
+    np.testing.assert_allclose(rod.inertia_about_com, inertia, rtol=1e-12, atol=1e-16)
 
 
 # --- limits that connect the new shapes with the old ones -------------------------------------
@@ -176,33 +178,33 @@ lengths = st.floats(0.01, 10.0)
 @given(r=lengths, h=lengths)
 def test_frustum_with_equal_radii_is_the_cylinder(r, h):
     a, b = shapes.frustum(2.0, r, r, [0, 0, 0], [0, h, 0]), shapes.cylinder(2.0, r, [0, 0, 0], [0, h, 0])
-    np.testing.assert_allclose(a.com, b.com, rtol=1e-13)
-    np.testing.assert_allclose(a.inertia_com, b.inertia_com, rtol=1e-13)
+    np.testing.assert_allclose(a.center_of_mass, b.center_of_mass, rtol=1e-13)
+    np.testing.assert_allclose(a.inertia_about_com, b.inertia_about_com, rtol=1e-13)
 
 
 @settings(max_examples=40, deadline=None)
 @given(r=lengths, h=lengths)
 def test_frustum_with_a_point_end_is_the_cone(r, h):
     a, b = shapes.frustum(2.0, 0.0, r, [0, 0, 0], [h, 0, 0]), shapes.cone(2.0, r, [0, 0, 0], [h, 0, 0])
-    np.testing.assert_allclose(a.com, b.com, rtol=1e-13)
-    np.testing.assert_allclose(a.inertia_com, b.inertia_com, rtol=1e-13)
+    np.testing.assert_allclose(a.center_of_mass, b.center_of_mass, rtol=1e-13)
+    np.testing.assert_allclose(a.inertia_about_com, b.inertia_about_com, rtol=1e-13)
 
 
 @settings(max_examples=40, deadline=None)
 @given(r=lengths, h=lengths)
 def test_tube_without_bore_is_the_cylinder_and_shell_without_hole_the_sphere(r, h):
     np.testing.assert_allclose(
-        shapes.tube(1.5, r, 0.0, [0, 0, 0], [0, 0, h]).inertia_com,
-        shapes.cylinder(1.5, r, [0, 0, 0], [0, 0, h]).inertia_com,
+        shapes.tube(1.5, r, 0.0, [0, 0, 0], [0, 0, h]).inertia_about_com,
+        shapes.cylinder(1.5, r, [0, 0, 0], [0, 0, h]).inertia_about_com,
         rtol=1e-13,
     )
     np.testing.assert_allclose(
-        shapes.spherical_shell(1.5, r, 0.0, [0, 0, 0]).inertia_com,
-        shapes.sphere(1.5, r, [0, 0, 0]).inertia_com,
+        shapes.spherical_shell(1.5, r, 0.0, [0, 0, 0]).inertia_about_com,
+        shapes.sphere(1.5, r, [0, 0, 0]).inertia_about_com,
         rtol=1e-13,
     )
 
 
 def test_box_with_equal_edges_turned_anyhow_stays_isotropic():
     cube = shapes.box(6.0, [0.2, 0.2, 0.2], [0, 0, 0], ROT)
-    np.testing.assert_allclose(cube.inertia_com, 6.0 * 0.08 / 12 * np.eye(3), rtol=1e-14, atol=1e-17)
+    np.testing.assert_allclose(cube.inertia_about_com, 6.0 * 0.08 / 12 * np.eye(3), rtol=1e-14, atol=1e-17)

@@ -375,9 +375,11 @@ def test_any_arrays_give_physical_numbers_or_a_mesh_error(arrays, mode):
     except MeshError as exc:
         assert str(exc) and "\n" not in str(exc)
         return
-    assert props.mass == 2.0
-    assert np.all(np.isfinite(props.center_of_mass)) and np.all(np.isfinite(props.inertia_about_com))
-    moments = np.linalg.eigvalsh(props.inertia_about_com)
+    assert props.properties.mass == 2.0
+    assert np.all(np.isfinite(props.properties.center_of_mass)) and np.all(
+        np.isfinite(props.properties.inertia_about_com)
+    )
+    moments = np.linalg.eigvalsh(props.properties.inertia_about_com)
     assert moments.min() >= -1e-12 * moments.max()
     # triangle inequality of principal moments, with rounding room
     assert moments[0] + moments[1] >= moments[2] * (1 - 1e-9)

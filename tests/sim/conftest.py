@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from rbi.core.inertia import MassProperties
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import axis_angle_matrix
 from rbi.sim.scene import scene_from_properties
 from rbi.spec.load import load_body

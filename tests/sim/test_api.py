@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rbi.core.inertia import MassProperties
+from rbi.core.mass import MassProperties
 from rbi.sim import exact
 from rbi.sim.api import METHODS, SimulationError, sample_times, simulate
 from rbi.sim.diagnostics import (

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from scipy.special import ellipk
 
-from rbi.core.inertia import MassProperties
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import quaternion_multiply, quaternion_to_matrix
 from rbi.sim import exact
 from rbi.sim.api import simulate

@@ -6,15 +6,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from rbi.core.mass import MassProperties
 from rbi.sim.api import DEFAULT_RTOL, sample_times, simulate
 from rbi.sim.scene import initial_state, scene_from_properties
 
 
 def _scene(pivoted: bool):
-    from rbi.core.inertia import MassProperties
 
     inertia = np.array([[3e-4, 1e-5, 0.0], [1e-5, 2.6e-4, -2e-6], [0.0, -2e-6, 1.9e-4]])
-    props = MassProperties(mass=0.5, com=np.array([0.001, 0.0, 0.05]), inertia_com=inertia)
+    props = MassProperties(mass=0.5, center_of_mass=np.array([0.001, 0.0, 0.05]), inertia_about_com=inertia)
     return scene_from_properties(props, np.zeros(3) if pivoted else None, 9.80665)
 
 

@@ -6,16 +6,18 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from rbi.core.mass import MassProperties
 from rbi.sim.api import simulate
 from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.sim.summary import motion_figures, sweep_figures, sweep_figures_batch
 
 
 def _top_scene(pivoted: bool):
-    from rbi.core.inertia import MassProperties
 
     props = MassProperties(
-        mass=0.5, com=np.array([0.0, 0.0, 0.05]), inertia_com=np.diag([2.6e-4, 2.6e-4, 1.95e-4])
+        mass=0.5,
+        center_of_mass=np.array([0.0, 0.0, 0.05]),
+        inertia_about_com=np.diag([2.6e-4, 2.6e-4, 1.95e-4]),
     )
     return scene_from_properties(props, np.zeros(3) if pivoted else None, 9.80665)
 

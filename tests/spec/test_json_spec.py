@@ -26,8 +26,8 @@ def test_json_and_yaml_give_the_same_body(write_spec):
     from_json = load_body(write_spec(as_json, "top.json"))
     assert from_json.name == "top" and from_json.part_names == ["cone", "bolt"]
     assert from_json.props.mass == from_yaml.props.mass
-    np.testing.assert_array_equal(from_json.props.com, from_yaml.props.com)
-    np.testing.assert_array_equal(from_json.props.inertia_com, from_yaml.props.inertia_com)
+    np.testing.assert_array_equal(from_json.props.center_of_mass, from_yaml.props.center_of_mass)
+    np.testing.assert_array_equal(from_json.props.inertia_about_com, from_yaml.props.inertia_about_com)
     np.testing.assert_array_equal(from_json.pivot, [0.0, 0.0, 0.0])
 
 

@@ -220,10 +220,10 @@ def test_three_or_more_copies_about_an_axis_are_symmetric_about_it(count, axis, 
         SimpleNamespace(count=count, axis=list(axis), through=list(through), step=None),
     )
     u = np.array(axis) / np.linalg.norm(axis)
-    offset = element.com - np.array(through)
+    offset = element.center_of_mass - np.array(through)
     scale = 1.0 + float(np.linalg.norm(center)) + float(np.linalg.norm(through))
     np.testing.assert_allclose(offset - (offset @ u) * u, 0, atol=1e-12 * scale)
-    I = element.inertia_com
+    I = element.inertia_about_com
     axial = u @ I @ u
     transverse = 0.5 * (np.trace(I) - axial)
     expected = axial * np.outer(u, u) + transverse * (np.eye(3) - np.outer(u, u))

@@ -56,11 +56,13 @@ def test_a_csv_cloud_is_the_same_body_as_its_points_in_yaml(tmp_path_factory, po
     M, com, I = direct_sums(masses, positions)
     scale = M * max(1.0, float(np.max(np.abs(positions))) ** 2)  # M·L² of the cloud's extent
     assert from_cloud.mass == pytest.approx(from_parts.mass, rel=1e-15)
-    np.testing.assert_allclose(from_cloud.com, from_parts.com, rtol=0, atol=1e-15 * 5)
-    np.testing.assert_allclose(from_cloud.inertia_com, from_parts.inertia_com, rtol=0, atol=1e-15 * scale)
+    np.testing.assert_allclose(from_cloud.center_of_mass, from_parts.center_of_mass, rtol=0, atol=1e-15 * 5)
+    np.testing.assert_allclose(
+        from_cloud.inertia_about_com, from_parts.inertia_about_com, rtol=0, atol=1e-15 * scale
+    )
     assert from_cloud.mass == pytest.approx(M, rel=1e-14)
-    np.testing.assert_allclose(from_cloud.com, com, rtol=0, atol=1e-13 * 5)
-    np.testing.assert_allclose(from_cloud.inertia_com, I, rtol=0, atol=1e-13 * scale)
+    np.testing.assert_allclose(from_cloud.center_of_mass, com, rtol=0, atol=1e-13 * 5)
+    np.testing.assert_allclose(from_cloud.inertia_about_com, I, rtol=0, atol=1e-13 * scale)
 
 
 def test_npy_csv_and_any_column_order_agree(tmp_path):
@@ -75,11 +77,11 @@ def test_npy_csv_and_any_column_order_agree(tmp_path):
     (tmp_path / "a.yaml").write_text("point_cloud: {file: pts.npy}\n")
     (tmp_path / "b.yaml").write_text("point_cloud: {file: pts.csv}\n")
     a, b = load_body(tmp_path / "a.yaml").props, load_body(tmp_path / "b.yaml").props
-    np.testing.assert_array_equal(a.com, b.com)
-    np.testing.assert_array_equal(a.inertia_com, b.inertia_com)
+    np.testing.assert_array_equal(a.center_of_mass, b.center_of_mass)
+    np.testing.assert_array_equal(a.inertia_about_com, b.inertia_about_com)
     M, com, I = direct_sums(masses, positions)
     assert a.mass == pytest.approx(M, rel=1e-14)
-    np.testing.assert_allclose(a.inertia_com, I, rtol=0, atol=1e-13 * np.max(np.abs(I)))
+    np.testing.assert_allclose(a.inertia_about_com, I, rtol=0, atol=1e-13 * np.max(np.abs(I)))
 
 
 def test_a_cloud_and_parts_together_and_a_path_relative_to_the_spec(tmp_path, monkeypatch):
@@ -94,8 +96,8 @@ def test_a_cloud_and_parts_together_and_a_path_relative_to_the_spec(tmp_path, mo
     body = load_body(spec)
     M, com, I = direct_sums([2.0, 1.0, 3.0], [[2.0, 0, 0], [0, 0, 1.0], [0, 0, -1.0]])
     assert body.props.mass == M
-    np.testing.assert_allclose(body.props.com, com, rtol=0, atol=1e-15)
-    np.testing.assert_allclose(body.props.inertia_com, I, rtol=0, atol=1e-14)
+    np.testing.assert_allclose(body.props.center_of_mass, com, rtol=0, atol=1e-15)
+    np.testing.assert_allclose(body.props.inertia_about_com, I, rtol=0, atol=1e-14)
 
 
 def test_a_large_cloud_matches_the_vectorised_definition(tmp_path):
@@ -113,8 +115,8 @@ def test_a_large_cloud_matches_the_vectorised_definition(tmp_path):
     d = p - com
     I = np.einsum("n,n->", m, np.einsum("ni,ni->n", d, d)) * np.eye(3) - np.einsum("n,ni,nj->ij", m, d, d)
     assert props.mass == pytest.approx(m.sum(), rel=1e-13)
-    np.testing.assert_allclose(props.com, com, rtol=1e-13)
-    np.testing.assert_allclose(props.inertia_com, I, rtol=0, atol=1e-12 * np.max(np.abs(I)))
+    np.testing.assert_allclose(props.center_of_mass, com, rtol=1e-13)
+    np.testing.assert_allclose(props.inertia_about_com, I, rtol=0, atol=1e-12 * np.max(np.abs(I)))
 
 
 @pytest.mark.parametrize(
@@ -206,8 +208,8 @@ def test_a_csv_cloud_with_a_byte_order_mark_is_the_same_cloud(tmp_path):
     (tmp_path / "b.yaml").write_text("point_cloud: {file: bom.csv}\n")
     a, b = load_body(tmp_path / "a.yaml").props, load_body(tmp_path / "b.yaml").props
     assert b.mass == a.mass == 4.0
-    np.testing.assert_array_equal(b.com, [0.0, 1.5, -0.5])
-    np.testing.assert_array_equal(b.inertia_com, a.inertia_com)
+    np.testing.assert_array_equal(b.center_of_mass, [0.0, 1.5, -0.5])
+    np.testing.assert_array_equal(b.inertia_about_com, a.inertia_about_com)
 
 
 def test_a_column_named_twice_is_refused(tmp_path):

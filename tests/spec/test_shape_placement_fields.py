@@ -37,7 +37,7 @@ def test_box_turned_a_quarter_turn_swaps_moments_exactly(write_spec):
     """,
     )
     # Edges along x, y, z become y, x, z: Ixx = m (a² + c²)/12 with a = 1 now along y.
-    np.testing.assert_array_equal(b.props.inertia_com, np.diag([10.0, 13.0, 5.0]))
+    np.testing.assert_array_equal(b.props.inertia_about_com, np.diag([10.0, 13.0, 5.0]))
 
 
 def test_rotation_form_matches_scipy_axis_angle(write_spec):
@@ -53,8 +53,8 @@ def test_rotation_form_matches_scipy_axis_angle(write_spec):
     )
     R = Rotation.from_rotvec(np.radians(40) * np.array([1, 2, 2]) / 3).as_matrix()
     own = 5 / 5 * np.diag([0.2**2 + 0.1**2, 0.3**2 + 0.1**2, 0.3**2 + 0.2**2])
-    np.testing.assert_allclose(b.props.inertia_com, R @ own @ R.T, rtol=1e-13, atol=1e-16)
-    np.testing.assert_array_equal(b.props.com, [1, 2, 3])
+    np.testing.assert_allclose(b.props.inertia_about_com, R @ own @ R.T, rtol=1e-13, atol=1e-16)
+    np.testing.assert_array_equal(b.props.center_of_mass, [1, 2, 3])
 
 
 def test_density_times_closed_form_volume_for_each_solid(write_spec):
@@ -82,13 +82,13 @@ def test_thin_shell_and_thin_tube_take_mass(write_spec):
         - {shape: tube, mass: 3, start: [0, 0, -1], end: [0, 0, 1], outer_radius: 2, inner_radius: 2}
     """,
     )
-    np.testing.assert_allclose(b.elements[0].inertia_com, 2 / 3 * 3 * 4 * np.eye(3), rtol=1e-15)
-    assert b.elements[1].inertia_com[2, 2] == pytest.approx(3 * 4, rel=1e-15)  # hoop: m R²
+    np.testing.assert_allclose(b.elements[0].inertia_about_com, 2 / 3 * 3 * 4 * np.eye(3), rtol=1e-15)
+    assert b.elements[1].inertia_about_com[2, 2] == pytest.approx(3 * 4, rel=1e-15)  # hoop: m R²
 
 
 def test_rod_is_a_line_mass(write_spec):
     b = body(write_spec, "- {shape: rod, mass: 3, start: [0, 0, 0], end: [2, 0, 0]}\n")
-    np.testing.assert_allclose(b.props.inertia_com, np.diag([0.0, 1.0, 1.0]), atol=1e-15)
+    np.testing.assert_allclose(b.props.inertia_about_com, np.diag([0.0, 1.0, 1.0]), atol=1e-15)
 
 
 def test_custom_about_another_point_is_moved_to_the_com(write_spec):
@@ -104,7 +104,7 @@ def test_custom_about_another_point_is_moved_to_the_com(write_spec):
           inertia: {ixx: 2, iyy: 5, izz: 5}
     """,
     )
-    np.testing.assert_allclose(b.props.inertia_com, np.diag([2.0, 3.0, 3.0]), rtol=1e-15)
+    np.testing.assert_allclose(b.props.inertia_about_com, np.diag([2.0, 3.0, 3.0]), rtol=1e-15)
 
 
 def test_custom_matrix_and_component_forms_agree_and_are_turned(write_spec):
@@ -130,8 +130,8 @@ def test_custom_matrix_and_component_forms_agree_and_are_turned(write_spec):
     )
     R = Rotation.from_euler("x", 30, degrees=True).as_matrix()
     given = np.array([[2, -0.1, 0], [-0.1, 3, 0.2], [0, 0.2, 4]])
-    np.testing.assert_allclose(matrix.props.inertia_com, R @ given @ R.T, rtol=1e-14, atol=1e-16)
-    np.testing.assert_array_equal(matrix.props.inertia_com, components.props.inertia_com)
+    np.testing.assert_allclose(matrix.props.inertia_about_com, R @ given @ R.T, rtol=1e-14, atol=1e-16)
+    np.testing.assert_array_equal(matrix.props.inertia_about_com, components.props.inertia_about_com)
 
 
 @pytest.mark.parametrize(
@@ -241,7 +241,7 @@ def test_euler_form_matches_scipy_from_euler(write_spec, sequence):
     b = body(write_spec, ELLIPSOID.format(rotation=f"{{euler_deg: {angles}, sequence: {sequence}}}"))
     R = Rotation.from_euler(sequence, angles, degrees=True).as_matrix()
     np.testing.assert_allclose(
-        b.props.inertia_com, R @ _own_ellipsoid_inertia() @ R.T, rtol=1e-13, atol=1e-15
+        b.props.inertia_about_com, R @ _own_ellipsoid_inertia() @ R.T, rtol=1e-13, atol=1e-15
     )
 
 
@@ -250,7 +250,7 @@ def test_quaternion_form_matches_scipy_and_is_normalised(write_spec):
     b = body(write_spec, ELLIPSOID.format(rotation=f"{{quaternion: {(3 * q_wxyz).tolist()}}}"))
     R = Rotation.from_quat(np.r_[q_wxyz[1:], q_wxyz[0]]).as_matrix()  # scipy is scalar-last
     np.testing.assert_allclose(
-        b.props.inertia_com, R @ _own_ellipsoid_inertia() @ R.T, rtol=1e-13, atol=1e-15
+        b.props.inertia_about_com, R @ _own_ellipsoid_inertia() @ R.T, rtol=1e-13, atol=1e-15
     )
 
 
@@ -262,7 +262,7 @@ def test_one_rotation_written_three_ways_gives_bit_close_inertia(write_spec):
         "{euler_deg: [90, 0, 0], sequence: zyx}",
         "{euler_deg: [0, 0, 90], sequence: XYZ}",
     ]
-    results = [body(write_spec, ELLIPSOID.format(rotation=form)).props.inertia_com for form in forms]
+    results = [body(write_spec, ELLIPSOID.format(rotation=form)).props.inertia_about_com for form in forms]
     for other in results[1:]:
         np.testing.assert_allclose(other, results[0], rtol=0, atol=1e-15)
     np.testing.assert_allclose(

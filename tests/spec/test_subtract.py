@@ -35,8 +35,10 @@ def test_bored_shaft_is_the_hollow_cylinder(write_spec):
     b = shaft_minus_bore(write_spec, 2.0, 1.5, 10.0)
     m, axial, transverse = hollow_cylinder_textbook(2.0, 1.5, 10.0)
     assert b.props.mass == pytest.approx(m, rel=1e-14)
-    np.testing.assert_allclose(b.props.com, [0, 0, 5.0], rtol=1e-15)
-    np.testing.assert_allclose(np.diag(b.props.inertia_com), [transverse, transverse, axial], rtol=1e-14)
+    np.testing.assert_allclose(b.props.center_of_mass, [0, 0, 5.0], rtol=1e-15)
+    np.testing.assert_allclose(
+        np.diag(b.props.inertia_about_com), [transverse, transverse, axial], rtol=1e-14
+    )
 
 
 @pytest.mark.parametrize("wall", [1e-1, 1e-3, 1e-6, 1e-9])
@@ -48,8 +50,8 @@ def test_thin_wall_by_subtraction_loses_about_eps_times_radius_over_wall(write_s
     m, axial, transverse = hollow_cylinder_textbook(R, R - wall, L)
     bound = 8 * EPS * R / wall
     assert b.props.mass == pytest.approx(m, rel=bound)
-    assert b.props.inertia_com[2, 2] == pytest.approx(axial, rel=bound)
-    assert b.props.inertia_com[0, 0] == pytest.approx(transverse, rel=bound)
+    assert b.props.inertia_about_com[2, 2] == pytest.approx(axial, rel=bound)
+    assert b.props.inertia_about_com[0, 0] == pytest.approx(transverse, rel=bound)
 
 
 def test_the_tube_shape_keeps_full_precision_where_subtraction_cannot(write_spec):
@@ -62,7 +64,7 @@ parts:
     )
     m, axial, _ = hollow_cylinder_textbook(R, R - wall, L)
     assert b.props.mass == pytest.approx(m, rel=4 * EPS)
-    assert b.props.inertia_com[2, 2] == pytest.approx(axial, rel=4 * EPS)
+    assert b.props.inertia_about_com[2, 2] == pytest.approx(axial, rel=4 * EPS)
 
 
 def test_wheel_with_four_lightening_holes(write_spec):
@@ -85,8 +87,10 @@ parts:
     # About x: the holes on the y axis sit d away, those on the x axis on it: 2 m d² in all.
     ixx = M * (3 * R * R + t * t) / 12 - (4 * m * (3 * r * r + t * t) / 12 + 2 * m * d * d)
     assert b.props.mass == pytest.approx(M - 4 * m, rel=1e-14)
-    np.testing.assert_allclose(b.props.com, [0, 0, t / 2], atol=1e-12)
-    np.testing.assert_allclose(b.props.inertia_com, np.diag([ixx, ixx, izz]), rtol=1e-13, atol=1e-9 * izz)
+    np.testing.assert_allclose(b.props.center_of_mass, [0, 0, t / 2], atol=1e-12)
+    np.testing.assert_allclose(
+        b.props.inertia_about_com, np.diag([ixx, ixx, izz]), rtol=1e-13, atol=1e-9 * izz
+    )
 
 
 def test_one_hole_moves_the_centre_of_mass_away_from_it(write_spec):
@@ -98,7 +102,7 @@ parts:
 """)
     )
     M, m = 7850 * 0.2 * 0.1 * 0.01, 7850 * math.pi * 0.02**2 * 0.01
-    np.testing.assert_allclose(b.props.com, [-m * 0.05 / (M - m), 0, 0], rtol=1e-13, atol=1e-18)
+    np.testing.assert_allclose(b.props.center_of_mass, [-m * 0.05 / (M - m), 0, 0], rtol=1e-13, atol=1e-18)
 
 
 def _error(write_spec, text: str) -> str:

@@ -8,7 +8,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from rbi.core.inertia import combine_elements
+from rbi.core.mass import MassProperties
 from rbi.spec.errors import InputError
 from rbi.spec.load import spec_from_raw
 from rbi.spec.translate import _removed, body_from_spec, part_element
@@ -104,9 +104,13 @@ def test_batched_elements_equal_the_per_part_path(parts):
     for i, element in batched.items():
         want = part_element(spec.parts[i], spec.units, "batch.yaml")
         assert element.mass == pytest.approx(want.mass, rel=1e-15, abs=0)
-        assert _close(element.com, want.com, max(1.0, float(np.max(np.abs(want.com)))))
         assert _close(
-            element.inertia_com, want.inertia_com, float(np.max(np.abs(want.inertia_com))) or 1e-300
+            element.center_of_mass, want.center_of_mass, max(1.0, float(np.max(np.abs(want.center_of_mass))))
+        )
+        assert _close(
+            element.inertia_about_com,
+            want.inertia_about_com,
+            float(np.max(np.abs(want.inertia_about_com))) or 1e-300,
         )
     # the whole body, holes left out (they must lie inside a solid, which random parts do not)
     solid = _spec([{k: v for k, v in p.items() if k != "subtract"} for p in parts])
@@ -115,12 +119,19 @@ def test_batched_elements_equal_the_per_part_path(parts):
     assert len(body.elements) == len(expected)
     for got, want in zip(body.elements, expected):
         assert got.mass == pytest.approx(want.mass, rel=1e-15, abs=0)
-        assert _close(got.inertia_com, want.inertia_com, float(np.max(np.abs(want.inertia_com))) or 1e-300)
-    props = combine_elements(expected)
+        assert _close(
+            got.inertia_about_com,
+            want.inertia_about_com,
+            float(np.max(np.abs(want.inertia_about_com))) or 1e-300,
+        )
+    props = MassProperties.sum(expected)
     assert body.props.mass == pytest.approx(props.mass, rel=1e-14)
-    assert np.allclose(body.props.com, props.com, rtol=1e-13, atol=1e-13)
+    assert np.allclose(body.props.center_of_mass, props.center_of_mass, rtol=1e-13, atol=1e-13)
     assert np.allclose(
-        body.props.inertia_com, props.inertia_com, rtol=1e-12, atol=1e-12 * np.max(np.abs(props.inertia_com))
+        body.props.inertia_about_com,
+        props.inertia_about_com,
+        rtol=1e-12,
+        atol=1e-12 * np.max(np.abs(props.inertia_about_com)),
     )
 
 
@@ -142,7 +153,7 @@ def test_a_hole_through_the_batch():
     full, hole = 1000.0 * np.pi * 0.25, 1000.0 * np.pi * 0.01
     assert body.props.mass == pytest.approx(full - hole + 0.08, rel=1e-14)
     assert body.elements[-1].mass == pytest.approx(-hole, rel=1e-15)
-    assert body.props.inertia_com[2, 2] == pytest.approx(
+    assert body.props.inertia_about_com[2, 2] == pytest.approx(
         0.5 * full * 0.25 - 0.5 * hole * 0.01 + 80 * 0.001 * 0.01 - (0.08**2 * 0.01) / body.props.mass,
         rel=1e-12,
     )
@@ -157,8 +168,8 @@ def test_cylinder_closed_form_through_the_batch():
     body = body_from_spec(_spec(parts), "batch.yaml")
     m = 7850.0 * np.pi * 0.01 * 2.0
     assert body.props.mass == pytest.approx(100 * m, rel=1e-14)
-    assert body.props.inertia_com[2, 2] == pytest.approx(100 * 0.5 * m * 0.01, rel=1e-13)
-    assert body.props.inertia_com[0, 0] == pytest.approx(100 * m * (3 * 0.01 + 4.0) / 12, rel=1e-13)
+    assert body.props.inertia_about_com[2, 2] == pytest.approx(100 * 0.5 * m * 0.01, rel=1e-13)
+    assert body.props.inertia_about_com[0, 0] == pytest.approx(100 * m * (3 * 0.01 + 4.0) / 12, rel=1e-13)
 
 
 def test_errors_still_name_the_part():

@@ -31,7 +31,7 @@ def vec(v) -> str:
 
 def principal_of(write_spec, text: str):
     body = load_body(write_spec(text))
-    return body, *principal_axes(body.props.inertia_com)
+    return body, *principal_axes(body.props.inertia_about_com)
 
 
 def assert_clean_frame(axes, tol=1e-13):
@@ -83,7 +83,7 @@ parts:
     # The pair spans the plane perpendicular to u.
     assert abs(axes[1] @ u) <= 1e-11 and abs(axes[2] @ u) <= 1e-11
     # The inertia is rebuilt from the reported set to the size of the perturbation.
-    I = body.props.inertia_com
+    I = body.props.inertia_about_com
     np.testing.assert_allclose(axes.T @ np.diag(moments) @ axes, I, rtol=0, atol=5e-12 * transverse)
 
 
@@ -134,7 +134,7 @@ def test_equal_moments_give_a_clean_right_handed_set(write_spec, shape, seed):
         moment = 0.3 * m * r * r
     body, moments, axes = principal_of(write_spec, spec)
     np.testing.assert_allclose(moments, [moment] * 3, rtol=1e-13)
-    np.testing.assert_allclose(body.props.inertia_com, moment * np.eye(3), rtol=0, atol=1e-13 * moment)
+    np.testing.assert_allclose(body.props.inertia_about_com, moment * np.eye(3), rtol=0, atol=1e-13 * moment)
     # Every direction is principal: rbi must still answer with one clean right-handed set,
     # the same one every time (the coordinate axes).
     np.testing.assert_array_equal(axes, np.eye(3))
@@ -224,14 +224,17 @@ def test_millimetre_parts_a_thousand_kilometres_away(write_spec, origin):
     far = load_body(write_spec(small_body(origin), "far.yaml")).props
     assert far.mass == near.mass
     # The centre of mass is known to the spacing of doubles at 1e6 m (1.2e-10 m) ...
-    np.testing.assert_allclose(far.com - origin, near.com, rtol=0, atol=2.5e-10)
+    np.testing.assert_allclose(far.center_of_mass - origin, near.center_of_mass, rtol=0, atol=2.5e-10)
     # ... and the inertia about it keeps nearly all its digits: an error δ in the reference
     # point changes the inertia only by m δ² (parallel-axis theorem).
     np.testing.assert_allclose(
-        far.inertia_com, near.inertia_com, rtol=0, atol=1e-9 * np.max(np.abs(near.inertia_com))
+        far.inertia_about_com,
+        near.inertia_about_com,
+        rtol=0,
+        atol=1e-9 * np.max(np.abs(near.inertia_about_com)),
     )
-    moments_far, axes_far = principal_axes(far.inertia_com)
-    moments_near, axes_near = principal_axes(near.inertia_com)
+    moments_far, axes_far = principal_axes(far.inertia_about_com)
+    moments_near, axes_near = principal_axes(near.inertia_about_com)
     np.testing.assert_allclose(moments_far, moments_near, rtol=1e-9)
     np.testing.assert_allclose(axes_far, axes_near, rtol=0, atol=1e-7)
 
@@ -275,11 +278,11 @@ parts:
     props = body.props
     assert props.mass == pytest.approx(float(M), rel=1e-15)
     # The bolt moves the centre of mass by 5e-10 m: rbi must get that shift to 1e-12 of itself.
-    np.testing.assert_allclose(props.com, [float(x) for x in com], rtol=1e-12, atol=0)
+    np.testing.assert_allclose(props.center_of_mass, [float(x) for x in com], rtol=1e-12, atol=0)
     exact = np.array([[float(x) for x in row] for row in I])
     # The bolt's product of inertia (5e-8 kg·m², 4e-10 of the largest moment) to 1e-9 of itself.
-    assert props.inertia_com[0, 2] == pytest.approx(exact[0, 2], rel=1e-9)
-    np.testing.assert_allclose(props.inertia_com, exact, rtol=1e-15, atol=0)
+    assert props.inertia_about_com[0, 2] == pytest.approx(exact[0, 2], rel=1e-9)
+    np.testing.assert_allclose(props.inertia_about_com, exact, rtol=1e-15, atol=0)
     # The spin axis tilts from z towards x by ½·atan2(2 I_xz, I_zz − I_xx) ≈ −8.5e-10 rad.
     tilt = 0.5 * math.atan2(2 * float(I[0][2]), float(I[2][2] - I[0][0]))
     spin_axis = axes[2]
@@ -345,7 +348,7 @@ def test_collinear_point_masses_have_a_zero_moment_along_their_line(write_spec, 
     M = sum(masses)
     s_com = sum(m * s for m, s in zip(masses, offsets)) / M
     expected = sum(m * (s - s_com) ** 2 for m, s in zip(masses, offsets))  # Σ m s² about the CoM
-    np.testing.assert_allclose(body.props.com, p0 + s_com * u, rtol=0, atol=1e-15 * 4)
+    np.testing.assert_allclose(body.props.center_of_mass, p0 + s_com * u, rtol=0, atol=1e-15 * 4)
     assert abs(moments[0]) <= 10 * EPS * expected  # rank deficient: zero up to rounding
     np.testing.assert_allclose(moments[1:], [expected, expected], rtol=1e-14)
     assert parallel(axes[0], u, 1e-13)
@@ -356,8 +359,8 @@ def test_a_single_point_mass_has_no_inertia_and_still_a_clean_frame(write_spec):
     body, moments, axes = principal_of(
         write_spec, "parts:\n  - {shape: point, mass: 3.0, position: [1000000.0, -2.5, 7]}\n"
     )
-    np.testing.assert_array_equal(body.props.com, [1e6, -2.5, 7])
-    np.testing.assert_array_equal(body.props.inertia_com, np.zeros((3, 3)))
+    np.testing.assert_array_equal(body.props.center_of_mass, [1e6, -2.5, 7])
+    np.testing.assert_array_equal(body.props.inertia_about_com, np.zeros((3, 3)))
     np.testing.assert_array_equal(moments, np.zeros(3))
     np.testing.assert_array_equal(axes, np.eye(3))
 

@@ -65,8 +65,10 @@ def scale_of(I) -> float:
 def test_translating_the_body_moves_the_centre_and_keeps_the_central_inertia(spec, shift):
     a, b = props(spec), props(moved(spec, lambda p: p + shift))
     assert b.mass == a.mass
-    np.testing.assert_allclose(b.com, a.com + shift, rtol=0, atol=1e-12 * 8)
-    np.testing.assert_allclose(b.inertia_com, a.inertia_com, rtol=0, atol=1e-11 * scale_of(a.inertia_com))
+    np.testing.assert_allclose(b.center_of_mass, a.center_of_mass + shift, rtol=0, atol=1e-12 * 8)
+    np.testing.assert_allclose(
+        b.inertia_about_com, a.inertia_about_com, rtol=0, atol=1e-11 * scale_of(a.inertia_about_com)
+    )
 
 
 @SETTINGS
@@ -74,15 +76,15 @@ def test_translating_the_body_moves_the_centre_and_keeps_the_central_inertia(spe
 def test_turning_the_geometry_turns_the_inertia(spec, seed):
     R = Rotation.random(random_state=seed).as_matrix()
     a, b = props(spec), props(moved(spec, lambda p: R @ p))
-    np.testing.assert_allclose(b.com, R @ a.com, rtol=0, atol=1e-12 * 8)
+    np.testing.assert_allclose(b.center_of_mass, R @ a.center_of_mass, rtol=0, atol=1e-12 * 8)
     np.testing.assert_allclose(
-        b.inertia_com, R @ a.inertia_com @ R.T, rtol=0, atol=1e-11 * scale_of(a.inertia_com)
+        b.inertia_about_com, R @ a.inertia_about_com @ R.T, rtol=0, atol=1e-11 * scale_of(a.inertia_about_com)
     )
     np.testing.assert_allclose(
-        np.linalg.eigvalsh(b.inertia_com),
-        np.linalg.eigvalsh(a.inertia_com),
+        np.linalg.eigvalsh(b.inertia_about_com),
+        np.linalg.eigvalsh(a.inertia_about_com),
         rtol=0,
-        atol=1e-11 * scale_of(a.inertia_com),
+        atol=1e-11 * scale_of(a.inertia_about_com),
     )
 
 
@@ -92,9 +94,9 @@ def test_mirroring_the_geometry_mirrors_the_inertia(spec, axis):
     S = np.eye(3)
     S[axis, axis] = -1.0
     a, b = props(spec), props(moved(spec, lambda p: S @ p))
-    np.testing.assert_allclose(b.com, S @ a.com, rtol=0, atol=1e-13 * 8)
+    np.testing.assert_allclose(b.center_of_mass, S @ a.center_of_mass, rtol=0, atol=1e-13 * 8)
     np.testing.assert_allclose(
-        b.inertia_com, S @ a.inertia_com @ S, rtol=0, atol=1e-12 * scale_of(a.inertia_com)
+        b.inertia_about_com, S @ a.inertia_about_com @ S, rtol=0, atol=1e-12 * scale_of(a.inertia_about_com)
     )
 
 
@@ -111,9 +113,12 @@ def test_power_of_two_scalings_scale_mass_and_inertia_exactly(spec, length_exp, 
             p["radius"] = p["radius"] * k
     a, b = props(spec), props(scaled)
     assert b.mass == a.mass * j
-    np.testing.assert_allclose(b.com, k * a.com, rtol=0, atol=1e-14 * 8 * k)
+    np.testing.assert_allclose(b.center_of_mass, k * a.center_of_mass, rtol=0, atol=1e-14 * 8 * k)
     np.testing.assert_allclose(
-        b.inertia_com, k * k * j * a.inertia_com, rtol=0, atol=1e-14 * k * k * j * scale_of(a.inertia_com)
+        b.inertia_about_com,
+        k * k * j * a.inertia_about_com,
+        rtol=0,
+        atol=1e-14 * k * k * j * scale_of(a.inertia_about_com),
     )
 
 
@@ -130,9 +135,12 @@ def test_a_spec_in_millimetres_and_grams_gives_the_same_body_in_its_own_units(sp
     in_mm["units"] = {"length": "mm", "mass": "g"}
     a, b = props(spec), props(in_mm)
     assert b.mass == np.float64(a.mass * 1000.0) or abs(b.mass / (a.mass * 1000.0) - 1) < 1e-15
-    np.testing.assert_allclose(b.com, 1000.0 * a.com, rtol=0, atol=1e-12 * 8 * 1000.0)
+    np.testing.assert_allclose(b.center_of_mass, 1000.0 * a.center_of_mass, rtol=0, atol=1e-12 * 8 * 1000.0)
     np.testing.assert_allclose(
-        b.inertia_com, 1e9 * a.inertia_com, rtol=0, atol=1e-12 * 1e9 * scale_of(a.inertia_com)
+        b.inertia_about_com,
+        1e9 * a.inertia_about_com,
+        rtol=0,
+        atol=1e-12 * 1e9 * scale_of(a.inertia_about_com),
     )
 
 
@@ -165,5 +173,7 @@ def test_cutting_a_cylinder_in_two_changes_nothing(spec, cut):
     cut_spec = spec | {"parts": spec["parts"][:i] + pieces + spec["parts"][i + 1 :]}
     a, b = props(spec), props(cut_spec)
     assert b.mass == np.float64(a.mass) or abs(b.mass / a.mass - 1) < 1e-14
-    np.testing.assert_allclose(b.com, a.com, rtol=0, atol=1e-13 * 8)
-    np.testing.assert_allclose(b.inertia_com, a.inertia_com, rtol=0, atol=1e-12 * scale_of(a.inertia_com))
+    np.testing.assert_allclose(b.center_of_mass, a.center_of_mass, rtol=0, atol=1e-13 * 8)
+    np.testing.assert_allclose(
+        b.inertia_about_com, a.inertia_about_com, rtol=0, atol=1e-12 * scale_of(a.inertia_about_com)
+    )

@@ -167,7 +167,7 @@ def test_mesh_part_is_drawn_from_its_triangles_placed_like_its_mass(write_spec, 
     centroid = np.mean(
         drawn[np.array(item["faces"])].reshape(-1, 3), axis=0
     )  # every vertex thrice: the tet's centroid
-    np.testing.assert_allclose(body.props.com, centroid, atol=1e-9)
+    np.testing.assert_allclose(body.props.center_of_mass, centroid, atol=1e-9)
 
 
 @pytest.mark.parametrize(

@@ -739,7 +739,7 @@ def _throughput_markdown(tp: dict | None) -> list[str]:
             "",
             "## Mass-property throughput",
             "",
-            'Random point masses (seeded). "mass+CoM+inertia" is `rbi.core.inertia.combine` on arrays in memory; '
+            'Random point masses (seeded). "mass+CoM+inertia" is `rbi.core.mass.combine` on arrays in memory; '
             '"total" adds the principal axes. "from … spec" is the whole load of a spec file naming the cloud '
             f"(`point_cloud: {{file: cloud.csv}}`: YAML, validation, reading the cloud, the reduction) plus the "
             f"principal axes, as `rbi principal` does after start-up; the CSV holds `{tp['csv_format']}` numbers. "

@@ -19,7 +19,8 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench.timing import measure, time_once
-from rbi.core.inertia import centre_of_mass, combine, principal_axes
+from rbi.core.inertia import centre_of_mass, principal_axes
+from rbi.core.mass import combine
 from rbi.spec.load import load_body, read_yaml, validation_messages
 from rbi.spec.translate import body_from_spec
 
@@ -49,8 +50,8 @@ def core_timings(masses: np.ndarray, positions: np.ndarray) -> dict:
     mass = measure(lambda: masses.sum())
     com = measure(lambda: centre_of_mass(masses, positions))
     inertia = measure(lambda: combine(masses, positions))
-    principal = measure(lambda: principal_axes(props.inertia_com))
-    total = measure(lambda: principal_axes(combine(masses, positions).inertia_com))
+    principal = measure(lambda: principal_axes(props.inertia_about_com))
+    total = measure(lambda: principal_axes(combine(masses, positions).inertia_about_com))
     return {
         "mass_s": mass.median,
         "com_s": com.median,
@@ -82,7 +83,7 @@ def file_timings(specs: dict[str, Path], repeats: int) -> dict:
     out = {}
     for kind, spec in specs.items():
         timing = measure(
-            lambda: principal_axes(load_body(spec).props.inertia_com),
+            lambda: principal_axes(load_body(spec).props.inertia_about_com),
             min_repeats=repeats,
             max_repeats=repeats,
             min_seconds=0.0,
@@ -101,7 +102,7 @@ def check_against_direct_sum(specs: dict[str, Path], masses: np.ndarray, positio
     d = positions - com
     second = (d * masses[:, None]).T @ d
     direct = np.trace(second) * np.eye(3) - second
-    return float(np.max(np.abs(props.inertia_com - direct)) / np.max(np.abs(direct)))
+    return float(np.max(np.abs(props.inertia_about_com - direct)) / np.max(np.abs(direct)))
 
 
 def point_clouds(sizes, progress: Progress) -> list[dict]:
@@ -179,9 +180,9 @@ def solid_parts(sizes, progress: Progress) -> list[dict]:
                 raise RuntimeError(f"generated spec is invalid: {problems[0]}")
             translate_s, body = time_once(lambda: body_from_spec(spec, str(path)))
             masses = np.array([e.mass for e in body.elements])
-            coms = np.array([e.com for e in body.elements])
-            inertias = np.array([e.inertia_com for e in body.elements])
-            core = measure(lambda: principal_axes(combine(masses, coms, inertias).inertia_com))
+            coms = np.array([e.center_of_mass for e in body.elements])
+            inertias = np.array([e.inertia_about_com for e in body.elements])
+            core = measure(lambda: principal_axes(combine(masses, coms, inertias).inertia_about_com))
             total = read_s + validate_s + translate_s
             # The same spec as one JSON object (also valid YAML), as a generating program would write it.
             as_json = path.with_suffix(".json")

@@ -63,7 +63,6 @@ def dynamics(
       rbi dynamics robot_link.yaml --alpha 0,0,10 --omega 0,0,2 --about pivot
       rbi dynamics cubesat.yaml --torque 0,0,1e-3 --format json
     """
-    from rbi.core.inertia import inertia_about
     from rbi.spec.load import load_body
 
     inverse = alpha is not None
@@ -76,8 +75,8 @@ def dynamics(
     body = load_body(file)
     about_label, point = parse_about(about, body)
     props = body.props
-    r = props.com - np.asarray(point)
-    I_point = inertia_about(props, point)
+    r = props.center_of_mass - np.asarray(point)
+    I_point = props.inertia_about(point)
     if not np.all(np.isfinite(I_point)):
         raise InputError(
             f"--about: the point is too far from the body: the inertia about it overflows "
@@ -93,7 +92,7 @@ def dynamics(
         "warnings": list(body.warnings),
         "mode": "inverse" if inverse else "forward",
         "mass": props.mass,
-        "center_of_mass": props.com,
+        "center_of_mass": props.center_of_mass,
         "about": point,
         "about_label": about_label,
         "omega": w,
@@ -137,7 +136,7 @@ def _inverse(props, I_point, r, w, about_label: str, alpha, accel):
     a = np.array(parse_vector(alpha, "--alpha"))
     acc = np.array(parse_vector(accel, "--accel")) if accel else np.zeros(3)
     if about_label == "com":
-        wrench = ne.newton_euler_com(props.mass, props.inertia_com, w, a, acc)
+        wrench = ne.newton_euler_com(props.mass, props.inertia_about_com, w, a, acc)
     else:
         wrench = ne.newton_euler_point(props.mass, I_point, r, w, a, acc)
     return {"alpha": a, "point_acceleration": acc}, {"force": wrench.force, "torque": wrench.torque}
@@ -162,7 +161,7 @@ def _forward(file, props, I_point, r, w, about_label: str, force, torque, accel)
         return {"alpha": a, "point_acceleration": acc}, {"force": f, "torque": t}
     f = np.array(parse_vector(force, "--force")) if force else np.zeros(3)
     if about_label == "com":
-        result_acc = ne.newton_euler_com_forward(props.mass, props.inertia_com, w, f, t)
+        result_acc = ne.newton_euler_com_forward(props.mass, props.inertia_about_com, w, f, t)
     else:
         result_acc = ne.newton_euler_point_forward(props.mass, I_point, r, w, f, t)
     return {"alpha": result_acc.angular, "point_acceleration": result_acc.linear}, {"force": f, "torque": t}

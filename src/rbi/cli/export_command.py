@@ -71,22 +71,22 @@ def export(
     xml = export_xml(
         to.value,
         props.mass,
-        props.com,
-        props.inertia_com,
+        props.center_of_mass,
+        props.inertia_about_com,
         name=name,
         document=document,
         diagonal=diagonal,
         comment=_comment(source),
     )
-    _warn_if_singular(props.inertia_com)
+    _warn_if_singular(props.inertia_about_com)
     result = {
         "name": body.name,
         "to": to.value,
         "units": body.units,
         "warnings": list(source.warnings),
         "mass": props.mass,
-        "center_of_mass": props.com,
-        "inertia": props.inertia_com,
+        "center_of_mass": props.center_of_mass,
+        "inertia": props.inertia_about_com,
         "xml": xml,
     }
     if format is not OutputFormat.json:

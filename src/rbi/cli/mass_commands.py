@@ -142,11 +142,11 @@ def momentum(
     body, (point, v_given) = in_output_units(body, units, point, v_given)
     v_given = None if v_given is None else np.array(v_given)
     props = body.props
-    com_from_point = props.com - np.asarray(point)
+    com_from_point = props.center_of_mass - np.asarray(point)
     # Without a given velocity the reference point is fixed: v_c = ω × r_{c/o} (zero at the CoM).
     v_com = v_given if v_given is not None else np.cross(w, com_from_point)
-    h = angular_momentum_about_point(props.inertia_com, props.mass, com_from_point, w, v_com)
-    energy = kinetic_energy(props.inertia_com, w, props.mass, v_com)
+    h = angular_momentum_about_point(props.inertia_about_com, props.mass, com_from_point, w, v_com)
+    energy = kinetic_energy(props.inertia_about_com, w, props.mass, v_com)
     result = header(body, about_label, point) | {
         "omega": w,
         "com_velocity": v_com,

@@ -29,7 +29,7 @@ def header(body, about_label: str, about_point) -> dict:
         "name": body.name,
         "units": body.units,
         "mass": body.props.mass,
-        "center_of_mass": body.props.com,
+        "center_of_mass": body.props.center_of_mass,
         "about": about_point,
         "about_label": about_label,
         "warnings": list(body.warnings),
@@ -73,13 +73,13 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
     from rbi.cli.each_file import FileReport
     from rbi.cli.option_values import in_output_units, parse_about
     from rbi.cli.render import number
-    from rbi.core.inertia import inertia_about, moment_about_axis, re_express, with_product_sign
+    from rbi.core.inertia import moment_about_axis, re_express, with_product_sign
     from rbi.core.rotation import compose_world_rotations
 
     body = load_body(file)
     about_label, point = parse_about(about, body)
     body, (point,) = in_output_units(body, units, point)
-    I = inertia_about(body.props, point)
+    I = body.props.inertia_about(point)
     if turns:
         I = re_express(I, compose_world_rotations(turns))
     shown = with_product_sign(I, products)
@@ -100,7 +100,11 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
         frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
         rows = [
             ("mass", labels["mass"], number(body.props.mass, 8)),
-            ("centre of mass", labels["length"], tables.vector(body.props.com, body_size(body.props))),
+            (
+                "centre of mass",
+                labels["length"],
+                tables.vector(body.props.center_of_mass, body_size(body.props)),
+            ),
             (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body.props))),
         ]
         if direction is not None:
@@ -131,12 +135,12 @@ def _principal_of(file: str, about: str, units: str | None):
     from rbi.cli.each_file import FileReport
     from rbi.cli.option_values import in_output_units, parse_about
     from rbi.cli.render import number
-    from rbi.core.inertia import inertia_about, principal_axes, radii_of_gyration
+    from rbi.core.inertia import principal_axes, radii_of_gyration
 
     body = load_body(file)
     about_label, point = parse_about(about, body)
     body, (point,) = in_output_units(body, units, point)
-    I = inertia_about(body.props, point)
+    I = body.props.inertia_about(point)
     moments, axes = principal_axes(I)
     radii = radii_of_gyration(moments, body.props.mass)
     result = header(body, about_label, point) | {"moments": moments, "axes": axes, "radii_of_gyration": radii}
@@ -163,7 +167,7 @@ def _principal_of(file: str, about: str, units: str | None):
                     (
                         "centre of mass",
                         labels["length"],
-                        tables.vector(body.props.com, body_size(body.props)),
+                        tables.vector(body.props.center_of_mass, body_size(body.props)),
                     ),
                     (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body.props))),
                 ],

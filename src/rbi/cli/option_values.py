@@ -13,7 +13,7 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
     """Resolve ``--about`` against a loaded body: (label, point in body coordinates)."""
     key = text.strip().lower()
     if key == "com":
-        return "com", body.props.com.tolist()
+        return "com", body.props.center_of_mass.tolist()
     if key == "origin":
         return "origin", [0.0, 0.0, 0.0]
     if key == "pivot":

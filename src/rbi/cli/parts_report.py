@@ -36,14 +36,14 @@ def parts_of(file: str):
     total = {
         "volume": volume if any(row["volume"] is not None for row in rows) else None,
         "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
-        "principal_moments": principal_axes(body.props.inertia_com)[0],
+        "principal_moments": principal_axes(body.props.inertia_about_com)[0],
     }
     result = {
         "name": body.name,
         "units": body.units,
         "warnings": list(body.warnings),
         "mass": body.props.mass,
-        "center_of_mass": body.props.com,
+        "center_of_mass": body.props.center_of_mass,
         "volume": total["volume"],
         "principal_moments": total["principal_moments"],
         "parts": rows,
@@ -55,7 +55,8 @@ def parts_of(file: str):
 def _part_rows(body) -> list[dict]:
     """One row per part: its mass, share, centre of mass, inertia about it, principal moments,
     share of the inertia, volume and the density they imply (file units and SI)."""
-    from rbi.core.inertia import inertia_shares, principal_axes
+    from rbi.core.inertia import principal_axes
+    from rbi.core.mass import inertia_shares
     from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
     from rbi.spec.volumes import part_volume
 
@@ -74,9 +75,9 @@ def _part_rows(body) -> list[dict]:
                 "hole": bool(getattr(part, "subtract", False)),
                 "mass": element.mass,
                 "mass_share": element.mass / body.props.mass,
-                "center_of_mass": element.com,
-                "inertia_about_com": element.inertia_com,
-                "principal_moments": principal_axes(element.inertia_com)[0],
+                "center_of_mass": element.center_of_mass,
+                "inertia_about_com": element.inertia_about_com,
+                "principal_moments": principal_axes(element.inertia_about_com)[0],
                 "inertia_share": shares[i],
                 "volume": volume,
                 "implied_density": density,
@@ -132,7 +133,7 @@ def _table(body, rows, total):
             (*(number(c) for c in row["center_of_mass"]), number(100 * row["inertia_share"], 4))
             for row in rows
         ],
-        (*(number(c) for c in body.props.com), number(100.0, 4)),
+        (*(number(c) for c in body.props.center_of_mass), number(100.0, 4)),
     )
     scale, scale_text = matrix_digits(
         [total["principal_moments"], *(row["principal_moments"] for row in rows)]

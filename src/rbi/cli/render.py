@@ -286,7 +286,7 @@ def body_size(props) -> float:
     """A body's size for telling a position from rounding noise: its radius of gyration about
     the centre of mass, √(trace I / 2m), file length unit (0 without mass or inertia)."""
     try:
-        size = math.sqrt(float(np.trace(props.inertia_com)) / (2.0 * float(props.mass)))
+        size = math.sqrt(float(np.trace(props.inertia_about_com)) / (2.0 * float(props.mass)))
     except (ValueError, ZeroDivisionError, OverflowError):
         return 0.0
     return size if math.isfinite(size) else 0.0

@@ -53,8 +53,8 @@ def show(
     data = view_data(
         body.name or file,
         part_geometry(body),
-        body.props.com,
-        body.props.inertia_com,
+        body.props.center_of_mass,
+        body.props.inertia_about_com,
         body.pivot,
         body.length_unit,
         body.labels["inertia"],

@@ -1,4 +1,5 @@
-"""Assembling parts into a body, moving the reference point, turning the frame, principal axes.
+"""Inertia matrices: moving the reference point, turning the frame, principal axes (the value
+type that carries them with a mass and a centre of mass is :class:`rbi.core.mass.MassProperties`).
 
 Conventions: ``I = ∫ (|r|² E − r rᵀ) dm`` (products of inertia carry a minus sign);
 ``R`` always maps body coordinates to world coordinates.
@@ -6,25 +7,11 @@ Conventions: ``I = ∫ (|r|² E − r rᵀ) dm`` (products of inertia carry a mi
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
-from typing import NamedTuple
+from collections.abc import Sequence
 
 import numpy as np
 
 from rbi.core.rotation import unit_vector
-from rbi.core.shapes import MassElement
-
-
-class MassProperties(NamedTuple):
-    """A rigid body's mass properties.
-
-    mass: M. com: centre of mass, body frame, L. inertia_com: inertia about ``com`` in body
-    axes, M·L².
-    """
-
-    mass: float
-    com: np.ndarray
-    inertia_com: np.ndarray
 
 
 def point_mass_inertia(mass: float, offset: np.ndarray) -> np.ndarray:
@@ -60,59 +47,6 @@ def centre_of_mass(masses: np.ndarray, positions: np.ndarray) -> np.ndarray:
     reference = p[int(np.argmax(np.abs(m)))]
     com = reference + (m @ (p - reference)) / total
     return com + (m @ (p - com)) / total
-
-
-def combine(masses: np.ndarray, coms: np.ndarray, inertias_com: np.ndarray | None = None) -> MassProperties:
-    """Mass properties of a body made of parts.
-
-    masses: (N,) M (a negative mass removes material). coms: (N, 3) each part's centre of
-    mass, body frame, L. inertias_com: (N, 3, 3) each part about its own centre of mass,
-    M·L², or None when every part is a point mass. Each part is shifted straight to the
-    body's centre of mass, so only the small offsets between nearby points enter.
-    """
-    m = np.asarray(masses, dtype=float).reshape(-1)
-    c = np.asarray(coms, dtype=float).reshape(-1, 3)
-    total = float(m.sum())
-    if not total > 0.0:
-        raise ValueError(f"total mass must be positive, got {total!r}")
-    com = centre_of_mass(m, c)
-    d = c - com
-    second_moment = (d * m[:, None]).T @ d  # Σ m d dᵀ
-    inertia = np.trace(second_moment) * np.eye(3) - second_moment
-    if inertias_com is not None:
-        inertia = inertia + np.asarray(inertias_com, dtype=float).reshape(-1, 3, 3).sum(axis=0)
-    return MassProperties(total, com, symmetrize(inertia))
-
-
-def combine_elements(elements: Iterable[MassElement]) -> MassProperties:
-    """:func:`combine` for a sequence of :class:`MassElement`."""
-    elements = list(elements)
-    return combine(
-        np.array([e.mass for e in elements]),
-        np.array([e.com for e in elements]),
-        np.array([e.inertia_com for e in elements]),
-    )
-
-
-def inertia_about(props: MassProperties, point: np.ndarray) -> np.ndarray:
-    """Inertia about ``point`` (body frame, L) in body axes, M·L²."""
-    offset = np.asarray(point, dtype=float) - props.com
-    return symmetrize(parallel_axis(props.inertia_com, props.mass, offset))
-
-
-def inertia_shares(elements: Sequence[MassElement], props: MassProperties) -> np.ndarray:
-    """Each element's share of the trace of the body's inertia about the body's centre of mass
-    (fractions that add up to 1; a hole's share is negative).
-
-    The trace is the sum of the three moments, ``2 ∫ |r|² dm``, so the share says which part
-    carries the body's rotational inertia whatever the axes.
-    """
-    total = float(np.trace(props.inertia_com))
-    shares = np.empty(len(elements))
-    for i, element in enumerate(elements):
-        about_body_com = parallel_axis(element.inertia_com, element.mass, np.asarray(element.com) - props.com)
-        shares[i] = float(np.trace(about_body_com)) / total if total != 0.0 else 0.0
-    return shares
 
 
 def re_express(inertia: np.ndarray, R: np.ndarray) -> np.ndarray:

@@ -36,6 +36,8 @@ from typing import NamedTuple
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
+
 MESH_INERTIA_MODES = ("exact", "convex", "shell")
 """How a mesh carries its mass: the enclosed solid, the convex hull's solid, or the surface."""
 
@@ -102,16 +104,14 @@ class MeshDistribution(NamedTuple):
     notes: tuple[str, ...] = ()
 
 
-class MeshMassProperties(NamedTuple):
-    """A mesh's mass properties in its own frame and length unit L: ``mass`` (M),
-    ``center_of_mass`` (L), ``inertia_about_com`` (M·L², about the centre of mass, mesh axes),
-    ``volume`` (L³: the enclosed solid's, or the hull's for ``convex``; None for ``shell``) and
-    ``area`` (L²: the surface of the mesh integrated); ``notes`` as in :class:`MeshDistribution`."""
+class MeshMass(NamedTuple):
+    """A mesh's mass in its own frame and length unit L: ``properties`` (the
+    :class:`~rbi.core.mass.MassProperties`, frame ``"mesh"``), ``volume`` (L³: the enclosed
+    solid's, or the hull's for ``convex``; None for ``shell``) and ``area`` (L²: the surface of
+    the mesh integrated); ``notes`` as in :class:`MeshDistribution`."""
 
     mode: str
-    mass: float
-    center_of_mass: np.ndarray
-    inertia_about_com: np.ndarray
+    properties: MassProperties
     volume: float | None
     area: float
     notes: tuple[str, ...] = ()
@@ -649,7 +649,7 @@ def mesh_mass_properties(
     *,
     mass: float | None = None,
     density: float | None = None,
-) -> MeshMassProperties:
+) -> MeshMass:
     """Mass properties of a mesh (vertices in length unit L, faces wound outward) in ``mode``
     ``exact`` (the enclosed solid; the mesh must be closed), ``convex`` (the solid convex hull)
     or ``shell`` (mass spread evenly over the surface, as MuJoCo's ``shellinertia``). Give
@@ -666,11 +666,9 @@ def mesh_mass_properties(
     area = (
         distribution.measure if mode == "shell" else surface_area(distribution.vertices, distribution.faces)
     )
-    return MeshMassProperties(
+    return MeshMass(
         mode,
-        mass,
-        distribution.centroid,
-        0.5 * (inertia + inertia.T),
+        MassProperties(mass, distribution.centroid, 0.5 * (inertia + inertia.T), "mesh"),
         None if mode == "shell" else distribution.measure,
         area,
         distribution.notes,

@@ -10,23 +10,11 @@ differences (see :mod:`rbi.core.inertia`).
 from __future__ import annotations
 
 import math
-from typing import NamedTuple
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import unit_vector, vector_length
-
-
-class MassElement(NamedTuple):
-    """One part's mass properties.
-
-    mass: M. com: centre of mass, body frame, L. inertia_com: 3×3 inertia about ``com``,
-    body-frame axes, M·L².
-    """
-
-    mass: float
-    com: np.ndarray
-    inertia_com: np.ndarray
 
 
 def axis_between(start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, float]:
@@ -89,7 +77,7 @@ def cone_volume(radius: float, height: float) -> float:
     return math.pi * radius * radius * height / 3.0
 
 
-def cone(mass: float, radius: float, apex: np.ndarray, base: np.ndarray) -> MassElement:
+def cone(mass: float, radius: float, apex: np.ndarray, base: np.ndarray) -> MassProperties:
     """Solid right circular cone from its apex (tip) to the centre of its base disc.
 
     The centre of mass lies a quarter of the height above the base. About it the axial
@@ -99,7 +87,7 @@ def cone(mass: float, radius: float, apex: np.ndarray, base: np.ndarray) -> Mass
     u, height = axis_between(apex, base)
     com = apex + 0.75 * height * u
     axial, transverse = cone_moments(mass, radius, height)
-    return MassElement(mass, com, axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, com, axisymmetric_inertia(axial, transverse, u))
 
 
 # --- solid circular cylinder ---------------------------------------------------------------
@@ -110,7 +98,7 @@ def cylinder_volume(radius: float, length: float) -> float:
     return math.pi * radius * radius * length
 
 
-def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> MassProperties:
     """Solid circular cylinder between the centres of its end faces ``start`` and ``end``.
 
     About its centre: axial moment m r²/2, transverse m (3 r² + L²)/12.
@@ -120,15 +108,15 @@ def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> 
     u, length = axis_between(start, end)
     com = 0.5 * (start + end)
     axial, transverse = cylinder_moments(mass, radius, length)
-    return MassElement(mass, com, axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, com, axisymmetric_inertia(axial, transverse, u))
 
 
 # --- point mass ----------------------------------------------------------------------------
 
 
-def point(mass: float, position: np.ndarray) -> MassElement:
+def point(mass: float, position: np.ndarray) -> MassProperties:
     """A point mass: no inertia about its own position."""
-    return MassElement(mass, np.asarray(position, dtype=float), np.zeros((3, 3)))
+    return MassProperties(mass, np.asarray(position, dtype=float), np.zeros((3, 3)))
 
 
 # --- shapes with an orientation --------------------------------------------------------------
@@ -154,7 +142,9 @@ def box_volume(size: np.ndarray) -> float:
     return a * b * c
 
 
-def box(mass: float, size: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None) -> MassElement:
+def box(
+    mass: float, size: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None
+) -> MassProperties:
     """Solid rectangular box with edges ``size = [a, b, c]`` along its own x, y, z axes.
 
     About its centre, in its own axes: m (b² + c²)/12, m (a² + c²)/12, m (a² + b²)/12.
@@ -162,7 +152,7 @@ def box(mass: float, size: np.ndarray, center: np.ndarray, rotation: np.ndarray 
     """
     a, b, c = (float(s) for s in size)
     moments = np.array(box_moments(mass, a, b, c))
-    return MassElement(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
+    return MassProperties(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
 
 
 # --- solid ellipsoid -----------------------------------------------------------------------
@@ -176,14 +166,14 @@ def ellipsoid_volume(semi_axes: np.ndarray) -> float:
 
 def ellipsoid(
     mass: float, semi_axes: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None
-) -> MassElement:
+) -> MassProperties:
     """Solid ellipsoid with semi-axes ``[a, b, c]`` along its own x, y, z axes.
 
     About its centre, in its own axes: m (b² + c²)/5, m (a² + c²)/5, m (a² + b²)/5.
     """
     a, b, c = (float(s) for s in semi_axes)
     moments = mass / 5.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
-    return MassElement(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
+    return MassProperties(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
 
 
 # --- spheres -------------------------------------------------------------------------------
@@ -194,9 +184,9 @@ def sphere_volume(radius: float) -> float:
     return 4.0 / 3.0 * math.pi * radius**3
 
 
-def sphere(mass: float, radius: float, center: np.ndarray) -> MassElement:
+def sphere(mass: float, radius: float, center: np.ndarray) -> MassProperties:
     """Solid sphere: 2/5 m r² about every axis through its centre."""
-    return MassElement(mass, np.asarray(center, dtype=float), sphere_moment(mass, radius) * np.eye(3))
+    return MassProperties(mass, np.asarray(center, dtype=float), sphere_moment(mass, radius) * np.eye(3))
 
 
 def spherical_shell_volume(outer_radius: float, inner_radius: float) -> float:
@@ -206,7 +196,9 @@ def spherical_shell_volume(outer_radius: float, inner_radius: float) -> float:
     return 4.0 / 3.0 * math.pi * (R - r) * (R * R + R * r + r * r)
 
 
-def spherical_shell(mass: float, outer_radius: float, inner_radius: float, center: np.ndarray) -> MassElement:
+def spherical_shell(
+    mass: float, outer_radius: float, inner_radius: float, center: np.ndarray
+) -> MassProperties:
     """Thick spherical shell (a sphere of radius R with a concentric hole of radius r).
 
     Moment about any axis through the centre: 2/5 m (R⁵ − r⁵)/(R³ − r³), evaluated as
@@ -216,7 +208,7 @@ def spherical_shell(mass: float, outer_radius: float, inner_radius: float, cente
     """
     R, r = outer_radius, inner_radius
     ratio = (R**4 + R**3 * r + R * R * r * r + R * r**3 + r**4) / (R * R + R * r + r * r)
-    return MassElement(mass, np.asarray(center, dtype=float), 0.4 * mass * ratio * np.eye(3))
+    return MassProperties(mass, np.asarray(center, dtype=float), 0.4 * mass * ratio * np.eye(3))
 
 
 # --- tube (hollow circular cylinder) ---------------------------------------------------------
@@ -230,7 +222,7 @@ def tube_volume(outer_radius: float, inner_radius: float, length: float) -> floa
 
 def tube(
     mass: float, outer_radius: float, inner_radius: float, start: np.ndarray, end: np.ndarray
-) -> MassElement:
+) -> MassProperties:
     """Hollow circular cylinder (outer radius R, bore r) between the centres of its end faces.
 
     About its centre: axial m (R² + r²)/2, transverse m (3 (R² + r²) + L²)/12. r = 0 gives
@@ -242,7 +234,7 @@ def tube(
     squares = outer_radius * outer_radius + inner_radius * inner_radius
     axial = 0.5 * mass * squares
     transverse = mass * (3.0 * squares + length * length) / 12.0
-    return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))
 
 
 # --- frustum (truncated cone) ----------------------------------------------------------------
@@ -256,7 +248,7 @@ def frustum_volume(start_radius: float, end_radius: float, length: float) -> flo
 
 def frustum(
     mass: float, start_radius: float, end_radius: float, start: np.ndarray, end: np.ndarray
-) -> MassElement:
+) -> MassProperties:
     """Solid truncated cone: a disc of radius a centred on ``start``, one of radius b on
     ``end`` (either radius may be 0, giving a cone; a = b gives a cylinder).
 
@@ -279,19 +271,21 @@ def frustum(
     axial = 0.3 * mass * c * c * quartic / S
     spread = a**4 + 4.0 * a**3 * b + 10.0 * a * a * b * b + 4.0 * a * b**3 + b**4
     transverse = 0.15 * mass * c * c * quartic / S + 3.0 * mass * h * h * spread / (80.0 * S * S)
-    return MassElement(mass, start + along * u, axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, start + along * u, axisymmetric_inertia(axial, transverse, u))
 
 
 # --- thin rod --------------------------------------------------------------------------------
 
 
-def rod(mass: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+def rod(mass: float, start: np.ndarray, end: np.ndarray) -> MassProperties:
     """Thin straight rod (a line mass) from ``start`` to ``end``: m L²/12 about any line
     through its middle perpendicular to it, 0 about its own axis."""
     start = np.asarray(start, dtype=float)
     end = np.asarray(end, dtype=float)
     u, length = axis_between(start, end)
-    return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(0.0, mass * length * length / 12.0, u))
+    return MassProperties(
+        mass, 0.5 * (start + end), axisymmetric_inertia(0.0, mass * length * length / 12.0, u)
+    )
 
 
 # --- torus -----------------------------------------------------------------------------------
@@ -304,7 +298,7 @@ def torus_volume(major_radius: float, minor_radius: float) -> float:
 
 def torus(
     mass: float, major_radius: float, minor_radius: float, center: np.ndarray, axis: np.ndarray
-) -> MassElement:
+) -> MassProperties:
     """Solid torus: a disc of radius a (``minor_radius``) swept around ``axis`` at distance R
     (``major_radius``) from ``center``. Needs a ≤ R.
 
@@ -316,7 +310,7 @@ def torus(
     R2, a2 = major_radius * major_radius, minor_radius * minor_radius
     axial = mass * (R2 + 0.75 * a2)
     transverse = mass * (0.5 * R2 + 0.625 * a2)
-    return MassElement(mass, np.asarray(center, dtype=float), axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, np.asarray(center, dtype=float), axisymmetric_inertia(axial, transverse, u))
 
 
 # --- hemisphere ------------------------------------------------------------------------------
@@ -331,7 +325,7 @@ HEMISPHERE_COM_FRACTION = 3.0 / 8.0
 """Distance of a solid hemisphere's centre of mass from its flat face, as a fraction of r."""
 
 
-def hemisphere(mass: float, radius: float, center: np.ndarray, axis: np.ndarray) -> MassElement:
+def hemisphere(mass: float, radius: float, center: np.ndarray, axis: np.ndarray) -> MassProperties:
     """Solid hemisphere: flat face centred on ``center``, dome towards ``axis``.
 
     The centre of mass lies 3/8 r along the axis. About the flat face's centre every moment is
@@ -341,7 +335,7 @@ def hemisphere(mass: float, radius: float, center: np.ndarray, axis: np.ndarray)
     u = unit_vector(axis)
     r2 = radius * radius
     com = np.asarray(center, dtype=float) + HEMISPHERE_COM_FRACTION * radius * u
-    return MassElement(mass, com, axisymmetric_inertia(0.4 * mass * r2, 83.0 / 320.0 * mass * r2, u))
+    return MassProperties(mass, com, axisymmetric_inertia(0.4 * mass * r2, 83.0 / 320.0 * mass * r2, u))
 
 
 # --- capsule ---------------------------------------------------------------------------------
@@ -353,7 +347,7 @@ def capsule_volume(radius: float, length: float) -> float:
     return math.pi * radius * radius * (length + 4.0 / 3.0 * radius)
 
 
-def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> MassElement:
+def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> MassProperties:
     """Capsule: a solid cylinder from ``start`` to ``end`` (length L) with a hemisphere of the
     same radius r on each end face, uniform density.
 
@@ -372,4 +366,4 @@ def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> M
     transverse = cylinder_mass * (3.0 * r * r + length * length) / 12.0 + caps_mass * (
         0.4 * r * r + 0.25 * length * length + 0.375 * length * r
     )
-    return MassElement(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))

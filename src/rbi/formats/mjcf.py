@@ -25,10 +25,12 @@ from __future__ import annotations
 
 import math
 import os
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.errors import InputError
 from rbi.formats.robot_model import (
     Geom,
@@ -194,7 +196,7 @@ def _check_moving_bodies(model: RobotModel) -> None:
             continue
         inertial = link.inertial
         mass = inertial.mass if inertial is not None else 0.0
-        smallest = float(np.linalg.eigvalsh(inertial.inertia).min()) if inertial is not None else 0.0
+        smallest = float(np.linalg.eigvalsh(inertial.written_inertia).min()) if inertial is not None else 0.0
         if mass > MJ_MINVAL and smallest > MJ_MINVAL:
             continue
         if inertial is None:
@@ -459,7 +461,7 @@ class _Bodies:
         else:
             inertia = np.diag(numbers(where, diagonal, "inertial: diaginertia", 3))
         check_inertia_range(where, inertia)
-        return Inertial(
+        return Inertial.read(
             mass,
             np.array(pos, dtype=float),
             inertia,
@@ -559,7 +561,7 @@ def z_to(direction) -> np.ndarray:
 
 
 def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
-    from rbi.formats.robot_geometry import combine, distribution
+    from rbi.formats.robot_geometry import distribution
 
     for link in model.links:
         explicit = link.inertial
@@ -575,11 +577,12 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
                 if found is None or not found.measure > 0:
                     continue
                 density = geom.mass / found.measure if geom.mass is not None else geom.density
-                mass = density * found.measure
-                pieces.append((mass, found.centroid, found.inertia * density))
+                pieces.append(
+                    MassProperties(density * found.measure, found.centroid, found.inertia * density, "link")
+                )
             if pieces:
-                props = combine(pieces)
-                link.inertial = Inertial(props.mass, props.com, props.inertia, element=None, source="geoms")
+                props = _sum(pieces)
+                link.inertial = Inertial(props, props.inertia_about_com, element=None, source="geoms")
                 if explicit is not None:
                     model.notes.append(
                         f'{model.path}: {link.label}: <inertial> ignored: inertiafromgeom="true" '
@@ -596,38 +599,30 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
             for link in model.links:
                 if link.inertial is not None:
                     inertial = link.inertial
-                    link.inertial = Inertial(
-                        inertial.mass * scale,
-                        inertial.com,
-                        inertial.inertia * scale,
-                        rotation=inertial.rotation,
-                        rpy=inertial.rpy,
-                        quaternion=inertial.quaternion,
-                        element=inertial.element,
-                        source=inertial.source,
+                    link.inertial = replace(
+                        inertial,
+                        properties=inertial.properties.scaled(scale),
+                        written_inertia=inertial.written_inertia * scale,
                     )
+
+
+def _sum(pieces: list[MassProperties]) -> MassProperties:
+    """The geoms' sum; no mass (zero) when their masses add up to nothing or less."""
+    try:
+        return MassProperties.sum(pieces)
+    except ValueError:
+        return MassProperties.zero("link")
 
 
 def _bound(link: Link, compiler: Compiler) -> None:
     inertial = link.inertial
     mass = max(inertial.mass, compiler.boundmass)
-    inertia = inertial.inertia
+    com = inertial.properties.center_of_mass
     if compiler.boundinertia > 0:
-        I = inertial.inertia_in_link_axes()
-        moments, axes = np.linalg.eigh(I)
+        moments, axes = np.linalg.eigh(inertial.properties.inertia_about_com)
         moments = np.maximum(moments, compiler.boundinertia)
         inertia = (axes * moments) @ axes.T
-        link.inertial = Inertial(
-            mass, inertial.com, inertia, element=inertial.element, source=inertial.source
-        )
+        link.inertial = Inertial.read(mass, com, inertia, element=inertial.element, source=inertial.source)
         return
-    link.inertial = Inertial(
-        mass,
-        inertial.com,
-        inertia,
-        rotation=inertial.rotation,
-        rpy=inertial.rpy,
-        quaternion=inertial.quaternion,
-        element=inertial.element,
-        source=inertial.source,
-    )
+    properties = MassProperties(mass, com, inertial.properties.inertia_about_com, "link")
+    link.inertial = replace(inertial, properties=properties)

@@ -10,7 +10,7 @@ every number is in the spec's own units. Two formats:
 - ``.npy``: a float array of shape (N, 4) with the columns ``mass, x, y, z`` — the fastest
   to load (no text to parse).
 
-The cloud reaches the core as arrays and is reduced by :func:`rbi.core.inertia.combine` in
+The cloud reaches the core as arrays and is reduced by :func:`rbi.core.mass.combine` in
 one vectorised pass: it never becomes a Python list of per-point objects.
 """
 
@@ -23,8 +23,7 @@ from pathlib import Path
 
 import numpy as np
 
-from rbi.core.inertia import combine
-from rbi.core.shapes import MassElement
+from rbi.core.mass import MassProperties, combine
 from rbi.errors import InputError
 from rbi.formats.paths import spec_relative_file
 
@@ -63,15 +62,15 @@ def read_point_cloud(path: str | Path, label: str) -> tuple[np.ndarray, np.ndarr
     return table[:, 0].copy(), table[:, 1:4]
 
 
-def cloud_element(spec_path: str, file: str) -> MassElement:
+def cloud_element(spec_path: str, file: str) -> MassProperties:
     """The whole cloud as one part: its mass, centre of mass and inertia about that centre.
     ``file`` is resolved against the spec's folder (see :func:`rbi.formats.paths.spec_relative_file`)."""
     label = f"{spec_path}: point_cloud: file: {file}"
     masses, positions = read_point_cloud(spec_relative_file(spec_path, file, label), label)
     props = combine(masses, positions)
-    if not (np.isfinite(props.mass) and np.all(np.isfinite(props.inertia_com))):
+    if not (np.isfinite(props.mass) and np.all(np.isfinite(props.inertia_about_com))):
         raise InputError(f"{label}: numbers too large: mass or inertia overflows")
-    return MassElement(props.mass, props.com, props.inertia_com)
+    return props
 
 
 def _read_npy(path: Path, label: str) -> np.ndarray:

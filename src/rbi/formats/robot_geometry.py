@@ -294,24 +294,3 @@ def _mesh_arrays(path):
             f"unknown mesh format {suffix or '(no extension)'!r}: rbi reads {', '.join(MESH_FILE_TYPES)}"
         )
     return read_mesh_arrays(path)
-
-
-class MassProperties(NamedTuple):
-    """Mass (kg), centre of mass (m, link frame), inertia about it (kg·m², link axes)."""
-
-    mass: float
-    com: np.ndarray
-    inertia: np.ndarray
-
-
-def combine(pieces: list[tuple[float, np.ndarray, np.ndarray]]) -> MassProperties:
-    """Mass properties of pieces given as (mass, centroid, inertia about the centroid)."""
-    total = sum(m for m, _, _ in pieces)
-    if not total > 0:
-        return MassProperties(0.0, np.zeros(3), np.zeros((3, 3)))
-    com = sum(m * c for m, c, _ in pieces) / total
-    inertia = np.zeros((3, 3))
-    for m, c, I in pieces:
-        d = c - com
-        inertia += I + m * (np.dot(d, d) * np.eye(3) - np.outer(d, d))
-    return MassProperties(float(total), com, 0.5 * (inertia + inertia.T))

@@ -18,6 +18,8 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.inertia import re_express
+from rbi.core.mass import MassProperties
 from rbi.errors import InputError
 
 LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
@@ -50,30 +52,48 @@ class Pose:
         return self.rotation @ np.asarray(point, dtype=float) + self.translation
 
 
-@dataclass
+@dataclass(frozen=True)
 class Inertial:
-    """A link's declared mass properties: ``mass`` (kg), ``com`` the centre of mass in the link
-    frame (m), ``inertia`` about the centre of mass in the inertial frame's axes (kg·m²),
-    ``rotation`` the inertial frame's axes → link axes (None: the same axes). ``rpy`` and
-    ``quaternion`` repeat the rotation as the file gave it (URDF/SDF roll-pitch-yaw, MJCF/SDF
-    quaternion ``w x y z``). ``element`` is the XML element it was read from (None when MJCF's
-    compiler inferred it from the geoms); ``source`` says which: ``"inertial"`` or ``"geoms"``."""
+    """A link's declared mass properties: ``properties`` in the link frame (``mass`` kg, the
+    centre of mass in m, the inertia about it in the link frame's axes, kg·m²). The file's own
+    record: ``written_inertia`` the inertia as the file wrote it, in the inertial frame's axes
+    (kg·m²), ``rotation`` the inertial frame's axes → link axes (None: the same axes), ``rpy`` and
+    ``quaternion`` the rotation as the file gave it (URDF/SDF roll-pitch-yaw, MJCF/SDF quaternion
+    ``w x y z``). ``element`` is the XML element it was read from (None when MJCF's compiler
+    inferred it from the geoms); ``source`` says which: ``"inertial"`` or ``"geoms"``."""
 
-    mass: float
-    com: np.ndarray
-    inertia: np.ndarray
+    properties: MassProperties
+    written_inertia: np.ndarray
     rotation: np.ndarray | None = None
     rpy: tuple[float, float, float] | None = None
     quaternion: np.ndarray | None = None
     element: Any = None
     source: str = "inertial"
 
-    def inertia_in_link_axes(self) -> np.ndarray:
-        """The inertia about the centre of mass in the link frame's axes, kg·m²."""
-        if self.rotation is None:
-            return self.inertia.copy()
-        R = self.rotation
-        return 0.5 * ((R @ self.inertia @ R.T) + (R @ self.inertia @ R.T).T)
+    @staticmethod
+    def read(
+        mass: float,
+        com,
+        inertia,
+        *,
+        rotation: np.ndarray | None = None,
+        rpy: tuple[float, float, float] | None = None,
+        quaternion: np.ndarray | None = None,
+        element: Any = None,
+        source: str = "inertial",
+    ) -> Inertial:
+        """The inertial a file declares: ``mass`` (kg), ``com`` (m, link frame), ``inertia``
+        about it in the inertial frame's axes (kg·m²), turned into the link's by ``rotation``."""
+        written = np.array(inertia, dtype=float)
+        in_link = written if rotation is None else re_express(written, rotation)
+        return Inertial(
+            MassProperties(mass, com, in_link, "link"), written, rotation, rpy, quaternion, element, source
+        )
+
+    @property
+    def mass(self) -> float:
+        """The declared mass, kg."""
+        return self.properties.mass
 
 
 @dataclass

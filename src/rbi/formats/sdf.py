@@ -26,6 +26,7 @@ import math
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.formats.robot_model import (
     Geom,
     Inertial,
@@ -107,7 +108,7 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
             elif inertial is not None:
                 link.inertial = _inertial(where, inertial, own)
             else:  # SDFormat's default inertial: 1 kg, unit moments, at the link origin
-                link.inertial = Inertial(1.0, np.zeros(3), np.eye(3), element=None, source="default")
+                link.inertial = Inertial.read(1.0, np.zeros(3), np.eye(3), element=None, source="default")
             check_unique_names(path, list(links.values()) + [link], "link")
             links[own] = link
             robot.links.append(link)
@@ -190,7 +191,7 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
     inertia = from_six(**six)
     check_inertia_range(where, inertia)
     turned = rpy is not None or (quaternion is not None and not np.allclose(pose.rotation, np.eye(3), 0, 0))
-    return Inertial(
+    return Inertial.read(
         mass,
         pose.translation,
         inertia,
@@ -209,15 +210,20 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
     """``<inertial auto="true">`` (SDFormat 1.11): the mass properties of the link's collision
     geometry at each collision's ``<density>`` (default 1000 kg/m³), scaled to the inertial's
     ``<mass>`` when it gives one."""
-    from rbi.formats.robot_geometry import combine, distribution
+    from rbi.formats.robot_geometry import distribution
 
     pieces = []
     for geom in collisions:
         found = distribution(geom, "auto", f"{where.path}: {where.label}: ")
         if found is not None and found.measure > 0:
             density = geom.density if geom.density is not None else SDF_DENSITY
-            pieces.append((density * found.measure, found.centroid, density * found.inertia))
-    props = combine(pieces)
+            pieces.append(
+                MassProperties(density * found.measure, found.centroid, density * found.inertia, "link")
+            )
+    try:
+        props = MassProperties.sum(pieces)
+    except ValueError:
+        props = MassProperties.zero("link")
     if not props.mass > 0:
         raise where.error(
             'inertial auto="true": the link has no collision geometry with a volume to compute it from'
@@ -226,9 +232,8 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
     if mass_element is not None and (mass_element.text or "").strip():
         mass = number(where, mass_element.text, "inertial/mass")
         positive(where, (mass,), "inertial/mass")
-        scale = mass / props.mass
-        props = props._replace(mass=mass, inertia=props.inertia * scale)
-    return Inertial(props.mass, props.com, props.inertia, element=inertial, source="auto")
+        props = props.with_mass(mass)
+    return Inertial(props, props.inertia_about_com, element=inertial, source="auto")
 
 
 def _geoms(where: Where, link_element, tag: str, package_paths, own_name) -> list[Geom]:

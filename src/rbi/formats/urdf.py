@@ -109,7 +109,7 @@ def _inertial(where: Where, inertial) -> Inertial:
     inertia = from_six(**six)
     check_inertia_range(where, inertia)
     has_rpy = any(rpy)
-    return Inertial(
+    return Inertial.read(
         mass,
         np.array(xyz, dtype=float),
         inertia,

@@ -34,10 +34,11 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
-from rbi.formats.robot_geometry import MESH_INERTIA_MODES, combine, distribution
-from rbi.formats.robot_model import Inertial, Link, RobotModel
+from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution
+from rbi.formats.robot_model import Link, RobotModel
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -69,48 +70,45 @@ class Flag:
         return {"code": self.code, "level": self.level, "message": self.message}
 
 
-@dataclass
-class MassProps:
-    """Mass (kg), centre of mass (m), inertia about it (kg·m²), link frame and axes."""
+@dataclass(frozen=True)
+class GeometryProps:
+    """What the link's geometry gives it: ``properties`` (its mass properties in the link frame
+    at the declared mass, else at the given density; None when the link declares no mass and no
+    density was given: a shape with no mass), ``centroid`` (m, link frame), ``volume`` (m³; None
+    when it is all shells), ``implied_density`` (kg/m³), its bounds ``low``/``high`` (m, link
+    frame) and ``source`` (``collision`` or ``visual``)."""
 
-    mass: float
-    center_of_mass: np.ndarray
-    inertia_about_com: np.ndarray
+    properties: MassProperties | None
+    centroid: np.ndarray
+    volume: float | None
+    implied_density: float | None
+    low: np.ndarray
+    high: np.ndarray
+    source: str = "collision"
 
     @property
-    def moments(self) -> np.ndarray:
-        return np.linalg.eigvalsh(0.5 * (self.inertia_about_com + self.inertia_about_com.T))
+    def mass(self) -> float | None:
+        return None if self.properties is None else self.properties.mass
 
+    @property
+    def center_of_mass(self) -> np.ndarray:
+        """The geometry's centre of mass (its centroid when it has no mass), m, link frame."""
+        return self.centroid if self.properties is None else self.properties.center_of_mass
 
-@dataclass
-class GeometryProps:
-    """The geometry's mass properties, with its ``volume`` (m³; None when it is all shells),
-    ``implied_density`` (kg/m³), its bounds ``low``/``high`` (m, link frame) and ``source``
-    (``collision`` or ``visual``). ``center_of_mass`` (m, link frame) is the geometry's centroid;
-    ``mass`` (kg), ``inertia_about_com`` (kg·m², link axes) and ``moments`` are None when the link
-    declares no mass and no density was given (the geometry has a shape but no mass)."""
-
-    mass: float | None
-    center_of_mass: np.ndarray
-    inertia_about_com: np.ndarray | None
-    volume: float | None = None
-    implied_density: float | None = None
-    low: np.ndarray | None = None
-    high: np.ndarray | None = None
-    source: str = "collision"
+    @property
+    def inertia_about_com(self) -> np.ndarray | None:
+        return None if self.properties is None else self.properties.inertia_about_com
 
     @property
     def moments(self) -> np.ndarray | None:
         """Principal moments (kg·m², ascending), or None when the mass is unknown."""
-        if self.inertia_about_com is None:
-            return None
-        return np.linalg.eigvalsh(0.5 * (self.inertia_about_com + self.inertia_about_com.T))
+        return None if self.properties is None else self.properties.moments
 
 
 @dataclass
 class LinkAudit:
     link: Link
-    declared: MassProps | None
+    declared: MassProperties | None
     geometry: GeometryProps | None
     ratios: np.ndarray | None = None
     com_offset: float | None = None
@@ -353,9 +351,7 @@ def audit_link(
     notes: list[str] | None = None,
 ) -> LinkAudit:
     inertial = link.inertial
-    declared = None
-    if inertial is not None:
-        declared = MassProps(inertial.mass, inertial.com.copy(), inertial.inertia_in_link_axes())
+    declared = None if inertial is None else inertial.properties
     fallbacks: list = []
     source, pieces = link_geometry(model, link, geometry, mesh_inertia, mesh_repair, notes, fallbacks)
     geo = _geometry_props(model, pieces, source, declared, density)
@@ -366,7 +362,7 @@ def audit_link(
 
 
 def _geometry_props(
-    model, pieces, source, declared: MassProps | None, density: float | None
+    model, pieces, source, declared: MassProperties | None, density: float | None
 ) -> GeometryProps | None:
     if not pieces:
         return None
@@ -374,11 +370,13 @@ def _geometry_props(
     volume = float(sum(d.measure for d in solid)) if solid else None
     low = np.min([d.low for d, _ in pieces], axis=0)
     high = np.max([d.high for d, _ in pieces], axis=0)
-    if model.format == "mjcf":
-        unit = combine([(m, d.centroid, d.inertia * (m / d.measure)) for d, m in pieces])
-    else:
-        unit = combine([(d.measure, d.centroid, d.inertia) for d, _ in pieces])  # at density 1
-    if not unit.mass > 0:
+    if model.format == "mjcf":  # each geom at its own mass
+        parts = [MassProperties(m, d.centroid, d.inertia * (m / d.measure), "link") for d, m in pieces]
+    else:  # at density 1
+        parts = [MassProperties(d.measure, d.centroid, d.inertia, "link") for d, _ in pieces]
+    try:
+        unit = MassProperties.sum(parts)
+    except ValueError:  # no mass in the geometry
         return None
     if declared is not None and declared.mass > 0:
         mass = declared.mass
@@ -388,17 +386,15 @@ def _geometry_props(
         mass = unit.mass
     else:
         mass = None
-    scale = (mass / unit.mass) if mass is not None else None
     implied = mass / volume if mass is not None and volume and len(solid) == len(pieces) else None
     return GeometryProps(
-        mass if mass is not None else None,
-        unit.com,
-        unit.inertia * scale if scale is not None else None,
-        volume=volume,
-        implied_density=implied,
-        low=low,
-        high=high,
-        source=source,
+        None if mass is None else unit.with_mass(mass),
+        unit.center_of_mass,
+        volume,
+        implied,
+        low,
+        high,
+        source,
     )
 
 
@@ -432,7 +428,7 @@ _DEFAULT_TEXT = (
 )
 
 
-def _zero_mass_flags(link: Link, declared: MassProps | None, carries_mass: bool) -> list[Flag]:
+def _zero_mass_flags(link: Link, declared: MassProperties | None, carries_mass: bool) -> list[Flag]:
     """A link without mass: ``unphysical`` when it declares moments anyway; ``massless`` when a
     joint moves it (an error when nothing it carries has mass either)."""
     flags = []
@@ -533,7 +529,7 @@ def _round(value: float) -> bool:
 def _placeholder(model: RobotModel, link: Link) -> str | None:
     """Words for a placeholder-looking inertia, or None."""
     inertial = link.inertial
-    I = inertial.inertia
+    I = inertial.written_inertia
     if np.any(I[~np.eye(3, dtype=bool)] != 0):
         return None
     diagonal = np.diag(I)
@@ -557,12 +553,3 @@ def _problem_text(problem, I) -> str:
     if problem.kind == "triangle inequality":
         return f"{problem.message}; margin I1 + I2 − I3 = {I1 + I2 - I3:.6g} kg·m² ({(I1 + I2 - I3) / I3:.3%} of I3)"
     return problem.message
-
-
-def geometry_inertial(result: LinkAudit, density: float | None) -> Inertial | None:
-    """The inertial the geometry gives the link (at the declared mass, else ``density``), or
-    None when the link has no geometry with volume."""
-    geo = result.geometry
-    if geo is None or geo.inertia_about_com is None:
-        return None
-    return Inertial(geo.mass, geo.center_of_mass, geo.inertia_about_com)

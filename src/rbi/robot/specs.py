@@ -28,8 +28,8 @@ def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tup
             left_out.append(name)
             continue
         pose = to_frame.then(poses[link.index])
-        I = pose.rotation @ inertial.inertia_in_link_axes() @ pose.rotation.T
-        I = 0.5 * (I + I.T)
+        placed = inertial.properties.transformed(pose.rotation, pose.translation)
+        I = placed.inertia_about_com
         unique = name if name not in used else f"{name}_{link.index}"
         used.add(unique)
         parts.append(
@@ -37,7 +37,7 @@ def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tup
                 "name": unique,
                 "shape": "custom",
                 "mass": float(inertial.mass),
-                "center_of_mass": [float(v) for v in pose.apply(inertial.com)],
+                "center_of_mass": [float(v) for v in placed.center_of_mass],
                 "inertia": {
                     "ixx": float(I[0, 0]),
                     "iyy": float(I[1, 1]),

@@ -129,7 +129,9 @@ def _subtree_sums(model: RobotModel, poses: dict[int, Pose], to_frame: Pose):
         inertial = link.inertial
         if inertial is not None and inertial.mass != 0.0:
             mass[link.index] = inertial.mass
-            moment[link.index] = inertial.mass * to_frame.then(poses[link.index]).apply(inertial.com)
+            moment[link.index] = inertial.mass * to_frame.then(poses[link.index]).apply(
+                inertial.properties.center_of_mass
+            )
     for link in reversed(_parents_first(model, by_name)):
         if link.parent is not None and link.parent in by_name:
             parent = by_name[link.parent].index

@@ -11,10 +11,9 @@ joint at its ``ref``), so with no values given every link is where the file draw
 
 from __future__ import annotations
 
-from typing import NamedTuple
-
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.errors import InputError
 from rbi.formats.robot_model import Pose, RobotModel
 
@@ -98,19 +97,10 @@ def _motion(motion, q: float) -> Pose:
     return Pose(R, motion.anchor - R @ motion.anchor)
 
 
-class Totals(NamedTuple):
-    """The whole robot: ``mass`` (kg), ``center_of_mass`` (m) and ``inertia_about_com`` (kg·m²)
-    in ``frame`` (``"root link NAME"`` or ``"world"``)."""
-
-    mass: float
-    center_of_mass: np.ndarray
-    inertia_about_com: np.ndarray
-    frame: str
-
-
-def totals(model: RobotModel, joints: dict[str, float] | None = None) -> Totals:
+def totals(model: RobotModel, joints: dict[str, float] | None = None) -> MassProperties:
     """Total mass, centre of mass and inertia about it at a configuration: in the root link's
-    frame for URDF and SDF, in the world frame for MJCF. Links without mass add nothing."""
+    frame for URDF and SDF (``frame`` ``"root link NAME"``), in the world frame for MJCF
+    (``"world"``). Links without mass add nothing; with no mass left, the zero value."""
     poses = link_poses(model, joints)
     frame, to_frame = "world", Pose.identity()
     if model.format != "mjcf":
@@ -118,19 +108,13 @@ def totals(model: RobotModel, joints: dict[str, float] | None = None) -> Totals:
         if roots:
             to_frame = poses[roots[0].index].inverse()
             frame = f"root link {roots[0].name}"
-    masses, coms, inertias = [], [], []
+    parts = []
     for link in model.links:
-        inertial = link.inertial
-        if inertial is None or inertial.mass == 0.0:
+        if link.inertial is None or link.inertial.mass == 0.0:
             continue
         pose = to_frame.then(poses[link.index])
-        masses.append(inertial.mass)
-        coms.append(pose.apply(inertial.com))
-        I = inertial.inertia_in_link_axes()
-        inertias.append(pose.rotation @ I @ pose.rotation.T)
-    if not masses:
-        return Totals(0.0, np.zeros(3), np.zeros((3, 3)), frame)
-    from rbi.formats.robot_geometry import combine
-
-    props = combine(list(zip(masses, coms, inertias)))
-    return Totals(props.mass, props.com, props.inertia, frame)
+        parts.append(link.inertial.properties.transformed(pose.rotation, pose.translation, frame))
+    try:
+        return MassProperties.sum(parts, frame)
+    except ValueError:  # no link with mass, or negative masses (flagged unphysical) that leave none
+        return MassProperties.zero(frame)

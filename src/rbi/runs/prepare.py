@@ -57,7 +57,6 @@ def body_spin_axis(body, given=None) -> np.ndarray:
     :func:`spin_axis_value`), else the spec's ``spin_axis:``, else
     :func:`rbi.core.spin_axis.default_spin_axis` of the inertia about the pivot (about the
     centre of mass of a free body)."""
-    from rbi.core.inertia import inertia_about
     from rbi.core.rotation import unit_vector
     from rbi.core.spin_axis import default_spin_axis
 
@@ -66,9 +65,9 @@ def body_spin_axis(body, given=None) -> np.ndarray:
         return np.array(axis)
     if body.spin_axis is not None:
         return unit_vector(body.spin_axis)
-    fixed = np.asarray(body.props.com if body.pivot is None else body.pivot, dtype=float)
+    fixed = np.asarray(body.props.center_of_mass if body.pivot is None else body.pivot, dtype=float)
     return default_spin_axis(
-        inertia_about(body.props, fixed), np.asarray(body.props.com, dtype=float) - fixed
+        body.props.inertia_about(fixed), np.asarray(body.props.center_of_mass, dtype=float) - fixed
     )
 
 

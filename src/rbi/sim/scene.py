@@ -4,7 +4,7 @@ Public names (other modules and ``rbi bench`` code against these):
 
 - :class:`Scene`: mass, inertia about the fixed point (the pivot of a top, the centre of mass
   of a free body) in body axes, ``com_from_pivot``, gravity, ``pivoted``.
-- :func:`scene_from_properties`: a :class:`Scene` from :class:`rbi.core.inertia.MassProperties`.
+- :func:`scene_from_properties`: a :class:`Scene` from :class:`rbi.core.mass.MassProperties`.
 - :func:`initial_state`: the contract's initial orientation and angular velocity.
 
 The scene's ``spin_axis`` (unit, body frame) is the axis the run speaks of: ``--spin`` turns
@@ -22,7 +22,8 @@ from functools import cached_property
 
 import numpy as np
 
-from rbi.core.inertia import MassProperties, inertia_about, principal_axes
+from rbi.core.inertia import principal_axes
+from rbi.core.mass import MassProperties
 
 SINGULAR_RTOL = 1e-12
 """Smallest principal moment below this fraction of the largest: the inertia is singular."""
@@ -107,14 +108,14 @@ def scene_from_properties(
     from rbi.core.spin_axis import default_spin_axis
 
     if pivot is None:
-        inertia = np.array(props.inertia_com, dtype=float)
+        inertia = np.array(props.inertia_about_com, dtype=float)
         com_from_pivot = np.zeros(3)
         where = "centre of mass"
         g = 0.0
     else:
         pivot = np.asarray(pivot, dtype=float)
-        inertia = inertia_about(props, pivot)
-        com_from_pivot = np.asarray(props.com, dtype=float) - pivot
+        inertia = props.inertia_about(pivot)
+        com_from_pivot = np.asarray(props.center_of_mass, dtype=float) - pivot
         where = "pivot"
         g = float(gravity)
     moments = np.linalg.eigvalsh(inertia)
@@ -138,7 +139,7 @@ def scene_from_properties(
         gravity=g,
         pivoted=pivot is not None,
         pivot=None if pivot is None else pivot,
-        com=np.asarray(props.com, dtype=float),
+        com=np.asarray(props.center_of_mass, dtype=float),
         spin_axis=axis,
     )
 

@@ -238,7 +238,7 @@ def _stand_in(element) -> dict[str, Any]:
     from rbi.core.inertia import principal_axes
 
     mass = abs(float(element.mass))
-    moments, axes = principal_axes(np.sign(element.mass) * np.asarray(element.inertia_com, dtype=float))
+    moments, axes = principal_axes(np.sign(element.mass) * np.asarray(element.inertia_about_com, dtype=float))
     if mass == 0.0:
         size = np.zeros(3)
     else:
@@ -246,7 +246,7 @@ def _stand_in(element) -> dict[str, Any]:
         size = np.sqrt(np.maximum(6.0 * (total - 2.0 * moments) / mass, 0.0))
     return {
         "kind": "box",
-        "center": _vector(element.com),
+        "center": _vector(element.center_of_mass),
         "size": size.tolist(),
         "rotation": axes.T.tolist(),
         "stand_in": True,

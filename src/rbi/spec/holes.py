@@ -12,8 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rbi.core.inertia import MassProperties, combine_elements
-from rbi.core.shapes import MassElement
+from rbi.core.mass import MassProperties
 from rbi.core.validity import INERTIA_RTOL, inertia_problem
 from rbi.spec.errors import InputError
 
@@ -21,27 +20,29 @@ MASS_RTOL = 1e-9
 """A net mass below this fraction of the gross mass counts as nothing left."""
 
 
-def _gross(elements: list[MassElement]) -> MassProperties:
-    return combine_elements(
-        MassElement(abs(e.mass), e.com, np.sign(e.mass) * e.inertia_com) for e in elements
+def _gross(elements: list[MassProperties]) -> MassProperties:
+    return MassProperties.sum(
+        MassProperties(abs(e.mass), e.center_of_mass, np.sign(e.mass) * e.inertia_about_com) for e in elements
     )
 
 
-def body_problem(elements: list[MassElement], mass_unit: str = "") -> str | None:
+def body_problem(elements: list[MassProperties], mass_unit: str = "") -> str | None:
     """Why the body made of ``elements`` (holes with negative mass) is not physical, or None."""
     gross = _gross(elements)
     net_mass = float(sum(e.mass for e in elements))
     if not net_mass > MASS_RTOL * gross.mass:
         unit = f" {mass_unit}" if mass_unit else ""
         return f"no mass left: the body's mass would be {net_mass:.6g}{unit} (a hole cannot remove more material than there is)"
-    props = combine_elements(elements)
-    problem = inertia_problem(props.inertia_com, INERTIA_RTOL, scale=0.5 * float(np.trace(gross.inertia_com)))
+    props = MassProperties.sum(elements)
+    problem = inertia_problem(
+        props.inertia_about_com, INERTIA_RTOL, scale=0.5 * float(np.trace(gross.inertia_about_com))
+    )
     if problem is not None:
         return f"the body's inertia about its centre of mass would be {problem.message} (the hole removes material that is not there)"
     return None
 
 
-def check_holes(path: str, spec, elements: list[MassElement], holes: list[int]) -> None:
+def check_holes(path: str, spec, elements: list[MassProperties], holes: list[int]) -> None:
     """Raise :class:`InputError` naming the first hole (in file order) after which the body
     stops being physical; the material parts are counted first."""
     if body_problem(elements, spec.units.mass) is None:

@@ -11,9 +11,8 @@ import math
 
 import numpy as np
 
-from rbi.core.inertia import combine
+from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import axis_angle_matrix, without_rounding_noise
-from rbi.core.shapes import MassElement
 
 
 def copy_rotations(count: int, axis) -> np.ndarray:
@@ -27,13 +26,13 @@ def copy_rotations(count: int, axis) -> np.ndarray:
     return rotations
 
 
-def patterned(element: MassElement, pattern) -> MassElement:
+def patterned(element: MassProperties, pattern) -> MassProperties:
     """The ``pattern.count`` copies of ``element`` (a part's own mass element, positive mass)
     as one element. ``pattern`` has ``count`` and either ``axis`` (with ``through``, default
     the origin) or ``step``."""
     count = int(pattern.count)
-    com = np.asarray(element.com, dtype=float)
-    inertia = np.asarray(element.inertia_com, dtype=float)
+    com = np.asarray(element.center_of_mass, dtype=float)
+    inertia = np.asarray(element.inertia_about_com, dtype=float)
     if pattern.step is not None:
         offsets = np.arange(count)[:, None] * np.asarray(pattern.step, dtype=float)
         coms = com + offsets
@@ -44,4 +43,4 @@ def patterned(element: MassElement, pattern) -> MassElement:
         coms = through + np.einsum("kij,j->ki", rotations, com - through)
         inertias = np.einsum("kij,jl,kml->kim", rotations, inertia, rotations)
     props = combine(np.full(count, float(element.mass)), coms, inertias)
-    return MassElement(props.mass, props.com, props.inertia_com)
+    return props

@@ -9,7 +9,8 @@ from typing import Any
 import numpy as np
 
 from rbi.core import shapes
-from rbi.core.inertia import MassProperties, combine_elements, parallel_axis_to_com, re_express
+from rbi.core.inertia import parallel_axis_to_com, re_express
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import axis_angle_matrix, euler_matrix, quaternion_to_matrix, without_rounding_noise
 from rbi.core.validity import inertia_problem
 from rbi.spec import models
@@ -33,7 +34,7 @@ class LoadedBody:
     mass_unit: str
     props: MassProperties
     pivot: np.ndarray | None
-    elements: list[shapes.MassElement]
+    elements: list[MassProperties]
     part_names: list[str | None]
     expect: dict[str, Any] | None = None
     spin_axis: np.ndarray | None = None
@@ -79,56 +80,56 @@ def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
     return without_rounding_noise(R)
 
 
-def cone_element(part: models.ConePart, units: models.Units) -> shapes.MassElement:
+def cone_element(part: models.ConePart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.cone(mass, part.radius, part.apex, part.base)
 
 
-def cylinder_element(part: models.CylinderPart, units: models.Units) -> shapes.MassElement:
+def cylinder_element(part: models.CylinderPart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.cylinder(mass, part.radius, part.start, part.end)
 
 
-def point_element(part: models.PointPart, units: models.Units) -> shapes.MassElement:
+def point_element(part: models.PointPart, units: models.Units) -> MassProperties:
     return shapes.point(part.mass, part.position)
 
 
-def box_element(part: models.BoxPart, units: models.Units) -> shapes.MassElement:
+def box_element(part: models.BoxPart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.box(mass, part.size, part.center, rotation_matrix(part.rotation))
 
 
-def sphere_element(part: models.SpherePart, units: models.Units) -> shapes.MassElement:
+def sphere_element(part: models.SpherePart, units: models.Units) -> MassProperties:
     return shapes.sphere(_solid_mass(part, one_volume(part), units), part.radius, part.center)
 
 
-def spherical_shell_element(part: models.SphericalShellPart, units: models.Units) -> shapes.MassElement:
+def spherical_shell_element(part: models.SphericalShellPart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.spherical_shell(mass, part.outer_radius, part.inner_radius, part.center)
 
 
-def tube_element(part: models.TubePart, units: models.Units) -> shapes.MassElement:
+def tube_element(part: models.TubePart, units: models.Units) -> MassProperties:
     volume = one_volume(part)
     mass = _solid_mass(part, volume, units)
     return shapes.tube(mass, part.outer_radius, part.inner_radius, part.start, part.end)
 
 
-def frustum_element(part: models.FrustumPart, units: models.Units) -> shapes.MassElement:
+def frustum_element(part: models.FrustumPart, units: models.Units) -> MassProperties:
     volume = one_volume(part)
     mass = _solid_mass(part, volume, units)
     return shapes.frustum(mass, part.start_radius, part.end_radius, part.start, part.end)
 
 
-def ellipsoid_element(part: models.EllipsoidPart, units: models.Units) -> shapes.MassElement:
+def ellipsoid_element(part: models.EllipsoidPart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.ellipsoid(mass, part.semi_axes, part.center, rotation_matrix(part.rotation))
 
 
-def rod_element(part: models.RodPart, units: models.Units) -> shapes.MassElement:
+def rod_element(part: models.RodPart, units: models.Units) -> MassProperties:
     return shapes.rod(part.mass, part.start, part.end)
 
 
-def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassElement:
+def custom_element(part: models.CustomPart, units: models.Units) -> MassProperties:
     """The given inertia turned into body axes, then moved from ``about`` to the centre of
     mass. Raises ValueError (``field: what is wrong``) when either is not physical."""
     given = np.asarray(part.inertia, dtype=float)
@@ -156,25 +157,25 @@ def custom_element(part: models.CustomPart, units: models.Units) -> shapes.MassE
                 f"offset² = {shift:.6g} on the axes across the offset, so the given one is too small; "
                 "is `about` the point it was taken about?"
             )
-    return shapes.MassElement(part.mass, com, 0.5 * (inertia + inertia.T))
+    return MassProperties(part.mass, com, 0.5 * (inertia + inertia.T))
 
 
-def torus_element(part: models.TorusPart, units: models.Units) -> shapes.MassElement:
+def torus_element(part: models.TorusPart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.torus(mass, part.major_radius, part.minor_radius, part.center, part.axis)
 
 
-def hemisphere_element(part: models.HemispherePart, units: models.Units) -> shapes.MassElement:
+def hemisphere_element(part: models.HemispherePart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.hemisphere(mass, part.radius, part.center, part.axis)
 
 
-def capsule_element(part: models.CapsulePart, units: models.Units) -> shapes.MassElement:
+def capsule_element(part: models.CapsulePart, units: models.Units) -> MassProperties:
     mass = _solid_mass(part, one_volume(part), units)
     return shapes.capsule(mass, part.radius, part.start, part.end)
 
 
-def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> shapes.MassElement:
+def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> MassProperties:
     """The mesh's mass in the body, as ``part.inertia`` places it (the enclosed solid, the convex
     hull's solid, or the surface): ``scale``, then ``rotation`` about the mesh origin, then the
     origin moved to ``position``. Raises ValueError naming the file (as written in the spec)
@@ -203,7 +204,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     if R is not None:
         com = R @ com
         inertia = re_express(inertia, R)
-    return shapes.MassElement(mass, np.asarray(part.position, dtype=float) + com, 0.5 * (inertia + inertia.T))
+    return MassProperties(mass, np.asarray(part.position, dtype=float) + com, 0.5 * (inertia + inertia.T))
 
 
 def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str, ...]:
@@ -235,7 +236,7 @@ def mesh_notes(spec: models.BodySpec) -> list[str]:
     ]
 
 
-def part_element(part, units: models.Units, spec_path: str) -> shapes.MassElement:
+def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
     """One written part's mass element in file units: built from its fields (a mesh read from
     its file beside the spec), then, with a ``pattern``, every copy combined into one."""
     if isinstance(part, models.MeshPart):
@@ -249,7 +250,7 @@ def part_element(part, units: models.Units, spec_path: str) -> shapes.MassElemen
     return element
 
 
-ELEMENT_BUILDERS: dict[type, Callable[..., shapes.MassElement]] = {
+ELEMENT_BUILDERS: dict[type, Callable[..., MassProperties]] = {
     models.ConePart: cone_element,
     models.CylinderPart: cylinder_element,
     models.PointPart: point_element,
@@ -265,13 +266,13 @@ ELEMENT_BUILDERS: dict[type, Callable[..., shapes.MassElement]] = {
     models.HemispherePart: hemisphere_element,
     models.CapsulePart: capsule_element,
 }
-"""Each part model's translation ``(part, units) -> MassElement`` (file units); meshes, which
+"""Each part model's translation ``(part, units) -> MassProperties`` (file units); meshes, which
 need the spec's folder, and patterns go through :func:`part_element`."""
 
 
-def _removed(element: shapes.MassElement) -> shapes.MassElement:
+def _removed(element: MassProperties) -> MassProperties:
     """A hole: the same solid with negative mass and inertia."""
-    return shapes.MassElement(-element.mass, element.com, -element.inertia_com)
+    return MassProperties(-element.mass, element.center_of_mass, -element.inertia_about_com)
 
 
 def body_from_spec(spec: models.BodySpec, path: str):
@@ -303,8 +304,8 @@ def body_from_spec(spec: models.BodySpec, path: str):
             element = None
         if element is None or not (
             np.isfinite(element.mass)
-            and np.all(np.isfinite(element.com))
-            and np.all(np.isfinite(element.inertia_com))
+            and np.all(np.isfinite(element.center_of_mass))
+            and np.all(np.isfinite(element.inertia_about_com))
         ):
             raise InputError(
                 f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows "
@@ -326,10 +327,10 @@ def body_from_spec(spec: models.BodySpec, path: str):
         check_holes(path, spec, elements, holes)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            props = combine_elements(elements)
+            props = MassProperties.sum(elements)
     except ValueError as exc:
         raise InputError(f"{path}: {exc}") from None
-    if not all(np.all(np.isfinite(x)) for x in props):
+    if not all(np.all(np.isfinite(x)) for x in (props.mass, props.center_of_mass, props.inertia_about_com)):
         raise InputError(f"{path}: numbers too large: the body's mass, centre of mass or inertia overflows")
     pivot = None if spec.pivot is None else np.asarray(spec.pivot, dtype=float)
     return LoadedBody(

@@ -20,8 +20,8 @@ from typing import Any
 import numpy as np
 
 from rbi.core import shapes
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import vector_length
-from rbi.core.shapes import MassElement
 from rbi.spec import models
 from rbi.spec.materials import density_in_units
 
@@ -133,7 +133,7 @@ def _plain(part: Any, fields: set[str]) -> bool:
     return "rotation" not in fields or part.rotation is None
 
 
-def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassElement], set[int]]:
+def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassProperties], set[int]]:
     """``(elements, holes)``: the mass elements (file units, as written: not negated) of the
     plain parts of the batched shapes, by index in ``parts``, and which of those indices are
     holes (``subtract: true``). Parts left out go through the per-part path; so do elements
@@ -149,7 +149,7 @@ def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassElem
             fields = fields_of[kind] = _fields(kind)
         if _plain(part, fields):
             groups.setdefault(kind, []).append(i)
-    out: dict[int, MassElement] = {}
+    out: dict[int, MassProperties] = {}
     holes: set[int] = set()
     for kind, indices in groups.items():
         chosen = [parts[i] for i in indices]
@@ -164,7 +164,7 @@ def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassElem
         ok = finite.tolist()
         for k, i in enumerate(indices):
             if ok[k]:
-                out[i] = MassElement(masses[k], com[k], inertia[k])
+                out[i] = MassProperties(masses[k], com[k], inertia[k])
         if "subtract" in fields_of[kind]:
             holes.update(i for i, part in zip(indices, chosen) if part.subtract and i in out)
     return out, holes

@@ -75,7 +75,9 @@ def convert_body(body, length_unit: str, mass_unit: str):
     L, M = scale_factors((body.length_unit, body.mass_unit), (length_unit, mass_unit))
 
     def element(e):
-        return type(e)(e.mass * M, np.asarray(e.com) * L, np.asarray(e.inertia_com) * (M * L * L))
+        return type(e)(
+            e.mass * M, np.asarray(e.center_of_mass) * L, np.asarray(e.inertia_about_com) * (M * L * L)
+        )
 
     return dataclasses.replace(
         body,

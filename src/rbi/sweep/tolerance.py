@@ -38,7 +38,7 @@ def nominal_axes(job: SweepJob) -> np.ndarray:
     body = job.body(tuple(current_values(job.raw, list(job.varied))))
     if isinstance(body, str):
         raise ValueError(body)
-    return principal_axes(body.props.inertia_com)[1]
+    return principal_axes(body.props.inertia_about_com)[1]
 
 
 def mass_rows(job: SweepJob, nominal: np.ndarray, start: int, stop: int, threads: int = 0) -> list[list[Any]]:
@@ -52,13 +52,13 @@ def mass_rows(job: SweepJob, nominal: np.ndarray, start: int, stop: int, threads
         if isinstance(body, str):
             rows.append(row + [None] * (len(MASS_COLUMNS) - 1) + [body])
             continue
-        moments, axes = principal_axes(body.props.inertia_com)
+        moments, axes = principal_axes(body.props.inertia_about_com)
         tilts = np.degrees(np.arccos(np.clip(np.abs(np.sum(axes * nominal, axis=1)), 0.0, 1.0)))
         rows.append(
             row
             + [
                 float(body.props.mass),
-                *map(float, body.props.com),
+                *map(float, body.props.center_of_mass),
                 *map(float, moments),
                 *map(float, tilts),
                 "ok",

@@ -1,0 +1,157 @@
+"""The one mass-properties value type: :class:`MassProperties` (mass, centre of mass, inertia
+about the centre of mass, and the name of the frame its vectors are expressed in), and the
+operations every layer needs: the sum of several (:meth:`MassProperties.sum`, :func:`combine`),
+the inertia about another point (parallel axis, :meth:`MassProperties.inertia_about`), the same
+body seen from a turned and moved frame (:meth:`MassProperties.transformed`), and the principal
+moments and axes (:meth:`MassProperties.principal`).
+
+Units are the caller's (lengths L, masses M, inertias M·L²); rbi's robot files are SI. The
+inertia is ``I = ∫ (|r|² E − r rᵀ) dm`` (products carry a minus sign), about the centre of mass,
+in the axes of ``frame``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+
+import numpy as np
+
+from rbi.core.inertia import centre_of_mass, point_mass_inertia, principal_axes, symmetrize
+
+
+def _frozen(values, shape: tuple[int, ...]) -> np.ndarray:
+    array = np.array(values, dtype=float).reshape(shape)
+    array.flags.writeable = False
+    return array
+
+
+@dataclass(frozen=True, eq=False)
+class MassProperties:
+    """A rigid body's mass properties, immutable.
+
+    ``mass`` (M); ``center_of_mass`` (3,) in ``frame`` (L); ``inertia_about_com`` (3, 3) about the
+    centre of mass in ``frame``'s axes (M·L²); ``frame`` a short name of the frame (``"body"``,
+    ``"link"``, ``"world"``, ``"root link NAME"``, ``"mesh"``). The arrays are read-only copies.
+    """
+
+    mass: float
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray
+    frame: str = "body"
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "mass", float(self.mass))
+        object.__setattr__(self, "center_of_mass", _frozen(self.center_of_mass, (3,)))
+        object.__setattr__(self, "inertia_about_com", _frozen(self.inertia_about_com, (3, 3)))
+
+    def __repr__(self) -> str:
+        return (
+            f"MassProperties(mass={self.mass!r}, center_of_mass={self.center_of_mass.tolist()!r}, "
+            f"inertia_about_com={self.inertia_about_com.tolist()!r}, frame={self.frame!r})"
+        )
+
+    @staticmethod
+    def zero(frame: str = "body") -> MassProperties:
+        """No mass: zero mass, centre of mass at the origin, zero inertia."""
+        return MassProperties(0.0, np.zeros(3), np.zeros((3, 3)), frame)
+
+    @staticmethod
+    def point(mass: float, position, frame: str = "body") -> MassProperties:
+        """A point mass at ``position``: no inertia about itself."""
+        return MassProperties(mass, position, np.zeros((3, 3)), frame)
+
+    @staticmethod
+    def sum(parts: Iterable[MassProperties], frame: str | None = None) -> MassProperties:
+        """The mass properties of a body made of ``parts`` (all in one frame; a negative mass
+        removes material). ValueError when the total mass is not positive. ``frame``: the
+        result's frame name (default: the first part's)."""
+        parts = list(parts)
+        if not parts:
+            raise ValueError("total mass must be positive, got 0 (no parts)")
+        return combine(
+            np.array([p.mass for p in parts]),
+            np.array([p.center_of_mass for p in parts]),
+            np.array([p.inertia_about_com for p in parts]),
+            frame=parts[0].frame if frame is None else frame,
+        )
+
+    def inertia_about(self, point) -> np.ndarray:
+        """Inertia (M·L²) about ``point`` (L, this frame) in this frame's axes (parallel axis)."""
+        offset = np.asarray(point, dtype=float) - self.center_of_mass
+        return symmetrize(self.inertia_about_com + point_mass_inertia(self.mass, offset))
+
+    def transformed(self, rotation=None, translation=None, frame: str | None = None) -> MassProperties:
+        """The same body in another frame, where ``x_new = rotation @ x + translation``
+        (``rotation`` None: the same axes; ``translation`` None: the same origin): the centre of
+        mass moves, the inertia is re-expressed ``R I Rᵀ``."""
+        com, inertia = self.center_of_mass, self.inertia_about_com
+        if rotation is not None:
+            R = np.asarray(rotation, dtype=float)
+            com, inertia = R @ com, symmetrize(R @ inertia @ R.T)
+        if translation is not None:
+            com = com + np.asarray(translation, dtype=float)
+        return MassProperties(self.mass, com, inertia, self.frame if frame is None else frame)
+
+    def scaled(self, factor: float) -> MassProperties:
+        """The same shape at ``factor`` times the mass (a density applied to a unit density's
+        properties): the centre of mass stays, mass and inertia scale."""
+        return MassProperties(
+            self.mass * factor, self.center_of_mass, self.inertia_about_com * factor, self.frame
+        )
+
+    def with_mass(self, mass: float) -> MassProperties:
+        """The same shape at exactly ``mass`` (M): the centre of mass stays, the inertia scales
+        by ``mass / self.mass``."""
+        return MassProperties(
+            mass, self.center_of_mass, self.inertia_about_com * (mass / self.mass), self.frame
+        )
+
+    def principal(self) -> tuple[np.ndarray, np.ndarray]:
+        """Principal moments about the centre of mass (M·L², ascending) and axes (rows, unit, in
+        this frame's axes), as :func:`rbi.core.inertia.principal_axes` chooses them."""
+        return principal_axes(self.inertia_about_com)
+
+    @property
+    def moments(self) -> np.ndarray:
+        """Principal moments about the centre of mass (M·L², ascending)."""
+        return self.principal()[0]
+
+
+def combine(
+    masses: np.ndarray, coms: np.ndarray, inertias_com: np.ndarray | None = None, frame: str = "body"
+) -> MassProperties:
+    """Mass properties of a body made of parts given as arrays.
+
+    masses: (N,) M (a negative mass removes material). coms: (N, 3) each part's centre of
+    mass, L. inertias_com: (N, 3, 3) each part about its own centre of mass, M·L², or None when
+    every part is a point mass. Each part is shifted straight to the body's centre of mass, so
+    only the small offsets between nearby points enter. ValueError when the total mass is not
+    positive.
+    """
+    m = np.asarray(masses, dtype=float).reshape(-1)
+    c = np.asarray(coms, dtype=float).reshape(-1, 3)
+    total = float(m.sum())
+    if not total > 0.0:
+        raise ValueError(f"total mass must be positive, got {total!r}")
+    com = centre_of_mass(m, c)
+    d = c - com
+    second_moment = (d * m[:, None]).T @ d  # Σ m d dᵀ
+    inertia = np.trace(second_moment) * np.eye(3) - second_moment
+    if inertias_com is not None:
+        inertia = inertia + np.asarray(inertias_com, dtype=float).reshape(-1, 3, 3).sum(axis=0)
+    return MassProperties(total, com, symmetrize(inertia), frame)
+
+
+def inertia_shares(parts: Sequence[MassProperties], body: MassProperties) -> np.ndarray:
+    """Each part's share of the trace of the body's inertia about the body's centre of mass
+    (fractions that add up to 1; a hole's share is negative).
+
+    The trace is the sum of the three moments, ``2 ∫ |r|² dm``, so the share says which part
+    carries the body's rotational inertia whatever the axes.
+    """
+    total = float(np.trace(body.inertia_about_com))
+    shares = np.empty(len(parts))
+    for i, part in enumerate(parts):
+        shares[i] = float(np.trace(part.inertia_about(body.center_of_mass))) / total if total != 0.0 else 0.0
+    return shares
