@@ -152,9 +152,8 @@ def test_latency_has_first_run_and_every_timed_target(quick_run):
     assert per_file["target_ms"] == 5.0
     # where the start-up goes: every module's own import time, summed by package
     imports = lat["imports"]
-    assert (
-        imports["groups_ms"]["numpy"] > 0 and imports["groups_ms"]["typer and click"] == 0
-    )  # the quick path
+    # typer parses every command line (there is no second parser any more), so it is measured too
+    assert imports["groups_ms"]["numpy"] > 0 and imports["groups_ms"]["typer and click"] > 0
     assert sum(imports["groups_ms"].values()) == pytest.approx(imports["total_ms"])
     assert lat["bytecode_compiled"] is True  # no timed run compiles rbi's sources
     first = lat["first_run"]
