@@ -149,8 +149,7 @@ def _yaml_text(robot, link) -> str:
 
     source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
     header = comment(
-        f"rbi import of {os.path.basename(robot.path)}, {link.label(robot.link_word)}, from its {source} "
-        "<inertial>:",
+        f"rbi import of {os.path.basename(robot.path)}, {link.label}, from its {source} <inertial>:",
         "SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,",
         "turned into link axes by `rotation`.",
     )
@@ -200,10 +199,10 @@ def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
             {
                 "name": each.name,
                 "index": each.index,
-                "mass": each.mass,
-                "center_of_mass": each.com,
-                "inertia": each.inertia_in_link_axes(),
-                "inertial_quaternion": each.quaternion if each.quaternion is not None else _quaternion(each),
+                "mass": each.inertial.mass,
+                "center_of_mass": each.inertial.properties.center_of_mass,
+                "inertia": each.inertial.properties.inertia_about_com,
+                "inertial_quaternion": _quaternion(each.inertial),
                 "problems": link_problems(robot, each),
                 "file": written.get(id(each)),
             }
@@ -226,11 +225,14 @@ def _emit_listing(format: OutputFormat, robot, links, targets) -> None:
     emit(format.value, result, lambda: None, csv_rows=csv_rows)
 
 
-def _quaternion(link):
-    """``[w, x, y, z]`` of the inertial frame (identity when the file gave none)."""
+def _quaternion(inertial):
+    """``[w, x, y, z]`` of the inertial frame: the file's own quaternion, else the identity or the
+    rotation's."""
     import numpy as np
 
     from rbi.core.rotation import matrix_to_quaternion
 
-    R = link.rotation_matrix()
+    if inertial.quaternion is not None and inertial.rpy is None:
+        return inertial.quaternion
+    R = inertial.rotation
     return np.array([1.0, 0.0, 0.0, 0.0]) if R is None else matrix_to_quaternion(R)

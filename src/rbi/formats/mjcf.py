@@ -32,7 +32,7 @@ import numpy as np
 
 from rbi.core.mass import MassProperties
 from rbi.errors import InputError
-from rbi.formats.robot_model import (
+from rbi.formats.robot import (
     Geom,
     Inertial,
     Link,

@@ -28,18 +28,16 @@ not a plain finite decimal.
 
 from __future__ import annotations
 
-import math
 import os
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
-from rbi.core.inertia import re_express
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
-from rbi.formats.robot_model import RobotModel
-from rbi.formats.robot_model import short as _short
+from rbi.formats.robot import Link, RobotModel
+from rbi.formats.robot import short as _short
 from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
 
 ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf", ".xacro")
@@ -47,65 +45,16 @@ FORMAT_BY_ROOT = {"robot": "urdf", "sdf": "sdf", "mujoco": "mjcf"}
 LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
 
 
-@dataclass(frozen=True)
-class RobotLink:
-    """One link's inertial properties, SI. ``com``: centre of mass in the link frame, m.
-    ``inertia``: about the centre of mass in the inertial frame's axes, kg·m².
-    ``quaternion``: ``[w, x, y, z]`` turning the inertial frame's axes into the link's, or None
-    when they coincide; ``rpy``: the same rotation as URDF/SDF roll, pitch, yaw (radians) when
-    the file gave it that way."""
-
-    index: int
-    name: str | None
-    mass: float
-    com: np.ndarray
-    inertia: np.ndarray
-    quaternion: np.ndarray | None = None
-    rpy: tuple[float, float, float] | None = None
-    rotation: np.ndarray | None = None
-    massless_allowed: bool = False
-
-    def label(self, word: str) -> str:
-        return f"{word}[{self.index}]" + (f" ({self.name})" if self.name is not None else "")
-
-    def spec_rotation(self) -> dict[str, Any] | None:
-        """The rotation (inertial frame → link frame) as a spec ``rotation:`` mapping: URDF/SDF
-        roll, pitch, yaw as Euler angles about the fixed x, y, z axes, MJCF's quaternion as it
-        is; None when the frames coincide."""
-        if self.rpy is not None:
-            return {"euler_deg": [math.degrees(a) for a in self.rpy], "sequence": "xyz"}
-        if self.quaternion is not None:
-            return {"quaternion": [float(v) for v in self.quaternion]}
-        return None
-
-    def rotation_matrix(self) -> np.ndarray | None:
-        """Inertial frame → link frame, exactly as rbi reads the spec's rotation; None for the
-        identity."""
-        from rbi.core.rotation import euler_matrix, quaternion_to_matrix, without_rounding_noise
-
-        if self.rotation is not None and self.rpy is None and self.quaternion is None:
-            return self.rotation
-        if self.rpy is not None:
-            return without_rounding_noise(euler_matrix(np.asarray(self.rpy, dtype=float), "xyz"))
-        if self.quaternion is not None:
-            return without_rounding_noise(quaternion_to_matrix(np.asarray(self.quaternion, dtype=float)))
-        return None
-
-    def inertia_in_link_axes(self) -> np.ndarray:
-        """The inertia about the centre of mass in the link frame's axes, kg·m²."""
-        R = self.rotation_matrix()
-        return self.inertia.copy() if R is None else re_express(self.inertia, R)
-
-
 @dataclass
 class RobotFile:
     """A parsed robot file: ``format`` is ``urdf``, ``sdf`` or ``mjcf``; ``links`` those with
-    an inertial element; ``skipped`` (label, reason) for the others."""
+    an inertial element (:class:`rbi.formats.robot.Link`, each with its ``inertial``);
+    ``skipped`` (label, reason) for the others."""
 
     path: str
     format: str
     name: str | None
-    links: list[RobotLink] = field(default_factory=list)
+    links: list[Link] = field(default_factory=list)
     skipped: list[tuple[str, str]] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     unchecked: list[str] = field(default_factory=list)
@@ -177,42 +126,31 @@ def read_robot_file(path: str) -> RobotFile:
                 )
             )
             continue
-        robot.links.append(
-            RobotLink(
-                link.index,
-                link.name,
-                inertial.mass,
-                inertial.properties.center_of_mass,
-                inertial.written_inertia,
-                quaternion=inertial.quaternion if inertial.rpy is None else None,
-                rpy=inertial.rpy,
-                rotation=inertial.rotation,
-                massless_allowed=not link.moves,
-            )
-        )
+        robot.links.append(link)
     return robot
 
 
 # --- validity ----------------------------------------------------------------------------------
 
 
-def link_problems(robot: RobotFile, link: RobotLink) -> list[str]:
-    """Every reason the link's mass properties are not physical, one line each with the margin
-    by which the check fails (empty when the link is fine)."""
-    where = f"{robot.path}: {link.label(robot.link_word)}"
+def link_problems(robot: RobotFile, link: Link) -> list[str]:
+    """Every reason the link's declared mass properties are not physical, one line each with the
+    margin by which the check fails (empty when the link is fine)."""
+    where = f"{robot.path}: {link.label}"
+    mass, inertia = link.inertial.mass, link.inertial.written_inertia
     problems = []
-    if link.mass == 0.0 and np.any(link.inertia != 0):
+    if mass == 0.0 and np.any(inertia != 0):
         return [
             f"{where}: inertia: mass 0 with non-zero moments; no body without mass has a moment of inertia"
         ]
-    if link.mass == 0.0 and link.massless_allowed:
+    if mass == 0.0 and not link.moves:
         return problems  # a root or fixed link without mass: how simulators mark a static base
-    if not link.mass > 0.0:
-        problems.append(f"{where}: mass: must be greater than 0 (got {link.mass!r} kg)")
-    problem = declared_inertia_problem(link.mass, link.inertia)
+    if not mass > 0.0:
+        problems.append(f"{where}: mass: must be greater than 0 (got {mass!r} kg)")
+    problem = declared_inertia_problem(mass, inertia)
     if problem is not None:
         if problem.kind in ("negative moment", "triangle inequality"):
-            I1, I2, I3 = (float(m) for m in np.linalg.eigvalsh(link.inertia))
+            I1, I2, I3 = (float(m) for m in np.linalg.eigvalsh(inertia))
         if problem.kind == "negative moment":
             margin = f"margin {I1:.6g} kg·m² below zero"
         elif problem.kind == "triangle inequality":
@@ -236,15 +174,16 @@ def robot_file_problems(path: str) -> list[str]:
 # --- specs ---------------------------------------------------------------------------------------
 
 
-def link_spec(robot: RobotFile, link: RobotLink) -> dict[str, Any]:
+def link_spec(robot: RobotFile, link: Link) -> dict[str, Any]:
     """The rbi spec (plain dict, SI) of one link: one custom part with the link's mass, centre
     of mass, inertia about it in the inertial frame's axes, and the rotation into link axes."""
-    I = link.inertia
+    inertial = link.inertial
+    I = inertial.written_inertia
     part: dict[str, Any] = {
         "name": link.name or f"{robot.link_word}{link.index}",
         "shape": "custom",
-        "mass": float(link.mass),
-        "center_of_mass": [float(v) for v in link.com],
+        "mass": float(inertial.mass),
+        "center_of_mass": [float(v) for v in inertial.properties.center_of_mass],
         "inertia": {
             "ixx": float(I[0, 0]),
             "iyy": float(I[1, 1]),
@@ -254,7 +193,7 @@ def link_spec(robot: RobotFile, link: RobotLink) -> dict[str, Any]:
             "iyz": float(I[1, 2]),
         },
     }
-    rotation = link.spec_rotation()
+    rotation = inertial.spec_rotation()
     if rotation is not None:
         part["rotation"] = rotation
     return {

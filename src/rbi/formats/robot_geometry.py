@@ -1,4 +1,4 @@
-"""Mass properties of a robot link's geometry (the :class:`~rbi.formats.robot_model.Geom` pieces
+"""Mass properties of a robot link's geometry (the :class:`~rbi.formats.robot.Geom` pieces
 a reader returns), per unit density, in the link's frame.
 
 Primitives are closed forms (MuJoCo's, which are the exact ones: a capsule is a cylinder and two
@@ -16,7 +16,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rbi.errors import InputError
-from rbi.formats.robot_model import Geom
+from rbi.formats.robot import Geom
 
 MESH_INERTIA_MODES = ("auto", "exact", "convex", "shell")
 """``auto``: ``exact`` for a closed mesh; for one that is not (open, inconsistently wound, no

@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from rbi.core.mass import MassProperties
-from rbi.formats.robot_model import (
+from rbi.formats.robot import (
     Geom,
     Inertial,
     Link,

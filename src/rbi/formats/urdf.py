@@ -17,7 +17,7 @@ from __future__ import annotations
 import numpy as np
 
 from rbi.errors import InputError
-from rbi.formats.robot_model import (
+from rbi.formats.robot import (
     Geom,
     Inertial,
     Link,

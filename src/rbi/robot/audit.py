@@ -37,8 +37,8 @@ import numpy as np
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
+from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution
-from rbi.formats.robot_model import Link, RobotModel
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from rbi.formats.robot_model import Pose, RobotModel
+from rbi.formats.robot import Pose, RobotModel
 
 
 def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tuple[dict[str, Any], list[str]]:

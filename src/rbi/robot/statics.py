@@ -18,7 +18,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rbi.formats.robot_model import Pose, RobotModel
+from rbi.formats.robot import Pose, RobotModel
 
 STANDARD_GRAVITY = 9.81
 """m/s², along −z of the root link's frame for URDF and SDF."""

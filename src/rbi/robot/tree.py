@@ -15,7 +15,7 @@ import numpy as np
 
 from rbi.core.mass import MassProperties
 from rbi.errors import InputError
-from rbi.formats.robot_model import Pose, RobotModel
+from rbi.formats.robot import Pose, RobotModel
 
 
 def parse_joint_values(values: list[str] | None) -> dict[str, float]:
