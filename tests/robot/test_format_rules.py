@@ -127,3 +127,41 @@ def test_urdf_refusals_of_urdfdom_and_pybullet(tmp_path, case):
         assert proc.returncode == 2, (command, proc.stdout, proc.stderr)
         message = (proc.stderr + proc.stdout).strip()
         assert words in message and "r.urdf" in message and "Traceback" not in message
+
+
+def test_import_and_validate_take_package_path(tmp_path):
+    package = tmp_path / "pkgs" / "my_robot"
+    (package / "meshes").mkdir(parents=True)
+    (package / "meshes" / "box.obj").write_text(
+        "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+        "f 1 4 3\nf 1 3 2\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n"
+    )
+    robot = tmp_path / "robot" / "r.urdf"
+    robot.parent.mkdir()
+    robot.write_text(
+        '<robot name="r"><link name="a"><inertial><mass value="1"/><inertia ixx="0.16" iyy="0.16" izz="0.16" '
+        'ixy="0" ixz="0" iyz="0"/></inertial><collision><geometry><mesh filename="package://my_robot/meshes/box.obj"/>'
+        "</geometry></collision></link></robot>"
+    )
+    option = ("--package-path", f"my_robot={package}")
+    for command in ("validate", "import"):
+        without = run_rbi_inprocess(command, str(robot))
+        assert without.returncode == 2 and "--package-path my_robot=DIR" in without.stderr + without.stdout
+        assert (without.stderr + without.stdout).count("package://my_robot/meshes/box.obj") == 1
+        assert run_rbi_inprocess(command, str(robot), *option).returncode == 0
+    for form in ("json", "csv", "table"):
+        assert run_rbi_inprocess("audit", str(robot), *option, "--format", form).returncode == 0
+
+
+def test_centres_of_mass_whose_squares_overflow_are_refused_naming_the_file(tmp_path):
+    link = '<link name="{}"><inertial><origin xyz="{} 0 0"/><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+    text = (
+        f'<robot name="r">{link.format("a", "1e155")}{link.format("b", "0")}'
+        '<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint></robot>'
+    )
+    path = tmp_path / "far.urdf"
+    path.write_text(text)
+    for form in ("table", "json", "csv"):
+        proc = run_rbi_inprocess("audit", str(path), "--format", form)
+        assert proc.returncode == 2 and proc.stdout == ""
+        assert "far.urdf" in proc.stderr and "overflow" in proc.stderr

@@ -37,8 +37,8 @@ REFUSED = {  # file (relative to pybullet_data) → words of the one-line reason
     "kuka_iiwa/model_for_sdf.urdf": "no such file",  # names meshes/coarse/, not shipped
     "kuka_iiwa/model2.sdf": "no such file",  # meshes/coarse/ again
     "kuka_iiwa/kuka_world.sdf": "no such file",
-    "kuka_iiwa/kuka_with_gripper.sdf": "leaves the spec's folder",  # an absolute /meshes/link_0.stl
-    "kuka_iiwa/kuka_with_gripper2.sdf": "leaves the spec's folder",
+    "kuka_iiwa/kuka_with_gripper.sdf": "leaves the robot file's folder",  # an absolute /meshes/link_0.stl
+    "kuka_iiwa/kuka_with_gripper2.sdf": "leaves the robot file's folder",
     "torus_deform.urdf": "no <link>",  # a deformable body: pybullet's loadSoftBody, not a robot
 }
 

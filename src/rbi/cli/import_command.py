@@ -8,6 +8,7 @@ from typing import Annotated
 
 import typer
 
+from rbi.cli.audit_command import PackagePathOption
 from rbi.cli.options import FormatOption, OutputFormat, RobotFile
 from rbi.spec.errors import InputError
 
@@ -34,6 +35,7 @@ def import_robot(
     file: RobotFile,
     link: LinkOption = None,
     out: OutOption = None,
+    package_path: PackagePathOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Turn each link of a robot file into an rbi spec: its mass, centre of mass and inertia as a custom part.
@@ -53,7 +55,10 @@ def import_robot(
     from rbi.cli.terminal import say
     from rbi.formats.robot_files import link_problems, read_robot_file
 
-    robot = read_robot_file(file)
+    from rbi.formats.robot_paths import parse_package_paths
+
+    packages = parse_package_paths(package_path)
+    robot = read_robot_file(file, packages)
     links = _selected(robot, link or [])
     if not links:
         raise InputError(f"{file}: no {robot.link_word} with an <inertial> element to import")
@@ -68,7 +73,7 @@ def import_robot(
         _write(robot, targets)
     if format is OutputFormat.table:
         if targets is None and len(links) > 1:
-            sys.stdout.write(_robot_yaml_text(file))
+            sys.stdout.write(_robot_yaml_text(file, packages))
         elif targets is None:
             sys.stdout.write(_yaml_text(robot, links[0]))
         else:
@@ -156,7 +161,7 @@ def _yaml_text(robot, link) -> str:
     return header + dump(link_spec(robot, link))
 
 
-def _robot_yaml_text(file: str) -> str:
+def _robot_yaml_text(file: str, packages: dict | None = None) -> str:
     """The whole robot as one spec (each link with mass a custom part, placed at the reference
     configuration): what `rbi inertia -` reads back."""
     import os
@@ -165,7 +170,7 @@ def _robot_yaml_text(file: str) -> str:
     from rbi.robot.specs import robot_spec
     from rbi.spec.yaml_writer import comment, dump
 
-    model = read_robot(file)
+    model = read_robot(file, packages)
     spec, left_out = robot_spec(model)
     frame = (
         "the world frame at qpos0" if model.format == "mjcf" else "the root link's frame, every joint at zero"

@@ -7,6 +7,7 @@ from typing import Annotated, Any
 
 import typer
 
+from rbi.cli.audit_command import PackagePathOption
 from rbi.cli.options import FormatOption, OutputFormat
 
 
@@ -58,7 +59,7 @@ def schema(format: FormatOption = OutputFormat.table) -> None:
     sys.stdout.write(json.dumps(spec_schema(), indent=indent, ensure_ascii=False) + "\n")
 
 
-def file_problems(path: str) -> list[str]:
+def file_problems(path: str, package_paths: dict | None = None) -> list[str]:
     """Every problem found in one spec file, one line each (empty when it is valid):
     unreadable or malformed YAML, each field the models refuse, then the first problem met
     while building the body (an unphysical custom inertia, a hole removing too much)."""
@@ -68,7 +69,7 @@ def file_problems(path: str) -> list[str]:
     from rbi.spec.translate import body_from_spec
 
     if is_robot_file(path):  # URDF, SDF, MJCF: every link whose inertia is not physical
-        return robot_file_problems(path)
+        return robot_file_problems(path, package_paths)
     try:
         raw = read_yaml(path)
     except InputError as exc:
@@ -87,6 +88,7 @@ def validate(
     files: Annotated[
         list[str], typer.Argument(help="Spec files (YAML) to check.", show_default=False, metavar="FILE...")
     ],
+    package_path: PackagePathOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Check spec files without computing anything: one line per problem; exit 2 if any file fails.
@@ -97,8 +99,10 @@ def validate(
       rbi validate top.yaml wheel.yaml --format json
     """
     from rbi.cli.render import emit, terminal_safe
+    from rbi.formats.robot_paths import parse_package_paths
 
-    reports = [{"file": path, "problems": file_problems(path)} for path in files]
+    packages = parse_package_paths(package_path)
+    reports = [{"file": path, "problems": file_problems(path, packages)} for path in files]
     bad = [r for r in reports if r["problems"]]
     count = sum(len(r["problems"]) for r in reports)
     if format is OutputFormat.table:

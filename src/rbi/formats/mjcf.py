@@ -243,7 +243,7 @@ def _expanded(document):
             count[0] += 1
             if count[0] > MAX_INCLUDES:
                 raise InputError(f"{label}: more than {MAX_INCLUDES} includes")
-            target = spec_relative_file(document.path, name, f"{label}: {short(name, 80)}")
+            target = spec_relative_file(document.path, name, f"{label}: {short(name, 1000)}", "robot file")
             key = os.path.realpath(target)
             if key in chain:
                 raise InputError(f"{label}: {short(name, 80)}: includes itself (a loop of includes)")
@@ -320,7 +320,7 @@ def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dic
                 raise where.error(f"inertia: {short(mode)!r}: must be convex, exact, legacy or shell")
             meshes[name] = {
                 "file": spec_relative_file(
-                    path, relative, f"{path}: mesh {short(name)!r}: {short(relative, 80)}"
+                    path, relative, f"{path}: mesh {short(name)!r}: {short(relative, 1000)}", "robot file"
                 ),
                 "scale": np.array(scale, dtype=float),
                 "mode": "exact" if mode == "legacy" else mode,

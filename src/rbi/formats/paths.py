@@ -34,10 +34,11 @@ def outside_paths_allowed(allowed: bool = True):
         _outside_allowed.reset(token)
 
 
-def spec_relative_file(spec_path: str | Path, file: str, label: str) -> Path:
+def spec_relative_file(spec_path: str | Path, file: str, label: str, owner: str = "spec") -> Path:
     """The file named ``file`` in the spec at ``spec_path``, resolved against the spec's folder.
 
-    ``label`` prefixes every message (for instance ``top.yaml: point_cloud: file: c.csv``).
+    ``label`` prefixes every message (for instance ``top.yaml: point_cloud: file: c.csv``);
+    ``owner`` names the file whose folder it is (``spec``, ``robot file``).
     Raises :class:`InputError` when the path leaves the spec's folder and that was not allowed,
     or when nothing (or not a regular file) is there.
     """
@@ -53,8 +54,8 @@ def spec_relative_file(spec_path: str | Path, file: str, label: str) -> Path:
             inside = False
         if named.is_absolute() or not inside:
             raise InputError(
-                f"{label}: the path leaves the spec's folder (absolute, '..' or a symlink out of it); "
-                f"rbi reads only files beside the spec unless given {ALLOW_OUTSIDE_FLAG}"
+                f"{label}: the path leaves the {owner}'s folder (absolute, '..' or a symlink out of it); "
+                f"rbi reads only files beside the {owner} unless given {ALLOW_OUTSIDE_FLAG}"
             )
     try:
         is_file = candidate.is_file()

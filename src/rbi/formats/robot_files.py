@@ -106,11 +106,11 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
     return reader(document, package_paths, geometry)
 
 
-def read_robot_file(path: str) -> RobotFile:
+def read_robot_file(path: str, package_paths: dict | None = None) -> RobotFile:
     """The links of a robot file that have mass properties (``links``) and those that do not
     (``skipped``), read as :func:`read_robot` reads them; MJCF bodies carry what MuJoCo's
-    compiler gives them."""
-    model = read_robot(path)
+    compiler gives them. ``package_paths`` as for :func:`read_robot`."""
+    model = read_robot(path, package_paths)
     robot = RobotFile(
         str(path), model.format, model.name, notes=list(model.notes), unchecked=list(model.unchecked)
     )
@@ -161,11 +161,11 @@ def link_problems(robot: RobotFile, link: Link) -> list[str]:
     return problems
 
 
-def robot_file_problems(path: str) -> list[str]:
+def robot_file_problems(path: str, package_paths: dict | None = None) -> list[str]:
     """``rbi validate`` on a robot file: the one line that makes it unreadable, or one line per
     problem of every link."""
     try:
-        robot = read_robot_file(path)
+        robot = read_robot_file(path, package_paths)
     except InputError as exc:
         return [str(exc)]
     return list(robot.unchecked) + [line for link in robot.links for line in link_problems(robot, link)]

@@ -43,8 +43,8 @@ def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str,
         if uri.startswith(scheme):
             return _in_package(robot_path, uri, uri[len(scheme) :], label, package_paths or {}, scheme)
     if uri.startswith("file://"):
-        return spec_relative_file(robot_path, unquote(uri[len("file://") :]), label)
-    return spec_relative_file(robot_path, uri, label)
+        return spec_relative_file(robot_path, unquote(uri[len("file://") :]), label, "robot file")
+    return spec_relative_file(robot_path, uri, label, "robot file")
 
 
 def _in_package(
@@ -72,8 +72,13 @@ def _in_package(
         beside.insert(0, inner)
     for relative in beside:
         if (here / relative).is_file():
-            return spec_relative_file(robot_path, relative, label)
+            return spec_relative_file(robot_path, relative, label, "robot file")
+    if not name:
+        raise InputError(
+            f"{label}: no such file: the URI names no package ({scheme} then a slash), and "
+            f"{rest!r} is not beside the robot file"
+        )
     raise InputError(
-        f"{label}: {uri}: no such file (looked in --package-path {name}=DIR, ROS_PACKAGE_PATH and "
+        f"{label}: no such file (looked in --package-path {name}=DIR, ROS_PACKAGE_PATH and "
         f"beside the robot file); give the package's folder with --package-path {name}=DIR"
     )

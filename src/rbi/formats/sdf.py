@@ -293,7 +293,7 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
         mesh = resolve_mesh(
             where.path,
             uri.text,
-            f"{where.path}: {where.label}: {label}: {short(uri.text, 80)}",
+            f"{where.path}: {where.label}: {label}: {short(uri.text, 1000)}",
             package_paths,
         )
         return Geom("mesh", (), pose, label, mesh_file=mesh, mesh_scale=np.array(scale, dtype=float))

@@ -115,6 +115,13 @@ def totals(model: RobotModel, joints: dict[str, float] | None = None) -> MassPro
         pose = to_frame.then(poses[link.index])
         parts.append(link.inertial.properties.transformed(pose.rotation, pose.translation, frame))
     try:
-        return MassProperties.sum(parts, frame)
+        total = MassProperties.sum(parts, frame)
     except ValueError:  # no link with mass, or negative masses (flagged unphysical) that leave none
         return MassProperties.zero(frame)
+    if not (np.all(np.isfinite(total.center_of_mass)) and np.all(np.isfinite(total.inertia_about_com))):
+        far = max(float(np.max(np.abs(part.center_of_mass))) for part in parts)
+        raise InputError(
+            f"{model.path}: the whole robot's mass properties overflow a double (a centre of mass "
+            f"{far:.3g} m from the root); give lengths in metres"
+        )
+    return total
