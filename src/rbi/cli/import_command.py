@@ -54,7 +54,6 @@ def import_robot(
     """
     from rbi.cli.terminal import say
     from rbi.formats.robot_files import link_problems, read_robot_file
-
     from rbi.formats.robot_paths import parse_package_paths
 
     packages = parse_package_paths(package_path)
