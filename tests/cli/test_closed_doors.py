@@ -100,3 +100,32 @@ def test_a_dask_address_that_cannot_work_is_refused_before_connecting(address, w
         monkeypatch.delenv(key, raising=False)
     proc = rbi("sweep", TOP, "--spin", "100:200:2", "--duration", "0.01", "--dask", address)
     one_line_exit_2(proc, "--dask", *words)
+
+
+def test_a_robot_file_holding_one_huge_token_is_refused(tmp_path):
+    """A 60 MiB name took over a minute in expat (time grows with the square of a token's
+    length); a block of 1 MiB without a delimiter is refused before parsing."""
+    path = tmp_path / "r.urdf"
+    path.write_bytes(b'<robot name="r"><link name="' + b"a" * (4 * 2**20) + b'"/></robot>')
+    one_line_exit_2(rbi("audit", path), str(path), "1 MiB without a space, tag or quote")
+    ordinary = tmp_path / "ok.urdf"
+    ordinary.write_bytes(b'<robot name="r"><link name="' + b"a" * (2**19) + b'"/></robot>')
+    assert rbi("audit", ordinary, "-f", "json").returncode == 0
+
+
+@pytest.mark.parametrize("command", ["spec", "audit"])
+def test_an_obj_face_naming_vertex_2_to_the_64_is_blamed_on_the_mesh(tmp_path, command):
+    obj = tmp_path / "big.obj"
+    obj.write_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 18446744073709551616\n")
+    if command == "spec":
+        path = tmp_path / "m.yaml"
+        path.write_text("parts:\n  - {name: m, shape: mesh, file: big.obj, density: 1000}\n")
+        proc = rbi("inertia", path)
+    else:
+        path = tmp_path / "m.urdf"
+        path.write_text(
+            '<robot name="r"><link name="l"><visual><geometry><mesh filename="big.obj"/></geometry>'
+            "</visual></link></robot>"
+        )
+        proc = rbi("audit", path)
+    one_line_exit_2(proc, "big.obj", "line 6", "names vertex 18446744073709551616")

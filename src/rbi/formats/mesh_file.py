@@ -243,6 +243,11 @@ def _blocks(data: bytes):
         start = end
 
 
+MAX_OBJ_VERTEX = 2**62
+"""Largest vertex number an OBJ face may name (faces are kept as 64-bit integers; no file of
+the sizes rbi reads holds a billionth of that many vertices)."""
+
+
 def _parse_obj(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     """Vertices (``v x y z``) and faces (``f a b c ...``, each corner ``i``, ``i/t``, ``i//n`` or
     ``i/t/n``) of an OBJ file. Vertices are numbered from 1 in the order they appear; a
@@ -296,6 +301,11 @@ def _add_face(fields: list, n_vertices: int, line_number: int, corners: array, f
             raise ValueError(
                 f"cannot be read as OBJ (line {line_number}: a face's vertex number is not a whole number)"
             ) from None
+        if number > MAX_OBJ_VERTEX:
+            raise ValueError(
+                f"mesh face on line {line_number} names vertex {number}, beyond any mesh (OBJ vertex "
+                f"numbers up to {MAX_OBJ_VERTEX:,})"
+            )
         if number > 0:
             indices.append(number - 1)
         elif number < 0:

@@ -35,6 +35,11 @@ other files."""
 MAX_DEPTH = 500
 """Deepest element nesting read; an MJCF chain of 500 bodies is already far beyond any robot."""
 
+TOKEN_BLOCK_BYTES = 1024 * 1024
+"""A file with a block of this many bytes holding no space, angle bracket or quote is refused:
+it holds one name, number or text run at least this long, which no robot needs and which
+expat reads in time that grows with the square of its length (60 MiB: over a minute)."""
+
 PARSE_CHUNK_BYTES = 64 * 1024 * 1024
 """Bytes handed to expat per call: the whole of any file rbi reads, in one feed."""
 
@@ -218,9 +223,24 @@ def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
     return prefix, body, suffix, codec
 
 
+def _refuse_huge_tokens(path: str, text: bytes) -> None:
+    """InputError when a :data:`TOKEN_BLOCK_BYTES` block of ``text`` holds no delimiter (linear
+    time: each block is searched for a few bytes; every run of twice the block is caught)."""
+    for start in range(0, len(text), TOKEN_BLOCK_BYTES):
+        block = text[start : start + TOKEN_BLOCK_BYTES]
+        if len(block) == TOKEN_BLOCK_BYTES and not any(
+            d in block for d in (b" ", b"<", b">", b'"', b"'", b"\n")
+        ):
+            raise InputError(
+                f"{path}: refused: more than {TOKEN_BLOCK_BYTES // 2**20} MiB without a space, tag or quote "
+                f"(from byte {start:,}): no name, number or text in a robot file is that long"
+            )
+
+
 def _parse(path: str, text: bytes) -> XmlElement:
     from xml.parsers import expat
 
+    _refuse_huge_tokens(path, text)
     parser = expat.ParserCreate(encoding="utf-8")
     parser.buffer_text = True
     parser.buffer_size = 1 << 20
