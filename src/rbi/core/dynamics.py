@@ -11,6 +11,7 @@ import math
 from typing import NamedTuple
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from rbi.core.rotation import skew
 
@@ -37,7 +38,7 @@ def angular_momentum_about_point(
 
 
 def kinetic_energy(
-    inertia_com: np.ndarray, omega: np.ndarray, mass: float = 0.0, com_velocity=(0.0, 0.0, 0.0)
+    inertia_com: np.ndarray, omega: np.ndarray, mass: float = 0.0, com_velocity: ArrayLike = (0.0, 0.0, 0.0)
 ) -> float:
     """``T = ½ ωᵀ I_c ω + ½ m |v_c|²``."""
     w = np.asarray(omega, dtype=float)

@@ -16,11 +16,12 @@ from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from rbi.core.inertia import centre_of_mass, point_mass_inertia, principal_axes, symmetrize
 
 
-def _frozen(values, shape: tuple[int, ...]) -> np.ndarray:
+def _frozen(values: ArrayLike, shape: tuple[int, ...]) -> np.ndarray:
     array = np.array(values, dtype=float).reshape(shape)
     array.flags.writeable = False
     return array
@@ -57,9 +58,9 @@ class MassProperties:
         return MassProperties(0.0, np.zeros(3), np.zeros((3, 3)), frame)
 
     @staticmethod
-    def point(mass: float, position, frame: str = "body") -> MassProperties:
+    def point(mass: float, position: ArrayLike, frame: str = "body") -> MassProperties:
         """A point mass at ``position``: no inertia about itself."""
-        return MassProperties(mass, position, np.zeros((3, 3)), frame)
+        return MassProperties(mass, np.asarray(position, dtype=float), np.zeros((3, 3)), frame)
 
     @staticmethod
     def sum(parts: Iterable[MassProperties], frame: str | None = None) -> MassProperties:
@@ -76,12 +77,17 @@ class MassProperties:
             frame=parts[0].frame if frame is None else frame,
         )
 
-    def inertia_about(self, point) -> np.ndarray:
+    def inertia_about(self, point: ArrayLike) -> np.ndarray:
         """Inertia (M·L²) about ``point`` (L, this frame) in this frame's axes (parallel axis)."""
         offset = np.asarray(point, dtype=float) - self.center_of_mass
         return symmetrize(self.inertia_about_com + point_mass_inertia(self.mass, offset))
 
-    def transformed(self, rotation=None, translation=None, frame: str | None = None) -> MassProperties:
+    def transformed(
+        self,
+        rotation: ArrayLike | None = None,
+        translation: ArrayLike | None = None,
+        frame: str | None = None,
+    ) -> MassProperties:
         """The same body in another frame, where ``x_new = rotation @ x + translation``
         (``rotation`` None: the same axes; ``translation`` None: the same origin): the centre of
         mass moves, the inertia is re-expressed ``R I Rᵀ``."""

@@ -32,11 +32,16 @@ only by the functions that need them; reading files is done elsewhere.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator
 from typing import NamedTuple
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from rbi.core.mass import MassProperties
+
+Moments = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
+"""Per-triangle measures and summed first and second moments of corners (F, 3, 3) about a point."""
 
 MESH_INERTIA_MODES = ("exact", "convex", "shell")
 """How a mesh carries its mass: the enclosed solid, the convex hull's solid, or the surface."""
@@ -134,7 +139,7 @@ FACE_CHUNK = 1 << 16
 """Faces integrated at a time: the temporaries stay near 20 MB whatever the mesh's size."""
 
 
-def _as_arrays(vertices, faces) -> tuple[np.ndarray, np.ndarray]:
+def _as_arrays(vertices: ArrayLike, faces: ArrayLike) -> tuple[np.ndarray, np.ndarray]:
     return (
         np.asarray(vertices, dtype=float).reshape(-1, 3),
         np.asarray(faces, dtype=np.int64).reshape(-1, 3),
@@ -264,7 +269,7 @@ def mesh_defects(faces: np.ndarray) -> MeshDefects:
     )
 
 
-def _face_chunks(n_faces: int):
+def _face_chunks(n_faces: int) -> Iterator[slice]:
     for start in range(0, n_faces, FACE_CHUNK):
         yield slice(start, min(start + FACE_CHUNK, n_faces))
 
@@ -281,7 +286,7 @@ def _volume_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nda
     return volume, first, second
 
 
-def _outer_sum(a, b, c, total) -> np.ndarray:
+def _outer_sum(a: np.ndarray, b: np.ndarray, c: np.ndarray, total: np.ndarray) -> np.ndarray:
     return (
         np.einsum("fi,fj->fij", a, a)
         + np.einsum("fi,fj->fij", b, b)
@@ -303,7 +308,7 @@ def _surface_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.nd
 
 
 def _sums(
-    vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, moments
+    vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, moments: Moments
 ) -> tuple[float, np.ndarray, np.ndarray]:
     measure, first, second = 0.0, np.zeros(3), np.zeros((3, 3))
     for chunk in _face_chunks(len(faces)):
@@ -314,7 +319,9 @@ def _sums(
     return measure, first, second
 
 
-def _integrate(vertices: np.ndarray, faces: np.ndarray, moments) -> tuple[float, np.ndarray, np.ndarray]:
+def _integrate(
+    vertices: np.ndarray, faces: np.ndarray, moments: Moments
+) -> tuple[float, np.ndarray, np.ndarray]:
     """Measure, centroid and inertia per unit density about the centroid. The sums run twice:
     once about the centre of the bounding box to find the centroid, then about the centroid
     itself, so no large offset is squared and subtracted."""
@@ -659,9 +666,9 @@ def mesh_mass_properties(
     if (mass is None) == (density is None):
         raise MeshError("give either a mass or a density")
     distribution = mesh_distribution(vertices, faces, mode)
-    if mass is None:
+    if density is not None:
         mass = float(density) * distribution.measure
-    mass = float(mass)
+    mass = float(mass)  # type: ignore[arg-type]  # one of the two is given (checked above)
     inertia = distribution.inertia_per_density * (mass / distribution.measure)
     area = (
         distribution.measure if mode == "shell" else surface_area(distribution.vertices, distribution.faces)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 _AXES = {"x": 0, "y": 1, "z": 2}
 
@@ -36,7 +37,7 @@ def without_rounding_noise(R: np.ndarray) -> np.ndarray:
     return R
 
 
-def vector_length(v) -> float | np.ndarray:
+def vector_length(v: ArrayLike) -> float | np.ndarray:
     """Euclidean length of ``v`` (or of each row of a stack) computed without squaring the
     components directly: they are divided by the largest |component| first, so a vector of
     components near 1e200 or 1e-200 has its length (not inf or 0). Inf only when the length
@@ -48,7 +49,7 @@ def vector_length(v) -> float | np.ndarray:
         return largest * np.sqrt(np.sum((v / safe[..., None]) ** 2, axis=-1))
 
 
-def unit_vector(v) -> np.ndarray:
+def unit_vector(v: ArrayLike) -> np.ndarray:
     """``v / |v|`` (or each row of a stack) for any finite non-zero vector, however large or
     small its components (from 5e-324 up to 1.8e308): scaled by the largest |component| before
     the norm, so nothing overflows to inf or underflows to 0. ValueError for a zero or
@@ -103,7 +104,7 @@ def compose_world_rotations(rotations: list[tuple[str, float]]) -> np.ndarray:
     return R
 
 
-def euler_matrix(angles_rad, sequence: str) -> np.ndarray:
+def euler_matrix(angles_rad: ArrayLike, sequence: str) -> np.ndarray:
     """Rotation matrix of three successive turns ``angles_rad`` about the axes named by
     ``sequence`` (three letters of x, y, z).
 
@@ -119,7 +120,10 @@ def euler_matrix(angles_rad, sequence: str) -> np.ndarray:
         raise ValueError(
             f"sequence must be three letters of x, y, z, all lower or all upper case (got {sequence!r})"
         )
-    turns = [elementary_rotation(axis, angle) for axis, angle in zip(sequence.lower(), angles_rad)]
+    turns = [
+        elementary_rotation(axis, angle)
+        for axis, angle in zip(sequence.lower(), np.asarray(angles_rad, dtype=float).reshape(3))
+    ]
     if sequence.islower():
         return turns[2] @ turns[1] @ turns[0]
     return turns[0] @ turns[1] @ turns[2]

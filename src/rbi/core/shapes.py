@@ -12,6 +12,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from rbi.core.mass import MassProperties
 from rbi.core.rotation import unit_vector, vector_length
@@ -24,7 +25,7 @@ def axis_between(start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, float]
     return unit_vector(d), float(vector_length(d))
 
 
-def axisymmetric_inertia(axial, transverse, axis: np.ndarray) -> np.ndarray:
+def axisymmetric_inertia(axial: ArrayLike, transverse: ArrayLike, axis: ArrayLike) -> np.ndarray:
     """Inertia matrix of a body symmetric about the unit vector ``axis``.
 
     ``axial`` is the moment about the axis, ``transverse`` about any perpendicular line through
@@ -42,29 +43,34 @@ def axisymmetric_inertia(axial, transverse, axis: np.ndarray) -> np.ndarray:
     return axial * uu + transverse * (np.eye(3) - uu)
 
 
+from typing import Any, TypeAlias  # noqa: E402
+
+Numbers: TypeAlias = Any
+"""A float or a numpy array of them (the closed forms below are plain arithmetic on either)."""
+
 # The moments below are plain arithmetic, so they take numbers or whole numpy arrays (many
 # parts at once, as rbi.spec.translate_batch uses them) and give the same bits either way.
 
 
-def cone_moments(mass, radius, height):
+def cone_moments(mass: Numbers, radius: Numbers, height: Numbers) -> tuple[Numbers, Numbers]:
     """``(axial, transverse)`` moments of a solid right circular cone about its centre of mass:
     3/10 m r² and 3/80 m (4 r² + h²)."""
     return 0.3 * mass * radius * radius, 3.0 * mass * (4.0 * radius * radius + height * height) / 80.0
 
 
-def cylinder_moments(mass, radius, length):
+def cylinder_moments(mass: Numbers, radius: Numbers, length: Numbers) -> tuple[Numbers, Numbers]:
     """``(axial, transverse)`` moments of a solid circular cylinder about its centre: m r²/2
     and m (3 r² + L²)/12."""
     return 0.5 * mass * radius * radius, mass * (3.0 * radius * radius + length * length) / 12.0
 
 
-def box_moments(mass, a, b, c):
+def box_moments(mass: Numbers, a: Numbers, b: Numbers, c: Numbers) -> tuple[Numbers, Numbers, Numbers]:
     """Moments of a solid box with edges a, b, c about its centre, along its own axes:
     m (b² + c²)/12, m (a² + c²)/12, m (a² + b²)/12."""
     return mass / 12.0 * (b * b + c * c), mass / 12.0 * (a * a + c * c), mass / 12.0 * (a * a + b * b)
 
 
-def sphere_moment(mass, radius):
+def sphere_moment(mass: Numbers, radius: Numbers) -> Numbers:
     """Moment 2/5 m r² of a solid sphere about any axis through its centre."""
     return 0.4 * mass * radius * radius
 

@@ -15,6 +15,7 @@ centre of mass of a free body), in mass·length².
 from __future__ import annotations
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from rbi.core.inertia import principal_axes
 from rbi.core.rotation import unit_vector
@@ -39,7 +40,7 @@ def distinct_principal_axis(inertia: np.ndarray, rtol: float = EQUAL_MOMENTS_RTO
     return np.array(axes[2] if low_equal else axes[0], dtype=float)
 
 
-def default_spin_axis(inertia: np.ndarray, com_from_fixed_point) -> np.ndarray:
+def default_spin_axis(inertia: np.ndarray, com_from_fixed_point: ArrayLike) -> np.ndarray:
     """The spin axis when none is given: the body's symmetry axis when exactly two principal
     moments about the fixed point agree to 1e-9 relative, pointing from the fixed point towards
     the centre of mass — or, when the axis is perpendicular to that line or the centre of mass
@@ -60,7 +61,7 @@ def default_spin_axis(inertia: np.ndarray, com_from_fixed_point) -> np.ndarray:
     return axis if axis[largest] > 0.0 else -axis
 
 
-def quaternion_from_z_to(axis) -> np.ndarray:
+def quaternion_from_z_to(axis: ArrayLike) -> np.ndarray:
     """Unit quaternion [w, x, y, z] of the shortest turn carrying the body z axis onto the unit
     vector ``axis`` (a turn of 180° about x for ``-z``). For ``axis`` = z it is exactly
     [1, 0, 0, 0], so a quantity measured through it equals the body-z one bit for bit."""

@@ -55,8 +55,8 @@ def inertia_problem(
     tol = rtol * size
     asymmetry = float(np.max(np.abs(I - I.T)))
     if asymmetry > tol:
-        i, j = np.unravel_index(int(np.argmax(np.abs(I - I.T))), (3, 3))
-        i, j = sorted((int(i), int(j)))
+        row, col = np.unravel_index(int(np.argmax(np.abs(I - I.T))), (3, 3))
+        i, j = sorted((int(row), int(col)))
         return InertiaProblem(
             "not symmetric",
             f"not symmetric: entry [{i}][{j}] = {I[i, j]:.6g} but [{j}][{i}] = {I[j, i]:.6g}; an inertia matrix "
