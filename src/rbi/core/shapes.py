@@ -75,6 +75,99 @@ def sphere_moment(mass: Numbers, radius: Numbers) -> Numbers:
     return 0.4 * mass * radius * radius
 
 
+def ellipsoid_moments(mass, a, b, c):
+    """Moments of a solid ellipsoid with semi-axes a, b, c about its centre, along its own axes:
+    m (b² + c²)/5, m (a² + c²)/5, m (a² + b²)/5."""
+    return mass / 5.0 * (b * b + c * c), mass / 5.0 * (a * a + c * c), mass / 5.0 * (a * a + b * b)
+
+
+def capsule_moments(mass, radius, length):
+    """``(axial, transverse)`` moments of a solid capsule (a cylinder of length L and radius r
+    with a hemisphere on each end) about its centre. The cylinder holds m_c = m L / (L + 4/3 r),
+    the caps m_s = m − m_c: axial m_c r²/2 + 2/5 m_s r²; transverse m_c (3 r² + L²)/12 +
+    m_s (2/5 r² + L²/4 + 3/8 L r) — the caps' 83/320 m r² about their own centres of mass plus
+    the parallel-axis term for their distance L/2 + 3/8 r, gathered so every term is positive."""
+    r = radius
+    cylinder_mass = mass * length / (length + 4.0 / 3.0 * r)
+    caps_mass = mass * (4.0 / 3.0 * r) / (length + 4.0 / 3.0 * r)
+    axial = 0.5 * cylinder_mass * r * r + 0.4 * caps_mass * r * r
+    transverse = cylinder_mass * (3.0 * r * r + length * length) / 12.0 + caps_mass * (
+        0.4 * r * r + 0.25 * length * length + 0.375 * length * r
+    )
+    return axial, transverse
+
+
+# --- thin shells: the mass spread evenly over the surface (MuJoCo's shellinertia) -------------
+
+
+def sphere_area(radius):
+    """Surface 4 π r² of a sphere (L²)."""
+    return 4.0 * math.pi * radius * radius
+
+
+def sphere_shell_moment(mass, radius):
+    """Moment 2/3 m r² of a thin spherical shell about any axis through its centre."""
+    return 2.0 / 3.0 * mass * radius * radius
+
+
+def box_area(a, b, c):
+    """Surface 2 (ab + bc + ca) of a box with edges a, b, c (L²)."""
+    return 2.0 * (a * b + b * c + c * a)
+
+
+def box_shell_moments(mass, a, b, c):
+    """Moments of a box's six faces (mass spread evenly over them) about its centre, along its
+    own axes. About x: each face across x (area bc) gives σ bc (b² + c²)/12, each across y (area
+    ac, at y = ±b/2) σ ac (b²/4 + c²/12), each across z σ ab (b²/12 + c²/4); σ = m / (2 (ab + bc +
+    ca)). So I_x = m [bc (b² + c²) + ac (3b² + c²) + ab (b² + 3c²)] / (12 (ab + bc + ca)), the
+    others by symmetry."""
+    k = mass / (12.0 * (a * b + b * c + c * a))
+
+    def about(p, q, r):  # the moment about the axis of edge p, with q and r across it
+        return k * (q * r * (q * q + r * r) + p * r * (3.0 * q * q + r * r) + p * q * (q * q + 3.0 * r * r))
+
+    return about(a, b, c), about(b, a, c), about(c, a, b)
+
+
+def cylinder_area(radius, length):
+    """Surface 2 π r (L + r) of a closed cylinder: its side and two end discs (L²)."""
+    return 2.0 * math.pi * radius * (length + radius)
+
+
+def cylinder_shell_moments(mass, radius, length):
+    """``(axial, transverse)`` moments of a closed cylinder's surface (side and two end discs,
+    mass spread evenly) about its centre. The side (m_s = m L/(L + r)) is a thin tube: m_s r²
+    axial, m_s (r²/2 + L²/12) transverse; each disc (m_d = m r/(2 (L + r))) m_d r²/2 axial and
+    m_d (r²/4 + L²/4) transverse about the centre."""
+    r = radius
+    side = mass * length / (length + r)
+    discs = mass * r / (length + r)  # both
+    axial = side * r * r + 0.5 * discs * r * r
+    transverse = side * (0.5 * r * r + length * length / 12.0) + discs * 0.25 * (r * r + length * length)
+    return axial, transverse
+
+
+def capsule_area(radius, length):
+    """Surface 2 π r (L + 2 r) of a capsule: its cylindrical side and a sphere's worth of caps (L²)."""
+    return 2.0 * math.pi * radius * (length + 2.0 * radius)
+
+
+def capsule_shell_moments(mass, radius, length):
+    """``(axial, transverse)`` moments of a capsule's surface (mass spread evenly) about its
+    centre. The side (m_s = m L/(L + 2r)) is a thin tube: m_s r², m_s (r²/2 + L²/12). The caps
+    (m_c = m − m_s) are a spherical shell cut in two and moved L/2 apart along the axis: a
+    hemispherical shell has its centroid r/2 from its rim's plane and ∫z² dA = A r²/3, so about
+    the centre the caps give 2/3 m_c r² axial and m_c (2/3 r² + r L/2 + L²/4) transverse."""
+    r = radius
+    side = mass * length / (length + 2.0 * r)
+    caps = mass * 2.0 * r / (length + 2.0 * r)
+    axial = side * r * r + 2.0 / 3.0 * caps * r * r
+    transverse = side * (0.5 * r * r + length * length / 12.0) + caps * (
+        2.0 / 3.0 * r * r + 0.5 * r * length + 0.25 * length * length
+    )
+    return axial, transverse
+
+
 # --- solid right circular cone -------------------------------------------------------------
 
 
@@ -177,8 +270,7 @@ def ellipsoid(
 
     About its centre, in its own axes: m (b² + c²)/5, m (a² + c²)/5, m (a² + b²)/5.
     """
-    a, b, c = (float(s) for s in semi_axes)
-    moments = mass / 5.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+    moments = np.array(ellipsoid_moments(mass, *(float(s) for s in semi_axes)))
     return MassProperties(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
 
 
@@ -365,11 +457,5 @@ def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> M
     start = np.asarray(start, dtype=float)
     end = np.asarray(end, dtype=float)
     u, length = axis_between(start, end)
-    r = float(radius)
-    cylinder_mass = mass * length / (length + 4.0 / 3.0 * r)
-    caps_mass = mass * (4.0 / 3.0 * r) / (length + 4.0 / 3.0 * r)
-    axial = 0.5 * cylinder_mass * r * r + 0.4 * caps_mass * r * r
-    transverse = cylinder_mass * (3.0 * r * r + length * length) / 12.0 + caps_mass * (
-        0.4 * r * r + 0.25 * length * length + 0.375 * length * r
-    )
+    axial, transverse = capsule_moments(mass, float(radius), length)
     return MassProperties(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))

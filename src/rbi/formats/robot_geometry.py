@@ -1,8 +1,8 @@
 """Mass properties of a robot link's geometry (the :class:`~rbi.formats.robot.Geom` pieces
 a reader returns), per unit density, in the link's frame.
 
-Primitives are closed forms (MuJoCo's, which are the exact ones: a capsule is a cylinder and two
-hemispheres); meshes are integrated by :mod:`rbi.core.mesh` in one of three modes, as MuJoCo
+Primitives are :mod:`rbi.core.shapes`' closed forms (the exact ones, as MuJoCo's: a capsule is a
+cylinder and two hemispheres); meshes are integrated by :mod:`rbi.core.mesh` in one of three modes, as MuJoCo
 names them: ``exact`` (the solid a closed mesh encloses), ``convex`` (the solid convex hull) and
 ``shell`` (mass on the surface). A shell's density is mass per area (kg/m²), as MuJoCo reads a
 geom's density under ``shellinertia``.
@@ -10,11 +10,11 @@ geom's density under ``shellinertia``.
 
 from __future__ import annotations
 
-import math
 from typing import NamedTuple
 
 import numpy as np
 
+from rbi.core import shapes
 from rbi.errors import InputError
 from rbi.formats.robot import Geom
 
@@ -56,60 +56,39 @@ class Distribution(NamedTuple):
 
 def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[float, np.ndarray]:
     """Volume (or area, for ``shell``) and the principal moments per unit density of a centred
-    primitive in its own axes (cylinder and capsule along z). Sizes as :class:`Geom` gives them."""
-    pi = math.pi
+    primitive in its own axes (cylinder and capsule along z), from :mod:`rbi.core.shapes`'
+    closed forms at the mass of a unit density. Sizes as :class:`Geom` gives them."""
     if kind == "sphere":
         (r,) = size
         if shell:
-            area = 4 * pi * r * r
-            return area, np.full(3, 2.0 / 3.0 * area * r * r)
-        volume = 4.0 / 3.0 * pi * r**3
-        return volume, np.full(3, 0.4 * volume * r * r)
+            area = shapes.sphere_area(r)
+            return area, np.full(3, shapes.sphere_shell_moment(area, r))
+        volume = shapes.sphere_volume(r)
+        return volume, np.full(3, shapes.sphere_moment(volume, r))
     if kind == "box":
         a, b, c = size
         if shell:
-            faces = ((b * c, a), (a * c, b), (a * b, c))  # (area of the pair of faces, their spacing)
-            S = np.zeros(3)
-            for axis, (area, spacing) in enumerate(faces):
-                for other in range(3):
-                    S[other] += 2 * area * (spacing**2 / 4 if other == axis else size[other] ** 2 / 12)
-            return 2 * (a * b + b * c + a * c), S.sum() - S
+            area = shapes.box_area(a, b, c)
+            return area, np.array(shapes.box_shell_moments(area, a, b, c))
         volume = a * b * c
-        return volume, volume / 12.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
+        return volume, np.array(shapes.box_moments(volume, a, b, c))
     if kind == "ellipsoid":
-        a, b, c = size
         if shell:
             raise ValueError("a shell ellipsoid has no closed form; give it a volume (shellinertia off)")
-        volume = 4.0 / 3.0 * pi * a * b * c
-        return volume, volume / 5.0 * np.array([b * b + c * c, a * a + c * c, a * a + b * b])
-    if kind == "cylinder":
+        volume = shapes.ellipsoid_volume(size)
+        return volume, np.array(shapes.ellipsoid_moments(volume, *size))
+    if kind in ("cylinder", "capsule"):
         r, length = size
-        if shell:
-            side, cap = 2 * pi * r * length, pi * r * r
-            S = np.array(
-                [side * r * r / 2 + 2 * cap * r * r / 4] * 2
-                + [side * length**2 / 12 + 2 * cap * length**2 / 4]
-            )
-            return side + 2 * cap, S.sum() - S
-        volume = pi * r * r * length
-        transverse = volume * (3 * r * r + length * length) / 12.0
-        return volume, np.array([transverse, transverse, volume * r * r / 2.0])
-    if kind == "capsule":
-        r, length = size
-        if shell:
-            side, sphere = 2 * pi * r * length, 4 * pi * r * r
-            Sxy = side * r * r / 2 + sphere * r * r / 3
-            Sz = side * length**2 / 12 + pi * r * r * length**2 + 2 * pi * r**3 * length + sphere * r * r / 3
-            S = np.array([Sxy, Sxy, Sz])
-            return side + sphere, S.sum() - S
-        cylinder = pi * r * r * length
-        sphere = 4.0 / 3.0 * pi * r**3
-        transverse = cylinder * (3 * r * r + length * length) / 12.0 + sphere * (
-            0.4 * r * r + length * (3 * r + 2 * length) / 8.0
-        )
-        return cylinder + sphere, np.array(
-            [transverse, transverse, cylinder * r * r / 2.0 + sphere * 0.4 * r * r]
-        )
+        forms = {
+            ("cylinder", False): (shapes.cylinder_volume, shapes.cylinder_moments),
+            ("cylinder", True): (shapes.cylinder_area, shapes.cylinder_shell_moments),
+            ("capsule", False): (shapes.capsule_volume, shapes.capsule_moments),
+            ("capsule", True): (shapes.capsule_area, shapes.capsule_shell_moments),
+        }
+        measure_of, moments_of = forms[(kind, shell)]
+        measure = measure_of(r, length)
+        axial, transverse = moments_of(measure, r, length)
+        return measure, np.array([transverse, transverse, axial])
     raise ValueError(f"no volume: {kind}")
 
 
