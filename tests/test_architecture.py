@@ -273,10 +273,5 @@ def test_the_cycle_finder_sees_a_cycle(tmp_path, monkeypatch):
     assert internal_import_cycles() == [["rbi.a", "rbi.b"]]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="cli.app/typer_app and cli.render/tables import each "
-    "other; issue 24 breaks these cycles (then drop this mark)",
-)
 def test_no_module_imports_itself_through_others():
     assert internal_import_cycles() == []

@@ -7,7 +7,7 @@ from typing import Annotated
 import typer
 
 from rbi.cli.options import SpecFile
-from rbi.cli.render import say_warnings
+from rbi.cli.render import progress_bar, say_warnings
 from rbi.cli.run_options import (
     DurationOption,
     GravityOption,
@@ -134,10 +134,9 @@ def _write_page(target, data: dict, run, speed: float) -> str:
 def _write_gif(target, data: dict, run, fps: int) -> str:
     """Write the GIF at ``target`` with a progress bar on a terminal; what it holds (``N frames``)."""
     from rbi.cli.output import write_output
-    from rbi.cli.progress import stderr_progress
     from rbi.viz.frames import frame_indices, write_gif
 
-    progress = stderr_progress("gif", "frames")
+    progress = progress_bar("gif", "frames")
     try:
         write_output(
             target,

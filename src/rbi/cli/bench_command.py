@@ -145,32 +145,24 @@ def _relative_link(target: Path, document: Path) -> str:
 
 @contextlib.contextmanager
 def _progress(format: OutputFormat, total: int):
-    """A step callback: a rich progress bar on a terminal (table output only), else silent."""
-    if format != OutputFormat.table or not sys.stderr.isatty():
+    """A step callback: the progress bar on a terminal (table output only), else silent; each
+    step names the measurement it starts."""
+    from rbi.cli.render import progress_bar
+
+    bar = progress_bar("rbi bench", "", total=total, elapsed=True) if format == OutputFormat.table else None
+    if bar is None:
         yield lambda _label: None
         return
-    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeElapsedColumn
+    steps = [0]
 
-    from rbi.cli.render import stderr_console
+    def step(label: str) -> None:
+        bar.update(steps[0], what=label)
+        steps[0] += 1
 
-    with Progress(
-        TextColumn("{task.description}"),
-        BarColumn(),
-        MofNCompleteColumn(),
-        TimeElapsedColumn(),
-        console=stderr_console(),
-        transient=True,
-    ) as progress:
-        task = progress.add_task("rbi bench", total=total)
-        started = [False]
-
-        def step(label: str) -> None:
-            if started[0]:
-                progress.advance(task)
-            started[0] = True
-            progress.update(task, description=label)
-
+    try:
         yield step
+    finally:
+        bar.close()
 
 
 def _tables(result: dict):

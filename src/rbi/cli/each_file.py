@@ -100,8 +100,7 @@ class _Several:
         elif self.fmt == "csv":
             self._csv_row({"file": label} | one.summary_row())
         else:
-            from rbi.cli.render import stdout_console
-            from rbi.cli.tables import fitted
+            from rbi.cli.render import fitted, stdout_console
 
             console = stdout_console()
             if self.sections:

@@ -7,6 +7,7 @@ import io
 import json
 import math
 import sys
+import time
 from collections.abc import Callable, Iterable
 from typing import Any
 
@@ -247,9 +248,7 @@ def say_warnings(warnings: Iterable[str]) -> None:
 
 def print_table(renderable) -> None:
     """Print a table (or a group of them) on stdout fitted to the terminal's width: no number
-    cut, split or shortened (see :func:`rbi.cli.tables.fitted`)."""
-    from rbi.cli.tables import fitted
-
+    cut, split or shortened (see :func:`fitted`)."""
     console = stdout_console()
     console.print(fitted(renderable, console))
 
@@ -290,3 +289,188 @@ def body_size(props) -> float:
     except (ValueError, ZeroDivisionError, OverflowError):
         return 0.0
     return size if math.isfinite(size) else 0.0
+
+
+# --- progress (rich is imported when a bar is first drawn) -----------------------------------
+
+
+class ProgressBar:
+    """rbi's one progress bar: ``what`` (the description), a bar, the count (``12/40 unit``, or
+    a percentage when ``unit`` is None) and the time left (``elapsed``: the time taken). It
+    is drawn on standard error (``stdout``: standard output) once ``delay`` seconds have passed
+    since it was made, and it is gone when closed (``transient``), so the result is all that
+    stays. :func:`progress_bar` gives one only on a terminal.
+
+    Lower layers never see it: they call ``update(done, total)`` or ``bar(fraction)`` (a
+    simulation's callback), and ``close()`` ends it."""
+
+    def __init__(
+        self,
+        what: str,
+        unit: str | None = None,
+        *,
+        total: float = 1.0,
+        stdout: bool = False,
+        delay: float = 0.0,
+        elapsed: bool = False,
+    ) -> None:
+        self.what, self.unit, self.total = what, unit, total
+        self.stdout, self.delay, self.elapsed = stdout, delay, elapsed
+        self.start = time.perf_counter()
+        self.bar = self.task = None
+
+    def update(self, done: float, total: float | None = None, what: str | None = None) -> None:
+        """Move the bar to ``done`` of ``total`` (the last total given when None)."""
+        self.total = self.total if total is None else total
+        if self.bar is None:
+            if time.perf_counter() - self.start < self.delay:
+                return
+            self._draw()
+        self.bar.update(self.task, completed=done, total=self.total, description=what or self.what)
+
+    def __call__(self, fraction: float) -> None:
+        """A simulation's progress callback: ``fraction`` of the run done."""
+        self.update(min(max(fraction, 0.0), 1.0), 1.0)
+
+    def _draw(self) -> None:
+        from rich.progress import (
+            BarColumn,
+            MofNCompleteColumn,
+            Progress,
+            TextColumn,
+            TimeElapsedColumn,
+            TimeRemainingColumn,
+        )
+
+        if self.unit is None:
+            count = [TextColumn("{task.percentage:>3.0f}%")]
+        else:
+            count = [MofNCompleteColumn(), *([TextColumn(self.unit)] if self.unit else [])]
+        self.bar = Progress(
+            TextColumn("{task.description}"),
+            BarColumn(),
+            *count,
+            TimeElapsedColumn() if self.elapsed else TimeRemainingColumn(),
+            console=stdout_console() if self.stdout else stderr_console(),
+            transient=True,
+        )
+        self.task = self.bar.add_task(self.what, total=self.total)
+        self.bar.start()
+
+    def close(self) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+            self.bar = None
+
+
+def progress_bar(what: str, unit: str | None = None, **options) -> ProgressBar | None:
+    """A :class:`ProgressBar` when the stream it is drawn on is a terminal, else None (a pipe
+    or a log file gets nothing)."""
+    stream = sys.stdout if options.get("stdout") else sys.stderr
+    return ProgressBar(what, unit, **options) if stream is not None and stream.isatty() else None
+
+
+# --- fitting the terminal (rich imported inside: JSON and CSV never load it, ~25 ms) ---------
+
+
+def fitted(renderable, console):
+    """``renderable`` laid out for ``console``'s width, so that no number is cut, split across
+    lines or shortened to ``…``: each table's title goes on a line of its own (a long title
+    wraps as text, not squeezed to the table's width), and a table wider than the terminal is
+    printed stacked instead (:func:`stacked`). Groups are fitted part by part; anything else
+    passes unchanged."""
+    from rich.console import Group
+    from rich.table import Table
+
+    if isinstance(renderable, Group):
+        return Group(*(fitted(part, console) for part in renderable.renderables))
+    if not isinstance(renderable, Table):
+        return renderable
+    title, renderable.title = renderable.title, None
+    if not _cells_intact(renderable, console):
+        renderable.title = title
+        return stacked(renderable, console.width)
+    return Group(_line(title), renderable) if title else renderable
+
+
+def _cells_intact(table, console) -> bool:
+    """Whether ``table`` at ``console``'s width shows every cell whole on one line (headers may
+    wrap; a cell folded, wrapped or shortened to ``…`` is not whole)."""
+    from rich.text import Text
+
+    lines = [
+        "".join(segment.text for segment in line)
+        for line in console.render_lines(table, console.options, pad=False)
+    ]
+    for column in table.columns:
+        for cell in column._cells:
+            text = (
+                cell.plain
+                if isinstance(cell, Text)
+                else Text.from_markup(cell).plain
+                if isinstance(cell, str)
+                else None
+            )
+            if text and not any(text in line for line in lines):
+                return False
+    return True
+
+
+def _line(text):
+    from rich.text import Text
+
+    return text if isinstance(text, Text) else Text.from_markup(text) if isinstance(text, str) else text
+
+
+def _plain(cell) -> str:
+    """A cell or header as the text it shows (markup read, lines joined by a space)."""
+    from rich.text import Text
+
+    if isinstance(cell, Text):
+        text = cell.plain
+    elif isinstance(cell, str):
+        text = Text.from_markup(cell).plain
+    else:
+        text = str(cell)
+    return " ".join(text.split())
+
+
+def stacked(table, width: int):
+    """The rows of ``table`` one below the other, for a terminal too narrow for its columns.
+
+    A quantity/unit/value table (:func:`rbi.cli.tables.quantities`) gives one line a row, ``quantity [unit]``
+    on the left and the value on the right, or the value on the next line when both do not fit
+    on one. Any other table gives, per row, its first cell as a heading and then one line
+    ``header: value`` for each other column. Values are never wrapped."""
+    from rich.console import Group
+    from rich.padding import Padding
+    from rich.text import Text
+
+    headers = [_plain(column.header) for column in table.columns]
+    rows = list(zip(*[[_plain(cell) for cell in column._cells] for column in table.columns]))
+    lines = [_line(table.title)] if table.title else []
+    if getattr(table, "rbi_layout", None) == "quantities":
+        for name, unit, value in rows:
+            left = f" {name}" + (f" [{unit}]" if unit else "")
+            if len(left) + 2 + len(value) <= width:
+                lines.append(Text(left + " " * (width - len(left) - len(value)) + value, no_wrap=True))
+            elif len(value) + 3 <= width:
+                lines += [Text(left), Text(" " * (width - len(value)) + value, no_wrap=True)]
+            else:  # longer than a line: wrapped between words (a number is one word), never cut
+                lines += [Text(left), Padding(Text(value), (0, 0, 0, 3))]
+        return Group(*lines)
+    label = max((len(h) for h in headers[1:]), default=0)
+    for row in rows:
+        if not any(row):  # a spacer row (before a total)
+            continue
+        heading = f"{headers[0]} {row[0]}" if row[0].isdigit() and headers[0] else row[0] or headers[0]
+        lines.append(Text(f" {heading}", style="bold"))  # `run 3`, `I1`, `beam`
+        for header, value in zip(headers[1:], row[1:]):
+            if not value:
+                continue
+            shown = f"   {header + ':':<{label + 1}} {value}" if header else f"   {value}"
+            if len(shown) <= width:
+                lines.append(Text(shown, no_wrap=True))
+            else:  # a long text on lines of its own, wrapped between words (a number is one word)
+                lines += [Text(f"   {header}:"), Padding(Text(value), (0, 0, 0, 5))]
+    return Group(*lines)

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import sys
-import time
 from typing import Annotated
 
 import numpy as np
@@ -11,7 +10,7 @@ import typer
 
 from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import emit, number, refuse_non_finite
+from rbi.cli.render import emit, number, progress_bar, refuse_non_finite
 from rbi.cli.run_options import (
     DurationOption,
     GravityOption,
@@ -154,7 +153,7 @@ def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: 
     from rbi import api
 
     body = api.load_file(file)
-    progress = _ProgressBar() if format == OutputFormat.table and sys.stdout.isatty() else None
+    progress = progress_bar("simulating", stdout=True, delay=0.5) if format == OutputFormat.table else None
     try:
         return body, api.simulate(
             body, samples=samples, error_estimate=error_estimate, progress=progress, **settings
@@ -204,41 +203,6 @@ def _plot(target, body, run, settings: dict) -> None:
 def energy_unit(body) -> str:
     """The unit of an energy in the spec's units: J in SI, otherwise mass·length²/s²."""
     return "J" if (body.mass_unit, body.length_unit) == ("kg", "m") else body.labels["energy"]
-
-
-class _ProgressBar:
-    """A rich progress bar that appears only once a run has taken more than a moment."""
-
-    DELAY_SECONDS = 0.5
-
-    def __init__(self) -> None:
-        self.start = time.perf_counter()
-        self.bar = None
-        self.task = None
-
-    def __call__(self, fraction: float) -> None:
-        if self.bar is None:
-            if time.perf_counter() - self.start < self.DELAY_SECONDS:
-                return
-            from rich.progress import BarColumn, Progress, TextColumn, TimeRemainingColumn
-
-            from rbi.cli.render import stdout_console
-
-            self.bar = Progress(
-                TextColumn("simulating"),
-                BarColumn(),
-                TextColumn("{task.percentage:>3.0f}%"),
-                TimeRemainingColumn(),
-                console=stdout_console(),
-                transient=True,
-            )
-            self.task = self.bar.add_task("simulate", total=1.0)
-            self.bar.start()
-        self.bar.update(self.task, completed=min(max(fraction, 0.0), 1.0))
-
-    def close(self) -> None:
-        if self.bar is not None:
-            self.bar.stop()
 
 
 def _table(body, result: dict):

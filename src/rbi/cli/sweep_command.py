@@ -10,7 +10,7 @@ import typer
 
 from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import emit, number, to_csv
+from rbi.cli.render import ProgressBar, emit, number, to_csv
 from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
 from rbi.sim.budget import DEFAULT_MAX_STEPS
 from rbi.spec.errors import InputError
@@ -254,7 +254,7 @@ def _run(study, out_target, resume: bool, out: str | None):
     from rbi.cli.terminal import Terminated, say
 
     try:
-        return study.run(out_target, resume, progress=_Progress if sys.stderr.isatty() else None)
+        return study.run(out_target, resume, progress=_progress if sys.stderr.isatty() else None)
     except (KeyboardInterrupt, Terminated) as stop:
         if study.output is None:
             raise
@@ -266,30 +266,11 @@ def _run(study, out_target, resume: bool, out: str | None):
         raise SystemExit(code) from None
 
 
-class _Progress:
-    """Runs done, with a rate and the time left, on standard error."""
-
-    def __init__(self, total: int, done: int) -> None:
-        from rich.console import Console
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
-
-        self.bar = Progress(
-            TextColumn("sweep"),
-            BarColumn(),
-            MofNCompleteColumn(),
-            TextColumn("runs"),
-            TimeRemainingColumn(),
-            console=Console(stderr=True),
-            transient=True,
-        )
-        self.task = self.bar.add_task("sweep", total=total, completed=done)
-        self.bar.start()
-
-    def update(self, done: int) -> None:
-        self.bar.update(self.task, completed=done)
-
-    def close(self) -> None:
-        self.bar.stop()
+def _progress(total: int, done: int) -> ProgressBar:
+    """Runs done, with the time left, on standard error (the sweep's progress callback)."""
+    bar = ProgressBar("sweep", "runs", total=total)
+    bar.update(done)
+    return bar
 
 
 def _plot(target, study, rows) -> None:
