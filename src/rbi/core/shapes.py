@@ -75,13 +75,13 @@ def sphere_moment(mass: Numbers, radius: Numbers) -> Numbers:
     return 0.4 * mass * radius * radius
 
 
-def ellipsoid_moments(mass, a, b, c):
+def ellipsoid_moments(mass: Numbers, a: Numbers, b: Numbers, c: Numbers) -> tuple[Numbers, Numbers, Numbers]:
     """Moments of a solid ellipsoid with semi-axes a, b, c about its centre, along its own axes:
     m (b² + c²)/5, m (a² + c²)/5, m (a² + b²)/5."""
     return mass / 5.0 * (b * b + c * c), mass / 5.0 * (a * a + c * c), mass / 5.0 * (a * a + b * b)
 
 
-def capsule_moments(mass, radius, length):
+def capsule_moments(mass: Numbers, radius: Numbers, length: Numbers) -> tuple[Numbers, Numbers]:
     """``(axial, transverse)`` moments of a solid capsule (a cylinder of length L and radius r
     with a hemisphere on each end) about its centre. The cylinder holds m_c = m L / (L + 4/3 r),
     the caps m_s = m − m_c: axial m_c r²/2 + 2/5 m_s r²; transverse m_c (3 r² + L²)/12 +
@@ -100,22 +100,22 @@ def capsule_moments(mass, radius, length):
 # --- thin shells: the mass spread evenly over the surface (MuJoCo's shellinertia) -------------
 
 
-def sphere_area(radius):
+def sphere_area(radius: Numbers) -> Numbers:
     """Surface 4 π r² of a sphere (L²)."""
     return 4.0 * math.pi * radius * radius
 
 
-def sphere_shell_moment(mass, radius):
+def sphere_shell_moment(mass: Numbers, radius: Numbers) -> Numbers:
     """Moment 2/3 m r² of a thin spherical shell about any axis through its centre."""
     return 2.0 / 3.0 * mass * radius * radius
 
 
-def box_area(a, b, c):
+def box_area(a: Numbers, b: Numbers, c: Numbers) -> Numbers:
     """Surface 2 (ab + bc + ca) of a box with edges a, b, c (L²)."""
     return 2.0 * (a * b + b * c + c * a)
 
 
-def box_shell_moments(mass, a, b, c):
+def box_shell_moments(mass: Numbers, a: Numbers, b: Numbers, c: Numbers) -> tuple[Numbers, Numbers, Numbers]:
     """Moments of a box's six faces (mass spread evenly over them) about its centre, along its
     own axes. About x: each face across x (area bc) gives σ bc (b² + c²)/12, each across y (area
     ac, at y = ±b/2) σ ac (b²/4 + c²/12), each across z σ ab (b²/12 + c²/4); σ = m / (2 (ab + bc +
@@ -123,18 +123,20 @@ def box_shell_moments(mass, a, b, c):
     others by symmetry."""
     k = mass / (12.0 * (a * b + b * c + c * a))
 
-    def about(p, q, r):  # the moment about the axis of edge p, with q and r across it
+    def about(
+        p: Numbers, q: Numbers, r: Numbers
+    ) -> Numbers:  # the moment about the axis of edge p, with q and r across it
         return k * (q * r * (q * q + r * r) + p * r * (3.0 * q * q + r * r) + p * q * (q * q + 3.0 * r * r))
 
     return about(a, b, c), about(b, a, c), about(c, a, b)
 
 
-def cylinder_area(radius, length):
+def cylinder_area(radius: Numbers, length: Numbers) -> Numbers:
     """Surface 2 π r (L + r) of a closed cylinder: its side and two end discs (L²)."""
     return 2.0 * math.pi * radius * (length + radius)
 
 
-def cylinder_shell_moments(mass, radius, length):
+def cylinder_shell_moments(mass: Numbers, radius: Numbers, length: Numbers) -> tuple[Numbers, Numbers]:
     """``(axial, transverse)`` moments of a closed cylinder's surface (side and two end discs,
     mass spread evenly) about its centre. The side (m_s = m L/(L + r)) is a thin tube: m_s r²
     axial, m_s (r²/2 + L²/12) transverse; each disc (m_d = m r/(2 (L + r))) m_d r²/2 axial and
@@ -147,12 +149,12 @@ def cylinder_shell_moments(mass, radius, length):
     return axial, transverse
 
 
-def capsule_area(radius, length):
+def capsule_area(radius: Numbers, length: Numbers) -> Numbers:
     """Surface 2 π r (L + 2 r) of a capsule: its cylindrical side and a sphere's worth of caps (L²)."""
     return 2.0 * math.pi * radius * (length + 2.0 * radius)
 
 
-def capsule_shell_moments(mass, radius, length):
+def capsule_shell_moments(mass: Numbers, radius: Numbers, length: Numbers) -> tuple[Numbers, Numbers]:
     """``(axial, transverse)`` moments of a capsule's surface (mass spread evenly) about its
     centre. The side (m_s = m L/(L + 2r)) is a thin tube: m_s r², m_s (r²/2 + L²/12). The caps
     (m_c = m − m_s) are a spherical shell cut in two and moved L/2 apart along the axis: a
