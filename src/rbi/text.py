@@ -7,6 +7,7 @@ YAML comments and values (:mod:`rbi.spec.yaml_writer`), picture labels
 
 from __future__ import annotations
 
+import math
 import unicodedata
 
 _HIDDEN_CATEGORIES = ("Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp")
@@ -45,3 +46,17 @@ def visible(text: str) -> str:
 
 
 _SHORT_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+
+
+def number(value: float | None, digits: int = 6) -> str:
+    """A number for people (tables, reports): ``digits`` significant figures, ``0`` for zero
+    (no ``-0``), ``—`` for none, ``inf``/``nan`` as Python writes them. The one number
+    formatter: the CLI's tables (:mod:`rbi.cli.render`) and the bench report use it."""
+    if value is None:
+        return "—"
+    value = float(value)
+    if value == 0.0:
+        return "0"
+    if not math.isfinite(value):
+        return str(value)
+    return f"{value:.{digits}g}"

@@ -5,16 +5,7 @@ modules of :mod:`rbi.bench`."""
 
 from __future__ import annotations
 
-import math
-
-
-def number(value: float | None, digits: int = 6) -> str:
-    """A figure in a report: ``digits`` significant figures; ``—`` for none, ``0`` for zero."""
-    if value is None:
-        return "—"
-    value = float(value)
-    return "0" if value == 0.0 else (f"{value:.{digits}g}" if math.isfinite(value) else str(value))
-
+from rbi.text import number
 
 METHOD_NAMES = {
     "default": "rbi",

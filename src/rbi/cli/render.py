@@ -1,4 +1,5 @@
-"""Rendering: JSON, CSV and rich tables. The only module that formats numbers."""
+"""Rendering: JSON, CSV cells, rich tables fitted to the terminal, progress bars; numbers through
+the one formatter, :func:`rbi.text.number`."""
 
 from __future__ import annotations
 
@@ -14,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from rbi.cli.terminal import terminal_safe  # noqa: F401  (re-exported: tables and commands escape names with it)
+from rbi.text import number  # noqa: F401  (re-exported: the tables and commands format with it)
 
 
 def plain(value: Any) -> Any:
@@ -135,18 +137,6 @@ def _is_number(text: str) -> bool:
     except ValueError:
         return False
     return text.strip() == text
-
-
-def number(value: float | None, digits: int = 6) -> str:
-    """A number for people: ``digits`` significant figures, no noise like ``-0``."""
-    if value is None:
-        return "—"
-    value = float(value)
-    if value == 0.0:
-        return "0"
-    if not math.isfinite(value):
-        return str(value)
-    return f"{value:.{digits}g}"
 
 
 NOISE_RELATIVE = 1e-12
