@@ -253,13 +253,18 @@ def test_an_obj_never_makes_rbi_open_its_material_file(tmp_path, monkeypatch):
     (tmp_path / "box.obj").write_text("mtllib box.mtl\n" + (tmp_path / "box.obj").read_text())
     (tmp_path / "box.mtl").write_text("newmtl steel\nKd 0.5 0.5 0.5\n")
     opened = []
-    real_open = builtins.open
+    real_open, real_os_open = builtins.open, os.open
 
     def recording_open(file, *args, **kwargs):
         opened.append(str(file))
         return real_open(file, *args, **kwargs)
 
+    def recording_os_open(file, *args, **kwargs):  # rbi reads input files through os.open
+        opened.append(str(file))
+        return real_os_open(file, *args, **kwargs)
+
     monkeypatch.setattr(builtins, "open", recording_open)
+    monkeypatch.setattr(os, "open", recording_os_open)
     proc = run_rbi_inprocess("inertia", mesh_spec(tmp_path, "box.obj"), "--format", "json")
     monkeypatch.undo()
     assert proc.returncode == 0, proc.stderr

@@ -108,25 +108,65 @@ def open_regular(path: str | os.PathLike, what: str, flags: int = os.O_RDONLY) -
     return fd
 
 
+def _read_at_most(fd: int, limit: int) -> bytes | None:
+    """All bytes of the open file ``fd``, or None when it holds more than ``limit`` (its size
+    is checked first, and the read stops one byte past ``limit`` for a file that grows)."""
+    if os.fstat(fd).st_size > limit:
+        return None
+    chunks, size = [], 0
+    while size <= limit:
+        block = os.read(fd, min(limit + 1 - size, 1 << 24))
+        if not block:
+            break
+        chunks.append(block)
+        size += len(block)
+    return None if size > limit else b"".join(chunks)
+
+
 def read_capped(path: str | os.PathLike, limit: int, what: str) -> bytes:
-    """The bytes of the regular file at ``path``, at most ``limit`` of them; InputError when
-    it holds more (checked by size before reading, and again while reading) or is not a
-    regular file of this user."""
+    """The bytes of the regular file at ``path`` that rbi wrote itself (a sidecar: never a link,
+    of this user), at most ``limit`` of them; InputError when it holds more or is anything else."""
     fd = open_regular(path, what)
     try:
-        if os.fstat(fd).st_size > limit:
-            raise InputError(f"{what}: is larger than the {limit:,} bytes rbi writes there; not read")
-        data = b""
-        while len(data) <= limit:
-            block = os.read(fd, limit + 1 - len(data))
-            if not block:
-                break
-            data += block
-        if len(data) > limit:
-            raise InputError(f"{what}: is larger than the {limit:,} bytes rbi writes there; not read")
-        return data
+        data = _read_at_most(fd, limit)
     finally:
         os.close(fd)
+    if data is None:
+        raise InputError(f"{what}: is larger than the {limit:,} bytes rbi writes there; not read")
+    return data
+
+
+class InputFileRefused(ValueError):
+    """Why an input file was not read, as one phrase without its path (the caller names it)."""
+
+
+def read_input_file(path: str | os.PathLike, limit: int, what: str, hint: str = "") -> bytes:
+    """The bytes of an input file a user named (a ``what``: ``"spec"``, ``"mesh"``, ``"robot
+    file"``; links are followed, since users link their own files), at most ``limit`` of them.
+    Refused before a byte is read, and without blocking: a missing file, a folder, FIFO, device
+    or socket, and a file larger than ``limit`` (by its size, and again while reading one that
+    grows; ``hint`` is added to that message). :class:`InputFileRefused` says why."""
+    try:
+        fd = os.open(path, os.O_RDONLY | _NONBLOCK | _CLOEXEC | _NOCTTY)
+    except FileNotFoundError:
+        raise InputFileRefused("no such file") from None
+    except OSError as exc:
+        raise InputFileRefused(f"cannot read: {reason(exc)}") from None
+    try:
+        info = os.fstat(fd)
+        if not stat.S_ISREG(info.st_mode):
+            raise InputFileRefused(f"not a regular file but a {kind(info.st_mode)}; give a {what} file")
+        if _NONBLOCK:
+            os.set_blocking(fd, True)
+        data = _read_at_most(fd, limit)
+    except OSError as exc:
+        raise InputFileRefused(f"cannot read: {reason(exc)}") from None
+    finally:
+        os.close(fd)
+    if data is None:
+        size = f"{info.st_size:,} bytes" if info.st_size > limit else f"more than {limit:,} bytes"
+        raise InputFileRefused(f"file too large for a {what} ({size}; rbi reads at most {limit:,}{hint})")
+    return data
 
 
 def create_exclusive(path: str | os.PathLike, what: str, mode: int = 0o666) -> int:

@@ -24,6 +24,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rbi.core.mesh import MeshDistribution, arrays_problem, mesh_distribution, repair_mesh, weld_vertices
+from rbi.files.safe import read_input_file
 
 MAX_MESH_BYTES = 256 * 2**20
 """Largest mesh file rbi reads (256 MiB)."""
@@ -133,16 +134,7 @@ def _file_key(path: Path) -> tuple:
 
 
 def _read_bytes(path: Path) -> bytes:
-    try:
-        size = path.stat().st_size
-        if size > MAX_MESH_BYTES:
-            raise ValueError(f"file too large for a mesh ({size} bytes; at most {MAX_MESH_BYTES})")
-        with open(path, "rb") as stream:
-            data = stream.read(MAX_MESH_BYTES + 1)
-    except OSError as exc:
-        raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
-    if len(data) > MAX_MESH_BYTES:
-        raise ValueError(f"file too large for a mesh (more than {MAX_MESH_BYTES} bytes)")
+    data = read_input_file(path, MAX_MESH_BYTES, "mesh")  # InputFileRefused is a ValueError
     if not data.strip():
         raise ValueError("file is empty")
     return data

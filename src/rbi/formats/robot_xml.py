@@ -21,12 +21,12 @@ large chunks, a second).
 from __future__ import annotations
 
 import codecs
-import os
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from rbi.errors import InputError
+from rbi.files.safe import InputFileRefused, read_input_file
 
 MAX_FILE_BYTES = 64 * 1024 * 1024
 """Largest robot file read (64 MiB): far above any real description, whose meshes live in
@@ -156,21 +156,9 @@ def read_xml(path: str, data: bytes | None = None) -> XmlDocument:
 
 def _read_bytes(path: str) -> bytes:
     try:
-        if not os.path.isfile(path):
-            raise InputError(f"{path}: " + ("not a regular file" if os.path.exists(path) else "no such file"))
-        size = os.path.getsize(path)
-        if size > MAX_FILE_BYTES:
-            raise InputError(
-                f"{path}: {size} bytes: larger than the {MAX_FILE_BYTES // 2**20} MiB rbi reads "
-                "from a robot file"
-            )
-        with open(path, "rb") as handle:
-            data = handle.read(MAX_FILE_BYTES + 1)
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read: {exc.strerror or type(exc).__name__}") from None
-    if len(data) > MAX_FILE_BYTES:
-        raise InputError(f"{path}: larger than the {MAX_FILE_BYTES // 2**20} MiB rbi reads from a robot file")
-    return data
+        return read_input_file(path, MAX_FILE_BYTES, "robot file")
+    except InputFileRefused as exc:
+        raise InputError(f"{path}: {exc}") from None
 
 
 def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:

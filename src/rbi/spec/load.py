@@ -4,14 +4,13 @@ from __future__ import annotations
 
 import contextlib
 import gc
-import os
 import re
-import stat
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import yaml
 
+from rbi.files.safe import InputFileRefused, read_input_file
 from rbi.spec.errors import InputError, describe_error, format_location
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
@@ -38,26 +37,6 @@ def paused_gc():
             gc.enable()
 
 
-class _RawFile:
-    """An open descriptor read in full up to a bound (no buffering layer to set up)."""
-
-    def __init__(self, descriptor: int):
-        self.descriptor = descriptor
-
-    def read(self, limit: int) -> bytes:
-        chunks, size = [], 0
-        while size < limit:
-            chunk = os.read(self.descriptor, min(limit - size, 1 << 24))
-            if not chunk:
-                break
-            chunks.append(chunk)
-            size += len(chunk)
-        return b"".join(chunks)
-
-    def close(self) -> None:
-        os.close(self.descriptor)
-
-
 def read_spec_text(path: str | Path) -> str:
     """The text of a spec file; :class:`InputError` for a missing, non-regular, over-large,
     empty, binary or non-UTF-8 file. Refused before reading: a device, a FIFO, a directory or a
@@ -65,28 +44,9 @@ def read_spec_text(path: str | Path) -> str:
     A UTF-8 byte-order mark at the start is dropped."""
     path = str(path)
     try:
-        descriptor = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0))
-    except FileNotFoundError:
-        raise InputError(f"{path}: no such file") from None
-    except IsADirectoryError:
-        raise InputError(f"{path}: is a directory, not a spec file") from None
-    except OSError as exc:
-        raise InputError(f"{path}: cannot read: {exc.strerror or exc}") from None
-    with contextlib.closing(_RawFile(descriptor)) as stream:
-        info = os.fstat(descriptor)
-        if stat.S_ISDIR(info.st_mode):
-            raise InputError(f"{path}: is a directory, not a spec file")
-        if not stat.S_ISREG(info.st_mode):
-            raise InputError(f"{path}: not a regular file (a device, FIFO or socket); give a spec file")
-        if info.st_size > MAX_SPEC_BYTES:
-            raise InputError(
-                f"{path}: too large ({info.st_size:,} bytes; a spec may have at most "
-                f"{MAX_SPEC_BYTES:,}: put many points in a point_cloud file)"
-            )
-        try:
-            data = stream.read(MAX_SPEC_BYTES + 1)
-        except OSError as exc:
-            raise InputError(f"{path}: cannot read: {exc.strerror or exc}") from None
+        data = read_input_file(path, MAX_SPEC_BYTES, "spec", hint=": put many points in a point_cloud file")
+    except InputFileRefused as exc:
+        raise InputError(f"{path}: {exc}") from None
     return _spec_text(data, path)
 
 
