@@ -577,9 +577,7 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
                 if found is None or not found.measure > 0:
                     continue
                 density = geom.mass / found.measure if geom.mass is not None else geom.density
-                pieces.append(
-                    MassProperties(density * found.measure, found.centroid, found.inertia * density, "link")
-                )
+                pieces.append(found.unit.scaled(density))
             if pieces:
                 props = _sum(pieces)
                 link.inertial = Inertial(props, props.inertia_about_com, element=None, source="geoms")

@@ -15,6 +15,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rbi.core import shapes
+from rbi.core.mass import MassProperties
 from rbi.errors import InputError
 from rbi.formats.robot import Geom
 
@@ -42,16 +43,24 @@ class MeshFallback(NamedTuple):
 
 
 class Distribution(NamedTuple):
-    """Where a piece of geometry puts its mass per unit density, in the link frame: ``measure``
-    (m³, or m² for a shell), ``centroid`` (m), ``inertia`` about the centroid per unit density
-    (kg·m² per kg/m³, link axes), and the axis-aligned ``low``/``high`` corners of its bounds."""
+    """Where a piece of geometry puts its mass, in the link frame: ``unit`` its mass properties
+    at density 1 (frame ``"link"``: the mass is the ``measure``, m³, or m² for a shell; the
+    centre of mass its centroid, m; the inertia per unit density, kg·m² per kg/m³, link axes),
+    and the axis-aligned ``low``/``high`` corners of its bounds (m)."""
 
-    measure: float
-    centroid: np.ndarray
-    inertia: np.ndarray
+    unit: MassProperties
     low: np.ndarray
     high: np.ndarray
     shell: bool
+
+    @property
+    def measure(self) -> float:
+        """Volume (m³), or area (m²) for a shell."""
+        return self.unit.mass
+
+    @property
+    def centroid(self) -> np.ndarray:
+        return self.unit.center_of_mass
 
 
 def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[float, np.ndarray]:
@@ -130,7 +139,10 @@ def distribution(
                 "inertia overflows a double); give sizes in metres"
             )
         return Distribution(
-            measure, p.copy(), 0.5 * (inertia + inertia.T), p - corners, p + corners, geom.shell
+            MassProperties(measure, p, 0.5 * (inertia + inertia.T), "link"),
+            p - corners,
+            p + corners,
+            geom.shell,
         )
     if geom.kind == "mesh":
         mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
@@ -148,9 +160,7 @@ def distribution(
             )
         inertia = R @ inertia @ R.T
         return Distribution(
-            measure,
-            R @ centroid + p,
-            0.5 * (inertia + inertia.T),
+            MassProperties(measure, R @ centroid + p, 0.5 * (inertia + inertia.T), "link"),
             *_turned_bounds(R, p, low, high),
             mode == "shell",
         )

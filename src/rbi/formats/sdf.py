@@ -217,9 +217,7 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
         found = distribution(geom, "auto", f"{where.path}: {where.label}: ")
         if found is not None and found.measure > 0:
             density = geom.density if geom.density is not None else SDF_DENSITY
-            pieces.append(
-                MassProperties(density * found.measure, found.centroid, density * found.inertia, "link")
-            )
+            pieces.append(found.unit.scaled(density))
     try:
         props = MassProperties.sum(pieces)
     except ValueError:

@@ -371,9 +371,9 @@ def _geometry_props(
     low = np.min([d.low for d, _ in pieces], axis=0)
     high = np.max([d.high for d, _ in pieces], axis=0)
     if model.format == "mjcf":  # each geom at its own mass
-        parts = [MassProperties(m, d.centroid, d.inertia * (m / d.measure), "link") for d, m in pieces]
+        parts = [d.unit.with_mass(m) for d, m in pieces]
     else:  # at density 1
-        parts = [MassProperties(d.measure, d.centroid, d.inertia, "link") for d, _ in pieces]
+        parts = [d.unit for d, _ in pieces]
     try:
         unit = MassProperties.sum(parts)
     except ValueError:  # no mass in the geometry
