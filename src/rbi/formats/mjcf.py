@@ -12,7 +12,8 @@ What is honoured:
   ellipsoid semi-axes; with ``fromto`` a box or ellipsoid takes ``size[0]`` across both transverse
   axes, as MuJoCo does), geom ``mass`` or ``density`` (default 1000 kg/m³), ``shellinertia``,
   ``group`` against ``inertiagrouprange``; mesh assets with ``file``, ``scale`` and ``inertia``
-  (``exact``, ``convex``, ``shell``; ``legacy`` is read as ``exact``);
+  (``legacy``, MuJoCo's default, ``exact``, ``convex``, ``shell``), each computed as MuJoCo
+  computes it;
 - a body's mass properties: the explicit ``<inertial>`` (``diaginertia`` or ``fullinertia``,
   any orientation), or the sum of its geoms when ``inertiafromgeom`` is ``true`` (the explicit
   one is then ignored, as MuJoCo ignores it) or ``auto`` without ``<inertial>``; then the bounds
@@ -323,7 +324,7 @@ def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dic
                     path, relative, f"{path}: mesh {short(name)!r}: {short(relative, 1000)}", "robot file"
                 ),
                 "scale": np.array(scale, dtype=float),
-                "mode": "exact" if mode == "legacy" else mode,
+                "mode": mode,
             }
     return meshes
 

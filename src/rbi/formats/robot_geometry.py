@@ -20,6 +20,7 @@ from rbi.errors import InputError
 from rbi.formats.robot import Geom
 
 MESH_INERTIA_MODES = ("auto", "exact", "convex", "shell")
+"""The audit's ``--mesh-inertia`` choices; an MJCF mesh asset may also say ``legacy``."""
 """``auto``: ``exact`` for a closed mesh; for one that is not (open, inconsistently wound, no
 volume), its solid convex hull, with a warning saying so (:class:`MeshFallback`)."""
 
@@ -229,7 +230,11 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
             repaired = repair_mesh(vertices, faces)
             faces = repaired.faces
             added = (repaired.added_faces, repaired.added_area) if repaired.added_faces else None
-        found = mesh_distribution(vertices, faces, mode)
+        found = (
+            legacy_distribution(vertices, faces)
+            if mode == "legacy"
+            else mesh_distribution(vertices, faces, mode)
+        )
     except ValueError as exc:
         refusal = _NotIntegrable(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}")
         refusal.reason = str(exc).split("; for such a mesh")[0].split("; audit it with")[0]
@@ -250,6 +255,48 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
     )
     _MESHES[key] = result
     return result
+
+
+class _Legacy(NamedTuple):
+    measure: float
+    centroid: np.ndarray
+    inertia_per_density: np.ndarray
+    vertices: np.ndarray
+    faces: np.ndarray
+
+
+def legacy_distribution(vertices: np.ndarray, faces: np.ndarray) -> _Legacy:
+    """MuJoCo's ``legacy`` mesh inertia (its default for a mesh asset), as its compiler computes
+    it (``mjCMesh::ComputeVolume``/``ComputeInertia``): each triangle with the area-weighted
+    centroid of the faces as apex is a pyramid whose volume counts positive whatever the
+    triangle's winding; that gives the volume-weighted centre of mass. The inertia sums the
+    tetrahedra from the centre of mass to each triangle, again with positive volumes, and the
+    volume reported is their sum. Exact for a convex mesh seen from inside; for other meshes it
+    is what MuJoCo gives the body, which is the point. ValueError for a mesh with no area or no
+    volume."""
+    V = np.asarray(vertices, dtype=float)
+    D, E, F = V[faces[:, 0]], V[faces[:, 1]], V[faces[:, 2]]
+    cross = np.cross(E - D, F - D)  # twice the area times the unit normal
+    area = 0.5 * np.linalg.norm(cross, axis=1)
+    centre = (D + E + F) / 3
+    if not area.sum() >= 1e-15:
+        raise ValueError("has no area (MuJoCo: mesh surface area is too small)")
+    apex = (area[:, None] * centre).sum(axis=0) / area.sum()
+    volume = np.abs(np.einsum("ij,ij->i", centre - apex, cross)) / 6
+    if not volume.sum() >= 1e-15:
+        raise ValueError("encloses no volume (MuJoCo: mesh volume is too small); try inertia: shell")
+    com = (volume[:, None] * (0.75 * centre + 0.25 * apex)).sum(axis=0) / volume.sum()
+    D, E, F = D - com, E - com, F - com
+    volume = np.abs(np.einsum("ij,ij->i", (D + E + F) / 3, cross)) / 6
+    second = np.empty((3, 3))
+    for a in range(3):
+        for b in range(3):
+            terms = 2 * (D[:, a] * D[:, b] + E[:, a] * E[:, b] + F[:, a] * F[:, b])
+            terms += D[:, a] * E[:, b] + D[:, b] * E[:, a] + D[:, a] * F[:, b] + D[:, b] * F[:, a]
+            terms += E[:, a] * F[:, b] + E[:, b] * F[:, a]
+            second[a, b] = float((volume * terms).sum() / 20)
+    inertia = np.trace(second) * np.eye(3) - second
+    return _Legacy(float(volume.sum()), com, 0.5 * (inertia + inertia.T), V, np.asarray(faces))
 
 
 CLOSED_HINT = (

@@ -41,7 +41,10 @@ def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str,
         raise InputError(f"{label}: not a usable path (it contains a NUL character)")
     for scheme in ("package://", "model://"):
         if uri.startswith(scheme):
-            return _in_package(robot_path, uri, uri[len(scheme) :], label, package_paths or {}, scheme)
+            # package:///NAME/REST (an empty authority) names the package after the slash, as
+            # Pinocchio and ROS read it
+            rest = uri[len(scheme) :].lstrip("/")
+            return _in_package(robot_path, uri, rest, label, package_paths or {}, scheme)
     if uri.startswith("file://"):
         return spec_relative_file(robot_path, unquote(uri[len("file://") :]), label, "robot file")
     return spec_relative_file(robot_path, uri, label, "robot file")
