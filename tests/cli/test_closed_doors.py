@@ -129,3 +129,15 @@ def test_an_obj_face_naming_vertex_2_to_the_64_is_blamed_on_the_mesh(tmp_path, c
         )
         proc = rbi("audit", path)
     one_line_exit_2(proc, "big.obj", "line 6", "names vertex 18446744073709551616")
+
+
+@pytest.mark.parametrize("columns", ["60", "80", "84", "120"])
+def test_the_sweep_table_never_breaks_a_path_in_its_header(columns, monkeypatch):
+    """At 80 columns the header read 'parts.stem' over '.radius'; a table that cannot show a
+    header's words whole is printed stacked, one value a line."""
+    monkeypatch.setenv("COLUMNS", columns)
+    args = ["--vary", "parts.stem.radius=0.007:0.009:2", "--spin", "100", "--duration", "0.05"]
+    proc = rbi("sweep", BODIES / "top_bolted.yaml", *args)
+    assert proc.returncode == 0, proc.stderr
+    assert "parts.stem.radius" in proc.stdout, proc.stdout
+    assert not any(line.strip().startswith(".radius") for line in proc.stdout.splitlines()), proc.stdout

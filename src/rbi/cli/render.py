@@ -385,7 +385,8 @@ def fitted(renderable, console):
 
 def _cells_intact(table, console) -> bool:
     """Whether ``table`` at ``console``'s width shows every cell whole on one line (headers may
-    wrap; a cell folded, wrapped or shortened to ``…`` is not whole)."""
+    wrap between words, never inside one: a path like ``parts.stem.radius`` stays whole; a
+    cell folded, wrapped or shortened to ``…`` is not whole)."""
     from rich.text import Text
 
     lines = [
@@ -403,6 +404,11 @@ def _cells_intact(table, console) -> bool:
             )
             if text and not any(text in line for line in lines):
                 return False
+    for column in table.columns:
+        header = column.header
+        header = header.plain if isinstance(header, Text) else Text.from_markup(str(header)).plain
+        if any(word and not any(word in line for line in lines) for word in header.split()):
+            return False
     return True
 
 
