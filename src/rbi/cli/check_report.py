@@ -7,6 +7,11 @@ from typing import Any
 
 import numpy as np
 
+from rbi.cli.each_file import FileReport, report_each
+from rbi.cli.mass_reports import load_body
+from rbi.cli.render import number
+from rbi.errors import InputError
+
 
 def compare(quantity: str, expected, actual, tol, unit: str) -> dict[str, Any]:
     """One expectation: per-component deviation against the allowed deviation.
@@ -78,7 +83,6 @@ def run_checks(body) -> list[dict[str, Any]]:
 
 def check(files, fmt: str = "table") -> int:
     """`rbi check FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
-    from rbi.cli.each_file import report_each
 
     return report_each(files, check_of, fmt)
 
@@ -86,9 +90,6 @@ def check(files, fmt: str = "table") -> int:
 def check_of(file: str):
     """What `rbi check` gives for one file (:class:`rbi.cli.each_file.FileReport`); among
     several files, its CSV row is ``name, units, ok, passed, failed``."""
-    from rbi.cli.each_file import FileReport
-    from rbi.cli.mass_reports import load_body
-    from rbi.errors import InputError
 
     body = load_body(file)
     if body.spec.expect is None:
@@ -159,7 +160,6 @@ def _table(body, checks, failed: int):
     from rich.markup import escape
 
     from rbi.cli import tables
-    from rbi.cli.render import number
 
     verdict = "all expectations hold" if not failed else f"{failed} of {len(checks)} expectations FAIL"
     t = tables.titled(f"{body.name or body.path} — check: {verdict}")

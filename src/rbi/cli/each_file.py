@@ -20,6 +20,19 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from rbi.cli.render import (
+    emit,
+    fitted,
+    flatten,
+    refuse_non_finite,
+    say_warnings,
+    stdout_console,
+    to_csv,
+    to_json,
+)
+from rbi.cli.terminal import say
+from rbi.errors import InputError
+
 STDIN = "-"
 STDIN_LABEL = "<stdin>"
 
@@ -53,7 +66,6 @@ def file_label(file: str) -> str:
 def report_each(files: Sequence[str], report: Callable[[str], FileReport], fmt: str) -> int:
     """Run ``report`` on each of ``files`` and write the output in ``fmt`` (table, json or
     csv); returns the exit status (0, 1 when a check failed, 2 when a file was bad input)."""
-    from rbi.cli.render import emit
 
     if len(files) == 1:
         one = report(files[0])
@@ -71,9 +83,6 @@ class _Several:
         self.sections = 0
 
     def run(self, files: Sequence[str], report: Callable[[str], FileReport]) -> int:
-        from rbi.cli.render import refuse_non_finite
-        from rbi.cli.terminal import say
-        from rbi.errors import InputError
 
         bad = failed = False
         for file in files:
@@ -90,7 +99,6 @@ class _Several:
         return 2 if bad else 1 if failed else 0
 
     def write(self, label: str, one: FileReport) -> None:
-        from rbi.cli.render import say_warnings, to_json
 
         if self.fmt != "json":
             sys.stdout.flush()  # the warning line follows what earlier files printed
@@ -100,8 +108,6 @@ class _Several:
         elif self.fmt == "csv":
             self._csv_row({"file": label} | one.summary_row())
         else:
-            from rbi.cli.render import fitted, stdout_console
-
             console = stdout_console()
             if self.sections:
                 console.print()
@@ -113,7 +119,6 @@ class _Several:
     def _csv_row(self, row: dict[str, Any]) -> None:
         """One CSV row under the first file's header (a column the first file lacked is left
         out, one it had and this file lacks is empty)."""
-        from rbi.cli.render import flatten, to_csv
 
         flat = flatten(row)
         first = self.header is None

@@ -8,6 +8,11 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from rbi.cli.each_file import FileReport, report_each
+from rbi.cli.option_values import in_output_units, parse_about, parse_rotation, parse_vector
+from rbi.cli.render import body_size, matrix_digits, number
+from rbi.errors import InputError
+
 PRODUCT_SIGNS = ("tensor", "cad")
 
 PRODUCT_SIGN_TITLES = {
@@ -52,10 +57,7 @@ def inertia(
     """`rbi inertia FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
     import numpy as np
 
-    from rbi.cli.each_file import report_each
-    from rbi.cli.option_values import parse_rotation, parse_vector
     from rbi.core.inertia import unit_axis
-    from rbi.errors import InputError
 
     turns = [parse_rotation(r) for r in rotate or []]
     direction = None
@@ -70,9 +72,6 @@ def inertia(
 def _inertia_of(file: str, about: str, turns, direction, products: str, units: str | None):
     import numpy as np
 
-    from rbi.cli.each_file import FileReport
-    from rbi.cli.option_values import in_output_units, parse_about
-    from rbi.cli.render import number
     from rbi.core.inertia import moment_about_axis, re_express, with_product_sign
     from rbi.core.rotation import compose_world_rotations
 
@@ -94,7 +93,6 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
 
     def table():
         from rbi.cli import tables
-        from rbi.cli.render import body_size
 
         labels = body.labels
         frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
@@ -126,15 +124,11 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
 
 def principal(files: Sequence[str], about: str = "com", units: str | None = None, fmt: str = "table") -> int:
     """`rbi principal FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
-    from rbi.cli.each_file import report_each
 
     return report_each(files, lambda file: _principal_of(file, about, units), fmt)
 
 
 def _principal_of(file: str, about: str, units: str | None):
-    from rbi.cli.each_file import FileReport
-    from rbi.cli.option_values import in_output_units, parse_about
-    from rbi.cli.render import number
     from rbi.core.inertia import principal_axes, radii_of_gyration
 
     body = load_body(file)
@@ -147,7 +141,6 @@ def _principal_of(file: str, about: str, units: str | None):
 
     def table():
         from rbi.cli import tables
-        from rbi.cli.render import body_size, matrix_digits
 
         labels = body.labels
         scale, scale_text = matrix_digits(moments)

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+from rbi.cli.each_file import FileReport, report_each
+from rbi.cli.mass_reports import load_body
+from rbi.cli.render import matrix_digits, number
+from rbi.cli.terminal import say
+
 
 def parts(files, fmt: str = "table") -> int:
     """`rbi parts FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
-    from rbi.cli.each_file import report_each
 
     return report_each(files, parts_of, fmt)
 
@@ -19,9 +23,6 @@ def parts_of(file: str):
     away (parts without a volume add none), and ``principal_moments`` of the body about its
     centre of mass.
     """
-    from rbi.cli.each_file import FileReport
-    from rbi.cli.mass_reports import load_body
-    from rbi.cli.terminal import say
     from rbi.core.inertia import principal_axes
 
     body = load_body(file)
@@ -91,7 +92,6 @@ def _table(body, rows, total):
     """Three tables, each narrow enough for 80 columns: mass and volume; centre of mass and
     share of the inertia; principal moments. Each ends with the whole body's row."""
     from rbi.cli import tables
-    from rbi.cli.render import matrix_digits, number
 
     labels = body.labels
     name = body.name or body.path
@@ -175,6 +175,5 @@ def _titled_table(title: str, names: list, headers, cells, total_row):
 
 
 def _signed_volume(row) -> str:
-    from rbi.cli.render import number
 
     return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])

@@ -7,6 +7,7 @@ import csv
 import io
 import json
 import math
+import os
 import sys
 import time
 from collections.abc import Callable, Iterable
@@ -14,7 +15,8 @@ from typing import Any
 
 import numpy as np
 
-from rbi.cli.terminal import terminal_safe  # noqa: F401  (re-exported: tables and commands escape names with it)
+from rbi.cli.terminal import say, terminal_safe
+from rbi.errors import InputError
 from rbi.text import number  # noqa: F401  (re-exported: the tables and commands format with it)
 
 
@@ -174,8 +176,6 @@ def _superscript(n: int) -> str:
 def _color_system() -> str | None:
     # rich's own NO_COLOR handling drops colours but keeps bold, dim and italic escapes;
     # NO_COLOR users get plain text.
-    import os
-
     return None if os.environ.get("NO_COLOR") else "auto"
 
 
@@ -191,7 +191,7 @@ def _safe_console(**options):
     """A rich Console whose printed text never carries a control character from data: the last
     line of defence behind :func:`rbi.cli.tables.plain_text` (rich's own colour and cursor codes
     are styles and control segments, not text, and pass unchanged)."""
-    from rich.console import Console
+    from rich.console import Console  # rich only when something is drawn: JSON never loads it (~25 ms)
     from rich.segment import Segment
 
     class SafeConsole(Console):
@@ -230,8 +230,6 @@ def emit(
 def say_warnings(warnings: Iterable[str]) -> None:
     """Each warning about a body (``Body.warnings``: units that look wrong ...) as one line
     ``rbi: warning: ...`` on stderr; JSON output carries them as ``"warnings"`` instead."""
-    from rbi.cli.terminal import say
-
     for warning in warnings:
         say(f"warning: {warning}")
 
@@ -246,8 +244,6 @@ def print_table(renderable) -> None:
 def refuse_non_finite(result: dict[str, Any], source: str | None = None) -> None:
     """Inputs of absurd size (``--omega 1e200,0,0``) overflow to inf/NaN: refuse them as bad
     input (exit 2, naming the file ``source`` when given) rather than print nulls."""
-    from rbi.spec.errors import InputError
-
     bad = [key for key, value in plain(result).items() if _has_non_finite(value)]
     if bad:
         where = f"{source}: " if source else ""
