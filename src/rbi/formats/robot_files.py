@@ -36,13 +36,12 @@ import numpy as np
 
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
-from rbi.formats.robot import Link, RobotModel
+from rbi.formats.robot import LINK_WORD, Link, RobotModel
 from rbi.formats.robot import short as _short
 from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
 
 ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf", ".xacro")
 FORMAT_BY_ROOT = {"robot": "urdf", "sdf": "sdf", "mujoco": "mjcf"}
-LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
 
 
 @dataclass
