@@ -106,7 +106,7 @@ def test_file_readers_know_nothing_of_specs_or_the_terminal():
         "rbi.spec",
         "rbi.cli",
         "rbi.sim",
-        "rbi.sweep",
+        "rbi.sweeps",
         "rbi.viz",
         "pydantic",
         "typer",
@@ -137,7 +137,7 @@ def test_the_file_writer_stands_below_every_layer_that_writes():
         "rbi.cli",
         "rbi.core",
         "rbi.sim",
-        "rbi.sweep",
+        "rbi.sweeps",
         "rbi.formats",
         "rbi.viz",
         "rbi.bench",
@@ -237,11 +237,6 @@ def _lint_imports() -> subprocess.CompletedProcess:
     )
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="rbi.sweep's package __init__ imports rbi.api (the callable-package trick); issue 24's API "
-    "work makes rbi.sweep a real function (then drop this mark)",
-)
 def test_import_linter_contracts_in_pyproject_are_kept():
     proc = _lint_imports()
     assert proc.returncode == 0, proc.stdout[-4000:] + proc.stderr[-2000:]

@@ -4,7 +4,7 @@ described in a YAML spec, as a command-line tool (``rbi``) and a Python library.
 ```python
 import rbi
 
-body = rbi.load("top.yaml")
+body = rbi.load("top.yaml")              # or rbi.loads(text), rbi.load({...})
 print(body.mass, body.center_of_mass, body.principal().moments)
 run = rbi.simulate(body, spin=200.0, tilt_deg=0.01, duration=2.0)
 ```
@@ -14,15 +14,16 @@ private and may change. ``import rbi`` alone is cheap: :mod:`rbi.api` (and numpy
 on first use of a public name.
 
 Layers (each imports only those below it): ``formats`` (readers of outside files) ←
-``spec`` (YAML, units, validation) ← ``core`` (pure numpy physics) ← ``sim``, ``sweep``,
-``viz``, ``bench``, ``runs`` ← ``api`` (the public Python API) ← ``cli`` (typer commands and
-rendering).
+``spec`` (YAML, units, validation) ← ``core`` (pure numpy physics) ← ``sim``, ``sweeps``,
+``viz``, ``robot``, ``bench``, ``runs`` ← ``api`` (the public Python API) ← ``cli`` (typer
+commands and rendering).
 """
 
 __version__ = "0.1.0"
 
 __all__ = [
     "load",
+    "loads",
     "Body",
     "Principal",
     "Part",
@@ -30,6 +31,10 @@ __all__ = [
     "simulate",
     "Trajectory",
     "sweep",
+    "SweepTable",
+    "Grid",
+    "Normal",
+    "Uniform",
     "audit",
     "AuditReport",
     "SpecError",
@@ -40,10 +45,6 @@ _API_NAMES = frozenset(__all__) - {"__version__"}
 
 
 def __getattr__(name: str):
-    if name == "sweep":  # the package rbi.sweep, callable as rbi.api.sweep (see its docstring)
-        import importlib
-
-        return importlib.import_module("rbi.sweep")
     if name in _API_NAMES:
         from rbi import api
 

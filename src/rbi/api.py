@@ -18,21 +18,23 @@ raises `SpecError`, whose ``str()`` is the one line the CLI prints for the same 
 
 from __future__ import annotations
 
-import numbers
 import os
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbi.errors import SpecError
+from rbi.errors import ArgumentError, SpecError
+from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
 
 if TYPE_CHECKING:
     from rbi.robot.audit import AuditReport
+    from rbi.sweeps.plan import Grid, Normal, Uniform
 
 __all__ = [
     "load",
+    "loads",
     "Body",
     "Principal",
     "Part",
@@ -40,27 +42,34 @@ __all__ = [
     "simulate",
     "Trajectory",
     "sweep",
+    "SweepTable",
+    "Grid",
+    "Normal",
+    "Uniform",
     "audit",
     "AuditReport",
     "SpecError",
 ]
 
-Point = Any
+Point = str | Sequence[float] | np.ndarray
 """A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates
-(spec length unit); text ``"x,y,z"`` is accepted too."""
+(spec length unit)."""
 
 
-def load(source: str | os.PathLike | dict, *, allow_outside_paths: bool = False) -> Body:
+def load(
+    source: str | os.PathLike[str] | Mapping[str, Any], *, allow_outside_paths: bool | None = None
+) -> Body:
     """Read, validate and translate a body spec.
 
     Args:
-        source: a path to a spec file (``str`` or ``os.PathLike``; ``"-"`` reads standard
-            input, named ``<stdin>`` in messages); YAML or JSON text (a ``str`` holding a
-            newline, named ``<string>``); or a ``dict`` shaped like the YAML spec (named
-            ``<dict>``). Files the spec names (meshes, point clouds) are looked for beside the
-            spec file, or in the current folder for text and dicts.
+        source: the path of a spec file (``str`` or ``os.PathLike``; a ``str`` is always a
+            path, ``"-"`` standard input, named ``<stdin>`` in messages), or a ``dict`` shaped
+            like the YAML spec (named ``<dict>``). Text is read by `loads`. Files the spec names
+            (meshes, point clouds) are looked for beside the spec file, or in the current folder
+            for a dict.
         allow_outside_paths: let the spec name files outside its own folder (the CLI's
-            ``--allow-outside-paths``).
+            ``--allow-outside-paths``); None: as an enclosing `outside_paths_allowed` block
+            says (not allowed outside one).
 
     Returns:
         The `Body`.
@@ -68,64 +77,73 @@ def load(source: str | os.PathLike | dict, *, allow_outside_paths: bool = False)
     Raises:
         SpecError: the file is missing or unreadable, the YAML is malformed, or the spec is
             invalid; ``str(error)`` is ``file: part: field: what is wrong``.
+        TypeError: ``source`` is neither a path nor a dict.
     """
-    from rbi.formats.paths import outside_paths_allowed
+    from rbi.spec import load as spec_load
 
+    if isinstance(source, Mapping):
+        spec_load.refuse_lone_surrogates(dict(source), "<dict>")
+        return _body(
+            lambda: (spec_load.body_from_raw(dict(source), "<dict>"), dict(source)),
+            "<dict>",
+            allow_outside_paths,
+        )
+    if not isinstance(source, (str, os.PathLike)):
+        raise TypeError(
+            f"source: expected a path (str or os.PathLike) or a dict, got {type(source).__name__}"
+        )
+    path = os.fspath(source)
+    path = os.fsdecode(path) if isinstance(path, bytes) else path
+    if "\n" in path and not os.path.lexists(path):
+        raise ArgumentError(
+            "source", "is text, not a path (a str is always a path): read spec text with rbi.loads"
+        )
+
+    def read() -> tuple[Any, Any]:
+        raw = spec_load.read_yaml(path)  # "-" reads standard input
+        return spec_load.body_from_raw(raw, spec_load.spec_label(path)), raw
+
+    return _body(read, spec_load.spec_label(path), allow_outside_paths)
+
+
+def loads(text: str | bytes, *, allow_outside_paths: bool | None = None) -> Body:
+    """Read a body spec from YAML or JSON text (named ``<string>`` in messages; files it names
+    are looked for in the current folder). Otherwise as `load`."""
+    from rbi.spec import load as spec_load
+
+    if isinstance(text, bytes):
+        try:
+            text = text.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise SpecError(f"<string>: not UTF-8 text (byte {exc.start})", file="<string>") from None
+    if not isinstance(text, str):
+        raise TypeError(f"text: expected YAML or JSON text (str or bytes), got {type(text).__name__}")
+
+    def read() -> tuple[Any, Any]:
+        raw = spec_load.parse_spec_text(spec_load.check_spec_text(text, "<string>"), "<string>")
+        return spec_load.body_from_raw(raw, "<string>"), raw
+
+    return _body(read, "<string>", allow_outside_paths)
+
+
+def _body(read: Callable[[], tuple[Any, Any]], label: str, allow_outside_paths: bool | None) -> Body:
+    """The `Body` ``read()`` gives (loaded body, parsed spec); a `SpecError` whose line starts
+    with ``label`` gets it as its ``file``."""
+    from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
+
+    allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     try:
-        with outside_paths_allowed(allow_outside_paths):
-            loaded, raw = _load(source)
+        with outside_paths_allowed(allowed):
+            loaded, raw = read()
     except SpecError as exc:
-        label = _label(source)
-        if exc.file is None and label is not None and str(exc).startswith(label + ": "):
+        if exc.file is None and str(exc).startswith(label + ": "):
             exc.file = label
         raise
     return Body(loaded, raw)
 
 
-def _label(source) -> str | None:
-    """How messages name ``source``."""
-    if isinstance(source, dict):
-        return "<dict>"
-    if isinstance(source, str):
-        return "<stdin>" if source == "-" else "<string>" if "\n" in source else source
-    if isinstance(source, os.PathLike):
-        return os.fsdecode(os.fspath(source))
-    return None
-
-
-def load_file(path: str) -> Body:
-    """The body of the spec file at ``path`` (never read as text, whatever it holds); ``-``
-    reads one spec from standard input (named ``<stdin>``), as the CLI's FILE ``-``."""
-    from rbi.spec import load as spec_load
-
-    raw = spec_load.read_yaml(path)  # "-" reads standard input
-    return Body(spec_load.body_from_raw(raw, spec_load.spec_label(path)), raw)
-
-
-def _load(source):
-    from rbi.spec import load as spec_load
-
-    if isinstance(source, dict):
-        spec_load.refuse_lone_surrogates(source, "<dict>")
-        return spec_load.body_from_raw(source, "<dict>"), source
-    if isinstance(source, str) and ("\n" in source or source == "-"):
-        if source == "-":
-            label, text = spec_load.STDIN_LABEL, spec_load.read_stdin_text()
-        else:
-            label, text = "<string>", spec_load.check_spec_text(source, "<string>")
-        raw = spec_load.parse_spec_text(text, label)
-        return spec_load.body_from_raw(raw, label), raw
-    if isinstance(source, (str, os.PathLike)):
-        path = os.fspath(source)
-        if isinstance(path, bytes):
-            path = os.fsdecode(path)
-        raw = spec_load.read_yaml(path)
-        return spec_load.body_from_raw(raw, path), raw
-    raise SpecError(f"rbi.load: expected a path, spec text or a dict (got {type(source).__name__})")
-
-
 @dataclass(frozen=True)
-class Principal:
+class Principal(TableRepr):
     """Principal moments and axes about a point.
 
     Attributes:
@@ -141,9 +159,17 @@ class Principal:
     radii_of_gyration: np.ndarray
     about: np.ndarray
 
+    def _table(self) -> tuple[str, list[list[str]], tuple[str, ...]]:
+        rows = [
+            [str(i + 1), f"{float(m) + 0.0:.8g}", vector_text(axis), f"{float(k):.6g}"]
+            for i, (m, axis, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration))
+        ]
+        title = f"principal moments and axes about {vector_text(self.about)}"
+        return title, rows, ("axis", "moment", "direction (body axes)", "radius of gyration")
+
 
 @dataclass(frozen=True)
-class Part:
+class Part(TableRepr):
     """One part of a body, in file order (spec units, body frame).
 
     Attributes:
@@ -163,6 +189,19 @@ class Part:
     center_of_mass: np.ndarray
     inertia_about_com: np.ndarray
     volume: float | None
+
+    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
+        rows = [
+            ("shape", "", self.shape + (" (hole)" if self.hole else "")),
+            ("mass", "", f"{self.mass:.8g}"),
+            ("centre of mass", "", vector_text(self.center_of_mass)),
+            *(
+                (f"inertia about its CoM, row {i + 1}", "", vector_text(row))
+                for i, row in enumerate(self.inertia_about_com)
+            ),
+            ("volume", "", "—" if self.volume is None else f"{self.volume:.8g}"),
+        ]
+        return f"part {self.name}", rows, QUANTITY_COLUMNS
 
 
 @dataclass(frozen=True)
@@ -186,7 +225,7 @@ class Momentum:
     kinetic_energy: float
 
 
-class Body:
+class Body(TableRepr):
     """A validated rigid body, as `load` returns it (not constructed directly).
 
     All numbers are in the spec's own units (`units`) and the body frame (the spec's
@@ -217,6 +256,13 @@ class Body:
         return dict(self._loaded.units)
 
     @property
+    def unit_labels(self) -> dict[str, str]:
+        """The printed unit of each quantity in the spec's units: ``length``, ``mass``,
+        ``inertia`` (``kg·m²``), ``angular_momentum``, ``energy`` (``J`` in SI), ``density``,
+        ``velocity``, ``omega``."""
+        return dict(self._loaded.labels)
+
+    @property
     def mass(self) -> float:
         """Total mass (holes subtracted), mass unit."""
         return float(self._loaded.props.mass)
@@ -238,7 +284,7 @@ class Body:
         the body's symmetry axis (exactly two equal principal moments about the pivot, or about
         the centre of mass of a free body), pointing from the pivot towards the centre of mass
         (or with its largest component positive), else body z."""
-        from rbi.runs.prepare import body_spin_axis
+        from rbi.runs.run import body_spin_axis
 
         return body_spin_axis(self._loaded)
 
@@ -246,7 +292,9 @@ class Body:
         """The reference point ``about`` as (3,) body coordinates, length unit.
 
         ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
-        (`SpecError` when there is none); or a point (x, y, z)."""
+        (ValueError when there is none); or a point (x, y, z)."""
+        from rbi.runs.values import vector_value
+
         if isinstance(about, str):
             key = about.strip().lower()
             if key == "com":
@@ -254,23 +302,16 @@ class Body:
             if key == "origin":
                 return np.zeros(3)
             if key == "pivot":
-                if self._loaded.pivot is None:
-                    raise SpecError(
-                        f"{self.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none",
-                        file=self.path,
-                        field="pivot",
+                pivot = self.pivot
+                if pivot is None:
+                    raise ArgumentError(
+                        "about", "'pivot' needs a `pivot` in the spec, and there is none", file=self.path
                     )
-                return self.pivot
-        from rbi.runs.values import vector_value
-
-        try:
-            return np.array(vector_value(about, "--about"))
-        except SpecError:
-            raise SpecError(
-                f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
-                f"commas, file units), got {about!r}",
-                field="about",
-            ) from None
+                return pivot
+            raise ArgumentError(
+                "about", f"expected 'com', 'origin', 'pivot' or a point (x, y, z), got {about!r}"
+            )
+        return np.array(vector_value(about, "about"))
 
     def inertia(
         self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None
@@ -281,9 +322,8 @@ class Body:
             about: the reference point (see `point`): ``"com"`` (default), ``"origin"``,
                 ``"pivot"`` or (x, y, z) in body coordinates.
             axes: None for body axes; or turns of the body about world axes, applied in
-                order, as the CLI's ``--rotate`` — a list of ``("x"|"y"|"z", degrees)``;
-                or a (3, 3) rotation matrix R, body → world. The matrix is then given in
-                world axes: ``R I Rᵀ``.
+                order — a sequence of ``("x"|"y"|"z", degrees)`` pairs; or a (3, 3) rotation
+                matrix R, body → world. The matrix is then given in world axes: ``R I Rᵀ``.
         """
         from rbi.core.inertia import re_express
 
@@ -330,10 +370,7 @@ class Body:
         return out
 
     def momentum(
-        self,
-        omega: Sequence[float] | str,
-        about: Point = "com",
-        velocity: Sequence[float] | str | None = None,
+        self, omega: Sequence[float], about: Point = "com", velocity: Sequence[float] | None = None
     ) -> Momentum:
         """Angular momentum about a point and kinetic energy, for angular velocity ``omega``
         (body axes, rad/s).
@@ -347,14 +384,12 @@ class Body:
         from rbi.core.dynamics import angle_between_deg, angular_momentum_about_point, kinetic_energy
         from rbi.runs.values import vector_value
 
-        w = np.array(vector_value(omega, "--omega"))
+        w = np.array(vector_value(omega, "omega"))
         point = self.point(about)
         props = self._loaded.props
         com_from_point = props.center_of_mass - point
         v_com = (
-            np.cross(w, com_from_point)
-            if velocity is None
-            else np.array(vector_value(velocity, "--velocity"))
+            np.cross(w, com_from_point) if velocity is None else np.array(vector_value(velocity, "velocity"))
         )
         h = angular_momentum_about_point(props.inertia_about_com, props.mass, com_from_point, w, v_com)
         return Momentum(
@@ -373,42 +408,35 @@ class Body:
             f"{len(self._loaded.elements)} parts, {'pivot' if self._loaded.pivot is not None else 'free'}>"
         )
 
-    def _summary_rows(self) -> list[tuple[str, str, str]]:
+    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
         units = self.units
         inertia_unit = f"{units['mass']}·{units['length']}²"
         principal = self.principal()
         rows = [
             ("mass", units["mass"], f"{self.mass:.8g}"),
-            ("centre of mass", units["length"], _vector_text(self.center_of_mass)),
+            ("centre of mass", units["length"], vector_text(self.center_of_mass)),
         ]
         if self._loaded.pivot is not None:
-            rows.append(("pivot", units["length"], _vector_text(self.pivot)))
-        rows.append(("principal moments about CoM", inertia_unit, _vector_text(principal.moments)))
+            rows.append(("pivot", units["length"], vector_text(self.pivot)))
+        rows.append(("principal moments about CoM", inertia_unit, vector_text(principal.moments)))
         for i, axis in enumerate(principal.axes, start=1):
-            rows.append((f"principal axis {i}", "", _vector_text(axis)))
+            rows.append((f"principal axis {i}", "", vector_text(axis)))
         rows.append(("parts", "", str(len(self._loaded.elements))))
-        return rows
-
-    def __rich__(self):
-        return _rich_table(f"{self.name or self.path}", self._summary_rows())
-
-    def _repr_html_(self) -> str:
-        return _html_table(f"{self.name or self.path}", self._summary_rows())
+        return f"{self.name or self.path}", rows, QUANTITY_COLUMNS
 
 
-def _rotation(axes) -> np.ndarray:
-    """A body → world rotation matrix from ``axes`` (see `Body.inertia`)."""
-    from rbi.core.rotation import angle_is_kept, compose_world_rotations
+def _rotation(axes: Any) -> np.ndarray:
+    """A body → world rotation matrix from ``axes`` (see `Body.inertia`): a (3, 3) rotation
+    matrix, or (axis, degrees) pairs applied in order about world axes."""
+    from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, compose_world_rotations
 
-    array = np.asarray(axes, dtype=object)
-    if array.shape == (3, 3):
+    if isinstance(axes, str):
+        raise ArgumentError("axes", f"expected a 3x3 rotation matrix or (axis, degrees) pairs, got {axes!r}")
+    if np.shape(axes) == (3, 3) and not isinstance(np.asarray(axes, dtype=object)[0, 0], str):
         R = np.asarray(axes, dtype=float)
-        if not (
-            np.all(np.isfinite(R)) and np.allclose(R @ R.T, np.eye(3), atol=1e-9) and np.linalg.det(R) > 0
-        ):
-            raise SpecError(
-                "axes: a 3x3 matrix must be a rotation (orthonormal, determinant +1)", field="axes"
-            )
+        orthonormal = np.all(np.isfinite(R)) and np.allclose(R @ R.T, np.eye(3), atol=1e-9)
+        if not (orthonormal and np.linalg.det(R) > 0):
+            raise ArgumentError("axes", "a 3x3 matrix must be a rotation (orthonormal, determinant +1)")
         return R
     turns = []
     for turn in axes:
@@ -418,20 +446,22 @@ def _rotation(axes) -> np.ndarray:
         except (TypeError, ValueError):
             axis, degrees = "", float("nan")
         if axis not in ("x", "y", "z") or not np.isfinite(degrees):
-            raise SpecError(
-                f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {turn!r}",
-                field="axes",
+            raise ArgumentError(
+                "axes",
+                f"expected (axis, degrees) pairs with axis 'x', 'y' or 'z', e.g. [('y', 30)], got {turn!r}",
             )
         if not angle_is_kept(degrees):
-            raise SpecError(
-                f"axes: {degrees!r} degrees is too large to be a turn: rounding loses it", field="axes"
+            raise ArgumentError(
+                "axes",
+                f"{degrees!r} degrees is too large to be a turn: rounding loses it "
+                f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
             )
         turns.append((axis, np.radians(degrees)))
     return compose_world_rotations(turns)
 
 
 @dataclass(frozen=True, repr=False)
-class Trajectory:
+class Trajectory(TableRepr):
     """A simulated motion, sampled at equally spaced times (spec units).
 
     Attributes:
@@ -459,7 +489,7 @@ class Trajectory:
     def to_csv(self) -> str:
         """The trajectory as the CSV ``rbi simulate --out`` writes (columns t, qw, qx, qy, qz, wx,
         wy, wz, tilt_deg, precession_deg, energy; full precision)."""
-        from rbi.runs.simulation import trajectory_csv
+        from rbi.runs.run import trajectory_csv
 
         return trajectory_csv(self.columns())
 
@@ -486,27 +516,21 @@ class Trajectory:
             f"{self.summary.get('method', '')}>"
         )
 
-    def _summary_rows(self) -> list[tuple[str, str, str]]:
+    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
         s = self.summary
         final = s.get("final", {})
         rows = [
             ("scene", "", str(s.get("scene", ""))),
             ("method", "", str(s.get("method", ""))),
             ("duration, samples", "s", f"{float(self.t[-1]):g}, {self.t.size}"),
-            ("final q [w, x, y, z]", "", _vector_text(self.q[-1])),
-            ("final ω (body axes)", "rad/s", _vector_text(self.omega[-1])),
+            ("final q [w, x, y, z]", "", vector_text(self.q[-1])),
+            ("final ω (body axes)", "rad/s", vector_text(self.omega[-1])),
             (f"final tilt of {_axis_name(s.get('spin_axis'))}", "deg", f"{float(self.tilt_deg[-1]):.6g}"),
             ("tilt min … max", "deg", f"{np.min(self.tilt_deg):.6g} … {np.max(self.tilt_deg):.6g}"),
         ]
         if final and "energy" in s.get("conserved", {}):
             rows.append(("energy drift", "", f"{s['conserved']['energy']['drift']:.2g}"))
-        return rows
-
-    def __rich__(self):
-        return _rich_table(f"{self.summary.get('name') or 'trajectory'} — simulate", self._summary_rows())
-
-    def _repr_html_(self) -> str:
-        return _html_table(f"{self.summary.get('name') or 'trajectory'} — simulate", self._summary_rows())
+        return f"{s.get('name') or 'trajectory'} — simulate", rows, QUANTITY_COLUMNS
 
 
 def simulate(
@@ -550,42 +574,35 @@ def simulate(
             budget stops it in any case).
         progress: called now and then with the fraction done (0…1).
         spin_axis: the body-frame axis of ``spin`` and of the reported tilt and precession:
-            ``"x"``, ``"y"``, ``"z"`` or a direction (3,); None for the spec's ``spin_axis``,
+            ``"x"``, ``"y"``, ``"z"`` (``"-y"``: reversed) or a direction (3,); None for the spec's ``spin_axis``,
             else `Body.spin_axis`'s default (the symmetry axis, else z).
 
     Returns:
         The `Trajectory`.
 
     Raises:
-        SpecError: a setting is out of range (named as the CLI's option, e.g.
-            ``--duration: ...``), or the run cannot be made (no mass, too many steps,
-            overflow).
+        ValueError: a setting is out of range, named as this function's parameter
+            (``duration: must be ...``), or the run is estimated to exceed ``max_steps``.
+        SpecError: the run cannot be made (no mass, too many steps, overflow).
     """
-    from rbi.runs.prepare import prepare_run
-    from rbi.runs.settings import check_run_options, check_samples
-    from rbi.runs.simulation import simulate_run
+    from rbi.runs.run import check_samples, prepare_run
 
-    if not isinstance(body, Body):
-        raise SpecError(f"rbi.simulate: expected a Body from rbi.load (got {type(body).__name__})")
-    _numbers_only("rbi.simulate", spin=spin, tilt_deg=tilt_deg, duration=duration, gravity=gravity, rtol=rtol)
-    _numbers_only("rbi.simulate", integral=True, samples=samples, max_steps=max_steps)
-    check_run_options(method, spin, omega, tilt_deg, duration, tilt_axis, gravity, max_steps, rtol)
     check_samples(samples)
     prepared = prepare_run(
-        body._loaded,
+        _loaded(body, "body"),
         spin=spin,
         omega=omega,
-        tilt=tilt_deg,
+        tilt_deg=tilt_deg,
         tilt_axis=tilt_axis,
         gravity=gravity,
         duration=duration,
         method=method,
         rtol=rtol,
         max_steps=max_steps,
-        yes=not check_budget,
+        check_budget=check_budget,
         spin_axis=spin_axis,
     )
-    run = simulate_run(prepared, samples, error_estimate=error_estimate, progress=progress)
+    run = prepared.simulate(samples, error_estimate=error_estimate, progress=progress)
     columns = run.columns
     return Trajectory(
         t=columns["t"],
@@ -598,17 +615,7 @@ def simulate(
     )
 
 
-def _numbers_only(function: str, integral: bool = False, **values) -> None:
-    """TypeError naming the parameter when one of ``values`` (None allowed) is not a number
-    (``spin=True``, ``duration="4"``); with ``integral``, not a whole number."""
-    kind = numbers.Integral if integral else numbers.Real
-    for name, value in values.items():
-        if value is not None and (isinstance(value, bool) or not isinstance(value, kind)):
-            what = "a whole number" if integral else "a number"
-            raise TypeError(f"{function}: {name} must be {what} (got {type(value).__name__} {value!r})")
-
-
-def _axis_name(axis) -> str:
+def _axis_name(axis: Any) -> str:
     """``body y`` for a coordinate axis of the body frame, else ``the spin axis [x, y, z]``."""
     if axis is None:
         return "the spin axis"
@@ -616,22 +623,100 @@ def _axis_name(axis) -> str:
     for index, name in enumerate("xyz"):
         if axis[index] == 1.0:
             return f"body {name}"
-    return f"the spin axis {_vector_text(axis)}"
+    return f"the spin axis {vector_text(axis)}"
 
 
-def _spin_axis_text(axis) -> str | None:
-    """A spin axis as `sweep`'s settings spell it: a name, or ``"X,Y,Z"``."""
-    if axis is None or isinstance(axis, str):
-        return axis
-    return ",".join(repr(float(c)) for c in axis)
+def _loaded(body: Any, parameter: str) -> Any:
+    """The loaded body behind a `Body`; TypeError naming ``parameter`` for anything else."""
+    if not isinstance(body, Body):
+        raise TypeError(f"{parameter}: expected a Body from rbi.load (got {type(body).__name__})")
+    return body._loaded
+
+
+class SweepTable(TableRepr):
+    """The rows of a sweep, one per run in run order: ``len(table)`` runs, each column by name
+    as a numpy array (``table["max_tilt_deg"]``; float columns hold NaN where a failed run has
+    no value, ``status`` holds text), ``table.columns`` their names, ``table.records()`` the
+    rows as dicts (as ``rbi sweep --format json`` prints ``runs``), ``table.to_pandas()``.
+
+    Attributes:
+        columns: the column names: ``run``, the swept values (``spin``, ``tilt_deg``, each
+            varied path), then the results.
+        name, units, warnings: of the nominal body.
+        failed: how many runs failed (their ``status`` says why).
+        spread: with ``mass_properties``, each quantity's percentiles (``p0``, ``p50``,
+            ``p100``...) and standard deviation over the ok runs; else None.
+    """
+
+    def __init__(self, columns: Sequence[str], rows: Sequence[Sequence[Any]], **about: Any) -> None:
+        self.columns: list[str] = list(columns)
+        self._rows = [list(row) for row in rows]
+        self.name: str | None = about.get("name")
+        self.units: dict[str, str] = dict(about.get("units") or {})
+        self.warnings: list[str] = list(about.get("warnings") or ())
+        self.spread: dict[str, dict[str, float]] | None = about.get("spread")
+        self.failed = sum(1 for row in self._rows if row[-1] != "ok")
+
+    def __len__(self) -> int:
+        return len(self._rows)
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.columns)
+
+    def keys(self) -> list[str]:
+        """The column names (so ``dict(table)`` maps each to its array)."""
+        return list(self.columns)
+
+    def __getitem__(self, column: str) -> np.ndarray:
+        if column not in self.columns:
+            raise KeyError(f"{column!r}: no such column (columns: {', '.join(self.columns)})")
+        i = self.columns.index(column)
+        values = [row[i] for row in self._rows]
+        if any(isinstance(v, str) for v in values):
+            return np.array(values, dtype=object)
+        if column in ("run", "steps") and None not in values:
+            return np.array(values, dtype=np.int64)
+        return np.array([np.nan if v is None else v for v in values], dtype=float)
+
+    def records(self) -> list[dict[str, Any]]:
+        """One dict per run, column name → value (None where a failed run has none)."""
+        return [dict(zip(self.columns, row)) for row in self._rows]
+
+    def to_pandas(self) -> Any:
+        """The table as a :class:`pandas.DataFrame` (needs pandas: ``pip install pandas``)."""
+        try:
+            import pandas
+        except ImportError:
+            raise ImportError(
+                "SweepTable.to_pandas needs pandas, which is not installed: pip install pandas"
+            ) from None
+        return pandas.DataFrame(self.records(), columns=self.columns)
+
+    def __repr__(self) -> str:
+        return f"<rbi.SweepTable {len(self)} runs × {len(self.columns)} columns, {self.failed} failed>"
+
+    def _table(self) -> tuple[str, list[list[str]], list[str]]:
+        shown = self._rows if len(self._rows) <= 20 else self._rows[:10] + [None] + self._rows[-10:]
+        rows = [
+            ["…"] * len(self.columns)
+            if row is None
+            else [v if isinstance(v, str) else "—" if v is None else f"{v:.6g}" for v in row]
+            for row in shown
+        ]
+        return f"{self.name or 'sweep'} — {len(self)} runs, {self.failed} failed", rows, self.columns
+
+
+if TYPE_CHECKING:
+    AxisValues = float | Sequence[float] | np.ndarray | Grid | Normal | Uniform
+    """A sweep axis: one value, the grid's values, or a draw per run."""
 
 
 def sweep(
     body: Body,
     *,
-    spin: float | str | Sequence[float] | None = None,
-    tilt: float | str | Sequence[float] | None = None,
-    vary: dict[str, Any] | Sequence[str] | None = None,
+    spin: AxisValues = 0.0,
+    tilt_deg: AxisValues = 0.0,
+    vary: Mapping[str, AxisValues] | None = None,
     runs: int = 1,
     seed: int = 0,
     duration: float = 4.0,
@@ -640,24 +725,24 @@ def sweep(
     gravity: float | None = None,
     tilt_axis: str = "y",
     max_steps: int | None = None,
+    spin_axis: str | Sequence[float] | None = None,
     workers: int | None = None,
     mass_properties: bool = False,
     check_budget: bool = True,
-    spin_axis: str | Sequence[float] | None = None,
-) -> list[dict]:
+) -> SweepTable:
     """Many simulations of one body — a grid over spin, tilt and numbers of the spec, or Monte
     Carlo draws — as ``rbi sweep`` runs them (on every core). One failed run never stops the
     others: its row says why in ``status``.
 
     Args:
         body: the `Body` (its spec is varied; files it names are read beside its path).
-        spin: initial spin about the spin axis, rad/s: one value, ``(start, stop, count)`` or
-            the text ``"START:STOP:COUNT"``; None for 0.
-        tilt: initial tilt, degrees, given the same way; None for 0.
-        vary: numbers of the spec to vary: ``{"parts.bolt.mass": (0.01, 0.03, 5)}`` (a grid),
-            ``{"parts.bolt.position[0]": "normal(0.04, 0.001)"}`` or ``"uniform(LOW,HIGH)"``
-            (draws, with ``runs``); or a list of ``"PATH=RANGE"`` texts as ``--vary`` takes.
-        runs: Monte Carlo draws of every ``normal``/``uniform`` variation per grid point.
+        spin: initial spin about the spin axis, rad/s: one number, or the grid's values (a
+            sequence of numbers, or ``Grid(start, stop, count)`` for evenly spaced ones).
+        tilt_deg: the nudge at t = 0, degrees, given the same way.
+        vary: numbers of the spec to vary, path → values given as ``spin``'s, or a draw per
+            run: ``{"parts.bolt.mass": [0.01, 0.02, 0.03]}``,
+            ``{"parts.bolt.position[0]": Normal(0.04, 0.001)}`` or ``Uniform(low, high)``.
+        runs: Monte Carlo draws of every `Normal`/`Uniform` variation per grid point.
         seed: seed of the draws (same seed, same rows).
         duration, samples, rtol, gravity, tilt_axis, max_steps, spin_axis: as `simulate`
             (per run; one spin axis for every run, the nominal body's unless given).
@@ -668,24 +753,25 @@ def sweep(
             of one core) before it starts.
 
     Returns:
-        One dict per run, in run order: ``run``, the swept values (``spin``, ``tilt_deg``, each
-        varied path) and the results — ``max_tilt_deg``, ``final_tilt_deg``, ``min_tilt_deg``,
+        A `SweepTable`: ``run``, the swept values (``spin``, ``tilt_deg``, each varied path)
+        and the results — ``max_tilt_deg``, ``final_tilt_deg``, ``min_tilt_deg``,
         ``precession_rate_deg_s``, ``energy_drift``, ``steps``, ``status`` (``"ok"`` or why the
         run failed); with ``mass_properties``, ``mass``, ``com_*``, ``moment_*`` and
         ``axis_*_tilt_deg`` instead.
 
     Raises:
-        SpecError: a setting or a variation is invalid (named as the CLI's option), or the
-            sweep has more than 100,000 runs (``rbi sweep --out`` streams larger ones to a file).
+        ValueError, TypeError: a setting or a variation is invalid (named as this function's
+            parameter), or the sweep has more than 100,000 runs.
     """
-    from rbi.sweep.study import Study, SweepSettings, check_mass_properties, check_settings
+    from rbi.sweeps.study import Study, SweepSettings, check_settings
 
-    if not isinstance(body, Body):
-        raise SpecError(f"rbi.sweep: expected a Body from rbi.load (got {type(body).__name__})")
+    loaded = _loaded(body, "body")
+    if vary is not None and not isinstance(vary, Mapping):
+        raise TypeError(f"vary: expected a mapping of spec paths to values, got {type(vary).__name__}")
     settings = SweepSettings(
-        spin=_range_text(spin, "--spin"),
-        tilt=_range_text(tilt, "--tilt"),
-        vary=_vary_texts(vary),
+        spin=spin,
+        tilt_deg=tilt_deg,
+        vary=tuple((str(path), value) for path, value in (vary or {}).items()),
         runs=runs,
         seed=seed,
         duration=duration,
@@ -696,13 +782,17 @@ def sweep(
         max_steps=max_steps,
         workers=workers,
         mass_properties=mass_properties,
-        yes=not check_budget,
-        spin_axis=_spin_axis_text(spin_axis),
+        check_budget=check_budget,
+        spin_axis=spin_axis,
     )
     check_settings(settings)
-    check_mass_properties(settings)
-    study = Study(body.path, body._raw, settings)
-    return [dict(zip(study.columns, row)) for row in study.run()]
+    study = Study(loaded.path, body._raw, settings)
+    rows = study.run() or []
+    nominal = study.nominal
+    spread = study.spread(rows) if mass_properties else None
+    return SweepTable(
+        study.columns, rows, name=nominal.name, units=nominal.units, warnings=nominal.warnings, spread=spread
+    )
 
 
 def audit(
@@ -766,62 +856,14 @@ def audit(
     )
 
 
-def __getattr__(name: str):
-    if name == "AuditReport":  # imported on first use: the audit's modules stay unloaded for `import rbi.api`
+def __getattr__(name: str) -> Any:
+    # imported on first use: `rbi inertia` loads neither the audit's modules nor the sweep's
+    if name == "AuditReport":
         from rbi.robot.audit import AuditReport
 
         return AuditReport
+    if name in ("Grid", "Normal", "Uniform"):
+        from rbi.sweeps import plan
+
+        return getattr(plan, name)
     raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")
-
-
-def _range_text(value, option: str) -> str | None:
-    """A sweep axis as ``--spin`` takes it: one value, ``(start, stop, count)`` or the text."""
-    if value is None or isinstance(value, str):
-        return value
-    if isinstance(value, (int, float, np.floating, np.integer)):
-        return repr(float(value))
-    try:
-        start, stop, count = value
-        return f"{float(start)!r}:{float(stop)!r}:{int(count)}"
-    except (TypeError, ValueError):
-        raise SpecError(
-            f"{option}: expected a number, (start, stop, count) or 'START:STOP:COUNT' (got {value!r})"
-        ) from None
-
-
-def _vary_texts(vary) -> tuple[str, ...]:
-    if vary is None:
-        return ()
-    if isinstance(vary, dict):
-        return tuple(f"{path}={_range_text(value, f'--vary {path}')}" for path, value in vary.items())
-    return tuple(vary)
-
-
-def _vector_text(v) -> str:
-    return "[" + ", ".join(f"{float(x) + 0.0:.6g}" for x in np.asarray(v).ravel()) + "]"
-
-
-def _rich_table(title: str, rows):
-    from rich.table import Table
-    from rich.text import Text
-
-    table = Table(title=Text(title))  # Text: a name holding [brackets] is shown, not read as markup
-    table.add_column("quantity")
-    table.add_column("unit")
-    table.add_column("value", justify="right")
-    for row in rows:
-        table.add_row(*(Text(cell) for cell in row))
-    return table
-
-
-def _html_table(title: str, rows) -> str:
-    from html import escape
-
-    body = "".join(
-        f'<tr><td>{escape(a)}</td><td>{escape(b)}</td><td style="text-align:right">{escape(c)}</td></tr>'
-        for a, b, c in rows
-    )
-    return (
-        f"<table><caption>{escape(title)}</caption>"
-        f"<thead><tr><th>quantity</th><th>unit</th><th>value</th></tr></thead><tbody>{body}</tbody></table>"
-    )

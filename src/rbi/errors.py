@@ -10,6 +10,8 @@ layer and the API all raise the same type.
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 
 class SpecError(Exception):
     """Bad input from the user. ``str(self)`` is the one-line message the CLI prints (exit 2).
@@ -29,3 +31,61 @@ class SpecError(Exception):
 InputError = SpecError
 """The same class as :class:`SpecError` (a traceback and ``repr`` say ``SpecError``, the name
 users of ``rbi`` catch)."""
+
+
+class ArgumentError(SpecError, ValueError):
+    """A bad argument of a public function (``rbi.simulate(body, duration=-1)``):
+    a :class:`ValueError` (and a :class:`SpecError`, so the CLI prints it on one line, exit 2).
+
+    ``parameters`` names the argument(s) as the Python API spells them (``duration``,
+    ``spin_axis``; none: the message does not start with a name); ``item`` a key inside one (a
+    varied spec path); ``detail`` says what is wrong and may name parameters as ``{name}`` (or
+    ``{name=VALUE}``); ``file``, when given, starts the message. ``str(error)`` speaks the API's names
+    (``duration: must be ...``); :meth:`named` spells them as a caller's own (the CLI's options).
+    """
+
+    def __init__(
+        self,
+        parameters: str | tuple[str, ...],
+        detail: str,
+        *,
+        item: str | None = None,
+        file: str | None = None,
+    ) -> None:
+        self.parameters = (parameters,) if isinstance(parameters, str) else tuple(parameters)
+        self.detail = detail
+        self.item = item
+        super().__init__(
+            self.named(api_name), file=file, field=self.parameters[0] if self.parameters else None
+        )
+        self.where = file
+
+    def __str__(self) -> str:
+        return self.named(api_name)
+
+    def named(self, name: Callable[[str], str]) -> str:
+        """The message with each parameter spelled ``name(parameter)``; an ``item`` follows its
+        parameter as ``name(parameter + "[]")`` formats it (``{}`` stands for the item)."""
+        detail = self.detail.format_map(_Names(name))
+        where = f"{self.where}: " if getattr(self, "where", None) else ""
+        if not self.parameters:
+            return where + detail
+        if self.item is None:
+            head = " and ".join(name(p) for p in self.parameters)
+        else:
+            head = name(self.parameters[0] + "[]").format(self.item)
+        return f"{where}{head}: {detail}"
+
+
+def api_name(parameter: str) -> str:
+    """How the Python API spells a parameter in messages (an item as ``vary['PATH']``)."""
+    return parameter[:-2] + "[{!r}]" if parameter.endswith("[]") else parameter
+
+
+class _Names(dict):
+    def __init__(self, name: Callable[[str], str]) -> None:
+        super().__init__()
+        self.name = name
+
+    def __missing__(self, key: str) -> str:
+        return self.name(key)

@@ -1,5 +1,6 @@
-"""rbi.load takes a path, spec text, a dict or "-" (standard input); bad input raises
-rbi.SpecError whose str() is the line the CLI prints."""
+"""rbi.load takes a path (a str is always one; "-" is standard input) or a dict, rbi.loads
+takes YAML or JSON text; bad input raises rbi.SpecError whose str() is the line the CLI
+prints."""
 
 from __future__ import annotations
 
@@ -27,7 +28,8 @@ def same_body(a, b):
 def test_path_text_dict_and_stdin_give_the_same_body(monkeypatch):
     from_path = rbi.load(TOP)
     text = TOP.read_text()
-    from_text = rbi.load(text)
+    from_text = rbi.loads(text)
+    assert rbi.loads(text.encode()).mass == from_text.mass
     from_dict = rbi.load(yaml.safe_load(text))
     monkeypatch.setattr(sys, "stdin", io.StringIO(text))
     from_stdin = rbi.load("-")
@@ -39,7 +41,17 @@ def test_path_text_dict_and_stdin_give_the_same_body(monkeypatch):
 
 
 def test_json_text_is_a_spec_too():
-    same_body(rbi.load(json.dumps(yaml.safe_load(TOP.read_text())) + "\n"), rbi.load(TOP))
+    same_body(rbi.loads(json.dumps(yaml.safe_load(TOP.read_text()))), rbi.load(TOP))
+
+
+def test_a_str_is_always_a_path():
+    text = TOP.read_text()
+    with pytest.raises(ValueError, match=r"^source: is text, not a path .* rbi.loads$"):
+        rbi.load(text)
+    with pytest.raises(rbi.SpecError, match="no such file"):
+        rbi.load("top.yaml is not here.yaml")
+    with pytest.raises(TypeError, match=r"^text: "):
+        rbi.loads(TOP)
 
 
 @pytest.mark.parametrize(
@@ -66,7 +78,7 @@ def test_spec_error_is_the_cli_error_line(tmp_path, args, make):
 def test_spec_error_names_file_part_and_field_of_text():
     text = "parts:\n  - name: cone\n    shape: cone\n    mass: 1\n    radius: -1\n    apex: [0, 0, 0]\n    base: [0, 0, 1]\n"
     with pytest.raises(rbi.SpecError) as caught:
-        rbi.load(text)
+        rbi.loads(text)
     message = str(caught.value)
     assert message.startswith("<string>: ") and "cone" in message and "radius" in message
     assert "\n" not in message
@@ -77,7 +89,7 @@ def test_spec_error_names_file_part_and_field_of_text():
 def test_a_dict_that_is_not_a_spec():
     with pytest.raises(rbi.SpecError, match=r"^<dict>: "):
         rbi.load({"parts": "nothing"})
-    with pytest.raises(rbi.SpecError):
+    with pytest.raises(TypeError, match=r"^source: expected a path"):
         rbi.load(42)
 
 
@@ -85,16 +97,16 @@ def test_files_a_spec_names_are_read_beside_it_or_beside_the_caller(monkeypatch,
     bracket = rbi.load(BODIES / "bracket.yaml")  # names the mesh bracket.stl beside it
     text = (BODIES / "bracket.yaml").read_text()
     monkeypatch.chdir(BODIES)
-    assert rbi.load(text).mass == bracket.mass  # text: files beside the current folder
+    assert rbi.loads(text).mass == bracket.mass  # text: files beside the current folder
     monkeypatch.chdir(tmp_path)
     with pytest.raises(
         rbi.SpecError, match=r"^<string>: parts\[0\] \(bracket\): file: bracket.stl: no such file$"
     ):
-        rbi.load(text)
+        rbi.loads(text)
     outside = text.replace("file: bracket.stl", f"file: {BODIES / 'bracket.stl'}")
     with pytest.raises(rbi.SpecError, match="leaves the spec's folder"):
-        rbi.load(outside)
-    assert rbi.load(outside, allow_outside_paths=True).mass == bracket.mass
+        rbi.loads(outside)
+    assert rbi.loads(outside, allow_outside_paths=True).mass == bracket.mass
 
 
 def test_several_problems_in_text_or_a_dict_are_counted_without_a_command_to_run():

@@ -27,7 +27,7 @@ def top():
     ],
 )
 def test_simulate_refuses_a_value_that_is_not_a_number_naming_it(top, settings, name):
-    with pytest.raises(TypeError, match=rf"rbi\.simulate: {name} must be"):
+    with pytest.raises(TypeError, match=rf"^{name}: must be"):
         rbi.simulate(top, **{"duration": 0.01, **settings})
 
 
@@ -39,7 +39,7 @@ def test_an_integer_too_long_to_print_is_a_spec_error():
 def test_a_turn_lost_to_rounding_is_refused(top):
     with pytest.raises(rbi.SpecError, match="too large to be a turn"):
         top.inertia(axes=[("y", 1e300)])
-    with pytest.raises(rbi.SpecError, match="--tilt: .*too large to be a turn"):
+    with pytest.raises(ValueError, match="^tilt_deg: .*too large to be a turn"):
         rbi.simulate(top, spin=10.0, tilt_deg=1e300, duration=0.01)
     assert top.inertia(axes=[("y", 720.0)]) == pytest.approx(top.inertia(), abs=1e-15)
 
@@ -68,4 +68,4 @@ def test_a_lone_surrogate_in_a_dict_or_text_is_a_spec_error():
     with pytest.raises(rbi.SpecError, match=r"<dict>: name: holds a lone surrogate \\ud800"):
         rbi.load({"name": "a\ud800", "parts": [part]})
     with pytest.raises(rbi.SpecError, match=r"parts\[0\]\.name: holds a lone surrogate"):
-        rbi.load('{"parts": [{"name": "\\udfff", "shape": "point", "mass": 1, "position": [0, 0, 0]}]}\n')
+        rbi.loads('{"parts": [{"name": "\\udfff", "shape": "point", "mass": 1, "position": [0, 0, 0]}]}\n')

@@ -60,27 +60,43 @@ def test_the_motion_obeys_its_invariants(run):
 
 
 @pytest.mark.parametrize(
-    "settings, option",
+    "settings, named, cli",
     [
-        ({"duration": -1.0}, "--duration"),
-        ({"spin": 1.0, "omega": [0, 0, 1]}, "--spin and --omega"),
-        ({"samples": 0}, "--samples"),
-        ({"tilt_axis": "z"}, "--tilt-axis"),
-        ({"method": "euler"}, "--method"),
+        ({"duration": -1.0}, "duration: ", ["--duration", "-1"]),
+        ({"spin": 1.0, "omega": [0, 0, 1]}, "spin and omega: ", ["--spin", "1", "--omega", "0,0,1"]),
+        ({"samples": 0}, "samples: ", ["--samples", "0"]),
+        ({"tilt_axis": "z"}, "tilt_axis: ", ["--tilt-axis", "z"]),
+        ({"method": "euler"}, "method: ", ["--method", "euler"]),
+        ({"spin_axis": "w"}, "spin_axis: ", ["--spin-axis", "w"]),
+        ({"tilt_deg": float("nan")}, "tilt_deg: ", ["--tilt", "nan"]),
     ],
 )
-def test_bad_settings_raise_the_cli_error_line(settings, option):
+def test_bad_settings_raise_a_value_error_naming_the_parameter(settings, named, cli):
+    """The API names its own parameter; the CLI says the same with its option's name."""
     body = rbi.load(BODIES / "top_bolted.yaml")
-    with pytest.raises(rbi.SpecError) as caught:
+    with pytest.raises(ValueError) as caught:
         rbi.simulate(body, **settings)
-    assert str(caught.value).startswith(option)
-    cli = {
-        "duration": ["--duration", "-1"],
-        "spin": ["--spin", "1", "--omega", "0,0,1"],
-        "samples": ["--samples", "0"],
-        "tilt_axis": ["--tilt-axis", "z"],
-        "method": ["--method", "euler"],
-    }[next(iter(settings))]
+    message = str(caught.value)
+    assert message.startswith(named) and "--" not in message
     proc = run_rbi("simulate", BODIES / "top_bolted.yaml", *cli)
     assert proc.returncode == 2
-    assert proc.stderr.replace("-1.0", "-1") == f"rbi: {caught.value}\n".replace("-1.0", "-1")
+    option = " and ".join(c for c in cli if c.startswith("--"))
+    assert proc.stderr.startswith(f"rbi: {option}: ") and proc.stderr.endswith(
+        message.split(": ", 1)[1][-20:] + "\n"
+    )
+
+
+def test_text_is_not_a_vector_and_a_body_must_be_a_body():
+    body = rbi.load(BODIES / "top_bolted.yaml")
+    with pytest.raises(ValueError, match=r"^omega: expected 3 finite numbers"):
+        rbi.simulate(body, omega="0,0,1")
+    with pytest.raises(TypeError, match=r"^body: expected a Body"):
+        rbi.simulate(str(BODIES / "top_bolted.yaml"))
+
+
+def test_a_run_past_the_budget_names_the_parameters_that_raise_it():
+    body = rbi.load(BODIES / "top_bolted.yaml")
+    with pytest.raises(ValueError) as caught:
+        rbi.simulate(body, spin=200.0, max_steps=100)
+    assert "max_steps" in str(caught.value) and "check_budget=False" in str(caught.value)
+    assert "--" not in str(caught.value)

@@ -1,8 +1,12 @@
-"""rbi.sweep gives the rows `rbi sweep --format json` prints for the same sweep."""
+"""rbi.sweep takes numbers (the grid's values) and gives the rows `rbi sweep --format json`
+prints for the same sweep, as a table: len(), columns as numpy arrays, .to_pandas()."""
 
 from __future__ import annotations
 
+import inspect
+import io
 import json
+import sys
 
 import numpy as np
 import pytest
@@ -30,34 +34,102 @@ def cli_runs(*args):
 
 
 def test_grid_rows_equal_the_cli(bolted):
-    rows = rbi.sweep(bolted, spin=(150.0, 260.0, 3), tilt="0.01:1:2", duration=0.3, workers=1)
-    assert rows == cli_runs("--spin", "150:260:3", "--tilt", "0.01:1:2", "--duration", "0.3")
-    assert [r["spin"] for r in rows[::2]] == [150.0, 205.0, 260.0]
-    assert all(r["status"] == "ok" for r in rows)
+    table = rbi.sweep(
+        bolted, spin=[150.0, 205.0, 260.0], tilt_deg=rbi.Grid(0.01, 1, 2), duration=0.3, workers=1
+    )
+    assert table.records() == cli_runs("--spin", "150:260:3", "--tilt", "0.01:1:2", "--duration", "0.3")
+    assert len(table) == 6 and table.failed == 0
+    np.testing.assert_array_equal(table["spin"], [150.0, 150.0, 205.0, 205.0, 260.0, 260.0])
+    np.testing.assert_array_equal(table["tilt_deg"], [0.01, 1.0] * 3)
+    assert table["max_tilt_deg"].dtype == float and table["run"].tolist() == list(range(6))
+    assert list(table["status"]) == ["ok"] * 6
+    assert set(dict(table)) == set(table.columns)
 
 
 def test_a_sweep_row_is_the_single_run(bolted):
     # the same run through rbi.simulate: the largest and final tilt agree
-    row = rbi.sweep(bolted, spin=200.0, tilt=0.5, duration=0.3, workers=1)[0]
+    table = rbi.sweep(bolted, spin=200.0, tilt_deg=0.5, duration=0.3, workers=1)
     run = rbi.simulate(bolted, spin=200.0, tilt_deg=0.5, duration=0.3)
-    assert row["max_tilt_deg"] == pytest.approx(float(np.max(run.tilt_deg)), rel=1e-9)
-    assert row["final_tilt_deg"] == pytest.approx(float(run.tilt_deg[-1]), rel=1e-9)
+    assert table["max_tilt_deg"][0] == pytest.approx(float(np.max(run.tilt_deg)), rel=1e-9)
+    assert table["final_tilt_deg"][0] == pytest.approx(float(run.tilt_deg[-1]), rel=1e-9)
+
+
+def test_a_sleeping_top_stays_up_and_a_slow_one_falls():
+    """The chapter's top (a 0.4 kg cone, r 0.04 m, h 0.06 m, on its apex, and a 0.1 kg stem,
+    r 0.008 m, from 0.06 to 0.10 m) sleeps above ω_c = 2√(I₁ m g l)/I₃ (closed forms of the
+    moments about the apex): at 2 ω_c a 1° nudge stays near 1°, at ω_c / 2 the top falls over."""
+    I3 = 0.3 * 0.4 * 0.04**2 + 0.5 * 0.1 * 0.008**2
+    I1 = 0.4 * (0.6 * 0.06**2 + 0.15 * 0.04**2) + 0.1 * (0.008**2 / 4 + 0.04**2 / 12 + 0.08**2)
+    m, l = 0.5, (0.4 * 0.045 + 0.1 * 0.08) / 0.5
+    critical = 2 * np.sqrt(I1 * m * 9.81 * l) / I3
+    top = rbi.load(BODIES / "top.yaml")  # /work/shared/cases/top.yaml
+    table = rbi.sweep(top, spin=[critical / 2, 2 * critical], tilt_deg=1.0, duration=2.0, workers=1)
+    slow, fast = table["max_tilt_deg"]
+    assert fast < 1.5 and slow > 30.0
 
 
 def test_mass_property_draws_equal_the_cli(bolted):
-    rows = rbi.sweep(
-        bolted, mass_properties=True, vary={"parts.bolt.mass": "uniform(0.01,0.03)"}, runs=5, seed=3
+    table = rbi.sweep(
+        bolted, mass_properties=True, vary={"parts.bolt.mass": rbi.Uniform(0.01, 0.03)}, runs=5, seed=3
     )
-    assert rows == cli_runs(
+    assert table.records() == cli_runs(
         "--mass-properties", "--vary", "parts.bolt.mass=uniform(0.01,0.03)", "--runs", "5", "--seed", "3"
     )
     # mass = body without the bolt + the drawn bolt mass
-    for r in rows:
-        assert r["mass"] == pytest.approx(bolted.mass - 0.02 + r["parts.bolt.mass"], rel=1e-12)
+    np.testing.assert_allclose(table["mass"], bolted.mass - 0.02 + table["parts.bolt.mass"], rtol=1e-12)
+    assert table.spread["mass"]["p0"] == pytest.approx(float(np.min(table["mass"])), rel=1e-12)
 
 
-def test_bad_variation_raises_the_cli_line(bolted):
-    with pytest.raises(rbi.SpecError) as caught:
-        rbi.sweep(bolted, vary=["parts.nope.mass=1:2:2"])
+def test_bad_variation_names_the_parameter_and_the_cli_its_option(bolted):
+    with pytest.raises(ValueError) as caught:
+        rbi.sweep(bolted, vary={"parts.nope.mass": [1.0, 2.0]})
+    message = str(caught.value)
+    assert "vary['parts.nope.mass']: " in message and "--" not in message
     proc = run_rbi("sweep", BODIES / "top_bolted.yaml", "--vary", "parts.nope.mass=1:2:2")
-    assert proc.returncode == 2 and proc.stderr == f"rbi: {caught.value}\n"
+    assert proc.returncode == 2 and "--vary parts.nope.mass: " in proc.stderr
+    assert proc.stderr.endswith(message.split(": ")[-1] + "\n")
+
+
+@pytest.mark.parametrize(
+    "settings, named",
+    [
+        ({"spin": "150:260:3"}, "spin: "),
+        ({"tilt_deg": [1.0, float("nan")]}, "tilt_deg: "),
+        ({"runs": 0}, "runs: "),
+        ({"runs": 3}, "runs: "),
+        ({"samples": 0}, "samples: "),
+        ({"vary": ["parts.bolt.mass=1:2:2"]}, "vary: "),
+        ({"mass_properties": True, "spin": 200.0}, "mass_properties: "),
+    ],
+)
+def test_bad_settings_name_the_parameter(bolted, settings, named):
+    with pytest.raises((TypeError, ValueError)) as caught:
+        rbi.sweep(bolted, **settings)
+    assert str(caught.value).startswith(named) and "--" not in str(caught.value)
+
+
+def test_the_signature_is_real_and_the_table_shows_itself(bolted):
+    parameters = inspect.signature(rbi.sweep).parameters
+    assert {"spin", "tilt_deg", "vary", "runs", "duration"} <= set(parameters)
+    assert rbi.sweep.__doc__.startswith("Many simulations of one body")
+    table = rbi.sweep(bolted, spin=[150.0, 250.0], duration=0.2, workers=1)
+    html = table._repr_html_()
+    assert html.startswith("<table>") and "<th>max_tilt_deg</th>" in html and ">ok<" in html
+    from rich.console import Console
+
+    console = Console(width=200, record=True, file=io.StringIO())
+    console.print(table)
+    text = console.export_text()
+    assert "max_tilt_deg" in text and "250" in text and "bolted-top — 2 runs, 0 failed" in text
+
+
+def test_to_pandas_or_a_clear_error(bolted, monkeypatch):
+    table = rbi.sweep(bolted, spin=[150.0, 250.0], duration=0.2, workers=1)
+    monkeypatch.setitem(sys.modules, "pandas", None)
+    with pytest.raises(ImportError, match="pip install pandas"):
+        table.to_pandas()
+    monkeypatch.undo()
+    pandas = pytest.importorskip("pandas")
+    frame = table.to_pandas()
+    assert isinstance(frame, pandas.DataFrame) and list(frame.columns) == table.columns
+    np.testing.assert_array_equal(frame["max_tilt_deg"].to_numpy(), table["max_tilt_deg"])

@@ -185,7 +185,7 @@ def test_parquet_rows_equal_csv_rows(tmp_path):
 
 
 def test_interrupted_sweep_keeps_finished_runs_and_resume_completes_it(tmp_path, monkeypatch):
-    from rbi.sweep import runs
+    from rbi.sweeps import runs
 
     args = [BOLTED, "--spin", "150:250:40", "--duration", "0.2", "--workers", "1"]
     reference = tmp_path / "all.csv"
@@ -200,7 +200,7 @@ def test_interrupted_sweep_keeps_finished_runs_and_resume_completes_it(tmp_path,
         return real(job, a, b, threads)
 
     monkeypatch.setattr(runs, "run_chunk", interrupted_after_two_chunks)
-    monkeypatch.setattr("rbi.sweep.runs.SweepJob.chunk_size", lambda self, threads: 8)
+    monkeypatch.setattr("rbi.sweeps.runs.SweepJob.chunk_size", lambda self, threads: 8)
     proc = rbi("sweep", *args, "--out", out)
     assert proc.returncode == 130 and "--resume" in proc.stderr
     kept = rows_of(out)
@@ -215,7 +215,7 @@ def test_interrupted_sweep_keeps_finished_runs_and_resume_completes_it(tmp_path,
 
 def test_resume_with_other_settings_is_refused(tmp_path, monkeypatch):
     out = tmp_path / "s.csv"
-    from rbi.sweep import store
+    from rbi.sweeps import store
 
     store.settings_path(out).write_text(json.dumps({"spin": "elsewhere"}))
     out.write_text("run\n")

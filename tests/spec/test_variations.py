@@ -53,7 +53,7 @@ def test_paths_reach_numbers_by_part_name_index_and_component(raw):
 def test_bad_paths_name_the_path_and_what_is_there(raw, path, words):
     with pytest.raises(InputError) as info:
         resolve(raw, path)
-    assert f"--vary {path}:" in str(info.value)
+    assert str(info.value).startswith(f"vary[{path!r}]: ")
     for word in words:
         assert word in str(info.value), str(info.value)
 

@@ -17,7 +17,6 @@ import time
 import urllib.request
 
 import pytest
-
 from tests.conftest import BODIES, one_line_exit_2
 from tests.conftest import run_rbi_inprocess as rbi
 
@@ -141,7 +140,7 @@ def test_a_local_cluster_lets_no_credential_less_client_in_and_ctrl_c_is_one_lin
 
 @pytest.fixture
 def quick_connect(monkeypatch):
-    from rbi.sweep import execute
+    from rbi.sweeps import execute
 
     assert execute.CONNECT_SECONDS + 2 < 30  # the promise: exit 2 within 30 s
     monkeypatch.setattr(execute, "CONNECT_SECONDS", 1.0)
@@ -200,7 +199,7 @@ def test_an_address_where_no_scheduler_answers_is_exit_2_in_time(quick_connect, 
 def test_more_workers_than_cores_are_clamped_with_one_line(monkeypatch):
     """rbi 2 passed --workers 1024 to the OpenMP kernel as threads (libgomp aborts when it
     cannot start them)."""
-    from rbi.sweep import execute
+    from rbi.sweeps import execute
 
     seen = []
     real = execute.run_local

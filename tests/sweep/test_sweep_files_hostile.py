@@ -22,11 +22,11 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-
-from rbi.files import safe
-from rbi.sweep import store
 from tests.conftest import BODIES, one_line_exit_2
 from tests.conftest import run_rbi_inprocess as rbi
+
+from rbi.files import safe
+from rbi.sweeps import store
 
 BOLTED = BODIES / "top_bolted.yaml"
 ARGS = [BOLTED, "--spin", "150:250:24", "--duration", "0.1", "--workers", "1"]
@@ -62,7 +62,7 @@ def snapshot(folder: Path) -> dict[str, bytes | str]:
 
 def interrupt_after(monkeypatch, chunks: int, chunk_size: int = 8):
     """Make the next sweep stop with Ctrl-C after ``chunks`` chunks of ``chunk_size`` runs."""
-    from rbi.sweep import runs
+    from rbi.sweeps import runs
 
     real, calls = runs.run_chunk, []
 
@@ -73,7 +73,7 @@ def interrupt_after(monkeypatch, chunks: int, chunk_size: int = 8):
         return real(job, a, b, threads)
 
     monkeypatch.setattr(runs, "run_chunk", interrupted)
-    monkeypatch.setattr("rbi.sweep.runs.SweepJob.chunk_size", lambda self, threads: chunk_size)
+    monkeypatch.setattr("rbi.sweeps.runs.SweepJob.chunk_size", lambda self, threads: chunk_size)
     return lambda: monkeypatch.setattr(runs, "run_chunk", real)
 
 
@@ -514,7 +514,7 @@ def test_a_full_disk_mid_sweep_is_one_line_and_keeps_whole_chunks(tmp_path, monk
         real(fd, data)
 
     monkeypatch.setattr(safe, "write_all", fills_up)
-    monkeypatch.setattr("rbi.sweep.runs.SweepJob.chunk_size", lambda self, threads: 8)
+    monkeypatch.setattr("rbi.sweeps.runs.SweepJob.chunk_size", lambda self, threads: 8)
     out = tmp_path / "s.csv"
     proc = rbi("sweep", *ARGS, "--out", out)
     one_line_exit_2(proc, "No space left on device", "8 of 24 runs", "--resume")
@@ -569,7 +569,7 @@ def test_a_really_full_disk_keeps_the_finished_rows_readable_for_resume(small_di
 
 SLOW_SWEEP = """
 import sys, time
-from rbi.sweep import runs
+from rbi.sweeps import runs
 real = runs.run_chunk
 def slow(job, a, b, threads=0):
     time.sleep(0.3)

@@ -2,7 +2,7 @@
 
 - Throughput: a grid of ``rbi sweep bodies/top.yaml --spin 150:260:100 --tilt 0.01:1:100`` (10⁴
   runs of 4 s at the default rtol; 20 × 10 runs of 0.5 s in a quick run), run in this process
-  as the command runs it (:class:`rbi.sweep.study.Study`, rows streamed to a CSV), in runs per
+  as the command runs it (:class:`rbi.sweeps.study.Study`, rows streamed to a CSV), in runs per
   second. Baselines: the single-run in-process rate (``rbi.sim.api.simulate`` on one run after
   another, over an evenly spaced sample of the same grid points) times the number of cores
   (target ≥ 0.8), and a loop of ``rbi simulate FILE --spin S --tilt T`` processes over a sample
@@ -33,8 +33,9 @@ from rbi.sim.api import simulate
 from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.spec.load import load_body, read_yaml
 from rbi.spec.units import gravity_in
-from rbi.sweep.execute import available_cores
-from rbi.sweep.study import Study, SweepSettings, check_settings
+from rbi.sweeps.execute import available_cores
+from rbi.sweeps.plan import Grid
+from rbi.sweeps.study import Study, SweepSettings, check_settings
 
 Progress = Callable[[str], None]
 
@@ -65,11 +66,11 @@ def sample_runs(g: dict, count: int) -> list[tuple[float, float]]:
 
 
 def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
-    """The sweep `rbi sweep` runs for this grid (:class:`rbi.sweep.study.Study`), in this process,
+    """The sweep `rbi sweep` runs for this grid (:class:`rbi.sweeps.study.Study`), in this process,
     streaming its rows to the CSV ``out``."""
 
     settings = SweepSettings(
-        spin=_axis_text(g["spin"]), tilt=_axis_text(g["tilt"]), duration=g["duration"], yes=True
+        spin=Grid(*g["spin"]), tilt_deg=Grid(*g["tilt"]), duration=g["duration"], check_budget=False
     )
     check_settings(settings)
     study = Study(str(spec), read_yaml(spec), settings, rows_printed=False)

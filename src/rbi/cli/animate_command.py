@@ -66,31 +66,21 @@ def animate(
       rbi animate top_bolted.yaml --spin 200 --out top.html
       rbi animate top_bolted.yaml --spin 200 --duration 2 --out top.gif
     """
+    from rbi.cli.option_values import run_settings
     from rbi.cli.output import output_target
     from rbi.runs.animation import animation
-    from rbi.runs.prepare import prepare_run
-    from rbi.runs.settings import check_run_options
+    from rbi.runs.run import check_run_options, prepare_run
     from rbi.spec.load import load_body
 
-    check_run_options("default", spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol)
+    settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
+    settings |= dict(duration=duration, rtol=rtol, max_steps=max_steps)
+    check_run_options("default", **settings)
     _check_playback(speed, fps)
     target = output_target(out, "--out", ("html", "gif"), inputs=[file])
     gif_frames = _gif_frames(duration, fps) if target.format == "gif" else 0
     body = load_body(file)
     say_warnings(body.warnings)
-    prepared = prepare_run(
-        body,
-        spin=spin,
-        omega=omega,
-        tilt=tilt,
-        tilt_axis=tilt_axis,
-        gravity=gravity,
-        duration=duration,
-        rtol=rtol,
-        max_steps=max_steps,
-        yes=yes,
-        spin_axis=spin_axis,
-    )
+    prepared = prepare_run(body, **settings)
     data, run, tilts = animation(prepared, gif_frames)
     if target.format == "html":
         shown = _write_page(target, data, run, speed)

@@ -65,7 +65,9 @@ def _run() -> None:
             completion.enable()  # answers the shell's completion script (only when it is the caller)
             status = app(args=args or ["--help"], prog_name="rbi", standalone_mode=False)
     except InputError as exc:
-        say(str(exc))
+        from rbi.cli.option_values import error_line
+
+        say(error_line(exc))
         sys.exit(2)
     except UsageError as exc:
         command = exc.ctx.command_path if exc.ctx is not None else "rbi"

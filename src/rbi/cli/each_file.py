@@ -90,8 +90,10 @@ class _Several:
                 one = report(file)
                 refuse_non_finite(one.result, file_label(file))
             except InputError as exc:
+                from rbi.cli.option_values import error_line
+
                 sys.stdout.flush()  # what earlier files printed comes before this file's error line
-                say(str(exc))
+                say(error_line(exc))
                 bad = True
                 continue
             failed = failed or one.failed

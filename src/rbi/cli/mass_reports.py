@@ -25,7 +25,7 @@ def load_body(file: str):
     """The body of the spec ``file`` (``-``: standard input) in the core's terms."""
     from rbi import api
 
-    return api.load_file(file)._loaded
+    return api.load(file)._loaded
 
 
 def header(body, about_label: str, about_point) -> dict:

@@ -1,12 +1,123 @@
-"""Parsing of command-line values (reference points, rotations, output units) into what the
-commands compute with."""
+"""Parsing of command-line values (vectors ``X,Y,Z``, reference points, rotations ``y:30``,
+sweep axes ``START:STOP:COUNT``, output units) into the numbers the API takes, and the API's
+errors spelled with the command line's options."""
 
 from __future__ import annotations
 
 import math
+import re
+from typing import Any
 
-from rbi.errors import InputError
-from rbi.runs.values import parse_vector
+from rbi.errors import ArgumentError, InputError
+
+OPTION_NAMES = {
+    "tilt_deg": "--tilt",
+    "check_budget": "--yes",
+    "check_budget=False": "--yes",
+    "axes": "--rotate",
+    "package_paths": "--package-path",
+    "vary[]": "--vary {}",
+    "out": "--out FILE.csv",
+}
+"""The API's parameters whose option is not ``--`` + the name with ``-`` for ``_``."""
+
+
+def option_name(parameter: str) -> str:
+    """The command-line option of an API parameter: ``spin_axis`` → ``--spin-axis``."""
+    return OPTION_NAMES.get(parameter) or "--" + parameter.replace("_", "-")
+
+
+def error_line(error: InputError) -> str:
+    """The one line the CLI prints for ``error``: an API argument named as its option
+    (``--duration: must be ...``), any other error as it is."""
+    return error.named(option_name) if isinstance(error, ArgumentError) else str(error)
+
+
+def parse_vector(text: str, option: str, count: int = 3) -> list[float]:
+    """``"1,2,3"`` -> ``[1.0, 2.0, 3.0]``; :class:`InputError` naming ``option`` otherwise."""
+    pieces = [p.strip() for p in text.replace(";", ",").split(",")]
+    try:
+        values = [float(p) for p in pieces]
+    except ValueError:
+        values = []
+    if len(values) != count or not all(math.isfinite(v) for v in values):
+        raise InputError(f"{option}: expected {count} finite numbers separated by commas, got {text!r}")
+    return values
+
+
+def vector_option(text: str | None, option: str) -> list[float] | None:
+    """An optional ``X,Y,Z`` option as numbers (None stays None)."""
+    return None if text is None else parse_vector(text, option)
+
+
+def spin_axis_option(text: str | None) -> str | list[float] | None:
+    """``--spin-axis``: a named axis (``x``, ``-y``) as it is, ``X,Y,Z`` as three numbers."""
+    if text is None or "," not in text:
+        return text
+    return parse_vector(text, "--spin-axis")
+
+
+def run_settings(
+    spin: Any, omega: str | None, tilt: Any, yes: bool, spin_axis: str | None, **same: Any
+) -> dict:
+    """The settings of one run as ``rbi.simulate`` takes them, from `simulate`'s and `animate`'s
+    options: ``--omega`` and ``--spin-axis`` text as numbers, ``--tilt`` as ``tilt_deg``,
+    ``--yes`` as ``check_budget=False``; ``same``: the options named as the API's parameters
+    (``duration``, ``rtol`` ...)."""
+    return dict(
+        spin=spin,
+        omega=vector_option(omega, "--omega"),
+        tilt_deg=tilt,
+        check_budget=not yes,
+        spin_axis=spin_axis_option(spin_axis),
+        **same,
+    )
+
+
+_NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
+_RANGE = re.compile(rf"^\s*({_NUMBER})\s*:\s*({_NUMBER})\s*:\s*(\d+)\s*$")
+_DRAW = re.compile(rf"^\s*(normal|uniform)\s*\(\s*({_NUMBER})\s*,\s*({_NUMBER})\s*\)\s*$")
+
+
+def sweep_values(text: str, option: str) -> Any:
+    """A sweep axis as ``rbi.sweep`` takes it: ``START:STOP:COUNT`` → ``Grid``, one number,
+    ``normal(MEAN,SD)`` → ``Normal``, ``uniform(LOW,HIGH)`` → ``Uniform``; :class:`InputError`
+    naming ``option`` otherwise."""
+    from rbi.api import Grid, Normal, Uniform
+
+    text = str(text)
+    try:
+        if (match := _RANGE.match(text)) is not None:
+            return Grid(float(match[1]), float(match[2]), int(match[3]))
+        if (match := _DRAW.match(text)) is not None:
+            kind = Normal if match[1] == "normal" else Uniform
+            return kind(float(match[2]), float(match[3]))
+    except ValueError as exc:
+        raise InputError(f"{option}: {exc}") from None
+    try:
+        value = float(text)
+    except ValueError:
+        raise InputError(
+            f"{option}: expected START:STOP:COUNT, a number, normal(MEAN,SD) or uniform(LOW,HIGH) "
+            f"(got {text[:60]!r})"
+        ) from None
+    if not math.isfinite(value):
+        raise InputError(f"{option}: must be a finite number (got {text!r})")
+    return value
+
+
+def vary_option(items: list[str]) -> dict[str, Any]:
+    """``--vary PATH=RANGE`` items as ``rbi.sweep``'s ``vary``: path → values."""
+    vary: dict[str, Any] = {}
+    for item in items:
+        path, sep, text = item.partition("=")
+        if not sep:
+            raise InputError(f"--vary {item}: expected PATH=RANGE, e.g. parts.bolt.mass=0.01:0.03:5")
+        path = path.strip()
+        if path in vary:
+            raise InputError("--vary: a path is given twice")
+        vary[path] = sweep_values(text, f"--vary {path}")
+    return vary
 
 
 def parse_about(text: str, body) -> tuple[str, list[float]]:

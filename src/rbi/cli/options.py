@@ -8,8 +8,12 @@ from typing import Annotated
 
 import typer
 
-from rbi.cli.option_values import in_output_units, parse_about, parse_rotation  # noqa: F401  (re-exported)
-from rbi.runs.values import parse_vector  # noqa: F401  (re-exported: the commands parse vectors with it)
+from rbi.cli.option_values import (  # noqa: F401  (re-exported: the commands parse their values with them)
+    in_output_units,
+    parse_about,
+    parse_rotation,
+    parse_vector,
+)
 
 
 class OutputFormat(str, Enum):

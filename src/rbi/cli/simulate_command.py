@@ -23,7 +23,6 @@ from rbi.cli.run_options import (
     TiltOption,
     YesOption,
 )
-from rbi.runs.settings import MAX_SAMPLES, check_run_options, check_run_settings  # noqa: F401  (re-exported)
 
 PLOT_FORMATS = ("png", "svg", "pdf")
 
@@ -103,17 +102,14 @@ def simulate(
       rbi simulate top_bolted.yaml --spin 200 --duration 2 --out run.csv
       rbi simulate tbar.yaml --omega 0.01,0.01,3 --duration 20 --plot flip.png
     """
+    from rbi.cli.option_values import run_settings
     from rbi.cli.output import write_output
-    from rbi.runs.settings import check_samples
 
-    check_run_options(method, spin, omega, tilt, duration, tilt_axis, gravity, max_steps, rtol)
-    check_samples(samples)
     out_target, plot_target = _targets(file, out, plot)
     if out_target is not None and out_target.is_stdout:
         format = OutputFormat.csv  # the trajectory is what goes to standard output
-    settings = dict(spin=spin, omega=omega, tilt_deg=tilt, tilt_axis=tilt_axis, spin_axis=spin_axis)
-    settings |= dict(gravity=gravity, duration=duration, method=method, rtol=rtol)
-    settings |= dict(max_steps=max_steps, check_budget=not yes)
+    settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
+    settings |= dict(duration=duration, method=method, rtol=rtol, max_steps=max_steps)
     body, run = _run(file, settings, samples, error_estimate, format)
     trajectory_csv = run.to_csv() if out is not None or format == OutputFormat.csv else ""
     result = dict(run.summary)
@@ -128,7 +124,7 @@ def simulate(
     if format == OutputFormat.csv:
         sys.stdout.write(trajectory_csv)
         return
-    emit(format.value, result, lambda: _table(body._loaded, result))
+    emit(format.value, result, lambda: _table(body, result))
 
 
 def _targets(file: str, out: str | None, plot: str | None):
@@ -152,7 +148,7 @@ def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: 
     """Load the spec and simulate it, with a progress bar on a terminal: ``(body, trajectory)``."""
     from rbi import api
 
-    body = api.load_file(file)
+    body = api.load(file)
     progress = progress_bar("simulating", stdout=True, delay=0.5) if format == OutputFormat.table else None
     try:
         return body, api.simulate(
@@ -174,18 +170,14 @@ def _plot(target, body, run, settings: dict) -> None:
     if settings["method"] in ("default", "exact") and run.t.size < PLOT_SAMPLES and settings["duration"] > 0:
         # the same run sampled more densely (dense output: the steps do not change)
         shown = api.simulate(body, samples=PLOT_SAMPLES, error_estimate=False, **settings).columns()
-    loaded = body._loaded
     omega0 = run.summary["initial"]["omega"]
     title = (
         f"{label(body.name or body.path)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, "
         f"nudge {number(settings['tilt_deg'])}°"
     )
     free = {}
-    if loaded.pivot is None:  # a free body: each principal axis's turn against the angular momentum
-        from rbi.runs.prepare import scene_of
-
-        scene = scene_of(loaded, settings["gravity"])
-        free = {"principal_axes": scene.principal_axes, "inertia": scene.inertia}
+    if body.pivot is None:  # a free body: each principal axis's turn against the angular momentum
+        free = {"principal_axes": body.principal().axes, "inertia": body.inertia()}
     write_output(
         target,
         writer=lambda path: plot_trajectory(
@@ -193,16 +185,11 @@ def _plot(target, body, run, settings: dict) -> None:
             path,
             title=title,
             format=target.format,
-            energy_unit=energy_unit(loaded),
+            energy_unit=body.unit_labels["energy"],
             spin_axis=run.summary["spin_axis"],
             **free,
         ),
     )
-
-
-def energy_unit(body) -> str:
-    """The unit of an energy in the spec's units: J in SI, otherwise mass·length²/s²."""
-    return "J" if (body.mass_unit, body.length_unit) == ("kg", "m") else body.labels["energy"]
 
 
 def _table(body, result: dict):
@@ -251,7 +238,7 @@ def _accuracy_rows(body, result: dict) -> list[tuple[str, str, str]]:
     estimate) and cost (steps, evaluations, time)."""
     from rbi.cli import tables
 
-    labels = body.labels
+    labels = body.unit_labels
     names = {
         "energy": "energy",
         "h_vertical": "vertical h about pivot",
@@ -262,7 +249,7 @@ def _accuracy_rows(body, result: dict) -> list[tuple[str, str, str]]:
     for key, item in result["conserved"].items():
         initial = item["initial"]
         shown = tables.vector(initial) if np.ndim(initial) else number(initial, 10)
-        unit = energy_unit(body) if item["unit"] == "energy" else labels[item["unit"]]
+        unit = labels[item["unit"]]
         accuracy.append((f"{names[key]}", unit, f"{shown}  (drift {number(item['drift'], 2)})"))
     accuracy.append(("| |q| − 1 | largest", "", number(result["quaternion_norm_error"], 2)))
     estimate = result.get("error_estimate")

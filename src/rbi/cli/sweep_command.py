@@ -14,7 +14,7 @@ from rbi.cli.render import ProgressBar, emit, number, to_csv
 from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
 from rbi.sim.budget import DEFAULT_MAX_STEPS
 from rbi.spec.errors import InputError
-from rbi.sweep.study import MAX_ROWS_SHOWN
+from rbi.sweeps.study import MAX_ROWS_SHOWN
 
 SpinOption = Annotated[
     str,
@@ -166,17 +166,26 @@ def sweep(
       rbi sweep top_bolted.yaml --spin 200 --vary 'parts.bolt.mass=normal(0.02,0.002)' --runs 500
       rbi sweep top_bolted.yaml --mass-properties --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
+    from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
     from rbi.spec.load import read_yaml
-    from rbi.sweep.study import Study, SweepSettings, check_mass_properties, check_settings
+    from rbi.sweeps.study import Study, SweepSettings, check_settings
 
-    grid = dict(spin=spin, tilt=tilt, vary=tuple(vary or []), runs=runs, seed=seed)
+    grid = dict(
+        spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"), runs=runs, seed=seed
+    )
     each_run = dict(duration=duration, samples=samples, rtol=rtol, gravity=gravity, max_steps=max_steps)
-    where = dict(workers=workers, dask=dask, mass_properties=mass_properties, yes=yes)
-    settings = SweepSettings(**grid, **each_run, **where, tilt_axis=tilt_axis, spin_axis=spin_axis)
+    where = dict(workers=workers, dask=dask, mass_properties=mass_properties, check_budget=not yes)
+    settings = SweepSettings(
+        **grid,
+        **each_run,
+        **where,
+        vary=tuple(vary_option(vary or []).items()),
+        tilt_axis=tilt_axis,
+        spin_axis=spin_axis_option(spin_axis),
+    )
     check_settings(settings)
     if resume and out is None:
         raise InputError("--resume: needs --out, the file of the interrupted sweep")
-    check_mass_properties(settings)
     out_target, plot_target = _targets(file, out, plot)
     settings = _where_runs_go(settings)
     study = Study(file, read_yaml(file), settings, rows_printed=out is None)
@@ -206,7 +215,7 @@ def _targets(file: str, out: str | None, plot: str | None):
     """The checked ``--out`` and ``--plot`` targets (None when not asked for); the optional
     packages they need are required before any work."""
     from rbi.cli.output import check_distinct, output_target
-    from rbi.sweep.study import require
+    from rbi.sweeps.study import require
 
     out_target = None if out is None else output_target(out, "--out", ("csv", "parquet"), inputs=[file])
     plot_target = (
@@ -227,8 +236,8 @@ def _where_runs_go(settings):
     said, and the cores are used."""
     import dataclasses
 
-    from rbi.sweep.execute import available_cores, usable_workers
-    from rbi.sweep.study import require
+    from rbi.sweeps.execute import available_cores, usable_workers
+    from rbi.sweeps.study import require
 
     if settings.dask is not None:
         require("distributed", "dask", "--dask")

@@ -34,6 +34,12 @@ def outside_paths_allowed(allowed: bool = True):
         _outside_allowed.reset(token)
 
 
+def outside_paths_are_allowed() -> bool:
+    """Whether this block lets spec paths leave the spec's folder (see
+    :func:`outside_paths_allowed`)."""
+    return _outside_allowed.get()
+
+
 def spec_relative_file(spec_path: str | Path, file: str, label: str, owner: str = "spec") -> Path:
     """The file named ``file`` in the spec at ``spec_path``, resolved against the spec's folder.
 

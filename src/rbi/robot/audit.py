@@ -39,6 +39,7 @@ from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution
+from rbi.reprs import TableRepr
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -124,7 +125,7 @@ class LinkAudit:
 
 
 @dataclass
-class AuditReport:
+class AuditReport(TableRepr):
     """What ``rbi audit`` found: the model read, one :class:`LinkAudit` per link, the totals,
     ``notes`` (what was read but not checked, inertials MuJoCo ignores) and the options used.
     :meth:`as_dict` is the JSON the CLI prints."""
@@ -149,6 +150,19 @@ class AuditReport:
     @property
     def exit_code(self) -> int:
         return 1 if self.has_error else 0
+
+    def _table(self) -> tuple[str, list[list[str]], tuple[str, ...]]:
+        """Each link's declared mass and its flags (notebook and rich reprs)."""
+        rows = [
+            [
+                str(each.name),
+                "—" if each.declared is None else f"{each.declared.mass:.6g}",
+                "; ".join(f"{flag.level} {flag.code}" for flag in each.flags) or "ok",
+            ]
+            for each in self.links
+        ]
+        rows.append(["total", f"{self.total.mass:.6g}", "error" if self.has_error else "ok"])
+        return f"{self.model.name or self.path} — audit", rows, ("link", "mass, kg", "flags")
 
     def as_dict(self) -> dict[str, Any]:
         return {

@@ -7,9 +7,8 @@ from typing import Any
 
 import numpy as np
 
-from rbi.errors import InputError
-from rbi.runs.prepare import PreparedRun
-from rbi.runs.simulation import integrate
+from rbi.errors import ArgumentError, InputError
+from rbi.runs.run import PreparedRun
 
 
 def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], Any, np.ndarray]:
@@ -26,16 +25,17 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
     from rbi.viz.still import part_count
 
     body, scene, duration = run.body, run.scene, run.duration
-    probe = integrate(run, MIN_KEYFRAMES)
+    probe = run.integrate(MIN_KEYFRAMES)
     fastest = float(np.max(np.linalg.norm(probe.omega, axis=1)))
     needed = keyframes_needed(duration, fastest)
     if needed > MAX_KEYFRAMES:
-        raise InputError(
-            f"--duration: {duration:g} s of this motion needs {needed:.3g} keyframes to play "
-            f"smoothly, more than {MAX_KEYFRAMES}: shorten --duration"
+        raise ArgumentError(
+            "duration",
+            f"{duration:g} s of this motion needs {needed:.3g} keyframes to play "
+            f"smoothly, more than {MAX_KEYFRAMES}: shorten {{duration}}",
         )
     count = max(MIN_KEYFRAMES, needed, gif_frames)
-    trajectory = probe if count == MIN_KEYFRAMES else integrate(run, count)
+    trajectory = probe if count == MIN_KEYFRAMES else run.integrate(count)
     if not (np.all(np.isfinite(trajectory.q)) and np.all(np.isfinite(trajectory.omega))):
         raise InputError(
             f"{body.path}: the motion is not finite: the input values are too large for double precision"

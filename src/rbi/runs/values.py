@@ -1,33 +1,44 @@
-"""Values given as text on a command line (``"1,2,3"``), turned into numbers."""
+"""Numbers given to the Python API, checked: a vector is a sequence of finite numbers (text such
+as ``"1,2,3"`` is the command line's, parsed in :mod:`rbi.cli.option_values`)."""
 
 from __future__ import annotations
 
 import math
+import numbers
+from typing import Any
 
-from rbi.errors import InputError
+from rbi.errors import ArgumentError
 
 
-def parse_vector(text: str, option: str, count: int = 3) -> list[float]:
-    """``"1,2,3"`` -> ``[1.0, 2.0, 3.0]``; :class:`InputError` naming ``option`` otherwise."""
-    pieces = [p.strip() for p in text.replace(";", ",").split(",")]
-    try:
-        values = [float(p) for p in pieces]
-    except ValueError:
-        values = []
+def vector_value(value: Any, parameter: str, count: int = 3) -> list[float]:
+    """``value`` as a list of ``count`` floats; :class:`ArgumentError` naming ``parameter``
+    unless it is a sequence (or array) of ``count`` finite numbers."""
+    values: list[float] = []
+    if not isinstance(value, (str, bytes)):
+        try:
+            values = [float(v) for v in value]
+        except (TypeError, ValueError):
+            values = []
     if len(values) != count or not all(math.isfinite(v) for v in values):
-        raise InputError(f"{option}: expected {count} finite numbers separated by commas, got {text!r}")
+        raise ArgumentError(parameter, f"expected {count} finite numbers, got {value!r}")
     return values
 
 
-def vector_value(value, option: str, count: int = 3) -> list[float]:
-    """A vector given as text (``"1,2,3"``) or as a sequence of numbers; :class:`InputError`
-    naming ``option`` unless it holds ``count`` finite numbers."""
-    if isinstance(value, str):
-        return parse_vector(value, option, count)
+def require_numbers(integral: bool = False, **values: Any) -> None:
+    """TypeError naming the parameter when one of ``values`` (None allowed) is not a number
+    (``spin=True``, ``duration="4"``); with ``integral``, not a whole number."""
+    kind = numbers.Integral if integral else numbers.Real
+    for name, value in values.items():
+        if value is not None and (isinstance(value, bool) or not isinstance(value, kind)):
+            what = "a whole number" if integral else "a number"
+            raise TypeError(f"{name}: must be {what} (got {type(value).__name__} {value!r:.60})")
+
+
+def finite(value: Any) -> bool:
+    """True for a finite real number (a bool is not one)."""
+    if isinstance(value, bool):
+        return False
     try:
-        values = [float(v) for v in value]
-    except (TypeError, ValueError):
-        values = []
-    if len(values) != count or not all(math.isfinite(v) for v in values):
-        raise InputError(f"{option}: expected {count} finite numbers, got {value!r}")
-    return values
+        return math.isfinite(value)
+    except TypeError:
+        return False

@@ -15,7 +15,7 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from rbi.spec.errors import InputError
+from rbi.errors import ArgumentError
 
 _TOKEN = re.compile(r"([^.\[\]]+)|\[(-?\d+)\]")
 
@@ -50,12 +50,12 @@ def parse_path(text: str) -> list[Any]:
 
 
 def resolve(raw: Any, text: str) -> FieldPath:
-    """The path ``text`` in the parsed spec ``raw``, checked to end at a number; InputError
-    naming the path and what is there instead."""
+    """The path ``text`` in the parsed spec ``raw``, checked to end at a number;
+    :class:`ArgumentError` (of ``vary``) naming the path and what is there instead."""
     try:
         tokens = parse_path(text)
     except ValueError as exc:
-        raise InputError(f"--vary {text}: {exc}") from None
+        raise ArgumentError("vary", str(exc), item=text) from None
     steps: list[Any] = []
     node = raw
     for k, token in enumerate(tokens):
@@ -65,23 +65,24 @@ def resolve(raw: Any, text: str) -> FieldPath:
             if index is None:
                 names = [p.get("name") for p in node if isinstance(p, dict) and p.get("name") is not None]
                 known = f" (parts: {', '.join(map(str, names[:12]))})" if names else ""
-                raise InputError(f"--vary {text}: {where} has no entry {token!r}{known}")
+                raise ArgumentError("vary", f"{where} has no entry {token!r}{known}", item=text)
             steps.append(index)
             node = node[index]
         elif isinstance(node, dict):
             if not isinstance(token, str) or token not in node:
                 fields = ", ".join(sorted(map(str, node)))
-                raise InputError(
-                    f"--vary {text}: {_written(tokens[: k + 1])}: no such field in the spec"
-                    f" (fields here: {fields})"
+                raise ArgumentError(
+                    "vary",
+                    f"{_written(tokens[: k + 1])}: no such field in the spec (fields here: {fields})",
+                    item=text,
                 )
             steps.append(token)
             node = node[token]
         else:
-            raise InputError(f"--vary {text}: {where} is a single value, not a list or mapping")
+            raise ArgumentError("vary", f"{where} is a single value, not a list or mapping", item=text)
     if isinstance(node, bool) or not isinstance(node, (int, float)):
         shown = type(node).__name__ if isinstance(node, (dict, list)) else repr(node)[:40]
-        raise InputError(f"--vary {text}: must name a number in the spec (it holds {shown})")
+        raise ArgumentError("vary", f"must name a number in the spec (it holds {shown})", item=text)
     return FieldPath(text, tuple(steps))
 
 

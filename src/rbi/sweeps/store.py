@@ -82,7 +82,7 @@ class SweepOutput:
     """The ``--out`` file of one sweep and the files beside it.
 
     target: the checked output (:func:`rbi.files.output.output_target`); columns: the row
-    columns; plan: the sweep's :class:`~rbi.sweep.plan.Plan` (to check kept rows); settings:
+    columns; plan: the sweep's :class:`~rbi.sweeps.plan.Plan` (to check kept rows); settings:
     what makes two sweeps the same (compared on resume). :meth:`open` takes the lock and
     starts or resumes; :meth:`write` adds rows; :meth:`finish` completes the output and
     removes the files beside it; :meth:`close` stops writing and keeps what is there.

@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from rbi.spec.variations import FieldPath
-from rbi.sweep.plan import Plan
+from rbi.sweeps.plan import Plan
 
 RESULT_COLUMNS = (
     "max_tilt_deg",

@@ -2,10 +2,10 @@
 built, the runs executed (local cores or a Dask cluster) and streamed to an output file, and the
 result `rbi sweep` prints.
 
-:class:`SweepSettings` holds what the user chose; :func:`check_settings` and
-:func:`check_mass_properties` refuse bad settings before any file is read; :class:`Study`
-plans the sweep of a parsed spec and runs it. Messages name the CLI's options (``--runs``,
-``--vary`` ...), so `rbi sweep` and :func:`rbi.sweep` report a mistake with the same line.
+:class:`SweepSettings` holds what the user chose; :func:`check_settings` refuses bad
+settings before any file is read; :class:`Study`
+plans the sweep of a parsed spec and runs it. Messages name :func:`rbi.sweep`'s parameters
+(:class:`~rbi.errors.ArgumentError`); `rbi sweep` spells them as its options.
 """
 
 from __future__ import annotations
@@ -13,12 +13,13 @@ from __future__ import annotations
 import dataclasses
 import hashlib
 import json
-from collections.abc import Callable
+import numbers
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from rbi.errors import InputError
+from rbi.errors import ArgumentError, InputError
 
 MAX_ROWS_SHOWN = 100_000
 """Most runs a sweep may print (json/csv/table) or hold in memory instead of writing them with --out."""
@@ -36,21 +37,24 @@ MAX_SWEEP_SAMPLES = 100_000
 
 @dataclass(frozen=True)
 class SweepSettings:
-    """The settings of a sweep, as the CLI's options spell them.
+    """The settings of a sweep, in numbers (the names of :func:`rbi.sweep`'s parameters).
 
-    spin, tilt: ``"START:STOP:COUNT"`` or one value (rad/s about the spin axis; the nudge in
-    degrees), None for 0. spin_axis: ``x|y|z|X,Y,Z`` (body frame), None for the spec's
-    ``spin_axis`` or the nominal body's default (:func:`rbi.core.spin_axis.default_spin_axis`). vary: ``"PATH=RANGE"`` items (``parts.NAME.FIELD[i]=START:STOP:COUNT``,
-    ``=normal(MEAN,SD)`` or ``=uniform(LOW,HIGH)``). runs: Monte Carlo draws per grid point;
-    seed: of the draws. duration (s), samples, rtol, gravity (m/s², None for 9.81), tilt_axis,
-    max_steps (per run, None for the default): as a single simulation. workers: cores (None:
-    all); dask: a scheduler address or ``"local"``. mass_properties: no simulation, the spread
-    of the mass properties over the varied values. yes: run even past the step budget.
+    spin, tilt_deg: a number, a sequence of numbers or a :class:`~rbi.sweeps.plan.Grid` (the
+    grid's values: rad/s about the spin axis; the nudge in degrees), or a
+    :class:`~rbi.sweeps.plan.Normal` / :class:`~rbi.sweeps.plan.Uniform` draw. spin_axis: ``x``,
+    ``y``, ``z`` or a direction (body frame), None for the spec's ``spin_axis`` or the nominal
+    body's default (:func:`rbi.core.spin_axis.default_spin_axis`). vary: ``(PATH, VALUES)``
+    pairs (``parts.NAME.FIELD[i]``, values as ``spin``'s). runs: Monte Carlo draws per grid
+    point; seed: of the draws. duration (s), samples, rtol, gravity (m/s², None for 9.81),
+    tilt_axis, max_steps (per run, None for the default): as a single simulation. workers:
+    cores (None: all); dask: a scheduler address or ``"local"``. mass_properties: no
+    simulation, the spread of the mass properties over the varied values. check_budget: refuse
+    a sweep past the step budget.
     """
 
-    spin: str | None = None
-    tilt: str | None = None
-    vary: tuple[str, ...] = ()
+    spin: Any = 0.0
+    tilt_deg: Any = 0.0
+    vary: tuple[tuple[str, Any], ...] = ()
     runs: int = 1
     seed: int = 0
     duration: float = 4.0
@@ -62,39 +66,43 @@ class SweepSettings:
     workers: int | None = None
     dask: str | None = None
     mass_properties: bool = False
-    yes: bool = False
-    spin_axis: str | None = None
+    check_budget: bool = True
+    spin_axis: str | Sequence[float] | None = None
 
 
 def check_settings(settings: SweepSettings) -> None:
-    """Refuse the number of runs, the run settings, the samples and the workers (before any file
-    is read)."""
-    from rbi.runs.settings import check_run_settings
+    """Refuse the number of runs, the run settings, the samples, the workers and (a study of
+    mass properties) a spin or tilt, before any file is read."""
+    from rbi.runs.run import check_run_settings, check_samples, spin_axis_value
 
-    if settings.runs < 1:
-        raise InputError(f"--runs: must be at least 1 (got {settings.runs})")
+    if not _whole(settings.runs) or settings.runs < 1:
+        raise ArgumentError("runs", f"must be a whole number, at least 1 (got {settings.runs!r})")
+    if not _whole(settings.seed) or settings.seed < 0:
+        raise ArgumentError("seed", f"must be a whole number 0 or above (got {settings.seed!r})")
     check_run_settings(
         settings.duration, settings.tilt_axis, settings.gravity, settings.max_steps, settings.rtol
     )
-    if not 1 <= settings.samples <= MAX_SWEEP_SAMPLES:
-        raise InputError(
-            f"--samples: must be between 1 and {MAX_SWEEP_SAMPLES:,} for a sweep (got {settings.samples})"
-        )
-    from rbi.runs.prepare import spin_axis_value
-
+    check_samples(settings.samples, MAX_SWEEP_SAMPLES, " for a sweep")
     spin_axis_value(settings.spin_axis)
-    if settings.workers is not None and not 1 <= settings.workers <= 1024:
-        raise InputError(f"--workers: must be between 1 and 1024 (got {settings.workers})")
+    if settings.workers is not None and not (_whole(settings.workers) and 1 <= settings.workers <= 1024):
+        raise ArgumentError("workers", f"must be between 1 and 1024 (got {settings.workers!r})")
+    if settings.mass_properties and (_nonzero(settings.spin) or _nonzero(settings.tilt_deg)):
+        raise ArgumentError(
+            "mass_properties", "takes {vary} only (no {spin} or {tilt_deg}: nothing is simulated)"
+        )
     if settings.dask is not None:
-        from rbi.sweep.execute import check_address
+        from rbi.sweeps.execute import check_address
 
         check_address(settings.dask)
 
 
-def check_mass_properties(settings: SweepSettings) -> None:
-    """A mass-property study simulates nothing: it takes no spin and no tilt."""
-    if settings.mass_properties and (settings.spin not in (None, "0") or settings.tilt not in (None, "0")):
-        raise InputError("--mass-properties: takes --vary only (no --spin or --tilt: nothing is simulated)")
+def _whole(value: Any) -> bool:
+    return isinstance(value, numbers.Integral) and not isinstance(value, bool)
+
+
+def _nonzero(value: Any) -> bool:
+    """True unless ``value`` is None or the single number 0."""
+    return value is not None and not (isinstance(value, numbers.Real) and value == 0)
 
 
 def require(module: str, extra: str, option: str) -> None:
@@ -113,7 +121,7 @@ class Study:
 
     path: the spec (for messages, the files it names and the resume check); raw: its parsed
     YAML; settings: :class:`SweepSettings` (checked). After construction: ``plan`` (the runs),
-    ``job`` (:class:`~rbi.sweep.runs.SweepJob`), ``nominal`` (the body at the spec's own
+    ``job`` (:class:`~rbi.sweeps.runs.SweepJob`), ``nominal`` (the body at the spec's own
     values), ``columns`` (of each row). :class:`InputError` for a sweep that cannot be made.
     """
 
@@ -121,7 +129,7 @@ class Study:
         from rbi.sim.budget import DEFAULT_MAX_STEPS
         from rbi.spec.units import STANDARD_GRAVITY_SI
         from rbi.spec.variations import current_values
-        from rbi.sweep.runs import SweepJob
+        from rbi.sweeps.runs import SweepJob
 
         self.path, self.raw, self.settings = path, raw, settings
         axes, varied = self._axes()
@@ -143,45 +151,33 @@ class Study:
             raise InputError(f"{path}: {self.nominal}")
         self.job = dataclasses.replace(self.job, spin_axis=self._spin_axis())
         if settings.mass_properties:
-            from rbi.sweep.tolerance import MASS_COLUMNS
+            from rbi.sweeps.tolerance import MASS_COLUMNS
 
             self.columns = ["run", *self.plan.names, *MASS_COLUMNS]
         else:
             self._check_budget()
             self.columns = self.job.columns
         self.output = None
-        """The :class:`~rbi.sweep.store.SweepOutput` while :meth:`run` writes one (its ``done``
+        """The :class:`~rbi.sweeps.store.SweepOutput` while :meth:`run` writes one (its ``done``
         counts the runs kept there)."""
 
     def _axes(self):
         from rbi.spec.variations import resolve
-        from rbi.sweep.plan import parse_axis
 
         s = self.settings
-        axes = (
-            []
-            if s.mass_properties
-            else [
-                _axis(parse_axis, "spin", s.spin or "0", "--spin"),
-                _axis(parse_axis, "tilt_deg", s.tilt or "0", "--tilt"),
-            ]
-        )
+        axes = [] if s.mass_properties else [_axis("spin", s.spin), _axis("tilt_deg", s.tilt_deg)]
         varied = []
-        for item in s.vary:
-            path_text, sep, range_text = item.partition("=")
-            if not sep:
-                raise InputError(f"--vary {item}: expected PATH=RANGE, e.g. parts.bolt.mass=0.01:0.03:5")
-            path_text = path_text.strip()
+        for path_text, value in s.vary:
             try:
                 varied.append(resolve(self.raw, path_text))
-            except InputError as exc:
-                raise InputError(f"{self.path}: {exc}") from None
-            axes.append(_axis(parse_axis, path_text, range_text, f"--vary {path_text}"))
+            except ArgumentError as exc:
+                raise ArgumentError(exc.parameters, exc.detail, item=exc.item, file=self.path) from None
+            axes.append(_axis(path_text, value, "vary"))
         names = [a.name for a in axes]
         if len(set(names)) != len(names):
-            raise InputError("--vary: a path is given twice")
+            raise ArgumentError("vary", "a path is given twice")
         if s.mass_properties and not varied:
-            raise InputError("--mass-properties: give at least one --vary PATH=RANGE")
+            raise ArgumentError("mass_properties", "give at least one path to {vary}")
         return axes, varied
 
     def _check_budget(self) -> None:
@@ -193,17 +189,17 @@ class Study:
         scene = self.nominal_scene()
         if scene is None:
             return  # every run will say why it cannot be simulated
-        spins = [a for a in self.plan.axes if a.name == "spin"][0]
-        fastest = max(abs(spins.start), abs(spins.stop)) if hasattr(spins, "start") else 0.0
+        fastest = [a for a in self.plan.axes if a.name == "spin"][0].largest()
         per_run = estimated_steps(
             scene, np.array([0.0, 0.0, fastest]), self.job.duration, "default", self.job.rtol
         )
         total = per_run * self.plan.size
-        if total > SWEEP_STEP_BUDGET and not self.settings.yes:
-            raise InputError(
+        if total > SWEEP_STEP_BUDGET and self.settings.check_budget:
+            raise ArgumentError(
+                (),
                 f"{self.job.path}: this sweep is estimated to need about {total:.2g} integration steps "
                 f"({self.plan.size:,} runs), more than the budget of {SWEEP_STEP_BUDGET:.0e}: fewer runs, "
-                "a shorter --duration or a looser --rtol, or --yes to run it anyway"
+                "a shorter {duration} or a looser {rtol}, or {check_budget=False} to run it anyway",
             )
 
     def nominal_scene(self):
@@ -223,7 +219,7 @@ class Study:
         """The one spin axis of every run (unit, body frame): ``--spin-axis``, else the spec's
         ``spin_axis``, else the nominal body's default, so that every row's tilt is of the same
         body axis even where a varied value breaks the body's symmetry."""
-        from rbi.runs.prepare import body_spin_axis
+        from rbi.runs.run import body_spin_axis
 
         return tuple(float(c) for c in body_spin_axis(self.nominal, self.settings.spin_axis))
 
@@ -231,7 +227,7 @@ class Study:
         """``(compute(start, stop, threads) -> rows, chunk size)`` for the executors."""
         job = self.job
         if self.settings.mass_properties:
-            from rbi.sweep.tolerance import mass_rows, nominal_axes
+            from rbi.sweeps.tolerance import mass_rows, nominal_axes
 
             axes_nominal = nominal_axes(job)
 
@@ -239,8 +235,8 @@ class Study:
                 return mass_rows(job, axes_nominal, a, b)
 
             return compute, 256
-        from rbi.sweep.execute import available_cores
-        from rbi.sweep.runs import run_chunk
+        from rbi.sweeps.execute import available_cores
+        from rbi.sweeps.runs import run_chunk
 
         def compute(a, b, threads):
             return run_chunk(job, a, b, threads)
@@ -250,6 +246,8 @@ class Study:
     def store_settings(self) -> dict:
         """What makes two sweeps the same, for ``--resume``: the spec's bytes (or its parsed
         form when it was given as text or a dict) and every setting."""
+        from rbi.sweeps.plan import axis_record
+
         s, job = self.settings, self.job
         try:
             spec_bytes = Path(self.path).read_bytes()
@@ -257,9 +255,7 @@ class Study:
             spec_bytes = json.dumps(self.raw, sort_keys=True, default=str).encode()
         return {
             "spec_sha256": hashlib.sha256(spec_bytes).hexdigest(),
-            "spin": s.spin or "0",
-            "tilt": s.tilt or "0",
-            "vary": list(s.vary),
+            "axes": [[a.name, axis_record(a)] for a in self.plan.axes],
             "runs": job.plan.runs,
             "seed": job.plan.seed,
             "duration": job.duration,
@@ -284,8 +280,8 @@ class Study:
         rows arrive and ``close()`` at the end. An interruption (any exception) closes the
         output keeping the rows written; :attr:`output` then tells how many.
         """
-        from rbi.sweep import store
-        from rbi.sweep.execute import available_cores, chunk_ranges, run_dask, run_local
+        from rbi.sweeps import store
+        from rbi.sweeps.execute import available_cores, chunk_ranges, run_dask, run_local
 
         compute, chunk = self._compute()
         rows: list | None = [] if self.plan.size <= MAX_ROWS_SHOWN else None
@@ -342,7 +338,7 @@ class Study:
 
     def spread(self, rows: list[list[Any]]) -> dict[str, dict[str, float]]:
         """Percentiles and standard deviation of each mass property over the ok runs."""
-        from rbi.sweep.tolerance import spread
+        from rbi.sweeps.tolerance import spread
 
         return spread(self.columns, rows, 1)
 
@@ -350,10 +346,10 @@ class Study:
         """The data of the stability map: the largest tilt over the first one or two swept axes,
         and the sleeping threshold (rad/s) when the first one is the spin (else None)."""
         if self.settings.mass_properties:
-            raise InputError("--plot: a map needs simulated runs (not --mass-properties)")
+            raise ArgumentError("plot", "a map needs simulated runs (not {mass_properties})")
         swept = [a.name for a in self.plan.axes if self.plan.is_grid_axis(a.name)]
         if not swept:
-            raise InputError("--plot: the map needs at least one axis with more than one value")
+            raise ArgumentError("plot", "the map needs at least one axis with more than one value")
         threshold = None
         if swept[0] == "spin":
             from rbi.sim.diagnostics import sleeping_threshold
@@ -378,28 +374,34 @@ class Study:
 
 
 def _plan(axes, settings: SweepSettings, rows_printed: bool):
-    from rbi.sweep.plan import Draw, Plan
+    from rbi.sweeps.plan import Draw, Plan
 
     if settings.runs > 1 and not any(isinstance(a, Draw) for a in axes):
-        raise InputError("--runs: Monte Carlo needs a --vary PATH=normal(MEAN,SD) or uniform(LOW,HIGH)")
-    if settings.seed < 0:
-        raise InputError(f"--seed: must be a whole number 0 or above (got {settings.seed})")
+        raise ArgumentError(
+            "runs", "Monte Carlo needs a {vary} path drawn from a normal or uniform distribution"
+        )
     plan = Plan(tuple(axes), runs=settings.runs, seed=settings.seed)
     if plan.size > MAX_RUNS:
-        raise InputError(f"the sweep has {plan.size:.3g} runs, more than the 1e8 one sweep may have")
+        raise ArgumentError((), f"the sweep has {plan.size:.3g} runs, more than the 1e8 one sweep may have")
     if rows_printed and plan.size > MAX_ROWS_SHOWN:
-        raise InputError(
+        raise ArgumentError(
+            (),
             f"the sweep has {plan.size:,} runs: more than {MAX_ROWS_SHOWN:,} are written to a file "
-            "only: add --out FILE.csv"
+            "only: give {out}",
         )
     return plan
 
 
-def _axis(parse, name, text, option):
+def _axis(name: str, value: Any, parameter: str | None = None):
+    """The axis ``name`` of the value given to ``parameter`` (default: ``name``)."""
+    from rbi.sweeps.plan import axis_of
+
     try:
-        return parse(name, text)
-    except ValueError as exc:
-        raise InputError(f"{option}: {exc}") from None
+        return axis_of(name, value)
+    except (TypeError, ValueError) as exc:
+        if parameter is None:
+            raise ArgumentError(name, str(exc)) from None
+        raise ArgumentError(parameter, str(exc), item=name) from None
 
 
 def _label(name: str) -> str:

@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.sweep.runs import SweepJob
+from rbi.sweeps.runs import SweepJob
 
 MASS_COLUMNS = (
     "mass",

@@ -1,0 +1,341 @@
+"""One simulation run of a loaded body, from its settings to its summary: the settings checked
+(before any work), the run prepared (scene, initial state, step budget), integrated by the
+compiled kernel (or the method asked for) and summarised as ``rbi simulate --format json``
+prints it.
+
+The path of a run: :func:`rbi.simulate` → :func:`prepare_run` → :meth:`PreparedRun.simulate`
+→ :func:`rbi.sim.api.simulate` (the kernel). Errors name the settings as the Python API spells
+them (:class:`~rbi.errors.ArgumentError`); a spec that cannot be simulated is an
+:class:`~rbi.errors.InputError` naming the spec.
+"""
+
+from __future__ import annotations
+
+import numbers
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept
+from rbi.errors import ArgumentError, InputError
+from rbi.runs.values import finite, require_numbers, vector_value
+
+MAX_SAMPLES = 1_000_000
+"""Most samples one run reports (a CSV of 10⁶ rows is about 250 MB)."""
+
+SCENE_NAMES = {True: "heavy top on a fixed pivot", False: "free body (torque-free about the centre of mass)"}
+
+Progress = Callable[[float], None]
+
+
+def check_run_settings(duration: Any, tilt_axis: Any, gravity: Any, max_steps: Any, rtol: Any) -> None:
+    """Refuse the settings that `simulate`, `animate` and `sweep` all take: duration (s, >= 0),
+    tilt axis (world x or y), gravity (m/s², >= 0, or None for 9.81), step budget (>= 1 or
+    None) and tolerance (in :data:`rbi.sim.api.RTOL_RANGE`, or None for the method's own)."""
+    from rbi.sim.api import RTOL_RANGE
+
+    require_numbers(duration=duration, gravity=gravity, rtol=rtol)
+    require_numbers(integral=True, max_steps=max_steps)
+    if not (finite(duration) and duration >= 0.0):
+        raise ArgumentError("duration", f"must be a finite number of seconds >= 0 (got {duration!r})")
+    if not isinstance(tilt_axis, str) or tilt_axis.lower() not in ("x", "y"):
+        raise ArgumentError("tilt_axis", f"must be x or y (got {tilt_axis!r})")
+    if gravity is not None and not (finite(gravity) and gravity >= 0.0):
+        raise ArgumentError("gravity", f"must be a finite number of m/s² >= 0 (got {gravity!r})")
+    if max_steps is not None and not (_whole(max_steps) and max_steps >= 1):
+        raise ArgumentError("max_steps", f"must be at least 1 (got {max_steps!r})")
+    if rtol is not None and not (finite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
+        raise ArgumentError("rtol", f"must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
+
+
+def check_run_options(
+    method: Any,
+    spin: Any = None,
+    omega: Any = None,
+    tilt_deg: Any = 0.0,
+    duration: Any = 4.0,
+    tilt_axis: Any = "y",
+    **settings: Any,
+) -> None:
+    """Refuse the settings of one run that `simulate` and `animate` share: the method, the
+    initial spin (rad/s about the spin axis) or angular velocity ω (three numbers, body frame,
+    rad/s), the tilt (deg) and :func:`check_run_settings`'s (``gravity``, ``max_steps``,
+    ``rtol`` as keywords; other keywords, such as ``spin_axis``, are checked where they are
+    used)."""
+    from rbi.sim.api import METHODS
+
+    if method not in METHODS:
+        raise ArgumentError("method", f"must be one of {', '.join(METHODS)} (got {method!r})")
+    require_numbers(spin=spin, tilt_deg=tilt_deg)
+    if spin is not None and omega is not None:
+        raise ArgumentError(("spin", "omega"), "give one or the other, not both")
+    if spin is not None and not finite(spin):
+        raise ArgumentError("spin", f"must be a finite number (got {spin!r})")
+    if not finite(tilt_deg):
+        raise ArgumentError("tilt_deg", f"must be a finite number (got {tilt_deg!r})")
+    if not angle_is_kept(tilt_deg):
+        raise ArgumentError(
+            "tilt_deg",
+            f"{tilt_deg!r} degrees is too large to be a turn: rounding loses it "
+            f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
+        )
+    check_run_settings(
+        duration, tilt_axis, settings.get("gravity"), settings.get("max_steps"), settings.get("rtol")
+    )
+    if omega is not None:
+        vector_value(omega, "omega")
+
+
+def check_samples(samples: Any, most: int = MAX_SAMPLES, what: str = "") -> None:
+    """Refuse a number of samples outside 1 … ``most`` (``what``: said after the range)."""
+    require_numbers(integral=True, samples=samples)
+    if not (_whole(samples) and 1 <= samples <= most):
+        raise ArgumentError("samples", f"must be between 1 and {most:,}{what} (got {samples!r})")
+
+
+def _whole(value: Any) -> bool:
+    return not isinstance(value, bool) and isinstance(value, numbers.Integral)
+
+
+def spin_axis_value(value: str | Sequence[float] | None) -> list[float] | None:
+    """A spin axis as the API takes it: ``"x"``, ``"y"``, ``"z"`` (optionally signed, ``"-y"``)
+    or three numbers (any length, not zero), made a unit vector; None stays None (the spec's or
+    the default axis)."""
+    if value is None:
+        return None
+    if isinstance(value, str):
+        named = {"x": [1.0, 0.0, 0.0], "y": [0.0, 1.0, 0.0], "z": [0.0, 0.0, 1.0]}
+        text = value.strip().lower()
+        sign = -1.0 if text.startswith("-") else 1.0
+        if text.lstrip("+-") not in named:
+            raise ArgumentError(
+                "spin_axis", f"must be x, y, z or a direction (3 numbers) in body axes (got {value!r})"
+            )
+        return [sign * c + 0.0 for c in named[text.lstrip("+-")]]
+    vector = vector_value(value, "spin_axis")
+    if not any(vector):
+        raise ArgumentError(
+            "spin_axis", "must not be zero [0, 0, 0]: give a direction in body axes, e.g. y or (0, 1, 0)"
+        )
+    from rbi.core.rotation import unit_vector
+
+    return unit_vector(vector).tolist()
+
+
+def body_spin_axis(body: Any, given: str | Sequence[float] | None = None) -> np.ndarray:
+    """The spin axis of a loaded body (unit, body frame): ``given`` (see :func:`spin_axis_value`),
+    else the spec's ``spin_axis:``, else :func:`rbi.core.spin_axis.default_spin_axis` of the
+    inertia about the pivot (about the centre of mass of a free body)."""
+    from rbi.core.rotation import unit_vector
+    from rbi.core.spin_axis import default_spin_axis
+
+    axis = spin_axis_value(given)
+    if axis is not None:
+        return np.array(axis)
+    if body.spin_axis is not None:
+        return unit_vector(body.spin_axis)
+    fixed = np.asarray(body.props.center_of_mass if body.pivot is None else body.pivot, dtype=float)
+    return default_spin_axis(
+        body.props.inertia_about(fixed), np.asarray(body.props.center_of_mass, dtype=float) - fixed
+    )
+
+
+def scene_of(body: Any, gravity_si: float | None, spin_axis: str | Sequence[float] | None = None) -> Any:
+    """The :class:`~rbi.sim.scene.Scene` of a loaded body: a heavy top on its pivot (a spec with
+    ``pivot``) or a free body, under gravity ``gravity_si`` m/s² (None: standard gravity),
+    converted to the spec's length unit, spinning about :func:`body_spin_axis`.
+    :class:`InputError` when the body cannot be simulated (no mass, a singular inertia)."""
+    from rbi.sim.scene import scene_from_properties
+    from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
+
+    g_si = STANDARD_GRAVITY_SI if gravity_si is None else float(gravity_si)
+    axis = body_spin_axis(body, spin_axis)
+    try:
+        return scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit, g_si), axis)
+    except ValueError as exc:
+        where = "pivot: " if body.pivot is not None else ""
+        raise InputError(f"{body.path}: {where}cannot simulate: {exc}") from None
+
+
+@dataclass(frozen=True)
+class SimulationRun:
+    """A finished run: ``trajectory`` (:class:`rbi.sim.api.Trajectory`), ``columns`` (the CSV's
+    columns by name, :data:`rbi.sim.summary.CSV_COLUMNS`) and ``summary`` (plain values and
+    numpy arrays: what `rbi simulate --format json` prints, without ``out``)."""
+
+    trajectory: Any
+    columns: dict[str, np.ndarray]
+    summary: dict[str, Any]
+
+
+@dataclass(frozen=True)
+class PreparedRun:
+    """Everything a run needs, checked.
+
+    body: the :class:`~rbi.spec.load.LoadedBody` (spec units). scene: the
+    :class:`~rbi.sim.scene.Scene` (pivot or free body, gravity in the spec's length unit/s²).
+    q0: initial orientation [w, x, y, z], body → world. omega0: initial angular velocity, body
+    frame, rad/s. tilt_deg, tilt_axis: the nudge, the body's turn at t=0 about a world axis
+    (the tilt is then the angle of the scene's spin axis from the vertical). duration (s),
+    method, rtol (None: the method's own), budget: most integration steps.
+    """
+
+    body: Any
+    scene: Any
+    q0: np.ndarray
+    omega0: np.ndarray
+    tilt_deg: float
+    tilt_axis: str
+    duration: float
+    method: str
+    rtol: float | None
+    budget: int
+
+    def integrate(self, samples: int, progress: Progress | None = None) -> Any:
+        """The trajectory (:class:`rbi.sim.api.Trajectory`) at ``samples`` equally spaced times,
+        from the kernel; :class:`InputError` (naming the spec) when the integration fails."""
+        from rbi.sim.api import SimulationError, simulate
+
+        try:
+            return simulate(
+                self.scene,
+                self.q0,
+                self.omega0,
+                self.duration,
+                samples,
+                method=self.method,
+                rtol=self.rtol,
+                progress=progress,
+                max_steps=self.budget,
+            )
+        except SimulationError as exc:
+            raise InputError(f"{self.body.path}: {exc}") from None
+
+    def simulate(
+        self, samples: int, *, error_estimate: bool = True, progress: Progress | None = None
+    ) -> SimulationRun:
+        """Integrate, summarise and (unless ``error_estimate`` is False or the method is the
+        closed form) estimate the error by a tighter second run. A trajectory that overflowed is
+        refused with :class:`InputError` (absurd spin or inertia)."""
+        from rbi.sim.api import SimulationError
+        from rbi.sim.summary import error_estimate as estimate
+        from rbi.sim.summary import sample_columns, summarize
+
+        trajectory = self.integrate(samples, progress)
+        try:
+            figures = summarize(self.scene, trajectory, self.q0, self.omega0)
+            figures["error_estimate"] = (
+                estimate(self.scene, trajectory, self.q0, self.omega0, max_steps=self.budget)
+                if error_estimate and self.method != "exact"
+                else None
+            )
+        except SimulationError as exc:
+            raise InputError(f"{self.body.path}: {exc}") from None
+        columns = sample_columns(self.scene, trajectory)
+        refuse_non_finite(self.body.path, columns)
+        return SimulationRun(trajectory=trajectory, columns=columns, summary=self._head(trajectory) | figures)
+
+    def _head(self, trajectory: Any) -> dict[str, Any]:
+        """The summary's first entries: the body, the scene and the initial state."""
+        from rbi.sim.diagnostics import tilt_deg
+
+        body, scene = self.body, self.scene
+        return {
+            "name": body.name,
+            "units": body.units,
+            "warnings": list(body.warnings),
+            "scene": SCENE_NAMES[bool(scene.pivoted)],
+            "pivot": scene.pivot,
+            "gravity": scene.gravity,
+            "duration": self.duration,
+            "samples": int(trajectory.t.size),
+            "initial": {
+                "t": 0.0,
+                "q": self.q0,
+                "omega": self.omega0,
+                "tilt_deg": float(tilt_deg(self.q0, scene.spin_frame)[0]),
+                "nudge_deg": self.tilt_deg,
+            },
+        }
+
+
+def prepare_run(
+    body: Any,
+    *,
+    spin: float | None = None,
+    omega: Sequence[float] | None = None,
+    tilt_deg: float = 0.0,
+    tilt_axis: str = "y",
+    gravity: float | None = None,
+    duration: float = 4.0,
+    method: str = "default",
+    rtol: float | None = None,
+    max_steps: int | None = None,
+    check_budget: bool = True,
+    spin_axis: str | Sequence[float] | None = None,
+) -> PreparedRun:
+    """Check the settings (:func:`check_run_options`) and set up the run of a loaded ``body``.
+    A run estimated to need more integration steps than the budget (``max_steps``, default
+    :data:`rbi.sim.budget.DEFAULT_MAX_STEPS`) is refused with :class:`ArgumentError` when
+    ``check_budget``. ``spin``: rad/s about the spin axis (``spin_axis``, see
+    :func:`body_spin_axis`); ``omega``: the initial angular velocity instead (body frame,
+    rad/s); ``tilt_deg``: the nudge about the world ``tilt_axis``; ``gravity``: m/s²."""
+    from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
+    from rbi.sim.scene import initial_state
+
+    check_run_options(
+        method, spin, omega, tilt_deg, duration, tilt_axis, gravity=gravity, max_steps=max_steps, rtol=rtol
+    )
+    scene = scene_of(body, gravity, spin_axis)
+    if omega is not None:
+        w0 = vector_value(omega, "omega")
+    else:
+        w0 = [float(spin or 0.0) * float(c) for c in scene.spin_axis]
+    q0, omega0 = initial_state(tilt_deg, w0, tilt_axis.lower())
+    budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)
+    if method != "exact" and check_budget:
+        needed = estimated_steps(scene, omega0, duration, method, rtol)
+        if needed > budget:
+            raise ArgumentError(
+                (),
+                f"{body.path}: this run is estimated to need about {needed:.2g} integration steps, more than "
+                f"the budget of {budget:.2g}: shorten {{duration}}, lower the spin, loosen {{rtol}}, or raise "
+                "the budget with {max_steps} (or {check_budget=False} to try anyway)",
+            )
+    return PreparedRun(
+        body=body,
+        scene=scene,
+        q0=q0,
+        omega0=omega0,
+        tilt_deg=float(tilt_deg),
+        tilt_axis=tilt_axis.lower(),
+        duration=float(duration),
+        method=method,
+        rtol=rtol,
+        budget=budget,
+    )
+
+
+def refuse_non_finite(path: str, columns: dict[str, np.ndarray]) -> None:
+    """A trajectory that overflowed is bad input (absurd spin or inertia), never written out."""
+    for name, values in columns.items():
+        if name != "precession_deg" and not np.all(np.isfinite(values)):
+            raise InputError(
+                f"{path}: the trajectory's {name} is not finite: the input values are too large "
+                "for double precision"
+            )
+
+
+def trajectory_csv(columns: dict[str, np.ndarray]) -> str:
+    """The CSV `rbi simulate --out` writes: a header of :data:`rbi.sim.summary.CSV_COLUMNS`,
+    then one line a sample, each number at full precision (its shortest round-tripping
+    ``repr``; ``-0.0`` as ``0.0``; an undefined value, NaN, as an empty cell)."""
+    from rbi.sim.summary import CSV_COLUMNS
+
+    lines = [",".join(CSV_COLUMNS)]
+    table = np.column_stack([np.asarray(columns[name], dtype=float) for name in CSV_COLUMNS])
+    for row in table.tolist():
+        lines.append(",".join("" if v != v else repr(v + 0.0) for v in row))
+    return "\n".join(lines) + "\n"
