@@ -17,6 +17,7 @@ import time
 import urllib.request
 
 import pytest
+
 from tests.conftest import BODIES, one_line_exit_2
 from tests.conftest import run_rbi_inprocess as rbi
 

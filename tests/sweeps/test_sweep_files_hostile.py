@@ -22,11 +22,11 @@ from pathlib import Path
 import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
-from tests.conftest import BODIES, one_line_exit_2
-from tests.conftest import run_rbi_inprocess as rbi
 
 from rbi.files import safe
 from rbi.sweeps import store
+from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import run_rbi_inprocess as rbi
 
 BOLTED = BODIES / "top_bolted.yaml"
 ARGS = [BOLTED, "--spin", "150:250:24", "--duration", "0.1", "--workers", "1"]
