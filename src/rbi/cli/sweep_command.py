@@ -166,23 +166,13 @@ def sweep(
       rbi sweep top_bolted.yaml --spin 200 --vary 'parts.bolt.mass=normal(0.02,0.002)' --runs 500
       rbi sweep top_bolted.yaml --mass-properties --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
-    from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
     from rbi.spec.load import read_yaml
     from rbi.sweeps.study import Study, SweepSettings, check_settings
 
-    grid = dict(
-        spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"), runs=runs, seed=seed
-    )
+    grid = dict(spin=spin, tilt=tilt, vary=vary, runs=runs, seed=seed, spin_axis=spin_axis)
     each_run = dict(duration=duration, samples=samples, rtol=rtol, gravity=gravity, max_steps=max_steps)
     where = dict(workers=workers, dask=dask, mass_properties=mass_properties, check_budget=not yes)
-    settings = SweepSettings(
-        **grid,
-        **each_run,
-        **where,
-        vary=tuple(vary_option(vary or []).items()),
-        tilt_axis=tilt_axis,
-        spin_axis=spin_axis_option(spin_axis),
-    )
+    settings = SweepSettings(**_grid(**grid), **each_run, **where, tilt_axis=tilt_axis)
     check_settings(settings)
     if resume and out is None:
         raise InputError("--resume: needs --out, the file of the interrupted sweep")
@@ -195,6 +185,16 @@ def sweep(
         sys.stdout.write(to_csv(result.get("runs", [])))
         return
     emit(format.value, result, lambda: _table(result, study.columns, rows, file))
+
+
+def _grid(spin: str, tilt: str, vary: list[str] | None, spin_axis: str | None, **same) -> dict:
+    """The grid's options as numbers: ``--spin``, ``--tilt`` and each ``--vary`` text parsed
+    (``START:STOP:COUNT``, ``normal(..)``), ``--spin-axis`` ``X,Y,Z`` as three numbers."""
+    from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
+
+    axes = dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
+    axes |= dict(vary=tuple(vary_option(vary or []).items()), spin_axis=spin_axis_option(spin_axis))
+    return axes | same
 
 
 def _result(study, rows, out: str | None, plot_target, plot: str | None) -> dict:
