@@ -232,7 +232,7 @@ class Body(TableRepr):
     coordinates). A Body does not change; every method returns new arrays.
     """
 
-    def __init__(self, loaded, raw=None) -> None:
+    def __init__(self, loaded: Any, raw: Any = None) -> None:
         self._loaded = loaded
         self._raw = raw
         self.warnings: list[str] = list(loaded.warnings)
@@ -343,7 +343,7 @@ class Body(TableRepr):
         return Principal(
             moments=np.asarray(moments) + 0.0,
             axes=np.asarray(axes) + 0.0,
-            radii_of_gyration=np.asarray(radii_of_gyration(moments, self.mass)),
+            radii_of_gyration=np.asarray(radii_of_gyration(list(moments), self.mass)),
             about=point,
         )
 
@@ -696,7 +696,9 @@ class SweepTable(TableRepr):
         return f"<rbi.SweepTable {len(self)} runs × {len(self.columns)} columns, {self.failed} failed>"
 
     def _table(self) -> tuple[str, list[list[str]], list[str]]:
-        shown = self._rows if len(self._rows) <= 20 else self._rows[:10] + [None] + self._rows[-10:]
+        shown: list[list[Any] | None] = list(self._rows)
+        if len(shown) > 20:
+            shown = shown[:10] + [None] + shown[-10:]
         rows = [
             ["…"] * len(self.columns)
             if row is None
@@ -805,7 +807,7 @@ def audit(
     mesh_inertia: str = "auto",
     joints: dict[str, float] | Sequence[str] | None = None,
     fix: bool = False,
-    allow_outside_paths: bool = False,
+    allow_outside_paths: bool | None = None,
     mesh_repair: bool = False,
 ) -> AuditReport:
     """Audit a robot file (URDF ``.urdf``, SDF ``.sdf``, MJCF ``.xml``, or ``.xacro`` with the
@@ -827,7 +829,8 @@ def audit(
         joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
             metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
         fix: also plan the fixed copy: ``report.fix.content`` (bytes), ``.changes``, ``.unfixable``.
-        allow_outside_paths: let the file name meshes and includes outside its folder.
+        allow_outside_paths: let the file name meshes and includes outside its folder; None:
+            as an enclosing `outside_paths_allowed` block says (not allowed outside one).
         mesh_repair: close meshes' holes of three or four edges first (each repair, with the
             area it added, is listed in ``report.notes``).
 
@@ -840,7 +843,11 @@ def audit(
         SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
             read, or repeats a link name.
     """
+    from rbi.formats.paths import outside_paths_are_allowed
     from rbi.robot import audit as run_audit
+
+    if allow_outside_paths is None:
+        allow_outside_paths = outside_paths_are_allowed()
 
     return run_audit(
         robot_file,

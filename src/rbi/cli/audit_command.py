@@ -114,7 +114,6 @@ def audit(
       rbi audit robot.urdf --fix --out fixed.urdf
     """
     from rbi.api import audit as run_audit
-    from rbi.formats.paths import _outside_allowed
 
     target = _fix_target(file, fix, out)
     report = run_audit(
@@ -126,7 +125,6 @@ def audit(
         mesh_inertia=mesh_inertia,
         joints=joints,
         fix=fix,
-        allow_outside_paths=_outside_allowed.get(),
         mesh_repair=mesh_repair,
     )
     code = report.exit_code
@@ -201,7 +199,6 @@ def _table(report) -> None:
     from rbi.cli.render import number, print_table, terminal_safe
     from rbi.cli.tables import titled
     from rbi.cli.terminal import say
-    from rbi.robot.audit import _worst_ratio
 
     word = report.model.link_word
     plural = "bodies" if word == "body" else word + "s"
@@ -217,7 +214,7 @@ def _table(report) -> None:
     table.add_column("flags", overflow="fold")
     for each in report.links:
         declared, geo = each.declared, each.geometry
-        worst = None if each.ratios is None else _worst_ratio(each.ratios)
+        worst = each.worst_ratio
         flags = " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok"
         table.add_row(
             each.link.name if each.link.name is not None else each.link.label,

@@ -123,6 +123,12 @@ class LinkAudit:
     def has_error(self) -> bool:
         return any(flag.level == "error" for flag in self.flags)
 
+    @property
+    def worst_ratio(self) -> float | None:
+        """The ratio of a declared moment to the geometry's farthest from 1 (by factor), or None
+        when there is none (no geometry, no declared inertia)."""
+        return None if self.ratios is None else _worst_ratio(self.ratios)
+
 
 @dataclass
 class AuditReport(TableRepr):
