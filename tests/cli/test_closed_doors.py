@@ -141,3 +141,32 @@ def test_the_sweep_table_never_breaks_a_path_in_its_header(columns, monkeypatch)
     assert proc.returncode == 0, proc.stderr
     assert "parts.stem.radius" in proc.stdout, proc.stdout
     assert not any(line.strip().startswith(".radius") for line in proc.stdout.splitlines()), proc.stdout
+
+
+@pytest.mark.parametrize("command", ["inertia", "parts", "principal"])
+def test_mesh_notes_are_warnings_in_every_output_form(tmp_path, command):
+    """The area repair added and overlapping pieces were said by rbi parts' table only, and
+    missing from JSON 'warnings'."""
+    import json
+
+    import numpy as np
+
+    from tests.mesh_builders import box_mesh, write_obj
+
+    vertices, faces = box_mesh((2, 2, 2))
+    write_obj(tmp_path / "open.obj", vertices, faces[1:])
+    write_obj(tmp_path / "twice.obj", vertices, np.vstack([faces, faces]))
+    spec = tmp_path / "body.yaml"
+    spec.write_text(
+        "parts:\n  - {name: mended, shape: mesh, file: open.obj, mass: 1, repair: true, scale: 0.5}\n"
+        "  - {name: doubled, shape: mesh, file: twice.obj, mass: 1}\n"
+    )
+    repaired = f"{spec}: parts[0] (mended): file: open.obj: repair added 1 triangle closing holes, 0.5 m²"
+    overlap = f"{spec}: parts[1] (doubled): file: twice.obj: pieces of the mesh overlap"
+    data = json.loads(rbi(command, spec, "-f", "json").stdout)
+    assert any(w.startswith(repaired) for w in data["warnings"]) and any(
+        w.startswith(overlap) for w in data["warnings"]
+    ), data["warnings"]
+    table = rbi(command, spec)
+    assert table.returncode == 0 and table.stderr.count("repair added") == 1, table.stderr
+    assert f"rbi: warning: {overlap}" in table.stderr

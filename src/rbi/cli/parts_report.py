@@ -5,7 +5,6 @@ from __future__ import annotations
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.mass_reports import load_body
 from rbi.cli.render import matrix_digits, number
-from rbi.cli.terminal import say
 
 
 def parts(files, fmt: str = "table") -> int:
@@ -25,13 +24,8 @@ def parts_of(file: str):
     """
     from rbi.core.inertia import principal_axes
 
-    body = load_body(file)
+    body = load_body(file)  # its warnings hold the mesh notes (repair, overlaps) too
     rows = _part_rows(body)
-    if body.spec is not None:
-        from rbi.spec.translate import mesh_notes
-
-        for note in mesh_notes(body.spec):
-            say(f"warning: {body.path}: {note}")
     volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
     every_part_has_volume = all(row["volume"] is not None for row in rows)
     total = {
