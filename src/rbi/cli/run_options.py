@@ -60,8 +60,8 @@ RtolOption = Annotated[
     typer.Option(
         "--rtol",
         metavar="RTOL",
-        help="Tolerance of the integrator (default 1e-12 for default, 1e-8 for rk45/dop853): smaller "
-        "is more accurate and slower.",
+        help="Tolerance of the integrator (default 1e-12; 1e-8 for simulate --method rk45 or dop853): "
+        "smaller is more accurate and slower.",
     ),
 ]
 MaxStepsOption = Annotated[
