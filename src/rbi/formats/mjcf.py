@@ -176,11 +176,15 @@ def _actuator_limits(model: RobotModel, root, defaults) -> None:
 
 
 def _gravity(path: str, root) -> np.ndarray:
-    """``<option gravity>`` (m/s², world frame); MuJoCo's default ``0 0 -9.81``."""
+    """``<option gravity>`` (m/s², world frame); MuJoCo's default ``0 0 -9.81``; none with
+    ``<option><flag gravity="disable"/>``."""
     gravity = [0.0, 0.0, -9.81]
     for option in root.all("option"):
         if option.get("gravity") is not None:
             gravity = numbers(Where(path), option.get("gravity"), "option: gravity", 3)
+        flag = option.child("flag")
+        if flag is not None and flag.get("gravity") == "disable":
+            gravity = [0.0, 0.0, 0.0]
     return np.array(gravity, dtype=float)
 
 
