@@ -441,10 +441,45 @@ def sections(result: dict) -> list[dict]:
                 lambda h: "left" if h == "command" else "right",
             )
         )
+    cad = result.get("cad")
+    if cad:
+        out.append(block(cad_title(cad), CAD_COLUMNS, cad_rows(cad)))
     lines = headline(result)
     if lines:
         out.append({"text": "\n".join("• " + line for line in lines), "dim": False})
     return out
+
+
+CAD_COLUMNS = ["file", "triangles", "MB", "load [s]", "volume err", "CoM err", "inertia err", "estimate"]
+"""Errors are relative to the closed form; the estimate is the integration's own (STEP only)."""
+
+
+def cad_title(cad: dict) -> str:
+    if cad.get("error"):
+        return f"CAD solids: {cad['error']}"
+    a, b, c = cad["plate_mm"]
+    return (
+        f"CAD solids: a {a:g} × {b:g} × {c:g} mm plate with {cad['holes']} holes of radius "
+        f"{cad['hole_radius_mm']:g} mm, read as STEP (exact geometry) and as STL, whole load cold; "
+        "errors relative, against the closed form"
+    )
+
+
+def cad_rows(cad: dict) -> list[list[str]]:
+    """One row per file: the STEP (exact B-rep) and its STL tessellation."""
+    return [
+        [
+            row["file"],
+            "—" if row.get("triangles") is None else f"{row['triangles']:,}",
+            number(row["bytes"] / 1e6, 3),
+            number(row["seconds"], 3),
+            _sci(row["volume_error"]),
+            _sci(row["com_error"]),
+            _sci(row["inertia_error"]),
+            _sci(row.get("integration_error")),
+        ]
+        for row in cad.get("files", [])
+    ]
 
 
 def vector_text(v) -> str:
@@ -636,6 +671,7 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
     out += _workprecision_markdown(result.get("workprecision"), plot_link)
     out += _throughput_markdown(result.get("throughput"))
     out += _latency_markdown(result.get("latency"))
+    out += _cad_markdown(result.get("cad"))
     return "\n".join(out) + "\n"
 
 
@@ -686,6 +722,20 @@ def _preamble(result: dict, command: str) -> list[str]:
             _md_table(TARGET_COLUMNS, target_rows(result["targets"])),
         ]
     return out
+
+
+def _cad_markdown(cad: dict | None) -> list[str]:
+    """CAD solids: the STEP plate against its STL, time and error side by side."""
+    if not cad:
+        return []
+    return [
+        "",
+        "## CAD solids: STEP against STL",
+        "",
+        cad_title(cad) + ".",
+        "",
+        _md_table(CAD_COLUMNS, cad_rows(cad)),
+    ]
 
 
 def _workprecision_markdown(wp: dict | None, plot_link: str | None) -> list[str]:

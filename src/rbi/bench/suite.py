@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from rbi.bench import kernel, largespec, latency, sweep, throughput, workprecision
+from rbi.bench import cad, kernel, largespec, latency, sweep, throughput, workprecision
 from rbi.bench.timing import machine
 
 SECTIONS = {
@@ -14,6 +14,7 @@ SECTIONS = {
     "largespec": largespec,
     "latency": latency,
     "sweep": sweep,
+    "cad": cad,
 }
 """Every section by name, in the order they run."""
 

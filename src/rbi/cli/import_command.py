@@ -1,4 +1,5 @@
-"""`rbi import`: the links of a URDF, SDF or MJCF file as rbi specs (one custom part each)."""
+"""`rbi import`: the links of a URDF, SDF or MJCF file as rbi specs (one custom part each), or
+the solids of a STEP file as one spec (one ``shape: step`` part each)."""
 
 from __future__ import annotations
 
@@ -9,9 +10,31 @@ from typing import Annotated
 import typer
 
 from rbi.cli.audit_command import PackagePathOption
-from rbi.cli.options import FormatOption, OutputFormat, RobotFile
+from rbi.cli.options import FormatOption, OutputFormat
 from rbi.spec.errors import InputError
 
+ImportFile = Annotated[
+    str,
+    typer.Argument(
+        help="Robot description (.urdf, .sdf, MJCF .xml) or CAD file (.step, .stp).",
+        show_default=False,
+        metavar="FILE",
+    ),
+]
+DensityOption = Annotated[
+    float | None,
+    typer.Option(
+        "--density",
+        metavar="D",
+        help="STEP files: density of every solid, kg/m³ (default 1000, a placeholder).",
+    ),
+]
+MaterialOption = Annotated[
+    str | None,
+    typer.Option(
+        "--material", metavar="NAME", help="STEP files: a built-in material for every solid (e.g. steel)."
+    ),
+]
 LinkOption = Annotated[
     list[str] | None,
     typer.Option(
@@ -32,13 +55,19 @@ OutOption = Annotated[
 
 
 def import_robot(
-    file: RobotFile,
+    file: ImportFile,
     link: LinkOption = None,
     out: OutOption = None,
     package_path: PackagePathOption = None,
     format: FormatOption = OutputFormat.table,
+    density: DensityOption = None,
+    material: MaterialOption = None,
 ) -> None:
     """Turn each link of a robot file into an rbi spec: its mass, centre of mass and inertia as a custom part.
+
+    A STEP file (.step, .stp) becomes one spec with a `shape: step` part per solid, named after
+    the solid, in SI units (the file's own length unit is honoured): --density D or --material
+    NAME fill them; --format json lists the solids with their volume and mass properties.
 
     The specs are in SI units and in the link's own frame; the inertial frame's orientation
     (URDF/SDF rpy, MJCF quat) becomes the part's rotation. --format json lists the links with
@@ -51,7 +80,22 @@ def import_robot(
       rbi import two_link_arm.urdf --link forearm --out forearm.yaml
       rbi import robot.sdf --out specs/
       rbi import humanoid.xml --format json
+      rbi import bracket.step --material aluminium
     """
+    from rbi.formats.step import is_step_path
+
+    if is_step_path(file):
+        _import_step(file, link, out, format, density, material)
+        return
+    if density is not None or material is not None:
+        raise InputError(
+            f"{'--density' if density is not None else '--material'}: applies to STEP files only"
+        )
+    _import_robot(file, link, out, format, package_path)
+
+
+def _import_robot(file: str, link, out: str | None, format: OutputFormat, package_path) -> None:
+    """`rbi import ROBOT_FILE`: each link's spec, printed or written, or the listing."""
     from rbi.cli.terminal import say
     from rbi.formats.robot_files import link_problems, read_robot_file
     from rbi.formats.robot_paths import parse_package_paths
@@ -82,6 +126,116 @@ def import_robot(
                 print(visible(str(target.given)))
         return
     _emit_listing(format, robot, links, targets)
+
+
+def _import_step(file: str, link, out: str | None, format: OutputFormat, density, material) -> None:
+    """`rbi import FILE.step`: the spec (YAML, printed or written to --out FILE.yaml), or with
+    --format json/csv the solids and their mass properties at the density given."""
+    import os
+    from pathlib import Path
+
+    from rbi.formats.paths import spec_relative_file
+    from rbi.spec.from_step import step_spec
+
+    if link:
+        raise InputError(
+            "--link: a STEP file has solids, not links: the spec lists them all (pick with solid:)"
+        )
+    density, material = _step_fill(density, material)
+    target = None
+    if out is not None:
+        from rbi.cli.output import output_target
+
+        target = output_target(out, "--out", ("yaml", "yml"), inputs=[file])
+    home = os.path.dirname(os.path.abspath(out)) if out is not None else os.getcwd()
+    with _outside_cwd_allowed():
+        path = spec_relative_file(os.path.join(home, "spec.yaml"), os.path.abspath(file), f"{file}")
+    try:
+        spec = step_spec(Path(path), os.path.relpath(os.path.abspath(file), home), density, material)
+    except ValueError as exc:
+        raise InputError(f"{file}: {exc}") from None
+    if format is not OutputFormat.table:
+        _emit_step_listing(format, file, path, spec)
+    if target is not None:
+        from rbi.cli.output import write_output
+
+        write_output(target, _step_yaml_text(file, spec))
+    elif format is OutputFormat.table:
+        sys.stdout.write(_step_yaml_text(file, spec))
+
+
+def _outside_cwd_allowed():
+    from rbi.formats.paths import outside_paths_allowed
+
+    return outside_paths_allowed(True)  # the file is the command's own argument, not a spec's
+
+
+def _step_fill(density, material):
+    """(density kg/m³ or None, canonical material name or None), checked; one at most."""
+    import math
+
+    if density is not None and material is not None:
+        raise InputError("--density, --material: give one of them, not both")
+    if density is not None and not (math.isfinite(density) and density > 0):
+        raise InputError(f"--density: must be a positive number (kg/m³), got {density!r}")
+    if material is not None:
+        from rbi.spec.materials import canonical_name, unknown_material_message
+
+        if canonical_name(material) is None:
+            raise InputError(f"--material: {unknown_material_message(material)}")
+    return density, material
+
+
+def _step_yaml_text(file: str, spec: dict) -> str:
+    import os
+
+    from rbi.spec.from_step import DEFAULT_DENSITY
+    from rbi.spec.yaml_writer import comment, dump
+
+    fill = spec["parts"][0]["density"]
+    lines = [
+        f"rbi import of {os.path.basename(file)}: one part per solid, integrated on the exact STEP geometry;",
+        "SI units (the file's own length unit is honoured), the file's origin and axes.",
+    ]
+    if fill == DEFAULT_DENSITY:
+        lines.append(
+            f"density: {DEFAULT_DENSITY:g} kg/m³ is a placeholder: give yours (--density D or --material NAME)."
+        )
+    return comment(*lines) + dump(spec)
+
+
+def _emit_step_listing(format: OutputFormat, file: str, path, spec: dict) -> None:
+    """The solids with their mass properties at the spec's density, SI."""
+    from rbi.cli.render import emit
+    from rbi.formats.step import read_step
+    from rbi.spec.materials import density_in_units
+    from rbi.text import visible
+
+    step = read_step(path)
+    fill = spec["parts"][0]["density"]
+    density = density_in_units(fill, "m", "kg") if isinstance(fill, str) else float(fill)
+    rows = [
+        {
+            "name": solid.name,
+            "index": i,
+            "volume": solid.volume,
+            "mass": density * solid.volume,
+            "center_of_mass": solid.props.com,
+            "inertia_about_com": density * solid.props.inertia_com,
+            "integration_error": solid.integration_error,
+        }
+        for i, solid in enumerate(step.solids)
+    ]
+    result = {
+        "file": file,
+        "format": "step",
+        "file_unit": step.unit,
+        "units": {"length": "m", "mass": "kg"},
+        "density": density,
+        "solids": rows,
+    }
+    csv_rows = [{k: (visible(v) if isinstance(v, str) else v) for k, v in row.items()} for row in rows]
+    emit(format.value, result, lambda: None, csv_rows=csv_rows)
 
 
 def _selected(robot, names: list[str]):

@@ -79,7 +79,21 @@ def _part_rows(body) -> list[dict]:
                 "implied_density_si": None if density is None else density * to_si,
             }
         )
+    _add_integration_errors(rows, spec_parts)
     return rows
+
+
+def _add_integration_errors(rows: list[dict], spec_parts: list) -> None:
+    """With a STEP part in the spec, every row gets ``integration_error``: the relative error
+    estimate of the exact-geometry integration for a STEP part (see :mod:`rbi.formats.step`),
+    null for the others."""
+    from rbi.spec.models import StepPart
+
+    if not any(isinstance(part, StepPart) for part in spec_parts):
+        return
+    for i, row in enumerate(rows):
+        part = spec_parts[i] if i < len(spec_parts) else None
+        row["integration_error"] = part._integration_error if isinstance(part, StepPart) else None
 
 
 def _table(body, rows, total):

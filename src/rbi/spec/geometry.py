@@ -57,7 +57,7 @@ def part_geometry(body) -> list[dict[str, Any]]:
         if part is None:
             item = _cloud_points(spec, body.path)
         else:
-            item = _primitive(part, body.path) if count <= MAX_DRAWN_COPIES else None
+            item = _primitive(part, body.path, body.length_unit) if count <= MAX_DRAWN_COPIES else None
         copies = (
             [_stand_in(element)] if item is None else [moved(item, R, t) for R, t in _copy_motions(pattern)]
         )
@@ -110,7 +110,7 @@ def _vector(v) -> list[float]:
     return [float(x) for x in v]
 
 
-def _primitive(part, spec_path: str) -> dict[str, Any] | None:
+def _primitive(part, spec_path: str, length_unit: str = "m") -> dict[str, Any] | None:
     from rbi.spec.translate import rotation_matrix
 
     if isinstance(part, models.ConePart):
@@ -164,6 +164,8 @@ def _primitive(part, spec_path: str) -> dict[str, Any] | None:
         }
     if isinstance(part, models.MeshPart):
         return _mesh(part, spec_path)
+    if isinstance(part, models.StepPart):
+        return _step(part, spec_path, length_unit)
     return None
 
 
@@ -195,6 +197,33 @@ def _mesh(part, spec_path: str) -> dict[str, Any] | None:
         "vertices": vertices.tolist(),
         "faces": np.asarray(solid.faces, dtype=int).tolist(),
     }
+
+
+STEP_DEFLECTION = 0.01
+"""How far the drawn facets of a STEP solid may stray from its surface, relative to the size of
+each edge (the picture only: the mass properties use the exact geometry)."""
+
+
+def _step(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
+    """The STEP solids' triangles (BRepMesh, for the picture only) placed as the mass
+    properties place them: the file's unit to the spec's, ``rotation`` about the file's
+    origin, then the origin to ``position``."""
+    from rbi.formats.paths import spec_relative_file
+    from rbi.formats.step import read_step, select_solids, step_triangles
+    from rbi.spec.translate import rotation_matrix
+    from rbi.spec.units import LENGTH_UNITS_IN_M
+
+    path = spec_relative_file(spec_path, part.file, f"file: {part.file}")
+    chosen = select_solids(read_step(path), part.solid)  # cached: read once for the mass properties
+    vertices, faces = step_triangles(path, chosen, STEP_DEFLECTION)
+    if len(faces) > MAX_DRAWN_TRIANGLES:
+        return None
+    vertices = vertices / LENGTH_UNITS_IN_M[length_unit]
+    R = rotation_matrix(part.rotation)
+    if R is not None:
+        vertices = vertices @ R.T
+    vertices = vertices + np.asarray(part.position, dtype=float)
+    return {"kind": "mesh", "vertices": vertices.tolist(), "faces": np.asarray(faces, dtype=int).tolist()}
 
 
 def _frustum(start, end, start_radius, end_radius, inner_radius=0.0) -> dict[str, Any]:

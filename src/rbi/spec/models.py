@@ -10,7 +10,15 @@ from __future__ import annotations
 from typing import Annotated, Any, Literal, Union
 
 import numpy as np
-from pydantic import ConfigDict, Field, PlainValidator, PrivateAttr, ValidationError, model_validator
+from pydantic import (
+    BeforeValidator,
+    ConfigDict,
+    Field,
+    PlainValidator,
+    PrivateAttr,
+    ValidationError,
+    model_validator,
+)
 
 from rbi.spec.expect import Expect
 from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
@@ -468,6 +476,49 @@ class MeshPart(_Solid):
         return self
 
 
+def _solid_choice(value: Any) -> Any:
+    """``solid:`` is a name (non-empty text) or a 0-based index (a whole number, 0 or more)."""
+    if value is None or (isinstance(value, str) and value.strip()):
+        return value
+    if isinstance(value, int) and not isinstance(value, bool) and value >= 0:
+        return value
+    raise ValueError(
+        f"must be a solid's name or its 0-based index (a whole number, 0 or more), got {value!r}"
+    )
+
+
+class StepPart(_Solid):
+    """The solid (or solids) of a STEP file (ISO 10303-21: AP203, AP214, AP242) read from ``file``,
+    integrated on the exact boundary representation. The file's own length unit is honoured;
+    its axes are turned by ``rotation`` about the file's origin, then that origin is put at
+    ``position``. Needs the optional extra ``cad``."""
+
+    shape: Literal["step"] = Field(description="The solid or solids of a STEP file (CAD).")
+    file: Annotated[
+        str, Field(min_length=1, description="STEP file (.step, .stp), relative to the spec's folder.")
+    ]
+    solid: Annotated[str | int | None, BeforeValidator(_solid_choice)] = Field(
+        None,
+        description=(
+            "Which solid: its name in the file's product tree (as `rbi import` lists them) or its "
+            "0-based index in file order; default: every solid of the file together."
+        ),
+    )
+    position: Vector3 = Field([0.0, 0.0, 0.0], description="Where the file's origin goes, body frame.")
+    rotation: Rotation | None = Field(
+        None, description="How the file's axes are turned into body axes (about its origin)."
+    )
+
+    _step_volume: float | None = PrivateAttr(None)  # L³ in the spec's units, set when the file is read
+    _integration_error: float | None = PrivateAttr(None)  # relative, set when the file is read
+
+    @model_validator(mode="after")
+    def _step_checks(self):
+        if not self.file.lower().endswith((".step", ".stp")):
+            raise ValueError(f"file: {self.file!r} is not a STEP file name: it must end in .step or .stp")
+        return self
+
+
 SHAPE_MODELS: dict[str, type[_Part]] = {
     "cone": ConePart,
     "cylinder": CylinderPart,
@@ -484,6 +535,7 @@ SHAPE_MODELS: dict[str, type[_Part]] = {
     "hemisphere": HemispherePart,
     "capsule": CapsulePart,
     "mesh": MeshPart,
+    "step": StepPart,
 }
 """Every part model by its ``shape`` tag; new shapes are added here."""
 

@@ -200,11 +200,51 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     # inertia per density scales as scale⁵ (scale⁴ for a surface), the density as 1 / measure
     inertia = distribution.inertia_per_density * (mass / distribution.measure * scale * scale)
     com = distribution.centroid * scale
+    return _placed(part, mass, com, inertia)
+
+
+def _placed(part, mass: float, com: np.ndarray, inertia: np.ndarray) -> shapes.MassElement:
+    """A file's solid (mesh, STEP) in the body: its centre of mass and inertia (file axes,
+    spec units) turned by ``part.rotation`` about the file's origin, that origin moved to
+    ``part.position``."""
     R = rotation_matrix(part.rotation)
     if R is not None:
         com = R @ com
         inertia = re_express(inertia, R)
     return MassProperties(mass, np.asarray(part.position, dtype=float) + com, 0.5 * (inertia + inertia.T))
+
+
+def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> shapes.MassElement:
+    """The STEP file's solid (or solids, ``solid:`` unset) in the body: integrated on the exact
+    boundary representation in metres (:mod:`rbi.formats.step`), converted to the spec's length
+    unit, turned by ``rotation`` about the file's origin, that origin moved to ``position``.
+    Raises ValueError naming the file (as written in the spec) and what is wrong with it."""
+    from rbi.formats.paths import spec_relative_file
+    from rbi.formats.step import read_step, select_solids
+    from rbi.spec.units import LENGTH_UNITS_IN_M
+
+    try:
+        file = spec_relative_file(spec_path, part.file, f"file: {part.file}")
+    except InputError as exc:
+        raise ValueError(str(exc)) from None
+    try:
+        step = read_step(file)
+        chosen = [step.solids[i] for i in select_solids(step, part.solid)]
+    except ValueError as exc:
+        raise ValueError(
+            f"file: {part.file}: {exc}" if not str(exc).startswith("solid:") else str(exc)
+        ) from None
+    per_metre = 1.0 / LENGTH_UNITS_IN_M[units.length]
+    props = combine_elements(
+        shapes.MassElement(s.props.mass, s.props.com, s.props.inertia_com) for s in chosen
+    )  # unit density, metres: mass is the volume
+    volume = props.mass * per_metre**3
+    part._step_volume = volume
+    part._integration_error = max(s.integration_error for s in chosen)
+    mass = _solid_mass(part, volume, units)
+    inertia = props.inertia_com * per_metre**5 * (mass / volume)
+    com = props.com * per_metre
+    return _placed(part, mass, com, inertia)
 
 
 def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str, ...]:
@@ -241,6 +281,8 @@ def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
     its file beside the spec), then, with a ``pattern``, every copy combined into one."""
     if isinstance(part, models.MeshPart):
         element = mesh_element(part, units, spec_path)
+    elif isinstance(part, models.StepPart):
+        element = step_element(part, units, spec_path)
     else:
         element = ELEMENT_BUILDERS[type(part)](part, units)
     if part.pattern is not None and part.pattern.count > 1:

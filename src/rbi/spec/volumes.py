@@ -34,6 +34,7 @@ PART_VOLUMES: dict[type, Callable[[object], float]] = {
     models.HemispherePart: lambda p: shapes.hemisphere_volume(p.radius),
     models.CapsulePart: lambda p: shapes.capsule_volume(p.radius, _length(p.start, p.end)),
     models.MeshPart: lambda p: p._enclosed_volume,  # known once the mesh has been read
+    models.StepPart: lambda p: p._step_volume,  # known once the STEP file has been read
 }
 """Volume (L³) of each solid part model; points, rods and custom parts have none."""
 

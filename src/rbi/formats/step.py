@@ -1,0 +1,509 @@
+"""STEP files (ISO 10303-21: AP203, AP214, AP242) that a spec names (``shape: step``) or that
+``rbi import`` reads: each solid of the file with its mass properties integrated on the exact
+boundary representation (OpenCascade's ``BRepGProp``, through the optional extra ``cad``).
+
+The file is read in its own length unit (the unit it declares, so no coordinate is rescaled
+while reading) and every result is returned in metres: a solid's volume in m³, its centre of
+mass in m and its inertia in m⁵ (per unit density) in the file's axes. OpenCascade is imported
+here only, and only when a STEP file is read.
+
+Integration and its error: each solid is integrated twice, by OpenCascade's Gauss rule (exact
+for the polynomial parametrisations of planes, cylinders, cones, spheres and tori) and by its
+adaptive rule at a relative tolerance of :data:`ADAPTIVE_EPS`. The Gauss result is returned;
+the larger relative difference between the two (volume, centre of mass against the solid's
+radius of gyration, inertia against its largest entry) is returned as the integration's error
+estimate. (The adaptive rule's own estimate bounds the volume only: at ``Eps = 1e-9`` a torus's
+inertia is 1e-7 off while it reports 1e-15.)
+
+Names: a solid is named after its label in the file's product tree (the instance's name when
+the file gives one, else the product's), ``NAME[k]`` for the k-th solid of a shape holding
+several, ``solid N`` when the tree names none; repeated names get ``-2``, ``-3``, ... so each
+is unique. Solids are numbered from 0 in the order of the tree, depth first.
+
+Messages name what is wrong, never the file's content.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+from collections import OrderedDict
+from pathlib import Path
+from types import SimpleNamespace
+from typing import Any, NamedTuple
+
+import numpy as np
+
+from rbi.core.inertia import MassProperties
+
+MAX_STEP_BYTES = 32 * 2**20
+"""Largest STEP file rbi reads (32 MiB). OpenCascade needs some 20 to 40 bytes of memory per
+byte of STEP text, so a file at the cap peaks near 1 GB."""
+
+STEP_SUFFIXES = (".step", ".stp")
+"""File extensions rbi reads as STEP."""
+
+CAD_EXTRA_HINT = "pip install 'rbi[cad]'"
+"""How to get OpenCascade's wheels (the optional extra ``cad``: cadquery-ocp-novtk)."""
+
+ADAPTIVE_EPS = 1e-12
+"""Relative tolerance of the adaptive integration the Gauss result is checked against."""
+
+_UNIT_METRES = {
+    "metre": 1.0,
+    "meter": 1.0,
+    "millimetre": 1e-3,
+    "millimeter": 1e-3,
+    "centimetre": 1e-2,
+    "centimeter": 1e-2,
+    "micrometre": 1e-6,
+    "micrometer": 1e-6,
+    "kilometre": 1e3,
+    "kilometer": 1e3,
+    "inch": 0.0254,
+    "foot": 0.3048,
+    "mile": 1609.344,
+}
+"""Length units as OpenCascade names a STEP file's unit, in metres."""
+
+_UNIT_SYMBOLS = {1.0: "m", 1e-3: "mm", 1e-2: "cm", 1e-6: "µm", 1e3: "km", 0.0254: "in", 0.3048: "ft"}
+
+
+class CadExtraMissing(ValueError):
+    """OpenCascade (the optional extra ``cad``) is not installed."""
+
+
+class StepSolid(NamedTuple):
+    """One solid of a STEP file: ``name`` (unique in the file), ``props`` at unit density in
+    metres and the file's axes (``mass`` is the volume in m³, ``com`` in m, ``inertia_com`` in
+    m⁵), and ``integration_error``, the relative error estimate of the integration."""
+
+    name: str
+    props: MassProperties
+    integration_error: float
+
+    @property
+    def volume(self) -> float:
+        """Volume, m³."""
+        return float(self.props.mass)
+
+
+class StepFile(NamedTuple):
+    """What a STEP file holds: its ``solids`` in file order, the length unit it declares
+    (``unit``, a symbol such as ``mm``) and that unit in metres (``unit_metres``)."""
+
+    solids: tuple[StepSolid, ...]
+    unit: str
+    unit_metres: float
+
+
+def is_step_path(path: str | Path) -> bool:
+    """Whether ``path`` names a STEP file by its extension (``.step``, ``.stp``, any case)."""
+    return Path(path).suffix.lower() in STEP_SUFFIXES
+
+
+def read_step(path: Path) -> StepFile:
+    """Read the STEP file at ``path`` and integrate each of its solids (see the module's text).
+
+    Raises :class:`CadExtraMissing` without OpenCascade, ``ValueError`` for a file that is too
+    large, not STEP, holds no solid, or whose solid is open or inside out; the caller adds the
+    file and part to the message.
+    """
+    return _loaded(path).file
+
+
+def select_solids(step: StepFile, solid: str | int | None) -> list[int]:
+    """Indices of the solids a part's ``solid:`` picks: every solid for None, the one at a
+    0-based index, or the one of that name. Raises ``ValueError`` naming the choices."""
+    count = len(step.solids)
+    if solid is None:
+        return list(range(count))
+    if isinstance(solid, int):
+        if 0 <= solid < count:
+            return [solid]
+        raise ValueError(
+            f"solid: {solid} is out of range: the file has {count} solid{'s' * (count != 1)}, 0 to {count - 1}"
+        )
+    for i, one in enumerate(step.solids):
+        if one.name == solid:
+            return [i]
+    names = ", ".join(repr(s.name) for s in step.solids[:12]) + (", ..." if count > 12 else "")
+    raise ValueError(
+        f"solid: no solid named {solid!r} in the file; its solids are {names} (or give a 0-based index)"
+    )
+
+
+def step_triangles(
+    path: Path, indices: list[int], deflection: float, angle: float = 0.5
+) -> tuple[np.ndarray, np.ndarray]:
+    """Triangles of the solids ``indices`` of the STEP file at ``path`` (BRepMesh), for a
+    picture or a comparison, never for mass properties: vertices (N, 3) in metres in the file's
+    axes and faces (F, 3), wound outwards. ``deflection`` is the largest distance of a facet
+    from the surface as a fraction of each edge's size, ``angle`` the largest angle (radians)
+    between neighbouring facets."""
+    loaded = _loaded(path)
+    parts_v, parts_f, offset = [], [], 0
+    for i in indices:
+        vertices, faces = _tessellate(loaded.shapes[i], deflection, angle)
+        parts_v.append(vertices * loaded.file.unit_metres)
+        parts_f.append(faces + offset)
+        offset += len(vertices)
+    if not parts_v:
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    return np.concatenate(parts_v), np.concatenate(parts_f)
+
+
+# --- reading ----------------------------------------------------------------------------------
+
+
+class _Loaded(NamedTuple):
+    file: StepFile
+    shapes: tuple[Any, ...]  # TopoDS_Solid each, in the file's unit
+
+
+_CACHE: OrderedDict[tuple, _Loaded] = OrderedDict()
+"""Files already read in this process (a sweep translates the same spec many times; show reads
+the file again for its triangles), keyed by resolved path, size and modification time."""
+
+_CACHE_ENTRIES = 4
+
+
+def _loaded(path: Path) -> _Loaded:
+    key = _file_key(path)
+    if key in _CACHE:
+        _CACHE.move_to_end(key)
+        return _CACHE[key]
+    _check_text(path, key[1])
+    ocp = _ocp()
+    with _quiet():
+        document, unit_metres = _transfer(ocp, path)
+        labelled = _labelled_solids(ocp, document)
+    if not labelled:
+        raise ValueError(_no_solid(ocp, document))
+    names = _unique([name for name, _ in labelled])
+    solids = []
+    for index, (name, shape) in enumerate(labelled):
+        _check_closed(ocp, shape, index, name)
+        props, error = _integrate(ocp, shape, unit_metres, index, name)
+        solids.append(StepSolid(names[index], props, error))
+    unit = _UNIT_SYMBOLS.get(unit_metres, f"{unit_metres:g} m")
+    value = _Loaded(StepFile(tuple(solids), unit, unit_metres), tuple(shape for _, shape in labelled))
+    _CACHE[key] = value
+    while len(_CACHE) > _CACHE_ENTRIES:
+        _CACHE.popitem(last=False)
+    return value
+
+
+def _file_key(path: Path) -> tuple:
+    try:
+        status = path.stat()
+    except OSError as exc:
+        raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
+    return (str(path.resolve()), status.st_size, status.st_mtime_ns)
+
+
+def _check_text(path: Path, size: int) -> None:
+    """Refuse, before OpenCascade parses anything, a file beyond :data:`MAX_STEP_BYTES` or one
+    that does not start as ISO 10303-21 text does."""
+    if size > MAX_STEP_BYTES:
+        raise ValueError(f"file too large for a STEP file ({size} bytes; rbi reads at most {MAX_STEP_BYTES})")
+    try:
+        with open(path, "rb") as stream:
+            head = stream.read(4096)
+    except OSError as exc:
+        raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
+    text = head.removeprefix(b"\xef\xbb\xbf").lstrip()
+    if not text:
+        raise ValueError("file is empty")
+    if not text.upper().startswith(b"ISO-10303-21"):
+        raise ValueError("not a STEP file (ISO 10303-21 text starts with 'ISO-10303-21;')")
+
+
+_OCP_NAMES = {
+    "OCP.OCP.collections": ("*",),
+    "OCP.BRep": ("BRep_Tool",),
+    "OCP.BRepGProp": ("BRepGProp",),
+    "OCP.GProp": ("GProp_GProps",),
+    "OCP.IFSelect": ("IFSelect_RetDone",),
+    "OCP.STEPCAFControl": ("STEPCAFControl_Reader",),
+    "OCP.TCollection": ("TCollection_ExtendedString",),
+    "OCP.TDataStd": ("TDataStd_Name",),
+    "OCP.TDF": ("TDF_Label",),
+    "OCP.TDocStd": ("TDocStd_Document",),
+    "OCP.TopAbs": ("TopAbs_EDGE", "TopAbs_FACE", "TopAbs_SHELL", "TopAbs_SOLID"),
+    "OCP.TopExp": ("TopExp", "TopExp_Explorer"),
+    "OCP.TopLoc": ("TopLoc_Location",),
+    "OCP.TopoDS": ("TopoDS",),
+    "OCP.XCAFDoc": ("XCAFDoc_DocumentTool", "XCAFDoc_ShapeTool"),
+}
+"""What the reader uses of OpenCascade, by module (``*``: the module itself, as ``collections``)."""
+
+
+def _ocp() -> SimpleNamespace:
+    """OpenCascade's names the reader uses, with its console messages switched off; raises
+    :class:`CadExtraMissing` when the extra ``cad`` is not installed."""
+    import importlib
+
+    try:
+        from OCP.Message import Message
+    except ImportError:
+        raise CadExtraMissing(f"reading STEP files needs OpenCascade: {CAD_EXTRA_HINT}") from None
+    names: dict[str, Any] = {}
+    for module_name, wanted in _OCP_NAMES.items():
+        module = importlib.import_module(module_name)
+        for name in wanted:
+            if name == "*":
+                names[module_name.rsplit(".", 1)[-1]] = module
+            else:
+                names[name] = getattr(module, name)
+    messenger = Message.DefaultMessenger_s()
+    for printer in list(messenger.Printers()):
+        messenger.RemovePrinter(printer)
+    return SimpleNamespace(**names)
+
+
+@contextlib.contextmanager
+def _quiet():
+    """Standard output and error sent to /dev/null at the file-descriptor level while
+    OpenCascade runs: its STEP parser reports some problems with printf."""
+    import sys
+
+    for stream in (sys.stdout, sys.stderr):
+        with contextlib.suppress(Exception):
+            stream.flush()
+    saved = []
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+    except OSError:
+        yield
+        return
+    try:
+        for fd in (1, 2):
+            try:
+                saved.append((fd, os.dup(fd)))
+                os.dup2(devnull, fd)
+            except OSError:
+                pass
+        yield
+    finally:
+        for fd, copy in saved:
+            os.dup2(copy, fd)
+            os.close(copy)
+        os.close(devnull)
+
+
+def _transfer(ocp, path: Path):
+    """The XCAF document of the file, read in the file's own length unit, and that unit in
+    metres."""
+    reader = ocp.STEPCAFControl_Reader()
+    reader.SetNameMode(True)
+    if reader.ReadFile(str(path)) != ocp.IFSelect_RetDone:
+        raise ValueError("cannot be read as STEP (damaged, or not ISO 10303-21)")
+    unit_metres = _file_unit(ocp, reader)
+    document = ocp.TDocStd_Document(ocp.TCollection_ExtendedString("XmlXCAF"))
+    ocp.XCAFDoc_DocumentTool.SetLengthUnit_s(document, unit_metres)
+    if not reader.Transfer(document):
+        raise ValueError("cannot be read as STEP: OpenCascade found no shape to transfer in it")
+    return document, unit_metres
+
+
+def _file_unit(ocp, reader) -> float:
+    """The length unit the file declares, in metres (metres when it declares none rbi knows)."""
+    names = [ocp.collections.Sequence_TCollection_AsciiString() for _ in range(3)]
+    try:
+        reader.Reader().FileUnits(*names)
+    except Exception:  # noqa: BLE001 - no unit declared: OpenCascade converts to metres itself
+        return 1.0
+    lengths = names[0]
+    found = {_UNIT_METRES.get(lengths.Value(i).ToCString().lower()) for i in range(1, lengths.Length() + 1)}
+    found.discard(None)
+    return found.pop() if len(found) == 1 else 1.0
+
+
+def _label_name(ocp, label) -> str | None:
+    attribute = ocp.TDataStd_Name()
+    if label.FindAttribute(ocp.TDataStd_Name.GetID_s(), attribute):
+        name = "".join(c if c.isprintable() else " " for c in attribute.Get().ToExtString()).strip()[:120]
+        if name and not name.startswith("=>"):  # "=>[0:1:1:2]": OpenCascade's name of an unnamed instance
+            return name
+    return None
+
+
+def _labelled_solids(ocp, document) -> list[tuple[str, Any]]:
+    """(name, solid placed in the file's frame) of every solid in the product tree, depth first."""
+    tool = ocp.XCAFDoc_DocumentTool.ShapeTool_s(document.Main())
+    free = ocp.collections.Sequence_TDF_Label()
+    tool.GetFreeShapes(free)
+    found: list[tuple[str | None, Any]] = []
+    for i in range(1, free.Length() + 1):
+        _walk(ocp, free.Value(i), ocp.TopLoc_Location(), None, found, 0)
+    return [(name if name else f"solid {i}", shape) for i, (name, shape) in enumerate(found)]
+
+
+def _no_solid(ocp, document) -> str:
+    """What a file without a solid holds instead, as the end of its refusal."""
+    tool = ocp.XCAFDoc_DocumentTool.ShapeTool_s(document.Main())
+    free = ocp.collections.Sequence_TDF_Label()
+    tool.GetFreeShapes(free)
+    shells = faces = 0
+    for i in range(1, free.Length() + 1):
+        shape = tool.GetShape_s(free.Value(i))
+        for kind in (ocp.TopAbs_SHELL, ocp.TopAbs_FACE):
+            explorer = ocp.TopExp_Explorer(shape, kind)
+            while explorer.More():
+                shells += kind == ocp.TopAbs_SHELL
+                faces += kind == ocp.TopAbs_FACE
+                explorer.Next()
+    if shells or faces:
+        held = f"{shells} shell{'s' * (shells != 1)}" if shells else f"{faces} face{'s' * (faces != 1)}"
+        return (
+            f"holds no solid, only {held} (an open shell or a surface model encloses no volume: "
+            "close it into a solid in the CAD tool)"
+        )
+    return "holds no solid (no shape with a volume: curves or points only)"
+
+
+def _walk(ocp, label, location, instance_name: str | None, found: list, depth: int) -> None:
+    shape_tool = ocp.XCAFDoc_ShapeTool
+    if depth > 64:
+        raise ValueError("its product tree is nested more than 64 deep (a cycle?)")
+    if shape_tool.IsReference_s(label):
+        referred = ocp.TDF_Label()
+        shape_tool.GetReferredShape_s(label, referred)
+        placed = location.Multiplied(shape_tool.GetLocation_s(label))
+        _walk(ocp, referred, placed, _label_name(ocp, label), found, depth + 1)
+        return
+    name = instance_name or _label_name(ocp, label)
+    if shape_tool.IsAssembly_s(label):
+        components = ocp.collections.Sequence_TDF_Label()
+        shape_tool.GetComponents_s(label, components)
+        for i in range(1, components.Length() + 1):
+            _walk(ocp, components.Value(i), location, None, found, depth + 1)
+        return
+    shape = shape_tool.GetShape_s(label).Moved(location)
+    solids = []
+    explorer = ocp.TopExp_Explorer(shape, ocp.TopAbs_SOLID)
+    while explorer.More():
+        solids.append(ocp.TopoDS.Solid(explorer.Current()))
+        explorer.Next()
+    for k, solid in enumerate(solids):
+        found.append((name if len(solids) == 1 or name is None else f"{name}[{k}]", solid))
+
+
+def _unique(names: list[str]) -> list[str]:
+    """The names with ``-2``, ``-3``, ... added to repeats, so that each is unique (never taking
+    a name the file gives another solid)."""
+    given, taken, out = set(names), set(), []
+    for name in names:
+        candidate, n = name, 1
+        while candidate in taken or (candidate != name and candidate in given):
+            n += 1
+            candidate = f"{name}-{n}"
+        taken.add(candidate)
+        out.append(candidate)
+    return out
+
+
+def _check_closed(ocp, solid, index: int, name: str) -> None:
+    """Refuse a solid whose boundary has an edge that only one face uses (an open shell):
+    what it encloses is not defined. Seam edges (a cylinder's) and degenerate edges (a cone's
+    apex, a sphere's poles) are not free."""
+    faces_of = ocp.collections.IndexedDataMap_TopoDS_Shape_List_TopoDS_Shape_TopTools_ShapeMapHasher()
+    ocp.TopExp.MapShapesAndAncestors_s(solid, ocp.TopAbs_EDGE, ocp.TopAbs_FACE, faces_of)
+    free = 0
+    for i in range(1, faces_of.Extent() + 1):
+        edge = ocp.TopoDS.Edge(faces_of.FindKey(i))
+        if ocp.BRep_Tool.Degenerated_s(edge):
+            continue
+        faces = faces_of.FindFromIndex(i)
+        if faces.Size() >= 2:
+            continue
+        if faces.Size() == 1 and ocp.BRep_Tool.IsClosed_s(edge, ocp.TopoDS.Face(faces.First())):
+            continue  # a seam: the face meets itself along it
+        free += 1
+    if free:
+        raise ValueError(
+            f"solid {index} ({name}) is open: {free} edge{'s' * (free != 1)} of its boundary "
+            f"belong{'s' * (free == 1)} to one face only, so it encloses no definite volume "
+            "(sew or close it in the CAD tool)"
+        )
+
+
+def _gprops(ocp, solid, eps: float | None):
+    props = ocp.GProp_GProps()
+    if eps is None:
+        ocp.BRepGProp.VolumeProperties_s(solid, props)
+    else:
+        ocp.BRepGProp.VolumeProperties_s(solid, props, eps, True)
+    centre = props.CentreOfMass()
+    matrix = props.MatrixOfInertia()
+    inertia = np.array([[matrix.Value(i, j) for j in (1, 2, 3)] for i in (1, 2, 3)])
+    return float(props.Mass()), np.array([centre.X(), centre.Y(), centre.Z()]), inertia
+
+
+def _integrate(ocp, solid, unit_metres: float, index: int, name: str) -> tuple[MassProperties, float]:
+    """The solid's mass properties at unit density in metres, and the relative difference
+    between the Gauss and the adaptive integration (the error estimate)."""
+    volume, com, inertia = _gprops(ocp, solid, None)
+    check_volume, check_com, check_inertia = _gprops(ocp, solid, ADAPTIVE_EPS)
+    if not (volume > 0.0 and np.all(np.isfinite(inertia)) and np.all(np.isfinite(com))):
+        raise ValueError(
+            f"solid {index} ({name}) has {'no' if volume == 0 else 'a negative'} volume "
+            "(an inside-out or degenerate solid)"
+        )
+    largest = float(np.max(np.abs(inertia)))
+    radius = np.sqrt(max(np.trace(inertia), 0.0) / (2.0 * volume)) or 1.0
+    error = max(
+        abs(check_volume - volume) / volume,
+        float(np.linalg.norm(check_com - com)) / radius,
+        float(np.max(np.abs(check_inertia - inertia))) / largest if largest > 0 else 0.0,
+    )
+    s = unit_metres
+    inertia = 0.5 * (inertia + inertia.T) * s**5
+    return MassProperties(volume * s**3, com * s, inertia), error
+
+
+def _tessellate(solid, deflection: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
+    """Triangles of one solid by BRepMesh (``deflection`` relative to each edge's size), in
+    the file's unit, faces turned outwards."""
+    from OCP.BRep import BRep_Tool
+    from OCP.BRepMesh import BRepMesh_IncrementalMesh
+    from OCP.BRepTools import BRepTools
+    from OCP.IMeshTools import IMeshTools_MeshAlgoType_Delabella, IMeshTools_Parameters
+    from OCP.TopAbs import TopAbs_FACE, TopAbs_REVERSED
+    from OCP.TopExp import TopExp_Explorer
+    from OCP.TopLoc import TopLoc_Location
+    from OCP.TopoDS import TopoDS
+
+    parameters = IMeshTools_Parameters()
+    parameters.Deflection, parameters.Relative, parameters.Angle = deflection, True, angle
+    parameters.MeshAlgo = (
+        IMeshTools_MeshAlgoType_Delabella  # twice as fast as the default on plates with holes
+    )
+    with _quiet():
+        BRepTools.Clean_s(solid)  # a triangulation made earlier at other settings
+        BRepMesh_IncrementalMesh(solid, parameters)
+    vertices, faces, offset = [], [], 0
+    explorer = TopExp_Explorer(solid, TopAbs_FACE)
+    while explorer.More():
+        face = TopoDS.Face(explorer.Current())
+        explorer.Next()
+        location = TopLoc_Location()
+        mesh = BRep_Tool.Triangulation_s(face, location)
+        if mesh is None:
+            continue
+        transform = location.Transformation()
+        points = np.array([_xyz(mesh.Node(i).Transformed(transform)) for i in range(1, mesh.NbNodes() + 1)])
+        triangles = np.array([mesh.Triangle(i).Get() for i in range(1, mesh.NbTriangles() + 1)]) - 1
+        if face.Orientation() == TopAbs_REVERSED:
+            triangles = triangles[:, ::-1]
+        vertices.append(points)
+        faces.append(triangles + offset)
+        offset += len(points)
+    if not vertices:
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    return np.concatenate(vertices), np.concatenate(faces).astype(np.int64)
+
+
+def _xyz(point) -> tuple[float, float, float]:
+    return point.X(), point.Y(), point.Z()
