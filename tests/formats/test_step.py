@@ -29,8 +29,9 @@ def relative_errors(solid, closed) -> dict[str, float]:
     size = np.sqrt(np.trace(closed.inertia) / closed.volume) * MM
     return {
         "volume": abs(solid.volume - volume) / volume,
-        "com": float(np.linalg.norm(solid.props.com - closed.com * MM)) / size,
-        "inertia": float(np.max(np.abs(solid.props.inertia_com - inertia))) / float(np.max(np.abs(inertia))),
+        "com": float(np.linalg.norm(solid.props.center_of_mass - closed.com * MM)) / size,
+        "inertia": float(np.max(np.abs(solid.props.inertia_about_com - inertia)))
+        / float(np.max(np.abs(inertia))),
     }
 
 
@@ -73,9 +74,9 @@ def test_assembly_names_order_and_placement(tmp_path):
     )
     step = read_step(path)
     assert [s.name for s in step.solids] == ["base: plate", "ball", "ball-2", "solid 3"]
-    np.testing.assert_allclose(step.solids[1].props.com, [0.1, 0, 0], atol=1e-15)
-    np.testing.assert_allclose(step.solids[2].props.com, [-0.1, 0, 0], atol=1e-15)
-    np.testing.assert_allclose(step.solids[3].props.com, [0, 0.05, 0], atol=1e-15)
+    np.testing.assert_allclose(step.solids[1].props.center_of_mass, [0.1, 0, 0], atol=1e-15)
+    np.testing.assert_allclose(step.solids[2].props.center_of_mass, [-0.1, 0, 0], atol=1e-15)
+    np.testing.assert_allclose(step.solids[3].props.center_of_mass, [0, 0.05, 0], atol=1e-15)
     assert select_solids(step, None) == [0, 1, 2, 3]
     assert select_solids(step, "ball-2") == [2]
     assert select_solids(step, 3) == [3]

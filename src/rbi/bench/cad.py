@@ -117,8 +117,8 @@ def _errors(props, volume_mm3: float, closed) -> dict:
     expected = inertia * density
     return {
         "volume_error": abs(volume_mm3 - volume) / volume,
-        "com_error": float(np.linalg.norm(np.asarray(props.com) - com)) / size,
-        "inertia_error": float(np.max(np.abs(props.inertia_com - expected)) / np.max(np.abs(expected))),
+        "com_error": float(np.linalg.norm(np.asarray(props.center_of_mass) - com)) / size,
+        "inertia_error": float(np.max(np.abs(props.inertia_about_com - expected)) / np.max(np.abs(expected))),
     }
 
 

@@ -220,8 +220,8 @@ def _emit_step_listing(format: OutputFormat, file: str, path, spec: dict) -> Non
             "index": i,
             "volume": solid.volume,
             "mass": density * solid.volume,
-            "center_of_mass": solid.props.com,
-            "inertia_about_com": density * solid.props.inertia_com,
+            "center_of_mass": solid.props.center_of_mass,
+            "inertia_about_com": density * solid.props.inertia_about_com,
             "integration_error": solid.integration_error,
         }
         for i, solid in enumerate(step.solids)

@@ -34,7 +34,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from rbi.core.inertia import MassProperties
+from rbi.core.mass import MassProperties
 
 MAX_STEP_BYTES = 32 * 2**20
 """Largest STEP file rbi reads (32 MiB). OpenCascade needs some 20 to 40 bytes of memory per
@@ -75,8 +75,8 @@ class CadExtraMissing(ValueError):
 
 class StepSolid(NamedTuple):
     """One solid of a STEP file: ``name`` (unique in the file), ``props`` at unit density in
-    metres and the file's axes (``mass`` is the volume in m³, ``com`` in m, ``inertia_com`` in
-    m⁵), and ``integration_error``, the relative error estimate of the integration."""
+    metres and the file's axes (``mass`` is the volume in m³, ``center_of_mass`` in m,
+    ``inertia_about_com`` in m⁵; frame ``"step file"``), and ``integration_error``, the relative error estimate of the integration."""
 
     name: str
     props: MassProperties
@@ -460,7 +460,7 @@ def _integrate(ocp, solid, unit_metres: float, index: int, name: str) -> tuple[M
     )
     s = unit_metres
     inertia = 0.5 * (inertia + inertia.T) * s**5
-    return MassProperties(volume * s**3, com * s, inertia), error
+    return MassProperties(volume * s**3, com * s, inertia, "step file"), error
 
 
 def _tessellate(solid, deflection: float, angle: float) -> tuple[np.ndarray, np.ndarray]:

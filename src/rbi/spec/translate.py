@@ -203,7 +203,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     return _placed(part, mass, com, inertia)
 
 
-def _placed(part, mass: float, com: np.ndarray, inertia: np.ndarray) -> shapes.MassElement:
+def _placed(part, mass: float, com: np.ndarray, inertia: np.ndarray) -> MassProperties:
     """A file's solid (mesh, STEP) in the body: its centre of mass and inertia (file axes,
     spec units) turned by ``part.rotation`` about the file's origin, that origin moved to
     ``part.position``."""
@@ -214,7 +214,7 @@ def _placed(part, mass: float, com: np.ndarray, inertia: np.ndarray) -> shapes.M
     return MassProperties(mass, np.asarray(part.position, dtype=float) + com, 0.5 * (inertia + inertia.T))
 
 
-def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> shapes.MassElement:
+def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> MassProperties:
     """The STEP file's solid (or solids, ``solid:`` unset) in the body: integrated on the exact
     boundary representation in metres (:mod:`rbi.formats.step`), converted to the spec's length
     unit, turned by ``rotation`` about the file's origin, that origin moved to ``position``.
@@ -235,15 +235,13 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
             f"file: {part.file}: {exc}" if not str(exc).startswith("solid:") else str(exc)
         ) from None
     per_metre = 1.0 / LENGTH_UNITS_IN_M[units.length]
-    props = combine_elements(
-        shapes.MassElement(s.props.mass, s.props.com, s.props.inertia_com) for s in chosen
-    )  # unit density, metres: mass is the volume
+    props = MassProperties.sum(s.props for s in chosen)  # unit density, metres: mass is the volume
     volume = props.mass * per_metre**3
     part._step_volume = volume
     part._integration_error = max(s.integration_error for s in chosen)
     mass = _solid_mass(part, volume, units)
-    inertia = props.inertia_com * per_metre**5 * (mass / volume)
-    com = props.com * per_metre
+    inertia = props.inertia_about_com * per_metre**5 * (mass / volume)
+    com = props.center_of_mass * per_metre
     return _placed(part, mass, com, inertia)
 
 
