@@ -48,6 +48,7 @@ __all__ = [
     "Uniform",
     "audit",
     "AuditReport",
+    "import_step",
     "SpecError",
 ]
 
@@ -861,6 +862,37 @@ def audit(
         allow_outside_paths=allow_outside_paths,
         mesh_repair=mesh_repair,
     )
+
+
+def import_step(
+    path: str | os.PathLike,
+    *,
+    density: float | None = None,
+    material: str | None = None,
+    relative_to: str | os.PathLike | None = None,
+):
+    """Read a STEP file as ``rbi import FILE.step`` does (needs the extra ``cad``): its solids
+    integrated on the exact geometry, and a spec with one ``shape: step`` part per solid.
+
+    Args:
+        path: the STEP file (.step, .stp).
+        density, material: kg/m³, or a built-in material name, for every part (default 1000
+            kg/m³, a placeholder).
+        relative_to: the folder the spec will be saved in (the parts name the file relative to
+            it); default the current folder.
+
+    Returns:
+        A `rbi.spec.from_step.StepImport`: ``.spec`` (a dict: what ``rbi import`` prints as
+        YAML), ``.solids`` (each with ``.name``, ``.props`` at unit density in metres, and
+        ``.integration_error``), ``.unit`` (the file's length unit) and ``.density`` (kg/m³).
+
+    Raises:
+        SpecError: the file cannot be read, is not STEP, holds no closed solid, or OpenCascade
+            is missing; a bad ``density`` or ``material``.
+    """
+    from rbi.spec.from_step import import_step as run_import
+
+    return run_import(path, density=density, material=material, relative_to=relative_to)
 
 
 def __getattr__(name: str) -> Any:

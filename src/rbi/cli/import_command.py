@@ -82,9 +82,7 @@ def import_robot(
       rbi import humanoid.xml --format json
       rbi import bracket.step --material aluminium
     """
-    from rbi.formats.step import is_step_path
-
-    if is_step_path(file):
+    if file.lower().endswith((".step", ".stp")):
         _import_step(file, link, out, format, density, material)
         return
     if density is not None or material is not None:
@@ -132,88 +130,57 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
     """`rbi import FILE.step`: the spec (YAML, printed or written to --out FILE.yaml), or with
     --format json/csv the solids and their mass properties at the density given."""
     import os
-    from pathlib import Path
 
-    from rbi.formats.paths import spec_relative_file
-    from rbi.spec.from_step import step_spec
+    from rbi.api import import_step
 
     if link:
         raise InputError(
             "--link: a STEP file has solids, not links: the spec lists them all (pick with solid:)"
         )
-    density, material = _step_fill(density, material)
     target = None
     if out is not None:
         from rbi.cli.output import output_target
 
         target = output_target(out, "--out", ("yaml", "yml"), inputs=[file])
-    home = os.path.dirname(os.path.abspath(out)) if out is not None else os.getcwd()
-    with _outside_cwd_allowed():
-        path = spec_relative_file(os.path.join(home, "spec.yaml"), os.path.abspath(file), f"{file}")
+    home = os.path.dirname(os.path.abspath(out)) if out is not None else None
     try:
-        spec = step_spec(Path(path), os.path.relpath(os.path.abspath(file), home), density, material)
-    except ValueError as exc:
-        raise InputError(f"{file}: {exc}") from None
+        imported = import_step(file, density=density, material=material, relative_to=home)
+    except InputError as exc:
+        if exc.field in ("density", "material"):
+            raise InputError(f"--{exc}") from None
+        raise
     if format is not OutputFormat.table:
-        _emit_step_listing(format, file, path, spec)
+        _emit_step_listing(format, file, imported)
     if target is not None:
         from rbi.cli.output import write_output
 
-        write_output(target, _step_yaml_text(file, spec))
+        write_output(target, _step_yaml_text(file, imported))
     elif format is OutputFormat.table:
-        sys.stdout.write(_step_yaml_text(file, spec))
+        sys.stdout.write(_step_yaml_text(file, imported))
 
 
-def _outside_cwd_allowed():
-    from rbi.formats.paths import outside_paths_allowed
-
-    return outside_paths_allowed(True)  # the file is the command's own argument, not a spec's
-
-
-def _step_fill(density, material):
-    """(density kg/m³ or None, canonical material name or None), checked; one at most."""
-    import math
-
-    if density is not None and material is not None:
-        raise InputError("--density, --material: give one of them, not both")
-    if density is not None and not (math.isfinite(density) and density > 0):
-        raise InputError(f"--density: must be a positive number (kg/m³), got {density!r}")
-    if material is not None:
-        from rbi.spec.materials import canonical_name, unknown_material_message
-
-        if canonical_name(material) is None:
-            raise InputError(f"--material: {unknown_material_message(material)}")
-    return density, material
-
-
-def _step_yaml_text(file: str, spec: dict) -> str:
+def _step_yaml_text(file: str, imported) -> str:
     import os
 
-    from rbi.spec.from_step import DEFAULT_DENSITY
     from rbi.spec.yaml_writer import comment, dump
 
-    fill = spec["parts"][0]["density"]
     lines = [
         f"rbi import of {os.path.basename(file)}: one part per solid, integrated on the exact STEP geometry;",
         "SI units (the file's own length unit is honoured), the file's origin and axes.",
     ]
-    if fill == DEFAULT_DENSITY:
+    if imported.placeholder:
         lines.append(
-            f"density: {DEFAULT_DENSITY:g} kg/m³ is a placeholder: give yours (--density D or --material NAME)."
+            f"density: {imported.density:g} kg/m³ is a placeholder: give yours (--density D or --material NAME)."
         )
-    return comment(*lines) + dump(spec)
+    return comment(*lines) + dump(imported.spec)
 
 
-def _emit_step_listing(format: OutputFormat, file: str, path, spec: dict) -> None:
+def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
     """The solids with their mass properties at the spec's density, SI."""
     from rbi.cli.render import emit
-    from rbi.formats.step import read_step
-    from rbi.spec.materials import density_in_units
     from rbi.text import visible
 
-    step = read_step(path)
-    fill = spec["parts"][0]["density"]
-    density = density_in_units(fill, "m", "kg") if isinstance(fill, str) else float(fill)
+    density = imported.density
     rows = [
         {
             "name": solid.name,
@@ -224,12 +191,12 @@ def _emit_step_listing(format: OutputFormat, file: str, path, spec: dict) -> Non
             "inertia_about_com": density * solid.props.inertia_about_com,
             "integration_error": solid.integration_error,
         }
-        for i, solid in enumerate(step.solids)
+        for i, solid in enumerate(imported.solids)
     ]
     result = {
         "file": file,
         "format": "step",
-        "file_unit": step.unit,
+        "file_unit": imported.unit,
         "units": {"length": "m", "mass": "kg"},
         "density": density,
         "solids": rows,

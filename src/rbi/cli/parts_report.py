@@ -79,21 +79,21 @@ def _part_rows(body) -> list[dict]:
                 "implied_density_si": None if density is None else density * to_si,
             }
         )
-    _add_integration_errors(rows, spec_parts)
+    _add_integration_errors(rows, body.spec)
     return rows
 
 
-def _add_integration_errors(rows: list[dict], spec_parts: list) -> None:
+def _add_integration_errors(rows: list[dict], spec) -> None:
     """With a STEP part in the spec, every row gets ``integration_error``: the relative error
     estimate of the exact-geometry integration for a STEP part (see :mod:`rbi.formats.step`),
     null for the others."""
-    from rbi.spec.models import StepPart
+    from rbi.spec.translate import integration_errors
 
-    if not any(isinstance(part, StepPart) for part in spec_parts):
+    errors = integration_errors(spec)
+    if errors is None:
         return
     for i, row in enumerate(rows):
-        part = spec_parts[i] if i < len(spec_parts) else None
-        row["integration_error"] = part._integration_error if isinstance(part, StepPart) else None
+        row["integration_error"] = errors[i] if i < len(errors) else None
 
 
 def _table(body, rows, total):

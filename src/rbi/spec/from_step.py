@@ -4,28 +4,70 @@ length unit, so the spec needs no scale)."""
 
 from __future__ import annotations
 
+import math
+import os
+from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
+
+from rbi.errors import InputError
 
 DEFAULT_DENSITY = 1000.0
 """Density (kg/m³) of the imported parts when none is given: water's, a placeholder to replace."""
 
 
-def step_spec(
-    path: Path, file_in_spec: str, density: float | None = None, material: str | None = None
-) -> dict[str, Any]:
-    """The spec (a plain dict, keys in the order YAML prints them) of the STEP file at
-    ``path``, which the spec names ``file_in_spec``. ``density`` (kg/m³) or ``material`` (a
-    built-in name) fill every part; with neither, :data:`DEFAULT_DENSITY`. Raises
-    ``ValueError`` from the reader for a file it cannot read."""
-    from rbi.formats.step import read_step
+@dataclass(frozen=True)
+class StepImport:
+    """What importing a STEP file gives: ``spec`` (a plain dict, keys in the order YAML prints
+    them, every part filled with ``density`` kg/m³ or the ``material`` name), the file's
+    ``solids`` (:class:`rbi.formats.step.StepSolid`, unit density, metres), its declared
+    length ``unit``, and ``density`` (kg/m³, the material's when one was named)."""
 
-    step = read_step(path)
+    spec: dict[str, Any]
+    solids: tuple
+    unit: str
+    density: float
+    placeholder: bool
+
+
+def import_step(
+    path: str | os.PathLike,
+    *,
+    density: float | None = None,
+    material: str | None = None,
+    relative_to: str | os.PathLike | None = None,
+) -> StepImport:
+    """Read the STEP file at ``path`` and build its spec; the parts name the file relative to
+    the folder ``relative_to`` (default: the current folder), where the spec will be saved.
+    Raises :class:`InputError`: ``density`` or ``material`` wrong (message starting with the
+    parameter's name), or the file unreadable (starting with ``path``)."""
+    from rbi.formats.step import read_step
+    from rbi.spec.materials import canonical_name, density_in_units, unknown_material_message
+
+    if density is not None and material is not None:
+        raise InputError("density, material: give one of them, not both", field="density")
+    if density is not None and not (
+        isinstance(density, int | float) and math.isfinite(density) and density > 0
+    ):
+        raise InputError(f"density: must be a positive number (kg/m³), got {density!r}", field="density")
+    if material is not None and canonical_name(material) is None:
+        raise InputError(f"material: {unknown_material_message(material)}", field="material")
+    home = os.path.abspath(relative_to) if relative_to is not None else os.getcwd()
+    file = os.path.abspath(path)
+    if not os.path.isfile(file):
+        raise InputError(f"{path}: no such file", file=str(path))
+    try:
+        step = read_step(Path(file))
+    except ValueError as exc:
+        raise InputError(f"{path}: {exc}", file=str(path)) from None
     fill: float | str = (
         material if material is not None else density if density is not None else DEFAULT_DENSITY
     )
+    written = os.path.relpath(file, home)
     parts = [
-        {"name": solid.name, "shape": "step", "file": file_in_spec, "solid": solid.name, "density": fill}
+        {"name": solid.name, "shape": "step", "file": written, "solid": solid.name, "density": fill}
         for solid in step.solids
     ]
-    return {"name": Path(path).stem, "units": {"length": "m", "mass": "kg"}, "parts": parts}
+    spec = {"name": Path(file).stem, "units": {"length": "m", "mass": "kg"}, "parts": parts}
+    kg_per_m3 = density_in_units(material, "m", "kg") if material is not None else float(fill)
+    return StepImport(spec, step.solids, step.unit, kg_per_m3, density is None and material is None)
