@@ -317,7 +317,7 @@ NOT_YET_THROUGH_THE_API = {
         "rbi.spec.volumes",
     },
     "plot.py": {"rbi.viz.plots"},
-    "render.py": {"rbi.spec.errors", "rbi.text"},
+    "render.py": {"rbi.errors", "rbi.spec.errors", "rbi.text"},
     "run_options.py": {"rbi.sim.budget"},
     "schema_command.py": {
         "rbi.formats.robot_files",
