@@ -37,8 +37,9 @@ import numpy as np
 from rbi.core.mass import MassProperties
 
 MAX_STEP_BYTES = 32 * 2**20
-"""Largest STEP file rbi reads (32 MiB). OpenCascade needs some 20 to 40 bytes of memory per
-byte of STEP text, so a file at the cap peaks near 1 GB."""
+"""Largest STEP file rbi reads (32 MiB). Measured: OpenCascade's libraries take 290 MB once
+loaded and a 0.79 MB file (a plate with 200 holes) adds 7 MB and 2.5 s of CPU to read and
+integrate, so a file at the cap stays near 0.6 GB and some 100 s."""
 
 STEP_SUFFIXES = (".step", ".stp")
 """File extensions rbi reads as STEP."""
