@@ -24,25 +24,31 @@ def is_hidden(char: str) -> bool:
     return category in _HIDDEN_CATEGORIES or (category == "Zs" and char != " ")
 
 
-def visible(text: str) -> str:
+def visible(text: str, keep: str = "") -> str:
     """``text`` with every hidden character (see :func:`is_hidden`) written as an escape
-    (``\\n``, ``\\x9b``, ``\\u202e``): one line of plainly visible characters, for showing (a
-    backslash already in ``text`` is kept as it is, so this is for the eye, not for reading
-    back: data goes through the YAML or JSON writer)."""
+    (``\\n``, ``\\x9b``, ``\\u202e``): one line of plainly visible characters, so a name cannot
+    drive a terminal (escape sequences, bells), reorder what is shown (bidirectional overrides)
+    or break a line (U+2028). Characters in ``keep`` (a message's own newline) pass. A
+    backslash already in ``text`` is kept as it is: this is for the eye, not for reading back
+    (data goes through the YAML or JSON writer). The one escaper for terminals, listings, YAML
+    comments and picture labels."""
     if not any(is_hidden(c) for c in text):
         return text
     out = []
     for char in text:
-        if not is_hidden(char):
+        if not is_hidden(char) or char in keep:
             out.append(char)
-        elif char in _SHORT_ESCAPES:
-            out.append(_SHORT_ESCAPES[char])
         else:
-            code = ord(char)
-            out.append(
-                f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}"
-            )
+            out.append(escaped(char))
     return "".join(out)
+
+
+def escaped(char: str) -> str:
+    """One character as Python writes it escaped: ``\\n``, ``\\x9b``, ``\\u202e``, ``\\U0001f600``."""
+    if char in _SHORT_ESCAPES:
+        return _SHORT_ESCAPES[char]
+    code = ord(char)
+    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}"
 
 
 _SHORT_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}

@@ -376,7 +376,9 @@ def test_huge_file_is_refused(tmp_path, monkeypatch):
 
     monkeypatch.setattr(robot_xml, "MAX_FILE_BYTES", 200)
     one_line_exit_2(
-        run_rbi_inprocess("import", write(tmp_path, "hand.urdf", URDF)), "hand.urdf", "larger than"
+        run_rbi_inprocess("import", write(tmp_path, "hand.urdf", URDF)),
+        "hand.urdf",
+        "too large for a robot file",
     )
 
 

@@ -79,7 +79,8 @@ def test_names_reach_tables_and_titles_escaped(tmp_path, kind, command):
     _assert_no_raw_controls(proc.stdout)
     _assert_no_raw_controls(proc.stderr)
     assert proc.returncode == 0, proc.stderr
-    assert "\\x" in proc.stdout or "\\u20" in proc.stdout, proc.stdout  # the payload, visibly escaped
+    escapes = ("\\x", "\\u20", "\\r", "\\n", "\\t")
+    assert any(e in proc.stdout for e in escapes), proc.stdout  # the payload, visibly escaped
 
 
 @pytest.mark.parametrize("kind", sorted(HOSTILE))

@@ -12,40 +12,16 @@ import signal
 import sys
 import unicodedata
 
-_BIDI_CONTROLS = frozenset("\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069")
-"""Characters that reorder the text around them (right-to-left overrides, isolates, marks):
-a name holding one could make a table or message read differently from what it is."""
+from rbi.text import escaped, visible
 
-_LINE_BREAKS = frozenset("\u2028\u2029")
-"""The Unicode line and paragraph separators: terminals and pagers may break the line there,
-so a name holding one could split a table row or a one-line message in two."""
-
-
-def _is_unsafe(char: str) -> bool:
-    code = ord(char)
-    return code < 32 or 127 <= code < 160 or char in _BIDI_CONTROLS or char in _LINE_BREAKS
-
-
-def terminal_safe(text: str, keep: str = "") -> str:
-    """``text`` with every control character (C0 such as ESC, BEL and CR; DEL; C1 such as CSI
-    and OSC), every bidirectional override and the line and paragraph separators U+2028/9
-    written as a visible escape (``\\x1b``, ``\\u202e``), so a name in a spec cannot set the
-    terminal's title, clear the screen, write to the clipboard, reorder what is shown or break
-    a line. Characters in ``keep`` (e.g. a newline) pass."""
-    if not any(_is_unsafe(c) for c in text):
-        return text
-    return "".join(_escaped(c) if _is_unsafe(c) and c not in keep else c for c in text)
+terminal_safe = visible
+"""What reaches the terminal: :func:`rbi.text.visible`, the one escaper of text from outside."""
 
 
 def say(message: str) -> None:
     """One line on stderr, ``rbi: message``, with control characters escaped (see
     :func:`terminal_safe`): how every error, warning and note reaches the user."""
     print(f"rbi: {terminal_safe(message)}", file=sys.stderr)
-
-
-def _escaped(char: str) -> str:
-    code = ord(char)
-    return f"\\x{code:02x}" if code < 256 else f"\\u{code:04x}"
 
 
 # --- terminals that cannot encode every character ------------------------------------------
@@ -141,7 +117,7 @@ def _ascii_fallback(error: UnicodeError):
             spelling = ("" if after_superscript else "^") + SUPERSCRIPTS[char]
         elif spelling is None:
             base = unicodedata.normalize("NFKD", char).encode("ascii", "ignore").decode("ascii")
-            spelling = base if base.isprintable() and base else _escaped(char)
+            spelling = base if base.isprintable() and base else escaped(char)
         pieces.append(spelling)
     return "".join(pieces), error.end
 
