@@ -182,7 +182,7 @@ def test_sweep_section_ratios_are_against_their_baselines(quick_run):
 def test_targets_list_each_ratio_with_its_limit(quick_run):
     result, _, _ = quick_run
     targets = result["targets"]
-    assert {t["area"] for t in targets} == {"kernel", "start-up", "large specs", "sweep"}
+    assert {t["area"] for t in targets} == {"kernel", "start-up", "large specs", "sweep", "robot audit"}
     assert len(targets) >= 12
     for t in targets:
         assert t["baseline"]

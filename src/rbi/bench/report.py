@@ -261,11 +261,34 @@ def _sweep_targets(sw: dict) -> list[dict]:
     return out
 
 
+def _robotaudit_targets(ra: dict) -> list[dict]:
+    """The audit of a large generated URDF against its absolute time target."""
+    if not ra:
+        return []
+    quick = ra.get("links", 0) < 10**5
+    detail = ra.get("error") or (
+        f"{number(ra['megabytes'], 3)} MB, {number(ra['links_per_second'], 3)} links/s"
+        + ("; a quick run: the target is for 100,000 links" if quick else "")
+    )
+    return [
+        _target(
+            "robot audit",
+            f"`rbi audit` of a URDF of {ra.get('links', 0):,} links (inertial, box collision, revolute joints), s",
+            ra.get("seconds"),
+            ra["target_s"],
+            False,
+            "5 s (absolute)",
+            detail,
+        )
+    ]
+
+
 SECTION_TARGETS = {
     "kernel": _kernel_targets,
     "latency": _latency_targets,
     "largespec": _largespec_targets,
     "sweep": _sweep_targets,
+    "robotaudit": _robotaudit_targets,
 }
 """Each section of a bench result that has speed targets, and the function that lists them."""
 

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
-from rbi.bench import cad, kernel, largespec, latency, sweep, throughput, workprecision
+from rbi.bench import cad, kernel, largespec, latency, robotaudit, sweep, throughput, workprecision
 from rbi.bench.timing import machine
 
 SECTIONS = {
@@ -15,6 +15,7 @@ SECTIONS = {
     "latency": latency,
     "sweep": sweep,
     "cad": cad,
+    "robotaudit": robotaudit,
 }
 """Every section by name, in the order they run."""
 

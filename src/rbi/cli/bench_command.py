@@ -13,7 +13,16 @@ from rbi.cli.extras import needs
 from rbi.cli.options import FormatOption, OutputFormat
 from rbi.spec.errors import InputError
 
-SECTION_NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep", "cad")
+SECTION_NAMES = (
+    "kernel",
+    "workprecision",
+    "throughput",
+    "largespec",
+    "latency",
+    "sweep",
+    "cad",
+    "robotaudit",
+)
 
 
 QuickOption = Annotated[
@@ -29,7 +38,7 @@ OnlyOption = Annotated[
         "--only",
         metavar="SECTIONS",
         help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
-        "sweep, cad (default: all).",
+        "sweep, cad, robotaudit (default: all).",
     ),
 ]
 PlotOption = Annotated[

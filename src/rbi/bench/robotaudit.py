@@ -1,0 +1,69 @@
+"""A large robot file (issue 25): ``rbi.audit`` of a generated URDF of 10⁵ links (each with an
+inertial and a box collision, joined by revolute joints into a binary tree), wall time against
+the target of 5 s; a quick run uses 2,000 links. The file is written into a temporary folder and
+removed after.
+"""
+
+from __future__ import annotations
+
+import os
+import tempfile
+import time
+from collections.abc import Callable
+
+Progress = Callable[[str], None]
+
+TARGET_S = 5.0
+"""Seconds the audit of the 10⁵-link URDF may take."""
+
+
+def links(quick: bool) -> int:
+    return 2_000 if quick else 10**5
+
+
+def planned_steps(quick: bool) -> int:
+    return 1
+
+
+def urdf_text(n: int) -> str:
+    """A URDF of ``n`` links in a binary tree (link i hangs from link (i − 1) // 2)."""
+    parts = ['<?xml version="1.0"?>\n<robot name="large">\n']
+    for i in range(n):
+        parts.append(
+            f'<link name="l{i}"><inertial><origin xyz="0.1 0 0"/><mass value="1"/><inertia ixx="0.0010416666666666667" '
+            'ixy="0" ixz="0" iyy="0.0035416666666666665" iyz="0" izz="0.004166666666666667"/></inertial>'
+            '<collision><origin xyz="0.1 0 0"/><geometry><box size="0.2 0.1 0.05"/></geometry></collision></link>\n'
+        )
+    for i in range(1, n):
+        parts.append(
+            f'<joint name="j{i}" type="revolute"><parent link="l{(i - 1) // 2}"/><child link="l{i}"/>'
+            '<origin xyz="0.2 0 0"/><axis xyz="0 0 1"/><limit effort="10" velocity="1" lower="-1" upper="1"/></joint>\n'
+        )
+    parts.append("</robot>\n")
+    return "".join(parts)
+
+
+def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+    from rbi.robot import audit
+
+    n = links(quick)
+    progress(f"robot audit: {n:,} links")
+    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as folder:
+        path = os.path.join(folder, "large.urdf")
+        with open(path, "w", encoding="utf-8") as handle:
+            handle.write(urdf_text(n))
+        size = os.path.getsize(path)
+        start = time.perf_counter()
+        try:
+            report = audit(path)
+        except Exception as exc:  # a failed measurement is a row, not the end of the bench
+            return {"target_s": TARGET_S, "links": n, "error": f"{type(exc).__name__}: {exc}"}
+        seconds = time.perf_counter() - start
+    return {
+        "target_s": TARGET_S,
+        "links": n,
+        "megabytes": size / 1e6,
+        "seconds": seconds,
+        "links_per_second": n / seconds,
+        "total_mass": report.total.mass,
+    }
