@@ -329,6 +329,7 @@ NOT_YET_THROUGH_THE_API = {
     },
     "show_command.py": {"rbi.spec.geometry", "rbi.spec.load", "rbi.viz.page", "rbi.viz.still"},
     "simulate_command.py": {"rbi.viz.labels", "rbi.viz.plots"},
+    "terminal.py": {"rbi.text"},
     "sweep_command.py": {
         "rbi.sim.budget",
         "rbi.spec.errors",
