@@ -74,3 +74,23 @@ def test_the_table_never_cuts_a_name_or_number_short_in_80_columns(monkeypatch):
         proc = rbi("parts", BODIES / body)
         assert proc.returncode == 0, proc.stderr
         assert "…" not in proc.stdout, body
+
+
+def test_the_centre_of_mass_table_prints_rounding_noise_as_zero_and_keeps_real_offsets(tmp_path):
+    # a coordinate of 1e-17 m on a 0.1 m sphere is far below 1e-12 of the body's size: noise;
+    # 1 mm is a real offset. JSON keeps every digit.
+    spec = tmp_path / "spheres.yaml"
+    spec.write_text(
+        "parts:\n"
+        "  - {name: noisy, shape: sphere, mass: 1, radius: 0.1, center: [1.0e-17, 0, 0]}\n"
+        "  - {name: offset, shape: sphere, mass: 1, radius: 0.1, center: [0, 0.001, 0]}\n"
+    )
+    proc = rbi("parts", spec)
+    assert proc.returncode == 0, proc.stderr
+    table = proc.stdout.split("parts — centre of mass")[1].split("parts — principal")[0]
+    rows = {line.split()[0]: line.split()[1:4] for line in table.splitlines() if line.split()}
+    assert rows["noisy"] == ["0", "0", "0"]
+    assert rows["offset"] == ["0", "0.001", "0"]
+    assert rows["total"] == ["0", "0.0005", "0"]
+    out, _ = parts_json(spec)
+    assert out["parts"][0]["center_of_mass"][0] == 1e-17

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.mass_reports import load_body
-from rbi.cli.render import matrix_digits, number
+from rbi.cli.render import body_size, matrix_digits, number, without_noise
 
 
 def parts(files, fmt: str = "table") -> int:
@@ -133,15 +133,19 @@ def _table(body, rows, total):
             number(total["mean_density"], 4),
         ),
     )
+    size = body_size(body.props)  # a coordinate below 1e-12 of the body's size is rounding noise: 0
     places = _titled_table(
         f"{name}: parts — centre of mass",
         names,
         (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
         [
-            (*(number(c) for c in row["center_of_mass"]), number(100 * row["inertia_share"], 4))
+            (
+                *(number(c) for c in without_noise(row["center_of_mass"], size)),
+                number(100 * row["inertia_share"], 4),
+            )
             for row in rows
         ],
-        (*(number(c) for c in body.props.center_of_mass), number(100.0, 4)),
+        (*(number(c) for c in without_noise(body.props.center_of_mass, size)), number(100.0, 4)),
     )
     scale, scale_text = matrix_digits(
         [total["principal_moments"], *(row["principal_moments"] for row in rows)]
