@@ -133,20 +133,7 @@ def _table(body, rows, total):
             number(total["mean_density"], 4),
         ),
     )
-    size = body_size(body.props)  # a coordinate below 1e-12 of the body's size is rounding noise: 0
-    places = _titled_table(
-        f"{name}: parts — centre of mass",
-        names,
-        (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
-        [
-            (
-                *(number(c) for c in without_noise(row["center_of_mass"], size)),
-                number(100 * row["inertia_share"], 4),
-            )
-            for row in rows
-        ],
-        (*(number(c) for c in without_noise(body.props.center_of_mass, size)), number(100.0, 4)),
-    )
+    places = _places_table(body, rows, names, length, f"{name}: parts — centre of mass")
     scale, scale_text = matrix_digits(
         [total["principal_moments"], *(row["principal_moments"] for row in rows)]
     )
@@ -159,6 +146,25 @@ def _table(body, rows, total):
         tuple(number(m / scale, 5) for m in total["principal_moments"]),
     )
     return tables.stack(masses, places, moments)
+
+
+def _places_table(body, rows, names: list, length: str, title: str):
+    """Each part's centre of mass (a coordinate below 1e-12 of the body's size is rounding
+    noise, printed 0) and its share of the inertia."""
+    size = body_size(body.props)
+    return _titled_table(
+        title,
+        names,
+        (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
+        [
+            (
+                *(number(c) for c in without_noise(row["center_of_mass"], size)),
+                number(100 * row["inertia_share"], 4),
+            )
+            for row in rows
+        ],
+        (*(number(c) for c in without_noise(body.props.center_of_mass, size)), number(100.0, 4)),
+    )
 
 
 def _titled_table(title: str, names: list, headers, cells, total_row):
