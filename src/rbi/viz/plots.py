@@ -56,8 +56,6 @@ def plot_trajectory(
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
-    from matplotlib.collections import LineCollection  # optional extra `plot`, loaded only to draw
-    from matplotlib.ticker import MaxNLocator  # optional extra `plot`, loaded only to draw
 
     t = np.asarray(columns["t"], dtype=float)
     q = np.column_stack([columns[k] for k in ("qw", "qx", "qy", "qz")])
@@ -65,6 +63,20 @@ def plot_trajectory(
     fig, axes = plt.subplots(2, 2, figsize=(12, 8.4), gridspec_kw={"width_ratios": [1.45, 1]})
     (angle_ax, above), (omega_ax, energy_ax) = axes
 
+    _angle_panel(angle_ax, t, q, columns, principal_axes, inertia)
+    _above_panel(fig, above, t, tip)
+    _omega_panel(omega_ax, t, columns)
+    _energy_panel(energy_ax, t, columns, energy_unit)
+    if title:
+        plain(fig.suptitle(label(title, 2 * MAX_LABEL_CHARS)))
+    fig.tight_layout()
+    fig.savefig(path, format=format, dpi=110)
+    plt.close(fig)
+
+
+def _angle_panel(angle_ax, t: np.ndarray, q: np.ndarray, columns: dict, principal_axes, inertia) -> None:
+    """The spin axis's tilt against time (a top), or each principal axis's angle to the angular
+    momentum (a free body: ``principal_axes`` rows and ``inertia`` about the CoM, body frame)."""
     if principal_axes is None:
         angle_ax.plot(t, columns["tilt_deg"], lw=1.0, color="#1f77b4")
         angle_ax.set_ylabel("tilt of the spin axis from vertical [deg]")
@@ -88,7 +100,12 @@ def plot_trajectory(
     angle_ax.set_xlabel("time [s]")
     angle_ax.grid(alpha=0.3)
 
-    # the tip of the spin axis seen from above, coloured by time
+
+def _above_panel(fig, above, t: np.ndarray, tip: np.ndarray) -> None:
+    """The tip of the unit spin axis (world frame) seen from above, coloured by time."""
+    from matplotlib.collections import LineCollection  # optional extra `plot`, loaded only to draw
+    from matplotlib.ticker import MaxNLocator  # optional extra `plot`, loaded only to draw
+
     x, y = tip[:, 0], tip[:, 1]
     reach = float(np.max(np.hypot(x, y))) if t.size else 0.0
     extent = max(1.15 * reach, np.sin(np.radians(1.0)))  # an upright top still gets a readable frame
@@ -113,6 +130,9 @@ def plot_trajectory(
     above.legend(loc="upper left", fontsize=8, framealpha=0.9)
     above.grid(alpha=0.3)
 
+
+def _omega_panel(omega_ax, t: np.ndarray, columns: dict) -> None:
+    """The body-frame angular velocity components against time."""
     for key, colour in (("wx", "#d62728"), ("wy", "#2ca02c"), ("wz", "#1f77b4")):
         omega_ax.plot(t, columns[key], lw=0.9, color=colour, label=f"ω{key[1]}")
     omega_ax.set_xlabel("time [s]")
@@ -120,6 +140,9 @@ def plot_trajectory(
     omega_ax.legend(loc="upper right", fontsize=8, ncols=3, framealpha=0.9)
     omega_ax.grid(alpha=0.3)
 
+
+def _energy_panel(energy_ax, t: np.ndarray, columns: dict, energy_unit: str) -> None:
+    """The drift of the total energy from its first value."""
     energy = np.asarray(columns["energy"], dtype=float)
     drift = energy - energy[0]
     scale = float(np.max(np.abs(energy))) or 1.0
@@ -129,11 +152,6 @@ def plot_trajectory(
     energy_ax.set_title(f"energy drift (largest {np.max(np.abs(drift)) / scale:.1e} of |E|)", fontsize=10)
     energy_ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
     energy_ax.grid(alpha=0.3)
-    if title:
-        plain(fig.suptitle(label(title, 2 * MAX_LABEL_CHARS)))
-    fig.tight_layout()
-    fig.savefig(path, format=format, dpi=110)
-    plt.close(fig)
 
 
 def plot_stability_map(
@@ -155,50 +173,15 @@ def plot_stability_map(
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
-    from matplotlib.colors import LogNorm  # optional extra `plot`, loaded only to draw
 
     xs = np.asarray(xs, dtype=float)
     values = np.array([np.nan if v is None else float(v) for v in values])
     finite = np.isfinite(values)
     fig, ax = plt.subplots(figsize=(8, 5.2))
     if ys is None:
-        ax.semilogy(xs[finite], np.maximum(values[finite], 1e-6), "o-", ms=3, lw=1)
-        ax.set_ylabel("largest tilt [deg]")
-        if np.any(~finite):
-            ax.plot(
-                xs[~finite],
-                np.full(int(np.sum(~finite)), ax.get_ylim()[0]),
-                "x",
-                color="red",
-                label="failed run",
-            )
+        _tilt_against_one_axis(ax, xs, values, finite)
     else:
-        ys = np.asarray(ys, dtype=float)
-        positive = values[finite & (values > 0)]
-        low = max(float(np.min(positive)), 1e-6) if positive.size else 1e-3
-        high = max(float(np.max(positive)), low * 10) if positive.size else 1.0
-        x_values, y_values = np.unique(xs), np.unique(ys)
-        if x_values.size > 1 and y_values.size > 1 and x_values.size * y_values.size == xs.size:
-            grid = np.full((y_values.size, x_values.size), np.nan)
-            grid[np.searchsorted(y_values, ys), np.searchsorted(x_values, xs)] = np.where(
-                finite, np.maximum(values, low), np.nan
-            )
-            mesh = ax.pcolormesh(
-                x_values, y_values, grid, norm=LogNorm(low, high), shading="nearest", cmap="viridis"
-            )
-        else:
-            mesh = ax.scatter(
-                xs[finite],
-                ys[finite],
-                c=np.maximum(values[finite], low),
-                norm=LogNorm(low, high),
-                cmap="viridis",
-                s=18,
-            )
-        if np.any(~finite):
-            ax.plot(xs[~finite], ys[~finite], "x", color="red", label="failed run")
-        fig.colorbar(mesh, ax=ax, label="largest tilt [deg] (log scale)")
-        plain(ax.set_ylabel(label(y_label, 2 * MAX_LABEL_CHARS)))
+        _tilt_over_two_axes(fig, ax, xs, np.asarray(ys, dtype=float), values, finite, y_label)
     if threshold is not None and np.isfinite(threshold):
         ax.axvline(
             threshold,
@@ -215,3 +198,51 @@ def plot_stability_map(
     fig.tight_layout()
     fig.savefig(path, format=format, dpi=120)
     plt.close(fig)
+
+
+def _tilt_against_one_axis(ax, xs: np.ndarray, values: np.ndarray, finite: np.ndarray) -> None:
+    """The largest tilt of each run against the one swept axis; failed runs marked on the floor."""
+    ax.semilogy(xs[finite], np.maximum(values[finite], 1e-6), "o-", ms=3, lw=1)
+    ax.set_ylabel("largest tilt [deg]")
+    if np.any(~finite):
+        ax.plot(
+            xs[~finite],
+            np.full(int(np.sum(~finite)), ax.get_ylim()[0]),
+            "x",
+            color="red",
+            label="failed run",
+        )
+
+
+def _tilt_over_two_axes(
+    fig, ax, xs: np.ndarray, ys: np.ndarray, values: np.ndarray, finite: np.ndarray, y_label
+) -> None:
+    """The largest tilt of each run in colour (log scale) over two swept axes: a mesh for a full
+    grid, points otherwise; failed runs marked."""
+    from matplotlib.colors import LogNorm  # optional extra `plot`, loaded only to draw
+
+    positive = values[finite & (values > 0)]
+    low = max(float(np.min(positive)), 1e-6) if positive.size else 1e-3
+    high = max(float(np.max(positive)), low * 10) if positive.size else 1.0
+    x_values, y_values = np.unique(xs), np.unique(ys)
+    if x_values.size > 1 and y_values.size > 1 and x_values.size * y_values.size == xs.size:
+        grid = np.full((y_values.size, x_values.size), np.nan)
+        grid[np.searchsorted(y_values, ys), np.searchsorted(x_values, xs)] = np.where(
+            finite, np.maximum(values, low), np.nan
+        )
+        mesh = ax.pcolormesh(
+            x_values, y_values, grid, norm=LogNorm(low, high), shading="nearest", cmap="viridis"
+        )
+    else:
+        mesh = ax.scatter(
+            xs[finite],
+            ys[finite],
+            c=np.maximum(values[finite], low),
+            norm=LogNorm(low, high),
+            cmap="viridis",
+            s=18,
+        )
+    if np.any(~finite):
+        ax.plot(xs[~finite], ys[~finite], "x", color="red", label="failed run")
+    fig.colorbar(mesh, ax=ax, label="largest tilt [deg] (log scale)")
+    plain(ax.set_ylabel(label(y_label, 2 * MAX_LABEL_CHARS)))
