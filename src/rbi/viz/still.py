@@ -129,9 +129,6 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
-    from matplotlib.lines import Line2D  # optional extra `plot`, loaded only to draw
-    from matplotlib.patches import Patch  # optional extra `plot`, loaded only to draw
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
 
     size = float(data["size"])
     quads, colours = body_mesh(data["parts"], size, holes=False, stripes=False)
@@ -141,6 +138,38 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     ax = fig.add_axes((0.0, 0.02, 0.6, 0.9), projection="3d")
     ax.computed_zorder = False  # holes, axes and markers stay in front of the solids
     ax.view_init(elev=22, azim=-55)
+    _draw_solids(ax, quads, colours, hole_quads, hole_colours)
+    quads = np.concatenate((quads, hole_quads)) if len(hole_quads) else quads
+    points = cloud_points(data["parts"])
+    if len(points):
+        ax.scatter(points[:, 0], points[:, 1], points[:, 2], s=6, color="#333333", depthshade=False, zorder=3)
+    com = np.asarray(data["com"], dtype=float)
+    handles = _draw_axes_and_points(ax, com, data)
+    plain_legend(
+        fig.legend(
+            handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5, frameon=False
+        )
+    )
+    _frame(ax, quads, com, data)
+    unit = data["length_unit"]
+    ax.set_xlabel(f"x [{unit}]")
+    ax.set_ylabel(f"y [{unit}]")
+    ax.set_zlabel(f"z [{unit}]")
+    plain(
+        fig.suptitle(
+            f"{label(data['title'])}\nbody axes and coordinates as in the spec; principal axes about the "
+            f"centre of mass, lengths in proportion to their moments",
+            fontsize=10,
+        )
+    )
+    fig.savefig(path, format=format, dpi=110)
+    plt.close(fig)
+
+
+def _draw_solids(ax, quads, colours, hole_quads, hole_colours) -> None:
+    """The parts' faces, shaded; holes in red, the solids made see-through where there are any."""
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
+
     if len(quads):
         if len(hole_quads):
             colours[:, 3] = np.minimum(colours[:, 3], 0.75)  # so that holes inside a part show through
@@ -159,11 +188,14 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
                 zorder=2,
             )
         )
-    quads = np.concatenate((quads, hole_quads)) if len(hole_quads) else quads
-    points = cloud_points(data["parts"])
-    if len(points):
-        ax.scatter(points[:, 0], points[:, 1], points[:, 2], s=6, color="#333333", depthshade=False, zorder=3)
-    com = np.asarray(data["com"], dtype=float)
+
+
+def _draw_axes_and_points(ax, com: np.ndarray, data: dict[str, Any]) -> list:
+    """The principal axes through the centre of mass, the centre of mass, the pivot and the
+    parts, each with its legend handle (returned in legend order)."""
+    from matplotlib.lines import Line2D  # optional extra `plot`, loaded only to draw
+    from matplotlib.patches import Patch  # optional extra `plot`, loaded only to draw
+
     handles = []
     for axis in data["principal_axes"]:
         direction = np.asarray(axis["direction"]) * axis["half_length"]
@@ -201,25 +233,7 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
             )
     if len(entries) > MAX_LEGEND_PARTS:
         handles.append(Patch(facecolor="white", label=f"… {len(entries)} parts in all"))
-    plain_legend(
-        fig.legend(
-            handles=handles, loc="center left", bbox_to_anchor=(0.62, 0.5), fontsize=8.5, frameon=False
-        )
-    )
-    _frame(ax, quads, com, data)
-    unit = data["length_unit"]
-    ax.set_xlabel(f"x [{unit}]")
-    ax.set_ylabel(f"y [{unit}]")
-    ax.set_zlabel(f"z [{unit}]")
-    plain(
-        fig.suptitle(
-            f"{label(data['title'])}\nbody axes and coordinates as in the spec; principal axes about the "
-            f"centre of mass, lengths in proportion to their moments",
-            fontsize=10,
-        )
-    )
-    fig.savefig(path, format=format, dpi=110)
-    plt.close(fig)
+    return handles
 
 
 def _frame(ax, quads: np.ndarray, com: np.ndarray, data: dict[str, Any]) -> None:
