@@ -30,6 +30,7 @@ from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
 
 if TYPE_CHECKING:
     from rbi.robot.audit import AuditReport
+    from rbi.spec.from_step import StepImport
     from rbi.sweeps.plan import Grid, Normal, Uniform
 
 __all__ = [
@@ -870,7 +871,7 @@ def import_step(
     density: float | None = None,
     material: str | None = None,
     relative_to: str | os.PathLike | None = None,
-):
+) -> StepImport:
     """Read a STEP file as ``rbi import FILE.step`` does (needs the extra ``cad``): its solids
     integrated on the exact geometry, and a spec with one ``shape: step`` part per solid.
 

@@ -276,27 +276,42 @@ def _top_stability(scene: Scene, q0, omega0) -> dict[str, Any]:
         "spin_rad_s": spin,
         "above_threshold": abs(spin) > threshold["omega3"],
     }
-    w = f"{abs(spin):.6g} rad/s"
     if where == "below":
         result["verdict"] = (
             "the centre of mass starts below the pivot: the hanging position is stable whatever the spin"
         )
         return result
     if where == "level":
-        if spin == 0.0:
-            result["verdict"] = (
-                "the centre of mass starts level with the pivot and the body does not spin about "
-                "its axis: it swings down like a pendulum"
-            )
-            return result
-        rate = scene.mass * scene.gravity * threshold["l"] / (threshold["I3"] * abs(spin))
-        result["gyroscopic_precession_rad_s"] = rate
+        return _level_top(scene, result, threshold, spin)
+    return _upright_top(result, threshold, spin, axis, q0, omega0)
+
+
+def _level_top(scene: Scene, result: dict[str, Any], threshold: dict, spin: float) -> dict[str, Any]:
+    """The verdict for an axisymmetric top whose centre of mass starts level with the pivot:
+    a pendulum without spin, else a gyroscope precessing at m g l / (I₃ ω)."""
+    w = f"{abs(spin):.6g} rad/s"
+    if spin == 0.0:
         result["verdict"] = (
-            f"the centre of mass starts level with the pivot, spinning at {w} about its axis: "
-            f"gravity's torque turns the axis sideways, a gyroscope precessing at about "
-            f"{rate:.6g} rad/s (m g l / (I₃ ω), fast-spin approximation)"
+            "the centre of mass starts level with the pivot and the body does not spin about "
+            "its axis: it swings down like a pendulum"
         )
         return result
+    rate = scene.mass * scene.gravity * threshold["l"] / (threshold["I3"] * abs(spin))
+    result["gyroscopic_precession_rad_s"] = rate
+    result["verdict"] = (
+        f"the centre of mass starts level with the pivot, spinning at {w} about its axis: "
+        f"gravity's torque turns the axis sideways, a gyroscope precessing at about "
+        f"{rate:.6g} rad/s (m g l / (I₃ ω), fast-spin approximation)"
+    )
+    return result
+
+
+def _upright_top(
+    result: dict[str, Any], threshold: dict, spin: float, axis: np.ndarray, q0, omega0
+) -> dict[str, Any]:
+    """The verdict for an axisymmetric top whose centre of mass starts above the pivot: stable
+    above the sleeping-top threshold, unstable below it."""
+    w = f"{abs(spin):.6g} rad/s"
     limit = f"{threshold['omega3']:.6g} rad/s"
     up = float(up_in_body(q0)[0] @ axis)
     if abs(spin) > threshold["omega3"]:

@@ -286,14 +286,16 @@ class EulerPoinsot:
             self.M * I_cn * I_sn * (A_cn * A_sn) ** 2 * (I_sn - I_cn) / (d0 * d1) if d1 != 0 else 0.0
         )
         self.G0 = float(self.ell.G(self.nu, np.array([self.tau0]))[0])
-        # fixed frame: q_wb(t) = q_wH ⊗ zxz(φ, θ, ψ) ⊗ q_tb
-        rows = axes[list(self.triad)]
-        self.q_tb = _frame_quaternion(rows)
+        self._fix_frame(q0)
+        self.description = "torque-free asymmetric body (Jacobi elliptic functions, elliptic integrals)"
+
+    def _fix_frame(self, q0) -> None:
+        """The constant turns of q_wb(t) = q_wH ⊗ zxz(φ, θ, ψ) ⊗ q_tb that make t = 0 give ``q0``."""
+        self.q_tb = _frame_quaternion(self.axes[list(self.triad)])
         phi0, theta0, psi0 = self._angles(np.array([0.0]))
         self.q_wH = _qmul(
             _qmul(np.asarray(q0, dtype=float), _conj(self.q_tb)), _conj(_zxz(phi0, theta0, psi0))
         )[0]
-        self.description = "torque-free asymmetric body (Jacobi elliptic functions, elliptic integrals)"
 
     def omega_principal(self, t: np.ndarray) -> np.ndarray:
         """ω in principal axes (N, 3), rad/s."""
@@ -355,6 +357,15 @@ class EulerPoinsot:
         }
 
 
+def _triad(axis: np.ndarray, principal_axes: np.ndarray) -> np.ndarray:
+    """Rows (a, b, c = ``axis``) of a right-handed triad whose transverse pair is taken from the
+    principal axis most nearly perpendicular to ``axis``."""
+    first = principal_axes[0] if abs(principal_axes[0] @ axis) < 0.5 else principal_axes[1]
+    first = first - (first @ axis) * axis
+    first /= np.linalg.norm(first)
+    return np.array([first, np.cross(axis, first), axis])
+
+
 class LagrangeTop:
     """Heavy symmetric top, centre of mass at distance l > 0 along its axis from the pivot.
 
@@ -371,12 +382,7 @@ class LagrangeTop:
         moments, axes = scene.principal_moments, scene.principal_axes
         self.I3 = float(self.axis @ scene.inertia @ self.axis)
         self.I1 = float(moments[2] if abs(moments[0] - self.I3) < abs(moments[2] - self.I3) else moments[0])
-        # transverse pair completing a right-handed triad (a, b, c = axis)
-        first = axes[0] if abs(axes[0] @ self.axis) < 0.5 else axes[1]
-        first = first - (first @ self.axis) * self.axis
-        first /= np.linalg.norm(first)
-        rows = np.array([first, np.cross(self.axis, first), self.axis])
-        self.rows = rows
+        self.rows = rows = _triad(self.axis, axes)
         self.q_tb = _frame_quaternion(rows)
         self.mgl = scene.mass * scene.gravity * float(np.linalg.norm(scene.com_from_pivot))
         w_t = rows @ np.asarray(omega0, dtype=float)
