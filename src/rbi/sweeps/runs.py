@@ -113,9 +113,8 @@ def _derive_scene(job: SweepJob, values: tuple[float, ...]):
 def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[list[Any]]:
     """Rows of runs ``start .. stop-1`` (each a list in :attr:`SweepJob.columns` order)."""
     from rbi.sim.api import sample_times
-    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
+    from rbi.sim.compiled import integrator
     from rbi.sim.scene import initial_state
-    from rbi.sim.summary import sweep_figures_batch
 
     values = job.plan.values(start, stop)
     t = sample_times(job.duration, job.samples)
@@ -153,15 +152,33 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
         int(threads),
     )
     finite = np.all(np.isfinite(out), axis=(1, 2))
+    figures_of = _figures(scenes, t, out, status, finite)
+    _fill_rows(job, rows, ready, status, finite, counts, figures_of)
+    return rows
+
+
+def _figures(scenes: list, t: np.ndarray, out: np.ndarray, status: np.ndarray, finite: np.ndarray) -> dict:
+    """Each finished, finite run's summary figures (tilts, precession, drift) by its batch
+    index; the runs of one scene are summarised together."""
+    from rbi.sim.compiled import STATUS_DONE
+    from rbi.sim.summary import sweep_figures_batch
+
     figures_of: dict[int, dict] = {}
-    by_scene: dict[int, list[int]] = {}  # runs of one scene are summarised together
-    for b in range(B):
+    by_scene: dict[int, list[int]] = {}
+    for b in range(len(scenes)):
         if status[b] == STATUS_DONE and finite[b]:
             by_scene.setdefault(id(scenes[b]), []).append(b)
     for group in by_scene.values():
         with np.errstate(all="ignore"):
             batch = sweep_figures_batch(scenes[group[0]], t, out[group, :, :4], out[group, :, 4:])
         figures_of.update(zip(group, batch))
+    return figures_of
+
+
+def _fill_rows(job: SweepJob, rows: list, ready: list, status, finite, counts, figures_of: dict) -> None:
+    """Complete each integrated run's row with its figures and status, or why it failed."""
+    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL
+
     for b, i in enumerate(ready):
         if status[b] == STATUS_DONE:
             if not finite[b]:
@@ -185,7 +202,6 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
             STATUS_STEP_TOO_SMALL: "failed: the step size fell below the time resolution",
         }.get(int(status[b]), "failed: the state stopped being finite (overflow)")
         rows[i] += [None] * (len(RESULT_COLUMNS) - 2) + [int(counts[b, 1]), reason]
-    return rows
 
 
 def _one_line(text: str) -> str:
