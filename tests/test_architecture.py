@@ -204,6 +204,22 @@ def test_no_cli_function_is_longer_than_a_screen():
     assert long_functions(SRC / "cli", MAX_CLI_FUNCTION_LINES) == []
 
 
+LONG_FUNCTIONS_LEFT = {
+    ("api.py", "simulate"),
+    ("api.py", "sweep"),
+    ("api.py", "audit"),
+    ("robot_xml.py", "_parse"),
+    ("yaml_reader.py", "read_document"),
+}
+"""Functions anywhere in rbi still longer than a screen (issue 24 asks for none). This list only
+shrinks: a new long function fails the test below; an entry may be removed once it fits."""
+
+
+def test_no_function_in_the_package_is_longer_than_a_screen_except_the_listed_ones():
+    found = {(name, function) for name, function, _ in long_functions(SRC, MAX_CLI_FUNCTION_LINES)}
+    assert found - LONG_FUNCTIONS_LEFT == set()
+
+
 def test_the_size_rules_see_what_they_measure(tmp_path):
     probe = tmp_path / "probe.py"
     probe.write_text("def short():\n    return 1\n\n\ndef long():\n" + "    x = 1\n" * 70)

@@ -324,6 +324,28 @@ def _removed(element: MassProperties) -> MassProperties:
     return MassProperties(-element.mass, element.center_of_mass, -element.inertia_about_com)
 
 
+def _finite_element(index: int, part, units: models.Units, path: str) -> MassProperties:
+    """One part's mass properties (file units); InputError naming the part when its numbers are
+    wrong or overflow a double."""
+    try:
+        with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported just below
+            element = part_element(part, units, path)
+    except ValueError as exc:
+        raise InputError(f"{path}: {part_label(index, part)}: {exc}") from None
+    except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
+        element = None
+    if element is None or not (
+        np.isfinite(element.mass)
+        and np.all(np.isfinite(element.center_of_mass))
+        and np.all(np.isfinite(element.inertia_about_com))
+    ):
+        raise InputError(
+            f"{path}: {part_label(index, part)}: numbers too large: mass or inertia overflows "
+            f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?"
+        )
+    return element
+
+
 def body_from_spec(spec: models.BodySpec, path: str):
     """Translate a validated :class:`~rbi.spec.models.BodySpec` into a
     :class:`LoadedBody`."""
@@ -344,22 +366,7 @@ def body_from_spec(spec: models.BodySpec, path: str):
                 element = _removed(element)
             elements.append(element)
             continue
-        try:
-            with np.errstate(over="ignore", invalid="ignore"):  # overflow is reported just below
-                element = part_element(part, spec.units, path)
-        except ValueError as exc:
-            raise InputError(f"{path}: {part_label(i, part)}: {exc}") from None
-        except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
-            element = None
-        if element is None or not (
-            np.isfinite(element.mass)
-            and np.all(np.isfinite(element.center_of_mass))
-            and np.all(np.isfinite(element.inertia_about_com))
-        ):
-            raise InputError(
-                f"{path}: {part_label(i, part)}: numbers too large: mass or inertia overflows "
-                f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?"
-            )
+        element = _finite_element(i, part, spec.units, path)
         if getattr(part, "subtract", False):
             holes.append(i)
             element = _removed(element)
