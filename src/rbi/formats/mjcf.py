@@ -358,7 +358,7 @@ class _Bodies:
         attrs = dict(element.attrib)
         link = Link(len(self.model.links), element.get("name"), element=element, word="body")
         where = Where(self.model.path, link.label)
-        link.parent = parent.name if parent is not None else None
+        link.parent = parent.key if parent is not None else None
         link.origin = frame.then(self.pose(element, attrs, where))
         self.model.links.append(link)
         inner_class = element.get("childclass", active_class)

@@ -152,7 +152,7 @@ class Motion:
 @dataclass
 class Link:
     """A link (MJCF: body): ``index`` in file order, ``name``, ``inertial`` (None when it
-    declares none), ``collisions`` and ``visuals``, ``parent`` (a link name, None for a root),
+    declares none), ``collisions`` and ``visuals``, ``parent`` (a link's :attr:`key`, None for a root),
     ``origin`` (its frame in the parent's at the reference configuration; for a root, in the
     model frame), ``motions`` (the joints between it and its parent; empty when fixed) and the
     XML ``element``."""
@@ -171,6 +171,12 @@ class Link:
     @property
     def label(self) -> str:
         return f"{self.word}[{self.index}]" + (f" ({short(self.name)})" if self.name is not None else "")
+
+    @property
+    def key(self) -> str:
+        """How other links refer to this one (``parent``): its name, or for an unnamed MJCF body
+        its place in the file (with a NUL, so no name can equal it)."""
+        return self.name if self.name is not None else f"\0{self.word}[{self.index}]"
 
     @property
     def moves(self) -> bool:

@@ -308,7 +308,7 @@ def _carried_mass(model: RobotModel) -> dict[int, bool]:
 
     def below(link: Link) -> bool:
         found = False
-        stack = list(children.get(link.name, [])) if link.name is not None else []
+        stack = list(children.get(link.key, []))
         seen = set()
         while stack:
             child = stack.pop()

@@ -79,7 +79,7 @@ def _joint_frames(model: RobotModel, joints: dict[str, float]):
     joint's axis and anchor taken where the joints before it have left them."""
     from rbi.robot.tree import _motion
 
-    by_name = {link.name: link for link in model.links}
+    by_name = {link.key: link for link in model.links}
     poses: dict[int, Pose] = {}
     frames: dict[int, list] = {}
     for link in _parents_first(model, by_name):
@@ -106,8 +106,7 @@ def _parents_first(model: RobotModel, by_name) -> list:
     while queue:
         link = queue.pop()
         order.append(link)
-        if link.name is not None:
-            queue.extend(children.get(link.name, []))
+        queue.extend(children.get(link.key, []))
     return order
 
 
@@ -122,7 +121,7 @@ def _gravity(model: RobotModel, poses: dict[int, Pose]) -> tuple[np.ndarray, Pos
 
 def _subtree_sums(model: RobotModel, poses: dict[int, Pose], to_frame: Pose):
     """For each link: the mass of its subtree (kg) and its first moment Σ m c (kg·m)."""
-    by_name = {link.name: link for link in model.links}
+    by_name = {link.key: link for link in model.links}
     mass = {link.index: 0.0 for link in model.links}
     moment = {link.index: np.zeros(3) for link in model.links}
     for link in model.links:

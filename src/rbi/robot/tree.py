@@ -61,7 +61,7 @@ def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dic
             f"--joints: {model.path} has no revolute or prismatic joint named {unknown[0]!r}"
             + (f" (did you mean {hint[0]!r}?)" if hint else "")
         )
-    by_name = {link.name: link for link in model.links}
+    by_name = {link.key: link for link in model.links}
     poses: dict[int, Pose] = {}
 
     def pose_of(link) -> Pose:
