@@ -179,3 +179,19 @@ def test_without_the_cad_extra_one_line_names_it(tmp_path, monkeypatch):
 
     monkeypatch.setattr(step_module, "_CACHE", type(step_module._CACHE)())
     one_line_exit_2(run_rbi_inprocess("inertia", spec), "parts[0] (p)", "pip install 'rbi[cad]'")
+
+
+def test_without_the_cad_extra_the_extra_is_named_before_anything_else_about_the_part(tmp_path, monkeypatch):
+    # without OpenCascade no STEP file can even be written, so a user's spec may name one that
+    # is not there yet: the line names the extra to install, not the missing file
+    import importlib.util
+
+    real_find_spec = importlib.util.find_spec
+    monkeypatch.setattr(
+        importlib.util, "find_spec", lambda name, *a: None if name == "OCP" else real_find_spec(name, *a)
+    )
+    spec = tmp_path / "body.yaml"
+    spec.write_text("parts:\n  - {name: p, shape: step, file: not-written-yet.step, density: 1000}\n")
+    proc = run_rbi_inprocess("inertia", spec, "--format", "json")
+    one_line_exit_2(proc, "parts[0] (p)", "pip install 'rbi[cad]'")
+    assert "no such file" not in proc.stderr

@@ -240,6 +240,16 @@ _OCP_NAMES = {
 """What the reader uses of OpenCascade, by module (``*``: the module itself, as ``collections``)."""
 
 
+def require_cad() -> None:
+    """:class:`CadExtraMissing` when OpenCascade (the extra ``cad``) is not installed: checked
+    before anything else about a STEP part, so a user without it is told what to install, not
+    what else is wrong (OpenCascade is looked up, not imported)."""
+    import importlib.util
+
+    if importlib.util.find_spec("OCP") is None:
+        raise CadExtraMissing(f"reading STEP files needs OpenCascade: {CAD_EXTRA_HINT}")
+
+
 def _ocp() -> SimpleNamespace:
     """OpenCascade's names the reader uses, with its console messages switched off; raises
     :class:`CadExtraMissing` when the extra ``cad`` is not installed."""

@@ -220,9 +220,10 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
     unit, turned by ``rotation`` about the file's origin, that origin moved to ``position``.
     Raises ValueError naming the file (as written in the spec) and what is wrong with it."""
     from rbi.formats.paths import spec_relative_file
-    from rbi.formats.step import read_step, select_solids
+    from rbi.formats.step import read_step, require_cad, select_solids
     from rbi.spec.units import LENGTH_UNITS_IN_M
 
+    require_cad()
     try:
         file = spec_relative_file(spec_path, part.file, f"file: {part.file}")
     except InputError as exc:
