@@ -139,3 +139,15 @@ def test_mjcf_effort_limit_from_actuators_and_gravity_option(tmp_path):
     assert joints["h"]["effort_limit"] == 10.0 and joints["h"]["flags"] == []
     assert joints["k"]["effort_limit"] == 4.0
     assert [f["code"] for f in joints["k"]["flags"]] == ["effort"]
+
+
+def test_the_joints_table_shows_names_as_text(tmp_path):
+    # a joint name is data: rich markup in it is shown, not applied, and a bidirectional override
+    # is escaped; the lift joint's axis is vertical at angle 0, so its torque is 0.5 kg × g
+    arm = ARM.replace("LIMIT", "10").replace('name="elbow"', 'name="[red]elbow\u202e"')
+    path = tmp_path / "arm.urdf"
+    path.write_text(arm, encoding="utf-8")
+    proc = run_rbi_inprocess("audit", str(path), "--format", "table")
+    assert proc.returncode == 0, proc.stderr
+    assert "[red]elbow\\u202e" in proc.stdout and "\u202e" not in proc.stdout
+    assert " 4.905 " in proc.stdout

@@ -250,17 +250,19 @@ def _joints_table(report) -> None:
     """Each joint's holding torque against gravity, its declared effort limit and the margin."""
     if not report.joints:
         return
-    from rbi.cli.render import number, print_table, terminal_safe
-    from rbi.cli.tables import titled
+    from rbi.cli.render import number, print_table, terminal_safe, without_noise
+    from rbi.cli.tables import plain_text, titled
 
     table = titled("joints: torque that holds the pose (N·m; N for prismatic)")
     for heading in ("joint", "type", "torque", "limit", "margin", "flags"):
         table.add_column(heading, justify="left" if heading in ("joint", "type", "flags") else "right")
-    for each in report.joints:
+    # a torque below 1e-12 of the largest is rounding noise (7e-14 N·m beside 0.013 N·m): 0
+    torques = without_noise([each.torque for each in report.joints])
+    for each, torque in zip(report.joints, torques):
         table.add_row(
-            "-" if each.name is None else each.name,
-            each.type,
-            number(each.torque, 6),
+            "-" if each.name is None else plain_text(each.name),
+            plain_text(each.type),
+            number(float(torque), 6),
             "-" if each.effort_limit is None else number(each.effort_limit, 6),
             "-" if each.margin is None else number(each.margin, 6),
             " ".join(flag["code"] for flag in each.flags) or "ok",
