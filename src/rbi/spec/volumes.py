@@ -12,12 +12,10 @@ from rbi.core import shapes
 from rbi.spec import models
 
 
-def segment_length(start, end) -> float:
+def _length(start, end) -> float:
     """|end − start|, file length unit."""
     return float(np.linalg.norm(np.subtract(end, start)))
 
-
-_length = segment_length
 
 PART_VOLUMES: dict[type, Callable[[object], float]] = {
     models.ConePart: lambda p: shapes.cone_volume(p.radius, _length(p.apex, p.base)),
