@@ -70,8 +70,33 @@ def collections_to_survey() -> dict[str, tuple[list[str], dict[str, str]]]:
             else [],
             {},
         ),
+        "drake (SDF, URDF)": (_drake_files(), {}),
     }
     return found
+
+
+def _drake_files() -> list[str]:
+    share = _site("pydrake", "share", "drake")
+    if not share:
+        return []
+    return sorted(
+        glob.glob(share + "/**/*.sdf", recursive=True) + glob.glob(share + "/**/*.urdf", recursive=True)
+    )
+
+
+def _drake(path: str, report) -> float | None:
+    """Worst relative difference of the totals against Drake's MultibodyPlant (None: Drake refuses)."""
+    from tests.robot.test_drake_collection import _drake_totals
+
+    try:
+        mass, com, inertia = _drake_totals(path, report.total.frame.removeprefix("root link "))
+    except Exception:  # noqa: BLE001 - Drake refuses some files rbi reads
+        return None
+    return max(
+        abs(report.total.mass - mass) / mass,
+        _relative_error(report.total.center_of_mass, com) if np.max(np.abs(com)) > 1e-14 else 0,
+        _relative_error(report.total.inertia_about_com, inertia),
+    )
 
 
 def _reason(message: str) -> str:
@@ -141,7 +166,7 @@ def survey(files: list[str], packages: dict[str, str]) -> dict:
             crashed.append(f"{os.path.basename(path)}: {type(exc).__name__}: {exc}"[:200])
             continue
         counts[f"exit {report.exit_code}"] += 1
-        if path.endswith(".urdf"):
+        if path.endswith(".urdf") and "pydrake" not in path:
             expected = _pinocchio_totals(path)
             if expected is not None and expected[0] > 0:
                 total = report.total
@@ -158,6 +183,11 @@ def survey(files: list[str], packages: dict[str, str]) -> dict:
             if torques is not None:
                 worst["pinocchio torques"] = max(worst["pinocchio torques"], torques)
                 compared["pinocchio torques"] += 1
+        if "pydrake" in path:
+            found = _drake(path, report)
+            if found is not None:
+                worst["drake totals"] = max(worst.get("drake totals", 0.0), found)
+                compared["drake totals"] += 1
         elif path.endswith(".xml"):
             found = _mujoco(path, report)
             if found is not None:
