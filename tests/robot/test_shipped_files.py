@@ -7,6 +7,7 @@ file itself, named here with the reason."""
 from __future__ import annotations
 
 import glob
+import json
 import os
 import time
 
@@ -14,6 +15,7 @@ import numpy as np
 import pytest
 
 from rbi.errors import InputError
+from tests.conftest import run_rbi_inprocess
 
 pybullet_data = pytest.importorskip("pybullet_data")
 gymnasium = pytest.importorskip("gymnasium")
@@ -43,6 +45,26 @@ REFUSED = {  # file (relative to pybullet_data) → words of the one-line reason
 }
 
 TIMES: dict[str, float] = {}
+
+
+def _every_form_agrees(path: str, report) -> None:
+    """The command's table, JSON and CSV of ``path`` are well formed and hold the API's report:
+    the same links, totals and exit code (each form once had a model of its own)."""
+    from tests.robot.test_output_forms import _three_forms
+
+    assert _three_forms(path) == len(report.links)
+    proc = run_rbi_inprocess("audit", path, "--format", "json")
+    assert proc.returncode == report.exit_code
+    document = json.loads(proc.stdout)
+    assert document["total"]["mass"] == report.total.mass
+    assert document["total"]["center_of_mass"] == list(report.total.center_of_mass)
+
+
+def _refused_in_every_form(path: str, words: str) -> None:
+    for form in ("table", "json", "csv"):
+        proc = run_rbi_inprocess("audit", path, "--format", form)
+        assert proc.returncode == 2 and words in proc.stderr and proc.stdout == "", proc.stderr
+        assert len(proc.stderr.strip().splitlines()) == 1
 
 
 def _relative(path: str) -> str:
@@ -104,6 +126,7 @@ def test_pybullet_urdf(path, record_property):
             _audit(path)
         message = str(caught.value)
         assert REFUSED[relative] in message and len(message.splitlines()) == 1
+        _refused_in_every_form(path, REFUSED[relative])
         TIMES[relative] = time.perf_counter() - start
         return
     if relative == "random_urdfs/168/168.urdf":
@@ -111,6 +134,7 @@ def test_pybullet_urdf(path, record_property):
             _audit(path)
         return
     report, mode = _audit(path)
+    _every_form_agrees(path, report)
     expected = _pinocchio_totals(path)
     if expected is not None:
         mass, com, inertia = expected
@@ -135,6 +159,7 @@ def test_gymnasium_mjcf_agrees_with_mujoco(path):
     from rbi.robot import audit
 
     report = audit(path)
+    _every_form_agrees(path, report)
     model = mujoco.MjModel.from_xml_path(path)
     data = mujoco.MjData(model)
     mujoco.mj_forward(model, data)
@@ -163,7 +188,9 @@ def test_pybullet_sdf(path):
         with pytest.raises(InputError) as caught:
             _audit(path)
         assert REFUSED[relative] in str(caught.value)
+        _refused_in_every_form(path, REFUSED[relative])
         return
     report, _ = _audit(path)
+    _every_form_agrees(path, report)
     masses = [each.declared.mass for each in report.links if each.declared is not None]
     assert report.total.mass == pytest.approx(sum(masses), rel=1e-12)
