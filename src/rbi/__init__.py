@@ -38,6 +38,9 @@ __all__ = [
     "audit",
     "AuditReport",
     "SpecError",
+    "ArgumentError",
+    "outside_paths_allowed",
+    "visible",
     "__version__",
 ]
 
@@ -46,9 +49,17 @@ _API_NAMES = frozenset(__all__) - {"__version__"}
 
 def __getattr__(name: str):
     if name in _API_NAMES:
-        from rbi import api
-
-        value = getattr(api, name)
+        # names whose modules use the standard library only come without rbi.api (and numpy):
+        # the CLI's start-up and its error lines stay cheap
+        if name in ("SpecError", "ArgumentError"):
+            from rbi import errors as module
+        elif name == "outside_paths_allowed":
+            from rbi.formats import paths as module
+        elif name == "visible":
+            from rbi import text as module
+        else:
+            from rbi import api as module
+        value = getattr(module, name)
         globals()[name] = value
         return value
     raise AttributeError(f"module 'rbi' has no attribute {name!r}")

@@ -26,7 +26,10 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rbi.errors import ArgumentError, SpecError
+from rbi.files.output import check_distinct, output_target, write_output
+from rbi.formats.paths import outside_paths_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
+from rbi.text import number, visible
 
 if TYPE_CHECKING:
     from rbi.robot.audit import AuditReport
@@ -51,6 +54,14 @@ __all__ = [
     "AuditReport",
     "import_step",
     "SpecError",
+    # the CLI's tools, shared with every caller: errors, the checked file writer, text for people
+    "ArgumentError",
+    "outside_paths_allowed",
+    "output_target",
+    "check_distinct",
+    "write_output",
+    "visible",
+    "number",
 ]
 
 Point = str | Sequence[float] | np.ndarray

@@ -9,7 +9,7 @@ import sys
 
 import pytest
 
-from rbi.cli.output import check_distinct, open_output, output_target, write_output
+from rbi.files.output import check_distinct, open_output, output_target, write_output
 from rbi.spec.errors import InputError
 
 

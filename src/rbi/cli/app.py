@@ -11,12 +11,11 @@ import warnings
 import typer
 from typer._click.exceptions import UsageError
 
+from rbi import SpecError, outside_paths_allowed
 from rbi.cli import completion, terminal
 from rbi.cli.suggest import usage_message
 from rbi.cli.terminal import Terminated, say
 from rbi.cli.typer_app import COMMANDS, app
-from rbi.errors import InputError
-from rbi.formats.paths import ALLOW_OUTSIDE_FLAG, outside_paths_allowed
 
 __all__ = ["COMMANDS", "app", "main"]
 
@@ -59,12 +58,12 @@ def _run() -> None:
     # numpy's floating-point warnings: non-finite results are refused explicitly (render.emit)
     warnings.simplefilter("ignore", RuntimeWarning)
     args = sys.argv[1:]
-    allow_outside = _take_flag(args, ALLOW_OUTSIDE_FLAG)
+    allow_outside = _take_flag(args, "--allow-outside-paths")
     try:
         with outside_paths_allowed(allow_outside):
             completion.enable()  # answers the shell's completion script (only when it is the caller)
             status = app(args=args or ["--help"], prog_name="rbi", standalone_mode=False)
-    except InputError as exc:
+    except SpecError as exc:
         from rbi.cli.option_values import error_line
 
         say(error_line(exc))

@@ -35,11 +35,11 @@ def enable() -> None:
 
 def shell_name() -> str:
     """The user's shell from ``$SHELL`` (bash or zsh); anything else is bad input."""
-    from rbi.errors import InputError
+    from rbi import SpecError
 
     shell = Path(os.environ.get("SHELL", "")).name
     if shell not in SHELLS:
-        raise InputError(
+        raise SpecError(
             f"--install-completion: cannot tell the shell from $SHELL ({shell or 'not set'!r}): "
             f"completion is available for {' and '.join(SHELLS)}; set SHELL=/bin/bash or /bin/zsh"
         )
@@ -73,11 +73,11 @@ def install(shell: str, home: Path | None = None) -> tuple[Path, Path]:
 
 def _write(target: Path, text: str) -> None:
     """The script, written whole (a temporary file renamed into place), never through a link."""
-    from rbi.errors import InputError
+    from rbi import SpecError
 
     target.parent.mkdir(parents=True, exist_ok=True)
     if target.is_symlink():
-        raise InputError(f"--install-completion: {target}: is a symbolic link; remove it first")
+        raise SpecError(f"--install-completion: {target}: is a symbolic link; remove it first")
     partial = target.with_name(f".{target.name}.{os.getpid()}.partial")
     try:
         partial.write_text(text)

@@ -20,6 +20,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
+from rbi.api import SpecError
 from rbi.cli.render import (
     emit,
     fitted,
@@ -31,7 +32,6 @@ from rbi.cli.render import (
     to_json,
 )
 from rbi.cli.terminal import say
-from rbi.errors import InputError
 
 STDIN = "-"
 STDIN_LABEL = "<stdin>"
@@ -89,7 +89,7 @@ class _Several:
             try:
                 one = report(file)
                 refuse_non_finite(one.result, file_label(file))
-            except InputError as exc:
+            except SpecError as exc:
                 from rbi.cli.option_values import error_line
 
                 sys.stdout.flush()  # what earlier files printed comes before this file's error line

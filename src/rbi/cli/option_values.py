@@ -8,7 +8,7 @@ import math
 import re
 from typing import Any
 
-from rbi.errors import ArgumentError, InputError
+from rbi import ArgumentError, SpecError
 
 OPTION_NAMES = {
     "tilt_deg": "--tilt",
@@ -27,21 +27,21 @@ def option_name(parameter: str) -> str:
     return OPTION_NAMES.get(parameter) or "--" + parameter.replace("_", "-")
 
 
-def error_line(error: InputError) -> str:
+def error_line(error: SpecError) -> str:
     """The one line the CLI prints for ``error``: an API argument named as its option
     (``--duration: must be ...``), any other error as it is."""
     return error.named(option_name) if isinstance(error, ArgumentError) else str(error)
 
 
 def parse_vector(text: str, option: str, count: int = 3) -> list[float]:
-    """``"1,2,3"`` -> ``[1.0, 2.0, 3.0]``; :class:`InputError` naming ``option`` otherwise."""
+    """``"1,2,3"`` -> ``[1.0, 2.0, 3.0]``; :class:`SpecError` naming ``option`` otherwise."""
     pieces = [p.strip() for p in text.replace(";", ",").split(",")]
     try:
         values = [float(p) for p in pieces]
     except ValueError:
         values = []
     if len(values) != count or not all(math.isfinite(v) for v in values):
-        raise InputError(f"{option}: expected {count} finite numbers separated by commas, got {text!r}")
+        raise SpecError(f"{option}: expected {count} finite numbers separated by commas, got {text!r}")
     return values
 
 
@@ -81,7 +81,7 @@ _DRAW = re.compile(rf"^\s*(normal|uniform)\s*\(\s*({_NUMBER})\s*,\s*({_NUMBER})\
 
 def sweep_values(text: str, option: str) -> Any:
     """A sweep axis as ``rbi.sweep`` takes it: ``START:STOP:COUNT`` → ``Grid``, one number,
-    ``normal(MEAN,SD)`` → ``Normal``, ``uniform(LOW,HIGH)`` → ``Uniform``; :class:`InputError`
+    ``normal(MEAN,SD)`` → ``Normal``, ``uniform(LOW,HIGH)`` → ``Uniform``; :class:`SpecError`
     naming ``option`` otherwise."""
     from rbi.api import Grid, Normal, Uniform
 
@@ -93,16 +93,16 @@ def sweep_values(text: str, option: str) -> Any:
             kind = Normal if match[1] == "normal" else Uniform
             return kind(float(match[2]), float(match[3]))
     except ValueError as exc:
-        raise InputError(f"{option}: {exc}") from None
+        raise SpecError(f"{option}: {exc}") from None
     try:
         value = float(text)
     except ValueError:
-        raise InputError(
+        raise SpecError(
             f"{option}: expected START:STOP:COUNT, a number, normal(MEAN,SD) or uniform(LOW,HIGH) "
             f"(got {text[:60]!r})"
         ) from None
     if not math.isfinite(value):
-        raise InputError(f"{option}: must be a finite number (got {text!r})")
+        raise SpecError(f"{option}: must be a finite number (got {text!r})")
     return value
 
 
@@ -112,10 +112,10 @@ def vary_option(items: list[str]) -> dict[str, Any]:
     for item in items:
         path, sep, text = item.partition("=")
         if not sep:
-            raise InputError(f"--vary {item}: expected PATH=RANGE, e.g. parts.bolt.mass=0.01:0.03:5")
+            raise SpecError(f"--vary {item}: expected PATH=RANGE, e.g. parts.bolt.mass=0.01:0.03:5")
         path = path.strip()
         if path in vary:
-            raise InputError("--vary: a path is given twice")
+            raise SpecError("--vary: a path is given twice")
         vary[path] = sweep_values(text, f"--vary {path}")
     return vary
 
@@ -129,14 +129,14 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
         return "origin", [0.0, 0.0, 0.0]
     if key == "pivot":
         if body.pivot is None:
-            raise InputError(
+            raise SpecError(
                 f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none"
             )
         return "pivot", body.pivot.tolist()
     try:
         return "point", parse_vector(text, "--about")
-    except InputError:
-        raise InputError(
+    except SpecError:
+        raise SpecError(
             f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
             f"commas, file units), got {text!r}"
         ) from None
@@ -153,9 +153,9 @@ def parse_rotation(text: str) -> tuple[str, float]:
     except ValueError:
         degrees = math.nan
     if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
-        raise InputError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
+        raise SpecError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
     if not angle_is_kept(degrees):
-        raise InputError(
+        raise SpecError(
             f"--rotate: {angle.strip()} degrees is too large to be a turn: rounding loses it "
             f"(at most {LARGEST_ANGLE_DEG:g} degrees)"
         )

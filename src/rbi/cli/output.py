@@ -1,26 +1,8 @@
-"""Output paths of the commands: a thin front of :mod:`rbi.files.output`, the one checked
-writer every file rbi creates goes through (see docs/security.md)."""
+"""Output paths of the commands: :func:`rbi.api.output_target` and the one checked writer
+every file rbi creates goes through (see docs/security.md)."""
 
 from __future__ import annotations
 
-from rbi.files.output import (
-    STDOUT,
-    STDOUT_ALIASES,
-    OutputTarget,
-    atomic_path,
-    check_distinct,
-    open_output,
-    output_target,
-    write_output,
-)
+from rbi.api import check_distinct, output_target, write_output
 
-__all__ = [
-    "STDOUT",
-    "STDOUT_ALIASES",
-    "OutputTarget",
-    "atomic_path",
-    "check_distinct",
-    "open_output",
-    "output_target",
-    "write_output",
-]
+__all__ = ["check_distinct", "output_target", "write_output"]

@@ -1,5 +1,5 @@
 """Rendering: JSON, CSV cells, rich tables fitted to the terminal, progress bars; numbers through
-the one formatter, :func:`rbi.text.number`."""
+the one formatter, :func:`rbi.api.number`."""
 
 from __future__ import annotations
 
@@ -15,9 +15,8 @@ from typing import Any
 
 import numpy as np
 
+from rbi.api import SpecError, number  # number re-exported: the tables and commands format with it
 from rbi.cli.terminal import say, terminal_safe
-from rbi.errors import InputError
-from rbi.text import number  # noqa: F401  (re-exported: the tables and commands format with it)
 
 
 def plain(value: Any) -> Any:
@@ -247,7 +246,7 @@ def refuse_non_finite(result: dict[str, Any], source: str | None = None) -> None
     bad = [key for key, value in plain(result).items() if _has_non_finite(value)]
     if bad:
         where = f"{source}: " if source else ""
-        raise InputError(
+        raise SpecError(
             f"{where}result {', '.join(bad)} is not finite: the input values are too large for double "
             "precision"
         )

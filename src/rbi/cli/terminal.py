@@ -12,10 +12,10 @@ import signal
 import sys
 import unicodedata
 
-from rbi.text import escaped, visible
+from rbi import visible
 
 terminal_safe = visible
-"""What reaches the terminal: :func:`rbi.text.visible`, the one escaper of text from outside."""
+"""What reaches the terminal: :func:`rbi.visible`, the one escaper of text from outside."""
 
 
 def say(message: str) -> None:
@@ -117,7 +117,7 @@ def _ascii_fallback(error: UnicodeError):
             spelling = ("" if after_superscript else "^") + SUPERSCRIPTS[char]
         elif spelling is None:
             base = unicodedata.normalize("NFKD", char).encode("ascii", "ignore").decode("ascii")
-            spelling = base if base.isprintable() and base else escaped(char)
+            spelling = base if base.isprintable() and base else char.encode("unicode_escape").decode()
         pieces.append(spelling)
     return "".join(pieces), error.end
 
