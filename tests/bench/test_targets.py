@@ -123,3 +123,20 @@ def test_headline_quotes_the_kernel_measurement_the_targets_table_shows():
     assert shown == "2,394×" and f"are {shown} faster" in line and "0.00188 s against 4.5 s" in line
     assert "(rtol 1e-09) is 4,702× faster" in line
     assert "3,197" not in headline({"kernel": kernel, "workprecision": {"cases": [case]}})[0]
+
+
+def test_robot_audit_target_is_shown_in_seconds_not_as_a_ratio():
+    """The robot-audit row is an absolute time: '3.21 s' against '≤ 5 s' (it printed '3.21×')."""
+    measured = {
+        "target_s": 5.0,
+        "links": 10**5,
+        "megabytes": 48.5,
+        "seconds": 3.21,
+        "links_per_second": 31152.6,
+    }
+    (row,) = targets({"robotaudit": measured})
+    assert row["met"] is True and row["unit"] == "s"
+    shown = target_rows([row])[0]
+    assert shown[2:5] == ["3.21 s", "≤ 5 s", "yes"] and "×" not in "".join(shown)
+    slow = target_rows(targets({"robotaudit": dict(measured, seconds=12.5)}))[0]
+    assert slow[2:5] == ["12.5 s", "≤ 5 s", "NO"]

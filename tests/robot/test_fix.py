@@ -240,6 +240,17 @@ def test_xacro_past_its_time_limit_is_refused(tmp_path, monkeypatch):
     assert "2 s" in message or "memory" in message
 
 
-def test_xacro_past_its_memory_limit_is_refused(tmp_path):
+@pytest.mark.parametrize(
+    "body",
+    [
+        '<xacro:property name="s" value="${\'x\' * 2**31}"/><link name="${s}"/>',  # a 2 GiB string
+        '<link name="${[0] * 2**28}"/>',  # a 2 GiB list, inside an attribute
+    ],
+)
+def test_xacro_past_its_memory_limit_is_refused_saying_so(tmp_path, body):
+    """xacro wraps the MemoryError in its own exception, whose text says only where it happened:
+    the message names the limit the expansion ran out of (it was 'could not expand it: when
+    evaluating expression ...')."""
     pytest.importorskip("xacro")
-    _refused(_xacro(tmp_path, '<xacro:property name="s" value="${\'x\' * 2**31}"/><link name="${s}"/>'))
+    message = _refused(_xacro(tmp_path, body))
+    assert "ran out of its 1 GiB memory limit" in message and "could not expand" not in message

@@ -41,13 +41,17 @@ def _target(
     at_least: bool,
     baseline: str,
     detail: str = "",
+    unit: str | None = None,
 ) -> dict:
+    """One target row; ``unit`` names the unit of ``measured`` and ``limit`` when they are a
+    quantity shown with it (``"s"``), None for a ratio or a unit the target's words end in."""
     met = None if measured is None else (measured >= limit if at_least else measured <= limit)
     return {
         "area": area,
         "target": what,
         "measured": measured,
         "limit": limit,
+        "unit": unit,
         "comparison": "≥" if at_least else "≤",
         "baseline": baseline,
         "met": met,
@@ -273,12 +277,13 @@ def _robotaudit_targets(ra: dict) -> list[dict]:
     return [
         _target(
             "robot audit",
-            f"`rbi audit` of a URDF of {ra.get('links', 0):,} links (inertial, box collision, revolute joints), s",
+            f"`rbi audit` of a URDF of {ra.get('links', 0):,} links (inertial, box collision, revolute joints), wall time",
             ra.get("seconds"),
             ra["target_s"],
             False,
             "5 s (absolute)",
             detail,
+            unit="s",
         )
     ]
 
@@ -302,10 +307,11 @@ def target_rows(rows: list[dict]) -> list[list[str]]:
 
     out = []
     for r in rows:
-        measured = r["measured"]
-        absolute = r["target"].endswith(("MB", "ms"))  # a quantity in its unit, not a ratio
-        shown = "—" if measured is None else (number(measured, 3) if absolute else _times(measured))
-        limit = number(r["limit"], 3) if absolute else _times(r["limit"])
+        measured, unit = r["measured"], r.get("unit")
+        absolute = unit is not None or r["target"].endswith(("MB", "ms"))  # a quantity, not a ratio
+        suffix = f" {unit}" if unit else ""
+        shown = "—" if measured is None else (number(measured, 3) + suffix if absolute else _times(measured))
+        limit = number(r["limit"], 3) + suffix if absolute else _times(r["limit"])
         met = {True: "yes", False: "NO", None: "—"}[r["met"]]
         out.append(
             [

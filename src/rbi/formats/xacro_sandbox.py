@@ -77,6 +77,12 @@ except MemoryError:
 except RecursionError:
     out(error="xacro could not expand it: macros or properties nested too deeply")
 except BaseException as exc:
+    cause, seen = exc, set()
+    while cause is not None and id(cause) not in seen:  # xacro wraps errors in XacroException(exc=...)
+        seen.add(id(cause))
+        if isinstance(cause, MemoryError):
+            out(error="memory")
+        cause = getattr(cause, "exc", None) or cause.__cause__ or cause.__context__
     words = " ".join(str(exc).split())
     words = re.sub(r"^<class '[^']*'>:\s*", "", words)
     out(error="xacro could not expand it: " + (words[:300] or type(exc).__name__))
@@ -120,14 +126,19 @@ def _answer(path: str, done: subprocess.CompletedProcess) -> tuple[bytes, list[s
     try:
         answer = json.loads(done.stdout.decode("utf-8"))
     except (UnicodeDecodeError, ValueError):
-        answer = {"error": "memory" if b"MemoryError" in done.stderr or done.returncode < 0 else "crash"}
+        answer = {"error": "memory" if b"MemoryError" in done.stderr else "crash"}
     error = answer.get("error")
     if error == "missing":
         raise InputError(
             f"{path}: a .xacro file needs the xacro package: pip install 'rbi[xacro]' (or run "
             "`xacro FILE > FILE.urdf` and read that)"
         )
-    if error in ("memory", "crash"):
+    if error == "memory":
+        raise InputError(
+            f"{path}: xacro ran out of its {MEMORY_LIMIT_BYTES // 2**30} GiB memory limit expanding it; "
+            "refused (a property or expression that builds a huge string or list)"
+        )
+    if error == "crash":
         raise InputError(
             f"{path}: xacro needed more than {MEMORY_LIMIT_BYTES // 2**30} GiB of memory or "
             f"{TIME_LIMIT_S:g} s to expand it; refused"
