@@ -112,3 +112,27 @@ def test_plausible_bodies_and_parts_without_volume_are_not_warned():
         assert rbi.load(path).warnings == [], path.name
     point = {"name": "p", "shape": "point", "mass": 1e6, "position": [0, 0, 0]}
     assert rbi.load({"parts": [point]}).warnings == []
+
+
+LEAD_BRICK_CM_G = {  # 20 × 10 × 5 cm of lead (11.34 g/cm³): 11,340 g; read as SI, an 11.3 kg/m³ "foam"
+    "name": "brick",
+    "shape": "box",
+    "center": [0, 0, 0],
+    "size": [20, 10, 5],
+    "mass": 20 * 10 * 5 * 11.34,
+}
+
+
+def test_a_foam_light_part_that_is_exactly_lead_in_cm_and_g_is_warned():
+    warnings = rbi.load({"parts": [LEAD_BRICK_CM_G]}).warnings
+    assert len(warnings) == 1, warnings
+    assert "11.3 kg/m³ is a light foam's, but 11,340 kg/m³ (lead's) in centimetres and grams" in warnings[0]
+    assert warnings[0].endswith("add units: {length: cm, mass: g}")
+    assert rbi.load({"units": {"length": "cm", "mass": "g"}, "parts": [LEAD_BRICK_CM_G]}).warnings == []
+
+
+@pytest.mark.parametrize("kg_m3", [11.0, 11.2, 11.5, 15.0, 19.0, 22.0])
+def test_a_real_foam_not_exactly_a_metal_in_cm_and_g_is_not_warned(kg_m3):
+    """11.34 kg/m³ to 0.1 % is lead in cm and g; 11.2 or 11.5 is a foam like any other."""
+    foam = {"name": "foam", "shape": "box", "center": [0, 0, 0], "size": [2, 1, 0.5], "mass": kg_m3}
+    assert rbi.load({"parts": [foam]}).warnings == []

@@ -6,19 +6,28 @@ spec that states its units is never warned about.
 When it warns: a part given its mass (mass ÷ volume) or a density number has a density outside
 :data:`POSSIBLE_DENSITY_KG_M3`, or a part given a density is larger than :data:`LARGEST_PART_M`.
 The range is wide on purpose: a foam block (25 kg/m³), a satellite bus or a ship hull drawn as one
-solid of its outside size (50–500 kg/m³) and osmium (22,590) are all plausible SI bodies.
+solid of its outside size (50–500 kg/m³) and osmium (22,590) are all plausible SI bodies. It also
+warns a body possible in SI that another pair makes more than ten times likelier
+(:data:`SI_PREFERENCE_DECADES`): in practice a 9–23 kg/m³ "foam" that is exactly lead, gold,
+tungsten or osmium in cm and g.
 
 Which units it names: every length unit with every mass unit is tried; among the pairs under
-which every part is possible, the one whose densities lie nearest the densities solids usually
-have (:data:`USUAL_DENSITY_KG_M3`, wood to lead; distance measured in decades outside that band)
-wins, then the more common pair (:data:`COMMON_UNITS`).
+which every part is possible, the likeliest wins (:func:`likely_units`). How likely a density is
+comes from a mixture: a share of parts is exactly one handbook material
+(:data:`REFERENCE_DENSITIES_KG_M3`, to 0.1 %: a mass computed from a density by CAD or by
+hand), the rest spread log-normally about :data:`TYPICAL_DENSITY_KG_M3` (hollow and assembled
+bodies, woods, foams); rarer unit pairs pay their rarity (:data:`COMMON_UNITS`).
 
-What it cannot tell apart (docs/spec.md says it too): one unit pair differs from another by a
-factor on every density, so a body in inches and pounds reads as an ordinary solid in mm and g
-(36× denser) or in cm and g (28× lighter), and mostly gets one of those hints; a body lighter
-than 100 kg/m³ in cm and g gets the inches-and-pounds hint; parts denser than 9 g/cm³ written
-in cm and g read as 9–23 kg/m³ in SI, light foams, and are not warned about; and mm with g gives
-the same densities as cm with kg (mm and g is named).
+What it cannot tell apart (docs/spec.md gives the rates measured on a corpus of real objects,
+tests/spec/test_plausibility_corpus.py): one unit pair differs from another by a factor on every
+density and one on every size, and the spread of real densities (15–22,590 kg/m³, over three
+decades) is wider than those factors (in/lb is 28× denser than cm/g and 36× lighter than mm/g).
+So a light body (foam, a hollow body drawn by its outside) in inches and pounds reads as an
+ordinary solid in mm and g, a dense one not exactly a handbook material (a coin, a gold bar)
+as wood in cm and g; a light body in cm and g reads as a solid in inches and pounds; parts
+denser than 9 g/cm³ written in cm and g read as 9–23 kg/m³ in SI, light foams, and are warned
+about only when they are exactly a handbook metal; and mm with g gives the same densities as
+cm with kg (mm and g is named).
 """
 
 from __future__ import annotations
@@ -35,9 +44,66 @@ satellite drawn as one solid of its outside size (15–100) to osmium (22,590). 
 g read as m and kg is a million times too light and cannot pass; one in cm and g is a thousand
 times too light and passes only for parts denser than 9 g/cm³ (lead, gold, tungsten)."""
 
-USUAL_DENSITY_KG_M3 = (100.0, 12_000.0)
-"""Densities most bodies have, kg/m³ (balsa to lead): when several unit pairs make a body
-possible, the one that puts its parts nearest this band is named."""
+TYPICAL_DENSITY_KG_M3 = 400.0
+"""The middle of the densities bodies have when they are not one handbook material, kg/m³:
+hollow and assembled bodies drawn as one solid of their outside size (a car 120, a satellite
+60–150, a phone 2,000) and woods and foams spread around it."""
+
+DENSITY_SPREAD_DECADES = 0.7
+"""How widely those densities spread about :data:`TYPICAL_DENSITY_KG_M3` (standard deviation of
+log10 density): 68 % of such bodies lie within 80–2,000 kg/m³, 95 % within 16–10,000."""
+
+REFERENCE_DENSITIES_KG_M3 = MATERIAL_DENSITIES_SI | {
+    "osmium": 22_590.0,
+    "platinum": 21_450.0,
+    "gold": 19_300.0,
+    "tungsten": 19_250.0,
+    "tungsten alloy": 19_300.0,
+    "tantalum": 16_690.0,
+    "tungsten carbide": 15_630.0,
+    "silver": 10_490.0,
+    "molybdenum": 10_280.0,
+    "nickel": 8_908.0,
+    "bronze": 8_800.0,
+    "iron": 7_874.0,
+    "tin": 7_310.0,
+    "zinc": 7_140.0,
+    "alumina": 3_950.0,
+    "marble": 2_710.0,
+    "glass": 2_500.0,
+    "concrete": 2_400.0,
+    "ptfe": 2_200.0,
+    "fr4": 1_850.0,
+    "magnesium": 1_740.0,
+    "cfrp": 1_600.0,
+    "pvc": 1_380.0,
+    "polycarbonate": 1_200.0,
+    "pmma": 1_180.0,
+    "seawater": 1_025.0,
+    "water (1 t/m³)": 1_000.0,
+    "hdpe": 950.0,
+    "ice": 917.0,
+    "polypropylene": 905.0,
+}
+"""Handbook densities of materials whose density is well defined (metals, minerals, plastics,
+water and ice; not woods or foams, which vary by a factor of two), kg/m³. A part drawn with
+its mass computed from one of them (as CAD programs do) comes out at it in the right units,
+and almost never in the wrong ones."""
+
+MATERIAL_MATCH_DECADES = 0.0005
+"""How near (in log10 density, 0.5 %) a part must come to a handbook density to count as that
+material."""
+
+MATERIAL_SHARE = 0.3
+"""The share of parts taken to be one handbook material at its handbook density (the rest
+spread as :data:`DENSITY_SPREAD_DECADES` says)."""
+
+SI_PREFERENCE_DECADES = 1.0
+"""A spec without ``units:`` is taken to be in metres and kilograms ten times as often as in
+any other pair: a body possible in SI is warned about only when another pair makes it more
+than ten times likelier (log10 odds), as when a 11.3 kg/m³ "foam" is exactly lead in cm and g."""
+
+_REFERENCE_DECADES = sorted({math.log10(d) for d in REFERENCE_DENSITIES_KG_M3.values()})
 
 LARGEST_PART_M = 200.0
 """The largest plausible size of one part given a density, metres (cube root of its volume: a
@@ -50,20 +116,20 @@ COMMON_UNITS = {
     ("mm", "g"): 0.0,
     ("cm", "g"): 0.0,
     ("in", "lb"): 0.0,
-    ("cm", "kg"): 0.5,
-    ("m", "g"): 0.5,
-    ("ft", "lb"): 0.5,
-    ("in", "kg"): 1.0,
-    ("mm", "lb"): 1.0,
-    ("in", "g"): 1.0,
-    ("cm", "lb"): 1.0,
-    ("ft", "kg"): 1.0,
-    ("m", "lb"): 1.0,
-    ("ft", "g"): 1.0,
+    ("cm", "kg"): 1.0,
+    ("m", "g"): 1.0,
+    ("ft", "lb"): 1.0,
+    ("in", "kg"): 2.0,
+    ("mm", "lb"): 2.0,
+    ("in", "g"): 2.0,
+    ("cm", "lb"): 2.0,
+    ("ft", "kg"): 2.0,
+    ("m", "lb"): 2.0,
+    ("ft", "g"): 2.0,
 }
 """Every length and mass unit pair, the ones CAD programs and people use most first, each with
-how much less likely it is than the five common ones (in decades of density distance: a pair
-mixing metric and imperial units must fit the usual band a decade better to be named)."""
+how much rarer it is than the five common ones (log10 of the odds: a pair mixing metric and
+imperial units is taken to be a hundred times rarer)."""
 
 MAX_CHECKED_PARTS = 200
 """Solids looked at (the first ones in the file): a unit slip shows in every part, and a spec of
@@ -102,13 +168,38 @@ class _Solid:
             return False
         return self.mass is not None or self.size_m(length) <= LARGEST_PART_M
 
-    def unusualness(self, length: str, mass: str) -> float:
-        """How far the part's density lies outside :data:`USUAL_DENSITY_KG_M3`, in decades."""
+    def improbability(self, length: str, mass: str) -> float:
+        """How unlikely the part's density is if the file is in ``length`` and ``mass``: minus
+        log10 of its probability density per decade of density, from a mixture of the handbook
+        materials (:data:`REFERENCE_DENSITIES_KG_M3`, each a spike :data:`MATERIAL_MATCH_DECADES`
+        wide holding :data:`MATERIAL_SHARE` between them) and a log-normal spread about
+        :data:`TYPICAL_DENSITY_KG_M3`. 0 for a part given a material name."""
         density = self.density_si(length, mass)
         if not density:
             return 0.0
-        low, high = USUAL_DENSITY_KG_M3
-        return max(0.0, math.log10(low / density), math.log10(density / high))
+        decades = math.log10(density)
+        z = (decades - math.log10(TYPICAL_DENSITY_KG_M3)) / DENSITY_SPREAD_DECADES
+        spread = math.exp(-z * z / 2) / (DENSITY_SPREAD_DECADES * math.sqrt(2 * math.pi))
+        matches = sum(abs(decades - known) < MATERIAL_MATCH_DECADES for known in _REFERENCE_DECADES)
+        spike = matches / (2 * MATERIAL_MATCH_DECADES * len(_REFERENCE_DECADES))
+        return -math.log10(MATERIAL_SHARE * spike + (1 - MATERIAL_SHARE) * spread)
+
+    def rare_in_si(self, length: str, mass: str) -> str:
+        """What is odd about a part possible in metres and kilograms that ``length`` and
+        ``mass`` explain far better: its density is one of :data:`REFERENCE_DENSITIES_KG_M3`
+        there."""
+        si, there = self.density_si("m", "kg") or 0.0, self.density_si(length, mass) or 0.0
+        names = [
+            name
+            for name, known in REFERENCE_DENSITIES_KG_M3.items()
+            if there and abs(math.log10(there / known)) < MATERIAL_MATCH_DECADES
+        ]
+        what = "implied density" if self.mass is not None else "density"
+        material = f" ({names[0]}'s)" if names else ""
+        return (
+            f"{what} {si:.3g} kg/m³ is a light foam's, but {there:,.5g} kg/m³{material}"
+            f" in {LENGTH_WORDS[length]} and {MASS_WORDS[mass]}"
+        )
 
     def problem(self) -> str:
         """What is wrong with the part read in metres and kilograms."""
@@ -145,29 +236,14 @@ def _solids(spec) -> list[_Solid]:
     return out
 
 
-def _distance_to_materials(solids: list[_Solid], length: str, mass: str) -> float:
-    """How far the parts' densities lie from the nearest built-in material (mean |log10 ratio|)."""
-    total = 0.0
-    for solid in solids:
-        density = solid.density_si(length, mass)
-        if density:
-            total += min(abs(math.log10(density / known)) for known in MATERIAL_DENSITIES_SI.values())
-    return total / max(len(solids), 1)
-
-
 def likely_units(solids: list[_Solid]) -> list[tuple[str, str]]:
-    """The unit pairs that make every solid possible and are equally likely, the most likely
-    first: their parts' mean distance from the usual densities (decades) plus the pair's rarity
-    (:data:`COMMON_UNITS`), to 0.01; then, among pairs as likely, those whose densities lie
-    nearest a built-in material (to 0.01 decade: a steel block in inches and pounds comes out
-    at steel's 7850 kg/m³). Several when only sizes tell (parts given a material: mm, cm and
-    in may all fit); empty when no pair makes the body possible."""
+    """The unit pairs that make every solid possible and are most likely, the most likely
+    first: the parts' mean :meth:`_Solid.improbability` plus the pair's rarity
+    (:data:`COMMON_UNITS`), to 0.01 decade. Several when only sizes tell (parts given a
+    material: mm, cm and in may all fit); empty when no pair makes the body possible."""
     plausible = [pair for pair in COMMON_UNITS if all(s.plausible(*pair) for s in solids)]
     cost = {
-        pair: (
-            round(sum(s.unusualness(*pair) for s in solids) / max(len(solids), 1) + COMMON_UNITS[pair], 2),
-            round(_distance_to_materials(solids, *pair), 2),
-        )
+        pair: round(sum(s.improbability(*pair) for s in solids) / max(len(solids), 1) + COMMON_UNITS[pair], 2)
         for pair in plausible
     }
     nearest = min(cost.values(), default=None)
@@ -190,15 +266,36 @@ def hint(length: str, mass: str, other_lengths: list[str] = ()) -> str:
     return f"{' and '.join(looks)}: add units: {{{', '.join(block)}}}"
 
 
+def _better_explained(solids: list[_Solid]) -> tuple[_Solid, tuple[str, str]] | None:
+    """For a body possible in metres and kilograms: the part and unit pair that explain it
+    more than :data:`SI_PREFERENCE_DECADES` better (a foam-light part that is exactly a
+    handbook metal in cm and g), or None."""
+    fitting = likely_units(solids)
+    if not fitting or fitting[0] == ("m", "kg"):
+        return None
+    pair = fitting[0]
+
+    def gain(solid: _Solid) -> float:
+        return solid.improbability("m", "kg") - solid.improbability(*pair)
+
+    total = sum(gain(s) for s in solids) / len(solids) - COMMON_UNITS[pair]
+    return (max(solids, key=gain), pair) if total > SI_PREFERENCE_DECADES else None
+
+
 def unit_warnings(spec, path: str) -> list[str]:
     """One line (or none) about a spec without ``units:`` whose solids are implausible in
-    metres and kilograms: ``FILE: parts[i] (name): what is wrong: the units that fit``."""
+    metres and kilograms, or far likelier in other units (:func:`_better_explained`):
+    ``FILE: parts[i] (name): what is wrong: the units that fit``."""
     if "units" in spec.model_fields_set:
         return []
     solids = _solids(spec)
     wrong = [s for s in solids if not s.plausible("m", "kg")]
     if not wrong:
-        return []
+        better = _better_explained(solids)
+        if better is None:
+            return []
+        solid, (length, mass) = better
+        return [f"{path}: {solid.label}: {solid.rare_in_si(length, mass)}: {hint(length, mass)}"]
     more = f" (and {len(wrong) - 1} more part{'s' if len(wrong) > 2 else ''})" if len(wrong) > 1 else ""
     fitting = likely_units(solids)
     if fitting:
