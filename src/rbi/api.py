@@ -29,7 +29,7 @@ from rbi.errors import ArgumentError, SpecError
 from rbi.files.output import check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
-from rbi.text import number, visible
+from rbi.text import csv_lines, number, visible
 
 if TYPE_CHECKING:
     from rbi.robot.audit import AuditReport
@@ -62,6 +62,7 @@ __all__ = [
     "write_output",
     "visible",
     "number",
+    "csv_lines",
 ]
 
 Point = str | Sequence[float] | np.ndarray

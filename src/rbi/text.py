@@ -2,13 +2,18 @@
 
 Used wherever such text reaches a medium where a hidden character would act rather than show:
 YAML comments and values (:mod:`rbi.spec.yaml_writer`), picture labels
-(:mod:`rbi.viz.labels`), listings. Standard library only, importable from every layer.
+(:mod:`rbi.viz.labels`), listings, CSV cells (the CLI's ``--format csv`` and the sweep's rows
+file). Standard library only, importable from every layer.
 """
 
 from __future__ import annotations
 
+import csv
+import io
 import math
 import unicodedata
+from collections.abc import Iterable
+from typing import Any
 
 _HIDDEN_CATEGORIES = ("Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp")
 """Unicode categories written escaped: controls, format characters (bidirectional overrides,
@@ -66,3 +71,55 @@ def number(value: float | None, digits: int = 6) -> str:
     if not math.isfinite(value):
         return str(value)
     return f"{value:.{digits}g}"
+
+
+FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
+"""First characters that make a spreadsheet run a text cell as a formula (OWASP's list)."""
+
+
+def csv_cell(value: Any) -> Any:
+    """One CSV cell, the one rule for every CSV rbi writes: empty for None or NaN; a float at
+    full precision (Python's shortest round-trip repr); text made inert for spreadsheets (one
+    starting with ``=``, ``+``, ``-``, ``@``, a tab or a carriage return, such as
+    ``=HYPERLINK(...)``, gets a leading ``'``; text that reads as a number, ``-0.5``, is left
+    alone) with hidden characters escaped (:func:`visible`). Other values (ints) pass as they
+    are. :func:`csv_text_read` is its inverse for text cells."""
+    if isinstance(value, float):
+        return "" if value != value else repr(float(value))
+    if isinstance(value, str):
+        if value.startswith(FORMULA_STARTS) and not _is_number(value):
+            value = "'" + value
+        return visible(value)
+    return "" if value is None else value
+
+
+def csv_text_read(cell: str) -> str | None:
+    """The text :func:`csv_cell` wrote as ``cell`` (its ``'`` taken off), or None when
+    :func:`csv_cell` never writes ``cell`` (a formula left live, a hidden character)."""
+    if any(is_hidden(c) for c in cell):
+        return None
+    if cell.startswith("'") and cell[1:].startswith(FORMULA_STARTS) and not _is_number(cell[1:]):
+        return cell[1:]
+    if cell.startswith(FORMULA_STARTS) and not _is_number(cell):
+        return None
+    return cell
+
+
+def csv_lines(rows: Iterable[Iterable[Any]], header: Iterable[str] = ()) -> str:
+    """CSV text, each line ended by ``\\n``: ``header`` (column names rbi chooses, written as
+    they are) when given, then one line a row, every value through :func:`csv_cell`."""
+    buffer = io.StringIO()
+    writer = csv.writer(buffer, lineterminator="\n")
+    header = list(header)
+    if header:
+        writer.writerow(header)
+    writer.writerows([csv_cell(v) for v in row] for row in rows)
+    return buffer.getvalue()
+
+
+def _is_number(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return text.strip() == text

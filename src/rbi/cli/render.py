@@ -3,8 +3,6 @@ the one formatter, :func:`rbi.api.number`."""
 
 from __future__ import annotations
 
-import csv
-import io
 import json
 import math
 import os
@@ -15,7 +13,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.api import SpecError, number  # number re-exported: the tables and commands format with it
+from rbi.api import SpecError, csv_lines, number  # number re-exported: the tables and commands format with it
 from rbi.cli.terminal import say, terminal_safe
 
 
@@ -96,48 +94,13 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
 
 
 def to_csv(rows: Iterable[dict[str, Any]]) -> str:
-    """CSV text: a header row from the first row's (flattened) keys, then one line a row.
-    A row's ``warnings`` are not a column: they go to stderr (:func:`say_warnings`)."""
+    """CSV text: a header row from the first row's (flattened) keys, then one line a row, each
+    cell through the one CSV cell rule (:func:`rbi.text.csv_cell`). A row's ``warnings`` are not
+    a column: they go to stderr (:func:`say_warnings`)."""
     rows = [flatten({k: v for k, v in r.items() if k != "warnings"}) for r in rows]
-    buffer = io.StringIO()
-    writer = csv.writer(buffer, lineterminator="\n")
-    if rows:
-        writer.writerow(rows[0].keys())
-        for row in rows:
-            writer.writerow([_csv_cell(v) for v in row.values()])
-    return buffer.getvalue()
-
-
-def _csv_cell(value: Any) -> Any:
-    """A CSV cell: floats at full precision, empty for a missing or undefined (NaN) value,
-    text made safe for spreadsheets (see :func:`spreadsheet_safe`)."""
-    if value is None or (isinstance(value, float) and math.isnan(value)):
+    if not rows:
         return ""
-    if isinstance(value, str):
-        return spreadsheet_safe(value)
-    return repr(value) if isinstance(value, float) else value
-
-
-_FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
-
-
-def spreadsheet_safe(text: str) -> str:
-    """A text cell a spreadsheet will not run: one starting with ``=``, ``+``, ``-``, ``@``, a
-    tab or a carriage return (a name such as ``=HYPERLINK(...)``) gets a leading ``'`` (OWASP's
-    advice against CSV injection), and control characters are escaped as in
-    :func:`terminal_safe`. Numbers are never touched, nor is text that reads as a number
-    (``-0.5``)."""
-    if text.startswith(_FORMULA_STARTS) and not _is_number(text):
-        text = "'" + text
-    return terminal_safe(text)
-
-
-def _is_number(text: str) -> bool:
-    try:
-        float(text)
-    except ValueError:
-        return False
-    return text.strip() == text
+    return csv_lines((row.values() for row in rows), header=rows[0].keys())
 
 
 NOISE_RELATIVE = 1e-12

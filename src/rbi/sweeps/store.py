@@ -19,15 +19,15 @@ values this sweep gives that run, finite numbers of the right type, no row past 
 changes nothing until all of it holds: a file that is not this sweep's is exit 2 and stays
 byte-identical.
 
-CSV cells: floats written with Python's shortest round-trip repr (no digits lost); empty cells
-for undefined values. A text cell that a spreadsheet would run as a formula (starting with
-``=``, ``+``, ``-``, ``@``, tab or carriage return) is prefixed with ``'``.
+CSV cells follow the one rule of every CSV rbi writes (:func:`rbi.text.csv_cell`): floats in
+Python's shortest round-trip repr (no digits lost), empty cells for undefined values, text a
+spreadsheet would run as a formula prefixed with ``'``; :func:`rbi.text.csv_text_read` reads a
+text cell back.
 """
 
 from __future__ import annotations
 
 import csv
-import io
 import json
 import math
 import os
@@ -37,8 +37,8 @@ from typing import Any
 
 from rbi.errors import InputError
 from rbi.files import safe
+from rbi.text import csv_lines, csv_text_read
 
-FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 SETTINGS_SUFFIX = ".rbi-sweep.json"
 ROWS_SUFFIX = ".rbi-rows"
 SETTINGS_LIMIT = 1 << 20
@@ -63,19 +63,9 @@ def rows_folder(out: str | os.PathLike) -> Path:
     return safe.beside(out, ROWS_SUFFIX)
 
 
-def csv_cell(value: Any) -> Any:
-    """A CSV cell: empty for None/NaN; text that a spreadsheet would evaluate made inert."""
-    if value is None or (isinstance(value, float) and value != value):
-        return ""
-    if isinstance(value, str) and value.startswith(FORMULA_STARTS):
-        return "'" + value
-    return value
-
-
 def csv_bytes(rows: Iterable[list[Any]]) -> bytes:
-    buffer = io.StringIO()
-    csv.writer(buffer, lineterminator="\n").writerows([csv_cell(v) for v in row] for row in rows)
-    return buffer.getvalue().encode("utf-8")
+    """Rows as the CSV rows file holds them (UTF-8, one line a row, :func:`rbi.text.csv_cell`)."""
+    return csv_lines(rows).encode("utf-8")
 
 
 class SweepOutput:
@@ -439,9 +429,8 @@ def _cell(name: str, cell: Any, text: bool) -> Any:
         if text:
             if cell == "":
                 return None
-            if cell.startswith("'") and cell[1:].startswith(FORMULA_STARTS):
-                return cell[1:]
-            return _BAD if cell.startswith(FORMULA_STARTS) else cell
+            read = csv_text_read(cell)
+            return _BAD if read is None else read
         return cell if isinstance(cell, str) or cell is None else _BAD
     if text:
         if cell == "":
