@@ -13,9 +13,26 @@ judged exactly as strictly as large ones.
 
 from __future__ import annotations
 
+import sys
 from typing import NamedTuple
 
 import numpy as np
+
+SMALLEST_NORMAL = sys.float_info.min
+"""The smallest positive double with all its digits (2.2e-308): a mass, size or density below
+it is subnormal, and the moments computed from it lose their digits or vanish to 0."""
+
+
+def subnormal_problem(value: float) -> str | None:
+    """Why ``value`` (any input number) cannot be computed with: it is subnormal (not 0, and
+    smaller in size than :data:`SMALLEST_NORMAL`); None when it is fine."""
+    if value != 0 and abs(value) < SMALLEST_NORMAL:
+        return (
+            f"{value!r} is subnormal (smaller than {SMALLEST_NORMAL:.3g}, the smallest double with "
+            "all its digits): the moments computed from it would lose their digits or vanish"
+        )
+    return None
+
 
 INERTIA_RTOL = 1e-9
 """Default relative tolerance: well above the rounding of any double computation on the

@@ -20,6 +20,7 @@ import numpy as np
 
 from rbi.core.inertia import re_express
 from rbi.core.mass import MassProperties
+from rbi.core.validity import subnormal_problem
 from rbi.errors import InputError
 
 LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
@@ -238,6 +239,8 @@ def numbers(where: Where, text: str | None, what: str, count: int | tuple[int, .
         value = float(piece)
         if not math.isfinite(value):
             raise where.error(f"{what}: must be a finite number (got {short(piece)!r}, too large)")
+        if problem := subnormal_problem(value):
+            raise where.error(f"{what}: {problem}")
         values.append(value)
     return values
 

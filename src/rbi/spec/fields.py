@@ -13,11 +13,21 @@ from typing import Annotated, Any
 
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, PlainValidator, WithJsonSchema
 
+from rbi.core.validity import subnormal_problem
 from rbi.spec.errors import _show
 from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 
+
+def not_subnormal(value: float) -> float:
+    """``value`` unless it is subnormal (:func:`rbi.core.validity.subnormal_problem`)."""
+    problem = subnormal_problem(value)
+    if problem:
+        raise ValueError(problem)
+    return value
+
+
 Number = Annotated[float, Field(strict=True, allow_inf_nan=False)]
-Positive = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0)]
+Positive = Annotated[float, Field(strict=True, allow_inf_nan=False, gt=0), AfterValidator(not_subnormal)]
 Vector3 = Annotated[list[Number], Field(min_length=3, max_length=3)]
 
 
@@ -88,7 +98,7 @@ def _density(value: Any) -> float | str:
     number = _finite_number(value, "a number (mass per length³) or a material name such as steel")
     if number <= 0:
         raise ValueError(f"must be greater than 0 (got {value!r})")
-    return number
+    return not_subnormal(number)
 
 
 def _material_names() -> list[str]:
