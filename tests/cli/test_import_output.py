@@ -54,9 +54,9 @@ def urdf(names: list[str], robot: str = "r") -> str:
 
 def read_names(path) -> list[str]:
     """The link names as the reader gives them (the reading side is not under test here)."""
-    from rbi.formats.robot_files import read_robot_file
+    from rbi.formats.robot_files import read_robot
 
-    return [link.name for link in read_robot_file(str(path)).links]
+    return [link.name for link in read_robot(str(path)).inertial_links]
 
 
 def check_specs(text: str, names: list[str]) -> list[dict]:

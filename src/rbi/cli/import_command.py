@@ -95,11 +95,11 @@ def import_robot(
 def _import_robot(file: str, link, out: str | None, format: OutputFormat, package_path) -> None:
     """`rbi import ROBOT_FILE`: each link's spec, printed or written, or the listing."""
     from rbi.cli.terminal import say
-    from rbi.formats.robot_files import link_problems, read_robot_file
+    from rbi.formats.robot_files import link_problems, read_robot
     from rbi.formats.robot_paths import parse_package_paths
 
     packages = parse_package_paths(package_path)
-    robot = read_robot_file(file, packages)
+    robot = read_robot(file, packages)
     links = _selected(robot, link or [])
     if not links:
         raise InputError(f"{file}: no {robot.link_word} with an <inertial> element to import")
@@ -114,7 +114,7 @@ def _import_robot(file: str, link, out: str | None, format: OutputFormat, packag
         _write(robot, targets)
     if format is OutputFormat.table:
         if targets is None and len(links) > 1:
-            sys.stdout.write(_robot_yaml_text(file, packages))
+            sys.stdout.write(_robot_yaml_text(robot))
         elif targets is None:
             sys.stdout.write(_yaml_text(robot, links[0]))
         else:
@@ -207,8 +207,8 @@ def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
 
 def _selected(robot, names: list[str]):
     if not names:
-        return robot.links
-    by_name = {each.name: each for each in robot.links}
+        return robot.inertial_links
+    by_name = {each.name: each for each in robot.inertial_links}
     missing = [name for name in names if name not in by_name]
     if missing:
         import difflib
@@ -281,16 +281,14 @@ def _yaml_text(robot, link) -> str:
     return header + dump(link_spec(robot, link))
 
 
-def _robot_yaml_text(file: str, packages: dict | None = None) -> str:
+def _robot_yaml_text(model) -> str:
     """The whole robot as one spec (each link with mass a custom part, placed at the reference
     configuration): what `rbi inertia -` reads back."""
     import os
 
-    from rbi.formats.robot_files import read_robot
     from rbi.robot.specs import robot_spec
     from rbi.spec.yaml_writer import comment, dump
 
-    model = read_robot(file, packages)
     spec, left_out = robot_spec(model)
     frame = (
         "the world frame at qpos0" if model.format == "mjcf" else "the root link's frame, every joint at zero"

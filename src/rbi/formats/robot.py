@@ -205,6 +205,17 @@ class RobotModel:
     def link_word(self) -> str:
         return LINK_WORD[self.format]
 
+    @property
+    def inertial_links(self) -> list[Link]:
+        """The links with mass properties (an inertial element; MJCF: or geoms with mass)."""
+        return [each for each in self.links if each.inertial is not None]
+
+    @property
+    def skipped(self) -> list[tuple[str, str]]:
+        """(label, reason) for each link without mass properties."""
+        reason = "no <inertial> element" + (" and no geoms with mass" if self.format == "mjcf" else "")
+        return [(each.label, reason) for each in self.links if each.inertial is None]
+
     def link(self, name: str) -> Link | None:
         for each in self.links:
             if each.name == name:

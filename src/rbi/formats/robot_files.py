@@ -29,38 +29,18 @@ not a plain finite decimal.
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
-from rbi.formats.robot import LINK_WORD, Link, RobotModel
+from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot import short as _short
 from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
 
 ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf", ".xacro")
 FORMAT_BY_ROOT = {"robot": "urdf", "sdf": "sdf", "mujoco": "mjcf"}
-
-
-@dataclass
-class RobotFile:
-    """A parsed robot file: ``format`` is ``urdf``, ``sdf`` or ``mjcf``; ``links`` those with
-    an inertial element (:class:`rbi.formats.robot.Link`, each with its ``inertial``);
-    ``skipped`` (label, reason) for the others."""
-
-    path: str
-    format: str
-    name: str | None
-    links: list[Link] = field(default_factory=list)
-    skipped: list[tuple[str, str]] = field(default_factory=list)
-    notes: list[str] = field(default_factory=list)
-    unchecked: list[str] = field(default_factory=list)
-
-    @property
-    def link_word(self) -> str:
-        return LINK_WORD[self.format]
 
 
 def is_robot_file(path: str) -> bool:
@@ -105,34 +85,10 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
     return reader(document, package_paths, geometry)
 
 
-def read_robot_file(path: str, package_paths: dict | None = None) -> RobotFile:
-    """The links of a robot file that have mass properties (``links``) and those that do not
-    (``skipped``), read as :func:`read_robot` reads them; MJCF bodies carry what MuJoCo's
-    compiler gives them. ``package_paths`` as for :func:`read_robot`."""
-    model = read_robot(path, package_paths)
-    robot = RobotFile(
-        str(path), model.format, model.name, notes=list(model.notes), unchecked=list(model.unchecked)
-    )
-    for link in model.links:
-        inertial = link.inertial
-        if inertial is None:
-            robot.skipped.append(
-                (
-                    link.label,
-                    "no <inertial> element"
-                    if model.format != "mjcf"
-                    else "no <inertial> element and no geoms with mass",
-                )
-            )
-            continue
-        robot.links.append(link)
-    return robot
-
-
 # --- validity ----------------------------------------------------------------------------------
 
 
-def link_problems(robot: RobotFile, link: Link) -> list[str]:
+def link_problems(robot: RobotModel, link: Link) -> list[str]:
     """Every reason the link's declared mass properties are not physical, one line each with the
     margin by which the check fails (empty when the link is fine)."""
     where = f"{robot.path}: {link.label}"
@@ -164,16 +120,18 @@ def robot_file_problems(path: str, package_paths: dict | None = None) -> list[st
     """``rbi validate`` on a robot file: the one line that makes it unreadable, or one line per
     problem of every link."""
     try:
-        robot = read_robot_file(path, package_paths)
+        robot = read_robot(path, package_paths)
     except InputError as exc:
         return [str(exc)]
-    return list(robot.unchecked) + [line for link in robot.links for line in link_problems(robot, link)]
+    return list(robot.unchecked) + [
+        line for link in robot.inertial_links for line in link_problems(robot, link)
+    ]
 
 
 # --- specs ---------------------------------------------------------------------------------------
 
 
-def link_spec(robot: RobotFile, link: Link) -> dict[str, Any]:
+def link_spec(robot: RobotModel, link: Link) -> dict[str, Any]:
     """The rbi spec (plain dict, SI) of one link: one custom part with the link's mass, centre
     of mass, inertia about it in the inertial frame's axes, and the rotation into link axes."""
     inertial = link.inertial
