@@ -209,7 +209,6 @@ LONG_FUNCTIONS_LEFT = {
     ("api.py", "sweep"),
     ("api.py", "audit"),
     ("robot_xml.py", "_parse"),
-    ("yaml_reader.py", "read_document"),
 }
 """Functions anywhere in rbi still longer than a screen (issue 24 asks for none). This list only
 shrinks: a new long function fails the test below; an entry may be removed once it fits."""

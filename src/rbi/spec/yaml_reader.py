@@ -146,7 +146,7 @@ def _show_tag(tag: str) -> str:
 class _Frame:
     """One open list or mapping."""
 
-    __slots__ = ("value", "is_map", "key", "key_mark", "anchor", "start_total", "height", "merges", "mark")
+    __slots__ = ("value", "is_map", "key", "anchor", "start_total", "height", "merges", "mark")
 
     def __init__(self, value, is_map, anchor, start_total, mark):
         self.value, self.is_map, self.anchor, self.start_total, self.mark = (
@@ -157,7 +157,6 @@ class _Frame:
             mark,
         )
         self.key = _NO_KEY
-        self.key_mark = None
         self.height = 1
         self.merges = None
 
@@ -169,25 +168,17 @@ def read_document(text: str) -> Any:
     """The single YAML document in ``text`` as dicts, lists, str, int, float, bool and None.
 
     Raises :class:`YamlProblem` for anything this module refuses and ``yaml.YAMLError`` (with a
-    mark) for a syntax error found by the parser."""
+    mark) for a syntax error found by the parser. Scalars (most of a document) are read inline
+    here; collections, aliases and documents by :class:`_Reading`."""
     get_event = _parser(text).get_event
-    ScalarEvent, AliasEvent = yaml.ScalarEvent, yaml.AliasEvent
-    MappingStartEvent, SequenceStartEvent = yaml.MappingStartEvent, yaml.SequenceStartEvent
-    MappingEndEvent, SequenceEndEvent = yaml.MappingEndEvent, yaml.SequenceEndEvent
-    DocumentStartEvent, StreamEndEvent = yaml.DocumentStartEvent, yaml.StreamEndEvent
-    words, number_start, decimal, float_chars = _WORDS, _NUMBER_START, _DECIMAL.fullmatch, _FLOAT_CHARS
-
-    stack: list[_Frame] = []
-    top: _Frame | None = None  # stack[-1]
-    anchors: dict[str, tuple[Any, int, int]] = {}  # name -> (value, values it stands for, height)
+    ScalarEvent, AliasEvent, DocumentStartEvent = yaml.ScalarEvent, yaml.AliasEvent, yaml.DocumentStartEvent
+    starts = (yaml.MappingStartEvent, yaml.SequenceStartEvent)
+    ends = (yaml.MappingEndEvent, yaml.SequenceEndEvent)
+    words, number_start = _WORDS, _NUMBER_START
+    reading = _Reading()
+    fail, anchors = reading.fail, reading.anchors
+    top: _Frame | None = None  # the innermost open list or mapping
     total = 0  # values in the document so far, aliases expanded
-    through_aliases = 0  # of which added by aliases
-    documents = 0
-    result: Any = None
-
-    def fail(problem: str, mark, in_key: bool = False):
-        raise YamlProblem(problem, mark.line + 1, mark.column + 1, _where(stack, in_key))
-
     while True:
         event = get_event()
         kind = type(event)
@@ -199,14 +190,8 @@ def read_document(text: str) -> Any:
                     if value in words:
                         value = words[value]
                     elif value[0] in number_start:
-                        if top is not None and top.is_map and top.key == "name":
-                            value = _number(value, event.start_mark, fail, text_field=True)
-                        elif decimal(value) and (not float_chars.isdisjoint(value)):
-                            value = float(value)  # the common cases, checked inline
-                        elif value[0] in "123456789" and len(value) < 16 and decimal(value):
-                            value = int(value)
-                        else:
-                            value = _number(value, event.start_mark, fail)
+                        in_name = top is not None and top.is_map and top.key == "name"
+                        value = _number(value, event.start_mark, fail, text_field=in_name)
                     elif value == "<<":
                         value = _MERGE
             elif event.tag != "!":
@@ -214,8 +199,8 @@ def read_document(text: str) -> Any:
             if event.anchor is not None:
                 anchors[event.anchor] = (value, 1, 0)
             if top is None:
-                result = "<<" if value is _MERGE else value
-            elif value is _MERGE:
+                reading.result = "<<" if value is _MERGE else value
+            elif value is _MERGE or top.key is _MERGE:
                 _add(top, value, event.start_mark, fail)
             elif not top.is_map:  # the common cases inline: a list item, a new key, a value
                 top.value.append(value)
@@ -223,71 +208,107 @@ def read_document(text: str) -> Any:
                 if value in top.value:
                     _add(top, value, event.start_mark, fail)
                 top.key = value
-            elif top.key is _MERGE:
-                _add(top, value, event.start_mark, fail)
             else:
                 top.value[top.key] = value
                 top.key = _NO_KEY
-        elif kind is MappingStartEvent or kind is SequenceStartEvent:
+        elif kind in starts:
             total += 1
-            if event.tag is not None and event.tag not in _COLLECTION_TAGS:
-                fail(
-                    f"tag {_show_tag(event.tag)} is not supported (only plain lists, mappings and scalars)",
-                    event.start_mark,
-                )
-            if len(stack) >= MAX_DEPTH:
-                fail(f"nested more than {MAX_DEPTH} levels deep", event.start_mark)
-            if stack and stack[-1].is_map and stack[-1].key is _NO_KEY:
-                fail(_COMPLEX_KEY, event.start_mark, in_key=True)
-            is_map = kind is MappingStartEvent
-            top = _Frame({} if is_map else [], is_map, event.anchor, total - 1, event.start_mark)
-            stack.append(top)
-        elif kind is MappingEndEvent or kind is SequenceEndEvent:
-            frame = stack.pop()
-            top = stack[-1] if stack else None
-            value = frame.value
-            if frame.merges:
-                _apply_merges(value, frame.merges)
-            if frame.anchor is not None:
-                anchors[frame.anchor] = (value, total - frame.start_total, frame.height)
-            if stack:
-                parent = stack[-1]
-                if frame.height >= parent.height:
-                    parent.height = frame.height + 1
-                _add(parent, value, event.start_mark, fail)
-            else:
-                result = value
+            top = reading.open(event, kind is starts[0], total)
+        elif kind in ends:
+            top = reading.close(event, total)
         elif kind is AliasEvent:
-            found = anchors.get(event.anchor)
-            if found is None:
-                fail(
-                    f"alias *{_short(event.anchor)[1:-1]} names no anchor defined before it", event.start_mark
-                )
-            value, size, height = found
-            total += size
-            through_aliases += size
-            budget = max(ALIAS_BUDGET, total - through_aliases)
-            if through_aliases > budget:
-                fail(f"aliases expand to more than {budget:,} values (an alias bomb?)", event.start_mark)
-            if len(stack) + height > MAX_DEPTH:
-                fail(f"nested more than {MAX_DEPTH} levels deep (through an alias)", event.start_mark)
-            if height:
-                value = _fresh_copy(value)  # a tree, not a graph: editing one place never edits another
-            if stack:
-                parent = stack[-1]
-                if parent.is_map and parent.key is _NO_KEY and isinstance(value, (dict, list)):
-                    fail(_COMPLEX_KEY, event.start_mark, in_key=True)
-                if height >= parent.height:
-                    parent.height = height + 1
-                _add(parent, value, event.start_mark, fail)
-            else:
-                result = value
+            total = reading.alias(event, total)
         elif kind is DocumentStartEvent:
-            documents += 1
-            if documents > 1:
-                fail("more than one YAML document in the file (a spec is one document)", event.start_mark)
-        elif kind is StreamEndEvent:
-            return result
+            reading.document(event)
+        elif kind is yaml.StreamEndEvent:
+            return reading.result
+
+
+class _Reading:
+    """What :func:`read_document` keeps beside the innermost collection and the count of
+    values: the open collections, the anchors (name → (value, values it stands for, height)),
+    the values added through aliases, the documents seen and the result."""
+
+    __slots__ = ("stack", "anchors", "through_aliases", "documents", "result")
+
+    def __init__(self) -> None:
+        self.stack: list[_Frame] = []
+        self.anchors: dict[str, tuple[Any, int, int]] = {}
+        self.through_aliases = 0
+        self.documents = 0
+        self.result: Any = None
+
+    def fail(self, problem: str, mark, in_key: bool = False):
+        raise YamlProblem(problem, mark.line + 1, mark.column + 1, _where(self.stack, in_key))
+
+    def open(self, event, is_map: bool, total: int) -> _Frame:
+        """A list or mapping starts (``total`` counts it): the new innermost collection."""
+        stack = self.stack
+        if event.tag is not None and event.tag not in _COLLECTION_TAGS:
+            self.fail(
+                f"tag {_show_tag(event.tag)} is not supported (only plain lists, mappings and scalars)",
+                event.start_mark,
+            )
+        if len(stack) >= MAX_DEPTH:
+            self.fail(f"nested more than {MAX_DEPTH} levels deep", event.start_mark)
+        if stack and stack[-1].is_map and stack[-1].key is _NO_KEY:
+            self.fail(_COMPLEX_KEY, event.start_mark, in_key=True)
+        frame = _Frame({} if is_map else [], is_map, event.anchor, total - 1, event.start_mark)
+        stack.append(frame)
+        return frame
+
+    def close(self, event, total: int) -> _Frame | None:
+        """The innermost list or mapping ends: it goes into its parent (or is the result);
+        the parent, now innermost, is returned."""
+        stack = self.stack
+        frame = stack.pop()
+        value = frame.value
+        if frame.merges:
+            _apply_merges(value, frame.merges)
+        if frame.anchor is not None:
+            self.anchors[frame.anchor] = (value, total - frame.start_total, frame.height)
+        if not stack:
+            self.result = value
+            return None
+        parent = stack[-1]
+        if frame.height >= parent.height:
+            parent.height = frame.height + 1
+        _add(parent, value, event.start_mark, self.fail)
+        return parent
+
+    def alias(self, event, total: int) -> int:
+        """An alias: a fresh copy of its anchor's value goes in, counted against the budget;
+        returns the new count of values."""
+        found = self.anchors.get(event.anchor)
+        if found is None:
+            self.fail(
+                f"alias *{_short(event.anchor)[1:-1]} names no anchor defined before it", event.start_mark
+            )
+        value, size, height = found
+        total += size
+        self.through_aliases += size
+        budget = max(ALIAS_BUDGET, total - self.through_aliases)
+        if self.through_aliases > budget:
+            self.fail(f"aliases expand to more than {budget:,} values (an alias bomb?)", event.start_mark)
+        if len(self.stack) + height > MAX_DEPTH:
+            self.fail(f"nested more than {MAX_DEPTH} levels deep (through an alias)", event.start_mark)
+        if height:
+            value = _fresh_copy(value)  # a tree, not a graph: editing one place never edits another
+        if not self.stack:
+            self.result = value
+            return total
+        parent = self.stack[-1]
+        if parent.is_map and parent.key is _NO_KEY and isinstance(value, (dict, list)):
+            self.fail(_COMPLEX_KEY, event.start_mark, in_key=True)
+        if height >= parent.height:
+            parent.height = height + 1
+        _add(parent, value, event.start_mark, self.fail)
+        return total
+
+    def document(self, event) -> None:
+        self.documents += 1
+        if self.documents > 1:
+            self.fail("more than one YAML document in the file (a spec is one document)", event.start_mark)
 
 
 _COMPLEX_KEY = "a key must be text or a number, not a list or mapping (complex keys are not supported)"
