@@ -110,7 +110,45 @@ OBJECTS = [
         None,
         "a small satellite",
     ),
+    # FIRST_ADDED_LATER and every object after it were added with the rule already set
+    # (issue 26, second round) and are measured apart as a hold-out:
+    ("2 euro coin", "cylinder", (0.012875, 0.0022), 0.0085, "ECB: 25.75 mm, 2.2 mm, 8.5 g"),
+    ("US penny", "cylinder", (0.009525, 0.00152), 0.0025, "US Mint: 19.05 mm, 1.52 mm, 2.5 g"),
+    ("hex key", "cylinder", (0.002, 0.06), cylinder_mass(0.002, 0.06, STEEL), "4 mm steel, as a rod"),
+    ("aluminium plate", "box", (0.3, 0.2, 0.01), box_mass(0.3, 0.2, 0.01, ALUMINIUM), "6061 plate"),
+    ("brass rod", "cylinder", (0.01, 0.3), cylinder_mass(0.01, 0.3, 8500), "20 mm brass"),
+    ("copper pipe", "cylinder", (0.011, 1.0), 0.53, "22 mm x 0.9 mm tube, as a cylinder"),
+    ("car tyre", "cylinder", (0.32, 0.2), 9.0, "205/55 R16, as a disc"),
+    ("football", "sphere", (0.11,), 0.43, "FIFA size 5"),
+    ("soda can", "cylinder", (0.033, 0.122), 0.35, "330 ml, full"),
+    ("refrigerator", "box", (0.6, 0.65, 1.8), 70.0, "a fridge-freezer"),
+    ("washing machine", "box", (0.6, 0.6, 0.85), 70.0, "front loader"),
+    ("city bus", "box", (12.0, 2.55, 3.2), 12000.0, "12 m bus, empty"),
+    ("Hubble Space Telescope", "cylinder", (2.1, 13.2), 11110.0, "NASA: 13.2 m, 4.2 m, 11,110 kg"),
+    ("3U CubeSat", "box", (0.1, 0.1, 0.3405), 4.0, "CubeSat spec: up to 4 kg"),
+    ("kettlebell", "sphere", (0.105,), 16.0, "16 kg cast iron, as a ball"),
+    ("anvil", "box", (0.6, 0.15, 0.3), 100.0, "100 kg anvil, as its bounding box"),
+    ("paving slab", "box", (0.6, 0.6, 0.05), box_mass(0.6, 0.6, 0.05, 2400), "concrete"),
+    ("plywood sheet", "box", (2.44, 1.22, 0.018), box_mass(2.44, 1.22, 0.018, 600), "plywood 600 kg/m³"),
+    ("pine stud", "box", (0.038, 0.089, 2.4), box_mass(0.038, 0.089, 2.4, 500), "2x4, pine 500 kg/m³"),
+    ("silver bar", "box", (0.118, 0.052, 0.016), 1.0, "1 kg bar, as a box"),
+    ("cast iron pan", "cylinder", (0.13, 0.05), 2.5, "skillet, as a disc"),
+    ("LEGO brick", "box", (0.0318, 0.0158, 0.0096), 0.0023, "2x4 brick, body only"),
+    ("keyboard", "box", (0.44, 0.13, 0.03), 0.9, "a desktop keyboard"),
+    ("wind turbine nacelle", "box", (20.0, 8.0, 8.0), 390000.0, "a 8 MW nacelle"),
+    ("pallet", "box", (1.2, 0.8, 0.144), 25.0, "EUR pallet"),
+    ("upright piano", "box", (1.5, 0.6, 1.3), 230.0, "as its bounding box"),
+    ("lead sinker", "sphere", (0.006,), sphere_mass(0.006, LEAD), "12 mm ball"),
+    ("steel washer", "cylinder", (0.005, 0.001), cylinder_mass(0.005, 0.001, STEEL), "M5, as a disc"),
+    ("glass pane", "box", (1.0, 1.2, 0.004), box_mass(1.0, 1.2, 0.004, 2500), "4 mm float glass"),
+    ("hockey puck", "cylinder", (0.0381, 0.0254), 0.17, "NHL: 3 in, 1 in, 6 oz"),
+    ("cricket ball", "sphere", (0.036,), 0.16, "MCC: 72 mm, 160 g"),
+    ("dumbbell plate", "cylinder", (0.225, 0.03), 20.0, "20 kg cast iron plate, as a disc"),
+    ("submarine", "cylinder", (6.5, 110.0), 7.0e6, "7,000 t attack submarine"),
 ]
+
+FIRST_ADDED_LATER = "2 euro coin"
+"""The first object of the hold-out: it and every object after it in OBJECTS."""
 
 SLIPS = {
     # the units an author drew in, and the hint that names them

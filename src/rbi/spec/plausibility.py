@@ -12,19 +12,22 @@ warns a body possible in SI that another pair makes more than ten times likelier
 tungsten or osmium in cm and g.
 
 Which units it names: every length unit with every mass unit is tried; among the pairs under
-which every part is possible, the likeliest wins (:func:`likely_units`). How likely a density is
-comes from a mixture: a share of parts is exactly one handbook material
-(:data:`REFERENCE_DENSITIES_KG_M3`, to 0.1 %: a mass computed from a density by CAD or by
-hand), the rest spread log-normally about :data:`TYPICAL_DENSITY_KG_M3` (hollow and assembled
-bodies, woods, foams); rarer unit pairs pay their rarity (:data:`COMMON_UNITS`).
+which every part is possible (:meth:`_Solid.plausible`; no part over :data:`LARGEST_PART_M`),
+the likeliest wins (:func:`likely_units`). How likely a density is comes from a mixture: a share
+of parts is exactly one handbook material (:data:`REFERENCE_DENSITIES_KG_M3`, to 0.1 %: a mass
+computed from a density by CAD or by hand), the rest spread log-normally about
+:data:`TYPICAL_DENSITY_KG_M3` (hollow and assembled bodies, woods, foams), lighter for bodies
+metres across (:data:`STRUCTURE_SIZES_M`); rarer unit pairs pay their rarity
+(:data:`COMMON_UNITS`).
 
 What it cannot tell apart (docs/spec.md gives the rates measured on a corpus of real objects,
 tests/spec/test_plausibility_corpus.py): one unit pair differs from another by a factor on every
-density and one on every size, and the spread of real densities (15–22,590 kg/m³, over three
-decades) is wider than those factors (in/lb is 28× denser than cm/g and 36× lighter than mm/g).
-So a light body (foam, a hollow body drawn by its outside) in inches and pounds reads as an
-ordinary solid in mm and g, a dense one not exactly a handbook material (a coin, a gold bar)
-as wood in cm and g; a light body in cm and g reads as a solid in inches and pounds; parts
+density and one on every size, and real densities spread over more than those factors (15 to
+22,590 kg/m³; in/lb is 28× denser than cm/g and 36× lighter than mm/g). So a dense part that is
+not exactly a handbook material (a coin, a gold or silver bar, cast iron drawn by its outline)
+in mm and g reads as a hollow body in inches and pounds, and in inches and pounds as a light
+one in cm and g; a light body (foam, a violin or bicycle wheel drawn by its outline) in cm and
+g reads as a solid in inches and pounds, and in inches and pounds as one in mm and g; parts
 denser than 9 g/cm³ written in cm and g read as 9–23 kg/m³ in SI, light foams, and are warned
 about only when they are exactly a handbook metal; and mm with g gives the same densities as
 cm with kg (mm and g is named).
@@ -45,13 +48,22 @@ g read as m and kg is a million times too light and cannot pass; one in cm and g
 times too light and passes only for parts denser than 9 g/cm³ (lead, gold, tungsten)."""
 
 TYPICAL_DENSITY_KG_M3 = 400.0
-"""The middle of the densities bodies have when they are not one handbook material, kg/m³:
-hollow and assembled bodies drawn as one solid of their outside size (a car 120, a satellite
-60–150, a phone 2,000) and woods and foams spread around it."""
+"""The middle of the densities bodies up to a metre across have when they are not one handbook
+material, kg/m³: hollow and assembled bodies drawn as one solid of their outside size (a ball
+80–400, a phone 2,000), woods and foams spread around it (larger bodies:
+:data:`STRUCTURE_SIZES_M`)."""
 
 DENSITY_SPREAD_DECADES = 0.7
 """How widely those densities spread about :data:`TYPICAL_DENSITY_KG_M3` (standard deviation of
 log10 density): 68 % of such bodies lie within 80–2,000 kg/m³, 95 % within 16–10,000."""
+
+STRUCTURE_SIZES_M = (1.0, 10.0)
+STRUCTURE_THINNING = 0.5
+"""Bodies over a metre across are mostly structures round air (walls, frames, decks), and the
+walls' share of the outside volume falls as the body grows (square-cube law): between the two
+sizes (cube root of the volume, m) the typical density falls by 10^-STRUCTURE_THINNING per
+tenfold size, from 400 to 130 kg/m³; beyond 10 m it falls no further (a hull carries its
+displacement: ships come out at 300–500 kg/m³)."""
 
 REFERENCE_DENSITIES_KG_M3 = MATERIAL_DENSITIES_SI | {
     "osmium": 22_590.0,
@@ -162,11 +174,15 @@ class _Solid:
         return self.volume ** (1 / 3) * LENGTH_UNITS_IN_M[length]
 
     def plausible(self, length: str, mass: str) -> bool:
+        """Whether the part can be a real one in those units: a density within
+        :data:`POSSIBLE_DENSITY_KG_M3`, and no larger than :data:`LARGEST_PART_M` (sizes are
+        not judged in metres for a part given its mass: rbi does not second-guess a large SI
+        body, only refuses to suggest units that make one)."""
         low, high = POSSIBLE_DENSITY_KG_M3
         density = self.density_si(length, mass)
         if density is not None and not low <= density <= high:
             return False
-        return self.mass is not None or self.size_m(length) <= LARGEST_PART_M
+        return (self.mass is not None and length == "m") or self.size_m(length) <= LARGEST_PART_M
 
     def improbability(self, length: str, mass: str) -> float:
         """How unlikely the part's density is if the file is in ``length`` and ``mass``: minus
@@ -178,7 +194,10 @@ class _Solid:
         if not density:
             return 0.0
         decades = math.log10(density)
-        z = (decades - math.log10(TYPICAL_DENSITY_KG_M3)) / DENSITY_SPREAD_DECADES
+        smallest, largest = STRUCTURE_SIZES_M
+        size = min(max(self.size_m(length), smallest), largest)
+        typical = math.log10(TYPICAL_DENSITY_KG_M3) - STRUCTURE_THINNING * math.log10(size / smallest)
+        z = (decades - typical) / DENSITY_SPREAD_DECADES
         spread = math.exp(-z * z / 2) / (DENSITY_SPREAD_DECADES * math.sqrt(2 * math.pi))
         matches = sum(abs(decades - known) < MATERIAL_MATCH_DECADES for known in _REFERENCE_DECADES)
         spike = matches / (2 * MATERIAL_MATCH_DECADES * len(_REFERENCE_DECADES))
