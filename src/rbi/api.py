@@ -53,6 +53,12 @@ __all__ = [
     "audit",
     "AuditReport",
     "import_step",
+    "show",
+    "animate",
+    "Animation",
+    "import_robot",
+    "RobotImport",
+    "ImportedLink",
     "SpecError",
     # the CLI's tools, shared with every caller: errors, the checked file writer, text for people
     "ArgumentError",
@@ -499,6 +505,33 @@ class Trajectory(TableRepr):
     precession_deg: np.ndarray
     energy: np.ndarray
     summary: dict = field(default_factory=dict)
+    body: Body | None = field(default=None, compare=False)
+    """The simulated `Body` (None for a trajectory made by hand)."""
+
+    def plot(self, path: str | os.PathLike[str]) -> None:
+        """Draw the run at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib), as ``rbi
+        simulate --plot`` does: the path of the tip of the spin axis seen from above (world
+        frame), its tilt against time (a free body: each principal axis's angle to the angular
+        momentum), degrees; ω in body axes, rad/s; the energy's drift. The file is replaced
+        atomically."""
+        from rbi.viz.plots import plot_simulation  # matplotlib loads only to draw
+
+        body = self.body
+        if body is None:
+            raise ArgumentError("body", "plot needs the Body of the run: a Trajectory from rbi.simulate")
+        free = (
+            {"principal_axes": body.principal().axes, "inertia": body.inertia()} if body.pivot is None else {}
+        )
+        plot_simulation(
+            self.columns(),
+            _output(path, ("png", "svg", "pdf"), body.path),
+            name=body.name or body.path,
+            omega0=self.summary["initial"]["omega"],
+            nudge_deg=self.summary["initial"]["nudge_deg"],
+            energy_unit=body.unit_labels["energy"],
+            spin_axis=self.summary["spin_axis"],
+            **free,
+        )
 
     def to_csv(self) -> str:
         """The trajectory as the CSV ``rbi simulate --out`` writes (columns t, qw, qx, qy, qz, wx,
@@ -626,6 +659,7 @@ def simulate(
         precession_deg=columns["precession_deg"],
         energy=columns["energy"],
         summary=run.summary,
+        body=body,
     )
 
 
@@ -821,6 +855,7 @@ def audit(
     mesh_inertia: str = "auto",
     joints: dict[str, float] | Sequence[str] | None = None,
     fix: bool = False,
+    out: str | os.PathLike | None = None,
     allow_outside_paths: bool | None = None,
     mesh_repair: bool = False,
 ) -> AuditReport:
@@ -834,19 +869,18 @@ def audit(
         package_paths: ``{NAME: DIR}`` or ``["NAME=DIR", ...]`` for ``package://NAME/`` meshes
             (``ROS_PACKAGE_PATH`` is searched too).
         geometry: ``"collision"`` or ``"visual"``: which geometry gives a link's volume (a link
-            without it falls back to the other); ``"none"``: no geometry, the declared inertials
-            and totals only.
+            without it falls back to the other); ``"none"``: the declared inertials and totals only.
         density, material: kg/m³, or a built-in material name, for links that declare no mass.
         mesh_inertia: ``"auto"`` (exact where a mesh is closed, else its convex hull, flagged
-            ``mesh``), ``"exact"`` (the solid a closed mesh encloses), ``"convex"`` (its hull)
-            or ``"shell"`` (mass on the surface).
+            ``mesh``), ``"exact"``, ``"convex"`` (its hull) or ``"shell"`` (mass on the surface).
         joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
             metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
         fix: also plan the fixed copy: ``report.fix.content`` (bytes), ``.changes``, ``.unfixable``.
+        out: with ``fix``, write the fixed copy there (``.urdf``, ``.sdf`` or ``.xml``; never a
+            file the robot reads), replaced atomically.
         allow_outside_paths: let the file name meshes and includes outside its folder; None:
             as an enclosing `outside_paths_allowed` block says (not allowed outside one).
-        mesh_repair: close meshes' holes of three or four edges first (each repair, with the
-            area it added, is listed in ``report.notes``).
+        mesh_repair: close meshes' holes of three or four edges first (listed in ``report.notes``).
 
     Returns:
         An `AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``,
@@ -855,26 +889,26 @@ def audit(
 
     Raises:
         SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
-            read, or repeats a link name.
+            read, or repeats a link name; ``out`` cannot be written.
     """
     from rbi.formats.paths import outside_paths_are_allowed
     from rbi.robot import audit as run_audit
 
-    if allow_outside_paths is None:
-        allow_outside_paths = outside_paths_are_allowed()
+    if out is not None and not fix:
+        raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
+    target = None if out is None else _output(out, ("urdf", "sdf", "xml"), robot_file)
+    allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
+    settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, density=density)
+    settings |= dict(material=material)
+    settings |= dict(mesh_inertia=mesh_inertia, joints=joints, fix=fix, mesh_repair=mesh_repair)
+    report = run_audit(robot_file, allow_outside_paths=allowed, **settings)
+    if target is not None:
+        from rbi.files.output import write_output
+        from rbi.robot.fix import check_out_not_read
 
-    return run_audit(
-        robot_file,
-        package_paths=package_paths,
-        geometry=geometry,
-        density=density,
-        material=material,
-        mesh_inertia=mesh_inertia,
-        joints=joints,
-        fix=fix,
-        allow_outside_paths=allow_outside_paths,
-        mesh_repair=mesh_repair,
-    )
+        check_out_not_read(target.path, report.model)  # an include, a mesh or the robot file itself
+        write_output(target, report.fix.content)
+    return report
 
 
 def import_step(
@@ -908,6 +942,231 @@ def import_step(
     return run_import(path, density=density, material=material, relative_to=relative_to)
 
 
+@dataclass(frozen=True)
+class ImportedLink:
+    """One link of a robot file with mass properties, as ``rbi import`` turns it into a spec
+    (SI units: kg, m, kg·m²; the link's own frame).
+
+    Attributes:
+        name: the link's name (None for an unnamed MJCF body); ``label``: how messages name it.
+        index: its place among the file's links.
+        mass: kg. center_of_mass: (3,) m, link frame.
+        inertia: (3, 3) kg·m² about the centre of mass, in the link's axes.
+        inertial_quaternion: (4,) [w, x, y, z], the inertial frame's orientation in the link frame.
+        problems: why the declared values are not physical, one line each (empty when fine).
+        yaml: the link's spec (one custom part) as YAML text under a comment header.
+    """
+
+    name: str | None
+    label: str
+    index: int
+    mass: float
+    center_of_mass: np.ndarray
+    inertia: np.ndarray
+    inertial_quaternion: np.ndarray
+    problems: list[str]
+    yaml: str
+
+
+@dataclass(frozen=True)
+class RobotImport:
+    """A robot file read as ``rbi import`` reads it: ``path``; ``format`` (``"urdf"``, ``"sdf"``,
+    ``"mjcf"``); ``name`` (the model's); ``link_word`` (``"link"``, or ``"body"`` for MJCF);
+    ``links``, the `ImportedLink` s asked for; ``skipped``, ``(label, reason)`` of each link
+    without mass properties; ``robot_yaml()``, the whole robot as one spec."""
+
+    path: str
+    format: str
+    name: str | None
+    link_word: str
+    links: list[ImportedLink]
+    skipped: list[tuple[str, str]]
+    model: Any = field(default=None, repr=False)
+    """The file as rbi reads it (its links, with their geometry)."""
+
+    def robot_yaml(self) -> str:
+        """The whole robot as one spec (YAML text under a comment header): one custom part per
+        link with mass, placed at the zero configuration (MJCF: ``qpos0``), SI units."""
+        from rbi.robot.specs import robot_spec
+        from rbi.spec.yaml_writer import comment, dump
+
+        model = self.model
+        spec, left_out = robot_spec(model)
+        frame = (
+            "the world frame at qpos0"
+            if model.format == "mjcf"
+            else "the root link's frame, every joint at zero"
+        )
+        lines = [
+            f"rbi import of {os.path.basename(model.path)}: the whole robot, one custom part per "
+            f"{model.link_word} with mass,",
+            f"placed in {frame}; SI units.",
+            "One link alone, in its own frame: --link NAME; one spec per link: --out DIR/.",
+        ]
+        if left_out:
+            lines.append(f"Without mass (left out): {', '.join(left_out)}.")
+        return comment(*lines) + dump(spec)
+
+
+def import_robot(
+    robot_file: str | os.PathLike[str],
+    *,
+    links: Sequence[str] | None = None,
+    package_paths: dict[str, str] | Sequence[str] | None = None,
+) -> RobotImport:
+    """Read the links of a robot file (URDF, SDF, MJCF) that have mass properties, as ``rbi
+    import`` does: each one's mass, centre of mass and inertia (SI, link frame) and its spec.
+
+    Args:
+        robot_file: the file's path.
+        links: the names of the links to import (MJCF: bodies), in order; None: every one.
+        package_paths: as `audit`'s, for ``package://NAME/`` paths.
+
+    Raises:
+        SpecError: the file cannot be read or is malformed; no link has mass properties.
+        ValueError: a name in ``links`` names no link with an ``<inertial>``.
+    """
+    from rbi.formats.robot_files import link_problems, read_robot
+    from rbi.formats.robot_paths import parse_package_paths
+
+    if isinstance(package_paths, Mapping):
+        package_paths = [f"{name}={folder}" for name, folder in package_paths.items()]
+    packages = parse_package_paths(list(package_paths or []))
+    robot = read_robot(os.fsdecode(os.fspath(robot_file)), packages)
+    chosen = _chosen_links(robot, list(links or []))
+    if not chosen:
+        raise SpecError(f"{robot.path}: no {robot.link_word} with an <inertial> element to import")
+    imported = [
+        ImportedLink(
+            link.name,
+            link.label,
+            link.index,
+            float(link.inertial.mass),
+            np.asarray(link.inertial.properties.center_of_mass),
+            np.asarray(link.inertial.properties.inertia_about_com),
+            _inertial_quaternion(link.inertial),
+            link_problems(robot, link),
+            _link_yaml(robot, link),
+        )
+        for link in chosen
+    ]
+    return RobotImport(robot.path, robot.format, robot.name, robot.link_word, imported, robot.skipped, robot)
+
+
+def _inertial_quaternion(inertial: Any) -> np.ndarray:
+    """``[w, x, y, z]`` of the inertial frame: the file's own quaternion, else the identity or the
+    rotation's."""
+    from rbi.core.rotation import matrix_to_quaternion
+
+    if inertial.quaternion is not None and inertial.rpy is None:
+        return np.asarray(inertial.quaternion)
+    R = inertial.rotation
+    return np.array([1.0, 0.0, 0.0, 0.0]) if R is None else matrix_to_quaternion(R)
+
+
+def _link_yaml(robot: Any, link: Any) -> str:
+    """One link's spec: a comment header, then the spec written by the YAML dumper. Names from
+    the file are data: escaped in the comment, quoted and escaped by the dumper where they hold
+    anything but visible characters (:mod:`rbi.spec.yaml_writer`)."""
+    from rbi.formats.robot_files import link_spec
+    from rbi.spec.yaml_writer import comment, dump
+
+    source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
+    header = comment(
+        f"rbi import of {os.path.basename(robot.path)}, {link.label}, from its {source} <inertial>:",
+        "SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,",
+        "turned into link axes by `rotation`.",
+    )
+    return header + dump(link_spec(robot, link))
+
+
+def _chosen_links(robot: Any, names: list[str]) -> list[Any]:
+    """The links named in ``names`` (every one when empty), each once, in the order named."""
+    if not names:
+        return robot.inertial_links
+    by_name = {each.name: each for each in robot.inertial_links}
+    missing = [name for name in names if name not in by_name]
+    if missing:
+        import difflib
+
+        hint = difflib.get_close_matches(missing[0], [n for n in by_name if n], n=1)
+        raise ArgumentError(
+            "links",
+            f"{robot.path} has no {robot.link_word} named {missing[0]!r} with an <inertial>"
+            + (f" (did you mean {hint[0]!r}?)" if hint else ""),
+        )
+    return [by_name[name] for name in dict.fromkeys(names)]
+
+
+def _output(path: str | os.PathLike[str], formats: tuple[str, ...], read: str | os.PathLike[str]) -> Any:
+    """``path`` checked as an output of one of ``formats`` (its extension) by rbi's one checked
+    writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file)."""
+    from rbi.files.output import output_target
+
+    return output_target(os.fsdecode(os.fspath(path)), "path", formats, inputs=[os.fsdecode(os.fspath(read))])
+
+
+def show(body: Body, path: str | os.PathLike[str], *, title: str | None = None) -> int:
+    """Draw the body as specified at ``path``, as ``rbi show`` does: every part in place (holes
+    red and translucent), the centre of mass, the principal axes about it (lengths in
+    proportion to their moments, labelled with them) and the pivot, in the body frame with
+    lengths in the spec's unit. ``.png`` or ``.svg`` (needs matplotlib), or ``.html`` (a 3D
+    page that opens offline). The file is replaced atomically; ``title`` defaults to the
+    spec's name, else its path. Returns the number of parts drawn.
+
+    Raises:
+        SpecError: ``path`` cannot be written, or its extension is none of those."""
+    from rbi.viz.still import draw_body  # matplotlib and the page's template load only to draw
+
+    loaded = _loaded(body, "body")
+    return draw_body(loaded, _output(path, ("png", "svg", "html"), body.path), title)
+
+
+@dataclass(frozen=True)
+class Animation:
+    """What `animate` wrote: ``path``; ``frames``, the pictures in it (a page's keyframes, a
+    GIF's frames); ``max_tilt_deg``, the largest tilt of the spin axis from the upward
+    vertical over the run, degrees."""
+
+    path: str
+    frames: int
+    max_tilt_deg: float
+
+
+def animate(
+    body: Body,
+    path: str | os.PathLike[str],
+    *,
+    speed: float = 1.0,
+    fps: int = 25,
+    progress: Callable[[int, int], None] | None = None,
+    **run: Any,
+) -> Animation:
+    """Animate the body's motion, simulated as `simulate` does, at ``path`` as ``rbi animate``
+    does: ``.html``, a self-contained 3D page (parts as solids, pivot, ground, the path of the
+    tip of the spin axis) that plays in real time, or ``.gif`` (needs matplotlib and pillow).
+
+    Args:
+        body, path: the `Body`; the file to write (replaced atomically).
+        speed: playback speed the page starts at, 0.1 to 2 (1: real time).
+        fps: frames per second of a GIF, 1 to 60.
+        progress: called with (frames drawn, frames) as a GIF is drawn.
+        run: `simulate`'s settings: ``spin``, ``omega``, ``tilt_deg``, ``tilt_axis``,
+            ``gravity``, ``duration``, ``rtol``, ``max_steps``, ``check_budget``, ``spin_axis``.
+
+    Raises:
+        ValueError: a setting is out of range (named as this function's parameter), or the
+            motion needs more keyframes (or GIF frames) than a file may hold.
+        SpecError: ``path`` cannot be written; the run cannot be made."""
+    from rbi.runs.animation import write_animation  # the integrator loads only to simulate
+    from rbi.runs.run import prepare_run
+
+    target = _output(path, ("html", "gif"), body.path)
+    prepared = prepare_run(_loaded(body, "body"), **run)
+    frames, tilt = write_animation(prepared, target, speed=speed, fps=fps, progress=progress)
+    return Animation(os.fsdecode(os.fspath(path)), frames, tilt)
+
+
 def __getattr__(name: str) -> Any:
     # imported on first use: `rbi inertia` loads neither the audit's modules nor the sweep's
     if name == "AuditReport":
@@ -918,4 +1177,8 @@ def __getattr__(name: str) -> Any:
         from rbi.sweeps import plan
 
         return getattr(plan, name)
+    if name == "DEFAULT_MAX_STEPS":  # most integration steps of a run unless max_steps says otherwise
+        from rbi.sim.budget import DEFAULT_MAX_STEPS
+
+        return DEFAULT_MAX_STEPS
     raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")

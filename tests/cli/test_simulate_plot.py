@@ -9,7 +9,7 @@ import pytest
 pytest.importorskip("matplotlib")
 from scipy.spatial.transform import Rotation  # noqa: E402
 
-from rbi.cli.plot import rotate_by_quaternions  # noqa: E402
+from rbi.viz.plots import rotate_by_quaternions  # noqa: E402
 from tests.conftest import run_rbi_inprocess  # noqa: E402
 
 

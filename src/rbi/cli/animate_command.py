@@ -6,6 +6,7 @@ from typing import Annotated
 
 import typer
 
+from rbi.cli.extras import require_matplotlib
 from rbi.cli.options import SpecFile
 from rbi.cli.render import progress_bar, say_warnings
 from rbi.cli.run_options import (
@@ -20,7 +21,6 @@ from rbi.cli.run_options import (
     TiltOption,
     YesOption,
 )
-from rbi.spec.errors import InputError
 
 OutOption = Annotated[
     str,
@@ -66,75 +66,31 @@ def animate(
       rbi animate top_bolted.yaml --spin 200 --out top.html
       rbi animate top_bolted.yaml --spin 200 --duration 2 --out top.gif
     """
+    from rbi import api
     from rbi.cli.option_values import run_settings
     from rbi.cli.output import output_target
-    from rbi.runs.animation import animation
-    from rbi.runs.run import check_run_options, prepare_run
-    from rbi.spec.load import load_body
 
     settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
-    settings |= dict(duration=duration, rtol=rtol, max_steps=max_steps)
-    check_run_options("default", **settings)
-    _check_playback(speed, fps)
     target = output_target(out, "--out", ("html", "gif"), inputs=[file])
-    gif_frames = _gif_frames(duration, fps) if target.format == "gif" else 0
-    body = load_body(file)
+    if target.format == "gif":
+        require_matplotlib("--out")
+    body = api.load(file)
     say_warnings(body.warnings)
-    prepared = prepare_run(body, **settings)
-    data, run, tilts = animation(prepared, gif_frames)
-    if target.format == "html":
-        shown = _write_page(target, data, run, speed)
-    else:
-        shown = _write_gif(target, data, run, fps)
-    print(f"{out}: {shown} over {duration:g} s, largest tilt of the spin axis {float(tilts.max()):.3g}°")
-
-
-def _gif_frames(duration: float, fps: int) -> int:
-    """Frames of a GIF of ``duration`` s at ``fps``; refused past what a GIF may hold."""
-    from rbi.viz.frames import MAX_GIF_FRAMES
-    from rbi.viz.plots import require_matplotlib
-
-    require_matplotlib("--out")
-    frames = int(duration * fps) + 1
-    if frames > MAX_GIF_FRAMES:
-        raise InputError(
-            f"--duration: a GIF of {duration:g} s at {fps} frames per second would have "
-            f"{frames:.3g} frames, more than {MAX_GIF_FRAMES}: shorten --duration, lower --fps, "
-            "or write .html"
-        )
-    return frames
-
-
-def _check_playback(speed: float, fps: int) -> None:
-    if not (0.1 <= speed <= 2.0):
-        raise InputError(f"--speed: must be between 0.1 and 2 (got {speed!r})")
-    if not 1 <= fps <= 60:
-        raise InputError(f"--fps: must be between 1 and 60 (got {fps})")
-
-
-def _write_page(target, data: dict, run, speed: float) -> str:
-    """Write the 3D page at ``target``; what it holds (``N keyframes``)."""
-    from rbi.cli.output import write_output
-    from rbi.viz.page import html_page
-
-    write_output(target, html_page(data, speed=speed))
-    return f"{run.t.size} keyframes"
-
-
-def _write_gif(target, data: dict, run, fps: int) -> str:
-    """Write the GIF at ``target`` with a progress bar on a terminal; what it holds (``N frames``)."""
-    from rbi.cli.output import write_output
-    from rbi.viz.frames import frame_indices, write_gif
-
-    progress = progress_bar("gif", "frames")
+    progress = progress_bar("gif", "frames") if target.format == "gif" else None
     try:
-        write_output(
-            target,
-            writer=lambda path: write_gif(
-                data, path, fps=fps, progress=progress.update if progress else None
-            ),
+        made = api.animate(
+            body,
+            out,
+            speed=speed,
+            fps=fps,
+            progress=progress.update if progress else None,
+            duration=duration,
+            rtol=rtol,
+            max_steps=max_steps,
+            **settings,
         )
     finally:
         if progress is not None:
             progress.close()
-    return f"{frame_indices(run.t, fps).size} frames"
+    shown = f"{made.frames} {'keyframes' if target.format == 'html' else 'frames'}"
+    print(f"{out}: {shown} over {duration:g} s, largest tilt of the spin axis {made.max_tilt_deg:.3g}°")

@@ -115,7 +115,7 @@ def audit(
     """
     from rbi.api import audit as run_audit
 
-    target = _fix_target(file, fix, out)
+    _fix_target(file, fix, out)
     report = run_audit(
         file,
         package_paths=package_path,
@@ -125,37 +125,32 @@ def audit(
         mesh_inertia=mesh_inertia,
         joints=joints,
         fix=fix,
+        out=out,
         mesh_repair=mesh_repair,
     )
     code = report.exit_code
-    if target is not None:
-        from rbi.cli.output import write_output
-        from rbi.robot.fix import check_out_not_read
-
-        check_out_not_read(target.path, report.model)
-
-        write_output(target, report.fix.content)
+    if out is not None:
         code = 1 if report.fix.unfixable or report.model.unchecked else 0
     _render(report, format, file, out if fix else None, fix)
     if code:
         raise typer.Exit(code)
 
 
-def _fix_target(file: str, fix: bool, out: str | None):
-    """The checked --out target (same extension as the robot file), or None."""
+def _fix_target(file: str, fix: bool, out: str | None) -> None:
+    """Check --out before the audit runs: it needs --fix and the robot file's extension."""
     import os
 
+    from rbi.api import SpecError
     from rbi.cli.output import output_target
-    from rbi.errors import InputError
 
     if out is None:
-        return None
+        return
     if not fix:
-        raise InputError("--out: writes the fixed copy, so it needs --fix")
+        raise SpecError("--out: writes the fixed copy, so it needs --fix")
     extension = os.path.splitext(file)[1].lower().lstrip(".") or "xml"
     if extension == "xacro":
         extension = "urdf"  # a .xacro is never rewritten: the fixed copy is the expanded robot
-    return output_target(out, "--out", (extension,), inputs=[file])
+    output_target(out, "--out", (extension,), inputs=[file])
 
 
 def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool) -> None:
@@ -177,11 +172,11 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
 
 
 def _csv_row(each) -> dict:
-    from rbi.spec.yaml_writer import visible
+    from rbi.cli.render import terminal_safe
 
     declared, geo = each.declared, each.geometry
     return {
-        "link": visible(each.link.name or each.link.label),
+        "link": terminal_safe(each.link.name or each.link.label),
         "mass": declared.mass if declared else None,
         "geometry_volume": geo.volume if geo else None,
         "implied_density": geo.implied_density if geo else None,

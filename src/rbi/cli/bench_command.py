@@ -9,9 +9,9 @@ from typing import Annotated
 
 import typer
 
-from rbi.cli.extras import needs
+from rbi.api import SpecError
+from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import FormatOption, OutputFormat
-from rbi.spec.errors import InputError
 
 SECTION_NAMES = (
     "kernel",
@@ -81,21 +81,21 @@ def bench(
 
     sections = _sections(only)
     if plot and "workprecision" not in sections:
-        raise InputError("--plot: needs the workprecision section (drop --only or include it)")
+        raise SpecError("--plot: needs the workprecision section (drop --only or include it)")
     from rbi.cli.output import check_distinct, output_target, write_output
 
     plot_target = output_target(plot, "--plot", ("png", "svg", "pdf")) if plot is not None else None
     docs_target = output_target(write_docs, "--write-docs", ("md",)) if write_docs is not None else None
     check_distinct([plot_target, docs_target])
     if plot:
-        _check_matplotlib()
+        require_matplotlib()
     command = _command_line(quick, only, plot, write_docs)
     from rbi.bench.paths import bodies_folder
 
     try:
         bodies_folder()
     except FileNotFoundError as exc:
-        raise InputError(str(exc)) from None
+        raise SpecError(str(exc)) from None
 
     with _progress(format, suite.planned_steps(quick, sections)) as step:
         result = suite.run(quick, sections, step)
@@ -122,16 +122,10 @@ def _sections(only: str | None) -> list[str]:
     chosen = [s.strip().lower() for s in only.split(",") if s.strip()]
     unknown = [s for s in chosen if s not in SECTION_NAMES]
     if unknown or not chosen:
-        raise InputError(
+        raise SpecError(
             f"--only: expected a comma-separated list of {', '.join(SECTION_NAMES)} (got {only!r})"
         )
     return chosen
-
-
-def _check_matplotlib() -> None:
-    from rbi.viz.plots import require_matplotlib
-
-    require_matplotlib()
 
 
 def _command_line(quick: bool, only: str | None, plot: str | None, write_docs: str | None) -> str:

@@ -1,9 +1,35 @@
-"""How --help says that an option needs an optional package: one phrase, written only on the
-options (and forms of an option) that need it."""
+"""Optional packages: how --help says that an option needs one (one phrase, written only on
+the options that need it), and the refusal, before any work, when it is missing."""
 
 from __future__ import annotations
+
+import importlib.util
 
 
 def needs(package: str, extra: str) -> str:
     """``needs matplotlib: pip install '.[plot]' in rbi's source folder``."""
     return f"needs {package}: pip install '.[{extra}]' in rbi's source folder"
+
+
+def require_matplotlib(option: str = "--plot") -> None:
+    """Refuse ``option`` (the one that asked for a picture) with the install command when
+    matplotlib is missing."""
+    try:
+        import matplotlib  # noqa: F401  (the optional extra `plot`, loaded only when a picture is asked for)
+    except ImportError:
+        from rbi.api import SpecError  # numpy with it: `rbi show --help` loads neither
+
+        raise SpecError(
+            f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
+        ) from None
+
+
+def require(module: str, extra: str, option: str) -> None:
+    """Refuse ``option`` with the install command when the optional package ``module`` is missing."""
+    if importlib.util.find_spec(module) is None:
+        from rbi.api import SpecError  # numpy with it: `rbi sweep --help` loads neither
+
+        raise SpecError(
+            f"{option}: needs the optional package {module!r}: pip install '.[{extra}]' from rbi's "
+            f"source folder, or pip install {module}"
+        )

@@ -16,6 +16,7 @@ OPTION_NAMES = {
     "check_budget=False": "--yes",
     "axes": "--rotate",
     "package_paths": "--package-path",
+    "links": "--link",
     "vary[]": "--vary {}",
     "out": "--out FILE.csv",
 }

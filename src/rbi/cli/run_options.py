@@ -1,6 +1,6 @@
 """The options of the commands that run a simulation (``simulate``, ``animate``, ``sweep``),
 declared once. Kept apart from :mod:`rbi.cli.options` because their help quotes the step
-budget of :mod:`rbi.sim.budget`, which imports numpy (every command module that takes them
+budget (``rbi.api.DEFAULT_MAX_STEPS``), which imports numpy (every command module that takes them
 imports numpy anyway)."""
 
 from __future__ import annotations
@@ -9,7 +9,7 @@ from typing import Annotated
 
 import typer
 
-from rbi.sim.budget import DEFAULT_MAX_STEPS
+from rbi.api import DEFAULT_MAX_STEPS
 
 SpinOption = Annotated[
     float | None,

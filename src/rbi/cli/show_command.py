@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from rbi.cli.extras import needs
+from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import SpecFile
 
 OutOption = Annotated[
@@ -35,42 +35,14 @@ def show(
       rbi show bodies/wheel_with_holes.yaml --out wheel.svg
       rbi show bodies/cubesat.yaml --out cubesat.html
     """
-    from rbi.cli.output import output_target, write_output
+    from rbi import api
+    from rbi.cli.output import output_target
+    from rbi.cli.render import say_warnings
 
     target = output_target(out, "--out", ("png", "svg", "html"), inputs=[file])
     if target.format != "html":
-        from rbi.cli.plot import require_matplotlib
-
         require_matplotlib("--out")
-    from rbi.spec.geometry import part_geometry
-    from rbi.spec.load import load_body
-    from rbi.viz.still import part_count, view_data
-
-    body = load_body(file)
-    from rbi.cli.render import say_warnings
-
+    body = api.load(file)
     say_warnings(body.warnings)
-    data = view_data(
-        body.name or file,
-        part_geometry(body),
-        body.props.center_of_mass,
-        body.props.inertia_about_com,
-        body.pivot,
-        body.length_unit,
-        body.labels["inertia"],
-    )
-    if target.format == "html":
-        from rbi.viz.page import html_page
-
-        data["legend"] = (
-            f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
-            "axes · "
-            + " · ".join(a["label"] for a in data["principal_axes"])
-            + f" · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}"
-        )
-        write_output(target, html_page(data))
-    else:
-        from rbi.viz.still import draw_still
-
-        write_output(target, writer=lambda path: draw_still(data, path, format=target.format))
-    print(f"{out}: {part_count(data['parts'])} parts drawn")
+    count = api.show(body, out, title=body.name or file)
+    print(f"{out}: {count} parts drawn")

@@ -8,7 +8,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from rbi.cli.extras import needs
+from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, number, progress_bar, refuse_non_finite
 from rbi.cli.run_options import (
@@ -138,8 +138,6 @@ def _targets(file: str, out: str | None, plot: str | None):
     plot_target = None if plot is None else output_target(plot, "--plot", PLOT_FORMATS, inputs=[file])
     check_distinct([out_target, plot_target])
     if plot is not None:
-        from rbi.viz.plots import require_matplotlib
-
         require_matplotlib()
     return out_target, plot_target
 
@@ -162,34 +160,12 @@ def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: 
 def _plot(target, body, run, settings: dict) -> None:
     """Draw the run (resampled densely when the method's dense output allows it) at ``target``."""
     from rbi import api
-    from rbi.cli.output import write_output
-    from rbi.viz.labels import label
-    from rbi.viz.plots import plot_trajectory
 
-    shown = run.columns()
+    shown = run
     if settings["method"] in ("default", "exact") and run.t.size < PLOT_SAMPLES and settings["duration"] > 0:
         # the same run sampled more densely (dense output: the steps do not change)
-        shown = api.simulate(body, samples=PLOT_SAMPLES, error_estimate=False, **settings).columns()
-    omega0 = run.summary["initial"]["omega"]
-    title = (
-        f"{label(body.name or body.path)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, "
-        f"nudge {number(settings['tilt_deg'])}°"
-    )
-    free = {}
-    if body.pivot is None:  # a free body: each principal axis's turn against the angular momentum
-        free = {"principal_axes": body.principal().axes, "inertia": body.inertia()}
-    write_output(
-        target,
-        writer=lambda path: plot_trajectory(
-            shown,
-            path,
-            title=title,
-            format=target.format,
-            energy_unit=body.unit_labels["energy"],
-            spin_axis=run.summary["spin_axis"],
-            **free,
-        ),
-    )
+        shown = api.simulate(body, samples=PLOT_SAMPLES, error_estimate=False, **settings)
+    shown.plot(target.given)
 
 
 def _table(body, result: dict):

@@ -8,11 +8,11 @@ from typing import Annotated
 
 import typer
 
-from rbi.cli.extras import needs
+from rbi.api import DEFAULT_MAX_STEPS
+from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import ProgressBar, emit, number, to_csv
 from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
-from rbi.sim.budget import DEFAULT_MAX_STEPS
 from rbi.spec.errors import InputError
 from rbi.sweeps.study import MAX_ROWS_SHOWN
 
@@ -225,8 +225,6 @@ def _targets(file: str, out: str | None, plot: str | None):
     if out_target is not None and out_target.format == "parquet":
         require("pyarrow", "parquet", "--out FILE.parquet")
     if plot is not None:
-        from rbi.viz.plots import require_matplotlib
-
         require_matplotlib()
     return out_target, plot_target
 

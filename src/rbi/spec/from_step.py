@@ -28,6 +28,21 @@ class StepImport:
     unit: str
     density: float
     placeholder: bool
+    path: str = ""
+
+    def yaml(self) -> str:
+        """The spec as YAML text under a comment header: what ``rbi import FILE.step`` prints."""
+        from rbi.spec.yaml_writer import comment, dump
+
+        lines = [
+            f"rbi import of {os.path.basename(self.path)}: one part per solid, integrated on the exact STEP geometry;",
+            "SI units (the file's own length unit is honoured), the file's origin and axes.",
+        ]
+        if self.placeholder:
+            lines.append(
+                f"density: {self.density:g} kg/m³ is a placeholder: give yours (--density D or --material NAME)."
+            )
+        return comment(*lines) + dump(self.spec)
 
 
 def import_step(
@@ -70,4 +85,5 @@ def import_step(
     ]
     spec = {"name": Path(file).stem, "units": {"length": "m", "mass": "kg"}, "parts": parts}
     kg_per_m3 = density_in_units(material, "m", "kg") if material is not None else float(fill)
-    return StepImport(spec, step.solids, step.unit, kg_per_m3, density is None and material is None)
+    placeholder = density is None and material is None
+    return StepImport(spec, step.solids, step.unit, kg_per_m3, placeholder, os.fspath(path))

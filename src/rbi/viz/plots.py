@@ -9,19 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from rbi.spec.errors import InputError
 from rbi.viz.labels import MAX_LABEL_CHARS, label, plain
-
-
-def require_matplotlib(option: str = "--plot") -> None:
-    """InputError naming ``option`` (the one that asked for a picture) with the install command
-    when matplotlib is missing."""
-    try:
-        import matplotlib  # noqa: F401
-    except ImportError:
-        raise InputError(
-            f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
-        ) from None
 
 
 def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
@@ -51,7 +39,6 @@ def plot_trajectory(
     axes) are given (a free body), the angle between each principal axis and the angular
     momentum (fixed in space), where a flip of the intermediate axis shows as a swing from
     0° to 180°; the body-frame ω components; and the drift of the total energy."""
-    require_matplotlib()
     import matplotlib  # optional extra `plot`, loaded only to draw
 
     matplotlib.use("Agg")
@@ -72,6 +59,22 @@ def plot_trajectory(
     fig.tight_layout()
     fig.savefig(path, format=format, dpi=110)
     plt.close(fig)
+
+
+def plot_simulation(
+    columns: dict[str, np.ndarray], target, *, name: str, omega0, nudge_deg: float, **drawn
+) -> None:
+    """:func:`plot_trajectory` written at the checked output ``target``, titled with the body's
+    ``name``, the initial spin ``|omega0|`` (rad/s) and the nudge (degrees); ``drawn``: its
+    keywords (``spin_axis``, ``energy_unit``, a free body's ``principal_axes`` and ``inertia``)."""
+    from rbi.files.output import write_output
+    from rbi.text import number
+
+    title = f"{label(name)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, nudge {number(nudge_deg)}°"
+    write_output(
+        target,
+        writer=lambda path: plot_trajectory(columns, path, title=title, format=target.format, **drawn),
+    )
 
 
 def _angle_panel(angle_ax, t: np.ndarray, q: np.ndarray, columns: dict, principal_axes, inertia) -> None:
@@ -168,7 +171,6 @@ def plot_stability_map(
     """The largest tilt of each run (log colour scale) over one or two swept axes, saved at
     ``path``. With one axis: tilt against it. ``threshold``: the sleeping-top spin (rad/s),
     drawn as a vertical line on a spin axis."""
-    require_matplotlib()
     import matplotlib  # optional extra `plot`, loaded only to draw
 
     matplotlib.use("Agg")

@@ -123,6 +123,39 @@ def part_count(parts: list[dict[str, Any]]) -> int:
     return len({item.get("part", index) for index, item in enumerate(parts)})
 
 
+def draw_body(body: Any, target: Any, title: str | None = None) -> int:
+    """Draw a loaded body (:class:`~rbi.spec.load.LoadedBody`, spec units, body frame) at the
+    checked output ``target`` (:func:`rbi.files.output.output_target`): a 3D page for
+    ``.html``, else a still (:func:`draw_still`); ``title`` defaults to the spec's name, else
+    its path. Returns the number of parts drawn."""
+    from rbi.files.output import write_output
+    from rbi.spec.geometry import part_geometry
+
+    props = body.props
+    data = view_data(
+        title or body.name or body.path,
+        part_geometry(body),
+        props.center_of_mass,
+        props.inertia_about_com,
+        body.pivot,
+        body.length_unit,
+        body.labels["inertia"],
+    )
+    if target.format == "html":
+        from rbi.viz.page import html_page
+
+        data["legend"] = (
+            f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
+            "axes · "
+            + " · ".join(a["label"] for a in data["principal_axes"])
+            + f" · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}"
+        )
+        write_output(target, html_page(data))
+    else:
+        write_output(target, writer=lambda path: draw_still(data, path, format=target.format))
+    return part_count(data["parts"])
+
+
 def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     """The body in 3D (matplotlib), saved at ``path`` as ``format`` (png or svg)."""
     import matplotlib  # optional extra `plot`, loaded only to draw
