@@ -903,7 +903,6 @@ def audit(
     settings |= dict(mesh_inertia=mesh_inertia, joints=joints, fix=fix, mesh_repair=mesh_repair)
     report = run_audit(robot_file, allow_outside_paths=allowed, **settings)
     if target is not None:
-        from rbi.files.output import write_output
         from rbi.robot.fix import check_out_not_read
 
         check_out_not_read(target.path, report.model)  # an include, a mesh or the robot file itself
@@ -1101,8 +1100,6 @@ def _chosen_links(robot: Any, names: list[str]) -> list[Any]:
 def _output(path: str | os.PathLike[str], formats: tuple[str, ...], read: str | os.PathLike[str]) -> Any:
     """``path`` checked as an output of one of ``formats`` (its extension) by rbi's one checked
     writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file)."""
-    from rbi.files.output import output_target
-
     return output_target(os.fsdecode(os.fspath(path)), "path", formats, inputs=[os.fsdecode(os.fspath(read))])
 
 

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 import importlib.util
 
+from rbi import SpecError
+
 
 def needs(package: str, extra: str) -> str:
     """``needs matplotlib: pip install '.[plot]' in rbi's source folder``."""
@@ -17,8 +19,6 @@ def require_matplotlib(option: str = "--plot") -> None:
     try:
         import matplotlib  # noqa: F401  (the optional extra `plot`, loaded only when a picture is asked for)
     except ImportError:
-        from rbi.api import SpecError  # numpy with it: `rbi show --help` loads neither
-
         raise SpecError(
             f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
         ) from None
@@ -27,8 +27,6 @@ def require_matplotlib(option: str = "--plot") -> None:
 def require(module: str, extra: str, option: str) -> None:
     """Refuse ``option`` with the install command when the optional package ``module`` is missing."""
     if importlib.util.find_spec(module) is None:
-        from rbi.api import SpecError  # numpy with it: `rbi sweep --help` loads neither
-
         raise SpecError(
             f"{option}: needs the optional package {module!r}: pip install '.[{extra}]' from rbi's "
             f"source folder, or pip install {module}"
