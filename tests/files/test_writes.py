@@ -33,7 +33,7 @@ def test_sigterm_during_the_write_leaves_no_temporary_file(tmp_path):
     script = textwrap.dedent(f"""
         import sys, time
         from rbi.cli import app
-        from rbi.cli.output import output_target, open_output
+        from rbi.files.output import open_output, output_target
 
         def slow_command():
             target = output_target({str(target)!r}, "--out", ("csv",))
