@@ -24,9 +24,9 @@ def central_box_inertia(a, b, c):
 def test_box_mesh_is_exact_to_rounding():
     size, center = (0.3, 1.7, 2.9), (4.0, -5.0, 0.25)
     props = enclosed_volume_properties(*box_mesh(size, center))
-    assert props.volume == pytest.approx(0.3 * 1.7 * 2.9, rel=1e-15)
-    np.testing.assert_allclose(props.centroid, center, rtol=0, atol=1e-15 * 5)
-    np.testing.assert_allclose(props.inertia_per_density, central_box_inertia(*size), rtol=1e-14, atol=1e-15)
+    assert props.mass == pytest.approx(0.3 * 1.7 * 2.9, rel=1e-15)
+    np.testing.assert_allclose(props.center_of_mass, center, rtol=0, atol=1e-15 * 5)
+    np.testing.assert_allclose(props.inertia_about_com, central_box_inertia(*size), rtol=1e-14, atol=1e-15)
 
 
 def simplex_moments(corners):
@@ -51,12 +51,12 @@ def simplex_moments(corners):
 def test_unit_right_tetrahedron_textbook_values():
     # volume 1/6, centroid (1/4, 1/4, 1/4), ∫x² dV = 1/60, ∫xy dV = 1/120
     props = enclosed_volume_properties(*tetrahedron_mesh([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]))
-    assert props.volume == pytest.approx(1 / 6, rel=1e-15)
-    np.testing.assert_allclose(props.centroid, [0.25] * 3, rtol=1e-15)
+    assert props.mass == pytest.approx(1 / 6, rel=1e-15)
+    np.testing.assert_allclose(props.center_of_mass, [0.25] * 3, rtol=1e-15)
     second_about_origin = (1 / 120) * (np.ones((3, 3)) + np.eye(3))
     second_central = second_about_origin - (1 / 6) * np.full((3, 3), 1 / 16)
     expected = np.trace(second_central) * np.eye(3) - second_central
-    np.testing.assert_allclose(props.inertia_per_density, expected, rtol=1e-13, atol=1e-17)
+    np.testing.assert_allclose(props.inertia_about_com, expected, rtol=1e-13, atol=1e-17)
 
 
 @settings(max_examples=60, deadline=None)
@@ -71,10 +71,10 @@ def test_any_tetrahedron_matches_the_dirichlet_integrals(coordinates):
     central = second - volume * np.outer(centroid, centroid)
     expected = np.trace(central) * np.eye(3) - central
     props = enclosed_volume_properties(*tetrahedron_mesh(corners))
-    assert props.volume == pytest.approx(volume, rel=1e-12)
-    np.testing.assert_allclose(props.centroid, centroid, rtol=0, atol=1e-12 * max(scale, 1.0) * 10)
+    assert props.mass == pytest.approx(volume, rel=1e-12)
+    np.testing.assert_allclose(props.center_of_mass, centroid, rtol=0, atol=1e-12 * max(scale, 1.0) * 10)
     np.testing.assert_allclose(
-        props.inertia_per_density, expected, rtol=0, atol=1e-9 * float(np.max(np.abs(expected))) + 1e-300
+        props.inertia_about_com, expected, rtol=0, atol=1e-9 * float(np.max(np.abs(expected))) + 1e-300
     )
 
 
@@ -84,11 +84,11 @@ def test_polygon_prism_is_exact_and_converges_to_the_cylinder_at_second_order():
     for n in (32, 64, 128, 256):
         props = enclosed_volume_properties(*cylinder_mesh(r, L, n))
         polygon_area = 0.5 * n * r * r * math.sin(2 * math.pi / n)
-        assert props.volume == pytest.approx(polygon_area * L, rel=1e-13)  # the prism, exactly
+        assert props.mass == pytest.approx(polygon_area * L, rel=1e-13)  # the prism, exactly
         cylinder_volume = math.pi * r * r * L
-        axial = props.inertia_per_density[2, 2] / props.volume
-        errors.append((abs(props.volume / cylinder_volume - 1), abs(axial / (0.5 * r * r) - 1)))
-        np.testing.assert_allclose(props.centroid, [0, 0, L / 2], atol=1e-14)
+        axial = props.inertia_about_com[2, 2] / props.mass
+        errors.append((abs(props.mass / cylinder_volume - 1), abs(axial / (0.5 * r * r) - 1)))
+        np.testing.assert_allclose(props.center_of_mass, [0, 0, L / 2], atol=1e-14)
     errors = np.array(errors)
     ratios = errors[:-1] / errors[1:]
     assert np.all((ratios > 3.9) & (ratios < 4.1)), ratios  # halving the facet size quarters the error
@@ -100,11 +100,11 @@ def test_latitude_longitude_sphere_converges_to_two_fifths_m_r_squared():
     errors = []
     for n in (16, 32, 64, 128):
         props = enclosed_volume_properties(*sphere_mesh(r, n, 2 * n))
-        moments = np.diag(props.inertia_per_density) / props.volume
+        moments = np.diag(props.inertia_about_com) / props.mass
         errors.append(
-            max(abs(props.volume / (4 / 3 * math.pi * r**3) - 1), np.max(np.abs(moments / (0.4 * r * r) - 1)))
+            max(abs(props.mass / (4 / 3 * math.pi * r**3) - 1), np.max(np.abs(moments / (0.4 * r * r) - 1)))
         )
-        np.testing.assert_allclose(props.centroid, 0, atol=1e-14)
+        np.testing.assert_allclose(props.center_of_mass, 0, atol=1e-14)
     ratios = np.array(errors[:-1]) / np.array(errors[1:])
     assert np.all((ratios > 3.5) & (ratios < 4.5)), ratios
     assert errors[-1] < 1e-3
@@ -117,12 +117,12 @@ def test_a_mesh_a_million_lengths_away_keeps_its_central_inertia():
     near = enclosed_volume_properties(vertices, faces)
     far = enclosed_volume_properties(vertices + offset, faces)
     expected = central_box_inertia(*size)
-    np.testing.assert_allclose(far.inertia_per_density, expected, rtol=1e-9, atol=1e-9 * expected.max())
-    assert far.volume == pytest.approx(near.volume, rel=1e-9)
-    np.testing.assert_allclose(far.centroid - offset, 0, atol=1e-9)
+    np.testing.assert_allclose(far.inertia_about_com, expected, rtol=1e-9, atol=1e-9 * expected.max())
+    assert far.mass == pytest.approx(near.mass, rel=1e-9)
+    np.testing.assert_allclose(far.center_of_mass - offset, 0, atol=1e-9)
     sphere_v, sphere_f = sphere_mesh(0.2, 24, 48)
-    sphere_near = enclosed_volume_properties(sphere_v, sphere_f).inertia_per_density
-    sphere_far = enclosed_volume_properties(sphere_v + offset, sphere_f).inertia_per_density
+    sphere_near = enclosed_volume_properties(sphere_v, sphere_f).inertia_about_com
+    sphere_far = enclosed_volume_properties(sphere_v + offset, sphere_f).inertia_about_com
     np.testing.assert_allclose(sphere_far, sphere_near, rtol=0, atol=1e-9 * sphere_near.max())
 
 
@@ -142,7 +142,7 @@ def test_welding_joins_stl_corners_with_cad_rounding_noise():
     vertices, faces = weld_vertices(soup_v, soup_f)
     assert len(vertices) == 8
     assert mesh_problem(vertices, faces) is None
-    assert enclosed_volume_properties(vertices, faces).volume == pytest.approx(8.0, rel=1e-15)
+    assert enclosed_volume_properties(vertices, faces).mass == pytest.approx(8.0, rel=1e-15)
 
 
 def test_welding_keeps_distinct_vertices_apart():
@@ -177,7 +177,7 @@ def test_a_flipped_face_is_inconsistent_winding():
 def test_an_inside_out_mesh_has_negative_volume():
     vertices, faces = box_mesh((1, 2, 3))
     inverted = faces[:, ::-1]
-    assert enclosed_volume_properties(vertices, inverted).volume == pytest.approx(-6.0)
+    assert enclosed_volume_properties(vertices, inverted).mass == pytest.approx(-6.0)
     assert mesh_problem(vertices, inverted).startswith("inside out: the enclosed volume is negative (-6)")
 
 
@@ -198,7 +198,7 @@ def test_an_edge_shared_by_four_triangles_half_each_way_joins_two_solids():
     defects = mesh_defects(faces)
     assert defects.overshared_edges == 0 and defects.boundary_edges == 0 and defects.shared_edges == 1
     assert mesh_problem(vertices, faces) is None
-    assert enclosed_volume_properties(vertices, faces).volume == pytest.approx(2 / 6, rel=1e-15)
+    assert enclosed_volume_properties(vertices, faces).mass == pytest.approx(2 / 6, rel=1e-15)
 
 
 def test_empty_and_broken_arrays_are_named():
@@ -217,4 +217,4 @@ def test_degenerate_faces_are_counted_and_add_nothing():
     with_sliver = np.vstack([faces, [[0, 0, 1]]])
     assert mesh_defects(with_sliver).degenerate_faces == 1
     assert mesh_problem(vertices, with_sliver) is None
-    assert enclosed_volume_properties(vertices, with_sliver).volume == pytest.approx(6.0, rel=1e-15)
+    assert enclosed_volume_properties(vertices, with_sliver).mass == pytest.approx(6.0, rel=1e-15)

@@ -52,8 +52,8 @@ def test_cube_every_primitive(primitive):
     vertices, faces = parse_collada(cube_dae(primitive=primitive).encode())
     assert faces.shape == (12, 3)
     found = mesh_distribution(vertices, faces, "exact")
-    assert found.measure == pytest.approx(1.0, rel=1e-15)
-    np.testing.assert_allclose(found.centroid, [0.5, 0.5, 0.5], rtol=1e-15)
+    assert found.unit.mass == pytest.approx(1.0, rel=1e-15)
+    np.testing.assert_allclose(found.unit.center_of_mass, [0.5, 0.5, 0.5], rtol=1e-15)
 
 
 def test_unit_applied_up_axis_ignored_and_node_transforms_composed():
@@ -62,12 +62,14 @@ def test_unit_applied_up_axis_ignored_and_node_transforms_composed():
         vertices, faces = parse_collada(cube_dae("0.001", up, transform).encode())
         found = mesh_distribution(vertices, faces, "exact")
         # a 2 x 3 x 4 box (mm), turned 90 deg about z, moved 10 mm along x
-        assert found.measure == pytest.approx(24e-9, rel=1e-14)
-        np.testing.assert_allclose(found.centroid, [0.010 - 0.0015, 0.001, 0.002], rtol=1e-14, atol=1e-18)
+        assert found.unit.mass == pytest.approx(24e-9, rel=1e-14)
+        np.testing.assert_allclose(
+            found.unit.center_of_mass, [0.010 - 0.0015, 0.001, 0.002], rtol=1e-14, atol=1e-18
+        )
         # turned 90 deg about z: the 3 mm edge lies along x
         a, b, c = 0.003, 0.002, 0.004
         np.testing.assert_allclose(
-            np.diag(found.inertia_per_density),
+            np.diag(found.unit.inertia_about_com),
             24e-9 / 12 * np.array([b * b + c * c, a * a + c * c, a * a + b * b]),
             rtol=1e-12,
         )
@@ -83,7 +85,9 @@ def test_double_precision_is_kept():
 def test_matrix_node_and_instance_node():
     text = cube_dae(transform="<matrix>1 0 0 5  0 1 0 6  0 0 1 7  0 0 0 1</matrix>")
     vertices, faces = parse_collada(text.encode())
-    np.testing.assert_allclose(mesh_distribution(vertices, faces, "exact").centroid, [5.5, 6.5, 7.5])
+    np.testing.assert_allclose(
+        mesh_distribution(vertices, faces, "exact").unit.center_of_mass, [5.5, 6.5, 7.5]
+    )
 
 
 @pytest.mark.parametrize(

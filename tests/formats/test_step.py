@@ -94,7 +94,7 @@ def test_triangles_for_the_picture_enclose_the_volume(tmp_path):
     path = write_step(tmp_path / "ball.step", sphere(10.0).shape, "mm")
     vertices, faces = step_triangles(path, [0], 0.001)
     assert len(faces) > 100
-    volume = mesh_distribution(*weld_vertices(vertices, faces), "exact").measure
+    volume = mesh_distribution(*weld_vertices(vertices, faces), "exact").unit.mass
     assert volume == pytest.approx(4 / 3 * np.pi * 0.01**3, rel=2e-2)
 
 

@@ -73,37 +73,15 @@ class MeshDefects(NamedTuple):
     shared_edges: int = 0
 
 
-class MeshVolumeProperties(NamedTuple):
-    """Per unit density: volume (L³), centroid (L, mesh frame), and the second-moment inertia
-    ``∫ (|r|² E − r rᵀ) dV`` about the centroid (L⁵, mesh axes). Multiply the inertia by a
-    density (or by mass / volume) to get M·L²."""
-
-    volume: float
-    centroid: np.ndarray
-    inertia_per_density: np.ndarray
-
-
-class MeshSurfaceProperties(NamedTuple):
-    """Per unit area density: area (L²), centroid of the surface (L, mesh frame), and
-    ``∫ (|r|² E − r rᵀ) dA`` about that centroid (L⁴, mesh axes)."""
-
-    area: float
-    centroid: np.ndarray
-    inertia_per_density: np.ndarray
-
-
 class MeshDistribution(NamedTuple):
-    """Where a mode puts the mass, per unit density: ``measure`` is the volume (L³; modes
-    ``exact`` and ``convex``) or the area (L²; ``shell``) that carries it, ``centroid`` its
-    centre (L, mesh frame), ``inertia_per_density`` its inertia about the centroid per unit
-    density (L⁵ or L⁴, mesh axes). ``vertices`` and ``faces`` are the mesh integrated (the
-    hull's, for ``convex``). ``notes``: what the numbers deserve a word on (overlapping
-    pieces)."""
+    """Where a mode puts the mass: ``unit`` the mass properties at density 1 (frame ``"mesh"``:
+    the mass is the volume, L³, in modes ``exact`` and ``convex``, or the area, L², in
+    ``shell``; the centre of mass is its centroid, L; the inertia about it is per unit density,
+    L⁵ or L⁴, mesh axes). ``vertices`` and ``faces`` are the mesh integrated (the hull's, for
+    ``convex``). ``notes``: what the numbers deserve a word on (overlapping pieces)."""
 
     mode: str
-    measure: float
-    centroid: np.ndarray
-    inertia_per_density: np.ndarray
+    unit: MassProperties
     vertices: np.ndarray
     faces: np.ndarray
     notes: tuple[str, ...] = ()
@@ -339,19 +317,12 @@ def _integrate(
     return measure, centroid, np.trace(second) * np.eye(3) - second
 
 
-def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MeshVolumeProperties:
-    """Volume, centroid and inertia per unit density of the solid a closed mesh encloses. A
-    mesh wound inside out gives a negative volume (and is reported by the caller, not fixed
-    here)."""
+def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MassProperties:
+    """The solid a closed mesh encloses at density 1: its mass is the volume (L³), its centre of
+    mass the centroid (L), its inertia per unit density (L⁵), frame ``"mesh"``. A mesh wound
+    inside out gives a negative volume (and is reported by the caller, not fixed here)."""
     vertices, faces = _as_arrays(vertices, faces)
-    return MeshVolumeProperties(*_integrate(vertices, faces, _volume_moments))
-
-
-def surface_properties(vertices: np.ndarray, faces: np.ndarray) -> MeshSurfaceProperties:
-    """Area, centroid and inertia per unit area density of the surface the triangles make
-    (each triangle counted once, whatever its winding; open or closed)."""
-    vertices, faces = _as_arrays(vertices, faces)
-    return MeshSurfaceProperties(*_integrate(vertices, faces, _surface_moments))
+    return MassProperties(*_integrate(vertices, faces, _volume_moments), "mesh")
 
 
 def surface_area(vertices: np.ndarray, faces: np.ndarray) -> float:
@@ -635,7 +606,7 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
         area, centroid, inertia = _integrate(vertices, faces, _surface_moments)
         if not area > 0:
             raise MeshError("has no area (every triangle is degenerate)")
-        return MeshDistribution(mode, area, centroid, inertia, vertices, faces)
+        return MeshDistribution(mode, MassProperties(area, centroid, inertia, "mesh"), vertices, faces)
     problem, notes = closed_mesh_check(vertices, faces)
     if problem is not None:
         if mode == "exact" and problem.startswith(("not closed", "not a closed surface")):
@@ -645,8 +616,8 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
         elif mode == "exact" and problem.startswith("encloses no volume"):
             problem += "; for a flat part choose inertia: shell (the mass spread over the surface)"
         raise MeshError(problem)
-    volume, centroid, inertia = _integrate(vertices, faces, _volume_moments)
-    return MeshDistribution(mode, volume, centroid, inertia, vertices, faces, notes)
+    unit = MassProperties(*_integrate(vertices, faces, _volume_moments), "mesh")
+    return MeshDistribution(mode, unit, vertices, faces, notes)
 
 
 def mesh_mass_properties(
@@ -666,17 +637,16 @@ def mesh_mass_properties(
     if (mass is None) == (density is None):
         raise MeshError("give either a mass or a density")
     distribution = mesh_distribution(vertices, faces, mode)
+    unit = distribution.unit
     if density is not None:
-        mass = float(density) * distribution.measure
+        mass = float(density) * unit.mass
     mass = float(mass)  # type: ignore[arg-type]  # one of the two is given (checked above)
-    inertia = distribution.inertia_per_density * (mass / distribution.measure)
-    area = (
-        distribution.measure if mode == "shell" else surface_area(distribution.vertices, distribution.faces)
-    )
+    inertia = unit.inertia_about_com * (mass / unit.mass)
+    area = unit.mass if mode == "shell" else surface_area(distribution.vertices, distribution.faces)
     return MeshMass(
         mode,
-        MassProperties(mass, distribution.centroid, 0.5 * (inertia + inertia.T), "mesh"),
-        None if mode == "shell" else distribution.measure,
+        MassProperties(mass, unit.center_of_mass, 0.5 * (inertia + inertia.T), "mesh"),
+        None if mode == "shell" else unit.mass,
         area,
         distribution.notes,
     )

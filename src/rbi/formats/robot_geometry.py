@@ -10,7 +10,7 @@ geom's density under ``shellinertia``.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
 
@@ -18,6 +18,9 @@ from rbi.core import shapes
 from rbi.core.mass import MassProperties
 from rbi.errors import InputError
 from rbi.formats.robot import Geom
+
+if TYPE_CHECKING:
+    from rbi.core.mesh import MeshDistribution
 
 MESH_INERTIA_MODES = ("auto", "exact", "convex", "shell")
 """The audit's ``--mesh-inertia`` choices; an MJCF mesh asset may also say ``legacy``."""
@@ -239,16 +242,17 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
         refusal = _NotIntegrable(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}")
         refusal.reason = str(exc).split("; for such a mesh")[0].split("; audit it with")[0]
         raise refusal from None
-    if not (np.isfinite(found.measure) and np.all(np.isfinite(found.inertia_per_density))):
+    unit = found.unit
+    if not (np.isfinite(unit.mass) and np.all(np.isfinite(unit.inertia_about_com))):
         raise InputError(
             f"{where}{geom.label}: {path.name}: scale {scale.tolist()}: too large to compute with "
             "(the mesh's volume or inertia overflows a double)"
         )
     used = found.vertices[np.unique(found.faces)]
     result = (
-        float(found.measure),
-        np.asarray(found.centroid, float),
-        np.asarray(found.inertia_per_density, float),
+        unit.mass,
+        np.asarray(unit.center_of_mass, float),
+        np.asarray(unit.inertia_about_com, float),
         used.min(axis=0),
         used.max(axis=0),
         added,
@@ -257,15 +261,7 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
     return result
 
 
-class _Legacy(NamedTuple):
-    measure: float
-    centroid: np.ndarray
-    inertia_per_density: np.ndarray
-    vertices: np.ndarray
-    faces: np.ndarray
-
-
-def legacy_distribution(vertices: np.ndarray, faces: np.ndarray) -> _Legacy:
+def legacy_distribution(vertices: np.ndarray, faces: np.ndarray) -> MeshDistribution:
     """MuJoCo's ``legacy`` mesh inertia (its default for a mesh asset), as its compiler computes
     it (``mjCMesh::ComputeVolume``/``ComputeInertia``): each triangle with the area-weighted
     centroid of the faces as apex is a pyramid whose volume counts positive whatever the
@@ -296,7 +292,10 @@ def legacy_distribution(vertices: np.ndarray, faces: np.ndarray) -> _Legacy:
             terms += E[:, a] * F[:, b] + E[:, b] * F[:, a]
             second[a, b] = float((volume * terms).sum() / 20)
     inertia = np.trace(second) * np.eye(3) - second
-    return _Legacy(float(volume.sum()), com, 0.5 * (inertia + inertia.T), V, np.asarray(faces))
+    from rbi.core.mesh import MeshDistribution
+
+    unit = MassProperties(float(volume.sum()), com, 0.5 * (inertia + inertia.T), "mesh")
+    return MeshDistribution("legacy", unit, V, np.asarray(faces))
 
 
 CLOSED_HINT = (

@@ -2,8 +2,9 @@
 
 Public names (other modules and ``rbi bench`` code against these):
 
-- :class:`Scene`: mass, inertia about the fixed point (the pivot of a top, the centre of mass
-  of a free body) in body axes, ``com_from_pivot``, gravity, ``pivoted``.
+- :class:`Scene`: the body's :class:`rbi.core.mass.MassProperties`, gravity and pivot; from
+  them the inertia about the fixed point (the pivot of a top, the centre of mass of a free
+  body) in body axes, ``com_from_pivot``, ``pivoted``.
 - :func:`scene_from_properties`: a :class:`Scene` from :class:`rbi.core.mass.MassProperties`.
 - :func:`initial_state`: the contract's initial orientation and angular velocity.
 
@@ -17,7 +18,7 @@ ends in ``_deg``. Gravity acts along world −z.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from functools import cached_property
 
 import numpy as np
@@ -33,22 +34,43 @@ SINGULAR_RTOL = 1e-12
 class Scene:
     """A heavy top on a fixed frictionless pivot, or a torque-free body.
 
-    mass: M. inertia: (3, 3) about the pivot (``pivoted``) or about the centre of mass (free),
-    body axes, M·L². com_from_pivot: (3,) centre of mass relative to the pivot, body frame, L
-    (zeros for a free body). gravity: magnitude in L/s² (0 for a free body), acting along
-    world −z. pivot: the pivot in body coordinates (None for a free body); com: the centre of
-    mass in body coordinates. spin_axis: (3,) unit vector, body frame: the axis the spin is
-    given about and whose tilt and precession are reported (body z unless set).
+    properties: the body's mass properties (body frame, units L and M). gravity: magnitude in
+    L/s² (0 for a free body), acting along world −z. pivot: the pivot in body coordinates (None
+    for a free body). spin_axis: (3,) unit vector, body frame: the axis the spin is given about
+    and whose tilt and precession are reported (body z unless set). From them: ``mass`` (M),
+    ``com`` (the centre of mass, body coordinates), ``pivoted``, ``inertia`` ((3, 3) about the
+    pivot, or about the centre of mass of a free body, body axes, M·L²) and ``com_from_pivot``
+    ((3,) centre of mass relative to the pivot, body frame, L; zeros for a free body).
     """
 
-    mass: float
-    inertia: np.ndarray
-    com_from_pivot: np.ndarray
+    properties: MassProperties
     gravity: float
-    pivoted: bool
     pivot: np.ndarray | None = None
-    com: np.ndarray = field(default_factory=lambda: np.zeros(3))
     spin_axis: np.ndarray = field(default_factory=lambda: np.array([0.0, 0.0, 1.0]))
+
+    @property
+    def mass(self) -> float:
+        return self.properties.mass
+
+    @property
+    def com(self) -> np.ndarray:
+        return self.properties.center_of_mass
+
+    @property
+    def pivoted(self) -> bool:
+        return self.pivot is not None
+
+    @cached_property
+    def inertia(self) -> np.ndarray:
+        if self.pivot is None:
+            return np.array(self.properties.inertia_about_com, dtype=float)
+        return self.properties.inertia_about(self.pivot)
+
+    @cached_property
+    def com_from_pivot(self) -> np.ndarray:
+        if self.pivot is None:
+            return np.zeros(3)
+        return np.asarray(self.properties.center_of_mass, dtype=float) - self.pivot
 
     @cached_property
     def spin_frame(self) -> np.ndarray:
@@ -107,18 +129,10 @@ def scene_from_properties(
     from rbi.core.rotation import unit_vector
     from rbi.core.spin_axis import default_spin_axis
 
-    if pivot is None:
-        inertia = np.array(props.inertia_about_com, dtype=float)
-        com_from_pivot = np.zeros(3)
-        where = "centre of mass"
-        g = 0.0
-    else:
-        pivot = np.asarray(pivot, dtype=float)
-        inertia = props.inertia_about(pivot)
-        com_from_pivot = np.asarray(props.center_of_mass, dtype=float) - pivot
-        where = "pivot"
-        g = float(gravity)
-    moments = np.linalg.eigvalsh(inertia)
+    pivot = None if pivot is None else np.asarray(pivot, dtype=float)
+    scene = Scene(props, 0.0 if pivot is None else float(gravity), pivot)
+    where = "centre of mass" if pivot is None else "pivot"
+    moments = np.linalg.eigvalsh(scene.inertia)
     if not (moments[0] > SINGULAR_RTOL * moments[-1] and np.all(np.isfinite(moments))):
         raise ValueError(
             f"the inertia about the {where} is singular (principal moments {moments[0]:.3g} and "
@@ -126,22 +140,13 @@ def scene_from_properties(
             f"that line has no inertia and the motion is undefined"
         )
     if spin_axis is None:
-        axis = default_spin_axis(inertia, com_from_pivot)
+        axis = default_spin_axis(scene.inertia, scene.com_from_pivot)
     else:
         try:
             axis = unit_vector(spin_axis)
         except ValueError as exc:
             raise ValueError(f"spin axis: {exc}") from None
-    return Scene(
-        mass=float(props.mass),
-        inertia=inertia,
-        com_from_pivot=com_from_pivot,
-        gravity=g,
-        pivoted=pivot is not None,
-        pivot=None if pivot is None else pivot,
-        com=np.asarray(props.center_of_mass, dtype=float),
-        spin_axis=axis,
-    )
+    return replace(scene, spin_axis=axis)
 
 
 def initial_state(tilt_deg: float, omega_body, tilt_axis: str = "y") -> tuple[np.ndarray, np.ndarray]:

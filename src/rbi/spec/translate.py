@@ -191,15 +191,15 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
         solid = read_mesh_solid(file, part.inertia, part.repair)
     except ValueError as exc:
         raise ValueError(f"file: {part.file}: {exc}") from None
-    distribution = solid.distribution
+    unit = solid.distribution.unit  # at density 1: the mass is the volume (or area)
     scale = float(part.scale)
-    measure = distribution.measure * scale ** (2 if part.inertia == "shell" else 3)  # area or volume
+    measure = unit.mass * scale ** (2 if part.inertia == "shell" else 3)  # area or volume
     part._enclosed_volume = None if part.inertia == "shell" else measure
     part._mesh_notes = _mesh_notes(part, solid, units)
     mass = _solid_mass(part, measure, units)
     # inertia per density scales as scale⁵ (scale⁴ for a surface), the density as 1 / measure
-    inertia = distribution.inertia_per_density * (mass / distribution.measure * scale * scale)
-    com = distribution.centroid * scale
+    inertia = unit.inertia_about_com * (mass / unit.mass * scale * scale)
+    com = unit.center_of_mass * scale
     return _placed(part, mass, com, inertia)
 
 
