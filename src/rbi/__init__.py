@@ -47,6 +47,12 @@ __all__ = [
     "ArgumentError",
     "outside_paths_allowed",
     "visible",
+    "MassProperties",
+    "Check",
+    "Dynamics",
+    "validate",
+    "spec_schema",
+    "unit_vector",
     "__version__",
 ]
 

@@ -25,10 +25,15 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
+from rbi.core.rotation import LARGEST_ANGLE_DEG
 from rbi.errors import ArgumentError, SpecError
 from rbi.files.output import check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
+from rbi.spec.checks import Check
+from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
+from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.text import csv_lines, number, visible
 
 if TYPE_CHECKING:
@@ -69,6 +74,16 @@ __all__ = [
     "visible",
     "number",
     "csv_lines",
+    # what the commands compute, as numbers (rbi check, dynamics, export, validate, schema)
+    "MassProperties",
+    "Check",
+    "Dynamics",
+    "validate",
+    "spec_schema",
+    "unit_vector",
+    "LENGTH_UNITS",
+    "MASS_UNITS",
+    "LARGEST_ANGLE_DEG",
 ]
 
 Point = str | Sequence[float] | np.ndarray
@@ -162,6 +177,46 @@ def _body(read: Callable[[], tuple[Any, Any]], label: str, allow_outside_paths: 
     return Body(loaded, raw)
 
 
+def validate(
+    paths: str | os.PathLike[str] | Sequence[str | os.PathLike[str]],
+    *,
+    package_paths: Mapping[str, str] | Sequence[str] | None = None,
+) -> list[list[str]]:
+    """Check spec files without computing anything, as ``rbi validate`` does: for each path,
+    the list of its problems, one line each (empty when the file is valid). A robot file (URDF,
+    SDF, MJCF) gives every link whose inertia is not physical; ``package_paths`` (``{NAME:
+    DIR}`` or ``["NAME=DIR", ...]``) finds its ``package://`` meshes. SpecError for a bad
+    ``package_paths``."""
+    from rbi.formats.robot_paths import parse_package_paths
+    from rbi.spec.load import file_problems
+
+    packages = parse_package_paths(package_paths)
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    return [file_problems(os.fspath(path), packages) for path in paths]
+
+
+def spec_schema() -> dict[str, Any]:
+    """The JSON Schema (draft 2020-12) of a body spec, as ``rbi schema`` prints it (for
+    editors: see docs/schema.md)."""
+    from rbi.spec.models import body_spec_json_schema
+
+    return body_spec_json_schema()
+
+
+def unit_vector(direction: Sequence[float] | np.ndarray) -> np.ndarray:
+    """``direction / |direction|`` as (3,), for any finite non-zero vector however large or
+    small its components (1e-300 and 1e300 alike); ArgumentError naming ``direction`` else."""
+    from rbi.core.inertia import unit_axis
+
+    try:
+        return unit_axis(direction)
+    except (ValueError, TypeError):
+        raise ArgumentError(
+            "direction", f"must be a non-zero finite vector (x, y, z), got {direction!r}"
+        ) from None
+
+
 @dataclass(frozen=True)
 class Principal(TableRepr):
     """Principal moments and axes about a point.
@@ -200,6 +255,12 @@ class Part(TableRepr):
         center_of_mass: (3,) the part's centre of mass.
         inertia_about_com: (3, 3) the part's inertia about its own centre of mass, body axes.
         volume: the solid's volume (length³), or None when it has none (points, custom parts).
+        principal_moments: (3,) ascending, about the part's own centre of mass (negative for a
+            hole), mass·length².
+        inertia_share: the part's share of the trace of the body's inertia about the body's
+            centre of mass (the shares add up to 1; a hole's is negative).
+        integration_error: for a STEP part, the relative error estimate of its exact-geometry
+            integration; else None.
     """
 
     name: str
@@ -209,6 +270,9 @@ class Part(TableRepr):
     center_of_mass: np.ndarray
     inertia_about_com: np.ndarray
     volume: float | None
+    principal_moments: np.ndarray
+    inertia_share: float
+    integration_error: float | None = None
 
     def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
         rows = [
@@ -243,6 +307,33 @@ class Momentum:
     angular_momentum: np.ndarray
     angle_deg: float | None
     kinetic_energy: float
+
+
+@dataclass(frozen=True)
+class Dynamics:
+    """Newton–Euler at one instant, about a point (spec units, body axes), as `Body.dynamics`
+    gives it.
+
+    Attributes:
+        mode: ``"inverse"`` (loads from the motion) or ``"forward"`` (motion from the loads).
+        about: (3,) the reference point o, length unit.
+        omega: (3,) angular velocity, rad/s.
+        alpha: (3,) angular acceleration, rad/s².
+        point_acceleration: (3,) acceleration of o, length/s².
+        force: (3,) the force on the body, mass·length/s² (``held``: the force holding o).
+        torque: (3,) the torque about o, mass·length²/s².
+        held: o was held (a pivot): forward dynamics without a force about a point other than
+            the centre of mass.
+    """
+
+    mode: str
+    about: np.ndarray
+    omega: np.ndarray
+    alpha: np.ndarray
+    point_acceleration: np.ndarray
+    force: np.ndarray
+    torque: np.ndarray
+    held: bool
 
 
 class Body(TableRepr):
@@ -369,13 +460,25 @@ class Body(TableRepr):
 
     def parts(self) -> list[Part]:
         """Each part's mass properties, in file order (see `Part`)."""
+        from rbi.core.inertia import principal_axes
+        from rbi.core.mass import inertia_shares
+        from rbi.spec.translate import integration_errors
         from rbi.spec.volumes import part_volume
 
         loaded = self._loaded
         spec_parts = list(loaded.spec.parts) if loaded.spec is not None else []
+        shares = inertia_shares(loaded.elements, loaded.props)
+        errors = integration_errors(loaded.spec) or []
+        # volumes are computed in the spec's units: a body in other units (`in_units`) scales them
+        cube = (
+            1.0
+            if not spec_parts
+            else LENGTH_UNITS[loaded.spec.units.length] / LENGTH_UNITS[loaded.length_unit]
+        )
         out = []
         for i, element in enumerate(loaded.elements):
             part = spec_parts[i] if i < len(spec_parts) else None
+            volume = None if part is None else part_volume(part)
             out.append(
                 Part(
                     name=loaded.part_names[i] or f"parts[{i}]",
@@ -384,7 +487,10 @@ class Body(TableRepr):
                     mass=float(element.mass),
                     center_of_mass=np.array(element.center_of_mass, dtype=float),
                     inertia_about_com=np.array(element.inertia_about_com, dtype=float),
-                    volume=None if part is None else part_volume(part),
+                    volume=volume if volume is None or cube == 1.0 else volume * cube**3,
+                    principal_moments=principal_axes(element.inertia_about_com)[0],
+                    inertia_share=float(shares[i]),
+                    integration_error=errors[i] if i < len(errors) else None,
                 )
             )
         return out
@@ -419,6 +525,164 @@ class Body(TableRepr):
             angular_momentum=np.asarray(h),
             angle_deg=angle_between_deg(h, w),
             kinetic_energy=float(kinetic_energy(props.inertia_about_com, w, props.mass, v_com)),
+        )
+
+    @property
+    def mass_properties(self) -> MassProperties:
+        """The body's mass properties as one immutable value: ``mass``, ``center_of_mass`` (3,),
+        ``inertia_about_com`` (3, 3, body axes) and ``frame`` (``"body"``), spec units;
+        ``.inertia_about(point)`` shifts it by the parallel-axis theorem."""
+        return self._loaded.props
+
+    def in_units(self, length: str, mass: str) -> Body:
+        """The same body with every number in other units: lengths in ``length`` (a key of
+        `LENGTH_UNITS`, e.g. ``"mm"``), masses in ``mass`` (a key of `MASS_UNITS`, e.g.
+        ``"g"``), inertias in mass·length²; the pivot and each part follow."""
+        from rbi.spec.units import convert_body
+
+        for parameter, value, known in (("length", length, LENGTH_UNITS), ("mass", mass, MASS_UNITS)):
+            if value not in known:
+                raise ArgumentError(parameter, f"expected one of {', '.join(known)}, got {value!r}")
+        return Body(convert_body(self._loaded, length, mass), self._raw)
+
+    def moment_about_axis(
+        self, axis: Sequence[float], about: Point = "com", axes: Sequence[tuple[str, float]] | None = None
+    ) -> float:
+        """The scalar moment of inertia ``nᵀ I n`` (mass·length²) about the line through
+        ``about`` along ``axis`` (any non-zero length), with ``axis`` in the axes of
+        ``inertia(about, axes)``: body axes, or world axes after ``axes``."""
+        from rbi.core.inertia import moment_about_axis
+
+        matrix = self.inertia(about, axes)
+        try:
+            return moment_about_axis(matrix, axis)
+        except ValueError:
+            raise ArgumentError(
+                "axis", f"must be a non-zero finite direction (x, y, z), got {axis!r}"
+            ) from None
+
+    def check(self) -> list[Check]:
+        """Each expectation of the spec's ``expect:`` block (see docs/check.md) against the
+        body, as ``rbi check`` compares them (see `Check`), in the spec's units. SpecError when
+        the spec has none."""
+        from rbi.spec.checks import run_checks
+        from rbi.spec.units import convert_body
+
+        loaded, spec = self._loaded, self._loaded.spec
+        if spec is not None and (spec.units.length, spec.units.mass) != (
+            loaded.length_unit,
+            loaded.mass_unit,
+        ):
+            loaded = convert_body(loaded, spec.units.length, spec.units.mass)
+        return run_checks(loaded)
+
+    def dynamics(
+        self,
+        omega: Sequence[float],
+        *,
+        about: Point = "com",
+        alpha: Sequence[float] | None = None,
+        point_acceleration: Sequence[float] | None = None,
+        force: Sequence[float] | None = None,
+        torque: Sequence[float] | None = None,
+    ) -> Dynamics:
+        """Newton–Euler at one instant, about the point ``about`` (see `point`), every vector
+        in body axes and spec units: inverse with ``alpha`` (the force and the torque about
+        ``about`` that angular acceleration needs), else forward with ``force``/``torque`` (the
+        accelerations they give). Without ``force``, a point other than ``"com"`` is held (a
+        pivot: its acceleration is ``point_acceleration``) and the force holding it is found.
+
+        Args:
+            omega: (3,) angular velocity, rad/s.
+            alpha: (3,) angular acceleration, rad/s².
+            point_acceleration: (3,) acceleration of ``about``, length/s² (default 0).
+            force: (3,) force on the body, mass·length/s².
+            torque: (3,) torque about ``about``, mass·length²/s².
+        """
+        from rbi.core.dynamics import newton_euler_about
+        from rbi.runs.values import vector_value
+
+        if (alpha is None) == (force is None and torque is None):
+            raise ArgumentError(("alpha", "force"), "give either alpha (inverse) or force/torque (forward)")
+        about_com = isinstance(about, str) and about.strip().lower() == "com"
+        point = self.point(about)
+        props = self._loaded.props
+        inertia = props.inertia_about(point)
+        if alpha is None and np.linalg.matrix_rank(inertia) < 3:
+            raise SpecError(
+                f"{self.path}: the inertia about {about!r} is singular: the body cannot be given an "
+                "angular acceleration"
+            )
+        vectors = {
+            name: None if value is None else np.array(vector_value(value, name))
+            for name, value in (
+                ("alpha", alpha),
+                ("point_acceleration", point_acceleration),
+                ("force", force),
+                ("torque", torque),
+            )
+        }
+        w = np.array(vector_value(omega, "omega"))
+        acceleration, wrench, held = newton_euler_about(
+            props, inertia, props.center_of_mass - point, w, about_com=about_com, **vectors
+        )
+        return Dynamics(
+            "inverse" if alpha is not None else "forward",
+            point,
+            w,
+            acceleration.angular,
+            acceleration.linear,
+            wrench.force,
+            wrench.torque,
+            held,
+        )
+
+    def inertial_xml(
+        self, to: str, *, name: str | None = None, document: bool = False, diagonal: bool = False
+    ) -> str:
+        """The ``<inertial>`` element for a robot description, as ``rbi export`` prints it: SI
+        units (kg, m, kg·m²), inertia about the centre of mass in body axes, a comment first.
+
+        Args:
+            to: ``"urdf"``, ``"mjcf"`` or ``"sdf"``.
+            name: the link's (body's) name in a document; default the spec's name, else the
+                file's stem (``body`` for a spec read from text).
+            document: a whole minimal document (robot/link, mujoco/worldbody/body,
+                sdf/model/link) instead of the bare element.
+            diagonal: MJCF only: principal moments (``diaginertia``) and the principal frame
+                (``quat``) instead of ``fullinertia``.
+        """
+        from pathlib import Path
+
+        from rbi.formats.inertial_xml import FORMATS, export_xml
+
+        if to not in FORMATS:
+            raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {to!r}")
+        if diagonal and to != "mjcf":
+            raise ArgumentError("diagonal", "only for to='mjcf' (URDF and SDF take the full matrix)")
+        units = self.units
+        comment = (
+            f"rbi export of {Path(self.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, body axes"
+            + (
+                ""
+                if (units["length"], units["mass"]) == ("m", "kg")
+                else f"; spec units were {units['length']}, {units['mass']}"
+            )
+        )
+        si = self.in_units("m", "kg").mass_properties
+        if name is None:
+            name = self.name or (
+                "body" if self.path in ("<stdin>", "<string>", "<dict>") else Path(self.path).stem
+            )
+        return export_xml(
+            to,
+            si.mass,
+            si.center_of_mass,
+            si.inertia_about_com,
+            name=name,
+            document=document,
+            diagonal=diagonal,
+            comment=comment,
         )
 
     def __repr__(self) -> str:

@@ -8,7 +8,7 @@ import re
 
 import pytest
 
-from rbi.cli.schema_command import spec_schema
+from rbi.api import spec_schema
 from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI
 from tests.conftest import run_rbi_inprocess
 

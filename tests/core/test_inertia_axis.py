@@ -9,7 +9,7 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 
 from rbi.core import shapes
-from rbi.core.inertia import moment_about_axis, parallel_axis, radii_of_gyration, unit_axis, with_product_sign
+from rbi.core.inertia import moment_about_axis, parallel_axis, radii_of_gyration, unit_axis
 from rbi.core.mass import combine
 
 
@@ -73,18 +73,3 @@ def test_radius_of_gyration_of_a_thin_ring_is_its_radius():
     positions = np.c_[0.5 * np.cos(angles), 0.5 * np.sin(angles), np.zeros(8)]
     props = combine(np.full(8, 0.25), positions, None)
     assert radii_of_gyration([props.inertia_about_com[2, 2]], props.mass)[0] == pytest.approx(0.5, rel=1e-14)
-
-
-def test_cad_products_are_the_positive_integrals():
-    # One point mass m at (a, b, c) about the origin: ∫xy dm = m a b, and the tensor entry is −m a b.
-    m, (a, b, c) = 2.0, (0.3, -0.4, 0.5)
-    I = parallel_axis(np.zeros((3, 3)), m, [a, b, c])
-    cad = with_product_sign(I, "cad")
-    assert cad[0, 1] == pytest.approx(m * a * b) and cad[1, 0] == pytest.approx(m * a * b)
-    assert cad[0, 2] == pytest.approx(m * a * c) and cad[1, 2] == pytest.approx(m * b * c)
-    assert I[0, 1] == pytest.approx(-m * a * b)
-    assert np.array_equal(np.diag(cad), np.diag(I))
-    assert np.array_equal(with_product_sign(I, "tensor"), I)
-    assert not np.signbit(with_product_sign(np.eye(3), "cad")).any()  # no −0.0 printed for a zero product
-    with pytest.raises(ValueError):
-        with_product_sign(I, "solidworks")

@@ -5,80 +5,9 @@ from __future__ import annotations
 
 from typing import Any
 
-import numpy as np
-
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.mass_reports import load_body
 from rbi.cli.render import number
-from rbi.errors import InputError
-
-
-def compare(quantity: str, expected, actual, tol, unit: str) -> dict[str, Any]:
-    """One expectation: per-component deviation against the allowed deviation.
-
-    A percentage ``tol`` is taken of the largest magnitude in the expected value, so a
-    zero component (a CoM on an axis) gets the same allowance as the others.
-    """
-    from rbi.spec.fields import tolerance_allowed
-
-    want = np.asarray(expected, dtype=float)
-    got = np.asarray(actual, dtype=float)
-    allowed = tolerance_allowed(tol, float(np.max(np.abs(want))))
-    deviation = np.abs(got - want)
-    return {
-        "quantity": quantity,
-        "unit": unit,
-        "expected": want,
-        "actual": got,
-        "deviation": float(np.max(deviation)),
-        "tol": tol,
-        "allowed": allowed,
-        "pass": bool(np.all(deviation <= allowed)),
-        "component_deviation": deviation,
-    }
-
-
-def _point(about, body) -> tuple[str, np.ndarray]:
-    from rbi.spec.errors import InputError
-
-    if isinstance(about, list):
-        return "point", np.asarray(about, dtype=float)
-    if about == "com":
-        return "com", body.props.center_of_mass
-    if about == "origin":
-        return "origin", np.zeros(3)
-    if body.pivot is None:
-        raise InputError(f"{body.path}: expect: about: pivot needs a `pivot` in the spec, and there is none")
-    return "pivot", body.pivot
-
-
-def run_checks(body) -> list[dict[str, Any]]:
-    """Every comparison the body's `expect:` block asks for, in a fixed order."""
-    from rbi.core.inertia import principal_axes
-
-    expect = body.spec.expect
-    labels = body.labels
-    checks = []
-    if expect.mass is not None:
-        checks.append(compare("mass", expect.mass.value, body.props.mass, expect.mass.tol, labels["mass"]))
-    if expect.center_of_mass is not None:
-        e = expect.center_of_mass
-        checks.append(compare("center_of_mass", e.value, body.props.center_of_mass, e.tol, labels["length"]))
-    if expect.moments is not None:
-        e = expect.moments
-        label, point = _point(e.about, body)
-        moments, _ = principal_axes(body.props.inertia_about(point))
-        checks.append(
-            compare("moments", sorted(e.value), moments, e.tol, labels["inertia"]) | {"about": label}
-        )
-    if expect.inertia is not None:
-        e = expect.inertia
-        label, point = _point(e.about, body)
-        checks.append(
-            compare("inertia", e.value, body.props.inertia_about(point), e.tol, labels["inertia"])
-            | {"about": label}
-        )
-    return checks
 
 
 def check(files, fmt: str = "table") -> int:
@@ -92,12 +21,7 @@ def check_of(file: str):
     several files, its CSV row is ``name, units, ok, passed, failed``."""
 
     body = load_body(file)
-    if body.spec.expect is None:
-        raise InputError(
-            f"{body.path}: expect: the spec has no `expect:` block, so there is nothing to check "
-            f"(see docs/check.md)"
-        )
-    checks = run_checks(body)
+    checks = [_as_dict(c) for c in body.check()]
     failed = sum(not c["pass"] for c in checks)
     result = {
         "name": body.name,
@@ -118,7 +42,22 @@ def check_of(file: str):
     )
 
 
-_SHORT = {"mass": "mass", "center_of_mass": "com", "moments": "", "inertia": "I"}
+def _as_dict(check) -> dict[str, Any]:
+    """A `rbi.api.Check` as its JSON object (``component_deviation`` kept for the tables)."""
+    out = {
+        "quantity": check.quantity,
+        "unit": check.unit,
+        "expected": check.expected,
+        "actual": check.actual,
+        "deviation": check.deviation,
+        "tol": check.tol,
+        "allowed": check.allowed,
+        "pass": check.passed,
+        "component_deviation": check.component_deviation,
+    }
+    return out if check.about is None else out | {"about": check.about}
+
+
 _MATRIX_ENTRIES = (("xx", 0, 0), ("yy", 1, 1), ("zz", 2, 2), ("xy", 0, 1), ("xz", 0, 2), ("yz", 1, 2))
 
 

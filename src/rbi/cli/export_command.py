@@ -54,30 +54,19 @@ def export(
       rbi export robot_link.yaml --to urdf
       rbi export robot_link.yaml --to mjcf --diagonal --document
     """
-    from rbi.cli.export_format import export_xml
+    from rbi.api import SpecError
+    from rbi.cli.mass_reports import load_body
     from rbi.cli.render import emit, to_csv
-    from rbi.spec.errors import InputError
-    from rbi.spec.load import load_body
-    from rbi.spec.units import convert_body
 
     if diagonal and to is not ExportTarget.mjcf:
-        raise InputError(
+        raise SpecError(
             "--diagonal: only for --to mjcf (URDF and SDF take the full matrix about the centre of mass)"
         )
     source = load_body(file)
-    body = convert_body(source, "m", "kg")
-    props = body.props
+    body = source.in_units("m", "kg")
+    props = body.mass_properties
     name = body.name or ("body" if file == "-" else Path(file).stem)
-    xml = export_xml(
-        to.value,
-        props.mass,
-        props.center_of_mass,
-        props.inertia_about_com,
-        name=name,
-        document=document,
-        diagonal=diagonal,
-        comment=_comment(source),
-    )
+    xml = source.inertial_xml(to.value, name=name, document=document, diagonal=diagonal)
     _warn_if_singular(props.inertia_about_com)
     result = {
         "name": body.name,
@@ -99,19 +88,6 @@ def export(
         sys.stdout.write(to_csv([{k: v for k, v in result.items() if k != "xml"}]))
     else:
         emit(format.value, result, lambda: None)
-
-
-def _comment(source) -> str:
-    """The comment above the element: where it came from, in which units."""
-    return (
-        f"rbi export of {Path(source.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, "
-        f"body axes"
-        + (
-            f"; spec units were {source.length_unit}, {source.mass_unit}"
-            if (source.length_unit, source.mass_unit) != ("m", "kg")
-            else ""
-        )
-    )
 
 
 def _warn_if_singular(inertia) -> None:

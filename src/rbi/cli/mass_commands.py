@@ -133,26 +133,20 @@ def momentum(
       rbi momentum rocket.yaml --omega 0,0,10 --velocity 0,0,50
     """
     from rbi.cli.mass_reports import header, load_body
-    from rbi.core.dynamics import angle_between_deg, angular_momentum_about_point, kinetic_energy
 
     w = np.array(parse_vector(omega, "--omega"))
     v_given = None if velocity is None else np.array(parse_vector(velocity, "--velocity"))
     body = load_body(file)
     about_label, point = parse_about(about, body)
     body, (point, v_given) = in_output_units(body, units, point, v_given)
-    v_given = None if v_given is None else np.array(v_given)
-    props = body.props
-    com_from_point = props.center_of_mass - np.asarray(point)
     # Without a given velocity the reference point is fixed: v_c = ω × r_{c/o} (zero at the CoM).
-    v_com = v_given if v_given is not None else np.cross(w, com_from_point)
-    h = angular_momentum_about_point(props.inertia_about_com, props.mass, com_from_point, w, v_com)
-    energy = kinetic_energy(props.inertia_about_com, w, props.mass, v_com)
+    motion = body.momentum(w, point, v_given)
     result = header(body, about_label, point) | {
         "omega": w,
-        "com_velocity": v_com,
-        "angular_momentum": h,
-        "angle_deg": angle_between_deg(h, w),
-        "kinetic_energy": energy,
+        "com_velocity": motion.com_velocity,
+        "angular_momentum": motion.angular_momentum,
+        "angle_deg": motion.angle_deg,
+        "kinetic_energy": motion.kinetic_energy,
     }
 
     emit(format.value, result, lambda: _momentum_table(body, result, about_label))
@@ -164,7 +158,7 @@ def _momentum_table(body, result: dict, about_label: str):
     from rbi.cli.mass_reports import title
     from rbi.cli.render import body_size
 
-    labels = body.labels
+    labels = body.unit_labels
     return tables.quantities(
         title(body, f"momentum about {about_label}"),
         [
@@ -172,12 +166,12 @@ def _momentum_table(body, result: dict, about_label: str):
             (
                 "centre of mass",
                 labels["length"],
-                tables.vector(result["center_of_mass"], body_size(body.props)),
+                tables.vector(result["center_of_mass"], body_size(body)),
             ),
             (
                 f"about ({about_label})",
                 labels["length"],
-                tables.vector(result["about"], body_size(body.props)),
+                tables.vector(result["about"], body_size(body)),
             ),
             ("ω (body axes)", "rad/s", tables.vector(result["omega"])),
             ("v of centre of mass", labels["velocity"], tables.vector(result["com_velocity"])),

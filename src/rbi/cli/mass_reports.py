@@ -8,12 +8,14 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+from rbi import api
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.option_values import in_output_units, parse_about, parse_rotation, parse_vector
 from rbi.cli.render import body_size, matrix_digits, number
-from rbi.errors import InputError
 
 PRODUCT_SIGNS = ("tensor", "cad")
+"""Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
+(the positive integrals ``+∫xy dm`` SolidWorks and CATIA print)."""
 
 PRODUCT_SIGN_TITLES = {
     "tensor": "products −∫xy dm",
@@ -21,24 +23,37 @@ PRODUCT_SIGN_TITLES = {
 }
 
 
-def load_body(file: str):
-    """The body of the spec ``file`` (``-``: standard input) in the core's terms."""
-    from rbi import api
-
-    return api.load(file)._loaded
+def load_body(file: str) -> api.Body:
+    """The `rbi.Body` of the spec ``file`` (``-``: standard input)."""
+    return api.load(file)
 
 
-def header(body, about_label: str, about_point) -> dict:
+def header(body: api.Body, about_label: str, about_point) -> dict:
     """The keys every mass-properties result starts with."""
     return {
         "name": body.name,
         "units": body.units,
-        "mass": body.props.mass,
-        "center_of_mass": body.props.center_of_mass,
+        "mass": body.mass,
+        "center_of_mass": body.center_of_mass,
         "about": about_point,
         "about_label": about_label,
         "warnings": list(body.warnings),
     }
+
+
+def with_product_sign(inertia, sign: str):
+    """The inertia matrix with its off-diagonal entries in convention ``sign`` (see
+    :data:`PRODUCT_SIGNS`); the moments on the diagonal never change."""
+    import numpy as np
+
+    shown = np.array(inertia, dtype=float)
+    if sign == "tensor":
+        return shown
+    if sign == "cad":
+        off_diagonal = ~np.eye(3, dtype=bool)
+        shown[off_diagonal] = 0.0 - shown[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
+        return shown
+    raise ValueError(f"unknown products sign {sign!r} (expected one of {PRODUCT_SIGNS})")
 
 
 def title(body, what: str) -> str:
@@ -55,55 +70,42 @@ def inertia(
     fmt: str = "table",
 ) -> int:
     """`rbi inertia FILE...`: the exit status (see :func:`rbi.cli.each_file.report_each`)."""
-    import numpy as np
-
-    from rbi.core.inertia import unit_axis
-
     turns = [parse_rotation(r) for r in rotate or []]
     direction = None
     if axis is not None:
         try:
-            direction = unit_axis(np.asarray(parse_vector(axis, "--axis")))
+            direction = api.unit_vector(parse_vector(axis, "--axis"))
         except ValueError:
-            raise InputError(f"--axis: must be a non-zero direction X,Y,Z (got {axis!r})") from None
+            raise api.SpecError(f"--axis: must be a non-zero direction X,Y,Z (got {axis!r})") from None
     return report_each(files, lambda file: _inertia_of(file, about, turns, direction, products, units), fmt)
 
 
 def _inertia_of(file: str, about: str, turns, direction, products: str, units: str | None):
     import numpy as np
 
-    from rbi.core.inertia import moment_about_axis, re_express, with_product_sign
-    from rbi.core.rotation import compose_world_rotations
-
     body = load_body(file)
     about_label, point = parse_about(about, body)
     body, (point,) = in_output_units(body, units, point)
-    I = body.props.inertia_about(point)
-    if turns:
-        I = re_express(I, compose_world_rotations(turns))
-    shown = with_product_sign(I, products)
+    axes = turns or None
+    shown = with_product_sign(body.inertia(point, axes), products)
     result = header(body, about_label, point) | {
         "frame": "world (rotated)" if turns else "body",
-        "rotations": [f"{a}:{np.degrees(t):g}" for a, t in turns],
+        "rotations": [f"{a}:{np.degrees(np.radians(d)):g}" for a, d in turns],
         "products_sign": products,
         "inertia": shown,
     }
     if direction is not None:
-        result |= {"axis": direction, "moment_about_axis": moment_about_axis(I, direction)}
+        result |= {"axis": direction, "moment_about_axis": body.moment_about_axis(direction, point, axes)}
 
     def table():
         from rbi.cli import tables
 
-        labels = body.labels
+        labels = body.unit_labels
         frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
         rows = [
-            ("mass", labels["mass"], number(body.props.mass, 8)),
-            (
-                "centre of mass",
-                labels["length"],
-                tables.vector(body.props.center_of_mass, body_size(body.props)),
-            ),
-            (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body.props))),
+            ("mass", labels["mass"], number(body.mass, 8)),
+            ("centre of mass", labels["length"], tables.vector(body.center_of_mass, body_size(body))),
+            (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body))),
         ]
         if direction is not None:
             rows += [
@@ -129,20 +131,17 @@ def principal(files: Sequence[str], about: str = "com", units: str | None = None
 
 
 def _principal_of(file: str, about: str, units: str | None):
-    from rbi.core.inertia import principal_axes, radii_of_gyration
-
     body = load_body(file)
     about_label, point = parse_about(about, body)
     body, (point,) = in_output_units(body, units, point)
-    I = body.props.inertia_about(point)
-    moments, axes = principal_axes(I)
-    radii = radii_of_gyration(moments, body.props.mass)
+    principal = body.principal(point)
+    moments, axes, radii = principal.moments, principal.axes, principal.radii_of_gyration
     result = header(body, about_label, point) | {"moments": moments, "axes": axes, "radii_of_gyration": radii}
 
     def table():
         from rbi.cli import tables
 
-        labels = body.labels
+        labels = body.unit_labels
         scale, scale_text = matrix_digits(moments)
         t = tables.titled(f"Principal axes about {about_label} (body frame)")
         t.add_column("#")
@@ -156,13 +155,9 @@ def _principal_of(file: str, about: str, units: str | None):
             tables.quantities(
                 title(body, "principal"),
                 [
-                    ("mass", labels["mass"], number(body.props.mass, 8)),
-                    (
-                        "centre of mass",
-                        labels["length"],
-                        tables.vector(body.props.center_of_mass, body_size(body.props)),
-                    ),
-                    (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body.props))),
+                    ("mass", labels["mass"], number(body.mass, 8)),
+                    ("centre of mass", labels["length"], tables.vector(body.center_of_mass, body_size(body))),
+                    (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body))),
                 ],
             ),
             t,

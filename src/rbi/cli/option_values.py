@@ -122,10 +122,10 @@ def vary_option(items: list[str]) -> dict[str, Any]:
 
 
 def parse_about(text: str, body) -> tuple[str, list[float]]:
-    """Resolve ``--about`` against a loaded body: (label, point in body coordinates)."""
+    """Resolve ``--about`` against a `rbi.Body`: (label, point in body coordinates)."""
     key = text.strip().lower()
     if key == "com":
-        return "com", body.props.center_of_mass.tolist()
+        return "com", body.center_of_mass.tolist()
     if key == "origin":
         return "origin", [0.0, 0.0, 0.0]
     if key == "pivot":
@@ -144,8 +144,8 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
 
 
 def parse_rotation(text: str) -> tuple[str, float]:
-    """``"y:30"`` -> ``("y", radians(30))``."""
-    from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept
+    """``"y:30"`` -> ``("y", 30.0)``: a turn as `rbi.Body.inertia`'s ``axes`` takes it."""
+    from rbi.api import LARGEST_ANGLE_DEG
 
     axis, sep, angle = text.partition(":")
     axis = axis.strip().lower()
@@ -155,22 +155,39 @@ def parse_rotation(text: str) -> tuple[str, float]:
         degrees = math.nan
     if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
         raise SpecError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
-    if not angle_is_kept(degrees):
+    if abs(degrees) > LARGEST_ANGLE_DEG:
         raise SpecError(
             f"--rotate: {angle.strip()} degrees is too large to be a turn: rounding loses it "
             f"(at most {LARGEST_ANGLE_DEG:g} degrees)"
         )
-    return axis, math.radians(degrees)
+    return axis, degrees
+
+
+def parse_units(text: str) -> tuple[str, str]:
+    """``--units``: ``SI`` (m, kg) or ``LENGTH,MASS`` such as ``mm,g`` -> (length, mass)."""
+    from rbi.api import LENGTH_UNITS, MASS_UNITS
+
+    key = text.strip()
+    if key.lower() == "si":
+        return "m", "kg"
+    length, _, mass = key.partition(",")
+    length, mass = length.strip(), mass.strip()
+    if length not in LENGTH_UNITS or mass not in MASS_UNITS:
+        raise SpecError(
+            f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(LENGTH_UNITS)} "
+            f"and MASS one of {', '.join(MASS_UNITS)} (e.g. mm,g), got {text!r}"
+        )
+    return length, mass
 
 
 def in_output_units(body, units: str | None, *lengths):
-    """The body converted to ``--units`` (unchanged when None), and each of ``lengths`` (points
+    """The `rbi.Body` in ``--units`` (unchanged when None), and each of ``lengths`` (points
     or velocities in the file's length unit, or None) scaled alongside."""
     if units is None:
         return body, lengths
-    from rbi.spec.units import convert_body, parse_output_units, scale_factors
+    from rbi.api import LENGTH_UNITS
 
-    target = parse_output_units(units)
-    factor, _ = scale_factors((body.length_unit, body.mass_unit), target)
+    length, mass = parse_units(units)
+    factor = LENGTH_UNITS[body.units["length"]] / LENGTH_UNITS[length]
     scaled = tuple(None if v is None else [factor * float(x) for x in v] for v in lengths)
-    return convert_body(body, *target), scaled
+    return body.in_units(length, mass), scaled

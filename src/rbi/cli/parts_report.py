@@ -22,23 +22,21 @@ def parts_of(file: str):
     away (parts without a volume add none), and ``principal_moments`` of the body about its
     centre of mass.
     """
-    from rbi.core.inertia import principal_axes
-
     body = load_body(file)  # its warnings hold the mesh notes (repair, overlaps) too
     rows = _part_rows(body)
     volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
     every_part_has_volume = all(row["volume"] is not None for row in rows)
     total = {
         "volume": volume if any(row["volume"] is not None for row in rows) else None,
-        "mean_density": body.props.mass / volume if every_part_has_volume and volume > 0 else None,
-        "principal_moments": principal_axes(body.props.inertia_about_com)[0],
+        "mean_density": body.mass / volume if every_part_has_volume and volume > 0 else None,
+        "principal_moments": _principal_moments(body),
     }
     result = {
         "name": body.name,
         "units": body.units,
         "warnings": list(body.warnings),
-        "mass": body.props.mass,
-        "center_of_mass": body.props.center_of_mass,
+        "mass": body.mass,
+        "center_of_mass": body.center_of_mass,
         "volume": total["volume"],
         "principal_moments": total["principal_moments"],
         "parts": rows,
@@ -47,53 +45,42 @@ def parts_of(file: str):
     return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
 
 
+def _principal_moments(body):
+    """The body's principal moments about its centre of mass (ascending)."""
+    return body.principal().moments
+
+
 def _part_rows(body) -> list[dict]:
     """One row per part: its mass, share, centre of mass, inertia about it, principal moments,
     share of the inertia, volume and the density they imply (file units and SI)."""
-    from rbi.core.inertia import principal_axes
-    from rbi.core.mass import inertia_shares
-    from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
-    from rbi.spec.volumes import part_volume
+    from rbi.api import LENGTH_UNITS, MASS_UNITS
 
-    spec_parts = list(body.spec.parts) if body.spec is not None else []
-    shares = inertia_shares(body.elements, body.props)
-    to_si = MASS_UNITS_IN_KG[body.mass_unit] / LENGTH_UNITS_IN_M[body.length_unit] ** 3
+    units = body.units
+    to_si = MASS_UNITS[units["mass"]] / LENGTH_UNITS[units["length"]] ** 3
+    parts = body.parts()
     rows = []
-    for i, element in enumerate(body.elements):
-        part = spec_parts[i] if i < len(spec_parts) else None
-        volume = None if part is None else part_volume(part)
-        density = abs(element.mass) / volume if volume else None
+    for part in parts:
+        density = abs(part.mass) / part.volume if part.volume else None
         rows.append(
             {
-                "name": body.part_names[i] or f"parts[{i}]",
-                "shape": part.shape if part is not None else "point_cloud",
-                "hole": bool(getattr(part, "subtract", False)),
-                "mass": element.mass,
-                "mass_share": element.mass / body.props.mass,
-                "center_of_mass": element.center_of_mass,
-                "inertia_about_com": element.inertia_about_com,
-                "principal_moments": principal_axes(element.inertia_about_com)[0],
-                "inertia_share": shares[i],
-                "volume": volume,
+                "name": part.name,
+                "shape": part.shape,
+                "hole": part.hole,
+                "mass": part.mass,
+                "mass_share": part.mass / body.mass,
+                "center_of_mass": part.center_of_mass,
+                "inertia_about_com": part.inertia_about_com,
+                "principal_moments": part.principal_moments,
+                "inertia_share": part.inertia_share,
+                "volume": part.volume,
                 "implied_density": density,
                 "implied_density_si": None if density is None else density * to_si,
             }
         )
-    _add_integration_errors(rows, body.spec)
+    if any(part.shape == "step" for part in parts):  # the error estimate of each STEP part
+        for row, part in zip(rows, parts):
+            row["integration_error"] = part.integration_error
     return rows
-
-
-def _add_integration_errors(rows: list[dict], spec) -> None:
-    """With a STEP part in the spec, every row gets ``integration_error``: the relative error
-    estimate of the exact-geometry integration for a STEP part (see :mod:`rbi.formats.step`),
-    null for the others."""
-    from rbi.spec.translate import integration_errors
-
-    errors = integration_errors(spec)
-    if errors is None:
-        return
-    for i, row in enumerate(rows):
-        row["integration_error"] = errors[i] if i < len(errors) else None
 
 
 def _table(body, rows, total):
@@ -101,7 +88,7 @@ def _table(body, rows, total):
     share of the inertia; principal moments. Each ends with the whole body's row."""
     from rbi.cli import tables
 
-    labels = body.labels
+    labels, units = body.unit_labels, body.units
     name = body.name or body.path
     names = [tables.plain_text(row["name"]) for row in rows]
     length = labels["length"]
@@ -112,8 +99,8 @@ def _table(body, rows, total):
             "shape",
             f"mass\n[{labels['mass']}]",
             "mass\nshare [%]",
-            f"volume\n[{body.length_unit}³]",
-            f"density\n[{body.mass_unit}/{body.length_unit}³]",
+            f"volume\n[{units['length']}³]",
+            f"density\n[{units['mass']}/{units['length']}³]",
         ),
         [
             (
@@ -127,7 +114,7 @@ def _table(body, rows, total):
         ],
         (
             "",
-            number(body.props.mass),
+            number(body.mass),
             number(100.0, 4),
             number(total["volume"]),
             number(total["mean_density"], 4),
@@ -151,7 +138,7 @@ def _table(body, rows, total):
 def _places_table(body, rows, names: list, length: str, title: str):
     """Each part's centre of mass (a coordinate below 1e-12 of the body's size is rounding
     noise, printed 0) and its share of the inertia."""
-    size = body_size(body.props)
+    size = body_size(body)
     return _titled_table(
         title,
         names,
@@ -163,7 +150,7 @@ def _places_table(body, rows, names: list, length: str, title: str):
             )
             for row in rows
         ],
-        (*(number(c) for c in without_noise(body.props.center_of_mass, size)), number(100.0, 4)),
+        (*(number(c) for c in without_noise(body.center_of_mass, size)), number(100.0, 4)),
     )
 
 

@@ -229,9 +229,10 @@ def vector_text(v, digits: int = 6, scale: float = 0.0) -> str:
     return "[" + ", ".join(number(x, digits) for x in without_noise(v, scale)) + "]"
 
 
-def body_size(props) -> float:
-    """A body's size for telling a position from rounding noise: its radius of gyration about
-    the centre of mass, √(trace I / 2m), file length unit (0 without mass or inertia)."""
+def body_size(body) -> float:
+    """A `rbi.Body`'s size for telling a position from rounding noise: its radius of gyration
+    about the centre of mass, √(trace I / 2m), file length unit (0 without mass or inertia)."""
+    props = body.mass_properties
     try:
         size = math.sqrt(float(np.trace(props.inertia_about_com)) / (2.0 * float(props.mass)))
     except (ValueError, ZeroDivisionError, OverflowError):

@@ -13,6 +13,7 @@ from typing import NamedTuple
 import numpy as np
 from numpy.typing import ArrayLike
 
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import skew
 
 
@@ -157,3 +158,42 @@ def newton_euler_point_forward(
     rhs = rhs - velocity_terms_about_point(mass, inertia_point, com_from_point, omega)
     acc = np.linalg.solve(block, rhs)
     return Acceleration(acc[:3], acc[3:])
+
+
+def newton_euler_about(
+    props: MassProperties,
+    inertia_point: np.ndarray,
+    com_from_point: np.ndarray,
+    omega: np.ndarray,
+    *,
+    about_com: bool,
+    alpha: np.ndarray | None = None,
+    point_acceleration: np.ndarray | None = None,
+    force: np.ndarray | None = None,
+    torque: np.ndarray | None = None,
+) -> tuple[Acceleration, Wrench, bool]:
+    """Newton–Euler about a body point o (the centre of mass when ``about_com``), inverse when
+    ``alpha`` is given, else forward: ``(acceleration of o and α, force on the body and torque
+    about o, held)``. Forward without ``force`` about a point other than the centre of mass,
+    o is held (a pivot, accelerating at ``point_acceleration``, default 0) and the force
+    holding it is found (``held`` True); otherwise ``point_acceleration`` is what the loads
+    give. ``inertia_point``: the inertia about o; ``com_from_point``: ``r_{c/o}``."""
+    m, w, r = props.mass, omega, com_from_point
+    acc = np.zeros(3) if point_acceleration is None else point_acceleration
+    if alpha is not None:
+        if about_com:
+            return (
+                Acceleration(acc, alpha),
+                newton_euler_com(m, props.inertia_about_com, w, alpha, acc),
+                False,
+            )
+        return Acceleration(acc, alpha), newton_euler_point(m, inertia_point, r, w, alpha, acc), False
+    t = np.zeros(3) if torque is None else torque
+    if force is None and not about_com:
+        a = np.linalg.solve(inertia_point, t - np.cross(w, inertia_point @ w) - m * np.cross(r, acc))
+        held = newton_euler_point(m, inertia_point, r, w, a, acc).force
+        return Acceleration(acc, a), Wrench(held, t), True
+    f = np.zeros(3) if force is None else force
+    if about_com:
+        return newton_euler_com_forward(m, props.inertia_about_com, w, f, t), Wrench(f, t), False
+    return newton_euler_point_forward(m, inertia_point, r, w, f, t), Wrench(f, t), False

@@ -10,6 +10,7 @@ from __future__ import annotations
 from collections.abc import Sequence
 
 import numpy as np
+from numpy.typing import ArrayLike
 
 from rbi.core.rotation import unit_vector
 
@@ -164,7 +165,7 @@ def _closest_coordinate_axis_in_plane(normal: np.ndarray) -> np.ndarray:
 # --- one axis, radii of gyration, the sign of products --------------------------------------
 
 
-def unit_axis(axis: Sequence[float]) -> np.ndarray:
+def unit_axis(axis: ArrayLike) -> np.ndarray:
     """``axis`` scaled to unit length; ValueError when it is zero or not finite."""
     n = np.asarray(axis, dtype=float).reshape(3)
     if not np.all(np.isfinite(n)) or not np.any(n):
@@ -188,21 +189,3 @@ def radii_of_gyration(moments: Sequence[float], mass: float) -> np.ndarray:
     slightly negative gives 0."""
     I = np.asarray(moments, dtype=float)
     return np.sqrt(np.clip(I, 0.0, None) / float(mass))
-
-
-PRODUCT_SIGNS = ("tensor", "cad")
-"""``tensor``: off-diagonal entries as in the inertia matrix, ``I_xy = −∫xy dm``.
-``cad``: the positive integrals ``P_xy = +∫xy dm`` that SolidWorks and CATIA print."""
-
-
-def with_product_sign(inertia: np.ndarray, sign: str) -> np.ndarray:
-    """The inertia matrix with its off-diagonal entries in convention ``sign``
-    (see :data:`PRODUCT_SIGNS`); the moments on the diagonal never change."""
-    I = np.array(inertia, dtype=float)
-    if sign == "tensor":
-        return I
-    if sign == "cad":
-        off_diagonal = ~np.eye(3, dtype=bool)
-        I[off_diagonal] = 0.0 - I[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
-        return I
-    raise ValueError(f"unknown products sign {sign!r} (expected one of {PRODUCT_SIGNS})")

@@ -13,6 +13,8 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
+from rbi.text import visible
+
 FORMATS = ("urdf", "mjcf", "sdf")
 
 _SIX = (("ixx", (0, 0)), ("ixy", (0, 1)), ("ixz", (0, 2)), ("iyy", (1, 1)), ("iyz", (1, 2)), ("izz", (2, 2)))
@@ -108,3 +110,55 @@ def xml_comment(text: str) -> str:
     while "--" in text:
         text = text.replace("--", "-")
     return f"<!-- {text.rstrip('-')} -->"
+
+
+# --- `rbi export`: the element alone or in a minimal document, a comment first ----------------
+
+
+def _urdf_document(name: str, inertial: ET.Element) -> ET.Element:
+    robot = ET.Element("robot", name=name)
+    ET.SubElement(robot, "link", name=name).append(inertial)
+    return robot
+
+
+def _sdf_document(name: str, inertial: ET.Element) -> ET.Element:
+    sdf = ET.Element("sdf", version="1.7")
+    model = ET.SubElement(sdf, "model", name=name)
+    ET.SubElement(model, "link", name=name).append(inertial)
+    return sdf
+
+
+def _mjcf_document(name: str, inertial: ET.Element) -> ET.Element:
+    mujoco = ET.Element("mujoco", model=name)
+    body = ET.SubElement(ET.SubElement(mujoco, "worldbody"), "body", name=name)
+    ET.SubElement(body, "freejoint")
+    body.append(inertial)
+    return mujoco
+
+
+_DOCUMENTS = {"urdf": _urdf_document, "mjcf": _mjcf_document, "sdf": _sdf_document}
+
+
+def export_xml(
+    to: str,
+    mass: float,
+    com,
+    inertia,
+    *,
+    name: str,
+    document: bool = False,
+    diagonal: bool = False,
+    comment: str | None = None,
+) -> str:
+    """The XML text for format ``to`` (``urdf``, ``mjcf`` or ``sdf``): the inertial element,
+    or a minimal document holding it; ``comment`` goes first as an XML comment. Control
+    characters in ``name`` and ``comment`` are written as visible escapes (XML 1.0 cannot hold
+    them, and the text may be printed on a terminal)."""
+    element = inertial_element(to, mass, com, inertia, diagonal=diagonal)
+    if document:
+        element = _DOCUMENTS[to](visible(name), element)
+    ET.indent(element, space="  ")
+    text = ET.tostring(element, encoding="unicode")
+    if comment:
+        text = f"{xml_comment(visible(comment))}\n{text}"
+    return text + "\n"

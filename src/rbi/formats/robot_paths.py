@@ -14,6 +14,7 @@
 from __future__ import annotations
 
 import os
+from collections.abc import Mapping, Sequence
 from pathlib import Path
 from urllib.parse import unquote
 
@@ -21,8 +22,11 @@ from rbi.errors import InputError
 from rbi.formats.paths import spec_relative_file
 
 
-def parse_package_paths(values: list[str] | None) -> dict[str, list[Path]]:
-    """``NAME=DIR`` strings (``--package-path``) as a mapping; InputError for a malformed one."""
+def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dict[str, list[Path]]:
+    """``NAME=DIR`` strings (``--package-path``), or ``{NAME: DIR}``, as a mapping; InputError
+    for a malformed one."""
+    if isinstance(values, Mapping):
+        values = [f"{name}={folder}" for name, folder in values.items()]
     found: dict[str, list[Path]] = {}
     for value in values or []:
         name, sep, folder = value.partition("=")

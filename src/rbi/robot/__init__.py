@@ -43,9 +43,7 @@ def audit(
     from rbi.robot.audit import audit_model, material_density
     from rbi.robot.tree import parse_joint_values
 
-    if isinstance(package_paths, Mapping):
-        package_paths = [f"{name}={folder}" for name, folder in package_paths.items()]
-    packages = parse_package_paths(list(package_paths or []))
+    packages = parse_package_paths(package_paths)
     if isinstance(joints, Mapping):
         joint_values = {str(k): float(v) for k, v in joints.items()}
     else:

@@ -349,3 +349,28 @@ def body_from_raw(raw: Any, path: str) -> LoadedBody:
 
     with paused_gc():
         return body_from_spec(spec_from_raw(path, raw), path)
+
+
+def file_problems(path: str, packages: dict[str, list[Path]] | None = None) -> list[str]:
+    """Every problem found in one spec file, one line each (empty when it is valid):
+    unreadable or malformed YAML, each field the models refuse, then the first problem met
+    while building the body (an unphysical custom inertia, a hole removing too much). A robot
+    file (URDF, SDF, MJCF) gives every link whose inertia is not physical; ``packages`` (see
+    :func:`rbi.formats.robot_paths.parse_package_paths`) finds its ``package://`` meshes."""
+    from rbi.formats.robot_files import is_robot_file, robot_file_problems
+    from rbi.spec.translate import body_from_spec
+
+    if is_robot_file(path):
+        return robot_file_problems(path, packages)
+    try:
+        raw = read_yaml(path)
+    except InputError as exc:
+        return [str(exc)]
+    spec, problems = validation_messages(spec_label(path), raw)
+    if problems:
+        return problems
+    try:
+        body_from_spec(spec, spec_label(path))
+    except InputError as exc:
+        return [str(exc)]
+    return []

@@ -682,8 +682,9 @@ class BodySpec(_Strict):
 
 
 def body_spec_json_schema() -> dict[str, Any]:
-    """The JSON Schema of :class:`BodySpec`, each part described as :data:`Part` (the union of
-    every shape) rather than as the validator that picks one."""
+    """The JSON Schema (draft 2020-12) of :class:`BodySpec`, each part described as :data:`Part`
+    (the union of every shape) rather than as the validator that picks one; descriptions as
+    editors show them (see :func:`_plain_descriptions`)."""
     from pydantic import create_model
 
     described = create_model(
@@ -693,4 +694,26 @@ def body_spec_json_schema() -> dict[str, Any]:
         parts=(list[Part], Field(default_factory=list, description=PARTS_DESCRIPTION)),
         expect=(Expect | None, Field(None, description=EXPECT_DESCRIPTION)),
     )
-    return described.model_json_schema(mode="validation")
+    schema = _plain_descriptions(described.model_json_schema(mode="validation"))
+    return {
+        "$schema": "https://json-schema.org/draft/2020-12/schema",
+        "title": "rbi body spec",
+    } | {k: v for k, v in schema.items() if k != "title"}
+
+
+def _plain_descriptions(node: Any) -> Any:
+    """Descriptions as editors show them: the docstrings' reStructuredText literals (double
+    backquotes) and Sphinx roles (:mod:`x`) written as plain `x`, line breaks joined."""
+    import re
+
+    if isinstance(node, dict):
+        out = {}
+        for key, value in node.items():
+            if key == "description" and isinstance(value, str):
+                value = re.sub(r":\w+:`~?([^`]+)`", r"`\1`", value).replace("``", "`")
+                value = re.sub(r"\s*\n\s*", " ", value).strip()
+            out[key] = _plain_descriptions(value)
+        return out
+    if isinstance(node, list):
+        return [_plain_descriptions(v) for v in node]
+    return node

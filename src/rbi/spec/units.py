@@ -36,24 +36,6 @@ def unit_labels(length: str, mass: str) -> dict[str, str]:
 # --- converting results to other units (`--units`, exports) --------------------------------
 
 
-def parse_output_units(text: str) -> tuple[str, str]:
-    """``--units`` value -> (length unit, mass unit): ``SI`` (m, kg) or ``LENGTH,MASS`` such
-    as ``mm,g``. Raises :class:`~rbi.spec.errors.InputError` otherwise."""
-    from rbi.spec.errors import InputError
-
-    key = text.strip()
-    if key.lower() == "si":
-        return "m", "kg"
-    length, _, mass = key.partition(",")
-    length, mass = length.strip(), mass.strip()
-    if length not in LENGTH_UNITS_IN_M or mass not in MASS_UNITS_IN_KG:
-        raise InputError(
-            f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(LENGTH_UNITS_IN_M)} "
-            f"and MASS one of {', '.join(MASS_UNITS_IN_KG)} (e.g. mm,g), got {text!r}"
-        )
-    return length, mass
-
-
 def scale_factors(from_units: tuple[str, str], to_units: tuple[str, str]) -> tuple[float, float]:
     """Factors (length, mass) that turn numbers in ``from_units`` into ``to_units``, each a
     (length, mass) pair."""

@@ -1,0 +1,110 @@
+"""`rbi check`: each expectation of a spec's ``expect:`` block (:mod:`rbi.spec.expect`) against
+the computed value. Numpy only at import (the API imports :class:`Check` at start-up)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+
+@dataclass(frozen=True)
+class Check:
+    """One expectation of the spec's ``expect:`` block against the body (spec units, body axes).
+
+    Attributes:
+        quantity: ``"mass"``, ``"center_of_mass"``, ``"moments"`` (principal, ascending) or
+            ``"inertia"`` (the matrix).
+        unit: the quantity's printed unit (``kg``, ``m``, ``kg·m²`` in SI).
+        expected, actual: the values (a number, (3,) or (3, 3)).
+        deviation: the largest ``|actual − expected|`` over the components;
+            ``component_deviation`` each of them.
+        tol: as the spec gives it: a number, or text such as ``"1%"`` (of the largest expected
+            magnitude, so a zero component gets the same allowance as the others).
+        allowed: the absolute deviation allowed.
+        passed: every component within ``allowed``.
+        about: for moments and inertia, the point they are about (``"com"``, ``"origin"``,
+            ``"pivot"`` or ``"point"``); else None.
+    """
+
+    quantity: str
+    unit: str
+    expected: np.ndarray
+    actual: np.ndarray
+    deviation: float
+    tol: float | str
+    allowed: float
+    passed: bool
+    component_deviation: np.ndarray
+    about: str | None = None
+
+
+def _compare(
+    quantity: str, expected: Any, actual: Any, tol: Any, unit: str, about: str | None = None
+) -> Check:
+    from rbi.spec.fields import tolerance_allowed
+
+    want = np.asarray(expected, dtype=float)
+    got = np.asarray(actual, dtype=float)
+    allowed = tolerance_allowed(tol, float(np.max(np.abs(want))))
+    deviation = np.abs(got - want)
+    return Check(
+        quantity,
+        unit,
+        want,
+        got,
+        float(np.max(deviation)),
+        tol,
+        allowed,
+        bool(np.all(deviation <= allowed)),
+        deviation,
+        about,
+    )
+
+
+def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
+    from rbi.errors import InputError
+
+    if isinstance(about, list):
+        return "point", np.asarray(about, dtype=float)
+    if about == "com":
+        return "com", body.props.center_of_mass
+    if about == "origin":
+        return "origin", np.zeros(3)
+    if body.pivot is None:
+        raise InputError(f"{body.path}: expect: about: pivot needs a `pivot` in the spec, and there is none")
+    return "pivot", body.pivot
+
+
+def run_checks(body: Any) -> list[Check]:
+    """Every comparison the loaded body's `expect:` block asks for, in a fixed order
+    (mass, centre of mass, principal moments, inertia); InputError when it has none."""
+    from rbi.core.inertia import principal_axes
+    from rbi.errors import InputError
+
+    expect = body.spec.expect if body.spec is not None else None
+    if expect is None:
+        raise InputError(
+            f"{body.path}: expect: the spec has no `expect:` block, so there is nothing to check "
+            f"(see docs/check.md)"
+        )
+    labels, props = body.labels, body.props
+    checks = []
+    if expect.mass is not None:
+        checks.append(_compare("mass", expect.mass.value, props.mass, expect.mass.tol, labels["mass"]))
+    if expect.center_of_mass is not None:
+        e = expect.center_of_mass
+        checks.append(_compare("center_of_mass", e.value, props.center_of_mass, e.tol, labels["length"]))
+    if expect.moments is not None:
+        e = expect.moments
+        label, point = _expected_point(e.about, body)
+        moments, _ = principal_axes(props.inertia_about(point))
+        checks.append(_compare("moments", sorted(e.value), moments, e.tol, labels["inertia"], label))
+    if expect.inertia is not None:
+        e = expect.inertia
+        label, point = _expected_point(e.about, body)
+        checks.append(
+            _compare("inertia", e.value, props.inertia_about(point), e.tol, labels["inertia"], label)
+        )
+    return checks
