@@ -353,7 +353,7 @@ def _cells_intact(table, console) -> bool:
         for line in console.render_lines(table, console.options, pad=False)
     ]
     for column in table.columns:
-        for cell in column._cells:
+        for cell in column.cells:
             text = (
                 cell.plain
                 if isinstance(cell, Text)
@@ -402,7 +402,7 @@ def stacked(table, width: int):
     from rich.text import Text
 
     headers = [_plain(column.header) for column in table.columns]
-    rows = list(zip(*[[_plain(cell) for cell in column._cells] for column in table.columns]))
+    rows = list(zip(*[[_plain(cell) for cell in column.cells] for column in table.columns]))
     lines = [_line(table.title)] if table.title else []
     if getattr(table, "rbi_layout", None) == "quantities":
         for name, unit, value in rows:
