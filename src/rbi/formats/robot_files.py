@@ -131,25 +131,26 @@ def robot_file_problems(path: str, package_paths: dict | None = None) -> list[st
 # --- specs ---------------------------------------------------------------------------------------
 
 
+def custom_part(name: str, mass: float, center_of_mass, inertia) -> dict[str, Any]:
+    """A spec ``custom`` part (plain dict): ``mass``, ``center_of_mass`` and the six entries of
+    ``inertia`` (3, 3), about the centre of mass, in the units and axes the caller gives."""
+    I = np.asarray(inertia, dtype=float)
+    six = {"ixx": I[0, 0], "iyy": I[1, 1], "izz": I[2, 2], "ixy": I[0, 1], "ixz": I[0, 2], "iyz": I[1, 2]}
+    return {
+        "name": name,
+        "shape": "custom",
+        "mass": float(mass),
+        "center_of_mass": [float(v) for v in center_of_mass],
+        "inertia": {key: float(value) for key, value in six.items()},
+    }
+
+
 def link_spec(robot: RobotModel, link: Link) -> dict[str, Any]:
     """The rbi spec (plain dict, SI) of one link: one custom part with the link's mass, centre
     of mass, inertia about it in the inertial frame's axes, and the rotation into link axes."""
     inertial = link.inertial
-    I = inertial.written_inertia
-    part: dict[str, Any] = {
-        "name": link.name or f"{robot.link_word}{link.index}",
-        "shape": "custom",
-        "mass": float(inertial.mass),
-        "center_of_mass": [float(v) for v in inertial.properties.center_of_mass],
-        "inertia": {
-            "ixx": float(I[0, 0]),
-            "iyy": float(I[1, 1]),
-            "izz": float(I[2, 2]),
-            "ixy": float(I[0, 1]),
-            "ixz": float(I[0, 2]),
-            "iyz": float(I[1, 2]),
-        },
-    }
+    name = link.name or f"{robot.link_word}{link.index}"
+    part = custom_part(name, inertial.mass, inertial.properties.center_of_mass, inertial.written_inertia)
     rotation = inertial.spec_rotation()
     if rotation is not None:
         part["rotation"] = rotation

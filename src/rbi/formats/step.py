@@ -41,9 +41,6 @@ MAX_STEP_BYTES = 32 * 2**20
 loaded and a 0.79 MB file (a plate with 200 holes) adds 7 MB and 2.5 s of CPU to read and
 integrate, so a file at the cap stays near 0.6 GB and some 100 s."""
 
-STEP_SUFFIXES = (".step", ".stp")
-"""File extensions rbi reads as STEP."""
-
 CAD_EXTRA_HINT = "pip install 'rbi[cad]'"
 """How to get OpenCascade's wheels (the optional extra ``cad``: cadquery-ocp-novtk)."""
 
@@ -96,11 +93,6 @@ class StepFile(NamedTuple):
     solids: tuple[StepSolid, ...]
     unit: str
     unit_metres: float
-
-
-def is_step_path(path: str | Path) -> bool:
-    """Whether ``path`` names a STEP file by its extension (``.step``, ``.stp``, any case)."""
-    return Path(path).suffix.lower() in STEP_SUFFIXES
 
 
 def read_step(path: Path) -> StepFile:

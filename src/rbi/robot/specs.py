@@ -8,6 +8,7 @@ from __future__ import annotations
 from typing import Any
 
 from rbi.formats.robot import Pose, RobotModel
+from rbi.formats.robot_files import custom_part
 
 
 def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tuple[dict[str, Any], list[str]]:
@@ -29,23 +30,7 @@ def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tup
             continue
         pose = to_frame.then(poses[link.index])
         placed = inertial.properties.transformed(pose.rotation, pose.translation)
-        I = placed.inertia_about_com
         unique = name if name not in used else f"{name}_{link.index}"
         used.add(unique)
-        parts.append(
-            {
-                "name": unique,
-                "shape": "custom",
-                "mass": float(inertial.mass),
-                "center_of_mass": [float(v) for v in placed.center_of_mass],
-                "inertia": {
-                    "ixx": float(I[0, 0]),
-                    "iyy": float(I[1, 1]),
-                    "izz": float(I[2, 2]),
-                    "ixy": float(I[0, 1]),
-                    "ixz": float(I[0, 2]),
-                    "iyz": float(I[1, 2]),
-                },
-            }
-        )
+        parts.append(custom_part(unique, inertial.mass, placed.center_of_mass, placed.inertia_about_com))
     return {"name": model.name or "robot", "units": {"length": "m", "mass": "kg"}, "parts": parts}, left_out

@@ -12,9 +12,6 @@ import numpy as np
 
 from rbi.sim.scene import Scene
 
-CHAPTER_RTOL = 1e-8
-CHAPTER_ATOL = 1e-10
-
 
 def python_rhs(scene: Scene):
     """``f(t, y)`` in the chapter's style: rotation matrix from scipy, torque of gravity at the

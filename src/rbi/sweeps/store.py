@@ -351,7 +351,6 @@ class RowCheck:
         self.what = what
         self.count = 0
         self.swept = len(plan.names)
-        self.results = columns[1 + self.swept :]
         self.tilts = [i for i, c in enumerate(columns) if c.endswith("_tilt_deg") and i > self.swept]
 
     def check(self, rows: list[list[Any]], text: bool, keep: bool) -> list[list[Any]]:
