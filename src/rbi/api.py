@@ -863,33 +863,27 @@ def simulate(
     spin_axis: str | Sequence[float] | None = None,
 ) -> Trajectory:
     """Simulate the body: a heavy top on its pivot (a spec with ``pivot``) or a torque-free body
-    about its centre of mass — the run ``rbi simulate`` makes with the same settings.
+    about its centre of mass — the run ``rbi simulate`` makes with the same settings. Returns
+    the `Trajectory`.
 
     Args:
         body: the `Body`.
-        spin: initial spin about the spin axis, rad/s (ω = spin × the unit spin axis).
-        omega: initial angular velocity (3,), body axes, rad/s (instead of ``spin``).
-        tilt_deg: the nudge: the body is turned at t = 0 by this angle (degrees) about the
-            world axis ``tilt_axis`` (``"x"`` or ``"y"``). The tilt the trajectory reports is
-            the angle of the spin axis from the upward vertical.
-        duration: simulated time, s.
-        samples: samples, equally spaced from t = 0 to ``duration`` (1: only the end).
-        gravity: gravity's magnitude in m/s² (SI whatever the spec's units); 0 switches it
-            off; None is 9.81.
+        spin, omega: initial spin about the spin axis, rad/s; or the initial angular velocity
+            (3,), body axes, rad/s.
+        tilt_deg, tilt_axis: the nudge: the body turned at t = 0 by this angle (degrees) about
+            the world axis ``"x"`` or ``"y"``. The tilt reported is the spin axis's from the vertical.
+        duration, samples: simulated time, s; samples, equally spaced from t = 0 (1: only the end).
+        gravity: m/s² (SI whatever the spec's units); 0 switches it off; None is 9.81.
         method: ``"default"`` (compiled adaptive DOP853), ``"rk45"``, ``"dop853"`` (scipy) or
             ``"exact"`` (closed forms, where they apply).
         rtol: integrator tolerance (None: 1e-12 for default, 1e-8 for the scipy methods).
-        max_steps: most integration steps (None: rbi's default budget).
+        max_steps, check_budget: most integration steps (None: rbi's `DEFAULT_MAX_STEPS`);
+            refuse a run estimated past them before it starts (they stop it in any case).
         error_estimate: estimate the error with a second run 1000× tighter.
-        check_budget: refuse a run estimated to exceed ``max_steps`` before it starts (the
-            budget stops it in any case).
         progress: called now and then with the fraction done (0…1).
         spin_axis: the body-frame axis of ``spin`` and of the reported tilt and precession:
-            ``"x"``, ``"y"``, ``"z"`` (``"-y"``: reversed) or a direction (3,); None for the spec's ``spin_axis``,
-            else `Body.spin_axis`'s default (the symmetry axis, else z).
-
-    Returns:
-        The `Trajectory`.
+            ``"x"``, ``"y"``, ``"z"`` (``"-y"``: reversed) or a direction (3,); None for the
+            spec's ``spin_axis``, else `Body.spin_axis`'s default.
 
     Raises:
         ValueError: a setting is out of range, named as this function's parameter
@@ -899,21 +893,16 @@ def simulate(
     from rbi.runs.run import check_samples, prepare_run
 
     check_samples(samples)
-    prepared = prepare_run(
-        _loaded(body, "body"),
-        spin=spin,
-        omega=omega,
-        tilt_deg=tilt_deg,
-        tilt_axis=tilt_axis,
-        gravity=gravity,
-        duration=duration,
-        method=method,
-        rtol=rtol,
-        max_steps=max_steps,
-        check_budget=check_budget,
-        spin_axis=spin_axis,
+    run: dict[str, Any] = dict(
+        spin=spin, omega=omega, tilt_deg=tilt_deg, tilt_axis=tilt_axis, gravity=gravity
     )
-    run = prepared.simulate(samples, error_estimate=error_estimate, progress=progress)
+    run |= dict(duration=duration, method=method, rtol=rtol, max_steps=max_steps, check_budget=check_budget)
+    prepared = prepare_run(_loaded(body, "body"), spin_axis=spin_axis, **run)
+    return _trajectory(prepared.simulate(samples, error_estimate=error_estimate, progress=progress), body)
+
+
+def _trajectory(run: Any, body: Body) -> Trajectory:
+    """The `Trajectory` of a finished run (:class:`rbi.runs.run.SimulationRun`) of ``body``."""
     columns = run.columns
     return Trajectory(
         t=columns["t"],
@@ -954,20 +943,42 @@ class SweepTable(TableRepr):
     Attributes:
         columns: the column names: ``run``, the swept values (``spin``, ``tilt_deg``, each
             varied path), then the results.
+        count: the runs of the sweep; held: whether the table holds their rows (a sweep of
+            more than 100,000 runs keeps them in its ``out`` file only).
         name, units, warnings: of the nominal body.
         failed: how many runs failed (their ``status`` says why).
         spread: with ``mass_properties``, each quantity's percentiles (``p0``, ``p50``,
             ``p100``...) and standard deviation over the ok runs; else None.
     """
 
-    def __init__(self, columns: Sequence[str], rows: Sequence[Sequence[Any]], **about: Any) -> None:
-        self.columns: list[str] = list(columns)
-        self._rows = [list(row) for row in rows]
-        self.name: str | None = about.get("name")
-        self.units: dict[str, str] = dict(about.get("units") or {})
-        self.warnings: list[str] = list(about.get("warnings") or ())
-        self.spread: dict[str, dict[str, float]] | None = about.get("spread")
+    def __init__(self, study: Any, rows: Sequence[Sequence[Any]] | None) -> None:
+        nominal = study.nominal
+        self.columns: list[str] = list(study.columns)
+        self.count: int = study.plan.size
+        self.held = rows is not None
+        self._rows = [list(row) for row in rows or []]
+        self._study = study
+        self.name: str | None = nominal.name
+        self.units: dict[str, str] = dict(nominal.units)
+        self.warnings: list[str] = list(nominal.warnings)
+        mass_properties = study.settings.mass_properties and self.held
+        self.spread: dict[str, dict[str, float]] | None = (
+            study.spread(self._rows) if mass_properties else None
+        )
         self.failed = sum(1 for row in self._rows if row[-1] != "ok")
+
+    def plot(self, path: str | os.PathLike[str]) -> None:
+        """Draw the stability map at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib),
+        as ``rbi sweep --plot`` does: the largest tilt (degrees) over the first one or two
+        swept axes, and the nominal top's sleeping threshold (rad/s) when the first is the spin.
+        ValueError for a sweep of mass properties, with nothing swept, or whose rows are not held."""
+        from rbi.viz.plots import plot_map  # matplotlib loads only to draw
+
+        if not self.held:
+            raise ArgumentError("plot", "the map is drawn from the rows, and this table does not hold them")
+        plot_map(
+            self._study.stability_map(self._rows), _output(path, ("png", "svg", "pdf"), self._study.path)
+        )
 
     def __len__(self) -> int:
         return len(self._rows)
@@ -1026,7 +1037,7 @@ if TYPE_CHECKING:
 
 
 def sweep(
-    body: Body,
+    body: Body | str | os.PathLike[str],
     *,
     spin: AxisValues = 0.0,
     tilt_deg: AxisValues = 0.0,
@@ -1041,72 +1052,65 @@ def sweep(
     max_steps: int | None = None,
     spin_axis: str | Sequence[float] | None = None,
     workers: int | None = None,
+    dask: str | None = None,
     mass_properties: bool = False,
     check_budget: bool = True,
+    out: str | os.PathLike[str] | None = None,
+    resume: bool = False,
+    progress: Callable[[int, int], None] | None = None,
 ) -> SweepTable:
     """Many simulations of one body — a grid over spin, tilt and numbers of the spec, or Monte
-    Carlo draws — as ``rbi sweep`` runs them (on every core). One failed run never stops the
-    others: its row says why in ``status``.
+    Carlo draws — as ``rbi sweep`` runs them (on every core). A failed run never stops the
+    others: its row says why in ``status``. Returns a `SweepTable`.
 
     Args:
-        body: the `Body` (its spec is varied; files it names are read beside its path).
-        spin: initial spin about the spin axis, rad/s: one number, or the grid's values (a
-            sequence of numbers, or ``Grid(start, stop, count)`` for evenly spaced ones).
+        body: the `Body`, or its spec file's path (the spec is varied; files it names are read beside it).
+        spin: initial spin about the spin axis, rad/s: one number, the grid's values (numbers,
+            or ``Grid(start, stop, count)``), or a draw per run: ``Normal(mean, sd)``, ``Uniform(low, high)``.
         tilt_deg: the nudge at t = 0, degrees, given the same way.
-        vary: numbers of the spec to vary, path → values given as ``spin``'s, or a draw per
-            run: ``{"parts.bolt.mass": [0.01, 0.02, 0.03]}``,
-            ``{"parts.bolt.position[0]": Normal(0.04, 0.001)}`` or ``Uniform(low, high)``.
-        runs: Monte Carlo draws of every `Normal`/`Uniform` variation per grid point.
-        seed: seed of the draws (same seed, same rows).
-        duration, samples, rtol, gravity, tilt_axis, max_steps, spin_axis: as `simulate`
-            (per run; one spin axis for every run, the nominal body's unless given).
-        workers: cores to use (None: all).
-        mass_properties: simulate nothing; each row gives the mass properties (mass, centre of
-            mass, principal moments, principal-axis tilts) at the varied values.
-        check_budget: refuse a sweep estimated to exceed rbi's step budget (about four hours
-            of one core) before it starts.
-
-    Returns:
-        A `SweepTable`: ``run``, the swept values (``spin``, ``tilt_deg``, each varied path)
-        and the results — ``max_tilt_deg``, ``final_tilt_deg``, ``min_tilt_deg``,
-        ``precession_rate_deg_s``, ``energy_drift``, ``steps``, ``status`` (``"ok"`` or why the
-        run failed); with ``mass_properties``, ``mass``, ``com_*``, ``moment_*`` and
-        ``axis_*_tilt_deg`` instead.
+        vary: numbers of the spec, path → values given as ``spin``'s:
+            ``{"parts.bolt.mass": [0.01, 0.02]}``, ``{"parts.bolt.position[0]": Normal(0.04, 0.001)}``.
+        runs, seed: Monte Carlo draws of every `Normal`/`Uniform` per grid point; their seed.
+        duration, samples, rtol, gravity, tilt_axis, max_steps, spin_axis: as `simulate`'s (per
+            run; one spin axis for every run, the nominal body's unless given).
+        workers, dask: cores to use (None: all); or a Dask scheduler's address, or ``"local"``.
+        mass_properties: simulate nothing: each row gives the mass properties at the varied values.
+        check_budget: refuse a sweep estimated past rbi's step budget (about four core-hours).
+        out, resume, progress: stream the rows to a ``.csv`` or ``.parquet`` file as runs end
+            (past 100,000 runs, only there); continue the sweep already in it; called with
+            (runs done, runs).
 
     Raises:
         ValueError, TypeError: a setting or a variation is invalid (named as this function's
-            parameter), or the sweep has more than 100,000 runs.
+            parameter), or the sweep has more than 100,000 runs and no ``out``.
     """
     from rbi.sweeps.study import Study, SweepSettings, check_settings
 
-    loaded = _loaded(body, "body")
+    grid = (spin, tilt_deg, _variations(vary), runs, seed, duration, samples, rtol, gravity, tilt_axis)
+    settings = SweepSettings(*grid, max_steps, workers, dask, mass_properties, check_budget, spin_axis)
+    check_settings(settings)
+    path, raw = _spec_source(body)
+    target = None if out is None else _output(out, ("csv", "parquet"), path)
+    study = Study(path, raw, settings, rows_printed=out is None)
+    return SweepTable(study, study.run(target, resume, progress))
+
+
+def _variations(vary: Any) -> tuple[tuple[str, Any], ...]:
+    """`sweep`'s ``vary`` as (path, values) pairs."""
     if vary is not None and not isinstance(vary, Mapping):
         raise TypeError(f"vary: expected a mapping of spec paths to values, got {type(vary).__name__}")
-    settings = SweepSettings(
-        spin=spin,
-        tilt_deg=tilt_deg,
-        vary=tuple((str(path), value) for path, value in (vary or {}).items()),
-        runs=runs,
-        seed=seed,
-        duration=duration,
-        samples=samples,
-        rtol=rtol,
-        gravity=gravity,
-        tilt_axis=tilt_axis,
-        max_steps=max_steps,
-        workers=workers,
-        mass_properties=mass_properties,
-        check_budget=check_budget,
-        spin_axis=spin_axis,
-    )
-    check_settings(settings)
-    study = Study(loaded.path, body._raw, settings)
-    rows = study.run() or []
-    nominal = study.nominal
-    spread = study.spread(rows) if mass_properties else None
-    return SweepTable(
-        study.columns, rows, name=nominal.name, units=nominal.units, warnings=nominal.warnings, spread=spread
-    )
+    return tuple((str(path), value) for path, value in (vary or {}).items())
+
+
+def _spec_source(body: Any) -> tuple[str, Any]:
+    """`sweep`'s ``body`` as (path, parsed spec): a `Body`'s, or a spec file read (a sweep
+    validates each varied spec, not the file as it stands)."""
+    if isinstance(body, (str, os.PathLike)):
+        from rbi.spec.load import read_yaml
+
+        path = os.fsdecode(os.fspath(body))
+        return path, read_yaml(path)
+    return _loaded(body, "body").path, body._raw
 
 
 def audit(
@@ -1126,7 +1130,10 @@ def audit(
     """Audit a robot file (URDF ``.urdf``, SDF ``.sdf``, MJCF ``.xml``, or ``.xacro`` with the
     ``xacro`` extra) as ``rbi audit`` does: each link's declared mass properties against its own
     geometry, with flags, and the whole robot's totals. SI units; vectors and matrices in each
-    link's frame (totals: the root link's frame for URDF/SDF, the world for MJCF).
+    link's frame (totals: the root link's frame for URDF/SDF, the world for MJCF). Returns an
+    `AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``, ``.flags``),
+    ``.total``, ``.notes``, ``.exit_code`` (1 when a link has an error-level flag, else 0) and
+    ``.as_dict()`` (what ``rbi audit --format json`` prints).
 
     Args:
         robot_file: the file's path.
@@ -1139,17 +1146,12 @@ def audit(
             ``mesh``), ``"exact"``, ``"convex"`` (its hull) or ``"shell"`` (mass on the surface).
         joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
             metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
-        fix: also plan the fixed copy: ``report.fix.content`` (bytes), ``.changes``, ``.unfixable``.
-        out: with ``fix``, write the fixed copy there (``.urdf``, ``.sdf`` or ``.xml``; never a
+        fix, out: also plan the fixed copy (``report.fix.content``, bytes; ``.changes``,
+            ``.unfixable``); and write it at ``out`` (``.urdf``, ``.sdf`` or ``.xml``; never a
             file the robot reads), replaced atomically.
         allow_outside_paths: let the file name meshes and includes outside its folder; None:
             as an enclosing `outside_paths_allowed` block says (not allowed outside one).
         mesh_repair: close meshes' holes of three or four edges first (listed in ``report.notes``).
-
-    Returns:
-        An `AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``,
-        ``.flags``), ``.total``, ``.notes``, ``.exit_code`` (0, or 1 when a link has an
-        error-level flag) and ``.as_dict()`` (what ``rbi audit --format json`` prints).
 
     Raises:
         SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
@@ -1162,12 +1164,11 @@ def audit(
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
     target = None if out is None else _output(out, ("urdf", "sdf", "xml"), robot_file)
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
-    settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, density=density)
-    settings |= dict(material=material)
-    settings |= dict(mesh_inertia=mesh_inertia, joints=joints, fix=fix, mesh_repair=mesh_repair)
-    report = run_audit(robot_file, allow_outside_paths=allowed, **settings)
+    settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, material=material)
+    settings |= dict(density=density, mesh_inertia=mesh_inertia, joints=joints, mesh_repair=mesh_repair)
+    report = run_audit(robot_file, fix=fix, allow_outside_paths=allowed, **settings)
     if target is not None:
-        from rbi.robot.fix import check_out_not_read
+        from rbi.robot.fix import check_out_not_read  # the files the robot reads
 
         check_out_not_read(target.path, report.model)  # an include, a mesh or the robot file itself
         write_output(target, report.fix.content)
@@ -1442,4 +1443,12 @@ def __getattr__(name: str) -> Any:
         from rbi.sim.budget import DEFAULT_MAX_STEPS
 
         return DEFAULT_MAX_STEPS
+    if name == "MAX_ROWS_SHOWN":  # most runs a sweep holds in memory (more: in its out file only)
+        from rbi.sweeps.study import MAX_ROWS_SHOWN
+
+        return MAX_ROWS_SHOWN
+    if name == "available_cores":  # the cores this process may use: sweep's default workers
+        from rbi.sweeps.execute import available_cores
+
+        return available_cores
     raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")

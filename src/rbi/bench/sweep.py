@@ -74,7 +74,7 @@ def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
     )
     check_settings(settings)
     study = Study(str(spec), read_yaml(spec), settings, rows_printed=False)
-    study.result(study.run(output_target(str(out), "--out", ("csv", "parquet"), inputs=[str(spec)])))
+    study.run(output_target(str(out), "--out", ("csv", "parquet"), inputs=[str(spec)]))
 
 
 def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:

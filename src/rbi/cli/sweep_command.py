@@ -8,13 +8,11 @@ from typing import Annotated
 
 import typer
 
-from rbi.api import DEFAULT_MAX_STEPS
-from rbi.cli.extras import needs, require_matplotlib
+from rbi.api import DEFAULT_MAX_STEPS, SpecError
+from rbi.cli.extras import needs, require, require_matplotlib
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import ProgressBar, emit, number, to_csv
 from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
-from rbi.spec.errors import InputError
-from rbi.sweeps.study import MAX_ROWS_SHOWN
 
 SpinOption = Annotated[
     str,
@@ -166,56 +164,54 @@ def sweep(
       rbi sweep top_bolted.yaml --spin 200 --vary 'parts.bolt.mass=normal(0.02,0.002)' --runs 500
       rbi sweep top_bolted.yaml --mass-properties --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
-    from rbi.spec.load import read_yaml
-    from rbi.sweeps.study import Study, SweepSettings, check_settings
+    from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 
-    grid = dict(spin=spin, tilt=tilt, vary=vary, runs=runs, seed=seed, spin_axis=spin_axis)
-    each_run = dict(duration=duration, samples=samples, rtol=rtol, gravity=gravity, max_steps=max_steps)
-    where = dict(workers=workers, dask=dask, mass_properties=mass_properties, check_budget=not yes)
-    settings = SweepSettings(**_grid(**grid), **each_run, **where, tilt_axis=tilt_axis)
-    check_settings(settings)
+    settings = dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
+    settings |= dict(
+        vary=vary_option(vary or []), spin_axis=spin_axis_option(spin_axis), runs=runs, seed=seed
+    )
+    settings |= dict(duration=duration, samples=samples, rtol=rtol, gravity=gravity, tilt_axis=tilt_axis)
+    settings |= dict(max_steps=max_steps, dask=dask, mass_properties=mass_properties, check_budget=not yes)
     if resume and out is None:
-        raise InputError("--resume: needs --out, the file of the interrupted sweep")
-    out_target, plot_target = _targets(file, out, plot)
-    settings = _where_runs_go(settings)
-    study = Study(file, read_yaml(file), settings, rows_printed=out is None)
-    rows = _run(study, out_target, resume, out)
-    result = _result(study, rows, out, plot_target, plot)
+        raise SpecError("--resume: needs --out, the file of the interrupted sweep")
+    _check_targets(file, out, plot)
+    table = _run(file, settings | {"workers": _workers(workers, dask)}, out, resume)
+    result = _result(table, out, plot)
     if format == OutputFormat.csv:
         sys.stdout.write(to_csv(result.get("runs", [])))
         return
-    emit(format.value, result, lambda: _table(result, study.columns, rows, file))
+    emit(format.value, result, lambda: _table(result, table, file))
 
 
-def _grid(spin: str, tilt: str, vary: list[str] | None, spin_axis: str | None, **same) -> dict:
-    """The grid's options as numbers: ``--spin``, ``--tilt`` and each ``--vary`` text parsed
-    (``START:STOP:COUNT``, ``normal(..)``), ``--spin-axis`` ``X,Y,Z`` as three numbers."""
-    from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
+def _result(table, out: str | None, plot: str | None) -> dict:
+    """What `rbi sweep --format json` prints: name, units, count, columns and, when the rows
+    were held, the runs as objects and how many failed; the files written, the mass-properties
+    spread (--mass-properties). The map is drawn here."""
+    from rbi.api import MAX_ROWS_SHOWN
 
-    axes = dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
-    axes |= dict(vary=tuple(vary_option(vary or []).items()), spin_axis=spin_axis_option(spin_axis))
-    return axes | same
-
-
-def _result(study, rows, out: str | None, plot_target, plot: str | None) -> dict:
-    """The sweep's result: its rows (when printed), the files written, the mass-properties
-    spread (--mass-properties); the map is drawn here."""
-    result = study.result(rows)
+    result = dict(name=table.name, units=table.units, warnings=table.warnings, count=table.count)
+    result["columns"] = table.columns
+    if table.held:
+        result |= {"runs": table.records(), "failed": table.failed}
     if out is not None:
         result["out"] = out
-    if study.settings.mass_properties and rows is not None:
-        result["spread"] = study.spread(rows)
-    if plot_target is not None:
-        _plot(plot_target, study, rows)
+    if table.spread is not None:
+        result["spread"] = table.spread
+    if plot is not None:
+        if not table.held:
+            raise SpecError(
+                "--plot: the map is drawn from the rows of this run; with more than "
+                f"{MAX_ROWS_SHOWN:,} runs draw it from the --out file"
+            )
+        table.plot(plot)
         result["plot"] = plot
     return result
 
 
-def _targets(file: str, out: str | None, plot: str | None):
-    """The checked ``--out`` and ``--plot`` targets (None when not asked for); the optional
-    packages they need are required before any work."""
+def _check_targets(file: str, out: str | None, plot: str | None) -> None:
+    """Check ``--out`` and ``--plot`` before any work; the optional packages they need are
+    required then too."""
     from rbi.cli.output import check_distinct, output_target
-    from rbi.sweeps.study import require
 
     out_target = None if out is None else output_target(out, "--out", ("csv", "parquet"), inputs=[file])
     plot_target = (
@@ -226,87 +222,56 @@ def _targets(file: str, out: str | None, plot: str | None):
         require("pyarrow", "parquet", "--out FILE.parquet")
     if plot is not None:
         require_matplotlib()
-    return out_target, plot_target
 
 
-def _where_runs_go(settings):
+def _workers(workers: int | None, dask: str | None) -> int | None:
     """The optional packages --dask needs; --workers above the cores this process may use is
-    said, and the cores are used."""
-    import dataclasses
+    said, and the cores are used (a remote cluster has its own; past 1024 rbi.sweep refuses it)."""
+    from rbi.api import available_cores
 
-    from rbi.sweeps.execute import available_cores, usable_workers
-    from rbi.sweeps.study import require
-
-    if settings.dask is not None:
+    if dask is not None:
         require("distributed", "dask", "--dask")
-    if settings.dask == "local":
+    if dask == "local":
         require("cryptography", "dask", "--dask local")  # its private TLS certificates
-    if (
-        settings.workers is None
-        or settings.dask not in (None, "local")
-        or usable_workers(settings.workers) >= settings.workers
-    ):
-        return settings
+    if workers is None or dask not in (None, "local") or not available_cores() < workers <= 1024:
+        return workers
     from rbi.cli.terminal import say
 
-    say(
-        f"--workers {settings.workers}: this machine gives rbi {available_cores()} cores; using {available_cores()}"
-    )
-    return dataclasses.replace(settings, workers=usable_workers(settings.workers))
+    say(f"--workers {workers}: this machine gives rbi {available_cores()} cores; using {available_cores()}")
+    return available_cores()
 
 
-def _run(study, out_target, resume: bool, out: str | None):
+def _run(file: str, settings: dict, out: str | None, resume: bool):
     """Run the sweep with a progress bar on a terminal; on Ctrl-C or SIGTERM say how many runs
     --out kept (exit 130 or 143)."""
+    from rbi import api
     from rbi.cli.terminal import Terminated, say
 
+    bar = ProgressBar("sweep", "runs") if sys.stderr.isatty() else None
+    told: list[int] = []
+
+    def progress(done: int, total: int) -> None:
+        told[:] = [done, total]
+        if bar is not None:
+            bar.update(done, total)
+
     try:
-        return study.run(out_target, resume, progress=_progress if sys.stderr.isatty() else None)
+        return api.sweep(file, out=out, resume=resume, progress=progress, **settings)
     except (KeyboardInterrupt, Terminated) as stop:
-        if study.output is None:
+        if out is None or not told:
             raise
         word, code = ("terminated", 143) if isinstance(stop, Terminated) else ("interrupted", 130)
         say(
-            f"{word}: {study.output.done:,} of {study.plan.size:,} runs kept in {out}; run the same command with "
+            f"{word}: {told[0]:,} of {told[1]:,} runs kept in {out}; run the same command with "
             "--resume to compute the rest"
         )
         raise SystemExit(code) from None
+    finally:
+        if bar is not None:
+            bar.close()
 
 
-def _progress(total: int, done: int) -> ProgressBar:
-    """Runs done, with the time left, on standard error (the sweep's progress callback)."""
-    bar = ProgressBar("sweep", "runs", total=total)
-    bar.update(done)
-    return bar
-
-
-def _plot(target, study, rows) -> None:
-    from rbi.cli.output import write_output
-    from rbi.viz.plots import plot_stability_map
-
-    if rows is None:
-        raise InputError(
-            "--plot: the map is drawn from the rows of this run; with more than "
-            f"{MAX_ROWS_SHOWN:,} runs draw it from the --out file"
-        )
-    data = study.stability_map(rows)
-    write_output(
-        target,
-        writer=lambda path: plot_stability_map(
-            data["x"],
-            data["y"],
-            data["values"],
-            path,
-            x_label=data["x_label"],
-            y_label=data["y_label"],
-            threshold=data["threshold"],
-            title=data["title"],
-            format=target.format,
-        ),
-    )
-
-
-def _table(result, columns, rows, file):
+def _table(result, table, file):
     from rich.text import Text
 
     from rbi.cli import tables
@@ -319,7 +284,9 @@ def _table(result, columns, rows, file):
     if "plot" in result:
         notes.append(f"Map drawn in {result['plot']}.")
     parts = []
-    if rows is not None and not result.get("spread"):  # a tolerance study shows its spread instead
+    if table.held and not result.get("spread"):  # a tolerance study shows its spread instead
+        columns = table.columns
+        rows = [[record[name] for name in columns] for record in table.records()]
         parts.append(_runs_table(result, columns, rows, file))
     if result.get("spread"):
         parts.append(_spread_table(result))

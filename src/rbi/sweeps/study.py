@@ -105,17 +105,6 @@ def _nonzero(value: Any) -> bool:
     return value is not None and not (isinstance(value, numbers.Real) and value == 0)
 
 
-def require(module: str, extra: str, option: str) -> None:
-    """:class:`InputError` with the install command when an optional package is missing."""
-    import importlib.util
-
-    if importlib.util.find_spec(module) is None:
-        raise InputError(
-            f"{option}: needs the optional package {module!r}: pip install '.[{extra}]' from rbi's "
-            f"source folder, or pip install {module}"
-        )
-
-
 class Study:
     """The planned sweep of one parsed spec.
 
@@ -275,10 +264,10 @@ class Study:
         the sweep has at most :data:`MAX_ROWS_SHOWN` runs, else None (they are in the output).
 
         out_target: a checked output (:func:`rbi.files.output.output_target`) the rows stream
-        to, or None. resume: continue the sweep already there. progress: called with ``(total,
-        done before this run)`` once, returning an object whose ``update(done)`` is called as
-        rows arrive and ``close()`` at the end. An interruption (any exception) closes the
-        output keeping the rows written; :attr:`output` then tells how many.
+        to, or None. resume: continue the sweep already there. progress: called with ``(runs
+        done, runs)`` once the output is open, as rows arrive, and after an interruption (any
+        exception) with the runs the output kept: the output is closed keeping the rows
+        written, and :attr:`output` tells how many.
         """
         from rbi.sweeps import store
         from rbi.sweeps.execute import available_cores, chunk_ranges, run_dask, run_local
@@ -292,7 +281,8 @@ class Study:
             start = self.output.done
             if rows is not None:
                 rows.extend(kept)
-        bar = progress(self.plan.size, start) if progress is not None else None
+        tell = progress or (lambda done, total: None)
+        tell(start, self.plan.size)
         done = [start]
 
         def on_rows(new_rows):
@@ -301,8 +291,7 @@ class Study:
             if rows is not None:
                 rows.extend(new_rows)
             done[0] += len(new_rows)
-            if bar is not None:
-                bar.update(done[0])
+            tell(done[0], self.plan.size)
 
         try:
             ranges = chunk_ranges(start, self.plan.size, chunk)
@@ -313,28 +302,11 @@ class Study:
         except BaseException:
             if self.output is not None:
                 self.output.close()  # what was written is kept (a failed write has said how much)
+                tell(self.output.done, self.plan.size)
             raise
-        finally:
-            if bar is not None:
-                bar.close()
         if self.output is not None:
             self.output.finish()
         return rows
-
-    def result(self, rows: list[list[Any]] | None) -> dict[str, Any]:
-        """What `rbi sweep --format json` prints: name, units, count, columns and, when the rows
-        were held, the runs as objects, how many failed and (mass properties) their spread."""
-        result = {
-            "name": self.nominal.name,
-            "units": self.nominal.units,
-            "warnings": list(self.nominal.warnings),
-            "count": self.plan.size,
-            "columns": self.columns,
-        }
-        if rows is not None:
-            result["runs"] = [dict(zip(self.columns, r)) for r in rows]
-            result["failed"] = self.plan.size - sum(1 for r in rows if r[-1] == "ok")
-        return result
 
     def spread(self, rows: list[list[Any]]) -> dict[str, dict[str, float]]:
         """Percentiles and standard deviation of each mass property over the ok runs."""

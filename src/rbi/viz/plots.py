@@ -77,6 +77,27 @@ def plot_simulation(
     )
 
 
+def plot_map(data: dict, target) -> None:
+    """:func:`plot_stability_map` of a sweep's map ``data``
+    (:meth:`rbi.sweeps.study.Study.stability_map`) written at the checked output ``target``."""
+    from rbi.files.output import write_output
+
+    write_output(
+        target,
+        writer=lambda path: plot_stability_map(
+            data["x"],
+            data["y"],
+            data["values"],
+            path,
+            x_label=data["x_label"],
+            y_label=data["y_label"],
+            threshold=data["threshold"],
+            title=data["title"],
+            format=target.format,
+        ),
+    )
+
+
 def _angle_panel(angle_ax, t: np.ndarray, q: np.ndarray, columns: dict, principal_axes, inertia) -> None:
     """The spin axis's tilt against time (a top), or each principal axis's angle to the angular
     momentum (a free body: ``principal_axes`` rows and ``inertia`` about the CoM, body frame)."""
