@@ -613,29 +613,14 @@ class Body(TableRepr):
                 f"{self.path}: the inertia about {about!r} is singular: the body cannot be given an "
                 "angular acceleration"
             )
-        vectors = {
-            name: None if value is None else np.array(vector_value(value, name))
-            for name, value in (
-                ("alpha", alpha),
-                ("point_acceleration", point_acceleration),
-                ("force", force),
-                ("torque", torque),
-            )
-        }
+        given = dict(alpha=alpha, point_acceleration=point_acceleration, force=force, torque=torque)
+        vectors = {k: None if v is None else np.array(vector_value(v, k)) for k, v in given.items()}
         w = np.array(vector_value(omega, "omega"))
-        acceleration, wrench, held = newton_euler_about(
+        (linear, angular), (f, t), held = newton_euler_about(
             props, inertia, props.center_of_mass - point, w, about_com=about_com, **vectors
         )
-        return Dynamics(
-            "inverse" if alpha is not None else "forward",
-            point,
-            w,
-            acceleration.angular,
-            acceleration.linear,
-            wrench.force,
-            wrench.torque,
-            held,
-        )
+        mode = "inverse" if alpha is not None else "forward"
+        return Dynamics(mode, point, w, angular, linear, f, t, held)
 
     def inertial_xml(
         self, to: str, *, name: str | None = None, document: bool = False, diagonal: bool = False
@@ -660,30 +645,17 @@ class Body(TableRepr):
             raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {to!r}")
         if diagonal and to != "mjcf":
             raise ArgumentError("diagonal", "only for to='mjcf' (URDF and SDF take the full matrix)")
-        units = self.units
+        length, mass = self.units["length"], self.units["mass"]
+        spec_units = "" if (length, mass) == ("m", "kg") else f"; spec units were {length}, {mass}"
         comment = (
-            f"rbi export of {Path(self.path).name}: SI units (kg, m, kg·m²); inertia about the centre of mass, body axes"
-            + (
-                ""
-                if (units["length"], units["mass"]) == ("m", "kg")
-                else f"; spec units were {units['length']}, {units['mass']}"
-            )
+            f"rbi export of {Path(self.path).name}: SI units (kg, m, kg·m²); "
+            f"inertia about the centre of mass, body axes{spec_units}"
         )
-        si = self.in_units("m", "kg").mass_properties
         if name is None:
-            name = self.name or (
-                "body" if self.path in ("<stdin>", "<string>", "<dict>") else Path(self.path).stem
-            )
-        return export_xml(
-            to,
-            si.mass,
-            si.center_of_mass,
-            si.inertia_about_com,
-            name=name,
-            document=document,
-            diagonal=diagonal,
-            comment=comment,
-        )
+            text = self.path in ("<stdin>", "<string>", "<dict>")
+            name = self.name or ("body" if text else Path(self.path).stem)
+        si = self.in_units("m", "kg").mass_properties
+        return export_xml(to, si, name=name, document=document, diagonal=diagonal, comment=comment)
 
     def __repr__(self) -> str:
         units = self.units

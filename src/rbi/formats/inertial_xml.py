@@ -140,21 +140,16 @@ _DOCUMENTS = {"urdf": _urdf_document, "mjcf": _mjcf_document, "sdf": _sdf_docume
 
 
 def export_xml(
-    to: str,
-    mass: float,
-    com,
-    inertia,
-    *,
-    name: str,
-    document: bool = False,
-    diagonal: bool = False,
-    comment: str | None = None,
+    to: str, props, *, name: str, document: bool = False, diagonal: bool = False, comment: str | None = None
 ) -> str:
-    """The XML text for format ``to`` (``urdf``, ``mjcf`` or ``sdf``): the inertial element,
-    or a minimal document holding it; ``comment`` goes first as an XML comment. Control
+    """The XML text for format ``to`` (``urdf``, ``mjcf`` or ``sdf``) of ``props`` (a
+    :class:`~rbi.core.mass.MassProperties` in SI units): the inertial element, or a minimal
+    document holding it; ``comment`` goes first as an XML comment. Control
     characters in ``name`` and ``comment`` are written as visible escapes (XML 1.0 cannot hold
     them, and the text may be printed on a terminal)."""
-    element = inertial_element(to, mass, com, inertia, diagonal=diagonal)
+    element = inertial_element(
+        to, props.mass, props.center_of_mass, props.inertia_about_com, diagonal=diagonal
+    )
     if document:
         element = _DOCUMENTS[to](visible(name), element)
     ET.indent(element, space="  ")

@@ -49,18 +49,8 @@ def _compare(
     got = np.asarray(actual, dtype=float)
     allowed = tolerance_allowed(tol, float(np.max(np.abs(want))))
     deviation = np.abs(got - want)
-    return Check(
-        quantity,
-        unit,
-        want,
-        got,
-        float(np.max(deviation)),
-        tol,
-        allowed,
-        bool(np.all(deviation <= allowed)),
-        deviation,
-        about,
-    )
+    passed = bool(np.all(deviation <= allowed))
+    return Check(quantity, unit, want, got, float(np.max(deviation)), tol, allowed, passed, deviation, about)
 
 
 def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
