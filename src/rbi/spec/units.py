@@ -36,14 +36,6 @@ def unit_labels(length: str, mass: str) -> dict[str, str]:
 # --- converting results to other units (`--units`, exports) --------------------------------
 
 
-def scale_factors(from_units: tuple[str, str], to_units: tuple[str, str]) -> tuple[float, float]:
-    """Factors (length, mass) that turn numbers in ``from_units`` into ``to_units``, each a
-    (length, mass) pair."""
-    length = LENGTH_UNITS_IN_M[from_units[0]] / LENGTH_UNITS_IN_M[to_units[0]]
-    mass = MASS_UNITS_IN_KG[from_units[1]] / MASS_UNITS_IN_KG[to_units[1]]
-    return length, mass
-
-
 def convert_body(body, length_unit: str, mass_unit: str):
     """The same :class:`~rbi.spec.translate.LoadedBody` with every number in other units: masses,
     centres of mass, inertias (mass·length²) and the pivot. The body's own units are
@@ -54,7 +46,8 @@ def convert_body(body, length_unit: str, mass_unit: str):
 
     if (body.length_unit, body.mass_unit) == (length_unit, mass_unit):
         return body
-    L, M = scale_factors((body.length_unit, body.mass_unit), (length_unit, mass_unit))
+    L = LENGTH_UNITS_IN_M[body.length_unit] / LENGTH_UNITS_IN_M[length_unit]
+    M = MASS_UNITS_IN_KG[body.mass_unit] / MASS_UNITS_IN_KG[mass_unit]
 
     def element(e):
         return type(e)(
