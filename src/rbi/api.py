@@ -36,10 +36,13 @@ from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.text import csv_lines, number, visible
 
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's modules load then)
     from rbi.robot.audit import AuditReport
+    from rbi.sim.budget import DEFAULT_MAX_STEPS
     from rbi.spec.from_step import StepImport
+    from rbi.sweeps.execute import available_cores
     from rbi.sweeps.plan import Grid, Normal, Uniform
+    from rbi.sweeps.study import MAX_ROWS_SHOWN
 
 __all__ = [
     "load",
@@ -64,6 +67,9 @@ __all__ = [
     "import_robot",
     "RobotImport",
     "ImportedLink",
+    "DEFAULT_MAX_STEPS",
+    "MAX_ROWS_SHOWN",
+    "available_cores",
     "SpecError",
     # the CLI's tools, shared with every caller: errors, the checked file writer, text for people
     "ArgumentError",

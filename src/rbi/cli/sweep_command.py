@@ -345,18 +345,9 @@ def _spread_table(result):
     spread.add_column("unit")
     for name in ("min", "median", "max", "std"):
         spread.add_column(name, justify="right")
-    labels = {"mass": result["units"]["mass"], "com_x": result["units"]["length"]}
+    length, mass = result["units"]["length"], result["units"]["mass"]
+    prefixed = {"mass": mass, "com": length, "moment": f"{mass}·{length}²"}  # mass, com_x, moment_1 ...
     for name, stats in result["spread"].items():
-        unit = (
-            UNITS.get(name)
-            or labels.get(name)
-            or (
-                ""
-                if not name.startswith(("com_", "moment_"))
-                else result["units"]["length"]
-                if name.startswith("com_")
-                else f"{result['units']['mass']}·{result['units']['length']}²"
-            )
-        )
+        unit = UNITS.get(name) or prefixed.get(name.split("_")[0], "")
         spread.add_row(name, unit, *[number(stats[k], 4) for k in ("p0", "p50", "p100", "std")])
     return spread
