@@ -155,24 +155,13 @@ def momentum(
 def _momentum_table(body, result: dict, about_label: str):
     """The table of ``rbi momentum``'s result."""
     from rbi.cli import tables
-    from rbi.cli.mass_reports import title
-    from rbi.cli.render import body_size
+    from rbi.cli.mass_reports import place_rows, title
 
     labels = body.unit_labels
     return tables.quantities(
         title(body, f"momentum about {about_label}"),
         [
-            ("mass", labels["mass"], number(result["mass"], 8)),
-            (
-                "centre of mass",
-                labels["length"],
-                tables.vector(result["center_of_mass"], body_size(body)),
-            ),
-            (
-                f"about ({about_label})",
-                labels["length"],
-                tables.vector(result["about"], body_size(body)),
-            ),
+            *place_rows(body, about_label, result["about"]),
             ("ω (body axes)", "rad/s", tables.vector(result["omega"])),
             ("v of centre of mass", labels["velocity"], tables.vector(result["com_velocity"])),
             ("angular momentum h", labels["angular_momentum"], tables.vector(result["angular_momentum"])),

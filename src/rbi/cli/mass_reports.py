@@ -56,6 +56,19 @@ def with_product_sign(inertia, sign: str):
     raise ValueError(f"unknown products sign {sign!r} (expected one of {PRODUCT_SIGNS})")
 
 
+def place_rows(body: api.Body, about_label: str, point) -> list[tuple[str, str, str]]:
+    """The rows every mass-properties table starts with: the mass, the centre of mass and the
+    ``--about`` point (a coordinate below 1e-12 of the body's size printed 0)."""
+    from rbi.cli import tables
+
+    labels, size = body.unit_labels, body_size(body)
+    return [
+        ("mass", labels["mass"], number(body.mass, 8)),
+        ("centre of mass", labels["length"], tables.vector(body.center_of_mass, size)),
+        (f"about ({about_label})", labels["length"], tables.vector(point, size)),
+    ]
+
+
 def title(body, what: str) -> str:
     return f"{body.name or body.path} — {what}"
 
@@ -103,9 +116,7 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
         labels = body.unit_labels
         frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
         rows = [
-            ("mass", labels["mass"], number(body.mass, 8)),
-            ("centre of mass", labels["length"], tables.vector(body.center_of_mass, body_size(body))),
-            (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body))),
+            *place_rows(body, about_label, point),
         ]
         if direction is not None:
             rows += [
@@ -154,11 +165,7 @@ def _principal_of(file: str, about: str, units: str | None):
         return tables.stack(
             tables.quantities(
                 title(body, "principal"),
-                [
-                    ("mass", labels["mass"], number(body.mass, 8)),
-                    ("centre of mass", labels["length"], tables.vector(body.center_of_mass, body_size(body))),
-                    (f"about ({about_label})", labels["length"], tables.vector(point, body_size(body))),
-                ],
+                place_rows(body, about_label, point),
             ),
             t,
         )
