@@ -71,6 +71,7 @@ def animate(
     from rbi.cli.output import output_target
 
     settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
+    settings |= dict(duration=duration, rtol=rtol, max_steps=max_steps, speed=speed, fps=fps)
     target = output_target(out, "--out", ("html", "gif"), inputs=[file])
     if target.format == "gif":
         require_matplotlib("--out")
@@ -78,17 +79,7 @@ def animate(
     say_warnings(body.warnings)
     progress = progress_bar("gif", "frames") if target.format == "gif" else None
     try:
-        made = api.animate(
-            body,
-            out,
-            speed=speed,
-            fps=fps,
-            progress=progress.update if progress else None,
-            duration=duration,
-            rtol=rtol,
-            max_steps=max_steps,
-            **settings,
-        )
+        made = api.animate(body, out, progress=progress.update if progress else None, **settings)
     finally:
         if progress is not None:
             progress.close()

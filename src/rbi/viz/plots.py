@@ -78,24 +78,11 @@ def plot_simulation(
 
 
 def plot_map(data: dict, target) -> None:
-    """:func:`plot_stability_map` of a sweep's map ``data``
-    (:meth:`rbi.sweeps.study.Study.stability_map`) written at the checked output ``target``."""
+    """:func:`plot_stability_map` of a sweep's map ``data`` (its keyword arguments,
+    :meth:`rbi.sweeps.study.Study.stability_map`) written at the checked output ``target``."""
     from rbi.files.output import write_output
 
-    write_output(
-        target,
-        writer=lambda path: plot_stability_map(
-            data["x"],
-            data["y"],
-            data["values"],
-            path,
-            x_label=data["x_label"],
-            y_label=data["y_label"],
-            threshold=data["threshold"],
-            title=data["title"],
-            format=target.format,
-        ),
-    )
+    write_output(target, writer=lambda path: plot_stability_map(path=path, format=target.format, **data))
 
 
 def _angle_panel(angle_ax, t: np.ndarray, q: np.ndarray, columns: dict, principal_axes, inertia) -> None:
@@ -179,8 +166,8 @@ def _energy_panel(energy_ax, t: np.ndarray, columns: dict, energy_unit: str) -> 
 
 
 def plot_stability_map(
-    xs,
-    ys,
+    x,
+    y,
     values,
     path: str,
     x_label: str,
@@ -197,7 +184,7 @@ def plot_stability_map(
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
 
-    xs = np.asarray(xs, dtype=float)
+    xs, ys = np.asarray(x, dtype=float), y
     values = np.array([np.nan if v is None else float(v) for v in values])
     finite = np.isfinite(values)
     fig, ax = plt.subplots(figsize=(8, 5.2))
