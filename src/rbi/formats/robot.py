@@ -10,6 +10,7 @@ for prismatic/slide). Geometry poses are in the link frame. SI units throughout 
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass, field
@@ -238,22 +239,47 @@ class Where:
 
 def numbers(where: Where, text: str | None, what: str, count: int | tuple[int, ...]) -> list[float]:
     """Whitespace-separated plain finite decimals (no NaN, inf, hex or underscores)."""
-    counts = (count,) if isinstance(count, int) else count
+    values = _plain_numbers(text or "")
+    if values is not None and (len(values) == count if isinstance(count, int) else len(values) in count):
+        return list(values)
     pieces = (text or "").split()
-    expected = " or ".join(str(c) for c in counts)
-    if len(pieces) not in counts:
+    if len(pieces) != count if isinstance(count, int) else len(pieces) not in count:
+        expected = " or ".join(str(c) for c in ((count,) if isinstance(count, int) else count))
         raise where.error(f"{what}: expected {expected} number(s), got {len(pieces)} ({short(text)!r})")
-    values = []
+    raise _number_error(where, what, pieces)
+
+
+def _plain_numbers(text: str) -> tuple[float, ...] | None:
+    """The numbers of ``text`` when each is a plain finite decimal, not subnormal, else None; short texts are
+    remembered (robot files repeat ``0 0 0``, ``1 0 0`` and their like many times over)."""
+    if len(text) <= 64:
+        return _remembered_numbers(text)
+    return _read_numbers(text)
+
+
+def _read_numbers(text: str) -> tuple[float, ...] | None:
+    pieces = text.split()
+    if all(map(_NUMBER.match, pieces)):
+        values = tuple(map(float, pieces))
+        if all(map(math.isfinite, values)) and not any(map(subnormal_problem, values)):
+            return values
+    return None
+
+
+_remembered_numbers = functools.lru_cache(maxsize=4096)(_read_numbers)
+
+
+def _number_error(where: Where, what: str, pieces: list[str]) -> InputError:
+    """The error for the first of ``pieces`` that is not a plain finite decimal."""
     for piece in pieces:
         if not _NUMBER.match(piece):
-            raise where.error(f"{what}: must be a finite number (got {short(piece)!r})")
+            return where.error(f"{what}: must be a finite number (got {short(piece)!r})")
         value = float(piece)
         if not math.isfinite(value):
-            raise where.error(f"{what}: must be a finite number (got {short(piece)!r}, too large)")
+            return where.error(f"{what}: must be a finite number (got {short(piece)!r}, too large)")
         if problem := subnormal_problem(value):
-            raise where.error(f"{what}: {problem}")
-        values.append(value)
-    return values
+            return where.error(f"{what}: {problem}")
+    raise AssertionError(f"{what}: every number is fine")  # only called when one is not
 
 
 def number(where: Where, text: str | None, what: str, default: float | None = None) -> float:

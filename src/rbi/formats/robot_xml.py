@@ -63,21 +63,51 @@ _DECLARATION = re.compile(rb"^<\?xml[^>]*?encoding\s*=\s*([\"'])([^\"']*)\1", re
 _BOMS = ((codecs.BOM_UTF8, "utf-8"), (codecs.BOM_UTF16_LE, "utf-16-le"), (codecs.BOM_UTF16_BE, "utf-16-be"))
 
 
-@dataclass(eq=False)
 class XmlElement:
     """One element: ``tag`` without namespace, ``attrib`` as written, ``text`` the character data
     directly inside it (stripped), ``children`` in order, and its span ``start:end`` in
-    :attr:`XmlDocument.text` (UTF-8 bytes) from ``<`` to the closing ``>``; ``line`` is 1-based."""
+    :attr:`XmlDocument.text` (UTF-8 bytes) from ``<`` to the closing ``>``; ``line`` is 1-based.
+    ``end`` and ``text`` are worked out when first asked for (a robot file has a million elements
+    and most are never asked)."""
 
-    tag: str
-    attrib: dict[str, str]
-    line: int
-    start: int
-    end: int = -1
-    text: str = ""
-    children: list[XmlElement] = field(default_factory=list)
-    parent: XmlElement | None = None
-    source: str | None = None
+    __slots__ = (
+        "tag",
+        "attrib",
+        "line",
+        "start",
+        "children",
+        "parent",
+        "source",
+        "_pieces",
+        "_close",
+        "_bytes",
+    )
+
+    def __init__(
+        self, tag: str, attrib: dict[str, str], line: int, start: int, parent: XmlElement | None = None
+    ):
+        self.tag, self.attrib, self.line, self.start, self.parent = tag, attrib, line, start, parent
+        self.children: list[XmlElement] = []
+        self.source: str | None = None
+        self._pieces: list[str] | None = None  # character data directly inside, as expat gave it
+        self._close = -1  # byte index of the end tag (or of the empty element's one tag)
+        self._bytes = b""  # the document text the indices are in
+
+    @property
+    def text(self) -> str:
+        return "".join(self._pieces).strip() if self._pieces else ""
+
+    @text.setter
+    def text(self, value: str) -> None:
+        self._pieces = [value]
+
+    @property
+    def end(self) -> int:
+        """Index just past the element's last ``>`` in the document text."""
+        opening_end = _tag_end(self._bytes, self.start)
+        if self._bytes[opening_end - 2 : opening_end] == b"/>":
+            return opening_end  # <tag .../>: its one tag is the whole element
+        return _tag_end(self._bytes, self._close)
 
     def get(self, key: str, default: str | None = None) -> str | None:
         return self.attrib.get(key, default)
@@ -102,6 +132,9 @@ class XmlElement:
 
     def __iter__(self):
         return iter(self.children)
+
+    def __repr__(self) -> str:
+        return f"XmlElement({self.tag!r}, line {self.line})"
 
 
 @dataclass
@@ -226,71 +259,15 @@ def _refuse_huge_tokens(path: str, text: bytes) -> None:
 
 
 def _parse(path: str, text: bytes) -> XmlElement:
+    """The element tree of ``text`` (UTF-8); InputError for malformed or refused XML."""
     from xml.parsers import expat
 
     _refuse_huge_tokens(path, text)
     parser = expat.ParserCreate(encoding="utf-8")
     parser.buffer_text = True
     parser.buffer_size = 1 << 20
-    stack: list[XmlElement] = []
-    pieces: list[list[str]] = []
-    result: list[XmlElement] = []
-
-    def start(tag, attrib):
-        if len(stack) >= MAX_DEPTH:
-            raise InputError(
-                f"{path}: elements nested deeper than {MAX_DEPTH} levels; refused as not a "
-                "plausible robot description"
-            )
-        local = tag.rsplit("}", 1)[-1]
-        element = XmlElement(
-            local,
-            attrib,
-            parser.CurrentLineNumber,
-            parser.CurrentByteIndex,
-            parent=stack[-1] if stack else None,
-        )
-        if stack:
-            stack[-1].children.append(element)
-        else:
-            result.append(element)
-        stack.append(element)
-        pieces.append([])
-
-    def end(tag):
-        element = stack.pop()
-        element.text = "".join(pieces.pop()).strip()
-        opening_end = _tag_end(text, element.start)
-        if text[opening_end - 2 : opening_end] == b"/>":
-            element.end = opening_end  # <tag .../>: its one tag is the whole element
-        else:
-            element.end = _tag_end(text, parser.CurrentByteIndex)
-
-    def characters(data):
-        if pieces:
-            pieces[-1].append(data)
-
-    def refuse(*_args):
-        raise InputError(
-            f"{path}: refused: the file declares XML entities or external references; rbi does "
-            "not expand them"
-        )
-
-    def attribute_default(element_name, attribute, _type, default, _required):
-        if default is not None:
-            raise InputError(
-                f"{path}: refused: the document type declaration gives <{element_name}> a default "
-                f"{attribute}={default[:40]!r}; pybullet and urdfdom do not apply it, so the file means "
-                "different things to different readers: write the attribute where it is used"
-            )
-
-    parser.AttlistDeclHandler = attribute_default
-    parser.StartElementHandler = start
-    parser.EndElementHandler = end
-    parser.CharacterDataHandler = characters
-    parser.EntityDeclHandler = refuse
-    parser.UnparsedEntityDeclHandler = refuse
-    parser.ExternalEntityRefHandler = refuse
+    builder = _TreeBuilder(path, text, parser)
+    builder.attach(parser)
     try:
         for offset in range(0, max(len(text), 1), PARSE_CHUNK_BYTES):
             parser.Parse(text[offset : offset + PARSE_CHUNK_BYTES], False)
@@ -302,9 +279,71 @@ def _parse(path: str, text: bytes) -> XmlElement:
         ) from None
     except RecursionError:
         raise InputError(f"{path}: elements nested too deeply") from None
-    if not result:
+    if builder.root is None:
         raise InputError(f"{path}: empty XML document")
-    return result[0]
+    return builder.root
+
+
+class _TreeBuilder:
+    """expat's handlers: build the :class:`XmlElement` tree of one document, refusing what
+    :func:`read_xml` refuses (deep nesting, entities, DTD attribute defaults)."""
+
+    def __init__(self, path: str, text: bytes, parser):
+        self.path, self.text, self.parser = path, text, parser
+        self.stack: list[XmlElement] = []
+        self.root: XmlElement | None = None
+
+    def attach(self, parser) -> None:
+        parser.AttlistDeclHandler = self.attribute_default
+        parser.StartElementHandler = self.start
+        parser.EndElementHandler = self.end
+        parser.CharacterDataHandler = self.characters
+        parser.EntityDeclHandler = self.refuse
+        parser.UnparsedEntityDeclHandler = self.refuse
+        parser.ExternalEntityRefHandler = self.refuse
+
+    def start(self, tag: str, attrib: dict[str, str]) -> None:
+        stack, parser = self.stack, self.parser
+        if len(stack) >= MAX_DEPTH:
+            raise InputError(
+                f"{self.path}: elements nested deeper than {MAX_DEPTH} levels; refused as not a "
+                "plausible robot description"
+            )
+        if "}" in tag:
+            tag = tag.rsplit("}", 1)[-1]
+        parent = stack[-1] if stack else None
+        element = XmlElement(tag, attrib, parser.CurrentLineNumber, parser.CurrentByteIndex, parent)
+        element._bytes = self.text
+        if parent is not None:
+            parent.children.append(element)
+        elif self.root is None:
+            self.root = element
+        stack.append(element)
+
+    def end(self, _tag: str) -> None:
+        self.stack.pop()._close = self.parser.CurrentByteIndex
+
+    def characters(self, data: str) -> None:
+        if self.stack:
+            element = self.stack[-1]
+            if element._pieces is None:
+                element._pieces = [data]
+            else:
+                element._pieces.append(data)
+
+    def refuse(self, *_args) -> None:
+        raise InputError(
+            f"{self.path}: refused: the file declares XML entities or external references; rbi does "
+            "not expand them"
+        )
+
+    def attribute_default(self, element_name, attribute, _type, default, _required) -> None:
+        if default is not None:
+            raise InputError(
+                f"{self.path}: refused: the document type declaration gives <{element_name}> a default "
+                f"{attribute}={default[:40]!r}; pybullet and urdfdom do not apply it, so the file means "
+                "different things to different readers: write the attribute where it is used"
+            )
 
 
 _TAG_PIECE = re.compile(rb'"[^"]*"|\'[^\']*\'|>')

@@ -221,7 +221,16 @@ def _check_tree(model: RobotModel) -> None:
             f"{model.path}: {len(roots)} root links ({names}): no joint joins them; a URDF has one root "
             "link that every other hangs from (urdfdom and pybullet refuse it)"
         )
+    children: dict[str | None, list[str]] = {}
     for link in model.links:
+        children.setdefault(link.parent, []).append(link.name)
+    reached, queue = 0, list(children.get(None, []))
+    while queue:  # one pass from the root: every link reached means no loop
+        reached += 1
+        queue.extend(children.get(queue.pop(), []))
+    if reached == len(model.links):
+        return
+    for link in model.links:  # a loop: name the first link whose chain of parents runs into it
         seen = set()
         at = link
         while at.parent is not None:

@@ -30,7 +30,7 @@ Flags (code, level):
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -205,7 +205,7 @@ def _link_dict(each: LinkAudit) -> dict[str, Any]:
             "mass": each.declared.mass,
             "center_of_mass": each.declared.center_of_mass,
             "inertia_about_com": each.declared.inertia_about_com,
-            "moments": each.declared.moments,
+            "moments": _moments(each.declared),
         }
     if each.geometry is not None:
         g = each.geometry
@@ -214,7 +214,7 @@ def _link_dict(each: LinkAudit) -> dict[str, Any]:
             "mass": g.mass,
             "center_of_mass": g.center_of_mass,
             "inertia_about_com": g.inertia_about_com,
-            "moments": g.moments,
+            "moments": None if g.properties is None else _moments(g.properties),
             "implied_density": g.implied_density,
             "source": g.source,
         }
@@ -227,6 +227,22 @@ def _link_dict(each: LinkAudit) -> dict[str, Any]:
         "com_offset": each.com_offset,
         "flags": [flag.as_dict() for flag in each.flags],
     }
+
+
+def _moments(properties: MassProperties) -> np.ndarray:
+    """``properties.moments`` (kg·m², ascending) without the principal axes it also works out:
+    the eigenvalues of :func:`rbi.core.inertia.symmetric_eigen`, which for an inertia with no
+    products are its diagonal, sorted (a million-link report asks for two per link)."""
+    I = properties.inertia_about_com
+    diagonal = np.diagonal(I)
+    if not np.any(I[_OFF_DIAGONAL]) and np.all(np.abs(diagonal) < 1e300):
+        return diagonal[np.argsort(diagonal, kind="stable")]
+    from rbi.core.inertia import symmetric_eigen
+
+    return symmetric_eigen(I)[0]
+
+
+_OFF_DIAGONAL = ~np.eye(3, dtype=bool)
 
 
 def material_density(material: str | None, density: float | None) -> float | None:
@@ -261,7 +277,7 @@ def audit_model(
 ) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
     from rbi.robot.statics import joint_torques
-    from rbi.robot.tree import totals
+    from rbi.robot.tree import placement, totals
 
     if geometry not in GEOMETRY_CHOICES:
         raise InputError(f"--geometry: {geometry!r}: must be collision, visual or none")
@@ -270,23 +286,17 @@ def audit_model(
     carried = _carried_mass(model)
     repairs: list[str] = []
     links = [
-        audit_link(
-            model,
-            link,
-            geometry=geometry,
-            density=density,
-            mesh_inertia=mesh_inertia,
-            carries_mass=carried.get(link.index, False),
-            mesh_repair=mesh_repair,
-            notes=repairs,
-        )
+        _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
         for link in model.links
     ]
+    for result, known in zip(links, _known_in_bulk(links)):
+        result.flags += _flags(model, result.link, result, carried.get(result.link.index, False), known)
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
+    placed = placement(model, joints)
     return AuditReport(
         model,
         links,
-        totals(model, joints),
+        totals(model, joints, placed),
         notes,
         {
             "geometry": geometry,
@@ -295,7 +305,7 @@ def audit_model(
             "joints": dict(joints or {}),
             "mesh_repair": mesh_repair,
         },
-        joints=joint_torques(model, joints),
+        joints=joint_torques(model, joints, placed),
     )
 
 
@@ -370,6 +380,15 @@ def audit_link(
     mesh_repair: bool = False,
     notes: list[str] | None = None,
 ) -> LinkAudit:
+    """One link's audit (:func:`audit_model` audits them all, the costly numbers in bulk)."""
+    result = _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, notes)
+    result.flags += _flags(model, link, result, carries_mass, None)
+    return result
+
+
+def _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, notes) -> LinkAudit:
+    """The link's declared and geometry mass properties, and the ``mesh`` flags of meshes ``auto``
+    could not integrate exactly (the other flags come from :func:`_flags`)."""
     inertial = link.inertial
     declared = None if inertial is None else inertial.properties
     fallbacks: list = []
@@ -377,8 +396,71 @@ def audit_link(
     geo = _geometry_props(model, pieces, source, declared, density)
     result = LinkAudit(link, declared, geo)
     result.flags = [Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks]
-    result.flags += _flags(model, link, result, carries_mass)
     return result
+
+
+class _Known(NamedTuple):
+    """What :func:`_known_in_bulk` worked out for one link: ``physical`` (the declared inertia
+    certainly passes :func:`declared_inertia_problem`), ``maybe_placeholder`` (False: certainly
+    not a placeholder) and ``geometry_eigh`` (the geometry inertia's ``np.linalg.eigh``, or None)."""
+
+    physical: bool
+    maybe_placeholder: bool
+    geometry_eigh: tuple[np.ndarray, np.ndarray] | None
+
+
+def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
+    """For every link, the eigen-decompositions and screens :func:`_flags` needs, each computed
+    once on an (N, 3, 3) stack (numpy runs the same LAPACK routine on each matrix, so each
+    result equals the one-matrix call). The screens only say "certainly fine": a link they do
+    not clear is checked one by one, so the flags are those of :func:`audit_link`."""
+    declared = [i for i, each in enumerate(links) if each.declared is not None]
+    physical = np.zeros(len(links), dtype=bool)
+    maybe_placeholder = np.ones(len(links), dtype=bool)
+    if declared:
+        stack = np.array([links[i].declared.inertia_about_com for i in declared]).reshape(-1, 3, 3)
+        physical[declared] = _certainly_physical(stack)
+        written = np.array([links[i].link.inertial.written_inertia for i in declared]).reshape(-1, 3, 3)
+        maybe_placeholder[declared] = _maybe_placeholder(written)
+    eighs: list[tuple[np.ndarray, np.ndarray] | None] = [None] * len(links)
+    usable = [
+        i
+        for i, each in enumerate(links)
+        if each.geometry is not None and each.geometry.properties is not None
+    ]
+    if usable:
+        stack = np.array([links[i].geometry.properties.inertia_about_com for i in usable]).reshape(-1, 3, 3)
+        finite = np.all(np.isfinite(stack), axis=(1, 2))
+        moments, axes = np.linalg.eigh(stack[finite])
+        for row, i in enumerate(np.array(usable)[finite].tolist()):
+            eighs[i] = (moments[row], axes[row])
+    return [_Known(bool(a), bool(b), c) for a, b, c in zip(physical, maybe_placeholder, eighs)]
+
+
+def _certainly_physical(stack: np.ndarray) -> np.ndarray:
+    """Each inertia of the (N, 3, 3) stack that certainly passes :func:`declared_inertia_problem`:
+    entries below 1e300 (no sum of them overflows), exactly symmetric, principal moments not
+    negative and meeting the triangle inequality with no tolerance at all (the function forgives
+    a tolerance, never less)."""
+    ok = np.all(np.abs(stack) < 1e300, axis=(1, 2)) & np.all(stack == np.swapaxes(stack, 1, 2), axis=(1, 2))
+    if np.any(ok):
+        chosen = stack[ok]
+        moments = np.linalg.eigvalsh(0.5 * chosen + 0.5 * np.swapaxes(chosen, 1, 2))
+        ok[ok] = (moments[:, 0] >= 0) & (moments[:, 0] + moments[:, 1] >= moments[:, 2])
+    return ok
+
+
+def _maybe_placeholder(written: np.ndarray) -> np.ndarray:
+    """Each written inertia of the (N, 3, 3) stack :func:`_placeholder` might call a placeholder:
+    no products, and three equal moments or moments within 1e-6 (in log10) of round values (the
+    test itself allows 1e-12)."""
+    diagonal = np.diagonal(written, axis1=1, axis2=2)
+    no_products = np.all(written[:, _OFF_DIAGONAL] == 0, axis=1)
+    equal = np.all(diagonal == diagonal[:, :1], axis=1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        exponent = np.log10(np.abs(diagonal))
+        round_ = (diagonal == 0) | (np.abs(exponent - np.round(exponent)) < 1e-6)
+    return no_products & (equal | np.all(round_, axis=1))
 
 
 def _geometry_props(
@@ -395,7 +477,7 @@ def _geometry_props(
     else:  # at density 1
         parts = [d.unit for d, _ in pieces]
     try:
-        unit = MassProperties.sum(parts)
+        unit = _sum(parts)
     except ValueError:  # no mass in the geometry
         return None
     if declared is not None and declared.mass > 0:
@@ -418,7 +500,29 @@ def _geometry_props(
     )
 
 
-def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool) -> list[Flag]:
+def _sum(parts: list[MassProperties]) -> MassProperties:
+    """``MassProperties.sum(parts)``; for one part of positive mass, the value that sum gives
+    without its arithmetic: the part with each -0.0 made 0.0 (the sum adds a zero offset to the
+    centre of mass and a zero parallel-axis term to the inertia, then averages the inertia with
+    its transpose, which leaves a symmetric one as it is)."""
+    if len(parts) == 1:
+        (part,) = parts
+        inertia = part.inertia_about_com
+        finite = np.isfinite(part.mass) and np.all(np.isfinite(part.center_of_mass))
+        if (
+            finite
+            and part.mass > 0
+            and np.all(np.abs(inertia) < 1e300)
+            and np.array_equal(inertia, inertia.T)
+        ):
+            return MassProperties(part.mass, part.center_of_mass + 0.0, inertia + 0.0, part.frame)
+    return MassProperties.sum(parts)
+
+
+def _flags(
+    model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool, known: _Known | None
+) -> list[Flag]:
+    """The link's flags (``known``: what :func:`_known_in_bulk` worked out for it, or None)."""
     declared, geo = result.declared, result.geometry
     if declared is None or declared.mass == 0.0:
         return _zero_mass_flags(link, declared, carries_mass)
@@ -426,17 +530,18 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
     I = declared.inertia_about_com
     if declared.mass < 0:
         flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative", "negative mass"))
-    problem = declared_inertia_problem(declared.mass, I)
+    problem = None if known is not None and known.physical else declared_inertia_problem(declared.mass, I)
     if problem is not None:
         flags.append(Flag("unphysical", "error", _problem_text(problem, I), problem.kind))
     has_geometry = geo is not None and geo.inertia_about_com is not None and geo.mass
+    eigh = None if known is None else known.geometry_eigh
     if link.inertial is not None and link.inertial.source == "default":
         if has_geometry:
-            _geometry_flags(result, None)  # the ratios only: the default is not the file's claim
+            _geometry_flags(result, None, eigh)  # the ratios only: the default is not the file's claim
         return flags + [Flag("placeholder", "warning", _DEFAULT_TEXT, "SDFormat's default inertial")]
-    placeholder = _placeholder(model, link)
+    placeholder = None if known is not None and not known.maybe_placeholder else _placeholder(model, link)
     if has_geometry:
-        flags += _geometry_flags(result, placeholder)
+        flags += _geometry_flags(result, placeholder, eigh)
     elif placeholder:
         flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))
     return flags
@@ -478,13 +583,14 @@ def _zero_mass_flags(link: Link, declared: MassProperties | None, carries_mass: 
     return flags
 
 
-def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
+def _geometry_flags(result: LinkAudit, placeholder: str | None, eigh=None) -> list[Flag]:
     """``placeholder``/``mismatch`` from the moment ratios, ``mismatch`` for a centre of mass
     outside the geometry, ``density`` for an implausible implied density; sets the link's
-    ``ratios`` and ``com_offset``."""
+    ``ratios`` and ``com_offset``. ``eigh``: the geometry inertia's eigen-decomposition, when
+    already computed."""
     declared, geo = result.declared, result.geometry
     flags: list[Flag] = []
-    moments, axes = np.linalg.eigh(geo.inertia_about_com)
+    moments, axes = np.linalg.eigh(geo.inertia_about_com) if eigh is None else eigh
     along = np.einsum("ji,jk,ki->i", axes, declared.inertia_about_com, axes)
     usable = moments > 1e-9 * float(np.max(moments))
     ratios = np.full(3, np.nan)
@@ -494,18 +600,21 @@ def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
     if size > 0:
         result.com_offset = float(np.linalg.norm(declared.center_of_mass - geo.center_of_mass) / size)
     worst = _worst_ratio(ratios)
-    code = "placeholder" if placeholder else "mismatch"
-    ratio_text = ", ".join("-" if np.isnan(r) else f"{r:.3g}" for r in ratios)
-    detail = f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} geometry's at the same mass"
-    if placeholder:
-        detail = f"{placeholder}; {detail}"
-    summary = "" if worst is None else f"a moment {worst:.3g} × the {geo.source} geometry's"
+    level = None
     if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
-        flags.append(Flag(code, "error", detail, summary))
-    elif worst is not None and (worst > WARNING_RATIO or worst < 1 / WARNING_RATIO):
-        flags.append(Flag(code, "warning", detail, summary))
-    elif placeholder and _spread(moments) > 1.5:
-        flags.append(Flag("placeholder", "warning", detail, summary))
+        level = "error"
+    elif (worst is not None and (worst > WARNING_RATIO or worst < 1 / WARNING_RATIO)) or (
+        placeholder and _spread(moments) > 1.5
+    ):
+        level = "warning"
+    if level is not None:
+        code = "placeholder" if placeholder else "mismatch"
+        ratio_text = ", ".join("-" if np.isnan(r) else f"{r:.3g}" for r in ratios)
+        detail = f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} geometry's at the same mass"
+        if placeholder:
+            detail = f"{placeholder}; {detail}"
+        summary = "" if worst is None else f"a moment {worst:.3g} × the {geo.source} geometry's"
+        flags.append(Flag(code, level, detail, summary))
     margin = COM_MARGIN * size
     if np.any(declared.center_of_mass < geo.low - margin) or np.any(
         declared.center_of_mass > geo.high + margin

@@ -41,24 +41,27 @@ class JointTorque:
         return None if self.effort_limit is None else self.effort_limit - abs(self.torque)
 
 
-def joint_torques(model: RobotModel, joints: dict[str, float] | None = None) -> list[JointTorque]:
+def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=None) -> list[JointTorque]:
     """The holding torque of every revolute and prismatic joint at ``joints`` (name → value;
-    the others at the reference configuration), in file order of their links."""
-    joints = joints or {}
-    frames, poses = _joint_frames(model, joints)
-    gravity, to_frame = _gravity(model, poses)
-    mass, moment = _subtree_sums(model, poses, to_frame)
+    the others at the reference configuration), in file order of their links. ``at``: the links
+    already placed there (:func:`rbi.robot.tree.placement`)."""
+    from rbi.robot.tree import placement
+
+    placed = placement(model, joints) if at is None else at
+    gravity = _gravity(model)
+    to_frame = placed.to_frame
+    mass, moment = _subtree_sums(model, placed.placed)
     found = []
     for link in model.links:
         if model.format == "sdf" and link.parent is None:
             continue  # a joint to the world: SDF reads no axis for it here
-        for motion, axis, anchor in frames.get(link.index, []):
+        for motion, axis, anchor in placed.frames.get(link.index, []):
             axis, anchor = to_frame.rotation @ axis, to_frame.apply(anchor)
             M, first = mass[link.index], moment[link.index]  # Σ m, Σ m c
             if motion.kind == "prismatic":
                 torque = -M * float(gravity @ axis)
             else:
-                torque = -float(gravity @ np.cross(axis, first - M * anchor))
+                torque = -float(gravity @ _cross(axis, first - M * anchor))
             found.append(JointTorque(motion.name, motion.kind, torque + 0.0, motion.effort_limit))
     for each in found:
         if each.margin is not None and each.margin < 0:
@@ -74,53 +77,26 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None) -> 
     return found
 
 
-def _joint_frames(model: RobotModel, joints: dict[str, float]):
-    """(link index → [(motion, axis, anchor in the model frame)], link index → link pose), each
-    joint's axis and anchor taken where the joints before it have left them."""
-    from rbi.robot.tree import _motion
-
-    by_name = {link.key: link for link in model.links}
-    poses: dict[int, Pose] = {}
-    frames: dict[int, list] = {}
-    for link in _parents_first(model, by_name):
-        pose = (Pose.identity() if link.parent is None else poses[by_name[link.parent].index]).then(
-            link.origin
-        )
-        for motion in link.motions:
-            if motion.kind in ("revolute", "prismatic"):
-                frames.setdefault(link.index, []).append(
-                    (motion, pose.rotation @ motion.axis, pose.apply(motion.anchor))
-                )
-            if motion.name in joints:
-                pose = pose.then(_motion(motion, joints[motion.name]))
-        poses[link.index] = pose
-    return frames, poses
+def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """``np.cross`` of two 3-vectors, the same products and differences without its set-up."""
+    a0, a1, a2 = a.tolist()
+    b0, b1, b2 = b.tolist()
+    return np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
 
 
-def _parents_first(model: RobotModel, by_name) -> list:
-    """The links ordered so each comes after its parent (breadth first from the roots)."""
-    children: dict[str | None, list] = {}
-    for link in model.links:
-        children.setdefault(link.parent if link.parent in by_name else None, []).append(link)
-    order, queue = [], list(children.get(None, []))
-    while queue:
-        link = queue.pop()
-        order.append(link)
-        queue.extend(children.get(link.key, []))
-    return order
-
-
-def _gravity(model: RobotModel, poses: dict[int, Pose]) -> tuple[np.ndarray, Pose]:
-    """(gravity in the frame the torques are computed in, model frame → that frame)."""
+def _gravity(model: RobotModel) -> np.ndarray:
+    """Gravity (m/s²) in the frame the torques are computed in: MJCF's ``<option gravity>`` in
+    the world frame, else −9.81 z of the root link's frame."""
     if model.format == "mjcf":
-        return np.asarray(model.options.get("gravity", [0.0, 0.0, -9.81]), dtype=float), Pose.identity()
-    roots = [link for link in model.links if link.parent is None]
-    to_frame = poses[roots[0].index].inverse() if roots else Pose.identity()
-    return np.array([0.0, 0.0, -STANDARD_GRAVITY]), to_frame
+        return np.asarray(model.options.get("gravity", [0.0, 0.0, -9.81]), dtype=float)
+    return np.array([0.0, 0.0, -STANDARD_GRAVITY])
 
 
-def _subtree_sums(model: RobotModel, poses: dict[int, Pose], to_frame: Pose):
-    """For each link: the mass of its subtree (kg) and its first moment Σ m c (kg·m)."""
+def _subtree_sums(model: RobotModel, placed: dict[int, Pose]):
+    """For each link: the mass of its subtree (kg) and its first moment Σ m c (kg·m), from each
+    link's pose in the torques' frame."""
+    from rbi.robot.tree import parents_first
+
     by_name = {link.key: link for link in model.links}
     mass = {link.index: 0.0 for link in model.links}
     moment = {link.index: np.zeros(3) for link in model.links}
@@ -128,10 +104,8 @@ def _subtree_sums(model: RobotModel, poses: dict[int, Pose], to_frame: Pose):
         inertial = link.inertial
         if inertial is not None and inertial.mass != 0.0:
             mass[link.index] = inertial.mass
-            moment[link.index] = inertial.mass * to_frame.then(poses[link.index]).apply(
-                inertial.properties.center_of_mass
-            )
-    for link in reversed(_parents_first(model, by_name)):
+            moment[link.index] = inertial.mass * placed[link.index].apply(inertial.properties.center_of_mass)
+    for link in reversed(parents_first(model, by_name)):
         if link.parent is not None and link.parent in by_name:
             parent = by_name[link.parent].index
             mass[parent] += mass[link.index]

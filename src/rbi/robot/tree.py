@@ -11,6 +11,8 @@ joint at its ``ref``), so with no values given every link is where the file draw
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
 import numpy as np
 
 from rbi.core.mass import MassProperties
@@ -45,7 +47,56 @@ def parse_joint_values(values: list[str] | None) -> dict[str, float]:
 def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dict[int, Pose]:
     """Every link's frame in the model's frame (URDF: the root link's; SDF, MJCF: the world's)
     at the configuration ``joints`` (joint name → coordinate; others at the reference)."""
+    return placement(model, joints).poses
+
+
+@dataclass
+class Placement:
+    """The links placed at one configuration: ``poses`` (link index → its frame in the model's
+    frame), ``frames`` (link index → [(motion, axis, anchor)] of its revolute and prismatic
+    joints, axis and anchor in the model's frame where the joints before them leave them),
+    ``frame`` the name of the frame totals are given in (``"root link NAME"`` for URDF and SDF,
+    ``"world"`` for MJCF), ``to_frame`` model frame → that frame, and ``placed`` (link index →
+    its frame in that frame)."""
+
+    poses: dict[int, Pose]
+    frames: dict[int, list]
+    frame: str
+    to_frame: Pose
+    placed: dict[int, Pose]
+
+
+def placement(model: RobotModel, joints: dict[str, float] | None = None) -> Placement:
+    """Every link's pose at ``joints`` in one pass over the tree, parents first; InputError for a
+    joint name the model has no revolute or prismatic joint of."""
     joints = dict(joints or {})
+    _check_joint_names(model, joints)
+    by_name = {link.key: link for link in model.links}
+    poses: dict[int, Pose] = {}
+    frames: dict[int, list] = {}
+    for link in parents_first(model, by_name):
+        pose = (Pose.identity() if link.parent is None else poses[by_name[link.parent].index]).then(
+            link.origin
+        )
+        for motion in link.motions:
+            if motion.kind in ("revolute", "prismatic"):
+                frames.setdefault(link.index, []).append(
+                    (motion, pose.rotation @ motion.axis, pose.apply(motion.anchor))
+                )
+            if motion.name in joints:
+                pose = pose.then(_motion(motion, joints[motion.name]))
+        poses[link.index] = pose
+    frame, to_frame = "world", Pose.identity()
+    if model.format != "mjcf":
+        roots = [link for link in model.links if link.parent is None]
+        if roots:
+            to_frame = poses[roots[0].index].inverse()
+            frame = f"root link {roots[0].name}"
+    placed = {index: to_frame.then(pose) for index, pose in poses.items()}
+    return Placement(poses, frames, frame, to_frame, placed)
+
+
+def _check_joint_names(model: RobotModel, joints: dict[str, float]) -> None:
     movable = {
         m.name: m
         for link in model.links
@@ -61,30 +112,20 @@ def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dic
             f"--joints: {model.path} has no revolute or prismatic joint named {unknown[0]!r}"
             + (f" (did you mean {hint[0]!r}?)" if hint else "")
         )
-    by_name = {link.key: link for link in model.links}
-    poses: dict[int, Pose] = {}
 
-    def pose_of(link) -> Pose:
-        if link.index in poses:
-            return poses[link.index]
-        base = Pose.identity() if link.parent is None else pose_of(by_name[link.parent])
-        pose = base.then(link.origin)
-        for motion in link.motions:
-            if motion.name in joints:
-                pose = pose.then(_motion(motion, joints[motion.name]))
-        poses[link.index] = pose
-        return pose
 
-    import sys
-
-    limit = sys.getrecursionlimit()
-    sys.setrecursionlimit(max(limit, 4 * len(model.links) + 100))
-    try:
-        for link in model.links:
-            pose_of(link)
-    finally:
-        sys.setrecursionlimit(limit)
-    return poses
+def parents_first(model: RobotModel, by_name: dict) -> list:
+    """The links ordered so each comes after its parent (depth first from the roots; a link
+    whose parent is not in the model counts as a root)."""
+    children: dict[str | None, list] = {}
+    for link in model.links:
+        children.setdefault(link.parent if link.parent in by_name else None, []).append(link)
+    order, queue = [], list(children.get(None, []))
+    while queue:
+        link = queue.pop()
+        order.append(link)
+        queue.extend(children.get(link.key, []))
+    return order
 
 
 def _motion(motion, q: float) -> Pose:
@@ -97,22 +138,20 @@ def _motion(motion, q: float) -> Pose:
     return Pose(R, motion.anchor - R @ motion.anchor)
 
 
-def totals(model: RobotModel, joints: dict[str, float] | None = None) -> MassProperties:
+def totals(
+    model: RobotModel, joints: dict[str, float] | None = None, at: Placement | None = None
+) -> MassProperties:
     """Total mass, centre of mass and inertia about it at a configuration: in the root link's
     frame for URDF and SDF (``frame`` ``"root link NAME"``), in the world frame for MJCF
-    (``"world"``). Links without mass add nothing; with no mass left, the zero value."""
-    poses = link_poses(model, joints)
-    frame, to_frame = "world", Pose.identity()
-    if model.format != "mjcf":
-        roots = [link for link in model.links if link.parent is None]
-        if roots:
-            to_frame = poses[roots[0].index].inverse()
-            frame = f"root link {roots[0].name}"
+    (``"world"``). Links without mass add nothing; with no mass left, the zero value. ``at``:
+    the links already placed at ``joints`` (:func:`placement`)."""
+    placed = placement(model, joints) if at is None else at
+    frame = placed.frame
     parts = []
     for link in model.links:
         if link.inertial is None or link.inertial.mass == 0.0:
             continue
-        pose = to_frame.then(poses[link.index])
+        pose = placed.placed[link.index]
         parts.append(link.inertial.properties.transformed(pose.rotation, pose.translation, frame))
     try:
         total = MassProperties.sum(parts, frame)

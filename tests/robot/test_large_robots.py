@@ -1,0 +1,175 @@
+"""A large robot file audited with its costly numbers in bulk (issue 25): each shortcut gives
+bit for bit what the general computation gives, the bulk audit flags exactly what the one-link
+audit flags, and a long chain is read in one pass (no walk to the root per link)."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from rbi.core.mass import MassProperties
+from rbi.errors import InputError
+
+RNG = np.random.default_rng(25)
+
+
+def _symmetric(i: int) -> np.ndarray:
+    """A random symmetric matrix; every other one diagonal, some with -0.0 entries."""
+    A = RNG.normal(size=(3, 3)) * 10.0 ** RNG.integers(-12, 12)
+    A = 0.5 * (A + A.T)
+    if i % 2:
+        A = np.where(np.eye(3, dtype=bool), A, -0.0 if i % 4 == 1 else 0.0)
+    if i % 8 == 3:
+        A[1, 1] = A[0, 0]
+    return A
+
+
+def _same(a: np.ndarray, b: np.ndarray) -> bool:
+    return np.asarray(a).tobytes() == np.asarray(b).tobytes()
+
+
+def test_the_sum_of_one_part_is_the_general_sum_bit_for_bit():
+    from rbi.robot.audit import _sum
+
+    for i in range(3000):
+        com = RNG.normal(size=3) * 10.0 ** RNG.integers(-6, 6)
+        if i % 3 == 0:
+            com[i % 3] = -0.0
+        part = MassProperties(float(RNG.random()) * 10.0 ** RNG.integers(-5, 5), com, _symmetric(i), "link")
+        fast, general = _sum([part]), MassProperties.sum([part])
+        assert fast.mass == general.mass and fast.frame == general.frame
+        assert _same(fast.center_of_mass, general.center_of_mass)
+        assert _same(fast.inertia_about_com, general.inertia_about_com)
+
+
+def test_moments_without_axes_are_the_principal_moments_bit_for_bit():
+    from rbi.robot.audit import _moments
+
+    for i in range(3000):
+        properties = MassProperties(1.0, np.zeros(3), _symmetric(i))
+        assert _same(_moments(properties), properties.moments)
+
+
+def test_the_cross_product_is_numpys_bit_for_bit():
+    from rbi.robot.statics import _cross
+
+    for i in range(3000):
+        a, b = RNG.normal(size=3) * 10.0 ** RNG.integers(-8, 8), RNG.normal(size=3)
+        if i % 3 == 0:
+            a[1], b[2] = 0.0, -0.0
+        assert _same(_cross(a, b), np.cross(a, b))
+
+
+def _urdf(links: list[tuple[float, np.ndarray]], chain: bool = False) -> str:
+    """A URDF whose link i has mass ``m`` and inertia ``I`` (any numbers, unphysical included)
+    and a box; joints make a chain or a binary tree."""
+    parts = ['<robot name="r">']
+    for i, (m, I) in enumerate(links):
+        parts.append(
+            f'<link name="l{i}"><inertial><mass value="{m!r}"/><inertia ixx="{float(I[0, 0])!r}" ixy="{float(I[0, 1])!r}" '
+            f'ixz="{float(I[0, 2])!r}" iyy="{float(I[1, 1])!r}" iyz="{float(I[1, 2])!r}" izz="{float(I[2, 2])!r}"/></inertial>'
+            '<collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision></link>'
+        )
+    for i in range(1, len(links)):
+        parent = i - 1 if chain else (i - 1) // 2
+        parts.append(
+            f'<joint name="j{i}" type="revolute"><parent link="l{parent}"/><child link="l{i}"/>'
+            '<origin xyz="0.2 0 0" rpy="0.1 0 0.3"/><axis xyz="0 1 1"/><limit effort="1"/></joint>'
+        )
+    return "".join(parts) + "</robot>"
+
+
+def _hostile_inertias(n: int) -> list[tuple[float, np.ndarray]]:
+    """Physical inertias, placeholders (equal, round), negative moments, triangle breakers,
+    rounding noise, asymmetric products, zero and negative masses."""
+    box = np.diag([0.0010416666666666667, 0.0035416666666666665, 0.004166666666666667])
+    found = []
+    for i in range(n):
+        kind = i % 9
+        I = box * (10.0 ** RNG.uniform(-2, 2))
+        if kind == 1:
+            I = np.eye(3) * 0.1
+        elif kind == 2:
+            I = np.diag([1.0, 0.01, 0.001])
+        elif kind == 3:
+            I = np.diag([-1e-3, 2e-3, 2e-3])
+        elif kind == 4:
+            I = np.diag([1e-3, 1e-3, 3e-3])
+        elif kind == 5:
+            I = box.copy()
+            I[0, 0] = -5.4e-20
+        elif kind == 6:
+            I = box + 1e-4 * _symmetric(2 * i)
+        elif kind == 7:
+            I = box * 1e3
+        mass = [1.0, 0.0, -1.0, 0.53][i % 4] if kind == 8 else float(RNG.uniform(0.1, 10))
+        found.append((mass, I))
+    return found
+
+
+@pytest.mark.parametrize("chain", [False, True])
+def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain):
+    from rbi.formats.robot_files import read_robot
+    from rbi.robot.audit import _carried_mass, audit_link, audit_model
+
+    path = tmp_path / "r.urdf"
+    path.write_text(_urdf(_hostile_inertias(200), chain=chain))
+    model = read_robot(str(path))
+    bulk = audit_model(model)
+    carried = _carried_mass(model)
+    codes = set()
+    for link, found in zip(model.links, bulk.links):
+        one = audit_link(model, link, carries_mass=carried[link.index])
+        assert [f.as_dict() for f in found.flags] == [f.as_dict() for f in one.flags]
+        assert _same(found.ratios, one.ratios) and found.com_offset == one.com_offset
+        codes |= {f"{f.level} {f.code}" for f in found.flags}
+    assert {"error unphysical", "error placeholder", "warning mismatch", "error mismatch"} <= codes
+
+
+def test_the_totals_and_torques_of_a_chain_match_a_link_by_link_sum(tmp_path):
+    """Every link at the origin's chain of poses, summed independently: the totals, and the
+    torque of the first joint against gravity about its own axis."""
+    from rbi.core.rotation import euler_matrix
+    from rbi.robot import audit
+
+    links = [(1.0 + i % 3, np.diag([1e-3, 2e-3, 2.5e-3])) for i in range(60)]
+    path = tmp_path / "chain.urdf"
+    path.write_text(_urdf(links, chain=True))
+    report = audit(path)
+    R_step, p_step = euler_matrix([0.1, 0.0, 0.3], "xyz"), np.array([0.2, 0.0, 0.0])
+    R, p, coms = np.eye(3), np.zeros(3), [np.zeros(3)]
+    for _ in links[1:]:
+        p, R = p + R @ p_step, R @ R_step
+        coms.append(p.copy())
+    masses = np.array([m for m, _ in links])
+    com = (masses[:, None] * np.array(coms)).sum(axis=0) / masses.sum()
+    assert report.total.mass == pytest.approx(masses.sum(), rel=1e-15)
+    np.testing.assert_allclose(report.total.center_of_mass, com, rtol=1e-12, atol=1e-12)
+    axis = R_step @ (np.array([0, 1.0, 1.0]) / np.sqrt(2))  # joint 1's axis in the root frame
+    anchor = coms[1]
+    first = sum(m * (c - anchor) for m, c in zip(masses[1:], coms[1:]))
+    expected = -float(np.array([0, 0, -9.81]) @ np.cross(axis, first))
+    assert report.joints[0].torque == pytest.approx(expected, rel=1e-12, abs=1e-12)
+
+
+def test_a_long_chain_is_read_and_a_loop_in_it_still_named(tmp_path):
+    """20,000 links in a chain: the tree check is one pass (it walked to the root from every
+    link: 2·10⁸ steps); a loop at the far end is still found and named."""
+    from rbi.formats.robot_files import read_robot
+
+    n = 20_000
+    parts = ['<robot name="c">'] + [f'<link name="l{i}"/>' for i in range(n)]
+    parts += [
+        f'<joint name="j{i}" type="fixed"><parent link="l{i - 1}"/><child link="l{i}"/></joint>'
+        for i in range(1, n)
+    ]
+    path = tmp_path / "chain.urdf"
+    path.write_text("".join(parts) + "</robot>")
+    assert len(read_robot(str(path), geometry=False).links) == n
+    looped = "".join(parts).replace(
+        '<parent link="l0"/><child link="l1"/>', '<parent link="l3"/><child link="l1"/>'
+    )
+    looped = looped.replace('<link name="l0"/>', "")
+    path.write_text(looped + '<link name="l0"/></robot>')
+    with pytest.raises(InputError, match="loop through link"):
+        read_robot(str(path), geometry=False)
