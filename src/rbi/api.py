@@ -28,7 +28,7 @@ import numpy as np
 from rbi.core.mass import MassProperties
 from rbi.core.rotation import LARGEST_ANGLE_DEG
 from rbi.errors import ArgumentError, SpecError
-from rbi.files.output import check_distinct, output_target, write_output
+from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
 from rbi.spec.checks import Check
@@ -750,7 +750,7 @@ class Trajectory(TableRepr):
     body: Body | None = field(default=None, compare=False)
     """The simulated `Body` (None for a trajectory made by hand)."""
 
-    def plot(self, path: str | os.PathLike[str]) -> None:
+    def plot(self, path: Destination) -> None:
         """Draw the run at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib), as ``rbi
         simulate --plot`` does: the path of the tip of the spin axis seen from above (world
         frame), its tilt against time (a free body: each principal axis's angle to the angular
@@ -945,7 +945,7 @@ class SweepTable(TableRepr):
         )
         self.failed = sum(1 for row in self._rows if row[-1] != "ok")
 
-    def plot(self, path: str | os.PathLike[str]) -> None:
+    def plot(self, path: Destination) -> None:
         """Draw the stability map at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib),
         as ``rbi sweep --plot`` does: the largest tilt (degrees) over the first one or two
         swept axes, and the nominal top's sleeping threshold (rad/s) when the first is the spin.
@@ -1033,7 +1033,7 @@ def sweep(
     dask: str | None = None,
     mass_properties: bool = False,
     check_budget: bool = True,
-    out: str | os.PathLike[str] | None = None,
+    out: Destination | None = None,
     resume: bool = False,
     progress: Callable[[int, int], None] | None = None,
 ) -> SweepTable:
@@ -1101,7 +1101,7 @@ def audit(
     mesh_inertia: str = "auto",
     joints: dict[str, float] | Sequence[str] | None = None,
     fix: bool = False,
-    out: str | os.PathLike | None = None,
+    out: Destination | None = None,
     allow_outside_paths: bool | None = None,
     mesh_repair: bool = False,
 ) -> AuditReport:
@@ -1340,13 +1340,20 @@ def _chosen_links(robot: Any, names: list[str]) -> list[Any]:
     return [by_name[name] for name in dict.fromkeys(names)]
 
 
-def _output(path: str | os.PathLike[str], formats: tuple[str, ...], read: str | os.PathLike[str]) -> Any:
+Destination = str | os.PathLike[str] | OutputTarget
+"""Where a picture or a file of rows goes: a path (its extension gives the format), or a target
+`output_target` has already checked (a caller's own messages then name it)."""
+
+
+def _output(path: Destination, formats: tuple[str, ...], read: str | os.PathLike[str]) -> OutputTarget:
     """``path`` checked as an output of one of ``formats`` (its extension) by rbi's one checked
     writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file)."""
+    if isinstance(path, OutputTarget):
+        return path
     return output_target(os.fsdecode(os.fspath(path)), "path", formats, inputs=[os.fsdecode(os.fspath(read))])
 
 
-def show(body: Body, path: str | os.PathLike[str], *, title: str | None = None) -> int:
+def show(body: Body, path: Destination, *, title: str | None = None) -> int:
     """Draw the body as specified at ``path``, as ``rbi show`` does: every part in place (holes
     red and translucent), the centre of mass, the principal axes about it (lengths in
     proportion to their moments, labelled with them) and the pivot, in the body frame with
@@ -1375,7 +1382,7 @@ class Animation:
 
 def animate(
     body: Body,
-    path: str | os.PathLike[str],
+    path: Destination,
     *,
     speed: float = 1.0,
     fps: int = 25,
@@ -1404,7 +1411,7 @@ def animate(
     target = _output(path, ("html", "gif"), body.path)
     prepared = prepare_run(_loaded(body, "body"), **run)
     frames, tilt = write_animation(prepared, target, speed=speed, fps=fps, progress=progress)
-    return Animation(os.fsdecode(os.fspath(path)), frames, tilt)
+    return Animation(target.given, frames, tilt)
 
 
 def __getattr__(name: str) -> Any:

@@ -277,3 +277,14 @@ def test_the_table_never_cuts_a_number_short_in_80_columns(monkeypatch):
     assert proc.returncode == 0, proc.stderr
     assert "…" not in proc.stdout
     assert max(len(line) for line in proc.stdout.splitlines()) <= 80
+
+
+def test_a_refused_resume_names_the_out_option(tmp_path):
+    """The rows file's messages name it as the command line does (--out), not as rbi.sweep's
+    parameter."""
+    out = tmp_path / "map.csv"
+    proc = rbi(
+        "sweep", BODIES / "top_bolted.yaml", "--spin", "100", "--duration", "0.1", "--out", out, "--resume"
+    )
+    assert proc.returncode == 2
+    assert proc.stderr.startswith(f"rbi: --out: {out}: cannot resume: no unfinished sweep there")

@@ -79,7 +79,7 @@ def animate(
     say_warnings(body.warnings)
     progress = progress_bar("gif", "frames") if target.format == "gif" else None
     try:
-        made = api.animate(body, out, progress=progress.update if progress else None, **settings)
+        made = api.animate(body, target, progress=progress.update if progress else None, **settings)
     finally:
         if progress is not None:
             progress.close()

@@ -115,7 +115,7 @@ def audit(
     """
     from rbi.api import audit as run_audit
 
-    _fix_target(file, fix, out)
+    target = _fix_target(file, fix, out)
     report = run_audit(
         file,
         package_paths=package_path,
@@ -125,7 +125,7 @@ def audit(
         mesh_inertia=mesh_inertia,
         joints=joints,
         fix=fix,
-        out=out,
+        out=target,
         mesh_repair=mesh_repair,
     )
     code = report.exit_code
@@ -136,21 +136,22 @@ def audit(
         raise typer.Exit(code)
 
 
-def _fix_target(file: str, fix: bool, out: str | None) -> None:
-    """Check --out before the audit runs: it needs --fix and the robot file's extension."""
+def _fix_target(file: str, fix: bool, out: str | None):
+    """The --out target, checked before the audit runs (it needs --fix and the robot file's
+    extension), or None."""
     import os
 
     from rbi.api import SpecError
     from rbi.cli.output import output_target
 
     if out is None:
-        return
+        return None
     if not fix:
         raise SpecError("--out: writes the fixed copy, so it needs --fix")
     extension = os.path.splitext(file)[1].lower().lstrip(".") or "xml"
     if extension == "xacro":
         extension = "urdf"  # a .xacro is never rewritten: the fixed copy is the expanded robot
-    output_target(out, "--out", (extension,), inputs=[file])
+    return output_target(out, "--out", (extension,), inputs=[file])
 
 
 def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool) -> None:

@@ -44,5 +44,5 @@ def show(
         require_matplotlib("--out")
     body = api.load(file)
     say_warnings(body.warnings)
-    count = api.show(body, out, title=body.name or file)
+    count = api.show(body, target, title=body.name or file)
     print(f"{out}: {count} parts drawn")

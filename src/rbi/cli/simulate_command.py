@@ -165,7 +165,7 @@ def _plot(target, body, run, settings: dict) -> None:
     if settings["method"] in ("default", "exact") and run.t.size < PLOT_SAMPLES and settings["duration"] > 0:
         # the same run sampled more densely (dense output: the steps do not change)
         shown = api.simulate(body, samples=PLOT_SAMPLES, error_estimate=False, **settings)
-    shown.plot(target.given)
+    shown.plot(target)
 
 
 def _table(body, result: dict):

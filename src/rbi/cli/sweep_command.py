@@ -174,16 +174,16 @@ def sweep(
     settings |= dict(max_steps=max_steps, dask=dask, mass_properties=mass_properties, check_budget=not yes)
     if resume and out is None:
         raise SpecError("--resume: needs --out, the file of the interrupted sweep")
-    _check_targets(file, out, plot)
+    settings["out"], plot_target = _targets(file, out, plot)
     table = _run(file, settings | {"workers": _workers(workers, dask)}, out, resume)
-    result = _result(table, out, plot)
+    result = _result(table, out, plot, plot_target)
     if format == OutputFormat.csv:
         sys.stdout.write(to_csv(result.get("runs", [])))
         return
     emit(format.value, result, lambda: _table(result, table, file))
 
 
-def _result(table, out: str | None, plot: str | None) -> dict:
+def _result(table, out: str | None, plot: str | None, plot_target) -> dict:
     """What `rbi sweep --format json` prints: name, units, count, columns and, when the rows
     were held, the runs as objects and how many failed; the files written, the mass-properties
     spread (--mass-properties). The map is drawn here."""
@@ -203,14 +203,14 @@ def _result(table, out: str | None, plot: str | None) -> dict:
                 "--plot: the map is drawn from the rows of this run; with more than "
                 f"{MAX_ROWS_SHOWN:,} runs draw it from the --out file"
             )
-        table.plot(plot)
+        table.plot(plot_target)
         result["plot"] = plot
     return result
 
 
-def _check_targets(file: str, out: str | None, plot: str | None) -> None:
-    """Check ``--out`` and ``--plot`` before any work; the optional packages they need are
-    required then too."""
+def _targets(file: str, out: str | None, plot: str | None):
+    """The ``--out`` and ``--plot`` targets, checked before any work (None when not asked
+    for); the optional packages they need are required then too."""
     from rbi.cli.output import check_distinct, output_target
 
     out_target = None if out is None else output_target(out, "--out", ("csv", "parquet"), inputs=[file])
@@ -222,6 +222,7 @@ def _check_targets(file: str, out: str | None, plot: str | None) -> None:
         require("pyarrow", "parquet", "--out FILE.parquet")
     if plot is not None:
         require_matplotlib()
+    return out_target, plot_target
 
 
 def _workers(workers: int | None, dask: str | None) -> int | None:
@@ -256,7 +257,7 @@ def _run(file: str, settings: dict, out: str | None, resume: bool):
             bar.update(done, total)
 
     try:
-        return api.sweep(file, out=out, resume=resume, progress=progress, **settings)
+        return api.sweep(file, resume=resume, progress=progress, **settings)
     except (KeyboardInterrupt, Terminated) as stop:
         if out is None or not told:
             raise
