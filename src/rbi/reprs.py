@@ -13,15 +13,10 @@ from collections.abc import Sequence
 from html import escape
 from typing import Any
 
+from rbi.text import vector_text as vector_text  # the one vector formatter, re-exported for rbi.api
+
 QUANTITY_COLUMNS = ("quantity", "unit", "value")
 """The columns of a summary: what, in which unit, how much."""
-
-
-def vector_text(values: Any, digits: int = 6) -> str:
-    """``[a, b, c]`` at ``digits`` significant digits (``-0`` shown as ``0``)."""
-    import numpy as np
-
-    return "[" + ", ".join(f"{float(x) + 0.0:.{digits}g}" for x in np.asarray(values).ravel()) + "]"
 
 
 def rich_table(title: str, rows: Sequence[Sequence[str]], columns: Sequence[str] = QUANTITY_COLUMNS) -> Any:

@@ -73,6 +73,14 @@ def number(value: float | None, digits: int = 6) -> str:
     return f"{value:.{digits}g}"
 
 
+def vector_text(values: Any, digits: int = 6, brackets: str = "[]") -> str:
+    """A vector for people: its entries as :func:`number` writes them (``digits`` significant
+    figures, ``0`` for zero and ``-0``), comma-separated between ``brackets`` (``"[]"``, or
+    ``"()"`` for a vector in prose). The one vector formatter: the reprs of :mod:`rbi.api`, the
+    CLI's tables (after zeroing rounding noise) and the bench report use it."""
+    return brackets[0] + ", ".join(number(x, digits) for x in values) + brackets[1]
+
+
 FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 """First characters that make a spreadsheet run a text cell as a formula (OWASP's list)."""
 

@@ -41,6 +41,7 @@ def test_step_is_exact_and_the_stl_is_not():
     assert max(step["volume_error"], step["com_error"], step["inertia_error"]) < 1e-9
     assert step["integration_error"] < 1e-9
     assert stl["triangles"] > 10_000 and stl["inertia_error"] > 1e-6 and stl["volume_error"] > 1e-6
-    rows = report.cad_rows(result)
-    assert rows[0][0] == "STEP" and rows[1][0] == "STL" and len(rows[0]) == len(report.CAD_COLUMNS)
-    assert "## CAD solids: STEP against STL" in "\n".join(report._cad_markdown(result))
+    (section,) = report.report_sections({"cad": result})
+    assert section.title == "CAD solids: STEP against STL" and len(section.columns) == 8
+    assert [row[0] for row in section.rows] == ["STEP", "STL"]
+    assert section.rows[1][1] == f"{stl['triangles']:,}" and section.rows[0][1] == "—"

@@ -18,6 +18,8 @@ from pathlib import Path
 
 import numpy as np
 
+from rbi.core.inertia import parallel_axis, parallel_axis_to_com
+
 Progress = Callable[[str], None]
 
 PLATE_MM = (210.0, 110.0, 6.0)
@@ -56,9 +58,8 @@ def closed_form() -> tuple[float, np.ndarray, np.ndarray]:
     about_origin = v_box / 12 * np.diag([b * b + c * c, a * a + c * c, a * a + b * b])
     own = np.diag([v_hole * (3 * r * r + c * c) / 12] * 2 + [v_hole * r * r / 2])
     for d in centres:
-        about_origin -= own + v_hole * (d @ d * np.eye(3) - np.outer(d, d))
-    inertia = about_origin - volume * (com @ com * np.eye(3) - np.outer(com, com))
-    return volume, com, inertia
+        about_origin -= parallel_axis(own, v_hole, d)
+    return volume, com, parallel_axis_to_com(about_origin, volume, com)
 
 
 def write_plate_step(path: Path) -> None:

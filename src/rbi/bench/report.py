@@ -5,7 +5,9 @@ modules of :mod:`rbi.bench`."""
 
 from __future__ import annotations
 
-from rbi.text import number
+from dataclasses import dataclass, field
+
+from rbi.text import number, vector_text
 
 METHOD_NAMES = {
     "default": "rbi",
@@ -417,273 +419,75 @@ def _share(row: dict, key: str) -> str:
     return f"{100 * row[key] / row['load_total_s']:.0f}%"
 
 
+@dataclass
+class Section:
+    """One part of the report, built once and drawn twice: as rich tables by ``rbi bench``
+    (:func:`sections`) and as Markdown for docs/performance.md (:func:`markdown`). ``title``
+    (none: it continues the section before), ``notes`` (prose; code in backticks), ``columns``
+    (a header, or a ``(quantity, unit)`` pair), ``rows`` of text cells, the heading ``level``,
+    the columns aligned ``left`` (None: the first) and those never wrapped."""
+
+    title: str
+    notes: str = ""
+    columns: list = field(default_factory=list)
+    rows: list[list[str]] = field(default_factory=list)
+    level: int = 2
+    left: tuple | None = None
+    no_wrap: tuple = ()
+
+
+def report_sections(result: dict, plot_link: str | None = None) -> list[Section]:
+    """Every section of the report that ``result`` measured, in the order of docs/performance.md;
+    ``plot_link``: where the work-precision plot is, relative to the page."""
+    return (
+        _targets_sections(result)
+        + _kernel_sections(result.get("kernel"))
+        + _sweep_sections(result.get("sweep"))
+        + _workprecision_sections(result.get("workprecision"), plot_link)
+        + _throughput_sections(result.get("throughput"))
+        + _latency_sections(result.get("latency"))
+        + _cad_sections(result.get("cad"))
+    )
+
+
+def _plain(text: str) -> str:
+    """Markdown prose for a terminal: code without its backticks."""
+    return text.replace("`", "")
+
+
+def _header(column) -> str:
+    return column if isinstance(column, str) else f"{column[0]} [{column[1]}]"
+
+
 def sections(result: dict) -> list[dict]:
-    """The report as a list of blocks for a terminal, in the order of docs/performance.md: each
-    ``{"title", "columns": [(header, justify, no_wrap)], "rows"}`` (header a string or a
-    ``(quantity, unit)`` pair) or ``{"text", "dim"}``."""
-
-    def block(title, columns, rows, justify=lambda header: "right", no_wrap=lambda header: False):
-        return {"title": title, "columns": [(h, justify(h), no_wrap(h)) for h in columns], "rows": rows}
-
+    """The report for a terminal: each block ``{"title", "columns": [(header, justify, no_wrap)],
+    "rows"}`` (header a string or a ``(quantity, unit)`` pair) or ``{"text", "dim"}``: the
+    machine, then each :class:`Section` in the order Markdown has it (title, notes dim, table),
+    then the headline."""
     out = [{"text": machine_line(result), "dim": True}]
-    if result.get("targets"):
-        out.append(
-            block(
-                "Targets, each against its baseline measured in this run",
-                TARGET_COLUMNS,
-                target_rows(result["targets"]),
-                lambda h: "right" if h in ("measured", "limit") else "left",
-                lambda h: h in ("measured", "limit", "met"),
-            )
-        )
-    for case in result.get("workprecision", {}).get("cases", []):
-        justify = dict(WORK_COLUMNS)
-        out.append(
-            block(
-                f"Work-precision: {case['name']} ({case['spec']}, ω₀ = {vector_text(case['omega0'])} rad/s, "
-                f"{case['duration']:g} s) — reference: {reference_text(case)}",
-                list(justify),
-                work_rows(case),
-                justify.get,
-                lambda h: h == "method",
-            )
-        )
-    if result.get("workprecision"):
-        out.append({"text": METHOD_NOTE, "dim": True})
-    tp = result.get("throughput")
-    if tp:
-        out.append(
-            block(
-                f"Mass properties of point clouds (time grows as size^{number(tp['scaling_exponent'], 3)})",
-                CLOUD_COLUMNS,
-                cloud_rows(tp),
-            )
-        )
-        out.append(block("Specs of many solid parts, written in YAML", PARTS_COLUMNS, parts_rows(tp)))
-    lat = result.get("latency")
-    if lat:
-        out.append(
-            block(
-                f"Whole-process latency (median of repeated runs) against {lat['baseline']}",
-                LATENCY_COLUMNS,
-                latency_rows(lat),
-                lambda h: "left" if h == "command" else "right",
-            )
-        )
-    cad = result.get("cad")
-    if cad:
-        out.append(block(cad_title(cad), CAD_COLUMNS, cad_rows(cad)))
+    for s in report_sections(result):
+        out += [{"text": _plain(s.title), "dim": False}] if s.title else []
+        out += [{"text": _plain(s.notes), "dim": True}] if s.notes else []
+        left = s.left if s.left is not None else tuple(s.columns[:1])
+        columns = [(h, "left" if h in left else "right", h in s.no_wrap) for h in s.columns]
+        out += [{"title": "", "columns": columns, "rows": s.rows}] if s.rows else []
     lines = headline(result)
     if lines:
         out.append({"text": "\n".join("• " + line for line in lines), "dim": False})
     return out
 
 
-CAD_COLUMNS = ["file", "triangles", "MB", "load [s]", "volume err", "CoM err", "inertia err", "estimate"]
-"""Errors are relative to the closed form; the estimate is the integration's own (STEP only)."""
-
-
-def cad_title(cad: dict) -> str:
-    if cad.get("error"):
-        return f"CAD solids: {cad['error']}"
-    a, b, c = cad["plate_mm"]
-    return (
-        f"CAD solids: a {a:g} × {b:g} × {c:g} mm plate with {cad['holes']} holes of radius "
-        f"{cad['hole_radius_mm']:g} mm, read as STEP (exact geometry) and as STL, whole load cold; "
-        "errors relative, against the closed form"
-    )
-
-
-def cad_rows(cad: dict) -> list[list[str]]:
-    """One row per file: the STEP (exact B-rep) and its STL tessellation."""
-    return [
-        [
-            row["file"],
-            "—" if row.get("triangles") is None else f"{row['triangles']:,}",
-            number(row["bytes"] / 1e6, 3),
-            number(row["seconds"], 3),
-            _sci(row["volume_error"]),
-            _sci(row["com_error"]),
-            _sci(row["inertia_error"]),
-            _sci(row.get("integration_error")),
-        ]
-        for row in cad.get("files", [])
-    ]
-
-
-def vector_text(v) -> str:
-    return "(" + ", ".join(number(x, 6) for x in v) + ")"
-
-
-def machine_line(result: dict) -> str:
-    m = result["machine"]
-    load = m.get("load_average_1min")
-    return (
-        f"{m['date']} · {m['cpu']} · {m['cores']} cores · load average {load} at start · Python {m['python']}, "
-        f"numpy {m['numpy']}, scipy {m['scipy']}, kernel: {m.get('kernel')} · {'quick' if result['quick'] else 'full'} run"
-    )
-
-
-def reference_text(case: dict) -> str:
-    ref = case["reference"]
-    if ref["method"] == "exact":
-        return "closed form (Euler–Poinsot)"
-    check = ref.get("check", {})
-    return (
-        f"rbi at rtol {ref['rtol']:g}; scipy DOP853 at rtol {check.get('rtol', 0):g} differs from it by "
-        f"{_sci(check.get('orientation_difference_deg'))}°"
-    )
-
-
-WORK_COLUMNS = [
-    ("method", "left"),
-    ("rtol", "right"),
-    (("orient. error", "deg"), "right"),
-    (("ω error", "rad/s"), "right"),
-    ("rel. drift", "right"),
-    ("steps", "right"),
-    ("RHS evals", "right"),
-    (("time", "s"), "right"),
-    ("chapter ÷ this", "right"),
-]
-
-
-def work_rows(case: dict) -> list[list[str]]:
-    chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
-    rows = []
-    for r in case["runs"] + [case["default"]]:
-        name = METHOD_NAMES[r["method"]]
-        if r.get("chapter_setup"):
-            name += " ★"
-        if r.get("default_settings"):
-            name = "rbi defaults"
-        ratio = chapter["seconds"] / r["seconds"] if chapter and r["seconds"] > 0 else None
-        rows.append(
-            [
-                name,
-                f"{r['rtol']:g}",
-                _sci(r["orientation_error_deg"]),
-                _sci(r["omega_error"]),
-                _sci(r["drift"]),
-                f"{r['steps']:,}",
-                f"{r['rhs_evals']:,}",
-                number(r["seconds"], 2),
-                _times(ratio),
-            ]
-        )
-    return rows
-
-
-CLOUD_COLUMNS = [
-    "points",
-    "mass [ms]",
-    "CoM [ms]",
-    "+inertia [ms]",
-    "principal [ms]",
-    "total [ms]",
-    "ns/point",
-    "CSV spec [ms]",
-    ".npy spec [ms]",
-    "CSV [MB]",
-]
-
-
-def cloud_rows(tp: dict) -> list[list[str]]:
-    def ms(seconds):
-        return number(1e3 * seconds, 3)
-
-    return [
-        [
-            f"{r['points']:,}",
-            ms(r["mass_s"]),
-            ms(r["com_s"]),
-            ms(r["combine_s"]),
-            ms(r["principal_s"]),
-            ms(r["total_s"]),
-            number(r["ns_per_point"], 3),
-            ms(r["load_csv_s"]),
-            ms(r["load_npy_s"]),
-            number(r["csv_megabytes"], 3),
-        ]
-        for r in tp["point_clouds"]
-    ]
-
-
-PARTS_COLUMNS = [
-    "parts",
-    "YAML [MB]",
-    "parse YAML [s]",
-    "validate [s]",
-    "translate [s]",
-    "load total [s]",
-    "µs/part",
-    "same as JSON [s]",
-    "core [s]",
-]
-
-
-def parts_rows(tp: dict) -> list[list[str]]:
-    return [
-        [
-            f"{r['parts']:,}",
-            number(r["yaml_megabytes"], 3),
-            number(r["read_yaml_s"], 3),
-            number(r["validate_s"], 3),
-            number(r["translate_s"], 3),
-            number(r["load_total_s"], 3),
-            number(r["us_per_part"], 3),
-            number(r["load_total_json_s"], 3),
-            _sci(r["core_s"]),
-        ]
-        for r in tp["solid_parts"]
-    ]
-
-
-LATENCY_COLUMNS = [
-    "command",
-    "CPU median [s]",
-    "× numpy import (CPU)",
-    "wall median [s]",
-    "wall best [s]",
-    "× numpy import (wall)",
-    "wall spread",
-]
-
-
-def latency_rows(lat: dict) -> list[list[str]]:
-    rows = []
-    for r in lat["commands"]:
-        if "error" in r:
-            rows.append([r["command"], "failed", "", "", "", "", r["error"]])
-        else:
-            rows.append(
-                [
-                    r["command"],
-                    number(r["cpu_median_s"], 3) if "cpu_median_s" in r else "",
-                    _times(r.get("cpu_ratio_to_numpy_import")),
-                    number(r["median_s"], 3),
-                    number(r["best_s"], 3),
-                    _times(r.get("ratio_to_numpy_import")),
-                    f"{100 * r['spread']:.0f}%",
-                ]
-            )
-    return rows
-
-
-def _clock(row: dict) -> str:
-    """Which time a latency row's target is judged on: CPU when it was measured, else wall."""
-    return "CPU" if "cpu_ratio_to_numpy_import" in row else "wall"
-
-
-def _ratio(row: dict) -> float | None:
-    return row.get("cpu_ratio_to_numpy_import", row.get("ratio_to_numpy_import"))
-
-
-def _seconds(row: dict) -> float | None:
-    return row.get("cpu_median_s", row.get("median_s"))
-
-
-# --- Markdown --------------------------------------------------------------------------------
+def markdown(result: dict, command: str, plot_link: str | None) -> str:
+    """docs/performance.md: how it was made, on what, the headline, then every section."""
+    out = _preamble(result, command)
+    for s in report_sections(result, plot_link):
+        if s.title:
+            out += ["", "#" * s.level + " " + s.title]
+        if s.notes:
+            out += ["", s.notes]
+        if s.rows:
+            out += ["", _md_table([_header(h) for h in s.columns], s.rows)]
+    return "\n".join(out) + "\n"
 
 
 def _md_table(headers: list[str], rows: list[list[str]]) -> str:
@@ -692,20 +496,8 @@ def _md_table(headers: list[str], rows: list[list[str]]) -> str:
     return "\n".join(out)
 
 
-def markdown(result: dict, command: str, plot_link: str | None) -> str:
-    """docs/performance.md: how it was made, on what, the headline, then every table."""
-    out = _preamble(result, command)
-    out += _kernel_markdown(result.get("kernel"))
-    out += _sweep_markdown(result.get("sweep"))
-    out += _workprecision_markdown(result.get("workprecision"), plot_link)
-    out += _throughput_markdown(result.get("throughput"))
-    out += _latency_markdown(result.get("latency"))
-    out += _cad_markdown(result.get("cad"))
-    return "\n".join(out) + "\n"
-
-
 def _preamble(result: dict, command: str) -> list[str]:
-    """How the page was made, on what machine, the headline and the targets."""
+    """How the page was made, on what machine, and the headline."""
     m = result["machine"]
     noisy = (m.get("load_average_1min") or 0) > 0.5
     out = [
@@ -739,122 +531,170 @@ def _preamble(result: dict, command: str) -> list[str]:
         "## Headline",
         "",
     ]
-    out += [f"- {line}" for line in headline(result)]
-    if result.get("targets"):
-        out += [
-            "",
-            "## Targets",
-            "",
-            "Each speed target (kernel, start-up, large specs, sweep) with the baseline it was measured "
-            "against in this same run.",
-            "",
-            _md_table(TARGET_COLUMNS, target_rows(result["targets"])),
-        ]
+    return out + [f"- {line}" for line in headline(result)]
+
+
+def machine_line(result: dict) -> str:
+    m = result["machine"]
+    load = m.get("load_average_1min")
+    return (
+        f"{m['date']} · {m['cpu']} · {m['cores']} cores · load average {load} at start · Python {m['python']}, "
+        f"numpy {m['numpy']}, scipy {m['scipy']}, kernel: {m.get('kernel')} · {'quick' if result['quick'] else 'full'} run"
+    )
+
+
+# --- the sections ----------------------------------------------------------------------------
+
+
+def _targets_sections(result: dict) -> list[Section]:
+    if not result.get("targets"):
+        return []
+    notes = (
+        "Each speed target (kernel, start-up, large specs, sweep) with the baseline it was measured "
+        "against in this same run."
+    )
+    left = ("area", "target", "met", "baseline (same run)", "detail")
+    rows = target_rows(result["targets"])
+    return [Section("Targets", notes, TARGET_COLUMNS, rows, left=left, no_wrap=("measured", "limit", "met"))]
+
+
+def _kernel_sections(k: dict | None) -> list[Section]:
+    """The compiled kernel against the chapter's set-up and the minimal loop, each tolerance."""
+    if not k:
+        return []
+    columns = [
+        ("rtol", _rtol),
+        (("orient. error", "deg"), _err("orientation_error_deg")),
+        (("ω error", "rad/s"), _err("omega_error")),
+        ("steps", _count("steps")),
+        ("no worse than chapter", lambda t: "yes" if t["no_worse"] else "no"),
+        (("time", "s"), _num("seconds")),
+        ("chapter ÷ this", lambda t: _times(t["seconds"] and k["chapter"]["seconds"] / t["seconds"])),
+    ]
+    case, chapter, loop = k["case"], k["chapter"], k["minimal_loop"]
+    notes = (
+        f"`{case['spec']}`, ω₀ = {vector_text(case['omega0'], brackets='()')} rad/s, {case['duration']:g} s, "
+        f"{case['samples']} samples, in this process with the compiled kernel loaded. The chapter's set-up "
+        f"took {number(chapter['seconds'], 3)} s ({chapter['steps']:,} steps, final orientation error "
+        f"{_sci(chapter['orientation_error_deg'])}°); `simulate` at its defaults (rtol "
+        f"{k['default']['rtol']:g}) {number(k['default']['seconds'], 3)} s; the minimal loop "
+        f"(`rbi.sim._dop853.integrate_minimal`: the same DOP853 steps without chunking, step budget, counters "
+        f"or the result object, called on prepared arrays) {number(loop['seconds'], 3)} s with "
+        f"{loop['steps']:,} steps (same steps: {loop['same_steps']}, same samples bit "
+        f"for bit: {loop['same_samples']}). Errors are against rbi at rtol 1e-14. The fastest "
+        "tolerance at the chapter's error or better:"
+    )
+    return [Section("The kernel against its baselines", notes, *_table(columns, k["trials"]))]
+
+
+def _sweep_sections(sw: dict | None) -> list[Section]:
+    """Sweep throughput on a grid, and the resident memory of a long streaming sweep."""
+    if not sw:
+        return []
+    g, mem = sw["grid"], sw["memory"]
+    grid = (
+        f"Grid: spin {g['spin'][0]:g}–{g['spin'][1]:g} rad/s × {g['spin'][2]}, tilt {g['tilt_deg'][0]:g}–"
+        f"{g['tilt_deg'][1]:g}° × {g['tilt_deg'][2]}, {g['duration']:g} s a run, default rtol, on "
+        f"{sw['cores']} cores: `{sw['sweep']['command']}` ran in this process in "
+        f"{number(sw['sweep']['seconds'], 3)} s ({number(sw['sweep']['runs_per_second'], 3)} runs/s, "
+        f"{_times(sw['ratio_to_single'])} the single-run rate). The single-run rate is `simulate` called "
+        f"for {sw['single_run']['runs']} grid points one after another in this process; the process loop is "
+        f"`rbi simulate FILE --spin S --tilt T --duration {g['duration']:g}` for "
+        f"{sw['process_loop']['runs']} grid points."
+    )
+    out = [Section("Sweep throughput and memory", grid)]
+    if "error" in mem:
+        return out + [Section("", f"Memory: the child sweep failed: {mem['error']}")]
+    notes = (
+        f"Memory: `{mem['command']}` as a child process: peak resident memory "
+        f"{number(mem['peak_rss_mb'], 3)} MB over {mem['rows_written']:,} rows streamed in "
+        f"{number(mem['seconds'], 3)} s; resident memory sampled while it ran (flat means bounded):"
+    )
+    columns = [(("time", "s"), _num("seconds")), (("RSS", "MB"), _num("rss_mb"))]
+    columns.append((("CSV written", "MB"), _num("csv_bytes", scale=2**-20)))
+    return out + [Section("", notes, *_table(columns, mem["samples"]))]
+
+
+def _workprecision_sections(wp: dict | None, plot_link: str | None) -> list[Section]:
+    """Work against precision: each case's error and time per method."""
+    if not wp:
+        return []
+    notes = (
+        "Final orientation error (angle between the computed and the reference orientation at the "
+        "last sample) and angular-velocity error against in-process time (one whole call of "
+        "`rbi.sim.api.simulate`, with the compiled kernel already loaded; the median of repeated runs "
+        'for the fast method). "rel. drift" is the largest relative '
+        "change of any conserved quantity along the run (energy, vertical and spin angular momentum for "
+        "the top; energy and the angular-momentum vector for the free body). The chapter's set-up is "
+        "scipy `solve_ivp` RK45 at rtol 1e-8, atol 1e-10 with a Python right-hand side "
+        "(`--method rk45`); the last column is its time divided by each row's. " + METHOD_NOTE
+    )
+    out = [Section("Work against precision", notes)]
+    for case in wp["cases"]:
+        title = (
+            f"{case['name']}: `{case['spec']}`, ω₀ = {vector_text(case['omega0'], brackets='()')} rad/s, "
+            f"tilt {case['tilt_deg']:g}°, {case['duration']:g} s, {case['samples']} samples"
+        )
+        notes = (
+            f"Reference: {reference_text(case)}. Loading the compiled kernel cost "
+            f"{number(case['kernel_load_seconds'], 3)} s once in this process (not in any time below)."
+        )
+        left = ("method",)
+        out.append(Section(title, notes, *work_table(case), level=3, left=left, no_wrap=left))
+    if plot_link:
+        out.append(Section("", f"![Final orientation error against in-process time]({plot_link})"))
     return out
 
 
-def _cad_markdown(cad: dict | None) -> list[str]:
-    """CAD solids: the STEP plate against its STL, time and error side by side."""
-    if not cad:
+def _throughput_sections(tp: dict | None) -> list[Section]:
+    """Mass-property throughput: point clouds and specs of many solid parts."""
+    if not tp:
         return []
+    clouds = (
+        'Random point masses (seeded). "mass+CoM+inertia" is `rbi.core.mass.combine` on arrays in memory; '
+        '"total" adds the principal axes. "from … spec" is the whole load of a spec file naming the cloud '
+        f"(`point_cloud: {{file: cloud.csv}}`: YAML, validation, reading the cloud, the reduction) plus the "
+        f"principal axes, as `rbi principal` does after start-up; the CSV holds `{tp['csv_format']}` numbers. "
+        f"Time grows as size^{number(tp['scaling_exponent'], 3)} from 10⁴ points up (1 = linear)."
+    )
+    parts = (
+        "Cones, cylinders (by density) and point masses in turn, one YAML flow mapping per line. Parsing uses "
+        "libyaml's C parser; validation is pydantic; translation builds one mass element per part in Python. "
+        '"same as JSON" is the whole load of the same spec written as one JSON object (JSON is valid YAML; '
+        "rbi reads it with Python's json module when the file starts with `{`). "
+        '"core" is the vectorised reduction (mass, CoM, inertia, principal axes) of the translated parts.'
+    )
     return [
-        "",
-        "## CAD solids: STEP against STL",
-        "",
-        cad_title(cad) + ".",
-        "",
-        _md_table(CAD_COLUMNS, cad_rows(cad)),
+        Section("Mass-property throughput", clouds, *_table(CLOUD_COLUMNS, tp["point_clouds"])),
+        Section("Specs of many solid parts", parts, *_table(PARTS_COLUMNS, tp["solid_parts"]), level=3),
     ]
 
 
-def _workprecision_markdown(wp: dict | None, plot_link: str | None) -> list[str]:
-    """Work against precision: each case's error and time per method."""
-    out: list[str] = []
-    if wp:
-        out += [
-            "",
-            "## Work against precision",
-            "",
-            "Final orientation error (angle between the computed and the reference orientation at the "
-            "last sample) and angular-velocity error against in-process time (one whole call of "
-            "`rbi.sim.api.simulate`, with the compiled kernel already loaded; the median of repeated runs "
-            'for the fast method). "rel. drift" is the largest relative '
-            "change of any conserved quantity along the run (energy, vertical and spin angular momentum for "
-            "the top; energy and the angular-momentum vector for the free body). The chapter's set-up is "
-            "scipy `solve_ivp` RK45 at rtol 1e-8, atol 1e-10 with a Python right-hand side "
-            "(`--method rk45`); the last column is its time divided by each row's. " + METHOD_NOTE,
-        ]
-        for case in wp["cases"]:
-            out += [
-                "",
-                f"### {case['name']}: `{case['spec']}`, ω₀ = {vector_text(case['omega0'])} rad/s, "
-                f"tilt {case['tilt_deg']:g}°, {case['duration']:g} s, {case['samples']} samples",
-                "",
-                f"Reference: {reference_text(case)}. Loading the compiled kernel cost "
-                f"{number(case['kernel_load_seconds'], 3)} s once in this process (not in any time below).",
-                "",
-            ]
-            headers = [h if isinstance(h, str) else f"{h[0]} [{h[1]}]" for h, _ in WORK_COLUMNS]
-            out.append(_md_table(headers, work_rows(case)))
-        if plot_link:
-            out += ["", f"![Final orientation error against in-process time]({plot_link})"]
-    return out
-
-
-def _throughput_markdown(tp: dict | None) -> list[str]:
-    """Mass-property throughput: point clouds and specs of many solid parts."""
-    out: list[str] = []
-    if tp:
-        out += [
-            "",
-            "## Mass-property throughput",
-            "",
-            'Random point masses (seeded). "mass+CoM+inertia" is `rbi.core.mass.combine` on arrays in memory; '
-            '"total" adds the principal axes. "from … spec" is the whole load of a spec file naming the cloud '
-            f"(`point_cloud: {{file: cloud.csv}}`: YAML, validation, reading the cloud, the reduction) plus the "
-            f"principal axes, as `rbi principal` does after start-up; the CSV holds `{tp['csv_format']}` numbers. "
-            f"Time grows as size^{number(tp['scaling_exponent'], 3)} from 10⁴ points up (1 = linear).",
-            "",
-            _md_table(CLOUD_COLUMNS, cloud_rows(tp)),
-            "",
-            "### Specs of many solid parts",
-            "",
-            "Cones, cylinders (by density) and point masses in turn, one YAML flow mapping per line. Parsing uses "
-            "libyaml's C parser; validation is pydantic; translation builds one mass element per part in Python. "
-            '"same as JSON" is the whole load of the same spec written as one JSON object (JSON is valid YAML; '
-            "rbi reads it with Python's json module when the file starts with `{`). "
-            '"core" is the vectorised reduction (mass, CoM, inertia, principal axes) of the translated parts.',
-            "",
-            _md_table(PARTS_COLUMNS, parts_rows(tp)),
-        ]
-    return out
-
-
-def _latency_markdown(lat: dict | None) -> list[str]:
+def _latency_sections(lat: dict | None) -> list[Section]:
     """Whole-process latency of each command, and where the start-up goes."""
-    out: list[str] = []
-    if lat:
-        out += [
-            "",
-            "## Whole-process latency",
-            "",
-            f"Each command ran once untimed (warm OS file caches), then repeatedly, in turn; the "
-            f"medians of CPU time (user + system, which other work on the machine disturbs less; "
-            f"the targets are on it) and of wall time are compared with `{lat['baseline']}` "
-            f"measured in the same rounds"
-            + (
-                ", rbi's bytecode having been compiled first, as `pip install` does."
-                if lat.get("bytecode_compiled")
-                else "."
-            ),
-            "",
-            _md_table(LATENCY_COLUMNS, latency_rows(lat)),
-        ]
-        out += _imports_markdown(lat.get("imports"))
-    return out
-
-
-IMPORT_COLUMNS = ["imported", "time [ms]", "share"]
+    if not lat:
+        return []
+    compiled = ", rbi's bytecode having been compiled first, as `pip install` does."
+    notes = (
+        f"Each command ran once untimed (warm OS file caches), then repeatedly, in turn; the "
+        f"medians of CPU time (user + system, which other work on the machine disturbs less; "
+        f"the targets are on it) and of wall time are compared with `{lat['baseline']}` "
+        f"measured in the same rounds" + (compiled if lat.get("bytecode_compiled") else ".")
+    )
+    out = [Section("Whole-process latency", notes, *_table(LATENCY_COLUMNS, lat["commands"]))]
+    imports = lat.get("imports")
+    if not imports or "error" in imports:
+        return out
+    notes = (
+        f"`{imports['command']}`: the time each of the {imports['modules']} imported modules takes itself "
+        f'(Python\'s "self" column, so a package counts once whoever imports it first), smallest of '
+        f"{imports['repeats']} runs, summed by package. `-X importtime` adds its own overhead, so these add up "
+        "to more than the import part of a plain run; the shares are what to compare. The rest of a run is "
+        "the interpreter's own start-up and the work itself (reading and validating the spec, about a "
+        "millisecond for a small one, then printing)."
+    )
+    title = "Where `rbi inertia`'s start-up goes"
+    return out + [Section(title, notes, ["imported", ("time", "ms"), "share"], import_rows(imports), level=3)]
 
 
 def import_rows(imports: dict) -> list[list[str]]:
@@ -865,103 +705,149 @@ def import_rows(imports: dict) -> list[list[str]]:
     ]
 
 
-def _imports_markdown(imports: dict | None) -> list[str]:
-    if not imports or "error" in imports:
+def _cad_sections(cad: dict | None) -> list[Section]:
+    """CAD solids: the STEP plate against its STL, time and error side by side."""
+    if not cad:
         return []
     return [
-        "",
-        "### Where `rbi inertia`'s start-up goes",
-        "",
-        f"`{imports['command']}`: the time each of the {imports['modules']} imported modules takes itself "
-        f'(Python\'s "self" column, so a package counts once whoever imports it first), smallest of '
-        f"{imports['repeats']} runs, summed by package. `-X importtime` adds its own overhead, so these add up "
-        "to more than the import part of a plain run; the shares are what to compare. The rest of a run is "
-        "the interpreter's own start-up and the work itself (reading and validating the spec, about a "
-        "millisecond for a small one, then printing).",
-        "",
-        _md_table(IMPORT_COLUMNS, import_rows(imports)),
+        Section(
+            "CAD solids: STEP against STL", cad_title(cad) + ".", *_table(CAD_COLUMNS, cad.get("files", []))
+        )
     ]
 
 
-def _kernel_markdown(k: dict | None) -> list[str]:
-    if not k:
-        return []
-    rows = [
-        [
-            f"{t['rtol']:g}",
-            _sci(t["orientation_error_deg"]),
-            _sci(t["omega_error"]),
-            f"{t['steps']:,}",
-            "yes" if t["no_worse"] else "no",
-            "—" if t["seconds"] is None else number(t["seconds"], 3),
-            "—" if t["seconds"] is None else _times(k["chapter"]["seconds"] / t["seconds"]),
-        ]
-        for t in k["trials"]
-    ]
-    return [
-        "",
-        "## The kernel against its baselines",
-        "",
-        f"`{k['case']['spec']}`, ω₀ = {vector_text(k['case']['omega0'])} rad/s, {k['case']['duration']:g} s, "
-        f"{k['case']['samples']} samples, in this process with the compiled kernel loaded. The chapter's set-up "
-        f"took {number(k['chapter']['seconds'], 3)} s ({k['chapter']['steps']:,} steps, final orientation error "
-        f"{_sci(k['chapter']['orientation_error_deg'])}°); `simulate` at its defaults (rtol "
-        f"{k['default']['rtol']:g}) {number(k['default']['seconds'], 3)} s; the minimal loop "
-        f"(`rbi.sim._dop853.integrate_minimal`: the same DOP853 steps without chunking, step budget, counters "
-        f"or the result object, called on prepared arrays) {number(k['minimal_loop']['seconds'], 3)} s with "
-        f"{k['minimal_loop']['steps']:,} steps (same steps: {k['minimal_loop']['same_steps']}, same samples bit "
-        f"for bit: {k['minimal_loop']['same_samples']}). Errors are against rbi at rtol 1e-14. The fastest "
-        "tolerance at the chapter's error or better:",
-        "",
-        _md_table(
-            [
-                "rtol",
-                "orient. error [deg]",
-                "ω error [rad/s]",
-                "steps",
-                "no worse than chapter",
-                "time [s]",
-                "chapter ÷ this",
-            ],
-            rows,
-        ),
-    ]
+# --- the tables' columns: (header, the cell of one record) -----------------------------------------
 
 
-def _sweep_markdown(sw: dict | None) -> list[str]:
-    if not sw:
-        return []
-    g, mem = sw["grid"], sw["memory"]
-    out = [
-        "",
-        "## Sweep throughput and memory",
-        "",
-        f"Grid: spin {g['spin'][0]:g}–{g['spin'][1]:g} rad/s × {g['spin'][2]}, tilt {g['tilt_deg'][0]:g}–"
-        f"{g['tilt_deg'][1]:g}° × {g['tilt_deg'][2]}, {g['duration']:g} s a run, default rtol, on "
-        f"{sw['cores']} cores: `{sw['sweep']['command']}` ran in this process in "
-        f"{number(sw['sweep']['seconds'], 3)} s ({number(sw['sweep']['runs_per_second'], 3)} runs/s, "
-        f"{_times(sw['ratio_to_single'])} the single-run rate). The single-run rate is `simulate` called "
-        f"for {sw['single_run']['runs']} grid points one after another in this process; the process loop is "
-        f"`rbi simulate FILE --spin S --tilt T --duration {g['duration']:g}` for "
-        f"{sw['process_loop']['runs']} grid points.",
+def _table(columns: list[tuple], records) -> tuple[list, list[list[str]]]:
+    """The headers and the rows of a table of ``records``, from ``(header, cell)`` pairs; a
+    header is a string or a ``(quantity, unit)`` pair, ``cell`` turns a record into its text."""
+    return [h for h, _ in columns], [[cell(r) for _, cell in columns] for r in records]
+
+
+def _num(key: str, digits: int = 3, scale: float = 1.0):
+    return lambda r: number(None if r.get(key) is None else scale * r[key], digits)
+
+
+def _err(key: str):
+    return lambda r: _sci(r.get(key))
+
+
+def _count(key: str):
+    return lambda r: "—" if r.get(key) is None else f"{r[key]:,}"
+
+
+def _rtol(r: dict) -> str:
+    return f"{r['rtol']:g}"
+
+
+CAD_COLUMNS = [
+    ("file", lambda r: r["file"]),
+    ("triangles", _count("triangles")),
+    ("MB", _num("bytes", scale=1e-6)),
+    (("load", "s"), _num("seconds")),
+    ("volume err", _err("volume_error")),
+    ("CoM err", _err("com_error")),
+    ("inertia err", _err("inertia_error")),
+    ("estimate", _err("integration_error")),
+]
+"""Errors are relative to the closed form; the estimate is the integration's own (STEP only)."""
+
+
+def cad_title(cad: dict) -> str:
+    if cad.get("error"):
+        return f"CAD solids: {cad['error']}"
+    a, b, c = cad["plate_mm"]
+    return (
+        f"CAD solids: a {a:g} × {b:g} × {c:g} mm plate with {cad['holes']} holes of radius "
+        f"{cad['hole_radius_mm']:g} mm, read as STEP (exact geometry) and as STL, whole load cold; "
+        "errors relative, against the closed form"
+    )
+
+
+def reference_text(case: dict) -> str:
+    ref = case["reference"]
+    if ref["method"] == "exact":
+        return "closed form (Euler–Poinsot)"
+    check = ref.get("check", {})
+    return (
+        f"rbi at rtol {ref['rtol']:g}; scipy DOP853 at rtol {check.get('rtol', 0):g} differs from it by "
+        f"{_sci(check.get('orientation_difference_deg'))}°"
+    )
+
+
+def _method(r: dict) -> str:
+    if r.get("default_settings"):
+        return "rbi defaults"
+    return METHOD_NAMES[r["method"]] + (" ★" if r.get("chapter_setup") else "")
+
+
+def work_table(case: dict) -> tuple[list, list[list[str]]]:
+    """Each run of a work-precision case: its error, drift, cost and speed against the chapter's."""
+    chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
+
+    def speedup(r):
+        return _times(chapter["seconds"] / r["seconds"] if chapter and r["seconds"] > 0 else None)
+
+    columns = [
+        ("method", _method),
+        ("rtol", _rtol),
+        (("orient. error", "deg"), _err("orientation_error_deg")),
+        (("ω error", "rad/s"), _err("omega_error")),
+        ("rel. drift", _err("drift")),
+        ("steps", _count("steps")),
+        ("RHS evals", _count("rhs_evals")),
+        (("time", "s"), _num("seconds", 2)),
+        ("chapter ÷ this", speedup),
     ]
-    if "error" in mem:
-        return out + ["", f"Memory: the child sweep failed: {mem['error']}"]
-    out += [
-        "",
-        f"Memory: `{mem['command']}` as a child process: peak resident memory "
-        f"{number(mem['peak_rss_mb'], 3)} MB over {mem['rows_written']:,} rows streamed in "
-        f"{number(mem['seconds'], 3)} s; resident memory sampled while it ran (flat means bounded):",
-        "",
-        _md_table(
-            ["time [s]", "RSS [MB]", "CSV written [MB]"],
-            [
-                [number(s["seconds"], 3), number(s["rss_mb"], 3), number(s["csv_bytes"] / 2**20, 3)]
-                for s in mem["samples"]
-            ],
-        ),
-    ]
-    return out
+    return _table(columns, case["runs"] + [case["default"]])
+
+
+CLOUD_COLUMNS = [
+    ("points", _count("points")),
+    (("mass", "ms"), _num("mass_s", scale=1e3)),
+    (("CoM", "ms"), _num("com_s", scale=1e3)),
+    (("+inertia", "ms"), _num("combine_s", scale=1e3)),
+    (("principal", "ms"), _num("principal_s", scale=1e3)),
+    (("total", "ms"), _num("total_s", scale=1e3)),
+    ("ns/point", _num("ns_per_point")),
+    (("CSV spec", "ms"), _num("load_csv_s", scale=1e3)),
+    ((".npy spec", "ms"), _num("load_npy_s", scale=1e3)),
+    (("CSV", "MB"), _num("csv_megabytes")),
+]
+PARTS_COLUMNS = [
+    ("parts", _count("parts")),
+    (("YAML", "MB"), _num("yaml_megabytes")),
+    (("parse YAML", "s"), _num("read_yaml_s")),
+    (("validate", "s"), _num("validate_s")),
+    (("translate", "s"), _num("translate_s")),
+    (("load total", "s"), _num("load_total_s")),
+    ("µs/part", _num("us_per_part")),
+    (("same as JSON", "s"), _num("load_total_json_s")),
+    (("core", "s"), _err("core_s")),
+]
+LATENCY_COLUMNS = [
+    ("command", lambda r: r["command"]),
+    (("CPU median", "s"), lambda r: "failed" if "error" in r else _num("cpu_median_s")(r)),
+    ("× numpy import (CPU)", lambda r: "" if "error" in r else _times(r.get("cpu_ratio_to_numpy_import"))),
+    (("wall median", "s"), lambda r: "" if "error" in r else _num("median_s")(r)),
+    (("wall best", "s"), lambda r: "" if "error" in r else _num("best_s")(r)),
+    ("× numpy import (wall)", lambda r: "" if "error" in r else _times(r.get("ratio_to_numpy_import"))),
+    ("wall spread", lambda r: r["error"] if "error" in r else f"{100 * r['spread']:.0f}%"),
+]
+
+
+def _clock(row: dict) -> str:
+    """Which time a latency row's target is judged on: CPU when it was measured, else wall."""
+    return "CPU" if "cpu_ratio_to_numpy_import" in row else "wall"
+
+
+def _ratio(row: dict) -> float | None:
+    return row.get("cpu_ratio_to_numpy_import", row.get("ratio_to_numpy_import"))
+
+
+def _seconds(row: dict) -> float | None:
+    return row.get("cpu_median_s", row.get("median_s"))
 
 
 # --- CSV -------------------------------------------------------------------------------------

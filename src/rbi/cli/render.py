@@ -13,7 +13,9 @@ from typing import Any
 
 import numpy as np
 
-from rbi.api import SpecError, csv_lines, number  # number re-exported: the tables and commands format with it
+from rbi.api import SpecError, csv_lines
+from rbi.api import number as number  # re-exported: the tables and commands format with it
+from rbi.api import vector_text as text_vector  # the one vector formatter (rbi.text)
 from rbi.cli.terminal import say, terminal_safe
 
 
@@ -226,7 +228,7 @@ def _has_non_finite(value: Any) -> bool:
 def vector_text(v, digits: int = 6, scale: float = 0.0) -> str:
     """``[x, y, z]`` with noise below :data:`NOISE_RELATIVE` of the vector's largest entry, or
     of ``scale``, printed as 0."""
-    return "[" + ", ".join(number(x, digits) for x in without_noise(v, scale)) + "]"
+    return text_vector(without_noise(v, scale), digits)
 
 
 def body_size(body) -> float:

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 import numpy as np
 from numpy.typing import ArrayLike
 
-from rbi.core.inertia import centre_of_mass, point_mass_inertia, principal_axes, symmetrize
+from rbi.core.inertia import centre_of_mass, parallel_axis, principal_axes, symmetrize
 
 
 def _frozen(values: ArrayLike, shape: tuple[int, ...]) -> np.ndarray:
@@ -80,7 +80,7 @@ class MassProperties:
     def inertia_about(self, point: ArrayLike) -> np.ndarray:
         """Inertia (M·L²) about ``point`` (L, this frame) in this frame's axes (parallel axis)."""
         offset = np.asarray(point, dtype=float) - self.center_of_mass
-        return symmetrize(self.inertia_about_com + point_mass_inertia(self.mass, offset))
+        return symmetrize(parallel_axis(self.inertia_about_com, self.mass, offset))
 
     def transformed(
         self,
