@@ -138,5 +138,7 @@ def test_robot_audit_target_is_shown_in_seconds_not_as_a_ratio():
     assert row["met"] is True and row["unit"] == "s"
     shown = target_rows([row])[0]
     assert shown[2:5] == ["3.21 s", "≤ 5 s", "yes"] and "×" not in "".join(shown)
-    slow = target_rows(targets({"robotaudit": dict(measured, seconds=12.5)}))[0]
-    assert slow[2:5] == ["12.5 s", "≤ 5 s", "NO"]
+    slow = target_rows(
+        targets({"robotaudit": dict(measured, seconds=12.5, cpu_seconds=3.9, load_average=6.1)})
+    )[0]
+    assert slow[2:5] == ["12.5 s", "≤ 5 s", "NO"] and slow[6].endswith("; CPU 3.9 s at load 6.1")

@@ -274,6 +274,11 @@ def _robotaudit_targets(ra: dict) -> list[dict]:
     quick = ra.get("links", 0) < 10**5
     detail = ra.get("error") or (
         f"{number(ra['megabytes'], 3)} MB, {number(ra['links_per_second'], 3)} links/s"
+        + (
+            f"; CPU {number(ra['cpu_seconds'], 3)} s at load {number(ra['load_average'], 2)}"
+            if "cpu_seconds" in ra
+            else ""
+        )
         + ("; a quick run: the target is for 100,000 links" if quick else "")
     )
     return [
