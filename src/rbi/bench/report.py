@@ -36,7 +36,6 @@ def _times(value: float | None) -> str:
 
 
 def _target(
-    area: str,
     what: str,
     measured: float | None,
     limit: float,
@@ -49,7 +48,6 @@ def _target(
     quantity shown with it (``"s"``), None for a ratio or a unit the target's words end in."""
     met = None if measured is None else (measured >= limit if at_least else measured <= limit)
     return {
-        "area": area,
         "target": what,
         "measured": measured,
         "limit": limit,
@@ -65,9 +63,9 @@ def targets(result: dict) -> list[dict]:
     """Every speed target (kernel, start-up, large specs, sweep) that this run measured: the ratio, its limit and the
     baseline it was measured against (in the same run)."""
     out = []
-    for section, section_targets in SECTION_TARGETS.items():
+    for section, (area, section_targets) in SECTION_TARGETS.items():
         if result.get(section):
-            out += section_targets(result[section])
+            out += [{"area": area} | row for row in section_targets(result[section])]
     return out
 
 
@@ -81,7 +79,6 @@ def _kernel_targets(k: dict) -> list[dict]:
         )
         out.append(
             _target(
-                "kernel",
                 f"in-process simulate at defaults ({k['case']['spec']}, {k['case']['duration']:g} s) "
                 "÷ the chapter's set-up, speed-up",
                 k["ratio_default"],
@@ -95,7 +92,6 @@ def _kernel_targets(k: dict) -> list[dict]:
         best = k.get("best_matching")
         out.append(
             _target(
-                "kernel",
                 "the same at equal-or-better error, speed-up",
                 k.get("ratio_best_matching"),
                 k["targets"]["ratio_best_matching"],
@@ -115,7 +111,6 @@ def _kernel_targets(k: dict) -> list[dict]:
         )
         out.append(
             _target(
-                "kernel",
                 "in-process simulate at defaults ÷ a minimal loop with the same DOP853 steps, time",
                 k["ratio_to_minimal_loop"],
                 k["targets"]["ratio_to_minimal_loop"],
@@ -135,7 +130,6 @@ def _latency_targets(lat: dict) -> list[dict]:
         if "ratio" in first:
             out.append(
                 _target(
-                    "start-up",
                     f"first `{first['command']}` in a fresh HOME ÷ a later one, time",
                     first["ratio"],
                     first["target"],
@@ -148,7 +142,6 @@ def _latency_targets(lat: dict) -> list[dict]:
         elif "error" in first:
             out.append(
                 _target(
-                    "start-up",
                     "first rbi simulate in a fresh HOME ÷ a later one",
                     None,
                     1.3,
@@ -161,7 +154,6 @@ def _latency_targets(lat: dict) -> list[dict]:
         if per_file:
             out.append(
                 _target(
-                    "start-up",
                     "each additional file in one `rbi inertia` process (the bundled bodies), ms",
                     per_file.get("per_file_ms"),
                     per_file["target_ms"],
@@ -175,7 +167,6 @@ def _latency_targets(lat: dict) -> list[dict]:
             if "target" in row:
                 out.append(
                     _target(
-                        "start-up",
                         f"`{row['command']}` as a whole process, {_clock(row)} time",
                         _ratio(row),
                         row["target"],
@@ -208,7 +199,6 @@ def _largespec_targets(ls: dict) -> list[dict]:
                 )
             out.append(
                 _target(
-                    "large specs",
                     f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
                     ratio,
                     ls["target"],
@@ -228,7 +218,6 @@ def _sweep_targets(sw: dict) -> list[dict]:
         single, loop, sweep = sw["single_run"], sw["process_loop"], sw["sweep"]
         out.append(
             _target(
-                "sweep",
                 f"`rbi sweep` throughput over {sweep['runs']:,} runs ÷ (cores × single-run rate)",
                 sw["ratio_to_cores_x_single"],
                 sw["targets"]["ratio_to_cores_x_single"],
@@ -241,7 +230,6 @@ def _sweep_targets(sw: dict) -> list[dict]:
         )
         out.append(
             _target(
-                "sweep",
                 "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
                 sw["ratio_to_process_loop"],
                 sw["targets"]["ratio_to_process_loop"],
@@ -253,7 +241,6 @@ def _sweep_targets(sw: dict) -> list[dict]:
         mem = sw["memory"]
         out.append(
             _target(
-                "sweep",
                 f"peak resident memory of a streaming sweep of {mem.get('runs', 0):,} runs, MB",
                 mem.get("peak_rss_mb"),
                 sw["targets"]["peak_rss_mb"],
@@ -283,7 +270,6 @@ def _robotaudit_targets(ra: dict) -> list[dict]:
     )
     return [
         _target(
-            "robot audit",
             f"`rbi audit` of a URDF of {ra.get('links', 0):,} links (inertial, box collision, revolute joints), wall time",
             ra.get("seconds"),
             ra["target_s"],
@@ -296,13 +282,13 @@ def _robotaudit_targets(ra: dict) -> list[dict]:
 
 
 SECTION_TARGETS = {
-    "kernel": _kernel_targets,
-    "latency": _latency_targets,
-    "largespec": _largespec_targets,
-    "sweep": _sweep_targets,
-    "robotaudit": _robotaudit_targets,
+    "kernel": ("kernel", _kernel_targets),
+    "latency": ("start-up", _latency_targets),
+    "largespec": ("large specs", _largespec_targets),
+    "sweep": ("sweep", _sweep_targets),
+    "robotaudit": ("robot audit", _robotaudit_targets),
 }
-"""Each section of a bench result that has speed targets, and the function that lists them."""
+"""Each section of a bench result that has speed targets: its area and the function that lists them."""
 
 
 TARGET_COLUMNS = ["area", "target", "measured", "limit", "met", "baseline (same run)", "detail"]
@@ -858,24 +844,14 @@ def _seconds(row: dict) -> float | None:
 # --- CSV -------------------------------------------------------------------------------------
 
 
+CSV_FIELDS = ("method", "rtol", "chapter_setup", "default_settings", "orientation_error_deg", "omega_error")
+CSV_FIELDS += ("drift", "steps", "rhs_evals", "seconds")
+
+
 def csv_rows(result: dict) -> list[dict]:
     """One row per work-precision run (the table scripts most often want)."""
-    rows = []
-    for case in result.get("workprecision", {}).get("cases", []):
-        for r in case["runs"] + [case["default"]]:
-            rows.append(
-                {
-                    "case": case["name"],
-                    "method": r["method"],
-                    "rtol": r["rtol"],
-                    "chapter_setup": r.get("chapter_setup", False),
-                    "default_settings": r.get("default_settings", False),
-                    "orientation_error_deg": r["orientation_error_deg"],
-                    "omega_error": r["omega_error"],
-                    "drift": r["drift"],
-                    "steps": r["steps"],
-                    "rhs_evals": r["rhs_evals"],
-                    "seconds": r["seconds"],
-                }
-            )
-    return rows
+    return [
+        {"case": case["name"]} | {key: r.get(key, False) for key in CSV_FIELDS}
+        for case in result.get("workprecision", {}).get("cases", [])
+        for r in case["runs"] + [case["default"]]
+    ]
