@@ -21,6 +21,7 @@ large chunks, a second).
 from __future__ import annotations
 
 import codecs
+import gc
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
@@ -63,8 +64,11 @@ _DECLARATION = re.compile(rb"^<\?xml[^>]*?encoding\s*=\s*([\"'])([^\"']*)\1", re
 _BOMS = ((codecs.BOM_UTF8, "utf-8"), (codecs.BOM_UTF16_LE, "utf-16-le"), (codecs.BOM_UTF16_BE, "utf-16-be"))
 
 
+_NO_CHILDREN: list = []  # the children of every element that has none (never appended to)
+
+
 class XmlElement:
-    """One element: ``tag`` without namespace, ``attrib`` as written, ``text`` the character data
+    """One element: ``tag`` without namespace, ``attrib`` as written (:meth:`get` one), ``text`` the character data
     directly inside it (stripped), ``children`` in order, and its span ``start:end`` in
     :attr:`XmlDocument.text` (UTF-8 bytes) from ``<`` to the closing ``>``; ``line`` is 1-based.
     ``end`` and ``text`` are worked out when first asked for (a robot file has a million elements
@@ -72,7 +76,7 @@ class XmlElement:
 
     __slots__ = (
         "tag",
-        "attrib",
+        "_attributes",
         "line",
         "start",
         "children",
@@ -84,10 +88,11 @@ class XmlElement:
     )
 
     def __init__(
-        self, tag: str, attrib: dict[str, str], line: int, start: int, parent: XmlElement | None = None
+        self, tag: str, attributes: list[str], line: int, start: int, parent: XmlElement | None = None
     ):
-        self.tag, self.attrib, self.line, self.start, self.parent = tag, attrib, line, start, parent
-        self.children: list[XmlElement] = []
+        self.tag, self.line, self.start, self.parent = tag, line, start, parent
+        self._attributes = attributes  # name, value, name, value, ... as written (half a dict's memory)
+        self.children: list[XmlElement] = _NO_CHILDREN  # replaced by a list at the first child
         self.source: str | None = None
         self._pieces: list[str] | None = None  # character data directly inside, as expat gave it
         self._close = -1  # byte index of the end tag (or of the empty element's one tag)
@@ -109,8 +114,21 @@ class XmlElement:
             return opening_end  # <tag .../>: its one tag is the whole element
         return _tag_end(self._bytes, self._close)
 
+    @property
+    def attrib(self) -> dict[str, str]:
+        """The attributes as written, name → value (a new dict each time)."""
+        pairs = self._attributes
+        return dict(zip(pairs[::2], pairs[1::2]))
+
     def get(self, key: str, default: str | None = None) -> str | None:
-        return self.attrib.get(key, default)
+        pairs = self._attributes
+        try:
+            at = pairs.index(key)
+        except ValueError:
+            return default
+        if at % 2 == 0:
+            return pairs[at + 1]
+        return self.attrib.get(key, default)  # the name was first found as a value
 
     def child(self, tag: str) -> XmlElement | None:
         for each in self.children:
@@ -265,9 +283,12 @@ def _parse(path: str, text: bytes) -> XmlElement:
     _refuse_huge_tokens(path, text)
     parser = expat.ParserCreate(encoding="utf-8")
     parser.buffer_text = True
+    parser.ordered_attributes = True
     parser.buffer_size = 1 << 20
     builder = _TreeBuilder(path, text, parser)
     builder.attach(parser)
+    collecting = gc.isenabled()
+    gc.disable()  # a million new elements, none of them garbage: the collector's passes over them are waste
     try:
         for offset in range(0, max(len(text), 1), PARSE_CHUNK_BYTES):
             parser.Parse(text[offset : offset + PARSE_CHUNK_BYTES], False)
@@ -279,6 +300,9 @@ def _parse(path: str, text: bytes) -> XmlElement:
         ) from None
     except RecursionError:
         raise InputError(f"{path}: elements nested too deeply") from None
+    finally:
+        if collecting:
+            gc.enable()
     if builder.root is None:
         raise InputError(f"{path}: empty XML document")
     return builder.root
@@ -302,7 +326,7 @@ class _TreeBuilder:
         parser.UnparsedEntityDeclHandler = self.refuse
         parser.ExternalEntityRefHandler = self.refuse
 
-    def start(self, tag: str, attrib: dict[str, str]) -> None:
+    def start(self, tag: str, attributes: list[str]) -> None:
         stack, parser = self.stack, self.parser
         if len(stack) >= MAX_DEPTH:
             raise InputError(
@@ -312,10 +336,13 @@ class _TreeBuilder:
         if "}" in tag:
             tag = tag.rsplit("}", 1)[-1]
         parent = stack[-1] if stack else None
-        element = XmlElement(tag, attrib, parser.CurrentLineNumber, parser.CurrentByteIndex, parent)
+        element = XmlElement(tag, attributes, parser.CurrentLineNumber, parser.CurrentByteIndex, parent)
         element._bytes = self.text
         if parent is not None:
-            parent.children.append(element)
+            if parent.children is _NO_CHILDREN:
+                parent.children = [element]
+            else:
+                parent.children.append(element)
         elif self.root is None:
             self.root = element
         stack.append(element)
@@ -327,6 +354,8 @@ class _TreeBuilder:
         if self.stack:
             element = self.stack[-1]
             if element._pieces is None:
+                if data.isspace():
+                    return  # blank before any text: stripped from the text in any case
                 element._pieces = [data]
             else:
                 element._pieces.append(data)
