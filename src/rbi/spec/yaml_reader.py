@@ -170,7 +170,21 @@ def read_document(text: str) -> Any:
     Raises :class:`YamlProblem` for anything this module refuses and ``yaml.YAMLError`` (with a
     mark) for a syntax error found by the parser. Scalars (most of a document) are read inline
     here; collections, aliases and documents by :class:`_Reading`."""
-    get_event = _parser(text).get_event
+    try:
+        return _read_events(_parser(text).get_event)
+    except yaml.MarkedYAMLError as exc:
+        # libyaml as PyYAML 6.0.4's wheels bundle it has a nesting limit of its own (1000) that
+        # its scanner can reach while looking ahead, before this reader sees the 101st level.
+        if "maximum nesting depth" not in (exc.problem or "") or exc.problem_mark is None:
+            raise
+        mark = exc.problem_mark
+        raise YamlProblem(
+            f"nested more than {MAX_DEPTH} levels deep", mark.line + 1, mark.column + 1
+        ) from None
+
+
+def _read_events(get_event) -> Any:
+    """The document built from the parser's events (see :func:`read_document`)."""
     ScalarEvent, AliasEvent, DocumentStartEvent = yaml.ScalarEvent, yaml.AliasEvent, yaml.DocumentStartEvent
     starts = (yaml.MappingStartEvent, yaml.SequenceStartEvent)
     ends = (yaml.MappingEndEvent, yaml.SequenceEndEvent)
