@@ -25,15 +25,17 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from rbi.core.mass import MassProperties
-from rbi.core.rotation import LARGEST_ANGLE_DEG
+from rbi.core.inertia import moment_about_axis, principal_axes, radii_of_gyration, re_express, unit_axis
+from rbi.core.mass import MassProperties, inertia_shares
+from rbi.core.rotation import LARGEST_ANGLE_DEG, matrix_to_quaternion
 from rbi.errors import ArgumentError, SpecError
 from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
-from rbi.formats.paths import outside_paths_allowed
+from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
-from rbi.spec.checks import Check
+from rbi.spec.checks import Check, run_checks
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
+from rbi.spec.units import convert_body
 from rbi.text import csv_lines, number, visible
 
 if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's modules load then)
@@ -213,7 +215,6 @@ def spec_schema() -> dict[str, Any]:
 def unit_vector(direction: Sequence[float] | np.ndarray) -> np.ndarray:
     """``direction / |direction|`` as (3,), for any finite non-zero vector however large or
     small its components (1e-300 and 1e300 alike); ArgumentError naming ``direction`` else."""
-    from rbi.core.inertia import unit_axis
 
     try:
         return unit_axis(direction)
@@ -442,7 +443,6 @@ class Body(TableRepr):
                 order — a sequence of ``("x"|"y"|"z", degrees)`` pairs; or a (3, 3) rotation
                 matrix R, body → world. The matrix is then given in world axes: ``R I Rᵀ``.
         """
-        from rbi.core.inertia import re_express
 
         matrix = self._loaded.props.inertia_about(self.point(about))
         if axes is None:
@@ -452,7 +452,6 @@ class Body(TableRepr):
     def principal(self, about: Point = "com") -> Principal:
         """Principal moments (ascending) and axes (rows, body frame, right-handed) about a point
         (default the centre of mass), as ``rbi principal`` prints them."""
-        from rbi.core.inertia import principal_axes, radii_of_gyration
 
         point = self.point(about)
         moments, axes = principal_axes(self._loaded.props.inertia_about(point))
@@ -466,8 +465,6 @@ class Body(TableRepr):
 
     def parts(self) -> list[Part]:
         """Each part's mass properties, in file order (see `Part`)."""
-        from rbi.core.inertia import principal_axes
-        from rbi.core.mass import inertia_shares
         from rbi.spec.translate import integration_errors
         from rbi.spec.volumes import part_volume
 
@@ -544,7 +541,6 @@ class Body(TableRepr):
         """The same body with every number in other units: lengths in ``length`` (a key of
         `LENGTH_UNITS`, e.g. ``"mm"``), masses in ``mass`` (a key of `MASS_UNITS`, e.g.
         ``"g"``), inertias in mass·length²; the pivot and each part follow."""
-        from rbi.spec.units import convert_body
 
         for parameter, value, known in (("length", length, LENGTH_UNITS), ("mass", mass, MASS_UNITS)):
             if value not in known:
@@ -557,7 +553,6 @@ class Body(TableRepr):
         """The scalar moment of inertia ``nᵀ I n`` (mass·length²) about the line through
         ``about`` along ``axis`` (any non-zero length), with ``axis`` in the axes of
         ``inertia(about, axes)``: body axes, or world axes after ``axes``."""
-        from rbi.core.inertia import moment_about_axis
 
         matrix = self.inertia(about, axes)
         try:
@@ -571,8 +566,6 @@ class Body(TableRepr):
         """Each expectation of the spec's ``expect:`` block (see docs/check.md) against the
         body, as ``rbi check`` compares them (see `Check`), in the spec's units. SpecError when
         the spec has none."""
-        from rbi.spec.checks import run_checks
-        from rbi.spec.units import convert_body
 
         loaded, spec = self._loaded, self._loaded.spec
         if spec is not None and (spec.units.length, spec.units.mass) != (
@@ -1135,7 +1128,6 @@ def audit(
         SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
             read, or repeats a link name; ``out`` cannot be written.
     """
-    from rbi.formats.paths import outside_paths_are_allowed
     from rbi.robot import audit as run_audit
 
     if out is not None and not fix:
@@ -1298,7 +1290,6 @@ def import_robot(
 def _inertial_quaternion(inertial: Any) -> np.ndarray:
     """``[w, x, y, z]`` of the inertial frame: the file's own quaternion, else the identity or the
     rotation's."""
-    from rbi.core.rotation import matrix_to_quaternion
 
     if inertial.quaternion is not None and inertial.rpy is None:
         return np.asarray(inertial.quaternion)

@@ -13,7 +13,10 @@ from typing import Annotated
 
 import typer
 
+from rbi.api import SpecError
+from rbi.api import audit as run_audit
 from rbi.cli.options import FormatOption, OutputFormat, RobotFile
+from rbi.cli.terminal import say
 
 PackagePathOption = Annotated[
     list[str] | None,
@@ -113,7 +116,6 @@ def audit(
       rbi audit robot.urdf --fix                    (dry run: the changes as a diff)
       rbi audit robot.urdf --fix --out fixed.urdf
     """
-    from rbi.api import audit as run_audit
 
     target = _fix_target(file, fix, out)
     report = run_audit(
@@ -141,7 +143,6 @@ def _fix_target(file: str, fix: bool, out: str | None):
     extension), or None."""
     import os
 
-    from rbi.api import SpecError
     from rbi.cli.output import output_target
 
     if out is None:
@@ -194,7 +195,6 @@ def _table(report) -> None:
 
     from rbi.cli.render import number, print_table, terminal_safe
     from rbi.cli.tables import titled
-    from rbi.cli.terminal import say
 
     word = report.model.link_word
     plural = "bodies" if word == "body" else word + "s"

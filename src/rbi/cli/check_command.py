@@ -7,6 +7,7 @@ file is in :mod:`rbi.cli.check_report`.
 
 from __future__ import annotations
 
+from rbi.cli import check_report
 from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
 
 
@@ -22,6 +23,5 @@ def check(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
       rbi check wheel_with_holes.yaml --format json
       rbi check specs/*.yaml --format csv
     """
-    from rbi.cli import check_report
 
     return check_report.check(files, format.value)

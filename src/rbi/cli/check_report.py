@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from rbi.cli import tables
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.mass_reports import load_body
 from rbi.cli.render import number
@@ -97,8 +98,6 @@ def _csv_rows(checks) -> list[dict[str, Any]]:
 
 def _table(body, checks, failed: int):
     from rich.markup import escape
-
-    from rbi.cli import tables
 
     verdict = "all expectations hold" if not failed else f"{failed} of {len(checks)} expectations FAIL"
     t = tables.titled(f"{body.name or body.path} — check: {verdict}")

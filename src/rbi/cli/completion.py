@@ -18,6 +18,8 @@ import os
 import sys
 from pathlib import Path
 
+from rbi import SpecError
+
 PROG = "rbi"
 COMPLETE_VAR = "_RBI_COMPLETE"
 SHELLS = ("bash", "zsh")
@@ -35,7 +37,6 @@ def enable() -> None:
 
 def shell_name() -> str:
     """The user's shell from ``$SHELL`` (bash or zsh); anything else is bad input."""
-    from rbi import SpecError
 
     shell = Path(os.environ.get("SHELL", "")).name
     if shell not in SHELLS:
@@ -73,7 +74,6 @@ def install(shell: str, home: Path | None = None) -> tuple[Path, Path]:
 
 def _write(target: Path, text: str) -> None:
     """The script, written whole (a temporary file renamed into place), never through a link."""
-    from rbi import SpecError
 
     target.parent.mkdir(parents=True, exist_ok=True)
     if target.is_symlink():

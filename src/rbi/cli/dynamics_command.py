@@ -7,7 +7,9 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from rbi.api import SpecError
+from rbi.api import LENGTH_UNITS, MASS_UNITS, SpecError
+from rbi.cli import tables
+from rbi.cli.mass_reports import load_body
 from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_vector
 from rbi.cli.render import emit, number
 
@@ -63,7 +65,6 @@ def dynamics(
       rbi dynamics robot_link.yaml --alpha 0,0,10 --omega 0,0,2 --about pivot
       rbi dynamics cubesat.yaml --torque 0,0,1e-3 --format json
     """
-    from rbi.cli.mass_reports import load_body
 
     inverse = alpha is not None
     forward = force is not None or torque is not None
@@ -127,7 +128,6 @@ def _vector(text: str | None, option: str):
 
 def _table(body, result: dict, held: bool):
     """The table of a Newton–Euler result; ``held``: the --about point was held (a pivot)."""
-    from rbi.cli import tables
 
     labels, about_label = body.unit_labels, result["about_label"]
     given, found = ("given", "result") if result["mode"] == "inverse" else ("result", "given")
@@ -153,7 +153,6 @@ def _table(body, result: dict, held: bool):
 def _load_unit(body, length_power: int) -> str:
     """Unit of a force (``length_power`` 1) or torque (2) in the file's units: N and N·m in SI,
     otherwise the file's unit with its value in N or N·m."""
-    from rbi.api import LENGTH_UNITS, MASS_UNITS
 
     units = body.units
     si = "N" if length_power == 1 else "N·m"

@@ -9,7 +9,10 @@ from typing import Annotated
 
 import typer
 
+from rbi.api import SpecError
+from rbi.cli.mass_reports import load_body
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
+from rbi.cli.render import emit, to_csv
 
 
 class ExportTarget(str, Enum):
@@ -54,9 +57,6 @@ def export(
       rbi export robot_link.yaml --to urdf
       rbi export robot_link.yaml --to mjcf --diagonal --document
     """
-    from rbi.api import SpecError
-    from rbi.cli.mass_reports import load_body
-    from rbi.cli.render import emit, to_csv
 
     if diagonal and to is not ExportTarget.mjcf:
         raise SpecError(

@@ -9,8 +9,10 @@ from typing import Annotated
 
 import typer
 
+from rbi.api import SpecError, import_step
 from rbi.cli.audit_command import PackagePathOption
 from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.terminal import say, terminal_safe
 
 ImportFile = Annotated[
     str,
@@ -94,7 +96,6 @@ def import_robot(
 def _import_robot(file: str, link, out: str | None, format: OutputFormat, package_path) -> None:
     """`rbi import ROBOT_FILE`: each link's spec, printed or written, or the listing."""
     from rbi.api import import_robot
-    from rbi.cli.terminal import say, terminal_safe
 
     robot = import_robot(file, links=link, package_paths=package_path)
     targets = _targets(robot, out, file) if out is not None else None
@@ -126,8 +127,6 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
     --format json/csv the solids and their mass properties at the density given."""
     import os
 
-    from rbi.api import SpecError, import_step
-
     if link:
         raise SpecError(
             "--link: a STEP file has solids, not links: the spec lists them all (pick with solid:)"
@@ -157,7 +156,6 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
 def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
     """The solids with their mass properties at the spec's density, SI."""
     from rbi.cli.render import emit
-    from rbi.cli.terminal import terminal_safe
 
     density = imported.density
     rows = [
@@ -188,7 +186,6 @@ def _targets(robot, out: str, source: str):
     """(checked output target, link) pairs, all checked before anything is written."""
     import os
 
-    from rbi.api import SpecError
     from rbi.cli.output import check_distinct, output_target
 
     links = robot.links
@@ -230,7 +227,6 @@ def _file_names(links, word: str) -> list[str]:
 
 def _emit_listing(format: OutputFormat, robot, targets) -> None:
     from rbi.cli.render import emit
-    from rbi.cli.terminal import terminal_safe
 
     written = {id(each): target.given for target, each in targets or []}
     rows = [

@@ -11,6 +11,8 @@ from typing import Annotated
 import numpy as np
 import typer
 
+from rbi.cli import mass_reports
+from rbi.cli.mass_reports import header, load_body, place_rows, title
 from rbi.cli.options import (
     AboutOption,
     FormatOption,
@@ -74,7 +76,6 @@ def inertia(
       rbi inertia rocket.yaml --axis 1,1,0 --about origin
       rbi inertia robot_link.yaml --products cad --units mm,g
     """
-    from rbi.cli import mass_reports
 
     return mass_reports.inertia(files, about, rotate, axis, products.value, units, format.value)
 
@@ -93,7 +94,6 @@ def principal(
       rbi principal top_bolted.yaml --about pivot --format json
       rbi principal flywheel.yaml --units SI
     """
-    from rbi.cli import mass_reports
 
     return mass_reports.principal(files, about, units, format.value)
 
@@ -132,7 +132,6 @@ def momentum(
       rbi momentum top_bolted.yaml --omega 1,0,200 --about pivot --format json
       rbi momentum rocket.yaml --omega 0,0,10 --velocity 0,0,50
     """
-    from rbi.cli.mass_reports import header, load_body
 
     w = np.array(parse_vector(omega, "--omega"))
     v_given = None if velocity is None else np.array(parse_vector(velocity, "--velocity"))
@@ -155,7 +154,6 @@ def momentum(
 def _momentum_table(body, result: dict, about_label: str):
     """The table of ``rbi momentum``'s result."""
     from rbi.cli import tables
-    from rbi.cli.mass_reports import place_rows, title
 
     labels = body.unit_labels
     return tables.quantities(

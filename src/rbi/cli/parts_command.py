@@ -6,6 +6,7 @@ The options are declared here; what it prints for each file is in :mod:`rbi.cli.
 
 from __future__ import annotations
 
+from rbi.cli import parts_report
 from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
 
 
@@ -20,6 +21,5 @@ def parts(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
       rbi parts wheel_with_holes.yaml --format json
       rbi parts *.yaml --format csv
     """
-    from rbi.cli import parts_report
 
     return parts_report.parts(files, format.value)

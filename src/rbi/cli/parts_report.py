@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from rbi.api import LENGTH_UNITS, MASS_UNITS
+from rbi.cli import tables
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.mass_reports import load_body
 from rbi.cli.render import body_size, matrix_digits, number, without_noise
@@ -53,7 +55,6 @@ def _principal_moments(body):
 def _part_rows(body) -> list[dict]:
     """One row per part: its mass, share, centre of mass, inertia about it, principal moments,
     share of the inertia, volume and the density they imply (file units and SI)."""
-    from rbi.api import LENGTH_UNITS, MASS_UNITS
 
     units = body.units
     to_si = MASS_UNITS[units["mass"]] / LENGTH_UNITS[units["length"]] ** 3
@@ -86,7 +87,6 @@ def _part_rows(body) -> list[dict]:
 def _table(body, rows, total):
     """Three tables, each narrow enough for 80 columns: mass and volume; centre of mass and
     share of the inertia; principal moments. Each ends with the whole body's row."""
-    from rbi.cli import tables
 
     labels, units = body.unit_labels, body.units
     name = body.name or body.path
@@ -158,8 +158,6 @@ def _titled_table(title: str, names: list, headers, cells, total_row):
     """Numbers never wrap (a column of them is as wide as its widest number); part names
     and shapes wrap in a narrow terminal."""
     from rich.text import Text
-
-    from rbi.cli import tables
 
     t = tables.titled(title)
     t.add_column("part", overflow="fold")

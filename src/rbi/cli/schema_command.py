@@ -7,8 +7,11 @@ from typing import Annotated
 
 import typer
 
+from rbi.api import SpecError, spec_schema
+from rbi.api import validate as problems_of
 from rbi.cli.audit_command import PackagePathOption
 from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.render import emit, terminal_safe
 
 
 def schema(format: FormatOption = OutputFormat.table) -> None:
@@ -21,8 +24,6 @@ def schema(format: FormatOption = OutputFormat.table) -> None:
       # yaml-language-server: $schema=rbi-spec.schema.json
     """
     import json
-
-    from rbi.api import SpecError, spec_schema
 
     if format is OutputFormat.csv:
         raise SpecError("--format csv: the schema is a JSON document; use --format table (indented) or json")
@@ -44,8 +45,6 @@ def validate(
       rbi validate bodies/*.yaml
       rbi validate top.yaml wheel.yaml --format json
     """
-    from rbi.api import validate as problems_of
-    from rbi.cli.render import emit, terminal_safe
 
     problems = problems_of(files, package_paths=package_path)
     reports = [{"file": path, "problems": found} for path, found in zip(files, problems)]

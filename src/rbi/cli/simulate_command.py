@@ -8,8 +8,11 @@ from typing import Annotated
 import numpy as np
 import typer
 
+from rbi import api
 from rbi.cli.extras import needs, require_matplotlib
+from rbi.cli.option_values import run_settings
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
+from rbi.cli.output import check_distinct, output_target, write_output
 from rbi.cli.render import emit, number, progress_bar, refuse_non_finite
 from rbi.cli.run_options import (
     DurationOption,
@@ -102,8 +105,6 @@ def simulate(
       rbi simulate top_bolted.yaml --spin 200 --duration 2 --out run.csv
       rbi simulate tbar.yaml --omega 0.01,0.01,3 --duration 20 --plot flip.png
     """
-    from rbi.cli.option_values import run_settings
-    from rbi.cli.output import write_output
 
     out_target, plot_target = _targets(file, out, plot)
     if out_target is not None and out_target.is_stdout:
@@ -130,7 +131,6 @@ def simulate(
 def _targets(file: str, out: str | None, plot: str | None):
     """The checked ``--out`` and ``--plot`` targets (None when not asked for); matplotlib is
     required before any work when a plot is."""
-    from rbi.cli.output import check_distinct, output_target
 
     out_target = (
         None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
@@ -144,7 +144,6 @@ def _targets(file: str, out: str | None, plot: str | None):
 
 def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: OutputFormat):
     """Load the spec and simulate it, with a progress bar on a terminal: ``(body, trajectory)``."""
-    from rbi import api
 
     body = api.load(file)
     progress = progress_bar("simulating", stdout=True, delay=0.5) if format == OutputFormat.table else None
@@ -159,7 +158,6 @@ def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: 
 
 def _plot(target, body, run, settings: dict) -> None:
     """Draw the run (resampled densely when the method's dense output allows it) at ``target``."""
-    from rbi import api
 
     shown = run
     if settings["method"] in ("default", "exact") and run.t.size < PLOT_SAMPLES and settings["duration"] > 0:

@@ -8,11 +8,16 @@ from typing import Annotated
 
 import typer
 
+from rbi import api
 from rbi.api import DEFAULT_MAX_STEPS, SpecError
+from rbi.cli import tables
 from rbi.cli.extras import needs, require, require_matplotlib
+from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
+from rbi.cli.output import check_distinct, output_target
 from rbi.cli.render import ProgressBar, emit, number, to_csv
 from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
+from rbi.cli.terminal import Terminated, say
 
 SpinOption = Annotated[
     str,
@@ -164,7 +169,6 @@ def sweep(
       rbi sweep top_bolted.yaml --spin 200 --vary 'parts.bolt.mass=normal(0.02,0.002)' --runs 500
       rbi sweep top_bolted.yaml --mass-properties --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
-    from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 
     settings = dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
     settings |= dict(
@@ -211,7 +215,6 @@ def _result(table, out: str | None, plot: str | None, plot_target) -> dict:
 def _targets(file: str, out: str | None, plot: str | None):
     """The ``--out`` and ``--plot`` targets, checked before any work (None when not asked
     for); the optional packages they need are required then too."""
-    from rbi.cli.output import check_distinct, output_target
 
     out_target = None if out is None else output_target(out, "--out", ("csv", "parquet"), inputs=[file])
     plot_target = (
@@ -236,7 +239,6 @@ def _workers(workers: int | None, dask: str | None) -> int | None:
         require("cryptography", "dask", "--dask local")  # its private TLS certificates
     if workers is None or dask not in (None, "local") or not available_cores() < workers <= 1024:
         return workers
-    from rbi.cli.terminal import say
 
     say(f"--workers {workers}: this machine gives rbi {available_cores()} cores; using {available_cores()}")
     return available_cores()
@@ -245,8 +247,6 @@ def _workers(workers: int | None, dask: str | None) -> int | None:
 def _run(file: str, settings: dict, out: str | None, resume: bool):
     """Run the sweep with a progress bar on a terminal; on Ctrl-C or SIGTERM say how many runs
     --out kept (exit 130 or 143)."""
-    from rbi import api
-    from rbi.cli.terminal import Terminated, say
 
     bar = ProgressBar("sweep", "runs") if sys.stderr.isatty() else None
     told: list[int] = []
@@ -275,8 +275,6 @@ def _run(file: str, settings: dict, out: str | None, resume: bool):
 def _table(result, table, file):
     from rich.text import Text
 
-    from rbi.cli import tables
-
     notes = [f"{result['count']:,} runs"]
     if "failed" in result:
         notes[0] += f", {result['failed']:,} failed"
@@ -299,8 +297,6 @@ def _runs_table(result, columns, rows, file):
     """One row per run (the first and last 20 of more than 40), in rbi's table style."""
     from rich import box
     from rich.table import Table
-
-    from rbi.cli import tables
 
     shown = rows if len(rows) <= 40 else rows[:20] + [None] + rows[-20:]
     table = Table(
@@ -339,7 +335,6 @@ def _runs_table(result, columns, rows, file):
 
 def _spread_table(result):
     """min, median, max and standard deviation of each quantity over the ok runs."""
-    from rbi.cli import tables
 
     spread = tables.titled("Spread over the ok runs")
     spread.add_column("quantity", no_wrap=True)

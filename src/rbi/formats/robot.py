@@ -21,6 +21,7 @@ import numpy as np
 
 from rbi.core.inertia import re_express
 from rbi.core.mass import MassProperties
+from rbi.core.rotation import euler_matrix, quaternion_to_matrix, without_rounding_noise
 from rbi.core.validity import subnormal_problem
 from rbi.errors import InputError
 
@@ -322,7 +323,6 @@ def check_inertia_range(where: Where, inertia: np.ndarray) -> None:
 
 def rpy_matrix(rpy) -> np.ndarray:
     """URDF/SDF roll, pitch, yaw (rad) about the fixed x, y, z axes: ``Rz(yaw) Ry(pitch) Rx(roll)``."""
-    from rbi.core.rotation import euler_matrix, without_rounding_noise
 
     return without_rounding_noise(euler_matrix(np.asarray(rpy, dtype=float), "xyz"))
 
@@ -330,7 +330,6 @@ def rpy_matrix(rpy) -> np.ndarray:
 def quaternion_matrix(where: Where, wxyz, what: str) -> np.ndarray:
     """Rotation of the quaternion ``w x y z`` (normalised; scaled first so huge components do
     not overflow)."""
-    from rbi.core.rotation import quaternion_to_matrix, without_rounding_noise
 
     q = np.asarray(wxyz, dtype=float)
     largest = float(np.max(np.abs(q)))

@@ -35,6 +35,7 @@ import numpy as np
 
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
+from rbi.formats import robot_xml
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot import short as _short
 from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
@@ -58,7 +59,6 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
     always) and place in the tree. InputError, one line naming the file, the link and the
     attribute, for anything unreadable, malformed or refused (duplicate link names, a mesh that
     cannot be found)."""
-    from rbi.formats import robot_xml
 
     path = str(path)
     if path.lower().endswith(".xacro"):

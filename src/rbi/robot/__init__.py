@@ -9,7 +9,11 @@ import gc
 import os
 from collections.abc import Mapping, Sequence
 
-from rbi.robot.audit import AuditReport
+from rbi.formats.paths import outside_paths_allowed
+from rbi.formats.robot_files import read_robot
+from rbi.formats.robot_paths import parse_package_paths
+from rbi.robot.audit import AuditReport, audit_model, material_density
+from rbi.robot.tree import parse_joint_values
 
 
 def audit(
@@ -39,11 +43,6 @@ def audit(
     changes, the links that could not be fixed); ``mesh_repair``: close meshes' small holes
     (three or four edges) first, each repair listed in ``report.notes``. Raises :class:`rbi.SpecError` on bad input.
     """
-    from rbi.formats.paths import outside_paths_allowed
-    from rbi.formats.robot_files import read_robot
-    from rbi.formats.robot_paths import parse_package_paths
-    from rbi.robot.audit import audit_model, material_density
-    from rbi.robot.tree import parse_joint_values
 
     packages = parse_package_paths(package_paths)
     if isinstance(joints, Mapping):

@@ -34,12 +34,14 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution
 from rbi.reprs import TableRepr
+from rbi.robot.tree import placement, totals
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -237,7 +239,6 @@ def _moments(properties: MassProperties) -> np.ndarray:
     diagonal = np.diagonal(I)
     if not np.any(I[_OFF_DIAGONAL]) and np.all(np.abs(diagonal) < 1e300):
         return diagonal[np.argsort(diagonal, kind="stable")]
-    from rbi.core.inertia import symmetric_eigen
 
     return symmetric_eigen(I)[0]
 
@@ -277,7 +278,6 @@ def audit_model(
 ) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
     from rbi.robot.statics import joint_torques
-    from rbi.robot.tree import placement, totals
 
     if geometry not in GEOMETRY_CHOICES:
         raise InputError(f"--geometry: {geometry!r}: must be collision, visual or none")

@@ -9,11 +9,11 @@ from typing import Any
 
 from rbi.formats.robot import Pose, RobotModel
 from rbi.formats.robot_files import custom_part
+from rbi.robot.tree import link_poses
 
 
 def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tuple[dict[str, Any], list[str]]:
     """(spec, names of the links left out because they have no mass)."""
-    from rbi.robot.tree import link_poses
 
     poses = link_poses(model, joints)
     to_frame = Pose.identity()

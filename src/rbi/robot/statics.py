@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbi.formats.robot import Pose, RobotModel
+from rbi.robot.tree import parents_first, placement
 
 STANDARD_GRAVITY = 9.81
 """m/s², along −z of the root link's frame for URDF and SDF."""
@@ -45,7 +46,6 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     """The holding torque of every revolute and prismatic joint at ``joints`` (name → value;
     the others at the reference configuration), in file order of their links. ``at``: the links
     already placed there (:func:`rbi.robot.tree.placement`)."""
-    from rbi.robot.tree import placement
 
     placed = placement(model, joints) if at is None else at
     gravity = _gravity(model)
@@ -95,7 +95,6 @@ def _gravity(model: RobotModel) -> np.ndarray:
 def _subtree_sums(model: RobotModel, placed: dict[int, Pose]):
     """For each link: the mass of its subtree (kg) and its first moment Σ m c (kg·m), from each
     link's pose in the torques' frame."""
-    from rbi.robot.tree import parents_first
 
     by_name = {link.key: link for link in model.links}
     mass = {link.index: 0.0 for link in model.links}

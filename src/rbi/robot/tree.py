@@ -16,6 +16,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rbi.core.mass import MassProperties
+from rbi.core.rotation import axis_angle_matrix
 from rbi.errors import InputError
 from rbi.formats.robot import Pose, RobotModel
 
@@ -129,7 +130,6 @@ def parents_first(model: RobotModel, by_name: dict) -> list:
 
 
 def _motion(motion, q: float) -> Pose:
-    from rbi.core.rotation import axis_angle_matrix
 
     amount = q - motion.reference
     if motion.kind == "prismatic":

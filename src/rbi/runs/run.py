@@ -18,9 +18,17 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept
+from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, unit_vector
+from rbi.core.spin_axis import default_spin_axis
 from rbi.errors import ArgumentError, InputError
 from rbi.runs.values import finite, require_numbers, vector_value
+from rbi.sim.api import METHODS, RTOL_RANGE, SimulationError, simulate
+from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
+from rbi.sim.diagnostics import tilt_deg
+from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.sim.summary import CSV_COLUMNS, sample_columns, summarize
+from rbi.sim.summary import error_estimate as estimate
+from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 
 MAX_SAMPLES = 1_000_000
 """Most samples one run reports (a CSV of 10⁶ rows is about 250 MB)."""
@@ -34,7 +42,6 @@ def check_run_settings(duration: Any, tilt_axis: Any, gravity: Any, max_steps: A
     """Refuse the settings that `simulate`, `animate` and `sweep` all take: duration (s, >= 0),
     tilt axis (world x or y), gravity (m/s², >= 0, or None for 9.81), step budget (>= 1 or
     None) and tolerance (in :data:`rbi.sim.api.RTOL_RANGE`, or None for the method's own)."""
-    from rbi.sim.api import RTOL_RANGE
 
     require_numbers(duration=duration, gravity=gravity, rtol=rtol)
     require_numbers(integral=True, max_steps=max_steps)
@@ -64,7 +71,6 @@ def check_run_options(
     rad/s), the tilt (deg) and :func:`check_run_settings`'s (``gravity``, ``max_steps``,
     ``rtol`` as keywords; other keywords, such as ``spin_axis``, are checked where they are
     used)."""
-    from rbi.sim.api import METHODS
 
     if method not in METHODS:
         raise ArgumentError("method", f"must be one of {', '.join(METHODS)} (got {method!r})")
@@ -119,7 +125,6 @@ def spin_axis_value(value: str | Sequence[float] | None) -> list[float] | None:
         raise ArgumentError(
             "spin_axis", "must not be zero [0, 0, 0]: give a direction in body axes, e.g. y or (0, 1, 0)"
         )
-    from rbi.core.rotation import unit_vector
 
     return unit_vector(vector).tolist()
 
@@ -128,8 +133,6 @@ def body_spin_axis(body: Any, given: str | Sequence[float] | None = None) -> np.
     """The spin axis of a loaded body (unit, body frame): ``given`` (see :func:`spin_axis_value`),
     else the spec's ``spin_axis:``, else :func:`rbi.core.spin_axis.default_spin_axis` of the
     inertia about the pivot (about the centre of mass of a free body)."""
-    from rbi.core.rotation import unit_vector
-    from rbi.core.spin_axis import default_spin_axis
 
     axis = spin_axis_value(given)
     if axis is not None:
@@ -147,8 +150,6 @@ def scene_of(body: Any, gravity_si: float | None, spin_axis: str | Sequence[floa
     ``pivot``) or a free body, under gravity ``gravity_si`` m/s² (None: standard gravity),
     converted to the spec's length unit, spinning about :func:`body_spin_axis`.
     :class:`InputError` when the body cannot be simulated (no mass, a singular inertia)."""
-    from rbi.sim.scene import scene_from_properties
-    from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 
     g_si = STANDARD_GRAVITY_SI if gravity_si is None else float(gravity_si)
     axis = body_spin_axis(body, spin_axis)
@@ -196,7 +197,6 @@ class PreparedRun:
     def integrate(self, samples: int, progress: Progress | None = None) -> Any:
         """The trajectory (:class:`rbi.sim.api.Trajectory`) at ``samples`` equally spaced times,
         from the kernel; :class:`InputError` (naming the spec) when the integration fails."""
-        from rbi.sim.api import SimulationError, simulate
 
         try:
             return simulate(
@@ -219,9 +219,6 @@ class PreparedRun:
         """Integrate, summarise and (unless ``error_estimate`` is False or the method is the
         closed form) estimate the error by a tighter second run. A trajectory that overflowed is
         refused with :class:`InputError` (absurd spin or inertia)."""
-        from rbi.sim.api import SimulationError
-        from rbi.sim.summary import error_estimate as estimate
-        from rbi.sim.summary import sample_columns, summarize
 
         trajectory = self.integrate(samples, progress)
         try:
@@ -239,7 +236,6 @@ class PreparedRun:
 
     def _head(self, trajectory: Any) -> dict[str, Any]:
         """The summary's first entries: the body, the scene and the initial state."""
-        from rbi.sim.diagnostics import tilt_deg
 
         body, scene = self.body, self.scene
         return {
@@ -282,8 +278,6 @@ def prepare_run(
     ``check_budget``. ``spin``: rad/s about the spin axis (``spin_axis``, see
     :func:`body_spin_axis`); ``omega``: the initial angular velocity instead (body frame,
     rad/s); ``tilt_deg``: the nudge about the world ``tilt_axis``; ``gravity``: m/s²."""
-    from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
-    from rbi.sim.scene import initial_state
 
     check_run_options(
         method, spin, omega, tilt_deg, duration, tilt_axis, gravity=gravity, max_steps=max_steps, rtol=rtol
@@ -332,7 +326,6 @@ def trajectory_csv(columns: dict[str, np.ndarray]) -> str:
     """The CSV `rbi simulate --out` writes: a header of :data:`rbi.sim.summary.CSV_COLUMNS`,
     then one line a sample, each number at full precision (its shortest round-tripping
     ``repr``; ``-0.0`` as ``0.0``; an undefined value, NaN, as an empty cell)."""
-    from rbi.sim.summary import CSV_COLUMNS
 
     lines = [",".join(CSV_COLUMNS)]
     table = np.column_stack([np.asarray(columns[name], dtype=float) for name in CSV_COLUMNS])

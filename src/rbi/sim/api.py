@@ -23,6 +23,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
 from rbi.sim.scene import Scene
 
 METHODS = ("default", "rk45", "dop853", "exact")
@@ -135,7 +136,6 @@ def simulate(
 def _run_compiled(
     scene: Scene, q0, omega0, t: np.ndarray, rtol: float, progress, max_steps: int | None = None
 ) -> Trajectory:
-    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
 
     loaded = integrator()
     y = np.concatenate((q0, omega0))

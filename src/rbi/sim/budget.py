@@ -13,6 +13,8 @@ import math
 
 import numpy as np
 
+from rbi.sim.api import DEFAULT_RTOL, SCIPY_DEFAULT_RTOL
+
 DEFAULT_MAX_STEPS = 10_000_000
 """Steps a run may take unless ``--max-steps`` says otherwise (about 10 s of the compiled
 integrator; the scipy methods are refused far earlier, see :func:`estimated_steps`)."""
@@ -33,7 +35,6 @@ def estimated_steps(
 ) -> float:
     """Roughly how many compiled-step equivalents integrating ``scene`` from body angular
     velocity ``omega0`` (rad/s) for ``duration`` seconds costs."""
-    from rbi.sim.api import DEFAULT_RTOL, SCIPY_DEFAULT_RTOL
 
     if duration == 0.0:
         return 0.0

@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.rotation import quaternion_to_matrix
 from rbi.sim.scene import Scene
 
 AXISYMMETRY_RTOL = 1e-9
@@ -113,7 +114,6 @@ def angular_momentum_body(scene: Scene, omega: np.ndarray) -> np.ndarray:
 
 def angular_momentum_world(scene: Scene, q: np.ndarray, omega: np.ndarray) -> np.ndarray:
     """``R (I ω)`` (N, 3) about the fixed point, world axes."""
-    from rbi.core.rotation import quaternion_to_matrix
 
     h_body = angular_momentum_body(scene, omega)
     return np.stack([quaternion_to_matrix(qi) @ hi for qi, hi in zip(np.atleast_2d(q), h_body)])

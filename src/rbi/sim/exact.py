@@ -35,7 +35,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import matrix_to_quaternion
+from rbi.core.rotation import matrix_to_quaternion, quaternion_to_matrix
 from rbi.sim.diagnostics import AXISYMMETRY_RTOL, symmetry_axis
 from rbi.sim.scene import Scene
 
@@ -185,7 +185,6 @@ class SymmetricFreeBody:
     ``q(t) = exp(ĥ |h| t / I_t) q0 exp(a Ω t)``."""
 
     def __init__(self, scene: Scene, q0, omega0, axis: np.ndarray) -> None:
-        from rbi.core.rotation import quaternion_to_matrix
 
         self.q0 = np.asarray(q0, dtype=float)
         self.axis = np.asarray(axis, dtype=float)
@@ -376,7 +375,6 @@ class LagrangeTop:
     """
 
     def __init__(self, scene: Scene, q0, omega0, axis: np.ndarray) -> None:
-        from rbi.core.rotation import quaternion_to_matrix
 
         self.axis = np.asarray(axis, dtype=float)
         moments, axes = scene.principal_moments, scene.principal_axes

@@ -25,6 +25,8 @@ import numpy as np
 
 from rbi.core.inertia import principal_axes
 from rbi.core.mass import MassProperties
+from rbi.core.rotation import unit_vector
+from rbi.core.spin_axis import default_spin_axis, quaternion_from_z_to
 
 SINGULAR_RTOL = 1e-12
 """Smallest principal moment below this fraction of the largest: the inertia is singular."""
@@ -76,7 +78,6 @@ class Scene:
     def spin_frame(self) -> np.ndarray:
         """Quaternion [w, x, y, z] turning body z onto :attr:`spin_axis`: ``q ⊗ spin_frame``
         carries the spin axis where ``q`` carries body z (exactly the identity for body z)."""
-        from rbi.core.spin_axis import quaternion_from_z_to
 
         return quaternion_from_z_to(self.spin_axis)
 
@@ -126,8 +127,6 @@ def scene_from_properties(
     ValueError when the inertia about the pivot (or the centre of mass) is singular, i.e. all
     the mass lies on a line through that point, or when ``spin_axis`` is zero or not finite.
     """
-    from rbi.core.rotation import unit_vector
-    from rbi.core.spin_axis import default_spin_axis
 
     pivot = None if pivot is None else np.asarray(pivot, dtype=float)
     scene = Scene(props, 0.0 if pivot is None else float(gravity), pivot)

@@ -8,6 +8,9 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.inertia import principal_axes
+from rbi.errors import InputError
+
 
 @dataclass(frozen=True)
 class Check:
@@ -54,7 +57,6 @@ def _compare(
 
 
 def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
-    from rbi.errors import InputError
 
     if isinstance(about, list):
         return "point", np.asarray(about, dtype=float)
@@ -70,8 +72,6 @@ def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
 def run_checks(body: Any) -> list[Check]:
     """Every comparison the loaded body's `expect:` block asks for, in a fixed order
     (mass, centre of mass, principal moments, inertia); InputError when it has none."""
-    from rbi.core.inertia import principal_axes
-    from rbi.errors import InputError
 
     expect = body.spec.expect if body.spec is not None else None
     if expect is None:

@@ -14,7 +14,7 @@ import numpy as np
 
 from rbi.core.mass import MassProperties
 from rbi.core.validity import INERTIA_RTOL, inertia_problem
-from rbi.spec.errors import InputError
+from rbi.spec.errors import InputError, part_label
 
 MASS_RTOL = 1e-9
 """A net mass below this fraction of the gross mass counts as nothing left."""
@@ -47,7 +47,6 @@ def check_holes(path: str, spec, elements: list[MassProperties], holes: list[int
     stops being physical; the material parts are counted first."""
     if body_problem(elements, spec.units.mass) is None:
         return
-    from rbi.spec.errors import part_label
 
     hole_set = set(holes)
     running = [e for i, e in enumerate(elements) if i not in hole_set]

@@ -12,6 +12,9 @@ import yaml
 
 from rbi.files.safe import InputFileRefused, read_input_file
 from rbi.spec.errors import InputError, describe_error, format_location
+from rbi.spec.expect import Expect
+from rbi.spec.models import SHAPE_MODELS, BodySpec
+from rbi.spec.translate import body_from_spec
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
 if TYPE_CHECKING:
@@ -228,8 +231,6 @@ def validation_messages(path: str, raw: Any) -> tuple[Any, list[str]]:
     """Validate parsed YAML: the spec model (or None) and one message line per problem."""
     from pydantic import ValidationError
 
-    from rbi.spec.models import BodySpec
-
     if raw is None:
         return None, [f"{path}: file holds no YAML document"]
     if not isinstance(raw, dict):
@@ -255,9 +256,6 @@ def _known_fields(loc: tuple[Any, ...], raw: Any) -> list[str]:
     """Field names valid where an unknown field was found (for 'did you mean'): walk the
     models along the error's location, through optional, list and union-of-shape fields."""
     from pydantic import BaseModel
-
-    from rbi.spec.expect import Expect
-    from rbi.spec.models import SHAPE_MODELS, BodySpec
 
     model: Any = BodySpec
     for item in loc[:-1]:
@@ -319,8 +317,6 @@ def _first_location(raw: Any) -> tuple[str | None, str | None]:
     them), for :class:`InputError`'s ``part`` and ``field``."""
     from pydantic import ValidationError
 
-    from rbi.spec.models import BodySpec
-
     if not isinstance(raw, dict):
         return None, None
     try:
@@ -335,7 +331,6 @@ def _first_location(raw: Any) -> tuple[str | None, str | None]:
 def load_body(path: str | Path) -> LoadedBody:
     """Read, validate and translate a spec file (``-``: standard input, whose files are looked
     for in the current folder) into core inputs."""
-    from rbi.spec.translate import body_from_spec
 
     path = str(path)
     with paused_gc():
@@ -345,7 +340,6 @@ def load_body(path: str | Path) -> LoadedBody:
 def body_from_raw(raw: Any, path: str) -> LoadedBody:
     """Validate and translate already parsed YAML (a dict shaped like the spec) named ``path``
     in messages; files it names are looked for beside ``path``."""
-    from rbi.spec.translate import body_from_spec
 
     with paused_gc():
         return body_from_spec(spec_from_raw(path, raw), path)
@@ -358,7 +352,6 @@ def file_problems(path: str, packages: dict[str, list[Path]] | None = None) -> l
     file (URDF, SDF, MJCF) gives every link whose inertia is not physical; ``packages`` (see
     :func:`rbi.formats.robot_paths.parse_package_paths`) finds its ``package://`` meshes."""
     from rbi.formats.robot_files import is_robot_file, robot_file_problems
-    from rbi.spec.translate import body_from_spec
 
     if is_robot_file(path):
         return robot_file_problems(path, packages)

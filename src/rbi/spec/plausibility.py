@@ -38,8 +38,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
+from rbi.spec.errors import part_label
 from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
+from rbi.spec.volumes import part_volume
 
 POSSIBLE_DENSITY_KG_M3 = (9.0, 23_000.0)
 """Densities a part of a real body can have, kg/m³: from polystyrene foam and a vehicle or a
@@ -235,8 +237,6 @@ class _Solid:
 
 
 def _solids(spec) -> list[_Solid]:
-    from rbi.spec.errors import part_label
-    from rbi.spec.volumes import part_volume
 
     out = []
     for index, part in enumerate(spec.parts):

@@ -13,10 +13,13 @@ from rbi.core.inertia import parallel_axis_to_com, re_express
 from rbi.core.mass import MassProperties
 from rbi.core.rotation import axis_angle_matrix, euler_matrix, quaternion_to_matrix, without_rounding_noise
 from rbi.core.validity import inertia_problem
+from rbi.formats.paths import spec_relative_file
 from rbi.spec import models
 from rbi.spec.errors import InputError, part_label
 from rbi.spec.materials import density_in_units
-from rbi.spec.units import unit_labels
+from rbi.spec.plausibility import unit_warnings
+from rbi.spec.translate_batch import MIN_PARTS, batch_elements
+from rbi.spec.units import LENGTH_UNITS_IN_M, unit_labels
 from rbi.spec.volumes import one_volume
 
 
@@ -181,7 +184,6 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     origin moved to ``position``. Raises ValueError naming the file (as written in the spec)
     and what is wrong with it."""
     from rbi.formats.mesh_file import read_mesh_solid
-    from rbi.formats.paths import spec_relative_file
 
     try:
         file = spec_relative_file(spec_path, part.file, f"file: {part.file}")
@@ -219,9 +221,7 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
     boundary representation in metres (:mod:`rbi.formats.step`), converted to the spec's length
     unit, turned by ``rotation`` about the file's origin, that origin moved to ``position``.
     Raises ValueError naming the file (as written in the spec) and what is wrong with it."""
-    from rbi.formats.paths import spec_relative_file
     from rbi.formats.step import read_step, require_cad, select_solids
-    from rbi.spec.units import LENGTH_UNITS_IN_M
 
     require_cad()
     try:
@@ -350,11 +350,9 @@ def _finite_element(index: int, part, units: models.Units, path: str) -> MassPro
 def body_from_spec(spec: models.BodySpec, path: str):
     """Translate a validated :class:`~rbi.spec.models.BodySpec` into a
     :class:`LoadedBody`."""
-    from rbi.spec.plausibility import unit_warnings
 
     elements = []
     holes = []
-    from rbi.spec.translate_batch import MIN_PARTS, batch_elements
 
     batched, batched_holes = {}, set()
     if len(spec.parts) >= MIN_PARTS:  # many parts: the plain ones of the common shapes as whole arrays

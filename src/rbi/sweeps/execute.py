@@ -10,6 +10,8 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
+from rbi.errors import InputError
+
 Rows = list[list[Any]]
 
 
@@ -156,7 +158,6 @@ def check_address(address: str) -> None:
     is not ``local``, ``tcp://HOST:PORT`` or ``tls://HOST:PORT``, and a TLS address when Dask's
     configuration holds no client certificate and CA (``distributed.comm.tls.client.cert``,
     ``.key``, ``distributed.comm.tls.ca-file``): without them no TLS scheduler answers."""
-    from rbi.errors import InputError
 
     if address == "local":
         return
@@ -185,8 +186,6 @@ def connect(address: str):
     import threading
 
     from distributed import Client
-
-    from rbi.errors import InputError
 
     box: dict = {}
 

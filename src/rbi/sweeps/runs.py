@@ -13,7 +13,15 @@ from typing import Any
 
 import numpy as np
 
-from rbi.spec.variations import FieldPath
+from rbi.sim.api import sample_times
+from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
+from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.sim.summary import sweep_figures_batch
+from rbi.spec.errors import InputError
+from rbi.spec.load import spec_from_raw
+from rbi.spec.translate import body_from_spec
+from rbi.spec.units import gravity_in
+from rbi.spec.variations import FieldPath, with_values
 from rbi.sweeps.plan import Plan
 
 RESULT_COLUMNS = (
@@ -74,10 +82,6 @@ class SweepJob:
 
 
 def _derive_body(path: str, raw: Any, varied: tuple[FieldPath, ...], values: tuple[float, ...]):
-    from rbi.spec.errors import InputError
-    from rbi.spec.load import spec_from_raw
-    from rbi.spec.translate import body_from_spec
-    from rbi.spec.variations import with_values
 
     try:
         spec_raw = with_values(raw, list(varied), values) if varied else raw
@@ -96,8 +100,6 @@ def _scene(job: SweepJob, values: tuple[float, ...]):
 
 
 def _derive_scene(job: SweepJob, values: tuple[float, ...]):
-    from rbi.sim.scene import scene_from_properties
-    from rbi.spec.units import gravity_in
 
     body = job.body(values)
     if isinstance(body, str):
@@ -112,9 +114,6 @@ def _derive_scene(job: SweepJob, values: tuple[float, ...]):
 
 def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[list[Any]]:
     """Rows of runs ``start .. stop-1`` (each a list in :attr:`SweepJob.columns` order)."""
-    from rbi.sim.api import sample_times
-    from rbi.sim.compiled import integrator
-    from rbi.sim.scene import initial_state
 
     values = job.plan.values(start, stop)
     t = sample_times(job.duration, job.samples)
@@ -160,8 +159,6 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
 def _figures(scenes: list, t: np.ndarray, out: np.ndarray, status: np.ndarray, finite: np.ndarray) -> dict:
     """Each finished, finite run's summary figures (tilts, precession, drift) by its batch
     index; the runs of one scene are summarised together."""
-    from rbi.sim.compiled import STATUS_DONE
-    from rbi.sim.summary import sweep_figures_batch
 
     figures_of: dict[int, dict] = {}
     by_scene: dict[int, list[int]] = {}
@@ -177,7 +174,6 @@ def _figures(scenes: list, t: np.ndarray, out: np.ndarray, status: np.ndarray, f
 
 def _fill_rows(job: SweepJob, rows: list, ready: list, status, finite, counts, figures_of: dict) -> None:
     """Complete each integrated run's row with its figures and status, or why it failed."""
-    from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL
 
     for b, i in enumerate(ready):
         if status[b] == STATUS_DONE:

@@ -37,6 +37,7 @@ from typing import Any
 
 from rbi.errors import InputError
 from rbi.files import safe
+from rbi.files.output import atomic_path
 from rbi.text import csv_lines, csv_text_read
 
 SETTINGS_SUFFIX = ".rbi-sweep.json"
@@ -318,8 +319,6 @@ class SweepOutput:
     def _combine(self) -> None:
         """Write the output from the chunk files, one row group each, atomically."""
         import pyarrow.parquet as pq
-
-        from rbi.files.output import atomic_path
 
         folder = rows_folder(self.path)
         names = sorted(n for n in os.listdir(folder) if n.endswith(".parquet") and not n.startswith("."))

@@ -20,6 +20,14 @@ from pathlib import Path
 from typing import Any
 
 from rbi.errors import ArgumentError, InputError
+from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, spin_axis_value
+from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
+from rbi.sim.scene import scene_from_properties
+from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
+from rbi.spec.variations import current_values, resolve
+from rbi.sweeps import store
+from rbi.sweeps.plan import Draw, Plan, axis_of, axis_record
+from rbi.sweeps.runs import SweepJob
 
 MAX_ROWS_SHOWN = 100_000
 """Most runs a sweep may print (json/csv/table) or hold in memory instead of writing them with --out."""
@@ -73,7 +81,6 @@ class SweepSettings:
 def check_settings(settings: SweepSettings) -> None:
     """Refuse the number of runs, the run settings, the samples, the workers and (a study of
     mass properties) a spin or tilt, before any file is read."""
-    from rbi.runs.run import check_run_settings, check_samples, spin_axis_value
 
     if not _whole(settings.runs) or settings.runs < 1:
         raise ArgumentError("runs", f"must be a whole number, at least 1 (got {settings.runs!r})")
@@ -115,10 +122,6 @@ class Study:
     """
 
     def __init__(self, path: str, raw: Any, settings: SweepSettings, *, rows_printed: bool = True) -> None:
-        from rbi.sim.budget import DEFAULT_MAX_STEPS
-        from rbi.spec.units import STANDARD_GRAVITY_SI
-        from rbi.spec.variations import current_values
-        from rbi.sweeps.runs import SweepJob
 
         self.path, self.raw, self.settings = path, raw, settings
         axes, varied = self._axes()
@@ -151,7 +154,6 @@ class Study:
         counts the runs kept there)."""
 
     def _axes(self):
-        from rbi.spec.variations import resolve
 
         s = self.settings
         axes = [] if s.mass_properties else [_axis("spin", s.spin), _axis("tilt_deg", s.tilt_deg)]
@@ -173,8 +175,6 @@ class Study:
         """Refuse, before any run, a sweep estimated to take more than the step budget."""
         import numpy as np
 
-        from rbi.sim.budget import estimated_steps
-
         scene = self.nominal_scene()
         if scene is None:
             return  # every run will say why it cannot be simulated
@@ -193,8 +193,6 @@ class Study:
 
     def nominal_scene(self):
         """The scene of the nominal body, or None when it cannot be simulated."""
-        from rbi.sim.scene import scene_from_properties
-        from rbi.spec.units import gravity_in
 
         body = self.nominal
         try:
@@ -208,7 +206,6 @@ class Study:
         """The one spin axis of every run (unit, body frame): ``--spin-axis``, else the spec's
         ``spin_axis``, else the nominal body's default, so that every row's tilt is of the same
         body axis even where a varied value breaks the body's symmetry."""
-        from rbi.runs.run import body_spin_axis
 
         return tuple(float(c) for c in body_spin_axis(self.nominal, self.settings.spin_axis))
 
@@ -235,7 +232,6 @@ class Study:
     def store_settings(self) -> dict:
         """What makes two sweeps the same, for ``--resume``: the spec's bytes (or its parsed
         form when it was given as text or a dict) and every setting."""
-        from rbi.sweeps.plan import axis_record
 
         s, job = self.settings, self.job
         try:
@@ -269,7 +265,6 @@ class Study:
         exception) with the runs the output kept: the output is closed keeping the rows
         written, and :attr:`output` tells how many.
         """
-        from rbi.sweeps import store
         from rbi.sweeps.execute import available_cores, chunk_ranges, run_dask, run_local
 
         compute, chunk = self._compute()
@@ -346,7 +341,6 @@ class Study:
 
 
 def _plan(axes, settings: SweepSettings, rows_printed: bool):
-    from rbi.sweeps.plan import Draw, Plan
 
     if settings.runs > 1 and not any(isinstance(a, Draw) for a in axes):
         raise ArgumentError(
@@ -366,7 +360,6 @@ def _plan(axes, settings: SweepSettings, rows_printed: bool):
 
 def _axis(name: str, value: Any, parameter: str | None = None):
     """The axis ``name`` of the value given to ``parameter`` (default: ``name``)."""
-    from rbi.sweeps.plan import axis_of
 
     try:
         return axis_of(name, value)
