@@ -81,6 +81,15 @@ MJCF_CASES = {
     "mass_wins_over_density": '<body name="a"><joint type="hinge"/><geom size="0.1" mass="1" density="-1"/></body>',
     "free_without_mass": '<body name="a"><freejoint/></body>',
     "ok": '<body name="a"><joint type="hinge"/><geom size="0.1"/></body>',
+    # a massless moving body carried by a child welded to it (no joint) with mass: MuJoCo accepts
+    "welded_child_carries_mass": '<body name="a"><joint type="hinge"/><geom size="0.1" mass="0"/>'
+    '<body name="b" pos="0.5 0 0"><geom size="0.1" mass="2"/></body></body>',
+    "welded_grandchild_only": '<body name="a"><joint type="hinge"/><body name="b"><body name="c" pos="1 0 0">'
+    '<geom size="0.1"/></body></body></body>',
+    "welded_child_without_inertia": '<body name="a"><joint type="hinge"/><body name="b">'
+    '<inertial pos="0 0 0" mass="1" diaginertia="1 1 0"/></body></body>',
+    "welded_child_inertial": '<body name="a"><joint type="hinge"/><inertial pos="0 0 0" mass="0" '
+    'diaginertia="1 1 1"/><body name="b"><inertial pos="1 0 0" mass="1" diaginertia="1 1 1"/></body></body>',
 }
 
 

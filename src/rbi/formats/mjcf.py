@@ -189,33 +189,48 @@ def _gravity(path: str, root) -> np.ndarray:
 
 
 MJ_MINVAL = 1e-15
-"""MuJoCo's ``mjMINVAL``: a moving body's mass and principal moments must exceed it."""
+"""MuJoCo's ``mjMINVAL``: a moving body's mass and principal moments must be at least this."""
+
+
+def _heavy_enough(link, welded: dict[str, list]) -> bool:
+    """Whether the body can carry a joint, as MuJoCo's compiler decides it: its compiled mass and
+    every principal moment are at least :data:`MJ_MINVAL` (kg, kg·m²), or so are those of a body
+    welded to it (a child without a joint, or that child's welded children, and so on)."""
+    inertial = link.inertial
+    if (
+        inertial is not None
+        and inertial.mass >= MJ_MINVAL
+        and np.linalg.eigvalsh(inertial.written_inertia).min() >= MJ_MINVAL
+    ):
+        return True
+    return any(_heavy_enough(child, welded) for child in welded.get(link.key, ()))
 
 
 def _check_moving_bodies(model: RobotModel) -> None:
-    """InputError for a body moved by a joint whose compiled mass (or a principal moment) is not
-    above :data:`MJ_MINVAL`, as MuJoCo's compiler refuses it ("mass and inertia of moving bodies
-    must be larger than mjMINVAL")."""
+    """InputError for a body moved by a joint that cannot carry it (:func:`_heavy_enough`), as
+    MuJoCo's compiler refuses it ("mass and inertia of moving bodies must be
+    larger than mjMINVAL")."""
+    welded: dict[str, list] = {}
+    for child in model.links:
+        if child.parent is not None and not child.motions:
+            welded.setdefault(child.parent, []).append(child)
     for link in model.links:
-        if not link.motions:
+        if not link.motions or _heavy_enough(link, welded):
             continue
         inertial = link.inertial
         mass = inertial.mass if inertial is not None else 0.0
-        smallest = float(np.linalg.eigvalsh(inertial.written_inertia).min()) if inertial is not None else 0.0
-        if mass > MJ_MINVAL and smallest > MJ_MINVAL:
-            continue
         if inertial is None:
             why = "has no <inertial> and no geom with mass"
         elif inertial.source == "geoms":
             why = (
                 f"its geoms give it mass {mass:.6g} kg"
-                if mass <= MJ_MINVAL
+                if mass < MJ_MINVAL
                 else "its geoms give it no inertia"
             )
         else:
             why = (
                 f"its <inertial> has mass {mass:.6g} kg"
-                if mass <= MJ_MINVAL
+                if mass < MJ_MINVAL
                 else "its <inertial> has a zero moment"
             )
         raise InputError(
