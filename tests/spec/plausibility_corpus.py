@@ -145,10 +145,65 @@ OBJECTS = [
     ("cricket ball", "sphere", (0.036,), 0.16, "MCC: 72 mm, 160 g"),
     ("dumbbell plate", "cylinder", (0.225, 0.03), 20.0, "20 kg cast iron plate, as a disc"),
     ("submarine", "cylinder", (6.5, 110.0), 7.0e6, "7,000 t attack submarine"),
+    # SECOND_ADDED_LATER and every object after it were added (issue 26, third round) before the
+    # rule was changed again, and are measured apart as a second hold-out:
+    (
+        "claw hammer",
+        [
+            ("head", "box", (0.11, 0.025, 0.03), 0.454),
+            ("handle", "cylinder", (0.015, 0.3), 0.2),
+        ],
+        None,
+        None,
+        "16 oz head, hickory handle",
+    ),
+    ("adjustable wrench", "box", (0.25, 0.06, 0.015), 0.45, "250 mm wrench, as its bounding box"),
+    (
+        "screwdriver",
+        [
+            ("handle", "cylinder", (0.015, 0.1), 0.05),
+            ("shaft", "cylinder", (0.003, 0.1), cylinder_mass(0.003, 0.1, STEEL)),
+        ],
+        None,
+        None,
+        "plastic handle, 6 mm steel shaft",
+    ),
+    ("baseball", "sphere", (0.0373,), 0.145, "MLB: 9 in round, 5 oz"),
+    ("volleyball", "sphere", (0.105,), 0.27, "FIVB: 65-67 cm round, 260-280 g"),
+    ("shot put", "sphere", (0.06,), 7.26, "men's shot: 7.26 kg, 110-130 mm"),
+    ("baseball bat", "cylinder", (0.033, 0.84), 0.9, "33 in bat, as a cylinder"),
+    ("motorcycle", "box", (2.1, 0.8, 1.2), 200.0, "a 200 kg motorcycle, as its bounding box"),
+    ("car engine", "box", (0.7, 0.6, 0.6), 200.0, "a petrol engine with its ancillaries"),
+    ("alloy wheel", "cylinder", (0.21, 0.18), 10.0, "17 in rim, as a disc"),
+    ("brake disc", "cylinder", (0.15, 0.028), 7.0, "300 mm vented disc, as a disc"),
+    ("glass beaker", "cylinder", (0.053, 0.145), 0.42, "1 l borosilicate beaker, empty, as a cylinder"),
+    ("1 kg calibration weight", "cylinder", (0.024, 0.0691), 1.0, "OIML stainless cylinder"),
+    ("optical breadboard", "box", (0.6, 0.45, 0.0127), 8.6, "600 x 450 mm aluminium, tapped holes"),
+    ("microscope", "box", (0.3, 0.2, 0.4), 8.0, "a lab microscope, as its bounding box"),
+    ("Rubik's cube", "box", (0.057, 0.057, 0.057), 0.1, "3x3 cube"),
+    ("tennis racket", "box", (0.685, 0.27, 0.025), 0.3, "as its bounding box"),
+    ("office chair", "box", (0.65, 0.65, 1.1), 15.0, "as its bounding box"),
+    ("dining table", "box", (1.6, 0.9, 0.75), 40.0, "as its bounding box"),
+    ("bookcase", "box", (0.8, 0.28, 2.02), 37.0, "80 x 28 x 202 cm flat-pack bookcase"),
+    ("car battery", "box", (0.278, 0.175, 0.19), 18.0, "lead-acid, 70 Ah"),
+    ("railway wheel", "cylinder", (0.46, 0.14), 380.0, "920 mm freight wheel, as a disc"),
+    ("steel rail", "box", (0.15, 0.172, 1.0), 60.0, "1 m of 60 kg/m rail, as its bounding box"),
+    ("water cooler bottle", "cylinder", (0.135, 0.49), 19.5, "5 US gal, full"),
+    ("fire extinguisher", "cylinder", (0.08, 0.5), 10.0, "6 kg powder, full, as a cylinder"),
+    ("skateboard", "box", (0.8, 0.21, 0.11), 3.5, "deck, trucks and wheels, as its bounding box"),
+    ("LiPo battery", "box", (0.138, 0.043, 0.035), 0.5, "4S 5000 mAh pack"),
+    ("gas cylinder", "cylinder", (0.115, 1.5), 60.0, "50 l, 200 bar steel cylinder, empty"),
+    ("microSD card", "box", (0.015, 0.011, 0.001), 0.0004, "SD Association: 15 x 11 x 1 mm"),
+    ("die-cast toy car", "box", (0.07, 0.03, 0.025), 0.035, "1:64 scale, as its bounding box"),
+    ("nail", "cylinder", (0.0016, 0.075), cylinder_mass(0.0016, 0.075, STEEL), "75 mm wire nail"),
+    ("M8 bolt", "cylinder", (0.004, 0.04), cylinder_mass(0.004, 0.04, STEEL), "steel, as a rod"),
 ]
 
 FIRST_ADDED_LATER = "2 euro coin"
 """The first object of the hold-out: it and every object after it in OBJECTS."""
+
+SECOND_ADDED_LATER = "claw hammer"
+"""The first object of the second hold-out (added before the rule's third-round change)."""
 
 SLIPS = {
     # the units an author drew in, and the hint that names them

@@ -1,20 +1,22 @@
 """The unit-slip warning on a corpus of real objects (tests/spec/plausibility_corpus.py): written
 in SI it is never warned (false-positive rate 0); written in mm/g, mm/kg, cm/g and in/lb without
 ``units:``, the share of slips that get exactly the units they were written in is measured and
-printed per unit pair (``pytest -s``), for the first 63 objects (the rule was shaped on them)
-and for the 33 added afterwards (a hold-out, measured with the rule already set).
+printed per unit pair (``pytest -s``), for the first 63 objects (the rule was shaped on them),
+for the 33 added in the second round (a hold-out, measured with the rule already set) and for
+the 32 added in the third round (a second hold-out, added before any further change to the rule).
 
-Issue 26 asks for 90 % overall; the rule reaches 89.6 % (89.7 % on the first 63, 89.4 % on the
-hold-out), and the floors below are those measured numbers. What no rule on densities and sizes
-can tell apart (docs/spec.md): a pair of units differs from another by a factor on density and
-one on size, so a dense part that is not exactly a handbook material (a coin, a bar drawn as a
-box) in mm/g reads as a light body in in/lb and in in/lb as one in cm/g; a light body in cm/g
-reads as a solid in in/lb and in in/lb as one in mm/g."""
+Issue 26 asks for 90 %; the rule reaches 89.6 % on the first 96 objects but 80.5 % on the second
+hold-out (87.3 % on all 128), and the floors below are those measured numbers. What no rule on
+densities and sizes can tell apart (docs/spec.md): a pair of units differs from another by a
+factor on density and one on size, so a dense part that is not exactly a handbook material (a
+coin, a bar drawn as a box, a brake disc, a shot put) in mm/g reads as a light body in in/lb and
+in in/lb as one in cm/g; a light body (foam, a chair or table drawn by its outline) in cm/g reads
+as a solid in in/lb and in in/lb as one in mm/g."""
 
 from __future__ import annotations
 
 import rbi
-from tests.spec.plausibility_corpus import FIRST_ADDED_LATER, OBJECTS, SLIPS, spec
+from tests.spec.plausibility_corpus import FIRST_ADDED_LATER, OBJECTS, SECOND_ADDED_LATER, SLIPS, spec
 
 
 def test_the_corpus_is_at_least_50_real_objects():
@@ -35,9 +37,15 @@ def _right(entry, units, expected) -> bool:
 
 def _hint_rates() -> dict[str, dict[str, float]]:
     """Share of right hints per unit pair and overall ('all'), for every object, the first 63
-    and the hold-out."""
-    split = [o[0] for o in OBJECTS].index(FIRST_ADDED_LATER)
-    groups = {"all objects": OBJECTS, "first 63": OBJECTS[:split], "hold-out": OBJECTS[split:]}
+    and the two hold-outs."""
+    names = [o[0] for o in OBJECTS]
+    first, second = names.index(FIRST_ADDED_LATER), names.index(SECOND_ADDED_LATER)
+    groups = {
+        "all objects": OBJECTS,
+        "first 63": OBJECTS[:first],
+        "hold-out": OBJECTS[first:second],
+        "second hold-out": OBJECTS[second:],
+    }
     right = {slip: {o[0]: _right(o, *SLIPS[slip]) for o in OBJECTS} for slip in SLIPS}
     rates = {}
     for group, objects in groups.items():
@@ -51,6 +59,7 @@ def _hint_rates() -> dict[str, dict[str, float]]:
 def test_slips_get_exactly_the_right_hint():
     rates = _hint_rates()
     every = rates["all objects"]
-    assert every["mm/g"] >= 0.885 and every["mm/kg"] >= 0.979 and every["cm/g"] >= 0.906, every
-    assert every["in/lb"] >= 0.812 and every["all"] >= 0.895, every
+    assert every["mm/g"] >= 0.851 and every["mm/kg"] >= 0.984 and every["cm/g"] >= 0.890, every
+    assert every["in/lb"] >= 0.765 and every["all"] >= 0.872, every
     assert rates["first 63"]["all"] >= 0.896 and rates["hold-out"]["all"] >= 0.893, rates
+    assert rates["second hold-out"]["all"] >= 0.804, rates
