@@ -216,9 +216,16 @@ LENGTH_M = {"m": 1.0, "mm": 0.001, "cm": 0.01, "in": 0.0254}
 MASS_KG = {"kg": 1.0, "g": 0.001, "lb": 0.45359237}
 
 
-def _part(name, shape, sizes, mass, length, mass_unit):
-    s = [v / LENGTH_M[length] for v in sizes]
-    m = mass / MASS_KG[mass_unit]
+def significant(value: float, digits: int | None) -> float:
+    """``value`` rounded to ``digits`` significant digits (unchanged for None or 0)."""
+    if not digits or not value:
+        return value
+    return round(value, digits - 1 - math.floor(math.log10(abs(value))))
+
+
+def _part(name, shape, sizes, mass, length, mass_unit, digits=None):
+    s = [significant(v / LENGTH_M[length], digits) for v in sizes]
+    m = significant(mass / MASS_KG[mass_unit], digits)
     if shape == "box":
         return {"name": name, "shape": "box", "center": [0, 0, 0], "size": s, "mass": m}
     if shape == "cylinder":
@@ -233,12 +240,14 @@ def _part(name, shape, sizes, mass, length, mass_unit):
     return {"name": name, "shape": "sphere", "radius": s[0], "center": [0, 0, 0], "mass": m}
 
 
-def spec(entry, length="m", mass="kg"):
+def spec(entry, length="m", mass="kg", digits=None):
     """The spec of a corpus object with its numbers written in ``length`` and ``mass``, no
-    ``units:`` block."""
+    ``units:`` block; with ``digits``, every size and mass rounded to that many significant
+    digits, as a person writes them (conversions no longer exact, handbook densities no longer
+    met to 0.1 %)."""
     name, shape, sizes, kilograms, _ = entry
     if isinstance(shape, list):
-        parts = [_part(*p, length, mass) for p in shape]
+        parts = [_part(*p, length, mass, digits) for p in shape]
         for i, part in enumerate(parts):  # side by side, apart
             part["name"] = f"{part['name']}"
             if "center" in part:
@@ -253,4 +262,4 @@ def spec(entry, length="m", mass="kg"):
                     ],
                 )
         return {"name": name, "parts": parts}
-    return {"name": name, "parts": [_part(name, shape, sizes, kilograms, length, mass)]}
+    return {"name": name, "parts": [_part(name, shape, sizes, kilograms, length, mass, digits)]}

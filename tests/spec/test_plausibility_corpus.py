@@ -15,6 +15,8 @@ as a solid in in/lb and in in/lb as one in mm/g."""
 
 from __future__ import annotations
 
+import pytest
+
 import rbi
 from tests.spec.plausibility_corpus import FIRST_ADDED_LATER, OBJECTS, SECOND_ADDED_LATER, SLIPS, spec
 
@@ -23,15 +25,18 @@ def test_the_corpus_is_at_least_50_real_objects():
     assert len(OBJECTS) >= 50 and len({o[0] for o in OBJECTS}) == len(OBJECTS)
 
 
-def test_no_object_written_in_si_is_warned():
-    warned = [(o[0], w) for o in OBJECTS for w in rbi.load(spec(o)).warnings]
+@pytest.mark.parametrize("digits", [None, 3])
+def test_no_object_written_in_si_is_warned(digits):
+    warned = [(o[0], w) for o in OBJECTS for w in rbi.load(spec(o, digits=digits)).warnings]
     rate = len(warned) / len(OBJECTS)
-    print(f"\nunit-slip corpus: false-positive rate {rate:.1%} ({len(warned)} of {len(OBJECTS)} SI objects)")
+    print(
+        f"\nunit-slip corpus, {digits or 'all'} digits: false-positive rate {rate:.1%} ({len(warned)} of {len(OBJECTS)})"
+    )
     assert warned == []
 
 
-def _right(entry, units, expected) -> bool:
-    warnings = rbi.load(spec(entry, units["length"], units["mass"])).warnings
+def _right(entry, units, expected, digits=None) -> bool:
+    warnings = rbi.load(spec(entry, units["length"], units["mass"], digits)).warnings
     return len(warnings) == 1 and warnings[0].endswith(expected)
 
 
@@ -63,3 +68,13 @@ def test_slips_get_exactly_the_right_hint():
     assert every["in/lb"] >= 0.765 and every["all"] >= 0.872, every
     assert rates["first 63"]["all"] >= 0.896 and rates["hold-out"]["all"] >= 0.893, rates
     assert rates["second hold-out"]["all"] >= 0.804, rates
+
+
+def test_slips_rounded_to_three_digits_get_the_right_hint_less_often():
+    """Written as a person rounds them (3 significant digits), sizes and masses no longer meet a
+    handbook density to 0.1 %, so only the density band decides: measured 82.8 % (in/lb 64.1 %),
+    against 87.3 % for the exact numbers; no SI object is warned either way."""
+    right = {slip: sum(_right(o, *SLIPS[slip], digits=3) for o in OBJECTS) / len(OBJECTS) for slip in SLIPS}
+    overall = sum(right.values()) / len(SLIPS)
+    print("\n3 digits: " + ", ".join(f"{k} {v:.1%}" for k, v in right.items()) + f", all {overall:.1%}")
+    assert right["in/lb"] >= 0.640 and overall >= 0.828, right
