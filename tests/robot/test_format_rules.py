@@ -201,3 +201,48 @@ def test_mjcf_mesh_inertia_modes_as_mujoco_computes_them(tmp_path, mode):
     assert declared["mass"] == pytest.approx(model.body_mass[1], rel=1e-12)
     np.testing.assert_allclose(declared["center_of_mass"], model.body_ipos[1], rtol=1e-12)
     np.testing.assert_allclose(declared["moments"], np.sort(model.body_inertia[1]), rtol=1e-12)
+
+
+def _decimal_prism(drop: int) -> str:
+    """L_PRISM with coordinates no float32 holds exactly (×0.1234567, seven decimals), less its
+    last ``drop`` faces (an open mesh when ``drop`` > 0)."""
+    lines = L_PRISM.splitlines()
+    vertices = [
+        "v " + " ".join(f"{float(x) * 0.1234567 + 0.0100001:.7f}" for x in line.split()[1:])
+        for line in lines
+        if line.startswith("v ")
+    ]
+    faces = [line for line in lines if line.startswith("f ")]
+    return "\n".join(vertices + faces[: len(faces) - drop]) + "\n"
+
+
+@pytest.mark.parametrize("drop", [0, 2])
+@pytest.mark.parametrize("mode", ["legacy", "exact", "convex", "shell"])
+def test_mjcf_mesh_bodies_as_mujoco_compiles_them_from_single_precision_vertices(tmp_path, mode, drop):
+    """MuJoCo keeps a mesh's vertices as float32 and integrates an open mesh in every mode
+    (``exact`` by signed volumes): the declared mass properties match its compiled body to 1e-12
+    (a double reading of the file was 1e-8 off in inertia); the audit's own geometry of the open
+    mesh in ``exact`` is its convex hull with a warning-level ``mesh`` flag, not a refusal."""
+    mujoco = pytest.importorskip("mujoco")
+    (tmp_path / "l.obj").write_text(_decimal_prism(drop))
+    text = (
+        f'<mujoco><asset><mesh name="m" file="l.obj" inertia="{mode}" scale="1 2 0.5"/></asset><worldbody>'
+        '<body name="b"><joint type="hinge" axis="0 1 0"/><geom type="mesh" mesh="m" pos="0.3 0 0"/></body>'
+        "</worldbody></mujoco>"
+    )
+    (tmp_path / "m.xml").write_text(text)
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "m.xml"))
+    data = mujoco.MjData(model)
+    mujoco.mj_forward(model, data)
+    proc, result = audit(tmp_path, "m.xml", text)
+    assert proc.returncode == 0, proc.stderr
+    link = result["links"][0]
+    declared = link["declared"]
+    assert declared["mass"] == pytest.approx(model.body_mass[1], rel=1e-12)
+    np.testing.assert_allclose(declared["center_of_mass"], model.body_ipos[1], rtol=1e-12)
+    np.testing.assert_allclose(declared["moments"], np.sort(model.body_inertia[1]), rtol=1e-12)
+    assert result["joints"][0]["torque"] == pytest.approx(data.qfrc_bias[0], rel=1e-12)
+    codes = [(f["code"], f["level"]) for f in link["flags"]]
+    assert (("mesh", "warning") in codes) is (drop > 0 and mode == "exact")
+    for form in ("table", "csv"):
+        assert run_rbi_inprocess("audit", str(tmp_path / "m.xml"), "--format", form).returncode == 0

@@ -593,7 +593,7 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
             for geom, counts in geoms.get(link.index, []):
                 if not counts:
                     continue
-                found = distribution(geom, "exact", f"{model.path}: {link.label}: ")
+                found = distribution(geom, "exact", f"{model.path}: {link.label}: ", as_mujoco=True)
                 if found is None or not found.measure > 0:
                     continue
                 density = geom.mass / found.measure if geom.mass is not None else geom.density

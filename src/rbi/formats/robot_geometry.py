@@ -124,11 +124,14 @@ def distribution(
     repair: bool = False,
     notes: list[str] | None = None,
     fallbacks: list[MeshFallback] | None = None,
+    as_mujoco: bool = False,
 ) -> Distribution | None:
     """``geom``'s distribution in the link frame; None for a kind that carries no mass (plane,
-    height field). ``mode`` is the mesh inertia mode (MJCF geoms give their own); ``repair``
-    closes a mesh's small holes first (trimesh's ``fill_holes``), each repair noted in ``notes``;
-    in mode ``auto`` a mesh integrated other than exactly is listed in ``fallbacks``."""
+    height field). ``mode`` is the mesh inertia mode (MJCF geoms give their own; under ``auto``
+    an MJCF ``exact`` mesh that is not closed falls back as any mesh does); ``repair`` closes a
+    mesh's small holes first (trimesh's ``fill_holes``), each repair noted in ``notes``; in mode
+    ``auto`` a mesh integrated other than exactly is listed in ``fallbacks``. ``as_mujoco``:
+    a mesh's mass properties as MuJoCo's compiler gives them (:func:`mujoco_mesh_distribution`)."""
     R, p = geom.pose.rotation, geom.pose.translation
     if geom.kind in ("box", "sphere", "cylinder", "capsule", "ellipsoid"):
         try:
@@ -149,14 +152,15 @@ def distribution(
             geom.shell,
         )
     if geom.kind == "mesh":
-        mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
+        if not (mode == "auto" and geom.mesh_inertia == "exact" and not as_mujoco):
+            mode = geom.mesh_inertia or ("shell" if geom.shell else mode)
         if mode == "auto":
             mode, fallback = _auto_mode(geom, where, repair)
             if fallback is not None and fallbacks is not None:
                 fallbacks.append(fallback)
             if mode is None:
                 return None
-        measure, centroid, inertia, low, high, added = _mesh(geom, mode, where, repair)
+        measure, centroid, inertia, low, high, added = _mesh(geom, mode, where, repair, as_mujoco)
         if added and notes is not None:
             notes.append(
                 f"{where}{geom.label}: {geom.mesh_file.name}: --mesh-repair closed holes with {added[0]} "
@@ -204,14 +208,16 @@ class _NotIntegrable(InputError):
     reason = ""
 
 
-def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
+def _mesh(geom: Geom, mode: str, where: str, repair: bool = False, as_mujoco: bool = False):
     """(measure, centroid, inertia per density, low, high, (faces added, area added) or None) of
-    the scaled mesh in its own frame."""
+    the scaled mesh in its own frame. ``as_mujoco``: as MuJoCo's compiler computes it, from the
+    file's vertices stored in single precision (MuJoCo keeps mesh vertices as ``float``) and,
+    in modes ``legacy`` and ``exact``, by :func:`mujoco_mesh_distribution`."""
     path = geom.mesh_file
     scale = geom.mesh_scale if geom.mesh_scale is not None else np.ones(3)
     try:
         status = path.stat()
-        key = (str(path.resolve()), status.st_size, status.st_mtime_ns, tuple(scale), mode, repair)
+        key = (str(path.resolve()), status.st_size, status.st_mtime_ns, tuple(scale), mode, repair, as_mujoco)
     except OSError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: cannot read: {exc.strerror}") from None
     if key in _MESHES:
@@ -220,6 +226,8 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
         vertices, faces = _mesh_arrays(path)
     except ValueError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: {_hinted(str(exc), mode)}") from None
+    if as_mujoco:
+        vertices = vertices.astype(np.float32).astype(float)
     vertices = vertices * scale
     if np.prod(np.sign(scale)) < 0:
         faces = faces[:, ::-1]
@@ -234,8 +242,8 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
             faces = repaired.faces
             added = (repaired.added_faces, repaired.added_area) if repaired.added_faces else None
         found = (
-            legacy_distribution(vertices, faces)
-            if mode == "legacy"
+            mujoco_mesh_distribution(vertices, faces, mode)
+            if mode == "legacy" or (as_mujoco and mode == "exact")
             else mesh_distribution(vertices, faces, mode)
         )
     except ValueError as exc:
@@ -261,29 +269,38 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False):
     return result
 
 
-def legacy_distribution(vertices: np.ndarray, faces: np.ndarray) -> MeshDistribution:
-    """MuJoCo's ``legacy`` mesh inertia (its default for a mesh asset), as its compiler computes
-    it (``mjCMesh::ComputeVolume``/``ComputeInertia``): each triangle with the area-weighted
-    centroid of the faces as apex is a pyramid whose volume counts positive whatever the
-    triangle's winding; that gives the volume-weighted centre of mass. The inertia sums the
-    tetrahedra from the centre of mass to each triangle, again with positive volumes, and the
-    volume reported is their sum. Exact for a convex mesh seen from inside; for other meshes it
-    is what MuJoCo gives the body, which is the point. ValueError for a mesh with no area or no
-    volume."""
+def mujoco_mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str) -> MeshDistribution:
+    """A mesh's inertia in MuJoCo's mode ``legacy`` (its default for a mesh asset) or ``exact``,
+    as its compiler computes it (``mjCMesh::Process``, ``ComputeVolume``, ``ComputeInertia``):
+    each triangle with the area-weighted centroid of the faces as apex is a pyramid, whose volume
+    counts positive whatever the triangle's winding in ``legacy`` and with its sign in ``exact``;
+    that gives the volume-weighted centre of mass. The inertia sums the tetrahedra from the centre
+    of mass to each triangle (volumes again positive in ``legacy``), and the volume reported is
+    their sum. ``legacy`` is exact for a convex mesh seen from inside, ``exact`` for a closed
+    consistently wound one; for other meshes each is what MuJoCo gives the body, which is the
+    point. Units: those of the vertices (volume L³, inertia per unit density L⁵). ValueError
+    where MuJoCo's compiler refuses: no area, no volume or a negative volume. (MuJoCo also
+    refuses, in ``exact``, a mesh two of whose triangles run along an edge the same way; that
+    depends on how its decoder welds each file format's vertices, and is not checked here.)"""
     V = np.asarray(vertices, dtype=float)
     D, E, F = V[faces[:, 0]], V[faces[:, 1]], V[faces[:, 2]]
     cross = np.cross(E - D, F - D)  # twice the area times the unit normal
     area = 0.5 * np.linalg.norm(cross, axis=1)
+    signed = np.abs if mode == "legacy" else (lambda values: values)
     centre = (D + E + F) / 3
     if not area.sum() >= 1e-15:
         raise ValueError("has no area (MuJoCo: mesh surface area is too small)")
     apex = (area[:, None] * centre).sum(axis=0) / area.sum()
-    volume = np.abs(np.einsum("ij,ij->i", centre - apex, cross)) / 6
+    volume = signed(np.einsum("ij,ij->i", centre - apex, cross)) / 6
+    if volume.sum() < 0:
+        raise ValueError(
+            "encloses a negative volume (MuJoCo: mesh volume is negative: misoriented triangles)"
+        )
     if not volume.sum() >= 1e-15:
         raise ValueError("encloses no volume (MuJoCo: mesh volume is too small); try inertia: shell")
     com = (volume[:, None] * (0.75 * centre + 0.25 * apex)).sum(axis=0) / volume.sum()
     D, E, F = D - com, E - com, F - com
-    volume = np.abs(np.einsum("ij,ij->i", (D + E + F) / 3, cross)) / 6
+    volume = signed(np.einsum("ij,ij->i", (D + E + F) / 3, cross)) / 6
     second = np.empty((3, 3))
     for a in range(3):
         for b in range(3):
@@ -295,7 +312,7 @@ def legacy_distribution(vertices: np.ndarray, faces: np.ndarray) -> MeshDistribu
     from rbi.core.mesh import MeshDistribution
 
     unit = MassProperties(float(volume.sum()), com, 0.5 * (inertia + inertia.T), "mesh")
-    return MeshDistribution("legacy", unit, V, np.asarray(faces))
+    return MeshDistribution(mode, unit, V, np.asarray(faces))
 
 
 CLOSED_HINT = (
