@@ -5,13 +5,14 @@ printed per unit pair (``pytest -s``), for the first 63 objects (the rule was sh
 for the 33 added in the second round (a hold-out, measured with the rule already set) and for
 the 32 added in the third round (a second hold-out, added before any further change to the rule).
 
-Issue 26 asks for 90 %; the rule reaches 89.6 % on the first 96 objects but 80.5 % on the second
-hold-out (87.3 % on all 128), and the floors below are those measured numbers. What no rule on
-densities and sizes can tell apart (docs/spec.md): a pair of units differs from another by a
-factor on density and one on size, so a dense part that is not exactly a handbook material (a
-coin, a bar drawn as a box, a brake disc, a shot put) in mm/g reads as a light body in in/lb and
-in in/lb as one in cm/g; a light body (foam, a chair or table drawn by its outline) in cm/g reads
-as a solid in in/lb and in in/lb as one in mm/g."""
+Issue 26 asks for 90 %; with density and size judged together the rule reaches 88.7 % on all 128
+(86.5 % on the first 63, 92.4 % and 89.1 % on the hold-outs; before the size terms 87.3 %, with
+80.5 % on the second hold-out), and the floors below are those measured numbers. What no rule
+on densities and sizes can tell apart (docs/spec.md): a pair of units differs from another by a
+factor on density and one on size, so a part a centimetre across that is not exactly a
+handbook material (a coin, a bar drawn as a box) in mm/g reads as a hollow body in in/lb, a
+light body (foam, a chair drawn by its outline) in cm/g as a solid in in/lb, and a body metres
+across (a car, a satellite) in in/lb as a part a few centimetres across in mm/g."""
 
 from __future__ import annotations
 
@@ -64,17 +65,18 @@ def _hint_rates() -> dict[str, dict[str, float]]:
 def test_slips_get_exactly_the_right_hint():
     rates = _hint_rates()
     every = rates["all objects"]
-    assert every["mm/g"] >= 0.851 and every["mm/kg"] >= 0.984 and every["cm/g"] >= 0.890, every
-    assert every["in/lb"] >= 0.765 and every["all"] >= 0.872, every
-    assert rates["first 63"]["all"] >= 0.896 and rates["hold-out"]["all"] >= 0.893, rates
-    assert rates["second hold-out"]["all"] >= 0.804, rates
+    assert every["mm/g"] >= 0.914 and every["mm/kg"] >= 1.0 and every["cm/g"] >= 0.835, every
+    assert every["in/lb"] >= 0.796 and every["all"] >= 0.886, every
+    assert rates["first 63"]["all"] >= 0.865 and rates["hold-out"]["all"] >= 0.924, rates
+    assert rates["second hold-out"]["all"] >= 0.890, rates
 
 
 def test_slips_rounded_to_three_digits_get_the_right_hint_less_often():
     """Written as a person rounds them (3 significant digits), sizes and masses no longer meet a
-    handbook density to 0.1 %, so only the density band decides: measured 82.8 % (in/lb 64.1 %),
-    against 87.3 % for the exact numbers; no SI object is warned either way."""
+    handbook density to 0.1 %, so only density and size decide: measured 87.5 % (in/lb 78.9 %),
+    against 88.7 % for the exact numbers (82.8 % and 64.1 % before the size terms); no SI
+    object is warned either way."""
     right = {slip: sum(_right(o, *SLIPS[slip], digits=3) for o in OBJECTS) / len(OBJECTS) for slip in SLIPS}
     overall = sum(right.values()) / len(SLIPS)
     print("\n3 digits: " + ", ".join(f"{k} {v:.1%}" for k, v in right.items()) + f", all {overall:.1%}")
-    assert right["in/lb"] >= 0.640 and overall >= 0.828, right
+    assert right["in/lb"] >= 0.789 and overall >= 0.875, right

@@ -13,24 +13,25 @@ tungsten or osmium in cm and g.
 
 Which units it names: every length unit with every mass unit is tried; among the pairs under
 which every part is possible (:meth:`_Solid.plausible`; no part over :data:`LARGEST_PART_M`),
-the likeliest wins (:func:`likely_units`). How likely a density is comes from a mixture: a share
-of parts is exactly one handbook material (:data:`REFERENCE_DENSITIES_KG_M3`, to 0.1 %: a mass
-computed from a density by CAD or by hand), the rest spread log-normally about
-:data:`TYPICAL_DENSITY_KG_M3` (hollow and assembled bodies, woods, foams), lighter for bodies
-metres across (:data:`STRUCTURE_SIZES_M`); rarer unit pairs pay their rarity
-(:data:`COMMON_UNITS`).
+the likeliest wins (:func:`likely_units`). How likely a part is comes from its density and its
+size together (:meth:`_Solid.improbability`): a share of parts is exactly one handbook material
+(:data:`REFERENCE_DENSITIES_KG_M3`, to 0.1 %: a mass computed from a density by CAD or by hand),
+the rest spread log-normally about a typical density that falls with size, from solid parts a
+centimetre across to structures metres across (:data:`TYPICAL_DENSITY_KG_M3`,
+:data:`STRUCTURE_SIZES_M`); sizes spread log-normally about :data:`BODY_SIZE_M`; rarer unit
+pairs pay their rarity (:data:`COMMON_UNITS`).
 
 What it cannot tell apart (docs/spec.md gives the rates measured on a corpus of real objects,
 tests/spec/test_plausibility_corpus.py): one unit pair differs from another by a factor on every
-density and one on every size, and real densities spread over more than those factors (15 to
-22,590 kg/m³; in/lb is 28× denser than cm/g and 36× lighter than mm/g). So a dense part that is
-not exactly a handbook material (a coin, a gold or silver bar, cast iron drawn by its outline)
-in mm and g reads as a hollow body in inches and pounds, and in inches and pounds as a light
-one in cm and g; a light body (foam, a violin or bicycle wheel drawn by its outline) in cm and
-g reads as a solid in inches and pounds, and in inches and pounds as one in mm and g; parts
-denser than 9 g/cm³ written in cm and g read as 9–23 kg/m³ in SI, light foams, and are warned
-about only when they are exactly a handbook metal; and mm with g gives the same densities as
-cm with kg (mm and g is named).
+density and one on every size, and real bodies spread over more than those factors (15 to
+22,590 kg/m³; in/lb is 28× denser and 2.5× larger than cm/g, 36× lighter and 25× larger than
+mm/g). So a part a centimetre across that is not exactly a handbook material (a coin, a bar
+drawn as a box) in mm and g reads as a hollow body in inches and pounds; a light body (foam, a
+chair or a violin drawn by its outline) in cm and g reads as a solid in inches and pounds; a
+body metres across (a car, a satellite) in inches and pounds reads as a part a few centimetres
+across in mm and g; parts denser than 9 g/cm³ written in cm and g read as 9–23 kg/m³ in SI,
+light foams, and are warned about only when they are exactly a handbook metal; and mm with g
+gives the same densities as cm with kg (mm and g is named).
 """
 
 from __future__ import annotations
@@ -50,22 +51,33 @@ g read as m and kg is a million times too light and cannot pass; one in cm and g
 times too light and passes only for parts denser than 9 g/cm³ (lead, gold, tungsten)."""
 
 TYPICAL_DENSITY_KG_M3 = 400.0
-"""The middle of the densities bodies up to a metre across have when they are not one handbook
-material, kg/m³: hollow and assembled bodies drawn as one solid of their outside size (a ball
-80–400, a phone 2,000), woods and foams spread around it (larger bodies:
-:data:`STRUCTURE_SIZES_M`)."""
+"""The middle of the densities bodies a metre across have when they are not one handbook
+material, kg/m³: hollow and assembled bodies drawn as one solid of their outside size (a
+fridge 100, a washing machine 230, a person 1,000), woods and foams spread around it (smaller
+and larger bodies: :data:`STRUCTURE_SIZES_M`)."""
 
 DENSITY_SPREAD_DECADES = 0.7
 """How widely those densities spread about :data:`TYPICAL_DENSITY_KG_M3` (standard deviation of
 log10 density): 68 % of such bodies lie within 80–2,000 kg/m³, 95 % within 16–10,000."""
 
-STRUCTURE_SIZES_M = (1.0, 10.0)
+STRUCTURE_SIZES_M = (0.01, 10.0)
 STRUCTURE_THINNING = 0.5
-"""Bodies over a metre across are mostly structures round air (walls, frames, decks), and the
-walls' share of the outside volume falls as the body grows (square-cube law): between the two
+TYPICAL_SIZE_M = 1.0
+"""Parts a centimetre across are mostly solid (metals, plastics, glass: a coin, a bolt, a
+battery), larger bodies more and more structures round air (walls, frames, shells), the
+walls' share of the outside volume falling as the body grows (square-cube law): between the two
 sizes (cube root of the volume, m) the typical density falls by 10^-STRUCTURE_THINNING per
-tenfold size, from 400 to 130 kg/m³; beyond 10 m it falls no further (a hull carries its
-displacement: ships come out at 300–500 kg/m³)."""
+tenfold size, from 4,000 kg/m³ at 1 cm through 1,300 at 10 cm (a phone, a brick, a bowling
+ball) and :data:`TYPICAL_DENSITY_KG_M3` at a metre to 130 at 10 m; beyond 10 m it falls no
+further (a hull carries its displacement: ships come out at 300–500 kg/m³), below 1 cm it
+rises no further (solid materials)."""
+
+BODY_SIZE_M = 0.3
+BODY_SIZE_SPREAD_DECADES = 1.0
+"""How large the bodies people compute are (cube root of the volume, m): log-normal about
+BODY_SIZE_M with BODY_SIZE_SPREAD_DECADES standard deviation of log10 size, so 95 % lie
+between 3 mm and 30 m (a screw to a truck; wires, ships and rockets are rarer). A unit pair
+that makes a body 25 times smaller or larger than another pays for it."""
 
 REFERENCE_DENSITIES_KG_M3 = MATERIAL_DENSITIES_SI | {
     "osmium": 22_590.0,
@@ -187,23 +199,28 @@ class _Solid:
         return (self.mass is not None and length == "m") or self.size_m(length) <= LARGEST_PART_M
 
     def improbability(self, length: str, mass: str) -> float:
-        """How unlikely the part's density is if the file is in ``length`` and ``mass``: minus
-        log10 of its probability density per decade of density, from a mixture of the handbook
-        materials (:data:`REFERENCE_DENSITIES_KG_M3`, each a spike :data:`MATERIAL_MATCH_DECADES`
-        wide holding :data:`MATERIAL_SHARE` between them) and a log-normal spread about
-        :data:`TYPICAL_DENSITY_KG_M3`. 0 for a part given a material name."""
+        """How unlikely the part's density and size are together if the file is in ``length``
+        and ``mass``: minus log10 of their joint probability density per decade of each. The
+        density's, given the size, from a mixture of the handbook materials
+        (:data:`REFERENCE_DENSITIES_KG_M3`, each a spike :data:`MATERIAL_MATCH_DECADES` wide
+        holding :data:`MATERIAL_SHARE` between them) and a log-normal spread about the typical
+        density of bodies that size (:data:`STRUCTURE_SIZES_M`); the size's log-normal about
+        :data:`BODY_SIZE_M`. 0 for a part given a material name."""
         density = self.density_si(length, mass)
         if not density:
             return 0.0
-        decades = math.log10(density)
-        smallest, largest = STRUCTURE_SIZES_M
-        size = min(max(self.size_m(length), smallest), largest)
-        typical = math.log10(TYPICAL_DENSITY_KG_M3) - STRUCTURE_THINNING * math.log10(size / smallest)
-        z = (decades - typical) / DENSITY_SPREAD_DECADES
+        decades, size_decades = math.log10(density), math.log10(self.size_m(length))
+        smallest, largest = (math.log10(size) for size in STRUCTURE_SIZES_M)
+        thinning = STRUCTURE_THINNING * (
+            min(max(size_decades, smallest), largest) - math.log10(TYPICAL_SIZE_M)
+        )
+        z = (decades - math.log10(TYPICAL_DENSITY_KG_M3) + thinning) / DENSITY_SPREAD_DECADES
         spread = math.exp(-z * z / 2) / (DENSITY_SPREAD_DECADES * math.sqrt(2 * math.pi))
         matches = sum(abs(decades - known) < MATERIAL_MATCH_DECADES for known in _REFERENCE_DECADES)
         spike = matches / (2 * MATERIAL_MATCH_DECADES * len(_REFERENCE_DECADES))
-        return -math.log10(MATERIAL_SHARE * spike + (1 - MATERIAL_SHARE) * spread)
+        size_z = (size_decades - math.log10(BODY_SIZE_M)) / BODY_SIZE_SPREAD_DECADES
+        size_prior = math.exp(-size_z * size_z / 2) / (BODY_SIZE_SPREAD_DECADES * math.sqrt(2 * math.pi))
+        return -math.log10((MATERIAL_SHARE * spike + (1 - MATERIAL_SHARE) * spread) * size_prior)
 
     def rare_in_si(self, length: str, mass: str) -> str:
         """What is odd about a part possible in metres and kilograms that ``length`` and
