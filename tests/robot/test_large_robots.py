@@ -50,25 +50,58 @@ def test_moments_without_axes_are_the_principal_moments_bit_for_bit():
         assert _same(_moments(properties), properties.moments)
 
 
-def test_the_cross_product_is_numpys_bit_for_bit():
-    from rbi.robot.statics import _cross
+def test_the_cross_and_dot_products_are_numpys_bit_for_bit():
+    from rbi.robot.statics import _cross, _dot
 
-    for i in range(3000):
-        a, b = RNG.normal(size=3) * 10.0 ** RNG.integers(-8, 8), RNG.normal(size=3)
-        if i % 3 == 0:
-            a[1], b[2] = 0.0, -0.0
-        assert _same(_cross(a, b), np.cross(a, b))
+    a = RNG.normal(size=(3000, 3)) * 10.0 ** RNG.integers(-8, 8, size=(3000, 1))
+    b, g = RNG.normal(size=(3000, 3)), RNG.normal(size=3)
+    a[::3, 1], b[::3, 2] = 0.0, -0.0
+    crossed, dotted = _cross(a, b), _dot(a, g)
+    for i in range(len(a)):
+        assert _same(crossed[i], np.cross(a[i], b[i]))
+        assert _same(dotted[i], g @ a[i])
 
 
-def _urdf(links: list[tuple[float, np.ndarray]], chain: bool = False) -> str:
+def test_the_placement_on_stacks_is_the_pose_by_pose_one_bit_for_bit():
+    """Poses composed one tree level at a time on (n, 3, 3) stacks equal :class:`Pose` products
+    link by link (numpy's matmul makes the same BLAS call per matrix of a stack)."""
+    from rbi.formats.robot import Pose
+    from rbi.robot.tree import _stack_apply
+
+    R = RNG.normal(size=(2000, 3, 3))
+    inner = RNG.normal(size=(2000, 3, 3))
+    t = RNG.normal(size=(2000, 3)) * 10.0 ** RNG.integers(-6, 6, size=(2000, 1))
+    u = RNG.normal(size=(2000, 3))
+    turned, moved = np.matmul(R, inner), _stack_apply(R, u) + t
+    for i in range(len(R)):
+        one = Pose(R[i], t[i]).then(Pose(inner[i], u[i]))
+        assert _same(turned[i], one.rotation) and _same(moved[i], one.translation)
+
+
+_SHAPES = (
+    '<box size="0.2 0.1 0.05"/>',
+    '<cylinder radius="0.03" length="0.2"/>',
+    '<sphere radius="0.05"/>',
+    '<capsule radius="0.02" length="0.1"/>',
+    '<box size="0 0.1 0.05"/>',  # no volume: no geometry
+)
+
+
+def _urdf(links: list[tuple[float, np.ndarray]], chain: bool = False, shapes: bool = False) -> str:
     """A URDF whose link i has mass ``m`` and inertia ``I`` (any numbers, unphysical included)
-    and a box; joints make a chain or a binary tree."""
+    and a box (``shapes``: each primitive in turn, turned and moved off the link origin, some
+    links with a second piece); joints make a chain or a binary tree."""
     parts = ['<robot name="r">']
     for i, (m, I) in enumerate(links):
+        geometry = '<collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision>'
+        if shapes:
+            origin = f'<origin xyz="{0.01 * i!r} -0.02 0.3" rpy="{0.1 * i!r} 0.2 -0.7"/>'
+            geometry = f"<collision>{origin}<geometry>{_SHAPES[i % 5]}</geometry></collision>"
+            geometry += geometry if i % 7 == 3 else ""
         parts.append(
             f'<link name="l{i}"><inertial><mass value="{m!r}"/><inertia ixx="{float(I[0, 0])!r}" ixy="{float(I[0, 1])!r}" '
             f'ixz="{float(I[0, 2])!r}" iyy="{float(I[1, 1])!r}" iyz="{float(I[1, 2])!r}" izz="{float(I[2, 2])!r}"/></inertial>'
-            '<collision><geometry><box size="0.2 0.1 0.05"/></geometry></collision></link>'
+            f"{geometry}</link>"
         )
     for i in range(1, len(links)):
         parent = i - 1 if chain else (i - 1) // 2
@@ -107,23 +140,45 @@ def _hostile_inertias(n: int) -> list[tuple[float, np.ndarray]]:
     return found
 
 
-@pytest.mark.parametrize("chain", [False, True])
-def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain):
+@pytest.mark.parametrize(
+    "chain, shapes, density",
+    [(False, False, None), (True, False, None), (False, True, None), (True, True, 500.0)],
+)
+def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, shapes, density):
     from rbi.formats.robot_files import read_robot
     from rbi.robot.audit import _carried_mass, audit_link, audit_model
 
     path = tmp_path / "r.urdf"
-    path.write_text(_urdf(_hostile_inertias(200), chain=chain))
+    path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
     model = read_robot(str(path))
-    bulk = audit_model(model)
+    bulk = audit_model(model, density=density)
     carried = _carried_mass(model)
     codes = set()
     for link, found in zip(model.links, bulk.links):
-        one = audit_link(model, link, carries_mass=carried[link.index])
+        one = audit_link(model, link, carries_mass=carried[link.index], density=density)
         assert [f.as_dict() for f in found.flags] == [f.as_dict() for f in one.flags]
         assert _same(found.ratios, one.ratios) and found.com_offset == one.com_offset
+        _assert_same_geometry(found.geometry, one.geometry)
         codes |= {f"{f.level} {f.code}" for f in found.flags}
     assert {"error unphysical", "error placeholder", "warning mismatch", "error mismatch"} <= codes
+
+
+def _assert_same_geometry(bulk, one) -> None:
+    """The geometry the bulk audit measured is, bit for bit, what the one-link audit measures."""
+    assert (bulk is None) == (one is None)
+    if one is None:
+        return
+    assert (bulk.properties is None) == (one.properties is None)
+    for name in ("centroid", "low", "high", "center_of_mass"):
+        assert _same(getattr(bulk, name), getattr(one, name)), name
+    assert (bulk.volume, bulk.implied_density, bulk.source, bulk.mass) == (
+        one.volume,
+        one.implied_density,
+        one.source,
+        one.mass,
+    )
+    if one.properties is not None:
+        assert _same(bulk.inertia_about_com, one.inertia_about_com)
 
 
 def test_the_totals_and_torques_of_a_chain_match_a_link_by_link_sum(tmp_path):

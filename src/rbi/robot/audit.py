@@ -39,9 +39,9 @@ from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats.robot import Link, RobotModel
-from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution
+from rbi.formats.robot_geometry import MESH_INERTIA_MODES, _half_extent, distribution, primitive
 from rbi.reprs import TableRepr
-from rbi.robot.tree import placement, totals
+from rbi.robot.tree import _stack_apply, placement, totals
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -285,9 +285,12 @@ def audit_model(
         raise InputError(f"--mesh-inertia: {mesh_inertia!r}: must be one of {', '.join(MESH_INERTIA_MODES)}")
     carried = _carried_mass(model)
     repairs: list[str] = []
+    bulk = _primitives_in_bulk(model, geometry, density)
     links = [
-        _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
-        for link in model.links
+        LinkAudit(link, None if link.inertial is None else link.inertial.properties, bulk[row])
+        if row in bulk
+        else _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
+        for row, link in enumerate(model.links)
     ]
     for result, known in zip(links, _known_in_bulk(links)):
         result.flags += _flags(model, result.link, result, carried.get(result.link.index, False), known)
@@ -399,14 +402,100 @@ def _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, no
     return result
 
 
+def _one_primitive(model: RobotModel, geometry: str) -> dict[int, tuple[Any, str]]:
+    """Row → (geom, source) of each URDF or SDF link whose geometry (as :func:`link_geometry`
+    chooses it) is one solid primitive: what :func:`_primitives_in_bulk` measures."""
+    if geometry == "none" or model.format == "mjcf":
+        return {}
+    found = {}
+    for row, link in enumerate(model.links):
+        first, second = (
+            (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
+        )
+        geoms, source = (
+            (first, geometry) if first else (second, "visual" if geometry == "collision" else "collision")
+        )
+        if len(geoms) == 1 and geoms[0].kind in _PRIMITIVES and not geoms[0].shell:
+            found[row] = (geoms[0], source)
+    return found
+
+
+_PRIMITIVES = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
+
+
+def _primitives_in_bulk(model: RobotModel, geometry: str, density: float | None) -> dict[int, GeometryProps]:
+    """Row → :class:`GeometryProps` of the links :func:`_one_primitive` finds, measured on
+    (n, 3, 3) stacks with the operations :func:`distribution`, :func:`_sum` and
+    :func:`_geometry_props` make on one link, element by element (so the same numbers). A link
+    whose numbers would take another branch there (no volume, overflow, an unusual sum) is left
+    to them."""
+    chosen = _one_primitive(model, geometry)
+    if not chosen:
+        return {}
+    rows = list(chosen)
+    geoms = [chosen[row][0] for row in rows]
+    shapes: dict[tuple, tuple[float, np.ndarray, np.ndarray]] = {}
+    for geom in geoms:
+        key = (geom.kind, geom.size)
+        if key not in shapes:
+            try:
+                shapes[key] = (*primitive(geom.kind, geom.size), _half_extent(geom.kind, geom.size))
+            except ValueError:
+                shapes[key] = (np.nan, np.full(3, np.nan), np.full(3, np.nan))
+    measure = np.array([shapes[(g.kind, g.size)][0] for g in geoms], dtype=float)
+    moments = np.array([shapes[(g.kind, g.size)][1] for g in geoms], dtype=float).reshape(-1, 3)
+    half = np.array([shapes[(g.kind, g.size)][2] for g in geoms], dtype=float).reshape(-1, 3)
+    R = np.array([g.pose.rotation for g in geoms], dtype=float).reshape(-1, 3, 3)
+    p = np.array([g.pose.translation for g in geoms], dtype=float).reshape(-1, 3)
+    turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
+    inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
+    corners = _stack_apply(np.abs(R), half)
+    with np.errstate(all="ignore"):
+        fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
+        fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
+    return _geometry_rows(
+        model, rows, chosen, fine, measure, inertia + 0.0, p + 0.0, p - corners, p + corners, density
+    )
+
+
+def _geometry_rows(
+    model, rows, chosen, fine, measure, inertia, com, low, high, density
+) -> dict[int, GeometryProps]:
+    """The :class:`GeometryProps` of each ``fine`` row, as :func:`_geometry_props` makes it from
+    one piece of ``measure`` (m³) with its inertia at density 1, centroid and bounds."""
+    found = {}
+    for k, row in enumerate(rows):
+        if not fine[k]:
+            continue
+        inertial = model.links[row].inertial
+        volume = float(measure[k])
+        if inertial is not None and inertial.properties.mass > 0:
+            mass: float | None = inertial.properties.mass
+        elif density is not None:
+            mass = density * volume
+        else:
+            mass = None
+        properties = None
+        if mass is not None:
+            properties = MassProperties(mass, com[k], inertia[k] * (mass / volume), "link")
+        implied = mass / volume if mass is not None else None
+        found[row] = GeometryProps(properties, com[k], volume, implied, low[k], high[k], chosen[row][1])
+    return found
+
+
 class _Known(NamedTuple):
     """What :func:`_known_in_bulk` worked out for one link: ``physical`` (the declared inertia
     certainly passes :func:`declared_inertia_problem`), ``maybe_placeholder`` (False: certainly
-    not a placeholder) and ``geometry_eigh`` (the geometry inertia's ``np.linalg.eigh``, or None)."""
+    not a placeholder), ``geometry_eigh`` (the geometry inertia's ``np.linalg.eigh``, or None),
+    and what :func:`_geometry_flags` would set: ``ratios``, ``com_offset``, and ``clean`` (True:
+    it would add no flag to a link that is not a placeholder)."""
 
     physical: bool
     maybe_placeholder: bool
     geometry_eigh: tuple[np.ndarray, np.ndarray] | None
+    ratios: np.ndarray | None = None
+    com_offset: float | None = None
+    clean: bool = False
 
 
 def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
@@ -422,7 +511,7 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
         physical[declared] = _certainly_physical(stack)
         written = np.array([links[i].link.inertial.written_inertia for i in declared]).reshape(-1, 3, 3)
         maybe_placeholder[declared] = _maybe_placeholder(written)
-    eighs: list[tuple[np.ndarray, np.ndarray] | None] = [None] * len(links)
+    known = [_Known(bool(a), bool(b), None) for a, b in zip(physical.tolist(), maybe_placeholder.tolist())]
     usable = [
         i
         for i, each in enumerate(links)
@@ -432,9 +521,53 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
         stack = np.array([links[i].geometry.properties.inertia_about_com for i in usable]).reshape(-1, 3, 3)
         finite = np.all(np.isfinite(stack), axis=(1, 2))
         moments, axes = np.linalg.eigh(stack[finite])
-        for row, i in enumerate(np.array(usable)[finite].tolist()):
-            eighs[i] = (moments[row], axes[row])
-    return [_Known(bool(a), bool(b), c) for a, b, c in zip(physical, maybe_placeholder, eighs)]
+        chosen = np.array(usable)[finite].tolist()
+        for row, i in enumerate(chosen):
+            known[i] = known[i]._replace(geometry_eigh=(moments[row], axes[row]))
+        _geometry_in_bulk(links, known, chosen, moments, axes)
+    return known
+
+
+def _geometry_in_bulk(links, known: list[_Known], chosen: list[int], moments, axes) -> None:
+    """:func:`_geometry_flags`'s ratios, centre-of-mass offset and whether it would flag anything,
+    for the ``chosen`` links that declare an inertial (their geometry's eigen-decompositions
+    ``moments``, ``axes``), on stacks: the same operations element by element (einsum and
+    matmul make the same calls per matrix of a stack), so the same numbers."""
+    rows = [row for row, i in enumerate(chosen) if links[i].declared is not None]
+    if not rows:
+        return
+    picked = [links[chosen[row]] for row in rows]
+    moments, axes = moments[rows], axes[rows]
+    inertia = np.array([each.declared.inertia_about_com for each in picked]).reshape(-1, 3, 3)
+    along = np.einsum("nji,njk,nki->ni", axes, inertia, axes)
+    usable = moments > 1e-9 * np.max(moments, axis=1)[:, None]
+    with np.errstate(all="ignore"):
+        ratios = np.where(usable, along / moments, np.nan)
+    com = np.array([each.declared.center_of_mass for each in picked]).reshape(-1, 3)
+    low = np.array([each.geometry.low for each in picked]).reshape(-1, 3)
+    high = np.array([each.geometry.high for each in picked]).reshape(-1, 3)
+    size = _norms(high - low)
+    offset = _norms(com - np.array([each.geometry.center_of_mass for each in picked]).reshape(-1, 3))
+    with np.errstate(all="ignore"):
+        offset = offset / size
+    margin = (COM_MARGIN * size)[:, None]
+    inside = ~(np.any(com < low - margin, axis=1) | np.any(com > high + margin, axis=1))
+    near = np.all(~np.isfinite(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
+    low_density, high_density = SOLID_DENSITY_RANGE
+    for row, each in enumerate(picked):
+        i = chosen[rows[row]]
+        density = each.geometry.implied_density
+        clean = bool(near[row] and inside[row]) and (
+            density is None or low_density <= density <= high_density
+        )
+        com_offset = float(offset[row]) if size[row] > 0 else None
+        known[i] = known[i]._replace(ratios=ratios[row], com_offset=com_offset, clean=clean)
+
+
+def _norms(rows: np.ndarray) -> np.ndarray:
+    """``np.linalg.norm`` of each row of a (k, 3) array: the square root of the row's dot product
+    with itself, as a stack of one-row products (the same call as for one vector)."""
+    return np.sqrt(np.matmul(rows[:, None, :], rows[:, :, None])[:, 0, 0])
 
 
 def _certainly_physical(stack: np.ndarray) -> np.ndarray:
@@ -540,7 +673,9 @@ def _flags(
             _geometry_flags(result, None, eigh)  # the ratios only: the default is not the file's claim
         return flags + [Flag("placeholder", "warning", _DEFAULT_TEXT, "SDFormat's default inertial")]
     placeholder = None if known is not None and not known.maybe_placeholder else _placeholder(model, link)
-    if has_geometry:
+    if has_geometry and known is not None and known.clean and not placeholder:
+        result.ratios, result.com_offset = known.ratios, known.com_offset  # no flag to add
+    elif has_geometry:
         flags += _geometry_flags(result, placeholder, eigh)
     elif placeholder:
         flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))

@@ -18,8 +18,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rbi.formats.robot import Pose, RobotModel
-from rbi.robot.tree import parents_first, placement
+from rbi.formats.robot import RobotModel
+from rbi.robot.tree import _stack_apply, placement
 
 STANDARD_GRAVITY = 9.81
 """m/s², along −z of the root link's frame for URDF and SDF."""
@@ -46,23 +46,24 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     """The holding torque of every revolute and prismatic joint at ``joints`` (name → value;
     the others at the reference configuration), in file order of their links. ``at``: the links
     already placed there (:func:`rbi.robot.tree.placement`)."""
-
     placed = placement(model, joints) if at is None else at
     gravity = _gravity(model)
+    mass, moment = _subtree_sums(model, placed)
     to_frame = placed.to_frame
-    mass, moment = _subtree_sums(model, placed.placed)
+    to_R = np.broadcast_to(to_frame.rotation, (len(placed.joints), 3, 3))
+    axes = np.matmul(to_R, placed.axes[..., None])[..., 0]
+    anchors = np.matmul(to_R, placed.anchors[..., None])[..., 0] + to_frame.translation
+    keep = [i for i, (index, _) in enumerate(placed.joints) if not _world_joint(model, placed.rows[index])]
+    rows = [placed.rows[placed.joints[i][0]] for i in keep]
+    M = np.array([mass[row] for row in rows], dtype=float)  # Σ m of each joint's subtree
+    axes, anchors = axes[keep], anchors[keep]
+    lever = _cross(axes, moment[rows] - M[:, None] * anchors)  # axis × (Σ m c − M p)
+    prismatic = np.array([placed.joints[i][1].kind == "prismatic" for i in keep], dtype=bool)
+    torques = np.where(prismatic, -M * _dot(axes, gravity), -_dot(lever, gravity)) + 0.0
     found = []
-    for link in model.links:
-        if model.format == "sdf" and link.parent is None:
-            continue  # a joint to the world: SDF reads no axis for it here
-        for motion, axis, anchor in placed.frames.get(link.index, []):
-            axis, anchor = to_frame.rotation @ axis, to_frame.apply(anchor)
-            M, first = mass[link.index], moment[link.index]  # Σ m, Σ m c
-            if motion.kind == "prismatic":
-                torque = -M * float(gravity @ axis)
-            else:
-                torque = -float(gravity @ _cross(axis, first - M * anchor))
-            found.append(JointTorque(motion.name, motion.kind, torque + 0.0, motion.effort_limit))
+    for i, torque in zip(keep, torques.tolist()):
+        motion = placed.joints[i][1]
+        found.append(JointTorque(motion.name, motion.kind, torque, motion.effort_limit))
     for each in found:
         if each.margin is not None and each.margin < 0:
             unit = "N·m" if each.type == "revolute" else "N"
@@ -77,11 +78,24 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     return found
 
 
+def _world_joint(model: RobotModel, row: int) -> bool:
+    """A joint of an SDF root link (``row`` in ``model.links``): a joint to the world, for which
+    SDF reads no axis here."""
+    return model.format == "sdf" and model.links[row].parent is None
+
+
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``np.cross`` of two 3-vectors, the same products and differences without its set-up."""
-    a0, a1, a2 = a.tolist()
-    b0, b1, b2 = b.tolist()
-    return np.array([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0])
+    """``a × b`` for each row of two (k, 3) arrays: the products and differences of ``np.cross``
+    of two 3-vectors, element by element."""
+    a0, a1, a2 = a[:, 0], a[:, 1], a[:, 2]
+    b0, b1, b2 = b[:, 0], b[:, 1], b[:, 2]
+    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=1).reshape(-1, 3)
+
+
+def _dot(rows: np.ndarray, vector: np.ndarray) -> np.ndarray:
+    """``vector @ row`` for each row of a (k, 3) array, as a stack of one-row products (numpy makes
+    the same BLAS call per row as for two 3-vectors, so each equals the one-vector product)."""
+    return np.matmul(rows[:, None, :], vector[:, None])[:, 0, 0]
 
 
 def _gravity(model: RobotModel) -> np.ndarray:
@@ -92,21 +106,32 @@ def _gravity(model: RobotModel) -> np.ndarray:
     return np.array([0.0, 0.0, -STANDARD_GRAVITY])
 
 
-def _subtree_sums(model: RobotModel, placed: dict[int, Pose]):
-    """For each link: the mass of its subtree (kg) and its first moment Σ m c (kg·m), from each
-    link's pose in the torques' frame."""
-
-    by_name = {link.key: link for link in model.links}
-    mass = {link.index: 0.0 for link in model.links}
-    moment = {link.index: np.zeros(3) for link in model.links}
-    for link in model.links:
-        inertial = link.inertial
-        if inertial is not None and inertial.mass != 0.0:
-            mass[link.index] = inertial.mass
-            moment[link.index] = inertial.mass * placed[link.index].apply(inertial.properties.center_of_mass)
-    for link in reversed(parents_first(model, by_name)):
-        if link.parent is not None and link.parent in by_name:
-            parent = by_name[link.parent].index
-            mass[parent] += mass[link.index]
-            moment[parent] = moment[parent] + moment[link.index]
-    return mass, moment
+def _subtree_sums(model: RobotModel, placed) -> tuple[list[float], np.ndarray]:
+    """For each link's row of ``placed``: the mass of its subtree (kg) and its first moment
+    Σ m c (kg·m, in ``placed.frame``), each subtree added to its parent's in the reverse of
+    :func:`rbi.robot.tree.parents_first`'s order."""
+    links = model.links
+    rows = placed.rows
+    mass = [0.0] * len(links)
+    moment = np.zeros((len(links), 3))
+    heavy = [
+        (rows[link.index], link.inertial)
+        for link in links
+        if link.inertial is not None and link.inertial.mass != 0.0
+    ]
+    if heavy:
+        chosen = [row for row, _ in heavy]
+        masses = np.array([inertial.mass for _, inertial in heavy], dtype=float)
+        coms = np.array([inertial.properties.center_of_mass for _, inertial in heavy]).reshape(-1, 3)
+        at = _stack_apply(placed.placed_rotations[chosen], coms) + placed.placed_translations[chosen]
+        moment[chosen] = masses[:, None] * at
+        for row, value in zip(chosen, masses.tolist()):
+            mass[row] = value
+    first = moment.tolist()
+    n = len(links)
+    for child, parent in reversed(placed.order):
+        if parent != n:
+            mass[parent] += mass[child]
+            a, b = first[parent], first[child]
+            first[parent] = [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
+    return mass, np.array(first).reshape(-1, 3)

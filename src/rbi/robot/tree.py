@@ -15,7 +15,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbi.core.mass import MassProperties
+from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import axis_angle_matrix
 from rbi.errors import InputError
 from rbi.formats.robot import Pose, RobotModel
@@ -53,48 +53,144 @@ def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dic
 
 @dataclass
 class Placement:
-    """The links placed at one configuration: ``poses`` (link index → its frame in the model's
-    frame), ``frames`` (link index → [(motion, axis, anchor)] of its revolute and prismatic
-    joints, axis and anchor in the model's frame where the joints before them leave them),
-    ``frame`` the name of the frame totals are given in (``"root link NAME"`` for URDF and SDF,
-    ``"world"`` for MJCF), ``to_frame`` model frame → that frame, and ``placed`` (link index →
-    its frame in that frame)."""
+    """The links placed at one configuration, as arrays (one row a link, ``rows``: link index →
+    row): ``rotations`` (n, 3, 3) and ``translations`` (n, 3) each link's frame in the model's
+    frame; ``joints`` [(link index, motion)] of the revolute and prismatic joints in file order
+    of their links, with ``axes`` and ``anchors`` (k, 3) in the model's frame where the joints
+    before them leave them; ``frame`` the name of the frame totals are given in (``"root link
+    NAME"`` for URDF and SDF, ``"world"`` for MJCF), ``to_frame`` model frame → that frame, and
+    ``placed_rotations``/``placed_translations`` each link's frame in that frame. :attr:`poses`
+    and :attr:`placed` give them as :class:`Pose` values."""
 
-    poses: dict[int, Pose]
-    frames: dict[int, list]
+    rows: dict[int, int]
+    rotations: np.ndarray
+    translations: np.ndarray
+    joints: list
+    axes: np.ndarray
+    anchors: np.ndarray
     frame: str
     to_frame: Pose
-    placed: dict[int, Pose]
+    placed_rotations: np.ndarray
+    placed_translations: np.ndarray
+    order: list[tuple[int, int]]
+    """(row, parent row) of each link in :func:`parents_first`'s order; a root's parent row is n."""
+
+    @property
+    def poses(self) -> dict[int, Pose]:
+        """Link index → its frame in the model's frame."""
+        return {i: Pose(self.rotations[r], self.translations[r]) for i, r in self.rows.items()}
+
+    @property
+    def placed(self) -> dict[int, Pose]:
+        """Link index → its frame in :attr:`frame`."""
+        return {i: Pose(self.placed_rotations[r], self.placed_translations[r]) for i, r in self.rows.items()}
+
+
+def _stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
+    """``rotations[i] @ vectors[i]`` for each row (numpy's matmul on the stack makes the same
+    BLAS call per row as on one matrix, so each row equals the one-matrix product)."""
+    return np.matmul(rotations, vectors[..., None])[..., 0]
 
 
 def placement(model: RobotModel, joints: dict[str, float] | None = None) -> Placement:
-    """Every link's pose at ``joints`` in one pass over the tree, parents first; InputError for a
-    joint name the model has no revolute or prismatic joint of."""
+    """Every link's pose at ``joints``, parents first (a link's pose is its parent's, then its
+    origin, then its joints' motions), one level of the tree at a time on (n, 3, 3) stacks;
+    InputError for a joint name the model has no revolute or prismatic joint of."""
     joints = dict(joints or {})
     _check_joint_names(model, joints)
-    by_name = {link.key: link for link in model.links}
-    poses: dict[int, Pose] = {}
+    links = model.links
+    n = len(links)
+    rows = {link.index: row for row, link in enumerate(links)}
+    R = np.empty((n + 1, 3, 3))  # row n: the identity, every root's parent
+    t = np.empty((n + 1, 3))
+    R[n], t[n] = np.eye(3), np.zeros(3)
     frames: dict[int, list] = {}
-    for link in parents_first(model, by_name):
-        pose = (Pose.identity() if link.parent is None else poses[by_name[link.parent].index]).then(
-            link.origin
-        )
-        for motion in link.motions:
-            if motion.kind in ("revolute", "prismatic"):
-                frames.setdefault(link.index, []).append(
-                    (motion, pose.rotation @ motion.axis, pose.apply(motion.anchor))
-                )
-            if motion.name in joints:
-                pose = pose.then(_motion(motion, joints[motion.name]))
-        poses[link.index] = pose
+    order, levels = _levels(model)
+    for level, parents in levels:
+        level_R = np.array([links[row].origin.rotation for row in level]).reshape(-1, 3, 3)
+        level_t = np.array([links[row].origin.translation for row in level], dtype=float).reshape(-1, 3)
+        R[level] = np.matmul(R[parents], level_R)
+        t[level] = _stack_apply(R[parents], level_t) + t[parents]
+        for row in level:
+            if joints and any(motion.name in joints for motion in links[row].motions):
+                R[row], t[row] = _moved(links[row], Pose(R[row], t[row]), joints, frames)
+    R, t = R[:n], t[:n]
+    joint_list, axes, anchors = _joint_frames(model, R, t, frames)
     frame, to_frame = "world", Pose.identity()
     if model.format != "mjcf":
-        roots = [link for link in model.links if link.parent is None]
+        roots = [link for link in links if link.parent is None]
         if roots:
-            to_frame = poses[roots[0].index].inverse()
+            root = rows[roots[0].index]
+            to_frame = Pose(R[root], t[root]).inverse()
             frame = f"root link {roots[0].name}"
-    placed = {index: to_frame.then(pose) for index, pose in poses.items()}
-    return Placement(poses, frames, frame, to_frame, placed)
+    to_R = np.broadcast_to(to_frame.rotation, R.shape)
+    placed_R = np.matmul(to_R, R)
+    placed_t = _stack_apply(to_R, t) + to_frame.translation
+    return Placement(rows, R, t, joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, order)
+
+
+def _levels(model: RobotModel) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]]]:
+    """(row, parent row) in :func:`parents_first`'s order (a root's parent: row n, the identity),
+    and the same rows grouped by depth in the tree with their parents' rows, shallowest first."""
+    links = model.links
+    n = len(links)
+    by_name = {link.key: row for row, link in enumerate(links)}
+    row_of = {link.index: row for row, link in enumerate(links)}
+    depth = [0] * (n + 1)
+    order: list[tuple[int, int]] = []
+    groups: list[tuple[list[int], list[int]]] = []
+    for link in parents_first(model, by_name):
+        row = row_of[link.index]
+        parent = n if link.parent is None else by_name[link.parent]
+        d = depth[row] = 0 if parent == n else depth[parent] + 1
+        if d == len(groups):
+            groups.append(([], []))
+        groups[d][0].append(row)
+        groups[d][1].append(parent)
+        order.append((row, parent))
+    return order, groups
+
+
+def _moved(link, pose: Pose, joints: dict[str, float], frames: dict[int, list]) -> tuple:
+    """A link whose joints have values: each joint's frame where the joints before it leave it
+    (into ``frames``), and the link's pose after them all."""
+    for motion in link.motions:
+        if motion.kind in ("revolute", "prismatic"):
+            frames.setdefault(link.index, []).append(
+                (motion, pose.rotation @ motion.axis, pose.apply(motion.anchor))
+            )
+        if motion.name in joints:
+            pose = pose.then(_motion(motion, joints[motion.name]))
+    return pose.rotation, pose.translation
+
+
+def _joint_frames(model: RobotModel, R: np.ndarray, t: np.ndarray, moved: dict[int, list]):
+    """[(link index, motion)] of every revolute and prismatic joint in file order, and their axes
+    and anchors (k, 3) in the model's frame: at the link's pose, or as :func:`_moved` found them."""
+    found, rows, axes, anchors = [], [], [], []
+    for row, link in enumerate(model.links):
+        if link.index in moved:
+            for motion, axis, anchor in moved[link.index]:
+                found.append((link.index, motion))
+                rows.append(-1)
+                axes.append(axis)
+                anchors.append(anchor)
+            continue
+        for motion in link.motions:
+            if motion.kind in ("revolute", "prismatic"):
+                found.append((link.index, motion))
+                rows.append(row)
+                axes.append(motion.axis)
+                anchors.append(motion.anchor)
+    axes_array = np.array(axes, dtype=float).reshape(-1, 3)
+    anchors_array = np.array(anchors, dtype=float).reshape(-1, 3)
+    at = np.array(rows, dtype=int)
+    plain = at >= 0
+    if np.any(plain):
+        chosen = at[plain]
+        axes_array[plain] = _stack_apply(R[chosen], axes_array[plain])
+        anchors_array[plain] = _stack_apply(R[chosen], anchors_array[plain]) + t[chosen]
+    return found, axes_array, anchors_array
 
 
 def _check_joint_names(model: RobotModel, joints: dict[str, float]) -> None:
@@ -130,7 +226,6 @@ def parents_first(model: RobotModel, by_name: dict) -> list:
 
 
 def _motion(motion, q: float) -> Pose:
-
     amount = q - motion.reference
     if motion.kind == "prismatic":
         return Pose(np.eye(3), motion.axis * amount)
@@ -147,20 +242,41 @@ def totals(
     the links already placed at ``joints`` (:func:`placement`)."""
     placed = placement(model, joints) if at is None else at
     frame = placed.frame
-    parts = []
-    for link in model.links:
-        if link.inertial is None or link.inertial.mass == 0.0:
-            continue
-        pose = placed.placed[link.index]
-        parts.append(link.inertial.properties.transformed(pose.rotation, pose.translation, frame))
+    chosen = [
+        (placed.rows[link.index], link.inertial.properties)
+        for link in model.links
+        if link.inertial is not None and link.inertial.mass != 0.0
+    ]
     try:
-        total = MassProperties.sum(parts, frame)
+        if not chosen:
+            raise ValueError("no link with mass")
+        masses, coms = _placed_parts(placed, chosen)
+        total = combine(masses, coms, _placed_inertias(placed, chosen), frame)
     except ValueError:  # no link with mass, or negative masses (flagged unphysical) that leave none
         return MassProperties.zero(frame)
     if not (np.all(np.isfinite(total.center_of_mass)) and np.all(np.isfinite(total.inertia_about_com))):
-        far = max(float(np.max(np.abs(part.center_of_mass))) for part in parts)
+        far = float(np.max(np.abs(coms)))
         raise InputError(
             f"{model.path}: the whole robot's mass properties overflow a double (a centre of mass "
             f"{far:.3g} m from the root); give lengths in metres"
         )
     return total
+
+
+def _placed_parts(placed: Placement, chosen: list) -> tuple[np.ndarray, np.ndarray]:
+    """The masses (kg) and centres of mass (m, in ``placed.frame``) of the ``chosen`` [(row,
+    link-frame mass properties)]: each the value :meth:`MassProperties.transformed` gives."""
+    rows = [row for row, _ in chosen]
+    masses = np.array([props.mass for _, props in chosen], dtype=float)
+    coms = np.array([props.center_of_mass for _, props in chosen]).reshape(-1, 3)
+    R = placed.placed_rotations[rows]
+    return masses, _stack_apply(R, coms) + placed.placed_translations[rows]
+
+
+def _placed_inertias(placed: Placement, chosen: list) -> np.ndarray:
+    """Each chosen link's inertia about its centre of mass in ``placed.frame``'s axes, kg·m²:
+    ``R I Rᵀ`` made symmetric, as :meth:`MassProperties.transformed` gives it."""
+    R = placed.placed_rotations[[row for row, _ in chosen]]
+    inertias = np.array([props.inertia_about_com for _, props in chosen]).reshape(-1, 3, 3)
+    turned = np.matmul(np.matmul(R, inertias), np.swapaxes(R, 1, 2))
+    return 0.5 * (turned + np.swapaxes(turned, 1, 2))
