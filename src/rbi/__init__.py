@@ -70,6 +70,7 @@ def __getattr__(name: str):
         elif name == "visible":
             from rbi import text as module
         else:
+            # not at top level: `rbi --help` would load rbi.api too
             from rbi import api as module
         value = getattr(module, name)
         globals()[name] = value

@@ -18,16 +18,23 @@ raises `SpecError`, whose ``str()`` is the one line the CLI prints for the same 
 
 from __future__ import annotations
 
+import difflib
 import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from rbi.core.inertia import moment_about_axis, principal_axes, radii_of_gyration, re_express, unit_axis
 from rbi.core.mass import MassProperties, inertia_shares
-from rbi.core.rotation import LARGEST_ANGLE_DEG, matrix_to_quaternion
+from rbi.core.rotation import (
+    LARGEST_ANGLE_DEG,
+    angle_is_kept,
+    compose_world_rotations,
+    matrix_to_quaternion,
+)
 from rbi.errors import ArgumentError, SpecError
 from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
@@ -122,6 +129,7 @@ def load(
             invalid; ``str(error)`` is ``file: part: field: what is wrong``.
         TypeError: ``source`` is neither a path nor a dict.
     """
+    # not at top level: `rbi audit` would load rbi.spec.load too
     from rbi.spec import load as spec_load
 
     if isinstance(source, Mapping):
@@ -152,6 +160,7 @@ def load(
 def loads(text: str | bytes, *, allow_outside_paths: bool | None = None) -> Body:
     """Read a body spec from YAML or JSON text (named ``<string>`` in messages; files it names
     are looked for in the current folder). Otherwise as `load`."""
+    # not at top level: `rbi audit` would load rbi.spec.load too
     from rbi.spec import load as spec_load
 
     if isinstance(text, bytes):
@@ -172,7 +181,6 @@ def loads(text: str | bytes, *, allow_outside_paths: bool | None = None) -> Body
 def _body(read: Callable[[], tuple[Any, Any]], label: str, allow_outside_paths: bool | None) -> Body:
     """The `Body` ``read()`` gives (loaded body, parsed spec); a `SpecError` whose line starts
     with ``label`` gets it as its ``file``."""
-    from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
 
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     try:
@@ -195,7 +203,10 @@ def validate(
     SDF, MJCF) gives every link whose inertia is not physical; ``package_paths`` (``{NAME:
     DIR}`` or ``["NAME=DIR", ...]``) finds its ``package://`` meshes. SpecError for a bad
     ``package_paths``."""
+    # not at top level: `rbi inertia` would load rbi.formats.robot_paths too
     from rbi.formats.robot_paths import parse_package_paths
+
+    # not at top level: `rbi audit` would load rbi.spec.load too
     from rbi.spec.load import file_problems
 
     packages = parse_package_paths(package_paths)
@@ -207,6 +218,7 @@ def validate(
 def spec_schema() -> dict[str, Any]:
     """The JSON Schema (draft 2020-12) of a body spec, as ``rbi schema`` prints it (for
     editors: see docs/schema.md)."""
+    # not at top level: `rbi audit` would load rbi.spec.models too
     from rbi.spec.models import body_spec_json_schema
 
     return body_spec_json_schema()
@@ -402,6 +414,7 @@ class Body(TableRepr):
         the body's symmetry axis (exactly two equal principal moments about the pivot, or about
         the centre of mass of a free body), pointing from the pivot towards the centre of mass
         (or with its largest component positive), else body z."""
+        # not at top level: `rbi inertia` would load rbi.runs.run too
         from rbi.runs.run import body_spin_axis
 
         return body_spin_axis(self._loaded)
@@ -411,6 +424,7 @@ class Body(TableRepr):
 
         ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
         (ValueError when there is none); or a point (x, y, z)."""
+        # not at top level: `rbi check` would load rbi.runs.values too
         from rbi.runs.values import vector_value
 
         if isinstance(about, str):
@@ -465,6 +479,7 @@ class Body(TableRepr):
 
     def parts(self) -> list[Part]:
         """Each part's mass properties, in file order (see `Part`)."""
+        # not at top level: `rbi audit` would load rbi.spec.translate and rbi.spec.volumes too
         from rbi.spec.translate import integration_errors
         from rbi.spec.volumes import part_volume
 
@@ -510,7 +525,10 @@ class Body(TableRepr):
             velocity: (3,) velocity of the centre of mass, length/s, body axes. None: the
                 ``about`` point is fixed and the body turns about it (``v = ω × r``).
         """
+        # not at top level: `rbi inertia` would load rbi.core.dynamics too
         from rbi.core.dynamics import angle_between_deg, angular_momentum_about_point, kinetic_energy
+
+        # not at top level: `rbi check` would load rbi.runs.values too
         from rbi.runs.values import vector_value
 
         w = np.array(vector_value(omega, "omega"))
@@ -598,7 +616,10 @@ class Body(TableRepr):
             force: (3,) force on the body, mass·length/s².
             torque: (3,) torque about ``about``, mass·length²/s².
         """
+        # not at top level: `rbi inertia` would load rbi.core.dynamics too
         from rbi.core.dynamics import newton_euler_about
+
+        # not at top level: `rbi check` would load rbi.runs.values too
         from rbi.runs.values import vector_value
 
         if (alpha is None) == (force is None and torque is None):
@@ -636,8 +657,8 @@ class Body(TableRepr):
             diagonal: MJCF only: principal moments (``diaginertia``) and the principal frame
                 (``quat``) instead of ``fullinertia``.
         """
-        from pathlib import Path
 
+        # not at top level: `rbi inertia` would load rbi.formats.inertial_xml too
         from rbi.formats.inertial_xml import FORMATS, export_xml
 
         if to not in FORMATS:
@@ -683,7 +704,6 @@ class Body(TableRepr):
 def _rotation(axes: Any) -> np.ndarray:
     """A body → world rotation matrix from ``axes`` (see `Body.inertia`): a (3, 3) rotation
     matrix, or (axis, degrees) pairs applied in order about world axes."""
-    from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, compose_world_rotations
 
     if isinstance(axes, str):
         raise ArgumentError("axes", f"expected a 3x3 rotation matrix or (axis, degrees) pairs, got {axes!r}")
@@ -771,6 +791,7 @@ class Trajectory(TableRepr):
     def to_csv(self) -> str:
         """The trajectory as the CSV ``rbi simulate --out`` writes (columns t, qw, qx, qy, qz, wx,
         wy, wz, tilt_deg, precession_deg, energy; full precision)."""
+        # not at top level: `rbi inertia` would load rbi.runs.run too
         from rbi.runs.run import trajectory_csv
 
         return trajectory_csv(self.columns())
@@ -861,6 +882,7 @@ def simulate(
             (``duration: must be ...``), or the run is estimated to exceed ``max_steps``.
         SpecError: the run cannot be made (no mass, too many steps, overflow).
     """
+    # not at top level: `rbi inertia` would load rbi.runs.run too
     from rbi.runs.run import check_samples, prepare_run
 
     check_samples(samples)
@@ -979,6 +1001,7 @@ class SweepTable(TableRepr):
     def to_pandas(self) -> Any:
         """The table as a :class:`pandas.DataFrame` (needs pandas: ``pip install pandas``)."""
         try:
+            # pandas: not a dependency of rbi, imported only when present
             import pandas
         except ImportError:
             raise ImportError(
@@ -1055,6 +1078,7 @@ def sweep(
         ValueError, TypeError: a setting or a variation is invalid (named as this function's
             parameter), or the sweep has more than 100,000 runs and no ``out``.
     """
+    # not at top level: `rbi inertia` would load rbi.sweeps.study too
     from rbi.sweeps.study import Study, SweepSettings, check_settings
 
     grid = (spin, tilt_deg, _variations(vary), runs, seed, duration, samples, rtol, gravity, tilt_axis)
@@ -1077,6 +1101,7 @@ def _spec_source(body: Any) -> tuple[str, Any]:
     """`sweep`'s ``body`` as (path, parsed spec): a `Body`'s, or a spec file read (a sweep
     validates each varied spec, not the file as it stands)."""
     if isinstance(body, (str, os.PathLike)):
+        # not at top level: `rbi audit` would load rbi.spec.load too
         from rbi.spec.load import read_yaml
 
         path = os.fsdecode(os.fspath(body))
@@ -1128,6 +1153,7 @@ def audit(
         SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
             read, or repeats a link name; ``out`` cannot be written.
     """
+    # not at top level: `rbi inertia` would load rbi.robot.audit too
     from rbi.robot import audit as run_audit
 
     if out is not None and not fix:
@@ -1171,6 +1197,7 @@ def import_step(
         SpecError: the file cannot be read, is not STEP, holds no closed solid, or OpenCascade
             is missing; a bad ``density`` or ``material``.
     """
+    # not at top level: `rbi inertia` would load rbi.spec.from_step too
     from rbi.spec.from_step import import_step as run_import
 
     return run_import(path, density=density, material=material, relative_to=relative_to)
@@ -1221,6 +1248,7 @@ class RobotImport:
     def robot_yaml(self) -> str:
         """The whole robot as one spec (YAML text under a comment header): one custom part per
         link with mass, placed at the zero configuration (MJCF: ``qpos0``), SI units."""
+        # not at top level: `rbi inertia` would load rbi.robot.specs and rbi.spec.yaml_writer too
         from rbi.robot.specs import robot_spec
         from rbi.spec.yaml_writer import comment, dump
 
@@ -1260,6 +1288,7 @@ def import_robot(
         SpecError: the file cannot be read or is malformed; no link has mass properties.
         ValueError: a name in ``links`` names no link with an ``<inertial>``.
     """
+    # not at top level: `rbi inertia` would load rbi.formats.robot_files and rbi.formats.robot_paths too
     from rbi.formats.robot_files import link_problems, read_robot
     from rbi.formats.robot_paths import parse_package_paths
 
@@ -1301,6 +1330,7 @@ def _link_yaml(robot: Any, link: Any) -> str:
     """One link's spec: a comment header, then the spec written by the YAML dumper. Names from
     the file are data: escaped in the comment, quoted and escaped by the dumper where they hold
     anything but visible characters (:mod:`rbi.spec.yaml_writer`)."""
+    # not at top level: `rbi inertia` would load rbi.formats.robot_files and rbi.spec.yaml_writer too
     from rbi.formats.robot_files import link_spec
     from rbi.spec.yaml_writer import comment, dump
 
@@ -1320,8 +1350,6 @@ def _chosen_links(robot: Any, names: list[str]) -> list[Any]:
     by_name = {each.name: each for each in robot.inertial_links}
     missing = [name for name in names if name not in by_name]
     if missing:
-        import difflib
-
         hint = difflib.get_close_matches(missing[0], [n for n in by_name if n], n=1)
         raise ArgumentError(
             "links",
@@ -1397,6 +1425,8 @@ def animate(
             motion needs more keyframes (or GIF frames) than a file may hold.
         SpecError: ``path`` cannot be written; the run cannot be made."""
     from rbi.runs.animation import write_animation  # the integrator loads only to simulate
+
+    # not at top level: `rbi inertia` would load rbi.runs.run too
     from rbi.runs.run import prepare_run
 
     target = _output(path, ("html", "gif"), body.path)
@@ -1408,22 +1438,27 @@ def animate(
 def __getattr__(name: str) -> Any:
     # imported on first use: `rbi inertia` loads neither the audit's modules nor the sweep's
     if name == "AuditReport":
+        # not at top level: `rbi inertia` would load rbi.robot.audit too
         from rbi.robot.audit import AuditReport
 
         return AuditReport
     if name in ("Grid", "Normal", "Uniform"):
+        # not at top level: `rbi inertia` would load rbi.sweeps.plan too
         from rbi.sweeps import plan
 
         return getattr(plan, name)
     if name == "DEFAULT_MAX_STEPS":  # most integration steps of a run unless max_steps says otherwise
+        # not at top level: `rbi inertia` would load rbi.sim.budget too
         from rbi.sim.budget import DEFAULT_MAX_STEPS
 
         return DEFAULT_MAX_STEPS
     if name == "MAX_ROWS_SHOWN":  # most runs a sweep holds in memory (more: in its out file only)
+        # looked up per call: tests replace it
         from rbi.sweeps.study import MAX_ROWS_SHOWN
 
         return MAX_ROWS_SHOWN
     if name == "available_cores":  # the cores this process may use: sweep's default workers
+        # looked up per call: tests replace it
         from rbi.sweeps.execute import available_cores
 
         return available_cores

@@ -22,6 +22,7 @@ QUANTITY_COLUMNS = ("quantity", "unit", "value")
 def rich_table(title: str, rows: Sequence[Sequence[str]], columns: Sequence[str] = QUANTITY_COLUMNS) -> Any:
     """A :class:`rich.table.Table` of text cells; the last column of a summary (its values) and
     every column after the first of other tables are right-aligned."""
+    # not at top level: `rbi inertia --format json` would load rich.table and rich.text too
     from rich.table import Table
     from rich.text import Text
 

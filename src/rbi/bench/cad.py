@@ -12,13 +12,20 @@ needs some 10 s to mesh the plate at 10⁵.
 from __future__ import annotations
 
 import math
+import statistics
 import tempfile
+import time
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
 from rbi.core.inertia import parallel_axis, parallel_axis_to_com
+from rbi.formats import mesh_file, step
+from rbi.formats.step import _ocp, _quiet, step_triangles
+from rbi.spec.load import load_body
+from rbi.spec.materials import density_in_units
+from rbi.spec.volumes import part_volume
 
 Progress = Callable[[str], None]
 
@@ -64,6 +71,7 @@ def closed_form() -> tuple[float, np.ndarray, np.ndarray]:
 
 def write_plate_step(path: Path) -> None:
     """The plate as a STEP file in millimetres, built and written by OpenCascade."""
+    # OCP: optional (the 'cad' extra), imported only when used
     from OCP.BRep import BRep_Builder
     from OCP.BRepAlgoAPI import BRepAlgoAPI_Cut
     from OCP.BRepPrimAPI import BRepPrimAPI_MakeBox, BRepPrimAPI_MakeCylinder
@@ -71,8 +79,6 @@ def write_plate_step(path: Path) -> None:
     from OCP.Interface import Interface_Static
     from OCP.STEPControl import STEPControl_AsIs, STEPControl_Writer
     from OCP.TopoDS import TopoDS_Compound
-
-    from rbi.formats.step import _ocp, _quiet
 
     _ocp()  # OpenCascade's console messages off
     a, b, c = PLATE_MM
@@ -110,7 +116,6 @@ def write_binary_stl(path: Path, vertices: np.ndarray, faces: np.ndarray) -> Non
 
 def _errors(props, volume_mm3: float, closed) -> dict:
     """Relative errors of a loaded body (mm, g) against the closed form at steel's density."""
-    from rbi.spec.materials import density_in_units
 
     density = density_in_units(DENSITY, "mm", "g")
     volume, com, inertia = closed
@@ -125,11 +130,6 @@ def _errors(props, volume_mm3: float, closed) -> dict:
 
 def _load_cold(spec: Path, repeats: int) -> tuple[float, object]:
     """Median seconds of the whole load of ``spec`` with the file caches emptied first."""
-    import statistics
-    import time
-
-    from rbi.formats import mesh_file, step
-    from rbi.spec.load import load_body
 
     times, body = [], None
     for _ in range(repeats):
@@ -142,7 +142,6 @@ def _load_cold(spec: Path, repeats: int) -> tuple[float, object]:
 
 
 def _row(kind: str, path: Path, spec: Path, repeats: int, closed, extra: dict) -> dict:
-    from rbi.spec.volumes import part_volume
 
     seconds, body = _load_cold(spec, repeats)
     part = body.spec.parts[0]
@@ -159,7 +158,6 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         import OCP  # noqa: F401
     except ImportError:
         return {"error": "needs OpenCascade: pip install 'rbi[cad]'", "files": []}
-    from rbi.formats.step import step_triangles
 
     closed = closed_form()
     repeats = 1 if quick else 3

@@ -22,6 +22,7 @@ import numpy as np
 
 from rbi.bench import workprecision
 from rbi.bench.timing import measure
+from rbi.sim._dop853 import integrate_minimal
 from rbi.sim.api import DEFAULT_RTOL, sample_times, simulate
 from rbi.sim.compiled import integrator
 
@@ -41,7 +42,6 @@ def _median_seconds(call: Callable[[], object], min_seconds: float) -> float:
 def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: float):
     """``(call, result)``: a no-argument call of the minimal loop on arrays prepared once (as a
     hand-written program would hold them), and where it writes ``(y, out)``."""
-    from rbi.sim._dop853 import integrate_minimal
 
     t = sample_times(duration, samples)
     q0 = np.asarray(q0, dtype=float)

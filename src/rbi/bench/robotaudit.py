@@ -12,6 +12,8 @@ import tempfile
 import time
 from collections.abc import Callable
 
+from rbi.robot import audit
+
 Progress = Callable[[str], None]
 
 TARGET_S = 5.0
@@ -45,7 +47,6 @@ def urdf_text(n: int) -> str:
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    from rbi.robot import audit
 
     n = links(quick)
     progress(f"robot audit: {n:,} links")

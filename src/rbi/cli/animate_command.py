@@ -6,8 +6,11 @@ from typing import Annotated
 
 import typer
 
+from rbi import api
 from rbi.cli.extras import require_matplotlib
+from rbi.cli.option_values import run_settings
 from rbi.cli.options import SpecFile
+from rbi.cli.output import output_target
 from rbi.cli.render import progress_bar, say_warnings
 from rbi.cli.run_options import (
     DurationOption,
@@ -66,9 +69,6 @@ def animate(
       rbi animate top_bolted.yaml --spin 200 --out top.html
       rbi animate top_bolted.yaml --spin 200 --duration 2 --out top.gif
     """
-    from rbi import api
-    from rbi.cli.option_values import run_settings
-    from rbi.cli.output import output_target
 
     settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
     settings |= dict(duration=duration, rtol=rtol, max_steps=max_steps, speed=speed, fps=fps)

@@ -13,6 +13,7 @@ from typer._click.exceptions import UsageError
 
 from rbi import SpecError, outside_paths_allowed
 from rbi.cli import completion, terminal
+from rbi.cli.option_values import error_line
 from rbi.cli.suggest import usage_message
 from rbi.cli.terminal import Terminated, say
 from rbi.cli.typer_app import COMMANDS, app
@@ -64,8 +65,6 @@ def _run() -> None:
             completion.enable()  # answers the shell's completion script (only when it is the caller)
             status = app(args=args or ["--help"], prog_name="rbi", standalone_mode=False)
     except SpecError as exc:
-        from rbi.cli.option_values import error_line
-
         say(error_line(exc))
         sys.exit(2)
     except UsageError as exc:

@@ -8,9 +8,11 @@ Exit 0 when no link has an error-level flag, 1 when one has (so it gates CI like
 
 from __future__ import annotations
 
+import os
 import sys
 from typing import Annotated
 
+import numpy as np
 import typer
 
 from rbi.api import SpecError
@@ -141,8 +143,8 @@ def audit(
 def _fix_target(file: str, fix: bool, out: str | None):
     """The --out target, checked before the audit runs (it needs --fix and the robot file's
     extension), or None."""
-    import os
 
+    # not at top level: `rbi import` would load rbi.cli.output too
     from rbi.cli.output import output_target
 
     if out is None:
@@ -168,12 +170,14 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
             "changes": [{"link": c.link, "reason": c.reason} for c in report.fix.changes],
             "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable],
         }
+    # not at top level: `rbi import` would load rbi.cli.render too
     from rbi.cli.render import emit
 
     emit(format.value, result, lambda: None, csv_rows=[_csv_row(each) for each in report.links])
 
 
 def _csv_row(each) -> dict:
+    # not at top level: `rbi import` would load rbi.cli.render too
     from rbi.cli.render import terminal_safe
 
     declared, geo = each.declared, each.geometry
@@ -191,9 +195,11 @@ def _csv_row(each) -> dict:
 
 
 def _table(report) -> None:
-    import numpy as np
 
+    # not at top level: `rbi import` would load rbi.cli.render too
     from rbi.cli.render import number, print_table, terminal_safe
+
+    # not at top level: `rbi audit --format json` would load rbi.cli.tables too
     from rbi.cli.tables import titled
 
     word = report.model.link_word
@@ -246,7 +252,10 @@ def _joints_table(report) -> None:
     """Each joint's holding torque against gravity, its declared effort limit and the margin."""
     if not report.joints:
         return
+    # not at top level: `rbi import` would load rbi.cli.render too
     from rbi.cli.render import number, print_table, terminal_safe, without_noise
+
+    # not at top level: `rbi audit --format json` would load rbi.cli.tables too
     from rbi.cli.tables import plain_text, titled
 
     table = titled("joints: torque that holds the pose (N·m; N for prismatic)")
@@ -273,6 +282,7 @@ def _fix_text(report, file: str, out: str | None) -> None:
     plan = report.fix
     if out is None:
         diff = plan.diff(file)
+        # not at top level: `rbi import` would load rbi.cli.render too
         from rbi.cli.render import terminal_safe
 
         sys.stdout.write(terminal_safe(diff, keep="\n") if diff else "")

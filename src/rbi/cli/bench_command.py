@@ -3,15 +3,26 @@
 from __future__ import annotations
 
 import contextlib
+import os
 import sys
 from pathlib import Path
 from typing import Annotated
 
 import typer
+from rich import box
+from rich.console import Group
+from rich.table import Table
+from rich.text import Text
 
 from rbi.api import SpecError
+from rbi.bench import report, suite
+from rbi.bench.paths import bodies_folder
+from rbi.bench.report import sections
 from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.output import check_distinct, output_target, write_output
+from rbi.cli.render import emit, progress_bar
+from rbi.cli.tables import unit_header
 
 SECTION_NAMES = (
     "kernel",
@@ -76,13 +87,10 @@ def bench(
       rbi bench --quick
       rbi bench --write-docs docs/performance.md --plot docs/performance-workprecision.png
     """
-    from rbi.bench import report, suite
-    from rbi.cli.render import emit
 
     sections = _sections(only)
     if plot and "workprecision" not in sections:
         raise SpecError("--plot: needs the workprecision section (drop --only or include it)")
-    from rbi.cli.output import check_distinct, output_target, write_output
 
     plot_target = output_target(plot, "--plot", ("png", "svg", "pdf")) if plot is not None else None
     docs_target = output_target(write_docs, "--write-docs", ("md",)) if write_docs is not None else None
@@ -90,7 +98,6 @@ def bench(
     if plot:
         require_matplotlib()
     command = _command_line(quick, only, plot, write_docs)
-    from rbi.bench.paths import bodies_folder
 
     try:
         bodies_folder()
@@ -142,7 +149,6 @@ def _command_line(quick: bool, only: str | None, plot: str | None, write_docs: s
 
 
 def _relative_link(target: Path, document: Path) -> str:
-    import os
 
     return os.path.relpath(target.resolve(), document.resolve().parent)
 
@@ -151,7 +157,6 @@ def _relative_link(target: Path, document: Path) -> str:
 def _progress(format: OutputFormat, total: int):
     """A step callback: the progress bar on a terminal (table output only), else silent; each
     step names the measurement it starts."""
-    from rbi.cli.render import progress_bar
 
     bar = progress_bar("rbi bench", "", total=total, elapsed=True) if format == OutputFormat.table else None
     if bar is None:
@@ -171,13 +176,6 @@ def _progress(format: OutputFormat, total: int):
 
 def _tables(result: dict):
     """The report's blocks (:func:`rbi.bench.report.sections`) as rich tables and text."""
-    from rich import box
-    from rich.console import Group
-    from rich.table import Table
-    from rich.text import Text
-
-    from rbi.bench.report import sections
-    from rbi.cli.tables import unit_header
 
     parts = []
     for section in sections(result):

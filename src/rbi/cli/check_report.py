@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from rich.markup import escape
+
 from rbi.cli import tables
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.mass_reports import load_body
@@ -97,7 +99,6 @@ def _csv_rows(checks) -> list[dict[str, Any]]:
 
 
 def _table(body, checks, failed: int):
-    from rich.markup import escape
 
     verdict = "all expectations hold" if not failed else f"{failed} of {len(checks)} expectations FAIL"
     t = tables.titled(f"{body.name or body.path} — check: {verdict}")

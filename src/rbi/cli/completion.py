@@ -18,6 +18,9 @@ import os
 import sys
 from pathlib import Path
 
+import typer
+from typer.completion import completion_init, get_completion_script
+
 from rbi import SpecError
 
 PROG = "rbi"
@@ -30,8 +33,6 @@ def enable() -> None:
     """Let the completion script's calls (``_RBI_COMPLETE`` set) be answered: register typer's
     bash and zsh completion classes. Costs nothing on an ordinary run."""
     if os.environ.get(COMPLETE_VAR):
-        from typer.completion import completion_init
-
         completion_init()
 
 
@@ -49,7 +50,6 @@ def shell_name() -> str:
 
 def script(shell: str) -> str:
     """The completion script for ``shell``."""
-    from typer.completion import get_completion_script
 
     return get_completion_script(prog_name=PROG, complete_var=COMPLETE_VAR, shell=shell) + "\n"
 
@@ -89,8 +89,6 @@ def _write(target: Path, text: str) -> None:
 def install_option(value: bool) -> None:
     """``rbi --install-completion``: install for ``$SHELL`` and say where."""
     if value:
-        import typer
-
         shell = shell_name()
         target, rc = install(shell)
         print(
@@ -103,7 +101,5 @@ def install_option(value: bool) -> None:
 def show_option(value: bool) -> None:
     """``rbi --show-completion``: print the script for ``$SHELL`` (to install by hand)."""
     if value:
-        import typer
-
         sys.stdout.write(script(shell_name()))
         raise typer.Exit()

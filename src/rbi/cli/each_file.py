@@ -21,6 +21,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from rbi.api import SpecError
+from rbi.cli.option_values import error_line
 from rbi.cli.render import (
     emit,
     fitted,
@@ -90,8 +91,6 @@ class _Several:
                 one = report(file)
                 refuse_non_finite(one.result, file_label(file))
             except SpecError as exc:
-                from rbi.cli.option_values import error_line
-
                 sys.stdout.flush()  # what earlier files printed comes before this file's error line
                 say(error_line(exc))
                 bad = True

@@ -7,12 +7,13 @@ from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
+import numpy as np
 import typer
 
 from rbi.api import SpecError
 from rbi.cli.mass_reports import load_body
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import emit, to_csv
+from rbi.cli.render import emit, say_warnings, to_csv
 
 
 class ExportTarget(str, Enum):
@@ -79,8 +80,6 @@ def export(
         "xml": xml,
     }
     if format is not OutputFormat.json:
-        from rbi.cli.render import say_warnings
-
         say_warnings(source.warnings)
     if format is OutputFormat.table:
         sys.stdout.write(xml)
@@ -91,7 +90,6 @@ def export(
 
 
 def _warn_if_singular(inertia) -> None:
-    import numpy as np
 
     moments = np.linalg.eigvalsh(np.asarray(inertia, dtype=float))
     if moments[0] <= 1e-12 * max(moments[-1], 0.0):

@@ -3,12 +3,14 @@ the solids of a STEP file as one spec (one ``shape: step`` part each)."""
 
 from __future__ import annotations
 
+import os
 import re
 import sys
 from typing import Annotated
 
 import typer
 
+from rbi import api
 from rbi.api import SpecError, import_step
 from rbi.cli.audit_command import PackagePathOption
 from rbi.cli.options import FormatOption, OutputFormat
@@ -87,17 +89,14 @@ def import_robot(
         _import_step(file, link, out, format, density, material)
         return
     if density is not None or material is not None:
-        from rbi.api import SpecError
-
         raise SpecError(f"{'--density' if density is not None else '--material'}: applies to STEP files only")
     _import_robot(file, link, out, format, package_path)
 
 
 def _import_robot(file: str, link, out: str | None, format: OutputFormat, package_path) -> None:
     """`rbi import ROBOT_FILE`: each link's spec, printed or written, or the listing."""
-    from rbi.api import import_robot
 
-    robot = import_robot(file, links=link, package_paths=package_path)
+    robot = api.import_robot(file, links=link, package_paths=package_path)
     targets = _targets(robot, out, file) if out is not None else None
     if not link:
         for label, reason in robot.skipped:
@@ -106,6 +105,7 @@ def _import_robot(file: str, link, out: str | None, format: OutputFormat, packag
         for line in each.problems:
             say(f"warning: {line}")
     if targets is not None:
+        # not at top level: `rbi import` would load rbi.cli.output too
         from rbi.cli.output import write_output
 
         for target, each in targets:
@@ -125,7 +125,6 @@ def _import_robot(file: str, link, out: str | None, format: OutputFormat, packag
 def _import_step(file: str, link, out: str | None, format: OutputFormat, density, material) -> None:
     """`rbi import FILE.step`: the spec (YAML, printed or written to --out FILE.yaml), or with
     --format json/csv the solids and their mass properties at the density given."""
-    import os
 
     if link:
         raise SpecError(
@@ -133,6 +132,7 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
         )
     target = None
     if out is not None:
+        # not at top level: `rbi import` would load rbi.cli.output too
         from rbi.cli.output import output_target
 
         target = output_target(out, "--out", ("yaml", "yml"), inputs=[file])
@@ -146,6 +146,7 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
     if format is not OutputFormat.table:
         _emit_step_listing(format, file, imported)
     if target is not None:
+        # not at top level: `rbi import` would load rbi.cli.output too
         from rbi.cli.output import write_output
 
         write_output(target, imported.yaml())
@@ -155,6 +156,7 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
 
 def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
     """The solids with their mass properties at the spec's density, SI."""
+    # not at top level: `rbi import` would load rbi.cli.render too
     from rbi.cli.render import emit
 
     density = imported.density
@@ -184,8 +186,8 @@ def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
 
 def _targets(robot, out: str, source: str):
     """(checked output target, link) pairs, all checked before anything is written."""
-    import os
 
+    # not at top level: `rbi import` would load rbi.cli.output too
     from rbi.cli.output import check_distinct, output_target
 
     links = robot.links
@@ -226,6 +228,7 @@ def _file_names(links, word: str) -> list[str]:
 
 
 def _emit_listing(format: OutputFormat, robot, targets) -> None:
+    # not at top level: `rbi import` would load rbi.cli.render too
     from rbi.cli.render import emit
 
     written = {id(each): target.given for target, each in targets or []}

@@ -153,6 +153,7 @@ def momentum(
 
 def _momentum_table(body, result: dict, about_label: str):
     """The table of ``rbi momentum``'s result."""
+    # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
     from rbi.cli import tables
 
     labels = body.unit_labels

@@ -8,6 +8,8 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 
+import numpy as np
+
 from rbi import api
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.option_values import in_output_units, parse_about, parse_rotation, parse_vector
@@ -44,7 +46,6 @@ def header(body: api.Body, about_label: str, about_point) -> dict:
 def with_product_sign(inertia, sign: str):
     """The inertia matrix with its off-diagonal entries in convention ``sign`` (see
     :data:`PRODUCT_SIGNS`); the moments on the diagonal never change."""
-    import numpy as np
 
     shown = np.array(inertia, dtype=float)
     if sign == "tensor":
@@ -59,6 +60,7 @@ def with_product_sign(inertia, sign: str):
 def place_rows(body: api.Body, about_label: str, point) -> list[tuple[str, str, str]]:
     """The rows every mass-properties table starts with: the mass, the centre of mass and the
     ``--about`` point (a coordinate below 1e-12 of the body's size printed 0)."""
+    # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
     from rbi.cli import tables
 
     labels, size = body.unit_labels, body_size(body)
@@ -94,7 +96,6 @@ def inertia(
 
 
 def _inertia_of(file: str, about: str, turns, direction, products: str, units: str | None):
-    import numpy as np
 
     body = load_body(file)
     about_label, point = parse_about(about, body)
@@ -111,6 +112,7 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
         result |= {"axis": direction, "moment_about_axis": body.moment_about_axis(direction, point, axes)}
 
     def table():
+        # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
         from rbi.cli import tables
 
         labels = body.unit_labels
@@ -150,6 +152,7 @@ def _principal_of(file: str, about: str, units: str | None):
     result = header(body, about_label, point) | {"moments": moments, "axes": axes, "radii_of_gyration": radii}
 
     def table():
+        # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
         from rbi.cli import tables
 
         labels = body.unit_labels

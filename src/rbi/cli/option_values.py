@@ -84,6 +84,7 @@ def sweep_values(text: str, option: str) -> Any:
     """A sweep axis as ``rbi.sweep`` takes it: ``START:STOP:COUNT`` → ``Grid``, one number,
     ``normal(MEAN,SD)`` → ``Normal``, ``uniform(LOW,HIGH)`` → ``Uniform``; :class:`SpecError`
     naming ``option`` otherwise."""
+    # not at top level: `rbi --help` would load rbi.api too
     from rbi.api import Grid, Normal, Uniform
 
     text = str(text)
@@ -145,6 +146,7 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
 
 def parse_rotation(text: str) -> tuple[str, float]:
     """``"y:30"`` -> ``("y", 30.0)``: a turn as `rbi.Body.inertia`'s ``axes`` takes it."""
+    # not at top level: `rbi --help` would load rbi.api too
     from rbi.api import LARGEST_ANGLE_DEG
 
     axis, sep, angle = text.partition(":")
@@ -165,6 +167,7 @@ def parse_rotation(text: str) -> tuple[str, float]:
 
 def parse_units(text: str) -> tuple[str, str]:
     """``--units``: ``SI`` (m, kg) or ``LENGTH,MASS`` such as ``mm,g`` -> (length, mass)."""
+    # not at top level: `rbi --help` would load rbi.api too
     from rbi.api import LENGTH_UNITS, MASS_UNITS
 
     key = text.strip()
@@ -185,6 +188,7 @@ def in_output_units(body, units: str | None, *lengths):
     or velocities in the file's length unit, or None) scaled alongside."""
     if units is None:
         return body, lengths
+    # not at top level: `rbi --help` would load rbi.api too
     from rbi.api import LENGTH_UNITS
 
     length, mass = parse_units(units)

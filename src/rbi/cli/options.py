@@ -7,6 +7,7 @@ from enum import Enum
 from typing import Annotated
 
 import typer
+from typer.core import TyperArgument
 
 from rbi.cli.option_values import (  # noqa: F401  (re-exported: the commands parse their values with them)
     in_output_units,
@@ -72,7 +73,6 @@ UnitsOption = Annotated[
 def plain_argument_help(command) -> None:
     """Show ``command``'s positional arguments by their metavar alone: ``rbi inertia
     [OPTIONS] FILE`` rather than ``{FILE}`` in the usage line and ``FILE <str>`` in the list."""
-    from typer.core import TyperArgument
 
     for param in command.params:
         if isinstance(param, TyperArgument) and param.metavar is not None:
@@ -80,7 +80,6 @@ def plain_argument_help(command) -> None:
 
 
 def _plain_argument_class():
-    from typer.core import TyperArgument
 
     class PlainArgument(TyperArgument):
         def _usage_display_name(self) -> str:

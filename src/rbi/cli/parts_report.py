@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from rich.text import Text
+
 from rbi.api import LENGTH_UNITS, MASS_UNITS
 from rbi.cli import tables
 from rbi.cli.each_file import FileReport, report_each
@@ -157,7 +159,6 @@ def _places_table(body, rows, names: list, length: str, title: str):
 def _titled_table(title: str, names: list, headers, cells, total_row):
     """Numbers never wrap (a column of them is as wide as its widest number); part names
     and shapes wrap in a narrow terminal."""
-    from rich.text import Text
 
     t = tables.titled(title)
     t.add_column("part", overflow="fold")

@@ -156,6 +156,8 @@ def _safe_console(**options):
     line of defence behind :func:`rbi.cli.tables.plain_text` (rich's own colour and cursor codes
     are styles and control segments, not text, and pass unchanged)."""
     from rich.console import Console  # rich only when something is drawn: JSON never loads it (~25 ms)
+
+    # not at top level: `rbi inertia --format json` would load rich.segment too
     from rich.segment import Segment
 
     class SafeConsole(Console):
@@ -284,6 +286,7 @@ class ProgressBar:
         self.update(min(max(fraction, 0.0), 1.0), 1.0)
 
     def _draw(self) -> None:
+        # not at top level: `rbi inertia` would load rich.progress too
         from rich.progress import (
             BarColumn,
             MofNCompleteColumn,
@@ -330,6 +333,7 @@ def fitted(renderable, console):
     wraps as text, not squeezed to the table's width), and a table wider than the terminal is
     printed stacked instead (:func:`stacked`). Groups are fitted part by part; anything else
     passes unchanged."""
+    # not at top level: `rbi inertia --format json` would load rich.console and rich.table too
     from rich.console import Group
     from rich.table import Table
 
@@ -348,6 +352,7 @@ def _cells_intact(table, console) -> bool:
     """Whether ``table`` at ``console``'s width shows every cell whole on one line (headers may
     wrap between words, never inside one: a path like ``parts.stem.radius`` stays whole; a
     cell folded, wrapped or shortened to ``…`` is not whole)."""
+    # not at top level: `rbi inertia --format json` would load rich.text too
     from rich.text import Text
 
     lines = [
@@ -374,6 +379,7 @@ def _cells_intact(table, console) -> bool:
 
 
 def _line(text):
+    # not at top level: `rbi inertia --format json` would load rich.text too
     from rich.text import Text
 
     return text if isinstance(text, Text) else Text.from_markup(text) if isinstance(text, str) else text
@@ -381,6 +387,7 @@ def _line(text):
 
 def _plain(cell) -> str:
     """A cell or header as the text it shows (markup read, lines joined by a space)."""
+    # not at top level: `rbi inertia --format json` would load rich.text too
     from rich.text import Text
 
     if isinstance(cell, Text):
@@ -399,6 +406,7 @@ def stacked(table, width: int):
     on the left and the value on the right, or the value on the next line when both do not fit
     on one. Any other table gives, per row, its first cell as a heading and then one line
     ``header: value`` for each other column. Values are never wrapped."""
+    # not at top level: `rbi inertia --format json` would load rich.console, rich.padding and rich.text too
     from rich.console import Group
     from rich.padding import Padding
     from rich.text import Text

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import sys
 from typing import Annotated
 
@@ -23,7 +24,6 @@ def schema(format: FormatOption = OutputFormat.table) -> None:
       # then, first line of a spec, for YAML language servers:
       # yaml-language-server: $schema=rbi-spec.schema.json
     """
-    import json
 
     if format is OutputFormat.csv:
         raise SpecError("--format csv: the schema is a JSON document; use --format table (indented) or json")

@@ -6,8 +6,11 @@ from typing import Annotated
 
 import typer
 
+from rbi import api
 from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import SpecFile
+from rbi.cli.output import output_target
+from rbi.cli.render import say_warnings
 
 OutOption = Annotated[
     str,
@@ -35,9 +38,6 @@ def show(
       rbi show bodies/wheel_with_holes.yaml --out wheel.svg
       rbi show bodies/cubesat.yaml --out cubesat.html
     """
-    from rbi import api
-    from rbi.cli.output import output_target
-    from rbi.cli.render import say_warnings
 
     target = output_target(out, "--out", ("png", "svg", "html"), inputs=[file])
     if target.format != "html":

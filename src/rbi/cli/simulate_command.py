@@ -167,8 +167,10 @@ def _plot(target, body, run, settings: dict) -> None:
 
 
 def _table(body, result: dict):
+    # not at top level: `rbi simulate --format csv` would load rich.text too
     from rich.text import Text
 
+    # not at top level: `rbi simulate --format csv` would load rbi.cli.tables too
     from rbi.cli import tables
 
     return tables.stack(
@@ -180,6 +182,7 @@ def _table(body, result: dict):
 
 def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
     """(quantity, unit, value) rows of the motion: scene, method, final state, tilt, precession."""
+    # not at top level: `rbi simulate --format csv` would load rbi.cli.tables too
     from rbi.cli import tables
 
     final = result["final"]
@@ -210,6 +213,7 @@ def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
 def _accuracy_rows(body, result: dict) -> list[tuple[str, str, str]]:
     """(quantity, unit, value) rows of the run's accuracy (conserved quantities' drift, error
     estimate) and cost (steps, evaluations, time)."""
+    # not at top level: `rbi simulate --format csv` would load rbi.cli.tables too
     from rbi.cli import tables
 
     labels = body.unit_labels

@@ -5,6 +5,8 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterable
 
+from typer._click.exceptions import NoSuchOption
+
 
 def nearest(name: str, valid: Iterable[str]) -> str | None:
     """The valid name closest to ``name`` (difflib's ratio of at least 0.6), or None."""
@@ -21,7 +23,6 @@ def did_you_mean(name: str, valid: Iterable[str]) -> str:
 def usage_message(error) -> str:
     """The one-line message for a click usage error: an unknown option names the nearest of the
     command's own options (``no such option: --abuot (did you mean --about?)``)."""
-    from typer._click.exceptions import NoSuchOption
 
     if isinstance(error, NoSuchOption) and error.ctx is not None:
         options = [

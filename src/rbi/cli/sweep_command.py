@@ -7,6 +7,9 @@ import sys
 from typing import Annotated
 
 import typer
+from rich import box
+from rich.table import Table
+from rich.text import Text
 
 from rbi import api
 from rbi.api import DEFAULT_MAX_STEPS, SpecError
@@ -191,6 +194,7 @@ def _result(table, out: str | None, plot: str | None, plot_target) -> dict:
     """What `rbi sweep --format json` prints: name, units, count, columns and, when the rows
     were held, the runs as objects and how many failed; the files written, the mass-properties
     spread (--mass-properties). The map is drawn here."""
+    # looked up per call: tests replace it
     from rbi.api import MAX_ROWS_SHOWN
 
     result = dict(name=table.name, units=table.units, warnings=table.warnings, count=table.count)
@@ -231,6 +235,7 @@ def _targets(file: str, out: str | None, plot: str | None):
 def _workers(workers: int | None, dask: str | None) -> int | None:
     """The optional packages --dask needs; --workers above the cores this process may use is
     said, and the cores are used (a remote cluster has its own; past 1024 rbi.sweep refuses it)."""
+    # looked up per call: tests replace it
     from rbi.api import available_cores
 
     if dask is not None:
@@ -273,7 +278,6 @@ def _run(file: str, settings: dict, out: str | None, resume: bool):
 
 
 def _table(result, table, file):
-    from rich.text import Text
 
     notes = [f"{result['count']:,} runs"]
     if "failed" in result:
@@ -295,8 +299,6 @@ def _table(result, table, file):
 
 def _runs_table(result, columns, rows, file):
     """One row per run (the first and last 20 of more than 40), in rbi's table style."""
-    from rich import box
-    from rich.table import Table
 
     shown = rows if len(rows) <= 40 else rows[:20] + [None] + rows[-20:]
     table = Table(

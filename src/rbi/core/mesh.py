@@ -37,6 +37,9 @@ from typing import NamedTuple
 
 import numpy as np
 from numpy.typing import ArrayLike
+from scipy.sparse import coo_matrix
+from scipy.sparse.csgraph import connected_components
+from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from rbi.core.mass import MassProperties
 
@@ -182,7 +185,6 @@ def _near_groups(points: np.ndarray, rtol: float) -> np.ndarray | None:
     if not (np.isfinite(scale) and scale > 0):
         return None
     tol = rtol * scale * float(np.linalg.norm(span / scale))
-    from scipy.spatial import cKDTree
 
     tree = cKDTree(points, balanced_tree=False, compact_nodes=False)
     distance, neighbour = tree.query(points, k=NEAR_NEIGHBOURS + 2, distance_upper_bound=tol)
@@ -196,8 +198,6 @@ def _near_groups(points: np.ndarray, rtol: float) -> np.ndarray | None:
             f"more than {NEAR_NEIGHBOURS} distinct vertices lie within {tol:.3g} of one vertex "
             f"({rtol:g} of the mesh's size): a degenerate mesh, not rounding noise"
         )
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
 
     rows = np.nonzero(found)[0]
     cols = neighbour[found]
@@ -489,8 +489,6 @@ def _pieces_check(
 def _piece_of_face(n_vertices: int, faces: np.ndarray) -> np.ndarray:
     """For each face, the number of the piece (faces connected through shared vertices) it
     belongs to."""
-    from scipy.sparse import coo_matrix
-    from scipy.sparse.csgraph import connected_components
 
     rows = np.concatenate([faces[:, 0], faces[:, 1]])
     cols = np.concatenate([faces[:, 1], faces[:, 2]])
@@ -536,7 +534,6 @@ def _winding_numbers(corners: np.ndarray, points: np.ndarray) -> np.ndarray:
 def convex_hull_mesh(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """The convex hull of the points (scipy's Qhull) as a closed mesh wound outward: its
     corner points and faces. Raises :class:`MeshError` when the points span no volume."""
-    from scipy.spatial import ConvexHull, QhullError
 
     points = np.asarray(vertices, dtype=float).reshape(-1, 3)
     if len(points) < 4:
@@ -564,6 +561,7 @@ def repair_mesh(vertices: np.ndarray, faces: np.ndarray) -> RepairedMesh:
     """Close small holes (three or four boundary edges) with trimesh's ``fill_holes``, which
     winds each new triangle to match its neighbours. Larger holes are left open (the caller's
     checks report them). The vertices should be welded first."""
+    # not at top level: `rbi inertia (mesh part)` would load trimesh too
     import trimesh
 
     vertices, faces = _as_arrays(vertices, faces)

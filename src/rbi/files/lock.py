@@ -10,6 +10,7 @@ a stale lock (only an empty file, which the next run reuses).
 
 from __future__ import annotations
 
+import fcntl
 import os
 
 from rbi.errors import InputError
@@ -23,7 +24,6 @@ class OutputLock:
     SUFFIX = ".rbi-lock"
 
     def __init__(self, out: str | os.PathLike, what: str) -> None:
-        import fcntl
 
         self.path = safe.beside(out, self.SUFFIX)
         label = f"{what}: lock file {safe.shown(self.path.name)}"

@@ -18,7 +18,10 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import hashlib
 import os
+import re
+import shutil
 import stat
 import tempfile
 from collections.abc import Iterator
@@ -48,7 +51,6 @@ def shown(path: str | os.PathLike) -> str:
 def reason(exc: OSError) -> str:
     """Why an operation failed, in the system's words (``No space left on device``), also for
     the OSErrors of libraries that only put the errno in their message (pyarrow)."""
-    import re
 
     number = exc.errno
     if not number:
@@ -264,7 +266,6 @@ def make_private_folder(path: str | os.PathLike, what: str) -> None:
 def remove_private_folder(path: str | os.PathLike) -> None:
     """Remove a folder made by :func:`make_private_folder` and what is in it, never following a
     link inside it."""
-    import shutil
 
     if existing_private_folder(path, shown(path)):
         shutil.rmtree(path)
@@ -274,7 +275,6 @@ def beside(out: str | os.PathLike, suffix: str) -> Path:
     """The hidden file ``.NAME<suffix>`` in the folder of ``out`` (NAME: its file name). When
     that would pass the 255-byte limit of a file name, NAME is shortened to what fits and
     followed by ``~`` and 16 hex digits of its SHA-256, so each output keeps its own file."""
-    import hashlib
 
     out = Path(out)
     name = os.fsencode(out.name)

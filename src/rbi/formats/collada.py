@@ -24,6 +24,9 @@ import math
 
 import numpy as np
 
+from rbi.errors import InputError
+from rbi.formats.robot_xml import read_xml
+
 MAX_INSTANCES = 100_000
 """Most geometry instances placed by one scene (a node tree that instances itself is cut here)."""
 
@@ -31,8 +34,6 @@ MAX_INSTANCES = 100_000
 def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int | None = None):
     """(vertices (N, 3), faces (F, 3)) of every triangle the document's scene places, in
     metres (``<unit meter>`` applied), not welded. ``ValueError`` for a malformed document."""
-    from rbi.errors import InputError
-    from rbi.formats.robot_xml import read_xml
 
     try:
         root = read_xml(name, data).root

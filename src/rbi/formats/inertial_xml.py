@@ -13,6 +13,8 @@ import xml.etree.ElementTree as ET
 
 import numpy as np
 
+from rbi.core.inertia import principal_axes
+from rbi.core.rotation import matrix_to_quaternion
 from rbi.text import visible
 
 FORMATS = ("urdf", "mjcf", "sdf")
@@ -65,9 +67,6 @@ def mjcf_inertial(mass: float, com, inertia, diagonal: bool = False) -> ET.Eleme
     I = _symmetric(inertia)
     attributes = {"pos": _numbers(com), "mass": xml_number(mass)}
     if diagonal:
-        from rbi.core.inertia import principal_axes
-        from rbi.core.rotation import matrix_to_quaternion
-
         moments, axes = principal_axes(I)
         attributes["quat"] = _numbers(matrix_to_quaternion(axes.T))  # columns: principal axes in body axes
         attributes["diaginertia"] = _numbers(moments)

@@ -15,6 +15,7 @@ built: reading, welding and integrating one at that limit peaks near 1 GB.
 
 from __future__ import annotations
 
+import io
 import re
 from array import array
 from collections import OrderedDict
@@ -329,7 +330,6 @@ def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     """PLY through trimesh (its parser, without any processing), once the header's element
     counts are known to fit in the file: a hostile header cannot make it allocate more than
     the file could hold."""
-    import io
 
     if len(data) > MAX_PLY_BYTES:
         raise ValueError(
@@ -350,6 +350,7 @@ def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
             f"cannot be read as PLY (the header promises {counts.get('vertex', 0)} vertices and "
             f"{counts.get('face', 0)} faces, more than the file's {body} bytes after it hold)"
         )
+    # not at top level: `rbi inertia (mesh part)` would load trimesh too
     import trimesh
 
     try:
@@ -367,6 +368,7 @@ def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
 
 def _parse_dae(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     """Collada: every triangle its scene places, in metres (:mod:`rbi.formats.collada`)."""
+    # not at top level: `rbi inertia (mesh part)` would load rbi.formats.collada too
     from rbi.formats.collada import parse_collada
 
     vertices, faces = parse_collada(data, max_triangles=MAX_MESH_TRIANGLES)

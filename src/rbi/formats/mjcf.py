@@ -32,7 +32,9 @@ from pathlib import Path
 import numpy as np
 
 from rbi.core.mass import MassProperties
+from rbi.core.rotation import axis_angle_matrix, matrix_to_quaternion
 from rbi.errors import InputError
+from rbi.formats.paths import spec_relative_file
 from rbi.formats.robot import (
     Geom,
     Inertial,
@@ -52,6 +54,8 @@ from rbi.formats.robot import (
     short,
     unit,
 )
+from rbi.formats.robot_geometry import distribution
+from rbi.formats.robot_xml import read_xml
 
 MAX_INCLUDES = 100
 """Most ``<include>`` elements followed in one model (a loop of includes is refused before)."""
@@ -244,8 +248,6 @@ def _check_moving_bodies(model: RobotModel) -> None:
 
 def _expanded(document):
     """The root with every ``<include>`` replaced by the children of the included file's root."""
-    from rbi.formats.paths import spec_relative_file
-    from rbi.formats.robot_xml import read_xml
 
     count = [0]
 
@@ -320,7 +322,6 @@ def _where_line(element) -> str:
 
 
 def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dict]:
-    from rbi.formats.paths import spec_relative_file
 
     meshes = {}
     for asset in root.all("asset"):
@@ -411,13 +412,11 @@ class _Bodies:
             x, y, z, a = numbers(where, value, "axisangle", 4)
             axis = unit(where, [x, y, z], "axisangle: axis")
             angles(where, [self.compiler.angle(a)], "axisangle")
-            from rbi.core.rotation import axis_angle_matrix
 
             return axis_angle_matrix(axis, self.compiler.angle(a))
         if key == "euler":
             values = [self.compiler.angle(v) for v in numbers(where, value, "euler", 3)]
             angles(where, values, "euler")
-            from rbi.core.rotation import axis_angle_matrix
 
             R = np.eye(3)
             for letter, angle in zip(self.compiler.eulerseq, values):
@@ -472,8 +471,6 @@ class _Bodies:
         if rotation is not None and np.allclose(rotation, np.eye(3), rtol=0, atol=0):
             rotation, quaternion = None, None
         elif rotation is not None and quaternion is None:
-            from rbi.core.rotation import matrix_to_quaternion
-
             quaternion = matrix_to_quaternion(rotation)
         if full is not None:
             ixx, iyy, izz, ixy, ixz, iyz = numbers(where, full, "inertial: fullinertia", 6)
@@ -564,7 +561,6 @@ def _size(where: Where, size: list[float], needed: int, kind: str, fromto: bool 
 def z_to(direction) -> np.ndarray:
     """The rotation MuJoCo uses to turn z onto ``direction`` (a unit vector): about z × direction,
     the shortest turn; about x by half a turn when ``direction`` is −z."""
-    from rbi.core.rotation import axis_angle_matrix
 
     d = np.asarray(direction, dtype=float)
     axis = np.cross([0.0, 0.0, 1.0], d)
@@ -581,7 +577,6 @@ def z_to(direction) -> np.ndarray:
 
 
 def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
-    from rbi.formats.robot_geometry import distribution
 
     for link in model.links:
         explicit = link.inertial

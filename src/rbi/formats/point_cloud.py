@@ -17,11 +17,13 @@ one vectorised pass: it never becomes a Python list of per-point objects.
 from __future__ import annotations
 
 import os
+import re
 import stat
 import warnings
 from pathlib import Path
 
 import numpy as np
+from numpy.lib import format as npy
 
 from rbi.core.mass import MassProperties, combine
 from rbi.errors import InputError
@@ -76,7 +78,6 @@ def cloud_element(spec_path: str, file: str) -> MassProperties:
 def _read_npy(path: Path, label: str) -> np.ndarray:
     """The (N, 4) table of a ``.npy`` file, its header checked against the file's size before
     any array is allocated."""
-    from numpy.lib import format as npy
 
     not_npy = f"{label}: not a readable .npy array (expected a numeric array of shape (N, 4) with columns mass, x, y, z)"
     with open(path, "rb") as stream:
@@ -187,7 +188,6 @@ def _header(path: Path, label: str) -> tuple[list[str], int]:
 
 def _describe_parse_error(message: str, header_line: int) -> str:
     """numpy's loadtxt message turned into a file line and column, without the offending text."""
-    import re
 
     # numpy counts the rows after the header from 0 in conversion errors, from 1 in column errors.
     convert = re.search(r"could not convert string .* to float64 at row (\d+), column (\d+)", message)

@@ -36,6 +36,7 @@ import numpy as np
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats import robot_xml
+from rbi.formats.paths import _outside_allowed
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot import short as _short
 from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
@@ -62,7 +63,7 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
 
     path = str(path)
     if path.lower().endswith(".xacro"):
-        from rbi.formats.paths import _outside_allowed
+        # not at top level: `rbi audit` would load rbi.formats.xacro_sandbox too
         from rbi.formats.xacro_sandbox import expand_xacro
 
         expanded, includes = expand_xacro(path, _outside_allowed.get())
@@ -77,10 +78,13 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
             f"<{_short(document.root.tag)}>, expected <robot>, <sdf> or <mujoco>)"
         )
     if fmt == "urdf":
+        # not at top level: `rbi validate` would load rbi.formats.urdf too
         from rbi.formats.urdf import read_urdf as reader
     elif fmt == "sdf":
+        # not at top level: `rbi audit` would load rbi.formats.sdf too
         from rbi.formats.sdf import read_sdf as reader
     else:
+        # not at top level: `rbi audit` would load rbi.formats.mjcf too
         from rbi.formats.mjcf import read_mjcf as reader
     return reader(document, package_paths, geometry)
 

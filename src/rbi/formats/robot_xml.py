@@ -278,6 +278,7 @@ def _refuse_huge_tokens(path: str, text: bytes) -> None:
 
 def _parse(path: str, text: bytes) -> XmlElement:
     """The element tree of ``text`` (UTF-8); InputError for malformed or refused XML."""
+    # not at top level: `rbi validate` would load xml.parsers.expat too
     from xml.parsers import expat
 
     _refuse_huge_tokens(path, text)

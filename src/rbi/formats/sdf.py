@@ -47,6 +47,7 @@ from rbi.formats.robot import (
     short,
     unit,
 )
+from rbi.formats.robot_geometry import distribution
 from rbi.formats.robot_paths import resolve_mesh
 
 JOINT_KINDS = {
@@ -210,7 +211,6 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
     """``<inertial auto="true">`` (SDFormat 1.11): the mass properties of the link's collision
     geometry at each collision's ``<density>`` (default 1000 kg/m³), scaled to the inertial's
     ``<mass>`` when it gives one."""
-    from rbi.formats.robot_geometry import distribution
 
     pieces = []
     for geom in collisions:

@@ -26,7 +26,10 @@ Messages name what is wrong, never the file's content.
 from __future__ import annotations
 
 import contextlib
+import importlib
+import importlib.util
 import os
+import sys
 from collections import OrderedDict
 from pathlib import Path
 from types import SimpleNamespace
@@ -236,7 +239,6 @@ def require_cad() -> None:
     """:class:`CadExtraMissing` when OpenCascade (the extra ``cad``) is not installed: checked
     before anything else about a STEP part, so a user without it is told what to install, not
     what else is wrong (OpenCascade is looked up, not imported)."""
-    import importlib.util
 
     if importlib.util.find_spec("OCP") is None:
         raise CadExtraMissing(f"reading STEP files needs OpenCascade: {CAD_EXTRA_HINT}")
@@ -245,9 +247,9 @@ def require_cad() -> None:
 def _ocp() -> SimpleNamespace:
     """OpenCascade's names the reader uses, with its console messages switched off; raises
     :class:`CadExtraMissing` when the extra ``cad`` is not installed."""
-    import importlib
 
     try:
+        # OCP: optional (the 'cad' extra), imported only when used
         from OCP.Message import Message
     except ImportError:
         raise CadExtraMissing(f"reading STEP files needs OpenCascade: {CAD_EXTRA_HINT}") from None
@@ -269,7 +271,6 @@ def _ocp() -> SimpleNamespace:
 def _quiet():
     """Standard output and error sent to /dev/null at the file-descriptor level while
     OpenCascade runs: its STEP parser reports some problems with printf."""
-    import sys
 
     for stream in (sys.stdout, sys.stderr):
         with contextlib.suppress(Exception):
@@ -469,6 +470,7 @@ def _integrate(ocp, solid, unit_metres: float, index: int, name: str) -> tuple[M
 def _tessellate(solid, deflection: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
     """Triangles of one solid by BRepMesh (``deflection`` relative to each edge's size), in
     the file's unit, faces turned outwards."""
+    # OCP: optional (the 'cad' extra), imported only when used
     from OCP.BRep import BRep_Tool
     from OCP.BRepMesh import BRepMesh_IncrementalMesh
     from OCP.BRepTools import BRepTools

@@ -62,6 +62,7 @@ def audit(
         )
     report.fix = None
     if fix:
+        # not at top level: `rbi audit` would load rbi.robot.fix too
         from rbi.robot.fix import plan_fix
 
         report.fix = plan_fix(report, rho)

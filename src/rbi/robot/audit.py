@@ -256,6 +256,7 @@ def material_density(material: str | None, density: float | None) -> float | Non
             raise InputError(f"--density: {density!r}: must be a finite number greater than 0 (kg/m³)")
         return float(density)
     if material is not None:
+        # not at top level: `rbi audit` would load rbi.spec.materials too
         from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 
         name = canonical_name(material)
@@ -277,6 +278,7 @@ def audit_model(
     mesh_repair: bool = False,
 ) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
+    # not at top level: `rbi import` would load rbi.robot.statics too
     from rbi.robot.statics import joint_torques
 
     if geometry not in GEOMETRY_CHOICES:

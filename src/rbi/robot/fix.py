@@ -10,9 +10,14 @@ compiler fills from geoms, or that have no geometry, cannot be fixed; they are l
 
 from __future__ import annotations
 
+import difflib
+import os
 from dataclasses import dataclass, field
 
 from rbi.errors import InputError
+from rbi.files.safe import shown
+from rbi.formats.inertial_xml import inertial_text, xml_comment
+from rbi.formats.robot_xml import _tag_end
 from rbi.robot.audit import AuditReport, LinkAudit
 
 FIXED_CODES = ("unphysical", "placeholder", "mismatch", "massless")
@@ -40,7 +45,6 @@ class FixPlan:
 
     def diff(self, path: str, out: str | None = None) -> str:
         """A unified diff between the original file and the fixed copy."""
-        import difflib
 
         return "".join(
             difflib.unified_diff(
@@ -118,7 +122,6 @@ def _step(indent: str) -> str:
 def _change(
     report: AuditReport, each: LinkAudit, density: float | None, reason: str, text: bytes
 ) -> Change | None:
-    from rbi.formats.inertial_xml import inertial_text, xml_comment
 
     geo = each.geometry
     inertial = each.link.inertial
@@ -160,7 +163,6 @@ def _change(
 
 def _after_start_tag(text: bytes, element) -> int | None:
     """Just after the start tag of ``element``, when it has an end tag (not ``<link/>``)."""
-    from rbi.formats.robot_xml import _tag_end
 
     if element is None:
         return None
@@ -173,7 +175,6 @@ def _after_start_tag(text: bytes, element) -> int | None:
 def files_read(model) -> list[str]:
     """Every file the robot reads: the robot file, its includes (xacro, MJCF), its mesh
     assets and meshes, as real paths."""
-    import os
 
     found = [model.path, *getattr(model.document, "includes", [])]
     for link in model.links:
@@ -184,9 +185,6 @@ def files_read(model) -> list[str]:
 def check_out_not_read(out: str, model) -> None:
     """InputError when ``out`` names a file the robot reads: writing there would replace an
     include or a mesh (or the robot file) with the fixed copy."""
-    import os
-
-    from rbi.files.safe import shown
 
     for each in files_read(model):
         try:

@@ -11,6 +11,8 @@ joint at its ``ref``), so with no values given every link is where the file draw
 
 from __future__ import annotations
 
+import difflib
+import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -23,7 +25,6 @@ from rbi.formats.robot import Pose, RobotModel
 
 def parse_joint_values(values: list[str] | None) -> dict[str, float]:
     """``NAME=VALUE`` strings (``--joints``) as a mapping; InputError for a malformed one."""
-    import math
 
     found: dict[str, float] = {}
     for value in values or []:
@@ -202,8 +203,6 @@ def _check_joint_names(model: RobotModel, joints: dict[str, float]) -> None:
     }
     unknown = [name for name in joints if name not in movable]
     if unknown:
-        import difflib
-
         hint = difflib.get_close_matches(unknown[0], list(movable), n=1)
         raise InputError(
             f"--joints: {model.path} has no revolute or prismatic joint named {unknown[0]!r}"

@@ -9,7 +9,13 @@ from typing import Any
 import numpy as np
 
 from rbi.errors import ArgumentError, InputError
+from rbi.files.output import write_output
 from rbi.runs.run import PreparedRun
+from rbi.sim.diagnostics import tilt_deg
+from rbi.spec.geometry import part_geometry
+from rbi.viz.labels import label
+from rbi.viz.page import html_page
+from rbi.viz.still import part_count
 
 
 def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], Any, np.ndarray]:
@@ -19,11 +25,8 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
 
     :class:`InputError` when the motion would need more keyframes than a page can play, or is
     not finite."""
-    from rbi.sim.diagnostics import tilt_deg
-    from rbi.spec.geometry import part_geometry
-    from rbi.viz.labels import label
+    # looked up per call: tests replace it
     from rbi.viz.motion import MAX_KEYFRAMES, MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframes_needed
-    from rbi.viz.still import part_count
 
     body, scene, duration = run.body, run.scene, run.duration
     probe = run.integrate(MIN_KEYFRAMES)
@@ -77,9 +80,8 @@ def write_animation(
     ``progress(frames drawn, frames)`` is called after each frame. Returns ``(frames in the
     file, largest tilt of the spin axis in degrees)``. :class:`ArgumentError` for a ``speed``
     or ``fps`` out of range, or a GIF longer than :data:`rbi.viz.frames.MAX_GIF_FRAMES`."""
-    from rbi.files.output import write_output
+    # looked up per call: tests replace it
     from rbi.viz.frames import MAX_GIF_FRAMES, frame_indices, write_gif
-    from rbi.viz.page import html_page
 
     if not (0.1 <= speed <= 2.0):
         raise ArgumentError("speed", f"must be between 0.1 and 2 (got {speed!r})")

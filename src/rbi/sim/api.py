@@ -186,6 +186,7 @@ def _run_compiled(
 
 
 def _run_scipy(scene: Scene, q0, omega0, t: np.ndarray, method: str, rtol: float) -> Trajectory:
+    # not at top level: `rbi simulate` would load rbi.sim.baselines too
     from rbi.sim.baselines import solve_with_scipy
 
     atol = rtol * SCIPY_ATOL_RATIO
@@ -213,6 +214,7 @@ def _run_scipy(scene: Scene, q0, omega0, t: np.ndarray, method: str, rtol: float
 
 
 def _run_exact(scene: Scene, q0, omega0, t: np.ndarray) -> Trajectory:
+    # not at top level: `rbi sweep` would load rbi.sim.exact too
     from rbi.sim import exact
 
     start = time.perf_counter()

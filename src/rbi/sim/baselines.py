@@ -9,6 +9,8 @@ scipy's explicit methods and tolerances. Same equations and frames as :mod:`rbi.
 from __future__ import annotations
 
 import numpy as np
+from scipy.integrate import DOP853, RK45
+from scipy.spatial.transform import Rotation
 
 from rbi.sim.scene import Scene
 
@@ -16,7 +18,6 @@ from rbi.sim.scene import Scene
 def python_rhs(scene: Scene):
     """``f(t, y)`` in the chapter's style: rotation matrix from scipy, torque of gravity at the
     centre of mass mapped into the body frame, Euler's equations about the pivot."""
-    from scipy.spatial.transform import Rotation
 
     inertia = scene.inertia
     inertia_inv = np.linalg.inv(inertia)
@@ -49,7 +50,6 @@ def solve_with_scipy(scene: Scene, q0, omega0, t_samples: np.ndarray, method: st
 
     Returns ``(y (7, N), accepted_steps, rhs_evaluations)``; raises RuntimeError on failure.
     """
-    from scipy.integrate import DOP853, RK45
 
     solver_class = {"RK45": RK45, "DOP853": DOP853}[method]
     y0 = np.concatenate((np.asarray(q0, dtype=float), np.asarray(omega0, dtype=float)))

@@ -39,6 +39,7 @@ def integrator() -> Loaded:
     if _LOADED is None:
         start = time.perf_counter()
         try:
+            # not at top level: `rbi sweep --mass-properties` would load rbi.sim._dop853 too
             from rbi.sim import _dop853
         except ImportError as exc:
             raise KernelMissing(

@@ -103,6 +103,7 @@ def _normalised(q: np.ndarray) -> np.ndarray:
 
 def _pi_incomplete(n: float, phi: np.ndarray, m: float) -> np.ndarray:
     """Π(n; φ | m) = ∫₀^φ dθ / ((1 − n sin²θ) √(1 − m sin²θ)) for |φ| ≤ π/2 (Carlson form)."""
+    # not at top level: `rbi simulate` would load scipy.special too
     from scipy.special import elliprf, elliprj
 
     s = np.sin(phi)
@@ -115,6 +116,7 @@ def _pi_incomplete(n: float, phi: np.ndarray, m: float) -> np.ndarray:
 
 
 def _pi_complete(n: float, m: float) -> float:
+    # not at top level: `rbi simulate --format csv` would load rbi.sim.elliptic too
     from rbi.sim.elliptic import ellippi
 
     return ellippi(n, m)
@@ -125,6 +127,7 @@ class _Elliptic:
     integral ``G(n; u) = ∫₀^u du' / (1 − n sn²u')`` for any real u."""
 
     def __init__(self, m: float) -> None:
+        # not at top level: `rbi simulate --format csv` would load rbi.sim.elliptic too
         from rbi.sim.elliptic import ellipk
 
         if not 0.0 <= m < 1.0:
@@ -136,6 +139,7 @@ class _Elliptic:
 
     def functions(self, u: np.ndarray):
         """(sn, cn, dn, am_reduced, j) with u = 2K j + r, r in [−K, K); am_reduced = am(r)."""
+        # not at top level: `rbi simulate` would load scipy.special too
         from scipy.special import ellipj
 
         u = np.asarray(u, dtype=float)
@@ -150,6 +154,7 @@ class _Elliptic:
         return 2.0 * j * _pi_complete(n, self.m) + _pi_incomplete(n, am, self.m)
 
     def F(self, phi: float) -> float:
+        # not at top level: `rbi simulate --format csv` would load rbi.sim.elliptic too
         from rbi.sim.elliptic import ellipkinc
 
         return ellipkinc(phi, self.m)

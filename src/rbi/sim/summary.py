@@ -209,6 +209,7 @@ def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any
 def closed_form_facts(scene: Scene, q0, omega0) -> dict[str, Any] | None:
     """Characteristic numbers of the closed-form solution (nutation bounds and period of a
     Lagrange top, period of ω of a free body ...), or None when the scene has none."""
+    # not at top level: `rbi sweep` would load rbi.sim.exact too
     from rbi.sim import exact
 
     if (

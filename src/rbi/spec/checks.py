@@ -46,6 +46,7 @@ class Check:
 def _compare(
     quantity: str, expected: Any, actual: Any, tol: Any, unit: str, about: str | None = None
 ) -> Check:
+    # not at top level: `rbi audit` would load rbi.spec.fields too
     from rbi.spec.fields import tolerance_allowed
 
     want = np.asarray(expected, dtype=float)

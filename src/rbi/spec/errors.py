@@ -5,6 +5,7 @@ from __future__ import annotations
 import difflib
 import math
 import re
+import reprlib
 from typing import Any
 
 from rbi.errors import InputError  # noqa: F401  (the spec layer's errors are InputErrors)
@@ -98,7 +99,6 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
 def _show(value: Any) -> str:
     """``value`` for a message in at most 40 characters, built without walking all of a large
     list or mapping (a value shared through YAML aliases may stand for millions)."""
-    import reprlib
 
     if isinstance(value, int) and value.bit_length() > 64:  # too long to print (or to convert)
         return f"an integer of {int(value.bit_length() * math.log10(2)) + 1} digits"

@@ -11,6 +11,9 @@ from pathlib import Path
 from typing import Any
 
 from rbi.errors import InputError
+from rbi.formats.step import read_step
+from rbi.spec.materials import canonical_name, density_in_units, unknown_material_message
+from rbi.spec.yaml_writer import comment, dump
 
 DEFAULT_DENSITY = 1000.0
 """Density (kg/m³) of the imported parts when none is given: water's, a placeholder to replace."""
@@ -32,7 +35,6 @@ class StepImport:
 
     def yaml(self) -> str:
         """The spec as YAML text under a comment header: what ``rbi import FILE.step`` prints."""
-        from rbi.spec.yaml_writer import comment, dump
 
         lines = [
             f"rbi import of {os.path.basename(self.path)}: one part per solid, integrated on the exact STEP geometry;",
@@ -56,8 +58,6 @@ def import_step(
     the folder ``relative_to`` (default: the current folder), where the spec will be saved.
     Raises :class:`InputError`: ``density`` or ``material`` wrong (message starting with the
     parameter's name), or the file unreadable (starting with ``path``)."""
-    from rbi.formats.step import read_step
-    from rbi.spec.materials import canonical_name, density_in_units, unknown_material_message
 
     if density is not None and material is not None:
         raise InputError("density, material: give one of them, not both", field="density")

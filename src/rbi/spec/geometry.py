@@ -32,7 +32,12 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.inertia import principal_axes
+from rbi.core.rotation import unit_vector
+from rbi.formats.paths import spec_relative_file
 from rbi.spec import models
+from rbi.spec.translate import rotation_matrix
+from rbi.spec.units import LENGTH_UNITS_IN_M
 
 ROD_RADIUS_FRACTION = 0.01
 MAX_DRAWN_TRIANGLES = 20_000
@@ -79,6 +84,7 @@ def _copy_motions(pattern) -> list[tuple[np.ndarray, np.ndarray]]:
         return [(np.eye(3), np.zeros(3))]
     if pattern.step is not None:
         return [(np.eye(3), k * np.asarray(pattern.step, dtype=float)) for k in range(pattern.count)]
+    # not at top level: `rbi show --out F.png` would load rbi.spec.pattern too
     from rbi.spec.pattern import copy_rotations
 
     through = np.zeros(3) if pattern.through is None else np.asarray(pattern.through, dtype=float)
@@ -111,7 +117,6 @@ def _vector(v) -> list[float]:
 
 
 def _primitive(part, spec_path: str, length_unit: str = "m") -> dict[str, Any] | None:
-    from rbi.spec.translate import rotation_matrix
 
     if isinstance(part, models.ConePart):
         return _frustum(part.apex, part.base, 0.0, part.radius)
@@ -170,7 +175,6 @@ def _primitive(part, spec_path: str, length_unit: str = "m") -> dict[str, Any] |
 
 
 def _unit(v) -> list[float]:
-    from rbi.core.rotation import unit_vector
 
     return unit_vector(v).tolist()
 
@@ -178,9 +182,8 @@ def _unit(v) -> list[float]:
 def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     """The mesh's triangles placed in the body as the mass properties place them: ``scale``,
     then ``rotation`` about the mesh origin, then the origin to ``position``."""
+    # not at top level: `rbi show --out F.png` would load rbi.formats.mesh_file too
     from rbi.formats.mesh_file import read_mesh_solid
-    from rbi.formats.paths import spec_relative_file
-    from rbi.spec.translate import rotation_matrix
 
     solid = read_mesh_solid(
         spec_relative_file(spec_path, part.file, f"file: {part.file}"), part.inertia, part.repair
@@ -208,10 +211,8 @@ def _step(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
     """The STEP solids' triangles (BRepMesh, for the picture only) placed as the mass
     properties place them: the file's unit to the spec's, ``rotation`` about the file's
     origin, then the origin to ``position``."""
-    from rbi.formats.paths import spec_relative_file
+    # not at top level: `rbi show --out F.png` would load rbi.formats.step too
     from rbi.formats.step import read_step, select_solids, step_triangles
-    from rbi.spec.translate import rotation_matrix
-    from rbi.spec.units import LENGTH_UNITS_IN_M
 
     path = spec_relative_file(spec_path, part.file, f"file: {part.file}")
     chosen = select_solids(read_step(path), part.solid)  # cached: read once for the mass properties
@@ -249,7 +250,7 @@ def _ellipsoid(center, semi_axes, R) -> dict[str, Any]:
 def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
     """The cloud's points (already read once for its mass properties), or None when there are
     too many to draw one by one."""
-    from rbi.formats.paths import spec_relative_file
+    # not at top level: `rbi show --out F.png` would load rbi.formats.point_cloud too
     from rbi.formats.point_cloud import read_point_cloud
 
     if spec is None or spec.point_cloud is None:
@@ -264,7 +265,6 @@ def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
 def _stand_in(element) -> dict[str, Any]:
     """The uniform box with the element's mass and principal moments about its centre of mass:
     edges a_k² = 6 (I_i + I_j − I_k) / m along the principal axes."""
-    from rbi.core.inertia import principal_axes
 
     mass = abs(float(element.mass))
     moments, axes = principal_axes(np.sign(element.mass) * np.asarray(element.inertia_about_com, dtype=float))

@@ -4,11 +4,14 @@ from __future__ import annotations
 
 import contextlib
 import gc
+import json
 import re
+import sys
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, get_args
 
 import yaml
+from pydantic import BaseModel, ValidationError
 
 from rbi.files.safe import InputFileRefused, read_input_file
 from rbi.spec.errors import InputError, describe_error, format_location
@@ -88,7 +91,6 @@ def read_stdin_text() -> str:
     """One spec (YAML or JSON) read from standard input to its end, held to the rules of
     :func:`read_spec_text` (UTF-8, at most :data:`MAX_SPEC_BYTES`, not empty), named
     ``<stdin>`` in messages."""
-    import sys
 
     stream = getattr(sys.stdin, "buffer", None)
     try:
@@ -196,7 +198,6 @@ def _parse_json(text: str) -> Any:
     reader, which reports the problem with its line and column."""
     if not text.lstrip().startswith("{"):
         return _NOT_JSON
-    import json
 
     def unique(pairs):
         keys = [k for k, _ in pairs]
@@ -229,7 +230,6 @@ def _depth_within(value: Any, limit: int) -> bool:
 
 def validation_messages(path: str, raw: Any) -> tuple[Any, list[str]]:
     """Validate parsed YAML: the spec model (or None) and one message line per problem."""
-    from pydantic import ValidationError
 
     if raw is None:
         return None, [f"{path}: file holds no YAML document"]
@@ -255,7 +255,6 @@ def _format_error(path: str, error: dict[str, Any], raw: Any) -> str:
 def _known_fields(loc: tuple[Any, ...], raw: Any) -> list[str]:
     """Field names valid where an unknown field was found (for 'did you mean'): walk the
     models along the error's location, through optional, list and union-of-shape fields."""
-    from pydantic import BaseModel
 
     model: Any = BodySpec
     for item in loc[:-1]:
@@ -277,9 +276,6 @@ def _known_fields(loc: tuple[Any, ...], raw: Any) -> list[str]:
 
 def _model_inside(annotation: Any) -> Any:
     """The pydantic model an annotation holds (``X | None``, ``list[X]``, ``Annotated[X, ...]``)."""
-    from typing import get_args
-
-    from pydantic import BaseModel
 
     if isinstance(annotation, type) and issubclass(annotation, BaseModel):
         return annotation
@@ -315,7 +311,6 @@ def spec_from_raw(path: str, raw: Any):
 def _first_location(raw: Any) -> tuple[str | None, str | None]:
     """The part label and field path of the first validation problem (as the messages order
     them), for :class:`InputError`'s ``part`` and ``field``."""
-    from pydantic import ValidationError
 
     if not isinstance(raw, dict):
         return None, None
@@ -351,6 +346,7 @@ def file_problems(path: str, packages: dict[str, list[Path]] | None = None) -> l
     while building the body (an unphysical custom inertia, a hole removing too much). A robot
     file (URDF, SDF, MJCF) gives every link whose inertia is not physical; ``packages`` (see
     :func:`rbi.formats.robot_paths.parse_package_paths`) finds its ``package://`` meshes."""
+    # not at top level: `rbi inertia` would load rbi.formats.robot_files too
     from rbi.formats.robot_files import is_robot_file, robot_file_problems
 
     if is_robot_file(path):

@@ -7,6 +7,8 @@ reported instead of silently ignored. Parts form a discriminated union on ``shap
 
 from __future__ import annotations
 
+import re
+import unicodedata
 from typing import Annotated, Any, Literal, Union
 
 import numpy as np
@@ -17,6 +19,7 @@ from pydantic import (
     PlainValidator,
     PrivateAttr,
     ValidationError,
+    create_model,
     model_validator,
 )
 
@@ -654,7 +657,6 @@ class BodySpec(_Strict):
     def _unique_names(self):
         """Part names are distinct, also after Unicode normalisation (NFC): two names that differ
         only in how an accent is encoded look the same in every table and path."""
-        import unicodedata
 
         seen: dict[str, int] = {}
         for i, part in enumerate(self.parts):
@@ -685,7 +687,6 @@ def body_spec_json_schema() -> dict[str, Any]:
     """The JSON Schema (draft 2020-12) of :class:`BodySpec`, each part described as :data:`Part`
     (the union of every shape) rather than as the validator that picks one; descriptions as
     editors show them (see :func:`_plain_descriptions`)."""
-    from pydantic import create_model
 
     described = create_model(
         "BodySpec",
@@ -704,7 +705,6 @@ def body_spec_json_schema() -> dict[str, Any]:
 def _plain_descriptions(node: Any) -> Any:
     """Descriptions as editors show them: the docstrings' reStructuredText literals (double
     backquotes) and Sphinx roles (:mod:`x`) written as plain `x`, line breaks joined."""
-    import re
 
     if isinstance(node, dict):
         out = {}

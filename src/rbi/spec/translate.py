@@ -183,6 +183,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     hull's solid, or the surface): ``scale``, then ``rotation`` about the mesh origin, then the
     origin moved to ``position``. Raises ValueError naming the file (as written in the spec)
     and what is wrong with it."""
+    # not at top level: `rbi inertia` would load rbi.formats.mesh_file too
     from rbi.formats.mesh_file import read_mesh_solid
 
     try:
@@ -221,6 +222,7 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
     boundary representation in metres (:mod:`rbi.formats.step`), converted to the spec's length
     unit, turned by ``rotation`` about the file's origin, that origin moved to ``position``.
     Raises ValueError naming the file (as written in the spec) and what is wrong with it."""
+    # not at top level: `rbi inertia` would load rbi.formats.step too
     from rbi.formats.step import read_step, require_cad, select_solids
 
     require_cad()
@@ -251,6 +253,7 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
     pieces that overlap (their shared space counted twice)."""
     notes = []
     if solid.added_faces:
+        # not at top level: `rbi inertia` would load rbi.core.mesh too
         from rbi.core.mesh import surface_area
 
         scale = float(part.scale)
@@ -294,6 +297,7 @@ def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
     else:
         element = ELEMENT_BUILDERS[type(part)](part, units)
     if part.pattern is not None and part.pattern.count > 1:
+        # not at top level: `rbi inertia` would load rbi.spec.pattern too
         from rbi.spec.pattern import patterned
 
         element = patterned(element, part.pattern)
@@ -372,11 +376,13 @@ def body_from_spec(spec: models.BodySpec, path: str):
         elements.append(element)
     part_names = [p.name for p in spec.parts]
     if spec.point_cloud is not None:  # the whole cloud enters as one part, reduced vectorised
+        # not at top level: `rbi inertia` would load rbi.formats.point_cloud too
         from rbi.formats.point_cloud import cloud_element
 
         elements.append(cloud_element(path, spec.point_cloud.file))
         part_names.append("point_cloud")
     if holes:
+        # not at top level: `rbi inertia` would load rbi.spec.holes too
         from rbi.spec.holes import check_holes
 
         check_holes(path, spec, elements, holes)

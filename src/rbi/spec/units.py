@@ -7,6 +7,10 @@ fixed units (SI exports, ``--units SI``).
 
 from __future__ import annotations
 
+import dataclasses
+
+import numpy as np
+
 LENGTH_UNITS_IN_M: dict[str, float] = {"m": 1.0, "cm": 0.01, "mm": 0.001, "in": 0.0254, "ft": 0.3048}
 MASS_UNITS_IN_KG: dict[str, float] = {"kg": 1.0, "g": 0.001, "lb": 0.45359237}
 
@@ -40,9 +44,6 @@ def convert_body(body, length_unit: str, mass_unit: str):
     """The same :class:`~rbi.spec.translate.LoadedBody` with every number in other units: masses,
     centres of mass, inertias (mass·length²) and the pivot. The body's own units are
     returned unchanged (no rounding added)."""
-    import dataclasses
-
-    import numpy as np
 
     if (body.length_unit, body.mass_unit) == (length_unit, mass_unit):
         return body

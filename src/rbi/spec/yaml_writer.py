@@ -15,6 +15,8 @@ from __future__ import annotations
 import unicodedata
 from typing import Any
 
+import yaml
+
 from rbi.spec.yaml_reader import plain_is_text
 from rbi.text import is_hidden, visible
 
@@ -29,7 +31,6 @@ def dump(data: Any, *, width: int = 100) -> str:
     """``data`` (plain dicts, lists, numbers, strings) as block-style YAML with flow-style
     leaf lists, keys in the order given. Strings holding a hidden character are written
     double-quoted with escapes; other non-ASCII text (``名前``, ``ü``) stays as it is."""
-    import yaml
 
     class Dumper(yaml.SafeDumper):
         pass

@@ -3,8 +3,14 @@ way the rows reach ``on_rows`` chunk by chunk in run order."""
 
 from __future__ import annotations
 
+import contextlib
+import logging
 import os
 import re
+import shutil
+import signal
+import tempfile
+import threading
 from collections import deque
 from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
@@ -89,8 +95,6 @@ def run_dask(
     finally:
         _quietly_close(client, cluster)
         if scratch is not None:
-            import shutil
-
             shutil.rmtree(scratch, ignore_errors=True)
 
 
@@ -107,9 +111,8 @@ def local_cluster(workers: int):
     folder (``mkdtemp``), not Dask's fixed ``$TMPDIR/dask-scratch-space``, which another user
     could create first and plant lock-file links in. The workers ignore Ctrl-C: the terminal's SIGINT reaches the whole process
     group, and this process shuts them down itself (one line, no traceback from each)."""
-    import signal
-    import tempfile
 
+    # dask and distributed: optional (the 'dask' extra), imported only when used
     import dask
     from distributed import Client, LocalCluster
     from distributed.security import Security
@@ -136,8 +139,6 @@ def local_cluster(workers: int):
                 local_directory=scratch,
             )
     except BaseException:
-        import shutil
-
         shutil.rmtree(scratch, ignore_errors=True)
         raise
     finally:
@@ -168,6 +169,7 @@ def check_address(address: str) -> None:
             "tls://HOST:PORT (e.g. tcp://10.0.0.5:8786)"
         )
     if found.group(1) == "tls":
+        # dask: optional (the 'dask' extra), imported only when used
         import dask
 
         missing = [key for key in _TLS_CLIENT if not dask.config.get(key, None)]
@@ -183,8 +185,8 @@ def connect(address: str):
     """A client of the scheduler at ``address``; InputError naming ``--dask`` when none answers
     within :data:`CONNECT_SECONDS` (refused, unreachable, or a server that accepts and stays
     silent, on which Dask's own timeout never fires)."""
-    import threading
 
+    # distributed: optional (the 'dask' extra), imported only when used
     from distributed import Client
 
     box: dict = {}
@@ -210,8 +212,6 @@ def connect(address: str):
 def _ignore_sigint():
     """Ignore SIGINT while worker processes start (they inherit it); the previous handler, or
     None when this is not the main thread."""
-    import signal
-    import threading
 
     if threading.current_thread() is not threading.main_thread():
         return None
@@ -231,8 +231,6 @@ def _stop_http_of_worker(dask_worker=None) -> None:
 def _quietly_close(client, cluster) -> None:
     """Close the client and the local cluster without the log lines and tracebacks Dask prints
     while its connections go down."""
-    import contextlib
-    import logging
 
     quiet = logging.getLogger("distributed")
     level = quiet.level

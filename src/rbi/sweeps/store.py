@@ -31,6 +31,7 @@ import csv
 import json
 import math
 import os
+import tempfile
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
@@ -97,6 +98,7 @@ class SweepOutput:
     def open(self, resume: bool, keep: bool) -> list[list[Any]]:
         """Lock the output and start it empty, or (``resume``) check what is there and continue
         after it. Returns the kept rows (typed) when ``keep``, else []."""
+        # not at top level: `rbi sweep` would load rbi.files.lock too
         from rbi.files.lock import OutputLock
 
         self._lock = OutputLock(self.path, self._label)
@@ -276,8 +278,8 @@ class SweepOutput:
         self._size += len(data)
 
     def _write_piece(self, rows: list[list[Any]]) -> None:
-        import tempfile
 
+        # pyarrow: optional (the 'parquet' extra), imported only when used
         import pyarrow as pa
         import pyarrow.parquet as pq
 
@@ -318,6 +320,7 @@ class SweepOutput:
 
     def _combine(self) -> None:
         """Write the output from the chunk files, one row group each, atomically."""
+        # pyarrow: optional (the 'parquet' extra), imported only when used
         import pyarrow.parquet as pq
 
         folder = rows_folder(self.path)
@@ -470,6 +473,7 @@ def _csv_line(line: bytes, what: str, number: int) -> list[str]:
 
 
 def _read_piece(path: Path, what: str):
+    # pyarrow: optional (the 'parquet' extra), imported only when used
     import pyarrow as pa
     import pyarrow.parquet as pq
 
@@ -481,6 +485,7 @@ def _read_piece(path: Path, what: str):
 
 
 def _arrow_schema(columns: list[str]):
+    # pyarrow: optional (the 'parquet' extra), imported only when used
     import pyarrow as pa
 
     types = {"run": pa.int64(), "steps": pa.int64(), "status": pa.string()}

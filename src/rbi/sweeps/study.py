@@ -19,13 +19,17 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+import numpy as np
+
 from rbi.errors import ArgumentError, InputError
 from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, spin_axis_value
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
+from rbi.sim.diagnostics import sleeping_threshold
 from rbi.sim.scene import scene_from_properties
 from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import store
+from rbi.sweeps.execute import check_address
 from rbi.sweeps.plan import Draw, Plan, axis_of, axis_record
 from rbi.sweeps.runs import SweepJob
 
@@ -98,8 +102,6 @@ def check_settings(settings: SweepSettings) -> None:
             "mass_properties", "takes {vary} only (no {spin} or {tilt_deg}: nothing is simulated)"
         )
     if settings.dask is not None:
-        from rbi.sweeps.execute import check_address
-
         check_address(settings.dask)
 
 
@@ -143,6 +145,7 @@ class Study:
             raise InputError(f"{path}: {self.nominal}")
         self.job = dataclasses.replace(self.job, spin_axis=self._spin_axis())
         if settings.mass_properties:
+            # not at top level: `rbi sweep` would load rbi.sweeps.tolerance too
             from rbi.sweeps.tolerance import MASS_COLUMNS
 
             self.columns = ["run", *self.plan.names, *MASS_COLUMNS]
@@ -173,7 +176,6 @@ class Study:
 
     def _check_budget(self) -> None:
         """Refuse, before any run, a sweep estimated to take more than the step budget."""
-        import numpy as np
 
         scene = self.nominal_scene()
         if scene is None:
@@ -213,6 +215,7 @@ class Study:
         """``(compute(start, stop, threads) -> rows, chunk size)`` for the executors."""
         job = self.job
         if self.settings.mass_properties:
+            # not at top level: `rbi sweep` would load rbi.sweeps.tolerance too
             from rbi.sweeps.tolerance import mass_rows, nominal_axes
 
             axes_nominal = nominal_axes(job)
@@ -221,7 +224,10 @@ class Study:
                 return mass_rows(job, axes_nominal, a, b)
 
             return compute, 256
+        # looked up per call: tests replace it
         from rbi.sweeps.execute import available_cores
+
+        # looked up per call: tests replace it
         from rbi.sweeps.runs import run_chunk
 
         def compute(a, b, threads):
@@ -265,6 +271,7 @@ class Study:
         exception) with the runs the output kept: the output is closed keeping the rows
         written, and :attr:`output` tells how many.
         """
+        # looked up per call: tests replace it
         from rbi.sweeps.execute import available_cores, chunk_ranges, run_dask, run_local
 
         compute, chunk = self._compute()
@@ -305,6 +312,7 @@ class Study:
 
     def spread(self, rows: list[list[Any]]) -> dict[str, dict[str, float]]:
         """Percentiles and standard deviation of each mass property over the ok runs."""
+        # not at top level: `rbi sweep` would load rbi.sweeps.tolerance too
         from rbi.sweeps.tolerance import spread
 
         return spread(self.columns, rows, 1)
@@ -319,8 +327,6 @@ class Study:
             raise ArgumentError("plot", "the map needs at least one axis with more than one value")
         threshold = None
         if swept[0] == "spin":
-            from rbi.sim.diagnostics import sleeping_threshold
-
             scene = self.nominal_scene()
             try:
                 found = None if scene is None else sleeping_threshold(scene)

@@ -8,6 +8,8 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.inertia import principal_axes
+from rbi.spec.variations import current_values
 from rbi.sweeps.runs import SweepJob
 
 MASS_COLUMNS = (
@@ -32,8 +34,6 @@ PERCENTILES = (0, 5, 50, 95, 100)
 
 def nominal_axes(job: SweepJob) -> np.ndarray:
     """Principal axes (rows) of the body as written."""
-    from rbi.core.inertia import principal_axes
-    from rbi.spec.variations import current_values
 
     body = job.body(tuple(current_values(job.raw, list(job.varied))))
     if isinstance(body, str):
@@ -43,7 +43,6 @@ def nominal_axes(job: SweepJob) -> np.ndarray:
 
 def mass_rows(job: SweepJob, nominal: np.ndarray, start: int, stop: int, threads: int = 0) -> list[list[Any]]:
     """Rows of runs ``start .. stop-1`` (``threads`` is unused: each row is microseconds)."""
-    from rbi.core.inertia import principal_axes
 
     rows = []
     for i, v in enumerate(job.plan.values(start, stop)):

@@ -12,6 +12,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core.rotation import quaternion_to_matrix
+from rbi.viz.labels import label, plain
 from rbi.viz.solids import part_quads, shade
 
 PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#6b8e23", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
@@ -141,7 +142,6 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
     fig = plt.figure(figsize=(pixels / dpi, pixels / dpi), dpi=dpi)
     try:
         ax = _scene_axes(fig, data)
-        from rbi.viz.labels import label, plain
 
         plain(
             fig.text(

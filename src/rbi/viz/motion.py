@@ -11,6 +11,7 @@ import math
 from typing import Any
 
 import numpy as np
+from scipy.spatial import ConvexHull, QhullError
 
 from rbi.core.rotation import quaternion_to_matrix
 from rbi.spec.geometry import moved
@@ -104,11 +105,6 @@ def drawn_points(parts: list[dict[str, Any]], size: float) -> np.ndarray:
             pieces.append(quads.reshape(-1, 3))
     points = np.unique(np.concatenate(pieces), axis=0)
     if len(points) > 64:
-        from scipy.spatial import (
-            ConvexHull,
-            QhullError,
-        )  # loaded only by the commands that need it (start-up cost)
-
         try:
             points = points[ConvexHull(points).vertices]
         except (QhullError, ValueError):  # flat or degenerate: every point stays

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
+from rbi.files.output import write_output
+from rbi.text import number
 from rbi.viz.labels import MAX_LABEL_CHARS, label, plain
 
 
@@ -67,8 +69,6 @@ def plot_simulation(
     """:func:`plot_trajectory` written at the checked output ``target``, titled with the body's
     ``name``, the initial spin ``|omega0|`` (rad/s) and the nudge (degrees); ``drawn``: its
     keywords (``spin_axis``, ``energy_unit``, a free body's ``principal_axes`` and ``inertia``)."""
-    from rbi.files.output import write_output
-    from rbi.text import number
 
     title = f"{label(name)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, nudge {number(nudge_deg)}°"
     write_output(
@@ -80,7 +80,6 @@ def plot_simulation(
 def plot_map(data: dict, target) -> None:
     """:func:`plot_stability_map` of a sweep's map ``data`` (its keyword arguments,
     :meth:`rbi.sweeps.study.Study.stability_map`) written at the checked output ``target``."""
-    from rbi.files.output import write_output
 
     write_output(target, writer=lambda path: plot_stability_map(path=path, format=target.format, **data))
 

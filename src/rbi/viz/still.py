@@ -15,6 +15,8 @@ from typing import Any
 import numpy as np
 
 from rbi.core.inertia import principal_axes
+from rbi.files.output import write_output
+from rbi.spec.geometry import part_geometry
 from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
 from rbi.viz.labels import label, plain, plain_legend
 from rbi.viz.motion import body_size, drawn_points, shifted
@@ -128,8 +130,6 @@ def draw_body(body: Any, target: Any, title: str | None = None) -> int:
     checked output ``target`` (:func:`rbi.files.output.output_target`): a 3D page for
     ``.html``, else a still (:func:`draw_still`); ``title`` defaults to the spec's name, else
     its path. Returns the number of parts drawn."""
-    from rbi.files.output import write_output
-    from rbi.spec.geometry import part_geometry
 
     props = body.props
     data = view_data(
@@ -142,6 +142,7 @@ def draw_body(body: Any, target: Any, title: str | None = None) -> int:
         body.labels["inertia"],
     )
     if target.format == "html":
+        # not at top level: `rbi show --out F.png` would load rbi.viz.page too
         from rbi.viz.page import html_page
 
         data["legend"] = (
