@@ -1156,6 +1156,7 @@ def audit(
     # not at top level: `rbi inertia` would load rbi.robot.audit too
     from rbi.robot import audit as run_audit
 
+    _robot_path(robot_file)
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
     target = None if out is None else _output(out, ("urdf", "sdf", "xml"), robot_file)
@@ -1270,6 +1271,13 @@ class RobotImport:
         return comment(*lines) + dump(spec)
 
 
+def _robot_path(robot_file: object) -> str:
+    """``robot_file`` as a str path; TypeError naming the parameter for anything but a path."""
+    if not isinstance(robot_file, (str, bytes, os.PathLike)):
+        raise TypeError(f"robot_file: expected a path (str or os.PathLike), got {type(robot_file).__name__}")
+    return os.fsdecode(os.fspath(robot_file))
+
+
 def import_robot(
     robot_file: str | os.PathLike[str],
     *,
@@ -1292,10 +1300,8 @@ def import_robot(
     from rbi.formats.robot_files import link_problems, read_robot
     from rbi.formats.robot_paths import parse_package_paths
 
-    if isinstance(package_paths, Mapping):
-        package_paths = [f"{name}={folder}" for name, folder in package_paths.items()]
-    packages = parse_package_paths(list(package_paths or []))
-    robot = read_robot(os.fsdecode(os.fspath(robot_file)), packages)
+    packages = parse_package_paths(package_paths)
+    robot = read_robot(_robot_path(robot_file), packages)
     chosen = _chosen_links(robot, list(links or []))
     if not chosen:
         raise SpecError(f"{robot.path}: no {robot.link_word} with an <inertial> element to import")

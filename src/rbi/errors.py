@@ -77,6 +77,13 @@ class ArgumentError(SpecError, ValueError):
         return f"{where}{head}: {detail}"
 
 
+def literal(value: object, quoted: bool = True) -> str:
+    """``repr(value)`` (or ``str(value)`` when not ``quoted``) for an :class:`ArgumentError`
+    detail, its braces doubled so they print as written (single braces name parameters)."""
+    text = repr(value) if quoted else str(value)
+    return text.replace("{", "{{").replace("}", "}}")
+
+
 def api_name(parameter: str) -> str:
     """How the Python API spells a parameter in messages (an item as ``vary['PATH']``)."""
     return parameter[:-2] + "[{!r}]" if parameter.endswith("[]") else parameter

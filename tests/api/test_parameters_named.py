@@ -3,6 +3,7 @@ TypeError for a value of the wrong type (issue 26's open doors)."""
 
 from __future__ import annotations
 
+import math
 import traceback
 
 import pytest
@@ -69,3 +70,72 @@ def test_a_lone_surrogate_in_a_dict_or_text_is_a_spec_error():
         rbi.load({"name": "a\ud800", "parts": [part]})
     with pytest.raises(rbi.SpecError, match=r"parts\[0\]\.name: holds a lone surrogate"):
         rbi.loads('{"parts": [{"name": "\\udfff", "shape": "point", "mass": 1, "position": [0, 0, 0]}]}\n')
+
+
+ARM = (
+    '<robot name="arm"><link name="base"/><link name="upper"><inertial><origin xyz="0.5 0 0"/><mass value="2"/>'
+    '<inertia ixx="0.01" iyy="0.2" izz="0.2" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+    '<joint name="shoulder" type="revolute"><parent link="base"/><child link="upper"/><axis xyz="0 1 0"/>'
+    '<limit effort="100" velocity="1" lower="-3" upper="3"/></joint></robot>'
+)
+
+
+@pytest.mark.parametrize(
+    "settings, head",
+    [
+        ({"geometry": "colision"}, "geometry: 'colision'"),
+        ({"mesh_inertia": "rough"}, "mesh_inertia: 'rough'"),
+        ({"density": -1.0}, "density: -1.0"),
+        ({"density": "x"}, "density: 'x'"),
+        ({"density": 1000.0, "material": "steel"}, "density and material: give one of them"),
+        ({"material": "unobtanium"}, "material: unknown material 'unobtanium'"),
+        ({"joints": {"elbow": 0.1}}, "joints: "),
+        ({"joints": {"shoulder": "a"}}, "joints: 'shoulder=a'"),
+        ({"joints": ["shoulder"]}, "joints: 'shoulder'"),
+        ({"joints": 5}, "joints: expected a mapping"),
+        ({"package_paths": ["nope"]}, "package_paths: 'nope'"),
+        (
+            {"package_paths": {"p": "/nonexistent/folder"}},
+            "package_paths: p=/nonexistent/folder: no such folder",
+        ),
+        ({"package_paths": [5]}, "package_paths: expected"),
+    ],
+)
+def test_audit_refuses_bad_arguments_naming_the_parameter_not_the_option(tmp_path, settings, head):
+    """The audit's options checked in the API speak its parameter names (``density``,
+    ``mesh_inertia``): a ValueError, never ``--density``; the CLI still names its options."""
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM)
+    with pytest.raises(ValueError) as caught:
+        rbi.audit(path, **settings)
+    message = str(caught.value)
+    assert message.startswith(head) and "--" not in message, message
+    assert rbi.audit(path, joints={"shoulder": 0.5}).joints[0].torque == pytest.approx(
+        -2 * 9.81 * 0.5 * math.cos(0.5), rel=1e-14
+    )
+
+
+@pytest.mark.parametrize("function", [rbi.audit, rbi.import_robot])
+def test_robot_functions_name_robot_file_for_a_value_that_is_not_a_path(function):
+    with pytest.raises(TypeError, match="^robot_file: expected a path"):
+        function(5)
+
+
+@pytest.mark.parametrize(
+    "args, line",
+    [
+        (["--geometry", "colision"], "rbi: --geometry: 'colision': must be collision, visual or none"),
+        (["--density", "1", "--material", "steel"], "rbi: --density and --material: give one of them"),
+        (["--joints", "elbow=1"], "rbi: --joints: "),
+        (["--package-path", "nope"], "rbi: --package-path: 'nope': give NAME=DIR"),
+    ],
+)
+def test_the_command_line_names_its_options_for_the_same_errors(tmp_path, args, line):
+    from tests.conftest import run_rbi_inprocess
+
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM)
+    for form in ("table", "json", "csv"):
+        proc = run_rbi_inprocess("audit", str(path), "--format", form, *args)
+        assert proc.returncode == 2 and proc.stderr.startswith(line), proc.stderr
+        assert len(proc.stderr.strip().splitlines()) == 1 and proc.stdout == ""

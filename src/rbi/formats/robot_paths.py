@@ -18,22 +18,31 @@ from collections.abc import Mapping, Sequence
 from pathlib import Path
 from urllib.parse import unquote
 
-from rbi.errors import InputError
+from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.paths import spec_relative_file
 
 
 def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dict[str, list[Path]]:
-    """``NAME=DIR`` strings (``--package-path``), or ``{NAME: DIR}``, as a mapping; InputError
-    for a malformed one."""
+    """``NAME=DIR`` strings (``--package-path``), or ``{NAME: DIR}``, as a mapping;
+    ArgumentError naming ``package_paths`` for a malformed one."""
     if isinstance(values, Mapping):
-        values = [f"{name}={folder}" for name, folder in values.items()]
+        values = [f"{name}={os.fspath(folder)}" for name, folder in values.items()]
+    elif isinstance(values, (str, bytes)):
+        values = [values] if isinstance(values, str) else [values.decode(errors="replace")]
     found: dict[str, list[Path]] = {}
     for value in values or []:
+        if not isinstance(value, str):
+            raise ArgumentError(
+                "package_paths",
+                f"expected NAME=DIR strings or a mapping of NAME to DIR, got {literal(value)}",
+            )
         name, sep, folder = value.partition("=")
         if not sep or not name.strip() or not folder.strip():
-            raise InputError(f"--package-path: {value!r}: give NAME=DIR (the package's name and its folder)")
+            raise ArgumentError(
+                "package_paths", f"{literal(value)}: give NAME=DIR (the package's name and its folder)"
+            )
         if not os.path.isdir(folder):
-            raise InputError(f"--package-path: {name}={folder}: no such folder")
+            raise ArgumentError("package_paths", f"{literal(value, quoted=False)}: no such folder")
         found.setdefault(name.strip(), []).append(Path(folder))
     return found
 

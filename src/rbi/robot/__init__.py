@@ -12,7 +12,7 @@ from collections.abc import Mapping, Sequence
 from rbi.formats.paths import outside_paths_allowed
 from rbi.formats.robot_files import read_robot
 from rbi.formats.robot_paths import parse_package_paths
-from rbi.robot.audit import AuditReport, audit_model, material_density
+from rbi.robot.audit import AuditReport, audit_model, check_choices, material_density
 from rbi.robot.tree import parse_joint_values
 
 
@@ -44,11 +44,9 @@ def audit(
     (three or four edges) first, each repair listed in ``report.notes``. Raises :class:`rbi.SpecError` on bad input.
     """
 
+    check_choices(geometry, mesh_inertia)
     packages = parse_package_paths(package_paths)
-    if isinstance(joints, Mapping):
-        joint_values = {str(k): float(v) for k, v in joints.items()}
-    else:
-        joint_values = parse_joint_values(list(joints or []))
+    joint_values = parse_joint_values(joints)
     rho = material_density(material, density)
     with outside_paths_allowed(allow_outside_paths), _without_cycle_collection():
         model = read_robot(os.fspath(robot_file), packages, geometry=geometry != "none")

@@ -37,7 +37,7 @@ import numpy as np
 from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
-from rbi.errors import InputError
+from rbi.errors import ArgumentError, literal
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, _half_extent, distribution, primitive
 from rbi.reprs import TableRepr
@@ -247,25 +247,44 @@ _OFF_DIAGONAL = ~np.eye(3, dtype=bool)
 
 
 def material_density(material: str | None, density: float | None) -> float | None:
-    """kg/m³ from ``--density`` or ``--material`` (InputError for both, a bad number or an
-    unknown material)."""
+    """kg/m³ from ``density`` or ``material`` (``--density``, ``--material``); ArgumentError
+    (naming the parameters) for both, a bad number or an unknown material."""
     if material is not None and density is not None:
-        raise InputError("--density and --material: give one of them")
+        raise ArgumentError(("density", "material"), "give one of them")
     if density is not None:
-        if not (np.isfinite(density) and density > 0):
-            raise InputError(f"--density: {density!r}: must be a finite number greater than 0 (kg/m³)")
-        return float(density)
+        value = _number(density)
+        if not (value is not None and np.isfinite(value) and value > 0):
+            raise ArgumentError(
+                "density", f"{literal(density)}: must be a finite number greater than 0 (kg/m³)"
+            )
+        return value
     if material is not None:
         # not at top level: `rbi audit` would load rbi.spec.materials too
         from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 
-        name = canonical_name(material)
+        name = canonical_name(material) if isinstance(material, str) else None
         if name is None:
-            raise InputError(
-                f"--material: {unknown_material_message(material, numbers_too=False)} (or --density KG_PER_M3)"
-            )
+            message = unknown_material_message(str(material), numbers_too=False)
+            raise ArgumentError("material", literal(message, quoted=False) + " (or {density} in kg/m³)")
         return MATERIAL_DENSITIES_SI[name]
     return None
+
+
+def _number(value) -> float | None:
+    """``value`` as a float, or None when it is not a real number (a str, a bool, None, ...)."""
+    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
+        return None
+    return float(value)
+
+
+def check_choices(geometry, mesh_inertia) -> None:
+    """ArgumentError naming ``geometry`` or ``mesh_inertia`` (``--geometry``, ``--mesh-inertia``)
+    when it is not one of the audit's choices."""
+    if geometry not in GEOMETRY_CHOICES:
+        raise ArgumentError("geometry", f"{literal(geometry)}: must be collision, visual or none")
+    if mesh_inertia not in MESH_INERTIA_MODES:
+        choices = ", ".join(MESH_INERTIA_MODES)
+        raise ArgumentError("mesh_inertia", f"{literal(mesh_inertia)}: must be one of {choices}")
 
 
 def audit_model(
@@ -281,10 +300,7 @@ def audit_model(
     # not at top level: `rbi import` would load rbi.robot.statics too
     from rbi.robot.statics import joint_torques
 
-    if geometry not in GEOMETRY_CHOICES:
-        raise InputError(f"--geometry: {geometry!r}: must be collision, visual or none")
-    if mesh_inertia not in MESH_INERTIA_MODES:
-        raise InputError(f"--mesh-inertia: {mesh_inertia!r}: must be one of {', '.join(MESH_INERTIA_MODES)}")
+    check_choices(geometry, mesh_inertia)
     carried = _carried_mass(model)
     repairs: list[str] = []
     bulk = _primitives_in_bulk(model, geometry, density)

@@ -13,34 +13,44 @@ from __future__ import annotations
 
 import difflib
 import math
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
 from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import axis_angle_matrix
-from rbi.errors import InputError
+from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import Pose, RobotModel
 
 
-def parse_joint_values(values: list[str] | None) -> dict[str, float]:
-    """``NAME=VALUE`` strings (``--joints``) as a mapping; InputError for a malformed one."""
-
+def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> dict[str, float]:
+    """``{NAME: VALUE}``, or ``NAME=VALUE`` strings (``--joints``), as a mapping of finite
+    numbers (radians or metres); ArgumentError naming ``joints`` for a malformed one."""
+    if isinstance(values, Mapping):
+        pairs = [(name, number, f"{name}={number}") for name, number in values.items()]
+    elif values is None or (isinstance(values, Sequence) and not isinstance(values, (str, bytes))):
+        pairs = [(*str(value).rpartition("=")[::2], str(value)) for value in values or []]
+    else:
+        raise ArgumentError(
+            "joints",
+            f"expected a mapping of NAME to VALUE or NAME=VALUE strings, got {type(values).__name__}",
+        )
     found: dict[str, float] = {}
-    for value in values or []:
-        name, sep, number = value.rpartition("=")
+    for name, number, shown in pairs:
         try:
-            q = float(number)
-        except ValueError:
+            q = math.nan if isinstance(number, bool) else float(number)
+        except (TypeError, ValueError):
             q = math.nan
-        if not sep or not name or not math.isfinite(q):
-            raise InputError(
-                f"--joints: {value!r}: give NAME=VALUE with VALUE a finite number (radians for a "
-                "revolute joint, metres for a prismatic one)"
+        if not isinstance(name, str) or not name or not math.isfinite(q):
+            raise ArgumentError(
+                "joints",
+                f"{literal(shown)}: give NAME=VALUE with VALUE a finite number (radians for a "
+                "revolute joint, metres for a prismatic one)",
             )
         if name in found:
-            raise InputError(
-                f"--joints: {name!r} is given twice ({found[name]:g} and {q:g}): give each joint once"
+            raise ArgumentError(
+                "joints", f"{literal(name)} is given twice ({found[name]:g} and {q:g}): give each joint once"
             )
         found[name] = q
     return found
@@ -204,9 +214,11 @@ def _check_joint_names(model: RobotModel, joints: dict[str, float]) -> None:
     unknown = [name for name in joints if name not in movable]
     if unknown:
         hint = difflib.get_close_matches(unknown[0], list(movable), n=1)
-        raise InputError(
-            f"--joints: {model.path} has no revolute or prismatic joint named {unknown[0]!r}"
-            + (f" (did you mean {hint[0]!r}?)" if hint else "")
+        raise ArgumentError(
+            "joints",
+            literal(model.path, quoted=False)
+            + f" has no revolute or prismatic joint named {literal(unknown[0])}"
+            + (f" (did you mean {literal(hint[0])}?)" if hint else ""),
         )
 
 
