@@ -246,3 +246,79 @@ def test_mjcf_mesh_bodies_as_mujoco_compiles_them_from_single_precision_vertices
     assert (("mesh", "warning") in codes) is (drop > 0 and mode == "exact")
     for form in ("table", "csv"):
         assert run_rbi_inprocess("audit", str(tmp_path / "m.xml"), "--format", form).returncode == 0
+
+
+FRAMED_SDF = """<?xml version="1.0"?><sdf version="1.9"><model name="m">
+  <link name="base"><inertial><mass>2</mass><inertia><ixx>0.1</ixx><iyy>0.1</iyy><izz>0.1</izz>
+    <ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial></link>
+  <frame name="f1" attached_to="base"><pose>0.3 0 0.2 0 0.4 0.3</pose></frame>
+  <link name="arm"><pose relative_to="f1">0.1 0.05 0 0.2 0 0</pose>
+    <inertial><pose>0.25 0.01 -0.02 0.1 0.2 0.3</pose><mass>1.5</mass><inertia><ixx>0.02</ixx><iyy>0.03</iyy>
+      <izz>0.04</izz><ixy>0.001</ixy><ixz>0</ixz><iyz>0.002</iyz></inertia></inertial>
+    <collision name="c"><pose relative_to="f1">0.2 0 0 0 0 0</pose><geometry><box><size>0.4 0.1 0.1</size></box>
+      </geometry></collision></link>
+  <link name="tip"><pose relative_to="j1">0.5 0 0 0 0.3 0</pose>
+    <inertial><pose>0.05 0 0 0 0 0</pose><mass>0.7</mass><inertia><ixx>0.001</ixx><iyy>0.002</iyy><izz>0.002</izz>
+      <ixy>0</ixy><ixz>0</ixz><iyz>0</iyz></inertia></inertial></link>
+  <joint name="weld" type="fixed"><parent>world</parent><child>base</child></joint>
+  <joint name="j1" type="revolute"><pose relative_to="arm">0 0 0.05 0 0 0</pose><parent>base</parent><child>arm</child>
+    <axis><xyz expressed_in="__model__">0 1 0.3</xyz><limit><effort>5</effort></limit></axis></joint>
+  <joint name="j2" type="prismatic"><parent>arm</parent><child>tip</child>
+    <axis><xyz expressed_in="f1">1 0 0.2</xyz><limit><lower>-1</lower><upper>1</upper></limit></axis></joint>
+</model></sdf>"""
+
+
+@pytest.mark.parametrize("values", [{"j1": 0.7, "j2": 0.15}, {"j1": -1.2, "j2": -0.3}])
+def test_sdf_poses_relative_to_other_frames_agree_with_drake(tmp_path, values):
+    """SDFormat's pose graph: a link placed relative_to a <frame>, another relative_to a joint, a
+    joint's pose relative_to a link, a collision relative_to a frame, axes expressed_in the model
+    and in a frame: joint torques, the total centre of mass and each link's inertial as Drake's
+    MultibodyPlant reads the file (before, rbi refused the first relative_to, and read a joint's
+    pose relative_to another frame as if in its child link's)."""
+    pydrake = pytest.importorskip("pydrake.all")
+    path = tmp_path / "framed.sdf"
+    path.write_text(FRAMED_SDF)
+    plant = pydrake.MultibodyPlant(0.0)
+    pydrake.Parser(plant).AddModels(str(path))
+    plant.Finalize()
+    context = plant.CreateDefaultContext()
+    plant.GetJointByName("j1").set_angle(context, values["j1"])
+    plant.GetJointByName("j2").set_translation(context, values["j2"])
+    gravity = plant.CalcGravityGeneralizedForces(
+        context
+    )  # the force gravity exerts: minus the holding effort
+    args = [arg for name, value in values.items() for arg in ("--joints", f"{name}={value!r}")]
+    proc, result = audit(tmp_path, "framed.sdf", FRAMED_SDF, *args)
+    assert proc.returncode == 0, proc.stderr
+    for joint in result["joints"]:
+        expected = -gravity[plant.GetJointByName(joint["name"]).velocity_start()]
+        assert joint["torque"] == pytest.approx(expected, rel=1e-12, abs=1e-14)
+    np.testing.assert_allclose(
+        result["total"]["center_of_mass"], plant.CalcCenterOfMassPositionInWorld(context), rtol=0, atol=1e-14
+    )
+    for link in result["links"]:
+        inertia = plant.GetBodyByName(link["name"]).default_spatial_inertia()
+        about_com = inertia.Shift(inertia.get_com()).CalcRotationalInertia().CopyToFullMatrix3()
+        np.testing.assert_allclose(link["declared"]["center_of_mass"], inertia.get_com(), rtol=0, atol=1e-15)
+        np.testing.assert_allclose(link["declared"]["inertia_about_com"], about_com, rtol=0, atol=1e-15)
+    # the box collision, 0.2 m along f1's x from f1, seen from the arm link (placed 0.1, 0.05, 0, rolled 0.2 in f1)
+    box = next(each for each in result["links"] if each["name"] == "arm")["geometry"]
+    roll = np.array([[1, 0, 0], [0, np.cos(0.2), -np.sin(0.2)], [0, np.sin(0.2), np.cos(0.2)]])
+    np.testing.assert_allclose(
+        box["center_of_mass"], roll.T @ np.array([0.1, -0.05, 0.0]), rtol=0, atol=1e-15
+    )
+    for form in ("table", "csv"):
+        assert run_rbi_inprocess("audit", str(path), "--format", form, *args).returncode == 0
+
+
+@pytest.mark.parametrize(
+    "frames, words",
+    [
+        ('<frame name="a" attached_to="b"/><frame name="b" attached_to="a"/>', "loop"),
+        ('<frame name="a" attached_to="nowhere"/>', "no link, joint or frame named 'nowhere'"),
+    ],
+)
+def test_sdf_frames_that_loop_or_name_nothing_are_one_line_errors(tmp_path, frames, words):
+    text = sdf(f'<link name="l"><pose relative_to="a">1 0 0 0 0 0</pose></link>{frames}')
+    proc, _ = audit(tmp_path, "m.sdf", text)
+    assert proc.returncode == 2 and words in proc.stderr and len(proc.stderr.strip().splitlines()) == 1

@@ -3,7 +3,9 @@
 
 - A link's ``<pose>`` places it in its model's frame (at every joint's zero); a model's pose
   places it in the world. ``x y z roll pitch yaw`` (radians unless ``degrees="true"``), or
-  ``rotation_format="quat_xyzw"``. Poses relative to other named frames are not read.
+  ``rotation_format="quat_xyzw"``. A ``<pose relative_to="NAME">`` (SDFormat 1.7+) is in the
+  frame of that link, joint or ``<frame>`` of the same model (``__model__``: the model's), as
+  each stands at the zero configuration (:class:`_Frames`).
 - ``<inertial><pose/><mass/><inertia><ixx/>…</inertia>``: SDF's defaults (mass 1,
   ``ixx = iyy = izz = 1``) fill missing elements; a link with no ``<inertial>`` has that default
   inertial at its origin (``source="default"``), as SDFormat, Gazebo and Drake give it;
@@ -11,8 +13,9 @@
   collision's ``<density>`` (default 1000 kg/m³), scaled to a given ``<mass>``.
 - Geometry: ``<box><size/>``, ``<cylinder><radius/><length/>``, ``<sphere><radius/>``,
   ``<capsule><radius/><length/>``, ``<ellipsoid><radii/>``, ``<mesh><uri/><scale/>``.
-- A joint's ``<pose>`` is in the child link's frame; its ``<axis><xyz>`` in the joint frame
-  (in the model frame with ``use_parent_model_frame`` or ``expressed_in="__model__"``).
+- A joint's ``<pose>`` is in the child link's frame (unless ``relative_to``); its
+  ``<axis><xyz>`` in the joint frame (in the model frame with ``use_parent_model_frame``, in any
+  other frame of the model with ``expressed_in``).
 - ``<include>`` of another model is not followed: it is listed in :attr:`RobotModel.unchecked`,
   so no check reports the file as fine without having read those links.
 
@@ -85,6 +88,7 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
         model_name = model_element.get("name") or ""
         links: dict[str, Link] = {}
         link_poses: dict[str, Pose] = {}
+        frames = _Frames(path, model_element)
         for element in model_element.all("link"):
             own = element.get("name")
             link = Link(
@@ -95,25 +99,24 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
             )
             index += 1
             where = Where(path, link.label)
-            pose = _pose(where, element.child("pose"), "pose", own)
-            link_poses[own] = model_pose.then(pose)
+            link_poses[own] = model_pose.then(frames.in_model(own, where))
             link.origin = link_poses[own]
             inertial = element.child("inertial")
             auto = inertial is not None and (inertial.get("auto") or "").strip().lower() in ("true", "1")
             if geometry or auto:
-                link.collisions = _geoms(where, element, "collision", package_paths, own)
+                link.collisions = _geoms(where, element, "collision", package_paths, frames.within(own))
             if geometry:
-                link.visuals = _geoms(where, element, "visual", package_paths, own)
+                link.visuals = _geoms(where, element, "visual", package_paths, frames.within(own))
             if auto:
                 link.inertial = _auto_inertial(where, inertial, link.collisions)
             elif inertial is not None:
-                link.inertial = _inertial(where, inertial, own)
+                link.inertial = _inertial(where, inertial, frames.within(own))
             else:  # SDFormat's default inertial: 1 kg, unit moments, at the link origin
                 link.inertial = Inertial.read(1.0, np.zeros(3), np.eye(3), element=None, source="default")
             check_unique_names(path, list(links.values()) + [link], "link")
             links[own] = link
             robot.links.append(link)
-        _joints(robot, model_element, links, link_poses, model_pose)
+        _joints(robot, model_element, links, link_poses, model_pose, frames)
     return robot
 
 
@@ -137,10 +140,15 @@ def _models_nested(model, pose: Pose):
             yield from _models_nested(child, inner)
 
 
-def _pose(where: Where, element, what: str, own_name: str | None, strict: bool = True) -> Pose:
+def _pose(where: Where, element, what: str, own_name, strict: bool = True) -> Pose:
+    """The pose ``element`` writes, in its own element's frame: ``own_name`` is that frame's
+    name, or a function (``_Frames.within``) that turns a pose written ``relative_to`` another
+    frame of the model into the own frame."""
     if element is None or not (element.text or "").strip():
         return Pose.identity()
     relative_to = element.get("relative_to")
+    if callable(own_name):
+        return own_name(where, relative_to, _pose(where, element, what, None, strict=False))
     if strict and relative_to not in (None, "", own_name, "__model__"):
         raise where.error(
             f"{what}: relative_to={short(relative_to)!r}: only poses in the link's own or the "
@@ -162,13 +170,8 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
     pose_element = inertial.child("pose")
     rpy, quaternion = None, None
     if pose_element is not None and (pose_element.text or "").strip():
-        relative_to = pose_element.get("relative_to")
-        if relative_to not in (None, "", own_name):
-            raise where.error(
-                f"inertial/pose: relative_to={short(relative_to)!r}: only poses in the link's own "
-                "frame are read"
-            )
         pose = _pose(where, pose_element, "inertial/pose", own_name)
+        moved = pose_element.get("relative_to") not in (None, "")
         if (pose_element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
             v = numbers(where, pose_element.text, "inertial/pose", 7)
             quaternion = np.array([v[6], v[3], v[4], v[5]], dtype=float)
@@ -178,8 +181,10 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
             if (pose_element.get("degrees") or "").strip().lower() in ("true", "1"):
                 angles_ = [math.radians(a) for a in angles_]
             rpy = tuple(float(a) for a in angles_) if any(angles_) else None
+        if moved:  # written in another frame: the rotation into the link's is not the one written
+            rpy, quaternion = None, None
     else:
-        pose = Pose.identity()
+        pose, moved = Pose.identity(), False
     mass_element = inertial.child("mass")
     mass = number(where, None if mass_element is None else mass_element.text, "inertial/mass", default=1.0)
     block = inertial.child("inertia")
@@ -191,7 +196,9 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
         )
     inertia = from_six(**six)
     check_inertia_range(where, inertia)
-    turned = rpy is not None or (quaternion is not None and not np.allclose(pose.rotation, np.eye(3), 0, 0))
+    turned = rpy is not None or (
+        (quaternion is not None or moved) and not np.allclose(pose.rotation, np.eye(3), 0, 0)
+    )
     return Inertial.read(
         mass,
         pose.translation,
@@ -298,7 +305,9 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
     return Geom(kind, (), pose, label)
 
 
-def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, model_pose: Pose) -> None:
+def _joints(
+    robot: RobotModel, model_element, links: dict, link_poses: dict, model_pose: Pose, frames
+) -> None:
     path = robot.path
     for index, element in enumerate(model_element.all("joint")):
         name = element.get("name")
@@ -320,7 +329,7 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, mod
             raise where.error(f"child: link {short(child_name)!r} already has a parent joint")
         child.parent = links[parent_name].name
         child.origin = link_poses[parent_name].inverse().then(link_poses[child_name])
-        joint_pose = _pose(where, element.child("pose"), "pose", None, strict=False)
+        joint_pose = frames.in_model(child_name, where).inverse().then(frames.in_model(name, where))
         axis_element = element.child("axis")
         xyz_element = axis_element.child("xyz") if axis_element is not None else None
         axis = numbers(where, xyz_element.text, "axis/xyz", 3) if xyz_element is not None else [0.0, 0.0, 1.0]
@@ -333,9 +342,14 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, mod
                     and (axis_element.child("use_parent_model_frame").text or "").strip() in ("true", "1")
                 )
             ) or (xyz_element is not None and xyz_element.get("expressed_in") == "__model__")
-            child_in_model = link_poses[child_name]
+            expressed_in = xyz_element.get("expressed_in") if xyz_element is not None else None
             if in_model:
-                axis = child_in_model.rotation.T @ (model_pose.rotation @ axis)
+                axis = frames.in_model(child_name, where).rotation.T @ axis
+            elif expressed_in not in (None, ""):
+                axis = (
+                    frames.within(child_name)(where, expressed_in, Pose(np.eye(3), np.zeros(3))).rotation
+                    @ axis
+                )
             else:
                 axis = joint_pose.rotation @ axis
         limit = axis_element.child("limit") if axis_element is not None else None
@@ -347,3 +361,60 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, mod
         child.motions = [
             Motion(name, kind, np.asarray(axis, dtype=float), joint_pose.translation, effort_limit=effort)
         ]
+
+
+class _Frames:
+    """The named frames of one SDF model (its links, joints and ``<frame>`` elements) placed in
+    the model's frame at the zero configuration, as SDFormat's pose graph places them: a link's
+    ``<pose>`` is relative to ``__model__`` by default, a joint's to its child link, a frame's
+    to the frame it is ``attached_to``; ``relative_to`` names another. Units: metres, radians."""
+
+    def __init__(self, path: str, model_element) -> None:
+        self.path = path
+        self.elements: dict[str, tuple] = {}
+        for tag in ("link", "joint", "frame"):
+            for element in model_element.all(tag):
+                name = element.get("name")
+                if name is not None:
+                    self.elements.setdefault(name, (tag, element))
+        self.placed: dict[str, Pose] = {"__model__": Pose.identity()}
+        self.open: set[str] = set()
+
+    def in_model(self, name: str | None, where: Where) -> Pose:
+        """The frame ``name`` in the model's frame (InputError for an unknown name or a loop)."""
+        if name in (None, "", "__model__"):
+            return Pose.identity()
+        if name in self.placed:
+            return self.placed[name]
+        if name not in self.elements:
+            raise where.error(f"relative_to: no link, joint or frame named {short(name)!r} in this model")
+        if name in self.open:
+            raise where.error(
+                f"pose: the frames' relative_to and attached_to form a loop through {short(name)!r}"
+            )
+        tag, element = self.elements[name]
+        pose_element = element.child("pose")
+        default = {"link": None, "joint": _text(element.child("child")), "frame": element.get("attached_to")}[
+            tag
+        ]
+        relative_to = (pose_element.get("relative_to") if pose_element is not None else None) or default
+        self.open.add(name)
+        local = _pose(where, pose_element, "pose", None, strict=False)
+        self.placed[name] = self.in_model(relative_to, where).then(local)
+        self.open.discard(name)
+        return self.placed[name]
+
+    def within(self, own: str):
+        """A function (where, relative_to, pose) → that pose in frame ``own`` (a link's frame),
+        for the poses of the link's inertial, collisions and visuals."""
+
+        def placed(where: Where, relative_to: str | None, pose: Pose) -> Pose:
+            if relative_to in (None, "", own):
+                return pose
+            return self.in_model(own, where).inverse().then(self.in_model(relative_to, where)).then(pose)
+
+        return placed
+
+
+def _text(element) -> str | None:
+    return (element.text or "").strip() or None if element is not None else None
