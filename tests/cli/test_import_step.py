@@ -8,6 +8,7 @@ import csv
 import io
 import json
 import math
+import os
 
 import pytest
 
@@ -99,6 +100,10 @@ def test_bad_files_are_one_line(tmp_path):
     (tmp_path / "x.step").write_text("not step\n")
     one_line_exit_2(run_rbi_inprocess("import", str(tmp_path / "x.step")), "x.step", "not a STEP file")
     one_line_exit_2(run_rbi_inprocess("import", str(tmp_path / "none.stp")), "none.stp", "no such file")
+    os.mkfifo(tmp_path / "pipe.step")  # a FIFO is there, but is no file to read: said so, without blocking
+    one_line_exit_2(
+        run_rbi_inprocess("import", str(tmp_path / "pipe.step")), "pipe.step", "not a regular file"
+    )
 
 
 def test_show_and_animate_draw_step_parts(tmp_path, kit):

@@ -70,7 +70,8 @@ def import_step(
     home = os.path.abspath(relative_to) if relative_to is not None else os.getcwd()
     file = os.path.abspath(path)
     if not os.path.isfile(file):
-        raise InputError(f"{path}: no such file", file=str(path))
+        what = "not a regular file" if os.path.exists(file) else "no such file"
+        raise InputError(f"{path}: {what}", file=str(path))
     try:
         step = read_step(Path(file))
     except ValueError as exc:
