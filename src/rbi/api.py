@@ -1156,14 +1156,13 @@ def audit(
     # not at top level: `rbi inertia` would load rbi.robot.audit too
     from rbi.robot import audit as run_audit
 
-    _robot_path(robot_file)
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
-    target = None if out is None else _output(out, ("urdf", "sdf", "xml"), robot_file)
+    target = None if out is None else _output(out, ("urdf", "sdf", "xml"), _robot_path(robot_file))
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, material=material)
     settings |= dict(density=density, mesh_inertia=mesh_inertia, joints=joints, mesh_repair=mesh_repair)
-    report = run_audit(robot_file, fix=fix, allow_outside_paths=allowed, **settings)
+    report = run_audit(_robot_path(robot_file), fix=fix, allow_outside_paths=allowed, **settings)
     if target is not None:
         from rbi.robot.fix import check_out_not_read  # the files the robot reads
 
