@@ -81,6 +81,8 @@ MJCF_CASES = {
     "mass_wins_over_density": '<body name="a"><joint type="hinge"/><geom size="0.1" mass="1" density="-1"/></body>',
     "free_without_mass": '<body name="a"><freejoint/></body>',
     "ok": '<body name="a"><joint type="hinge"/><geom size="0.1"/></body>',
+    "duplicate_joint_names": '<body name="a"><joint name="j" type="hinge"/><geom size="0.1"/>'
+    '<body name="b" pos="1 0 0"><joint name="j" type="slide"/><geom size="0.1"/></body></body>',
     # a massless moving body carried by a child welded to it (no joint) with mass: MuJoCo accepts
     "welded_child_carries_mass": '<body name="a"><joint type="hinge"/><geom size="0.1" mass="0"/>'
     '<body name="b" pos="0.5 0 0"><geom size="0.1" mass="2"/></body></body>',
@@ -123,7 +125,28 @@ URDF_REFUSED = {
         '<joint name="j2" type="fixed"><parent link="b"/><child link="c"/></joint></robot>',
         "loop",
     ),
+    "duplicate joint name": (
+        '<robot name="r"><link name="a"/><link name="b"/><link name="c"/>'
+        '<joint name="j" type="fixed"><parent link="a"/><child link="b"/></joint>'
+        '<joint name="j" type="fixed"><parent link="a"/><child link="c"/></joint></robot>',
+        "duplicate joint name 'j'",
+    ),
+    "unnamed joint": (
+        '<robot name="r"><link name="a"/><link name="b"/>'
+        '<joint type="fixed"><parent link="a"/><child link="b"/></joint></robot>',
+        "name: missing",
+    ),
 }
+
+
+@pytest.mark.parametrize("case", ["duplicate joint name", "unnamed joint"])
+def test_urdfdom_refuses_the_joint_name_cases_too(tmp_path, case):
+    """The refusals rbi adds for joints are urdfdom's (read through Pinocchio)."""
+    pin = pytest.importorskip("pinocchio")
+    path = tmp_path / "r.urdf"
+    path.write_text(URDF_REFUSED[case][0])
+    with pytest.raises(ValueError):
+        pin.buildModelFromUrdf(str(path))
 
 
 @pytest.mark.parametrize("case", sorted(URDF_REFUSED))

@@ -45,6 +45,7 @@ from rbi.formats.robot import (
     Where,
     angles,
     check_inertia_range,
+    check_unique_joint_names,
     check_unique_names,
     from_six,
     number,
@@ -143,6 +144,7 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     for world in root.all("worldbody"):
         reader.children(world, Pose.identity(), None, "main")
     check_unique_names(path, model.links, "body")
+    check_unique_joint_names(model, "MuJoCo's compiler")
     _actuator_limits(model, root, defaults)
     model.options["gravity"] = _gravity(path, root)
     _compile_inertia(model, compiler, reader.geoms)

@@ -354,6 +354,23 @@ def short(text: Any, limit: int = 40) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
+def check_unique_joint_names(model: RobotModel, reader: str) -> None:
+    """InputError naming the first joint name two joints of the model share (``reader``: the
+    program that refuses such a file, e.g. urdfdom or MuJoCo's compiler), so that a joint named
+    in ``--joints`` and in the report is one joint."""
+    seen: dict[str, Link] = {}
+    for link in model.links:
+        for motion in link.motions:
+            if not motion.name:
+                continue
+            if motion.name in seen:
+                raise InputError(
+                    f"{model.path}: {link.label}: duplicate joint name {short(motion.name)!r} (also a joint of "
+                    f"{seen[motion.name].label}); every joint needs its own name ({reader} refuses the file)"
+                )
+            seen[motion.name] = link
+
+
 def check_unique_names(path: str, links: list[Link], word: str) -> None:
     """InputError naming the first name two links share."""
     seen: dict[str, Link] = {}

@@ -27,6 +27,7 @@ from rbi.formats.robot import (
     Where,
     angles,
     check_inertia_range,
+    check_unique_joint_names,
     check_unique_names,
     from_six,
     number,
@@ -171,6 +172,8 @@ def _joints(model: RobotModel, root) -> None:
     for index, element in enumerate(root.all("joint")):
         name = element.get("name")
         where = Where(path, f"joint[{index}]" + (f" ({short(name)})" if name is not None else ""))
+        if not name:
+            raise where.error("name: missing; every joint needs a name (urdfdom refuses it)")
         parent, child = element.child("parent"), element.child("child")
         if parent is None or child is None:
             raise where.error("needs <parent link=…/> and <child link=…/>")
@@ -209,6 +212,7 @@ def _joints(model: RobotModel, root) -> None:
         if limit is not None and limit.get("effort") is not None:
             effort = abs(number(where, limit.get("effort"), "limit: effort"))
         link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3), effort_limit=effort)]
+    check_unique_joint_names(model, "urdfdom")
     _check_tree(model)
 
 
