@@ -135,7 +135,15 @@ def audit(
     code = report.exit_code
     if out is not None:
         code = 1 if report.fix.unfixable or report.model.unchecked else 0
-    _render(report, format, file, out if fix else None, fix)
+    import gc
+
+    collecting = gc.isenabled()
+    gc.disable()  # as while auditing: a large robot's report is millions of new objects, none garbage
+    try:
+        _render(report, format, file, out if fix else None, fix)
+    finally:
+        if collecting:
+            gc.enable()
     if code:
         raise typer.Exit(code)
 

@@ -24,6 +24,15 @@ def plain(value: Any) -> Any:
 
     ``-0.0`` becomes ``0.0``; JSON then carries each float's shortest round-tripping repr.
     """
+    kind = type(value)  # the common exact types first (an audit's JSON has millions of values)
+    if kind is float:
+        return 0.0 if value == 0.0 else value
+    if kind is dict:
+        return {k: plain(v) for k, v in value.items()}
+    if kind is list:
+        return [plain(v) for v in value]
+    if kind is str or kind is int or kind is bool or value is None:
+        return value
     if isinstance(value, dict):
         return {k: plain(v) for k, v in value.items()}
     if isinstance(value, (list, tuple)):
@@ -182,11 +191,12 @@ def emit(
     """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
     lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``;
     ``source`` names the file in an error."""
-    refuse_non_finite(result, source)
+    flat = plain(result)
+    _refuse_non_finite_plain(flat, source)
     if fmt != "json":
         say_warnings(result.get("warnings", ()))
-    if fmt == "json":
-        sys.stdout.write(to_json(result) + "\n")
+    if fmt == "json":  # every float is finite (refused above), so what to_json gives:
+        sys.stdout.write(json.dumps(flat) + "\n")
     elif fmt == "csv":
         sys.stdout.write(to_csv(csv_rows if csv_rows is not None else [result]))
     else:
@@ -210,7 +220,12 @@ def print_table(renderable) -> None:
 def refuse_non_finite(result: dict[str, Any], source: str | None = None) -> None:
     """Inputs of absurd size (``--omega 1e200,0,0``) overflow to inf/NaN: refuse them as bad
     input (exit 2, naming the file ``source`` when given) rather than print nulls."""
-    bad = [key for key, value in plain(result).items() if _has_non_finite(value)]
+    _refuse_non_finite_plain(plain(result), source)
+
+
+def _refuse_non_finite_plain(result: dict[str, Any], source: str | None) -> None:
+    """:func:`refuse_non_finite` of a result :func:`plain` has made plain already."""
+    bad = [key for key, value in result.items() if _has_non_finite(value)]
     if bad:
         where = f"{source}: " if source else ""
         raise SpecError(
@@ -220,6 +235,11 @@ def refuse_non_finite(result: dict[str, Any], source: str | None = None) -> None
 
 
 def _has_non_finite(value: Any) -> bool:
+    kind = type(value)
+    if kind is float:
+        return not math.isfinite(value)
+    if kind is list:
+        return any(map(_has_non_finite, value))
     if isinstance(value, dict):
         return any(_has_non_finite(v) for v in value.values())
     if isinstance(value, list):

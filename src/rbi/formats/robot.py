@@ -88,10 +88,9 @@ class Inertial:
         """The inertial a file declares: ``mass`` (kg), ``com`` (m, link frame), ``inertia``
         about it in the inertial frame's axes (kg·m²), turned into the link's by ``rotation``."""
         written = np.array(inertia, dtype=float)
-        in_link = written if rotation is None else re_express(written, rotation)
-        return Inertial(
-            MassProperties(mass, com, in_link, "link"), written, rotation, rpy, quaternion, element, source
-        )
+        in_link = written.copy() if rotation is None else re_express(written, rotation)
+        properties = MassProperties.of_arrays(mass, np.array(com, dtype=float), in_link, "link")
+        return Inertial(properties, written, rotation, rpy, quaternion, element, source)
 
     @property
     def mass(self) -> float:
@@ -229,10 +228,19 @@ class RobotModel:
 
 
 class Where:
-    """Where a value was read, for error messages: ``file: link[i] (name): what``."""
+    """Where a value was read, for error messages: ``file: link[i] (name): what``. ``label``
+    may be given as a :class:`Link` or a function returning the text, worked out only when
+    asked for (a large robot file reads a million values and errs on none of them)."""
 
-    def __init__(self, path: str, label: str | None = None):
-        self.path, self.label = path, label
+    def __init__(self, path: str, label: Any = None):
+        self.path, self._label = path, label
+
+    @property
+    def label(self) -> str | None:
+        label = self._label
+        if label is None or isinstance(label, str):
+            return label
+        return label() if callable(label) else label.label
 
     def error(self, what: str) -> InputError:
         return InputError(f"{self.path}: {self.label}: {what}" if self.label else f"{self.path}: {what}")
@@ -288,6 +296,9 @@ def number(where: Where, text: str | None, what: str, default: float | None = No
         if default is None:
             raise where.error(f"{what}: missing")
         return default
+    values = _plain_numbers(text)
+    if values is not None and len(values) == 1:
+        return values[0]
     return numbers(where, text, what, 1)[0]
 
 
@@ -300,6 +311,8 @@ def positive(where: Where, values, what: str, allow_zero: bool = False) -> None:
 
 
 def angles(where: Where, values, what: str) -> list[float]:
+    if not any(values):
+        return list(values)
     for axis, angle in zip(("roll", "pitch", "yaw"), values):
         if abs(angle) > MAX_ANGLE_RAD:
             raise where.error(
@@ -314,7 +327,7 @@ def from_six(ixx, iyy, izz, ixy, ixz, iyz) -> np.ndarray:
 
 
 def check_inertia_range(where: Where, inertia: np.ndarray) -> None:
-    if not np.isfinite(np.sum(np.abs(inertia))):
+    if not np.isfinite(np.abs(inertia).sum()):
         raise where.error(
             f"inertia: numbers too large: the entries (largest {float(np.max(np.abs(inertia))):.3g}) "
             f"add up beyond the largest double, {np.finfo(float).max:.3g}; give the inertia in kg·m²"
@@ -341,11 +354,11 @@ def quaternion_matrix(where: Where, wxyz, what: str) -> np.ndarray:
 
 def unit(where: Where, vector, what: str) -> np.ndarray:
     v = np.asarray(vector, dtype=float)
-    largest = float(np.max(np.abs(v)))
+    largest = float(np.abs(v).max())
     if largest == 0.0:
         raise where.error(f"{what}: must not be the zero vector")
     v = v / largest
-    return v / np.linalg.norm(v)
+    return v / np.sqrt(v.dot(v))  # np.linalg.norm's own arithmetic for a vector
 
 
 def short(text: Any, limit: int = 40) -> str:

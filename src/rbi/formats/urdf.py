@@ -63,7 +63,7 @@ def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel
                 f"{path}: link[{index}] (line {element.line}): name: missing; every link needs a name "
                 "(urdfdom and pybullet refuse it)"
             )
-        where = Where(path, link.label)
+        where = Where(path, link)
         inertial = element.child("inertial")
         if inertial is not None:
             link.inertial = _inertial(where, inertial)
@@ -84,7 +84,10 @@ def _origin(where: Where, element, what: str) -> Pose:
     rpy = angles(
         where, numbers(where, origin.get("rpy", "0 0 0"), f"{what}/origin: rpy", 3), f"{what}/origin: rpy"
     )
-    return Pose(rpy_matrix(rpy) if any(rpy) else np.eye(3), np.array(xyz, dtype=float))
+    return Pose(rpy_matrix(rpy) if any(rpy) else _IDENTITY.copy(), np.array(xyz, dtype=float))
+
+
+_IDENTITY = np.eye(3)
 
 
 def _inertial(where: Where, inertial) -> Inertial:
@@ -171,7 +174,7 @@ def _joints(model: RobotModel, root) -> None:
     by_name = {link.name: link for link in model.links if link.name is not None}
     for index, element in enumerate(root.all("joint")):
         name = element.get("name")
-        where = Where(path, f"joint[{index}]" + (f" ({short(name)})" if name is not None else ""))
+        where = Where(path, lambda index=index, name=name: _joint_label(index, name))
         if not name:
             raise where.error("name: missing; every joint needs a name (urdfdom refuses it)")
         parent, child = element.child("parent"), element.child("child")
@@ -214,6 +217,10 @@ def _joints(model: RobotModel, root) -> None:
         link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3), effort_limit=effort)]
     check_unique_joint_names(model, "urdfdom")
     _check_tree(model)
+
+
+def _joint_label(index: int, name: str | None) -> str:
+    return f"joint[{index}]" + (f" ({short(name)})" if name is not None else "")
 
 
 def _check_tree(model: RobotModel) -> None:

@@ -178,7 +178,16 @@ class AuditReport(TableRepr):
             "robot": self.model.name,
             "format": self.model.format,
             "units": {"length": "m", "mass": "kg"},
-            "links": [_link_dict(each) for each in self.links],
+            "links": [
+                _link_dict(each, declared, geometry)
+                for each, declared, geometry in zip(
+                    self.links,
+                    _moments_in_bulk([each.declared for each in self.links]),
+                    _moments_in_bulk(
+                        [None if e.geometry is None else e.geometry.properties for e in self.links]
+                    ),
+                )
+            ],
             "total": {
                 "mass": self.total.mass,
                 "center_of_mass": self.total.center_of_mass,
@@ -200,14 +209,16 @@ class AuditReport(TableRepr):
         }
 
 
-def _link_dict(each: LinkAudit) -> dict[str, Any]:
+def _link_dict(each: LinkAudit, declared_moments=None, geometry_moments=None) -> dict[str, Any]:
+    """One link's JSON (``declared_moments``/``geometry_moments``: their :func:`_moments`, when
+    already worked out)."""
     declared = geometry = None
     if each.declared is not None:
         declared = {
             "mass": each.declared.mass,
             "center_of_mass": each.declared.center_of_mass,
             "inertia_about_com": each.declared.inertia_about_com,
-            "moments": _moments(each.declared),
+            "moments": _moments(each.declared) if declared_moments is None else declared_moments,
         }
     if each.geometry is not None:
         g = each.geometry
@@ -216,7 +227,9 @@ def _link_dict(each: LinkAudit) -> dict[str, Any]:
             "mass": g.mass,
             "center_of_mass": g.center_of_mass,
             "inertia_about_com": g.inertia_about_com,
-            "moments": None if g.properties is None else _moments(g.properties),
+            "moments": None
+            if g.properties is None
+            else (_moments(g.properties) if geometry_moments is None else geometry_moments),
             "implied_density": g.implied_density,
             "source": g.source,
         }
@@ -244,6 +257,22 @@ def _moments(properties: MassProperties) -> np.ndarray:
 
 
 _OFF_DIAGONAL = ~np.eye(3, dtype=bool)
+
+
+def _moments_in_bulk(found: list[MassProperties | None]) -> list[np.ndarray | None]:
+    """:func:`_moments` of each of ``found`` (None for None): the diagonal ones sorted on one
+    (n, 3) stack (the same stable sort of the same numbers), the others one by one."""
+    moments: list[np.ndarray | None] = [None] * len(found)
+    rows = [i for i, each in enumerate(found) if each is not None]
+    if not rows:
+        return moments
+    stack = np.array([found[i].inertia_about_com for i in rows]).reshape(-1, 3, 3)
+    diagonal = np.diagonal(stack, axis1=1, axis2=2)
+    sortable = ~np.any(stack[:, _OFF_DIAGONAL], axis=1) & np.all(np.abs(diagonal) < 1e300, axis=1)
+    ordered = np.take_along_axis(diagonal, np.argsort(diagonal, axis=1, kind="stable"), axis=1)
+    for k, i in enumerate(rows):
+        moments[i] = ordered[k] if sortable[k] else _moments(found[i])
+    return moments
 
 
 def material_density(material: str | None, density: float | None) -> float | None:
@@ -495,7 +524,7 @@ def _geometry_rows(
             mass = None
         properties = None
         if mass is not None:
-            properties = MassProperties(mass, com[k], inertia[k] * (mass / volume), "link")
+            properties = MassProperties.of_arrays(mass, com[k].copy(), inertia[k] * (mass / volume), "link")
         implied = mass / volume if mass is not None else None
         found[row] = GeometryProps(properties, com[k], volume, implied, low[k], high[k], chosen[row][1])
     return found
