@@ -35,7 +35,7 @@ from rbi.core.rotation import (
     compose_world_rotations,
     matrix_to_quaternion,
 )
-from rbi.errors import ArgumentError, SpecError
+from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
@@ -212,6 +212,8 @@ def validate(
     packages = parse_package_paths(package_paths)
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
+    if not isinstance(paths, Sequence) or not all(isinstance(p, (str, os.PathLike)) for p in paths):
+        raise TypeError(f"paths: expected a path (str or os.PathLike) or a list of them, got {paths!r:.80}")
     return [file_problems(os.fspath(path), packages) for path in paths]
 
 
@@ -1085,7 +1087,7 @@ def sweep(
     settings = SweepSettings(*grid, max_steps, workers, dask, mass_properties, check_budget, spin_axis)
     check_settings(settings)
     path, raw = _spec_source(body)
-    target = None if out is None else _output(out, ("csv", "parquet"), path)
+    target = None if out is None else _output(out, ("csv", "parquet"), path, "out")
     study = Study(path, raw, settings, rows_printed=out is None)
     return SweepTable(study, study.run(target, resume, progress))
 
@@ -1158,7 +1160,7 @@ def audit(
 
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
-    target = None if out is None else _output(out, ("urdf", "sdf", "xml"), _robot_path(robot_file))
+    target = None if out is None else _output(out, ("urdf", "sdf", "xml"), _robot_path(robot_file), "out")
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, material=material)
     settings |= dict(density=density, mesh_inertia=mesh_inertia, joints=joints, mesh_repair=mesh_repair)
@@ -1369,12 +1371,24 @@ Destination = str | os.PathLike[str] | OutputTarget
 `output_target` has already checked (a caller's own messages then name it)."""
 
 
-def _output(path: Destination, formats: tuple[str, ...], read: str | os.PathLike[str]) -> OutputTarget:
+def _output(
+    path: Destination, formats: tuple[str, ...], read: str | os.PathLike[str], name: str = "path"
+) -> OutputTarget:
     """``path`` checked as an output of one of ``formats`` (its extension) by rbi's one checked
-    writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file)."""
+    writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file).
+    ArgumentError naming the parameter ``name`` when it may not be written there."""
     if isinstance(path, OutputTarget):
         return path
-    return output_target(os.fsdecode(os.fspath(path)), "path", formats, inputs=[os.fsdecode(os.fspath(read))])
+    if not isinstance(path, (str, bytes, os.PathLike)):
+        raise TypeError(f"{name}: expected a path (str or os.PathLike), got {type(path).__name__}")
+    try:
+        return output_target(
+            os.fsdecode(os.fspath(path)), name, formats, inputs=[os.fsdecode(os.fspath(read))]
+        )
+    except ArgumentError:
+        raise
+    except SpecError as exc:
+        raise ArgumentError(name, literal(str(exc).removeprefix(f"{name}: "), quoted=False)) from None
 
 
 def show(body: Body, path: Destination, *, title: str | None = None) -> int:

@@ -139,3 +139,31 @@ def test_the_command_line_names_its_options_for_the_same_errors(tmp_path, args, 
         proc = run_rbi_inprocess("audit", str(path), "--format", form, *args)
         assert proc.returncode == 2 and proc.stderr.startswith(line), proc.stderr
         assert len(proc.stderr.strip().splitlines()) == 1 and proc.stdout == ""
+
+
+@pytest.mark.parametrize(
+    "call, head",
+    [
+        (lambda body, tmp: rbi.sweep(body, spin=[1.0], duration=0.01, out=tmp / "runs.txt"), "out: "),
+        (lambda body, tmp: rbi.sweep(body, spin=[1.0], duration=0.01, out=BODIES / "top.yaml"), "out: "),
+        (lambda body, tmp: rbi.sweep(body, spin=[1.0], duration=0.01, dask="nohost:1"), "dask: 'nohost:1'"),
+        (lambda body, tmp: rbi.show(body, tmp / "picture.txt"), "path: "),
+    ],
+)
+def test_output_and_scheduler_arguments_are_named_as_the_api_spells_them(top, tmp_path, call, head):
+    """``out=`` of sweep is ``out`` (it was ``path``), ``dask=`` is ``dask`` (it was ``--dask``):
+    a ValueError, and nothing is written."""
+    with pytest.raises(ValueError) as caught:
+        call(top, tmp_path)
+    assert str(caught.value).startswith(head) and "--" not in str(caught.value), str(caught.value)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_audit_out_and_validate_paths_are_named(tmp_path):
+    path = tmp_path / "arm.urdf"
+    path.write_text(ARM)
+    with pytest.raises(ValueError, match="^out: .*cannot write '.txt'"):
+        rbi.audit(path, fix=True, out=tmp_path / "fixed.txt")
+    with pytest.raises(TypeError, match="^paths: expected a path"):
+        rbi.validate(5)
+    assert not (tmp_path / "fixed.txt").exists()

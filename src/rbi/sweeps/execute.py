@@ -16,7 +16,7 @@ from collections.abc import Callable
 from concurrent.futures import ThreadPoolExecutor
 from typing import Any
 
-from rbi.errors import InputError
+from rbi.errors import ArgumentError, InputError, literal
 
 Rows = list[list[Any]]
 
@@ -164,9 +164,10 @@ def check_address(address: str) -> None:
         return
     found = _ADDRESS.fullmatch(address)
     if found is None or not 0 < int(found.group(3)) < 65536:
-        raise InputError(
-            f"--dask: {address!r} is not a scheduler address: give local, tcp://HOST:PORT or "
-            "tls://HOST:PORT (e.g. tcp://10.0.0.5:8786)"
+        raise ArgumentError(
+            "dask",
+            f"{literal(address)} is not a scheduler address: give local, tcp://HOST:PORT or "
+            "tls://HOST:PORT (e.g. tcp://10.0.0.5:8786)",
         )
     if found.group(1) == "tls":
         # dask: optional (the 'dask' extra), imported only when used
