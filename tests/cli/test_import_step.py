@@ -88,12 +88,30 @@ def test_json_and_csv_list_the_solids(tmp_path, kit):
     [
         (["--material", "stel"], ["--material", "did you mean 'steel'"]),
         (["--density", "-1"], ["--density", "positive"]),
-        (["--density", "1", "--material", "steel"], ["give one of them"]),
+        (["--density", "1", "--material", "steel"], ["--density and --material: give one of them"]),
         (["--link", "x"], ["--link", "solids, not links"]),
     ],
 )
 def test_bad_options_are_one_line(kit, args, words):
     one_line_exit_2(run_rbi_inprocess("import", str(kit), *args), *words)
+
+
+@pytest.mark.parametrize(
+    ("settings", "head"),
+    [
+        ({"density": 1.0, "material": "steel"}, "density and material: give one of them"),
+        ({"density": -1.0}, "density: must be a positive number"),
+        ({"density": "x"}, "density: must be a positive number"),
+        ({"material": "stel"}, "material: unknown material 'stel'"),
+    ],
+)
+def test_the_api_names_its_parameters_with_a_value_error(kit, settings, head):
+    """rbi.api.import_step: a bad density or material is a ValueError naming the parameter."""
+    from rbi.api import import_step
+
+    with pytest.raises(ValueError) as caught:
+        import_step(kit, **settings)
+    assert str(caught.value).startswith(head) and "--" not in str(caught.value)
 
 
 def test_bad_files_are_one_line(tmp_path):

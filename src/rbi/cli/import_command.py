@@ -137,12 +137,7 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
 
         target = output_target(out, "--out", ("yaml", "yml"), inputs=[file])
     home = os.path.dirname(os.path.abspath(out)) if out is not None else None
-    try:
-        imported = import_step(file, density=density, material=material, relative_to=home)
-    except SpecError as exc:
-        if exc.field in ("density", "material"):
-            raise SpecError(f"--{exc}") from None
-        raise
+    imported = import_step(file, density=density, material=material, relative_to=home)
     if format is not OutputFormat.table:
         _emit_step_listing(format, file, imported)
     if target is not None:

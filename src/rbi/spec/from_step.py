@@ -10,7 +10,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from rbi.errors import InputError
+from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.step import read_step
 from rbi.spec.materials import canonical_name, density_in_units, unknown_material_message
 from rbi.spec.yaml_writer import comment, dump
@@ -60,13 +60,16 @@ def import_step(
     parameter's name), or the file unreadable (starting with ``path``)."""
 
     if density is not None and material is not None:
-        raise InputError("density, material: give one of them, not both", field="density")
+        raise ArgumentError(("density", "material"), "give one of them, not both")
     if density is not None and not (
-        isinstance(density, int | float) and math.isfinite(density) and density > 0
+        isinstance(density, int | float)
+        and not isinstance(density, bool)
+        and math.isfinite(density)
+        and density > 0
     ):
-        raise InputError(f"density: must be a positive number (kg/m³), got {density!r}", field="density")
-    if material is not None and canonical_name(material) is None:
-        raise InputError(f"material: {unknown_material_message(material)}", field="material")
+        raise ArgumentError("density", f"must be a positive number (kg/m³), got {literal(density)}")
+    if material is not None and (not isinstance(material, str) or canonical_name(material) is None):
+        raise ArgumentError("material", literal(unknown_material_message(str(material)), quoted=False))
     home = os.path.abspath(relative_to) if relative_to is not None else os.getcwd()
     file = os.path.abspath(path)
     if not os.path.isfile(file):
