@@ -345,3 +345,25 @@ def test_sdf_frames_that_loop_or_name_nothing_are_one_line_errors(tmp_path, fram
     text = sdf(f'<link name="l"><pose relative_to="a">1 0 0 0 0 0</pose></link>{frames}')
     proc, _ = audit(tmp_path, "m.sdf", text)
     assert proc.returncode == 2 and words in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
+
+
+@pytest.mark.parametrize("extra", ["", ' settotalmass="3"', ' boundinertia="0.003"'])
+def test_mjcf_balanceinertia_evens_out_moments_as_mujoco_does(tmp_path, extra):
+    """``<compiler balanceinertia="true">``: a body whose moments break the triangle inequality
+    (0.0008, 0.0012, 0.005 kg·m²) gets their mean as all three, before settotalmass scales it and
+    after boundinertia raises it; a body that satisfies it is left alone."""
+    mujoco = pytest.importorskip("mujoco")
+    text = (
+        f'<mujoco><compiler balanceinertia="true"{extra}/><worldbody><body name="a"><joint type="hinge"/>'
+        '<inertial pos="0.1 0 0" mass="0.1" fullinertia="0.001 0.001 0.005 0.0002 0 0"/></body>'
+        '<body name="b" pos="1 0 0"><joint type="hinge"/><geom type="box" size="0.1 0.2 0.3" mass="0.2"/></body>'
+        "</worldbody></mujoco>"
+    )
+    (tmp_path / "m.xml").write_text(text)
+    model = mujoco.MjModel.from_xml_path(str(tmp_path / "m.xml"))
+    proc, result = audit(tmp_path, "m.xml", text)
+    assert proc.returncode == 0, proc.stderr
+    for body, link in enumerate(result["links"], start=1):
+        assert link["declared"]["mass"] == pytest.approx(model.body_mass[body], rel=1e-12)
+        np.testing.assert_allclose(link["declared"]["moments"], np.sort(model.body_inertia[body]), rtol=1e-12)
+        assert "unphysical" not in [f["code"] for f in link["flags"]]

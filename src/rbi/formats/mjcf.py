@@ -4,7 +4,7 @@ geoms and the mass properties the compiler gives them.
 What is honoured:
 - ``<include file>`` (relative to the main file's folder, under the spec path rules), nested;
 - ``<compiler angle eulerseq meshdir assetdir inertiafromgeom inertiagrouprange settotalmass
-  boundmass boundinertia>``;
+  boundmass boundinertia balanceinertia>``;
 - ``<default>`` classes (nested, ``class`` and ``childclass``), ``<frame>``;
 - orientations ``quat``, ``axisangle``, ``euler``, ``xyaxes``, ``zaxis`` (``angle`` in degrees by
   default, as MuJoCo); ``fromto`` for capsule, cylinder, box and ellipsoid geoms;
@@ -79,6 +79,7 @@ class Compiler:
         self.settotalmass = -1.0
         self.boundmass = 0.0
         self.boundinertia = 0.0
+        self.balanceinertia = False
 
     def read(self, where: Where, element) -> None:
         angle = element.get("angle")
@@ -111,6 +112,11 @@ class Compiler:
         self.boundinertia = number(
             where, element.get("boundinertia"), "compiler: boundinertia", self.boundinertia
         )
+        balance = element.get("balanceinertia")
+        if balance is not None:
+            if balance not in ("true", "false"):
+                raise where.error(f"compiler: balanceinertia: {short(balance)!r}: must be true or false")
+            self.balanceinertia = balance == "true"
         if element.get("coordinate") == "global":
             raise where.error(
                 'compiler: coordinate="global": global coordinates are no longer read by MuJoCo; '
@@ -607,6 +613,8 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
                 link.inertial = None
         if link.inertial is not None and (compiler.boundmass > 0 or compiler.boundinertia > 0):
             _bound(link, compiler)
+        if link.inertial is not None and compiler.balanceinertia:
+            _balance(link)
     if compiler.settotalmass > 0:
         total = sum(link.inertial.mass for link in model.links if link.inertial is not None)
         if total > 0:
@@ -627,6 +635,20 @@ def _sum(pieces: list[MassProperties]) -> MassProperties:
         return MassProperties.sum(pieces)
     except ValueError:
         return MassProperties.zero("link")
+
+
+def _balance(link: Link) -> None:
+    """``<compiler balanceinertia="true">``: a body whose principal moments break the triangle
+    inequality (one larger than the sum of the other two) gets their mean as all three, as
+    MuJoCo's compiler does (kg·m², about the body's centre of mass)."""
+    inertial = link.inertial
+    a, b, c = np.linalg.eigvalsh(inertial.properties.inertia_about_com)
+    if a + b < c or a + c < b or b + c < a:
+        mean = (a + b + c) / 3.0
+        com = inertial.properties.center_of_mass
+        link.inertial = Inertial.read(
+            inertial.mass, com, mean * np.eye(3), element=inertial.element, source=inertial.source
+        )
 
 
 def _bound(link: Link, compiler: Compiler) -> None:
