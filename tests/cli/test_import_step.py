@@ -59,6 +59,12 @@ def test_out_writes_the_file_path_relative_to_the_spec(tmp_path, kit, monkeypatc
     proc = run_rbi_inprocess("import", "kit.step", "--density", "1000", "--out", "specs/kit.yaml")
     assert proc.returncode == 0, proc.stderr
     assert "file: '../kit.step'" in (tmp_path / "specs" / "kit.yaml").read_text()
+    # reading it back needs --allow-outside-paths, and the import says so; beside the file, no note
+    assert "--allow-outside-paths" in proc.stderr and "../kit.step" in proc.stderr
+    refused = run_rbi_inprocess("inertia", "specs/kit.yaml", "--format", "json")
+    assert refused.returncode == 2 and "--allow-outside-paths" in refused.stderr
+    beside = run_rbi_inprocess("import", "kit.step", "--density", "1000", "--out", "kit.yaml")
+    assert beside.returncode == 0 and "note" not in beside.stderr, beside.stderr
     back = run_rbi_inprocess("inertia", "specs/kit.yaml", "--format", "json", "--allow-outside-paths")
     assert back.returncode == 0, back.stderr
     assert json.loads(back.stdout)["mass"] == pytest.approx(

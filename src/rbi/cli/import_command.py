@@ -138,6 +138,13 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
         target = output_target(out, "--out", ("yaml", "yml"), inputs=[file])
     home = os.path.dirname(os.path.abspath(out)) if out is not None else None
     imported = import_step(file, density=density, material=material, relative_to=home)
+    named = {str(part.get("file", "")) for part in imported.spec.get("parts", [])}
+    outside = sorted(n for n in named if os.path.isabs(n) or n.split("/")[0] == "..")
+    if target is not None and outside:
+        say(
+            f"note: {terminal_safe(str(out))} names {terminal_safe(outside[0])}, outside its folder: "
+            "read it back with --allow-outside-paths, or save the spec beside the STEP file"
+        )
     if format is not OutputFormat.table:
         _emit_step_listing(format, file, imported)
     if target is not None:
