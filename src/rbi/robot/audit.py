@@ -558,7 +558,8 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
         physical[declared] = _certainly_physical(stack)
         written = np.array([links[i].link.inertial.written_inertia for i in declared]).reshape(-1, 3, 3)
         maybe_placeholder[declared] = _maybe_placeholder(written)
-    known = [_Known(bool(a), bool(b), None) for a, b in zip(physical.tolist(), maybe_placeholder.tolist())]
+    eighs: list = [None] * len(links)
+    geometry: list = [(None, None, False)] * len(links)  # ratios, com_offset, clean
     usable = [
         i
         for i, each in enumerate(links)
@@ -570,15 +571,18 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
         moments, axes = np.linalg.eigh(stack[finite])
         chosen = np.array(usable)[finite].tolist()
         for row, i in enumerate(chosen):
-            known[i] = known[i]._replace(geometry_eigh=(moments[row], axes[row]))
-        _geometry_in_bulk(links, known, chosen, moments, axes)
-    return known
+            eighs[i] = (moments[row], axes[row])
+        _geometry_in_bulk(links, geometry, chosen, moments, axes)
+    return [
+        _Known(a, b, c, *d)
+        for a, b, c, d in zip(physical.tolist(), maybe_placeholder.tolist(), eighs, geometry)
+    ]
 
 
-def _geometry_in_bulk(links, known: list[_Known], chosen: list[int], moments, axes) -> None:
+def _geometry_in_bulk(links, found: list[tuple], chosen: list[int], moments, axes) -> None:
     """:func:`_geometry_flags`'s ratios, centre-of-mass offset and whether it would flag anything,
-    for the ``chosen`` links that declare an inertial (their geometry's eigen-decompositions
-    ``moments``, ``axes``), on stacks: the same operations element by element (einsum and
+    into ``found`` (link → (ratios, com_offset, clean)), for the ``chosen`` links that declare an
+    inertial (their geometry's eigen-decompositions ``moments``, ``axes``), on stacks: the same operations element by element (einsum and
     matmul make the same calls per matrix of a stack), so the same numbers."""
     rows = [row for row, i in enumerate(chosen) if links[i].declared is not None]
     if not rows:
@@ -608,7 +612,7 @@ def _geometry_in_bulk(links, known: list[_Known], chosen: list[int], moments, ax
             density is None or low_density <= density <= high_density
         )
         com_offset = float(offset[row]) if size[row] > 0 else None
-        known[i] = known[i]._replace(ratios=ratios[row], com_offset=com_offset, clean=clean)
+        found[i] = (ratios[row], com_offset, clean)
 
 
 def _norms(rows: np.ndarray) -> np.ndarray:
