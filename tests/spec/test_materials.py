@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+import re
 
 import pytest
 
@@ -65,3 +66,26 @@ def test_unknown_material_suggests_the_closest_name(write_spec):
         in message
     )
     assert "steel, stainless steel" in message
+
+
+def test_material_is_another_way_to_write_a_material_density(write_spec):
+    """``material: NAME`` on a solid part (as the contract lists it beside mass and density):
+    a 10 mm steel cube in a mm/g file weighs 7.85 g, as ``density: steel`` does (a handbook
+    figure, not rbi's); with mass or density too, on a point, or misspelt, one line naming it."""
+    cube = "{name: b, shape: box, size: [10, 10, 10], center: [0, 0, 0], %s}"
+    for field in ("material: steel", "material: Stainless_Steel", "density: steel"):
+        path = write_spec("units: {length: mm, mass: g}\nparts:\n  - " + cube % field + "\n")
+        expected = 8.0 if "Stainless" in field else 7.85
+        assert load_body(path).props.mass == pytest.approx(expected, rel=1e-12), field
+    for field, words in (
+        ("material: steel, density: 2", "parts[0] (b): material, density: give one of them"),
+        ("material: steel, mass: 2", "parts[0] (b): material, mass: give one of them"),
+        ("material: stel", "parts[0] (b): material: unknown material 'stel' (did you mean 'steel'?)"),
+        ("material: 7", "parts[0] (b): material: unknown material '7'"),
+    ):
+        path = write_spec("parts:\n  - " + cube % field + "\n")
+        with pytest.raises(InputError, match=re.escape(words)):
+            load_body(path)
+    point = write_spec("parts:\n  - {name: p, shape: point, position: [0, 0, 0], material: steel}\n")
+    with pytest.raises(InputError, match=re.escape("parts[0] (p): material: unknown field")):
+        load_body(point)

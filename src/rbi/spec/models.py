@@ -25,6 +25,7 @@ from pydantic import (
 
 from rbi.spec.expect import Expect
 from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
+from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 
 PositiveVector3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
 
@@ -108,6 +109,28 @@ class _Solid(_Part):
         description="Mass per length³ in the file's units, or a built-in material name; give this or mass.",
     )
     subtract: Flag = Field(False, description="Remove this solid's material (a hole) instead of adding it.")
+    material: str | None = Field(
+        None,
+        description="A built-in material name (steel, aluminium 6061, ...): the same as density: NAME.",
+        json_schema_extra={"enum": sorted(set(MATERIAL_DENSITIES_SI) | set(ALIASES))},
+    )
+
+    @model_validator(mode="before")
+    @classmethod
+    def _material_is_a_density(cls, data: Any):
+        """``material: NAME`` is another way to write ``density: NAME`` (a built-in material,
+        stored in kg/m³ and converted to the file's units): the part keeps one density."""
+        if not isinstance(data, dict) or data.get("material") is None:
+            return data
+        data = dict(data)
+        material = data.pop("material")
+        for other in ("density", "mass"):
+            if data.get(other) is not None:
+                raise ValueError(f"material, {other}: give one of them (material: NAME is density: NAME)")
+        if not isinstance(material, str) or canonical_name(material) is None:
+            raise ValueError(f"material: {unknown_material_message(str(material))}")
+        data["density"] = material
+        return data
 
     @model_validator(mode="after")
     def _mass_or_density(self):
