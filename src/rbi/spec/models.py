@@ -25,7 +25,7 @@ from pydantic import (
 
 from rbi.spec.expect import Expect
 from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
-from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
+from rbi.spec.materials import canonical_name, unknown_material_message
 
 PositiveVector3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
 
@@ -112,7 +112,6 @@ class _Solid(_Part):
     material: str | None = Field(
         None,
         description="A built-in material name (steel, aluminium 6061, ...): the same as density: NAME.",
-        json_schema_extra={"enum": sorted(set(MATERIAL_DENSITIES_SI) | set(ALIASES))},
     )
 
     @model_validator(mode="before")
