@@ -282,8 +282,6 @@ def _expanded(document):
             for each in included.iter():
                 each.source = str(target)
             expand(included, chain | {key})
-            for each in included.children:
-                each.parent = element
             out.extend(included.children)
         element.children = out
 

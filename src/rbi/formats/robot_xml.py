@@ -72,7 +72,9 @@ class XmlElement:
     directly inside it (stripped), ``children`` in order, and its span ``start:end`` in
     :attr:`XmlDocument.text` (UTF-8 bytes) from ``<`` to the closing ``>``; ``line`` is 1-based.
     ``end`` and ``text`` are worked out when first asked for (a robot file has a million elements
-    and most are never asked)."""
+    and most are never asked). An element holds no link to its parent, so a tree has no reference
+    cycle and is freed as soon as it is dropped (a cycle per element left a 100,000-link file's
+    tree to the cycle collector: seconds of CPU when a process drops it or exits)."""
 
     __slots__ = (
         "tag",
@@ -80,17 +82,14 @@ class XmlElement:
         "line",
         "start",
         "children",
-        "parent",
         "source",
         "_pieces",
         "_close",
         "_bytes",
     )
 
-    def __init__(
-        self, tag: str, attributes: list[str], line: int, start: int, parent: XmlElement | None = None
-    ):
-        self.tag, self.line, self.start, self.parent = tag, line, start, parent
+    def __init__(self, tag: str, attributes: list[str], line: int, start: int):
+        self.tag, self.line, self.start = tag, line, start
         self._attributes = attributes  # name, value, name, value, ... as written (half a dict's memory)
         self.children: list[XmlElement] = _NO_CHILDREN  # replaced by a list at the first child
         self.source: str | None = None
@@ -336,7 +335,7 @@ class _TreeBuilder:
         if "}" in tag:
             tag = tag.rsplit("}", 1)[-1]
         parent = stack[-1] if stack else None
-        element = XmlElement(tag, attributes, parser.CurrentLineNumber, parser.CurrentByteIndex, parent)
+        element = XmlElement(tag, attributes, parser.CurrentLineNumber, parser.CurrentByteIndex)
         element._bytes = self.text
         if parent is not None:
             if parent.children is _NO_CHILDREN:
