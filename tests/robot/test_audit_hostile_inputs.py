@@ -70,6 +70,14 @@ def test_a_fifo_where_a_mesh_should_be_is_refused_at_once(tmp_path):
     )
 
 
+@pytest.mark.parametrize("command", ["audit", "import"])
+def test_a_fifo_given_as_the_robot_file_is_refused_in_plain_words(tmp_path, command):
+    os.mkfifo(tmp_path / "r.urdf")
+    proc = run_rbi_inprocess(command, str(tmp_path / "r.urdf"))
+    one_line_exit_2(proc, "not a regular file but a FIFO (named pipe); give a robot file")
+    assert "file file" not in proc.stderr
+
+
 @pytest.mark.parametrize(
     "inertia, size",
     [("1e308", "0.2 0.1 0.05"), ("1", "1e200 1e200 1e200"), ("1e-300", "1e-120 1e-120 1e-120")],

@@ -157,7 +157,8 @@ def read_input_file(path: str | os.PathLike, limit: int, what: str, hint: str = 
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
-            raise InputFileRefused(f"not a regular file but a {kind(info.st_mode)}; give a {what} file")
+            noun = what if what.endswith("file") else f"{what} file"
+            raise InputFileRefused(f"not a regular file but a {kind(info.st_mode)}; give a {noun}")
         if _NONBLOCK:
             os.set_blocking(fd, True)
         data = _read_at_most(fd, limit)
