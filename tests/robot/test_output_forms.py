@@ -97,3 +97,28 @@ def test_every_form_of_audit_on_the_fixed_copy(tmp_path, path, options):
     _no_internal_error(proc)
     assert fixed.exists()
     assert _three_forms(str(fixed), *options) == _three_forms(path, *options)
+
+
+def test_a_moment_the_geometry_cannot_give_is_null_in_json_and_empty_in_csv(tmp_path):
+    """A 1 µm-radius, 1 m cylinder: its moment about its own axis (m r²/2 = 5e-13 kg·m² for 1 kg)
+    is too small to divide by, so that ratio is '-' in the table. JSON and CSV once refused the
+    whole result as 'not finite' (exit 2) where the table printed (exit 0)."""
+    path = tmp_path / "thin.urdf"
+    path.write_text(
+        '<robot name="thin"><link name="base"><inertial><mass value="1"/>'
+        '<inertia ixx="0.1" iyy="0.1" izz="0.1" ixy="0" ixz="0" iyz="0"/></inertial>'
+        '<collision><geometry><cylinder radius="1e-6" length="1"/></geometry></collision>'
+        "</link></robot>"
+    )
+    table = run_rbi_inprocess("audit", str(path))
+    assert table.returncode == 0, table.stderr
+    assert "-, 1.2, 1.2 ×" in table.stdout
+    proc = run_rbi_inprocess("audit", str(path), "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    ratios = json.loads(proc.stdout)["links"][0]["moment_ratios"]
+    # declared 0.1 about a transverse axis against the rod's m L²/12 = 1/12: 1.2
+    assert ratios[0] is None and ratios[1:] == pytest.approx([1.2, 1.2], rel=1e-9)
+    proc = run_rbi_inprocess("audit", str(path), "--format", "csv")
+    assert proc.returncode == 0, proc.stderr
+    row = next(csv.DictReader(io.StringIO(proc.stdout)))
+    assert row["ratio_1"] == "" and float(row["ratio_2"]) == pytest.approx(1.2, rel=1e-9)

@@ -238,7 +238,8 @@ def _link_dict(each: LinkAudit, declared_moments=None, geometry_moments=None) ->
         "index": each.link.index,
         "declared": declared,
         "geometry": geometry,
-        "moment_ratios": each.ratios,
+        # a ratio the geometry cannot give (its moment about that axis is ~0) is null, as "-" in the table
+        "moment_ratios": None if each.ratios is None else [None if r != r else float(r) for r in each.ratios],
         "com_offset": each.com_offset,
         "flags": [flag.as_dict() for flag in each.flags],
     }
