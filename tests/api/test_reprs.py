@@ -67,3 +67,19 @@ def test_trajectory_as_a_table(bolted):
     html = run._repr_html_()
     assert html.startswith("<table>") and "final tilt of body z" in html and "21" in html
     assert "21 samples" in repr(run)
+
+
+def test_audit_report_shows_as_a_table_and_repr_is_one_line(tmp_path):
+    """The audit report: a rich table and HTML naming each link, and a one-line repr (the
+    dataclass's own printed the whole robot file's text, 3 kB here, 10 MB for a big robot)."""
+    text = (
+        '<robot name="arm"><link name="base"/><link name="upper"><inertial><origin xyz="0.5 0 0"/>'
+        '<mass value="2"/><inertia ixx="0.01" iyy="0.2" izz="0.2" ixy="0" ixz="0" iyz="0"/></inertial></link>'
+        '<joint name="shoulder" type="revolute"><parent link="base"/><child link="upper"/><axis xyz="0 1 0"/>'
+        '<limit effort="100" velocity="1" lower="-3" upper="3"/></joint></robot>' + "<!-- padding -->" * 200
+    )
+    (tmp_path / "arm.urdf").write_text(text)
+    report = rbi.audit(tmp_path / "arm.urdf")
+    line = repr(report)
+    assert "\n" not in line and len(line) < 200 and "2 links" in line and "1 joints" in line, line
+    assert "upper" in rendered(report) and "upper" in report._repr_html_()

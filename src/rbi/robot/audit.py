@@ -132,7 +132,7 @@ class LinkAudit:
         return None if self.ratios is None else _worst_ratio(self.ratios)
 
 
-@dataclass
+@dataclass(repr=False)
 class AuditReport(TableRepr):
     """What ``rbi audit`` found: the model read, one :class:`LinkAudit` per link, the totals,
     ``notes`` (what was read but not checked, inertials MuJoCo ignores) and the options used.
@@ -158,6 +158,15 @@ class AuditReport(TableRepr):
     @property
     def exit_code(self) -> int:
         return 1 if self.has_error else 0
+
+    def __repr__(self) -> str:
+        """One line (the dataclass's own repr would print the whole robot file's text)."""
+        errors = sum(1 for link in self.links if link.has_error)
+        warnings = sum(1 for link in self.links if link.flags and not link.has_error)
+        return (
+            f"<rbi.AuditReport {self.model.path!r} ({self.model.format}): {len(self.links)} links, "
+            f"{len(self.joints)} joints, {errors} with errors, {warnings} with warnings>"
+        )
 
     def _table(self) -> tuple[str, list[list[str]], tuple[str, ...]]:
         """Each link's declared mass and its flags (notebook and rich reprs)."""
