@@ -118,6 +118,34 @@ def test_fixed_urdf_loads_in_pinocchio_and_every_other_byte_is_kept(tmp_path):
     )
 
 
+def test_a_file_with_windows_line_ends_keeps_them_in_the_replaced_inertials(tmp_path):
+    """CRLF everywhere before, CRLF everywhere after (the inserted lines were LF: mixed line
+    ends); the bytes around the inertial kept; the fixed box's moments are m/12 (b² + c²), ..."""
+    lines = [
+        '<?xml version="1.0"?>',
+        '<robot name="r">',
+        '  <link name="a">',
+        '    <inertial><mass value="6"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial>',
+        '    <collision><geometry><box size="0.1 0.2 0.3"/></geometry></collision>',
+        "  </link>",
+        "</robot>",
+    ]
+    text = ("\r\n".join(lines) + "\r\n").encode()
+    (tmp_path / "r.urdf").write_bytes(text)
+    proc = run_rbi_inprocess("audit", str(tmp_path / "r.urdf"), "--fix", "--out", str(tmp_path / "f.urdf"))
+    assert proc.returncode == 0, proc.stderr
+    fixed = (tmp_path / "f.urdf").read_bytes()
+    assert fixed.count(b"\n") == fixed.count(b"\r\n") > text.count(b"\r\n")
+    start, end = text.index(b"<inertial>"), text.index(b"</inertial>") + len(b"</inertial>")
+    assert fixed.startswith(text[:start].rstrip(b" ")) and fixed.endswith(text[end:])
+    again = run_rbi_inprocess("audit", str(tmp_path / "f.urdf"), "--format", "json")
+    assert again.returncode == 0, again.stderr
+    declared = json.loads(again.stdout)["links"][0]["declared"]
+    np.testing.assert_allclose(
+        declared["moments"], np.sort(6 / 12 * np.array([0.04 + 0.09, 0.01 + 0.09, 0.01 + 0.04])), rtol=1e-12
+    )
+
+
 def test_out_naming_an_included_file_is_refused_and_the_file_kept(tmp_path):
     (tmp_path / "part.xml").write_text(
         '<mujoco><body name="tip" pos="0.3 0 0"><joint type="hinge"/><geom type="sphere" size="0.05"/></body></mujoco>'

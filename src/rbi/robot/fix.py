@@ -158,6 +158,8 @@ def _change(
         step=_step(indent),
     )
     new = f"{comment}\n{indent}{body}" if old else f"\n{indent}{comment}\n{indent}{body}"
+    if text.count(b"\r\n") * 2 > text.count(b"\n"):  # a file with Windows line ends keeps them
+        new = new.replace("\r\n", "\n").replace("\n", "\r\n")
     return Change(each.link.name or each.link.label, reason, old, new, start, end)
 
 
