@@ -355,6 +355,7 @@ def fitted(renderable, console):
     passes unchanged."""
     # not at top level: `rbi inertia --format json` would load rich.console and rich.table too
     from rich.console import Group
+    from rich.segment import Segment, Segments
     from rich.table import Table
 
     if isinstance(renderable, Group):
@@ -362,39 +363,59 @@ def fitted(renderable, console):
     if not isinstance(renderable, Table):
         return renderable
     title, renderable.title = renderable.title, None
-    if not _cells_intact(renderable, console):
+    lines = _lines_if_intact(renderable, console)
+    if lines is None:
         renderable.title = title
         return stacked(renderable, console.width)
-    return Group(_line(title), renderable) if title else renderable
+    body = Segments([segment for line in lines for segment in (*line, Segment.line())])
+    return Group(_line(title), body) if title else body
 
 
-def _cells_intact(table, console) -> bool:
-    """Whether ``table`` at ``console``'s width shows every cell whole on one line (headers may
-    wrap between words, never inside one: a path like ``parts.stem.radius`` stays whole; a
-    cell folded, wrapped or shortened to ``…`` is not whole)."""
+def _lines_if_intact(table, console):
+    """``table`` rendered at ``console``'s width (lines of rich segments) when it shows every
+    cell whole on one line (headers may wrap between words, never inside one: a path like
+    ``parts.stem.radius`` stays whole; a cell folded, wrapped or shortened to ``…`` is not
+    whole), else None. The lines are what gets printed: a table is laid out once."""
     # not at top level: `rbi inertia --format json` would load rich.text too
     from rich.text import Text
 
-    lines = [
-        "".join(segment.text for segment in line)
-        for line in console.render_lines(table, console.options, pad=False)
-    ]
-    for column in table.columns:
-        for cell in column.cells:
-            text = (
-                cell.plain
-                if isinstance(cell, Text)
-                else Text.from_markup(cell).plain
-                if isinstance(cell, str)
-                else None
-            )
-            if text and not any(text in line for line in lines):
-                return False
+    rendered = console.render_lines(table, console.options, pad=False)
+    lines = ["".join(segment.text for segment in line) for line in rendered]
+    rows = zip(*[[_cell_text(cell) for cell in column.cells] for column in table.columns])
+    if not _rows_in_order(rows, lines):
+        return None
     for column in table.columns:
         header = column.header
         header = header.plain if isinstance(header, Text) else Text.from_markup(str(header)).plain
         if any(word and not any(word in line for line in lines) for word in header.split()):
+            return None
+    return rendered
+
+
+def _cell_text(cell) -> str | None:
+    """The text a cell shows (markup read), or None for a renderable that is not text."""
+    # not at top level: `rbi inertia --format json` would load rich.text too
+    from rich.text import Text
+
+    if isinstance(cell, Text):
+        return cell.plain
+    return Text.from_markup(cell).plain if isinstance(cell, str) else None
+
+
+def _rows_in_order(rows, lines: list[str]) -> bool:
+    """Whether each row's non-empty cells all stand whole on one line, the rows' lines in the
+    rows' order (a cell that wrapped, folded or was cut to ``…`` is on no line whole). One pass
+    down the lines: a table of 10,000 rows is checked in linear time."""
+    at = 0
+    for row in rows:
+        cells = [text for text in row if text]
+        if not cells:
+            continue
+        while at < len(lines) and not all(text in lines[at] for text in cells):
+            at += 1
+        if at == len(lines):
             return False
+        at += 1
     return True
 
 
