@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from collections.abc import Callable
 
+from rbi.bench.yaml_load import yaml_load_ratio
+
 Progress = Callable[[str], None]
 
 TARGET = 0.5
@@ -26,10 +28,6 @@ def planned_steps(quick: bool) -> int:
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    try:
-        from rbi.bench.yaml_load import yaml_load_ratio
-    except ImportError as exc:
-        return {"error": f"rbi.bench.yaml_load is not available ({exc})", "target": TARGET, "specs": []}
     specs = []
     for n, shape in cases(quick):
         progress(f"large specs: {n:,} × {shape}")

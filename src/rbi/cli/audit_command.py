@@ -8,6 +8,7 @@ Exit 0 when no link has an error-level flag, 1 when one has (so it gates CI like
 
 from __future__ import annotations
 
+import gc
 import os
 import sys
 from typing import Annotated
@@ -135,7 +136,6 @@ def audit(
     code = report.exit_code
     if out is not None:
         code = 1 if report.fix.unfixable or report.model.unchecked else 0
-    import gc
 
     collecting = gc.isenabled()
     gc.disable()  # as while auditing: a large robot's report is millions of new objects, none garbage

@@ -18,6 +18,7 @@ from rbi.api import SpecError
 from rbi.bench import report, suite
 from rbi.bench.paths import bodies_folder
 from rbi.bench.report import sections
+from rbi.bench.workprecision import plot as draw
 from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import FormatOption, OutputFormat
 from rbi.cli.output import check_distinct, output_target, write_output
@@ -111,8 +112,6 @@ def bench(
     result["headline"] = report.headline(result)
 
     if plot:
-        from rbi.bench.workprecision import plot as draw
-
         write_output(plot_target, writer=lambda temp: draw(result["workprecision"], temp))
     if write_docs:
         link = None
