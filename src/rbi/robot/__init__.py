@@ -71,13 +71,19 @@ def audit(
 def _without_cycle_collection():
     """Python's cycle collector paused while a robot is read and audited: a 100,000-link file
     makes some ten million objects that all live on, and the collector's full passes over them
-    took 16 of 42 s of CPU (issue 25); whatever cycles the audit leaves are collected after."""
+    took 16 of 42 s of CPU (issue 25); whatever cycles the audit leaves are collected after.
+    On resuming, the objects made meanwhile (all in the youngest generation) are moved to the
+    oldest one unscanned (gc.freeze then gc.unfreeze): the first young collection would otherwise
+    walk all of them, 0.6-0.9 of 3.4 s of CPU for 20,000 links; cycles among them are collected
+    by the next full pass instead."""
     collecting = gc.isenabled()
     gc.disable()
     try:
         yield
     finally:
         if collecting:
+            gc.freeze()
+            gc.unfreeze()
             gc.enable()
 
 
