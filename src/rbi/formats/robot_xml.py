@@ -88,14 +88,14 @@ class XmlElement:
         "_bytes",
     )
 
-    def __init__(self, tag: str, attributes: list[str], line: int, start: int):
+    def __init__(self, tag: str, attributes: list[str], line: int, start: int, text: bytes = b""):
         self.tag, self.line, self.start = tag, line, start
         self._attributes = attributes  # name, value, name, value, ... as written (half a dict's memory)
         self.children: list[XmlElement] = _NO_CHILDREN  # replaced by a list at the first child
         self.source: str | None = None
         self._pieces: list[str] | None = None  # character data directly inside, as expat gave it
         self._close = -1  # byte index of the end tag (or of the empty element's one tag)
-        self._bytes = b""  # the document text the indices are in
+        self._bytes = text  # the document text the indices are in
 
     @property
     def text(self) -> str:
@@ -335,8 +335,7 @@ class _TreeBuilder:
         if "}" in tag:
             tag = tag.rsplit("}", 1)[-1]
         parent = stack[-1] if stack else None
-        element = XmlElement(tag, attributes, parser.CurrentLineNumber, parser.CurrentByteIndex)
-        element._bytes = self.text
+        element = XmlElement(tag, attributes, parser.CurrentLineNumber, parser.CurrentByteIndex, self.text)
         if parent is not None:
             if parent.children is _NO_CHILDREN:
                 parent.children = [element]

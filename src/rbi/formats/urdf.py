@@ -115,7 +115,7 @@ def _inertial(where: Where, inertial) -> Inertial:
     has_rpy = any(rpy)
     return Inertial.read(
         mass,
-        np.array(xyz, dtype=float),
+        xyz,
         inertia,
         rotation=rpy_matrix(rpy) if has_rpy else None,
         rpy=tuple(float(a) for a in rpy) if has_rpy else None,
@@ -198,18 +198,8 @@ def _joints(model: RobotModel, root) -> None:
             )
         link.parent = parent_name
         link.origin = _origin(where, element, "joint")
-        axis_element = element.child("axis")
-        axis = (
-            numbers(where, axis_element.get("xyz", "1 0 0"), "axis: xyz", 3)
-            if axis_element is not None
-            else [1, 0, 0]
-        )
         motion_kind = MOVING[kind]
-        axis_vector = (
-            unit(where, axis, "axis: xyz")
-            if motion_kind in ("revolute", "prismatic")
-            else np.array(axis, float)
-        )
+        axis_vector = _axis(where, element.child("axis"), motion_kind in ("revolute", "prismatic"))
         limit = element.child("limit")
         effort = None
         if limit is not None and limit.get("effort") is not None:
@@ -217,6 +207,28 @@ def _joints(model: RobotModel, root) -> None:
         link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3), effort_limit=effort)]
     check_unique_joint_names(model, "urdfdom")
     _check_tree(model)
+
+
+_UNIT_AXES: dict[str, np.ndarray] = {}
+"""Unit axes already worked out, by the ``xyz`` text as written (a large file repeats a few;
+short texts only, at most 1,024 of them)."""
+
+
+def _axis(where: Where, axis_element, to_unit: bool) -> np.ndarray:
+    """A joint's axis (its child link's frame): ``xyz`` as written (default 1 0 0), made a unit
+    vector when ``to_unit`` (revolute and prismatic joints); a new array each call."""
+    if axis_element is None:
+        return unit(where, [1, 0, 0], "axis: xyz") if to_unit else np.array([1, 0, 0], float)
+    text = axis_element.get("xyz", "1 0 0")
+    axis = numbers(where, text, "axis: xyz", 3)
+    if not to_unit:
+        return np.array(axis, float)
+    known = _UNIT_AXES.get(text)
+    if known is None:
+        known = unit(where, axis, "axis: xyz")
+        if len(text) <= 64 and len(_UNIT_AXES) < 1024:
+            _UNIT_AXES[text] = known
+    return known.copy()
 
 
 def _joint_label(index: int, name: str | None) -> str:
