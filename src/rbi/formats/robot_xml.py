@@ -318,35 +318,48 @@ class _TreeBuilder:
 
     def attach(self, parser) -> None:
         parser.AttlistDeclHandler = self.attribute_default
-        parser.StartElementHandler = self.start
-        parser.EndElementHandler = self.end
+        parser.StartElementHandler = self._start_handler()
+        parser.EndElementHandler = self._end_handler()
         parser.CharacterDataHandler = self.characters
         parser.EntityDeclHandler = self.refuse
         parser.UnparsedEntityDeclHandler = self.refuse
         parser.ExternalEntityRefHandler = self.refuse
 
-    def start(self, tag: str, attributes: list[str]) -> None:
-        stack, parser = self.stack, self.parser
-        if len(stack) >= MAX_DEPTH:
-            raise InputError(
-                f"{self.path}: elements nested deeper than {MAX_DEPTH} levels; refused as not a "
-                "plausible robot description"
-            )
-        if "}" in tag:
-            tag = tag.rsplit("}", 1)[-1]
-        parent = stack[-1] if stack else None
-        element = XmlElement(tag, attributes, parser.CurrentLineNumber, parser.CurrentByteIndex, self.text)
-        if parent is not None:
-            if parent.children is _NO_CHILDREN:
-                parent.children = [element]
-            else:
-                parent.children.append(element)
-        elif self.root is None:
-            self.root = element
-        stack.append(element)
+    def _start_handler(self):
+        """expat's start handler: one new :class:`XmlElement` per element, appended to its
+        parent's children (a closure over the stack, parser and text: a file has a million
+        elements, and each attribute lookup on ``self`` is paid a million times)."""
+        stack, parser, text, builder = self.stack, self.parser, self.text, self
 
-    def end(self, _tag: str) -> None:
-        self.stack.pop()._close = self.parser.CurrentByteIndex
+        def start(tag: str, attributes: list[str]) -> None:
+            if len(stack) >= MAX_DEPTH:
+                raise InputError(
+                    f"{builder.path}: elements nested deeper than {MAX_DEPTH} levels; refused as not a "
+                    "plausible robot description"
+                )
+            if "}" in tag:
+                tag = tag.rsplit("}", 1)[-1]
+            element = XmlElement(tag, attributes, parser.CurrentLineNumber, parser.CurrentByteIndex, text)
+            if stack:
+                parent = stack[-1]
+                if parent.children is _NO_CHILDREN:
+                    parent.children = [element]
+                else:
+                    parent.children.append(element)
+            elif builder.root is None:
+                builder.root = element
+            stack.append(element)
+
+        return start
+
+    def _end_handler(self):
+        """expat's end handler: the element's end tag's byte index recorded (its span's end)."""
+        pop, parser = self.stack.pop, self.parser
+
+        def end(_tag: str) -> None:
+            pop()._close = parser.CurrentByteIndex
+
+        return end
 
     def characters(self, data: str) -> None:
         if self.stack:
