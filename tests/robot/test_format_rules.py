@@ -367,3 +367,43 @@ def test_mjcf_balanceinertia_evens_out_moments_as_mujoco_does(tmp_path, extra):
         assert link["declared"]["mass"] == pytest.approx(model.body_mass[body], rel=1e-12)
         np.testing.assert_allclose(link["declared"]["moments"], np.sort(model.body_inertia[body]), rtol=1e-12)
         assert "unphysical" not in [f["code"] for f in link["flags"]]
+
+
+CUBE_OBJ = (
+    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 0 0 1\nv 1 0 1\nv 1 1 1\nv 0 1 1\n"
+    "f 1 3 2\nf 1 4 3\nf 5 6 7\nf 5 7 8\nf 1 2 6\nf 1 6 5\nf 2 3 7\nf 2 7 6\nf 3 4 8\nf 3 8 7\nf 4 1 5\nf 4 5 8\n"
+)
+
+
+@pytest.mark.parametrize("where", ["geom", "mesh"])
+def test_mesh_shell_inertia_only_through_the_mesh_asset_as_mujoco(tmp_path, where):
+    """MuJoCo 4 refuses shellinertia on a mesh geom ('for mesh geoms, inertia should be specified
+    in the mesh asset'); <mesh inertia="shell"> is the way, and gives the unit cube's surface,
+    6 m², times the density as its mass."""
+    mujoco = pytest.importorskip("mujoco")
+    (tmp_path / "cube.obj").write_text(CUBE_OBJ)
+    mesh = (
+        '<mesh name="c" file="cube.obj" inertia="shell"/>'
+        if where == "mesh"
+        else '<mesh name="c" file="cube.obj"/>'
+    )
+    geom_shell = ' shellinertia="true"' if where == "geom" else ""
+    text = (
+        f'<mujoco><asset>{mesh}</asset><worldbody><body name="a"><joint type="hinge"/>'
+        f'<geom type="mesh" mesh="c" density="2"{geom_shell}/></body></worldbody></mujoco>'
+    )
+    path = tmp_path / "m.xml"
+    path.write_text(text)
+    if where == "geom":
+        with pytest.raises(ValueError, match="inertia should be specified in the mesh asset"):
+            mujoco.MjModel.from_xml_path(str(path))
+        for form in ("table", "json", "csv"):
+            proc = run_rbi_inprocess("audit", str(path), "--format", form)
+            assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+            assert "m.xml" in proc.stderr and "shellinertia" in proc.stderr
+    else:
+        model = mujoco.MjModel.from_xml_path(str(path))
+        proc, result = audit(tmp_path, "m.xml", text)
+        assert proc.returncode == 0, proc.stderr
+        assert result["total"]["mass"] == pytest.approx(12.0, rel=1e-12)
+        assert model.body_mass[1] == pytest.approx(12.0, rel=1e-6)

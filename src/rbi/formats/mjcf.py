@@ -529,9 +529,12 @@ class _Bodies:
                 raise where.error(f"mesh: {short(mesh_name)!r}: no <mesh> asset of that name")
             if "error" in asset:
                 raise where.error(f"mesh {short(mesh_name)!r}: {asset['error']}")
-            geom.mesh_file, geom.mesh_scale, geom.mesh_inertia = asset["file"], asset["scale"], asset["mode"]
             if shell:
-                geom.mesh_inertia = "shell"
+                raise where.error(
+                    'shellinertia: a mesh geom takes its inertia mode from its <mesh inertia="...">'
+                    " asset, not from shellinertia (MuJoCo's compiler refuses the model)"
+                )
+            geom.mesh_file, geom.mesh_scale, geom.mesh_inertia = asset["file"], asset["scale"], asset["mode"]
         positive(where, geom.size, "size", allow_zero=True)
         in_group = self.compiler.group_range[0] <= group <= self.compiler.group_range[1]
         self.geoms[link.index].append((geom, in_group))
