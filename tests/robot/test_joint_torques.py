@@ -11,7 +11,8 @@ import os
 import numpy as np
 import pytest
 
-from tests.conftest import run_rbi_inprocess
+import rbi
+from tests.conftest import BODIES, run_rbi_inprocess
 
 ARM = """<robot name="arm">
   <link name="base"/>
@@ -151,3 +152,21 @@ def test_the_joints_table_shows_names_as_text(tmp_path):
     assert proc.returncode == 0, proc.stderr
     assert "[red]elbow\\u202e" in proc.stdout and "\u202e" not in proc.stdout
     assert " 4.905 " in proc.stdout
+
+
+@pytest.mark.parametrize("value", ["1e200", "-1e200", "2e7"])
+def test_a_joint_angle_rounding_would_lose_is_refused_naming_the_file_and_joint(value):
+    """A revolute joint at 1e200 rad is some angle, not the one meant (doubles there are far more
+    than a turn apart): refused like `--tilt 1e300` (at most 1e9 degrees, 1.745e7 rad)."""
+    arm = str(BODIES / "two_link_arm.urdf")
+    for form in ("table", "json", "csv"):
+        proc = run_rbi_inprocess("audit", arm, "--joints", f"shoulder={value}", "--format", form)
+        assert proc.returncode == 2 and proc.stdout == "", proc.stderr
+        assert len(proc.stderr.strip().splitlines()) == 1
+        assert (
+            "two_link_arm.urdf" in proc.stderr and "'shoulder'" in proc.stderr and "too large" in proc.stderr
+        )
+    with pytest.raises(ValueError, match="joints: .*'shoulder'"):
+        rbi.audit(arm, joints={"shoulder": float(value)})
+    # 1.7e7 rad is still a turn rounding keeps: accepted
+    assert rbi.audit(arm, joints={"shoulder": 1.7e7}).exit_code in (0, 1)

@@ -19,7 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from rbi.core.mass import MassProperties, combine
-from rbi.core.rotation import axis_angle_matrix
+from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, axis_angle_matrix
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import Pose, RobotModel
 
@@ -220,6 +220,14 @@ def _check_joint_names(model: RobotModel, joints: dict[str, float]) -> None:
             + f" has no revolute or prismatic joint named {literal(unknown[0])}"
             + (f" (did you mean {literal(hint[0])}?)" if hint else ""),
         )
+    for name, value in joints.items():
+        if movable[name].kind == "revolute" and not angle_is_kept(math.degrees(value)):
+            raise ArgumentError(
+                "joints",
+                literal(model.path, quoted=False)
+                + f": joint {literal(name)}: {value:g} radians is too large to be a turn: rounding loses it "
+                f"(at most {math.radians(LARGEST_ANGLE_DEG):.4g} radians)",
+            )
 
 
 def parents_first(model: RobotModel, by_name: dict) -> list:
