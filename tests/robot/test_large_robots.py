@@ -66,13 +66,13 @@ def test_the_placement_on_stacks_is_the_pose_by_pose_one_bit_for_bit():
     """Poses composed one tree level at a time on (n, 3, 3) stacks equal :class:`Pose` products
     link by link (numpy's matmul makes the same BLAS call per matrix of a stack)."""
     from rbi.formats.robot import Pose
-    from rbi.robot.tree import _stack_apply
+    from rbi.robot.tree import stack_apply
 
     R = RNG.normal(size=(2000, 3, 3))
     inner = RNG.normal(size=(2000, 3, 3))
     t = RNG.normal(size=(2000, 3)) * 10.0 ** RNG.integers(-6, 6, size=(2000, 1))
     u = RNG.normal(size=(2000, 3))
-    turned, moved = np.matmul(R, inner), _stack_apply(R, u) + t
+    turned, moved = np.matmul(R, inner), stack_apply(R, u) + t
     for i in range(len(R)):
         one = Pose(R[i], t[i]).then(Pose(inner[i], u[i]))
         assert _same(turned[i], one.rotation) and _same(moved[i], one.translation)

@@ -376,18 +376,13 @@ def _lines_if_intact(table, console):
     cell whole on one line (headers may wrap between words, never inside one: a path like
     ``parts.stem.radius`` stays whole; a cell folded, wrapped or shortened to ``…`` is not
     whole), else None. The lines are what gets printed: a table is laid out once."""
-    # not at top level: `rbi inertia --format json` would load rich.text too
-    from rich.text import Text
-
     rendered = console.render_lines(table, console.options, pad=False)
     lines = ["".join(segment.text for segment in line) for line in rendered]
     rows = zip(*[[_cell_text(cell) for cell in column.cells] for column in table.columns])
     if not _rows_in_order(rows, lines):
         return None
     for column in table.columns:
-        header = column.header
-        header = header.plain if isinstance(header, Text) else Text.from_markup(str(header)).plain
-        if any(word and not any(word in line for line in lines) for word in header.split()):
+        if any(not any(word in line for line in lines) for word in _plain(column.header).split()):
             return None
     return rendered
 
@@ -428,16 +423,8 @@ def _line(text):
 
 def _plain(cell) -> str:
     """A cell or header as the text it shows (markup read, lines joined by a space)."""
-    # not at top level: `rbi inertia --format json` would load rich.text too
-    from rich.text import Text
-
-    if isinstance(cell, Text):
-        text = cell.plain
-    elif isinstance(cell, str):
-        text = Text.from_markup(cell).plain
-    else:
-        text = str(cell)
-    return " ".join(text.split())
+    text = _cell_text(cell)
+    return " ".join((str(cell) if text is None else text).split())
 
 
 def stacked(table, width: int):

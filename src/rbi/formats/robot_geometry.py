@@ -105,7 +105,9 @@ def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[
     raise ValueError(f"no volume: {kind}")
 
 
-def _half_extent(kind: str, size) -> np.ndarray:
+def half_extent(kind: str, size) -> np.ndarray:
+    """Half the primitive's extent along each of its own axes (m): with ``|R|`` of its pose, the
+    half-size of its axis-aligned bounding box."""
     if kind == "sphere":
         return np.full(3, size[0])
     if kind == "box":
@@ -139,7 +141,7 @@ def distribution(
         except ValueError as exc:
             raise InputError(f"{where}{geom.label}: {exc}") from None
         inertia = (R * moments) @ R.T
-        corners = np.abs(R) @ _half_extent(geom.kind, geom.size)
+        corners = np.abs(R) @ half_extent(geom.kind, geom.size)
         if not (np.isfinite(measure) and np.all(np.isfinite(inertia))):
             raise InputError(
                 f"{where}{geom.label}: size {list(geom.size)}: too large to compute with (its volume or "

@@ -39,12 +39,16 @@ from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import ArgumentError, literal
 from rbi.formats.robot import Link, RobotModel
-from rbi.formats.robot_geometry import MESH_INERTIA_MODES, _half_extent, distribution, primitive
+from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
-from rbi.robot.tree import _stack_apply, placement, totals
+from rbi.robot.tree import placement, stack_apply, totals
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
+
+USABLE_MOMENT = 1e-9
+"""A geometry's principal moment below this fraction of its largest gives no ratio (``-``,
+null): a rod's moment about its own axis is nothing to divide by."""
 
 WARNING_RATIO = 2.0
 """A declared moment beyond this factor of the geometry's (either way) is a warning."""
@@ -396,6 +400,17 @@ def _carried_mass(model: RobotModel) -> dict[int, bool]:
     return result
 
 
+def chosen_geoms(link: Link, geometry: str) -> tuple[list, str]:
+    """(geoms, source) a link's geometry is measured from: its ``geometry`` ("collision" or
+    "visual") elements, or the other kind when it has none of those."""
+    first, second = (
+        (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
+    )
+    if first:
+        return first, geometry
+    return second, "visual" if geometry == "collision" else "collision"
+
+
 def link_geometry(
     model: RobotModel,
     link: Link,
@@ -410,12 +425,7 @@ def link_geometry(
     exactly."""
     if geometry == "none":
         return None, []
-    first, second = (
-        (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
-    )
-    geoms, source = (
-        (first, geometry) if first else (second, "visual" if geometry == "collision" else "collision")
-    )
+    geoms, source = chosen_geoms(link, geometry)
     where = f"{model.path}: {link.label}: "
     pieces = []
     for geom in geoms:
@@ -466,12 +476,7 @@ def _one_primitive(model: RobotModel, geometry: str) -> dict[int, tuple[Any, str
         return {}
     found = {}
     for row, link in enumerate(model.links):
-        first, second = (
-            (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
-        )
-        geoms, source = (
-            (first, geometry) if first else (second, "visual" if geometry == "collision" else "collision")
-        )
+        geoms, source = chosen_geoms(link, geometry)
         if len(geoms) == 1 and geoms[0].kind in _PRIMITIVES and not geoms[0].shell:
             found[row] = (geoms[0], source)
     return found
@@ -496,7 +501,7 @@ def _primitives_in_bulk(model: RobotModel, geometry: str, density: float | None)
         key = (geom.kind, geom.size)
         if key not in shapes:
             try:
-                shapes[key] = (*primitive(geom.kind, geom.size), _half_extent(geom.kind, geom.size))
+                shapes[key] = (*primitive(geom.kind, geom.size), half_extent(geom.kind, geom.size))
             except ValueError:
                 shapes[key] = (np.nan, np.full(3, np.nan), np.full(3, np.nan))
     measure = np.array([shapes[(g.kind, g.size)][0] for g in geoms], dtype=float)
@@ -506,7 +511,7 @@ def _primitives_in_bulk(model: RobotModel, geometry: str, density: float | None)
     p = np.array([g.pose.translation for g in geoms], dtype=float).reshape(-1, 3)
     turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
     inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
-    corners = _stack_apply(np.abs(R), half)
+    corners = stack_apply(np.abs(R), half)
     with np.errstate(all="ignore"):
         fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
         fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
@@ -601,7 +606,7 @@ def _geometry_in_bulk(links, found: list[tuple], chosen: list[int], moments, axe
     moments, axes = moments[rows], axes[rows]
     inertia = np.array([each.declared.inertia_about_com for each in picked]).reshape(-1, 3, 3)
     along = np.einsum("nji,njk,nki->ni", axes, inertia, axes)
-    usable = moments > 1e-9 * np.max(moments, axis=1)[:, None]
+    usable = moments > USABLE_MOMENT * np.max(moments, axis=1)[:, None]
     with np.errstate(all="ignore"):
         ratios = np.where(usable, along / moments, np.nan)
     com = np.array([each.declared.center_of_mass for each in picked]).reshape(-1, 3)
@@ -788,7 +793,7 @@ def _geometry_flags(result: LinkAudit, placeholder: str | None, eigh=None) -> li
     flags: list[Flag] = []
     moments, axes = np.linalg.eigh(geo.inertia_about_com) if eigh is None else eigh
     along = np.einsum("ji,jk,ki->i", axes, declared.inertia_about_com, axes)
-    usable = moments > 1e-9 * float(np.max(moments))
+    usable = moments > USABLE_MOMENT * float(np.max(moments))
     ratios = np.full(3, np.nan)
     ratios[usable] = along[usable] / moments[usable]
     result.ratios = ratios

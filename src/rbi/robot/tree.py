@@ -97,7 +97,7 @@ class Placement:
         return {i: Pose(self.placed_rotations[r], self.placed_translations[r]) for i, r in self.rows.items()}
 
 
-def _stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
+def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
     """``rotations[i] @ vectors[i]`` for each row (numpy's matmul on the stack makes the same
     BLAS call per row as on one matrix, so each row equals the one-matrix product)."""
     return np.matmul(rotations, vectors[..., None])[..., 0]
@@ -108,7 +108,7 @@ def placement(model: RobotModel, joints: dict[str, float] | None = None) -> Plac
     origin, then its joints' motions), one level of the tree at a time on (n, 3, 3) stacks;
     InputError for a joint name the model has no revolute or prismatic joint of."""
     joints = dict(joints or {})
-    _check_joint_names(model, joints)
+    _check_joints(model, joints)
     links = model.links
     n = len(links)
     rows = {link.index: row for row, link in enumerate(links)}
@@ -121,7 +121,7 @@ def placement(model: RobotModel, joints: dict[str, float] | None = None) -> Plac
         level_R = np.array([links[row].origin.rotation for row in level]).reshape(-1, 3, 3)
         level_t = np.array([links[row].origin.translation for row in level], dtype=float).reshape(-1, 3)
         R[level] = np.matmul(R[parents], level_R)
-        t[level] = _stack_apply(R[parents], level_t) + t[parents]
+        t[level] = stack_apply(R[parents], level_t) + t[parents]
         for row in level:
             if joints and any(motion.name in joints for motion in links[row].motions):
                 R[row], t[row] = _moved(links[row], Pose(R[row], t[row]), joints, frames)
@@ -136,7 +136,7 @@ def placement(model: RobotModel, joints: dict[str, float] | None = None) -> Plac
             frame = f"root link {roots[0].name}"
     to_R = np.broadcast_to(to_frame.rotation, R.shape)
     placed_R = np.matmul(to_R, R)
-    placed_t = _stack_apply(to_R, t) + to_frame.translation
+    placed_t = stack_apply(to_R, t) + to_frame.translation
     return Placement(rows, R, t, joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, order)
 
 
@@ -199,12 +199,14 @@ def _joint_frames(model: RobotModel, R: np.ndarray, t: np.ndarray, moved: dict[i
     plain = at >= 0
     if np.any(plain):
         chosen = at[plain]
-        axes_array[plain] = _stack_apply(R[chosen], axes_array[plain])
-        anchors_array[plain] = _stack_apply(R[chosen], anchors_array[plain]) + t[chosen]
+        axes_array[plain] = stack_apply(R[chosen], axes_array[plain])
+        anchors_array[plain] = stack_apply(R[chosen], anchors_array[plain]) + t[chosen]
     return found, axes_array, anchors_array
 
 
-def _check_joint_names(model: RobotModel, joints: dict[str, float]) -> None:
+def _check_joints(model: RobotModel, joints: dict[str, float]) -> None:
+    """ArgumentError naming ``joints`` for a name no revolute or prismatic joint has, or a
+    revolute value whose turn rounding loses."""
     movable = {
         m.name: m
         for link in model.links
@@ -289,7 +291,7 @@ def _placed_parts(placed: Placement, chosen: list) -> tuple[np.ndarray, np.ndarr
     masses = np.array([props.mass for _, props in chosen], dtype=float)
     coms = np.array([props.center_of_mass for _, props in chosen]).reshape(-1, 3)
     R = placed.placed_rotations[rows]
-    return masses, _stack_apply(R, coms) + placed.placed_translations[rows]
+    return masses, stack_apply(R, coms) + placed.placed_translations[rows]
 
 
 def _placed_inertias(placed: Placement, chosen: list) -> np.ndarray:
