@@ -60,9 +60,11 @@ DENSITY_SPREAD_DECADES = 0.7
 """How widely those densities spread about :data:`TYPICAL_DENSITY_KG_M3` (standard deviation of
 log10 density): 68 % of such bodies lie within 80–2,000 kg/m³, 95 % within 16–10,000."""
 
+TYPICAL_SIZE_M = 1.0
+"""The size (cube root of the volume, m) whose typical density is :data:`TYPICAL_DENSITY_KG_M3`."""
+
 STRUCTURE_SIZES_M = (0.01, 10.0)
 STRUCTURE_THINNING = 0.5
-TYPICAL_SIZE_M = 1.0
 """Parts a centimetre across are mostly solid (metals, plastics, glass: a coin, a bolt, a
 battery), larger bodies more and more structures round air (walls, frames, shells), the
 walls' share of the outside volume falling as the body grows (square-cube law): between the two
