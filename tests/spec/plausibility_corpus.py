@@ -197,6 +197,91 @@ OBJECTS = [
     ("die-cast toy car", "box", (0.07, 0.03, 0.025), 0.035, "1:64 scale, as its bounding box"),
     ("nail", "cylinder", (0.0016, 0.075), cylinder_mass(0.0016, 0.075, STEEL), "75 mm wire nail"),
     ("M8 bolt", "cylinder", (0.004, 0.04), cylinder_mass(0.004, 0.04, STEEL), "steel, as a rod"),
+    # THIRD_ADDED_LATER and every object after it were added (issue 26, fourth round) before the
+    # rule was changed again, and are measured apart as a third hold-out; "about" marks a figure
+    # that is a typical one for the kind, not one maker's data sheet:
+    ("Sputnik 1", "sphere", (0.29,), 83.6, "NASA NSSDCA: 58 cm sphere, 83.6 kg"),
+    ("Explorer 1", "cylinder", (0.0795, 2.03), 13.97, "NASA/JPL: 203 cm long, 15.9 cm across, 13.97 kg"),
+    ("Vanguard 1", "sphere", (0.0825,), 1.47, "NASA NSSDCA: 16.5 cm sphere, 1.47 kg"),
+    (
+        "Curiosity rover",
+        "box",
+        (3.0, 2.7, 2.2),
+        899.0,
+        "NASA/JPL: 10 x 9 x 7 ft, 899 kg, as its bounding box",
+    ),
+    ("Apollo command module", "cylinder", (1.95, 3.23), 5560.0, "NASA: 3.9 m base, 3.23 m tall, 5,560 kg"),
+    ("Saturn V", "cylinder", (5.05, 110.6), 2.97e6, "NASA: 110.6 m, 10.1 m across, 2,970 t fuelled"),
+    ("Boeing 737-800", "cylinder", (1.88, 39.5), 41413.0, "Boeing: 39.5 m, 3.76 m fuselage, 41,413 kg empty"),
+    (
+        "20 ft container",
+        "box",
+        (6.058, 2.438, 2.591),
+        2300.0,
+        "ISO 668: 6,058 x 2,438 x 2,591 mm, 2,300 kg tare",
+    ),
+    ("diesel locomotive", "box", (22.6, 3.12, 4.7), 188000.0, "EMD SD70ACE: 74 ft, 415,000 lb, bounding box"),
+    ("Tesla Model 3", "box", (4.694, 1.849, 1.443), 1611.0, "Tesla: 4,694 x 1,849 x 1,443 mm, 1,611 kg"),
+    ("electric scooter", "box", (1.08, 0.43, 1.14), 12.5, "Xiaomi M365: 1,080 x 430 x 1,140 mm, 12.5 kg"),
+    ("road bicycle", "box", (1.7, 0.42, 1.0), 8.0, "a carbon road bike, about 8 kg, as its bounding box"),
+    ("softball", "sphere", (0.0485,), 0.19, "USA Softball: 12 in round, 6.25-7 oz"),
+    ("squash ball", "sphere", (0.02,), 0.024, "WSF: 40 mm, 24 g"),
+    ("billiard ball", "sphere", (0.028575,), 0.163, "WPA: 2.25 in, 5.5-6 oz"),
+    (
+        "discus",
+        "cylinder",
+        (0.11, 0.045),
+        2.0,
+        "World Athletics men's: 220 mm, 44-46 mm thick, 2 kg, as a disc",
+    ),
+    (
+        "curling stone",
+        "cylinder",
+        (0.1455, 0.1143),
+        19.0,
+        "World Curling: 36 in round, 4.5 in high, 38-44 lb",
+    ),
+    ("Olympic barbell", "cylinder", (0.025, 2.2), 20.0, "IWF men's bar: 2.2 m, 50 mm sleeves, 20 kg"),
+    ("bowling pin", "cylinder", (0.0605, 0.381), 1.6, "USBC: 15 in tall, 4.766 in widest, 3 lb 6-10 oz"),
+    ("javelin", "cylinder", (0.0145, 2.65), 0.8, "World Athletics men's: 2.6-2.7 m, 25-30 mm grip, 800 g"),
+    ("surfboard", "box", (1.83, 0.495, 0.0635), 2.7, "6'0 x 19.5 x 2.5 in PU shortboard, about 2.7 kg"),
+    ("hacksaw blade", "box", (0.3, 0.0127, 0.00065), box_mass(0.3, 0.0127, 0.00065, STEEL), "300 mm, steel"),
+    ("angle grinder", "box", (0.3, 0.1, 0.1), 1.9, "Bosch GWS 7-115: 1.9 kg; about 300 x 100 x 100 mm"),
+    ("pipe wrench", "box", (0.457, 0.09, 0.035), 2.5, "Ridgid 18 in: 5.5 lb; about 90 x 35 mm at the jaws"),
+    ("wheelbarrow", "box", (1.5, 0.65, 0.6), 16.0, "a 100 l steel wheelbarrow, about 16 kg, bounding box"),
+    ("microscope slide", "box", (0.076, 0.026, 0.001), box_mass(0.076, 0.026, 0.001, 2500), "ISO 8037-1"),
+    ("50 ml centrifuge tube", "cylinder", (0.015, 0.115), 0.013, "Falcon: 30 x 115 mm, about 13 g with cap"),
+    ("neodymium magnet", "box", (0.01, 0.01, 0.01), 0.0075, "NdFeB N42 cube, 10 mm: 7.5 g"),
+    ("optical table", "box", (2.4, 1.2, 0.305), 540.0, "8 x 4 ft x 12 in honeycomb top, about 540 kg"),
+    ("Raspberry Pi 4", "box", (0.0856, 0.0565, 0.017), 0.046, "Raspberry Pi: 85.6 x 56.5 mm, 46 g"),
+    ("3.5 in hard disk", "box", (0.147, 0.1016, 0.0261), 0.45, "SFF-8301 size; WD Blue 1 TB: 450 g"),
+    ("18650 cell", "cylinder", (0.00915, 0.0653), 0.0475, "Panasonic NCR18650B: 18.3 x 65.3 mm, 47.5 g"),
+    ("CR2032 cell", "cylinder", (0.01, 0.0032), 0.0029, "Energizer CR2032: 20 x 3.2 mm, 2.9 g"),
+    ("9 V battery", "box", (0.0485, 0.0265, 0.0175), 0.0456, "Energizer 522: 48.5 x 26.5 x 17.5 mm, 45.6 g"),
+    ("D cell", "cylinder", (0.0171, 0.0615), 0.148, "Energizer E95: 34.2 x 61.5 mm, 148 g"),
+    ("tablet", "box", (0.2506, 0.1741, 0.0075), 0.487, "Apple iPad (9th gen): 250.6 x 174.1 x 7.5 mm, 487 g"),
+    ("1U rack server", "box", (0.434, 0.7338, 0.0428), 21.9, "Dell R640: 434 x 42.8 x 733.8 mm, 21.9 kg max"),
+    ("608 bearing", "cylinder", (0.011, 0.007), 0.012, "SKF 608: 22 x 7 mm, 8 mm bore, 12 g, as a disc"),
+    ("6205 bearing", "cylinder", (0.026, 0.015), 0.128, "SKF 6205: 52 x 15 mm, 25 mm bore, 128 g"),
+    ("M10 washer", "cylinder", (0.01, 0.002), 0.0043, "ISO 7089: 20 mm, 10.5 mm hole, 2 mm, 4.3 g"),
+    ("US nickel", "cylinder", (0.010605, 0.00195), 0.005, "US Mint: 21.21 mm, 1.95 mm, 5.000 g"),
+    ("US dime", "cylinder", (0.008955, 0.00135), 0.002268, "US Mint: 17.91 mm, 1.35 mm, 2.268 g"),
+    ("1 yen coin", "cylinder", (0.01, 0.0015), 0.001, "Japan Mint: 20 mm, 1.5 mm, 1 g of aluminium"),
+    ("UK pound coin", "cylinder", (0.011715, 0.0028), 0.00875, "Royal Mint: 23.43 mm, 2.8 mm, 8.75 g"),
+    ("XPS insulation board", "box", (1.25, 0.6, 0.05), box_mass(1.25, 0.6, 0.05, 33), "XPS 30-35 kg/m³"),
+    ("MDF sheet", "box", (2.44, 1.22, 0.018), box_mass(2.44, 1.22, 0.018, 750), "MDF about 750 kg/m³"),
+    ("wine barrel", "cylinder", (0.35, 0.95), 48.0, "225 l barrique: 95 cm tall, about 48 kg empty"),
+    ("yoga mat", "box", (1.83, 0.61, 0.006), 1.1, "PVC foam mat, 183 x 61 cm x 6 mm, about 1.1 kg"),
+    ("glulam beam", "box", (0.09, 0.36, 8.0), box_mass(0.09, 0.36, 8.0, 470), "GL24h, about 470 kg/m³"),
+    ("A4 paper ream", "box", (0.21, 0.297, 0.05), 2.495, "ISO 216 A4, 500 sheets of 80 g/m²"),
+    ("microwave oven", "box", (0.485, 0.4, 0.29), 11.0, "a 25 l solo microwave, about 11 kg"),
+    ("2 l soda bottle", "cylinder", (0.055, 0.31), 2.05, "2 l PET, full: about 110 x 310 mm, 2.05 kg"),
+    ("dishwasher", "box", (0.6, 0.6, 0.845), 45.0, "60 cm built-under, about 45 kg"),
+    ("mattress", "box", (2.0, 1.6, 0.25), 35.0, "160 x 200 cm pocket-spring, 25 cm, about 35 kg"),
+    ("plasterboard sheet", "box", (2.4, 1.2, 0.0125), 24.5, "12.5 mm wallboard, about 8.5 kg/m²"),
+    ("rebar", "cylinder", (0.006, 12.0), 10.66, "BS 4449 12 mm bar: 0.888 kg/m, 12 m"),
+    ("scaffold tube", "cylinder", (0.02415, 6.4), 27.97, "EN 39: 48.3 x 4 mm, 4.37 kg/m, 21 ft, as a rod"),
+    ("200 l steel drum", "cylinder", (0.292, 0.88), 20.0, "UN 1A1 drum: 584 x 880 mm, about 20 kg empty"),
 ]
 
 FIRST_ADDED_LATER = "2 euro coin"
@@ -204,6 +289,9 @@ FIRST_ADDED_LATER = "2 euro coin"
 
 SECOND_ADDED_LATER = "claw hammer"
 """The first object of the second hold-out (added before the rule's third-round change)."""
+
+THIRD_ADDED_LATER = "Sputnik 1"
+"""The first object of the third hold-out (added before the rule's fourth-round change)."""
 
 SLIPS = {
     # the units an author drew in, and the hint that names them
