@@ -311,6 +311,18 @@ def significant(value: float, digits: int | None) -> float:
     return round(value, digits - 1 - math.floor(math.log10(abs(value))))
 
 
+def si_parts(entry) -> list[tuple[float, float]]:
+    """Volume (m³) and mass (kg) of each part of a corpus object, from its shape's formula."""
+    _, shape, sizes, kilograms, _ = entry
+    shapes = shape if isinstance(shape, list) else [(None, shape, sizes, kilograms)]
+    volume = {
+        "box": lambda s: s[0] * s[1] * s[2],
+        "cylinder": lambda s: math.pi * s[0] ** 2 * s[1],
+        "sphere": lambda s: 4 / 3 * math.pi * s[0] ** 3,
+    }
+    return [(volume[kind](s), m) for _, kind, s, m in shapes]
+
+
 def _part(name, shape, sizes, mass, length, mass_unit, digits=None):
     s = [significant(v / LENGTH_M[length], digits) for v in sizes]
     m = significant(mass / MASS_KG[mass_unit], digits)

@@ -6,26 +6,35 @@ for the 33 added in the second round (a hold-out, measured with the rule already
 added in the third round and the 58 added in the fourth (second and third hold-outs, each added
 before any further change to the rule).
 
-Issue 26 asks for 90 %. Measured with the rule as it stood when the third hold-out was added:
-88.3 % on all 186 (86.5 % on the first 63, 92.4 %, 89.1 % and 87.5 % on the hold-outs; 87.4 %
-with every number rounded to 3 digits); the floors below are those measured numbers. What no
-rule on densities and sizes can tell apart (docs/spec.md): a pair of units differs from another
-by a factor on density and one on size, so a part a centimetre across that is not exactly a
+Issue 26 asks for 90 %. The model's numbers are a maximum-likelihood fit to the first 128
+objects (refitted by the last test below); the third hold-out was measured before that change
+(87.5 %) and once after it. Measured now: 89.8 % on all 186 (87.7 % on the first 63, 93.2 % and
+92.2 % on the first two hold-outs, 90.2 % on the 128 the model was fitted to, 88.8 % on the
+third hold-out; 89.0 % with every number rounded to 3 digits); before the fit 88.3 % (86.5,
+92.4, 89.1, 87.5; 87.4 % rounded). The floors below are the measured numbers. What no rule on
+densities and sizes can tell apart (docs/spec.md): a pair of units differs from another by a
+factor on density and one on size, so a part a centimetre across that is not exactly a
 handbook material (a coin, a bar drawn as a box) in mm/g reads as a hollow body in in/lb, a
 light body (foam, a chair drawn by its outline) in cm/g as a solid in in/lb, and a body metres
 across (a car, a satellite) in in/lb as a part a few centimetres across in mm/g."""
 
 from __future__ import annotations
 
+import math
+
+import numpy as np
 import pytest
+from scipy import optimize, stats
 
 import rbi
+import rbi.spec.plausibility as P
 from tests.spec.plausibility_corpus import (
     FIRST_ADDED_LATER,
     OBJECTS,
     SECOND_ADDED_LATER,
     SLIPS,
     THIRD_ADDED_LATER,
+    si_parts,
     spec,
 )
 
@@ -79,15 +88,54 @@ def _hint_rates(digits: int | None = None) -> dict[str, dict[str, float]]:
 def test_slips_get_exactly_the_right_hint():
     rates = _hint_rates()
     every = rates["all objects"]
-    assert every["mm/g"] >= 0.897 and every["mm/kg"] >= 1.0 and every["cm/g"] >= 0.844, every
-    assert every["in/lb"] >= 0.790 and every["all"] >= 0.883, every
-    assert rates["first 63"]["all"] >= 0.865 and rates["hold-out"]["all"] >= 0.924, rates
-    assert rates["second hold-out"]["all"] >= 0.890 and rates["third hold-out"]["all"] >= 0.875, rates
+    assert every["mm/g"] >= 0.913 and every["mm/kg"] >= 1.0 and every["cm/g"] >= 0.887, every
+    assert every["in/lb"] >= 0.790 and every["all"] >= 0.897, every
+    assert rates["first 63"]["all"] >= 0.876 and rates["hold-out"]["all"] >= 0.931, rates
+    assert rates["second hold-out"]["all"] >= 0.921 and rates["third hold-out"]["all"] >= 0.887, rates
 
 
 def test_slips_rounded_to_three_digits_get_the_right_hint_less_often():
     """Written as a person rounds them (3 significant digits), sizes and masses no longer meet a
-    handbook density to 0.1 %, so only density and size decide: measured 87.4 % on all 186
-    (in/lb 79.0 %), against 88.3 % for the exact numbers; no SI object is warned either way."""
-    every = _hint_rates(digits=3)["all objects"]
-    assert every["in/lb"] >= 0.790 and every["all"] >= 0.873, every
+    handbook density to 0.1 %, so only density and size decide: measured 89.0 % on all 186
+    (in/lb 78.5 %; third hold-out 88.8 %), against 89.8 % for the exact numbers (87.4 % before
+    the fit); no SI object is warned either way."""
+    rates = _hint_rates(digits=3)
+    every = rates["all objects"]
+    assert every["in/lb"] >= 0.784 and every["all"] >= 0.889, every
+    assert rates["third hold-out"]["all"] >= 0.887, rates
+
+
+def _calibration_parts() -> tuple[np.ndarray, np.ndarray]:
+    """log10 size (cube root of the volume, m) and log10 density (kg/m³) of every part of the
+    objects the model was fitted to: those before the third hold-out."""
+    names = [o[0] for o in OBJECTS]
+    parts = [p for entry in OBJECTS[: names.index(THIRD_ADDED_LATER)] for p in si_parts(entry)]
+    return np.log10([v for v, _ in parts]) / 3, np.log10([m / v for v, m in parts])
+
+
+def test_the_model_is_the_maximum_likelihood_fit_to_the_calibration_corpus():
+    """The density model's numbers (typical density at 1 m, its fall per decade of size, the
+    size above which it falls no further, the spread; below, it stays at steel's 7,850 kg/m³)
+    and the size distribution's (logistic in log10 size) are refitted here by maximum likelihood
+    to the 134 parts of the first 128 objects and must be the module's to the digits it gives."""
+    sizes, densities = _calibration_parts()
+    steel = math.log10(7850.0)
+
+    def minus_log_likelihood(p):
+        typical, thinning, largest, spread = p
+        mean = np.minimum(typical - thinning * np.minimum(sizes, largest), steel)
+        return -stats.norm.logpdf(densities, mean, abs(spread)).sum()
+
+    fit = optimize.minimize(minus_log_likelihood, [2.5, 0.5, 0.0, 0.7], method="Nelder-Mead")
+    typical, thinning, largest, spread = fit.x
+    assert P.TYPICAL_DENSITY_KG_M3 == pytest.approx(10**typical, rel=0.03)
+    assert P.STRUCTURE_THINNING == pytest.approx(thinning, abs=0.005)
+    assert P.STRUCTURE_SIZES_M[1] == pytest.approx(10**largest, rel=0.05)
+    assert P.DENSITY_SPREAD_DECADES == pytest.approx(abs(spread), abs=0.005)
+    smallest = P.TYPICAL_DENSITY_KG_M3 * P.STRUCTURE_SIZES_M[0] ** -P.STRUCTURE_THINNING
+    assert smallest == pytest.approx(7850, rel=0.02)  # the fall stops at steel's density
+    centre, scale = stats.logistic.fit(sizes)
+    assert P.BODY_SIZE_M == pytest.approx(10**centre, rel=0.05)
+    assert P.BODY_SIZE_SPREAD_DECADES == pytest.approx(scale, abs=0.005)
+    exact = [any(abs(d - k) < P.MATERIAL_MATCH_DECADES for k in P._REFERENCE_DECADES) for d in densities]
+    assert P.MATERIAL_SHARE == pytest.approx(np.mean(exact), abs=0.005)
