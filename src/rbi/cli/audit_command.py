@@ -16,7 +16,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from rbi.api import SpecError
+from rbi.api import SpecError, output_target
 from rbi.api import audit as run_audit
 from rbi.cli.options import FormatOption, OutputFormat, RobotFile
 from rbi.cli.terminal import say
@@ -151,9 +151,6 @@ def audit(
 def _fix_target(file: str, fix: bool, out: str | None):
     """The --out target, checked before the audit runs (it needs --fix and the robot file's
     extension), or None."""
-
-    # not at top level: `rbi import` would load rbi.cli.output too
-    from rbi.cli.output import output_target
 
     if out is None:
         return None

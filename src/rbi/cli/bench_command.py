@@ -14,28 +14,17 @@ from rich.console import Group
 from rich.table import Table
 from rich.text import Text
 
-from rbi.api import SpecError
+from rbi.api import SpecError, check_distinct, output_target, write_output
 from rbi.bench import report, suite
 from rbi.bench.paths import bodies_folder
 from rbi.bench.report import sections
 from rbi.bench.workprecision import plot as draw
 from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import FormatOption, OutputFormat
-from rbi.cli.output import check_distinct, output_target, write_output
 from rbi.cli.render import emit, progress_bar
 from rbi.cli.tables import unit_header
 
-SECTION_NAMES = (
-    "kernel",
-    "workprecision",
-    "throughput",
-    "largespec",
-    "latency",
-    "sweep",
-    "cad",
-    "robotaudit",
-)
-
+SECTION_NAMES = tuple(suite.SECTIONS)
 
 QuickOption = Annotated[
     bool,

@@ -7,9 +7,9 @@ from typing import Annotated
 import numpy as np
 import typer
 
+from rbi import api
 from rbi.api import LENGTH_UNITS, MASS_UNITS, SpecError
 from rbi.cli import tables
-from rbi.cli.mass_reports import load_body
 from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_vector
 from rbi.cli.render import emit, number
 
@@ -73,7 +73,7 @@ def dynamics(
             "dynamics: give either --alpha (inverse: force and torque) or --force/--torque (forward: accelerations)"
         )
     w = np.array(parse_vector(omega, "--omega"))
-    body = load_body(file)
+    body = api.load(file)
     about_label, point = parse_about(about, body)
     given = _given(file, body.inertia(point), about, about_label, alpha, accel, force, torque)
     found = body.dynamics(w, about="com" if about_label == "com" else point, **given)

@@ -10,8 +10,8 @@ from typing import Annotated
 import numpy as np
 import typer
 
+from rbi import api
 from rbi.api import SpecError
-from rbi.cli.mass_reports import load_body
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, say_warnings, to_csv
 
@@ -63,7 +63,7 @@ def export(
         raise SpecError(
             "--diagonal: only for --to mjcf (URDF and SDF take the full matrix about the centre of mass)"
         )
-    source = load_body(file)
+    source = api.load(file)
     body = source.in_units("m", "kg")
     props = body.mass_properties
     name = body.name or ("body" if file == "-" else Path(file).stem)

@@ -11,7 +11,7 @@ from typing import Annotated
 import typer
 
 from rbi import api
-from rbi.api import SpecError, import_step
+from rbi.api import SpecError, check_distinct, import_step, output_target, write_output
 from rbi.cli.audit_command import PackagePathOption
 from rbi.cli.options import FormatOption, OutputFormat
 from rbi.cli.terminal import say, terminal_safe
@@ -105,9 +105,6 @@ def _import_robot(file: str, link, out: str | None, format: OutputFormat, packag
         for line in each.problems:
             say(f"warning: {line}")
     if targets is not None:
-        # not at top level: `rbi import` would load rbi.cli.output too
-        from rbi.cli.output import write_output
-
         for target, each in targets:
             write_output(target, each.yaml)
     if format is OutputFormat.table:
@@ -132,9 +129,6 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
         )
     target = None
     if out is not None:
-        # not at top level: `rbi import` would load rbi.cli.output too
-        from rbi.cli.output import output_target
-
         target = output_target(out, "--out", ("yaml", "yml"), inputs=[file])
     home = os.path.dirname(os.path.abspath(out)) if out is not None else None
     imported = import_step(file, density=density, material=material, relative_to=home)
@@ -148,9 +142,6 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
     if format is not OutputFormat.table:
         _emit_step_listing(format, file, imported)
     if target is not None:
-        # not at top level: `rbi import` would load rbi.cli.output too
-        from rbi.cli.output import write_output
-
         write_output(target, imported.yaml())
     elif format is OutputFormat.table:
         sys.stdout.write(imported.yaml())
@@ -188,9 +179,6 @@ def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
 
 def _targets(robot, out: str, source: str):
     """(checked output target, link) pairs, all checked before anything is written."""
-
-    # not at top level: `rbi import` would load rbi.cli.output too
-    from rbi.cli.output import check_distinct, output_target
 
     links = robot.links
     if os.path.isdir(out) or out.endswith(("/", os.sep)):

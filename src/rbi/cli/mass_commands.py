@@ -1,7 +1,5 @@
-"""`rbi inertia`, `rbi principal`, `rbi momentum`: mass properties of a body.
-
-The options are declared here; what `inertia` and `principal` print for each file is in
-:mod:`rbi.cli.mass_reports`."""
+"""`rbi inertia`, `rbi principal`, `rbi momentum`: mass properties of a body. Every number is
+in the spec's units unless ``--units`` asks for others."""
 
 from __future__ import annotations
 
@@ -11,8 +9,8 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from rbi.cli import mass_reports
-from rbi.cli.mass_reports import header, load_body, place_rows, title
+from rbi import api
+from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.options import (
     AboutOption,
     FormatOption,
@@ -22,9 +20,19 @@ from rbi.cli.options import (
     UnitsOption,
     in_output_units,
     parse_about,
+    parse_rotation,
     parse_vector,
 )
-from rbi.cli.render import emit, number
+from rbi.cli.render import body_size, emit, matrix_digits, number
+
+PRODUCT_SIGNS = ("tensor", "cad")
+"""Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
+(the positive integrals ``+∫xy dm`` SolidWorks and CATIA print)."""
+
+PRODUCT_SIGN_TITLES = {
+    "tensor": "products −∫xy dm",
+    "cad": "CAD products +∫xy dm",
+}
 
 
 class ProductsSign(str, Enum):
@@ -77,7 +85,16 @@ def inertia(
       rbi inertia robot_link.yaml --products cad --units mm,g
     """
 
-    return mass_reports.inertia(files, about, rotate, axis, products.value, units, format.value)
+    turns = [parse_rotation(r) for r in rotate or []]
+    direction = None
+    if axis is not None:
+        try:
+            direction = api.unit_vector(parse_vector(axis, "--axis"))
+        except ValueError:
+            raise api.SpecError(f"--axis: must be a non-zero direction X,Y,Z (got {axis!r})") from None
+    return report_each(
+        files, lambda file: _inertia_of(file, about, turns, direction, products.value, units), format.value
+    )
 
 
 def principal(
@@ -95,7 +112,7 @@ def principal(
       rbi principal flywheel.yaml --units SI
     """
 
-    return mass_reports.principal(files, about, units, format.value)
+    return report_each(files, lambda file: _principal_of(file, about, units), format.value)
 
 
 def momentum(
@@ -135,7 +152,7 @@ def momentum(
 
     w = np.array(parse_vector(omega, "--omega"))
     v_given = None if velocity is None else np.array(parse_vector(velocity, "--velocity"))
-    body = load_body(file)
+    body = api.load(file)
     about_label, point = parse_about(about, body)
     body, (point, v_given) = in_output_units(body, units, point, v_given)
     # Without a given velocity the reference point is fixed: v_c = ω × r_{c/o} (zero at the CoM).
@@ -168,3 +185,126 @@ def _momentum_table(body, result: dict, about_label: str):
             ("kinetic energy", labels["energy"], number(result["kinetic_energy"], 8)),
         ],
     )
+
+
+def header(body: api.Body, about_label: str, about_point) -> dict:
+    """The keys every mass-properties result starts with."""
+    return {
+        "name": body.name,
+        "units": body.units,
+        "mass": body.mass,
+        "center_of_mass": body.center_of_mass,
+        "about": about_point,
+        "about_label": about_label,
+        "warnings": list(body.warnings),
+    }
+
+
+def with_product_sign(inertia, sign: str):
+    """The inertia matrix with its off-diagonal entries in convention ``sign`` (see
+    :data:`PRODUCT_SIGNS`); the moments on the diagonal never change."""
+
+    shown = np.array(inertia, dtype=float)
+    if sign == "tensor":
+        return shown
+    if sign == "cad":
+        off_diagonal = ~np.eye(3, dtype=bool)
+        shown[off_diagonal] = 0.0 - shown[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
+        return shown
+    raise ValueError(f"unknown products sign {sign!r} (expected one of {PRODUCT_SIGNS})")
+
+
+def place_rows(body: api.Body, about_label: str, point) -> list[tuple[str, str, str]]:
+    """The rows every mass-properties table starts with: the mass, the centre of mass and the
+    ``--about`` point (a coordinate below 1e-12 of the body's size printed 0)."""
+    # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
+    from rbi.cli import tables
+
+    labels, size = body.unit_labels, body_size(body)
+    return [
+        ("mass", labels["mass"], number(body.mass, 8)),
+        ("centre of mass", labels["length"], tables.vector(body.center_of_mass, size)),
+        (f"about ({about_label})", labels["length"], tables.vector(point, size)),
+    ]
+
+
+def title(body, what: str) -> str:
+    return f"{body.name or body.path} — {what}"
+
+
+def _inertia_of(file: str, about: str, turns, direction, products: str, units: str | None):
+
+    body = api.load(file)
+    about_label, point = parse_about(about, body)
+    body, (point,) = in_output_units(body, units, point)
+    axes = turns or None
+    shown = with_product_sign(body.inertia(point, axes), products)
+    result = header(body, about_label, point) | {
+        "frame": "world (rotated)" if turns else "body",
+        "rotations": [f"{a}:{np.degrees(np.radians(d)):g}" for a, d in turns],
+        "products_sign": products,
+        "inertia": shown,
+    }
+    if direction is not None:
+        result |= {"axis": direction, "moment_about_axis": body.moment_about_axis(direction, point, axes)}
+
+    def table():
+        # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
+        from rbi.cli import tables
+
+        labels = body.unit_labels
+        frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
+        rows = [
+            *place_rows(body, about_label, point),
+        ]
+        if direction is not None:
+            rows += [
+                ("axis (unit)", "", tables.vector(direction)),
+                ("moment about axis", labels["inertia"], number(result["moment_about_axis"], 8)),
+            ]
+        return tables.stack(
+            tables.quantities(title(body, "inertia"), rows),
+            tables.matrix(
+                f"Inertia about {about_label}, {frame}; {PRODUCT_SIGN_TITLES[products]}",
+                shown,
+                labels["inertia"],
+            ),
+        )
+
+    return FileReport(result, table)
+
+
+def _principal_of(file: str, about: str, units: str | None):
+    body = api.load(file)
+    about_label, point = parse_about(about, body)
+    body, (point,) = in_output_units(body, units, point)
+    principal = body.principal(point)
+    moments, axes, radii = principal.moments, principal.axes, principal.radii_of_gyration
+    result = header(body, about_label, point) | {"moments": moments, "axes": axes, "radii_of_gyration": radii}
+
+    def table():
+        # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
+        from rbi.cli import tables
+
+        labels = body.unit_labels
+        scale, scale_text = matrix_digits(moments)
+        t = tables.titled(f"Principal axes about {about_label} (body frame)")
+        t.add_column("#")
+        t.add_column(tables.unit_header("moment", labels["inertia"], scale_text), justify="right")
+        for c in "xyz":
+            t.add_column(f"axis {c}", justify="right")
+        t.add_column(tables.unit_header("radius of gyration", labels["length"]), justify="right")
+        for i, (m, a, k) in enumerate(zip(moments, axes, radii), start=1):
+            t.add_row(f"I{i}", number(m / scale, 7), *(number(v, 7) for v in a), number(k, 7))
+        return tables.stack(
+            tables.quantities(
+                title(body, "principal"),
+                place_rows(body, about_label, point),
+            ),
+            t,
+        )
+
+    # CSV: radii numbered like the moments they belong to (radii_of_gyration_1 ...), not _x, _y, _z
+    csv_row = {k: v for k, v in result.items() if k != "radii_of_gyration"}
+    csv_row |= {f"radii_of_gyration_{i}": k for i, k in enumerate(radii, start=1)}
+    return FileReport(result, table, csv_rows=[csv_row])

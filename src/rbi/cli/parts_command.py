@@ -1,13 +1,18 @@
 """`rbi parts`: the body part by part — mass, volume, centre of mass, own inertia and its
 principal moments, share of the body's inertia, and the density each solid implies (a check on
 the spec's units) — with a total row for the whole body.
-
-The options are declared here; what it prints for each file is in :mod:`rbi.cli.parts_report`."""
+"""
 
 from __future__ import annotations
 
-from rbi.cli import parts_report
+from rich.text import Text
+
+from rbi import api
+from rbi.api import LENGTH_UNITS, MASS_UNITS
+from rbi.cli import tables
+from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
+from rbi.cli.render import body_size, matrix_digits, number, without_noise
 
 
 def parts(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
@@ -22,4 +27,170 @@ def parts(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
       rbi parts *.yaml --format csv
     """
 
-    return parts_report.parts(files, format.value)
+    return report_each(files, parts_of, format.value)
+
+
+def parts_of(file: str):
+    """What `rbi parts` gives for one file (:class:`rbi.cli.each_file.FileReport`).
+
+    JSON: the keys docs/parts.md lists, and for each part ``volume`` (length³, all copies of a pattern;
+    null for a part without one), ``principal_moments`` (ascending, about the part's own centre
+    of mass; negative for a hole); at the top ``volume``, the solids' volume with holes taken
+    away (parts without a volume add none), and ``principal_moments`` of the body about its
+    centre of mass.
+    """
+    body = api.load(file)  # its warnings hold the mesh notes (repair, overlaps) too
+    rows = _part_rows(body)
+    volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
+    every_part_has_volume = all(row["volume"] is not None for row in rows)
+    total = {
+        "volume": volume if any(row["volume"] is not None for row in rows) else None,
+        "mean_density": body.mass / volume if every_part_has_volume and volume > 0 else None,
+        "principal_moments": _principal_moments(body),
+    }
+    result = {
+        "name": body.name,
+        "units": body.units,
+        "warnings": list(body.warnings),
+        "mass": body.mass,
+        "center_of_mass": body.center_of_mass,
+        "volume": total["volume"],
+        "principal_moments": total["principal_moments"],
+        "parts": rows,
+    }
+    summary = {key: value for key, value in result.items() if key != "warnings"} | {"parts": len(rows)}
+    return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
+
+
+def _principal_moments(body):
+    """The body's principal moments about its centre of mass (ascending)."""
+    return body.principal().moments
+
+
+def _part_rows(body) -> list[dict]:
+    """One row per part: its mass, share, centre of mass, inertia about it, principal moments,
+    share of the inertia, volume and the density they imply (file units and SI)."""
+
+    units = body.units
+    to_si = MASS_UNITS[units["mass"]] / LENGTH_UNITS[units["length"]] ** 3
+    parts = body.parts()
+    rows = []
+    for part in parts:
+        density = abs(part.mass) / part.volume if part.volume else None
+        rows.append(
+            {
+                "name": part.name,
+                "shape": part.shape,
+                "hole": part.hole,
+                "mass": part.mass,
+                "mass_share": part.mass / body.mass,
+                "center_of_mass": part.center_of_mass,
+                "inertia_about_com": part.inertia_about_com,
+                "principal_moments": part.principal_moments,
+                "inertia_share": part.inertia_share,
+                "volume": part.volume,
+                "implied_density": density,
+                "implied_density_si": None if density is None else density * to_si,
+            }
+        )
+    if any(part.shape == "step" for part in parts):  # the error estimate of each STEP part
+        for row, part in zip(rows, parts):
+            row["integration_error"] = part.integration_error
+    return rows
+
+
+def _table(body, rows, total):
+    """Three tables, each narrow enough for 80 columns: mass and volume; centre of mass and
+    share of the inertia; principal moments. Each ends with the whole body's row."""
+
+    labels, units = body.unit_labels, body.units
+    name = body.name or body.path
+    names = [tables.plain_text(row["name"]) for row in rows]
+    length = labels["length"]
+    masses = _titled_table(
+        f"{name}: parts — mass and volume",
+        names,
+        (
+            "shape",
+            f"mass\n[{labels['mass']}]",
+            "mass\nshare [%]",
+            f"volume\n[{units['length']}³]",
+            f"density\n[{units['mass']}/{units['length']}³]",
+        ),
+        [
+            (
+                row["shape"] + (" (hole)" if row["hole"] else ""),
+                number(row["mass"]),
+                number(100 * row["mass_share"], 4),
+                _signed_volume(row),
+                number(row["implied_density"], 4),
+            )
+            for row in rows
+        ],
+        (
+            "",
+            number(body.mass),
+            number(100.0, 4),
+            number(total["volume"]),
+            number(total["mean_density"], 4),
+        ),
+    )
+    places = _places_table(body, rows, names, length, f"{name}: parts — centre of mass")
+    scale, scale_text = matrix_digits(
+        [total["principal_moments"], *(row["principal_moments"] for row in rows)]
+    )
+    unit = f"[{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
+    moments = _titled_table(
+        f"{name}: parts — principal moments (own CoM)",
+        names,
+        (f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
+        [tuple(number(m / scale, 5) for m in row["principal_moments"]) for row in rows],
+        tuple(number(m / scale, 5) for m in total["principal_moments"]),
+    )
+    return tables.stack(masses, places, moments)
+
+
+def _places_table(body, rows, names: list, length: str, title: str):
+    """Each part's centre of mass (a coordinate below 1e-12 of the body's size is rounding
+    noise, printed 0) and its share of the inertia."""
+    size = body_size(body)
+    return _titled_table(
+        title,
+        names,
+        (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
+        [
+            (
+                *(number(c) for c in without_noise(row["center_of_mass"], size)),
+                number(100 * row["inertia_share"], 4),
+            )
+            for row in rows
+        ],
+        (*(number(c) for c in without_noise(body.center_of_mass, size)), number(100.0, 4)),
+    )
+
+
+def _titled_table(title: str, names: list, headers, cells, total_row):
+    """Numbers never wrap (a column of them is as wide as its widest number); part names
+    and shapes wrap in a narrow terminal."""
+
+    t = tables.titled(title)
+    t.add_column("part", overflow="fold")
+    for header in headers:
+        numbers = not header.startswith("shape")
+        # the label over its unit (a rich Text: rbi's own words, never read as markup)
+        t.add_column(
+            Text(header, justify="right" if numbers else "left"),
+            justify="right" if numbers else "left",
+            no_wrap=numbers,
+            overflow="fold",
+        )
+    for part_name, row in zip(names, cells):
+        t.add_row(part_name, *row)
+    t.add_section()
+    t.add_row("total", *total_row)
+    return t
+
+
+def _signed_volume(row) -> str:
+
+    return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])

@@ -7,9 +7,9 @@ from typing import Annotated
 import typer
 
 from rbi import api
+from rbi.api import output_target
 from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.options import SpecFile
-from rbi.cli.output import output_target
 from rbi.cli.render import say_warnings
 
 OutOption = Annotated[

@@ -9,10 +9,10 @@ import numpy as np
 import typer
 
 from rbi import api
+from rbi.api import check_distinct, output_target, write_output
 from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.option_values import run_settings
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.output import check_distinct, output_target, write_output
 from rbi.cli.render import emit, number, progress_bar, refuse_non_finite
 from rbi.cli.run_options import (
     DurationOption,

@@ -151,24 +151,26 @@ def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
     )
 
 
-def quaternion_from_axis_angle(axis: np.ndarray, angle_rad: float) -> np.ndarray:
-    """Unit quaternion ``[w, x, y, z]`` of a turn by ``angle_rad`` about ``axis``."""
-    u = unit_vector(axis)
-    half = 0.5 * angle_rad
-    return np.concatenate(([np.cos(half)], np.sin(half) * u))
+def quaternion_from_axis_angle(axis: np.ndarray, angle_rad: ArrayLike) -> np.ndarray:
+    """Unit quaternions ``[w, x, y, z]`` of turns by ``angle_rad`` (a number, or an array: one
+    quaternion per angle, (..., 4)) about ``axis`` (any non-zero length)."""
+    half = 0.5 * np.asarray(angle_rad, dtype=float)[..., None]
+    return np.concatenate((np.cos(half), np.sin(half) * unit_vector(axis)), axis=-1)
 
 
-def quaternion_multiply(p: np.ndarray, r: np.ndarray) -> np.ndarray:
-    """Hamilton product ``p * r`` of two ``[w, x, y, z]`` quaternions."""
-    pw, px, py, pz = p
-    rw, rx, ry, rz = r
-    return np.array(
+def quaternion_multiply(p: ArrayLike, r: ArrayLike) -> np.ndarray:
+    """Hamilton product ``p * r`` of ``[w, x, y, z]`` quaternions, (4,) or stacks (..., 4),
+    broadcasting."""
+    pw, px, py, pz = np.moveaxis(np.asarray(p, dtype=float), -1, 0)
+    rw, rx, ry, rz = np.moveaxis(np.asarray(r, dtype=float), -1, 0)
+    return np.stack(
         [
             pw * rw - px * rx - py * ry - pz * rz,
             pw * rx + px * rw + py * rz - pz * ry,
             pw * ry - px * rz + py * rw + pz * rx,
             pw * rz + px * ry - py * rx + pz * rw,
-        ]
+        ],
+        axis=-1,
     )
 
 

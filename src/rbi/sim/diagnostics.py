@@ -24,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import quaternion_to_matrix
+from rbi.core.rotation import quaternion_multiply, quaternion_to_matrix
 from rbi.sim.scene import Scene
 
 AXISYMMETRY_RTOL = 1e-9
@@ -44,17 +44,7 @@ def in_spin_frame(q: np.ndarray, frame: np.ndarray | None) -> np.ndarray:
     q = np.atleast_2d(q)
     if frame is None:
         return q
-    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    fw, fx, fy, fz = (float(c) for c in frame)
-    return np.stack(
-        (
-            w * fw - x * fx - y * fy - z * fz,
-            w * fx + x * fw + y * fz - z * fy,
-            w * fy - x * fz + y * fw + z * fx,
-            w * fz + x * fy - y * fx + z * fw,
-        ),
-        axis=1,
-    )
+    return quaternion_multiply(q, frame)
 
 
 def spin_axis_in_world(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:

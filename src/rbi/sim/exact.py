@@ -36,6 +36,8 @@ from typing import Any
 import numpy as np
 
 from rbi.core.rotation import matrix_to_quaternion, quaternion_to_matrix
+from rbi.core.rotation import quaternion_from_axis_angle as turn
+from rbi.core.rotation import quaternion_multiply as qmul
 from rbi.sim.diagnostics import AXISYMMETRY_RTOL, symmetry_axis
 from rbi.sim.scene import Scene
 
@@ -54,29 +56,8 @@ class NotIntegrable(ValueError):
 # --- quaternion helpers (rows are samples) ---------------------------------------------------
 
 
-def _qmul(p: np.ndarray, r: np.ndarray) -> np.ndarray:
-    """Hamilton product of quaternion arrays (..., 4), broadcasting."""
-    pw, px, py, pz = np.moveaxis(np.asarray(p, dtype=float), -1, 0)
-    rw, rx, ry, rz = np.moveaxis(np.asarray(r, dtype=float), -1, 0)
-    return np.stack(
-        [
-            pw * rw - px * rx - py * ry - pz * rz,
-            pw * rx + px * rw + py * rz - pz * ry,
-            pw * ry - px * rz + py * rw + pz * rx,
-            pw * rz + px * ry - py * rx + pz * rw,
-        ],
-        axis=-1,
-    )
-
-
 def _conj(q: np.ndarray) -> np.ndarray:
     return np.asarray(q, dtype=float) * np.array([1.0, -1.0, -1.0, -1.0])
-
-
-def _about(axis: np.ndarray, angle) -> np.ndarray:
-    """Quaternions of turns by ``angle`` (array) about the unit ``axis``."""
-    angle = np.asarray(angle, dtype=float)[..., None]
-    return np.concatenate((np.cos(0.5 * angle), np.sin(0.5 * angle) * np.asarray(axis, dtype=float)), axis=-1)
 
 
 _X = np.array([1.0, 0.0, 0.0])
@@ -85,7 +66,7 @@ _Z = np.array([0.0, 0.0, 1.0])
 
 def _zxz(phi, theta, psi) -> np.ndarray:
     """Quaternion of ``Rz(φ) Rx(θ) Rz(ψ)``."""
-    return _qmul(_qmul(_about(_Z, phi), _about(_X, theta)), _about(_Z, psi))
+    return qmul(qmul(turn(_Z, phi), turn(_X, theta)), turn(_Z, psi))
 
 
 def _frame_quaternion(rows: np.ndarray) -> np.ndarray:
@@ -176,7 +157,7 @@ class UniformRotation:
         t = np.atleast_1d(np.asarray(t, dtype=float))
         rate = float(np.linalg.norm(self.omega0))
         axis = self.omega0 / rate if rate > 0 else _Z
-        q = _normalised(_qmul(self.q0, _about(axis, rate * t)))
+        q = _normalised(qmul(self.q0, turn(axis, rate * t)))
         return q, np.tile(self.omega0, (t.size, 1))
 
     def facts(self) -> dict[str, Any]:
@@ -205,7 +186,7 @@ class SymmetricFreeBody:
     def state_at(self, t: np.ndarray):
         t = np.atleast_1d(np.asarray(t, dtype=float))
         h_dir = self.h_world / self.h if self.h > 0 else _Z
-        q = _qmul(_qmul(_about(h_dir, self.h / self.I_t * t), self.q0), _about(self.axis, self.spin_rate * t))
+        q = qmul(qmul(turn(h_dir, self.h / self.I_t * t), self.q0), turn(self.axis, self.spin_rate * t))
         q = _normalised(q)
         # ω_body = R(t)ᵀ h_world / I_t + Ω a
         h_body = _rotate_into_body(q, self.h_world)
@@ -223,7 +204,7 @@ class SymmetricFreeBody:
 def _rotate_into_body(q: np.ndarray, v_world: np.ndarray) -> np.ndarray:
     """``R(q)ᵀ v`` for each row of q."""
     v = np.concatenate(([0.0], v_world))
-    return _qmul(_qmul(_conj(q), v), q)[:, 1:]
+    return qmul(qmul(_conj(q), v), q)[:, 1:]
 
 
 class EulerPoinsot:
@@ -297,8 +278,8 @@ class EulerPoinsot:
         """The constant turns of q_wb(t) = q_wH ⊗ zxz(φ, θ, ψ) ⊗ q_tb that make t = 0 give ``q0``."""
         self.q_tb = _frame_quaternion(self.axes[list(self.triad)])
         phi0, theta0, psi0 = self._angles(np.array([0.0]))
-        self.q_wH = _qmul(
-            _qmul(np.asarray(q0, dtype=float), _conj(self.q_tb)), _conj(_zxz(phi0, theta0, psi0))
+        self.q_wH = qmul(
+            qmul(np.asarray(q0, dtype=float), _conj(self.q_tb)), _conj(_zxz(phi0, theta0, psi0))
         )[0]
 
     def omega_principal(self, t: np.ndarray) -> np.ndarray:
@@ -342,7 +323,7 @@ class EulerPoinsot:
     def state_at(self, t: np.ndarray):
         t = np.atleast_1d(np.asarray(t, dtype=float))
         phi, theta, psi = self._angles(t)
-        q = _qmul(_qmul(self.q_wH, _zxz(phi, theta, psi)), self.q_tb)
+        q = qmul(qmul(self.q_wH, _zxz(phi, theta, psi)), self.q_tb)
         omega = self.omega_principal(t) @ self.axes
         return _normalised(q), omega
 
@@ -492,7 +473,7 @@ class LagrangeTop:
     def state_at(self, t: np.ndarray):
         t = np.atleast_1d(np.asarray(t, dtype=float))
         phi, theta, psi, phi_dot, theta_dot = self._angles(t)
-        q = _normalised(_qmul(_zxz(phi, theta, psi), self.q_tb))
+        q = _normalised(qmul(_zxz(phi, theta, psi), self.q_tb))
         st = np.sin(theta)
         w_t = np.stack(
             (

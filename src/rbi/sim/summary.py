@@ -98,44 +98,35 @@ def error_estimate(
     }
 
 
-def motion_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
-    """The figures of a sampled motion that a run reports: tilt of the spin axis from the
-    vertical (min, max, final; deg), mean precession rate (deg/s; None when the axis stood
-    vertical at some sample, where the azimuth is undefined) and the conserved quantities with
-    their relative drift."""
-    return {
-        **tilt_figures(t, q, scene.spin_frame),
-        "conserved": diagnostics.conserved_quantities(scene, q, omega),
-    }
-
-
-def sweep_figures(scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
-    """What a sweep row reports of a run: :func:`motion_figures`' tilts and precession rate and
-    the energy's drift, computed by the same functions (so equal to a single run's), without
-    the other conserved quantities."""
-    return {
-        **tilt_figures(t, q, scene.spin_frame),
-        "energy_drift": diagnostics.energy_conservation(scene, q, omega)["drift"],
-    }
-
-
 def sweep_figures_batch(
     scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray
 ) -> list[dict[str, Any]]:
-    """:func:`sweep_figures` of B runs of one scene at once (q (B, N, 4), omega (B, N, 3)): the
-    same element-wise functions on all samples together and the same reductions per run, so
-    the same numbers for a fraction of the per-call overhead."""
+    """What a sweep row reports of each of B runs of one scene (q (B, N, 4), omega (B, N, 3)):
+    :func:`tilt_figures` and the energy's relative drift, as :func:`summarize` reports them for
+    one run, computed on all samples together."""
     B, N = q.shape[0], q.shape[1]
-    flat_q, flat_omega = q.reshape(B * N, 4), omega.reshape(B * N, 3)
-    tilt = diagnostics.tilt_deg(flat_q, scene.spin_frame).reshape(B, N)
-    axis = diagnostics.spin_axis_in_world(flat_q, scene.spin_frame).reshape(B, N, 3)
-    defined = np.hypot(axis[..., 0], axis[..., 1]) > diagnostics.VERTICAL_TOLERANCE
-    azimuth = np.degrees(np.unwrap(np.arctan2(axis[..., 1], axis[..., 0]), axis=1))
-    kinetic = diagnostics.kinetic_energy(scene, flat_omega).reshape(B, N)
-    potential = diagnostics.potential_energy(scene, flat_q).reshape(B, N)
+    kinetic = diagnostics.kinetic_energy(scene, omega.reshape(B * N, 3)).reshape(B, N)
+    potential = diagnostics.potential_energy(scene, q.reshape(B * N, 4)).reshape(B, N)
     total = kinetic + potential
     change = np.max(np.abs(total - total[:, :1]), axis=1)
     size = np.max(kinetic + np.abs(potential), axis=1)
+    figures = tilt_figures(t, q, scene.spin_frame)
+    for b, row in enumerate(figures):
+        row["energy_drift"] = diagnostics._relative(float(change[b]), float(size[b]))
+    return figures
+
+
+def tilt_figures(t: np.ndarray, q: np.ndarray, frame: np.ndarray | None = None) -> list[dict[str, Any]]:
+    """For each of B runs (q (B, N, 4)): the smallest, largest and final tilt of the spin axis
+    (deg; body z without ``frame``, see :attr:`rbi.sim.scene.Scene.spin_frame`) and the mean
+    precession rate (deg/s; None when the axis stood vertical at some sample, where the
+    azimuth is undefined)."""
+    B, N = q.shape[0], q.shape[1]
+    flat_q = q.reshape(B * N, 4)
+    tilt = diagnostics.tilt_deg(flat_q, frame).reshape(B, N)
+    axis = diagnostics.spin_axis_in_world(flat_q, frame).reshape(B, N, 3)
+    defined = np.hypot(axis[..., 0], axis[..., 1]) > diagnostics.VERTICAL_TOLERANCE
+    azimuth = np.degrees(np.unwrap(np.arctan2(axis[..., 1], axis[..., 0]), axis=1))
     duration = float(t[-1] - t[0])
     out = []
     for b in range(B):
@@ -151,37 +142,18 @@ def sweep_figures_batch(
                 "max_tilt_deg": float(np.max(tilt[b])),
                 "final_tilt_deg": float(tilt[b, -1]),
                 "precession_rate_deg_s": rate,
-                "energy_drift": diagnostics._relative(float(change[b]), float(size[b])),
             }
         )
     return out
-
-
-def tilt_figures(t: np.ndarray, q: np.ndarray, frame: np.ndarray | None = None) -> dict[str, Any]:
-    """Smallest, largest and final tilt of the spin axis (deg; body z without ``frame``, see
-    :attr:`rbi.sim.scene.Scene.spin_frame`) and the mean precession rate (deg/s or None)."""
-    tilt = diagnostics.tilt_deg(q, frame)
-    precession = diagnostics.precession_deg(q, frame)
-    duration = float(t[-1] - t[0])
-    if np.any(np.isnan(precession)):
-        rate_deg = None
-    else:
-        rate_deg = float((precession[-1] - precession[0]) / duration) if duration > 0 and t.size > 1 else 0.0
-    return {
-        "min_tilt_deg": float(np.min(tilt)),
-        "max_tilt_deg": float(np.max(tilt)),
-        "final_tilt_deg": float(tilt[-1]),
-        "precession_rate_deg_s": rate_deg,
-    }
 
 
 def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any]:
     """The run's summary: final state, nutation bounds, mean precession rate, invariants and
     their drift, cost, stability."""
     q, omega, t = trajectory.q, trajectory.omega, trajectory.t
-    figures = motion_figures(scene, t, q, omega)
+    figures = tilt_figures(t, q[None], scene.spin_frame)[0]
     rate_deg = figures["precession_rate_deg_s"]
-    conserved = figures["conserved"]
+    conserved = diagnostics.conserved_quantities(scene, q, omega)
     norms = np.linalg.norm(q, axis=1)
     return {
         "spin_axis": np.array(scene.spin_axis, dtype=float),
