@@ -70,7 +70,17 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
         document = robot_xml.read_xml(path, expanded)
         document.includes.extend(includes)
     else:
-        document = robot_xml.read_xml(path)
+        data = robot_xml.read_bytes(path)
+        if (
+            b"<robot" in data[:65536]
+        ):  # most likely a URDF: first the reader in bulk, which leaves doubts here
+            # not at top level: `rbi validate` would load rbi.formats.urdf_bulk (and lxml) too
+            from rbi.formats.urdf_bulk import read_urdf_bulk
+
+            model = read_urdf_bulk(path, data, package_paths, geometry)
+            if model is not None:
+                return model
+        document = robot_xml.read_xml(path, data)
     fmt = FORMAT_BY_ROOT.get(document.root.tag)
     if fmt is None:
         raise InputError(

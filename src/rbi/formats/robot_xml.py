@@ -160,7 +160,8 @@ class XmlDocument:
     ``encoding`` the Python codec of the original file."""
 
     path: str
-    root: XmlElement
+    root: XmlElement | None
+    """The root element (None until parsed: :func:`decoded`)."""
     text: bytes
     prefix: bytes
     suffix: bytes
@@ -178,8 +179,17 @@ class XmlDocument:
 def read_xml(path: str, data: bytes | None = None) -> XmlDocument:
     """Read and parse ``path`` (or the bytes ``data`` named by it); InputError for anything
     refused or malformed."""
+    document = decoded(path, data)
+    document.root = parse(path, document.text)
+    return document
+
+
+def decoded(path: str, data: bytes | None = None) -> XmlDocument:
+    """The document of ``path`` (or of the bytes ``data`` named by it) as UTF-8 text, not yet
+    parsed (``root`` None): InputError for a file too large, an encoding not read, text that
+    does not decode, or a token too long to parse."""
     if data is None:
-        data = _read_bytes(path)
+        data = read_bytes(path)
     prefix, body, suffix, encoding = _split(path, data)
     if encoding in ("utf-16-le", "utf-16-be"):
         utf8 = body  # decoded from UTF-16 already (_split)
@@ -199,11 +209,12 @@ def read_xml(path: str, data: bytes | None = None) -> XmlDocument:
             raise InputError(
                 f"{path}: the text does not decode as {encoding} (the encoding it declares); save it as UTF-8"
             ) from None
-    root = _parse(path, utf8)
-    return XmlDocument(path, root, utf8, prefix, suffix, encoding)
+    _refuse_huge_tokens(path, utf8)
+    return XmlDocument(path, None, utf8, prefix, suffix, encoding)
 
 
-def _read_bytes(path: str) -> bytes:
+def read_bytes(path: str) -> bytes:
+    """The bytes of the robot file ``path``; InputError (naming it) for one too large or unreadable."""
     try:
         return read_input_file(path, MAX_FILE_BYTES, "robot file")
     except InputFileRefused as exc:
@@ -274,12 +285,11 @@ def _refuse_huge_tokens(path: str, text: bytes) -> None:
             )
 
 
-def _parse(path: str, text: bytes) -> XmlElement:
+def parse(path: str, text: bytes) -> XmlElement:
     """The element tree of ``text`` (UTF-8); InputError for malformed or refused XML."""
     # not at top level: `rbi validate` would load xml.parsers.expat too
     from xml.parsers import expat
 
-    _refuse_huge_tokens(path, text)
     parser = expat.ParserCreate(encoding="utf-8")
     parser.buffer_text = True
     parser.ordered_attributes = True

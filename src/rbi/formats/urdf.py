@@ -206,7 +206,7 @@ def _joints(model: RobotModel, root) -> None:
             effort = abs(number(where, limit.get("effort"), "limit: effort"))
         link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3), effort_limit=effort)]
     check_unique_joint_names(model, "urdfdom")
-    _check_tree(model)
+    check_tree(model)
 
 
 _UNIT_AXES: dict[str, np.ndarray] = {}
@@ -235,7 +235,8 @@ def _joint_label(index: int, name: str | None) -> str:
     return f"joint[{index}]" + (f" ({short(name)})" if name is not None else "")
 
 
-def _check_tree(model: RobotModel) -> None:
+def check_tree(model: RobotModel) -> None:
+    """InputError for links no joint joins to the one root, or joints that form a loop."""
     by_name = {link.name: link for link in model.links}
     roots = [link for link in model.links if link.parent is None]
     if len(roots) > 1:
