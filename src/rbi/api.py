@@ -27,6 +27,12 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from rbi.core.dynamics import (
+    angle_between_deg,
+    angular_momentum_about_point,
+    kinetic_energy,
+    newton_euler_about,
+)
 from rbi.core.inertia import moment_about_axis, principal_axes, radii_of_gyration, re_express, unit_axis
 from rbi.core.mass import MassProperties, inertia_shares
 from rbi.core.rotation import (
@@ -39,6 +45,7 @@ from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
+from rbi.runs.values import vector_value
 from rbi.spec.checks import Check, run_checks
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
@@ -426,8 +433,6 @@ class Body(TableRepr):
 
         ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
         (ValueError when there is none); or a point (x, y, z)."""
-        # not at top level: `rbi check` would load rbi.runs.values too
-        from rbi.runs.values import vector_value
 
         if isinstance(about, str):
             key = about.strip().lower()
@@ -527,11 +532,6 @@ class Body(TableRepr):
             velocity: (3,) velocity of the centre of mass, length/s, body axes. None: the
                 ``about`` point is fixed and the body turns about it (``v = ω × r``).
         """
-        # not at top level: `rbi inertia` would load rbi.core.dynamics too
-        from rbi.core.dynamics import angle_between_deg, angular_momentum_about_point, kinetic_energy
-
-        # not at top level: `rbi check` would load rbi.runs.values too
-        from rbi.runs.values import vector_value
 
         w = np.array(vector_value(omega, "omega"))
         point = self.point(about)
@@ -618,11 +618,6 @@ class Body(TableRepr):
             force: (3,) force on the body, mass·length/s².
             torque: (3,) torque about ``about``, mass·length²/s².
         """
-        # not at top level: `rbi inertia` would load rbi.core.dynamics too
-        from rbi.core.dynamics import newton_euler_about
-
-        # not at top level: `rbi check` would load rbi.runs.values too
-        from rbi.runs.values import vector_value
 
         if (alpha is None) == (force is None and torque is None):
             raise ArgumentError(("alpha", "force"), "give either alpha (inverse) or force/torque (forward)")

@@ -10,7 +10,7 @@ Sections (each a module with ``run(quick, progress)`` returning plain data and
 - :mod:`rbi.bench.throughput`: mass properties of 10³ … 10⁶ point masses and of many solid
   parts, in memory and from files.
 - :mod:`rbi.bench.largespec`: the whole load of large YAML specs against a bare
-  ``yaml.load`` (measured by :mod:`rbi.bench.yaml_load`).
+  ``yaml.load``.
 - :mod:`rbi.bench.latency`: whole-process time of ``rbi`` commands against
   ``python -c "import numpy"``, and a first ``rbi simulate`` in a fresh HOME against a later one.
 - :mod:`rbi.bench.sweep`: ``rbi sweep`` throughput against the single-run rate and a loop of

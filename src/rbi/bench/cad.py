@@ -12,14 +12,13 @@ needs some 10 s to mesh the plate at 10⁵.
 from __future__ import annotations
 
 import math
-import statistics
 import tempfile
-import time
 from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from rbi.bench.timing import measure
 from rbi.core.inertia import parallel_axis, parallel_axis_to_com
 from rbi.formats import mesh_file, step
 from rbi.formats.step import _ocp, _quiet, step_triangles
@@ -131,14 +130,13 @@ def _errors(props, volume_mm3: float, closed) -> dict:
 def _load_cold(spec: Path, repeats: int) -> tuple[float, object]:
     """Median seconds of the whole load of ``spec`` with the file caches emptied first."""
 
-    times, body = [], None
-    for _ in range(repeats):
+    def load():
         step._CACHE.clear()
         mesh_file._CACHE.clear()
-        start = time.perf_counter()
-        body = load_body(spec)
-        times.append(time.perf_counter() - start)
-    return statistics.median(times), body
+        return load_body(spec)
+
+    timing = measure(load, min_repeats=repeats, max_repeats=repeats, min_seconds=0.0)
+    return timing.median, timing.result
 
 
 def _row(kind: str, path: Path, spec: Path, repeats: int, closed, extra: dict) -> dict:

@@ -1,20 +1,131 @@
 """Large specs (issue 9): the whole load of a YAML spec of 10⁵ point masses and of one of 10⁴
-cylinders (``rbi.spec.load.load_body``: YAML, validation, translation, the mass-property sums)
-against a bare ``yaml.load(f, Loader=yaml.CSafeLoader)`` of the same file in a plain Python,
-measured in the same run (target: at most 0.5×). The measurement itself is
-:func:`rbi.bench.yaml_load.yaml_load_ratio`; a quick run uses 10⁴ point masses and 10³
-cylinders.
+cylinders against a bare ``yaml.load(f, Loader=yaml.CSafeLoader)`` of the same file in a plain
+Python, measured in the same run (target: at most 0.5×; a quick run uses 10⁴ point masses and
+10³ cylinders).
+
+:func:`yaml_load_ratio` writes a spec of many equal-kind parts (point masses or cylinders),
+then times, each in a fresh Python process so that no import or heap state carries over:
+
+- ``bare_s``: ``yaml.load(f, Loader=yaml.CSafeLoader)`` of the file in a plain Python (the
+  garbage collector on, as any program has it), and nothing else;
+- ``rbi_load_s``: rbi's read (bounded YAML reader), validation and translation of the file
+  into core inputs — what every command does before its own work — with ``rbi_read_s``,
+  ``rbi_validate_s`` and ``rbi_translate_s`` its steps;
+- ``rbi_inertia_process_s``: the whole ``rbi inertia FILE --format json`` process, start-up
+  included (wall clock seen from outside).
+
+``ratio`` is ``rbi_load_s / bare_s``. Importing this module runs nothing.
 """
 
 from __future__ import annotations
 
+import json
+import subprocess
+import sys
+import tempfile
+import time
 from collections.abc import Callable
+from pathlib import Path
 
-from rbi.bench.yaml_load import yaml_load_ratio
+SHAPES = ("point", "cylinder")
 
 Progress = Callable[[str], None]
 
 TARGET = 0.5
+
+_BARE = """
+import sys, time, yaml
+start = time.perf_counter()
+with open(sys.argv[1]) as stream:
+    yaml.load(stream, Loader=yaml.CSafeLoader)
+print(time.perf_counter() - start)
+"""
+
+_RBI = """
+import json, sys, time
+from rbi.spec.load import paused_gc, read_yaml, validation_messages
+from rbi.spec.translate import body_from_spec
+path = sys.argv[1]
+start = time.perf_counter()
+with paused_gc():
+    raw = read_yaml(path)
+    read = time.perf_counter()
+    spec, problems = validation_messages(path, raw)
+    if problems:
+        raise SystemExit(problems[0])
+    validated = time.perf_counter()
+    body_from_spec(spec, path)
+    done = time.perf_counter()
+print(json.dumps({"read": read - start, "validate": validated - read, "translate": done - validated}))
+"""
+
+
+def spec_text(n_parts: int, shape: str, seed: int = 0) -> str:
+    """A valid spec of ``n_parts`` parts of one ``shape`` ('point' or 'cylinder'), one flow
+    mapping a line, numbers with 6 significant digits (what a generating program writes)."""
+    import numpy as np  # lazy: importing this module must load nothing a baseline would pay for
+
+    if shape not in SHAPES:
+        raise ValueError(f"shape must be one of {SHAPES} (got {shape!r})")
+    rng = np.random.default_rng(seed)
+    starts = rng.normal(size=(n_parts, 3))
+    ends = starts + rng.normal(size=(n_parts, 3)) + [0.0, 0.0, 0.5]
+    sizes = rng.uniform(0.1, 1.0, n_parts)
+
+    def v(a) -> str:
+        return f"[{a[0]:.6g}, {a[1]:.6g}, {a[2]:.6g}]"
+
+    lines = [f"name: {shape}s-{n_parts}", "units: {length: m, mass: kg}", "parts:"]
+    if shape == "point":
+        lines += [f"  - {{shape: point, mass: {m:.6g}, position: {v(p)}}}" for m, p in zip(sizes, starts)]
+    else:
+        lines += [
+            f"  - {{shape: cylinder, density: {1000 * m:.6g}, radius: {0.1 * m:.6g}, start: {v(a)}, end: {v(b)}}}"
+            for m, a, b in zip(sizes, starts, ends)
+        ]
+    return "\n".join(lines) + "\n"
+
+
+def _python(code: str, *args: str, timeout: float) -> str:
+    proc = subprocess.run(
+        [sys.executable, "-c", code, *args], capture_output=True, text=True, timeout=timeout
+    )
+    if proc.returncode != 0:
+        raise RuntimeError(f"benchmark subprocess failed: {proc.stderr.strip()[-500:]}")
+    return proc.stdout.strip()
+
+
+def yaml_load_ratio(n_parts: int, shape: str, timeout: float = 600.0) -> dict:
+    """Seconds of PyYAML's bare ``CSafeLoader`` load and of rbi's load of the same spec of
+    ``n_parts`` ``shape`` parts, each in a fresh process, and their ratio (see the module)."""
+    with tempfile.TemporaryDirectory(prefix="rbi-yaml-bench-") as folder:
+        path = Path(folder) / f"{shape}s.yaml"
+        path.write_text(spec_text(n_parts, shape))
+        bare_s = float(_python(_BARE, str(path), timeout=timeout))
+        steps = json.loads(_python(_RBI, str(path), timeout=timeout))
+        start = time.perf_counter()
+        proc = subprocess.run(
+            [sys.executable, "-m", "rbi", "inertia", str(path), "--format", "json"],
+            capture_output=True,
+            text=True,
+            timeout=timeout,
+        )
+        process_s = time.perf_counter() - start
+        if proc.returncode != 0:
+            raise RuntimeError(f"rbi inertia failed on the generated spec: {proc.stderr.strip()[-500:]}")
+        rbi_load_s = steps["read"] + steps["validate"] + steps["translate"]
+        return {
+            "parts": n_parts,
+            "shape": shape,
+            "yaml_megabytes": path.stat().st_size / 1e6,
+            "bare_s": bare_s,
+            "rbi_load_s": rbi_load_s,
+            "rbi_read_s": steps["read"],
+            "rbi_validate_s": steps["validate"],
+            "rbi_translate_s": steps["translate"],
+            "rbi_inertia_process_s": process_s,
+            "ratio": rbi_load_s / bare_s,
+        }
 
 
 def cases(quick: bool) -> list[tuple[int, str]]:

@@ -17,11 +17,12 @@ from rbi.sim.compiled import integrator
 
 
 class Timing(NamedTuple):
-    """Repeated wall-clock timings of one call, seconds."""
+    """Repeated wall-clock timings of one call, seconds, and what its last run returned."""
 
     median: float
     best: float
     repeats: int
+    result: object = None
 
 
 def measure(
@@ -31,13 +32,14 @@ def measure(
     (at most ``max_repeats`` times); the median resists the other users of a shared machine."""
     times: list[float] = []
     spent = 0.0
+    result = None
     while len(times) < min_repeats or (spent < min_seconds and len(times) < max_repeats):
         start = time.perf_counter()
-        call()
+        result = call()
         elapsed = time.perf_counter() - start
         times.append(elapsed)
         spent += elapsed
-    return Timing(statistics.median(times), min(times), len(times))
+    return Timing(statistics.median(times), min(times), len(times), result)
 
 
 def time_once(call: Callable[[], object]) -> tuple[float, object]:

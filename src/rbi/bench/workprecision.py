@@ -19,8 +19,6 @@ runs for the fast methods). The chapter's set-up is ``rk45`` at rtol 1e-8 (atol 
 
 from __future__ import annotations
 
-import statistics
-import time
 from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
@@ -28,6 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench.paths import bodies_folder
+from rbi.bench.timing import measure
 from rbi.sim.api import simulate
 from rbi.sim.compiled import integrator
 from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg
@@ -92,14 +91,13 @@ def timed_run(scene, q0, omega0, case: Case, method: str, rtol: float | None, mi
     call over repeats (a run of the compiled method takes about a millisecond, too short to
     time once on a busy machine)."""
 
-    runs = []
-    spent = 0.0
-    while not runs or (spent < min_seconds and len(runs) < 500):
-        start = time.perf_counter()
-        trajectory = simulate(scene, q0, omega0, case.duration, case.samples, method=method, rtol=rtol)
-        runs.append(time.perf_counter() - start)
-        spent += runs[-1]
-    return trajectory, statistics.median(runs), len(runs)
+    timing = measure(
+        lambda: simulate(scene, q0, omega0, case.duration, case.samples, method=method, rtol=rtol),
+        min_repeats=1,
+        max_repeats=500,
+        min_seconds=min_seconds,
+    )
+    return timing.result, timing.median, timing.repeats
 
 
 def errors(scene, trajectory, reference) -> dict:

@@ -77,11 +77,7 @@ def animate(
         require_matplotlib("--out")
     body = api.load(file)
     say_warnings(body.warnings)
-    progress = progress_bar("gif", "frames") if target.format == "gif" else None
-    try:
+    with progress_bar("gif", "frames", show=target.format == "gif") as progress:
         made = api.animate(body, target, progress=progress.update if progress else None, **settings)
-    finally:
-        if progress is not None:
-            progress.close()
     shown = f"{made.frames} {'keyframes' if target.format == 'html' else 'frames'}"
     print(f"{out}: {shown} over {duration:g} s, largest tilt of the spin axis {made.max_tilt_deg:.3g}°")

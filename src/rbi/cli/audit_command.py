@@ -18,18 +18,10 @@ import typer
 
 from rbi.api import SpecError, output_target
 from rbi.api import audit as run_audit
-from rbi.cli.options import FormatOption, OutputFormat, RobotFile
+from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile
+from rbi.cli.render import emit, number, print_table, terminal_safe, without_noise
 from rbi.cli.terminal import say
 
-PackagePathOption = Annotated[
-    list[str] | None,
-    typer.Option(
-        "--package-path",
-        metavar="NAME=DIR",
-        help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
-        "(ROS_PACKAGE_PATH is searched too).",
-    ),
-]
 GeometryOption = Annotated[
     str,
     typer.Option(
@@ -175,15 +167,11 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
             "changes": [{"link": c.link, "reason": c.reason} for c in report.fix.changes],
             "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable],
         }
-    # not at top level: `rbi import` would load rbi.cli.render too
-    from rbi.cli.render import emit
 
     emit(format.value, result, lambda: None, csv_rows=[_csv_row(each) for each in report.links])
 
 
 def _csv_row(each) -> dict:
-    # not at top level: `rbi import` would load rbi.cli.render too
-    from rbi.cli.render import terminal_safe
 
     declared, geo = each.declared, each.geometry
     return {
@@ -200,9 +188,6 @@ def _csv_row(each) -> dict:
 
 
 def _table(report) -> None:
-
-    # not at top level: `rbi import` would load rbi.cli.render too
-    from rbi.cli.render import number, print_table, terminal_safe
 
     # not at top level: `rbi audit --format json` would load rbi.cli.tables too
     from rbi.cli.tables import titled
@@ -257,8 +242,6 @@ def _joints_table(report) -> None:
     """Each joint's holding torque against gravity, its declared effort limit and the margin."""
     if not report.joints:
         return
-    # not at top level: `rbi import` would load rbi.cli.render too
-    from rbi.cli.render import number, print_table, terminal_safe, without_noise
 
     # not at top level: `rbi audit --format json` would load rbi.cli.tables too
     from rbi.cli.tables import plain_text, titled
@@ -287,8 +270,6 @@ def _fix_text(report, file: str, out: str | None) -> None:
     plan = report.fix
     if out is None:
         diff = plan.diff(file)
-        # not at top level: `rbi import` would load rbi.cli.render too
-        from rbi.cli.render import terminal_safe
 
         sys.stdout.write(terminal_safe(diff, keep="\n") if diff else "")
         print(f"--fix: {len(plan.changes)} inertial(s) would change (dry run; --out FILE writes the copy)")

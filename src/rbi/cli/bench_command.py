@@ -146,20 +146,15 @@ def _progress(format: OutputFormat, total: int):
     """A step callback: the progress bar on a terminal (table output only), else silent; each
     step names the measurement it starts."""
 
-    bar = progress_bar("rbi bench", "", total=total, elapsed=True) if format == OutputFormat.table else None
-    if bar is None:
-        yield lambda _label: None
-        return
     steps = [0]
+    with progress_bar("rbi bench", "", total=total, elapsed=True, show=format == OutputFormat.table) as bar:
 
-    def step(label: str) -> None:
-        bar.update(steps[0], what=label)
-        steps[0] += 1
+        def step(label: str) -> None:
+            if bar is not None:
+                bar.update(steps[0], what=label)
+            steps[0] += 1
 
-    try:
         yield step
-    finally:
-        bar.close()
 
 
 def _tables(result: dict):

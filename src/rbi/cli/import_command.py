@@ -12,8 +12,8 @@ import typer
 
 from rbi import api
 from rbi.api import SpecError, check_distinct, import_step, output_target, write_output
-from rbi.cli.audit_command import PackagePathOption
-from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption
+from rbi.cli.render import emit
 from rbi.cli.terminal import say, terminal_safe
 
 ImportFile = Annotated[
@@ -149,8 +149,6 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
 
 def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
     """The solids with their mass properties at the spec's density, SI."""
-    # not at top level: `rbi import` would load rbi.cli.render too
-    from rbi.cli.render import emit
 
     density = imported.density
     rows = [
@@ -218,8 +216,6 @@ def _file_names(links, word: str) -> list[str]:
 
 
 def _emit_listing(format: OutputFormat, robot, targets) -> None:
-    # not at top level: `rbi import` would load rbi.cli.render too
-    from rbi.cli.render import emit
 
     written = {id(each): target.given for target, each in targets or []}
     rows = [

@@ -47,6 +47,15 @@ RobotFile = Annotated[
         help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False, metavar="ROBOT_FILE"
     ),
 ]
+PackagePathOption = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--package-path",
+        metavar="NAME=DIR",
+        help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
+        "(ROS_PACKAGE_PATH is searched too).",
+    ),
+]
 AboutOption = Annotated[
     str,
     typer.Option(

@@ -3,12 +3,13 @@ the one formatter, :func:`rbi.api.number`."""
 
 from __future__ import annotations
 
+import contextlib
 import json
 import math
 import os
 import sys
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 import numpy as np
@@ -337,11 +338,19 @@ class ProgressBar:
             self.bar = None
 
 
-def progress_bar(what: str, unit: str | None = None, **options) -> ProgressBar | None:
-    """A :class:`ProgressBar` when the stream it is drawn on is a terminal, else None (a pipe
-    or a log file gets nothing)."""
+@contextlib.contextmanager
+def progress_bar(
+    what: str, unit: str | None = None, *, show: bool = True, **options
+) -> Iterator[ProgressBar | None]:
+    """A :class:`ProgressBar` (closed on leaving the block) when ``show`` and the stream it is
+    drawn on is a terminal, else None (a pipe or a log file gets nothing)."""
     stream = sys.stdout if options.get("stdout") else sys.stderr
-    return ProgressBar(what, unit, **options) if stream is not None and stream.isatty() else None
+    bar = ProgressBar(what, unit, **options) if show and stream is not None and stream.isatty() else None
+    try:
+        yield bar
+    finally:
+        if bar is not None:
+            bar.close()
 
 
 # --- fitting the terminal (rich imported inside: JSON and CSV never load it, ~25 ms) ---------

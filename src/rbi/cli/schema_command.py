@@ -10,8 +10,7 @@ import typer
 
 from rbi.api import SpecError, spec_schema
 from rbi.api import validate as problems_of
-from rbi.cli.audit_command import PackagePathOption
-from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption
 from rbi.cli.render import emit, terminal_safe
 
 

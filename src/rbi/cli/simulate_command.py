@@ -146,14 +146,10 @@ def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: 
     """Load the spec and simulate it, with a progress bar on a terminal: ``(body, trajectory)``."""
 
     body = api.load(file)
-    progress = progress_bar("simulating", stdout=True, delay=0.5) if format == OutputFormat.table else None
-    try:
+    with progress_bar("simulating", stdout=True, delay=0.5, show=format == OutputFormat.table) as progress:
         return body, api.simulate(
             body, samples=samples, error_estimate=error_estimate, progress=progress, **settings
         )
-    finally:
-        if progress is not None:
-            progress.close()
 
 
 def _plot(target, body, run, settings: dict) -> None:

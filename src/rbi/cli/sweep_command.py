@@ -17,7 +17,7 @@ from rbi.cli import tables
 from rbi.cli.extras import needs, require, require_matplotlib
 from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import ProgressBar, emit, number, to_csv
+from rbi.cli.render import emit, number, progress_bar, to_csv
 from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
 from rbi.cli.terminal import Terminated, say
 
@@ -252,28 +252,25 @@ def _run(file: str, settings: dict, out: str | None, resume: bool):
     """Run the sweep with a progress bar on a terminal; on Ctrl-C or SIGTERM say how many runs
     --out kept (exit 130 or 143)."""
 
-    bar = ProgressBar("sweep", "runs") if sys.stderr.isatty() else None
     told: list[int] = []
+    with progress_bar("sweep", "runs") as bar:
 
-    def progress(done: int, total: int) -> None:
-        told[:] = [done, total]
-        if bar is not None:
-            bar.update(done, total)
+        def progress(done: int, total: int) -> None:
+            told[:] = [done, total]
+            if bar is not None:
+                bar.update(done, total)
 
-    try:
-        return api.sweep(file, resume=resume, progress=progress, **settings)
-    except (KeyboardInterrupt, Terminated) as stop:
-        if out is None or not told:
-            raise
-        word, code = ("terminated", 143) if isinstance(stop, Terminated) else ("interrupted", 130)
-        say(
-            f"{word}: {told[0]:,} of {told[1]:,} runs kept in {out}; run the same command with "
-            "--resume to compute the rest"
-        )
-        raise SystemExit(code) from None
-    finally:
-        if bar is not None:
-            bar.close()
+        try:
+            return api.sweep(file, resume=resume, progress=progress, **settings)
+        except (KeyboardInterrupt, Terminated) as stop:
+            if out is None or not told:
+                raise
+            word, code = ("terminated", 143) if isinstance(stop, Terminated) else ("interrupted", 130)
+            say(
+                f"{word}: {told[0]:,} of {told[1]:,} runs kept in {out}; run the same command with "
+                "--resume to compute the rest"
+            )
+            raise SystemExit(code) from None
 
 
 def _table(result, table, file):

@@ -26,20 +26,7 @@ def say(message: str) -> None:
 
 # --- terminals that cannot encode every character ------------------------------------------
 
-SUPERSCRIPTS = {
-    "⁰": "0",
-    "¹": "1",
-    "²": "2",
-    "³": "3",
-    "⁴": "4",
-    "⁵": "5",
-    "⁶": "6",
-    "⁷": "7",
-    "⁸": "8",
-    "⁹": "9",
-    "⁻": "-",
-    "ᵀ": "T",
-}
+SUPERSCRIPTS = dict(zip("⁰¹²³⁴⁵⁶⁷⁸⁹⁻ᵀ", "0123456789-T"))
 """Superscripts, spelled ``^`` and the plain characters (``m²`` → ``m^2``, ``10⁻⁴`` → ``10^-4``)."""
 
 ASCII_SPELLINGS = {

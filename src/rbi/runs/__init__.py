@@ -1,9 +1,5 @@
-"""Runs of a simulation, below the CLI and the API: the checks of run settings, the
-preparation of a run from a loaded body, and the run itself with its summary.
-
-Modules: :mod:`rbi.runs.values` (command-line style values such as ``"1,2,3"``),
-:mod:`rbi.runs.run` (checks of the settings before any work), :mod:`rbi.runs.run`
-(body → scene, initial state, step budget), :mod:`rbi.runs.run` (the run, its summary
-and its CSV). Messages name the options the CLI uses (``--duration``, ``--spin`` ...), so the
-CLI and the Python API report a bad setting with the same line.
+"""Runs of a simulation, below the CLI and the API: :mod:`rbi.runs.run` (settings checked before
+any work, body → scene and initial state, the run, its summary and its CSV),
+:mod:`rbi.runs.values` (numbers given to the API, checked), :mod:`rbi.runs.animation` (a run
+drawn as a page or a GIF). Messages name the API's parameters (:class:`rbi.errors.ArgumentError`).
 """

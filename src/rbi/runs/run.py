@@ -11,7 +11,6 @@ them (:class:`~rbi.errors.ArgumentError`); a spec that cannot be simulated is an
 
 from __future__ import annotations
 
-import numbers
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
@@ -21,7 +20,7 @@ import numpy as np
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, unit_vector
 from rbi.core.spin_axis import default_spin_axis
 from rbi.errors import ArgumentError, InputError
-from rbi.runs.values import finite, require_numbers, vector_value
+from rbi.runs.values import finite, require_numbers, vector_value, whole
 from rbi.sim.api import METHODS, RTOL_RANGE, SimulationError, simulate
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import tilt_deg
@@ -51,7 +50,7 @@ def check_run_settings(duration: Any, tilt_axis: Any, gravity: Any, max_steps: A
         raise ArgumentError("tilt_axis", f"must be x or y (got {tilt_axis!r})")
     if gravity is not None and not (finite(gravity) and gravity >= 0.0):
         raise ArgumentError("gravity", f"must be a finite number of m/s² >= 0 (got {gravity!r})")
-    if max_steps is not None and not (_whole(max_steps) and max_steps >= 1):
+    if max_steps is not None and not (whole(max_steps) and max_steps >= 1):
         raise ArgumentError("max_steps", f"must be at least 1 (got {max_steps!r})")
     if rtol is not None and not (finite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
         raise ArgumentError("rtol", f"must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
@@ -97,12 +96,8 @@ def check_run_options(
 def check_samples(samples: Any, most: int = MAX_SAMPLES, what: str = "") -> None:
     """Refuse a number of samples outside 1 … ``most`` (``what``: said after the range)."""
     require_numbers(integral=True, samples=samples)
-    if not (_whole(samples) and 1 <= samples <= most):
+    if not (whole(samples) and 1 <= samples <= most):
         raise ArgumentError("samples", f"must be between 1 and {most:,}{what} (got {samples!r})")
-
-
-def _whole(value: Any) -> bool:
-    return not isinstance(value, bool) and isinstance(value, numbers.Integral)
 
 
 def spin_axis_value(value: str | Sequence[float] | None) -> list[float] | None:

@@ -42,3 +42,8 @@ def finite(value: Any) -> bool:
         return math.isfinite(value)
     except TypeError:
         return False
+
+
+def whole(value: Any) -> bool:
+    """True for a whole number (a bool is not one)."""
+    return isinstance(value, numbers.Integral) and not isinstance(value, bool)

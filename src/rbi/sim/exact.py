@@ -39,6 +39,7 @@ from rbi.core.rotation import matrix_to_quaternion, quaternion_to_matrix
 from rbi.core.rotation import quaternion_from_axis_angle as turn
 from rbi.core.rotation import quaternion_multiply as qmul
 from rbi.sim.diagnostics import AXISYMMETRY_RTOL, symmetry_axis
+from rbi.sim.elliptic import ellipk, ellipkinc, ellippi
 from rbi.sim.scene import Scene
 
 PARALLEL_RTOL = 1e-14
@@ -96,21 +97,11 @@ def _pi_incomplete(n: float, phi: np.ndarray, m: float) -> np.ndarray:
     return value
 
 
-def _pi_complete(n: float, m: float) -> float:
-    # not at top level: `rbi simulate --format csv` would load rbi.sim.elliptic too
-    from rbi.sim.elliptic import ellippi
-
-    return ellippi(n, m)
-
-
 class _Elliptic:
     """Jacobi elliptic functions of a parameter m evaluated with argument reduction, and the
     integral ``G(n; u) = ∫₀^u du' / (1 − n sn²u')`` for any real u."""
 
     def __init__(self, m: float) -> None:
-        # not at top level: `rbi simulate --format csv` would load rbi.sim.elliptic too
-        from rbi.sim.elliptic import ellipk
-
         if not 0.0 <= m < 1.0:
             raise NotIntegrable(
                 f"elliptic parameter m = {m!r} outside [0, 1) (the motion is on a separatrix)"
@@ -132,13 +123,7 @@ class _Elliptic:
 
     def G(self, n: float, u: np.ndarray) -> np.ndarray:
         _, _, _, am, j = self.functions(u)
-        return 2.0 * j * _pi_complete(n, self.m) + _pi_incomplete(n, am, self.m)
-
-    def F(self, phi: float) -> float:
-        # not at top level: `rbi simulate --format csv` would load rbi.sim.elliptic too
-        from rbi.sim.elliptic import ellipkinc
-
-        return ellipkinc(phi, self.m)
+        return 2.0 * j * ellippi(n, self.m) + _pi_incomplete(n, am, self.m)
 
 
 # --- solutions ---------------------------------------------------------------------------------
@@ -260,7 +245,7 @@ class EulerPoinsot:
             I_cn, A_cn, I_sn, A_sn = I3, A3, I2, A2
             n1_over_d1 = 1.0 / I1
         self.ell = _Elliptic(m)
-        self.tau0 = self.ell.F(math.atan2(sn0, cn0))
+        self.tau0 = ellipkinc(math.atan2(sn0, cn0), self.ell.m)
         # φ̇ = M [n1/d1 + (n0 d1 − n1 d0)/(d0 d1) / (1 − ν sn²)], ν = −d1/d0
         d0 = (I_cn * A_cn) ** 2
         d1 = (I_sn * A_sn) ** 2 - d0
@@ -404,7 +389,8 @@ class LagrangeTop:
         u_dot0 = -sin_theta0 * theta_dot0
         ratio = min(max((self.u0 - self.u1) / self.delta, 0.0), 1.0) if self.delta > 0 else 0.0
         self.sigma0 = math.copysign(
-            self.ell.F(math.asin(math.sqrt(ratio))), u_dot0 if u_dot0 != 0 else (1.0 if ratio > 0.5 else -1.0)
+            ellipkinc(math.asin(math.sqrt(ratio)), self.ell.m),
+            u_dot0 if u_dot0 != 0 else (1.0 if ratio > 0.5 else -1.0),
         )
         self.n_plus = self.delta / (1.0 - self.u1)
         self.n_minus = -self.delta / (1.0 + self.u1)
@@ -499,8 +485,8 @@ class LagrangeTop:
     def mean_precession_rate(self) -> float:
         """Mean of φ̇ over a nutation period (rad/s)."""
         period_sigma = 2.0 * self.ell.K
-        jp = 2.0 * _pi_complete(self.n_plus, self.ell.m) / (self.sigma_rate * (1.0 - self.u1))
-        jm = 2.0 * _pi_complete(self.n_minus, self.ell.m) / (self.sigma_rate * (1.0 + self.u1))
+        jp = 2.0 * ellippi(self.n_plus, self.ell.m) / (self.sigma_rate * (1.0 - self.u1))
+        jm = 2.0 * ellippi(self.n_minus, self.ell.m) / (self.sigma_rate * (1.0 + self.u1))
         return (0.5 * (self.a - self.b) * jp + 0.5 * (self.a + self.b) * jm) / (
             period_sigma / self.sigma_rate
         )

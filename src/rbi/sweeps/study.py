@@ -23,6 +23,7 @@ import numpy as np
 
 from rbi.errors import ArgumentError, InputError
 from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, spin_axis_value
+from rbi.runs.values import whole
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.sim.scene import scene_from_properties
@@ -86,16 +87,16 @@ def check_settings(settings: SweepSettings) -> None:
     """Refuse the number of runs, the run settings, the samples, the workers and (a study of
     mass properties) a spin or tilt, before any file is read."""
 
-    if not _whole(settings.runs) or settings.runs < 1:
+    if not whole(settings.runs) or settings.runs < 1:
         raise ArgumentError("runs", f"must be a whole number, at least 1 (got {settings.runs!r})")
-    if not _whole(settings.seed) or settings.seed < 0:
+    if not whole(settings.seed) or settings.seed < 0:
         raise ArgumentError("seed", f"must be a whole number 0 or above (got {settings.seed!r})")
     check_run_settings(
         settings.duration, settings.tilt_axis, settings.gravity, settings.max_steps, settings.rtol
     )
     check_samples(settings.samples, MAX_SWEEP_SAMPLES, " for a sweep")
     spin_axis_value(settings.spin_axis)
-    if settings.workers is not None and not (_whole(settings.workers) and 1 <= settings.workers <= 1024):
+    if settings.workers is not None and not (whole(settings.workers) and 1 <= settings.workers <= 1024):
         raise ArgumentError("workers", f"must be between 1 and 1024 (got {settings.workers!r})")
     if settings.mass_properties and (_nonzero(settings.spin) or _nonzero(settings.tilt_deg)):
         raise ArgumentError(
@@ -103,10 +104,6 @@ def check_settings(settings: SweepSettings) -> None:
         )
     if settings.dask is not None:
         check_address(settings.dask)
-
-
-def _whole(value: Any) -> bool:
-    return isinstance(value, numbers.Integral) and not isinstance(value, bool)
 
 
 def _nonzero(value: Any) -> bool:
