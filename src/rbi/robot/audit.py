@@ -93,6 +93,22 @@ class GeometryProps:
     high: np.ndarray
     source: str = "collision"
 
+    @classmethod
+    def of(cls, properties, centroid, volume, implied_density, low, high, source) -> GeometryProps:
+        """``GeometryProps(...)`` without the frozen dataclass's checks per field (an audit of
+        100,000 links makes one per link)."""
+        value = object.__new__(cls)
+        vars(value).update(
+            properties=properties,
+            centroid=centroid,
+            volume=volume,
+            implied_density=implied_density,
+            low=low,
+            high=high,
+            source=source,
+        )
+        return value
+
     @property
     def mass(self) -> float | None:
         return None if self.properties is None else self.properties.mass
@@ -378,6 +394,9 @@ def _carried_mass(model: RobotModel) -> dict[int, bool]:
     children: dict[str | None, list[Link]] = {}
     for link in model.links:
         children.setdefault(link.parent, []).append(link)
+    in_one_pass = _carried_in_one_pass(model, children)
+    if in_one_pass is not None:
+        return in_one_pass
     result: dict[int, bool] = {}
 
     def below(link: Link) -> bool:
@@ -398,6 +417,28 @@ def _carried_mass(model: RobotModel) -> dict[int, bool]:
     for link in model.links:
         result[link.index] = below(link)
     return result
+
+
+def _carried_in_one_pass(model: RobotModel, children: dict) -> dict[int, bool] | None:
+    """:func:`_carried_mass` for a forest of named links (each reached once from the roots), in
+    one pass from the leaves up; None for anything else (unnamed bodies, links hanging from
+    none of the model's links), which the walk below each link answers."""
+    order: list[Link] = []
+    queue = list(children.get(None, []))
+    while queue:
+        link = queue.pop()
+        if link.name is None or len(order) == len(model.links):
+            return None  # an unnamed body, or more links than the model has: names repeat
+        order.append(link)
+        queue.extend(children.get(link.name, []))
+    if len(order) != len(model.links) or len({link.name for link in order}) != len(order):
+        return None
+    below: dict[str | None, bool] = {}
+    for link in reversed(order):  # every child before its parent
+        heavy = link.inertial is not None and link.inertial.mass > 0
+        if heavy or below.get(link.name, False):
+            below[link.parent] = True
+    return {link.index: below.get(link.name, False) for link in model.links}
 
 
 def chosen_geoms(link: Link, geometry: str) -> tuple[list, str]:
@@ -524,24 +565,32 @@ def _geometry_rows(
     model, rows, chosen, fine, measure, inertia, com, low, high, density
 ) -> dict[int, GeometryProps]:
     """The :class:`GeometryProps` of each ``fine`` row, as :func:`_geometry_props` makes it from
-    one piece of ``measure`` (m³) with its inertia at density 1, centroid and bounds."""
+    one piece of ``measure`` (m³) with its inertia at density 1, centroid and bounds: the mass
+    (the declared one when positive, else ``density`` times the volume), the implied density
+    and the scaled inertia worked out on the arrays (the same IEEE operations, element by
+    element)."""
+    links = model.links
+    declared = np.array(
+        [0.0 if links[row].inertial is None else links[row].inertial.properties.mass for row in rows],
+        dtype=float,
+    ).reshape(-1)
+    given = declared > 0
+    with np.errstate(all="ignore"):
+        mass = np.where(given, declared, np.nan if density is None else density * measure)
+        implied = mass / measure
+        scaled = inertia * implied[:, None, None]
+    given |= density is not None
+    centres = com.copy()
     found = {}
-    for k, row in enumerate(rows):
-        if not fine[k]:
+    for k, (row, ok, has_mass, volume, m, rho) in enumerate(
+        zip(rows, fine.tolist(), given.tolist(), measure.tolist(), mass.tolist(), implied.tolist())
+    ):
+        if not ok:
             continue
-        inertial = model.links[row].inertial
-        volume = float(measure[k])
-        if inertial is not None and inertial.properties.mass > 0:
-            mass: float | None = inertial.properties.mass
-        elif density is not None:
-            mass = density * volume
-        else:
-            mass = None
-        properties = None
-        if mass is not None:
-            properties = MassProperties.of_arrays(mass, com[k].copy(), inertia[k] * (mass / volume), "link")
-        implied = mass / volume if mass is not None else None
-        found[row] = GeometryProps(properties, com[k], volume, implied, low[k], high[k], chosen[row][1])
+        properties = MassProperties.of_arrays(m, centres[k], scaled[k], "link") if has_mass else None
+        found[row] = GeometryProps.of(
+            properties, com[k], volume, rho if has_mass else None, low[k], high[k], chosen[row][1]
+        )
     return found
 
 
