@@ -203,11 +203,11 @@ def first_run(bodies: Path, repeats: int) -> dict:
                 XDG_CACHE_HOME=os.path.join(home, ".cache"),
                 XDG_CONFIG_HOME=os.path.join(home, ".config"),
             )
-            seconds, status, message = time_process(argv, env)
+            seconds, _, status, message = time_process_cpu(argv, env)
             if status != 0:
                 return {"error": f"exit {status}: {message}"}
             firsts.append(seconds)
-            laters.append(time_process(argv, env)[0])
+            laters.append(time_process_cpu(argv, env)[0])
             messages.append(message)
             left = sorted(str(p.relative_to(home)) for p in Path(home).rglob("*"))
     first, later = statistics.median(firsts), statistics.median(laters)
@@ -221,12 +221,6 @@ def first_run(bodies: Path, repeats: int) -> dict:
         "files_left_in_home": left,
         "compiling_line": any("compil" in m.lower() for m in messages),
     }
-
-
-def time_process(argv: list[str], env: dict | None = None) -> tuple[float, int, str]:
-    """Wall seconds, exit status and the last line of stderr of one run."""
-    wall, _, status, last = time_process_cpu(argv, env)
-    return wall, status, last
 
 
 def time_process_cpu(argv: list[str], env: dict | None = None) -> tuple[float, float, int, str]:
@@ -275,7 +269,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         timed = []
         for label, argv in commands(bodies, cloud):
             progress(f"latency: {label}")
-            _, status, message = time_process(argv)  # warm-up (and a check that it works)
+            _, _, status, message = time_process_cpu(argv)  # warm-up (and a check that it works)
             if status != 0:
                 rows.append({"command": label, "error": f"exit {status}: {message}"})
                 continue

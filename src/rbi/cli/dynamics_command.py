@@ -11,7 +11,7 @@ from rbi import api
 from rbi.api import LENGTH_UNITS, MASS_UNITS, SpecError
 from rbi.cli import tables
 from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_vector
-from rbi.cli.render import emit, number
+from rbi.cli.render import emit, number, vector_text
 
 _VEC = "X,Y,Z"
 
@@ -136,16 +136,16 @@ def _table(body, result: dict, held: bool):
         f"{body.name or body.path} — Newton–Euler about {about_label} ({result['mode']})",
         [
             ("mass", labels["mass"], number(result["mass"], 8)),
-            (f"about ({about_label})", labels["length"], tables.vector(result["about"])),
-            ("ω", "rad/s", tables.vector(result["omega"])),
-            (f"α ({given})", "rad/s²", tables.vector(result["alpha"])),
+            (f"about ({about_label})", labels["length"], vector_text(result["about"])),
+            ("ω", "rad/s", vector_text(result["omega"])),
+            (f"α ({given})", "rad/s²", vector_text(result["alpha"])),
             (
                 f"a of {about_label} ({'given' if held else given})",
                 f"{labels['length']}/s²",
-                tables.vector(result["point_acceleration"]),
+                vector_text(result["point_acceleration"]),
             ),
-            (f"force ({force_note})", _load_unit(body, 1), tables.vector(result["force"])),
-            (f"torque about {about_label} ({found})", _load_unit(body, 2), tables.vector(result["torque"])),
+            (f"force ({force_note})", _load_unit(body, 1), vector_text(result["force"])),
+            (f"torque about {about_label} ({found})", _load_unit(body, 2), vector_text(result["torque"])),
         ],
     )
 

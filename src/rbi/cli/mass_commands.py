@@ -23,16 +23,11 @@ from rbi.cli.options import (
     parse_rotation,
     parse_vector,
 )
-from rbi.cli.render import body_size, emit, matrix_digits, number
+from rbi.cli.render import body_size, emit, matrix_digits, number, vector_text
 
-PRODUCT_SIGNS = ("tensor", "cad")
+PRODUCT_SIGN_TITLES = {"tensor": "products −∫xy dm", "cad": "CAD products +∫xy dm"}
 """Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
-(the positive integrals ``+∫xy dm`` SolidWorks and CATIA print)."""
-
-PRODUCT_SIGN_TITLES = {
-    "tensor": "products −∫xy dm",
-    "cad": "CAD products +∫xy dm",
-}
+(the positive integrals ``+∫xy dm`` SolidWorks and CATIA print), with their tables' titles."""
 
 
 class ProductsSign(str, Enum):
@@ -178,9 +173,9 @@ def _momentum_table(body, result: dict, about_label: str):
         title(body, f"momentum about {about_label}"),
         [
             *place_rows(body, about_label, result["about"]),
-            ("ω (body axes)", "rad/s", tables.vector(result["omega"])),
-            ("v of centre of mass", labels["velocity"], tables.vector(result["com_velocity"])),
-            ("angular momentum h", labels["angular_momentum"], tables.vector(result["angular_momentum"])),
+            ("ω (body axes)", "rad/s", vector_text(result["omega"])),
+            ("v of centre of mass", labels["velocity"], vector_text(result["com_velocity"])),
+            ("angular momentum h", labels["angular_momentum"], vector_text(result["angular_momentum"])),
             ("angle between h and ω", "deg", number(result["angle_deg"], 6)),
             ("kinetic energy", labels["energy"], number(result["kinetic_energy"], 8)),
         ],
@@ -202,7 +197,7 @@ def header(body: api.Body, about_label: str, about_point) -> dict:
 
 def with_product_sign(inertia, sign: str):
     """The inertia matrix with its off-diagonal entries in convention ``sign`` (see
-    :data:`PRODUCT_SIGNS`); the moments on the diagonal never change."""
+    :data:`PRODUCT_SIGN_TITLES`); the moments on the diagonal never change."""
 
     shown = np.array(inertia, dtype=float)
     if sign == "tensor":
@@ -211,20 +206,18 @@ def with_product_sign(inertia, sign: str):
         off_diagonal = ~np.eye(3, dtype=bool)
         shown[off_diagonal] = 0.0 - shown[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
         return shown
-    raise ValueError(f"unknown products sign {sign!r} (expected one of {PRODUCT_SIGNS})")
+    raise ValueError(f"unknown products sign {sign!r} (expected one of {tuple(PRODUCT_SIGN_TITLES)})")
 
 
 def place_rows(body: api.Body, about_label: str, point) -> list[tuple[str, str, str]]:
     """The rows every mass-properties table starts with: the mass, the centre of mass and the
     ``--about`` point (a coordinate below 1e-12 of the body's size printed 0)."""
-    # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
-    from rbi.cli import tables
 
     labels, size = body.unit_labels, body_size(body)
     return [
         ("mass", labels["mass"], number(body.mass, 8)),
-        ("centre of mass", labels["length"], tables.vector(body.center_of_mass, size)),
-        (f"about ({about_label})", labels["length"], tables.vector(point, size)),
+        ("centre of mass", labels["length"], vector_text(body.center_of_mass, scale=size)),
+        (f"about ({about_label})", labels["length"], vector_text(point, scale=size)),
     ]
 
 
@@ -259,7 +252,7 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
         ]
         if direction is not None:
             rows += [
-                ("axis (unit)", "", tables.vector(direction)),
+                ("axis (unit)", "", vector_text(direction)),
                 ("moment about axis", labels["inertia"], number(result["moment_about_axis"], 8)),
             ]
         return tables.stack(

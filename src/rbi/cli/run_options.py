@@ -79,6 +79,17 @@ YesOption = Annotated[
     typer.Option(
         "--yes",
         "-y",
-        help="Run even when the run is estimated to exceed the step budget (the budget still stops it).",
+        help="Run even when the run (or sweep) is estimated to exceed the step budget (the budget still "
+        "stops each run).",
+    ),
+]
+SamplesOption = Annotated[
+    int,
+    typer.Option(
+        "--samples",
+        "-n",
+        metavar="N",
+        help="Samples of each run, equally spaced from t=0 to t=T (1: only the end); a sweep's "
+        "summaries are taken over them.",
     ),
 ]

@@ -13,13 +13,14 @@ from rbi.api import check_distinct, output_target, write_output
 from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.option_values import run_settings
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import emit, number, progress_bar, refuse_non_finite
+from rbi.cli.render import emit, number, progress_bar, refuse_non_finite, vector_text
 from rbi.cli.run_options import (
     DurationOption,
     GravityOption,
     MaxStepsOption,
     OmegaOption,
     RtolOption,
+    SamplesOption,
     SpinAxisOption,
     SpinOption,
     TiltAxisOption,
@@ -38,12 +39,6 @@ METHOD_HELP = (
     "form (free body; axisymmetric top with its centre of mass on the axis)."
 )
 
-SamplesOption = Annotated[
-    int,
-    typer.Option(
-        "--samples", "-n", metavar="N", help="Samples, equally spaced from t=0 to t=T (1: only the end)."
-    ),
-]
 OutOption = Annotated[
     str | None,
     typer.Option(
@@ -178,17 +173,15 @@ def _table(body, result: dict):
 
 def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
     """(quantity, unit, value) rows of the motion: scene, method, final state, tilt, precession."""
-    # not at top level: `rbi simulate --format csv` would load rbi.cli.tables too
-    from rbi.cli import tables
 
     final = result["final"]
     return [
         ("scene", "", result["scene"]),
         ("method", "", result["method"]),
         ("duration, samples", "s", f"{number(result['duration'])}, {result['samples']}"),
-        ("final q [w, x, y, z]", "", tables.vector(final["q"])),
-        ("final ω (body axes)", "rad/s", tables.vector(final["omega"])),
-        ("spin axis (body axes)", "", tables.vector(result["spin_axis"])),
+        ("final q [w, x, y, z]", "", vector_text(final["q"])),
+        ("final ω (body axes)", "rad/s", vector_text(final["omega"])),
+        ("spin axis (body axes)", "", vector_text(result["spin_axis"])),
         ("nudge at t=0 (--tilt)", "deg", number(result["initial"]["nudge_deg"])),
         ("tilt of spin axis: final", "deg", number(final["tilt_deg"])),
         (
@@ -209,8 +202,6 @@ def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
 def _accuracy_rows(body, result: dict) -> list[tuple[str, str, str]]:
     """(quantity, unit, value) rows of the run's accuracy (conserved quantities' drift, error
     estimate) and cost (steps, evaluations, time)."""
-    # not at top level: `rbi simulate --format csv` would load rbi.cli.tables too
-    from rbi.cli import tables
 
     labels = body.unit_labels
     names = {
@@ -222,7 +213,7 @@ def _accuracy_rows(body, result: dict) -> list[tuple[str, str, str]]:
     accuracy = []
     for key, item in result["conserved"].items():
         initial = item["initial"]
-        shown = tables.vector(initial) if np.ndim(initial) else number(initial, 10)
+        shown = vector_text(initial) if np.ndim(initial) else number(initial, 10)
         unit = labels[item["unit"]]
         accuracy.append((f"{names[key]}", unit, f"{shown}  (drift {number(item['drift'], 2)})"))
     accuracy.append(("| |q| − 1 | largest", "", number(result["quaternion_norm_error"], 2)))

@@ -18,7 +18,15 @@ from rbi.cli.extras import needs, require, require_matplotlib
 from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
 from rbi.cli.render import emit, number, progress_bar, to_csv
-from rbi.cli.run_options import DurationOption, GravityOption, SpinAxisOption, TiltAxisOption
+from rbi.cli.run_options import (
+    DurationOption,
+    GravityOption,
+    RtolOption,
+    SamplesOption,
+    SpinAxisOption,
+    TiltAxisOption,
+    YesOption,
+)
 from rbi.cli.terminal import Terminated, say
 
 SpinOption = Annotated[
@@ -53,15 +61,6 @@ RunsOption = Annotated[
 ]
 SeedOption = Annotated[
     int, typer.Option("--seed", metavar="S", help="Seed of the draws (same seed, same rows).")
-]
-SamplesOption = Annotated[
-    int,
-    typer.Option(
-        "--samples", "-n", metavar="N", help="Samples per run the summaries are taken over (as rbi simulate)."
-    ),
-]
-RtolOption = Annotated[
-    float, typer.Option("--rtol", metavar="RTOL", help="Integrator tolerance (as rbi simulate).")
 ]
 MaxStepsOption = Annotated[
     int | None,
@@ -114,10 +113,6 @@ MassPropertiesOption = Annotated[
         help="No simulation: the spread of mass, centre of mass, principal moments and "
         "principal-axis directions over the --vary values.",
     ),
-]
-YesOption = Annotated[
-    bool,
-    typer.Option("--yes", "-y", help="Run even when the sweep is estimated to take longer than the budget."),
 ]
 
 

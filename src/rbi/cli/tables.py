@@ -9,7 +9,7 @@ from rich.console import Group
 from rich.markup import escape
 from rich.table import Table
 
-from rbi.cli.render import matrix_digits, number, terminal_safe, vector_text, without_noise
+from rbi.cli.render import matrix_digits, number, terminal_safe, without_noise
 from rbi.cli.terminal import ERROR_HANDLER, ascii_only
 
 
@@ -90,9 +90,3 @@ def unit_header(label: str, unit: str, scale_text: str = "") -> str:
 
 def stack(*renderables) -> Group:
     return Group(*renderables)
-
-
-def vector(v, scale: float = 0.0) -> str:
-    """A vector for a table cell; entries below 1e-12 of ``scale`` (a position: the body's
-    size, :func:`rbi.cli.render.body_size`) or of its largest entry print as 0."""
-    return vector_text(v, scale=scale)

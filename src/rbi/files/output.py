@@ -28,7 +28,7 @@ from dataclasses import dataclass
 from typing import IO
 
 from rbi.errors import InputError
-from rbi.files.safe import NAME_MAX, replacing
+from rbi.files.safe import NAME_MAX, remove, replacing
 from rbi.files.safe import kind as _kind
 from rbi.files.safe import reason as _reason
 from rbi.files.safe import shown as _shown
@@ -202,7 +202,7 @@ def _probe(folder: str, option: str, shown: str) -> None:
     except OSError as exc:
         raise InputError(f"{option}: {shown}: cannot write: {_reason(exc)}") from None
     os.close(fd)
-    _remove(temp)
+    remove(temp)
 
 
 def _same_file(a: str, b: str) -> bool:
@@ -212,17 +212,10 @@ def _same_file(a: str, b: str) -> bool:
         return os.path.realpath(a) == os.path.realpath(b)
 
 
-def _mode_for(path: str) -> int:
-    """Permissions for the file about to be written: those of the file it replaces, or the
-    ordinary ``0666`` less the umask for a new one."""
+def _mode_for(path: str) -> int | None:
+    """Permissions for the file about to be written: those of the file it replaces, or None
+    for a new one (:func:`rbi.files.safe.replacing` gives it ``0666`` less the umask)."""
     try:
         return stat.S_IMODE(os.stat(path).st_mode)
     except OSError:
-        umask = os.umask(0)
-        os.umask(umask)
-        return 0o666 & ~umask
-
-
-def _remove(path: str) -> None:
-    with contextlib.suppress(OSError):
-        os.unlink(path)
+        return None

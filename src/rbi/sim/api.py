@@ -1,18 +1,5 @@
-"""Simulating a scene: one entry point for every method.
-
-Public names:
-
-- :func:`simulate` ``(scene, q0, omega0, duration, samples, method="default", rtol=None,
-  progress=None) -> Trajectory``
-- :class:`Trajectory`: ``t (N,)``, ``q (N, 4)`` [w, x, y, z] body -> world, ``omega (N, 3)``
-  body frame rad/s, ``steps``, ``rhs_evals``, ``wall_seconds`` (time of the integration
-  itself, in this process, excluding loading the compiled kernel), ``method``.
-- :data:`METHODS`: ``"default"`` (compiled adaptive DOP853, quaternion projected to unit length
-  every step), ``"rk45"`` (the seed chapter's set-up: scipy ``solve_ivp`` RK45, rtol 1e-8,
-  atol 1e-10, Python right-hand side), ``"dop853"`` (scipy DOP853, same Python right-hand
-  side), ``"exact"`` (closed forms of :mod:`rbi.sim.exact`, where they apply).
-- :func:`sample_times`: the time grid a run reports.
-"""
+"""Simulating a scene: one entry point, :func:`simulate`, for every method of :data:`METHODS`
+(the API checks a run's settings first: :mod:`rbi.runs.run`)."""
 
 from __future__ import annotations
 
@@ -27,6 +14,10 @@ from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, in
 from rbi.sim.scene import Scene
 
 METHODS = ("default", "rk45", "dop853", "exact")
+"""``default``: compiled adaptive DOP853, the quaternion projected to unit length every step;
+``rk45``: the seed chapter's set-up (scipy ``solve_ivp`` RK45, rtol 1e-8, atol 1e-10, Python
+right-hand side); ``dop853``: scipy DOP853, the same right-hand side; ``exact``: the closed
+forms of :mod:`rbi.sim.exact`, where they apply."""
 
 DEFAULT_RTOL = 1e-12
 """Tolerance of the default method (local error per step; see :mod:`rbi.sim.kernels`)."""

@@ -57,10 +57,6 @@ def _solid_masses(parts: list, units: models.Units, volume: np.ndarray) -> np.nd
     return np.where(np.isnan(given), density * volume, given)
 
 
-def _lengths(d: np.ndarray) -> np.ndarray:
-    return vector_length(d)
-
-
 def _vectors(parts: list, field: str) -> np.ndarray:
     return np.array([getattr(p, field) for p in parts], dtype=float).reshape(len(parts), 3)
 
@@ -78,7 +74,7 @@ def _cylinders(parts, units):
     radius = _scalars(parts, "radius")
     start, end = _vectors(parts, "start"), _vectors(parts, "end")
     d = end - start
-    length = _lengths(d)
+    length = vector_length(d)
     mass = _solid_masses(parts, units, shapes.cylinder_volume(radius, length))
     axial, transverse = shapes.cylinder_moments(mass, radius, length)
     return mass, 0.5 * (start + end), shapes.axisymmetric_inertia(axial, transverse, d / length[:, None])
@@ -88,7 +84,7 @@ def _cones(parts, units):
     radius = _scalars(parts, "radius")
     apex, base = _vectors(parts, "apex"), _vectors(parts, "base")
     d = base - apex
-    height = _lengths(d)
+    height = vector_length(d)
     mass = _solid_masses(parts, units, shapes.cone_volume(radius, height))
     u = d / height[:, None]
     com = apex + (0.75 * height)[:, None] * u

@@ -50,20 +50,8 @@ MAX_SWEEP_SAMPLES = 100_000
 
 @dataclass(frozen=True)
 class SweepSettings:
-    """The settings of a sweep, in numbers (the names of :func:`rbi.sweep`'s parameters).
-
-    spin, tilt_deg: a number, a sequence of numbers or a :class:`~rbi.sweeps.plan.Grid` (the
-    grid's values: rad/s about the spin axis; the nudge in degrees), or a
-    :class:`~rbi.sweeps.plan.Normal` / :class:`~rbi.sweeps.plan.Uniform` draw. spin_axis: ``x``,
-    ``y``, ``z`` or a direction (body frame), None for the spec's ``spin_axis`` or the nominal
-    body's default (:func:`rbi.core.spin_axis.default_spin_axis`). vary: ``(PATH, VALUES)``
-    pairs (``parts.NAME.FIELD[i]``, values as ``spin``'s). runs: Monte Carlo draws per grid
-    point; seed: of the draws. duration (s), samples, rtol, gravity (m/s², None for 9.81),
-    tilt_axis, max_steps (per run, None for the default): as a single simulation. workers:
-    cores (None: all); dask: a scheduler address or ``"local"``. mass_properties: no
-    simulation, the spread of the mass properties over the varied values. check_budget: refuse
-    a sweep past the step budget.
-    """
+    """The settings of a sweep, in numbers: :func:`rbi.sweep`'s parameters of the same names,
+    with their units and defaults (``vary`` as ``(PATH, VALUES)`` pairs)."""
 
     spin: Any = 0.0
     tilt_deg: Any = 0.0
