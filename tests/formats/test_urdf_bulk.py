@@ -62,6 +62,12 @@ def _urdf(n: int = 12, link=None, joint=None, head: str = '<?xml version="1.0"?>
     return "".join(parts)
 
 
+def _swap(old: str, new: str) -> str:
+    text = _urdf()
+    assert old in text
+    return text.replace(old, new, 1)
+
+
 def _careful(path: str, data: bytes):
     return read_urdf(robot_xml.read_xml(path, data), None, True)
 
@@ -97,6 +103,18 @@ def _as_json(model) -> str:
                 '<axis xyz="0 -0.0 2"/></joint>\n'
             }
         ),
+        _swap('<robot name="r">', '<robot name="r" xmlns="http://example.com/urdf" xmlns:x="u">'),
+        _swap('<robot name="r">', "<robot>"),
+        _swap('<link name="l2">', '<!-- <link name="l2"/> --><link name="l2"><!-- inside -->'),
+        _swap('<link name="l2">', '<gazebo reference="l2"><link name="x"/></gazebo><link  name = "l2" >'),
+        _swap('<link name="l2">', '<transmission name="t"><joint name="j1"/></transmission><link name="l2">'),
+        _swap('<link name="l2">', '<link\n    name="l2"\n  >\n  '),
+        _swap('<link name="l2">', '<link name="l2" x:y="z">'),
+        _swap('<link name="l2">', '<x:link name="q"/><link name="l2">'),
+        _swap(
+            '<link name="l2">', '<link name="l2"><collision><geometry><plane a="b"/></geometry></collision>'
+        ),
+        _swap('"l1"', '"\u00e9l\u00e8ve"').replace('link="l1"', 'link="\u00e9l\u00e8ve"'),
     ],
 )
 def test_the_bulk_reader_reads_what_the_careful_one_reads(tmp_path, text):
@@ -112,12 +130,6 @@ def test_the_bulk_reader_reads_what_the_careful_one_reads(tmp_path, text):
         assert (mine.element.start, mine.element.end) == (theirs.element.start, theirs.element.end)
         if theirs.inertial is not None:
             assert mine.inertial.element.start == theirs.inertial.element.start
-
-
-def _swap(old: str, new: str) -> str:
-    text = _urdf()
-    assert old in text
-    return text.replace(old, new, 1)
 
 
 @pytest.mark.parametrize(
@@ -145,7 +157,16 @@ def _swap(old: str, new: str) -> str:
         _swap('name="j3"', 'name="j2"'),
         _swap('<axis xyz="1 1 0"/>', '<axis xyz="0 0 0"/>'),
         _swap('<robot name="r">', '<!DOCTYPE robot [<!ENTITY e "1">]><robot name="r">'),
-        _swap('<robot name="r">', '<robot name="r" xmlns="http://example.com/urdf">'),
+        _swap('<link name="l2">', "<link name='l2'>"),
+        _swap('<link name="l2">', '<link name="l2"><inertial/>'),
+        _swap('<link name="l2">', '<link name="l2"><collision/>'),
+        _swap('<link name="l2">', '<link name="l2">text'),
+        _swap('<link name="l2">', '<link name="l2&amp;">'),
+        _swap('<link name="l2">', '<link name="l2&#10;">'),
+        _swap('<link name="l2">', '<link name="l2\n">'),
+        _swap('<link name="l2">', '<?pi x?><link name="l2">'),
+        _swap('<link name="l2">', '<link name="l2" note="a>b">'),
+        _swap('<link name="l2">', '<link name="l2"><![CDATA[x]]>'),
         _swap('<link name="l2">', '<link name="l2"><a'),
         _urdf(joint={5: ""}),
         _urdf(link={i: "" for i in range(12)}, joint={i: "" for i in range(12)}),

@@ -74,7 +74,7 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
         if (
             b"<robot" in data[:65536]
         ):  # most likely a URDF: first the reader in bulk, which leaves doubts here
-            # not at top level: `rbi validate` would load rbi.formats.urdf_bulk (and lxml) too
+            # not at top level: `rbi validate` would load rbi.formats.urdf_bulk too
             from rbi.formats.urdf_bulk import read_urdf_bulk
 
             model = read_urdf_bulk(path, data, package_paths, geometry)
