@@ -60,15 +60,17 @@ _PLAIN = re.compile(rb"[0-9eE+\-. \n]*")
 token ``float`` reads is one :data:`rbi.formats.robot._NUMBER` matches (``float`` alone would
 also take ``nan``, ``inf``, ``1_0`` and other digits than 0-9)."""
 
-_VALUE = re.compile(rb'=\s*"([^"]*)"')
-"""An attribute's value (in double quotes; a file with one in single quotes goes the careful way)."""
+_QUOTED = re.compile(rb'"([^"]*)"')
+"""An attribute's value in double quotes (in a document with no character data, comment or
+single-quoted value, every double quote opens or closes one; a file with a value in single
+quotes goes the careful way)."""
 
 _COMMENT = re.compile(rb"<!--.*?-->", re.S)
 _TEXT = re.compile(rb">\s*[^\s<]")
 """Character data inside an element (or a ``>`` inside a value): left to the careful reader."""
 
 _SINGLE_QUOTED = re.compile(rb"=\s*'")
-_NAMES = re.compile(rb'([^\s=<>/]+)\s*=""')
+_NAMES = re.compile(rb'([^\s=<>/]+)\s*=\s*""')
 
 _SHAPES = {
     "box": ("size",),
@@ -133,16 +135,19 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
         text = text[text.index(b"?>") + 2 :]
     if b"<!--" in text:
         text = _COMMENT.sub(b"", text)
-    if _TEXT.search(text) or _SINGLE_QUOTED.search(text):
+    if _TEXT.search(text):
         raise _Doubt
-    values = _VALUE.findall(text)
-    plain = b"\x00".join(values)
-    if b"\n" in plain or b"\t" in plain or b"\r" in plain:
-        raise _Doubt  # XML reads these as spaces
-    blank = _VALUE.sub(b'=""', text)
+    pieces = _QUOTED.split(text)  # between values, a value, between values, ...
+    values = pieces[1::2]
+    blank = b'""'.join(pieces[::2])
+    if any(text.count(blank_) != blank.count(blank_) for blank_ in (b"\n", b"\t", b"\r")):
+        raise _Doubt  # a value holding a line end or tab, which XML reads as a space
+    if _SINGLE_QUOTED.search(blank):
+        raise _Doubt
     codes = np.frombuffer(blank, dtype=np.uint8)
-    opens, closes = np.flatnonzero(codes == 60), np.flatnonzero(codes == 62)
-    equals = np.flatnonzero(codes == 61)
+    marks = np.flatnonzero(codes - 60 <= 2)  # where a <, = or > is (bytes below 60 wrap around)
+    kinds = codes[marks]
+    opens, equals, closes = marks[kinds == 60], marks[kinds == 61], marks[kinds == 62]
     if len(opens) != len(closes) or len(equals) != len(values) or not len(opens):
         raise _Doubt
     if np.any(closes < opens) or np.any(opens[1:] < closes[:-1]):
@@ -154,25 +159,35 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
         raise _Doubt
     starts = np.flatnonzero((after - step == 1) & ~ending)
     ends = np.flatnonzero((after == 1) & (ending | empty))
-    first = np.searchsorted(equals, opens[starts]).tolist()
-    last = np.searchsorted(equals, closes[ends]).tolist()
-    spans = zip(opens[starts].tolist(), (closes[ends] + 1).tolist(), first, last)
-    groups: dict[bytes, dict] = {b"link": {}, b"joint": {}}
-    counts = {b"link": 0, b"joint": 0}
-    for begin, end, low, high in spans:
-        tag = (
-            b"link"
-            if _starts(blank, begin, b"<link")
-            else b"joint"
-            if _starts(blank, begin, b"<joint")
-            else None
+    groups = {}
+    for opening in (b"<link", b"<joint"):
+        chosen = _named(codes, opens[starts], opening)
+        begins, stops = opens[starts][chosen], closes[ends][chosen] + 1
+        spans = zip(
+            begins.tolist(),
+            stops.tolist(),
+            np.searchsorted(equals, begins).tolist(),
+            np.searchsorted(equals, stops).tolist(),
         )
-        if tag is not None:
-            groups[tag].setdefault(blank[begin:end], []).append((counts[tag], values[low:high]))
-            counts[tag] += 1
+        found: dict[bytes, list] = {}
+        for index, (begin, end, low, high) in enumerate(spans):
+            found.setdefault(blank[begin:end], []).append((index, values[low:high]))
+        groups[opening] = found
     root = _NAMES.findall(blank[: closes[0] + 1])
     name = values[root.index(b"name")].decode() if b"name" in root else None
-    return name, groups[b"link"], groups[b"joint"]
+    return name, groups[b"<link"], groups[b"<joint"]
+
+
+def _named(codes: np.ndarray, at: np.ndarray, opening: bytes) -> np.ndarray:
+    """Which of the tags starting at ``at`` open with ``opening`` (``<`` and a name) and that
+    name alone."""
+    size = len(opening)
+    inside = at + size < len(codes)
+    chosen = inside.copy()
+    for k, byte in enumerate(opening):
+        chosen[inside] &= codes[at[inside] + k] == byte
+    chosen[inside] &= np.isin(codes[at[inside] + size], np.frombuffer(bytes(_NAME_ENDS), dtype=np.uint8))
+    return chosen
 
 
 def _starts(blank: bytes, at: int, opening: bytes) -> bool:
