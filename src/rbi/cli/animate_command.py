@@ -8,9 +8,8 @@ import typer
 
 from rbi import api
 from rbi.api import output_target
-from rbi.cli.extras import require_matplotlib
 from rbi.cli.option_values import run_settings
-from rbi.cli.options import SpecFile
+from rbi.cli.options import SpecFile, require_matplotlib
 from rbi.cli.render import progress_bar, say_warnings
 from rbi.cli.run_options import (
     DurationOption,

@@ -19,8 +19,7 @@ from rbi.bench import report, suite
 from rbi.bench.paths import bodies_folder
 from rbi.bench.report import sections
 from rbi.bench.workprecision import plot as draw
-from rbi.cli.extras import needs, require_matplotlib
-from rbi.cli.options import FormatOption, OutputFormat
+from rbi.cli.options import FormatOption, OutputFormat, needs, require_matplotlib
 from rbi.cli.render import emit, progress_bar
 from rbi.cli.tables import unit_header
 

@@ -1,14 +1,17 @@
 """The options commands share, as typer declares them (their values are parsed in
-:mod:`rbi.cli.option_values`, which needs no typer)."""
+:mod:`rbi.cli.option_values`, which needs no typer), and the optional packages some options
+need: how --help says so (:func:`needs`) and the refusal, before any work, when one is missing."""
 
 from __future__ import annotations
 
+import importlib.util
 from enum import Enum
 from typing import Annotated
 
 import typer
 from typer.core import TyperArgument
 
+from rbi import SpecError
 from rbi.cli.option_values import (  # noqa: F401  (re-exported: the commands parse their values with them)
     in_output_units,
     parse_about,
@@ -102,3 +105,28 @@ def _plain_argument_class():
 
 
 _PlainArgument = _plain_argument_class()
+
+
+def needs(package: str, extra: str) -> str:
+    """``needs matplotlib: pip install '.[plot]' in rbi's source folder``."""
+    return f"needs {package}: pip install '.[{extra}]' in rbi's source folder"
+
+
+def require_matplotlib(option: str = "--plot") -> None:
+    """Refuse ``option`` (the one that asked for a picture) with the install command when
+    matplotlib is missing."""
+    try:
+        import matplotlib  # noqa: F401  (the optional extra `plot`, loaded only when a picture is asked for)
+    except ImportError:
+        raise SpecError(
+            f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
+        ) from None
+
+
+def require(module: str, extra: str, option: str) -> None:
+    """Refuse ``option`` with the install command when the optional package ``module`` is missing."""
+    if importlib.util.find_spec(module) is None:
+        raise SpecError(
+            f"{option}: needs the optional package {module!r}: pip install '.[{extra}]' from rbi's "
+            f"source folder, or pip install {module}"
+        )

@@ -8,8 +8,7 @@ import typer
 
 from rbi import api
 from rbi.api import output_target
-from rbi.cli.extras import needs, require_matplotlib
-from rbi.cli.options import SpecFile
+from rbi.cli.options import SpecFile, needs, require_matplotlib
 from rbi.cli.render import say_warnings
 
 OutOption = Annotated[

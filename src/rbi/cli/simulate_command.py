@@ -10,9 +10,8 @@ import typer
 
 from rbi import api
 from rbi.api import check_distinct, output_target, write_output
-from rbi.cli.extras import needs, require_matplotlib
 from rbi.cli.option_values import run_settings
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile
+from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require_matplotlib
 from rbi.cli.render import emit, number, progress_bar, refuse_non_finite, vector_text
 from rbi.cli.run_options import (
     DurationOption,

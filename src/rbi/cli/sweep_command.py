@@ -14,9 +14,8 @@ from rich.text import Text
 from rbi import api
 from rbi.api import DEFAULT_MAX_STEPS, SpecError, check_distinct, output_target
 from rbi.cli import tables
-from rbi.cli.extras import needs, require, require_matplotlib
 from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile
+from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require, require_matplotlib
 from rbi.cli.render import emit, number, progress_bar, to_csv
 from rbi.cli.run_options import (
     DurationOption,

@@ -36,6 +36,7 @@ from rbi.core.inertia import principal_axes
 from rbi.core.rotation import unit_vector
 from rbi.formats.paths import spec_relative_file
 from rbi.spec import models
+from rbi.spec.pattern import copy_rotations
 from rbi.spec.translate import rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M
 
@@ -84,8 +85,6 @@ def _copy_motions(pattern) -> list[tuple[np.ndarray, np.ndarray]]:
         return [(np.eye(3), np.zeros(3))]
     if pattern.step is not None:
         return [(np.eye(3), k * np.asarray(pattern.step, dtype=float)) for k in range(pattern.count)]
-    # not at top level: `rbi show --out F.png` would load rbi.spec.pattern too
-    from rbi.spec.pattern import copy_rotations
 
     through = np.zeros(3) if pattern.through is None else np.asarray(pattern.through, dtype=float)
     return [(R, through - R @ through) for R in copy_rotations(pattern.count, pattern.axis)]

@@ -230,19 +230,28 @@ def _depth_within(value: Any, limit: int) -> bool:
 
 def validation_messages(path: str, raw: Any) -> tuple[Any, list[str]]:
     """Validate parsed YAML: the spec model (or None) and one message line per problem."""
+    spec, problems, _ = _validated(path, raw)
+    return spec, problems
+
+
+def _validated(path: str, raw: Any) -> tuple[Any, list[str], tuple[str | None, str | None]]:
+    """:func:`validation_messages`, and the part label and field path of the first problem (as
+    the messages order them; None where not known), for :class:`InputError`'s ``part`` and
+    ``field``."""
 
     if raw is None:
-        return None, [f"{path}: file holds no YAML document"]
+        return None, [f"{path}: file holds no YAML document"], (None, None)
     if not isinstance(raw, dict):
-        return None, [
-            f"{path}: must be a mapping with a `parts` list at the top level (got {type(raw).__name__})"
-        ]
+        message = f"{path}: must be a mapping with a `parts` list at the top level (got {type(raw).__name__})"
+        return None, [message], (None, None)
     try:
         with paused_gc():
-            return BodySpec.model_validate(raw), []
+            return BodySpec.model_validate(raw), [], (None, None)
     except ValidationError as exc:
         errors = sorted(exc.errors(include_url=False), key=lambda e: e["type"] != "extra_forbidden")
-        return None, [_format_error(path, err, raw) for err in errors]
+        part_label, field_path = format_location(tuple(errors[0]["loc"]), raw)
+        first = (part_label or None, ".".join(field_path) or None)
+        return None, [_format_error(path, err, raw) for err in errors], first
 
 
 def _format_error(path: str, error: dict[str, Any], raw: Any) -> str:
@@ -296,31 +305,15 @@ def load_spec(path: str | Path):
 def spec_from_raw(path: str, raw: Any):
     """Validate already parsed YAML (``raw``) of the spec file ``path``; raises
     :class:`InputError` with the first problem."""
-    spec, problems = validation_messages(path, raw)
+    spec, problems, (part, field) = _validated(path, raw)
     if problems:
         named = STDIN if path == STDIN_LABEL else path
         more = ""
         if len(problems) > 1:  # a spec given as text or a dict (rbi.load) has no file to validate
             how = "" if named.startswith("<") else f"; `rbi validate {named}` lists all"
             more = f" (+{len(problems) - 1} more{how})"
-        part, field = _first_location(raw)
         raise InputError(problems[0] + more, file=path, part=part, field=field)
     return spec
-
-
-def _first_location(raw: Any) -> tuple[str | None, str | None]:
-    """The part label and field path of the first validation problem (as the messages order
-    them), for :class:`InputError`'s ``part`` and ``field``."""
-
-    if not isinstance(raw, dict):
-        return None, None
-    try:
-        BodySpec.model_validate(raw)
-    except ValidationError as exc:
-        errors = sorted(exc.errors(include_url=False), key=lambda e: e["type"] != "extra_forbidden")
-        part_label, field_path = format_location(tuple(errors[0]["loc"]), raw)
-        return part_label or None, ".".join(field_path) or None
-    return None, None
 
 
 def load_body(path: str | Path) -> LoadedBody:

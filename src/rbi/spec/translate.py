@@ -16,7 +16,9 @@ from rbi.core.validity import inertia_problem
 from rbi.formats.paths import spec_relative_file
 from rbi.spec import models
 from rbi.spec.errors import InputError, part_label
+from rbi.spec.holes import check_holes
 from rbi.spec.materials import density_in_units
+from rbi.spec.pattern import patterned
 from rbi.spec.plausibility import unit_warnings
 from rbi.spec.translate_batch import MIN_PARTS, batch_elements
 from rbi.spec.units import LENGTH_UNITS_IN_M, unit_labels
@@ -83,56 +85,7 @@ def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
     return without_rounding_noise(R)
 
 
-def cone_element(part: models.ConePart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.cone(mass, part.radius, part.apex, part.base)
-
-
-def cylinder_element(part: models.CylinderPart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.cylinder(mass, part.radius, part.start, part.end)
-
-
-def point_element(part: models.PointPart, units: models.Units) -> MassProperties:
-    return shapes.point(part.mass, part.position)
-
-
-def box_element(part: models.BoxPart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.box(mass, part.size, part.center, rotation_matrix(part.rotation))
-
-
-def sphere_element(part: models.SpherePart, units: models.Units) -> MassProperties:
-    return shapes.sphere(_solid_mass(part, one_volume(part), units), part.radius, part.center)
-
-
-def spherical_shell_element(part: models.SphericalShellPart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.spherical_shell(mass, part.outer_radius, part.inner_radius, part.center)
-
-
-def tube_element(part: models.TubePart, units: models.Units) -> MassProperties:
-    volume = one_volume(part)
-    mass = _solid_mass(part, volume, units)
-    return shapes.tube(mass, part.outer_radius, part.inner_radius, part.start, part.end)
-
-
-def frustum_element(part: models.FrustumPart, units: models.Units) -> MassProperties:
-    volume = one_volume(part)
-    mass = _solid_mass(part, volume, units)
-    return shapes.frustum(mass, part.start_radius, part.end_radius, part.start, part.end)
-
-
-def ellipsoid_element(part: models.EllipsoidPart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.ellipsoid(mass, part.semi_axes, part.center, rotation_matrix(part.rotation))
-
-
-def rod_element(part: models.RodPart, units: models.Units) -> MassProperties:
-    return shapes.rod(part.mass, part.start, part.end)
-
-
-def custom_element(part: models.CustomPart, units: models.Units) -> MassProperties:
+def custom_element(part: models.CustomPart) -> MassProperties:
     """The given inertia turned into body axes, then moved from ``about`` to the centre of
     mass. Raises ValueError (``field: what is wrong``) when either is not physical."""
     given = np.asarray(part.inertia, dtype=float)
@@ -161,21 +114,6 @@ def custom_element(part: models.CustomPart, units: models.Units) -> MassProperti
                 "is `about` the point it was taken about?"
             )
     return MassProperties(part.mass, com, 0.5 * (inertia + inertia.T))
-
-
-def torus_element(part: models.TorusPart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.torus(mass, part.major_radius, part.minor_radius, part.center, part.axis)
-
-
-def hemisphere_element(part: models.HemispherePart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.hemisphere(mass, part.radius, part.center, part.axis)
-
-
-def capsule_element(part: models.CapsulePart, units: models.Units) -> MassProperties:
-    mass = _solid_mass(part, one_volume(part), units)
-    return shapes.capsule(mass, part.radius, part.start, part.end)
 
 
 def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> MassProperties:
@@ -294,34 +232,41 @@ def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
         element = mesh_element(part, units, spec_path)
     elif isinstance(part, models.StepPart):
         element = step_element(part, units, spec_path)
+    elif type(part) in SOLIDS:
+        element = SOLIDS[type(part)](part, _solid_mass(part, one_volume(part), units))
     else:
-        element = ELEMENT_BUILDERS[type(part)](part, units)
+        element = GIVEN_MASS[type(part)](part)
     if part.pattern is not None and part.pattern.count > 1:
-        # not at top level: `rbi inertia` would load rbi.spec.pattern too
-        from rbi.spec.pattern import patterned
-
         element = patterned(element, part.pattern)
     return element
 
 
-ELEMENT_BUILDERS: dict[type, Callable[..., MassProperties]] = {
-    models.ConePart: cone_element,
-    models.CylinderPart: cylinder_element,
-    models.PointPart: point_element,
-    models.BoxPart: box_element,
-    models.SpherePart: sphere_element,
-    models.SphericalShellPart: spherical_shell_element,
-    models.TubePart: tube_element,
-    models.FrustumPart: frustum_element,
-    models.EllipsoidPart: ellipsoid_element,
-    models.RodPart: rod_element,
-    models.CustomPart: custom_element,
-    models.TorusPart: torus_element,
-    models.HemispherePart: hemisphere_element,
-    models.CapsulePart: capsule_element,
+SOLIDS: dict[type, Callable[[Any, float], MassProperties]] = {
+    models.ConePart: lambda p, m: shapes.cone(m, p.radius, p.apex, p.base),
+    models.CylinderPart: lambda p, m: shapes.cylinder(m, p.radius, p.start, p.end),
+    models.BoxPart: lambda p, m: shapes.box(m, p.size, p.center, rotation_matrix(p.rotation)),
+    models.SpherePart: lambda p, m: shapes.sphere(m, p.radius, p.center),
+    models.SphericalShellPart: lambda p, m: shapes.spherical_shell(
+        m, p.outer_radius, p.inner_radius, p.center
+    ),
+    models.TubePart: lambda p, m: shapes.tube(m, p.outer_radius, p.inner_radius, p.start, p.end),
+    models.FrustumPart: lambda p, m: shapes.frustum(m, p.start_radius, p.end_radius, p.start, p.end),
+    models.EllipsoidPart: lambda p, m: shapes.ellipsoid(
+        m, p.semi_axes, p.center, rotation_matrix(p.rotation)
+    ),
+    models.TorusPart: lambda p, m: shapes.torus(m, p.major_radius, p.minor_radius, p.center, p.axis),
+    models.HemispherePart: lambda p, m: shapes.hemisphere(m, p.radius, p.center, p.axis),
+    models.CapsulePart: lambda p, m: shapes.capsule(m, p.radius, p.start, p.end),
 }
-"""Each part model's translation ``(part, units) -> MassProperties`` (file units); meshes, which
-need the spec's folder, and patterns go through :func:`part_element`."""
+"""Each closed-form solid part (:mod:`rbi.core.shapes`) from its fields and the mass ``m`` of one
+copy (its ``mass``, or its density times :func:`rbi.spec.volumes.one_volume`), file units."""
+
+GIVEN_MASS: dict[type, Callable[[Any], MassProperties]] = {
+    models.PointPart: lambda p: shapes.point(p.mass, p.position),
+    models.RodPart: lambda p: shapes.rod(p.mass, p.start, p.end),
+    models.CustomPart: custom_element,
+}
+"""The parts without a volume (their ``mass`` is given), file units."""
 
 
 def _removed(element: MassProperties) -> MassProperties:
@@ -382,9 +327,6 @@ def body_from_spec(spec: models.BodySpec, path: str):
         elements.append(cloud_element(path, spec.point_cloud.file))
         part_names.append("point_cloud")
     if holes:
-        # not at top level: `rbi inertia` would load rbi.spec.holes too
-        from rbi.spec.holes import check_holes
-
         check_holes(path, spec, elements, holes)
     try:
         with np.errstate(over="ignore", invalid="ignore"):

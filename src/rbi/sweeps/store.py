@@ -38,6 +38,7 @@ from typing import Any
 
 from rbi.errors import InputError
 from rbi.files import safe
+from rbi.files.lock import OutputLock
 from rbi.files.output import atomic_path
 from rbi.text import csv_lines, csv_text_read
 
@@ -98,8 +99,6 @@ class SweepOutput:
     def open(self, resume: bool, keep: bool) -> list[list[Any]]:
         """Lock the output and start it empty, or (``resume``) check what is there and continue
         after it. Returns the kept rows (typed) when ``keep``, else []."""
-        # not at top level: `rbi sweep` would load rbi.files.lock too
-        from rbi.files.lock import OutputLock
 
         self._lock = OutputLock(self.path, self._label)
         try:

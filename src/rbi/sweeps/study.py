@@ -33,6 +33,7 @@ from rbi.sweeps import store
 from rbi.sweeps.execute import check_address
 from rbi.sweeps.plan import Draw, Plan, axis_of, axis_record
 from rbi.sweeps.runs import SweepJob
+from rbi.sweeps.tolerance import MASS_COLUMNS, mass_rows, nominal_axes, spread
 
 MAX_ROWS_SHOWN = 100_000
 """Most runs a sweep may print (json/csv/table) or hold in memory instead of writing them with --out."""
@@ -130,9 +131,6 @@ class Study:
             raise InputError(f"{path}: {self.nominal}")
         self.job = dataclasses.replace(self.job, spin_axis=self._spin_axis())
         if settings.mass_properties:
-            # not at top level: `rbi sweep` would load rbi.sweeps.tolerance too
-            from rbi.sweeps.tolerance import MASS_COLUMNS
-
             self.columns = ["run", *self.plan.names, *MASS_COLUMNS]
         else:
             self._check_budget()
@@ -200,9 +198,6 @@ class Study:
         """``(compute(start, stop, threads) -> rows, chunk size)`` for the executors."""
         job = self.job
         if self.settings.mass_properties:
-            # not at top level: `rbi sweep` would load rbi.sweeps.tolerance too
-            from rbi.sweeps.tolerance import mass_rows, nominal_axes
-
             axes_nominal = nominal_axes(job)
 
             def compute(a, b, threads):
@@ -297,8 +292,6 @@ class Study:
 
     def spread(self, rows: list[list[Any]]) -> dict[str, dict[str, float]]:
         """Percentiles and standard deviation of each mass property over the ok runs."""
-        # not at top level: `rbi sweep` would load rbi.sweeps.tolerance too
-        from rbi.sweeps.tolerance import spread
 
         return spread(self.columns, rows, 1)
 
