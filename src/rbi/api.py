@@ -795,20 +795,10 @@ class Trajectory(TableRepr):
 
     def columns(self) -> dict[str, np.ndarray]:
         """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""
-        q, w = self.q, self.omega
-        return {
-            "t": self.t,
-            "qw": q[:, 0],
-            "qx": q[:, 1],
-            "qy": q[:, 2],
-            "qz": q[:, 3],
-            "wx": w[:, 0],
-            "wy": w[:, 1],
-            "wz": w[:, 2],
-            "tilt_deg": self.tilt_deg,
-            "precession_deg": self.precession_deg,
-            "energy": self.energy,
-        }
+        # not at top level: `rbi inertia` would load rbi.sim.summary too
+        from rbi.sim.summary import columns_of
+
+        return columns_of(self.t, self.q, self.omega, self.tilt_deg, self.precession_deg, self.energy)
 
     def __repr__(self) -> str:
         return (

@@ -14,6 +14,8 @@ from rbi.sim import diagnostics
 from rbi.sim.api import DEFAULT_RTOL, Trajectory, simulate
 from rbi.sim.scene import Scene
 
+Array = np.ndarray
+
 CSV_COLUMNS = ("t", "qw", "qx", "qy", "qz", "wx", "wy", "wz", "tilt_deg", "precession_deg", "energy")
 """Trajectory columns: the contract's eight, then the tilt of the spin axis from the upward
 vertical (deg), the azimuth of that axis seen from above (the precession angle, deg, unwrapped)
@@ -28,19 +30,19 @@ strictly tighter reference, and gets no error estimate."""
 def sample_columns(scene: Scene, trajectory: Trajectory) -> dict[str, np.ndarray]:
     """The trajectory as named columns (see :data:`CSV_COLUMNS`)."""
     q, omega = trajectory.q, trajectory.omega
-    return {
-        "t": trajectory.t,
-        "qw": q[:, 0],
-        "qx": q[:, 1],
-        "qy": q[:, 2],
-        "qz": q[:, 3],
-        "wx": omega[:, 0],
-        "wy": omega[:, 1],
-        "wz": omega[:, 2],
-        "tilt_deg": diagnostics.tilt_deg(q, scene.spin_frame),
-        "precession_deg": diagnostics.precession_deg(q, scene.spin_frame),
-        "energy": diagnostics.energy(scene, q, omega),
-    }
+    tilt, precession = (
+        diagnostics.tilt_deg(q, scene.spin_frame),
+        diagnostics.precession_deg(q, scene.spin_frame),
+    )
+    return columns_of(trajectory.t, q, omega, tilt, precession, diagnostics.energy(scene, q, omega))
+
+
+def columns_of(
+    t: Array, q: Array, omega: Array, tilt_deg: Array, precession_deg: Array, energy: Array
+) -> dict[str, Array]:
+    """A run's samples (t (N,), q (N, 4), omega (N, 3), then three (N,)) as the columns of
+    :data:`CSV_COLUMNS` by name, each (N,)."""
+    return dict(zip(CSV_COLUMNS, (t, *q.T, *omega.T, tilt_deg, precession_deg, energy)))
 
 
 def reference_rtol(trajectory: Trajectory) -> float | None:
