@@ -295,9 +295,6 @@ TARGET_COLUMNS = ["area", "target", "measured", "limit", "met", "baseline (same 
 
 
 def target_rows(rows: list[dict]) -> list[list[str]]:
-    def value(x):
-        return "—" if x is None else (_times(x) if not isinstance(x, float) or x >= 0 else number(x, 3))
-
     out = []
     for r in rows:
         measured, unit = r["measured"], r.get("unit")
