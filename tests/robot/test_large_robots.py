@@ -228,3 +228,16 @@ def test_a_long_chain_is_read_and_a_loop_in_it_still_named(tmp_path):
     path.write_text(looped + '<link name="l0"/></robot>')
     with pytest.raises(InputError, match="loop through link"):
         read_robot(str(path), geometry=False)
+
+
+def test_mass_properties_made_by_rows_equal_the_constructors_bit_for_bit():
+    masses = RNG.random(500) * 10.0 ** RNG.integers(-5, 5, size=500)
+    centers = RNG.normal(size=(500, 3))
+    inertias = np.array([_symmetric(i) for i in range(500)])
+    made = MassProperties.rows(masses.tolist(), centers.copy(), inertias.copy(), "link")
+    for k, value in enumerate(made):
+        one = MassProperties(masses[k], centers[k], inertias[k], "link")
+        assert value.mass == one.mass and value.frame == one.frame
+        assert _same(value.center_of_mass, one.center_of_mass)
+        assert _same(value.inertia_about_com, one.inertia_about_com)
+        assert not value.center_of_mass.flags.writeable and not value.inertia_about_com.flags.writeable

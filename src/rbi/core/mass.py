@@ -78,6 +78,27 @@ class MassProperties:
         object.__setattr__(value, "frame", frame)
         return value
 
+    @classmethod
+    def rows(
+        cls, masses: Sequence[float], centers: np.ndarray, inertias: np.ndarray, frame: str = "body"
+    ) -> list[MassProperties]:
+        """One value per row: ``MassProperties(masses[k], centers[k], inertias[k], frame)``, from
+        float arrays of shapes (n, 3) and (n, 3, 3) that the caller has just made and gives away:
+        they are made read-only and each value holds its rows (an audit of 100,000 links makes
+        one per link)."""
+        centers = np.asarray(centers, dtype=float).reshape(-1, 3)
+        inertias = np.asarray(inertias, dtype=float).reshape(-1, 3, 3)
+        centers.flags.writeable = False
+        inertias.flags.writeable = False
+        found = []
+        for mass, center, inertia in zip(masses, centers, inertias):
+            value = object.__new__(cls)
+            vars(value).update(
+                mass=float(mass), center_of_mass=center, inertia_about_com=inertia, frame=frame
+            )
+            found.append(value)
+        return found
+
     @staticmethod
     def zero(frame: str = "body") -> MassProperties:
         """No mass: zero mass, centre of mass at the origin, zero inertia."""

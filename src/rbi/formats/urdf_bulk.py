@@ -320,17 +320,17 @@ def _inertials(rows: list[list[bytes]], inertial: _Node) -> list[Inertial]:
     written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
     if np.any(np.abs(written) >= 1e300):
         raise _Doubt  # check_inertia_range's sum might overflow: the careful reader words it
-    in_link = written.copy()
-    found = []
-    for k, turned in enumerate(np.any(rpy != 0, axis=1).tolist()):
-        if turned:
-            angles = tuple(rpy[k].tolist())
-            found.append(
-                Inertial.read(masses[k], com[k].tolist(), written[k], rotation=rpy_matrix(angles), rpy=angles)
-            )
-        else:
-            properties = MassProperties.of_arrays(masses[k], com[k], in_link[k], "link")
-            found.append(Inertial(properties, written[k]))
+    turned = np.any(rpy != 0, axis=1)
+    level = np.flatnonzero(~turned).tolist()
+    made = MassProperties.rows([masses[k] for k in level], com[level], written[level], "link")
+    found: list[Inertial | None] = [None] * len(rows)
+    for k, properties in zip(level, made):
+        found[k] = Inertial(properties, written[k])
+    for k in np.flatnonzero(turned).tolist():
+        angles = tuple(rpy[k].tolist())
+        found[k] = Inertial.read(
+            masses[k], com[k].tolist(), written[k], rotation=rpy_matrix(angles), rpy=angles
+        )
     return found
 
 

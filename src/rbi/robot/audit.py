@@ -41,7 +41,7 @@ from rbi.errors import ArgumentError, literal
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
-from rbi.robot.tree import placement, stack_apply, totals
+from rbi.robot.tree import placement, stack_apply, stacked, totals
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -296,7 +296,7 @@ def _moments_in_bulk(found: list[MassProperties | None]) -> list[np.ndarray | No
     rows = [i for i, each in enumerate(found) if each is not None]
     if not rows:
         return moments
-    stack = np.array([found[i].inertia_about_com for i in rows]).reshape(-1, 3, 3)
+    stack = stacked([found[i].inertia_about_com for i in rows], (3, 3))
     diagonal = np.diagonal(stack, axis1=1, axis2=2)
     sortable = ~np.any(stack[:, _OFF_DIAGONAL], axis=1) & np.all(np.abs(diagonal) < 1e300, axis=1)
     ordered = np.take_along_axis(diagonal, np.argsort(diagonal, axis=1, kind="stable"), axis=1)
@@ -546,10 +546,10 @@ def _primitives_in_bulk(model: RobotModel, geometry: str, density: float | None)
             except ValueError:
                 shapes[key] = (np.nan, np.full(3, np.nan), np.full(3, np.nan))
     measure = np.array([shapes[(g.kind, g.size)][0] for g in geoms], dtype=float)
-    moments = np.array([shapes[(g.kind, g.size)][1] for g in geoms], dtype=float).reshape(-1, 3)
-    half = np.array([shapes[(g.kind, g.size)][2] for g in geoms], dtype=float).reshape(-1, 3)
-    R = np.array([g.pose.rotation for g in geoms], dtype=float).reshape(-1, 3, 3)
-    p = np.array([g.pose.translation for g in geoms], dtype=float).reshape(-1, 3)
+    moments = stacked([shapes[(g.kind, g.size)][1] for g in geoms], (3,))
+    half = stacked([shapes[(g.kind, g.size)][2] for g in geoms], (3,))
+    R = stacked([g.pose.rotation for g in geoms], (3, 3))
+    p = stacked([g.pose.translation for g in geoms], (3,))
     turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
     inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
     corners = stack_apply(np.abs(R), half)
@@ -580,16 +580,15 @@ def _geometry_rows(
         implied = mass / measure
         scaled = inertia * implied[:, None, None]
     given |= density is not None
-    centres = com.copy()
+    keep = np.flatnonzero(fine & given)
+    made = dict(zip(keep.tolist(), MassProperties.rows(mass[keep].tolist(), com[keep], scaled[keep], "link")))
     found = {}
-    for k, (row, ok, has_mass, volume, m, rho) in enumerate(
-        zip(rows, fine.tolist(), given.tolist(), measure.tolist(), mass.tolist(), implied.tolist())
-    ):
+    for k, (row, ok, volume, rho) in enumerate(zip(rows, fine.tolist(), measure.tolist(), implied.tolist())):
         if not ok:
             continue
-        properties = MassProperties.of_arrays(m, centres[k], scaled[k], "link") if has_mass else None
+        properties = made.get(k)
         found[row] = GeometryProps.of(
-            properties, com[k], volume, rho if has_mass else None, low[k], high[k], chosen[row][1]
+            properties, com[k], volume, None if properties is None else rho, low[k], high[k], chosen[row][1]
         )
     return found
 
@@ -618,9 +617,9 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
     physical = np.zeros(len(links), dtype=bool)
     maybe_placeholder = np.ones(len(links), dtype=bool)
     if declared:
-        stack = np.array([links[i].declared.inertia_about_com for i in declared]).reshape(-1, 3, 3)
+        stack = stacked([links[i].declared.inertia_about_com for i in declared], (3, 3))
         physical[declared] = _certainly_physical(stack)
-        written = np.array([links[i].link.inertial.written_inertia for i in declared]).reshape(-1, 3, 3)
+        written = stacked([links[i].link.inertial.written_inertia for i in declared], (3, 3))
         maybe_placeholder[declared] = _maybe_placeholder(written)
     eighs: list = [None] * len(links)
     geometry: list = [(None, None, False)] * len(links)  # ratios, com_offset, clean
@@ -630,7 +629,7 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
         if each.geometry is not None and each.geometry.properties is not None
     ]
     if usable:
-        stack = np.array([links[i].geometry.properties.inertia_about_com for i in usable]).reshape(-1, 3, 3)
+        stack = stacked([links[i].geometry.properties.inertia_about_com for i in usable], (3, 3))
         finite = np.all(np.isfinite(stack), axis=(1, 2))
         moments, axes = np.linalg.eigh(stack[finite])
         chosen = np.array(usable)[finite].tolist()
@@ -653,16 +652,16 @@ def _geometry_in_bulk(links, found: list[tuple], chosen: list[int], moments, axe
         return
     picked = [links[chosen[row]] for row in rows]
     moments, axes = moments[rows], axes[rows]
-    inertia = np.array([each.declared.inertia_about_com for each in picked]).reshape(-1, 3, 3)
+    inertia = stacked([each.declared.inertia_about_com for each in picked], (3, 3))
     along = np.einsum("nji,njk,nki->ni", axes, inertia, axes)
     usable = moments > USABLE_MOMENT * np.max(moments, axis=1)[:, None]
     with np.errstate(all="ignore"):
         ratios = np.where(usable, along / moments, np.nan)
-    com = np.array([each.declared.center_of_mass for each in picked]).reshape(-1, 3)
-    low = np.array([each.geometry.low for each in picked]).reshape(-1, 3)
-    high = np.array([each.geometry.high for each in picked]).reshape(-1, 3)
+    com = stacked([each.declared.center_of_mass for each in picked], (3,))
+    low = stacked([each.geometry.low for each in picked], (3,))
+    high = stacked([each.geometry.high for each in picked], (3,))
     size = _norms(high - low)
-    offset = _norms(com - np.array([each.geometry.center_of_mass for each in picked]).reshape(-1, 3))
+    offset = _norms(com - stacked([each.geometry.center_of_mass for each in picked], (3,)))
     with np.errstate(all="ignore"):
         offset = offset / size
     margin = (COM_MARGIN * size)[:, None]

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbi.formats.robot import RobotModel
-from rbi.robot.tree import placement, stack_apply
+from rbi.robot.tree import placement, stack_apply, stacked
 
 STANDARD_GRAVITY = 9.81
 """m/s², along −z of the root link's frame for URDF and SDF."""
@@ -122,7 +122,7 @@ def _subtree_sums(model: RobotModel, placed) -> tuple[list[float], np.ndarray]:
     if heavy:
         chosen = [row for row, _ in heavy]
         masses = np.array([inertial.mass for _, inertial in heavy], dtype=float)
-        coms = np.array([inertial.properties.center_of_mass for _, inertial in heavy]).reshape(-1, 3)
+        coms = stacked([inertial.properties.center_of_mass for _, inertial in heavy], (3,))
         at = stack_apply(placed.placed_rotations[chosen], coms) + placed.placed_translations[chosen]
         moment[chosen] = masses[:, None] * at
         for row, value in zip(chosen, masses.tolist()):

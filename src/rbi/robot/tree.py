@@ -97,6 +97,15 @@ class Placement:
         return {i: Pose(self.placed_rotations[r], self.placed_translations[r]) for i, r in self.rows.items()}
 
 
+def stacked(arrays: list, shape: tuple[int, ...]) -> np.ndarray:
+    """The float arrays of ``shape`` in ``arrays`` as one (n, *shape) array: the values
+    ``np.array(arrays, dtype=float)`` gives, made by one concatenation (numpy's discovery of a
+    list's shape, element by element, takes twice as long for 100,000 links)."""
+    if not arrays:
+        return np.empty((0, *shape))
+    return np.concatenate(arrays, dtype=float).reshape(-1, *shape)
+
+
 def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
     """``rotations[i] @ vectors[i]`` for each row (numpy's matmul on the stack makes the same
     BLAS call per row as on one matrix, so each row equals the one-matrix product)."""
@@ -118,8 +127,8 @@ def placement(model: RobotModel, joints: dict[str, float] | None = None) -> Plac
     frames: dict[int, list] = {}
     order, levels = _levels(model)
     for level, parents in levels:
-        level_R = np.array([links[row].origin.rotation for row in level]).reshape(-1, 3, 3)
-        level_t = np.array([links[row].origin.translation for row in level], dtype=float).reshape(-1, 3)
+        level_R = stacked([links[row].origin.rotation for row in level], (3, 3))
+        level_t = stacked([links[row].origin.translation for row in level], (3,))
         R[level] = np.matmul(R[parents], level_R)
         t[level] = stack_apply(R[parents], level_t) + t[parents]
         for row in level:
@@ -289,7 +298,7 @@ def _placed_parts(placed: Placement, chosen: list) -> tuple[np.ndarray, np.ndarr
     link-frame mass properties)]: each the value :meth:`MassProperties.transformed` gives."""
     rows = [row for row, _ in chosen]
     masses = np.array([props.mass for _, props in chosen], dtype=float)
-    coms = np.array([props.center_of_mass for _, props in chosen]).reshape(-1, 3)
+    coms = stacked([props.center_of_mass for _, props in chosen], (3,))
     R = placed.placed_rotations[rows]
     return masses, stack_apply(R, coms) + placed.placed_translations[rows]
 
@@ -298,6 +307,6 @@ def _placed_inertias(placed: Placement, chosen: list) -> np.ndarray:
     """Each chosen link's inertia about its centre of mass in ``placed.frame``'s axes, kg·m²:
     ``R I Rᵀ`` made symmetric, as :meth:`MassProperties.transformed` gives it."""
     R = placed.placed_rotations[[row for row, _ in chosen]]
-    inertias = np.array([props.inertia_about_com for _, props in chosen]).reshape(-1, 3, 3)
+    inertias = stacked([props.inertia_about_com for _, props in chosen], (3, 3))
     turned = np.matmul(np.matmul(R, inertias), np.swapaxes(R, 1, 2))
     return 0.5 * (turned + np.swapaxes(turned, 1, 2))
