@@ -46,7 +46,7 @@ def parts_of(file: str):
     total = {
         "volume": volume if any(row["volume"] is not None for row in rows) else None,
         "mean_density": body.mass / volume if every_part_has_volume and volume > 0 else None,
-        "principal_moments": _principal_moments(body),
+        "principal_moments": body.principal().moments,  # about the centre of mass, ascending
     }
     result = {
         "name": body.name,
@@ -60,11 +60,6 @@ def parts_of(file: str):
     }
     summary = {key: value for key, value in result.items() if key != "warnings"} | {"parts": len(rows)}
     return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
-
-
-def _principal_moments(body):
-    """The body's principal moments about its centre of mass (ascending)."""
-    return body.principal().moments
 
 
 def _part_rows(body) -> list[dict]:

@@ -70,12 +70,6 @@ def _zxz(phi, theta, psi) -> np.ndarray:
     return qmul(qmul(turn(_Z, phi), turn(_X, theta)), turn(_Z, psi))
 
 
-def _frame_quaternion(rows: np.ndarray) -> np.ndarray:
-    """Quaternion of the matrix whose rows are a right-handed orthonormal triad given in body
-    coordinates: it maps body coordinates to triad coordinates."""
-    return matrix_to_quaternion(np.asarray(rows, dtype=float))
-
-
 def _normalised(q: np.ndarray) -> np.ndarray:
     return q / np.linalg.norm(q, axis=-1, keepdims=True)
 
@@ -261,7 +255,8 @@ class EulerPoinsot:
 
     def _fix_frame(self, q0) -> None:
         """The constant turns of q_wb(t) = q_wH ⊗ zxz(φ, θ, ψ) ⊗ q_tb that make t = 0 give ``q0``."""
-        self.q_tb = _frame_quaternion(self.axes[list(self.triad)])
+        # the matrix whose rows are the triad in body coordinates maps body to triad coordinates
+        self.q_tb = matrix_to_quaternion(self.axes[list(self.triad)])
         phi0, theta0, psi0 = self._angles(np.array([0.0]))
         self.q_wH = qmul(
             qmul(np.asarray(q0, dtype=float), _conj(self.q_tb)), _conj(_zxz(phi0, theta0, psi0))
@@ -352,7 +347,7 @@ class LagrangeTop:
         self.I3 = float(self.axis @ scene.inertia @ self.axis)
         self.I1 = float(moments[2] if abs(moments[0] - self.I3) < abs(moments[2] - self.I3) else moments[0])
         self.rows = rows = _triad(self.axis, axes)
-        self.q_tb = _frame_quaternion(rows)
+        self.q_tb = matrix_to_quaternion(rows)
         self.mgl = scene.mass * scene.gravity * float(np.linalg.norm(scene.com_from_pivot))
         w_t = rows @ np.asarray(omega0, dtype=float)
         R = quaternion_to_matrix(q0) @ rows.T  # triad -> world
