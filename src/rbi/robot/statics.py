@@ -63,19 +63,24 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     found = []
     for i, torque in zip(keep, torques.tolist()):
         motion = placed.joints[i][1]
-        found.append(JointTorque(motion.name, motion.kind, torque, motion.effort_limit))
-    for each in found:
-        if each.margin is not None and each.margin < 0:
-            unit = "N·m" if each.type == "revolute" else "N"
-            each.flags.append(
-                {
-                    "code": "effort",
-                    "level": "warning",
-                    "message": f"holding the pose takes {abs(each.torque):.4g} {unit}, more than the "
-                    f"declared effort limit {each.effort_limit:.4g} {unit}",
-                }
-            )
+        limit = motion.effort_limit
+        flags = (
+            [] if limit is None or not limit - abs(torque) < 0 else [_effort_flag(motion.kind, torque, limit)]
+        )
+        found.append(JointTorque(motion.name, motion.kind, torque, limit, flags))
     return found
+
+
+def _effort_flag(kind: str, torque: float, limit: float) -> dict[str, str]:
+    """The warning for a joint whose holding torque exceeds its declared effort limit (a
+    negative :attr:`JointTorque.margin`)."""
+    unit = "N·m" if kind == "revolute" else "N"
+    return {
+        "code": "effort",
+        "level": "warning",
+        "message": f"holding the pose takes {abs(torque):.4g} {unit}, more than the "
+        f"declared effort limit {limit:.4g} {unit}",
+    }
 
 
 def _world_joint(model: RobotModel, row: int) -> bool:
