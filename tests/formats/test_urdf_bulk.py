@@ -191,3 +191,21 @@ def _outcome(read) -> str:
         return _as_json(read())
     except InputError as exc:
         return f"error: {exc}"
+
+
+@pytest.mark.parametrize("odd", [None, 'xyz="0.1 0 0" rpy="0 0 0.5"', 'xyz="0.1 0 0"  '])
+def test_a_generated_file_of_alike_links_reads_as_the_careful_reader_reads_it(tmp_path, odd):
+    """The bench's URDF (every link's text alike once its values are emptied, read as one
+    group) and the same with one link's origin written otherwise (read link by link)."""
+    from rbi.bench.robotaudit import urdf_text
+
+    text = urdf_text(64)
+    if odd is not None:
+        at = text.index('<link name="l40">')
+        text = text[:at] + text[at:].replace('xyz="0.1 0 0"', odd, 1)
+    path = tmp_path / "robot.urdf"
+    path.write_text(text)
+    data = path.read_bytes()
+    bulk = read_urdf_bulk(str(path), data)
+    assert bulk is not None
+    assert _as_json(bulk) == _as_json(_careful(str(path), data))

@@ -163,19 +163,49 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
     for opening in (b"<link", b"<joint"):
         chosen = _named(codes, opens[starts], opening)
         begins, stops = opens[starts][chosen], closes[ends][chosen] + 1
-        spans = zip(
-            begins.tolist(),
-            stops.tolist(),
-            np.searchsorted(equals, begins).tolist(),
-            np.searchsorted(equals, stops).tolist(),
+        lows, highs = np.searchsorted(equals, begins), np.searchsorted(equals, stops)
+        groups[opening] = _alike(codes, blank, begins, stops, lows, highs, values) or _grouped(
+            blank, begins, stops, lows, highs, values
         )
-        found: dict[bytes, list] = {}
-        for index, (begin, end, low, high) in enumerate(spans):
-            found.setdefault(blank[begin:end], []).append((index, values[low:high]))
-        groups[opening] = found
     root = _NAMES.findall(blank[: closes[0] + 1])
     name = values[root.index(b"name")].decode() if b"name" in root else None
     return name, groups[b"<link"], groups[b"<joint"]
+
+
+def _grouped(blank: bytes, begins, stops, lows, highs, values: list[bytes]) -> dict[bytes, _Rows]:
+    """Signature → its elements (:class:`_Rows`) of the elements spanning ``begins:stops`` of
+    the emptied text, whose values are ``values[lows:highs]``."""
+    found: dict[bytes, tuple[list[int], list[list[bytes]]]] = {}
+    spans = zip(begins.tolist(), stops.tolist(), lows.tolist(), highs.tolist())
+    for index, (begin, end, low, high) in enumerate(spans):
+        indices, rows = found.setdefault(blank[begin:end], ([], []))
+        indices.append(index)
+        rows.append(values[low:high])
+    return {signature: _Rows(indices, rows) for signature, (indices, rows) in found.items()}
+
+
+def _alike(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values) -> dict[bytes, _Rows] | None:
+    """The one group of :func:`_grouped` when the elements are alike (a generated file): the
+    same emptied text at even steps through it, their values at even steps through the values;
+    None otherwise. The texts are compared as rows of one strided view of the bytes."""
+    count = len(begins)
+    if count < 2:
+        return None
+    length, step, first = int(stops[0] - begins[0]), int(begins[1] - begins[0]), int(lows[0])
+    width, spacing = int(highs[0] - lows[0]), int(lows[1] - lows[0])
+    if (
+        np.any(stops - begins != length)
+        or np.any(np.diff(begins) != step)
+        or np.any(highs - lows != width)
+        or np.any(np.diff(lows) != spacing)
+        or step < length
+    ):
+        return None
+    texts = np.lib.stride_tricks.as_strided(codes[int(begins[0]) :], shape=(count, length), strides=(step, 1))
+    if not np.all(texts == texts[0]):
+        return None
+    signature = blank[int(begins[0]) : int(stops[0])]
+    return {signature: _Rows(list(range(count)), spaced=(first, spacing), values=values)}
 
 
 def _named(codes: np.ndarray, at: np.ndarray, opening: bytes) -> np.ndarray:
@@ -239,18 +269,31 @@ def _tree(signature: bytes) -> _Node:
     return found[0]
 
 
-def column(rows: list[list[bytes]], place: int | None, default: bytes) -> list[bytes]:
-    """The text at ``place`` of each row (``default`` where the attribute is not written)."""
-    if place is None:
-        return [default] * len(rows)
-    return [row[place] for row in rows]
+class _Rows:
+    """The elements of one signature: ``indices`` (each one's place among the links or joints)
+    and their values, as a list per element, or (``spaced``: the first element's first value's
+    place, the step between elements) at even steps in the document's list of values."""
 
+    def __init__(self, indices: list[int], rows: _Rows | None = None, spaced=None, values=None):
+        self.indices, self.rows, self.spaced, self.values = indices, rows, spaced, values
 
-def words(rows: list[list[bytes]], place: int | None) -> list[str]:
-    """The text at ``place`` of each row as str (``""`` where the attribute is not written)."""
-    if place is None:
-        return [""] * len(rows)
-    return [row[place].decode() for row in rows]
+    def __len__(self) -> int:
+        return len(self.indices)
+
+    def column(self, place: int | None, default: bytes) -> list[bytes]:
+        """The text at ``place`` of each element (``default`` where the attribute is not written)."""
+        if place is None:
+            return [default] * len(self)
+        if self.rows is not None:
+            return [row[place] for row in self.rows]
+        first, step = self.spaced
+        return self.values[first + place : first + place + step * (len(self) - 1) + 1 : step]
+
+    def words(self, place: int | None) -> list[str]:
+        """The text at ``place`` of each element as str (``""`` where the attribute is not written)."""
+        if place is None:
+            return [""] * len(self)
+        return [each.decode() for each in self.column(place, b"")]
 
 
 def _numbers(texts: list[bytes], count: int) -> np.ndarray:
@@ -289,11 +332,11 @@ def _angles(rpy: np.ndarray) -> np.ndarray:
     return rpy
 
 
-def _poses(rows: list[list[bytes]], origin: _Node | None) -> list[Pose]:
+def _poses(rows: _Rows, origin: _Node | None) -> list[Pose]:
     """The poses :func:`rbi.formats.urdf._origin` reads from each row's ``origin`` element."""
     at = {} if origin is None else origin.at
-    xyz = _numbers(column(rows, at.get("xyz"), b"0 0 0"), 3)
-    rpy = _angles(_numbers(column(rows, at.get("rpy"), b"0 0 0"), 3))
+    xyz = _numbers(rows.column(at.get("xyz"), b"0 0 0"), 3)
+    rpy = _angles(_numbers(rows.column(at.get("rpy"), b"0 0 0"), 3))
     turned = np.any(rpy != 0, axis=1).tolist()
     R = np.empty((len(rows), 3, 3))
     R[:] = np.eye(3)
@@ -302,20 +345,20 @@ def _poses(rows: list[list[bytes]], origin: _Node | None) -> list[Pose]:
     return [Pose(R[k], xyz[k]) for k in range(len(rows))]
 
 
-def _inertials(rows: list[list[bytes]], inertial: _Node) -> list[Inertial]:
+def _inertials(rows: _Rows, inertial: _Node) -> list[Inertial]:
     """The inertials :func:`rbi.formats.urdf._inertial` reads from each row."""
     origin, mass, block = inertial.child("origin"), inertial.child("mass"), inertial.child("inertia")
     if mass is None or block is None or "value" not in mass.at:
         raise _Doubt
     at = {} if origin is None else origin.at
-    com = _numbers(column(rows, at.get("xyz"), b"0 0 0"), 3)
-    rpy = _angles(_numbers(column(rows, at.get("rpy"), b"0 0 0"), 3))
-    masses = _numbers(column(rows, mass.at["value"], b""), 1)[:, 0].tolist()
+    com = _numbers(rows.column(at.get("xyz"), b"0 0 0"), 3)
+    rpy = _angles(_numbers(rows.column(at.get("rpy"), b"0 0 0"), 3))
+    masses = _numbers(rows.column(mass.at["value"], b""), 1)[:, 0].tolist()
     six = []
     for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
         if key not in block.at:
             raise _Doubt
-        six.append(_numbers(column(rows, block.at[key], b""), 1)[:, 0])
+        six.append(_numbers(rows.column(block.at[key], b""), 1)[:, 0])
     ixx, ixy, ixz, iyy, iyz, izz = six
     written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
     if np.any(np.abs(written) >= 1e300):
@@ -334,10 +377,10 @@ def _inertials(rows: list[list[bytes]], inertial: _Node) -> list[Inertial]:
     return found
 
 
-def _geoms(rows: list[list[bytes]], top: _Node, tag: str, links: list[tuple], packages) -> list[list[Geom]]:
+def _geoms(rows: _Rows, top: _Node, tag: str, links: list[tuple], packages) -> list[list[Geom]]:
     """Each row's ``tag`` (collision or visual) geoms as :func:`rbi.formats.urdf._geoms` reads
     them (``links``: each row's (path, link label) for a mesh's lookup)."""
-    found: list[list[Geom]] = [[] for _ in rows]
+    found: list[list[Geom]] = [[] for _ in range(len(rows))]
     for number, element in enumerate(each for each in top.children if each.tag == tag):
         holder = element.child("geometry")
         if holder is None or not holder.children:
@@ -355,17 +398,17 @@ def _geoms(rows: list[list[bytes]], top: _Node, tag: str, links: list[tuple], pa
     return found
 
 
-def _meshes(rows: list[list[bytes]], shape: _Node, label: str, links: list[tuple], packages) -> list[tuple]:
+def _meshes(rows: _Rows, shape: _Node, label: str, links: list[tuple], packages) -> list[tuple]:
     """(file, scale) of each row's mesh, as :func:`rbi.formats.urdf._geom` finds them."""
     if "filename" not in shape.at:
         raise _Doubt
-    texts = column(rows, shape.at.get("scale"), b"1 1 1")
+    texts = rows.column(shape.at.get("scale"), b"1 1 1")
     try:
         scales = _numbers(texts, 3)
     except _Doubt:
         scales = np.repeat(_numbers(texts, 1), 3, axis=1)
     found = []
-    for k, filename in enumerate(words(rows, shape.at["filename"])):
+    for k, filename in enumerate(rows.words(shape.at["filename"])):
         if not filename:
             raise _Doubt
         path, index, name = links[k]
@@ -374,7 +417,7 @@ def _meshes(rows: list[list[bytes]], shape: _Node, label: str, links: list[tuple
     return found
 
 
-def _sizes(rows: list[list[bytes]], shape: _Node) -> list[tuple[float, ...]]:
+def _sizes(rows: _Rows, shape: _Node) -> list[tuple[float, ...]]:
     """Each row's shape size, as :func:`rbi.formats.urdf._geom` reads it; () for a kind with no
     volume."""
     names = _SHAPES.get(shape.tag, ())
@@ -383,7 +426,7 @@ def _sizes(rows: list[list[bytes]], shape: _Node) -> list[tuple[float, ...]]:
     if not names:
         return [()] * len(rows)
     count = 3 if shape.tag == "box" else 1
-    parts = [_numbers(column(rows, shape.at[name], b""), count) for name in names]
+    parts = [_numbers(rows.column(shape.at[name], b""), count) for name in names]
     sizes = np.concatenate(parts, axis=1)
     if np.any(sizes < 0):
         raise _Doubt
@@ -399,17 +442,17 @@ def _links(path: str, elements: dict, geometry: bool, packages) -> list[Link]:
         top = _tree(signature)
         if "name" not in top.at:
             raise _Doubt
-        rows = [values for _, values in group]
-        names = words(rows, top.at["name"])
+        rows = group
+        names = rows.words(top.at["name"])
         if not all(names):
             raise _Doubt
         inertial = top.child("inertial")
         inertials = [None] * len(rows) if inertial is None else _inertials(rows, inertial)
-        empty: list[list[Geom]] = [[] for _ in rows]
-        labels = [(path, index, names[k]) for k, (index, _) in enumerate(group)]
+        empty: list[list[Geom]] = [[] for _ in range(len(rows))]
+        labels = [(path, index, names[k]) for k, index in enumerate(group.indices)]
         collisions = _geoms(rows, top, "collision", labels, packages) if geometry else empty
         visuals = _geoms(rows, top, "visual", labels, packages) if geometry else empty
-        for k, (index, _) in enumerate(group):
+        for k, index in enumerate(group.indices):
             links[index] = Link(index, names[k], inertials[k], collisions[k], visuals[k], origin=_UNPLACED)
     return links
 
@@ -427,16 +470,16 @@ def _joints(model: RobotModel, elements) -> None:
             raise _Doubt
         if "link" not in parent.at or "link" not in child.at:
             raise _Doubt
-        rows = [values for _, values in group]
-        kinds = [MOVING.get(kind) for kind in words(rows, top.at.get("type"))]
+        rows = group
+        kinds = [MOVING.get(kind) for kind in rows.words(top.at.get("type"))]
         if None in kinds:
             raise _Doubt
-        names, parents = words(rows, top.at["name"]), words(rows, parent.at["link"])
-        children = words(rows, child.at["link"])
+        names, parents = rows.words(top.at["name"]), rows.words(parent.at["link"])
+        children = rows.words(child.at["link"])
         poses = _poses(rows, top.child("origin"))
         axes = _axes(model.path, rows, top.child("axis"), kinds)
         efforts = _efforts(rows, top.child("limit"))
-        for k, (index, _) in enumerate(group):
+        for k, index in enumerate(group.indices):
             found[index] = (names[k], kinds[k], parents[k], children[k], poses[k], axes[k], efforts[k])
     anchors = np.zeros((len(found), 3))
     for k, (name, kind, parent_name, child_name, pose, axis, effort) in enumerate(found):
@@ -452,10 +495,10 @@ def _joints(model: RobotModel, elements) -> None:
             link.origin = Pose.identity()  # the root's, as the careful reader leaves it
 
 
-def _axes(path: str, rows: list[list[bytes]], axis: _Node | None, kinds: list) -> list[np.ndarray]:
+def _axes(path: str, rows: _Rows, axis: _Node | None, kinds: list) -> list[np.ndarray]:
     """Each joint's axis as :func:`rbi.formats.urdf._axis` reads it: a unit vector for revolute
     and prismatic joints (worked out once per distinct text, as there), else as written."""
-    texts = [b"1 0 0"] * len(rows) if axis is None else column(rows, axis.at.get("xyz"), b"1 0 0")
+    texts = [b"1 0 0"] * len(rows) if axis is None else rows.column(axis.at.get("xyz"), b"1 0 0")
     values = _numbers(texts, 3)
     units: dict[str, np.ndarray] = {}
     found = []
@@ -470,11 +513,11 @@ def _axes(path: str, rows: list[list[bytes]], axis: _Node | None, kinds: list) -
     return found
 
 
-def _efforts(rows: list[list[bytes]], limit: _Node | None) -> list[float | None]:
+def _efforts(rows: _Rows, limit: _Node | None) -> list[float | None]:
     """Each joint's ``<limit effort>`` as a magnitude, or None where it is not written."""
     if limit is None or "effort" not in limit.at:
         return [None] * len(rows)
-    return np.abs(_numbers(column(rows, limit.at["effort"], b""), 1)[:, 0]).tolist()
+    return np.abs(_numbers(rows.column(limit.at["effort"], b""), 1)[:, 0]).tolist()
 
 
 def attach_elements(model: RobotModel) -> None:
