@@ -633,8 +633,8 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
         finite = np.all(np.isfinite(stack), axis=(1, 2))
         moments, axes = np.linalg.eigh(stack[finite])
         chosen = np.array(usable)[finite].tolist()
-        for row, i in enumerate(chosen):
-            eighs[i] = (moments[row], axes[row])
+        for i, values, vectors in zip(chosen, moments, axes):
+            eighs[i] = (values, vectors)
         _geometry_in_bulk(links, geometry, chosen, moments, axes)
     return [
         _Known(a, b, c, *d)
@@ -668,14 +668,12 @@ def _geometry_in_bulk(links, found: list[tuple], chosen: list[int], moments, axe
     inside = ~(np.any(com < low - margin, axis=1) | np.any(com > high + margin, axis=1))
     near = np.all(~np.isfinite(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
     low_density, high_density = SOLID_DENSITY_RANGE
-    for row, each in enumerate(picked):
-        i = chosen[rows[row]]
+    fits = (near & inside).tolist()
+    sized, offsets = (size > 0).tolist(), offset.tolist()
+    for row, (each, ratio) in enumerate(zip(picked, ratios)):
         density = each.geometry.implied_density
-        clean = bool(near[row] and inside[row]) and (
-            density is None or low_density <= density <= high_density
-        )
-        com_offset = float(offset[row]) if size[row] > 0 else None
-        found[i] = (ratios[row], com_offset, clean)
+        clean = fits[row] and (density is None or low_density <= density <= high_density)
+        found[chosen[rows[row]]] = (ratio, offsets[row] if sized[row] else None, clean)
 
 
 def _norms(rows: np.ndarray) -> np.ndarray:
