@@ -13,14 +13,14 @@ from rbi.sim.diagnostics import tilt_deg
 from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.spec.geometry import part_geometry
 from rbi.spec.load import load_body
-from rbi.viz.motion import MAX_TURN_PER_KEYFRAME, animation_data, keyframe_count, marked_axis
+from rbi.viz.motion import MAX_TURN_PER_KEYFRAME, MIN_KEYFRAMES, animation_data, keyframes_needed, marked_axis
 
 
 def _run(bodies, name, spin, tilt, duration=0.5, samples=None):
     body = load_body(bodies / name)
     scene = scene_from_properties(body.props, body.pivot, 9.81)
     q0, w0 = initial_state(tilt, [0.0, 0.0, spin])
-    count = samples or keyframe_count(duration, abs(spin) * 1.05)
+    count = samples or max(MIN_KEYFRAMES, keyframes_needed(duration, abs(spin) * 1.05))
     run = simulate(scene, q0, w0, duration, count)
     data = animation_data(
         "t", part_geometry(body), scene, run.t, run.q, run.omega, tilt_deg(run.q), body.length_unit
@@ -73,6 +73,7 @@ def test_marked_axis_of_a_top_without_symmetry_points_near_its_centre_of_mass(bo
     assert np.degrees(np.arccos(axis @ offset / np.linalg.norm(offset))) < 10.0
 
 
-@pytest.mark.parametrize("duration, rate, expected", [(0.0, 5.0, 1), (1.0, 0.0, 481), (4.0, 200.0, 1601)])
-def test_keyframe_count(duration, rate, expected):
-    assert keyframe_count(duration, rate) == expected
+@pytest.mark.parametrize("duration, rate, expected", [(0.0, 5.0, 1), (1.0, 0.0, 1), (4.0, 200.0, 1601)])
+def test_keyframes_needed(duration, rate, expected):
+    # no interval between keyframes turns the body more than MAX_TURN_PER_KEYFRAME rad
+    assert keyframes_needed(duration, rate) == expected

@@ -35,14 +35,6 @@ def keyframes_needed(duration: float, fastest_rate: float) -> int:
     return int(math.ceil(duration * max(fastest_rate, 0.0) / MAX_TURN_PER_KEYFRAME)) + 1
 
 
-def keyframe_count(duration: float, fastest_rate: float) -> int:
-    """:func:`keyframes_needed`, at least :data:`MIN_KEYFRAMES` and at most
-    :data:`MAX_KEYFRAMES` (a page stays a few MB)."""
-    if duration <= 0:
-        return 1
-    return int(min(MAX_KEYFRAMES, max(MIN_KEYFRAMES, keyframes_needed(duration, fastest_rate))))
-
-
 def marked_axis(scene) -> np.ndarray:
     """The body axis whose tip the animation traces (body frame, unit): the scene's spin axis,
     the one whose tilt and precession the run reports (see :mod:`rbi.core.spin_axis`)."""
