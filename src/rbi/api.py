@@ -44,13 +44,13 @@ from rbi.core.rotation import (
 from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
-from rbi.reprs import QUANTITY_COLUMNS, TableRepr, vector_text
+from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.runs.values import vector_value
 from rbi.spec.checks import Check, run_checks
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.spec.units import convert_body
-from rbi.text import csv_lines, number, visible
+from rbi.text import csv_lines, number, vector_text, visible
 
 if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's modules load then)
     from rbi.robot.audit import AuditReport

@@ -13,8 +13,6 @@ from collections.abc import Sequence
 from html import escape
 from typing import Any
 
-from rbi.text import vector_text as vector_text  # the one vector formatter, re-exported for rbi.api
-
 QUANTITY_COLUMNS = ("quantity", "unit", "value")
 """The columns of a summary: what, in which unit, how much."""
 

@@ -51,18 +51,9 @@ def plain(value: Any) -> Any:
 
 
 def to_json(result: dict[str, Any]) -> str:
-    """One JSON object; non-finite floats become null (JSON has no NaN)."""
-    return json.dumps(_finite_or_none(plain(result)))
-
-
-def _finite_or_none(value: Any) -> Any:
-    if isinstance(value, dict):
-        return {k: _finite_or_none(v) for k, v in value.items()}
-    if isinstance(value, list):
-        return [_finite_or_none(v) for v in value]
-    if isinstance(value, float) and not math.isfinite(value):
-        return None
-    return value
+    """One JSON object of a result whose floats are all finite (:func:`refuse_non_finite` has
+    refused any other: JSON has no NaN)."""
+    return json.dumps(plain(result))
 
 
 _XYZ = ("x", "y", "z")
