@@ -155,13 +155,21 @@ def _levels(model: RobotModel) -> tuple[list[tuple[int, int]], list[tuple[list[i
     links = model.links
     n = len(links)
     by_name = {link.key: row for row, link in enumerate(links)}
-    row_of = {link.index: row for row, link in enumerate(links)}
+    parents = [n if link.parent is None else by_name.get(link.parent, -1) for link in links]
+    if len(by_name) == n and -1 not in parents:  # each key one link's, each parent a link
+        children: list[list[int]] = [[] for _ in range(n + 1)]
+        for row, parent in enumerate(parents):
+            children[parent].append(row)
+        rows = _depth_first(children, n)  # parents_first's order, on rows
+    else:
+        row_of = {link.index: row for row, link in enumerate(links)}
+        rows = [row_of[link.index] for link in parents_first(model, by_name)]
+        parents = {row: n if links[row].parent is None else by_name[links[row].parent] for row in rows}
     depth = [0] * (n + 1)
     order: list[tuple[int, int]] = []
     groups: list[tuple[list[int], list[int]]] = []
-    for link in parents_first(model, by_name):
-        row = row_of[link.index]
-        parent = n if link.parent is None else by_name[link.parent]
+    for row in rows:
+        parent = parents[row]
         d = depth[row] = 0 if parent == n else depth[parent] + 1
         if d == len(groups):
             groups.append(([], []))
@@ -169,6 +177,18 @@ def _levels(model: RobotModel) -> tuple[list[tuple[int, int]], list[tuple[list[i
         groups[d][1].append(parent)
         order.append((row, parent))
     return order, groups
+
+
+def _depth_first(children: list[list[int]], root: int) -> list[int]:
+    """The rows below ``root`` depth first, as :func:`parents_first` orders links: the last
+    child first, each child list in file order."""
+    order: list[int] = []
+    queue = list(children[root])
+    while queue:
+        row = queue.pop()
+        order.append(row)
+        queue.extend(children[row])
+    return order
 
 
 def _moved(link, pose: Pose, joints: dict[str, float], frames: dict[int, list]) -> tuple:
