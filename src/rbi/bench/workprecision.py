@@ -148,32 +148,12 @@ def run_case(case: Case, quick: bool, progress: Progress) -> dict:
             compiled = method == "default"
             chapter = (method, rtol) == CHAPTER
             min_seconds = 0.3 if compiled else (2.0 if chapter and not quick else 0.0)
-            trajectory, seconds, repeats = timed_run(scene, q0, omega0, case, method, rtol, min_seconds)
-            rows.append(
-                {
-                    "method": method,
-                    "rtol": rtol,
-                    "chapter_setup": chapter,
-                    **errors(scene, trajectory, reference),
-                    "steps": trajectory.steps,
-                    "rhs_evals": trajectory.rhs_evals,
-                    "seconds": seconds,
-                    "repeats": repeats,
-                }
-            )
+            timing = timed_run(scene, q0, omega0, case, method, rtol, min_seconds)
+            rows.append(_row(method, rtol, scene, reference, *timing, chapter_setup=chapter))
     progress(f"{case.name}: rbi default settings")
-    trajectory, seconds, repeats = timed_run(scene, q0, omega0, case, "default", None, 0.3)
-    default_row = {
-        "method": "default",
-        "rtol": trajectory.rtol,
-        "chapter_setup": False,
-        "default_settings": True,
-        **errors(scene, trajectory, reference),
-        "steps": trajectory.steps,
-        "rhs_evals": trajectory.rhs_evals,
-        "seconds": seconds,
-        "repeats": repeats,
-    }
+    timing = timed_run(scene, q0, omega0, case, "default", None, 0.3)
+    flags = dict(chapter_setup=False, default_settings=True)
+    default_row = _row("default", timing[0].rtol, scene, reference, *timing, **flags)
     return {
         "name": case.name,
         "spec": f"bodies/{case.spec}",
@@ -186,6 +166,17 @@ def run_case(case: Case, quick: bool, progress: Progress) -> dict:
         "runs": rows,
         "default": default_row,
         "speedup": speedup(rows, default_row),
+    }
+
+
+def _row(method: str, rtol, scene, reference, trajectory, seconds: float, repeats: int, **flags) -> dict:
+    """One run of a work-precision case: its method and tolerance, ``flags`` (chapter_setup,
+    default_settings), its errors against ``reference``, its cost and its median time."""
+    return {"method": method, "rtol": rtol, **flags, **errors(scene, trajectory, reference)} | {
+        "steps": trajectory.steps,
+        "rhs_evals": trajectory.rhs_evals,
+        "seconds": seconds,
+        "repeats": repeats,
     }
 
 
