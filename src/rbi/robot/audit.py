@@ -41,7 +41,7 @@ from rbi.errors import ArgumentError, literal
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
-from rbi.robot.tree import placement, stack_apply, stacked, totals
+from rbi.robot.tree import depth_first, placement, stack_apply, stacked, totals
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -391,12 +391,12 @@ def audit_model(
 
 def _carried_mass(model: RobotModel) -> dict[int, bool]:
     """For each link: does any link below it in the tree have mass?"""
+    in_one_pass = _carried_in_one_pass(model)
+    if in_one_pass is not None:
+        return in_one_pass
     children: dict[str | None, list[Link]] = {}
     for link in model.links:
         children.setdefault(link.parent, []).append(link)
-    in_one_pass = _carried_in_one_pass(model, children)
-    if in_one_pass is not None:
-        return in_one_pass
     result: dict[int, bool] = {}
 
     def below(link: Link) -> bool:
@@ -419,26 +419,31 @@ def _carried_mass(model: RobotModel) -> dict[int, bool]:
     return result
 
 
-def _carried_in_one_pass(model: RobotModel, children: dict) -> dict[int, bool] | None:
-    """:func:`_carried_mass` for a forest of named links (each reached once from the roots), in
-    one pass from the leaves up; None for anything else (unnamed bodies, links hanging from
-    none of the model's links), which the walk below each link answers."""
-    order: list[Link] = []
-    queue = list(children.get(None, []))
-    while queue:
-        link = queue.pop()
-        if link.name is None or len(order) == len(model.links):
-            return None  # an unnamed body, or more links than the model has: names repeat
-        order.append(link)
-        queue.extend(children.get(link.name, []))
-    if len(order) != len(model.links) or len({link.name for link in order}) != len(order):
+def _carried_in_one_pass(model: RobotModel) -> dict[int, bool] | None:
+    """:func:`_carried_mass` for a forest of links with names of their own (each reached once
+    from the roots), in one pass from the leaves up on row numbers; None for anything else
+    (unnamed bodies, shared names, links hanging from none of the model's links), which the
+    walk below each link answers."""
+    links = model.links
+    n = len(links)
+    rows = {link.name: row for row, link in enumerate(links)}
+    if None in rows or len(rows) != n:
         return None
-    below: dict[str | None, bool] = {}
-    for link in reversed(order):  # every child before its parent
-        heavy = link.inertial is not None and link.inertial.mass > 0
-        if heavy or below.get(link.name, False):
-            below[link.parent] = True
-    return {link.index: below.get(link.name, False) for link in model.links}
+    parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
+    if -1 in parents:
+        return None
+    children: list[list[int]] = [[] for _ in range(n + 1)]
+    for row, parent in enumerate(parents):
+        children[parent].append(row)
+    order = depth_first(children, n)
+    if len(order) != n:
+        return None
+    below = [False] * (n + 1)
+    for row in reversed(order):  # every child before its parent
+        inertial = links[row].inertial
+        if below[row] or (inertial is not None and inertial.mass > 0):
+            below[parents[row]] = True
+    return {link.index: below[row] for row, link in enumerate(links)}
 
 
 def chosen_geoms(link: Link, geometry: str) -> tuple[list, str]:

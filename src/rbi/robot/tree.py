@@ -160,7 +160,7 @@ def _levels(model: RobotModel) -> tuple[list[tuple[int, int]], list[tuple[list[i
         children: list[list[int]] = [[] for _ in range(n + 1)]
         for row, parent in enumerate(parents):
             children[parent].append(row)
-        rows = _depth_first(children, n)  # parents_first's order, on rows
+        rows = depth_first(children, n)  # parents_first's order, on rows
     else:
         row_of = {link.index: row for row, link in enumerate(links)}
         rows = [row_of[link.index] for link in parents_first(model, by_name)]
@@ -179,7 +179,7 @@ def _levels(model: RobotModel) -> tuple[list[tuple[int, int]], list[tuple[list[i
     return order, groups
 
 
-def _depth_first(children: list[list[int]], root: int) -> list[int]:
+def depth_first(children: list[list[int]], root: int) -> list[int]:
     """The rows below ``root`` depth first, as :func:`parents_first` orders links: the last
     child first, each child list in file order."""
     order: list[int] = []
