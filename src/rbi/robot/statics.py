@@ -53,7 +53,9 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     to_R = np.broadcast_to(to_frame.rotation, (len(placed.joints), 3, 3))
     axes = np.matmul(to_R, placed.axes[..., None])[..., 0]
     anchors = np.matmul(to_R, placed.anchors[..., None])[..., 0] + to_frame.translation
-    keep = [i for i, (index, _) in enumerate(placed.joints) if not _world_joint(model, placed.rows[index])]
+    keep = list(range(len(placed.joints)))
+    if model.format == "sdf":  # only an SDF root link has joints to the world
+        keep = [i for i in keep if not _world_joint(model, placed.rows[placed.joints[i][0]])]
     rows = [placed.rows[placed.joints[i][0]] for i in keep]
     M = np.array([mass[row] for row in rows], dtype=float)  # Σ m of each joint's subtree
     axes, anchors = axes[keep], anchors[keep]

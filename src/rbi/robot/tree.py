@@ -222,8 +222,8 @@ def _joint_frames(model: RobotModel, R: np.ndarray, t: np.ndarray, moved: dict[i
                 rows.append(row)
                 axes.append(motion.axis)
                 anchors.append(motion.anchor)
-    axes_array = np.array(axes, dtype=float).reshape(-1, 3)
-    anchors_array = np.array(anchors, dtype=float).reshape(-1, 3)
+    axes_array = stacked(axes, (3,))
+    anchors_array = stacked(anchors, (3,))
     at = np.array(rows, dtype=int)
     plain = at >= 0
     if np.any(plain):
