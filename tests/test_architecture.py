@@ -130,8 +130,8 @@ def test_the_api_is_below_the_cli():
 
 
 def test_the_file_writer_stands_below_every_layer_that_writes():
-    """rbi.files (the one checked writer of every file rbi creates) needs only rbi.errors, so the
-    sweep store, the API and the CLI can all write through it."""
+    """rbi.files (the one checked writer of every file rbi creates) needs only rbi.errors and
+    rbi.text, so the sweep store, the API and the CLI can all write through it."""
     forbidden = (
         "rbi.spec",
         "rbi.cli",

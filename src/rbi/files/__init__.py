@@ -8,5 +8,5 @@
   size cap, created exclusively, shortened names that stay under 255 bytes.
 - :mod:`rbi.files.lock`: one writer per output (an ``fcntl`` lock beside it).
 
-It needs nothing of rbi but :mod:`rbi.errors`.
+It needs nothing of rbi but :mod:`rbi.errors` and :mod:`rbi.text`.
 """

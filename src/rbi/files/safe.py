@@ -28,6 +28,7 @@ from collections.abc import Iterator
 from pathlib import Path
 
 from rbi.errors import InputError
+from rbi.text import visible
 
 NAME_MAX = 255
 """Longest file name (one path component), in bytes, on the file systems rbi writes to."""
@@ -39,13 +40,9 @@ _NOCTTY = getattr(os, "O_NOCTTY", 0)
 
 
 def shown(path: str | os.PathLike) -> str:
-    """A path as it may appear in a one-line message: control characters escaped."""
-    path = os.fspath(path)
-    return (
-        path.encode("unicode_escape", errors="backslashreplace").decode("ascii")
-        if any(ord(c) < 32 or 127 <= ord(c) < 160 for c in path)
-        else path
-    )
+    """A path as it may appear in a one-line message: hidden characters escaped by rbi's one
+    escaper for the terminal (:func:`rbi.text.visible`)."""
+    return visible(os.fspath(path))
 
 
 def reason(exc: OSError) -> str:
