@@ -140,7 +140,7 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
     pieces = _QUOTED.split(text)  # between values, a value, between values, ...
     values = pieces[1::2]
     blank = b'""'.join(pieces[::2])
-    if any(text.count(blank_) != blank.count(blank_) for blank_ in (b"\n", b"\t", b"\r")):
+    if any(space in text and text.count(space) != blank.count(space) for space in (b"\n", b"\t", b"\r")):
         raise _Doubt  # a value holding a line end or tab, which XML reads as a space
     if _SINGLE_QUOTED.search(blank):
         raise _Doubt
