@@ -274,7 +274,7 @@ class _Rows:
     and their values, as a list per element, or (``spaced``: the first element's first value's
     place, the step between elements) at even steps in the document's list of values."""
 
-    def __init__(self, indices: list[int], rows: _Rows | None = None, spaced=None, values=None):
+    def __init__(self, indices: list[int], rows: list[list[bytes]] | None = None, spaced=None, values=None):
         self.indices, self.rows, self.spaced, self.values = indices, rows, spaced, values
 
     def __len__(self) -> int:
