@@ -46,14 +46,13 @@ from rbi.formats.robot import (
     Pose,
     RobotModel,
     Where,
-    check_unique_joint_names,
     check_unique_names,
     rpy_matrix,
     short,
     unit,
 )
 from rbi.formats.robot_paths import resolve_mesh
-from rbi.formats.urdf import MOVING, check_tree
+from rbi.formats.urdf import MOVING
 
 _PLAIN = re.compile(rb"[0-9eE+\-. \n]*")
 """The characters of texts of plain decimals apart by spaces, one text a line: with them, a
@@ -321,6 +320,8 @@ def _numbers(texts: list[bytes], count: int) -> np.ndarray:
         raise _Doubt
     if len(distinct) == len(texts):
         return values
+    if len(distinct) == 1:  # a generated file's column: one text throughout
+        return np.repeat(values, len(texts), axis=0)
     place = {text: k for k, text in enumerate(distinct)}
     return values[[place[text] for text in texts]]
 
@@ -488,11 +489,31 @@ def _joints(model: RobotModel, elements) -> None:
             raise _Doubt
         link.parent, link.origin = parent_name, pose
         link.motions = [Motion(name, kind, axis, anchors[k], effort_limit=effort)]
-    check_unique_joint_names(model, "urdfdom")
-    check_tree(model)
+    if len({name for name, *_ in found}) != len(found) or not _one_tree(model.links):
+        raise _Doubt  # check_unique_joint_names or check_tree would refuse it: the careful reader words it
     for link in model.links:
         if link.origin is _UNPLACED:
             link.origin = Pose.identity()  # the root's, as the careful reader leaves it
+
+
+def _one_tree(links: list[Link]) -> bool:
+    """Do the links form one tree (one root, every link reached from it), as
+    :func:`rbi.formats.urdf.check_tree` asks (each link has one parent here, a link of the model)?"""
+    rows = {link.name: row for row, link in enumerate(links)}
+    children: list[list[int]] = [[] for _ in links]
+    roots = []
+    for row, link in enumerate(links):
+        if link.parent is None:
+            roots.append(row)
+        else:
+            children[rows[link.parent]].append(row)
+    if len(roots) != 1:
+        return False
+    reached, queue = 0, roots
+    while queue:
+        reached += 1
+        queue.extend(children[queue.pop()])
+    return reached == len(links)
 
 
 def _axes(path: str, rows: _Rows, axis: _Node | None, kinds: list) -> list[np.ndarray]:
