@@ -62,3 +62,21 @@ def test_any_set_of_point_masses_gives_a_valid_inertia(points):
     r = r - m @ r / m.sum()
     second = (r * m[:, None]).T @ r
     assert inertia_problem(np.trace(second) * np.eye(3) - second) is None
+
+
+def test_entries_whose_magnitudes_overflow_are_named_without_a_numpy_warning():
+    import warnings
+
+    from rbi.core.validity import overflowing_sum
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        message = overflowing_sum(np.diag([1e308, 1e308, 1.0]))
+        assert message is not None and "largest 1e+308" in message and "1.8e+308" in message
+        assert overflowing_sum(np.diag([8e307, 8e307, 1.0])) is None  # 1.6e308 still a double
+        problem = inertia_problem(np.diag([1e308, 1e308, 1e308]))
+    assert (
+        problem is not None
+        and problem.kind == "not finite"
+        and problem.message.endswith("is the unit right?")
+    )

@@ -146,3 +146,30 @@ def test_any_link_names_give_a_fixed_copy_that_is_xml_and_a_safe_terminal(tmp_pa
     assert [link.get("name") for link in root.iter("link")] == link_names
     for stream in (proc.stdout, proc.stderr):
         assert not any(ch in stream for ch in "\x1b\x9b\u202e\u2028")
+
+
+@pytest.mark.parametrize("fmt", ["xml_urdf", "mjcf"])
+def test_moments_whose_sum_overflows_are_one_spec_error_and_no_numpy_warning(tmp_path, fmt):
+    """Three moments of 1e308 are each finite but add up past the largest double: rbi.audit
+    raises SpecError naming the file, the link and the field, and numpy prints no
+    RuntimeWarning on the way (warnings are errors here)."""
+    import warnings
+
+    import rbi
+
+    if fmt == "mjcf":
+        name, text = (
+            "r.xml",
+            '<mujoco><worldbody><body name="a"><joint type="hinge"/><inertial pos="0 0 0" mass="1" '
+            'diaginertia="1e308 1e308 1e308"/></body></worldbody></mujoco>',
+        )
+    else:
+        name, text = (
+            "r.urdf",
+            '<robot name="r"><link name="a"><inertial><mass value="1"/><inertia ixx="1e308" ixy="0" '
+            'ixz="0" iyy="1e308" iyz="0" izz="1e308"/></inertial></link></robot>',
+        )
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(rbi.SpecError, match=r"\(a\): inertia: numbers too large: .*1\.8e\+308"):
+            rbi.audit(write(tmp_path, name, text))

@@ -39,6 +39,20 @@ INERTIA_RTOL = 1e-9
 matrix (Drake uses 16 ε ≈ 3.6·10⁻¹⁵), well below any physical difference."""
 
 
+def overflowing_sum(inertia: np.ndarray) -> str | None:
+    """Why the finite entries of ``inertia`` (any units) cannot be computed with: their
+    magnitudes add up beyond the largest double (so every sum of moments, such as a trace or
+    a parallel-axis shift, overflows); None when they do not."""
+    with np.errstate(over="ignore"):  # the overflow is the answer, not a warning to print
+        total = np.sum(np.abs(inertia))
+    if np.isfinite(total):
+        return None
+    return (
+        f"numbers too large: the entries (largest {float(np.max(np.abs(inertia))):.3g}) "
+        f"add up beyond the largest double, {np.finfo(float).max:.3g}"
+    )
+
+
 class InertiaProblem(NamedTuple):
     """Why a matrix is not a valid inertia: ``kind`` is ``'not finite'``, ``'not symmetric'``,
     ``'negative moment'`` or ``'triangle inequality'`` (``'not finite'`` also when the entries
@@ -61,13 +75,9 @@ def inertia_problem(
     I = np.asarray(inertia, dtype=float)
     if I.shape != (3, 3) or not np.all(np.isfinite(I)):
         return InertiaProblem("not finite", "inertia must be a finite 3×3 matrix")
-    if not np.isfinite(np.sum(np.abs(I))):
-        return InertiaProblem(
-            "not finite",
-            f"numbers too large: the entries (largest {float(np.max(np.abs(I))):.3g}) "
-            f"add up beyond the largest double, {np.finfo(float).max:.3g}; "
-            "is the unit right?",
-        )
+    too_large = overflowing_sum(I)
+    if too_large:
+        return InertiaProblem("not finite", f"{too_large}; is the unit right?")
     size = 0.5 * abs(float(np.trace(I))) if scale is None else float(scale)
     tol = rtol * size
     asymmetry = float(np.max(np.abs(I - I.T)))

@@ -22,7 +22,7 @@ import numpy as np
 from rbi.core.inertia import re_express
 from rbi.core.mass import MassProperties
 from rbi.core.rotation import euler_matrix, quaternion_to_matrix, without_rounding_noise
-from rbi.core.validity import subnormal_problem
+from rbi.core.validity import overflowing_sum, subnormal_problem
 from rbi.errors import InputError
 
 LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
@@ -327,11 +327,9 @@ def from_six(ixx, iyy, izz, ixy, ixz, iyz) -> np.ndarray:
 
 
 def check_inertia_range(where: Where, inertia: np.ndarray) -> None:
-    if not np.isfinite(np.abs(inertia).sum()):
-        raise where.error(
-            f"inertia: numbers too large: the entries (largest {float(np.max(np.abs(inertia))):.3g}) "
-            f"add up beyond the largest double, {np.finfo(float).max:.3g}; give the inertia in kg·m²"
-        )
+    too_large = overflowing_sum(inertia)
+    if too_large:
+        raise where.error(f"inertia: {too_large}; give the inertia in kg·m²")
 
 
 def rpy_matrix(rpy) -> np.ndarray:
