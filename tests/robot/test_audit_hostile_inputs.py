@@ -173,3 +173,23 @@ def test_moments_whose_sum_overflows_are_one_spec_error_and_no_numpy_warning(tmp
         warnings.simplefilter("error")
         with pytest.raises(rbi.SpecError, match=r"\(a\): inertia: numbers too large: .*1\.8e\+308"):
             rbi.audit(write(tmp_path, name, text))
+
+
+def test_a_robot_whose_totals_overflow_is_told_which_numbers_are_too_large(tmp_path):
+    """One moment of 1e308 kg·m² (the entries' sum is still a double) overflows the whole
+    robot's inertia. The message names the moment as well as the distances (it once blamed a
+    centre of mass '0 m from the root' and asked for lengths in metres), and numpy prints no
+    RuntimeWarning on the way."""
+    import warnings
+
+    import rbi
+
+    text = (
+        '<robot name="r"><link name="a"><inertial><mass value="1"/><inertia ixx="1e308" ixy="0" '
+        'ixz="0" iyy="0.1" iyz="0" izz="0.1"/></inertial><collision><geometry><box size="1 1 1"/>'
+        "</geometry></collision></link></robot>"
+    )
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(rbi.SpecError, match=r"overflow a double .*moments up to 1e\+308 kg·m²"):
+            rbi.audit(write(tmp_path, "r.urdf", text))

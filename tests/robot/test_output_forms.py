@@ -122,3 +122,31 @@ def test_a_moment_the_geometry_cannot_give_is_null_in_json_and_empty_in_csv(tmp_
     assert proc.returncode == 0, proc.stderr
     row = next(csv.DictReader(io.StringIO(proc.stdout)))
     assert row["ratio_1"] == "" and float(row["ratio_2"]) == pytest.approx(1.2, rel=1e-9)
+
+
+def test_a_moment_ratio_beyond_any_double_is_a_mismatch_in_every_form(tmp_path):
+    """Declared moments of 2-4e306 kg·m² on a 1 kg link whose collision is a 1 cm cube (moments
+    m a²/6 = 1.67e-5 kg·m²): each ratio is above 1e311, past the largest double. The link is a
+    mismatch at error level (exit 1) in all three forms, its ratios printed as '>1.8e+308' in
+    the table, null in JSON and empty in CSV. The table once printed '-' and no flag with
+    exit 0, while JSON and CSV refused the result naming no file (exit 2)."""
+    path = tmp_path / "heavy.urdf"
+    path.write_text(
+        '<robot name="heavy"><link name="a"><inertial><mass value="1"/>'
+        '<inertia ixx="2e306" iyy="3e306" izz="4e306" ixy="0" ixz="0" iyz="0"/></inertial>'
+        '<collision><geometry><box size="0.01 0.01 0.01"/></geometry></collision></link></robot>'
+    )
+    table = run_rbi_inprocess("audit", str(path))
+    assert table.returncode == 1, table.stderr
+    assert "mismatch" in table.stdout and ">1.8e+308" in table.stdout
+    proc = run_rbi_inprocess("audit", str(path), "--format", "json")
+    assert proc.returncode == 1, proc.stderr
+    link = json.loads(proc.stdout)["links"][0]
+    assert link["moment_ratios"] == [None, None, None]
+    assert [(f["code"], f["level"]) for f in link["flags"] if f["code"] == "mismatch"] == [
+        ("mismatch", "error")
+    ]
+    proc = run_rbi_inprocess("audit", str(path), "--format", "csv")
+    assert proc.returncode == 1, proc.stderr
+    row = next(csv.DictReader(io.StringIO(proc.stdout)))
+    assert row["ratio_1"] == row["ratio_2"] == row["ratio_3"] == ""

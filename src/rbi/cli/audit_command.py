@@ -173,15 +173,13 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
 
 def _csv_row(each) -> dict:
 
-    declared, geo = each.declared, each.geometry
+    declared, geo, ratios = each.declared, each.geometry, each.given_ratios
     return {
         "link": terminal_safe(each.link.name or each.link.label),
         "mass": declared.mass if declared else None,
         "geometry_volume": geo.volume if geo else None,
         "implied_density": geo.implied_density if geo else None,
-        "ratio_1": None if each.ratios is None else each.ratios[0],
-        "ratio_2": None if each.ratios is None else each.ratios[1],
-        "ratio_3": None if each.ratios is None else each.ratios[2],
+        **{f"ratio_{i + 1}": None if ratios is None else ratios[i] for i in range(3)},
         "com_offset": each.com_offset,
         "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags),
     }
@@ -206,13 +204,12 @@ def _table(report) -> None:
     table.add_column("flags", overflow="fold")
     for each in report.links:
         declared, geo = each.declared, each.geometry
-        worst = each.worst_ratio
         flags = " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok"
         table.add_row(
             each.link.name if each.link.name is not None else each.link.label,
             "-" if declared is None else number(declared.mass, 6),
             "-" if geo is None or geo.implied_density is None else f"{geo.implied_density:.4g}",
-            "-" if worst is None else f"{worst:.3g}",
+            each.worst_ratio_text,
             "-" if each.com_offset is None else f"{each.com_offset:.2g}",
             flags,
         )

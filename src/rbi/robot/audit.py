@@ -29,6 +29,8 @@ Flags (code, level):
 
 from __future__ import annotations
 
+import math
+import sys
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
@@ -151,6 +153,29 @@ class LinkAudit:
         when there is none (no geometry, no declared inertia)."""
         return None if self.ratios is None else _worst_ratio(self.ratios)
 
+    @property
+    def given_ratios(self) -> list[float | None] | None:
+        """:attr:`ratios` as JSON and CSV hold them: a ratio the geometry cannot give (NaN,
+        ``-`` in the table) or one past the largest double (``>1.8e+308``) is None."""
+        if self.ratios is None:
+            return None
+        return [float(r) if math.isfinite(r) else None for r in self.ratios]
+
+    @property
+    def worst_ratio_text(self) -> str:
+        """:attr:`worst_ratio` as the table shows it (:func:`ratio_text`; ``-`` for none)."""
+        worst = self.worst_ratio
+        return "-" if worst is None else ratio_text(worst)
+
+
+def ratio_text(ratio: float) -> str:
+    """A moment ratio for people: 3 significant digits, ``-`` for one the geometry cannot give
+    (NaN), ``>1.8e+308`` for one past the largest double (the declared moment is finite, the
+    geometry's too small to divide it by)."""
+    if math.isnan(ratio):
+        return "-"
+    return f">{sys.float_info.max:.2g}" if math.isinf(ratio) else f"{ratio:.3g}"
+
 
 @dataclass(repr=False)
 class AuditReport(TableRepr):
@@ -267,8 +292,7 @@ def _link_dict(each: LinkAudit, declared_moments=None, geometry_moments=None) ->
         "index": each.link.index,
         "declared": declared,
         "geometry": geometry,
-        # a ratio the geometry cannot give (its moment about that axis is ~0) is null, as "-" in the table
-        "moment_ratios": None if each.ratios is None else [None if r != r else float(r) for r in each.ratios],
+        "moment_ratios": each.given_ratios,
         "com_offset": each.com_offset,
         "flags": [flag.as_dict() for flag in each.flags],
     }
@@ -671,7 +695,7 @@ def _geometry_in_bulk(links, found: list[tuple], chosen: list[int], moments, axe
         offset = offset / size
     margin = (COM_MARGIN * size)[:, None]
     inside = ~(np.any(com < low - margin, axis=1) | np.any(com > high + margin, axis=1))
-    near = np.all(~np.isfinite(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
+    near = np.all(np.isnan(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
     low_density, high_density = SOLID_DENSITY_RANGE
     fits = (near & inside).tolist()
     sized, offsets = (size > 0).tolist(), offset.tolist()
@@ -846,7 +870,8 @@ def _geometry_flags(result: LinkAudit, placeholder: str | None, eigh=None) -> li
     along = np.einsum("ji,jk,ki->i", axes, declared.inertia_about_com, axes)
     usable = moments > USABLE_MOMENT * float(np.max(moments))
     ratios = np.full(3, np.nan)
-    ratios[usable] = along[usable] / moments[usable]
+    with np.errstate(over="ignore"):  # past the largest double: inf, the worst ratio there is
+        ratios[usable] = along[usable] / moments[usable]
     result.ratios = ratios
     size = float(np.linalg.norm(geo.high - geo.low))
     if size > 0:
@@ -861,11 +886,11 @@ def _geometry_flags(result: LinkAudit, placeholder: str | None, eigh=None) -> li
         level = "warning"
     if level is not None:
         code = "placeholder" if placeholder else "mismatch"
-        ratio_text = ", ".join("-" if np.isnan(r) else f"{r:.3g}" for r in ratios)
-        detail = f"declared moments about the geometry's principal axes are {ratio_text} × the {geo.source} geometry's at the same mass"
+        texts = ", ".join(ratio_text(r) for r in ratios)
+        detail = f"declared moments about the geometry's principal axes are {texts} × the {geo.source} geometry's at the same mass"
         if placeholder:
             detail = f"{placeholder}; {detail}"
-        summary = "" if worst is None else f"a moment {worst:.3g} × the {geo.source} geometry's"
+        summary = "" if worst is None else f"a moment {ratio_text(worst)} × the {geo.source} geometry's"
         flags.append(Flag(code, level, detail, summary))
     margin = COM_MARGIN * size
     if np.any(declared.center_of_mass < geo.low - margin) or np.any(
@@ -892,11 +917,12 @@ def _spread(moments) -> float:
 
 
 def _worst_ratio(ratios) -> float | None:
-    """The ratio farthest from 1 (by factor), or None when there is none."""
-    finite = ratios[np.isfinite(ratios)]
-    if finite.size == 0:
+    """The ratio farthest from 1 (by factor; one past the largest double is inf), or None when
+    there is none."""
+    given = ratios[~np.isnan(ratios)]
+    if given.size == 0:
         return None
-    extreme = [float(finite.max()), float(finite.min())]
+    extreme = [float(given.max()), float(given.min())]
     return max(extreme, key=lambda r: abs(np.log(r)) if r > 0 else np.inf)
 
 

@@ -300,15 +300,19 @@ def totals(
     try:
         if not chosen:
             raise ValueError("no link with mass")
-        masses, coms = _placed_parts(placed, chosen)
-        total = combine(masses, coms, _placed_inertias(placed, chosen), frame)
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported just below
+            masses, coms = _placed_parts(placed, chosen)
+            inertias = _placed_inertias(placed, chosen)
+            total = combine(masses, coms, inertias, frame)
     except ValueError:  # no link with mass, or negative masses (flagged unphysical) that leave none
         return MassProperties.zero(frame)
     if not (np.all(np.isfinite(total.center_of_mass)) and np.all(np.isfinite(total.inertia_about_com))):
         far = float(np.max(np.abs(coms)))
+        moment = max(float(np.max(np.abs(props.inertia_about_com))) for _, props in chosen)
         raise InputError(
-            f"{model.path}: the whole robot's mass properties overflow a double (a centre of mass "
-            f"{far:.3g} m from the root); give lengths in metres"
+            f"{model.path}: the whole robot's mass properties overflow a double (centres of mass "
+            f"up to {far:.3g} m from the root, moments up to {moment:.3g} kg·m²); give lengths in "
+            "metres and moments in kg·m²"
         )
     return total
 
