@@ -72,6 +72,23 @@ def _careful(path: str, data: bytes):
     return read_urdf(robot_xml.read_xml(path, data), None, True)
 
 
+def _written(tmp_path, text: str) -> tuple[str, bytes]:
+    """``text`` written as robot.urdf in ``tmp_path``: its path and its bytes."""
+    path = tmp_path / "robot.urdf"
+    path.write_text(text)
+    return str(path), path.read_bytes()
+
+
+def _read_alike(tmp_path, text: str):
+    """``text`` written as a URDF and read in bulk, which must read it and audit it as the
+    careful reader does: (path, bytes, the bulk reader's model)."""
+    path, data = _written(tmp_path, text)
+    bulk = read_urdf_bulk(path, data)
+    assert bulk is not None
+    assert _as_json(bulk) == _as_json(_careful(path, data))
+    return path, data, bulk
+
+
 def _as_json(model) -> str:
     def plain(value):
         if isinstance(value, np.ndarray):
@@ -120,14 +137,9 @@ def _as_json(model) -> str:
     ],
 )
 def test_the_bulk_reader_reads_what_the_careful_one_reads(tmp_path, text):
-    path = tmp_path / "robot.urdf"
-    path.write_text(text)
-    data = path.read_bytes()
-    bulk = read_urdf_bulk(str(path), data)
-    assert bulk is not None
-    assert _as_json(bulk) == _as_json(_careful(str(path), data))
+    path, data, bulk = _read_alike(tmp_path, text)
     attach_elements(bulk)  # what --fix edits: the careful tree's elements
-    careful = _careful(str(path), data)
+    careful = _careful(path, data)
     for mine, theirs in zip(bulk.links, careful.links):
         assert (mine.element.start, mine.element.end) == (theirs.element.start, theirs.element.end)
         if theirs.inertial is not None:
@@ -178,11 +190,9 @@ def test_the_bulk_reader_reads_what_the_careful_one_reads(tmp_path, text):
 def test_the_careful_reader_words_every_refusal(tmp_path, text):
     """The bulk reader reads none of these (a refused file, or one it leaves to the careful
     reader), so what the user sees is the careful reader's: its model or its one-line error."""
-    path = tmp_path / "robot.urdf"
-    path.write_text(text)
-    data = path.read_bytes()
-    assert read_urdf_bulk(str(path), data) is None
-    assert _outcome(lambda: read_robot(str(path))) == _outcome(lambda: _careful(str(path), data))
+    path, data = _written(tmp_path, text)
+    assert read_urdf_bulk(path, data) is None
+    assert _outcome(lambda: read_robot(path)) == _outcome(lambda: _careful(path, data))
 
 
 def _outcome(read) -> str:
@@ -203,9 +213,4 @@ def test_a_generated_file_of_alike_links_reads_as_the_careful_reader_reads_it(tm
     if odd is not None:
         at = text.index('<link name="l40">')
         text = text[:at] + text[at:].replace('xyz="0.1 0 0"', odd, 1)
-    path = tmp_path / "robot.urdf"
-    path.write_text(text)
-    data = path.read_bytes()
-    bulk = read_urdf_bulk(str(path), data)
-    assert bulk is not None
-    assert _as_json(bulk) == _as_json(_careful(str(path), data))
+    _read_alike(tmp_path, text)

@@ -51,6 +51,10 @@ MOVING = {
 }
 
 
+UNIT_AXIS_KINDS = ("revolute", "prismatic")
+"""The motions whose ``<axis xyz>`` is made a unit vector (the others keep it as written)."""
+
+
 def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     path, root = document.path, document.root
     model = RobotModel(path, "urdf", root.get("name"), document=document)
@@ -199,7 +203,7 @@ def _joints(model: RobotModel, root) -> None:
         link.parent = parent_name
         link.origin = _origin(where, element, "joint")
         motion_kind = MOVING[kind]
-        axis_vector = _axis(where, element.child("axis"), motion_kind in ("revolute", "prismatic"))
+        axis_vector = _axis(where, element.child("axis"), motion_kind in UNIT_AXIS_KINDS)
         limit = element.child("limit")
         effort = None
         if limit is not None and limit.get("effort") is not None:

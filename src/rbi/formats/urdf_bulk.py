@@ -52,7 +52,7 @@ from rbi.formats.robot import (
     unit,
 )
 from rbi.formats.robot_paths import resolve_mesh
-from rbi.formats.urdf import MOVING
+from rbi.formats.urdf import MOVING, UNIT_AXIS_KINDS
 
 _PLAIN = re.compile(rb"[0-9eE+\-. \n]*")
 """The characters of texts of plain decimals apart by spaces, one text a line: with them, a
@@ -78,8 +78,6 @@ _SHAPES = {
     "sphere": ("radius",),
 }
 """The primitive shapes read here and their attributes (a mesh goes the careful way)."""
-
-_MOVING_UNIT = ("revolute", "prismatic")
 
 _UNPLACED = Pose(np.eye(3), np.zeros(3))
 """A link's origin until a joint places it (the root then gets one of its own)."""
@@ -524,7 +522,7 @@ def _axes(path: str, rows: _Rows, axis: _Node | None, kinds: list) -> list[np.nd
     units: dict[str, np.ndarray] = {}
     found = []
     for k, kind in enumerate(kinds):
-        if kind not in _MOVING_UNIT:
+        if kind not in UNIT_AXIS_KINDS:
             found.append(values[k].copy())
             continue
         known = units.get(texts[k])
