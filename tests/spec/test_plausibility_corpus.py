@@ -7,16 +7,20 @@ added in the third round and the 58 added in the fourth (second and third hold-o
 before any further change to the rule).
 
 Issue 26 asks for 90 %. The model's numbers are a maximum-likelihood fit to the first 128
-objects (refitted by the last test below); the third hold-out was measured before that change
-(87.5 %) and once after it. Measured now: 89.8 % on all 186 (87.7 % on the first 63, 93.2 % and
-92.2 % on the first two hold-outs, 90.2 % on the 128 the model was fitted to, 88.8 % on the
-third hold-out; 89.0 % with every number rounded to 3 digits); before the fit 88.3 % (86.5,
-92.4, 89.1, 87.5; 87.4 % rounded). The floors below are the measured numbers. What no rule on
-densities and sizes can tell apart (docs/spec.md): a pair of units differs from another by a
-factor on density and one on size, so a part a centimetre across that is not exactly a
-handbook material (a coin, a bar drawn as a box) in mm/g reads as a hollow body in in/lb, a
-light body (foam, a chair drawn by its outline) in cm/g as a solid in in/lb, and a body metres
-across (a car, a satellite) in in/lb as a part a few centimetres across in mm/g."""
+objects (refitted by the last test below), the third hold-out measured before each change to the
+rule and after it. Measured now: 90.2 % on all 186 (88.5 % on the first 63, 93.9 % and 92.2 % on
+the first two hold-outs, 90.8 % on the 128 the model was fitted to, 88.8 % on the third
+hold-out; 89.1 % with every number rounded to 3 digits). The steps: 88.3 % with the hand-set
+model (third hold-out 87.5 %); 89.8 % (88.8 %) with its numbers fitted by maximum likelihood and a
+fixed share of handbook materials; 90.2 % (88.8 %) with that share falling with size, every
+number fitted as one mixture (log-likelihood of the 134 calibration parts 14.4 above the same
+mixture with a fixed share, for one more number).
+The floors below are the measured numbers. What no rule on densities and sizes can tell apart
+(docs/spec.md): a pair of units differs from another by a factor on density and one on size, so
+a part a centimetre across that is not exactly a handbook material (a coin, a bar drawn as a
+box) in mm/g reads as a hollow body in in/lb, a light body (foam, a chair drawn by its outline)
+in cm/g as a solid in in/lb, and a body metres across (a car, a satellite) in in/lb as a part a
+few centimetres across in mm/g."""
 
 from __future__ import annotations
 
@@ -88,21 +92,21 @@ def _hint_rates(digits: int | None = None) -> dict[str, dict[str, float]]:
 def test_slips_get_exactly_the_right_hint():
     rates = _hint_rates()
     every = rates["all objects"]
-    assert every["mm/g"] >= 0.913 and every["mm/kg"] >= 1.0 and every["cm/g"] >= 0.887, every
-    assert every["in/lb"] >= 0.790 and every["all"] >= 0.897, every
-    assert rates["first 63"]["all"] >= 0.876 and rates["hold-out"]["all"] >= 0.931, rates
+    assert every["mm/g"] >= 0.881 and every["mm/kg"] >= 1.0 and every["cm/g"] >= 0.913, every
+    assert every["in/lb"] >= 0.811 and every["all"] >= 0.901, every
+    assert rates["first 63"]["all"] >= 0.884 and rates["hold-out"]["all"] >= 0.938, rates
     assert rates["second hold-out"]["all"] >= 0.921 and rates["third hold-out"]["all"] >= 0.887, rates
 
 
 def test_slips_rounded_to_three_digits_get_the_right_hint_less_often():
     """Written as a person rounds them (3 significant digits), sizes and masses no longer meet a
-    handbook density to 0.1 %, so only density and size decide: measured 89.0 % on all 186
-    (in/lb 78.5 %; third hold-out 88.8 %), against 89.8 % for the exact numbers (87.4 % before
-    the fit); no SI object is warned either way."""
+    handbook density to 0.1 %, so only density and size decide: measured 89.1 % on all 186
+    (in/lb 80.6 %; third hold-out 88.4 %), against 90.2 % for the exact numbers; no SI object is
+    warned either way."""
     rates = _hint_rates(digits=3)
     every = rates["all objects"]
-    assert every["in/lb"] >= 0.784 and every["all"] >= 0.889, every
-    assert rates["third hold-out"]["all"] >= 0.887, rates
+    assert every["in/lb"] >= 0.806 and every["all"] >= 0.891, every
+    assert rates["third hold-out"]["all"] >= 0.883, rates
 
 
 def _calibration_parts() -> tuple[np.ndarray, np.ndarray]:
@@ -116,26 +120,46 @@ def _calibration_parts() -> tuple[np.ndarray, np.ndarray]:
 def test_the_model_is_the_maximum_likelihood_fit_to_the_calibration_corpus():
     """The density model's numbers (typical density at 1 m, its fall per decade of size, the
     size above which it falls no further, the spread; below, it stays at steel's 7,850 kg/m³)
-    and the size distribution's (logistic in log10 size) are refitted here by maximum likelihood
-    to the 134 parts of the first 128 objects and must be the module's to the digits it gives."""
+    and the share of handbook materials (logistic in log10 size: the size where it is one half,
+    its slope) are refitted here by maximum likelihood, as one mixture, to the 134 parts of the
+    first 128 objects and must be the module's to the digits it gives; so must the size
+    distribution's (logistic in log10 size), fitted on its own."""
     sizes, densities = _calibration_parts()
     steel = math.log10(7850.0)
+    width, known = P.MATERIAL_MATCH_DECADES, np.array(P._REFERENCE_DECADES)
+    spike = (np.abs(densities[:, None] - known) < width).sum(axis=1) / (2 * width * len(known))
 
     def minus_log_likelihood(p):
-        typical, thinning, largest, spread = p
+        typical, thinning, largest, spread, half, slope = p
         mean = np.minimum(typical - thinning * np.minimum(sizes, largest), steel)
-        return -stats.norm.logpdf(densities, mean, abs(spread)).sum()
+        share = 1 / (1 + np.exp(slope * (sizes - half)))
+        return -np.log(share * spike + (1 - share) * stats.norm.pdf(densities, mean, abs(spread))).sum()
 
-    fit = optimize.minimize(minus_log_likelihood, [2.5, 0.5, 0.0, 0.7], method="Nelder-Mead")
-    typical, thinning, largest, spread = fit.x
-    assert P.TYPICAL_DENSITY_KG_M3 == pytest.approx(10**typical, rel=0.03)
+    start = [2.5, 0.5, 0.0, 0.7, -2.0, 1.0]
+    options = {"maxiter": 40_000, "xatol": 1e-7, "fatol": 1e-10}
+    fit = optimize.minimize(minus_log_likelihood, start, method="Nelder-Mead", options=options)
+    typical, thinning, largest, spread, half, slope = fit.x
+    assert P.TYPICAL_DENSITY_KG_M3 == pytest.approx(10**typical, rel=0.01)
     assert P.STRUCTURE_THINNING == pytest.approx(thinning, abs=0.005)
-    assert P.STRUCTURE_SIZES_M[1] == pytest.approx(10**largest, rel=0.05)
+    assert P.STRUCTURE_SIZES_M[1] == pytest.approx(10**largest, rel=0.02)
     assert P.DENSITY_SPREAD_DECADES == pytest.approx(abs(spread), abs=0.005)
+    assert P.MATERIAL_HALF_SIZE_M == pytest.approx(10**half, rel=0.02)
+    assert P.MATERIAL_SHARE_SLOPE == pytest.approx(slope, abs=0.01)
     smallest = P.TYPICAL_DENSITY_KG_M3 * P.STRUCTURE_SIZES_M[0] ** -P.STRUCTURE_THINNING
     assert smallest == pytest.approx(7850, rel=0.02)  # the fall stops at steel's density
     centre, scale = stats.logistic.fit(sizes)
     assert P.BODY_SIZE_M == pytest.approx(10**centre, rel=0.05)
     assert P.BODY_SIZE_SPREAD_DECADES == pytest.approx(scale, abs=0.005)
-    exact = [any(abs(d - k) < P.MATERIAL_MATCH_DECADES for k in P._REFERENCE_DECADES) for d in densities]
-    assert P.MATERIAL_SHARE == pytest.approx(np.mean(exact), abs=0.005)
+
+
+def test_the_share_of_handbook_materials_falls_with_size():
+    """Among the calibration parts, those between 3 mm and 3 cm are far more often exactly a
+    handbook material than those over 30 cm (15 of 27 against 3 of 38); the fitted share says the
+    same."""
+    sizes, densities = _calibration_parts()
+    exact = np.array(
+        [any(abs(d - k) < P.MATERIAL_MATCH_DECADES for k in P._REFERENCE_DECADES) for d in densities]
+    )
+    small, large = (sizes >= -2.5) & (sizes < -1.5), sizes >= -0.5
+    assert exact[small].mean() > 0.5 > 0.1 > exact[large].mean()
+    assert P.material_share(-2.0) > 0.5 > 0.1 > P.material_share(0.0)

@@ -14,11 +14,12 @@ tungsten or osmium in cm and g.
 Which units it names: every length unit with every mass unit is tried; among the pairs under
 which every part is possible (:meth:`_Solid.plausible`; no part over :data:`LARGEST_PART_M`),
 the likeliest wins (:func:`likely_units`). How likely a part is comes from a model of the sizes
-and densities real bodies have together (:meth:`_Solid.improbability`): a share of parts is
-exactly one handbook material (:data:`REFERENCE_DENSITIES_KG_M3`, to 0.1 %: a mass computed
-from a density by CAD or by hand); the rest spread log-normally about a typical density that
-falls with size by the square-cube law, from steel's for parts under 6 mm (solid) to 150 kg/m³
-for bodies over 1.3 m (structures round air: :data:`TYPICAL_DENSITY_KG_M3`,
+and densities real bodies have together (:meth:`_Solid.improbability`): a share of parts,
+falling with size (:func:`material_share`), is exactly one handbook material
+(:data:`REFERENCE_DENSITIES_KG_M3`, to 0.1 %: a mass computed from a density by CAD or by
+hand); the rest spread log-normally about a typical density that
+falls with size by the square-cube law, from steel's for parts under 2.6 mm (solid) to 140 kg/m³
+for bodies over 1.2 m (structures round air: :data:`TYPICAL_DENSITY_KG_M3`,
 :data:`STRUCTURE_SIZES_M`); sizes follow a logistic distribution about :data:`BODY_SIZE_M`; rarer
 unit pairs pay their rarity (:data:`COMMON_UNITS`). The model's numbers are not chosen by hand
 but are the maximum-likelihood fit to real objects (:data:`CALIBRATION`); the pair priors are
@@ -53,30 +54,30 @@ satellite drawn as one solid of its outside size (15–100) to osmium (22,590). 
 g read as m and kg is a million times too light and cannot pass; one in cm and g is a thousand
 times too light and passes only for parts denser than 9 g/cm³ (lead, gold, tungsten)."""
 
-TYPICAL_DENSITY_KG_M3 = 180.0
+TYPICAL_DENSITY_KG_M3 = 159.0
 """The typical density of bodies a metre across when they are not one handbook material,
 kg/m³: hollow and assembled bodies drawn as one solid of their outside size (a fridge 100, a
 washing machine 230, a car 120, a person 1,000), woods and foams spread around it (smaller and
 larger bodies: :data:`STRUCTURE_SIZES_M`). Like every number of the model below, the
 maximum-likelihood fit to the calibration corpus (:data:`CALIBRATION`)."""
 
-DENSITY_SPREAD_DECADES = 0.57
+DENSITY_SPREAD_DECADES = 0.558
 """How widely densities spread about the typical density for their size (standard deviation
-of log10 density, a normal distribution): 68 % within a factor 3.7 either way, 95 % within 13."""
+of log10 density, a normal distribution): 68 % within a factor 3.6 either way, 95 % within 13."""
 
 TYPICAL_SIZE_M = 1.0
 """The size (cube root of the volume, m) whose typical density is :data:`TYPICAL_DENSITY_KG_M3`."""
 
-STRUCTURE_SIZES_M = (0.006, 1.3)
-STRUCTURE_THINNING = 0.74
+STRUCTURE_SIZES_M = (0.0026, 1.22)
+STRUCTURE_THINNING = 0.657
 """Small parts are solid (metals, plastics, glass: a coin, a bolt, a bearing), larger bodies
 more and more structures round air (shells, frames, assemblies), the walls' share of the outside
 volume falling as the body grows (square-cube law): between the two sizes (cube root of the
 volume, m) the typical density falls by 10^-STRUCTURE_THINNING per tenfold size, from steel's
-(7,900 kg/m³) at 6 mm through 5,400 at 1 cm and 990 at 10 cm to :data:`TYPICAL_DENSITY_KG_M3` at
-a metre and 150 at 1.3 m. Smaller parts stay at steel's (a part is no denser than its
+(7,900 kg/m³) at 2.6 mm through 3,300 at 1 cm and 720 at 10 cm to :data:`TYPICAL_DENSITY_KG_M3` at
+a metre and 140 at 1.22 m. Smaller parts stay at steel's (a part is no denser than its
 material, and few materials are denser than steel); larger bodies (vehicles, hulls,
-buildings) stay at 150. The lower size is where the fitted fall reaches steel's density, the
+buildings) stay at 140. The lower size is where the fitted fall reaches steel's density, the
 upper one is fitted."""
 
 BODY_SIZE_M = 0.13
@@ -91,7 +92,9 @@ pays for it."""
 CALIBRATION = "the first 128 objects of tests/spec/plausibility_corpus.py (134 parts)"
 """What the model's numbers were fitted to by maximum likelihood (the last test of
 tests/spec/test_plausibility_corpus.py refits them): the typical density, its fall with size,
-the size where the fall stops, the spread, the size distribution and :data:`MATERIAL_SHARE`.
+the size where the fall stops, the spread and how the share of handbook materials falls with
+size (:data:`MATERIAL_HALF_SIZE_M`), all at once as the mixture :meth:`_Solid.improbability`
+uses; the size distribution on its own.
 The objects added after them (the third hold-out) measure the rule without having shaped it."""
 
 REFERENCE_DENSITIES_KG_M3 = MATERIAL_DENSITIES_SI | {
@@ -135,10 +138,15 @@ MATERIAL_MATCH_DECADES = 0.0005
 """How near (in log10 density: 0.1 %) a part must come to a handbook density to count as that
 material."""
 
-MATERIAL_SHARE = 0.22
-"""The share of parts taken to be one handbook material at its handbook density (the rest
-spread as :data:`DENSITY_SPREAD_DECADES` says), as in the calibration corpus (30 of its 134
-parts are)."""
+MATERIAL_HALF_SIZE_M = 0.0124
+MATERIAL_SHARE_SLOPE = 1.81
+"""How often a part is one handbook material at its handbook density (the rest spread as
+:data:`DENSITY_SPREAD_DECADES` says) falls with its size (cube root of the volume, m): logistic
+in log10 size, half the parts at MATERIAL_HALF_SIZE_M (a coin, a nut: solid metal or plastic),
+the log odds falling by MATERIAL_SHARE_SLOPE per tenfold size (88 % at 1 mm, 16 % at 10 cm,
+3 % at 1 m, 0.5 % at 10 m: large bodies are assemblies, not one material). Fitted with the
+density model (:data:`CALIBRATION`): 30 of its 134 parts are exactly a handbook material, 15 of
+the 27 between 3 mm and 3 cm, 1 of the 13 over 3 m."""
 
 SI_PREFERENCE_DECADES = 1.0
 """A spec without ``units:`` is taken to be in metres and kilograms ten times as often as in
@@ -181,6 +189,13 @@ LENGTH_WORDS = {"m": "metres", "cm": "centimetres", "mm": "millimetres", "in": "
 MASS_WORDS = {"kg": "kilograms", "g": "grams", "lb": "pounds"}
 
 
+def material_share(size_decades: float) -> float:
+    """The share of parts of size 10**size_decades m (cube root of the volume) that are exactly
+    one handbook material (:data:`MATERIAL_HALF_SIZE_M`)."""
+    odds = MATERIAL_SHARE_SLOPE * (size_decades - math.log10(MATERIAL_HALF_SIZE_M))
+    return 1 / (1 + math.exp(min(odds, 700.0)))
+
+
 @dataclass(frozen=True)
 class _Solid:
     """One solid as the file gives it: volume (one copy, file length³) and its mass (file
@@ -219,7 +234,7 @@ class _Solid:
         and ``mass``: minus log10 of their joint probability density per decade of each. The
         density's, given the size, from a mixture of the handbook materials
         (:data:`REFERENCE_DENSITIES_KG_M3`, each a spike :data:`MATERIAL_MATCH_DECADES` wide
-        holding :data:`MATERIAL_SHARE` between them) and a log-normal spread about the typical
+        holding :func:`material_share` between them) and a log-normal spread about the typical
         density of bodies that size (:data:`STRUCTURE_SIZES_M`); the size's, logistic in log10 size
         about :data:`BODY_SIZE_M`. 0 for a part given a material name."""
         density = self.density_si(length, mass)
@@ -236,7 +251,8 @@ class _Solid:
         spike = matches / (2 * MATERIAL_MATCH_DECADES * len(_REFERENCE_DECADES))
         size_tail = math.exp(-abs(size_decades - math.log10(BODY_SIZE_M)) / BODY_SIZE_SPREAD_DECADES)
         size_prior = size_tail / (BODY_SIZE_SPREAD_DECADES * (1 + size_tail) ** 2)  # logistic density
-        return -math.log10((MATERIAL_SHARE * spike + (1 - MATERIAL_SHARE) * spread) * size_prior)
+        share = material_share(size_decades)
+        return -math.log10((share * spike + (1 - share) * spread) * size_prior)
 
     def rare_in_si(self, length: str, mass: str) -> str:
         """What is odd about a part possible in metres and kilograms that ``length`` and
