@@ -154,10 +154,21 @@ def write_ply(path: Path, vertices, faces) -> Path:
     return path
 
 
+def write_msh(path: Path, vertices, faces, normals: int = 0, texcoords: int = 0) -> Path:
+    """MuJoCo's binary MSH: int32 counts of vertices, normals, texture coordinates and faces, then
+    float32 vertices, normals (``normals`` zero triples), texture pairs, and int32 faces."""
+    vertices, faces = np.asarray(vertices, "<f4"), np.asarray(faces, "<i4")
+    counts = np.array([len(vertices), normals, texcoords, len(faces)], "<i4")
+    extra = np.zeros(3 * normals + 2 * texcoords, "<f4")
+    Path(path).write_bytes(counts.tobytes() + vertices.tobytes() + extra.tobytes() + faces.tobytes())
+    return path
+
+
 WRITERS = {
     "binary.stl": write_binary_stl,
     "ascii.stl": write_ascii_stl,
     "mesh.obj": write_obj,
     "mesh.ply": write_ply,
+    "mesh.msh": write_msh,
 }
 """File name (its extension picks the format) -> writer."""

@@ -24,7 +24,14 @@ from typing import NamedTuple
 
 import numpy as np
 
-from rbi.core.mesh import MeshDistribution, arrays_problem, mesh_distribution, repair_mesh, weld_vertices
+from rbi.core.mesh import (
+    MeshDistribution,
+    arrays_problem,
+    convex_hull_mesh,
+    mesh_distribution,
+    repair_mesh,
+    weld_vertices,
+)
 from rbi.files.safe import read_input_file
 
 MAX_MESH_BYTES = 256 * 2**20
@@ -39,7 +46,7 @@ MAX_PLY_BYTES = 32 * 2**20
 PLY is parsed by trimesh, which needs some 25 bytes of memory per byte of file (a binary PLY
 of 2 million triangles, 38 MB, peaks at 1 GB): convert a larger mesh to binary STL."""
 
-MESH_FILE_TYPES = {".stl": "stl", ".obj": "obj", ".ply": "ply", ".dae": "dae"}
+MESH_FILE_TYPES = {".stl": "stl", ".obj": "obj", ".ply": "ply", ".dae": "dae", ".msh": "msh"}
 """File extensions rbi reads as meshes, and the format of each."""
 
 
@@ -377,4 +384,36 @@ def _parse_dae(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     return vertices, faces
 
 
-_PARSERS = {"stl": _parse_stl, "obj": _parse_obj, "ply": _parse_ply, "dae": _parse_dae}
+# --- MSH --------------------------------------------------------------------------------------
+
+
+def _parse_msh(data: bytes) -> tuple[np.ndarray, np.ndarray]:
+    """MuJoCo's binary MSH: four int32 counts (vertices, normals, texture coordinates, faces),
+    then as many float32 vertex triples, normal triples and texture pairs, and int32 face
+    triples; its size must be exactly what the counts say. With no faces, the convex hull of the
+    vertices, as MuJoCo takes it."""
+    counts = np.frombuffer(data[:16], dtype="<i4").astype(np.int64) if len(data) >= 16 else None
+    if counts is None or counts.min() < 0:
+        raise ValueError("cannot be read as MSH (no header of four non-negative counts)")
+    n_vertices, n_normals, n_texcoords, n_faces = (int(c) for c in counts)
+    expected = 16 + 12 * n_vertices + 12 * n_normals + 8 * n_texcoords + 12 * n_faces
+    if expected != len(data):
+        raise ValueError(
+            f"cannot be read as MSH (its header promises {n_vertices} vertices, {n_normals} normals, "
+            f"{n_texcoords} texture coordinates and {n_faces} faces: {expected} bytes, but the file "
+            f"has {len(data)})"
+        )
+    if n_faces > MAX_MESH_TRIANGLES:
+        raise _too_many(n_faces)
+    vertices = np.frombuffer(data, dtype="<f4", count=3 * n_vertices, offset=16).reshape(-1, 3)
+    if n_faces == 0:  # bare points: MuJoCo takes their convex hull
+        problem = arrays_problem(vertices, np.zeros((1, 3), np.int64))  # the checks of vertices alone
+        if problem is not None:
+            raise ValueError(f"mesh {problem}")
+        return convex_hull_mesh(vertices)
+    offset = 16 + 12 * n_vertices + 12 * n_normals + 8 * n_texcoords
+    faces = np.frombuffer(data, dtype="<i4", count=3 * n_faces, offset=offset).reshape(-1, 3)
+    return vertices.astype(float), faces.astype(np.int64)
+
+
+_PARSERS = {"stl": _parse_stl, "obj": _parse_obj, "ply": _parse_ply, "dae": _parse_dae, "msh": _parse_msh}

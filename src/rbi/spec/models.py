@@ -465,7 +465,11 @@ class MeshPart(_Solid):
 
     shape: Literal["mesh"] = Field(description="The solid a closed triangle mesh encloses.")
     file: Annotated[
-        str, Field(min_length=1, description=("Mesh file (.stl, .obj, .ply), relative to the spec's folder."))
+        str,
+        Field(
+            min_length=1,
+            description=("Mesh file (.stl, .obj, .ply, .dae, .msh), relative to the spec's folder."),
+        ),
     ]
     scale: Positive = Field(
         1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m)."
