@@ -189,16 +189,18 @@ def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     )  # cached: read once; convex: the hull is drawn
     if len(solid.faces) > MAX_DRAWN_TRIANGLES:
         return None
+    return _placed_mesh(part, np.asarray(solid.vertices, dtype=float) * float(part.scale), solid.faces)
+
+
+def _placed_mesh(part, vertices: np.ndarray, faces) -> dict[str, Any]:
+    """A file's triangles (``vertices`` in its own axes, spec length unit) placed as the mass
+    properties place them: turned by ``part.rotation`` about the file's origin, that origin
+    moved to ``part.position``."""
     R = rotation_matrix(part.rotation)
-    vertices = np.asarray(solid.vertices, dtype=float) * float(part.scale)
     if R is not None:
         vertices = vertices @ R.T
     vertices = vertices + np.asarray(part.position, dtype=float)
-    return {
-        "kind": "mesh",
-        "vertices": vertices.tolist(),
-        "faces": np.asarray(solid.faces, dtype=int).tolist(),
-    }
+    return {"kind": "mesh", "vertices": vertices.tolist(), "faces": np.asarray(faces, dtype=int).tolist()}
 
 
 STEP_DEFLECTION = 0.01
@@ -218,12 +220,7 @@ def _step(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
     vertices, faces = step_triangles(path, chosen, STEP_DEFLECTION)
     if len(faces) > MAX_DRAWN_TRIANGLES:
         return None
-    vertices = vertices / LENGTH_UNITS_IN_M[length_unit]
-    R = rotation_matrix(part.rotation)
-    if R is not None:
-        vertices = vertices @ R.T
-    vertices = vertices + np.asarray(part.position, dtype=float)
-    return {"kind": "mesh", "vertices": vertices.tolist(), "faces": np.asarray(faces, dtype=int).tolist()}
+    return _placed_mesh(part, vertices / LENGTH_UNITS_IN_M[length_unit], faces)
 
 
 def _frustum(start, end, start_radius, end_radius, inner_radius=0.0) -> dict[str, Any]:

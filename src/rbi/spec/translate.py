@@ -124,10 +124,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     # not at top level: `rbi inertia` would load rbi.formats.mesh_file too
     from rbi.formats.mesh_file import read_mesh_solid
 
-    try:
-        file = spec_relative_file(spec_path, part.file, f"file: {part.file}")
-    except InputError as exc:
-        raise ValueError(str(exc)) from None
+    file = _part_file(part, spec_path)
     try:
         solid = read_mesh_solid(file, part.inertia, part.repair)
     except ValueError as exc:
@@ -142,6 +139,15 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     inertia = unit.inertia_about_com * (mass / unit.mass * scale * scale)
     com = unit.center_of_mass * scale
     return _placed(part, mass, com, inertia)
+
+
+def _part_file(part, spec_path: str):
+    """The file a mesh or STEP part names, beside the spec (:func:`rbi.formats.paths.spec_relative_file`);
+    ValueError (``file: NAME: what is wrong``) when it may not be read."""
+    try:
+        return spec_relative_file(spec_path, part.file, f"file: {part.file}")
+    except InputError as exc:
+        raise ValueError(str(exc)) from None
 
 
 def _placed(part, mass: float, com: np.ndarray, inertia: np.ndarray) -> MassProperties:
@@ -164,10 +170,7 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
     from rbi.formats.step import read_step, require_cad, select_solids
 
     require_cad()
-    try:
-        file = spec_relative_file(spec_path, part.file, f"file: {part.file}")
-    except InputError as exc:
-        raise ValueError(str(exc)) from None
+    file = _part_file(part, spec_path)
     try:
         step = read_step(file)
         chosen = [step.solids[i] for i in select_solids(step, part.solid)]
