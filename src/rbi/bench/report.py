@@ -21,10 +21,6 @@ METHOD_NOTE = (
 )
 
 
-def _sci(value: float | None, digits: int = 2) -> str:
-    return "—" if value is None else number(value, digits)
-
-
 def _times(value: float | None) -> str:
     """A ratio such as ``1,830×``."""
     if value is None:
@@ -75,7 +71,7 @@ def _kernel_targets(k: dict) -> list[dict]:
     if k:
         chapter = (
             f"the chapter's set-up (scipy RK45, rtol 1e-8, Python RHS): {number(k['chapter']['seconds'], 3)} s, "
-            f"error {_sci(k['chapter']['orientation_error_deg'])}°"
+            f"error {number(k['chapter']['orientation_error_deg'], 2)}°"
         )
         out.append(
             _target(
@@ -86,7 +82,7 @@ def _kernel_targets(k: dict) -> list[dict]:
                 True,
                 chapter,
                 f"rbi {number(k['default']['seconds'], 3)} s, error "
-                f"{_sci(k['default']['orientation_error_deg'])}°",
+                f"{number(k['default']['orientation_error_deg'], 2)}°",
             )
         )
         best = k.get("best_matching")
@@ -100,7 +96,7 @@ def _kernel_targets(k: dict) -> list[dict]:
                 "no rbi tolerance reached the chapter's error"
                 if not best
                 else f"rbi at rtol {best['rtol']:g}: {number(best['seconds'], 3)} s, error "
-                f"{_sci(best['orientation_error_deg'])}°",
+                f"{number(best['orientation_error_deg'], 2)}°",
             )
         )
         m = k["minimal_loop"]
@@ -332,8 +328,8 @@ def headline(result: dict) -> list[str]:
             f"{case['name']} ({case['spec']}, {case['duration']:g} s): rbi's defaults are "
             f"{_times(s['ratio_default'])} faster in-process than the chapter's set-up "
             f"({number(s['default_seconds'], 3)} s against {number(s['chapter_seconds'], 3)} s), with a {verdict} "
-            f"final orientation error ({_sci(s['default_orientation_error_deg'])}° against "
-            f"{_sci(s['chapter_orientation_error_deg'])}°)"
+            f"final orientation error ({number(s['default_orientation_error_deg'], 2)}° against "
+            f"{number(s['chapter_orientation_error_deg'], 2)}°)"
         )
         if "ratio_best_matching" in s:
             line += (
@@ -552,8 +548,8 @@ def _kernel_sections(k: dict | None) -> list[Section]:
         return []
     columns = [
         ("rtol", _rtol),
-        (("orient. error", "deg"), _err("orientation_error_deg")),
-        (("ω error", "rad/s"), _err("omega_error")),
+        (("orient. error", "deg"), _num("orientation_error_deg", 2)),
+        (("ω error", "rad/s"), _num("omega_error", 2)),
         ("steps", _count("steps")),
         ("no worse than chapter", lambda t: "yes" if t["no_worse"] else "no"),
         (("time", "s"), _num("seconds")),
@@ -564,7 +560,7 @@ def _kernel_sections(k: dict | None) -> list[Section]:
         f"`{case['spec']}`, ω₀ = {vector_text(case['omega0'], brackets='()')} rad/s, {case['duration']:g} s, "
         f"{case['samples']} samples, in this process with the compiled kernel loaded. The chapter's set-up "
         f"took {number(chapter['seconds'], 3)} s ({chapter['steps']:,} steps, final orientation error "
-        f"{_sci(chapter['orientation_error_deg'])}°); `simulate` at its defaults (rtol "
+        f"{number(chapter['orientation_error_deg'], 2)}°); `simulate` at its defaults (rtol "
         f"{k['default']['rtol']:g}) {number(k['default']['seconds'], 3)} s; the minimal loop "
         f"(`rbi.sim._dop853.integrate_minimal`: the same DOP853 steps without chunking, step budget, counters "
         f"or the result object, called on prepared arrays) {number(loop['seconds'], 3)} s with "
@@ -717,10 +713,6 @@ def _num(key: str, digits: int = 3, scale: float = 1.0):
     return lambda r: number(None if r.get(key) is None else scale * r[key], digits)
 
 
-def _err(key: str):
-    return lambda r: _sci(r.get(key))
-
-
 def _count(key: str):
     return lambda r: "—" if r.get(key) is None else f"{r[key]:,}"
 
@@ -734,10 +726,10 @@ CAD_COLUMNS = [
     ("triangles", _count("triangles")),
     ("MB", _num("bytes", scale=1e-6)),
     (("load", "s"), _num("seconds")),
-    ("volume err", _err("volume_error")),
-    ("CoM err", _err("com_error")),
-    ("inertia err", _err("inertia_error")),
-    ("estimate", _err("integration_error")),
+    ("volume err", _num("volume_error", 2)),
+    ("CoM err", _num("com_error", 2)),
+    ("inertia err", _num("inertia_error", 2)),
+    ("estimate", _num("integration_error", 2)),
 ]
 """Errors are relative to the closed form; the estimate is the integration's own (STEP only)."""
 
@@ -760,7 +752,7 @@ def reference_text(case: dict) -> str:
     check = ref.get("check", {})
     return (
         f"rbi at rtol {ref['rtol']:g}; scipy DOP853 at rtol {check.get('rtol', 0):g} differs from it by "
-        f"{_sci(check.get('orientation_difference_deg'))}°"
+        f"{number(check.get('orientation_difference_deg'), 2)}°"
     )
 
 
@@ -780,9 +772,9 @@ def work_table(case: dict) -> tuple[list, list[list[str]]]:
     columns = [
         ("method", _method),
         ("rtol", _rtol),
-        (("orient. error", "deg"), _err("orientation_error_deg")),
-        (("ω error", "rad/s"), _err("omega_error")),
-        ("rel. drift", _err("drift")),
+        (("orient. error", "deg"), _num("orientation_error_deg", 2)),
+        (("ω error", "rad/s"), _num("omega_error", 2)),
+        ("rel. drift", _num("drift", 2)),
         ("steps", _count("steps")),
         ("RHS evals", _count("rhs_evals")),
         (("time", "s"), _num("seconds", 2)),
@@ -812,7 +804,7 @@ PARTS_COLUMNS = [
     (("load total", "s"), _num("load_total_s")),
     ("µs/part", _num("us_per_part")),
     (("same as JSON", "s"), _num("load_total_json_s")),
-    (("core", "s"), _err("core_s")),
+    (("core", "s"), _num("core_s", 2)),
 ]
 LATENCY_COLUMNS = [
     ("command", lambda r: r["command"]),
