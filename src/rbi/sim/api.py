@@ -10,7 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
+from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
 from rbi.sim.scene import Scene
 
 METHODS = ("default", "rk45", "dop853", "exact")
@@ -153,12 +153,9 @@ def _run_compiled(
             progress(clock[0] / t_end)
     wall = time.perf_counter() - start
     if status != STATUS_DONE:
-        why = (
-            "the step size fell below the time resolution"
-            if status == STATUS_STEP_TOO_SMALL
-            else "the state stopped being finite (overflow)"
+        raise SimulationError(
+            f"integration failed at t = {clock[0]:.6g} s: {FAILURES.get(int(status), FAILURES[STATUS_NOT_FINITE])}"
         )
-        raise SimulationError(f"integration failed at t = {clock[0]:.6g} s: {why}")
     if progress is not None:
         progress(1.0)
     return Trajectory(

@@ -18,6 +18,12 @@ STATUS_MORE = 1  # max_steps reached: call again to continue
 STATUS_STEP_TOO_SMALL = 2
 STATUS_NOT_FINITE = 3
 
+FAILURES = {
+    STATUS_STEP_TOO_SMALL: "the step size fell below the time resolution",
+    STATUS_NOT_FINITE: "the state stopped being finite (overflow)",
+}
+"""Why the kernel stopped a run that ended with a status other than done or more to come."""
+
 
 class KernelMissing(RuntimeError):
     """The package was not built (a source tree used without ``pip install``)."""

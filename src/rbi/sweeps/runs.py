@@ -14,7 +14,7 @@ from typing import Any
 import numpy as np
 
 from rbi.sim.api import sample_times
-from rbi.sim.compiled import STATUS_DONE, STATUS_MORE, STATUS_STEP_TOO_SMALL, integrator
+from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
 from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.sim.summary import sweep_figures_batch
 from rbi.spec.errors import InputError
@@ -178,9 +178,7 @@ def _fill_rows(job: SweepJob, rows: list, ready: list, status, finite, counts, f
     for b, i in enumerate(ready):
         if status[b] == STATUS_DONE:
             if not finite[b]:
-                rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + [
-                    "failed: the state stopped being finite (overflow)"
-                ]
+                rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + ["failed: " + FAILURES[STATUS_NOT_FINITE]]
                 continue
             figures = figures_of[b]
             rows[i] += [
@@ -193,11 +191,10 @@ def _fill_rows(job: SweepJob, rows: list, ready: list, status, finite, counts, f
                 "ok",
             ]
             continue
-        reason = {
-            STATUS_MORE: f"failed: step budget of {job.max_steps:,} steps reached",
-            STATUS_STEP_TOO_SMALL: "failed: the step size fell below the time resolution",
-        }.get(int(status[b]), "failed: the state stopped being finite (overflow)")
-        rows[i] += [None] * (len(RESULT_COLUMNS) - 2) + [int(counts[b, 1]), reason]
+        reason = FAILURES.get(int(status[b]), FAILURES[STATUS_NOT_FINITE])
+        if status[b] == STATUS_MORE:
+            reason = f"step budget of {job.max_steps:,} steps reached"
+        rows[i] += [None] * (len(RESULT_COLUMNS) - 2) + [int(counts[b, 1]), "failed: " + reason]
 
 
 def _one_line(text: str) -> str:
