@@ -80,6 +80,12 @@ class SweepJob:
             self._bodies[key] = _derive_body(self.path, self.raw, self.varied, key)
         return self._bodies[key]
 
+    def scene_of(self, body):
+        """The scene of one of this sweep's bodies, under its gravity and spinning about its spin
+        axis; ValueError when the body cannot be simulated (no mass, a singular inertia)."""
+        gravity = gravity_in(body.length_unit, self.gravity_si)
+        return scene_from_properties(body.props, body.pivot, gravity, self.spin_axis)
+
 
 def _derive_body(path: str, raw: Any, varied: tuple[FieldPath, ...], values: tuple[float, ...]):
 
@@ -105,9 +111,7 @@ def _derive_scene(job: SweepJob, values: tuple[float, ...]):
     if isinstance(body, str):
         return body
     try:
-        return scene_from_properties(
-            body.props, body.pivot, gravity_in(body.length_unit, job.gravity_si), job.spin_axis
-        )
+        return job.scene_of(body)
     except ValueError as exc:
         return _one_line(f"cannot simulate: {exc}")
 

@@ -26,8 +26,7 @@ from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, spin
 from rbi.runs.values import whole
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
-from rbi.sim.scene import scene_from_properties
-from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
+from rbi.spec.units import STANDARD_GRAVITY_SI
 from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import store
 from rbi.sweeps.execute import check_address
@@ -179,11 +178,8 @@ class Study:
     def nominal_scene(self):
         """The scene of the nominal body, or None when it cannot be simulated."""
 
-        body = self.nominal
         try:
-            return scene_from_properties(
-                body.props, body.pivot, gravity_in(body.length_unit, self.job.gravity_si), self.job.spin_axis
-            )
+            return self.job.scene_of(self.nominal)
         except ValueError:
             return None
 
