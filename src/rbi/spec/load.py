@@ -64,14 +64,9 @@ def _spec_text(data: bytes, label: str) -> str:
     if b"\x00" in data:
         raise InputError(f"{label}: not a text file (binary data)")
     try:
-        text = data.decode("utf-8")
+        return check_spec_text(data.decode("utf-8"), label)
     except UnicodeDecodeError as exc:
         raise InputError(f"{label}: not UTF-8 text (byte {exc.start})") from None
-    if text.startswith("\ufeff"):
-        text = text[1:]
-    if not text.strip():
-        raise InputError(f"{label}: file is empty")
-    return text
 
 
 STDIN = "-"
