@@ -19,11 +19,11 @@ def format_location(loc: tuple[Any, ...], raw: Any) -> tuple[str, list[str]]:
     if len(loc) >= 2 and loc[0] == "parts" and isinstance(loc[1], int):
         index = loc[1]
         part_label = f"parts[{index}]"
-        name = _part_name(raw, index)
-        if name is not None:
+        name = _part_field(raw, index, "name")
+        if isinstance(name, str):
             part_label += f" ({name})"
         loc = loc[2:]
-        if loc and isinstance(loc[0], str) and _part_shape(raw, index) == loc[0]:
+        if loc and isinstance(loc[0], str) and _part_field(raw, index, "shape") == loc[0]:
             loc = loc[1:]  # the discriminator tag pydantic inserts for a union member
     field = ""
     for item in loc:
@@ -34,22 +34,11 @@ def format_location(loc: tuple[Any, ...], raw: Any) -> tuple[str, list[str]]:
     return part_label, [field] if field else []
 
 
-def _part_name(raw: Any, index: int) -> str | None:
-    part = _raw_part(raw, index)
-    name = part.get("name") if isinstance(part, dict) else None
-    return name if isinstance(name, str) else None
-
-
-def _part_shape(raw: Any, index: int) -> str | None:
-    part = _raw_part(raw, index)
-    return part.get("shape") if isinstance(part, dict) else None
-
-
-def _raw_part(raw: Any, index: int) -> Any:
+def _part_field(raw: Any, index: int, key: str) -> Any:
+    """Field ``key`` of the part at ``index`` in the parsed YAML, or None."""
     parts = raw.get("parts") if isinstance(raw, dict) else None
-    if isinstance(parts, list) and 0 <= index < len(parts):
-        return parts[index]
-    return None
+    part = parts[index] if isinstance(parts, list) and 0 <= index < len(parts) else None
+    return part.get(key) if isinstance(part, dict) else None
 
 
 def describe_error(error: dict[str, Any], known_fields: list[str] | None = None) -> str:
