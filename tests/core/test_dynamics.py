@@ -15,7 +15,6 @@ from rbi.core.dynamics import (
     angular_momentum_about_point,
     kinetic_energy,
     newton_euler_com,
-    newton_euler_com_forward,
     newton_euler_point,
     newton_euler_point_forward,
 )
@@ -93,7 +92,7 @@ def test_forward_and_inverse_round_trip(seed):
     b = Cloud(seed)
     o = b.vector()
     w, force, torque = b.vector(3.0), b.vector(), b.vector()
-    acc = newton_euler_com_forward(b.mass, b.inertia_about(b.com), w, force, torque)
+    acc = newton_euler_point_forward(b.mass, b.inertia_about(b.com), np.zeros(3), w, force, torque)
     back = newton_euler_com(b.mass, b.inertia_about(b.com), w, acc.angular, acc.linear)
     np.testing.assert_allclose(back.force, force, rtol=1e-12, atol=1e-13)
     np.testing.assert_allclose(back.torque, torque, rtol=1e-12, atol=1e-13)
@@ -107,7 +106,7 @@ def test_forward_about_the_com_is_eulers_equation_for_a_principal_body():
     # Torque-free, principal axes: α = ((I2 − I3) ω2 ω3 / I1, ...).
     I = np.diag([1.0, 2.0, 4.0])
     w = np.array([0.5, -1.0, 2.0])
-    acc = newton_euler_com_forward(3.0, I, w, [3.0, 0.0, -6.0], [0.0, 0.0, 0.0])
+    acc = newton_euler_point_forward(3.0, I, np.zeros(3), w, [3.0, 0.0, -6.0], [0.0, 0.0, 0.0])
     expected = [
         (2.0 - 4.0) * w[1] * w[2] / 1.0,
         (4.0 - 1.0) * w[2] * w[0] / 2.0,

@@ -85,16 +85,6 @@ def newton_euler_com(
     return Wrench(force, torque)
 
 
-def newton_euler_com_forward(
-    mass: float, inertia_com: np.ndarray, omega: np.ndarray, force: np.ndarray, torque_com: np.ndarray
-) -> Acceleration:
-    """Forward dynamics about the centre of mass: ``a_c = F/m``, ``α = I⁻¹(τ_c − ω × I ω)``."""
-    I = np.asarray(inertia_com, dtype=float)
-    w = np.asarray(omega, dtype=float)
-    alpha = np.linalg.solve(I, np.asarray(torque_com, dtype=float) - np.cross(w, I @ w))
-    return Acceleration(np.asarray(force, dtype=float) / mass, alpha)
-
-
 # --- Newton–Euler about a point o ----------------------------------------------------------
 
 
@@ -193,7 +183,7 @@ def newton_euler_about(
         a = np.linalg.solve(inertia_point, t - np.cross(w, inertia_point @ w) - m * np.cross(r, acc))
         held = newton_euler_point(m, inertia_point, r, w, a, acc).force
         return Acceleration(acc, a), Wrench(held, t), True
-    f = np.zeros(3) if force is None else force
-    if about_com:
-        return newton_euler_com_forward(m, props.inertia_about_com, w, f, t), Wrench(f, t), False
+    f = (
+        np.zeros(3) if force is None else force
+    )  # about the centre of mass r is 0: a_c = F/m, I α = τ − ω × I ω
     return newton_euler_point_forward(m, inertia_point, r, w, f, t), Wrench(f, t), False
