@@ -33,6 +33,7 @@ from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg
 from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.spec.load import load_body
 from rbi.spec.units import gravity_in
+from rbi.viz.labels import pyplot
 
 Progress = Callable[[str], None]
 
@@ -226,10 +227,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
 def plot(result: dict, path: str | Path) -> None:
     """Log–log plot of the final orientation error against in-process time, one panel per
     case, one line per method; the chapter's set-up and rbi's defaults are marked."""
-    import matplotlib  # optional extra `plot`, loaded only to draw
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    plt = pyplot()
 
     styles = {
         "default": ("rbi default method (compiled DOP853)", "C0", "o"),

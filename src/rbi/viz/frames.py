@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core.rotation import quaternion_to_matrix
-from rbi.viz.labels import label, plain
+from rbi.viz.labels import label, plain, pyplot
 from rbi.viz.solids import part_quads, shade
 
 PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#6b8e23", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
@@ -129,10 +129,7 @@ def frame_indices(times, fps: float) -> np.ndarray:
 def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
     """Yield one RGB image (``(pixels, pixels, 3)`` uint8 array) per sample index in ``indices``;
     the trace of the axis tip is drawn through every sample of the last ``data['trail_seconds']``."""
-    import matplotlib  # optional extra `plot`, loaded only to draw
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    plt = pyplot()
 
     size = float(data["size"])
     quads, colours = body_mesh(data["parts"], size)

@@ -11,6 +11,17 @@ from __future__ import annotations
 
 from rbi.text import visible
 
+
+def pyplot():
+    """matplotlib's pyplot on the Agg backend (pictures written to files, no window)."""
+    import matplotlib  # optional extra `plot`, loaded only to draw
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+
+    return plt
+
+
 MAX_LABEL_CHARS = 60
 """Longest name drawn in a picture (characters); a longer one is cut and ends in ``…``."""
 

@@ -11,7 +11,7 @@ import numpy as np
 
 from rbi.files.output import write_output
 from rbi.text import number
-from rbi.viz.labels import MAX_LABEL_CHARS, label, plain
+from rbi.viz.labels import MAX_LABEL_CHARS, label, plain, pyplot
 
 
 def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
@@ -41,10 +41,7 @@ def plot_trajectory(
     axes) are given (a free body), the angle between each principal axis and the angular
     momentum (fixed in space), where a flip of the intermediate axis shows as a swing from
     0° to 180°; the body-frame ω components; and the drift of the total energy."""
-    import matplotlib  # optional extra `plot`, loaded only to draw
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    plt = pyplot()
 
     t = np.asarray(columns["t"], dtype=float)
     q = np.column_stack([columns[k] for k in ("qw", "qx", "qy", "qz")])
@@ -178,10 +175,7 @@ def plot_stability_map(
     """The largest tilt of each run (log colour scale) over one or two swept axes, saved at
     ``path``. With one axis: tilt against it. ``threshold``: the sleeping-top spin (rad/s),
     drawn as a vertical line on a spin axis."""
-    import matplotlib  # optional extra `plot`, loaded only to draw
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    plt = pyplot()
 
     xs, ys = np.asarray(x, dtype=float), y
     values = np.array([np.nan if v is None else float(v) for v in values])

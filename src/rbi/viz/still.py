@@ -18,7 +18,7 @@ from rbi.core.inertia import principal_axes
 from rbi.files.output import write_output
 from rbi.spec.geometry import part_geometry
 from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
-from rbi.viz.labels import label, plain, plain_legend
+from rbi.viz.labels import label, plain, plain_legend, pyplot
 from rbi.viz.motion import body_size, drawn_points, shifted
 from rbi.viz.solids import shade
 
@@ -159,10 +159,7 @@ def draw_body(body: Any, target: Any, title: str | None = None) -> int:
 
 def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     """The body in 3D (matplotlib), saved at ``path`` as ``format`` (png or svg)."""
-    import matplotlib  # optional extra `plot`, loaded only to draw
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
+    plt = pyplot()
 
     size = float(data["size"])
     quads, colours = body_mesh(data["parts"], size, holes=False, stripes=False)
