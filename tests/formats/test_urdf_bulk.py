@@ -214,3 +214,43 @@ def test_a_generated_file_of_alike_links_reads_as_the_careful_reader_reads_it(tm
         at = text.index('<link name="l40">')
         text = text[:at] + text[at:].replace('xyz="0.1 0 0"', odd, 1)
     _read_alike(tmp_path, text)
+
+
+@pytest.mark.parametrize(
+    "options",
+    [
+        {},
+        {"geometry": "visual"},
+        {"geometry": "none"},
+        {"density": 500.0},
+        {"joints": {"j1": 0.3, "j2": -0.2}},
+    ],
+)
+def test_the_audit_of_a_model_in_columns_is_the_audit_of_the_careful_readers_links(tmp_path, options):
+    """A model read in bulk is audited on its columns, its links made only when the report's
+    rows are asked for: the exit code (asked first, before any row is made), the JSON and the
+    joints are the careful reader's, for links without an inertial (moved and fixed), of mass
+    0, with a placeholder inertia and each option."""
+    text = _urdf(
+        20,
+        link={
+            3: '<link name="l3"/>\n',
+            7: '<link name="l7"><collision><geometry><box size="1 1 1"/></geometry></collision></link>\n',
+            8: '<link name="l8"><inertial><mass value="0"/>'
+            '<inertia ixx="0" ixy="0" ixz="0" iyy="0" iyz="0" izz="0"/></inertial></link>\n',
+            9: '<link name="l9"><inertial><mass value="5"/>'
+            '<inertia ixx="1" ixy="0" ixz="0" iyy="1" iyz="0" izz="1"/></inertial>'
+            '<collision><geometry><box size="0.1 0.1 0.1"/></geometry></collision></link>\n',
+        },
+    )
+    path, data = _written(tmp_path, text)
+    bulk, careful = read_urdf_bulk(path, data), _careful(path, data)
+    assert bulk is not None and bulk.in_columns is not None
+    mine, theirs = audit_model(bulk, **options), audit_model(careful, **options)
+    assert mine._links is None  # no row made yet: the exit code comes from the columns' audit
+    assert mine.exit_code == theirs.exit_code == (0 if options.get("geometry") == "none" else 1)
+    assert json.dumps(mine.as_dict(), default=np.ndarray.tolist) == json.dumps(
+        theirs.as_dict(), default=np.ndarray.tolist
+    )
+    flagged = {link["name"]: [f["code"] for f in link["flags"]] for link in mine.as_dict()["links"]}
+    assert flagged["l3"] == [] and flagged["l7"] == ["massless"] and "placeholder" in flagged["l9"]

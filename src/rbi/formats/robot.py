@@ -10,6 +10,7 @@ for prismatic/slide). Geometry poses are in the link frame. SI units throughout 
 
 from __future__ import annotations
 
+import bisect
 import functools
 import math
 import re
@@ -188,19 +189,156 @@ class Link:
 
 
 @dataclass
+class GeomColumn:
+    """One ``<collision>`` or ``<visual>`` element (``tag``, ``label`` as :class:`Geom` gives it)
+    of links alike: ``rows`` the links' rows, their shape ``kind``, poses (``rotations`` (k, 3, 3),
+    ``translations`` (k, 3), link frame), ``sizes`` (m, one tuple a row) or ``meshes`` ((file,
+    scale) a row)."""
+
+    tag: str
+    label: str
+    kind: str
+    rows: list[int]
+    rotations: np.ndarray
+    translations: np.ndarray
+    sizes: list[tuple[float, ...]] | None = None
+    meshes: list[tuple[Path, np.ndarray]] | None = None
+
+    def geom(self, k: int) -> Geom:
+        """The :class:`Geom` of the k-th row."""
+        pose = Pose(self.rotations[k], self.translations[k])
+        if self.meshes is not None:
+            mesh, scale = self.meshes[k]
+            return Geom("mesh", (), pose, self.label, mesh_file=mesh, mesh_scale=scale)
+        return Geom(self.kind, self.sizes[k] if self.sizes is not None else (), pose, self.label)
+
+
+@dataclass
+class LinkColumns:
+    """A URDF's links as columns, one row a link in file order (its ``index``), as
+    :mod:`rbi.formats.urdf_bulk` reads them: names, ``parents`` (the parent's row, -1 for the
+    root), origins (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame),
+    the declared inertials (``declared`` (n,) which links have one; ``masses`` (n,) kg, ``coms``
+    (n, 3) m and ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) the
+    inertias as written; ``turned``: row → the :class:`Inertial` of a rotated inertial frame),
+    each non-root link's joint (name, kind, unit ``axes`` (n, 3) in the link frame, effort
+    limit or None) and the geometry. :meth:`link` makes a row's :class:`Link` (once); rbi.robot
+    reads the arrays of a model whose links were never made."""
+
+    names: list[str]
+    parents: list[int]
+    rotations: np.ndarray
+    translations: np.ndarray
+    declared: np.ndarray
+    masses: np.ndarray
+    coms: np.ndarray
+    inertias: np.ndarray
+    written: np.ndarray
+    turned: dict[int, Inertial]
+    joint_names: list[str]
+    joint_kinds: list[str | None]
+    axes: np.ndarray
+    efforts: list[float | None]
+    geoms: list[GeomColumn]
+    made: dict[int, Link] = field(default_factory=dict)
+
+    def __len__(self) -> int:
+        return len(self.names)
+
+    def link(self, row: int) -> Link:
+        """The :class:`Link` of ``row`` (the same object each time)."""
+        found = self.made.get(row)
+        if found is None:
+            geoms: dict[str, list[Geom]] = {"collision": [], "visual": []}
+            for column in self.geoms:
+                at = _find(column.rows, row)
+                if at is not None:
+                    geoms[column.tag].append(column.geom(at))
+            found = self.made[row] = self._link(row, geoms["collision"], geoms["visual"])
+        return found
+
+    def links(self) -> list[Link]:
+        """Every row's :class:`Link`, in file order."""
+        geoms: dict[str, list[list[Geom]]] = {
+            "collision": [[] for _ in self.names],
+            "visual": [[] for _ in self.names],
+        }
+        for column in self.geoms:
+            lists = geoms[column.tag]
+            for k, row in enumerate(column.rows):
+                lists[row].append(column.geom(k))
+        for row in range(len(self.names)):
+            if row not in self.made:
+                self.made[row] = self._link(row, geoms["collision"][row], geoms["visual"][row])
+        return [self.made[row] for row in range(len(self.names))]
+
+    def _link(self, row: int, collisions: list[Geom], visuals: list[Geom]) -> Link:
+        inertial = self.turned.get(row)
+        if inertial is None and self.declared[row]:
+            properties = MassProperties.of_arrays(
+                float(self.masses[row]), self.coms[row], self.inertias[row], "link"
+            )
+            inertial = Inertial(properties, self.written[row])
+        parent = self.parents[row]
+        link = Link(row, self.names[row], inertial, collisions, visuals)
+        if parent < 0:
+            return link
+        link.parent = self.names[parent]
+        link.origin = Pose(self.rotations[row], self.translations[row])
+        axis = self.axes[row].copy()
+        link.motions = [
+            Motion(
+                self.joint_names[row],
+                self.joint_kinds[row],
+                axis,
+                np.zeros(3),
+                effort_limit=self.efforts[row],
+            )
+        ]
+        return link
+
+
+def _find(rows: list[int], row: int) -> int | None:
+    """Where ``row`` is in the ascending ``rows``, or None."""
+    at = bisect.bisect_left(rows, row)
+    return at if at < len(rows) and rows[at] == row else None
+
+
+@dataclass
 class RobotModel:
     """A parsed robot file: ``format`` (``urdf``, ``sdf``, ``mjcf``), ``name``, ``links`` in file
     order, ``notes`` (what was read but not checked: unresolved includes, kinds of geometry
-    without volume), and ``document`` (the XML with element spans, for a fixed copy)."""
+    without volume), and ``document`` (the XML with element spans, for a fixed copy).
+    ``columns``: the links as arrays (:class:`LinkColumns`, a URDF read in bulk), from which
+    :attr:`links` are made when first asked for."""
 
     path: str
     format: str
     name: str | None
-    links: list[Link] = field(default_factory=list)
     notes: list[str] = field(default_factory=list)
     unchecked: list[str] = field(default_factory=list)
     document: Any = None
     options: dict[str, Any] = field(default_factory=dict)
+    columns: LinkColumns | None = field(default=None, repr=False)
+    _links: list[Link] | None = field(default=None, repr=False)
+
+    @property
+    def links(self) -> list[Link]:
+        """The links in file order (made from :attr:`columns` the first time, when given)."""
+        if self._links is None:
+            self._links = [] if self.columns is None else self.columns.links()
+        return self._links
+
+    @links.setter
+    def links(self, value: list[Link]) -> None:
+        self._links = value
+
+    @property
+    def in_columns(self) -> LinkColumns | None:
+        """:attr:`columns` while they are all there is of the links (no :class:`Link` made yet,
+        so none changed): what rbi.robot reads in place of the links; None otherwise."""
+        columns = self.columns
+        return columns if columns is not None and self._links is None and not columns.made else None
 
     @property
     def link_word(self) -> str:

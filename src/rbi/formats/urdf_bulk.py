@@ -22,8 +22,10 @@ refusal and every message stays that reader's. The numbers are its too: the same
 rotated frames and axes, and for the rest the same values laid into stacked arrays (each
 link's arrays are rows of them).
 
-The links it returns have no XML ``element``: :func:`attach_elements` reads the document the
-careful way and attaches them, for ``rbi audit --fix`` (which edits the file at their spans).
+The model it returns holds its links as columns (:class:`rbi.formats.robot.LinkColumns`), which
+:mod:`rbi.robot` audits as they are; its :class:`Link` values are made when first asked for.
+They have no XML ``element``: :func:`attach_elements` reads the document the careful way and
+attaches them, for ``rbi audit --fix`` (which edits the file at their spans).
 """
 
 from __future__ import annotations
@@ -33,20 +35,17 @@ import re
 
 import numpy as np
 
-from rbi.core.mass import MassProperties
 from rbi.core.validity import SMALLEST_NORMAL
 from rbi.errors import InputError
 from rbi.formats import robot_xml
 from rbi.formats.robot import (
     MAX_ANGLE_RAD,
-    Geom,
+    GeomColumn,
     Inertial,
     Link,
-    Motion,
-    Pose,
+    LinkColumns,
     RobotModel,
     Where,
-    check_unique_names,
     rpy_matrix,
     short,
     unit,
@@ -79,9 +78,6 @@ _SHAPES = {
 }
 """The primitive shapes read here and their attributes (a mesh goes the careful way)."""
 
-_UNPLACED = Pose(np.eye(3), np.zeros(3))
-"""A link's origin until a joint places it (the root then gets one of its own)."""
-
 
 class _Doubt(Exception):
     """Something the bulk reader leaves to the careful one."""
@@ -95,11 +91,9 @@ def read_urdf_bulk(path: str, data: bytes, package_paths=None, geometry: bool = 
         if document.encoding != "utf-8" or not _plain_xml(document.text):
             return None
         name, links, joints = _elements(document.text)
-        model = RobotModel(document.path, "urdf", name, document=document)
-        model.links = _links(document.path, links, geometry, package_paths)
-        check_unique_names(document.path, model.links, "link")
-        _joints(model, joints)
-        return model
+        fields = _links(document.path, links, geometry, package_paths)
+        fields.update(_joints(fields["names"], joints, document.path))
+        return RobotModel(document.path, "urdf", name, document=document, columns=LinkColumns(**fields))
     except (_Doubt, InputError):
         return None
 
@@ -134,11 +128,7 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
         text = _COMMENT.sub(b"", text)
     if _TEXT.search(text):
         raise _Doubt
-    pieces = _QUOTED.split(text)  # between values, a value, between values, ...
-    values = pieces[1::2]
-    blank = b'""'.join(pieces[::2])
-    if any(space in text and text.count(space) != blank.count(space) for space in (b"\n", b"\t", b"\r")):
-        raise _Doubt  # a value holding a line end or tab, which XML reads as a space
+    values, blank = _values(text)
     if _SINGLE_QUOTED.search(blank):
         raise _Doubt
     codes = np.frombuffer(blank, dtype=np.uint8)
@@ -165,20 +155,70 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
             blank, begins, stops, lows, highs, values
         )
     root = _NAMES.findall(blank[: closes[0] + 1])
-    name = values[root.index(b"name")].decode() if b"name" in root else None
+    name = values.one(root.index(b"name")).decode() if b"name" in root else None
     return name, groups[b"<link"], groups[b"<joint"]
 
 
-def _grouped(blank: bytes, begins, stops, lows, highs, values: list[bytes]) -> dict[bytes, _Rows]:
+def _values(text: bytes) -> tuple[_Values, bytes]:
+    """The attribute values of ``text`` (in double quotes: with no character data, comment or
+    single-quoted value, every double quote opens or closes one) and the text with each value
+    emptied; _Doubt for a value holding a line end or tab, which XML reads as a space."""
+    codes = np.frombuffer(text, dtype=np.uint8)
+    quotes = np.flatnonzero(codes == 34)
+    if len(quotes) % 2:
+        raise _Doubt
+    starts, ends = quotes[0::2] + 1, quotes[1::2]
+    if np.any(np.searchsorted(quotes, np.flatnonzero(codes < 32)) % 2):  # \t, \n or \r in a value
+        raise _Doubt  # (expat lets no other control character through)
+    bounds = np.empty(2 * len(starts) + 2, dtype=np.int64)  # outside, inside, outside, ...
+    bounds[0], bounds[1:-1:2], bounds[2:-1:2], bounds[-1] = 0, starts, ends, len(codes)
+    outside = np.ones(len(bounds) - 1, dtype=bool)
+    outside[1::2] = False
+    return _Values(codes, starts, ends), codes[np.repeat(outside, np.diff(bounds))].tobytes()
+
+
+class _Values:
+    """A document's attribute values, in document order: value k is ``codes[starts[k]:ends[k]]``."""
+
+    def __init__(self, codes: np.ndarray, starts: np.ndarray, ends: np.ndarray):
+        self.codes, self.starts, self.ends = codes, starts, ends
+
+    def __len__(self) -> int:
+        return len(self.starts)
+
+    def one(self, k: int) -> bytes:
+        return self.codes[self.starts[k] : self.ends[k]].tobytes()
+
+    def texts(self, which: np.ndarray) -> list[bytes]:
+        """The values of the indices ``which``, read at once as rows of a fixed-width array."""
+        starts, lengths = self.starts[which], self.ends[which] - self.starts[which]
+        width = int(lengths.max()) if len(lengths) else 0
+        if width == 0:
+            return [b""] * len(lengths)
+        codes = self.codes
+        if len(codes) < width + int(starts.max()):
+            codes = np.concatenate([codes, np.zeros(width, dtype=np.uint8)])
+        windows = np.lib.stride_tricks.as_strided(
+            codes, shape=(len(codes) - width + 1, width), strides=(1, 1)
+        )
+        found = windows[starts]
+        found[np.arange(width) >= lengths[:, None]] = 0  # no value holds a NUL (expat refuses it)
+        return found.view(f"S{width}").reshape(-1).tolist()
+
+
+def _grouped(blank: bytes, begins, stops, lows, highs, values: _Values) -> dict[bytes, _Rows]:
     """Signature → its elements (:class:`_Rows`) of the elements spanning ``begins:stops`` of
     the emptied text, whose values are ``values[lows:highs]``."""
-    found: dict[bytes, tuple[list[int], list[list[bytes]]]] = {}
-    spans = zip(begins.tolist(), stops.tolist(), lows.tolist(), highs.tolist())
-    for index, (begin, end, low, high) in enumerate(spans):
-        indices, rows = found.setdefault(blank[begin:end], ([], []))
+    found: dict[bytes, tuple[list[int], list[int]]] = {}
+    spans = zip(begins.tolist(), stops.tolist(), lows.tolist())
+    for index, (begin, end, low) in enumerate(spans):
+        indices, firsts = found.setdefault(blank[begin:end], ([], []))
         indices.append(index)
-        rows.append(values[low:high])
-    return {signature: _Rows(indices, rows) for signature, (indices, rows) in found.items()}
+        firsts.append(low)
+    return {
+        signature: _Rows(indices, np.array(firsts, dtype=np.int64), values)
+        for signature, (indices, firsts) in found.items()
+    }
 
 
 def _alike(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values) -> dict[bytes, _Rows] | None:
@@ -202,7 +242,7 @@ def _alike(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values) 
     if not np.all(texts == texts[0]):
         return None
     signature = blank[int(begins[0]) : int(stops[0])]
-    return {signature: _Rows(list(range(count)), spaced=(first, spacing), values=values)}
+    return {signature: _Rows(list(range(count)), first + spacing * np.arange(count, dtype=np.int64), values)}
 
 
 def _named(codes: np.ndarray, at: np.ndarray, opening: bytes) -> np.ndarray:
@@ -268,11 +308,10 @@ def _tree(signature: bytes) -> _Node:
 
 class _Rows:
     """The elements of one signature: ``indices`` (each one's place among the links or joints)
-    and their values, as a list per element, or (``spaced``: the first element's first value's
-    place, the step between elements) at even steps in the document's list of values."""
+    and ``firsts`` (where each one's values start in the document's :class:`_Values`)."""
 
-    def __init__(self, indices: list[int], rows: list[list[bytes]] | None = None, spaced=None, values=None):
-        self.indices, self.rows, self.spaced, self.values = indices, rows, spaced, values
+    def __init__(self, indices: list[int], firsts: np.ndarray, values: _Values):
+        self.indices, self.firsts, self.values = indices, firsts, values
 
     def __len__(self) -> int:
         return len(self.indices)
@@ -281,10 +320,7 @@ class _Rows:
         """The text at ``place`` of each element (``default`` where the attribute is not written)."""
         if place is None:
             return [default] * len(self)
-        if self.rows is not None:
-            return [row[place] for row in self.rows]
-        first, step = self.spaced
-        return self.values[first + place : first + place + step * (len(self) - 1) + 1 : step]
+        return self.values.texts(self.firsts + place)
 
     def words(self, place: int | None) -> list[str]:
         """The text at ``place`` of each element as str (``""`` where the attribute is not written)."""
@@ -331,8 +367,9 @@ def _angles(rpy: np.ndarray) -> np.ndarray:
     return rpy
 
 
-def _poses(rows: _Rows, origin: _Node | None) -> list[Pose]:
-    """The poses :func:`rbi.formats.urdf._origin` reads from each row's ``origin`` element."""
+def _poses(rows: _Rows, origin: _Node | None) -> tuple[np.ndarray, np.ndarray]:
+    """The poses :func:`rbi.formats.urdf._origin` reads from each row's ``origin`` element:
+    rotations (k, 3, 3) and translations (k, 3)."""
     at = {} if origin is None else origin.at
     xyz = _numbers(rows.column(at.get("xyz"), b"0 0 0"), 3)
     rpy = _angles(_numbers(rows.column(at.get("rpy"), b"0 0 0"), 3))
@@ -341,59 +378,70 @@ def _poses(rows: _Rows, origin: _Node | None) -> list[Pose]:
     R[:] = np.eye(3)
     for k in np.flatnonzero(turned).tolist():
         R[k] = rpy_matrix(rpy[k].tolist())
-    return [Pose(R[k], xyz[k]) for k in range(len(rows))]
+    return R, xyz
 
 
-def _inertials(rows: _Rows, inertial: _Node) -> list[Inertial]:
-    """The inertials :func:`rbi.formats.urdf._inertial` reads from each row."""
-    origin, mass, block = inertial.child("origin"), inertial.child("mass"), inertial.child("inertia")
-    if mass is None or block is None or "value" not in mass.at:
-        raise _Doubt
-    at = {} if origin is None else origin.at
-    com = _numbers(rows.column(at.get("xyz"), b"0 0 0"), 3)
-    rpy = _angles(_numbers(rows.column(at.get("rpy"), b"0 0 0"), 3))
-    masses = _numbers(rows.column(mass.at["value"], b""), 1)[:, 0].tolist()
-    six = []
-    for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
-        if key not in block.at:
+class _Inertials:
+    """The links' inertials as :class:`rbi.formats.robot.LinkColumns` holds them, for ``n`` links."""
+
+    def __init__(self, n: int):
+        self.declared = np.zeros(n, dtype=bool)
+        self.masses = np.zeros(n)
+        self.coms = np.zeros((n, 3))
+        self.inertias = np.zeros((n, 3, 3))
+        self.written = np.zeros((n, 3, 3))
+        self.turned: dict[int, Inertial] = {}
+
+    def read(self, rows: _Rows, inertial: _Node) -> None:
+        """The inertials :func:`rbi.formats.urdf._inertial` reads from each row, into the columns."""
+        origin, mass, block = inertial.child("origin"), inertial.child("mass"), inertial.child("inertia")
+        if mass is None or block is None or "value" not in mass.at:
             raise _Doubt
-        six.append(_numbers(rows.column(block.at[key], b""), 1)[:, 0])
-    ixx, ixy, ixz, iyy, iyz, izz = six
-    written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
-    if np.any(np.abs(written) >= 1e300):
-        raise _Doubt  # check_inertia_range's sum might overflow: the careful reader words it
-    turned = np.any(rpy != 0, axis=1)
-    level = np.flatnonzero(~turned).tolist()
-    made = MassProperties.rows([masses[k] for k in level], com[level], written[level], "link")
-    found: list[Inertial | None] = [None] * len(rows)
-    for k, properties in zip(level, made):
-        found[k] = Inertial(properties, written[k])
-    for k in np.flatnonzero(turned).tolist():
-        angles = tuple(rpy[k].tolist())
-        found[k] = Inertial.read(
-            masses[k], com[k].tolist(), written[k], rotation=rpy_matrix(angles), rpy=angles
-        )
-    return found
+        at = {} if origin is None else origin.at
+        com = _numbers(rows.column(at.get("xyz"), b"0 0 0"), 3)
+        rpy = _angles(_numbers(rows.column(at.get("rpy"), b"0 0 0"), 3))
+        masses = _numbers(rows.column(mass.at["value"], b""), 1)[:, 0]
+        six = []
+        for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
+            if key not in block.at:
+                raise _Doubt
+            six.append(_numbers(rows.column(block.at[key], b""), 1)[:, 0])
+        ixx, ixy, ixz, iyy, iyz, izz = six
+        written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
+        if np.any(np.abs(written) >= 1e300):
+            raise _Doubt  # check_inertia_range's sum might overflow: the careful reader words it
+        where = np.array(rows.indices, dtype=int)
+        self.declared[where] = True
+        self.masses[where], self.coms[where] = masses, com
+        self.inertias[where] = self.written[where] = written
+        for k in np.flatnonzero(np.any(rpy != 0, axis=1)).tolist():
+            angles = tuple(rpy[k].tolist())
+            found = Inertial.read(
+                float(masses[k]), com[k].tolist(), written[k], rotation=rpy_matrix(angles), rpy=angles
+            )
+            row = rows.indices[k]
+            self.turned[row] = found
+            self.coms[row] = found.properties.center_of_mass
+            self.inertias[row] = found.properties.inertia_about_com
 
 
-def _geoms(rows: _Rows, top: _Node, tag: str, links: list[tuple], packages) -> list[list[Geom]]:
-    """Each row's ``tag`` (collision or visual) geoms as :func:`rbi.formats.urdf._geoms` reads
-    them (``links``: each row's (path, link label) for a mesh's lookup)."""
-    found: list[list[Geom]] = [[] for _ in range(len(rows))]
+def _geoms(rows: _Rows, top: _Node, tag: str, links: list[tuple], packages) -> list[GeomColumn]:
+    """The rows' ``tag`` (collision or visual) geoms as :func:`rbi.formats.urdf._geoms` reads
+    them, one column per element (``links``: each row's (path, link label) for a mesh's lookup)."""
+    found = []
     for number, element in enumerate(each for each in top.children if each.tag == tag):
         holder = element.child("geometry")
         if holder is None or not holder.children:
             raise _Doubt
         shape = holder.children[0]
         label = f"{tag}[{number}]/geometry/{shape.tag}"
-        poses = _poses(rows, element.child("origin"))
+        R, t = _poses(rows, element.child("origin"))
+        column = GeomColumn(tag, label, shape.tag, rows.indices, R, t)
         if shape.tag == "mesh":
-            for k, (pose, mesh) in enumerate(zip(poses, _meshes(rows, shape, label, links, packages))):
-                found[k].append(Geom("mesh", (), pose, label, mesh_file=mesh[0], mesh_scale=mesh[1]))
-            continue
-        sizes = _sizes(rows, shape)
-        for k, pose in enumerate(poses):
-            found[k].append(Geom(shape.tag, sizes[k], pose, label))
+            column.meshes = _meshes(rows, shape, label, links, packages)
+        else:
+            column.sizes = _sizes(rows, shape)
+        found.append(column)
     return found
 
 
@@ -432,104 +480,121 @@ def _sizes(rows: _Rows, shape: _Node) -> list[tuple[float, ...]]:
     return [tuple(row) for row in sizes.tolist()]
 
 
-def _links(path: str, elements: dict, geometry: bool, packages) -> list[Link]:
-    """The links of ``elements`` (signature → [(index, values)]: :func:`_elements`), in file order."""
+def _links(path: str, elements: dict, geometry: bool, packages) -> dict:
+    """The links of ``elements`` (signature → :class:`_Rows`: :func:`_elements`) as the
+    :class:`rbi.formats.robot.LinkColumns` fields they give: names, inertials and geometry."""
     if not elements:
         raise _Doubt  # no link: the careful reader words it
-    links: list[Link] = [None] * sum(len(group) for group in elements.values())  # type: ignore[list-item]
-    for signature, group in elements.items():
+    n = sum(len(group) for group in elements.values())
+    names: list[str] = [""] * n
+    inertials = _Inertials(n)
+    geoms: list[GeomColumn] = []
+    for signature, rows in elements.items():
         top = _tree(signature)
         if "name" not in top.at:
             raise _Doubt
-        rows = group
-        names = rows.words(top.at["name"])
-        if not all(names):
+        words = rows.words(top.at["name"])
+        if not all(words):
             raise _Doubt
+        for index, word in zip(rows.indices, words):
+            names[index] = word
         inertial = top.child("inertial")
-        inertials = [None] * len(rows) if inertial is None else _inertials(rows, inertial)
-        empty: list[list[Geom]] = [[] for _ in range(len(rows))]
-        labels = [(path, index, names[k]) for k, index in enumerate(group.indices)]
-        collisions = _geoms(rows, top, "collision", labels, packages) if geometry else empty
-        visuals = _geoms(rows, top, "visual", labels, packages) if geometry else empty
-        for k, index in enumerate(group.indices):
-            links[index] = Link(index, names[k], inertials[k], collisions[k], visuals[k], origin=_UNPLACED)
-    return links
+        if inertial is not None:
+            inertials.read(rows, inertial)
+        if geometry:
+            labels = [(path, index, words[k]) for k, index in enumerate(rows.indices)]
+            geoms += _geoms(rows, top, "collision", labels, packages)
+            geoms += _geoms(rows, top, "visual", labels, packages)
+    if len(set(names)) != n:
+        raise _Doubt  # check_unique_names would refuse it: the careful reader words it
+    fields = {key: value for key, value in vars(inertials).items()}
+    return {"names": names, "geoms": geoms, **fields}
 
 
-def _joints(model: RobotModel, elements) -> None:
-    """Each joint of ``elements`` (signature → [(index, values)]: :func:`_elements`) into its
-    child link, as :func:`rbi.formats.urdf._joints` reads it; _Doubt (or its InputError) where
-    that reader would refuse the file."""
-    by_name = {link.name: link for link in model.links}
-    found: list[tuple] = [()] * sum(len(group) for group in elements.values())
-    for signature, group in elements.items():
+def _joints(names: list[str], elements, path: str) -> dict:
+    """The joints of ``elements`` (signature → :class:`_Rows`: :func:`_elements`) as the
+    :class:`rbi.formats.robot.LinkColumns` fields they give, each in its child link's row, as
+    :func:`rbi.formats.urdf._joints` reads them; _Doubt (or its InputError) where that reader
+    would refuse the file."""
+    n = len(names)
+    rows_of = {name: row for row, name in enumerate(names)}
+    parents, joint_names, kinds = [-1] * n, [""] * n, [None] * n
+    efforts: list[float | None] = [None] * n
+    rotations, translations, axes = np.empty((n, 3, 3)), np.zeros((n, 3)), np.zeros((n, 3))
+    rotations[:] = np.eye(3)
+    count = 0
+    for signature, rows in elements.items():
         top = _tree(signature)
         parent, child = top.child("parent"), top.child("child")
         if "name" not in top.at or parent is None or child is None:
             raise _Doubt
         if "link" not in parent.at or "link" not in child.at:
             raise _Doubt
-        rows = group
-        kinds = [MOVING.get(kind) for kind in rows.words(top.at.get("type"))]
-        if None in kinds:
+        kinds_read = [MOVING.get(kind) for kind in rows.words(top.at.get("type"))]
+        if None in kinds_read:
             raise _Doubt
-        names, parents = rows.words(top.at["name"]), rows.words(parent.at["link"])
-        children = rows.words(child.at["link"])
-        poses = _poses(rows, top.child("origin"))
-        axes = _axes(model.path, rows, top.child("axis"), kinds)
-        efforts = _efforts(rows, top.child("limit"))
-        for k, index in enumerate(group.indices):
-            found[index] = (names[k], kinds[k], parents[k], children[k], poses[k], axes[k], efforts[k])
-    anchors = np.zeros((len(found), 3))
-    for k, (name, kind, parent_name, child_name, pose, axis, effort) in enumerate(found):
-        link = by_name.get(child_name)
-        if not name or parent_name not in by_name or link is None or link.parent is not None:
+        words = rows.words(top.at["name"])
+        parent_rows = [rows_of.get(name, -1) for name in rows.words(parent.at["link"])]
+        children = [rows_of.get(name, -1) for name in rows.words(child.at["link"])]
+        if not all(words) or -1 in parent_rows or -1 in children:
             raise _Doubt
-        link.parent, link.origin = parent_name, pose
-        link.motions = [Motion(name, kind, axis, anchors[k], effort_limit=effort)]
-    if len({name for name, *_ in found}) != len(found) or not _one_tree(model.links):
+        R, t = _poses(rows, top.child("origin"))
+        found_axes = _axes(path, rows, top.child("axis"), kinds_read)
+        found_efforts = _efforts(rows, top.child("limit"))
+        for k, row in enumerate(children):
+            if parents[row] != -1:
+                raise _Doubt  # a second parent: the careful reader words it
+            parents[row], joint_names[row], kinds[row] = parent_rows[k], words[k], kinds_read[k]
+            efforts[row] = found_efforts[k]
+        at = np.array(children, dtype=int)
+        rotations[at], translations[at], axes[at] = R, t, found_axes
+        count += len(rows)
+    if len({name for name in joint_names if name}) != count or not _one_tree(parents):
         raise _Doubt  # check_unique_joint_names or check_tree would refuse it: the careful reader words it
-    for link in model.links:
-        if link.origin is _UNPLACED:
-            link.origin = Pose.identity()  # the root's, as the careful reader leaves it
+    return {
+        "parents": parents,
+        "rotations": rotations,
+        "translations": translations,
+        "joint_names": joint_names,
+        "joint_kinds": kinds,
+        "axes": axes,
+        "efforts": efforts,
+    }
 
 
-def _one_tree(links: list[Link]) -> bool:
+def _one_tree(parents: list[int]) -> bool:
     """Do the links form one tree (one root, every link reached from it), as
-    :func:`rbi.formats.urdf.check_tree` asks (each link has one parent here, a link of the model)?"""
-    rows = {link.name: row for row, link in enumerate(links)}
-    children: list[list[int]] = [[] for _ in links]
+    :func:`rbi.formats.urdf.check_tree` asks (``parents``: each link's parent row, -1 for none)?"""
+    children: list[list[int]] = [[] for _ in parents]
     roots = []
-    for row, link in enumerate(links):
-        if link.parent is None:
+    for row, parent in enumerate(parents):
+        if parent < 0:
             roots.append(row)
         else:
-            children[rows[link.parent]].append(row)
+            children[parent].append(row)
     if len(roots) != 1:
         return False
     reached, queue = 0, roots
     while queue:
         reached += 1
         queue.extend(children[queue.pop()])
-    return reached == len(links)
+    return reached == len(parents)
 
 
-def _axes(path: str, rows: _Rows, axis: _Node | None, kinds: list) -> list[np.ndarray]:
-    """Each joint's axis as :func:`rbi.formats.urdf._axis` reads it: a unit vector for revolute
-    and prismatic joints (worked out once per distinct text, as there), else as written."""
+def _axes(path: str, rows: _Rows, axis: _Node | None, kinds: list) -> np.ndarray:
+    """Each joint's axis (k, 3) as :func:`rbi.formats.urdf._axis` reads it: a unit vector for
+    revolute and prismatic joints (worked out once per distinct text, as there), else as written."""
     texts = [b"1 0 0"] * len(rows) if axis is None else rows.column(axis.at.get("xyz"), b"1 0 0")
     values = _numbers(texts, 3)
-    units: dict[str, np.ndarray] = {}
-    found = []
+    units: dict[bytes, np.ndarray] = {}
     for k, kind in enumerate(kinds):
         if kind not in UNIT_AXIS_KINDS:
-            found.append(values[k].copy())
             continue
         known = units.get(texts[k])
         if known is None:
             known = units[texts[k]] = unit(Where(path), values[k].tolist(), "axis: xyz")
-        found.append(known.copy())
-    return found
+        values[k] = known
+    return values
 
 
 def _efforts(rows: _Rows, limit: _Node | None) -> list[float | None]:

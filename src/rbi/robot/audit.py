@@ -40,7 +40,7 @@ from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import ArgumentError, literal
-from rbi.formats.robot import Link, RobotModel
+from rbi.formats.robot import Link, LinkColumns, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
 from rbi.robot.tree import depth_first, placement, stack_apply, stacked, totals
@@ -184,13 +184,22 @@ class AuditReport(TableRepr):
     :meth:`as_dict` is the JSON the CLI prints."""
 
     model: RobotModel
-    links: list[LinkAudit]
+    _links: list[LinkAudit] | None
     total: Any
     notes: list[str]
     settings: dict[str, Any]
     fix: Any = None
     joints: list = field(default_factory=list)
     """Each joint coordinate's holding torque (:class:`rbi.robot.statics.JointTorque`)."""
+    columns: _ColumnAudit | None = None
+    """The audit of a model read as columns, whose :attr:`links` are made when first asked for."""
+
+    @property
+    def links(self) -> list[LinkAudit]:
+        """One :class:`LinkAudit` per link, in file order."""
+        if self._links is None:
+            self._links = [] if self.columns is None else self.columns.links()
+        return self._links
 
     @property
     def path(self) -> str:
@@ -198,6 +207,8 @@ class AuditReport(TableRepr):
 
     @property
     def has_error(self) -> bool:
+        if self._links is None and self.columns is not None:
+            return self.columns.has_error or bool(self.model.unchecked)
         return any(link.has_error for link in self.links) or bool(self.model.unchecked)
 
     @property
@@ -384,19 +395,16 @@ def audit_model(
     from rbi.robot.statics import joint_torques
 
     check_choices(geometry, mesh_inertia)
-    carried = _carried_mass(model)
     repairs: list[str] = []
-    bulk = _primitives_in_bulk(model, geometry, density)
-    links = [
-        LinkAudit(link, None if link.inertial is None else link.inertial.properties, bulk[row])
-        if row in bulk
-        else _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
-        for row, link in enumerate(model.links)
-    ]
-    for result, known in zip(links, _known_in_bulk(links)):
-        result.flags += _flags(model, result.link, result, carried.get(result.link.index, False), known)
+    columns = model.in_columns
+    links, in_columns = None, None
+    if columns is None:
+        links = _audit_links(model, geometry, density, mesh_inertia, mesh_repair, repairs)
+    else:
+        in_columns = _ColumnAudit(model, columns)
+        in_columns.audit(geometry, density, mesh_inertia, mesh_repair, repairs)
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
-    placed = placement(model, joints)
+    placed = placement(model, joints, columns)
     return AuditReport(
         model,
         links,
@@ -410,7 +418,116 @@ def audit_model(
             "mesh_repair": mesh_repair,
         },
         joints=joint_torques(model, joints, placed),
+        columns=in_columns,
     )
+
+
+def _audit_links(model: RobotModel, geometry, density, mesh_inertia, mesh_repair, repairs) -> list[LinkAudit]:
+    """Each link's :class:`LinkAudit`, the costly numbers in bulk."""
+    carried = _carried_mass(model)
+    measured = _primitives_in_bulk(model, geometry, density)
+    bulk = {} if measured is None else measured.all_props()
+    links = [
+        LinkAudit(link, None if link.inertial is None else link.inertial.properties, bulk[row])
+        if row in bulk
+        else _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
+        for row, link in enumerate(model.links)
+    ]
+    for result, known in zip(links, _known_in_bulk(links)):
+        result.flags += _flags(model, result.link, result, carried.get(result.link.index, False), known)
+    return links
+
+
+class _ColumnAudit:
+    """The audit of a model read as columns (:class:`rbi.formats.robot.LinkColumns`), on their
+    arrays: the links the bulk screens clear (no flag, their numbers worked out on stacks) are
+    kept as rows and made into :class:`LinkAudit` values when asked for (:meth:`links`); the
+    others (``audited``: row → LinkAudit) are made now and audited one by one, as
+    :func:`audit_link` audits them."""
+
+    def __init__(self, model: RobotModel, columns: LinkColumns):
+        self.model, self.columns = model, columns
+        self.audited: dict[int, LinkAudit] = {}
+        self.measured: _Measured | None = None
+        self.compared: dict[int, tuple] = {}  # row → (ratios, com_offset)
+
+    @property
+    def has_error(self) -> bool:
+        return any(each.has_error for each in self.audited.values())
+
+    def audit(self, geometry, density, mesh_inertia, mesh_repair, repairs) -> None:
+        """Each link screened on the arrays; those not cleared audited one by one."""
+        model, columns = self.model, self.columns
+        n = len(columns)
+        heavy = columns.declared & (columns.masses > 0)
+        carried = _carried_rows([n if parent < 0 else parent for parent in columns.parents], heavy.tolist())
+        measured = self.measured = _primitives_in_bulk(model, geometry, density, columns)
+        shaped = np.zeros(n, dtype=bool)  # links with geometry to measure
+        if geometry != "none":
+            for column in columns.geoms:
+                shaped[column.rows] = True
+        fine = np.zeros(n, dtype=bool)
+        if measured is not None:
+            fine[np.asarray(measured.rows)[measured.fine]] = True
+        declared = np.flatnonzero(columns.declared).tolist()
+        physical, maybe = _screens(n, declared, columns.inertias[declared], columns.written[declared])
+        clean = self._compare(heavy & fine)
+        moving = [
+            parent >= 0 and kind != "fixed" for parent, kind in zip(columns.parents, columns.joint_kinds)
+        ]
+        simple = heavy & physical & ~maybe & (~shaped | clean)
+        simple |= ~columns.declared & ~np.array(moving, dtype=bool) & (~shaped | fine)
+        for row in np.flatnonzero(~simple).tolist():
+            link = columns.link(row)
+            if fine[row]:
+                declared_props = None if link.inertial is None else link.inertial.properties
+                result = LinkAudit(link, declared_props, measured.props(measured.at[row]))
+            else:
+                result = _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
+            result.flags += _flags(model, link, result, carried[row], None)
+            self.audited[row] = result
+
+    def _compare(self, chosen: np.ndarray) -> np.ndarray:
+        """(n,) which of the ``chosen`` links (declared mass, geometry measured) :func:`_compared`
+        finds clean; their ratios and centre-of-mass offsets into :attr:`compared`."""
+        clean = np.zeros(len(chosen), dtype=bool)
+        measured, columns = self.measured, self.columns
+        if measured is None or not np.any(chosen):
+            return clean
+        at = np.array([measured.at[row] for row in np.flatnonzero(chosen).tolist()], dtype=int)
+        at = at[np.all(np.isfinite(measured.scaled[at]), axis=(1, 2))]
+        rows = np.asarray(measured.rows)[at]
+        moments, axes = np.linalg.eigh(measured.scaled[at])
+        low_density, high_density = SOLID_DENSITY_RANGE
+        implied = measured.implied[at]
+        ratios, offsets, fits = _compared(
+            moments,
+            axes,
+            columns.inertias[rows],
+            columns.coms[rows],
+            measured.low[at],
+            measured.high[at],
+            measured.com[at],
+            (implied >= low_density) & (implied <= high_density),
+        )
+        clean[rows] = fits
+        self.compared = dict(zip(rows.tolist(), zip(ratios, offsets)))
+        return clean
+
+    def links(self) -> list[LinkAudit]:
+        """Every link's :class:`LinkAudit`, in file order."""
+        found = []
+        measured, compared = self.measured, self.compared
+        for row, link in enumerate(self.columns.links()):
+            result = self.audited.get(row)
+            if result is None:
+                geometry = None
+                if measured is not None and row in measured.at and measured.fine[measured.at[row]]:
+                    geometry = measured.props(measured.at[row])
+                declared = None if link.inertial is None else link.inertial.properties
+                result = LinkAudit(link, declared, geometry, *compared.get(row, (None, None)))
+            found.append(result)
+        return found
 
 
 def _carried_mass(model: RobotModel) -> dict[int, bool]:
@@ -456,6 +573,18 @@ def _carried_in_one_pass(model: RobotModel) -> dict[int, bool] | None:
     parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
     if -1 in parents:
         return None
+    heavy = [link.inertial is not None and link.inertial.mass > 0 for link in links]
+    below = _carried_rows(parents, heavy)
+    if below is None:
+        return None
+    return {link.index: below[row] for row, link in enumerate(links)}
+
+
+def _carried_rows(parents: list[int], heavy: list[bool]) -> list[bool] | None:
+    """For each of n links (``parents``: each one's parent row, n for a root; ``heavy``: which
+    have mass): does any link below it have mass? None when the links are no forest (a link
+    not reached from the roots)."""
+    n = len(parents)
     children: list[list[int]] = [[] for _ in range(n + 1)]
     for row, parent in enumerate(parents):
         children[parent].append(row)
@@ -464,10 +593,9 @@ def _carried_in_one_pass(model: RobotModel) -> dict[int, bool] | None:
         return None
     below = [False] * (n + 1)
     for row in reversed(order):  # every child before its parent
-        inertial = links[row].inertial
-        if below[row] or (inertial is not None and inertial.mass > 0):
+        if below[row] or heavy[row]:
             below[parents[row]] = True
-    return {link.index: below[row] for row, link in enumerate(links)}
+    return below[:n]
 
 
 def chosen_geoms(link: Link, geometry: str) -> tuple[list, str]:
@@ -539,87 +667,162 @@ def _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, no
     return result
 
 
-def _one_primitive(model: RobotModel, geometry: str) -> dict[int, tuple[Any, str]]:
-    """Row → (geom, source) of each URDF or SDF link whose geometry (as :func:`link_geometry`
-    chooses it) is one solid primitive: what :func:`_primitives_in_bulk` measures."""
+class _Shapes(NamedTuple):
+    """The links whose geometry (as :func:`link_geometry` chooses it) is one solid primitive:
+    their ``rows``, each shape's ``kinds`` and ``sizes`` (m), pose in the link frame (``R``
+    (k, 3, 3), ``p`` (k, 3)) and ``sources`` (collision or visual)."""
+
+    rows: list[int]
+    kinds: list[str]
+    sizes: list[tuple]
+    R: np.ndarray
+    p: np.ndarray
+    sources: list[str]
+
+
+def _one_primitive(model: RobotModel, geometry: str, columns: LinkColumns | None = None) -> _Shapes | None:
+    """The :class:`_Shapes` of a URDF or SDF model (None: none, or MJCF): what
+    :func:`_primitives_in_bulk` measures."""
     if geometry == "none" or model.format == "mjcf":
-        return {}
+        return None
+    if columns is not None:
+        return _primitive_columns(columns, geometry)
     found = {}
     for row, link in enumerate(model.links):
         geoms, source = chosen_geoms(link, geometry)
         if len(geoms) == 1 and geoms[0].kind in _PRIMITIVES and not geoms[0].shell:
             found[row] = (geoms[0], source)
-    return found
+    if not found:
+        return None
+    geoms = [geom for geom, _ in found.values()]
+    return _Shapes(
+        list(found),
+        [geom.kind for geom in geoms],
+        [geom.size for geom in geoms],
+        stacked([g.pose.rotation for g in geoms], (3, 3)),
+        stacked([g.pose.translation for g in geoms], (3,)),
+        [source for _, source in found.values()],
+    )
+
+
+def _primitive_columns(columns: LinkColumns, geometry: str) -> _Shapes | None:
+    """:func:`_one_primitive` on a model's columns: each link's ``geometry`` elements, or the
+    other kind's when it has none of those, one column of shapes each."""
+    other = "visual" if geometry == "collision" else "collision"
+    counts = {tag: np.zeros(len(columns), dtype=int) for tag in (geometry, other)}
+    for column in columns.geoms:
+        counts[column.tag][column.rows] += 1
+    chosen = {geometry: counts[geometry] == 1, other: (counts[geometry] == 0) & (counts[other] == 1)}
+    rows, kinds, sizes, R, p, sources = [], [], [], [], [], []
+    for column in columns.geoms:
+        if column.kind not in _PRIMITIVES or column.sizes is None:
+            continue
+        at = np.flatnonzero(chosen[column.tag][column.rows])
+        rows += np.asarray(column.rows)[at].tolist()
+        kinds += [column.kind] * len(at)
+        sizes += [column.sizes[k] for k in at.tolist()]
+        R.append(column.rotations[at])
+        p.append(column.translations[at])
+        sources += [column.tag] * len(at)
+    if not rows:
+        return None
+    order = np.argsort(rows, kind="stable").tolist()
+    return _Shapes(
+        [rows[k] for k in order],
+        [kinds[k] for k in order],
+        [sizes[k] for k in order],
+        np.concatenate(R)[order],
+        np.concatenate(p)[order],
+        [sources[k] for k in order],
+    )
 
 
 _PRIMITIVES = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
 
 
-def _primitives_in_bulk(model: RobotModel, geometry: str, density: float | None) -> dict[int, GeometryProps]:
-    """Row → :class:`GeometryProps` of the links :func:`_one_primitive` finds, measured on
-    (n, 3, 3) stacks with the operations :func:`distribution`, :func:`_sum` and
-    :func:`_geometry_props` make on one link, element by element (so the same numbers). A link
-    whose numbers would take another branch there (no volume, overflow, an unusual sum) is left
-    to them."""
-    chosen = _one_primitive(model, geometry)
-    if not chosen:
-        return {}
-    rows = list(chosen)
-    geoms = [chosen[row][0] for row in rows]
-    shapes: dict[tuple, tuple[float, np.ndarray, np.ndarray]] = {}
-    for geom in geoms:
-        key = (geom.kind, geom.size)
-        if key not in shapes:
+def _primitives_in_bulk(
+    model: RobotModel, geometry: str, density: float | None, columns: LinkColumns | None = None
+) -> _Measured | None:
+    """The geometry of the links :func:`_one_primitive` finds, measured on (n, 3, 3) stacks with
+    the operations :func:`distribution`, :func:`_sum` and :func:`_geometry_props` make on one
+    link, element by element (so the same numbers). A link whose numbers would take another
+    branch there (no volume, overflow, an unusual sum) is left to them (not ``fine``)."""
+    shapes = _one_primitive(model, geometry, columns)
+    if shapes is None:
+        return None
+    known: dict[tuple, tuple[float, np.ndarray, np.ndarray]] = {}
+    for key in zip(shapes.kinds, shapes.sizes):
+        if key not in known:
             try:
-                shapes[key] = (*primitive(geom.kind, geom.size), half_extent(geom.kind, geom.size))
+                known[key] = (*primitive(*key), half_extent(*key))
             except ValueError:
-                shapes[key] = (np.nan, np.full(3, np.nan), np.full(3, np.nan))
-    measure = np.array([shapes[(g.kind, g.size)][0] for g in geoms], dtype=float)
-    moments = stacked([shapes[(g.kind, g.size)][1] for g in geoms], (3,))
-    half = stacked([shapes[(g.kind, g.size)][2] for g in geoms], (3,))
-    R = stacked([g.pose.rotation for g in geoms], (3, 3))
-    p = stacked([g.pose.translation for g in geoms], (3,))
+                known[key] = (np.nan, np.full(3, np.nan), np.full(3, np.nan))
+    each = [known[key] for key in zip(shapes.kinds, shapes.sizes)]
+    measure = np.array([found[0] for found in each], dtype=float)
+    moments = stacked([found[1] for found in each], (3,))
+    half = stacked([found[2] for found in each], (3,))
+    R, p = shapes.R, shapes.p
     turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
     inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
     corners = stack_apply(np.abs(R), half)
     with np.errstate(all="ignore"):
         fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
         fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
-    return _geometry_rows(
-        model, rows, chosen, fine, measure, inertia + 0.0, p + 0.0, p - corners, p + corners, density
+    if columns is not None:
+        declared = np.where(columns.declared, columns.masses, 0.0)[shapes.rows]
+    else:
+        links = model.links
+        declared = np.array(
+            [0.0 if links[r].inertial is None else links[r].inertial.properties.mass for r in shapes.rows],
+            dtype=float,
+        ).reshape(-1)
+    return _Measured.of(
+        shapes, fine, measure, inertia + 0.0, p + 0.0, p - corners, p + corners, declared, density
     )
 
 
-def _geometry_rows(
-    model, rows, chosen, fine, measure, inertia, com, low, high, density
-) -> dict[int, GeometryProps]:
-    """The :class:`GeometryProps` of each ``fine`` row, as :func:`_geometry_props` makes it from
-    one piece of ``measure`` (m³) with its inertia at density 1, centroid and bounds: the mass
-    (the declared one when positive, else ``density`` times the volume), the implied density
-    and the scaled inertia worked out on the arrays (the same IEEE operations, element by
-    element)."""
-    links = model.links
-    declared = np.array(
-        [0.0 if links[row].inertial is None else links[row].inertial.properties.mass for row in rows],
-        dtype=float,
-    ).reshape(-1)
-    given = declared > 0
-    with np.errstate(all="ignore"):
-        mass = np.where(given, declared, np.nan if density is None else density * measure)
-        implied = mass / measure
-        scaled = inertia * implied[:, None, None]
-    given |= density is not None
-    keep = np.flatnonzero(fine & given)
-    made = dict(zip(keep.tolist(), MassProperties.rows(mass[keep].tolist(), com[keep], scaled[keep], "link")))
-    found = {}
-    for k, (row, ok, volume, rho) in enumerate(zip(rows, fine.tolist(), measure.tolist(), implied.tolist())):
-        if not ok:
-            continue
-        properties = made.get(k)
-        found[row] = GeometryProps.of(
-            properties, com[k], volume, None if properties is None else rho, low[k], high[k], chosen[row][1]
+class _Measured:
+    """The geometry of :class:`_Shapes` measured: of each ``fine`` row, a piece of ``measure``
+    (m³) with its inertia at density 1 (kg·m²), centroid ``com`` and bounds ``low``/``high``
+    (m, link frame), and its mass (the declared one when positive, else ``density`` times the
+    volume), implied density and scaled inertia (``scaled``), worked out on the arrays (the
+    same IEEE operations as :func:`_geometry_props`, element by element). ``has_mass``: the rows
+    whose geometry has mass properties. :meth:`props` gives one row's :class:`GeometryProps`."""
+
+    @classmethod
+    def of(cls, shapes, fine, measure, inertia, com, low, high, declared, density) -> _Measured:
+        value = cls()
+        given = declared > 0
+        with np.errstate(all="ignore"):
+            mass = np.where(given, declared, np.nan if density is None else density * measure)
+            implied = mass / measure
+            scaled = inertia * implied[:, None, None]
+        given |= density is not None
+        value.rows, value.sources, value.fine = shapes.rows, shapes.sources, fine
+        value.measure, value.com, value.low, value.high = measure, com, low, high
+        value.mass, value.implied, value.scaled = mass, implied, scaled
+        value.has_mass = fine & given
+        value.at = dict(zip(shapes.rows, range(len(shapes.rows))))
+        return value
+
+    def props(self, k: int) -> GeometryProps:
+        """The :class:`GeometryProps` of the k-th row (a ``fine`` one)."""
+        properties = None
+        if self.has_mass[k]:
+            properties = MassProperties.of_arrays(float(self.mass[k]), self.com[k], self.scaled[k], "link")
+        return GeometryProps.of(
+            properties,
+            self.com[k],
+            float(self.measure[k]),
+            None if properties is None else float(self.implied[k]),
+            self.low[k],
+            self.high[k],
+            self.sources[k],
         )
-    return found
+
+    def all_props(self) -> dict[int, GeometryProps]:
+        """Row → :class:`GeometryProps` of every ``fine`` row."""
+        return {row: self.props(k) for k, row in enumerate(self.rows) if self.fine[k]}
 
 
 class _Known(NamedTuple):
@@ -643,13 +846,12 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
     result equals the one-matrix call). The screens only say "certainly fine": a link they do
     not clear is checked one by one, so the flags are those of :func:`audit_link`."""
     declared = [i for i, each in enumerate(links) if each.declared is not None]
-    physical = np.zeros(len(links), dtype=bool)
-    maybe_placeholder = np.ones(len(links), dtype=bool)
-    if declared:
-        stack = stacked([links[i].declared.inertia_about_com for i in declared], (3, 3))
-        physical[declared] = _certainly_physical(stack)
-        written = stacked([links[i].link.inertial.written_inertia for i in declared], (3, 3))
-        maybe_placeholder[declared] = _maybe_placeholder(written)
+    physical, maybe_placeholder = _screens(
+        len(links),
+        declared,
+        stacked([links[i].declared.inertia_about_com for i in declared], (3, 3)),
+        stacked([links[i].link.inertial.written_inertia for i in declared], (3, 3)),
+    )
     eighs: list = [None] * len(links)
     geometry: list = [(None, None, False)] * len(links)  # ratios, com_offset, clean
     usable = [
@@ -671,38 +873,67 @@ def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
     ]
 
 
+def _screens(n: int, declared: list[int], inertias: np.ndarray, written: np.ndarray) -> tuple:
+    """(physical, maybe_placeholder), (n,) each, for n links of which the ``declared`` rows
+    declare ``inertias`` (about the centre of mass, link axes) as ``written`` (k, 3, 3):
+    :func:`_certainly_physical` and :func:`_maybe_placeholder` (False and True for the others)."""
+    physical = np.zeros(n, dtype=bool)
+    maybe_placeholder = np.ones(n, dtype=bool)
+    if declared:
+        physical[declared] = _certainly_physical(inertias)
+        maybe_placeholder[declared] = _maybe_placeholder(written)
+    return physical, maybe_placeholder
+
+
 def _geometry_in_bulk(links, found: list[tuple], chosen: list[int], moments, axes) -> None:
     """:func:`_geometry_flags`'s ratios, centre-of-mass offset and whether it would flag anything,
     into ``found`` (link → (ratios, com_offset, clean)), for the ``chosen`` links that declare an
-    inertial (their geometry's eigen-decompositions ``moments``, ``axes``), on stacks: the same operations element by element (einsum and
-    matmul make the same calls per matrix of a stack), so the same numbers."""
+    inertial (their geometry's eigen-decompositions ``moments``, ``axes``): :func:`_compared`."""
     rows = [row for row, i in enumerate(chosen) if links[i].declared is not None]
     if not rows:
         return
     picked = [links[chosen[row]] for row in rows]
-    moments, axes = moments[rows], axes[rows]
-    inertia = stacked([each.declared.inertia_about_com for each in picked], (3, 3))
+    low_density, high_density = SOLID_DENSITY_RANGE
+    ratios, offsets, clean = _compared(
+        moments[rows],
+        axes[rows],
+        stacked([each.declared.inertia_about_com for each in picked], (3, 3)),
+        stacked([each.declared.center_of_mass for each in picked], (3,)),
+        stacked([each.geometry.low for each in picked], (3,)),
+        stacked([each.geometry.high for each in picked], (3,)),
+        stacked([each.geometry.center_of_mass for each in picked], (3,)),
+        np.array(
+            [
+                d is None or low_density <= d <= high_density
+                for d in (e.geometry.implied_density for e in picked)
+            ]
+        ),
+    )
+    for row, ratio, offset, fits in zip(rows, ratios, offsets, clean.tolist()):
+        found[chosen[row]] = (ratio, offset, fits)
+
+
+def _compared(moments, axes, inertia, com, low, high, geometry_com, density_ok) -> tuple:
+    """:func:`_geometry_flags`'s numbers for k links at once, on stacks (einsum and matmul make
+    the same calls per matrix of a stack as for one, so the same numbers): each link's
+    geometry's principal ``moments`` (k, 3) and ``axes`` (k, 3, 3), the declared ``inertia``
+    (k, 3, 3) and ``com`` (k, 3), the geometry's bounds and centre of mass (k, 3), and whether
+    its implied density is plausible (or none). Returns (ratios (k, 3), com offsets (None
+    where the geometry has no size), clean (k,): no flag to add to a link that is not a
+    placeholder)."""
     along = np.einsum("nji,njk,nki->ni", axes, inertia, axes)
     usable = moments > USABLE_MOMENT * np.max(moments, axis=1)[:, None]
     with np.errstate(all="ignore"):
         ratios = np.where(usable, along / moments, np.nan)
-    com = stacked([each.declared.center_of_mass for each in picked], (3,))
-    low = stacked([each.geometry.low for each in picked], (3,))
-    high = stacked([each.geometry.high for each in picked], (3,))
     size = _norms(high - low)
-    offset = _norms(com - stacked([each.geometry.center_of_mass for each in picked], (3,)))
+    offset = _norms(com - geometry_com)
     with np.errstate(all="ignore"):
         offset = offset / size
     margin = (COM_MARGIN * size)[:, None]
     inside = ~(np.any(com < low - margin, axis=1) | np.any(com > high + margin, axis=1))
     near = np.all(np.isnan(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
-    low_density, high_density = SOLID_DENSITY_RANGE
-    fits = (near & inside).tolist()
-    sized, offsets = (size > 0).tolist(), offset.tolist()
-    for row, (each, ratio) in enumerate(zip(picked, ratios)):
-        density = each.geometry.implied_density
-        clean = fits[row] and (density is None or low_density <= density <= high_density)
-        found[chosen[rows[row]]] = (ratio, offsets[row] if sized[row] else None, clean)
+    offsets = [value if sized else None for value, sized in zip(offset.tolist(), (size > 0).tolist())]
+    return ratios, offsets, near & inside & density_ok
 
 
 def _norms(rows: np.ndarray) -> np.ndarray:

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbi.formats.robot import RobotModel
-from rbi.robot.tree import placement, stack_apply, stacked
+from rbi.robot.tree import heavy_links, placement, stack_apply
 
 STANDARD_GRAVITY = 9.81
 """m/s², along −z of the root link's frame for URDF and SDF."""
@@ -53,23 +53,19 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     to_R = np.broadcast_to(to_frame.rotation, (len(placed.joints), 3, 3))
     axes = np.matmul(to_R, placed.axes[..., None])[..., 0]
     anchors = np.matmul(to_R, placed.anchors[..., None])[..., 0] + to_frame.translation
-    keep = list(range(len(placed.joints)))
+    chosen = placed.joints
     if model.format == "sdf":  # only an SDF root link has joints to the world
-        keep = [i for i in keep if not _world_joint(model, placed.rows[placed.joints[i][0]])]
-    rows = [placed.rows[placed.joints[i][0]] for i in keep]
+        keep = [i for i, joint in enumerate(chosen) if not _world_joint(model, joint[0])]
+        chosen, axes, anchors = [chosen[i] for i in keep], axes[keep], anchors[keep]
+    rows = [row for row, *_ in chosen]
     M = np.array([mass[row] for row in rows], dtype=float)  # Σ m of each joint's subtree
-    axes, anchors = axes[keep], anchors[keep]
     lever = _cross(axes, moment[rows] - M[:, None] * anchors)  # axis × (Σ m c − M p)
-    prismatic = np.array([placed.joints[i][1].kind == "prismatic" for i in keep], dtype=bool)
+    prismatic = np.array([kind == "prismatic" for _, _, kind, _ in chosen], dtype=bool)
     torques = np.where(prismatic, -M * _dot(axes, gravity), -_dot(lever, gravity)) + 0.0
     found = []
-    for i, torque in zip(keep, torques.tolist()):
-        motion = placed.joints[i][1]
-        limit = motion.effort_limit
-        flags = (
-            [] if limit is None or not limit - abs(torque) < 0 else [_effort_flag(motion.kind, torque, limit)]
-        )
-        found.append(JointTorque(motion.name, motion.kind, torque, limit, flags))
+    for (_, name, kind, limit), torque in zip(chosen, torques.tolist()):
+        flags = [] if limit is None or not limit - abs(torque) < 0 else [_effort_flag(kind, torque, limit)]
+        found.append(JointTorque(name, kind, torque, limit, flags))
     return found
 
 
@@ -117,25 +113,16 @@ def _subtree_sums(model: RobotModel, placed) -> tuple[list[float], np.ndarray]:
     """For each link's row of ``placed``: the mass of its subtree (kg) and its first moment
     Σ m c (kg·m, in ``placed.frame``), each subtree added to its parent's in the reverse of
     :func:`rbi.robot.tree.parents_first`'s order."""
-    links = model.links
-    rows = placed.rows
-    mass = [0.0] * len(links)
-    moment = np.zeros((len(links), 3))
-    heavy = [
-        (rows[link.index], link.inertial)
-        for link in links
-        if link.inertial is not None and link.inertial.mass != 0.0
-    ]
-    if heavy:
-        chosen = [row for row, _ in heavy]
-        masses = np.array([inertial.mass for _, inertial in heavy], dtype=float)
-        coms = stacked([inertial.properties.center_of_mass for _, inertial in heavy], (3,))
+    n = len(placed.translations)
+    mass = [0.0] * n
+    moment = np.zeros((n, 3))
+    chosen, masses, coms, _ = heavy_links(model, placed)
+    if chosen:
         at = stack_apply(placed.placed_rotations[chosen], coms) + placed.placed_translations[chosen]
         moment[chosen] = masses[:, None] * at
         for row, value in zip(chosen, masses.tolist()):
             mass[row] = value
     first = moment.tolist()
-    n = len(links)
     for child, parent in reversed(placed.order):
         if parent != n:
             mass[parent] += mass[child]

@@ -21,7 +21,7 @@ import numpy as np
 from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, axis_angle_matrix
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.formats.robot import Pose, RobotModel
+from rbi.formats.robot import LinkColumns, Pose, RobotModel
 
 
 def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> dict[str, float]:
@@ -66,7 +66,7 @@ def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dic
 class Placement:
     """The links placed at one configuration, as arrays (one row a link, ``rows``: link index →
     row): ``rotations`` (n, 3, 3) and ``translations`` (n, 3) each link's frame in the model's
-    frame; ``joints`` [(link index, motion)] of the revolute and prismatic joints in file order
+    frame; ``joints`` [(row, name, kind, effort limit)] of the revolute and prismatic joints in file order
     of their links, with ``axes`` and ``anchors`` (k, 3) in the model's frame where the joints
     before them leave them; ``frame`` the name of the frame totals are given in (``"root link
     NAME"`` for URDF and SDF, ``"world"`` for MJCF), ``to_frame`` model frame → that frame, and
@@ -85,6 +85,8 @@ class Placement:
     placed_translations: np.ndarray
     order: list[tuple[int, int]]
     """(row, parent row) of each link in :func:`parents_first`'s order; a root's parent row is n."""
+    columns: LinkColumns | None = None
+    """The model's links as arrays, when they were read in place of its links."""
 
     @property
     def poses(self) -> dict[int, Pose]:
@@ -112,56 +114,104 @@ def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
     return np.matmul(rotations, vectors[..., None])[..., 0]
 
 
-def placement(model: RobotModel, joints: dict[str, float] | None = None) -> Placement:
+def placement(
+    model: RobotModel, joints: dict[str, float] | None = None, columns: LinkColumns | None = None
+) -> Placement:
     """Every link's pose at ``joints``, parents first (a link's pose is its parent's, then its
     origin, then its joints' motions), one level of the tree at a time on (n, 3, 3) stacks;
-    InputError for a joint name the model has no revolute or prismatic joint of."""
+    InputError for a joint name the model has no revolute or prismatic joint of. ``columns``:
+    the model's links as arrays (:attr:`RobotModel.in_columns`), read in place of its links."""
     joints = dict(joints or {})
-    _check_joints(model, joints)
-    links = model.links
-    n = len(links)
-    rows = {link.index: row for row, link in enumerate(links)}
+    _check_joints(model, joints, columns)
+    n = len(model.links) if columns is None else len(columns)
+    if columns is None:
+        rows = {link.index: row for row, link in enumerate(model.links)}
+    else:
+        rows = dict(zip(range(n), range(n)))
     R = np.empty((n + 1, 3, 3))  # row n: the identity, every root's parent
     t = np.empty((n + 1, 3))
     R[n], t[n] = np.eye(3), np.zeros(3)
     frames: dict[int, list] = {}
-    order, levels = _levels(model)
+    order, levels = _levels(model, columns)
     for level, parents in levels:
-        level_R = stacked([links[row].origin.rotation for row in level], (3, 3))
-        level_t = stacked([links[row].origin.translation for row in level], (3,))
+        level_R, level_t = _origins(model, columns, level)
         R[level] = np.matmul(R[parents], level_R)
         t[level] = stack_apply(R[parents], level_t) + t[parents]
         for row in level:
-            if joints and any(motion.name in joints for motion in links[row].motions):
-                R[row], t[row] = _moved(links[row], Pose(R[row], t[row]), joints, frames)
+            link = _moving(model, columns, row, joints)
+            if link is not None:
+                R[row], t[row] = _moved(link, Pose(R[row], t[row]), joints, frames)
     R, t = R[:n], t[:n]
-    joint_list, axes, anchors = _joint_frames(model, R, t, frames)
+    joint_list, axes, anchors = _joint_frames(model, R, t, frames, columns)
     frame, to_frame = "world", Pose.identity()
     if model.format != "mjcf":
-        roots = [link for link in links if link.parent is None]
-        if roots:
-            root = rows[roots[0].index]
+        root, name = _root(model, columns)
+        if root is not None:
             to_frame = Pose(R[root], t[root]).inverse()
-            frame = f"root link {roots[0].name}"
+            frame = f"root link {name}"
     to_R = np.broadcast_to(to_frame.rotation, R.shape)
     placed_R = np.matmul(to_R, R)
     placed_t = stack_apply(to_R, t) + to_frame.translation
-    return Placement(rows, R, t, joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, order)
+    return Placement(
+        rows, R, t, joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, order, columns
+    )
 
 
-def _levels(model: RobotModel) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]]]:
+def _origins(
+    model: RobotModel, columns: LinkColumns | None, rows: list[int]
+) -> tuple[np.ndarray, np.ndarray]:
+    """The origins (rotations (k, 3, 3), translations (k, 3)) of the links of ``rows``."""
+    if columns is not None:
+        return columns.rotations[rows], columns.translations[rows]
+    links = model.links
+    return (
+        stacked([links[row].origin.rotation for row in rows], (3, 3)),
+        stacked([links[row].origin.translation for row in rows], (3,)),
+    )
+
+
+def _moving(model: RobotModel, columns: LinkColumns | None, row: int, joints: dict[str, float]):
+    """The link of ``row`` when ``joints`` gives one of its joints a value, else None."""
+    if not joints:
+        return None
+    if columns is not None:
+        return columns.link(row) if columns.joint_names[row] in joints else None
+    link = model.links[row]
+    return link if any(motion.name in joints for motion in link.motions) else None
+
+
+def _root(model: RobotModel, columns: LinkColumns | None) -> tuple[int | None, str | None]:
+    """The row and name of the first root link (None, None: no root)."""
+    if columns is not None:
+        row = columns.parents.index(-1)
+        return row, columns.names[row]
+    for row, link in enumerate(model.links):
+        if link.parent is None:
+            return row, link.name
+    return None, None
+
+
+def _levels(
+    model: RobotModel, columns: LinkColumns | None = None
+) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]]]:
     """(row, parent row) in :func:`parents_first`'s order (a root's parent: row n, the identity),
     and the same rows grouped by depth in the tree with their parents' rows, shallowest first."""
-    links = model.links
-    n = len(links)
-    by_name = {link.key: row for row, link in enumerate(links)}
-    parents = [n if link.parent is None else by_name.get(link.parent, -1) for link in links]
+    if columns is not None:
+        n = len(columns)
+        parents = [n if parent < 0 else parent for parent in columns.parents]
+        by_name: dict = dict.fromkeys(range(n))
+    else:
+        links = model.links
+        n = len(links)
+        by_name = {link.key: row for row, link in enumerate(links)}
+        parents = [n if link.parent is None else by_name.get(link.parent, -1) for link in links]
     if len(by_name) == n and -1 not in parents:  # each key one link's, each parent a link
         children: list[list[int]] = [[] for _ in range(n + 1)]
         for row, parent in enumerate(parents):
             children[parent].append(row)
         rows = depth_first(children, n)  # parents_first's order, on rows
     else:
+        links = model.links
         row_of = {link.index: row for row, link in enumerate(links)}
         rows = [row_of[link.index] for link in parents_first(model, by_name)]
         parents = {row: n if links[row].parent is None else by_name[links[row].parent] for row in rows}
@@ -204,26 +254,18 @@ def _moved(link, pose: Pose, joints: dict[str, float], frames: dict[int, list]) 
     return pose.rotation, pose.translation
 
 
-def _joint_frames(model: RobotModel, R: np.ndarray, t: np.ndarray, moved: dict[int, list]):
-    """[(link index, motion)] of every revolute and prismatic joint in file order, and their axes
-    and anchors (k, 3) in the model's frame: at the link's pose, or as :func:`_moved` found them."""
-    found, rows, axes, anchors = [], [], [], []
-    for row, link in enumerate(model.links):
-        if link.index in moved:
-            for motion, axis, anchor in moved[link.index]:
-                found.append((link.index, motion))
-                rows.append(-1)
-                axes.append(axis)
-                anchors.append(anchor)
-            continue
-        for motion in link.motions:
-            if motion.kind in ("revolute", "prismatic"):
-                found.append((link.index, motion))
-                rows.append(row)
-                axes.append(motion.axis)
-                anchors.append(motion.anchor)
-    axes_array = stacked(axes, (3,))
-    anchors_array = stacked(anchors, (3,))
+def _joint_frames(model: RobotModel, R: np.ndarray, t: np.ndarray, moved: dict[int, list], columns=None):
+    """[(row, name, kind, effort limit)] of every revolute and prismatic joint in file order, and
+    their axes and anchors (k, 3) in the model's frame: at the link's pose, or as :func:`_moved`
+    found them."""
+    if columns is not None and not moved:
+        kinds = columns.joint_kinds
+        rows = [row for row, kind in enumerate(kinds) if kind in ("revolute", "prismatic")]
+        names, limits = columns.joint_names, columns.efforts
+        found = [(row, names[row], kinds[row], limits[row]) for row in rows]
+        axes_array, anchors_array = columns.axes[rows], np.zeros((len(rows), 3))
+    else:
+        found, rows, axes_array, anchors_array = _joints_of_links(model, moved)
     at = np.array(rows, dtype=int)
     plain = at >= 0
     if np.any(plain):
@@ -233,15 +275,38 @@ def _joint_frames(model: RobotModel, R: np.ndarray, t: np.ndarray, moved: dict[i
     return found, axes_array, anchors_array
 
 
-def _check_joints(model: RobotModel, joints: dict[str, float]) -> None:
+def _joints_of_links(model: RobotModel, moved: dict[int, list]) -> tuple:
+    """:func:`_joint_frames`'s joints, read from the links: (joints, rows (-1: moved), axes (k, 3)
+    and anchors (k, 3) in the link frames, or as :func:`_moved` found them)."""
+    found, rows, axes, anchors = [], [], [], []
+    for row, link in enumerate(model.links):
+        if link.index in moved:
+            for motion, axis, anchor in moved[link.index]:
+                found.append((row, motion.name, motion.kind, motion.effort_limit))
+                rows.append(-1)
+                axes.append(axis)
+                anchors.append(anchor)
+            continue
+        for motion in link.motions:
+            if motion.kind in ("revolute", "prismatic"):
+                found.append((row, motion.name, motion.kind, motion.effort_limit))
+                rows.append(row)
+                axes.append(motion.axis)
+                anchors.append(motion.anchor)
+    return found, rows, stacked(axes, (3,)), stacked(anchors, (3,))
+
+
+def _check_joints(model: RobotModel, joints: dict[str, float], columns: LinkColumns | None = None) -> None:
     """ArgumentError naming ``joints`` for a name no revolute or prismatic joint has, or a
     revolute value whose turn rounding loses."""
-    movable = {
-        m.name: m
-        for link in model.links
-        for m in link.motions
-        if m.name is not None and m.kind in ("revolute", "prismatic")
-    }
+    if not joints:
+        return
+    if columns is not None:
+        kinds = columns.joint_kinds
+        pairs = [(name, kinds[row]) for row, name in enumerate(columns.joint_names) if name]
+    else:
+        pairs = [(m.name, m.kind) for link in model.links for m in link.motions if m.name is not None]
+    movable = {name: kind for name, kind in pairs if kind in ("revolute", "prismatic")}
     unknown = [name for name in joints if name not in movable]
     if unknown:
         hint = difflib.get_close_matches(unknown[0], list(movable), n=1)
@@ -252,7 +317,7 @@ def _check_joints(model: RobotModel, joints: dict[str, float]) -> None:
             + (f" (did you mean {literal(hint[0])}?)" if hint else ""),
         )
     for name, value in joints.items():
-        if movable[name].kind == "revolute" and not angle_is_kept(math.degrees(value)):
+        if movable[name] == "revolute" and not angle_is_kept(math.degrees(value)):
             raise ArgumentError(
                 "joints",
                 literal(model.path, quoted=False)
@@ -292,23 +357,19 @@ def totals(
     the links already placed at ``joints`` (:func:`placement`)."""
     placed = placement(model, joints) if at is None else at
     frame = placed.frame
-    chosen = [
-        (placed.rows[link.index], link.inertial.properties)
-        for link in model.links
-        if link.inertial is not None and link.inertial.mass != 0.0
-    ]
+    rows, masses, own_coms, own_inertias = heavy_links(model, placed)
     try:
-        if not chosen:
+        if not rows:
             raise ValueError("no link with mass")
         with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported just below
-            masses, coms = _placed_parts(placed, chosen)
-            inertias = _placed_inertias(placed, chosen)
+            coms = stack_apply(placed.placed_rotations[rows], own_coms) + placed.placed_translations[rows]
+            inertias = _placed_inertias(placed, rows, own_inertias)
             total = combine(masses, coms, inertias, frame)
     except ValueError:  # no link with mass, or negative masses (flagged unphysical) that leave none
         return MassProperties.zero(frame)
     if not (np.all(np.isfinite(total.center_of_mass)) and np.all(np.isfinite(total.inertia_about_com))):
         far = float(np.max(np.abs(coms)))
-        moment = max(float(np.max(np.abs(props.inertia_about_com))) for _, props in chosen)
+        moment = float(np.max(np.abs(own_inertias)))
         raise InputError(
             f"{model.path}: the whole robot's mass properties overflow a double (centres of mass "
             f"up to {far:.3g} m from the root, moments up to {moment:.3g} kg·m²); give lengths in "
@@ -317,20 +378,30 @@ def totals(
     return total
 
 
-def _placed_parts(placed: Placement, chosen: list) -> tuple[np.ndarray, np.ndarray]:
-    """The masses (kg) and centres of mass (m, in ``placed.frame``) of the ``chosen`` [(row,
-    link-frame mass properties)]: each the value :meth:`MassProperties.transformed` gives."""
-    rows = [row for row, _ in chosen]
-    masses = np.array([props.mass for _, props in chosen], dtype=float)
-    coms = stacked([props.center_of_mass for _, props in chosen], (3,))
+def heavy_links(model: RobotModel, placed: Placement) -> tuple[list[int], np.ndarray, np.ndarray, np.ndarray]:
+    """The links with a declared mass other than 0: their rows in ``placed``, masses (kg),
+    centres of mass (m) and inertias about them (kg·m²) in their own frames."""
+    columns = placed.columns
+    if columns is not None:
+        rows = np.flatnonzero(columns.declared & (columns.masses != 0.0)).tolist()
+        return rows, columns.masses[rows], columns.coms[rows], columns.inertias[rows]
+    chosen = [
+        (placed.rows[link.index], link.inertial.properties)
+        for link in model.links
+        if link.inertial is not None and link.inertial.mass != 0.0
+    ]
+    return (
+        [row for row, _ in chosen],
+        np.array([props.mass for _, props in chosen], dtype=float),
+        stacked([props.center_of_mass for _, props in chosen], (3,)),
+        stacked([props.inertia_about_com for _, props in chosen], (3, 3)),
+    )
+
+
+def _placed_inertias(placed: Placement, rows: list[int], inertias: np.ndarray) -> np.ndarray:
+    """The inertias (kg·m², about their centres of mass, in their links' axes) of the links of
+    ``rows`` in ``placed.frame``'s axes: ``R I Rᵀ`` made symmetric, as
+    :meth:`MassProperties.transformed` gives it."""
     R = placed.placed_rotations[rows]
-    return masses, stack_apply(R, coms) + placed.placed_translations[rows]
-
-
-def _placed_inertias(placed: Placement, chosen: list) -> np.ndarray:
-    """Each chosen link's inertia about its centre of mass in ``placed.frame``'s axes, kg·m²:
-    ``R I Rᵀ`` made symmetric, as :meth:`MassProperties.transformed` gives it."""
-    R = placed.placed_rotations[[row for row, _ in chosen]]
-    inertias = stacked([props.inertia_about_com for _, props in chosen], (3, 3))
     turned = np.matmul(np.matmul(R, inertias), np.swapaxes(R, 1, 2))
     return 0.5 * (turned + np.swapaxes(turned, 1, 2))
