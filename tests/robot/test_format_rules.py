@@ -92,6 +92,26 @@ MJCF_CASES = {
     '<inertial pos="0 0 0" mass="1" diaginertia="1 1 0"/></body></body>',
     "welded_child_inertial": '<body name="a"><joint type="hinge"/><inertial pos="0 0 0" mass="0" '
     'diaginertia="1 1 1"/><body name="b"><inertial pos="1 0 0" mass="1" diaginertia="1 1 1"/></body></body>',
+    # free joints: only at the top level (a <frame> is not a level), at most 6 degrees of freedom
+    "free_below_top": '<body name="a"><geom size="0.1"/><body name="b"><freejoint/><geom size="0.1"/></body></body>',
+    "free_type_below_top": '<body name="a"><geom size="0.1"/><body name="b"><joint type="free"/>'
+    '<geom size="0.1"/></body></body>',
+    "free_in_frame_at_top": '<frame pos="1 0 0"><body name="a"><freejoint/><geom size="0.1"/></body></frame>',
+    "free_and_hinge": '<body name="a"><freejoint/><joint type="hinge"/><geom size="0.1"/></body>',
+    "two_free": '<body name="a"><freejoint/><freejoint/><geom size="0.1"/></body>',
+    "two_balls": '<body name="a"><joint type="ball"/><joint type="ball"/><geom size="0.1"/></body>',
+    "hinge_then_ball": '<body name="a"><joint type="hinge"/><joint type="ball"/><geom size="0.1"/></body>',
+    "ball_then_hinge": '<body name="a"><joint type="ball"/><joint type="hinge"/><geom size="0.1"/></body>',
+    "ball_then_three_slides": '<body name="a"><joint type="ball"/><joint type="slide" axis="1 0 0"/>'
+    '<joint type="slide" axis="0 1 0"/><joint type="slide"/><geom size="0.1"/></body>',
+    "six_hinges": '<body name="a">'
+    + "".join(f'<joint axis="{a}"/>' for a in ["1 0 0", "0 1 0", "0 0 1"] * 2)
+    + '<geom size="0.1"/></body>',
+    "seven_hinges": '<body name="a">'
+    + "".join(f'<joint axis="{a}"/>' for a in ["1 0 0", "0 1 0", "0 0 1"] * 2)
+    + '<joint/><geom size="0.1"/></body>',
+    "ball_and_four_hinges": '<body name="a"><joint type="ball"/><joint axis="1 0 0"/><joint axis="0 1 0"/>'
+    '<joint axis="0 0 1"/><joint axis="1 0 0"/><geom size="0.1"/></body>',
 }
 
 

@@ -393,6 +393,7 @@ class _Bodies:
                 link.motions.append(Motion(child.get("name"), "free", np.array([1.0, 0, 0]), np.zeros(3)))
             elif child.tag == "inertial":
                 link.inertial = self.inertial(where, child)
+        _check_degrees_of_freedom(where, link, parent)
         self.geoms[link.index] = []
         self.children(element, Pose.identity(), link, inner_class)
         if parent is None and not link.motions:
@@ -664,3 +665,30 @@ def _bound(link: Link, compiler: Compiler) -> None:
         return
     properties = MassProperties(mass, com, inertial.properties.inertia_about_com, "link")
     link.inertial = replace(inertial, properties=properties)
+
+
+_DEGREES_OF_FREEDOM = {"free": 6, "ball": 3, "revolute": 1, "prismatic": 1}
+
+
+def _check_degrees_of_freedom(where: Where, link: Link, parent: Link | None) -> None:
+    """MuJoCo's compiler refuses a free joint below the top level of <worldbody>, a body with
+    more than six degrees of freedom, and a ball joint followed by a hinge or ball in the same
+    body; so does rbi, in MuJoCo's terms."""
+    kinds = [motion.kind for motion in link.motions]
+    words = [{"revolute": "hinge", "prismatic": "slide"}.get(kind, kind) for kind in kinds]
+    if "free" in kinds and parent is not None:
+        raise where.error(
+            "free joint: only a body directly in <worldbody> can have one (MuJoCo: 'free joint can "
+            "only be used on top level'); join it to its parent with hinge, slide or ball joints"
+        )
+    dofs = sum(_DEGREES_OF_FREEDOM.get(kind, 0) for kind in kinds)
+    if dofs > 6:
+        raise where.error(
+            f"its joints ({', '.join(words)}) give it {dofs} degrees of freedom; a body has at most 6 "
+            f"(MuJoCo refuses it: 'more than 6 dofs')"
+        )
+    if "ball" in kinds and any(kind in ("ball", "revolute") for kind in kinds[kinds.index("ball") + 1 :]):
+        raise where.error(
+            f"its joints ({', '.join(words)}): a ball joint followed by another rotation (MuJoCo refuses "
+            f"it: 'ball followed by rotation'); put the hinge before the ball, or use one ball"
+        )
