@@ -44,15 +44,22 @@ def run_local(
     with ThreadPoolExecutor(max_workers=2, thread_name_prefix="rbi-sweep") as pool:
         pending: deque = deque()
         try:
-            for a, b in ranges:
-                pending.append(pool.submit(compute, a, b, threads))
-                if len(pending) >= 2:
-                    on_rows(pending.popleft().result())
-            while pending:
-                on_rows(pending.popleft().result())
+            _in_order(lambda a, b: pool.submit(compute, a, b, threads), ranges, 2, on_rows, pending)
         finally:
             for future in pending:
                 future.cancel()
+
+
+def _in_order(submit: Callable[[int, int], Any], ranges, in_flight: int, on_rows, pending=None) -> None:
+    """Each range ``(a, b)`` submitted as ``submit(a, b)`` (a future), at most ``in_flight`` at
+    once (held in ``pending``, a deque); their rows delivered to ``on_rows`` in run order."""
+    pending = deque() if pending is None else pending
+    for a, b in ranges:
+        pending.append(submit(a, b))
+        if len(pending) >= in_flight:
+            on_rows(pending.popleft().result())
+    while pending:
+        on_rows(pending.popleft().result())
 
 
 CONNECT_SECONDS = 10.0
@@ -85,13 +92,7 @@ def run_dask(
     try:
         compute_remote = client.scatter(compute, broadcast=True, hash=False)
         slots = 4 * max(1, sum(client.nthreads().values()))
-        pending: deque = deque()
-        for a, b in ranges:
-            pending.append(client.submit(_call, compute_remote, a, b, pure=False))
-            if len(pending) >= slots:
-                on_rows(pending.popleft().result())
-        while pending:
-            on_rows(pending.popleft().result())
+        _in_order(lambda a, b: client.submit(_call, compute_remote, a, b, pure=False), ranges, slots, on_rows)
     finally:
         _quietly_close(client, cluster)
         if scratch is not None:
