@@ -234,8 +234,6 @@ def _has_non_finite(value: Any) -> bool:
         return any(map(_has_non_finite, value))
     if isinstance(value, dict):
         return any(_has_non_finite(v) for v in value.values())
-    if isinstance(value, list):
-        return any(_has_non_finite(v) for v in value)
     return isinstance(value, float) and not math.isfinite(value)
 
 
