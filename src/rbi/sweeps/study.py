@@ -30,15 +30,12 @@ from rbi.spec.units import STANDARD_GRAVITY_SI
 from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import store
 from rbi.sweeps.execute import check_address
-from rbi.sweeps.plan import Draw, Plan, axis_of, axis_record
+from rbi.sweeps.plan import MAX_RUNS, Draw, Plan, axis_of, axis_record
 from rbi.sweeps.runs import SweepJob
 from rbi.sweeps.tolerance import MASS_COLUMNS, mass_rows, nominal_axes, spread
 
 MAX_ROWS_SHOWN = 100_000
 """Most runs a sweep may print (json/csv/table) or hold in memory instead of writing them with --out."""
-
-MAX_RUNS = 10**8
-"""Most runs one sweep may have."""
 
 SWEEP_STEP_BUDGET = 2e10
 """Most integration steps a whole sweep is estimated to take before --yes is needed (about
