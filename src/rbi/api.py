@@ -1145,11 +1145,11 @@ def audit(
 
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
-    target = None if out is None else _output(out, ("urdf", "sdf", "xml"), _robot_path(robot_file), "out")
+    target = None if out is None else _output(out, ("urdf", "sdf", "xml"), _path(robot_file), "out")
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, material=material)
     settings |= dict(density=density, mesh_inertia=mesh_inertia, joints=joints, mesh_repair=mesh_repair)
-    report = run_audit(_robot_path(robot_file), fix=fix, allow_outside_paths=allowed, **settings)
+    report = run_audit(_path(robot_file), fix=fix, allow_outside_paths=allowed, **settings)
     if target is not None:
         from rbi.robot.fix import check_out_not_read  # the files the robot reads
 
@@ -1257,11 +1257,11 @@ class RobotImport:
         return comment(*lines) + dump(spec)
 
 
-def _robot_path(robot_file: object) -> str:
-    """``robot_file`` as a str path; TypeError naming the parameter for anything but a path."""
-    if not isinstance(robot_file, (str, bytes, os.PathLike)):
-        raise TypeError(f"robot_file: expected a path (str or os.PathLike), got {type(robot_file).__name__}")
-    return os.fsdecode(os.fspath(robot_file))
+def _path(value: object, name: str = "robot_file") -> str:
+    """``value`` as a str path; TypeError naming the parameter ``name`` for anything but a path."""
+    if not isinstance(value, (str, bytes, os.PathLike)):
+        raise TypeError(f"{name}: expected a path (str or os.PathLike), got {type(value).__name__}")
+    return os.fsdecode(os.fspath(value))
 
 
 def import_robot(
@@ -1287,7 +1287,7 @@ def import_robot(
     from rbi.formats.robot_paths import parse_package_paths
 
     packages = parse_package_paths(package_paths)
-    robot = read_robot(_robot_path(robot_file), packages)
+    robot = read_robot(_path(robot_file), packages)
     chosen = _chosen_links(robot, list(links or []))
     if not chosen:
         raise SpecError(f"{robot.path}: no {robot.link_word} with an <inertial> element to import")
@@ -1364,12 +1364,9 @@ def _output(
     ArgumentError naming the parameter ``name`` when it may not be written there."""
     if isinstance(path, OutputTarget):
         return path
-    if not isinstance(path, (str, bytes, os.PathLike)):
-        raise TypeError(f"{name}: expected a path (str or os.PathLike), got {type(path).__name__}")
+    given = _path(path, name)
     try:
-        return output_target(
-            os.fsdecode(os.fspath(path)), name, formats, inputs=[os.fsdecode(os.fspath(read))]
-        )
+        return output_target(given, name, formats, inputs=[os.fsdecode(os.fspath(read))])
     except ArgumentError:
         raise
     except SpecError as exc:
