@@ -254,3 +254,37 @@ def test_validate_lists_problems_escaped(tmp_path):
     proc = rbi("validate", spec)
     assert proc.returncode == 2 and "p\\x1b[2J" in proc.stdout
     _assert_no_raw_controls(proc.stdout)
+
+
+# --- standard output that cannot be written -------------------------------------------------
+
+UNWRITABLE_STDOUT = {
+    # /dev/full: every write fails with ENOSPC, as on a full disk
+    "full device": lambda: {"stdout": open("/dev/full", "w")},  # noqa: SIM115
+    # `rbi ... >&-`: no file descriptor 1 at all
+    "closed": lambda: {"stdout": None, "pass_fds": (), "preexec_fn": lambda: os.close(1)},
+}
+
+
+@pytest.mark.skipif(not os.path.exists("/dev/full"), reason="needs /dev/full")
+@pytest.mark.parametrize("how", sorted(UNWRITABLE_STDOUT))
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+def test_unwritable_stdout_is_one_line_exit_2(how, form):
+    """Results that cannot reach standard output are one line naming it, exit 2: not an
+    internal error (exit 1, "AttributeError"/"OSError"), not a Python 'Exception ignored' at exit."""
+    streams = UNWRITABLE_STDOUT[how]()
+    try:
+        done = subprocess.run(
+            [str(RBI_SCRIPT), "inertia", str(BODIES / "top.yaml"), "--format", form],
+            stderr=subprocess.PIPE,
+            text=True,
+            timeout=60,
+            **streams,
+        )
+    finally:
+        if streams.get("stdout") is not None:
+            streams["stdout"].close()
+    lines = done.stderr.strip().splitlines()
+    assert done.returncode == 2, done.stderr
+    assert len(lines) == 1 and lines[0].startswith("rbi: standard output: cannot write"), done.stderr
+    assert "internal error" not in done.stderr and "Exception" not in done.stderr

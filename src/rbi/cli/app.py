@@ -28,7 +28,7 @@ from rbi import SpecError, __version__, outside_paths_allowed
 from rbi.cli import completion, terminal
 from rbi.cli.option_values import error_line
 from rbi.cli.options import plain_argument_help
-from rbi.cli.terminal import Terminated, say
+from rbi.cli.terminal import StdoutUnwritable, Terminated, say
 
 __all__ = ["COMMANDS", "app", "main"]
 
@@ -222,6 +222,7 @@ def main() -> None:
     # package's entry points when the first model is built (a user's own setting stays)
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "1")
     terminal.prepare_streams()
+    terminal.guard_stdout()
     previous_sigterm = signal.getsignal(signal.SIGTERM)
     terminal.install_signal_handlers()
     try:
@@ -244,6 +245,7 @@ def _run() -> None:
         with outside_paths_allowed(allow_outside):
             completion.enable()  # answers the shell's completion script (only when it is the caller)
             status = app(args=args or ["--help"], prog_name="rbi", standalone_mode=False)
+            sys.stdout.flush()  # a full disk is reported here, not by Python at exit
     except SpecError as exc:
         say(error_line(exc))
         sys.exit(2)
@@ -260,6 +262,10 @@ def _run() -> None:
     except Terminated:
         say("terminated")
         raise
+    except StdoutUnwritable as exc:  # the results cannot reach the user: the run did not succeed
+        terminal.discard_stdout()
+        say(f"standard output: cannot write the results: {exc}")
+        sys.exit(2)
     except BrokenPipeError:  # `rbi ... | head`: the reader left; not an error of ours
         sys.stderr.close()
         sys.exit(0)

@@ -8,6 +8,9 @@ only (``rbi --help`` stays fast).
 from __future__ import annotations
 
 import codecs
+import errno
+import io
+import os
 import signal
 import sys
 import unicodedata
@@ -135,6 +138,81 @@ def prepare_streams() -> None:
 def ascii_only() -> bool:
     """Whether standard output cannot show rbi's symbols, so tables should spell them in ASCII."""
     return not encodes_unicode(sys.stdout)
+
+
+# --- standard output that cannot take the results -------------------------------------------
+
+
+class StdoutUnwritable(Exception):
+    """Standard output refused the results (a full disk or ``/dev/full``, ``rbi ... >&-``, an I/O
+    error): the answer cannot reach the user. A reader that left (``| head``) is not this: that
+    stays :class:`BrokenPipeError`, which ends the run quietly."""
+
+
+class _ClosedStdout(io.TextIOBase):
+    """Standard output when file descriptor 1 is closed (``rbi ... >&-``): every write fails, as
+    writing to a closed descriptor does, instead of vanishing (rich) or raising AttributeError."""
+
+    encoding = "utf-8"
+
+    @property
+    def buffer(self) -> _ClosedStdout:
+        return self
+
+    def writable(self) -> bool:
+        return True
+
+    def write(self, data) -> int:
+        raise OSError(errno.EBADF, "standard output is closed")
+
+
+class _GuardedStdout:
+    """Standard output (text, or its binary ``buffer``) whose write and flush errors are
+    :class:`StdoutUnwritable`; every other attribute is the stream's own."""
+
+    def __init__(self, stream) -> None:
+        self._stream = stream
+
+    def __getattr__(self, name: str):
+        return getattr(self._stream, name)
+
+    @property
+    def buffer(self) -> _GuardedStdout:
+        return _GuardedStdout(self._stream.buffer)
+
+    def write(self, data) -> int:
+        return self._guarded(self._stream.write, data)
+
+    def flush(self) -> None:
+        self._guarded(self._stream.flush)
+
+    @staticmethod
+    def _guarded(call, *args):
+        try:
+            return call(*args)
+        except BrokenPipeError:
+            raise
+        except OSError as exc:
+            raise StdoutUnwritable(exc.strerror or str(exc)) from None
+
+
+def guard_stdout() -> None:
+    """Route every write to standard output through :class:`_GuardedStdout` (a closed descriptor
+    1 becomes :class:`_ClosedStdout`), so that results that cannot be written end the run with
+    one line (:func:`rbi.cli.app.main`) rather than an internal error or a Python message at exit."""
+    sys.stdout = _GuardedStdout(sys.stdout if sys.stdout is not None else _ClosedStdout())
+
+
+def discard_stdout() -> None:
+    """After :class:`StdoutUnwritable`: point descriptor 1 at /dev/null so that what is still
+    buffered is dropped silently when Python exits, rather than failing a second time."""
+    sys.stdout = None
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, 1)
+        os.close(devnull)
+    except OSError:  # nothing more can be done for a descriptor that is gone
+        pass
 
 
 # --- signals --------------------------------------------------------------------------------
