@@ -192,7 +192,8 @@ class Link:
 class GeomColumn:
     """One ``<collision>`` or ``<visual>`` element (``tag``, ``label`` as :class:`Geom` gives it)
     of links alike: ``rows`` the links' rows, their shape ``kind``, poses (``rotations`` (k, 3, 3),
-    ``translations`` (k, 3), link frame), ``sizes`` (m, one tuple a row) or ``meshes`` ((file,
+    ``translations`` (k, 3), link frame), ``sizes`` ((k, m) in m, a row's the :class:`Geom`'s
+    ``size``) or ``meshes`` ((file,
     scale) a row)."""
 
     tag: str
@@ -201,7 +202,7 @@ class GeomColumn:
     rows: list[int]
     rotations: np.ndarray
     translations: np.ndarray
-    sizes: list[tuple[float, ...]] | None = None
+    sizes: np.ndarray | None = None
     meshes: list[tuple[Path, np.ndarray]] | None = None
 
     def geom(self, k: int) -> Geom:
@@ -210,14 +211,16 @@ class GeomColumn:
         if self.meshes is not None:
             mesh, scale = self.meshes[k]
             return Geom("mesh", (), pose, self.label, mesh_file=mesh, mesh_scale=scale)
-        return Geom(self.kind, self.sizes[k] if self.sizes is not None else (), pose, self.label)
+        return Geom(
+            self.kind, tuple(self.sizes[k].tolist()) if self.sizes is not None else (), pose, self.label
+        )
 
 
 @dataclass
 class LinkColumns:
     """A URDF's links as columns, one row a link in file order (its ``index``), as
     :mod:`rbi.formats.urdf_bulk` reads them: names, ``parents`` (the parent's row, -1 for the
-    root), origins (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame),
+    root), ``order`` (the rows parents first, as :func:`rbi.robot.tree.depth_first` gives them), origins (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame),
     the declared inertials (``declared`` (n,) which links have one; ``masses`` (n,) kg, ``coms``
     (n, 3) m and ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) the
     inertias as written; ``turned``: row → the :class:`Inertial` of a rotated inertial frame),
@@ -227,6 +230,7 @@ class LinkColumns:
 
     names: list[str]
     parents: list[int]
+    order: list[int]
     rotations: np.ndarray
     translations: np.ndarray
     declared: np.ndarray

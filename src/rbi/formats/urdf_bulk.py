@@ -191,10 +191,18 @@ class _Values:
 
     def texts(self, which: np.ndarray) -> list[bytes]:
         """The values of the indices ``which``, read at once as rows of a fixed-width array."""
+        distinct, inverse = self.distinct(which)
+        return distinct if len(distinct) == len(inverse) else [distinct[k] for k in inverse.tolist()]
+
+    def distinct(self, which: np.ndarray) -> tuple[list[bytes], np.ndarray]:
+        """The distinct values of the indices ``which`` (in order of first appearance) and where
+        each index's value is among them, read at once as rows of a fixed-width array."""
         starts, lengths = self.starts[which], self.ends[which] - self.starts[which]
-        width = int(lengths.max()) if len(lengths) else 0
+        if not len(lengths):
+            return [], np.zeros(0, dtype=int)
+        width = int(lengths.max())
         if width == 0:
-            return [b""] * len(lengths)
+            return [b""], np.zeros(len(lengths), dtype=int)
         codes = self.codes
         if len(codes) < width + int(starts.max()):
             codes = np.concatenate([codes, np.zeros(width, dtype=np.uint8)])
@@ -203,7 +211,12 @@ class _Values:
         )
         found = windows[starts]
         found[np.arange(width) >= lengths[:, None]] = 0  # no value holds a NUL (expat refuses it)
-        return found.view(f"S{width}").reshape(-1).tolist()
+        if np.all(found == found[0]):  # one text throughout (a generated file's column)
+            return [found[0].tobytes().rstrip(b"\0")], np.zeros(len(lengths), dtype=int)
+        texts = found.view(f"S{width}").reshape(-1).tolist()
+        places: dict[bytes, int] = {}
+        inverse = np.array([places.setdefault(text, len(places)) for text in texts], dtype=int)
+        return list(places), inverse
 
 
 def _grouped(blank: bytes, begins, stops, lows, highs, values: _Values) -> dict[bytes, _Rows]:
@@ -322,6 +335,17 @@ class _Rows:
             return [default] * len(self)
         return self.values.texts(self.firsts + place)
 
+    def distinct(self, place: int | None, default: bytes) -> tuple[list[bytes], np.ndarray]:
+        """:meth:`column` as its distinct texts and where each element's is among them."""
+        if place is None:
+            return [default], np.zeros(len(self), dtype=int)
+        return self.values.distinct(self.firsts + place)
+
+    def numbers(self, place: int | None, default: bytes, count: int) -> np.ndarray:
+        """:func:`_numbers` of :meth:`column`, each distinct text read once."""
+        distinct, inverse = self.distinct(place, default)
+        return _numbers(distinct, count)[inverse]
+
     def words(self, place: int | None) -> list[str]:
         """The text at ``place`` of each element as str (``""`` where the attribute is not written)."""
         if place is None:
@@ -371,8 +395,8 @@ def _poses(rows: _Rows, origin: _Node | None) -> tuple[np.ndarray, np.ndarray]:
     """The poses :func:`rbi.formats.urdf._origin` reads from each row's ``origin`` element:
     rotations (k, 3, 3) and translations (k, 3)."""
     at = {} if origin is None else origin.at
-    xyz = _numbers(rows.column(at.get("xyz"), b"0 0 0"), 3)
-    rpy = _angles(_numbers(rows.column(at.get("rpy"), b"0 0 0"), 3))
+    xyz = rows.numbers(at.get("xyz"), b"0 0 0", 3)
+    rpy = _angles(rows.numbers(at.get("rpy"), b"0 0 0", 3))
     turned = np.any(rpy != 0, axis=1).tolist()
     R = np.empty((len(rows), 3, 3))
     R[:] = np.eye(3)
@@ -398,14 +422,14 @@ class _Inertials:
         if mass is None or block is None or "value" not in mass.at:
             raise _Doubt
         at = {} if origin is None else origin.at
-        com = _numbers(rows.column(at.get("xyz"), b"0 0 0"), 3)
-        rpy = _angles(_numbers(rows.column(at.get("rpy"), b"0 0 0"), 3))
-        masses = _numbers(rows.column(mass.at["value"], b""), 1)[:, 0]
+        com = rows.numbers(at.get("xyz"), b"0 0 0", 3)
+        rpy = _angles(rows.numbers(at.get("rpy"), b"0 0 0", 3))
+        masses = rows.numbers(mass.at["value"], b"", 1)[:, 0]
         six = []
         for key in ("ixx", "ixy", "ixz", "iyy", "iyz", "izz"):
             if key not in block.at:
                 raise _Doubt
-            six.append(_numbers(rows.column(block.at[key], b""), 1)[:, 0])
+            six.append(rows.numbers(block.at[key], b"", 1)[:, 0])
         ixx, ixy, ixz, iyy, iyz, izz = six
         written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
         if np.any(np.abs(written) >= 1e300):
@@ -464,20 +488,20 @@ def _meshes(rows: _Rows, shape: _Node, label: str, links: list[tuple], packages)
     return found
 
 
-def _sizes(rows: _Rows, shape: _Node) -> list[tuple[float, ...]]:
-    """Each row's shape size, as :func:`rbi.formats.urdf._geom` reads it; () for a kind with no
-    volume."""
+def _sizes(rows: _Rows, shape: _Node) -> np.ndarray:
+    """Each row's shape size (k, m), as :func:`rbi.formats.urdf._geom` reads it; m = 0 for a
+    kind with no volume."""
     names = _SHAPES.get(shape.tag, ())
     if any(name not in shape.at for name in names):
         raise _Doubt
     if not names:
-        return [()] * len(rows)
+        return np.empty((len(rows), 0))
     count = 3 if shape.tag == "box" else 1
-    parts = [_numbers(rows.column(shape.at[name], b""), count) for name in names]
+    parts = [rows.numbers(shape.at[name], b"", count) for name in names]
     sizes = np.concatenate(parts, axis=1)
     if np.any(sizes < 0):
         raise _Doubt
-    return [tuple(row) for row in sizes.tolist()]
+    return sizes
 
 
 def _links(path: str, elements: dict, geometry: bool, packages) -> dict:
@@ -549,10 +573,12 @@ def _joints(names: list[str], elements, path: str) -> dict:
         at = np.array(children, dtype=int)
         rotations[at], translations[at], axes[at] = R, t, found_axes
         count += len(rows)
-    if len({name for name in joint_names if name}) != count or not _one_tree(parents):
+    order = _one_tree(parents)
+    if len({name for name in joint_names if name}) != count or order is None:
         raise _Doubt  # check_unique_joint_names or check_tree would refuse it: the careful reader words it
     return {
         "parents": parents,
+        "order": order,
         "rotations": rotations,
         "translations": translations,
         "joint_names": joint_names,
@@ -562,9 +588,11 @@ def _joints(names: list[str], elements, path: str) -> dict:
     }
 
 
-def _one_tree(parents: list[int]) -> bool:
-    """Do the links form one tree (one root, every link reached from it), as
-    :func:`rbi.formats.urdf.check_tree` asks (``parents``: each link's parent row, -1 for none)?"""
+def _one_tree(parents: list[int]) -> list[int] | None:
+    """The links' rows parents first, as :func:`rbi.robot.tree.depth_first` orders them, when
+    they form one tree (one root, every link reached from it), as
+    :func:`rbi.formats.urdf.check_tree` asks (``parents``: each link's parent row, -1 for none);
+    None when they do not."""
     children: list[list[int]] = [[] for _ in parents]
     roots = []
     for row, parent in enumerate(parents):
@@ -573,27 +601,27 @@ def _one_tree(parents: list[int]) -> bool:
         else:
             children[parent].append(row)
     if len(roots) != 1:
-        return False
-    reached, queue = 0, roots
+        return None
+    order, queue = [], roots
     while queue:
-        reached += 1
-        queue.extend(children[queue.pop()])
-    return reached == len(parents)
+        row = queue.pop()
+        order.append(row)
+        queue.extend(children[row])
+    return order if len(order) == len(parents) else None
 
 
 def _axes(path: str, rows: _Rows, axis: _Node | None, kinds: list) -> np.ndarray:
     """Each joint's axis (k, 3) as :func:`rbi.formats.urdf._axis` reads it: a unit vector for
     revolute and prismatic joints (worked out once per distinct text, as there), else as written."""
-    texts = [b"1 0 0"] * len(rows) if axis is None else rows.column(axis.at.get("xyz"), b"1 0 0")
-    values = _numbers(texts, 3)
-    units: dict[bytes, np.ndarray] = {}
-    for k, kind in enumerate(kinds):
-        if kind not in UNIT_AXIS_KINDS:
-            continue
-        known = units.get(texts[k])
-        if known is None:
-            known = units[texts[k]] = unit(Where(path), values[k].tolist(), "axis: xyz")
-        values[k] = known
+    distinct, inverse = rows.distinct(None if axis is None else axis.at.get("xyz"), b"1 0 0")
+    written = _numbers(distinct, 3)
+    values = written[inverse]
+    turned = np.array([kind in UNIT_AXIS_KINDS for kind in kinds], dtype=bool)
+    if np.any(turned):
+        units = written.copy()
+        for k in np.unique(inverse[turned]).tolist():
+            units[k] = unit(Where(path), written[k].tolist(), "axis: xyz")
+        values[turned] = units[inverse[turned]]
     return values
 
 
@@ -601,7 +629,7 @@ def _efforts(rows: _Rows, limit: _Node | None) -> list[float | None]:
     """Each joint's ``<limit effort>`` as a magnitude, or None where it is not written."""
     if limit is None or "effort" not in limit.at:
         return [None] * len(rows)
-    return np.abs(_numbers(rows.column(limit.at["effort"], b""), 1)[:, 0]).tolist()
+    return np.abs(rows.numbers(limit.at["effort"], b"", 1)[:, 0]).tolist()
 
 
 def attach_elements(model: RobotModel) -> None:

@@ -460,7 +460,8 @@ class _ColumnAudit:
         model, columns = self.model, self.columns
         n = len(columns)
         heavy = columns.declared & (columns.masses > 0)
-        carried = _carried_rows([n if parent < 0 else parent for parent in columns.parents], heavy.tolist())
+        parents = [n if parent < 0 else parent for parent in columns.parents]
+        carried = _carried_rows(parents, heavy.tolist(), columns.order)
         measured = self.measured = _primitives_in_bulk(model, geometry, density, columns)
         shaped = np.zeros(n, dtype=bool)  # links with geometry to measure
         if geometry != "none":
@@ -580,15 +581,16 @@ def _carried_in_one_pass(model: RobotModel) -> dict[int, bool] | None:
     return {link.index: below[row] for row, link in enumerate(links)}
 
 
-def _carried_rows(parents: list[int], heavy: list[bool]) -> list[bool] | None:
+def _carried_rows(parents: list[int], heavy: list[bool], order: list[int] | None = None) -> list[bool] | None:
     """For each of n links (``parents``: each one's parent row, n for a root; ``heavy``: which
-    have mass): does any link below it have mass? None when the links are no forest (a link
-    not reached from the roots)."""
+    have mass; ``order``: their rows parents first, when known): does any link below it have
+    mass? None when the links are no forest (a link not reached from the roots)."""
     n = len(parents)
-    children: list[list[int]] = [[] for _ in range(n + 1)]
-    for row, parent in enumerate(parents):
-        children[parent].append(row)
-    order = depth_first(children, n)
+    if order is None:
+        children: list[list[int]] = [[] for _ in range(n + 1)]
+        for row, parent in enumerate(parents):
+            children[parent].append(row)
+        order = depth_first(children, n)
     if len(order) != n:
         return None
     below = [False] * (n + 1)
@@ -669,12 +671,12 @@ def _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, no
 
 class _Shapes(NamedTuple):
     """The links whose geometry (as :func:`link_geometry` chooses it) is one solid primitive:
-    their ``rows``, each shape's ``kinds`` and ``sizes`` (m), pose in the link frame (``R``
-    (k, 3, 3), ``p`` (k, 3)) and ``sources`` (collision or visual)."""
+    their ``rows``, each one's shape (``distinct[which[k]]``: kind and size in m), pose in the
+    link frame (``R`` (k, 3, 3), ``p`` (k, 3)) and ``sources`` (collision or visual)."""
 
     rows: list[int]
-    kinds: list[str]
-    sizes: list[tuple]
+    distinct: list[tuple[str, tuple]]
+    which: np.ndarray
     R: np.ndarray
     p: np.ndarray
     sources: list[str]
@@ -695,10 +697,11 @@ def _one_primitive(model: RobotModel, geometry: str, columns: LinkColumns | None
     if not found:
         return None
     geoms = [geom for geom, _ in found.values()]
+    distinct = {key: k for k, key in enumerate(dict.fromkeys((g.kind, g.size) for g in geoms))}
     return _Shapes(
         list(found),
-        [geom.kind for geom in geoms],
-        [geom.size for geom in geoms],
+        list(distinct),
+        np.array([distinct[(g.kind, g.size)] for g in geoms], dtype=int).reshape(-1),
         stacked([g.pose.rotation for g in geoms], (3, 3)),
         stacked([g.pose.translation for g in geoms], (3,)),
         [source for _, source in found.values()],
@@ -713,28 +716,28 @@ def _primitive_columns(columns: LinkColumns, geometry: str) -> _Shapes | None:
     for column in columns.geoms:
         counts[column.tag][column.rows] += 1
     chosen = {geometry: counts[geometry] == 1, other: (counts[geometry] == 0) & (counts[other] == 1)}
-    rows, kinds, sizes, R, p, sources = [], [], [], [], [], []
+    rows, distinct, which, R, p, sources = [], {}, [], [], [], []  # type: ignore[var-annotated]
     for column in columns.geoms:
         if column.kind not in _PRIMITIVES or column.sizes is None:
             continue
         at = np.flatnonzero(chosen[column.tag][column.rows])
+        if not len(at):
+            continue
+        sizes = column.sizes[at]
+        if np.all(sizes == sizes[0]):  # one size throughout
+            keys, inverse = [tuple(sizes[0].tolist())], np.zeros(len(at), dtype=int)
+        else:
+            found = {key: k for k, key in enumerate(dict.fromkeys(map(tuple, sizes.tolist())))}
+            keys, inverse = list(found), np.array([found[key] for key in map(tuple, sizes.tolist())])
+        codes = [distinct.setdefault((column.kind, key), len(distinct)) for key in keys]
+        which.append(np.array(codes, dtype=int)[inverse])
         rows += np.asarray(column.rows)[at].tolist()
-        kinds += [column.kind] * len(at)
-        sizes += [column.sizes[k] for k in at.tolist()]
         R.append(column.rotations[at])
         p.append(column.translations[at])
         sources += [column.tag] * len(at)
     if not rows:
         return None
-    order = np.argsort(rows, kind="stable").tolist()
-    return _Shapes(
-        [rows[k] for k in order],
-        [kinds[k] for k in order],
-        [sizes[k] for k in order],
-        np.concatenate(R)[order],
-        np.concatenate(p)[order],
-        [sources[k] for k in order],
-    )
+    return _Shapes(rows, list(distinct), np.concatenate(which), np.concatenate(R), np.concatenate(p), sources)
 
 
 _PRIMITIVES = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
@@ -750,17 +753,15 @@ def _primitives_in_bulk(
     shapes = _one_primitive(model, geometry, columns)
     if shapes is None:
         return None
-    known: dict[tuple, tuple[float, np.ndarray, np.ndarray]] = {}
-    for key in zip(shapes.kinds, shapes.sizes):
-        if key not in known:
-            try:
-                known[key] = (*primitive(*key), half_extent(*key))
-            except ValueError:
-                known[key] = (np.nan, np.full(3, np.nan), np.full(3, np.nan))
-    each = [known[key] for key in zip(shapes.kinds, shapes.sizes)]
-    measure = np.array([found[0] for found in each], dtype=float)
-    moments = stacked([found[1] for found in each], (3,))
-    half = stacked([found[2] for found in each], (3,))
+    known = []
+    for key in shapes.distinct:
+        try:
+            known.append((*primitive(*key), half_extent(*key)))
+        except ValueError:
+            known.append((np.nan, np.full(3, np.nan), np.full(3, np.nan)))
+    measure = np.array([found[0] for found in known], dtype=float)[shapes.which]
+    moments = stacked([found[1] for found in known], (3,))[shapes.which]
+    half = stacked([found[2] for found in known], (3,))[shapes.which]
     R, p = shapes.R, shapes.p
     turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
     inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))

@@ -58,7 +58,7 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
         keep = [i for i, joint in enumerate(chosen) if not _world_joint(model, joint[0])]
         chosen, axes, anchors = [chosen[i] for i in keep], axes[keep], anchors[keep]
     rows = [row for row, *_ in chosen]
-    M = np.array([mass[row] for row in rows], dtype=float)  # Σ m of each joint's subtree
+    M = mass[rows]  # Σ m of each joint's subtree
     lever = _cross(axes, moment[rows] - M[:, None] * anchors)  # axis × (Σ m c − M p)
     prismatic = np.array([kind == "prismatic" for _, _, kind, _ in chosen], dtype=bool)
     torques = np.where(prismatic, -M * _dot(axes, gravity), -_dot(lever, gravity)) + 0.0
@@ -109,23 +109,27 @@ def _gravity(model: RobotModel) -> np.ndarray:
     return np.array([0.0, 0.0, -STANDARD_GRAVITY])
 
 
-def _subtree_sums(model: RobotModel, placed) -> tuple[list[float], np.ndarray]:
+def _subtree_sums(model: RobotModel, placed) -> tuple[np.ndarray, np.ndarray]:
     """For each link's row of ``placed``: the mass of its subtree (kg) and its first moment
     Σ m c (kg·m, in ``placed.frame``), each subtree added to its parent's in the reverse of
-    :func:`rbi.robot.tree.parents_first`'s order."""
+    :func:`rbi.robot.tree.parents_first`'s order: one level of the tree at a time, deepest
+    first, each level's links in that reverse order (``np.add.at`` adds in the order given, so
+    each parent receives the same sums in the same order as one link at a time)."""
     n = len(placed.translations)
-    mass = [0.0] * n
-    moment = np.zeros((n, 3))
+    mass = np.zeros(n + 1)  # row n: every root's parent, added to and dropped
+    first = np.zeros((n + 1, 3))
     chosen, masses, coms, _ = heavy_links(model, placed)
     if chosen:
         at = stack_apply(placed.placed_rotations[chosen], coms) + placed.placed_translations[chosen]
-        moment[chosen] = masses[:, None] * at
-        for row, value in zip(chosen, masses.tolist()):
-            mass[row] = value
-    first = moment.tolist()
-    for child, parent in reversed(placed.order):
-        if parent != n:
+        first[chosen] = masses[:, None] * at
+        mass[chosen] = masses
+    if placed.levels is None:  # no tree of its own keys: one link at a time
+        for child, parent in reversed(placed.order):
             mass[parent] += mass[child]
-            a, b = first[parent], first[child]
-            first[parent] = [a[0] + b[0], a[1] + b[1], a[2] + b[2]]
-    return mass, np.array(first).reshape(-1, 3)
+            first[parent] += first[child]
+        return mass[:n], first[:n]
+    for rows, parents in reversed(placed.levels):
+        rows, parents = rows[::-1], parents[::-1]
+        np.add.at(mass, parents, mass[rows])
+        np.add.at(first, parents, first[rows])
+    return mass[:n], first[:n]

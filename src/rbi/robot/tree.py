@@ -85,6 +85,10 @@ class Placement:
     placed_translations: np.ndarray
     order: list[tuple[int, int]]
     """(row, parent row) of each link in :func:`parents_first`'s order; a root's parent row is n."""
+    levels: list[tuple[list[int], list[int]]] | None
+    """The rows of each depth in the tree, shallowest first, in that order, with their parents' rows;
+    None when the links are no tree of their own keys (shared names, missing parents: ``order``
+    then holds them as :func:`parents_first` finds them)."""
     columns: LinkColumns | None = None
     """The model's links as arrays, when they were read in place of its links."""
 
@@ -132,7 +136,7 @@ def placement(
     t = np.empty((n + 1, 3))
     R[n], t[n] = np.eye(3), np.zeros(3)
     frames: dict[int, list] = {}
-    order, levels = _levels(model, columns)
+    order, levels, exact = _levels(model, columns)
     for level, parents in levels:
         level_R, level_t = _origins(model, columns, level)
         R[level] = np.matmul(R[parents], level_R)
@@ -153,7 +157,19 @@ def placement(
     placed_R = np.matmul(to_R, R)
     placed_t = stack_apply(to_R, t) + to_frame.translation
     return Placement(
-        rows, R, t, joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, order, columns
+        rows,
+        R,
+        t,
+        joint_list,
+        axes,
+        anchors,
+        frame,
+        to_frame,
+        placed_R,
+        placed_t,
+        order,
+        levels if exact else None,
+        columns,
     )
 
 
@@ -193,28 +209,33 @@ def _root(model: RobotModel, columns: LinkColumns | None) -> tuple[int | None, s
 
 def _levels(
     model: RobotModel, columns: LinkColumns | None = None
-) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]]]:
+) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]], bool]:
     """(row, parent row) in :func:`parents_first`'s order (a root's parent: row n, the identity),
-    and the same rows grouped by depth in the tree with their parents' rows, shallowest first."""
+    the same rows grouped by depth in the tree with their parents' rows, shallowest first, and
+    whether the links are a tree of their own keys (each link's key its own, each parent a link)."""
     if columns is not None:
         n = len(columns)
         parents = [n if parent < 0 else parent for parent in columns.parents]
-        by_name: dict = dict.fromkeys(range(n))
-    else:
-        links = model.links
-        n = len(links)
-        by_name = {link.key: row for row, link in enumerate(links)}
-        parents = [n if link.parent is None else by_name.get(link.parent, -1) for link in links]
+        return (*_grouped_levels(columns.order, parents, n), True)
+    links = model.links
+    n = len(links)
+    by_name = {link.key: row for row, link in enumerate(links)}
+    parents = [n if link.parent is None else by_name.get(link.parent, -1) for link in links]
     if len(by_name) == n and -1 not in parents:  # each key one link's, each parent a link
         children: list[list[int]] = [[] for _ in range(n + 1)]
         for row, parent in enumerate(parents):
             children[parent].append(row)
         rows = depth_first(children, n)  # parents_first's order, on rows
-    else:
-        links = model.links
-        row_of = {link.index: row for row, link in enumerate(links)}
-        rows = [row_of[link.index] for link in parents_first(model, by_name)]
-        parents = {row: n if links[row].parent is None else by_name[links[row].parent] for row in rows}
+        return (*_grouped_levels(rows, parents, n), True)
+    row_of = {link.index: row for row, link in enumerate(links)}
+    rows = [row_of[link.index] for link in parents_first(model, by_name)]
+    parent_of = {row: n if links[row].parent is None else by_name[links[row].parent] for row in rows}
+    return (*_grouped_levels(rows, parent_of, n), False)
+
+
+def _grouped_levels(rows: list[int], parents, n: int) -> tuple[list[tuple[int, int]], list]:
+    """:func:`_levels` of the ``rows`` in parents-first order, each with its parent's row
+    (``parents[row]``; n for a root)."""
     depth = [0] * (n + 1)
     order: list[tuple[int, int]] = []
     groups: list[tuple[list[int], list[int]]] = []
