@@ -190,19 +190,32 @@ class _Values:
         return self.codes[self.starts[k] : self.ends[k]].tobytes()
 
     def texts(self, which: np.ndarray) -> list[bytes]:
-        """The values of the indices ``which``, read at once as rows of a fixed-width array."""
-        distinct, inverse = self.distinct(which)
-        return distinct if len(distinct) == len(inverse) else [distinct[k] for k in inverse.tolist()]
+        """The values of the indices ``which``."""
+        found = self._rows(which)
+        if found is None:
+            return [b""] * len(which)
+        return found.view(f"S{found.shape[1]}").reshape(-1).tolist()
 
     def distinct(self, which: np.ndarray) -> tuple[list[bytes], np.ndarray]:
         """The distinct values of the indices ``which`` (in order of first appearance) and where
-        each index's value is among them, read at once as rows of a fixed-width array."""
+        each index's value is among them."""
+        found = self._rows(which)
+        if found is None:
+            return ([b""] if len(which) else []), np.zeros(len(which), dtype=int)
+        if np.all(found == found[0]):  # one text throughout (a generated file's column)
+            return [found[0].tobytes().rstrip(b"\0")], np.zeros(len(which), dtype=int)
+        texts = found.view(f"S{found.shape[1]}").reshape(-1).tolist()
+        places: dict[bytes, int] = {}
+        inverse = np.array([places.setdefault(text, len(places)) for text in texts], dtype=int)
+        return list(places), inverse
+
+    def _rows(self, which: np.ndarray) -> np.ndarray | None:
+        """The values of the indices ``which`` as rows of a (k, width) array of bytes, each
+        padded with NULs (no value holds one: expat refuses it); None when all are empty."""
         starts, lengths = self.starts[which], self.ends[which] - self.starts[which]
-        if not len(lengths):
-            return [], np.zeros(0, dtype=int)
-        width = int(lengths.max())
+        width = int(lengths.max()) if len(lengths) else 0
         if width == 0:
-            return [b""], np.zeros(len(lengths), dtype=int)
+            return None
         codes = self.codes
         if len(codes) < width + int(starts.max()):
             codes = np.concatenate([codes, np.zeros(width, dtype=np.uint8)])
@@ -210,13 +223,8 @@ class _Values:
             codes, shape=(len(codes) - width + 1, width), strides=(1, 1)
         )
         found = windows[starts]
-        found[np.arange(width) >= lengths[:, None]] = 0  # no value holds a NUL (expat refuses it)
-        if np.all(found == found[0]):  # one text throughout (a generated file's column)
-            return [found[0].tobytes().rstrip(b"\0")], np.zeros(len(lengths), dtype=int)
-        texts = found.view(f"S{width}").reshape(-1).tolist()
-        places: dict[bytes, int] = {}
-        inverse = np.array([places.setdefault(text, len(places)) for text in texts], dtype=int)
-        return list(places), inverse
+        found[np.arange(width) >= lengths[:, None]] = 0
+        return found
 
 
 def _grouped(blank: bytes, begins, stops, lows, highs, values: _Values) -> dict[bytes, _Rows]:
@@ -350,7 +358,8 @@ class _Rows:
         """The text at ``place`` of each element as str (``""`` where the attribute is not written)."""
         if place is None:
             return [""] * len(self)
-        return [each.decode() for each in self.column(place, b"")]
+        # one decoding for all: no value holds a line end (_values leaves those to the careful reader)
+        return b"\n".join(self.column(place, b"")).decode().split("\n")
 
 
 def _numbers(texts: list[bytes], count: int) -> np.ndarray:
@@ -542,8 +551,8 @@ def _joints(names: list[str], elements, path: str) -> dict:
     would refuse the file."""
     n = len(names)
     rows_of = {name: row for row, name in enumerate(names)}
-    parents, joint_names, kinds = [-1] * n, [""] * n, [None] * n
-    efforts: list[float | None] = [None] * n
+    parents = np.full(n, -1)
+    joint_names, kinds, efforts = np.full(n, "", dtype=object), np.full(n, None), np.full(n, None)
     rotations, translations, axes = np.empty((n, 3, 3)), np.zeros((n, 3)), np.zeros((n, 3))
     rotations[:] = np.eye(3)
     count = 0
@@ -565,26 +574,25 @@ def _joints(names: list[str], elements, path: str) -> dict:
         R, t = _poses(rows, top.child("origin"))
         found_axes = _axes(path, rows, top.child("axis"), kinds_read)
         found_efforts = _efforts(rows, top.child("limit"))
-        for k, row in enumerate(children):
-            if parents[row] != -1:
-                raise _Doubt  # a second parent: the careful reader words it
-            parents[row], joint_names[row], kinds[row] = parent_rows[k], words[k], kinds_read[k]
-            efforts[row] = found_efforts[k]
         at = np.array(children, dtype=int)
+        if np.any(parents[at] != -1) or len(np.unique(at)) != len(at):
+            raise _Doubt  # a link with a second parent: the careful reader words it
+        parents[at], joint_names[at], kinds[at], efforts[at] = parent_rows, words, kinds_read, found_efforts
         rotations[at], translations[at], axes[at] = R, t, found_axes
         count += len(rows)
-    order = _one_tree(parents)
-    if len({name for name in joint_names if name}) != count or order is None:
+    order = _one_tree(parents.tolist())
+    named = joint_names.tolist()
+    if len({name for name in named if name}) != count or order is None:
         raise _Doubt  # check_unique_joint_names or check_tree would refuse it: the careful reader words it
     return {
-        "parents": parents,
+        "parents": parents.tolist(),
         "order": order,
         "rotations": rotations,
         "translations": translations,
-        "joint_names": joint_names,
-        "joint_kinds": kinds,
+        "joint_names": named,
+        "joint_kinds": kinds.tolist(),
         "axes": axes,
-        "efforts": efforts,
+        "efforts": efforts.tolist(),
     }
 
 
