@@ -13,7 +13,7 @@ import numpy as np
 
 from rbi.core.rotation import quaternion_to_matrix
 from rbi.viz.labels import label, plain, pyplot
-from rbi.viz.solids import part_quads, shade
+from rbi.viz.solids import MAX_POINT_SPHERES, part_quads, segments_for, shade
 
 PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#6b8e23", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
 HOLE_RGBA = (0.88, 0.19, 0.19, 0.35)
@@ -32,14 +32,19 @@ def body_mesh(
     parts: list[dict[str, Any]], size: float, holes: bool = True, stripes: bool = True
 ) -> tuple[np.ndarray, np.ndarray]:
     """The parts as quads ``(n, 4, 3)`` with an RGBA colour each (stripes darker; holes red and
-    translucent, or left out when ``holes`` is false; point masses dark grey)."""
+    translucent, or left out when ``holes`` is false; point masses dark grey, or dots of
+    :func:`cloud_points` when there are many); thousands of round solids get fewer facets each
+    (:func:`rbi.viz.solids.segments_for`)."""
     from matplotlib.colors import to_rgba  # optional extra `plot`, loaded only to draw
 
+    dots = _points_as_dots(parts)
+    drawn = [
+        (i, p) for i, p in enumerate(parts) if (holes or not p.get("hole")) and not (dots and _is_point(p))
+    ]
+    segments = segments_for([item["kind"] for _, item in drawn])
     all_quads, all_colours = [], []
-    for index, item in enumerate(parts):
-        if item.get("hole") and not holes:
-            continue
-        quads, banded = part_quads(item, size)
+    for index, item in drawn:
+        quads, banded = part_quads(item, size, segments)
         if item.get("hole"):
             colours = np.tile(HOLE_RGBA, (len(quads), 1))
         elif item["kind"] == "point":
@@ -60,12 +65,25 @@ def body_mesh(
     return np.concatenate(all_quads), np.concatenate(all_colours)
 
 
+def _is_point(item: dict[str, Any]) -> bool:
+    return item["kind"] == "point"
+
+
+def _points_as_dots(parts: list[dict[str, Any]]) -> bool:
+    """Whether the point masses are drawn as dots: more than :data:`MAX_POINT_SPHERES` of them."""
+    return sum(map(_is_point, parts)) > MAX_POINT_SPHERES
+
+
 def cloud_points(parts: list[dict[str, Any]]) -> np.ndarray:
-    """Every point of a point cloud among the parts, ``(n, 3)``."""
+    """Every point drawn as a dot, ``(n, 3)``: the points of point clouds, and the point masses
+    when there are too many to draw as spheres (:func:`body_mesh`)."""
+    dots = _points_as_dots(parts)
     clouds = [
-        np.asarray(item["positions"], dtype=float).reshape(-1, 3)
+        np.asarray(item["positions"] if item["kind"] == "points" else item["position"], dtype=float).reshape(
+            -1, 3
+        )
         for item in parts
-        if item["kind"] == "points"
+        if item["kind"] == "points" or (dots and _is_point(item))
     ]
     return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 

@@ -15,7 +15,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from rbi.core.rotation import quaternion_to_matrix
 from rbi.spec.geometry import moved
-from rbi.viz.solids import part_quads
+from rbi.viz.solids import part_quads, segments_for
 
 MAX_TURN_PER_KEYFRAME = 0.5
 """Largest turn (rad) between two keyframes, so that slerp between them follows the motion."""
@@ -86,14 +86,16 @@ def animation_data(
 def drawn_points(parts: list[dict[str, Any]], size: float) -> np.ndarray:
     """Every corner of the drawn solids (a point mass drawn as its small sphere) and every cloud
     point, ``(n, 3)``, reduced to the corners of their convex hull (the extreme heights of a
-    turned body are there). Holes add nothing: they lie inside their solid."""
+    turned body are there). Holes add nothing: they lie inside their solid. Thousands of round
+    solids are taken with the facets a picture draws them with (:func:`segments_for`)."""
 
     pieces = [np.zeros((1, 3))]
+    segments = segments_for([item["kind"] for item in parts if not item.get("hole")])
     for item in parts:
         if item["kind"] == "points":
             pieces.append(np.asarray(item["positions"], dtype=float).reshape(-1, 3))
         elif not item.get("hole"):
-            quads, _ = part_quads(item, size)
+            quads, _ = part_quads(item, size, segments)
             pieces.append(quads.reshape(-1, 3))
     points = np.unique(np.concatenate(pieces), axis=0)
     if len(points) > 64:

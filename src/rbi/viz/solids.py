@@ -8,6 +8,7 @@ axis, so a turn about that axis can be seen). Nothing here draws; numpy only.
 
 from __future__ import annotations
 
+from collections import Counter
 from typing import Any
 
 import numpy as np
@@ -19,6 +20,12 @@ SEGMENTS = 32
 STRIPES = 8
 POINT_RADIUS_FRACTION = 0.035
 """Radius of the small sphere drawn for a point mass, as a fraction of the body's size."""
+QUAD_BUDGET = 100_000
+"""Most quads a picture of the round solids may take: a body of thousands of parts is drawn with
+fewer facets each (at least 4 around), so a picture stays some MB and some seconds (512 quads a
+sphere made a 117 MB SVG of 1000 point masses)."""
+MAX_POINT_SPHERES = 64
+"""Point masses beyond this many are drawn as dots (one marker each) rather than as spheres."""
 
 
 def _perpendiculars(axis: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
@@ -39,17 +46,20 @@ def _stripe_flags(rows: int, columns: int) -> np.ndarray:
     return np.tile(band, rows)
 
 
-def frustum_quads(start, end, start_radius: float, end_radius: float, inner_radius: float = 0.0):
-    """Side, end caps (annuli when ``inner_radius`` > 0) and inner wall of a frustum."""
+def frustum_quads(
+    start, end, start_radius: float, end_radius: float, inner_radius: float = 0.0, segments: int = SEGMENTS
+):
+    """Side, end caps (annuli when ``inner_radius`` > 0) and inner wall of a frustum, ``segments``
+    facets around."""
     a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
     axis = unit_vector(b - a) if np.any(b != a) else np.array([0.0, 0.0, 1.0])
     u, v = _perpendiculars(axis)
-    angles = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)
+    angles = np.linspace(0.0, 2 * np.pi, segments + 1)
     ring = np.cos(angles)[:, None] * u + np.sin(angles)[:, None] * v  # (S+1, 3)
 
     def surface(r0, p0, r1, p1):
         points = np.stack((p0 + r0 * ring, p1 + r1 * ring))
-        return _grid_quads(points), _stripe_flags(1, SEGMENTS)
+        return _grid_quads(points), _stripe_flags(1, segments)
 
     pieces = [
         surface(start_radius, a, end_radius, b),
@@ -61,11 +71,11 @@ def frustum_quads(start, end, start_radius: float, end_radius: float, inner_radi
     return _join(pieces)
 
 
-def ellipsoid_quads(center, semi_axes, rotation):
+def ellipsoid_quads(center, semi_axes, rotation, segments: int = SEGMENTS):
     """A latitude-longitude mesh of the ellipsoid (stripes around the part's z axis)."""
-    rows = SEGMENTS // 2
+    rows = segments // 2
     polar = np.linspace(0.0, np.pi, rows + 1)[:, None]
-    azimuth = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
+    azimuth = np.linspace(0.0, 2 * np.pi, segments + 1)[None, :]
     local = np.stack(
         (
             np.sin(polar) * np.cos(azimuth),
@@ -75,7 +85,7 @@ def ellipsoid_quads(center, semi_axes, rotation):
         axis=-1,
     ) * np.asarray(semi_axes, dtype=float)
     points = local @ np.asarray(rotation, dtype=float).T + np.asarray(center, dtype=float)
-    return _grid_quads(points), _stripe_flags(rows, SEGMENTS)
+    return _grid_quads(points), _stripe_flags(rows, segments)
 
 
 def box_quads(center, size, rotation):
@@ -89,45 +99,46 @@ def box_quads(center, size, rotation):
     return quads, np.zeros(6, dtype=bool)
 
 
-def torus_quads(center, axis, major_radius: float, minor_radius: float):
+def torus_quads(center, axis, major_radius: float, minor_radius: float, segments: int = SEGMENTS):
     """A ring mesh; stripes around the ring's axis."""
     axis = unit_vector(axis)
     u, v = _perpendiculars(axis)
-    around = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
-    tube = np.linspace(0.0, 2 * np.pi, SEGMENTS // 2 + 1)[:, None]
+    around = np.linspace(0.0, 2 * np.pi, segments + 1)[None, :]
+    tube = np.linspace(0.0, 2 * np.pi, segments // 2 + 1)[:, None]
     radial = np.cos(around)[..., None] * u + np.sin(around)[..., None] * v  # (1, S+1, 3)
     points = (
         np.asarray(center, dtype=float)
         + (major_radius + minor_radius * np.cos(tube))[..., None] * radial
         + (minor_radius * np.sin(tube))[..., None] * axis
     )
-    return _grid_quads(points), _stripe_flags(SEGMENTS // 2, SEGMENTS)
+    return _grid_quads(points), _stripe_flags(segments // 2, segments)
 
 
-def hemisphere_quads(center, axis, radius: float):
+def hemisphere_quads(center, axis, radius: float, segments: int = SEGMENTS):
     """Dome and flat face; stripes around the axis."""
     axis = unit_vector(axis)
     u, v = _perpendiculars(axis)
-    rows = SEGMENTS // 4
+    rows = max(1, segments // 4)
     polar = np.linspace(0.0, np.pi / 2, rows + 1)[:, None]
-    azimuth = np.linspace(0.0, 2 * np.pi, SEGMENTS + 1)[None, :]
+    azimuth = np.linspace(0.0, 2 * np.pi, segments + 1)[None, :]
     points = np.asarray(center, dtype=float) + radius * (
         (np.sin(polar) * np.cos(azimuth))[..., None] * u
         + (np.sin(polar) * np.sin(azimuth))[..., None] * v
         + np.cos(polar)[..., None] * axis
     )
-    dome = (_grid_quads(points), _stripe_flags(rows, SEGMENTS))
+    dome = (_grid_quads(points), _stripe_flags(rows, segments))
     ring = np.cos(azimuth[0])[:, None] * u + np.sin(azimuth[0])[:, None] * v
     centre = np.asarray(center, dtype=float)
-    face = (_grid_quads(np.stack((centre + 0.0 * ring, centre + radius * ring))), _stripe_flags(1, SEGMENTS))
+    face = (_grid_quads(np.stack((centre + 0.0 * ring, centre + radius * ring))), _stripe_flags(1, segments))
     return _join([dome, face])
 
 
-def capsule_quads(start, end, radius: float):
+def capsule_quads(start, end, radius: float, segments: int = SEGMENTS):
     """Cylinder from ``start`` to ``end`` with a hemispherical cap on each end."""
     a, b = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
-    side = frustum_quads(a, b, radius, radius)
-    return _join([side, hemisphere_quads(b, b - a, radius), hemisphere_quads(a, a - b, radius)])
+    side = frustum_quads(a, b, radius, radius, segments=segments)
+    caps = [hemisphere_quads(b, b - a, radius, segments), hemisphere_quads(a, a - b, radius, segments)]
+    return _join([side, *caps])
 
 
 def mesh_quads(vertices, faces):
@@ -140,8 +151,32 @@ def _join(pieces):
     return np.concatenate([p[0] for p in pieces]), np.concatenate([p[1] for p in pieces])
 
 
-def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarray]:
-    """Quads and stripe flags of one primitive; ``size``: the body's size (for point masses)."""
+def _round_quads(kind: str, segments: int) -> int:
+    """How many quads a round solid of ``kind`` takes at ``segments`` facets around."""
+    ring = segments // 4 * segments + segments  # a dome and its flat face
+    return {
+        "frustum": 4 * segments,
+        "ellipsoid": segments * segments // 2,
+        "point": segments * segments // 2,
+        "torus": segments * segments // 2,
+        "hemisphere": ring,
+        "capsule": 3 * segments + 2 * ring,
+    }.get(kind, 0)
+
+
+def segments_for(kinds: list[str]) -> int:
+    """Facets around each round solid of a picture of parts of these ``kinds``: the most (even,
+    at most :data:`SEGMENTS`, at least 4) that keeps them within :data:`QUAD_BUDGET` quads."""
+    counts = Counter(kinds)
+    for segments in range(SEGMENTS, 4, -2):
+        if sum(n * _round_quads(kind, segments) for kind, n in counts.items()) <= QUAD_BUDGET:
+            return segments
+    return 4
+
+
+def part_quads(item: dict[str, Any], size: float, segments: int = SEGMENTS) -> tuple[np.ndarray, np.ndarray]:
+    """Quads and stripe flags of one primitive; ``size``: the body's size (for point masses);
+    ``segments``: facets around a round solid."""
     kind = item["kind"]
     if kind == "frustum":
         return frustum_quads(
@@ -150,15 +185,16 @@ def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarra
             item["start_radius"],
             item["end_radius"],
             item.get("inner_radius", 0.0),
+            segments,
         )
     if kind == "ellipsoid":
-        return ellipsoid_quads(item["center"], item["semi_axes"], item["rotation"])
+        return ellipsoid_quads(item["center"], item["semi_axes"], item["rotation"], segments)
     if kind == "torus":
-        return torus_quads(item["center"], item["axis"], item["major_radius"], item["minor_radius"])
+        return torus_quads(item["center"], item["axis"], item["major_radius"], item["minor_radius"], segments)
     if kind == "hemisphere":
-        return hemisphere_quads(item["center"], item["axis"], item["radius"])
+        return hemisphere_quads(item["center"], item["axis"], item["radius"], segments)
     if kind == "capsule":
-        return capsule_quads(item["start"], item["end"], item["radius"])
+        return capsule_quads(item["start"], item["end"], item["radius"], segments)
     if kind == "mesh":
         return mesh_quads(item["vertices"], item["faces"])
     if kind == "points":  # drawn as dots, not as surfaces
@@ -169,7 +205,7 @@ def part_quads(item: dict[str, Any], size: float) -> tuple[np.ndarray, np.ndarra
             item["center"], np.maximum(np.asarray(item["size"], dtype=float), floor), item["rotation"]
         )
     radius = POINT_RADIUS_FRACTION * size
-    return ellipsoid_quads(item["position"], [radius] * 3, np.eye(3))
+    return ellipsoid_quads(item["position"], [radius] * 3, np.eye(3), segments)
 
 
 def shade(quads: np.ndarray, colors: np.ndarray, light=(0.35, -0.45, 0.82)) -> np.ndarray:
