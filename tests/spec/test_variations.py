@@ -65,3 +65,42 @@ def test_a_varied_radius_changes_the_mass_of_a_density_part_and_the_original_is_
     disc_mass = 7800 * math.pi * 0.2**2 * 0.02
     assert body.props.mass == pytest.approx(disc_mass + 0.02 + 1, rel=1e-12)
     assert raw["parts"][0]["radius"] == 0.1
+
+
+NAMED = """
+name: named
+parts:
+  - {name: cone, shape: cone, mass: 0.4, radius: 0.04, apex: [0, 0, 0], base: [0, 0, 0.06]}
+  - {name: bolt.1, shape: point, mass: 0.02, position: [0.04, 0, 0.06]}
+  - {name: bolt, shape: point, mass: 0.05, position: [-0.04, 0, 0.06]}
+  - {name: "a=b", shape: point, mass: 0.03, position: [0, 0.04, 0.06]}
+"""
+
+
+def test_a_part_named_with_dots_is_reached_by_its_name(write_spec):
+    """`parts.bolt.1.mass` is the part named 'bolt.1' (a name the spec allows), not 'bolt'; the
+    shorter name still reaches its own part."""
+    raw = read_yaml(write_spec(NAMED))
+    assert resolve(raw, "parts.bolt.1.mass").steps == ("parts", 1, "mass")
+    assert resolve(raw, "parts.bolt.1.position[0]").steps == ("parts", 1, "position", 0)
+    assert resolve(raw, "parts.bolt.mass").steps == ("parts", 2, "mass")
+    assert current_values(raw, [resolve(raw, "parts.bolt.1.mass"), resolve(raw, "parts.a=b.mass")]) == [
+        0.02,
+        0.03,
+    ]
+
+
+@pytest.mark.parametrize("path, other", [("parts.bolt.1.mass", 0.05 + 0.03), ("parts.a=b.mass", 0.02 + 0.05)])
+def test_sweep_varies_parts_named_with_dots_and_equals_signs(write_spec, path, other):
+    """The command line splits PATH=RANGE at the last '=' (a range has none): the body's mass
+    is the cone's 0.4 plus the varied part plus the other two points, run by run."""
+    from tests.conftest import run_rbi
+
+    spec = write_spec(NAMED)
+    done = run_rbi("sweep", spec, "--mass-properties", "--vary", f"{path}=0.01:0.03:2", "--format", "csv")
+    assert done.returncode == 0, done.stderr
+    rows = list(__import__("csv").DictReader(__import__("io").StringIO(done.stdout)))
+    assert [float(r[path]) for r in rows] == [0.01, 0.03]
+    assert [float(r["mass"]) for r in rows] == pytest.approx(
+        [0.4 + 0.01 + other, 0.4 + 0.03 + other], rel=1e-14
+    )

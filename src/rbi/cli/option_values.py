@@ -112,7 +112,7 @@ def vary_option(items: list[str]) -> dict[str, Any]:
     """``--vary PATH=RANGE`` items as ``rbi.sweep``'s ``vary``: path → values."""
     vary: dict[str, Any] = {}
     for item in items:
-        path, sep, text = item.partition("=")
+        path, sep, text = item.rpartition("=")  # a range has no '=', a part's name may
         if not sep:
             raise SpecError(f"--vary {item}: expected PATH=RANGE, e.g. parts.bolt.mass=0.01:0.03:5")
         path = path.strip()

@@ -58,17 +58,22 @@ def resolve(raw: Any, text: str) -> FieldPath:
         raise ArgumentError("vary", str(exc), item=text) from None
     steps: list[Any] = []
     node = raw
-    for k, token in enumerate(tokens):
-        where = _written(tokens[:k])
+    k = 0
+    while k < len(tokens):
+        token, where = tokens[k], _written(tokens[:k])
         if isinstance(node, list):
-            index = _list_index(node, token)
+            index, used = _named_entry(node, tokens, k)
+            if index is None:
+                index, used = _list_index(node, token), 1
             if index is None:
                 names = [p.get("name") for p in node if isinstance(p, dict) and p.get("name") is not None]
                 known = f" (parts: {', '.join(map(str, names[:12]))})" if names else ""
                 raise ArgumentError("vary", f"{where} has no entry {token!r}{known}", item=text)
             steps.append(index)
             node = node[index]
-        elif isinstance(node, dict):
+            k += used
+            continue
+        if isinstance(node, dict):
             if not isinstance(token, str) or token not in node:
                 fields = ", ".join(sorted(map(str, node)))
                 raise ArgumentError(
@@ -78,6 +83,7 @@ def resolve(raw: Any, text: str) -> FieldPath:
                 )
             steps.append(token)
             node = node[token]
+            k += 1
         else:
             raise ArgumentError("vary", f"{where} is a single value, not a list or mapping", item=text)
     if isinstance(node, bool) or not isinstance(node, (int, float)):
@@ -91,6 +97,20 @@ def _written(tokens: list[Any]) -> str:
     for token in tokens:
         text += f"[{token}]" if isinstance(token, int) else ("." if text else "") + str(token)
     return text or "the spec"
+
+
+def _named_entry(items: list, tokens: list[Any], k: int) -> tuple[int | None, int]:
+    """The entry of ``items`` whose name is the longest run of name tokens from ``k`` joined by
+    dots (a part named ``bolt.1`` is ``parts.bolt.1.mass``), and how many tokens it took."""
+    names = {item.get("name"): i for i, item in enumerate(items) if isinstance(item, dict)}
+    run = 0
+    while k + run < len(tokens) and isinstance(tokens[k + run], str):
+        run += 1
+    for used in range(run, 1, -1):
+        index = names.get(".".join(tokens[k : k + used]))
+        if index is not None:
+            return index, used
+    return None, 1
 
 
 def _list_index(items: list, token: Any) -> int | None:
