@@ -263,3 +263,38 @@ def test_mjcf_quaternion_of_any_size_turns_the_inertial_frame(tmp_path):
     )  # x and y swapped by the turn
     for other in results[1:]:
         np.testing.assert_allclose(other, results[0], atol=1e-15)
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "- {shape: cylinder, mass: 1.0e-300, radius: 1.0e-160, start: [0, 0, 0], end: [0, 0, 2.0e-160]}",
+        "- {shape: sphere, mass: 1.0e-200, radius: 1.0e-60, center: [0, 0, 0]}",
+        "- {shape: box, mass: 1.0e-250, size: [1.0e-40, 1.0e-40, 1.0e-40], center: [0, 0, 0]}",
+    ],
+)
+@pytest.mark.parametrize("copies", [1, 40])  # 40: the batched path for many parts
+def test_a_solid_whose_moments_underflow_is_refused_not_printed_as_zero(write_spec, text, copies):
+    """Found: a cylinder of mass 1e-300 and radius 1e-160 printed an inertia of exactly zero
+    (the true moments, about 1e-620, are below the smallest double): a solid with size and
+    mass has moments; zeros would be a wrong answer. One line naming the part, exit 2."""
+    proc = run_rbi_inprocess(
+        "inertia", write_spec("parts:\n" + ("  " + text + "\n") * copies), "--format", "json"
+    )
+    one_line_exit_2(proc, "parts[0]", "too small")
+
+
+def test_point_masses_keep_their_zero_moments(write_spec):
+    """A point mass has no moments about its own centre: not an underflow. Two of 1e-300 kg at
+    ±1 m: I_yy = I_zz = 2e-300 kg·m², I_xx = 0."""
+    proc = run_rbi_inprocess(
+        "inertia",
+        write_spec(
+            "parts:\n  - {shape: point, mass: 1.0e-300, position: [1, 0, 0]}\n"
+            "  - {shape: point, mass: 1.0e-300, position: [-1, 0, 0]}\n"
+        ),
+        "--format",
+        "json",
+    )
+    assert proc.returncode == 0, proc.stderr
+    np.testing.assert_allclose(np.diag(json.loads(proc.stdout)["inertia"]), [0, 2e-300, 2e-300], rtol=1e-15)

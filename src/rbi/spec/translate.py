@@ -20,7 +20,7 @@ from rbi.spec.holes import check_holes
 from rbi.spec.materials import density_in_units
 from rbi.spec.pattern import patterned
 from rbi.spec.plausibility import unit_warnings
-from rbi.spec.translate_batch import MIN_PARTS, batch_elements
+from rbi.spec.translate_batch import MIN_PARTS, SMALLEST_MOMENT, batch_elements, moments_lost
 from rbi.spec.units import LENGTH_UNITS_IN_M, unit_labels
 from rbi.spec.volumes import one_volume
 
@@ -295,6 +295,12 @@ def _finite_element(index: int, part, units: models.Units, path: str) -> MassPro
         raise InputError(
             f"{path}: {part_label(index, part)}: numbers too large: mass or inertia overflows "
             f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?"
+        )
+    if element.mass != 0 and moments_lost(element.inertia_about_com, part.shape):
+        raise InputError(
+            f"{path}: {part_label(index, part)}: numbers too small: its moments of inertia underflow "
+            f"(below {SMALLEST_MOMENT:.2g}, where a double keeps fewer than 9 digits); is the unit of "
+            "its sizes or mass right?"
         )
     return element
 

@@ -129,11 +129,31 @@ def _plain(part: Any, fields: set[str]) -> bool:
     return "rotation" not in fields or part.rotation is None
 
 
+WITHOUT_OWN_MOMENTS = ("point", "custom")
+"""Shapes whose moments about their own centre may be zero: a point mass, and moments given as
+written. Every other shape with a mass has moments of its own."""
+
+
+SMALLEST_MOMENT = 1e9 * float(np.finfo(float).smallest_subnormal)
+"""Below this (4.9e-315) a double keeps fewer than 9 significant digits: moments there have lost
+their digits or vanished (subnormal moments above it, such as a ball of the smallest normal mass,
+keep 12 and are computed)."""
+
+
+def moments_lost(inertia: np.ndarray, shape: str) -> np.ndarray:
+    """Whether the moments of solids of ``shape`` (inertia ``(..., 3, 3)`` about their own centre)
+    underflowed: all below :data:`SMALLEST_MOMENT`, so they would print as zeros or as digits-less
+    subnormals (a mass of 1e-300 with a size of 1e-160: the true moments are 1e-620)."""
+    largest = np.max(np.abs(np.diagonal(inertia, axis1=-2, axis2=-1)), axis=-1)
+    return np.asarray((shape not in WITHOUT_OWN_MOMENTS) & (largest < SMALLEST_MOMENT))
+
+
 def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassProperties], set[int]]:
     """``(elements, holes)``: the mass elements (file units, as written: not negated) of the
     plain parts of the batched shapes, by index in ``parts``, and which of those indices are
     holes (``subtract: true``). Parts left out go through the per-part path; so do elements
-    whose numbers are not all finite, so that the per-part path reports them naming the part."""
+    whose numbers are not all finite or whose moments underflowed (:func:`moments_lost`), so
+    that the per-part path reports them naming the part."""
     groups: dict[type, list[int]] = {}
     fields_of: dict[type, set[str]] = {}
     for i, part in enumerate(parts):
@@ -155,6 +175,7 @@ def batch_elements(parts: list, units: models.Units) -> tuple[dict[int, MassProp
                 np.isfinite(mass)
                 & np.all(np.isfinite(com), axis=1)
                 & np.all(np.isfinite(inertia), axis=(1, 2))
+                & ~moments_lost(inertia, chosen[0].shape)
             )
         masses = mass.tolist()
         ok = finite.tolist()
