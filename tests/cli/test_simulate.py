@@ -9,7 +9,7 @@ import json
 import numpy as np
 import pytest
 
-from tests.conftest import BODIES, run_rbi
+from tests.conftest import BODIES, one_line_exit_2, run_rbi, run_rbi_inprocess
 
 BOLTED = BODIES / "top_bolted.yaml"
 TOP = BODIES / "top.yaml"
@@ -182,3 +182,20 @@ def test_plot_without_matplotlib_says_how_to_install_it(tmp_path, monkeypatch):
     proc = run_rbi("simulate", TOP, "--spin", "200", "--plot", tmp_path / "x.png")
     assert proc.returncode == 2 and "pip install '.[plot]'" in proc.stderr and "rbi[plot]" not in proc.stderr
     assert not (tmp_path / "x.png").exists()
+
+
+def test_out_to_stdout_with_format_json_is_refused_not_printed_as_csv():
+    """`--out -` streams the trajectory CSV to standard output, where `--format json` promises
+    exactly one JSON object: the two cannot share it. Before: the CSV was printed and exit 0,
+    so a script reading JSON got CSV. Now exit 2, one line naming both options. `--format csv`
+    (or the default table) with `--out -` still streams the trajectory: 3 rows of the
+    contract's columns, t = 0, 0.025, 0.05."""
+    args = ["simulate", str(BODIES / "top.yaml"), "--spin", "1", "--duration", "0.05", "--samples", "3"]
+    proc = run_rbi_inprocess(*args, "--out", "-", "--format", "json")
+    one_line_exit_2(proc, "--out", "--format json")
+    assert proc.stdout == ""
+    for form in ("csv", "table"):
+        done = run_rbi_inprocess(*args, "--out", "-", "--format", form)
+        rows = list(csv.reader(io.StringIO(done.stdout)))
+        assert done.returncode == 0 and rows[0][:8] == ["t", "qw", "qx", "qy", "qz", "wx", "wy", "wz"]
+        assert [float(r[0]) for r in rows[1:]] == [0.0, 0.025, 0.05]

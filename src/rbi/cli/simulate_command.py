@@ -8,7 +8,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from rbi import api
+from rbi import SpecError, api
 from rbi.api import check_distinct, output_target, write_output
 from rbi.cli.option_values import run_settings
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require_matplotlib
@@ -102,6 +102,11 @@ def simulate(
 
     out_target, plot_target = _targets(file, out, plot)
     if out_target is not None and out_target.is_stdout:
+        if format == OutputFormat.json:  # one JSON object on stdout, or the trajectory: not both
+            raise SpecError(
+                "--out -: the trajectory goes to standard output, where --format json prints its "
+                "object; write the trajectory to a file (--out FILE.csv) or leave out --format json"
+            )
         format = OutputFormat.csv  # the trajectory is what goes to standard output
     settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
     settings |= dict(duration=duration, method=method, rtol=rtol, max_steps=max_steps)
