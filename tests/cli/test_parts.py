@@ -94,3 +94,25 @@ def test_the_centre_of_mass_table_prints_rounding_noise_as_zero_and_keeps_real_o
     assert rows["total"] == ["0", "0.0005", "0"]
     out, _ = parts_json(spec)
     assert out["parts"][0]["center_of_mass"][0] == 1e-17
+
+
+def test_the_table_of_thousands_of_parts_lists_the_first_and_counts_the_rest(write_spec):
+    """Found: `rbi parts` of 10,000 parts took 25 s in table form (1.7 s as JSON) laying out
+    30,000 rich rows nobody reads. The table lists the first 200 parts of each section, says
+    how many more there are and where to find them, and keeps the body's total: 1000 points of
+    1 g weigh 1 kg. JSON and CSV still list every part."""
+    lines = ["parts:"] + [
+        f"  - {{name: p{i}, shape: point, mass: 0.001, position: [{i % 10}, {i // 10 % 10}, {i // 100}]}}"
+        for i in range(1000)
+    ]
+    path = write_spec("\n".join(lines) + "\n")
+    table = rbi("parts", path)
+    assert table.returncode == 0, table.stderr
+    rows = table.stdout.splitlines()
+    assert sum(line.split()[:1] == ["p199"] for line in rows) == 3  # the 200th part, in each section
+    assert not any(line.split()[:1] == ["p200"] for line in rows)
+    assert sum("800 more parts" in line for line in rows) == 3
+    total = next(line for line in rows if line.split()[:1] == ["total"])
+    assert float(total.split()[1]) == pytest.approx(1.0, rel=1e-12)
+    assert len(json.loads(rbi("parts", path, "--format", "json").stdout)["parts"]) == 1000
+    assert len(rbi("parts", path, "--format", "csv").stdout.splitlines()) == 1001

@@ -164,9 +164,14 @@ def _places_table(body, rows, names: list, length: str, title: str):
     )
 
 
+MAX_TABLE_PARTS = 200
+"""Most parts a table lists (then a line saying how many more): 10,000 rows took rich 25 s to
+lay out, and a person reads the CSV or JSON of a body that large, which list every part."""
+
+
 def _titled_table(title: str, names: list, headers, cells, total_row):
     """Numbers never wrap (a column of them is as wide as its widest number); part names
-    and shapes wrap in a narrow terminal."""
+    and shapes wrap in a narrow terminal. At most :data:`MAX_TABLE_PARTS` parts are listed."""
 
     t = tables.titled(title)
     t.add_column("part", overflow="fold")
@@ -179,8 +184,10 @@ def _titled_table(title: str, names: list, headers, cells, total_row):
             no_wrap=numbers,
             overflow="fold",
         )
-    for part_name, row in zip(names, cells):
+    for part_name, row in zip(names[:MAX_TABLE_PARTS], cells):
         t.add_row(part_name, *row)
+    if len(names) > MAX_TABLE_PARTS:
+        t.add_row(f"… {len(names) - MAX_TABLE_PARTS} more parts")  # CSV and JSON list them all
     t.add_section()
     t.add_row("total", *total_row)
     return t
