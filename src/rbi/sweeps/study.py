@@ -293,7 +293,12 @@ class Study:
         and the sleeping threshold (rad/s) when the first one is the spin (else None)."""
         if self.settings.mass_properties:
             raise ArgumentError("plot", "a map needs simulated runs (not {mass_properties})")
-        swept = [a.name for a in self.plan.axes if self.plan.is_grid_axis(a.name)]
+        # a grid axis of several values, or a value drawn afresh for each of several runs
+        swept = [
+            a.name
+            for a in self.plan.axes
+            if self.plan.is_grid_axis(a.name) or (isinstance(a, Draw) and self.plan.runs > 1)
+        ]
         if not swept:
             raise ArgumentError("plot", "the map needs at least one axis with more than one value")
         threshold = None

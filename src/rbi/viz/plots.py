@@ -204,8 +204,10 @@ def plot_stability_map(
 
 
 def _tilt_against_one_axis(ax, xs: np.ndarray, values: np.ndarray, finite: np.ndarray) -> None:
-    """The largest tilt of each run against the one swept axis; failed runs marked on the floor."""
-    ax.semilogy(xs[finite], np.maximum(values[finite], 1e-6), "o-", ms=3, lw=1)
+    """The largest tilt of each run against the one swept axis (in the axis' order: drawn values
+    come in any order); failed runs marked on the floor."""
+    order = np.argsort(xs[finite], kind="stable")
+    ax.semilogy(xs[finite][order], np.maximum(values[finite], 1e-6)[order], "o-", ms=3, lw=1)
     ax.set_ylabel("largest tilt [deg]")
     if np.any(~finite):
         ax.plot(
