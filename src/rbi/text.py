@@ -37,6 +37,8 @@ def visible(text: str, keep: str = "") -> str:
     backslash already in ``text`` is kept as it is: this is for the eye, not for reading back
     (data goes through the YAML or JSON writer). The one escaper for terminals, listings, YAML
     comments and picture labels."""
+    if text.isascii() and text.isprintable():  # U+0020 to U+007E: nothing hidden (fast, in C)
+        return text
     if not any(is_hidden(c) for c in text):
         return text
     out = []

@@ -168,7 +168,8 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
             "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable],
         }
 
-    emit(format.value, result, lambda: None, csv_rows=[_csv_row(each) for each in report.links])
+    rows = [_csv_row(each) for each in report.links] if format is OutputFormat.csv else None
+    emit(format.value, result, lambda: None, csv_rows=rows)
 
 
 def _csv_row(each) -> dict:

@@ -184,12 +184,17 @@ def emit(
     lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``;
     ``source`` names the file in an error."""
     flat = plain(result)
+    if fmt == "json":  # the encoder finds a NaN or inf as it writes (an audit's JSON has millions)
+        try:
+            text = json.dumps(flat, allow_nan=False)
+        except ValueError:
+            _refuse_non_finite_plain(flat, source)
+            raise
+        sys.stdout.write(text + "\n")
+        return
     _refuse_non_finite_plain(flat, source)
-    if fmt != "json":
-        say_warnings(result.get("warnings", ()))
-    if fmt == "json":  # every float is finite (refused above), so what to_json gives:
-        sys.stdout.write(json.dumps(flat) + "\n")
-    elif fmt == "csv":
+    say_warnings(result.get("warnings", ()))
+    if fmt == "csv":
         sys.stdout.write(to_csv(csv_rows if csv_rows is not None else [result]))
     else:
         print_table(table())
@@ -361,12 +366,55 @@ def fitted(renderable, console):
     if not isinstance(renderable, Table):
         return renderable
     title, renderable.title = renderable.title, None
+    plain_lines = _long_table_lines(renderable, console) if renderable.row_count > LONG_TABLE_ROWS else None
+    if plain_lines is not None:
+        body = Segments([segment for line in plain_lines for segment in (Segment(line), Segment.line())])
+        return Group(_line(title), body) if title else body
     lines = _lines_if_intact(renderable, console)
     if lines is None:
         renderable.title = title
         return stacked(renderable, console.width)
     body = Segments([segment for line in lines for segment in (*line, Segment.line())])
     return Group(_line(title), body) if title else body
+
+
+LONG_TABLE_ROWS = 500
+"""Tables longer than this (a robot of 10⁵ links) are laid out by :func:`_long_table_lines`
+when they fit the terminal: rich takes about a millisecond a row, 100 s for such a robot."""
+
+
+def _long_table_lines(table, console) -> list[str] | None:
+    """The lines rich prints for ``table`` (rbi's style, :func:`rbi.cli.tables.titled`: no edge,
+    a rule under the header, one space of padding, one between columns; no title), made
+    directly, when every cell is plain text on one line and the columns at their natural widths
+    fit ``console``; else None (rich lays it out). Plain text: rich's header style is left out,
+    as it is for any output that is not a terminal."""
+    # not at top level: `rbi inertia --format json` would load rich too
+    from rich import box
+    from rich.cells import cell_len
+
+    if table.box is not box.SIMPLE_HEAD or table.show_edge or not table.show_header or table.show_footer:
+        return None
+    if tuple(table.padding) != (0, 1, 0, 1) or not (console.encoding or "").lower().startswith("utf"):
+        return None
+    columns = []
+    for column in table.columns:
+        if column.justify not in ("left", "right") or column.width or column.min_width or column.max_width:
+            return None
+        texts = [_cell_text(cell) for cell in (column.header, *column.cells)]
+        if any(text is None or "\n" in text for text in texts):
+            return None
+        columns.append((column.justify, texts, max(map(cell_len, texts))))
+    width = sum(w + 2 for _, _, w in columns) + len(columns) - 1
+    if width > console.width:
+        return None
+
+    def cell(justify: str, text: str, w: int) -> str:
+        pad = " " * (w - cell_len(text))
+        return f" {text}{pad} " if justify == "left" else f" {pad}{text} "
+
+    rows = [" ".join(cell(j, texts[i], w) for j, texts, w in columns) for i in range(len(columns[0][1]))]
+    return [rows[0], "─" * width, *rows[1:]]
 
 
 def _lines_if_intact(table, console):
@@ -392,6 +440,8 @@ def _cell_text(cell) -> str | None:
 
     if isinstance(cell, Text):
         return cell.plain
+    if isinstance(cell, str) and "[" not in cell:  # no markup to read (most cells: numbers, names)
+        return cell
     return Text.from_markup(cell).plain if isinstance(cell, str) else None
 
 
