@@ -25,6 +25,7 @@ from rbi.core.mass import MassProperties
 from rbi.core.rotation import euler_matrix, quaternion_to_matrix, without_rounding_noise
 from rbi.core.validity import overflowing_sum, subnormal_problem
 from rbi.errors import InputError
+from rbi.text import visible
 
 LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
 
@@ -502,8 +503,10 @@ def unit(where: Where, vector, what: str) -> np.ndarray:
 
 
 def short(text: Any, limit: int = 40) -> str:
-    text = "" if text is None else str(text)
-    text = text.encode("unicode_escape").decode("ascii")
+    """A name or value from a robot file as a message shows it: hidden characters escaped by the
+    one terminal escaper (:func:`rbi.text.visible`; letters such as ``ü`` shown as they are),
+    cut to ``limit`` characters."""
+    text = visible("" if text is None else str(text))
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
