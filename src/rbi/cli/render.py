@@ -404,16 +404,19 @@ def _long_table_lines(table, console) -> list[str] | None:
         texts = [_cell_text(cell) for cell in (column.header, *column.cells)]
         if any(text is None or "\n" in text for text in texts):
             return None
-        columns.append((column.justify, texts, max(map(cell_len, texts))))
-    width = sum(w + 2 for _, _, w in columns) + len(columns) - 1
+        lengths = list(map(cell_len, texts))
+        columns.append((column.justify, texts, lengths, max(lengths)))
+    width = sum(w + 2 for *_, w in columns) + len(columns) - 1
     if width > console.width:
         return None
 
-    def cell(justify: str, text: str, w: int) -> str:
-        pad = " " * (w - cell_len(text))
-        return f" {text}{pad} " if justify == "left" else f" {pad}{text} "
+    def cell(justify: str, text: str, pad: int) -> str:
+        return f" {text}{' ' * pad} " if justify == "left" else f" {' ' * pad}{text} "
 
-    rows = [" ".join(cell(j, texts[i], w) for j, texts, w in columns) for i in range(len(columns[0][1]))]
+    rows = [
+        " ".join(cell(j, texts[i], w - lengths[i]) for j, texts, lengths, w in columns)
+        for i in range(len(columns[0][1]))
+    ]
     return [rows[0], "─" * width, *rows[1:]]
 
 

@@ -396,7 +396,8 @@ def _parse_msh(data: bytes) -> tuple[np.ndarray, np.ndarray]:
     if counts is None or counts.min() < 0:
         raise ValueError("cannot be read as MSH (no header of four non-negative counts)")
     n_vertices, n_normals, n_texcoords, n_faces = (int(c) for c in counts)
-    expected = 16 + 12 * n_vertices + 12 * n_normals + 8 * n_texcoords + 12 * n_faces
+    faces_at = 16 + 12 * n_vertices + 12 * n_normals + 8 * n_texcoords
+    expected = faces_at + 12 * n_faces
     if expected != len(data):
         raise ValueError(
             f"cannot be read as MSH (its header promises {n_vertices} vertices, {n_normals} normals, "
@@ -411,8 +412,7 @@ def _parse_msh(data: bytes) -> tuple[np.ndarray, np.ndarray]:
         if problem is not None:
             raise ValueError(f"mesh {problem}")
         return convex_hull_mesh(vertices)
-    offset = 16 + 12 * n_vertices + 12 * n_normals + 8 * n_texcoords
-    faces = np.frombuffer(data, dtype="<i4", count=3 * n_faces, offset=offset).reshape(-1, 3)
+    faces = np.frombuffer(data, dtype="<i4", count=3 * n_faces, offset=faces_at).reshape(-1, 3)
     return vertices.astype(float), faces.astype(np.int64)
 
 

@@ -443,7 +443,7 @@ class _Bodies:
         kind = attrs.get("type", "hinge")
         pos = np.array(numbers(where, attrs.get("pos", "0 0 0"), "joint: pos", 3))
         axis = numbers(where, attrs.get("axis", "0 0 1"), "joint: axis", 3)
-        motion = {"hinge": "revolute", "slide": "prismatic", "ball": "ball", "free": "free"}.get(kind)
+        motion = JOINT_MOTIONS.get(kind)
         if motion is None:
             raise where.error(f"joint: type {short(kind)!r}: must be free, ball, slide or hinge")
         ref = number(where, attrs.get("ref"), "joint: ref", 0.0)
@@ -667,6 +667,11 @@ def _bound(link: Link, compiler: Compiler) -> None:
     link.inertial = replace(inertial, properties=properties)
 
 
+JOINT_MOTIONS = {"hinge": "revolute", "slide": "prismatic", "ball": "ball", "free": "free"}
+"""MJCF's joint types and the motion kind (:class:`rbi.formats.robot.Motion`) each one is."""
+
+_JOINT_TYPES = {motion: joint_type for joint_type, motion in JOINT_MOTIONS.items()}
+
 _DEGREES_OF_FREEDOM = {"free": 6, "ball": 3, "revolute": 1, "prismatic": 1}
 
 
@@ -675,7 +680,7 @@ def _check_degrees_of_freedom(where: Where, link: Link, parent: Link | None) -> 
     more than six degrees of freedom, and a ball joint followed by a hinge or ball in the same
     body; so does rbi, in MuJoCo's terms."""
     kinds = [motion.kind for motion in link.motions]
-    words = [{"revolute": "hinge", "prismatic": "slide"}.get(kind, kind) for kind in kinds]
+    words = [_JOINT_TYPES.get(kind, kind) for kind in kinds]
     if "free" in kinds and parent is not None:
         raise where.error(
             "free joint: only a body directly in <worldbody> can have one (MuJoCo: 'free joint can "
