@@ -7,3 +7,8 @@ turns the results into a report (a targets table first, the tables, Markdown for
 docs/performance.md, a log–log plot). Times are wall-clock seconds on a possibly busy machine:
 the reports lead with ratios measured in the same run.
 """
+
+from collections.abc import Callable
+
+Progress = Callable[[str], None]
+"""What every section's ``run`` calls with the name of the measurement it starts."""

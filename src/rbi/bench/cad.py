@@ -13,11 +13,11 @@ from __future__ import annotations
 
 import math
 import tempfile
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from rbi.bench import Progress
 from rbi.bench.timing import measure
 from rbi.core.inertia import parallel_axis, parallel_axis_to_com
 from rbi.formats import mesh_file, step
@@ -25,8 +25,6 @@ from rbi.formats.step import _ocp, _quiet, step_triangles
 from rbi.spec.load import load_body
 from rbi.spec.materials import density_in_units
 from rbi.spec.volumes import part_volume
-
-Progress = Callable[[str], None]
 
 PLATE_MM = (210.0, 110.0, 6.0)
 HOLE_RADIUS_MM = 2.5

@@ -20,13 +20,11 @@ from collections.abc import Callable
 
 import numpy as np
 
-from rbi.bench import workprecision
+from rbi.bench import Progress, workprecision
 from rbi.bench.timing import measure
 from rbi.sim._dop853 import integrate_minimal
 from rbi.sim.api import DEFAULT_RTOL, sample_times, simulate
 from rbi.sim.compiled import integrator
-
-Progress = Callable[[str], None]
 
 TRIAL_RTOLS = (1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
 """Tolerances tried for the fastest run at the chapter's error or better."""

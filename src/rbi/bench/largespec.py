@@ -24,12 +24,11 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Callable
 from pathlib import Path
 
-SHAPES = ("point", "cylinder")
+from rbi.bench import Progress
 
-Progress = Callable[[str], None]
+SHAPES = ("point", "cylinder")
 
 TARGET = 0.5
 

@@ -21,18 +21,16 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.bench.throughput import random_cloud, write_cloud
 
 QUICK_REPEATS = 3
 FULL_REPEATS = 21
-
-Progress = Callable[[str], None]
 
 
 TARGETS = {

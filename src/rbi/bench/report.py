@@ -67,193 +67,161 @@ def targets(result: dict) -> list[dict]:
 
 def _kernel_targets(k: dict) -> list[dict]:
     """The compiled kernel against the chapter's set-up and against a minimal loop."""
-    out = []
-    if k:
-        chapter = (
-            f"the chapter's set-up (scipy RK45, rtol 1e-8, Python RHS): {number(k['chapter']['seconds'], 3)} s, "
-            f"error {number(k['chapter']['orientation_error_deg'], 2)}°"
-        )
-        out.append(
-            _target(
-                f"in-process simulate at defaults ({k['case']['spec']}, {k['case']['duration']:g} s) "
-                "÷ the chapter's set-up, speed-up",
-                k["ratio_default"],
-                k["targets"]["ratio_default"],
-                True,
-                chapter,
-                f"rbi {number(k['default']['seconds'], 3)} s, error "
-                f"{number(k['default']['orientation_error_deg'], 2)}°",
-            )
-        )
-        best = k.get("best_matching")
-        out.append(
-            _target(
-                "the same at equal-or-better error, speed-up",
-                k.get("ratio_best_matching"),
-                k["targets"]["ratio_best_matching"],
-                True,
-                chapter,
-                "no rbi tolerance reached the chapter's error"
-                if not best
-                else f"rbi at rtol {best['rtol']:g}: {number(best['seconds'], 3)} s, error "
-                f"{number(best['orientation_error_deg'], 2)}°",
-            )
-        )
-        m = k["minimal_loop"]
-        same = (
-            "same steps and samples"
-            if m["same_steps"] and m["same_samples"]
-            else "DIFFERENT steps or samples"
-        )
-        out.append(
-            _target(
-                "in-process simulate at defaults ÷ a minimal loop with the same DOP853 steps, time",
-                k["ratio_to_minimal_loop"],
-                k["targets"]["ratio_to_minimal_loop"],
-                False,
-                f"rbi.sim._dop853.integrate_minimal: {number(m['seconds'], 3)} s ({same})",
-                f"simulate {number(k['default']['seconds'], 3)} s, {k['default']['steps']:,} steps",
-            )
-        )
-    return out
+    chapter = (
+        f"the chapter's set-up (scipy RK45, rtol 1e-8, Python RHS): {number(k['chapter']['seconds'], 3)} s, "
+        f"error {number(k['chapter']['orientation_error_deg'], 2)}°"
+    )
+    default, best, m, limit = k["default"], k.get("best_matching"), k["minimal_loop"], k["targets"]
+    same = "same steps and samples" if m["same_steps"] and m["same_samples"] else "DIFFERENT steps or samples"
+    case = f"({k['case']['spec']}, {k['case']['duration']:g} s)"
+    return [
+        _target(
+            f"in-process simulate at defaults {case} ÷ the chapter's set-up, speed-up",
+            k["ratio_default"],
+            limit["ratio_default"],
+            True,
+            chapter,
+            f"rbi {number(default['seconds'], 3)} s, error {number(default['orientation_error_deg'], 2)}°",
+        ),
+        _target(
+            "the same at equal-or-better error, speed-up",
+            k.get("ratio_best_matching"),
+            limit["ratio_best_matching"],
+            True,
+            chapter,
+            f"rbi at rtol {best['rtol']:g}: {number(best['seconds'], 3)} s, error "
+            f"{number(best['orientation_error_deg'], 2)}°"
+            if best
+            else "no rbi tolerance reached the chapter's error",
+        ),
+        _target(
+            "in-process simulate at defaults ÷ a minimal loop with the same DOP853 steps, time",
+            k["ratio_to_minimal_loop"],
+            limit["ratio_to_minimal_loop"],
+            False,
+            f"rbi.sim._dop853.integrate_minimal: {number(m['seconds'], 3)} s ({same})",
+            f"simulate {number(default['seconds'], 3)} s, {default['steps']:,} steps",
+        ),
+    ]
 
 
 def _latency_targets(lat: dict) -> list[dict]:
     """Start-up: the first run in a fresh HOME, each additional file, each command as a whole process."""
     out = []
-    if lat:
-        first = lat.get("first_run") or {}
-        if "ratio" in first:
-            out.append(
-                _target(
-                    f"first `{first['command']}` in a fresh HOME ÷ a later one, time",
-                    first["ratio"],
-                    first["target"],
-                    False,
-                    f"the run after it: {number(first['later_median_s'], 3)} s",
-                    f"first {number(first['first_median_s'], 3)} s; median of {first['repeats']} fresh "
-                    f"HOMEs; files left in HOME: {len(first['files_left_in_home'])}",
-                )
+    first = lat.get("first_run") or {}
+    if "ratio" in first:
+        out.append(
+            _target(
+                f"first `{first['command']}` in a fresh HOME ÷ a later one, time",
+                first["ratio"],
+                first["target"],
+                False,
+                f"the run after it: {number(first['later_median_s'], 3)} s",
+                f"first {number(first['first_median_s'], 3)} s; median of {first['repeats']} fresh "
+                f"HOMEs; files left in HOME: {len(first['files_left_in_home'])}",
             )
-        elif "error" in first:
-            out.append(
-                _target(
-                    "first rbi simulate in a fresh HOME ÷ a later one",
-                    None,
-                    1.3,
-                    False,
-                    "",
-                    first["error"],
-                )
+        )
+    elif "error" in first:
+        out.append(
+            _target("first rbi simulate in a fresh HOME ÷ a later one", None, 1.3, False, "", first["error"])
+        )
+    per_file = lat.get("per_file") or {}
+    if per_file:
+        out.append(
+            _target(
+                "each additional file in one `rbi inertia` process (the bundled bodies), ms",
+                per_file.get("per_file_ms"),
+                per_file["target_ms"],
+                False,
+                f"one file: {number(per_file['one_file_median_s'], 3)} s" if "files" in per_file else "",
+                per_file.get("error")
+                or f"{per_file['files']} files: {number(per_file['many_files_median_s'], 3)} s",
             )
-        per_file = lat.get("per_file") or {}
-        if per_file:
-            out.append(
-                _target(
-                    "each additional file in one `rbi inertia` process (the bundled bodies), ms",
-                    per_file.get("per_file_ms"),
-                    per_file["target_ms"],
-                    False,
-                    f"one file: {number(per_file['one_file_median_s'], 3)} s" if "files" in per_file else "",
-                    per_file.get("error")
-                    or f"{per_file['files']} files: {number(per_file['many_files_median_s'], 3)} s",
-                )
-            )
-        for row in lat["commands"]:
-            if "target" in row:
-                out.append(
-                    _target(
-                        f"`{row['command']}` as a whole process, {_clock(row)} time",
-                        _ratio(row),
-                        row["target"],
-                        False,
-                        f"{lat['baseline']}: {number(_seconds(lat['commands'][0]), 3)} s"
-                        if "median_s" in lat["commands"][0]
-                        else lat["baseline"],
-                        row.get("error") or f"{number(_seconds(row), 3)} s median of {row['repeats']}",
-                    )
-                )
-    return out
+        )
+    baseline = lat["commands"][0]
+    if "median_s" in baseline:
+        baseline_text = f"{lat['baseline']}: {number(_seconds(baseline), 3)} s"
+    else:
+        baseline_text = lat["baseline"]
+    return out + [
+        _target(
+            f"`{row['command']}` as a whole process, {_clock(row)} time",
+            _ratio(row),
+            row["target"],
+            False,
+            baseline_text,
+            row.get("error") or f"{number(_seconds(row), 3)} s median of {row['repeats']}",
+        )
+        for row in lat["commands"]
+        if "target" in row
+    ]
 
 
 def _largespec_targets(ls: dict) -> list[dict]:
     """Loading large specs against a bare yaml.load."""
     out = []
-    if ls:
-        for row in ls.get("specs", []) or [{"error": ls.get("error")}]:
-            ratio = row.get("ratio")
-            label = (
-                f"{row.get('n_parts', 0):,} × {row.get('shape', '?')}" if "n_parts" in row else "large specs"
+    for row in ls.get("specs", []) or [{"error": ls.get("error")}]:
+        label = f"{row.get('n_parts', 0):,} × {row.get('shape', '?')}" if "n_parts" in row else "large specs"
+        base = row.get("bare_s")
+        detail = row.get("error") or ""
+        if "rbi_load_s" in row:
+            detail = (
+                f"rbi {number(row['rbi_load_s'], 3)} s (read {number(row['rbi_read_s'], 3)}, validate "
+                f"{number(row['rbi_validate_s'], 3)}, translate {number(row['rbi_translate_s'], 3)}); "
+                f"{number(row['yaml_megabytes'], 3)} MB"
             )
-            base = row.get("bare_s")
-            detail = row.get("error") or ""
-            if "rbi_load_s" in row:
-                detail = (
-                    f"rbi {number(row['rbi_load_s'], 3)} s (read {number(row['rbi_read_s'], 3)}, validate "
-                    f"{number(row['rbi_validate_s'], 3)}, translate {number(row['rbi_translate_s'], 3)}); "
-                    f"{number(row['yaml_megabytes'], 3)} MB"
-                )
-            out.append(
-                _target(
-                    f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
-                    ratio,
-                    ls["target"],
-                    False,
-                    "bare yaml.load(f, Loader=yaml.CSafeLoader) in a plain Python"
-                    + (f": {number(base, 3)} s" if isinstance(base, float) else ""),
-                    detail,
-                )
+        out.append(
+            _target(
+                f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
+                row.get("ratio"),
+                ls["target"],
+                False,
+                "bare yaml.load(f, Loader=yaml.CSafeLoader) in a plain Python"
+                + (f": {number(base, 3)} s" if isinstance(base, float) else ""),
+                detail,
             )
+        )
     return out
 
 
 def _sweep_targets(sw: dict) -> list[dict]:
     """Sweep throughput against single runs and process loops, and its peak memory."""
-    out = []
-    if sw:
-        single, loop, sweep = sw["single_run"], sw["process_loop"], sw["sweep"]
-        out.append(
-            _target(
-                f"`rbi sweep` throughput over {sweep['runs']:,} runs ÷ (cores × single-run rate)",
-                sw["ratio_to_cores_x_single"],
-                sw["targets"]["ratio_to_cores_x_single"],
-                True,
-                f"{sw['cores']} cores × {number(single['runs_per_second'], 3)} runs/s (simulate, one run "
-                f"after another, {single['runs']} grid points)",
-                f"sweep {number(sweep['runs_per_second'], 3)} runs/s ({number(sweep['seconds'], 3)} s; "
-                f"CPU time ÷ wall time {number(sweep.get('cores_used', float('nan')), 3)})",
-            )
-        )
-        out.append(
-            _target(
-                "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
-                sw["ratio_to_process_loop"],
-                sw["targets"]["ratio_to_process_loop"],
-                True,
-                f"{loop['runs']} processes: {number(loop['runs_per_second'], 3)} runs/s",
-                f"sweep {number(sweep['runs_per_second'], 3)} runs/s",
-            )
-        )
-        mem = sw["memory"]
-        out.append(
-            _target(
-                f"peak resident memory of a streaming sweep of {mem.get('runs', 0):,} runs, MB",
-                mem.get("peak_rss_mb"),
-                sw["targets"]["peak_rss_mb"],
-                False,
-                "500 MB (absolute)",
-                mem.get("error")
-                or f"RSS {number(mem['rss_first_quarter_mb'], 3)} MB in the first quarter, "
-                f"{number(mem['rss_last_quarter_mb'], 3)} MB in the last ({mem['rows_written']:,} rows)",
-            )
-        )
-    return out
+    single, loop, sweep, mem = sw["single_run"], sw["process_loop"], sw["sweep"], sw["memory"]
+    rate = f"sweep {number(sweep['runs_per_second'], 3)} runs/s"
+    return [
+        _target(
+            f"`rbi sweep` throughput over {sweep['runs']:,} runs ÷ (cores × single-run rate)",
+            sw["ratio_to_cores_x_single"],
+            sw["targets"]["ratio_to_cores_x_single"],
+            True,
+            f"{sw['cores']} cores × {number(single['runs_per_second'], 3)} runs/s (simulate, one run "
+            f"after another, {single['runs']} grid points)",
+            f"{rate} ({number(sweep['seconds'], 3)} s; "
+            f"CPU time ÷ wall time {number(sweep.get('cores_used', float('nan')), 3)})",
+        ),
+        _target(
+            "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
+            sw["ratio_to_process_loop"],
+            sw["targets"]["ratio_to_process_loop"],
+            True,
+            f"{loop['runs']} processes: {number(loop['runs_per_second'], 3)} runs/s",
+            rate,
+        ),
+        _target(
+            f"peak resident memory of a streaming sweep of {mem.get('runs', 0):,} runs, MB",
+            mem.get("peak_rss_mb"),
+            sw["targets"]["peak_rss_mb"],
+            False,
+            "500 MB (absolute)",
+            mem.get("error")
+            or f"RSS {number(mem['rss_first_quarter_mb'], 3)} MB in the first quarter, "
+            f"{number(mem['rss_last_quarter_mb'], 3)} MB in the last ({mem['rows_written']:,} rows)",
+        ),
+    ]
 
 
 def _robotaudit_targets(ra: dict) -> list[dict]:
     """The audit of a large generated URDF against its absolute time target."""
-    if not ra:
-        return []
     quick = ra.get("links", 0) < 10**5
     detail = ra.get("error") or (
         f"{number(ra['megabytes'], 3)} MB, {number(ra['links_per_second'], 3)} links/s"
@@ -264,16 +232,9 @@ def _robotaudit_targets(ra: dict) -> list[dict]:
         )
         + ("; a quick run: the target is for 100,000 links" if quick else "")
     )
+    what = f"`rbi audit` of a URDF of {ra.get('links', 0):,} links (inertial, box collision, revolute joints)"
     return [
-        _target(
-            f"`rbi audit` of a URDF of {ra.get('links', 0):,} links (inertial, box collision, revolute joints), wall time",
-            ra.get("seconds"),
-            ra["target_s"],
-            False,
-            "5 s (absolute)",
-            detail,
-            unit="s",
-        )
+        _target(f"{what}, wall time", ra.get("seconds"), ra["target_s"], False, "5 s (absolute)", detail, "s")
     ]
 
 

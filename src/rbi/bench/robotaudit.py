@@ -10,11 +10,9 @@ from __future__ import annotations
 import os
 import tempfile
 import time
-from collections.abc import Callable
 
+from rbi.bench import Progress
 from rbi.robot import audit
-
-Progress = Callable[[str], None]
 
 TARGET_S = 5.0
 """Seconds the audit of the 10⁵-link URDF may take."""

@@ -2,9 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
-
-from rbi.bench import cad, kernel, largespec, latency, robotaudit, sweep, throughput, workprecision
+from rbi.bench import Progress, cad, kernel, largespec, latency, robotaudit, sweep, throughput, workprecision
 from rbi.bench.timing import machine
 
 SECTIONS = {
@@ -25,7 +23,7 @@ def planned_steps(quick: bool, sections) -> int:
     return sum(SECTIONS[name].planned_steps(quick) for name in sections)
 
 
-def run(quick: bool, sections, progress: Callable[[str], None] = lambda _: None) -> dict:
+def run(quick: bool, sections, progress: Progress = lambda _: None) -> dict:
     """``{"machine": ..., "<section>": ...}`` for the chosen sections, measured now."""
     result = {"quick": quick, "machine": machine()}
     for name in SECTIONS:

@@ -22,22 +22,20 @@ import resource
 import subprocess
 import tempfile
 import time
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.files.output import output_target
+from rbi.runs.run import scene_of as body_scene
 from rbi.sim.api import simulate
-from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.sim.scene import initial_state
 from rbi.spec.load import load_body, read_yaml
-from rbi.spec.units import gravity_in
 from rbi.sweeps.execute import available_cores
 from rbi.sweeps.plan import Grid
 from rbi.sweeps.study import Study, SweepSettings, check_settings
-
-Progress = Callable[[str], None]
 
 TARGETS = {"ratio_to_cores_x_single": 0.8, "ratio_to_process_loop": 300.0, "peak_rss_mb": 500.0}
 
@@ -81,8 +79,7 @@ def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float
     """Runs per second of ``simulate`` called once per run, one after another, in this process
     (the body loaded once, as a sweep does)."""
 
-    body = load_body(spec)
-    scene = scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit))
+    scene = body_scene(load_body(spec), None)
     samples = 481  # as rbi sweep and rbi simulate by default
     simulate(scene, *initial_state(runs[0][1], [0.0, 0.0, runs[0][0]]), duration, samples)  # warm
     start = time.perf_counter()
@@ -97,21 +94,9 @@ def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: flo
     """Runs per second of a shell loop of whole ``rbi simulate`` processes."""
     start = time.perf_counter()
     for spin, tilt in runs:
-        proc = subprocess.run(
-            rbi_command()
-            + [
-                "simulate",
-                str(spec),
-                "--spin",
-                f"{spin!r}",
-                "--tilt",
-                f"{tilt!r}",
-                "--duration",
-                f"{duration:g}",
-            ],
-            capture_output=True,
-            text=True,
-        )
+        words = ["simulate", str(spec), "--spin", repr(spin), "--tilt", repr(tilt), "--duration"]
+        words.append(f"{duration:g}")
+        proc = subprocess.run(rbi_command() + words, capture_output=True, text=True)
         if proc.returncode != 0:
             raise RuntimeError(f"rbi simulate: exit {proc.returncode}: {proc.stderr.strip()[-200:]}")
     seconds = time.perf_counter() - start
@@ -120,21 +105,6 @@ def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: flo
 
 def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     out = folder / "sweep.csv"
-    args = [
-        "sweep",
-        str(spec),
-        "--spin",
-        _axis_text(g["spin"]),
-        "--tilt",
-        _axis_text(g["tilt"]),
-        "--duration",
-        f"{g['duration']:g}",
-        "--out",
-        str(out),
-        "--yes",
-        "--format",
-        "json",
-    ]
     runs = g["spin"][2] * g["tilt"][2]
     cpu_start = _cpu_seconds()
     start = time.perf_counter()
@@ -144,10 +114,8 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     with open(out, encoding="utf-8") as stream:
         lines = sum(1 for _ in stream) - 1
     return {
-        "command": "rbi "
-        + " ".join(
-            a if a != str(spec) else "bodies/top.yaml" for a in args if not a.startswith(str(folder))
-        ).replace("--out", "--out FILE.csv"),
+        "command": f"rbi sweep bodies/top.yaml --spin {_axis_text(g['spin'])} --tilt {_axis_text(g['tilt'])} "
+        f"--duration {g['duration']:g} --out FILE.csv --yes --format json",
         "runs": runs,
         "rows_written": lines,
         "seconds": seconds,
@@ -170,21 +138,12 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     # more runs than rbi sweep keeps in memory to print (MAX_ROWS_SHOWN, 10⁵): rows only streamed
     spins = 100 if quick else 1010
     out = folder / "memory.csv"
-    argv = rbi_command() + [
-        "sweep",
-        str(spec),
-        "--spin",
-        f"150:260:{spins}",
-        "--tilt",
-        "0.01:1:100",
-        "--duration",
-        "0.02",
-        "--samples",
-        "2",
-        "--out",
-        str(out),
-        "--yes",
-    ]
+    command = (
+        f"rbi sweep bodies/top.yaml --spin 150:260:{spins} --tilt 0.01:1:100 --duration 0.02 "
+        "--samples 2 --out FILE.csv --yes"
+    )
+    paths = {"bodies/top.yaml": str(spec), "FILE.csv": str(out)}
+    argv = rbi_command() + [paths.get(word, word) for word in command.split()[1:]]
     runs = spins * 100
     start = time.perf_counter()
     proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
@@ -200,10 +159,7 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     first = [s["rss_mb"] for s in samples[:quarter]]
     last = [s["rss_mb"] for s in samples[-quarter:]]
     return {
-        "command": (
-            f"rbi sweep bodies/top.yaml --spin 150:260:{spins} --tilt 0.01:1:100 --duration 0.02 "
-            "--samples 2 --out FILE.csv --yes"
-        ),
+        "command": command,
         "runs": runs,
         "rows_written": rows,
         "seconds": seconds,

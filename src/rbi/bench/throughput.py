@@ -13,11 +13,11 @@ from __future__ import annotations
 
 import json
 import tempfile
-from collections.abc import Callable
 from pathlib import Path
 
 import numpy as np
 
+from rbi.bench import Progress
 from rbi.bench.timing import measure, time_once
 from rbi.core.inertia import centre_of_mass, principal_axes
 from rbi.core.mass import combine
@@ -31,8 +31,6 @@ FULL_PARTS = (10**4, 10**5)
 CSV_FORMAT = "%.10g"
 """Digits written to the generated CSV clouds (a scanner or CAD export carries about this many;
 full double precision, %.17g, makes the file about 1.7 times larger and slower to parse)."""
-
-Progress = Callable[[str], None]
 
 
 def random_cloud(n: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:

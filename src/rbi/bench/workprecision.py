@@ -19,23 +19,21 @@ runs for the fast methods). The chapter's set-up is ``rk45`` at rtol 1e-8 (atol 
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 
+from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder
 from rbi.bench.timing import measure
+from rbi.runs.run import scene_of as body_scene
 from rbi.sim.api import simulate
 from rbi.sim.compiled import integrator
 from rbi.sim.diagnostics import conserved_quantities, orientation_error_deg
-from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.sim.scene import initial_state
 from rbi.spec.load import load_body
-from rbi.spec.units import gravity_in
 from rbi.viz.labels import pyplot
-
-Progress = Callable[[str], None]
 
 CHAPTER = ("rk45", 1e-8)
 """The seed chapter's set-up: scipy solve_ivp RK45, rtol 1e-8, atol 1e-10, Python right-hand side."""
@@ -81,8 +79,7 @@ def sweeps(quick: bool) -> dict[str, list[float]]:
 
 def scene_of(case: Case):
 
-    body = load_body(bodies_folder() / case.spec)
-    scene = scene_from_properties(body.props, body.pivot, gravity_in(body.length_unit))
+    scene = body_scene(load_body(bodies_folder() / case.spec), None)
     q0, omega0 = initial_state(case.tilt_deg, case.omega0)
     return scene, q0, omega0
 
