@@ -103,20 +103,18 @@ def check_against_direct_sum(specs: dict[str, Path], masses: np.ndarray, positio
     return float(np.max(np.abs(props.inertia_about_com - direct)) / np.max(np.abs(direct)))
 
 
-def point_clouds(sizes, progress: Progress) -> list[dict]:
+def point_clouds(sizes, progress: Progress, tmp: Path) -> list[dict]:
     rows = []
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
-        _warm_up_loader(Path(tmp))
-        for n in sizes:
-            progress(f"point cloud of {n:,} points")
-            masses, positions = random_cloud(n)
-            row = {"points": n} | core_timings(masses, positions)
-            folder = Path(tmp) / f"cloud{n}"
-            folder.mkdir()
-            specs = write_cloud(folder, masses, positions)
-            row |= file_timings(specs, repeats=3)
-            row["relative_difference_to_direct_sum"] = check_against_direct_sum(specs, masses, positions)
-            rows.append(row)
+    for n in sizes:
+        progress(f"point cloud of {n:,} points")
+        masses, positions = random_cloud(n)
+        row = {"points": n} | core_timings(masses, positions)
+        folder = tmp / f"cloud{n}"
+        folder.mkdir()
+        specs = write_cloud(folder, masses, positions)
+        row |= file_timings(specs, repeats=3)
+        row["relative_difference_to_direct_sum"] = check_against_direct_sum(specs, masses, positions)
+        rows.append(row)
     return rows
 
 
@@ -162,45 +160,43 @@ def parts_yaml(n: int, seed: int = 1) -> str:
     return "\n".join(lines) + "\n"
 
 
-def solid_parts(sizes, progress: Progress) -> list[dict]:
+def solid_parts(sizes, progress: Progress, tmp: Path) -> list[dict]:
     """Seconds for each step of loading a spec of many parts, once each (these are slow)."""
 
     rows = []
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
-        _warm_up_loader(Path(tmp))
-        for n in sizes:
-            progress(f"spec of {n:,} parts in YAML")
-            path = Path(tmp) / f"parts{n}.yaml"
-            path.write_text(parts_yaml(n))
-            read_s, raw = time_once(lambda: read_yaml(path))
-            validate_s, (spec, problems) = time_once(lambda: validation_messages(str(path), raw))
-            if problems:
-                raise RuntimeError(f"generated spec is invalid: {problems[0]}")
-            translate_s, body = time_once(lambda: body_from_spec(spec, str(path)))
-            masses = np.array([e.mass for e in body.elements])
-            coms = np.array([e.center_of_mass for e in body.elements])
-            inertias = np.array([e.inertia_about_com for e in body.elements])
-            core = measure(lambda: principal_axes(combine(masses, coms, inertias).inertia_about_com))
-            total = read_s + validate_s + translate_s
-            # The same spec as one JSON object (also valid YAML), as a generating program would write it.
-            as_json = path.with_suffix(".json")
-            as_json.write_text(json.dumps(raw))
-            json_s, _ = time_once(
-                lambda: body_from_spec(validation_messages(str(as_json), read_yaml(as_json))[0], str(as_json))
-            )
-            rows.append(
-                {
-                    "parts": n,
-                    "yaml_megabytes": path.stat().st_size / 1e6,
-                    "read_yaml_s": read_s,
-                    "validate_s": validate_s,
-                    "translate_s": translate_s,
-                    "load_total_s": total,
-                    "us_per_part": 1e6 * total / n,
-                    "load_total_json_s": json_s,
-                    "core_s": core.median,
-                }
-            )
+    for n in sizes:
+        progress(f"spec of {n:,} parts in YAML")
+        path = tmp / f"parts{n}.yaml"
+        path.write_text(parts_yaml(n))
+        read_s, raw = time_once(lambda: read_yaml(path))
+        validate_s, (spec, problems) = time_once(lambda: validation_messages(str(path), raw))
+        if problems:
+            raise RuntimeError(f"generated spec is invalid: {problems[0]}")
+        translate_s, body = time_once(lambda: body_from_spec(spec, str(path)))
+        masses = np.array([e.mass for e in body.elements])
+        coms = np.array([e.center_of_mass for e in body.elements])
+        inertias = np.array([e.inertia_about_com for e in body.elements])
+        core = measure(lambda: principal_axes(combine(masses, coms, inertias).inertia_about_com))
+        total = read_s + validate_s + translate_s
+        # The same spec as one JSON object (also valid YAML), as a generating program would write it.
+        as_json = path.with_suffix(".json")
+        as_json.write_text(json.dumps(raw))
+        json_s, _ = time_once(
+            lambda: body_from_spec(validation_messages(str(as_json), read_yaml(as_json))[0], str(as_json))
+        )
+        rows.append(
+            {
+                "parts": n,
+                "yaml_megabytes": path.stat().st_size / 1e6,
+                "read_yaml_s": read_s,
+                "validate_s": validate_s,
+                "translate_s": translate_s,
+                "load_total_s": total,
+                "us_per_part": 1e6 * total / n,
+                "load_total_json_s": json_s,
+                "core_s": core.median,
+            }
+        )
     return rows
 
 
@@ -220,8 +216,10 @@ def planned_steps(quick: bool) -> int:
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    clouds = point_clouds(QUICK_CLOUDS if quick else FULL_CLOUDS, progress)
-    parts = solid_parts(QUICK_PARTS if quick else FULL_PARTS, progress)
+    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
+        _warm_up_loader(Path(tmp))
+        clouds = point_clouds(QUICK_CLOUDS if quick else FULL_CLOUDS, progress, Path(tmp))
+        parts = solid_parts(QUICK_PARTS if quick else FULL_PARTS, progress, Path(tmp))
     return {
         "point_clouds": clouds,
         "scaling_exponent": scaling_exponent(clouds),

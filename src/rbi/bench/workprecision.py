@@ -264,25 +264,13 @@ def _plot_case(ax, case: dict, styles: dict, floor: float) -> None:
                 color=colour,
             )
     chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
-    if chapter:
-        ax.loglog(
-            [chapter["seconds"]],
-            [max(chapter["orientation_error_deg"], floor)],
-            "*",
-            color="k",
-            markersize=14,
-            label="the chapter's set-up (RK45, rtol 1e-8)",
-        )
     d = case["default"]
-    ax.loglog(
-        [d["seconds"]],
-        [max(d["orientation_error_deg"], floor)],
-        "P",
-        color="C0",
-        markersize=12,
-        markeredgecolor="k",
-        label=f"rbi defaults (rtol {d['rtol']:g})",
-    )
+    marks = [(d, "P", "C0", 12, f"rbi defaults (rtol {d['rtol']:g})", {"markeredgecolor": "k"})]
+    if chapter:
+        marks.insert(0, (chapter, "*", "k", 14, "the chapter's set-up (RK45, rtol 1e-8)", {}))
+    for row, marker, colour, size, label, edge in marks:
+        y = max(row["orientation_error_deg"], floor)
+        ax.loglog([row["seconds"]], [y], marker, color=colour, markersize=size, label=label, **edge)
     omega = ", ".join(f"{w:g}" for w in case["omega0"])
     ax.set_title(f"{case['name']} ({case['spec']}, ω₀ = ({omega}) rad/s, {case['duration']:g} s)", fontsize=9)
     ax.set_xlabel("in-process time of one simulate() call [s]")

@@ -10,6 +10,7 @@ differences (see :mod:`rbi.core.inertia`).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -204,20 +205,24 @@ def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> 
 
     About its centre: axial moment m r²/2, transverse m (3 r² + L²)/12.
     """
-    start = np.asarray(start, dtype=float)
-    end = np.asarray(end, dtype=float)
+    return _about_middle(mass, start, end, lambda length: cylinder_moments(mass, radius, length))
+
+
+def _about_middle(
+    mass: float, start: ArrayLike, end: ArrayLike, moments: Callable[[float], tuple[Numbers, Numbers]]
+) -> MassProperties:
+    """A solid symmetric about the segment ``start`` → ``end`` (L) with its centre of mass in the
+    middle; ``moments(length)``: its ``(axial, transverse)`` moments about it (M·L²)."""
+    start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
     u, length = axis_between(start, end)
-    com = 0.5 * (start + end)
-    axial, transverse = cylinder_moments(mass, radius, length)
-    return MassProperties(mass, com, axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, 0.5 * (start + end), axisymmetric_inertia(*moments(length), u))
 
 
 # --- point mass ----------------------------------------------------------------------------
 
 
-def point(mass: float, position: np.ndarray) -> MassProperties:
-    """A point mass: no inertia about its own position."""
-    return MassProperties(mass, np.asarray(position, dtype=float), np.zeros((3, 3)))
+point = MassProperties.point
+"""A point mass: no inertia about its own position."""
 
 
 # --- shapes with an orientation --------------------------------------------------------------
@@ -328,13 +333,13 @@ def tube(
     About its centre: axial m (R² + r²)/2, transverse m (3 (R² + r²) + L²)/12. r = 0 gives
     the solid cylinder, r = R a thin-walled tube.
     """
-    start = np.asarray(start, dtype=float)
-    end = np.asarray(end, dtype=float)
-    u, length = axis_between(start, end)
     squares = outer_radius * outer_radius + inner_radius * inner_radius
-    axial = 0.5 * mass * squares
-    transverse = mass * (3.0 * squares + length * length) / 12.0
-    return MassProperties(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))
+    return _about_middle(
+        mass,
+        start,
+        end,
+        lambda length: (0.5 * mass * squares, mass * (3.0 * squares + length * length) / 12.0),
+    )
 
 
 # --- frustum (truncated cone) ----------------------------------------------------------------
@@ -380,12 +385,7 @@ def frustum(
 def rod(mass: float, start: np.ndarray, end: np.ndarray) -> MassProperties:
     """Thin straight rod (a line mass) from ``start`` to ``end``: m L²/12 about any line
     through its middle perpendicular to it, 0 about its own axis."""
-    start = np.asarray(start, dtype=float)
-    end = np.asarray(end, dtype=float)
-    u, length = axis_between(start, end)
-    return MassProperties(
-        mass, 0.5 * (start + end), axisymmetric_inertia(0.0, mass * length * length / 12.0, u)
-    )
+    return _about_middle(mass, start, end, lambda length: (0.0, mass * length * length / 12.0))
 
 
 # --- torus -----------------------------------------------------------------------------------
@@ -449,15 +449,6 @@ def capsule_volume(radius: float, length: float) -> float:
 
 def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> MassProperties:
     """Capsule: a solid cylinder from ``start`` to ``end`` (length L) with a hemisphere of the
-    same radius r on each end face, uniform density.
-
-    The cylinder holds m_c = m L / (L + 4/3 r) and the caps m_s = m − m_c. About the centre:
-    axial m_c r²/2 + 2/5 m_s r²; transverse m_c (3 r² + L²)/12 + m_s (2/5 r² + L²/4 + 3/8 L r)
-    — the caps' 83/320 m r² about their own centres of mass plus the parallel-axis term for
-    their distance L/2 + 3/8 r, gathered so that every term is positive.
-    """
-    start = np.asarray(start, dtype=float)
-    end = np.asarray(end, dtype=float)
-    u, length = axis_between(start, end)
-    axial, transverse = capsule_moments(mass, float(radius), length)
-    return MassProperties(mass, 0.5 * (start + end), axisymmetric_inertia(axial, transverse, u))
+    same radius r on each end face, uniform density; moments about its centre as
+    :func:`capsule_moments` gives them."""
+    return _about_middle(mass, start, end, lambda length: capsule_moments(mass, float(radius), length))

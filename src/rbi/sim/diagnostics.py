@@ -142,7 +142,10 @@ def conserved_quantities(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict
     omega = np.atleast_2d(omega)
     h_body = angular_momentum_body(scene, omega)
     h_size = float(np.max(_row_norms(h_body)))
-    out: dict[str, dict[str, Any]] = {"energy": energy_conservation(scene, q, omega)}
+    initial, drift = energy_drifts(scene, q[None], omega[None])
+    out: dict[str, dict[str, Any]] = {
+        "energy": {"initial": float(initial[0]), "drift": drift[0], "unit": "energy"}
+    }
     if scene.pivoted:
         h_vertical = np.einsum("ni,ni->n", up_in_body(q), h_body)
         out["h_vertical"] = _drift(h_vertical, h_size, "angular_momentum")
@@ -160,13 +163,17 @@ def conserved_quantities(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict
     return out
 
 
-def energy_conservation(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict[str, Any]:
-    """The energy entry of :func:`conserved_quantities` alone (what a sweep row reports)."""
-    q = np.atleast_2d(q)
-    omega = np.atleast_2d(omega)
-    kinetic = kinetic_energy(scene, omega)
-    potential = potential_energy(scene, q)
-    return _drift(kinetic + potential, float(np.max(kinetic + np.abs(potential))), "energy")
+def energy_drifts(scene: Scene, q: np.ndarray, omega: np.ndarray) -> tuple[np.ndarray, list[float]]:
+    """For each of B runs (q (B, N, 4), omega (B, N, 3)): the initial total energy (M·L²/s²)
+    and its relative drift, ``max |E(t) − E(0)|`` over the run's largest kinetic plus
+    |potential| energy (the energy entry of :func:`conserved_quantities`, and a sweep row's)."""
+    B, N = q.shape[0], q.shape[1]
+    kinetic = kinetic_energy(scene, omega.reshape(B * N, 3)).reshape(B, N)
+    potential = potential_energy(scene, q.reshape(B * N, 4)).reshape(B, N)
+    total = kinetic + potential
+    change = np.max(np.abs(total - total[:, :1]), axis=1)
+    size = np.max(kinetic + np.abs(potential), axis=1)
+    return total[:, 0], [_relative(float(c), float(s)) for c, s in zip(change, size)]
 
 
 def _drift(values: np.ndarray, size: float, unit: str) -> dict[str, Any]:
@@ -202,6 +209,14 @@ def orientation_error_deg(q: np.ndarray, r: np.ndarray) -> np.ndarray:
     return angle if angle.size > 1 else float(angle[0])
 
 
+def axial_and_transverse(scene: Scene, axis: np.ndarray) -> tuple[float, float]:
+    """The moments (M·L²) of an axisymmetric scene about its symmetry ``axis`` (unit, body
+    frame) and about a line across it through the fixed point (the other principal moment)."""
+    axial = float(axis @ scene.inertia @ axis)
+    moments = scene.principal_moments
+    return axial, float(moments[2] if abs(moments[0] - axial) < abs(moments[2] - axial) else moments[0])
+
+
 def sleeping_threshold(scene: Scene) -> dict[str, float] | None:
     """The sleeping-top threshold of an axisymmetric top with its centre of mass above the
     pivot on the axis: ``ω₃² = 4 m g l I₁ / I₃²`` (I₁ the transverse moment about the pivot).
@@ -210,9 +225,7 @@ def sleeping_threshold(scene: Scene) -> dict[str, float] | None:
     length = float(np.linalg.norm(scene.com_from_pivot))
     if not scene.pivoted or axis is None or length == 0.0 or scene.gravity <= 0.0:
         return None
-    I3 = float(axis @ scene.inertia @ axis)
-    moments = scene.principal_moments
-    I1 = float(moments[2] if abs(moments[0] - I3) < abs(moments[2] - I3) else moments[0])
+    I3, I1 = axial_and_transverse(scene, axis)
     omega3 = math.sqrt(4.0 * scene.mass * scene.gravity * length * I1) / I3
     return {"omega3": omega3, "I1": I1, "I3": I3, "l": length}
 

@@ -38,7 +38,7 @@ import numpy as np
 from rbi.core.rotation import matrix_to_quaternion, quaternion_to_matrix
 from rbi.core.rotation import quaternion_from_axis_angle as turn
 from rbi.core.rotation import quaternion_multiply as qmul
-from rbi.sim.diagnostics import AXISYMMETRY_RTOL, symmetry_axis
+from rbi.sim.diagnostics import AXISYMMETRY_RTOL, axial_and_transverse, symmetry_axis
 from rbi.sim.elliptic import ellipk, ellipkinc, ellippi
 from rbi.sim.scene import Scene
 
@@ -153,9 +153,7 @@ class SymmetricFreeBody:
 
         self.q0 = np.asarray(q0, dtype=float)
         self.axis = np.asarray(axis, dtype=float)
-        moments = scene.principal_moments
-        I_axis = float(self.axis @ scene.inertia @ self.axis)
-        self.I_t = float(moments[2] if abs(moments[0] - I_axis) < abs(moments[2] - I_axis) else moments[0])
+        I_axis, self.I_t = axial_and_transverse(scene, self.axis)
         h_body = scene.inertia @ omega0
         self.h_world = quaternion_to_matrix(self.q0) @ h_body
         self.h = float(np.linalg.norm(self.h_world))
@@ -343,10 +341,8 @@ class LagrangeTop:
     def __init__(self, scene: Scene, q0, omega0, axis: np.ndarray) -> None:
 
         self.axis = np.asarray(axis, dtype=float)
-        moments, axes = scene.principal_moments, scene.principal_axes
-        self.I3 = float(self.axis @ scene.inertia @ self.axis)
-        self.I1 = float(moments[2] if abs(moments[0] - self.I3) < abs(moments[2] - self.I3) else moments[0])
-        self.rows = rows = _triad(self.axis, axes)
+        self.I3, self.I1 = axial_and_transverse(scene, self.axis)
+        self.rows = rows = _triad(self.axis, scene.principal_axes)
         self.q_tb = matrix_to_quaternion(rows)
         self.mgl = scene.mass * scene.gravity * float(np.linalg.norm(scene.com_from_pivot))
         w_t = rows @ np.asarray(omega0, dtype=float)

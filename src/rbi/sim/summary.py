@@ -106,15 +106,9 @@ def sweep_figures_batch(
     """What a sweep row reports of each of B runs of one scene (q (B, N, 4), omega (B, N, 3)):
     :func:`tilt_figures` and the energy's relative drift, as :func:`summarize` reports them for
     one run, computed on all samples together."""
-    B, N = q.shape[0], q.shape[1]
-    kinetic = diagnostics.kinetic_energy(scene, omega.reshape(B * N, 3)).reshape(B, N)
-    potential = diagnostics.potential_energy(scene, q.reshape(B * N, 4)).reshape(B, N)
-    total = kinetic + potential
-    change = np.max(np.abs(total - total[:, :1]), axis=1)
-    size = np.max(kinetic + np.abs(potential), axis=1)
     figures = tilt_figures(t, q, scene.spin_frame)
-    for b, row in enumerate(figures):
-        row["energy_drift"] = diagnostics._relative(float(change[b]), float(size[b]))
+    for row, drift in zip(figures, diagnostics.energy_drifts(scene, q, omega)[1]):
+        row["energy_drift"] = drift
     return figures
 
 

@@ -8,6 +8,7 @@ worker and give the same rows.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -74,11 +75,7 @@ class SweepJob:
         """The body with the varied fields set to ``values`` (cached per distinct values), or the
         one-line reason it cannot be built."""
         key = tuple(values)
-        if key not in self._bodies:
-            if len(self._bodies) > 4096:
-                self._bodies.clear()
-            self._bodies[key] = _derive_body(self.path, self.raw, self.varied, key)
-        return self._bodies[key]
+        return _cached(self._bodies, key, lambda: _derive_body(self.path, self.raw, self.varied, key))
 
     def scene_of(self, body):
         """The scene of one of this sweep's bodies, under its gravity and spinning about its spin
@@ -98,11 +95,16 @@ def _derive_body(path: str, raw: Any, varied: tuple[FieldPath, ...], values: tup
 
 def _scene(job: SweepJob, values: tuple[float, ...]):
     """The run's scene, or the reason it has none (cached per distinct values)."""
-    if values not in job._scenes:
-        if len(job._scenes) > 4096:
-            job._scenes.clear()
-        job._scenes[values] = _derive_scene(job, values)
-    return job._scenes[values]
+    return _cached(job._scenes, values, lambda: _derive_scene(job, values))
+
+
+def _cached(cache: dict, key: tuple, make: Callable[[], Any]) -> Any:
+    """``make()`` once per ``key`` (the cache emptied past 4,096 entries, bounding its memory)."""
+    if key not in cache:
+        if len(cache) > 4096:
+            cache.clear()
+        cache[key] = make()
+    return cache[key]
 
 
 def _derive_scene(job: SweepJob, values: tuple[float, ...]):
