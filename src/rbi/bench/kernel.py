@@ -126,10 +126,7 @@ def _tolerance_trials(simulate_call, scene, reference, chapter_err: dict, min_se
     for rtol in TRIAL_RTOLS:
         trajectory = simulate_call(rtol)()
         err = workprecision.errors(scene, trajectory, reference)
-        no_worse = (
-            err["orientation_error_deg"] <= chapter_err["orientation_error_deg"]
-            and err["omega_error"] <= chapter_err["omega_error"]
-        )
+        no_worse = workprecision.no_worse(err, chapter_err)
         seconds = _median_seconds(simulate_call(rtol), min_seconds / 3) if no_worse else None
         trials.append(
             {

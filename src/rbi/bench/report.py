@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
+from rbi.bench.workprecision import no_worse
 from rbi.text import number, vector_text
 
 METHOD_NAMES = {
@@ -349,10 +350,7 @@ def _kernel_speedup(k: dict | None, case: dict) -> dict | None:
         "default_seconds": default["seconds"],
         "chapter_orientation_error_deg": chapter["orientation_error_deg"],
         "default_orientation_error_deg": default["orientation_error_deg"],
-        "default_no_worse": (
-            default["orientation_error_deg"] <= chapter["orientation_error_deg"]
-            and default["omega_error"] <= chapter["omega_error"]
-        ),
+        "default_no_worse": no_worse(default, chapter),
         "ratio_default": k["ratio_default"],
     }
     if best:

@@ -178,19 +178,19 @@ def _row(method: str, rtol, scene, reference, trajectory, seconds: float, repeat
     }
 
 
+def no_worse(errors: dict, chapter: dict) -> bool:
+    """Whether the final orientation error (deg) and ω error (rad/s) of ``errors`` are no
+    larger than the chapter's set-up's (``chapter``)."""
+    orientation = errors["orientation_error_deg"] <= chapter["orientation_error_deg"]
+    return orientation and errors["omega_error"] <= chapter["omega_error"]
+
+
 def speedup(rows: list[dict], default_row: dict) -> dict | None:
     """The chapter's time over rbi's, (a) with rbi's default settings, (b) for the fastest
     run of rbi's default method whose final errors are no larger than the chapter's."""
     chapter = next((r for r in rows if r["chapter_setup"]), None)
     if chapter is None:
         return None
-
-    def no_worse(row):
-        return (
-            row["orientation_error_deg"] <= chapter["orientation_error_deg"]
-            and row["omega_error"] <= chapter["omega_error"]
-        )
-
     out = {
         "chapter_seconds": chapter["seconds"],
         "chapter_orientation_error_deg": chapter["orientation_error_deg"],
@@ -198,11 +198,11 @@ def speedup(rows: list[dict], default_row: dict) -> dict | None:
         "default_seconds": default_row["seconds"],
         "default_orientation_error_deg": default_row["orientation_error_deg"],
         "default_omega_error": default_row["omega_error"],
-        "default_no_worse": no_worse(default_row),
+        "default_no_worse": no_worse(default_row, chapter),
         "ratio_default": chapter["seconds"] / default_row["seconds"],
         "ratio_error": chapter["orientation_error_deg"] / max(default_row["orientation_error_deg"], 1e-300),
     }
-    matching = [r for r in rows if r["method"] == "default" and no_worse(r)]
+    matching = [r for r in rows if r["method"] == "default" and no_worse(r, chapter)]
     if matching:
         best = min(matching, key=lambda r: r["seconds"])
         out["best_matching_rtol"] = best["rtol"]
