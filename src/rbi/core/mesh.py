@@ -614,8 +614,7 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
         elif mode == "exact" and problem.startswith("encloses no volume"):
             problem += "; for a flat part choose inertia: shell (the mass spread over the surface)"
         raise MeshError(problem)
-    unit = MassProperties(*_integrate(vertices, faces, _volume_moments), "mesh")
-    return MeshDistribution(mode, unit, vertices, faces, notes)
+    return MeshDistribution(mode, enclosed_volume_properties(vertices, faces), vertices, faces, notes)
 
 
 def mesh_mass_properties(

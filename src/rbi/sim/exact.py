@@ -1,27 +1,11 @@
 """Closed-form motions, used as ``--method exact`` and to test the integrators.
 
-Public names:
-
-- :func:`solve` ``(scene, q0, omega0) -> Solution``: picks the closed form that applies or
-  raises :class:`NotIntegrable`.
-- Solutions (each with ``state_at(t) -> (q (N, 4), omega (N, 3))``, ``description`` and
-  ``facts()``, a dict of characteristic numbers):
-
-  - :class:`UniformRotation`: a steady spin about a principal axis (also the sleeping top).
-  - :class:`SymmetricFreeBody`: torque-free body with two equal moments, elementary
-    functions: steady rotation about the fixed angular momentum combined with a steady spin
-    about the symmetry axis.
-  - :class:`EulerPoinsot`: torque-free asymmetric body. ω from Jacobi's elliptic functions
-    (``scipy.special.ellipj``); orientation from Landau's Euler angles about the fixed
-    angular momentum, the precession angle in closed form through the incomplete elliptic
-    integral of the third kind (Carlson's R_F and R_J, ``scipy.special.elliprf/elliprj``).
-    ``period`` = 4K(m)/λ, the period of ω; near the intermediate axis the body flips every
-    half period.
-  - :class:`LagrangeTop`: heavy axisymmetric top with its centre of mass on the axis.
-    u = cos θ moves between the two lower roots u₁ ≤ u₂ of the cubic
-    f(u) = (α − βu)(1 − u²) − (a − bu)²: u = u₁ + (u₂ − u₁) sn²(σ, m), m = (u₂−u₁)/(u₃−u₁),
-    σ̇ = √(β(u₃ − u₁))/2, nutation period 2K(m)/σ̇; precession and spin angles in closed form
-    (elliptic integrals of the third kind); u₁ = u₂ is steady precession (m = 0).
+:func:`solve` ``(scene, q0, omega0)`` picks the one that applies (or raises
+:class:`NotIntegrable`): :class:`UniformRotation` (a steady spin about a principal axis, also the
+sleeping top), :class:`SymmetricFreeBody`, :class:`EulerPoinsot` (torque-free asymmetric body;
+near the intermediate axis it flips every half period of ω) or :class:`LagrangeTop`. Each has
+``state_at(t) -> (q (N, 4), omega (N, 3))``, ``description`` and ``facts()`` (characteristic
+numbers); its docstring gives its formulas.
 
 Frames: q = [w, x, y, z] body -> world, ω in body axes (rad/s); the world's z is up. Times in
 seconds. The scene's inertia is about its fixed point (pivot, or centre of mass of a free
@@ -335,7 +319,9 @@ class LagrangeTop:
     Euler angles ``R_world_triad = Rz(φ) Rx(θ) Rz(ψ)``; constants ω₃ (spin), h_z (vertical
     angular momentum) and E. With u = cos θ, α = (2E − I₃ω₃²)/I₁, β = 2mgl/I₁, a = h_z/I₁,
     b = I₃ω₃/I₁: u̇² = f(u) = (α − βu)(1 − u²) − (a − bu)², φ̇ = (a − bu)/(1 − u²),
-    ψ̇ = ω₃ − φ̇ u.
+    ψ̇ = ω₃ − φ̇ u. u moves between the two lower roots u₁ ≤ u₂ of the cubic f:
+    u = u₁ + (u₂ − u₁) sn²(σ, m), m = (u₂ − u₁)/(u₃ − u₁) (u₁ = u₂: steady precession); φ and
+    ψ in closed form through elliptic integrals of the third kind.
     """
 
     def __init__(self, scene: Scene, q0, omega0, axis: np.ndarray) -> None:

@@ -1,28 +1,13 @@
 """Sweep rows on disk: streamed as runs finish, in run order, resumable, one writer at a time.
+The files beside an output ``F`` (``.F.rbi-lock``, ``.F.rbi-sweep.json``, ``.F.rbi-rows/``)
+and what each guarantees are in docs/security.md ("Files rbi keeps beside an output"); names
+are made by :func:`rbi.files.safe.beside`.
 
-Beside an output ``F`` (every name made by :func:`rbi.files.safe.beside`, shortened with a hash
-when ``F``'s name is long):
-
-- ``.F.rbi-lock``: held (``fcntl``) while a run writes ``F``; a second run on ``F`` is exit 2.
-- ``.F.rbi-sweep.json``: what the rows are of (spec content, options, format, columns). It
-  exists while the sweep is unfinished; ``--resume`` is refused without it or when it differs.
-- CSV: the rows stream into ``F`` itself, whole chunks at a time; ``F`` always holds runs
-  ``0 .. k-1`` complete (a write that fails, a full disk included, is cut back to the last
-  whole chunk; a kill in the middle of a write leaves at most a partial last line, which
-  ``--resume`` drops after it has checked every whole row).
-- Parquet: each finished chunk is one complete Parquet file in the private folder
-  ``.F.rbi-rows/`` (named by its first run), so a kill or a full disk loses no finished run;
-  ``F`` itself is written from them, atomically, when the sweep completes, and the folder goes.
-
-``--resume`` first checks everything (the settings, every kept row: its run number, the swept
-values this sweep gives that run, finite numbers of the right type, no row past the grid) and
-changes nothing until all of it holds: a file that is not this sweep's is exit 2 and stays
-byte-identical.
-
-CSV cells follow the one rule of every CSV rbi writes (:func:`rbi.text.csv_cell`): floats in
-Python's shortest round-trip repr (no digits lost), empty cells for undefined values, text a
-spreadsheet would run as a formula prefixed with ``'``; :func:`rbi.text.csv_text_read` reads a
-text cell back.
+A CSV output holds runs ``0 .. k-1`` complete: a failed write is cut back to the last whole
+chunk, and a kill mid-write leaves at most a partial last line, which ``--resume`` drops after
+checking every whole row. ``--resume`` checks everything (the settings; each kept row's run
+number, swept values, types and finiteness; no row past the grid) before it changes anything.
+CSV cells follow :func:`rbi.text.csv_cell`; :func:`rbi.text.csv_text_read` reads a text cell back.
 """
 
 from __future__ import annotations
