@@ -55,7 +55,7 @@ from rbi.text import csv_lines, number, vector_text, visible
 if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's modules load then)
     from rbi.robot.audit import AuditReport
     from rbi.sim.budget import DEFAULT_MAX_STEPS
-    from rbi.spec.from_step import StepImport
+    from rbi.spec.from_step import import_step
     from rbi.sweeps.execute import available_cores
     from rbi.sweeps.plan import Grid, Normal, Uniform
     from rbi.sweeps.study import MAX_ROWS_SHOWN
@@ -1158,38 +1158,6 @@ def audit(
     return report
 
 
-def import_step(
-    path: str | os.PathLike,
-    *,
-    density: float | None = None,
-    material: str | None = None,
-    relative_to: str | os.PathLike | None = None,
-) -> StepImport:
-    """Read a STEP file as ``rbi import FILE.step`` does (needs the extra ``cad``): its solids
-    integrated on the exact geometry, and a spec with one ``shape: step`` part per solid.
-
-    Args:
-        path: the STEP file (.step, .stp).
-        density, material: kg/m³, or a built-in material name, for every part (default 1000
-            kg/m³, a placeholder).
-        relative_to: the folder the spec will be saved in (the parts name the file relative to
-            it); default the current folder.
-
-    Returns:
-        A `rbi.spec.from_step.StepImport`: ``.spec`` (a dict: what ``rbi import`` prints as
-        YAML), ``.solids`` (each with ``.name``, ``.props`` at unit density in metres, and
-        ``.integration_error``), ``.unit`` (the file's length unit) and ``.density`` (kg/m³).
-
-    Raises:
-        SpecError: the file cannot be read, is not STEP, holds no closed solid, or OpenCascade
-            is missing; a bad ``density`` or ``material``.
-    """
-    # not at top level: `rbi inertia` would load rbi.spec.from_step too
-    from rbi.spec.from_step import import_step as run_import
-
-    return run_import(path, density=density, material=material, relative_to=relative_to)
-
-
 @dataclass(frozen=True)
 class ImportedLink:
     """One link of a robot file with mass properties, as ``rbi import`` turns it into a spec
@@ -1443,6 +1411,11 @@ def __getattr__(name: str) -> Any:
         from rbi.robot.audit import AuditReport
 
         return AuditReport
+    if name == "import_step":  # read a STEP file as `rbi import FILE.step` does
+        # not at top level: `rbi inertia` would load rbi.spec.from_step too
+        from rbi.spec.from_step import import_step
+
+        return import_step
     if name in ("Grid", "Normal", "Uniform"):
         # not at top level: `rbi inertia` would load rbi.sweeps.plan too
         from rbi.sweeps import plan

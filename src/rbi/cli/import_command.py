@@ -11,7 +11,7 @@ from typing import Annotated
 import typer
 
 from rbi import api
-from rbi.api import SpecError, check_distinct, import_step, output_target, write_output
+from rbi.api import SpecError, check_distinct, output_target, write_output
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption
 from rbi.cli.render import emit
 from rbi.cli.terminal import say, terminal_safe
@@ -131,7 +131,7 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
     if out is not None:
         target = output_target(out, "--out", ("yaml", "yml"), inputs=[file])
     home = os.path.dirname(os.path.abspath(out)) if out is not None else None
-    imported = import_step(file, density=density, material=material, relative_to=home)
+    imported = api.import_step(file, density=density, material=material, relative_to=home)
     named = {str(part.get("file", "")) for part in imported.spec.get("parts", [])}
     outside = sorted(n for n in named if os.path.isabs(n) or n.split("/")[0] == "..")
     if target is not None and outside:

@@ -47,18 +47,9 @@ class StepImport:
         return comment(*lines) + dump(self.spec)
 
 
-def import_step(
-    path: str | os.PathLike,
-    *,
-    density: float | None = None,
-    material: str | None = None,
-    relative_to: str | os.PathLike | None = None,
-) -> StepImport:
-    """Read the STEP file at ``path`` and build its spec; the parts name the file relative to
-    the folder ``relative_to`` (default: the current folder), where the spec will be saved.
-    Raises :class:`InputError`: ``density`` or ``material`` wrong (message starting with the
-    parameter's name), or the file unreadable (starting with ``path``)."""
-
+def _fill(density: float | None, material: str | None) -> float | str:
+    """What fills every solid: ``material``, ``density`` (kg/m³) or the placeholder density;
+    ArgumentError naming the parameter when either is wrong or both are given."""
     if density is not None and material is not None:
         raise ArgumentError(("density", "material"), "give one of them, not both")
     if density is not None and not (
@@ -70,6 +61,27 @@ def import_step(
         raise ArgumentError("density", f"must be a positive number (kg/m³), got {literal(density)}")
     if material is not None and (not isinstance(material, str) or canonical_name(material) is None):
         raise ArgumentError("material", literal(unknown_material_message(str(material)), quoted=False))
+    return material if material is not None else density if density is not None else DEFAULT_DENSITY
+
+
+def import_step(
+    path: str | os.PathLike,
+    *,
+    density: float | None = None,
+    material: str | None = None,
+    relative_to: str | os.PathLike | None = None,
+) -> StepImport:
+    """Read a STEP file as ``rbi import FILE.step`` does (``rbi.api.import_step``; needs the
+    extra ``cad``): its solids integrated on the exact geometry, and a spec with one ``shape:
+    step`` part per solid naming the file relative to the folder ``relative_to`` (default: the
+    current folder), where the spec will be saved. ``density`` (kg/m³) or ``material`` (a
+    built-in name) fills every part (default 1000 kg/m³, a placeholder). Returns a `StepImport`:
+    ``.spec`` (SI units, the file's origin and axes), ``.solids`` (``.props`` at unit density
+    in metres), ``.unit`` (the file's), ``.density`` (kg/m³). SpecError (its line starting with
+    ``path``): unreadable, not STEP, no closed solid, OpenCascade missing; ArgumentError naming
+    ``density`` or ``material``."""
+
+    fill = _fill(density, material)
     home = os.path.abspath(relative_to) if relative_to is not None else os.getcwd()
     file = os.path.abspath(path)
     if not os.path.isfile(file):
@@ -79,9 +91,6 @@ def import_step(
         step = read_step(Path(file))
     except ValueError as exc:
         raise InputError(f"{path}: {exc}", file=str(path)) from None
-    fill: float | str = (
-        material if material is not None else density if density is not None else DEFAULT_DENSITY
-    )
     written = os.path.relpath(file, home)
     parts = [
         {"name": solid.name, "shape": "step", "file": written, "solid": solid.name, "density": fill}

@@ -28,6 +28,7 @@ part axes to body axes.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -116,61 +117,52 @@ def _vector(v) -> list[float]:
 
 
 def _primitive(part, spec_path: str, length_unit: str = "m") -> dict[str, Any] | None:
-
-    if isinstance(part, models.ConePart):
-        return _frustum(part.apex, part.base, 0.0, part.radius)
-    if isinstance(part, models.CylinderPart):
-        return _frustum(part.start, part.end, part.radius, part.radius)
-    if isinstance(part, models.TubePart):
-        return _frustum(part.start, part.end, part.outer_radius, part.outer_radius, part.inner_radius)
-    if isinstance(part, models.FrustumPart):
-        return _frustum(part.start, part.end, part.start_radius, part.end_radius)
-    if isinstance(part, models.RodPart):
-        radius = ROD_RADIUS_FRACTION * float(np.linalg.norm(np.subtract(part.end, part.start)))
-        return _frustum(part.start, part.end, radius, radius)
-    if isinstance(part, models.SpherePart):
-        return _ellipsoid(part.center, [part.radius] * 3, None)
-    if isinstance(part, models.SphericalShellPart):
-        return _ellipsoid(part.center, [part.outer_radius] * 3, None)
-    if isinstance(part, models.EllipsoidPart):
-        return _ellipsoid(part.center, part.semi_axes, rotation_matrix(part.rotation))
-    if isinstance(part, models.BoxPart):
-        R = rotation_matrix(part.rotation)
-        return {
-            "kind": "box",
-            "center": _vector(part.center),
-            "size": _vector(part.size),
-            "rotation": (np.eye(3) if R is None else R).tolist(),
-        }
-    if isinstance(part, models.PointPart):
-        return {"kind": "point", "position": _vector(part.position)}
-    if isinstance(part, models.TorusPart):
-        return {
-            "kind": "torus",
-            "center": _vector(part.center),
-            "axis": _unit(part.axis),
-            "major_radius": float(part.major_radius),
-            "minor_radius": float(part.minor_radius),
-        }
-    if isinstance(part, models.HemispherePart):
-        return {
-            "kind": "hemisphere",
-            "center": _vector(part.center),
-            "axis": _unit(part.axis),
-            "radius": float(part.radius),
-        }
-    if isinstance(part, models.CapsulePart):
-        return {
-            "kind": "capsule",
-            "start": _vector(part.start),
-            "end": _vector(part.end),
-            "radius": float(part.radius),
-        }
+    """The drawable primitive of one written part (before its pattern), or None for a shape
+    without one (drawn as its stand-in box)."""
     if isinstance(part, models.MeshPart):
         return _mesh(part, spec_path)
     if isinstance(part, models.StepPart):
         return _step(part, spec_path, length_unit)
-    return None
+    draw = PRIMITIVES.get(type(part))
+    return None if draw is None else draw(part)
+
+
+def _rod(part) -> dict[str, Any]:
+    radius = ROD_RADIUS_FRACTION * float(np.linalg.norm(np.subtract(part.end, part.start)))
+    return _frustum(part.start, part.end, radius, radius)
+
+
+def _matrix(rotation) -> list[list[float]]:
+    """The part's rotation (part axes to body axes) as rows; the identity for none."""
+    R = rotation_matrix(rotation)
+    return (np.eye(3) if R is None else R).tolist()
+
+
+def _fields(kind: str, part, **fields) -> dict[str, Any]:
+    """``{"kind": kind, ...}`` with each field read from ``part`` as plain floats: ``name=
+    "vector"`` (a point), ``"unit"`` (a direction, made unit), ``"number"``, ``"rotation"``."""
+    read = {"vector": _vector, "unit": _unit, "number": float, "rotation": _matrix}
+    return {"kind": kind} | {name: read[how](getattr(part, name)) for name, how in fields.items()}
+
+
+PRIMITIVES: dict[type, Callable[[Any], dict[str, Any]]] = {
+    models.ConePart: lambda p: _frustum(p.apex, p.base, 0.0, p.radius),
+    models.CylinderPart: lambda p: _frustum(p.start, p.end, p.radius, p.radius),
+    models.TubePart: lambda p: _frustum(p.start, p.end, p.outer_radius, p.outer_radius, p.inner_radius),
+    models.FrustumPart: lambda p: _frustum(p.start, p.end, p.start_radius, p.end_radius),
+    models.RodPart: _rod,
+    models.SpherePart: lambda p: _ellipsoid(p.center, [p.radius] * 3, None),
+    models.SphericalShellPart: lambda p: _ellipsoid(p.center, [p.outer_radius] * 3, None),
+    models.EllipsoidPart: lambda p: _ellipsoid(p.center, p.semi_axes, rotation_matrix(p.rotation)),
+    models.BoxPart: lambda p: _fields("box", p, center="vector", size="vector", rotation="rotation"),
+    models.PointPart: lambda p: _fields("point", p, position="vector"),
+    models.TorusPart: lambda p: _fields(
+        "torus", p, center="vector", axis="unit", major_radius="number", minor_radius="number"
+    ),
+    models.HemispherePart: lambda p: _fields("hemisphere", p, center="vector", axis="unit", radius="number"),
+    models.CapsulePart: lambda p: _fields("capsule", p, start="vector", end="vector", radius="number"),
+}
+"""The drawable primitive of each closed-form shape from its fields (file units, body frame)."""
 
 
 def _unit(v) -> list[float]:

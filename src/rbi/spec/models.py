@@ -144,6 +144,22 @@ def _distinct(a: list[float], b: list[float], names: str) -> None:
         raise ValueError(f"{names}: must be different points (the length would be 0)")
 
 
+def _apart(first: str, second: str) -> Any:
+    """The model check that the points ``first`` and ``second`` differ (the part has a length)."""
+
+    def check(self):
+        _distinct(getattr(self, first), getattr(self, second), f"{first}, {second}")
+        return self
+
+    return model_validator(mode="after")(check)
+
+
+def _without_volume(what: str) -> Any:
+    """The check, before the fields', that a part without volume (``what``) has no ``density``
+    and no ``subtract``."""
+    return model_validator(mode="before")(classmethod(lambda cls, data: _mass_only(data, what)))
+
+
 class ConePart(_Solid):
     """Solid right circular cone: ``apex`` (tip) to ``base`` (centre of the base disc)."""
 
@@ -152,10 +168,7 @@ class ConePart(_Solid):
     apex: Vector3 = Field(description="The tip, body frame.")
     base: Vector3 = Field(description="Centre of the base disc, body frame.")
 
-    @model_validator(mode="after")
-    def _has_height(self):
-        _distinct(self.apex, self.base, "apex, base")
-        return self
+    _has_height = _apart("apex", "base")
 
 
 class CylinderPart(_Solid):
@@ -166,10 +179,7 @@ class CylinderPart(_Solid):
     start: Vector3 = Field(description="Centre of one end face, body frame.")
     end: Vector3 = Field(description="Centre of the other end face, body frame.")
 
-    @model_validator(mode="after")
-    def _has_length(self):
-        _distinct(self.start, self.end, "start, end")
-        return self
+    _has_length = _apart("start", "end")
 
 
 class PointPart(_Part):
@@ -179,10 +189,7 @@ class PointPart(_Part):
     mass: Positive = Field(description="Mass, in the file's mass unit.")
     position: Vector3 = Field(description="Where the mass is, body frame.")
 
-    @model_validator(mode="before")
-    @classmethod
-    def _no_density(cls, data: Any):
-        return _mass_only(data, "a point mass")
+    _no_density = _without_volume("a point mass")
 
 
 def _mass_only(data: Any, what: str) -> Any:
@@ -257,15 +264,21 @@ class Rotation(_Strict):
         return self
 
 
-def _hollow(part, what: str) -> None:
-    if part.inner_radius > part.outer_radius:
-        raise ValueError(
-            f"inner_radius: must not exceed outer_radius ({part.inner_radius!r} > {part.outer_radius!r})"
-        )
-    if part.inner_radius == part.outer_radius and part.density is not None:
-        raise ValueError(
-            f"density: a thin-walled {what} (inner_radius = outer_radius) has no volume; give its `mass`"
-        )
+def _hollow(what: str) -> Any:
+    """The model check of a hollow solid (``what``): its bore fits inside, and a thin wall has a mass."""
+
+    def check(part):
+        if part.inner_radius > part.outer_radius:
+            raise ValueError(
+                f"inner_radius: must not exceed outer_radius ({part.inner_radius!r} > {part.outer_radius!r})"
+            )
+        if part.inner_radius == part.outer_radius and part.density is not None:
+            raise ValueError(
+                f"density: a thin-walled {what} (inner_radius = outer_radius) has no volume; give its `mass`"
+            )
+        return part
+
+    return model_validator(mode="after")(check)
 
 
 class BoxPart(_Solid):
@@ -301,10 +314,7 @@ class SphericalShellPart(_Solid):
         description="Inner radius, at most outer_radius (equal: a thin shell, given by mass)."
     )
 
-    @model_validator(mode="after")
-    def _radii(self):
-        _hollow(self, "shell")
-        return self
+    _radii = _hollow("shell")
 
 
 class TubePart(_Solid):
@@ -316,11 +326,8 @@ class TubePart(_Solid):
     outer_radius: Positive = Field(description="Outer radius.")
     inner_radius: NonNegative = Field(description="Inner radius (the bore), at most outer_radius.")
 
-    @model_validator(mode="after")
-    def _checks(self):
-        _distinct(self.start, self.end, "start, end")
-        _hollow(self, "tube")
-        return self
+    _has_length = _apart("start", "end")
+    _radii = _hollow("tube")
 
 
 class FrustumPart(_Solid):
@@ -333,9 +340,10 @@ class FrustumPart(_Solid):
     start_radius: NonNegative = Field(description="Radius at start (0 for a cone's tip).")
     end_radius: NonNegative = Field(description="Radius at end (0 for a cone's tip).")
 
+    _has_length = _apart("start", "end")
+
     @model_validator(mode="after")
-    def _checks(self):
-        _distinct(self.start, self.end, "start, end")
+    def _radii(self):
         if self.start_radius == 0 and self.end_radius == 0:
             raise ValueError("start_radius, end_radius: at least one must be greater than 0")
         return self
@@ -364,15 +372,8 @@ class RodPart(_Part):
     start: Vector3 = Field(description="One end, body frame.")
     end: Vector3 = Field(description="The other end, body frame.")
 
-    @model_validator(mode="before")
-    @classmethod
-    def _no_density(cls, data: Any):
-        return _mass_only(data, "a thin rod")
-
-    @model_validator(mode="after")
-    def _has_length(self):
-        _distinct(self.start, self.end, "start, end")
-        return self
+    _no_density = _without_volume("a thin rod")
+    _has_length = _apart("start", "end")
 
 
 class CustomPart(_Part):
@@ -392,10 +393,7 @@ class CustomPart(_Part):
         None, description="How the part's axes are turned into body axes; default: aligned."
     )
 
-    @model_validator(mode="before")
-    @classmethod
-    def _no_density(cls, data: Any):
-        return _mass_only(data, "a custom part")
+    _no_density = _without_volume("a custom part")
 
 
 def _nonzero(vector: list[float], name: str, meaning: str) -> None:
@@ -452,10 +450,7 @@ class CapsulePart(_Solid):
     end: Vector3 = Field(description="Centre of the other end face; |end - start| is the cylinder's length.")
     radius: Positive = Field(description="Radius of the cylinder and of both caps.")
 
-    @model_validator(mode="after")
-    def _has_length(self):
-        _distinct(self.start, self.end, "start, end")
-        return self
+    _has_length = _apart("start", "end")
 
 
 class MeshPart(_Solid):
