@@ -9,8 +9,11 @@ from __future__ import annotations
 
 import struct
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
+
+from rbi.core.mesh import mesh_distribution, surface_area
 
 
 def box_mesh(size=(1.0, 1.0, 1.0), center=(0.0, 0.0, 0.0)) -> tuple[np.ndarray, np.ndarray]:
@@ -172,3 +175,20 @@ WRITERS = {
     "mesh.msh": write_msh,
 }
 """File name (its extension picks the format) -> writer."""
+
+
+def mesh_mass_properties(vertices, faces, mode: str = "exact", *, mass=None, density=None) -> SimpleNamespace:
+    """rbi's integration of a mesh (:func:`rbi.core.mesh.mesh_distribution`) at a ``mass`` or a
+    ``density`` (per volume, or per area for ``shell``), as a spec's mesh part scales it:
+    ``properties`` (MassProperties, frame "mesh"), ``volume`` (None for a shell), ``area`` of
+    what was integrated, ``notes``."""
+    distribution = mesh_distribution(vertices, faces, mode)
+    unit = distribution.unit
+    properties = unit.with_mass(float(density) * unit.mass if mass is None else float(mass))
+    shell = mode == "shell"
+    return SimpleNamespace(
+        properties=properties,
+        volume=None if shell else unit.mass,
+        area=unit.mass if shell else surface_area(distribution.vertices, distribution.faces),
+        notes=distribution.notes,
+    )

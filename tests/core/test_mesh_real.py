@@ -9,9 +9,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from rbi.core.mesh import mesh_mass_properties
 from rbi.formats.mesh_file import read_mesh_arrays
 from tests.core.test_mesh_modes import combined
+from tests.mesh_builders import mesh_mass_properties
 
 pybullet_data = pytest.importorskip("pybullet_data")
 mujoco = pytest.importorskip("mujoco")

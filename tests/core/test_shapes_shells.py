@@ -11,8 +11,7 @@ import numpy as np
 import pytest
 
 from rbi.core import shapes
-from rbi.core.mesh import mesh_mass_properties
-from tests.mesh_builders import box_mesh, cylinder_mesh, sphere_mesh
+from tests.mesh_builders import box_mesh, cylinder_mesh, mesh_mass_properties, sphere_mesh
 
 
 def _principal_about_centroid(vertices, faces, mass):

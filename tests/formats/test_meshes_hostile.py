@@ -15,9 +15,9 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from rbi.core.mesh import MeshError, mesh_mass_properties
+from rbi.core.mesh import MeshError
 from tests.conftest import one_line_exit_2, run_rbi_inprocess
-from tests.mesh_builders import box_mesh, write_binary_stl, write_obj
+from tests.mesh_builders import box_mesh, mesh_mass_properties, write_binary_stl, write_obj
 
 TETRA = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n"
 TETRA_FACES = "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"

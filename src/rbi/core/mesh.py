@@ -90,19 +90,6 @@ class MeshDistribution(NamedTuple):
     notes: tuple[str, ...] = ()
 
 
-class MeshMass(NamedTuple):
-    """A mesh's mass in its own frame and length unit L: ``properties`` (the
-    :class:`~rbi.core.mass.MassProperties`, frame ``"mesh"``), ``volume`` (L³: the enclosed
-    solid's, or the hull's for ``convex``; None for ``shell``) and ``area`` (L²: the surface of
-    the mesh integrated); ``notes`` as in :class:`MeshDistribution`."""
-
-    mode: str
-    properties: MassProperties
-    volume: float | None
-    area: float
-    notes: tuple[str, ...] = ()
-
-
 class RepairedMesh(NamedTuple):
     """A mesh after :func:`repair_mesh`: its vertices and faces (the added triangles last), the
     number of triangles added and their total area (L²)."""
@@ -615,35 +602,3 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
             problem += "; for a flat part choose inertia: shell (the mass spread over the surface)"
         raise MeshError(problem)
     return MeshDistribution(mode, enclosed_volume_properties(vertices, faces), vertices, faces, notes)
-
-
-def mesh_mass_properties(
-    vertices: np.ndarray,
-    faces: np.ndarray,
-    mode: str = "exact",
-    *,
-    mass: float | None = None,
-    density: float | None = None,
-) -> MeshMass:
-    """Mass properties of a mesh (vertices in length unit L, faces wound outward) in ``mode``
-    ``exact`` (the enclosed solid; the mesh must be closed), ``convex`` (the solid convex hull)
-    or ``shell`` (mass spread evenly over the surface, as MuJoCo's ``shellinertia``). Give
-    either ``mass`` (M) or ``density``: mass per volume (M/L³) for ``exact`` and ``convex``,
-    mass per area (M/L²) for ``shell``, as MuJoCo reads a geom's density. Everything in the
-    mesh's frame; the inertia about the centre of mass (M·L²). Raises :class:`MeshError`."""
-    if (mass is None) == (density is None):
-        raise MeshError("give either a mass or a density")
-    distribution = mesh_distribution(vertices, faces, mode)
-    unit = distribution.unit
-    if density is not None:
-        mass = float(density) * unit.mass
-    mass = float(mass)  # type: ignore[arg-type]  # one of the two is given (checked above)
-    inertia = unit.inertia_about_com * (mass / unit.mass)
-    area = unit.mass if mode == "shell" else surface_area(distribution.vertices, distribution.faces)
-    return MeshMass(
-        mode,
-        MassProperties(mass, unit.center_of_mass, 0.5 * (inertia + inertia.T), "mesh"),
-        None if mode == "shell" else unit.mass,
-        area,
-        distribution.notes,
-    )
