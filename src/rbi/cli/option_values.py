@@ -125,16 +125,10 @@ def vary_option(items: list[str]) -> dict[str, Any]:
 def parse_about(text: str, body) -> tuple[str, list[float]]:
     """Resolve ``--about`` against a `rbi.Body`: (label, point in body coordinates)."""
     key = text.strip().lower()
-    if key == "com":
-        return "com", body.center_of_mass.tolist()
-    if key == "origin":
-        return "origin", [0.0, 0.0, 0.0]
-    if key == "pivot":
-        if body.pivot is None:
-            raise SpecError(
-                f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none"
-            )
-        return "pivot", body.pivot.tolist()
+    if key == "pivot" and body.pivot is None:
+        raise SpecError(f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none")
+    if key in ("com", "origin", "pivot"):
+        return key, body.point(key).tolist()
     try:
         return "point", parse_vector(text, "--about")
     except SpecError:
