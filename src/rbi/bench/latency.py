@@ -33,11 +33,13 @@ QUICK_REPEATS = 3
 FULL_REPEATS = 21
 
 
+SIMULATE_TOP = "rbi simulate bodies/top.yaml --spin 200 --tilt 10"
+
 TARGETS = {
     "rbi inertia bodies/top.yaml": 3.0,
     "rbi inertia bodies/top.yaml --format json": 3.0,
     "rbi --help": 1.3,
-    "rbi simulate bodies/top.yaml --spin 200 --tilt 10": 2.5,
+    SIMULATE_TOP: 2.5,
 }
 """Limits on whole-process CPU time, as multiples of ``python -c "import numpy"``'s (issue 9;
 issue 24 for ``rbi inertia``: 3x, with typer parsing every command line and no patch of a
@@ -59,42 +61,31 @@ FIRST_RUN_TARGET = 1.3
 def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[str, list[str]]]:
     """(label, argv) of every timed command; the first is the baseline (this Python, the one rbi
     runs on)."""
-    rbi = rbi_command()
-    top = str(bodies / "top.yaml")
+    rbi, as_json = rbi_command(), ["--format", "json"]
+    top, bolted = str(bodies / "top.yaml"), str(bodies / "top_bolted.yaml")
     out = [
         ('python -c "import numpy"', [sys.executable, "-c", "import numpy"]),
         ("rbi --help", rbi + ["--help"]),
         ("rbi --version", rbi + ["--version"]),
         ("rbi inertia bodies/top.yaml", rbi + ["inertia", top]),
-        (ONE_FILE, rbi + ["inertia", top, "--format", "json"]),
+        (ONE_FILE, rbi + ["inertia", top, *as_json]),
         many_files_command(bodies, rbi),
-        (
-            "rbi principal bodies/top_bolted.yaml",
-            rbi + ["principal", str(bodies / "top_bolted.yaml"), "--format", "json"],
-        ),
-        (
-            "rbi simulate bodies/top.yaml --spin 200 --tilt 10",
-            rbi + ["simulate", top, "--spin", "200", "--tilt", "10"],
-        ),
+        ("rbi principal bodies/top_bolted.yaml", rbi + ["principal", bolted, *as_json]),
+        (SIMULATE_TOP, rbi + ["simulate", top, "--spin", "200", "--tilt", "10"]),
         (
             "rbi simulate bodies/top_bolted.yaml --spin 200",
-            rbi + ["simulate", str(bodies / "top_bolted.yaml"), "--spin", "200", "--format", "json"],
+            rbi + ["simulate", bolted, "--spin", "200", *as_json],
         ),
     ]
     if cloud_specs:
         n = cloud_specs["points"]
-        out.append(
+        out += [
             (
-                f"rbi principal (cloud of {n:,} points, CSV)",
-                rbi + ["principal", str(cloud_specs["csv"]), "--format", "json"],
+                f"rbi principal (cloud of {n:,} points, {kind})",
+                rbi + ["principal", str(cloud_specs[key]), *as_json],
             )
-        )
-        out.append(
-            (
-                f"rbi principal (cloud of {n:,} points, .npy)",
-                rbi + ["principal", str(cloud_specs["npy"]), "--format", "json"],
-            )
-        )
+            for kind, key in (("CSV", "csv"), (".npy", "npy"))
+        ]
     return out
 
 
@@ -191,7 +182,7 @@ def first_run(bodies: Path, repeats: int) -> dict:
     ratio. Nothing is compiled or cached at run time, so the two should match (the package's own
     files are installed and in the OS file cache either way)."""
 
-    argv = rbi_command() + ["simulate", str(bodies / "top.yaml"), "--spin", "200", "--tilt", "10"]
+    argv = dict(commands(bodies, None))[SIMULATE_TOP]
     firsts, laters, messages = [], [], []
     for _ in range(repeats):
         with tempfile.TemporaryDirectory(prefix="rbi-bench-home-") as home:
@@ -210,7 +201,7 @@ def first_run(bodies: Path, repeats: int) -> dict:
             left = sorted(str(p.relative_to(home)) for p in Path(home).rglob("*"))
     first, later = statistics.median(firsts), statistics.median(laters)
     return {
-        "command": "rbi simulate bodies/top.yaml --spin 200 --tilt 10",
+        "command": SIMULATE_TOP,
         "first_median_s": first,
         "later_median_s": later,
         "ratio": first / later,

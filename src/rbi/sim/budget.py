@@ -42,16 +42,8 @@ def estimated_steps(
     if not math.isfinite(rate) or not math.isfinite(duration):
         return math.inf
     radians = SAFETY * rate * float(duration)
-    if method in SCIPY_COST:
-        tolerance = SCIPY_DEFAULT_RTOL if rtol is None else rtol
-        # order 5 (rk45) / 8 (dop853): steps scale as rtol^(-1/order)
-        order = 5.0 if method == "rk45" else 8.0
-        return (
-            SCIPY_COST[method]
-            * STEPS_PER_RADIAN
-            * radians
-            * (DEFAULT_RTOL / tolerance) ** (1.0 / order)
-            * 0.1
-        )
-    tolerance = DEFAULT_RTOL if rtol is None else rtol
-    return STEPS_PER_RADIAN * radians * (DEFAULT_RTOL / tolerance) ** 0.125
+    scipy = method in SCIPY_COST
+    cost, scale = (SCIPY_COST[method], 0.1) if scipy else (1.0, 1.0)
+    order = 5.0 if method == "rk45" else 8.0  # steps scale as rtol^(-1/order)
+    tolerance = rtol if rtol is not None else (SCIPY_DEFAULT_RTOL if scipy else DEFAULT_RTOL)
+    return cost * STEPS_PER_RADIAN * radians * (DEFAULT_RTOL / tolerance) ** (1.0 / order) * scale
