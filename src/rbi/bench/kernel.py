@@ -94,21 +94,10 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     progress("kernel: done")
     return {
         "case": _case_entry(case),
-        "chapter": {
-            "seconds": chapter_s,
-            "repeats": len(chapter_times),
-            "steps": chapter.steps,
-            "rtol": workprecision.CHAPTER[1],
-            "orientation_error_deg": chapter_err["orientation_error_deg"],
-            "omega_error": chapter_err["omega_error"],
-        },
-        "default": {
-            "seconds": default_s,
-            "steps": default.steps,
-            "rtol": default.rtol,
-            "orientation_error_deg": default_err["orientation_error_deg"],
-            "omega_error": default_err["omega_error"],
-        },
+        "chapter": _entry(
+            chapter_s, chapter.steps, workprecision.CHAPTER[1], chapter_err, len(chapter_times)
+        ),
+        "default": _entry(default_s, default.steps, default.rtol, default_err),
         "minimal_loop": _minimal_loop_entry(minimal_s, steps[0], out, default),
         "trials": trials,
         "best_matching": best,
@@ -117,6 +106,14 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         "ratio_to_minimal_loop": default_s / minimal_s,
         "targets": TARGETS,
     }
+
+
+def _entry(seconds: float, steps: int, rtol: float, err: dict, repeats: int | None = None) -> dict:
+    """A timed run as the result records it: its median seconds (over ``repeats`` runs, when
+    given), accepted steps, tolerance and final orientation (deg) and ω (rad/s) errors."""
+    timed = {"seconds": seconds} | ({} if repeats is None else {"repeats": repeats})
+    errors = {key: err[key] for key in ("orientation_error_deg", "omega_error")}
+    return timed | {"steps": steps, "rtol": rtol} | errors
 
 
 def _tolerance_trials(simulate_call, scene, reference, chapter_err: dict, min_seconds: float) -> list[dict]:

@@ -111,13 +111,11 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     _in_process_sweep(spec, g, out)
     seconds = time.perf_counter() - start
     cpu = _cpu_seconds() - cpu_start
-    with open(out, encoding="utf-8") as stream:
-        lines = sum(1 for _ in stream) - 1
     return {
         "command": f"rbi sweep bodies/top.yaml --spin {_axis_text(g['spin'])} --tilt {_axis_text(g['tilt'])} "
         f"--duration {g['duration']:g} --out FILE.csv --yes --format json",
         "runs": runs,
-        "rows_written": lines,
+        "rows_written": _rows_in(out),
         "seconds": seconds,
         "runs_per_second": runs / seconds,
         # CPU time of every thread of this process over the wall time: how many cores the
@@ -125,6 +123,12 @@ def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
         "cpu_seconds": cpu,
         "cores_used": cpu / seconds,
     }
+
+
+def _rows_in(csv_path: Path) -> int:
+    """Rows of a CSV file, its header not counted."""
+    with open(csv_path, encoding="utf-8") as stream:
+        return sum(1 for _ in stream) - 1
 
 
 def _cpu_seconds() -> float:
@@ -153,21 +157,17 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     seconds = time.perf_counter() - start
     if proc.returncode != 0:
         return {"error": f"exit {proc.returncode}: {stderr.strip()[-200:]}"}
-    with open(out, encoding="utf-8") as stream:
-        rows = sum(1 for _ in stream) - 1
     quarter = max(1, len(samples) // 4)
-    first = [s["rss_mb"] for s in samples[:quarter]]
-    last = [s["rss_mb"] for s in samples[-quarter:]]
     return {
         "command": command,
         "runs": runs,
-        "rows_written": rows,
+        "rows_written": _rows_in(out),
         "seconds": seconds,
         # the child's high-water mark of resident memory (VmHWM) at the last sample: wait4's
         # ru_maxrss would also count the bench process's own memory at the fork
         "peak_rss_mb": max((s["peak_mb"] for s in samples), default=None),
-        "rss_first_quarter_mb": max(first) if first else None,
-        "rss_last_quarter_mb": max(last) if last else None,
+        "rss_first_quarter_mb": max((s["rss_mb"] for s in samples[:quarter]), default=None),
+        "rss_last_quarter_mb": max((s["rss_mb"] for s in samples[-quarter:]), default=None),
         "samples": samples[:: max(1, len(samples) // 40)],
     }
 
