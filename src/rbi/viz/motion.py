@@ -1,5 +1,5 @@
 """The data an animation plays: the parts placed about the point the body turns about, the
-orientation keyframes, and the path of the tip of the body's marked axis.
+orientation keyframes, and the path of the tip of the body's spin axis.
 
 World axes: z up (gravity along −z); the pivot of a top (or the centre of mass of a free body)
 at the origin. Quaternions are given in three.js order ``[x, y, z, w]``.
@@ -35,12 +35,6 @@ def keyframes_needed(duration: float, fastest_rate: float) -> int:
     return int(math.ceil(duration * max(fastest_rate, 0.0) / MAX_TURN_PER_KEYFRAME)) + 1
 
 
-def marked_axis(scene) -> np.ndarray:
-    """The body axis whose tip the animation traces (body frame, unit): the scene's spin axis,
-    the one whose tilt and precession the run reports (see :mod:`rbi.core.spin_axis`)."""
-    return np.asarray(scene.spin_axis, dtype=float)
-
-
 def animation_data(
     title: str,
     geometry: list[dict[str, Any]],
@@ -58,8 +52,7 @@ def animation_data(
     origin = np.asarray(scene.pivot if scene.pivoted else scene.com, dtype=float)
     parts = [shifted(item, origin) for item in geometry]
     size = body_size(parts)
-    axis = marked_axis(scene)
-    tip = axis * size
+    tip = np.asarray(scene.spin_axis, dtype=float) * size  # the axis the run reports the tilt of
     trace = np.array([quaternion_to_matrix(qi) @ tip for qi in q])
     low, high = height_range(parts, size, q)
     return {
