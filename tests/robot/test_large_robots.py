@@ -152,7 +152,7 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, sha
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
     model = read_robot(str(path))
     bulk = audit_model(model, density=density)
-    carried = _carried_mass(model)
+    carried = _carried_mass(model.links)
     codes = set()
     for link, found in zip(model.links, bulk.links):
         one = audit_link(model, link, carries_mass=carried[link.index], density=density)

@@ -33,6 +33,7 @@ from rbi.core.mesh import (
     weld_vertices,
 )
 from rbi.files.safe import read_input_file
+from rbi.formats.paths import cached, file_key
 
 MAX_MESH_BYTES = 256 * 2**20
 """Largest mesh file rbi reads (256 MiB)."""
@@ -71,17 +72,6 @@ _CACHE: OrderedDict[tuple, object] = OrderedDict()
 _CACHE_ENTRIES = 8
 
 
-def _cached(key: tuple, make):
-    if key in _CACHE:
-        _CACHE.move_to_end(key)
-        return _CACHE[key]
-    value = make()
-    _CACHE[key] = value
-    while len(_CACHE) > _CACHE_ENTRIES:
-        _CACHE.popitem(last=False)
-    return value
-
-
 def read_mesh_solid(path: Path, mode: str = "exact", repair: bool = False) -> MeshSolid:
     """Read, weld, optionally repair, check and integrate the mesh at ``path`` in ``mode``
     (``exact``, ``convex`` or ``shell``; see :mod:`rbi.core.mesh`). Raises ``ValueError``
@@ -105,7 +95,7 @@ def read_mesh_solid(path: Path, mode: str = "exact", repair: bool = False) -> Me
             mode, distribution, distribution.vertices, distribution.faces, added_faces, added_area
         )
 
-    return _cached(key + (mode, bool(repair)), make)
+    return cached(_CACHE, _CACHE_ENTRIES, key + (mode, bool(repair)), make)
 
 
 def read_mesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
@@ -125,7 +115,7 @@ def read_mesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
             raise ValueError(f"mesh {problem}")
         return weld_vertices(vertices, faces)
 
-    return _cached(key, make)
+    return cached(_CACHE, _CACHE_ENTRIES, key, make)
 
 
 def _file_key(path: Path) -> tuple:
@@ -134,11 +124,7 @@ def _file_key(path: Path) -> tuple:
             f"unknown mesh format {path.suffix or '(no extension)'!r}: "
             f"use one of {', '.join(MESH_FILE_TYPES)}"
         )
-    try:
-        status = path.stat()
-    except OSError as exc:
-        raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
-    return (str(path.resolve()), status.st_size, status.st_mtime_ns)
+    return file_key(path)
 
 
 def _read_bytes(path: Path) -> bytes:

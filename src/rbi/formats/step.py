@@ -38,6 +38,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from rbi.core.mass import MassProperties
+from rbi.formats.paths import cached, file_key
 
 MAX_STEP_BYTES = 32 * 2**20
 """Largest STEP file rbi reads (32 MiB). Measured: OpenCascade's libraries take 290 MB once
@@ -165,11 +166,13 @@ _CACHE_ENTRIES = 4
 
 
 def _loaded(path: Path) -> _Loaded:
-    key = _file_key(path)
-    if key in _CACHE:
-        _CACHE.move_to_end(key)
-        return _CACHE[key]
-    _check_text(path, key[1])
+    key = file_key(path)
+    return cached(_CACHE, _CACHE_ENTRIES, key, lambda: _read(path, key[1]))
+
+
+def _read(path: Path, size: int) -> _Loaded:
+    """The STEP file at ``path`` (``size`` bytes) read, each solid checked and integrated."""
+    _check_text(path, size)
     ocp = _ocp()
     with _quiet():
         document, unit_metres = _transfer(ocp, path)
@@ -183,19 +186,7 @@ def _loaded(path: Path) -> _Loaded:
         props, error = _integrate(ocp, shape, unit_metres, index, name)
         solids.append(StepSolid(names[index], props, error))
     unit = _UNIT_SYMBOLS.get(unit_metres, f"{unit_metres:g} m")
-    value = _Loaded(StepFile(tuple(solids), unit, unit_metres), tuple(shape for _, shape in labelled))
-    _CACHE[key] = value
-    while len(_CACHE) > _CACHE_ENTRIES:
-        _CACHE.popitem(last=False)
-    return value
-
-
-def _file_key(path: Path) -> tuple:
-    try:
-        status = path.stat()
-    except OSError as exc:
-        raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
-    return (str(path.resolve()), status.st_size, status.st_mtime_ns)
+    return _Loaded(StepFile(tuple(solids), unit, unit_metres), tuple(shape for _, shape in labelled))
 
 
 def _check_text(path: Path, size: int) -> None:

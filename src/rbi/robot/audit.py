@@ -1,30 +1,19 @@
 """``rbi audit``: each link's declared mass properties against its own geometry, the flags that
 say what is wrong, and the whole robot's totals.
 
-Per link (all in the link frame, SI):
+Per link (all in the link frame, SI): ``declared``, the inertial element (MJCF: what MuJoCo's
+compiler gives the body); ``geometry``, the link's collision geometry (else visual;
+``--geometry visual`` the other way round) as a solid at the declared mass, or at the given
+density when the link declares no mass; ``ratios``, each declared moment about the geometry's
+principal axes over the geometry's; ``com_offset``, the distance between the two centres of mass
+over the geometry's size (its bounding box's diagonal). The flags (``unphysical``,
+``placeholder``, ``mismatch``, ``density``, ``massless``, ``mesh``), their levels and limits
+(:data:`ERROR_RATIO`, :data:`WARNING_RATIO`, :data:`SOLID_DENSITY_RANGE`, :data:`COM_MARGIN`)
+are tabled in docs/audit.md ("What it checks").
 
-- ``declared``: the inertial element (MJCF: what MuJoCo's compiler gives the body);
-- ``geometry``: the link's collision geometry (else visual; ``--geometry visual`` the other way
-  round) as a solid at the declared mass (so ``implied_density`` = mass / volume), or at the
-  given density when the link declares no mass;
-- ``ratios``: each declared moment about the geometry's principal axes divided by the
-  geometry's moment about that axis; ``com_offset``: the distance between the two centres of
-  mass as a fraction of the geometry's size (its bounding box's diagonal).
-
-Flags (code, level):
-
-- ``unphysical`` (error): a negative mass, or an inertia that is not positive semi-definite or
-  breaks the triangle inequality (with the margin);
-- ``placeholder``: a diagonal inertia of three equal moments, or of round numbers (1, 0.1,
-  0.001, …) with zero products: error when a moment is more than :data:`ERROR_RATIO` times or
-  less than 1/:data:`ERROR_RATIO` of the geometry's at the same mass, else a warning;
-- ``mismatch``: a moment ratio outside [1/:data:`ERROR_RATIO`, :data:`ERROR_RATIO`] (error) or
-  outside [1/:data:`WARNING_RATIO`, :data:`WARNING_RATIO`] (warning), or a centre of mass outside
-  the geometry's bounds (warning);
-- ``density`` (warning): an implied density outside :data:`SOLID_DENSITY_RANGE`;
-- ``massless``: a link moved by a joint that has no mass (error when nothing it carries has
-  mass either, warning otherwise). A root link, or a link fixed to its parent, without mass is
-  legal: it is how simulators mark a static base, and it adds nothing to the total.
+Every model is audited one way, on arrays of its links (:class:`_Rows`: a URDF read in bulk
+gives them as columns, the careful readers' links are laid into them): screens on stacks clear
+the links with nothing to flag, and only the others are audited one by one.
 """
 
 from __future__ import annotations
@@ -40,7 +29,7 @@ from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import ArgumentError, literal
-from rbi.formats.robot import Link, LinkColumns, RobotModel
+from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
 from rbi.robot.tree import depth_first, placement, stack_apply, stacked, totals
@@ -192,7 +181,7 @@ class AuditReport(TableRepr):
     joints: list = field(default_factory=list)
     """Each joint coordinate's holding torque (:class:`rbi.robot.statics.JointTorque`)."""
     columns: _ColumnAudit | None = None
-    """The audit of a model read as columns, whose :attr:`links` are made when first asked for."""
+    """The audit on the links' arrays, whose :attr:`links` are made when first asked for."""
 
     @property
     def links(self) -> list[LinkAudit]:
@@ -274,16 +263,16 @@ class AuditReport(TableRepr):
         }
 
 
-def _link_dict(each: LinkAudit, declared_moments=None, geometry_moments=None) -> dict[str, Any]:
-    """One link's JSON (``declared_moments``/``geometry_moments``: their :func:`_moments`, when
-    already worked out)."""
+def _link_dict(each: LinkAudit, declared_moments, geometry_moments) -> dict[str, Any]:
+    """One link's JSON (``declared_moments``/``geometry_moments``: the principal moments of its
+    declared and geometry inertias, kg·m², from :func:`_moments_in_bulk`)."""
     declared = geometry = None
     if each.declared is not None:
         declared = {
             "mass": each.declared.mass,
             "center_of_mass": each.declared.center_of_mass,
             "inertia_about_com": each.declared.inertia_about_com,
-            "moments": _moments(each.declared) if declared_moments is None else declared_moments,
+            "moments": declared_moments,
         }
     if each.geometry is not None:
         g = each.geometry
@@ -292,9 +281,7 @@ def _link_dict(each: LinkAudit, declared_moments=None, geometry_moments=None) ->
             "mass": g.mass,
             "center_of_mass": g.center_of_mass,
             "inertia_about_com": g.inertia_about_com,
-            "moments": None
-            if g.properties is None
-            else (_moments(g.properties) if geometry_moments is None else geometry_moments),
+            "moments": geometry_moments,
             "implied_density": g.implied_density,
             "source": g.source,
         }
@@ -397,17 +384,14 @@ def audit_model(
     check_choices(geometry, mesh_inertia)
     repairs: list[str] = []
     columns = model.in_columns
-    links, in_columns = None, None
-    if columns is None:
-        links = _audit_links(model, geometry, density, mesh_inertia, mesh_repair, repairs)
-    else:
-        in_columns = _ColumnAudit(model, columns)
-        in_columns.audit(geometry, density, mesh_inertia, mesh_repair, repairs)
+    rows = _Rows.of_columns(columns) if columns is not None else _Rows.of_links(model.links)
+    audited = _ColumnAudit(model, rows)
+    audited.audit(geometry, density, mesh_inertia, mesh_repair, repairs)
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
     placed = placement(model, joints, columns)
     return AuditReport(
         model,
-        links,
+        None,
         totals(model, joints, placed),
         notes,
         {
@@ -418,35 +402,111 @@ def audit_model(
             "mesh_repair": mesh_repair,
         },
         joints=joint_torques(model, joints, placed),
-        columns=in_columns,
+        columns=audited,
     )
 
 
-def _audit_links(model: RobotModel, geometry, density, mesh_inertia, mesh_repair, repairs) -> list[LinkAudit]:
-    """Each link's :class:`LinkAudit`, the costly numbers in bulk."""
-    carried = _carried_mass(model)
-    measured = _primitives_in_bulk(model, geometry, density)
-    bulk = {} if measured is None else measured.all_props()
-    links = [
-        LinkAudit(link, None if link.inertial is None else link.inertial.properties, bulk[row])
-        if row in bulk
-        else _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
-        for row, link in enumerate(model.links)
+class _Rows(NamedTuple):
+    """A model's links as the audit reads them, one row a link in file order: the declared
+    inertials (``declared`` (n,) which links have one, ``masses`` (n,) kg, ``coms`` (n, 3) m and
+    ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) as the file wrote
+    them), which links a joint ``moving`` moves, the ``geoms`` as columns, and ``carried`` (n,):
+    does a link below it have mass. ``link(row)`` and ``links()`` make the :class:`Link` values
+    (from :class:`LinkColumns`, or the careful readers' own)."""
+
+    declared: np.ndarray
+    masses: np.ndarray
+    coms: np.ndarray
+    inertias: np.ndarray
+    written: np.ndarray
+    moving: np.ndarray
+    geoms: list[GeomColumn]
+    carried: list[bool]
+    link: Any
+    links: Any
+
+    @classmethod
+    def of_columns(cls, columns: LinkColumns) -> _Rows:
+        n = len(columns)
+        heavy = columns.declared & (columns.masses > 0)
+        parents = [n if parent < 0 else parent for parent in columns.parents]
+        moving = [
+            parent >= 0 and kind != "fixed" for parent, kind in zip(columns.parents, columns.joint_kinds)
+        ]
+        carried = _carried_rows(parents, heavy.tolist(), columns.order)
+        return cls(
+            columns.declared,
+            columns.masses,
+            columns.coms,
+            columns.inertias,
+            columns.written,
+            np.array(moving, dtype=bool),
+            columns.geoms,
+            carried,
+            columns.link,
+            columns.links,
+        )
+
+    @classmethod
+    def of_links(cls, links: list[Link]) -> _Rows:
+        inertials = [link.inertial for link in links]
+        given = [each.properties for each in inertials if each is not None]
+        declared = np.array([each is not None for each in inertials], dtype=bool)
+        masses = np.zeros(len(links))
+        masses[declared] = [each.mass for each in given]
+        coms, inertias, written = (
+            np.zeros((len(links), 3)),
+            np.zeros((len(links), 3, 3)),
+            np.zeros((len(links), 3, 3)),
+        )
+        coms[declared] = stacked([each.center_of_mass for each in given], (3,))
+        inertias[declared] = stacked([each.inertia_about_com for each in given], (3, 3))
+        written[declared] = stacked([each.written_inertia for each in inertials if each is not None], (3, 3))
+        return cls(
+            declared,
+            masses,
+            coms,
+            inertias,
+            written,
+            np.array([link.moves for link in links], dtype=bool),
+            _geom_columns(links),
+            _carried_mass(links),
+            links.__getitem__,
+            lambda: links,
+        )
+
+
+def _geom_columns(links: list[Link]) -> list[GeomColumn]:
+    """The links' ``<collision>`` and ``<visual>`` geoms as :class:`GeomColumn` values, one per
+    tag and kind (a mesh, a shell or a kind with no volume: kind ``other``, without sizes)."""
+    found: dict[tuple[str, str], list] = {}
+    for row, link in enumerate(links):
+        for tag, geoms in (("collision", link.collisions), ("visual", link.visuals)):
+            for geom in geoms:
+                kind = geom.kind if geom.kind in _PRIMITIVES and not geom.shell else "other"
+                found.setdefault((tag, kind), []).append((row, geom))
+    return [
+        GeomColumn(
+            tag,
+            "",
+            kind,
+            [row for row, _ in pairs],
+            stacked([geom.pose.rotation for _, geom in pairs], (3, 3)),
+            stacked([geom.pose.translation for _, geom in pairs], (3,)),
+            None if kind == "other" else stacked([geom.size for _, geom in pairs], (len(pairs[0][1].size),)),
+        )
+        for (tag, kind), pairs in found.items()
     ]
-    for result, known in zip(links, _known_in_bulk(links)):
-        result.flags += _flags(model, result.link, result, carried.get(result.link.index, False), known)
-    return links
 
 
 class _ColumnAudit:
-    """The audit of a model read as columns (:class:`rbi.formats.robot.LinkColumns`), on their
-    arrays: the links the bulk screens clear (no flag, their numbers worked out on stacks) are
-    kept as rows and made into :class:`LinkAudit` values when asked for (:meth:`links`); the
-    others (``audited``: row → LinkAudit) are made now and audited one by one, as
-    :func:`audit_link` audits them."""
+    """The audit of a model's links on the arrays of their :class:`_Rows`: the links the bulk
+    screens clear (no flag, their numbers worked out on stacks) are kept as rows and made into
+    :class:`LinkAudit` values when asked for (:meth:`links`); the others (``audited``: row →
+    LinkAudit) are made now and audited one by one, as :func:`audit_link` audits them."""
 
-    def __init__(self, model: RobotModel, columns: LinkColumns):
-        self.model, self.columns = model, columns
+    def __init__(self, model: RobotModel, rows: _Rows):
+        self.model, self.rows = model, rows
         self.audited: dict[int, LinkAudit] = {}
         self.measured: _Measured | None = None
         self.compared: dict[int, tuple] = {}  # row → (ratios, com_offset)
@@ -457,69 +517,64 @@ class _ColumnAudit:
 
     def audit(self, geometry, density, mesh_inertia, mesh_repair, repairs) -> None:
         """Each link screened on the arrays; those not cleared audited one by one."""
-        model, columns = self.model, self.columns
-        n = len(columns)
-        heavy = columns.declared & (columns.masses > 0)
-        parents = [n if parent < 0 else parent for parent in columns.parents]
-        carried = _carried_rows(parents, heavy.tolist(), columns.order)
-        measured = self.measured = _primitives_in_bulk(model, geometry, density, columns)
+        model, rows = self.model, self.rows
+        n = len(rows.declared)
+        heavy = rows.declared & (rows.masses > 0)
+        measured = self.measured = _primitives_in_bulk(model, geometry, density, rows)
         shaped = np.zeros(n, dtype=bool)  # links with geometry to measure
         if geometry != "none":
-            for column in columns.geoms:
+            for column in rows.geoms:
                 shaped[column.rows] = True
         fine = np.zeros(n, dtype=bool)
         if measured is not None:
             fine[np.asarray(measured.rows)[measured.fine]] = True
-        declared = np.flatnonzero(columns.declared).tolist()
-        physical, maybe = _screens(n, declared, columns.inertias[declared], columns.written[declared])
+        declared = np.flatnonzero(rows.declared).tolist()
+        physical, maybe = _screens(n, declared, rows.inertias[declared], rows.written[declared])
         clean = self._compare(heavy & fine)
-        moving = [
-            parent >= 0 and kind != "fixed" for parent, kind in zip(columns.parents, columns.joint_kinds)
-        ]
         simple = heavy & physical & ~maybe & (~shaped | clean)
-        simple |= ~columns.declared & ~np.array(moving, dtype=bool) & (~shaped | fine)
+        simple |= ~rows.declared & ~rows.moving & (~shaped | fine)
         for row in np.flatnonzero(~simple).tolist():
-            link = columns.link(row)
+            link = rows.link(row)
             if fine[row]:
                 declared_props = None if link.inertial is None else link.inertial.properties
                 result = LinkAudit(link, declared_props, measured.props(measured.at[row]))
             else:
                 result = _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
-            result.flags += _flags(model, link, result, carried[row], None)
+            result.flags += _flags(model, link, result, rows.carried[row])
             self.audited[row] = result
 
     def _compare(self, chosen: np.ndarray) -> np.ndarray:
         """(n,) which of the ``chosen`` links (declared mass, geometry measured) :func:`_compared`
         finds clean; their ratios and centre-of-mass offsets into :attr:`compared`."""
         clean = np.zeros(len(chosen), dtype=bool)
-        measured, columns = self.measured, self.columns
+        measured, rows = self.measured, self.rows
         if measured is None or not np.any(chosen):
             return clean
         at = np.array([measured.at[row] for row in np.flatnonzero(chosen).tolist()], dtype=int)
         at = at[np.all(np.isfinite(measured.scaled[at]), axis=(1, 2))]
-        rows = np.asarray(measured.rows)[at]
+        found = np.asarray(measured.rows)[at]
         moments, axes = np.linalg.eigh(measured.scaled[at])
         low_density, high_density = SOLID_DENSITY_RANGE
         implied = measured.implied[at]
         ratios, offsets, fits = _compared(
             moments,
             axes,
-            columns.inertias[rows],
-            columns.coms[rows],
+            rows.inertias[found],
+            rows.coms[found],
             measured.low[at],
             measured.high[at],
             measured.com[at],
             (implied >= low_density) & (implied <= high_density),
         )
-        clean[rows] = fits
-        self.compared = dict(zip(rows.tolist(), zip(ratios, offsets)))
+        clean[found] = fits
+        self.compared = dict(zip(found.tolist(), zip(ratios, offsets)))
         return clean
 
     def links(self) -> list[LinkAudit]:
         """Every link's :class:`LinkAudit`, in file order."""
         found = []
         measured, compared = self.measured, self.compared
-        for row, link in enumerate(self.columns.links()):
+        for row, link in enumerate(self.rows.links()):
             result = self.audited.get(row)
             if result is None:
                 geometry = None
@@ -531,54 +586,33 @@ class _ColumnAudit:
         return found
 
 
-def _carried_mass(model: RobotModel) -> dict[int, bool]:
-    """For each link: does any link below it in the tree have mass?"""
-    in_one_pass = _carried_in_one_pass(model)
-    if in_one_pass is not None:
-        return in_one_pass
-    children: dict[str | None, list[Link]] = {}
-    for link in model.links:
-        children.setdefault(link.parent, []).append(link)
-    result: dict[int, bool] = {}
-
-    def below(link: Link) -> bool:
-        found = False
-        stack = list(children.get(link.key, []))
-        seen = set()
-        while stack:
-            child = stack.pop()
-            if child.index in seen:
-                continue
-            seen.add(child.index)
-            if child.inertial is not None and child.inertial.mass > 0:
-                found = True
-                break
-            stack.extend(children.get(child.name, []))
-        return found
-
-    for link in model.links:
-        result[link.index] = below(link)
-    return result
-
-
-def _carried_in_one_pass(model: RobotModel) -> dict[int, bool] | None:
-    """:func:`_carried_mass` for a forest of links with names of their own (each reached once
-    from the roots), in one pass from the leaves up on row numbers; None for anything else
-    (unnamed bodies, shared names, links hanging from none of the model's links), which the
-    walk below each link answers."""
-    links = model.links
+def _carried_mass(links: list[Link]) -> list[bool]:
+    """For each link (by row): does any link below it in the tree have mass? In one pass from
+    the leaves up (:func:`_carried_rows`) for a forest of links with names of their own; for
+    anything else (unnamed bodies, shared names, links hanging from none of the model's links) a
+    walk below each link."""
     n = len(links)
-    rows = {link.name: row for row, link in enumerate(links)}
-    if None in rows or len(rows) != n:
-        return None
-    parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
-    if -1 in parents:
-        return None
     heavy = [link.inertial is not None and link.inertial.mass > 0 for link in links]
-    below = _carried_rows(parents, heavy)
-    if below is None:
-        return None
-    return {link.index: below[row] for row, link in enumerate(links)}
+    rows = {link.name: row for row, link in enumerate(links)}
+    if None not in rows and len(rows) == n:
+        parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
+        below = None if -1 in parents else _carried_rows(parents, heavy)
+        if below is not None:
+            return below
+    children: dict[str | None, list[int]] = {}
+    for row, link in enumerate(links):
+        children.setdefault(link.parent, []).append(row)
+    found = []
+    for link in links:
+        stack, seen, carried = list(children.get(link.key, [])), set(), False
+        while stack and not carried:
+            row = stack.pop()
+            if row not in seen:
+                seen.add(row)
+                carried = heavy[row]
+                stack.extend(children.get(links[row].name, []))
+        found.append(carried)
+    return found
 
 
 def _carried_rows(parents: list[int], heavy: list[bool], order: list[int] | None = None) -> list[bool] | None:
@@ -652,7 +686,7 @@ def audit_link(
 ) -> LinkAudit:
     """One link's audit (:func:`audit_model` audits them all, the costly numbers in bulk)."""
     result = _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, notes)
-    result.flags += _flags(model, link, result, carries_mass, None)
+    result.flags += _flags(model, link, result, carries_mass)
     return result
 
 
@@ -682,42 +716,19 @@ class _Shapes(NamedTuple):
     sources: list[str]
 
 
-def _one_primitive(model: RobotModel, geometry: str, columns: LinkColumns | None = None) -> _Shapes | None:
-    """The :class:`_Shapes` of a URDF or SDF model (None: none, or MJCF): what
-    :func:`_primitives_in_bulk` measures."""
+def _one_primitive(model: RobotModel, geometry: str, links: _Rows) -> _Shapes | None:
+    """The :class:`_Shapes` of a URDF or SDF model (None: none, or MJCF): each link's ``geometry``
+    elements, or the other kind's when it has none of those (as :func:`chosen_geoms` chooses),
+    when they are one solid primitive; what :func:`_primitives_in_bulk` measures."""
     if geometry == "none" or model.format == "mjcf":
         return None
-    if columns is not None:
-        return _primitive_columns(columns, geometry)
-    found = {}
-    for row, link in enumerate(model.links):
-        geoms, source = chosen_geoms(link, geometry)
-        if len(geoms) == 1 and geoms[0].kind in _PRIMITIVES and not geoms[0].shell:
-            found[row] = (geoms[0], source)
-    if not found:
-        return None
-    geoms = [geom for geom, _ in found.values()]
-    distinct = {key: k for k, key in enumerate(dict.fromkeys((g.kind, g.size) for g in geoms))}
-    return _Shapes(
-        list(found),
-        list(distinct),
-        np.array([distinct[(g.kind, g.size)] for g in geoms], dtype=int).reshape(-1),
-        stacked([g.pose.rotation for g in geoms], (3, 3)),
-        stacked([g.pose.translation for g in geoms], (3,)),
-        [source for _, source in found.values()],
-    )
-
-
-def _primitive_columns(columns: LinkColumns, geometry: str) -> _Shapes | None:
-    """:func:`_one_primitive` on a model's columns: each link's ``geometry`` elements, or the
-    other kind's when it has none of those, one column of shapes each."""
     other = "visual" if geometry == "collision" else "collision"
-    counts = {tag: np.zeros(len(columns), dtype=int) for tag in (geometry, other)}
-    for column in columns.geoms:
-        counts[column.tag][column.rows] += 1
+    counts = {tag: np.zeros(len(links.declared), dtype=int) for tag in (geometry, other)}
+    for column in links.geoms:
+        np.add.at(counts[column.tag], column.rows, 1)
     chosen = {geometry: counts[geometry] == 1, other: (counts[geometry] == 0) & (counts[other] == 1)}
     rows, distinct, which, R, p, sources = [], {}, [], [], [], []  # type: ignore[var-annotated]
-    for column in columns.geoms:
+    for column in links.geoms:
         if column.kind not in _PRIMITIVES or column.sizes is None:
             continue
         at = np.flatnonzero(chosen[column.tag][column.rows])
@@ -744,13 +755,13 @@ _PRIMITIVES = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
 
 
 def _primitives_in_bulk(
-    model: RobotModel, geometry: str, density: float | None, columns: LinkColumns | None = None
+    model: RobotModel, geometry: str, density: float | None, links: _Rows
 ) -> _Measured | None:
     """The geometry of the links :func:`_one_primitive` finds, measured on (n, 3, 3) stacks with
     the operations :func:`distribution`, :func:`_sum` and :func:`_geometry_props` make on one
     link, element by element (so the same numbers). A link whose numbers would take another
     branch there (no volume, overflow, an unusual sum) is left to them (not ``fine``)."""
-    shapes = _one_primitive(model, geometry, columns)
+    shapes = _one_primitive(model, geometry, links)
     if shapes is None:
         return None
     known = []
@@ -769,14 +780,7 @@ def _primitives_in_bulk(
     with np.errstate(all="ignore"):
         fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
         fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
-    if columns is not None:
-        declared = np.where(columns.declared, columns.masses, 0.0)[shapes.rows]
-    else:
-        links = model.links
-        declared = np.array(
-            [0.0 if links[r].inertial is None else links[r].inertial.properties.mass for r in shapes.rows],
-            dtype=float,
-        ).reshape(-1)
+    declared = np.where(links.declared, links.masses, 0.0)[shapes.rows]
     return _Measured.of(
         shapes, fine, measure, inertia + 0.0, p + 0.0, p - corners, p + corners, declared, density
     )
@@ -821,58 +825,6 @@ class _Measured:
             self.sources[k],
         )
 
-    def all_props(self) -> dict[int, GeometryProps]:
-        """Row → :class:`GeometryProps` of every ``fine`` row."""
-        return {row: self.props(k) for k, row in enumerate(self.rows) if self.fine[k]}
-
-
-class _Known(NamedTuple):
-    """What :func:`_known_in_bulk` worked out for one link: ``physical`` (the declared inertia
-    certainly passes :func:`declared_inertia_problem`), ``maybe_placeholder`` (False: certainly
-    not a placeholder), ``geometry_eigh`` (the geometry inertia's ``np.linalg.eigh``, or None),
-    and what :func:`_geometry_flags` would set: ``ratios``, ``com_offset``, and ``clean`` (True:
-    it would add no flag to a link that is not a placeholder)."""
-
-    physical: bool
-    maybe_placeholder: bool
-    geometry_eigh: tuple[np.ndarray, np.ndarray] | None
-    ratios: np.ndarray | None = None
-    com_offset: float | None = None
-    clean: bool = False
-
-
-def _known_in_bulk(links: list[LinkAudit]) -> list[_Known]:
-    """For every link, the eigen-decompositions and screens :func:`_flags` needs, each computed
-    once on an (N, 3, 3) stack (numpy runs the same LAPACK routine on each matrix, so each
-    result equals the one-matrix call). The screens only say "certainly fine": a link they do
-    not clear is checked one by one, so the flags are those of :func:`audit_link`."""
-    declared = [i for i, each in enumerate(links) if each.declared is not None]
-    physical, maybe_placeholder = _screens(
-        len(links),
-        declared,
-        stacked([links[i].declared.inertia_about_com for i in declared], (3, 3)),
-        stacked([links[i].link.inertial.written_inertia for i in declared], (3, 3)),
-    )
-    eighs: list = [None] * len(links)
-    geometry: list = [(None, None, False)] * len(links)  # ratios, com_offset, clean
-    usable = [
-        i
-        for i, each in enumerate(links)
-        if each.geometry is not None and each.geometry.properties is not None
-    ]
-    if usable:
-        stack = stacked([links[i].geometry.properties.inertia_about_com for i in usable], (3, 3))
-        finite = np.all(np.isfinite(stack), axis=(1, 2))
-        moments, axes = np.linalg.eigh(stack[finite])
-        chosen = np.array(usable)[finite].tolist()
-        for i, values, vectors in zip(chosen, moments, axes):
-            eighs[i] = (values, vectors)
-        _geometry_in_bulk(links, geometry, chosen, moments, axes)
-    return [
-        _Known(a, b, c, *d)
-        for a, b, c, d in zip(physical.tolist(), maybe_placeholder.tolist(), eighs, geometry)
-    ]
-
 
 def _screens(n: int, declared: list[int], inertias: np.ndarray, written: np.ndarray) -> tuple:
     """(physical, maybe_placeholder), (n,) each, for n links of which the ``declared`` rows
@@ -884,34 +836,6 @@ def _screens(n: int, declared: list[int], inertias: np.ndarray, written: np.ndar
         physical[declared] = _certainly_physical(inertias)
         maybe_placeholder[declared] = _maybe_placeholder(written)
     return physical, maybe_placeholder
-
-
-def _geometry_in_bulk(links, found: list[tuple], chosen: list[int], moments, axes) -> None:
-    """:func:`_geometry_flags`'s ratios, centre-of-mass offset and whether it would flag anything,
-    into ``found`` (link → (ratios, com_offset, clean)), for the ``chosen`` links that declare an
-    inertial (their geometry's eigen-decompositions ``moments``, ``axes``): :func:`_compared`."""
-    rows = [row for row, i in enumerate(chosen) if links[i].declared is not None]
-    if not rows:
-        return
-    picked = [links[chosen[row]] for row in rows]
-    low_density, high_density = SOLID_DENSITY_RANGE
-    ratios, offsets, clean = _compared(
-        moments[rows],
-        axes[rows],
-        stacked([each.declared.inertia_about_com for each in picked], (3, 3)),
-        stacked([each.declared.center_of_mass for each in picked], (3,)),
-        stacked([each.geometry.low for each in picked], (3,)),
-        stacked([each.geometry.high for each in picked], (3,)),
-        stacked([each.geometry.center_of_mass for each in picked], (3,)),
-        np.array(
-            [
-                d is None or low_density <= d <= high_density
-                for d in (e.geometry.implied_density for e in picked)
-            ]
-        ),
-    )
-    for row, ratio, offset, fits in zip(rows, ratios, offsets, clean.tolist()):
-        found[chosen[row]] = (ratio, offset, fits)
 
 
 def _compared(moments, axes, inertia, com, low, high, geometry_com, density_ok) -> tuple:
@@ -1025,10 +949,8 @@ def _sum(parts: list[MassProperties]) -> MassProperties:
     return MassProperties.sum(parts)
 
 
-def _flags(
-    model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool, known: _Known | None
-) -> list[Flag]:
-    """The link's flags (``known``: what :func:`_known_in_bulk` worked out for it, or None)."""
+def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool) -> list[Flag]:
+    """The link's flags (other than ``mesh``), one link at a time."""
     declared, geo = result.declared, result.geometry
     if declared is None or declared.mass == 0.0:
         return _zero_mass_flags(link, declared, carries_mass)
@@ -1036,20 +958,17 @@ def _flags(
     I = declared.inertia_about_com
     if declared.mass < 0:
         flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative", "negative mass"))
-    problem = None if known is not None and known.physical else declared_inertia_problem(declared.mass, I)
+    problem = declared_inertia_problem(declared.mass, I)
     if problem is not None:
         flags.append(Flag("unphysical", "error", _problem_text(problem, I), problem.kind))
     has_geometry = geo is not None and geo.inertia_about_com is not None and geo.mass
-    eigh = None if known is None else known.geometry_eigh
     if link.inertial is not None and link.inertial.source == "default":
         if has_geometry:
-            _geometry_flags(result, None, eigh)  # the ratios only: the default is not the file's claim
+            _geometry_flags(result, None)  # the ratios only: the default is not the file's claim
         return flags + [Flag("placeholder", "warning", _DEFAULT_TEXT, "SDFormat's default inertial")]
-    placeholder = None if known is not None and not known.maybe_placeholder else _placeholder(model, link)
-    if has_geometry and known is not None and known.clean and not placeholder:
-        result.ratios, result.com_offset = known.ratios, known.com_offset  # no flag to add
-    elif has_geometry:
-        flags += _geometry_flags(result, placeholder, eigh)
+    placeholder = _placeholder(model, link)
+    if has_geometry:
+        flags += _geometry_flags(result, placeholder)
     elif placeholder:
         flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))
     return flags
@@ -1091,14 +1010,13 @@ def _zero_mass_flags(link: Link, declared: MassProperties | None, carries_mass: 
     return flags
 
 
-def _geometry_flags(result: LinkAudit, placeholder: str | None, eigh=None) -> list[Flag]:
+def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
     """``placeholder``/``mismatch`` from the moment ratios, ``mismatch`` for a centre of mass
     outside the geometry, ``density`` for an implausible implied density; sets the link's
-    ``ratios`` and ``com_offset``. ``eigh``: the geometry inertia's eigen-decomposition, when
-    already computed."""
+    ``ratios`` and ``com_offset``."""
     declared, geo = result.declared, result.geometry
     flags: list[Flag] = []
-    moments, axes = np.linalg.eigh(geo.inertia_about_com) if eigh is None else eigh
+    moments, axes = np.linalg.eigh(geo.inertia_about_com)
     along = np.einsum("ji,jk,ki->i", axes, declared.inertia_about_com, axes)
     usable = moments > USABLE_MOMENT * float(np.max(moments))
     ratios = np.full(3, np.nan)

@@ -7,20 +7,15 @@ from __future__ import annotations
 
 from typing import Any
 
-from rbi.formats.robot import Pose, RobotModel
+from rbi.formats.robot import RobotModel
 from rbi.formats.robot_files import custom_part
-from rbi.robot.tree import link_poses
+from rbi.robot.tree import placement
 
 
 def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tuple[dict[str, Any], list[str]]:
     """(spec, names of the links left out because they have no mass)."""
 
-    poses = link_poses(model, joints)
-    to_frame = Pose.identity()
-    if model.format != "mjcf":
-        roots = [link for link in model.links if link.parent is None]
-        if roots:
-            to_frame = poses[roots[0].index].inverse()
+    poses = placement(model, joints).placed  # in the frame of the totals
     parts, left_out, used = [], [], set()
     for link in model.links:
         inertial = link.inertial
@@ -28,7 +23,7 @@ def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tup
         if inertial is None or inertial.mass == 0.0:
             left_out.append(name)
             continue
-        pose = to_frame.then(poses[link.index])
+        pose = poses[link.index]
         placed = inertial.properties.transformed(pose.rotation, pose.translation)
         unique = name if name not in used else f"{name}_{link.index}"
         used.add(unique)

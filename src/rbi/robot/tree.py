@@ -56,12 +56,6 @@ def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> di
     return found
 
 
-def link_poses(model: RobotModel, joints: dict[str, float] | None = None) -> dict[int, Pose]:
-    """Every link's frame in the model's frame (URDF: the root link's; SDF, MJCF: the world's)
-    at the configuration ``joints`` (joint name → coordinate; others at the reference)."""
-    return placement(model, joints).poses
-
-
 @dataclass
 class Placement:
     """The links placed at one configuration, as arrays (one row a link, ``rows``: link index →
@@ -70,8 +64,8 @@ class Placement:
     of their links, with ``axes`` and ``anchors`` (k, 3) in the model's frame where the joints
     before them leave them; ``frame`` the name of the frame totals are given in (``"root link
     NAME"`` for URDF and SDF, ``"world"`` for MJCF), ``to_frame`` model frame → that frame, and
-    ``placed_rotations``/``placed_translations`` each link's frame in that frame. :attr:`poses`
-    and :attr:`placed` give them as :class:`Pose` values."""
+    ``placed_rotations``/``placed_translations`` each link's frame in that frame, which
+    :attr:`placed` gives as :class:`Pose` values."""
 
     rows: dict[int, int]
     rotations: np.ndarray
@@ -91,11 +85,6 @@ class Placement:
     then holds them as :func:`parents_first` finds them)."""
     columns: LinkColumns | None = None
     """The model's links as arrays, when they were read in place of its links."""
-
-    @property
-    def poses(self) -> dict[int, Pose]:
-        """Link index → its frame in the model's frame."""
-        return {i: Pose(self.rotations[r], self.translations[r]) for i, r in self.rows.items()}
 
     @property
     def placed(self) -> dict[int, Pose]:
