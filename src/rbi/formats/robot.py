@@ -221,7 +221,7 @@ class GeomColumn:
 class LinkColumns:
     """A URDF's links as columns, one row a link in file order (its ``index``), as
     :mod:`rbi.formats.urdf_bulk` reads them: names, ``parents`` (the parent's row, -1 for the
-    root), ``order`` (the rows parents first, as :func:`rbi.robot.tree.depth_first` gives them), origins (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame),
+    root), ``order`` (the rows parents first, as :func:`depth_first` gives them), origins (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame),
     the declared inertials (``declared`` (n,) which links have one; ``masses`` (n,) kg, ``coms``
     (n, 3) m and ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) the
     inertias as written; ``turned``: row → the :class:`Inertial` of a rotated inertial frame),
@@ -301,6 +301,22 @@ class LinkColumns:
             )
         ]
         return link
+
+
+def depth_first(parents: list[int], root: int) -> list[int]:
+    """The rows below ``root`` depth first (``parents``: each row's parent row, ``root`` for a
+    top-level one), as :func:`rbi.robot.tree.parents_first` orders links: the last child
+    first, each child list in file order. Rows not reached from ``root`` are left out."""
+    children: list[list[int]] = [[] for _ in range(len(parents) + 1)]
+    for row, parent in enumerate(parents):
+        children[parent].append(row)
+    order: list[int] = []
+    queue = list(children[root])
+    while queue:
+        row = queue.pop()
+        order.append(row)
+        queue.extend(children[row])
+    return order
 
 
 def _find(rows: list[int], row: int) -> int | None:

@@ -17,6 +17,7 @@ import numpy as np
 from rbi.core import shapes
 from rbi.core.mass import MassProperties
 from rbi.errors import InputError
+from rbi.formats.paths import file_key
 from rbi.formats.robot import Geom
 
 if TYPE_CHECKING:
@@ -218,10 +219,9 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False, as_mujoco: bo
     path = geom.mesh_file
     scale = geom.mesh_scale if geom.mesh_scale is not None else np.ones(3)
     try:
-        status = path.stat()
-        key = (str(path.resolve()), status.st_size, status.st_mtime_ns, tuple(scale), mode, repair, as_mujoco)
-    except OSError as exc:
-        raise InputError(f"{where}{geom.label}: {path.name}: cannot read: {exc.strerror}") from None
+        key = (*file_key(path), tuple(scale), mode, repair, as_mujoco)
+    except ValueError as exc:
+        raise InputError(f"{where}{geom.label}: {path.name}: {exc}") from None
     if key in _MESHES:
         return _MESHES[key]
     try:

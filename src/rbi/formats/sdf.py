@@ -120,24 +120,17 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     return robot
 
 
-def _models(element, pose: Pose):
-    """(model element, its pose in the world) for every model, nested ones too."""
+def _models(element, pose: Pose, nested: bool = False):
+    """(model element, its pose in the world) for every model, nested ones too (``nested``:
+    ``element`` is a model, whose own models are named ``model`` in messages)."""
     for child in element.children:
-        if child.tag == "world":
+        if child.tag == "world" and not nested:
             yield from _models(child, pose)
         elif child.tag == "model":
-            where = Where("", f"model {short(child.get('name'))}")
+            where = Where("", "model" if nested else f"model {short(child.get('name'))}")
             inner = pose.then(_pose(where, child.child("pose"), "pose", None, strict=False))
             yield child, inner
-            yield from _models_nested(child, inner)
-
-
-def _models_nested(model, pose: Pose):
-    for child in model.children:
-        if child.tag == "model":
-            inner = pose.then(_pose(Where("", "model"), child.child("pose"), "pose", None, strict=False))
-            yield child, inner
-            yield from _models_nested(child, inner)
+            yield from _models(child, inner, nested=True)
 
 
 def _pose(where: Where, element, what: str, own_name, strict: bool = True) -> Pose:

@@ -46,6 +46,7 @@ from rbi.formats.robot import (
     LinkColumns,
     RobotModel,
     Where,
+    depth_first,
     rpy_matrix,
     short,
     unit,
@@ -597,25 +598,15 @@ def _joints(names: list[str], elements, path: str) -> dict:
 
 
 def _one_tree(parents: list[int]) -> list[int] | None:
-    """The links' rows parents first, as :func:`rbi.robot.tree.depth_first` orders them, when
+    """The links' rows parents first, as :func:`rbi.formats.robot.depth_first` orders them, when
     they form one tree (one root, every link reached from it), as
     :func:`rbi.formats.urdf.check_tree` asks (``parents``: each link's parent row, -1 for none);
     None when they do not."""
-    children: list[list[int]] = [[] for _ in parents]
-    roots = []
-    for row, parent in enumerate(parents):
-        if parent < 0:
-            roots.append(row)
-        else:
-            children[parent].append(row)
-    if len(roots) != 1:
+    n = len(parents)
+    if parents.count(-1) != 1:
         return None
-    order, queue = [], roots
-    while queue:
-        row = queue.pop()
-        order.append(row)
-        queue.extend(children[row])
-    return order if len(order) == len(parents) else None
+    order = depth_first([n if parent < 0 else parent for parent in parents], n)
+    return order if len(order) == n else None
 
 
 def _axes(path: str, rows: _Rows, axis: _Node | None, kinds: list) -> np.ndarray:

@@ -29,10 +29,10 @@ from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import ArgumentError, literal
-from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel
+from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, depth_first
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
-from rbi.robot.tree import depth_first, placement, stack_apply, stacked, totals
+from rbi.robot.tree import placement, stack_apply, stacked, totals
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -621,10 +621,7 @@ def _carried_rows(parents: list[int], heavy: list[bool], order: list[int] | None
     mass? None when the links are no forest (a link not reached from the roots)."""
     n = len(parents)
     if order is None:
-        children: list[list[int]] = [[] for _ in range(n + 1)]
-        for row, parent in enumerate(parents):
-            children[parent].append(row)
-        order = depth_first(children, n)
+        order = depth_first(parents, n)
     if len(order) != n:
         return None
     below = [False] * (n + 1)

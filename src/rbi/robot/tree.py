@@ -21,7 +21,7 @@ import numpy as np
 from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, axis_angle_matrix
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.formats.robot import LinkColumns, Pose, RobotModel
+from rbi.formats.robot import LinkColumns, Pose, RobotModel, depth_first
 
 
 def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> dict[str, float]:
@@ -211,10 +211,7 @@ def _levels(
     by_name = {link.key: row for row, link in enumerate(links)}
     parents = [n if link.parent is None else by_name.get(link.parent, -1) for link in links]
     if len(by_name) == n and -1 not in parents:  # each key one link's, each parent a link
-        children: list[list[int]] = [[] for _ in range(n + 1)]
-        for row, parent in enumerate(parents):
-            children[parent].append(row)
-        rows = depth_first(children, n)  # parents_first's order, on rows
+        rows = depth_first(parents, n)  # parents_first's order, on rows
         return (*_grouped_levels(rows, parents, n), True)
     row_of = {link.index: row for row, link in enumerate(links)}
     rows = [row_of[link.index] for link in parents_first(model, by_name)]
@@ -237,18 +234,6 @@ def _grouped_levels(rows: list[int], parents, n: int) -> tuple[list[tuple[int, i
         groups[d][1].append(parent)
         order.append((row, parent))
     return order, groups
-
-
-def depth_first(children: list[list[int]], root: int) -> list[int]:
-    """The rows below ``root`` depth first, as :func:`parents_first` orders links: the last
-    child first, each child list in file order."""
-    order: list[int] = []
-    queue = list(children[root])
-    while queue:
-        row = queue.pop()
-        order.append(row)
-        queue.extend(children[row])
-    return order
 
 
 def _moved(link, pose: Pose, joints: dict[str, float], frames: dict[int, list]) -> tuple:
