@@ -188,38 +188,29 @@ class EulerPoinsot:
         a1 = I2 * (I2 - I1) * q * q + I3 * (I3 - I1) * r * r  # M² − 2T I1
         b = I1 * (I2 - I1) * p * p - I3 * (I3 - I2) * r * r  # 2T I2 − M²
         self.M = math.sqrt(I1 * I1 * p * p + I2 * I2 * q * q + I3 * I3 * r * r)
+        A1, A3 = math.sqrt(a3 / (I1 * (I3 - I1))), math.sqrt(a1 / (I3 * (I3 - I1)))
         if b < 0.0:  # about axis 3: ω = (s A1 cn, A2 sn, s A3 dn)
             self.polar = 3
-            A1, A2, A3 = (
-                math.sqrt(a3 / (I1 * (I3 - I1))),
-                math.sqrt(a3 / (I2 * (I3 - I2))),
-                math.sqrt(a1 / (I3 * (I3 - I1))),
-            )
+            A2 = math.sqrt(a3 / (I2 * (I3 - I2)))
             self.lam = math.sqrt((I3 - I2) * a1 / (I1 * I2 * I3))
             m = (I2 - I1) * a3 / ((I3 - I2) * a1)
             s = math.copysign(1.0, r)
-            self.amplitudes = np.array([s * A1, A2, s * A3])
             sn0, cn0 = q / A2, p / (s * A1)
             # triad (a, b, c) = (1, 2, 3): cn carries axis 1, sn axis 2
             self.triad = (0, 1, 2)
-            I_cn, A_cn, I_sn, A_sn = I1, A1, I2, A2
-            n1_over_d1 = 1.0 / I3
+            I_cn, A_cn, n1_over_d1 = I1, A1, 1.0 / I3
         else:  # about axis 1: ω = (s A1 dn, A2 sn, s A3 cn)
             self.polar = 1
-            A1, A2, A3 = (
-                math.sqrt(a3 / (I1 * (I3 - I1))),
-                math.sqrt(a1 / (I2 * (I2 - I1))),
-                math.sqrt(a1 / (I3 * (I3 - I1))),
-            )
+            A2 = math.sqrt(a1 / (I2 * (I2 - I1)))
             self.lam = math.sqrt((I2 - I1) * a3 / (I1 * I2 * I3))
             m = (I3 - I2) * a1 / ((I2 - I1) * a3) if a3 > 0 else 0.0
             s = math.copysign(1.0, p)
-            self.amplitudes = np.array([s * A1, A2, s * A3])
             sn0, cn0 = q / A2, r / (s * A3)
             # triad (a, b, c) = (2, 3, 1), right-handed: sn carries axis 2 (a), cn axis 3 (b)
             self.triad = (1, 2, 0)
-            I_cn, A_cn, I_sn, A_sn = I3, A3, I2, A2
-            n1_over_d1 = 1.0 / I1
+            I_cn, A_cn, n1_over_d1 = I3, A3, 1.0 / I1
+        self.amplitudes = np.array([s * A1, A2, s * A3])
+        I_sn, A_sn = I2, A2
         self.ell = _Elliptic(m)
         self.tau0 = ellipkinc(math.atan2(sn0, cn0), self.ell.m)
         # φ̇ = M [n1/d1 + (n0 d1 − n1 d0)/(d0 d1) / (1 − ν sn²)], ν = −d1/d0
