@@ -141,16 +141,28 @@ def _hostile_inertias(n: int) -> list[tuple[float, np.ndarray]]:
 
 
 @pytest.mark.parametrize(
-    "chain, shapes, density",
-    [(False, False, None), (True, False, None), (False, True, None), (True, True, 500.0)],
+    "chain, shapes, density, careful",
+    [
+        (False, False, None, False),
+        (True, False, None, False),
+        (False, True, None, False),
+        (True, True, 500.0, False),
+        (True, True, 500.0, True),
+        (False, True, None, True),
+    ],
 )
-def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, shapes, density):
+def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, shapes, density, careful):
+    """Whichever reader made the model (``careful``: the URDF reader of links, laid into the
+    audit's arrays; else the reader in bulk, whose columns the audit reads as they are)."""
+    from rbi.formats import robot_xml
     from rbi.formats.robot_files import read_robot
+    from rbi.formats.urdf import read_urdf
     from rbi.robot.audit import _carried_mass, audit_link, audit_model
 
     path = tmp_path / "r.urdf"
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
-    model = read_robot(str(path))
+    model = read_urdf(robot_xml.read_xml(str(path))) if careful else read_robot(str(path))
+    assert (model.in_columns is None) == careful
     bulk = audit_model(model, density=density)
     carried = _carried_mass(model.links)
     codes = set()

@@ -6,19 +6,8 @@ link's (body's) mass properties checked for physical validity and turned into an
 All three formats are SI (kg, m, kg·m²). Each link becomes one spec with one ``custom`` part:
 the mass, the centre of mass in the link frame, and the inertia about the centre of mass in
 the axes of the inertial frame, with the rotation that turns the inertial frame into the link
-frame. The off-diagonal entries of all three formats are the inertia matrix's own entries
-(``ixy = I[0][1] = −∫xy dm``), the sign rbi's ``inertia`` uses, so they are copied unchanged.
-
-- URDF: ``<robot><link name><inertial><origin xyz rpy/><mass value/>
-  <inertia ixx ixy ixz iyy iyz izz/>``; ``rpy`` is roll, pitch, yaw about the fixed x, y, z
-  axes (``R = Rz(yaw) Ry(pitch) Rx(roll)``).
-- SDF: ``<link name><inertial><pose>x y z roll pitch yaw</pose><mass/><inertia><ixx/>…``;
-  the pose's angles follow URDF's; SDF's defaults (mass 1, ``ixx = iyy = izz = 1``) apply to
-  missing elements inside ``<inertial>``.
-- MJCF: what MuJoCo's compiler gives each body: ``<inertial pos quat mass
-  diaginertia|fullinertia/>`` (``quat`` is ``w x y z``, inertial frame to body frame;
-  ``fullinertia`` is ``ixx iyy izz ixy ixz iyz`` in the body frame), or its geoms' mass
-  properties (see :mod:`rbi.formats.mjcf`).
+frame. What is read from each format, and the sign of the products (copied unchanged), are
+tabled in docs/import.md ("What is read from each format").
 
 Hostile files are refused as :class:`InputError` (one line; :mod:`rbi.formats.robot_xml`):
 XML entity declarations and external references, files over :data:`MAX_FILE_BYTES`, nesting
