@@ -556,7 +556,7 @@ class _ColumnAudit:
         moments, axes = np.linalg.eigh(measured.scaled[at])
         low_density, high_density = SOLID_DENSITY_RANGE
         implied = measured.implied[at]
-        ratios, offsets, fits = _compared(
+        ratios, offsets, inside, near = _compared(
             moments,
             axes,
             rows.inertias[found],
@@ -564,9 +564,8 @@ class _ColumnAudit:
             measured.low[at],
             measured.high[at],
             measured.com[at],
-            (implied >= low_density) & (implied <= high_density),
         )
-        clean[found] = fits
+        clean[found] = near & inside & (implied >= low_density) & (implied <= high_density)
         self.compared = dict(zip(found.tolist(), zip(ratios, offsets)))
         return clean
 
@@ -835,14 +834,15 @@ def _screens(n: int, declared: list[int], inertias: np.ndarray, written: np.ndar
     return physical, maybe_placeholder
 
 
-def _compared(moments, axes, inertia, com, low, high, geometry_com, density_ok) -> tuple:
-    """:func:`_geometry_flags`'s numbers for k links at once, on stacks (einsum and matmul make
-    the same calls per matrix of a stack as for one, so the same numbers): each link's
-    geometry's principal ``moments`` (k, 3) and ``axes`` (k, 3, 3), the declared ``inertia``
-    (k, 3, 3) and ``com`` (k, 3), the geometry's bounds and centre of mass (k, 3), and whether
-    its implied density is plausible (or none). Returns (ratios (k, 3), com offsets (None
-    where the geometry has no size), clean (k,): no flag to add to a link that is not a
-    placeholder)."""
+def _compared(moments, axes, inertia, com, low, high, geometry_com) -> tuple:
+    """The declared mass properties against the geometry's for k links on stacks (one link:
+    k = 1, :func:`_geometry_flags`): each link's geometry's principal ``moments`` (k, 3) and
+    ``axes`` (k, 3, 3), the declared ``inertia`` (k, 3, 3, kg·m²) and ``com`` (k, 3, m), the
+    geometry's bounds and centre of mass (k, 3, m), all in the link frame. Returns (ratios
+    (k, 3): each declared moment about the geometry's principal axes over the geometry's, NaN
+    where the geometry's is too small to divide by; com offsets (None where the geometry has
+    no size); inside (k,): the declared centre of mass within the bounds (with the margin);
+    near (k,): every ratio within the warning range)."""
     along = np.einsum("nji,njk,nki->ni", axes, inertia, axes)
     usable = moments > USABLE_MOMENT * np.max(moments, axis=1)[:, None]
     with np.errstate(all="ignore"):
@@ -855,7 +855,7 @@ def _compared(moments, axes, inertia, com, low, high, geometry_com, density_ok) 
     inside = ~(np.any(com < low - margin, axis=1) | np.any(com > high + margin, axis=1))
     near = np.all(np.isnan(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
     offsets = [value if sized else None for value, sized in zip(offset.tolist(), (size > 0).tolist())]
-    return ratios, offsets, near & inside & density_ok
+    return ratios, offsets, inside, near
 
 
 def _norms(rows: np.ndarray) -> np.ndarray:
@@ -1014,15 +1014,12 @@ def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
     declared, geo = result.declared, result.geometry
     flags: list[Flag] = []
     moments, axes = np.linalg.eigh(geo.inertia_about_com)
-    along = np.einsum("ji,jk,ki->i", axes, declared.inertia_about_com, axes)
-    usable = moments > USABLE_MOMENT * float(np.max(moments))
-    ratios = np.full(3, np.nan)
-    with np.errstate(over="ignore"):  # past the largest double: inf, the worst ratio there is
-        ratios[usable] = along[usable] / moments[usable]
+    found = _compared(
+        *(value[None] for value in (moments, axes, declared.inertia_about_com, declared.center_of_mass)),
+        *(value[None] for value in (geo.low, geo.high, geo.center_of_mass)),
+    )
+    (ratios,), (result.com_offset,), (inside,), _ = found
     result.ratios = ratios
-    size = float(np.linalg.norm(geo.high - geo.low))
-    if size > 0:
-        result.com_offset = float(np.linalg.norm(declared.center_of_mass - geo.center_of_mass) / size)
     worst = _worst_ratio(ratios)
     level = None
     if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
@@ -1039,10 +1036,7 @@ def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
             detail = f"{placeholder}; {detail}"
         summary = "" if worst is None else f"a moment {ratio_text(worst)} × the {geo.source} geometry's"
         flags.append(Flag(code, level, detail, summary))
-    margin = COM_MARGIN * size
-    if np.any(declared.center_of_mass < geo.low - margin) or np.any(
-        declared.center_of_mass > geo.high + margin
-    ):
+    if not inside:
         text = (
             "the declared centre of mass lies outside the geometry's bounds (offset "
             f"{result.com_offset:.3g} of the geometry's size from its centre of mass)"
