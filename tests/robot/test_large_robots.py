@@ -253,3 +253,22 @@ def test_mass_properties_made_by_rows_equal_the_constructors_bit_for_bit():
         assert _same(value.center_of_mass, one.center_of_mass)
         assert _same(value.inertia_about_com, one.inertia_about_com)
         assert not value.center_of_mass.flags.writeable and not value.inertia_about_com.flags.writeable
+
+
+@pytest.mark.parametrize("shared_name", [False, True])
+def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
+    """A heavy root, then a light chain a → (an unnamed MJCF body) → c: nothing below a has mass.
+    Below the unnamed body are its own children, not the roots (the walk once looked them up by
+    the body's name, None, which is what a root's parent is). With two light roots sharing a
+    name, the keys are not unique and the walk, not the one-pass order, answers."""
+    from rbi.formats.robot import Inertial, Link
+    from rbi.robot.audit import _carried_mass
+
+    heavy = Inertial(MassProperties(1.0, np.zeros(3), np.eye(3) * 0.01), np.eye(3) * 0.01)
+    links = [Link(0, "base", heavy, word="body"), Link(1, "a", parent="base", word="body")]
+    links.append(Link(2, None, parent="a", word="body"))
+    links.append(Link(3, "c", parent=links[2].key, word="body"))
+    if shared_name:
+        links += [Link(4, "d", word="body"), Link(5, "d", word="body")]
+    carried = _carried_mass(links)
+    assert carried[:4] == [False, False, False, False]

@@ -587,13 +587,13 @@ class _ColumnAudit:
 
 def _carried_mass(links: list[Link]) -> list[bool]:
     """For each link (by row): does any link below it in the tree have mass? In one pass from
-    the leaves up (:func:`_carried_rows`) for a forest of links with names of their own; for
-    anything else (unnamed bodies, shared names, links hanging from none of the model's links) a
-    walk below each link."""
+    the leaves up (:func:`_carried_rows`) for a forest of links with keys of their own; for
+    anything else (shared names, links hanging from none of the model's links) a walk below each
+    link, following each link's children by its :attr:`~rbi.formats.robot.Link.key`."""
     n = len(links)
     heavy = [link.inertial is not None and link.inertial.mass > 0 for link in links]
-    rows = {link.name: row for row, link in enumerate(links)}
-    if None not in rows and len(rows) == n:
+    rows = {link.key: row for row, link in enumerate(links)}
+    if len(rows) == n:
         parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
         below = None if -1 in parents else _carried_rows(parents, heavy)
         if below is not None:
@@ -609,7 +609,7 @@ def _carried_mass(links: list[Link]) -> list[bool]:
             if row not in seen:
                 seen.add(row)
                 carried = heavy[row]
-                stack.extend(children.get(links[row].name, []))
+                stack.extend(children.get(links[row].key, []))
         found.append(carried)
     return found
 
