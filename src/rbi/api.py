@@ -44,6 +44,7 @@ from rbi.core.rotation import (
 from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
+from rbi.memory import collector_paused
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.runs.values import vector_value
 from rbi.spec.checks import Check, run_checks
@@ -93,6 +94,7 @@ __all__ = [
     "output_target",
     "check_distinct",
     "write_output",
+    "collector_paused",
     "visible",
     "number",
     "csv_lines",

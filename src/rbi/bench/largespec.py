@@ -42,11 +42,12 @@ print(time.perf_counter() - start)
 
 _RBI = """
 import json, sys, time
-from rbi.spec.load import paused_gc, read_yaml, validation_messages
+from rbi.memory import collector_paused
+from rbi.spec.load import read_yaml, validation_messages
 from rbi.spec.translate import body_from_spec
 path = sys.argv[1]
 start = time.perf_counter()
-with paused_gc():
+with collector_paused():
     raw = read_yaml(path)
     read = time.perf_counter()
     spec, problems = validation_messages(path, raw)

@@ -8,7 +8,6 @@ Exit 0 when no link has an error-level flag, 1 when one has (so it gates CI like
 
 from __future__ import annotations
 
-import gc
 import os
 import sys
 from typing import Annotated
@@ -16,7 +15,7 @@ from typing import Annotated
 import numpy as np
 import typer
 
-from rbi.api import SpecError, output_target
+from rbi.api import SpecError, collector_paused, output_target
 from rbi.api import audit as run_audit
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile
 from rbi.cli.render import emit, number, print_table, terminal_safe, without_noise
@@ -129,13 +128,8 @@ def audit(
     if out is not None:
         code = 1 if report.fix.unfixable or report.model.unchecked else 0
 
-    collecting = gc.isenabled()
-    gc.disable()  # as while auditing: a large robot's report is millions of new objects, none garbage
-    try:
+    with collector_paused():  # as while auditing: a large robot's report is millions of new objects
         _render(report, format, file, out if fix else None, fix)
-    finally:
-        if collecting:
-            gc.enable()
     if code:
         raise typer.Exit(code)
 

@@ -21,13 +21,13 @@ large chunks, a second).
 from __future__ import annotations
 
 import codecs
-import gc
 import re
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
 from rbi.errors import InputError
 from rbi.files.safe import InputFileRefused, read_input_file
+from rbi.memory import collector_paused
 
 MAX_FILE_BYTES = 64 * 1024 * 1024
 """Largest robot file read (64 MiB): far above any real description, whose meshes live in
@@ -296,12 +296,11 @@ def parse(path: str, text: bytes) -> XmlElement:
     parser.buffer_size = 1 << 20
     builder = _TreeBuilder(path, text, parser)
     builder.attach(parser)
-    collecting = gc.isenabled()
-    gc.disable()  # a million new elements, none of them garbage: the collector's passes over them are waste
     try:
-        for offset in range(0, max(len(text), 1), PARSE_CHUNK_BYTES):
-            parser.Parse(text[offset : offset + PARSE_CHUNK_BYTES], False)
-        parser.Parse(b"", True)
+        with collector_paused():  # a million new elements, none of them garbage
+            for offset in range(0, max(len(text), 1), PARSE_CHUNK_BYTES):
+                parser.Parse(text[offset : offset + PARSE_CHUNK_BYTES], False)
+            parser.Parse(b"", True)
     except expat.ExpatError as exc:
         raise InputError(
             f"{path}: not well-formed XML (line {exc.lineno}, column {exc.offset}): "
@@ -309,9 +308,6 @@ def parse(path: str, text: bytes) -> XmlElement:
         ) from None
     except RecursionError:
         raise InputError(f"{path}: elements nested too deeply") from None
-    finally:
-        if collecting:
-            gc.enable()
     if builder.root is None:
         raise InputError(f"{path}: empty XML document")
     return builder.root

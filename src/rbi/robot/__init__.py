@@ -4,14 +4,13 @@ the ``--fix`` rewrite plan (:mod:`rbi.robot.fix`). :func:`audit` runs it all."""
 
 from __future__ import annotations
 
-import contextlib
-import gc
 import os
 from collections.abc import Mapping, Sequence
 
 from rbi.formats.paths import outside_paths_allowed
 from rbi.formats.robot_files import read_robot
 from rbi.formats.robot_paths import parse_package_paths
+from rbi.memory import collector_paused
 from rbi.robot.audit import AuditReport, audit_model, check_choices, material_density
 from rbi.robot.tree import parse_joint_values
 
@@ -48,7 +47,7 @@ def audit(
     packages = parse_package_paths(package_paths)
     joint_values = parse_joint_values(joints)
     rho = material_density(material, density)
-    with outside_paths_allowed(allow_outside_paths), _without_cycle_collection():
+    with outside_paths_allowed(allow_outside_paths), collector_paused():
         model = read_robot(os.fspath(robot_file), packages, geometry=geometry != "none")
         report = audit_model(
             model,
@@ -65,26 +64,6 @@ def audit(
 
         report.fix = plan_fix(report, rho)
     return report
-
-
-@contextlib.contextmanager
-def _without_cycle_collection():
-    """Python's cycle collector paused while a robot is read and audited: a 100,000-link file
-    makes some ten million objects that all live on, and the collector's full passes over them
-    took 16 of 42 s of CPU (issue 25); whatever cycles the audit leaves are collected after.
-    On resuming, the objects made meanwhile (all in the youngest generation) are moved to the
-    oldest one unscanned (gc.freeze then gc.unfreeze): the first young collection would otherwise
-    walk all of them, 0.6-0.9 of 3.4 s of CPU for 20,000 links; cycles among them are collected
-    by the next full pass instead."""
-    collecting = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if collecting:
-            gc.freeze()
-            gc.unfreeze()
-            gc.enable()
 
 
 __all__ = ["AuditReport", "audit"]

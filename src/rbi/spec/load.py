@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-import contextlib
-import gc
 import json
 import re
 import sys
@@ -14,6 +12,7 @@ import yaml
 from pydantic import BaseModel, ValidationError
 
 from rbi.files.safe import InputFileRefused, read_input_file
+from rbi.memory import collector_paused
 from rbi.spec.errors import InputError, describe_error, format_location
 from rbi.spec.expect import Expect
 from rbi.spec.models import SHAPE_MODELS, BodySpec
@@ -26,21 +25,6 @@ if TYPE_CHECKING:
 
 MAX_SPEC_BYTES = 64 * 1024 * 1024
 """Largest spec file rbi reads (64 MiB: about 8 × 10⁵ parts written one a line)."""
-
-
-@contextlib.contextmanager
-def paused_gc():
-    """Pause the cyclic garbage collector for the block (re-enabled afterwards if it was on).
-
-    Building 10⁵ parts allocates millions of containers and none of them is garbage; the
-    collector's passes over the growing heap would otherwise take most of the load time."""
-    was_enabled = gc.isenabled()
-    gc.disable()
-    try:
-        yield
-    finally:
-        if was_enabled:
-            gc.enable()
 
 
 def read_spec_text(path: str | Path) -> str:
@@ -158,7 +142,7 @@ def parse_spec_text(text: str, path: str) -> Any:
 
 
 def _parse_spec_text(text: str, path: str) -> Any:
-    with paused_gc():
+    with collector_paused():
         parsed = _parse_json(text)
         if parsed is not _NOT_JSON:
             return parsed
@@ -240,7 +224,7 @@ def _validated(path: str, raw: Any) -> tuple[Any, list[str], tuple[str | None, s
         message = f"{path}: must be a mapping with a `parts` list at the top level (got {type(raw).__name__})"
         return None, [message], (None, None)
     try:
-        with paused_gc():
+        with collector_paused():
             return BodySpec.model_validate(raw), [], (None, None)
     except ValidationError as exc:
         errors = sorted(exc.errors(include_url=False), key=lambda e: e["type"] != "extra_forbidden")
@@ -316,7 +300,7 @@ def load_body(path: str | Path) -> LoadedBody:
     for in the current folder) into core inputs."""
 
     path = str(path)
-    with paused_gc():
+    with collector_paused():
         return body_from_spec(load_spec(path), spec_label(path))
 
 
@@ -324,7 +308,7 @@ def body_from_raw(raw: Any, path: str) -> LoadedBody:
     """Validate and translate already parsed YAML (a dict shaped like the spec) named ``path``
     in messages; files it names are looked for beside ``path``."""
 
-    with paused_gc():
+    with collector_paused():
         return body_from_spec(spec_from_raw(path, raw), path)
 
 

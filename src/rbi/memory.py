@@ -1,0 +1,29 @@
+"""Python's cyclic garbage collector, paused while rbi builds large structures that live on."""
+
+from __future__ import annotations
+
+import contextlib
+import gc
+from collections.abc import Iterator
+
+
+@contextlib.contextmanager
+def collector_paused() -> Iterator[None]:
+    """Pause the cyclic garbage collector for the block; on leaving, turn it back on if it was on.
+
+    Reading a spec of 10⁵ parts or a robot file of a million elements, auditing 10⁵ links and
+    printing their report each make millions of containers and none of them is garbage: the
+    collector's passes over them took 16 of 42 s of an audit's CPU (issue 25). On resuming, the
+    objects made meanwhile are moved to the oldest generation unscanned (``gc.freeze`` then
+    ``gc.unfreeze``), so the first young collection does not walk them all (0.6-0.9 of 3.4 s of
+    CPU for 20,000 links); cycles among them are collected by the next full pass. Nested pauses
+    leave the collector to the outermost."""
+    collecting = gc.isenabled()
+    gc.disable()
+    try:
+        yield
+    finally:
+        if collecting:
+            gc.freeze()
+            gc.unfreeze()
+            gc.enable()
