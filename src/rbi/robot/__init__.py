@@ -29,18 +29,10 @@ def audit(
     mesh_repair: bool = False,
 ) -> AuditReport:
     """Audit a URDF, SDF or MJCF file: every link's declared mass properties against its
-    geometry, with flags, and the whole robot's totals at a configuration.
-
-    ``package_paths``: ``{NAME: DIR}`` (or ``["NAME=DIR", ...]``) for ``package://NAME/``;
-    ``geometry``: ``"collision"`` or ``"visual"`` (each link falls back to the other), or
-    ``"none"`` (no geometry read: the declared inertials and totals only);
-    ``density`` (kg/m³) or ``material`` (a built-in name): for links that declare no mass;
-    ``mesh_inertia``: ``"auto"`` (exact where a mesh is closed, else its convex hull with a
-    warning flag ``mesh``), ``"exact"``, ``"convex"`` or ``"shell"``; ``joints``: ``{NAME: VALUE}`` (or
-    ``["NAME=VALUE", ...]``), radians for revolute joints, metres for prismatic ones (default:
-    zero, MJCF ``qpos0``); ``fix``: also plan the fixed copy (``report.fix``: its bytes, the
-    changes, the links that could not be fixed); ``mesh_repair``: close meshes' small holes
-    (three or four edges) first, each repair listed in ``report.notes``. Raises :class:`rbi.SpecError` on bad input.
+    geometry, with flags, and the whole robot's totals at a configuration (SI units). The
+    parameters are :func:`rbi.audit`'s, which this serves, less the writing of the fixed copy
+    (``fix`` only plans it: ``report.fix``); ``allow_outside_paths`` is a bool here. Raises
+    :class:`rbi.SpecError` on bad input.
     """
 
     check_choices(geometry, mesh_inertia)
