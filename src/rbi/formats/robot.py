@@ -303,6 +303,18 @@ class LinkColumns:
         return link
 
 
+def parent_rows(links: list[Link]) -> list[int] | None:
+    """Each link's parent row (``len(links)`` for a root) when every link's :attr:`Link.key` is
+    its own and every parent is one of the links; None otherwise (shared names, a parent that is
+    no link)."""
+    n = len(links)
+    rows = {link.key: row for row, link in enumerate(links)}
+    if len(rows) != n:
+        return None
+    parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
+    return None if -1 in parents else parents
+
+
 def depth_first(parents: list[int], root: int) -> list[int]:
     """The rows below ``root`` depth first (``parents``: each row's parent row, ``root`` for a
     top-level one), as :func:`rbi.robot.tree.parents_first` orders links: the last child

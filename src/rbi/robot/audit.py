@@ -29,7 +29,7 @@ from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.errors import ArgumentError, literal
-from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, depth_first
+from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, depth_first, parent_rows
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
 from rbi.robot.tree import placement, stack_apply, stacked, totals
@@ -590,14 +590,11 @@ def _carried_mass(links: list[Link]) -> list[bool]:
     the leaves up (:func:`_carried_rows`) for a forest of links with keys of their own; for
     anything else (shared names, links hanging from none of the model's links) a walk below each
     link, following each link's children by its :attr:`~rbi.formats.robot.Link.key`."""
-    n = len(links)
     heavy = [link.inertial is not None and link.inertial.mass > 0 for link in links]
-    rows = {link.key: row for row, link in enumerate(links)}
-    if len(rows) == n:
-        parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
-        below = None if -1 in parents else _carried_rows(parents, heavy)
-        if below is not None:
-            return below
+    parents = parent_rows(links)
+    below = None if parents is None else _carried_rows(parents, heavy)
+    if below is not None:
+        return below
     children: dict[str | None, list[int]] = {}
     for row, link in enumerate(links):
         children.setdefault(link.parent, []).append(row)

@@ -21,7 +21,7 @@ import numpy as np
 from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, axis_angle_matrix
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.formats.robot import LinkColumns, Pose, RobotModel, depth_first
+from rbi.formats.robot import LinkColumns, Pose, RobotModel, depth_first, parent_rows
 
 
 def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> dict[str, float]:
@@ -208,11 +208,11 @@ def _levels(
         return (*_grouped_levels(columns.order, parents, n), True)
     links = model.links
     n = len(links)
-    by_name = {link.key: row for row, link in enumerate(links)}
-    parents = [n if link.parent is None else by_name.get(link.parent, -1) for link in links]
-    if len(by_name) == n and -1 not in parents:  # each key one link's, each parent a link
+    parents = parent_rows(links)
+    if parents is not None:  # each key one link's, each parent a link
         rows = depth_first(parents, n)  # parents_first's order, on rows
         return (*_grouped_levels(rows, parents, n), True)
+    by_name = {link.key: row for row, link in enumerate(links)}
     row_of = {link.index: row for row, link in enumerate(links)}
     rows = [row_of[link.index] for link in parents_first(model, by_name)]
     parent_of = {row: n if links[row].parent is None else by_name[links[row].parent] for row in rows}
