@@ -13,9 +13,9 @@ def collector_paused() -> Iterator[None]:
 
     Reading a spec of 10⁵ parts or a robot file of a million elements, auditing 10⁵ links and
     printing their report each make millions of containers and none of them is garbage: the
-    collector's passes over them took 16 of 42 s of an audit's CPU (issue 25). On resuming, the
-    objects made meanwhile are moved to the oldest generation unscanned (``gc.freeze`` then
-    ``gc.unfreeze``), so the first young collection does not walk them all (0.6-0.9 of 3.4 s of
+    collector's passes over them took 16 of 42 s of an audit's CPU (issue 25). On resuming, every
+    tracked object, those made meanwhile among them, is moved to the oldest generation unscanned
+    (``gc.freeze`` then ``gc.unfreeze``), so the first young collection does not walk them all (0.6-0.9 of 3.4 s of
     CPU for 20,000 links); cycles among them are collected by the next full pass. Nested pauses
     leave the collector to the outermost."""
     collecting = gc.isenabled()
