@@ -19,44 +19,13 @@ Layers (each imports only those below it): ``formats`` (readers of outside files
 commands and rendering).
 """
 
+from rbi.names import PUBLIC
+
 __version__ = "0.1.0"
 
-__all__ = [
-    "load",
-    "loads",
-    "Body",
-    "Principal",
-    "Part",
-    "Momentum",
-    "simulate",
-    "Trajectory",
-    "sweep",
-    "SweepTable",
-    "Grid",
-    "Normal",
-    "Uniform",
-    "audit",
-    "AuditReport",
-    "show",
-    "animate",
-    "Animation",
-    "import_robot",
-    "RobotImport",
-    "ImportedLink",
-    "SpecError",
-    "ArgumentError",
-    "outside_paths_allowed",
-    "visible",
-    "MassProperties",
-    "Check",
-    "Dynamics",
-    "validate",
-    "spec_schema",
-    "unit_vector",
-    "__version__",
-]
+__all__ = [*PUBLIC, "__version__"]
 
-_API_NAMES = frozenset(__all__) - {"__version__"}
+_API_NAMES = frozenset(PUBLIC)
 
 
 def __getattr__(name: str):

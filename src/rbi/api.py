@@ -42,73 +42,33 @@ from rbi.core.rotation import (
     matrix_to_quaternion,
 )
 from rbi.errors import ArgumentError, SpecError, literal
-from rbi.files.output import OutputTarget, check_distinct, output_target, write_output
+from rbi.files.output import OutputTarget, output_target, write_output
+from rbi.files.output import check_distinct as check_distinct
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
-from rbi.memory import collector_paused
+from rbi.memory import collector_paused as collector_paused
+from rbi.names import CLI_TOOLS, PUBLIC
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.runs.values import vector_value
 from rbi.spec.checks import Check, run_checks
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.spec.units import convert_body
-from rbi.text import csv_lines, number, vector_text, visible
+from rbi.text import csv_lines as csv_lines
+from rbi.text import number as number
+from rbi.text import vector_text
+from rbi.text import visible as visible
 
 if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's modules load then)
     from rbi.robot.audit import AuditReport
-    from rbi.sim.budget import DEFAULT_MAX_STEPS
-    from rbi.spec.from_step import import_step
-    from rbi.sweeps.execute import available_cores
+    from rbi.sim.budget import DEFAULT_MAX_STEPS as DEFAULT_MAX_STEPS
+    from rbi.spec.from_step import import_step as import_step
+    from rbi.sweeps.execute import available_cores as available_cores
     from rbi.sweeps.plan import Grid, Normal, Uniform
-    from rbi.sweeps.study import MAX_ROWS_SHOWN
+    from rbi.sweeps.study import MAX_ROWS_SHOWN as MAX_ROWS_SHOWN
 
-__all__ = [
-    "load",
-    "loads",
-    "Body",
-    "Principal",
-    "Part",
-    "Momentum",
-    "simulate",
-    "Trajectory",
-    "sweep",
-    "SweepTable",
-    "Grid",
-    "Normal",
-    "Uniform",
-    "audit",
-    "AuditReport",
-    "import_step",
-    "show",
-    "animate",
-    "Animation",
-    "import_robot",
-    "RobotImport",
-    "ImportedLink",
-    "DEFAULT_MAX_STEPS",
-    "MAX_ROWS_SHOWN",
-    "available_cores",
-    "SpecError",
-    # the CLI's tools, shared with every caller: errors, the checked file writer, text for people
-    "ArgumentError",
-    "outside_paths_allowed",
-    "output_target",
-    "check_distinct",
-    "write_output",
-    "collector_paused",
-    "visible",
-    "number",
-    "csv_lines",
-    # what the commands compute, as numbers (rbi check, dynamics, export, validate, schema)
-    "MassProperties",
-    "Check",
-    "Dynamics",
-    "validate",
-    "spec_schema",
-    "unit_vector",
-    "LENGTH_UNITS",
-    "MASS_UNITS",
-    "LARGEST_ANGLE_DEG",
-]
+# listed once, in rbi.names (`import rbi` reads it without this module); the names imported here
+# only to be offered are imported `as` themselves, which tells linters they are re-exported
+__all__ = [*PUBLIC, *CLI_TOOLS]
 
 Point = str | Sequence[float] | np.ndarray
 """A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates

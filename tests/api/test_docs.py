@@ -74,3 +74,10 @@ def test_the_site_builds_strictly(tmp_path):
     assert {name for name in rbi.__all__ if name != "__version__"} <= documented  # every public name
     assert 'id="rbi.api.Body.principal"' in reference
     assert (tmp_path / "site" / "python-api" / "index.html").exists()
+
+
+def test_the_reference_page_lists_every_public_name():
+    """docs/api.md names the members it documents; they are ``rbi.__all__`` (AuditReport has a
+    section of its own, ``__version__`` is no member), in its order."""
+    members = re.findall(r"^        - (\w+)$", (ROOT / "docs" / "api.md").read_text(), re.M)
+    assert members == [name for name in rbi.__all__ if name not in ("AuditReport", "__version__")]

@@ -1,0 +1,59 @@
+"""The public names of rbi, listed once (no imports: ``import rbi`` reads this and stays cheap).
+
+``rbi.__all__`` is :data:`PUBLIC` and ``__version__``; ``rbi.api.__all__`` is :data:`PUBLIC` and
+:data:`CLI_TOOLS`. docs/api.md documents :data:`PUBLIC`.
+"""
+
+PUBLIC = (
+    "load",
+    "loads",
+    "Body",
+    "Principal",
+    "Part",
+    "Momentum",
+    "simulate",
+    "Trajectory",
+    "sweep",
+    "SweepTable",
+    "Grid",
+    "Normal",
+    "Uniform",
+    "audit",
+    "AuditReport",
+    "show",
+    "animate",
+    "Animation",
+    "import_robot",
+    "RobotImport",
+    "ImportedLink",
+    "SpecError",
+    "ArgumentError",
+    "outside_paths_allowed",
+    "visible",
+    "MassProperties",
+    "Check",
+    "Dynamics",
+    "validate",
+    "spec_schema",
+    "unit_vector",
+)
+"""What ``import rbi`` offers: the API of docs/python-api.md."""
+
+CLI_TOOLS = (
+    "import_step",
+    "DEFAULT_MAX_STEPS",
+    "MAX_ROWS_SHOWN",
+    "available_cores",
+    # the checked file writer, the collector's pause, text for people
+    "output_target",
+    "check_distinct",
+    "write_output",
+    "collector_paused",
+    "number",
+    "csv_lines",
+    # what the commands print besides numbers (rbi dynamics, parts, --rotate)
+    "LENGTH_UNITS",
+    "MASS_UNITS",
+    "LARGEST_ANGLE_DEG",
+)
+"""What rbi.api offers the command line besides :data:`PUBLIC` (not names of ``rbi``)."""
