@@ -396,23 +396,18 @@ class Body(TableRepr):
         ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
         (ValueError when there is none); or a point (x, y, z)."""
 
-        if isinstance(about, str):
-            key = about.strip().lower()
-            if key == "com":
-                return self.center_of_mass
-            if key == "origin":
-                return np.zeros(3)
-            if key == "pivot":
-                pivot = self.pivot
-                if pivot is None:
-                    raise ArgumentError(
-                        "about", "'pivot' needs a `pivot` in the spec, and there is none", file=self.path
-                    )
-                return pivot
+        key = about.strip().lower() if isinstance(about, str) else vector_value(about, "about")
+        try:
+            point = self._loaded.point(key)
+        except KeyError:
             raise ArgumentError(
-                "about", f"expected 'com', 'origin', 'pivot' or a point (x, y, z), got {about!r}"
+                "about", f"expected 'com', 'origin', 'pivot' or a point (x, y, z), got {literal(about)}"
+            ) from None
+        if point is None:
+            raise ArgumentError(
+                "about", "'pivot' needs a `pivot` in the spec, and there is none", file=self.path
             )
-        return np.array(vector_value(about, "about"))
+        return np.array(point, dtype=float)
 
     def inertia(
         self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None

@@ -134,3 +134,27 @@ def test_turned_inertia_is_r_i_rt_for_chained_turns(bolted):
     np.testing.assert_allclose(
         bolted.inertia(axes=[("x", 20), ("z", -45)]), R @ bolted.inertia() @ R.T, rtol=1e-12, atol=1e-18
     )
+
+
+FREE_TOP = (BODIES / "top.yaml").read_text().replace("pivot: [0, 0, 0]\n", "")
+"""The chapter's top without its pivot: a free body."""
+
+
+def test_reference_points_by_name_and_their_refusals():
+    free = rbi.loads(FREE_TOP)
+    assert free.pivot is None
+    np.testing.assert_array_equal(free.point(" COM "), [0.0, 0.0, 0.052])  # names: any case, spaces
+    np.testing.assert_array_equal(free.point("origin"), [0.0, 0.0, 0.0])
+    np.testing.assert_array_equal(free.point((0.01, 0, 2)), [0.01, 0.0, 2.0])
+    free.point("com")[2] = 5.0  # a copy: the body keeps its centre of mass
+    assert free.center_of_mass[2] == printed(0.052, 4)
+    with pytest.raises(rbi.ArgumentError) as refused:
+        free.point("pivot")
+    assert isinstance(refused.value, ValueError) and refused.value.parameters == ("about",)
+    assert str(refused.value) == "<string>: about: 'pivot' needs a `pivot` in the spec, and there is none"
+    for name in ("tip", "{x}"):  # braces print as given
+        with pytest.raises(ValueError) as refused:
+            free.point(name)
+        assert str(refused.value) == (
+            f"about: expected 'com', 'origin', 'pivot' or a point (x, y, z), got {name!r}"
+        )

@@ -107,3 +107,26 @@ def test_no_expect_block_exits_2():
 
 def test_installed_command_exit_status(write_spec):
     assert run_rbi("check", with_expect(write_spec, "  mass: {value: 0.5, tol: 0}\n")).returncode == 0
+
+
+FREE_TOP = TOP.replace("pivot: [0, 0, 0]\n", "")
+"""The top without its pivot; its tip stays at the origin (Ixx = 0.0016149333… kg·m² about it)."""
+
+
+@pytest.mark.parametrize("about, label", [("origin", "origin"), ("[0, 0, 0]", "point")])
+def test_inertia_about_the_origin_or_a_point_of_a_free_body(write_spec, about, label):
+    block = f"  inertia: {{value: {{ixx: 0.00161493, iyy: 0.00161493, izz: 0.0001952}}, tol: 1e-8, about: {about}}}\n"
+    path = write_spec(FREE_TOP + "expect:\n" + block)
+    out = json.loads(run_rbi_inprocess("check", path, "-f", "json").stdout)
+    assert out["ok"] is True and out["checks"][0]["about"] == label
+
+
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+def test_about_pivot_of_a_free_body_exits_2_in_every_form(write_spec, form):
+    block = "  moments: {value: [1, 1, 1], tol: 1%, about: pivot}\n"
+    path = write_spec(FREE_TOP + "expect:\n" + block)
+    proc = run_rbi_inprocess("check", path, "-f", form)
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert proc.stderr.strip().endswith(
+        f"{path}: expect: about: pivot needs a `pivot` in the spec, and there is none"
+    ), proc.stderr

@@ -58,16 +58,12 @@ def _compare(
 
 
 def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
-
-    if isinstance(about, list):
-        return "point", np.asarray(about, dtype=float)
-    if about == "com":
-        return "com", body.props.center_of_mass
-    if about == "origin":
-        return "origin", np.zeros(3)
-    if body.pivot is None:
+    """``expect``'s ``about`` (validated: a name or a point) as (label, point), by the body's
+    :meth:`~rbi.spec.translate.LoadedBody.point`."""
+    point = body.point(about)
+    if point is None:
         raise InputError(f"{body.path}: expect: about: pivot needs a `pivot` in the spec, and there is none")
-    return "pivot", body.pivot
+    return ("point" if isinstance(about, list) else about), point
 
 
 def run_checks(body: Any) -> list[Check]:

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -54,6 +54,15 @@ class LoadedBody:
     @property
     def labels(self) -> dict[str, str]:
         return unit_labels(self.length_unit, self.mass_unit)
+
+    def point(self, about: str | Sequence[float]) -> np.ndarray | None:
+        """The reference point ``about`` as (3,) body coordinates, length unit: ``"com"`` the
+        centre of mass, ``"origin"`` (0, 0, 0), ``"pivot"`` the spec's pivot (None when it has
+        none: each caller says so in its own terms), or the point (x, y, z) itself. KeyError for
+        any other name (callers normalise case and spaces first)."""
+        if not isinstance(about, str):
+            return np.asarray(about, dtype=float)
+        return {"com": self.props.center_of_mass, "origin": np.zeros(3), "pivot": self.pivot}[about]
 
 
 def _solid_mass(part, volume: float, units: models.Units) -> float:
