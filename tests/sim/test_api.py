@@ -148,14 +148,17 @@ def test_duration_zero_and_single_sample(bolted_scene):
 
 def test_bad_runs_are_refused(bolted_scene):
     q0, w0 = initial_state(0.0, [0, 0, 200.0])
-    for duration, samples, rtol, method in (
-        (-1.0, 10, None, "default"),
-        (1.0, 0, None, "default"),
-        (1.0, 10, 0.5, "default"),
-        (1.0, 10, None, "euler"),
+    for duration, samples, rtol, method, words in (
+        (-1.0, 10, None, "default", "duration: must be a finite number of seconds >= 0 (got -1.0)"),
+        (float("nan"), 10, None, "default", "duration: must be a finite number of seconds >= 0"),
+        (1.0, 0, None, "default", "samples: must be a whole number >= 1 (got 0)"),
+        (1.0, 2.5, None, "default", "samples: must be a whole number >= 1 (got 2.5)"),
+        (1.0, 10, 0.5, "default", "rtol: must be between 1e-15 and 0.01 (got 0.5)"),
+        (1.0, 10, None, "euler", "method: must be one of default, rk45, dop853, exact (got 'euler')"),
     ):
-        with pytest.raises(ValueError):
+        with pytest.raises(ValueError) as refused:
             simulate(bolted_scene, q0, w0, duration, samples, rtol=rtol, method=method)
+        assert str(refused.value).startswith(words)
     with pytest.raises(SimulationError, match="exact"):
         simulate(bolted_scene, q0, w0, 1.0, 10, method="exact")
     assert set(METHODS) >= {"default", "rk45", "dop853", "exact"}

@@ -1,4 +1,5 @@
-"""Is a 3×3 matrix a physically possible inertia matrix?
+"""Can a number be computed with (:func:`finite`, :func:`whole`, :func:`subnormal_problem`), and is a
+3×3 matrix a physically possible inertia matrix?
 
 The tests follow MuJoCo's compiler and Drake's ``RotationalInertia::CouldBePhysicallyValid``:
 finite, symmetric, principal moments not negative, and the triangle inequality
@@ -13,14 +14,31 @@ judged exactly as strictly as large ones.
 
 from __future__ import annotations
 
+import math
+import numbers
 import sys
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 
 SMALLEST_NORMAL = sys.float_info.min
 """The smallest positive double with all its digits (2.2e-308): a mass, size or density below
 it is subnormal, and the moments computed from it lose their digits or vanish to 0."""
+
+
+def finite(value: Any) -> bool:
+    """True for a finite real number (a bool is not one)."""
+    if isinstance(value, bool):
+        return False
+    try:
+        return math.isfinite(value)
+    except TypeError:
+        return False
+
+
+def whole(value: Any) -> bool:
+    """True for a whole number (a bool is not one)."""
+    return isinstance(value, numbers.Integral) and not isinstance(value, bool)
 
 
 def subnormal_problem(value: float) -> str | None:

@@ -19,9 +19,10 @@ import numpy as np
 
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, unit_vector
 from rbi.core.spin_axis import default_spin_axis
+from rbi.core.validity import finite, whole
 from rbi.errors import ArgumentError, InputError
-from rbi.runs.values import finite, require_numbers, vector_value, whole
-from rbi.sim.api import METHODS, RTOL_RANGE, SimulationError, simulate
+from rbi.runs.values import require_numbers, vector_value
+from rbi.sim.api import SimulationError, check_duration, check_method, check_rtol, simulate
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import tilt_deg
 from rbi.sim.scene import initial_state, scene_from_properties
@@ -44,16 +45,14 @@ def check_run_settings(duration: Any, tilt_axis: Any, gravity: Any, max_steps: A
 
     require_numbers(duration=duration, gravity=gravity, rtol=rtol)
     require_numbers(integral=True, max_steps=max_steps)
-    if not (finite(duration) and duration >= 0.0):
-        raise ArgumentError("duration", f"must be a finite number of seconds >= 0 (got {duration!r})")
+    check_duration(duration)
     if not isinstance(tilt_axis, str) or tilt_axis.lower() not in ("x", "y"):
         raise ArgumentError("tilt_axis", f"must be x or y (got {tilt_axis!r})")
     if gravity is not None and not (finite(gravity) and gravity >= 0.0):
         raise ArgumentError("gravity", f"must be a finite number of m/s² >= 0 (got {gravity!r})")
     if max_steps is not None and not (whole(max_steps) and max_steps >= 1):
         raise ArgumentError("max_steps", f"must be at least 1 (got {max_steps!r})")
-    if rtol is not None and not (finite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
-        raise ArgumentError("rtol", f"must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
+    check_rtol(rtol)
 
 
 def check_run_options(
@@ -71,8 +70,7 @@ def check_run_options(
     ``rtol`` as keywords; other keywords, such as ``spin_axis``, are checked where they are
     used)."""
 
-    if method not in METHODS:
-        raise ArgumentError("method", f"must be one of {', '.join(METHODS)} (got {method!r})")
+    check_method(method)
     require_numbers(spin=spin, tilt_deg=tilt_deg)
     if spin is not None and omega is not None:
         raise ArgumentError(("spin", "omega"), "give one or the other, not both")

@@ -32,18 +32,3 @@ def require_numbers(integral: bool = False, **values: Any) -> None:
         if value is not None and (isinstance(value, bool) or not isinstance(value, kind)):
             what = "a whole number" if integral else "a number"
             raise TypeError(f"{name}: must be {what} (got {type(value).__name__} {value!r:.60})")
-
-
-def finite(value: Any) -> bool:
-    """True for a finite real number (a bool is not one)."""
-    if isinstance(value, bool):
-        return False
-    try:
-        return math.isfinite(value)
-    except TypeError:
-        return False
-
-
-def whole(value: Any) -> bool:
-    """True for a whole number (a bool is not one)."""
-    return isinstance(value, numbers.Integral) and not isinstance(value, bool)

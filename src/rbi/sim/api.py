@@ -3,13 +3,15 @@
 
 from __future__ import annotations
 
-import math
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
+from rbi.core.validity import finite, whole
+from rbi.errors import ArgumentError
 from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
 from rbi.sim.scene import Scene
 
@@ -78,14 +80,34 @@ def sample_times(duration: float, samples: int) -> np.ndarray:
     return np.linspace(0.0, float(duration), int(samples))
 
 
-def validate_run(duration: float, samples: int, rtol: float | None) -> None:
-    """ValueError for a run that cannot be made (negative duration, no samples ...)."""
-    if not (isinstance(duration, (int, float)) and math.isfinite(duration) and duration >= 0.0):
-        raise ValueError(f"duration must be a finite number >= 0 (got {duration!r})")
-    if int(samples) != samples or samples < 1:
-        raise ValueError(f"samples must be a whole number >= 1 (got {samples!r})")
-    if rtol is not None and not (math.isfinite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
-        raise ValueError(f"rtol must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
+def check_method(method: Any) -> None:
+    """ArgumentError (a ValueError) unless ``method`` is one of :data:`METHODS`."""
+    if method not in METHODS:
+        raise ArgumentError("method", f"must be one of {', '.join(METHODS)} (got {method!r})")
+
+
+def check_duration(duration: Any) -> None:
+    """ArgumentError (a ValueError) unless ``duration`` is a finite number of seconds >= 0."""
+    if not (finite(duration) and duration >= 0.0):
+        raise ArgumentError("duration", f"must be a finite number of seconds >= 0 (got {duration!r})")
+
+
+def check_rtol(rtol: Any) -> None:
+    """ArgumentError (a ValueError) unless ``rtol`` is None (the method's own) or in
+    :data:`RTOL_RANGE`."""
+    if rtol is not None and not (finite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
+        raise ArgumentError("rtol", f"must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
+
+
+def validate_run(duration: Any, samples: Any, rtol: Any, method: Any) -> None:
+    """The kernel's guard: ArgumentError (a ValueError) for a run that cannot be made, in the
+    words the API uses (:mod:`rbi.runs.run` checks the same settings with these functions
+    before any work, and bounds ``samples`` above)."""
+    check_duration(duration)
+    if not (whole(samples) and samples >= 1):
+        raise ArgumentError("samples", f"must be a whole number >= 1 (got {samples!r})")
+    check_rtol(rtol)
+    check_method(method)
 
 
 def simulate(
@@ -108,9 +130,7 @@ def simulate(
     fraction done, now and then, by the default method. max_steps: the default method stops
     with :class:`SimulationError` once it has taken more accepted steps than this.
     """
-    validate_run(duration, samples, rtol)
-    if method not in METHODS:
-        raise ValueError(f"unknown method {method!r} (expected one of {', '.join(METHODS)})")
+    validate_run(duration, samples, rtol, method)
     q0 = np.asarray(q0, dtype=float)
     q0 = q0 / np.linalg.norm(q0)
     omega0 = np.asarray(omega0, dtype=float).reshape(3)

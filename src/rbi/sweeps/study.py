@@ -21,9 +21,9 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError
 from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, spin_axis_value
-from rbi.runs.values import whole
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.units import STANDARD_GRAVITY_SI
