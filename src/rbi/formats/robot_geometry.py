@@ -10,6 +10,7 @@ geom's density under ``shellinertia``.
 
 from __future__ import annotations
 
+from collections import OrderedDict
 from typing import TYPE_CHECKING, NamedTuple
 
 import numpy as np
@@ -17,7 +18,7 @@ import numpy as np
 from rbi.core import shapes
 from rbi.core.mass import MassProperties
 from rbi.errors import InputError
-from rbi.formats.paths import file_key
+from rbi.formats.paths import cached, file_key
 from rbi.formats.robot import Geom
 
 if TYPE_CHECKING:
@@ -185,7 +186,14 @@ def _turned_bounds(R, p, low, high):
     return middle - extent, middle + extent
 
 
-_MESHES: dict[tuple, tuple] = {}
+_MESHES: OrderedDict[tuple, tuple] = OrderedDict()
+"""Meshes integrated in this process, by file, scale and mode (an audit of a robot asks for each
+mesh of each link, often the same file for several links)."""
+
+_MESH_ENTRIES = 4096
+"""How many of :data:`_MESHES` are kept (the last used): each holds a few numbers (about 1.3 kB
+with its key, whatever the size of its mesh), so at most about 5 MB however many robots a process
+audits."""
 
 
 def _auto_mode(geom: Geom, where: str, repair: bool) -> tuple[str | None, MeshFallback | None]:
@@ -222,8 +230,13 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False, as_mujoco: bo
         key = (*file_key(path), tuple(scale), mode, repair, as_mujoco)
     except ValueError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: {exc}") from None
-    if key in _MESHES:
-        return _MESHES[key]
+    return cached(
+        _MESHES, _MESH_ENTRIES, key, lambda: _integrated(geom, path, scale, mode, where, repair, as_mujoco)
+    )
+
+
+def _integrated(geom: Geom, path, scale: np.ndarray, mode: str, where: str, repair: bool, as_mujoco: bool):
+    """:func:`_mesh`'s value, computed (InputError naming the geom when it cannot be)."""
     try:
         vertices, faces = _mesh_arrays(path)
     except ValueError as exc:
@@ -260,7 +273,7 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False, as_mujoco: bo
             "(the mesh's volume or inertia overflows a double)"
         )
     used = found.vertices[np.unique(found.faces)]
-    result = (
+    return (
         unit.mass,
         np.asarray(unit.center_of_mass, float),
         np.asarray(unit.inertia_about_com, float),
@@ -268,8 +281,6 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False, as_mujoco: bo
         used.max(axis=0),
         added,
     )
-    _MESHES[key] = result
-    return result
 
 
 def mujoco_mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str) -> MeshDistribution:
