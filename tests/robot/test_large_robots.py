@@ -152,8 +152,8 @@ def _hostile_inertias(n: int) -> list[tuple[float, np.ndarray]]:
     ],
 )
 def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, shapes, density, careful):
-    """Whichever reader made the model (``careful``: the URDF reader of links, laid into the
-    audit's arrays; else the reader in bulk, whose columns the audit reads as they are)."""
+    """Whichever form the audit reads the model in (``careful``: its links, made first and laid
+    into the audit's arrays; else the reader's columns, as they are)."""
     from rbi.formats import robot_xml
     from rbi.formats.robot_files import read_robot
     from rbi.formats.urdf import read_urdf
@@ -162,6 +162,8 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, sha
     path = tmp_path / "r.urdf"
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
     model = read_urdf(robot_xml.read_xml(str(path))) if careful else read_robot(str(path))
+    if careful:
+        assert model.links  # made now: the audit reads them, not the columns
     assert (model.in_columns is None) == careful
     bulk = audit_model(model, density=density)
     carried = _carried_mass(model.links)

@@ -220,7 +220,7 @@ class GeomColumn:
 @dataclass
 class LinkColumns:
     """A URDF's links as columns, one row a link in file order (its ``index``), as
-    :mod:`rbi.formats.urdf_bulk` reads them: names, ``parents`` (the parent's row, -1 for the
+    :mod:`rbi.formats.urdf` reads them: names, ``parents`` (the parent's row, -1 for the
     root), ``order`` (the rows parents first, as :func:`depth_first` gives them), origins (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame),
     the declared inertials (``declared`` (n,) which links have one; ``masses`` (n,) kg, ``coms``
     (n, 3) m and ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) the
@@ -342,7 +342,7 @@ class RobotModel:
     """A parsed robot file: ``format`` (``urdf``, ``sdf``, ``mjcf``), ``name``, ``links`` in file
     order, ``notes`` (what was read but not checked: unresolved includes, kinds of geometry
     without volume), and ``document`` (the XML with element spans, for a fixed copy).
-    ``columns``: the links as arrays (:class:`LinkColumns`, a URDF read in bulk), from which
+    ``columns``: the links as arrays (:class:`LinkColumns`, a URDF), from which
     :attr:`links` are made when first asked for."""
 
     path: str

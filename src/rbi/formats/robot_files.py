@@ -60,13 +60,11 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
         document.includes.extend(includes)
     else:
         data = robot_xml.read_bytes(path)
-        if (
-            b"<robot" in data[:65536]
-        ):  # most likely a URDF: first the reader in bulk, which leaves doubts here
-            # not at top level: `rbi validate` would load rbi.formats.urdf_bulk too
-            from rbi.formats.urdf_bulk import read_urdf_bulk
+        if b"<robot" in data[:65536]:  # most likely a URDF: first from its plain text, if it is
+            # not at top level: `rbi validate` would load rbi.formats.urdf too
+            from rbi.formats.urdf import read_urdf_text
 
-            model = read_urdf_bulk(path, data, package_paths, geometry)
+            model = read_urdf_text(path, data, package_paths, geometry)
             if model is not None:
                 return model
         document = robot_xml.read_xml(path, data)

@@ -10,27 +10,47 @@
 - ``<joint type><origin/><parent link/><child link/><axis xyz/>``: the child link's frame in the
   parent's at zero, and the motion (revolute and continuous turn about the axis, prismatic
   slides along it, in the child's frame).
+
+One reader, on columns (issue 25: a 100,000-link file in seconds, without a Python object and
+two handler calls per XML element). The top-level ``<link>`` and ``<joint>`` elements are put
+in groups of the same *signature* (the same elements and attribute names: their values at the
+same places), so each field (an origin's ``xyz``, a mass, a box's ``size``) is one column of
+strings, checked and turned into numbers at once; the model holds its links as those columns
+(:class:`rbi.formats.robot.LinkColumns`), its :class:`Link` values made when first asked for.
+
+The groups come from the text itself when it is plain (:func:`read_urdf_text`: UTF-8 with no
+DTD, entity or character reference, CDATA, processing instruction, character data or
+single-quoted value; attribute values taken out in one pass on arrays, element boundaries
+found from where its ``<``, ``>`` and ``/`` are), or else from the parsed element tree
+(:func:`read_urdf`). A refusal is worded for the first thing wrong in document order (link by
+link, then joint by joint, each field in the order above): a file the groups refuse is read
+again with every element its own group, in document order.
 """
 
 from __future__ import annotations
 
+import dataclasses
+import re
+
 import numpy as np
 
+from rbi.core.validity import SMALLEST_NORMAL
 from rbi.errors import InputError
+from rbi.formats import robot_xml
 from rbi.formats.robot import (
-    Geom,
+    MAX_ANGLE_RAD,
+    GeomColumn,
     Inertial,
     Link,
+    LinkColumns,
     Motion,
-    Pose,
     RobotModel,
     Where,
     angles,
     check_inertia_range,
     check_unique_joint_names,
     check_unique_names,
-    from_six,
-    number,
+    depth_first,
     numbers,
     positive,
     rpy_matrix,
@@ -50,222 +70,714 @@ MOVING = {
     "ball": "ball",
 }
 
-
 UNIT_AXIS_KINDS = ("revolute", "prismatic")
 """The motions whose ``<axis xyz>`` is made a unit vector (the others keep it as written)."""
 
+_SHAPES = {
+    "box": ("size",),
+    "cylinder": ("radius", "length"),
+    "capsule": ("radius", "length"),
+    "sphere": ("radius",),
+}
+"""The primitive shapes and their attributes (a mesh and a shape with no volume apart)."""
+
+
+class _Doubt(Exception):
+    """The text is not plain (:func:`read_urdf_text` leaves it to :func:`read_urdf`)."""
+
+
+def read_urdf_text(path: str, data: bytes, package_paths=None, geometry: bool = True) -> RobotModel | None:
+    """The model of the URDF whose bytes are ``data``, read from its plain text; None when the
+    text is not plain or the file is refused (:func:`read_urdf` then reads it, or words why not)."""
+    try:
+        document = robot_xml.decoded(path, data)
+        if document.encoding != "utf-8" or not _plain_xml(document.text):
+            return None
+        name, links, joints = _elements(document.text)
+        return _model(document, name, links, joints, package_paths, geometry)
+    except (_Doubt, InputError):
+        return None
+
 
 def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
-    path, root = document.path, document.root
-    model = RobotModel(path, "urdf", root.get("name"), document=document)
-    if not root.all("link"):
-        raise InputError(f"{path}: no <link>: a URDF needs at least one (urdfdom and pybullet refuse it)")
-    for index, element in enumerate(root.all("link")):
-        link = Link(index, element.get("name"), element=element, word="link")
-        if not link.name:
-            raise InputError(
-                f"{path}: link[{index}] (line {element.line}): name: missing; every link needs a name "
-                "(urdfdom and pybullet refuse it)"
-            )
-        where = Where(path, link)
-        inertial = element.child("inertial")
-        if inertial is not None:
-            link.inertial = _inertial(where, inertial)
-        if geometry:
-            link.collisions = _geoms(where, element, "collision", package_paths)
-            link.visuals = _geoms(where, element, "visual", package_paths)
-        model.links.append(link)
-    check_unique_names(path, model.links, "link")
-    _joints(model, root)
-    return model
+    """The model of the parsed URDF ``document``; InputError, one line naming the file, the link
+    or joint and the attribute, for the first thing wrong in document order."""
+    name = document.root.get("name")
+    try:
+        return _model(document, name, *_tree_groups(document.root, True), package_paths, geometry)
+    except InputError:  # worded for the first element of its group: word it for the first in the file
+        return _model(document, name, *_tree_groups(document.root, False), package_paths, geometry)
 
 
-def _origin(where: Where, element, what: str) -> Pose:
-    origin = element.child("origin") if element is not None else None
-    if origin is None:
-        return Pose.identity()
-    xyz = numbers(where, origin.get("xyz", "0 0 0"), f"{what}/origin: xyz", 3)
-    rpy = angles(
-        where, numbers(where, origin.get("rpy", "0 0 0"), f"{what}/origin: rpy", 3), f"{what}/origin: rpy"
-    )
-    return Pose(rpy_matrix(rpy) if any(rpy) else _IDENTITY.copy(), np.array(xyz, dtype=float))
+def _model(document, name, links: dict, joints: dict, packages, geometry: bool) -> RobotModel:
+    fields = _links(document.path, links, geometry, packages)
+    fields.update(_joints(document.path, fields["names"], joints))
+    return RobotModel(document.path, "urdf", name, document=document, columns=LinkColumns(**fields))
 
 
-_IDENTITY = np.eye(3)
+# --- the groups of a plain text -----------------------------------------------------------------
+
+_PLAIN = re.compile(rb"[0-9eE+\-. \n]*")
+"""The characters of texts of plain decimals apart by spaces, one text a line: with them, a
+token ``float`` reads is one :data:`rbi.formats.robot._NUMBER` matches (``float`` alone would
+also take ``nan``, ``inf``, ``1_0`` and other digits than 0-9)."""
+
+_COMMENT = re.compile(rb"<!--.*?-->", re.S)
+_TEXT = re.compile(rb">\s*[^\s<]")
+"""Character data inside an element (or a ``>`` inside a value): not plain."""
+
+_SINGLE_QUOTED = re.compile(rb"=\s*'")
+_NAMES = re.compile(rb'([^\s=<>/]+)\s*=\s*""')
 
 
-def _inertial(where: Where, inertial) -> Inertial:
-    origin = inertial.child("origin")
-    xyz = numbers(
-        where, origin.get("xyz", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: xyz", 3
-    )
-    rpy = numbers(
-        where, origin.get("rpy", "0 0 0") if origin is not None else "0 0 0", "inertial/origin: rpy", 3
-    )
-    angles(where, rpy, "inertial rpy")
-    mass_element = inertial.child("mass")
-    if mass_element is None:
-        raise where.error("inertial/mass: missing")
-    mass = number(where, mass_element.get("value"), "inertial/mass: value")
-    block = inertial.child("inertia")
-    if block is None:
-        raise where.error("inertial/inertia: missing")
-    six = {
-        key: number(where, block.get(key), f"inertial/inertia: {key}")
-        for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+def _plain_xml(text: bytes) -> bool:
+    """Is ``text`` well-formed XML (as expat, the tree's parser, reads it) with no document
+    type declaration, entity or character reference, CDATA section or processing instruction
+    (but the XML declaration)?"""
+    if b"&" in text or b"<!DOCTYPE" in text or b"<![CDATA[" in text or text.find(b"<?", 1) >= 0:
+        return False
+    # not at top level: `rbi validate` would load xml.parsers.expat too
+    from xml.parsers import expat
+
+    parser = expat.ParserCreate(encoding="utf-8")
+    try:
+        parser.Parse(text, True)
+    except expat.ExpatError:
+        return False
+    return True
+
+
+def _elements(text: bytes) -> tuple[str | None, dict, dict]:
+    """The root's name and the top-level links and joints of a URDF :func:`_plain_xml` passed,
+    each grouped by signature (signature → :class:`_Rows`). The values are taken out of the
+    text and the element boundaries found on the arrays of its ``<``, ``>`` and ``=`` (with no
+    text, comment or value left, each starts or ends a tag, or gives a value)."""
+    if text.startswith(b"<?xml"):
+        text = text[text.index(b"?>") + 2 :]
+    if b"<!--" in text:
+        text = _COMMENT.sub(b"", text)
+    if _TEXT.search(text):
+        raise _Doubt
+    values, blank = _values(text)
+    if _SINGLE_QUOTED.search(blank):
+        raise _Doubt
+    codes = np.frombuffer(blank, dtype=np.uint8)
+    marks = np.flatnonzero(codes - 60 <= 2)  # where a <, = or > is (bytes below 60 wrap around)
+    kinds = codes[marks]
+    opens, equals, closes = marks[kinds == 60], marks[kinds == 61], marks[kinds == 62]
+    if len(opens) != len(closes) or len(equals) != len(values) or not len(opens):
+        raise _Doubt
+    if np.any(closes < opens) or np.any(opens[1:] < closes[:-1]):
+        raise _Doubt
+    ending, empty = codes[opens + 1] == 47, codes[closes - 1] == 47
+    step = np.where(ending, -1, np.where(empty, 0, 1))
+    after = np.cumsum(step)
+    if after.max() >= robot_xml.MAX_DEPTH or not _starts(blank, int(opens[0]), b"<robot"):
+        raise _Doubt
+    starts = np.flatnonzero((after - step == 1) & ~ending)
+    ends = np.flatnonzero((after == 1) & (ending | empty))
+    groups = {}
+    for opening in (b"<link", b"<joint"):
+        chosen = _named(codes, opens[starts], opening)
+        begins, stops = opens[starts][chosen], closes[ends][chosen] + 1
+        lows, highs = np.searchsorted(equals, begins), np.searchsorted(equals, stops)
+        groups[opening] = _alike(codes, blank, begins, stops, lows, highs, values) or _grouped(
+            blank, begins, stops, lows, highs, values
+        )
+    root = _NAMES.findall(blank[: closes[0] + 1])
+    name = values.one(root.index(b"name")).decode() if b"name" in root else None
+    return name, groups[b"<link"], groups[b"<joint"]
+
+
+def _values(text: bytes) -> tuple[_Values, bytes]:
+    """The attribute values of ``text`` (in double quotes: with no character data, comment or
+    single-quoted value, every double quote opens or closes one) and the text with each value
+    emptied; _Doubt for a value holding a line end or tab, which XML reads as a space."""
+    codes = np.frombuffer(text, dtype=np.uint8)
+    quotes = np.flatnonzero(codes == 34)
+    if len(quotes) % 2:
+        raise _Doubt
+    starts, ends = quotes[0::2] + 1, quotes[1::2]
+    if np.any(np.searchsorted(quotes, np.flatnonzero(codes < 32)) % 2):  # \t, \n or \r in a value
+        raise _Doubt  # (expat lets no other control character through)
+    bounds = np.empty(2 * len(starts) + 2, dtype=np.int64)  # outside, inside, outside, ...
+    bounds[0], bounds[1:-1:2], bounds[2:-1:2], bounds[-1] = 0, starts, ends, len(codes)
+    outside = np.ones(len(bounds) - 1, dtype=bool)
+    outside[1::2] = False
+    return _Values(codes, starts, ends), codes[np.repeat(outside, np.diff(bounds))].tobytes()
+
+
+def _grouped(blank: bytes, begins, stops, lows, highs, values: _Values) -> dict[bytes, _Rows]:
+    """Signature → its elements (:class:`_Rows`) of the elements spanning ``begins:stops`` of
+    the emptied text, whose values are ``values[lows:highs]``."""
+    found: dict[bytes, tuple[list[int], list[int]]] = {}
+    spans = zip(begins.tolist(), stops.tolist(), lows.tolist())
+    for index, (begin, end, low) in enumerate(spans):
+        indices, firsts = found.setdefault(blank[begin:end], ([], []))
+        indices.append(index)
+        firsts.append(low)
+    return {
+        signature: _Rows(_tree(signature), indices, np.array(firsts, dtype=np.int64), values)
+        for signature, (indices, firsts) in found.items()
     }
-    inertia = from_six(**six)
-    check_inertia_range(where, inertia)
-    has_rpy = any(rpy)
-    return Inertial.read(
-        mass,
-        xyz,
-        inertia,
-        rotation=rpy_matrix(rpy) if has_rpy else None,
-        rpy=tuple(float(a) for a in rpy) if has_rpy else None,
-        element=inertial,
-    )
 
 
-def _geoms(where: Where, link_element, tag: str, package_paths) -> list[Geom]:
+def _alike(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values) -> dict[bytes, _Rows] | None:
+    """The one group of :func:`_grouped` when the elements are alike (a generated file): the
+    same emptied text at even steps through it, their values at even steps through the values;
+    None otherwise. The texts are compared as rows of one strided view of the bytes."""
+    count = len(begins)
+    if count < 2:
+        return None
+    length, step, first = int(stops[0] - begins[0]), int(begins[1] - begins[0]), int(lows[0])
+    width, spacing = int(highs[0] - lows[0]), int(lows[1] - lows[0])
+    if (
+        np.any(stops - begins != length)
+        or np.any(np.diff(begins) != step)
+        or np.any(highs - lows != width)
+        or np.any(np.diff(lows) != spacing)
+        or step < length
+    ):
+        return None
+    texts = np.lib.stride_tricks.as_strided(codes[int(begins[0]) :], shape=(count, length), strides=(step, 1))
+    if not np.all(texts == texts[0]):
+        return None
+    signature = blank[int(begins[0]) : int(stops[0])]
+    firsts = first + spacing * np.arange(count, dtype=np.int64)
+    return {signature: _Rows(_tree(signature), list(range(count)), firsts, values)}
+
+
+def _named(codes: np.ndarray, at: np.ndarray, opening: bytes) -> np.ndarray:
+    """Which of the tags starting at ``at`` open with ``opening`` (``<`` and a name) and that
+    name alone."""
+    size = len(opening)
+    inside = at + size < len(codes)
+    chosen = inside.copy()
+    for k, byte in enumerate(opening):
+        chosen[inside] &= codes[at[inside] + k] == byte
+    chosen[inside] &= np.isin(codes[at[inside] + size], np.frombuffer(bytes(_NAME_ENDS), dtype=np.uint8))
+    return chosen
+
+
+def _starts(blank: bytes, at: int, opening: bytes) -> bool:
+    """Does the tag at ``at`` open with ``opening`` (``<`` and a name) and that name alone?"""
+    return blank.startswith(opening, at) and blank[at + len(opening)] in _NAME_ENDS
+
+
+_NAME_ENDS = frozenset(b" \t\n\r>/")
+
+
+def _tree(signature: bytes) -> _Node:
+    """The element tree a signature describes (read as the file is: names as written)."""
+    return _Node.of(robot_xml.parse("(signature)", signature), [0])
+
+
+# --- the groups of an element tree --------------------------------------------------------------
+
+
+def _tree_groups(root, alike: bool) -> tuple[dict, dict]:
+    """The top-level links and joints of the element tree ``root`` as groups (key →
+    :class:`_Rows`): elements of the same signature together when ``alike``, else each its own
+    group, in document order."""
     found = []
-    for number_, element in enumerate(link_element.all(tag)):
-        label = f"{tag}[{number_}]"
-        pose = _origin(where, element, label)
+    for tag in ("link", "joint"):
+        texts: list[bytes] = []
+        keyed: dict = {}
+        for index, element in enumerate(root.all(tag)):
+            shape = []
+            first = len(texts)
+            for each in element.iter():
+                attributes = each.attrib
+                shape.append((each.tag, tuple(attributes), len(each.children)))
+                texts.extend(value.encode() for value in attributes.values())
+            key = tuple(shape) if alike else index
+            keyed.setdefault(key, (element, [], [], []))
+            keyed[key][1].append(index)
+            keyed[key][2].append(first)
+            keyed[key][3].append(element)
+        lengths = np.array([len(text) for text in texts], dtype=np.int64)
+        ends = np.cumsum(lengths)
+        values = _Values(np.frombuffer(b"".join(texts), dtype=np.uint8), ends - lengths, ends)
+        found.append(
+            {
+                key: _Rows(
+                    _Node.of(element, [0]), indices, np.array(firsts, dtype=np.int64), values, elements
+                )
+                for key, (element, indices, firsts, elements) in keyed.items()
+            }
+        )
+    return found[0], found[1]
+
+
+# --- columns of values --------------------------------------------------------------------------
+
+
+class _Values:
+    """A document's attribute values, in document order: value k is ``codes[starts[k]:ends[k]]``."""
+
+    def __init__(self, codes: np.ndarray, starts: np.ndarray, ends: np.ndarray):
+        self.codes, self.starts, self.ends = codes, starts, ends
+
+    def __len__(self) -> int:
+        return len(self.starts)
+
+    def one(self, k: int) -> bytes:
+        return self.codes[self.starts[k] : self.ends[k]].tobytes()
+
+    def texts(self, which: np.ndarray) -> list[bytes]:
+        """The values of the indices ``which``."""
+        found = self._rows(which)
+        if found is None:
+            return [b""] * len(which)
+        return found.view(f"S{found.shape[1]}").reshape(-1).tolist()
+
+    def distinct(self, which: np.ndarray) -> tuple[list[bytes], np.ndarray]:
+        """The distinct values of the indices ``which`` (in order of first appearance) and where
+        each index's value is among them."""
+        found = self._rows(which)
+        if found is None:
+            return ([b""] if len(which) else []), np.zeros(len(which), dtype=int)
+        if np.all(found == found[0]):  # one text throughout (a generated file's column)
+            return [found[0].tobytes().rstrip(b"\0")], np.zeros(len(which), dtype=int)
+        texts = found.view(f"S{found.shape[1]}").reshape(-1).tolist()
+        places: dict[bytes, int] = {}
+        inverse = np.array([places.setdefault(text, len(places)) for text in texts], dtype=int)
+        return list(places), inverse
+
+    def _rows(self, which: np.ndarray) -> np.ndarray | None:
+        """The values of the indices ``which`` as rows of a (k, width) array of bytes, each
+        padded with NULs (no value holds one: XML has none); None when all are empty."""
+        starts, lengths = self.starts[which], self.ends[which] - self.starts[which]
+        width = int(lengths.max()) if len(lengths) else 0
+        if width == 0:
+            return None
+        codes = self.codes
+        if len(codes) < width + int(starts.max()):
+            codes = np.concatenate([codes, np.zeros(width, dtype=np.uint8)])
+        windows = np.lib.stride_tricks.as_strided(
+            codes, shape=(len(codes) - width + 1, width), strides=(1, 1)
+        )
+        found = windows[starts]
+        found[np.arange(width) >= lengths[:, None]] = 0
+        return found
+
+
+class _Node:
+    """One element of a signature: ``tag``, ``at`` (attribute name → place among the element's
+    values) and its child elements."""
+
+    __slots__ = ("tag", "at", "children")
+
+    def __init__(self, tag: str, at: dict[str, int]):
+        self.tag, self.at, self.children = tag, at, []
+
+    @staticmethod
+    def of(element, count: list[int]) -> _Node:
+        """The signature of an XML ``element``, its values counted from ``count[0]`` on (in
+        document order: each element's attributes as written, then its children's)."""
+        names = list(element.attrib)
+        node = _Node(element.tag, {name: count[0] + k for k, name in enumerate(names)})
+        count[0] += len(names)
+        node.children = [_Node.of(each, count) for each in element.children]
+        return node
+
+    def child(self, tag: str) -> _Node | None:
+        for each in self.children:
+            if each.tag == tag:
+                return each
+        return None
+
+
+class _Rows:
+    """The elements of one signature (``top``): ``indices`` (each one's place among the links or
+    joints), ``firsts`` (where each one's values start in ``values``), the XML ``elements``
+    when read from a tree, and :meth:`where` each row is in messages."""
+
+    def __init__(self, top: _Node, indices: list[int], firsts: np.ndarray, values: _Values, elements=None):
+        self.top, self.indices, self.firsts, self.values, self.elements = (
+            top,
+            indices,
+            firsts,
+            values,
+            elements,
+        )
+        self.path, self.label = "", lambda k: None
+
+    def __len__(self) -> int:
+        return len(self.indices)
+
+    def where(self, k: int) -> Where:
+        """Where row ``k`` is, for messages (its label worked out only when shown)."""
+        return Where(self.path, lambda: self.label(k))
+
+    def column(self, place: int | None, default: bytes) -> list[bytes]:
+        """The text at ``place`` of each element (``default`` where the attribute is not written)."""
+        if place is None:
+            return [default] * len(self)
+        return self.values.texts(self.firsts + place)
+
+    def words(self, place: int | None) -> list[str]:
+        """The text at ``place`` of each element as str (``""`` where the attribute is not written)."""
+        texts = self.column(place, b"")
+        joined = b"\n".join(texts)
+        if joined.count(b"\n") == len(texts) - 1:  # (one decoding for all)
+            return joined.decode().split("\n")
+        return [text.decode() for text in texts]
+
+    def distinct(self, place: int | None, default: bytes) -> tuple[list[bytes], np.ndarray]:
+        """The distinct texts at ``place`` (``default`` where not written) and where each row's is."""
+        if place is None:
+            return [default], np.zeros(len(self), dtype=int)
+        return self.values.distinct(self.firsts + place)
+
+    def numbers(self, place: int | None, default: bytes | None, count, what: str) -> np.ndarray:
+        """(k, 3 or ``count``) numbers at ``place`` (``default`` where not written; None: the
+        attribute is needed), as :func:`rbi.formats.robot.numbers` reads each text (``count`` (1,
+        3): one number stands for three); InputError, worded for the first wrong row."""
+        if place is None and default is None:
+            raise self.where(0).error(f"{what}: missing")
+        distinct, inverse = self.distinct(place, default)
+        for each in (count,) if isinstance(count, int) else (3, 1):
+            try:
+                return np.repeat(_numbers(distinct, each), 3 // each if count == (1, 3) else 1, axis=1)[
+                    inverse
+                ]
+            except _Doubt:
+                pass
+        texts = self.column(place, default)
+        return np.array([self._numbers(k, text.decode(), count, what) for k, text in enumerate(texts)])
+
+    def _numbers(self, k: int, text: str, count, what: str) -> list[float]:
+        found = numbers(self.where(k), text, what, count)
+        return found * 3 if len(found) == 1 and not isinstance(count, int) else found
+
+
+def _numbers(texts: list[bytes], count: int) -> np.ndarray:
+    """(len(texts), count) floats of texts each of ``count`` plain finite decimals (what
+    :func:`rbi.formats.robot.numbers` reads: signs, digits, a point and an exponent, apart by
+    spaces), none subnormal; _Doubt otherwise."""
+    if not texts:
+        return np.empty((0, count))
+    joined = b"\n".join(texts)
+    if _PLAIN.fullmatch(joined) is None:
+        raise _Doubt
+    codes = np.frombuffer(joined, dtype=np.uint8)
+    blank = (codes == 32) | (codes == 10)
+    starts = ~blank
+    starts[1:] &= blank[:-1]
+    per_text = np.bincount(np.cumsum(codes == 10)[starts], minlength=len(texts))
+    if len(per_text) != len(texts) or np.any(per_text != count):
+        raise _Doubt
+    try:
+        values = np.array(list(map(float, joined.split())), dtype=float).reshape(-1, count)
+    except ValueError:  # "1-2", "1e": characters of numbers that make none
+        raise _Doubt from None
+    if not np.all(np.isfinite(values)) or np.any((values != 0) & (np.abs(values) < SMALLEST_NORMAL)):
+        raise _Doubt
+    return values
+
+
+# --- links --------------------------------------------------------------------------------------
+
+
+def _links(path: str, groups: dict, geometry: bool, packages) -> dict:
+    """The links of ``groups`` (key → :class:`_Rows`) as the :class:`LinkColumns` fields they
+    give: names, inertials and geometry."""
+    if not groups:
+        raise InputError(f"{path}: no <link>: a URDF needs at least one (urdfdom and pybullet refuse it)")
+    n = sum(len(rows) for rows in groups.values())
+    names: list[str] = [""] * n
+    inertials = _Inertials(n)
+    geoms: list[GeomColumn] = []
+    for rows in groups.values():
+        words = rows.words(rows.top.at.get("name"))
+        for k, word in enumerate(words):
+            if not word:
+                line = rows.elements[k].line if rows.elements else None
+                raise InputError(
+                    f"{path}: link[{rows.indices[k]}] (line {line}): name: missing; every link needs a "
+                    "name (urdfdom and pybullet refuse it)"
+                )
+            names[rows.indices[k]] = word
+        rows.path, rows.label = path, lambda k, rows=rows, words=words: Link(rows.indices[k], words[k]).label
+        inertial = rows.top.child("inertial")
+        if inertial is not None:
+            inertials.read(rows, inertial)
+        if geometry:
+            geoms += _geoms(rows, "collision", packages) + _geoms(rows, "visual", packages)
+    if len(set(names)) != n:
+        check_unique_names(path, [Link(index, name) for index, name in enumerate(names)], "link")
+    return {"names": names, "geoms": geoms, **vars(inertials)}
+
+
+def _poses(rows: _Rows, origin: _Node | None, what: str) -> tuple[np.ndarray, np.ndarray]:
+    """Each row's ``origin`` element (``what``: whose) as rotations (k, 3, 3) and translations
+    (k, 3); the identity where there is none."""
+    at = {} if origin is None else origin.at
+    xyz = rows.numbers(at.get("xyz"), b"0 0 0", 3, f"{what}/origin: xyz")
+    rpy = _angles(
+        rows, rows.numbers(at.get("rpy"), b"0 0 0", 3, f"{what}/origin: rpy"), f"{what}/origin: rpy"
+    )
+    R = np.empty((len(rows), 3, 3))
+    R[:] = np.eye(3)
+    for k in np.flatnonzero(np.any(rpy != 0, axis=1)).tolist():
+        R[k] = rpy_matrix(rpy[k].tolist())
+    return R, xyz
+
+
+def _angles(rows: _Rows, rpy: np.ndarray, what: str) -> np.ndarray:
+    """``rpy`` (k, 3) once :func:`rbi.formats.robot.angles` takes each row."""
+    for k in np.flatnonzero(np.any(np.abs(rpy) > MAX_ANGLE_RAD, axis=1)).tolist():
+        angles(rows.where(k), rpy[k].tolist(), what)
+    return rpy
+
+
+class _Inertials:
+    """The links' inertials as :class:`rbi.formats.robot.LinkColumns` holds them, for ``n`` links."""
+
+    def __init__(self, n: int):
+        self.declared = np.zeros(n, dtype=bool)
+        self.masses = np.zeros(n)
+        self.coms = np.zeros((n, 3))
+        self.inertias = np.zeros((n, 3, 3))
+        self.written = np.zeros((n, 3, 3))
+        self.turned: dict[int, Inertial] = {}
+
+    def read(self, rows: _Rows, inertial: _Node) -> None:
+        """Each row's ``<inertial>``, into the columns."""
+        origin = inertial.child("origin")
+        at = {} if origin is None else origin.at
+        com = rows.numbers(at.get("xyz"), b"0 0 0", 3, "inertial/origin: xyz")
+        rpy = _angles(rows, rows.numbers(at.get("rpy"), b"0 0 0", 3, "inertial/origin: rpy"), "inertial rpy")
+        mass, block = inertial.child("mass"), inertial.child("inertia")
+        if mass is None:
+            raise rows.where(0).error("inertial/mass: missing")
+        masses = rows.numbers(mass.at.get("value"), None, 1, "inertial/mass: value")[:, 0]
+        if block is None:
+            raise rows.where(0).error("inertial/inertia: missing")
+        six = {
+            key: rows.numbers(block.at.get(key), None, 1, f"inertial/inertia: {key}")[:, 0]
+            for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+        }
+        ixx, iyy, izz, ixy, ixz, iyz = six.values()
+        written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
+        for k in np.flatnonzero(np.any(np.abs(written) >= 1e300, axis=(1, 2))).tolist():
+            check_inertia_range(rows.where(k), written[k])  # (a sum of smaller entries cannot overflow)
+        where = np.array(rows.indices, dtype=int)
+        self.declared[where] = True
+        self.masses[where], self.coms[where] = masses, com
+        self.inertias[where] = self.written[where] = written
+        for k in np.flatnonzero(np.any(rpy != 0, axis=1)).tolist():
+            turn = tuple(rpy[k].tolist())
+            found = Inertial.read(
+                float(masses[k]), com[k].tolist(), written[k], rotation=rpy_matrix(turn), rpy=turn
+            )
+            row = rows.indices[k]
+            self.turned[row] = found
+            self.coms[row] = found.properties.center_of_mass
+            self.inertias[row] = found.properties.inertia_about_com
+
+
+def _geoms(rows: _Rows, tag: str, packages) -> list[GeomColumn]:
+    """The rows' ``tag`` (collision or visual) geoms, one column per element."""
+    found = []
+    for number, element in enumerate(each for each in rows.top.children if each.tag == tag):
+        label = f"{tag}[{number}]"
+        R, t = _poses(rows, element.child("origin"), label)
         holder = element.child("geometry")
-        shape = None
-        if holder is not None:
-            shape = next(iter(holder.children), None)
-        if shape is None:
-            raise where.error(f"{label}/geometry: missing (give a box, cylinder, sphere, capsule or mesh)")
-        found.append(_geom(where, shape, pose, f"{label}/geometry/{shape.tag}", package_paths))
+        if holder is None or not holder.children:
+            raise rows.where(0).error(
+                f"{label}/geometry: missing (give a box, cylinder, sphere, capsule or mesh)"
+            )
+        shape = holder.children[0]
+        label = f"{label}/geometry/{shape.tag}"
+        column = GeomColumn(tag, label, shape.tag, rows.indices, R, t)
+        if shape.tag == "mesh":
+            column.meshes = _meshes(rows, shape, label, packages)
+        else:
+            column.sizes = _sizes(rows, shape, label)
+        found.append(column)
     return found
 
 
-def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
-    kind = shape.tag
-    if kind == "box":
-        size = numbers(where, shape.get("size"), f"{label}: size", 3)
-        positive(where, size, f"{label}: size", allow_zero=True)
-        return Geom("box", tuple(size), pose, label)
-    if kind in ("cylinder", "capsule"):
-        radius = number(where, shape.get("radius"), f"{label}: radius")
-        length = number(where, shape.get("length"), f"{label}: length")
-        positive(where, (radius, length), f"{label}: radius and length", allow_zero=True)
-        return Geom(kind, (radius, length), pose, label)
-    if kind == "sphere":
-        radius = number(where, shape.get("radius"), f"{label}: radius")
-        positive(where, (radius,), f"{label}: radius", allow_zero=True)
-        return Geom("sphere", (radius,), pose, label)
-    if kind == "mesh":
-        filename = shape.get("filename")
+def _meshes(rows: _Rows, shape: _Node, label: str, packages) -> list[tuple]:
+    """(file, scale) of each row's mesh."""
+    filenames = rows.words(shape.at.get("filename"))
+    for k, filename in enumerate(filenames):
         if not filename:
-            raise where.error(f"{label}: filename: missing")
-        scale = numbers(where, shape.get("scale", "1 1 1"), f"{label}: scale", (1, 3))
-        scale = scale * 3 if len(scale) == 1 else scale
-        mesh = resolve_mesh(
-            where.path,
-            filename,
-            f"{where.path}: {where.label}: {label}: {short(filename, 1000)}",
-            package_paths,
-        )
-        return Geom("mesh", (), pose, label, mesh_file=mesh, mesh_scale=np.array(scale, dtype=float))
-    return Geom(kind, (), pose, label)
+            raise rows.where(k).error(f"{label}: filename: missing")
+    scales = rows.numbers(shape.at.get("scale"), b"1 1 1", (1, 3), f"{label}: scale")
+    found = []
+    for k, filename in enumerate(filenames):
+        where = rows.where(k)
+        shown = f"{where.path}: {where.label}: {label}: {short(filename, 1000)}"
+        found.append((resolve_mesh(where.path, filename, shown, packages), scales[k].copy()))
+    return found
 
 
-def _joints(model: RobotModel, root) -> None:
-    path = model.path
-    by_name = {link.name: link for link in model.links if link.name is not None}
-    for index, element in enumerate(root.all("joint")):
-        name = element.get("name")
-        where = Where(path, lambda index=index, name=name: _joint_label(index, name))
-        if not name:
-            raise where.error("name: missing; every joint needs a name (urdfdom refuses it)")
-        parent, child = element.child("parent"), element.child("child")
-        if parent is None or child is None:
-            raise where.error("needs <parent link=…/> and <child link=…/>")
-        parent_name, child_name = parent.get("link"), child.get("link")
-        for role, link_name in (("parent", parent_name), ("child", child_name)):
-            if link_name not in by_name:
-                raise where.error(f"{role}: no link named {short(link_name)!r}")
-        link = by_name[child_name]
-        if link.parent is not None:
+def _sizes(rows: _Rows, shape: _Node, label: str) -> np.ndarray:
+    """Each row's shape size (k, m) in m; m = 0 for a kind with no volume."""
+    names = _SHAPES.get(shape.tag, ())
+    if not names:
+        return np.empty((len(rows), 0))
+    count = 3 if shape.tag == "box" else 1
+    default = b"" if count == 3 else None  # (a box's missing size is 0 numbers, not missing)
+    sizes = np.concatenate(
+        [rows.numbers(shape.at.get(name), default, count, f"{label}: {name}") for name in names], axis=1
+    )
+    what = f"{label}: {' and '.join(names)}"
+    for k in np.flatnonzero(np.any(sizes < 0, axis=1)).tolist():
+        positive(rows.where(k), sizes[k].tolist(), what, allow_zero=True)
+    return sizes
+
+
+# --- joints -------------------------------------------------------------------------------------
+
+
+def _joints(path: str, names: list[str], groups: dict) -> dict:
+    """The joints of ``groups`` (key → :class:`_Rows`) as the :class:`LinkColumns` fields they
+    give, each in its child link's row."""
+    n = len(names)
+    rows_of = {name: row for row, name in enumerate(names)}
+    parents, joint_names, kinds, efforts = [-1] * n, [""] * n, [None] * n, [None] * n
+    rotations, translations, axes = np.empty((n, 3, 3)), np.zeros((n, 3)), np.zeros((n, 3))
+    rotations[:] = np.eye(3)
+    for rows in groups.values():
+        at, found = _joint_links(path, names, rows_of, parents, rows)
+        words = rows.words(rows.top.at.get("type"))
+        for k, word in enumerate(words):
+            if word not in MOVING:
+                raise rows.where(k).error(
+                    f"type: {short(word)!r} is not a URDF joint type (revolute, continuous, prismatic, "
+                    "fixed, floating, planar)"
+                )
+        motions = [MOVING[word] for word in words]
+        rotations[at], translations[at] = _poses(rows, rows.top.child("origin"), "joint")
+        axes[at] = _axes(rows, rows.top.child("axis"), motions)
+        limit = rows.top.child("limit")
+        for row, k, name in zip(at, range(len(rows)), found):
+            joint_names[row], kinds[row] = name, motions[k]
+        if limit is not None and "effort" in limit.at:
+            magnitudes = np.abs(rows.numbers(limit.at["effort"], None, 1, "limit: effort")[:, 0]).tolist()
+            for row, effort in zip(at, magnitudes):
+                efforts[row] = effort
+    order = _one_tree(parents)
+    if len({name for name in joint_names if name}) != sum(map(bool, joint_names)) or order is None:
+        _refuse_tree(path, names, parents, joint_names)
+    return {
+        "parents": parents,
+        "order": order,
+        "rotations": rotations,
+        "translations": translations,
+        "joint_names": joint_names,
+        "joint_kinds": kinds,
+        "axes": axes,
+        "efforts": efforts,
+    }
+
+
+def _joint_links(path: str, names: list[str], rows_of: dict, parents: list[int], rows: _Rows):
+    """The rows of the joints' child links (each given its parent in ``parents``) and the
+    joints' names; InputError for a joint with no name, no parent or child, or a child that
+    has a parent already."""
+    top = rows.top
+    words = rows.words(top.at.get("name"))
+    shown = words if "name" in top.at else [None] * len(rows)
+    rows.path = path
+    rows.label = lambda k: (
+        f"joint[{rows.indices[k]}]" + (f" ({short(shown[k])})" if shown[k] is not None else "")
+    )
+    parent, child = top.child("parent"), top.child("child")
+    ends = [rows.words(None if node is None else node.at.get("link")) for node in (parent, child)]
+    found = [[rows_of.get(name, -1) for name in names_of] for names_of in ends]
+    for k, (word, above, row) in enumerate(zip(words, *found)):
+        if not word or parent is None or child is None or min(above, row) < 0 or parents[row] != -1:
+            where = rows.where(k)
+            if not word:
+                raise where.error("name: missing; every joint needs a name (urdfdom refuses it)")
+            if parent is None or child is None:
+                raise where.error("needs <parent link=…/> and <child link=…/>")
+            for role, link_names in zip(("parent", "child"), ends):
+                if link_names[k] not in rows_of:
+                    raise where.error(f"{role}: no link named {short(link_names[k])!r}")
             raise where.error(
-                f"child: link {short(child_name)!r} is already the child of link {short(link.parent)!r}: "
-                "two joints close a loop, and a URDF's links form a tree (model a closed chain in SDF or MJCF)"
+                f"child: link {short(ends[1][k])!r} is already the child of link "
+                f"{short(names[parents[row]])!r}: two joints close a loop, and a URDF's links form a "
+                "tree (model a closed chain in SDF or MJCF)"
             )
-        kind = element.get("type") or ""
-        if kind not in MOVING:
-            raise where.error(
-                f"type: {short(kind)!r} is not a URDF joint type (revolute, continuous, prismatic, "
-                "fixed, floating, planar)"
-            )
-        link.parent = parent_name
-        link.origin = _origin(where, element, "joint")
-        motion_kind = MOVING[kind]
-        axis_vector = _axis(where, element.child("axis"), motion_kind in UNIT_AXIS_KINDS)
-        limit = element.child("limit")
-        effort = None
-        if limit is not None and limit.get("effort") is not None:
-            effort = abs(number(where, limit.get("effort"), "limit: effort"))
-        link.motions = [Motion(name, motion_kind, axis_vector, np.zeros(3), effort_limit=effort)]
+        parents[row] = above
+    at = found[1]
+    return at, words
+
+
+def _axes(rows: _Rows, axis: _Node | None, motions: list[str]) -> np.ndarray:
+    """Each joint's axis (k, 3) in its child link's frame: ``xyz`` as written (default 1 0 0),
+    a unit vector for revolute and prismatic joints (worked out once per distinct text)."""
+    place = None if axis is None else axis.at.get("xyz")
+    values = rows.numbers(place, b"1 0 0", 3, "axis: xyz")
+    turned = np.array([motion in UNIT_AXIS_KINDS for motion in motions], dtype=bool)
+    if not np.any(turned):
+        return values
+    texts = rows.distinct(place, b"1 0 0")[1][turned]
+    at = np.flatnonzero(turned)
+    first = np.zeros(int(texts.max()) + 1, dtype=int)
+    first[texts[::-1]] = at[::-1]  # each text's first row (the last assignment stands)
+    units = np.empty((len(first), 3))
+    for d in np.unique(texts).tolist():  # each distinct text's unit vector worked out once
+        units[d] = unit(rows.where(int(first[d])), values[first[d]], "axis: xyz")
+    values[at] = units[texts]
+    return values
+
+
+def _one_tree(parents: list[int]) -> list[int] | None:
+    """The links' rows parents first, as :func:`rbi.formats.robot.depth_first` orders them, when
+    they form one tree (one root, every link reached from it; ``parents``: each link's parent
+    row, -1 for none); None when they do not."""
+    n = len(parents)
+    if parents.count(-1) != 1:
+        return None
+    order = depth_first([n if parent < 0 else parent for parent in parents], n)
+    return order if len(order) == n else None
+
+
+def _refuse_tree(path: str, names: list[str], parents: list[int], joint_names: list[str]) -> None:
+    """InputError for joints that share a name, links no joint joins to the one root, or
+    joints that form a loop (``parents``: each link's parent row, -1 for none)."""
+    model = RobotModel(path, "urdf", None)
+    model.links = [
+        Link(row, name, motions=[Motion(joint, "", None, None)])
+        for row, (name, joint) in enumerate(zip(names, joint_names))
+    ]
     check_unique_joint_names(model, "urdfdom")
-    check_tree(model)
-
-
-_UNIT_AXES: dict[str, np.ndarray] = {}
-"""Unit axes already worked out, by the ``xyz`` text as written (a large file repeats a few;
-short texts only, at most 1,024 of them)."""
-
-
-def _axis(where: Where, axis_element, to_unit: bool) -> np.ndarray:
-    """A joint's axis (its child link's frame): ``xyz`` as written (default 1 0 0), made a unit
-    vector when ``to_unit`` (revolute and prismatic joints); a new array each call."""
-    if axis_element is None:
-        return unit(where, [1, 0, 0], "axis: xyz") if to_unit else np.array([1, 0, 0], float)
-    text = axis_element.get("xyz", "1 0 0")
-    axis = numbers(where, text, "axis: xyz", 3)
-    if not to_unit:
-        return np.array(axis, float)
-    known = _UNIT_AXES.get(text)
-    if known is None:
-        known = unit(where, axis, "axis: xyz")
-        if len(text) <= 64 and len(_UNIT_AXES) < 1024:
-            _UNIT_AXES[text] = known
-    return known.copy()
-
-
-def _joint_label(index: int, name: str | None) -> str:
-    return f"joint[{index}]" + (f" ({short(name)})" if name is not None else "")
-
-
-def check_tree(model: RobotModel) -> None:
-    """InputError for links no joint joins to the one root, or joints that form a loop."""
-    by_name = {link.name: link for link in model.links}
-    roots = [link for link in model.links if link.parent is None]
+    roots = [row for row, parent in enumerate(parents) if parent < 0]
     if len(roots) > 1:
-        names = ", ".join(repr(short(link.name)) for link in roots[:4]) + (", ..." if len(roots) > 4 else "")
+        shown = ", ".join(repr(short(names[row])) for row in roots[:4]) + (", ..." if len(roots) > 4 else "")
         raise InputError(
-            f"{model.path}: {len(roots)} root links ({names}): no joint joins them; a URDF has one root "
+            f"{path}: {len(roots)} root links ({shown}): no joint joins them; a URDF has one root "
             "link that every other hangs from (urdfdom and pybullet refuse it)"
         )
-    children: dict[str | None, list[str]] = {}
-    for link in model.links:
-        children.setdefault(link.parent, []).append(link.name)
-    reached, queue = 0, list(children.get(None, []))
-    while queue:  # one pass from the root: every link reached means no loop
-        reached += 1
-        queue.extend(children.get(queue.pop(), []))
-    if reached == len(model.links):
-        return
-    for link in model.links:  # a loop: name the first link whose chain of parents runs into it
-        seen = set()
-        at = link
-        while at.parent is not None:
-            if at.name in seen:
+    for row, link in enumerate(model.links):  # a loop: the first link whose chain of parents runs into it
+        seen, at = set(), row
+        while parents[at] >= 0:
+            if at in seen:
                 raise InputError(
-                    f"{model.path}: {link.label}: the joints form a loop through link "
-                    f"{short(at.name)!r}; a URDF's links form a tree"
+                    f"{path}: {link.label}: the joints form a loop through link {short(names[at])!r}; a "
+                    "URDF's links form a tree"
                 )
-            seen.add(at.name)
-            at = by_name[at.parent]
+            seen.add(at)
+            at = parents[at]
+
+
+def attach_elements(model: RobotModel) -> None:
+    """The XML elements of a URDF model (its links are made from columns, which hold none): the
+    document parsed if it was not, each link given its ``<link>`` and its inertial its
+    ``<inertial>`` (their spans are where ``rbi audit --fix`` edits)."""
+    document = model.document
+    if model.format != "urdf" or document is None:
+        return
+    if document.root is None:
+        document.root = robot_xml.parse(model.path, document.text)
+    for link, element in zip(model.links, document.root.all("link")):
+        link.element = element
+        if link.inertial is not None:
+            link.inertial = dataclasses.replace(link.inertial, element=element.child("inertial"))

@@ -11,8 +11,8 @@ over the geometry's size (its bounding box's diagonal). The flags (``unphysical`
 (:data:`ERROR_RATIO`, :data:`WARNING_RATIO`, :data:`SOLID_DENSITY_RANGE`, :data:`COM_MARGIN`)
 are tabled in docs/audit.md ("What it checks").
 
-Every model is audited one way, on arrays of its links (:class:`_Rows`: a URDF read in bulk
-gives them as columns, the careful readers' links are laid into them): screens on stacks clear
+Every model is audited one way, on arrays of its links (:class:`_Rows`: a URDF's reader
+gives them as columns, the SDF and MJCF readers' links are laid into them): screens on stacks clear
 the links with nothing to flag, and only the others are audited one by one.
 """
 
@@ -412,7 +412,7 @@ class _Rows(NamedTuple):
     ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) as the file wrote
     them), which links a joint ``moving`` moves, the ``geoms`` as columns, and ``carried`` (n,):
     does a link below it have mass. ``link(row)`` and ``links()`` make the :class:`Link` values
-    (from :class:`LinkColumns`, or the careful readers' own)."""
+    (from :class:`LinkColumns`, or the SDF and MJCF readers' own)."""
 
     declared: np.ndarray
     masses: np.ndarray

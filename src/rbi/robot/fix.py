@@ -18,7 +18,7 @@ from rbi.errors import InputError
 from rbi.files.safe import shown
 from rbi.formats.inertial_xml import inertial_text, xml_comment
 from rbi.formats.robot_xml import _tag_end
-from rbi.formats.urdf_bulk import attach_elements
+from rbi.formats.urdf import attach_elements
 from rbi.robot.audit import AuditReport, LinkAudit
 
 FIXED_CODES = ("unphysical", "placeholder", "mismatch", "massless")
@@ -62,7 +62,7 @@ class FixPlan:
 def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
     """The fixed copy of the audited file: every link with an error-level flag that the
     geometry can fix gets the geometry's inertial."""
-    attach_elements(report.model)  # a URDF read in bulk has its elements parsed now
+    attach_elements(report.model)  # a URDF's links (made from columns) get their elements now
     document = report.model.document
     plan = FixPlan()
     text = document.text

@@ -1,6 +1,7 @@
-"""The URDF reader in bulk (issue 25) against the careful one (rbi.formats.urdf over
-rbi.formats.robot_xml's tree): the same audit, number for number, where it reads a file, and
-no reading at all (None: the careful reader words the refusal) where that reader refuses one."""
+"""The URDF reader (rbi.formats.urdf): its groups taken from a plain text (read_urdf_text) and
+from the parsed element tree (read_urdf) give the same audit, number for number; a model's
+columns audit as its links do; a refusal is worded for the first thing wrong in the file, in
+the words urdfdom's readers know (the messages of rbi's reader of one element at a time)."""
 
 from __future__ import annotations
 
@@ -12,8 +13,7 @@ import pytest
 from rbi.errors import InputError
 from rbi.formats import robot_xml
 from rbi.formats.robot_files import read_robot
-from rbi.formats.urdf import read_urdf
-from rbi.formats.urdf_bulk import attach_elements, read_urdf_bulk
+from rbi.formats.urdf import attach_elements, read_urdf, read_urdf_text
 from rbi.robot.audit import audit_model
 
 LINK = (
@@ -69,7 +69,11 @@ def _swap(old: str, new: str) -> str:
 
 
 def _careful(path: str, data: bytes):
-    return read_urdf(robot_xml.read_xml(path, data), None, True)
+    """The model read from the element tree, its links made (so the audit reads them, not the
+    columns)."""
+    model = read_urdf(robot_xml.read_xml(path, data), None, True)
+    assert model.links and model.in_columns is None
+    return model
 
 
 def _written(tmp_path, text: str) -> tuple[str, bytes]:
@@ -80,10 +84,10 @@ def _written(tmp_path, text: str) -> tuple[str, bytes]:
 
 
 def _read_alike(tmp_path, text: str):
-    """``text`` written as a URDF and read in bulk, which must read it and audit it as the
-    careful reader does: (path, bytes, the bulk reader's model)."""
+    """``text`` written as a URDF and read from its plain text, which must read it and audit it
+    as the element tree's reading does: (path, bytes, the model read from the text)."""
     path, data = _written(tmp_path, text)
-    bulk = read_urdf_bulk(path, data)
+    bulk = read_urdf_text(path, data)
     assert bulk is not None
     assert _as_json(bulk) == _as_json(_careful(path, data))
     return path, data, bulk
@@ -134,65 +138,160 @@ def _as_json(model) -> str:
             '<link name="l2">', '<link name="l2"><collision><geometry><plane a="b"/></geometry></collision>'
         ),
         _swap('"l1"', '"\u00e9l\u00e8ve"').replace('link="l1"', 'link="\u00e9l\u00e8ve"'),
+        _swap('ixx="0.101"', 'ixx="1e300"'),  # read, and checked alone: 9 such entries could overflow
     ],
 )
-def test_the_bulk_reader_reads_what_the_careful_one_reads(tmp_path, text):
+def test_the_plain_text_reads_as_the_element_tree_reads(tmp_path, text):
     path, data, bulk = _read_alike(tmp_path, text)
-    attach_elements(bulk)  # what --fix edits: the careful tree's elements
-    careful = _careful(path, data)
-    for mine, theirs in zip(bulk.links, careful.links):
-        assert (mine.element.start, mine.element.end) == (theirs.element.start, theirs.element.end)
-        if theirs.inertial is not None:
-            assert mine.inertial.element.start == theirs.inertial.element.start
+    attach_elements(bulk)  # what --fix edits: the tree's elements
+    elements = robot_xml.read_xml(path, data).root.all("link")
+    for mine, theirs in zip(bulk.links, elements, strict=True):
+        assert (mine.element.start, mine.element.end) == (theirs.start, theirs.end)
+        if theirs.child("inertial") is not None:
+            assert mine.inertial.element.start == theirs.child("inertial").start
 
 
-@pytest.mark.parametrize(
-    "text",
-    [
+REFUSALS_AND_ODDITIES = [
+    (
         _swap('<link name="l2">', "<link>"),
+        "link[2] (line 6): name: missing; every link needs a name (urdfdom and pybullet refuse it)",
+    ),
+    (
         _swap('<link name="l2">', '<link name="l1">'),
-        _swap('<mass value="3"/>', ""),
+        "link[2] (l1): duplicate link name 'l1' (also link[1] (l1)); every link needs its own name",
+    ),
+    (_swap('<mass value="3"/>', ""), "link[2] (l2): inertial/mass: missing"),
+    (
         _swap('<mass value="3"/>', '<mass value="nan"/>'),
+        "link[2] (l2): inertial/mass: value: must be a finite number (got 'nan')",
+    ),
+    (
         _swap('<mass value="3"/>', '<mass value="1_0"/>'),
+        "link[2] (l2): inertial/mass: value: must be a finite number (got '1_0')",
+    ),
+    (
         _swap('<mass value="3"/>', '<mass value="3 4"/>'),
+        "link[2] (l2): inertial/mass: value: expected 1 number(s), got 2 ('3 4')",
+    ),
+    (
         _swap('<mass value="3"/>', '<mass value="1e-310"/>'),
+        "link[2] (l2): inertial/mass: value: 1e-310 is subnormal (smaller than 2.23e-308, the smallest double with all its digits): the moments computed from it would lose their digits or vanish",
+    ),
+    (
         _swap('<mass value="3"/>', '<mass value="1e999"/>'),
-        _swap('ixx="0.101"', 'ixx="1e308"'),
+        "link[2] (l2): inertial/mass: value: must be a finite number (got '1e999', too large)",
+    ),
+    (
         _swap('rpy="0.1 0.0 0"', 'rpy="0.1 1e10 0"'),
+        "link[0] (l0): inertial rpy: pitch = 1e+10 rad is not an angle a double can hold to a microradian: give it within one turn (between -3.14159 and 3.14159)",
+    ),
+    (
         _swap('<box size="0.2 0.1 0.05"/>', '<box size="0.2 -0.1 0.05"/>'),
+        "link[0] (l0): collision[0]/geometry/box: size: must be zero or greater than 0 (got -0.1)",
+    ),
+    (
         _swap('<box size="0.2 0.1 0.05"/>', '<box size="0.2 0.1"/>'),
-        _swap('<box size="0.2 0.1 0.05"/>', '<box size="0.2&#9;0.1 0.05"/>'),
+        "link[0] (l0): collision[0]/geometry/box: size: expected 3 number(s), got 2 ('0.2 0.1')",
+    ),
+    (_swap('<box size="0.2 0.1 0.05"/>', '<box size="0.2&#9;0.1 0.05"/>'), None),
+    (
         _swap('<box size="0.2 0.1 0.05"/>', '<mesh filename="missing.stl"/>'),
+        "link[0] (l0): collision[0]/geometry/mesh: missing.stl: no such file",
+    ),
+    (
         _swap('<geometry><box size="0.2 0.1 0.05"/></geometry>', "<geometry/>"),
+        "link[0] (l0): collision[0]/geometry: missing (give a box, cylinder, sphere, capsule or mesh)",
+    ),
+    (
         _swap('type="continuous"', 'type="hinge"'),
+        "joint[0] (j1): type: 'hinge' is not a URDF joint type (revolute, continuous, prismatic, fixed, floating, planar)",
+    ),
+    (
         _swap('<parent link="l0"/><child link="l2"/>', '<parent link="l9"/><child link="l1"/>'),
+        "joint[1] (j2): child: link 'l1' is already the child of link 'l0': two joints close a loop, and a URDF's links form a tree (model a closed chain in SDF or MJCF)",
+    ),
+    (
         _swap('<parent link="l0"/><child link="l2"/>', '<parent link="lx"/><child link="l2"/>'),
+        "joint[1] (j2): parent: no link named 'lx'",
+    ),
+    (
         _swap('<parent link="l0"/><child link="l2"/>', '<child link="l2"/>'),
+        "joint[1] (j2): needs <parent link=…/> and <child link=…/>",
+    ),
+    (
         _swap('name="j3"', 'name="j2"'),
+        "link[3] (l3): duplicate joint name 'j2' (also a joint of link[2] (l2)); every joint needs its own name (urdfdom refuses the file)",
+    ),
+    (
         _swap('<axis xyz="1 1 0"/>', '<axis xyz="0 0 0"/>'),
+        "joint[0] (j1): axis: xyz: must not be the zero vector",
+    ),
+    (
         _swap('<robot name="r">', '<!DOCTYPE robot [<!ENTITY e "1">]><robot name="r">'),
-        _swap('<link name="l2">', "<link name='l2'>"),
-        _swap('<link name="l2">', '<link name="l2"><inertial/>'),
+        "refused: the file declares XML entities or external references; rbi does not expand them",
+    ),
+    (_swap('<link name="l2">', "<link name='l2'>"), None),
+    (_swap('<link name="l2">', '<link name="l2"><inertial/>'), "link[2] (l2): inertial/mass: missing"),
+    (
         _swap('<link name="l2">', '<link name="l2"><collision/>'),
-        _swap('<link name="l2">', '<link name="l2">text'),
-        _swap('<link name="l2">', '<link name="l2&amp;">'),
-        _swap('<link name="l2">', '<link name="l2&#10;">'),
-        _swap('<link name="l2">', '<link name="l2\n">'),
-        _swap('<link name="l2">', '<link name="l\t2">'),
-        _swap('<link name="l2">', '<?pi x?><link name="l2">'),
-        _swap('<link name="l2">', '<link name="l2" note="a>b">'),
-        _swap('<link name="l2">', '<link name="l2"><![CDATA[x]]>'),
+        "link[2] (l2): collision[0]/geometry: missing (give a box, cylinder, sphere, capsule or mesh)",
+    ),
+    (_swap('<link name="l2">', '<link name="l2">text'), None),
+    (_swap('<link name="l2">', '<link name="l2&amp;">'), "joint[1] (j2): child: no link named 'l2'"),
+    (_swap('<link name="l2">', '<link name="l2&#10;">'), "joint[1] (j2): child: no link named 'l2'"),
+    (_swap('<link name="l2">', '<link name="l2\n">'), "joint[1] (j2): child: no link named 'l2'"),
+    (_swap('<link name="l2">', '<link name="l\t2">'), "joint[1] (j2): child: no link named 'l2'"),
+    (_swap('<link name="l2">', '<?pi x?><link name="l2">'), None),
+    (_swap('<link name="l2">', '<link name="l2" note="a>b">'), None),
+    (_swap('<link name="l2">', '<link name="l2"><![CDATA[x]]>'), None),
+    (
         _swap('<link name="l2">', '<link name="l2"><a'),
+        "not well-formed XML (line 6, column 18): not well-formed (invalid token)",
+    ),
+    (
         _urdf(joint={5: ""}),
+        "2 root links ('l0', 'l5'): no joint joins them; a URDF has one root link that every other hangs from (urdfdom and pybullet refuse it)",
+    ),
+    (
         _urdf(link={i: "" for i in range(12)}, joint={i: "" for i in range(12)}),
-    ],
-)
-def test_the_careful_reader_words_every_refusal(tmp_path, text):
-    """The bulk reader reads none of these (a refused file, or one it leaves to the careful
-    reader), so what the user sees is the careful reader's: its model or its one-line error."""
+        "no <link>: a URDF needs at least one (urdfdom and pybullet refuse it)",
+    ),
+]
+"""A file the plain text's reading leaves to the element tree, and what reading it gives: the
+message after the file's path, or None where it reads as it would written plainly."""
+
+
+@pytest.mark.parametrize("text, message", REFUSALS_AND_ODDITIES)
+def test_a_refusal_names_the_first_thing_wrong(tmp_path, text, message):
+    """Each message as urdfdom's users have read it from rbi (the reader of one element at a
+    time, whose words these are); where nothing is wrong, the model of the plain text."""
     path, data = _written(tmp_path, text)
-    assert read_urdf_bulk(path, data) is None
-    assert _outcome(lambda: read_robot(path)) == _outcome(lambda: _careful(path, data))
+    assert read_urdf_text(path, data) is None
+    found = _outcome(lambda: read_robot(path))
+    if message is None:
+        assert found == _outcome(lambda: read_robot(_written(tmp_path, _urdf())[0]))
+    else:
+        assert found == f"error: {path}: {message}"
+
+
+def test_a_refusal_in_a_generated_file_names_its_first_wrong_link(tmp_path):
+    """Links alike are read as one group, a field at a time (the masses before the shapes), yet
+    the message is for the first link that is wrong: link 10's shape, not link 40's mass."""
+    from rbi.bench.robotaudit import urdf_text
+
+    text = urdf_text(64)
+    at, later = text.index('<link name="l10">'), text.index('<link name="l40">')
+    text = (
+        text[:at]
+        + text[at:later].replace('size="0.2 0.1 0.05"', 'size="-1 0.1 0.05"', 1)
+        + text[later:].replace('<mass value="1"/>', '<mass value="nan"/>', 1)
+    )
+    path, data = _written(tmp_path, text)
+    assert read_urdf_text(path, data) is None
+    assert _outcome(lambda: read_robot(path)) == (
+        f"error: {path}: link[10] (l10): collision[0]/geometry/box: size: must be zero or greater than 0 "
+        "(got -1.0)"
+    )
 
 
 def _outcome(read) -> str:
@@ -204,7 +303,7 @@ def _outcome(read) -> str:
 
 
 @pytest.mark.parametrize("odd", [None, 'xyz="0.1 0 0" rpy="0 0 0.5"', 'xyz="0.1 0 0"  '])
-def test_a_generated_file_of_alike_links_reads_as_the_careful_reader_reads_it(tmp_path, odd):
+def test_a_generated_file_of_alike_links_reads_as_the_element_tree_reads(tmp_path, odd):
     """The bench's URDF (every link's text alike once its values are emptied, read as one
     group) and the same with one link's origin written otherwise (read link by link)."""
     from rbi.bench.robotaudit import urdf_text
@@ -226,10 +325,10 @@ def test_a_generated_file_of_alike_links_reads_as_the_careful_reader_reads_it(tm
         {"joints": {"j1": 0.3, "j2": -0.2}},
     ],
 )
-def test_the_audit_of_a_model_in_columns_is_the_audit_of_the_careful_readers_links(tmp_path, options):
+def test_the_audit_of_a_model_in_columns_is_the_audit_of_its_links(tmp_path, options):
     """A model read in bulk is audited on its columns, its links made only when the report's
     rows are asked for: the exit code (asked first, before any row is made), the JSON and the
-    joints are the careful reader's, for links without an inertial (moved and fixed), of mass
+    joints are those of its links, for links without an inertial (moved and fixed), of mass
     0, with a placeholder inertia and each option."""
     text = _urdf(
         20,
@@ -244,7 +343,7 @@ def test_the_audit_of_a_model_in_columns_is_the_audit_of_the_careful_readers_lin
         },
     )
     path, data = _written(tmp_path, text)
-    bulk, careful = read_urdf_bulk(path, data), _careful(path, data)
+    bulk, careful = read_urdf_text(path, data), _careful(path, data)
     assert bulk is not None and bulk.in_columns is not None
     mine, theirs = audit_model(bulk, **options), audit_model(careful, **options)
     assert mine._links is None  # no row made yet: the exit code comes from the columns' audit
