@@ -15,6 +15,7 @@ import difflib
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
+from typing import NamedTuple
 
 import numpy as np
 
@@ -107,6 +108,44 @@ def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
     return np.matmul(rotations, vectors[..., None])[..., 0]
 
 
+class Joints(NamedTuple):
+    """A model's joints, one entry a joint, in file order of their links (a link's in its own
+    order): ``rows`` its link's row, ``names`` (None: unnamed), ``kinds`` (None: no joint, a root of
+    link arrays), ``efforts`` the declared effort limits or None, ``axes`` and ``anchors`` (k, 3)
+    in the link's frame at the reference pose."""
+
+    rows: list[int]
+    names: list[str | None]
+    kinds: list[str | None]
+    efforts: list[float | None]
+    axes: np.ndarray
+    anchors: np.ndarray
+
+
+def joint_table(model: RobotModel, columns: LinkColumns | None = None) -> Joints:
+    """The :class:`Joints` of ``model``: of its links' motions, or of ``columns`` (a row's joint)."""
+    if columns is not None:
+        n = len(columns)
+        return Joints(
+            list(range(n)),
+            columns.joint_names,
+            columns.joint_kinds,
+            columns.efforts,
+            columns.axes,
+            np.zeros((n, 3)),
+        )
+    entries = [(row, motion) for row, link in enumerate(model.links) for motion in link.motions]
+    motions = [motion for _, motion in entries]
+    return Joints(
+        [row for row, _ in entries],
+        [motion.name for motion in motions],
+        [motion.kind for motion in motions],
+        [motion.effort_limit for motion in motions],
+        stacked([motion.axis for motion in motions], (3,)),
+        stacked([motion.anchor for motion in motions], (3,)),
+    )
+
+
 def placement(
     model: RobotModel, joints: dict[str, float] | None = None, columns: LinkColumns | None = None
 ) -> Placement:
@@ -115,7 +154,9 @@ def placement(
     InputError for a joint name the model has no revolute or prismatic joint of. ``columns``:
     the model's links as arrays (:attr:`RobotModel.in_columns`), read in place of its links."""
     joints = dict(joints or {})
-    _check_joints(model, joints, columns)
+    table = joint_table(model, columns)
+    _check_joints(model, joints, table)
+    moving = {row for row, name in zip(table.rows, table.names) if name in joints} if joints else set()
     n = len(model.links) if columns is None else len(columns)
     if columns is None:
         rows = {link.index: row for row, link in enumerate(model.links)}
@@ -130,12 +171,11 @@ def placement(
         level_R, level_t = _origins(model, columns, level)
         R[level] = np.matmul(R[parents], level_R)
         t[level] = stack_apply(R[parents], level_t) + t[parents]
-        for row in level:
-            link = _moving(model, columns, row, joints)
-            if link is not None:
-                R[row], t[row] = _moved(link, Pose(R[row], t[row]), joints, frames)
+        for row in [row for row in level if row in moving] if moving else ():
+            link = model.links[row] if columns is None else columns.link(row)
+            R[row], t[row] = _moved(link, row, Pose(R[row], t[row]), joints, frames)
     R, t = R[:n], t[:n]
-    joint_list, axes, anchors = _joint_frames(model, R, t, frames, columns)
+    joint_list, axes, anchors = _joint_frames(table, R, t, frames)
     frame, to_frame = "world", Pose.identity()
     if model.format != "mjcf":
         root, name = _root(model, columns)
@@ -173,16 +213,6 @@ def _origins(
         stacked([links[row].origin.rotation for row in rows], (3, 3)),
         stacked([links[row].origin.translation for row in rows], (3,)),
     )
-
-
-def _moving(model: RobotModel, columns: LinkColumns | None, row: int, joints: dict[str, float]):
-    """The link of ``row`` when ``joints`` gives one of its joints a value, else None."""
-    if not joints:
-        return None
-    if columns is not None:
-        return columns.link(row) if columns.joint_names[row] in joints else None
-    link = model.links[row]
-    return link if any(motion.name in joints for motion in link.motions) else None
 
 
 def _root(model: RobotModel, columns: LinkColumns | None) -> tuple[int | None, str | None]:
@@ -236,72 +266,46 @@ def _grouped_levels(rows: list[int], parents, n: int) -> tuple[list[tuple[int, i
     return order, groups
 
 
-def _moved(link, pose: Pose, joints: dict[str, float], frames: dict[int, list]) -> tuple:
-    """A link whose joints have values: each joint's frame where the joints before it leave it
-    (into ``frames``), and the link's pose after them all."""
+def _moved(link, row: int, pose: Pose, joints: dict[str, float], frames: dict[int, list]) -> tuple:
+    """A link (of ``row``) whose joints have values: each revolute and prismatic joint's axis and
+    anchor where the joints before it leave them (into ``frames[row]``), and the link's pose after
+    them all."""
     for motion in link.motions:
         if motion.kind in ("revolute", "prismatic"):
-            frames.setdefault(link.index, []).append(
-                (motion, pose.rotation @ motion.axis, pose.apply(motion.anchor))
-            )
+            frames.setdefault(row, []).append((pose.rotation @ motion.axis, pose.apply(motion.anchor)))
         if motion.name in joints:
             pose = pose.then(_motion(motion, joints[motion.name]))
     return pose.rotation, pose.translation
 
 
-def _joint_frames(model: RobotModel, R: np.ndarray, t: np.ndarray, moved: dict[int, list], columns=None):
-    """[(row, name, kind, effort limit)] of every revolute and prismatic joint in file order, and
+def _joint_frames(table: Joints, R: np.ndarray, t: np.ndarray, moved: dict[int, list]) -> tuple:
+    """[(row, name, kind, effort limit)] of every revolute and prismatic joint of ``table``, and
     their axes and anchors (k, 3) in the model's frame: at the link's pose, or as :func:`_moved`
-    found them."""
-    if columns is not None and not moved:
-        kinds = columns.joint_kinds
-        rows = [row for row, kind in enumerate(kinds) if kind in ("revolute", "prismatic")]
-        names, limits = columns.joint_names, columns.efforts
-        found = [(row, names[row], kinds[row], limits[row]) for row in rows]
-        axes_array, anchors_array = columns.axes[rows], np.zeros((len(rows), 3))
-    else:
-        found, rows, axes_array, anchors_array = _joints_of_links(model, moved)
+    found them (``moved``: row → each joint's (axis, anchor))."""
+    chosen = [k for k, kind in enumerate(table.kinds) if kind in ("revolute", "prismatic")]
+    rows = [table.rows[k] for k in chosen]
+    found = [(row, table.names[k], table.kinds[k], table.efforts[k]) for row, k in zip(rows, chosen)]
+    axes, anchors = table.axes[chosen], table.anchors[chosen]
+    left = {row: iter(frames) for row, frames in moved.items()}
+    for i, row in enumerate(rows):
+        if row in left:
+            axes[i], anchors[i] = next(left[row])
     at = np.array(rows, dtype=int)
-    plain = at >= 0
+    plain = np.array([row not in left for row in rows], dtype=bool)
     if np.any(plain):
-        chosen = at[plain]
-        axes_array[plain] = stack_apply(R[chosen], axes_array[plain])
-        anchors_array[plain] = stack_apply(R[chosen], anchors_array[plain]) + t[chosen]
-    return found, axes_array, anchors_array
+        placed = at[plain]
+        axes[plain] = stack_apply(R[placed], axes[plain])
+        anchors[plain] = stack_apply(R[placed], anchors[plain]) + t[placed]
+    return found, axes, anchors
 
 
-def _joints_of_links(model: RobotModel, moved: dict[int, list]) -> tuple:
-    """:func:`_joint_frames`'s joints, read from the links: (joints, rows (-1: moved), axes (k, 3)
-    and anchors (k, 3) in the link frames, or as :func:`_moved` found them)."""
-    found, rows, axes, anchors = [], [], [], []
-    for row, link in enumerate(model.links):
-        if link.index in moved:
-            for motion, axis, anchor in moved[link.index]:
-                found.append((row, motion.name, motion.kind, motion.effort_limit))
-                rows.append(-1)
-                axes.append(axis)
-                anchors.append(anchor)
-            continue
-        for motion in link.motions:
-            if motion.kind in ("revolute", "prismatic"):
-                found.append((row, motion.name, motion.kind, motion.effort_limit))
-                rows.append(row)
-                axes.append(motion.axis)
-                anchors.append(motion.anchor)
-    return found, rows, stacked(axes, (3,)), stacked(anchors, (3,))
-
-
-def _check_joints(model: RobotModel, joints: dict[str, float], columns: LinkColumns | None = None) -> None:
-    """ArgumentError naming ``joints`` for a name no revolute or prismatic joint has, or a
-    revolute value whose turn rounding loses."""
+def _check_joints(model: RobotModel, joints: dict[str, float], table: Joints) -> None:
+    """ArgumentError naming ``joints`` for a name no revolute or prismatic joint of ``table`` has,
+    or a revolute value whose turn rounding loses."""
     if not joints:
         return
-    if columns is not None:
-        kinds = columns.joint_kinds
-        pairs = [(name, kinds[row]) for row, name in enumerate(columns.joint_names) if name]
-    else:
-        pairs = [(m.name, m.kind) for link in model.links for m in link.motions if m.name is not None]
-    movable = {name: kind for name, kind in pairs if kind in ("revolute", "prismatic")}
+    pairs = zip(table.names, table.kinds)
+    movable = {name: kind for name, kind in pairs if name and kind in ("revolute", "prismatic")}
     unknown = [name for name in joints if name not in movable]
     if unknown:
         hint = difflib.get_close_matches(unknown[0], list(movable), n=1)
