@@ -1,5 +1,6 @@
-"""`rbi simulate --plot`: the four panels for a top (also upright and asleep) and a free body,
-and the rotation helper they rest on, checked against scipy."""
+"""`rbi simulate --plot`: the four panels for a top (also upright and asleep) and a free body
+(the rotation they rest on, :func:`rbi.core.rotation.rotate`, is checked against scipy in
+tests/core/test_rotation.py)."""
 
 from __future__ import annotations
 
@@ -7,19 +8,9 @@ import numpy as np
 import pytest
 
 pytest.importorskip("matplotlib")
-from scipy.spatial.transform import Rotation  # noqa: E402
 
-from rbi.viz.plots import rotate_by_quaternions  # noqa: E402
+from rbi.core.rotation import rotate  # noqa: E402
 from tests.conftest import run_rbi_inprocess  # noqa: E402
-
-
-def test_rotate_by_quaternions_matches_scipy():
-    rng = np.random.default_rng(7)
-    q = rng.normal(size=(50, 4))
-    q /= np.linalg.norm(q, axis=1, keepdims=True)
-    v = rng.normal(size=3)
-    expected = Rotation.from_quat(q[:, [1, 2, 3, 0]]).apply(v)  # scipy wants scalar last
-    np.testing.assert_allclose(rotate_by_quaternions(q, v), expected, atol=1e-12)
 
 
 @pytest.mark.parametrize(
@@ -67,7 +58,7 @@ def test_the_intermediate_axis_of_a_free_body_flips_against_the_angular_momentum
     assert proc.returncode == 0, proc.stderr
     rows = list(csv.DictReader(out.open()))
     q = np.array([[float(r[k]) for k in ("qw", "qx", "qy", "qz")] for r in rows])
-    z_world = rotate_by_quaternions(q, [0.0, 0.0, 1.0])
+    z_world = rotate(q, [0.0, 0.0, 1.0])
     # ω starts almost along z, so the fixed angular momentum starts almost along the body z axis
     angle = np.degrees(np.arccos(np.clip(z_world @ z_world[0], -1, 1)))
     assert angle.max() > 170.0

@@ -16,7 +16,11 @@ from rbi.core.rotation import (
     quaternion_from_axis_angle,
     quaternion_multiply,
     quaternion_to_matrix,
+    rotate,
+    rotate_into_body,
     skew,
+    up_in_body,
+    z_axis_in_world,
 )
 
 
@@ -115,6 +119,24 @@ def test_quaternion_matrix_round_trip_including_near_half_turns(angle, axis):
         assert min(np.abs(q - expected).max(), np.abs(q + expected).max()) < 1e-14
     else:
         np.testing.assert_allclose(q, expected, atol=1e-14)
+
+
+def test_stacks_of_quaternions_rotate_like_scipy():
+    rng = np.random.default_rng(7)
+    q = rng.normal(size=(2, 25, 4))  # any size: normalised first
+    scipy = Rotation.from_quat(q.reshape(-1, 4)[:, [1, 2, 3, 0]])  # scipy wants scalar last
+    v = rng.normal(size=3)
+    np.testing.assert_allclose(quaternion_to_matrix(q).reshape(-1, 3, 3), scipy.as_matrix(), atol=1e-15)
+    np.testing.assert_allclose(rotate(q, v).reshape(-1, 3), scipy.apply(v), atol=1e-14)
+    vs = rng.normal(size=(2, 25, 3))
+    np.testing.assert_allclose(rotate(q, vs).reshape(-1, 3), scipy.apply(vs.reshape(-1, 3)), atol=1e-14)
+    np.testing.assert_allclose(
+        rotate_into_body(q, vs).reshape(-1, 3), scipy.inv().apply(vs.reshape(-1, 3)), atol=1e-14
+    )
+    np.testing.assert_allclose(rotate(q[0, 3], v), scipy[3].apply(v), atol=1e-14)  # one quaternion
+    unit = q / np.linalg.norm(q, axis=-1, keepdims=True)  # the z axis's helpers take unit quaternions
+    np.testing.assert_allclose(z_axis_in_world(unit).reshape(-1, 3), scipy.apply([0, 0, 1]), atol=1e-15)
+    np.testing.assert_allclose(up_in_body(unit).reshape(-1, 3), scipy.inv().apply([0, 0, 1]), atol=1e-15)
 
 
 def test_quaternion_from_axis_angle_matches_the_matrix():

@@ -14,6 +14,9 @@ from numpy.typing import ArrayLike
 _AXES = {"x": 0, "y": 1, "z": 2}
 
 
+Z_AXIS = np.array([0.0, 0.0, 1.0])
+"""The z axis: the world's up (gravity pulls along −z), and the body's spin axis by default."""
+
 ROUNDING_ZERO = 1e-15
 """Rotation-matrix entries below this are rounding left by sin and cos of exact quarter turns."""
 
@@ -135,20 +138,55 @@ def skew(v: np.ndarray) -> np.ndarray:
     return np.array([[0.0, -z, y], [z, 0.0, -x], [-y, x, 0.0]])
 
 
-def quaternion_to_matrix(q: np.ndarray) -> np.ndarray:
-    """Rotation matrix (body -> world) of the quaternion ``q = [w, x, y, z]``.
+def quaternion_to_matrix(q: ArrayLike) -> np.ndarray:
+    """Rotation matrix (body -> world) of the quaternion ``q = [w, x, y, z]``, (3, 3); of each
+    quaternion of a stack (..., 4), (..., 3, 3).
 
     ``q`` is normalised first (:func:`unit_vector`, so any finite non-zero size), so a slightly
     drifted quaternion still gives a rotation.
     """
-    w, x, y, z = unit_vector(q)
-    return np.array(
-        [
-            [1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)],
-            [2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)],
-            [2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)],
-        ]
+    w, x, y, z = unit_vector(q).T  # numbers for one quaternion, arrays (axes reversed) for a stack
+    rows = (
+        (1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)),
+        (2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)),
+        (2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)),
     )
+    return np.array(rows).T.swapaxes(-1, -2)
+
+
+def rotate(q: ArrayLike, v: ArrayLike) -> np.ndarray:
+    """``R(q) v``: the body-frame vector ``v`` (3,) or (..., 3) in world axes, turned by the
+    quaternion ``q`` (4,) or by each of a stack (..., 4) (:func:`quaternion_to_matrix`)."""
+    return np.einsum("...ij,...j->...i", quaternion_to_matrix(q), np.asarray(v, dtype=float))
+
+
+def rotate_into_body(q: ArrayLike, v: ArrayLike) -> np.ndarray:
+    """``R(q)ᵀ v``: the world-frame vector ``v`` (3,) or (..., 3) in the body axes of the
+    orientation ``q`` (4,) or of each of a stack (..., 4); ``rotate_into_body(q, e_z)`` is the
+    world's up axis seen from the body."""
+    return np.einsum("...ji,...j->...i", quaternion_to_matrix(q), np.asarray(v, dtype=float))
+
+
+def z_axis_in_world(q: ArrayLike) -> np.ndarray:
+    """``R(q) e_z``, the third column of :func:`quaternion_to_matrix`, for each unit quaternion
+    of a stack (..., 4) (not normalised here: a trajectory's already are), without building the
+    matrices: a sweep asks it of every sample."""
+    w, x, y, z = np.moveaxis(np.asarray(q, dtype=float), -1, 0)
+    return np.stack((2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)), axis=-1)
+
+
+def up_in_body(q: ArrayLike) -> np.ndarray:
+    """``R(q)ᵀ e_z``, the world's up axis in body coordinates (the third row of
+    :func:`quaternion_to_matrix`), for each unit quaternion of a stack (..., 4), as
+    :func:`z_axis_in_world`."""
+    w, x, y, z = np.moveaxis(np.asarray(q, dtype=float), -1, 0)
+    return np.stack((2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)), axis=-1)
+
+
+def quaternion_conjugate(q: ArrayLike) -> np.ndarray:
+    """``[w, -x, -y, -z]`` of ``q`` (4,) or each of a stack (..., 4): the inverse turn of a unit
+    quaternion."""
+    return np.asarray(q, dtype=float) * np.array([1.0, -1.0, -1.0, -1.0])
 
 
 def quaternion_from_axis_angle(axis: np.ndarray, angle_rad: ArrayLike) -> np.ndarray:

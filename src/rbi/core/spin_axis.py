@@ -18,12 +18,10 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from rbi.core.inertia import principal_axes
-from rbi.core.rotation import unit_vector
+from rbi.core.rotation import Z_AXIS, unit_vector
 
 EQUAL_MOMENTS_RTOL = 1e-9
 """Two principal moments this close (relative to the largest) count as equal."""
-
-Z_AXIS = np.array([0.0, 0.0, 1.0])
 
 
 def distinct_principal_axis(inertia: np.ndarray, rtol: float = EQUAL_MOMENTS_RTOL) -> np.ndarray | None:

@@ -2,7 +2,7 @@
 
 Public names:
 
-- :func:`up_in_body`, :func:`tilt_deg`, :func:`precession_deg`: geometry of samples. The tilt
+- :func:`tilt_deg`, :func:`precession_deg`: geometry of samples. The tilt
   and precession are those of the scene's spin axis: pass ``scene.spin_frame`` (see
   :attr:`rbi.sim.scene.Scene.spin_frame`); without it, of the body z axis.
 - :func:`energy`, :func:`angular_momentum_world`: along a trajectory.
@@ -24,18 +24,11 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import quaternion_multiply, quaternion_to_matrix
+from rbi.core.rotation import quaternion_multiply, rotate, up_in_body, z_axis_in_world
 from rbi.sim.scene import Scene
 
 AXISYMMETRY_RTOL = 1e-9
 """Two principal moments this close (relative) count as equal."""
-
-
-def up_in_body(q: np.ndarray) -> np.ndarray:
-    """The world's up axis (+z) in body coordinates, ``R(q)ᵀ e_z`` (N, 3), for unit q (N, 4)."""
-    q = np.atleast_2d(q)
-    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    return np.stack((2 * (x * z - w * y), 2 * (y * z + w * x), w * w - x * x - y * y + z * z), axis=1)
 
 
 def in_spin_frame(q: np.ndarray, frame: np.ndarray | None) -> np.ndarray:
@@ -49,9 +42,7 @@ def in_spin_frame(q: np.ndarray, frame: np.ndarray | None) -> np.ndarray:
 
 def spin_axis_in_world(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:
     """The spin axis in world coordinates, ``R(q) a`` (N, 3); the body z axis without ``frame``."""
-    q = in_spin_frame(q, frame)
-    w, x, y, z = q[:, 0], q[:, 1], q[:, 2], q[:, 3]
-    return np.stack((2 * (x * z + w * y), 2 * (y * z - w * x), w * w - x * x - y * y + z * z), axis=1)
+    return z_axis_in_world(in_spin_frame(q, frame))
 
 
 def tilt_deg(q: np.ndarray, frame: np.ndarray | None = None) -> np.ndarray:
@@ -94,7 +85,7 @@ def kinetic_energy(scene: Scene, omega: np.ndarray) -> np.ndarray:
 
 
 def potential_energy(scene: Scene, q: np.ndarray) -> np.ndarray:
-    return up_in_body(q) @ scene.gravity_moment
+    return up_in_body(np.atleast_2d(q)) @ scene.gravity_moment
 
 
 def angular_momentum_body(scene: Scene, omega: np.ndarray) -> np.ndarray:
@@ -105,8 +96,7 @@ def angular_momentum_body(scene: Scene, omega: np.ndarray) -> np.ndarray:
 def angular_momentum_world(scene: Scene, q: np.ndarray, omega: np.ndarray) -> np.ndarray:
     """``R (I ω)`` (N, 3) about the fixed point, world axes."""
 
-    h_body = angular_momentum_body(scene, omega)
-    return np.stack([quaternion_to_matrix(qi) @ hi for qi, hi in zip(np.atleast_2d(q), h_body)])
+    return rotate(np.atleast_2d(q), angular_momentum_body(scene, omega))
 
 
 def symmetry_axis(scene: Scene) -> np.ndarray | None:
@@ -254,7 +244,7 @@ def com_elevation(scene: Scene, q0: np.ndarray) -> str:
     ``"level"`` (its height over the pivot within :data:`LEVEL_TOLERANCE` of its distance)."""
     r = np.asarray(scene.com_from_pivot, dtype=float)
     length = float(np.linalg.norm(r))
-    height = float(up_in_body(q0)[0] @ r)
+    height = float(up_in_body(q0) @ r)
     if length == 0.0 or abs(height) <= LEVEL_TOLERANCE * length:
         return "level"
     return "above" if height > 0.0 else "below"
@@ -325,7 +315,7 @@ def _upright_top(
     above the sleeping-top threshold, unstable below it."""
     w = f"{abs(spin):.6g} rad/s"
     limit = f"{threshold['omega3']:.6g} rad/s"
-    up = float(up_in_body(q0)[0] @ axis)
+    up = float(up_in_body(q0) @ axis)
     if abs(spin) > threshold["omega3"]:
         result["verdict"] = (
             f"the centre of mass starts above the pivot; spin {w} is above the sleeping-top "

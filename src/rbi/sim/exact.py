@@ -19,7 +19,15 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import matrix_to_quaternion, quaternion_to_matrix
+from rbi.core.rotation import (
+    Z_AXIS,
+    matrix_to_quaternion,
+    quaternion_to_matrix,
+    rotate,
+    rotate_into_body,
+    unit_vector,
+)
+from rbi.core.rotation import quaternion_conjugate as _conj
 from rbi.core.rotation import quaternion_from_axis_angle as turn
 from rbi.core.rotation import quaternion_multiply as qmul
 from rbi.sim.diagnostics import AXISYMMETRY_RTOL, axial_and_transverse, symmetry_axis
@@ -41,21 +49,12 @@ class NotIntegrable(ValueError):
 # --- quaternion helpers (rows are samples) ---------------------------------------------------
 
 
-def _conj(q: np.ndarray) -> np.ndarray:
-    return np.asarray(q, dtype=float) * np.array([1.0, -1.0, -1.0, -1.0])
-
-
 _X = np.array([1.0, 0.0, 0.0])
-_Z = np.array([0.0, 0.0, 1.0])
 
 
 def _zxz(phi, theta, psi) -> np.ndarray:
     """Quaternion of ``Rz(φ) Rx(θ) Rz(ψ)``."""
-    return qmul(qmul(turn(_Z, phi), turn(_X, theta)), turn(_Z, psi))
-
-
-def _normalised(q: np.ndarray) -> np.ndarray:
-    return q / np.linalg.norm(q, axis=-1, keepdims=True)
+    return qmul(qmul(turn(Z_AXIS, phi), turn(_X, theta)), turn(Z_AXIS, psi))
 
 
 # --- elliptic integrals ----------------------------------------------------------------------
@@ -119,8 +118,8 @@ class UniformRotation:
     def state_at(self, t: np.ndarray):
         t = np.atleast_1d(np.asarray(t, dtype=float))
         rate = float(np.linalg.norm(self.omega0))
-        axis = self.omega0 / rate if rate > 0 else _Z
-        q = _normalised(qmul(self.q0, turn(axis, rate * t)))
+        axis = self.omega0 / rate if rate > 0 else Z_AXIS
+        q = unit_vector(qmul(self.q0, turn(axis, rate * t)))
         return q, np.tile(self.omega0, (t.size, 1))
 
     def facts(self) -> dict[str, Any]:
@@ -139,18 +138,18 @@ class SymmetricFreeBody:
         self.axis = np.asarray(axis, dtype=float)
         I_axis, self.I_t = axial_and_transverse(scene, self.axis)
         h_body = scene.inertia @ omega0
-        self.h_world = quaternion_to_matrix(self.q0) @ h_body
+        self.h_world = rotate(self.q0, h_body)
         self.h = float(np.linalg.norm(self.h_world))
         self.spin_rate = -(I_axis - self.I_t) * float(omega0 @ self.axis) / self.I_t
         self.description = "torque-free symmetric body (elementary functions)"
 
     def state_at(self, t: np.ndarray):
         t = np.atleast_1d(np.asarray(t, dtype=float))
-        h_dir = self.h_world / self.h if self.h > 0 else _Z
+        h_dir = self.h_world / self.h if self.h > 0 else Z_AXIS
         q = qmul(qmul(turn(h_dir, self.h / self.I_t * t), self.q0), turn(self.axis, self.spin_rate * t))
-        q = _normalised(q)
+        q = unit_vector(q)
         # ω_body = R(t)ᵀ h_world / I_t + Ω a
-        h_body = _rotate_into_body(q, self.h_world)
+        h_body = rotate_into_body(q, self.h_world)
         omega = h_body / self.I_t + self.spin_rate * self.axis
         return q, omega
 
@@ -160,12 +159,6 @@ class SymmetricFreeBody:
             "precession_rate_rad_s": self.h / self.I_t,
             "body_spin_rate_rad_s": self.spin_rate,
         }
-
-
-def _rotate_into_body(q: np.ndarray, v_world: np.ndarray) -> np.ndarray:
-    """``R(q)ᵀ v`` for each row of q."""
-    v = np.concatenate(([0.0], v_world))
-    return qmul(qmul(_conj(q), v), q)[:, 1:]
 
 
 class EulerPoinsot:
@@ -278,7 +271,7 @@ class EulerPoinsot:
         phi, theta, psi = self._angles(t)
         q = qmul(qmul(self.q_wH, _zxz(phi, theta, psi)), self.q_tb)
         omega = self.omega_principal(t) @ self.axes
-        return _normalised(q), omega
+        return unit_vector(q), omega
 
     @property
     def period(self) -> float:
@@ -427,7 +420,7 @@ class LagrangeTop:
     def state_at(self, t: np.ndarray):
         t = np.atleast_1d(np.asarray(t, dtype=float))
         phi, theta, psi, phi_dot, theta_dot = self._angles(t)
-        q = _normalised(qmul(_zxz(phi, theta, psi), self.q_tb))
+        q = unit_vector(qmul(_zxz(phi, theta, psi), self.q_tb))
         st = np.sin(theta)
         w_t = np.stack(
             (

@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 from scipy.spatial import ConvexHull, QhullError
 
-from rbi.core.rotation import quaternion_to_matrix
+from rbi.core.rotation import rotate, up_in_body
 from rbi.spec.geometry import moved
 from rbi.viz.solids import part_quads, segments_for
 
@@ -53,7 +53,7 @@ def animation_data(
     parts = [shifted(item, origin) for item in geometry]
     size = body_size(parts)
     tip = np.asarray(scene.spin_axis, dtype=float) * size  # the axis the run reports the tilt of
-    trace = np.array([quaternion_to_matrix(qi) @ tip for qi in q])
+    trace = rotate(q, tip)
     low, high = height_range(parts, size, q)
     return {
         "title": title,
@@ -103,10 +103,7 @@ def height_range(parts: list[dict[str, Any]], size: float, q: np.ndarray) -> tup
     """Lowest and highest world z any drawn point of the body reaches over the motion ``q``
     ((N, 4), [w, x, y, z] body → world; parts placed about the origin the body turns about)."""
     points = drawn_points(parts, size)
-    q = np.asarray(q, dtype=float)
-    w, x, y, z = (q / np.linalg.norm(q, axis=1, keepdims=True)).T
-    # the last row of each rotation matrix: a body point's world height is this row times it
-    heights_of_axes = np.column_stack((2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)))
+    heights_of_axes = up_in_body(q)  # a body point's world height is its dot product with this
     low, high = np.inf, -np.inf
     chunk = max(1, 2_000_000 // len(points))  # bounded memory for long runs of large meshes
     for start in range(0, len(heights_of_axes), chunk):

@@ -9,18 +9,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from rbi.core.rotation import rotate
 from rbi.files.output import write_output
 from rbi.text import number
 from rbi.viz.labels import MAX_LABEL_CHARS, label, plain, pyplot
-
-
-def rotate_by_quaternions(q: np.ndarray, v) -> np.ndarray:
-    """``v`` (body frame) turned into world axes by each unit quaternion [w, x, y, z] of ``q``
-    (N, 4): v + 2w (u × v) + 2 u × (u × v) with u = (x, y, z)."""
-    v = np.broadcast_to(np.asarray(v, dtype=float), (len(q), 3))
-    w, u = q[:, :1], q[:, 1:]
-    uv = np.cross(u, v)
-    return v + 2.0 * w * uv + 2.0 * np.cross(u, uv)
 
 
 def plot_trajectory(
@@ -45,7 +37,7 @@ def plot_trajectory(
 
     t = np.asarray(columns["t"], dtype=float)
     q = np.column_stack([columns[k] for k in ("qw", "qx", "qy", "qz")])
-    tip = rotate_by_quaternions(q, np.asarray(spin_axis, dtype=float))  # unit spin axis, world frame
+    tip = rotate(q, spin_axis)  # unit spin axis, world frame
     fig, axes = plt.subplots(2, 2, figsize=(12, 8.4), gridspec_kw={"width_ratios": [1.45, 1]})
     (angle_ax, above), (omega_ax, energy_ax) = axes
 
@@ -91,12 +83,12 @@ def _angle_panel(angle_ax, t: np.ndarray, q: np.ndarray, columns: dict, principa
         angle_ax.set_ylim(-0.05 * max(top, 1.0), 1.1 * max(top, 1.0))
     else:
         omega0 = np.array([columns["wx"][0], columns["wy"][0], columns["wz"][0]])
-        momentum = rotate_by_quaternions(q[:1], np.asarray(inertia, dtype=float) @ omega0)[0]
+        momentum = rotate(q[0], np.asarray(inertia, dtype=float) @ omega0)
         direction = momentum / (np.linalg.norm(momentum) or 1.0)
         for k, (axis, colour) in enumerate(
             zip(np.asarray(principal_axes, dtype=float), ("#d62728", "#2ca02c", "#1f77b4"))
         ):
-            world = rotate_by_quaternions(q, axis)
+            world = rotate(q, axis)
             angle = np.degrees(np.arccos(np.clip(world @ direction, -1.0, 1.0)))
             name = ("smallest", "intermediate", "largest")[k]
             angle_ax.plot(t, angle, lw=1.1, color=colour, label=f"axis of the {name} moment (I{k + 1})")
