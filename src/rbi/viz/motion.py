@@ -11,6 +11,7 @@ import math
 from typing import Any
 
 import numpy as np
+from numpy.typing import ArrayLike
 from scipy.spatial import ConvexHull, QhullError
 
 from rbi.core.rotation import rotate, up_in_body
@@ -53,26 +54,49 @@ def animation_data(
     parts = [shifted(item, origin) for item in geometry]
     size = body_size(parts)
     tip = np.asarray(scene.spin_axis, dtype=float) * size  # the axis the run reports the tilt of
-    trace = rotate(q, tip)
     low, high = height_range(parts, size, q)
-    return {
-        "title": title,
-        "length_unit": length_unit,
+    com = np.asarray(scene.com, dtype=float) - origin
+    speeds = np.linalg.norm(omega, axis=1)
+    return page_data(title, length_unit, parts, size, com, rotate(q, tip), t, q, tilt_deg, speeds) | {
         "pivoted": bool(scene.pivoted),
-        "size": size,
-        "parts": parts,
-        "com": (np.asarray(scene.com, dtype=float) - origin).tolist(),
         "axis_tip": tip.tolist(),
-        "times": np.asarray(t, dtype=float).tolist(),
-        "quaternions": np.column_stack((q[:, 1], q[:, 2], q[:, 3], q[:, 0])).tolist(),
-        "tilt_deg": np.asarray(tilt_deg, dtype=float).tolist(),
-        "omega": np.linalg.norm(omega, axis=1).tolist(),
-        "trace": trace.tolist(),
         "trail_seconds": TRAIL_SECONDS,
         # the ground (a top only) just below the lowest point the body reaches: a hanging
         # pendulum hangs above it, a top stands on it at its pivot
         "ground_z": min(0.0, low) if scene.pivoted else None,
         "height_range": [low, high],
+    }
+
+
+def page_data(
+    title: str,
+    length_unit: str,
+    parts: list[dict[str, Any]],
+    size: float,
+    com: ArrayLike,
+    trace: ArrayLike,
+    t: ArrayLike = (0.0,),
+    q: ArrayLike = ((1.0, 0.0, 0.0, 0.0),),
+    tilt_deg: ArrayLike = (0.0,),
+    omega: ArrayLike = (0.0,),
+) -> dict[str, Any]:
+    """What every page (:func:`rbi.viz.page.html_page`) draws, JSON-ready: at each time ``t`` (s)
+    the turn ``q`` ((N, 4) [w, x, y, z] body → world; the page's order is [x, y, z, w]), tilt
+    (deg), |ω| (rad/s) and axis tip (``trace``, (N, 3)); by default one unturned time (a still)."""
+    return {
+        "title": title,
+        "length_unit": length_unit,
+        "pivoted": False,
+        "size": size,
+        "parts": parts,
+        "com": np.asarray(com, dtype=float).tolist(),
+        "axis_tip": None,
+        "times": np.asarray(t, dtype=float).tolist(),
+        "quaternions": np.asarray(q, dtype=float)[:, [1, 2, 3, 0]].tolist(),
+        "tilt_deg": np.asarray(tilt_deg, dtype=float).tolist(),
+        "omega": np.asarray(omega, dtype=float).tolist(),
+        "trace": np.asarray(trace, dtype=float).tolist(),
+        "trail_seconds": 0.0,
     }
 
 

@@ -19,7 +19,7 @@ from rbi.files.output import write_output
 from rbi.spec.geometry import part_geometry
 from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
 from rbi.viz.labels import label, plain, plain_legend, pyplot
-from rbi.viz.motion import body_size, drawn_points, shifted
+from rbi.viz.motion import body_size, drawn_points, page_data, shifted
 from rbi.viz.solids import shade
 
 AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
@@ -62,25 +62,12 @@ def view_data(
         }
         for k, (m, axis) in enumerate(zip(moments, axes))
     ]
-    return {
-        "title": label(title),
-        "length_unit": length_unit,
-        "pivoted": False,
-        "size": size,
-        "parts": parts,
-        "com": com.tolist(),
+    return page_data(label(title), length_unit, parts, size, com, trace=[com]) | {
         "view_center": com.tolist(),
         "pivot": None if pivot is None else np.asarray(pivot, dtype=float).tolist(),
         "principal_axes": principal,
-        "axis_tip": None,
         "spec_axes": axes_length,
         "part_legend": part_legend(parts),
-        "times": [0.0],
-        "quaternions": [[0.0, 0.0, 0.0, 1.0]],
-        "tilt_deg": [0.0],
-        "omega": [0.0],
-        "trace": [com.tolist()],
-        "trail_seconds": 0.0,
     }
 
 
