@@ -1,14 +1,16 @@
-"""rbi.memory: the one pause of Python's cyclic garbage collector."""
+"""rbi.memory: the one pause of Python's cyclic garbage collector, and the one bounded cache."""
 
 from __future__ import annotations
 
 import gc
 import sysconfig
+import threading
 import weakref
+from collections import OrderedDict
 
 import pytest
 
-from rbi.memory import collector_paused
+from rbi.memory import cached, collector_paused
 
 
 @pytest.fixture
@@ -85,3 +87,35 @@ def test_objects_made_inside_are_left_out_of_the_young_generation(collector_on):
     finally:
         gc.set_threshold(*saved)
     assert id(made[0]) not in young and id(made[-1]) not in young
+
+
+def test_the_cache_makes_each_value_once_and_keeps_those_used_last():
+    cache: OrderedDict = OrderedDict()
+    made: list[int] = []
+
+    def get(k: int) -> int:
+        return cached(cache, 3, (k,), lambda: made.append(k) or k * k)
+
+    assert [get(k) for k in (1, 2, 3, 1, 4)] == [1, 4, 9, 1, 16]
+    assert made == [1, 2, 3, 4]  # 1 was asked for again and not made again
+    assert list(cache) == [(3,), (1,), (4,)]  # 2, the least recently used, went
+    assert get(2) == 4 and made[-1] == 2
+
+
+def test_the_cache_shared_by_threads_stays_bounded_and_right():
+    cache: OrderedDict = OrderedDict()
+    wrong: list[tuple[int, int]] = []
+
+    def work(offset: int) -> None:
+        for i in range(20_000):
+            k = (i * 7 + offset) % 50
+            if cached(cache, 8, (k,), lambda k=k: k + 1000) != k + 1000:
+                wrong.append((k, offset))
+
+    threads = [threading.Thread(target=work, args=(n,)) for n in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert wrong == []
+    assert len(cache) <= 8

@@ -1,10 +1,13 @@
-"""Python's cyclic garbage collector, paused while rbi builds large structures that live on."""
+"""Memory that rbi holds on to: Python's cyclic garbage collector, paused while rbi builds large
+structures that live on, and caches bounded in entries."""
 
 from __future__ import annotations
 
 import contextlib
 import gc
-from collections.abc import Iterator
+from collections import OrderedDict
+from collections.abc import Callable, Iterator
+from typing import Any
 
 
 @contextlib.contextmanager
@@ -27,3 +30,23 @@ def collector_paused() -> Iterator[None]:
             gc.freeze()
             gc.unfreeze()
             gc.enable()
+
+
+def cached(cache: OrderedDict, entries: int, key: tuple, make: Callable[[], Any]) -> Any:
+    """``cache[key]``, made by ``make()`` when it is not there; the cache keeps the ``entries``
+    values used last (a sweep reads the same file and builds the same body many times; memory
+    stays bounded). Safe to share between threads: an entry another thread evicts meanwhile is
+    made again."""
+    try:
+        cache.move_to_end(key)
+        return cache[key]
+    except KeyError:
+        pass
+    value = make()
+    cache[key] = value
+    while len(cache) > entries:
+        try:
+            cache.popitem(last=False)
+        except KeyError:
+            break
+    return value

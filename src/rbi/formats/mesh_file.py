@@ -33,7 +33,8 @@ from rbi.core.mesh import (
     weld_vertices,
 )
 from rbi.files.safe import read_input_file
-from rbi.formats.paths import cached, file_key
+from rbi.formats.paths import file_key
+from rbi.memory import cached
 
 MAX_MESH_BYTES = 256 * 2**20
 """Largest mesh file rbi reads (256 MiB)."""

@@ -12,10 +12,7 @@ from __future__ import annotations
 
 import contextlib
 import contextvars
-from collections import OrderedDict
-from collections.abc import Callable
 from pathlib import Path
-from typing import Any
 
 from rbi.errors import InputError
 
@@ -84,16 +81,3 @@ def file_key(path: Path) -> tuple:
     except OSError as exc:
         raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
     return (str(path.resolve()), status.st_size, status.st_mtime_ns)
-
-
-def cached(cache: OrderedDict, entries: int, key: tuple, make: Callable[[], Any]) -> Any:
-    """``cache[key]``, made by ``make()`` when it is not there; the cache keeps the ``entries``
-    values used last (a sweep reads the same file many times; memory stays bounded)."""
-    if key in cache:
-        cache.move_to_end(key)
-        return cache[key]
-    value = make()
-    cache[key] = value
-    while len(cache) > entries:
-        cache.popitem(last=False)
-    return value

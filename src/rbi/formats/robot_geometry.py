@@ -18,8 +18,9 @@ import numpy as np
 from rbi.core import shapes
 from rbi.core.mass import MassProperties
 from rbi.errors import InputError
-from rbi.formats.paths import cached, file_key
+from rbi.formats.paths import file_key
 from rbi.formats.robot import Geom
+from rbi.memory import cached
 
 if TYPE_CHECKING:
     from rbi.core.mesh import MeshDistribution

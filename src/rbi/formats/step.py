@@ -38,7 +38,8 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from rbi.core.mass import MassProperties
-from rbi.formats.paths import cached, file_key
+from rbi.formats.paths import file_key
+from rbi.memory import cached
 
 MAX_STEP_BYTES = 32 * 2**20
 """Largest STEP file rbi reads (32 MiB). Measured: OpenCascade's libraries take 290 MB once

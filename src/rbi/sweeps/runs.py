@@ -8,12 +8,13 @@ worker and give the same rows.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections import OrderedDict
 from dataclasses import dataclass, field
 from typing import Any
 
 import numpy as np
 
+from rbi.memory import cached
 from rbi.sim.api import sample_times
 from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
 from rbi.sim.scene import initial_state, scene_from_properties
@@ -39,6 +40,10 @@ RESULT_COLUMNS = (
 OUT_BYTES_PER_CHUNK = 64 * 2**20
 """Most memory the sampled states of one chunk may take."""
 
+CACHED_ENTRIES = 4096
+"""Bodies and scenes a sweep keeps, each set of values used last (runs repeat values: a grid's
+spin axis, a spec field varied alone)."""
+
 
 @dataclass(frozen=True)
 class SweepJob:
@@ -59,8 +64,8 @@ class SweepJob:
     tilt_axis: str = "y"
     max_steps: int = 10**7
     spin_axis: tuple[float, float, float] | None = None
-    _bodies: dict = field(default_factory=dict, compare=False, repr=False)
-    _scenes: dict = field(default_factory=dict, compare=False, repr=False)
+    _bodies: OrderedDict = field(default_factory=OrderedDict, compare=False, repr=False)
+    _scenes: OrderedDict = field(default_factory=OrderedDict, compare=False, repr=False)
 
     @property
     def columns(self) -> list[str]:
@@ -75,7 +80,9 @@ class SweepJob:
         """The body with the varied fields set to ``values`` (cached per distinct values), or the
         one-line reason it cannot be built."""
         key = tuple(values)
-        return _cached(self._bodies, key, lambda: _derive_body(self.path, self.raw, self.varied, key))
+        return cached(
+            self._bodies, CACHED_ENTRIES, key, lambda: _derive_body(self.path, self.raw, self.varied, key)
+        )
 
     def scene_of(self, body):
         """The scene of one of this sweep's bodies, under its gravity and spinning about its spin
@@ -95,16 +102,7 @@ def _derive_body(path: str, raw: Any, varied: tuple[FieldPath, ...], values: tup
 
 def _scene(job: SweepJob, values: tuple[float, ...]):
     """The run's scene, or the reason it has none (cached per distinct values)."""
-    return _cached(job._scenes, values, lambda: _derive_scene(job, values))
-
-
-def _cached(cache: dict, key: tuple, make: Callable[[], Any]) -> Any:
-    """``make()`` once per ``key`` (the cache emptied past 4,096 entries, bounding its memory)."""
-    if key not in cache:
-        if len(cache) > 4096:
-            cache.clear()
-        cache[key] = make()
-    return cache[key]
+    return cached(job._scenes, CACHED_ENTRIES, values, lambda: _derive_scene(job, values))
 
 
 def _derive_scene(job: SweepJob, values: tuple[float, ...]):
