@@ -24,7 +24,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import quaternion_multiply, rotate, up_in_body, z_axis_in_world
+from rbi.core.rotation import quaternion_multiply, rotate, up_in_body, vector_length, z_axis_in_world
 from rbi.sim.scene import Scene
 
 AXISYMMETRY_RTOL = 1e-9
@@ -131,7 +131,7 @@ def conserved_quantities(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict
     q = np.atleast_2d(q)
     omega = np.atleast_2d(omega)
     h_body = angular_momentum_body(scene, omega)
-    h_size = float(np.max(_row_norms(h_body)))
+    h_size = float(np.max(vector_length(h_body)))
     initial, drift = energy_drifts(scene, q[None], omega[None])
     out: dict[str, dict[str, Any]] = {
         "energy": {"initial": float(initial[0]), "drift": drift[0], "unit": "energy"}
@@ -144,7 +144,7 @@ def conserved_quantities(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict
             out["h_spin"] = _drift(h_body @ axis, h_size, "angular_momentum")
     else:
         h_world = angular_momentum_world(scene, q, omega)
-        drift = float(np.max(_row_norms(h_world - h_world[0])))
+        drift = float(np.max(vector_length(h_world - h_world[0])))
         out["h_world"] = {
             "initial": h_world[0],
             "drift": _relative(drift, h_size),
@@ -172,15 +172,6 @@ def _drift(values: np.ndarray, size: float, unit: str) -> dict[str, Any]:
         "drift": _relative(float(np.max(np.abs(values - values[0]))), size),
         "unit": unit,
     }
-
-
-def _row_norms(vectors: np.ndarray) -> np.ndarray:
-    """The length of each row of ``vectors`` (n, 3), without overflow: taken at the scale of the
-    largest component, so |h| = 1e291 is 1e291, not the inf of summing squares of 1e582."""
-    scale = float(np.max(np.abs(vectors), initial=0.0))
-    if scale == 0.0 or not np.isfinite(scale):
-        return np.linalg.norm(vectors, axis=1)
-    return np.linalg.norm(vectors / scale, axis=1) * scale
 
 
 def _relative(change: float, size: float) -> float:

@@ -88,13 +88,6 @@ def cloud_points(parts: list[dict[str, Any]]) -> np.ndarray:
     return np.concatenate(clouds) if clouds else np.zeros((0, 3))
 
 
-def quaternion_matrix_xyzw(q) -> np.ndarray:
-    """Rotation matrix of a unit quaternion given as [x, y, z, w] (the page's order)."""
-
-    x, y, z, w = (float(c) for c in q)
-    return quaternion_to_matrix(np.array([w, x, y, z]))
-
-
 def _scene_axes(fig, data: dict[str, Any]):
     """3D axes framed on the heights the body reaches, ground disc (just below the lowest point
     the body reaches, see :func:`rbi.viz.motion.height_range`) and pivot drawn for a top, axes
@@ -171,7 +164,7 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
         readout = fig.text(0.02, 0.915, "", fontsize=8, va="top", family="monospace")
         for index in indices:
             t = data["times"][index]
-            rotation = quaternion_matrix_xyzw(data["quaternions"][index])
+            rotation = quaternion_to_matrix(np.roll(data["quaternions"][index], 1))  # from [x, y, z, w]
             body = _draw_body(ax, quads, colours, rotation)
             turned = points @ rotation.T
             dots = ax.scatter(
