@@ -353,3 +353,35 @@ def test_the_audit_of_a_model_in_columns_is_the_audit_of_its_links(tmp_path, opt
     )
     flagged = {link["name"]: [f["code"] for f in link["flags"]] for link in mine.as_dict()["links"]}
     assert flagged["l3"] == [] and flagged["l7"] == ["massless"] and "placeholder" in flagged["l9"]
+
+
+@pytest.mark.parametrize(
+    "swaps, message",
+    [
+        (
+            [
+                ('<link name="l2500">', '<mass value="1"/>', '<mass value="nan"/>'),
+                ('<link name="l1500">', 'size="0.2 0.1 0.05"', 'size="0.2 -1 0.05"'),
+            ],
+            "link[1500] (l1500): collision[0]/geometry/box: size: must be zero or greater than 0 (got -1.0)",
+        ),
+        (
+            [('<joint name="j2000"', 'child link="l2000"', 'child link="l5"')],
+            "joint[1999] (j2000): child: link 'l5' is already the child of link 'l2': two joints close a "
+            "loop, and a URDF's links form a tree (model a closed chain in SDF or MJCF)",
+        ),
+    ],
+)
+def test_a_refusal_in_a_large_element_tree_names_its_first_wrong_element(tmp_path, swaps, message):
+    """A file that is not plain (one value in single quotes) is read from its element tree, its
+    elements in chunks of groups: the message is for the first wrong element of the file, and a
+    joint's link already taken is named with the parent an earlier chunk gave it."""
+    from rbi.bench.robotaudit import urdf_text
+
+    text = urdf_text(3000).replace('<robot name="large">', "<robot name='large'>")
+    for start, old, new in swaps:
+        at = text.index(start)
+        text = text[:at] + text[at:].replace(old, new, 1)
+    path, data = _written(tmp_path, text)
+    assert read_urdf_text(path, data) is None
+    assert _outcome(lambda: read_robot(path)) == f"error: {path}: {message}"

@@ -114,6 +114,11 @@ class XmlElement:
         return _tag_end(self._bytes, self._close)
 
     @property
+    def pairs(self) -> list[str]:
+        """The attributes as written: name, value, name, value, ... (the element's own list)."""
+        return self._attributes
+
+    @property
     def attrib(self) -> dict[str, str]:
         """The attributes as written, name → value (a new dict each time)."""
         pairs = self._attributes

@@ -23,14 +23,16 @@ DTD, entity or character reference, CDATA, processing instruction, character dat
 single-quoted value; attribute values taken out in one pass on arrays, element boundaries
 found from where its ``<``, ``>`` and ``/`` are), or else from the parsed element tree
 (:func:`read_urdf`). A refusal is worded for the first thing wrong in document order (link by
-link, then joint by joint, each field in the order above): a file the groups refuse is read
-again with every element its own group, in document order.
+link, then joint by joint, each field in the order above): a plain text the groups refuse is
+read from its tree, where a chunk of :data:`CHUNK` elements the groups refuse is read again
+with every element its own group, in document order.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import re
+from collections.abc import Callable
 
 import numpy as np
 
@@ -94,7 +96,14 @@ def read_urdf_text(path: str, data: bytes, package_paths=None, geometry: bool = 
         if document.encoding != "utf-8" or not _plain_xml(document.text):
             return None
         name, links, joints = _elements(document.text)
-        return _model(document, name, links, joints, package_paths, geometry)
+        return _model(
+            document,
+            name,
+            [(list(links.values()), None)],
+            [(list(joints.values()), None)],
+            package_paths,
+            geometry,
+        )
     except (_Doubt, InputError):
         return None
 
@@ -102,14 +111,12 @@ def read_urdf_text(path: str, data: bytes, package_paths=None, geometry: bool = 
 def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     """The model of the parsed URDF ``document``; InputError, one line naming the file, the link
     or joint and the attribute, for the first thing wrong in document order."""
-    name = document.root.get("name")
-    try:
-        return _model(document, name, *_tree_groups(document.root, True), package_paths, geometry)
-    except InputError:  # worded for the first element of its group: word it for the first in the file
-        return _model(document, name, *_tree_groups(document.root, False), package_paths, geometry)
+    links, joints = (_tree_groups(document.root.all(tag)) for tag in ("link", "joint"))
+    return _model(document, document.root.get("name"), links, joints, package_paths, geometry)
 
 
-def _model(document, name, links: dict, joints: dict, packages, geometry: bool) -> RobotModel:
+def _model(document, name, links: list, joints: list, packages, geometry: bool) -> RobotModel:
+    """The model of the ``links`` and ``joints`` given as chunks (:func:`_in_order`)."""
     fields = _links(document.path, links, geometry, packages)
     fields.update(_joints(document.path, fields["names"], joints))
     return RobotModel(document.path, "urdf", name, document=document, columns=LinkColumns(**fields))
@@ -275,38 +282,67 @@ def _tree(signature: bytes) -> _Node:
 # --- the groups of an element tree --------------------------------------------------------------
 
 
-def _tree_groups(root, alike: bool) -> tuple[dict, dict]:
-    """The top-level links and joints of the element tree ``root`` as groups (key →
-    :class:`_Rows`): elements of the same signature together when ``alike``, else each its own
-    group, in document order."""
-    found = []
-    for tag in ("link", "joint"):
-        texts: list[bytes] = []
+CHUNK = 1024
+"""Elements of a tree read together: a chunk with a wrong element is read again element by
+element, in document order (about 0.3 s for 1,024 links)."""
+
+
+def _tree_groups(elements: list) -> list[tuple[list[_Rows], Callable[[], list[_Rows]]]]:
+    """The XML ``elements`` (top-level links or joints) as chunks for :func:`_in_order`: each
+    :data:`CHUNK` of them in groups of one signature, and the same elements one a group."""
+    texts: list[bytes] = []
+    shapes, firsts, nodes = [], [], {}
+    for element in elements:
+        firsts.append(len(texts))
+        shape = []
+        for each in element.iter():
+            pairs = each.pairs
+            shape.append((each.tag, tuple(pairs[::2]), len(each.children)))
+            texts.extend(value.encode() for value in pairs[1::2])
+        shapes.append(tuple(shape))
+        if shapes[-1] not in nodes:
+            nodes[shapes[-1]] = _Node.of(element, [0])
+    lengths = np.array([len(text) for text in texts], dtype=np.int64)
+    ends = np.cumsum(lengths)
+    values = _Values(np.frombuffer(b"".join(texts), dtype=np.uint8), ends - lengths, ends)
+
+    def groups(chunk: range, alike: bool) -> list[_Rows]:
         keyed: dict = {}
-        for index, element in enumerate(root.all(tag)):
-            shape = []
-            first = len(texts)
-            for each in element.iter():
-                attributes = each.attrib
-                shape.append((each.tag, tuple(attributes), len(each.children)))
-                texts.extend(value.encode() for value in attributes.values())
-            key = tuple(shape) if alike else index
-            keyed.setdefault(key, (element, [], [], []))
-            keyed[key][1].append(index)
-            keyed[key][2].append(first)
-            keyed[key][3].append(element)
-        lengths = np.array([len(text) for text in texts], dtype=np.int64)
-        ends = np.cumsum(lengths)
-        values = _Values(np.frombuffer(b"".join(texts), dtype=np.uint8), ends - lengths, ends)
-        found.append(
-            {
-                key: _Rows(
-                    _Node.of(element, [0]), indices, np.array(firsts, dtype=np.int64), values, elements
-                )
-                for key, (element, indices, firsts, elements) in keyed.items()
-            }
-        )
-    return found[0], found[1]
+        for index in chunk:
+            keyed.setdefault(shapes[index] if alike else index, []).append(index)
+        return [
+            _Rows(
+                nodes[shapes[rows[0]]],
+                rows,
+                np.array([firsts[row] for row in rows], dtype=np.int64),
+                values,
+                [elements[row] for row in rows],
+            )
+            for rows in keyed.values()
+        ]
+
+    chunks = [range(start, min(start + CHUNK, len(elements))) for start in range(0, len(elements), CHUNK)]
+    return [(groups(chunk, True), lambda chunk=chunk: groups(chunk, False)) for chunk in chunks]
+
+
+def _in_order(chunks: list, read: Callable[[_Rows], None], state: list | None = None) -> None:
+    """``read`` each group of each chunk, chunk by chunk; ``chunks``: (groups, the same elements
+    one a group, or None). A refusal in a chunk is worded for its first wrong element (InputError
+    of the first group of one that ``read`` refuses, ``state`` restored first); a chunk with no
+    groups of one leaves the wording to the caller."""
+    for groups, singly in chunks:
+        saved = None if state is None or singly is None else state[:]
+        try:
+            for rows in groups:
+                read(rows)
+        except InputError:
+            if singly is None:
+                raise
+            if state is not None:
+                state[:] = saved
+            for rows in singly():
+                read(rows)
+            raise
 
 
 # --- columns of values --------------------------------------------------------------------------
@@ -351,7 +387,8 @@ class _Values:
         width = int(lengths.max()) if len(lengths) else 0
         if width == 0:
             return None
-        codes = self.codes
+        first = int(starts.min())
+        codes, starts = self.codes[first:], starts - first  # (a few values near the end: a short copy)
         if len(codes) < width + int(starts.max()):
             codes = np.concatenate([codes, np.zeros(width, dtype=np.uint8)])
         windows = np.lib.stride_tricks.as_strided(
@@ -375,7 +412,7 @@ class _Node:
     def of(element, count: list[int]) -> _Node:
         """The signature of an XML ``element``, its values counted from ``count[0]`` on (in
         document order: each element's attributes as written, then its children's)."""
-        names = list(element.attrib)
+        names = element.pairs[::2]
         node = _Node(element.tag, {name: count[0] + k for k, name in enumerate(names)})
         count[0] += len(names)
         node.children = [_Node.of(each, count) for each in element.children]
@@ -414,6 +451,8 @@ class _Rows:
         """The text at ``place`` of each element (``default`` where the attribute is not written)."""
         if place is None:
             return [default] * len(self)
+        if len(self) == 1:  # (no arrays to set up for one)
+            return [self.values.one(int(self.firsts[0]) + place)]
         return self.values.texts(self.firsts + place)
 
     def words(self, place: int | None) -> list[str]:
@@ -436,6 +475,8 @@ class _Rows:
         3): one number stands for three); InputError, worded for the first wrong row."""
         if place is None and default is None:
             raise self.where(0).error(f"{what}: missing")
+        if len(self) == 1:  # one element (a file read again element by element): no arrays to set up
+            return np.array([self._numbers(0, self.column(place, default)[0].decode(), count, what)])
         distinct, inverse = self.distinct(place, default)
         for each in (count,) if isinstance(count, int) else (3, 1):
             try:
@@ -480,16 +521,17 @@ def _numbers(texts: list[bytes], count: int) -> np.ndarray:
 # --- links --------------------------------------------------------------------------------------
 
 
-def _links(path: str, groups: dict, geometry: bool, packages) -> dict:
-    """The links of ``groups`` (key → :class:`_Rows`) as the :class:`LinkColumns` fields they
-    give: names, inertials and geometry."""
-    if not groups:
+def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
+    """The links of ``chunks`` (:func:`_in_order`) as the :class:`LinkColumns` fields they give:
+    names, inertials and geometry."""
+    n = sum(len(rows) for groups, _ in chunks for rows in groups)
+    if not n:
         raise InputError(f"{path}: no <link>: a URDF needs at least one (urdfdom and pybullet refuse it)")
-    n = sum(len(rows) for rows in groups.values())
     names: list[str] = [""] * n
     inertials = _Inertials(n)
     geoms: list[GeomColumn] = []
-    for rows in groups.values():
+
+    def read(rows: _Rows) -> None:
         words = rows.words(rows.top.at.get("name"))
         for k, word in enumerate(words):
             if not word:
@@ -504,7 +546,9 @@ def _links(path: str, groups: dict, geometry: bool, packages) -> dict:
         if inertial is not None:
             inertials.read(rows, inertial)
         if geometry:
-            geoms += _geoms(rows, "collision", packages) + _geoms(rows, "visual", packages)
+            geoms.extend(_geoms(rows, "collision", packages) + _geoms(rows, "visual", packages))
+
+    _in_order(chunks, read)
     if len(set(names)) != n:
         check_unique_names(path, [Link(index, name) for index, name in enumerate(names)], "link")
     return {"names": names, "geoms": geoms, **vars(inertials)}
@@ -634,15 +678,16 @@ def _sizes(rows: _Rows, shape: _Node, label: str) -> np.ndarray:
 # --- joints -------------------------------------------------------------------------------------
 
 
-def _joints(path: str, names: list[str], groups: dict) -> dict:
-    """The joints of ``groups`` (key → :class:`_Rows`) as the :class:`LinkColumns` fields they
+def _joints(path: str, names: list[str], chunks: list) -> dict:
+    """The joints of ``chunks`` (:func:`_in_order`) as the :class:`LinkColumns` fields they
     give, each in its child link's row."""
     n = len(names)
     rows_of = {name: row for row, name in enumerate(names)}
     parents, joint_names, kinds, efforts = [-1] * n, [""] * n, [None] * n, [None] * n
     rotations, translations, axes = np.empty((n, 3, 3)), np.zeros((n, 3)), np.zeros((n, 3))
     rotations[:] = np.eye(3)
-    for rows in groups.values():
+
+    def read(rows: _Rows) -> None:
         at, found = _joint_links(path, names, rows_of, parents, rows)
         words = rows.words(rows.top.at.get("type"))
         for k, word in enumerate(words):
@@ -661,6 +706,8 @@ def _joints(path: str, names: list[str], groups: dict) -> dict:
             magnitudes = np.abs(rows.numbers(limit.at["effort"], None, 1, "limit: effort")[:, 0]).tolist()
             for row, effort in zip(at, magnitudes):
                 efforts[row] = effort
+
+    _in_order(chunks, read, parents)
     order = _one_tree(parents)
     if len({name for name in joint_names if name}) != sum(map(bool, joint_names)) or order is None:
         _refuse_tree(path, names, parents, joint_names)
