@@ -155,15 +155,12 @@ def quaternion_to_matrix(q: ArrayLike) -> np.ndarray:
 
 
 def rotate(q: ArrayLike, v: ArrayLike) -> np.ndarray:
-    """``R(q) v``: the body-frame vector ``v`` (3,) or (..., 3) in world axes, turned by the
-    quaternion ``q`` (4,) or by each of a stack (..., 4) (:func:`quaternion_to_matrix`)."""
+    """``R(q) v``: body-frame ``v`` (3,) or (..., 3) in world axes, for ``q`` (4,) or (..., 4)."""
     return np.einsum("...ij,...j->...i", quaternion_to_matrix(q), np.asarray(v, dtype=float))
 
 
 def rotate_into_body(q: ArrayLike, v: ArrayLike) -> np.ndarray:
-    """``R(q)ᵀ v``: the world-frame vector ``v`` (3,) or (..., 3) in the body axes of the
-    orientation ``q`` (4,) or of each of a stack (..., 4); ``rotate_into_body(q, e_z)`` is the
-    world's up axis seen from the body."""
+    """``R(q)ᵀ v``: world-frame ``v`` (3,) or (..., 3) in body axes, for ``q`` (4,) or (..., 4)."""
     return np.einsum("...ji,...j->...i", quaternion_to_matrix(q), np.asarray(v, dtype=float))
 
 
@@ -176,16 +173,14 @@ def z_axis_in_world(q: ArrayLike) -> np.ndarray:
 
 
 def up_in_body(q: ArrayLike) -> np.ndarray:
-    """``R(q)ᵀ e_z``, the world's up axis in body coordinates (the third row of
-    :func:`quaternion_to_matrix`), for each unit quaternion of a stack (..., 4), as
+    """``R(q)ᵀ e_z``, the world's up axis in body axes (the matrix's third row), as
     :func:`z_axis_in_world`."""
     w, x, y, z = np.moveaxis(np.asarray(q, dtype=float), -1, 0)
     return np.stack((2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)), axis=-1)
 
 
 def quaternion_conjugate(q: ArrayLike) -> np.ndarray:
-    """``[w, -x, -y, -z]`` of ``q`` (4,) or each of a stack (..., 4): the inverse turn of a unit
-    quaternion."""
+    """``[w, -x, -y, -z]``, (4,) or (..., 4): the inverse turn of a unit quaternion."""
     return np.asarray(q, dtype=float) * np.array([1.0, -1.0, -1.0, -1.0])
 
 
