@@ -427,3 +427,34 @@ def test_mesh_shell_inertia_only_through_the_mesh_asset_as_mujoco(tmp_path, wher
         assert proc.returncode == 0, proc.stderr
         assert result["total"]["mass"] == pytest.approx(12.0, rel=1e-12)
         assert model.body_mass[1] == pytest.approx(12.0, rel=1e-6)
+
+
+def _arm_model(name: str, rod_mass: float, x: float) -> str:
+    """A base and a 1 m rod on a hinge about y at the base: the rod's centre 0.5 m out along x."""
+    inertia = "<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia>"
+    return (
+        f'<model name="{name}"><pose>{x} 0 0 0 0 0</pose>'
+        f'<link name="base"><inertial><mass>1</mass>{inertia}</inertial></link>'
+        f'<link name="rod"><pose>0.5 0 0 0 0 0</pose><inertial><mass>{rod_mass}</mass>{inertia}'
+        "</inertial></link>"
+        '<joint name="hinge" type="revolute"><parent>base</parent><child>rod</child>'
+        "<pose>-0.5 0 0 0 0 0</pose><axis><xyz>0 1 0</xyz></axis></joint></model>"
+    )
+
+
+def test_sdf_models_of_one_name_are_refused_as_libsdformat_does(tmp_path):
+    # Two models named alike gave links of one key: at --joints hinge=pi/2 the rods' torques
+    # came out +m g l (turned twice) instead of 0 (pybullet's kuka_iiwa/model2.sdf: -2.8e6 N·m).
+    world = '<sdf version="1.6"><world name="w">{}{}</world></sdf>'
+    proc, _ = audit(tmp_path, "two.sdf", world.format(_arm_model("arm", 2, 0), _arm_model("arm", 5, 3)))
+    assert proc.returncode == 2
+    assert proc.stderr.strip().splitlines() == [
+        f"rbi: {tmp_path / 'two.sdf'}: model arm: another model in this file has the same name, so "
+        "their links and joints cannot be told apart (SDFormat: model names must be unique)"
+    ]
+    text = world.format(_arm_model("left", 2, 0), _arm_model("right", 5, 3))
+    for angle, expected in ((0.0, [-2 * 9.81 * 0.5, -5 * 9.81 * 0.5]), (np.pi / 2, [0.0, 0.0])):
+        proc, result = audit(tmp_path, "named.sdf", text, "--joints", f"hinge={angle!r}")
+        assert proc.returncode == 0, proc.stderr
+        torques = [joint["torque"] for joint in result["joints"]]
+        np.testing.assert_allclose(torques, expected, atol=1e-9)

@@ -84,8 +84,15 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
         )
     prefix = len(models) > 1
     index = 0
+    named: set[str] = set()
     for model_element, model_pose in models:
         model_name = model_element.get("name") or ""
+        if prefix and model_name in named:  # libsdformat refuses it too (DUPLICATE_NAME)
+            raise Where(path, f"model {short(model_name)}").error(
+                "another model in this file has the same name, so their links and joints cannot be "
+                "told apart (SDFormat: model names must be unique)"
+            )
+        named.add(model_name)
         links: dict[str, Link] = {}
         link_poses: dict[str, Pose] = {}
         frames = _Frames(path, model_element)
