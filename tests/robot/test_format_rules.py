@@ -452,9 +452,22 @@ def test_sdf_models_of_one_name_are_refused_as_libsdformat_does(tmp_path):
         f"rbi: {tmp_path / 'two.sdf'}: model arm: another model in this file has the same name, so "
         "their links and joints cannot be told apart (SDFormat: model names must be unique)"
     ]
-    text = world.format(_arm_model("left", 2, 0), _arm_model("right", 5, 3))
-    for angle, expected in ((0.0, [-2 * 9.81 * 0.5, -5 * 9.81 * 0.5]), (np.pi / 2, [0.0, 0.0])):
-        proc, result = audit(tmp_path, "named.sdf", text, "--joints", f"hinge={angle!r}")
+
+
+def test_sdf_joints_of_several_models_are_named_model_colon_colon_joint(tmp_path):
+    # As their links are: two models' joints "hinge" were one name, and --joints moved both.
+    text = '<sdf version="1.6"><world name="w">{}{}</world></sdf>'.format(
+        _arm_model("left", 2, 0), _arm_model("right", 5, 3)
+    )
+    held = [-2 * 9.81 * 0.5, -5 * 9.81 * 0.5]  # each rod level: -m g l/2
+    for joints, expected in (
+        ((), held),
+        (("--joints", f"left::hinge={np.pi / 2!r}"), [0.0, held[1]]),  # the left rod hangs
+        (("--joints", f"left::hinge={np.pi / 2!r}", "--joints", f"right::hinge={np.pi / 2!r}"), [0.0, 0.0]),
+    ):
+        proc, result = audit(tmp_path, "named.sdf", text, *joints)
         assert proc.returncode == 0, proc.stderr
-        torques = [joint["torque"] for joint in result["joints"]]
-        np.testing.assert_allclose(torques, expected, atol=1e-9)
+        assert [joint["name"] for joint in result["joints"]] == ["left::hinge", "right::hinge"]
+        np.testing.assert_allclose([joint["torque"] for joint in result["joints"]], expected, atol=1e-9)
+    proc, _ = audit(tmp_path, "named.sdf", text, "--joints", "hinge=1")
+    assert proc.returncode == 2 and "hinge" in proc.stderr and len(proc.stderr.strip().splitlines()) == 1

@@ -19,8 +19,8 @@
 - ``<include>`` of another model is not followed: it is listed in :attr:`RobotModel.unchecked`,
   so no check reports the file as fine without having read those links.
 
-Link names are the model's own; when the file holds several models they are written
-``model::link``.
+Link and joint names are the model's own; when the file holds several models they are written
+``model::link`` and ``model::joint``.
 """
 
 from __future__ import annotations
@@ -123,7 +123,7 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
             check_unique_names(path, list(links.values()) + [link], "link")
             links[own] = link
             robot.links.append(link)
-        _joints(robot, model_element, links, link_poses, model_pose, frames)
+        _joints(robot, model_element, links, link_poses, frames, f"{model_name}::" if prefix else "")
     return robot
 
 
@@ -305,12 +305,12 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
     return Geom(kind, (), pose, label)
 
 
-def _joints(
-    robot: RobotModel, model_element, links: dict, link_poses: dict, model_pose: Pose, frames
-) -> None:
+def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, frames, prefix: str) -> None:
+    """Each joint of the model onto its child link; a joint's name is ``prefix`` and its own."""
     path = robot.path
     for index, element in enumerate(model_element.all("joint")):
         name = element.get("name")
+        joint_name = prefix + name if prefix and name is not None else name
         where = Where(path, f"joint[{index}]" + (f" ({short(name)})" if name is not None else ""))
         parent_element, child_element = element.child("parent"), element.child("child")
         if parent_element is None or child_element is None:
@@ -322,7 +322,7 @@ def _joints(
         kind = JOINT_KINDS.get(element.get("type") or "", "other")
         if parent_name in ("world", "__world__") or parent_name not in links:
             child.motions = [
-                Motion(name, "fixed" if kind == "fixed" else kind, np.array([1.0, 0, 0]), np.zeros(3))
+                Motion(joint_name, "fixed" if kind == "fixed" else kind, np.array([1.0, 0, 0]), np.zeros(3))
             ]
             continue
         if child.parent is not None:
@@ -359,7 +359,9 @@ def _joints(
             effort = abs(number(where, effort_element.text, "axis/limit/effort"))
             effort = None if effort == -1 or not math.isfinite(effort) else effort
         child.motions = [
-            Motion(name, kind, np.asarray(axis, dtype=float), joint_pose.translation, effort_limit=effort)
+            Motion(
+                joint_name, kind, np.asarray(axis, dtype=float), joint_pose.translation, effort_limit=effort
+            )
         ]
 
 
