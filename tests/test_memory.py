@@ -102,15 +102,33 @@ def test_the_cache_makes_each_value_once_and_keeps_those_used_last():
     assert get(2) == 4 and made[-1] == 2
 
 
+class _EvictedBeforeRead(OrderedDict):
+    """A cache whose entries another thread evicts between a lookup finding one and its read."""
+
+    def __getitem__(self, key):
+        self.pop(key, None)
+        raise KeyError(key)
+
+
+def test_an_entry_evicted_between_lookup_and_read_is_made_again():
+    # The interleaving two threads of a sweep can meet, made certain: a cache that checks
+    # `key in cache` and then reads cache[key] raises KeyError here.
+    cache = _EvictedBeforeRead({(1,): "stale"})
+    assert cached(cache, 4, (1,), lambda: "made") == "made"
+
+
 def test_the_cache_shared_by_threads_stays_bounded_and_right():
     cache: OrderedDict = OrderedDict()
-    wrong: list[tuple[int, int]] = []
+    wrong: list = []
 
     def work(offset: int) -> None:
-        for i in range(20_000):
-            k = (i * 7 + offset) % 50
-            if cached(cache, 8, (k,), lambda k=k: k + 1000) != k + 1000:
-                wrong.append((k, offset))
+        try:
+            for i in range(20_000):
+                k = (i * 7 + offset) % 50
+                if cached(cache, 8, (k,), lambda k=k: k + 1000) != k + 1000:
+                    wrong.append((k, offset))
+        except Exception as exc:  # an exception in a thread would otherwise pass unseen
+            wrong.append(repr(exc))
 
     threads = [threading.Thread(target=work, args=(n,)) for n in range(4)]
     for t in threads:
