@@ -101,10 +101,12 @@ def test_a_frame_stamped_before_the_page_loaded_does_not_turn_time_back(page, tm
     early_frame = (
         "<script>(function () { const raf = window.requestAnimationFrame.bind(window); let n = 0;"
         " window.requestAnimationFrame = function (cb) {"
-        " if (n++ === 0) raf(function (s) { cb(s - 1000); }); return n; }; })();</script>"
+        " if (n++ === 0) raf(function (s) { cb(s - 1000);"
+        " document.documentElement.setAttribute('data-replayed', 'yes'); }); return n; }; })();</script>"
     )
     replayed = tmp_path / "replayed.html"
     replayed.write_text(page.read_text().replace("<head>", "<head>" + early_frame, 1))
     dom = _chromium(tmp_path, replayed.as_uri(), "--dump-dom").stdout
     assert '<div id="status" hidden="">ready</div>' in dom, dom[-2000:]
+    assert 'data-replayed="yes"' in dom  # the early frame ran (the page shows t = 0 before any frame)
     assert "t = 0.000 s" in dom, dom[-600:]
