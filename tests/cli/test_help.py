@@ -68,3 +68,12 @@ def test_dynamics_table_gives_force_and_torque_units(bodies):
     # a spec in g and mm: 1 g·mm/s² is 1e-6 N, 1 g·mm²/s² is 1e-9 N·m
     proc = run_rbi_inprocess("dynamics", bodies / "wheel_with_holes.yaml", "--alpha", "0,0,10")
     assert "g·mm/s² (= 1e-06 N)" in proc.stdout and "g·mm²/s² (= 1e-09 N·m)" in proc.stdout
+
+
+@pytest.mark.parametrize("command", ["inertia", "principal"])
+def test_units_help_names_no_option_the_command_lacks(command):
+    # `rbi inertia --help` said "Command-line inputs (--about X,Y,Z, --velocity) stay in the
+    # file's units", and inertia has no --velocity
+    text = _help(command)
+    assert "--velocity" not in text
+    assert "--about X,Y,Z point) stay in the file's units" in " ".join(text.split())

@@ -77,7 +77,7 @@ UnitsOption = Annotated[
         "-u",
         metavar="SI|LENGTH,MASS",
         help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
-        "units. Command-line inputs (--about X,Y,Z, --velocity) stay in the file's units.",
+        "units. Numbers given on the command line (an --about X,Y,Z point) stay in the file's units.",
     ),
 ]
 
