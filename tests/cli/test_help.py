@@ -77,3 +77,11 @@ def test_units_help_names_no_option_the_command_lacks(command):
     text = _help(command)
     assert "--velocity" not in text
     assert "--about X,Y,Z point) stay in the file's units" in " ".join(text.split())
+
+
+def test_schema_help_offers_only_the_formats_it_prints():
+    # `rbi schema --help` offered <table|json|csv> and `rbi schema -f csv` was refused
+    text = _help("schema")
+    assert "<table|json>" in text and "csv" not in text
+    refused = run_rbi_inprocess("schema", "-f", "csv")
+    assert refused.returncode == 2 and "'csv' is not one of 'table', 'json'" in refused.stderr

@@ -30,6 +30,19 @@ FormatOption = Annotated[
     OutputFormat,
     typer.Option("--format", "-f", help="table (for people), json (one object) or csv (header + rows)."),
 ]
+
+
+class DocumentFormat(str, Enum):
+    """The forms of a command that prints one JSON document (`rbi schema`): no CSV."""
+
+    table = "table"
+    json = "json"
+
+
+DocumentFormatOption = Annotated[
+    DocumentFormat,
+    typer.Option("--format", "-f", help="table (indented JSON, for people) or json (on one line)."),
+]
 SpecFile = Annotated[
     str,
     typer.Argument(

@@ -8,13 +8,19 @@ from typing import Annotated
 
 import typer
 
-from rbi.api import SpecError, spec_schema
+from rbi.api import spec_schema
 from rbi.api import validate as problems_of
-from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption
+from rbi.cli.options import (
+    DocumentFormat,
+    DocumentFormatOption,
+    FormatOption,
+    OutputFormat,
+    PackagePathOption,
+)
 from rbi.cli.render import emit, terminal_safe
 
 
-def schema(format: FormatOption = OutputFormat.table) -> None:
+def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
     """Print the JSON Schema of the YAML spec (for editors: see docs/schema.md).
 
     \b
@@ -24,9 +30,7 @@ def schema(format: FormatOption = OutputFormat.table) -> None:
       # yaml-language-server: $schema=rbi-spec.schema.json
     """
 
-    if format is OutputFormat.csv:
-        raise SpecError("--format csv: the schema is a JSON document; use --format table (indented) or json")
-    indent = 2 if format is OutputFormat.table else None
+    indent = 2 if format is DocumentFormat.table else None
     sys.stdout.write(json.dumps(spec_schema(), indent=indent, ensure_ascii=False) + "\n")
 
 
