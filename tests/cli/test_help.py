@@ -85,3 +85,11 @@ def test_schema_help_offers_only_the_formats_it_prints():
     assert "<table|json>" in text and "csv" not in text
     refused = run_rbi_inprocess("schema", "-f", "csv")
     assert refused.returncode == 2 and "'csv' is not one of 'table', 'json'" in refused.stderr
+
+
+def test_validate_help_says_it_reads_robot_files(bodies):
+    # `rbi validate --help` said "Spec files (YAML) to check." while it checks URDF, SDF, MJCF too
+    text = " ".join(_help("validate").split())
+    assert "Spec files (YAML)" not in text
+    assert all(word in text for word in (".urdf", ".sdf", "MJCF", "JSON", "standard input"))
+    assert run_rbi_inprocess("validate", bodies / "two_link_arm.urdf").returncode == 0

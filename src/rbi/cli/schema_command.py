@@ -36,7 +36,13 @@ def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
 
 def validate(
     files: Annotated[
-        list[str], typer.Argument(help="Spec files (YAML) to check.", show_default=False, metavar="FILE...")
+        list[str],
+        typer.Argument(
+            help="Body specs (YAML or JSON; - reads one from standard input) or robot files "
+            "(.urdf, .sdf, MJCF .xml, .xacro) to check.",
+            show_default=False,
+            metavar="FILE...",
+        ),
     ],
     package_path: PackagePathOption = None,
     format: FormatOption = OutputFormat.table,
