@@ -288,3 +288,34 @@ def test_unwritable_stdout_is_one_line_exit_2(how, form):
     assert done.returncode == 2, done.stderr
     assert len(lines) == 1 and lines[0].startswith("rbi: standard output: cannot write"), done.stderr
     assert "internal error" not in done.stderr and "Exception" not in done.stderr
+
+
+READER_GONE = {
+    "check of several files": ["check", "bracket.yaml", "wheel_pattern.yaml"],
+    "inertia of several files": ["inertia", "top.yaml", "tbar.yaml"],
+    "one audit": ["audit", "two_link_arm.urdf"],
+    "a sweep": ["sweep", "top.yaml", "--spin", "1:100:40", "--duration", "0.01", "--samples", "3"],
+    "the trajectory to standard output": ["simulate", "top.yaml", "--spin", "9", "--out", "-"],
+}
+
+
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+@pytest.mark.parametrize("case", READER_GONE)
+def test_a_reader_that_left_ends_the_run_quietly_with_status_0(case, form):
+    """`rbi check a.yaml b.yaml | head -1`: the reader leaving is not a failed check (exit 1) nor
+    an error; every command ends quietly with status 0, as a single-file run whose reader left
+    after its first line did. (Click and rich each turned a broken pipe into a silent exit 1.)"""
+    args = READER_GONE[case] + ([] if "--out" in READER_GONE[case] else ["--format", form])
+    if "--out" in args and form == "json":
+        pytest.skip("--out - with --format json is refused before any output")
+    read_end, write_end = os.pipe()
+    os.close(read_end)  # the reader is gone before rbi writes anything
+    try:
+        done = subprocess.run(
+            [str(RBI_SCRIPT), *args], cwd=BODIES, stdout=write_end, stderr=subprocess.PIPE, timeout=120
+        )
+    finally:
+        os.close(write_end)
+    assert done.returncode == 0, done.stderr
+    assert b"Traceback" not in done.stderr and b"Exception" not in done.stderr
+    assert all(line.startswith(b"rbi: ") for line in done.stderr.splitlines()), done.stderr

@@ -28,7 +28,7 @@ from rbi import SpecError, __version__, outside_paths_allowed
 from rbi.cli import completion, terminal
 from rbi.cli.option_values import error_line
 from rbi.cli.options import plain_argument_help
-from rbi.cli.terminal import StdoutUnwritable, Terminated, say
+from rbi.cli.terminal import ReaderLeft, StdoutUnwritable, Terminated, say
 
 __all__ = ["COMMANDS", "app", "main"]
 
@@ -266,8 +266,8 @@ def _run() -> None:
         terminal.discard_stdout()
         say(f"standard output: cannot write the results: {exc}")
         sys.exit(2)
-    except BrokenPipeError:  # `rbi ... | head`: the reader left; not an error of ours
-        sys.stderr.close()
+    except (ReaderLeft, BrokenPipeError):  # `rbi ... | head`: the reader left; not an error of ours
+        terminal.discard_stdout()  # what is still buffered is dropped, not flushed again at exit
         sys.exit(0)
     except Exception as exc:  # a bug, not bad input: say so on one line unless debugging
         if os.environ.get("RBI_DEBUG"):

@@ -146,7 +146,14 @@ def ascii_only() -> bool:
 class StdoutUnwritable(Exception):
     """Standard output refused the results (a full disk or ``/dev/full``, ``rbi ... >&-``, an I/O
     error): the answer cannot reach the user. A reader that left (``| head``) is not this: that
-    stays :class:`BrokenPipeError`, which ends the run quietly."""
+    is :class:`ReaderLeft`, which ends the run quietly."""
+
+
+class ReaderLeft(Exception):
+    """The reader of standard output left (``rbi check a.yaml b.yaml | head -1``): the run ends
+    quietly with status 0. Not an OSError, so that neither click nor rich takes the broken pipe
+    for their own (each ends the run with a silent status 1, which ``check`` and ``audit`` use
+    for a failed check)."""
 
 
 class _ClosedStdout(io.TextIOBase):
@@ -191,7 +198,7 @@ class _GuardedStdout:
         try:
             return call(*args)
         except BrokenPipeError:
-            raise
+            raise ReaderLeft() from None
         except OSError as exc:
             raise StdoutUnwritable(exc.strerror or str(exc)) from None
 
