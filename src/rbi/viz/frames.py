@@ -15,7 +15,23 @@ from rbi.core.rotation import quaternion_to_matrix
 from rbi.viz.labels import label, plain, pyplot
 from rbi.viz.solids import MAX_POINT_SPHERES, part_quads, segments_for, shade
 
-PALETTE = ["#3f7fbf", "#d08a2a", "#4f9f5f", "#9a5fb0", "#6b8e23", "#2aa0a0", "#8c7b4f", "#5a6b8c"]
+PALETTE = [
+    "#3f7fbf",
+    "#d08a2a",
+    "#4f9f5f",
+    "#9a5fb0",
+    "#6b8e23",
+    "#2aa0a0",
+    "#8c7b4f",
+    "#5a6b8c",
+    "#c9a227",
+    "#d46fa8",
+    "#a0522d",
+    "#7fb8e0",
+]
+"""Colours of solid parts, by the part's index in the spec (:func:`part_colour`): twelve, so a
+body of up to twelve parts has no two parts of one colour. The HTML page draws with this list
+too (``palette`` in :func:`rbi.viz.motion.page_data`), and the legends name parts in it."""
 HOLE_RGBA = (0.88, 0.19, 0.19, 0.35)
 POINT_RGBA = (0.2, 0.2, 0.2, 1.0)
 VIEW_ELEVATION_DEG = 24.0
@@ -26,6 +42,11 @@ MAX_TITLE_CHARS = 60
 """Longest title drawn on a GIF frame (its name part is cut to :data:`rbi.viz.labels.MAX_LABEL_CHARS`)."""
 MAX_GIF_FRAMES = 1500
 """Most frames a GIF may have (a minute at 25 frames per second, some tens of MB)."""
+
+
+def part_colour(part: int) -> str:
+    """The colour (``#rrggbb``) a solid part is drawn with, from its index in the spec."""
+    return PALETTE[part % len(PALETTE)]
 
 
 def body_mesh(
@@ -51,9 +72,7 @@ def body_mesh(
             colours = np.tile(POINT_RGBA, (len(quads), 1))
         else:
             base = np.array(
-                to_rgba(
-                    PALETTE[item.get("part", index) % len(PALETTE)], 0.55 if item.get("stand_in") else 1.0
-                )
+                to_rgba(part_colour(item.get("part", index)), 0.55 if item.get("stand_in") else 1.0)
             )
             colours = np.tile(base, (len(quads), 1))
             if stripes:

@@ -16,6 +16,7 @@ from scipy.spatial import ConvexHull, QhullError
 
 from rbi.core.rotation import rotate, up_in_body
 from rbi.spec.geometry import moved
+from rbi.viz.frames import PALETTE
 from rbi.viz.solids import part_quads, segments_for
 
 MAX_TURN_PER_KEYFRAME = 0.5
@@ -97,6 +98,7 @@ def page_data(
         "omega": np.asarray(omega, dtype=float).tolist(),
         "trace": np.asarray(trace, dtype=float).tolist(),
         "trail_seconds": 0.0,
+        "palette": PALETTE,  # the page draws each solid part in the colour the PNG and legend give it
     }
 
 

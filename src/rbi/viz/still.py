@@ -17,7 +17,7 @@ import numpy as np
 from rbi.core.inertia import principal_axes
 from rbi.files.output import write_output
 from rbi.spec.geometry import part_geometry
-from rbi.viz.frames import HOLE_RGBA, PALETTE, body_mesh, cloud_points
+from rbi.viz.frames import HOLE_RGBA, body_mesh, cloud_points, part_colour
 from rbi.viz.labels import label, plain, plain_legend, pyplot
 from rbi.viz.motion import body_size, drawn_points, page_data, shifted
 from rbi.viz.solids import shade
@@ -82,7 +82,7 @@ def part_legend(parts: list[dict[str, Any]]) -> list[dict[str, Any]]:
         if part in entries:
             entries[part]["copies"] += 1
             continue
-        colour = "#333333" if item["kind"] in ("point", "points") else PALETTE[part % len(PALETTE)]
+        colour = "#333333" if item["kind"] in ("point", "points") else part_colour(part)
         entries[part] = {
             "name": label(item.get("name") or f"parts[{part}]"),
             "shape": str(item.get("shape", "")),
