@@ -3,18 +3,14 @@ its legend and the HTML page (one palette: rbi.viz.frames.PALETTE)."""
 
 from __future__ import annotations
 
-import json
 import re
 from importlib import resources
 
+import pytest
+
 from tests.conftest import run_rbi_inprocess
-
-
-def _page_data(path) -> dict:
-    text = path.read_text(encoding="utf-8")
-    return json.loads(
-        re.search(r'<script type="application/json" id="data">(.*?)</script>', text, re.S).group(1)
-    )
+from tests.viz.test_pictures_as_specified import CHROMIUM, shown_page
+from tests.viz.test_pictures_as_specified import page_data as _page_data
 
 
 def test_no_two_solid_parts_of_the_cubesat_share_a_colour(tmp_path, bodies):
@@ -41,3 +37,22 @@ def test_the_page_draws_parts_in_the_legends_colours(tmp_path, bodies):
             assert data["palette"][index % len(data["palette"])] == entry["colour"], entry["name"]
     template = resources.files("rbi.viz").joinpath("templates", "page.html").read_text(encoding="utf-8")
     assert "0x3f7fbf" not in template and "data.palette" in template
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium is not installed (apt-get install chromium)")
+def test_the_page_says_which_coloured_line_is_which_principal_axis(tmp_path, bodies):
+    # the page's legend read "coloured lines: principal axes · I1 = 0.000225 kg·m² · I2 = ..."
+    # in grey, so which of the red, green and blue lines was I1 could not be told; now each
+    # moment stands beside a line of its axis's colour (the PNG labels the lines I1, I2, I3)
+    dom = shown_page(tmp_path, bodies / "top_bolted.yaml")
+    axes = re.findall(
+        r'<span class="axis"><span class="line" style="background: ([^;"]+);?"></span>(.*?)</span>', dom
+    )
+    # the bolted top's principal moments about its centre of mass: 2.250022e-4, 2.651311e-4,
+    # 2.949333e-4 kg·m² (I3 = I_yy: the bolt at y = 0 leaves y a principal axis)
+    assert [text for _, text in axes] == [
+        "I1 = 0.000225 kg·m²",
+        "I2 = 0.0002651 kg·m²",
+        "I3 = 0.0002949 kg·m²",
+    ], axes
+    assert [colour for colour, _ in axes] == ["rgb(214, 39, 40)", "rgb(44, 160, 44)", "rgb(31, 119, 180)"]

@@ -85,10 +85,10 @@ def test_show_page_has_the_specs_coordinates_and_a_legend_of_parts(write_spec, t
 CHROMIUM = shutil.which("chromium") or shutil.which("chromium-browser")
 
 
-@pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium is not installed (apt-get install chromium)")
-def test_the_page_lists_the_parts_in_a_browser(tmp_path, bodies):
-    out = tmp_path / "wheel.html"
-    assert run_rbi_inprocess("show", bodies / "wheel_with_holes.yaml", "--out", out).returncode == 0
+def shown_page(tmp_path, spec) -> str:
+    """The DOM of `rbi show SPEC --out F.html` after headless Chromium has run its scripts."""
+    out = tmp_path / "shown.html"
+    assert run_rbi_inprocess("show", spec, "--out", out).returncode == 0
     dom = subprocess.run(
         [
             CHROMIUM,
@@ -108,6 +108,12 @@ def test_the_page_lists_the_parts_in_a_browser(tmp_path, bodies):
         timeout=60,
     ).stdout
     assert '<div id="status" hidden="">ready</div>' in dom, dom[-2000:]
+    return dom
+
+
+@pytest.mark.skipif(CHROMIUM is None, reason="headless Chromium is not installed (apt-get install chromium)")
+def test_the_page_lists_the_parts_in_a_browser(tmp_path, bodies):
+    dom = shown_page(tmp_path, bodies / "wheel_with_holes.yaml")
     items = re.findall(r'<li><span class="swatch"[^>]*></span>(.*?)</li>', dom)
     import yaml
 

@@ -134,9 +134,7 @@ def draw_body(body: Any, target: Any, title: str | None = None) -> int:
 
         data["legend"] = (
             f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
-            "axes · "
-            + " · ".join(a["label"] for a in data["principal_axes"])
-            + f" · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}"
+            f"axes (below) · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}"
         )
         write_output(target, html_page(data))
     else:
