@@ -116,3 +116,40 @@ def test_the_table_of_thousands_of_parts_lists_the_first_and_counts_the_rest(wri
     assert float(total.split()[1]) == pytest.approx(1.0, rel=1e-12)
     assert len(json.loads(rbi("parts", path, "--format", "json").stdout)["parts"]) == 1000
     assert len(rbi("parts", path, "--format", "csv").stdout.splitlines()) == 1001
+
+
+def test_a_holes_volume_has_one_sign_in_every_output_form():
+    # bodies/wheel_with_holes.yaml: six 11 mm-radius, 16.07 mm-long drillings in aluminium (2700 kg/m³ =
+    # 0.0027 g/mm³). `rbi parts` printed hole-1's volume as -6107.26 mm³ in the table and as
+    # +6107.256... in --format json and csv: one column, two signs. Now every form gives it
+    # negative, as its mass, and the parts' volumes add up to the body's.
+    path = BODIES / "wheel_with_holes.yaml"
+    out, _ = parts_json(path)
+    hole = next(p for p in out["parts"] if p["name"] == "hole-1")
+    drilled = hole["mass"] / 0.0027  # mm³: its mass over the density, negative for a hole
+    assert hole["volume"] == pytest.approx(drilled, rel=1e-12) and hole["volume"] < 0
+    assert hole["implied_density"] == pytest.approx(0.0027, rel=1e-12)
+    assert sum(p["volume"] for p in out["parts"]) == pytest.approx(out["volume"], rel=1e-14)
+    csv_rows = rbi("parts", path, "--format", "csv").stdout.splitlines()
+    header, hole_row = csv_rows[0].split(","), next(r for r in csv_rows if r.startswith("hole-1,")).split(",")
+    assert float(hole_row[header.index("volume")]) == pytest.approx(drilled, rel=1e-12)
+    table_row = next(
+        line for line in rbi("parts", path).stdout.splitlines() if line.split()[:1] == ["hole-1"]
+    )
+    assert float(table_row.split()[5]) == pytest.approx(
+        drilled, rel=1e-5
+    )  # part, shape, (hole), mass, share, volume
+
+
+def test_the_mean_density_of_the_table_is_in_json_too():
+    # the table's total row gave the top's mean density, 4605 kg/m³ (0.5 kg in 1.0857e-4 m³),
+    # and --format json had no such number
+    out, _ = parts_json(BODIES / "top.yaml")
+    cone = math.pi * 0.04**2 * 0.06 / 3
+    stem = math.pi * 0.008**2 * 0.04
+    assert out["mean_density"] == pytest.approx(0.5 / (cone + stem), rel=1e-12)
+    total = next(
+        line for line in rbi("parts", BODIES / "top.yaml").stdout.splitlines() if line.startswith(" total")
+    )
+    assert float(total.split()[-1]) == pytest.approx(out["mean_density"], rel=1e-3)
+    assert parts_json(BODIES / "top_bolted.yaml")[0]["mean_density"] is None  # the bolt has no volume

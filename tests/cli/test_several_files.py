@@ -254,6 +254,6 @@ def test_parts_table_ends_with_a_total_row(monkeypatch):
 
 def test_holes_are_taken_from_the_total_volume():
     out = json.loads(rbi("parts", BODIES / "wheel_with_holes.yaml", "--format", "json").stdout)
-    signed = sum((-1 if p["hole"] else 1) * p["volume"] for p in out["parts"])
-    assert out["volume"] == pytest.approx(signed, rel=1e-14)
+    assert all((p["volume"] < 0) == p["hole"] for p in out["parts"])  # a hole's volume is negative
+    assert out["volume"] == pytest.approx(sum(p["volume"] for p in out["parts"]), rel=1e-14)
     assert out["mass"] == pytest.approx(out["volume"] * 0.0027, rel=1e-12)  # aluminium throughout, g/mm³

@@ -147,7 +147,7 @@ def test_parts_shows_one_row_per_written_part_with_all_copies(write_spec):
     plate, holes = out["parts"]
     hole_volume = 8 * math.pi * 0.05**2 * 0.1
     assert holes["mass"] == pytest.approx(-1000 * hole_volume, rel=1e-14)
-    assert holes["volume"] == pytest.approx(hole_volume, rel=1e-14)
+    assert holes["volume"] == pytest.approx(-hole_volume, rel=1e-14)  # negative, as the mass
     assert holes["implied_density"] == pytest.approx(1000, rel=1e-14)
     assert plate["mass"] + holes["mass"] == pytest.approx(out["mass"], rel=1e-14)
     np.testing.assert_allclose(holes["center_of_mass"], 0, atol=1e-15)

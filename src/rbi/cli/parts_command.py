@@ -34,14 +34,14 @@ def parts_of(file: str):
     """What `rbi parts` gives for one file (:class:`rbi.cli.each_file.FileReport`).
 
     JSON: the keys docs/parts.md lists, and for each part ``volume`` (length³, all copies of a pattern;
-    null for a part without one), ``principal_moments`` (ascending, about the part's own centre
+    negative for a hole, as its mass; null for a part without one), ``principal_moments`` (ascending, about the part's own centre
     of mass; negative for a hole); at the top ``volume``, the solids' volume with holes taken
-    away (parts without a volume add none), and ``principal_moments`` of the body about its
-    centre of mass.
+    away (parts without a volume add none), ``mean_density`` (mass / volume, null unless every
+    part has a volume) and ``principal_moments`` of the body about its centre of mass.
     """
     body = api.load(file)  # its warnings hold the mesh notes (repair, overlaps) too
     rows = _part_rows(body)
-    volume = sum((-1 if row["hole"] else 1) * row["volume"] for row in rows if row["volume"] is not None)
+    volume = sum(row["volume"] for row in rows if row["volume"] is not None)  # a hole's is negative
     every_part_has_volume = all(row["volume"] is not None for row in rows)
     total = {
         "volume": volume if any(row["volume"] is not None for row in rows) else None,
@@ -55,6 +55,7 @@ def parts_of(file: str):
         "mass": body.mass,
         "center_of_mass": body.center_of_mass,
         "volume": total["volume"],
+        "mean_density": total["mean_density"],
         "principal_moments": total["principal_moments"],
         "parts": rows,
     }
@@ -72,6 +73,7 @@ def _part_rows(body) -> list[dict]:
     rows = []
     for part in parts:
         density = abs(part.mass) / part.volume if part.volume else None
+        volume = None if part.volume is None else (-part.volume if part.hole else part.volume)
         rows.append(
             {
                 "name": part.name,
@@ -83,7 +85,7 @@ def _part_rows(body) -> list[dict]:
                 "inertia_about_com": part.inertia_about_com,
                 "principal_moments": part.principal_moments,
                 "inertia_share": part.inertia_share,
-                "volume": part.volume,
+                "volume": volume,  # negative for a hole, as the mass: the parts add up to the total
                 "implied_density": density,
                 "implied_density_si": None if density is None else density * to_si,
             }
@@ -117,7 +119,7 @@ def _table(body, rows, total):
                 row["shape"] + (" (hole)" if row["hole"] else ""),
                 number(row["mass"]),
                 number(100 * row["mass_share"], 4),
-                _signed_volume(row),
+                "—" if row["volume"] is None else number(row["volume"]),
                 number(row["implied_density"], 4),
             )
             for row in rows
@@ -191,8 +193,3 @@ def _titled_table(title: str, names: list, headers, cells, total_row):
     t.add_section()
     t.add_row("total", *total_row)
     return t
-
-
-def _signed_volume(row) -> str:
-
-    return "—" if row["volume"] is None else number((-1 if row["hole"] else 1) * row["volume"])
