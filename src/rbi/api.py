@@ -203,7 +203,7 @@ def unit_vector(direction: Sequence[float] | np.ndarray) -> np.ndarray:
         return unit_axis(direction)
     except (ValueError, TypeError):
         raise ArgumentError(
-            "direction", f"must be a non-zero finite vector (x, y, z), got {direction!r}"
+            "direction", f"must be a non-zero finite vector (x, y, z), got {literal(direction)}"
         ) from None
 
 
@@ -521,7 +521,7 @@ class Body(TableRepr):
 
         for parameter, value, known in (("length", length, LENGTH_UNITS), ("mass", mass, MASS_UNITS)):
             if value not in known:
-                raise ArgumentError(parameter, f"expected one of {', '.join(known)}, got {value!r}")
+                raise ArgumentError(parameter, f"expected one of {', '.join(known)}, got {literal(value)}")
         return Body(convert_body(self._loaded, length, mass), self._raw)
 
     def moment_about_axis(
@@ -536,7 +536,7 @@ class Body(TableRepr):
             return moment_about_axis(matrix, axis)
         except ValueError:
             raise ArgumentError(
-                "axis", f"must be a non-zero finite direction (x, y, z), got {axis!r}"
+                "axis", f"must be a non-zero finite direction (x, y, z), got {literal(axis)}"
             ) from None
 
     def check(self) -> list[Check]:
@@ -616,7 +616,7 @@ class Body(TableRepr):
         from rbi.formats.inertial_xml import FORMATS, export_xml
 
         if to not in FORMATS:
-            raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {to!r}")
+            raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {literal(to)}")
         if diagonal and to != "mjcf":
             raise ArgumentError("diagonal", "only for to='mjcf' (URDF and SDF take the full matrix)")
         length, mass = self.units["length"], self.units["mass"]
@@ -660,7 +660,9 @@ def _rotation(axes: Any) -> np.ndarray:
     matrix, or (axis, degrees) pairs applied in order about world axes."""
 
     if isinstance(axes, str):
-        raise ArgumentError("axes", f"expected a 3x3 rotation matrix or (axis, degrees) pairs, got {axes!r}")
+        raise ArgumentError(
+            "axes", f"expected a 3x3 rotation matrix or (axis, degrees) pairs, got {literal(axes)}"
+        )
     if np.shape(axes) == (3, 3) and not isinstance(np.asarray(axes, dtype=object)[0, 0], str):
         R = np.asarray(axes, dtype=float)
         orthonormal = np.all(np.isfinite(R)) and np.allclose(R @ R.T, np.eye(3), atol=1e-9)
@@ -677,12 +679,12 @@ def _rotation(axes: Any) -> np.ndarray:
         if axis not in ("x", "y", "z") or not np.isfinite(degrees):
             raise ArgumentError(
                 "axes",
-                f"expected (axis, degrees) pairs with axis 'x', 'y' or 'z', e.g. [('y', 30)], got {turn!r}",
+                f"expected (axis, degrees) pairs with axis 'x', 'y' or 'z', e.g. [('y', 30)], got {literal(turn)}",
             )
         if not angle_is_kept(degrees):
             raise ArgumentError(
                 "axes",
-                f"{degrees!r} degrees is too large to be a turn: rounding loses it "
+                f"{literal(degrees)} degrees is too large to be a turn: rounding loses it "
                 f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
             )
         turns.append((axis, np.radians(degrees)))
@@ -1270,8 +1272,8 @@ def _chosen_links(robot: Any, names: list[str]) -> list[Any]:
         hint = difflib.get_close_matches(missing[0], [n for n in by_name if n], n=1)
         raise ArgumentError(
             "links",
-            f"{robot.path} has no {robot.link_word} named {missing[0]!r} with an <inertial>"
-            + (f" (did you mean {hint[0]!r}?)" if hint else ""),
+            f"{robot.path} has no {robot.link_word} named {literal(missing[0])} with an <inertial>"
+            + (f" (did you mean {literal(hint[0])}?)" if hint else ""),
         )
     return [by_name[name] for name in dict.fromkeys(names)]
 

@@ -10,7 +10,11 @@ layer and the API all raise the same type.
 
 from __future__ import annotations
 
+import math
+import re
+import reprlib
 from collections.abc import Callable
+from typing import Any
 
 
 class SpecError(Exception):
@@ -66,7 +70,8 @@ class ArgumentError(SpecError, ValueError):
     def named(self, name: Callable[[str], str]) -> str:
         """The message with each parameter spelled ``name(parameter)``; an ``item`` follows its
         parameter as ``name(parameter + "[]")`` formats it (``{}`` stands for the item)."""
-        detail = self.detail.format_map(_Names(name))
+        names = _Names(name)
+        detail = _PLACEHOLDER.sub(lambda m: names[m[1]] if m[1] else m[0][0], self.detail)
         where = f"{self.where}: " if getattr(self, "where", None) else ""
         if not self.parameters:
             return where + detail
@@ -77,10 +82,31 @@ class ArgumentError(SpecError, ValueError):
         return f"{where}{head}: {detail}"
 
 
+_PLACEHOLDER = re.compile(r"\{\{|\}\}|\{([A-Za-z_]\w*(?:=[^{}]*)?)\}")
+"""In an :class:`ArgumentError` detail: ``{{`` and ``}}`` (a brace as written) or ``{name}`` /
+``{name=VALUE}`` (a parameter); any other brace is text (a value that was not passed through
+:func:`literal`, such as ``{0}`` or a dict's repr, prints as it is instead of breaking the message)."""
+
+
+def shown(value: Any, width: int = 40) -> str:
+    """``value`` for a message in at most ``width`` characters, built without walking all of a
+    large list or mapping (a value shared through YAML aliases may stand for millions); an
+    integer no double holds is told by its number of digits."""
+
+    if isinstance(value, int) and value.bit_length() > 64:  # too long to print (or to convert)
+        return f"an integer of {int(value.bit_length() * math.log10(2)) + 1} digits"
+    shorter = reprlib.Repr()
+    shorter.maxlevel, shorter.maxlist, shorter.maxdict = 3, 4, 4
+    shorter.maxstring = shorter.maxother = max(width, 12)
+    text = shorter.repr(value)
+    return text if len(text) <= width else text[: width - 3] + "..."
+
+
 def literal(value: object, quoted: bool = True) -> str:
-    """``repr(value)`` (or ``str(value)`` when not ``quoted``) for an :class:`ArgumentError`
-    detail, its braces doubled so they print as written (single braces name parameters)."""
-    text = repr(value) if quoted else str(value)
+    """:func:`shown` ``value`` (up to 200 characters; ``str(value)`` when not ``quoted``) for an
+    :class:`ArgumentError` detail, its braces doubled so they print as written (single braces
+    name parameters)."""
+    text = shown(value, 200) if quoted else str(value)
     return text.replace("{", "{{").replace("}", "}}")
 
 

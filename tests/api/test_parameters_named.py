@@ -167,3 +167,24 @@ def test_audit_out_and_validate_paths_are_named(tmp_path):
     with pytest.raises(TypeError, match="^paths: expected a path"):
         rbi.validate(5)
     assert not (tmp_path / "fixed.txt").exists()
+
+
+BRACED = {
+    "tilt_axis": lambda top: rbi.simulate(top, spin=1.0, tilt_axis={"a": 1}, duration=0.01),
+    "method": lambda top: rbi.simulate(top, spin=1.0, method={"x"}, duration=0.01),
+    "runs": lambda top: rbi.sweep(top, runs={"a": 1}, duration=0.01),
+    "vary": lambda top: rbi.sweep(top, vary={"{x}": 1.0}, duration=0.01),
+    "dask": lambda top: rbi.sweep(top, spin=1.0, dask={"a"}, duration=0.01),
+}
+
+
+@pytest.mark.parametrize("parameter", BRACED)
+def test_a_value_with_braces_is_named_as_given(top, parameter):
+    """A value holding braces (a dict, a set, a path '{x}') is shown as given after the
+    parameter's name: it is not taken as a placeholder ('Space not allowed in string format
+    specifier', 'got 'x'' for {'x'}, '{x}' printed as 'x') and not a TypeError of re."""
+    with pytest.raises(ValueError) as caught:
+        BRACED[parameter](top)
+    message = str(caught.value)
+    assert message.split(": ")[0].endswith(parameter) or f"{parameter}[" in message, message
+    assert "{" in message and "format" not in message, message

@@ -9,6 +9,7 @@ import pytest
 import rbi
 from rbi.cli.option_values import error_line, option_name, parse_vector, spin_axis_option, sweep_values
 from rbi.errors import ArgumentError, InputError
+from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess
 
 
 def test_ranges_single_values_and_draws_parse():
@@ -59,3 +60,27 @@ def test_api_errors_are_spelled_with_the_options():
     assert str(error) == "a.yaml: vary['parts.x.mass']: no such field (see mass_properties)"
     assert error_line(error) == "a.yaml: --vary parts.x.mass: no such field (see --mass-properties)"
     assert isinstance(error, ValueError) and isinstance(error, rbi.SpecError)
+
+
+@pytest.mark.parametrize(
+    "args, shown",
+    [
+        (["simulate", "top.yaml", "--tilt-axis", "{0}"], "rbi: --tilt-axis: must be x or y (got '{0}')"),
+        (["simulate", "top.yaml", "--tilt-axis", "{a}"], "rbi: --tilt-axis: must be x or y (got '{a}')"),
+        (
+            ["simulate", "top.yaml", "--method", "{0}"],
+            "--method: must be one of default, rk45, dop853, exact (got '{0}')",
+        ),
+        (["sweep", "top.yaml", "--vary", "{0}=1:2:2"], "--vary {0}: {0}: no such field in the spec"),
+        (
+            ["sweep", "top.yaml", "--vary", "parts.{spin}.mass=1:2:2"],
+            "parts has no entry '{spin}' (parts: cone, stem)",
+        ),
+    ],
+)
+def test_option_values_with_braces_are_one_line_as_written(args, shown):
+    """`rbi simulate top.yaml --tilt-axis '{0}'` printed 'internal error: ValueError: Format string
+    contains positional fields' (exit 1) and '{a}' came out as '--a': the value was read as a
+    placeholder of the message. Now it is exit 2 with the value as typed."""
+    args[1] = str(BODIES / args[1])
+    one_line_exit_2(run_rbi_inprocess(*args), shown)

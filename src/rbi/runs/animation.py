@@ -8,7 +8,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.errors import ArgumentError, InputError
+from rbi.errors import ArgumentError, InputError, literal
 from rbi.files.output import write_output
 from rbi.runs.run import PreparedRun
 from rbi.sim.diagnostics import tilt_deg
@@ -84,7 +84,7 @@ def write_animation(
     from rbi.viz.frames import MAX_GIF_FRAMES, frame_indices, write_gif
 
     if not (0.1 <= speed <= 2.0):
-        raise ArgumentError("speed", f"must be between 0.1 and 2 (got {speed!r})")
+        raise ArgumentError("speed", f"must be between 0.1 and 2 (got {literal(speed)})")
     if not 1 <= fps <= 60:
         raise ArgumentError("fps", f"must be between 1 and 60 (got {fps})")
     gif_frames = int(run.duration * fps) + 1 if target.format == "gif" else 0

@@ -20,7 +20,7 @@ import numpy as np
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, unit_vector
 from rbi.core.spin_axis import default_spin_axis
 from rbi.core.validity import finite, whole
-from rbi.errors import ArgumentError, InputError
+from rbi.errors import ArgumentError, InputError, literal
 from rbi.runs.values import require_numbers, vector_value
 from rbi.sim.api import SimulationError, check_duration, check_method, check_rtol, simulate
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
@@ -47,11 +47,11 @@ def check_run_settings(duration: Any, tilt_axis: Any, gravity: Any, max_steps: A
     require_numbers(integral=True, max_steps=max_steps)
     check_duration(duration)
     if not isinstance(tilt_axis, str) or tilt_axis.lower() not in ("x", "y"):
-        raise ArgumentError("tilt_axis", f"must be x or y (got {tilt_axis!r})")
+        raise ArgumentError("tilt_axis", f"must be x or y (got {literal(tilt_axis)})")
     if gravity is not None and not (finite(gravity) and gravity >= 0.0):
-        raise ArgumentError("gravity", f"must be a finite number of m/s² >= 0 (got {gravity!r})")
+        raise ArgumentError("gravity", f"must be a finite number of m/s² >= 0 (got {literal(gravity)})")
     if max_steps is not None and not (whole(max_steps) and max_steps >= 1):
-        raise ArgumentError("max_steps", f"must be at least 1 (got {max_steps!r})")
+        raise ArgumentError("max_steps", f"must be at least 1 (got {literal(max_steps)})")
     check_rtol(rtol)
 
 
@@ -75,13 +75,13 @@ def check_run_options(
     if spin is not None and omega is not None:
         raise ArgumentError(("spin", "omega"), "give one or the other, not both")
     if spin is not None and not finite(spin):
-        raise ArgumentError("spin", f"must be a finite number (got {spin!r})")
+        raise ArgumentError("spin", f"must be a finite number (got {literal(spin)})")
     if not finite(tilt_deg):
-        raise ArgumentError("tilt_deg", f"must be a finite number (got {tilt_deg!r})")
+        raise ArgumentError("tilt_deg", f"must be a finite number (got {literal(tilt_deg)})")
     if not angle_is_kept(tilt_deg):
         raise ArgumentError(
             "tilt_deg",
-            f"{tilt_deg!r} degrees is too large to be a turn: rounding loses it "
+            f"{literal(tilt_deg)} degrees is too large to be a turn: rounding loses it "
             f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
         )
     check_run_settings(
@@ -95,7 +95,7 @@ def check_samples(samples: Any, most: int = MAX_SAMPLES, what: str = "") -> None
     """Refuse a number of samples outside 1 … ``most`` (``what``: said after the range)."""
     require_numbers(integral=True, samples=samples)
     if not (whole(samples) and 1 <= samples <= most):
-        raise ArgumentError("samples", f"must be between 1 and {most:,}{what} (got {samples!r})")
+        raise ArgumentError("samples", f"must be between 1 and {most:,}{what} (got {literal(samples)})")
 
 
 def spin_axis_value(value: str | Sequence[float] | None) -> list[float] | None:
@@ -110,7 +110,7 @@ def spin_axis_value(value: str | Sequence[float] | None) -> list[float] | None:
         sign = -1.0 if text.startswith("-") else 1.0
         if text.lstrip("+-") not in named:
             raise ArgumentError(
-                "spin_axis", f"must be x, y, z or a direction (3 numbers) in body axes (got {value!r})"
+                "spin_axis", f"must be x, y, z or a direction (3 numbers) in body axes (got {literal(value)})"
             )
         return [sign * c + 0.0 for c in named[text.lstrip("+-")]]
     vector = vector_value(value, "spin_axis")

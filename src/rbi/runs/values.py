@@ -7,7 +7,7 @@ import math
 import numbers
 from typing import Any
 
-from rbi.errors import ArgumentError
+from rbi.errors import ArgumentError, literal
 
 
 def vector_value(value: Any, parameter: str, count: int = 3) -> list[float]:
@@ -20,7 +20,7 @@ def vector_value(value: Any, parameter: str, count: int = 3) -> list[float]:
         except (TypeError, ValueError):
             values = []
     if len(values) != count or not all(math.isfinite(v) for v in values):
-        raise ArgumentError(parameter, f"expected {count} finite numbers, got {value!r}")
+        raise ArgumentError(parameter, f"expected {count} finite numbers, got {literal(value)}")
     return values
 
 

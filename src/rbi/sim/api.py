@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core.validity import finite, whole
-from rbi.errors import ArgumentError
+from rbi.errors import ArgumentError, literal
 from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
 from rbi.sim.scene import Scene
 
@@ -83,20 +83,22 @@ def sample_times(duration: float, samples: int) -> np.ndarray:
 def check_method(method: Any) -> None:
     """ArgumentError (a ValueError) unless ``method`` is one of :data:`METHODS`."""
     if method not in METHODS:
-        raise ArgumentError("method", f"must be one of {', '.join(METHODS)} (got {method!r})")
+        raise ArgumentError("method", f"must be one of {', '.join(METHODS)} (got {literal(method)})")
 
 
 def check_duration(duration: Any) -> None:
     """ArgumentError (a ValueError) unless ``duration`` is a finite number of seconds >= 0."""
     if not (finite(duration) and duration >= 0.0):
-        raise ArgumentError("duration", f"must be a finite number of seconds >= 0 (got {duration!r})")
+        raise ArgumentError("duration", f"must be a finite number of seconds >= 0 (got {literal(duration)})")
 
 
 def check_rtol(rtol: Any) -> None:
     """ArgumentError (a ValueError) unless ``rtol`` is None (the method's own) or in
     :data:`RTOL_RANGE`."""
     if rtol is not None and not (finite(rtol) and RTOL_RANGE[0] <= rtol < RTOL_RANGE[1]):
-        raise ArgumentError("rtol", f"must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {rtol!r})")
+        raise ArgumentError(
+            "rtol", f"must be between {RTOL_RANGE[0]:g} and {RTOL_RANGE[1]:g} (got {literal(rtol)})"
+        )
 
 
 def validate_run(duration: Any, samples: Any, rtol: Any, method: Any) -> None:
@@ -105,7 +107,7 @@ def validate_run(duration: Any, samples: Any, rtol: Any, method: Any) -> None:
     before any work, and bounds ``samples`` above)."""
     check_duration(duration)
     if not (whole(samples) and samples >= 1):
-        raise ArgumentError("samples", f"must be a whole number >= 1 (got {samples!r})")
+        raise ArgumentError("samples", f"must be a whole number >= 1 (got {literal(samples)})")
     check_rtol(rtol)
     check_method(method)
 

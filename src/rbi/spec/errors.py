@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import difflib
-import math
 import re
-import reprlib
 from typing import Any
 
-from rbi.errors import InputError  # noqa: F401  (the spec layer's errors are InputErrors)
+from rbi.errors import (
+    InputError,  # noqa: F401  (the spec layer's errors are InputErrors)
+    shown,
+)
 
 
 def format_location(loc: tuple[Any, ...], raw: Any) -> tuple[str, list[str]]:
@@ -53,48 +54,36 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         hint = difflib.get_close_matches(field, known_fields or [], n=1)
         return "unknown field" + (f" (did you mean '{hint[0]}'?)" if hint else "")
     if kind == "greater_than":
-        return f"must be greater than {ctx.get('gt'):g} (got {_show(value)})"
+        return f"must be greater than {ctx.get('gt'):g} (got {shown(value)})"
     if tuple(error["loc"]) == ("parts",) and kind in ("too_short", "list_type"):
-        return f"must be a non-empty list of parts (got {_show(value)})"
+        return f"must be a non-empty list of parts (got {shown(value)})"
     if kind == "finite_number":
-        return f"must be a finite number (got {_show(value)})"
+        return f"must be a finite number (got {shown(value)})"
     if kind in ("float_type", "float_parsing", "int_type"):
-        return f"must be a number (got {_show(value)})"
+        return f"must be a number (got {shown(value)})"
     if kind in ("too_short", "too_long"):
-        return f"must be a list of {ctx.get('min_length', ctx.get('max_length'))} numbers [x, y, z] (got {_show(value)})"
+        return f"must be a list of {ctx.get('min_length', ctx.get('max_length'))} numbers [x, y, z] (got {shown(value)})"
     if kind == "list_type":
-        return f"must be a list of 3 numbers [x, y, z] (got {_show(value)})"
+        return f"must be a list of 3 numbers [x, y, z] (got {shown(value)})"
     if kind == "literal_error":
-        return f"must be one of {ctx.get('expected')} (got {_show(value)})"
+        return f"must be one of {ctx.get('expected')} (got {shown(value)})"
     if kind == "union_tag_invalid":
         shapes = re.findall(r"'([^']+)'", str(ctx.get("expected_tags", "")))
         hint = difflib.get_close_matches(str(ctx.get("tag")), shapes, n=1)
         return (
-            f"shape: unknown shape {_show(ctx.get('tag'))}"
+            f"shape: unknown shape {shown(ctx.get('tag'))}"
             + (f" (did you mean '{hint[0]}'?)" if hint else "")
             + f"; expected one of {ctx.get('expected_tags')}"
         )
     if kind == "union_tag_not_found":
         return "shape: missing required field (which solid is this part?)"
     if kind in ("model_type", "model_attributes_type", "dict_type"):
-        return f"must be a mapping of fields (got {_show(value)})"
+        return f"must be a mapping of fields (got {shown(value)})"
     if kind == "string_type":
-        return f"must be text (got {_show(value)})"
+        return f"must be text (got {shown(value)})"
     if kind == "value_error":
         return str(ctx.get("error", error["msg"]))
     return error["msg"]
-
-
-def _show(value: Any) -> str:
-    """``value`` for a message in at most 40 characters, built without walking all of a large
-    list or mapping (a value shared through YAML aliases may stand for millions)."""
-
-    if isinstance(value, int) and value.bit_length() > 64:  # too long to print (or to convert)
-        return f"an integer of {int(value.bit_length() * math.log10(2)) + 1} digits"
-    shorter = reprlib.Repr()
-    shorter.maxlevel, shorter.maxlist, shorter.maxdict, shorter.maxstring, shorter.maxother = 3, 4, 4, 40, 40
-    text = shorter.repr(value)
-    return text if len(text) <= 40 else text[:37] + "..."
 
 
 def part_label(index: int, part) -> str:

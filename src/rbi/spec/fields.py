@@ -14,7 +14,7 @@ from typing import Annotated, Any
 from pydantic import AfterValidator, BaseModel, ConfigDict, Field, PlainValidator, WithJsonSchema
 
 from rbi.core.validity import subnormal_problem
-from rbi.spec.errors import _show
+from rbi.errors import shown
 from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 
 
@@ -43,7 +43,7 @@ def _is_number(value: Any) -> bool:
 
 def _finite_number(value: Any, what: str = "a number") -> float:
     if not _is_number(value):
-        raise ValueError(f"must be {what} (got {_show(value)})")
+        raise ValueError(f"must be {what} (got {shown(value)})")
     if not math.isfinite(value):
         raise ValueError(f"must be a finite number (got {value!r})")
     return float(value)
@@ -62,7 +62,7 @@ def _looks_numeric(text: str) -> bool:
 
 def _flag(value: Any) -> bool:
     if not isinstance(value, bool):
-        raise ValueError(f"must be true or false (got {_show(value)})")
+        raise ValueError(f"must be true or false (got {shown(value)})")
     return value
 
 
@@ -169,7 +169,7 @@ def _inertia_matrix(value: Any) -> list[list[float]]:
         and len(value) == 3
         and all(isinstance(r, list) and len(r) == 3 for r in value)
     ):
-        raise ValueError(f"must be {_MATRIX_FORMS} (got {_show(value)})")
+        raise ValueError(f"must be {_MATRIX_FORMS} (got {shown(value)})")
     rows = []
     for i, row in enumerate(value):
         rows.append([_component(f"[{i}][{j}]", v) for j, v in enumerate(row)])
@@ -227,7 +227,7 @@ def _tolerance(value: Any) -> float | str:
         match = _PERCENT.match(value)
         if not match or not math.isfinite(float(match.group(1))):
             raise ValueError(
-                f"must be a percentage such as 1% or an absolute number in file units (got {_show(value)})"
+                f"must be a percentage such as 1% or an absolute number in file units (got {shown(value)})"
             )
         return value.strip()
     number = _finite_number(value, "a percentage such as 1% or an absolute number in file units")
@@ -267,7 +267,7 @@ def _about(value: Any) -> str | list[float]:
         return value.strip().lower()
     if isinstance(value, list) and len(value) == 3:
         return [_component(f"[{i}]", v) for i, v in enumerate(value)]
-    raise ValueError(f"must be com, origin, pivot or a point [x, y, z] (got {_show(value)})")
+    raise ValueError(f"must be com, origin, pivot or a point [x, y, z] (got {shown(value)})")
 
 
 AboutPoint = Annotated[

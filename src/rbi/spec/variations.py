@@ -15,7 +15,7 @@ import re
 from dataclasses import dataclass
 from typing import Any
 
-from rbi.errors import ArgumentError
+from rbi.errors import ArgumentError, literal
 
 _TOKEN = re.compile(r"([^.\[\]]+)|\[(-?\d+)\]")
 
@@ -55,7 +55,7 @@ def resolve(raw: Any, text: str) -> FieldPath:
     try:
         tokens = parse_path(text)
     except ValueError as exc:
-        raise ArgumentError("vary", str(exc), item=text) from None
+        raise ArgumentError("vary", literal(exc, quoted=False), item=text) from None
     steps: list[Any] = []
     node = raw
     k = 0
@@ -67,28 +67,32 @@ def resolve(raw: Any, text: str) -> FieldPath:
                 index, used = _list_index(node, token), 1
             if index is None:
                 names = [p.get("name") for p in node if isinstance(p, dict) and p.get("name") is not None]
-                known = f" (parts: {', '.join(map(str, names[:12]))})" if names else ""
-                raise ArgumentError("vary", f"{where} has no entry {token!r}{known}", item=text)
+                known = f" (parts: {literal(', '.join(map(str, names[:12])), quoted=False)})" if names else ""
+                raise ArgumentError(
+                    "vary", f"{literal(where, quoted=False)} has no entry {literal(token)}{known}", item=text
+                )
             steps.append(index)
             node = node[index]
             k += used
             continue
         if isinstance(node, dict):
             if not isinstance(token, str) or token not in node:
-                fields = ", ".join(sorted(map(str, node)))
+                fields = literal(", ".join(sorted(map(str, node))), quoted=False)
                 raise ArgumentError(
                     "vary",
-                    f"{_written(tokens[: k + 1])}: no such field in the spec (fields here: {fields})",
+                    f"{literal(_written(tokens[: k + 1]), quoted=False)}: no such field in the spec (fields here: {fields})",
                     item=text,
                 )
             steps.append(token)
             node = node[token]
             k += 1
         else:
-            raise ArgumentError("vary", f"{where} is a single value, not a list or mapping", item=text)
+            raise ArgumentError(
+                "vary", f"{literal(where, quoted=False)} is a single value, not a list or mapping", item=text
+            )
     if isinstance(node, bool) or not isinstance(node, (int, float)):
-        shown = type(node).__name__ if isinstance(node, (dict, list)) else repr(node)[:40]
-        raise ArgumentError("vary", f"must name a number in the spec (it holds {shown})", item=text)
+        held = type(node).__name__ if isinstance(node, (dict, list)) else literal(node)
+        raise ArgumentError("vary", f"must name a number in the spec (it holds {held})", item=text)
     return FieldPath(text, tuple(steps))
 
 

@@ -163,7 +163,7 @@ def check_address(address: str) -> None:
 
     if address == "local":
         return
-    found = _ADDRESS.fullmatch(address)
+    found = _ADDRESS.fullmatch(address) if isinstance(address, str) else None
     if found is None or not 0 < int(found.group(3)) < 65536:
         raise ArgumentError(
             "dask",

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core.validity import whole
-from rbi.errors import ArgumentError, InputError
+from rbi.errors import ArgumentError, InputError, literal
 from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, spin_axis_value
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
@@ -73,16 +73,16 @@ def check_settings(settings: SweepSettings) -> None:
     mass properties) a spin or tilt, before any file is read."""
 
     if not whole(settings.runs) or settings.runs < 1:
-        raise ArgumentError("runs", f"must be a whole number, at least 1 (got {settings.runs!r})")
+        raise ArgumentError("runs", f"must be a whole number, at least 1 (got {literal(settings.runs)})")
     if not whole(settings.seed) or settings.seed < 0:
-        raise ArgumentError("seed", f"must be a whole number 0 or above (got {settings.seed!r})")
+        raise ArgumentError("seed", f"must be a whole number 0 or above (got {literal(settings.seed)})")
     check_run_settings(
         settings.duration, settings.tilt_axis, settings.gravity, settings.max_steps, settings.rtol
     )
     check_samples(settings.samples, MAX_SWEEP_SAMPLES, " for a sweep")
     spin_axis_value(settings.spin_axis)
     if settings.workers is not None and not (whole(settings.workers) and 1 <= settings.workers <= 1024):
-        raise ArgumentError("workers", f"must be between 1 and 1024 (got {settings.workers!r})")
+        raise ArgumentError("workers", f"must be between 1 and 1024 (got {literal(settings.workers)})")
     if settings.mass_properties and (_nonzero(settings.spin) or _nonzero(settings.tilt_deg)):
         raise ArgumentError(
             "mass_properties", "takes {vary} only (no {spin} or {tilt_deg}: nothing is simulated)"
@@ -347,8 +347,8 @@ def _axis(name: str, value: Any, parameter: str | None = None):
         return axis_of(name, value)
     except (TypeError, ValueError) as exc:
         if parameter is None:
-            raise ArgumentError(name, str(exc)) from None
-        raise ArgumentError(parameter, str(exc), item=name) from None
+            raise ArgumentError(name, literal(exc, quoted=False)) from None
+        raise ArgumentError(parameter, literal(exc, quoted=False), item=name) from None
 
 
 def _label(name: str) -> str:
