@@ -674,7 +674,7 @@ def _rotation(axes: Any) -> np.ndarray:
         try:
             axis, degrees = turn
             axis, degrees = str(axis).strip().lower(), float(degrees)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             axis, degrees = "", float("nan")
         if axis not in ("x", "y", "z") or not np.isfinite(degrees):
             raise ArgumentError(

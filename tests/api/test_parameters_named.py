@@ -169,6 +169,48 @@ def test_audit_out_and_validate_paths_are_named(tmp_path):
     assert not (tmp_path / "fixed.txt").exists()
 
 
+HUGE = 10**400  # a Python int no double can hold: float(HUGE) raises OverflowError
+
+HUGE_ARGUMENTS = {
+    "spin": lambda top: rbi.simulate(top, spin=HUGE, duration=0.01),
+    "tilt_deg": lambda top: rbi.simulate(top, spin=1.0, tilt_deg=HUGE, duration=0.01),
+    "duration": lambda top: rbi.simulate(top, spin=1.0, duration=HUGE),
+    "gravity": lambda top: rbi.simulate(top, spin=1.0, gravity=HUGE, duration=0.01),
+    "rtol": lambda top: rbi.simulate(top, spin=1.0, rtol=HUGE, duration=0.01),
+    "omega": lambda top: rbi.simulate(top, omega=[0, 0, HUGE], duration=0.01),
+    "spin_axis": lambda top: rbi.simulate(top, spin=1.0, spin_axis=[HUGE, 0, 0], duration=0.01),
+    "about": lambda top: top.inertia(about=[HUGE, 0, 0]),
+    "axes": lambda top: top.inertia(axes=[("x", HUGE)]),
+    "axis": lambda top: top.moment_about_axis([HUGE, 0, 0]),
+    "omega ": lambda top: top.momentum([0, 0, HUGE]),
+    "velocity": lambda top: top.momentum([0, 0, 1], velocity=[HUGE, 0, 0]),
+    "torque": lambda top: top.dynamics([0, 0, 1], torque=[HUGE, 0, 0]),
+    "direction": lambda top: rbi.unit_vector([HUGE, 0, 0]),
+    "spin ": lambda top: rbi.sweep(top, spin=HUGE, duration=0.01),
+    "tilt_deg ": lambda top: rbi.sweep(top, spin=[1.0, 2.0], tilt_deg=[0, HUGE], duration=0.01),
+    "vary": lambda top: rbi.sweep(top, vary={"parts.cone.mass": HUGE}, duration=0.01),
+    "duration ": lambda top: rbi.sweep(top, spin=1.0, duration=HUGE),
+    "start": lambda top: rbi.Grid(HUGE, 1.0, 3),
+    "count": lambda top: rbi.Grid(0.0, 1.0, math.inf),
+    "mean": lambda top: rbi.Normal(HUGE, 1.0),
+    "low": lambda top: rbi.Uniform(HUGE, HUGE + 1),
+    "density": lambda top: rbi.audit(BODIES / "two_link_arm.urdf", density=HUGE),
+    "joints": lambda top: rbi.audit(BODIES / "two_link_arm.urdf", joints={"elbow": HUGE}),
+}
+
+
+@pytest.mark.parametrize("parameter", HUGE_ARGUMENTS)
+def test_an_integer_no_double_holds_is_a_value_error_naming_the_parameter(top, parameter):
+    """10**400 given to any numeric parameter is refused as a bad argument (ValueError naming it)
+    in a message of one short line, not an OverflowError from float() deep inside."""
+    with pytest.raises(ValueError) as caught:
+        HUGE_ARGUMENTS[parameter](top)
+    message = str(caught.value)
+    assert not isinstance(caught.value, OverflowError)
+    assert parameter.strip() in message, message
+    assert "\n" not in message and len(message) < 300, message
+
+
 BRACED = {
     "tilt_axis": lambda top: rbi.simulate(top, spin=1.0, tilt_axis={"a": 1}, duration=0.01),
     "method": lambda top: rbi.simulate(top, spin=1.0, method={"x"}, duration=0.01),

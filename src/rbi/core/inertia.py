@@ -167,7 +167,10 @@ def _closest_coordinate_axis_in_plane(normal: np.ndarray) -> np.ndarray:
 
 def unit_axis(axis: ArrayLike) -> np.ndarray:
     """``axis`` scaled to unit length; ValueError when it is zero or not finite."""
-    n = np.asarray(axis, dtype=float).reshape(3)
+    try:
+        n = np.asarray(axis, dtype=float).reshape(3)
+    except OverflowError:  # an integer no double holds (10**400)
+        raise ValueError(f"the axis must be a non-zero finite direction, got {axis!r:.60}") from None
     if not np.all(np.isfinite(n)) or not np.any(n):
         raise ValueError(f"the axis must be a non-zero finite direction, got {n.tolist()}")
     return unit_vector(n)  # any size: 1e200 or 1e-200 components are still a direction

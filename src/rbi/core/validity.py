@@ -27,12 +27,13 @@ it is subnormal, and the moments computed from it lose their digits or vanish to
 
 
 def finite(value: Any) -> bool:
-    """True for a finite real number (a bool is not one)."""
+    """True for a finite real number a double holds (a bool is not one, nor an integer such as
+    10**400, which ``float`` cannot convert)."""
     if isinstance(value, bool):
         return False
     try:
         return math.isfinite(value)
-    except TypeError:
+    except (TypeError, OverflowError):
         return False
 
 

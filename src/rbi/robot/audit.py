@@ -27,7 +27,7 @@ import numpy as np
 
 from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
-from rbi.core.validity import declared_inertia_problem
+from rbi.core.validity import declared_inertia_problem, finite
 from rbi.errors import ArgumentError, literal
 from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, depth_first, parent_rows
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
@@ -355,7 +355,7 @@ def _number(value) -> float | None:
     """``value`` as a float, or None when it is not a real number (a str, a bool, None, ...)."""
     if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
         return None
-    return float(value)
+    return float(value) if finite(value) else math.nan
 
 
 def check_choices(geometry, mesh_inertia) -> None:

@@ -21,7 +21,7 @@ import numpy as np
 
 from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, axis_angle_matrix
-from rbi.errors import ArgumentError, InputError, literal
+from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.formats.robot import LinkColumns, Pose, RobotModel, depth_first, parent_rows
 
 
@@ -29,7 +29,10 @@ def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> di
     """``{NAME: VALUE}``, or ``NAME=VALUE`` strings (``--joints``), as a mapping of finite
     numbers (radians or metres); ArgumentError naming ``joints`` for a malformed one."""
     if isinstance(values, Mapping):
-        pairs = [(name, number, f"{name}={number}") for name, number in values.items()]
+        pairs = [
+            (name, number, f"{name}={number if isinstance(number, str) else shown(number)}")
+            for name, number in values.items()
+        ]
     elif values is None or (isinstance(values, Sequence) and not isinstance(values, (str, bytes))):
         pairs = [(*str(value).rpartition("=")[::2], str(value)) for value in values or []]
     else:
@@ -38,15 +41,15 @@ def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> di
             f"expected a mapping of NAME to VALUE or NAME=VALUE strings, got {type(values).__name__}",
         )
     found: dict[str, float] = {}
-    for name, number, shown in pairs:
+    for name, number, written in pairs:
         try:
             q = math.nan if isinstance(number, bool) else float(number)
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             q = math.nan
         if not isinstance(name, str) or not name or not math.isfinite(q):
             raise ArgumentError(
                 "joints",
-                f"{literal(shown)}: give NAME=VALUE with VALUE a finite number (radians for a "
+                f"{literal(written)}: give NAME=VALUE with VALUE a finite number (radians for a "
                 "revolute joint, metres for a prismatic one)",
             )
         if name in found:

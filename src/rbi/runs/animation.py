@@ -86,7 +86,7 @@ def write_animation(
     if not (0.1 <= speed <= 2.0):
         raise ArgumentError("speed", f"must be between 0.1 and 2 (got {literal(speed)})")
     if not 1 <= fps <= 60:
-        raise ArgumentError("fps", f"must be between 1 and 60 (got {fps})")
+        raise ArgumentError("fps", f"must be between 1 and 60 (got {literal(fps)})")
     gif_frames = int(run.duration * fps) + 1 if target.format == "gif" else 0
     if gif_frames > MAX_GIF_FRAMES:
         raise ArgumentError(

@@ -17,7 +17,7 @@ def vector_value(value: Any, parameter: str, count: int = 3) -> list[float]:
     if not isinstance(value, (str, bytes)):
         try:
             values = [float(v) for v in value]
-        except (TypeError, ValueError):
+        except (TypeError, ValueError, OverflowError):
             values = []
     if len(values) != count or not all(math.isfinite(v) for v in values):
         raise ArgumentError(parameter, f"expected {count} finite numbers, got {literal(value)}")

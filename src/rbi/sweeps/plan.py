@@ -17,6 +17,9 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.validity import finite
+from rbi.errors import shown
+
 MAX_RUNS = 10**8
 """Most runs one sweep may plan (a row is about 150 bytes of CSV)."""
 
@@ -33,12 +36,14 @@ class Grid(Sequence):
     count: int
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.start) and math.isfinite(self.stop)):
-            raise ValueError(f"start and stop must be finite numbers (got {self.start!r}, {self.stop!r})")
-        if isinstance(self.count, bool) or int(self.count) != self.count or self.count < 1:
-            raise ValueError(f"count must be a whole number, at least 1 (got {self.count!r})")
+        if not (finite(self.start) and finite(self.stop)):
+            raise ValueError(
+                f"start and stop must be finite numbers (got {shown(self.start)}, {shown(self.stop)})"
+            )
+        if not (finite(self.count) and float(self.count).is_integer() and self.count >= 1):
+            raise ValueError(f"count must be a whole number, at least 1 (got {shown(self.count)})")
         if self.count > MAX_RUNS:
-            raise ValueError(f"count must be at most {MAX_RUNS:.0e} (got {self.count!r})")
+            raise ValueError(f"count must be at most {MAX_RUNS:.0e} (got {shown(self.count)})")
 
     def values(self) -> np.ndarray:
         return (
@@ -67,8 +72,10 @@ class Normal:
     sd: float
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.mean) and math.isfinite(self.sd)):
-            raise ValueError(f"normal(mean, sd): must be finite numbers (got {self.mean!r}, {self.sd!r})")
+        if not (finite(self.mean) and finite(self.sd)):
+            raise ValueError(
+                f"normal(mean, sd): must be finite numbers (got {shown(self.mean)}, {shown(self.sd)})"
+            )
         if self.sd < 0:
             raise ValueError(
                 f"normal(mean, sd): the standard deviation must not be negative (got {self.sd!r})"
@@ -87,10 +94,14 @@ class Uniform:
     high: float
 
     def __post_init__(self) -> None:
-        if not (math.isfinite(self.low) and math.isfinite(self.high)):
-            raise ValueError(f"uniform(low, high): must be finite numbers (got {self.low!r}, {self.high!r})")
+        if not (finite(self.low) and finite(self.high)):
+            raise ValueError(
+                f"uniform(low, high): must be finite numbers (got {shown(self.low)}, {shown(self.high)})"
+            )
         if self.high < self.low:
-            raise ValueError(f"uniform(low, high): needs low <= high (got {self.low!r}, {self.high!r})")
+            raise ValueError(
+                f"uniform(low, high): needs low <= high (got {shown(self.low)}, {shown(self.high)})"
+            )
         if not math.isfinite(self.high - self.low):
             raise ValueError(
                 "uniform(low, high): high - low overflows a double; the range must be narrower than "
@@ -145,10 +156,14 @@ def axis_of(name: str, value: Any) -> GridAxis | Draw:
     if isinstance(value, (str, bytes, bool)):
         raise TypeError(f"expected a number, a sequence of numbers, Grid, Normal or Uniform (got {value!r})")
     if isinstance(value, numbers.Real):
+        if not finite(value):
+            raise ValueError(f"the values must be finite numbers (got {shown(value, 60)})")
         values: tuple[float, ...] = (float(value),)
     else:
         try:
             values = tuple(float(v) for v in np.asarray(value, dtype=float).ravel())
+        except OverflowError:
+            raise ValueError(f"the values must be finite numbers (got {shown(value, 60)})") from None
         except (TypeError, ValueError):
             raise TypeError(
                 f"expected a number, a sequence of numbers, Grid, Normal or Uniform (got {value!r:.60})"
