@@ -13,7 +13,7 @@ from rbi.files.output import write_output
 from rbi.runs.run import PreparedRun
 from rbi.sim.diagnostics import tilt_deg
 from rbi.spec.geometry import part_geometry
-from rbi.viz.labels import label
+from rbi.viz.labels import motion_title
 from rbi.viz.page import html_page
 from rbi.viz.still import part_count
 
@@ -44,10 +44,7 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
         raise InputError(
             f"{body.path}: the motion is not finite: the input values are too large for double precision"
         )
-    title = (
-        f"{label(body.name or body.path, 30)}: spin {float(np.linalg.norm(run.omega0)):g} rad/s, "
-        f"nudge {run.tilt_deg:g}°"
-    )
+    title = motion_title(body.name or body.path, run.omega0, scene.spin_axis, run.tilt_deg, limit=30)
     tilts = tilt_deg(trajectory.q, scene.spin_frame)
     data = animation_data(
         title,

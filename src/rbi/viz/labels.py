@@ -9,7 +9,9 @@ took minutes to lay out).
 
 from __future__ import annotations
 
-from rbi.text import visible
+from collections.abc import Iterable
+
+from rbi.text import number, visible
 
 
 def pyplot():
@@ -32,6 +34,29 @@ def label(text: object, limit: int = MAX_LABEL_CHARS) -> str:
     text = str(text)[: 4 * limit]  # nothing past this can show; escapes at most quadruple it
     shown = visible(text)
     return shown if len(shown) <= limit else shown[: limit - 1] + "…"
+
+
+def motion_title(
+    name: object,
+    omega0: Iterable[float],
+    spin_axis: Iterable[float],
+    nudge_deg: float,
+    limit: int = MAX_LABEL_CHARS,
+) -> str:
+    """The title of a run's pictures (``simulate --plot``, ``animate``): the body's ``name``, its
+    start and the nudge (degrees). ``omega0`` (body axes, rad/s) along the unit ``spin_axis``
+    (body axes) is ``spin W rad/s``; any other is written out, ``ω₀ [wx, wy, wz] rad/s``, so
+    that an --omega run is not titled with a spin it was not given."""
+    omega = [float(w) for w in omega0]
+    spin_axis = [float(a) for a in spin_axis]
+    along = sum(w * a for w, a in zip(omega, spin_axis))
+    off = max(abs(w - along * a) for w, a in zip(omega, spin_axis))
+    start = (
+        f"spin {number(along)} rad/s"
+        if off <= 1e-12 * max(abs(along), 1e-300)
+        else "ω₀ [" + ", ".join(number(w) for w in omega) + "] rad/s"
+    )
+    return f"{label(name, limit)}: {start}, nudge {number(nudge_deg)}°"
 
 
 def plain(*texts):

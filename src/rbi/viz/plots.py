@@ -11,8 +11,7 @@ import numpy as np
 
 from rbi.core.rotation import rotate
 from rbi.files.output import write_output
-from rbi.text import number
-from rbi.viz.labels import MAX_LABEL_CHARS, label, plain, pyplot
+from rbi.viz.labels import MAX_LABEL_CHARS, label, motion_title, plain, pyplot
 
 
 def plot_trajectory(
@@ -56,10 +55,10 @@ def plot_simulation(
     columns: dict[str, np.ndarray], target, *, name: str, omega0, nudge_deg: float, **drawn
 ) -> None:
     """:func:`plot_trajectory` written at the checked output ``target``, titled with the body's
-    ``name``, the initial spin ``|omega0|`` (rad/s) and the nudge (degrees); ``drawn``: its
+    ``name``, its start ``omega0`` (body axes, rad/s) and the nudge (degrees): :func:`motion_title`; ``drawn``: its
     keywords (``spin_axis``, ``energy_unit``, a free body's ``principal_axes`` and ``inertia``)."""
 
-    title = f"{label(name)}: spin {number(float(np.linalg.norm(omega0)))} rad/s, nudge {number(nudge_deg)}°"
+    title = motion_title(name, omega0, drawn.get("spin_axis", (0.0, 0.0, 1.0)), nudge_deg)
     write_output(
         target,
         writer=lambda path: plot_trajectory(columns, path, title=title, format=target.format, **drawn),
