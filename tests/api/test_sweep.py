@@ -135,3 +135,19 @@ def test_to_pandas_or_a_clear_error(bolted, monkeypatch):
     assert isinstance(frame, pandas.DataFrame) and list(frame.columns) == table.columns
     np.testing.assert_array_equal(frame["max_tilt_deg"].to_numpy(), table["max_tilt_deg"])
     assert frame["spin"].tolist() == [150.0, 250.0] and frame["run"].tolist() == [0, 1]
+
+
+@pytest.mark.parametrize("tilt", [1e20, [0.0, 1e308], rbi.Grid(0.0, 1e12, 2)])
+def test_a_tilt_too_large_to_be_a_turn_is_refused_as_simulate_refuses_it(bolted, tilt):
+    """`rbi sweep top.yaml --spin 10 --tilt 1e308` gave a row with status ok and a max tilt of
+    145.6° (the turn lost to rounding), where `rbi simulate --tilt 1e308` refuses the run: each
+    run is simulated as simulate would, so the sweep is refused before any run, naming the axis."""
+    with pytest.raises(ValueError, match=r"^tilt_deg: .*too large to be a turn"):
+        rbi.sweep(bolted, spin=10.0, tilt_deg=tilt, duration=0.01)
+    text = tilt if isinstance(tilt, float) else f"{np.min(tilt)}:{np.max(tilt)}:2"
+    proc = run_rbi(
+        "sweep", BODIES / "top_bolted.yaml", "--spin", "10", "--tilt", str(text), "--duration", "0.01"
+    )
+    assert proc.returncode == 2 and proc.stdout == "", proc.stderr
+    assert proc.stderr.startswith("rbi: --tilt: ") and "too large to be a turn" in proc.stderr
+    assert len(proc.stderr.splitlines()) == 1

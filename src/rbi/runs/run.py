@@ -78,17 +78,23 @@ def check_run_options(
         raise ArgumentError("spin", f"must be a finite number (got {literal(spin)})")
     if not finite(tilt_deg):
         raise ArgumentError("tilt_deg", f"must be a finite number (got {literal(tilt_deg)})")
+    check_tilt(tilt_deg)
+    check_run_settings(
+        duration, tilt_axis, settings.get("gravity"), settings.get("max_steps"), settings.get("rtol")
+    )
+    if omega is not None:
+        vector_value(omega, "omega")
+
+
+def check_tilt(tilt_deg: float) -> None:
+    """Refuse a finite tilt (deg) too large to be a turn (rounding loses it): the one check of
+    a run's tilt, for `simulate` and `animate` and for every value of a sweep's tilt axis."""
     if not angle_is_kept(tilt_deg):
         raise ArgumentError(
             "tilt_deg",
             f"{literal(tilt_deg)} degrees is too large to be a turn: rounding loses it "
             f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
         )
-    check_run_settings(
-        duration, tilt_axis, settings.get("gravity"), settings.get("max_steps"), settings.get("rtol")
-    )
-    if omega is not None:
-        vector_value(omega, "omega")
 
 
 def check_samples(samples: Any, most: int = MAX_SAMPLES, what: str = "") -> None:

@@ -23,7 +23,7 @@ import numpy as np
 
 from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, spin_axis_value
+from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, check_tilt, spin_axis_value
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.units import STANDARD_GRAVITY_SI
@@ -139,6 +139,8 @@ class Study:
 
         s = self.settings
         axes = [] if s.mass_properties else [_axis("spin", s.spin), _axis("tilt_deg", s.tilt_deg)]
+        if axes:
+            check_tilt(axes[1].largest())
         varied = []
         for path_text, value in s.vary:
             try:
