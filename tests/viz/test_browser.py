@@ -110,3 +110,22 @@ def test_a_frame_stamped_before_the_page_loaded_does_not_turn_time_back(page, tm
     assert '<div id="status" hidden="">ready</div>' in dom, dom[-2000:]
     assert 'data-replayed="yes"' in dom  # the early frame ran (the page shows t = 0 before any frame)
     assert "t = 0.000 s" in dom, dom[-600:]
+
+
+def test_the_show_page_draws_the_body_below_its_legend(tmp_path):
+    # rbi show bodies/cubesat.yaml --out F.html: the heading with its 11-part legend covers the
+    # top ~260 of 600 pixels, and the camera framed the body in the whole window, so half the
+    # bus, the antenna horn and a solar panel were drawn behind the legend (a quarter of the
+    # legend's plain right-hand half tinted by them). Now the view is moved down and scaled to
+    # the room below the heading: that part of the legend is plain white over plain background.
+    page = tmp_path / "cubesat.html"
+    assert run_rbi("show", BODIES / "cubesat.yaml", "--out", page).returncode == 0
+    shot = _screenshot(tmp_path, page, 0.0, "cubesat.png")
+    bottom = 100
+    while shot[bottom, WIDTH - 15].min() >= 250:  # the heading's right edge, below its text lines
+        bottom += 1
+    assert bottom > 200, bottom  # eleven parts listed
+    behind = shot[bottom - 120 : bottom - 4, 320 : WIDTH - 20].min(axis=2)  # right of the part names
+    assert (behind < 240).mean() == 0, f"{(behind < 240).mean():.1%} of the legend's right half is tinted"
+    drawn = shot[bottom:, :].min(axis=2) < 120  # the body, below the heading
+    assert drawn.sum() > 5000, drawn.sum()
