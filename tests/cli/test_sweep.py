@@ -316,3 +316,29 @@ def test_a_monte_carlo_sweep_draws_its_map_over_the_drawn_value(tmp_path):
     assert len(set(masses)) == 6 and 0.005 <= masses[0] and masses[-1] <= 0.04
     assert rows[0]["max_tilt_deg"] < rows[-1]["max_tilt_deg"]
     assert plot.stat().st_size > 10_000 and plot.read_bytes()[:4] == b"\x89PNG"
+
+
+def test_a_varied_field_has_its_unit_in_the_tables(monkeypatch):
+    # `rbi sweep bodies/top_bolted.yaml --mass-properties --vary 'parts.bolt.mass=normal(..)'`
+    # printed the row 'parts.bolt.mass   (no unit)   0.015 ...' while every other row had one;
+    # a grid's column for a varied field had no unit under it either
+    monkeypatch.setenv("COLUMNS", "120")
+    spread = rbi(
+        "sweep",
+        BOLTED,
+        "--mass-properties",
+        "--vary",
+        "parts.bolt.mass=normal(0.02,0.002)",
+        "--vary",
+        "parts.bolt.position[0]=uniform(0.039,0.041)",
+        "--runs",
+        "5",
+    ).stdout
+    units = {line.split()[0]: line.split()[1] for line in spread.splitlines() if line.startswith(" parts.")}
+    assert units == {"parts.bolt.mass": "kg", "parts.bolt.position[0]": "m"}, spread
+    wheel = BODIES / "wheel_with_holes.yaml"  # in mm and g
+    grid = rbi(
+        "sweep", wheel, "--spin", "10", "--vary", "parts.rim.outer_radius=99:101:2", "--duration", "0.1"
+    )
+    header = grid.stdout.splitlines()[1:3]
+    assert "parts.rim.outer_radius" in header[0] and " mm " in header[1], grid.stdout

@@ -129,6 +129,31 @@ UNITS = {
 }
 """The unit shown under each swept or summary column."""
 
+_LENGTH_FIELDS = frozenset(
+    "radius inner_radius outer_radius start_radius end_radius major_radius minor_radius length height "
+    "size semi_axes position center start end apex base through step pivot center_of_mass".split()
+)
+_INERTIA_FIELDS = frozenset("ixx iyy izz ixy ixz iyz inertia".split())
+
+
+def column_unit(name: str, units: dict[str, str]) -> str:
+    """The unit of a sweep column: a summary column's (:data:`UNITS`), or a varied spec field's
+    (``parts.bolt.mass`` in the spec's mass unit, ``parts.bolt.position[0]`` in its length unit,
+    ``...angle_deg`` in degrees); empty for a number without one (a direction, a count)."""
+    if name in UNITS:
+        return UNITS[name]
+    length, mass = units["length"], units["mass"]
+    field = name.rsplit(".", 1)[-1].split("[", 1)[0]
+    if field == "mass":
+        return mass
+    if field == "density":
+        return f"{mass}/{length}³"
+    if field in _INERTIA_FIELDS:
+        return f"{mass}·{length}²"
+    if field in _LENGTH_FIELDS:
+        return length
+    return "deg" if field.endswith("_deg") else ""
+
 
 def sweep(
     file: SpecFile,
@@ -306,7 +331,7 @@ def _runs_table(result, columns, rows, file):
         words = name.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
         header = tables.plain_text(name if name.startswith("parts.") else words)
         table.add_column(
-            f"{header}\n{UNITS.get(name, '')}".rstrip(),
+            f"{header}\n{column_unit(name, result['units'])}".rstrip(),
             overflow="fold",
             justify="left" if name == "status" else "right",
         )
@@ -336,6 +361,6 @@ def _spread_table(result):
     length, mass = result["units"]["length"], result["units"]["mass"]
     prefixed = {"mass": mass, "com": length, "moment": f"{mass}·{length}²"}  # mass, com_x, moment_1 ...
     for name, stats in result["spread"].items():
-        unit = UNITS.get(name) or prefixed.get(name.split("_")[0], "")
+        unit = prefixed.get(name.split("_")[0]) or column_unit(name, result["units"])
         spread.add_row(name, unit, *[number(stats[k], 4) for k in ("p0", "p50", "p100", "std")])
     return spread
