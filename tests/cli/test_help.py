@@ -93,3 +93,12 @@ def test_validate_help_says_it_reads_robot_files(bodies):
     assert "Spec files (YAML)" not in text
     assert all(word in text for word in (".urdf", ".sdf", "MJCF", "JSON", "standard input"))
     assert run_rbi_inprocess("validate", bodies / "two_link_arm.urdf").returncode == 0
+
+
+@pytest.mark.parametrize("command", ["", *COMMANDS])
+def test_no_help_line_is_wider_than_the_terminal(command):
+    # at COLUMNS=80, `rbi sweep --help` printed an example of 112 characters (it wrapped in the
+    # middle of --vary's value), `rbi bench --help` one of 88 and `rbi audit --help` one of 82
+    text = _help(*([command] if command else []))
+    wide = [line for line in text.splitlines() if len(line) > 80]
+    assert not wide, wide

@@ -107,7 +107,7 @@ def audit(
       rbi audit robot.urdf
       rbi audit robot.urdf --package-path my_robot=~/ws/src/my_robot
       rbi audit humanoid.xml --format json
-      rbi audit robot.urdf --fix                    (dry run: the changes as a diff)
+      rbi audit robot.urdf --fix           (dry run: the changes as a diff)
       rbi audit robot.urdf --fix --out fixed.urdf
     """
 

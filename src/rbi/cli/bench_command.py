@@ -74,7 +74,8 @@ def bench(
     \b
     Examples:
       rbi bench --quick
-      rbi bench --write-docs docs/performance.md --plot docs/performance-workprecision.png
+      rbi bench --write-docs docs/performance.md \\
+          --plot docs/performance-workprecision.png
     """
 
     sections = _sections(only)

@@ -186,9 +186,12 @@ def sweep(
 
     \b
     Examples:
-      rbi sweep top.yaml --spin 150:260:12 --tilt 0.01:1:5 --out map.csv --plot map.png
-      rbi sweep top_bolted.yaml --spin 200 --vary 'parts.bolt.mass=normal(0.02,0.002)' --runs 500
-      rbi sweep top_bolted.yaml --mass-properties --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
+      rbi sweep top.yaml --spin 150:260:12 --tilt 0.01:1:5 \\
+          --out map.csv --plot map.png
+      rbi sweep top_bolted.yaml --spin 200 \\
+          --vary 'parts.bolt.mass=normal(0.02,0.002)' --runs 500
+      rbi sweep top_bolted.yaml --mass-properties \\
+          --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
 
     settings = dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
