@@ -54,6 +54,21 @@ CASES = {
         ["about the centre of mass", "mass × offset² = 2"],
         ["is `about` the point it was taken about"],
     ),
+    "pattern count not whole": (
+        "{shape: point, mass: 1, position: [1, 0, 0], pattern: {count: 2.5, axis: [0, 0, 1]}}",
+        ["pattern.count", "got 2.5"],
+        ["must be a whole number"],
+    ),
+    "pattern count too many": (
+        "{shape: point, mass: 1, position: [1, 0, 0], pattern: {count: 1000000000, axis: [0, 0, 1]}}",
+        ["pattern.count", "got 1000000000"],
+        ["must be at most 100000"],
+    ),
+    "pattern count zero": (
+        "{shape: point, mass: 1, position: [1, 0, 0], pattern: {count: 0, axis: [0, 0, 1]}}",
+        ["pattern.count", "got 0"],
+        ["must be at least 1"],
+    ),
     "custom too large": (
         "{shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1.0e+308, iyy: 1.0e+308, izz: 1.0e+308}}",
         ["too large", "1e+308"],

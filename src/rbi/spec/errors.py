@@ -59,8 +59,15 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         return f"must be a non-empty list of parts (got {shown(value)})"
     if kind == "finite_number":
         return f"must be a finite number (got {shown(value)})"
-    if kind in ("float_type", "float_parsing", "int_type"):
+    if kind in ("greater_than_equal", "less_than_equal"):
+        bound = (
+            f"at least {ctx.get('ge'):g}" if kind == "greater_than_equal" else f"at most {ctx.get('le'):g}"
+        )
+        return f"must be {bound} (got {shown(value)})"
+    if kind in ("float_type", "float_parsing"):
         return f"must be a number (got {shown(value)})"
+    if kind in ("int_type", "int_from_float", "int_parsing"):
+        return f"must be a whole number (got {shown(value)})"
     if kind in ("too_short", "too_long"):
         return f"must be a list of {ctx.get('min_length', ctx.get('max_length'))} numbers [x, y, z] (got {shown(value)})"
     if kind == "list_type":
