@@ -5,6 +5,7 @@ from __future__ import annotations
 import csv
 import io
 import json
+import math
 
 import numpy as np
 import pytest
@@ -199,3 +200,15 @@ def test_out_to_stdout_with_format_json_is_refused_not_printed_as_csv():
         rows = list(csv.reader(io.StringIO(done.stdout)))
         assert done.returncode == 0 and rows[0][:8] == ["t", "qw", "qx", "qy", "qz", "wx", "wy", "wz"]
         assert [float(r[0]) for r in rows[1:]] == [0.0, 0.025, 0.05]
+
+
+def test_the_table_says_the_quaternions_order(monkeypatch):
+    # the row was written 'final q [w, x, y, z]' and printed 'final q': rich read the brackets
+    # as a style and dropped them, so the table never said the scalar comes first
+    monkeypatch.setenv("COLUMNS", "80")
+    proc = run_rbi_inprocess("simulate", BODIES / "top.yaml", "--spin", "200", "--duration", "0.1")
+    row = next(line for line in proc.stdout.splitlines() if line.startswith(" final q"))
+    assert row.startswith(" final q [w, x, y, z] "), row
+    # upright, spinning 200 rad/s about z for 0.1 s: turned 20 rad, q = [cos 10, 0, 0, sin 10]
+    shown = [float(v) for v in row.split("]", 1)[1].strip().strip("[]").split(",")]
+    assert shown == pytest.approx([math.cos(10), 0, 0, math.sin(10)], abs=1e-6)

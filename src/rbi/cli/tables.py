@@ -51,11 +51,12 @@ def titled(title: str) -> Table:
 
 
 def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
-    """A table of (quantity, unit, value) rows. ``title`` is plain text (it carries the body's
-    name or path, which must not be read as rich markup)."""
+    """A table of (quantity, unit, value) rows. ``title`` and every cell are plain text (the
+    title carries the body's name or path, a quantity may hold brackets: ``final q [w, x, y, z]``
+    was shown as ``final q``, rich reading ``[w, x, y, z]`` as a style), never rich markup."""
     table = titled(title)
     table.add_column("quantity")
-    rows = [(name, escape(unit), escape(value)) for name, unit, value in rows]
+    rows = [(escape(name), escape(unit), escape(value)) for name, unit, value in rows]
     table.add_column("unit", style="dim")
     table.add_column("value", justify="right")
     for name, unit, value in rows:
