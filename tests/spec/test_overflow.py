@@ -298,3 +298,23 @@ def test_point_masses_keep_their_zero_moments(write_spec):
     )
     assert proc.returncode == 0, proc.stderr
     np.testing.assert_allclose(np.diag(json.loads(proc.stdout)["inertia"]), [0, 2e-300, 2e-300], rtol=1e-15)
+
+
+@pytest.mark.parametrize(
+    "command", [["simulate", "--spin", "10"], ["animate", "--spin", "10", "--out", "a.html"]]
+)
+def test_a_pivot_so_far_its_inertia_overflows_says_so(write_spec, tmp_path, command):
+    """`rbi simulate` of a top whose pivot is at 1e308 m printed numpy's words 'pivot: cannot
+    simulate: Eigenvalues did not converge'; the inertia about that pivot overflows, which is what
+    the message now says (and the sweep's status alike)."""
+    spec = write_spec(
+        "pivot: [1.0e+308, 0, 0]\nparts:\n  - {shape: cylinder, mass: 1, radius: 0.1, start: [0, 0, 0], end: [0, 0, 1]}\n"
+    )
+    args = [a if a != "a.html" else str(tmp_path / "a.html") for a in command]
+    proc = run_rbi_inprocess(command[0], spec, *args[1:], "--duration", "0.01")
+    one_line_exit_2(proc, "pivot: cannot simulate", "inertia about the pivot", "too large")
+    assert "Eigenvalues" not in proc.stderr and not (tmp_path / "a.html").exists()
+    sweep = run_rbi_inprocess("sweep", spec, "--spin", "10", "--duration", "0.01", "--format", "json")
+    assert sweep.returncode == 0, sweep.stderr
+    status = json.loads(sweep.stdout)["runs"][0]["status"]
+    assert "inertia about the pivot" in status and "too large" in status and "Eigenvalues" not in status

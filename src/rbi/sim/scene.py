@@ -124,13 +124,19 @@ def scene_from_properties(
     ignored: a free body's centre of mass falls, but its rotation is torque-free). gravity:
     magnitude in L/s². spin_axis: a body-frame direction (any length), or None for
     :func:`rbi.core.spin_axis.default_spin_axis` (the symmetry axis, else body z). Raises
-    ValueError when the inertia about the pivot (or the centre of mass) is singular, i.e. all
-    the mass lies on a line through that point, or when ``spin_axis`` is zero or not finite.
+    ValueError when the inertia about the pivot (or the centre of mass) overflows or is singular,
+    i.e. all the mass lies on a line through that point, or when ``spin_axis`` is zero or not
+    finite.
     """
 
     pivot = None if pivot is None else np.asarray(pivot, dtype=float)
     scene = Scene(props, 0.0 if pivot is None else float(gravity), pivot)
     where = "centre of mass" if pivot is None else "pivot"
+    if not np.all(np.isfinite(scene.inertia)):
+        raise ValueError(
+            f"the inertia about the {where} is too large for double precision (it overflows): is the "
+            f"{where} that far from the body, and the length unit right?"
+        )
     moments = np.linalg.eigvalsh(scene.inertia)
     if not (moments[0] > SINGULAR_RTOL * moments[-1] and np.all(np.isfinite(moments))):
         raise ValueError(
