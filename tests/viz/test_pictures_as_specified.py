@@ -44,7 +44,7 @@ def svg_ticks(path) -> list[list[float]]:
     comments = re.findall(r"<!-- (.*?) -->", path.read_text(encoding="utf-8"))
     axes, current = [], []
     for text in comments:
-        if re.fullmatch(r"[xyz] \[m\]", text):
+        if re.fullmatch(r"[xyz] \[[^\]]+\]", text):  # `x [m]`, `y [mm]`
             axes.append(current)
             current = []
         else:

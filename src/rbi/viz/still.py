@@ -271,3 +271,8 @@ def _frame(ax, quads: np.ndarray, com: np.ndarray, data: dict[str, Any]) -> None
     ax.set_ylim(centre[1] - half, centre[1] + half)
     ax.set_zlim(centre[2] - half, centre[2] + half)
     ax.set_box_aspect((1, 1, 1))
+    # seen from azimuth -55°, x's upper end and y's lower end meet at the front corner: ticks at
+    # both would print into one another ('100-100' under a wheel of 100 mm radius), so x keeps
+    # its ticks there and y drops the one at its lower limit
+    low_y = centre[1] - half
+    ax.set_yticks([v for v in ax.get_yticks() if v > low_y + 0.02 * half and v <= centre[1] + half])
