@@ -471,3 +471,75 @@ def test_sdf_joints_of_several_models_are_named_model_colon_colon_joint(tmp_path
         np.testing.assert_allclose([joint["torque"] for joint in result["joints"]], expected, atol=1e-9)
     proc, _ = audit(tmp_path, "named.sdf", text, "--joints", "hinge=1")
     assert proc.returncode == 2 and "hinge" in proc.stderr and len(proc.stderr.strip().splitlines()) == 1
+
+
+def _meeting_names(other: str) -> str:
+    """Model ``a``: a 1 kg base, a 2 kg rod ``b::c`` (centre 0.5 m along x) on a hinge about y
+    at the base and a 4 kg link ``d`` (at x = 1 m) welded to the rod; model ``other`` 5 m up:
+    one 3 kg link ``c``. With ``other`` = ``a::b`` two links are ``a::b::c``."""
+    inertia = "<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia>"
+
+    def link(name, mass, pose="0 0 0"):
+        return f'<link name="{name}"><pose>{pose} 0 0 0</pose><inertial><mass>{mass}</mass>{inertia}</inertial></link>'
+
+    return (
+        '<sdf version="1.6"><world name="w"><model name="a">'
+        + link("base", 1)
+        + link("b::c", 2, "0.5 0 0")
+        + link("d", 4, "1 0 0")
+        + '<joint name="hinge" type="revolute"><parent>base</parent><child>b::c</child>'
+        "<pose>-0.5 0 0 0 0 0</pose><axis><xyz>0 1 0</xyz></axis></joint>"
+        '<joint name="weld" type="fixed"><parent>b::c</parent><child>d</child></joint></model>'
+        f'<model name="{other}"><pose>0 0 5 0 0 0</pose>' + link("c", 3) + "</model></world></sdf>"
+    )
+
+
+def test_sdf_links_whose_model_and_link_names_meet_are_refused(tmp_path):
+    # Model "a" with link "b::c" and model "a::b" with link "c" gave two links the key a::b::c:
+    # d, welded to a's rod, was placed on the other model's c (total centre of mass z = 3.5 m,
+    # not 1.5; the hinge held -9.81 N·m, not -49.05), exit 0.
+    proc, _ = audit(tmp_path, "meet.sdf", _meeting_names("a::b"))
+    assert proc.returncode == 2
+    assert proc.stderr.strip().splitlines() == [
+        f"rbi: {tmp_path / 'meet.sdf'}: link[3] (a::b::c): duplicate link name 'a::b::c' "
+        "(also link[1] (a::b::c)); every link needs its own name"
+    ]
+    validated = run_rbi_inprocess("validate", str(tmp_path / "meet.sdf"))
+    assert validated.returncode == 2 and "duplicate link name 'a::b::c'" in validated.stdout
+    proc, result = audit(tmp_path, "apart.sdf", _meeting_names("other"))
+    assert proc.returncode == 0, proc.stderr
+    assert result["total"]["mass"] == 10.0
+    # x: (2·0.5 + 4·1)/10; z: 3·5/10. The hinge holds rod and d: -(2·0.5 + 4·1)·9.81
+    np.testing.assert_allclose(result["total"]["center_of_mass"], [0.5, 0.0, 1.5], atol=1e-12)
+    assert result["joints"][0]["torque"] == pytest.approx(-5 * 9.81, rel=1e-12)
+
+
+def test_sdf_joints_that_form_a_loop_are_refused(tmp_path):
+    # p's parent q, q's parent p: no root reaches them and their poses were never set (the
+    # audit read uninitialised memory: centre of mass [0, 0.0033, 0.005] m, exit 0).
+    inertia = "<inertia><ixx>0.01</ixx><iyy>0.01</iyy><izz>0.01</izz></inertia>"
+    links = "".join(
+        f'<link name="{name}"><pose>{x} 0 0 0 0 0</pose><inertial><mass>1</mass>{inertia}</inertial></link>'
+        for name, x in (("base", 0), ("p", 1), ("q", 2))
+    )
+    joints = "".join(
+        f'<joint name="{name}" type="revolute"><parent>{parent}</parent><child>{child}</child>'
+        "<axis><xyz>0 1 0</xyz></axis></joint>"
+        for name, parent, child in (("j1", "p", "q"), ("j2", "q", "p"))
+    )
+    proc, _ = audit(tmp_path, "loop.sdf", sdf(links + joints))
+    assert proc.returncode == 2
+    assert proc.stderr.strip().splitlines() == [
+        f"rbi: {tmp_path / 'loop.sdf'}: link[1] (p): the joints form a loop through it; the links "
+        "of a robot form a tree (each hangs from one parent, down from a root)"
+    ]
+
+
+def test_a_link_whose_parent_is_no_link_is_refused_by_the_tree():
+    from rbi.errors import InputError
+    from rbi.formats.robot import Link, tree_rows
+
+    assert tree_rows("r.urdf", [Link(0, "a"), Link(1, "b", parent="a")]) == ([2, 0], [0, 1])
+    with pytest.raises(InputError) as refused:
+        tree_rows("r.urdf", [Link(0, "a"), Link(1, "b", parent="x")])
+    assert str(refused.value) == "r.urdf: link[1] (b): parent 'x': no link has that name"

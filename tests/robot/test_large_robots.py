@@ -166,7 +166,7 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, sha
         assert model.links  # made now: the audit reads them, not the columns
     assert (model.in_columns is None) == careful
     bulk = audit_model(model, density=density)
-    carried = _carried_mass(model.links)
+    carried = _carried_mass(model.path, model.links)
     codes = set()
     for link, found in zip(model.links, bulk.links):
         one = audit_link(model, link, carries_mass=carried[link.index], density=density)
@@ -261,8 +261,8 @@ def test_mass_properties_made_by_rows_equal_the_constructors_bit_for_bit():
 def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
     """A heavy root, then a light chain a → (an unnamed MJCF body) → c: nothing below a has mass.
     Below the unnamed body are its own children, not the roots (the walk once looked them up by
-    the body's name, None, which is what a root's parent is). With two light roots sharing a
-    name, the keys are not unique and the walk, not the one-pass order, answers."""
+    the body's name, None, which is what a root's parent is). Two roots sharing a name are no
+    tree of the links' keys: refused, in one line."""
     from rbi.formats.robot import Inertial, Link
     from rbi.robot.audit import _carried_mass
 
@@ -272,5 +272,11 @@ def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
     links.append(Link(3, "c", parent=links[2].key, word="body"))
     if shared_name:
         links += [Link(4, "d", word="body"), Link(5, "d", word="body")]
-    carried = _carried_mass(links)
-    assert carried[:4] == [False, False, False, False]
+        message = (
+            "m.xml: body[5] (d): duplicate body name 'd' (also body[4] (d)); every body needs its own name"
+        )
+        with pytest.raises(InputError) as refused:
+            _carried_mass("m.xml", links)
+        assert str(refused.value) == message
+        return
+    assert _carried_mass("m.xml", links) == [False, False, False, False]

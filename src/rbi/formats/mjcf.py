@@ -46,12 +46,12 @@ from rbi.formats.robot import (
     angles,
     check_inertia_range,
     check_unique_joint_names,
-    check_unique_names,
     from_six,
     number,
     numbers,
     positive,
     quaternion_matrix,
+    refuse_shared_keys,
     short,
     unit,
 )
@@ -149,7 +149,7 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     reader = _Bodies(model, compiler, defaults, meshes)
     for world in root.all("worldbody"):
         reader.children(world, Pose.identity(), None, "main")
-    check_unique_names(path, model.links, "body")
+    refuse_shared_keys(path, model.links)
     check_unique_joint_names(model, "MuJoCo's compiler")
     _actuator_limits(model, root, defaults)
     model.options["gravity"] = _gravity(path, root)

@@ -303,22 +303,50 @@ class LinkColumns:
         return link
 
 
-def parent_rows(links: list[Link]) -> list[int] | None:
-    """Each link's parent row (``len(links)`` for a root) when every link's :attr:`Link.key` is
-    its own and every parent is one of the links; None otherwise (shared names, a parent that is
-    no link)."""
-    n = len(links)
+def refuse_shared_keys(path: str, links: list[Link]) -> dict[str, int]:
+    """Each link's :attr:`Link.key` → its row; InputError, one line naming the first link whose
+    key an earlier link has. The one check of a model's link names: every reader and the tree
+    (:func:`tree_rows`) go through it, so that a parent names one link."""
     rows = {link.key: row for row, link in enumerate(links)}
-    if len(rows) != n:
-        return None
+    if len(rows) == len(links):
+        return rows
+    seen: dict[str, Link] = {}
+    for each in links:
+        first = seen.setdefault(each.key, each)
+        if first is not each:
+            raise InputError(
+                f"{path}: {each.label}: duplicate {each.word} name {short(each.name)!r} "
+                f"(also {first.label}); every {each.word} needs its own name"
+            )
+    raise AssertionError("two links share a key")  # the count above says so
+
+
+def tree_rows(path: str, links: list[Link]) -> tuple[list[int], list[int]]:
+    """The links' tree: each one's parent row (``len(links)`` for a root) and the rows parents
+    first (:func:`depth_first`). InputError, one line, when two links share a key
+    (:func:`refuse_shared_keys`), a parent is none of the links, or the joints form a loop."""
+    rows = refuse_shared_keys(path, links)
+    n = len(links)
     parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
-    return None if -1 in parents else parents
+    if -1 in parents:
+        link = links[parents.index(-1)]
+        raise InputError(f"{path}: {link.label}: parent {short(link.parent)!r}: no {link.word} has that name")
+    order = depth_first(parents, n)
+    if len(order) < n:  # a link no root reaches: on a loop, or below one
+        at, seen = min(set(range(n)) - set(order)), set()
+        while at not in seen:
+            seen.add(at)
+            at = parents[at]
+        raise InputError(
+            f"{path}: {links[at].label}: the joints form a loop through it; the links of a robot "
+            "form a tree (each hangs from one parent, down from a root)"
+        )
+    return parents, order
 
 
 def depth_first(parents: list[int], root: int) -> list[int]:
     """The rows below ``root`` depth first (``parents``: each row's parent row, ``root`` for a
-    top-level one), as :func:`rbi.robot.tree.parents_first` orders links: the last child
-    first, each child list in file order. Rows not reached from ``root`` are left out."""
+    top-level one): the last child first, each child list in file order. Rows not reached from ``root`` are left out."""
     children: list[list[int]] = [[] for _ in range(len(parents) + 1)]
     for row, parent in enumerate(parents):
         children[parent].append(row)
@@ -553,17 +581,3 @@ def check_unique_joint_names(model: RobotModel, reader: str) -> None:
                     f"{seen[motion.name].label}); every joint needs its own name ({reader} refuses the file)"
                 )
             seen[motion.name] = link
-
-
-def check_unique_names(path: str, links: list[Link], word: str) -> None:
-    """InputError naming the first name two links share."""
-    seen: dict[str, Link] = {}
-    for each in links:
-        if each.name is None:
-            continue
-        if each.name in seen:
-            raise InputError(
-                f"{path}: {each.label}: duplicate {word} name {short(each.name)!r} "
-                f"(also {seen[each.name].label}); every {word} needs its own name"
-            )
-        seen[each.name] = each

@@ -40,12 +40,12 @@ from rbi.formats.robot import (
     Where,
     angles,
     check_inertia_range,
-    check_unique_names,
     from_six,
     number,
     numbers,
     positive,
     quaternion_matrix,
+    refuse_shared_keys,
     rpy_matrix,
     short,
     unit,
@@ -120,9 +120,9 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
                 link.inertial = _inertial(where, inertial, frames.within(own))
             else:  # SDFormat's default inertial: 1 kg, unit moments, at the link origin
                 link.inertial = Inertial.read(1.0, np.zeros(3), np.eye(3), element=None, source="default")
-            check_unique_names(path, list(links.values()) + [link], "link")
             links[own] = link
             robot.links.append(link)
+        refuse_shared_keys(path, robot.links)  # across models too: "a" + "b::c" is "a::b" + "c"
         _joints(robot, model_element, links, link_poses, frames, f"{model_name}::" if prefix else "")
     return robot
 

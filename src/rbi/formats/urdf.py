@@ -51,10 +51,10 @@ from rbi.formats.robot import (
     angles,
     check_inertia_range,
     check_unique_joint_names,
-    check_unique_names,
     depth_first,
     numbers,
     positive,
+    refuse_shared_keys,
     rpy_matrix,
     short,
     unit,
@@ -550,7 +550,7 @@ def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
 
     _in_order(chunks, read)
     if len(set(names)) != n:
-        check_unique_names(path, [Link(index, name) for index, name in enumerate(names)], "link")
+        refuse_shared_keys(path, [Link(index, name) for index, name in enumerate(names)])
     return {"names": names, "geoms": geoms, **vars(inertials)}
 
 

@@ -29,7 +29,7 @@ from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem, finite
 from rbi.errors import ArgumentError, literal
-from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, depth_first, parent_rows
+from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, tree_rows
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
 from rbi.robot.tree import placement, stack_apply, stacked, totals
@@ -384,7 +384,7 @@ def audit_model(
     check_choices(geometry, mesh_inertia)
     repairs: list[str] = []
     columns = model.in_columns
-    rows = _Rows.of_columns(columns) if columns is not None else _Rows.of_links(model.links)
+    rows = _Rows.of_columns(columns) if columns is not None else _Rows.of_links(model.path, model.links)
     audited = _ColumnAudit(model, rows)
     audited.audit(geometry, density, mesh_inertia, mesh_repair, repairs)
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
@@ -433,7 +433,7 @@ class _Rows(NamedTuple):
         moving = [
             parent >= 0 and kind != "fixed" for parent, kind in zip(columns.parents, columns.joint_kinds)
         ]
-        carried = _carried_rows(parents, heavy.tolist(), columns.order)
+        carried = _carried_rows(parents, columns.order, heavy.tolist())
         return cls(
             columns.declared,
             columns.masses,
@@ -448,7 +448,7 @@ class _Rows(NamedTuple):
         )
 
     @classmethod
-    def of_links(cls, links: list[Link]) -> _Rows:
+    def of_links(cls, path: str, links: list[Link]) -> _Rows:
         inertials = [link.inertial for link in links]
         given = [each.properties for each in inertials if each is not None]
         declared = np.array([each is not None for each in inertials], dtype=bool)
@@ -470,7 +470,7 @@ class _Rows(NamedTuple):
             written,
             np.array([link.moves for link in links], dtype=bool),
             _geom_columns(links),
-            _carried_mass(links),
+            _carried_mass(path, links),
             links.__getitem__,
             lambda: links,
         )
@@ -585,46 +585,21 @@ class _ColumnAudit:
         return found
 
 
-def _carried_mass(links: list[Link]) -> list[bool]:
-    """For each link (by row): does any link below it in the tree have mass? In one pass from
-    the leaves up (:func:`_carried_rows`) for a forest of links with keys of their own; for
-    anything else (shared names, links hanging from none of the model's links) a walk below each
-    link, following each link's children by its :attr:`~rbi.formats.robot.Link.key`."""
+def _carried_mass(path: str, links: list[Link]) -> list[bool]:
+    """For each link (by row): does any link below it in the tree have mass? InputError for
+    links that are no tree (:func:`~rbi.formats.robot.tree_rows`)."""
     heavy = [link.inertial is not None and link.inertial.mass > 0 for link in links]
-    parents = parent_rows(links)
-    below = None if parents is None else _carried_rows(parents, heavy)
-    if below is not None:
-        return below
-    children: dict[str | None, list[int]] = {}
-    for row, link in enumerate(links):
-        children.setdefault(link.parent, []).append(row)
-    found = []
-    for link in links:
-        stack, seen, carried = list(children.get(link.key, [])), set(), False
-        while stack and not carried:
-            row = stack.pop()
-            if row not in seen:
-                seen.add(row)
-                carried = heavy[row]
-                stack.extend(children.get(links[row].key, []))
-        found.append(carried)
-    return found
+    return _carried_rows(*tree_rows(path, links), heavy)
 
 
-def _carried_rows(parents: list[int], heavy: list[bool], order: list[int] | None = None) -> list[bool] | None:
-    """For each of n links (``parents``: each one's parent row, n for a root; ``heavy``: which
-    have mass; ``order``: their rows parents first, when known): does any link below it have
-    mass? None when the links are no forest (a link not reached from the roots)."""
-    n = len(parents)
-    if order is None:
-        order = depth_first(parents, n)
-    if len(order) != n:
-        return None
-    below = [False] * (n + 1)
+def _carried_rows(parents: list[int], order: list[int], heavy: list[bool]) -> list[bool]:
+    """For each of n links (``parents``: each one's parent row, n for a root; ``order``: their
+    rows parents first; ``heavy``: which have mass): does any link below it have mass?"""
+    below = [False] * (len(parents) + 1)
     for row in reversed(order):  # every child before its parent
         if below[row] or heavy[row]:
             below[parents[row]] = True
-    return below[:n]
+    return below[: len(parents)]
 
 
 def chosen_geoms(link: Link, geometry: str) -> tuple[list, str]:

@@ -112,7 +112,7 @@ def _gravity(model: RobotModel) -> np.ndarray:
 def _subtree_sums(model: RobotModel, placed) -> tuple[np.ndarray, np.ndarray]:
     """For each link's row of ``placed``: the mass of its subtree (kg) and its first moment
     Σ m c (kg·m, in ``placed.frame``), each subtree added to its parent's in the reverse of
-    :func:`rbi.robot.tree.parents_first`'s order: one level of the tree at a time, deepest
+    :func:`rbi.formats.robot.depth_first`'s order: one level of the tree at a time, deepest
     first, each level's links in that reverse order (``np.add.at`` adds in the order given, so
     each parent receives the same sums in the same order as one link at a time)."""
     n = len(placed.translations)
@@ -123,11 +123,6 @@ def _subtree_sums(model: RobotModel, placed) -> tuple[np.ndarray, np.ndarray]:
         at = stack_apply(placed.placed_rotations[chosen], coms) + placed.placed_translations[chosen]
         first[chosen] = masses[:, None] * at
         mass[chosen] = masses
-    if placed.levels is None:  # no tree of its own keys: one link at a time
-        for child, parent in reversed(placed.order):
-            mass[parent] += mass[child]
-            first[parent] += first[child]
-        return mass[:n], first[:n]
     for rows, parents in reversed(placed.levels):
         rows, parents = rows[::-1], parents[::-1]
         np.add.at(mass, parents, mass[rows])

@@ -22,7 +22,7 @@ import numpy as np
 from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, axis_angle_matrix
 from rbi.errors import ArgumentError, InputError, literal, shown
-from rbi.formats.robot import LinkColumns, Pose, RobotModel, depth_first, parent_rows
+from rbi.formats.robot import LinkColumns, Pose, RobotModel, tree_rows
 
 
 def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> dict[str, float]:
@@ -82,11 +82,10 @@ class Placement:
     placed_rotations: np.ndarray
     placed_translations: np.ndarray
     order: list[tuple[int, int]]
-    """(row, parent row) of each link in :func:`parents_first`'s order; a root's parent row is n."""
-    levels: list[tuple[list[int], list[int]]] | None
-    """The rows of each depth in the tree, shallowest first, in that order, with their parents' rows;
-    None when the links are no tree of their own keys (shared names, missing parents: ``order``
-    then holds them as :func:`parents_first` finds them)."""
+    """(row, parent row) of each link in :func:`~rbi.formats.robot.depth_first`'s order; a root's
+    parent row is n."""
+    levels: list[tuple[list[int], list[int]]]
+    """The rows of each depth in the tree, shallowest first, in that order, with their parents' rows."""
     columns: LinkColumns | None = None
     """The model's links as arrays, when they were read in place of its links."""
 
@@ -169,7 +168,7 @@ def placement(
     t = np.empty((n + 1, 3))
     R[n], t[n] = np.eye(3), np.zeros(3)
     frames: dict[int, list] = {}
-    order, levels, exact = _levels(model, columns)
+    order, levels = _levels(model, columns)
     for level, parents in levels:
         level_R, level_t = _origins(model, columns, level)
         R[level] = np.matmul(R[parents], level_R)
@@ -200,7 +199,7 @@ def placement(
         placed_R,
         placed_t,
         order,
-        levels if exact else None,
+        levels,
         columns,
     )
 
@@ -231,25 +230,16 @@ def _root(model: RobotModel, columns: LinkColumns | None) -> tuple[int | None, s
 
 def _levels(
     model: RobotModel, columns: LinkColumns | None = None
-) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]], bool]:
-    """(row, parent row) in :func:`parents_first`'s order (a root's parent: row n, the identity),
-    the same rows grouped by depth in the tree with their parents' rows, shallowest first, and
-    whether the links are a tree of their own keys (each link's key its own, each parent a link)."""
+) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]]]:
+    """(row, parent row) in :func:`~rbi.formats.robot.depth_first`'s order (a root's parent:
+    row n, the identity), and the same rows grouped by depth in the tree with their parents'
+    rows, shallowest first. InputError for links that are no tree (:func:`tree_rows`)."""
     if columns is not None:
         n = len(columns)
         parents = [n if parent < 0 else parent for parent in columns.parents]
-        return (*_grouped_levels(columns.order, parents, n), True)
-    links = model.links
-    n = len(links)
-    parents = parent_rows(links)
-    if parents is not None:  # each key one link's, each parent a link
-        rows = depth_first(parents, n)  # parents_first's order, on rows
-        return (*_grouped_levels(rows, parents, n), True)
-    by_name = {link.key: row for row, link in enumerate(links)}
-    row_of = {link.index: row for row, link in enumerate(links)}
-    rows = [row_of[link.index] for link in parents_first(model, by_name)]
-    parent_of = {row: n if links[row].parent is None else by_name[links[row].parent] for row in rows}
-    return (*_grouped_levels(rows, parent_of, n), False)
+        return _grouped_levels(columns.order, parents, n)
+    parents, rows = tree_rows(model.path, model.links)
+    return _grouped_levels(rows, parents, len(parents))
 
 
 def _grouped_levels(rows: list[int], parents, n: int) -> tuple[list[tuple[int, int]], list]:
@@ -326,20 +316,6 @@ def _check_joints(model: RobotModel, joints: dict[str, float], table: Joints) ->
                 + f": joint {literal(name)}: {value:g} radians is too large to be a turn: rounding loses it "
                 f"(at most {math.radians(LARGEST_ANGLE_DEG):.4g} radians)",
             )
-
-
-def parents_first(model: RobotModel, by_name: dict) -> list:
-    """The links ordered so each comes after its parent (depth first from the roots; a link
-    whose parent is not in the model counts as a root)."""
-    children: dict[str | None, list] = {}
-    for link in model.links:
-        children.setdefault(link.parent if link.parent in by_name else None, []).append(link)
-    order, queue = [], list(children.get(None, []))
-    while queue:
-        link = queue.pop()
-        order.append(link)
-        queue.extend(children.get(link.key, []))
-    return order
 
 
 def _motion(motion, q: float) -> Pose:
