@@ -829,9 +829,10 @@ def simulate(
         SpecError: the run cannot be made (no mass, too many steps, overflow).
     """
     # not at top level: `rbi inertia` would load rbi.runs.run too
-    from rbi.runs.run import check_samples, prepare_run
+    from rbi.runs.run import prepare_run
+    from rbi.sim.api import check_samples
 
-    check_samples(samples)
+    samples = check_samples(samples)
     run: dict[str, Any] = dict(
         spin=spin, omega=omega, tilt_deg=tilt_deg, tilt_axis=tilt_axis, gravity=gravity
     )

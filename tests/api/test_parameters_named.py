@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import traceback
 
+import numpy as np
 import pytest
 
 import rbi
@@ -23,13 +24,37 @@ def top():
         ({"spin": True}, "spin"),
         ({"spin": 10.0, "duration": "1"}, "duration"),
         ({"spin": 10.0, "tilt_deg": False}, "tilt_deg"),
-        ({"spin": 10.0, "samples": 3.0}, "samples"),
+        ({"spin": 10.0, "samples": "3"}, "samples"),
         ({"spin": 10.0, "max_steps": True}, "max_steps"),
     ],
 )
 def test_simulate_refuses_a_value_that_is_not_a_number_naming_it(top, settings, name):
     with pytest.raises(TypeError, match=rf"^{name}: must be"):
         rbi.simulate(top, **{"duration": 0.01, **settings})
+
+
+def test_samples_are_a_whole_number_whether_int_or_float_as_the_cli_reads_them(top):
+    """``--samples 481.0`` runs (the CLI reads 481.0 as 481); so does the API's ``samples=481.0``,
+    with the same trajectory as ``samples=481``. A fraction or a count out of range is a
+    ValueError naming ``samples`` (the kernel's words too: tests/sim/test_api.py)."""
+    whole, floating = (rbi.simulate(top, spin=10.0, duration=0.5, samples=s) for s in (481, 481.0))
+    assert len(floating.t) == 481 and floating.t[1] == 0.5 / 480
+    np.testing.assert_array_equal(floating.q, whole.q)
+    for samples, words in (
+        (2.5, "samples: must be a whole number between 1 and 1,000,000 (got 2.5)"),
+        (0, "samples: must be a whole number between 1 and 1,000,000 (got 0)"),
+        (1e6 + 1, "samples: must be a whole number between 1 and 1,000,000 (got 1000001.0)"),
+        (math.nan, "samples: must be a whole number between 1 and 1,000,000 (got nan)"),
+    ):
+        with pytest.raises(ValueError) as refused:
+            rbi.simulate(top, spin=10.0, duration=0.01, samples=samples)
+        assert str(refused.value) == words
+    with pytest.raises(ValueError) as refused:
+        rbi.sweep(top, spin=10.0, duration=0.01, samples=100_001)
+    assert (
+        str(refused.value) == "samples: must be a whole number between 1 and 100,000 for a sweep (got 100001)"
+    )
+    assert len(rbi.sweep(top, spin=10.0, duration=0.01, samples=3.0)) == 1
 
 
 def test_an_integer_too_long_to_print_is_a_spec_error():

@@ -151,8 +151,15 @@ def test_bad_runs_are_refused(bolted_scene):
     for duration, samples, rtol, method, words in (
         (-1.0, 10, None, "default", "duration: must be a finite number of seconds >= 0 (got -1.0)"),
         (float("nan"), 10, None, "default", "duration: must be a finite number of seconds >= 0"),
-        (1.0, 0, None, "default", "samples: must be a whole number >= 1 (got 0)"),
-        (1.0, 2.5, None, "default", "samples: must be a whole number >= 1 (got 2.5)"),
+        (1.0, 0, None, "default", "samples: must be a whole number between 1 and 1,000,000 (got 0)"),
+        (1.0, 2.5, None, "default", "samples: must be a whole number between 1 and 1,000,000 (got 2.5)"),
+        (
+            1.0,
+            10**6 + 1,
+            None,
+            "default",
+            "samples: must be a whole number between 1 and 1,000,000 (got 1000001)",
+        ),
         (1.0, 10, 0.5, "default", "rtol: must be between 1e-15 and 0.01 (got 0.5)"),
         (1.0, 10, None, "euler", "method: must be one of default, rk45, dop853, exact (got 'euler')"),
     ):
@@ -161,6 +168,7 @@ def test_bad_runs_are_refused(bolted_scene):
         assert str(refused.value).startswith(words)
     with pytest.raises(SimulationError, match="exact"):
         simulate(bolted_scene, q0, w0, 1.0, 10, method="exact")
+    assert simulate(bolted_scene, q0, w0, 1.0, 3.0).t.tolist() == [0.0, 0.5, 1.0]  # 3.0 is 3
     assert set(METHODS) >= {"default", "rk45", "dop853", "exact"}
 
 

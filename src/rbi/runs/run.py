@@ -30,9 +30,6 @@ from rbi.sim.summary import CSV_COLUMNS, sample_columns, summarize
 from rbi.sim.summary import error_estimate as estimate
 from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 
-MAX_SAMPLES = 1_000_000
-"""Most samples one run reports (a CSV of 10⁶ rows is about 250 MB)."""
-
 SCENE_NAMES = {True: "heavy top on a fixed pivot", False: "free body (torque-free about the centre of mass)"}
 
 Progress = Callable[[float], None]
@@ -95,13 +92,6 @@ def check_tilt(tilt_deg: float) -> None:
             f"{literal(tilt_deg)} degrees is too large to be a turn: rounding loses it "
             f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
         )
-
-
-def check_samples(samples: Any, most: int = MAX_SAMPLES, what: str = "") -> None:
-    """Refuse a number of samples outside 1 … ``most`` (``what``: said after the range)."""
-    require_numbers(integral=True, samples=samples)
-    if not (whole(samples) and 1 <= samples <= most):
-        raise ArgumentError("samples", f"must be between 1 and {most:,}{what} (got {literal(samples)})")
 
 
 def spin_axis_value(value: str | Sequence[float] | None) -> list[float] | None:

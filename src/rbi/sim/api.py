@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import numbers
 import time
 from collections.abc import Callable
 from dataclasses import dataclass
@@ -10,7 +11,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.validity import finite, whole
+from rbi.core.validity import finite
 from rbi.errors import ArgumentError, literal
 from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
 from rbi.sim.scene import Scene
@@ -26,6 +27,9 @@ DEFAULT_RTOL = 1e-12
 
 RTOL_RANGE = (1e-15, 1e-2)
 """Tolerances accepted by :func:`simulate`."""
+
+MAX_SAMPLES = 1_000_000
+"""Most samples one run reports (a CSV of 10⁶ rows is about 250 MB)."""
 
 SCIPY_DEFAULT_RTOL = 1e-8
 SCIPY_ATOL_RATIO = 1e-2  # atol = rtol / 100, as in the chapter's (1e-8, 1e-10)
@@ -101,13 +105,26 @@ def check_rtol(rtol: Any) -> None:
         )
 
 
+def check_samples(samples: Any, most: int = MAX_SAMPLES, what: str = "") -> int:
+    """The one check of a number of samples: ``samples`` as an int when it is a whole number
+    (an int, or a float with no fraction such as 481.0, as ``--samples 481.0`` is read) from
+    1 to ``most`` (``what``: said after the range); TypeError for what is no number (a bool, a
+    text), ArgumentError (a ValueError) naming ``samples`` otherwise."""
+    if isinstance(samples, bool) or not isinstance(samples, numbers.Real):
+        raise TypeError(f"samples: must be a whole number (got {type(samples).__name__} {samples!r:.60})")
+    if not (1 <= samples <= most and float(samples).is_integer()):
+        raise ArgumentError(
+            "samples", f"must be a whole number between 1 and {most:,}{what} (got {literal(samples)})"
+        )
+    return int(samples)
+
+
 def validate_run(duration: Any, samples: Any, rtol: Any, method: Any) -> None:
     """The kernel's guard: ArgumentError (a ValueError) for a run that cannot be made, in the
     words the API uses (:mod:`rbi.runs.run` checks the same settings with these functions
-    before any work, and bounds ``samples`` above)."""
+    before any work)."""
     check_duration(duration)
-    if not (whole(samples) and samples >= 1):
-        raise ArgumentError("samples", f"must be a whole number >= 1 (got {literal(samples)})")
+    check_samples(samples)
     check_rtol(rtol)
     check_method(method)
 

@@ -23,7 +23,8 @@ import numpy as np
 
 from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.runs.run import body_spin_axis, check_run_settings, check_samples, check_tilt, spin_axis_value
+from rbi.runs.run import body_spin_axis, check_run_settings, check_tilt, spin_axis_value
+from rbi.sim.api import check_samples
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.units import STANDARD_GRAVITY_SI
