@@ -50,6 +50,8 @@ from rbi.names import CLI_TOOLS, PUBLIC
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.runs.values import vector_value
 from rbi.spec.checks import Check, run_checks
+from rbi.spec.points import NO_PIVOT, reference_choices, reference_name
+from rbi.spec.points import REFERENCE_POINTS as REFERENCE_POINTS
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.spec.units import convert_body
@@ -396,17 +398,12 @@ class Body(TableRepr):
         ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
         (ValueError when there is none); or a point (x, y, z)."""
 
-        key = about.strip().lower() if isinstance(about, str) else vector_value(about, "about")
-        try:
-            point = self._loaded.point(key)
-        except KeyError:
-            raise ArgumentError(
-                "about", f"expected 'com', 'origin', 'pivot' or a point (x, y, z), got {literal(about)}"
-            ) from None
+        key = reference_name(about) if isinstance(about, str) else vector_value(about, "about")
+        if key is None:
+            raise ArgumentError("about", f"expected {reference_choices('(x, y, z)')}, got {literal(about)}")
+        point = self._loaded.point(key)
         if point is None:
-            raise ArgumentError(
-                "about", "'pivot' needs a `pivot` in the spec, and there is none", file=self.path
-            )
+            raise ArgumentError("about", NO_PIVOT, file=self.path)
         return np.array(point, dtype=float)
 
     def inertia(

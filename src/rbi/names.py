@@ -55,5 +55,8 @@ CLI_TOOLS = (
     "LENGTH_UNITS",
     "MASS_UNITS",
     "LARGEST_ANGLE_DEG",
+    # the reference points by name and what --about may be (rbi inertia, principal, dynamics)
+    "REFERENCE_POINTS",
+    "reference_choices",
 )
 """What rbi.api offers the command line besides :data:`PUBLIC` (not names of ``rbi``)."""

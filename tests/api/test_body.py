@@ -151,10 +151,10 @@ def test_reference_points_by_name_and_their_refusals():
     with pytest.raises(rbi.ArgumentError) as refused:
         free.point("pivot")
     assert isinstance(refused.value, ValueError) and refused.value.parameters == ("about",)
-    assert str(refused.value) == "<string>: about: 'pivot' needs a `pivot` in the spec, and there is none"
+    assert str(refused.value) == "<string>: about: pivot needs a `pivot` in the spec, and there is none"
     for name in ("tip", "{x}"):  # braces print as given
         with pytest.raises(ValueError) as refused:
             free.point(name)
         assert str(refused.value) == (
-            f"about: expected 'com', 'origin', 'pivot' or a point (x, y, z), got {name!r}"
+            f"about: expected com, origin, pivot or a point (x, y, z), got {name!r}"
         )

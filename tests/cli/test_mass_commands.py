@@ -199,3 +199,38 @@ def test_table_is_readable_with_units(bolted, args, labels):
     for label in labels:
         assert label in text, (label, text)
     assert "{" not in text  # a table, not JSON
+
+
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+@pytest.mark.parametrize(
+    "command",
+    [["inertia"], ["principal"], ["momentum", "--omega", "0,0,1"], ["dynamics", "--alpha", "1,0,0"]],
+)
+def test_about_names_the_same_points_in_the_same_words_as_the_api_and_the_spec(tmp_path, command, form):
+    """One list of names (com, origin, pivot) and one wording behind --about, rbi.Body.point's
+    about and a spec's expect about (the CLI once said 'pivot: --about pivot needs ...')."""
+    import rbi
+
+    free = tmp_path / "free.yaml"
+    free.write_text("parts:\n  - {name: ball, shape: sphere, radius: 0.1, mass: 2, center: [0, 0, 1]}\n")
+    proc = run_rbi_inprocess(*command[:1], free, *command[1:], "--about", "pivot", "-f", form)
+    assert (proc.returncode, proc.stdout) == (2, "")
+    assert proc.stderr == f"rbi: {free}: --about: pivot needs a `pivot` in the spec, and there is none\n"
+    proc = run_rbi_inprocess(*command[:1], free, *command[1:], "--about", " Tip", "-f", form)
+    assert proc.returncode == 2 and proc.stderr == (
+        "rbi: --about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
+        "commas, file units), got ' Tip'\n"
+    )
+    out = rbi_json(*command[:1], free, *command[1:], "--about", " ORIGIN ")
+    assert out["about"] == [0.0, 0.0, 0.0]
+    body = rbi.load(free)
+    with pytest.raises(ValueError) as refused:
+        body.point("pivot")
+    assert str(refused.value) == f"{free}: about: pivot needs a `pivot` in the spec, and there is none"
+    with pytest.raises(ValueError) as refused:
+        body.point(" Tip")
+    assert str(refused.value) == "about: expected com, origin, pivot or a point (x, y, z), got ' Tip'"
+    free.write_text(free.read_text() + "expect:\n  moments: {value: [1, 1, 1], tol: 1%, about: tip}\n")
+    proc = run_rbi_inprocess("check", free)
+    assert proc.returncode == 2
+    assert "expect.moments.about: must be com, origin, pivot or a point [x, y, z] (got 'tip')" in proc.stderr

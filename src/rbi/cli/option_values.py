@@ -123,19 +123,19 @@ def vary_option(items: list[str]) -> dict[str, Any]:
 
 
 def parse_about(text: str, body) -> tuple[str, list[float]]:
-    """Resolve ``--about`` against a `rbi.Body`: (label, point in body coordinates)."""
+    """Resolve ``--about`` against a `rbi.Body`: (label, point in body coordinates); a name
+    by `rbi.Body.point` (its errors say ``--about``)."""
+    # not at top level: `rbi --help` would load rbi.api too
+    from rbi.api import REFERENCE_POINTS, reference_choices
+
     key = text.strip().lower()
-    if key == "pivot" and body.pivot is None:
-        raise SpecError(f"{body.path}: pivot: --about pivot needs a `pivot` in the spec, and there is none")
-    if key in ("com", "origin", "pivot"):
+    if key in REFERENCE_POINTS:
         return key, body.point(key).tolist()
     try:
         return "point", parse_vector(text, "--about")
     except SpecError:
-        raise SpecError(
-            f"--about: expected com, origin, pivot or a point X,Y,Z (three numbers separated by "
-            f"commas, file units), got {text!r}"
-        ) from None
+        choices = reference_choices("X,Y,Z (three numbers separated by commas, file units)")
+        raise SpecError(f"--about: expected {choices}, got {text!r}") from None
 
 
 def parse_rotation(text: str) -> tuple[str, float]:

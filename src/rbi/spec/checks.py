@@ -10,6 +10,7 @@ import numpy as np
 
 from rbi.core.inertia import principal_axes
 from rbi.errors import InputError
+from rbi.spec.points import NO_PIVOT
 
 
 @dataclass(frozen=True)
@@ -62,7 +63,7 @@ def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
     :meth:`~rbi.spec.translate.LoadedBody.point`."""
     point = body.point(about)
     if point is None:
-        raise InputError(f"{body.path}: expect: about: pivot needs a `pivot` in the spec, and there is none")
+        raise InputError(f"{body.path}: expect: about: {NO_PIVOT}")
     return ("point" if isinstance(about, list) else about), point
 
 

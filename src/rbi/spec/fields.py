@@ -16,6 +16,7 @@ from pydantic import AfterValidator, BaseModel, ConfigDict, Field, PlainValidato
 from rbi.core.validity import subnormal_problem
 from rbi.errors import shown
 from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
+from rbi.spec.points import REFERENCE_POINTS, reference_choices, reference_name
 
 
 def not_subnormal(value: float) -> float:
@@ -263,11 +264,12 @@ Tolerance = Annotated[
 
 
 def _about(value: Any) -> str | list[float]:
-    if isinstance(value, str) and value.strip().lower() in ("com", "origin", "pivot"):
-        return value.strip().lower()
+    name = reference_name(value)
+    if name is not None:
+        return name
     if isinstance(value, list) and len(value) == 3:
         return [_component(f"[{i}]", v) for i, v in enumerate(value)]
-    raise ValueError(f"must be com, origin, pivot or a point [x, y, z] (got {shown(value)})")
+    raise ValueError(f"must be {reference_choices('[x, y, z]')} (got {shown(value)})")
 
 
 AboutPoint = Annotated[
@@ -276,7 +278,7 @@ AboutPoint = Annotated[
     WithJsonSchema(
         {
             "anyOf": [
-                {"type": "string", "enum": ["com", "origin", "pivot"]},
+                {"type": "string", "enum": list(REFERENCE_POINTS)},
                 {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3},
             ],
             "description": "Reference point: com, origin, pivot, or [x, y, z] in body coordinates.",

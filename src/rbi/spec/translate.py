@@ -58,8 +58,9 @@ class LoadedBody:
     def point(self, about: str | Sequence[float]) -> np.ndarray | None:
         """The reference point ``about`` as (3,) body coordinates, length unit: ``"com"`` the
         centre of mass, ``"origin"`` (0, 0, 0), ``"pivot"`` the spec's pivot (None when it has
-        none: each caller says so in its own terms), or the point (x, y, z) itself. KeyError for
-        any other name (callers normalise case and spaces first)."""
+        none: each caller says so, in :data:`rbi.spec.points.NO_PIVOT`'s words), or the point
+        (x, y, z) itself. ``about`` is one of :data:`~rbi.spec.points.REFERENCE_POINTS` as
+        :func:`~rbi.spec.points.reference_name` gives it, or a point."""
         if not isinstance(about, str):
             return np.asarray(about, dtype=float)
         return {"com": self.props.center_of_mass, "origin": np.zeros(3), "pivot": self.pivot}[about]
