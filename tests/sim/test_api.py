@@ -213,3 +213,29 @@ def test_a_spec_in_millimetres_moves_like_the_one_in_metres(write_spec):
     a = simulate(metres, q0, w0, 2.0, 21)
     b = simulate(millimetres, q0, w0, 2.0, 21)
     assert np.max(orientation_error_deg(a.q, b.q)) < 1e-7
+
+
+@pytest.mark.parametrize("degrees", [1e-7, 0.01, 30.0, 90.0, 179.0])
+def test_orientation_error_is_the_angle_of_the_turn_between_by_cores_product(degrees, monkeypatch):
+    """q and q ⊗ (a turn of θ about an axis): the error is θ, whichever sign either quaternion
+    has, for a stack too; the product is rbi.core.rotation's (no second one in rbi.sim)."""
+    from rbi.core import rotation
+    from rbi.sim import diagnostics
+
+    rng = np.random.default_rng(7)
+    q = rng.normal(size=(4, 4))
+    q /= np.linalg.norm(q, axis=1)[:, None]
+    axis = np.array([1.0, -2.0, 0.5]) / np.sqrt(5.25)
+    half = np.radians(degrees) / 2
+    turn = np.concatenate(([np.cos(half)], np.sin(half) * axis))
+    r = np.array([rotation.quaternion_multiply(each, turn) for each in q])
+    for sign in (1.0, -1.0):
+        np.testing.assert_allclose(orientation_error_deg(sign * q, r), degrees, rtol=1e-9, atol=1e-13)
+    calls = []
+
+    def product(a, b):
+        calls.append(1)
+        return rotation.quaternion_multiply(a, b)
+
+    monkeypatch.setattr(diagnostics, "quaternion_multiply", product)
+    assert orientation_error_deg(q[0], r[0]) == pytest.approx(degrees, rel=1e-9, abs=1e-13) and calls

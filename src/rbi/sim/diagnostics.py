@@ -24,7 +24,14 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import quaternion_multiply, rotate, up_in_body, vector_length, z_axis_in_world
+from rbi.core.rotation import (
+    quaternion_conjugate,
+    quaternion_multiply,
+    rotate,
+    up_in_body,
+    vector_length,
+    z_axis_in_world,
+)
 from rbi.sim.scene import Scene
 
 AXISYMMETRY_RTOL = 1e-9
@@ -184,9 +191,8 @@ def orientation_error_deg(q: np.ndarray, r: np.ndarray) -> np.ndarray:
     the sign of either quaternion."""
     q = np.atleast_2d(q) / np.linalg.norm(np.atleast_2d(q), axis=1)[:, None]
     r = np.atleast_2d(r) / np.linalg.norm(np.atleast_2d(r), axis=1)[:, None]
-    scalar = np.einsum("ni,ni->n", q, r)
-    vector = r[:, :1] * q[:, 1:] - q[:, :1] * r[:, 1:] - np.cross(r[:, 1:], q[:, 1:])
-    angle = np.degrees(2.0 * np.arctan2(np.linalg.norm(vector, axis=1), np.abs(scalar)))
+    turn = quaternion_multiply(quaternion_conjugate(r), q)
+    angle = np.degrees(2.0 * np.arctan2(np.linalg.norm(turn[:, 1:], axis=1), np.abs(turn[:, 0])))
     return angle if angle.size > 1 else float(angle[0])
 
 
