@@ -538,15 +538,12 @@ def rpy_matrix(rpy) -> np.ndarray:
 
 
 def quaternion_matrix(where: Where, wxyz, what: str) -> np.ndarray:
-    """Rotation of the quaternion ``w x y z`` (normalised; scaled first so huge components do
-    not overflow)."""
-
-    q = np.asarray(wxyz, dtype=float)
-    largest = float(np.max(np.abs(q)))
-    if largest == 0.0:
+    """Rotation of the quaternion ``w x y z`` (MJCF's order; SDF's ``x y z w`` reordered by its
+    reader) of any finite non-zero size: :func:`~rbi.core.rotation.quaternion_to_matrix`
+    normalises it, once."""
+    if not np.any(wxyz):
         raise where.error(f"{what}: the quaternion must not be zero")
-    q = q / largest
-    return without_rounding_noise(quaternion_to_matrix(q / np.linalg.norm(q)))
+    return without_rounding_noise(quaternion_to_matrix(wxyz))
 
 
 def unit(where: Where, vector, what: str) -> np.ndarray:
