@@ -11,7 +11,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rbi.core.mesh import enclosed_volume_properties, mesh_defects, mesh_problem, weld_vertices
+from rbi.core.mesh import closed_mesh_check, enclosed_volume_properties, mesh_defects, weld_vertices
 from tests.mesh_builders import box_mesh, cylinder_mesh, sphere_mesh, tetrahedron_mesh
 
 
@@ -141,7 +141,7 @@ def test_welding_joins_stl_corners_with_cad_rounding_noise():
     assert mesh_defects(soup_f).boundary_edges == 36  # unshared corners: every edge is a boundary
     vertices, faces = weld_vertices(soup_v, soup_f)
     assert len(vertices) == 8
-    assert mesh_problem(vertices, faces) is None
+    assert closed_mesh_check(vertices, faces)[0] is None
     assert enclosed_volume_properties(vertices, faces).mass == pytest.approx(8.0, rel=1e-15)
 
 
@@ -154,14 +154,15 @@ def test_welding_keeps_distinct_vertices_apart():
 def test_good_meshes_have_no_defects():
     for vertices, faces in (box_mesh(), cylinder_mesh(1, 1, 7), sphere_mesh(1, 5, 9)):
         assert mesh_defects(faces) == (0, 0, 0, 0, 0)
-        assert mesh_problem(vertices, faces) is None
+        assert closed_mesh_check(vertices, faces)[0] is None
 
 
 def test_a_missing_triangle_leaves_three_boundary_edges():
     vertices, faces = box_mesh()
     assert mesh_defects(faces[1:]).boundary_edges == 3
     assert (
-        mesh_problem(vertices, faces[1:]) == "not closed: 3 boundary edges (edges used by only one triangle)"
+        closed_mesh_check(vertices, faces[1:])[0]
+        == "not closed: 3 boundary edges (edges used by only one triangle)"
     )
     assert mesh_defects(faces[2:]).boundary_edges == 4  # a whole side gone: its square outline
 
@@ -171,21 +172,23 @@ def test_a_flipped_face_is_inconsistent_winding():
     faces = faces.copy()
     faces[5] = faces[5, ::-1]
     assert mesh_defects(faces).misoriented_edges == 3
-    assert mesh_problem(vertices, faces).startswith("not consistently wound: 3 edges")
+    assert closed_mesh_check(vertices, faces)[0].startswith("not consistently wound: 3 edges")
 
 
 def test_an_inside_out_mesh_has_negative_volume():
     vertices, faces = box_mesh((1, 2, 3))
     inverted = faces[:, ::-1]
     assert enclosed_volume_properties(vertices, inverted).mass == pytest.approx(-6.0)
-    assert mesh_problem(vertices, inverted).startswith("inside out: the enclosed volume is negative (-6)")
+    assert closed_mesh_check(vertices, inverted)[0].startswith(
+        "inside out: the enclosed volume is negative (-6)"
+    )
 
 
 def test_a_flat_double_sided_sheet_encloses_nothing():
     vertices = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0.0]])
     faces = np.array([[0, 1, 2], [0, 2, 1]])
     assert mesh_defects(faces) == (0, 0, 0, 0, 0)
-    assert mesh_problem(vertices, faces).startswith("encloses no volume")
+    assert closed_mesh_check(vertices, faces)[0].startswith("encloses no volume")
 
 
 def test_an_edge_shared_by_four_triangles_half_each_way_joins_two_solids():
@@ -197,24 +200,24 @@ def test_an_edge_shared_by_four_triangles_half_each_way_joins_two_solids():
     faces = np.vstack([f1, remap[f2]])
     defects = mesh_defects(faces)
     assert defects.overshared_edges == 0 and defects.boundary_edges == 0 and defects.shared_edges == 1
-    assert mesh_problem(vertices, faces) is None
+    assert closed_mesh_check(vertices, faces)[0] is None
     assert enclosed_volume_properties(vertices, faces).mass == pytest.approx(2 / 6, rel=1e-15)
 
 
 def test_empty_and_broken_arrays_are_named():
-    assert mesh_problem(np.zeros((0, 3)), np.zeros((0, 3), int)) == "holds no triangles"
+    assert closed_mesh_check(np.zeros((0, 3)), np.zeros((0, 3), int))[0] == "holds no triangles"
     vertices, faces = box_mesh()
-    assert mesh_problem(vertices, np.vstack([faces, [[0, 1, 99]]])) == (
+    assert closed_mesh_check(vertices, np.vstack([faces, [[0, 1, 99]]]))[0] == (
         "face 12 names a vertex that does not exist (vertices are numbered 0 to 7)"
     )
     vertices = vertices.copy()
     vertices[6, 1] = np.nan
-    assert mesh_problem(vertices, faces) == "vertex 6: coordinates must be finite numbers"
+    assert closed_mesh_check(vertices, faces)[0] == "vertex 6: coordinates must be finite numbers"
 
 
 def test_degenerate_faces_are_counted_and_add_nothing():
     vertices, faces = box_mesh((1, 2, 3))
     with_sliver = np.vstack([faces, [[0, 0, 1]]])
     assert mesh_defects(with_sliver).degenerate_faces == 1
-    assert mesh_problem(vertices, with_sliver) is None
+    assert closed_mesh_check(vertices, with_sliver)[0] is None
     assert enclosed_volume_properties(vertices, with_sliver).mass == pytest.approx(6.0, rel=1e-15)

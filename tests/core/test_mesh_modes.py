@@ -9,9 +9,9 @@ import pytest
 
 from rbi.core.mesh import (
     MeshError,
+    closed_mesh_check,
     convex_hull_mesh,
     mesh_defects,
-    mesh_problem,
     repair_mesh,
     weld_vertices,
 )
@@ -60,7 +60,7 @@ def joined(*meshes):
 def test_two_cubes_touching_are_twice_the_cube(second_center, shares):
     vertices, faces = joined(box_mesh(center=(0.5, 0.5, 0.5)), box_mesh(center=second_center))
     assert len(vertices) == {"an edge": 14, "a vertex": 15, "a face": 12}[shares]
-    assert mesh_problem(vertices, faces) is None, shares
+    assert closed_mesh_check(vertices, faces)[0] is None, shares
     props = mesh_mass_properties(vertices, faces, "exact", density=1.0)
     mass, com, inertia = combined(
         [
@@ -97,7 +97,7 @@ def test_an_edge_whose_uses_do_not_balance_is_still_refused():
     faces = np.vstack([faces, [[0, 1, 8]]])
     defects = mesh_defects(faces)
     assert (defects.overshared_edges, defects.boundary_edges) == (1, 2)
-    assert mesh_problem(vertices, faces).startswith("not closed: 2 boundary edges")
+    assert closed_mesh_check(vertices, faces)[0].startswith("not closed: 2 boundary edges")
     # two cubes on one edge, one face beside that edge turned over: four uses, three one way
     vertices, faces = joined(box_mesh(center=(0.5, 0.5, 0.5)), box_mesh(center=(1.5, 1.5, 0.5)))
     shared = {tuple(np.flatnonzero(np.all(vertices == p, axis=1))) for p in ([1, 1, 0], [1, 1, 1])}
@@ -105,7 +105,7 @@ def test_an_edge_whose_uses_do_not_balance_is_still_refused():
     faces = faces.copy()
     faces[beside[0]] = faces[beside[0], ::-1]
     assert mesh_defects(faces).overshared_edges == 1
-    problem = mesh_problem(vertices, faces)
+    problem = closed_mesh_check(vertices, faces)[0]
     assert "used by more than two triangles, not as many each way" in problem
 
 
@@ -126,7 +126,7 @@ def test_a_hollow_box_is_a_solid_with_a_cavity():
 def test_a_piece_wound_inside_out_beside_a_good_one_is_refused():
     # total volume positive (8 - 1), but the small cube is no cavity: it lies outside the big one
     vertices, faces = joined(box_mesh((2, 2, 2)), (box_mesh(center=(5, 0, 0))[0], box_mesh()[1][:, ::-1]))
-    problem = mesh_problem(vertices, faces)
+    problem = closed_mesh_check(vertices, faces)[0]
     assert problem is not None and "inside out" in problem
 
 
@@ -157,7 +157,7 @@ def test_corners_one_ulp_apart_across_a_grid_boundary_are_one_vertex():
     soup[copies[::2], 0] = np.nextafter(x, 2.0)
     welded, welded_faces = weld_vertices(soup, np.arange(len(soup)).reshape(-1, 3))
     assert len(welded) == 12
-    assert mesh_problem(welded, welded_faces) is None
+    assert closed_mesh_check(welded, welded_faces)[0] is None
     assert mesh_mass_properties(welded, welded_faces, density=1.0).volume == pytest.approx(
         0.5 * (4 - (2 - x) ** 2), rel=1e-12
     )
@@ -271,7 +271,7 @@ def extruded(outline, height):
 def test_convex_hull_mesh_is_closed_and_outward():
     vertices, faces = extruded([(0, 0), (2, 0), (2, 1), (1, 1), (1, 2), (0, 2)], 1.0)
     hull_vertices, hull_faces = convex_hull_mesh(vertices)
-    assert mesh_problem(hull_vertices, hull_faces) is None
+    assert closed_mesh_check(hull_vertices, hull_faces)[0] is None
 
 
 def test_convex_mode_refuses_a_flat_point_set():

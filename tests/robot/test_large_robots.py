@@ -153,11 +153,12 @@ def _hostile_inertias(n: int) -> list[tuple[float, np.ndarray]]:
 )
 def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, shapes, density, careful):
     """Whichever form the audit reads the model in (``careful``: its links, made first and laid
-    into the audit's arrays; else the reader's columns, as they are)."""
+    into the audit's arrays; else the reader's columns, as they are): each link's flags and
+    numbers are those of the careful path, one link at a time (measured, then flagged)."""
     from rbi.formats import robot_xml
     from rbi.formats.robot_files import read_robot
     from rbi.formats.urdf import read_urdf
-    from rbi.robot.audit import _carried_mass, audit_link, audit_model
+    from rbi.robot.audit import _carried_mass, _flags, _measured_link, audit_model
 
     path = tmp_path / "r.urdf"
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
@@ -169,7 +170,8 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, sha
     carried = _carried_mass(model.path, model.links)
     codes = set()
     for link, found in zip(model.links, bulk.links):
-        one = audit_link(model, link, carries_mass=carried[link.index], density=density)
+        one = _measured_link(model, link, "collision", density, "auto", False, None)
+        one.flags += _flags(model, link, one, carried[link.index])
         assert [f.as_dict() for f in found.flags] == [f.as_dict() for f in one.flags]
         assert _same(found.ratios, one.ratios) and found.com_offset == one.com_offset
         _assert_same_geometry(found.geometry, one.geometry)

@@ -385,12 +385,6 @@ MAX_COORDINATE = 1e50
 and (1e50)⁵ is far inside the float range while no real part is measured in such numbers."""
 
 
-def mesh_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
-    """Why the mesh does not bound a solid rbi can integrate (mode ``exact``), in plain words,
-    or None."""
-    return closed_mesh_check(vertices, faces)[0]
-
-
 def closed_mesh_check(vertices: np.ndarray, faces: np.ndarray) -> tuple[str | None, tuple[str, ...]]:
     """Why the mesh does not bound a solid (or None), and notes on a mesh that does but whose
     numbers deserve a word (pieces that overlap, whose shared space counts twice)."""

@@ -503,7 +503,7 @@ class _ColumnAudit:
     """The audit of a model's links on the arrays of their :class:`_Rows`: the links the bulk
     screens clear (no flag, their numbers worked out on stacks) are kept as rows and made into
     :class:`LinkAudit` values when asked for (:meth:`links`); the others (``audited``: row →
-    LinkAudit) are made now and audited one by one, as :func:`audit_link` audits them."""
+    LinkAudit) are made now and audited one by one (:func:`_measured_link`, :func:`_flags`)."""
 
     def __init__(self, model: RobotModel, rows: _Rows):
         self.model, self.rows = model, rows
@@ -639,23 +639,6 @@ def link_geometry(
             own_mass = geom.mass if geom.mass is not None else geom.density * found.measure
         pieces.append((found, own_mass))
     return source, pieces
-
-
-def audit_link(
-    model: RobotModel,
-    link: Link,
-    *,
-    geometry: str = "collision",
-    density: float | None = None,
-    mesh_inertia: str = "auto",
-    carries_mass: bool = False,
-    mesh_repair: bool = False,
-    notes: list[str] | None = None,
-) -> LinkAudit:
-    """One link's audit (:func:`audit_model` audits them all, the costly numbers in bulk)."""
-    result = _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, notes)
-    result.flags += _flags(model, link, result, carries_mass)
-    return result
 
 
 def _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, notes) -> LinkAudit:
