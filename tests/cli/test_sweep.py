@@ -7,6 +7,7 @@ from __future__ import annotations
 import csv
 import json
 import math
+import re
 import subprocess
 import sys
 
@@ -342,3 +343,15 @@ def test_a_varied_field_has_its_unit_in_the_tables(monkeypatch):
     )
     header = grid.stdout.splitlines()[1:3]
     assert "parts.rim.outer_radius" in header[0] and " mm " in header[1], grid.stdout
+
+
+def test_the_maps_axes_are_labelled_as_every_other_picture(tmp_path):
+    # `rbi sweep top.yaml --spin A:B:N --tilt A:B:N --plot map.png` labelled its axes 'spin, rad/s'
+    # and 'initial tilt, deg'; the tilt axis holds each run's nudge (--tilt), which is the
+    # initial tilt only for a body drawn upright (a gyroscope on its side starts at 90°)
+    pytest.importorskip("matplotlib")
+    out = tmp_path / "map.svg"
+    proc = rbi("sweep", TOP, "--spin", "180:240:3", "--tilt", "0.01:1:2", "--duration", "1", "--plot", out)
+    assert proc.returncode == 0, proc.stderr
+    texts = re.findall(r"<!-- (.*?) -->", out.read_text(encoding="utf-8"))
+    assert "spin [rad/s]" in texts and "nudge at t = 0 [deg]" in texts, texts

@@ -355,4 +355,7 @@ def _axis(name: str, value: Any, parameter: str | None = None):
 
 
 def _label(name: str) -> str:
-    return {"spin": "spin, rad/s", "tilt_deg": "initial tilt, deg"}.get(name, name)
+    """A map axis's label, unit in brackets as on every other picture: the ``tilt_deg`` column
+    holds each run's nudge at t = 0 (``--tilt``), not the tilt of its spin axis then (90° for
+    a gyroscope on its side with no nudge)."""
+    return {"spin": "spin [rad/s]", "tilt_deg": "nudge at t = 0 [deg]"}.get(name, name)
