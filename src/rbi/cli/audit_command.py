@@ -213,14 +213,13 @@ def _table(report) -> None:
         for flag in each.flags:
             print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))
     total = report.total
-    print(
-        terminal_safe(
-            f"total ({total.frame}): mass {number(total.mass, 6)} kg, centre of mass "
-            f"[{', '.join(number(v, 6) for v in total.center_of_mass)}] m"
-        )
-    )
-    moments = np.linalg.eigvalsh(total.inertia_about_com)
-    print(f"  principal moments about the centre of mass: {', '.join(number(v, 6) for v in moments)} kg·m²")
+    # three short lines, not one of up to ~100 characters that a terminal of 80 would break
+    # inside a number; rounding noise (2.8e-18 m of a symmetric robot) printed as 0
+    centre = without_noise(total.center_of_mass)
+    moments = without_noise(np.linalg.eigvalsh(total.inertia_about_com))
+    print(terminal_safe(f"total ({total.frame}): mass {number(total.mass, 6)} kg"))
+    print(f"  centre of mass [m]: [{', '.join(number(v, 6) for v in centre)}]")
+    print(f"  principal moments about it [kg·m²]: {', '.join(number(v, 6) for v in moments)}")
     _joints_table(report)
     for note in report.notes:
         say(f"note: {note}")
