@@ -768,7 +768,8 @@ class Trajectory(TableRepr):
         rows = [
             ("scene", "", str(s.get("scene", ""))),
             ("method", "", str(s.get("method", ""))),
-            ("duration, samples", "s", f"{float(self.t[-1]):g}, {self.t.size}"),
+            ("duration", "s", f"{float(self.t[-1]):g}"),
+            ("samples", "", str(self.t.size)),
             ("final q [w, x, y, z]", "", vector_text(self.q[-1])),
             ("final ω (body axes)", "rad/s", vector_text(self.omega[-1])),
             (f"final tilt of {_axis_name(s.get('spin_axis'))}", "deg", f"{float(self.tilt_deg[-1]):.6g}"),

@@ -212,3 +212,11 @@ def test_the_table_says_the_quaternions_order(monkeypatch):
     # upright, spinning 200 rad/s about z for 0.1 s: turned 20 rad, q = [cos 10, 0, 0, sin 10]
     shown = [float(v) for v in row.split("]", 1)[1].strip().strip("[]").split(",")]
     assert shown == pytest.approx([math.cos(10), 0, 0, math.sin(10)], abs=1e-6)
+
+
+def test_the_duration_and_the_samples_are_two_rows(monkeypatch):
+    # the row 'duration, samples [s]  0.5, 11' put a unit of seconds on a count of samples
+    monkeypatch.setenv("COLUMNS", "80")
+    proc = run_rbi_inprocess("simulate", TOP, "--spin", "200", "--duration", "0.5", "--samples", "11")
+    rows = {line.split()[0]: line.split()[1:] for line in proc.stdout.splitlines() if line.strip()}
+    assert rows["duration"] == ["s", "0.5"] and rows["samples"] == ["11"], proc.stdout

@@ -182,7 +182,8 @@ def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
     return [
         ("scene", "", result["scene"]),
         ("method", "", result["method"]),
-        ("duration, samples", "s", f"{number(result['duration'])}, {result['samples']}"),
+        ("duration", "s", number(result["duration"])),
+        ("samples", "", str(result["samples"])),
         ("final q [w, x, y, z]", "", vector_text(final["q"])),
         ("final ω (body axes)", "rad/s", vector_text(final["omega"])),
         ("spin axis (body axes)", "", vector_text(result["spin_axis"])),
