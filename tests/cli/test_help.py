@@ -102,3 +102,14 @@ def test_no_help_line_is_wider_than_the_terminal(command):
     text = _help(*([command] if command else []))
     wide = [line for line in text.splitlines() if len(line) > 80]
     assert not wide, wide
+
+
+def test_the_gif_rate_says_its_range(bodies, tmp_path):
+    # `rbi animate --help` said only 'Frames per second of a GIF.', and --fps 61 is refused
+    # ('must be between 1 and 60'), as is a GIF of more than 1500 frames
+    text = " ".join(_help("animate").split())
+    assert "Frames per second of a GIF, 1–60;" in text and "at most 1500" in text
+    refused = run_rbi_inprocess(
+        "animate", "bodies/top.yaml", "--spin", "100", "--fps", "61", "--out", "x.gif"
+    )
+    assert refused.returncode == 2 and "between 1 and 60" in refused.stderr and not out.exists()

@@ -37,7 +37,15 @@ SpeedOption = Annotated[
     float,
     typer.Option("--speed", metavar="X", help="Playback speed the page starts at (0.1–2; 1 = real time)."),
 ]
-FpsOption = Annotated[int, typer.Option("--fps", metavar="N", help="Frames per second of a GIF.")]
+FpsOption = Annotated[
+    int,
+    typer.Option(
+        "--fps",
+        metavar="N",
+        help="Frames per second of a GIF, 1–60; it plays in real time, so it has about --duration × N "
+        "frames, at most 1500.",
+    ),
+]
 
 
 def animate(
