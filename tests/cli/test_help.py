@@ -109,7 +109,6 @@ def test_the_gif_rate_says_its_range(bodies, tmp_path):
     # ('must be between 1 and 60'), as is a GIF of more than 1500 frames
     text = " ".join(_help("animate").split())
     assert "Frames per second of a GIF, 1–60;" in text and "at most 1500" in text
-    refused = run_rbi_inprocess(
-        "animate", "bodies/top.yaml", "--spin", "100", "--fps", "61", "--out", "x.gif"
-    )
+    out = tmp_path / "x.gif"
+    refused = run_rbi_inprocess("animate", bodies / "top.yaml", "--spin", "100", "--fps", "61", "--out", out)
     assert refused.returncode == 2 and "between 1 and 60" in refused.stderr and not out.exists()
