@@ -104,7 +104,7 @@ def load(
     from rbi.spec import load as spec_load
 
     if isinstance(source, Mapping):
-        spec_load.refuse_lone_surrogates(dict(source), "<dict>")
+        spec_load.check_plain_data(dict(source), "<dict>")
         return _body(
             lambda: (spec_load.body_from_raw(dict(source), "<dict>"), dict(source)),
             "<dict>",

@@ -116,3 +116,46 @@ def test_several_problems_in_text_or_a_dict_are_counted_without_a_command_to_run
         rbi.load({"parts": [{"shape": "cone", "mass": -1}]})
     message = str(caught.value)
     assert message.startswith("<dict>: parts[0]: ") and "more)" in message and "rbi validate" not in message
+
+
+def _holding_itself():
+    spec = {"parts": []}
+    spec["parts"].append(spec)
+    return spec
+
+
+def _list_holding_itself():
+    loop: list = [0.0, 0.0]
+    loop.append(loop)
+    return {"parts": [{"shape": "point", "mass": 1.0, "position": loop}]}
+
+
+def _shared_doubling(levels=60):
+    node: list = [0.0]
+    for _ in range(levels):
+        node = [node, node]  # 2**60 values once written out
+    return {"parts": [{"shape": "point", "mass": 1.0, "position": node}]}
+
+
+@pytest.mark.parametrize(
+    "make, words",
+    [
+        (_holding_itself, "nests deeper than 100 levels or holds itself"),
+        (_list_holding_itself, "nests deeper than 100 levels or holds itself"),
+        (_shared_doubling, "more than 33,554,432 values"),
+    ],
+)
+def test_a_dict_that_holds_itself_or_expands_without_bound_is_refused_at_once(make, words):
+    """rbi.load of a dict that holds itself walked it until memory ran out (MemoryError under a
+    2 GB limit; without one, the machine's memory): the lone-surrogate walk followed the loop for
+    ever. A dict is held to what a spec file may be: at most 100 levels deep, and at most as many
+    values, written out, as a 64 MiB file could hold (a shared list counts once per place)."""
+    with pytest.raises(rbi.SpecError, match=f"^<dict>: .*{words}"):
+        rbi.load(make())
+
+
+def test_a_part_shared_by_many_places_is_read_as_written_out():
+    part = {"shape": "point", "mass": 0.5, "position": [1.0, 0.0, 0.0]}
+    body = rbi.load({"parts": [part] * 1000})
+    assert body.mass == pytest.approx(500.0)
+    np.testing.assert_allclose(body.center_of_mass, [1.0, 0.0, 0.0])

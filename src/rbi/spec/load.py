@@ -111,25 +111,59 @@ _SURROGATE_ESCAPE = re.compile(r"\\[uU]0{0,4}[dD][89a-fA-F][0-9a-fA-F]{2}")
 """``\\ud800`` … ``\\udfff`` written as an escape: the only way a lone surrogate gets into a spec."""
 
 
-def refuse_lone_surrogates(value: Any, path: str, where: str = "") -> None:
-    """InputError naming the field when a string (key or value) holds a lone surrogate: half of a
-    UTF-16 pair, not a character, that no terminal, JSON or CSV writer can encode."""
-    stack = [(value, where)]
-    while stack:
-        item, at = stack.pop()
+MAX_VALUES = MAX_SPEC_BYTES // 2
+"""Most values (written out: a list shared by two places counts twice) a spec given as data may
+hold: as many as a spec file of :data:`MAX_SPEC_BYTES` could write (``0,`` each)."""
+
+
+def check_plain_data(value: Any, path: str, most: int | None = MAX_VALUES) -> None:
+    """InputError naming ``path`` unless ``value`` (a parsed spec, or a dict given to the API) is
+    plain data a spec could be: lists and mappings nested at most :data:`MAX_DEPTH` levels and
+    never holding themselves, at most ``most`` values written out (None: no bound), no string
+    (key or value) holding a lone surrogate (half of a UTF-16 pair, not a character, that no
+    terminal, JSON or CSV writer can encode). A list or mapping shared by several places is
+    looked into once."""
+
+    sizes: dict[int, int] = {}  # values written out, of each list or mapping looked into
+    inside: set[int] = set()  # the lists and mappings being looked into, outermost first
+
+    def size(item: Any, at: str, depth: int) -> int:
+        if isinstance(item, str):
+            _refuse_lone_surrogate(item, path, at)
+            return 1
+        if not isinstance(item, (dict, list, tuple)):
+            return 1
+        if id(item) in sizes:
+            return sizes[id(item)]
+        if id(item) in inside or depth >= MAX_DEPTH:
+            where = at if len(at) <= 60 else at[:57] + "..."
+            raise InputError(
+                f"{path}: {where or 'the spec'}: nests deeper than {MAX_DEPTH} levels or holds itself"
+            )
+        inside.add(id(item))
+        total = 1
         if isinstance(item, dict):
             for key, child in item.items():
-                stack.append((key, at))
-                stack.append((child, f"{at}.{key}" if at else str(key)))
-        elif isinstance(item, list):
-            stack.extend((child, f"{at}[{i}]") for i, child in enumerate(item))
-        elif isinstance(item, str) and any("\ud800" <= c <= "\udfff" for c in item):
-            bad = next(c for c in item if "\ud800" <= c <= "\udfff")
-            raise InputError(
-                f"{path}: {at.encode('ascii', 'backslashreplace').decode() or 'text'}: holds a lone "
-                f"surrogate \\u{ord(bad):04x} (half of a UTF-16 pair, not a character); write the "
-                "character itself or its full pair"
-            )
+                total += size(key, at, depth + 1) + size(child, f"{at}.{key}" if at else str(key), depth + 1)
+        else:
+            total += sum(size(child, f"{at}[{i}]", depth + 1) for i, child in enumerate(item))
+        inside.discard(id(item))
+        sizes[id(item)] = total
+        if most is not None and total > most:
+            raise InputError(f"{path}: holds more than {most:,} values (as many as a spec file may have)")
+        return total
+
+    size(value, "", 0)
+
+
+def _refuse_lone_surrogate(text: str, path: str, at: str) -> None:
+    if any("\ud800" <= c <= "\udfff" for c in text):
+        bad = next(c for c in text if "\ud800" <= c <= "\udfff")
+        raise InputError(
+            f"{path}: {at.encode('ascii', 'backslashreplace').decode() or 'text'}: holds a lone "
+            f"surrogate \\u{ord(bad):04x} (half of a UTF-16 pair, not a character); write the "
+            "character itself or its full pair"
+        )
 
 
 def parse_spec_text(text: str, path: str) -> Any:
@@ -137,7 +171,7 @@ def parse_spec_text(text: str, path: str) -> Any:
     written as an escape is refused naming its field."""
     parsed = _parse_spec_text(text, path)
     if _SURROGATE_ESCAPE.search(text):
-        refuse_lone_surrogates(parsed, path)
+        check_plain_data(parsed, path, most=None)
     return parsed
 
 
