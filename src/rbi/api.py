@@ -246,7 +246,8 @@ class Part(TableRepr):
         mass: the part's mass (negative for a hole).
         center_of_mass: (3,) the part's centre of mass.
         inertia_about_com: (3, 3) the part's inertia about its own centre of mass, body axes.
-        volume: the solid's volume (length³), or None when it has none (points, custom parts).
+        volume: the solid's volume (length³; negative for a hole, as its mass, so the parts'
+            volumes add up to the body's), or None when it has none (points, custom parts).
         principal_moments: (3,) ascending, about the part's own centre of mass (negative for a
             hole), mass·length².
         inertia_share: the part's share of the trace of the body's inertia about the body's
@@ -458,6 +459,8 @@ class Body(TableRepr):
         for i, element in enumerate(loaded.elements):
             part = spec_parts[i] if i < len(spec_parts) else None
             volume = None if part is None else part_volume(part)
+            if volume is not None and getattr(part, "subtract", False):
+                volume = -volume  # a hole takes its volume away, as its mass
             out.append(
                 Part(
                     name=loaded.part_names[i] or f"parts[{i}]",

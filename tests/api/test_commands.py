@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 import rbi
+from tests.conftest import BODIES
 
 SPHERE = "parts: [{name: ball, shape: sphere, radius: 0.1, mass: 2, center: [0, 0, 0]}]"
 M, R = 2.0, 0.1
@@ -185,3 +186,15 @@ def test_the_cli_helpers_are_public():
     assert issubclass(rbi.ArgumentError, ValueError) and issubclass(rbi.ArgumentError, rbi.SpecError)
     with rbi.outside_paths_allowed():
         assert rbi.loads(SPHERE).mass == 2.0
+
+
+def test_a_holes_volume_is_negative_as_its_mass():
+    # Part.volume was the hole's solid volume (+6107.26 mm³ for each drilling of the wheel)
+    # while Part.mass was negative; `rbi parts` now prints both negative in every form, and the
+    # API gives what the command prints: the parts' volumes add up to the body's
+    wheel = rbi.load(str(BODIES / "wheel_with_holes.yaml"))
+    parts = wheel.parts()
+    hole = next(p for p in parts if p.name == "hole-1")
+    assert hole.volume == pytest.approx(hole.mass / 0.0027, rel=1e-12) and hole.volume < 0  # aluminium, g/mm³
+    solids = sum(p.volume for p in parts)
+    assert solids == pytest.approx(wheel.mass / 0.0027, rel=1e-12)

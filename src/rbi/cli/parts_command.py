@@ -72,8 +72,7 @@ def _part_rows(body) -> list[dict]:
     parts = body.parts()
     rows = []
     for part in parts:
-        density = abs(part.mass) / part.volume if part.volume else None
-        volume = None if part.volume is None else (-part.volume if part.hole else part.volume)
+        density = abs(part.mass / part.volume) if part.volume else None
         rows.append(
             {
                 "name": part.name,
@@ -85,7 +84,7 @@ def _part_rows(body) -> list[dict]:
                 "inertia_about_com": part.inertia_about_com,
                 "principal_moments": part.principal_moments,
                 "inertia_share": part.inertia_share,
-                "volume": volume,  # negative for a hole, as the mass: the parts add up to the total
+                "volume": part.volume,  # negative for a hole, as the mass: the parts add up to the total
                 "implied_density": density,
                 "implied_density_si": None if density is None else density * to_si,
             }
