@@ -75,3 +75,20 @@ def test_a_long_name_is_shortened_with_a_hash_and_stays_apart():
     one, two = safe.beside(long, ".rbi-sweep.json"), safe.beside("b" + long[1:], ".rbi-sweep.json")
     assert len(os.fsencode(one.name)) <= 255 and one != two and "~" in one.name
     assert safe.beside("map.csv", ".rbi-lock").name == ".map.csv.rbi-lock"
+
+
+def test_a_path_with_a_nul_character_is_refused_as_unusable():
+    """rbi.load('a\\x00.yaml') (and rbi.audit, rbi.validate, rbi.sweep of such a path) raised
+    os.open's bare ValueError 'embedded null byte', naming neither the path nor a parameter."""
+    import rbi
+
+    with pytest.raises(safe.InputFileRefused, match="not a usable path"):
+        safe.read_input_file("a\x00.yaml", 100, "spec")
+    for call in (
+        lambda: rbi.load("a\x00.yaml"),
+        lambda: rbi.audit("a\x00.urdf"),
+        lambda: rbi.sweep("a\x00.yaml"),
+    ):
+        with pytest.raises(rbi.SpecError, match="^a\x00.(yaml|urdf): not a usable path"):
+            call()
+    assert rbi.validate(["a\x00.yaml"]) == [["a\x00.yaml: not a usable path (it contains a NUL character)"]]

@@ -151,6 +151,8 @@ def read_input_file(path: str | os.PathLike, limit: int, what: str, hint: str = 
         raise InputFileRefused("no such file") from None
     except OSError as exc:
         raise InputFileRefused(f"cannot read: {reason(exc)}") from None
+    except ValueError:  # os.open's 'embedded null byte'
+        raise InputFileRefused("not a usable path (it contains a NUL character)") from None
     try:
         info = os.fstat(fd)
         if not stat.S_ISREG(info.st_mode):
