@@ -12,7 +12,6 @@ import os
 import sys
 from typing import Annotated
 
-import numpy as np
 import typer
 
 from rbi.api import SpecError, collector_paused, output_target
@@ -216,7 +215,7 @@ def _table(report) -> None:
     # three short lines, not one of up to ~100 characters that a terminal of 80 would break
     # inside a number; rounding noise (2.8e-18 m of a symmetric robot) printed as 0
     centre = without_noise(total.center_of_mass)
-    moments = without_noise(np.linalg.eigvalsh(total.inertia_about_com))
+    moments = without_noise(report.total_moments)
     print(terminal_safe(f"total ({total.frame}): mass {number(total.mass, 6)} kg"))
     print(f"  centre of mass [m]: [{', '.join(number(v, 6) for v in centre)}]")
     print(f"  principal moments about it [kg·m²]: {', '.join(number(v, 6) for v in moments)}")

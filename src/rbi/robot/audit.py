@@ -195,6 +195,12 @@ class AuditReport(TableRepr):
         return self.model.path
 
     @property
+    def total_moments(self) -> np.ndarray:
+        """The whole robot's principal moments about its centre of mass, kg·m², ascending (the
+        table's and the JSON's ``total.moments``)."""
+        return _moments(self.total)
+
+    @property
     def has_error(self) -> bool:
         if self._links is None and self.columns is not None:
             return self.columns.has_error or bool(self.model.unchecked)
@@ -246,6 +252,7 @@ class AuditReport(TableRepr):
                 "mass": self.total.mass,
                 "center_of_mass": self.total.center_of_mass,
                 "inertia_about_com": self.total.inertia_about_com,
+                "moments": self.total_moments,
                 "frame": self.total.frame,
             },
             "joints": [
