@@ -193,3 +193,26 @@ def test_a_robot_whose_totals_overflow_is_told_which_numbers_are_too_large(tmp_p
         warnings.simplefilter("error")
         with pytest.raises(rbi.SpecError, match=r"overflow a double .*moments up to 1e\+308 kg·m²"):
             rbi.audit(write(tmp_path, "r.urdf", text))
+
+
+XACRO_READING_DATA = (
+    '<?xml version="1.0"?>\n<robot xmlns:xacro="http://www.ros.org/wiki/xacro" name="x">\n'
+    '  <xacro:property name="y" value="${{load_yaml(\'config.yaml\')}}"/>\n'
+    '  <link name="${{{expression}}}"/>\n</robot>\n'
+)
+
+
+@pytest.mark.parametrize("expression", ["float(y['token'])", "int(y['token'])"])
+@pytest.mark.parametrize("command", ["audit", "import", "validate"])
+def test_a_xacro_error_never_prints_what_a_data_file_holds(tmp_path, expression, command):
+    """A xacro that converts a value of a YAML file it loads printed the value: 'xacro could not
+    expand it: could not convert string to float: 'sk-SECRET-...' when evaluating expression
+    ...' (an error message never prints the content of a file other than the robot file). The
+    value is now '...'; the expression, from the robot file itself, is kept."""
+    pytest.importorskip("xacro")
+    write(tmp_path, "config.yaml", "token: sk-SECRET-1234567890\nname: arm\n")
+    robot = write(tmp_path, "robot.urdf.xacro", XACRO_READING_DATA.format(expression=expression))
+    proc = run_rbi_inprocess(command, robot)
+    assert proc.returncode == 2, proc.stderr
+    text = proc.stderr + proc.stdout
+    assert "SECRET" not in text and expression in text, text

@@ -67,6 +67,36 @@ def hook(event, args):
     elif event.split(".")[0] in ("subprocess", "socket", "ctypes") or event in ("os.system", "os.exec", "os.spawn", "os.posix_spawn", "os.fork", "os.forkpty", "pty.spawn", "webbrowser.open", "urllib.Request"):
         raise PermissionError(f"xacro may not {event}")
 sys.addaudithook(hook)
+def without_data(words, path, included):
+    # text a data file (load_yaml) holds is not printed, unless the robot's own text has it too
+    # (float(y['key']) fails with the value in its message)
+    def text(name):
+        try:
+            with open(name, encoding="utf-8", errors="replace") as handle:
+                return handle.read()
+        except OSError:
+            return ""
+    robot = (".xacro", ".urdf", ".xml", ".sdf")
+    own = text(path) + "".join(text(name) for name in included if str(name).endswith(robot))
+    values = set()
+    for name in included:
+        if str(name).endswith(robot):
+            continue
+        try:
+            stack = [yaml.safe_load(text(name))]
+        except Exception:
+            continue
+        while stack:
+            item = stack.pop()
+            if isinstance(item, dict):
+                stack.extend(item.keys()); stack.extend(item.values())
+            elif isinstance(item, list):
+                stack.extend(item)
+            elif isinstance(item, str) and len(item) > 1 and item not in own:
+                values.add(item)
+    for value in sorted(values, key=len, reverse=True):
+        words = words.replace(value, "...")
+    return words
 import io, contextlib
 try:
     with contextlib.redirect_stdout(io.StringIO()), contextlib.redirect_stderr(io.StringIO()):
@@ -85,6 +115,7 @@ except BaseException as exc:
         cause = getattr(cause, "exc", None) or cause.__cause__ or cause.__context__
     words = " ".join(str(exc).split())
     words = re.sub(r"^<class '[^']*'>:\s*", "", words)
+    words = without_data(words, path, getattr(xacro, "all_includes", []))
     out(error="xacro could not expand it: " + (words[:300] or type(exc).__name__))
 if len(text) > largest:
     out(error=f"the expanded document is larger than the {largest // 2**20} MiB rbi reads from a robot file")
