@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import difflib
 import os
-from collections.abc import Callable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -1217,7 +1217,7 @@ def import_robot(
 
     packages = parse_package_paths(package_paths)
     robot = read_robot(_path(robot_file), packages)
-    chosen = _chosen_links(robot, list(links or []))
+    chosen = _chosen_links(robot, _link_names(links))
     if not chosen:
         raise SpecError(f"{robot.path}: no {robot.link_word} with an <inertial> element to import")
     imported = [
@@ -1262,6 +1262,17 @@ def _link_yaml(robot: Any, link: Any) -> str:
         "turned into link axes by `rotation`.",
     )
     return header + dump(link_spec(robot, link))
+
+
+def _link_names(links: Any) -> list[str]:
+    """``links`` of :func:`import_robot` as a list of names (one name given as text is that
+    name); ArgumentError naming ``links`` for anything else."""
+    if links is None or isinstance(links, str):
+        return [] if links is None else [links]
+    names = list(links) if isinstance(links, Iterable) else None
+    if names is None or not all(isinstance(name, str) for name in names):
+        raise ArgumentError("links", f"expected link names (str), got {literal(links)}")
+    return names
 
 
 def _chosen_links(robot: Any, names: list[str]) -> list[Any]:

@@ -255,3 +255,28 @@ def test_a_value_with_braces_is_named_as_given(top, parameter):
     message = str(caught.value)
     assert message.split(": ")[0].endswith(parameter) or f"{parameter}[" in message, message
     assert "{" in message and "format" not in message, message
+
+
+@pytest.mark.parametrize(
+    "call, parameter",
+    [
+        (lambda: rbi.audit(BODIES / "two_link_arm.urdf", package_paths={"p": 3}), "package_paths"),
+        (lambda: rbi.audit(BODIES / "two_link_arm.urdf", package_paths=3), "package_paths"),
+        (lambda: rbi.import_robot(BODIES / "two_link_arm.urdf", package_paths={"p": None}), "package_paths"),
+        (lambda: rbi.import_robot(BODIES / "two_link_arm.urdf", links=[1]), "links"),
+        (lambda: rbi.import_robot(BODIES / "two_link_arm.urdf", links=7), "links"),
+    ],
+)
+def test_robot_arguments_of_the_wrong_type_are_named(call, parameter):
+    """rbi.audit(package_paths={'p': 3}) raised os.fspath's 'expected str, bytes or os.PathLike
+    object, not int' and rbi.import_robot(links=[1]) "'int' object is not iterable": neither named
+    the parameter."""
+    with pytest.raises((TypeError, ValueError), match=f"^{parameter}: "):
+        call()
+
+
+def test_one_link_name_given_as_text_is_that_link():
+    """links='elbow' was read letter by letter ('no link named 'e'')."""
+    one = rbi.import_robot(BODIES / "two_link_arm.urdf", links="forearm")
+    assert [link.name for link in one.links] == ["forearm"]
+    assert one.links[0].mass == pytest.approx(0.8)

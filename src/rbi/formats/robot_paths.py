@@ -14,7 +14,7 @@
 from __future__ import annotations
 
 import os
-from collections.abc import Mapping, Sequence
+from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 from urllib.parse import unquote
 
@@ -26,9 +26,13 @@ def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dic
     """``NAME=DIR`` strings (``--package-path``), or ``{NAME: DIR}``, as a mapping;
     ArgumentError naming ``package_paths`` for a malformed one."""
     if isinstance(values, Mapping):
-        values = [f"{name}={os.fspath(folder)}" for name, folder in values.items()]
+        values = [
+            f"{name}={os.fspath(folder)}" if _is_path(folder) else folder for name, folder in values.items()
+        ]
     elif isinstance(values, (str, bytes)):
         values = [values] if isinstance(values, str) else [values.decode(errors="replace")]
+    elif values is not None and not isinstance(values, Iterable):
+        values = [values]  # refused below, named
     found: dict[str, list[Path]] = {}
     for value in values or []:
         if not isinstance(value, str):
@@ -45,6 +49,10 @@ def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dic
             raise ArgumentError("package_paths", f"{literal(value, quoted=False)}: no such folder")
         found.setdefault(name.strip(), []).append(Path(folder))
     return found
+
+
+def _is_path(value: object) -> bool:
+    return isinstance(value, (str, os.PathLike))
 
 
 def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str, list[Path]] | None) -> Path:
