@@ -165,3 +165,31 @@ def test_python_dash_m_puts_the_current_folder_first_as_documented(tmp_path):
     assert not marker.exists()
     security = (Path(__file__).resolve().parents[2] / "docs" / "security.md").read_text()
     assert "python -m rbi" in security
+
+
+@pytest.mark.parametrize(
+    "args",
+    [
+        ["show", "top.yaml", "--out", "{tmp}/top.png"],
+        ["simulate", "top.yaml", "--spin", "5", "--duration", "0.1", "--plot", "{tmp}/path.svg"],
+    ],
+)
+def test_an_unwritable_cache_folder_prints_nothing_but_the_result(tmp_path, args):
+    """With XDG_CACHE_HOME (or MPLCONFIGDIR) naming a folder that cannot be made, `rbi show`
+    printed matplotlib's two log lines ('mkdir -p failed for path /proc/x/matplotlib ...',
+    'Matplotlib created a temporary cache directory ...') around its result. The picture is
+    still drawn; stderr stays empty."""
+    pytest.importorskip("matplotlib")
+    env = {k: v for k, v in os.environ.items() if k not in ("MPLCONFIGDIR", "XDG_CACHE_HOME")}
+    for unwritable in ({"XDG_CACHE_HOME": "/proc/rbi-no-such"}, {"MPLCONFIGDIR": "/proc/rbi-no-such"}):
+        done = subprocess.run(
+            [str(Path(sys.executable).with_name("rbi")), *[a.format(tmp=tmp_path) for a in args]],
+            cwd=BODIES,
+            env=env | unwritable,
+            capture_output=True,
+            text=True,
+            timeout=300,
+        )
+        assert done.returncode == 0, done.stderr
+        assert done.stderr == "", done.stderr
+        assert (tmp_path / Path(args[-1]).name).stat().st_size > 1000

@@ -128,12 +128,10 @@ def needs(package: str, extra: str) -> str:
 def require_matplotlib(option: str = "--plot") -> None:
     """Refuse ``option`` (the one that asked for a picture) with the install command when
     matplotlib is missing."""
-    try:
-        import matplotlib  # noqa: F401  (the optional extra `plot`, loaded only when a picture is asked for)
-    except ImportError:
+    if importlib.util.find_spec("matplotlib") is None:  # looked for, not loaded (rbi.viz loads it)
         raise SpecError(
             f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
-        ) from None
+        )
 
 
 def require(module: str, extra: str, option: str) -> None:
