@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 
 import jsonschema
 import pytest
@@ -86,3 +87,24 @@ def test_validate_sees_physical_problems_too(write_spec):
 def test_validate_all_good_exits_0():
     proc = run_rbi("validate", *sorted(BODIES.glob("*.yaml")))
     assert proc.returncode == 0 and proc.stdout == ""
+
+
+def test_validate_names_standard_input_as_every_command_does():
+    """`rbi validate - --format json` gave {"file": "-"} (and CSV a row for '-') where its own
+    problems and every other command name standard input <stdin>."""
+    import subprocess
+
+    text = (BODIES / "top.yaml").read_text()
+    for form in ("json", "csv"):
+        done = subprocess.run(
+            [sys.executable, "-m", "rbi", "validate", "-", "--format", form],
+            input=text,
+            capture_output=True,
+            text=True,
+            timeout=120,
+        )
+        assert done.returncode == 0, done.stderr
+        if form == "json":
+            assert json.loads(done.stdout)["files"] == [{"file": "<stdin>", "problems": [], "ok": True}]
+        else:
+            assert done.stdout.splitlines()[1].startswith("<stdin>,"), done.stdout

@@ -10,6 +10,7 @@ import typer
 
 from rbi.api import spec_schema
 from rbi.api import validate as problems_of
+from rbi.cli.each_file import file_label
 from rbi.cli.options import (
     DocumentFormat,
     DocumentFormatOption,
@@ -56,7 +57,7 @@ def validate(
     """
 
     problems = problems_of(files, package_paths=package_path)
-    reports = [{"file": path, "problems": found} for path, found in zip(files, problems)]
+    reports = [{"file": file_label(path), "problems": found} for path, found in zip(files, problems)]
     bad = [r for r in reports if r["problems"]]
     count = sum(len(r["problems"]) for r in reports)
     if format is OutputFormat.table:
