@@ -5,6 +5,7 @@ need: how --help says so (:func:`needs`) and the refusal, before any work, when 
 from __future__ import annotations
 
 import importlib.util
+import logging
 from enum import Enum
 from typing import Annotated
 
@@ -128,10 +129,15 @@ def needs(package: str, extra: str) -> str:
 def require_matplotlib(option: str = "--plot") -> None:
     """Refuse ``option`` (the one that asked for a picture) with the install command when
     matplotlib is missing."""
-    if importlib.util.find_spec("matplotlib") is None:  # looked for, not loaded (rbi.viz loads it)
+    # matplotlib logs two lines on stderr when XDG_CACHE_HOME or MPLCONFIGDIR cannot be written,
+    # and then draws all the same in a temporary cache folder: rbi's stderr keeps its own lines
+    logging.getLogger("matplotlib").setLevel(logging.ERROR)
+    try:
+        import matplotlib  # noqa: F401  (the optional extra `plot`, loaded only when a picture is asked for)
+    except ImportError:
         raise SpecError(
             f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
-        )
+        ) from None
 
 
 def require(module: str, extra: str, option: str) -> None:

@@ -9,25 +9,15 @@ took minutes to lay out).
 
 from __future__ import annotations
 
-import logging
 from collections.abc import Iterable
 
 from rbi.text import number, visible
 
 
-def load_matplotlib():
-    """matplotlib (ImportError when the optional extra `plot` is missing), loaded without its log
-    lines on stderr: with an unwritable XDG_CACHE_HOME or MPLCONFIGDIR it says so in two lines
-    while it makes a temporary cache folder and draws all the same."""
-    logging.getLogger("matplotlib").setLevel(logging.ERROR)
-    import matplotlib  # optional extra `plot`, loaded only to draw
-
-    return matplotlib
-
-
 def pyplot():
     """matplotlib's pyplot on the Agg backend (pictures written to files, no window)."""
-    matplotlib = load_matplotlib()
+    import matplotlib  # optional extra `plot`, loaded only to draw
+
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt  # optional extra `plot`, loaded only to draw
 
