@@ -407,6 +407,21 @@ class Body(TableRepr):
             raise ArgumentError("about", NO_PIVOT, file=self.path)
         return np.array(point, dtype=float)
 
+    def _refuse_non_finite(self, **results: Any) -> None:
+        """ValueError (an `ArgumentError` naming the file) when a result overflowed: inputs of
+        absurd size (``about=(1e200, 0, 0)``, ``omega=(1e200, 0, 0)``) give inf or NaN, which no
+        caller can use (the CLI prints the message as bad input, exit 2)."""
+        bad = [
+            name for name, value in results.items() if value is not None and not np.all(np.isfinite(value))
+        ]
+        if bad:
+            raise ArgumentError(
+                (),
+                f"result{'s' if len(bad) > 1 else ''} {', '.join(bad)} {'are' if len(bad) > 1 else 'is'} not "
+                "finite: the input values are too large for double precision",
+                file=self.path,
+            )
+
     def inertia(
         self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None
     ) -> np.ndarray:
@@ -420,17 +435,27 @@ class Body(TableRepr):
                 matrix R, body → world. The matrix is then given in world axes: ``R I Rᵀ``.
         """
 
-        matrix = self._loaded.props.inertia_about(self.point(about))
-        if axes is None:
-            return matrix
-        return re_express(matrix, _rotation(axes))
+        rotation = None if axes is None else _rotation(axes)
+        with np.errstate(over="ignore", invalid="ignore"):
+            matrix = self._loaded.props.inertia_about(self.point(about))
+            if rotation is not None:
+                matrix = re_express(matrix, rotation)
+        if not isinstance(about, str) and not np.all(np.isfinite(matrix)):
+            raise ArgumentError(
+                "about",
+                "the point is too far from the body: the inertia about it overflows double precision "
+                f"(got {literal(np.asarray(about).tolist())})",
+                file=self.path,
+            )
+        self._refuse_non_finite(inertia=matrix)
+        return matrix
 
     def principal(self, about: Point = "com") -> Principal:
         """Principal moments (ascending) and axes (rows, body frame, right-handed) about a point
         (default the centre of mass), as ``rbi principal`` prints them."""
 
         point = self.point(about)
-        moments, axes = principal_axes(self._loaded.props.inertia_about(point))
+        moments, axes = principal_axes(self.inertia(about))
         # + 0.0: no -0.0 components (the CLI prints 0 there too)
         return Principal(
             moments=np.asarray(moments) + 0.0,
@@ -497,14 +522,17 @@ class Body(TableRepr):
         v_com = (
             np.cross(w, com_from_point) if velocity is None else np.array(vector_value(velocity, "velocity"))
         )
-        h = angular_momentum_about_point(props.inertia_about_com, props.mass, com_from_point, w, v_com)
+        with np.errstate(over="ignore", invalid="ignore"):
+            h = angular_momentum_about_point(props.inertia_about_com, props.mass, com_from_point, w, v_com)
+            energy = float(kinetic_energy(props.inertia_about_com, w, props.mass, v_com))
+        self._refuse_non_finite(com_velocity=v_com, angular_momentum=h, kinetic_energy=energy)
         return Momentum(
             omega=w,
             about=point,
             com_velocity=v_com,
             angular_momentum=np.asarray(h),
             angle_deg=angle_between_deg(h, w),
-            kinetic_energy=float(kinetic_energy(props.inertia_about_com, w, props.mass, v_com)),
+            kinetic_energy=energy,
         )
 
     @property
@@ -533,11 +561,14 @@ class Body(TableRepr):
 
         matrix = self.inertia(about, axes)
         try:
-            return moment_about_axis(matrix, axis)
+            with np.errstate(over="ignore", invalid="ignore"):
+                moment = moment_about_axis(matrix, axis)
         except ValueError:
             raise ArgumentError(
                 "axis", f"must be a non-zero finite direction (x, y, z), got {literal(axis)}"
             ) from None
+        self._refuse_non_finite(moment=moment)
+        return moment
 
     def check(self) -> list[Check]:
         """Each expectation of the spec's ``expect:`` block (see docs/check.md) against the
@@ -581,7 +612,7 @@ class Body(TableRepr):
         about_com = isinstance(about, str) and about.strip().lower() == "com"
         point = self.point(about)
         props = self._loaded.props
-        inertia = props.inertia_about(point)
+        inertia = self.inertia(about)
         if alpha is None and np.linalg.matrix_rank(inertia) < 3:
             raise SpecError(
                 f"{self.path}: the inertia about {about!r} is singular: the body cannot be given an "
@@ -590,9 +621,11 @@ class Body(TableRepr):
         given = dict(alpha=alpha, point_acceleration=point_acceleration, force=force, torque=torque)
         vectors = {k: None if v is None else np.array(vector_value(v, k)) for k, v in given.items()}
         w = np.array(vector_value(omega, "omega"))
-        (linear, angular), (f, t), held = newton_euler_about(
-            props, inertia, props.center_of_mass - point, w, about_com=about_com, **vectors
-        )
+        with np.errstate(over="ignore", invalid="ignore"):
+            (linear, angular), (f, t), held = newton_euler_about(
+                props, inertia, props.center_of_mass - point, w, about_com=about_com, **vectors
+            )
+        self._refuse_non_finite(linear_acceleration=linear, angular_acceleration=angular, force=f, torque=t)
         mode = "inverse" if alpha is not None else "forward"
         return Dynamics(mode, point, w, angular, linear, f, t, held)
 

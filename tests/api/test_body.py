@@ -3,6 +3,9 @@ checks through the CLI), read through the Python API's public names only."""
 
 from __future__ import annotations
 
+import re
+import warnings
+
 import numpy as np
 import pytest
 
@@ -158,3 +161,50 @@ def test_reference_points_by_name_and_their_refusals():
         assert str(refused.value) == (
             f"about: expected com, origin, pivot or a point (x, y, z), got {name!r}"
         )
+
+
+OVERFLOWING_CALLS = {
+    "inertia about a far point": (
+        lambda b: b.inertia(about=[1e300, 0, 0]),
+        "about: the point is too far from the body: the inertia about it overflows double precision",
+    ),
+    "principal axes about it": (
+        lambda b: b.principal(about=[1e300, 0, 0]),
+        "about: the point is too far from the body: the inertia about it overflows double precision",
+    ),
+    "moment about an axis through it": (
+        lambda b: b.moment_about_axis([0, 0, 1], about=[1e300, 0, 0]),
+        "about: the point is too far from the body: the inertia about it overflows double precision",
+    ),
+    "energy of a huge spin": (
+        lambda b: b.momentum([1e200, 1e200, 1e200]),
+        "result kinetic_energy is not finite: ",
+    ),
+    "a torque no body can take": (
+        lambda b: b.dynamics([0, 0, 1], torque=[1e308, 1e308, 1e308]),
+        "results linear_acceleration, angular_acceleration are not finite: ",
+    ),
+}
+
+
+@pytest.mark.parametrize("case", OVERFLOWING_CALLS)
+def test_a_result_that_overflows_is_a_value_error_not_inf(top, case):
+    """Inputs of absurd size give inf/NaN; the API refuses them, naming ``about`` where the
+    point is to blame, instead of returning them with numpy's RuntimeWarnings (it returned inf
+    and nan before; only the CLI refused them)."""
+    call, words = OVERFLOWING_CALLS[case]
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # no RuntimeWarning on the way
+        with pytest.raises(ValueError, match=f"^{re.escape(str(top.path))}: {re.escape(words)}"):
+            call(top)
+
+
+def test_a_far_point_still_in_range_gives_the_parallel_axis_answer(top):
+    """About (1e150, 0, 0) m the inertia is still a double: I_yy = I_yy,com + m (d² + z_c²)
+    and I_zz = I_zz,com + m d², d = 1e150 - x_c (the parallel-axis theorem, to rounding)."""
+    d = 1e150
+    shifted = top.inertia(about=[d, 0, 0])
+    com = top.inertia()
+    assert shifted[2, 2] == pytest.approx(com[2, 2] + top.mass * d**2, rel=1e-12)
+    assert shifted[1, 1] == pytest.approx(com[1, 1] + top.mass * d**2, rel=1e-12)
+    assert np.isfinite(shifted).all()

@@ -97,13 +97,8 @@ def dynamics(
 
 def _given(file: str, I_point, about: str, about_label: str, alpha, accel, force, torque) -> dict:
     """The vectors the options give, as `rbi.Body.dynamics` takes them (each parsed where the
-    command uses it), after refusing an inertia about the point that overflows or, for forward
-    dynamics, is singular."""
-    if not np.all(np.isfinite(I_point)):
-        raise SpecError(
-            f"--about: the point is too far from the body: the inertia about it overflows "
-            f"double precision (got {about!r})"
-        )
+    command uses it), after refusing, for forward dynamics, an inertia about the point that is
+    singular (`rbi.Body.inertia` has refused one that overflows)."""
     if alpha is not None:
         return {
             "alpha": np.array(parse_vector(alpha, "--alpha")),
