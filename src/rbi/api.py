@@ -614,9 +614,11 @@ class Body(TableRepr):
         props = self._loaded.props
         inertia = self.inertia(about)
         if alpha is None and np.linalg.matrix_rank(inertia) < 3:
-            raise SpecError(
-                f"{self.path}: the inertia about {about!r} is singular: the body cannot be given an "
-                "angular acceleration"
+            where = about.strip().lower() if isinstance(about, str) else f"point {literal(point.tolist())}"
+            raise ArgumentError(
+                (),
+                f"the inertia about the {where} is singular: the body cannot be given an angular acceleration",
+                file=self.path,
             )
         given = dict(alpha=alpha, point_acceleration=point_acceleration, force=force, torque=torque)
         vectors = {k: None if v is None else np.array(vector_value(v, k)) for k, v in given.items()}

@@ -208,3 +208,27 @@ def test_a_far_point_still_in_range_gives_the_parallel_axis_answer(top):
     assert shifted[2, 2] == pytest.approx(com[2, 2] + top.mass * d**2, rel=1e-12)
     assert shifted[1, 1] == pytest.approx(com[1, 1] + top.mass * d**2, rel=1e-12)
     assert np.isfinite(shifted).all()
+
+
+ROD = {
+    "name": "rod",
+    "units": {"length": "m", "mass": "kg"},
+    "parts": [
+        {"name": "a", "shape": "point", "mass": 1, "position": [-1, 0, 0]},
+        {"name": "b", "shape": "point", "mass": 1, "position": [1, 0, 0]},
+    ],
+}
+
+
+@pytest.mark.parametrize(
+    "about, where", [("com", "the com"), ("origin", "the origin"), ((2, 0, 0), "the point [2.0, 0.0, 0.0]")]
+)
+def test_forward_dynamics_of_a_singular_inertia_is_a_value_error_naming_the_point(about, where):
+    """Two point masses on the x axis have no moment about x (I_xx = 0 about any point on the
+    axis): no torque gives them a finite angular acceleration. A ValueError (it was a SpecError,
+    which is none), naming the point as the caller gave it; the inverse problem still answers."""
+    rod = rbi.load(ROD)
+    with pytest.raises(ValueError, match=rf"the inertia about {re.escape(where)} is singular"):
+        rod.dynamics([0, 0, 0], about=about, torque=[0, 0, 1])
+    # inverse: spinning up about z at 1 rad/s² about the centre takes I_zz alpha = 2 kg·m² x 1
+    assert rod.dynamics([0, 0, 0], alpha=[0, 0, 1]).torque == pytest.approx([0, 0, 2])

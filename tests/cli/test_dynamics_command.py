@@ -48,3 +48,23 @@ def test_neither_or_both_modes_is_refused():
         proc = run_rbi("dynamics", TOP, *extra)
         assert proc.returncode == 2
         assert "Traceback" not in proc.stderr and "--alpha" in proc.stderr
+
+
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+@pytest.mark.parametrize(
+    "about, where", [("com", "the com"), ("origin", "the origin"), ("2,0,0", "the point [2.0, 0.0, 0.0]")]
+)
+def test_forward_dynamics_of_two_masses_on_a_line_exits_2_naming_the_point(tmp_path, about, where, form):
+    """Two point masses on the x axis have I_xx = 0 about any point of that axis: no torque gives
+    a finite angular acceleration. One line naming the file and the point, in every form."""
+    spec = tmp_path / "rod.yaml"
+    spec.write_text(
+        "name: rod\nunits: {length: m, mass: kg}\nparts:\n"
+        "  - {name: a, shape: point, mass: 1, position: [-1, 0, 0]}\n"
+        "  - {name: b, shape: point, mass: 1, position: [1, 0, 0]}\n"
+    )
+    proc = run_rbi("dynamics", spec, "--torque", "0,0,1", "--about", about, "--format", form)
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert proc.stderr == (
+        f"rbi: {spec}: the inertia about {where} is singular: the body cannot be given an angular acceleration\n"
+    )

@@ -75,8 +75,8 @@ def dynamics(
     w = np.array(parse_vector(omega, "--omega"))
     body = api.load(file)
     about_label, point = parse_about(about, body)
-    given = _given(file, body.inertia(point), about, about_label, alpha, accel, force, torque)
-    found = body.dynamics(w, about="com" if about_label == "com" else point, **given)
+    given = _given(about_label, alpha, accel, force, torque)
+    found = body.dynamics(w, about=point if about_label == "point" else about_label, **given)
     result = {
         "name": body.name,
         "units": body.units,
@@ -95,20 +95,16 @@ def dynamics(
     emit(format.value, result, lambda: _table(body, result, found.held))
 
 
-def _given(file: str, I_point, about: str, about_label: str, alpha, accel, force, torque) -> dict:
+def _given(about_label: str, alpha, accel, force, torque) -> dict:
     """The vectors the options give, as `rbi.Body.dynamics` takes them (each parsed where the
-    command uses it), after refusing, for forward dynamics, an inertia about the point that is
-    singular (`rbi.Body.inertia` has refused one that overflows)."""
+    command uses it; the API refuses an inertia about the point that overflows or, for forward
+    dynamics, is singular)."""
     if alpha is not None:
         return {
             "alpha": np.array(parse_vector(alpha, "--alpha")),
             "point_acceleration": _vector(accel, "--accel"),
         }
     given = {"torque": _vector(torque, "--torque")}
-    if np.linalg.matrix_rank(I_point) < 3:
-        raise SpecError(
-            f"{file}: the inertia about the {about_label} is singular: the body cannot be given an angular acceleration"
-        )
     if force is None and about_label != "com":  # the point is held (a pivot)
         return given | {"point_acceleration": _vector(accel, "--accel")}
     return given | {"force": _vector(force, "--force")}
