@@ -36,10 +36,10 @@ from rbi.core.dynamics import (
 from rbi.core.inertia import moment_about_axis, principal_axes, radii_of_gyration, re_express, unit_axis
 from rbi.core.mass import MassProperties, inertia_shares
 from rbi.core.rotation import (
-    LARGEST_ANGLE_DEG,
     angle_is_kept,
     compose_world_rotations,
     matrix_to_quaternion,
+    turn_lost_to_rounding,
 )
 from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import OutputTarget, output_target, write_output
@@ -717,11 +717,7 @@ def _rotation(axes: Any) -> np.ndarray:
                 f"expected (axis, degrees) pairs with axis 'x', 'y' or 'z', e.g. [('y', 30)], got {literal(turn)}",
             )
         if not angle_is_kept(degrees):
-            raise ArgumentError(
-                "axes",
-                f"{literal(degrees)} degrees is too large to be a turn: rounding loses it "
-                f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
-            )
+            raise ArgumentError("axes", turn_lost_to_rounding(literal(degrees)))
         turns.append((axis, np.radians(degrees)))
     return compose_world_rotations(turns)
 

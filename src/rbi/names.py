@@ -54,7 +54,8 @@ CLI_TOOLS = (
     # what the commands print besides numbers (rbi dynamics, parts, --rotate)
     "LENGTH_UNITS",
     "MASS_UNITS",
-    "LARGEST_ANGLE_DEG",
+    "angle_is_kept",
+    "turn_lost_to_rounding",
     # the reference points by name and what --about may be (rbi inertia, principal, dynamics)
     "REFERENCE_POINTS",
     "reference_choices",

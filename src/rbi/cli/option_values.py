@@ -141,7 +141,7 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
 def parse_rotation(text: str) -> tuple[str, float]:
     """``"y:30"`` -> ``("y", 30.0)``: a turn as `rbi.Body.inertia`'s ``axes`` takes it."""
     # not at top level: `rbi --help` would load rbi.api too
-    from rbi.api import LARGEST_ANGLE_DEG
+    from rbi.api import angle_is_kept, turn_lost_to_rounding
 
     axis, sep, angle = text.partition(":")
     axis = axis.strip().lower()
@@ -151,11 +151,8 @@ def parse_rotation(text: str) -> tuple[str, float]:
         degrees = math.nan
     if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
         raise SpecError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
-    if abs(degrees) > LARGEST_ANGLE_DEG:
-        raise SpecError(
-            f"--rotate: {angle.strip()} degrees is too large to be a turn: rounding loses it "
-            f"(at most {LARGEST_ANGLE_DEG:g} degrees)"
-        )
+    if not angle_is_kept(degrees):
+        raise SpecError(f"--rotate: {turn_lost_to_rounding(angle.strip())}")
     return axis, degrees
 
 

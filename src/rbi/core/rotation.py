@@ -32,6 +32,13 @@ def angle_is_kept(degrees: float) -> bool:
     return math.isfinite(degrees) and abs(degrees) <= LARGEST_ANGLE_DEG
 
 
+def turn_lost_to_rounding(shown: str, unit: str = "degrees") -> str:
+    """The words for a turn that :func:`angle_is_kept` refuses: ``shown`` is the value as the
+    caller wrote it, in ``unit`` (``"degrees"`` or ``"radians"``)."""
+    limit = LARGEST_ANGLE_DEG if unit == "degrees" else math.radians(LARGEST_ANGLE_DEG)
+    return f"{shown} {unit} is too large to be a turn: rounding loses it (at most {limit:.4g} {unit})"
+
+
 def without_rounding_noise(R: np.ndarray) -> np.ndarray:
     """``R`` (one matrix or a stack) with entries below :data:`ROUNDING_ZERO` set to exactly
     zero, so that a part turned by 90° keeps exact zero products of inertia. Changes ``R``

@@ -20,7 +20,7 @@ from typing import NamedTuple
 import numpy as np
 
 from rbi.core.mass import MassProperties, combine
-from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, axis_angle_matrix
+from rbi.core.rotation import angle_is_kept, axis_angle_matrix, turn_lost_to_rounding
 from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.formats.robot import LinkColumns, Pose, RobotModel, tree_rows
 
@@ -313,8 +313,7 @@ def _check_joints(model: RobotModel, joints: dict[str, float], table: Joints) ->
             raise ArgumentError(
                 "joints",
                 literal(model.path, quoted=False)
-                + f": joint {literal(name)}: {value:g} radians is too large to be a turn: rounding loses it "
-                f"(at most {math.radians(LARGEST_ANGLE_DEG):.4g} radians)",
+                + f": joint {literal(name)}: {turn_lost_to_rounding(f'{value:g}', 'radians')}",
             )
 
 

@@ -17,7 +17,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.rotation import LARGEST_ANGLE_DEG, angle_is_kept, unit_vector
+from rbi.core.rotation import angle_is_kept, turn_lost_to_rounding, unit_vector
 from rbi.core.spin_axis import default_spin_axis
 from rbi.core.validity import finite, whole
 from rbi.errors import ArgumentError, InputError, literal
@@ -87,11 +87,7 @@ def check_tilt(tilt_deg: float) -> None:
     """Refuse a finite tilt (deg) too large to be a turn (rounding loses it): the one check of
     a run's tilt, for `simulate` and `animate` and for every value of a sweep's tilt axis."""
     if not angle_is_kept(tilt_deg):
-        raise ArgumentError(
-            "tilt_deg",
-            f"{literal(tilt_deg)} degrees is too large to be a turn: rounding loses it "
-            f"(at most {LARGEST_ANGLE_DEG:g} degrees)",
-        )
+        raise ArgumentError("tilt_deg", turn_lost_to_rounding(literal(tilt_deg)))
 
 
 def spin_axis_value(value: str | Sequence[float] | None) -> list[float] | None:
