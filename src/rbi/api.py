@@ -51,7 +51,6 @@ from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.runs.values import vector_value
 from rbi.spec.checks import Check, run_checks
 from rbi.spec.points import NO_PIVOT, reference_choices, reference_name
-from rbi.spec.points import REFERENCE_POINTS as REFERENCE_POINTS
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.spec.units import convert_body
@@ -609,12 +608,13 @@ class Body(TableRepr):
 
         if (alpha is None) == (force is None and torque is None):
             raise ArgumentError(("alpha", "force"), "give either alpha (inverse) or force/torque (forward)")
-        about_com = isinstance(about, str) and about.strip().lower() == "com"
+        name = reference_name(about)  # None for a point (x, y, z)
+        about_com = name == "com"
         point = self.point(about)
         props = self._loaded.props
         inertia = self.inertia(about)
         if alpha is None and np.linalg.matrix_rank(inertia) < 3:
-            where = about.strip().lower() if isinstance(about, str) else f"point {literal(point.tolist())}"
+            where = name or f"point {literal(point.tolist())}"
             raise ArgumentError(
                 (),
                 f"the inertia about the {where} is singular: the body cannot be given an angular acceleration",

@@ -57,7 +57,7 @@ CLI_TOOLS = (
     "angle_is_kept",
     "turn_lost_to_rounding",
     # the reference points by name and what --about may be (rbi inertia, principal, dynamics)
-    "REFERENCE_POINTS",
+    "reference_name",
     "reference_choices",
 )
 """What rbi.api offers the command line besides :data:`PUBLIC` (not names of ``rbi``)."""

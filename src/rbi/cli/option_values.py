@@ -126,10 +126,10 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
     """Resolve ``--about`` against a `rbi.Body`: (label, point in body coordinates); a name
     by `rbi.Body.point` (its errors say ``--about``)."""
     # not at top level: `rbi --help` would load rbi.api too
-    from rbi.api import REFERENCE_POINTS, reference_choices
+    from rbi.api import reference_choices, reference_name
 
-    key = text.strip().lower()
-    if key in REFERENCE_POINTS:
+    key = reference_name(text)
+    if key is not None:
         return key, body.point(key).tolist()
     try:
         return "point", parse_vector(text, "--about")
