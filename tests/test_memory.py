@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import gc
+import subprocess
+import sys
 import sysconfig
 import threading
-import weakref
 from collections import OrderedDict
 
 import pytest
 
+from rbi import memory
 from rbi.memory import cached, collector_paused
 
 
@@ -44,33 +46,91 @@ def test_a_collector_turned_off_by_the_caller_stays_off(collector_on):
     assert not gc.isenabled()
 
 
+PAUSE_THEN_CYCLES = """
+import gc, weakref
+from rbi.memory import collector_paused
+
 class Node:
-    """A container that can refer to itself: a reference cycle only the collector frees."""
+    pass
 
-
-def cycle() -> weakref.ref:
-    """A new unreachable cycle, as a weak reference that dies when the collector frees it."""
+def cycle():
     node = Node()
     node.self = node
     return weakref.ref(node)
 
+gc.collect()
+with collector_paused():
+    inside = cycle()
+    churn = [[i] for i in range(50_000)]  # past the young threshold of 3.11-3.14 many times over
+    del churn
+    assert inside() is not None, "a collection ran inside the pause"
+assert gc.isenabled() and gc.get_freeze_count() == 0, "the collector is off or objects stay frozen"
+after = [cycle() for _ in range(50_000)]
+assert sum(ref() is None for ref in after) > 0, "no collection ran by itself after the pause"
+gc.collect()
+assert inside() is None, "a full pass left a cycle made inside (frozen?)"
+"""
+
+
+def test_cycles_made_inside_live_through_the_pause_and_are_freed_after_it():
+    # In a new interpreter: the suite's process holds threads and settings of other libraries
+    # (a collector threshold raised, a thread inside a pause) that decide when collections run.
+    done = subprocess.run(
+        [sys.executable, "-c", PAUSE_THEN_CYCLES], capture_output=True, text=True, timeout=120
+    )
+    assert done.returncode == 0, done.stderr
+
+
+class _SlowCollectorSwitch:
+    """A stand-in for the gc module whose ``disable``, called from a second thread, waits until
+    the first thread's pause has ended: the interleaving two sweep threads can meet."""
+
+    def __init__(self) -> None:
+        self.on = True
+        self.main = threading.get_ident()
+        self.second_moved = threading.Event()  # the second thread is disabling, or inside
+        self.first_left = threading.Event()
+
+    def isenabled(self) -> bool:
+        return self.on
+
+    def disable(self) -> None:
+        if threading.get_ident() != self.main:
+            self.second_moved.set()
+            self.first_left.wait(5.0)
+        self.on = False
+
+    def enable(self) -> None:
+        self.on = True
+
+    def freeze(self) -> None:
+        pass
+
+    def unfreeze(self) -> None:
+        pass
+
+
+def test_pauses_in_two_threads_leave_the_collector_on(monkeypatch):
+    switch = _SlowCollectorSwitch()
+    monkeypatch.setattr(memory, "gc", switch)
+
+    def second() -> None:
+        with collector_paused():
+            switch.second_moved.set()
+
+    worker = threading.Thread(target=second)
+    with collector_paused():
+        worker.start()
+        assert switch.second_moved.wait(5.0)
+    switch.first_left.set()
+    worker.join(10.0)
+    # A pause that read the collector as off, and turned it off after the first pause had
+    # turned it back on, would leave it off for the rest of the process.
+    assert switch.on and not worker.is_alive()
+
 
 FREE_THREADED = bool(sysconfig.get_config_var("Py_GIL_DISABLED"))
 """A free-threaded build keeps no generations (gc.get_objects(generation=0) is not the young)."""
-
-
-def test_cycles_made_inside_live_through_the_pause_and_are_freed_after_it(collector_on):
-    gc.collect()
-    with collector_paused():
-        inside = cycle()
-        churn = [[i] for i in range(50_000)]  # past the young threshold of 3.11-3.14 many times over
-        del churn
-        assert inside() is not None  # no collection ran
-    assert gc.isenabled() and gc.get_freeze_count() == 0  # nothing is left frozen
-    after = [cycle() for _ in range(50_000)]  # collections run by themselves again
-    assert sum(ref() is None for ref in after) > 0
-    gc.collect()
-    assert inside() is None  # a full pass frees what was made inside (frozen objects it would skip)
 
 
 @pytest.mark.skipif(FREE_THREADED, reason="a free-threaded build keeps no young generation")

@@ -5,31 +5,44 @@ from __future__ import annotations
 
 import contextlib
 import gc
+import threading
 from collections import OrderedDict
 from collections.abc import Callable, Iterator
 from typing import Any
 
+_pause_lock = threading.Lock()
+_pause_state = {"depth": 0, "resume": False}
+"""How many pauses are open, in every thread, and whether the collector was on before the first:
+a sweep's two threads read specs at once, and a second pause that read the collector as off
+(the first had turned it off) must not turn it off again after the first turned it back on."""
+
 
 @contextlib.contextmanager
 def collector_paused() -> Iterator[None]:
-    """Pause the cyclic garbage collector for the block; on leaving, turn it back on if it was on.
+    """Pause the cyclic garbage collector for the block; when the last open pause (of any thread)
+    ends, turn it back on if it was on before the first.
 
     Reading a spec of 10⁵ parts or a robot file of a million elements, auditing 10⁵ links and
     printing their report each make millions of containers and none of them is garbage: the
     collector's passes over them took 16 of 42 s of an audit's CPU (issue 25). On resuming, every
     tracked object, those made meanwhile among them, is moved to the oldest generation unscanned
-    (``gc.freeze`` then ``gc.unfreeze``), so the first young collection does not walk them all (0.6-0.9 of 3.4 s of
-    CPU for 20,000 links); cycles among them are collected by the next full pass. Nested pauses
-    leave the collector to the outermost."""
-    collecting = gc.isenabled()
-    gc.disable()
+    (``gc.freeze`` then ``gc.unfreeze``), so the first young collection does not walk them all
+    (0.6-0.9 of 3.4 s of CPU for 20,000 links); cycles among them are collected by the next full
+    pass."""
+    with _pause_lock:
+        if _pause_state["depth"] == 0:
+            _pause_state["resume"] = gc.isenabled()
+            gc.disable()
+        _pause_state["depth"] += 1
     try:
         yield
     finally:
-        if collecting:
-            gc.freeze()
-            gc.unfreeze()
-            gc.enable()
+        with _pause_lock:
+            _pause_state["depth"] -= 1
+            if _pause_state["depth"] == 0 and _pause_state["resume"]:
+                gc.freeze()
+                gc.unfreeze()
+                gc.enable()
 
 
 def cached(cache: OrderedDict, entries: int, key: tuple, make: Callable[[], Any]) -> Any:
