@@ -309,7 +309,7 @@ READER_GONE_RUNS = [
 @pytest.mark.parametrize(("case", "form"), READER_GONE_RUNS)
 def test_a_reader_that_left_ends_the_run_quietly_with_status_0(case, form):
     """`rbi check a.yaml b.yaml | head -1`: the reader leaving is not a failed check (exit 1) nor
-    an error; every command ends quietly with status 0, as a single-file run whose reader left
+    an error; a run with nothing failed ends quietly with status 0, as a single-file run whose reader left
     after its first line did. (Click and rich each turned a broken pipe into a silent exit 1.)"""
     args = READER_GONE[case] + (["--format", form] if form else [])
     read_end, write_end = os.pipe()
@@ -323,3 +323,44 @@ def test_a_reader_that_left_ends_the_run_quietly_with_status_0(case, form):
     assert done.returncode == 0, done.stderr
     assert b"Traceback" not in done.stderr and b"Exception" not in done.stderr
     assert all(line.startswith(b"rbi: ") for line in done.stderr.splitlines()), done.stderr
+
+
+KNOWN_STATUS = {  # (files written into the run's folder, arguments, the status known before any output)
+    "a failed check": (["fails.yaml"], ["check", "fails.yaml"], 1),
+    "a failed check, then a good file": (["fails.yaml"], ["check", "fails.yaml", BODIES / "top.yaml"], 1),
+    "a bad file, then a good one": ([], ["check", "missing.yaml", BODIES / "bracket.yaml"], 2),
+    "a flagged link": (["flagged.urdf"], ["audit", "flagged.urdf"], 1),
+    "an invalid spec": (["invalid.yaml"], ["validate", "invalid.yaml"], 2),
+}
+KNOWN_STATUS_FILES = {
+    # 1 kg point mass checked against 2 kg: fails
+    "fails.yaml": "parts: [{shape: point, mass: 1, position: [0, 0, 0]}]\nexpect: {mass: {value: 2, tol: 1%}}\n",
+    # a negative principal moment: unphysical, an error-level flag
+    "flagged.urdf": '<robot name="r"><link name="base"><inertial><mass value="1"/>'
+    '<inertia ixx="-1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/></inertial></link></robot>',
+    "invalid.yaml": "parts: [{shape: point}]\n",  # no mass, no position
+}
+
+
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+@pytest.mark.parametrize("case", KNOWN_STATUS)
+def test_a_reader_that_left_keeps_the_status_already_known(tmp_path, case, form):
+    """`rbi check fails.yaml ok.yaml | head -1`: the failed check (1) or bad file (2) was known
+    before the reader left, so the run still ends with it (it ended with 0 on 64c62c3: checked)."""
+    names, args, status = KNOWN_STATUS[case]
+    for name in names:
+        (tmp_path / name).write_text(KNOWN_STATUS_FILES[name])
+    read_end, write_end = os.pipe()
+    os.close(read_end)  # the reader is gone before rbi writes anything
+    try:
+        done = subprocess.run(
+            [str(RBI_SCRIPT), *map(str, args), "--format", form],
+            cwd=tmp_path,
+            stdout=write_end,
+            stderr=subprocess.PIPE,
+            timeout=120,
+        )
+    finally:
+        os.close(write_end)
+    assert done.returncode == status, done.stderr
+    assert b"Traceback" not in done.stderr and b"internal error" not in done.stderr

@@ -266,9 +266,9 @@ def _run() -> None:
         terminal.discard_stdout()
         say(f"standard output: cannot write the results: {exc}")
         sys.exit(2)
-    except (ReaderLeft, BrokenPipeError):  # `rbi ... | head`: the reader left; not an error of ours
+    except (ReaderLeft, BrokenPipeError) as exc:  # `rbi ... | head`: the reader left; no error of ours
         terminal.discard_stdout()  # what is still buffered is dropped, not flushed again at exit
-        sys.exit(0)
+        sys.exit(exc.status if isinstance(exc, ReaderLeft) else 0)  # a failed check stays failed
     except Exception as exc:  # a bug, not bad input: say so on one line unless debugging
         if os.environ.get("RBI_DEBUG"):
             raise

@@ -18,7 +18,7 @@ from rbi.api import SpecError, collector_paused, output_target
 from rbi.api import audit as run_audit
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile
 from rbi.cli.render import emit, number, print_table, terminal_safe, without_noise
-from rbi.cli.terminal import say
+from rbi.cli.terminal import say, status_kept
 
 GeometryOption = Annotated[
     str,
@@ -127,7 +127,9 @@ def audit(
     if out is not None:
         code = 1 if report.fix.unfixable or report.model.unchecked else 0
 
-    with collector_paused():  # as while auditing: a large robot's report is millions of new objects
+    # as while auditing: a large robot's report is millions of new objects; a reader that left
+    # does not clear a flagged link
+    with collector_paused(), status_kept(code):
         _render(report, format, file, out if fix else None, fix)
     if code:
         raise typer.Exit(code)

@@ -32,7 +32,7 @@ from rbi.cli.render import (
     to_csv,
     to_json,
 )
-from rbi.cli.terminal import say
+from rbi.cli.terminal import ReaderLeft, say, status_kept
 
 STDIN = "-"
 STDIN_LABEL = "<stdin>"
@@ -70,8 +70,9 @@ def report_each(files: Sequence[str], report: Callable[[str], FileReport], fmt: 
 
     if len(files) == 1:
         one = report(files[0])
-        emit(fmt, one.result, one.table, csv_rows=one.csv_rows, source=file_label(files[0]))
-        return 1 if one.failed else 0
+        with status_kept(int(one.failed)):
+            emit(fmt, one.result, one.table, csv_rows=one.csv_rows, source=file_label(files[0]))
+        return int(one.failed)
     return _Several(fmt).run(files, report)
 
 
@@ -85,19 +86,23 @@ class _Several:
 
     def run(self, files: Sequence[str], report: Callable[[str], FileReport]) -> int:
 
-        bad = failed = False
-        for file in files:
-            try:
-                one = report(file)
-                refuse_non_finite(one.result, file_label(file))
-            except SpecError as exc:
-                sys.stdout.flush()  # what earlier files printed comes before this file's error line
-                say(error_line(exc))
-                bad = True
-                continue
-            failed = failed or one.failed
-            self.write(file_label(file), one)
-        return 2 if bad else 1 if failed else 0
+        status = 0  # the worst so far: 2 once a file was bad input, else 1 once a check failed
+        try:
+            for file in files:
+                try:
+                    one = report(file)
+                    refuse_non_finite(one.result, file_label(file))
+                except SpecError as exc:
+                    status = 2
+                    sys.stdout.flush()  # what earlier files printed comes before this file's error line
+                    say(error_line(exc))
+                    continue
+                status = max(status, int(one.failed))
+                self.write(file_label(file), one)
+        except ReaderLeft as exc:  # the reader left: the run ends with the status known by then
+            exc.status = max(exc.status, status)
+            raise
+        return status
 
     def write(self, label: str, one: FileReport) -> None:
 

@@ -19,6 +19,7 @@ from rbi.cli.options import (
     PackagePathOption,
 )
 from rbi.cli.render import emit, terminal_safe
+from rbi.cli.terminal import status_kept
 
 
 def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
@@ -60,23 +61,24 @@ def validate(
     reports = [{"file": file_label(path), "problems": found} for path, found in zip(files, problems)]
     bad = [r for r in reports if r["problems"]]
     count = sum(len(r["problems"]) for r in reports)
-    if format is OutputFormat.table:
-        for report in reports:
-            for line in report["problems"]:
-                print(terminal_safe(line))
-        summary = (
-            f"{len(files)} file(s) valid"
-            if not bad
-            else f"{len(bad)} of {len(files)} file(s) invalid, {count} problem(s)"
-        )
-        print(f"rbi: {summary}", file=sys.stderr)
-    else:
-        result = {"ok": not bad, "files": [r | {"ok": not r["problems"]} for r in reports]}
-        rows = [
-            {"file": r["file"], "ok": not r["problems"], "problem": line}
-            for r in reports
-            for line in (r["problems"] or [""])
-        ]
-        emit(format.value, result, lambda: None, csv_rows=rows)
+    with status_kept(2 if bad else 0):  # a reader that left does not make the files valid
+        if format is OutputFormat.table:
+            for report in reports:
+                for line in report["problems"]:
+                    print(terminal_safe(line))
+            summary = (
+                f"{len(files)} file(s) valid"
+                if not bad
+                else f"{len(bad)} of {len(files)} file(s) invalid, {count} problem(s)"
+            )
+            print(f"rbi: {summary}", file=sys.stderr)
+        else:
+            result = {"ok": not bad, "files": [r | {"ok": not r["problems"]} for r in reports]}
+            rows = [
+                {"file": r["file"], "ok": not r["problems"], "problem": line}
+                for r in reports
+                for line in (r["problems"] or [""])
+            ]
+            emit(format.value, result, lambda: None, csv_rows=rows)
     if bad:
         raise typer.Exit(2)

@@ -8,6 +8,7 @@ only (``rbi --help`` stays fast).
 from __future__ import annotations
 
 import codecs
+import contextlib
 import errno
 import io
 import os
@@ -151,9 +152,24 @@ class StdoutUnwritable(Exception):
 
 class ReaderLeft(Exception):
     """The reader of standard output left (``rbi check a.yaml b.yaml | head -1``): the run ends
-    quietly with status 0. Not an OSError, so that neither click nor rich takes the broken pipe
-    for their own (each ends the run with a silent status 1, which ``check`` and ``audit`` use
-    for a failed check)."""
+    quietly with ``status``, the exit status already known then (0; 1 once a check failed, 2
+    once a file was bad input: see :func:`status_kept`). Not an OSError, so that neither click
+    nor rich takes the broken pipe for their own (each ends the run with a silent status 1)."""
+
+    def __init__(self, status: int = 0) -> None:
+        super().__init__(status)
+        self.status = status
+
+
+@contextlib.contextmanager
+def status_kept(status: int):
+    """Output written inside belongs to a run whose exit status is already ``status`` (a failed
+    check, a bad file): if the reader leaves meanwhile, the run still ends with it, not 0."""
+    try:
+        yield
+    except ReaderLeft as exc:
+        exc.status = max(exc.status, status)
+        raise
 
 
 class _ClosedStdout(io.TextIOBase):
