@@ -76,11 +76,14 @@ def test_the_table_never_cuts_a_name_or_number_short_in_80_columns(monkeypatch):
         assert "…" not in proc.stdout, body
 
 
-def test_the_centre_of_mass_table_prints_rounding_noise_as_zero_and_keeps_real_offsets(tmp_path):
+def test_the_centre_of_mass_table_prints_rounding_noise_as_zero_and_keeps_real_offsets(tmp_path, monkeypatch):
     # a coordinate of 1e-17 m on a 0.1 m sphere is far below 1e-12 of the body's size: noise;
-    # 1 mm is a real offset. JSON keeps every digit.
-    spec = tmp_path / "spheres.yaml"
-    spec.write_text(
+    # 1 mm is a real offset. JSON keeps every digit. The spec is named relative to its folder:
+    # the titles carry the path, and pytest's long tmp_path made them wrap at 80 columns
+    # ('...spheres.yaml: parts' / '— centre of mass'), which the split below does not expect.
+    monkeypatch.chdir(tmp_path)
+    spec = "spheres.yaml"
+    (tmp_path / spec).write_text(
         "parts:\n"
         "  - {name: noisy, shape: sphere, mass: 1, radius: 0.1, center: [1.0e-17, 0, 0]}\n"
         "  - {name: offset, shape: sphere, mass: 1, radius: 0.1, center: [0, 0.001, 0]}\n"
