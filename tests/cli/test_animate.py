@@ -131,3 +131,14 @@ def test_a_long_slow_gif_still_plays_in_real_time(tmp_path, bodies):
     )
     assert proc.returncode == 0, proc.stderr
     assert Image.open(out).n_frames == 601
+
+
+def test_the_page_path_is_printed_escaped(tmp_path, monkeypatch, bodies):
+    # as `rbi show --out`: the ESC byte of the path reached stdout as it was
+    monkeypatch.chdir(tmp_path)
+    proc = run_rbi_inprocess(
+        "animate", bodies / "top_bolted.yaml", "--spin", "200", "--duration", "1", "--out", "a\x1b[31mX.html"
+    )
+    assert proc.returncode == 0, proc.stderr
+    assert "\x1b" not in proc.stdout
+    assert proc.stdout.startswith("a\\x1b[31mX.html: ") and "keyframes" in proc.stdout

@@ -95,3 +95,13 @@ def test_a_picture_without_matplotlib_names_the_option_that_asked_for_it(monkeyp
         assert proc.returncode == 2
         assert proc.stderr.startswith(f"rbi: {option}: needs matplotlib"), proc.stderr
     assert not any(tmp_path.iterdir())
+
+
+def test_the_picture_path_is_printed_escaped(tmp_path, monkeypatch, bodies):
+    # `rbi show bodies/top.yaml --out $'/tmp/a\x1b[31mX.html'` wrote the ESC byte to stdout: the
+    # path a user gave reaches the terminal escaped, as in rbi's messages (\x1b)
+    monkeypatch.chdir(tmp_path)
+    proc = run_rbi_inprocess("show", bodies / "top.yaml", "--out", "a\x1b[31mX.html")
+    assert proc.returncode == 0, proc.stderr
+    assert "\x1b" not in proc.stdout
+    assert proc.stdout.startswith("a\\x1b[31mX.html: ") and proc.stdout.endswith(" parts drawn\n")

@@ -23,6 +23,7 @@ from rbi.cli.run_options import (
     TiltOption,
     YesOption,
 )
+from rbi.cli.terminal import terminal_safe
 
 OutOption = Annotated[
     str,
@@ -86,5 +87,5 @@ def animate(
     say_warnings(body.warnings)
     with progress_bar("gif", "frames", show=target.format == "gif") as progress:
         made = api.animate(body, target, progress=progress.update if progress else None, **settings)
-    shown = f"{made.frames} {'keyframes' if target.format == 'html' else 'frames'}"
-    print(f"{out}: {shown} over {duration:g} s, largest tilt of the spin axis {made.max_tilt_deg:.3g}°")
+    shown = f"{made.frames} {'keyframes' if target.format == 'html' else 'frames'} over {duration:g} s"
+    print(f"{terminal_safe(out)}: {shown}, largest tilt of the spin axis {made.max_tilt_deg:.3g}°")

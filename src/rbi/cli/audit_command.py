@@ -266,6 +266,6 @@ def _fix_text(report, file: str, out: str | None) -> None:
         sys.stdout.write(terminal_safe(diff, keep="\n") if diff else "")
         print(f"--fix: {len(plan.changes)} inertial(s) would change (dry run; --out FILE writes the copy)")
     else:
-        print(f"--fix: {len(plan.changes)} inertial(s) replaced; wrote {out}")
+        print(f"--fix: {len(plan.changes)} inertial(s) replaced; wrote {terminal_safe(out)}")
     for label, why in plan.unfixable:
-        print(f"--fix: {label}: not fixed: {why}")
+        print(terminal_safe(f"--fix: {label}: not fixed: {why}"))

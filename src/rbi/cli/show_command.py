@@ -10,6 +10,7 @@ from rbi import api
 from rbi.api import output_target
 from rbi.cli.options import SpecFile, needs, require_matplotlib
 from rbi.cli.render import say_warnings
+from rbi.cli.terminal import terminal_safe
 
 OutOption = Annotated[
     str,
@@ -44,4 +45,4 @@ def show(
     body = api.load(file)
     say_warnings(body.warnings)
     count = api.show(body, target, title=body.name or file)
-    print(f"{out}: {count} parts drawn")
+    print(f"{terminal_safe(out)}: {count} parts drawn")
