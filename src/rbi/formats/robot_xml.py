@@ -28,6 +28,7 @@ from dataclasses import dataclass, field
 from rbi.errors import InputError
 from rbi.files.safe import InputFileRefused, read_input_file
 from rbi.memory import collector_paused
+from rbi.text import visible
 
 MAX_FILE_BYTES = 64 * 1024 * 1024
 """Largest robot file read (64 MiB): far above any real description, whose meshes live in
@@ -266,7 +267,7 @@ def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
         declared = match.group(2).decode("ascii", "replace").strip()
         codec = ENCODINGS.get(declared.lower())
         if codec is None:
-            shown = declared.encode("unicode_escape").decode("ascii")[:40]
+            shown = visible(declared)[:40]
             raise InputError(
                 f"{path}: encoding {shown!r}: not an encoding rbi reads robot files in "
                 "(UTF-8, UTF-16, ASCII, ISO-8859-1, Windows-1252); save the file as UTF-8"
