@@ -227,7 +227,7 @@ class Principal(TableRepr):
 
     def _table(self) -> tuple[str, list[list[str]], tuple[str, ...]]:
         rows = [
-            [str(i + 1), f"{float(m) + 0.0:.8g}", vector_text(axis), f"{float(k):.6g}"]
+            [str(i + 1), number(m, 8), vector_text(axis), number(k)]
             for i, (m, axis, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration))
         ]
         title = f"principal moments and axes about {vector_text(self.about)}"
@@ -269,13 +269,13 @@ class Part(TableRepr):
     def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
         rows = [
             ("shape", "", self.shape + (" (hole)" if self.hole else "")),
-            ("mass", "", f"{self.mass:.8g}"),
+            ("mass", "", number(self.mass, 8)),
             ("centre of mass", "", vector_text(self.center_of_mass)),
             *(
                 (f"inertia about its CoM, row {i + 1}", "", vector_text(row))
                 for i, row in enumerate(self.inertia_about_com)
             ),
-            ("volume", "", "—" if self.volume is None else f"{self.volume:.8g}"),
+            ("volume", "", number(self.volume, 8)),
         ]
         return f"part {self.name}", rows, QUANTITY_COLUMNS
 
@@ -669,7 +669,7 @@ class Body(TableRepr):
     def __repr__(self) -> str:
         units = self.units
         return (
-            f"<rbi.Body {self.name or self.path!r}: mass {self.mass:.6g} {units['mass']}, "
+            f"<rbi.Body {self.name or self.path!r}: mass {number(self.mass)} {units['mass']}, "
             f"{len(self._loaded.elements)} parts, {'pivot' if self._loaded.pivot is not None else 'free'}>"
         )
 
@@ -678,7 +678,7 @@ class Body(TableRepr):
         inertia_unit = f"{units['mass']}·{units['length']}²"
         principal = self.principal()
         rows = [
-            ("mass", units["mass"], f"{self.mass:.8g}"),
+            ("mass", units["mass"], number(self.mass, 8)),
             ("centre of mass", units["length"], vector_text(self.center_of_mass)),
         ]
         if self._loaded.pivot is not None:
@@ -792,7 +792,7 @@ class Trajectory(TableRepr):
 
     def __repr__(self) -> str:
         return (
-            f"<rbi.Trajectory {self.t.size} samples over {float(self.t[-1]):g} s, "
+            f"<rbi.Trajectory {self.t.size} samples over {number(self.t[-1])} s, "
             f"{self.summary.get('method', '')}>"
         )
 
@@ -802,15 +802,15 @@ class Trajectory(TableRepr):
         rows = [
             ("scene", "", str(s.get("scene", ""))),
             ("method", "", str(s.get("method", ""))),
-            ("duration", "s", f"{float(self.t[-1]):g}"),
+            ("duration", "s", number(self.t[-1])),
             ("samples", "", str(self.t.size)),
             ("final q [w, x, y, z]", "", vector_text(self.q[-1])),
             ("final ω (body axes)", "rad/s", vector_text(self.omega[-1])),
-            (f"final tilt of {_axis_name(s.get('spin_axis'))}", "deg", f"{float(self.tilt_deg[-1]):.6g}"),
-            ("tilt min … max", "deg", f"{np.min(self.tilt_deg):.6g} … {np.max(self.tilt_deg):.6g}"),
+            (f"final tilt of {_axis_name(s.get('spin_axis'))}", "deg", number(self.tilt_deg[-1])),
+            ("tilt min … max", "deg", f"{number(np.min(self.tilt_deg))} … {number(np.max(self.tilt_deg))}"),
         ]
         if final and "energy" in s.get("conserved", {}):
-            rows.append(("energy drift", "", f"{s['conserved']['energy']['drift']:.2g}"))
+            rows.append(("energy drift", "", number(s["conserved"]["energy"]["drift"], 2)))
         return f"{s.get('name') or 'trajectory'} — simulate", rows, QUANTITY_COLUMNS
 
 
@@ -998,7 +998,7 @@ class SweepTable(TableRepr):
         rows = [
             ["…"] * len(self.columns)
             if row is None
-            else [v if isinstance(v, str) else "—" if v is None else f"{v:.6g}" for v in row]
+            else [v if isinstance(v, str) else number(v) for v in row]
             for row in shown
         ]
         return f"{self.name or 'sweep'} — {len(self)} runs, {self.failed} failed", rows, self.columns

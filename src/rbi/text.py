@@ -64,7 +64,8 @@ _SHORT_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
 def number(value: float | None, digits: int = 6) -> str:
     """A number for people (tables, reports): ``digits`` significant figures, ``0`` for zero
     (no ``-0``), ``—`` for none, ``inf``/``nan`` as Python writes them. The one number
-    formatter: the CLI's tables (:mod:`rbi.cli.render`) and the bench report use it."""
+    formatter: the CLI's tables (:mod:`rbi.cli.render`), the reprs of :mod:`rbi.api` and of the
+    audit report, and the bench report use it."""
     if value is None:
         return "—"
     value = float(value)

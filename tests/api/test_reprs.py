@@ -83,3 +83,11 @@ def test_audit_report_shows_as_a_table_and_repr_is_one_line(tmp_path):
     line = repr(report)
     assert "\n" not in line and len(line) < 200 and "2 links" in line and "1 joints" in line, line
     assert "upper" in rendered(report) and "upper" in report._repr_html_()
+
+
+def test_numbers_in_the_tables_are_written_by_the_one_formatter():
+    """rbi.text.number: a sweep's -0.0 (spin -0) shows as 0, as in the CLI's tables (it showed
+    -0 when the reprs formatted cells by hand); a missing value as —."""
+    table = rbi.sweep(BODIES / "top.yaml", spin=-0.0, tilt_deg=-0.0, duration=0.1, samples=5, workers=1)
+    html = table._repr_html_()
+    assert ">-0<" not in html and html.count('right">0<') >= 2 and ">—<" in html

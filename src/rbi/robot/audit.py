@@ -33,6 +33,7 @@ from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, tree_ro
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
 from rbi.robot.tree import placement, stack_apply, stacked, totals
+from rbi.text import number
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -224,12 +225,12 @@ class AuditReport(TableRepr):
         rows = [
             [
                 str(each.name),
-                "—" if each.declared is None else f"{each.declared.mass:.6g}",
+                number(None if each.declared is None else each.declared.mass),
                 "; ".join(f"{flag.level} {flag.code}" for flag in each.flags) or "ok",
             ]
             for each in self.links
         ]
-        rows.append(["total", f"{self.total.mass:.6g}", "error" if self.has_error else "ok"])
+        rows.append(["total", number(self.total.mass), "error" if self.has_error else "ok"])
         return f"{self.model.name or self.path} — audit", rows, ("link", "mass, kg", "flags")
 
     def as_dict(self) -> dict[str, Any]:
