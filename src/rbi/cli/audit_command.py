@@ -17,7 +17,7 @@ import typer
 from rbi.api import SpecError, collector_paused, output_target
 from rbi.api import audit as run_audit
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile
-from rbi.cli.render import emit, number, print_table, terminal_safe, without_noise
+from rbi.cli.render import emit, number, print_table, terminal_safe, vector_text, without_noise
 from rbi.cli.terminal import say, status_kept
 
 GeometryOption = Annotated[
@@ -204,9 +204,9 @@ def _table(report) -> None:
         table.add_row(
             each.link.name if each.link.name is not None else each.link.label,
             "-" if declared is None else number(declared.mass, 6),
-            "-" if geo is None or geo.implied_density is None else f"{geo.implied_density:.4g}",
+            "-" if geo is None or geo.implied_density is None else number(geo.implied_density, 4),
             each.worst_ratio_text,
-            "-" if each.com_offset is None else f"{each.com_offset:.2g}",
+            "-" if each.com_offset is None else number(each.com_offset, 2),
             flags,
         )
     print_table(table)
@@ -215,12 +215,11 @@ def _table(report) -> None:
             print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))
     total = report.total
     # three short lines, not one of up to ~100 characters that a terminal of 80 would break
-    # inside a number; rounding noise (2.8e-18 m of a symmetric robot) printed as 0
-    centre = without_noise(total.center_of_mass)
-    moments = without_noise(report.total_moments)
+    # inside a number; rounding noise (2.8e-18 m of a symmetric robot) printed as 0; the moments
+    # are a list, shown without the vector's brackets
     print(terminal_safe(f"total ({total.frame}): mass {number(total.mass, 6)} kg"))
-    print(f"  centre of mass [m]: [{', '.join(number(v, 6) for v in centre)}]")
-    print(f"  principal moments about it [kg·m²]: {', '.join(number(v, 6) for v in moments)}")
+    print(f"  centre of mass [m]: {vector_text(total.center_of_mass, 6)}")
+    print(f"  principal moments about it [kg·m²]: {vector_text(report.total_moments, 6)[1:-1]}")
     _joints_table(report)
     for note in report.notes:
         say(f"note: {note}")
