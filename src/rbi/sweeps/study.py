@@ -16,17 +16,18 @@ import json
 import numbers
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError, literal
+from rbi.files.safe import InputFileRefused, read_input_file
 from rbi.runs.run import body_spin_axis, check_run_settings, check_tilt, spin_axis_value
 from rbi.sim.api import check_samples
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
+from rbi.spec.load import MAX_SPEC_BYTES
 from rbi.spec.units import STANDARD_GRAVITY_SI
 from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import store
@@ -212,13 +213,14 @@ class Study:
         return compute, job.chunk_size(self.settings.workers or available_cores())
 
     def store_settings(self) -> dict:
-        """What makes two sweeps the same, for ``--resume``: the spec's bytes (or its parsed
-        form when it was given as text or a dict) and every setting."""
+        """What makes two sweeps the same, for ``--resume``: the spec's bytes, read through the
+        one capped reader of input files (or its parsed form when it was given as text or a
+        dict, or its file has since become something that reader refuses) and every setting."""
 
         s, job = self.settings, self.job
         try:
-            spec_bytes = Path(self.path).read_bytes()
-        except OSError:
+            spec_bytes = read_input_file(self.path, MAX_SPEC_BYTES, "spec")
+        except InputFileRefused:
             spec_bytes = json.dumps(self.raw, sort_keys=True, default=str).encode()
         return {
             "spec_sha256": hashlib.sha256(spec_bytes).hexdigest(),
