@@ -39,3 +39,17 @@ def test_the_tables_principal_moments_of_the_robot_are_in_json():
     assert total["moments"] == pytest.approx([small, large, large], rel=1e-12)
     table = run_rbi_inprocess("audit", BODIES / "two_link_arm.urdf").stdout
     assert "  principal moments about it [kg·m²]: 0.000753333, 0.0498433, 0.0498433" in table.splitlines()
+
+
+def test_a_link_name_is_shown_as_it_is_not_read_as_markup(tmp_path):
+    # a link named '[bold]arm[/bold]x' was shown as 'armx' in the table: rich read the name as
+    # markup (the joints table and the flag lines showed it as it is)
+    robot = tmp_path / "r.urdf"
+    robot.write_text(
+        '<robot name="r"><link name="base"><inertial><mass value="2"/><inertia ixx="1" iyy="2" izz="3" '
+        'ixy="0" ixz="0" iyz="0"/></inertial></link><link name="[bold]arm[/bold]x"/>'
+        '<joint name="j" type="fixed"><parent link="base"/><child link="[bold]arm[/bold]x"/></joint></robot>'
+    )
+    proc = run_rbi_inprocess("audit", robot)
+    rows = [line.split() for line in proc.stdout.splitlines()]
+    assert ["[bold]arm[/bold]x", "-", "-", "-", "-", "ok"] in rows, proc.stdout

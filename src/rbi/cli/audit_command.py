@@ -184,7 +184,7 @@ def _csv_row(each) -> dict:
 def _table(report) -> None:
 
     # not at top level: `rbi audit --format json` would load rbi.cli.tables too
-    from rbi.cli.tables import titled
+    from rbi.cli.tables import plain_text, titled
 
     word = report.model.link_word
     plural = "bodies" if word == "body" else word + "s"
@@ -202,7 +202,7 @@ def _table(report) -> None:
         declared, geo = each.declared, each.geometry
         flags = " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok"
         table.add_row(
-            each.link.name if each.link.name is not None else each.link.label,
+            plain_text(each.link.name if each.link.name is not None else each.link.label),
             "-" if declared is None else number(declared.mass, 6),
             "-" if geo is None or geo.implied_density is None else number(geo.implied_density, 4),
             each.worst_ratio_text,
