@@ -94,7 +94,9 @@ def csv_cell(value: Any) -> Any:
     starting with ``=``, ``+``, ``-``, ``@``, a tab or a carriage return, such as
     ``=HYPERLINK(...)``, gets a leading ``'``; text that reads as a number, ``-0.5``, is left
     alone) with hidden characters escaped (:func:`visible`). Other values (ints) pass as they
-    are. :func:`csv_text_read` is its inverse for text cells."""
+    are. ``-0.0`` is kept (``-0.0``): the CLI's CSV (:func:`rbi.cli.render.plain`) and the
+    trajectory CSV (:func:`rbi.runs.run.trajectory_csv`) make it ``0.0`` before they write.
+    :func:`csv_text_read` is its inverse for text cells."""
     if isinstance(value, float):
         return "" if value != value else repr(float(value))
     if isinstance(value, str):

@@ -24,6 +24,7 @@ from rbi.runs.run import (
 )
 from rbi.sim.summary import CSV_COLUMNS
 from rbi.spec.load import load_body
+from rbi.text import csv_cell
 
 BODIES = Path(__file__).resolve().parents[2] / "bodies"
 
@@ -140,6 +141,15 @@ def test_the_csv_round_trips_every_number_and_leaves_nan_empty():
     assert cells[1]["t"] == "0.0"
     assert cells[0]["precession_deg"] == ""
     assert float(cells[1]["precession_deg"]) == 1e-300
+
+
+def test_the_csv_cells_are_the_one_csv_cell_rule():
+    """rbi.text.csv_cell writes every number (-0.0 made 0.0 first, as the CLI's CSV does)."""
+    values = np.array([1 / 3, -2.5e-310, 1e300, 7.0, -0.0, math.nan, 0.1 + 0.2, -1e-5])
+    columns = {name: np.roll(values, i) for i, name in enumerate(CSV_COLUMNS)}
+    rows = [line.split(",") for line in trajectory_csv(columns).splitlines()[1:]]
+    table = np.column_stack([columns[name] for name in CSV_COLUMNS])
+    assert rows == [[csv_cell(v + 0.0) for v in row] for row in table.tolist()]
 
 
 def test_a_trajectory_that_overflowed_is_refused_naming_the_column():

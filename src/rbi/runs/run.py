@@ -29,6 +29,7 @@ from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.sim.summary import CSV_COLUMNS, sample_columns, summarize
 from rbi.sim.summary import error_estimate as estimate
 from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
+from rbi.text import csv_cell
 
 SCENE_NAMES = {True: "heavy top on a fixed pivot", False: "free body (torque-free about the centre of mass)"}
 
@@ -309,11 +310,13 @@ def refuse_non_finite(path: str, columns: dict[str, np.ndarray]) -> None:
 
 def trajectory_csv(columns: dict[str, np.ndarray]) -> str:
     """The CSV `rbi simulate --out` writes: a header of :data:`rbi.sim.summary.CSV_COLUMNS`,
-    then one line a sample, each number at full precision (its shortest round-tripping
-    ``repr``; ``-0.0`` as ``0.0``; an undefined value, NaN, as an empty cell)."""
+    then one line a sample, each number through the one CSV cell rule (:func:`rbi.text.csv_cell`:
+    full precision, its shortest round-tripping ``repr``; an undefined value, NaN, as an empty
+    cell), ``-0.0`` written as ``0.0`` as in the CLI's other CSV and JSON
+    (:func:`rbi.cli.render.plain`). Lines are joined here rather than by :func:`rbi.text.csv_lines`
+    (no number needs quoting): its csv.writer took 1.4 times as long for 200,000 samples."""
 
-    lines = [",".join(CSV_COLUMNS)]
     table = np.column_stack([np.asarray(columns[name], dtype=float) for name in CSV_COLUMNS])
-    for row in table.tolist():
-        lines.append(",".join("" if v != v else repr(v + 0.0) for v in row))
+    lines = [",".join(CSV_COLUMNS)]
+    lines.extend(",".join(map(csv_cell, row)) for row in (table + 0.0).tolist())  # + 0.0: -0.0 as 0.0
     return "\n".join(lines) + "\n"
