@@ -171,7 +171,7 @@ def _csv_row(each) -> dict:
 
     declared, geo, ratios = each.declared, each.geometry, each.given_ratios
     return {
-        "link": terminal_safe(each.link.name or each.link.label),
+        "link": each.link.name or each.link.label,
         "mass": declared.mass if declared else None,
         "geometry_volume": geo.volume if geo else None,
         "implied_density": geo.implied_density if geo else None,

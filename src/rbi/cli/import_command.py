@@ -171,8 +171,7 @@ def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
         "density": density,
         "solids": rows,
     }
-    csv_rows = [{k: (terminal_safe(v) if isinstance(v, str) else v) for k, v in row.items()} for row in rows]
-    emit(format.value, result, lambda: None, csv_rows=csv_rows)
+    emit(format.value, result, lambda: None, csv_rows=rows)
 
 
 def _targets(robot, out: str, source: str):
@@ -239,9 +238,8 @@ def _emit_listing(format: OutputFormat, robot, targets) -> None:
         "links": rows,
         "skipped": [{"link": label, "reason": reason} for label, reason in robot.skipped],
     }
+    # every text cell is escaped by the CSV cell rule (rbi.text.csv_cell): CSV often reaches a terminal
     csv_rows = [
-        {k: (terminal_safe(v) if isinstance(v, str) else v) for k, v in row.items() if k != "problems"}
-        | {"ok": not row["problems"]}
-        for row in rows
-    ]  # names escaped: CSV often reaches a terminal
+        {k: v for k, v in row.items() if k != "problems"} | {"ok": not row["problems"]} for row in rows
+    ]
     emit(format.value, result, lambda: None, csv_rows=csv_rows)
