@@ -26,6 +26,7 @@ import stat
 import tempfile
 from collections.abc import Iterator
 from pathlib import Path
+from typing import BinaryIO
 
 from rbi.errors import InputError
 from rbi.text import visible
@@ -140,11 +141,24 @@ class InputFileRefused(ValueError):
 
 
 def read_input_file(path: str | os.PathLike, limit: int, what: str, hint: str = "") -> bytes:
-    """The bytes of an input file a user named (a ``what``: ``"spec"``, ``"mesh"``, ``"robot
-    file"``; links are followed, since users link their own files), at most ``limit`` of them.
-    Refused before a byte is read, and without blocking: a missing file, a folder, FIFO, device
-    or socket, and a file larger than ``limit`` (by its size, and again while reading one that
-    grows; ``hint`` is added to that message). :class:`InputFileRefused` says why."""
+    """The bytes of an input file a user named, at most ``limit`` of them, opened and refused as
+    :func:`open_input_file` says (and refused again while reading one that grows past ``limit``)."""
+    with open_input_file(path, what, limit, hint) as stream:
+        try:
+            data = _read_at_most(stream.fileno(), limit)
+        except OSError as exc:
+            raise InputFileRefused(f"cannot read: {reason(exc)}") from None
+    if data is None:
+        raise InputFileRefused(_too_large(what, f"more than {limit:,} bytes", limit, hint))
+    return data
+
+
+def open_input_file(path: str | os.PathLike, what: str, limit: int | None = None, hint: str = "") -> BinaryIO:
+    """An input file a user named (a ``what``: ``"spec"``, ``"mesh"``, ``"robot file"``; links
+    are followed, since users link their own files), open for reading in binary (the caller
+    closes it: ``with``). Refused before a byte is read, and without blocking, checking the open
+    file itself: a missing file, a folder, FIFO, device or socket, and a file larger than
+    ``limit`` by its size (``hint`` is added to that message). :class:`InputFileRefused` says why."""
     try:
         fd = os.open(path, os.O_RDONLY | _NONBLOCK | _CLOEXEC | _NOCTTY)
     except FileNotFoundError:
@@ -158,17 +172,21 @@ def read_input_file(path: str | os.PathLike, limit: int, what: str, hint: str = 
         if not stat.S_ISREG(info.st_mode):
             noun = what if what.endswith("file") else f"{what} file"
             raise InputFileRefused(f"not a regular file but a {kind(info.st_mode)}; give a {noun}")
+        if limit is not None and info.st_size > limit:
+            raise InputFileRefused(_too_large(what, f"{info.st_size:,} bytes", limit, hint))
         if _NONBLOCK:
             os.set_blocking(fd, True)
-        data = _read_at_most(fd, limit)
     except OSError as exc:
-        raise InputFileRefused(f"cannot read: {reason(exc)}") from None
-    finally:
         os.close(fd)
-    if data is None:
-        size = f"{info.st_size:,} bytes" if info.st_size > limit else f"more than {limit:,} bytes"
-        raise InputFileRefused(f"file too large for a {what} ({size}; rbi reads at most {limit:,}{hint})")
-    return data
+        raise InputFileRefused(f"cannot read: {reason(exc)}") from None
+    except BaseException:
+        os.close(fd)
+        raise
+    return os.fdopen(fd, "rb")
+
+
+def _too_large(what: str, size: str, limit: int, hint: str) -> str:
+    return f"file too large for a {what} ({size}; rbi reads at most {limit:,}{hint})"
 
 
 def create_exclusive(path: str | os.PathLike, what: str, mode: int = 0o666) -> int:

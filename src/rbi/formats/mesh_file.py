@@ -32,7 +32,7 @@ from rbi.core.mesh import (
     repair_mesh,
     weld_vertices,
 )
-from rbi.files.safe import read_input_file
+from rbi.files.safe import open_input_file, read_input_file
 from rbi.formats.paths import file_key
 from rbi.memory import cached
 
@@ -150,9 +150,9 @@ def _too_many(count: int | None) -> ValueError:
 def _binary_stl_cap(path: Path) -> None:
     """Refuse a binary STL beyond the triangle cap from its header alone, before reading it."""
     try:
-        with open(path, "rb") as stream:
+        with open_input_file(path, "mesh") as stream:  # no size cap: a large one is told its triangles
             head = stream.read(84)
-            size = path.stat().st_size
+            size = stream.seek(0, io.SEEK_END)  # of the file opened
     except OSError as exc:
         raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
     if len(head) == 84:

@@ -16,17 +16,19 @@ one vectorised pass: it never becomes a Python list of per-point objects.
 
 from __future__ import annotations
 
+import io
 import os
 import re
-import stat
 import warnings
 from pathlib import Path
+from typing import BinaryIO
 
 import numpy as np
 from numpy.lib import format as npy
 
 from rbi.core.mass import MassProperties, combine
 from rbi.errors import InputError
+from rbi.files.safe import InputFileRefused, open_input_file
 from rbi.formats.paths import spec_relative_file
 
 COLUMNS = ("mass", "x", "y", "z")
@@ -41,23 +43,13 @@ def read_point_cloud(path: str | Path, label: str) -> tuple[np.ndarray, np.ndarr
 
     Messages name the line, column or point at fault but never quote the file's content: the
     file may be one a spec named to leak it."""
-    path = Path(path)
+    npy_file = Path(path).suffix.lower() == ".npy"
     try:
-        info = path.stat()
-    except OSError:
-        raise InputError(f"{label}: no such file") from None
-    if not stat.S_ISREG(info.st_mode):
-        raise InputError(f"{label}: not a regular file")
-    try:
-        if path.suffix.lower() == ".npy":
-            table = _read_npy(path, label)
-        else:
-            if info.st_size > MAX_CSV_BYTES:
-                raise InputError(
-                    f"{label}: too large for a CSV cloud ({info.st_size:,} bytes, at most "
-                    f"{MAX_CSV_BYTES:,}); save it as .npy"
-                )
-            table = _read_csv(path, label)
+        cap = None if npy_file else MAX_CSV_BYTES
+        with open_input_file(path, "point cloud", cap, " from CSV: save it as .npy") as stream:
+            table = _read_npy(stream, label) if npy_file else _read_csv(stream, label)
+    except InputFileRefused as exc:
+        raise InputError(f"{label}: {exc}") from None
     except OSError as exc:  # unreadable: permissions, an I/O error, a kernel file that refuses reads
         raise InputError(f"{label}: cannot read: {exc.strerror or type(exc).__name__}") from None
     _check_values(table, label)
@@ -75,46 +67,39 @@ def cloud_element(spec_path: str, file: str) -> MassProperties:
     return props
 
 
-def _read_npy(path: Path, label: str) -> np.ndarray:
-    """The (N, 4) table of a ``.npy`` file, its header checked against the file's size before
-    any array is allocated."""
+def _read_npy(stream: BinaryIO, label: str) -> np.ndarray:
+    """The (N, 4) table of an open ``.npy`` file, its header checked against the file's size
+    before any array is allocated."""
 
     not_npy = f"{label}: not a readable .npy array (expected a numeric array of shape (N, 4) with columns mass, x, y, z)"
-    with open(path, "rb") as stream:
-        try:
-            version = npy.read_magic(stream)
-            if version == (1, 0):
-                shape, fortran_order, dtype = npy.read_array_header_1_0(stream)
-            elif version in ((2, 0), (3, 0)):
-                shape, fortran_order, dtype = npy.read_array_header_2_0(stream)
-            else:
-                raise ValueError("unknown version")
-        except (ValueError, SyntaxError, TypeError, EOFError, UnicodeDecodeError):
-            raise InputError(not_npy) from None
-        if (
-            dtype.hasobject
-            or dtype.kind not in "fiu"
-            or dtype.shape != ()
-            or len(shape) != 2
-            or shape[1] != 4
-        ):
-            raise InputError(
-                f"{label}: a .npy cloud must be a numeric array of shape (N, 4) with columns "
-                f"mass, x, y, z (got shape {tuple(shape)}, dtype {_plain_dtype_name(dtype)})"
-            )
-        if shape[0] == 0:
-            raise InputError(f"{label}: holds no points (an array of shape (0, 4))")
-        data_bytes = os.fstat(stream.fileno()).st_size - stream.tell()
-        if data_bytes != shape[0] * 4 * dtype.itemsize:
-            raise InputError(
-                f"{label}: the header says {shape[0]:,} points ({shape[0] * 4 * dtype.itemsize:,} bytes) "
-                f"but the file holds {data_bytes:,} bytes of data (truncated or not a .npy file)"
-            )
-        stream.seek(0)
-        try:
-            table = npy.read_array(stream, allow_pickle=False)
-        except ValueError:
-            raise InputError(not_npy) from None
+    try:
+        version = npy.read_magic(stream)
+        if version == (1, 0):
+            shape, fortran_order, dtype = npy.read_array_header_1_0(stream)
+        elif version in ((2, 0), (3, 0)):
+            shape, fortran_order, dtype = npy.read_array_header_2_0(stream)
+        else:
+            raise ValueError("unknown version")
+    except (ValueError, SyntaxError, TypeError, EOFError, UnicodeDecodeError):
+        raise InputError(not_npy) from None
+    if dtype.hasobject or dtype.kind not in "fiu" or dtype.shape != () or len(shape) != 2 or shape[1] != 4:
+        raise InputError(
+            f"{label}: a .npy cloud must be a numeric array of shape (N, 4) with columns "
+            f"mass, x, y, z (got shape {tuple(shape)}, dtype {_plain_dtype_name(dtype)})"
+        )
+    if shape[0] == 0:
+        raise InputError(f"{label}: holds no points (an array of shape (0, 4))")
+    data_bytes = os.fstat(stream.fileno()).st_size - stream.tell()
+    if data_bytes != shape[0] * 4 * dtype.itemsize:
+        raise InputError(
+            f"{label}: the header says {shape[0]:,} points ({shape[0] * 4 * dtype.itemsize:,} bytes) "
+            f"but the file holds {data_bytes:,} bytes of data (truncated or not a .npy file)"
+        )
+    stream.seek(0)
+    try:
+        table = npy.read_array(stream, allow_pickle=False)
+    except ValueError:
+        raise InputError(not_npy) from None
     return np.asarray(table, dtype=float)
 
 
@@ -125,8 +110,8 @@ def _plain_dtype_name(dtype: np.dtype) -> str:
     return str(dtype) if plain else "not a plain number type"
 
 
-def _read_csv(path: Path, label: str) -> np.ndarray:
-    header, header_line = _header(path, label)
+def _read_csv(stream: BinaryIO, label: str) -> np.ndarray:
+    header, header_line = _header(stream, label)
     missing = [c for c in COLUMNS if c not in header]
     if missing:
         raise InputError(
@@ -137,11 +122,12 @@ def _read_csv(path: Path, label: str) -> np.ndarray:
     if twice:
         raise InputError(f"{label}: line {header_line}: column {twice[0]} is named twice in the header")
     usecols = [header.index(c) for c in COLUMNS]
+    stream.seek(0)
     try:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore", UserWarning)  # "no data": reported below instead
             table = np.loadtxt(
-                path,
+                io.TextIOWrapper(stream, encoding="utf-8-sig"),  # read as numpy reads a path
                 delimiter=",",
                 skiprows=header_line,
                 usecols=usecols,
@@ -160,29 +146,31 @@ def _read_csv(path: Path, label: str) -> np.ndarray:
     return table
 
 
-def _header(path: Path, label: str) -> tuple[list[str], int]:
+def _header(file: BinaryIO, label: str) -> tuple[list[str], int]:
     """Column names of the first non-comment, non-blank line, and that line's number (a
     byte-order mark, as spreadsheets write, is skipped)."""
+    stream = io.TextIOWrapper(file, encoding="utf-8-sig", newline="")
     try:
-        with open(path, encoding="utf-8-sig", newline="") as stream:
-            number = 0
-            while True:
-                line = stream.readline(_HEADER_LINE_CHARS)
-                if not line:
-                    break
-                number += 1
-                if "\x00" in line:
-                    raise InputError(f"{label}: not a text file (binary data)")
-                if len(line) >= _HEADER_LINE_CHARS and not line.endswith("\n"):
-                    raise InputError(
-                        f"{label}: line {number}: longer than {_HEADER_LINE_CHARS} characters "
-                        "(expected a header row mass,x,y,z)"
-                    )
-                text = line.strip()
-                if text and not text.startswith("#"):
-                    return [c.strip().lower() for c in text.split(",")], number
+        number = 0
+        while True:
+            line = stream.readline(_HEADER_LINE_CHARS)
+            if not line:
+                break
+            number += 1
+            if "\x00" in line:
+                raise InputError(f"{label}: not a text file (binary data)")
+            if len(line) >= _HEADER_LINE_CHARS and not line.endswith("\n"):
+                raise InputError(
+                    f"{label}: line {number}: longer than {_HEADER_LINE_CHARS} characters "
+                    "(expected a header row mass,x,y,z)"
+                )
+            text = line.strip()
+            if text and not text.startswith("#"):
+                return [c.strip().lower() for c in text.split(",")], number
     except UnicodeDecodeError as exc:
         raise InputError(f"{label}: not UTF-8 text (byte {exc.start})") from None
+    finally:
+        stream.detach()  # the file stays open: its rows are read next
     raise InputError(f"{label}: file is empty (expected a header row mass,x,y,z and one row per point)")
 
 

@@ -38,6 +38,7 @@ from typing import Any, NamedTuple
 import numpy as np
 
 from rbi.core.mass import MassProperties
+from rbi.files.safe import open_input_file
 from rbi.formats.paths import file_key
 from rbi.memory import cached
 
@@ -168,12 +169,12 @@ _CACHE_ENTRIES = 4
 
 def _loaded(path: Path) -> _Loaded:
     key = file_key(path)
-    return cached(_CACHE, _CACHE_ENTRIES, key, lambda: _read(path, key[1]))
+    return cached(_CACHE, _CACHE_ENTRIES, key, lambda: _read(path))
 
 
-def _read(path: Path, size: int) -> _Loaded:
-    """The STEP file at ``path`` (``size`` bytes) read, each solid checked and integrated."""
-    _check_text(path, size)
+def _read(path: Path) -> _Loaded:
+    """The STEP file at ``path`` read, each solid checked and integrated."""
+    _check_text(path)
     ocp = _ocp()
     with _quiet():
         document, unit_metres = _transfer(ocp, path)
@@ -190,13 +191,12 @@ def _read(path: Path, size: int) -> _Loaded:
     return _Loaded(StepFile(tuple(solids), unit, unit_metres), tuple(shape for _, shape in labelled))
 
 
-def _check_text(path: Path, size: int) -> None:
-    """Refuse, before OpenCascade parses anything, a file beyond :data:`MAX_STEP_BYTES` or one
-    that does not start as ISO 10303-21 text does."""
-    if size > MAX_STEP_BYTES:
-        raise ValueError(f"file too large for a STEP file ({size} bytes; rbi reads at most {MAX_STEP_BYTES})")
+def _check_text(path: Path) -> None:
+    """Refuse, before OpenCascade parses anything, what :func:`rbi.files.safe.open_input_file`
+    refuses (not a regular file, beyond :data:`MAX_STEP_BYTES`) or a file that does not start
+    as ISO 10303-21 text does."""
     try:
-        with open(path, "rb") as stream:
+        with open_input_file(path, "STEP file", MAX_STEP_BYTES) as stream:
             head = stream.read(4096)
     except OSError as exc:
         raise ValueError(f"cannot read: {exc.strerror or type(exc).__name__}") from None
