@@ -19,7 +19,6 @@ import warnings
 from collections.abc import Iterable
 
 import typer
-from typer._click.exceptions import NoSuchOption, UsageError
 from typer.core import TyperGroup
 from typer.main import get_command_from_info
 from typer.models import CommandInfo
@@ -29,6 +28,11 @@ from rbi.cli import completion, terminal
 from rbi.cli.option_values import error_line
 from rbi.cli.options import plain_argument_help
 from rbi.cli.terminal import ReaderLeft, StdoutUnwritable, Terminated, say
+
+try:  # typer 0.26 and later vendor click, and export neither exception publicly
+    from typer._click.exceptions import NoSuchOption, UsageError
+except ImportError:  # typer 0.12 to 0.25 run on click, whose public home these are
+    from click.exceptions import NoSuchOption, UsageError
 
 __all__ = ["COMMANDS", "app", "main"]
 
