@@ -93,6 +93,23 @@ def test_each_flag_with_its_level(tmp_path, I, code, level):
     assert proc.returncode == (1 if any(f["level"] == "error" for f in flags) else 0)
 
 
+@pytest.mark.parametrize(
+    "I, margin",
+    [
+        ((GOOD[0], GOOD[1], 3 * (GOOD[0] + GOOD[1])), "; margin I1 + I2 − I3 = "),
+        ((-GOOD[0], GOOD[1], GOOD[2]), " kg·m² below zero"),
+    ],
+)
+def test_the_unphysical_flag_says_what_validate_says(tmp_path, I, margin):
+    """One wording (rbi.formats.robot_files.inertia_problem_text): audit's flag is validate's
+    line after 'inertia: ', margin included."""
+    path = write(tmp_path, "r.urdf", robot(urdf_link("base", 2.0, I)))
+    _, result = audit_json(path)
+    (flag,) = [f for f in result["links"][0]["flags"] if f["code"] == "unphysical"]
+    (line,) = run_rbi_inprocess("validate", path).stdout.splitlines()[:1]
+    assert margin in flag["message"] and line.endswith(": link[0] (base): inertia: " + flag["message"])
+
+
 def test_density_flag_for_a_unit_mistake(tmp_path):
     # the mass in grams: 2000 "kg" in a 1-litre box, moments scaled alike (so the shape agrees)
     path = write(tmp_path, "r.urdf", robot(urdf_link("base", 2000.0, tuple(1000 * GOOD))))

@@ -22,7 +22,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.validity import declared_inertia_problem
+from rbi.core.validity import InertiaProblem, declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats import robot_xml
 from rbi.formats.paths import _outside_allowed
@@ -105,16 +105,22 @@ def link_problems(robot: RobotModel, link: Link) -> list[str]:
         problems.append(f"{where}: mass: must be greater than 0 (got {mass!r} kg)")
     problem = declared_inertia_problem(mass, inertia)
     if problem is not None:
-        if problem.kind in ("negative moment", "triangle inequality"):
-            I1, I2, I3 = (float(m) for m in np.linalg.eigvalsh(inertia))
-        if problem.kind == "negative moment":
-            margin = f"margin {I1:.6g} kg·m² below zero"
-        elif problem.kind == "triangle inequality":
-            margin = f"margin I1 + I2 − I3 = {I1 + I2 - I3:.6g} kg·m² ({(I1 + I2 - I3) / I3:.3%} of I3)"
-        else:
-            margin = ""
-        problems.append(f"{where}: inertia: {problem.message}" + (f"; {margin}" if margin else ""))
+        problems.append(f"{where}: inertia: {inertia_problem_text(problem, inertia)}")
     return problems
+
+
+def inertia_problem_text(problem: InertiaProblem, inertia: np.ndarray) -> str:
+    """``problem`` (of the declared ``inertia``) in words with the margin by which the check
+    fails, for a negative moment or a triangle-inequality deficit: the one wording of
+    ``rbi validate``, ``rbi import`` and ``rbi audit``'s unphysical flag."""
+    if problem.kind not in ("negative moment", "triangle inequality"):
+        return problem.message
+    I1, I2, I3 = (float(m) for m in np.linalg.eigvalsh(inertia))
+    if problem.kind == "negative moment":
+        return f"{problem.message}; margin {I1:.6g} kg·m² below zero"
+    return (
+        f"{problem.message}; margin I1 + I2 − I3 = {I1 + I2 - I3:.6g} kg·m² ({(I1 + I2 - I3) / I3:.3%} of I3)"
+    )
 
 
 def robot_file_problems(path: str, package_paths: dict | None = None) -> list[str]:

@@ -30,6 +30,7 @@ from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem, finite
 from rbi.errors import ArgumentError, literal
 from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, tree_rows
+from rbi.formats.robot_files import inertia_problem_text
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
 from rbi.robot.tree import placement, stack_apply, stacked, totals
@@ -920,7 +921,7 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
         flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative", "negative mass"))
     problem = declared_inertia_problem(declared.mass, I)
     if problem is not None:
-        flags.append(Flag("unphysical", "error", _problem_text(problem, I), problem.kind))
+        flags.append(Flag("unphysical", "error", inertia_problem_text(problem, I), problem.kind))
     has_geometry = geo is not None and geo.inertia_about_com is not None and geo.mass
     if link.inertial is not None and link.inertial.source == "default":
         if has_geometry:
@@ -1054,13 +1055,3 @@ def _placeholder(model: RobotModel, link: Link) -> str | None:
             "exporters write a placeholder"
         )
     return None
-
-
-def _problem_text(problem, I) -> str:
-    moments = np.linalg.eigvalsh(I)
-    I1, I2, I3 = (float(m) for m in moments)
-    if problem.kind == "negative moment":
-        return f"{problem.message}; margin {I1:.6g} kg·m² below zero"
-    if problem.kind == "triangle inequality":
-        return f"{problem.message}; margin I1 + I2 − I3 = {I1 + I2 - I3:.6g} kg·m² ({(I1 + I2 - I3) / I3:.3%} of I3)"
-    return problem.message
