@@ -12,12 +12,25 @@ from tests.conftest import run_rbi
 
 
 @pytest.fixture(scope="module")
-def quick_run(tmp_path_factory):
+def quick_proc(tmp_path_factory):
     folder = tmp_path_factory.mktemp("bench")
-    doc, png = folder / "performance.md", folder / "workprecision.png"
+    # the page's name holds an escape sequence: the line naming it must not reach the terminal raw
+    doc, png = folder / "perf\x1b[31m.md", folder / "workprecision.png"
     proc = run_rbi("bench", "--quick", "--format", "json", "--write-docs", doc, "--plot", png)
     assert proc.returncode == 0, proc.stderr
+    return proc, doc, png
+
+
+@pytest.fixture(scope="module")
+def quick_run(quick_proc):
+    proc, doc, png = quick_proc
     return json.loads(proc.stdout), doc, png
+
+
+def test_the_written_page_is_named_escaped(quick_proc):
+    proc, doc, _ = quick_proc
+    assert "\x1b" not in proc.stderr
+    assert f"rbi: wrote {doc.parent}/perf\\x1b[31m.md" in proc.stderr
 
 
 def test_quick_bench_prints_one_json_object_with_every_section(quick_run):

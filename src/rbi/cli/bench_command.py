@@ -22,6 +22,7 @@ from rbi.bench.workprecision import plot as draw
 from rbi.cli.options import FormatOption, OutputFormat, needs, require_matplotlib
 from rbi.cli.render import emit, progress_bar
 from rbi.cli.tables import unit_header
+from rbi.cli.terminal import terminal_safe
 
 SECTION_NAMES = tuple(suite.SECTIONS)
 
@@ -107,7 +108,7 @@ def bench(
         if plot:
             link = _relative_link(Path(plot), Path(write_docs))
         write_output(docs_target, report.markdown(result, command, link))
-        print(f"rbi: wrote {write_docs}", file=sys.stderr)
+        print(f"rbi: wrote {terminal_safe(write_docs)}", file=sys.stderr)
     emit(format.value, result, lambda: _tables(result), csv_rows=report.csv_rows(result))
 
 
