@@ -379,7 +379,8 @@ def test_the_cli_rules_see_an_internal_import_and_a_private_read(tmp_path):
 
 def unused_definitions(root: Path) -> list[str]:
     """The top-level functions and classes of the modules under ``root`` that nothing under
-    ``root`` names: no name, attribute, import or string (a listed public name) but its ``def``."""
+    ``root`` names: no name, attribute, import or string (a listed public name) but its ``def``.
+    A decorated one is used: its decorator registers it (``@app.callback()`` on cli/app's root)."""
     used: set[str] = set()
     defined = []
     for path in sorted(root.rglob("*.py")):
@@ -387,7 +388,9 @@ def unused_definitions(root: Path) -> list[str]:
         defined += [
             f"{path.relative_to(root)}: {node.name}"
             for node in tree.body
-            if isinstance(node, ast.FunctionDef | ast.ClassDef) and not node.name.startswith("__")
+            if isinstance(node, ast.FunctionDef | ast.ClassDef)
+            and not node.name.startswith("__")
+            and not node.decorator_list
         ]
         for node in ast.walk(tree):
             if isinstance(node, ast.Name):
@@ -410,5 +413,7 @@ def test_the_unused_finder_sees_an_unused_function(tmp_path):
     (tmp_path / "a.py").write_text(
         'def used():\n    """used() is not a use"""\n\n\ndef unused():\n    used()\n'
     )
-    (tmp_path / "b.py").write_text('NAMES = ("listed",)\n\n\ndef listed():\n    pass\n')
+    (tmp_path / "b.py").write_text(
+        'NAMES = ("listed",)\n\n\ndef listed():\n    pass\n\n\n@register\ndef registered():\n    pass\n'
+    )
     assert unused_definitions(tmp_path) == ["a.py: unused"]
