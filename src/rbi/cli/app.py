@@ -31,7 +31,7 @@ from rbi.cli.terminal import ReaderLeft, StdoutUnwritable, Terminated, say
 
 try:  # typer 0.26 and later vendor click, and export neither exception publicly
     from typer._click.exceptions import NoSuchOption, UsageError
-except ImportError:  # typer 0.12 to 0.25 run on click, whose public home these are
+except ImportError:  # typer 0.16 to 0.25 run on click, whose public home these are
     from click.exceptions import NoSuchOption, UsageError
 
 __all__ = ["COMMANDS", "app", "main"]
