@@ -105,7 +105,7 @@ def load(
     if isinstance(source, Mapping):
         spec_load.check_plain_data(dict(source), "<dict>")
         return _body(
-            lambda: (spec_load.body_from_raw(dict(source), "<dict>"), dict(source)),
+            lambda: (spec_load.body_from_raw(dict(source), "<dict>"), dict(source), None),
             "<dict>",
             allow_outside_paths,
         )
@@ -120,9 +120,9 @@ def load(
             "source", "is text, not a path (a str is always a path): read spec text with rbi.loads"
         )
 
-    def read() -> tuple[Any, Any]:
-        raw = spec_load.read_yaml(path)  # "-" reads standard input
-        return spec_load.body_from_raw(raw, spec_load.spec_label(path)), raw
+    def read() -> tuple[Any, Any, bytes | None]:
+        raw, data = spec_load.read_spec(path)  # "-" reads standard input
+        return spec_load.body_from_raw(raw, spec_load.spec_label(path)), raw, data
 
     return _body(read, spec_load.spec_label(path), allow_outside_paths)
 
@@ -141,26 +141,28 @@ def loads(text: str | bytes, *, allow_outside_paths: bool | None = None) -> Body
     if not isinstance(text, str):
         raise TypeError(f"text: expected YAML or JSON text (str or bytes), got {type(text).__name__}")
 
-    def read() -> tuple[Any, Any]:
+    def read() -> tuple[Any, Any, bytes | None]:
         raw = spec_load.parse_spec_text(spec_load.check_spec_text(text, "<string>"), "<string>")
-        return spec_load.body_from_raw(raw, "<string>"), raw
+        return spec_load.body_from_raw(raw, "<string>"), raw, None
 
     return _body(read, "<string>", allow_outside_paths)
 
 
-def _body(read: Callable[[], tuple[Any, Any]], label: str, allow_outside_paths: bool | None) -> Body:
-    """The `Body` ``read()`` gives (loaded body, parsed spec); a `SpecError` whose line starts
-    with ``label`` gets it as its ``file``."""
+def _body(
+    read: Callable[[], tuple[Any, Any, bytes | None]], label: str, allow_outside_paths: bool | None
+) -> Body:
+    """The `Body` ``read()`` gives (loaded body, parsed spec, the bytes of its file or None); a
+    `SpecError` whose line starts with ``label`` gets it as its ``file``."""
 
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     try:
         with outside_paths_allowed(allowed):
-            loaded, raw = read()
+            loaded, raw, data = read()
     except SpecError as exc:
         if exc.file is None and str(exc).startswith(label + ": "):
             exc.file = label
         raise
-    return Body(loaded, raw)
+    return Body(loaded, raw, data)
 
 
 def validate(
@@ -335,9 +337,10 @@ class Body(TableRepr):
     coordinates). A Body does not change; every method returns new arrays.
     """
 
-    def __init__(self, loaded: Any, raw: Any = None) -> None:
+    def __init__(self, loaded: Any, raw: Any = None, spec_bytes: bytes | None = None) -> None:
         self._loaded = loaded
         self._raw = raw
+        self._spec_bytes = spec_bytes  # the spec file's bytes as read (None: text, a dict, stdin)
         self.warnings: list[str] = list(loaded.warnings)
         """Warnings about the spec (units that look wrong for a spec without ``units:``: one
         line naming the part and the ``units:`` that would fit), the lines the CLI prints on
@@ -549,7 +552,7 @@ class Body(TableRepr):
         for parameter, value, known in (("length", length, LENGTH_UNITS), ("mass", mass, MASS_UNITS)):
             if value not in known:
                 raise ArgumentError(parameter, f"expected one of {', '.join(known)}, got {literal(value)}")
-        return Body(convert_body(self._loaded, length, mass), self._raw)
+        return Body(convert_body(self._loaded, length, mass), self._raw, self._spec_bytes)
 
     def moment_about_axis(
         self, axis: Sequence[float], about: Point = "com", axes: Sequence[tuple[str, float]] | None = None
@@ -1063,9 +1066,9 @@ def sweep(
     grid = (spin, tilt_deg, _variations(vary), runs, seed, duration, samples, rtol, gravity, tilt_axis)
     settings = SweepSettings(*grid, max_steps, workers, dask, mass_properties, check_budget, spin_axis)
     check_settings(settings)
-    path, raw = _spec_source(body)
+    path, raw, spec_bytes = _spec_source(body)
     target = None if out is None else _output(out, ("csv", "parquet"), path, "out")
-    study = Study(path, raw, settings, rows_printed=out is None)
+    study = Study(path, raw, settings, rows_printed=out is None, spec_bytes=spec_bytes)
     return SweepTable(study, study.run(target, resume, progress))
 
 
@@ -1076,16 +1079,17 @@ def _variations(vary: Any) -> tuple[tuple[str, Any], ...]:
     return tuple((str(path), value) for path, value in (vary or {}).items())
 
 
-def _spec_source(body: Any) -> tuple[str, Any]:
-    """`sweep`'s ``body`` as (path, parsed spec): a `Body`'s, or a spec file read (a sweep
-    validates each varied spec, not the file as it stands)."""
+def _spec_source(body: Any) -> tuple[str, Any, bytes | None]:
+    """`sweep`'s ``body`` as (path, parsed spec, the bytes of its file as read: None for text, a
+    dict or standard input): a `Body`'s, or a spec file read once (a sweep validates each varied
+    spec, not the file as it stands, and hashes those bytes for ``resume``)."""
     if isinstance(body, (str, os.PathLike)):
         # not at top level: `rbi audit` would load rbi.spec.load too
-        from rbi.spec.load import read_yaml
+        from rbi.spec.load import read_spec
 
         path = os.fsdecode(os.fspath(body))
-        return path, read_yaml(path)
-    return _loaded(body, "body").path, body._raw
+        return (path, *read_spec(path))
+    return _loaded(body, "body").path, body._raw, body._spec_bytes
 
 
 def audit(

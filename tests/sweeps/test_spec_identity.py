@@ -1,31 +1,90 @@
-"""The spec's identity a sweep records for --resume (its SHA-256) is read through the one capped
-reader of input files (rbi.files.safe.read_input_file): a spec that has become a FIFO or a
-device since it was loaded is never waited on or read without end; a regular spec is hashed by
-its bytes, as before."""
+"""The spec's identity a sweep records for --resume (its SHA-256) is of the bytes the loader read
+(rbi.spec.load.read_spec), those the rows come from: the file is not read a second time, so a
+spec edited, or replaced by a FIFO or a device, after it was loaded changes nothing. A regular
+spec is hashed by its file's bytes exactly, as before (sidecars already written still resume); a
+spec given as text, a dict or on standard input by its parsed form."""
 
 from __future__ import annotations
 
 import hashlib
+import io
 import json
 import os
+import sys
 import threading
 
 import pytest
 
 import rbi
-from rbi.sweeps.study import Study, SweepSettings
+from rbi.sweeps import store
+from rbi.sweeps.study import Study
 from tests.conftest import BODIES
 
 BOLTED = BODIES / "top_bolted.yaml"
-SETTINGS = SweepSettings(mass_properties=True, vary=(("parts.bolt.mass", [0.01, 0.02]),))
+VARY = {"parts.bolt.mass": [0.01, 0.02]}
 WAIT_SECONDS = 5.0
+
+
+class Stop(Exception):
+    pass
+
+
+def stop_before_the_end(done, total):
+    if done:
+        raise Stop  # the rows are written, the sweep not finished: its settings stay
+
+
+def recorded_identity(source, out) -> str:
+    """spec_sha256 of the settings a sweep of ``source`` writes beside ``out`` (stopped before
+    it ends, so they stay)."""
+    with pytest.raises(Stop):
+        rbi.sweep(source, mass_properties=True, vary=VARY, out=out, progress=stop_before_the_end)
+    return json.loads(store.settings_path(out).read_bytes())["spec_sha256"]
+
+
+def sha(data: bytes) -> str:
+    return hashlib.sha256(data).hexdigest()
+
+
+def parsed_form(raw) -> bytes:
+    return json.dumps(raw, sort_keys=True, default=str).encode()
+
+
+EDITED = BOLTED.read_bytes().replace(b"mass: 0.4", b"mass: 0.5", 1)
+
+
+@pytest.mark.parametrize("given", ["path", "body", "body in other units"])
+def test_a_spec_edited_after_loading_is_identified_by_the_bytes_loaded(tmp_path, monkeypatch, given):
+    """The spec file is edited between the loader's read and the writing of the settings (the
+    window rbi sweep FILE --out has): the recorded identity is of the bytes the rows come from,
+    so --resume refuses the edited file; it used to hash the edited file and go on."""
+    spec = tmp_path / "top.yaml"
+    spec.write_bytes(BOLTED.read_bytes())
+    assert EDITED != BOLTED.read_bytes()
+    source = str(spec) if given == "path" else rbi.load(spec)
+    if given == "body in other units":
+        source = source.in_units("mm", "g")
+    real = Study.store_settings
+
+    def edited_first(self):
+        spec.write_bytes(EDITED)
+        return real(self)
+
+    monkeypatch.setattr(Study, "store_settings", edited_first)
+    out = tmp_path / "s.csv"
+    assert recorded_identity(source, out) == sha(BOLTED.read_bytes())
+    monkeypatch.setattr(Study, "store_settings", real)
+    with pytest.raises(rbi.SpecError, match="cannot resume: .*spec_sha256"):
+        rbi.sweep(spec, mass_properties=True, vary=VARY, out=out, resume=True)
+    spec.write_bytes(BOLTED.read_bytes())
+    assert len(rbi.sweep(spec, mass_properties=True, vary=VARY, out=out, resume=True)) == 2
 
 
 @pytest.mark.parametrize("kind", ["fifo", "device"])
 def test_a_spec_replaced_after_loading_never_stops_a_sweep_with_an_output(tmp_path, kind):
     """rbi.load reads the spec; it is then replaced by a FIFO with no writer (or a link to
-    /dev/zero) before rbi.sweep hashes it for the output's settings. The sweep ends at once, its
-    identity the parsed spec's, as for a spec given as text."""
+    /dev/zero) before rbi.sweep writes the output's settings. The sweep ends at once, its
+    identity the bytes loaded."""
     spec = tmp_path / "top.yaml"
     spec.write_bytes(BOLTED.read_bytes())
     body = rbi.load(spec)
@@ -37,9 +96,7 @@ def test_a_spec_replaced_after_loading_never_stops_a_sweep_with_an_output(tmp_pa
     result: list = []
     call = threading.Thread(
         target=lambda: result.append(
-            rbi.sweep(
-                body, mass_properties=True, vary={"parts.bolt.mass": [0.01, 0.02]}, out=tmp_path / "s.csv"
-            )
+            rbi.sweep(body, mass_properties=True, vary=VARY, out=tmp_path / "s.csv")
         ),
         daemon=True,
     )
@@ -50,11 +107,30 @@ def test_a_spec_replaced_after_loading_never_stops_a_sweep_with_an_output(tmp_pa
             os.close(os.open(spec, os.O_WRONLY | os.O_NONBLOCK))
         pytest.fail(f"the sweep waited on (or read without end) the {kind} its spec became")
     assert len(result[0]) == 2 and result[0].failed == 0
-    parsed = json.dumps(body._raw, sort_keys=True, default=str).encode()
-    hashed = Study(str(spec), body._raw, SETTINGS, rows_printed=False).store_settings()["spec_sha256"]
-    assert hashed == hashlib.sha256(parsed).hexdigest()
+    assert recorded_identity(body, tmp_path / "again.csv") == sha(BOLTED.read_bytes())
 
 
-def test_a_regular_spec_is_hashed_by_its_bytes():
-    study = Study(str(BOLTED), rbi.load(BOLTED)._raw, SETTINGS, rows_printed=False)
-    assert study.store_settings()["spec_sha256"] == hashlib.sha256(BOLTED.read_bytes()).hexdigest()
+@pytest.mark.parametrize("given", ["path", "body"])
+def test_a_regular_spec_is_hashed_by_its_bytes_exactly(tmp_path, given):
+    """The file's bytes as they are (a byte-order mark and CRLF line ends included, which the
+    parsed text drops): the identity sidecars written before this change hold."""
+    spec = tmp_path / "top.yaml"
+    spec.write_bytes(b"\xef\xbb\xbf" + BOLTED.read_bytes().replace(b"\n", b"\r\n"))
+    source = str(spec) if given == "path" else rbi.load(spec)
+    assert recorded_identity(source, tmp_path / "s.csv") == sha(spec.read_bytes())
+    assert recorded_identity(BOLTED, tmp_path / "b.csv") == sha(BOLTED.read_bytes())
+
+
+@pytest.mark.parametrize("given", ["text", "dict", "stdin"])
+def test_a_spec_given_as_text_a_dict_or_on_stdin_is_hashed_by_its_parsed_form(tmp_path, monkeypatch, given):
+    text = BOLTED.read_text()
+    raw = rbi.load(BOLTED)._raw
+    monkeypatch.chdir(tmp_path)
+    if given == "text":
+        source = rbi.loads(text)
+    elif given == "dict":
+        source = rbi.load(raw)
+    else:
+        monkeypatch.setattr(sys, "stdin", io.StringIO(text))
+        source = "-"
+    assert recorded_identity(source, tmp_path / "s.csv") == sha(parsed_form(raw))

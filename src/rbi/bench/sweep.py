@@ -32,7 +32,7 @@ from rbi.files.output import output_target
 from rbi.runs.run import scene_of as body_scene
 from rbi.sim.api import simulate
 from rbi.sim.scene import initial_state
-from rbi.spec.load import load_body, read_yaml
+from rbi.spec.load import load_body, read_spec
 from rbi.sweeps.execute import available_cores
 from rbi.sweeps.plan import Grid
 from rbi.sweeps.study import Study, SweepSettings, check_settings
@@ -71,7 +71,8 @@ def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
         spin=Grid(*g["spin"]), tilt_deg=Grid(*g["tilt"]), duration=g["duration"], check_budget=False
     )
     check_settings(settings)
-    study = Study(str(spec), read_yaml(spec), settings, rows_printed=False)
+    raw, spec_bytes = read_spec(spec)
+    study = Study(str(spec), raw, settings, rows_printed=False, spec_bytes=spec_bytes)
     study.run(output_target(str(out), "--out", ("csv", "parquet"), inputs=[str(spec)]))
 
 

@@ -27,22 +27,23 @@ MAX_SPEC_BYTES = 64 * 1024 * 1024
 """Largest spec file rbi reads (64 MiB: about 8 × 10⁵ parts written one a line)."""
 
 
-def read_spec_text(path: str | Path) -> str:
-    """The text of a spec file; :class:`InputError` for a missing, non-regular, over-large,
-    empty, binary or non-UTF-8 file. Refused before reading: a device, a FIFO, a directory or a
-    file larger than :data:`MAX_SPEC_BYTES` (a file that grows while read is cut there too).
-    A UTF-8 byte-order mark at the start is dropped."""
+def read_spec_file(path: str | Path) -> tuple[str, bytes]:
+    """The text of a spec file, and the bytes it was read from (the file's, exactly);
+    :class:`InputError` for a missing, non-regular, over-large, empty, binary or non-UTF-8
+    file. Refused before reading: a device, a FIFO, a directory or a file larger than
+    :data:`MAX_SPEC_BYTES` (a file that grows while read is cut there too). A UTF-8 byte-order
+    mark at the start is dropped from the text."""
     path = str(path)
     try:
         data = read_input_file(path, MAX_SPEC_BYTES, "spec", hint=": put many points in a point_cloud file")
     except InputFileRefused as exc:
         raise InputError(f"{path}: {exc}") from None
-    return _spec_text(data, path)
+    return _spec_text(data, path), data
 
 
 def _spec_text(data: bytes, label: str) -> str:
     """Bytes read from a spec (file or standard input) as text, held to the rules of
-    :func:`read_spec_text`."""
+    :func:`read_spec_file`."""
     if len(data) > MAX_SPEC_BYTES:
         raise InputError(f"{label}: too large (more than {MAX_SPEC_BYTES:,} bytes)")
     if b"\x00" in data:
@@ -68,7 +69,7 @@ def spec_label(path: str | Path) -> str:
 
 def read_stdin_text() -> str:
     """One spec (YAML or JSON) read from standard input to its end, held to the rules of
-    :func:`read_spec_text` (UTF-8, at most :data:`MAX_SPEC_BYTES`, not empty), named
+    :func:`read_spec_file` (UTF-8, at most :data:`MAX_SPEC_BYTES`, not empty), named
     ``<stdin>`` in messages."""
 
     stream = getattr(sys.stdin, "buffer", None)
@@ -86,15 +87,24 @@ def read_yaml(path: str | Path) -> Any:
     """Parsed YAML of a spec file (see :mod:`rbi.spec.yaml_reader` for what is refused);
     :class:`InputError` for a missing, empty, binary or malformed file. ``-`` reads standard
     input (named ``<stdin>`` in messages)."""
+    return read_spec(path)[0]
+
+
+def read_spec(path: str | Path) -> tuple[Any, bytes | None]:
+    """:func:`read_yaml`'s parsed YAML, and the bytes it was parsed from: the file's, exactly as
+    read (None for standard input). What the spec's file held is read once: a sweep hashes these
+    bytes for ``--resume`` (:meth:`rbi.sweeps.study.Study.store_settings`), never the file again,
+    which may have changed since."""
     path = str(path)
     if path == STDIN:
-        return parse_spec_text(read_stdin_text(), STDIN_LABEL)
-    return parse_spec_text(read_spec_text(path), path)
+        return parse_spec_text(read_stdin_text(), STDIN_LABEL), None
+    text, data = read_spec_file(path)
+    return parse_spec_text(text, path), data
 
 
 def check_spec_text(text: str, label: str) -> str:
     """Spec text given in memory (not read from a file) held to the rules of
-    :func:`read_spec_text`: not empty, no NUL, at most :data:`MAX_SPEC_BYTES`; a leading
+    :func:`read_spec_file`: not empty, no NUL, at most :data:`MAX_SPEC_BYTES`; a leading
     byte-order mark dropped. ``label`` names it in messages (``<stdin>``, ``<string>``)."""
     if len(text) > MAX_SPEC_BYTES:
         raise InputError(f"{label}: too large (more than {MAX_SPEC_BYTES:,} bytes)")

@@ -22,12 +22,10 @@ import numpy as np
 
 from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.files.safe import InputFileRefused, read_input_file
 from rbi.runs.run import body_spin_axis, check_run_settings, check_tilt, spin_axis_value
 from rbi.sim.api import check_samples
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
-from rbi.spec.load import MAX_SPEC_BYTES
 from rbi.spec.units import STANDARD_GRAVITY_SI
 from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import store
@@ -101,15 +99,25 @@ def _nonzero(value: Any) -> bool:
 class Study:
     """The planned sweep of one parsed spec.
 
-    path: the spec (for messages, the files it names and the resume check); raw: its parsed
-    YAML; settings: :class:`SweepSettings` (checked). After construction: ``plan`` (the runs),
+    path: the spec (for messages and the files it names); raw: its parsed YAML; settings:
+    :class:`SweepSettings` (checked); spec_bytes: the bytes ``raw`` was parsed from, as the
+    loader read them (:func:`rbi.spec.load.read_spec`; None for a spec given as text, a dict or
+    on standard input), for the resume check. After construction: ``plan`` (the runs),
     ``job`` (:class:`~rbi.sweeps.runs.SweepJob`), ``nominal`` (the body at the spec's own
     values), ``columns`` (of each row). :class:`InputError` for a sweep that cannot be made.
     """
 
-    def __init__(self, path: str, raw: Any, settings: SweepSettings, *, rows_printed: bool = True) -> None:
+    def __init__(
+        self,
+        path: str,
+        raw: Any,
+        settings: SweepSettings,
+        *,
+        rows_printed: bool = True,
+        spec_bytes: bytes | None = None,
+    ) -> None:
 
-        self.path, self.raw, self.settings = path, raw, settings
+        self.path, self.raw, self.settings, self.spec_bytes = path, raw, settings, spec_bytes
         axes, varied = self._axes()
         self.plan = _plan(axes, settings, rows_printed)
         self.job = SweepJob(
@@ -213,14 +221,14 @@ class Study:
         return compute, job.chunk_size(self.settings.workers or available_cores())
 
     def store_settings(self) -> dict:
-        """What makes two sweeps the same, for ``--resume``: the spec's bytes, read through the
-        one capped reader of input files (or its parsed form when it was given as text or a
-        dict, or its file has since become something that reader refuses) and every setting."""
+        """What makes two sweeps the same, for ``--resume``: the spec's bytes, those the rows
+        come from (:attr:`spec_bytes`, as the loader read them: the file is not read again), or
+        its parsed form when it was given as text, a dict or on standard input; and every
+        setting."""
 
         s, job = self.settings, self.job
-        try:
-            spec_bytes = read_input_file(self.path, MAX_SPEC_BYTES, "spec")
-        except InputFileRefused:
+        spec_bytes = self.spec_bytes
+        if spec_bytes is None:
             spec_bytes = json.dumps(self.raw, sort_keys=True, default=str).encode()
         return {
             "spec_sha256": hashlib.sha256(spec_bytes).hexdigest(),
