@@ -24,6 +24,8 @@ from rbi.text import FORMULA_STARTS, csv_cell, csv_lines, csv_text_read
         (-1.5, "-1.5"),
         (1e-300, "1e-300"),
         (np.float64(0.1), "0.1"),  # numpy's repr would be "np.float64(0.1)"
+        (-0.0, "0.0"),  # zero as the CLI's tables and JSON write it
+        (np.float64(-0.0), "0.0"),
         (7, 7),
         ("wheel", "wheel"),
         ("-0.5", "-0.5"),  # text that reads as a number is left alone

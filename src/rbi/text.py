@@ -89,16 +89,15 @@ FORMULA_STARTS = ("=", "+", "-", "@", "\t", "\r")
 
 
 def csv_cell(value: Any) -> Any:
-    """One CSV cell, the one rule for every CSV rbi writes: empty for None or NaN; a float at
-    full precision (Python's shortest round-trip repr); text made inert for spreadsheets (one
-    starting with ``=``, ``+``, ``-``, ``@``, a tab or a carriage return, such as
-    ``=HYPERLINK(...)``, gets a leading ``'``; text that reads as a number, ``-0.5``, is left
-    alone) with hidden characters escaped (:func:`visible`). Other values (ints) pass as they
-    are. ``-0.0`` is kept (``-0.0``): the CLI's CSV (:func:`rbi.cli.render.plain`) and the
-    trajectory CSV (:func:`rbi.runs.run.trajectory_csv`) make it ``0.0`` before they write.
-    :func:`csv_text_read` is its inverse for text cells."""
+    """One CSV cell, the one rule for every CSV rbi writes (the CLI's ``--format csv``, the
+    sweep's rows file, the trajectory CSV): empty for None or NaN; a float at full precision
+    (Python's shortest round-trip repr), ``-0.0`` written ``0.0`` as the CLI's tables and JSON
+    write it; text made inert for spreadsheets (one starting with ``=``, ``+``, ``-``, ``@``, a tab
+    or a carriage return, such as ``=HYPERLINK(...)``, gets a leading ``'``; text that reads as
+    a number, ``-0.5``, is left alone) with hidden characters escaped (:func:`visible`). Other
+    values (ints) pass as they are. :func:`csv_text_read` is its inverse for text cells."""
     if isinstance(value, float):
-        return "" if value != value else repr(float(value))
+        return "" if value != value else repr(float(value) + 0.0)  # + 0.0: -0.0 is 0.0
     if isinstance(value, str):
         if value.startswith(FORMULA_STARTS) and not _is_number(value):
             value = "'" + value

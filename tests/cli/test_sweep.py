@@ -185,33 +185,72 @@ def test_parquet_rows_equal_csv_rows(tmp_path):
         assert p["max_tilt_deg"] == float(c["max_tilt_deg"]) and p["run"] == int(c["run"])
 
 
-def test_interrupted_sweep_keeps_finished_runs_and_resume_completes_it(tmp_path, monkeypatch):
+def interrupt_after(monkeypatch, chunks: int, chunk_size: int):
+    """Make the next sweep stop with Ctrl-C after ``chunks`` chunks of ``chunk_size`` runs;
+    returns what puts the runs back."""
     from rbi.sweeps import runs
 
+    real, calls = runs.run_chunk, []
+
+    def interrupted(job, a, b, threads=0):
+        calls.append(a)
+        if len(calls) > chunks:
+            raise KeyboardInterrupt
+        return real(job, a, b, threads)
+
+    monkeypatch.setattr(runs, "run_chunk", interrupted)
+    monkeypatch.setattr("rbi.sweeps.runs.SweepJob.chunk_size", lambda self, threads: chunk_size)
+    return lambda: monkeypatch.setattr(runs, "run_chunk", real)
+
+
+def test_interrupted_sweep_keeps_finished_runs_and_resume_completes_it(tmp_path, monkeypatch):
     args = [BOLTED, "--spin", "150:250:40", "--duration", "0.2", "--workers", "1"]
     reference = tmp_path / "all.csv"
     assert rbi("sweep", *args, "--out", reference).returncode == 0
     out = tmp_path / "part.csv"
-    real, calls = runs.run_chunk, []
-
-    def interrupted_after_two_chunks(job, a, b, threads=0):
-        calls.append(a)
-        if len(calls) > 2:
-            raise KeyboardInterrupt
-        return real(job, a, b, threads)
-
-    monkeypatch.setattr(runs, "run_chunk", interrupted_after_two_chunks)
-    monkeypatch.setattr("rbi.sweeps.runs.SweepJob.chunk_size", lambda self, threads: 8)
+    restore = interrupt_after(monkeypatch, 2, 8)
     proc = rbi("sweep", *args, "--out", out)
     assert proc.returncode == 130 and "--resume" in proc.stderr
     kept = rows_of(out)
     assert 0 < len(kept) < 40 and [int(r["run"]) for r in kept] == list(range(len(kept)))
     with open(out, "a") as handle:  # what a kill in the middle of a write leaves: part of the next row
         handle.write(f"{len(kept)},150.0,0.0,1.2")
-    monkeypatch.setattr(runs, "run_chunk", real)
+    restore()
     proc = rbi("sweep", *args, "--out", out, "--resume")
     assert proc.returncode == 0, proc.stderr
     assert out.read_text() == reference.read_text()
+
+
+def test_the_rows_file_writes_negative_zero_as_format_csv_does(tmp_path):
+    """One CSV cell rule: -0.0 is 0.0 in the rows file as on stdout (the file had -0.0)."""
+    args = [TOP, "--spin", "-0", "--tilt", "-0", "--duration", "0.2"]
+    out = tmp_path / "x.csv"
+    assert rbi("sweep", *args, "--out", out).returncode == 0
+    printed = rbi("sweep", *args, "--format", "csv")
+    assert printed.returncode == 0, printed.stderr
+    assert out.read_text() == printed.stdout
+    assert rows_of(out)[0]["spin"] == rows_of(out)[0]["tilt_deg"] == "0.0"
+
+
+def test_a_rows_file_holding_negative_zero_cells_resumes(tmp_path, monkeypatch):
+    """A rows file written before -0.0 was written 0.0 ('-0.0' cells) is resumed: its cells are
+    read back as numbers, -0.0 == 0.0, and kept as they are."""
+    args = [TOP, "--spin", "-0", "--tilt", "0:1:12", "--duration", "0.2", "--workers", "1"]
+    reference = tmp_path / "all.csv"
+    assert rbi("sweep", *args, "--out", reference).returncode == 0
+    out = tmp_path / "part.csv"
+    restore = interrupt_after(monkeypatch, 1, 4)
+    assert rbi("sweep", *args, "--out", out).returncode == 130
+    header, *kept = out.read_text().splitlines(keepends=True)
+    assert len(kept) == 4 and all(line.split(",")[1] == "0.0" for line in kept)
+    old = [line.replace(",0.0,", ",-0.0,", 1) for line in kept]  # the spin cell as it was written
+    out.write_text(header + "".join(old))
+    restore()
+    proc = rbi("sweep", *args, "--out", out, "--resume")
+    assert proc.returncode == 0, proc.stderr
+    assert out.read_text() == reference.read_text().replace(
+        "".join(reference.read_text().splitlines(keepends=True)[1:5]), "".join(old)
+    )
 
 
 def test_resume_with_other_settings_is_refused(tmp_path, monkeypatch):

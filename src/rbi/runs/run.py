@@ -318,5 +318,5 @@ def trajectory_csv(columns: dict[str, np.ndarray]) -> str:
 
     table = np.column_stack([np.asarray(columns[name], dtype=float) for name in CSV_COLUMNS])
     lines = [",".join(CSV_COLUMNS)]
-    lines.extend(",".join(map(csv_cell, row)) for row in (table + 0.0).tolist())  # + 0.0: -0.0 as 0.0
+    lines.extend(",".join(map(csv_cell, row)) for row in table.tolist())
     return "\n".join(lines) + "\n"
