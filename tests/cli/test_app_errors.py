@@ -30,3 +30,13 @@ def test_no_arguments_prints_the_command_list():
     assert proc.returncode == 0
     for command in ("inertia", "principal", "momentum", "simulate"):
         assert command in proc.stdout
+
+
+def test_a_missing_choice_option_lists_its_choices_on_the_one_line():
+    # click lays the choices out one per line; escaped, that read 'Choose from:\n\turdf,\n\tmjcf'
+    proc = run_rbi("export", TOP)
+    assert proc.returncode == 2
+    assert (
+        proc.stderr
+        == "rbi: Missing option '--to' / '-t'. Choose from: urdf, mjcf, sdf (see `rbi export --help`)\n"
+    )

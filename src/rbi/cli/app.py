@@ -202,7 +202,8 @@ def usage_message(error) -> str:
             if name.startswith("-")
         ]
         return f"no such option: {error.option_name}{did_you_mean(error.option_name, options)}"
-    return error.format_message()
+    # click lays a list of choices out one per line ("Choose from:\n\turdf,\n\tmjcf"): one line here
+    return error.format_message().replace(":\n\t", ": ").replace(",\n\t", ", ")
 
 
 def _take_flag(argv: list[str], flag: str) -> bool:
