@@ -12,6 +12,10 @@ The rules (see docs/security.md):
   so a reader never sees half a file and a failed or interrupted run leaves nothing behind.
   A new file gets the ordinary permissions (``0666`` less the umask); a replaced file keeps
   its mode.
+- One run writes a file at a time: the write and the rename hold the lock ``rbi sweep`` holds
+  while it streams rows there (:mod:`rbi.files.lock`, the file ``.NAME.rbi-lock``, removed
+  after). A run on an output another run is writing is refused when the path is checked, before
+  any work, or at the latest before it writes.
 
 Every refusal is an :class:`rbi.errors.InputError` (exit 2, one line).
 """
@@ -28,6 +32,7 @@ from dataclasses import dataclass
 from typing import IO
 
 from rbi.errors import InputError
+from rbi.files import lock
 from rbi.files.safe import NAME_MAX, remove, replacing
 from rbi.files.safe import kind as _kind
 from rbi.files.safe import reason as _reason
@@ -101,6 +106,7 @@ def output_target(
                 f"{option}: {shown}: is an input of this run ({_shown(source)}); "
                 "rbi never overwrites its input"
             )
+    lock.check_free(real, f"{option}: {shown}")
     return OutputTarget(path, real, option, extension)
 
 
@@ -124,11 +130,15 @@ def check_distinct(targets: Sequence[OutputTarget | None]) -> None:
 def atomic_path(target: OutputTarget) -> Iterator[str]:
     """A temporary path beside the target for a writer that wants a file name (matplotlib,
     pillow); renamed over the target when the block ends without an exception, removed
-    otherwise."""
+    otherwise. The target's lock is held throughout (InputError, exit 2, when another run
+    holds it; kept as it is when this thread holds it: a sweep writing its own output)."""
     if target.is_stdout:
         raise ValueError("atomic_path needs a file target")
     what = f"{target.option}: {_shown(target.given)}"
-    with replacing(target.path, what, suffix="." + target.format, mode=_mode_for(target.path)) as (_, temp):
+    with (
+        lock.writing(target.path, what),
+        replacing(target.path, what, suffix="." + target.format, mode=_mode_for(target.path)) as (_, temp),
+    ):
         yield temp  # the writer opens the file by its name
 
 
