@@ -71,6 +71,9 @@ if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's
 # only to be offered are imported `as` themselves, which tells linters they are re-exported
 __all__ = [*PUBLIC, *CLI_TOOLS]
 
+SPEC_TEXT_LABELS = ("<stdin>", "<string>", "<dict>")
+"""How a spec that is no file is named (`Body.path`): read from standard input, text, a dict."""
+
 Point = str | Sequence[float] | np.ndarray
 """A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates
 (spec length unit)."""
@@ -664,10 +667,26 @@ class Body(TableRepr):
             f"inertia about the centre of mass, body axes{spec_units}"
         )
         if name is None:
-            text = self.path in ("<stdin>", "<string>", "<dict>")
+            text = self.path in SPEC_TEXT_LABELS
             name = self.name or ("body" if text else Path(self.path).stem)
         si = self.in_units("m", "kg").mass_properties
         return export_xml(to, si, name=name, document=document, diagonal=diagonal, comment=comment)
+
+    def export_warnings(self) -> list[str]:
+        """The warnings that go with `inertial_xml`, as ``rbi export`` prints them on stderr and
+        puts in JSON as ``"warnings"``: the body's `warnings`, then, when its inertia about the
+        centre of mass has a zero principal moment (point masses only, a thin rod), one line
+        naming the file: simulators such as MuJoCo refuse a moving body without rotational
+        inertia."""
+
+        moments = np.linalg.eigvalsh(np.asarray(self.in_units("m", "kg").mass_properties.inertia_about_com))
+        if moments[0] > 1e-12 * max(moments[-1], 0.0):
+            return list(self.warnings)
+        return [
+            *self.warnings,
+            f"{self.path}: the inertia has a zero principal moment (a point mass or thin rod); "
+            "simulators such as MuJoCo refuse a moving body without rotational inertia",
+        ]
 
     def __repr__(self) -> str:
         units = self.units

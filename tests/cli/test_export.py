@@ -133,3 +133,33 @@ def test_names_with_control_characters_give_well_formed_xml_and_reach_the_termin
     assert not any(ord(c) < 32 and c not in "\n\t" for c in proc.stdout)
     root = ET.fromstring(proc.stdout)  # well formed, the leading comment included
     assert "arm\\x1b]0;title\\x07" in ET.tostring(root, encoding="unicode")
+
+
+POINT_MASS = (
+    "units: {length: m, mass: kg}\nparts:\n  - {name: p, shape: point, mass: 1, position: [0, 0, 0]}\n"
+)
+ZERO_MOMENT = (
+    "the inertia has a zero principal moment (a point mass or thin rod); "
+    "simulators such as MuJoCo refuse a moving body without rotational inertia"
+)
+
+
+@pytest.mark.parametrize("to", ["urdf", "mjcf", "sdf"])
+def test_the_zero_moment_warning_is_in_json_as_table_output_prints_it(write_spec, to):
+    """One warning path: JSON's "warnings" holds the lines table and CSV output print on stderr
+    (the zero-moment line was printed on stderr only, naming no file, and JSON said [])."""
+    path = write_spec(POINT_MASS, "pt.yaml")
+    as_json = run_rbi_inprocess("export", path, "--to", to, "--format", "json")
+    assert as_json.returncode == 0, as_json.stderr
+    warnings = json.loads(as_json.stdout)["warnings"]
+    assert warnings == [f"{path}: {ZERO_MOMENT}"]
+    assert as_json.stderr == ""
+    for form in ("table", "csv"):
+        proc = run_rbi_inprocess("export", path, "--to", to, "--format", form)
+        assert proc.returncode == 0, proc.stderr
+        assert proc.stderr.splitlines() == [f"rbi: warning: {w}" for w in warnings]
+
+
+def test_a_body_with_three_moments_has_no_export_warning():
+    proc = run_rbi_inprocess("export", BODIES / "top.yaml", "--to", "mjcf", "--format", "json")
+    assert json.loads(proc.stdout)["warnings"] == [] and proc.stderr == ""

@@ -7,7 +7,6 @@ from enum import Enum
 from pathlib import Path
 from typing import Annotated
 
-import numpy as np
 import typer
 
 from rbi import api
@@ -68,33 +67,22 @@ def export(
     props = body.mass_properties
     name = body.name or ("body" if file == "-" else Path(file).stem)
     xml = source.inertial_xml(to.value, name=name, document=document, diagonal=diagonal)
-    _warn_if_singular(props.inertia_about_com)
+    warnings = source.export_warnings()
     result = {
         "name": body.name,
         "to": to.value,
         "units": body.units,
-        "warnings": list(source.warnings),
+        "warnings": warnings,
         "mass": props.mass,
         "center_of_mass": props.center_of_mass,
         "inertia": props.inertia_about_com,
         "xml": xml,
     }
     if format is not OutputFormat.json:
-        say_warnings(source.warnings)
+        say_warnings(warnings)
     if format is OutputFormat.table:
         sys.stdout.write(xml)
     elif format is OutputFormat.csv:
         sys.stdout.write(to_csv([{k: v for k, v in result.items() if k != "xml"}]))
     else:
         emit(format.value, result, lambda: None)
-
-
-def _warn_if_singular(inertia) -> None:
-
-    moments = np.linalg.eigvalsh(np.asarray(inertia, dtype=float))
-    if moments[0] <= 1e-12 * max(moments[-1], 0.0):
-        print(
-            "rbi: warning: the inertia has a zero principal moment (a point mass or thin rod); "
-            "simulators such as MuJoCo refuse a moving body without rotational inertia",
-            file=sys.stderr,
-        )
