@@ -355,6 +355,14 @@ class Body(TableRepr):
         return self._loaded.path
 
     @property
+    def files_read(self) -> list[str]:
+        """The files the body was read from, which no output of a run on it may replace: the
+        spec's path (unless it came from text, a dict or standard input), then each file the
+        spec names (meshes, STEP files, the point cloud) as an absolute path."""
+        spec = [] if self.path in SPEC_TEXT_LABELS else [self.path]
+        return [*spec, *self._loaded.files]
+
+    @property
     def name(self) -> str | None:
         """The spec's ``name``, or None."""
         return self._loaded.name
@@ -788,7 +796,7 @@ class Trajectory(TableRepr):
         )
         plot_simulation(
             self.columns(),
-            _output(path, ("png", "svg", "pdf"), body.path),
+            _output(path, ("png", "svg", "pdf"), body),
             name=body.name or body.path,
             omega0=self.summary["initial"]["omega"],
             nudge_deg=self.summary["initial"]["nudge_deg"],
@@ -1086,7 +1094,8 @@ def sweep(
     settings = SweepSettings(*grid, max_steps, workers, dask, mass_properties, check_budget, spin_axis)
     check_settings(settings)
     path, raw, spec_bytes = _spec_source(body)
-    target = None if out is None else _output(out, ("csv", "parquet"), path, "out")
+    read = body if isinstance(body, Body) else path  # a Body: every file it was read from
+    target = None if out is None else _output(out, ("csv", "parquet"), read, "out")
     study = Study(path, raw, settings, rows_printed=out is None, spec_bytes=spec_bytes)
     return SweepTable(study, study.run(target, resume, progress))
 
@@ -1351,16 +1360,24 @@ Destination = str | os.PathLike[str] | OutputTarget
 
 
 def _output(
-    path: Destination, formats: tuple[str, ...], read: str | os.PathLike[str], name: str = "path"
+    path: Destination,
+    formats: tuple[str, ...],
+    read: str | os.PathLike[str] | Body,
+    name: str = "path",
 ) -> OutputTarget:
     """``path`` checked as an output of one of ``formats`` (its extension) by rbi's one checked
-    writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file).
-    ArgumentError naming the parameter ``name`` when it may not be written there."""
+    writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file), nor for a
+    `Body` any file it was read from (`Body.files_read`: a target checked before the body was
+    loaded is checked against them now, its refusal naming its option). ArgumentError naming
+    the parameter ``name`` when it may not be written there."""
+    reads = read.files_read if isinstance(read, Body) else [os.fsdecode(os.fspath(read))]
     if isinstance(path, OutputTarget):
+        if isinstance(read, Body) and not path.is_stdout:
+            output_target(path.given, path.option, (path.format,), inputs=reads)
         return path
     given = _path(path, name)
     try:
-        return output_target(given, name, formats, inputs=[os.fsdecode(os.fspath(read))])
+        return output_target(given, name, formats, inputs=reads)
     except ArgumentError:
         raise
     except SpecError as exc:
@@ -1380,7 +1397,7 @@ def show(body: Body, path: Destination, *, title: str | None = None) -> int:
     from rbi.viz.still import draw_body  # matplotlib and the page's template load only to draw
 
     loaded = _loaded(body, "body")
-    return draw_body(loaded, _output(path, ("png", "svg", "html"), body.path), title)
+    return draw_body(loaded, _output(path, ("png", "svg", "html"), body), title)
 
 
 @dataclass(frozen=True)
@@ -1424,8 +1441,9 @@ def animate(
     # not at top level: `rbi inertia` would load rbi.runs.run too
     from rbi.runs.run import prepare_run
 
-    target = _output(path, ("html", "gif"), body.path)
-    prepared = prepare_run(_loaded(body, "body"), **run)
+    loaded = _loaded(body, "body")
+    target = _output(path, ("html", "gif"), body)
+    prepared = prepare_run(loaded, **run)
     frames, tilt = write_animation(prepared, target, speed=speed, fps=fps, progress=progress)
     return Animation(target.given, frames, tilt)
 

@@ -110,7 +110,7 @@ def simulate(
         format = OutputFormat.csv  # the trajectory is what goes to standard output
     settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
     settings |= dict(duration=duration, method=method, rtol=rtol, max_steps=max_steps)
-    body, run = _run(file, settings, samples, error_estimate, format)
+    body, run = _run(file, settings, samples, error_estimate, format, (out_target, plot_target))
     trajectory_csv = run.to_csv() if out is not None or format == OutputFormat.csv else ""
     result = dict(run.summary)
     if out is not None and not out_target.is_stdout:
@@ -141,10 +141,15 @@ def _targets(file: str, out: str | None, plot: str | None):
     return out_target, plot_target
 
 
-def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: OutputFormat):
-    """Load the spec and simulate it, with a progress bar on a terminal: ``(body, trajectory)``."""
+def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: OutputFormat, targets):
+    """Load the spec and simulate it, with a progress bar on a terminal: ``(body, trajectory)``.
+    Before simulating, the output ``targets`` are checked again, against every file the body
+    was read from (a point cloud, a mesh): rbi never overwrites its input."""
 
     body = api.load(file)
+    for target in targets:
+        if target is not None and not target.is_stdout:
+            output_target(target.given, target.option, (target.format,), inputs=body.files_read)
     with progress_bar("simulating", stdout=True, delay=0.5, show=format == OutputFormat.table) as progress:
         return body, api.simulate(
             body, samples=samples, error_estimate=error_estimate, progress=progress, **settings

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from typing import Any
@@ -46,6 +47,9 @@ class LoadedBody:
     spec: Any = field(default=None, repr=False)
     warnings: list[str] = field(default_factory=list)
     """Lines about the spec a user should see (units that look wrong: :mod:`rbi.spec.plausibility`)."""
+    files: tuple[str, ...] = ()
+    """The files the spec names that were read (mesh and STEP parts, the point cloud), each once,
+    as absolute paths: what no output of a run on this body may replace."""
 
     @property
     def units(self) -> dict[str, str]:
@@ -368,4 +372,15 @@ def body_from_spec(spec: models.BodySpec, path: str):
         spec=spec,
         spin_axis=None if spec.spin_axis is None else np.asarray(spec.spin_axis, dtype=float),
         warnings=unit_warnings(spec, path) + [f"{path}: {note}" for note in mesh_notes(spec)],
+        files=files_named(spec, path),
     )
+
+
+def files_named(spec: models.BodySpec, path: str) -> tuple[str, ...]:
+    """The files the spec at ``path`` names (mesh and STEP parts' ``file``, then the point
+    cloud's), each once, as absolute paths found beside the spec as they were read."""
+    named = [part.file for part in spec.parts if isinstance(part, (models.MeshPart, models.StepPart))]
+    if spec.point_cloud is not None:
+        named.append(spec.point_cloud.file)
+    found = (spec_relative_file(path, file, f"{path}: file: {file}") for file in named)
+    return tuple(dict.fromkeys(os.path.abspath(each) for each in found))
