@@ -5,15 +5,18 @@ from __future__ import annotations
 
 import contextlib
 import logging
+import math
 import os
+import queue
 import re
 import shutil
 import signal
 import tempfile
 import threading
+import time
 from collections import deque
 from collections.abc import Callable
-from concurrent.futures import ThreadPoolExecutor
+from concurrent.futures import Future
 from typing import Any
 
 from rbi.errors import ArgumentError, InputError, literal
@@ -21,10 +24,51 @@ from rbi.errors import ArgumentError, InputError, literal
 Rows = list[list[Any]]
 
 
-def chunk_ranges(start: int, stop: int, size: int):
-    """``(a, b)`` pairs covering ``start .. stop-1`` in steps of ``size``."""
-    for a in range(start, stop, size):
-        yield a, min(stop, a + size)
+CHUNK_SECONDS = 1.0
+"""About how long one chunk of simulated runs should take, wall time. The kernel hands back a
+chunk's rows only when its last run ends, so this bounds how long finished runs wait before
+they reach the output, and how long a stopped sweep waits for the chunks in flight."""
+
+STOP_SECONDS = 3.0
+"""How long a stopped sweep (Ctrl-C, SIGTERM, an exception from the progress callback) waits
+for the chunks in flight to keep their rows; a chunk not done by then is left to its thread
+(a daemon: it does not hold the process; in a process that goes on, such as a notebook calling
+:func:`rbi.sweep`, it ends in the background and its rows are dropped) and its runs are
+computed by ``--resume``."""
+
+
+class Chunks:
+    """The ranges ``(a, b)`` of runs ``start .. stop-1``, each sized to take about
+    :data:`CHUNK_SECONDS` of wall time: by ``run_seconds`` (an estimate of the wall time one
+    run adds to a chunk, None when there is none) at first, then by what the chunks took
+    (:meth:`took`: the latest chunk's seconds per run, growing at most twofold a chunk);
+    never more than ``most`` runs (the memory bound, and the size that keeps short runs
+    quick), nor fewer than ``least`` (enough to keep the cores busy) unless ``most`` is."""
+
+    def __init__(
+        self, start: int, stop: int, most: int, least: int = 1, run_seconds: float | None = None
+    ) -> None:
+        self.start, self.stop, self.most, self.least = start, stop, max(1, most), max(1, least)
+        self.run_seconds, self._grown = run_seconds, self.most
+
+    def size(self) -> int:
+        """Runs in the next chunk."""
+        if self.run_seconds is None:
+            return self.most
+        timed = CHUNK_SECONDS / self.run_seconds if self.run_seconds > 0 else math.inf
+        return min(self.most, max(self.least, min(self._grown, int(min(timed, 2**62)))))
+
+    def __iter__(self):
+        a = self.start
+        while a < self.stop:
+            b = min(self.stop, a + self.size())
+            yield a, b
+            a = b
+
+    def took(self, runs: int, seconds: float) -> None:
+        """A chunk of ``runs`` runs took ``seconds`` (wall time, from its start to its rows)."""
+        if runs > 0 and math.isfinite(seconds) and seconds >= 0:
+            self.run_seconds, self._grown = seconds / runs, 2 * runs
 
 
 def available_cores() -> int:
@@ -35,31 +79,144 @@ def available_cores() -> int:
 
 
 def run_local(
-    compute: Callable[[int, int, int], Rows], ranges, threads: int, on_rows: Callable[[Rows], None]
+    compute: Callable[[int, int, int], Rows], ranges: Chunks, threads: int, on_rows: Callable[[Rows], None]
 ) -> None:
     """Each range through ``compute(a, b, threads)`` (whose kernel call spreads the runs over
     ``threads`` cores). Two chunks are in flight, so that one chunk's Python work (building
-    bodies, summarising) overlaps the other's integration; rows are delivered in order."""
+    bodies, summarising) overlaps the other's integration; rows are delivered in order. Stopped
+    (Ctrl-C, SIGTERM), the chunks not started are dropped and those in flight kept as
+    :func:`_in_order` says."""
     threads = usable_workers(threads)
-    with ThreadPoolExecutor(max_workers=2, thread_name_prefix="rbi-sweep") as pool:
-        pending: deque = deque()
-        try:
-            _in_order(lambda a, b: pool.submit(compute, a, b, threads), ranges, 2, on_rows, pending)
-        finally:
-            for future in pending:
-                future.cancel()
+    workers = _Workers(2)
+    try:
+        _in_order(
+            lambda a, b: workers.submit(_timed, compute, a, b, threads), ranges, 2, on_rows, workers.drop
+        )
+    finally:
+        workers.close()
 
 
-def _in_order(submit: Callable[[int, int], Any], ranges, in_flight: int, on_rows, pending=None) -> None:
-    """Each range ``(a, b)`` submitted as ``submit(a, b)`` (a future), at most ``in_flight`` at
-    once (held in ``pending``, a deque); their rows delivered to ``on_rows`` in run order."""
-    pending = deque() if pending is None else pending
-    for a, b in ranges:
-        pending.append(submit(a, b))
-        if len(pending) >= in_flight:
-            on_rows(pending.popleft().result())
+class _Workers:
+    """Threads that run submitted calls in the order given, each returning a
+    :class:`~concurrent.futures.Future`. Daemon threads: a chunk still integrating when the
+    sweep is stopped does not keep the process from exiting (the kernel cannot be stopped
+    in the middle of a call)."""
+
+    def __init__(self, count: int) -> None:
+        self._queue: queue.SimpleQueue = queue.SimpleQueue()
+        self._threads = [
+            threading.Thread(target=self._work, name="rbi-sweep", daemon=True) for _ in range(count)
+        ]
+        for thread in self._threads:
+            thread.start()
+
+    def submit(self, call: Callable, *args) -> Future:
+        future: Future = Future()
+        self._queue.put((future, call, args))
+        return future
+
+    def _work(self) -> None:
+        while (item := self._queue.get()) is not None:
+            future, call, args = item
+            if not future.set_running_or_notify_cancel():
+                continue  # dropped before it started
+            try:
+                future.set_result(call(*args))
+            except BaseException as exc:  # noqa: BLE001 - handed to the caller through the future
+                future.set_exception(exc)
+
+    def drop(self) -> None:
+        """Cancel every call not started yet."""
+        with contextlib.suppress(queue.Empty):
+            while True:
+                item = self._queue.get_nowait()
+                if item is not None:
+                    item[0].cancel()
+
+    def close(self) -> None:
+        """No more calls: the threads end after the ones running (not waited for)."""
+        self.drop()
+        for _ in self._threads:
+            self._queue.put(None)
+
+
+def _timed(compute: Callable[[int, int, int], Rows], a: int, b: int, threads: int) -> tuple[Rows, float]:
+    """``compute(a, b, threads)`` and the wall time it took."""
+    started = time.perf_counter()
+    rows = compute(a, b, threads)
+    return rows, time.perf_counter() - started
+
+
+def _in_order(
+    submit: Callable[[int, int], Any], ranges: Chunks, in_flight: int, on_rows, drop=lambda: None
+) -> None:
+    """Each range ``(a, b)`` submitted as ``submit(a, b)`` (a future of ``(rows, seconds)``), at
+    most ``in_flight`` at once; their rows delivered to ``on_rows`` in run order, and their
+    times to ``ranges`` (:meth:`Chunks.took`). Stopped while it waits or delivers
+    (KeyboardInterrupt, SystemExit: Ctrl-C, SIGTERM, the progress callback), ``drop()`` cancels
+    what has not started, the chunks in flight that end within :data:`STOP_SECONDS` are
+    delivered still, in order, and the stop goes on up."""
+    pending: deque = deque()
+    try:
+        for a, b in ranges:
+            pending.append((b - a, submit(a, b)))
+            if len(pending) >= in_flight:
+                _deliver(pending, ranges, on_rows)
+        while pending:
+            _deliver(pending, ranges, on_rows)
+    except (KeyboardInterrupt, SystemExit):
+        drop()
+        _keep_in_flight(pending, ranges, on_rows)
+        raise
+
+
+def _deliver(pending: deque, ranges: Chunks, on_rows) -> None:
+    """The first pending chunk's rows to ``on_rows`` once it ends, with Ctrl-C and SIGTERM held
+    while they are delivered: a stop never leaves a finished chunk half written or untold."""
+    runs, future = pending[0]
+    rows, seconds = future.result()
+    with _signals_held():
+        pending.popleft()
+        ranges.took(runs, seconds)
+        on_rows(rows)
+
+
+def _keep_in_flight(pending: deque, ranges: Chunks, on_rows) -> None:
+    """After a stop: deliver the pending chunks, in order, while each ends within
+    :data:`STOP_SECONDS` of the stop and without error (a second stop ends the wait)."""
+    deadline = time.monotonic() + STOP_SECONDS
     while pending:
-        on_rows(pending.popleft().result())
+        try:
+            failed = pending[0][1].exception(timeout=max(0.0, deadline - time.monotonic()))
+        except Exception:  # noqa: BLE001 - not done in time, or cancelled: the rest is not kept
+            return
+        if failed is not None:
+            return
+        _deliver(pending, ranges, on_rows)
+
+
+@contextlib.contextmanager
+def _signals_held():
+    """SIGINT and SIGTERM, where Python handles them (a callable handler), recorded instead of
+    handled in the block, then handed to their handlers after it (in the main thread only:
+    nowhere else does Python run handlers or allow setting them)."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    caught: list[int] = []
+    held: dict[int, Callable] = {}
+    try:
+        for number in (signal.SIGINT, signal.SIGTERM):
+            handler = signal.getsignal(number)
+            if callable(handler):
+                held[number] = handler
+                signal.signal(number, lambda signum, _frame: caught.append(signum))
+        yield
+    finally:
+        for number, handler in held.items():
+            signal.signal(number, handler)
+        for number in caught:
+            held[number](number, None)
 
 
 CONNECT_SECONDS = 10.0
@@ -75,7 +232,7 @@ def usable_workers(requested: int | None) -> int:
 
 def run_dask(
     compute: Callable[[int, int, int], Rows],
-    ranges,
+    ranges: Chunks,
     address: str,
     on_rows: Callable[[Rows], None],
     workers: int | None = None,
@@ -247,5 +404,5 @@ def _quietly_close(client, cluster) -> None:
         quiet.setLevel(level)
 
 
-def _call(compute, a: int, b: int) -> Rows:
-    return compute(a, b, 1)
+def _call(compute, a: int, b: int) -> tuple[Rows, float]:
+    return _timed(compute, a, b, 1)

@@ -29,7 +29,7 @@ from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.units import STANDARD_GRAVITY_SI
 from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import store
-from rbi.sweeps.execute import check_address
+from rbi.sweeps.execute import Chunks, check_address
 from rbi.sweeps.plan import MAX_RUNS, Draw, Plan, axis_of, axis_record
 from rbi.sweeps.runs import SweepJob
 from rbi.sweeps.tolerance import MASS_COLUMNS, mass_rows, nominal_axes, spread
@@ -43,6 +43,15 @@ four hours of one core)."""
 
 MAX_SWEEP_SAMPLES = 100_000
 """Most samples per run of a sweep."""
+
+SECONDS_PER_STEP = 4e-7
+"""A first guess of the time one estimated step (:func:`rbi.sim.budget.estimated_steps`) of a
+sweep run takes on one core (0.22–0.26 µs measured for the textbook top, 100 s at 150 and
+250 rad/s, on the shared 2-core development machine), which sizes the first chunks of a sweep;
+the later ones are sized by how long chunks took."""
+
+MASS_CHUNK = 256
+"""Runs per chunk of a study of mass properties (no simulation: each run takes microseconds)."""
 
 
 @dataclass(frozen=True)
@@ -165,16 +174,24 @@ class Study:
             raise ArgumentError("mass_properties", "give at least one path to {vary}")
         return axes, varied
 
-    def _check_budget(self) -> None:
-        """Refuse, before any run, a sweep estimated to take more than the step budget."""
+    def _steps_per_run(self) -> float | None:
+        """The estimated integration steps of a run at the fastest spin, or None when the
+        nominal body cannot be simulated (every run will say why)."""
 
         scene = self.nominal_scene()
         if scene is None:
-            return  # every run will say why it cannot be simulated
+            return None
         fastest = [a for a in self.plan.axes if a.name == "spin"][0].largest()
-        per_run = estimated_steps(
+        return estimated_steps(
             scene, np.array([0.0, 0.0, fastest]), self.job.duration, "default", self.job.rtol
         )
+
+    def _check_budget(self) -> None:
+        """Refuse, before any run, a sweep estimated to take more than the step budget."""
+
+        per_run = self._steps_per_run()
+        if per_run is None:
+            return
         total = per_run * self.plan.size
         if total > SWEEP_STEP_BUDGET and self.settings.check_budget:
             raise ArgumentError(
@@ -200,7 +217,7 @@ class Study:
         return tuple(float(c) for c in body_spin_axis(self.nominal, self.settings.spin_axis))
 
     def _compute(self):
-        """``(compute(start, stop, threads) -> rows, chunk size)`` for the executors."""
+        """``compute(start, stop, threads) -> rows`` for the executors."""
         job = self.job
         if self.settings.mass_properties:
             axes_nominal = nominal_axes(job)
@@ -208,17 +225,34 @@ class Study:
             def compute(a, b, threads):
                 return mass_rows(job, axes_nominal, a, b)
 
-            return compute, 256
-        # looked up per call: tests replace it
-        from rbi.sweeps.execute import available_cores
-
+            return compute
         # looked up per call: tests replace it
         from rbi.sweeps.runs import run_chunk
 
         def compute(a, b, threads):
             return run_chunk(job, a, b, threads)
 
-        return compute, job.chunk_size(self.settings.workers or available_cores())
+        return compute
+
+    def _chunks(self, start: int) -> Chunks:
+        """The chunks of runs ``start ..`` (:class:`~rbi.sweeps.execute.Chunks`): at most
+        :meth:`SweepJob.chunk_size <rbi.sweeps.runs.SweepJob.chunk_size>` runs, fewer where runs
+        are long, so that each chunk ends within about a second (sized first by the estimated
+        steps of a run at the fastest spin, then by how long chunks take)."""
+        # looked up per call: tests replace it
+        from rbi.sweeps.execute import available_cores, usable_workers
+
+        if self.settings.mass_properties:
+            return Chunks(start, self.plan.size, MASS_CHUNK)
+        threads = self.settings.workers or available_cores()
+        if self.settings.dask is not None:  # a task runs on one core
+            share, least = 1.0, 1
+        else:  # the two chunks in flight share the cores
+            cores = usable_workers(threads)
+            share, least = cores / 2, (cores + 1) // 2
+        steps = self._steps_per_run()
+        run_seconds = None if steps is None else steps * SECONDS_PER_STEP / share
+        return Chunks(start, self.plan.size, self.job.chunk_size(threads), least, run_seconds)
 
     def store_settings(self) -> dict:
         """What makes two sweeps the same, for ``--resume``: the spec's bytes, those the rows
@@ -258,20 +292,12 @@ class Study:
         written, and :attr:`output` tells how many.
         """
         # looked up per call: tests replace it
-        from rbi.sweeps.execute import available_cores, chunk_ranges, run_dask, run_local
+        from rbi.sweeps.execute import available_cores, run_dask, run_local
 
-        compute, chunk = self._compute()
+        compute = self._compute()
         rows: list | None = [] if self.plan.size <= MAX_ROWS_SHOWN else None
-        start = 0
-        if out_target is not None:
-            self.output = store.SweepOutput(out_target, self.columns, self.plan, self.store_settings())
-            kept = self.output.open(resume, keep=rows is not None)
-            start = self.output.done
-            if rows is not None:
-                rows.extend(kept)
         tell = progress or (lambda done, total: None)
-        tell(start, self.plan.size)
-        done = [start]
+        done = [0]
 
         def on_rows(new_rows):
             if self.output is not None:
@@ -281,8 +307,16 @@ class Study:
             done[0] += len(new_rows)
             tell(done[0], self.plan.size)
 
-        try:
-            ranges = chunk_ranges(start, self.plan.size, chunk)
+        self.output, kept = None, []
+        if out_target is not None:
+            self.output = store.SweepOutput(out_target, self.columns, self.plan, self.store_settings())
+            kept = self.output.open(resume, keep=rows is not None)
+        try:  # from here on the output is closed, keeping its rows, whatever stops the sweep
+            done[0] = 0 if self.output is None else self.output.done
+            if rows is not None:
+                rows.extend(kept)
+            tell(done[0], self.plan.size)
+            ranges = self._chunks(done[0])
             if self.settings.dask is not None:
                 run_dask(compute, ranges, self.settings.dask, on_rows, self.settings.workers)
             else:
