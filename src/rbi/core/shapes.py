@@ -185,11 +185,17 @@ def cone(mass: float, radius: float, apex: np.ndarray, base: np.ndarray) -> Mass
     The centre of mass lies a quarter of the height above the base. About it the axial
     moment is 3/10 m r² and the transverse one 3/80 m (4 r² + h²).
     """
-    apex = np.asarray(apex, dtype=float)
     u, height = axis_between(apex, base)
-    com = apex + 0.75 * height * u
+    com = cone_center_of_mass(apex, u, height)
     axial, transverse = cone_moments(mass, radius, height)
     return MassProperties(mass, com, axisymmetric_inertia(axial, transverse, u))
+
+
+def cone_center_of_mass(apex: ArrayLike, axis: ArrayLike, height: Numbers) -> np.ndarray:
+    """``apex + 3/4 h u``: a cone's centre of mass, a quarter of the height ``h`` above the base,
+    with ``axis`` the unit vector ``u`` from the apex to the base. Also for many cones at once:
+    ``apex`` and ``axis`` (n, 3), ``height`` (n,)."""
+    return np.asarray(apex, dtype=float) + np.asarray(0.75 * height)[..., None] * axis
 
 
 # --- solid circular cylinder ---------------------------------------------------------------
@@ -215,7 +221,13 @@ def _about_middle(
     middle; ``moments(length)``: its ``(axial, transverse)`` moments about it (M·L²)."""
     start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
     u, length = axis_between(start, end)
-    return MassProperties(mass, 0.5 * (start + end), axisymmetric_inertia(*moments(length), u))
+    return MassProperties(mass, middle(start, end), axisymmetric_inertia(*moments(length), u))
+
+
+def middle(start: np.ndarray, end: np.ndarray) -> np.ndarray:
+    """``(start + end)/2``: the centre of mass of a solid symmetric about the segment (a cylinder
+    between its end faces' centres); for rows of (n, 3) arrays, each row's."""
+    return 0.5 * (start + end)
 
 
 # --- point mass ----------------------------------------------------------------------------
@@ -228,23 +240,36 @@ point = MassProperties.point
 # --- shapes with an orientation --------------------------------------------------------------
 
 
-def _turned(principal_moments: np.ndarray, rotation: np.ndarray | None) -> np.ndarray:
+def _turned(principal_moments: ArrayLike, rotation: np.ndarray | None) -> np.ndarray:
     """``R diag(moments) Rᵀ``: a part's inertia built along its own axes, expressed in body
-    axes. ``rotation`` maps part axes to body axes (None: they coincide)."""
-    diagonal = np.diag(np.asarray(principal_moments, dtype=float))
+    axes. ``rotation`` maps part axes to body axes (None: they coincide). Moments (n, 3) give
+    (n, 3, 3)."""
+    moments = np.asarray(principal_moments, dtype=float)
+    diagonal = np.zeros((*moments.shape, 3))
+    diagonal[..., [0, 1, 2], [0, 1, 2]] = moments
     if rotation is None:
         return diagonal
     R = np.asarray(rotation, dtype=float)
     turned = R @ diagonal @ R.T
-    return 0.5 * (turned + turned.T)
+    return 0.5 * (turned + np.swapaxes(turned, -1, -2))
+
+
+def _edges(size: ArrayLike) -> tuple[Numbers, Numbers, Numbers]:
+    """``a, b, c`` of ``size = [a, b, c]`` as floats, or the columns of sizes (n, 3)."""
+    edges = np.asarray(size, dtype=float)
+    if edges.ndim == 1:
+        a, b, c = edges.tolist()
+        return a, b, c
+    return edges[..., 0], edges[..., 1], edges[..., 2]
 
 
 # --- rectangular box -----------------------------------------------------------------------
 
 
-def box_volume(size: np.ndarray) -> float:
-    """Volume of a rectangular box with edge lengths ``size = [a, b, c]`` (L³)."""
-    a, b, c = (float(s) for s in size)
+def box_volume(size: ArrayLike) -> Numbers:
+    """Volume of a rectangular box with edge lengths ``size = [a, b, c]`` (L³); sizes (n, 3)
+    give the n volumes."""
+    a, b, c = _edges(size)
     return a * b * c
 
 
@@ -256,9 +281,13 @@ def box(
     About its centre, in its own axes: m (b² + c²)/12, m (a² + c²)/12, m (a² + b²)/12.
     ``rotation`` maps the box's axes to body axes.
     """
-    a, b, c = (float(s) for s in size)
-    moments = np.array(box_moments(mass, a, b, c))
-    return MassProperties(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
+    return MassProperties(mass, np.asarray(center, dtype=float), box_inertia(mass, size, rotation))
+
+
+def box_inertia(mass: Numbers, size: ArrayLike, rotation: np.ndarray | None = None) -> np.ndarray:
+    """A box's inertia about its centre (:func:`box_moments` along its own axes, turned by
+    ``rotation``); masses (n,) with sizes (n, 3) give (n, 3, 3)."""
+    return _turned(np.stack(box_moments(mass, *_edges(size)), axis=-1), rotation)
 
 
 # --- solid ellipsoid -----------------------------------------------------------------------
@@ -291,7 +320,13 @@ def sphere_volume(radius: float) -> float:
 
 def sphere(mass: float, radius: float, center: np.ndarray) -> MassProperties:
     """Solid sphere: 2/5 m r² about every axis through its centre."""
-    return MassProperties(mass, np.asarray(center, dtype=float), sphere_moment(mass, radius) * np.eye(3))
+    return MassProperties(mass, np.asarray(center, dtype=float), sphere_inertia(mass, radius))
+
+
+def sphere_inertia(mass: Numbers, radius: Numbers) -> np.ndarray:
+    """A solid sphere's inertia about its centre, :func:`sphere_moment` times E; masses and radii
+    (n,) give (n, 3, 3)."""
+    return np.asarray(sphere_moment(mass, radius))[..., None, None] * np.eye(3)
 
 
 def spherical_shell_volume(outer_radius: float, inner_radius: float) -> float:

@@ -86,7 +86,7 @@ def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[
         if shell:
             area = shapes.box_area(a, b, c)
             return area, np.array(shapes.box_shell_moments(area, a, b, c))
-        volume = a * b * c
+        volume = shapes.box_volume(size)
         return volume, np.array(shapes.box_moments(volume, a, b, c))
     if kind == "ellipsoid":
         if shell:

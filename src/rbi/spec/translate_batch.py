@@ -1,8 +1,9 @@
 """Translating many plain parts at once: the parts of the common shapes (point, cylinder, cone,
 sphere, box without rotation) that carry no ``pattern`` are gathered by shape and their mass
 elements computed with whole-array arithmetic by the closed forms of :mod:`rbi.core.shapes`
-(its moment and volume functions take arrays), so the same numbers to within a rounding or
-two of the lengths (tested against the per-part path in ``tests/spec/test_translate_batch.py``).
+(its volume, centre-of-mass and inertia functions take arrays), so the same numbers to within a
+rounding or two of the lengths (tested against the per-part path in
+``tests/spec/test_translate_batch.py``).
 
 :func:`batch_elements` returns the elements it could build, by part index; every other part
 (other shapes, patterns, rotations, a density naming an unknown material, any part whose
@@ -77,7 +78,8 @@ def _cylinders(parts, units):
     length = vector_length(d)
     mass = _solid_masses(parts, units, shapes.cylinder_volume(radius, length))
     axial, transverse = shapes.cylinder_moments(mass, radius, length)
-    return mass, 0.5 * (start + end), shapes.axisymmetric_inertia(axial, transverse, d / length[:, None])
+    u = d / length[:, None]
+    return mass, shapes.middle(start, end), shapes.axisymmetric_inertia(axial, transverse, u)
 
 
 def _cones(parts, units):
@@ -87,7 +89,7 @@ def _cones(parts, units):
     height = vector_length(d)
     mass = _solid_masses(parts, units, shapes.cone_volume(radius, height))
     u = d / height[:, None]
-    com = apex + (0.75 * height)[:, None] * u
+    com = shapes.cone_center_of_mass(apex, u, height)
     axial, transverse = shapes.cone_moments(mass, radius, height)
     return mass, com, shapes.axisymmetric_inertia(axial, transverse, u)
 
@@ -95,16 +97,13 @@ def _cones(parts, units):
 def _spheres(parts, units):
     radius = _scalars(parts, "radius")
     mass = _solid_masses(parts, units, shapes.sphere_volume(radius))
-    return mass, _vectors(parts, "center"), shapes.sphere_moment(mass, radius)[:, None, None] * np.eye(3)
+    return mass, _vectors(parts, "center"), shapes.sphere_inertia(mass, radius)
 
 
 def _boxes(parts, units):
     size = _vectors(parts, "size")
-    a, b, c = size[:, 0], size[:, 1], size[:, 2]
-    mass = _solid_masses(parts, units, a * b * c)
-    inertia = np.zeros((len(parts), 3, 3))
-    inertia[:, [0, 1, 2], [0, 1, 2]] = np.stack(shapes.box_moments(mass, a, b, c), axis=1)
-    return mass, _vectors(parts, "center"), inertia
+    mass = _solid_masses(parts, units, shapes.box_volume(size))
+    return mass, _vectors(parts, "center"), shapes.box_inertia(mass, size)
 
 
 BUILDERS = {
