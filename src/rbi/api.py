@@ -953,8 +953,9 @@ class SweepTable(TableRepr):
             ``p100``...) and standard deviation over the ok runs; else None.
     """
 
-    def __init__(self, study: Any, rows: Sequence[Sequence[Any]] | None) -> None:
+    def __init__(self, study: Any, rows: Sequence[Sequence[Any]] | None, body: Body) -> None:
         nominal = study.nominal
+        self._body = body  # the swept Body: no map replaces a file it was read from
         self.columns: list[str] = list(study.columns)
         self.count: int = study.plan.size
         self.held = rows is not None
@@ -978,9 +979,7 @@ class SweepTable(TableRepr):
 
         if not self.held:
             raise ArgumentError("plot", "the map is drawn from the rows, and this table does not hold them")
-        plot_map(
-            self._study.stability_map(self._rows), _output(path, ("png", "svg", "pdf"), self._study.path)
-        )
+        plot_map(self._study.stability_map(self._rows), _output(path, ("png", "svg", "pdf"), self._body))
 
     def __len__(self) -> int:
         return len(self._rows)
@@ -1080,8 +1079,8 @@ def sweep(
         mass_properties: simulate nothing: each row gives the mass properties at the varied values.
         check_budget: refuse a sweep estimated past rbi's step budget (about four core-hours).
         out, resume, progress: stream the rows to a ``.csv`` or ``.parquet`` file as runs end
-            (past 100,000 runs, only there); continue the sweep already in it; called with
-            (runs done, runs).
+            (past 100,000 runs, only there; never a file the body is read from); continue the
+            sweep already in it; called with (runs done, runs).
 
     Raises:
         ValueError, TypeError: a setting or a variation is invalid (named as this function's
@@ -1097,7 +1096,20 @@ def sweep(
     read = body if isinstance(body, Body) else path  # a Body: every file it was read from
     target = None if out is None else _output(out, ("csv", "parquet"), read, "out")
     study = Study(path, raw, settings, rows_printed=out is None, spec_bytes=spec_bytes)
-    return SweepTable(study, study.run(target, resume, progress))
+    swept, target = _swept(body, study, out, target)
+    return SweepTable(study, study.run(target, resume, progress), swept)
+
+
+def _swept(
+    body: Any, study: Any, out: Destination | None, target: OutputTarget | None
+) -> tuple[Body, OutputTarget | None]:
+    """`sweep`'s `Body` and ``out``'s target. For a spec path, the nominal body the study has
+    just translated, whose files are known only now: ``out`` is checked again against each
+    file it was read from (`Body.files_read`), before any run."""
+    if isinstance(body, Body):
+        return body, target
+    nominal = Body(study.nominal, study.raw, study.spec_bytes)
+    return nominal, None if out is None else _output(out, ("csv", "parquet"), nominal, "out")
 
 
 def _variations(vary: Any) -> tuple[tuple[str, Any], ...]:

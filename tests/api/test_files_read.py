@@ -51,6 +51,35 @@ def test_no_output_of_a_body_replaces_a_file_it_was_read_from(cloud_spec, tmp_pa
     assert cloud.read_text() == CLOUD
 
 
+@pytest.mark.parametrize("how", ["same", "symlink"])
+def test_a_sweep_of_a_spec_path_never_replaces_a_file_the_spec_names(cloud_spec, tmp_path, how):
+    """rbi.sweep(path) knows the files the spec names once it has translated it: ``out`` is
+    refused before any run, as for a Body, by the same ArgumentError."""
+    spec, cloud = cloud_spec
+    out = cloud if how == "same" else tmp_path / "rows.csv"
+    if how == "symlink":
+        os.symlink(cloud, out)
+    for body in (spec, str(spec), rbi.load(spec)):
+        with pytest.raises(rbi.ArgumentError, match="is an input of this run") as caught:
+            rbi.sweep(body, spin=[1, 2], duration=0.1, out=out)
+        assert str(caught.value).startswith(f"out: {out}: ") and str(cloud) in str(caught.value)
+    assert cloud.read_text() == CLOUD
+
+
+def test_a_sweep_map_never_replaces_a_file_the_spec_names(cloud_spec, tmp_path):
+    pytest.importorskip("matplotlib")
+    spec, cloud = cloud_spec
+    link = tmp_path / "map.png"
+    os.symlink(cloud, link)
+    for body in (spec, rbi.load(spec)):
+        table = rbi.sweep(body, spin=[1, 2], duration=0.1)
+        with pytest.raises(rbi.ArgumentError, match="is an input of this run"):
+            table.plot(link)
+    assert cloud.read_text() == CLOUD
+    rbi.sweep(spec, spin=[1, 2], duration=0.1).plot(tmp_path / "other.png")
+    assert (tmp_path / "other.png").read_bytes().startswith(b"\x89PNG")
+
+
 def test_export_warnings_name_the_file_of_a_body_without_three_moments(tmp_path):
     spec = tmp_path / "pt.yaml"
     spec.write_text("parts:\n  - {name: p, shape: point, mass: 1, position: [0, 0, 0]}\n")

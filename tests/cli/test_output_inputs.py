@@ -106,3 +106,54 @@ def test_other_outputs_beside_the_inputs_are_written(cloud_spec, tmp_path):
     assert streamed.returncode == 0 and streamed.stdout.startswith("t,qw")
     assert rbi("show", spec, "--out", tmp_path / "body.html").returncode == 0
     assert cloud.read_text() == CLOUD
+
+
+@pytest.fixture
+def no_runs(monkeypatch):
+    """A sweep that starts a run fails the test: the refusal must come before any."""
+
+    def run(*args, **kwargs):
+        raise AssertionError("a run started")
+
+    monkeypatch.setattr("rbi.sweeps.execute.run_local", run)
+    monkeypatch.setattr("rbi.sweeps.execute.run_dask", run)
+
+
+@pytest.mark.parametrize("how", ["same", "symlink", "hardlink"])
+def test_sweep_out_never_replaces_the_point_cloud(cloud_spec, tmp_path, no_runs, how):
+    spec, cloud = cloud_spec
+    out = named(cloud, tmp_path / "rows.csv", how)
+    proc = rbi("sweep", spec, *RUN, "--out", out)
+    assert_refused(proc, "--out", out, cloud, CLOUD.encode())
+    assert not list(tmp_path.glob(".*rbi-lock"))  # nothing opened there
+
+
+@pytest.mark.parametrize("how", ["same", "symlink"])
+def test_sweep_plot_never_replaces_the_point_cloud(tmp_path, no_runs, how):
+    """By its own name (a cloud whose name ends .png: the map's extension) or a link to it."""
+    pytest.importorskip("matplotlib")
+    cloud = tmp_path / "cloud.png"
+    cloud.write_text(CLOUD)
+    spec = tmp_path / "pc.yaml"
+    spec.write_text("units: {length: m, mass: kg}\npivot: [0, 0, 0]\npoint_cloud: {file: cloud.png}\n")
+    out = named(cloud, tmp_path / "map.png", how)
+    proc = rbi("sweep", spec, "--spin", "1:5:3", "--duration", "0.1", "--plot", out)
+    assert_refused(proc, "--plot", out, cloud, CLOUD.encode())
+
+
+def test_sweep_never_replaces_the_mesh(mesh_spec, tmp_path, no_runs):
+    spec, mesh = mesh_spec
+    before = mesh.read_bytes()
+    out = named(mesh, tmp_path / "rows.csv", "symlink")
+    assert_refused(rbi("sweep", spec, *RUN, "--out", out), "--out", out, mesh, before)
+
+
+def test_sweep_outputs_beside_the_inputs_are_written(cloud_spec, tmp_path):
+    pytest.importorskip("matplotlib")
+    spec, cloud = cloud_spec
+    outputs = ("--out", tmp_path / "rows.csv", "--plot", tmp_path / "map.png")
+    proc = rbi("sweep", spec, "--spin", "1:5:3", "--duration", "0.1", *outputs)
+    assert proc.returncode == 0, proc.stderr
+    assert (tmp_path / "rows.csv").read_text().count("\n") == 4
+    assert (tmp_path / "map.png").read_bytes().startswith(b"\x89PNG")
+    assert cloud.read_text() == CLOUD

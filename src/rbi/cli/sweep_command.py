@@ -203,7 +203,8 @@ def sweep(
     if resume and out is None:
         raise SpecError("--resume: needs --out, the file of the interrupted sweep")
     settings["out"], plot_target = _targets(file, out, plot)
-    table = _run(file, settings | {"workers": _workers(workers, dask)}, out, resume)
+    source = _source(file, plot_target)
+    table = _run(source, settings | {"workers": _workers(workers, dask)}, out, resume)
     result = _result(table, out, plot, plot_target)
     if format == OutputFormat.csv:
         sys.stdout.write(to_csv(result.get("runs", [])))
@@ -253,6 +254,18 @@ def _targets(file: str, out: str | None, plot: str | None):
     return out_target, plot_target
 
 
+def _source(file: str, plot_target):
+    """What is swept: the spec's path (rbi.sweep checks --out against every file the spec names
+    once it has translated the spec, before any run); with --plot, the loaded body, the map's
+    file checked against the files it was read from now, since the map is drawn after the runs."""
+
+    if plot_target is None:
+        return file
+    body = api.load(file)
+    output_target(plot_target.given, plot_target.option, (plot_target.format,), inputs=body.files_read)
+    return body
+
+
 def _workers(workers: int | None, dask: str | None) -> int | None:
     """The optional packages --dask needs; --workers above the cores this process may use is
     said, and the cores are used (a remote cluster has its own; past 1024 rbi.sweep refuses it)."""
@@ -270,7 +283,7 @@ def _workers(workers: int | None, dask: str | None) -> int | None:
     return available_cores()
 
 
-def _run(file: str, settings: dict, out: str | None, resume: bool):
+def _run(source, settings: dict, out: str | None, resume: bool):
     """Run the sweep with a progress bar on a terminal; on Ctrl-C or SIGTERM say how many runs
     --out kept (exit 130 or 143)."""
 
@@ -283,7 +296,7 @@ def _run(file: str, settings: dict, out: str | None, resume: bool):
                 bar.update(done, total)
 
         try:
-            return api.sweep(file, resume=resume, progress=progress, **settings)
+            return api.sweep(source, resume=resume, progress=progress, **settings)
         except (KeyboardInterrupt, Terminated) as stop:
             if out is None or not told:
                 raise
