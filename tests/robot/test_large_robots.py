@@ -156,9 +156,10 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, sha
     into the audit's arrays; else the reader's columns, as they are): each link's flags and
     numbers are those of the careful path, one link at a time (measured, then flagged)."""
     from rbi.formats import robot_xml
+    from rbi.formats.robot import LinkColumns
     from rbi.formats.robot_files import read_robot
     from rbi.formats.urdf import read_urdf
-    from rbi.robot.audit import _carried_mass, _flags, _measured_link, audit_model
+    from rbi.robot.audit import _carried, _flags, _measured_link, audit_model
 
     path = tmp_path / "r.urdf"
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
@@ -167,7 +168,7 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, sha
         assert model.links  # made now: the audit reads them, not the columns
     assert (model.in_columns is None) == careful
     bulk = audit_model(model, density=density)
-    carried = _carried_mass(model.path, model.links)
+    carried = _carried(LinkColumns.of_links(model.path, model.links))
     codes = set()
     for link, found in zip(model.links, bulk.links):
         one = _measured_link(model, link, "collision", density, "auto", False, None)
@@ -265,8 +266,8 @@ def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
     Below the unnamed body are its own children, not the roots (the walk once looked them up by
     the body's name, None, which is what a root's parent is). Two roots sharing a name are no
     tree of the links' keys: refused, in one line."""
-    from rbi.formats.robot import Inertial, Link
-    from rbi.robot.audit import _carried_mass
+    from rbi.formats.robot import Inertial, Link, LinkColumns
+    from rbi.robot.audit import _carried
 
     heavy = Inertial(MassProperties(1.0, np.zeros(3), np.eye(3) * 0.01), np.eye(3) * 0.01)
     links = [Link(0, "base", heavy, word="body"), Link(1, "a", parent="base", word="body")]
@@ -278,7 +279,7 @@ def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
             "m.xml: body[5] (d): duplicate body name 'd' (also body[4] (d)); every body needs its own name"
         )
         with pytest.raises(InputError) as refused:
-            _carried_mass("m.xml", links)
+            LinkColumns.of_links("m.xml", links)
         assert str(refused.value) == message
         return
-    assert _carried_mass("m.xml", links) == [False, False, False, False]
+    assert _carried(LinkColumns.of_links("m.xml", links)) == [False, False, False, False]

@@ -219,17 +219,20 @@ class GeomColumn:
 
 @dataclass
 class LinkColumns:
-    """A URDF's links as columns, one row a link in file order (its ``index``), as
-    :mod:`rbi.formats.urdf` reads them: names, ``parents`` (the parent's row, -1 for the
-    root), ``order`` (the rows parents first, as :func:`depth_first` gives them), origins (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame),
-    the declared inertials (``declared`` (n,) which links have one; ``masses`` (n,) kg, ``coms``
-    (n, 3) m and ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) the
-    inertias as written; ``turned``: row → the :class:`Inertial` of a rotated inertial frame),
-    each non-root link's joint (name, kind, unit ``axes`` (n, 3) in the link frame, effort
-    limit or None) and the geometry. :meth:`link` makes a row's :class:`Link` (once); rbi.robot
-    reads the arrays of a model whose links were never made."""
+    """A model's links as columns, one row a link in file order (its ``index``): the one form
+    rbi.robot reads them in. :mod:`rbi.formats.urdf` reads a URDF into them;
+    :meth:`of_links` lays any links into them. Names, ``parents`` (the parent's row, n for a
+    root), ``order`` (the rows parents first, as :func:`depth_first` gives them), origins
+    (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame), the declared
+    inertials (``declared`` (n,) which links have one; ``masses`` (n,) kg, ``coms`` (n, 3) m
+    and ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) the inertias as
+    written; ``turned``: row → the :class:`Inertial` of a rotated inertial frame), the joints,
+    one entry a joint in file order of their links (``joint_rows`` its link's row; a URDF's:
+    one a row, a root's of kind None; names, kinds, unit ``axes`` and ``anchors`` (k, 3) in the
+    link frame, effort limits or None) and the geometry. :meth:`link` makes a row's
+    :class:`Link` (once; of :meth:`of_links`, the link laid in)."""
 
-    names: list[str]
+    names: list[str | None]
     parents: list[int]
     order: list[int]
     rotations: np.ndarray
@@ -240,12 +243,53 @@ class LinkColumns:
     inertias: np.ndarray
     written: np.ndarray
     turned: dict[int, Inertial]
-    joint_names: list[str]
+    joint_rows: list[int]
+    joint_names: list[str | None]
     joint_kinds: list[str | None]
     axes: np.ndarray
+    anchors: np.ndarray
     efforts: list[float | None]
     geoms: list[GeomColumn]
     made: dict[int, Link] = field(default_factory=dict)
+
+    @classmethod
+    def of_links(cls, path: str, links: list[Link]) -> LinkColumns:
+        """The columns of ``links`` (an SDF or MJCF reader's, a URDF's once made), each link
+        its row's :meth:`link`; geoms in one column per tag and kind (kind ``other``, without
+        sizes: a mesh, a shell or a kind with no volume). InputError for links that are no
+        tree (:func:`tree_rows`)."""
+        n = len(links)
+        parents, order = tree_rows(path, links)
+        given = [link.inertial for link in links if link.inertial is not None]
+        declared = np.array([link.inertial is not None for link in links], dtype=bool)
+        masses, coms = np.zeros(n), np.zeros((n, 3))
+        inertias, written = np.zeros((n, 3, 3)), np.zeros((n, 3, 3))
+        masses[declared] = [each.mass for each in given]
+        coms[declared] = stacked([each.properties.center_of_mass for each in given], (3,))
+        inertias[declared] = stacked([each.properties.inertia_about_com for each in given], (3, 3))
+        written[declared] = stacked([each.written_inertia for each in given], (3, 3))
+        joints = [(row, motion) for row, link in enumerate(links) for motion in link.motions]
+        return cls(
+            [link.name for link in links],
+            parents,
+            order,
+            stacked([link.origin.rotation for link in links], (3, 3)),
+            stacked([link.origin.translation for link in links], (3,)),
+            declared,
+            masses,
+            coms,
+            inertias,
+            written,
+            {},
+            [row for row, _ in joints],
+            [motion.name for _, motion in joints],
+            [motion.kind for _, motion in joints],
+            stacked([motion.axis for _, motion in joints], (3,)),
+            stacked([motion.anchor for _, motion in joints], (3,)),
+            [motion.effort_limit for _, motion in joints],
+            _geom_columns(links),
+            dict(enumerate(links)),
+        )
 
     def __len__(self) -> int:
         return len(self.names)
@@ -264,20 +308,22 @@ class LinkColumns:
 
     def links(self) -> list[Link]:
         """Every row's :class:`Link`, in file order."""
-        geoms: dict[str, list[list[Geom]]] = {
-            "collision": [[] for _ in self.names],
-            "visual": [[] for _ in self.names],
-        }
-        for column in self.geoms:
-            lists = geoms[column.tag]
-            for k, row in enumerate(column.rows):
-                lists[row].append(column.geom(k))
-        for row in range(len(self.names)):
-            if row not in self.made:
-                self.made[row] = self._link(row, geoms["collision"][row], geoms["visual"][row])
+        if len(self.made) < len(self.names):
+            geoms: dict[str, list[list[Geom]]] = {
+                "collision": [[] for _ in self.names],
+                "visual": [[] for _ in self.names],
+            }
+            for column in self.geoms:
+                lists = geoms[column.tag]
+                for k, row in enumerate(column.rows):
+                    lists[row].append(column.geom(k))
+            for row in range(len(self.names)):
+                if row not in self.made:
+                    self.made[row] = self._link(row, geoms["collision"][row], geoms["visual"][row])
         return [self.made[row] for row in range(len(self.names))]
 
     def _link(self, row: int, collisions: list[Geom], visuals: list[Geom]) -> Link:
+        """A URDF's link of ``row`` (its joint: the row's)."""
         inertial = self.turned.get(row)
         if inertial is None and self.declared[row]:
             properties = MassProperties.of_arrays(
@@ -286,7 +332,7 @@ class LinkColumns:
             inertial = Inertial(properties, self.written[row])
         parent = self.parents[row]
         link = Link(row, self.names[row], inertial, collisions, visuals)
-        if parent < 0:
+        if parent == len(self.names):
             return link
         link.parent = self.names[parent]
         link.origin = Pose(self.rotations[row], self.translations[row])
@@ -359,6 +405,42 @@ def depth_first(parents: list[int], root: int) -> list[int]:
     return order
 
 
+def stacked(arrays: list, shape: tuple[int, ...]) -> np.ndarray:
+    """The float arrays of ``shape`` in ``arrays`` as one (n, *shape) array: the values
+    ``np.array(arrays, dtype=float)`` gives, made by one concatenation (numpy's discovery of a
+    list's shape, element by element, takes twice as long for 100,000 links)."""
+    if not arrays:
+        return np.empty((0, *shape))
+    return np.concatenate(arrays, dtype=float).reshape(-1, *shape)
+
+
+SOLID_KINDS = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
+"""The kinds of geometry that are one solid primitive."""
+
+
+def _geom_columns(links: list[Link]) -> list[GeomColumn]:
+    """The links' ``<collision>`` and ``<visual>`` geoms as :class:`GeomColumn` values, one per
+    tag and kind (a mesh, a shell or a kind with no volume: kind ``other``, without sizes)."""
+    found: dict[tuple[str, str], list] = {}
+    for row, link in enumerate(links):
+        for tag, geoms in (("collision", link.collisions), ("visual", link.visuals)):
+            for geom in geoms:
+                kind = geom.kind if geom.kind in SOLID_KINDS and not geom.shell else "other"
+                found.setdefault((tag, kind), []).append((row, geom))
+    return [
+        GeomColumn(
+            tag,
+            "",
+            kind,
+            [row for row, _ in pairs],
+            stacked([geom.pose.rotation for _, geom in pairs], (3, 3)),
+            stacked([geom.pose.translation for _, geom in pairs], (3,)),
+            None if kind == "other" else stacked([geom.size for _, geom in pairs], (len(pairs[0][1].size),)),
+        )
+        for (tag, kind), pairs in found.items()
+    ]
+
+
 def _find(rows: list[int], row: int) -> int | None:
     """Where ``row`` is in the ascending ``rows``, or None."""
     at = bisect.bisect_left(rows, row)
@@ -400,6 +482,12 @@ class RobotModel:
         so none changed): what rbi.robot reads in place of the links; None otherwise."""
         columns = self.columns
         return columns if columns is not None and self._links is None and not columns.made else None
+
+    def link_columns(self) -> LinkColumns:
+        """The links as rbi.robot reads them: :attr:`in_columns`, else laid into columns
+        (:meth:`LinkColumns.of_links`)."""
+        columns = self.in_columns
+        return LinkColumns.of_links(self.path, self.links) if columns is None else columns
 
     @property
     def link_word(self) -> str:

@@ -712,13 +712,15 @@ def _joints(path: str, names: list[str], chunks: list) -> dict:
     if len({name for name in joint_names if name}) != sum(map(bool, joint_names)) or order is None:
         _refuse_tree(path, names, parents, joint_names)
     return {
-        "parents": parents,
+        "parents": [n if parent < 0 else parent for parent in parents],
         "order": order,
         "rotations": rotations,
         "translations": translations,
+        "joint_rows": list(range(n)),
         "joint_names": joint_names,
         "joint_kinds": kinds,
         "axes": axes,
+        "anchors": np.zeros((n, 3)),
         "efforts": efforts,
     }
 

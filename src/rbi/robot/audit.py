@@ -11,9 +11,9 @@ over the geometry's size (its bounding box's diagonal). The flags (``unphysical`
 (:data:`ERROR_RATIO`, :data:`WARNING_RATIO`, :data:`SOLID_DENSITY_RANGE`, :data:`COM_MARGIN`)
 are tabled in docs/audit.md ("What it checks").
 
-Every model is audited one way, on arrays of its links (:class:`_Rows`: a URDF's reader
-gives them as columns, the SDF and MJCF readers' links are laid into them): screens on stacks clear
-the links with nothing to flag, and only the others are audited one by one.
+Every model is audited one way, on arrays of its links (:class:`~rbi.formats.robot.LinkColumns`:
+a URDF's reader gives them as columns, the SDF and MJCF readers' links are laid into them):
+screens on stacks clear the links with nothing to flag, and only the others are audited one by one.
 """
 
 from __future__ import annotations
@@ -29,11 +29,11 @@ from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem, finite
 from rbi.errors import ArgumentError, literal
-from rbi.formats.robot import GeomColumn, Link, LinkColumns, RobotModel, tree_rows
+from rbi.formats.robot import SOLID_KINDS, Link, LinkColumns, RobotModel, stacked
 from rbi.formats.robot_files import inertia_problem_text
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.reprs import TableRepr
-from rbi.robot.tree import placement, stack_apply, stacked, totals
+from rbi.robot.tree import placement, stack_apply, totals
 from rbi.text import number
 
 ERROR_RATIO = 10.0
@@ -392,9 +392,8 @@ def audit_model(
 
     check_choices(geometry, mesh_inertia)
     repairs: list[str] = []
-    columns = model.in_columns
-    rows = _Rows.of_columns(columns) if columns is not None else _Rows.of_links(model.path, model.links)
-    audited = _ColumnAudit(model, rows)
+    columns = model.link_columns()
+    audited = _ColumnAudit(model, columns)
     audited.audit(geometry, density, mesh_inertia, mesh_repair, repairs)
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
     placed = placement(model, joints, columns)
@@ -415,107 +414,14 @@ def audit_model(
     )
 
 
-class _Rows(NamedTuple):
-    """A model's links as the audit reads them, one row a link in file order: the declared
-    inertials (``declared`` (n,) which links have one, ``masses`` (n,) kg, ``coms`` (n, 3) m and
-    ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) as the file wrote
-    them), which links a joint ``moving`` moves, the ``geoms`` as columns, and ``carried`` (n,):
-    does a link below it have mass. ``link(row)`` and ``links()`` make the :class:`Link` values
-    (from :class:`LinkColumns`, or the SDF and MJCF readers' own)."""
-
-    declared: np.ndarray
-    masses: np.ndarray
-    coms: np.ndarray
-    inertias: np.ndarray
-    written: np.ndarray
-    moving: np.ndarray
-    geoms: list[GeomColumn]
-    carried: list[bool]
-    link: Any
-    links: Any
-
-    @classmethod
-    def of_columns(cls, columns: LinkColumns) -> _Rows:
-        n = len(columns)
-        heavy = columns.declared & (columns.masses > 0)
-        parents = [n if parent < 0 else parent for parent in columns.parents]
-        moving = [
-            parent >= 0 and kind != "fixed" for parent, kind in zip(columns.parents, columns.joint_kinds)
-        ]
-        carried = _carried_rows(parents, columns.order, heavy.tolist())
-        return cls(
-            columns.declared,
-            columns.masses,
-            columns.coms,
-            columns.inertias,
-            columns.written,
-            np.array(moving, dtype=bool),
-            columns.geoms,
-            carried,
-            columns.link,
-            columns.links,
-        )
-
-    @classmethod
-    def of_links(cls, path: str, links: list[Link]) -> _Rows:
-        inertials = [link.inertial for link in links]
-        given = [each.properties for each in inertials if each is not None]
-        declared = np.array([each is not None for each in inertials], dtype=bool)
-        masses = np.zeros(len(links))
-        masses[declared] = [each.mass for each in given]
-        coms, inertias, written = (
-            np.zeros((len(links), 3)),
-            np.zeros((len(links), 3, 3)),
-            np.zeros((len(links), 3, 3)),
-        )
-        coms[declared] = stacked([each.center_of_mass for each in given], (3,))
-        inertias[declared] = stacked([each.inertia_about_com for each in given], (3, 3))
-        written[declared] = stacked([each.written_inertia for each in inertials if each is not None], (3, 3))
-        return cls(
-            declared,
-            masses,
-            coms,
-            inertias,
-            written,
-            np.array([link.moves for link in links], dtype=bool),
-            _geom_columns(links),
-            _carried_mass(path, links),
-            links.__getitem__,
-            lambda: links,
-        )
-
-
-def _geom_columns(links: list[Link]) -> list[GeomColumn]:
-    """The links' ``<collision>`` and ``<visual>`` geoms as :class:`GeomColumn` values, one per
-    tag and kind (a mesh, a shell or a kind with no volume: kind ``other``, without sizes)."""
-    found: dict[tuple[str, str], list] = {}
-    for row, link in enumerate(links):
-        for tag, geoms in (("collision", link.collisions), ("visual", link.visuals)):
-            for geom in geoms:
-                kind = geom.kind if geom.kind in _PRIMITIVES and not geom.shell else "other"
-                found.setdefault((tag, kind), []).append((row, geom))
-    return [
-        GeomColumn(
-            tag,
-            "",
-            kind,
-            [row for row, _ in pairs],
-            stacked([geom.pose.rotation for _, geom in pairs], (3, 3)),
-            stacked([geom.pose.translation for _, geom in pairs], (3,)),
-            None if kind == "other" else stacked([geom.size for _, geom in pairs], (len(pairs[0][1].size),)),
-        )
-        for (tag, kind), pairs in found.items()
-    ]
-
-
 class _ColumnAudit:
-    """The audit of a model's links on the arrays of their :class:`_Rows`: the links the bulk
-    screens clear (no flag, their numbers worked out on stacks) are kept as rows and made into
-    :class:`LinkAudit` values when asked for (:meth:`links`); the others (``audited``: row →
-    LinkAudit) are made now and audited one by one (:func:`_measured_link`, :func:`_flags`)."""
+    """The audit of a model's links on their :class:`~rbi.formats.robot.LinkColumns`: the links
+    the bulk screens clear (no flag, their numbers worked out on stacks) are kept as rows and
+    made into :class:`LinkAudit` values when asked for (:meth:`links`); the others (``audited``:
+    row → LinkAudit) are made now and audited one by one (:func:`_measured_link`, :func:`_flags`)."""
 
-    def __init__(self, model: RobotModel, rows: _Rows):
-        self.model, self.rows = model, rows
+    def __init__(self, model: RobotModel, columns: LinkColumns):
+        self.model, self.columns = model, columns
         self.audited: dict[int, LinkAudit] = {}
         self.measured: _Measured | None = None
         self.compared: dict[int, tuple] = {}  # row → (ratios, com_offset)
@@ -526,37 +432,41 @@ class _ColumnAudit:
 
     def audit(self, geometry, density, mesh_inertia, mesh_repair, repairs) -> None:
         """Each link screened on the arrays; those not cleared audited one by one."""
-        model, rows = self.model, self.rows
-        n = len(rows.declared)
-        heavy = rows.declared & (rows.masses > 0)
-        measured = self.measured = _primitives_in_bulk(model, geometry, density, rows)
+        model, columns = self.model, self.columns
+        n = len(columns)
+        heavy = columns.declared & (columns.masses > 0)
+        carried = _carried(columns)
+        moving = np.zeros(n, dtype=bool)  # links a joint moves
+        kinds = zip(columns.joint_rows, columns.joint_kinds)
+        moving[[row for row, kind in kinds if kind != "fixed" and columns.parents[row] != n]] = True
+        measured = self.measured = _primitives_in_bulk(model, geometry, density, columns)
         shaped = np.zeros(n, dtype=bool)  # links with geometry to measure
         if geometry != "none":
-            for column in rows.geoms:
+            for column in columns.geoms:
                 shaped[column.rows] = True
         fine = np.zeros(n, dtype=bool)
         if measured is not None:
             fine[np.asarray(measured.rows)[measured.fine]] = True
-        declared = np.flatnonzero(rows.declared).tolist()
-        physical, maybe = _screens(n, declared, rows.inertias[declared], rows.written[declared])
+        declared = np.flatnonzero(columns.declared).tolist()
+        physical, maybe = _screens(n, declared, columns.inertias[declared], columns.written[declared])
         clean = self._compare(heavy & fine)
         simple = heavy & physical & ~maybe & (~shaped | clean)
-        simple |= ~rows.declared & ~rows.moving & (~shaped | fine)
+        simple |= ~columns.declared & ~moving & (~shaped | fine)
         for row in np.flatnonzero(~simple).tolist():
-            link = rows.link(row)
+            link = columns.link(row)
             if fine[row]:
                 declared_props = None if link.inertial is None else link.inertial.properties
                 result = LinkAudit(link, declared_props, measured.props(measured.at[row]))
             else:
                 result = _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
-            result.flags += _flags(model, link, result, rows.carried[row])
+            result.flags += _flags(model, link, result, carried[row])
             self.audited[row] = result
 
     def _compare(self, chosen: np.ndarray) -> np.ndarray:
         """(n,) which of the ``chosen`` links (declared mass, geometry measured) :func:`_compared`
         finds clean; their ratios and centre-of-mass offsets into :attr:`compared`."""
         clean = np.zeros(len(chosen), dtype=bool)
-        measured, rows = self.measured, self.rows
+        measured, columns = self.measured, self.columns
         if measured is None or not np.any(chosen):
             return clean
         at = np.array([measured.at[row] for row in np.flatnonzero(chosen).tolist()], dtype=int)
@@ -568,8 +478,8 @@ class _ColumnAudit:
         ratios, offsets, inside, near = _compared(
             moments,
             axes,
-            rows.inertias[found],
-            rows.coms[found],
+            columns.inertias[found],
+            columns.coms[found],
             measured.low[at],
             measured.high[at],
             measured.com[at],
@@ -582,7 +492,7 @@ class _ColumnAudit:
         """Every link's :class:`LinkAudit`, in file order."""
         found = []
         measured, compared = self.measured, self.compared
-        for row, link in enumerate(self.rows.links()):
+        for row, link in enumerate(self.columns.links()):
             result = self.audited.get(row)
             if result is None:
                 geometry = None
@@ -594,18 +504,11 @@ class _ColumnAudit:
         return found
 
 
-def _carried_mass(path: str, links: list[Link]) -> list[bool]:
-    """For each link (by row): does any link below it in the tree have mass? InputError for
-    links that are no tree (:func:`~rbi.formats.robot.tree_rows`)."""
-    heavy = [link.inertial is not None and link.inertial.mass > 0 for link in links]
-    return _carried_rows(*tree_rows(path, links), heavy)
-
-
-def _carried_rows(parents: list[int], order: list[int], heavy: list[bool]) -> list[bool]:
-    """For each of n links (``parents``: each one's parent row, n for a root; ``order``: their
-    rows parents first; ``heavy``: which have mass): does any link below it have mass?"""
+def _carried(columns: LinkColumns) -> list[bool]:
+    """For each link (by row): does any link below it in the tree have mass?"""
+    parents, heavy = columns.parents, (columns.declared & (columns.masses > 0)).tolist()
     below = [False] * (len(parents) + 1)
-    for row in reversed(order):  # every child before its parent
+    for row in reversed(columns.order):  # every child before its parent
         if below[row] or heavy[row]:
             below[parents[row]] = True
     return below[: len(parents)]
@@ -676,7 +579,7 @@ class _Shapes(NamedTuple):
     sources: list[str]
 
 
-def _one_primitive(model: RobotModel, geometry: str, links: _Rows) -> _Shapes | None:
+def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> _Shapes | None:
     """The :class:`_Shapes` of a URDF or SDF model (None: none, or MJCF): each link's ``geometry``
     elements, or the other kind's when it has none of those (as :func:`chosen_geoms` chooses),
     when they are one solid primitive; what :func:`_primitives_in_bulk` measures."""
@@ -689,7 +592,7 @@ def _one_primitive(model: RobotModel, geometry: str, links: _Rows) -> _Shapes | 
     chosen = {geometry: counts[geometry] == 1, other: (counts[geometry] == 0) & (counts[other] == 1)}
     rows, distinct, which, R, p, sources = [], {}, [], [], [], []  # type: ignore[var-annotated]
     for column in links.geoms:
-        if column.kind not in _PRIMITIVES or column.sizes is None:
+        if column.kind not in SOLID_KINDS or column.sizes is None:
             continue
         at = np.flatnonzero(chosen[column.tag][column.rows])
         if not len(at):
@@ -711,11 +614,8 @@ def _one_primitive(model: RobotModel, geometry: str, links: _Rows) -> _Shapes | 
     return _Shapes(rows, list(distinct), np.concatenate(which), np.concatenate(R), np.concatenate(p), sources)
 
 
-_PRIMITIVES = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
-
-
 def _primitives_in_bulk(
-    model: RobotModel, geometry: str, density: float | None, links: _Rows
+    model: RobotModel, geometry: str, density: float | None, links: LinkColumns
 ) -> _Measured | None:
     """The geometry of the links :func:`_one_primitive` finds, measured on (n, 3, 3) stacks with
     the operations :func:`distribution`, :func:`_sum` and :func:`_geometry_props` make on one

@@ -118,7 +118,7 @@ def _subtree_sums(model: RobotModel, placed) -> tuple[np.ndarray, np.ndarray]:
     n = len(placed.translations)
     mass = np.zeros(n + 1)  # row n: every root's parent, added to and dropped
     first = np.zeros((n + 1, 3))
-    chosen, masses, coms, _ = heavy_links(model, placed)
+    chosen, masses, coms, _ = heavy_links(placed)
     if chosen:
         at = stack_apply(placed.placed_rotations[chosen], coms) + placed.placed_translations[chosen]
         first[chosen] = masses[:, None] * at

@@ -15,14 +15,13 @@ import difflib
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
-from typing import NamedTuple
 
 import numpy as np
 
 from rbi.core.mass import MassProperties, combine
 from rbi.core.rotation import angle_is_kept, axis_angle_matrix, turn_lost_to_rounding
 from rbi.errors import ArgumentError, InputError, literal, shown
-from rbi.formats.robot import LinkColumns, Pose, RobotModel, tree_rows
+from rbi.formats.robot import LinkColumns, Pose, RobotModel
 
 
 def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> dict[str, float]:
@@ -62,16 +61,15 @@ def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> di
 
 @dataclass
 class Placement:
-    """The links placed at one configuration, as arrays (one row a link, ``rows``: link index →
-    row): ``rotations`` (n, 3, 3) and ``translations`` (n, 3) each link's frame in the model's
-    frame; ``joints`` [(row, name, kind, effort limit)] of the revolute and prismatic joints in file order
-    of their links, with ``axes`` and ``anchors`` (k, 3) in the model's frame where the joints
+    """The links placed at one configuration, as arrays (one row a link): ``rotations``
+    (n, 3, 3) and ``translations`` (n, 3) each link's frame in the model's frame; ``joints``
+    [(row, name, kind, effort limit)] of the revolute and prismatic joints in file order of
+    their links, with ``axes`` and ``anchors`` (k, 3) in the model's frame where the joints
     before them leave them; ``frame`` the name of the frame totals are given in (``"root link
     NAME"`` for URDF and SDF, ``"world"`` for MJCF), ``to_frame`` model frame → that frame, and
     ``placed_rotations``/``placed_translations`` each link's frame in that frame, which
     :attr:`placed` gives as :class:`Pose` values."""
 
-    rows: dict[int, int]
     rotations: np.ndarray
     translations: np.ndarray
     joints: list
@@ -81,27 +79,18 @@ class Placement:
     to_frame: Pose
     placed_rotations: np.ndarray
     placed_translations: np.ndarray
-    order: list[tuple[int, int]]
-    """(row, parent row) of each link in :func:`~rbi.formats.robot.depth_first`'s order; a root's
-    parent row is n."""
     levels: list[tuple[list[int], list[int]]]
-    """The rows of each depth in the tree, shallowest first, in that order, with their parents' rows."""
-    columns: LinkColumns | None = None
-    """The model's links as arrays, when they were read in place of its links."""
+    """The rows of each depth in the tree, shallowest first, in
+    :func:`~rbi.formats.robot.depth_first`'s order, with their parents' rows (a root's: n)."""
+    columns: LinkColumns
+    """The model's links as arrays (:meth:`RobotModel.link_columns`)."""
 
     @property
     def placed(self) -> dict[int, Pose]:
         """Link index → its frame in :attr:`frame`."""
-        return {i: Pose(self.placed_rotations[r], self.placed_translations[r]) for i, r in self.rows.items()}
-
-
-def stacked(arrays: list, shape: tuple[int, ...]) -> np.ndarray:
-    """The float arrays of ``shape`` in ``arrays`` as one (n, *shape) array: the values
-    ``np.array(arrays, dtype=float)`` gives, made by one concatenation (numpy's discovery of a
-    list's shape, element by element, takes twice as long for 100,000 links)."""
-    if not arrays:
-        return np.empty((0, *shape))
-    return np.concatenate(arrays, dtype=float).reshape(-1, *shape)
+        return {
+            r: Pose(self.placed_rotations[r], self.placed_translations[r]) for r in range(len(self.rotations))
+        }
 
 
 def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
@@ -110,153 +99,57 @@ def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
     return np.matmul(rotations, vectors[..., None])[..., 0]
 
 
-class Joints(NamedTuple):
-    """A model's joints, one entry a joint, in file order of their links (a link's in its own
-    order): ``rows`` its link's row, ``names`` (None: unnamed), ``kinds`` (None: no joint, a root of
-    link arrays), ``efforts`` the declared effort limits or None, ``axes`` and ``anchors`` (k, 3)
-    in the link's frame at the reference pose."""
-
-    rows: list[int]
-    names: list[str | None]
-    kinds: list[str | None]
-    efforts: list[float | None]
-    axes: np.ndarray
-    anchors: np.ndarray
-
-
-def joint_table(model: RobotModel, columns: LinkColumns | None = None) -> Joints:
-    """The :class:`Joints` of ``model``: of its links' motions, or of ``columns`` (a row's joint)."""
-    if columns is not None:
-        n = len(columns)
-        return Joints(
-            list(range(n)),
-            columns.joint_names,
-            columns.joint_kinds,
-            columns.efforts,
-            columns.axes,
-            np.zeros((n, 3)),
-        )
-    entries = [(row, motion) for row, link in enumerate(model.links) for motion in link.motions]
-    motions = [motion for _, motion in entries]
-    return Joints(
-        [row for row, _ in entries],
-        [motion.name for motion in motions],
-        [motion.kind for motion in motions],
-        [motion.effort_limit for motion in motions],
-        stacked([motion.axis for motion in motions], (3,)),
-        stacked([motion.anchor for motion in motions], (3,)),
-    )
-
-
 def placement(
     model: RobotModel, joints: dict[str, float] | None = None, columns: LinkColumns | None = None
 ) -> Placement:
     """Every link's pose at ``joints``, parents first (a link's pose is its parent's, then its
     origin, then its joints' motions), one level of the tree at a time on (n, 3, 3) stacks;
     InputError for a joint name the model has no revolute or prismatic joint of. ``columns``:
-    the model's links as arrays (:attr:`RobotModel.in_columns`), read in place of its links."""
+    the model's links as arrays, when already made (:meth:`RobotModel.link_columns`)."""
     joints = dict(joints or {})
-    table = joint_table(model, columns)
-    _check_joints(model, joints, table)
-    moving = {row for row, name in zip(table.rows, table.names) if name in joints} if joints else set()
-    n = len(model.links) if columns is None else len(columns)
-    if columns is None:
-        rows = {link.index: row for row, link in enumerate(model.links)}
-    else:
-        rows = dict(zip(range(n), range(n)))
+    columns = model.link_columns() if columns is None else columns
+    _check_joints(model, joints, columns)
+    names = zip(columns.joint_rows, columns.joint_names)
+    moving = {row for row, name in names if name in joints} if joints else set()
+    n = len(columns)
     R = np.empty((n + 1, 3, 3))  # row n: the identity, every root's parent
     t = np.empty((n + 1, 3))
     R[n], t[n] = np.eye(3), np.zeros(3)
     frames: dict[int, list] = {}
-    order, levels = _levels(model, columns)
+    levels = _levels(columns)
     for level, parents in levels:
-        level_R, level_t = _origins(model, columns, level)
+        level_R, level_t = columns.rotations[level], columns.translations[level]
         R[level] = np.matmul(R[parents], level_R)
         t[level] = stack_apply(R[parents], level_t) + t[parents]
         for row in [row for row in level if row in moving] if moving else ():
-            link = model.links[row] if columns is None else columns.link(row)
-            R[row], t[row] = _moved(link, row, Pose(R[row], t[row]), joints, frames)
+            R[row], t[row] = _moved(columns.link(row), row, Pose(R[row], t[row]), joints, frames)
     R, t = R[:n], t[:n]
-    joint_list, axes, anchors = _joint_frames(table, R, t, frames)
+    joint_list, axes, anchors = _joint_frames(columns, R, t, frames)
     frame, to_frame = "world", Pose.identity()
-    if model.format != "mjcf":
-        root, name = _root(model, columns)
-        if root is not None:
-            to_frame = Pose(R[root], t[root]).inverse()
-            frame = f"root link {name}"
+    if model.format != "mjcf" and n:  # the first root link's frame (links that form a tree have one)
+        root = columns.parents.index(n)
+        to_frame = Pose(R[root], t[root]).inverse()
+        frame = f"root link {columns.names[root]}"
     to_R = np.broadcast_to(to_frame.rotation, R.shape)
     placed_R = np.matmul(to_R, R)
     placed_t = stack_apply(to_R, t) + to_frame.translation
-    return Placement(
-        rows,
-        R,
-        t,
-        joint_list,
-        axes,
-        anchors,
-        frame,
-        to_frame,
-        placed_R,
-        placed_t,
-        order,
-        levels,
-        columns,
-    )
+    return Placement(R, t, joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, levels, columns)
 
 
-def _origins(
-    model: RobotModel, columns: LinkColumns | None, rows: list[int]
-) -> tuple[np.ndarray, np.ndarray]:
-    """The origins (rotations (k, 3, 3), translations (k, 3)) of the links of ``rows``."""
-    if columns is not None:
-        return columns.rotations[rows], columns.translations[rows]
-    links = model.links
-    return (
-        stacked([links[row].origin.rotation for row in rows], (3, 3)),
-        stacked([links[row].origin.translation for row in rows], (3,)),
-    )
-
-
-def _root(model: RobotModel, columns: LinkColumns | None) -> tuple[int | None, str | None]:
-    """The row and name of the first root link (None, None: no root)."""
-    if columns is not None:
-        row = columns.parents.index(-1)
-        return row, columns.names[row]
-    for row, link in enumerate(model.links):
-        if link.parent is None:
-            return row, link.name
-    return None, None
-
-
-def _levels(
-    model: RobotModel, columns: LinkColumns | None = None
-) -> tuple[list[tuple[int, int]], list[tuple[list[int], list[int]]]]:
-    """(row, parent row) in :func:`~rbi.formats.robot.depth_first`'s order (a root's parent:
-    row n, the identity), and the same rows grouped by depth in the tree with their parents'
-    rows, shallowest first. InputError for links that are no tree (:func:`tree_rows`)."""
-    if columns is not None:
-        n = len(columns)
-        parents = [n if parent < 0 else parent for parent in columns.parents]
-        return _grouped_levels(columns.order, parents, n)
-    parents, rows = tree_rows(model.path, model.links)
-    return _grouped_levels(rows, parents, len(parents))
-
-
-def _grouped_levels(rows: list[int], parents, n: int) -> tuple[list[tuple[int, int]], list]:
-    """:func:`_levels` of the ``rows`` in parents-first order, each with its parent's row
-    (``parents[row]``; n for a root)."""
-    depth = [0] * (n + 1)
-    order: list[tuple[int, int]] = []
+def _levels(columns: LinkColumns) -> list[tuple[list[int], list[int]]]:
+    """The rows of each depth in the tree, shallowest first, in
+    :func:`~rbi.formats.robot.depth_first`'s order, with their parents' rows (a root's: n)."""
+    parents = columns.parents
+    depth = [0] * (len(parents) + 1)
     groups: list[tuple[list[int], list[int]]] = []
-    for row in rows:
+    for row in columns.order:
         parent = parents[row]
-        d = depth[row] = 0 if parent == n else depth[parent] + 1
+        d = depth[row] = 0 if parent == len(parents) else depth[parent] + 1
         if d == len(groups):
             groups.append(([], []))
         groups[d][0].append(row)
         groups[d][1].append(parent)
-        order.append((row, parent))
-    return order, groups
+    return groups
 
 
 def _moved(link, row: int, pose: Pose, joints: dict[str, float], frames: dict[int, list]) -> tuple:
@@ -271,14 +164,17 @@ def _moved(link, row: int, pose: Pose, joints: dict[str, float], frames: dict[in
     return pose.rotation, pose.translation
 
 
-def _joint_frames(table: Joints, R: np.ndarray, t: np.ndarray, moved: dict[int, list]) -> tuple:
-    """[(row, name, kind, effort limit)] of every revolute and prismatic joint of ``table``, and
-    their axes and anchors (k, 3) in the model's frame: at the link's pose, or as :func:`_moved`
-    found them (``moved``: row → each joint's (axis, anchor))."""
-    chosen = [k for k, kind in enumerate(table.kinds) if kind in ("revolute", "prismatic")]
-    rows = [table.rows[k] for k in chosen]
-    found = [(row, table.names[k], table.kinds[k], table.efforts[k]) for row, k in zip(rows, chosen)]
-    axes, anchors = table.axes[chosen], table.anchors[chosen]
+def _joint_frames(columns: LinkColumns, R: np.ndarray, t: np.ndarray, moved: dict[int, list]) -> tuple:
+    """[(row, name, kind, effort limit)] of every revolute and prismatic joint of ``columns``,
+    and their axes and anchors (k, 3) in the model's frame: at the link's pose, or as
+    :func:`_moved` found them (``moved``: row → each joint's (axis, anchor))."""
+    chosen = [k for k, kind in enumerate(columns.joint_kinds) if kind in ("revolute", "prismatic")]
+    rows = [columns.joint_rows[k] for k in chosen]
+    found = [
+        (row, columns.joint_names[k], columns.joint_kinds[k], columns.efforts[k])
+        for row, k in zip(rows, chosen)
+    ]
+    axes, anchors = columns.axes[chosen], columns.anchors[chosen]
     left = {row: iter(frames) for row, frames in moved.items()}
     for i, row in enumerate(rows):
         if row in left:
@@ -292,12 +188,12 @@ def _joint_frames(table: Joints, R: np.ndarray, t: np.ndarray, moved: dict[int, 
     return found, axes, anchors
 
 
-def _check_joints(model: RobotModel, joints: dict[str, float], table: Joints) -> None:
-    """ArgumentError naming ``joints`` for a name no revolute or prismatic joint of ``table`` has,
-    or a revolute value whose turn rounding loses."""
+def _check_joints(model: RobotModel, joints: dict[str, float], columns: LinkColumns) -> None:
+    """ArgumentError naming ``joints`` for a name no revolute or prismatic joint of ``columns``
+    has, or a revolute value whose turn rounding loses."""
     if not joints:
         return
-    pairs = zip(table.names, table.kinds)
+    pairs = zip(columns.joint_names, columns.joint_kinds)
     movable = {name: kind for name, kind in pairs if name and kind in ("revolute", "prismatic")}
     unknown = [name for name in joints if name not in movable]
     if unknown:
@@ -334,7 +230,7 @@ def totals(
     the links already placed at ``joints`` (:func:`placement`)."""
     placed = placement(model, joints) if at is None else at
     frame = placed.frame
-    rows, masses, own_coms, own_inertias = heavy_links(model, placed)
+    rows, masses, own_coms, own_inertias = heavy_links(placed)
     try:
         if not rows:
             raise ValueError("no link with mass")
@@ -355,24 +251,12 @@ def totals(
     return total
 
 
-def heavy_links(model: RobotModel, placed: Placement) -> tuple[list[int], np.ndarray, np.ndarray, np.ndarray]:
+def heavy_links(placed: Placement) -> tuple[list[int], np.ndarray, np.ndarray, np.ndarray]:
     """The links with a declared mass other than 0: their rows in ``placed``, masses (kg),
     centres of mass (m) and inertias about them (kg·m²) in their own frames."""
     columns = placed.columns
-    if columns is not None:
-        rows = np.flatnonzero(columns.declared & (columns.masses != 0.0)).tolist()
-        return rows, columns.masses[rows], columns.coms[rows], columns.inertias[rows]
-    chosen = [
-        (placed.rows[link.index], link.inertial.properties)
-        for link in model.links
-        if link.inertial is not None and link.inertial.mass != 0.0
-    ]
-    return (
-        [row for row, _ in chosen],
-        np.array([props.mass for _, props in chosen], dtype=float),
-        stacked([props.center_of_mass for _, props in chosen], (3,)),
-        stacked([props.inertia_about_com for _, props in chosen], (3, 3)),
-    )
+    rows = np.flatnonzero(columns.declared & (columns.masses != 0.0)).tolist()
+    return rows, columns.masses[rows], columns.coms[rows], columns.inertias[rows]
 
 
 def _placed_inertias(placed: Placement, rows: list[int], inertias: np.ndarray) -> np.ndarray:
