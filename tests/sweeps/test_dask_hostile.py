@@ -7,6 +7,7 @@ See docs/security.md, "Ports".
 
 from __future__ import annotations
 
+import contextlib
 import os
 import signal
 import socket
@@ -18,7 +19,7 @@ import urllib.request
 
 import pytest
 
-from tests.conftest import BODIES, one_line_exit_2
+from tests.conftest import BODIES, one_line_exit_2, run_rbi
 from tests.conftest import run_rbi_inprocess as rbi
 
 pytest.importorskip("distributed")
@@ -216,3 +217,30 @@ def test_more_workers_than_cores_are_clamped_with_one_line(monkeypatch):
     assert seen == [execute.available_cores()]
     assert len(proc.stderr.strip().splitlines()) == 1 and "--workers 1024" in proc.stderr
     assert proc.stdout == rbi(*args).stdout
+
+
+def test_a_server_that_speaks_first_is_exit_2_at_once():
+    """rbi 4: an SSH server's banner read as a Dask frame length ('MemoryError 2.82 EiB') after
+    21 s, then a traceback from Client.__del__. The server lives at most 30 s."""
+    server = socket.socket()
+    server.bind(("127.0.0.1", 0))
+    server.listen(8)
+    server.settimeout(30)
+
+    def serve():
+        with contextlib.suppress(OSError):
+            while True:
+                connection, _ = server.accept()
+                connection.sendall(b"SSH-2.0-OpenSSH_9.0\r\n")
+
+    threading.Thread(target=serve, daemon=True).start()
+    address = f"tcp://127.0.0.1:{server.getsockname()[1]}"
+    started = time.monotonic()
+    try:
+        proc = run_rbi("sweep", BOLTED, "--spin", "200", "--duration", "0.1", "--dask", address)
+    finally:
+        server.close()
+    elapsed = time.monotonic() - started
+    one_line_exit_2(proc, f"--dask {address}: ")
+    assert "SSH-2.0-OpenSSH_9.0" in proc.stderr and "Error" not in proc.stderr, proc.stderr
+    assert elapsed < 8, elapsed

@@ -11,6 +11,8 @@ import queue
 import re
 import shutil
 import signal
+import socket
+import struct
 import tempfile
 import threading
 import time
@@ -19,7 +21,7 @@ from collections.abc import Callable
 from concurrent.futures import Future
 from typing import Any
 
-from rbi.errors import ArgumentError, InputError, literal
+from rbi.errors import ArgumentError, InputError, literal, shown
 
 Rows = list[list[Any]]
 
@@ -345,6 +347,7 @@ def connect(address: str):
     within :data:`CONNECT_SECONDS` (refused, unreachable, or a server that accepts and stays
     silent, on which Dask's own timeout never fires)."""
 
+    _refuse_a_talker(address)
     # distributed: optional (the 'dask' extra), imported only when used
     from distributed import Client
 
@@ -366,6 +369,31 @@ def connect(address: str):
     raise InputError(
         f"--dask {address}: no Dask scheduler answered there within {CONNECT_SECONDS:g} s ({why})"
     )
+
+
+TALKER_SECONDS = 1.0
+"""How long :func:`_refuse_a_talker` listens for a server's first bytes."""
+
+
+def _refuse_a_talker(address: str) -> None:
+    """Refuse a server that speaks first with something no Dask scheduler sends (an SSH or
+    SMTP banner): Dask would read its first 8 bytes as a frame length (``SSH-2.0-`` is
+    2.82 EiB) and fail after its timeout with a MemoryError. A scheduler's first frame (its
+    handshake, sent on accept) is a few hundred bytes; a TLS server says nothing before the
+    client does. A silent or slow server is left to Dask's own connection."""
+
+    found = _ADDRESS.fullmatch(address)
+    if found is None:
+        return
+    host = found.group(2).strip("[]")
+    heard = b""
+    with contextlib.suppress(OSError), socket.create_connection((host, int(found.group(3))), 2) as probe:
+        probe.settimeout(TALKER_SECONDS)
+        while len(heard) < 8 and (chunk := probe.recv(64)):
+            heard += chunk
+    if heard and (found.group(1) == "tls" or len(heard) < 8 or struct.unpack("<Q", heard[:8])[0] > 2**26):
+        said = heard.decode("ascii", "replace").strip()
+        raise InputError(f"--dask {address}: not a Dask scheduler (it speaks first: {shown(said, 60)})")
 
 
 def _ignore_sigint():
