@@ -1,0 +1,719 @@
+"""Bodies: `load` and `loads` a spec, a `Body`'s mass properties (`Principal`, `Part`, `Momentum`,
+`Dynamics`, `Check`) and its export."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Mapping, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from rbi.core.dynamics import (
+    angle_between_deg,
+    angular_momentum_about_point,
+    kinetic_energy,
+    newton_euler_about,
+)
+from rbi.core.inertia import moment_about_axis, principal_axes, radii_of_gyration, re_express, unit_axis
+from rbi.core.mass import MassProperties, inertia_shares
+from rbi.core.rotation import angle_is_kept, compose_world_rotations, turn_lost_to_rounding
+from rbi.errors import ArgumentError, SpecError, literal
+from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
+from rbi.reprs import QUANTITY_COLUMNS, TableRepr
+from rbi.runs.values import vector_value
+from rbi.spec.checks import Check, run_checks
+from rbi.spec.points import NO_PIVOT, reference_choices, reference_name
+from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
+from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
+from rbi.spec.units import convert_body
+from rbi.text import number, vector_text
+
+SPEC_TEXT_LABELS = ("<stdin>", "<string>", "<dict>")
+"""How a spec that is no file is named (`Body.path`): read from standard input, text, a dict."""
+
+Point = str | Sequence[float] | np.ndarray
+"""A reference point: ``"com"``, ``"origin"``, ``"pivot"``, or (x, y, z) in body coordinates
+(spec length unit)."""
+
+
+def load(
+    source: str | os.PathLike[str] | Mapping[str, Any], *, allow_outside_paths: bool | None = None
+) -> Body:
+    """Read, validate and translate a body spec.
+
+    Args:
+        source: the path of a spec file (``str`` or ``os.PathLike``; a ``str`` is always a
+            path, ``"-"`` standard input, named ``<stdin>`` in messages), or a ``dict`` shaped
+            like the YAML spec (named ``<dict>``). Text is read by `loads`. Files the spec names
+            (meshes, point clouds) are looked for beside the spec file, or in the current folder
+            for a dict.
+        allow_outside_paths: let the spec name files outside its own folder (the CLI's
+            ``--allow-outside-paths``); None: as an enclosing `outside_paths_allowed` block
+            says (not allowed outside one).
+
+    Returns:
+        The `Body`.
+
+    Raises:
+        SpecError: the file is missing or unreadable, the YAML is malformed, or the spec is
+            invalid; ``str(error)`` is ``file: part: field: what is wrong``.
+        TypeError: ``source`` is neither a path nor a dict.
+    """
+    # not at top level: `rbi audit` would load rbi.spec.load too
+    from rbi.spec import load as spec_load
+
+    if isinstance(source, Mapping):
+        spec_load.check_plain_data(dict(source), "<dict>")
+        return _body(
+            lambda: (spec_load.body_from_raw(dict(source), "<dict>"), dict(source), None),
+            "<dict>",
+            allow_outside_paths,
+        )
+    if not isinstance(source, (str, os.PathLike)):
+        raise TypeError(
+            f"source: expected a path (str or os.PathLike) or a dict, got {type(source).__name__}"
+        )
+    path = os.fspath(source)
+    path = os.fsdecode(path) if isinstance(path, bytes) else path
+    if "\n" in path and not os.path.lexists(path):
+        raise ArgumentError(
+            "source", "is text, not a path (a str is always a path): read spec text with rbi.loads"
+        )
+
+    def read() -> tuple[Any, Any, bytes | None]:
+        raw, data = spec_load.read_spec(path)  # "-" reads standard input
+        return spec_load.body_from_raw(raw, spec_load.spec_label(path)), raw, data
+
+    return _body(read, spec_load.spec_label(path), allow_outside_paths)
+
+
+def loads(text: str | bytes, *, allow_outside_paths: bool | None = None) -> Body:
+    """Read a body spec from YAML or JSON text (named ``<string>`` in messages; files it names
+    are looked for in the current folder). Otherwise as `load`."""
+    # not at top level: `rbi audit` would load rbi.spec.load too
+    from rbi.spec import load as spec_load
+
+    if isinstance(text, bytes):
+        try:
+            text = text.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise SpecError(f"<string>: not UTF-8 text (byte {exc.start})", file="<string>") from None
+    if not isinstance(text, str):
+        raise TypeError(f"text: expected YAML or JSON text (str or bytes), got {type(text).__name__}")
+
+    def read() -> tuple[Any, Any, bytes | None]:
+        raw = spec_load.parse_spec_text(spec_load.check_spec_text(text, "<string>"), "<string>")
+        return spec_load.body_from_raw(raw, "<string>"), raw, None
+
+    return _body(read, "<string>", allow_outside_paths)
+
+
+def _body(
+    read: Callable[[], tuple[Any, Any, bytes | None]], label: str, allow_outside_paths: bool | None
+) -> Body:
+    """The `Body` ``read()`` gives (loaded body, parsed spec, the bytes of its file or None); a
+    `SpecError` whose line starts with ``label`` gets it as its ``file``."""
+
+    allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
+    try:
+        with outside_paths_allowed(allowed):
+            loaded, raw, data = read()
+    except SpecError as exc:
+        if exc.file is None and str(exc).startswith(label + ": "):
+            exc.file = label
+        raise
+    return Body(loaded, raw, data)
+
+
+def validate(
+    paths: str | os.PathLike[str] | Sequence[str | os.PathLike[str]],
+    *,
+    package_paths: Mapping[str, str] | Sequence[str] | None = None,
+) -> list[list[str]]:
+    """Check spec files without computing anything, as ``rbi validate`` does: for each path,
+    the list of its problems, one line each (empty when the file is valid). A robot file (URDF,
+    SDF, MJCF) gives every link whose inertia is not physical; ``package_paths`` (``{NAME:
+    DIR}`` or ``["NAME=DIR", ...]``) finds its ``package://`` meshes. SpecError for a bad
+    ``package_paths``."""
+    # not at top level: `rbi inertia` would load rbi.formats.robot_paths too
+    from rbi.formats.robot_paths import parse_package_paths
+
+    # not at top level: `rbi audit` would load rbi.spec.load too
+    from rbi.spec.load import file_problems
+
+    packages = parse_package_paths(package_paths)
+    if isinstance(paths, (str, os.PathLike)):
+        paths = [paths]
+    if not isinstance(paths, Sequence) or not all(isinstance(p, (str, os.PathLike)) for p in paths):
+        raise TypeError(f"paths: expected a path (str or os.PathLike) or a list of them, got {paths!r:.80}")
+    return [file_problems(os.fspath(path), packages) for path in paths]
+
+
+def spec_schema() -> dict[str, Any]:
+    """The JSON Schema (draft 2020-12) of a body spec, as ``rbi schema`` prints it (for
+    editors: see docs/schema.md)."""
+    # not at top level: `rbi audit` would load rbi.spec.models too
+    from rbi.spec.models import body_spec_json_schema
+
+    return body_spec_json_schema()
+
+
+def unit_vector(direction: Sequence[float] | np.ndarray) -> np.ndarray:
+    """``direction / |direction|`` as (3,), for any finite non-zero vector however large or
+    small its components (1e-300 and 1e300 alike); ArgumentError naming ``direction`` else."""
+
+    try:
+        return unit_axis(direction)
+    except (ValueError, TypeError):
+        raise ArgumentError(
+            "direction", f"must be a non-zero finite vector (x, y, z), got {literal(direction)}"
+        ) from None
+
+
+@dataclass(frozen=True)
+class Principal(TableRepr):
+    """Principal moments and axes about a point.
+
+    Attributes:
+        moments: (3,) ascending, mass·length² (spec units).
+        axes: (3, 3) unit vectors in the body frame, one per **row** (``axes[i]`` belongs to
+            ``moments[i]``), right-handed — as ``rbi principal`` prints them.
+        radii_of_gyration: (3,) ``sqrt(moment / mass)``, length unit.
+        about: (3,) the reference point, body frame, length unit.
+    """
+
+    moments: np.ndarray
+    axes: np.ndarray
+    radii_of_gyration: np.ndarray
+    about: np.ndarray
+
+    def _table(self) -> tuple[str, list[list[str]], tuple[str, ...]]:
+        rows = [
+            [str(i + 1), number(m, 8), vector_text(axis), number(k)]
+            for i, (m, axis, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration))
+        ]
+        title = f"principal moments and axes about {vector_text(self.about)}"
+        return title, rows, ("axis", "moment", "direction (body axes)", "radius of gyration")
+
+
+@dataclass(frozen=True)
+class Part(TableRepr):
+    """One part of a body, in file order (spec units, body frame).
+
+    Attributes:
+        name: the part's ``name`` (``parts[i]`` when it has none).
+        shape: the part's shape (``cylinder``, ``mesh`` ... or ``point_cloud``).
+        hole: True for a part removed from the body (``subtract: true``).
+        mass: the part's mass (negative for a hole).
+        center_of_mass: (3,) the part's centre of mass.
+        inertia_about_com: (3, 3) the part's inertia about its own centre of mass, body axes.
+        volume: the solid's volume (length³; negative for a hole, as its mass, so the parts'
+            volumes add up to the body's), or None when it has none (points, custom parts).
+        principal_moments: (3,) ascending, about the part's own centre of mass (negative for a
+            hole), mass·length².
+        inertia_share: the part's share of the trace of the body's inertia about the body's
+            centre of mass (the shares add up to 1; a hole's is negative).
+        integration_error: for a STEP part, the relative error estimate of its exact-geometry
+            integration; else None.
+    """
+
+    name: str
+    shape: str
+    hole: bool
+    mass: float
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray
+    volume: float | None
+    principal_moments: np.ndarray
+    inertia_share: float
+    integration_error: float | None = None
+
+    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
+        rows = [
+            ("shape", "", self.shape + (" (hole)" if self.hole else "")),
+            ("mass", "", number(self.mass, 8)),
+            ("centre of mass", "", vector_text(self.center_of_mass)),
+            *(
+                (f"inertia about its CoM, row {i + 1}", "", vector_text(row))
+                for i, row in enumerate(self.inertia_about_com)
+            ),
+            ("volume", "", number(self.volume, 8)),
+        ]
+        return f"part {self.name}", rows, QUANTITY_COLUMNS
+
+
+@dataclass(frozen=True)
+class Momentum:
+    """Angular momentum and kinetic energy of the body at one instant (spec units, body axes).
+
+    Attributes:
+        omega: (3,) angular velocity, rad/s.
+        about: (3,) the reference point.
+        com_velocity: (3,) velocity of the centre of mass, length/s.
+        angular_momentum: (3,) about ``about``, mass·length²/s.
+        angle_deg: angle between the angular momentum and ω, degrees (None when either is zero).
+        kinetic_energy: mass·length²/s².
+    """
+
+    omega: np.ndarray
+    about: np.ndarray
+    com_velocity: np.ndarray
+    angular_momentum: np.ndarray
+    angle_deg: float | None
+    kinetic_energy: float
+
+
+@dataclass(frozen=True)
+class Dynamics:
+    """Newton–Euler at one instant, about a point (spec units, body axes), as `Body.dynamics`
+    gives it.
+
+    Attributes:
+        mode: ``"inverse"`` (loads from the motion) or ``"forward"`` (motion from the loads).
+        about: (3,) the reference point o, length unit.
+        omega: (3,) angular velocity, rad/s.
+        alpha: (3,) angular acceleration, rad/s².
+        point_acceleration: (3,) acceleration of o, length/s².
+        force: (3,) the force on the body, mass·length/s² (``held``: the force holding o).
+        torque: (3,) the torque about o, mass·length²/s².
+        held: o was held (a pivot): forward dynamics without a force about a point other than
+            the centre of mass.
+    """
+
+    mode: str
+    about: np.ndarray
+    omega: np.ndarray
+    alpha: np.ndarray
+    point_acceleration: np.ndarray
+    force: np.ndarray
+    torque: np.ndarray
+    held: bool
+
+
+class Body(TableRepr):
+    """A validated rigid body, as `load` returns it (not constructed directly).
+
+    All numbers are in the spec's own units (`units`) and the body frame (the spec's
+    coordinates). A Body does not change; every method returns new arrays.
+    """
+
+    def __init__(self, loaded: Any, raw: Any = None, spec_bytes: bytes | None = None) -> None:
+        self._loaded = loaded
+        self._raw = raw
+        self._spec_bytes = spec_bytes  # the spec file's bytes as read (None: text, a dict, stdin)
+        self.warnings: list[str] = list(loaded.warnings)
+        """Warnings about the spec (units that look wrong for a spec without ``units:``: one
+        line naming the part and the ``units:`` that would fit), the lines the CLI prints on
+        stderr and puts in JSON as ``"warnings"``."""
+
+    @property
+    def path(self) -> str:
+        """Where the spec came from: its path, or ``<stdin>``, ``<string>``, ``<dict>``."""
+        return self._loaded.path
+
+    @property
+    def files_read(self) -> list[str]:
+        """The files the body was read from, which no output of a run on it may replace: the
+        spec's path (unless it came from text, a dict or standard input), then each file the
+        spec names (meshes, STEP files, the point cloud) as an absolute path."""
+        spec = [] if self.path in SPEC_TEXT_LABELS else [self.path]
+        return [*spec, *self._loaded.files]
+
+    @property
+    def name(self) -> str | None:
+        """The spec's ``name``, or None."""
+        return self._loaded.name
+
+    @property
+    def units(self) -> dict[str, str]:
+        """The spec's units: ``{"length": ..., "mass": ...}``, e.g. ``{"length": "m", "mass": "kg"}``."""
+        return dict(self._loaded.units)
+
+    @property
+    def unit_labels(self) -> dict[str, str]:
+        """The printed unit of each quantity in the spec's units: ``length``, ``mass``,
+        ``inertia`` (``kg·m²``), ``angular_momentum``, ``energy`` (``J`` in SI), ``density``,
+        ``velocity``, ``omega``."""
+        return dict(self._loaded.labels)
+
+    @property
+    def mass(self) -> float:
+        """Total mass (holes subtracted), mass unit."""
+        return float(self._loaded.props.mass)
+
+    @property
+    def center_of_mass(self) -> np.ndarray:
+        """(3,) centre of mass, body frame, length unit."""
+        return np.array(self._loaded.props.center_of_mass, dtype=float)
+
+    @property
+    def pivot(self) -> np.ndarray | None:
+        """(3,) the fixed point of a top, body frame, length unit; None for a free body."""
+        return None if self._loaded.pivot is None else np.array(self._loaded.pivot, dtype=float)
+
+    @property
+    def spin_axis(self) -> np.ndarray:
+        """(3,) unit vector, body frame: the axis `simulate`'s ``spin`` turns about and whose
+        tilt and precession it reports, unless told otherwise — the spec's ``spin_axis``, else
+        the body's symmetry axis (exactly two equal principal moments about the pivot, or about
+        the centre of mass of a free body), pointing from the pivot towards the centre of mass
+        (or with its largest component positive), else body z."""
+        # not at top level: `rbi inertia` would load rbi.runs.run too
+        from rbi.runs.run import body_spin_axis
+
+        return body_spin_axis(self._loaded)
+
+    def point(self, about: Point = "com") -> np.ndarray:
+        """The reference point ``about`` as (3,) body coordinates, length unit.
+
+        ``"com"``: the centre of mass; ``"origin"``: (0, 0, 0); ``"pivot"``: the spec's pivot
+        (ValueError when there is none); or a point (x, y, z)."""
+
+        key = reference_name(about) if isinstance(about, str) else vector_value(about, "about")
+        if key is None:
+            raise ArgumentError("about", f"expected {reference_choices('(x, y, z)')}, got {literal(about)}")
+        point = self._loaded.point(key)
+        if point is None:
+            raise ArgumentError("about", NO_PIVOT, file=self.path)
+        return np.array(point, dtype=float)
+
+    def _refuse_non_finite(self, **results: Any) -> None:
+        """ValueError (an `ArgumentError` naming the file) when a result overflowed: inputs of
+        absurd size (``about=(1e200, 0, 0)``, ``omega=(1e200, 0, 0)``) give inf or NaN, which no
+        caller can use (the CLI prints the message as bad input, exit 2)."""
+        bad = [
+            name for name, value in results.items() if value is not None and not np.all(np.isfinite(value))
+        ]
+        if bad:
+            raise ArgumentError(
+                (),
+                f"result{'s' if len(bad) > 1 else ''} {', '.join(bad)} {'are' if len(bad) > 1 else 'is'} not "
+                "finite: the input values are too large for double precision",
+                file=self.path,
+            )
+
+    def inertia(
+        self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None
+    ) -> np.ndarray:
+        """The (3, 3) inertia matrix about a point, mass·length² (tensor sign: ``I_xy = -∫xy dm``).
+
+        Args:
+            about: the reference point (see `point`): ``"com"`` (default), ``"origin"``,
+                ``"pivot"`` or (x, y, z) in body coordinates.
+            axes: None for body axes; or turns of the body about world axes, applied in
+                order — a sequence of ``("x"|"y"|"z", degrees)`` pairs; or a (3, 3) rotation
+                matrix R, body → world. The matrix is then given in world axes: ``R I Rᵀ``.
+        """
+
+        rotation = None if axes is None else _rotation(axes)
+        with np.errstate(over="ignore", invalid="ignore"):
+            matrix = self._loaded.props.inertia_about(self.point(about))
+            if rotation is not None:
+                matrix = re_express(matrix, rotation)
+        if not isinstance(about, str) and not np.all(np.isfinite(matrix)):
+            raise ArgumentError(
+                "about",
+                "the point is too far from the body: the inertia about it overflows double precision "
+                f"(got {literal(np.asarray(about).tolist())})",
+                file=self.path,
+            )
+        self._refuse_non_finite(inertia=matrix)
+        return matrix
+
+    def principal(self, about: Point = "com") -> Principal:
+        """Principal moments (ascending) and axes (rows, body frame, right-handed) about a point
+        (default the centre of mass), as ``rbi principal`` prints them."""
+
+        point = self.point(about)
+        moments, axes = principal_axes(self.inertia(about))
+        # + 0.0: no -0.0 components (the CLI prints 0 there too)
+        return Principal(
+            moments=np.asarray(moments) + 0.0,
+            axes=np.asarray(axes) + 0.0,
+            radii_of_gyration=np.asarray(radii_of_gyration(list(moments), self.mass)),
+            about=point,
+        )
+
+    def parts(self) -> list[Part]:
+        """Each part's mass properties, in file order (see `Part`)."""
+        # not at top level: `rbi audit` would load rbi.spec.translate and rbi.spec.volumes too
+        from rbi.spec.translate import integration_errors
+        from rbi.spec.volumes import part_volume
+
+        loaded = self._loaded
+        spec_parts = list(loaded.spec.parts) if loaded.spec is not None else []
+        shares = inertia_shares(loaded.elements, loaded.props)
+        errors = integration_errors(loaded.spec) or []
+        # volumes are computed in the spec's units: a body in other units (`in_units`) scales them
+        cube = (
+            1.0
+            if not spec_parts
+            else LENGTH_UNITS[loaded.spec.units.length] / LENGTH_UNITS[loaded.length_unit]
+        )
+        out = []
+        for i, element in enumerate(loaded.elements):
+            part = spec_parts[i] if i < len(spec_parts) else None
+            volume = None if part is None else part_volume(part)
+            if volume is not None and getattr(part, "subtract", False):
+                volume = -volume  # a hole takes its volume away, as its mass
+            out.append(
+                Part(
+                    name=loaded.part_names[i] or f"parts[{i}]",
+                    shape=part.shape if part is not None else "point_cloud",
+                    hole=bool(getattr(part, "subtract", False)),
+                    mass=float(element.mass),
+                    center_of_mass=np.array(element.center_of_mass, dtype=float),
+                    inertia_about_com=np.array(element.inertia_about_com, dtype=float),
+                    volume=volume if volume is None or cube == 1.0 else volume * cube**3,
+                    principal_moments=principal_axes(element.inertia_about_com)[0],
+                    inertia_share=float(shares[i]),
+                    integration_error=errors[i] if i < len(errors) else None,
+                )
+            )
+        return out
+
+    def momentum(
+        self, omega: Sequence[float], about: Point = "com", velocity: Sequence[float] | None = None
+    ) -> Momentum:
+        """Angular momentum about a point and kinetic energy, for angular velocity ``omega``
+        (body axes, rad/s).
+
+        Args:
+            omega: (3,) angular velocity, rad/s, body axes.
+            about: the reference point (see `point`).
+            velocity: (3,) velocity of the centre of mass, length/s, body axes. None: the
+                ``about`` point is fixed and the body turns about it (``v = ω × r``).
+        """
+
+        w = np.array(vector_value(omega, "omega"))
+        point = self.point(about)
+        props = self._loaded.props
+        com_from_point = props.center_of_mass - point
+        v_com = (
+            np.cross(w, com_from_point) if velocity is None else np.array(vector_value(velocity, "velocity"))
+        )
+        with np.errstate(over="ignore", invalid="ignore"):
+            h = angular_momentum_about_point(props.inertia_about_com, props.mass, com_from_point, w, v_com)
+            energy = float(kinetic_energy(props.inertia_about_com, w, props.mass, v_com))
+        self._refuse_non_finite(com_velocity=v_com, angular_momentum=h, kinetic_energy=energy)
+        return Momentum(
+            omega=w,
+            about=point,
+            com_velocity=v_com,
+            angular_momentum=np.asarray(h),
+            angle_deg=angle_between_deg(h, w),
+            kinetic_energy=energy,
+        )
+
+    @property
+    def mass_properties(self) -> MassProperties:
+        """The body's mass properties as one immutable value: ``mass``, ``center_of_mass`` (3,),
+        ``inertia_about_com`` (3, 3, body axes) and ``frame`` (``"body"``), spec units;
+        ``.inertia_about(point)`` shifts it by the parallel-axis theorem."""
+        return self._loaded.props
+
+    def in_units(self, length: str, mass: str) -> Body:
+        """The same body with every number in other units: lengths in ``length`` (a key of
+        `LENGTH_UNITS`, e.g. ``"mm"``), masses in ``mass`` (a key of `MASS_UNITS`, e.g.
+        ``"g"``), inertias in mass·length²; the pivot and each part follow."""
+
+        for parameter, value, known in (("length", length, LENGTH_UNITS), ("mass", mass, MASS_UNITS)):
+            if value not in known:
+                raise ArgumentError(parameter, f"expected one of {', '.join(known)}, got {literal(value)}")
+        return Body(convert_body(self._loaded, length, mass), self._raw, self._spec_bytes)
+
+    def moment_about_axis(
+        self, axis: Sequence[float], about: Point = "com", axes: Sequence[tuple[str, float]] | None = None
+    ) -> float:
+        """The scalar moment of inertia ``nᵀ I n`` (mass·length²) about the line through
+        ``about`` along ``axis`` (any non-zero length), with ``axis`` in the axes of
+        ``inertia(about, axes)``: body axes, or world axes after ``axes``."""
+
+        matrix = self.inertia(about, axes)
+        try:
+            with np.errstate(over="ignore", invalid="ignore"):
+                moment = moment_about_axis(matrix, axis)
+        except ValueError:
+            raise ArgumentError(
+                "axis", f"must be a non-zero finite direction (x, y, z), got {literal(axis)}"
+            ) from None
+        self._refuse_non_finite(moment=moment)
+        return moment
+
+    def check(self) -> list[Check]:
+        """Each expectation of the spec's ``expect:`` block (see docs/check.md) against the
+        body, as ``rbi check`` compares them (see `Check`), in the spec's units. SpecError when
+        the spec has none."""
+
+        loaded, spec = self._loaded, self._loaded.spec
+        if spec is not None and (spec.units.length, spec.units.mass) != (
+            loaded.length_unit,
+            loaded.mass_unit,
+        ):
+            loaded = convert_body(loaded, spec.units.length, spec.units.mass)
+        return run_checks(loaded)
+
+    def dynamics(
+        self,
+        omega: Sequence[float],
+        *,
+        about: Point = "com",
+        alpha: Sequence[float] | None = None,
+        point_acceleration: Sequence[float] | None = None,
+        force: Sequence[float] | None = None,
+        torque: Sequence[float] | None = None,
+    ) -> Dynamics:
+        """Newton–Euler at one instant, about the point ``about`` (see `point`), every vector
+        in body axes and spec units: inverse with ``alpha`` (the force and the torque about
+        ``about`` that angular acceleration needs), else forward with ``force``/``torque`` (the
+        accelerations they give). Without ``force``, a point other than ``"com"`` is held (a
+        pivot: its acceleration is ``point_acceleration``) and the force holding it is found.
+
+        Args:
+            omega: (3,) angular velocity, rad/s.
+            alpha: (3,) angular acceleration, rad/s².
+            point_acceleration: (3,) acceleration of ``about``, length/s² (default 0).
+            force: (3,) force on the body, mass·length/s².
+            torque: (3,) torque about ``about``, mass·length²/s².
+        """
+
+        if (alpha is None) == (force is None and torque is None):
+            raise ArgumentError(("alpha", "force"), "give either alpha (inverse) or force/torque (forward)")
+        name = reference_name(about)  # None for a point (x, y, z)
+        about_com = name == "com"
+        point = self.point(about)
+        props = self._loaded.props
+        inertia = self.inertia(about)
+        if alpha is None and np.linalg.matrix_rank(inertia) < 3:
+            where = name or f"point {literal(point.tolist())}"
+            raise ArgumentError(
+                (),
+                f"the inertia about the {where} is singular: the body cannot be given an angular acceleration",
+                file=self.path,
+            )
+        given = dict(alpha=alpha, point_acceleration=point_acceleration, force=force, torque=torque)
+        vectors = {k: None if v is None else np.array(vector_value(v, k)) for k, v in given.items()}
+        w = np.array(vector_value(omega, "omega"))
+        with np.errstate(over="ignore", invalid="ignore"):
+            (linear, angular), (f, t), held = newton_euler_about(
+                props, inertia, props.center_of_mass - point, w, about_com=about_com, **vectors
+            )
+        self._refuse_non_finite(linear_acceleration=linear, angular_acceleration=angular, force=f, torque=t)
+        mode = "inverse" if alpha is not None else "forward"
+        return Dynamics(mode, point, w, angular, linear, f, t, held)
+
+    def inertial_xml(
+        self, to: str, *, name: str | None = None, document: bool = False, diagonal: bool = False
+    ) -> str:
+        """The ``<inertial>`` element for a robot description, as ``rbi export`` prints it: SI
+        units (kg, m, kg·m²), inertia about the centre of mass in body axes, a comment first.
+
+        Args:
+            to: ``"urdf"``, ``"mjcf"`` or ``"sdf"``.
+            name: the link's (body's) name in a document; default the spec's name, else the
+                file's stem (``body`` for a spec read from text).
+            document: a whole minimal document (robot/link, mujoco/worldbody/body,
+                sdf/model/link) instead of the bare element.
+            diagonal: MJCF only: principal moments (``diaginertia``) and the principal frame
+                (``quat``) instead of ``fullinertia``.
+        """
+
+        # not at top level: `rbi inertia` would load rbi.formats.inertial_xml too
+        from rbi.formats.inertial_xml import FORMATS, export_xml
+
+        if to not in FORMATS:
+            raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {literal(to)}")
+        if diagonal and to != "mjcf":
+            raise ArgumentError("diagonal", "only for to='mjcf' (URDF and SDF take the full matrix)")
+        length, mass = self.units["length"], self.units["mass"]
+        spec_units = "" if (length, mass) == ("m", "kg") else f"; spec units were {length}, {mass}"
+        comment = (
+            f"rbi export of {Path(self.path).name}: SI units (kg, m, kg·m²); "
+            f"inertia about the centre of mass, body axes{spec_units}"
+        )
+        if name is None:
+            text = self.path in SPEC_TEXT_LABELS
+            name = self.name or ("body" if text else Path(self.path).stem)
+        si = self.in_units("m", "kg").mass_properties
+        return export_xml(to, si, name=name, document=document, diagonal=diagonal, comment=comment)
+
+    def export_warnings(self) -> list[str]:
+        """The warnings that go with `inertial_xml`, as ``rbi export`` prints them on stderr and
+        puts in JSON as ``"warnings"``: the body's `warnings`, then, when its inertia about the
+        centre of mass has a zero principal moment (point masses only, a thin rod), one line
+        naming the file: simulators such as MuJoCo refuse a moving body without rotational
+        inertia."""
+
+        moments = self.mass_properties.moments  # ascending; the test is a ratio, so any units
+        if moments[0] > 1e-12 * max(moments[-1], 0.0):
+            return list(self.warnings)
+        return [
+            *self.warnings,
+            f"{self.path}: the inertia has a zero principal moment (a point mass or thin rod); "
+            "simulators such as MuJoCo refuse a moving body without rotational inertia",
+        ]
+
+    def __repr__(self) -> str:
+        units = self.units
+        return (
+            f"<rbi.Body {self.name or self.path!r}: mass {number(self.mass)} {units['mass']}, "
+            f"{len(self._loaded.elements)} parts, {'pivot' if self._loaded.pivot is not None else 'free'}>"
+        )
+
+    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
+        units = self.units
+        inertia_unit = f"{units['mass']}·{units['length']}²"
+        principal = self.principal()
+        rows = [
+            ("mass", units["mass"], number(self.mass, 8)),
+            ("centre of mass", units["length"], vector_text(self.center_of_mass)),
+        ]
+        if self._loaded.pivot is not None:
+            rows.append(("pivot", units["length"], vector_text(self.pivot)))
+        rows.append(("principal moments about CoM", inertia_unit, vector_text(principal.moments)))
+        for i, axis in enumerate(principal.axes, start=1):
+            rows.append((f"principal axis {i}", "", vector_text(axis)))
+        rows.append(("parts", "", str(len(self._loaded.elements))))
+        return f"{self.name or self.path}", rows, QUANTITY_COLUMNS
+
+
+def _rotation(axes: Any) -> np.ndarray:
+    """A body → world rotation matrix from ``axes`` (see `Body.inertia`): a (3, 3) rotation
+    matrix, or (axis, degrees) pairs applied in order about world axes."""
+
+    if isinstance(axes, str):
+        raise ArgumentError(
+            "axes", f"expected a 3x3 rotation matrix or (axis, degrees) pairs, got {literal(axes)}"
+        )
+    if np.shape(axes) == (3, 3) and not isinstance(np.asarray(axes, dtype=object)[0, 0], str):
+        R = np.asarray(axes, dtype=float)
+        orthonormal = np.all(np.isfinite(R)) and np.allclose(R @ R.T, np.eye(3), atol=1e-9)
+        if not (orthonormal and np.linalg.det(R) > 0):
+            raise ArgumentError("axes", "a 3x3 matrix must be a rotation (orthonormal, determinant +1)")
+        return R
+    turns = []
+    for turn in axes:
+        try:
+            axis, degrees = turn
+            axis, degrees = str(axis).strip().lower(), float(degrees)
+        except (TypeError, ValueError, OverflowError):
+            axis, degrees = "", float("nan")
+        if axis not in ("x", "y", "z") or not np.isfinite(degrees):
+            raise ArgumentError(
+                "axes",
+                f"expected (axis, degrees) pairs with axis 'x', 'y' or 'z', e.g. [('y', 30)], got {literal(turn)}",
+            )
+        if not angle_is_kept(degrees):
+            raise ArgumentError("axes", turn_lost_to_rounding(literal(degrees)))
+        turns.append((axis, np.radians(degrees)))
+    return compose_world_rotations(turns)
+
+
+def loaded_body(body: Any, parameter: str) -> Any:
+    """The loaded body behind a `Body`; TypeError naming ``parameter`` for anything else."""
+    if not isinstance(body, Body):
+        raise TypeError(f"{parameter}: expected a Body from rbi.load (got {type(body).__name__})")
+    return body._loaded

@@ -1,0 +1,45 @@
+"""Where results are written: an output path checked by rbi's one checked writer (:mod:`rbi.files.output`)."""
+
+from __future__ import annotations
+
+import os
+
+from rbi.api.body import Body
+from rbi.errors import ArgumentError, SpecError, literal
+from rbi.files.output import OutputTarget, output_target
+
+Destination = str | os.PathLike[str] | OutputTarget
+"""Where a picture or a file of rows goes: a path (its extension gives the format), or a target
+`output_target` has already checked (a caller's own messages then name it)."""
+
+
+def checked_output(
+    path: Destination,
+    formats: tuple[str, ...],
+    read: str | os.PathLike[str] | Body,
+    name: str = "path",
+) -> OutputTarget:
+    """``path`` checked as an output of one of ``formats`` (its extension) by rbi's one checked
+    writer (:mod:`rbi.files.output`): never the file ``read`` (a spec, a robot file), nor for a
+    `Body` any file it was read from (`Body.files_read`: a target checked before the body was
+    loaded is checked against them now, its refusal naming its option). ArgumentError naming
+    the parameter ``name`` when it may not be written there."""
+    reads = read.files_read if isinstance(read, Body) else [os.fsdecode(os.fspath(read))]
+    if isinstance(path, OutputTarget):
+        if isinstance(read, Body) and not path.is_stdout:
+            output_target(path.given, path.option, (path.format,), inputs=reads)
+        return path
+    given = path_text(path, name)
+    try:
+        return output_target(given, name, formats, inputs=reads)
+    except ArgumentError:
+        raise
+    except SpecError as exc:
+        raise ArgumentError(name, literal(str(exc).removeprefix(f"{name}: "), quoted=False)) from None
+
+
+def path_text(value: object, name: str = "robot_file") -> str:
+    """``value`` as a str path; TypeError naming the parameter ``name`` for anything but a path."""
+    if not isinstance(value, (str, bytes, os.PathLike)):
+        raise TypeError(f"{name}: expected a path (str or os.PathLike), got {type(value).__name__}")
+    return os.fsdecode(os.fspath(value))

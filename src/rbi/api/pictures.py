@@ -1,0 +1,74 @@
+"""Pictures: `show` a body, `animate` its motion (`Animation`)."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass
+from typing import Any
+
+from rbi.api.body import Body, loaded_body
+from rbi.api.outputs import Destination, checked_output
+
+
+def show(body: Body, path: Destination, *, title: str | None = None) -> int:
+    """Draw the body as specified at ``path``, as ``rbi show`` does: every part in place (holes
+    red and translucent), the centre of mass, the principal axes about it (lengths in
+    proportion to their moments, labelled with them) and the pivot, in the body frame with
+    lengths in the spec's unit. ``.png`` or ``.svg`` (needs matplotlib), or ``.html`` (a 3D
+    page that opens offline). The file is replaced atomically; ``title`` defaults to the
+    spec's name, else its path. Returns the number of parts drawn.
+
+    Raises:
+        SpecError: ``path`` cannot be written, or its extension is none of those."""
+    from rbi.viz.still import draw_body  # matplotlib and the page's template load only to draw
+
+    loaded = loaded_body(body, "body")
+    return draw_body(loaded, checked_output(path, ("png", "svg", "html"), body), title)
+
+
+@dataclass(frozen=True)
+class Animation:
+    """What `animate` wrote: ``path``; ``frames``, the pictures in it (a page's keyframes, a
+    GIF's frames); ``max_tilt_deg``, the largest tilt of the spin axis from the upward
+    vertical over the run, degrees."""
+
+    path: str
+    frames: int
+    max_tilt_deg: float
+
+
+def animate(
+    body: Body,
+    path: Destination,
+    *,
+    speed: float = 1.0,
+    fps: int = 25,
+    progress: Callable[[int, int], None] | None = None,
+    **run: Any,
+) -> Animation:
+    """Animate the body's motion, simulated as `simulate` does, at ``path`` as ``rbi animate``
+    does: ``.html``, a self-contained 3D page (parts as solids, pivot, ground, the path of the
+    tip of the spin axis) that plays in real time, or ``.gif`` (needs matplotlib and pillow).
+
+    Args:
+        body, path: the `Body`; the file to write (replaced atomically).
+        speed: playback speed the page starts at, 0.1 to 2 (1: real time).
+        fps: frames per second of a GIF, 1 to 60.
+        progress: called with (frames drawn, frames) as a GIF is drawn.
+        run: `simulate`'s settings: ``spin``, ``omega``, ``tilt_deg``, ``tilt_axis``,
+            ``gravity``, ``duration``, ``rtol``, ``max_steps``, ``check_budget``, ``spin_axis``.
+
+    Raises:
+        ValueError: a setting is out of range (named as this function's parameter), or the
+            motion needs more keyframes (or GIF frames) than a file may hold.
+        SpecError: ``path`` cannot be written; the run cannot be made."""
+    from rbi.runs.animation import write_animation  # the integrator loads only to simulate
+
+    # not at top level: `rbi inertia` would load rbi.runs.run too
+    from rbi.runs.run import prepare_run
+
+    loaded = loaded_body(body, "body")
+    target = checked_output(path, ("html", "gif"), body)
+    prepared = prepare_run(loaded, **run)
+    frames, tilt = write_animation(prepared, target, speed=speed, fps=fps, progress=progress)
+    return Animation(target.given, frames, tilt)

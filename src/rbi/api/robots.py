@@ -1,0 +1,247 @@
+"""Robot files: `audit` one, `import_robot` its links (`RobotImport`, `ImportedLink`)."""
+
+from __future__ import annotations
+
+import difflib
+import os
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from rbi.api.outputs import Destination, checked_output, path_text
+from rbi.core.rotation import matrix_to_quaternion
+from rbi.errors import ArgumentError, SpecError, literal
+from rbi.files.output import write_output
+from rbi.formats.paths import outside_paths_are_allowed
+
+if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the audit's modules load then)
+    from rbi.robot.audit import AuditReport
+
+
+def audit(
+    robot_file: str | os.PathLike,
+    *,
+    package_paths: dict[str, str] | Sequence[str] | None = None,
+    geometry: str = "collision",
+    density: float | None = None,
+    material: str | None = None,
+    mesh_inertia: str = "auto",
+    joints: dict[str, float] | Sequence[str] | None = None,
+    fix: bool = False,
+    out: Destination | None = None,
+    allow_outside_paths: bool | None = None,
+    mesh_repair: bool = False,
+) -> AuditReport:
+    """Audit a robot file (URDF ``.urdf``, SDF ``.sdf``, MJCF ``.xml``, or ``.xacro`` with the
+    ``xacro`` extra) as ``rbi audit`` does: each link's declared mass properties against its own
+    geometry, with flags, and the whole robot's totals. SI units; vectors and matrices in each
+    link's frame (totals: the root link's frame for URDF/SDF, the world for MJCF). Returns an
+    `AuditReport`: ``.links`` (each with ``.declared``, ``.geometry``, ``.ratios``, ``.flags``),
+    ``.total``, ``.notes``, ``.exit_code`` (1 when a link has an error-level flag, else 0) and
+    ``.as_dict()`` (what ``rbi audit --format json`` prints).
+
+    Args:
+        robot_file: the file's path.
+        package_paths: ``{NAME: DIR}`` or ``["NAME=DIR", ...]`` for ``package://NAME/`` meshes
+            (``ROS_PACKAGE_PATH`` is searched too).
+        geometry: ``"collision"`` or ``"visual"``: which geometry gives a link's volume (a link
+            without it falls back to the other); ``"none"``: the declared inertials and totals only.
+        density, material: kg/m³, or a built-in material name, for links that declare no mass.
+        mesh_inertia: ``"auto"`` (exact where a mesh is closed, else its convex hull, flagged
+            ``mesh``), ``"exact"``, ``"convex"`` (its hull) or ``"shell"`` (mass on the surface).
+        joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
+            metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
+        fix, out: also plan the fixed copy (``report.fix.content``, bytes; ``.changes``,
+            ``.unfixable``); and write it at ``out`` (``.urdf``, ``.sdf`` or ``.xml``; never a
+            file the robot reads), replaced atomically.
+        allow_outside_paths: let the file name meshes and includes outside its folder; None:
+            as an enclosing `outside_paths_allowed` block says (not allowed outside one).
+        mesh_repair: close meshes' holes of three or four edges first (listed in ``report.notes``).
+
+    Raises:
+        SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
+            read, or repeats a link name; ``out`` cannot be written.
+    """
+    # not at top level: `rbi inertia` would load rbi.robot.audit too
+    from rbi.robot import audit as run_audit
+    from rbi.robot.fix import check_out_not_read  # the files the robot reads
+
+    if out is not None and not fix:
+        raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
+    path = path_text(robot_file)
+    target = None if out is None else checked_output(out, ("urdf", "sdf", "xml"), path, "out")
+    allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
+    settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, material=material)
+    settings |= dict(density=density, mesh_inertia=mesh_inertia, joints=joints, mesh_repair=mesh_repair)
+    report = run_audit(path, fix=fix, allow_outside_paths=allowed, **settings)
+    if target is not None:
+        check_out_not_read(target.path, report.model)  # an include, a mesh or the robot file itself
+        write_output(target, report.fix.content)
+    return report
+
+
+@dataclass(frozen=True)
+class ImportedLink:
+    """One link of a robot file with mass properties, as ``rbi import`` turns it into a spec
+    (SI units: kg, m, kg·m²; the link's own frame).
+
+    Attributes:
+        name: the link's name (None for an unnamed MJCF body); ``label``: how messages name it.
+        index: its place among the file's links.
+        mass: kg. center_of_mass: (3,) m, link frame.
+        inertia: (3, 3) kg·m² about the centre of mass, in the link's axes.
+        inertial_quaternion: (4,) [w, x, y, z], the inertial frame's orientation in the link frame.
+        problems: why the declared values are not physical, one line each (empty when fine).
+        yaml: the link's spec (one custom part) as YAML text under a comment header.
+    """
+
+    name: str | None
+    label: str
+    index: int
+    mass: float
+    center_of_mass: np.ndarray
+    inertia: np.ndarray
+    inertial_quaternion: np.ndarray
+    problems: list[str]
+    yaml: str
+
+
+@dataclass(frozen=True)
+class RobotImport:
+    """A robot file read as ``rbi import`` reads it: ``path``; ``format`` (``"urdf"``, ``"sdf"``,
+    ``"mjcf"``); ``name`` (the model's); ``link_word`` (``"link"``, or ``"body"`` for MJCF);
+    ``links``, the `ImportedLink` s asked for; ``skipped``, ``(label, reason)`` of each link
+    without mass properties; ``robot_yaml()``, the whole robot as one spec."""
+
+    path: str
+    format: str
+    name: str | None
+    link_word: str
+    links: list[ImportedLink]
+    skipped: list[tuple[str, str]]
+    model: Any = field(default=None, repr=False)
+    """The file as rbi reads it (its links, with their geometry)."""
+
+    def robot_yaml(self) -> str:
+        """The whole robot as one spec (YAML text under a comment header): one custom part per
+        link with mass, placed at the zero configuration (MJCF: ``qpos0``), SI units."""
+        # not at top level: `rbi inertia` would load rbi.robot.specs and rbi.spec.yaml_writer too
+        from rbi.robot.specs import robot_spec
+        from rbi.spec.yaml_writer import comment, dump
+
+        model = self.model
+        spec, left_out = robot_spec(model)
+        frame = (
+            "the world frame at qpos0"
+            if model.format == "mjcf"
+            else "the root link's frame, every joint at zero"
+        )
+        lines = [
+            f"rbi import of {os.path.basename(model.path)}: the whole robot, one custom part per "
+            f"{model.link_word} with mass,",
+            f"placed in {frame}; SI units.",
+            "One link alone, in its own frame: --link NAME; one spec per link: --out DIR/.",
+        ]
+        if left_out:
+            lines.append(f"Without mass (left out): {', '.join(left_out)}.")
+        return comment(*lines) + dump(spec)
+
+
+def import_robot(
+    robot_file: str | os.PathLike[str],
+    *,
+    links: Sequence[str] | None = None,
+    package_paths: dict[str, str] | Sequence[str] | None = None,
+) -> RobotImport:
+    """Read the links of a robot file (URDF, SDF, MJCF) that have mass properties, as ``rbi
+    import`` does: each one's mass, centre of mass and inertia (SI, link frame) and its spec.
+
+    Args:
+        robot_file: the file's path.
+        links: the names of the links to import (MJCF: bodies), in order; None: every one.
+        package_paths: as `audit`'s, for ``package://NAME/`` paths.
+
+    Raises:
+        SpecError: the file cannot be read or is malformed; no link has mass properties.
+        ValueError: a name in ``links`` names no link with an ``<inertial>``.
+    """
+    # not at top level: `rbi inertia` would load rbi.formats.robot_files and rbi.formats.robot_paths too
+    from rbi.formats.robot_files import link_problems, read_robot
+    from rbi.formats.robot_paths import parse_package_paths
+
+    packages = parse_package_paths(package_paths)
+    robot = read_robot(path_text(robot_file), packages)
+    chosen = _chosen_links(robot, _link_names(links))
+    if not chosen:
+        raise SpecError(f"{robot.path}: no {robot.link_word} with an <inertial> element to import")
+    imported = [
+        ImportedLink(
+            link.name,
+            link.label,
+            link.index,
+            float(link.inertial.mass),
+            np.asarray(link.inertial.properties.center_of_mass),
+            np.asarray(link.inertial.properties.inertia_about_com),
+            _inertial_quaternion(link.inertial),
+            link_problems(robot, link),
+            _link_yaml(robot, link),
+        )
+        for link in chosen
+    ]
+    return RobotImport(robot.path, robot.format, robot.name, robot.link_word, imported, robot.skipped, robot)
+
+
+def _inertial_quaternion(inertial: Any) -> np.ndarray:
+    """``[w, x, y, z]`` of the inertial frame: the file's own quaternion, else the identity or the
+    rotation's."""
+
+    if inertial.quaternion is not None and inertial.rpy is None:
+        return np.asarray(inertial.quaternion)
+    R = inertial.rotation
+    return np.array([1.0, 0.0, 0.0, 0.0]) if R is None else matrix_to_quaternion(R)
+
+
+def _link_yaml(robot: Any, link: Any) -> str:
+    """One link's spec: a comment header, then the spec written by the YAML dumper. Names from
+    the file are data: escaped in the comment, quoted and escaped by the dumper where they hold
+    anything but visible characters (:mod:`rbi.spec.yaml_writer`)."""
+    # not at top level: `rbi inertia` would load rbi.formats.robot_files and rbi.spec.yaml_writer too
+    from rbi.formats.robot_files import link_spec
+    from rbi.spec.yaml_writer import comment, dump
+
+    source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
+    header = comment(
+        f"rbi import of {os.path.basename(robot.path)}, {link.label}, from its {source} <inertial>:",
+        "SI units, link frame; the inertia is about the centre of mass in the inertial frame's axes,",
+        "turned into link axes by `rotation`.",
+    )
+    return header + dump(link_spec(robot, link))
+
+
+def _link_names(links: Any) -> list[str]:
+    """``links`` of :func:`import_robot` as a list of names (one name given as text is that
+    name); ArgumentError naming ``links`` for anything else."""
+    if links is None or isinstance(links, str):
+        return [] if links is None else [links]
+    names = list(links) if isinstance(links, Iterable) else None
+    if names is None or not all(isinstance(name, str) for name in names):
+        raise ArgumentError("links", f"expected link names (str), got {literal(links)}")
+    return names
+
+
+def _chosen_links(robot: Any, names: list[str]) -> list[Any]:
+    """The links named in ``names`` (every one when empty), each once, in the order named."""
+    if not names:
+        return robot.inertial_links
+    by_name = {each.name: each for each in robot.inertial_links}
+    missing = [name for name in names if name not in by_name]
+    if missing:
+        hint = difflib.get_close_matches(missing[0], [n for n in by_name if n], n=1)
+        raise ArgumentError(
+            "links",
+            f"{robot.path} has no {robot.link_word} named {literal(missing[0])} with an <inertial>"
+            + (f" (did you mean {literal(hint[0])}?)" if hint else ""),
+        )
+    return [by_name[name] for name in dict.fromkeys(names)]
