@@ -17,6 +17,7 @@ from rbi.spec.errors import InputError, describe_error, format_location
 from rbi.spec.expect import Expect
 from rbi.spec.models import SHAPE_MODELS, BodySpec
 from rbi.spec.translate import body_from_spec
+from rbi.spec.uncertain import named_plus_minus, split_uncertain
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
 if TYPE_CHECKING:
@@ -269,12 +270,27 @@ def _validated(path: str, raw: Any) -> tuple[Any, list[str], tuple[str | None, s
         return None, [message], (None, None)
     try:
         with collector_paused():
-            return BodySpec.model_validate(raw), [], (None, None)
+            spec = BodySpec.model_validate(raw)
+        if not named_plus_minus(spec):  # a name is text: a ± there reads without error
+            return spec, [], (None, None)
+        failed = None
     except ValidationError as exc:
-        errors = sorted(exc.errors(include_url=False), key=lambda e: e["type"] != "extra_forbidden")
+        failed = exc
+    try:
+        split = split_uncertain(raw, path)  # only when the plain reading fails: no cost without ±
+    except InputError as bad:
+        return None, [str(bad)], (bad.part, bad.field)
+    if split is not None:
+        spec, problems, first = _validated(path, split.plain)
+        if spec is not None:
+            spec._uncertain = split.inputs
+        return spec, problems, first
+    if failed is not None:
+        errors = sorted(failed.errors(include_url=False), key=lambda e: e["type"] != "extra_forbidden")
         part_label, field_path = format_location(tuple(errors[0]["loc"]), raw)
         first = (part_label or None, ".".join(field_path) or None)
         return None, [_format_error(path, err, raw) for err in errors], first
+    return spec, [], (None, None)
 
 
 def _format_error(path: str, error: dict[str, Any], raw: Any) -> str:

@@ -53,16 +53,49 @@ def _densities(parts: list, units: models.Units) -> tuple[np.ndarray, np.ndarray
     return mass, density
 
 
-def _solid_masses(parts: list, units: models.Units, volume: np.ndarray) -> np.ndarray:
+class Columns:
+    """One part's fields as columns of ``n`` values, for the builders below: the part's own
+    value everywhere but where ``values`` (by field, or ``(field, component)``) gives a column
+    (Monte Carlo draws and the steps of sensitivities, :mod:`rbi.spec.uncertain`)."""
+
+    def __init__(self, part: Any, n: int, values: dict[tuple[Any, ...], np.ndarray]) -> None:
+        self.part, self.n, self.values = part, n, values
+
+    def __len__(self) -> int:
+        return self.n
+
+    def column(self, field: str) -> np.ndarray:
+        nominal = getattr(self.part, field)
+        if isinstance(nominal, (list, tuple)):
+            return np.stack(
+                [self.values.get((field, j), np.full(self.n, float(x))) for j, x in enumerate(nominal)], 1
+            )
+        return self.values.get((field,), np.full(self.n, float(nominal)))
+
+    def masses(self, units: models.Units, volume: np.ndarray) -> np.ndarray:
+        if self.part.mass is not None:
+            return self.column("mass")
+        if isinstance(self.part.density, str):
+            return density_in_units(self.part.density, units.length, units.mass) * volume
+        return self.column("density") * volume
+
+
+def _solid_masses(parts: Any, units: models.Units, volume: np.ndarray) -> np.ndarray:
+    if isinstance(parts, Columns):
+        return parts.masses(units, volume)
     given, density = _densities(parts, units)
     return np.where(np.isnan(given), density * volume, given)
 
 
-def _vectors(parts: list, field: str) -> np.ndarray:
+def _vectors(parts: Any, field: str) -> np.ndarray:
+    if isinstance(parts, Columns):
+        return parts.column(field)
     return np.array([getattr(p, field) for p in parts], dtype=float).reshape(len(parts), 3)
 
 
-def _scalars(parts: list, field: str) -> np.ndarray:
+def _scalars(parts: Any, field: str) -> np.ndarray:
+    if isinstance(parts, Columns):
+        return parts.column(field)
     return np.array([getattr(p, field) for p in parts], dtype=float)
 
 
@@ -118,6 +151,11 @@ BUILDERS = {
 
 def _fields(kind: type) -> set[str]:
     return set(getattr(kind, "model_fields", {}))
+
+
+def plain_part(part: Any) -> bool:
+    """Whether a part of a batched shape may be built by :data:`BUILDERS` (no pattern, no rotation)."""
+    return _plain(part, _fields(type(part)))
 
 
 def _plain(part: Any, fields: set[str]) -> bool:

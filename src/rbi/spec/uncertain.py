@@ -1,0 +1,390 @@
+"""Numbers of a part written with their uncertainty: ``"0.04 ± 0.0005"``, ``"0.04 +- 0.0005"``,
+``"7800 ± 1%"`` (JCGM 100, the GUM).
+
+:func:`split_uncertain` reads them out of a parsed spec: the spec with each such string replaced
+by its value (validated as any spec) and one :class:`UncertainInput` per number, named by its
+path as ``rbi sweep --vary`` names it (``parts.bolt.position[0]``). U is a standard uncertainty,
+or with a top-level ``uncertainty: tolerance`` the half-width of a uniform distribution
+(standard uncertainty U/√3, GUM 4.3.7).
+
+:func:`part_stack` evaluates one part's mass properties for many values of its uncertain inputs
+at once (Monte Carlo draws, or the steps of the sensitivities): the common shapes as whole
+arrays (:mod:`rbi.spec.translate_batch`), the others part by part through the same translation.
+"""
+
+from __future__ import annotations
+
+import copy
+import math
+import re
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from rbi.core.uncertainty import (
+    axis_uncertainty_deg,
+    body_derivatives,
+    body_stack,
+    combined,
+    coverage_factor,
+    principal_derivatives,
+    shortest_interval,
+    validated,
+)
+from rbi.errors import InputError, shown
+from rbi.spec import models
+from rbi.spec.translate import part_element
+from rbi.spec.translate_batch import BUILDERS, Columns, plain_part
+
+PLUS_MINUS = re.compile(r"±|\+/-|\+-")
+_DECIMAL = re.compile(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+NOT_NUMBERS = frozenset({"name", "shape", "file", "sequence", "repair", "solid", "subtract", "count"})
+"""Fields of a part that are not measured numbers: a ± there is refused."""
+KINDS = {"standard": "normal", "tolerance": "uniform"}
+"""The top-level ``uncertainty:`` values and the distribution each gives a ±."""
+
+
+@dataclass(frozen=True)
+class UncertainInput:
+    """One number written with ±. ``path``: as ``rbi sweep --vary`` names it; ``part``: index in
+    the spec's parts; ``steps``: the keys inside the part (``("position", 0)``); ``value`` and
+    ``u`` (standard uncertainty) in the file's units; ``distribution``: ``"normal"`` or
+    ``"uniform"`` (on value ± √3·u)."""
+
+    path: str
+    part: int
+    steps: tuple[Any, ...]
+    value: float
+    u: float
+    distribution: str
+
+    def draws(self, rng: np.random.Generator, n: int) -> np.ndarray:
+        """``n`` values drawn from the input's distribution (JCGM 101 §6)."""
+        if self.distribution == "uniform":
+            half = math.sqrt(3.0) * self.u
+            return rng.uniform(self.value - half, self.value + half, n)
+        return rng.normal(self.value, self.u, n)
+
+
+def _field_text(steps: tuple[Any, ...]) -> str:
+    text = ""
+    for step in steps:
+        text += f"[{step}]" if isinstance(step, int) else ("." if text else "") + str(step)
+    return text
+
+
+def parse_plus_minus(text: str) -> tuple[float, float, bool]:
+    """``(value, U, relative)`` of ``"VALUE ± U"`` (``relative``: U was written in %, and is
+    returned as the absolute U). ValueError with the user's message when it is not that."""
+    pieces = PLUS_MINUS.split(text)
+    if len(pieces) != 2:
+        raise ValueError(
+            f'write one ± between a value and its uncertainty, e.g. "0.04 ± 0.001" (got {shown(text)})'
+        )
+    value_text, u_text = pieces[0].strip(), pieces[1].strip()
+    relative = u_text.endswith("%")
+    u_text = u_text.removesuffix("%").strip()
+    numbers = []
+    for written, what in ((value_text, "the value before ±"), (u_text, "the uncertainty after ±")):
+        number = float(written) if _DECIMAL.fullmatch(written) else math.nan
+        if not math.isfinite(number):
+            raise ValueError(f"{what} must be a finite number (got {shown(written or text)})")
+        numbers.append(number)
+    value, u = numbers
+    if u < 0:
+        raise ValueError(f"the uncertainty after ± must not be negative (got {shown(text)})")
+    return value, abs(value) * u / 100.0 if relative else u, relative
+
+
+@dataclass(frozen=True)
+class Split:
+    """A spec read out of its ± strings: ``plain`` the parsed spec with values in their place,
+    ``inputs`` the uncertain numbers in file order."""
+
+    plain: Any
+    inputs: tuple[UncertainInput, ...]
+
+
+def _found(node: Any, steps: tuple[Any, ...], out: list) -> None:
+    if isinstance(node, dict):
+        for key, item in node.items():
+            _found(item, (*steps, key), out)
+    elif isinstance(node, list):
+        for k, item in enumerate(node):
+            _found(item, (*steps, k), out)
+    elif isinstance(node, str) and (PLUS_MINUS.search(node) or node.lstrip().startswith("±")):
+        out.append(steps)
+
+
+def named_plus_minus(spec: models.BodySpec) -> bool:
+    """Whether a part's name holds a ± (which :func:`split_uncertain` refuses)."""
+    return any(part.name and ("±" in part.name or "+-" in part.name) for part in spec.parts)
+
+
+def _part_path(parts: list, index: int) -> str:
+    """``parts.NAME`` (``parts.INDEX`` for a part without a name), as sweeps name parts."""
+    name = parts[index].get("name")
+    return f"parts.{name}" if isinstance(name, str) and name else f"parts.{index}"
+
+
+def split_uncertain(raw: Any, path: str) -> Split | None:
+    """The spec ``raw`` without its ± strings, or None when it has none and no top-level
+    ``uncertainty``. InputError (``file: part: field: what is wrong``) for a ± that cannot be
+    read or that stands on something other than a number of a part."""
+    if not isinstance(raw, dict):
+        return None
+    parts = raw.get("parts")
+    found: list[tuple[Any, ...]] = []
+    if isinstance(parts, list):
+        for i, part in enumerate(parts):
+            if isinstance(part, dict):
+                _found(part, (i,), found)
+    if not found and "uncertainty" not in raw:
+        return None
+    kind = raw.get("uncertainty", "standard")
+    if kind not in KINDS:
+        raise InputError(
+            f"{path}: uncertainty: must be standard (± is one standard uncertainty) or tolerance "
+            f"(± is a tolerance limit) (got {shown(kind)})",
+            file=path,
+            field="uncertainty",
+        )
+    plain = copy.deepcopy(raw)
+    plain.pop("uncertainty", None)
+    inputs = []
+    for index, *steps in found:
+        node = plain["parts"][index]
+        for step in steps[:-1]:
+            node = node[step]
+        field = _field_text(tuple(steps))
+        name = parts[index].get("name")
+        label = f"parts[{index}]" + (f" ({name})" if isinstance(name, str) and name else "")
+        try:
+            named = [step for step in steps if isinstance(step, str)]
+            if named and named[-1] in NOT_NUMBERS:
+                raise ValueError(f"± is for a number of a part, and `{named[-1]}` is not a measured number")
+            value, u, _ = parse_plus_minus(node[steps[-1]])
+        except ValueError as exc:
+            raise InputError(f"{path}: {label}: {field}: {exc}", file=path, part=label, field=field) from None
+        node[steps[-1]] = value
+        if KINDS[kind] == "uniform":
+            u /= math.sqrt(3.0)
+        inputs.append(
+            UncertainInput(f"{_part_path(parts, index)}.{field}", index, tuple(steps), value, u, KINDS[kind])
+        )
+    return Split(plain, tuple(inputs))
+
+
+def _replaced(node: Any, steps: tuple[Any, ...], value: Any) -> Any:
+    """``node`` (a part model, a sub-model or a list of numbers) with the number at ``steps``
+    replaced by ``value``; nothing validated again (the value is a nearby or drawn number)."""
+    head, rest = steps[0], steps[1:]
+    new = (
+        _replaced(node[head] if isinstance(node, list) else getattr(node, head), rest, value)
+        if rest
+        else value
+    )
+    if isinstance(node, list):
+        return [*node[:head], new, *node[head + 1 :]]
+    return node.model_copy(update={head: new})
+
+
+def part_stack(
+    spec: models.BodySpec, index: int, inputs: list[UncertainInput], values: np.ndarray, path: str
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Part ``index``'s mass, centre of mass and inertia about it, ``(n,)``, ``(n, 3)``,
+    ``(n, 3, 3)``, file units, with its uncertain ``inputs`` set to each row of ``values``
+    ``(n, len(inputs))`` (a hole's mass and inertia negative, as the body counts it)."""
+    part = spec.parts[index]
+    sign = -1.0 if getattr(part, "subtract", False) else 1.0
+    kind = type(part)
+    if kind in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in inputs):
+        columns = Columns(part, len(values), {i.steps: values[:, k] for k, i in enumerate(inputs)})
+        with np.errstate(all="ignore"):
+            mass, com, inertia = BUILDERS[kind](columns, spec.units)
+        return sign * mass, com, sign * inertia
+    rows = []
+    for row in values:
+        changed = part
+        for k, each in enumerate(inputs):
+            changed = _replaced(changed, each.steps, float(row[k]))
+        with np.errstate(all="ignore"):
+            rows.append(part_element(changed, spec.units, path))
+    return (
+        sign * np.array([e.mass for e in rows]),
+        np.array([e.center_of_mass for e in rows]),
+        sign * np.array([e.inertia_about_com for e in rows]),
+    )
+
+
+STEPS = np.array([1.0, 0.5, 0.25])
+"""Central differences at h, h/2, h/4 combined by Richardson's extrapolation (error O(h⁶); nil
+for the polynomial closed forms of degree up to 6)."""
+
+
+def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """Per uncertain input of the body ``loaded`` (a :class:`~rbi.spec.translate.LoadedBody`):
+    the index of its part and the derivatives of that part's mass (k,), centre of mass (k, 3)
+    and inertia about it (k, 3, 3) with respect to the input, each part evaluated with its own
+    inputs stepped (never the whole body)."""
+    inputs = loaded.spec._uncertain
+    k = len(inputs)
+    derivative = np.zeros((k, 13))
+    for index in sorted({i.part for i in inputs}):
+        chosen = [n for n, i in enumerate(inputs) if i.part == index]
+        group = [inputs[n] for n in chosen]
+        nominal = np.array([i.value for i in group])
+        # powers of 2: value ± step is exact, so a part's linear dependence differentiates exactly
+        h = 2.0 ** np.round(np.log2(1e-2 * np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])))
+        rows = np.repeat(nominal[None, :], len(group) * 6, axis=0).reshape(len(group), 3, 2, -1)
+        for j in range(len(group)):
+            rows[j, :, 0, j] += STEPS * h[j]
+            rows[j, :, 1, j] -= STEPS * h[j]
+        mass, com, inertia = part_stack(loaded.spec, index, group, rows.reshape(-1, len(group)), loaded.path)
+        f = np.concatenate([mass[:, None], com, inertia.reshape(-1, 9)], axis=1).reshape(len(group), 3, 2, 13)
+        d = (f[:, :, 0] - f[:, :, 1]) / (2.0 * STEPS[None, :, None] * h[:, None, None])
+        fine, finer = (4.0 * d[:, 1] - d[:, 0]) / 3.0, (4.0 * d[:, 2] - d[:, 1]) / 3.0
+        derivative[chosen] = (16.0 * finer - fine) / 15.0
+    part = np.array([i.part for i in inputs], dtype=int)
+    return part, derivative[:, 0], derivative[:, 1:4], derivative[:, 4:].reshape(k, 3, 3)
+
+
+def drawn_parts(
+    loaded: Any, n: int, rng: np.random.Generator
+) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+    """``(draws (n, k), masses (n, P), centres (n, P, 3), inertias (n, P, 3, 3))``: every
+    uncertain input drawn n times (JCGM 101 §6) and each part built for every draw, the
+    parts without uncertain inputs repeated."""
+    inputs = loaded.spec._uncertain
+    draws = np.stack([i.draws(rng, n) for i in inputs], axis=1) if inputs else np.zeros((n, 0))
+    elements = loaded.elements
+    masses = np.repeat(np.array([[e.mass for e in elements]]), n, axis=0)
+    coms = np.repeat(np.array([[e.center_of_mass for e in elements]]), n, axis=0)
+    inertias = np.repeat(np.array([[e.inertia_about_com for e in elements]]), n, axis=0)
+    for index in sorted({i.part for i in inputs}):
+        chosen = [k for k, i in enumerate(inputs) if i.part == index]
+        stack = part_stack(loaded.spec, index, [inputs[k] for k in chosen], draws[:, chosen], loaded.path)
+        masses[:, index], coms[:, index], inertias[:, index] = stack
+    return draws, masses, coms, inertias
+
+
+QUANTITIES = (
+    ["mass"]
+    + [f"center_of_mass[{i}]" for i in range(3)]
+    + [f"inertia[{i}][{j}]" for i in range(3) for j in range(3)]
+    + [f"moments[{i}]" for i in range(3)]
+)
+"""The quantities of a body, as JSON paths of ``rbi inertia`` and ``rbi principal``: the
+order of the flat vectors below."""
+DEFAULT_QUANTITIES = [q for q in QUANTITIES if not (q.startswith("inertia") and q[8] > q[11])]
+"""The budget's quantities unless others are asked for: the inertia's upper triangle."""
+
+
+@dataclass(frozen=True)
+class Linear:
+    """The law of propagation on a body: ``values`` of :data:`QUANTITIES` (inertia and moments
+    about ``point``), their ``sensitivities`` (q, k) to the k ``inputs`` (u (k,)), and
+    ``turn`` (k, 3, 3): per input the turn of principal axis i towards axis j."""
+
+    inputs: tuple[UncertainInput, ...]
+    u: np.ndarray
+    values: np.ndarray
+    sensitivities: np.ndarray
+    axes: np.ndarray
+    turn: np.ndarray
+
+    @property
+    def uncertainty(self) -> np.ndarray:
+        """The combined standard uncertainty of each quantity (GUM 5.1.2)."""
+        return combined(self.sensitivities, self.u)
+
+    def axes_deg(self) -> list[float | None]:
+        """Each principal axis's standard angular uncertainty in degrees (None: undetermined)."""
+        return axis_uncertainty_deg(self.values[13:], self.uncertainty[13:], self.turn, self.u)
+
+
+def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
+    """:class:`Linear` of the body ``loaded``, its inertia and moments about ``point`` (a fixed
+    point of the body frame; default its centre of mass)."""
+    inputs = loaded.spec._uncertain
+    elements = loaded.elements
+    masses = np.array([e.mass for e in elements])
+    coms = np.array([e.center_of_mass for e in elements]).reshape(-1, 3)
+    props = loaded.props
+    about = props.center_of_mass if point is None else np.asarray(point, dtype=float)
+    inertia = props.inertia_about(about)
+    part, dm, dc, dI = part_derivatives(loaded)
+    dM, dC, dJ = body_derivatives(masses, coms, part, dm, dc, dI, about)
+    moments, axes, dmoments, turn = principal_derivatives(inertia, dJ)
+    values = np.concatenate([[props.mass], props.center_of_mass, inertia.reshape(9), moments])
+    sensitivities = np.concatenate([dM[None], dC.T, dJ.reshape(-1, 9).T, dmoments.T])
+    return Linear(inputs, np.array([i.u for i in inputs]), values, sensitivities, axes, turn)
+
+
+def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
+    """(n, q) samples of :data:`QUANTITIES` (about the centre of mass of each draw) from n draws
+    of every uncertain input (JCGM 101), all n bodies computed as one stack."""
+    rng = np.random.default_rng(seed)
+    _, masses, coms, inertias = drawn_parts(loaded, n, rng)
+    with np.errstate(all="ignore"):
+        mass, com, inertia = body_stack(masses, coms, inertias, loaded.props.center_of_mass)
+        moments = np.linalg.eigvalsh(inertia)
+    return np.concatenate([mass[:, None], com, inertia.reshape(n, 9), moments], axis=1)
+
+
+def budget(
+    loaded: Any,
+    of: list[str] | None = None,
+    method: str = "linear",
+    samples: int = 100_000,
+    seed: int | None = None,
+    coverage: float = 0.95,
+) -> dict[str, Any]:
+    """The uncertainty budget of ``rbi uncertainty``, as its JSON (the contract's form)."""
+    chosen = [QUANTITIES.index(q) for q in (of or DEFAULT_QUANTITIES)]
+    result = linear(loaded)
+    u = result.uncertainty
+    k = coverage_factor(coverage)
+    drawn = monte_carlo(loaded, samples, seed) if method == "monte-carlo" else None
+    quantities = []
+    for q in chosen:
+        value, spread = float(result.values[q]), float(u[q])
+        interval = (value - k * spread, value + k * spread)
+        contributions = []
+        for x, s in zip(result.inputs, result.sensitivities[q]):
+            part = abs(float(s)) * x.u
+            contributions.append(
+                {
+                    "input": x.path,
+                    "value": x.value,
+                    "u": x.u,
+                    "sensitivity": float(s),
+                    "contribution": part,
+                    "share": part * part / (spread * spread) if spread > 0 else 0.0,
+                }
+            )
+        contributions.sort(key=lambda c: -c["contribution"])
+        entry: dict[str, Any] = {"quantity": QUANTITIES[q]}
+        if drawn is not None:
+            y = drawn[:, q]
+            symmetric = tuple(np.quantile(y, [0.5 - coverage / 2, 0.5 + coverage / 2]).tolist())
+            entry.update(value=float(np.mean(y)), u=float(np.std(y - y[0], ddof=1)))
+            entry["interval"] = list(shortest_interval(y, coverage))
+            entry["linear"] = {
+                "value": value,
+                "u": spread,
+                "interval": list(interval),
+                "validated": validated(spread, interval, symmetric),
+            }
+        else:
+            entry.update(value=value, u=spread, interval=list(interval))
+        entry.update(coverage=coverage, contributions=contributions)
+        quantities.append(entry)
+    return {
+        "name": loaded.name,
+        "units": loaded.units,
+        "method": method,
+        "samples": samples if drawn is not None else None,
+        "quantities": quantities,
+    }
