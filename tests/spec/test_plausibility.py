@@ -69,6 +69,16 @@ CASES = {
         {"length": "mm", "mass": "kg"},
         "lengths look like millimetres: add units: {length: mm}",
     ),
+    "mm, a steel ball of radius 10": (  # rbi 4: 32,882,003 kg of steel in metres, not warned
+        ball(10, density="steel"),
+        {"length": "mm", "mass": "kg"},
+        "lengths look like millimetres: add units: {length: mm}",
+    ),
+    "mm, material: copper": (
+        {"name": "bar", "shape": "box", "center": [0, 0, 0], "size": [100, 20, 10], "material": "copper"},
+        {"length": "mm", "mass": "kg"},
+        "lengths look like millimetres: add units: {length: mm}",
+    ),
 }
 
 
@@ -136,3 +146,79 @@ def test_a_real_foam_not_exactly_a_metal_in_cm_and_g_is_not_warned(kg_m3):
     """11.34 kg/m³ to 0.1 % is lead in cm and g; 11.2 or 11.5 is a foam like any other."""
     foam = {"name": "foam", "shape": "box", "center": [0, 0, 0], "size": [2, 1, 0.5], "mass": kg_m3}
     assert rbi.load({"parts": [foam]}).warnings == []
+
+
+def test_the_steel_ball_of_radius_10_says_what_it_weighs_in_metres():
+    (line,) = rbi.load({"parts": [ball(10, density="steel")]}).warnings
+    tonnes = 7850 * 4 / 3 * math.pi * 10**3 / 1000  # 32,882 t: no piece of metal is made that heavy
+    assert f"16.1 m across ({tonnes * 1000:,.0f} kg of steel), heavier than any piece of metal made" in line
+
+
+def test_a_density_number_in_kg_m3_with_lengths_in_mm_is_told_both():
+    """radius 10 and density 7850: no units: block alone fits (in mm, 7850 kg/mm³ is no
+    material); lengths in mm with the density in kg/mm³ do, and the line says so."""
+    (line,) = rbi.load({"parts": [ball(10, density=7850)]}).warnings
+    assert line.endswith(
+        "lengths look like millimetres and the density like kg/m³: add units: {length: mm} and give"
+        " the density in kg/mm³ (7.85e-06)"
+    ), line
+    fixed = rbi.load({"units": {"length": "mm"}, "parts": [ball(10, density=7.85e-06)]})
+    assert fixed.warnings == [] and fixed.mass == pytest.approx(STEEL_BALL_KG, rel=1e-12)
+
+
+def rod(radius, length, density):
+    return {
+        "name": "rod",
+        "shape": "cylinder",
+        "radius": radius,
+        "start": [0, 0, 0],
+        "end": [0, 0, length],
+        "density": density,
+    }
+
+
+LARGE_SI_SOLIDS = {
+    # real solids given their density, in metres: big, and not warned
+    "Taipei 101's damper ball (660 t of steel, 5.5 m)": ball(2.75, density="steel"),
+    "a 600 t steel ingot": rod(1.5, 600e3 / (7850 * math.pi * 1.5**2), "steel"),
+    "a wind-turbine foundation (20 m, 2,260 t of concrete)": rod(10, 3, 2400),
+    "a 1,000 m³ tank of water": {
+        "name": "tank",
+        "shape": "box",
+        "center": [0, 0, 0],
+        "size": [10] * 3,
+        "density": "water",
+    },
+    "an asteroid 200 m across": ball(100, density=2000),
+    "an oak trunk 30 m long": rod(1.0, 30, "oak"),
+}
+
+
+@pytest.mark.parametrize("name", LARGE_SI_SOLIDS)
+def test_large_real_solids_given_their_density_are_not_warned(name):
+    assert rbi.load({"parts": [LARGE_SI_SOLIDS[name]]}).warnings == []
+
+
+def test_no_corpus_object_drawn_with_its_density_in_si_is_warned():
+    """Every corpus object with each part given its density (mass ÷ volume) instead of its mass,
+    and again by material name where the density is a built-in material's (to 0.1 %)."""
+    from rbi.spec.materials import MATERIAL_DENSITIES_SI
+    from tests.spec.plausibility_corpus import OBJECTS, spec
+
+    warned = []
+    for entry in OBJECTS:
+        parts = spec(entry)["parts"]
+        numbers = []
+        for part in parts:
+            solid = {key: value for key, value in part.items() if key != "mass"}
+            volume = rbi.load({"parts": [{**solid, "density": 1.0}]}).mass
+            numbers.append({**solid, "density": part["mass"] / volume})
+        names = [
+            next(
+                (name for name, d in MATERIAL_DENSITIES_SI.items() if abs(d / p["density"] - 1) < 1e-3), None
+            )
+            for p in numbers
+        ]
+        variants = [numbers] + ([[{**p, "density": n} for p, n in zip(numbers, names)]] if all(names) else [])
+        warned += [(entry[0], w) for variant in variants for w in rbi.load({"parts": variant}).warnings]
+    assert warned == []

@@ -4,7 +4,8 @@ says so in one line, naming the part and the ``units:`` block that makes the bod
 spec that states its units is never warned about.
 
 When it warns: a part given its mass (mass ÷ volume) or a density number has a density outside
-:data:`POSSIBLE_DENSITY_KG_M3`, or a part given a density is larger than :data:`LARGEST_PART_M`.
+:data:`POSSIBLE_DENSITY_KG_M3`, a part given a density is larger than :data:`LARGEST_PART_M`, or
+a part given a metal's density (a solid of it) is heavier than :data:`LARGEST_METAL_PIECE_KG`.
 The range is wide on purpose: a foam block (25 kg/m³), a satellite bus or a ship hull drawn as one
 solid of its outside size (50–500 kg/m³) and osmium (22,590) are all plausible SI bodies. It also
 warns a body possible in SI that another pair makes more than ten times likelier
@@ -160,6 +161,16 @@ LARGEST_PART_M = 200.0
 ship's hull); a spec drawn in millimetres and read as metres is far beyond it for parts over
 0.2 m."""
 
+METAL_DENSITY_KG_M3 = 4_000.0
+LARGEST_METAL_PIECE_KG = 1.0e6
+"""A part given a density of at least METAL_DENSITY_KG_M3 (titanium and every denser metal; no
+common non-metal but alumina comes near) is a solid piece of metal, and no single piece of
+metal heavier than LARGEST_METAL_PIECE_KG (1,000 t) is made: the heaviest steel ingots and
+forgings weigh up to about 700 t, Taipei 101's steel damper ball 660 t. Water, concrete, stone
+and wood come in larger solids (tanks, foundations, monoliths) and are judged by size only. In
+millimetres read as metres, a steel part is over it from 5 mm across (a ball of radius 10 mm
+is a 33,000 t ball of radius 10 m); a steel part 5 m across in metres is under it."""
+
 COMMON_UNITS = {
     ("m", "kg"): 0.0,
     ("mm", "kg"): 0.0,
@@ -206,6 +217,7 @@ class _Solid:
     mass: float | None = None
     density: float | None = None
     material: str | None = None
+    material_si: float | None = None
 
     def density_si(self, length: str, mass: str) -> float | None:
         """The density the part has if the file is in ``length`` and ``mass``, kg/m³ (None for
@@ -227,7 +239,15 @@ class _Solid:
         density = self.density_si(length, mass)
         if density is not None and not low <= density <= high:
             return False
-        return (self.mass is not None and length == "m") or self.size_m(length) <= LARGEST_PART_M
+        return (self.mass is not None and length == "m") or (
+            self.size_m(length) <= LARGEST_PART_M and self.metal_kg(length, mass) <= LARGEST_METAL_PIECE_KG
+        )
+
+    def metal_kg(self, length: str, mass: str) -> float:
+        """The part's kilograms if it is given a metal's density (:data:`METAL_DENSITY_KG_M3`),
+        else 0."""
+        solid = self.material_si or (self.density_si(length, mass) if self.mass is None else None) or 0.0
+        return solid * self.size_m(length) ** 3 if solid >= METAL_DENSITY_KG_M3 else 0.0
 
     def improbability(self, length: str, mass: str) -> float:
         """How unlikely the part's density and size are together if the file is in ``length``
@@ -279,10 +299,30 @@ class _Solid:
             what = "implied density" if self.mass is not None else "density"
             return f"{what} {density:.3g} kg/m³ is outside {low:,.0f}–{high:,.0f} kg/m³ (foam to osmium)"
         material = f" of {self.material}" if self.material else ""
-        kilograms = self.volume * (
-            MATERIAL_DENSITIES_SI[self.material] if self.material else self.density or 0.0
-        )
+        kilograms = self.volume * (self.material_si or self.density or 0.0)
+        if self.size_m("m") <= LARGEST_PART_M:
+            return (
+                f"{self.size_m('m'):.3g} m across ({kilograms:,.0f} kg{material}), heavier than any"
+                f" piece of metal made ({LARGEST_METAL_PIECE_KG / 1000:,.0f} t)"
+            )
         return f"{self.size_m('m'):.3g} m across ({kilograms:.3g} kg{material}), larger than any part"
+
+    def kg_per_m3_advice(self) -> str | None:
+        """For a part given a density number that is plausible in kg/m³ while its size in metres
+        is not (lengths in millimetres, the density in kg/m³): the units: block and the density
+        that fit it together, or None."""
+        low, high = POSSIBLE_DENSITY_KG_M3
+        if self.density is None or not low <= self.density <= high:
+            return None
+        fitting = likely_units([_Solid(self.label, self.volume, material_si=self.density)])
+        if not fitting or fitting[0][0] == "m":
+            return None
+        length = fitting[0][0]
+        return (
+            f"lengths look like {LENGTH_WORDS[length]} and the density like kg/m³: add units:"
+            f" {{length: {length}}} and give the density in kg/{length}³"
+            f" ({self.density * LENGTH_UNITS_IN_M[length] ** 3:.4g})"
+        )
 
 
 def _solids(spec) -> list[_Solid]:
@@ -296,7 +336,8 @@ def _solids(spec) -> list[_Solid]:
         density = getattr(part, "density", None)
         label = part_label(index, part)
         if isinstance(density, str):
-            out.append(_Solid(label, volume, material=canonical_name(density)))
+            name = canonical_name(density) or density
+            out.append(_Solid(label, volume, material=name, material_si=MATERIAL_DENSITIES_SI.get(name)))
         else:
             out.append(_Solid(label, volume, mass=getattr(part, "mass", None), density=density))
         if len(out) >= MAX_CHECKED_PARTS:
@@ -366,7 +407,10 @@ def unit_warnings(spec, path: str) -> list[str]:
         return [f"{path}: {solid.label}: {solid.rare_in_si(length, mass)}: {hint(length, mass)}"]
     more = f" (and {len(wrong) - 1} more part{'s' if len(wrong) > 2 else ''})" if len(wrong) > 1 else ""
     fitting = likely_units(solids)
-    if fitting:
+    mixed = wrong[0].kg_per_m3_advice()
+    if mixed:
+        advice = mixed
+    elif fitting:
         length, mass = fitting[0]
         advice = hint(length, mass, [u for u, m in fitting[1:] if m == mass])
     else:
