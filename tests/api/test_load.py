@@ -54,6 +54,15 @@ def test_a_str_is_always_a_path():
         rbi.loads(TOP)
 
 
+@pytest.mark.parametrize("text", [json.dumps(yaml.safe_load(TOP.read_text())), "{name: top, parts: []}"])
+def test_one_line_spec_text_given_as_a_path_is_not_echoed(text):
+    """rbi 4 echoed a one-line JSON spec (1,798 characters) in its 'no such file' error."""
+    assert "\n" not in text
+    with pytest.raises(ValueError, match=r"^source: is text, not a path .* rbi.loads$") as raised:
+        rbi.load(text)
+    assert len(str(raised.value)) <= 200
+
+
 @pytest.mark.parametrize(
     "args, make",
     [

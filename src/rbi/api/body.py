@@ -61,6 +61,8 @@ def load(
         SpecError: the file is missing or unreadable, the YAML is malformed, or the spec is
             invalid; ``str(error)`` is ``file: part: field: what is wrong``.
         TypeError: ``source`` is neither a path nor a dict.
+        ValueError: ``source`` is spec text, not a path (it holds a newline or starts with
+            ``{`` or ``[``, and no such file exists): read text with `loads`.
     """
     # not at top level: `rbi audit` would load rbi.spec.load too
     from rbi.spec import load as spec_load
@@ -78,7 +80,7 @@ def load(
         )
     path = os.fspath(source)
     path = os.fsdecode(path) if isinstance(path, bytes) else path
-    if "\n" in path and not os.path.lexists(path):
+    if ("\n" in path or path.lstrip()[:1] in ("{", "[")) and not os.path.lexists(path):
         raise ArgumentError(
             "source", "is text, not a path (a str is always a path): read spec text with rbi.loads"
         )
