@@ -1,6 +1,10 @@
-"""How rbi's result objects show themselves in a notebook (``_repr_html_``) and a rich console
-(``__rich__``): one table of text cells, a title and column names, drawn the same way for every
-object (a body, its principal axes, a part, a trajectory, a sweep, an audit).
+"""How rbi's results present themselves: :class:`Result`, the base of every result the API
+returns (a body, its principal axes, its parts, a momentum, a check, a trajectory, a sweep, an
+audit). A result gives its rows once (:meth:`Result.rows`: tables of text cells, :class:`Rows`)
+and its JSON object once (:meth:`Result.to_dict`); from those come ``print(result)`` and a rich
+console's table (``__str__``, ``__rich__``), a notebook's (``_repr_html_``), ``to_pandas()``
+and ``to_csv()``. The CLI prints ``to_dict()`` for ``--format json``, ``to_csv()`` for CSV and
+draws the same rows as its tables.
 
 Standard library only at import (rich is imported when a table is drawn), so every layer may
 use it. Text from outside (names in a spec or a robot file) is shown as text, never read as
@@ -9,15 +13,24 @@ markup or HTML.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+import io
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
 from html import escape
 from typing import Any
+
+from rbi.text import csv_lines
 
 QUANTITY_COLUMNS = ("quantity", "unit", "value")
 """The columns of a summary: what, in which unit, how much."""
 
 
-def rich_table(title: str, rows: Sequence[Sequence[str]], columns: Sequence[str] = QUANTITY_COLUMNS) -> Any:
+def rich_table(
+    title: str,
+    rows: Sequence[Sequence[str]],
+    columns: Sequence[str] = QUANTITY_COLUMNS,
+    total: Sequence[str] | None = None,
+) -> Any:
     """A :class:`rich.table.Table` of text cells; the last column of a summary (its values) and
     every column after the first of other tables are right-aligned."""
     # not at top level: `rbi inertia --format json` would load rich.table and rich.text too
@@ -29,18 +42,36 @@ def rich_table(title: str, rows: Sequence[Sequence[str]], columns: Sequence[str]
         table.add_column(name, justify="right" if _right(columns, i) else "left")
     for row in rows:
         table.add_row(*(Text(str(cell)) for cell in row))
+    if total is not None:
+        table.add_section()
+        table.add_row(*(Text(str(cell)) for cell in total))
     return table
 
 
-def html_table(title: str, rows: Sequence[Sequence[str]], columns: Sequence[str] = QUANTITY_COLUMNS) -> str:
-    """The same table as HTML (every cell escaped)."""
+def html_table(
+    title: str,
+    rows: Sequence[Sequence[str]],
+    columns: Sequence[str] = QUANTITY_COLUMNS,
+    total: Sequence[str] | None = None,
+) -> str:
+    """The same table as HTML (every cell escaped; ``total`` in the table's foot)."""
     align = [' style="text-align:right"' if _right(columns, i) else "" for i in range(len(columns))]
     head = "".join(f"<th>{escape(name)}</th>" for name in columns)
     body = "".join(
         "<tr>" + "".join(f"<td{a}>{escape(str(cell))}</td>" for a, cell in zip(align, row)) + "</tr>"
         for row in rows
     )
-    return f"<table><caption>{escape(title)}</caption><thead><tr>{head}</tr></thead><tbody>{body}</tbody></table>"
+    foot = (
+        ""
+        if total is None
+        else "<tfoot><tr>"
+        + "".join(f"<td{a}>{escape(str(c))}</td>" for a, c in zip(align, total))
+        + "</tr></tfoot>"
+    )
+    return (
+        f"<table><caption>{escape(title)}</caption><thead><tr>{head}</tr></thead><tbody>{body}</tbody>"
+        f"{foot}</table>"
+    )
 
 
 def _right(columns: Sequence[str], i: int) -> bool:
@@ -49,14 +80,164 @@ def _right(columns: Sequence[str], i: int) -> bool:
     return i > 0
 
 
-class TableRepr:
-    """A mix-in: ``__rich__`` and ``_repr_html_`` from :meth:`_table` (title, rows, columns)."""
+@dataclass(frozen=True)
+class Rows:
+    """One table of text cells, as every face of a result draws it.
+
+    Attributes:
+        title: the table's title.
+        columns: the column names.
+        cells: one tuple of text cells a row.
+        total: a last row set off by a rule (a body's total under its parts), or None.
+        left: how many leading columns are text, aligned left (the others hold numbers, right).
+        kind: ``"quantities"`` (quantity, unit, value rows: stacked as ``quantity [unit]
+            value`` where too wide), ``"matrix"`` (row labels then numbers) or ``"table"``.
+    """
+
+    title: str
+    columns: tuple[str, ...]
+    cells: list[tuple[str, ...]]
+    total: tuple[str, ...] | None = None
+    left: int = 1
+    kind: str = "table"
+
+    @classmethod
+    def quantities(cls, title: str, cells: Iterable[tuple[str, str, str]]) -> Rows:
+        """A table of (quantity, unit, value) rows."""
+        return cls(title, QUANTITY_COLUMNS, list(cells), left=2, kind="quantities")
+
+
+def plain(value: Any) -> Any:
+    """``value`` as JSON-ready data: numpy arrays and scalars as lists, floats and ints (their
+    ``tolist()``), tuples as lists, ``-0.0`` as ``0.0``; JSON then carries each float's shortest
+    round-tripping repr."""
+    kind = type(value)  # the common exact types first (an audit's JSON has millions of values)
+    if kind is float:
+        return 0.0 if value == 0.0 else value
+    if kind is dict:
+        return {k: plain(v) for k, v in value.items()}
+    if kind is list:
+        return [plain(v) for v in value]
+    if kind is str or kind is int or kind is bool or value is None:
+        return value
+    if isinstance(value, dict):
+        return {k: plain(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [plain(v) for v in value]
+    if hasattr(value, "tolist"):  # a numpy array or scalar: numpy is not imported here
+        return plain(value.tolist())
+    if isinstance(value, float):
+        return 0.0 if value == 0.0 else float(value)
+    return value
+
+
+_XYZ = ("x", "y", "z")
+
+
+def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
+    """Nested results as CSV columns: vectors get ``_x/_y/_z``, 3×3 matrices ``_xx … _zz``
+    (``axes``: ``_1_x … _3_z``), nested mappings ``outer_inner``, other lists ``_1, _2, …``."""
+    out: dict[str, Any] = {}
+    for key, value in plain(result).items():
+        name = f"{prefix}{key}"
+        if isinstance(value, dict):
+            out.update(flatten(value, prefix=f"{name}_"))
+        elif (
+            isinstance(value, list)
+            and len(value) == 3
+            and all(isinstance(r, list) and len(r) == 3 for r in value)
+        ):
+            for i, row in enumerate(value):
+                for j, v in enumerate(row):
+                    out[f"{name}_{i + 1}_{_XYZ[j]}" if key == "axes" else f"{name}_{_XYZ[i]}{_XYZ[j]}"] = v
+        elif (
+            isinstance(value, list)
+            and len(value) == 3
+            and not any(isinstance(v, list) for v in value)
+            and not key.endswith("moments")
+        ):
+            for axis, v in zip(_XYZ, value):
+                out[f"{name}_{axis}"] = v
+        elif isinstance(value, list):
+            for i, v in enumerate(value):
+                out[f"{name}_{i + 1}"] = v
+        else:
+            out[name] = value
+    return out
+
+
+def csv_text(rows: Iterable[dict[str, Any]]) -> str:
+    """CSV text: a header from the first row's (flattened) keys, then one line a row, each cell
+    through the one CSV cell rule (:func:`rbi.text.csv_cell`). A row's ``warnings`` are not a
+    column (the CLI says them on stderr)."""
+    flat = [flatten({k: v for k, v in row.items() if k != "warnings"}) for row in rows]
+    if not flat:
+        return ""
+    return csv_lines((row.values() for row in flat), header=flat[0].keys())
+
+
+class Result:
+    """The base of rbi's results: a subclass gives :meth:`rows` (or the one table of
+    :meth:`_table`), :meth:`to_dict` and, when its CSV has other rows than the one object,
+    :meth:`csv_rows`; the faces follow."""
+
+    def rows(self) -> list[Rows]:
+        """The tables the result shows, as text cells: the one set of rows behind ``print()``,
+        ``__rich__``, ``_repr_html_`` and the CLI's tables."""
+        title, cells, columns = self._table()
+        return [Rows(title, tuple(columns), [tuple(row) for row in cells], left=_left(columns))]
 
     def _table(self) -> tuple[str, Sequence[Sequence[str]], Sequence[str]]:
         raise NotImplementedError
 
+    def to_dict(self) -> dict[str, Any]:
+        """The result as JSON-ready data (lists, floats, str, None): what the matching ``rbi``
+        command prints with ``--format json``, less its ``"file"``."""
+        raise NotImplementedError
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        """The rows of ``to_csv()`` and ``to_pandas()``, before flattening: the one object."""
+        return [self.to_dict()]
+
+    def to_csv(self) -> str:
+        """The CSV the matching command prints with ``--format csv``: a header, then the rows."""
+        return csv_text(self.csv_rows())
+
+    def to_pandas(self) -> Any:
+        """The CSV's rows as a :class:`pandas.DataFrame` (vectors as ``_x/_y/_z`` columns)."""
+        try:
+            # not at top level: importing pandas takes ~0.3 s, and only this method needs it
+            import pandas
+        except ImportError:
+            raise ImportError(
+                f"{type(self).__name__}.to_pandas needs pandas, which is not installed: pip install pandas"
+            ) from None
+        rows = [flatten({k: v for k, v in row.items() if k != "warnings"}) for row in self.csv_rows()]
+        return pandas.DataFrame(rows, columns=list(rows[0]) if rows else None)
+
     def __rich__(self) -> Any:
-        return rich_table(*self._table())
+        # not at top level: `rbi inertia --format json` would load rich.console too
+        from rich.console import Group
+
+        tables = [rich_table(r.title, r.cells, r.columns, r.total) for r in self.rows()]
+        return tables[0] if len(tables) == 1 else Group(*tables)
 
     def _repr_html_(self) -> str:
-        return html_table(*self._table())
+        return "".join(html_table(r.title, r.cells, r.columns, r.total) for r in self.rows())
+
+    def __str__(self) -> str:
+        """The tables as text, 80 columns wide (``print(result)``)."""
+        # not at top level: `rbi inertia --format json` would load rich.console too
+        from rich.console import Console
+
+        text = io.StringIO()
+        Console(file=text, width=80, color_system=None, highlight=False).print(self.__rich__())
+        return text.getvalue().rstrip("\n")
+
+
+TableRepr = Result
+"""The name the results' base had before it gave more than its tables."""
+
+
+def _left(columns: Sequence[str]) -> int:
+    return 2 if tuple(columns) == QUANTITY_COLUMNS else 1
