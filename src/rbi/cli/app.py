@@ -215,6 +215,32 @@ def _take_flag(argv: list[str], flag: str) -> bool:
     return found
 
 
+def _joints_spread(argv: list[str]) -> list[str]:
+    """``--joints a=1 b=2`` (the synopsis's ``[--joints NAME=VALUE ...]``) as ``--joints a=1
+    --joints b=2``: each NAME=VALUE word with a number for VALUE that follows a --joints value
+    gets its own option (a file name has no such ``=``); nothing after ``--``."""
+    spread: list[str] = []
+    taking = False
+    for at, arg in enumerate(argv):
+        if arg == "--":
+            return spread + argv[at:]
+        if taking and _joint_word(arg):
+            spread.append("--joints")
+        else:
+            taking = arg.startswith("--joints=") or (bool(spread) and spread[-1] == "--joints")
+        spread.append(arg)
+    return spread
+
+
+def _joint_word(arg: str) -> bool:
+    name, equals, value = arg.partition("=")
+    try:
+        float(value)
+    except ValueError:
+        return False
+    return bool(equals and name) and not name.startswith("-")
+
+
 def main() -> None:
     """Console entry point: exit 2 with one line on bad input, never a traceback.
 
@@ -246,6 +272,7 @@ def _run() -> None:
     warnings.simplefilter("ignore", RuntimeWarning)
     args = sys.argv[1:]
     allow_outside = _take_flag(args, "--allow-outside-paths")
+    args = _joints_spread(args)
     try:
         with outside_paths_allowed(allow_outside):
             completion.enable()  # answers the shell's completion script (only when it is the caller)

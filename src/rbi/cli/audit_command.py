@@ -63,7 +63,7 @@ JointsOption = Annotated[
         "--joints",
         metavar="NAME=VALUE",
         help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
-        "repeat for several. Default: zero (MJCF: qpos0).",
+        "several after one --joints (--joints a=1 b=2) or the option repeated. Default: zero (MJCF: qpos0).",
     ),
 ]
 FixOption = Annotated[
@@ -220,6 +220,9 @@ def _table(report) -> None:
     print(terminal_safe(f"total ({total.frame}): mass {number(total.mass, 6)} kg"))
     print(f"  centre of mass [m]: {vector_text(total.center_of_mass, 6)}")
     print(f"  principal moments about it [kg·m²]: {vector_text(report.total_moments, 6)[1:-1]}")
+    if report.left_out:
+        names = ", ".join(report.left_out)
+        print(terminal_safe(f"  left out: the moments of mass-0 {word}(s) (unphysical): {names}"))
     _joints_table(report)
     for note in report.notes:
         say(f"note: {note}")

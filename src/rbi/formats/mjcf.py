@@ -153,6 +153,7 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     check_unique_joint_names(model, "MuJoCo's compiler")
     _actuator_limits(model, root, defaults)
     model.options["gravity"] = _gravity(path, root)
+    model.options["boundinertia"] = compiler.boundinertia
     _compile_inertia(model, compiler, reader.geoms)
     _check_moving_bodies(model)
     return model

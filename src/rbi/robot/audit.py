@@ -28,7 +28,7 @@ import numpy as np
 from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem, finite
-from rbi.errors import ArgumentError, literal
+from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import SOLID_KINDS, Link, LinkColumns, RobotModel, stacked
 from rbi.formats.robot_files import inertia_problem_text
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
@@ -184,6 +184,9 @@ class AuditReport(TableRepr):
     """Each joint coordinate's holding torque (:class:`rbi.robot.statics.JointTorque`)."""
     columns: _ColumnAudit | None = None
     """The audit on the links' arrays, whose :attr:`links` are made when first asked for."""
+    left_out: list[str] = field(default_factory=list)
+    """The links whose declared moments the total does not count: mass 0 with moments (each
+    flagged ``unphysical``), by name (an unnamed MJCF body as ``body[i]``)."""
 
     @property
     def links(self) -> list[LinkAudit]:
@@ -256,6 +259,7 @@ class AuditReport(TableRepr):
                 "inertia_about_com": self.total.inertia_about_com,
                 "moments": self.total_moments,
                 "frame": self.total.frame,
+                "left_out": list(self.left_out),
             },
             "joints": [
                 {
@@ -395,6 +399,7 @@ def audit_model(
     columns = model.link_columns()
     audited = _ColumnAudit(model, columns)
     audited.audit(geometry, density, mesh_inertia, mesh_repair, repairs)
+    _refuse_overflow(model, audited.audited.values())
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
     placed = placement(model, joints, columns)
     return AuditReport(
@@ -411,7 +416,38 @@ def audit_model(
         },
         joints=joint_torques(model, joints, placed),
         columns=audited,
+        left_out=_left_out(model, columns),
     )
+
+
+def _refuse_overflow(model: RobotModel, audited) -> None:
+    """InputError naming the file and the link when a number its audit gives overflows a
+    double (a centre of mass 1e155 m from a 0.1 m geometry: the offset's square): refused
+    here, once, for every output form and the API. Only links not cleared by the screens can
+    hold one (a cleared link's numbers are finite)."""
+    for each in audited:
+        geo = each.geometry
+        found = {"its centre of mass's offset from its geometry": each.com_offset}
+        if geo is not None:
+            found["its geometry's implied density"] = geo.implied_density
+            found["its geometry's inertia"] = (
+                None if geo.properties is None else np.max(np.abs(geo.inertia_about_com))
+            )
+        for what, value in found.items():
+            if value is not None and not math.isfinite(value):
+                raise InputError(
+                    f"{model.path}: {each.link.label}: {what} overflows a double; give lengths in "
+                    "metres, masses in kg and moments in kg·m²"
+                )
+
+
+def _left_out(model: RobotModel, columns: LinkColumns) -> list[str]:
+    """The names of the links of mass 0 that declare moments (the total counts no moment without
+    a mass: :func:`rbi.robot.tree.heavy_links`); an unnamed one as ``body[i]``."""
+    rows = columns.declared & (columns.masses == 0.0) & np.any(columns.inertias != 0.0, axis=(1, 2))
+    names = columns.names
+    word = model.link_word
+    return [f"{word}[{row}]" if names[row] is None else names[row] for row in np.flatnonzero(rows).tolist()]
 
 
 class _ColumnAudit:

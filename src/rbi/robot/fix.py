@@ -14,12 +14,14 @@ import difflib
 import os
 from dataclasses import dataclass, field
 
+import numpy as np
+
 from rbi.errors import InputError
 from rbi.files.safe import shown
 from rbi.formats.inertial_xml import inertial_text, xml_comment
 from rbi.formats.robot_xml import _tag_end
 from rbi.formats.urdf import attach_elements
-from rbi.robot.audit import AuditReport, LinkAudit
+from rbi.robot.audit import ERROR_RATIO, USABLE_MOMENT, AuditReport, LinkAudit
 
 FIXED_CODES = ("unphysical", "placeholder", "mismatch", "massless")
 
@@ -108,7 +110,23 @@ def _why_not(report: AuditReport, each: LinkAudit, density: float | None) -> str
         return "it declares no mass; give --density or --material to fix it at a density"
     if inertial is None and each.link.element is None:
         return "its element cannot be edited"
-    return None
+    return _bounded(report, geo)
+
+
+def _bounded(report: AuditReport, geo) -> str | None:
+    """Why the geometry's inertial would still be an error once MuJoCo's compiler has raised
+    its principal moments to ``<compiler boundinertia>`` (the audit reads them raised), or
+    None. A moment the audit compares with none (below USABLE_MOMENT of the largest) is not
+    asked."""
+    bound = report.model.options.get("boundinertia", 0.0)
+    moments = np.linalg.eigvalsh(geo.inertia_about_com)
+    smallest = float(np.min(moments[moments > USABLE_MOMENT * moments[-1]], initial=np.inf))
+    if not bound > ERROR_RATIO * smallest:
+        return None
+    return (
+        f"MuJoCo's compiler raises its principal moments to boundinertia {bound:g} kg·m², more "
+        f"than {ERROR_RATIO:g} × its geometry's smallest ({smallest:.4g} kg·m²); lower boundinertia"
+    )
 
 
 def _indent(text: bytes, start: int) -> str:
@@ -160,9 +178,24 @@ def _change(
         step=_step(indent),
     )
     new = f"{comment}\n{indent}{body}" if old else f"\n{indent}{comment}\n{indent}{body}"
+    new = _held(new, report.model.document.encoding)
     if text.count(b"\r\n") * 2 > text.count(b"\n"):  # a file with Windows line ends keeps them
         new = new.replace("\r\n", "\n").replace("\n", "\r\n")
     return Change(each.link.name or each.link.label, reason, old, new, start, end)
+
+
+_SPELLED = str.maketrans({"·": "*", "²": "^2", "³": "^3", "×": "x"})
+
+
+def _held(text: str, encoding: str) -> str:
+    """``text`` with only characters ``encoding`` (the file's declared one) holds: the comment's
+    ``kg·m²`` and ``×`` spelled in ASCII, anything else it cannot hold as ``?``."""
+    try:
+        text.encode(encoding)
+        return text
+    except UnicodeEncodeError:
+        spelled = text.translate(_SPELLED)
+        return spelled.encode(encoding, "replace").decode(encoding)
 
 
 def _after_start_tag(text: bytes, element) -> int | None:
