@@ -151,3 +151,49 @@ def test_a_tilt_too_large_to_be_a_turn_is_refused_as_simulate_refuses_it(bolted,
     assert proc.returncode == 2 and proc.stdout == "", proc.stderr
     assert proc.stderr.startswith("rbi: --tilt: ") and "too large to be a turn" in proc.stderr
     assert len(proc.stderr.splitlines()) == 1
+
+
+@pytest.mark.parametrize(
+    "settings, named, words",
+    [
+        # the command line's START:STOP:COUNT habit: rbi 4 ran spins 100, 300 and 3
+        ({"spin": (100, 300, 3)}, "spin: ", ["START, STOP, COUNT", "Grid(100, 300, 3)", "linspace"]),
+        ({"tilt_deg": (0.0, 1.0, 5)}, "tilt_deg: ", ["START, STOP, COUNT", "Grid(0.0, 1.0, 5)"]),
+        (
+            {"vary": {"parts.bolt.mass": (0.01, 0.03, 5)}},
+            "vary['parts.bolt.mass']: ",
+            ["Grid(0.01, 0.03, 5)"],
+        ),
+        ({"spin": [True]}, "spin: ", ["True"]),  # ran spin 1.0
+        ({"spin": np.array([True, False])}, "spin: ", ["bool"]),
+        ({"spin": np.array([[150.0, 200.0], [250.0, 300.0]])}, "spin: ", ["shape (2, 2)"]),  # flattened
+        ({"spin": 150.0, "resume": True}, "resume: ", ["out"]),  # ignored without out
+    ],
+)
+def test_argument_habits_are_refused_naming_the_parameter(bolted, settings, named, words):
+    with pytest.raises((TypeError, ValueError)) as caught:
+        rbi.sweep(bolted, duration=0.1, workers=1, **settings)
+    message = str(caught.value)
+    assert message.startswith(named) and "--" not in message, message
+    for word in words:
+        assert word in message, message
+
+
+def test_values_that_are_not_the_habit_still_sweep(bolted):
+    """A list of three values, a tuple whose last is not whole, an array and a Grid run as given."""
+    for spin, expected in [
+        ([100.0, 300.0, 3.0], [100.0, 300.0, 3.0]),
+        ((150.0, 250.0, 3.5), [150.0, 250.0, 3.5]),
+        (np.array([150.0, 250.0]), [150.0, 250.0]),
+        (rbi.Grid(100, 300, 3), [100.0, 200.0, 300.0]),
+    ]:
+        assert rbi.sweep(bolted, spin=spin, duration=0.1, workers=1)["spin"].tolist() == expected
+
+
+@pytest.mark.parametrize(
+    "function, keyword, meant",
+    [("sweep", "tilt", "tilt_deg"), ("sweep", "spinaxis", "spin_axis"), ("simulate", "tilt", "tilt_deg")],
+)
+def test_a_misspelt_keyword_is_told_the_parameter_it_resembles(bolted, function, keyword, meant):
+    with pytest.raises(TypeError, match=rf"'{keyword}'.*did you mean '{meant}'\?"):
+        getattr(rbi, function)(bolted, spin=150.0, **{keyword: 1.0})

@@ -2,7 +2,12 @@
 
 from __future__ import annotations
 
+import difflib
+import functools
+import inspect
 import os
+from collections.abc import Callable
+from typing import ParamSpec, TypeVar
 
 from rbi.api.body import Body
 from rbi.errors import ArgumentError, SpecError, literal
@@ -43,3 +48,27 @@ def path_text(value: object, name: str = "robot_file") -> str:
     if not isinstance(value, (str, bytes, os.PathLike)):
         raise TypeError(f"{name}: expected a path (str or os.PathLike), got {type(value).__name__}")
     return os.fsdecode(os.fspath(value))
+
+
+P = ParamSpec("P")
+R = TypeVar("R")
+
+
+def keywords_checked(function: Callable[P, R]) -> Callable[P, R]:
+    """``function`` that answers a misspelt keyword with the parameter it resembles:
+    ``rbi.sweep(body, tilt=1)`` is TypeError ``sweep() got an unexpected keyword argument
+    'tilt' (did you mean 'tilt_deg'?)`` (Python's own error says only the first half)."""
+    known = list(inspect.signature(function).parameters)
+
+    @functools.wraps(function)
+    def checked(*args: P.args, **kwargs: P.kwargs) -> R:
+        for keyword in kwargs:
+            if keyword not in known:
+                hint = difflib.get_close_matches(keyword, known, n=1)
+                raise TypeError(
+                    f"{function.__name__}() got an unexpected keyword argument {keyword!r}"
+                    + (f" (did you mean {hint[0]!r}?)" if hint else "")
+                )
+        return function(*args, **kwargs)
+
+    return checked

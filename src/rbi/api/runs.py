@@ -9,7 +9,7 @@ from typing import Any
 import numpy as np
 
 from rbi.api.body import Body, loaded_body
-from rbi.api.outputs import Destination, checked_output
+from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.text import number, vector_text
@@ -107,6 +107,7 @@ class Trajectory(TableRepr):
         return f"{s.get('name') or 'trajectory'} — simulate", rows, QUANTITY_COLUMNS
 
 
+@keywords_checked
 def simulate(
     body: Body,
     *,

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rbi.api.body import Body, loaded_body
-from rbi.api.outputs import Destination, checked_output
+from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
 from rbi.files.output import OutputTarget
 from rbi.reprs import TableRepr
@@ -123,6 +123,7 @@ if TYPE_CHECKING:
     """A sweep axis: one value, the grid's values, or a draw per run."""
 
 
+@keywords_checked
 def sweep(
     body: Body | str | os.PathLike[str],
     *,
@@ -179,10 +180,17 @@ def sweep(
     check_settings(settings)
     path, raw, spec_bytes = _spec_source(body)
     read = body if isinstance(body, Body) else path  # a Body: every file it was read from
-    target = None if out is None else checked_output(out, ("csv", "parquet"), read, "out")
+    target = _target(out, resume, read)
     study = Study(path, raw, settings, rows_printed=out is None, spec_bytes=spec_bytes)
     swept, target = _swept(body, study, out, target)
     return SweepTable(study, study.run(target, resume, progress), swept)
+
+
+def _target(out: Destination | None, resume: bool, read: Body | str) -> OutputTarget | None:
+    """`sweep`'s ``out`` checked (never a file the body is read from); ``resume`` needs it."""
+    if out is None and resume:
+        raise ArgumentError("resume", "needs {out}, the file of the interrupted sweep")
+    return None if out is None else checked_output(out, ("csv", "parquet"), read, "out")
 
 
 def _swept(

@@ -160,14 +160,20 @@ def axis_of(name: str, value: Any) -> GridAxis | Draw:
             raise ValueError(f"the values must be finite numbers (got {shown(value, 60)})")
         values: tuple[float, ...] = (float(value),)
     else:
+        _refuse_habits(value)
         try:
-            values = tuple(float(v) for v in np.asarray(value, dtype=float).ravel())
+            array = np.asarray(value, dtype=float)
+            values = tuple(float(v) for v in array.ravel())
         except OverflowError:
             raise ValueError(f"the values must be finite numbers (got {shown(value, 60)})") from None
         except (TypeError, ValueError):
             raise TypeError(
                 f"expected a number, a sequence of numbers, Grid, Normal or Uniform (got {value!r:.60})"
             ) from None
+        if array.ndim > 1:
+            raise ValueError(
+                f"expected one value per run, a flat sequence (got an array of shape {array.shape})"
+            )
         if not values:
             raise ValueError("expected at least one value (got none)")
         if len(values) > MAX_RUNS:
@@ -175,6 +181,25 @@ def axis_of(name: str, value: Any) -> GridAxis | Draw:
     if not all(math.isfinite(v) for v in values):
         raise ValueError(f"the values must be finite numbers (got {value!r:.60})")
     return GridAxis(name, values)
+
+
+def _refuse_habits(value: Any) -> None:
+    """Refuse values that would run other than meant: a tuple of three numbers whose last is a
+    whole number (the command line's ``START:STOP:COUNT`` habit: ``(100, 300, 3)`` would run
+    spins 100, 300 and 3; a list or an array of them runs as given) and booleans (``[True]``
+    would run 1.0)."""
+    if isinstance(value, tuple) and len(value) == 3 and all(isinstance(v, numbers.Real) for v in value):
+        start, stop, count = value
+        if float(count).is_integer() and not any(isinstance(v, bool) for v in value):
+            raise ValueError(
+                f"{value!r} looks like START, STOP, COUNT (the command line's {start}:{stop}:{count}): "
+                f"give rbi.Grid({start}, {stop}, {count}) (or numpy.linspace({start}, {stop}, {count})) "
+                f"for {count} values from {start} to {stop}, or the list {list(value)} for these three"
+            )
+    if isinstance(value, (list, tuple)) and any(isinstance(v, (bool, np.bool_)) for v in value):
+        raise TypeError(f"the values must be numbers, not True or False (got {value!r:.60})")
+    if isinstance(value, np.ndarray) and value.dtype == bool:
+        raise TypeError("the values must be numbers, not an array of bool")
 
 
 def axis_record(axis: GridAxis | Draw) -> list[Any]:
