@@ -199,6 +199,22 @@ def test_a_result_that_overflows_is_a_value_error_not_inf(top, case):
             call(top)
 
 
+def test_results_in_units_that_overflow_are_refused_naming_the_part():
+    """in_units returned a body of inf (1e305 kg·m² is 1e311 kg·mm²), and the radii of gyration
+    of a body of 1e-300 kg came back inf: the API refuses both, as the CLI did only for the
+    second."""
+    huge = {"name": "huge", "shape": "custom", "mass": 1, "center_of_mass": [0, 0, 0]}
+    body = rbi.load({"parts": [{**huge, "inertia": {"ixx": 1e305, "iyy": 1e305, "izz": 1e305}}]})
+    with pytest.raises(ValueError, match=r"^<dict>: parts\[0\] \(huge\): .*not finite"):
+        body.in_units("mm", "kg")
+    assert body.in_units("m", "g").mass == 1000.0  # in range: converted
+    ghost = rbi.load(
+        {"parts": [{**huge, "mass": 1e-300, "inertia": {"ixx": 1e10, "iyy": 1e10, "izz": 1e10}}]}
+    )
+    with pytest.raises(ValueError, match=r"^<dict>: result radii_of_gyration is not finite"):
+        ghost.principal()
+
+
 def test_a_far_point_still_in_range_gives_the_parallel_axis_answer(top):
     """About (1e150, 0, 0) m the inertia is still a double: I_yy = I_yy,com + m (d² + z_c²)
     and I_zz = I_zz,com + m d², d = 1e150 - x_c (the parallel-axis theorem, to rounding)."""

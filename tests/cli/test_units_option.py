@@ -57,3 +57,28 @@ def test_principal_about_pivot_in_si(write_spec):
 def test_bad_units_value_exits_2(write_spec):
     proc = run_rbi_inprocess("inertia", write_spec(SPEC), "--units", "furlongs")
     assert proc.returncode == 2 and "--units: expected SI or LENGTH,MASS" in proc.stderr
+
+
+# a part whose inertia, 1e305 kg·m², is 1e311 kg·mm²: more than a double holds
+HUGE = """
+units: {length: m, mass: kg}
+parts:
+  - {name: huge, shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1e305, iyy: 1e305, izz: 1e305}}
+  - {name: small, shape: point, mass: 1, position: [0, 0, 0]}
+"""
+
+
+@pytest.mark.parametrize("command", [["inertia"], ["principal"], ["momentum", "--omega", "0,0,1"]])
+def test_units_that_overflow_a_result_are_one_line_naming_file_and_part_in_every_form(write_spec, command):
+    """rbi 4 said '--about: expected 3 finite numbers, got [inf, ...]' (an option not given,
+    no file) or '--about: the point is too far from the body'."""
+    path = write_spec(HUGE)
+    lines = set()
+    for form in ("table", "json", "csv"):
+        proc = run_rbi_inprocess(*command, path, "--units", "mm,kg", "-f", form)
+        assert proc.returncode == 2 and proc.stdout == "", (form, proc.stdout)
+        assert len(proc.stderr.strip().splitlines()) == 1 and "Traceback" not in proc.stderr
+        lines.add(proc.stderr)
+    (line,) = lines  # the same line for every form
+    assert line.startswith(f"rbi: {path}: parts[0] (huge): ") and "--about" not in line, line
+    assert "not finite" in line and "mm" in line, line

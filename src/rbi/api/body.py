@@ -382,18 +382,19 @@ class Body(TableRepr):
             raise ArgumentError("about", NO_PIVOT, file=self.path)
         return np.array(point, dtype=float)
 
-    def _refuse_non_finite(self, **results: Any) -> None:
-        """ValueError (an `ArgumentError` naming the file) when a result overflowed: inputs of
-        absurd size (``about=(1e200, 0, 0)``, ``omega=(1e200, 0, 0)``) give inf or NaN, which no
-        caller can use (the CLI prints the message as bad input, exit 2)."""
+    def _refuse_non_finite(self, where: str = "", **results: Any) -> None:
+        """ValueError (an `ArgumentError` naming the file, then ``where``: a part) when a result
+        overflowed: inputs of absurd size (``about=(1e200, 0, 0)``, ``omega=(1e200, 0, 0)``,
+        units that scale 1e305 past a double) give inf or NaN, which no caller can use (the CLI
+        prints the message as bad input, exit 2, in every output form)."""
         bad = [
             name for name, value in results.items() if value is not None and not np.all(np.isfinite(value))
         ]
         if bad:
             raise ArgumentError(
                 (),
-                f"result{'s' if len(bad) > 1 else ''} {', '.join(bad)} {'are' if len(bad) > 1 else 'is'} not "
-                "finite: the input values are too large for double precision",
+                f"{literal(where, quoted=False)}result{'s' if len(bad) > 1 else ''} {', '.join(bad)} "
+                f"{'are' if len(bad) > 1 else 'is'} not finite: the input values are too large for double precision",
                 file=self.path,
             )
 
@@ -431,11 +432,14 @@ class Body(TableRepr):
 
         point = self.point(about)
         moments, axes = principal_axes(self.inertia(about))
+        with np.errstate(over="ignore", invalid="ignore"):
+            radii = np.asarray(radii_of_gyration(list(moments), self.mass))
+        self._refuse_non_finite(radii_of_gyration=radii)
         # + 0.0: no -0.0 components (the CLI prints 0 there too)
         return Principal(
             moments=np.asarray(moments) + 0.0,
             axes=np.asarray(axes) + 0.0,
-            radii_of_gyration=np.asarray(radii_of_gyration(list(moments), self.mass)),
+            radii_of_gyration=radii,
             about=point,
         )
 
@@ -525,7 +529,15 @@ class Body(TableRepr):
         for parameter, value, known in (("length", length, LENGTH_UNITS), ("mass", mass, MASS_UNITS)):
             if value not in known:
                 raise ArgumentError(parameter, f"expected one of {', '.join(known)}, got {literal(value)}")
-        return Body(convert_body(self._loaded, length, mass), self._raw, self._spec_bytes)
+        with np.errstate(over="ignore", invalid="ignore"):
+            body = Body(convert_body(self._loaded, length, mass), self._raw, self._spec_bytes)
+        props, elements, names = body._loaded.props, body._loaded.elements, body._loaded.part_names
+        if not all(np.all(np.isfinite(value)) for value in _numbers(props).values()):
+            for i, element in enumerate(elements):  # the part to blame, when one is
+                part = f"parts[{i}]" + (f" ({names[i]})" if i < len(names) and names[i] else "")
+                body._refuse_non_finite(f"{part}: in {length} and {mass}, ", **_numbers(element))
+            body._refuse_non_finite(f"in {length} and {mass}, ", **_numbers(props))
+        return body
 
     def moment_about_axis(
         self, axis: Sequence[float], about: Point = "com", axes: Sequence[tuple[str, float]] | None = None
@@ -680,6 +692,15 @@ class Body(TableRepr):
             rows.append((f"principal axis {i}", "", vector_text(axis)))
         rows.append(("parts", "", str(len(self._loaded.elements))))
         return f"{self.name or self.path}", rows, QUANTITY_COLUMNS
+
+
+def _numbers(element: Any) -> dict[str, Any]:
+    """A body's or a part's mass properties by result name (for `Body._refuse_non_finite`)."""
+    return {
+        "mass": element.mass,
+        "center_of_mass": element.center_of_mass,
+        "inertia": element.inertia_about_com,
+    }
 
 
 def _rotation(axes: Any) -> np.ndarray:
