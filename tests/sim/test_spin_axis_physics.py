@@ -43,7 +43,9 @@ def test_the_gyroscope_spins_about_its_axle_by_default():
 def test_exact_steady_precession_of_the_horizontal_gyroscope():
     spin = 150.0
     rate = steady_rate(spin)
-    run = rbi.simulate(gyroscope(), omega=[0.0, spin, rate], duration=1.0, samples=201, error_estimate=False)
+    run = rbi.simulate(
+        gyroscope(), omega=[0.0, spin, rate], spin_axis="y", duration=1.0, samples=201, error_estimate=False
+    )
     assert np.max(np.abs(run.tilt_deg - 90.0)) < 1e-6
     measured = np.radians(run.precession_deg[-1] - run.precession_deg[0]) / 1.0
     assert measured == pytest.approx(rate, rel=1e-7)

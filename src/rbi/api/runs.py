@@ -42,6 +42,8 @@ class Trajectory(TableRepr):
     summary: dict = field(default_factory=dict)
     body: Body | None = field(default=None, compare=False)
     """The simulated `Body` (None for a trajectory made by hand)."""
+    omega_given: bool = field(default=False, compare=False)
+    """The run was given its ω (``omega``), not a spin about the spin axis."""
 
     def plot(self, path: Destination) -> None:
         """Draw the run at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib), as ``rbi
@@ -65,6 +67,7 @@ class Trajectory(TableRepr):
             nudge_deg=self.summary["initial"]["nudge_deg"],
             energy_unit=body.unit_labels["energy"],
             spin_axis=self.summary["spin_axis"],
+            titled_axis=None if self.omega_given else self.summary["spin_axis"],
             **free,
         )
 
@@ -179,6 +182,7 @@ def _trajectory(run: Any, body: Body) -> Trajectory:
         energy=columns["energy"],
         summary=run.summary,
         body=body,
+        omega_given=run.omega_given,
     )
 
 

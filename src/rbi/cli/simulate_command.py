@@ -184,6 +184,12 @@ def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
     """(quantity, unit, value) rows of the motion: scene, method, final state, tilt, precession."""
 
     final = result["final"]
+    to_h = result.get("angle_to_h_deg") or {}
+    cone = (
+        []
+        if to_h.get("min") is None
+        else [("spin axis to h: min … max", "deg", f"{number(to_h['min'])} … {number(to_h['max'])}")]
+    )
     return [
         ("scene", "", result["scene"]),
         ("method", "", result["method"]),
@@ -206,6 +212,7 @@ def _motion_rows(result: dict) -> list[tuple[str, str, str]]:
             if result["mean_precession_rate_deg_s"] is None
             else number(result["mean_precession_rate_deg_s"]),
         ),
+        *cone,
     ]
 
 

@@ -44,7 +44,13 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
         raise InputError(
             f"{body.path}: the motion is not finite: the input values are too large for double precision"
         )
-    title = motion_title(body.name or body.path, run.omega0, scene.spin_axis, run.tilt_deg, limit=30)
+    title = motion_title(
+        body.name or body.path,
+        run.omega0,
+        None if run.omega_given else scene.spin_axis,
+        run.tilt_deg,
+        limit=30,
+    )
     tilts = tilt_deg(trajectory.q, scene.spin_frame)
     data = animation_data(
         title,

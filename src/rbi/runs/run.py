@@ -150,11 +150,13 @@ def scene_of(body: Any, gravity_si: float | None, spin_axis: str | Sequence[floa
 class SimulationRun:
     """A finished run: ``trajectory`` (:class:`rbi.sim.api.Trajectory`), ``columns`` (the CSV's
     columns by name, :data:`rbi.sim.summary.CSV_COLUMNS`) and ``summary`` (plain values and
-    numpy arrays: what `rbi simulate --format json` prints, without ``out``)."""
+    numpy arrays: what `rbi simulate --format json` prints, without ``out``); omega_given: as
+    :class:`PreparedRun`'s."""
 
     trajectory: Any
     columns: dict[str, np.ndarray]
     summary: dict[str, Any]
+    omega_given: bool = False
 
 
 @dataclass(frozen=True)
@@ -166,7 +168,9 @@ class PreparedRun:
     q0: initial orientation [w, x, y, z], body → world. omega0: initial angular velocity, body
     frame, rad/s. tilt_deg, tilt_axis: the nudge, the body's turn at t=0 about a world axis
     (the tilt is then the angle of the scene's spin axis from the vertical). duration (s),
-    method, rtol (None: the method's own), budget: most integration steps.
+    method, rtol (None: the method's own), budget: most integration steps. omega_given: the
+    run was given a non-zero ω (not a spin about the axis), whose direction is its spin axis
+    unless one was given.
     """
 
     body: Any
@@ -179,6 +183,7 @@ class PreparedRun:
     method: str
     rtol: float | None
     budget: int
+    omega_given: bool = False
 
     def integrate(self, samples: int, progress: Progress | None = None) -> Any:
         """The trajectory (:class:`rbi.sim.api.Trajectory`) at ``samples`` equally spaced times,
@@ -218,7 +223,7 @@ class PreparedRun:
             raise InputError(f"{self.body.path}: {exc}") from None
         columns = sample_columns(self.scene, trajectory)
         refuse_non_finite(self.body.path, columns)
-        return SimulationRun(trajectory=trajectory, columns=columns, summary=self._head(trajectory) | figures)
+        return SimulationRun(trajectory, columns, self._head(trajectory) | figures, self.omega_given)
 
     def _head(self, trajectory: Any) -> dict[str, Any]:
         """The summary's first entries: the body, the scene and the initial state."""
@@ -263,16 +268,16 @@ def prepare_run(
     :data:`rbi.sim.budget.DEFAULT_MAX_STEPS`) is refused with :class:`ArgumentError` when
     ``check_budget``. ``spin``: rad/s about the spin axis (``spin_axis``, see
     :func:`body_spin_axis`); ``omega``: the initial angular velocity instead (body frame,
-    rad/s); ``tilt_deg``: the nudge about the world ``tilt_axis``; ``gravity``: m/s²."""
+    rad/s), whose direction is then the spin axis unless ``spin_axis`` is given; ``tilt_deg``:
+    the nudge about the world ``tilt_axis``; ``gravity``: m/s²."""
 
     check_run_options(
         method, spin, omega, tilt_deg, duration, tilt_axis, gravity=gravity, max_steps=max_steps, rtol=rtol
     )
-    scene = scene_of(body, gravity, spin_axis)
-    if omega is not None:
-        w0 = vector_value(omega, "omega")
-    else:
-        w0 = [float(spin or 0.0) * float(c) for c in scene.spin_axis]
+    given = None if omega is None else vector_value(omega, "omega")
+    # the contract: an ω without a spin axis given turns about its own direction
+    scene = scene_of(body, gravity, spin_axis if spin_axis is not None or not any(given or ()) else given)
+    w0 = given if given is not None else [float(spin or 0.0) * float(c) for c in scene.spin_axis]
     q0, omega0 = initial_state(tilt_deg, w0, tilt_axis.lower())
     budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)
     if method != "exact" and check_budget:
@@ -295,6 +300,7 @@ def prepare_run(
         method=method,
         rtol=rtol,
         budget=budget,
+        omega_given=any(given or ()),
     )
 
 

@@ -1,6 +1,6 @@
 """Numbers a simulation run reports: the summary of a trajectory and its sample table.
 
-Public names: :func:`summarize`, :func:`sample_columns`, :func:`error_estimate`,
+Public names: :func:`summarize`, :func:`sample_columns`, :func:`error_estimate`, :func:`angle_to_h`,
 :data:`CSV_COLUMNS`. Plain numbers and arrays only (rendering is the CLI's job).
 """
 
@@ -151,6 +151,7 @@ def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any
     rate_deg = figures["precession_rate_deg_s"]
     conserved = diagnostics.conserved_quantities(scene, q, omega)
     norms = np.linalg.norm(q, axis=1)
+    free = {} if scene.pivoted else {"angle_to_h_deg": angle_to_h(scene, omega)}
     return {
         "spin_axis": np.array(scene.spin_axis, dtype=float),
         "final": {"t": float(t[-1]), "q": q[-1], "omega": omega[-1], "tilt_deg": figures["final_tilt_deg"]},
@@ -166,12 +167,27 @@ def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any
         "tilt_max_deg": figures["max_tilt_deg"],
         "mean_precession_rate_deg_s": rate_deg,
         "mean_precession_rate_rad_s": None if rate_deg is None else float(np.radians(rate_deg)),
+        **free,
         "conserved": conserved,
         "max_relative_drift": max(v["drift"] for v in conserved.values()),
         "quaternion_norm_error": max(float(np.max(np.abs(norms - 1.0))), trajectory.quaternion_norm_error),
         "stability": diagnostics.stability(scene, q0, omega0),
         "closed_form": closed_form_facts(scene, q0, omega0),
     }
+
+
+def angle_to_h(scene: Scene, omega: np.ndarray) -> dict[str, float | None]:
+    """The angle between a free body's spin axis and its angular momentum h = I ω (conserved in
+    world axes, so the angle is that of the axis's cone about h): smallest, largest and final
+    over the samples, degrees; None for a body that does not turn (h = 0). Measured in body
+    axes, ``atan2(|a × h|, a · h)``, accurate near 0° and 180°."""
+    h = diagnostics.angular_momentum_body(scene, omega)
+    size = np.max(np.abs(h), axis=1, keepdims=True)
+    if not np.all(size > 0.0):
+        return dict.fromkeys(("min", "max", "final"))
+    h = h / size  # no overflow in the cross product for a huge h
+    angle = np.degrees(np.arctan2(np.linalg.norm(np.cross(scene.spin_axis, h), axis=1), h @ scene.spin_axis))
+    return {"min": float(np.min(angle)), "max": float(np.max(angle)), "final": float(angle[-1])}
 
 
 def closed_form_facts(scene: Scene, q0, omega0) -> dict[str, Any] | None:

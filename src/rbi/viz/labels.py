@@ -39,18 +39,19 @@ def label(text: object, limit: int = MAX_LABEL_CHARS) -> str:
 def motion_title(
     name: object,
     omega0: Iterable[float],
-    spin_axis: Iterable[float],
+    spin_axis: Iterable[float] | None,
     nudge_deg: float,
     limit: int = MAX_LABEL_CHARS,
 ) -> str:
     """The title of a run's pictures (``simulate --plot``, ``animate``): the body's ``name``, its
     start and the nudge (degrees). ``omega0`` (body axes, rad/s) along the unit ``spin_axis``
     (body axes) is ``spin W rad/s``; any other is written out, ``ω₀ [wx, wy, wz] rad/s``, so
-    that an --omega run is not titled with a spin it was not given."""
+    that an --omega run is not titled with a spin it was not given (None: a run given its ω,
+    whose direction is its spin axis, is written out too)."""
     omega = [float(w) for w in omega0]
-    spin_axis = [float(a) for a in spin_axis]
-    along = sum(w * a for w, a in zip(omega, spin_axis))
-    off = max(abs(w - along * a) for w, a in zip(omega, spin_axis))
+    axis = [] if spin_axis is None else [float(a) for a in spin_axis]
+    along = sum(w * a for w, a in zip(omega, axis))
+    off = max((abs(w - along * a) for w, a in zip(omega, axis)), default=float("inf"))
     start = (
         f"spin {number(along)} rad/s"
         if off <= 1e-12 * max(abs(along), 1e-300)

@@ -52,13 +52,14 @@ def plot_trajectory(
 
 
 def plot_simulation(
-    columns: dict[str, np.ndarray], target, *, name: str, omega0, nudge_deg: float, **drawn
+    columns: dict[str, np.ndarray], target, *, name: str, omega0, nudge_deg: float, titled_axis, **drawn
 ) -> None:
     """:func:`plot_trajectory` written at the checked output ``target``, titled with the body's
-    ``name``, its start ``omega0`` (body axes, rad/s) and the nudge (degrees): :func:`motion_title`; ``drawn``: its
+    ``name``, its start ``omega0`` (body axes, rad/s) about ``titled_axis`` (None: an ω given) and
+    the nudge (degrees): :func:`motion_title`; ``drawn``: its
     keywords (``spin_axis``, ``energy_unit``, a free body's ``principal_axes`` and ``inertia``)."""
 
-    title = motion_title(name, omega0, drawn.get("spin_axis", (0.0, 0.0, 1.0)), nudge_deg)
+    title = motion_title(name, omega0, titled_axis, nudge_deg)
     write_output(
         target,
         writer=lambda path: plot_trajectory(columns, path, title=title, format=target.format, **drawn),
