@@ -15,6 +15,7 @@ from collections.abc import Callable
 import numpy as np
 from numpy.typing import ArrayLike
 
+from rbi.core import polygon
 from rbi.core.mass import MassProperties
 from rbi.core.rotation import unit_vector, vector_length
 
@@ -487,3 +488,54 @@ def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> M
     same radius r on each end face, uniform density; moments about its centre as
     :func:`capsule_moments` gives them."""
     return _about_middle(mass, start, end, lambda length: capsule_moments(mass, float(radius), length))
+
+
+# --- prism: a plane polygon with holes extruded along a straight line ------------------------
+
+
+def prism_frame(
+    start: ArrayLike, end: ArrayLike, x_axis: ArrayLike | None = None
+) -> tuple[np.ndarray, float]:
+    """``(R, L)``: the outline's axes as the columns of ``R`` (body axes) and the length
+    ``L = |end − start|``. z runs from ``start`` to ``end``; x is ``x_axis`` (default body x, or
+    body y when x runs along z) made perpendicular to z; y = z × x. ValueError when ``x_axis``
+    runs along z."""
+    z, length = axis_between(np.asarray(start, dtype=float), np.asarray(end, dtype=float))
+    given = x_axis is not None
+    x = np.asarray(
+        x_axis if given else ([0.0, 1.0, 0.0] if abs(z[0]) > 0.9 else [1.0, 0.0, 0.0]), dtype=float
+    )
+    x = unit_vector(x)
+    x = x - (x @ z) * z
+    if vector_length(x) < 1e-9:
+        raise ValueError("x_axis: runs along the extrusion (end - start); give a direction across it")
+    x = unit_vector(x)
+    return np.column_stack((x, np.cross(z, x), z)), length
+
+
+def prism_volume(outline: ArrayLike, holes: list, start: ArrayLike, end: ArrayLike) -> float:
+    """Volume of the prism (L³): the outline's area less its holes', times the length."""
+    return polygon.area_moments(outline, holes)[0] * float(vector_length(np.subtract(end, start)))
+
+
+def prism(
+    mass: float,
+    outline: ArrayLike,
+    holes: list,
+    start: ArrayLike,
+    end: ArrayLike,
+    x_axis: ArrayLike | None = None,
+) -> MassProperties:
+    """Straight extrusion of the outline less its holes (outline coordinates in the axes of
+    :func:`prism_frame`, origin at ``start``) from ``start`` to ``end``. With area A, second
+    moments J of the section about its centroid and length L, along its own axes about its centre
+    of mass: Ixx = m (Jyy/A + L²/12)... precisely ``m (J_yy/A + L²/12)`` about x with J_yy =
+    ∫y'², ``m (J_xx/A + L²/12)`` about y, ``m (J_xx + J_yy)/A`` about z, product ``−m J_xy/A``."""
+    R, length = prism_frame(start, end, x_axis)
+    area, (cx, cy), J = polygon.area_moments(outline, holes)
+    extra = length * length / 12.0
+    jxx, jyy, jxy = J[0, 0] / area, J[1, 1] / area, J[0, 1] / area  # ∫x'², ∫y'², ∫x'y' per area
+    own = mass * np.array([[jyy + extra, -jxy, 0.0], [-jxy, jxx + extra, 0.0], [0.0, 0.0, jxx + jyy]])
+    turned = R @ own @ R.T
+    com = np.asarray(start, dtype=float) + R @ [cx, cy, 0.5 * length]
+    return MassProperties(mass, com, 0.5 * (turned + turned.T))

@@ -12,6 +12,7 @@ versions of the parts into n bodies at once. Units are the caller's (L, M, MÂ·LÂ
 from __future__ import annotations
 
 import math
+
 import numpy as np
 
 from rbi.core.inertia import principal_axes

@@ -68,6 +68,15 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         return f"must be a number (got {shown(value)})"
     if kind in ("int_type", "int_from_float", "int_parsing"):
         return f"must be a whole number (got {shown(value)})"
+    polygon = next((k for k in ("outline", "holes") if k in error["loc"]), None)
+    if kind in ("too_short", "too_long") and polygon is not None:  # a prism's polygons and their points
+        loc = tuple(error["loc"])
+        if len(loc) - loc.index(polygon) - (polygon == "holes") == 2:
+            return f"must be a point [x, y] (got {shown(value)})"
+        most = (
+            f"at least {ctx.get('min_length')}" if kind == "too_short" else f"at most {ctx.get('max_length')}"
+        )
+        return f"must have {most} vertices (got {len(value) if isinstance(value, list) else shown(value)})"
     if kind in ("too_short", "too_long"):
         return f"must be a list of {ctx.get('min_length', ctx.get('max_length'))} numbers [x, y, z] (got {shown(value)})"
     if kind == "list_type":

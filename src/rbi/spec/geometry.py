@@ -34,10 +34,12 @@ from typing import Any
 import numpy as np
 
 from rbi.core.inertia import principal_axes
+from rbi.core.polygon import trapezoids
 from rbi.core.rotation import unit_vector
+from rbi.core.shapes import prism_frame
 from rbi.formats.paths import spec_relative_file
 from rbi.spec import models
-from rbi.spec.pattern import copy_rotations
+from rbi.spec.pattern import copy_motions
 from rbi.spec.translate import rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M
 
@@ -62,45 +64,44 @@ def part_geometry(body) -> list[dict[str, Any]]:
         pattern = getattr(part, "pattern", None)
         count = 1 if pattern is None else int(pattern.count)
         if part is None:
-            item = _cloud_points(spec, body.path)
+            items = [_cloud_points(spec, body.path)]
+        elif isinstance(part, models.AssemblyPart):
+            items = _assembly(part, body.length_unit) if count <= MAX_DRAWN_COPIES else [None]
         else:
-            item = _primitive(part, body.path, body.length_unit) if count <= MAX_DRAWN_COPIES else None
+            items = [_primitive(part, body.path, body.length_unit) if count <= MAX_DRAWN_COPIES else None]
         copies = (
-            [_stand_in(element)] if item is None else [moved(item, R, t) for R, t in _copy_motions(pattern)]
+            [_stand_in(element)]
+            if None in items or len(items) * count > MAX_DRAWN_COPIES
+            else [moved(item, R, t) for R, t in copy_motions(pattern) for item in items]
         )
         for copy in copies:
             copy |= {
                 "part": index,
                 "name": body.part_names[index] if index < len(body.part_names) else None,
                 "shape": shape,
-                "hole": bool(getattr(part, "subtract", False)),
+                "hole": bool(copy.get("hole") or getattr(part, "subtract", False)),
                 "mass": float(element.mass) / len(copies),
             }
             out.append(copy)
     return out
 
 
-def _copy_motions(pattern) -> list[tuple[np.ndarray, np.ndarray]]:
-    """(R, t) of each copy, x -> R x + t (the first is the part as written)."""
-    if pattern is None or pattern.count <= 1:
-        return [(np.eye(3), np.zeros(3))]
-    if pattern.step is not None:
-        return [(np.eye(3), k * np.asarray(pattern.step, dtype=float)) for k in range(pattern.count)]
-
-    through = np.zeros(3) if pattern.through is None else np.asarray(pattern.through, dtype=float)
-    return [(R, through - R @ through) for R in copy_rotations(pattern.count, pattern.axis)]
-
-
 POINT_KEYS = ("start", "end", "center", "position")
 DIRECTION_KEYS = ("axis",)
+LENGTH_KEYS = ("start_radius", "end_radius", "inner_radius", "radius", "major_radius", "minor_radius")
+SIZE_KEYS = ("size", "semi_axes")
 
 
-def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray) -> dict[str, Any]:
-    """The primitive turned by ``R`` and moved by ``t`` (x -> R x + t)."""
+def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray, scale: float = 1.0) -> dict[str, Any]:
+    """The primitive turned by ``R`` and moved by ``t`` (x -> R x + t), after its lengths were
+    multiplied by ``scale`` (another length unit)."""
     out = dict(item)
+    for key in LENGTH_KEYS + SIZE_KEYS:
+        if key in out and scale != 1.0:
+            out[key] = (np.asarray(out[key], dtype=float) * scale).tolist()
     for key in POINT_KEYS:
         if key in out:
-            out[key] = (R @ np.asarray(out[key], dtype=float) + t).tolist()
+            out[key] = (R @ (scale * np.asarray(out[key], dtype=float)) + t).tolist()
     for key in DIRECTION_KEYS:
         if key in out:
             out[key] = (R @ np.asarray(out[key], dtype=float)).tolist()
@@ -108,8 +109,37 @@ def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray) -> dict[str, Any]:
         out["rotation"] = (R @ np.asarray(out["rotation"], dtype=float)).tolist()
     for key in ("vertices", "positions"):
         if key in out:
-            out[key] = (np.asarray(out[key], dtype=float) @ R.T + t).tolist()
+            out[key] = (scale * np.asarray(out[key], dtype=float) @ R.T + t).tolist()
     return out
+
+
+def _assembly(part, length_unit: str) -> list[dict[str, Any] | None]:
+    """The sub-assembly's primitives in this body: its lengths in ``length_unit``, turned by
+    ``rotation`` about its origin, that origin moved to ``position``."""
+    sub = part._loaded
+    R = rotation_matrix(part.rotation)
+    scale = LENGTH_UNITS_IN_M[sub.length_unit] / LENGTH_UNITS_IN_M[length_unit]
+    at = np.asarray(part.position, dtype=float)
+    return [moved(item, np.eye(3) if R is None else R, at, scale) for item in part_geometry(sub)]
+
+
+def _prism(part) -> dict[str, Any] | None:
+    """The prism as triangles: both end faces cut into trapezoids, and a wall along each edge."""
+    rings = [np.asarray(r, dtype=float) for r in [part.outline, *part.holes]]
+    R, length = prism_frame(part.start, part.end, part.x_axis)
+    flat = trapezoids(rings[0], rings[1:])
+    edges = np.concatenate(
+        [np.stack((r, np.roll(r, -1, axis=0), np.roll(r, -1, axis=0), r), axis=1) for r in rings]
+    )
+    quads = np.concatenate(
+        [np.dstack((flat, np.full(flat.shape[:2], z))) for z in (0.0, length)]
+        + [np.dstack((edges, np.tile([0.0, 0.0, length, length], (len(edges), 1))))]
+    )
+    if 2 * len(quads) > MAX_DRAWN_TRIANGLES:
+        return None
+    vertices = quads.reshape(-1, 3) @ R.T + np.asarray(part.start, dtype=float)
+    faces = (4 * np.arange(len(quads))[:, None, None] + [[0, 1, 2], [0, 2, 3]]).reshape(-1, 3)
+    return {"kind": "mesh", "vertices": vertices.tolist(), "faces": faces.tolist()}
 
 
 def _vector(v) -> list[float]:
@@ -161,6 +191,7 @@ PRIMITIVES: dict[type, Callable[[Any], dict[str, Any]]] = {
     ),
     models.HemispherePart: lambda p: _fields("hemisphere", p, center="vector", axis="unit", radius="number"),
     models.CapsulePart: lambda p: _fields("capsule", p, start="vector", end="vector", radius="number"),
+    models.PrismPart: _prism,
 }
 """The drawable primitive of each closed-form shape from its fields (file units, body frame)."""
 

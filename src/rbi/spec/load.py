@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import contextvars
 import json
+import os
 import re
 import sys
 from pathlib import Path
@@ -12,10 +14,11 @@ import yaml
 from pydantic import BaseModel, ValidationError
 
 from rbi.files.safe import InputFileRefused, read_input_file
+from rbi.formats.paths import spec_relative_file
 from rbi.memory import collector_paused
-from rbi.spec.errors import InputError, describe_error, format_location
+from rbi.spec.errors import InputError, describe_error, format_location, part_label
 from rbi.spec.expect import Expect
-from rbi.spec.models import SHAPE_MODELS, BodySpec
+from rbi.spec.models import SHAPE_MODELS, AssemblyPart, BodySpec
 from rbi.spec.translate import body_from_spec
 from rbi.spec.uncertain import named_plus_minus, split_uncertain
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
@@ -352,7 +355,45 @@ def spec_from_raw(path: str, raw: Any):
             how = "" if named.startswith("<") else f"; `rbi validate {named}` lists all"
             more = f" (+{len(problems) - 1} more{how})"
         raise InputError(problems[0] + more, file=path, part=part, field=field)
+    read_assemblies(spec, path)
     return spec
+
+
+MAX_NESTING = 10
+"""Most sub-assembly files nested inside one another below a spec."""
+
+_nesting: contextvars.ContextVar[tuple[tuple[str, str], ...]] = contextvars.ContextVar(
+    "rbi_nesting", default=()
+)
+"""The spec files being read, outermost first: (real path, name in messages)."""
+
+
+def read_assemblies(spec: BodySpec, path: str) -> None:
+    """Read the file of each ``shape: assembly`` part of a validated spec as a spec of its own
+    (beside the spec, as its other files: :func:`rbi.formats.paths.spec_relative_file`),
+    translated in its own units, for :func:`rbi.spec.translate.assembly_element`; InputError
+    naming the part for a file that cannot be read or is not a valid spec, a file that holds
+    itself (naming the chain of files) or nesting deeper than :data:`MAX_NESTING` files."""
+    for i, part in enumerate(spec.parts):
+        if not isinstance(part, AssemblyPart):
+            continue
+        where = f"{path}: {part_label(i, part)}: file: {part.file}"
+        file = spec_relative_file(path, part.file, where)
+        chain = _nesting.get() or ((os.path.realpath(path), path),)
+        label = str(file)
+        if os.path.realpath(file) in (real for real, _ in chain):
+            raise InputError(
+                f"{where}: a cycle of sub-assemblies: {' -> '.join([n for _, n in chain] + [label])}"
+            )
+        if len(chain) > MAX_NESTING:
+            raise InputError(f"{where}: sub-assemblies nest deeper than {MAX_NESTING} files")
+        token = _nesting.set((*chain, (os.path.realpath(file), label)))
+        try:
+            part._loaded = body_from_spec(spec_from_raw(label, read_yaml(file)), label)
+        except InputError as exc:
+            raise InputError(f"{where}: {str(exc).removeprefix(label + ': ')}") from None
+        finally:
+            _nesting.reset(token)
 
 
 def load_body(path: str | Path) -> LoadedBody:
@@ -391,6 +432,7 @@ def file_problems(path: str, packages: dict[str, list[Path]] | None = None) -> l
     if problems:
         return problems
     try:
+        read_assemblies(spec, spec_label(path))
         body_from_spec(spec, spec_label(path))
     except InputError as exc:
         return [str(exc)]

@@ -23,6 +23,7 @@ from pydantic import (
     model_validator,
 )
 
+from rbi.core.polygon import MAX_VERTICES, polygon_problem
 from rbi.spec.expect import Expect
 from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
 from rbi.spec.materials import canonical_name, unknown_material_message
@@ -543,6 +544,56 @@ class StepPart(_Solid):
         return self
 
 
+Point2 = Annotated[list[Number], Field(min_length=2, max_length=2)]
+Polygon = Annotated[list[Point2], Field(min_length=3, max_length=MAX_VERTICES)]
+
+
+class PrismPart(_Solid):
+    """A straight extrusion of a simple polygon ``outline`` (either winding) less its ``holes``
+    from ``start`` to ``end``. Outline coordinates are along the prism's own x axis (``x_axis``)
+    and y axis (z × x, z from ``start`` to ``end``), origin at ``start``."""
+
+    shape: Literal["prism"] = Field(description="A straight extrusion of a polygon with holes.")
+    outline: Polygon = Field(description="The section's vertices [[x, y], ...] in order, either winding.")
+    holes: list[Polygon] = Field([], description="Polygons cut out of the section, each inside the outline.")
+    start: Vector3 = Field(description="Where the section's origin starts, body frame.")
+    end: Vector3 = Field(description="Where it ends; the extrusion runs from start to end.")
+    x_axis: Vector3 | None = Field(
+        None,
+        description="The section's x axis, body frame (made perpendicular to end - start); default: body x "
+        "(body y when the extrusion runs along x).",
+    )
+
+    _has_length = _apart("start", "end")
+
+    @model_validator(mode="after")
+    def _simple(self):
+        problem = polygon_problem(self.outline, self.holes)
+        if problem is not None:
+            raise ValueError(problem)
+        return self
+
+
+class AssemblyPart(_Part):
+    """The parts of another spec ``file`` as one part: its units converted to this spec's, its
+    frame turned by ``rotation`` and its origin put at ``position``; ``mass``, when given, scales
+    every part's mass and inertia to that total."""
+
+    shape: Literal["assembly"] = Field(description="The parts of another spec file (a sub-assembly).")
+    file: Annotated[str, Field(min_length=1, description="The spec file, relative to this spec's folder.")]
+    position: Vector3 = Field(
+        [0.0, 0.0, 0.0], description="Where the sub-assembly's origin goes, body frame."
+    )
+    rotation: Rotation | None = Field(
+        None, description="How the sub-assembly's axes are turned into body axes (about its origin)."
+    )
+    mass: Positive | None = Field(
+        None, description="Measured total mass (per copy): every part's mass and inertia scaled to it."
+    )
+
+    _loaded: Any = PrivateAttr(None)  # the sub-assembly as read, in its own units: set when translated
+
+
 SHAPE_MODELS: dict[str, type[_Part]] = {
     "cone": ConePart,
     "cylinder": CylinderPart,
@@ -560,6 +611,8 @@ SHAPE_MODELS: dict[str, type[_Part]] = {
     "capsule": CapsulePart,
     "mesh": MeshPart,
     "step": StepPart,
+    "prism": PrismPart,
+    "assembly": AssemblyPart,
 }
 """Every part model by its ``shape`` tag; new shapes are added here."""
 

@@ -26,6 +26,17 @@ def copy_rotations(count: int, axis) -> np.ndarray:
     return rotations
 
 
+def copy_motions(pattern) -> list[tuple[np.ndarray, np.ndarray]]:
+    """(R, t) of each copy, x -> R x + t (the first is the part as written)."""
+    if pattern is None or pattern.count <= 1:
+        return [(np.eye(3), np.zeros(3))]
+    if pattern.step is not None:
+        return [(np.eye(3), k * np.asarray(pattern.step, dtype=float)) for k in range(pattern.count)]
+
+    through = np.zeros(3) if pattern.through is None else np.asarray(pattern.through, dtype=float)
+    return [(R, through - R @ through) for R in copy_rotations(pattern.count, pattern.axis)]
+
+
 def patterned(element: MassProperties, pattern) -> MassProperties:
     """The ``pattern.count`` copies of ``element`` (a part's own mass element, positive mass)
     as one element. ``pattern`` has ``count`` and either ``axis`` (with ``through``, default

@@ -22,7 +22,7 @@ from rbi.spec.materials import density_in_units
 from rbi.spec.pattern import patterned
 from rbi.spec.plausibility import unit_warnings
 from rbi.spec.translate_batch import MIN_PARTS, SMALLEST_MOMENT, batch_elements, moments_lost
-from rbi.spec.units import LENGTH_UNITS_IN_M, unit_labels
+from rbi.spec.units import LENGTH_UNITS_IN_M, convert_body, unit_labels
 from rbi.spec.volumes import one_volume
 
 
@@ -155,6 +155,16 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     return _placed(part, mass, com, inertia)
 
 
+def assembly_element(part: models.AssemblyPart, units: models.Units) -> MassProperties:
+    """A sub-assembly (read by :func:`rbi.spec.load.read_assemblies`) as one mass element of
+    one copy: its mass properties in ``units``, scaled to the measured ``mass`` when given
+    (every part's mass and inertia alike), its axes turned by ``rotation``, its origin moved to
+    ``position``."""
+    props = convert_body(part._loaded, units.length, units.mass).props
+    factor = 1.0 if part.mass is None else part.mass / props.mass
+    return props.scaled(factor).transformed(rotation_matrix(part.rotation), part.position)
+
+
 def _part_file(part, spec_path: str):
     """The file a mesh or STEP part names, beside the spec (:func:`rbi.formats.paths.spec_relative_file`);
     ValueError (``file: NAME: what is wrong``) when it may not be read."""
@@ -249,6 +259,8 @@ def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
         element = mesh_element(part, units, spec_path)
     elif isinstance(part, models.StepPart):
         element = step_element(part, units, spec_path)
+    elif isinstance(part, models.AssemblyPart):
+        element = assembly_element(part, units)
     elif type(part) in SOLIDS:
         element = SOLIDS[type(part)](part, _solid_mass(part, one_volume(part), units))
     else:
@@ -274,6 +286,7 @@ SOLIDS: dict[type, Callable[[Any, float], MassProperties]] = {
     models.TorusPart: lambda p, m: shapes.torus(m, p.major_radius, p.minor_radius, p.center, p.axis),
     models.HemispherePart: lambda p, m: shapes.hemisphere(m, p.radius, p.center, p.axis),
     models.CapsulePart: lambda p, m: shapes.capsule(m, p.radius, p.start, p.end),
+    models.PrismPart: lambda p, m: shapes.prism(m, p.outline, p.holes, p.start, p.end, p.x_axis),
 }
 """Each closed-form solid part (:mod:`rbi.core.shapes`) from its fields and the mass ``m`` of one
 copy (its ``mass``, or its density times :func:`rbi.spec.volumes.one_volume`), file units."""
@@ -382,5 +395,8 @@ def files_named(spec: models.BodySpec, path: str) -> tuple[str, ...]:
     named = [part.file for part in spec.parts if isinstance(part, (models.MeshPart, models.StepPart))]
     if spec.point_cloud is not None:
         named.append(spec.point_cloud.file)
-    found = (spec_relative_file(path, file, f"{path}: file: {file}") for file in named)
-    return tuple(dict.fromkeys(os.path.abspath(each) for each in found))
+    found = [os.path.abspath(spec_relative_file(path, file, f"{path}: file: {file}")) for file in named]
+    for part in spec.parts:  # a sub-assembly's file and the files it reads
+        if isinstance(part, models.AssemblyPart):
+            found.extend((os.path.abspath(part._loaded.path), *part._loaded.files))
+    return tuple(dict.fromkeys(found))

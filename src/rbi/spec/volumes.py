@@ -31,6 +31,7 @@ PART_VOLUMES: dict[type, Callable[[object], float]] = {
     models.TorusPart: lambda p: shapes.torus_volume(p.major_radius, p.minor_radius),
     models.HemispherePart: lambda p: shapes.hemisphere_volume(p.radius),
     models.CapsulePart: lambda p: shapes.capsule_volume(p.radius, _length(p.start, p.end)),
+    models.PrismPart: lambda p: shapes.prism_volume(p.outline, p.holes, p.start, p.end),
     models.MeshPart: lambda p: p._enclosed_volume,  # known once the mesh has been read
     models.StepPart: lambda p: p._step_volume,  # known once the STEP file has been read
 }
