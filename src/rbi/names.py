@@ -50,6 +50,7 @@ CLI_TOOLS = (
     "write_output",
     "collector_paused",
     "number",
+    "plus_minus",
     "csv_lines",
     # what the commands print besides numbers (rbi dynamics, parts, --rotate)
     "LENGTH_UNITS",

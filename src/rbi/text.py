@@ -76,6 +76,15 @@ def number(value: float | None, digits: int = 6) -> str:
     return f"{value:.{digits}g}"
 
 
+def plus_minus(value: float, u: float) -> str:
+    """``value ± u`` for people: u to two significant figures and the value to the digits u
+    leaves meaningful (at least 3)."""
+    if not u > 0 or not math.isfinite(u):
+        return f"{number(value, 8)} ± {number(u, 2)}"
+    digits = int(math.floor(math.log10(abs(value) / u))) + 2 if value else 3
+    return f"{number(value, min(max(digits, 3), 12))} ± {number(u, 2)}"
+
+
 def vector_text(values: Any, digits: int = 6, brackets: str = "[]") -> str:
     """A vector for people: its entries as :func:`number` writes them (``digits`` significant
     figures, ``0`` for zero and ``-0``), comma-separated between ``brackets`` (``"[]"``, or

@@ -63,6 +63,7 @@ from rbi.spec.points import reference_choices as reference_choices
 from rbi.spec.points import reference_name as reference_name
 from rbi.text import csv_lines as csv_lines
 from rbi.text import number as number
+from rbi.text import plus_minus as plus_minus
 from rbi.text import vector_text as vector_text
 from rbi.text import visible as visible
 

@@ -11,6 +11,7 @@ from typing import Any
 
 import numpy as np
 
+from rbi.api.uncertainty import UncertaintyBudget, budget_of
 from rbi.core.dynamics import (
     angle_between_deg,
     angular_momentum_about_point,
@@ -513,6 +514,56 @@ class Body(TableRepr):
             angle_deg=angle_between_deg(h, w),
             kinetic_energy=energy,
         )
+
+    def uncertainty(
+        self,
+        of: str | Sequence[str] | None = None,
+        method: str = "linear",
+        samples: int = 100_000,
+        seed: int | None = None,
+        coverage: float = 0.95,
+    ) -> UncertaintyBudget:
+        """The uncertainty budget of the numbers the spec writes with ± (``rbi uncertainty``).
+
+        Args:
+            of: the quantities, as JSON paths of ``rbi inertia`` / ``rbi principal``
+                (``"mass"``, ``"center_of_mass[0]"``, ``"inertia[0][2]"``, ``"moments[1]"``);
+                None: mass, centre of mass, the inertia about it and the principal moments.
+            method: ``"linear"`` (the law of propagation, JCGM 100) or ``"monte-carlo"``
+                (JCGM 101: ``samples`` draws of every input, reproducible with ``seed``).
+            coverage: the coverage probability of each interval.
+        """
+        return budget_of(self._loaded, of, method, samples, seed, coverage)
+
+    def standard_uncertainty(
+        self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None
+    ) -> dict[str, Any] | None:
+        """The combined standard uncertainty (GUM 5.1.2, first order) of ``mass``,
+        ``center_of_mass``, ``inertia`` (about ``about``, in ``axes`` as `inertia` takes them),
+        ``moments`` (about ``about``) and ``axes_deg`` (each principal axis's angular
+        uncertainty, degrees; None for an axis of a pair of moments closer than 3 combined
+        uncertainties); None when the spec writes no number with ±."""
+        from rbi.spec.uncertain import linear
+
+        if self._loaded.spec is None or not self._loaded.spec._uncertain:
+            return None
+        found = linear(self._loaded, self.point(about))
+        u = found.uncertainty
+        rotation = None if axes is None else _rotation(axes)
+        if rotation is None:
+            inertia = u[4:13].reshape(3, 3)
+        else:
+            turned = np.einsum(
+                "ia,qab,jb->qij", rotation, found.sensitivities[4:13].T.reshape(-1, 3, 3), rotation
+            )
+            inertia = np.sqrt(np.einsum("kij,k->ij", turned**2, found.u**2))
+        return {
+            "mass": float(u[0]),
+            "center_of_mass": u[1:4].tolist(),
+            "inertia": inertia.tolist(),
+            "moments": u[13:].tolist(),
+            "axes_deg": found.axes_deg(),
+        }
 
     @property
     def mass_properties(self) -> MassProperties:

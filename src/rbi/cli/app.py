@@ -88,7 +88,12 @@ COMMANDS: dict[str, tuple[str, str, str]] = {
     "audit": (
         "rbi.cli.audit_command",
         "audit",
-        "A robot file's inertials against its own geometry; totals; --fix.",
+        "A robot file's inertials against its geometry; totals; --fix.",
+    ),
+    "uncertainty": (
+        "rbi.cli.uncertainty_command",
+        "uncertainty",
+        "Uncertainty budget of the numbers a spec writes with ±.",
     ),
     "check": ("rbi.cli.check_command", "check", "Compare the spec's expect: block with the computed values."),
     "validate": ("rbi.cli.schema_command", "validate", "Validate many specs at once, one line per problem."),

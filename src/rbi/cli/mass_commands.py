@@ -23,7 +23,7 @@ from rbi.cli.options import (
     parse_rotation,
     parse_vector,
 )
-from rbi.cli.render import body_size, emit, matrix_digits, number, vector_text
+from rbi.cli.render import body_size, emit, matrix_digits, number, plus_minus, vector_text
 
 PRODUCT_SIGN_TITLES = {"tensor": "products −∫xy dm", "cad": "CAD products +∫xy dm"}
 """Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
@@ -209,14 +209,21 @@ def with_product_sign(inertia, sign: str):
     raise ValueError(f"unknown products sign {sign!r} (expected one of {tuple(PRODUCT_SIGN_TITLES)})")
 
 
-def place_rows(body: api.Body, about_label: str, point) -> list[tuple[str, str, str]]:
+def place_rows(body: api.Body, about_label: str, point, spread=None) -> list[tuple[str, str, str]]:
     """The rows every mass-properties table starts with: the mass, the centre of mass and the
-    ``--about`` point (a coordinate below 1e-12 of the body's size printed 0)."""
+    ``--about`` point (a coordinate below 1e-12 of the body's size printed 0); with ``spread``
+    (`Body.standard_uncertainty`), the mass and centre of mass ``± u``."""
 
     labels, size = body.unit_labels, body_size(body)
+    mass, com = number(body.mass, 8), vector_text(body.center_of_mass, scale=size)
+    if spread is not None:
+        mass, com = (
+            plus_minus(body.mass, spread["mass"]),
+            f"{com} ± {vector_text(spread['center_of_mass'], 2)}",
+        )
     return [
-        ("mass", labels["mass"], number(body.mass, 8)),
-        ("centre of mass", labels["length"], vector_text(body.center_of_mass, scale=size)),
+        ("mass", labels["mass"], mass),
+        ("centre of mass", labels["length"], com),
         (f"about ({about_label})", labels["length"], vector_text(point, scale=size)),
     ]
 
@@ -240,6 +247,9 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
     }
     if direction is not None:
         result |= {"axis": direction, "moment_about_axis": body.moment_about_axis(direction, point, axes)}
+    spread = body.standard_uncertainty(point, axes)
+    if spread is not None:
+        result["uncertainty"] = {k: spread[k] for k in ("mass", "center_of_mass", "inertia")}
 
     def table():
         # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
@@ -247,20 +257,20 @@ def _inertia_of(file: str, about: str, turns, direction, products: str, units: s
 
         labels = body.unit_labels
         frame = "world axes after " + ", then ".join(result["rotations"]) if turns else "body axes"
-        rows = [
-            *place_rows(body, about_label, point),
-        ]
+        rows = place_rows(body, about_label, point, spread)
         if direction is not None:
             rows += [
                 ("axis (unit)", "", vector_text(direction)),
                 ("moment about axis", labels["inertia"], number(result["moment_about_axis"], 8)),
             ]
+        matrix_title = f"Inertia about {about_label}, {frame}; {PRODUCT_SIGN_TITLES[products]}"
         return tables.stack(
             tables.quantities(title(body, "inertia"), rows),
-            tables.matrix(
-                f"Inertia about {about_label}, {frame}; {PRODUCT_SIGN_TITLES[products]}",
-                shown,
-                labels["inertia"],
+            tables.matrix(matrix_title, shown, labels["inertia"]),
+            *(
+                []
+                if spread is None
+                else [tables.matrix("± its standard uncertainty", spread["inertia"], labels["inertia"])]
             ),
         )
 
@@ -274,6 +284,14 @@ def _principal_of(file: str, about: str, units: str | None):
     principal = body.principal(point)
     moments, axes, radii = principal.moments, principal.axes, principal.radii_of_gyration
     result = header(body, about_label, point) | {"moments": moments, "axes": axes, "radii_of_gyration": radii}
+    spread = body.standard_uncertainty(point)
+    if spread is not None:
+        result["uncertainty"] = {k: spread[k] for k in ("mass", "center_of_mass", "moments", "axes_deg")}
+        result["warnings"] += [
+            f"principal axis {i + 1} is not determined: its moment is within 3 standard uncertainties of another's"
+            for i, deg in enumerate(spread["axes_deg"])
+            if deg is None
+        ]
 
     def table():
         # not at top level: `rbi inertia --format json` would load rbi.cli.tables too
@@ -287,12 +305,20 @@ def _principal_of(file: str, about: str, units: str | None):
         for c in "xyz":
             t.add_column(f"axis {c}", justify="right")
         t.add_column(tables.unit_header("radius of gyration", labels["length"]), justify="right")
+        if spread is not None:
+            t.add_column("axis ±°", justify="right")
         for i, (m, a, k) in enumerate(zip(moments, axes, radii), start=1):
-            t.add_row(f"I{i}", number(m / scale, 7), *(number(v, 7) for v in a), number(k, 7))
+            moment = (
+                number(m / scale, 7)
+                if spread is None
+                else plus_minus(m / scale, spread["moments"][i - 1] / scale)
+            )
+            turn = [] if spread is None else [number(spread["axes_deg"][i - 1], 2)]
+            t.add_row(f"I{i}", moment, *(number(v, 7) for v in a), number(k, 7), *turn)
         return tables.stack(
             tables.quantities(
                 title(body, "principal"),
-                place_rows(body, about_label, point),
+                place_rows(body, about_label, point, spread),
             ),
             t,
         )

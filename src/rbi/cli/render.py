@@ -16,6 +16,7 @@ import numpy as np
 
 from rbi.api import SpecError, csv_lines
 from rbi.api import number as number  # re-exported: the tables and commands format with it
+from rbi.api import plus_minus as plus_minus
 from rbi.api import vector_text as text_vector  # the one vector formatter (rbi.text)
 from rbi.cli.terminal import say, terminal_safe
 

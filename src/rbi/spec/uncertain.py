@@ -15,6 +15,7 @@ arrays (:mod:`rbi.spec.translate_batch`), the others part by part through the sa
 from __future__ import annotations
 
 import copy
+import dataclasses
 import math
 import re
 from dataclasses import dataclass
@@ -36,6 +37,7 @@ from rbi.errors import InputError, shown
 from rbi.spec import models
 from rbi.spec.translate import part_element
 from rbi.spec.translate_batch import BUILDERS, Columns, plain_part
+from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
 
 PLUS_MINUS = re.compile(r"±|\+/-|\+-")
 _DECIMAL = re.compile(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
@@ -306,7 +308,19 @@ class Linear:
 
 def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
     """:class:`Linear` of the body ``loaded``, its inertia and moments about ``point`` (a fixed
-    point of the body frame; default its centre of mass)."""
+    point of the body frame; default its centre of mass). A body converted to other units
+    (:func:`rbi.spec.units.convert_body`) is worked in its file's units, the results converted."""
+    units = loaded.spec.units
+    if (loaded.length_unit, loaded.mass_unit) != (units.length, units.mass):
+        length = LENGTH_UNITS_IN_M[loaded.length_unit] / LENGTH_UNITS_IN_M[units.length]
+        mass = MASS_UNITS_IN_KG[loaded.mass_unit] / MASS_UNITS_IN_KG[units.mass]
+        found = linear(
+            convert_body(loaded, units.length, units.mass), None if point is None else point * length
+        )
+        scale = np.array([1 / mass] + [1 / length] * 3 + [1 / (mass * length * length)] * 12)
+        return dataclasses.replace(
+            found, values=found.values * scale, sensitivities=found.sensitivities * scale[:, None]
+        )
     inputs = loaded.spec._uncertain
     elements = loaded.elements
     masses = np.array([e.mass for e in elements])

@@ -1,0 +1,115 @@
+"""The uncertainty budget of a body whose spec writes numbers with ± (`Body.uncertainty`,
+``rbi uncertainty``): each quantity's value, standard uncertainty and coverage interval, and
+every input's sensitivity, contribution and share, by the law of propagation (JCGM 100) or
+Monte Carlo (JCGM 101)."""
+
+from __future__ import annotations
+
+import copy
+from typing import Any
+
+from rbi.errors import ArgumentError, literal
+from rbi.reprs import Result, Rows
+from rbi.text import number
+
+METHODS = ("linear", "monte-carlo")
+
+
+class UncertaintyBudget(Result):
+    """The budget as ``rbi uncertainty --format json`` gives it (`to_dict`), its tables
+    (``print``, rich, notebooks) and `to_pandas` (one row per quantity and input)."""
+
+    def __init__(self, data: dict[str, Any]) -> None:
+        self._data = data
+
+    def to_dict(self) -> dict[str, Any]:
+        """The JSON object of ``rbi uncertainty``."""
+        return copy.deepcopy(self._data)
+
+    @property
+    def quantities(self) -> list[dict[str, Any]]:
+        """One entry per quantity: ``quantity``, ``value``, ``u``, ``interval``, ``coverage``,
+        ``contributions`` (ranked, largest first)."""
+        return self.to_dict()["quantities"]
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        """One flat row per quantity and input (the quantity's own numbers repeated)."""
+        out = []
+        for q in self._data["quantities"]:
+            head = {"quantity": q["quantity"], "value": q["value"], "u": q["u"]}
+            head |= {"low": q["interval"][0], "high": q["interval"][1], "coverage": q["coverage"]}
+            if "linear" in q:
+                head["linear_validated"] = q["linear"]["validated"]
+            for c in q["contributions"] or [{}]:
+                out.append(head | {f"input_{k}" if k in ("value", "u") else k: v for k, v in c.items()})
+        return out
+
+    def _title(self) -> str:
+        d = self._data
+        method = f"Monte Carlo, {d['samples']:,} draws" if d["samples"] else "linear"
+        coverage = d["quantities"][0]["coverage"] if d["quantities"] else 0.95
+        return f"{d['name'] or 'body'} — uncertainty ({method}; {100 * coverage:g}% coverage)"
+
+    def _quantities(self) -> tuple[str, tuple[str, ...], list[list[str]]]:
+        rows = []
+        mc = bool(self._data["samples"])
+        for q in self._data["quantities"]:
+            low, high = q["interval"]
+            row = [q["quantity"], number(q["value"], 5), number(q["u"], 2)]
+            if mc:
+                ok = "yes" if q["linear"]["validated"] else "NO"
+                row += [f"{number(low, 4)} … {number(high, 4)}", ok]
+            else:
+                row.append(number((high - low) / 2, 2))
+            rows.append(row)
+        columns = ("interval", "linear ok") if mc else ("± U",)
+        return self._title(), ("quantity", "value", "u", *columns), rows
+
+    def _budget(self) -> tuple[str, tuple[str, ...], list[list[str]]]:
+        rows = [
+            [q["quantity"], c["input"], number(c["sensitivity"], 4), f"{100 * c['share']:.1f}%"]
+            for q in self._data["quantities"]
+            for c in q["contributions"]
+            if c["contribution"] > 0
+        ]
+        return (
+            "Contributions, largest first (share of the variance)",
+            ("quantity", "input", "∂y/∂x", "share"),
+            rows,
+        )
+
+    def rows(self) -> list[Rows]:
+        """The quantities' table, then the contributions'."""
+        return [
+            Rows(title, columns, [tuple(r) for r in cells], left=left)
+            for (title, columns, cells), left in ((self._quantities(), 1), (self._budget(), 2))
+        ]
+
+
+def budget_of(
+    loaded: Any, of: Any, method: str, samples: int, seed: int | None, coverage: float
+) -> UncertaintyBudget:
+    """`Body.uncertainty`'s work: the arguments checked (ArgumentError naming the parameter),
+    then the budget."""
+    from rbi.spec.uncertain import QUANTITIES, budget
+
+    names = [of] if isinstance(of, str) else of
+    if names is not None:
+        unknown = [q for q in names if q not in QUANTITIES]
+        if unknown or not names:
+            raise ArgumentError(
+                "of",
+                "must name quantities such as mass, center_of_mass[0], inertia[0][2], moments[1] "
+                f"(got {literal(unknown[0] if unknown else names)})",
+            )
+    if method not in METHODS:
+        raise ArgumentError("method", f"must be linear or monte-carlo (got {literal(method)})")
+    if isinstance(samples, bool) or not isinstance(samples, int) or not 2 <= samples <= 10_000_000:
+        raise ArgumentError(
+            "samples", f"must be a whole number from 2 to 10,000,000 (got {literal(samples)})"
+        )
+    if isinstance(coverage, bool) or not isinstance(coverage, (int, float)) or not 0 < coverage < 1:
+        raise ArgumentError(
+            "coverage", f"must be a probability between 0 and 1, e.g. 0.95 (got {literal(coverage)})"
+        )
+    return UncertaintyBudget(budget(loaded, names, method, samples, seed, float(coverage)))

@@ -1,0 +1,50 @@
+"""`rbi uncertainty`: the uncertainty budget of the numbers a spec writes with ± (JCGM 100, 101)."""
+
+from __future__ import annotations
+
+from typing import Annotated
+
+import typer
+
+from rbi import api
+from rbi.cli.each_file import FileReport, report_each
+from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
+
+OfOption = Annotated[
+    list[str] | None,
+    typer.Option(
+        "--of",
+        metavar="QUANTITY",
+        help="A quantity as a JSON path of rbi inertia/principal: mass, center_of_mass[0], inertia[0][2], "
+        "moments[1] (repeat for several). Default: mass, centre of mass, inertia about it, principal moments.",
+        show_default=False,
+    ),
+]
+
+
+def uncertainty(
+    files: SpecFiles,
+    of: OfOption = None,
+    method: Annotated[
+        str, typer.Option("--method", metavar="linear|monte-carlo", help="Law of propagation or Monte Carlo.")
+    ] = "linear",
+    samples: Annotated[int, typer.Option("--samples", metavar="N", help="Monte Carlo draws.")] = 100_000,
+    seed: Annotated[int | None, typer.Option("--seed", metavar="S", help="Seed of the draws.")] = None,
+    coverage: Annotated[float, typer.Option("--coverage", metavar="P", help="Coverage probability.")] = 0.95,
+    format: FormatOption = OutputFormat.table,
+) -> int:
+    """The uncertainty budget: each quantity's value, standard uncertainty and interval, and
+    every ± input's sensitivity, contribution and share, largest first.
+
+    \b
+    Examples:
+      rbi uncertainty top_bolted_toleranced.yaml
+      rbi uncertainty top_bolted_toleranced.yaml --of "inertia[0][2]"
+      rbi uncertainty top_bolted_toleranced.yaml --method monte-carlo --seed 1
+    """
+
+    def report(file: str) -> FileReport:
+        result = api.load(file).uncertainty(of, method, samples, seed, coverage)
+        return FileReport(result.to_dict(), lambda: result, csv_rows=result.csv_rows())
+
+    return report_each(files, report, format.value)

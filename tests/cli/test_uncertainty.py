@@ -1,0 +1,109 @@
+"""`rbi uncertainty` and `Body.uncertainty`: the contract's JSON, reproducible draws, bad input."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+import rbi
+from tests.conftest import BODIES, one_line_exit_2, run_rbi, run_rbi_inprocess
+
+TOLERANCED = BODIES / "top_bolted_toleranced.yaml"
+
+
+def test_json_is_the_contracts_form():
+    out = json.loads(run_rbi_inprocess("uncertainty", TOLERANCED, "-f", "json").stdout)
+    assert list(out) == ["name", "units", "method", "samples", "quantities"]
+    assert out["method"] == "linear" and out["samples"] is None
+    names = [q["quantity"] for q in out["quantities"]]
+    assert names[:4] == ["mass", "center_of_mass[0]", "center_of_mass[1]", "center_of_mass[2]"]
+    assert "inertia[0][2]" in names and names[-3:] == ["moments[0]", "moments[1]", "moments[2]"]
+    mass = out["quantities"][0]
+    assert list(mass) == ["quantity", "value", "u", "interval", "coverage", "contributions"]
+    assert mass["value"] == pytest.approx(0.52) and mass["u"] == pytest.approx(0.001, rel=1e-12)
+    assert mass["interval"] == pytest.approx([0.52 - 1.959964 * 0.001, 0.52 + 1.959964 * 0.001], rel=1e-7)
+    top = mass["contributions"][0]
+    assert list(top) == ["input", "value", "u", "sensitivity", "contribution", "share"]
+    assert top["input"] == "parts.bolt.mass" and top["share"] == pytest.approx(1.0)
+    ixz = out["quantities"][names.index("inertia[0][2]")]
+    ranked = [c["contribution"] for c in ixz["contributions"]]
+    assert ranked == sorted(ranked, reverse=True)
+    assert sum(c["share"] for c in ixz["contributions"]) == pytest.approx(1.0)
+    # Ixz = -Σ m x z about the CoM: only the bolt moves it; by hand (-Σ m x z + M x_c z_c), ∂Ixz/∂z_bolt = -m_b (x_b - x_c)
+    m_b, big_m, x_b = 0.02, 0.52, 0.04
+    x_c = m_b * x_b / big_m
+    by_z = next(c for c in ixz["contributions"] if c["input"] == "parts.bolt.position[2]")
+    assert by_z["sensitivity"] == pytest.approx(-m_b * (x_b - x_c), rel=1e-9)
+
+
+def test_monte_carlo_is_reproducible_and_says_whether_linear_is_validated():
+    args = ("uncertainty", TOLERANCED, "--of", "mass", "--of", "inertia[0][2]", "--method", "monte-carlo")
+    first = json.loads(run_rbi_inprocess(*args, "--seed", "7", "--samples", "20000", "-f", "json").stdout)
+    again = json.loads(run_rbi_inprocess(*args, "--seed", "7", "--samples", "20000", "-f", "json").stdout)
+    assert first == again and first["samples"] == 20000
+    for q in first["quantities"]:
+        low, high = q["interval"]
+        assert low < q["value"] < high and isinstance(q["linear"]["validated"], bool)
+    table = run_rbi_inprocess(*args, "--seed", "7", "--samples", "20000").stdout
+    assert "linear ok" in table and "Monte Carlo, 20,000 draws" in table
+
+
+def test_api_gives_the_same():
+    body = rbi.load(TOLERANCED)
+    result = body.uncertainty(of=["inertia[0][2]"])
+    cli = json.loads(
+        run_rbi_inprocess("uncertainty", TOLERANCED, "--of", "inertia[0][2]", "-f", "json").stdout
+    )
+    assert result.to_dict() == cli
+    frame = result.to_pandas()
+    assert list(frame["input"]) == [c["input"] for c in cli["quantities"][0]["contributions"]]
+    assert "inertia[0][2]" in str(result)
+
+
+@pytest.mark.parametrize(
+    "args, word",
+    [
+        (("--of", "volume"), "--of"),
+        (("--method", "bayes"), "--method"),
+        (("--samples", "1"), "--samples"),
+        (("--coverage", "1.5"), "--coverage"),
+    ],
+)
+def test_bad_options(args, word):
+    one_line_exit_2(run_rbi_inprocess("uncertainty", TOLERANCED, *args), word)
+
+
+@pytest.mark.parametrize("bad", ['"0.04 ± -1"', '"± 3"', '"1 ± 2 ± 3"', '"0.04 ± nan"'])
+def test_bad_plus_minus_exit_2(write_spec, bad):
+    text = TOLERANCED.read_text().replace("0.04 ± 0.0005", bad, 1)
+    for command in ("uncertainty", "inertia"):
+        one_line_exit_2(run_rbi(command, write_spec(text)), "body.yaml", "parts[0] (cone)", "radius")
+
+
+def test_plus_minus_on_a_name_exit_2(write_spec):
+    text = TOLERANCED.read_text().replace("name: bolt", "name: bolt ± 1")
+    one_line_exit_2(run_rbi_inprocess("inertia", write_spec(text)), "parts[2]", "name")
+
+
+def test_inertia_and_principal_carry_uncertainty_only_with_plus_minus():
+    inertia = json.loads(run_rbi_inprocess("inertia", TOLERANCED, "-f", "json").stdout)["uncertainty"]
+    assert list(inertia) == ["mass", "center_of_mass", "inertia"]
+    assert inertia["mass"] == pytest.approx(0.001, rel=1e-12)
+    # Ixx of the cone about its own CoM is 3/80 m (4 r² + h²): ∂/∂r = 3/10 m r, the only r term
+    cone = 0.3 * 0.4 * 0.04 * 0.0005
+    assert inertia["inertia"][0][0] > cone and inertia["inertia"][0][1] == 0.0
+    principal = json.loads(run_rbi_inprocess("principal", TOLERANCED, "-f", "json").stdout)["uncertainty"]
+    assert list(principal) == ["mass", "center_of_mass", "moments", "axes_deg"]
+    assert all(d > 0 for d in principal["axes_deg"][:2]) and principal["axes_deg"][2] == 0.0
+    plain = json.loads(run_rbi_inprocess("principal", BODIES / "top_bolted.yaml", "-f", "json").stdout)
+    assert "uncertainty" not in plain
+    assert "±" in run_rbi_inprocess("principal", TOLERANCED).stdout
+
+
+def test_symmetric_top_axes_are_null_with_a_warning(write_spec):
+    text = (BODIES / "top.yaml").read_text().replace("radius: 0.04", "radius: 0.04 ± 0.0005")
+    proc = run_rbi("principal", write_spec(text), "-f", "json")
+    out = json.loads(proc.stdout)
+    assert out["uncertainty"]["axes_deg"].count(None) == 2
+    assert sum("not determined" in w for w in out["warnings"]) == 2
