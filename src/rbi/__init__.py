@@ -23,7 +23,7 @@ from rbi.names import PUBLIC
 
 __version__ = "0.1.0"
 
-__all__ = [*PUBLIC, "__version__"]
+__all__ = list(PUBLIC) + ["__version__"]  # a call: griffe reads no names here
 
 _API_NAMES = frozenset(PUBLIC)
 

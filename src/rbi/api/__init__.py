@@ -79,7 +79,7 @@ if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's
 
 # listed once, in rbi.names (`import rbi` reads it without this module); the names imported here
 # only to be offered are imported `as` themselves, which tells linters they are re-exported
-__all__ = [*PUBLIC, *CLI_TOOLS]
+__all__ = list(PUBLIC + CLI_TOOLS)  # a call: griffe reads no names here
 
 
 def __getattr__(name: str) -> Any:

@@ -51,7 +51,8 @@ def animate(
     tip of the spin axis) that plays in real time, or ``.gif`` (needs matplotlib and pillow).
 
     Args:
-        body, path: the `Body`; the file to write (replaced atomically).
+        body: the `Body`.
+        path: the file to write (replaced atomically).
         speed: playback speed the page starts at, 0.1 to 2 (1: real time).
         fps: frames per second of a GIF, 1 to 60.
         progress: called with (frames drawn, frames) as a GIF is drawn.

@@ -48,14 +48,14 @@ def audit(
             (``ROS_PACKAGE_PATH`` is searched too).
         geometry: ``"collision"`` or ``"visual"``: which geometry gives a link's volume (a link
             without it falls back to the other); ``"none"``: the declared inertials and totals only.
-        density, material: kg/m³, or a built-in material name, for links that declare no mass.
+        density: kg/m³, for links that declare no mass.
+        material: instead of ``density``, a built-in material name.
         mesh_inertia: ``"auto"`` (exact where a mesh is closed, else its convex hull, flagged
             ``mesh``), ``"exact"``, ``"convex"`` (its hull) or ``"shell"`` (mass on the surface).
         joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
             metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
-        fix, out: also plan the fixed copy (``report.fix.content``, bytes; ``.changes``,
-            ``.unfixable``); and write it at ``out`` (``.urdf``, ``.sdf`` or ``.xml``; never a
-            file the robot reads), replaced atomically.
+        fix: also plan the fixed copy (``report.fix``: ``.content``, bytes; ``.changes``, ``.unfixable``).
+        out: write it there (``.urdf``, ``.sdf`` or ``.xml``; never a file the robot reads), atomically.
         allow_outside_paths: let the file name meshes and includes outside its folder; None:
             as an enclosing `outside_paths_allowed` block says (not allowed outside one).
         mesh_repair: close meshes' holes of three or four edges first (listed in ``report.notes``).

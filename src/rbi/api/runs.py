@@ -135,17 +135,19 @@ def simulate(
 
     Args:
         body: the `Body`.
-        spin, omega: initial spin about the spin axis, rad/s; or the initial angular velocity
-            (3,), body axes, rad/s.
-        tilt_deg, tilt_axis: the nudge: the body turned at t = 0 by this angle (degrees) about
-            the world axis ``"x"`` or ``"y"``. The tilt reported is the spin axis's from the vertical.
-        duration, samples: simulated time, s; samples, equally spaced from t = 0 (1: only the end).
+        spin: initial spin about the spin axis, rad/s.
+        omega: instead of ``spin``, the initial angular velocity (3,), body axes, rad/s.
+        tilt_deg: the nudge: the body turned at t = 0 by this angle (degrees) about
+            ``tilt_axis``. The tilt reported is the spin axis's from the vertical.
+        tilt_axis: the world axis of the nudge, ``"x"`` or ``"y"``.
+        duration: simulated time, s.
+        samples: samples, equally spaced from t = 0 (1: only the end).
         gravity: m/s² (SI whatever the spec's units); 0 switches it off; None is 9.81.
         method: ``"default"`` (compiled adaptive DOP853), ``"rk45"``, ``"dop853"`` (scipy) or
             ``"exact"`` (closed forms, where they apply).
         rtol: integrator tolerance (None: 1e-12 for default, 1e-8 for the scipy methods).
-        max_steps, check_budget: most integration steps (None: rbi's `DEFAULT_MAX_STEPS`);
-            refuse a run estimated past them before it starts (they stop it in any case).
+        max_steps: most integration steps (None: rbi's `DEFAULT_MAX_STEPS`); they stop the run.
+        check_budget: refuse a run estimated past ``max_steps`` before it starts.
         error_estimate: estimate the error with a second run 1000× tighter.
         progress: called now and then with the fraction done (0…1).
         spin_axis: the body-frame axis of ``spin`` and of the reported tilt and precession:

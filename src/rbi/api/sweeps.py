@@ -149,7 +149,8 @@ def sweep(
 ) -> SweepTable:
     """Many simulations of one body — a grid over spin, tilt and numbers of the spec, or Monte
     Carlo draws — as ``rbi sweep`` runs them (on every core). A failed run never stops the
-    others: its row says why in ``status``. Returns a `SweepTable`.
+    others: its row says why in ``status``. Returns a `SweepTable`. ``duration``, ``samples``,
+    ``rtol``, ``gravity``, ``tilt_axis``, ``max_steps`` and ``spin_axis`` are `simulate`'s, per run.
 
     Args:
         body: the `Body`, or its spec file's path (the spec is varied; files it names are read beside it).
@@ -158,15 +159,15 @@ def sweep(
         tilt_deg: the nudge at t = 0, degrees, given the same way.
         vary: numbers of the spec, path → values given as ``spin``'s:
             ``{"parts.bolt.mass": [0.01, 0.02]}``, ``{"parts.bolt.position[0]": Normal(0.04, 0.001)}``.
-        runs, seed: Monte Carlo draws of every `Normal`/`Uniform` per grid point; their seed.
-        duration, samples, rtol, gravity, tilt_axis, max_steps, spin_axis: as `simulate`'s (per
-            run; one spin axis for every run, the nominal body's unless given).
-        workers, dask: cores to use (None: all); or a Dask scheduler's address, or ``"local"``.
+        runs: Monte Carlo draws of every `Normal`/`Uniform` per grid point.
+        seed: the seed of the draws.
+        workers: cores to use (None: all).
+        dask: instead, a Dask scheduler's address, or ``"local"``.
         mass_properties: simulate nothing: each row gives the mass properties at the varied values.
         check_budget: refuse a sweep estimated past rbi's step budget (about four core-hours).
-        out, resume, progress: stream the rows to a ``.csv`` or ``.parquet`` file as runs end
-            (past 100,000 runs, only there; never a file the body is read from); continue the
-            sweep already in it; called with (runs done, runs).
+        out: stream the rows to this ``.csv`` or ``.parquet`` file (only there past 100,000 runs).
+        resume: continue the sweep already in ``out``.
+        progress: called with (runs done, runs).
 
     Raises:
         ValueError, TypeError: a setting or a variation is invalid (named as this function's
@@ -179,15 +180,15 @@ def sweep(
     settings = SweepSettings(*grid, max_steps, workers, dask, mass_properties, check_budget, spin_axis)
     check_settings(settings)
     path, raw, spec_bytes = _spec_source(body)
-    read = body if isinstance(body, Body) else path  # a Body: every file it was read from
-    target = _target(out, resume, read)
+    target = _target(out, resume, body if isinstance(body, Body) else path)  # a Body: every file it read
     study = Study(path, raw, settings, rows_printed=out is None, spec_bytes=spec_bytes)
     swept, target = _swept(body, study, out, target)
     return SweepTable(study, study.run(target, resume, progress), swept)
 
 
 def _target(out: Destination | None, resume: bool, read: Body | str) -> OutputTarget | None:
-    """`sweep`'s ``out`` checked (never a file the body is read from); ``resume`` needs it."""
+    """`sweep`'s ``out`` checked (never a file the body is read from: a `Body`'s every file);
+    ``resume`` needs it."""
     if out is None and resume:
         raise ArgumentError("resume", "needs {out}, the file of the interrupted sweep")
     return None if out is None else checked_output(out, ("csv", "parquet"), read, "out")
