@@ -15,17 +15,22 @@ from numpy.typing import ArrayLike
 from rbi.core.rotation import unit_vector
 
 
-def point_mass_inertia(mass: float, offset: np.ndarray) -> np.ndarray:
-    """Inertia ``m (|r|² E − r rᵀ)`` of a point mass at ``offset`` from the reference point."""
+def point_mass_inertia(mass: ArrayLike, offset: np.ndarray) -> np.ndarray:
+    """Inertia ``m (|r|² E − r rᵀ)`` of a point mass at ``offset`` from the reference point
+    (masses (...,) and offsets (..., 3) give (..., 3, 3))."""
     r = np.asarray(offset, dtype=float)
-    return mass * (np.dot(r, r) * np.eye(3) - np.outer(r, r))
+    r2 = np.sum(r * r, axis=-1)[..., None, None]
+    return np.asarray(mass, dtype=float)[..., None, None] * (
+        r2 * np.eye(3) - r[..., :, None] * r[..., None, :]
+    )
 
 
-def parallel_axis(inertia_com: np.ndarray, mass: float, offset: np.ndarray) -> np.ndarray:
+def parallel_axis(inertia_com: np.ndarray, mass: ArrayLike, offset: np.ndarray) -> np.ndarray:
     """Inertia about a point ``offset`` away from the centre of mass (parallel-axis theorem).
 
     ``inertia_com`` is about the centre of mass; the result has the same axes. Only the length
-    and direction of the offset matter, not its sign.
+    and direction of the offset matter, not its sign. Stacks broadcast: (..., 3, 3), (...,),
+    (..., 3).
     """
     return np.asarray(inertia_com, dtype=float) + point_mass_inertia(mass, offset)
 
@@ -57,8 +62,9 @@ def re_express(inertia: np.ndarray, R: np.ndarray) -> np.ndarray:
 
 
 def symmetrize(matrix: np.ndarray) -> np.ndarray:
-    """``(A + Aᵀ)/2``: removes the rounding asymmetry of a computed symmetric matrix."""
-    return 0.5 * (matrix + matrix.T)
+    """``(A + Aᵀ)/2``: removes the rounding asymmetry of a computed symmetric matrix (or of
+    each of a stack (..., 3, 3))."""
+    return 0.5 * (matrix + np.swapaxes(matrix, -1, -2))
 
 
 # --- principal axes ------------------------------------------------------------------------
@@ -145,21 +151,44 @@ def symmetric_eigen(matrix: np.ndarray, max_sweeps: int = 30) -> tuple[np.ndarra
     return values[order], V[:, order]
 
 
+def principal_axes_of_stack(
+    inertias: np.ndarray, rtol: float = DEGENERATE_RTOL
+) -> tuple[np.ndarray, np.ndarray]:
+    """:func:`principal_axes` of each of a stack of inertias (n, 3, 3), at once: moments (n, 3)
+    and axes (n, 3, 3), chosen by the same rules, from LAPACK's ``eigh`` of the whole stack
+    (the single body's Jacobi rotations keep a little more of the smallest moments' digits)."""
+    moments, vectors = np.linalg.eigh(symmetrize(np.asarray(inertias, dtype=float)))
+    axes = np.swapaxes(vectors, -1, -2)
+    scale = np.max(np.abs(moments), axis=-1, keepdims=True)
+    close: np.ndarray = np.diff(moments, axis=-1) <= rtol * np.where(scale > 0.0, scale, 1.0)
+    first, second = _canonical_sign(axes[:, 0]), _canonical_sign(axes[:, 1])
+    third = np.cross(first, second)
+    distinct = np.stack([first, second, third / np.linalg.norm(third, axis=-1, keepdims=True)], axis=1)
+    lone_last = close[:, 0, None]  # moments 0 and 1 coincide: moment 2 stands alone
+    u = _canonical_sign(np.where(lone_last, axes[:, 2], axes[:, 0]))
+    a = _closest_coordinate_axis_in_plane(u)
+    b = np.cross(u, a)
+    pair = np.where(lone_last[..., None], np.stack([a, b, u], axis=1), np.stack([u, a, b], axis=1))
+    chosen = np.where(np.any(close, axis=-1)[:, None, None], pair, distinct)
+    return moments, np.where(np.all(close, axis=-1)[:, None, None], np.eye(3), chosen)
+
+
 def _canonical_sign(v: np.ndarray) -> np.ndarray:
-    """``v`` or ``-v``: the one whose largest-magnitude component is positive (earliest
-    component wins near-ties, so rounding noise cannot flip the choice)."""
+    """``v`` or ``-v`` (each of a stack (..., 3)): the one whose largest-magnitude component is
+    positive (earliest component wins near-ties, so rounding noise cannot flip the choice)."""
     magnitudes = np.abs(v)
-    k = int(np.argmax(magnitudes >= magnitudes.max() * (1.0 - 1e-9)))
-    return v if v[k] > 0 else -v
+    k = np.argmax(magnitudes >= magnitudes.max(axis=-1, keepdims=True) * (1.0 - 1e-9), axis=-1)
+    return np.where(np.take_along_axis(v, k[..., None], axis=-1) > 0, v, -v)
 
 
 def _closest_coordinate_axis_in_plane(normal: np.ndarray) -> np.ndarray:
-    """Unit projection, onto the plane ⟂ ``normal``, of the coordinate axis that lies most in
-    that plane (earliest axis wins near-ties)."""
-    projections = np.eye(3) - np.outer(normal, normal)  # row k: e_k projected onto the plane
-    norms = np.linalg.norm(projections, axis=1)
-    k = int(np.argmax(norms >= norms.max() * (1.0 - 1e-9)))
-    return projections[k] / norms[k]
+    """Unit projection, onto the plane ⟂ ``normal`` (each of a stack (..., 3)), of the
+    coordinate axis that lies most in that plane (earliest axis wins near-ties)."""
+    projections = np.eye(3) - normal[..., :, None] * normal[..., None, :]  # row k: e_k projected
+    norms = np.linalg.norm(projections, axis=-1)
+    k = np.argmax(norms >= norms.max(axis=-1, keepdims=True) * (1.0 - 1e-9), axis=-1)[..., None]
+    row = np.take_along_axis(projections, k[..., None], axis=-2)[..., 0, :]
+    return row / np.take_along_axis(norms, k, axis=-1)
 
 
 # --- one axis, radii of gyration, the sign of products --------------------------------------

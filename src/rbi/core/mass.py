@@ -12,13 +12,20 @@ in the axes of ``frame``.
 
 from __future__ import annotations
 
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
 
-from rbi.core.inertia import centre_of_mass, parallel_axis, principal_axes, symmetrize
+from rbi.core.inertia import (
+    centre_of_mass,
+    parallel_axis,
+    principal_axes,
+    principal_axes_of_stack,
+    symmetrize,
+)
 
 
 def _frozen(values: ArrayLike, shape: tuple[int, ...]) -> np.ndarray:
@@ -29,27 +36,90 @@ def _frozen(values: ArrayLike, shape: tuple[int, ...]) -> np.ndarray:
 
 @dataclass(frozen=True, eq=False)
 class MassProperties:
-    """A rigid body's mass properties, immutable.
+    """A rigid body's mass properties, or a stack of n bodies' (as scipy's ``Rotation`` holds one
+    rotation or many), immutable.
 
-    ``mass`` (M); ``center_of_mass`` (3,) in ``frame`` (L); ``inertia_about_com`` (3, 3) about the
-    centre of mass in ``frame``'s axes (M·L²); ``frame`` a short name of the frame (``"body"``,
-    ``"link"``, ``"world"``, ``"root link NAME"``, ``"mesh"``). The arrays are read-only copies.
+    ``mass`` (M): a float, or (n,) for a stack; ``center_of_mass`` (3,) or (n, 3) in ``frame``
+    (L); ``inertia_about_com`` (3, 3) or (n, 3, 3) about each centre of mass in ``frame``'s axes
+    (M·L²); ``frame`` a short name of the frame, one for the stack (``"body"``, ``"link"``,
+    ``"world"``, ``"root link NAME"``, ``"mesh"``). The arrays are read-only copies. A stack has
+    ``len()``, ``[i]`` (one body), slices and index arrays (a stack) and iteration; every
+    operation works on the whole stack at once.
     """
 
-    mass: float
+    mass: Any
     center_of_mass: np.ndarray
     inertia_about_com: np.ndarray
     frame: str = "body"
 
     def __post_init__(self) -> None:
-        object.__setattr__(self, "mass", float(self.mass))
-        object.__setattr__(self, "center_of_mass", _frozen(self.center_of_mass, (3,)))
-        object.__setattr__(self, "inertia_about_com", _frozen(self.inertia_about_com, (3, 3)))
+        mass = self.mass
+        if type(mass) is float or np.ndim(mass) == 0:
+            n: tuple[int, ...] = ()
+            object.__setattr__(self, "mass", float(mass))
+        elif np.ndim(mass) == 1:
+            object.__setattr__(self, "mass", _frozen(mass, (-1,)))
+            n = (len(self.mass),)
+        else:
+            raise ValueError(f"mass must be a number or a 1-D array, got shape {np.shape(mass)}")
+        object.__setattr__(self, "center_of_mass", _frozen(self.center_of_mass, (*n, 3)))
+        object.__setattr__(self, "inertia_about_com", _frozen(self.inertia_about_com, (*n, 3, 3)))
 
     def __repr__(self) -> str:
+        if not self.single:
+            return (
+                f"MassProperties(mass={self.mass!r}, center_of_mass={self.center_of_mass!r}, "
+                f"inertia_about_com={self.inertia_about_com!r}, frame={self.frame!r})"
+            )
         return (
             f"MassProperties(mass={self.mass!r}, center_of_mass={self.center_of_mass.tolist()!r}, "
             f"inertia_about_com={self.inertia_about_com.tolist()!r}, frame={self.frame!r})"
+        )
+
+    @property
+    def single(self) -> bool:
+        """One body (mass a float), not a stack."""
+        return type(self.mass) is float
+
+    def __bool__(self) -> bool:
+        return True
+
+    def __len__(self) -> int:
+        if self.single:
+            raise TypeError("a single MassProperties has no len()")
+        return len(self.mass)
+
+    def __getitem__(self, index: Any) -> MassProperties:
+        """One body (an integer index) or a stack (a slice, an index or boolean array)."""
+        if self.single:
+            raise TypeError("a single MassProperties is not subscriptable")
+        return MassProperties(
+            self.mass[index], self.center_of_mass[index], self.inertia_about_com[index], self.frame
+        )
+
+    def __iter__(self) -> Iterator[MassProperties]:
+        return (self[i] for i in range(len(self)))
+
+    @classmethod
+    def concatenate(cls, parts: Iterable[MassProperties], frame: str | None = None) -> MassProperties:
+        """One stack of all the bodies of ``parts`` (single bodies and stacks, in order; all in
+        one frame). ``frame``: the result's frame name (default: the first part's)."""
+        parts = list(parts)
+        if not parts:
+            raise ValueError("no mass properties to concatenate")
+        frame = parts[0].frame if frame is None else frame
+        if all(type(p.mass) is float for p in parts):  # many single bodies: one copy of each
+            return cls(
+                np.array([p.mass for p in parts]),
+                np.array([p.center_of_mass for p in parts]),
+                np.array([p.inertia_about_com for p in parts]),
+                frame,
+            )
+        return cls(
+            np.concatenate([np.reshape(p.mass, -1) for p in parts]),
+            np.concatenate([p.center_of_mass.reshape(-1, 3) for p in parts]),
+            np.concatenate([p.inertia_about_com.reshape(-1, 3, 3) for p in parts]),
+            frame,
         )
 
     @classmethod
@@ -105,27 +175,29 @@ class MassProperties:
         return MassProperties(0.0, np.zeros(3), np.zeros((3, 3)), frame)
 
     @staticmethod
-    def point(mass: float, position: ArrayLike, frame: str = "body") -> MassProperties:
-        """A point mass at ``position``: no inertia about itself."""
-        return MassProperties(mass, np.asarray(position, dtype=float), np.zeros((3, 3)), frame)
-
-    @staticmethod
-    def sum(parts: Iterable[MassProperties], frame: str | None = None) -> MassProperties:
-        """The mass properties of a body made of ``parts`` (all in one frame; a negative mass
-        removes material). ValueError when the total mass is not positive. ``frame``: the
-        result's frame name (default: the first part's)."""
-        parts = list(parts)
-        if not parts:
-            raise ValueError("total mass must be positive, got 0 (no parts)")
-        return combine(
-            np.array([p.mass for p in parts]),
-            np.array([p.center_of_mass for p in parts]),
-            np.array([p.inertia_about_com for p in parts]),
-            frame=parts[0].frame if frame is None else frame,
+    def point(mass: ArrayLike, position: ArrayLike, frame: str = "body") -> MassProperties:
+        """A point mass at ``position`` (or a stack: masses (n,), positions (n, 3)): no
+        inertia about itself."""
+        return MassProperties(
+            mass, np.asarray(position, dtype=float), np.zeros(np.shape(mass) + (3, 3)), frame
         )
 
+    def sum(self: MassProperties | Iterable[MassProperties], frame: str | None = None) -> MassProperties:
+        """The one body made of a stack's bodies (``stack.sum()``), or of several mass properties
+        (``MassProperties.sum(parts)``, singles or stacks, all in one frame); a negative mass
+        removes material. ValueError when the total mass is not positive. ``frame``: the
+        result's frame name (default: the first part's)."""
+        if not isinstance(self, MassProperties):
+            parts = list(self)
+            if not parts:
+                raise ValueError("total mass must be positive, got 0 (no parts)")
+            return MassProperties.concatenate(parts).sum(frame)
+        frame = self.frame if frame is None else frame
+        return combine(self.mass, self.center_of_mass, self.inertia_about_com, frame=frame)
+
     def inertia_about(self, point: ArrayLike) -> np.ndarray:
-        """Inertia (M·L²) about ``point`` (L, this frame) in this frame's axes (parallel axis)."""
+        """Inertia (M·L²) about ``point`` (L, this frame; for a stack (3,) or one a body
+        (n, 3)) in this frame's axes (parallel axis): (3, 3), or (n, 3, 3) for a stack."""
         offset = np.asarray(point, dtype=float) - self.center_of_mass
         return symmetrize(parallel_axis(self.inertia_about_com, self.mass, offset))
 
@@ -135,40 +207,57 @@ class MassProperties:
         translation: ArrayLike | None = None,
         frame: str | None = None,
     ) -> MassProperties:
-        """The same body in another frame, where ``x_new = rotation @ x + translation``
-        (``rotation`` None: the same axes; ``translation`` None: the same origin): the centre of
-        mass moves, the inertia is re-expressed ``R I Rᵀ``."""
+        """The same body (each of a stack) in another frame, where ``x_new = rotation @ x +
+        translation`` (``rotation`` (3, 3), or one a body (n, 3, 3); None: the same axes;
+        ``translation`` (3,) or (n, 3), None: the same origin): the centre of mass moves, the
+        inertia is re-expressed ``R I Rᵀ``."""
         com, inertia = self.center_of_mass, self.inertia_about_com
         if rotation is not None:
             R = np.asarray(rotation, dtype=float)
-            com, inertia = R @ com, symmetrize(R @ inertia @ R.T)
+            com = R @ com if self.single else (R @ com[..., None])[..., 0]
+            inertia = symmetrize(R @ inertia @ np.swapaxes(R, -1, -2))
         if translation is not None:
             com = com + np.asarray(translation, dtype=float)
         return MassProperties(self.mass, com, inertia, self.frame if frame is None else frame)
 
-    def scaled(self, factor: float) -> MassProperties:
+    def scaled(self, factor: ArrayLike) -> MassProperties:
         """The same shape at ``factor`` times the mass (a density applied to a unit density's
-        properties): the centre of mass stays, mass and inertia scale."""
+        properties, a measured mass; for a stack one factor or one a body): the centre of mass
+        stays, mass and inertia scale."""
+        f = np.asarray(factor, dtype=float)
         return MassProperties(
-            self.mass * factor, self.center_of_mass, self.inertia_about_com * factor, self.frame
+            self.mass * f, self.center_of_mass, self.inertia_about_com * f[..., None, None], self.frame
         )
 
-    def with_mass(self, mass: float) -> MassProperties:
-        """The same shape at exactly ``mass`` (M): the centre of mass stays, the inertia scales
-        by ``mass / self.mass``."""
+    def with_mass(self, mass: ArrayLike) -> MassProperties:
+        """The same shape at exactly ``mass`` (M; for a stack one a body): the centre of mass
+        stays, the inertia scales by ``mass / self.mass``."""
+        ratio = np.asarray(mass, dtype=float) / self.mass
         return MassProperties(
-            mass, self.center_of_mass, self.inertia_about_com * (mass / self.mass), self.frame
+            mass, self.center_of_mass, self.inertia_about_com * ratio[..., None, None], self.frame
         )
 
     def principal(self) -> tuple[np.ndarray, np.ndarray]:
-        """Principal moments about the centre of mass (M·L², ascending) and axes (rows, unit, in
-        this frame's axes), as :func:`rbi.core.inertia.principal_axes` chooses them."""
-        return principal_axes(self.inertia_about_com)
+        """Principal moments about the centre of mass (M·L², ascending) and axes (rows, unit,
+        right-handed, in this frame's axes), as :func:`rbi.core.inertia.principal_axes` chooses
+        them: (3,) and (3, 3), or (n, 3) and (n, 3, 3) for a stack."""
+        if self.single:
+            return principal_axes(self.inertia_about_com)
+        return principal_axes_of_stack(self.inertia_about_com)
 
     @property
     def moments(self) -> np.ndarray:
         """Principal moments about the centre of mass (M·L², ascending)."""
         return self.principal()[0]
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON-ready: ``mass`` (a number, or a list for a stack), ``center_of_mass`` and
+        ``inertia_about_com`` (nested lists)."""
+        return {
+            "mass": self.mass if self.single else self.mass.tolist(),
+            "center_of_mass": self.center_of_mass.tolist(),
+            "inertia_about_com": self.inertia_about_com.tolist(),
+        }
 
 
 def combine(
