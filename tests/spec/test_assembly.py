@@ -173,7 +173,7 @@ def test_nested_three_deep_across_units_rotations_and_patterns(tmp_path):
     names = [r[0] for r in rows]
     assert names[:4] == ["ballast", "a[0]/ballast", "a[0]/b/ballast", "a[0]/b/c[0]/plate"]
     assert names[-1] == "a[3]/b/c[1]/bolt"
-    for (_, _, element), part in zip(rows, rbi.load({"parts": written(flat)}).parts()):
+    for (_, _, element, _), part in zip(rows, rbi.load({"parts": written(flat)}).parts()):
         assert element.mass == pytest.approx(part.mass, rel=1e-13)
         np.testing.assert_allclose(element.center_of_mass, part.center_of_mass, rtol=1e-12, atol=1e-14)
 

@@ -444,40 +444,35 @@ class Body(TableRepr):
             about=point,
         )
 
-    def parts(self) -> list[Part]:
-        """Each part's mass properties, in file order (see `Part`)."""
-        # not at top level: `rbi audit` would load rbi.spec.translate and rbi.spec.volumes too
-        from rbi.spec.translate import integration_errors
+    def parts(self, expand: bool = False) -> list[Part]:
+        """Each part's mass properties, in file order (see `Part`); ``expand``: each
+        sub-assembly (``shape: assembly``) listed as its own parts, named ``ASSEMBLY/PART``
+        (``ASSEMBLY[i]/PART`` for the copies of a pattern), placed in the body."""
+        # not at top level: `rbi audit` would load rbi.spec.assembly and rbi.spec.volumes too
+        from rbi.spec.assembly import expanded
+        from rbi.spec.models import StepPart
         from rbi.spec.volumes import part_volume
 
         loaded = self._loaded
-        spec_parts = list(loaded.spec.parts) if loaded.spec is not None else []
-        shares = inertia_shares(loaded.elements, loaded.props)
-        errors = integration_errors(loaded.spec) or []
-        # volumes are computed in the spec's units: a body in other units (`in_units`) scales them
-        cube = (
-            1.0
-            if not spec_parts
-            else LENGTH_UNITS[loaded.spec.units.length] / LENGTH_UNITS[loaded.length_unit]
-        )
+        rows = expanded(loaded, expand)
+        shares = inertia_shares([element for _, _, element, _ in rows], loaded.props)
         out = []
-        for i, element in enumerate(loaded.elements):
-            part = spec_parts[i] if i < len(spec_parts) else None
+        for (name, part, element, length), share in zip(rows, shares):
             volume = None if part is None else part_volume(part)
             if volume is not None and getattr(part, "subtract", False):
                 volume = -volume  # a hole takes its volume away, as its mass
             out.append(
                 Part(
-                    name=loaded.part_names[i] or f"parts[{i}]",
+                    name=name,
                     shape=part.shape if part is not None else "point_cloud",
                     hole=bool(getattr(part, "subtract", False)),
                     mass=float(element.mass),
                     center_of_mass=np.array(element.center_of_mass, dtype=float),
                     inertia_about_com=np.array(element.inertia_about_com, dtype=float),
-                    volume=volume if volume is None or cube == 1.0 else volume * cube**3,
+                    volume=volume if volume is None or length == 1.0 else volume * length**3,
                     principal_moments=principal_axes(element.inertia_about_com)[0],
-                    inertia_share=float(shares[i]),
-                    integration_error=errors[i] if i < len(errors) else None,
+                    inertia_share=float(share),
+                    integration_error=part._integration_error if isinstance(part, StepPart) else None,
                 )
             )
         return out

@@ -5,6 +5,9 @@ the spec's units) — with a total row for the whole body.
 
 from __future__ import annotations
 
+from typing import Annotated
+
+import typer
 from rich.text import Text
 
 from rbi import api
@@ -15,7 +18,14 @@ from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
 from rbi.cli.render import body_size, matrix_digits, number, without_noise
 
 
-def parts(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
+def parts(
+    files: SpecFiles,
+    format: FormatOption = OutputFormat.table,
+    expand: Annotated[
+        bool,
+        typer.Option("--expand", help="List each sub-assembly's own parts (ASSEMBLY/PART), not one row."),
+    ] = False,
+) -> int:
     """Per-part breakdown: mass and its share, volume, centre of mass, inertia about the part's
     own centre of mass and its principal moments, share of the body's inertia, implied
     density; a total row for the body.
@@ -25,12 +35,13 @@ def parts(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
       rbi parts top_bolted.yaml
       rbi parts wheel_with_holes.yaml --format json
       rbi parts *.yaml --format csv
+      rbi parts cubesat_assembly.yaml --expand
     """
 
-    return report_each(files, parts_of, format.value)
+    return report_each(files, lambda file: parts_of(file, expand), format.value)
 
 
-def parts_of(file: str):
+def parts_of(file: str, expand: bool = False):
     """What `rbi parts` gives for one file (:class:`rbi.cli.each_file.FileReport`).
 
     JSON: the keys docs/parts.md lists, and for each part ``volume`` (length³, all copies of a pattern;
@@ -40,7 +51,7 @@ def parts_of(file: str):
     part has a volume) and ``principal_moments`` of the body about its centre of mass.
     """
     body = api.load(file)  # its warnings hold the mesh notes (repair, overlaps) too
-    rows = _part_rows(body)
+    rows = _part_rows(body, expand)
     volume = sum(row["volume"] for row in rows if row["volume"] is not None)  # a hole's is negative
     every_part_has_volume = all(row["volume"] is not None for row in rows)
     total = {
@@ -63,13 +74,13 @@ def parts_of(file: str):
     return FileReport(result, lambda: _table(body, rows, total), csv_rows=rows, summary=summary)
 
 
-def _part_rows(body) -> list[dict]:
+def _part_rows(body, expand: bool = False) -> list[dict]:
     """One row per part: its mass, share, centre of mass, inertia about it, principal moments,
     share of the inertia, volume and the density they imply (file units and SI)."""
 
     units = body.units
     to_si = MASS_UNITS[units["mass"]] / LENGTH_UNITS[units["length"]] ** 3
-    parts = body.parts()
+    parts = body.parts(expand)
     rows = []
     for part in parts:
         density = abs(part.mass / part.volume) if part.volume else None

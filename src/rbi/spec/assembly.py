@@ -4,6 +4,8 @@ and translated as one part each by :func:`rbi.spec.translate.assembly_element`."
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 
 from rbi.core.mass import MassProperties
@@ -17,23 +19,26 @@ MAX_EXPANDED = 1_000_000
 """Most parts ``rbi parts --expand`` lists (patterns of patterns multiply)."""
 
 
-def expanded(loaded) -> list[tuple[str, object, MassProperties]]:
-    """``(name, part, element)`` of every part of a :class:`~rbi.spec.translate.LoadedBody`
-    with each sub-assembly replaced by its parts, named ``ASSEMBLY/PART`` (``ASSEMBLY[i]/PART``
-    for the copies of a pattern), placed in the body (its units); InputError past
-    :data:`MAX_EXPANDED` parts."""
+def expanded(loaded, expand: bool = True) -> list[tuple[str, Any, MassProperties, float]]:
+    """``(name, part, element, length)`` of every part of a :class:`~rbi.spec.translate.LoadedBody`
+    in file order (``part`` None for the point cloud), each sub-assembly replaced by its parts
+    when ``expand``, named ``ASSEMBLY/PART`` (``ASSEMBLY[i]/PART`` for the copies of a pattern)
+    and placed in the body (its units); ``length`` is the part's spec's length unit in the body's
+    (for its volume). InputError past :data:`MAX_EXPANDED` parts."""
     spec = loaded.spec
     parts = list(spec.parts) if spec is not None else []
-    rows: list[tuple[str, object, MassProperties]] = []
+    ratio = (
+        1.0 if spec is None else LENGTH_UNITS_IN_M[spec.units.length] / LENGTH_UNITS_IN_M[loaded.length_unit]
+    )
+    rows: list[tuple[str, Any, MassProperties, float]] = []
     for i, element in enumerate(loaded.elements):
         part = parts[i] if i < len(parts) else None
         name = loaded.part_names[i] or f"parts[{i}]"
-        if not isinstance(part, models.AssemblyPart):
-            rows.append((name, part, element))
+        if not expand or not isinstance(part, models.AssemblyPart):
+            rows.append((name, part, element, ratio))
             continue
         sub = convert_body(part._loaded, loaded.length_unit, loaded.mass_unit)
         inner = expanded(sub)
-        ratio = LENGTH_UNITS_IN_M[spec.units.length] / LENGTH_UNITS_IN_M[loaded.length_unit]
         R, position = rotation_matrix(part.rotation), np.asarray(part.position, dtype=float)
         motions = copy_motions(part.pattern)
         scale = 1.0 if part.mass is None else element.mass / (sub.props.mass * len(motions))
@@ -41,7 +46,7 @@ def expanded(loaded) -> list[tuple[str, object, MassProperties]]:
             raise InputError(f"{loaded.path}: more than {MAX_EXPANDED:,} parts to list")
         for k, (Rc, tc) in enumerate(motions):
             copy = name if len(motions) == 1 else f"{name}[{k}]"
-            for sub_name, sub_part, sub_element in inner:
+            for sub_name, sub_part, sub_element, length in inner:
                 placed = sub_element.scaled(scale).transformed(R, position * ratio)
-                rows.append((f"{copy}/{sub_name}", sub_part, placed.transformed(Rc, tc * ratio)))
+                rows.append((f"{copy}/{sub_name}", sub_part, placed.transformed(Rc, tc * ratio), length))
     return rows

@@ -232,15 +232,6 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
     return tuple(notes)
 
 
-def integration_errors(spec: models.BodySpec | None) -> list[float | None] | None:
-    """Each part's integration error estimate (relative; STEP parts, after translation: it is
-    set when the file is read; None for the other parts), or None when no part is a STEP part."""
-    parts = list(spec.parts) if spec is not None else []
-    if not any(isinstance(part, models.StepPart) for part in parts):
-        return None
-    return [part._integration_error if isinstance(part, models.StepPart) else None for part in parts]
-
-
 def mesh_notes(spec: models.BodySpec) -> list[str]:
     """One line per note on the spec's mesh parts, each naming the part (after translation:
     the notes are set when a mesh is read)."""
