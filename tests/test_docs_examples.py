@@ -131,3 +131,25 @@ def test_a_real_drift_still_fails():
     assert not match("wall ... s, 3 steps", "wall 12 s, 4 steps")
     assert match("wall ... s, 3 steps", "wall 12 s, 3 steps")
     assert not docs_examples.output_matches(["pos 0 0 0"], ["pos 1e-20 0 0"])  # no scale: exact
+
+
+def test_the_examples_run_with_the_readme_first_command_install_set_only():
+    """rbi 4's README installed `.` alone, and its --plot example and `rbi validate bodies/*.yaml`
+    (flange.yaml, a STEP part) needed more; the test ran them with every test extra installed."""
+    installed = docs_examples.readme_install_set()
+    assert {"matplotlib", "cadquery-ocp-novtk", "numpy", "typer"} <= installed
+    assert not {"dask", "pyarrow", "xacro", "pytest", "mpmath"} & installed
+    with docs_examples.only_the_readme_install():
+        with pytest.raises(ImportError):
+            import dask  # noqa: F401
+    import dask  # noqa: F401, E402  (back after)
+
+
+def test_every_install_hint_is_the_readme_s_form():
+    """Hints disagreed: `pip install '.[plot]'` here, `pip install 'rbi[cad]'` there (rbi is
+    installed from its source folder)."""
+    texts = {p: p.read_text() for p in [*docs_examples.PAGES, *(ROOT / "src").rglob("*.py")]}
+    assert [p.name for p, text in texts.items() if "install 'rbi[" in text] == []
+    assert (
+        "pip install '.[plot,cad]'" in (ROOT / "README.md").read_text().split("```")[3]
+    )  # the first command

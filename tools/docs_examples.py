@@ -11,6 +11,9 @@ from real runs (tools/regen_docs.py). The convention, also described in docs/REA
   (the exit status of the command before), ``mkdir DIR``, ``cat FILE | rbi ARGS`` (FILE on
   standard input), and ``python SCRIPT ARGS`` or ``.venv/bin/python SCRIPT ARGS``. Anything else
   (other pipes, redirections) fails the test: show such commands in a block without ``$ ``.
+* Only the README's first command's install set can be imported while they run
+  (:func:`only_the_readme_install`); a ``python SCRIPT`` may import what its ``# needs: MODULE``
+  lines name (its page says so).
 * The commands of one page run in order, in one fresh temporary folder holding ``bodies/``,
   ``docs/`` and ``tools/`` of the repository, so paths read as from the repository's root and
   files a command writes land in the temporary folder.
@@ -27,6 +30,7 @@ from __future__ import annotations
 
 import contextlib
 import difflib
+import functools
 import glob
 import io
 import os
@@ -227,6 +231,74 @@ def difference(shown: list[str], printed: list[str]) -> str:
 # --- running ------------------------------------------------------------------------------
 
 
+def readme_install_set() -> set[str]:
+    """The distributions the README's first command installs (``pip install '.[plot,cad]'``):
+    rbi's dependencies, those of the extras it names, and theirs, as this environment's
+    metadata gives them (names normalized)."""
+    from importlib import metadata
+
+    from packaging.requirements import Requirement
+    from packaging.utils import canonicalize_name
+
+    command = re.search(r"pip install '?\.(?:\[([\w,]+)\])?", (ROOT / "README.md").read_text())
+    assert command is not None, "README.md: no `pip install .` command"
+    wanted, found = [("rbi", set((command[1] or "").split(",")) - {""})], set()
+    while wanted:
+        name, extras = wanted.pop()
+        found.add(canonicalize_name(name))
+        try:
+            requires = metadata.requires(name) or []
+        except metadata.PackageNotFoundError:
+            requires = [line for line in _pyproject_requires(extras)] if name == "rbi" else []
+        for text in requires:
+            requirement = Requirement(text)
+            marker = requirement.marker
+            if marker is None or any(marker.evaluate({"extra": e}) for e in extras or {""}):
+                if canonicalize_name(requirement.name) not in found:
+                    wanted.append((requirement.name, set(requirement.extras)))
+    return found
+
+
+def _pyproject_requires(extras: set[str]) -> list[str]:
+    import tomllib
+
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text())["project"]
+    return project["dependencies"] + [r for e in extras for r in project["optional-dependencies"][e]]
+
+
+@functools.cache
+def _not_installed_by_the_readme() -> frozenset[str]:
+    """Top-level modules of the installed distributions :func:`readme_install_set` leaves out."""
+    from importlib import metadata
+
+    from packaging.utils import canonicalize_name
+
+    allowed = readme_install_set()
+    return frozenset(
+        module
+        for module, dists in metadata.packages_distributions().items()
+        if module != "rbi" and not any(canonicalize_name(d) in allowed for d in dists)
+    )
+
+
+@contextlib.contextmanager
+def only_the_readme_install():
+    """While inside: the modules of every installed distribution the README's first command
+    does not install (the test extras: dask, pyarrow, xacro, pytest, ...) cannot be imported,
+    so an example that needs more says so or fails."""
+    hidden = _not_installed_by_the_readme()
+    loaded = {k: m for k, m in sys.modules.items() if k.partition(".")[0] in hidden}
+    for key in loaded:
+        del sys.modules[key]
+    sys.modules.update(dict.fromkeys(hidden))  # None: 'import X' fails, importlib's find_spec says None
+    try:
+        yield hidden
+    finally:
+        for key in hidden:
+            sys.modules.pop(key, None)
+        sys.modules.update(loaded)
+
+
 class Folder:
     """The temporary folder a page's commands run in, with the state ``echo $?`` needs."""
 
@@ -283,7 +355,11 @@ class Folder:
         os.chdir(self.path)
         status = 0
         try:
-            with contextlib.redirect_stdout(printed), contextlib.redirect_stderr(printed):
+            with (
+                contextlib.redirect_stdout(printed),
+                contextlib.redirect_stderr(printed),
+                only_the_readme_install(),
+            ):
                 main()
         except SystemExit as exc:
             status = exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
@@ -298,6 +374,16 @@ class Folder:
         return printed.getvalue(), status
 
     def _python(self, args: list[str]) -> tuple[str, int]:
+        """Run a script with the README's install set only (a ``sitecustomize`` hides the rest
+        as :func:`only_the_readme_install` does), and the modules it names in ``# needs: NAME``
+        lines (its page must say so too)."""
+        hide = self.path / ".readme_install"
+        hide.mkdir(exist_ok=True)
+        script = (self.path / args[0]).read_text() if args and (self.path / args[0]).is_file() else ""
+        needs = set(re.findall(r"^# needs: (\w+)", script, re.M))  # what its page says it needs
+        hidden = sorted(_not_installed_by_the_readme() - needs)
+        (hide / "sitecustomize.py").write_text(f"import sys\nsys.modules.update(dict.fromkeys({hidden!r}))\n")
+        path = os.pathsep.join(p for p in (str(hide), os.environ.get("PYTHONPATH")) if p)
         proc = subprocess.run(
             [sys.executable, *args],
             cwd=self.path,
@@ -305,7 +391,7 @@ class Folder:
             stderr=subprocess.STDOUT,
             text=True,
             timeout=300,
-            env={**os.environ, **ENVIRONMENT},
+            env={**os.environ, **ENVIRONMENT, "PYTHONPATH": path},
         )
         return proc.stdout, proc.returncode
 

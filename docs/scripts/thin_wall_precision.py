@@ -3,6 +3,7 @@
 Run: .venv/bin/python docs/scripts/thin_wall_precision.py   (quoted in docs/spec.md)
 """
 
+# needs: mpmath
 import mpmath as mp
 
 from rbi.core import shapes

@@ -17,6 +17,9 @@ import rbi
 
 ROOT = Path(__file__).resolve().parents[2]
 PAGE = ROOT / "docs" / "python-api.md"
+sys.path.insert(0, str(ROOT / "tools"))
+
+import docs_examples  # noqa: E402  (the examples run with the README's install set only)
 
 
 def examples() -> list[tuple[str, str | None]]:
@@ -44,7 +47,7 @@ def test_every_python_example_runs_and_prints_what_the_page_shows(index, tmp_pat
     (tmp_path / "bodies").symlink_to(ROOT / "bodies")
     monkeypatch.chdir(tmp_path)
     printed = io.StringIO()
-    with contextlib.redirect_stdout(printed):
+    with contextlib.redirect_stdout(printed), docs_examples.only_the_readme_install():
         exec(compile(code, f"{PAGE.name} example {index + 1}", "exec"), {"__name__": "__main__"})
     if shown is not None:
         assert printed.getvalue() == shown

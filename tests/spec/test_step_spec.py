@@ -178,7 +178,7 @@ def test_without_the_cad_extra_one_line_names_it(tmp_path, monkeypatch):
     import rbi.formats.step as step_module
 
     monkeypatch.setattr(step_module, "_CACHE", type(step_module._CACHE)())
-    one_line_exit_2(run_rbi_inprocess("inertia", spec), "parts[0] (p)", "pip install 'rbi[cad]'")
+    one_line_exit_2(run_rbi_inprocess("inertia", spec), "parts[0] (p)", "pip install '.[cad]'")
 
 
 def test_without_the_cad_extra_the_extra_is_named_before_anything_else_about_the_part(tmp_path, monkeypatch):
@@ -193,5 +193,5 @@ def test_without_the_cad_extra_the_extra_is_named_before_anything_else_about_the
     spec = tmp_path / "body.yaml"
     spec.write_text("parts:\n  - {name: p, shape: step, file: not-written-yet.step, density: 1000}\n")
     proc = run_rbi_inprocess("inertia", spec, "--format", "json")
-    one_line_exit_2(proc, "parts[0] (p)", "pip install 'rbi[cad]'")
+    one_line_exit_2(proc, "parts[0] (p)", "pip install '.[cad]'")
     assert "no such file" not in proc.stderr

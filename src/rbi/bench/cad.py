@@ -153,7 +153,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     try:
         import OCP  # noqa: F401
     except ImportError:
-        return {"error": "needs OpenCascade: pip install 'rbi[cad]'", "files": []}
+        return {"error": "needs OpenCascade: pip install '.[cad]' in rbi's source folder", "files": []}
 
     closed = closed_form()
     repeats = 1 if quick else 3

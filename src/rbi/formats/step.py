@@ -47,7 +47,7 @@ MAX_STEP_BYTES = 32 * 2**20
 loaded and a 0.79 MB file (a plate with 200 holes) adds 7 MB and 2.5 s of CPU to read and
 integrate, so a file at the cap stays near 0.6 GB and some 100 s."""
 
-CAD_EXTRA_HINT = "pip install 'rbi[cad]'"
+CAD_EXTRA_HINT = "pip install '.[cad]' in rbi's source folder"
 """How to get OpenCascade's wheels (the optional extra ``cad``: cadquery-ocp-novtk)."""
 
 ADAPTIVE_EPS = 1e-12

@@ -232,7 +232,7 @@ def _answer(path: str, done: subprocess.CompletedProcess) -> tuple[bytes, list[s
     error = answer.get("error")
     if error == "missing":
         raise InputError(
-            f"{path}: a .xacro file needs the xacro package: pip install 'rbi[xacro]' (or run "
+            f"{path}: a .xacro file needs the xacro package: pip install '.[xacro]' in rbi's source folder (or run "
             "`xacro FILE > FILE.urdf` and read that)"
         )
     if error == "memory":
