@@ -122,3 +122,20 @@ def test_pictures_export_and_sweeps(tmp_path):
     )
     # what no output of a run may replace: the spec and the sub-assembly's file
     assert rbi.load(spec).files_read == [str(spec), str(tmp_path / "panel.yaml")]
+
+
+def test_plus_minus_on_prism_and_sub_assembly_numbers(tmp_path):
+    (tmp_path / "panel.yaml").write_bytes((BODIES / "cubesat_panel.yaml").read_bytes())
+    spec = tmp_path / "sat.yaml"
+    spec.write_text(
+        "units: {length: cm, mass: g}\nparts:\n"
+        "  - {name: wing, shape: assembly, file: panel.yaml, mass: '125 ± 2', pattern: {count: 2, step: [0, 30, 0]}}\n"
+        "  - {name: beam, shape: prism, density: 2.7, outline: [[0, 0], [4, 0], ['4 ± 0.01', 1], [0, 1]],"
+        " start: [0, 0, 0], end: [0, 0, 20]}\n"
+    )
+    out = json_of("uncertainty", spec, "--of", "mass")["quantities"][0]
+    sensitivity = {c["input"]: c["sensitivity"] for c in out["contributions"]}
+    assert sensitivity["parts.wing.mass"] == pytest.approx(2.0, rel=1e-9)  # two copies
+    # moving the vertex (4, 1) along x changes the area by 1/2 × (1 − 0) per unit: ρ L / 2
+    assert sensitivity["parts.beam.outline[2][0]"] == pytest.approx(2.7 * 20 / 2, rel=1e-9)
+    assert out["u"] == pytest.approx(np.hypot(2 * 2.0, 27 * 0.01), rel=1e-9)

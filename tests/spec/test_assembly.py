@@ -251,3 +251,17 @@ def test_files_outside_the_folder_fifos_and_bad_sub_specs(tmp_path):
     one_line_exit_2(
         run_rbi_inprocess("inertia", inside / "not_spec.yaml"), "file: missing.yaml", "no such file"
     )
+
+
+def test_a_wide_tree_of_sub_assemblies_reads_each_file_once(tmp_path):
+    # 4 levels of 30 sub-assemblies each: 810,000 point masses, 5 files; a sub-assembly of one
+    # point mass has no moments of its own, and that is not an underflow
+    for i in range(4):
+        parts = [{"shape": "assembly", "file": f"f{i + 1}.yaml", "position": [k, 0, 0]} for k in range(30)]
+        (tmp_path / f"f{i}.yaml").write_text(json.dumps({"parts": parts}))
+    (tmp_path / "f4.yaml").write_text("parts: [{shape: point, mass: 1, position: [0, 0, 0]}]\n")
+    started = time.process_time()
+    top = rbi.load(tmp_path / "f0.yaml")
+    assert time.process_time() - started < 20
+    assert top.mass == 30**4
+    np.testing.assert_allclose(top.center_of_mass, [4 * 14.5, 0, 0], rtol=1e-14)

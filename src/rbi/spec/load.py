@@ -362,10 +362,12 @@ def spec_from_raw(path: str, raw: Any):
 MAX_NESTING = 10
 """Most sub-assembly files nested inside one another below a spec."""
 
-_nesting: contextvars.ContextVar[tuple[tuple[str, str], ...]] = contextvars.ContextVar(
-    "rbi_nesting", default=()
+_nesting: contextvars.ContextVar[tuple[tuple[tuple[str, str], ...], dict]] = contextvars.ContextVar(
+    "rbi_nesting",
+    default=((), {}),
 )
-"""The spec files being read, outermost first: (real path, name in messages)."""
+"""The spec files being read, outermost first (real path, name in messages), and the
+sub-assemblies read so far below the outermost, by real path (each file is read once)."""
 
 
 def read_assemblies(spec: BodySpec, path: str) -> None:
@@ -374,26 +376,28 @@ def read_assemblies(spec: BodySpec, path: str) -> None:
     translated in its own units, for :func:`rbi.spec.translate.assembly_element`; InputError
     naming the part for a file that cannot be read or is not a valid spec, a file that holds
     itself (naming the chain of files) or nesting deeper than :data:`MAX_NESTING` files."""
+    chain, read = _nesting.get()
+    chain, read = chain or ((os.path.realpath(path), path),), read if chain else {}
     for i, part in enumerate(spec.parts):
         if not isinstance(part, AssemblyPart):
             continue
         where = f"{path}: {part_label(i, part)}: file: {part.file}"
         file = spec_relative_file(path, part.file, where)
-        chain = _nesting.get() or ((os.path.realpath(path), path),)
-        label = str(file)
-        if os.path.realpath(file) in (real for real, _ in chain):
-            raise InputError(
-                f"{where}: a cycle of sub-assemblies: {' -> '.join([n for _, n in chain] + [label])}"
-            )
+        label, real = str(file), os.path.realpath(file)
+        if real in (each for each, _ in chain):
+            names = " -> ".join([name for _, name in chain] + [label])
+            raise InputError(f"{where}: a cycle of sub-assemblies: {names}")
         if len(chain) > MAX_NESTING:
             raise InputError(f"{where}: sub-assemblies nest deeper than {MAX_NESTING} files")
-        token = _nesting.set((*chain, (os.path.realpath(file), label)))
-        try:
-            part._loaded = body_from_spec(spec_from_raw(label, read_yaml(file)), label)
-        except InputError as exc:
-            raise InputError(f"{where}: {str(exc).removeprefix(label + ': ')}") from None
-        finally:
-            _nesting.reset(token)
+        if real not in read:
+            token = _nesting.set(((*chain, (real, label)), read))
+            try:
+                read[real] = body_from_spec(spec_from_raw(label, read_yaml(file)), label)
+            except InputError as exc:
+                raise InputError(f"{where}: {str(exc).removeprefix(label + ': ')}") from None
+            finally:
+                _nesting.reset(token)
+        part._loaded = read[real]
 
 
 def load_body(path: str | Path) -> LoadedBody:

@@ -166,7 +166,7 @@ def _plain(part: Any, fields: set[str]) -> bool:
     return "rotation" not in fields or part.rotation is None
 
 
-WITHOUT_OWN_MOMENTS = ("point", "custom")
+WITHOUT_OWN_MOMENTS = ("point", "custom", "assembly")
 """Shapes whose moments about their own centre may be zero: a point mass, and moments given as
 written. Every other shape with a mass has moments of its own."""
 
