@@ -159,6 +159,7 @@ def test_a_tilt_too_large_to_be_a_turn_is_refused_as_simulate_refuses_it(bolted,
         # the command line's START:STOP:COUNT habit: rbi 4 ran spins 100, 300 and 3
         ({"spin": (100, 300, 3)}, "spin: ", ["START, STOP, COUNT", "Grid(100, 300, 3)", "linspace"]),
         ({"tilt_deg": (0.0, 1.0, 5)}, "tilt_deg: ", ["START, STOP, COUNT", "Grid(0.0, 1.0, 5)"]),
+        ({"spin": (150.0, 250.0, 3.0)}, "spin: ", ["rbi.Grid(150.0, 250.0, 3)", "3 values"]),
         (
             {"vary": {"parts.bolt.mass": (0.01, 0.03, 5)}},
             "vary['parts.bolt.mass']: ",

@@ -191,6 +191,7 @@ def _refuse_habits(value: Any) -> None:
     if isinstance(value, tuple) and len(value) == 3 and all(isinstance(v, numbers.Real) for v in value):
         start, stop, count = value
         if float(count).is_integer() and not any(isinstance(v, bool) for v in value):
+            count = int(count)
             raise ValueError(
                 f"{value!r} looks like START, STOP, COUNT (the command line's {start}:{stop}:{count}): "
                 f"give rbi.Grid({start}, {stop}, {count}) (or numpy.linspace({start}, {stop}, {count})) "
