@@ -165,6 +165,11 @@ def test_the_outline_frame():
     np.testing.assert_allclose(along_x.center_of_mass, [0.5, 0.1, 0.2], atol=1e-15)
     along_z = body(prism(triangle, (0, 0, 0), (0, 0, 1), mass=1.0))  # x: body x, y: body y
     np.testing.assert_allclose(along_z.center_of_mass, [0.1, 0.2, 0.5], atol=1e-15)
+    nearly_x = body(prism(triangle, (0, 0, 0), (3, 1, 0), mass=1.0))  # body x projected: (1, -3, 0)/√10
+    x, z = np.array([1, -3, 0]) / np.sqrt(10), np.array([3, 1, 0]) / np.sqrt(10)
+    np.testing.assert_allclose(
+        nearly_x.center_of_mass, 0.1 * x + 0.2 * np.cross(z, x) + [1.5, 0.5, 0], atol=1e-15
+    )
     slanted = body(prism(triangle, (0, 0, 0), (0, 0, 1), mass=1.0, x_axis=[0, 3, 7]))  # made perpendicular: y
     np.testing.assert_allclose(slanted.center_of_mass, [-0.2, 0.1, 0.5], atol=1e-15)
 

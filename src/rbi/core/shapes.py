@@ -501,13 +501,12 @@ def prism_frame(
     body y when x runs along z) made perpendicular to z; y = z × x. ValueError when ``x_axis``
     runs along z."""
     z, length = axis_between(np.asarray(start, dtype=float), np.asarray(end, dtype=float))
-    given = x_axis is not None
-    x = np.asarray(
-        x_axis if given else ([0.0, 1.0, 0.0] if abs(z[0]) > 0.9 else [1.0, 0.0, 0.0]), dtype=float
-    )
-    x = unit_vector(x)
-    x = x - (x @ z) * z
-    if vector_length(x) < 1e-9:
+    for x in [x_axis] if x_axis is not None else [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]:
+        x = unit_vector(x)
+        x = x - (x @ z) * z
+        if vector_length(x) >= 1e-9:
+            break
+    else:
         raise ValueError("x_axis: runs along the extrusion (end - start); give a direction across it")
     x = unit_vector(x)
     return np.column_stack((x, np.cross(z, x), z)), length
