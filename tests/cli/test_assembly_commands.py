@@ -139,3 +139,13 @@ def test_plus_minus_on_prism_and_sub_assembly_numbers(tmp_path):
     # moving the vertex (4, 1) along x changes the area by 1/2 × (1 − 0) per unit: ρ L / 2
     assert sensitivity["parts.beam.outline[2][0]"] == pytest.approx(2.7 * 20 / 2, rel=1e-9)
     assert out["u"] == pytest.approx(np.hypot(2 * 2.0, 27 * 0.01), rel=1e-9)
+
+
+def test_the_picture_legend_counts_copies_of_a_sub_assembly_not_its_parts():
+    from rbi.spec.geometry import part_geometry
+    from rbi.viz.still import part_legend
+
+    items = part_geometry(rbi.load(BODIES / "cubesat_assembly.yaml")._loaded)
+    assert len(items) == 9 + 2 + 2  # every part of the bus, each panel of each wing
+    legend = [(e["name"], e["shape"], e["copies"]) for e in part_legend(items)]
+    assert legend == [("bus", "assembly", 1), ("wing-left", "assembly", 2), ("wing-right", "assembly", 2)]

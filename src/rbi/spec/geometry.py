@@ -19,8 +19,9 @@ Every solid is one of:
 - ``{"kind": "points", "positions"}``: the points of a ``point_cloud`` file (a cloud of more
   than :data:`MAX_DRAWN_POINTS` points is drawn as its stand-in box).
 
-A part with a ``pattern`` gives one primitive per copy. Each primitive also has
-``part`` (the index of the written part it comes from), ``name``, ``shape`` (as written),
+A part with a ``pattern`` gives one primitive per copy, a sub-assembly one per part of each
+copy. Each primitive also has ``part`` (the index of the written part it comes from), ``copy``
+(which copy of its pattern), ``name``, ``shape`` (as written),
 ``hole`` (a subtracted solid) and ``mass`` (per copy).
 Coordinates are body-frame, in the file's length unit; ``rotation`` is a 3×3 matrix (rows),
 part axes to body axes.
@@ -72,7 +73,11 @@ def part_geometry(body) -> list[dict[str, Any]]:
         copies = (
             [_stand_in(element)]
             if None in items or len(items) * count > MAX_DRAWN_COPIES
-            else [moved(item, R, t) for R, t in copy_motions(pattern) for item in items]
+            else [
+                moved(item, R, t) | {"copy": k}
+                for k, (R, t) in enumerate(copy_motions(pattern))
+                for item in items
+            ]
         )
         for copy in copies:
             copy |= {

@@ -79,8 +79,10 @@ def part_legend(parts: list[dict[str, Any]]) -> list[dict[str, Any]]:
     entries: dict[int, dict[str, Any]] = {}
     for index, item in enumerate(parts):
         part = item.get("part", index)
-        if part in entries:
-            entries[part]["copies"] += 1
+        if part in entries:  # a sub-assembly's parts are one copy
+            entries[part]["copies"] = max(
+                entries[part]["copies"], item.get("copy", entries[part]["copies"]) + 1
+            )
             continue
         colour = "#333333" if item["kind"] in ("point", "points") else part_colour(part)
         entries[part] = {
