@@ -265,3 +265,14 @@ def test_a_wide_tree_of_sub_assemblies_reads_each_file_once(tmp_path):
     assert time.process_time() - started < 20
     assert top.mass == 30**4
     np.testing.assert_allclose(top.center_of_mass, [4 * 14.5, 0, 0], rtol=1e-14)
+
+
+def test_a_sub_assemblys_warnings_are_the_bodys(tmp_path):
+    # a steel ball of radius 10 in a file without units: 20 m of steel, lengths look like mm
+    (tmp_path / "ball.yaml").write_text(
+        "parts: [{name: ball, shape: sphere, radius: 10, density: steel, center: [0, 0, 0]}]\n"
+    )
+    (tmp_path / "top.yaml").write_text(assembly_of("ball.yaml"))
+    warnings = rbi.load(tmp_path / "top.yaml").warnings
+    assert len(warnings) == 1 and warnings[0].startswith(f"{tmp_path / 'ball.yaml'}: parts[0] (ball): ")
+    assert "millimetres" in warnings[0]

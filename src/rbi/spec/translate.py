@@ -375,7 +375,14 @@ def body_from_spec(spec: models.BodySpec, path: str):
         expect=spec.expect,
         spec=spec,
         spin_axis=None if spec.spin_axis is None else np.asarray(spec.spin_axis, dtype=float),
-        warnings=unit_warnings(spec, path) + [f"{path}: {note}" for note in mesh_notes(spec)],
+        warnings=unit_warnings(spec, path)
+        + [f"{path}: {note}" for note in mesh_notes(spec)]
+        + [
+            line
+            for part in spec.parts
+            if isinstance(part, models.AssemblyPart)
+            for line in part._loaded.warnings
+        ],
         files=files_named(spec, path),
     )
 
