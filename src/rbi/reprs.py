@@ -30,16 +30,19 @@ def rich_table(
     rows: Sequence[Sequence[str]],
     columns: Sequence[str] = QUANTITY_COLUMNS,
     total: Sequence[str] | None = None,
+    left: int | None = None,
 ) -> Any:
-    """A :class:`rich.table.Table` of text cells; the last column of a summary (its values) and
-    every column after the first of other tables are right-aligned."""
+    """A :class:`rich.table.Table` of text cells; the first ``left`` columns are aligned left,
+    the others right (default: a summary's values, and every column after the first of other
+    tables). Titles, headers and cells are text, never read as markup."""
     # not at top level: `rbi inertia --format json` would load rich.table and rich.text too
     from rich.table import Table
     from rich.text import Text
 
     table = Table(title=Text(title))  # Text: a name holding [brackets] is shown, not read as markup
+    left = _left(columns) if left is None else left
     for i, name in enumerate(columns):
-        table.add_column(name, justify="right" if _right(columns, i) else "left")
+        table.add_column(Text(name), justify="left" if i < left else "right")
     for row in rows:
         table.add_row(*(Text(str(cell)) for cell in row))
     if total is not None:
@@ -53,9 +56,11 @@ def html_table(
     rows: Sequence[Sequence[str]],
     columns: Sequence[str] = QUANTITY_COLUMNS,
     total: Sequence[str] | None = None,
+    left: int | None = None,
 ) -> str:
     """The same table as HTML (every cell escaped; ``total`` in the table's foot)."""
-    align = [' style="text-align:right"' if _right(columns, i) else "" for i in range(len(columns))]
+    left = _left(columns) if left is None else left
+    align = ["" if i < left else ' style="text-align:right"' for i in range(len(columns))]
     head = "".join(f"<th>{escape(name)}</th>" for name in columns)
     body = "".join(
         "<tr>" + "".join(f"<td{a}>{escape(str(cell))}</td>" for a, cell in zip(align, row)) + "</tr>"
@@ -74,12 +79,6 @@ def html_table(
     )
 
 
-def _right(columns: Sequence[str], i: int) -> bool:
-    if tuple(columns) == QUANTITY_COLUMNS:
-        return i == 2
-    return i > 0
-
-
 @dataclass(frozen=True)
 class Rows:
     """One table of text cells, as every face of a result draws it.
@@ -96,7 +95,7 @@ class Rows:
 
     title: str
     columns: tuple[str, ...]
-    cells: list[tuple[str, ...]]
+    cells: Sequence[tuple[str, ...]]
     total: tuple[str, ...] | None = None
     left: int = 1
     kind: str = "table"
@@ -199,6 +198,10 @@ class Result:
         """The rows of ``to_csv()`` and ``to_pandas()``, before flattening: the one object."""
         return [self.to_dict()]
 
+    def csv_summary(self) -> dict[str, Any]:
+        """The result's one CSV row among several files' (``rbi parts A B --format csv``)."""
+        return self.csv_rows()[0]
+
     def to_csv(self) -> str:
         """The CSV the matching command prints with ``--format csv``: a header, then the rows."""
         return csv_text(self.csv_rows())
@@ -219,11 +222,11 @@ class Result:
         # not at top level: `rbi inertia --format json` would load rich.console too
         from rich.console import Group
 
-        tables = [rich_table(r.title, r.cells, r.columns, r.total) for r in self.rows()]
+        tables = [rich_table(r.title, r.cells, r.columns, r.total, r.left) for r in self.rows()]
         return tables[0] if len(tables) == 1 else Group(*tables)
 
     def _repr_html_(self) -> str:
-        return "".join(html_table(r.title, r.cells, r.columns, r.total) for r in self.rows())
+        return "".join(html_table(r.title, r.cells, r.columns, r.total, r.left) for r in self.rows())
 
     def __str__(self) -> str:
         """The tables as text, 80 columns wide (``print(result)``)."""

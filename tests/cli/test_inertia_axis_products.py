@@ -8,7 +8,7 @@ import json
 import numpy as np
 import pytest
 
-from rbi.cli.mass_commands import with_product_sign
+from rbi.api.results import with_product_sign
 from tests.conftest import one_line_exit_2, run_rbi_inprocess
 
 CYLINDER = """

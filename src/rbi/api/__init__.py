@@ -27,10 +27,6 @@ from typing import TYPE_CHECKING, Any
 from rbi.api.body import LENGTH_UNITS as LENGTH_UNITS
 from rbi.api.body import MASS_UNITS as MASS_UNITS
 from rbi.api.body import Body as Body
-from rbi.api.body import Dynamics as Dynamics
-from rbi.api.body import Momentum as Momentum
-from rbi.api.body import Part as Part
-from rbi.api.body import Principal as Principal
 from rbi.api.body import load as load
 from rbi.api.body import loads as loads
 from rbi.api.body import spec_schema as spec_schema
@@ -39,6 +35,10 @@ from rbi.api.body import validate as validate
 from rbi.api.pictures import Animation as Animation
 from rbi.api.pictures import animate as animate
 from rbi.api.pictures import show as show
+from rbi.api.results import Dynamics as Dynamics
+from rbi.api.results import Momentum as Momentum
+from rbi.api.results import Part as Part
+from rbi.api.results import Principal as Principal
 from rbi.api.robots import ImportedLink as ImportedLink
 from rbi.api.robots import RobotImport as RobotImport
 from rbi.api.robots import audit as audit

@@ -5,12 +5,24 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from rbi.api.results import (
+    PRODUCT_SIGN_TITLES,
+    About,
+    Checks,
+    Dynamics,
+    Export,
+    Inertia,
+    Momentum,
+    Part,
+    Parts,
+    Principal,
+    with_product_sign,
+)
 from rbi.api.uncertainty import UncertaintyBudget, budget_of
 from rbi.core.dynamics import (
     angle_between_deg,
@@ -25,7 +37,7 @@ from rbi.errors import ArgumentError, SpecError, literal
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.runs.values import vector_value
-from rbi.spec.checks import Check, run_checks
+from rbi.spec.checks import run_checks
 from rbi.spec.points import NO_PIVOT, reference_choices, reference_name
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
@@ -176,126 +188,6 @@ def unit_vector(direction: Sequence[float] | np.ndarray) -> np.ndarray:
         ) from None
 
 
-@dataclass(frozen=True)
-class Principal(TableRepr):
-    """Principal moments and axes about a point.
-
-    Attributes:
-        moments: (3,) ascending, mass·length² (spec units).
-        axes: (3, 3) unit vectors in the body frame, one per **row** (``axes[i]`` belongs to
-            ``moments[i]``), right-handed — as ``rbi principal`` prints them.
-        radii_of_gyration: (3,) ``sqrt(moment / mass)``, length unit.
-        about: (3,) the reference point, body frame, length unit.
-    """
-
-    moments: np.ndarray
-    axes: np.ndarray
-    radii_of_gyration: np.ndarray
-    about: np.ndarray
-
-    def _table(self) -> tuple[str, list[list[str]], tuple[str, ...]]:
-        rows = [
-            [str(i + 1), number(m, 8), vector_text(axis), number(k)]
-            for i, (m, axis, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration))
-        ]
-        title = f"principal moments and axes about {vector_text(self.about)}"
-        return title, rows, ("axis", "moment", "direction (body axes)", "radius of gyration")
-
-
-@dataclass(frozen=True)
-class Part(TableRepr):
-    """One part of a body, in file order (spec units, body frame).
-
-    Attributes:
-        name: the part's ``name`` (``parts[i]`` when it has none).
-        shape: the part's shape (``cylinder``, ``mesh`` ... or ``point_cloud``).
-        hole: True for a part removed from the body (``subtract: true``).
-        mass: the part's mass (negative for a hole).
-        center_of_mass: (3,) the part's centre of mass.
-        inertia_about_com: (3, 3) the part's inertia about its own centre of mass, body axes.
-        volume: the solid's volume (length³; negative for a hole, as its mass, so the parts'
-            volumes add up to the body's), or None when it has none (points, custom parts).
-        principal_moments: (3,) ascending, about the part's own centre of mass (negative for a
-            hole), mass·length².
-        inertia_share: the part's share of the trace of the body's inertia about the body's
-            centre of mass (the shares add up to 1; a hole's is negative).
-        integration_error: for a STEP part, the relative error estimate of its exact-geometry
-            integration; else None.
-    """
-
-    name: str
-    shape: str
-    hole: bool
-    mass: float
-    center_of_mass: np.ndarray
-    inertia_about_com: np.ndarray
-    volume: float | None
-    principal_moments: np.ndarray
-    inertia_share: float
-    integration_error: float | None = None
-
-    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
-        rows = [
-            ("shape", "", self.shape + (" (hole)" if self.hole else "")),
-            ("mass", "", number(self.mass, 8)),
-            ("centre of mass", "", vector_text(self.center_of_mass)),
-            *(
-                (f"inertia about its CoM, row {i + 1}", "", vector_text(row))
-                for i, row in enumerate(self.inertia_about_com)
-            ),
-            ("volume", "", number(self.volume, 8)),
-        ]
-        return f"part {self.name}", rows, QUANTITY_COLUMNS
-
-
-@dataclass(frozen=True)
-class Momentum:
-    """Angular momentum and kinetic energy of the body at one instant (spec units, body axes).
-
-    Attributes:
-        omega: (3,) angular velocity, rad/s.
-        about: (3,) the reference point.
-        com_velocity: (3,) velocity of the centre of mass, length/s.
-        angular_momentum: (3,) about ``about``, mass·length²/s.
-        angle_deg: angle between the angular momentum and ω, degrees (None when either is zero).
-        kinetic_energy: mass·length²/s².
-    """
-
-    omega: np.ndarray
-    about: np.ndarray
-    com_velocity: np.ndarray
-    angular_momentum: np.ndarray
-    angle_deg: float | None
-    kinetic_energy: float
-
-
-@dataclass(frozen=True)
-class Dynamics:
-    """Newton–Euler at one instant, about a point (spec units, body axes), as `Body.dynamics`
-    gives it.
-
-    Attributes:
-        mode: ``"inverse"`` (loads from the motion) or ``"forward"`` (motion from the loads).
-        about: (3,) the reference point o, length unit.
-        omega: (3,) angular velocity, rad/s.
-        alpha: (3,) angular acceleration, rad/s².
-        point_acceleration: (3,) acceleration of o, length/s².
-        force: (3,) the force on the body, mass·length/s² (``held``: the force holding o).
-        torque: (3,) the torque about o, mass·length²/s².
-        held: o was held (a pivot): forward dynamics without a force about a point other than
-            the centre of mass.
-    """
-
-    mode: str
-    about: np.ndarray
-    omega: np.ndarray
-    alpha: np.ndarray
-    point_acceleration: np.ndarray
-    force: np.ndarray
-    torque: np.ndarray
-    held: bool
-
-
 class Body(TableRepr):
     """A validated rigid body, as `load` returns it (not constructed directly).
 
@@ -307,6 +199,7 @@ class Body(TableRepr):
         self._loaded = loaded
         self._raw = raw
         self._spec_bytes = spec_bytes  # the spec file's bytes as read (None: text, a dict, stdin)
+        self._file_length: str = loaded.length_unit  # the spec's length unit (before `in_units`)
         self.warnings: list[str] = list(loaded.warnings)
         """Warnings about the spec (units that look wrong for a spec without ``units:``: one
         line naming the part and the ``units:`` that would fit), the lines the CLI prints on
@@ -436,16 +329,59 @@ class Body(TableRepr):
         with np.errstate(over="ignore", invalid="ignore"):
             radii = np.asarray(radii_of_gyration(list(moments), self.mass))
         self._refuse_non_finite(radii_of_gyration=radii)
+        spread = self.standard_uncertainty(about)
         # + 0.0: no -0.0 components (the CLI prints 0 there too)
         return Principal(
             moments=np.asarray(moments) + 0.0,
             axes=np.asarray(axes) + 0.0,
             radii_of_gyration=radii,
             about=point,
+            place=About(self, _label(about), point),
+            uncertainty=None
+            if spread is None
+            else {k: spread[k] for k in ("mass", "center_of_mass", "moments", "axes_deg")},
         )
 
-    def parts(self, expand: bool = False) -> list[Part]:
-        """Each part's mass properties, in file order (see `Part`); ``expand``: each
+    def inertia_report(
+        self,
+        about: Point = "com",
+        axes: Sequence[tuple[str, float]] | None = None,
+        *,
+        products: str = "tensor",
+        axis: Sequence[float] | None = None,
+    ) -> Inertia:
+        """The inertia about a point as ``rbi inertia`` gives it (`Inertia`: ``to_dict()``,
+        its tables): `inertia` ``(about, axes)`` with the products' sign ``products``
+        (``"tensor"``, ``I_xy = −∫xy dm``, or ``"cad"``, ``+∫xy dm``), and with ``axis`` the
+        moment about the line through ``about`` along it (`moment_about_axis`)."""
+
+        if products not in PRODUCT_SIGN_TITLES:
+            raise ArgumentError(
+                "products", f"expected one of {', '.join(PRODUCT_SIGN_TITLES)}, got {literal(products)}"
+            )
+        turns = list(axes or [])
+        matrix = with_product_sign(self.inertia(about, turns or None), products)
+        direction = None if axis is None else unit_vector(axis)
+        spread = self.standard_uncertainty(about, turns or None)
+        return Inertia(
+            About(self, _label(about), self.point(about)),
+            matrix,
+            "world (rotated)" if turns else "body",
+            tuple(f"{a}:{np.degrees(np.radians(d)):g}" for a, d in turns),
+            products,
+            direction,
+            None if direction is None else self.moment_about_axis(direction, about, turns or None),
+            None if spread is None else {k: spread[k] for k in ("mass", "center_of_mass", "inertia")},
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        """What ``rbi inertia`` prints with ``--format json`` (about the centre of mass, body
+        axes), less ``"file"``: see `inertia_report`."""
+        return self.inertia_report().to_dict()
+
+    def parts(self, expand: bool = False) -> Parts:
+        """Each part's mass properties, in file order: the `Parts` table (a sequence of `Part`,
+        with the body's totals), as ``rbi parts`` lists them; ``expand``: each
         sub-assembly (``shape: assembly``) listed as its own parts, named ``ASSEMBLY/PART``
         (``ASSEMBLY[i]/PART`` for the copies of a pattern), placed in the body."""
         # not at top level: `rbi audit` would load rbi.spec.assembly and rbi.spec.volumes too
@@ -475,7 +411,7 @@ class Body(TableRepr):
                     integration_error=part._integration_error if isinstance(part, StepPart) else None,
                 )
             )
-        return out
+        return Parts(self, out)
 
     def momentum(
         self, omega: Sequence[float], about: Point = "com", velocity: Sequence[float] | None = None
@@ -508,6 +444,7 @@ class Body(TableRepr):
             angular_momentum=np.asarray(h),
             angle_deg=angle_between_deg(h, w),
             kinetic_energy=energy,
+            place=About(self, _label(about), point),
         )
 
     def uncertainty(
@@ -583,10 +520,22 @@ class Body(TableRepr):
                 part = f"parts[{i}]" + (f" ({names[i]})" if i < len(names) and names[i] else "")
                 body._refuse_non_finite(f"{part}: in {length} and {mass}, ", **_numbers(element))
             body._refuse_non_finite(f"in {length} and {mass}, ", **_numbers(props))
+        body._file_length = self._file_length
         return body
 
+    def from_spec_units(self, lengths: Sequence[float] | None) -> list[float] | None:
+        """A point or a velocity given in the spec file's length unit, in this body's (which
+        `in_units` may have changed); None stays None."""
+        if lengths is None:
+            return None
+        factor = LENGTH_UNITS[self._file_length] / LENGTH_UNITS[self._loaded.length_unit]
+        return [factor * float(x) for x in lengths]
+
     def moment_about_axis(
-        self, axis: Sequence[float], about: Point = "com", axes: Sequence[tuple[str, float]] | None = None
+        self,
+        axis: Sequence[float] | np.ndarray,
+        about: Point = "com",
+        axes: Sequence[tuple[str, float]] | None = None,
     ) -> float:
         """The scalar moment of inertia ``nᵀ I n`` (mass·length²) about the line through
         ``about`` along ``axis`` (any non-zero length), with ``axis`` in the axes of
@@ -595,7 +544,7 @@ class Body(TableRepr):
         matrix = self.inertia(about, axes)
         try:
             with np.errstate(over="ignore", invalid="ignore"):
-                moment = moment_about_axis(matrix, axis)
+                moment = moment_about_axis(matrix, axis)  # type: ignore[arg-type]  # an array is a sequence
         except ValueError:
             raise ArgumentError(
                 "axis", f"must be a non-zero finite direction (x, y, z), got {literal(axis)}"
@@ -603,7 +552,7 @@ class Body(TableRepr):
         self._refuse_non_finite(moment=moment)
         return moment
 
-    def check(self) -> list[Check]:
+    def check(self) -> Checks:
         """Each expectation of the spec's ``expect:`` block (see docs/check.md) against the
         body, as ``rbi check`` compares them (see `Check`), in the spec's units. SpecError when
         the spec has none."""
@@ -614,7 +563,7 @@ class Body(TableRepr):
             loaded.mass_unit,
         ):
             loaded = convert_body(loaded, spec.units.length, spec.units.mass)
-        return run_checks(loaded)
+        return Checks(self, run_checks(loaded))
 
     def dynamics(
         self,
@@ -663,7 +612,7 @@ class Body(TableRepr):
             )
         self._refuse_non_finite(linear_acceleration=linear, angular_acceleration=angular, force=f, torque=t)
         mode = "inverse" if alpha is not None else "forward"
-        return Dynamics(mode, point, w, angular, linear, f, t, held)
+        return Dynamics(mode, point, w, angular, linear, f, t, held, About(self, name or "point", point))
 
     def inertial_xml(
         self, to: str, *, name: str | None = None, document: bool = False, diagonal: bool = False
@@ -715,6 +664,16 @@ class Body(TableRepr):
             f"{self.path}: the inertia has a zero principal moment (a point mass or thin rod); "
             "simulators such as MuJoCo refuse a moving body without rotational inertia",
         ]
+
+    def export(
+        self, to: str, *, name: str | None = None, document: bool = False, diagonal: bool = False
+    ) -> Export:
+        """The `Export` ``rbi export`` prints: `inertial_xml` (the same arguments), its
+        `export_warnings` and the SI mass properties it holds."""
+
+        xml = self.inertial_xml(to, name=name, document=document, diagonal=diagonal)
+        si = self.in_units("m", "kg")
+        return Export(si.name, to, si.units, self.export_warnings(), si.mass_properties, xml)
 
     def __repr__(self) -> str:
         units = self.units
@@ -779,6 +738,11 @@ def _rotation(axes: Any) -> np.ndarray:
             raise ArgumentError("axes", turn_lost_to_rounding(literal(degrees)))
         turns.append((axis, np.radians(degrees)))
     return compose_world_rotations(turns)
+
+
+def _label(about: Any) -> str:
+    """How a result names the point ``about``: ``com``, ``origin``, ``pivot`` or ``point``."""
+    return (reference_name(about) or "point") if isinstance(about, str) else "point"
 
 
 def loaded_body(body: Any, parameter: str) -> Any:

@@ -4,14 +4,12 @@ from __future__ import annotations
 
 from typing import Annotated
 
-import numpy as np
 import typer
 
-from rbi import api
-from rbi.api import LENGTH_UNITS, MASS_UNITS, SpecError
-from rbi.cli import tables
+import rbi
+from rbi import SpecError
 from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_vector
-from rbi.cli.render import emit, number, vector_text
+from rbi.cli.render import emit_result
 
 _VEC = "X,Y,Z"
 
@@ -72,27 +70,13 @@ def dynamics(
         raise SpecError(
             "dynamics: give either --alpha (inverse: force and torque) or --force/--torque (forward: accelerations)"
         )
-    w = np.array(parse_vector(omega, "--omega"))
-    body = api.load(file)
+    w = parse_vector(omega, "--omega")
+    body = rbi.load(file)
     about_label, point = parse_about(about, body)
     given = _given(about_label, alpha, accel, force, torque)
-    found = body.dynamics(w, about=point if about_label == "point" else about_label, **given)
-    result = {
-        "name": body.name,
-        "units": body.units,
-        "warnings": list(body.warnings),
-        "mode": found.mode,
-        "mass": body.mass,
-        "center_of_mass": body.center_of_mass,
-        "about": point,
-        "about_label": about_label,
-        "omega": w,
-        "alpha": found.alpha,
-        "point_acceleration": found.point_acceleration,
-        "force": found.force,
-        "torque": found.torque,
-    }
-    emit(format.value, result, lambda: _table(body, result, found.held))
+    emit_result(
+        format.value, body.dynamics(w, about=point if about_label == "point" else about_label, **given)
+    )
 
 
 def _given(about_label: str, alpha, accel, force, torque) -> dict:
@@ -101,7 +85,7 @@ def _given(about_label: str, alpha, accel, force, torque) -> dict:
     dynamics, is singular)."""
     if alpha is not None:
         return {
-            "alpha": np.array(parse_vector(alpha, "--alpha")),
+            "alpha": parse_vector(alpha, "--alpha"),
             "point_acceleration": _vector(accel, "--accel"),
         }
     given = {"torque": _vector(torque, "--torque")}
@@ -114,41 +98,4 @@ def _vector(text: str | None, option: str):
     """An optional ``X,Y,Z`` option as an array: None stays None, an empty one is zero."""
     if text is None:
         return None
-    return np.array(parse_vector(text, option)) if text else np.zeros(3)
-
-
-def _table(body, result: dict, held: bool):
-    """The table of a Newton–Euler result; ``held``: the --about point was held (a pivot)."""
-
-    labels, about_label = body.unit_labels, result["about_label"]
-    given, found = ("given", "result") if result["mode"] == "inverse" else ("result", "given")
-    force_note = "needed to hold the point" if held else found
-    return tables.quantities(
-        f"{body.name or body.path} — Newton–Euler about {about_label} ({result['mode']})",
-        [
-            ("mass", labels["mass"], number(result["mass"], 8)),
-            (f"about ({about_label})", labels["length"], vector_text(result["about"])),
-            ("ω", "rad/s", vector_text(result["omega"])),
-            (f"α ({given})", "rad/s²", vector_text(result["alpha"])),
-            (
-                f"a of {about_label} ({'given' if held else given})",
-                f"{labels['length']}/s²",
-                vector_text(result["point_acceleration"]),
-            ),
-            (f"force ({force_note})", _load_unit(body, 1), vector_text(result["force"])),
-            (f"torque about {about_label} ({found})", _load_unit(body, 2), vector_text(result["torque"])),
-        ],
-    )
-
-
-def _load_unit(body, length_power: int) -> str:
-    """Unit of a force (``length_power`` 1) or torque (2) in the file's units: N and N·m in SI,
-    otherwise the file's unit with its value in N or N·m."""
-
-    units = body.units
-    si = "N" if length_power == 1 else "N·m"
-    length = units["length"] if length_power == 1 else f"{units['length']}²"
-    factor = MASS_UNITS[units["mass"]] * LENGTH_UNITS[units["length"]] ** length_power
-    if factor == 1.0:
-        return si
-    return f"{units['mass']}·{length}/s² (= {factor:g} {si})"
+    return parse_vector(text, option) if text else [0.0, 0.0, 0.0]

@@ -29,6 +29,7 @@ from rbi.cli.render import (
     refuse_non_finite,
     say_warnings,
     stdout_console,
+    tables_of,
     to_csv,
     to_json,
 )
@@ -52,6 +53,14 @@ class FileReport:
     csv_rows: list[dict[str, Any]] | None = None
     summary: dict[str, Any] | None = None
     failed: bool = False
+
+    @classmethod
+    def of(cls, result: Any, failed: bool = False) -> FileReport:
+        """What a result of the API gives (:class:`rbi.reprs.Result`: its ``to_dict()``, its
+        tables' rows, its CSV rows and its row among several files')."""
+        return cls(
+            result.to_dict(), lambda: tables_of(result), result.csv_rows(), result.csv_summary(), failed
+        )
 
     def summary_row(self) -> dict[str, Any]:
         if self.summary is not None:

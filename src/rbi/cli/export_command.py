@@ -4,15 +4,14 @@ from __future__ import annotations
 
 import sys
 from enum import Enum
-from pathlib import Path
 from typing import Annotated
 
 import typer
 
-from rbi import api
-from rbi.api import SpecError
+import rbi
+from rbi import SpecError
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile
-from rbi.cli.render import emit, say_warnings, to_csv
+from rbi.cli.render import emit_result, say_warnings
 
 
 class ExportTarget(str, Enum):
@@ -62,27 +61,10 @@ def export(
         raise SpecError(
             "--diagonal: only for --to mjcf (URDF and SDF take the full matrix about the centre of mass)"
         )
-    source = api.load(file)
-    body = source.in_units("m", "kg")
-    props = body.mass_properties
-    name = body.name or ("body" if file == "-" else Path(file).stem)
-    xml = source.inertial_xml(to.value, name=name, document=document, diagonal=diagonal)
-    warnings = source.export_warnings()
-    result = {
-        "name": body.name,
-        "to": to.value,
-        "units": body.units,
-        "warnings": warnings,
-        "mass": props.mass,
-        "center_of_mass": props.center_of_mass,
-        "inertia": props.inertia_about_com,
-        "xml": xml,
-    }
-    if format is not OutputFormat.json:
-        say_warnings(warnings)
-    if format is OutputFormat.table:
-        sys.stdout.write(xml)
-    elif format is OutputFormat.csv:
-        sys.stdout.write(to_csv([{k: v for k, v in result.items() if k != "xml"}]))
+    source = rbi.load(file)
+    result = source.export(to.value, document=document, diagonal=diagonal)
+    if format is OutputFormat.table:  # the element itself: no table
+        say_warnings(result.warnings)
+        sys.stdout.write(result.xml)
     else:
-        emit(format.value, result, lambda: None)
+        emit_result(format.value, result)

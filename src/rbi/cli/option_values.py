@@ -172,17 +172,3 @@ def parse_units(text: str) -> tuple[str, str]:
             f"and MASS one of {', '.join(MASS_UNITS)} (e.g. mm,g), got {text!r}"
         )
     return length, mass
-
-
-def in_output_units(body, units: str | None, *lengths):
-    """The `rbi.Body` in ``--units`` (unchanged when None), and each of ``lengths`` (points
-    or velocities in the file's length unit, or None) scaled alongside."""
-    if units is None:
-        return body, lengths
-    # not at top level: `rbi --help` would load rbi.api too
-    from rbi.api import LENGTH_UNITS
-
-    length, mass = parse_units(units)
-    factor = LENGTH_UNITS[body.units["length"]] / LENGTH_UNITS[length]
-    scaled = tuple(None if v is None else [factor * float(x) for x in v] for v in lengths)
-    return body.in_units(length, mass), scaled

@@ -14,9 +14,9 @@ from typer.core import TyperArgument
 
 from rbi import SpecError
 from rbi.cli.option_values import (  # noqa: F401  (re-exported: the commands parse their values with them)
-    in_output_units,
     parse_about,
     parse_rotation,
+    parse_units,
     parse_vector,
 )
 

@@ -123,22 +123,6 @@ def without_noise(values, scale: float = 0.0) -> np.ndarray:
     return values
 
 
-def matrix_digits(matrix) -> tuple[float, str]:
-    """A common power-of-ten scale for a matrix, so a table can print ``×10⁻⁶`` once."""
-    peak = float(np.max(np.abs(matrix))) if np.size(matrix) else 0.0
-    if peak == 0.0 or 1e-3 <= peak < 1e4 or not 1e-300 < peak < 1e300:  # 10.0**-324 is 0: print as is
-        return 1.0, ""
-    exponent = int(math.floor(math.log10(peak)))
-    return 10.0**exponent, f"×10{_superscript(exponent)}"
-
-
-_SUPER = str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹")
-
-
-def _superscript(n: int) -> str:
-    return str(n).translate(_SUPER)
-
-
 def _color_system() -> str | None:
     # rich's own NO_COLOR handling drops colours but keeps bold, dim and italic escapes;
     # NO_COLOR users get plain text.
@@ -201,6 +185,21 @@ def emit(
         print_table(table())
 
 
+def emit_result(fmt: str, result: Any, source: str | None = None) -> None:
+    """Write a result of the API (:class:`rbi.reprs.Result`) as :func:`emit` does: its
+    ``to_dict()``, its CSV rows or its tables."""
+
+    emit(fmt, result.to_dict(), lambda: tables_of(result), csv_rows=result.csv_rows(), source=source)
+
+
+def tables_of(result: Any) -> Any:
+    """A result's rows (``result.rows()``) drawn as rbi's tables."""
+    # not at top level: `rbi inertia --format json` would load rich and rbi.cli.tables too
+    from rbi.cli.tables import drawn
+
+    return drawn(result.rows())
+
+
 def say_warnings(warnings: Iterable[str]) -> None:
     """Each warning about a body (``Body.warnings``: units that look wrong ...) as one line
     ``rbi: warning: ...`` on stderr; JSON output carries them as ``"warnings"`` instead."""
@@ -247,17 +246,6 @@ def vector_text(v, digits: int = 6, scale: float = 0.0) -> str:
     """``[x, y, z]`` with noise below :data:`NOISE_RELATIVE` of the vector's largest entry, or
     of ``scale``, printed as 0."""
     return text_vector(without_noise(v, scale), digits)
-
-
-def body_size(body) -> float:
-    """A `rbi.Body`'s size for telling a position from rounding noise: its radius of gyration
-    about the centre of mass, √(trace I / 2m), file length unit (0 without mass or inertia)."""
-    props = body.mass_properties
-    try:
-        size = math.sqrt(float(np.trace(props.inertia_about_com)) / (2.0 * float(props.mass)))
-    except (ValueError, ZeroDivisionError, OverflowError):
-        return 0.0
-    return size if math.isfinite(size) else 0.0
 
 
 # --- progress (rich is imported when a bar is first drawn) -----------------------------------

@@ -8,9 +8,9 @@ from rich import box
 from rich.console import Group
 from rich.markup import escape
 from rich.table import Table
+from rich.text import Text
 
-from rbi.cli.render import matrix_digits, number, terminal_safe, without_noise
-from rbi.cli.terminal import ERROR_HANDLER, ascii_only
+from rbi.cli.terminal import ERROR_HANDLER, ascii_only, terminal_safe
 
 
 def plain_text(text: str) -> str:
@@ -65,25 +65,6 @@ def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
     return table
 
 
-def matrix(
-    title: str,
-    values,
-    unit: str,
-    row_labels: Sequence[str] = ("x", "y", "z"),
-    column_labels: Sequence[str] = ("x", "y", "z"),
-) -> Table:
-    """A 3×3 matrix with a common power-of-ten scale written once in the title."""
-    values = without_noise(values)
-    scale, scale_text = matrix_digits(values)
-    table = titled(title)
-    table.add_column(unit_header("", unit, scale_text).strip(), style="bold")
-    for label in column_labels:
-        table.add_column(label, justify="right")
-    for label, row in zip(row_labels, values):
-        table.add_row(label, *(number(v / scale, 7) for v in row))
-    return table
-
-
 def unit_header(label: str, unit: str, scale_text: str = "") -> str:
     """A column header such as ``moment [kg·m²] ×10⁻⁴`` (brackets escaped from rich markup)."""
     return escape(f"{label} [{unit}]") + (f" {scale_text}" if scale_text else "")
@@ -91,3 +72,38 @@ def unit_header(label: str, unit: str, scale_text: str = "") -> str:
 
 def stack(*renderables) -> Group:
     return Group(*renderables)
+
+
+def drawn(rows) -> Group:
+    """A result's tables (its ``rows()``: :class:`rbi.reprs.Rows`) in rbi's style, stacked.
+    Every title, header and cell is text (never read as markup), made safe once here."""
+    return stack(*(_drawn(each) for each in rows))
+
+
+def _drawn(rows) -> Table:
+    cells = [tuple(_text(cell) for cell in row) for row in rows.cells]
+    if rows.kind == "quantities":
+        table = quantities(rows.title, [])
+        for row in cells:
+            table.add_row(*row)
+        return table
+    table = titled(rows.title)
+    for i, header in enumerate(rows.columns):
+        justify = "left" if i < rows.left or (rows.kind == "check" and not header) else "right"
+        if rows.kind == "parts":  # the label over its unit; numbers never wrap, names fold
+            header = Text(header, justify=justify) if i else "part"
+            table.add_column(header, justify=justify, no_wrap=i >= rows.left, overflow="fold")
+            continue
+        style = "bold" if rows.kind == "matrix" and i == 0 else None
+        table.add_column(Text(_cell(header)), justify=justify, style=style)
+    for row in cells:
+        table.add_row(*row)
+    if rows.total is not None:
+        table.add_section()
+        table.add_row(*(_text(cell) for cell in rows.total))
+    return table
+
+
+def _text(cell: str) -> Text:
+    """A cell as text; a check's ``FAIL`` in bold red."""
+    return Text(_cell(cell), style="bold red" if cell == "FAIL" else "")

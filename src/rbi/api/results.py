@@ -1,0 +1,750 @@
+"""What a `Body` answers, as results that present themselves (:class:`rbi.reprs.Result`): the
+inertia about a point (`Inertia`), `Principal`, `Momentum`, `Dynamics`, the `Parts` table, the
+`Checks` of an ``expect:`` block and an `Export`. Each gives ``to_dict()`` (what its ``rbi``
+command prints with ``--format json``, less ``"file"``), its CSV rows and its tables' rows, from
+which ``print()``, the notebook's table and the CLI's tables are drawn.
+
+Tables print a coordinate below 1e-12 of the body's size, and a matrix entry below 1e-12 of the
+matrix's largest, as 0 (rounding noise); JSON and CSV keep every digit.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, field
+from typing import Any, overload
+
+import numpy as np
+
+from rbi.core.mass import MassProperties
+from rbi.reprs import Result, Rows
+from rbi.spec.checks import Check
+from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
+from rbi.text import number, plus_minus, vector_text
+
+NOISE_RELATIVE = 1e-12
+"""An entry smaller than this fraction of the largest entry of its matrix or vector (or of the
+body's size, for a position) is rounding noise and prints as 0 in tables."""
+
+PRODUCT_SIGN_TITLES = {"tensor": "products −∫xy dm", "cad": "CAD products +∫xy dm"}
+"""Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
+(the positive integrals ``+∫xy dm`` SolidWorks and CATIA print), with their tables' titles."""
+
+MAX_TABLE_PARTS = 200
+"""Most parts a table lists (then a row saying how many more): 10,000 rows took rich 25 s to lay
+out, and a person reads the CSV or JSON of a body that large, which list every part."""
+
+
+def with_product_sign(inertia: Any, sign: str) -> np.ndarray:
+    """The inertia matrix with its off-diagonal entries in convention ``sign`` (see
+    :data:`PRODUCT_SIGN_TITLES`); the moments on the diagonal never change."""
+    matrix = np.array(inertia, dtype=float)
+    if sign not in PRODUCT_SIGN_TITLES:
+        raise ValueError(f"unknown products sign {sign!r} (expected one of {tuple(PRODUCT_SIGN_TITLES)})")
+    if sign == "cad":
+        off_diagonal = ~np.eye(3, dtype=bool)
+        matrix[off_diagonal] = 0.0 - matrix[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
+    return matrix
+
+
+def without_noise(values: Any, scale: float = 0.0) -> np.ndarray:
+    """``values`` with every entry below :data:`NOISE_RELATIVE` of their largest magnitude, or
+    of ``scale`` (a position: the body's size), set to 0, for printing."""
+    values = np.array(values, dtype=float)
+    finite = np.abs(values[np.isfinite(values)])
+    peak = max(float(finite.max()) if finite.size else 0.0, scale if math.isfinite(scale) else 0.0)
+    values[np.abs(values) < NOISE_RELATIVE * peak] = 0.0
+    return values
+
+
+def matrix_digits(matrix: Any) -> tuple[float, str]:
+    """A common power-of-ten scale for a matrix, so a table can print ``×10⁻⁶`` once."""
+    peak = float(np.max(np.abs(matrix))) if np.size(matrix) else 0.0
+    if peak == 0.0 or 1e-3 <= peak < 1e4 or not 1e-300 < peak < 1e300:  # 10.0**-324 is 0: print as is
+        return 1.0, ""
+    exponent = int(math.floor(math.log10(peak)))
+    return 10.0**exponent, "×10" + str(exponent).translate(str.maketrans("-0123456789", "⁻⁰¹²³⁴⁵⁶⁷⁸⁹"))
+
+
+def shown(values: Any, scale: float = 0.0, digits: int = 6) -> str:
+    """A vector for a table: ``[x, y, z]`` without rounding noise (see :func:`without_noise`)."""
+    return vector_text(without_noise(values, scale), digits)
+
+
+def body_size(props: MassProperties) -> float:
+    """A body's size for telling a position from rounding noise: its radius of gyration about
+    the centre of mass, √(trace I / 2m), length unit (0 without mass or inertia)."""
+    try:
+        size = math.sqrt(float(np.trace(props.inertia_about_com)) / (2.0 * float(props.mass)))
+    except (ValueError, ZeroDivisionError, OverflowError):
+        return 0.0
+    return size if math.isfinite(size) else 0.0
+
+
+@dataclass(frozen=True, repr=False)
+class About:
+    """What every result about a point starts with: the body's name, units, mass, centre of
+    mass and warnings, and the point (``label``: ``com``, ``origin``, ``pivot`` or ``point``)."""
+
+    body: Any = field(compare=False)
+    label: str
+    point: np.ndarray
+
+    def header(self) -> dict[str, Any]:
+        body = self.body
+        return {
+            "name": body.name,
+            "units": body.units,
+            "mass": body.mass,
+            "center_of_mass": body.center_of_mass,
+            "about": self.point,
+            "about_label": self.label,
+            "warnings": list(body.warnings),
+        }
+
+    def title(self, what: str) -> str:
+        return f"{self.body.name or self.body.path} — {what}"
+
+    def place_rows(self, spread: dict[str, Any] | None = None) -> list[tuple[str, str, str]]:
+        """The mass, the centre of mass and the point (a coordinate below 1e-12 of the body's
+        size printed 0); with ``spread`` (`Body.standard_uncertainty`), the mass and centre of
+        mass ``± u``."""
+        body, labels = self.body, self.body.unit_labels
+        size = body_size(body.mass_properties)
+        mass, com = number(body.mass, 8), shown(body.center_of_mass, size)
+        if spread is not None:
+            mass = plus_minus(body.mass, spread["mass"])
+            com = f"{com} ± {shown(spread['center_of_mass'], 0.0, 2)}"
+        return [
+            ("mass", labels["mass"], mass),
+            ("centre of mass", labels["length"], com),
+            (f"about ({self.label})", labels["length"], shown(self.point, size)),
+        ]
+
+
+def matrix_rows(title: str, values: Any, unit: str) -> Rows:
+    """A 3×3 matrix with a common power-of-ten scale written once in its header."""
+    values = without_noise(values)
+    scale, scale_text = matrix_digits(values)
+    corner = f"[{unit}]" + (f" {scale_text}" if scale_text else "")
+    cells = [(label, *(number(v / scale, 7) for v in row)) for label, row in zip("xyz", values)]
+    return Rows(title, (corner, "x", "y", "z"), cells, kind="matrix")
+
+
+@dataclass(frozen=True, repr=False)
+class Inertia(Result):
+    """The inertia matrix about a point, as ``rbi inertia`` gives it (spec units).
+
+    Attributes:
+        about: the point (`About`).
+        matrix: (3, 3) in the axes ``frame`` names, products with ``products_sign``.
+        frame: ``"body"``, or ``"world (rotated)"`` after ``rotations`` (``"y:30"``, in order).
+        products_sign: ``"tensor"`` (``I_xy = −∫xy dm``) or ``"cad"`` (``+∫xy dm``).
+        axis, moment_about_axis: a unit direction and the moment about the line along it
+            through the point (None when no axis was asked for).
+    """
+
+    about: About
+    matrix: np.ndarray
+    frame: str = "body"
+    rotations: tuple[str, ...] = ()
+    products_sign: str = "tensor"
+    axis: np.ndarray | None = None
+    moment_about_axis: float | None = None
+    uncertainty: dict[str, Any] | None = None
+    """For a spec that writes numbers with ±: the standard uncertainty of ``mass``,
+    ``center_of_mass`` and ``inertia`` (as `Body.standard_uncertainty` gives them); else None."""
+
+    def to_dict(self) -> dict[str, Any]:
+        out = self.about.header() | {
+            "frame": self.frame,
+            "rotations": list(self.rotations),
+            "products_sign": self.products_sign,
+            "inertia": self.matrix,
+        }
+        if self.axis is not None:
+            out |= {"axis": self.axis, "moment_about_axis": self.moment_about_axis}
+        if self.uncertainty is not None:
+            out["uncertainty"] = self.uncertainty
+        return out
+
+    def rows(self) -> list[Rows]:
+        about, labels = self.about, self.about.body.unit_labels
+        places = about.place_rows(self.uncertainty)
+        if self.axis is not None:
+            places += [
+                ("axis (unit)", "", shown(self.axis)),
+                ("moment about axis", labels["inertia"], number(self.moment_about_axis, 8)),
+            ]
+        frame = "world axes after " + ", then ".join(self.rotations) if self.rotations else "body axes"
+        title = f"Inertia about {about.label}, {frame}; {PRODUCT_SIGN_TITLES[self.products_sign]}"
+        tables = [
+            Rows.quantities(about.title("inertia"), places),
+            matrix_rows(title, self.matrix, labels["inertia"]),
+        ]
+        if self.uncertainty is not None:
+            tables.append(
+                matrix_rows("± its standard uncertainty", self.uncertainty["inertia"], labels["inertia"])
+            )
+        return tables
+
+
+@dataclass(frozen=True, repr=False)
+class Principal(Result):
+    """Principal moments and axes about a point.
+
+    Attributes:
+        moments: (3,) ascending, mass·length² (spec units).
+        axes: (3, 3) unit vectors in the body frame, one per **row** (``axes[i]`` belongs to
+            ``moments[i]``), right-handed — as ``rbi principal`` prints them.
+        radii_of_gyration: (3,) ``sqrt(moment / mass)``, length unit.
+        about: (3,) the reference point, body frame, length unit.
+    """
+
+    moments: np.ndarray
+    axes: np.ndarray
+    radii_of_gyration: np.ndarray
+    about: np.ndarray
+    place: About | None = field(default=None, compare=False)
+    """The body and the point's name (None for principal axes made by hand)."""
+    uncertainty: dict[str, Any] | None = field(default=None, compare=False)
+    """For a spec that writes numbers with ±: the standard uncertainty of ``mass``,
+    ``center_of_mass``, ``moments`` and ``axes_deg`` (each axis's, degrees; None for an axis
+    not determined); else None."""
+
+    def __repr__(self) -> str:
+        return f"Principal(moments={self.moments!r}, axes={self.axes!r}, about={self.about!r})"
+
+    def to_dict(self) -> dict[str, Any]:
+        values: dict[str, Any] = {"moments": self.moments, "axes": self.axes}
+        values["radii_of_gyration"] = self.radii_of_gyration
+        out = (self.place.header() if self.place else {"about": self.about}) | values
+        if self.uncertainty is not None:
+            out["uncertainty"] = self.uncertainty
+            out["warnings"] = out.get("warnings", []) + [
+                f"principal axis {i + 1} is not determined: its moment is within 3 standard uncertainties of another's"
+                for i, deg in enumerate(self.uncertainty["axes_deg"])
+                if deg is None
+            ]
+        return out
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        # radii numbered like the moments they belong to (radii_of_gyration_1 ...), not _x, _y, _z
+        row = {k: v for k, v in self.to_dict().items() if k != "radii_of_gyration"}
+        return [row | {f"radii_of_gyration_{i}": k for i, k in enumerate(self.radii_of_gyration, start=1)}]
+
+    def rows(self) -> list[Rows]:
+        label = self.place.label if self.place else "point"
+        labels = self.place.body.unit_labels if self.place else {"inertia": "", "length": ""}
+        scale, scale_text = matrix_digits(self.moments)
+        moment = f"moment [{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
+        spread = self.uncertainty
+        columns: tuple[str, ...] = ("#", moment, "axis x", "axis y", "axis z")
+        columns += (f"radius of gyration [{labels['length']}]", *(() if spread is None else ("axis ±°",)))
+        cells = [
+            (
+                f"I{i}",
+                number(m / scale, 7)
+                if spread is None
+                else plus_minus(m / scale, spread["moments"][i - 1] / scale),
+                *(number(v, 7) for v in a),
+                number(k, 7),
+                *(() if spread is None else (number(spread["axes_deg"][i - 1], 2),)),
+            )
+            for i, (m, a, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration), start=1)
+        ]
+        axes = Rows(f"Principal axes about {label} (body frame)", columns, cells)
+        if self.place is None:
+            return [axes]
+        return [Rows.quantities(self.place.title("principal"), self.place.place_rows(spread)), axes]
+
+
+@dataclass(frozen=True, repr=False)
+class Momentum(Result):
+    """Angular momentum and kinetic energy of the body at one instant (spec units, body axes).
+
+    Attributes:
+        omega: (3,) angular velocity, rad/s.
+        about: (3,) the reference point.
+        com_velocity: (3,) velocity of the centre of mass, length/s.
+        angular_momentum: (3,) about ``about``, mass·length²/s.
+        angle_deg: angle between the angular momentum and ω, degrees (None when either is zero).
+        kinetic_energy: mass·length²/s².
+    """
+
+    omega: np.ndarray
+    about: np.ndarray
+    com_velocity: np.ndarray
+    angular_momentum: np.ndarray
+    angle_deg: float | None
+    kinetic_energy: float
+    place: About | None = field(default=None, compare=False)
+    """The body and the point's name."""
+
+    def __repr__(self) -> str:
+        return (
+            f"Momentum(omega={self.omega!r}, angular_momentum={self.angular_momentum!r}, "
+            f"kinetic_energy={self.kinetic_energy!r})"
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        head = self.place.header() if self.place else {"about": self.about}
+        return head | {
+            "omega": self.omega,
+            "com_velocity": self.com_velocity,
+            "angular_momentum": self.angular_momentum,
+            "angle_deg": self.angle_deg,
+            "kinetic_energy": self.kinetic_energy,
+        }
+
+    def rows(self) -> list[Rows]:
+        place = self.place
+        labels = place.body.unit_labels if place else {"velocity": "", "angular_momentum": "", "energy": ""}
+        cells = [
+            *(place.place_rows() if place else []),
+            ("ω (body axes)", "rad/s", shown(self.omega)),
+            ("v of centre of mass", labels["velocity"], shown(self.com_velocity)),
+            ("angular momentum h", labels["angular_momentum"], shown(self.angular_momentum)),
+            ("angle between h and ω", "deg", number(self.angle_deg, 6)),
+            ("kinetic energy", labels["energy"], number(self.kinetic_energy, 8)),
+        ]
+        title = place.title(f"momentum about {place.label}") if place else "momentum"
+        return [Rows.quantities(title, cells)]
+
+
+@dataclass(frozen=True, repr=False)
+class Dynamics(Result):
+    """Newton–Euler at one instant, about a point (spec units, body axes), as `Body.dynamics`
+    gives it.
+
+    Attributes:
+        mode: ``"inverse"`` (loads from the motion) or ``"forward"`` (motion from the loads).
+        about: (3,) the reference point o, length unit.
+        omega: (3,) angular velocity, rad/s.
+        alpha: (3,) angular acceleration, rad/s².
+        point_acceleration: (3,) acceleration of o, length/s².
+        force: (3,) the force on the body, mass·length/s² (``held``: the force holding o).
+        torque: (3,) the torque about o, mass·length²/s².
+        held: o was held (a pivot): forward dynamics without a force about a point other than
+            the centre of mass.
+    """
+
+    mode: str
+    about: np.ndarray
+    omega: np.ndarray
+    alpha: np.ndarray
+    point_acceleration: np.ndarray
+    force: np.ndarray
+    torque: np.ndarray
+    held: bool
+    place: About | None = field(default=None, compare=False)
+    """The body and the point's name."""
+
+    def __repr__(self) -> str:
+        return f"Dynamics(mode={self.mode!r}, alpha={self.alpha!r}, force={self.force!r}, torque={self.torque!r})"
+
+    def to_dict(self) -> dict[str, Any]:
+        body = self.place.body if self.place else None
+        return {
+            "name": body.name if body else None,
+            "units": body.units if body else {},
+            "warnings": list(body.warnings) if body else [],
+            "mode": self.mode,
+            "mass": body.mass if body else None,
+            "center_of_mass": body.center_of_mass if body else None,
+            "about": self.about,
+            "about_label": self.place.label if self.place else "point",
+            "omega": self.omega,
+            "alpha": self.alpha,
+            "point_acceleration": self.point_acceleration,
+            "force": self.force,
+            "torque": self.torque,
+        }
+
+    def rows(self) -> list[Rows]:
+        body = self.place.body if self.place else None
+        labels = body.unit_labels if body else {"mass": "", "length": ""}
+        label = self.place.label if self.place else "point"
+        given, found = ("given", "result") if self.mode == "inverse" else ("result", "given")
+        force_note = "needed to hold the point" if self.held else found
+        cells = [
+            ("mass", labels["mass"], number(body.mass if body else None, 8)),
+            (f"about ({label})", labels["length"], shown(self.about)),
+            ("ω", "rad/s", shown(self.omega)),
+            (f"α ({given})", "rad/s²", shown(self.alpha)),
+            (
+                f"a of {label} ({'given' if self.held else given})",
+                f"{labels['length']}/s²",
+                shown(self.point_acceleration),
+            ),
+            (f"force ({force_note})", _load_unit(body, 1), shown(self.force)),
+            (f"torque about {label} ({found})", _load_unit(body, 2), shown(self.torque)),
+        ]
+        name = (body.name or body.path) if body else "dynamics"
+        return [Rows.quantities(f"{name} — Newton–Euler about {label} ({self.mode})", cells)]
+
+
+def _load_unit(body: Any, length_power: int) -> str:
+    """Unit of a force (``length_power`` 1) or torque (2) in the body's units: N and N·m in SI,
+    otherwise the body's unit with its value in N or N·m."""
+    si = "N" if length_power == 1 else "N·m"
+    if body is None:
+        return si
+    units = body.units
+    length = units["length"] if length_power == 1 else f"{units['length']}²"
+    factor = MASS_UNITS_IN_KG[units["mass"]] * LENGTH_UNITS_IN_M[units["length"]] ** length_power
+    if factor == 1.0:
+        return si
+    return f"{units['mass']}·{length}/s² (= {factor:g} {si})"
+
+
+@dataclass(frozen=True)
+class Part:
+    """One part of a body, in file order (spec units, body frame).
+
+    Attributes:
+        name: the part's ``name`` (``parts[i]`` when it has none).
+        shape: the part's shape (``cylinder``, ``mesh`` ... or ``point_cloud``).
+        hole: True for a part removed from the body (``subtract: true``).
+        mass: the part's mass (negative for a hole).
+        center_of_mass: (3,) the part's centre of mass.
+        inertia_about_com: (3, 3) the part's inertia about its own centre of mass, body axes.
+        volume: the solid's volume (length³; negative for a hole, as its mass, so the parts'
+            volumes add up to the body's), or None when it has none (points, custom parts).
+        principal_moments: (3,) ascending, about the part's own centre of mass (negative for a
+            hole), mass·length².
+        inertia_share: the part's share of the trace of the body's inertia about the body's
+            centre of mass (the shares add up to 1; a hole's is negative).
+        integration_error: for a STEP part, the relative error estimate of its exact-geometry
+            integration; else None.
+    """
+
+    name: str
+    shape: str
+    hole: bool
+    mass: float
+    center_of_mass: np.ndarray
+    inertia_about_com: np.ndarray
+    volume: float | None
+    principal_moments: np.ndarray
+    inertia_share: float
+    integration_error: float | None = None
+
+
+class Parts(Result, Sequence[Part]):
+    """A body's parts in file order, as ``rbi parts`` lists them: a sequence of `Part` (``len``,
+    ``[i]``, iteration), with the body's totals: ``volume`` (the solids' volume, holes taken
+    away; None when no part has one), ``mean_density`` (mass / volume; None unless every part
+    has a volume) and ``principal_moments`` (the body's, about its centre of mass)."""
+
+    def __init__(self, body: Any, parts: list[Part]) -> None:
+        self._body = body
+        self._parts = parts
+        volumes = [part.volume for part in parts]
+        volume = sum(v for v in volumes if v is not None)  # a hole's is negative
+        self.volume: float | None = volume if any(v is not None for v in volumes) else None
+        every = all(v is not None for v in volumes)
+        self.mean_density: float | None = body.mass / volume if every and volume > 0 else None
+        self.principal_moments: np.ndarray = body.principal().moments
+
+    @overload
+    def __getitem__(self, index: int) -> Part: ...
+    @overload
+    def __getitem__(self, index: slice) -> list[Part]: ...
+    def __getitem__(self, index: int | slice) -> Part | list[Part]:
+        return self._parts[index]
+
+    def __len__(self) -> int:
+        return len(self._parts)
+
+    def __iter__(self) -> Iterator[Part]:
+        return iter(self._parts)
+
+    def __eq__(self, other: object) -> bool:
+        return list(self) == list(other) if isinstance(other, (Parts, list)) else NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"<rbi.Parts {len(self)} parts of {self._body.name or self._body.path!r}>"
+
+    def part_rows(self) -> list[dict[str, Any]]:
+        """One dict a part, as ``rbi parts --format json`` lists them in ``parts``."""
+        body = self._body
+        units = body.units
+        to_si = MASS_UNITS_IN_KG[units["mass"]] / LENGTH_UNITS_IN_M[units["length"]] ** 3
+        rows = []
+        for part in self._parts:
+            density = abs(part.mass / part.volume) if part.volume else None
+            rows.append(
+                {
+                    "name": part.name,
+                    "shape": part.shape,
+                    "hole": part.hole,
+                    "mass": part.mass,
+                    "mass_share": part.mass / body.mass,
+                    "center_of_mass": part.center_of_mass,
+                    "inertia_about_com": part.inertia_about_com,
+                    "principal_moments": part.principal_moments,
+                    "inertia_share": part.inertia_share,
+                    "volume": part.volume,  # negative for a hole, as the mass: the parts add up
+                    "implied_density": density,
+                    "implied_density_si": None if density is None else density * to_si,
+                }
+            )
+        if any(part.shape == "step" for part in self._parts):  # the error estimate of each STEP part
+            for row, part in zip(rows, self._parts):
+                row["integration_error"] = part.integration_error
+        return rows
+
+    def to_dict(self) -> dict[str, Any]:
+        body = self._body
+        return {
+            "name": body.name,
+            "units": body.units,
+            "warnings": list(body.warnings),
+            "mass": body.mass,
+            "center_of_mass": body.center_of_mass,
+            "volume": self.volume,
+            "mean_density": self.mean_density,
+            "principal_moments": self.principal_moments,
+            "parts": self.part_rows(),
+        }
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        return self.part_rows()
+
+    def csv_summary(self) -> dict[str, Any]:
+        return {k: v for k, v in self.to_dict().items() if k != "warnings"} | {"parts": len(self)}
+
+    def rows(self) -> list[Rows]:
+        """Three tables, each narrow enough for 80 columns: mass and volume; centre of mass and
+        share of the inertia; principal moments. Each ends with the whole body's row."""
+        body, rows = self._body, self.part_rows()
+        labels, units, name = body.unit_labels, body.units, body.name or body.path
+        names = [row["name"] for row in rows]
+        l_unit, m_unit = units["length"], units["mass"]
+        masses = _part_table(
+            f"{name}: parts — mass and volume",
+            names,
+            (
+                "shape",
+                f"mass\n[{labels['mass']}]",
+                "mass\nshare [%]",
+                f"volume\n[{l_unit}³]",
+                f"density\n[{m_unit}/{l_unit}³]",
+            ),
+            [
+                (
+                    row["shape"] + (" (hole)" if row["hole"] else ""),
+                    number(row["mass"]),
+                    number(100 * row["mass_share"], 4),
+                    "—" if row["volume"] is None else number(row["volume"]),
+                    number(row["implied_density"], 4),
+                )
+                for row in rows
+            ],
+            ("", number(body.mass), number(100.0, 4), number(self.volume), number(self.mean_density, 4)),
+            left=2,
+        )
+        size, length = body_size(body.mass_properties), labels["length"]
+        places = _part_table(
+            f"{name}: parts — centre of mass",
+            names,
+            (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
+            [
+                (
+                    *(number(c) for c in without_noise(row["center_of_mass"], size)),
+                    number(100 * row["inertia_share"], 4),
+                )
+                for row in rows
+            ],
+            (*(number(c) for c in without_noise(body.center_of_mass, size)), number(100.0, 4)),
+        )
+        scale, scale_text = matrix_digits(
+            [self.principal_moments, *(row["principal_moments"] for row in rows)]
+        )
+        unit = f"[{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
+        moments = _part_table(
+            f"{name}: parts — principal moments (own CoM)",
+            names,
+            (f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
+            [tuple(number(m / scale, 5) for m in row["principal_moments"]) for row in rows],
+            tuple(number(m / scale, 5) for m in self.principal_moments),
+        )
+        return [masses, places, moments]
+
+
+def _part_table(
+    title: str, names: list[str], headers: tuple[str, ...], cells: list, total: tuple, left: int = 1
+) -> Rows:
+    """A parts table: at most :data:`MAX_TABLE_PARTS` parts (then how many more), the body's
+    total after a rule."""
+    rows = [(name, *row) for name, row in zip(names[:MAX_TABLE_PARTS], cells)]
+    if len(names) > MAX_TABLE_PARTS:  # CSV and JSON list them all
+        rows.append((f"… {len(names) - MAX_TABLE_PARTS} more parts", *("",) * len(headers)))
+    return Rows(title, ("part", *headers), rows, total=("total", *total), left=left, kind="parts")
+
+
+_MATRIX_ENTRIES = (("xx", 0, 0), ("yy", 1, 1), ("zz", 2, 2), ("xy", 0, 1), ("xz", 0, 2), ("yz", 1, 2))
+
+
+def _check_dict(check: Check) -> dict[str, Any]:
+    out = {
+        "quantity": check.quantity,
+        "unit": check.unit,
+        "expected": check.expected,
+        "actual": check.actual,
+        "deviation": check.deviation,
+        "tol": check.tol,
+        "allowed": check.allowed,
+        "pass": check.passed,
+    }
+    return out if check.about is None else out | {"about": check.about}
+
+
+def _components(check: Check) -> list[tuple[str, Any, Any, Any]]:
+    """(label, expected, actual, deviation) for each number a check compares; a matrix gives
+    its six distinct entries."""
+    want, got, deviation = check.expected, check.actual, check.component_deviation
+    about = f" @{check.about}" if check.about not in (None, "com") else ""
+    if check.quantity == "mass":
+        return [("mass", float(want), float(got), float(deviation))]
+    if check.quantity == "inertia":
+        return [(f"I{name}{about}", want[i, j], got[i, j], deviation[i, j]) for name, i, j in _MATRIX_ENTRIES]
+    names = ("I1", "I2", "I3") if check.quantity == "moments" else ("com x", "com y", "com z")
+    return [(f"{name}{about}", w, g, d) for name, w, g, d in zip(names, want, got, deviation)]
+
+
+class Checks(Result, Sequence[Check]):
+    """The expectations of a spec's ``expect:`` block against the body, as ``rbi check``
+    compares them: a sequence of `Check`, with ``passed`` and ``failed`` counts and ``ok``."""
+
+    def __init__(self, body: Any, checks: list[Check]) -> None:
+        self._body = body
+        self._checks = checks
+        self.failed: int = sum(not c.passed for c in checks)
+        self.passed: int = len(checks) - self.failed
+        self.ok: bool = self.failed == 0
+
+    @overload
+    def __getitem__(self, index: int) -> Check: ...
+    @overload
+    def __getitem__(self, index: slice) -> list[Check]: ...
+    def __getitem__(self, index: int | slice) -> Check | list[Check]:
+        return self._checks[index]
+
+    def __len__(self) -> int:
+        return len(self._checks)
+
+    def __iter__(self) -> Iterator[Check]:
+        return iter(self._checks)
+
+    def __eq__(self, other: object) -> bool:
+        return list(self) == list(other) if isinstance(other, (Checks, list)) else NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]
+
+    def __repr__(self) -> str:
+        return f"<rbi.Checks {self.passed} passed, {self.failed} failed>"
+
+    def to_dict(self) -> dict[str, Any]:
+        body = self._body
+        return {
+            "name": body.name,
+            "units": body.units,
+            "warnings": list(body.warnings),
+            "ok": self.ok,
+            "passed": self.passed,
+            "failed": self.failed,
+            "checks": [_check_dict(c) for c in self._checks],
+        }
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        return [
+            {
+                "quantity": c.quantity,
+                "component": label.split(" @")[0],
+                "about": c.about or "",
+                "unit": c.unit,
+                "expected": want,
+                "actual": got,
+                "deviation": deviation,
+                "allowed": c.allowed,
+                "tol": str(c.tol),
+                "pass": bool(deviation <= c.allowed),
+            }
+            for c in self._checks
+            for label, want, got, deviation in _components(c)
+        ]
+
+    def csv_summary(self) -> dict[str, Any]:
+        return {k: v for k, v in self.to_dict().items() if k in ("name", "units", "ok", "passed", "failed")}
+
+    def rows(self) -> list[Rows]:
+        body, n = self._body, len(self)
+        verdict = "all expectations hold" if not self.failed else f"{self.failed} of {n} expectations FAIL"
+        cells = [
+            (
+                label,
+                c.unit,
+                number(want, 6),
+                number(got, 6),
+                number(deviation, 3),
+                number(c.allowed, 3),
+                "ok" if deviation <= c.allowed else "FAIL",
+            )
+            for c in self._checks
+            for label, want, got, deviation in _components(c)
+        ]
+        columns = ("quantity", "unit", "expected", "actual", "deviation", "allowed", "")
+        return [Rows(f"{body.name or body.path} — check: {verdict}", columns, cells, left=2, kind="check")]
+
+
+@dataclass(frozen=True, repr=False)
+class Export(Result):
+    """A body's ``<inertial>`` element for a robot description, as ``rbi export`` prints it:
+    ``xml``, ``to`` (``urdf``, ``mjcf``, ``sdf``), ``warnings``, and the SI mass properties
+    it holds (``mass_properties``: kg, m, kg·m²; ``name`` and ``units`` of the body in SI)."""
+
+    name: str | None
+    to: str
+    units: dict[str, str]
+    warnings: list[str]
+    mass_properties: MassProperties
+    xml: str
+
+    def __repr__(self) -> str:
+        return f"<rbi.Export {self.to} of {self.name!r}>"
+
+    def __str__(self) -> str:
+        return self.xml
+
+    def to_dict(self) -> dict[str, Any]:
+        props = self.mass_properties
+        return {
+            "name": self.name,
+            "to": self.to,
+            "units": self.units,
+            "warnings": self.warnings,
+            "mass": props.mass,
+            "center_of_mass": props.center_of_mass,
+            "inertia": props.inertia_about_com,
+            "xml": self.xml,
+        }
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        return [{k: v for k, v in self.to_dict().items() if k != "xml"}]
+
+    def rows(self) -> list[Rows]:
+        props = self.mass_properties
+        cells = [
+            ("mass", "kg", number(props.mass, 8)),
+            ("centre of mass", "m", shown(props.center_of_mass)),
+            *(
+                (f"inertia about CoM, row {i + 1}", "kg·m²", shown(r))
+                for i, r in enumerate(props.inertia_about_com)
+            ),
+        ]
+        return [Rows.quantities(f"{self.name or 'body'} — export to {self.to}", cells)]
