@@ -207,6 +207,8 @@ def spec_line(**fields) -> str:
         ),
         ({"holes": [[[0, 0], [0.5, 0.1], [0.5, 0.5]]]}, ["holes[0]", "touches the outline"]),
         ({"outline": [[0, 0], [1, 0], [2, 0]]}, ["outline"]),
+        ({"outline": [[0, 0], [1e200, 0], [0, 1e200]]}, ["outline", "numbers too large"]),
+        ({"outline": [[0, 0], [1e-200, 0], [0, 1e-200]]}, ["outline", "encloses no area"]),
         ({"outline": [[0, 0], [1, 0], [1, 0], [0, 1]]}, ["outline", "repeated"]),
         ({"outline": [[0, 0], [1, 0]]}, ["outline", "at least 3 vertices"]),
         ({"outline": [[0, 0], [1, 0], [1, 1, 1]]}, ["outline[2]", "[x, y]"]),

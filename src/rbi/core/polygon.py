@@ -108,8 +108,15 @@ def polygon_problem(outline: ArrayLike, holes: Sequence[ArrayLike] = ()) -> str 
             other = "the outline" if ring[e] == 0 else _ring_name(int(ring[e]))
             return f"{_ring_name(int(ring[f]))}: crosses or touches {other}"
     for k, r in enumerate(rings):
-        if ring_moments(r, r[0])[0] <= 1e-12 * float(np.ptp(r, axis=0).max()) ** 2:
-            return f"{_ring_name(k)}: encloses no area (its vertices are on one line)"
+        area, size = ring_moments(r, r[0])[0], np.ptp(r, axis=0).max()
+        if not np.isfinite(area * size):
+            return (
+                f"{_ring_name(k)}: numbers too large: its area overflows (beyond {np.finfo(float).max:.3g})"
+            )
+        if area <= 1e-12 * size * size:
+            return (
+                f"{_ring_name(k)}: encloses no area (its vertices are on one line, or too close for a double)"
+            )
     for k, r in enumerate(rings[1:], 1):
         if not inside(r[0], rings[0]):
             return f"{_ring_name(k)}: lies outside the outline"

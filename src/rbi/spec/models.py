@@ -568,7 +568,8 @@ class PrismPart(_Solid):
 
     @model_validator(mode="after")
     def _simple(self):
-        problem = polygon_problem(self.outline, self.holes)
+        with np.errstate(over="ignore", invalid="ignore"):  # huge numbers: refused once translated
+            problem = polygon_problem(self.outline, self.holes)
         if problem is not None:
             raise ValueError(problem)
         return self
