@@ -51,6 +51,8 @@ CLI_TOOLS = (
     "collector_paused",
     "number",
     "plus_minus",
+    # rbi simulate --draws: the motion's spread from the inputs written with ±
+    "input_uncertainty",
     "csv_lines",
     # what the commands print besides numbers (rbi dynamics, parts, --rotate)
     "LENGTH_UNITS",

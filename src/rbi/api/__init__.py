@@ -44,6 +44,7 @@ from rbi.api.robots import RobotImport as RobotImport
 from rbi.api.robots import audit as audit
 from rbi.api.robots import import_robot as import_robot
 from rbi.api.runs import Trajectory as Trajectory
+from rbi.api.runs import input_uncertainty as input_uncertainty
 from rbi.api.runs import simulate as simulate
 from rbi.api.sweeps import SweepTable as SweepTable
 from rbi.api.sweeps import sweep as sweep

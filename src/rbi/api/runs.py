@@ -172,6 +172,22 @@ def simulate(
     return _trajectory(prepared.simulate(samples, error_estimate=error_estimate, progress=progress), body)
 
 
+def input_uncertainty(
+    body: Body, *, draws: int, seed: int | None = None, samples: int = 481, **run: Any
+) -> dict[str, Any]:
+    """The spread of `simulate`'s summary that the inputs written with ± give: the standard
+    deviation of the tilt range, final tilt, mean precession rate and final ω over ``draws``
+    runs with the inputs drawn (``seed``: the same draws again), all in one call of the batched
+    kernel; ``run``: `simulate`'s settings (``spin``, ``tilt_deg``, ``duration`` ...). What
+    ``rbi simulate --draws`` adds to its JSON as ``"input_uncertainty"``."""
+    # not at top level: `rbi inertia` would load rbi.runs.run too
+    from rbi.runs.draws import input_uncertainty as spread
+    from rbi.runs.run import prepare_run
+    from rbi.sim.api import check_samples
+
+    return spread(prepare_run(loaded_body(body, "body"), **run), check_samples(samples), draws, seed)
+
+
 def _trajectory(run: Any, body: Body) -> Trajectory:
     """The `Trajectory` of a finished run (:class:`rbi.runs.run.SimulationRun`) of ``body``."""
     columns = run.columns

@@ -47,6 +47,16 @@ OutOption = Annotated[
         help="Write the trajectory as CSV (only if the run succeeds; '-' for standard output).",
     ),
 ]
+DrawsOption = Annotated[
+    int | None,
+    typer.Option(
+        "--draws",
+        metavar="N",
+        help="For a spec with ±: N more runs with the inputs drawn, the summary's spread from them.",
+        show_default=False,
+    ),
+]
+SeedOption = Annotated[int | None, typer.Option("--seed", metavar="S", help="Seed of the --draws.")]
 MethodOption = Annotated[str, typer.Option("--method", "-m", metavar="NAME", help=METHOD_HELP)]
 ErrorEstimateOption = Annotated[
     bool,
@@ -85,6 +95,8 @@ def simulate(
     yes: YesOption = False,
     plot: PlotOption = None,
     spin_axis: SpinAxisOption = None,
+    draws: DrawsOption = None,
+    seed: SeedOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body.
@@ -110,6 +122,7 @@ def simulate(
         format = OutputFormat.csv  # the trajectory is what goes to standard output
     settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
     settings |= dict(duration=duration, method=method, rtol=rtol, max_steps=max_steps)
+    settings |= dict(draws=draws, seed=seed)
     body, run = _run(file, settings, samples, error_estimate, format, (out_target, plot_target))
     trajectory_csv = run.to_csv() if out is not None or format == OutputFormat.csv else ""
     result = dict(run.summary)
@@ -146,14 +159,21 @@ def _run(file: str, settings: dict, samples: int, error_estimate: bool, format: 
     Before simulating, the output ``targets`` are checked again, against every file the body
     was read from (a point cloud, a mesh): rbi never overwrites its input."""
 
+    settings = dict(settings)
+    draws, seed = settings.pop("draws"), settings.pop("seed")
     body = api.load(file)
     for target in targets:
         if target is not None and not target.is_stdout:
             output_target(target.given, target.option, (target.format,), inputs=body.files_read)
     with progress_bar("simulating", stdout=True, delay=0.5, show=format == OutputFormat.table) as progress:
-        return body, api.simulate(
+        run = api.simulate(
             body, samples=samples, error_estimate=error_estimate, progress=progress, **settings
         )
+    if draws is not None:  # beside the error estimate
+        run.summary["input_uncertainty"] = api.input_uncertainty(
+            body, draws=draws, seed=seed, samples=samples, **settings
+        )
+    return body, run
 
 
 def _plot(target, body, run, settings: dict) -> None:
@@ -162,6 +182,7 @@ def _plot(target, body, run, settings: dict) -> None:
     shown = run
     if settings["method"] in ("default", "exact") and run.t.size < PLOT_SAMPLES and settings["duration"] > 0:
         # the same run sampled more densely (dense output: the steps do not change)
+        settings = {k: v for k, v in settings.items() if k not in ("draws", "seed")}
         shown = api.simulate(body, samples=PLOT_SAMPLES, error_estimate=False, **settings)
     shown.plot(target)
 
@@ -240,6 +261,15 @@ def _accuracy_rows(body, result: dict) -> list[tuple[str, str, str]]:
     elif estimate:
         accuracy.append(("error estimate: orientation", "deg", number(estimate["orientation_deg"], 2)))
         accuracy.append(("error estimate: ω", "rad/s", number(estimate["omega_rad_s"], 2)))
+    spread = result.get("input_uncertainty")
+    if spread:
+        accuracy += [
+            ("inputs drawn (--draws)", "", f"{spread['draws']} ({spread['failed']} failed)"),
+            ("± inputs: tilt max", "deg", number(spread["tilt_max_deg"], 2)),
+            ("± inputs: final tilt", "deg", number(spread["final_tilt_deg"], 2)),
+            ("± inputs: precession rate", "deg/s", number(spread["mean_precession_rate_deg_s"], 2)),
+            ("± inputs: final ω", "rad/s", vector_text(spread["final_omega"], 2)),
+        ]
     accuracy += [
         ("steps (rejected)", "", f"{result['steps']} ({result['rejected_steps']})"),
         ("right-hand-side evaluations", "", str(result["rhs_evals"])),

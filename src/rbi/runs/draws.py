@@ -1,0 +1,73 @@
+"""The motion's uncertainty from the uncertainty of a spec's inputs (``rbi simulate --draws``):
+the numbers written with ± drawn N times (JCGM 101), the N bodies built as one stack
+(:mod:`rbi.core.uncertainty`), and the N runs integrated in one call of the batched compiled
+kernel that sweeps use, each summarised as a sweep row."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from rbi.core.mass import MassProperties
+from rbi.core.uncertainty import body_stack
+from rbi.errors import ArgumentError, literal
+from rbi.sim.api import DEFAULT_RTOL, sample_times
+from rbi.sim.compiled import STATUS_DONE, integrator
+from rbi.sim.scene import scene_from_properties
+from rbi.sim.summary import sweep_figures_batch
+from rbi.spec.uncertain import drawn_parts
+
+FIGURES = {
+    "tilt_min_deg": "min_tilt_deg",
+    "tilt_max_deg": "max_tilt_deg",
+    "final_tilt_deg": "final_tilt_deg",
+    "mean_precession_rate_deg_s": "precession_rate_deg_s",
+}
+"""The summary's names of the figures (as ``rbi simulate`` reports them) and a sweep row's."""
+
+
+def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None) -> dict[str, Any]:
+    """The standard deviation over ``draws`` runs of the summary's tilt range, final tilt, mean
+    precession rate and final ω, every input written with ± drawn (``seed``: reproducible), the
+    runs set up as ``prepared`` (a :class:`~rbi.runs.run.PreparedRun`: same start, spin axis,
+    duration and tolerance). Runs the kernel could not finish are counted in ``failed``."""
+    if isinstance(draws, bool) or not isinstance(draws, int) or not 2 <= draws <= 100_000:
+        raise ArgumentError("draws", f"must be a whole number from 2 to 100,000 (got {literal(draws)})")
+    body, scene = prepared.body, prepared.scene
+    _, masses, coms, inertias = drawn_parts(body, draws, np.random.default_rng(seed))
+    mass, com, inertia = body_stack(masses, coms, inertias, body.props.center_of_mass)
+    scenes = [
+        scene_from_properties(
+            MassProperties(mass[k], com[k], inertia[k]), body.pivot, scene.gravity, scene.spin_axis
+        )
+        for k in range(draws)
+    ]
+    t = sample_times(prepared.duration, samples)
+    out = np.empty((draws, t.size, 7))
+    counts = np.zeros((draws, 4), dtype=np.int64)
+    status = np.full(draws, -1, dtype=np.int64)
+    integrator().integrate_batch(
+        np.repeat(np.concatenate((prepared.q0, prepared.omega0))[None, :], draws, axis=0),
+        t,
+        np.array([s.inertia for s in scenes]),
+        np.array([s.inertia_inv for s in scenes]),
+        np.array([s.gravity_moment for s in scenes]),
+        np.array([max(s.natural_rate, 0.0) for s in scenes]),
+        float(DEFAULT_RTOL if prepared.rtol is None else prepared.rtol),
+        int(prepared.budget),
+        out,
+        counts,
+        status,
+        0,
+    )
+    done = [k for k in range(draws) if status[k] == STATUS_DONE and np.all(np.isfinite(out[k]))]
+    rows = [sweep_figures_batch(scenes[k], t, out[k : k + 1, :, :4], out[k : k + 1, :, 4:])[0] for k in done]
+    spread: dict[str, Any] = {name: _sd([row[key] for row in rows]) for name, key in FIGURES.items()}
+    spread["final_omega"] = [_sd(out[done, -1, 4 + i]) for i in range(3)]
+    return {"draws": draws, "seed": seed, "failed": draws - len(done)} | spread
+
+
+def _sd(values: Any) -> float | None:
+    values = np.asarray(values, dtype=float)
+    return float(np.std(values - values[0], ddof=1)) if values.size > 1 else None

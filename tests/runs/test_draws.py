@@ -1,0 +1,71 @@
+"""`rbi simulate --draws` / `rbi.simulate(draws=...)`: the motion's spread from the inputs
+written with ±, against the same draws run one by one through the single-run path."""
+
+from __future__ import annotations
+
+import json
+
+import numpy as np
+import pytest
+
+import rbi
+from rbi.api import input_uncertainty
+from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess
+
+TOLERANCED = BODIES / "top_bolted_toleranced.yaml"
+RUN = dict(spin=200.0, tilt_deg=10.0, duration=0.5, samples=101)
+
+
+def test_spread_equals_the_draws_run_one_by_one():
+    n, seed = 6, 11
+    batch = input_uncertainty(rbi.load(TOLERANCED), draws=n, seed=seed, **RUN)
+    rng = np.random.default_rng(seed)  # the inputs in file order, each drawn n times
+    radius, mass, x, z = (
+        rng.normal(v, u, n).tolist() for v, u in [(0.04, 5e-4), (0.02, 1e-3), (0.04, 5e-4), (0.06, 5e-4)]
+    )
+    figures = []
+    for k in range(n):
+        text = (BODIES / "top_bolted.yaml").read_text()
+        text = text.replace("radius: 0.04", f"radius: {radius[k]!r}").replace(
+            "mass: 0.02", f"mass: {mass[k]!r}"
+        )
+        text = text.replace("position: [0.04, 0, 0.06]", f"position: [{x[k]!r}, 0, {z[k]!r}]")
+        s = rbi.simulate(rbi.loads(text), error_estimate=False, **RUN).summary
+        figures.append(
+            [s["tilt_max_deg"], s["final"]["tilt_deg"], s["mean_precession_rate_deg_s"], *s["final"]["omega"]]
+        )
+    sd = np.std(np.array(figures), axis=0, ddof=1)
+    got = [
+        batch["tilt_max_deg"],
+        batch["final_tilt_deg"],
+        batch["mean_precession_rate_deg_s"],
+        *batch["final_omega"],
+    ]
+    assert got == pytest.approx(sd, rel=1e-6, abs=1e-9)
+    assert batch["draws"] == n and batch["failed"] == 0
+
+
+def test_zero_uncertainty_gives_zero_spread(write_spec):
+    text = (BODIES / "top_bolted.yaml").read_text().replace("mass: 0.02", "mass: 0.02 ± 0")
+    spread = input_uncertainty(rbi.load(write_spec(text)), draws=4, seed=1, **RUN)
+    assert spread["tilt_max_deg"] == 0.0 and spread["final_omega"] == [0.0, 0.0, 0.0]
+
+
+def test_cli_json_beside_the_error_estimate():
+    args = ("simulate", TOLERANCED, "--spin", "200", "--tilt", "10", "--duration", "0.5", "-f", "json")
+    out = json.loads(run_rbi_inprocess(*args, "--draws", "20", "--seed", "3").stdout)
+    keys = list(out)
+    assert keys.index("input_uncertainty") == keys.index("error_estimate") + 1
+    assert set(out["input_uncertainty"]) >= {
+        "tilt_min_deg",
+        "tilt_max_deg",
+        "final_tilt_deg",
+        "mean_precession_rate_deg_s",
+        "final_omega",
+    }
+    assert (
+        out["input_uncertainty"]["mean_precession_rate_deg_s"]
+        > 1e3 * out["error_estimate"]["orientation_deg"]
+    )
+    assert "input_uncertainty" not in json.loads(run_rbi_inprocess(*args).stdout)
+    one_line_exit_2(run_rbi_inprocess(*args, "--draws", "0"), "--draws")
