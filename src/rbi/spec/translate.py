@@ -375,16 +375,16 @@ def body_from_spec(spec: models.BodySpec, path: str):
         expect=spec.expect,
         spec=spec,
         spin_axis=None if spec.spin_axis is None else np.asarray(spec.spin_axis, dtype=float),
-        warnings=unit_warnings(spec, path)
-        + [f"{path}: {note}" for note in mesh_notes(spec)]
-        + [
-            line
-            for part in spec.parts
-            if isinstance(part, models.AssemblyPart)
-            for line in part._loaded.warnings
-        ],
+        warnings=_warnings(spec, path),
         files=files_named(spec, path),
     )
+
+
+def _warnings(spec: models.BodySpec, path: str) -> list[str]:
+    """The spec's unit slips, its mesh notes and every sub-assembly's warnings."""
+    notes = [f"{path}: {note}" for note in mesh_notes(spec)]
+    inner = [w for part in spec.parts if isinstance(part, models.AssemblyPart) for w in part._loaded.warnings]
+    return unit_warnings(spec, path) + notes + inner
 
 
 def files_named(spec: models.BodySpec, path: str) -> tuple[str, ...]:
