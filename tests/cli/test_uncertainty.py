@@ -107,3 +107,33 @@ def test_symmetric_top_axes_are_null_with_a_warning(write_spec):
     out = json.loads(proc.stdout)
     assert out["uncertainty"]["axes_deg"].count(None) == 2
     assert sum("not determined" in w for w in out["warnings"]) == 2
+
+
+def test_momentum_about_the_pivot_against_uncertainties():
+    from uncertainties import ufloat
+
+    r, m_b, x_b = ufloat(0.04, 0.0005), ufloat(0.02, 0.001), ufloat(0.04, 0.0005)
+    izz = 0.3 * 0.4 * r**2 + 0.5 * 0.1 * 0.008**2 + m_b * x_b**2  # about the z axis through the pivot
+    out = json.loads(
+        run_rbi_inprocess(
+            "momentum", TOLERANCED, "--omega", "0,0,200", "--about", "pivot", "-f", "json"
+        ).stdout
+    )
+    spread = out["uncertainty"]
+    assert list(spread) == ["mass", "center_of_mass", "angular_momentum", "kinetic_energy"]
+    assert spread["angular_momentum"][2] == pytest.approx((200 * izz).std_dev, rel=1e-9)
+    assert spread["kinetic_energy"] == pytest.approx((0.5 * 200**2 * izz).std_dev, rel=1e-9)
+
+
+def test_parts_carry_each_parts_own_uncertainty():
+    out = json.loads(run_rbi_inprocess("parts", TOLERANCED, "-f", "json").stdout)
+    cone, stem, bolt = (p["uncertainty"] for p in out["parts"])
+    # the cone's moments 3/80 m (4 r² + h²) and 3/10 m r²: ∂/∂r = 3/10 m r and 3/5 m r
+    assert cone["inertia_about_com"][0][0] == pytest.approx(0.3 * 0.4 * 0.04 * 0.0005, rel=1e-12)
+    assert cone["inertia_about_com"][2][2] == pytest.approx(0.6 * 0.4 * 0.04 * 0.0005, rel=1e-12)
+    assert stem == {"mass": 0.0, "center_of_mass": [0.0] * 3, "inertia_about_com": [[0.0] * 3] * 3}
+    assert bolt["mass"] == 0.001 and bolt["center_of_mass"] == [0.0005, 0.0, 0.0005]
+    assert out["uncertainty"]["mass"] == pytest.approx(0.001)
+    assert "uncertainty" not in json.loads(
+        run_rbi_inprocess("parts", BODIES / "top_bolted.yaml", "-f", "json").stdout
+    )

@@ -387,13 +387,16 @@ class Body(TableRepr):
         # not at top level: `rbi audit` would load rbi.spec.assembly and rbi.spec.volumes too
         from rbi.spec.assembly import expanded
         from rbi.spec.models import StepPart
+        from rbi.spec.uncertain import part_uncertainties
         from rbi.spec.volumes import part_volume
 
         loaded = self._loaded
         rows = expanded(loaded, expand)
         shares = inertia_shares([element for _, _, element, _ in rows], loaded.props)
+        whole = self._uncertain and len(rows) == len(loaded.elements)  # not a sub-assembly's parts
+        spreads = part_uncertainties(loaded) if whole else [None] * len(rows)
         out = []
-        for (name, part, element, length), share in zip(rows, shares):
+        for (name, part, element, length), share, spread in zip(rows, shares, spreads):
             volume = None if part is None else part_volume(part)
             if volume is not None and getattr(part, "subtract", False):
                 volume = -volume  # a hole takes its volume away, as its mass
@@ -409,6 +412,7 @@ class Body(TableRepr):
                     principal_moments=principal_axes(element.inertia_about_com)[0],
                     inertia_share=float(share),
                     integration_error=part._integration_error if isinstance(part, StepPart) else None,
+                    uncertainty=spread,
                 )
             )
         return Parts(self, out)
@@ -445,7 +449,21 @@ class Body(TableRepr):
             angle_deg=angle_between_deg(h, w),
             kinetic_energy=energy,
             place=About(self, _label(about), point),
+            uncertainty=self._uncertain_momentum(point, w, None if velocity is None else v_com),
         )
+
+    def _uncertain_momentum(
+        self, point: np.ndarray, w: np.ndarray, v: np.ndarray | None
+    ) -> dict[str, Any] | None:
+        """`momentum`'s ``uncertainty`` (:func:`rbi.spec.uncertain.momentum_uncertainty`), or
+        None without ±."""
+        from rbi.spec.uncertain import momentum_uncertainty
+
+        return momentum_uncertainty(self._loaded, point, w, v) if self._uncertain else None
+
+    @property
+    def _uncertain(self) -> bool:
+        return self._loaded.spec is not None and bool(self._loaded.spec._uncertain)
 
     def uncertainty(
         self,
@@ -477,7 +495,7 @@ class Body(TableRepr):
         uncertainties); None when the spec writes no number with ±."""
         from rbi.spec.uncertain import linear
 
-        if self._loaded.spec is None or not self._loaded.spec._uncertain:
+        if not self._uncertain:
             return None
         found = linear(self._loaded, self.point(about))
         u = found.uncertainty

@@ -281,6 +281,9 @@ class Momentum(Result):
     kinetic_energy: float
     place: About | None = field(default=None, compare=False)
     """The body and the point's name."""
+    uncertainty: dict[str, Any] | None = field(default=None, compare=False)
+    """For a spec that writes numbers with ±: the standard uncertainty of ``mass``,
+    ``center_of_mass``, ``angular_momentum`` and ``kinetic_energy``; else None."""
 
     def __repr__(self) -> str:
         return (
@@ -290,24 +293,42 @@ class Momentum(Result):
 
     def to_dict(self) -> dict[str, Any]:
         head = self.place.header() if self.place else {"about": self.about}
-        return head | {
-            "omega": self.omega,
-            "com_velocity": self.com_velocity,
-            "angular_momentum": self.angular_momentum,
-            "angle_deg": self.angle_deg,
-            "kinetic_energy": self.kinetic_energy,
-        }
+        return (
+            head
+            | {
+                "omega": self.omega,
+                "com_velocity": self.com_velocity,
+                "angular_momentum": self.angular_momentum,
+                "angle_deg": self.angle_deg,
+                "kinetic_energy": self.kinetic_energy,
+            }
+            | ({} if self.uncertainty is None else {"uncertainty": self.uncertainty})
+        )
 
     def rows(self) -> list[Rows]:
         place = self.place
         labels = place.body.unit_labels if place else {"velocity": "", "angular_momentum": "", "energy": ""}
+        u = self.uncertainty
         cells = [
-            *(place.place_rows() if place else []),
+            *(place.place_rows(u) if place else []),
             ("ω (body axes)", "rad/s", shown(self.omega)),
             ("v of centre of mass", labels["velocity"], shown(self.com_velocity)),
             ("angular momentum h", labels["angular_momentum"], shown(self.angular_momentum)),
+            *(
+                []
+                if u is None
+                else [
+                    ("± its standard uncertainty", labels["angular_momentum"], shown(u["angular_momentum"]))
+                ]
+            ),
             ("angle between h and ω", "deg", number(self.angle_deg, 6)),
-            ("kinetic energy", labels["energy"], number(self.kinetic_energy, 8)),
+            (
+                "kinetic energy",
+                labels["energy"],
+                number(self.kinetic_energy, 8)
+                if u is None
+                else plus_minus(self.kinetic_energy, u["kinetic_energy"]),
+            ),
         ]
         title = place.title(f"momentum about {place.label}") if place else "momentum"
         return [Rows.quantities(title, cells)]
@@ -430,6 +451,9 @@ class Part:
     principal_moments: np.ndarray
     inertia_share: float
     integration_error: float | None = None
+    uncertainty: dict[str, Any] | None = field(default=None, compare=False)
+    """For a spec that writes numbers with ±: the standard uncertainty of the part's ``mass``,
+    ``center_of_mass`` and ``inertia_about_com`` from its own inputs; else None."""
 
 
 class Parts(Result, Sequence[Part]):
@@ -493,6 +517,9 @@ class Parts(Result, Sequence[Part]):
                     "implied_density_si": None if density is None else density * to_si,
                 }
             )
+        for row, part in zip(rows, self._parts):
+            if part.uncertainty is not None:
+                row["uncertainty"] = part.uncertainty
         if any(part.shape == "step" for part in self._parts):  # the error estimate of each STEP part
             for row, part in zip(rows, self._parts):
                 row["integration_error"] = part.integration_error
@@ -510,6 +537,17 @@ class Parts(Result, Sequence[Part]):
             "mean_density": self.mean_density,
             "principal_moments": self.principal_moments,
             "parts": self.part_rows(),
+        } | self._uncertainty()
+
+    def _uncertainty(self) -> dict[str, Any]:
+        """``{"uncertainty": the body's mass, centre of mass and principal moments'}`` for a spec
+        with ±, else nothing."""
+        spread = self._body.standard_uncertainty()
+        if spread is None:
+            return {}
+        return {
+            "uncertainty": {k: spread[k] for k in ("mass", "center_of_mass")}
+            | {"principal_moments": spread["moments"]}
         }
 
     def csv_rows(self) -> list[dict[str, Any]]:

@@ -225,6 +225,14 @@ STEPS = np.array([1.0, 0.5, 0.25])
 for the polynomial closed forms of degree up to 6)."""
 
 
+def by_part(inputs: tuple[UncertainInput, ...]) -> dict[int, list[int]]:
+    """The positions in ``inputs`` of each part's inputs, by part index."""
+    found: dict[int, list[int]] = {}
+    for n, each in enumerate(inputs):
+        found.setdefault(each.part, []).append(n)
+    return found
+
+
 def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Per uncertain input of the body ``loaded`` (a :class:`~rbi.spec.translate.LoadedBody`):
     the index of its part and the derivatives of that part's mass (k,), centre of mass (k, 3)
@@ -233,8 +241,7 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, n
     inputs = loaded.spec._uncertain
     k = len(inputs)
     derivative = np.zeros((k, 13))
-    for index in sorted({i.part for i in inputs}):
-        chosen = [n for n, i in enumerate(inputs) if i.part == index]
+    for index, chosen in by_part(inputs).items():
         group = [inputs[n] for n in chosen]
         nominal = np.array([i.value for i in group])
         # powers of 2: value ± step is exact, so a part's linear dependence differentiates exactly
@@ -264,8 +271,7 @@ def drawn_parts(
     masses = np.repeat(np.array([[e.mass for e in elements]]), n, axis=0)
     coms = np.repeat(np.array([[e.center_of_mass for e in elements]]), n, axis=0)
     inertias = np.repeat(np.array([[e.inertia_about_com for e in elements]]), n, axis=0)
-    for index in sorted({i.part for i in inputs}):
-        chosen = [k for k, i in enumerate(inputs) if i.part == index]
+    for index, chosen in by_part(inputs).items():
         stack = part_stack(loaded.spec, index, [inputs[k] for k in chosen], draws[:, chosen], loaded.path)
         masses[:, index], coms[:, index], inertias[:, index] = stack
     return draws, masses, coms, inertias
@@ -306,14 +312,21 @@ class Linear:
         return axis_uncertainty_deg(self.values[13:], self.uncertainty[13:], self.turn, self.u)
 
 
+def _file_units_per_unit(loaded: Any) -> tuple[float, float]:
+    """How many of the spec file's length and mass units make one of ``loaded``'s (1, 1 unless
+    it was converted)."""
+    units = loaded.spec.units
+    length = LENGTH_UNITS_IN_M[loaded.length_unit] / LENGTH_UNITS_IN_M[units.length]
+    return length, MASS_UNITS_IN_KG[loaded.mass_unit] / MASS_UNITS_IN_KG[units.mass]
+
+
 def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
     """:class:`Linear` of the body ``loaded``, its inertia and moments about ``point`` (a fixed
     point of the body frame; default its centre of mass). A body converted to other units
     (:func:`rbi.spec.units.convert_body`) is worked in its file's units, the results converted."""
     units = loaded.spec.units
-    if (loaded.length_unit, loaded.mass_unit) != (units.length, units.mass):
-        length = LENGTH_UNITS_IN_M[loaded.length_unit] / LENGTH_UNITS_IN_M[units.length]
-        mass = MASS_UNITS_IN_KG[loaded.mass_unit] / MASS_UNITS_IN_KG[units.mass]
+    length, mass = _file_units_per_unit(loaded)
+    if (length, mass) != (1.0, 1.0):
         found = linear(
             convert_body(loaded, units.length, units.mass), None if point is None else point * length
         )
@@ -401,4 +414,49 @@ def budget(
         "method": method,
         "samples": samples if drawn is not None else None,
         "quantities": quantities,
+    }
+
+
+def part_uncertainties(loaded: Any) -> list[dict[str, Any] | None]:
+    """Per element of ``loaded`` (its parts in file order), the standard uncertainty of its
+    ``mass``, ``center_of_mass`` and ``inertia_about_com`` from its own inputs (in ``loaded``'s
+    units; zeros for a part without ±)."""
+    inputs = loaded.spec._uncertain
+    part, dm, dc, dI = part_derivatives(loaded)
+    u = np.array([i.u for i in inputs])
+    length, mass = _file_units_per_unit(loaded)
+    zero = {"mass": 0.0, "center_of_mass": [0.0] * 3, "inertia_about_com": [[0.0] * 3 for _ in range(3)]}
+    found: list[dict[str, Any] | None] = [copy.deepcopy(zero) for _ in loaded.elements]
+    for index, chosen in by_part(inputs).items():
+        found[index] = {
+            "mass": float(combined(dm[chosen], u[chosen])) / mass,
+            "center_of_mass": (combined(dc[chosen].T, u[chosen]) / length).tolist(),
+            "inertia_about_com": (
+                combined(dI[chosen].transpose(1, 2, 0), u[chosen]) / (mass * length**2)
+            ).tolist(),
+        }
+    return found
+
+
+def momentum_uncertainty(
+    loaded: Any, point: np.ndarray, omega: np.ndarray, velocity: np.ndarray | None
+) -> dict[str, Any]:
+    """The standard uncertainty of ``mass``, ``center_of_mass``, ``angular_momentum`` (about
+    ``point``) and ``kinetic_energy`` at angular velocity ``omega``: turning about ``point``
+    held fixed (``velocity`` None: h = I_point ω, E = ½ ωᵀ I_point ω), or with the centre of
+    mass moving at ``velocity`` (h = I ω + m r × v, E = ½ ωᵀ I ω + ½ m v², r from the point)."""
+    found = linear(loaded, point if velocity is None else None)
+    s, k = found.sensitivities, len(found.u)
+    dM, dC, dJ = s[0], s[1:4].T, s[4:13].T.reshape(k, 3, 3)
+    dH, dE = dJ @ omega, 0.5 * np.einsum("i,kij,j->k", omega, dJ, omega)
+    if velocity is not None:
+        r = loaded.props.center_of_mass - point
+        dH = dH + dM[:, None] * np.cross(r, velocity) + loaded.props.mass * np.cross(dC, velocity)
+        dE = dE + 0.5 * dM * float(velocity @ velocity)
+    u = found.uncertainty
+    return {
+        "mass": float(u[0]),
+        "center_of_mass": u[1:4].tolist(),
+        "angular_momentum": combined(dH.T, found.u).tolist(),
+        "kinetic_energy": float(combined(dE, found.u)),
     }
