@@ -43,6 +43,7 @@ def test_quick_bench_prints_one_json_object_with_every_section(quick_run):
         "largespec",
         "latency",
         "sweep",
+        "uncertainty",
         "machine",
         "headline",
         "command",
@@ -195,7 +196,14 @@ def test_sweep_section_ratios_are_against_their_baselines(quick_run):
 def test_targets_list_each_ratio_with_its_limit(quick_run):
     result, _, _ = quick_run
     targets = result["targets"]
-    assert {t["area"] for t in targets} == {"kernel", "start-up", "large specs", "sweep", "robot audit"}
+    assert {t["area"] for t in targets} == {
+        "kernel",
+        "start-up",
+        "large specs",
+        "sweep",
+        "robot audit",
+        "uncertainty",
+    }
     assert len(targets) >= 12
     for t in targets:
         assert t["baseline"]

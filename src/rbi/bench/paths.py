@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
-BENCH_BODIES = ("top.yaml", "top_bolted.yaml", "tbar.yaml")
+BENCH_BODIES = ("top.yaml", "top_bolted.yaml", "tbar.yaml", "top_bolted_toleranced.yaml")
 """The example bodies the benchmark simulates; shipped inside the package (``rbi/data/bodies``,
 copies of the source checkout's ``bodies/``), so ``rbi bench`` works after ``pip install .``."""
 

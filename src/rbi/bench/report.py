@@ -239,12 +239,39 @@ def _robotaudit_targets(ra: dict) -> list[dict]:
     ]
 
 
+def _uncertainty_targets(u: dict) -> list[dict]:
+    """Uncertainty propagation against the plain computation, and Monte Carlo against 1 s."""
+    limit = u["targets"]
+    return [
+        _target(
+            f"linear uncertainty budget of {u['parts']:,} parts with ± on every number ÷ the plain "
+            "computation, time",
+            u["ratio_linear_to_plain"],
+            limit["ratio_linear_to_plain"],
+            False,
+            f"rbi.load(the spec without ±).principal(): {number(u['plain_s'], 3)} s",
+            f"rbi.load(spec).uncertainty(): {number(u['linear_s'], 3)} s, median of {u['repeats']}"
+            + ("; a quick run: the target is for 1,000 parts" if u["parts"] < 1000 else ""),
+        ),
+        _target(
+            f"{u['draws']:,} Monte Carlo draws of bodies/top_bolted_toleranced.yaml, wall time",
+            u["monte_carlo_s"],
+            limit["monte_carlo_s"],
+            False,
+            "1 s (absolute)",
+            f"median of {u['monte_carlo_repeats']}; the first call {number(u['monte_carlo_first_s'], 3)} s",
+            "s",
+        ),
+    ]
+
+
 SECTION_TARGETS = {
     "kernel": ("kernel", _kernel_targets),
     "latency": ("start-up", _latency_targets),
     "largespec": ("large specs", _largespec_targets),
     "sweep": ("sweep", _sweep_targets),
     "robotaudit": ("robot audit", _robotaudit_targets),
+    "uncertainty": ("uncertainty", _uncertainty_targets),
 }
 """Each section of a bench result that has speed targets: its area and the function that lists them."""
 
@@ -390,6 +417,7 @@ def report_sections(result: dict, plot_link: str | None = None) -> list[Section]
         + _throughput_sections(result.get("throughput"))
         + _latency_sections(result.get("latency"))
         + _cad_sections(result.get("cad"))
+        + _uncertainty_sections(result.get("uncertainty"))
     )
 
 
@@ -657,6 +685,23 @@ def _cad_sections(cad: dict | None) -> list[Section]:
             "CAD solids: STEP against STL", cad_title(cad) + ".", *_table(CAD_COLUMNS, cad.get("files", []))
         )
     ]
+
+
+def _uncertainty_sections(u: dict | None) -> list[Section]:
+    """What the uncertainty targets time (their numbers are in the Targets table)."""
+    if not u:
+        return []
+    notes = (
+        f'`rbi.load(spec).uncertainty(method="linear")` (the budget of `rbi uncertainty`: mass, centre of '
+        f"mass, inertia and principal moments) of a generated spec of {u['parts']:,} parts (cones, cylinders by "
+        "density and point masses; ± 1 % on each mass, density and radius, ± 0.001 on each coordinate), "
+        "against `rbi.load(spec).principal()` of the same spec without ±, each a whole load in this process, "
+        f'the median of {u["repeats"]} or more; and `body.uncertainty(method="monte-carlo", '
+        f"samples={u['draws']})` of `bodies/top_bolted_toleranced.yaml` loaded once: "
+        f"{number(u['linear_s'], 3)} s against {number(u['plain_s'], 3)} s "
+        f"({_times(u['ratio_linear_to_plain'])}), and {number(u['monte_carlo_s'], 3)} s for the draws."
+    )
+    return [Section("Uncertainty of the inputs", notes)]
 
 
 # --- the tables' columns: (header, the cell of one record) -----------------------------------------

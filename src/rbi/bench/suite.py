@@ -2,19 +2,14 @@
 
 from __future__ import annotations
 
-from rbi.bench import Progress, cad, kernel, largespec, latency, robotaudit, sweep, throughput, workprecision
+from importlib import import_module
+
+from rbi.bench import Progress
 from rbi.bench.timing import machine
 
-SECTIONS = {
-    "kernel": kernel,
-    "workprecision": workprecision,
-    "throughput": throughput,
-    "largespec": largespec,
-    "latency": latency,
-    "sweep": sweep,
-    "cad": cad,
-    "robotaudit": robotaudit,
-}
+NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep", "cad", "robotaudit")
+NAMES += ("uncertainty",)
+SECTIONS = {name: import_module(f"rbi.bench.{name}") for name in NAMES}
 """Every section by name, in the order they run."""
 
 

@@ -39,7 +39,7 @@ OnlyOption = Annotated[
         "--only",
         metavar="SECTIONS",
         help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
-        "sweep, cad, robotaudit (default: all).",
+        "sweep, cad, robotaudit, uncertainty (default: all).",
     ),
 ]
 PlotOption = Annotated[
