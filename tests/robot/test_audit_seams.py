@@ -5,6 +5,7 @@ centre of mass whose distance overflows is one refusal in every form; `--joints 
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -12,6 +13,7 @@ import pytest
 from tests.conftest import run_rbi_inprocess
 
 FORMS = ("table", "json", "csv")
+ROOT = Path(__file__).resolve().parents[2]
 
 
 def _link(name: str, mass: str, moments: str, xyz: str = "0 0 0", geometry: str = "") -> str:
@@ -179,3 +181,71 @@ def test_joints_take_several_values_after_one_option(tmp_path):
         assert json.loads(proc.stdout)["total"] == json.loads(repeated.stdout)["total"]
     one = json.loads(run_rbi_inprocess("audit", str(path), "--joints", "a=1", "-f", "json").stdout)
     assert one["total"] != json.loads(repeated.stdout)["total"]
+
+
+@pytest.mark.parametrize("options", [(), ("--fix",), ("--joints", "shoulder=0.5")])
+def test_audit_json_is_the_reports_to_dict_with_the_file(options, monkeypatch):
+    """`rbi audit --format json` = `rbi.audit(...).to_dict()` with "file" first; the report also
+    has to_pandas (one row a link), a table for print() and an HTML repr from the same rows."""
+    import rbi
+
+    monkeypatch.chdir(ROOT)
+    path = "bodies/two_link_arm.urdf"
+    proc = run_rbi_inprocess("audit", path, *options, "--format", "json")
+    kwargs = {"fix": True} if "--fix" in options else {}
+    if "--joints" in options:
+        kwargs["joints"] = {"shoulder": 0.5}
+    report = rbi.audit(path, **kwargs)
+    assert json.loads(proc.stdout) == {"file": path, **report.to_dict()}
+    assert list(json.loads(proc.stdout))[0] == "file"
+    frame = report.to_pandas()
+    assert list(frame["link"]) == ["base_link", "upper_arm", "forearm"]
+    text = str(report)
+    assert "upper_arm" in text and "total" in text and "shoulder" in text
+    html = report._repr_html_()
+    assert html.count("<table>") == 3 and "forearm" in html
+
+
+def test_import_json_is_the_results_to_dict_with_the_file(monkeypatch):
+    import rbi
+
+    monkeypatch.chdir(ROOT)
+    path = "bodies/two_link_arm.urdf"
+    proc = run_rbi_inprocess("import", path, "--format", "json")
+    result = rbi.import_robot(path)
+    assert json.loads(proc.stdout) == {"file": path, **result.to_dict()}
+    frame = result.to_pandas()
+    assert list(frame["name"]) == ["upper_arm", "forearm"] and frame["mass"].tolist() == [1.2, 0.8]
+    assert "forearm" in str(result) and "<table>" in result._repr_html_()
+    csv_text = run_rbi_inprocess("import", path, "--format", "csv").stdout
+    assert csv_text == result.to_csv()
+
+
+def test_dm_control_dog_bodies_are_mujocos_to_1e9():
+    """dog.xml's 62 bodies, 162 STL meshes in MuJoCo's default (legacy) inertia mode: MuJoCo
+    keeps each mesh's inertia on the principal axes its Jacobi iteration finds (to 1e-7
+    relative), which moved 22 bodies' inertias by up to 1.2e-8 from the exact integral. Each
+    body's mass, centre of mass and inertia (MuJoCo's body_inertia turned by body_iquat) to
+    1e-9 of its largest moment."""
+    mujoco = pytest.importorskip("mujoco")
+    dm_control = pytest.importorskip("dm_control")
+    import os
+
+    import rbi
+
+    path = os.path.join(os.path.dirname(dm_control.__file__), "suite", "dog.xml")
+    model = mujoco.MjModel.from_xml_path(path)
+    report = rbi.audit(path, geometry="none")
+    assert len(report.links) == model.nbody - 1 == 62
+    for body, link in enumerate(report.links, start=1):
+        declared = link.declared
+        R = np.zeros(9)
+        mujoco.mju_quat2Mat(R, model.body_iquat[body])
+        R = R.reshape(3, 3)
+        theirs = R @ np.diag(model.body_inertia[body]) @ R.T
+        scale = np.max(model.body_inertia[body])
+        assert declared.mass == pytest.approx(model.body_mass[body], rel=1e-12)
+        np.testing.assert_allclose(declared.center_of_mass, model.body_ipos[body], rtol=0, atol=1e-12)
+        assert np.max(np.abs(declared.inertia_about_com - theirs)) <= 1e-9 * scale, link.name
+        moments = np.sort(np.linalg.eigvalsh(declared.inertia_about_com))
+        assert np.max(np.abs(moments - np.sort(model.body_inertia[body]))) <= 1e-9 * scale, link.name

@@ -15,6 +15,8 @@ from rbi.core.rotation import matrix_to_quaternion
 from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import write_output
 from rbi.formats.paths import outside_paths_are_allowed
+from rbi.reprs import Result, Rows, plain
+from rbi.text import number, vector_text
 
 if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the audit's modules load then)
     from rbi.robot.audit import AuditReport
@@ -79,6 +81,7 @@ def audit(
     if target is not None:
         check_out_not_read(target.path, report.model)  # an include, a mesh or the robot file itself
         write_output(target, report.fix.content)
+        report.fix.out = target.given
     return report
 
 
@@ -108,8 +111,8 @@ class ImportedLink:
     yaml: str
 
 
-@dataclass(frozen=True)
-class RobotImport:
+@dataclass(frozen=True, repr=False)
+class RobotImport(Result):
     """A robot file read as ``rbi import`` reads it: ``path``; ``format`` (``"urdf"``, ``"sdf"``,
     ``"mjcf"``); ``name`` (the model's); ``link_word`` (``"link"``, or ``"body"`` for MJCF);
     ``links``, the `ImportedLink` s asked for; ``skipped``, ``(label, reason)`` of each link
@@ -147,6 +150,57 @@ class RobotImport:
         if left_out:
             lines.append(f"Without mass (left out): {', '.join(left_out)}.")
         return comment(*lines) + dump(spec)
+
+    def __repr__(self) -> str:
+        return f"<rbi.RobotImport {self.path!r} ({self.format}): {len(self.links)} {self.link_word}(s)>"
+
+    def rows(self) -> list[Rows]:
+        """One row a link: mass, centre of mass, principal moments, problems."""
+        cells = [
+            (
+                each.label,
+                number(each.mass, 6),
+                vector_text(each.center_of_mass, 6),
+                vector_text(np.linalg.eigvalsh(0.5 * (each.inertia + each.inertia.T)), 6)[1:-1],
+                "; ".join(each.problems) or "ok",
+            )
+            for each in self.links
+        ]
+        columns = (self.link_word, "mass kg", "centre of mass m", "principal moments kg·m²", "problems")
+        return [Rows(f"{self.path}: {len(self.links)} {self.link_word}(s) imported", columns, cells)]
+
+    def to_dict(self, written: dict[int, str] | None = None) -> dict[str, Any]:
+        """What ``rbi import --format json`` prints, less ``"file"``: each link's ``"file"`` is
+        where its spec was written (``written``: link index → path), else None."""
+        links = [
+            {
+                "name": each.name,
+                "index": each.index,
+                "mass": each.mass,
+                "center_of_mass": each.center_of_mass,
+                "inertia": each.inertia,
+                "inertial_quaternion": each.inertial_quaternion,
+                "problems": each.problems,
+                "file": (written or {}).get(each.index),
+            }
+            for each in self.links
+        ]
+        return plain(
+            {
+                "format": self.format,
+                "model": self.name,
+                "units": {"length": "m", "mass": "kg"},
+                "links": links,
+                "skipped": [{"link": label, "reason": reason} for label, reason in self.skipped],
+            }
+        )
+
+    def csv_rows(self, written: dict[int, str] | None = None) -> list[dict[str, Any]]:
+        """``rbi import --format csv``: one row a link, ``ok`` for no problems."""
+        return [
+            {k: v for k, v in row.items() if k != "problems"} | {"ok": not row["problems"]}
+            for row in self.to_dict(written)["links"]
+        ]
 
 
 def import_robot(

@@ -17,7 +17,7 @@ import typer
 from rbi.api import SpecError, collector_paused, output_target
 from rbi.api import audit as run_audit
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile
-from rbi.cli.render import emit, number, print_table, terminal_safe, vector_text, without_noise
+from rbi.cli.render import emit, print_table, terminal_safe
 from rbi.cli.terminal import say, status_kept
 
 GeometryOption = Annotated[
@@ -124,8 +124,6 @@ def audit(
         mesh_repair=mesh_repair,
     )
     code = report.exit_code
-    if out is not None:
-        code = 1 if report.fix.unfixable or report.model.unchecked else 0
 
     # as while auditing: a large robot's report is millions of new objects; a reader that left
     # does not clear a flagged link
@@ -155,75 +153,38 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
         if fix:
             _fix_text(report, file, out)
         return
-    result = report.as_dict()
-    if fix:
-        result["fix"] = {
-            "out": out,
-            "changes": [{"link": c.link, "reason": c.reason} for c in report.fix.changes],
-            "unfixable": [{"link": label, "reason": why} for label, why in report.fix.unfixable],
-        }
-
-    rows = [_csv_row(each) for each in report.links] if format is OutputFormat.csv else None
+    result = {"file": report.path, **report.to_dict()}
+    rows = report.csv_rows() if format is OutputFormat.csv else None
     emit(format.value, result, lambda: None, csv_rows=rows)
 
 
-def _csv_row(each) -> dict:
-
-    declared, geo, ratios = each.declared, each.geometry, each.given_ratios
-    return {
-        "link": each.link.name or each.link.label,
-        "mass": declared.mass if declared else None,
-        "geometry_volume": geo.volume if geo else None,
-        "implied_density": geo.implied_density if geo else None,
-        **{f"ratio_{i + 1}": None if ratios is None else ratios[i] for i in range(3)},
-        "com_offset": each.com_offset,
-        "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags),
-    }
-
-
 def _table(report) -> None:
-
     # not at top level: `rbi audit --format json` would load rbi.cli.tables too
     from rbi.cli.tables import plain_text, titled
 
-    word = report.model.link_word
-    plural = "bodies" if word == "body" else word + "s"
-    table = titled(
-        f"{report.path}: {len(report.links)} {plural} (ratio: the declared moment farthest from the "
-        "geometry's, as a multiple of it)"
-    )
-    table.add_column(word, overflow="fold")
-    table.add_column("mass kg", justify="right", no_wrap=True)
-    table.add_column("ρ kg/m³", justify="right", no_wrap=True)
-    table.add_column("ratio", justify="right", no_wrap=True)
-    table.add_column("CoM off ÷ size", justify="right", no_wrap=True)
-    table.add_column("flags", overflow="fold")
-    for each in report.links:
-        declared, geo = each.declared, each.geometry
-        flags = " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok"
-        table.add_row(
-            plain_text(each.link.name if each.link.name is not None else each.link.label),
-            "-" if declared is None else number(declared.mass, 6),
-            "-" if geo is None or geo.implied_density is None else number(geo.implied_density, 4),
-            each.worst_ratio_text,
-            "-" if each.com_offset is None else number(each.com_offset, 2),
-            flags,
-        )
+    tables = report.rows()
+    links, total = tables[0], tables[1].cells
+    table = titled(links.title)
+    table.add_column(links.columns[0], overflow="fold")
+    for heading in links.columns[1:-1]:
+        table.add_column(heading, justify="right", no_wrap=True)
+    table.add_column(links.columns[-1], overflow="fold")
+    for cells in links.cells:
+        table.add_row(plain_text(cells[0]), *cells[1:])
     print_table(table)
     for each in report.links:
         for flag in each.flags:
             print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))
-    total = report.total
     # three short lines, not one of up to ~100 characters that a terminal of 80 would break
-    # inside a number; rounding noise (2.8e-18 m of a symmetric robot) printed as 0; the moments
-    # are a list, shown without the vector's brackets
-    print(terminal_safe(f"total ({total.frame}): mass {number(total.mass, 6)} kg"))
-    print(f"  centre of mass [m]: {vector_text(total.center_of_mass, 6)}")
-    print(f"  principal moments about it [kg·m²]: {vector_text(report.total_moments, 6)[1:-1]}")
+    # inside a number; the moments are a list, shown without the vector's brackets
+    print(terminal_safe(f"{tables[1].title}: mass {total[0][2]} kg"))
+    print(f"  centre of mass [m]: {total[1][2]}")
+    print(f"  principal moments about it [kg·m²]: {total[2][2]}")
+    word = report.model.link_word
     if report.left_out:
-        names = ", ".join(report.left_out)
-        print(terminal_safe(f"  left out: the moments of mass-0 {word}(s) (unphysical): {names}"))
-    _joints_table(report)
+        print(terminal_safe(f"  left out: the moments of mass-0 {word}(s) (unphysical): {total[3][2]}"))
+    if report.joints:
+        _joints_table(tables[-1], report.joints)
     for note in report.notes:
         say(f"note: {note}")
     errors = sum(each.has_error for each in report.links)
@@ -232,30 +193,18 @@ def _table(report) -> None:
     sys.stdout.flush()
 
 
-def _joints_table(report) -> None:
+def _joints_table(joints, found) -> None:
     """Each joint's holding torque against gravity, its declared effort limit and the margin."""
-    if not report.joints:
-        return
-
     # not at top level: `rbi audit --format json` would load rbi.cli.tables too
     from rbi.cli.tables import plain_text, titled
 
-    table = titled("joints: torque that holds the pose (N·m; N for prismatic)")
-    for heading in ("joint", "type", "torque", "limit", "margin", "flags"):
+    table = titled(joints.title)
+    for heading in joints.columns:
         table.add_column(heading, justify="left" if heading in ("joint", "type", "flags") else "right")
-    # a torque below 1e-12 of the largest is rounding noise (7e-14 N·m beside 0.013 N·m): 0
-    torques = without_noise([each.torque for each in report.joints])
-    for each, torque in zip(report.joints, torques):
-        table.add_row(
-            "-" if each.name is None else plain_text(each.name),
-            plain_text(each.type),
-            number(float(torque), 6),
-            "-" if each.effort_limit is None else number(each.effort_limit, 6),
-            "-" if each.margin is None else number(each.margin, 6),
-            " ".join(flag["code"] for flag in each.flags) or "ok",
-        )
+    for cells in joints.cells:
+        table.add_row(plain_text(cells[0]), plain_text(cells[1]), *cells[2:])
     print_table(table)
-    for each in report.joints:
+    for each in found:
         for flag in each.flags:
             print(terminal_safe(f"{flag['level']}: joint {each.name}: {flag['code']}: {flag['message']}"))
 

@@ -215,31 +215,7 @@ def _file_names(links, word: str) -> list[str]:
 
 
 def _emit_listing(format: OutputFormat, robot, targets) -> None:
-
-    written = {id(each): target.given for target, each in targets or []}
-    rows = [
-        {
-            "name": each.name,
-            "index": each.index,
-            "mass": each.mass,
-            "center_of_mass": each.center_of_mass,
-            "inertia": each.inertia,
-            "inertial_quaternion": each.inertial_quaternion,
-            "problems": each.problems,
-            "file": written.get(id(each)),
-        }
-        for each in robot.links
-    ]
-    result = {
-        "file": robot.path,
-        "format": robot.format,
-        "model": robot.name,
-        "units": {"length": "m", "mass": "kg"},
-        "links": rows,
-        "skipped": [{"link": label, "reason": reason} for label, reason in robot.skipped],
-    }
+    written = {each.index: target.given for target, each in targets or []}
+    result = {"file": robot.path, **robot.to_dict(written)}
     # every text cell is escaped by the CSV cell rule (rbi.text.csv_cell): CSV often reaches a terminal
-    csv_rows = [
-        {k: v for k, v in row.items() if k != "problems"} | {"ok": not row["problems"]} for row in rows
-    ]
-    emit(format.value, result, lambda: None, csv_rows=csv_rows)
+    emit(format.value, result, lambda: None, csv_rows=robot.csv_rows(written))

@@ -32,9 +32,9 @@ from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import SOLID_KINDS, Link, LinkColumns, RobotModel, stacked
 from rbi.formats.robot_files import inertia_problem_text
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
-from rbi.reprs import TableRepr
+from rbi.reprs import Result, Rows, plain
 from rbi.robot.tree import placement, stack_apply, totals
-from rbi.text import number
+from rbi.text import number, vector_text
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -169,7 +169,7 @@ def ratio_text(ratio: float) -> str:
 
 
 @dataclass(repr=False)
-class AuditReport(TableRepr):
+class AuditReport(Result):
     """What ``rbi audit`` found: the model read, one :class:`LinkAudit` per link, the totals,
     ``notes`` (what was read but not checked, inertials MuJoCo ignores) and the options used.
     :meth:`as_dict` is the JSON the CLI prints."""
@@ -213,6 +213,10 @@ class AuditReport(TableRepr):
 
     @property
     def exit_code(self) -> int:
+        """1 when a link has an error-level flag (a fixed copy written: when a flagged link
+        could not be fixed or the file holds what was not checked), else 0."""
+        if self.fix is not None and self.fix.out is not None:
+            return 1 if self.fix.unfixable or self.model.unchecked else 0
         return 1 if self.has_error else 0
 
     def __repr__(self) -> str:
@@ -224,18 +228,45 @@ class AuditReport(TableRepr):
             f"{len(self.joints)} joints, {errors} with errors, {warnings} with warnings>"
         )
 
-    def _table(self) -> tuple[str, list[list[str]], tuple[str, ...]]:
-        """Each link's declared mass and its flags (notebook and rich reprs)."""
-        rows = [
-            [
-                str(each.name),
-                number(None if each.declared is None else each.declared.mass),
-                "; ".join(f"{flag.level} {flag.code}" for flag in each.flags) or "ok",
-            ]
-            for each in self.links
+    def rows(self) -> list[Rows]:
+        """The links (the CLI's table: mass, implied density, worst ratio, CoM offset, flags),
+        the totals, and the joints' holding torques when there are any."""
+        word = self.model.link_word
+        plural = "bodies" if word == "body" else word + "s"
+        links = Rows(
+            f"{self.path}: {len(self.links)} {plural} (ratio: the declared moment farthest from the "
+            "geometry's, as a multiple of it)",
+            (word, "mass kg", "ρ kg/m³", "ratio", "CoM off ÷ size", "flags"),
+            [_link_cells(each) for each in self.links],
+        )
+        total = self.total
+        quantities = [
+            ("mass", "kg", number(total.mass, 6)),
+            ("centre of mass", "m", vector_text(_without_noise(total.center_of_mass), 6)),
+            ("principal moments", "kg·m²", vector_text(_without_noise(self.total_moments), 6)[1:-1]),
         ]
-        rows.append(["total", number(self.total.mass), "error" if self.has_error else "ok"])
-        return f"{self.model.name or self.path} — audit", rows, ("link", "mass, kg", "flags")
+        if self.left_out:
+            quantities.append(("left out (mass 0)", "", ", ".join(self.left_out)))
+        tables = [links, Rows.quantities(f"total ({total.frame})", quantities)]
+        if self.joints:
+            tables.append(
+                Rows(
+                    "joints: torque that holds the pose (N·m; N for prismatic)",
+                    ("joint", "type", "torque", "limit", "margin", "flags"),
+                    _joint_cells(self.joints),
+                    left=2,
+                )
+            )
+        return tables
+
+    def to_dict(self) -> dict[str, Any]:
+        """What ``rbi audit --format json`` prints, less ``"file"`` (with ``"fix"`` when the fixed
+        copy was planned)."""
+        found = self.as_dict()
+        del found["file"]
+        if self.fix is not None:
+            found["fix"] = self.fix.to_dict()
+        return plain(found)
 
     def as_dict(self) -> dict[str, Any]:
         return {
@@ -274,6 +305,62 @@ class AuditReport(TableRepr):
             "notes": list(self.notes),
             "warnings": list(self.notes),
         }
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        """One row a link (``rbi audit --format csv``)."""
+        return [_csv_row(each) for each in self.links]
+
+
+def _without_noise(values: np.ndarray) -> np.ndarray:
+    """``values`` with each entry below 1e-12 of the largest (finite) one set to 0: rounding
+    noise (2.8e-18 m in a symmetric robot's centre of mass) printed as 0."""
+    values = np.array(values, dtype=float)
+    finite = np.abs(values[np.isfinite(values)])
+    values[np.abs(values) < 1e-12 * (float(finite.max()) if finite.size else 0.0)] = 0.0
+    return values
+
+
+def _link_cells(each: LinkAudit) -> tuple[str, ...]:
+    declared, geo = each.declared, each.geometry
+    return (
+        each.link.name if each.link.name is not None else each.link.label,
+        "-" if declared is None else number(declared.mass, 6),
+        "-" if geo is None or geo.implied_density is None else number(geo.implied_density, 4),
+        each.worst_ratio_text,
+        "-" if each.com_offset is None else number(each.com_offset, 2),
+        " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok",
+    )
+
+
+def _joint_cells(joints: list) -> list[tuple[str, ...]]:
+    """Each joint's row: a torque below 1e-12 of the largest is rounding noise (7e-14 N·m beside
+    0.013 N·m), shown as 0."""
+    torques = [float(each.torque) for each in joints]
+    largest = max((abs(t) for t in torques if math.isfinite(t)), default=0.0)
+    return [
+        (
+            "-" if each.name is None else each.name,
+            each.type,
+            number(0.0 if abs(torque) < 1e-12 * largest else torque, 6),
+            "-" if each.effort_limit is None else number(each.effort_limit, 6),
+            "-" if each.margin is None else number(each.margin, 6),
+            " ".join(flag["code"] for flag in each.flags) or "ok",
+        )
+        for each, torque in zip(joints, torques)
+    ]
+
+
+def _csv_row(each: LinkAudit) -> dict[str, Any]:
+    declared, geo, ratios = each.declared, each.geometry, each.given_ratios
+    return {
+        "link": each.link.name or each.link.label,
+        "mass": declared.mass if declared else None,
+        "geometry_volume": geo.volume if geo else None,
+        "implied_density": geo.implied_density if geo else None,
+        **{f"ratio_{i + 1}": None if ratios is None else ratios[i] for i in range(3)},
+        "com_offset": each.com_offset,
+        "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags),
+    }
 
 
 def _link_dict(each: LinkAudit, declared_moments, geometry_moments) -> dict[str, Any]:

@@ -59,6 +59,16 @@ class FixPlan:
         )
 
     original: bytes = b""
+    out: str | None = None
+    """Where the fixed copy was written (the path as given), or None (planned only)."""
+
+    def to_dict(self) -> dict:
+        """``"fix"`` of ``rbi audit --fix --format json``."""
+        return {
+            "out": self.out,
+            "changes": [{"link": c.link, "reason": c.reason} for c in self.changes],
+            "unfixable": [{"link": label, "reason": why} for label, why in self.unfixable],
+        }
 
 
 def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
