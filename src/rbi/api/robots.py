@@ -68,7 +68,6 @@ def audit(
     """
     # not at top level: `rbi inertia` would load rbi.robot.audit too
     from rbi.robot import audit as run_audit
-    from rbi.robot.fix import check_out_not_read  # the files the robot reads
 
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
@@ -79,10 +78,19 @@ def audit(
     settings |= dict(density=density, mesh_inertia=mesh_inertia, joints=joints, mesh_repair=mesh_repair)
     report = run_audit(path, fix=fix, allow_outside_paths=allowed, **settings)
     if target is not None:
-        check_out_not_read(target.path, report.model)  # an include, a mesh or the robot file itself
-        write_output(target, report.fix.content)
-        report.fix.out = target.given
+        _write_fixed(target, report)
     return report
+
+
+def _write_fixed(target: Any, report: AuditReport) -> None:
+    """The fixed copy written at ``target`` (never a file the robot reads: an include, a mesh
+    or the robot file itself), and the report's fix told where."""
+    # not at top level: `rbi inertia` would load rbi.robot.fix too
+    from rbi.robot.fix import check_out_not_read
+
+    check_out_not_read(target.path, report.model)
+    write_output(target, report.fix.content)
+    report.fix.out = target.given
 
 
 @dataclass(frozen=True)
@@ -156,7 +164,7 @@ class RobotImport(Result):
 
     def rows(self) -> list[Rows]:
         """One row a link: mass, centre of mass, principal moments, problems."""
-        cells = [
+        cells: list[tuple[str, ...]] = [
             (
                 each.label,
                 number(each.mass, 6),

@@ -153,9 +153,9 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
         if fix:
             _fix_text(report, file, out)
         return
-    result = {"file": report.path, **report.to_dict()}
+    result = report.as_dict()
     rows = report.csv_rows() if format is OutputFormat.csv else None
-    emit(format.value, result, lambda: None, csv_rows=rows)
+    emit(format.value, result, lambda: None, csv_rows=rows, ready=True)
 
 
 def _table(report) -> None:

@@ -164,11 +164,13 @@ def emit(
     table: Callable[[], Any],
     csv_rows: list[dict[str, Any]] | None = None,
     source: str | None = None,
+    ready: bool = False,
 ) -> None:
     """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
     lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``;
-    ``source`` names the file in an error."""
-    flat = plain(result)
+    ``source`` names the file in an error; ``ready``: ``result`` is JSON-ready already (a
+    result's ``to_dict()``), not walked again."""
+    flat = result if ready else plain(result)
     if fmt == "json":  # the encoder finds a NaN or inf as it writes (an audit's JSON has millions)
         try:
             text = json.dumps(flat, allow_nan=False)

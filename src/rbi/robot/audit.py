@@ -148,9 +148,7 @@ class LinkAudit:
     def given_ratios(self) -> list[float | None] | None:
         """:attr:`ratios` as JSON and CSV hold them: a ratio the geometry cannot give (NaN,
         ``-`` in the table) or one past the largest double (``>1.8e+308``) is None."""
-        if self.ratios is None:
-            return None
-        return [float(r) if math.isfinite(r) else None for r in self.ratios]
+        return None if self.ratios is None else _given(self.ratios)
 
     @property
     def worst_ratio_text(self) -> str:
@@ -261,43 +259,30 @@ class AuditReport(Result):
 
     def to_dict(self) -> dict[str, Any]:
         """What ``rbi audit --format json`` prints, less ``"file"`` (with ``"fix"`` when the fixed
-        copy was planned)."""
-        found = self.as_dict()
-        del found["file"]
-        if self.fix is not None:
-            found["fix"] = self.fix.to_dict()
-        return plain(found)
-
-    def as_dict(self) -> dict[str, Any]:
-        return {
-            "file": self.model.path,
+        copy was planned): JSON-ready, built so (no numpy value, no -0.0) without walking the
+        links' millions of numbers again."""
+        total = self.total
+        found = {
             "robot": self.model.name,
             "format": self.model.format,
             "units": {"length": "m", "mass": "kg"},
-            "links": [
-                _link_dict(each, declared, geometry)
-                for each, declared, geometry in zip(
-                    self.links,
-                    _moments_in_bulk([each.declared for each in self.links]),
-                    _moments_in_bulk(
-                        [None if e.geometry is None else e.geometry.properties for e in self.links]
-                    ),
-                )
-            ],
-            "total": {
-                "mass": self.total.mass,
-                "center_of_mass": self.total.center_of_mass,
-                "inertia_about_com": self.total.inertia_about_com,
-                "moments": self.total_moments,
-                "frame": self.total.frame,
-                "left_out": list(self.left_out),
-            },
+            "links": [] if self.columns is None else self.columns.link_dicts(),
+            "total": plain(
+                {
+                    "mass": total.mass,
+                    "center_of_mass": total.center_of_mass,
+                    "inertia_about_com": total.inertia_about_com,
+                    "moments": self.total_moments,
+                    "frame": total.frame,
+                    "left_out": list(self.left_out),
+                }
+            ),
             "joints": [
                 {
                     "name": each.name,
                     "type": each.type,
-                    "torque": each.torque,
-                    "effort_limit": each.effort_limit,
+                    "torque": float(each.torque) + 0.0,
+                    "effort_limit": None if each.effort_limit is None else float(each.effort_limit) + 0.0,
                     "flags": list(each.flags),
                 }
                 for each in self.joints
@@ -305,6 +290,13 @@ class AuditReport(Result):
             "notes": list(self.notes),
             "warnings": list(self.notes),
         }
+        if self.fix is not None:
+            found["fix"] = self.fix.to_dict()
+        return found
+
+    def as_dict(self) -> dict[str, Any]:
+        """:meth:`to_dict` with ``"file"`` first: what ``rbi audit --format json`` prints."""
+        return {"file": self.model.path, **self.to_dict()}
 
     def csv_rows(self) -> list[dict[str, Any]]:
         """One row a link (``rbi audit --format csv``)."""
@@ -365,7 +357,7 @@ def _csv_row(each: LinkAudit) -> dict[str, Any]:
 
 def _link_dict(each: LinkAudit, declared_moments, geometry_moments) -> dict[str, Any]:
     """One link's JSON (``declared_moments``/``geometry_moments``: the principal moments of its
-    declared and geometry inertias, kg·m², from :func:`_moments_in_bulk`)."""
+    declared and geometry inertias, kg·m², from :func:`_stack_moments`)."""
     declared = geometry = None
     if each.declared is not None:
         declared = {
@@ -411,20 +403,20 @@ def _moments(properties: MassProperties) -> np.ndarray:
 _OFF_DIAGONAL = ~np.eye(3, dtype=bool)
 
 
-def _moments_in_bulk(found: list[MassProperties | None]) -> list[np.ndarray | None]:
-    """:func:`_moments` of each of ``found`` (None for None): the diagonal ones sorted on one
-    (n, 3) stack (the same stable sort of the same numbers), the others one by one."""
-    moments: list[np.ndarray | None] = [None] * len(found)
-    rows = [i for i, each in enumerate(found) if each is not None]
-    if not rows:
-        return moments
-    stack = stacked([found[i].inertia_about_com for i in rows], (3, 3))
+def _stack_moments(stack: np.ndarray) -> list[list[float]]:
+    """:func:`_moments` of each inertia of a (k, 3, 3) stack, as lists: the diagonal ones sorted
+    on the stack at once (the same stable sort of the same numbers), the others one by one."""
     diagonal = np.diagonal(stack, axis1=1, axis2=2)
     sortable = ~np.any(stack[:, _OFF_DIAGONAL], axis=1) & np.all(np.abs(diagonal) < 1e300, axis=1)
     ordered = np.take_along_axis(diagonal, np.argsort(diagonal, axis=1, kind="stable"), axis=1)
-    for k, i in enumerate(rows):
-        moments[i] = ordered[k] if sortable[k] else _moments(found[i])
-    return moments
+    ordered = (ordered + 0.0).tolist()  # + 0.0: no -0.0
+    for k in np.flatnonzero(~sortable).tolist():
+        ordered[k] = (symmetric_eigen(stack[k])[0] + 0.0).tolist()
+    return ordered
+
+
+def _moments_of(properties: MassProperties | None) -> list[float] | None:
+    return None if properties is None else _stack_moments(properties.inertia_about_com[None])[0]
 
 
 def material_density(material: str | None, density: float | None) -> float | None:
@@ -613,18 +605,89 @@ class _ColumnAudit:
 
     def links(self) -> list[LinkAudit]:
         """Every link's :class:`LinkAudit`, in file order."""
+        return [self.link_audit(row, link) for row, link in enumerate(self.columns.links())]
+
+    def link_audit(self, row: int, link: Link | None = None) -> LinkAudit:
+        """The :class:`LinkAudit` of ``row``: audited one by one, or made from the arrays."""
+        result = self.audited.get(row)
+        if result is not None:
+            return result
+        link = self.columns.link(row) if link is None else link
+        measured, geometry = self.measured, None
+        if measured is not None and row in measured.at and measured.fine[measured.at[row]]:
+            geometry = measured.props(measured.at[row])
+        declared = None if link.inertial is None else link.inertial.properties
+        return LinkAudit(link, declared, geometry, *self.compared.get(row, (None, None)))
+
+    def link_dicts(self) -> list[dict[str, Any]]:
+        """Each link's JSON object (:func:`_link_dict`), in file order, JSON-ready: a link the
+        screens cleared (no flag) straight from the arrays, the same numbers its
+        :class:`LinkAudit` holds (a 100,000-link report makes no object per link); the others
+        (audited one by one, or with a turned inertial frame) from their LinkAudit."""
+        columns, measured, compared = self.columns, self.measured, self.compared
+        own = set(self.audited) | set(columns.turned)
+        declared, masses = columns.declared.tolist(), (columns.masses + 0.0).tolist()  # + 0.0: no -0.0
+        coms, inertias = (columns.coms + 0.0).tolist(), (columns.inertias + 0.0).tolist()
+        moments = [None] * len(masses)
+        rows = np.flatnonzero(columns.declared)
+        for row, each in zip(rows.tolist(), _stack_moments(columns.inertias[rows])):
+            moments[row] = each
+        shapes = _geometry_dicts(measured) if measured is not None else {}
         found = []
-        measured, compared = self.measured, self.compared
-        for row, link in enumerate(self.columns.links()):
-            result = self.audited.get(row)
-            if result is None:
-                geometry = None
-                if measured is not None and row in measured.at and measured.fine[measured.at[row]]:
-                    geometry = measured.props(measured.at[row])
-                declared = None if link.inertial is None else link.inertial.properties
-                result = LinkAudit(link, declared, geometry, *compared.get(row, (None, None)))
-            found.append(result)
+        for row, name in enumerate(columns.names):
+            if row in own:
+                each = self.link_audit(row)
+                geo = None if each.geometry is None else each.geometry.properties
+                found.append(plain(_link_dict(each, _moments_of(each.declared), _moments_of(geo))))
+                continue
+            ratios, offset = compared.get(row, (None, None))
+            found.append(
+                {
+                    "name": name,
+                    "index": row,
+                    "declared": {
+                        "mass": masses[row],
+                        "center_of_mass": coms[row],
+                        "inertia_about_com": inertias[row],
+                        "moments": moments[row],
+                    }
+                    if declared[row]
+                    else None,
+                    "geometry": shapes.get(row),
+                    "moment_ratios": None if ratios is None else _given(ratios),
+                    "com_offset": None if offset is None else offset + 0.0,
+                    "flags": [],
+                }
+            )
         return found
+
+
+def _geometry_dicts(measured: _Measured) -> dict[int, dict[str, Any]]:
+    """Row → the JSON object of its measured geometry (``fine`` rows): what
+    :meth:`_Measured.props` gives, from the arrays."""
+    fine = np.flatnonzero(measured.fine)
+    heavy = fine[measured.has_mass[fine]]
+    moments = dict(zip(heavy.tolist(), _stack_moments(measured.scaled[heavy])))
+    volume, mass = (measured.measure + 0.0).tolist(), (measured.mass + 0.0).tolist()  # + 0.0: no -0.0
+    implied, com = (measured.implied + 0.0).tolist(), (measured.com + 0.0).tolist()
+    scaled, has_mass = (measured.scaled + 0.0).tolist(), measured.has_mass.tolist()
+    return {
+        measured.rows[k]: {
+            "volume": volume[k],
+            "mass": mass[k] if has_mass[k] else None,
+            "center_of_mass": com[k],
+            "inertia_about_com": scaled[k] if has_mass[k] else None,
+            "moments": moments.get(k),
+            "implied_density": implied[k] if has_mass[k] else None,
+            "source": measured.sources[k],
+        }
+        for k in fine.tolist()
+    }
+
+
+def _given(ratios: np.ndarray) -> list[float | None]:
+    """Moment ratios as JSON and CSV hold them: NaN (none) and inf (past a double) as None."""
+    return [float(r) + 0.0 if math.isfinite(r) else None for r in ratios]
 
 
 def _carried(columns: LinkColumns) -> list[bool]:
