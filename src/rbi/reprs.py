@@ -175,6 +175,18 @@ def csv_text(rows: Iterable[dict[str, Any]]) -> str:
     return csv_lines((row.values() for row in flat), header=flat[0].keys())
 
 
+def pandas_module(result: object) -> Any:
+    """The pandas module, for ``result``'s ``to_pandas()``; ImportError saying how to install it."""
+    try:
+        # not at top level: importing pandas takes ~0.3 s, and only to_pandas needs it
+        import pandas
+    except ImportError:
+        raise ImportError(
+            f"{type(result).__name__}.to_pandas needs pandas, which is not installed: pip install pandas"
+        ) from None
+    return pandas
+
+
 class Result:
     """The base of rbi's results: a subclass gives :meth:`rows` (or the one table of
     :meth:`_table`), :meth:`to_dict` and, when its CSV has other rows than the one object,
@@ -208,15 +220,8 @@ class Result:
 
     def to_pandas(self) -> Any:
         """The CSV's rows as a :class:`pandas.DataFrame` (vectors as ``_x/_y/_z`` columns)."""
-        try:
-            # not at top level: importing pandas takes ~0.3 s, and only this method needs it
-            import pandas
-        except ImportError:
-            raise ImportError(
-                f"{type(self).__name__}.to_pandas needs pandas, which is not installed: pip install pandas"
-            ) from None
         rows = [flatten({k: v for k, v in row.items() if k != "warnings"}) for row in self.csv_rows()]
-        return pandas.DataFrame(rows, columns=list(rows[0]) if rows else None)
+        return pandas_module(self).DataFrame(rows, columns=list(rows[0]) if rows else None)
 
     def __rich__(self) -> Any:
         # not at top level: `rbi inertia --format json` would load rich.console too

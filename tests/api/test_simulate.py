@@ -46,7 +46,7 @@ def test_arrays_equal_the_csv_of_the_cli(run, tmp_path):
 
 def test_summary_is_what_the_cli_prints(run):
     printed = json.loads(cli_ok("simulate", BODIES / "top_bolted.yaml", *ARGS, "--format", "json").stdout)
-    summary = json.loads(json.dumps(run.summary, default=lambda v: v.tolist()))
+    summary = json.loads(json.dumps(run.to_dict()))
     assert list(summary) == list(printed)
     for key in ("final", "conserved", "stability", "initial", "steps", "tilt_max_deg", "error_estimate"):
         assert summary[key] == printed[key], key

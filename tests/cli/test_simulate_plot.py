@@ -4,13 +4,16 @@ tests/core/test_rotation.py)."""
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pytest
 
 pytest.importorskip("matplotlib")
 
 from rbi.core.rotation import rotate  # noqa: E402
-from tests.conftest import run_rbi_inprocess  # noqa: E402
+from rbi.sim import api as kernel  # noqa: E402
+from tests.conftest import BODIES, run_rbi_inprocess  # noqa: E402
 
 
 @pytest.mark.parametrize(
@@ -62,3 +65,43 @@ def test_the_intermediate_axis_of_a_free_body_flips_against_the_angular_momentum
     # ω starts almost along z, so the fixed angular momentum starts almost along the body z axis
     angle = np.degrees(np.arccos(np.clip(z_world @ z_world[0], -1, 1)))
     assert angle.max() > 170.0
+
+
+def test_simulate_plot_integrates_once(tmp_path, monkeypatch):
+    # the plot's denser samples were a second run of the whole integration
+    calls = []
+    compiled = kernel._run_compiled
+
+    def counted(*args, **kwargs):
+        calls.append(args[3].size)  # the sample times
+        return compiled(*args, **kwargs)
+
+    monkeypatch.setattr(kernel, "_run_compiled", counted)
+    args = (
+        "simulate",
+        BODIES / "top.yaml",
+        "--spin",
+        "150",
+        "--tilt",
+        "5",
+        "--duration",
+        "0.5",
+        "--samples",
+        "41",
+    )
+    plain = _json(*args, "--no-error-estimate")
+    calls.clear()
+    drawn = _json(*args, "--no-error-estimate", "--plot", tmp_path / "run.png")
+    assert (tmp_path / "run.png").stat().st_size > 0
+    assert len(calls) == 1 and calls[0] > 8000  # one integration, sampled for the plot too
+    # the run's own samples are the same bit for bit (dense output does not change the steps)
+    same = ("wall_seconds", "load_seconds", "rhs_evals")
+    assert {k: v for k, v in drawn.items() if k not in same} == {
+        k: v for k, v in plain.items() if k not in same
+    }
+
+
+def _json(*args):
+    proc = run_rbi_inprocess(*args, "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    return json.loads(proc.stdout)

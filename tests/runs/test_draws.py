@@ -31,9 +31,7 @@ def test_spread_equals_the_draws_run_one_by_one():
         )
         text = text.replace("position: [0.04, 0, 0.06]", f"position: [{x[k]!r}, 0, {z[k]!r}]")
         s = rbi.simulate(rbi.loads(text), error_estimate=False, **RUN).summary
-        figures.append(
-            [s["tilt_max_deg"], s["final"]["tilt_deg"], s["mean_precession_rate_deg_s"], *s["final"]["omega"]]
-        )
+        figures.append([s.tilt_max_deg, s.final["tilt_deg"], s.mean_precession_rate_deg_s, *s.final["omega"]])
     sd = np.std(np.array(figures), axis=0, ddof=1)
     got = [
         batch["tilt_max_deg"],

@@ -56,7 +56,7 @@ def test_the_angle_to_h_follows_the_euler_poinsot_solution():
     h = angular_momentum_body(scene, omega)
     axis = OMEGA / np.linalg.norm(OMEGA)
     angles = np.array([_angle_deg(axis, row) for row in h])
-    cone = run.summary["angle_to_h_deg"]
+    cone = run.summary.angle_to_h_deg
     assert cone["min"] == pytest.approx(angles.min(), abs=1e-8)
     assert cone["max"] == pytest.approx(angles.max(), abs=1e-8)
     assert cone["final"] == pytest.approx(angles[-1], abs=1e-8)
@@ -77,17 +77,17 @@ def test_a_symmetric_free_body_keeps_its_axis_in_a_cone_about_h(write_spec):
     rate = abs((i3 - i1) * w3 / i1)
     duration = 1.5 * math.pi / rate  # past the half turn
     run = rbi.simulate(rbi.load(spec), omega=[w1, 0.0, w3], duration=duration, samples=30001)
-    cone = run.summary["angle_to_h_deg"]
-    np.testing.assert_allclose(run.summary["spin_axis"], np.array([w1, 0.0, w3]) / math.hypot(w1, w3))
+    cone = run.summary.angle_to_h_deg
+    np.testing.assert_allclose(run.summary.spin_axis, np.array([w1, 0.0, w3]) / math.hypot(w1, w3))
     assert cone["min"] == pytest.approx(math.degrees(theta_h - theta_a), rel=1e-9)
     assert cone["max"] == pytest.approx(math.degrees(theta_h + theta_a), rel=1e-6)
-    assert run.summary["conserved"]["h_world"]["drift"] < 1e-10
+    assert run.summary.conserved["h_world"]["drift"] < 1e-10
 
 
 def test_spin_axis_given_wins_over_omega():
     run = rbi.simulate(rbi.load(BODIES / "tbar.yaml"), omega=OMEGA, spin_axis="z", duration=4.0)
-    assert run.summary["spin_axis"].tolist() == [0.0, 0.0, 1.0]
-    assert run.summary["tilt_max_deg"] > 170.0  # body z turns over as the handle spins about y
+    assert run.summary.spin_axis.tolist() == [0.0, 0.0, 1.0]
+    assert run.summary.tilt_max_deg > 170.0  # body z turns over as the handle spins about y
     out = json.loads(
         run_rbi_inprocess(
             "simulate", BODIES / "tbar.yaml", "--omega", "0.01,8,0.01", "--spin-axis", "z", "--format", "json"
@@ -99,15 +99,17 @@ def test_spin_axis_given_wins_over_omega():
 def test_a_top_given_omega_spins_about_it_and_has_no_angle_to_h():
     w = [0.0, 0.5, 150.0]
     run = rbi.simulate(rbi.load(BODIES / "top.yaml"), omega=w, duration=0.2)
-    np.testing.assert_allclose(run.summary["spin_axis"], np.array(w) / np.linalg.norm(w), atol=1e-16)
-    assert "angle_to_h_deg" not in run.summary  # a top's h is not conserved
-    assert run.summary["initial"]["tilt_deg"] == pytest.approx(math.degrees(math.atan2(0.5, 150.0)))
+    np.testing.assert_allclose(run.summary.spin_axis, np.array(w) / np.linalg.norm(w), atol=1e-16)
+    assert (
+        run.summary.angle_to_h_deg is None and "angle_to_h_deg" not in run.to_dict()
+    )  # a top's h is not conserved
+    assert run.summary.initial["tilt_deg"] == pytest.approx(math.degrees(math.atan2(0.5, 150.0)))
 
 
 def test_a_free_body_at_rest_has_no_angle_to_h():
     run = rbi.simulate(rbi.load(BODIES / "tbar.yaml"), omega=[0, 0, 0], duration=1.0)
-    assert run.summary["angle_to_h_deg"] == {"min": None, "max": None, "final": None}
-    assert run.summary["spin_axis"].tolist() == [0.0, 0.0, 1.0]  # no direction: the default axis
+    assert run.summary.angle_to_h_deg == {"min": None, "max": None, "final": None}
+    assert run.summary.spin_axis.tolist() == [0.0, 0.0, 1.0]  # no direction: the default axis
 
 
 def test_the_table_and_animate_speak_of_the_axis_of_omega(tmp_path):

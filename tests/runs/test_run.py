@@ -15,6 +15,7 @@ import pytest
 
 from rbi.errors import ArgumentError, InputError
 from rbi.runs.run import (
+    RunSettings,
     check_run_settings,
     prepare_run,
     refuse_non_finite,
@@ -79,19 +80,19 @@ def test_spin_axis_values_refused_name_the_parameter(given):
 
 
 def test_prepared_state_is_the_tilt_turned_identity_with_the_spin_about_the_axis(top):
-    run = prepare_run(top, spin=200.0, tilt_deg=30.0, tilt_axis="X", duration=0.5)
+    run = prepare_run(top, RunSettings(spin=200.0, tilt_deg=30.0, tilt_axis="X", duration=0.5))
     half = math.radians(15.0)
     assert run.q0 == pytest.approx([math.cos(half), math.sin(half), 0.0, 0.0], abs=1e-15)
     assert np.linalg.norm(run.omega0) == pytest.approx(200.0, rel=1e-15)
     assert np.cross(run.omega0, run.scene.spin_axis) == pytest.approx([0.0, 0.0, 0.0], abs=1e-12)
-    assert (run.tilt_axis, run.duration, run.tilt_deg) == ("x", 0.5, 30.0)
+    assert (run.settings.tilt_axis, run.settings.duration, run.settings.tilt_deg) == ("x", 0.5, 30.0)
 
 
 def test_omega_is_taken_as_given_in_body_axes(top):
-    run = prepare_run(top, omega=[1.0, -2.0, 3.0], duration=0.1)
+    run = prepare_run(top, RunSettings(omega=[1.0, -2.0, 3.0], duration=0.1))
     assert run.omega0 == pytest.approx([1.0, -2.0, 3.0], abs=0.0)
     with pytest.raises(ArgumentError, match="spin.*omega|omega.*spin"):
-        prepare_run(top, spin=1.0, omega=[1.0, 0.0, 0.0])
+        prepare_run(top, RunSettings(spin=1.0, omega=[1.0, 0.0, 0.0]))
 
 
 @pytest.mark.parametrize(
@@ -113,8 +114,10 @@ def test_settings_out_of_range_are_refused_by_name(settings, parameter):
 
 def test_a_run_beyond_the_step_budget_is_refused_unless_asked(top):
     with pytest.raises(ArgumentError, match="budget"):
-        prepare_run(top, spin=200.0, tilt_deg=5.0, duration=10.0, max_steps=10)
-    run = prepare_run(top, spin=200.0, tilt_deg=5.0, duration=10.0, max_steps=10, check_budget=False)
+        prepare_run(top, RunSettings(spin=200.0, tilt_deg=5.0, duration=10.0, max_steps=10))
+    run = prepare_run(
+        top, RunSettings(spin=200.0, tilt_deg=5.0, duration=10.0, max_steps=10, check_budget=False)
+    )
     assert run.budget == 10
 
 
@@ -124,8 +127,10 @@ def test_a_free_body_spinning_about_a_principal_axis_keeps_its_spin(tmp_path):
         "name: free\nparts:\n  - {name: c, shape: cylinder, mass: 2, radius: 0.1, "
         "start: [0, 0, 0], end: [0, 0, 0.3]}\n"
     )
-    run = prepare_run(load_body(spec), spin=5.0, duration=1.0).simulate(11, error_estimate=False)
-    assert not run.summary["scene"].startswith("heavy top")
+    run = prepare_run(
+        load_body(spec), RunSettings(spin=5.0, duration=1.0, samples=11, error_estimate=False)
+    ).simulate()
+    assert not run.summary.scene.startswith("heavy top")
     omega = np.column_stack([run.columns[f"w{c}"] for c in "xyz"])
     assert np.abs(omega).max(axis=0) == pytest.approx([0.0, 0.0, 5.0], abs=1e-9)
 

@@ -49,7 +49,7 @@ def test_exact_steady_precession_of_the_horizontal_gyroscope():
     assert np.max(np.abs(run.tilt_deg - 90.0)) < 1e-6
     measured = np.radians(run.precession_deg[-1] - run.precession_deg[0]) / 1.0
     assert measured == pytest.approx(rate, rel=1e-7)
-    assert run.summary["stability"]["com_position"] == "level"
+    assert run.summary.stability["com_position"] == "level"
 
 
 def test_a_fast_gyroscope_released_with_spin_alone_precesses_at_m_g_d_over_i_omega():
@@ -59,11 +59,9 @@ def test_a_fast_gyroscope_released_with_spin_alone_precesses_at_m_g_d_over_i_ome
     measured = np.polyfit(run.t, np.radians(run.precession_deg), 1)[0]
     assert measured == pytest.approx(steady_rate(spin), rel=2e-3)
     assert np.max(np.abs(run.tilt_deg - 90.0)) < 3.0  # it dips a little, it does not fall
-    assert run.summary["stability"]["gyroscopic_precession_rad_s"] == pytest.approx(
-        steady_rate(spin), rel=1e-9
-    )
-    assert "level with the pivot" in run.summary["stability"]["verdict"]
-    assert run.summary["spin_axis"].tolist() == [0.0, 1.0, 0.0]
+    assert run.summary.stability["gyroscopic_precession_rad_s"] == pytest.approx(steady_rate(spin), rel=1e-9)
+    assert "level with the pivot" in run.summary.stability["verdict"]
+    assert run.summary.spin_axis.tolist() == [0.0, 1.0, 0.0]
     assert run.omega[0].tolist() == [0.0, spin, 0.0]
 
 
@@ -112,7 +110,7 @@ def test_the_same_top_built_along_any_axis_moves_the_same(axis):
         samples=101,
         error_estimate=False,
     )
-    assert np.allclose(along.summary["spin_axis"], a, atol=1e-12)
+    assert np.allclose(along.summary.spin_axis, a, atol=1e-12)
     assert np.max(np.abs(along.tilt_deg - upright.tilt_deg)) < 1e-6
     offset = along.precession_deg - upright.precession_deg
     assert np.ptp(offset) < 1e-6
@@ -137,7 +135,7 @@ def test_the_sleeping_top_threshold_of_a_top_built_along_y_is_the_one_built_alon
         samples=2,
         error_estimate=False,
     )
-    a, b = z_built.summary["stability"], y_built.summary["stability"]
+    a, b = z_built.summary.stability, y_built.summary.stability
     assert b["sleeping_threshold_rad_s"] == pytest.approx(a["sleeping_threshold_rad_s"], rel=1e-12)
     assert b["com_position"] == a["com_position"] == "above"
     assert "unstable" in b["verdict"] and b["spin_rad_s"] == pytest.approx(150.0)
@@ -150,7 +148,7 @@ def test_the_sleeping_top_threshold_of_a_top_built_along_y_is_the_one_built_alon
         samples=2,
         error_estimate=False,
     )
-    assert hanging.summary["stability"]["com_position"] == "below"
+    assert hanging.summary.stability["com_position"] == "below"
     assert hanging.tilt_deg[0] == pytest.approx(180.0)
 
 

@@ -66,10 +66,10 @@ def animate(
     from rbi.runs.animation import write_animation  # the integrator loads only to simulate
 
     # not at top level: `rbi inertia` would load rbi.runs.run too
-    from rbi.runs.run import prepare_run
+    from rbi.runs.run import RunSettings, prepare_run
 
     loaded = loaded_body(body, "body")
     target = checked_output(path, ("html", "gif"), body)
-    prepared = prepare_run(loaded, **run)
+    prepared = prepare_run(loaded, RunSettings(**run))
     frames, tilt = write_animation(prepared, target, speed=speed, fps=fps, progress=progress)
     return Animation(target.given, frames, tilt)

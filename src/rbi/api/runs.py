@@ -3,20 +3,23 @@
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
-from typing import Any
+from dataclasses import dataclass, field, replace
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
-from rbi.reprs import QUANTITY_COLUMNS, TableRepr
+from rbi.reprs import Result, Rows, pandas_module, plain
 from rbi.text import number, vector_text
+
+if TYPE_CHECKING:  # not at run time: `rbi inertia` would load rbi.runs.run too
+    from rbi.runs.run import RunSettings, RunSummary, SimulationRun
 
 
 @dataclass(frozen=True, repr=False)
-class Trajectory(TableRepr):
+class Trajectory(Result):
     """A simulated motion, sampled at equally spaced times (spec units).
 
     Attributes:
@@ -28,9 +31,10 @@ class Trajectory(TableRepr):
         precession_deg: (N,) azimuth of that axis seen from above, degrees (unwrapped; NaN
             while the axis stands vertical).
         energy: (N,) total energy (kinetic + potential), mass·length²/s².
-        summary: what ``rbi simulate --format json`` prints for the run (initial state, final
-            state, tilt bounds, conserved quantities and their drift, error estimate, cost,
-            stability), as plain values and numpy arrays.
+        summary: the run's figures, typed (`RunSummary`: initial and final state, tilt bounds,
+            conserved quantities and their drift, error estimate, cost, stability);
+            ``to_dict()`` is what ``rbi simulate --format json`` prints. None for a
+            trajectory made by hand.
     """
 
     t: np.ndarray
@@ -39,11 +43,13 @@ class Trajectory(TableRepr):
     tilt_deg: np.ndarray
     precession_deg: np.ndarray
     energy: np.ndarray
-    summary: dict = field(default_factory=dict)
+    summary: RunSummary | None = None
     body: Body | None = field(default=None, compare=False)
     """The simulated `Body` (None for a trajectory made by hand)."""
-    omega_given: bool = field(default=False, compare=False)
-    """The run was given its ω (``omega``), not a spin about the spin axis."""
+    settings: RunSettings | None = field(default=None, compare=False)
+    """The settings it was run with (None for a trajectory made by hand)."""
+    dense: dict[str, np.ndarray] | None = field(default=None, compare=False)
+    """The same integration sampled more densely for `plot` (``plot_samples``), as columns."""
 
     def plot(self, path: Destination) -> None:
         """Draw the run at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib), as ``rbi
@@ -53,21 +59,22 @@ class Trajectory(TableRepr):
         atomically."""
         from rbi.viz.plots import plot_simulation  # matplotlib loads only to draw
 
-        body = self.body
-        if body is None:
+        body, summary = self.body, self.summary
+        if body is None or summary is None:
             raise ArgumentError("body", "plot needs the Body of the run: a Trajectory from rbi.simulate")
         free = (
             {"principal_axes": body.principal().axes, "inertia": body.inertia()} if body.pivot is None else {}
         )
+        given = self.settings is not None and any(self.settings.omega or ())
         plot_simulation(
-            self.columns(),
+            self.columns() if self.dense is None else self.dense,
             checked_output(path, ("png", "svg", "pdf"), body),
             name=body.name or body.path,
-            omega0=self.summary["initial"]["omega"],
-            nudge_deg=self.summary["initial"]["nudge_deg"],
+            omega0=summary.initial["omega"],
+            nudge_deg=summary.initial["nudge_deg"],
             energy_unit=body.unit_labels["energy"],
-            spin_axis=self.summary["spin_axis"],
-            titled_axis=None if self.omega_given else self.summary["spin_axis"],
+            spin_axis=summary.spin_axis,
+            titled_axis=None if given else summary.spin_axis,
             **free,
         )
 
@@ -79,6 +86,17 @@ class Trajectory(TableRepr):
 
         return trajectory_csv(self.columns())
 
+    def to_pandas(self) -> Any:
+        """The trajectory's columns (``t``, ``qw`` … ``energy``) as a :class:`pandas.DataFrame`,
+        one row a sample."""
+        return pandas_module(self).DataFrame(self.columns())
+
+    def to_dict(self) -> dict[str, Any]:
+        """The summary as ``rbi simulate --format json`` prints it (JSON-ready)."""
+        if self.summary is None:
+            raise ArgumentError("summary", "a Trajectory made by hand has no summary")
+        return plain(self.summary.to_dict())
+
     def columns(self) -> dict[str, np.ndarray]:
         """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""
         # not at top level: `rbi inertia` would load rbi.sim.summary too
@@ -87,27 +105,140 @@ class Trajectory(TableRepr):
         return columns_of(self.t, self.q, self.omega, self.tilt_deg, self.precession_deg, self.energy)
 
     def __repr__(self) -> str:
-        return (
-            f"<rbi.Trajectory {self.t.size} samples over {number(self.t[-1])} s, "
-            f"{self.summary.get('method', '')}>"
-        )
+        method = "" if self.summary is None else self.summary.method
+        return f"<rbi.Trajectory {self.t.size} samples over {number(self.t[-1])} s, {method}>"
 
-    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
+    def rows(self) -> list[Rows]:
+        """The motion (scene, method, final state, spin axis, tilt, precession) and the run's
+        accuracy and cost, as (quantity, unit, value) rows: the tables of ``rbi simulate``."""
         s = self.summary
-        final = s.get("final", {})
-        rows = [
-            ("scene", "", str(s.get("scene", ""))),
-            ("method", "", str(s.get("method", ""))),
+        name = self.body.name or self.body.path if self.body is not None else None
+        title = f"{name or 'trajectory'} — simulate"
+        if s is None:
+            return [Rows.quantities(title, self._sample_rows())]
+        labels = self.body.unit_labels if self.body is not None else s.units
+        return [
+            Rows.quantities(title, _motion_rows(s)),
+            Rows.quantities("Accuracy and cost", _accuracy_rows(s, labels)),
+        ]
+
+    def _sample_rows(self) -> list[tuple[str, str, str]]:
+        """The rows a trajectory made by hand can show: its samples' span and ends."""
+        return [
             ("duration", "s", number(self.t[-1])),
             ("samples", "", str(self.t.size)),
-            ("final q [w, x, y, z]", "", vector_text(self.q[-1])),
-            ("final ω (body axes)", "rad/s", vector_text(self.omega[-1])),
-            (f"final tilt of {_axis_name(s.get('spin_axis'))}", "deg", number(self.tilt_deg[-1])),
+            ("final q [w, x, y, z]", "", vector_text(self.q[-1], scale=0.0)),
+            ("final ω (body axes)", "rad/s", vector_text(self.omega[-1], scale=0.0)),
             ("tilt min … max", "deg", f"{number(np.min(self.tilt_deg))} … {number(np.max(self.tilt_deg))}"),
         ]
-        if final and "energy" in s.get("conserved", {}):
-            rows.append(("energy drift", "", number(s["conserved"]["energy"]["drift"], 2)))
-        return f"{s.get('name') or 'trajectory'} — simulate", rows, QUANTITY_COLUMNS
+
+    def with_input_uncertainty(self, draws: int, seed: int | None = None) -> Trajectory:
+        """This run with the spread the inputs written with ± give (`input_uncertainty` of its
+        body and settings) in its summary, beside the error estimate: ``rbi simulate --draws``."""
+        if self.body is None or self.summary is None or self.settings is None:
+            raise ArgumentError("body", "needs the Body of the run: a Trajectory from rbi.simulate")
+        run = {k: v for k, v in vars(self.settings).items() if k not in ("samples", "error_estimate")}
+        spread = input_uncertainty(self.body, draws=draws, seed=seed, samples=self.settings.samples, **run)
+        return replace(self, summary=replace(self.summary, input_uncertainty=spread))
+
+    def notes(self) -> list[str]:
+        """The sentences under the tables: integrator, stability, closed form."""
+        s = self.summary
+        if s is None:
+            return []
+        notes = [f"Integrator: {s.integrator}.", f"Stability: {s.stability['verdict']}."]
+        facts = s.closed_form
+        if facts and facts.get("kind") == "Lagrange top":
+            notes.append(
+                f"Closed form (Lagrange top): tilt between {number(facts['nutation_tilt_min_deg'])} and "
+                f"{number(facts['nutation_tilt_max_deg'])} deg, nutation period {number(facts['nutation_period_s'])} s, "
+                f"mean precession {number(facts['mean_precession_rate_deg_s'])} deg/s."
+            )
+        elif facts and facts.get("kind") == "asymmetric free body":
+            flips = (
+                f"; near the intermediate axis the body turns over every {number(facts['half_period_s'])} s"
+                if s.stability.get("intermediate_axis")
+                else ""
+            )
+            notes.append(
+                f"Closed form (Euler–Poinsot): ω repeats every {number(facts['omega_period_s'])} s "
+                f"(4K(m)/λ, m = {number(facts['elliptic_parameter'])}){flips}."
+            )
+        return notes
+
+
+def _motion_rows(s: RunSummary) -> list[tuple[str, str, str]]:
+    """(quantity, unit, value) rows of the motion: scene, method, final state, tilt, precession."""
+    to_h = s.angle_to_h_deg or {}
+    cone = (
+        []
+        if to_h.get("min") is None
+        else [("spin axis to h: min … max", "deg", f"{number(to_h['min'])} … {number(to_h['max'])}")]
+    )
+    rate = s.mean_precession_rate_deg_s
+    return [
+        ("scene", "", s.scene),
+        ("method", "", s.method),
+        ("duration", "s", number(s.duration)),
+        ("samples", "", str(s.samples)),
+        ("final q [w, x, y, z]", "", vector_text(s.final["q"], scale=0.0)),
+        ("final ω (body axes)", "rad/s", vector_text(s.final["omega"], scale=0.0)),
+        ("spin axis (body axes)", "", vector_text(s.spin_axis, scale=0.0)),
+        ("nudge at t=0 (--tilt)", "deg", number(s.initial["nudge_deg"])),
+        (f"final tilt of {_axis_name(s.spin_axis)}", "deg", number(s.final["tilt_deg"])),
+        ("tilt min … max (nutation)", "deg", f"{number(s.tilt_min_deg)} … {number(s.tilt_max_deg)}"),
+        (
+            "mean precession rate",
+            "deg/s",
+            "undefined (the axis was vertical)" if rate is None else number(rate),
+        ),
+        *cone,
+    ]
+
+
+CONSERVED_NAMES = {
+    "energy": "energy",
+    "h_vertical": "vertical h about pivot",
+    "h_spin": "spin h·axis",
+    "h_world": "h (world axes)",
+}
+"""How the tables name each conserved quantity."""
+
+
+def _accuracy_rows(s: RunSummary, labels: dict[str, str]) -> list[tuple[str, str, str]]:
+    """(quantity, unit, value) rows of the run's accuracy (conserved quantities' drift, error
+    estimate) and cost (steps, evaluations, time); ``labels``: unit labels by kind."""
+    accuracy = []
+    for key, item in s.conserved.items():
+        initial = item["initial"]
+        shown = vector_text(initial, scale=0.0) if np.ndim(initial) else number(initial, 10)
+        accuracy.append(
+            (CONSERVED_NAMES[key], labels[item["unit"]], f"{shown}  (drift {number(item['drift'], 2)})")
+        )
+    accuracy.append(("| |q| − 1 | largest", "", number(s.quaternion_norm_error, 2)))
+    estimate = s.error_estimate
+    if estimate and estimate.get("orientation_deg") is None:
+        accuracy.append(("error estimate", "", estimate["reference"]))
+    elif estimate:
+        accuracy.append(("error estimate: orientation", "deg", number(estimate["orientation_deg"], 2)))
+        accuracy.append(("error estimate: ω", "rad/s", number(estimate["omega_rad_s"], 2)))
+    spread = s.input_uncertainty
+    if spread:
+        accuracy += [
+            ("inputs drawn (--draws)", "", f"{spread['draws']} ({spread['failed']} failed)"),
+            ("± inputs: tilt max", "deg", number(spread["tilt_max_deg"], 2)),
+            ("± inputs: final tilt", "deg", number(spread["final_tilt_deg"], 2)),
+            ("± inputs: precession rate", "deg/s", number(spread["mean_precession_rate_deg_s"], 2)),
+            ("± inputs: final ω", "rad/s", vector_text(spread["final_omega"], 2, scale=0.0)),
+        ]
+    accuracy += [
+        ("steps (rejected)", "", f"{s.steps} ({s.rejected_steps})"),
+        ("right-hand-side evaluations", "", str(s.rhs_evals)),
+        ("integration wall time", "s", number(s.wall_seconds, 3)),
+    ]
+    if s.load_seconds > 0.05:
+        accuracy.append(("loading the compiled kernel", "s", number(s.load_seconds, 3)))
+    return accuracy
 
 
 @keywords_checked
@@ -128,6 +259,7 @@ def simulate(
     check_budget: bool = True,
     progress: Callable[[float], None] | None = None,
     spin_axis: str | Sequence[float] | None = None,
+    plot_samples: int = 0,
 ) -> Trajectory:
     """Simulate the body: a heavy top on its pivot (a spec with ``pivot``) or a torque-free body
     about its centre of mass — the run ``rbi simulate`` makes with the same settings. Returns
@@ -136,7 +268,8 @@ def simulate(
     Args:
         body: the `Body`.
         spin: initial spin about the spin axis, rad/s.
-        omega: instead of ``spin``, the initial angular velocity (3,), body axes, rad/s.
+        omega: instead of ``spin``, the initial angular velocity (3,), body axes, rad/s,
+            whose direction is then the spin axis (unless ``spin_axis`` is given).
         tilt_deg: the nudge: the body turned at t = 0 by this angle (degrees) about
             ``tilt_axis``. The tilt reported is the spin axis's from the vertical.
         tilt_axis: the world axis of the nudge, ``"x"`` or ``"y"``.
@@ -151,8 +284,10 @@ def simulate(
         error_estimate: estimate the error with a second run 1000× tighter.
         progress: called now and then with the fraction done (0…1).
         spin_axis: the body-frame axis of ``spin`` and of the reported tilt and precession:
-            ``"x"``, ``"y"``, ``"z"`` (``"-y"``: reversed) or a direction (3,); None for the
-            spec's ``spin_axis``, else `Body.spin_axis`'s default.
+            ``"x"``, ``"y"``, ``"z"`` (``"-y"``: reversed) or a direction (3,); None for
+            ``omega``'s direction, else the spec's ``spin_axis``, else `Body.spin_axis`'s default.
+        plot_samples: sample the same integration at this many times too, for
+            `Trajectory.plot` (``rbi simulate --plot`` draws 8001; default and exact methods).
 
     Raises:
         ValueError: a setting is out of range, named as this function's parameter
@@ -160,16 +295,12 @@ def simulate(
         SpecError: the run cannot be made (no mass, too many steps, overflow).
     """
     # not at top level: `rbi inertia` would load rbi.runs.run too
-    from rbi.runs.run import prepare_run
-    from rbi.sim.api import check_samples
+    from rbi.runs.run import RunSettings, prepare_run
 
-    samples = check_samples(samples)
-    run: dict[str, Any] = dict(
-        spin=spin, omega=omega, tilt_deg=tilt_deg, tilt_axis=tilt_axis, gravity=gravity
-    )
-    run |= dict(duration=duration, method=method, rtol=rtol, max_steps=max_steps, check_budget=check_budget)
-    prepared = prepare_run(loaded_body(body, "body"), spin_axis=spin_axis, **run)
-    return _trajectory(prepared.simulate(samples, error_estimate=error_estimate, progress=progress), body)
+    settings = RunSettings(spin, omega, tilt_deg, tilt_axis, gravity, duration, samples, method, rtol)
+    settings = replace(settings, max_steps=max_steps, check_budget=check_budget, spin_axis=spin_axis)
+    run = prepare_run(loaded_body(body, "body"), replace(settings, error_estimate=error_estimate))
+    return _trajectory(run.simulate(progress, plot_samples), body)
 
 
 def input_uncertainty(
@@ -182,14 +313,14 @@ def input_uncertainty(
     ``rbi simulate --draws`` adds to its JSON as ``"input_uncertainty"``."""
     # not at top level: `rbi inertia` would load rbi.runs.run too
     from rbi.runs.draws import input_uncertainty as spread
-    from rbi.runs.run import prepare_run
-    from rbi.sim.api import check_samples
+    from rbi.runs.run import RunSettings, prepare_run
 
-    return spread(prepare_run(loaded_body(body, "body"), **run), check_samples(samples), draws, seed)
+    prepared = prepare_run(loaded_body(body, "body"), RunSettings(samples=samples, **run))
+    return spread(prepared, prepared.settings.samples, draws, seed)
 
 
-def _trajectory(run: Any, body: Body) -> Trajectory:
-    """The `Trajectory` of a finished run (:class:`rbi.runs.run.SimulationRun`) of ``body``."""
+def _trajectory(run: SimulationRun, body: Body) -> Trajectory:
+    """The `Trajectory` of a finished run of ``body``."""
     columns = run.columns
     return Trajectory(
         t=columns["t"],
@@ -200,16 +331,15 @@ def _trajectory(run: Any, body: Body) -> Trajectory:
         energy=columns["energy"],
         summary=run.summary,
         body=body,
-        omega_given=run.omega_given,
+        settings=run.settings,
+        dense=run.dense,
     )
 
 
 def _axis_name(axis: Any) -> str:
-    """``body y`` for a coordinate axis of the body frame, else ``the spin axis [x, y, z]``."""
-    if axis is None:
-        return "the spin axis"
+    """``body y`` for a coordinate axis of the body frame, else ``the spin axis``."""
     axis = np.asarray(axis, dtype=float)
     for index, name in enumerate("xyz"):
         if axis[index] == 1.0:
             return f"body {name}"
-    return f"the spin axis {vector_text(axis)}"
+    return "the spin axis"

@@ -12,7 +12,7 @@ from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
 from rbi.files.output import OutputTarget
-from rbi.reprs import TableRepr
+from rbi.reprs import TableRepr, pandas_module, plain
 from rbi.text import number
 
 if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the sweep's modules load then)
@@ -91,16 +91,27 @@ class SweepTable(TableRepr):
         """One dict per run, column name → value (None where a failed run has none)."""
         return [dict(zip(self.columns, row)) for row in self._rows]
 
+    def to_dict(self) -> dict[str, Any]:
+        """What ``rbi sweep --format json`` prints (JSON-ready, less the files it wrote): name,
+        units, warnings, count, columns and, when the rows are held, the runs as objects and
+        how many failed; a study of mass properties adds each quantity's ``spread``."""
+        result: dict[str, Any] = dict(
+            name=self.name, units=self.units, warnings=self.warnings, count=self.count
+        )
+        result["columns"] = self.columns
+        if self.held:
+            result |= {"runs": self.records(), "failed": self.failed}
+        if self.spread is not None:
+            result["spread"] = self.spread
+        return plain(result)
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        """One row per run (``rbi sweep --format csv``)."""
+        return self.records()
+
     def to_pandas(self) -> Any:
         """The table as a :class:`pandas.DataFrame`, one row per run, the columns in order."""
-        try:
-            # not at top level: importing pandas takes ~0.3 s, and only this method needs it
-            import pandas
-        except ImportError:
-            raise ImportError(
-                "SweepTable.to_pandas needs pandas, which is not installed: pip install pandas"
-            ) from None
-        return pandas.DataFrame(self.records(), columns=self.columns)
+        return pandas_module(self).DataFrame(self.records(), columns=self.columns)
 
     def __repr__(self) -> str:
         return f"<rbi.SweepTable {len(self)} runs × {len(self.columns)} columns, {self.failed} failed>"

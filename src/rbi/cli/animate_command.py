@@ -7,7 +7,6 @@ from typing import Annotated
 import typer
 
 from rbi import api
-from rbi.api import output_target
 from rbi.cli.option_values import run_settings
 from rbi.cli.options import SpecFile, require_matplotlib
 from rbi.cli.render import progress_bar, say_warnings
@@ -80,12 +79,12 @@ def animate(
 
     settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
     settings |= dict(duration=duration, rtol=rtol, max_steps=max_steps, speed=speed, fps=fps)
-    target = output_target(out, "--out", ("html", "gif"), inputs=[file])
-    if target.format == "gif":
+    gif = out.lower().endswith(".gif")  # rbi.animate checks the path (and its format)
+    if gif:
         require_matplotlib("--out")
     body = api.load(file)
     say_warnings(body.warnings)
-    with progress_bar("gif", "frames", show=target.format == "gif") as progress:
-        made = api.animate(body, target, progress=progress.update if progress else None, **settings)
-    shown = f"{made.frames} {'keyframes' if target.format == 'html' else 'frames'} over {duration:g} s"
+    with progress_bar("gif", "frames", show=gif) as progress:
+        made = api.animate(body, out, progress=progress.update if progress else None, **settings)
+    shown = f"{made.frames} {'frames' if gif else 'keyframes'} over {duration:g} s"
     print(f"{terminal_safe(out)}: {shown}, largest tilt of the spin axis {made.max_tilt_deg:.3g}°")

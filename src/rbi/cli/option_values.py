@@ -19,6 +19,7 @@ OPTION_NAMES = {
     "links": "--link",
     "vary[]": "--vary {}",
     "out": "--out FILE.csv",
+    "path": "--out",
 }
 """The API's parameters whose option is not ``--`` + the name with ``-`` for ``_``."""
 

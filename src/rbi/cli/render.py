@@ -247,7 +247,7 @@ def _has_non_finite(value: Any) -> bool:
 def vector_text(v, digits: int = 6, scale: float = 0.0) -> str:
     """``[x, y, z]`` with noise below :data:`NOISE_RELATIVE` of the vector's largest entry, or
     of ``scale``, printed as 0."""
-    return text_vector(without_noise(v, scale), digits)
+    return text_vector(v, digits, scale=scale)
 
 
 # --- progress (rich is imported when a bar is first drawn) -----------------------------------

@@ -16,7 +16,7 @@ from rbi.api import DEFAULT_MAX_STEPS, SpecError, check_distinct, output_target
 from rbi.cli import tables
 from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require, require_matplotlib
-from rbi.cli.render import emit, number, progress_bar, to_csv
+from rbi.cli.render import emit, number, progress_bar
 from rbi.cli.run_options import (
     DurationOption,
     GravityOption,
@@ -207,7 +207,7 @@ def sweep(
     table = _run(source, settings | {"workers": _workers(workers, dask)}, out, resume)
     result = _result(table, out, plot, plot_target)
     if format == OutputFormat.csv:
-        sys.stdout.write(to_csv(result.get("runs", [])))
+        sys.stdout.write(table.to_csv())
         return
     emit(format.value, result, lambda: _table(result, table, file))
 
@@ -219,14 +219,9 @@ def _result(table, out: str | None, plot: str | None, plot_target) -> dict:
     # looked up per call: tests replace it
     from rbi.api import MAX_ROWS_SHOWN
 
-    result = dict(name=table.name, units=table.units, warnings=table.warnings, count=table.count)
-    result["columns"] = table.columns
-    if table.held:
-        result |= {"runs": table.records(), "failed": table.failed}
-    if out is not None:
-        result["out"] = out
-    if table.spread is not None:
-        result["spread"] = table.spread
+    result = table.to_dict()
+    if out is not None:  # before the spread, as it always was
+        result = {k: v for k, v in result.items() if k != "spread"} | {"out": out} | result
     if plot is not None:
         if not table.held:
             raise SpecError(

@@ -28,7 +28,7 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
     # looked up per call: tests replace it
     from rbi.viz.motion import MAX_KEYFRAMES, MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframes_needed
 
-    body, scene, duration = run.body, run.scene, run.duration
+    body, scene, duration = run.body, run.scene, run.settings.duration
     probe = run.integrate(MIN_KEYFRAMES)
     fastest = float(np.max(np.linalg.norm(probe.omega, axis=1)))
     needed = keyframes_needed(duration, fastest)
@@ -48,7 +48,7 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
         body.name or body.path,
         run.omega0,
         None if run.omega_given else scene.spin_axis,
-        run.tilt_deg,
+        run.settings.tilt_deg,
         limit=30,
     )
     tilts = tilt_deg(trajectory.q, scene.spin_frame)
@@ -90,11 +90,11 @@ def write_animation(
         raise ArgumentError("speed", f"must be between 0.1 and 2 (got {literal(speed)})")
     if not 1 <= fps <= 60:
         raise ArgumentError("fps", f"must be between 1 and 60 (got {literal(fps)})")
-    gif_frames = int(run.duration * fps) + 1 if target.format == "gif" else 0
+    gif_frames = int(run.settings.duration * fps) + 1 if target.format == "gif" else 0
     if gif_frames > MAX_GIF_FRAMES:
         raise ArgumentError(
             "duration",
-            f"a GIF of {run.duration:g} s at {fps} frames per second would have {gif_frames:.3g} "
+            f"a GIF of {run.settings.duration:g} s at {fps} frames per second would have {gif_frames:.3g} "
             f"frames, more than {MAX_GIF_FRAMES}: shorten {{duration}}, lower {{fps}}, or write .html",
         )
     data, trajectory, tilts = animation(run, gif_frames)

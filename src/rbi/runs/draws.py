@@ -43,7 +43,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
         )
         for k in range(draws)
     ]
-    t = sample_times(prepared.duration, samples)
+    t = sample_times(prepared.settings.duration, samples)
     out = np.empty((draws, t.size, 7))
     counts = np.zeros((draws, 4), dtype=np.int64)
     status = np.full(draws, -1, dtype=np.int64)
@@ -54,7 +54,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
         np.array([s.inertia_inv for s in scenes]),
         np.array([s.gravity_moment for s in scenes]),
         np.array([max(s.natural_rate, 0.0) for s in scenes]),
-        float(DEFAULT_RTOL if prepared.rtol is None else prepared.rtol),
+        float(DEFAULT_RTOL if prepared.settings.rtol is None else prepared.settings.rtol),
         int(prepared.budget),
         out,
         counts,

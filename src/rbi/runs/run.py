@@ -12,7 +12,7 @@ them (:class:`~rbi.errors.ArgumentError`); a spec that cannot be simulated is an
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, fields, replace
 from typing import Any
 
 import numpy as np
@@ -22,7 +22,7 @@ from rbi.core.spin_axis import default_spin_axis
 from rbi.core.validity import finite, whole
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.runs.values import require_numbers, vector_value
-from rbi.sim.api import SimulationError, check_duration, check_method, check_rtol, simulate
+from rbi.sim.api import SimulationError, check_duration, check_method, check_rtol, check_samples, simulate
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import tilt_deg
 from rbi.sim.scene import initial_state, scene_from_properties
@@ -51,37 +51,6 @@ def check_run_settings(duration: Any, tilt_axis: Any, gravity: Any, max_steps: A
     if max_steps is not None and not (whole(max_steps) and max_steps >= 1):
         raise ArgumentError("max_steps", f"must be at least 1 (got {literal(max_steps)})")
     check_rtol(rtol)
-
-
-def check_run_options(
-    method: Any,
-    spin: Any = None,
-    omega: Any = None,
-    tilt_deg: Any = 0.0,
-    duration: Any = 4.0,
-    tilt_axis: Any = "y",
-    **settings: Any,
-) -> None:
-    """Refuse the settings of one run that `simulate` and `animate` share: the method, the
-    initial spin (rad/s about the spin axis) or angular velocity ω (three numbers, body frame,
-    rad/s), the tilt (deg) and :func:`check_run_settings`'s (``gravity``, ``max_steps``,
-    ``rtol`` as keywords; other keywords, such as ``spin_axis``, are checked where they are
-    used)."""
-
-    check_method(method)
-    require_numbers(spin=spin, tilt_deg=tilt_deg)
-    if spin is not None and omega is not None:
-        raise ArgumentError(("spin", "omega"), "give one or the other, not both")
-    if spin is not None and not finite(spin):
-        raise ArgumentError("spin", f"must be a finite number (got {literal(spin)})")
-    if not finite(tilt_deg):
-        raise ArgumentError("tilt_deg", f"must be a finite number (got {literal(tilt_deg)})")
-    check_tilt(tilt_deg)
-    check_run_settings(
-        duration, tilt_axis, settings.get("gravity"), settings.get("max_steps"), settings.get("rtol")
-    )
-    if omega is not None:
-        vector_value(omega, "omega")
 
 
 def check_tilt(tilt_deg: float) -> None:
@@ -147,83 +116,190 @@ def scene_of(body: Any, gravity_si: float | None, spin_axis: str | Sequence[floa
 
 
 @dataclass(frozen=True)
+class RunSettings:
+    """The settings of one run, declared once: what :func:`rbi.simulate` takes (and
+    :func:`rbi.animate`, and each run of a sweep), passed down whole to :func:`prepare_run`.
+
+    spin (rad/s about the spin axis) or omega (the initial angular velocity, body frame, rad/s;
+    its direction is the spin axis unless ``spin_axis`` is given); tilt_deg, tilt_axis: the
+    nudge at t = 0 about the world ``"x"`` or ``"y"`` axis; gravity: m/s² (None: 9.81);
+    duration (s), samples; method, rtol (None: the method's own); max_steps (None: rbi's
+    budget), check_budget: refuse a run estimated past it; spin_axis: ``"x"``, ``"-y"`` ... or
+    a direction; error_estimate: estimate the error by a tighter second run.
+    """
+
+    spin: float | None = None
+    omega: Sequence[float] | None = None
+    tilt_deg: float = 0.0
+    tilt_axis: str = "y"
+    gravity: float | None = None
+    duration: float = 4.0
+    samples: int = 481
+    method: str = "default"
+    rtol: float | None = None
+    max_steps: int | None = None
+    check_budget: bool = True
+    spin_axis: str | Sequence[float] | None = None
+    error_estimate: bool = True
+
+    def checked(self) -> RunSettings:
+        """These settings checked (:class:`ArgumentError` naming the parameter, TypeError for
+        what is no number), the tilt axis in lower case and omega as three floats."""
+        samples = check_samples(self.samples)
+        check_method(self.method)
+        require_numbers(spin=self.spin, tilt_deg=self.tilt_deg)
+        if self.spin is not None and self.omega is not None:
+            raise ArgumentError(("spin", "omega"), "give one or the other, not both")
+        if self.spin is not None and not finite(self.spin):
+            raise ArgumentError("spin", f"must be a finite number (got {literal(self.spin)})")
+        if not finite(self.tilt_deg):
+            raise ArgumentError("tilt_deg", f"must be a finite number (got {literal(self.tilt_deg)})")
+        check_tilt(self.tilt_deg)
+        check_run_settings(self.duration, self.tilt_axis, self.gravity, self.max_steps, self.rtol)
+        omega = None if self.omega is None else vector_value(self.omega, "omega")
+        return replace(self, omega=omega, samples=samples, tilt_axis=self.tilt_axis.lower())
+
+
+OPTIONAL_FIGURES = ("angle_to_h_deg", "input_uncertainty")
+"""The summary's keys that are left out of its JSON when they do not apply."""
+
+
+@dataclass(frozen=True, kw_only=True)
+class RunSummary:
+    """What a run reports, typed: the fields of ``rbi simulate --format json`` in its order
+    (:meth:`to_dict`). Numbers in the spec's units; angles in degrees where the name says so.
+
+    name, units, warnings: the body's. scene: a heavy top or a free body; pivot (None for a free
+    body), gravity (length/s²). duration (s), samples. initial ``{t, q, omega, tilt_deg,
+    nudge_deg}``, final ``{t, q, omega, tilt_deg}``; spin_axis (unit, body frame). method,
+    integrator, rtol, steps, rejected_steps, rhs_evals, wall_seconds, load_seconds: the cost.
+    tilt_min_deg, tilt_max_deg, mean_precession_rate_deg_s (and _rad_s; None while the axis
+    stood vertical). angle_to_h_deg ``{min, max, final}``: a free body's spin axis to its
+    angular momentum (None for a top). conserved (each ``{initial, drift, unit}``),
+    max_relative_drift, quaternion_norm_error, stability ``{kind, verdict, ...}``, closed_form
+    (or None), error_estimate (or None), input_uncertainty (the spread ``--draws`` gives, or None).
+    """
+
+    name: str | None
+    units: dict[str, str]
+    warnings: list[str]
+    scene: str
+    pivot: np.ndarray | None
+    gravity: float
+    duration: float
+    samples: int
+    initial: dict[str, Any]
+    spin_axis: np.ndarray
+    final: dict[str, Any]
+    method: str
+    integrator: str
+    rtol: float | None
+    steps: int
+    rejected_steps: int
+    rhs_evals: int
+    wall_seconds: float
+    load_seconds: float
+    tilt_min_deg: float
+    tilt_max_deg: float
+    mean_precession_rate_deg_s: float | None
+    mean_precession_rate_rad_s: float | None
+    angle_to_h_deg: dict[str, float | None] | None = None
+    conserved: dict[str, dict[str, Any]]
+    max_relative_drift: float
+    quaternion_norm_error: float
+    stability: dict[str, Any]
+    closed_form: dict[str, Any] | None
+    error_estimate: dict[str, Any] | None
+    input_uncertainty: dict[str, Any] | None = None
+
+    def to_dict(self) -> dict[str, Any]:
+        """The fields by name, in order (numpy arrays as they are; a top has no
+        ``angle_to_h_deg``, a run without ``--draws`` no ``input_uncertainty``)."""
+        out = {f.name: getattr(self, f.name) for f in fields(self)}
+        return {k: v for k, v in out.items() if v is not None or k not in OPTIONAL_FIGURES}
+
+
+@dataclass(frozen=True)
 class SimulationRun:
     """A finished run: ``trajectory`` (:class:`rbi.sim.api.Trajectory`), ``columns`` (the CSV's
-    columns by name, :data:`rbi.sim.summary.CSV_COLUMNS`) and ``summary`` (plain values and
-    numpy arrays: what `rbi simulate --format json` prints, without ``out``); omega_given: as
-    :class:`PreparedRun`'s."""
+    columns by name, :data:`rbi.sim.summary.CSV_COLUMNS`), ``summary`` (:class:`RunSummary`),
+    the ``settings`` it was run with and ``dense``: the same integration sampled for a plot
+    (columns as ``columns``), when asked."""
 
     trajectory: Any
     columns: dict[str, np.ndarray]
-    summary: dict[str, Any]
-    omega_given: bool = False
+    summary: RunSummary
+    settings: RunSettings
+    dense: dict[str, np.ndarray] | None = None
 
 
 @dataclass(frozen=True)
 class PreparedRun:
     """Everything a run needs, checked.
 
-    body: the :class:`~rbi.spec.load.LoadedBody` (spec units). scene: the
-    :class:`~rbi.sim.scene.Scene` (pivot or free body, gravity in the spec's length unit/s²).
-    q0: initial orientation [w, x, y, z], body → world. omega0: initial angular velocity, body
-    frame, rad/s. tilt_deg, tilt_axis: the nudge, the body's turn at t=0 about a world axis
-    (the tilt is then the angle of the scene's spin axis from the vertical). duration (s),
-    method, rtol (None: the method's own), budget: most integration steps. omega_given: the
-    run was given a non-zero ω (not a spin about the axis), whose direction is its spin axis
-    unless one was given.
+    body: the :class:`~rbi.spec.load.LoadedBody` (spec units). settings: :class:`RunSettings`,
+    checked. scene: the :class:`~rbi.sim.scene.Scene` (pivot or free body, gravity in the
+    spec's length unit/s²). q0: initial orientation [w, x, y, z], body → world (the nudge
+    applied: the tilt is then the angle of the scene's spin axis from the vertical). omega0:
+    initial angular velocity, body frame, rad/s. budget: most integration steps.
     """
 
     body: Any
+    settings: RunSettings
     scene: Any
     q0: np.ndarray
     omega0: np.ndarray
-    tilt_deg: float
-    tilt_axis: str
-    duration: float
-    method: str
-    rtol: float | None
     budget: int
-    omega_given: bool = False
 
-    def integrate(self, samples: int, progress: Progress | None = None) -> Any:
-        """The trajectory (:class:`rbi.sim.api.Trajectory`) at ``samples`` equally spaced times,
-        from the kernel; :class:`InputError` (naming the spec) when the integration fails."""
+    @property
+    def omega_given(self) -> bool:
+        """The run was given a non-zero ω (not a spin about the axis)."""
+        return any(self.settings.omega or ())
 
+    def integrate(self, samples: int, progress: Progress | None = None, dense: int = 0) -> Any:
+        """The trajectory (:class:`rbi.sim.api.Trajectory`) at ``samples`` equally spaced times
+        (and ``dense`` more, see :func:`rbi.sim.api.simulate`), from the kernel;
+        :class:`InputError` (naming the spec) when the integration fails."""
+
+        settings = self.settings
         try:
             return simulate(
                 self.scene,
                 self.q0,
                 self.omega0,
-                self.duration,
+                settings.duration,
                 samples,
-                method=self.method,
-                rtol=self.rtol,
+                method=settings.method,
+                rtol=settings.rtol,
                 progress=progress,
                 max_steps=self.budget,
+                dense=dense,
             )
         except SimulationError as exc:
             raise InputError(f"{self.body.path}: {exc}") from None
 
-    def simulate(
-        self, samples: int, *, error_estimate: bool = True, progress: Progress | None = None
-    ) -> SimulationRun:
-        """Integrate, summarise and (unless ``error_estimate`` is False or the method is the
-        closed form) estimate the error by a tighter second run. A trajectory that overflowed is
+    def simulate(self, progress: Progress | None = None, dense: int = 0) -> SimulationRun:
+        """Integrate at the settings' samples (and ``dense`` more for a plot, in the same
+        integration), summarise and (unless the settings say no or the method is the closed
+        form) estimate the error by a tighter second run. A trajectory that overflowed is
         refused with :class:`InputError` (absurd spin or inertia)."""
 
-        trajectory = self.integrate(samples, progress)
+        settings = self.settings
+        trajectory = self.integrate(settings.samples, progress, dense)
         try:
             figures = summarize(self.scene, trajectory, self.q0, self.omega0)
             figures["error_estimate"] = (
                 estimate(self.scene, trajectory, self.q0, self.omega0, max_steps=self.budget)
-                if error_estimate and self.method != "exact"
+                if settings.error_estimate and settings.method != "exact"
                 else None
             )
         except SimulationError as exc:
             raise InputError(f"{self.body.path}: {exc}") from None
         columns = sample_columns(self.scene, trajectory)
         refuse_non_finite(self.body.path, columns)
-        return SimulationRun(trajectory, columns, self._head(trajectory) | figures, self.omega_given)
+        fine = None if trajectory.dense is None else sample_columns(self.scene, trajectory.dense)
+        summary = RunSummary(**self._head(trajectory), **figures)
+        return SimulationRun(trajectory, columns, summary, settings, fine)
 
     def _head(self, trajectory: Any) -> dict[str, Any]:
         """The summary's first entries: the body, the scene and the initial state."""
@@ -236,52 +312,34 @@ class PreparedRun:
             "scene": SCENE_NAMES[bool(scene.pivoted)],
             "pivot": scene.pivot,
             "gravity": scene.gravity,
-            "duration": self.duration,
+            "duration": float(self.settings.duration),
             "samples": int(trajectory.t.size),
             "initial": {
                 "t": 0.0,
                 "q": self.q0,
                 "omega": self.omega0,
                 "tilt_deg": float(tilt_deg(self.q0, scene.spin_frame)[0]),
-                "nudge_deg": self.tilt_deg,
+                "nudge_deg": float(self.settings.tilt_deg),
             },
         }
 
 
-def prepare_run(
-    body: Any,
-    *,
-    spin: float | None = None,
-    omega: Sequence[float] | None = None,
-    tilt_deg: float = 0.0,
-    tilt_axis: str = "y",
-    gravity: float | None = None,
-    duration: float = 4.0,
-    method: str = "default",
-    rtol: float | None = None,
-    max_steps: int | None = None,
-    check_budget: bool = True,
-    spin_axis: str | Sequence[float] | None = None,
-) -> PreparedRun:
-    """Check the settings (:func:`check_run_options`) and set up the run of a loaded ``body``.
-    A run estimated to need more integration steps than the budget (``max_steps``, default
-    :data:`rbi.sim.budget.DEFAULT_MAX_STEPS`) is refused with :class:`ArgumentError` when
-    ``check_budget``. ``spin``: rad/s about the spin axis (``spin_axis``, see
-    :func:`body_spin_axis`); ``omega``: the initial angular velocity instead (body frame,
-    rad/s), whose direction is then the spin axis unless ``spin_axis`` is given; ``tilt_deg``:
-    the nudge about the world ``tilt_axis``; ``gravity``: m/s²."""
+def prepare_run(body: Any, settings: RunSettings) -> PreparedRun:
+    """Check the ``settings`` (:meth:`RunSettings.checked`) and set up the run of a loaded
+    ``body``. A run estimated to need more integration steps than the budget (``max_steps``,
+    default :data:`rbi.sim.budget.DEFAULT_MAX_STEPS`) is refused with :class:`ArgumentError`
+    when ``check_budget``. An ω without a spin axis given turns about its own direction (the
+    contract's rule); a spin turns about :func:`body_spin_axis`."""
 
-    check_run_options(
-        method, spin, omega, tilt_deg, duration, tilt_axis, gravity=gravity, max_steps=max_steps, rtol=rtol
-    )
-    given = None if omega is None else vector_value(omega, "omega")
-    # the contract: an ω without a spin axis given turns about its own direction
-    scene = scene_of(body, gravity, spin_axis if spin_axis is not None or not any(given or ()) else given)
-    w0 = given if given is not None else [float(spin or 0.0) * float(c) for c in scene.spin_axis]
-    q0, omega0 = initial_state(tilt_deg, w0, tilt_axis.lower())
-    budget = DEFAULT_MAX_STEPS if max_steps is None else int(max_steps)
-    if method != "exact" and check_budget:
-        needed = estimated_steps(scene, omega0, duration, method, rtol)
+    settings = settings.checked()
+    given = settings.omega
+    axis = settings.spin_axis if settings.spin_axis is not None or not any(given or ()) else given
+    scene = scene_of(body, settings.gravity, axis)
+    w0 = given if given is not None else [float(settings.spin or 0.0) * float(c) for c in scene.spin_axis]
+    q0, omega0 = initial_state(settings.tilt_deg, w0, settings.tilt_axis)
+    budget = DEFAULT_MAX_STEPS if settings.max_steps is None else int(settings.max_steps)
+    if settings.method != "exact" and settings.check_budget:
+        needed = estimated_steps(scene, omega0, settings.duration, settings.method, settings.rtol)
         if needed > budget:
             raise ArgumentError(
                 (),
@@ -289,19 +347,7 @@ def prepare_run(
                 f"the budget of {budget:.2g}: shorten {{duration}}, lower the spin, loosen {{rtol}}, or raise "
                 "the budget with {max_steps} (or {check_budget=False} to try anyway)",
             )
-    return PreparedRun(
-        body=body,
-        scene=scene,
-        q0=q0,
-        omega0=omega0,
-        tilt_deg=float(tilt_deg),
-        tilt_axis=tilt_axis.lower(),
-        duration=float(duration),
-        method=method,
-        rtol=rtol,
-        budget=budget,
-        omega_given=any(given or ()),
-    )
+    return PreparedRun(body, settings, scene, q0, omega0, budget)
 
 
 def refuse_non_finite(path: str, columns: dict[str, np.ndarray]) -> None:

@@ -6,7 +6,7 @@ from __future__ import annotations
 import numbers
 import time
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any
 
 import numpy as np
@@ -70,6 +70,12 @@ class Trajectory:
     integrator: str = ""
     load_seconds: float = 0.0
     quaternion_norm_error: float = 0.0
+    dense: Trajectory | None = None
+    """The same integration sampled more densely (``simulate``'s ``dense``), or None."""
+
+    def at(self, rows: np.ndarray) -> Trajectory:
+        """The samples ``rows`` (indices) of this trajectory, with its counts."""
+        return replace(self, t=self.t[rows], q=self.q[rows], omega=self.omega[rows])
 
 
 def sample_times(duration: float, samples: int) -> np.ndarray:
@@ -139,6 +145,7 @@ def simulate(
     rtol: float | None = None,
     progress: Callable[[float], None] | None = None,
     max_steps: int | None = None,
+    dense: int = 0,
 ) -> Trajectory:
     """Integrate the scene from ``(q0, omega0)`` at t = 0 and sample it at
     :func:`sample_times` ``(duration, samples)``.
@@ -147,20 +154,29 @@ def simulate(
     :data:`METHODS`. rtol: the method's tolerance (default :data:`DEFAULT_RTOL` for
     ``default``, 1e-8 for the scipy methods; ignored by ``exact``). progress: called with the
     fraction done, now and then, by the default method. max_steps: the default method stops
-    with :class:`SimulationError` once it has taken more accepted steps than this.
+    with :class:`SimulationError` once it has taken more accepted steps than this. dense: with
+    more samples than ``samples``, the same integration is also sampled at ``dense`` equally
+    spaced times (a plot's), as the result's ``dense`` (the default and exact methods, whose
+    dense output does not change the steps: the ``samples`` are the same bit for bit).
     """
     validate_run(duration, samples, rtol, method)
     q0 = np.asarray(q0, dtype=float)
     q0 = q0 / np.linalg.norm(q0)
     omega0 = np.asarray(omega0, dtype=float).reshape(3)
     t = sample_times(duration, samples)
+    fine = sample_times(duration, dense)
+    both = np.union1d(t, fine) if method in ("default", "exact") and fine.size > t.size else t
     if method == "default":
-        return _run_compiled(
-            scene, q0, omega0, t, DEFAULT_RTOL if rtol is None else rtol, progress, max_steps
+        run = _run_compiled(
+            scene, q0, omega0, both, DEFAULT_RTOL if rtol is None else rtol, progress, max_steps
         )
-    if method == "exact":
-        return _run_exact(scene, q0, omega0, t)
-    return _run_scipy(scene, q0, omega0, t, method, SCIPY_DEFAULT_RTOL if rtol is None else rtol)
+    elif method == "exact":
+        run = _run_exact(scene, q0, omega0, both)
+    else:
+        run = _run_scipy(scene, q0, omega0, t, method, SCIPY_DEFAULT_RTOL if rtol is None else rtol)
+    if both is t:
+        return run
+    return replace(run.at(np.searchsorted(both, t)), dense=run.at(np.searchsorted(both, fine)))
 
 
 def _run_compiled(
