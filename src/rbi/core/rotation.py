@@ -47,12 +47,20 @@ def without_rounding_noise(R: np.ndarray) -> np.ndarray:
     return R
 
 
+def numbers(values: ArrayLike) -> np.ndarray:
+    """``values`` as an array of floats, or of complex numbers when they are complex: the closed
+    forms that take it then carry a complex step (``x + ih``, whose imaginary part comes out as
+    h times the derivative, exact to rounding: :mod:`rbi.spec.uncertain`)."""
+    array = np.asarray(values)
+    return array if array.dtype.kind == "c" else array.astype(float, copy=False)
+
+
 def vector_length(v: ArrayLike) -> float | np.ndarray:
     """Euclidean length of ``v`` (or of each row of a stack) computed without squaring the
     components directly: they are divided by the largest |component| first, so a vector of
     components near 1e200 or 1e-200 has its length (not inf or 0). Inf only when the length
     itself exceeds the largest double."""
-    v = np.asarray(v, dtype=float)
+    v = numbers(v)
     largest = np.max(np.abs(v), axis=-1)
     safe = np.where(largest > 0, largest, 1.0)
     with np.errstate(over="ignore"):

@@ -17,7 +17,7 @@ from numpy.typing import ArrayLike
 
 from rbi.core import polygon
 from rbi.core.mass import MassProperties
-from rbi.core.rotation import unit_vector, vector_length
+from rbi.core.rotation import numbers, unit_vector, vector_length
 
 
 def axis_between(start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, float]:
@@ -38,10 +38,10 @@ def axisymmetric_inertia(axial: ArrayLike, transverse: ArrayLike, axis: ArrayLik
     Also for many bodies at once: ``axial`` and ``transverse`` of shape (n,) with ``axis``
     (n, 3) give (n, 3, 3).
     """
-    u = np.asarray(axis, dtype=float)
+    u = numbers(axis)
     uu = u[..., :, None] * u[..., None, :]
-    axial = np.asarray(axial, dtype=float)[..., None, None]
-    transverse = np.asarray(transverse, dtype=float)[..., None, None]
+    axial = numbers(axial)[..., None, None]
+    transverse = numbers(transverse)[..., None, None]
     return axial * uu + transverse * (np.eye(3) - uu)
 
 
@@ -196,7 +196,7 @@ def cone_center_of_mass(apex: ArrayLike, axis: ArrayLike, height: Numbers) -> np
     """``apex + 3/4 h u``: a cone's centre of mass, a quarter of the height ``h`` above the base,
     with ``axis`` the unit vector ``u`` from the apex to the base. Also for many cones at once:
     ``apex`` and ``axis`` (n, 3), ``height`` (n,)."""
-    return np.asarray(apex, dtype=float) + np.asarray(0.75 * height)[..., None] * axis
+    return numbers(apex) + np.asarray(0.75 * height)[..., None] * axis
 
 
 # --- solid circular cylinder ---------------------------------------------------------------
@@ -245,8 +245,8 @@ def _turned(principal_moments: ArrayLike, rotation: np.ndarray | None) -> np.nda
     """``R diag(moments) Rᵀ``: a part's inertia built along its own axes, expressed in body
     axes. ``rotation`` maps part axes to body axes (None: they coincide). Moments (n, 3) give
     (n, 3, 3)."""
-    moments = np.asarray(principal_moments, dtype=float)
-    diagonal = np.zeros((*moments.shape, 3))
+    moments = numbers(principal_moments)
+    diagonal = np.zeros((*moments.shape, 3), dtype=moments.dtype)
     diagonal[..., [0, 1, 2], [0, 1, 2]] = moments
     if rotation is None:
         return diagonal
@@ -257,7 +257,7 @@ def _turned(principal_moments: ArrayLike, rotation: np.ndarray | None) -> np.nda
 
 def _edges(size: ArrayLike) -> tuple[Numbers, Numbers, Numbers]:
     """``a, b, c`` of ``size = [a, b, c]`` as floats, or the columns of sizes (n, 3)."""
-    edges = np.asarray(size, dtype=float)
+    edges = numbers(size)
     if edges.ndim == 1:
         a, b, c = edges.tolist()
         return a, b, c

@@ -192,6 +192,12 @@ def _replaced(node: Any, steps: tuple[Any, ...], value: Any) -> Any:
     return node.model_copy(update={head: new})
 
 
+def batched(part: Any, inputs: list[UncertainInput]) -> bool:
+    """Whether ``part`` is built by the whole-array closed forms of
+    :data:`rbi.spec.translate_batch.BUILDERS` (which also take complex numbers)."""
+    return type(part) in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in inputs)
+
+
 def part_stack(
     spec: models.BodySpec, index: int, inputs: list[UncertainInput], values: np.ndarray, path: str
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -201,7 +207,7 @@ def part_stack(
     part = spec.parts[index]
     sign = -1.0 if getattr(part, "subtract", False) else 1.0
     kind = type(part)
-    if kind in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in inputs):
+    if batched(part, inputs):
         columns = Columns(part, len(values), {i.steps: values[:, k] for k, i in enumerate(inputs)})
         with np.errstate(all="ignore"):
             mass, com, inertia = BUILDERS[kind](columns, spec.units)
@@ -233,6 +239,12 @@ def by_part(inputs: tuple[UncertainInput, ...]) -> dict[int, list[int]]:
     return found
 
 
+def _flat(stack: tuple[np.ndarray, np.ndarray, np.ndarray]) -> np.ndarray:
+    """(n, 13): mass, centre of mass and inertia of a part's stack side by side."""
+    mass, com, inertia = stack
+    return np.concatenate([mass[:, None], com, inertia.reshape(-1, 9)], axis=1)
+
+
 def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Per uncertain input of the body ``loaded`` (a :class:`~rbi.spec.translate.LoadedBody`):
     the index of its part and the derivatives of that part's mass (k,), centre of mass (k, 3)
@@ -244,14 +256,20 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, n
     for index, chosen in by_part(inputs).items():
         group = [inputs[n] for n in chosen]
         nominal = np.array([i.value for i in group])
+        scale = np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
+        if batched(loaded.spec.parts[index], group):  # complex step: x + ih gives h ∂f/∂x exactly
+            h = 1e-20 * scale
+            f = _flat(part_stack(loaded.spec, index, group, nominal + 1j * np.diag(h), loaded.path))
+            derivative[chosen] = f.imag / h[:, None]
+            continue
         # powers of 2: value ± step is exact, so a part's linear dependence differentiates exactly
-        h = 2.0 ** np.round(np.log2(1e-2 * np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])))
+        h = 2.0 ** np.round(np.log2(1e-2 * scale))
         rows = np.repeat(nominal[None, :], len(group) * 6, axis=0).reshape(len(group), 3, 2, -1)
         for j in range(len(group)):
             rows[j, :, 0, j] += STEPS * h[j]
             rows[j, :, 1, j] -= STEPS * h[j]
-        mass, com, inertia = part_stack(loaded.spec, index, group, rows.reshape(-1, len(group)), loaded.path)
-        f = np.concatenate([mass[:, None], com, inertia.reshape(-1, 9)], axis=1).reshape(len(group), 3, 2, 13)
+        stack = part_stack(loaded.spec, index, group, rows.reshape(-1, len(group)), loaded.path)
+        f = _flat(stack).reshape(len(group), 3, 2, 13)
         d = (f[:, :, 0] - f[:, :, 1]) / (2.0 * STEPS[None, :, None] * h[:, None, None])
         fine, finer = (4.0 * d[:, 1] - d[:, 0]) / 3.0, (4.0 * d[:, 2] - d[:, 1]) / 3.0
         derivative[chosen] = (16.0 * finer - fine) / 15.0
