@@ -139,3 +139,19 @@ def test_show_and_animate_draw_step_parts(tmp_path, kit):
     assert '"kind": "mesh"' in html or '"kind":"mesh"' in html
     animation = run_rbi_inprocess("animate", spec, "--out", tmp_path / "kit-motion.html", "--spin", "5")
     assert animation.returncode == 0, animation.stderr
+
+
+def test_the_json_listing_is_the_imports_to_dict_with_the_file(kit, monkeypatch):
+    """`rbi import FILE.step --format json` = `rbi.api.import_step(FILE).to_dict()` with "file"
+    first; the CSV rows are its csv_rows(): the box of 10 × 20 × 30 mm at 1000 kg/m³ weighs
+    6 g, the Ø10 mm ball π/6 g."""
+    from rbi import api
+
+    monkeypatch.chdir(kit.parent)
+    proc = run_rbi_inprocess("import", "kit.step", "--format", "json")
+    imported = api.import_step("kit.step")
+    assert json.loads(proc.stdout) == json.loads(
+        json.dumps({"file": "kit.step", **imported.to_dict()}, default=list)
+    )
+    masses = sorted(row["mass"] for row in imported.csv_rows())
+    assert masses == pytest.approx(sorted([6e-3, math.pi / 6 * 1e-3]), rel=1e-9)

@@ -149,29 +149,7 @@ def _import_step(file: str, link, out: str | None, format: OutputFormat, density
 
 def _emit_step_listing(format: OutputFormat, file: str, imported) -> None:
     """The solids with their mass properties at the spec's density, SI."""
-
-    density = imported.density
-    rows = [
-        {
-            "name": solid.name,
-            "index": i,
-            "volume": solid.volume,
-            "mass": density * solid.volume,
-            "center_of_mass": solid.props.center_of_mass,
-            "inertia_about_com": density * solid.props.inertia_about_com,
-            "integration_error": solid.integration_error,
-        }
-        for i, solid in enumerate(imported.solids)
-    ]
-    result = {
-        "file": file,
-        "format": "step",
-        "file_unit": imported.unit,
-        "units": {"length": "m", "mass": "kg"},
-        "density": density,
-        "solids": rows,
-    }
-    emit(format.value, result, lambda: None, csv_rows=rows)
+    emit(format.value, {"file": file, **imported.to_dict()}, lambda: None, csv_rows=imported.csv_rows())
 
 
 def _targets(robot, out: str, source: str):

@@ -46,6 +46,32 @@ class StepImport:
             )
         return comment(*lines) + dump(self.spec)
 
+    def csv_rows(self) -> list[dict[str, Any]]:
+        """Each solid at the spec's density, SI: what ``rbi import FILE.step --format csv``
+        prints, one row a solid."""
+        return [
+            {
+                "name": solid.name,
+                "index": i,
+                "volume": solid.volume,
+                "mass": self.density * solid.volume,
+                "center_of_mass": solid.props.center_of_mass,
+                "inertia_about_com": self.density * solid.props.inertia_about_com,
+                "integration_error": solid.integration_error,
+            }
+            for i, solid in enumerate(self.solids)
+        ]
+
+    def to_dict(self) -> dict[str, Any]:
+        """What ``rbi import FILE.step --format json`` prints, less ``"file"``."""
+        return {
+            "format": "step",
+            "file_unit": self.unit,
+            "units": {"length": "m", "mass": "kg"},
+            "density": self.density,
+            "solids": self.csv_rows(),
+        }
+
 
 def _fill(density: float | None, material: str | None) -> float | str:
     """What fills every solid: ``material``, ``density`` (kg/m³) or the placeholder density;
