@@ -137,3 +137,42 @@ def test_parts_carry_each_parts_own_uncertainty():
     assert "uncertainty" not in json.loads(
         run_rbi_inprocess("parts", BODIES / "top_bolted.yaml", "-f", "json").stdout
     )
+
+
+def _with_plus_minus(raw: dict) -> dict:
+    """The spec with the first number of its first part that has one ± 1 % (its mass or numeric
+    density) or ± 0.001 (a coordinate)."""
+    for part in raw["parts"]:
+        for field in ("mass", "density"):
+            if isinstance(part.get(field), (int, float)):
+                part[field] = f"{part[field]} ± 1%"
+                return raw
+        for field in ("position", "center", "start", "apex"):
+            if field in part:
+                part[field][0] = f"{part[field][0]} ± 0.001"
+                return raw
+    raise AssertionError(f"no number to tolerance in {raw['parts']}")
+
+
+@pytest.mark.parametrize("spec", sorted(p.name for p in BODIES.glob("*.yaml") if p.name != "flange.yaml"))
+def test_every_bundled_body_with_plus_minus(tmp_path, spec):
+    import shutil
+
+    import yaml
+
+    for other in BODIES.iterdir():  # meshes, clouds and sub-assemblies beside the spec
+        shutil.copy(other, tmp_path / other.name)
+    path = tmp_path / spec
+    path.write_text(
+        yaml.safe_dump(_with_plus_minus(yaml.safe_load((BODIES / spec).read_text())), allow_unicode=True)
+    )
+    for args in (("inertia",), ("principal",), ("parts",), ("momentum", "--omega", "0,0,1")):
+        out = json.loads(run_rbi_inprocess(*args, path, "-f", "json").stdout)
+        assert "uncertainty" in out, args
+        for fmt in ("table", "csv"):
+            assert run_rbi_inprocess(*args, path, "-f", fmt).returncode == 0
+    budget = json.loads(run_rbi_inprocess("uncertainty", path, "-f", "json").stdout)
+    assert any(q["u"] > 0 for q in budget["quantities"])
+    assert (
+        run_rbi_inprocess("uncertainty", path, "--method", "monte-carlo", "--samples", "2000").returncode == 0
+    )
