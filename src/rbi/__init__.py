@@ -19,6 +19,8 @@ Layers (each imports only those below it): ``formats`` (readers of outside files
 commands and rendering).
 """
 
+from importlib import import_module
+
 from rbi.names import PUBLIC
 
 __version__ = "0.1.0"
@@ -30,18 +32,9 @@ _API_NAMES = frozenset(PUBLIC)
 
 def __getattr__(name: str):
     if name in _API_NAMES:
-        # names whose modules use the standard library only come without rbi.api (and numpy):
-        # the CLI's start-up and its error lines stay cheap
-        if name in ("SpecError", "ArgumentError"):
-            from rbi import errors as module
-        elif name == "outside_paths_allowed":
-            from rbi.formats import paths as module
-        elif name == "visible":
-            from rbi import text as module
-        else:
-            # not at top level: `rbi --help` would load rbi.api too
-            from rbi import api as module
-        value = getattr(module, name)
+        # rbi.api imports each name's module on first use: the CLI's error lines and `rbi --help`
+        # load neither numpy nor the spec's modules
+        value = getattr(import_module("rbi.api"), name)
         globals()[name] = value
         return value
     raise AttributeError(f"module 'rbi' has no attribute {name!r}")

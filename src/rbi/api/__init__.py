@@ -22,97 +22,107 @@ The modules: :mod:`~rbi.api.body` (load a spec, a `Body` and its results), :mod:
 
 from __future__ import annotations
 
+from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
-from rbi.api.body import LENGTH_UNITS as LENGTH_UNITS
-from rbi.api.body import MASS_UNITS as MASS_UNITS
-from rbi.api.body import Body as Body
-from rbi.api.body import load as load
-from rbi.api.body import loads as loads
-from rbi.api.body import spec_schema as spec_schema
-from rbi.api.body import unit_vector as unit_vector
-from rbi.api.body import validate as validate
-from rbi.api.pictures import Animation as Animation
-from rbi.api.pictures import animate as animate
-from rbi.api.pictures import show as show
-from rbi.api.results import Dynamics as Dynamics
-from rbi.api.results import Momentum as Momentum
-from rbi.api.results import Part as Part
-from rbi.api.results import Principal as Principal
-from rbi.api.robots import ImportedLink as ImportedLink
-from rbi.api.robots import RobotImport as RobotImport
-from rbi.api.robots import audit as audit
-from rbi.api.robots import import_robot as import_robot
-from rbi.api.runs import Trajectory as Trajectory
-from rbi.api.runs import input_uncertainty as input_uncertainty
-from rbi.api.runs import simulate as simulate
-from rbi.api.sweeps import SweepTable as SweepTable
-from rbi.api.sweeps import sweep as sweep
-from rbi.core.mass import MassProperties as MassProperties
-from rbi.core.rotation import angle_is_kept as angle_is_kept
-from rbi.core.rotation import turn_lost_to_rounding as turn_lost_to_rounding
-from rbi.errors import ArgumentError as ArgumentError
-from rbi.errors import SpecError as SpecError
-from rbi.files.output import check_distinct as check_distinct
-from rbi.files.output import output_target as output_target
-from rbi.files.output import write_output as write_output
-from rbi.formats.paths import outside_paths_allowed as outside_paths_allowed
-from rbi.memory import collector_paused as collector_paused
 from rbi.names import CLI_TOOLS, PUBLIC
-from rbi.spec.checks import Check as Check
-from rbi.spec.points import reference_choices as reference_choices
-from rbi.spec.points import reference_name as reference_name
-from rbi.text import csv_lines as csv_lines
-from rbi.text import number as number
-from rbi.text import plus_minus as plus_minus
-from rbi.text import vector_text as vector_text
-from rbi.text import visible as visible
 
-if TYPE_CHECKING:  # served by __getattr__ on first use (the sweep's and audit's modules load then)
+if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads none of them
+    from rbi.api.body import LENGTH_UNITS as LENGTH_UNITS
+    from rbi.api.body import MASS_UNITS as MASS_UNITS
+    from rbi.api.body import Body as Body
+    from rbi.api.body import load as load
+    from rbi.api.body import loads as loads
+    from rbi.api.body import spec_schema as spec_schema
+    from rbi.api.body import unit_vector as unit_vector
+    from rbi.api.body import validate as validate
+    from rbi.api.pictures import Animation as Animation
+    from rbi.api.pictures import animate as animate
+    from rbi.api.pictures import show as show
+    from rbi.api.results import Dynamics as Dynamics
+    from rbi.api.results import Momentum as Momentum
+    from rbi.api.results import Part as Part
+    from rbi.api.results import Principal as Principal
+    from rbi.api.robots import ImportedLink as ImportedLink
+    from rbi.api.robots import RobotImport as RobotImport
+    from rbi.api.robots import audit as audit
+    from rbi.api.robots import import_robot as import_robot
+    from rbi.api.runs import Trajectory as Trajectory
+    from rbi.api.runs import input_uncertainty as input_uncertainty
+    from rbi.api.runs import simulate as simulate
+    from rbi.api.sweeps import SweepTable as SweepTable
+    from rbi.api.sweeps import sweep as sweep
+    from rbi.core.mass import MassProperties as MassProperties
+    from rbi.core.rotation import angle_is_kept as angle_is_kept
+    from rbi.core.rotation import turn_lost_to_rounding as turn_lost_to_rounding
+    from rbi.errors import ArgumentError as ArgumentError
+    from rbi.errors import SpecError as SpecError
+    from rbi.files.output import check_distinct as check_distinct
+    from rbi.files.output import output_target as output_target
+    from rbi.files.output import write_output as write_output
+    from rbi.formats.paths import outside_paths_allowed as outside_paths_allowed
+    from rbi.memory import collector_paused as collector_paused
     from rbi.robot.audit import AuditReport as AuditReport
     from rbi.sim.budget import DEFAULT_MAX_STEPS as DEFAULT_MAX_STEPS
+    from rbi.spec.checks import Check as Check
     from rbi.spec.from_step import import_step as import_step
+    from rbi.spec.points import reference_choices as reference_choices
+    from rbi.spec.points import reference_name as reference_name
     from rbi.sweeps.execute import available_cores as available_cores
     from rbi.sweeps.plan import Grid as Grid
     from rbi.sweeps.plan import Normal as Normal
     from rbi.sweeps.plan import Uniform as Uniform
     from rbi.sweeps.study import MAX_ROWS_SHOWN as MAX_ROWS_SHOWN
+    from rbi.text import csv_lines as csv_lines
+    from rbi.text import number as number
+    from rbi.text import plus_minus as plus_minus
+    from rbi.text import vector_text as vector_text
+    from rbi.text import visible as visible
 
-# listed once, in rbi.names (`import rbi` reads it without this module); the names imported here
-# only to be offered are imported `as` themselves, which tells linters they are re-exported
 __all__ = list(PUBLIC + CLI_TOOLS)  # a call: griffe reads no names here
+
+_HOME = {
+    **dict.fromkeys(
+        ("load", "loads", "Body", "validate", "spec_schema", "unit_vector", "LENGTH_UNITS", "MASS_UNITS"),
+        "rbi.api.body",
+    ),
+    **dict.fromkeys(("Principal", "Part", "Momentum", "Dynamics"), "rbi.api.results"),
+    **dict.fromkeys(("simulate", "Trajectory", "input_uncertainty"), "rbi.api.runs"),
+    **dict.fromkeys(("sweep", "SweepTable"), "rbi.api.sweeps"),
+    **dict.fromkeys(("audit", "import_robot", "RobotImport", "ImportedLink"), "rbi.api.robots"),
+    **dict.fromkeys(("show", "animate", "Animation"), "rbi.api.pictures"),
+    **dict.fromkeys(("SpecError", "ArgumentError"), "rbi.errors"),
+    **dict.fromkeys(("visible", "number", "plus_minus", "csv_lines", "vector_text"), "rbi.text"),
+    **dict.fromkeys(("output_target", "check_distinct", "write_output"), "rbi.files.output"),
+    **dict.fromkeys(("angle_is_kept", "turn_lost_to_rounding"), "rbi.core.rotation"),
+    **dict.fromkeys(("reference_name", "reference_choices"), "rbi.spec.points"),
+    **dict.fromkeys(("Grid", "Normal", "Uniform"), "rbi.sweeps.plan"),
+    "outside_paths_allowed": "rbi.formats.paths",
+    "MassProperties": "rbi.core.mass",
+    "Check": "rbi.spec.checks",
+    "collector_paused": "rbi.memory",
+    "AuditReport": "rbi.robot.audit",
+    "import_step": "rbi.spec.from_step",  # read a STEP file as `rbi import FILE.step` does
+    "DEFAULT_MAX_STEPS": "rbi.sim.budget",  # most integration steps of a run unless max_steps says otherwise
+    "MAX_ROWS_SHOWN": "rbi.sweeps.study",  # most runs a sweep holds in memory (more: in its out file only)
+    "available_cores": "rbi.sweeps.execute",  # the cores this process may use: sweep's default workers
+}
+"""Where each name of rbi.api lives: its module is imported when the name is first asked for,
+so `rbi inertia` loads neither the audit's modules nor the sweep's, and `import rbi.api` alone
+loads none."""
+
+_LOOKED_UP_PER_CALL = ("MAX_ROWS_SHOWN", "available_cores")  # tests replace them in their modules
 
 
 def __getattr__(name: str) -> Any:
-    # imported on first use: `rbi inertia` loads neither the audit's modules nor the sweep's
-    if name == "AuditReport":
-        # not at top level: `rbi inertia` would load rbi.robot.audit too
-        from rbi.robot.audit import AuditReport
+    home = _HOME.get(name)
+    if home is None:
+        raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")
+    value = getattr(import_module(home), name)
+    if name not in _LOOKED_UP_PER_CALL:
+        globals()[name] = value
+    return value
 
-        return AuditReport
-    if name == "import_step":  # read a STEP file as `rbi import FILE.step` does
-        # not at top level: `rbi inertia` would load rbi.spec.from_step too
-        from rbi.spec.from_step import import_step
 
-        return import_step
-    if name in ("Grid", "Normal", "Uniform"):
-        # not at top level: `rbi inertia` would load rbi.sweeps.plan too
-        from rbi.sweeps import plan
-
-        return getattr(plan, name)
-    if name == "DEFAULT_MAX_STEPS":  # most integration steps of a run unless max_steps says otherwise
-        # not at top level: `rbi inertia` would load rbi.sim.budget too
-        from rbi.sim.budget import DEFAULT_MAX_STEPS
-
-        return DEFAULT_MAX_STEPS
-    if name == "MAX_ROWS_SHOWN":  # most runs a sweep holds in memory (more: in its out file only)
-        # looked up per call: tests replace it
-        from rbi.sweeps.study import MAX_ROWS_SHOWN
-
-        return MAX_ROWS_SHOWN
-    if name == "available_cores":  # the cores this process may use: sweep's default workers
-        # looked up per call: tests replace it
-        from rbi.sweeps.execute import available_cores
-
-        return available_cores
-    raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_HOME))

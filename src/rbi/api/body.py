@@ -34,14 +34,22 @@ from rbi.core.inertia import moment_about_axis, principal_axes, radii_of_gyratio
 from rbi.core.mass import MassProperties, inertia_shares
 from rbi.core.rotation import angle_is_kept, compose_world_rotations, turn_lost_to_rounding
 from rbi.errors import ArgumentError, SpecError, literal
+from rbi.formats.inertial_xml import FORMATS, export_xml
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
+from rbi.formats.robot_paths import parse_package_paths
 from rbi.reprs import QUANTITY_COLUMNS, TableRepr
 from rbi.runs.values import vector_value
+from rbi.spec import load as spec_load
+from rbi.spec.assembly import expanded
 from rbi.spec.checks import run_checks
+from rbi.spec.load import file_problems
+from rbi.spec.models import StepPart, body_spec_json_schema
 from rbi.spec.points import NO_PIVOT, reference_choices, reference_name
+from rbi.spec.uncertain import linear, momentum_uncertainty, part_uncertainties
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.spec.units import convert_body
+from rbi.spec.volumes import part_volume
 from rbi.text import number, vector_text
 
 SPEC_TEXT_LABELS = ("<stdin>", "<string>", "<dict>")
@@ -77,9 +85,6 @@ def load(
         ValueError: ``source`` is spec text, not a path (it holds a newline or starts with
             ``{`` or ``[``, and no such file exists): read text with `loads`.
     """
-    # not at top level: `rbi audit` would load rbi.spec.load too
-    from rbi.spec import load as spec_load
-
     if isinstance(source, Mapping):
         spec_load.check_plain_data(dict(source), "<dict>")
         return _body(
@@ -108,9 +113,6 @@ def load(
 def loads(text: str | bytes, *, allow_outside_paths: bool | None = None) -> Body:
     """Read a body spec from YAML or JSON text (named ``<string>`` in messages; files it names
     are looked for in the current folder). Otherwise as `load`."""
-    # not at top level: `rbi audit` would load rbi.spec.load too
-    from rbi.spec import load as spec_load
-
     if isinstance(text, bytes):
         try:
             text = text.decode("utf-8")
@@ -153,12 +155,6 @@ def validate(
     SDF, MJCF) gives every link whose inertia is not physical; ``package_paths`` (``{NAME:
     DIR}`` or ``["NAME=DIR", ...]``) finds its ``package://`` meshes. SpecError for a bad
     ``package_paths``."""
-    # not at top level: `rbi inertia` would load rbi.formats.robot_paths too
-    from rbi.formats.robot_paths import parse_package_paths
-
-    # not at top level: `rbi audit` would load rbi.spec.load too
-    from rbi.spec.load import file_problems
-
     packages = parse_package_paths(package_paths)
     if isinstance(paths, (str, os.PathLike)):
         paths = [paths]
@@ -170,9 +166,6 @@ def validate(
 def spec_schema() -> dict[str, Any]:
     """The JSON Schema (draft 2020-12) of a body spec, as ``rbi schema`` prints it (for
     editors: see docs/schema.md)."""
-    # not at top level: `rbi audit` would load rbi.spec.models too
-    from rbi.spec.models import body_spec_json_schema
-
     return body_spec_json_schema()
 
 
@@ -257,8 +250,7 @@ class Body(TableRepr):
         the body's symmetry axis (exactly two equal principal moments about the pivot, or about
         the centre of mass of a free body), pointing from the pivot towards the centre of mass
         (or with its largest component positive), else body z."""
-        # not at top level: `rbi inertia` would load rbi.runs.run too
-        from rbi.runs.run import body_spin_axis
+        from rbi.runs.run import body_spin_axis  # not at top level: `rbi inertia` would load the integrator
 
         return body_spin_axis(self._loaded)
 
@@ -384,12 +376,6 @@ class Body(TableRepr):
         with the body's totals), as ``rbi parts`` lists them; ``expand``: each
         sub-assembly (``shape: assembly``) listed as its own parts, named ``ASSEMBLY/PART``
         (``ASSEMBLY[i]/PART`` for the copies of a pattern), placed in the body."""
-        # not at top level: `rbi audit` would load rbi.spec.assembly and rbi.spec.volumes too
-        from rbi.spec.assembly import expanded
-        from rbi.spec.models import StepPart
-        from rbi.spec.uncertain import part_uncertainties
-        from rbi.spec.volumes import part_volume
-
         loaded = self._loaded
         rows = expanded(loaded, expand)
         shares = inertia_shares([element for _, _, element, _ in rows], loaded.props)
@@ -457,8 +443,6 @@ class Body(TableRepr):
     ) -> dict[str, Any] | None:
         """`momentum`'s ``uncertainty`` (:func:`rbi.spec.uncertain.momentum_uncertainty`), or
         None without ±."""
-        from rbi.spec.uncertain import momentum_uncertainty
-
         return momentum_uncertainty(self._loaded, point, w, v) if self._uncertain else None
 
     @property
@@ -493,8 +477,6 @@ class Body(TableRepr):
         ``moments`` (about ``about``) and ``axes_deg`` (each principal axis's angular
         uncertainty, degrees; None for an axis of a pair of moments closer than 3 combined
         uncertainties); None when the spec writes no number with ±."""
-        from rbi.spec.uncertain import linear
-
         if not self._uncertain:
             return None
         found = linear(self._loaded, self.point(about))
@@ -647,9 +629,6 @@ class Body(TableRepr):
             diagonal: MJCF only: principal moments (``diaginertia``) and the principal frame
                 (``quat``) instead of ``fullinertia``.
         """
-
-        # not at top level: `rbi inertia` would load rbi.formats.inertial_xml too
-        from rbi.formats.inertial_xml import FORMATS, export_xml
 
         if to not in FORMATS:
             raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {literal(to)}")

@@ -7,11 +7,13 @@ import functools
 import inspect
 import os
 from collections.abc import Callable
-from typing import ParamSpec, TypeVar
+from typing import TYPE_CHECKING, ParamSpec, TypeVar
 
-from rbi.api.body import Body
 from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import OutputTarget, output_target
+
+if TYPE_CHECKING:  # a Body is known by its files_read: `rbi audit` loads no spec modules
+    from rbi.api.body import Body
 
 Destination = str | os.PathLike[str] | OutputTarget
 """Where a picture or a file of rows goes: a path (its extension gives the format), or a target
@@ -29,9 +31,10 @@ def checked_output(
     `Body` any file it was read from (`Body.files_read`: a target checked before the body was
     loaded is checked against them now, its refusal naming its option). ArgumentError naming
     the parameter ``name`` when it may not be written there."""
-    reads = read.files_read if isinstance(read, Body) else [os.fsdecode(os.fspath(read))]
+    is_body = hasattr(read, "files_read")
+    reads = read.files_read if is_body else [os.fsdecode(os.fspath(read))]  # type: ignore[union-attr, arg-type]
     if isinstance(path, OutputTarget):
-        if isinstance(read, Body) and not path.is_stdout:
+        if is_body and not path.is_stdout:
             output_target(path.given, path.option, (path.format,), inputs=reads)
         return path
     given = path_text(path, name)

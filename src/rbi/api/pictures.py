@@ -64,9 +64,7 @@ def animate(
             motion needs more keyframes (or GIF frames) than a file may hold.
         SpecError: ``path`` cannot be written; the run cannot be made."""
     from rbi.runs.animation import write_animation  # the integrator loads only to simulate
-
-    # not at top level: `rbi inertia` would load rbi.runs.run too
-    from rbi.runs.run import RunSettings, prepare_run
+    from rbi.runs.run import RunSettings, prepare_run  # the integrator: not for `rbi show`
 
     loaded = loaded_body(body, "body")
     target = checked_output(path, ("html", "gif"), body)

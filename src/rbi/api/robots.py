@@ -15,7 +15,13 @@ from rbi.core.rotation import matrix_to_quaternion
 from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import write_output
 from rbi.formats.paths import outside_paths_are_allowed
+from rbi.formats.robot_files import link_problems, link_spec, read_robot
+from rbi.formats.robot_paths import parse_package_paths
 from rbi.reprs import Result, Rows, plain
+from rbi.robot import audit as run_audit
+from rbi.robot.fix import check_out_not_read
+from rbi.robot.specs import robot_spec
+from rbi.spec.yaml_writer import comment, dump
 from rbi.text import number, vector_text
 
 if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the audit's modules load then)
@@ -66,9 +72,6 @@ def audit(
         SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
             read, or repeats a link name; ``out`` cannot be written.
     """
-    # not at top level: `rbi inertia` would load rbi.robot.audit too
-    from rbi.robot import audit as run_audit
-
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
     path = path_text(robot_file)
@@ -86,7 +89,6 @@ def _write_fixed(target: Any, report: AuditReport) -> None:
     """The fixed copy written at ``target`` (never a file the robot reads: an include, a mesh
     or the robot file itself), and the report's fix told where."""
     # not at top level: `rbi inertia` would load rbi.robot.fix too
-    from rbi.robot.fix import check_out_not_read
 
     check_out_not_read(target.path, report.model)
     write_output(target, report.fix.content)
@@ -138,10 +140,6 @@ class RobotImport(Result):
     def robot_yaml(self) -> str:
         """The whole robot as one spec (YAML text under a comment header): one custom part per
         link with mass, placed at the zero configuration (MJCF: ``qpos0``), SI units."""
-        # not at top level: `rbi inertia` would load rbi.robot.specs and rbi.spec.yaml_writer too
-        from rbi.robot.specs import robot_spec
-        from rbi.spec.yaml_writer import comment, dump
-
         model = self.model
         spec, left_out = robot_spec(model)
         frame = (
@@ -229,10 +227,6 @@ def import_robot(
         SpecError: the file cannot be read or is malformed; no link has mass properties.
         ValueError: a name in ``links`` names no link with an ``<inertial>``.
     """
-    # not at top level: `rbi inertia` would load rbi.formats.robot_files and rbi.formats.robot_paths too
-    from rbi.formats.robot_files import link_problems, read_robot
-    from rbi.formats.robot_paths import parse_package_paths
-
     packages = parse_package_paths(package_paths)
     robot = read_robot(path_text(robot_file), packages)
     chosen = _chosen_links(robot, _link_names(links))
@@ -269,10 +263,6 @@ def _link_yaml(robot: Any, link: Any) -> str:
     """One link's spec: a comment header, then the spec written by the YAML dumper. Names from
     the file are data: escaped in the comment, quoted and escaped by the dumper where they hold
     anything but visible characters (:mod:`rbi.spec.yaml_writer`)."""
-    # not at top level: `rbi inertia` would load rbi.formats.robot_files and rbi.spec.yaml_writer too
-    from rbi.formats.robot_files import link_spec
-    from rbi.spec.yaml_writer import comment, dump
-
     source = {"urdf": "URDF", "sdf": "SDF", "mjcf": "MJCF"}[robot.format]
     header = comment(
         f"rbi import of {os.path.basename(robot.path)}, {link.label}, from its {source} <inertial>:",

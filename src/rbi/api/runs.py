@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -12,10 +12,10 @@ from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
 from rbi.reprs import Result, Rows, pandas_module, plain
+from rbi.runs.draws import input_uncertainty as spread
+from rbi.runs.run import RunSettings, RunSummary, SimulationRun, prepare_run, trajectory_csv
+from rbi.sim.summary import columns_of
 from rbi.text import number, vector_text
-
-if TYPE_CHECKING:  # not at run time: `rbi inertia` would load rbi.runs.run too
-    from rbi.runs.run import RunSettings, RunSummary, SimulationRun
 
 
 @dataclass(frozen=True, repr=False)
@@ -81,9 +81,6 @@ class Trajectory(Result):
     def to_csv(self) -> str:
         """The trajectory as the CSV ``rbi simulate --out`` writes (columns t, qw, qx, qy, qz, wx,
         wy, wz, tilt_deg, precession_deg, energy; full precision)."""
-        # not at top level: `rbi inertia` would load rbi.runs.run too
-        from rbi.runs.run import trajectory_csv
-
         return trajectory_csv(self.columns())
 
     def to_pandas(self) -> Any:
@@ -99,9 +96,6 @@ class Trajectory(Result):
 
     def columns(self) -> dict[str, np.ndarray]:
         """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""
-        # not at top level: `rbi inertia` would load rbi.sim.summary too
-        from rbi.sim.summary import columns_of
-
         return columns_of(self.t, self.q, self.omega, self.tilt_deg, self.precession_deg, self.energy)
 
     def __repr__(self) -> str:
@@ -294,9 +288,6 @@ def simulate(
             (``duration: must be ...``), or the run is estimated to exceed ``max_steps``.
         SpecError: the run cannot be made (no mass, too many steps, overflow).
     """
-    # not at top level: `rbi inertia` would load rbi.runs.run too
-    from rbi.runs.run import RunSettings, prepare_run
-
     settings = RunSettings(spin, omega, tilt_deg, tilt_axis, gravity, duration, samples, method, rtol)
     settings = replace(settings, max_steps=max_steps, check_budget=check_budget, spin_axis=spin_axis)
     run = prepare_run(loaded_body(body, "body"), replace(settings, error_estimate=error_estimate))
@@ -311,10 +302,6 @@ def input_uncertainty(
     runs with the inputs drawn (``seed``: the same draws again), all in one call of the batched
     kernel; ``run``: `simulate`'s settings (``spin``, ``tilt_deg``, ``duration`` ...). What
     ``rbi simulate --draws`` adds to its JSON as ``"input_uncertainty"``."""
-    # not at top level: `rbi inertia` would load rbi.runs.run too
-    from rbi.runs.draws import input_uncertainty as spread
-    from rbi.runs.run import RunSettings, prepare_run
-
     prepared = prepare_run(loaded_body(body, "body"), RunSettings(samples=samples, **run))
     return spread(prepared, prepared.settings.samples, draws, seed)
 

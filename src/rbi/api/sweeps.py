@@ -13,6 +13,8 @@ from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
 from rbi.files.output import OutputTarget
 from rbi.reprs import TableRepr, pandas_module, plain
+from rbi.spec.load import read_spec
+from rbi.sweeps.study import Study, SweepSettings, check_settings
 from rbi.text import number
 
 if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the sweep's modules load then)
@@ -184,9 +186,6 @@ def sweep(
         ValueError, TypeError: a setting or a variation is invalid (named as this function's
             parameter), or the sweep has more than 100,000 runs and no ``out``.
     """
-    # not at top level: `rbi inertia` would load rbi.sweeps.study too
-    from rbi.sweeps.study import Study, SweepSettings, check_settings
-
     grid = (spin, tilt_deg, _variations(vary), runs, seed, duration, samples, rtol, gravity, tilt_axis)
     settings = SweepSettings(*grid, max_steps, workers, dask, mass_properties, check_budget, spin_axis)
     check_settings(settings)
@@ -229,9 +228,6 @@ def _spec_source(body: Any) -> tuple[str, Any, bytes | None]:
     dict or standard input): a `Body`'s, or a spec file read once (a sweep validates each varied
     spec, not the file as it stands, and hashes those bytes for ``resume``)."""
     if isinstance(body, (str, os.PathLike)):
-        # not at top level: `rbi audit` would load rbi.spec.load too
-        from rbi.spec.load import read_spec
-
         path = os.fsdecode(os.fspath(body))
         return (path, *read_spec(path))
     return loaded_body(body, "body").path, body._raw, body._spec_bytes

@@ -10,6 +10,7 @@ from typing import Any
 
 from rbi.errors import ArgumentError, literal
 from rbi.reprs import Result, Rows
+from rbi.spec.uncertain import QUANTITIES, budget
 from rbi.text import number
 
 METHODS = ("linear", "monte-carlo")
@@ -91,8 +92,6 @@ def budget_of(
 ) -> UncertaintyBudget:
     """`Body.uncertainty`'s work: the arguments checked (ArgumentError naming the parameter),
     then the budget."""
-    from rbi.spec.uncertain import QUANTITIES, budget
-
     names = [of] if isinstance(of, str) else of
     if names is not None:
         unknown = [q for q in names if q not in QUANTITIES]
