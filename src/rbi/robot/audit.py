@@ -201,7 +201,7 @@ class AuditReport(Result):
     def total_moments(self) -> np.ndarray:
         """The whole robot's principal moments about its centre of mass, kg·m², ascending (the
         table's and the JSON's ``total.moments``)."""
-        return _moments(self.total)
+        return np.array(_stack_moments(self.total.inertia_about_com[None])[0])
 
     @property
     def has_error(self) -> bool:
@@ -388,24 +388,14 @@ def _link_dict(each: LinkAudit, declared_moments, geometry_moments) -> dict[str,
     }
 
 
-def _moments(properties: MassProperties) -> np.ndarray:
-    """``properties.moments`` (kg·m², ascending) without the principal axes it also works out:
-    the eigenvalues of :func:`rbi.core.inertia.symmetric_eigen`, which for an inertia with no
-    products are its diagonal, sorted (a million-link report asks for two per link)."""
-    I = properties.inertia_about_com
-    diagonal = np.diagonal(I)
-    if not np.any(I[_OFF_DIAGONAL]) and np.all(np.abs(diagonal) < 1e300):
-        return diagonal[np.argsort(diagonal, kind="stable")]
-
-    return symmetric_eigen(I)[0]
-
-
 _OFF_DIAGONAL = ~np.eye(3, dtype=bool)
 
 
 def _stack_moments(stack: np.ndarray) -> list[list[float]]:
-    """:func:`_moments` of each inertia of a (k, 3, 3) stack, as lists: the diagonal ones sorted
-    on the stack at once (the same stable sort of the same numbers), the others one by one."""
+    """The principal moments (ascending, kg·m²) of each inertia of a (k, 3, 3) stack, as lists,
+    without the axes: an inertia with no products has its diagonal as moments, sorted on the
+    stack at once (a million-link report asks for two per link); the others'
+    :func:`rbi.core.inertia.symmetric_eigen` eigenvalues."""
     diagonal = np.diagonal(stack, axis1=1, axis2=2)
     sortable = ~np.any(stack[:, _OFF_DIAGONAL], axis=1) & np.all(np.abs(diagonal) < 1e300, axis=1)
     ordered = np.take_along_axis(diagonal, np.argsort(diagonal, axis=1, kind="stable"), axis=1)
