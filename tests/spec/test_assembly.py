@@ -169,11 +169,11 @@ def test_nested_three_deep_across_units_rotations_and_patterns(tmp_path):
     top = rbi.load(tmp_path / "top.yaml")
     assert_same(top, rbi.load(write(tmp_path, "flat.yaml", ("m", "kg"), written(flat))))
     rows = expanded(top._loaded)  # what `rbi parts --expand` lists: the same parts, in the same order
-    assert len(rows) == len(flat) == 1 + 4 * (1 + 1 + 2 * 3)
-    names = [r[0] for r in rows]
+    assert len(rows.names) == len(rows.elements) == len(flat) == 1 + 4 * (1 + 1 + 2 * 3)
+    names = rows.names
     assert names[:4] == ["ballast", "a[0]/ballast", "a[0]/b/ballast", "a[0]/b/c[0]/plate"]
     assert names[-1] == "a[3]/b/c[1]/bolt"
-    for (_, _, element, _), part in zip(rows, rbi.load({"parts": written(flat)}).parts()):
+    for element, part in zip(rows.elements, rbi.load({"parts": written(flat)}).parts()):
         assert element.mass == pytest.approx(part.mass, rel=1e-13)
         np.testing.assert_allclose(element.center_of_mass, part.center_of_mass, rtol=1e-12, atol=1e-14)
 
@@ -187,8 +187,8 @@ def test_a_measured_mass_scales_mass_and_inertia_and_keeps_the_centre(tmp_path):
     np.testing.assert_allclose(b.center_of_mass, a.center_of_mass, rtol=1e-15)
     np.testing.assert_allclose(b.inertia(), a.inertia() * 8.25 / a.mass, rtol=1e-14)
     rows = expanded(b._loaded)
-    assert [r[0] for r in rows] == ["s/plate", "s/shaft", "s/bolt"]
-    np.testing.assert_allclose([r[2].mass for r in rows], [2.0 * 3, 0.7 * 3, 0.05 * 3], rtol=1e-14)
+    assert rows.names == ["s/plate", "s/shaft", "s/bolt"]
+    np.testing.assert_allclose(rows.elements.mass, [2.0 * 3, 0.7 * 3, 0.05 * 3], rtol=1e-14)
 
 
 def test_files_read_names_the_sub_assemblies(tmp_path):
@@ -276,3 +276,26 @@ def test_a_sub_assemblys_warnings_are_the_bodys(tmp_path):
     warnings = rbi.load(tmp_path / "top.yaml").warnings
     assert len(warnings) == 1 and warnings[0].startswith(f"{tmp_path / 'ball.yaml'}: parts[0] (ball): ")
     assert "millimetres" in warnings[0]
+
+
+def test_one_file_used_from_files_in_other_units_is_listed_in_each_ones(tmp_path):
+    write(tmp_path, "leaf.yaml", ("m", "kg"), LEAF)
+    leaf = {"name": "leaf", "shape": "assembly", "file": "leaf.yaml"}
+    write(tmp_path, "mm.yaml", ("mm", "g"), [leaf])
+    top = rbi.load(
+        write(
+            tmp_path, "top.yaml", ("cm", "kg"), [leaf, {"name": "mm", "shape": "assembly", "file": "mm.yaml"}]
+        )
+    )
+    rows = expanded(top._loaded)
+    assert rows.names == [
+        "leaf/plate",
+        "leaf/shaft",
+        "leaf/bolt",
+        "mm/leaf/plate",
+        "mm/leaf/shaft",
+        "mm/leaf/bolt",
+    ]
+    np.testing.assert_allclose(rows.elements.mass[:3], rows.elements.mass[3:], rtol=1e-14)
+    np.testing.assert_allclose(rows.elements.center_of_mass[:3], rows.elements.center_of_mass[3:], rtol=1e-14)
+    assert rows.elements.mass.sum() == pytest.approx(top.mass, rel=1e-14)

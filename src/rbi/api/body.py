@@ -378,11 +378,13 @@ class Body(TableRepr):
         (``ASSEMBLY[i]/PART`` for the copies of a pattern), placed in the body."""
         loaded = self._loaded
         rows = expanded(loaded, expand)
-        shares = inertia_shares([element for _, _, element, _ in rows], loaded.props)
-        whole = self._uncertain and len(rows) == len(loaded.elements)  # not a sub-assembly's parts
-        spreads = part_uncertainties(loaded) if whole else [None] * len(rows)
+        shares = inertia_shares(list(rows.elements), loaded.props)
+        whole = self._uncertain and len(rows.names) == len(loaded.elements)  # not a sub-assembly's parts
+        spreads = part_uncertainties(loaded) if whole else [None] * len(rows.names)
         out = []
-        for (name, part, element, length), share, spread in zip(rows, shares, spreads):
+        for name, part, element, length, share, spread in zip(
+            rows.names, rows.parts, rows.elements, rows.lengths, shares, spreads
+        ):
             volume = None if part is None else part_volume(part)
             if volume is not None and getattr(part, "subtract", False):
                 volume = -volume  # a hole takes its volume away, as its mass

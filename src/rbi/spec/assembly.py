@@ -4,7 +4,7 @@ and translated as one part each by :func:`rbi.spec.translate.assembly_element`."
 
 from __future__ import annotations
 
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -15,38 +15,67 @@ from rbi.spec.pattern import copy_motions
 from rbi.spec.translate import rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M, convert_body
 
-MAX_EXPANDED = 1_000_000
+MAX_EXPANDED = 100_000
 """Most parts ``rbi parts --expand`` lists (patterns of patterns multiply)."""
 
 
-def expanded(loaded, expand: bool = True) -> list[tuple[str, Any, MassProperties, float]]:
-    """``(name, part, element, length)`` of every part of a :class:`~rbi.spec.translate.LoadedBody`
-    in file order (``part`` None for the point cloud), each sub-assembly replaced by its parts
-    when ``expand``, named ``ASSEMBLY/PART`` (``ASSEMBLY[i]/PART`` for the copies of a pattern)
-    and placed in the body (its units); ``length`` is the part's spec's length unit in the body's
-    (for its volume). InputError past :data:`MAX_EXPANDED` parts."""
+class Expanded(NamedTuple):
+    """The parts of a body, one a row: ``names``, ``parts`` (the spec models; None for the point
+    cloud), ``elements`` (a stack, body frame and units) and ``lengths`` (each part's spec's
+    length unit in the body's, for its volume)."""
+
+    names: list[str]
+    parts: list[Any]
+    elements: MassProperties
+    lengths: list[float]
+
+
+def expanded(loaded, expand: bool = True, seen: dict | None = None) -> Expanded:
+    """The parts of a :class:`~rbi.spec.translate.LoadedBody` in file order, each sub-assembly
+    replaced by its parts when ``expand``, named ``ASSEMBLY/PART`` (``ASSEMBLY[i]/PART`` for the
+    copies of a pattern) and placed in the body. InputError past :data:`MAX_EXPANDED` parts.
+    ``seen``: the sub-assemblies expanded so far, by file and units (each is listed once)."""
+    if expand and seen is None and _count(loaded) > MAX_EXPANDED:
+        raise InputError(f"{loaded.path}: more than {MAX_EXPANDED:,} parts to list")
     spec = loaded.spec
     parts = list(spec.parts) if spec is not None else []
     ratio = (
         1.0 if spec is None else LENGTH_UNITS_IN_M[spec.units.length] / LENGTH_UNITS_IN_M[loaded.length_unit]
     )
-    rows: list[tuple[str, Any, MassProperties, float]] = []
+    rows = Expanded([], [], MassProperties.concatenate(list(loaded.elements)), [])
+    pieces = []
     for i, element in enumerate(loaded.elements):
         part = parts[i] if i < len(parts) else None
         name = loaded.part_names[i] or f"parts[{i}]"
         if not expand or not isinstance(part, models.AssemblyPart):
-            rows.append((name, part, element, ratio))
+            rows.names.append(name)
+            rows.parts.append(part)
+            rows.lengths.append(ratio)
+            pieces.append(rows.elements[i : i + 1])
             continue
-        sub = convert_body(part._loaded, loaded.length_unit, loaded.mass_unit)
-        inner = expanded(sub)
-        R, position = rotation_matrix(part.rotation), np.asarray(part.position, dtype=float)
-        motions = copy_motions(part.pattern)
-        scale = 1.0 if part.mass is None else element.mass / (sub.props.mass * len(motions))
-        if len(rows) + len(inner) * len(motions) > MAX_EXPANDED:
-            raise InputError(f"{loaded.path}: more than {MAX_EXPANDED:,} parts to list")
-        for k, (Rc, tc) in enumerate(motions):
+        seen, key = {} if seen is None else seen, (id(part._loaded), loaded.length_unit, loaded.mass_unit)
+        if key not in seen:  # in this body's units
+            seen[key] = expanded(convert_body(part._loaded, *key[1:]), True, seen)
+        inner, motions = seen[key], copy_motions(part.pattern)
+        scale = 1.0 if part.mass is None else element.mass / (inner.elements.mass.sum() * len(motions))
+        placed = inner.elements.scaled(scale).transformed(
+            rotation_matrix(part.rotation), np.multiply(part.position, ratio)
+        )
+        for k, (R, t) in enumerate(motions):
             copy = name if len(motions) == 1 else f"{name}[{k}]"
-            for sub_name, sub_part, sub_element, length in inner:
-                placed = sub_element.scaled(scale).transformed(R, position * ratio)
-                rows.append((f"{copy}/{sub_name}", sub_part, placed.transformed(Rc, tc * ratio), length))
-    return rows
+            rows.names.extend(f"{copy}/{each}" for each in inner.names)
+            rows.parts.extend(inner.parts)
+            rows.lengths.extend(inner.lengths)
+            pieces.append(placed.transformed(R, t * ratio))
+    return rows._replace(elements=MassProperties.concatenate(pieces))
+
+
+def _count(loaded) -> int:
+    """How many rows :func:`expanded` gives, counted until past :data:`MAX_EXPANDED`."""
+    total = int(loaded.spec is not None and loaded.spec.point_cloud is not None)
+    for part in loaded.spec.parts if loaded.spec is not None else []:
+        copies = 1 if part.pattern is None else int(part.pattern.count)
+        total += copies * (_count(part._loaded) if isinstance(part, models.AssemblyPart) else 1)
+        if total > MAX_EXPANDED:
+            break
+    return total

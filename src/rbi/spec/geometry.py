@@ -67,7 +67,11 @@ def part_geometry(body) -> list[dict[str, Any]]:
         if part is None:
             items = [_cloud_points(spec, body.path)]
         elif isinstance(part, models.AssemblyPart):
-            items = _assembly(part, body.length_unit) if count <= MAX_DRAWN_COPIES else [None]
+            items = (
+                _assembly(part, body.length_unit)
+                if _drawn(part._loaded) * count <= MAX_DRAWN_COPIES
+                else [None]
+            )
         else:
             items = [_primitive(part, body.path, body.length_unit) if count <= MAX_DRAWN_COPIES else None]
         copies = (
@@ -116,6 +120,18 @@ def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray, scale: float = 1.0
         if key in out:
             out[key] = (scale * np.asarray(out[key], dtype=float) @ R.T + t).tolist()
     return out
+
+
+def _drawn(body) -> int:
+    """How many primitives :func:`part_geometry` gives for ``body``, counted until it passes
+    :data:`MAX_DRAWN_COPIES` (a tree of sub-assemblies is not walked further)."""
+    total = 0
+    for part in body.spec.parts if body.spec is not None else []:
+        count = 1 if part.pattern is None else int(part.pattern.count)
+        total += count * (_drawn(part._loaded) if isinstance(part, models.AssemblyPart) else 1)
+        if total > MAX_DRAWN_COPIES:
+            break
+    return total
 
 
 def _assembly(part, length_unit: str) -> list[dict[str, Any] | None]:
