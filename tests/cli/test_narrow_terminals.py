@@ -161,7 +161,8 @@ def test_bench_tables_at_every_width(monkeypatch):
 
     result = json.loads((Path(__file__).parents[1] / "data" / "bench" / "quick_result.json").read_text())
     known = Known(
-        numbers_in(result) + numbers_in(__import__("rbi.bench.report", fromlist=["x"]).sections(result))
+        numbers_in(result)
+        + numbers_in(__import__("rbi.bench.report", fromlist=["x"]).markdown(result, "", None))
     )
     for width in WIDTHS:
         monkeypatch.setenv("COLUMNS", str(width))

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench import Progress
-from rbi.bench.timing import measure
+from rbi.bench.timing import repeated
 from rbi.core.inertia import parallel_axis, parallel_axis_to_com
 from rbi.formats import mesh_file, step
 from rbi.formats.step import _ocp, _quiet, step_triangles
@@ -133,7 +133,7 @@ def _load_cold(spec: Path, repeats: int) -> tuple[float, object]:
         mesh_file._CACHE.clear()
         return load_body(spec)
 
-    timing = measure(load, min_repeats=repeats, max_repeats=repeats, min_seconds=0.0)
+    timing = repeated(load, repeats)
     return timing.median, timing.result
 
 

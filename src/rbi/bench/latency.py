@@ -15,12 +15,10 @@ import contextlib
 import io
 import os
 import re
-import resource
 import statistics
 import subprocess
 import sys
 import tempfile
-import time
 from pathlib import Path
 
 import numpy as np
@@ -28,6 +26,7 @@ import numpy as np
 from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.bench.throughput import random_cloud, write_cloud
+from rbi.bench.timing import run_process
 
 QUICK_REPEATS = 3
 FULL_REPEATS = 21
@@ -216,14 +215,8 @@ def time_process_cpu(argv: list[str], env: dict | None = None) -> tuple[float, f
     """Wall seconds, CPU seconds (user + system of the process and its children, which a
     shared machine's load disturbs far less than the wall time), exit status and the last line
     of stderr of one run."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    proc = subprocess.run(argv, capture_output=True, text=True, timeout=600, env=env)
-    elapsed = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime + after.ru_stime) - (before.ru_utime + before.ru_stime)
-    last = proc.stderr.strip().splitlines()[-1] if proc.stderr.strip() else ""
-    return elapsed, cpu, proc.returncode, last
+    wall, cpu, proc = run_process(argv, env)
+    return wall, cpu, proc.returncode, (proc.stderr.strip().splitlines() or [""])[-1]
 
 
 def planned_steps(quick: bool) -> int:

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from rbi.bench.workprecision import no_worse
+from rbi.bench.workprecision import speedup
 from rbi.text import number, vector_text
 
 METHOD_NAMES = {
@@ -259,7 +259,8 @@ def _uncertainty_targets(u: dict) -> list[dict]:
             limit["monte_carlo_s"],
             False,
             "1 s (absolute)",
-            f"median of {u['monte_carlo_repeats']}; the first call {number(u['monte_carlo_first_s'], 3)} s",
+            f"median of {u['monte_carlo_repeats']} (CPU {number(u['monte_carlo_cpu_s'], 3)} s); the first call "
+            f"{number(u['monte_carlo_first_s'], 3)} s",
             "s",
         ),
     ]
@@ -371,18 +372,7 @@ def _kernel_speedup(k: dict | None, case: dict) -> dict | None:
     show (the work-precision sweep times the same runs again, with other repeats)."""
     if not k or k["case"]["spec"] != case["spec"] or k["case"]["duration"] != case["duration"]:
         return None
-    chapter, default, best = k["chapter"], k["default"], k.get("best_matching")
-    out = {
-        "chapter_seconds": chapter["seconds"],
-        "default_seconds": default["seconds"],
-        "chapter_orientation_error_deg": chapter["orientation_error_deg"],
-        "default_orientation_error_deg": default["orientation_error_deg"],
-        "default_no_worse": no_worse(default, chapter),
-        "ratio_default": k["ratio_default"],
-    }
-    if best:
-        out.update(best_matching_rtol=best["rtol"], ratio_best_matching=k["ratio_best_matching"])
-    return out
+    return speedup(k["chapter"], k["default"], k.get("best_matching"))
 
 
 def _share(row: dict, key: str) -> str:
@@ -392,18 +382,22 @@ def _share(row: dict, key: str) -> str:
 @dataclass
 class Section:
     """One part of the report, built once and drawn twice: as rich tables by ``rbi bench``
-    (:func:`sections`) and as Markdown for docs/performance.md (:func:`markdown`). ``title``
-    (none: it continues the section before), ``notes`` (prose; code in backticks), ``columns``
-    (a header, or a ``(quantity, unit)`` pair), ``rows`` of text cells, the heading ``level``,
-    the columns aligned ``left`` (None: the first) and those never wrapped."""
+    and as Markdown for docs/performance.md (:func:`markdown`). ``title`` (none: it continues
+    the section before), ``notes`` (prose; code in backticks), the ``columns``' headers
+    (``quantity [unit]``), ``rows`` of text cells, the heading ``level``, the columns aligned
+    ``left`` (None: the first) and those never wrapped."""
 
     title: str
     notes: str = ""
-    columns: list = field(default_factory=list)
+    columns: list[str] = field(default_factory=list)
     rows: list[list[str]] = field(default_factory=list)
     level: int = 2
     left: tuple | None = None
     no_wrap: tuple = ()
+
+    def justify(self, column: str) -> str:
+        """How ``column`` is aligned: ``"left"`` (text) or ``"right"`` (numbers)."""
+        return "left" if column in (self.columns[:1] if self.left is None else self.left) else "right"
 
 
 def report_sections(result: dict, plot_link: str | None = None) -> list[Section]:
@@ -421,33 +415,6 @@ def report_sections(result: dict, plot_link: str | None = None) -> list[Section]
     )
 
 
-def _plain(text: str) -> str:
-    """Markdown prose for a terminal: code without its backticks."""
-    return text.replace("`", "")
-
-
-def _header(column) -> str:
-    return column if isinstance(column, str) else f"{column[0]} [{column[1]}]"
-
-
-def sections(result: dict) -> list[dict]:
-    """The report for a terminal: each block ``{"title", "columns": [(header, justify, no_wrap)],
-    "rows"}`` (header a string or a ``(quantity, unit)`` pair) or ``{"text", "dim"}``: the
-    machine, then each :class:`Section` in the order Markdown has it (title, notes dim, table),
-    then the headline."""
-    out = [{"text": machine_line(result), "dim": True}]
-    for s in report_sections(result):
-        out += [{"text": _plain(s.title), "dim": False}] if s.title else []
-        out += [{"text": _plain(s.notes), "dim": True}] if s.notes else []
-        left = s.left if s.left is not None else tuple(s.columns[:1])
-        columns = [(h, "left" if h in left else "right", h in s.no_wrap) for h in s.columns]
-        out += [{"title": "", "columns": columns, "rows": s.rows}] if s.rows else []
-    lines = headline(result)
-    if lines:
-        out.append({"text": "\n".join("• " + line for line in lines), "dim": False})
-    return out
-
-
 def markdown(result: dict, command: str, plot_link: str | None) -> str:
     """docs/performance.md: how it was made, on what, the headline, then every section."""
     out = _preamble(result, command)
@@ -457,7 +424,7 @@ def markdown(result: dict, command: str, plot_link: str | None) -> str:
         if s.notes:
             out += ["", s.notes]
         if s.rows:
-            out += ["", _md_table([_header(h) for h in s.columns], s.rows)]
+            out += ["", _md_table(s.columns, s.rows)]
     return "\n".join(out) + "\n"
 
 
@@ -480,11 +447,7 @@ def _preamble(result: dict, command: str) -> list[str]:
         command,
         "```",
         "",
-        f"- Date: {m['date']}",
-        f"- Machine: {m['cpu']}, {m['cores']} cores, {m['platform']}",
-        f"- Software: Python {m['python']}, numpy {m['numpy']}, scipy {m['scipy']}, kernel: {m.get('kernel')}",
-        f"- Load average (1 min) when the run started: {m.get('load_average_1min')}",
-        f"- Run: {'quick (`--quick`, shortened cases)' if result['quick'] else 'full'}",
+        *(f"- {fact}" for fact in machine_facts(result)),
         "",
         (
             "> **Noise.** These numbers were measured on a shared machine while other work was running "
@@ -505,13 +468,17 @@ def _preamble(result: dict, command: str) -> list[str]:
     return out + [f"- {line}" for line in headline(result)]
 
 
-def machine_line(result: dict) -> str:
+def machine_facts(result: dict) -> list[str]:
+    """What the numbers were measured on, one fact a line (the page's list; the terminal's
+    first line)."""
     m = result["machine"]
-    load = m.get("load_average_1min")
-    return (
-        f"{m['date']} · {m['cpu']} · {m['cores']} cores · load average {load} at start · Python {m['python']}, "
-        f"numpy {m['numpy']}, scipy {m['scipy']}, kernel: {m.get('kernel')} · {'quick' if result['quick'] else 'full'} run"
-    )
+    return [
+        f"Date: {m['date']}",
+        f"Machine: {m['cpu']}, {m['cores']} cores, {m['platform']}",
+        f"Software: Python {m['python']}, numpy {m['numpy']}, scipy {m['scipy']}, kernel: {m.get('kernel')}",
+        f"Load average (1 min) when the run started: {m.get('load_average_1min')}",
+        f"Run: {'quick (`--quick`, shortened cases)' if result['quick'] else 'full'}",
+    ]
 
 
 # --- the sections ----------------------------------------------------------------------------
@@ -535,11 +502,11 @@ def _kernel_sections(k: dict | None) -> list[Section]:
         return []
     columns = [
         ("rtol", _rtol),
-        (("orient. error", "deg"), _num("orientation_error_deg", 2)),
-        (("ω error", "rad/s"), _num("omega_error", 2)),
+        ("orient. error [deg]", _num("orientation_error_deg", 2)),
+        ("ω error [rad/s]", _num("omega_error", 2)),
         ("steps", _count("steps")),
         ("no worse than chapter", lambda t: "yes" if t["no_worse"] else "no"),
-        (("time", "s"), _num("seconds")),
+        ("time [s]", _num("seconds")),
         ("chapter ÷ this", lambda t: _times(t["seconds"] and k["chapter"]["seconds"] / t["seconds"])),
     ]
     case, chapter, loop = k["case"], k["chapter"], k["minimal_loop"]
@@ -581,8 +548,11 @@ def _sweep_sections(sw: dict | None) -> list[Section]:
         f"{number(mem['peak_rss_mb'], 3)} MB over {mem['rows_written']:,} rows streamed in "
         f"{number(mem['seconds'], 3)} s; resident memory sampled while it ran (flat means bounded):"
     )
-    columns = [(("time", "s"), _num("seconds")), (("RSS", "MB"), _num("rss_mb"))]
-    columns.append((("CSV written", "MB"), _num("csv_bytes", scale=2**-20)))
+    columns = [
+        ("time [s]", _num("seconds")),
+        ("RSS [MB]", _num("rss_mb")),
+        ("CSV written [MB]", _num("csv_bytes", scale=2**-20)),
+    ]
     return out + [Section("", notes, *_table(columns, mem["samples"]))]
 
 
@@ -665,7 +635,7 @@ def _latency_sections(lat: dict | None) -> list[Section]:
         "millisecond for a small one, then printing)."
     )
     title = "Where `rbi inertia`'s start-up goes"
-    return out + [Section(title, notes, ["imported", ("time", "ms"), "share"], import_rows(imports), level=3)]
+    return out + [Section(title, notes, ["imported", "time [ms]", "share"], import_rows(imports), level=3)]
 
 
 def import_rows(imports: dict) -> list[list[str]]:
@@ -729,7 +699,7 @@ CAD_COLUMNS = [
     ("file", lambda r: r["file"]),
     ("triangles", _count("triangles")),
     ("MB", _num("bytes", scale=1e-6)),
-    (("load", "s"), _num("seconds")),
+    ("load [s]", _num("seconds")),
     ("volume err", _num("volume_error", 2)),
     ("CoM err", _num("com_error", 2)),
     ("inertia err", _num("inertia_error", 2)),
@@ -776,12 +746,12 @@ def work_table(case: dict) -> tuple[list, list[list[str]]]:
     columns = [
         ("method", _method),
         ("rtol", _rtol),
-        (("orient. error", "deg"), _num("orientation_error_deg", 2)),
-        (("ω error", "rad/s"), _num("omega_error", 2)),
+        ("orient. error [deg]", _num("orientation_error_deg", 2)),
+        ("ω error [rad/s]", _num("omega_error", 2)),
         ("rel. drift", _num("drift", 2)),
         ("steps", _count("steps")),
         ("RHS evals", _count("rhs_evals")),
-        (("time", "s"), _num("seconds", 2)),
+        ("time [s]", _num("seconds", 2)),
         ("chapter ÷ this", speedup),
     ]
     return _table(columns, case["runs"] + [case["default"]])
@@ -789,33 +759,33 @@ def work_table(case: dict) -> tuple[list, list[list[str]]]:
 
 CLOUD_COLUMNS = [
     ("points", _count("points")),
-    (("mass", "ms"), _num("mass_s", scale=1e3)),
-    (("CoM", "ms"), _num("com_s", scale=1e3)),
-    (("+inertia", "ms"), _num("combine_s", scale=1e3)),
-    (("principal", "ms"), _num("principal_s", scale=1e3)),
-    (("total", "ms"), _num("total_s", scale=1e3)),
+    ("mass [ms]", _num("mass_s", scale=1e3)),
+    ("CoM [ms]", _num("com_s", scale=1e3)),
+    ("+inertia [ms]", _num("combine_s", scale=1e3)),
+    ("principal [ms]", _num("principal_s", scale=1e3)),
+    ("total [ms]", _num("total_s", scale=1e3)),
     ("ns/point", _num("ns_per_point")),
-    (("CSV spec", "ms"), _num("load_csv_s", scale=1e3)),
-    ((".npy spec", "ms"), _num("load_npy_s", scale=1e3)),
-    (("CSV", "MB"), _num("csv_megabytes")),
+    ("CSV spec [ms]", _num("load_csv_s", scale=1e3)),
+    (".npy spec [ms]", _num("load_npy_s", scale=1e3)),
+    ("CSV [MB]", _num("csv_megabytes")),
 ]
 PARTS_COLUMNS = [
     ("parts", _count("parts")),
-    (("YAML", "MB"), _num("yaml_megabytes")),
-    (("parse YAML", "s"), _num("read_yaml_s")),
-    (("validate", "s"), _num("validate_s")),
-    (("translate", "s"), _num("translate_s")),
-    (("load total", "s"), _num("load_total_s")),
+    ("YAML [MB]", _num("yaml_megabytes")),
+    ("parse YAML [s]", _num("read_yaml_s")),
+    ("validate [s]", _num("validate_s")),
+    ("translate [s]", _num("translate_s")),
+    ("load total [s]", _num("load_total_s")),
     ("µs/part", _num("us_per_part")),
-    (("same as JSON", "s"), _num("load_total_json_s")),
-    (("core", "s"), _num("core_s", 2)),
+    ("same as JSON [s]", _num("load_total_json_s")),
+    ("core [s]", _num("core_s", 2)),
 ]
 LATENCY_COLUMNS = [
     ("command", lambda r: r["command"]),
-    (("CPU median", "s"), lambda r: "failed" if "error" in r else _num("cpu_median_s")(r)),
+    ("CPU median [s]", lambda r: "failed" if "error" in r else _num("cpu_median_s")(r)),
     ("× numpy import (CPU)", lambda r: "" if "error" in r else _times(r.get("cpu_ratio_to_numpy_import"))),
-    (("wall median", "s"), lambda r: "" if "error" in r else _num("median_s")(r)),
-    (("wall best", "s"), lambda r: "" if "error" in r else _num("best_s")(r)),
+    ("wall median [s]", lambda r: "" if "error" in r else _num("median_s")(r)),
+    ("wall best [s]", lambda r: "" if "error" in r else _num("best_s")(r)),
     ("× numpy import (wall)", lambda r: "" if "error" in r else _times(r.get("ratio_to_numpy_import"))),
     ("wall spread", lambda r: r["error"] if "error" in r else f"{100 * r['spread']:.0f}%"),
 ]

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from importlib import import_module
 
-from rbi.bench import Progress
+from rbi.bench import Progress, report
 from rbi.bench.timing import machine
 
 NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep", "cad", "robotaudit")
@@ -18,10 +18,12 @@ def planned_steps(quick: bool, sections) -> int:
     return sum(SECTIONS[name].planned_steps(quick) for name in sections)
 
 
-def run(quick: bool, sections, progress: Progress = lambda _: None) -> dict:
-    """``{"machine": ..., "<section>": ...}`` for the chosen sections, measured now."""
+def run(quick: bool, sections, progress: Progress = lambda _: None, command: str = "rbi bench") -> dict:
+    """``{"quick", "machine", "<section>": ..., "command", "targets", "headline"}`` for the chosen
+    sections, measured now (``command``: the command line that asked for them)."""
     result = {"quick": quick, "machine": machine()}
     for name in SECTIONS:
         if name in sections:
             result[name] = SECTIONS[name].run(quick, progress)
-    return result
+    result["command"] = command
+    return result | {"targets": report.targets(result), "headline": report.headline(result)}

@@ -18,7 +18,6 @@
 from __future__ import annotations
 
 import os
-import resource
 import subprocess
 import tempfile
 import time
@@ -28,6 +27,7 @@ import numpy as np
 
 from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
+from rbi.bench.timing import clocked, run_process, time_once
 from rbi.files.output import output_target
 from rbi.runs.run import scene_of as body_scene
 from rbi.sim.api import simulate
@@ -83,35 +83,28 @@ def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float
     scene = body_scene(load_body(spec), None)
     samples = 481  # as rbi sweep and rbi simulate by default
     simulate(scene, *initial_state(runs[0][1], [0.0, 0.0, runs[0][0]]), duration, samples)  # warm
-    start = time.perf_counter()
-    for spin, tilt in runs:
-        q0, omega0 = initial_state(tilt, [0.0, 0.0, spin])
-        simulate(scene, q0, omega0, duration, samples)
-    seconds = time.perf_counter() - start
+    seconds = time_once(
+        lambda: [simulate(scene, *initial_state(t, [0.0, 0.0, w]), duration, samples) for w, t in runs]
+    )[0]
     return {"runs": len(runs), "seconds": seconds, "runs_per_second": len(runs) / seconds}
 
 
 def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:
     """Runs per second of a shell loop of whole ``rbi simulate`` processes."""
-    start = time.perf_counter()
+    seconds = 0.0
     for spin, tilt in runs:
         words = ["simulate", str(spec), "--spin", repr(spin), "--tilt", repr(tilt), "--duration"]
-        words.append(f"{duration:g}")
-        proc = subprocess.run(rbi_command() + words, capture_output=True, text=True)
+        wall, _, proc = run_process(rbi_command() + words + [f"{duration:g}"])
         if proc.returncode != 0:
             raise RuntimeError(f"rbi simulate: exit {proc.returncode}: {proc.stderr.strip()[-200:]}")
-    seconds = time.perf_counter() - start
+        seconds += wall
     return {"runs": len(runs), "seconds": seconds, "runs_per_second": len(runs) / seconds}
 
 
 def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     out = folder / "sweep.csv"
     runs = g["spin"][2] * g["tilt"][2]
-    cpu_start = _cpu_seconds()
-    start = time.perf_counter()
-    _in_process_sweep(spec, g, out)
-    seconds = time.perf_counter() - start
-    cpu = _cpu_seconds() - cpu_start
+    seconds, cpu, _ = clocked(lambda: _in_process_sweep(spec, g, out))
     return {
         "command": f"rbi sweep bodies/top.yaml --spin {_axis_text(g['spin'])} --tilt {_axis_text(g['tilt'])} "
         f"--duration {g['duration']:g} --out FILE.csv --yes --format json",
@@ -130,12 +123,6 @@ def _rows_in(csv_path: Path) -> int:
     """Rows of a CSV file, its header not counted."""
     with open(csv_path, encoding="utf-8") as stream:
         return sum(1 for _ in stream) - 1
-
-
-def _cpu_seconds() -> float:
-
-    usage = resource.getrusage(resource.RUSAGE_SELF)
-    return usage.ru_utime + usage.ru_stime
 
 
 def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench import Progress
-from rbi.bench.timing import measure, time_once
+from rbi.bench.timing import measure, repeated, time_once
 from rbi.core.inertia import centre_of_mass, principal_axes
 from rbi.core.mass import combine
 from rbi.spec.load import load_body, read_yaml, validation_messages
@@ -80,13 +80,9 @@ def file_timings(specs: dict[str, Path], repeats: int) -> dict:
 
     out = {}
     for kind, spec in specs.items():
-        timing = measure(
-            lambda: principal_axes(load_body(spec).props.inertia_about_com),
-            min_repeats=repeats,
-            max_repeats=repeats,
-            min_seconds=0.0,
-        )
-        out[f"load_{kind}_s"] = timing.median
+        out[f"load_{kind}_s"] = repeated(
+            lambda: principal_axes(load_body(spec).props.inertia_about_com), repeats
+        ).median
     out["csv_megabytes"] = (specs["csv"].parent / "cloud.csv").stat().st_size / 1e6
     return out
 

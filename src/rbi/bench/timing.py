@@ -4,12 +4,14 @@ from __future__ import annotations
 
 import os
 import platform
+import resource
 import statistics
+import subprocess
 import sys
 import time
 from collections.abc import Callable
 from datetime import UTC, datetime
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy
 
@@ -17,36 +19,63 @@ from rbi.sim.compiled import integrator
 
 
 class Timing(NamedTuple):
-    """Repeated wall-clock timings of one call, seconds, and what its last run returned."""
+    """Repeated timings of one call, seconds: the median and best wall-clock time, how many runs,
+    what its last run returned and the median CPU time (:func:`clocked`'s)."""
 
     median: float
     best: float
     repeats: int
-    result: object = None
+    result: Any = None
+    cpu_median: float = 0.0
+
+
+def cpu_seconds(who: int = resource.RUSAGE_SELF) -> float:
+    """User + system CPU seconds of this process's threads (``RUSAGE_SELF``) or of the children
+    it has waited for (``RUSAGE_CHILDREN``): what a busy machine's other work disturbs least."""
+    usage = resource.getrusage(who)
+    return usage.ru_utime + usage.ru_stime
+
+
+def clocked(call: Callable[[], Any], who: int = resource.RUSAGE_SELF) -> tuple[float, float, Any]:
+    """``(wall seconds, CPU seconds, result)`` of one call (CPU as :func:`cpu_seconds` counts it)."""
+    start, cpu = time.perf_counter(), cpu_seconds(who)
+    result = call()
+    return time.perf_counter() - start, cpu_seconds(who) - cpu, result
 
 
 def measure(
-    call: Callable[[], object], min_repeats: int = 3, max_repeats: int = 50, min_seconds: float = 0.2
+    call: Callable[[], Any], min_repeats: int = 3, max_repeats: int = 50, min_seconds: float = 0.2
 ) -> Timing:
     """Time ``call`` at least ``min_repeats`` times and until ``min_seconds`` have been spent
     (at most ``max_repeats`` times); the median resists the other users of a shared machine."""
     times: list[float] = []
-    spent = 0.0
+    cpus: list[float] = []
     result = None
-    while len(times) < min_repeats or (spent < min_seconds and len(times) < max_repeats):
-        start = time.perf_counter()
-        result = call()
-        elapsed = time.perf_counter() - start
-        times.append(elapsed)
-        spent += elapsed
-    return Timing(statistics.median(times), min(times), len(times), result)
+    while len(times) < min_repeats or (sum(times) < min_seconds and len(times) < max_repeats):
+        wall, cpu, result = clocked(call)
+        times.append(wall)
+        cpus.append(cpu)
+    return Timing(statistics.median(times), min(times), len(times), result, statistics.median(cpus))
 
 
-def time_once(call: Callable[[], object]) -> tuple[float, object]:
+def repeated(call: Callable[[], Any], repeats: int) -> Timing:
+    """:func:`measure` of exactly ``repeats`` runs (for calls of a second or more)."""
+    return measure(call, min_repeats=repeats, max_repeats=repeats, min_seconds=0.0)
+
+
+def run_process(argv: list[str], env: dict | None = None) -> tuple[float, float, subprocess.CompletedProcess]:
+    """``(wall seconds, CPU seconds, the completed process)`` of one run of ``argv`` (CPU: user +
+    system of it and its children), its output captured as text."""
+    return clocked(
+        lambda: subprocess.run(argv, capture_output=True, text=True, timeout=600, env=env),
+        resource.RUSAGE_CHILDREN,
+    )
+
+
+def time_once(call: Callable[[], Any]) -> tuple[float, Any]:
     """``(seconds, result)`` of one call."""
-    start = time.perf_counter()
-    result = call()
-    return time.perf_counter() - start, result
+    wall, _, result = clocked(call)
+    return wall, result
 
 
 def machine() -> dict:

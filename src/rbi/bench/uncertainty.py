@@ -66,6 +66,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         "ratio_linear_to_plain": linear_t.median / plain_t.median,
         "draws": draws,
         "monte_carlo_s": mc.median,
+        "monte_carlo_cpu_s": mc.cpu_median,
         "monte_carlo_first_s": first_s,
         "monte_carlo_repeats": mc.repeats,
         "targets": TARGETS,

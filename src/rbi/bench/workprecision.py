@@ -163,7 +163,7 @@ def run_case(case: Case, quick: bool, progress: Progress) -> dict:
         "kernel_load_seconds": load_seconds,
         "runs": rows,
         "default": default_row,
-        "speedup": speedup(rows, default_row),
+        "speedup": _speedup(rows, default_row),
     }
 
 
@@ -185,29 +185,33 @@ def no_worse(errors: dict, chapter: dict) -> bool:
     return orientation and errors["omega_error"] <= chapter["omega_error"]
 
 
-def speedup(rows: list[dict], default_row: dict) -> dict | None:
-    """The chapter's time over rbi's, (a) with rbi's default settings, (b) for the fastest
-    run of rbi's default method whose final errors are no larger than the chapter's."""
-    chapter = next((r for r in rows if r["chapter_setup"]), None)
-    if chapter is None:
-        return None
+def speedup(chapter: dict, default: dict, best: dict | None) -> dict:
+    """The chapter's time over rbi's, (a) with rbi's default settings (``default``), (b) for
+    ``best``, the fastest run of rbi's default method whose final errors are no larger than the
+    chapter's (None: no run was); each record holds seconds and final errors."""
     out = {
         "chapter_seconds": chapter["seconds"],
         "chapter_orientation_error_deg": chapter["orientation_error_deg"],
         "chapter_omega_error": chapter["omega_error"],
-        "default_seconds": default_row["seconds"],
-        "default_orientation_error_deg": default_row["orientation_error_deg"],
-        "default_omega_error": default_row["omega_error"],
-        "default_no_worse": no_worse(default_row, chapter),
-        "ratio_default": chapter["seconds"] / default_row["seconds"],
-        "ratio_error": chapter["orientation_error_deg"] / max(default_row["orientation_error_deg"], 1e-300),
+        "default_seconds": default["seconds"],
+        "default_orientation_error_deg": default["orientation_error_deg"],
+        "default_omega_error": default["omega_error"],
+        "default_no_worse": no_worse(default, chapter),
+        "ratio_default": chapter["seconds"] / default["seconds"],
+        "ratio_error": chapter["orientation_error_deg"] / max(default["orientation_error_deg"], 1e-300),
     }
-    matching = [r for r in rows if r["method"] == "default" and no_worse(r, chapter)]
-    if matching:
-        best = min(matching, key=lambda r: r["seconds"])
-        out["best_matching_rtol"] = best["rtol"]
-        out["ratio_best_matching"] = chapter["seconds"] / best["seconds"]
+    if best:
+        out.update(best_matching_rtol=best["rtol"], ratio_best_matching=chapter["seconds"] / best["seconds"])
     return out
+
+
+def _speedup(rows: list[dict], default_row: dict) -> dict | None:
+    """:func:`speedup` of a case's runs, or None when the chapter's set-up was not among them."""
+    chapter = next((r for r in rows if r["chapter_setup"]), None)
+    if chapter is None:
+        return None
+    matching = [r for r in rows if r["method"] == "default" and no_worse(r, chapter)]
+    return speedup(chapter, default_row, min(matching, key=lambda r: r["seconds"]) if matching else None)
 
 
 def planned_steps(quick: bool) -> int:

@@ -11,20 +11,17 @@ from typing import Annotated
 import typer
 from rich import box
 from rich.console import Group
+from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
 from rbi.api import SpecError, check_distinct, output_target, write_output
 from rbi.bench import report, suite
 from rbi.bench.paths import bodies_folder
-from rbi.bench.report import sections
 from rbi.bench.workprecision import plot as draw
 from rbi.cli.options import FormatOption, OutputFormat, needs, require_matplotlib
 from rbi.cli.render import emit, progress_bar
-from rbi.cli.tables import unit_header
 from rbi.cli.terminal import terminal_safe
-
-SECTION_NAMES = tuple(suite.SECTIONS)
 
 QuickOption = Annotated[
     bool,
@@ -38,8 +35,7 @@ OnlyOption = Annotated[
     typer.Option(
         "--only",
         metavar="SECTIONS",
-        help="Comma-separated sections to run: kernel, workprecision, throughput, largespec, latency, "
-        "sweep, cad, robotaudit, uncertainty (default: all).",
+        help=f"Comma-separated sections to run: {', '.join(suite.NAMES)} (default: all).",
     ),
 ]
 PlotOption = Annotated[
@@ -88,7 +84,8 @@ def bench(
     check_distinct([plot_target, docs_target])
     if plot:
         require_matplotlib()
-    command = _command_line(quick, only, plot, write_docs)
+    options = (("--only", only), ("--write-docs", write_docs), ("--plot", plot))
+    command = " ".join(["rbi", "bench"] + ["--quick"] * quick + [w for o in options if o[1] for w in o])
 
     try:
         bodies_folder()
@@ -96,17 +93,12 @@ def bench(
         raise SpecError(str(exc)) from None
 
     with _progress(format, suite.planned_steps(quick, sections)) as step:
-        result = suite.run(quick, sections, step)
-    result["command"] = command
-    result["targets"] = report.targets(result)
-    result["headline"] = report.headline(result)
+        result = suite.run(quick, sections, step, command)
 
     if plot:
         write_output(plot_target, writer=lambda temp: draw(result["workprecision"], temp))
     if write_docs:
-        link = None
-        if plot:
-            link = _relative_link(Path(plot), Path(write_docs))
+        link = os.path.relpath(Path(plot).resolve(), Path(write_docs).resolve().parent) if plot else None
         write_output(docs_target, report.markdown(result, command, link))
         print(f"rbi: wrote {terminal_safe(write_docs)}", file=sys.stderr)
     emit(format.value, result, lambda: _tables(result), csv_rows=report.csv_rows(result))
@@ -114,32 +106,12 @@ def bench(
 
 def _sections(only: str | None) -> list[str]:
     if only is None:
-        return list(SECTION_NAMES)
+        return list(suite.NAMES)
     chosen = [s.strip().lower() for s in only.split(",") if s.strip()]
-    unknown = [s for s in chosen if s not in SECTION_NAMES]
+    unknown = [s for s in chosen if s not in suite.NAMES]
     if unknown or not chosen:
-        raise SpecError(
-            f"--only: expected a comma-separated list of {', '.join(SECTION_NAMES)} (got {only!r})"
-        )
+        raise SpecError(f"--only: expected a comma-separated list of {', '.join(suite.NAMES)} (got {only!r})")
     return chosen
-
-
-def _command_line(quick: bool, only: str | None, plot: str | None, write_docs: str | None) -> str:
-    words = ["rbi", "bench"]
-    if quick:
-        words.append("--quick")
-    if only:
-        words += ["--only", only]
-    if write_docs:
-        words += ["--write-docs", write_docs]
-    if plot:
-        words += ["--plot", plot]
-    return " ".join(words)
-
-
-def _relative_link(target: Path, document: Path) -> str:
-
-    return os.path.relpath(target.resolve(), document.resolve().parent)
 
 
 @contextlib.contextmanager
@@ -158,22 +130,22 @@ def _progress(format: OutputFormat, total: int):
         yield step
 
 
-def _tables(result: dict):
-    """The report's blocks (:func:`rbi.bench.report.sections`) as rich tables and text."""
+def _tables(result: dict) -> Group:
+    """The report as rich tables and text: the machine (one line), each :class:`rbi.bench.report.Section`
+    as docs/performance.md has it (its title, notes dim, table; code without backticks), then
+    the headline."""
 
-    parts = []
-    for section in sections(result):
-        if "text" in section:
-            parts.append(Text(section["text"], style="dim" if section["dim"] else ""))
-            continue
-        table = Table(title=section["title"], box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
-        for header, justify, no_wrap in section["columns"]:
-            table.add_column(
-                unit_header(*header) if isinstance(header, tuple) else header,
-                justify=justify,
-                no_wrap=no_wrap,
-            )
-        for row in section["rows"]:
-            table.add_row(*row)
-        parts.append(table)
-    return Group(*parts)
+    parts = [Text(" · ".join(report.machine_facts(result)).replace("`", ""), style="dim")]
+    for section in report.report_sections(result):
+        parts += [Text(section.title.replace("`", ""))] if section.title else []
+        parts += [Text(section.notes.replace("`", ""), style="dim")] if section.notes else []
+        if section.rows:
+            table = Table(box=box.SIMPLE_HEAD, show_edge=False)
+            for header in section.columns:
+                justify = section.justify(header)
+                table.add_column(escape(header), justify=justify, no_wrap=header in section.no_wrap)
+            for row in section.rows:
+                table.add_row(*row)
+            parts.append(table)
+    lines = report.headline(result)
+    return Group(*parts, *([Text("\n".join("• " + line for line in lines))] if lines else []))

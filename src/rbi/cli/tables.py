@@ -65,11 +65,6 @@ def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
     return table
 
 
-def unit_header(label: str, unit: str, scale_text: str = "") -> str:
-    """A column header such as ``moment [kg·m²] ×10⁻⁴`` (brackets escaped from rich markup)."""
-    return escape(f"{label} [{unit}]") + (f" {scale_text}" if scale_text else "")
-
-
 def stack(*renderables) -> Group:
     return Group(*renderables)
 
