@@ -392,24 +392,28 @@ def budget(
     u = result.uncertainty
     k = coverage_factor(coverage)
     drawn = monte_carlo(loaded, samples, seed) if method == "monte-carlo" else None
+    paths, values, us = [x.path for x in result.inputs], [x.value for x in result.inputs], result.u.tolist()
     quantities = []
     for q in chosen:
         value, spread = float(result.values[q]), float(u[q])
         interval = (value - k * spread, value + k * spread)
-        contributions = []
-        for x, s in zip(result.inputs, result.sensitivities[q]):
-            part = abs(float(s)) * x.u
-            contributions.append(
-                {
-                    "input": x.path,
-                    "value": x.value,
-                    "u": x.u,
-                    "sensitivity": float(s),
-                    "contribution": part,
-                    "share": part * part / (spread * spread) if spread > 0 else 0.0,
-                }
+        sensitivity = result.sensitivities[q]
+        part = np.abs(sensitivity) * result.u
+        share = (part / spread) ** 2 if spread > 0 else np.zeros_like(part)
+        ranked = np.argsort(-part, kind="stable")
+        contributions = [
+            {
+                "input": paths[n],
+                "value": values[n],
+                "u": us[n],
+                "sensitivity": s,
+                "contribution": c,
+                "share": f,
+            }
+            for n, s, c, f in zip(
+                ranked.tolist(), sensitivity[ranked].tolist(), part[ranked].tolist(), share[ranked].tolist()
             )
-        contributions.sort(key=lambda c: -c["contribution"])
+        ]
         entry: dict[str, Any] = {"quantity": QUANTITIES[q]}
         if drawn is not None:
             y = drawn[:, q]
