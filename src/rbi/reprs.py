@@ -13,6 +13,7 @@ markup or HTML.
 
 from __future__ import annotations
 
+import functools
 import io
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
@@ -190,7 +191,23 @@ def pandas_module(result: object) -> Any:
 class Result:
     """The base of rbi's results: a subclass gives :meth:`rows` (or the one table of
     :meth:`_table`), :meth:`to_dict` and, when its CSV has other rows than the one object,
-    :meth:`csv_rows`; the faces follow."""
+    :meth:`csv_rows`; the faces follow.
+
+    A subclass's ``to_dict`` may build its dict from numpy arrays and scalars: the class wraps
+    it in :func:`plain`, so every result's ``to_dict()`` is JSON-ready, as the command prints it.
+    """
+
+    def __init_subclass__(cls, **kwargs: Any) -> None:
+        super().__init_subclass__(**kwargs)
+        own = cls.__dict__.get("to_dict")
+        if own is not None and not getattr(own, "json_ready", False):
+
+            @functools.wraps(own)
+            def to_dict(self: Any, *args: Any, **kw: Any) -> dict[str, Any]:
+                return plain(own(self, *args, **kw))
+
+            to_dict.json_ready = True  # type: ignore[attr-defined]
+            cls.to_dict = to_dict  # type: ignore[method-assign]
 
     def rows(self) -> list[Rows]:
         """The tables the result shows, as text cells: the one set of rows behind ``print()``,
