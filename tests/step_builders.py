@@ -257,3 +257,29 @@ def faces_only(a=10.0):
     for face in _cube_faces(a):
         builder.Add(compound, face)
     return compound
+
+
+def write_nested_assembly(path: Path, part, depth: int, copies: int, step: float = 100.0) -> Path:
+    """Write ``part`` (a shape, mm) as an assembly nested ``depth`` levels deep, each level
+    ``copies`` instances of the level below, instance ``k`` moved ``k * step * 10**level`` mm
+    along x (so ``copies**depth`` solids, every one at its own place), in mm. The file stays
+    small: each level is written once."""
+    document = TDocStd_Document(TCollection_ExtendedString("XmlXCAF"))
+    XCAFDoc_DocumentTool.SetLengthUnit_s(document, 0.001)
+    tool = XCAFDoc_DocumentTool.ShapeTool_s(document.Main())
+    below = tool.AddShape(part, False)
+    TDataStd_Name.Set_s(below, TCollection_ExtendedString("part"))
+    for level in range(depth):
+        assembly = tool.NewShape()
+        TDataStd_Name.Set_s(assembly, TCollection_ExtendedString(f"level{level}"))
+        for k in range(copies):
+            transform = gp_Trsf()
+            transform.SetTranslation(gp_Vec(k * step * copies**level, 0.0, 0.0))
+            tool.AddComponent(assembly, below, TopLoc_Location(transform))
+        below = assembly
+    tool.UpdateAssemblies()
+    writer = STEPCAFControl_Writer()
+    Interface_Static.SetCVal_s("write.step.unit", "MM")
+    writer.Transfer(document, STEPControl_AsIs)
+    assert int(writer.Write(str(path))) == 1, "OpenCascade could not write the STEP file"
+    return path

@@ -178,6 +178,10 @@ def test_without_the_cad_extra_one_line_names_it(tmp_path, monkeypatch):
     import rbi.formats.step as step_module
 
     monkeypatch.setattr(step_module, "_CACHE", type(step_module._CACHE)())
+    # OpenCascade is loaded by the child process that reads the file: not installed there either
+    monkeypatch.setattr(
+        step_module, "_CHILD", "import sys; sys.modules['OCP.Message'] = None; " + step_module._CHILD
+    )
     one_line_exit_2(run_rbi_inprocess("inertia", spec), "parts[0] (p)", "pip install '.[cad]'")
 
 

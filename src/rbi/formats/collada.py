@@ -21,14 +21,23 @@ what is wrong, never the file's content.
 from __future__ import annotations
 
 import math
+import warnings
 
 import numpy as np
 
 from rbi.errors import InputError
 from rbi.formats.robot_xml import read_xml
 
-MAX_INSTANCES = 100_000
-"""Most geometry instances placed by one scene (a node tree that instances itself is cut here)."""
+MAX_INSTANCES = 10_000
+"""Most geometry instances placed by one scene (2.5 KB of nodes instancing each other place a
+cube 10⁵ times)."""
+
+MAX_NODE_VISITS = 100_000
+"""Most nodes one scene is walked through (10 KB of nodes instancing each other 10 times a level
+make 10³⁰ visits, without a geometry)."""
+
+MAX_INPUT_OFFSET = 64
+"""Largest ``offset`` of a primitive's ``<input>`` (a corner has one index per input)."""
 
 
 def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int | None = None):
@@ -45,14 +54,17 @@ def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int | None
     meter = _unit(root)
     geometries: dict[str, tuple[np.ndarray, np.ndarray]] = {}
     placed: list[tuple[np.ndarray, np.ndarray]] = []
+    limit = max_triangles if max_triangles is not None else np.iinfo(np.int64).max
+    total = 0
     for geometry_id, transform in _instances(root, ids):
         if geometry_id not in geometries:
-            geometries[geometry_id] = _geometry(ids, ids[geometry_id])
+            geometries[geometry_id] = _geometry(ids, ids[geometry_id], limit)
         points, triangles = geometries[geometry_id]
+        total += len(triangles)
+        if total > limit:
+            raise ValueError(f"more than {limit:,} triangles")
         if len(triangles):
             placed.append((points @ transform[:3, :3].T + transform[:3, 3], triangles))
-        if max_triangles is not None and sum(len(t) for _, t in placed) > max_triangles:
-            raise ValueError(f"more than {max_triangles:,} triangles")
     if not placed:
         return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
     offsets = np.cumsum([0] + [len(p) for p, _ in placed[:-1]])
@@ -76,13 +88,35 @@ def _unit(root) -> float:
 
 
 def _numbers(element, kind=float) -> np.ndarray:
-    text = element.text if element is not None else ""
+    """The element's whitespace-separated numbers, parsed by numpy straight from the text (8
+    bytes a number: never a Python object per number, so tens of millions stay small)."""
+    text = (element.text or "").strip() if element is not None else ""
+    words = "numbers" if kind is float else "integers"
+    if not text:
+        return np.zeros(0, dtype=np.float64 if kind is float else np.int64)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")  # numpy warns, and stops, at the first word it cannot read
+        try:
+            values = np.fromstring(text, dtype=np.float64, sep=" ")
+        except (ValueError, DeprecationWarning, OverflowError):
+            raise ValueError(f"<{element.tag}>: not a list of {words}") from None
+    if kind is float:
+        return values
+    if not np.all(np.isfinite(values) & (np.abs(values) < 2.0**53) & (values == np.round(values))):
+        raise ValueError(f"<{element.tag}>: not a list of {words} (each below 2**53)")
+    return values.astype(np.int64)
+
+
+def _integer(element, attribute: str, default: int, least: int, most: int) -> int:
+    """An integer attribute between ``least`` and ``most``; one line naming it otherwise."""
+    text = element.get(attribute, str(default))
     try:
-        return np.array(text.split(), dtype=np.float64 if kind is float else np.int64)
-    except (ValueError, OverflowError):
-        raise ValueError(
-            f"<{element.tag}>: not a list of {'numbers' if kind is float else 'integers'}"
-        ) from None
+        value = int(text)
+    except ValueError:
+        value = None
+    if value is None or not least <= value <= most:
+        raise ValueError(f"<{element.tag}>: {attribute} must be an integer from {least:,} to {most:,}")
+    return value
 
 
 def _reference(ids, url: str | None, what: str):
@@ -110,12 +144,15 @@ def _instances(root, ids):
             if geometry.get("id"):
                 yield geometry.get("id"), np.eye(4)
         return
-    count = 0
+    count = visits = 0
     stack = [(node, np.eye(4), 0) for node in reversed(chosen.all("node"))]
     while stack:
         node, parent, depth = stack.pop()
         if depth > 200:
             raise ValueError("nodes nested (or instanced) deeper than 200 levels")
+        visits += 1
+        if visits > MAX_NODE_VISITS:
+            raise ValueError(f"more than {MAX_NODE_VISITS:,} node visits (nodes that instance each other)")
         transform = parent @ _node_transform(node)
         for child in node.children:
             if child.tag == "instance_geometry":
@@ -189,7 +226,7 @@ def _rotation(axis, angle: float) -> np.ndarray:
 PRIMITIVES = ("triangles", "polylist", "polygons", "trifans", "tristrips")
 
 
-def _geometry(ids, geometry) -> tuple[np.ndarray, np.ndarray]:
+def _geometry(ids, geometry, limit: int) -> tuple[np.ndarray, np.ndarray]:
     """(positions, triangles indexing them) of one ``<geometry>``'s mesh."""
     mesh = geometry.child("mesh")
     if mesh is None:
@@ -199,7 +236,7 @@ def _geometry(ids, geometry) -> tuple[np.ndarray, np.ndarray]:
         if primitive.tag not in PRIMITIVES:
             continue
         positions, column, stride = _positions(ids, mesh, primitive)
-        for corners in _polygons(primitive, stride):
+        for corners in _polygons(primitive, stride, limit):
             indices = corners[:, column].reshape(-1, 3)
             if indices.size and (indices.min() < 0 or indices.max() >= len(positions)):
                 raise ValueError(f"<{primitive.tag}>: a vertex index is out of range")
@@ -222,10 +259,7 @@ def _positions(ids, mesh, primitive) -> tuple[np.ndarray, int, int]:
     inputs = primitive.all("input")
     if not inputs:
         raise ValueError(f"<{primitive.tag}>: no <input>")
-    try:
-        offsets = [int(each.get("offset", "0")) for each in inputs]
-    except ValueError:
-        raise ValueError(f"<{primitive.tag}>/input: offset is not an integer") from None
+    offsets = [_integer(each, "offset", 0, 0, MAX_INPUT_OFFSET) for each in inputs]
     vertex = next((each for each in inputs if each.get("semantic") == "VERTEX"), None)
     if vertex is None:
         raise ValueError(f"<{primitive.tag}>: no VERTEX input")
@@ -244,30 +278,36 @@ def _source(source) -> np.ndarray:
     values = _numbers(array)
     technique = source.child("technique_common")
     accessor = technique.child("accessor") if technique is not None else None
-    stride = int(accessor.get("stride", "3")) if accessor is not None else 3
-    offset = int(accessor.get("offset", "0")) if accessor is not None else 0
-    if stride < 3 or offset < 0:
-        raise ValueError("<source>/accessor: a position needs a stride of at least 3")
+    stride = _integer(accessor, "stride", 3, 3, max(values.size, 3)) if accessor is not None else 3
+    offset = _integer(accessor, "offset", 0, 0, values.size) if accessor is not None else 0
     count = (values.size - offset) // stride
     return values[offset : offset + count * stride].reshape(count, stride)[:, :3]
 
 
-def _polygons(primitive, stride: int):
-    """Each primitive's corners as triangles: arrays (3·T, stride) of index rows."""
+def _polygons(primitive, stride: int, limit: int):
+    """Each primitive's corners as triangles: arrays (3·T, stride) of index rows; ValueError as
+    soon as the triangles would pass ``limit``, counted before they are made."""
     kind = primitive.tag
     if kind in ("triangles", "polylist"):
-        corners = _corners(primitive.child("p"), stride)
+        corners = _corners(primitive.child("p"), stride, limit)
         if kind == "triangles":
             usable = len(corners) - len(corners) % 3
             yield corners[:usable]
             return
         counts = _numbers(primitive.child("vcount"), int) if primitive.child("vcount") is not None else None
-        if counts is None or counts.sum() != len(corners) or np.any(counts < 0):
+        if (
+            counts is None
+            or np.any(counts < 0)
+            or np.any(counts > len(corners))
+            or counts.sum() != len(corners)
+        ):
             raise ValueError("<polylist>: <vcount> does not match the indices in <p>")
+        if int(np.maximum(counts - 2, 0).sum()) > limit:
+            raise ValueError(f"more than {limit:,} triangles")
         yield from _fans(corners, counts)
         return
     for p in primitive.all("p"):
-        corners = _corners(p, stride)
+        corners = _corners(p, stride, limit)
         if kind == "tristrips":
             n = len(corners) - 2
             if n > 0:
@@ -280,10 +320,12 @@ def _polygons(primitive, stride: int):
             yield from _fans(corners, np.array([len(corners)]))
 
 
-def _corners(p, stride: int) -> np.ndarray:
+def _corners(p, stride: int, limit: int) -> np.ndarray:
     if p is None:
         return np.zeros((0, stride), dtype=np.int64)
     values = _numbers(p, int)
+    if values.size // stride > 3 * limit:
+        raise ValueError(f"more than {limit:,} triangles")
     usable = values.size - values.size % stride
     return values[:usable].reshape(-1, stride)
 
