@@ -108,3 +108,32 @@ def test_validate_names_standard_input_as_every_command_does():
             assert json.loads(done.stdout)["files"] == [{"file": "<stdin>", "problems": [], "ok": True}]
         else:
             assert done.stdout.splitlines()[1].startswith("<stdin>,"), done.stdout
+
+
+def test_the_schema_takes_numbers_written_with_their_uncertainty(validator):
+    spec = {
+        "uncertainty": "tolerance",
+        "parts": [
+            {
+                "name": "ball",
+                "shape": "sphere",
+                "mass": "2 ± 0.02",
+                "radius": "0.1 +- 1%",
+                "center": ["0 ± 0.001", 0, 0],
+            },
+            {
+                "shape": "box",
+                "mass": 1,
+                "size": [0.1, "0.2 ± 0.001", 0.3],
+                "center": [0, 0, 0],
+                "rotation": {"axis": [0, 0, 1], "angle_deg": "30 ± 0.5"},
+            },
+        ],
+    }
+    assert not [e.message for e in validator.iter_errors(spec)]
+    assert list(validator.iter_errors({"uncertainty": "loose", "parts": spec["parts"]}))
+    assert list(
+        validator.iter_errors(
+            {"parts": [{"shape": "sphere", "mass": "two", "radius": 1, "center": [0, 0, 0]}]}
+        )
+    )

@@ -772,10 +772,41 @@ def body_spec_json_schema() -> dict[str, Any]:
         expect=(Expect | None, Field(None, description=EXPECT_DESCRIPTION)),
     )
     schema = _plain_descriptions(described.model_json_schema(mode="validation"))
+    schema["$defs"] = {
+        name: _uncertain_numbers(node) if name.endswith("Part") or name in ("Rotation", "Pattern") else node
+        for name, node in schema["$defs"].items()
+    }
+    schema["properties"]["uncertainty"] = UNCERTAINTY_KIND
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",
         "title": "rbi body spec",
     } | {k: v for k, v in schema.items() if k != "title"}
+
+
+UNCERTAIN_NUMBER = {
+    "type": "string",
+    "pattern": r"(±|\+-)",
+    "description": 'a number with its standard uncertainty: "VALUE ± U", "VALUE +- U" or "VALUE ± P%"',
+}
+"""What a number of a part may also be (issue 37): text holding one ±, read by rbi.spec.uncertain."""
+
+UNCERTAINTY_KIND = {
+    "enum": ["standard", "tolerance"],
+    "description": "how a ± of the parts reads: one standard uncertainty (default), or a tolerance limit",
+}
+"""The top-level ``uncertainty:`` key."""
+
+
+def _uncertain_numbers(node: Any) -> Any:
+    """``node`` with every ``{"type": "number"}`` schema widened to a number or :data:`UNCERTAIN_NUMBER`."""
+    if isinstance(node, dict):
+        if node.get("type") == "number":  # its words stay on the property, as editors look for them
+            said = {key: node[key] for key in ("title", "description", "default") if key in node}
+            return said | {"anyOf": [{k: v for k, v in node.items() if k not in said}, UNCERTAIN_NUMBER]}
+        return {key: _uncertain_numbers(value) for key, value in node.items()}
+    if isinstance(node, list):
+        return [_uncertain_numbers(value) for value in node]
+    return node
 
 
 def _plain_descriptions(node: Any) -> Any:
