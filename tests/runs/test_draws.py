@@ -67,3 +67,36 @@ def test_cli_json_beside_the_error_estimate():
     )
     assert "input_uncertainty" not in json.loads(run_rbi_inprocess(*args).stdout)
     one_line_exit_2(run_rbi_inprocess(*args, "--draws", "0"), "--draws")
+
+
+def test_a_figure_the_run_does_not_define_has_no_spread(tmp_path):
+    # an untilted free sphere spins steadily: no precession (null in the summary), so no spread
+    # of it either; ω stays (0, 0, 50) whatever the drawn radius and mass
+    spec = tmp_path / "ball.yaml"
+    spec.write_text(
+        'parts: [{name: ball, shape: sphere, radius: "0.1 ± 0.001", mass: "2 ± 1%", center: [0, 0, 0]}]\n'
+    )
+    proc = run_rbi_inprocess(
+        "simulate",
+        str(spec),
+        "--spin",
+        "50",
+        "--duration",
+        "0.5",
+        "--draws",
+        "8",
+        "--seed",
+        "1",
+        "-f",
+        "json",
+    )
+    assert proc.returncode == 0, proc.stderr
+    out = json.loads(proc.stdout)
+    assert out["mean_precession_rate_deg_s"] is None
+    spread = out["input_uncertainty"]
+    assert spread["mean_precession_rate_deg_s"] is None
+    assert spread["draws"] == 8 and spread["failed"] == 0
+    assert spread["final_omega"] == pytest.approx([0.0, 0.0, 0.0], abs=1e-9)
+    assert "error_estimate" in out
+    table = run_rbi_inprocess("simulate", str(spec), "--spin", "50", "--duration", "0.5", "--draws", "8")
+    assert table.returncode == 0, table.stderr

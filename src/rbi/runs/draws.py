@@ -69,5 +69,9 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
 
 
 def _sd(values: Any) -> float | None:
+    """The standard deviation of ``values``; None for fewer than two, or when a figure is
+    undefined (NaN: the precession rate of a run that does not precess, null in the summary)."""
     values = np.asarray(values, dtype=float)
-    return float(np.std(values - values[0], ddof=1)) if values.size > 1 else None
+    return (
+        float(np.std(values - values[0], ddof=1)) if values.size > 1 and np.isfinite(values).all() else None
+    )
