@@ -247,11 +247,11 @@ def test_a_long_chain_is_read_and_a_loop_in_it_still_named(tmp_path):
         read_robot(str(path), geometry=False)
 
 
-def test_mass_properties_made_by_rows_equal_the_constructors_bit_for_bit():
+def test_mass_properties_of_a_stack_equal_the_constructors_bit_for_bit():
     masses = RNG.random(500) * 10.0 ** RNG.integers(-5, 5, size=500)
     centers = RNG.normal(size=(500, 3))
     inertias = np.array([_symmetric(i) for i in range(500)])
-    made = MassProperties.rows(masses.tolist(), centers.copy(), inertias.copy(), "link")
+    made = MassProperties(masses, centers, inertias, "link")
     for k, value in enumerate(made):
         one = MassProperties(masses[k], centers[k], inertias[k], "link")
         assert value.mass == one.mass and value.frame == one.frame

@@ -1,5 +1,6 @@
-"""Whole-array translation of many plain parts (rbi.spec.translate_batch) gives the elements the
-per-part path gives, and errors still name the part."""
+"""Stacked translation of the plain parts of the common shapes (rbi.spec.translate.stacked_parts,
+a stack per shape: the one path of every spec) gives each part the element the one-part path
+(part_element) gives it, to the bit, and errors still name the part."""
 
 from __future__ import annotations
 
@@ -11,8 +12,10 @@ from hypothesis import strategies as st
 from rbi.core.mass import MassProperties
 from rbi.spec.errors import InputError
 from rbi.spec.load import spec_from_raw
-from rbi.spec.translate import _removed, body_from_spec, part_element
-from rbi.spec.translate_batch import MIN_PARTS, batch_elements
+from rbi.spec.translate import body_from_spec, part_element, stacked_parts
+
+MIN_PARTS = 64
+"""Parts in a generated spec (the stacked path once started at 64 parts; now it builds any spec)."""
 
 coordinate = st.floats(-5.0, 5.0, allow_nan=False)
 vector = st.lists(coordinate, min_size=3, max_size=3)
@@ -82,7 +85,7 @@ def _per_part(spec):
     out = []
     for part in spec.parts:
         element = part_element(part, spec.units, "batch.yaml")
-        out.append(_removed(element) if getattr(part, "subtract", False) else element)
+        out.append(element.scaled(-1.0) if getattr(part, "subtract", False) else element)
     return out
 
 
@@ -96,22 +99,14 @@ def _close(a, b, scale):
 @given(st.lists(any_part, min_size=MIN_PARTS, max_size=MIN_PARTS + 40))
 def test_batched_elements_equal_the_per_part_path(parts):
     spec = _spec(parts)
-    batched, holes = batch_elements(spec.parts, spec.units)
-    # plain parts of the batched shapes were all built at once; rotated boxes and patterns were not
-    plain = {i for i, p in enumerate(parts) if "rotation" not in p and "pattern" not in p}
-    assert set(batched) == plain
-    assert holes == {i for i in plain if parts[i].get("subtract")}
-    for i, element in batched.items():
+    stacked, holes = stacked_parts(spec, "batch.yaml")
+    assert holes == [i for i, p in enumerate(parts) if p.get("subtract")]
+    for i, element in enumerate(stacked):  # every part, plain or not, to the bit; holes negated
         want = part_element(spec.parts[i], spec.units, "batch.yaml")
-        assert element.mass == pytest.approx(want.mass, rel=1e-15, abs=0)
-        assert _close(
-            element.center_of_mass, want.center_of_mass, max(1.0, float(np.max(np.abs(want.center_of_mass))))
-        )
-        assert _close(
-            element.inertia_about_com,
-            want.inertia_about_com,
-            float(np.max(np.abs(want.inertia_about_com))) or 1e-300,
-        )
+        sign = -1.0 if i in holes else 1.0
+        assert element.mass == sign * want.mass
+        assert np.array_equal(element.center_of_mass, want.center_of_mass)
+        assert np.array_equal(element.inertia_about_com, sign * want.inertia_about_com)
     # the whole body, holes left out (they must lie inside a solid, which random parts do not)
     solid = _spec([{k: v for k, v in p.items() if k != "subtract"} for p in parts])
     expected = _per_part(solid)
@@ -158,14 +153,14 @@ def _one_shape(shape: str, rng: np.random.Generator) -> dict:
 @pytest.mark.parametrize("shape", ["cylinder", "cone", "sphere", "box"])
 def test_each_shape_batched_is_the_one_part_path_to_the_bit(shape):
     """Both paths take each formula from core.shapes (volume, centre of mass, moments, inertia
-    matrix): the same bits, shape by shape. Along a slanting axis the two paths still normalise
-    the axis apart (d/|d| here, unit_vector's (d/max)/|d/max| there: a rounding, which the
-    randomised test above allows)."""
+    matrix) and the same arithmetic for the axis and length (unit_vector's, numpy's norm for the
+    volume, Python's r**3 for a sphere's): the same bits, shape by shape (slanting axes: the
+    randomised test above)."""
     rng = np.random.default_rng(24)
     spec = _spec([_one_shape(shape, rng) for _ in range(2 * MIN_PARTS)])
-    batched, _ = batch_elements(spec.parts, spec.units)
+    batched, _ = stacked_parts(spec, "batch.yaml")
     assert len(batched) == len(spec.parts)
-    for i, element in batched.items():
+    for i, element in enumerate(batched):
         want = part_element(spec.parts[i], spec.units, "batch.yaml")
         assert element.mass == want.mass
         assert np.array_equal(element.center_of_mass, want.center_of_mass)
@@ -214,5 +209,3 @@ def test_errors_still_name_the_part():
     parts[57] = {"shape": "cylinder", "mass": 1e300, "radius": 1e200, "start": [0, 0, 0], "end": [0, 0, 1]}
     with pytest.raises(InputError, match=r"parts\[57\] \(p57\)"):
         body_from_spec(_spec(parts), "batch.yaml")
-    batched, _ = batch_elements(_spec(parts).parts, _spec(parts).units)
-    assert 57 not in batched and len(batched) == 99

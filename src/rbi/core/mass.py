@@ -148,27 +148,6 @@ class MassProperties:
         object.__setattr__(value, "frame", frame)
         return value
 
-    @classmethod
-    def rows(
-        cls, masses: Sequence[float], centers: np.ndarray, inertias: np.ndarray, frame: str = "body"
-    ) -> list[MassProperties]:
-        """One value per row: ``MassProperties(masses[k], centers[k], inertias[k], frame)``, from
-        float arrays of shapes (n, 3) and (n, 3, 3) that the caller has just made and gives away:
-        they are made read-only and each value holds its rows (an audit of 100,000 links makes
-        one per link)."""
-        centers = np.asarray(centers, dtype=float).reshape(-1, 3)
-        inertias = np.asarray(inertias, dtype=float).reshape(-1, 3, 3)
-        centers.flags.writeable = False
-        inertias.flags.writeable = False
-        found = []
-        for mass, center, inertia in zip(masses, centers, inertias):
-            value = object.__new__(cls)
-            vars(value).update(
-                mass=float(mass), center_of_mass=center, inertia_about_com=inertia, frame=frame
-            )
-            found.append(value)
-        return found
-
     @staticmethod
     def zero(frame: str = "body") -> MassProperties:
         """No mass: zero mass, centre of mass at the origin, zero inertia."""
@@ -285,15 +264,15 @@ def combine(
     return MassProperties(total, com, symmetrize(inertia), frame)
 
 
-def inertia_shares(parts: Sequence[MassProperties], body: MassProperties) -> np.ndarray:
-    """Each part's share of the trace of the body's inertia about the body's centre of mass
-    (fractions that add up to 1; a hole's share is negative).
+def inertia_shares(parts: MassProperties | Sequence[MassProperties], body: MassProperties) -> np.ndarray:
+    """Each part's (a stack, or single bodies) share of the trace of the body's inertia about
+    the body's centre of mass (fractions that add up to 1; a hole's share is negative).
 
     The trace is the sum of the three moments, ``2 ∫ |r|² dm``, so the share says which part
     carries the body's rotational inertia whatever the axes.
     """
     total = float(np.trace(body.inertia_about_com))
-    shares = np.empty(len(parts))
-    for i, part in enumerate(parts):
-        shares[i] = float(np.trace(part.inertia_about(body.center_of_mass))) / total if total != 0.0 else 0.0
-    return shares
+    if total == 0.0 or len(parts) == 0:
+        return np.zeros(len(parts))
+    stack = parts if isinstance(parts, MassProperties) else MassProperties.concatenate(parts)
+    return np.trace(stack.inertia_about(body.center_of_mass), axis1=-2, axis2=-1) / total

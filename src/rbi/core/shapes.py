@@ -51,7 +51,7 @@ Numbers: TypeAlias = Any
 """A float or a numpy array of them (the closed forms below are plain arithmetic on either)."""
 
 # The moments below are plain arithmetic, so they take numbers or whole numpy arrays (many
-# parts at once, as rbi.spec.translate_batch uses them) and give the same bits either way.
+# parts at once, as rbi.spec.translate.BUILDERS uses them) and give the same bits either way.
 
 
 def cone_moments(mass: Numbers, radius: Numbers, height: Numbers) -> tuple[Numbers, Numbers]:

@@ -20,20 +20,18 @@ MASS_RTOL = 1e-9
 """A net mass below this fraction of the gross mass counts as nothing left."""
 
 
-def _gross(elements: list[MassProperties]) -> MassProperties:
-    return MassProperties.sum(
-        MassProperties(abs(e.mass), e.center_of_mass, np.sign(e.mass) * e.inertia_about_com) for e in elements
-    )
-
-
-def body_problem(elements: list[MassProperties], mass_unit: str = "") -> str | None:
-    """Why the body made of ``elements`` (holes with negative mass) is not physical, or None."""
-    gross = _gross(elements)
-    net_mass = float(sum(e.mass for e in elements))
+def body_problem(elements: MassProperties, mass_unit: str = "") -> str | None:
+    """Why the body made of the stack ``elements`` (holes with negative mass) is not physical,
+    or None."""
+    sign = np.sign(elements.mass)
+    gross = MassProperties(
+        np.abs(elements.mass), elements.center_of_mass, sign[:, None, None] * elements.inertia_about_com
+    ).sum()
+    net_mass = float(sum(elements.mass.tolist()))
     if not net_mass > MASS_RTOL * gross.mass:
         unit = f" {mass_unit}" if mass_unit else ""
         return f"no mass left: the body's mass would be {net_mass:.6g}{unit} (a hole cannot remove more material than there is)"
-    props = MassProperties.sum(elements)
+    props = elements.sum()
     problem = inertia_problem(
         props.inertia_about_com, INERTIA_RTOL, scale=0.5 * float(np.trace(gross.inertia_about_com))
     )
@@ -42,17 +40,16 @@ def body_problem(elements: list[MassProperties], mass_unit: str = "") -> str | N
     return None
 
 
-def check_holes(path: str, spec, elements: list[MassProperties], holes: list[int]) -> None:
+def check_holes(path: str, spec, elements: MassProperties, holes: list[int]) -> None:
     """Raise :class:`InputError` naming the first hole (in file order) after which the body
     stops being physical; the material parts are counted first."""
     if body_problem(elements, spec.units.mass) is None:
         return
 
     hole_set = set(holes)
-    running = [e for i, e in enumerate(elements) if i not in hole_set]
-    for i in holes:
-        running.append(elements[i])
-        problem = body_problem(running, spec.units.mass)
+    solid = [i for i in range(len(elements)) if i not in hole_set]
+    for k, i in enumerate(holes):
+        problem = body_problem(elements[solid + holes[: k + 1]], spec.units.mass)
         if problem is not None:
             raise InputError(f"{path}: {part_label(i, spec.parts[i])}: subtract: {problem}")
     raise InputError(

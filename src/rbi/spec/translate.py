@@ -1,7 +1,15 @@
-"""The one place where validated spec models become core inputs (plain floats and arrays)."""
+"""The one place where validated spec models become core inputs (plain floats and arrays).
+
+A body's parts become one :class:`~rbi.core.mass.MassProperties` stack (:func:`stacked_parts`):
+the plain parts of the common shapes a stack per shape, whole-array (:data:`BUILDERS`), each
+to the bit what the one-part path (:func:`part_element`) gives it; every other part (files,
+patterns, rotations, the other shapes) and any whose numbers fail there through that path,
+which names the part in its errors."""
 
 from __future__ import annotations
 
+import functools
+import math
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -12,7 +20,13 @@ import numpy as np
 from rbi.core import shapes
 from rbi.core.inertia import parallel_axis_to_com, re_express
 from rbi.core.mass import MassProperties
-from rbi.core.rotation import axis_angle_matrix, euler_matrix, quaternion_to_matrix, without_rounding_noise
+from rbi.core.rotation import (
+    axis_angle_matrix,
+    euler_matrix,
+    quaternion_to_matrix,
+    vector_length,
+    without_rounding_noise,
+)
 from rbi.core.validity import inertia_problem
 from rbi.formats.paths import spec_relative_file
 from rbi.spec import models
@@ -21,7 +35,6 @@ from rbi.spec.holes import check_holes
 from rbi.spec.materials import density_in_units
 from rbi.spec.pattern import patterned
 from rbi.spec.plausibility import unit_warnings
-from rbi.spec.translate_batch import MIN_PARTS, SMALLEST_MOMENT, batch_elements, moments_lost
 from rbi.spec.units import LENGTH_UNITS_IN_M, convert_body, unit_labels
 from rbi.spec.volumes import one_volume
 
@@ -31,7 +44,8 @@ class LoadedBody:
     """A validated body in the core's terms (all numbers in the file's own units).
 
     props: mass properties (CoM and inertia in the body frame). pivot: the fixed point, body
-    frame, or None. elements: each part's mass properties, in file order.
+    frame, or None. elements: the parts' mass properties, one stack in file order (a hole's
+    mass and inertia negative; the point cloud last).
     """
 
     path: str
@@ -40,7 +54,7 @@ class LoadedBody:
     mass_unit: str
     props: MassProperties
     pivot: np.ndarray | None
-    elements: list[MassProperties]
+    elements: MassProperties
     part_names: list[str | None]
     expect: dict[str, Any] | None = None
     spin_axis: np.ndarray | None = None
@@ -290,9 +304,181 @@ GIVEN_MASS: dict[type, Callable[[Any], MassProperties]] = {
 """The parts without a volume (their ``mass`` is given), file units."""
 
 
-def _removed(element: MassProperties) -> MassProperties:
-    """A hole: the same solid with negative mass and inertia."""
-    return MassProperties(-element.mass, element.center_of_mass, -element.inertia_about_com)
+# --- the plain parts of the common shapes, a stack per shape ------------------------------
+
+
+def _densities(parts: list, units: models.Units) -> tuple[np.ndarray, np.ndarray]:
+    """``(mass_given, density)`` per part (NaN where not given); ``density`` NaN also where a
+    material name cannot be looked up (the per-part path will say why)."""
+    n = len(parts)
+    mass = np.full(n, np.nan)
+    density = np.full(n, np.nan)
+    looked_up: dict[str, float] = {}
+    for i, part in enumerate(parts):
+        if part.mass is not None:
+            mass[i] = part.mass
+            continue
+        d = part.density
+        if isinstance(d, str):
+            if d not in looked_up:
+                try:
+                    looked_up[d] = density_in_units(d, units.length, units.mass)
+                except (ValueError, KeyError):
+                    looked_up[d] = math.nan
+            d = looked_up[d]
+        density[i] = math.nan if d is None else d
+    return mass, density
+
+
+class Columns:
+    """One part's fields as columns of ``n`` values, for the builders below: the part's own
+    value everywhere but where ``values`` (by field, or ``(field, component)``) gives a column
+    (Monte Carlo draws and the steps of sensitivities, :mod:`rbi.spec.uncertain`)."""
+
+    def __init__(self, part: Any, n: int, values: dict[tuple[Any, ...], np.ndarray]) -> None:
+        self.part, self.n, self.values = part, n, values
+
+    def __len__(self) -> int:
+        return self.n
+
+    def column(self, field: str) -> np.ndarray:
+        nominal = getattr(self.part, field)
+        if isinstance(nominal, (list, tuple)):
+            return np.stack(
+                [self.values.get((field, j), np.full(self.n, float(x))) for j, x in enumerate(nominal)], 1
+            )
+        return self.values.get((field,), np.full(self.n, float(nominal)))
+
+    def masses(self, units: models.Units, volume: np.ndarray) -> np.ndarray:
+        if self.part.mass is not None:
+            return self.column("mass")
+        if isinstance(self.part.density, str):
+            return density_in_units(self.part.density, units.length, units.mass) * volume
+        return self.column("density") * volume
+
+
+def _solid_masses(parts: Any, units: models.Units, volume: np.ndarray) -> np.ndarray:
+    if isinstance(parts, Columns):
+        return parts.masses(units, volume)
+    given, density = _densities(parts, units)
+    return np.where(np.isnan(given), density * volume, given)
+
+
+def _vectors(parts: Any, field: str) -> np.ndarray:
+    if isinstance(parts, Columns):
+        return parts.column(field)
+    return np.array([getattr(p, field) for p in parts], dtype=float).reshape(len(parts), 3)
+
+
+def _scalars(parts: Any, field: str) -> np.ndarray:
+    if isinstance(parts, Columns):
+        return parts.column(field)
+    return np.array([getattr(p, field) for p in parts], dtype=float)
+
+
+def _axes(d: np.ndarray) -> tuple[np.ndarray, Any, np.ndarray]:
+    """Each row's unit vector and length as one part's :func:`rbi.core.shapes.axis_between`
+    gives them (``unit_vector``'s arithmetic, without its refusal: a zero or overflowing row
+    gives NaN, left to the one-part path), and its length as the part's volume takes it
+    (:func:`rbi.spec.volumes.one_volume`: numpy's norm)."""
+    largest = np.max(np.abs(d), axis=-1, keepdims=True)
+    scaled = d / largest
+    unit = scaled / np.sqrt(np.sum(scaled * scaled, axis=-1, keepdims=True))
+    return unit, vector_length(d), np.sqrt(np.sum(d * d, axis=-1))
+
+
+def _points(parts, units):
+    masses = _scalars(parts, "mass")
+    return masses, _vectors(parts, "position"), np.zeros((len(parts), 3, 3))
+
+
+def _cylinders(parts, units):
+    radius = _scalars(parts, "radius")
+    start, end = _vectors(parts, "start"), _vectors(parts, "end")
+    u, length, norm = _axes(end - start)
+    mass = _solid_masses(parts, units, shapes.cylinder_volume(radius, norm))
+    axial, transverse = shapes.cylinder_moments(mass, radius, length)
+    return mass, shapes.middle(start, end), shapes.axisymmetric_inertia(axial, transverse, u)
+
+
+def _cones(parts, units):
+    radius = _scalars(parts, "radius")
+    apex, base = _vectors(parts, "apex"), _vectors(parts, "base")
+    u, height, norm = _axes(base - apex)
+    mass = _solid_masses(parts, units, shapes.cone_volume(radius, norm))
+    com = shapes.cone_center_of_mass(apex, u, height)
+    axial, transverse = shapes.cone_moments(mass, radius, height)
+    return mass, com, shapes.axisymmetric_inertia(axial, transverse, u)
+
+
+def _sphere_volume(radius: float) -> float:
+    """One sphere's volume as one part's path takes it (Python's ``r**3``, which numpy's power of
+    an array may round apart); inf where Python's power overflows (the part is then reported)."""
+    try:
+        return shapes.sphere_volume(radius)
+    except OverflowError:
+        return math.inf
+
+
+def _spheres(parts, units):
+    radius = _scalars(parts, "radius")
+    volume = np.array([_sphere_volume(r) for r in radius.tolist()])
+    mass = _solid_masses(parts, units, volume)
+    return mass, _vectors(parts, "center"), shapes.sphere_inertia(mass, radius)
+
+
+def _boxes(parts, units):
+    size = _vectors(parts, "size")
+    mass = _solid_masses(parts, units, shapes.box_volume(size))
+    return mass, _vectors(parts, "center"), shapes.box_inertia(mass, size)
+
+
+BUILDERS = {
+    models.PointPart: _points,
+    models.CylinderPart: _cylinders,
+    models.ConePart: _cones,
+    models.SpherePart: _spheres,
+    models.BoxPart: _boxes,
+}
+"""Each stacked part model's ``(parts, units) -> (mass (n,), com (n, 3), inertia (n, 3, 3))``, to
+the bit what :func:`part_element` gives each part alone (``tests/spec/test_translate_batch.py``)."""
+
+
+@functools.cache
+def _fields(kind: type) -> set[str]:
+    return set(getattr(kind, "model_fields", {}))
+
+
+def plain_part(part: Any) -> bool:
+    """Whether a part of a batched shape may be built by :data:`BUILDERS` (no pattern, no rotation)."""
+    return _plain(part, _fields(type(part)))
+
+
+def _plain(part: Any, fields: set[str]) -> bool:
+    """No pattern of more than one copy, no rotation (fields looked up only where the model has
+    them: a missing attribute on a pydantic model is slow to ask for)."""
+    if "pattern" in fields and part.pattern is not None and part.pattern.count > 1:
+        return False
+    return "rotation" not in fields or part.rotation is None
+
+
+WITHOUT_OWN_MOMENTS = ("point", "custom", "assembly")
+"""Shapes whose moments about their own centre may be zero: a point mass, and moments given as
+written. Every other shape with a mass has moments of its own."""
+
+
+SMALLEST_MOMENT = 1e9 * float(np.finfo(float).smallest_subnormal)
+"""Below this (4.9e-315) a double keeps fewer than 9 significant digits: moments there have lost
+their digits or vanished (subnormal moments above it, such as a ball of the smallest normal mass,
+keep 12 and are computed)."""
+
+
+def moments_lost(inertia: np.ndarray, shape: str) -> np.ndarray:
+    """Whether the moments of solids of ``shape`` (inertia ``(..., 3, 3)`` about their own centre)
+    underflowed: all below :data:`SMALLEST_MOMENT`, so they would print as zeros or as digits-less
+    subnormals (a mass of 1e-300 with a size of 1e-160: the true moments are 1e-620)."""
+    largest = np.max(np.abs(np.diagonal(inertia, axis1=-2, axis2=-1)), axis=-1)
+    return np.asarray((shape not in WITHOUT_OWN_MOMENTS) & (largest < SMALLEST_MOMENT))
 
 
 def _finite_element(index: int, part, units: models.Units, path: str) -> MassProperties:
@@ -323,41 +509,54 @@ def _finite_element(index: int, part, units: models.Units, path: str) -> MassPro
     return element
 
 
+def stacked_parts(spec: models.BodySpec, path: str) -> tuple[MassProperties, list[int]]:
+    """Every part's mass element (file units; a hole's mass and inertia negative) as one stack in
+    file order, and the holes' indices. The plain parts of the common shapes are built a stack
+    per shape (:data:`BUILDERS`); the other parts, and any whose numbers fail there, one by one
+    (:func:`_finite_element`, which names the part)."""
+    parts = spec.parts
+    mass, com, inertia = np.zeros(len(parts)), np.zeros((len(parts), 3)), np.zeros((len(parts), 3, 3))
+    built = np.zeros(len(parts), dtype=bool)
+    groups: dict[type, list[int]] = {}
+    for i, part in enumerate(parts):
+        if type(part) in BUILDERS and _plain(part, _fields(type(part))):
+            groups.setdefault(type(part), []).append(i)
+    for kind, indices in groups.items():
+        chosen = [parts[i] for i in indices]
+        with np.errstate(all="ignore"):
+            m, c, I = BUILDERS[kind](chosen, spec.units)
+            ok = (
+                np.isfinite(m)
+                & np.all(np.isfinite(c), axis=1)
+                & np.all(np.isfinite(I), axis=(1, 2))
+                & ~moments_lost(I, chosen[0].shape)
+            )
+        rows = np.asarray(indices)[ok]
+        mass[rows], com[rows], inertia[rows], built[rows] = m[ok], c[ok], I[ok], True
+    for i in np.flatnonzero(~built).tolist():
+        element = _finite_element(i, parts[i], spec.units, path)
+        mass[i], com[i], inertia[i] = element.mass, element.center_of_mass, element.inertia_about_com
+    holes = [i for i, part in enumerate(parts) if "subtract" in _fields(type(part)) and part.subtract]
+    mass[holes], inertia[holes] = -mass[holes], -inertia[holes]
+    return MassProperties(mass, com, inertia), holes
+
+
 def body_from_spec(spec: models.BodySpec, path: str):
     """Translate a validated :class:`~rbi.spec.models.BodySpec` into a
     :class:`LoadedBody`."""
-
-    elements = []
-    holes = []
-
-    batched, batched_holes = {}, set()
-    if len(spec.parts) >= MIN_PARTS:  # many parts: the plain ones of the common shapes as whole arrays
-        batched, batched_holes = batch_elements(spec.parts, spec.units)
-    for i, part in enumerate(spec.parts):
-        if i in batched:  # built as whole arrays and checked finite there
-            element = batched[i]
-            if i in batched_holes:
-                holes.append(i)
-                element = _removed(element)
-            elements.append(element)
-            continue
-        element = _finite_element(i, part, spec.units, path)
-        if getattr(part, "subtract", False):
-            holes.append(i)
-            element = _removed(element)
-        elements.append(element)
+    elements, holes = stacked_parts(spec, path)
     part_names = [p.name for p in spec.parts]
     if spec.point_cloud is not None:  # the whole cloud enters as one part, reduced vectorised
         # not at top level: `rbi inertia` would load rbi.formats.point_cloud too
         from rbi.formats.point_cloud import cloud_element
 
-        elements.append(cloud_element(path, spec.point_cloud.file))
+        elements = MassProperties.concatenate([elements, cloud_element(path, spec.point_cloud.file)])
         part_names.append("point_cloud")
     if holes:
         check_holes(path, spec, elements, holes)
     try:
         with np.errstate(over="ignore", invalid="ignore"):
-            props = MassProperties.sum(elements)
+            props = elements.sum()
     except ValueError as exc:
         raise InputError(f"{path}: {exc}") from None
     if not all(np.all(np.isfinite(x)) for x in (props.mass, props.center_of_mass, props.inertia_about_com)):

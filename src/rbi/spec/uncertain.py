@@ -9,7 +9,7 @@ or with a top-level ``uncertainty: tolerance`` the half-width of a uniform distr
 
 :func:`part_stack` evaluates one part's mass properties for many values of its uncertain inputs
 at once (Monte Carlo draws, or the steps of the sensitivities): the common shapes as whole
-arrays (:mod:`rbi.spec.translate_batch`), the others part by part through the same translation.
+arrays (:data:`rbi.spec.translate.BUILDERS`), the others part by part through the same translation.
 """
 
 from __future__ import annotations
@@ -35,8 +35,7 @@ from rbi.core.uncertainty import (
 )
 from rbi.errors import InputError, shown
 from rbi.spec import models
-from rbi.spec.translate import part_element
-from rbi.spec.translate_batch import BUILDERS, Columns, plain_part
+from rbi.spec.translate import BUILDERS, Columns, part_element, plain_part
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
 
 PLUS_MINUS = re.compile(r"±|\+/-|\+-")

@@ -61,5 +61,5 @@ def convert_body(body, length_unit: str, mass_unit: str):
         mass_unit=mass_unit,
         props=element(body.props),
         pivot=None if body.pivot is None else body.pivot * L,
-        elements=[element(e) for e in body.elements],
+        elements=element(body.elements),
     )
