@@ -176,3 +176,10 @@ def test_every_bundled_body_with_plus_minus(tmp_path, spec):
     assert (
         run_rbi_inprocess("uncertainty", path, "--method", "monte-carlo", "--samples", "2000").returncode == 0
     )
+
+
+def test_of_a_whole_vector_or_matrix_is_its_entries():
+    body = rbi.load(TOLERANCED)
+    names = [q["quantity"] for q in body.uncertainty(of=["center_of_mass", "moments[1]"]).quantities]
+    assert names == ["center_of_mass[0]", "center_of_mass[1]", "center_of_mass[2]", "moments[1]"]
+    assert len(body.uncertainty(of="inertia").quantities) == 9

@@ -313,3 +313,11 @@ def test_plus_minus_on_a_mesh_scale(tmp_path):
     m, inertia = plain.props.mass, plain.props.inertia_about_com
     assert u_of(loaded, "mass") == pytest.approx(3 * m * 0.01, rel=1e-9)  # mass ∝ scale³
     assert u_of(loaded, "inertia[0][0]") == pytest.approx(5 * inertia[0, 0] * 0.01, rel=1e-9)  # ∝ scale⁵
+
+
+def test_tolerance_limits_are_drawn_uniform():
+    loaded = body([{"shape": "point", "mass": "2 ± 0.3", "position": [0, 0, 0]}], uncertainty="tolerance")
+    result = budget(loaded, of=["mass"], method="monte-carlo", samples=100_000, seed=5)["quantities"][0]
+    assert result["u"] == pytest.approx(0.3 / math.sqrt(3), rel=0.01)
+    low, high = result["interval"]  # 95 % of a uniform on [1.7, 2.3]: width 0.57, inside the limits
+    assert 1.7 <= low and high <= 2.3 and high - low == pytest.approx(0.57, abs=0.005)

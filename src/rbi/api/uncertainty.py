@@ -99,7 +99,8 @@ def budget_of(
     """`Body.uncertainty`'s work: the arguments checked (ArgumentError naming the parameter),
     then the budget."""
     names = [of] if isinstance(of, str) else of
-    if names is not None:
+    if names is not None:  # a whole vector or matrix stands for its entries
+        names = [q for name in names for q in ([n for n in QUANTITIES if n.startswith(f"{name}[")] or [name])]
         unknown = [q for q in names if q not in QUANTITIES]
         if unknown or not names:
             raise ArgumentError(

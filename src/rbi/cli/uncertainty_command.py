@@ -16,7 +16,7 @@ OfOption = Annotated[
         "--of",
         metavar="QUANTITY",
         help="A quantity as a JSON path of rbi inertia/principal: mass, center_of_mass[0], inertia[0][2], "
-        "moments[1] (repeat for several). Default: mass, centre of mass, inertia about it, principal moments.",
+        "moments[1]; center_of_mass alone: its 3 entries (repeat for several). Default: mass, centre of mass, inertia about it, principal moments.",
         show_default=False,
     ),
 ]
