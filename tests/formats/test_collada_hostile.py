@@ -160,3 +160,40 @@ def test_positions_are_still_read_with_any_whitespace():
     text = cube_dae().replace(CUBE_POSITIONS, CUBE_POSITIONS.replace(" ", "\n\t "))
     vertices, faces = parse_collada(text.encode())
     assert len(faces) == 12 and np.allclose(vertices.max(axis=0), [1, 1, 1])
+
+
+def test_a_large_mesh_under_a_memory_limit_is_one_line(tmp_path):
+    """1.9 million triangles (under the limit) read by `rbi audit` with 500 MB of address space:
+    before, 'rbi: internal error: MemoryError: Unable to allocate 43.5 MiB ...' (exit 1); now a
+    result, or one line naming the file (the 198 MB file of the issue under 2.5 GB did the same)."""
+    import resource
+
+    rng = np.random.default_rng(38)
+    positions = " ".join(f"{x:.3f}" for x in rng.random(3 * 100_000))
+    indices = " ".join(map(str, rng.integers(0, 100_000, 3 * 1_900_000)))
+    (tmp_path / "big.dae").write_text(
+        f'{HEAD}<library_geometries><geometry id="g"><mesh><source id="p"><float_array id="pa">{positions}</float_array>'
+        '<technique_common><accessor source="#pa" stride="3"/></technique_common></source>'
+        '<vertices id="v"><input semantic="POSITION" source="#p"/></vertices>'
+        f'<triangles count="1900000"><input semantic="VERTEX" source="#v" offset="0"/><p>{indices}</p></triangles>'
+        "</mesh></geometry></library_geometries></COLLADA>"
+    )
+    (tmp_path / "r.urdf").write_text(
+        '<robot name="r"><link name="a"><inertial><mass value="1"/><inertia ixx="1" iyy="1" izz="1" ixy="0" ixz="0" iyz="0"/>'
+        '</inertial><collision><geometry><mesh filename="big.dae"/></geometry></collision></link></robot>'
+    )
+
+    def limited():
+        resource.setrlimit(resource.RLIMIT_AS, (500 * 2**20, 500 * 2**20))
+
+    proc = subprocess.run(
+        [sys.executable, "-m", "rbi", "audit", str(tmp_path / "r.urdf"), "--format", "json"],
+        capture_output=True,
+        text=True,
+        timeout=300,
+        preexec_fn=limited,
+        env=dict(__import__("os").environ, OPENBLAS_NUM_THREADS="1"),
+    )
+    assert "internal error" not in proc.stderr and "Traceback" not in proc.stderr, proc.stderr
+    if proc.returncode == 2:
+        assert len(proc.stderr.strip().splitlines()) == 1 and "big.dae" in proc.stderr, proc.stderr

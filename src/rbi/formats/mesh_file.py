@@ -109,12 +109,17 @@ def read_mesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
         if file_type == "stl":
             _binary_stl_cap(path)
         data = _read_bytes(path)
-        vertices, faces = _PARSERS[file_type](data)
-        del data
-        problem = arrays_problem(vertices, faces)
-        if problem is not None:
-            raise ValueError(f"mesh {problem}")
-        return weld_vertices(vertices, faces)
+        try:
+            vertices, faces = _PARSERS[file_type](data)
+            del data
+            problem = arrays_problem(vertices, faces)
+            if problem is not None:
+                raise ValueError(f"mesh {problem}")
+            return weld_vertices(vertices, faces)
+        except MemoryError:  # a large file under a memory limit (ulimit -v): one line, not a traceback
+            raise ValueError(
+                "not enough memory to read this mesh (decimate it, or allow more memory)"
+            ) from None
 
     return cached(_CACHE, _CACHE_ENTRIES, key, make)
 

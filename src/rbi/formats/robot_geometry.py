@@ -265,6 +265,11 @@ def _integrated(geom: Geom, path, scale: np.ndarray, mode: str, where: str, repa
             if mode == "legacy" or (as_mujoco and mode == "exact")
             else mesh_distribution(vertices, faces, mode)
         )
+    except MemoryError:  # a large mesh under a memory limit (ulimit -v): one line, not a traceback
+        raise InputError(
+            f"{where}{geom.label}: {path.name}: not enough memory to integrate this mesh (decimate it, "
+            "or allow more memory)"
+        ) from None
     except ValueError as exc:
         refusal = _NotIntegrable(f"{where}{geom.label}: {path.name}: mesh {_hinted(str(exc), mode)}")
         refusal.reason = str(exc).split("; for such a mesh")[0].split("; audit it with")[0]
