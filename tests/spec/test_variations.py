@@ -3,10 +3,12 @@ through the ordinary translation (a varied radius changes a density part's mass)
 
 from __future__ import annotations
 
+import json
 import math
 
 import pytest
 
+from rbi.errors import ArgumentError
 from rbi.spec.errors import InputError
 from rbi.spec.load import read_yaml, spec_from_raw
 from rbi.spec.translate import body_from_spec
@@ -104,3 +106,29 @@ def test_sweep_varies_parts_named_with_dots_and_equals_signs(write_spec, path, o
     assert [float(r["mass"]) for r in rows] == pytest.approx(
         [0.4 + 0.01 + other, 0.4 + 0.03 + other], rel=1e-14
     )
+
+
+def test_a_sub_assembly_s_measured_mass_may_be_swept_where_the_spec_leaves_it_out(write_spec):
+    """Issue 39: ``--vary parts.panel.mass`` on a sub-assembly written without ``mass``: the
+    sweep sets the measured mass (per copy of a pattern); the nominal keeps the parts' own."""
+    from tests.conftest import run_rbi_inprocess
+
+    write_spec("parts:\n  - {name: w, shape: point, mass: 0.5, position: [0.1, 0, 0]}\n", "weight.yaml")
+    spec = write_spec(
+        "parts:\n  - {name: hub, shape: point, mass: 1, position: [0, 0, 0]}\n"
+        "  - {name: panel, shape: assembly, file: weight.yaml,\n"
+        "     pattern: {count: 2, axis: [0, 0, 1], through: [0, 0, 0]}}\n"
+    )
+    raw = read_yaml(spec)
+    path = resolve(raw, "parts.panel.mass")
+    assert current_values(raw, [path]) == [None]
+    assert with_values(raw, [path], [None]) == raw
+    assert with_values(raw, [path], [2.0])["parts"][1]["mass"] == 2.0
+    proc = run_rbi_inprocess(
+        "sweep", spec, "--mass-properties", "--vary", "parts.panel.mass=0.25:1:2", "--format", "json"
+    )
+    assert proc.returncode == 0, proc.stderr
+    masses = [run["mass"] for run in json.loads(proc.stdout)["runs"]]
+    assert masses == [pytest.approx(1 + 2 * 0.25), pytest.approx(1 + 2 * 1.0)]  # mass is per copy
+    with pytest.raises(ArgumentError, match="no such field"):
+        resolve(raw, "parts.hub.radius")

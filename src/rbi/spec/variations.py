@@ -20,6 +20,11 @@ from rbi.errors import ArgumentError, literal
 _TOKEN = re.compile(r"([^.\[\]]+)|\[(-?\d+)\]")
 
 
+OPTIONAL_NUMBERS = {"assembly": ("mass",)}
+"""Numbers a part may leave out that a sweep may still set: a sub-assembly's measured ``mass``
+(left out, the parts' own masses add up)."""
+
+
 @dataclass(frozen=True)
 class FieldPath:
     """A resolved path: ``text`` as written, ``steps`` the keys and list indices that reach the
@@ -76,6 +81,8 @@ def resolve(raw: Any, text: str) -> FieldPath:
             k += used
             continue
         if isinstance(node, dict):
+            if k == len(tokens) - 1 and token in OPTIONAL_NUMBERS.get(node.get("shape"), ()):
+                return FieldPath(text, (*steps, token))
             if not isinstance(token, str) or token not in node:
                 fields = literal(", ".join(sorted(map(str, node))), quoted=False)
                 raise ArgumentError(
@@ -129,9 +136,12 @@ def _list_index(items: list, token: Any) -> int | None:
 
 
 def with_values(raw: Any, paths: list[FieldPath], values) -> Any:
-    """A copy of ``raw`` with the number at each path replaced by the matching value."""
+    """A copy of ``raw`` with the number at each path replaced by the matching value (None:
+    a number the spec leaves out stays out)."""
     changed = copy.deepcopy(raw)
     for path, value in zip(paths, values):
+        if value is None:
+            continue
         node = changed
         for step in path.steps[:-1]:
             node = node[step]
@@ -139,12 +149,13 @@ def with_values(raw: Any, paths: list[FieldPath], values) -> Any:
     return changed
 
 
-def current_values(raw: Any, paths: list[FieldPath]) -> list[float]:
-    """The numbers at ``paths`` in ``raw`` as written."""
-    values = []
+def current_values(raw: Any, paths: list[FieldPath]) -> list[float | None]:
+    """The numbers at ``paths`` in ``raw`` as written; None for one the spec leaves out
+    (:data:`OPTIONAL_NUMBERS`)."""
+    values: list[float | None] = []
     for path in paths:
         node = raw
-        for step in path.steps:
+        for step in path.steps[:-1]:
             node = node[step]
-        values.append(float(node))
+        values.append(float(node[path.steps[-1]]) if path.steps[-1] in node else None)
     return values
