@@ -561,6 +561,8 @@ class Parts(Result, Sequence[Part]):
         share of the inertia; principal moments. Each ends with the whole body's row."""
         body, rows = self._body, self.part_rows()
         labels, units, name = body.unit_labels, body.units, body.name or body.path
+        spreads = [row.get("uncertainty", {}) for row in rows]  # a spec with ±: value ± u
+        total = self._uncertainty().get("uncertainty", {})
         names = [row["name"] for row in rows]
         l_unit, m_unit = units["length"], units["mass"]
         masses = _part_table(
@@ -576,14 +578,20 @@ class Parts(Result, Sequence[Part]):
             [
                 (
                     row["shape"] + (" (hole)" if row["hole"] else ""),
-                    number(row["mass"]),
+                    _with_u(row["mass"], spread.get("mass")),
                     number(100 * row["mass_share"], 4),
                     "—" if row["volume"] is None else number(row["volume"]),
                     number(row["implied_density"], 4),
                 )
-                for row in rows
+                for row, spread in zip(rows, spreads)
             ],
-            ("", number(body.mass), number(100.0, 4), number(self.volume), number(self.mean_density, 4)),
+            (
+                "",
+                _with_u(body.mass, total.get("mass")),
+                number(100.0, 4),
+                number(self.volume),
+                number(self.mean_density, 4),
+            ),
             left=2,
         )
         size, length = body_size(body.mass_properties), labels["length"]
@@ -593,25 +601,47 @@ class Parts(Result, Sequence[Part]):
             (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
             [
                 (
-                    *(number(c) for c in without_noise(row["center_of_mass"], size)),
+                    *_place_cells(row["center_of_mass"], size, spread),
                     number(100 * row["inertia_share"], 4),
                 )
-                for row in rows
+                for row, spread in zip(rows, spreads)
             ],
-            (*(number(c) for c in without_noise(body.center_of_mass, size)), number(100.0, 4)),
+            (
+                *_place_cells(body.center_of_mass, size, total),
+                number(100.0, 4),
+            ),
         )
+        return [masses, places, self._moments_table(name, rows, total)]
+
+    def _moments_table(self, name: str, rows: list[dict[str, Any]], total: dict[str, Any]) -> Rows:
+        """The third table of `rows`: each part's principal moments (own CoM), the body's
+        ``± u`` when the spec has a ±."""
+        labels = self._body.unit_labels
         scale, scale_text = matrix_digits(
             [self.principal_moments, *(row["principal_moments"] for row in rows)]
         )
         unit = f"[{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
-        moments = _part_table(
+        return _part_table(
             f"{name}: parts — principal moments (own CoM)",
-            names,
+            [row["name"] for row in rows],
             (f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
             [tuple(number(m / scale, 5) for m in row["principal_moments"]) for row in rows],
-            tuple(number(m / scale, 5) for m in self.principal_moments),
+            tuple(
+                _with_u(m / scale, None if u is None else u / scale, 5)
+                for m, u in zip(self.principal_moments, total.get("principal_moments", [None] * 3))
+            ),
         )
-        return [masses, places, moments]
+
+
+def _with_u(value: float, u: float | None, digits: int = 6) -> str:
+    """A table cell: ``value ± u`` when the spec gives the value an uncertainty, else the value."""
+    return number(value, digits) if u is None else plus_minus(value, u)
+
+
+def _place_cells(point: Any, size: float, spread: dict[str, Any]) -> list[str]:
+    """A centre of mass's three table cells, rounding noise as 0 (see :func:`without_noise`),
+    each ``± u`` when ``spread`` (the ``"uncertainty"`` of the JSON) gives one."""
+    return list(map(_with_u, without_noise(point, size), spread.get("center_of_mass", [None] * 3)))
 
 
 def _part_table(
