@@ -54,9 +54,7 @@ class StepImport:
                 "name": solid.name,
                 "index": i,
                 "volume": solid.volume,
-                "mass": self.density * solid.volume,
-                "center_of_mass": solid.props.center_of_mass,
-                "inertia_about_com": self.density * solid.props.inertia_about_com,
+                **solid.props.scaled(self.density).to_dict(),
                 "integration_error": solid.integration_error,
             }
             for i, solid in enumerate(self.solids)

@@ -193,7 +193,7 @@ def _replaced(node: Any, steps: tuple[Any, ...], value: Any) -> Any:
 
 def batched(part: Any, inputs: list[UncertainInput]) -> bool:
     """Whether ``part`` is built by the whole-array closed forms of
-    :data:`rbi.spec.translate_batch.BUILDERS` (which also take complex numbers)."""
+    :data:`rbi.spec.translate.BUILDERS` (which also take complex numbers)."""
     return type(part) in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in inputs)
 
 
