@@ -6,7 +6,6 @@ from collections.abc import Sequence
 
 from rich import box
 from rich.console import Group
-from rich.markup import escape
 from rich.table import Table
 from rich.text import Text
 
@@ -14,16 +13,18 @@ from rbi.cli.terminal import ERROR_HANDLER, ascii_only, terminal_safe
 
 
 def plain_text(text: str) -> str:
-    """Text from a spec (a name) shown as it is: not read as rich markup (``top [v2]``), and
-    with control characters escaped so a name cannot drive the terminal."""
-    return escape(terminal_safe(text))
+    """Text from a spec (a name) as a table takes it: every string a :class:`SafeTable` is given
+    is shown as it is (never read as rich markup) and made safe there, once."""
+    return text
 
 
 class SafeTable(Table):
-    """A rich Table whose title, headers and cells never carry a control character (escaped as
-    in :func:`rbi.cli.render.terminal_safe`, before the layout so columns stay aligned), and
-    which spells rbi's symbols in ASCII (``kg*m^2``, ``deg``) when standard output cannot
-    encode them. Every table rbi prints is built on it (:func:`titled`)."""
+    """A rich Table whose title, headers and cells are text, never rich markup (a name such as
+    ``top [v2]`` or a quantity ``final q [w, x, y, z]`` is shown as written), without a control
+    character (escaped as in :func:`rbi.cli.terminal.terminal_safe`, once, here, before the
+    layout so columns stay aligned), and which spells rbi's symbols in ASCII (``kg*m^2``,
+    ``deg``) when standard output cannot encode them. Every table rbi prints is built on it
+    (:func:`titled`)."""
 
     def __init__(self, *args, title=None, **kwargs):
         super().__init__(*args, title=_cell(title), **kwargs)
@@ -36,27 +37,24 @@ class SafeTable(Table):
 
 
 def _cell(value):
-    """A table string made safe (other renderables pass unchanged)."""
+    """A table string as safe text (other renderables pass unchanged)."""
     if not isinstance(value, str):
         return value
     value = terminal_safe(value)
     if ascii_only():
         value = value.encode("ascii", errors=ERROR_HANDLER).decode("ascii")
-    return value
+    return Text(value)
 
 
 def titled(title: str) -> Table:
-    """An empty table in rbi's style; the title is plain text (see :func:`plain_text`)."""
-    return SafeTable(title=plain_text(title), box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    """An empty table in rbi's style; the title is text (see :class:`SafeTable`)."""
+    return SafeTable(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
 
 
 def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
-    """A table of (quantity, unit, value) rows. ``title`` and every cell are plain text (the
-    title carries the body's name or path, a quantity may hold brackets: ``final q [w, x, y, z]``
-    was shown as ``final q``, rich reading ``[w, x, y, z]`` as a style), never rich markup."""
+    """A table of (quantity, unit, value) rows; ``title`` and every cell are text."""
     table = titled(title)
     table.add_column("quantity")
-    rows = [(escape(name), escape(unit), escape(value)) for name, unit, value in rows]
     table.add_column("unit", style="dim")
     table.add_column("value", justify="right")
     for name, unit, value in rows:
@@ -90,7 +88,7 @@ def _drawn(rows) -> Table:
             table.add_column(header, justify=justify, no_wrap=i >= rows.left, overflow="fold")
             continue
         style = "bold" if rows.kind == "matrix" and i == 0 else None
-        table.add_column(Text(_cell(header)), justify=justify, style=style)
+        table.add_column(header, justify=justify, style=style)
     for row in cells:
         table.add_row(*row)
     if rows.total is not None:
@@ -101,4 +99,7 @@ def _drawn(rows) -> Table:
 
 def _text(cell: str) -> Text:
     """A cell as text; a check's ``FAIL`` in bold red."""
-    return Text(_cell(cell), style="bold red" if cell == "FAIL" else "")
+    text = _cell(cell)
+    if cell == "FAIL":
+        text.stylize("bold red")
+    return text
