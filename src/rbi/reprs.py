@@ -136,7 +136,8 @@ _XYZ = ("x", "y", "z")
 
 def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
     """Nested results as CSV columns: vectors get ``_x/_y/_z``, 3×3 matrices ``_xx … _zz``
-    (``axes``: ``_1_x … _3_z``), nested mappings ``outer_inner``, other lists ``_1, _2, …``."""
+    (``axes``: ``_1_x … _3_z``), nested mappings ``outer_inner``, other lists (and the moments
+    and ``axes_deg``, per principal axis) ``_1, _2, …``."""
     out: dict[str, Any] = {}
     for key, value in plain(result).items():
         name = f"{prefix}{key}"
@@ -154,7 +155,7 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
             isinstance(value, list)
             and len(value) == 3
             and not any(isinstance(v, list) for v in value)
-            and not key.endswith("moments")
+            and not key.endswith(("moments", "axes_deg"))  # numbered like the axes they qualify
         ):
             for axis, v in zip(_XYZ, value):
                 out[f"{name}_{axis}"] = v

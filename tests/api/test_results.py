@@ -3,6 +3,8 @@ fifth round: 'Tables print value ± u' for inertia, principal, momentum and part
 
 from __future__ import annotations
 
+import pytest
+
 import rbi
 from tests.conftest import run_rbi_inprocess
 
@@ -28,3 +30,21 @@ def test_parts_table_prints_value_plus_minus_u(tmp_path):
     proc = run_rbi_inprocess("parts", str(spec))
     assert proc.returncode == 0 and "420 ± 4.1 " in proc.stdout
     assert max(map(len, proc.stdout.splitlines())) <= 80
+
+
+def test_principal_csv_numbers_the_axes_uncertainty_by_axis(tmp_path):
+    # a 0.4 × 0.2 plate turned 30 ± 0.5° about z: its in-plane principal axes are uncertain by
+    # 0.5°, the normal (z) not at all; the columns are per principal axis (_1 _2 _3), not x y z
+    spec = tmp_path / "plate.yaml"
+    spec.write_text(
+        "parts: [{name: p, shape: box, size: [0.4, 0.2, 0.01], mass: 3, center: [0, 0, 0],"
+        ' rotation: {axis: [0, 0, 1], angle_deg: "30 ± 0.5"}}]\n'
+    )
+    frame = rbi.load(spec).principal().to_pandas()
+    assert [frame[f"uncertainty_axes_deg_{i}"][0] for i in (1, 2, 3)] == pytest.approx(
+        [0.5, 0.5, 0.0], abs=1e-9
+    )
+    assert "uncertainty_axes_deg_x" not in frame
+    proc = run_rbi_inprocess("principal", str(spec), "--format", "csv")
+    header = proc.stdout.splitlines()[0].split(",")
+    assert [c for c in header if "axes_deg" in c] == [f"uncertainty_axes_deg_{i}" for i in (1, 2, 3)]

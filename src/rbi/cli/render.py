@@ -85,7 +85,7 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
             isinstance(value, list)
             and len(value) == 3
             and not any(isinstance(v, list) for v in value)
-            and not key.endswith("moments")
+            and not key.endswith(("moments", "axes_deg"))  # numbered like the axes they qualify
         ):
             for axis, v in zip(_XYZ, value):
                 out[f"{name}_{axis}"] = v
