@@ -285,9 +285,9 @@ def drawn_parts(
     inputs = loaded.spec._uncertain
     draws = np.stack([i.draws(rng, n) for i in inputs], axis=1) if inputs else np.zeros((n, 0))
     elements = loaded.elements
-    masses = np.repeat(np.array([[e.mass for e in elements]]), n, axis=0)
-    coms = np.repeat(np.array([[e.center_of_mass for e in elements]]), n, axis=0)
-    inertias = np.repeat(np.array([[e.inertia_about_com for e in elements]]), n, axis=0)
+    masses = np.repeat(elements.mass[None], n, axis=0)
+    coms = np.repeat(elements.center_of_mass[None], n, axis=0)
+    inertias = np.repeat(elements.inertia_about_com[None], n, axis=0)
     for index, chosen in by_part(inputs).items():
         stack = part_stack(loaded.spec, index, [inputs[k] for k in chosen], draws[:, chosen], loaded.path)
         masses[:, index], coms[:, index], inertias[:, index] = stack
@@ -353,8 +353,7 @@ def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
         )
     inputs = loaded.spec._uncertain
     elements = loaded.elements
-    masses = np.array([e.mass for e in elements])
-    coms = np.array([e.center_of_mass for e in elements]).reshape(-1, 3)
+    masses, coms = np.array(elements.mass), np.array(elements.center_of_mass)
     props = loaded.props
     about = props.center_of_mass if point is None else np.asarray(point, dtype=float)
     inertia = props.inertia_about(about)
@@ -447,7 +446,7 @@ def part_uncertainties(loaded: Any) -> list[dict[str, Any] | None]:
     u = np.array([i.u for i in inputs])
     length, mass = _file_units_per_unit(loaded)
     zero = {"mass": 0.0, "center_of_mass": [0.0] * 3, "inertia_about_com": [[0.0] * 3 for _ in range(3)]}
-    found: list[dict[str, Any] | None] = [copy.deepcopy(zero) for _ in loaded.elements]
+    found: list[dict[str, Any] | None] = [copy.deepcopy(zero) for _ in range(len(loaded.elements))]
     for index, chosen in by_part(inputs).items():
         found[index] = {
             "mass": float(combined(dm[chosen], u[chosen])) / mass,
