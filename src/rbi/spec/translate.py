@@ -331,23 +331,27 @@ def _densities(parts: list, units: models.Units) -> tuple[np.ndarray, np.ndarray
 
 
 class Columns:
-    """One part's fields as columns of ``n`` values, for the builders below: the part's own
-    value everywhere but where ``values`` (by field, or ``(field, component)``) gives a column
-    (Monte Carlo draws and the steps of sensitivities, :mod:`rbi.spec.uncertain`)."""
+    """Parts' fields as columns, for the builders below: row r is part ``parts[index[r]]``, with
+    its own values but where ``values`` (by field, or ``(field, component)``) gives a column
+    (Monte Carlo draws and the steps of sensitivities, :mod:`rbi.spec.uncertain`). The parts
+    are of one shape and give their mass alike (``mass``, a density, or one material)."""
 
-    def __init__(self, part: Any, n: int, values: dict[tuple[Any, ...], np.ndarray]) -> None:
-        self.part, self.n, self.values = part, n, values
+    def __init__(self, parts: list, index: np.ndarray, values: dict[tuple[Any, ...], np.ndarray]) -> None:
+        self.parts, self.index, self.values = parts, np.asarray(index), values
+        self.part, self.n = parts[0], len(self.index)
 
     def __len__(self) -> int:
         return self.n
 
     def column(self, field: str) -> np.ndarray:
-        nominal = getattr(self.part, field)
-        if isinstance(nominal, (list, tuple)):
-            return np.stack(
-                [self.values.get((field, j), np.full(self.n, float(x))) for j, x in enumerate(nominal)], 1
-            )
-        return self.values.get((field,), np.full(self.n, float(nominal)))
+        nominal = np.array([getattr(p, field) for p in self.parts], dtype=float)[self.index]
+        given = {key[1:]: v for key, v in self.values.items() if key[0] == field}
+        if not given:
+            return nominal
+        column = nominal.astype(np.result_type(nominal, *given.values()))
+        for at, v in given.items():
+            column[(slice(None), *at)] = v
+        return column
 
     def masses(self, units: models.Units, volume: np.ndarray) -> np.ndarray:
         if self.part.mass is not None:

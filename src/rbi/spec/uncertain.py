@@ -207,7 +207,9 @@ def part_stack(
     sign = -1.0 if getattr(part, "subtract", False) else 1.0
     kind = type(part)
     if batched(part, inputs):
-        columns = Columns(part, len(values), {i.steps: values[:, k] for k, i in enumerate(inputs)})
+        columns = Columns(
+            [part], np.zeros(len(values), int), {i.steps: values[:, k] for k, i in enumerate(inputs)}
+        )
         with np.errstate(all="ignore"):
             mass, com, inertia = BUILDERS[kind](columns, spec.units)
         return sign * mass, com, sign * inertia
@@ -249,18 +251,20 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, n
     the index of its part and the derivatives of that part's mass (k,), centre of mass (k, 3)
     and inertia about it (k, 3, 3) with respect to the input, each part evaluated with its own
     inputs stepped (never the whole body)."""
-    inputs = loaded.spec._uncertain
+    inputs, spec = loaded.spec._uncertain, loaded.spec
     k = len(inputs)
     derivative = np.zeros((k, 13))
+    alike: dict[tuple, list[int]] = {}  # parts built together: one shape, inputs and mass kind
     for index, chosen in by_part(inputs).items():
         group = [inputs[n] for n in chosen]
+        part = spec.parts[index]
+        if batched(part, group):
+            density = part.density if part.mass is None and isinstance(part.density, str) else None
+            key = (type(part), tuple(i.steps for i in group), part.mass is None, density)
+            alike.setdefault(key, []).append(index)
+            continue
         nominal = np.array([i.value for i in group])
         scale = np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
-        if batched(loaded.spec.parts[index], group):  # complex step: x + ih gives h ∂f/∂x exactly
-            h = 1e-20 * scale
-            f = _flat(part_stack(loaded.spec, index, group, nominal + 1j * np.diag(h), loaded.path))
-            derivative[chosen] = f.imag / h[:, None]
-            continue
         # powers of 2: value ± step is exact, so a part's linear dependence differentiates exactly
         h = 2.0 ** np.round(np.log2(1e-2 * scale))
         rows = np.repeat(nominal[None, :], len(group) * 6, axis=0).reshape(len(group), 3, 2, -1)
@@ -272,6 +276,19 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, n
         d = (f[:, :, 0] - f[:, :, 1]) / (2.0 * STEPS[None, :, None] * h[:, None, None])
         fine, finer = (4.0 * d[:, 1] - d[:, 0]) / 3.0, (4.0 * d[:, 2] - d[:, 1]) / 3.0
         derivative[chosen] = (16.0 * finer - fine) / 15.0
+    grouped = by_part(inputs)
+    for (kind, steps, _, _), indices in alike.items():  # complex step: x + ih gives h ∂f/∂x exactly
+        chosen = [n for index in indices for n in grouped[index]]
+        nominal = np.array([inputs[n].value for n in chosen]).reshape(len(indices), len(steps))
+        h = 1e-20 * np.array([abs(inputs[n].value) or 10.0 * inputs[n].u or 1.0 for n in chosen])
+        values = np.repeat(nominal, len(steps), axis=0).astype(complex)
+        values[np.arange(len(chosen)), np.tile(np.arange(len(steps)), len(indices))] += 1j * h
+        rows = np.repeat(np.arange(len(indices)), len(steps))
+        columns = Columns([spec.parts[i] for i in indices], rows, dict(zip(steps, values.T)))
+        with np.errstate(all="ignore"):
+            mass, com, inertia = BUILDERS[kind](columns, spec.units)
+        sign = np.array([-1.0 if getattr(spec.parts[i], "subtract", False) else 1.0 for i in indices])[rows]
+        derivative[chosen] = _flat((sign * mass, com, sign[:, None, None] * inertia)).imag / h[:, None]
     part = np.array([i.part for i in inputs], dtype=int)
     return part, derivative[:, 0], derivative[:, 1:4], derivative[:, 4:].reshape(k, 3, 3)
 
