@@ -16,7 +16,7 @@ from rbi.sim.api import DEFAULT_RTOL, sample_times
 from rbi.sim.compiled import STATUS_DONE, integrator
 from rbi.sim.scene import scene_from_properties
 from rbi.sim.summary import sweep_figures_batch
-from rbi.spec.uncertain import drawn_parts
+from rbi.spec.uncertain import drawn_parts, generator
 
 FIGURES = {
     "tilt_min_deg": "min_tilt_deg",
@@ -35,7 +35,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     if isinstance(draws, bool) or not isinstance(draws, int) or not 2 <= draws <= 100_000:
         raise ArgumentError("draws", f"must be a whole number from 2 to 100,000 (got {literal(draws)})")
     body, scene = prepared.body, prepared.scene
-    _, masses, coms, inertias = drawn_parts(body, draws, np.random.default_rng(seed))
+    _, masses, coms, inertias = drawn_parts(body, draws, generator(seed))
     mass, com, inertia = body_stack(masses, coms, inertias, body.props.center_of_mass)
     scenes = [
         scene_from_properties(

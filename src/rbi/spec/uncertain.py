@@ -33,7 +33,7 @@ from rbi.core.uncertainty import (
     shortest_interval,
     validated,
 )
-from rbi.errors import InputError, shown
+from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.spec import models
 from rbi.spec.translate import BUILDERS, Columns, part_element, plain_part
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
@@ -382,11 +382,18 @@ def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
     return Linear(inputs, np.array([i.u for i in inputs]), values, sensitivities, axes, turn)
 
 
+def generator(seed: int | None) -> np.random.Generator:
+    """The random generator of the draws: ``seed`` gives the same draws again, None fresh ones;
+    any other seed than a whole number 0 or above is an `ArgumentError` of ``seed``."""
+    if seed is not None and (isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0):
+        raise ArgumentError("seed", f"must be a whole number 0 or above (got {literal(seed)})")
+    return np.random.default_rng(seed)
+
+
 def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
     """(n, q) samples of :data:`QUANTITIES` (about the centre of mass of each draw) from n draws
     of every uncertain input (JCGM 101), all n bodies computed as one stack."""
-    rng = np.random.default_rng(seed)
-    _, masses, coms, inertias = drawn_parts(loaded, n, rng)
+    _, masses, coms, inertias = drawn_parts(loaded, n, generator(seed))
     with np.errstate(all="ignore"):
         mass, com, inertia = body_stack(masses, coms, inertias, loaded.props.center_of_mass)
         moments = np.linalg.eigvalsh(inertia)
