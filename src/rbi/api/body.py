@@ -10,10 +10,10 @@ from typing import Any
 
 import numpy as np
 
+from rbi.api.checks import Checks
 from rbi.api.results import (
     PRODUCT_SIGN_TITLES,
     About,
-    Checks,
     Dynamics,
     Export,
     Inertia,

@@ -19,7 +19,6 @@ import numpy as np
 
 from rbi.core.mass import MassProperties
 from rbi.reprs import Result, Rows
-from rbi.spec.checks import Check
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
 from rbi.text import number, plus_minus, vector_text
 
@@ -653,121 +652,6 @@ def _part_table(
     if len(names) > MAX_TABLE_PARTS:  # CSV and JSON list them all
         rows.append((f"… {len(names) - MAX_TABLE_PARTS} more parts", *("",) * len(headers)))
     return Rows(title, ("part", *headers), rows, total=("total", *total), left=left, kind="parts")
-
-
-_MATRIX_ENTRIES = (("xx", 0, 0), ("yy", 1, 1), ("zz", 2, 2), ("xy", 0, 1), ("xz", 0, 2), ("yz", 1, 2))
-
-
-def _check_dict(check: Check) -> dict[str, Any]:
-    out = {
-        "quantity": check.quantity,
-        "unit": check.unit,
-        "expected": check.expected,
-        "actual": check.actual,
-        "deviation": check.deviation,
-        "tol": check.tol,
-        "allowed": check.allowed,
-        "pass": check.passed,
-    }
-    return out if check.about is None else out | {"about": check.about}
-
-
-def _components(check: Check) -> list[tuple[str, Any, Any, Any]]:
-    """(label, expected, actual, deviation) for each number a check compares; a matrix gives
-    its six distinct entries."""
-    want, got, deviation = check.expected, check.actual, check.component_deviation
-    about = f" @{check.about}" if check.about not in (None, "com") else ""
-    if check.quantity == "mass":
-        return [("mass", float(want), float(got), float(deviation))]
-    if check.quantity == "inertia":
-        return [(f"I{name}{about}", want[i, j], got[i, j], deviation[i, j]) for name, i, j in _MATRIX_ENTRIES]
-    names = ("I1", "I2", "I3") if check.quantity == "moments" else ("com x", "com y", "com z")
-    return [(f"{name}{about}", w, g, d) for name, w, g, d in zip(names, want, got, deviation)]
-
-
-class Checks(Result, Sequence[Check]):
-    """The expectations of a spec's ``expect:`` block against the body, as ``rbi check``
-    compares them: a sequence of `Check`, with ``passed`` and ``failed`` counts and ``ok``."""
-
-    def __init__(self, body: Any, checks: list[Check]) -> None:
-        self._body = body
-        self._checks = checks
-        self.failed: int = sum(not c.passed for c in checks)
-        self.passed: int = len(checks) - self.failed
-        self.ok: bool = self.failed == 0
-
-    @overload
-    def __getitem__(self, index: int) -> Check: ...
-    @overload
-    def __getitem__(self, index: slice) -> list[Check]: ...
-    def __getitem__(self, index: int | slice) -> Check | list[Check]:
-        return self._checks[index]
-
-    def __len__(self) -> int:
-        return len(self._checks)
-
-    def __iter__(self) -> Iterator[Check]:
-        return iter(self._checks)
-
-    def __eq__(self, other: object) -> bool:
-        return list(self) == list(other) if isinstance(other, (Checks, list)) else NotImplemented
-
-    __hash__ = None  # type: ignore[assignment]
-
-    def __repr__(self) -> str:
-        return f"<rbi.Checks {self.passed} passed, {self.failed} failed>"
-
-    def to_dict(self) -> dict[str, Any]:
-        body = self._body
-        return {
-            "name": body.name,
-            "units": body.units,
-            "warnings": list(body.warnings),
-            "ok": self.ok,
-            "passed": self.passed,
-            "failed": self.failed,
-            "checks": [_check_dict(c) for c in self._checks],
-        }
-
-    def csv_rows(self) -> list[dict[str, Any]]:
-        return [
-            {
-                "quantity": c.quantity,
-                "component": label.split(" @")[0],
-                "about": c.about or "",
-                "unit": c.unit,
-                "expected": want,
-                "actual": got,
-                "deviation": deviation,
-                "allowed": c.allowed,
-                "tol": str(c.tol),
-                "pass": bool(deviation <= c.allowed),
-            }
-            for c in self._checks
-            for label, want, got, deviation in _components(c)
-        ]
-
-    def csv_summary(self) -> dict[str, Any]:
-        return {k: v for k, v in self.to_dict().items() if k in ("name", "units", "ok", "passed", "failed")}
-
-    def rows(self) -> list[Rows]:
-        body, n = self._body, len(self)
-        verdict = "all expectations hold" if not self.failed else f"{self.failed} of {n} expectations FAIL"
-        cells = [
-            (
-                label,
-                c.unit,
-                number(want, 6),
-                number(got, 6),
-                number(deviation, 3),
-                number(c.allowed, 3),
-                "ok" if deviation <= c.allowed else "FAIL",
-            )
-            for c in self._checks
-            for label, want, got, deviation in _components(c)
-        ]
-        columns = ("quantity", "unit", "expected", "actual", "deviation", "allowed", "")
-        return [Rows(f"{body.name or body.path} — check: {verdict}", columns, cells, left=2, kind="check")]
 
 
 @dataclass(frozen=True, repr=False)
