@@ -169,10 +169,8 @@ def solid_parts(sizes, progress: Progress, tmp: Path) -> list[dict]:
         if problems:
             raise RuntimeError(f"generated spec is invalid: {problems[0]}")
         translate_s, body = time_once(lambda: body_from_spec(spec, str(path)))
-        masses = np.array([e.mass for e in body.elements])
-        coms = np.array([e.center_of_mass for e in body.elements])
-        inertias = np.array([e.inertia_about_com for e in body.elements])
-        core = measure(lambda: principal_axes(combine(masses, coms, inertias).inertia_about_com))
+        parts = body.elements  # one stack
+        core = measure(lambda: principal_axes(parts.sum().inertia_about_com))
         total = read_s + validate_s + translate_s
         # The same spec as one JSON object (also valid YAML), as a generating program would write it.
         as_json = path.with_suffix(".json")
