@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from rbi.errors import ArgumentError, literal
+from rbi.spec.uncertain import PLUS_MINUS, parse_plus_minus
 
 _TOKEN = re.compile(r"([^.\[\]]+)|\[(-?\d+)\]")
 
@@ -97,6 +98,8 @@ def resolve(raw: Any, text: str) -> FieldPath:
             raise ArgumentError(
                 "vary", f"{literal(where, quoted=False)} is a single value, not a list or mapping", item=text
             )
+    if isinstance(node, str) and PLUS_MINUS.search(node):  # "VALUE ± U": the run sets the value
+        return FieldPath(text, tuple(steps))
     if isinstance(node, bool) or not isinstance(node, (int, float)):
         held = type(node).__name__ if isinstance(node, (dict, list)) else literal(node)
         raise ArgumentError("vary", f"must name a number in the spec (it holds {held})", item=text)
@@ -157,5 +160,10 @@ def current_values(raw: Any, paths: list[FieldPath]) -> list[float | None]:
         node = raw
         for step in path.steps[:-1]:
             node = node[step]
-        values.append(float(node[path.steps[-1]]) if path.steps[-1] in node else None)
+        written = node[path.steps[-1]] if path.steps[-1] in node else None
+        values.append(parse_plus_minus(written)[0] if isinstance(written, str) else _number(written))
     return values
+
+
+def _number(written: Any) -> float | None:
+    return None if written is None else float(written)
