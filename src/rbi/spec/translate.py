@@ -587,7 +587,13 @@ def _warnings(spec: models.BodySpec, path: str) -> list[str]:
     """The spec's unit slips, its mesh notes and every sub-assembly's warnings."""
     notes = [f"{path}: {note}" for note in mesh_notes(spec)]
     inner = [w for part in spec.parts if isinstance(part, models.AssemblyPart) for w in part._loaded.warnings]
-    return unit_warnings(spec, path) + notes + inner
+    dropped = [  # the sub-file's own ± do not reach this body's propagation
+        f"{path}: parts[{i}]{f' ({part.name})' if part.name else ''}: file: {part.file}: its numbers written"
+        " with ± count as their values here, their uncertainty is not propagated (give the ± in this file)"
+        for i, part in enumerate(spec.parts)
+        if isinstance(part, models.AssemblyPart) and part._loaded.spec._uncertain
+    ]
+    return unit_warnings(spec, path) + notes + inner + dropped
 
 
 def files_named(spec: models.BodySpec, path: str) -> tuple[str, ...]:
