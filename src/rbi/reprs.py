@@ -189,6 +189,13 @@ def pandas_module(result: object) -> Any:
     return pandas
 
 
+def json_ready(to_dict: Any) -> Any:
+    """Marks a ``to_dict`` that builds JSON-ready data itself (an audit's millions of numbers):
+    :class:`Result` then does not walk it again with :func:`plain`."""
+    to_dict.json_ready = True
+    return to_dict
+
+
 class Result:
     """The base of rbi's results: a subclass gives :meth:`rows` (or the one table of
     :meth:`_table`), :meth:`to_dict` and, when its CSV has other rows than the one object,
@@ -207,8 +214,7 @@ class Result:
             def to_dict(self: Any, *args: Any, **kw: Any) -> dict[str, Any]:
                 return plain(own(self, *args, **kw))
 
-            to_dict.json_ready = True  # type: ignore[attr-defined]
-            cls.to_dict = to_dict  # type: ignore[method-assign]
+            cls.to_dict = json_ready(to_dict)  # type: ignore[method-assign]
 
     def rows(self) -> list[Rows]:
         """The tables the result shows, as text cells: the one set of rows behind ``print()``,

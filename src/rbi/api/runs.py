@@ -11,7 +11,7 @@ import numpy as np
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
-from rbi.reprs import Result, Rows, pandas_module, plain
+from rbi.reprs import Result, Rows, pandas_module
 from rbi.runs.draws import input_uncertainty as spread
 from rbi.runs.run import RunSettings, RunSummary, SimulationRun, prepare_run, trajectory_csv
 from rbi.sim.summary import columns_of
@@ -92,7 +92,7 @@ class Trajectory(Result):
         """The summary as ``rbi simulate --format json`` prints it (JSON-ready)."""
         if self.summary is None:
             raise ArgumentError("summary", "a Trajectory made by hand has no summary")
-        return plain(self.summary.to_dict())
+        return self.summary.to_dict()
 
     def columns(self) -> dict[str, np.ndarray]:
         """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""

@@ -12,7 +12,7 @@ from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output, keywords_checked
 from rbi.errors import ArgumentError
 from rbi.files.output import OutputTarget
-from rbi.reprs import TableRepr, pandas_module, plain
+from rbi.reprs import TableRepr, pandas_module
 from rbi.spec.load import read_spec
 from rbi.sweeps.study import Study, SweepSettings, check_settings
 from rbi.text import number
@@ -105,7 +105,7 @@ class SweepTable(TableRepr):
             result |= {"runs": self.records(), "failed": self.failed}
         if self.spread is not None:
             result["spread"] = self.spread
-        return plain(result)
+        return result
 
     def csv_rows(self) -> list[dict[str, Any]]:
         """One row per run (``rbi sweep --format csv``)."""

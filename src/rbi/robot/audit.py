@@ -32,7 +32,7 @@ from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import SOLID_KINDS, Link, LinkColumns, RobotModel, stacked
 from rbi.formats.robot_files import inertia_problem_text
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
-from rbi.reprs import Result, Rows, plain
+from rbi.reprs import Result, Rows, json_ready, plain
 from rbi.robot.tree import placement, stack_apply, totals
 from rbi.text import number, vector_text
 
@@ -257,6 +257,7 @@ class AuditReport(Result):
             )
         return tables
 
+    @json_ready
     def to_dict(self) -> dict[str, Any]:
         """What ``rbi audit --format json`` prints, less ``"file"`` (with ``"fix"`` when the fixed
         copy was planned): JSON-ready, built so (no numpy value, no -0.0) without walking the
