@@ -84,3 +84,15 @@ def test_simulate_of_a_symmetric_top_loads_no_scipy_or_matplotlib():
     assert "rbi.sim._dop853" in modules
     for package in ("scipy", "matplotlib", "rbi.sweeps", "rbi.bench"):
         assert not _any(modules, package), package
+
+
+def test_the_collector_paused_while_a_command_or_a_name_is_imported_is_on_again_after():
+    import gc
+
+    import rbi.api
+    from rbi.cli.app import build_command
+
+    assert gc.isenabled()
+    build_command("inertia")
+    rbi.api.__getattr__("load")
+    assert gc.isenabled()

@@ -25,6 +25,7 @@ from __future__ import annotations
 from importlib import import_module
 from typing import TYPE_CHECKING, Any
 
+from rbi.memory import collector_paused
 from rbi.names import CLI_TOOLS, PUBLIC
 
 if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads none of them
@@ -118,7 +119,8 @@ def __getattr__(name: str) -> Any:
     home = _HOME.get(name)
     if home is None:
         raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")
-    value = getattr(import_module(home), name)
+    with collector_paused():  # what a module builds as it is imported lives on: see _HOME
+        value = getattr(import_module(home), name)
     if name not in _LOOKED_UP_PER_CALL:
         globals()[name] = value
     return value
