@@ -12,17 +12,15 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
-from rbi.core.rotation import unit_vector
+from rbi.core.rotation import numbers, unit_vector
 
 
 def point_mass_inertia(mass: ArrayLike, offset: np.ndarray) -> np.ndarray:
     """Inertia ``m (|r|² E − r rᵀ)`` of a point mass at ``offset`` from the reference point
     (masses (...,) and offsets (..., 3) give (..., 3, 3))."""
-    r = np.asarray(offset, dtype=float)
+    r = numbers(offset)
     r2 = np.sum(r * r, axis=-1)[..., None, None]
-    return np.asarray(mass, dtype=float)[..., None, None] * (
-        r2 * np.eye(3) - r[..., :, None] * r[..., None, :]
-    )
+    return numbers(mass)[..., None, None] * (r2 * np.eye(3) - r[..., :, None] * r[..., None, :])
 
 
 def parallel_axis(inertia_com: np.ndarray, mass: ArrayLike, offset: np.ndarray) -> np.ndarray:
@@ -32,13 +30,13 @@ def parallel_axis(inertia_com: np.ndarray, mass: ArrayLike, offset: np.ndarray) 
     and direction of the offset matter, not its sign. Stacks broadcast: (..., 3, 3), (...,),
     (..., 3).
     """
-    return np.asarray(inertia_com, dtype=float) + point_mass_inertia(mass, offset)
+    return numbers(inertia_com) + point_mass_inertia(mass, offset)
 
 
 def parallel_axis_to_com(inertia_about_point: np.ndarray, mass: float, offset: np.ndarray) -> np.ndarray:
     """Inverse of :func:`parallel_axis`: inertia about the centre of mass from that about a
     point ``offset`` away from it."""
-    return np.asarray(inertia_about_point, dtype=float) - point_mass_inertia(mass, offset)
+    return numbers(inertia_about_point) - point_mass_inertia(mass, offset)
 
 
 def centre_of_mass(masses: np.ndarray, positions: np.ndarray) -> np.ndarray:
@@ -47,8 +45,8 @@ def centre_of_mass(masses: np.ndarray, positions: np.ndarray) -> np.ndarray:
     Positions are averaged relative to the heaviest part, then one correction pass removes
     the rounding left over, so that a small body 1 km from the origin keeps its digits.
     """
-    m = np.asarray(masses, dtype=float)
-    p = np.asarray(positions, dtype=float).reshape(-1, 3)
+    m = numbers(masses)
+    p = numbers(positions).reshape(-1, 3)
     total = m.sum()
     reference = p[int(np.argmax(np.abs(m)))]
     com = reference + (m @ (p - reference)) / total
@@ -57,8 +55,8 @@ def centre_of_mass(masses: np.ndarray, positions: np.ndarray) -> np.ndarray:
 
 def re_express(inertia: np.ndarray, R: np.ndarray) -> np.ndarray:
     """Inertia in world axes, ``R I Rᵀ``, for a body turned by ``R`` (body -> world)."""
-    R = np.asarray(R, dtype=float)
-    return symmetrize(R @ np.asarray(inertia, dtype=float) @ R.T)
+    R = numbers(R)
+    return symmetrize(R @ numbers(inertia) @ R.T)
 
 
 def symmetrize(matrix: np.ndarray) -> np.ndarray:

@@ -26,10 +26,11 @@ from rbi.core.inertia import (
     principal_axes_of_stack,
     symmetrize,
 )
+from rbi.core.rotation import numbers, scalar
 
 
 def _frozen(values: ArrayLike, shape: tuple[int, ...]) -> np.ndarray:
-    array = np.array(values, dtype=float).reshape(shape)
+    array = np.array(values, dtype=complex if np.iscomplexobj(values) else float).reshape(shape)
     array.flags.writeable = False
     return array
 
@@ -56,7 +57,7 @@ class MassProperties:
         mass = self.mass
         if type(mass) is float or np.ndim(mass) == 0:
             n: tuple[int, ...] = ()
-            object.__setattr__(self, "mass", float(mass))
+            object.__setattr__(self, "mass", scalar(mass))
         elif np.ndim(mass) == 1:
             object.__setattr__(self, "mass", _frozen(mass, (-1,)))
             n = (len(self.mass),)
@@ -157,9 +158,7 @@ class MassProperties:
     def point(mass: ArrayLike, position: ArrayLike, frame: str = "body") -> MassProperties:
         """A point mass at ``position`` (or a stack: masses (n,), positions (n, 3)): no
         inertia about itself."""
-        return MassProperties(
-            mass, np.asarray(position, dtype=float), np.zeros(np.shape(mass) + (3, 3)), frame
-        )
+        return MassProperties(mass, numbers(position), np.zeros(np.shape(mass) + (3, 3)), frame)
 
     def sum(self: MassProperties | Iterable[MassProperties], frame: str | None = None) -> MassProperties:
         """The one body made of a stack's bodies (``stack.sum()``), or of several mass properties
@@ -177,7 +176,7 @@ class MassProperties:
     def inertia_about(self, point: ArrayLike) -> np.ndarray:
         """Inertia (M·L²) about ``point`` (L, this frame; for a stack (3,) or one a body
         (n, 3)) in this frame's axes (parallel axis): (3, 3), or (n, 3, 3) for a stack."""
-        offset = np.asarray(point, dtype=float) - self.center_of_mass
+        offset = numbers(point) - self.center_of_mass
         return symmetrize(parallel_axis(self.inertia_about_com, self.mass, offset))
 
     def transformed(
@@ -192,18 +191,18 @@ class MassProperties:
         inertia is re-expressed ``R I Rᵀ``."""
         com, inertia = self.center_of_mass, self.inertia_about_com
         if rotation is not None:
-            R = np.asarray(rotation, dtype=float)
+            R = numbers(rotation)
             com = R @ com if self.single else (R @ com[..., None])[..., 0]
             inertia = symmetrize(R @ inertia @ np.swapaxes(R, -1, -2))
         if translation is not None:
-            com = com + np.asarray(translation, dtype=float)
+            com = com + numbers(translation)
         return MassProperties(self.mass, com, inertia, self.frame if frame is None else frame)
 
     def scaled(self, factor: ArrayLike) -> MassProperties:
         """The same shape at ``factor`` times the mass (a density applied to a unit density's
         properties, a measured mass; for a stack one factor or one a body): the centre of mass
         stays, mass and inertia scale."""
-        f = np.asarray(factor, dtype=float)
+        f = numbers(factor)
         return MassProperties(
             self.mass * f, self.center_of_mass, self.inertia_about_com * f[..., None, None], self.frame
         )
@@ -211,7 +210,7 @@ class MassProperties:
     def with_mass(self, mass: ArrayLike) -> MassProperties:
         """The same shape at exactly ``mass`` (M; for a stack one a body): the centre of mass
         stays, the inertia scales by ``mass / self.mass``."""
-        ratio = np.asarray(mass, dtype=float) / self.mass
+        ratio = numbers(mass) / self.mass
         return MassProperties(
             mass, self.center_of_mass, self.inertia_about_com * ratio[..., None, None], self.frame
         )
@@ -250,17 +249,17 @@ def combine(
     only the small offsets between nearby points enter. ValueError when the total mass is not
     positive.
     """
-    m = np.asarray(masses, dtype=float).reshape(-1)
-    c = np.asarray(coms, dtype=float).reshape(-1, 3)
-    total = float(m.sum())
-    if not total > 0.0:
+    m = numbers(masses).reshape(-1)
+    c = numbers(coms).reshape(-1, 3)
+    total = scalar(m.sum())
+    if not total.real > 0.0:
         raise ValueError(f"total mass must be positive, got {total!r}")
     com = centre_of_mass(m, c)
     d = c - com
     second_moment = (d * m[:, None]).T @ d  # Σ m d dᵀ
     inertia = np.trace(second_moment) * np.eye(3) - second_moment
     if inertias_com is not None:
-        inertia = inertia + np.asarray(inertias_com, dtype=float).reshape(-1, 3, 3).sum(axis=0)
+        inertia = inertia + numbers(inertias_com).reshape(-1, 3, 3).sum(axis=0)
     return MassProperties(total, com, symmetrize(inertia), frame)
 
 

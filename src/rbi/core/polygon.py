@@ -13,13 +13,15 @@ from collections.abc import Sequence
 import numpy as np
 from numpy.typing import ArrayLike
 
+from rbi.core.rotation import numbers, scalar
+
 MAX_VERTICES = 4096
 """Most vertices (outline and holes together) one polygon may have: the crossing check compares
 every pair of edges, ~0.2 s at this size."""
 
 
 def _rings(outline: ArrayLike, holes: list[ArrayLike]) -> list[np.ndarray]:
-    return [np.asarray(r, dtype=float).reshape(-1, 2) for r in [outline, *holes]]
+    return [numbers(r).reshape(-1, 2) for r in [outline, *holes]]
 
 
 def ring_moments(ring: np.ndarray, origin: np.ndarray) -> np.ndarray:
@@ -38,7 +40,7 @@ def ring_moments(ring: np.ndarray, origin: np.ndarray) -> np.ndarray:
             ((x0 * y1 + 2 * x0 * y0 + 2 * x1 * y1 + x1 * y0) * c).sum() / 24,
         ]
     )
-    return moments if moments[0] >= 0 else -moments
+    return moments if moments[0].real >= 0 else -moments
 
 
 def area_moments(outline: ArrayLike, holes: Sequence[ArrayLike] = ()) -> tuple[float, np.ndarray, np.ndarray]:
@@ -50,7 +52,7 @@ def area_moments(outline: ArrayLike, holes: Sequence[ArrayLike] = ()) -> tuple[f
     area = m[0]
     cx, cy = m[1] / area, m[2] / area
     jxx, jyy, jxy = m[3] - area * cx * cx, m[4] - area * cy * cy, m[5] - area * cx * cy
-    return float(area), origin + [cx, cy], np.array([[jxx, jxy], [jxy, jyy]])
+    return scalar(area), origin + [cx, cy], np.array([[jxx, jxy], [jxy, jyy]])
 
 
 def _edges(rings: list[np.ndarray]) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:

@@ -7,6 +7,7 @@ coordinates: ``v_world = quaternion_to_matrix(q) @ v_body``.
 from __future__ import annotations
 
 import math
+from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
@@ -43,7 +44,7 @@ def without_rounding_noise(R: np.ndarray) -> np.ndarray:
     """``R`` (one matrix or a stack) with entries below :data:`ROUNDING_ZERO` set to exactly
     zero, so that a part turned by 90° keeps exact zero products of inertia. Changes ``R``
     in place and returns it."""
-    R[np.abs(R) < ROUNDING_ZERO] = 0.0
+    R.real[np.abs(R.real) < ROUNDING_ZERO] = 0.0
     return R
 
 
@@ -53,6 +54,18 @@ def numbers(values: ArrayLike) -> np.ndarray:
     h times the derivative, exact to rounding: :mod:`rbi.spec.uncertain`)."""
     array = np.asarray(values)
     return array if array.dtype.kind == "c" else array.astype(float, copy=False)
+
+
+def scalar(value: Any) -> Any:
+    """``value`` as a float, or as a complex number when it is one (a complex step, as
+    :func:`numbers`)."""
+    return complex(value) if np.iscomplexobj(value) else float(value)
+
+
+def radians(degrees: ArrayLike) -> np.ndarray:
+    """``np.radians`` of ``degrees``, also of complex numbers (a complex step)."""
+    values = numbers(degrees)
+    return values * (math.pi / 180.0) if values.dtype.kind == "c" else np.radians(values)
 
 
 def vector_length(v: ArrayLike) -> float | np.ndarray:
@@ -72,7 +85,7 @@ def unit_vector(v: ArrayLike) -> np.ndarray:
     small its components (from 5e-324 up to 1.8e308): scaled by the largest |component| before
     the norm, so nothing overflows to inf or underflows to 0. ValueError for a zero or
     non-finite vector."""
-    v = np.asarray(v, dtype=float)
+    v = numbers(v)
     if not np.all(np.isfinite(v)):
         raise ValueError(f"a direction must be finite (got {v.tolist()})")
     largest = np.max(np.abs(v), axis=-1, keepdims=True)
@@ -101,7 +114,7 @@ def elementary_rotation(axis: str, angle_rad: float) -> np.ndarray:
     i = _AXES[axis]
     j, k = (i + 1) % 3, (i + 2) % 3
     c, s = np.cos(angle_rad), np.sin(angle_rad)
-    R = np.zeros((3, 3))
+    R = np.zeros((3, 3), dtype=np.result_type(c, float))
     R[i, i] = 1.0
     R[j, j] = c
     R[k, k] = c
@@ -140,7 +153,7 @@ def euler_matrix(angles_rad: ArrayLike, sequence: str) -> np.ndarray:
         )
     turns = [
         elementary_rotation(axis, angle)
-        for axis, angle in zip(sequence.lower(), np.asarray(angles_rad, dtype=float).reshape(3))
+        for axis, angle in zip(sequence.lower(), numbers(angles_rad).reshape(3))
     ]
     if sequence.islower():
         return turns[2] @ turns[1] @ turns[0]

@@ -17,14 +17,14 @@ from numpy.typing import ArrayLike
 
 from rbi.core import polygon
 from rbi.core.mass import MassProperties
-from rbi.core.rotation import numbers, unit_vector, vector_length
+from rbi.core.rotation import numbers, scalar, unit_vector, vector_length
 
 
 def axis_between(start: np.ndarray, end: np.ndarray) -> tuple[np.ndarray, float]:
     """Unit vector from ``start`` to ``end`` and the distance between them (L), both computed
     without overflow (the distance is inf only when it exceeds the largest double)."""
-    d = np.asarray(end, dtype=float) - np.asarray(start, dtype=float)
-    return unit_vector(d), float(vector_length(d))
+    d = numbers(end) - numbers(start)
+    return unit_vector(d), scalar(vector_length(d))
 
 
 def axisymmetric_inertia(axial: ArrayLike, transverse: ArrayLike, axis: ArrayLike) -> np.ndarray:
@@ -220,7 +220,7 @@ def _about_middle(
 ) -> MassProperties:
     """A solid symmetric about the segment ``start`` → ``end`` (L) with its centre of mass in the
     middle; ``moments(length)``: its ``(axial, transverse)`` moments about it (M·L²)."""
-    start, end = np.asarray(start, dtype=float), np.asarray(end, dtype=float)
+    start, end = numbers(start), numbers(end)
     u, length = axis_between(start, end)
     return MassProperties(mass, middle(start, end), axisymmetric_inertia(*moments(length), u))
 
@@ -250,7 +250,7 @@ def _turned(principal_moments: ArrayLike, rotation: np.ndarray | None) -> np.nda
     diagonal[..., [0, 1, 2], [0, 1, 2]] = moments
     if rotation is None:
         return diagonal
-    R = np.asarray(rotation, dtype=float)
+    R = numbers(rotation)
     turned = R @ diagonal @ R.T
     return 0.5 * (turned + np.swapaxes(turned, -1, -2))
 
@@ -282,7 +282,7 @@ def box(
     About its centre, in its own axes: m (b² + c²)/12, m (a² + c²)/12, m (a² + b²)/12.
     ``rotation`` maps the box's axes to body axes.
     """
-    return MassProperties(mass, np.asarray(center, dtype=float), box_inertia(mass, size, rotation))
+    return MassProperties(mass, numbers(center), box_inertia(mass, size, rotation))
 
 
 def box_inertia(mass: Numbers, size: ArrayLike, rotation: np.ndarray | None = None) -> np.ndarray:
@@ -296,7 +296,7 @@ def box_inertia(mass: Numbers, size: ArrayLike, rotation: np.ndarray | None = No
 
 def ellipsoid_volume(semi_axes: np.ndarray) -> float:
     """Volume 4/3 π a b c of a solid ellipsoid with semi-axes ``[a, b, c]`` (L³)."""
-    a, b, c = (float(s) for s in semi_axes)
+    a, b, c = (scalar(s) for s in semi_axes)
     return 4.0 / 3.0 * math.pi * a * b * c
 
 
@@ -307,8 +307,8 @@ def ellipsoid(
 
     About its centre, in its own axes: m (b² + c²)/5, m (a² + c²)/5, m (a² + b²)/5.
     """
-    moments = np.array(ellipsoid_moments(mass, *(float(s) for s in semi_axes)))
-    return MassProperties(mass, np.asarray(center, dtype=float), _turned(moments, rotation))
+    moments = np.array(ellipsoid_moments(mass, *(scalar(s) for s in semi_axes)))
+    return MassProperties(mass, numbers(center), _turned(moments, rotation))
 
 
 # --- spheres -------------------------------------------------------------------------------
@@ -321,7 +321,7 @@ def sphere_volume(radius: float) -> float:
 
 def sphere(mass: float, radius: float, center: np.ndarray) -> MassProperties:
     """Solid sphere: 2/5 m r² about every axis through its centre."""
-    return MassProperties(mass, np.asarray(center, dtype=float), sphere_inertia(mass, radius))
+    return MassProperties(mass, numbers(center), sphere_inertia(mass, radius))
 
 
 def sphere_inertia(mass: Numbers, radius: Numbers) -> np.ndarray:
@@ -349,7 +349,7 @@ def spherical_shell(
     """
     R, r = outer_radius, inner_radius
     ratio = (R**4 + R**3 * r + R * R * r * r + R * r**3 + r**4) / (R * R + R * r + r * r)
-    return MassProperties(mass, np.asarray(center, dtype=float), 0.4 * mass * ratio * np.eye(3))
+    return MassProperties(mass, numbers(center), 0.4 * mass * ratio * np.eye(3))
 
 
 # --- tube (hollow circular cylinder) ---------------------------------------------------------
@@ -402,9 +402,9 @@ def frustum(
     c = max(a, b) (then multiplied by c²), so radii near 1e-160 or 1e160 neither underflow to
     0/0 nor overflow in the fourth powers.
     """
-    c = max(float(start_radius), float(end_radius))
-    a, b = float(start_radius) / c, float(end_radius) / c
-    start = np.asarray(start, dtype=float)
+    c = max(scalar(start_radius), scalar(end_radius), key=lambda r: r.real)
+    a, b = scalar(start_radius) / c, scalar(end_radius) / c
+    start = numbers(start)
     u, h = axis_between(start, end)
     S = a * a + a * b + b * b
     quartic = a**4 + a**3 * b + a * a * b * b + a * b**3 + b**4
@@ -446,7 +446,7 @@ def torus(
     R2, a2 = major_radius * major_radius, minor_radius * minor_radius
     axial = mass * (R2 + 0.75 * a2)
     transverse = mass * (0.5 * R2 + 0.625 * a2)
-    return MassProperties(mass, np.asarray(center, dtype=float), axisymmetric_inertia(axial, transverse, u))
+    return MassProperties(mass, numbers(center), axisymmetric_inertia(axial, transverse, u))
 
 
 # --- hemisphere ------------------------------------------------------------------------------
@@ -470,7 +470,7 @@ def hemisphere(mass: float, radius: float, center: np.ndarray, axis: np.ndarray)
     """
     u = unit_vector(axis)
     r2 = radius * radius
-    com = np.asarray(center, dtype=float) + HEMISPHERE_COM_FRACTION * radius * u
+    com = numbers(center) + HEMISPHERE_COM_FRACTION * radius * u
     return MassProperties(mass, com, axisymmetric_inertia(0.4 * mass * r2, 83.0 / 320.0 * mass * r2, u))
 
 
@@ -487,7 +487,7 @@ def capsule(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> M
     """Capsule: a solid cylinder from ``start`` to ``end`` (length L) with a hemisphere of the
     same radius r on each end face, uniform density; moments about its centre as
     :func:`capsule_moments` gives them."""
-    return _about_middle(mass, start, end, lambda length: capsule_moments(mass, float(radius), length))
+    return _about_middle(mass, start, end, lambda length: capsule_moments(mass, scalar(radius), length))
 
 
 # --- prism: a plane polygon with holes extruded along a straight line ------------------------
@@ -500,7 +500,7 @@ def prism_frame(
     ``L = |end − start|``. z runs from ``start`` to ``end``; x is ``x_axis`` (default body x, or
     body y when x runs along z) made perpendicular to z; y = z × x. ValueError when ``x_axis``
     runs along z."""
-    z, length = axis_between(np.asarray(start, dtype=float), np.asarray(end, dtype=float))
+    z, length = axis_between(numbers(start), numbers(end))
     for x in [x_axis] if x_axis is not None else [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]:
         x = unit_vector(x)
         x = x - (x @ z) * z
@@ -514,7 +514,7 @@ def prism_frame(
 
 def prism_volume(outline: ArrayLike, holes: list, start: ArrayLike, end: ArrayLike) -> float:
     """Volume of the prism (L³): the outline's area less its holes', times the length."""
-    return polygon.area_moments(outline, holes)[0] * float(vector_length(np.subtract(end, start)))
+    return polygon.area_moments(outline, holes)[0] * scalar(vector_length(np.subtract(end, start)))
 
 
 def prism(
@@ -536,5 +536,5 @@ def prism(
     jxx, jyy, jxy = J[0, 0] / area, J[1, 1] / area, J[0, 1] / area  # ∫x'², ∫y'², ∫x'y' per area
     own = mass * np.array([[jyy + extra, -jxy, 0.0], [-jxy, jxx + extra, 0.0], [0.0, 0.0, jxx + jyy]])
     turned = R @ own @ R.T
-    com = np.asarray(start, dtype=float) + R @ [cx, cy, 0.5 * length]
+    com = numbers(start) + R @ [cx, cy, 0.5 * length]
     return MassProperties(mass, com, 0.5 * (turned + turned.T))

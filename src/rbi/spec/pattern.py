@@ -12,7 +12,7 @@ import math
 import numpy as np
 
 from rbi.core.mass import MassProperties, combine
-from rbi.core.rotation import axis_angle_matrix, without_rounding_noise
+from rbi.core.rotation import axis_angle_matrix, numbers, without_rounding_noise
 
 
 def copy_rotations(count: int, axis) -> np.ndarray:
@@ -42,8 +42,8 @@ def patterned(element: MassProperties, pattern) -> MassProperties:
     as one element. ``pattern`` has ``count`` and either ``axis`` (with ``through``, default
     the origin) or ``step``."""
     count = int(pattern.count)
-    com = np.asarray(element.center_of_mass, dtype=float)
-    inertia = np.asarray(element.inertia_about_com, dtype=float)
+    com = numbers(element.center_of_mass)
+    inertia = numbers(element.inertia_about_com)
     if pattern.step is not None:
         offsets = np.arange(count)[:, None] * np.asarray(pattern.step, dtype=float)
         coms = com + offsets
@@ -53,5 +53,5 @@ def patterned(element: MassProperties, pattern) -> MassProperties:
         rotations = copy_rotations(count, pattern.axis)
         coms = through + np.einsum("kij,j->ki", rotations, com - through)
         inertias = np.einsum("kij,jl,kml->kim", rotations, inertia, rotations)
-    props = combine(np.full(count, float(element.mass)), coms, inertias)
+    props = combine(np.full(count, element.mass), coms, inertias)
     return props

@@ -23,7 +23,9 @@ from rbi.core.mass import MassProperties
 from rbi.core.rotation import (
     axis_angle_matrix,
     euler_matrix,
+    numbers,
     quaternion_to_matrix,
+    radians,
     vector_length,
     without_rounding_noise,
 )
@@ -105,26 +107,26 @@ def rotation_matrix(rotation: models.Rotation | None) -> np.ndarray | None:
     if rotation is None:
         return None
     if rotation.quaternion is not None:
-        R = quaternion_to_matrix(np.asarray(rotation.quaternion, dtype=float))
+        R = quaternion_to_matrix(numbers(rotation.quaternion))
     elif rotation.euler_deg is not None:
-        R = euler_matrix(np.radians(rotation.euler_deg), rotation.sequence)
+        R = euler_matrix(radians(rotation.euler_deg), rotation.sequence)
     else:
-        R = axis_angle_matrix(np.asarray(rotation.axis, dtype=float), np.radians(rotation.angle_deg))
+        R = axis_angle_matrix(numbers(rotation.axis), radians(rotation.angle_deg))
     return without_rounding_noise(R)
 
 
 def custom_element(part: models.CustomPart) -> MassProperties:
     """The given inertia turned into body axes, then moved from ``about`` to the centre of
     mass. Raises ValueError (``field: what is wrong``) when either is not physical."""
-    given = np.asarray(part.inertia, dtype=float)
-    problem = inertia_problem(given)
+    given = numbers(part.inertia)
+    problem = inertia_problem(given.real)
     if problem is not None:
         raise ValueError(f"inertia: {problem.message}")
     R = rotation_matrix(part.rotation)
     inertia = given if R is None else re_express(given, R)
-    com = np.asarray(part.center_of_mass, dtype=float)
+    com = numbers(part.center_of_mass)
     if part.about is not None:
-        offset = com - np.asarray(part.about, dtype=float)
+        offset = com - numbers(part.about)
         inertia = parallel_axis_to_com(inertia, part.mass, offset)
         if not np.all(np.isfinite(inertia)) or not np.isfinite(np.sum(np.abs(inertia))):
             raise ValueError(
@@ -132,7 +134,7 @@ def custom_element(part: models.CustomPart) -> MassProperties:
                 f"{float(np.max(np.abs(offset))):.3g} away, to the centre of mass overflows (beyond "
                 f"{np.finfo(float).max:.3g}); `about` is the point the inertia was taken about, near the part"
             )
-        problem = inertia_problem(inertia, scale=0.5 * float(np.trace(given)))
+        problem = inertia_problem(inertia.real, scale=0.5 * float(np.trace(given.real)))
         if problem is not None:
             shift = float(part.mass) * float(offset @ offset)
             raise ValueError(

@@ -9,12 +9,14 @@ from collections.abc import Callable
 import numpy as np
 
 from rbi.core import shapes
+from rbi.core.rotation import numbers, scalar
 from rbi.spec import models
 
 
 def _length(start, end) -> float:
     """|end − start|, file length unit."""
-    return float(np.linalg.norm(np.subtract(end, start)))
+    d = numbers(np.subtract(end, start))
+    return scalar(np.sqrt(np.sum(d * d)) if d.dtype.kind == "c" else np.linalg.norm(d))
 
 
 PART_VOLUMES: dict[type, Callable[[object], float]] = {
@@ -40,7 +42,7 @@ PART_VOLUMES: dict[type, Callable[[object], float]] = {
 
 def one_volume(part) -> float:
     """The volume of one copy of a solid part (L³)."""
-    return float(PART_VOLUMES[type(part)](part))
+    return scalar(PART_VOLUMES[type(part)](part))
 
 
 def part_volume(part) -> float | None:
