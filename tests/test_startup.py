@@ -96,3 +96,19 @@ def test_the_collector_paused_while_a_command_or_a_name_is_imported_is_on_again_
     build_command("inertia")
     rbi.api.__getattr__("load")
     assert gc.isenabled()
+
+
+def test_at_exit_what_the_run_built_is_frozen_so_the_last_collections_skip_it():
+    probe = (
+        "import atexit, gc, sys\n"
+        "atexit.register(lambda: print('frozen', gc.get_freeze_count() > 0))\n"  # runs after rbi's
+        "from rbi.cli.app import main\n"
+        "sys.argv = ['rbi', 'inertia', sys.argv[1]]\n"
+        "main()\n"
+    )
+    proc = subprocess.run(
+        [sys.executable, "-c", probe, str(BODIES / "top.yaml")], capture_output=True, text=True, timeout=120
+    )
+    assert proc.returncode == 0
+    assert "0.5" in proc.stdout
+    assert proc.stdout.rstrip().endswith("frozen True")

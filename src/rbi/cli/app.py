@@ -10,6 +10,7 @@ integrator, matplotlib) inside the command function.
 
 from __future__ import annotations
 
+import atexit
 import difflib
 import gc
 import importlib
@@ -264,6 +265,10 @@ def main() -> None:
     # rbi uses no pydantic plugin: pydantic's documented switch spares the scan of every installed
     # package's entry points when the first model is built (a user's own setting stays)
     os.environ.setdefault("PYDANTIC_DISABLE_PLUGINS", "1")
+    # at exit, what the run built is handed to the permanent generation: the interpreter's last
+    # collections then skip it (~15% of `rbi inertia`'s CPU time went into them); it is all freed
+    # with the process, and outputs are closed and stdout flushed before
+    atexit.register(gc.freeze)
     terminal.prepare_streams()
     terminal.guard_stdout()
     previous_sigterm = signal.getsignal(signal.SIGTERM)
