@@ -5,13 +5,18 @@ on the same closed-form model (rbi.spec.uncertain.part_derivatives)."""
 from __future__ import annotations
 
 import math
+import shutil
+from pathlib import Path
 
 import numpy as np
 import pytest
+import yaml
 from uncertainties import ufloat, umath
 
 from rbi.spec.load import body_from_raw
-from rbi.spec.uncertain import QUANTITIES, linear
+from rbi.spec.uncertain import QUANTITIES, budget, linear
+
+BODIES = Path(__file__).resolve().parents[2] / "bodies"
 
 pytestmark = pytest.mark.filterwarnings("error::numpy.exceptions.ComplexWarning")  # no step dropped
 
@@ -181,3 +186,21 @@ def test_prism_outline_vertex():
     part = {"name": "p", "shape": "prism", "density": 1000, "start": [0, 0, 0], "end": [0, 0, L_w]}
     part["outline"] = [[0, 0], [x_w, 0], [0.2, 0.1], [0, y_w]]
     assert_matches(part, m, [cx, cy, L / 2], inertia)
+
+
+def test_a_mesh_scale_is_said_to_be_estimated(tmp_path):
+    """A mesh's builder cannot carry a complex step: its sensitivities are finite differences,
+    and the budget says so (JSON and table); the closed forms' budgets do not."""
+    from rbi.api import load
+
+    shutil.copy(BODIES / "bracket.stl", tmp_path / "bracket.stl")
+    raw = yaml.safe_load((BODIES / "bracket.yaml").read_text())
+    raw["parts"] = raw["parts"][:1] + [{"shape": "torus", "mass": "1 ± 0.01", "major_radius": 0.2}]
+    raw["parts"][1] |= {"minor_radius": "0.03 ± 0.001", "center": [0, 0, 0], "axis": [0, 0, 1]}
+    (tmp_path / "b.yaml").write_text(yaml.safe_dump(raw))
+    assert "estimated_sensitivities" not in budget(body_from_raw(raw, str(tmp_path / "b.yaml")))
+    raw["parts"][0]["scale"] = "0.001 ± 0.00001"
+    (tmp_path / "b.yaml").write_text(yaml.safe_dump(raw))
+    found = budget(body_from_raw(raw, str(tmp_path / "b.yaml")))
+    assert found["estimated_sensitivities"] == [f"parts.{raw['parts'][0].get('name', 0)}.scale"]
+    assert "finite differences (~1e-9) for parts." in str(load(str(tmp_path / "b.yaml")).uncertainty())

@@ -79,8 +79,10 @@ class UncertaintyBudget(Result):
             for c in q["contributions"]
             if c["contribution"] > 0
         ]
+        estimated = self._data.get("estimated_sensitivities")
         return (
-            "Contributions, largest first (share of the variance)",
+            "Contributions, largest first (share of the variance)"
+            + (f"; ∂y/∂x by finite differences (~1e-9) for {', '.join(estimated)}" if estimated else ""),
             ("quantity", "input", "∂y/∂x", "share"),
             rows,
         )

@@ -275,14 +275,15 @@ def _complex_step(
     return found
 
 
-def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+def part_derivatives(loaded: Any) -> tuple[np.ndarray, ...]:
     """Per uncertain input of the body ``loaded`` (a :class:`~rbi.spec.translate.LoadedBody`):
-    the index of its part and the derivatives of that part's mass (k,), centre of mass (k, 3)
+    the index of its part, the derivatives of that part's mass (k,), centre of mass (k, 3)
     and inertia about it (k, 3, 3) with respect to the input, each part evaluated with its own
-    inputs stepped (never the whole body)."""
+    inputs stepped (never the whole body), and whether each is only estimated (k,) (finite
+    differences, ~1e-9: a part whose builder cannot carry a complex step)."""
     inputs, spec = loaded.spec._uncertain, loaded.spec
     k = len(inputs)
-    derivative = np.zeros((k, 13))
+    derivative, estimated = np.zeros((k, 13)), np.zeros(k, dtype=bool)
     alike: dict[tuple, list[int]] = {}  # parts built together: one shape, inputs and mass kind
     for index, chosen in by_part(inputs).items():
         group = [inputs[n] for n in chosen]
@@ -296,6 +297,7 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, n
         if exact is not None:
             derivative[chosen] = exact
             continue
+        estimated[chosen] = True
         nominal = np.array([i.value for i in group])
         scale = np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
         # powers of 2: value ± step is exact, so a part's linear dependence differentiates exactly
@@ -323,7 +325,7 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray, n
         sign = np.array([-1.0 if getattr(spec.parts[i], "subtract", False) else 1.0 for i in indices])[rows]
         derivative[chosen] = _flat((sign * mass, com, sign[:, None, None] * inertia)).imag / h[:, None]
     part = np.array([i.part for i in inputs], dtype=int)
-    return part, derivative[:, 0], derivative[:, 1:4], derivative[:, 4:].reshape(k, 3, 3)
+    return part, derivative[:, 0], derivative[:, 1:4], derivative[:, 4:].reshape(k, 3, 3), estimated
 
 
 def drawn_parts(
@@ -360,7 +362,8 @@ DEFAULT_QUANTITIES = [q for q in QUANTITIES if not (q.startswith("inertia") and 
 class Linear:
     """The law of propagation on a body: ``values`` of :data:`QUANTITIES` (inertia and moments
     about ``point``), their ``sensitivities`` (q, k) to the k ``inputs`` (u (k,)), and
-    ``turn`` (k, 3, 3): per input the turn of principal axis i towards axis j."""
+    ``turn`` (k, 3, 3): per input the turn of principal axis i towards axis j; ``estimated``
+    (k,): the inputs whose sensitivities are finite differences, not exact."""
 
     inputs: tuple[UncertainInput, ...]
     u: np.ndarray
@@ -368,11 +371,17 @@ class Linear:
     sensitivities: np.ndarray
     axes: np.ndarray
     turn: np.ndarray
+    estimated: np.ndarray
 
     @property
     def uncertainty(self) -> np.ndarray:
         """The combined standard uncertainty of each quantity (GUM 5.1.2)."""
         return combined(self.sensitivities, self.u)
+
+    @property
+    def estimated_paths(self) -> list[str]:
+        """The inputs whose sensitivities are finite differences (~1e-9), not exact."""
+        return [i.path for i, e in zip(self.inputs, self.estimated) if e]
 
     def axes_deg(self) -> list[float | None]:
         """Each principal axis's standard angular uncertainty in degrees (None: undetermined)."""
@@ -407,12 +416,12 @@ def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
     props = loaded.props
     about = props.center_of_mass if point is None else np.asarray(point, dtype=float)
     inertia = props.inertia_about(about)
-    part, dm, dc, dI = part_derivatives(loaded)
+    part, dm, dc, dI, estimated = part_derivatives(loaded)
     dM, dC, dJ = body_derivatives(masses, coms, part, dm, dc, dI, about)
     moments, axes, dmoments, turn = principal_derivatives(inertia, dJ)
     values = np.concatenate([[props.mass], props.center_of_mass, inertia.reshape(9), moments])
     sensitivities = np.concatenate([dM[None], dC.T, dJ.reshape(-1, 9).T, dmoments.T])
-    return Linear(inputs, np.array([i.u for i in inputs]), values, sensitivities, axes, turn)
+    return Linear(inputs, np.array([i.u for i in inputs]), values, sensitivities, axes, turn, estimated)
 
 
 def generator(seed: int | None) -> np.random.Generator:
@@ -441,7 +450,8 @@ def budget(
     seed: int | None = None,
     coverage: float = 0.95,
 ) -> dict[str, Any]:
-    """The uncertainty budget of ``rbi uncertainty``, as its JSON (the contract's form)."""
+    """The uncertainty budget of ``rbi uncertainty``, as its JSON (the contract's form; and
+    ``estimated_sensitivities``, the inputs whose ∂y/∂x are not exact, when there are any)."""
     chosen = [QUANTITIES.index(q) for q in (of or DEFAULT_QUANTITIES)]
     result = linear(loaded)
     u = result.uncertainty
@@ -491,7 +501,7 @@ def budget(
         "method": method,
         "samples": samples if drawn is not None else None,
         "quantities": quantities,
-    }
+    } | ({"estimated_sensitivities": result.estimated_paths} if result.estimated.any() else {})
 
 
 def part_uncertainties(loaded: Any) -> list[dict[str, Any] | None]:
@@ -499,7 +509,7 @@ def part_uncertainties(loaded: Any) -> list[dict[str, Any] | None]:
     ``mass``, ``center_of_mass`` and ``inertia_about_com`` from its own inputs (in ``loaded``'s
     units; zeros for a part without ±)."""
     inputs = loaded.spec._uncertain
-    part, dm, dc, dI = part_derivatives(loaded)
+    part, dm, dc, dI, _ = part_derivatives(loaded)
     u = np.array([i.u for i in inputs])
     length, mass = _file_units_per_unit(loaded)
     zero = {"mass": 0.0, "center_of_mass": [0.0] * 3, "inertia_about_com": [[0.0] * 3 for _ in range(3)]}
