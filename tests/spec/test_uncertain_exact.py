@@ -188,19 +188,24 @@ def test_prism_outline_vertex():
     assert_matches(part, m, [cx, cy, L / 2], inertia)
 
 
-def test_a_mesh_scale_is_said_to_be_estimated(tmp_path):
-    """A mesh's builder cannot carry a complex step: its sensitivities are finite differences,
-    and the budget says so (JSON and table); the closed forms' budgets do not."""
+def test_a_mesh_scale_is_exact_and_a_fallback_is_said_to_be_estimated(tmp_path, monkeypatch):
+    """A mesh's scale: mass ∝ scale³, exactly (complex step through its builder). Where a
+    builder could not carry the step (forced here), the sensitivities are finite differences
+    and the budget says so (JSON and table); otherwise it does not."""
     from rbi.api import load
+    from rbi.spec import uncertain
 
     shutil.copy(BODIES / "bracket.stl", tmp_path / "bracket.stl")
     raw = yaml.safe_load((BODIES / "bracket.yaml").read_text())
-    raw["parts"] = raw["parts"][:1] + [{"shape": "torus", "mass": "1 ± 0.01", "major_radius": 0.2}]
-    raw["parts"][1] |= {"minor_radius": "0.03 ± 0.001", "center": [0, 0, 0], "axis": [0, 0, 1]}
-    (tmp_path / "b.yaml").write_text(yaml.safe_dump(raw))
-    assert "estimated_sensitivities" not in budget(body_from_raw(raw, str(tmp_path / "b.yaml")))
+    raw["parts"] = raw["parts"][:1]
     raw["parts"][0]["scale"] = "0.001 ± 0.00001"
     (tmp_path / "b.yaml").write_text(yaml.safe_dump(raw))
-    found = budget(body_from_raw(raw, str(tmp_path / "b.yaml")))
-    assert found["estimated_sensitivities"] == [f"parts.{raw['parts'][0].get('name', 0)}.scale"]
-    assert "finite differences (~1e-9) for parts." in str(load(str(tmp_path / "b.yaml")).uncertainty())
+    loaded = body_from_raw(raw, str(tmp_path / "b.yaml"))
+    found = linear(loaded)
+    assert found.sensitivities[0, 0] == pytest.approx(3 * loaded.props.mass / 0.001, rel=1e-13)
+    assert "estimated_sensitivities" not in budget(loaded)
+    monkeypatch.setattr(uncertain, "_complex_step", lambda *args: None)
+    assert budget(loaded)["estimated_sensitivities"] == ["parts.bracket.scale"]
+    assert "finite differences (~1e-9) for parts.bracket.scale" in str(
+        load(str(tmp_path / "b.yaml")).uncertainty()
+    )

@@ -26,6 +26,7 @@ from rbi.core.rotation import (
     numbers,
     quaternion_to_matrix,
     radians,
+    scalar,
     vector_length,
     without_rounding_noise,
 )
@@ -160,7 +161,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     except ValueError as exc:
         raise ValueError(f"file: {part.file}: {exc}") from None
     unit = solid.distribution.unit  # at density 1: the mass is the volume (or area)
-    scale = float(part.scale)
+    scale = scalar(part.scale)  # complex in a complex step (rbi.spec.uncertain)
     measure = unit.mass * scale ** (2 if part.inertia == "shell" else 3)  # area or volume
     part._enclosed_volume = None if part.inertia == "shell" else measure
     part._mesh_notes = _mesh_notes(part, solid, units)
@@ -198,7 +199,7 @@ def _placed(part, mass: float, com: np.ndarray, inertia: np.ndarray) -> MassProp
     if R is not None:
         com = R @ com
         inertia = re_express(inertia, R)
-    return MassProperties(mass, np.asarray(part.position, dtype=float) + com, 0.5 * (inertia + inertia.T))
+    return MassProperties(mass, numbers(part.position) + com, 0.5 * (inertia + inertia.T))
 
 
 def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> MassProperties:
@@ -237,7 +238,7 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
         # not at top level: `rbi inertia` would load rbi.core.mesh too
         from rbi.core.mesh import surface_area
 
-        scale = float(part.scale)
+        scale = scalar(part.scale).real
         added = solid.added_area * scale * scale
         share = solid.added_area / surface_area(solid.vertices, solid.faces)
         notes.append(
