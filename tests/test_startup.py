@@ -69,7 +69,7 @@ def test_inertia_loads_no_scipy_matplotlib_or_kernel(fmt):
     modules, status, out = loaded("inertia", BODIES / "top.yaml", "--format", fmt)
     assert status in (0, None)
     assert "0.5" in out
-    for package in ("scipy", "matplotlib", "rbi.sim", "rbi.sweeps", "rbi.bench", "trimesh"):
+    for package in ("scipy", "matplotlib", "rbi.sim", "rbi.sweeps", "rbi.bench", "trimesh", "xml", "pyexpat"):
         assert not _any(modules, package), package
     if fmt == "json":
         assert not _any(modules, "rich")  # rich only when a table is printed

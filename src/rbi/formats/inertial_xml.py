@@ -9,13 +9,16 @@ Numbers are written with the shortest repr that round-trips, so nothing is lost.
 
 from __future__ import annotations
 
-import xml.etree.ElementTree as ET
+from typing import TYPE_CHECKING
 
 import numpy as np
 
 from rbi.core.inertia import principal_axes
 from rbi.core.rotation import matrix_to_quaternion
 from rbi.text import visible
+
+if TYPE_CHECKING:  # imported where an element is made: `rbi inertia` loads no XML module (~2 ms)
+    import xml.etree.ElementTree as ET
 
 FORMATS = ("urdf", "mjcf", "sdf")
 
@@ -39,6 +42,8 @@ def _symmetric(inertia) -> np.ndarray:
 def urdf_inertial(mass: float, com, inertia) -> ET.Element:
     """URDF: ``<origin xyz rpy>`` places the inertial frame at the centre of mass, axes
     parallel to the link's; ``<inertia ixx ixy ixz iyy iyz izz>`` about it."""
+    import xml.etree.ElementTree as ET
+
     I = _symmetric(inertia)
     inertial = ET.Element("inertial")
     ET.SubElement(inertial, "origin", xyz=_numbers(com), rpy="0 0 0")
@@ -50,6 +55,8 @@ def urdf_inertial(mass: float, com, inertia) -> ET.Element:
 def sdf_inertial(mass: float, com, inertia) -> ET.Element:
     """SDF: ``<pose>x y z roll pitch yaw</pose>`` (the centre of mass, axes parallel to the
     link's), ``<mass>``, and ``<inertia>`` with child elements ixx ixy ixz iyy iyz izz."""
+    import xml.etree.ElementTree as ET
+
     I = _symmetric(inertia)
     inertial = ET.Element("inertial")
     ET.SubElement(inertial, "pose").text = _numbers(list(com) + [0.0, 0.0, 0.0])
@@ -64,6 +71,8 @@ def mjcf_inertial(mass: float, com, inertia, diagonal: bool = False) -> ET.Eleme
     """MJCF: ``<inertial pos mass fullinertia>`` with fullinertia in MuJoCo's order
     Ixx Iyy Izz Ixy Ixz Iyz; or, with ``diagonal``, the principal moments as ``diaginertia``
     and ``quat`` (w x y z) turning the principal frame into the body frame."""
+    import xml.etree.ElementTree as ET
+
     I = _symmetric(inertia)
     attributes = {"pos": _numbers(com), "mass": xml_number(mass)}
     if diagonal:
@@ -89,6 +98,8 @@ def inertial_element(fmt: str, mass: float, com, inertia, diagonal: bool = False
 def element_text(element: ET.Element, indent: str = "", step: str = "  ") -> str:
     """``element`` as text, its children indented by ``step`` per level; every line after the
     first starts with ``indent`` (the first is placed by the caller)."""
+    import xml.etree.ElementTree as ET
+
     ET.indent(element, space=step)
     text = ET.tostring(element, encoding="unicode")
     return ("\n" + indent).join(text.split("\n"))
@@ -115,12 +126,16 @@ def xml_comment(text: str) -> str:
 
 
 def _urdf_document(name: str, inertial: ET.Element) -> ET.Element:
+    import xml.etree.ElementTree as ET
+
     robot = ET.Element("robot", name=name)
     ET.SubElement(robot, "link", name=name).append(inertial)
     return robot
 
 
 def _sdf_document(name: str, inertial: ET.Element) -> ET.Element:
+    import xml.etree.ElementTree as ET
+
     sdf = ET.Element("sdf", version="1.7")
     model = ET.SubElement(sdf, "model", name=name)
     ET.SubElement(model, "link", name=name).append(inertial)
@@ -128,6 +143,8 @@ def _sdf_document(name: str, inertial: ET.Element) -> ET.Element:
 
 
 def _mjcf_document(name: str, inertial: ET.Element) -> ET.Element:
+    import xml.etree.ElementTree as ET
+
     mujoco = ET.Element("mujoco", model=name)
     body = ET.SubElement(ET.SubElement(mujoco, "worldbody"), "body", name=name)
     ET.SubElement(body, "freejoint")
@@ -146,6 +163,8 @@ def export_xml(
     document holding it; ``comment`` goes first as an XML comment. Control
     characters in ``name`` and ``comment`` are written as visible escapes (XML 1.0 cannot hold
     them, and the text may be printed on a terminal)."""
+    import xml.etree.ElementTree as ET
+
     element = inertial_element(
         to, props.mass, props.center_of_mass, props.inertia_about_com, diagonal=diagonal
     )
