@@ -82,16 +82,3 @@ def test_run_results_are_their_commands_json(spec):
             "sweep", str(spec), "--spin", "50:100:2", "--duration", "0.2", "--samples", "11", "--workers", "1"
         )
     )
-
-
-def test_an_audit_is_not_walked_again(monkeypatch):
-    # AuditReport.to_dict builds its JSON-ready links itself (millions of numbers for a large
-    # robot): the base's plain() must not walk the whole report a second time
-    import rbi.reprs
-
-    walked = []
-    real = rbi.reprs.plain
-    monkeypatch.setattr(rbi.reprs, "plain", lambda value: walked.append(value) or real(value))
-    data = rbi.audit(BODIES / "two_link_arm.urdf").to_dict()
-    assert json.loads(json.dumps(data)) == data
-    assert not any(isinstance(v, dict) and "links" in v for v in walked)
