@@ -25,10 +25,14 @@ import numpy as np
 from rbi.core.validity import InertiaProblem, declared_inertia_problem
 from rbi.errors import InputError
 from rbi.formats import robot_xml
+from rbi.formats.mjcf import read_mjcf
 from rbi.formats.paths import _outside_allowed
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot import short as _short
 from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
+from rbi.formats.sdf import read_sdf
+from rbi.formats.urdf import read_urdf, read_urdf_text
+from rbi.formats.xacro_sandbox import expand_xacro
 
 ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf", ".xacro")
 FORMAT_BY_ROOT = {"robot": "urdf", "sdf": "sdf", "mujoco": "mjcf"}
@@ -52,18 +56,12 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
 
     path = str(path)
     if path.lower().endswith(".xacro"):
-        # not at top level: `rbi audit` would load rbi.formats.xacro_sandbox too
-        from rbi.formats.xacro_sandbox import expand_xacro
-
         expanded, includes = expand_xacro(path, _outside_allowed.get())
         document = robot_xml.read_xml(path, expanded)
         document.includes.extend(includes)
     else:
         data = robot_xml.read_bytes(path)
         if b"<robot" in data[:65536]:  # most likely a URDF: first from its plain text, if it is
-            # not at top level: `rbi validate` would load rbi.formats.urdf too
-            from rbi.formats.urdf import read_urdf_text
-
             model = read_urdf_text(path, data, package_paths, geometry)
             if model is not None:
                 return model
@@ -74,15 +72,7 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
             f"{path}: not a URDF, SDF or MJCF document (the root element is "
             f"<{_short(document.root.tag)}>, expected <robot>, <sdf> or <mujoco>)"
         )
-    if fmt == "urdf":
-        # not at top level: `rbi validate` would load rbi.formats.urdf too
-        from rbi.formats.urdf import read_urdf as reader
-    elif fmt == "sdf":
-        # not at top level: `rbi audit` would load rbi.formats.sdf too
-        from rbi.formats.sdf import read_sdf as reader
-    else:
-        # not at top level: `rbi audit` would load rbi.formats.mjcf too
-        from rbi.formats.mjcf import read_mjcf as reader
+    reader = {"urdf": read_urdf, "sdf": read_sdf, "mjcf": read_mjcf}[fmt]
     return reader(document, package_paths, geometry)
 
 

@@ -251,8 +251,7 @@ def _integrated(geom: Geom, path, scale: np.ndarray, mode: str, where: str, repa
         faces = faces[:, ::-1]
     if not np.all(scale):
         raise InputError(f"{where}{geom.label}: scale {scale.tolist()}: a zero scale flattens the mesh")
-    # not at top level: `rbi audit` would load rbi.core.mesh too
-    from rbi.core.mesh import mesh_distribution, repair_mesh
+    from rbi.core.mesh import mesh_distribution, repair_mesh  # heavy: scipy, for a link with a mesh only
 
     added = None
     try:
@@ -334,8 +333,7 @@ def mujoco_mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str)
             terms += E[:, a] * F[:, b] + E[:, b] * F[:, a]
             second[a, b] = float((volume * terms).sum() / 20)
     inertia = np.trace(second) * np.eye(3) - second
-    # not at top level: `rbi audit` would load rbi.core.mesh too
-    from rbi.core.mesh import MeshDistribution
+    from rbi.core.mesh import MeshDistribution  # heavy: scipy, for a link with a mesh only
 
     unit = MassProperties(float(volume.sum()), com, 0.5 * (inertia + inertia.T), "mesh")
     return MeshDistribution(mode, unit, V, np.asarray(faces))
@@ -399,8 +397,7 @@ def _hinted(message: str, mode: str) -> str:
 
 def _mesh_arrays(path):
     """Welded vertices and faces of the mesh file (ValueError naming what is wrong)."""
-    # not at top level: `rbi audit` would load rbi.formats.mesh_file too
-    from rbi.formats.mesh_file import MESH_FILE_TYPES, read_mesh_arrays
+    from rbi.formats.mesh_file import MESH_FILE_TYPES, read_mesh_arrays  # heavy: scipy (rbi.core.mesh)
 
     suffix = path.suffix.lower()
     if suffix not in MESH_FILE_TYPES:
