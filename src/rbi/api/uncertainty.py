@@ -9,7 +9,7 @@ from typing import Any
 
 from rbi.errors import ArgumentError, literal
 from rbi.memory import collector_paused
-from rbi.reprs import Result, Rows
+from rbi.reprs import Result, Rows, json_ready, plain
 from rbi.spec.uncertain import QUANTITIES, budget
 from rbi.text import number
 
@@ -23,15 +23,17 @@ class UncertaintyBudget(Result):
     def __init__(self, data: dict[str, Any]) -> None:
         self._data = data
 
+    @json_ready
     def to_dict(self) -> dict[str, Any]:
-        """The JSON object of ``rbi uncertainty`` (a new one each call)."""
-        quantities = [
-            q
-            | {"interval": list(q["interval"]), "contributions": [dict(c) for c in q["contributions"]]}
-            | ({"linear": q["linear"] | {"interval": list(q["linear"]["interval"])}} if "linear" in q else {})
-            for q in self._data["quantities"]
-        ]
-        return self._data | {"units": dict(self._data["units"]), "quantities": quantities}
+        """The JSON object of ``rbi uncertainty`` (a new one each call; the contributions are
+        made JSON-ready as they are built, the rest by :func:`rbi.reprs.plain`)."""
+        with collector_paused():  # a budget of k inputs makes some 13 k dicts, none of them garbage
+            quantities = [
+                plain({k: v for k, v in q.items() if k != "contributions"})
+                | {"contributions": q["contributions"].rows()}
+                for q in self._data["quantities"]
+            ]
+        return plain(self._data | {"quantities": []}) | {"quantities": quantities}
 
     @property
     def quantities(self) -> list[dict[str, Any]]:
@@ -42,7 +44,7 @@ class UncertaintyBudget(Result):
     def csv_rows(self) -> list[dict[str, Any]]:
         """One flat row per quantity and input (the quantity's own numbers repeated)."""
         out = []
-        for q in self._data["quantities"]:
+        for q in self.quantities:
             head = {"quantity": q["quantity"], "value": q["value"], "u": q["u"]}
             head |= {"low": q["interval"][0], "high": q["interval"][1], "coverage": q["coverage"]}
             if "linear" in q:
@@ -75,7 +77,7 @@ class UncertaintyBudget(Result):
     def _budget(self) -> tuple[str, tuple[str, ...], list[list[str]]]:
         rows = [
             [q["quantity"], c["input"], number(c["sensitivity"], 4), f"{100 * c['share']:.1f}%"]
-            for q in self._data["quantities"]
+            for q in self.quantities
             for c in q["contributions"]
             if c["contribution"] > 0
         ]
@@ -120,5 +122,4 @@ def budget_of(
         raise ArgumentError(
             "coverage", f"must be a probability between 0 and 1, e.g. 0.95 (got {literal(coverage)})"
         )
-    with collector_paused():  # a budget of k inputs makes some 13 k dicts, none of them garbage
-        return UncertaintyBudget(budget(loaded, names, method, samples, seed, float(coverage)))
+    return UncertaintyBudget(budget(loaded, names, method, samples, seed, float(coverage)))

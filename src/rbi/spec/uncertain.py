@@ -20,7 +20,7 @@ import math
 import re
 import warnings
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -41,14 +41,15 @@ from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
 
 PLUS_MINUS = re.compile(r"±|\+/-|\+-")
 _DECIMAL = re.compile(r"[-+]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][-+]?[0-9]+)?")
+_WRITTEN = re.compile(rf"\s*({_DECIMAL.pattern})\s*(?:{PLUS_MINUS.pattern})\s*({_DECIMAL.pattern})\s*(%?)\s*")
+"""``VALUE ± U`` as it is most often written, read at once (anything else piece by piece)."""
 NOT_NUMBERS = frozenset({"name", "shape", "file", "sequence", "repair", "solid", "subtract", "count"})
 """Fields of a part that are not measured numbers: a ± there is refused."""
 KINDS = {"standard": "normal", "tolerance": "uniform"}
 """The top-level ``uncertainty:`` values and the distribution each gives a ±."""
 
 
-@dataclass(frozen=True)
-class UncertainInput:
+class UncertainInput(NamedTuple):
     """One number written with ±. ``path``: as ``rbi sweep --vary`` names it; ``part``: index in
     the spec's parts; ``steps``: the keys inside the part (``("position", 0)``); ``value`` and
     ``u`` (standard uncertainty) in the file's units; ``distribution``: ``"normal"`` or
@@ -79,6 +80,9 @@ def _field_text(steps: tuple[Any, ...]) -> str:
 def parse_plus_minus(text: str) -> tuple[float, float, bool]:
     """``(value, U, relative)`` of ``"VALUE ± U"`` (``relative``: U was written in %, and is
     returned as the absolute U). ValueError with the user's message when it is not that."""
+    written = _WRITTEN.fullmatch(text)
+    if written and math.isfinite(value := float(written[1])) and 0 <= (u := float(written[2])) < math.inf:
+        return value, abs(value) * u / 100.0 if written[3] else u, bool(written[3])
     pieces = PLUS_MINUS.split(text)
     if len(pieces) != 2:
         raise ValueError(
@@ -108,15 +112,16 @@ class Split:
     inputs: tuple[UncertainInput, ...]
 
 
-def _found(node: Any, steps: tuple[Any, ...], out: list) -> None:
+def _read_out(node: Any, steps: tuple[Any, ...], found: list) -> Any:
+    """A copy of ``node`` (a part, or a list or mapping in it), each ± text's place listed in
+    ``found`` (keys and indices from the part's index on)."""
     if isinstance(node, dict):
-        for key, item in node.items():
-            _found(item, (*steps, key), out)
-    elif isinstance(node, list):
-        for k, item in enumerate(node):
-            _found(item, (*steps, k), out)
-    elif isinstance(node, str) and (PLUS_MINUS.search(node) or node.lstrip().startswith("±")):
-        out.append(steps)
+        return {key: _read_out(item, (*steps, key), found) for key, item in node.items()}
+    if isinstance(node, list):
+        return [_read_out(item, (*steps, k), found) for k, item in enumerate(node)]
+    if isinstance(node, str) and (PLUS_MINUS.search(node) or node.lstrip().startswith("±")):
+        found.append(steps)
+    return node
 
 
 def named_plus_minus(spec: models.BodySpec) -> bool:
@@ -138,13 +143,14 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
         return None
     parts = raw.get("parts")
     found: list[tuple[Any, ...]] = []
+    plain = dict(raw)
     if isinstance(parts, list):
-        for i, part in enumerate(parts):
-            if isinstance(part, dict):
-                _found(part, (i,), found)
+        plain["parts"] = [
+            _read_out(part, (i,), found) if isinstance(part, dict) else part for i, part in enumerate(parts)
+        ]
     if not found and "uncertainty" not in raw:
         return None
-    kind = raw.get("uncertainty", "standard")
+    kind = plain.pop("uncertainty", "standard")
     if kind not in KINDS:
         raise InputError(
             f"{path}: uncertainty: must be standard (± is one standard uncertainty) or tolerance "
@@ -152,28 +158,28 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
             file=path,
             field="uncertainty",
         )
-    plain = copy.deepcopy(raw)
-    plain.pop("uncertainty", None)
+    distribution = KINDS[kind]
+    divisor = math.sqrt(3.0) if distribution == "uniform" else 1.0  # GUM 4.3.7
     inputs = []
     for index, *steps in found:
         node = plain["parts"][index]
         for step in steps[:-1]:
             node = node[step]
         field = _field_text(tuple(steps))
-        name = parts[index].get("name")
-        label = f"parts[{index}]" + (f" ({name})" if isinstance(name, str) and name else "")
         try:
             named = [step for step in steps if isinstance(step, str)]
             if named and named[-1] in NOT_NUMBERS:
                 raise ValueError(f"± is for a number of a part, and `{named[-1]}` is not a measured number")
             value, u, _ = parse_plus_minus(node[steps[-1]])
         except ValueError as exc:
+            name = parts[index].get("name")
+            label = f"parts[{index}]" + (f" ({name})" if isinstance(name, str) and name else "")
             raise InputError(f"{path}: {label}: {field}: {exc}", file=path, part=label, field=field) from None
         node[steps[-1]] = value
-        if KINDS[kind] == "uniform":
-            u /= math.sqrt(3.0)
         inputs.append(
-            UncertainInput(f"{_part_path(parts, index)}.{field}", index, tuple(steps), value, u, KINDS[kind])
+            UncertainInput(
+                f"{_part_path(parts, index)}.{field}", index, tuple(steps), value, u / divisor, distribution
+            )
         )
     return Split(plain, tuple(inputs))
 
@@ -442,6 +448,36 @@ def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
     return np.concatenate([mass[:, None], com, inertia.reshape(n, 9), moments], axis=1)
 
 
+class Contributions(NamedTuple):
+    """Every input's part in one quantity's uncertainty, ranked largest first: ``order`` the
+    inputs' positions, and their ``sensitivity`` ∂y/∂x, ``contribution`` |∂y/∂x|·u and
+    ``share`` of the variance in that order. Made rows of the budget's JSON only when asked
+    (:meth:`rows`): a budget of k inputs has 13 k of them."""
+
+    inputs: tuple[UncertainInput, ...]
+    order: np.ndarray
+    sensitivity: np.ndarray
+    contribution: np.ndarray
+    share: np.ndarray
+
+    def rows(self) -> list[dict[str, Any]]:
+        """``{"input", "value", "u", "sensitivity", "contribution", "share"}`` of each input,
+        JSON-ready (``-0.0`` written 0.0, as :func:`rbi.reprs.plain` writes it)."""
+        inputs = [self.inputs[n] for n in self.order.tolist()]
+        numbers = (a + 0.0 for a in (self.sensitivity, self.contribution, self.share))  # -0.0 + 0.0 is 0.0
+        return [
+            {
+                "input": x.path,
+                "value": x.value + 0.0,
+                "u": x.u + 0.0,
+                "sensitivity": s,
+                "contribution": c,
+                "share": f,
+            }
+            for x, s, c, f in zip(inputs, *(a.tolist() for a in numbers))
+        ]
+
+
 def budget(
     loaded: Any,
     of: list[str] | None = None,
@@ -450,14 +486,14 @@ def budget(
     seed: int | None = None,
     coverage: float = 0.95,
 ) -> dict[str, Any]:
-    """The uncertainty budget of ``rbi uncertainty``, as its JSON (the contract's form; and
-    ``estimated_sensitivities``, the inputs whose ∂y/∂x are not exact, when there are any)."""
+    """The uncertainty budget of ``rbi uncertainty``, as its JSON (the contract's form, each
+    quantity's ``contributions`` as :class:`Contributions`; and ``estimated_sensitivities``, the
+    inputs whose ∂y/∂x are not exact, when there are any)."""
     chosen = [QUANTITIES.index(q) for q in (of or DEFAULT_QUANTITIES)]
     result = linear(loaded)
     u = result.uncertainty
     k = coverage_factor(coverage)
     drawn = monte_carlo(loaded, samples, seed) if method == "monte-carlo" else None
-    paths, values, us = [x.path for x in result.inputs], [x.value for x in result.inputs], result.u.tolist()
     quantities = []
     for q in chosen:
         value, spread = float(result.values[q]), float(u[q])
@@ -466,19 +502,6 @@ def budget(
         part = np.abs(sensitivity) * result.u
         share = (part / spread) ** 2 if spread > 0 else np.zeros_like(part)
         ranked = np.argsort(-part, kind="stable")
-        contributions = [
-            {
-                "input": paths[n],
-                "value": values[n],
-                "u": us[n],
-                "sensitivity": s,
-                "contribution": c,
-                "share": f,
-            }
-            for n, s, c, f in zip(
-                ranked.tolist(), sensitivity[ranked].tolist(), part[ranked].tolist(), share[ranked].tolist()
-            )
-        ]
         entry: dict[str, Any] = {"quantity": QUANTITIES[q]}
         if drawn is not None:
             y = drawn[:, q]
@@ -493,7 +516,8 @@ def budget(
             }
         else:
             entry.update(value=value, u=spread, interval=list(interval))
-        entry.update(coverage=coverage, contributions=contributions)
+        ranks = Contributions(result.inputs, ranked, sensitivity[ranked], part[ranked], share[ranked])
+        entry.update(coverage=coverage, contributions=ranks)
         quantities.append(entry)
     return {
         "name": loaded.name,
