@@ -1,7 +1,7 @@
 """``rbi bench``: what accuracy costs and how fast rbi is, measured in one run.
 
-Each section is a module with ``run(quick, progress)`` returning plain data and
-``planned_steps(quick)``; :data:`rbi.bench.suite.SECTIONS` lists them in the order they run (each
+Each section is a module with ``run(quick, progress)`` returning plain data;
+:data:`rbi.bench.suite.SECTIONS` lists them in the order they run (each
 module's docstring says what it measures and against which baseline). :mod:`rbi.bench.report`
 turns the results into a report (a targets table first, the tables, Markdown for
 docs/performance.md, a log–log plot). Times are wall-clock seconds on a possibly busy machine:

@@ -18,7 +18,7 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench import Progress
-from rbi.bench.timing import repeated
+from rbi.bench.timing import measure
 from rbi.core.inertia import parallel_axis, parallel_axis_to_com
 from rbi.formats import mesh_file, step
 from rbi.formats.step import _ocp, _quiet, step_triangles
@@ -35,10 +35,6 @@ DENSITY = "steel"
 STL_ANGLE = {True: 0.5, False: 0.1}
 """BRepMesh's angular deflection (radians) for the STL: quick run, full run (about 2 × 10⁴ and
 10⁵ triangles)."""
-
-
-def planned_steps(quick: bool) -> int:
-    return 1
 
 
 def hole_centres() -> np.ndarray:
@@ -133,7 +129,7 @@ def _load_cold(spec: Path, repeats: int) -> tuple[float, object]:
         mesh_file._CACHE.clear()
         return load_body(spec)
 
-    timing = repeated(load, repeats)
+    timing = measure(load, repeats, repeats, 0.0)
     return timing.median, timing.result
 
 

@@ -15,26 +15,19 @@ quick run), in this process, with the compiled kernel already loaded:
 
 from __future__ import annotations
 
-import statistics
-from collections.abc import Callable
+from functools import partial
 
 import numpy as np
 
 from rbi.bench import Progress, workprecision
-from rbi.bench.timing import measure
+from rbi.bench.timing import in_turn, measure
 from rbi.sim._dop853 import integrate_minimal
-from rbi.sim.api import DEFAULT_RTOL, sample_times, simulate
-from rbi.sim.compiled import integrator
+from rbi.sim.api import sample_times, simulate
 
 TRIAL_RTOLS = (1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12)
 """Tolerances tried for the fastest run at the chapter's error or better."""
 
 TARGETS = {"ratio_default": 3000.0, "ratio_best_matching": 6000.0, "ratio_to_minimal_loop": 1.3}
-
-
-def _median_seconds(call: Callable[[], object], min_seconds: float) -> float:
-    """Median time of ``call`` over at least 5 runs and ``min_seconds`` (at most 2000 runs)."""
-    return measure(call, min_repeats=5, max_repeats=2000, min_seconds=min_seconds).median
 
 
 def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: float):
@@ -59,123 +52,44 @@ def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: fl
     return call, (y, out, steps)
 
 
-def planned_steps(quick: bool) -> int:
-    return 4
-
-
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-
-    integrator()  # load once, outside every timing
+    """The work-precision case of the bolted top, with rbi's method at :data:`TRIAL_RTOLS` and
+    the chapter's set-up only, then rbi at its defaults and the minimal loop timed in turn."""
     case = workprecision.cases(quick)[0]
-    scene, q0, omega0 = workprecision.scene_of(case)
-    min_seconds = 0.3 if quick else 1.5
-
-    progress("kernel: reference and the chapter's set-up")
-    reference, _ = workprecision.reference_of(case, scene, q0, omega0, quick)
-    chapter, chapter_times = _chapter_runs(scene, q0, omega0, case, quick)
-    chapter_s = statistics.median(chapter_times)
-    chapter_err = workprecision.errors(scene, chapter, reference)
-
-    def simulate_call(rtol=None):
-        return lambda: simulate(scene, q0, omega0, case.duration, case.samples, rtol=rtol)
+    tolerances = {"rk45": [workprecision.CHAPTER[1]], "default": list(TRIAL_RTOLS)}
+    runs = workprecision.run_case(case, quick, progress, tolerances)
+    chapter = next(r for r in runs["runs"] if r["chapter_setup"])
+    trials = [
+        r | {"no_worse": workprecision.no_worse(r, chapter)}
+        for r in runs.pop("runs")
+        if not r["chapter_setup"]
+    ]
+    best = min((t for t in trials if t["no_worse"]), key=lambda t: t["seconds"], default=None)
 
     progress("kernel: rbi at its defaults and the minimal loop")
-    default = simulate_call()()
-    default_err = workprecision.errors(scene, default, reference)
-    call, (_, out, steps) = minimal_loop_call(scene, q0, omega0, case.duration, case.samples, DEFAULT_RTOL)
+    scene, q0, omega0 = workprecision.scene_of(case)
+    default = simulate(scene, q0, omega0, case.duration, case.samples)
+    call, (_, out, steps) = minimal_loop_call(scene, q0, omega0, case.duration, case.samples, default.rtol)
     call()
-    default_s, minimal_s = _interleaved_medians(simulate_call(), call, min_seconds)
-
-    progress("kernel: the fastest tolerance at the chapter's error or better")
-    trials = _tolerance_trials(simulate_call, scene, reference, chapter_err, min_seconds)
-    matching = [t for t in trials if t["no_worse"]]
-    best = min(matching, key=lambda t: t["seconds"]) if matching else None
-
-    progress("kernel: done")
-    return {
-        "case": _case_entry(case),
-        "chapter": _entry(
-            chapter_s, chapter.steps, workprecision.CHAPTER[1], chapter_err, len(chapter_times)
-        ),
-        "default": _entry(default_s, default.steps, default.rtol, default_err),
-        "minimal_loop": _minimal_loop_entry(minimal_s, steps[0], out, default),
-        "trials": trials,
-        "best_matching": best,
-        "ratio_default": chapter_s / default_s,
-        "ratio_best_matching": chapter_s / best["seconds"] if best else None,
-        "ratio_to_minimal_loop": default_s / minimal_s,
-        "targets": TARGETS,
-    }
-
-
-def _entry(seconds: float, steps: int, rtol: float, err: dict, repeats: int | None = None) -> dict:
-    """A timed run as the result records it: its median seconds (over ``repeats`` runs, when
-    given), accepted steps, tolerance and final orientation (deg) and ω (rad/s) errors."""
-    timed = {"seconds": seconds} | ({} if repeats is None else {"repeats": repeats})
-    errors = {key: err[key] for key in ("orientation_error_deg", "omega_error")}
-    return timed | {"steps": steps, "rtol": rtol} | errors
-
-
-def _tolerance_trials(simulate_call, scene, reference, chapter_err: dict, min_seconds: float) -> list[dict]:
-    """Each of :data:`TRIAL_RTOLS`: its errors against ``reference``, and its time where its
-    error is no worse than the chapter's set-up (``chapter_err``)."""
-    trials = []
-    for rtol in TRIAL_RTOLS:
-        trajectory = simulate_call(rtol)()
-        err = workprecision.errors(scene, trajectory, reference)
-        no_worse = workprecision.no_worse(err, chapter_err)
-        seconds = _median_seconds(simulate_call(rtol), min_seconds / 3) if no_worse else None
-        trials.append(
-            {
-                "rtol": rtol,
-                "orientation_error_deg": err["orientation_error_deg"],
-                "omega_error": err["omega_error"],
-                "steps": trajectory.steps,
-                "no_worse": no_worse,
-                "seconds": seconds,
-            }
-        )
-    return trials
-
-
-def _chapter_runs(scene, q0, omega0, case, quick: bool) -> tuple:
-    """``(trajectory, seconds of each run)`` of the chapter's set-up on ``case``: it takes
-    seconds, so the median of three in a full run (one in a quick run)."""
-    chapter_times = []
-    for _ in range(1 if quick else 3):
-        chapter, seconds, _ = workprecision.timed_run(scene, q0, omega0, case, *workprecision.CHAPTER, 0.0)
-        chapter_times.append(seconds)
-    return chapter, chapter_times
-
-
-def _case_entry(case) -> dict:
-    """The bench case as the result records it."""
-    return {
-        "name": case.name,
-        "spec": f"bodies/{case.spec}",
-        "omega0": list(case.omega0),
-        "duration": case.duration,
-        "samples": case.samples,
-    }
-
-
-def _interleaved_medians(first, second, min_seconds: float) -> tuple[float, float]:
-    """Median seconds of two calls timed in turn, five rounds each, so that a change in the
-    machine's load hits both alike."""
-    first_times, second_times = [], []
-    for _ in range(5):
-        first_times.append(_median_seconds(first, min_seconds / 5))
-        second_times.append(_median_seconds(second, min_seconds / 5))
-    return statistics.median(first_times), statistics.median(second_times)
-
-
-def _minimal_loop_entry(seconds: float, steps: int, out: np.ndarray, default) -> dict:
-    """The minimal loop's time, and whether it took the same steps and gave the same samples
-    (``out``: its [q, ω] rows) as rbi's ``default`` trajectory."""
+    min_seconds = 0.3 if quick else 1.5
+    default_call = partial(simulate, scene, q0, omega0, case.duration, case.samples)
+    timings = in_turn([partial(measure, f, 5, 2000, min_seconds / 5) for f in (default_call, call)], 5)
+    default_s, minimal_s = (t.median for t in timings)
     same_samples = bool(np.array_equal(out[:, :4], default.q) and np.array_equal(out[:, 4:], default.omega))
     return {
-        "seconds": seconds,
-        "steps": steps,
-        "same_steps": steps == default.steps,
-        "same_samples": same_samples,
+        "case": {key: value for key, value in runs.items() if key not in ("default", "speedup")},
+        "chapter": chapter,
+        "default": runs["default"] | {"seconds": default_s},
+        "minimal_loop": {
+            "seconds": minimal_s,
+            "steps": steps[0],
+            "same_steps": steps[0] == default.steps,
+            "same_samples": same_samples,
+        },
+        "trials": trials,
+        "best_matching": best,
+        "ratio_default": chapter["seconds"] / default_s,
+        "ratio_best_matching": chapter["seconds"] / best["seconds"] if best else None,
+        "ratio_to_minimal_loop": default_s / minimal_s,
+        "targets": TARGETS,
     }

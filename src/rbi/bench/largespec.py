@@ -28,7 +28,12 @@ from pathlib import Path
 
 from rbi.bench import Progress
 
-SHAPES = ("point", "cylinder")
+SHAPES = {
+    "point": "shape: point, mass: {m:.6g}, position: {a}",
+    "cylinder": "shape: cylinder, density: {density:.6g}, radius: {radius:.6g}, start: {a}, end: {b}",
+    "cone": "shape: cone, mass: {m:.6g}, radius: {radius:.6g}, apex: {a}, base: {b}",
+}
+"""Each kind of part :func:`spec_text` writes, as the flow mapping's text."""
 
 TARGET = 0.5
 
@@ -60,13 +65,15 @@ print(json.dumps({"read": read - start, "validate": validated - read, "translate
 """
 
 
-def spec_text(n_parts: int, shape: str, seed: int = 0) -> str:
-    """A valid spec of ``n_parts`` parts of one ``shape`` ('point' or 'cylinder'), one flow
-    mapping a line, numbers with 6 significant digits (what a generating program writes)."""
+def spec_text(n_parts: int, shapes: str, seed: int = 0) -> str:
+    """A valid spec of ``n_parts`` parts cycling through ``shapes`` (comma-separated: point,
+    cylinder by density, cone), one flow mapping a line, numbers with 6 significant digits
+    (what a generating program writes)."""
     import numpy as np  # lazy: importing this module must load nothing a baseline would pay for
 
-    if shape not in SHAPES:
-        raise ValueError(f"shape must be one of {SHAPES} (got {shape!r})")
+    kinds = shapes.split(",")
+    if not set(kinds) <= set(SHAPES):
+        raise ValueError(f"shape must be one of {SHAPES} (got {shapes!r})")
     rng = np.random.default_rng(seed)
     starts = rng.normal(size=(n_parts, 3))
     ends = starts + rng.normal(size=(n_parts, 3)) + [0.0, 0.0, 0.5]
@@ -75,14 +82,10 @@ def spec_text(n_parts: int, shape: str, seed: int = 0) -> str:
     def v(a) -> str:
         return f"[{a[0]:.6g}, {a[1]:.6g}, {a[2]:.6g}]"
 
-    lines = [f"name: {shape}s-{n_parts}", "units: {length: m, mass: kg}", "parts:"]
-    if shape == "point":
-        lines += [f"  - {{shape: point, mass: {m:.6g}, position: {v(p)}}}" for m, p in zip(sizes, starts)]
-    else:
-        lines += [
-            f"  - {{shape: cylinder, density: {1000 * m:.6g}, radius: {0.1 * m:.6g}, start: {v(a)}, end: {v(b)}}}"
-            for m, a, b in zip(sizes, starts, ends)
-        ]
+    lines = [f"name: parts-{n_parts}", "units: {length: m, mass: kg}", "parts:"]
+    for i, (m, a, b) in enumerate(zip(sizes, starts, ends)):
+        part = SHAPES[kinds[i % len(kinds)]].format(m=m, density=1000 * m, radius=0.1 * m, a=v(a), b=v(b))
+        lines.append(f"  - {{{part}}}")
     return "\n".join(lines) + "\n"
 
 
@@ -132,10 +135,6 @@ def cases(quick: bool) -> list[tuple[int, str]]:
     if quick:
         return [(10**4, "point"), (10**3, "cylinder")]
     return [(10**5, "point"), (10**4, "cylinder")]
-
-
-def planned_steps(quick: bool) -> int:
-    return len(cases(quick))
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:

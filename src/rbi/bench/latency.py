@@ -19,14 +19,14 @@ import statistics
 import subprocess
 import sys
 import tempfile
+from functools import partial
 from pathlib import Path
-
-import numpy as np
+from resource import RUSAGE_CHILDREN
 
 from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.bench.throughput import random_cloud, write_cloud
-from rbi.bench.timing import run_process
+from rbi.bench.timing import in_turn, measure, run_process
 
 QUICK_REPEATS = 3
 FULL_REPEATS = 21
@@ -191,12 +191,12 @@ def first_run(bodies: Path, repeats: int) -> dict:
                 XDG_CACHE_HOME=os.path.join(home, ".cache"),
                 XDG_CONFIG_HOME=os.path.join(home, ".config"),
             )
-            seconds, _, status, message = time_process_cpu(argv, env)
-            if status != 0:
-                return {"error": f"exit {status}: {message}"}
+            seconds, _, proc = run_process(argv, env)
+            if proc.returncode != 0:
+                return {"error": failure(proc)}
             firsts.append(seconds)
-            laters.append(time_process_cpu(argv, env)[0])
-            messages.append(message)
+            laters.append(run_process(argv, env)[0])
+            messages.append(proc.stderr)
             left = sorted(str(p.relative_to(home)) for p in Path(home).rglob("*"))
     first, later = statistics.median(firsts), statistics.median(laters)
     return {
@@ -211,16 +211,9 @@ def first_run(bodies: Path, repeats: int) -> dict:
     }
 
 
-def time_process_cpu(argv: list[str], env: dict | None = None) -> tuple[float, float, int, str]:
-    """Wall seconds, CPU seconds (user + system of the process and its children, which a
-    shared machine's load disturbs far less than the wall time), exit status and the last line
-    of stderr of one run."""
-    wall, cpu, proc = run_process(argv, env)
-    return wall, cpu, proc.returncode, (proc.stderr.strip().splitlines() or [""])[-1]
-
-
-def planned_steps(quick: bool) -> int:
-    return len(commands(Path("."), None)) + 2 + (0 if quick else 2)
+def failure(proc: subprocess.CompletedProcess) -> str:
+    """``exit N: <the last line of stderr>`` of a process that failed."""
+    return f"exit {proc.returncode}: {(proc.stderr.strip().splitlines() or [''])[-1]}"
 
 
 def compile_bytecode() -> bool:
@@ -241,40 +234,26 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     repeats = QUICK_REPEATS if quick else FULL_REPEATS
     bodies = bodies_folder()
     bytecode = compile_bytecode()
-    rows = []
+    rows, timed = [], []
     with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
         cloud = None
         if not quick:
             n = 10**6
             masses, positions = random_cloud(n)
             cloud = dict(write_cloud(Path(tmp), masses, positions), points=n)
-        timed = []
         for label, argv in commands(bodies, cloud):
             progress(f"latency: {label}")
-            _, _, status, message = time_process_cpu(argv)  # warm-up (and a check that it works)
-            if status != 0:
-                rows.append({"command": label, "error": f"exit {status}: {message}"})
+            proc = run_process(argv)[2]  # warm-up (and a check that it works)
+            if proc.returncode:
+                rows.append({"command": label, "error": failure(proc)})
                 continue
-            rows.append({"command": label, "times": [], "cpu": []})
-            timed.append((rows[-1], argv))
+            rows.append({"command": label})
+            timed.append(partial(measure, partial(run_process, argv), 1, 1, 0.0, RUSAGE_CHILDREN))
         # round-robin: each round times every command once, so a change in the machine's load
         # during the run hits the baseline and the commands alike
-        for _ in range(repeats):
-            for row, argv in timed:
-                wall, cpu, _, _ = time_process_cpu(argv)
-                row["times"].append(wall)
-                row["cpu"].append(cpu)
-        for row, _ in timed:
-            times, cpu = row.pop("times"), row.pop("cpu")
-            row.update(
-                {
-                    "median_s": statistics.median(times),
-                    "best_s": min(times),
-                    "spread": spread(times),
-                    "cpu_median_s": statistics.median(cpu),
-                    "repeats": repeats,
-                }
-            )
+        for row, t in zip([r for r in rows if "error" not in r], in_turn(timed, repeats)):
+            row |= {"median_s": t.median, "best_s": t.best, "spread": t.spread, "cpu_median_s": t.cpu_median}
+            row["repeats"] = t.repeats
         progress("latency: first rbi simulate in a fresh HOME")
         first = first_run(bodies, 3 if quick else 7)
         progress("latency: where rbi inertia's start-up goes (python -X importtime)")
@@ -295,9 +274,3 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         "imports": imports,
         "bytecode_compiled": bytecode,
     }
-
-
-def spread(values: list[float]) -> float:
-    """Relative spread (max − min) / median of repeated timings: how noisy the machine was."""
-    values = np.asarray(values, dtype=float)
-    return float((values.max() - values.min()) / np.median(values))

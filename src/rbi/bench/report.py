@@ -6,6 +6,7 @@ modules of :mod:`rbi.bench`."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from functools import partial
 
 from rbi.bench.workprecision import speedup
 from rbi.text import number, vector_text
@@ -108,25 +109,21 @@ def _kernel_targets(k: dict) -> list[dict]:
 
 def _latency_targets(lat: dict) -> list[dict]:
     """Start-up: the first run in a fresh HOME, each additional file, each command as a whole process."""
+    first, per_file = lat.get("first_run") or {}, lat.get("per_file") or {}
     out = []
-    first = lat.get("first_run") or {}
-    if "ratio" in first:
+    if first:
         out.append(
             _target(
-                f"first `{first['command']}` in a fresh HOME ÷ a later one, time",
-                first["ratio"],
-                first["target"],
+                f"first `{first.get('command', 'rbi simulate')}` in a fresh HOME ÷ a later one, time",
+                first.get("ratio"),
+                first.get("target", 1.3),
                 False,
-                f"the run after it: {number(first['later_median_s'], 3)} s",
-                f"first {number(first['first_median_s'], 3)} s; median of {first['repeats']} fresh "
+                f"the run after it: {number(first.get('later_median_s'), 3)} s",
+                first.get("error")
+                or f"first {number(first['first_median_s'], 3)} s; median of {first['repeats']} fresh "
                 f"HOMEs; files left in HOME: {len(first['files_left_in_home'])}",
             )
         )
-    elif "error" in first:
-        out.append(
-            _target("first rbi simulate in a fresh HOME ÷ a later one", None, 1.3, False, "", first["error"])
-        )
-    per_file = lat.get("per_file") or {}
     if per_file:
         out.append(
             _target(
@@ -134,16 +131,12 @@ def _latency_targets(lat: dict) -> list[dict]:
                 per_file.get("per_file_ms"),
                 per_file["target_ms"],
                 False,
-                f"one file: {number(per_file['one_file_median_s'], 3)} s" if "files" in per_file else "",
+                f"one file: {number(per_file.get('one_file_median_s'), 3)} s",
                 per_file.get("error")
                 or f"{per_file['files']} files: {number(per_file['many_files_median_s'], 3)} s",
             )
         )
-    baseline = lat["commands"][0]
-    if "median_s" in baseline:
-        baseline_text = f"{lat['baseline']}: {number(_seconds(baseline), 3)} s"
-    else:
-        baseline_text = lat["baseline"]
+    baseline_text = f"{lat['baseline']}: {number(_seconds(lat['commands'][0]), 3)} s"
     return out + [
         _target(
             f"`{row['command']}` as a whole process, {_clock(row)} time",
@@ -283,33 +276,36 @@ TARGET_COLUMNS = ["area", "target", "measured", "limit", "met", "baseline (same 
 
 
 def target_rows(rows: list[dict]) -> list[list[str]]:
-    out = []
-    for r in rows:
-        measured, unit = r["measured"], r.get("unit")
-        absolute = unit is not None or r["target"].endswith(("MB", "ms"))  # a quantity, not a ratio
-        suffix = f" {unit}" if unit else ""
-        shown = "—" if measured is None else (number(measured, 3) + suffix if absolute else _times(measured))
-        limit = number(r["limit"], 3) + suffix if absolute else _times(r["limit"])
-        met = {True: "yes", False: "NO", None: "—"}[r["met"]]
-        out.append(
-            [
-                str(r["area"]),
-                r["target"],
-                shown,
-                f"{r['comparison']} {limit}",
-                met,
-                r["baseline"],
-                r["detail"],
-            ]
-        )
-    return out
+    """The Targets table's cells, one row a target (:data:`TARGET_COLUMNS`)."""
+    met = {True: "yes", False: "NO", None: "—"}
+    return [
+        [
+            r["area"],
+            r["target"],
+            _shown(r, "measured"),
+            f"{r['comparison']} {_shown(r, 'limit')}",
+            met[r["met"]],
+        ]
+        + [r["baseline"], r["detail"]]
+        for r in rows
+    ]
+
+
+def _shown(target: dict, key: str) -> str:
+    """A target's measured value or limit: a ratio as ``1,830×``; a quantity (its ``unit``, or a
+    target whose words end in MB or ms) as a number with its unit."""
+    value, unit = target[key], target.get("unit")
+    if unit is None and not target["target"].endswith(("MB", "ms")):
+        return _times(value)
+    return "—" if value is None else number(value, 3) + (f" {unit}" if unit else "")
 
 
 # --- headline --------------------------------------------------------------------------------
 
 
 def headline(result: dict) -> list[str]:
-    """The few sentences a reader needs: speed-ups at equal or better error, throughput, latency."""
+    """The few sentences a reader needs: for each work-precision case, rbi's speed-up at its
+    defaults and at equal or better error (the tables below give the rest)."""
     lines = []
     for case in result.get("workprecision", {}).get("cases", []):
         s = _kernel_speedup(result.get("kernel"), case) or case.get("speedup")
@@ -329,42 +325,6 @@ def headline(result: dict) -> list[str]:
                 f"{_times(s['ratio_best_matching'])} faster"
             )
         lines.append(line + ".")
-    tp = result.get("throughput")
-    if tp and tp["point_clouds"]:
-        big = tp["point_clouds"][-1]
-        lines.append(
-            f"{big['points']:,} point masses: mass, centre of mass, inertia and principal axes in "
-            f"{number(big['total_s'], 3)} s from arrays ({number(big['ns_per_point'], 3)} ns per point; time grows as "
-            f"size^{number(tp['scaling_exponent'], 3)}), {number(big['load_csv_s'], 3)} s including reading the spec "
-            f"and a {number(big['csv_megabytes'], 3)} MB CSV cloud, {number(big['load_npy_s'], 3)} s from .npy."
-        )
-    if tp and tp["solid_parts"]:
-        big = tp["solid_parts"][-1]
-        lines.append(
-            f"A YAML spec of {big['parts']:,} parts ({number(big['yaml_megabytes'], 3)} MB) takes "
-            f"{number(big['load_total_s'], 3)} s to load ({number(big['us_per_part'], 3)} µs per part; "
-            f"{_share(big, 'read_yaml_s')} of it parsing YAML); written as JSON (also valid YAML) it loads in "
-            f"{number(big['load_total_json_s'], 3)} s. For many point masses, a point cloud file is faster still."
-        )
-    lat = result.get("latency")
-    if lat:
-        for row in lat["commands"][1:]:
-            if (
-                "target" in row
-                and "ratio_to_numpy_import" in row
-                and row["command"].startswith(("rbi inertia", "rbi simulate"))
-            ):
-                lines.append(
-                    f"`{row['command']}` as a whole process: {_times(_ratio(row))} the {_clock(row)} time of "
-                    f"`{lat['baseline']}` ({number(_seconds(row), 3)} s median)."
-                )
-        per_file = lat.get("per_file") or {}
-        if "per_file_ms" in per_file:
-            lines.append(
-                f"Each further file in the same `rbi inertia` process: {number(per_file['per_file_ms'], 3)} ms "
-                f"({per_file['files']} files in {number(per_file['many_files_median_s'], 3)} s), against "
-                f"{number(per_file['one_file_median_s'], 3)} s for a process of its own."
-            )
     return lines
 
 
@@ -375,10 +335,6 @@ def _kernel_speedup(k: dict | None, case: dict) -> dict | None:
     if not k or k["case"]["spec"] != case["spec"] or k["case"]["duration"] != case["duration"]:
         return None
     return speedup(k["chapter"], k["default"], k.get("best_matching"))
-
-
-def _share(row: dict, key: str) -> str:
-    return f"{100 * row[key] / row['load_total_s']:.0f}%"
 
 
 @dataclass
@@ -405,16 +361,17 @@ class Section:
 def report_sections(result: dict, plot_link: str | None = None) -> list[Section]:
     """Every section of the report that ``result`` measured, in the order of docs/performance.md;
     ``plot_link``: where the work-precision plot is, relative to the page."""
-    return (
-        _targets_sections(result)
-        + _kernel_sections(result.get("kernel"))
-        + _sweep_sections(result.get("sweep"))
-        + _workprecision_sections(result.get("workprecision"), plot_link)
-        + _throughput_sections(result.get("throughput"))
-        + _latency_sections(result.get("latency"))
-        + _cad_sections(result.get("cad"))
-        + _uncertainty_sections(result.get("uncertainty"))
-    )
+    writers = {
+        "kernel": _kernel_sections,
+        "sweep": _sweep_sections,
+        "workprecision": partial(_workprecision_sections, plot_link=plot_link),
+        "throughput": _throughput_sections,
+        "latency": _latency_sections,
+        "cad": _cad_sections,
+        "uncertainty": _uncertainty_sections,
+    }
+    sections = [s for name, write in writers.items() if result.get(name) for s in write(result[name])]
+    return _targets_sections(result) + sections
 
 
 def markdown(result: dict, command: str, plot_link: str | None) -> str:
@@ -498,10 +455,8 @@ def _targets_sections(result: dict) -> list[Section]:
     return [Section("Targets", notes, TARGET_COLUMNS, rows, left=left, no_wrap=("measured", "limit", "met"))]
 
 
-def _kernel_sections(k: dict | None) -> list[Section]:
+def _kernel_sections(k: dict) -> list[Section]:
     """The compiled kernel against the chapter's set-up and the minimal loop, each tolerance."""
-    if not k:
-        return []
     columns = [
         ("rtol", _rtol),
         ("orient. error [deg]", _num("orientation_error_deg", 2)),
@@ -527,10 +482,8 @@ def _kernel_sections(k: dict | None) -> list[Section]:
     return [Section("The kernel against its baselines", notes, *_table(columns, k["trials"]))]
 
 
-def _sweep_sections(sw: dict | None) -> list[Section]:
+def _sweep_sections(sw: dict) -> list[Section]:
     """Sweep throughput on a grid, and the resident memory of a long streaming sweep."""
-    if not sw:
-        return []
     g, mem = sw["grid"], sw["memory"]
     grid = (
         f"Grid: spin {g['spin'][0]:g}–{g['spin'][1]:g} rad/s × {g['spin'][2]}, tilt {g['tilt_deg'][0]:g}–"
@@ -558,10 +511,8 @@ def _sweep_sections(sw: dict | None) -> list[Section]:
     return out + [Section("", notes, *_table(columns, mem["samples"]))]
 
 
-def _workprecision_sections(wp: dict | None, plot_link: str | None) -> list[Section]:
+def _workprecision_sections(wp: dict, plot_link: str | None) -> list[Section]:
     """Work against precision: each case's error and time per method."""
-    if not wp:
-        return []
     notes = (
         "Final orientation error (angle between the computed and the reference orientation at the "
         "last sample) and angular-velocity error against in-process time (one whole call of "
@@ -589,10 +540,8 @@ def _workprecision_sections(wp: dict | None, plot_link: str | None) -> list[Sect
     return out
 
 
-def _throughput_sections(tp: dict | None) -> list[Section]:
+def _throughput_sections(tp: dict) -> list[Section]:
     """Mass-property throughput: point clouds and specs of many solid parts."""
-    if not tp:
-        return []
     clouds = (
         'Random point masses (seeded). "mass+CoM+inertia" is `rbi.core.mass.combine` on arrays in memory; '
         '"total" adds the principal axes. "from … spec" is the whole load of a spec file naming the cloud '
@@ -613,10 +562,8 @@ def _throughput_sections(tp: dict | None) -> list[Section]:
     ]
 
 
-def _latency_sections(lat: dict | None) -> list[Section]:
+def _latency_sections(lat: dict) -> list[Section]:
     """Whole-process latency of each command, and where the start-up goes."""
-    if not lat:
-        return []
     compiled = ", rbi's bytecode having been compiled first, as `pip install` does."
     notes = (
         f"Each command ran once untimed (warm OS file caches), then repeatedly, in turn; the "
@@ -648,10 +595,8 @@ def import_rows(imports: dict) -> list[list[str]]:
     ]
 
 
-def _cad_sections(cad: dict | None) -> list[Section]:
+def _cad_sections(cad: dict) -> list[Section]:
     """CAD solids: the STEP plate against its STL, time and error side by side."""
-    if not cad:
-        return []
     return [
         Section(
             "CAD solids: STEP against STL", cad_title(cad) + ".", *_table(CAD_COLUMNS, cad.get("files", []))
@@ -659,10 +604,8 @@ def _cad_sections(cad: dict | None) -> list[Section]:
     ]
 
 
-def _uncertainty_sections(u: dict | None) -> list[Section]:
+def _uncertainty_sections(u: dict) -> list[Section]:
     """What the uncertainty targets time (their numbers are in the Targets table)."""
-    if not u:
-        return []
     notes = (
         f'`rbi.load(spec).uncertainty(method="linear")` (the budget of `rbi uncertainty`: mass, centre of '
         f"mass, inertia and principal moments) of a generated spec of {u['parts']:,} parts (cones, cylinders by "

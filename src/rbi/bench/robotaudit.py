@@ -22,10 +22,6 @@ def links(quick: bool) -> int:
     return 2_000 if quick else 10**5
 
 
-def planned_steps(quick: bool) -> int:
-    return 1
-
-
 def urdf_text(n: int) -> str:
     """A URDF of ``n`` links in a binary tree (link i hangs from link (i − 1) // 2)."""
     parts = ['<?xml version="1.0"?>\n<robot name="large">\n']

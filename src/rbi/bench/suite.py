@@ -1,11 +1,19 @@
-"""Running the benchmark sections in one process and collecting their results."""
+"""Running the benchmark: the chosen sections in one process, their results collected, then the
+plot and the Markdown page written (what ``rbi bench`` calls; it only parses and prints)."""
 
 from __future__ import annotations
 
+import os
+from collections.abc import Callable
+from functools import partial
 from importlib import import_module
+from pathlib import Path
 
-from rbi.bench import Progress, report
+from rbi.bench import report
+from rbi.bench.paths import bodies_folder
 from rbi.bench.timing import machine
+from rbi.errors import SpecError
+from rbi.files.output import check_distinct, output_target, write_output
 
 NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep", "cad", "robotaudit")
 NAMES += ("uncertainty",)
@@ -13,17 +21,47 @@ SECTIONS = {name: import_module(f"rbi.bench.{name}") for name in NAMES}
 """Every section by name, in the order they run."""
 
 
-def planned_steps(quick: bool, sections) -> int:
-    """How many times the sections will call ``progress`` (for a progress bar's total)."""
-    return sum(SECTIONS[name].planned_steps(quick) for name in sections)
+def chosen(only: str | None) -> list[str]:
+    """The sections a comma-separated ``only`` names (None: all); SpecError naming ``--only``."""
+    if only is None:
+        return list(NAMES)
+    names = [s.strip().lower() for s in only.split(",") if s.strip()]
+    if not names or any(s not in NAMES for s in names):
+        raise SpecError(f"--only: expected a comma-separated list of {', '.join(NAMES)} (got {only!r})")
+    return names
 
 
-def run(quick: bool, sections, progress: Progress = lambda _: None, command: str = "rbi bench") -> dict:
-    """``{"quick", "machine", "<section>": ..., "command", "targets", "headline"}`` for the chosen
-    sections, measured now (``command``: the command line that asked for them)."""
+def run(
+    quick: bool,
+    only: str | None = None,
+    plot: str | None = None,
+    write_docs: str | None = None,
+    progress: Callable[[int, int, str], None] = lambda *_: None,
+) -> dict:
+    """``{"quick", "machine", "<section>": ..., "command", "targets", "headline"}`` for the sections
+    ``only`` names (:func:`chosen`), measured now; ``progress(sections done, sections, what)``
+    as each measurement starts. The outputs are checked before any measurement (SpecError naming
+    the option) and written after: ``plot``, the work-precision plot (.png, .svg, .pdf);
+    ``write_docs``, the report as Markdown (docs/performance.md)."""
+    sections = chosen(only)
+    if plot and "workprecision" not in sections:
+        raise SpecError("--plot: needs the workprecision section (drop --only or include it)")
+    plot_target = output_target(plot, "--plot", ("png", "svg", "pdf")) if plot else None
+    docs_target = output_target(write_docs, "--write-docs", ("md",)) if write_docs else None
+    check_distinct([plot_target, docs_target])
+    bodies_folder()  # SpecError now, not after minutes of measurement
+    options = (("--only", only), ("--write-docs", write_docs), ("--plot", plot))
+    command = " ".join(["rbi", "bench"] + ["--quick"] * quick + [w for o in options if o[1] for w in o])
     result = {"quick": quick, "machine": machine()}
-    for name in SECTIONS:
-        if name in sections:
-            result[name] = SECTIONS[name].run(quick, progress)
+    for done, name in enumerate(n for n in NAMES if n in sections):
+        result[name] = SECTIONS[name].run(quick, partial(progress, done, len(sections)))
     result["command"] = command
-    return result | {"targets": report.targets(result), "headline": report.headline(result)}
+    result |= {"targets": report.targets(result), "headline": report.headline(result)}
+    if plot_target:
+        write_output(
+            plot_target, writer=lambda temp: SECTIONS["workprecision"].plot(result["workprecision"], temp)
+        )
+    if docs_target:
+        link = os.path.relpath(Path(plot).resolve(), Path(write_docs).resolve().parent) if plot else None
+        write_output(docs_target, report.markdown(result, command, link))
+    return result

@@ -27,7 +27,7 @@ import numpy as np
 
 from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
-from rbi.bench.timing import clocked, run_process, time_once
+from rbi.bench.timing import clocked, run_process
 from rbi.files.output import output_target
 from rbi.runs.run import scene_of as body_scene
 from rbi.sim.api import simulate
@@ -83,7 +83,7 @@ def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float
     scene = body_scene(load_body(spec), None)
     samples = 481  # as rbi sweep and rbi simulate by default
     simulate(scene, *initial_state(runs[0][1], [0.0, 0.0, runs[0][0]]), duration, samples)  # warm
-    seconds = time_once(
+    seconds = clocked(
         lambda: [simulate(scene, *initial_state(t, [0.0, 0.0, w]), duration, samples) for w, t in runs]
     )[0]
     return {"runs": len(runs), "seconds": seconds, "runs_per_second": len(runs) / seconds}
@@ -158,10 +158,6 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
         "rss_last_quarter_mb": max((s["rss_mb"] for s in samples[-quarter:]), default=None),
         "samples": samples[:: max(1, len(samples) // 40)],
     }
-
-
-def planned_steps(quick: bool) -> int:
-    return 4
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:

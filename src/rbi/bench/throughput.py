@@ -18,7 +18,8 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench import Progress
-from rbi.bench.timing import measure, repeated, time_once
+from rbi.bench.largespec import spec_text
+from rbi.bench.timing import clocked, measure
 from rbi.core.inertia import centre_of_mass, principal_axes
 from rbi.core.mass import combine
 from rbi.spec.load import load_body, read_yaml, validation_messages
@@ -80,9 +81,8 @@ def file_timings(specs: dict[str, Path], repeats: int) -> dict:
 
     out = {}
     for kind, spec in specs.items():
-        out[f"load_{kind}_s"] = repeated(
-            lambda: principal_axes(load_body(spec).props.inertia_about_com), repeats
-        ).median
+        load = measure(lambda: principal_axes(load_body(spec).props.inertia_about_com), repeats, repeats, 0.0)
+        out[f"load_{kind}_s"] = load.median
     out["csv_megabytes"] = (specs["csv"].parent / "cloud.csv").stat().st_size / 1e6
     return out
 
@@ -124,38 +124,6 @@ def scaling_exponent(rows: list[dict], key: str = "total_s") -> float | None:
     return float(np.polyfit(x, y, 1)[0])
 
 
-# --- solid parts written in YAML ----------------------------------------------------------
-
-
-def parts_yaml(n: int, seed: int = 1) -> str:
-    """A spec of ``n`` parts cycling through cone, cylinder (by density) and point mass, one
-    flow mapping per line (the compact form a generator would write)."""
-    rng = np.random.default_rng(seed)
-    a = rng.normal(size=(n, 3))
-    b = a + rng.normal(size=(n, 3))
-    mass = rng.uniform(0.1, 1.0, n)
-    radius = rng.uniform(0.01, 0.1, n)
-
-    def v(p):
-        return f"[{p[0]:.6g}, {p[1]:.6g}, {p[2]:.6g}]"
-
-    lines = [f"name: parts-{n}", "parts:"]
-    for i in range(n):
-        kind = i % 3
-        if kind == 0:
-            lines.append(
-                f"  - {{shape: cone, mass: {mass[i]:.6g}, radius: {radius[i]:.6g}, apex: {v(a[i])}, base: {v(b[i])}}}"
-            )
-        elif kind == 1:
-            lines.append(
-                f"  - {{shape: cylinder, density: {1000 * mass[i]:.6g}, radius: {radius[i]:.6g}, "
-                f"start: {v(a[i])}, end: {v(b[i])}}}"
-            )
-        else:
-            lines.append(f"  - {{shape: point, mass: {mass[i]:.6g}, position: {v(a[i])}}}")
-    return "\n".join(lines) + "\n"
-
-
 def solid_parts(sizes, progress: Progress, tmp: Path) -> list[dict]:
     """Seconds for each step of loading a spec of many parts, once each (these are slow)."""
 
@@ -163,21 +131,21 @@ def solid_parts(sizes, progress: Progress, tmp: Path) -> list[dict]:
     for n in sizes:
         progress(f"spec of {n:,} parts in YAML")
         path = tmp / f"parts{n}.yaml"
-        path.write_text(parts_yaml(n))
-        read_s, raw = time_once(lambda: read_yaml(path))
-        validate_s, (spec, problems) = time_once(lambda: validation_messages(str(path), raw))
+        path.write_text(spec_text(n, "cone,cylinder,point", seed=1))
+        read_s, _, raw = clocked(lambda: read_yaml(path))
+        validate_s, _, (spec, problems) = clocked(lambda: validation_messages(str(path), raw))
         if problems:
             raise RuntimeError(f"generated spec is invalid: {problems[0]}")
-        translate_s, body = time_once(lambda: body_from_spec(spec, str(path)))
+        translate_s, _, body = clocked(lambda: body_from_spec(spec, str(path)))
         parts = body.elements  # one stack
         core = measure(lambda: principal_axes(parts.sum().inertia_about_com))
         total = read_s + validate_s + translate_s
         # The same spec as one JSON object (also valid YAML), as a generating program would write it.
         as_json = path.with_suffix(".json")
         as_json.write_text(json.dumps(raw))
-        json_s, _ = time_once(
+        json_s = clocked(
             lambda: body_from_spec(validation_messages(str(as_json), read_yaml(as_json))[0], str(as_json))
-        )
+        )[0]
         rows.append(
             {
                 "parts": n,
@@ -203,10 +171,6 @@ def _warm_up_loader(folder: Path) -> None:
         "  - {shape: point, mass: 1.0, position: [1, 0, 0]}\n"
     )
     load_body(spec)
-
-
-def planned_steps(quick: bool) -> int:
-    return len(QUICK_CLOUDS if quick else FULL_CLOUDS) + len(QUICK_PARTS if quick else FULL_PARTS)
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:

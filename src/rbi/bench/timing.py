@@ -9,7 +9,7 @@ import statistics
 import subprocess
 import sys
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from datetime import UTC, datetime
 from typing import Any, NamedTuple
 
@@ -20,13 +20,15 @@ from rbi.sim.compiled import integrator
 
 class Timing(NamedTuple):
     """Repeated timings of one call, seconds: the median and best wall-clock time, how many runs,
-    what its last run returned and the median CPU time (:func:`clocked`'s)."""
+    what its last run returned, the median CPU time (:func:`clocked`'s) and the spread of the
+    wall times, (max − min) / median: how noisy the machine was."""
 
     median: float
     best: float
     repeats: int
     result: Any = None
     cpu_median: float = 0.0
+    spread: float = 0.0
 
 
 def cpu_seconds(who: int = resource.RUSAGE_SELF) -> float:
@@ -44,23 +46,44 @@ def clocked(call: Callable[[], Any], who: int = resource.RUSAGE_SELF) -> tuple[f
 
 
 def measure(
-    call: Callable[[], Any], min_repeats: int = 3, max_repeats: int = 50, min_seconds: float = 0.2
+    call: Callable[[], Any],
+    min_repeats: int = 3,
+    max_repeats: int = 50,
+    min_seconds: float = 0.2,
+    who: int = resource.RUSAGE_SELF,
 ) -> Timing:
     """Time ``call`` at least ``min_repeats`` times and until ``min_seconds`` have been spent
-    (at most ``max_repeats`` times); the median resists the other users of a shared machine."""
+    (at most ``max_repeats`` times); the median resists the other users of a shared machine.
+    ``who``: whose CPU time counts (:func:`cpu_seconds`)."""
     times: list[float] = []
     cpus: list[float] = []
     result = None
     while len(times) < min_repeats or (sum(times) < min_seconds and len(times) < max_repeats):
-        wall, cpu, result = clocked(call)
+        wall, cpu, result = clocked(call, who)
         times.append(wall)
         cpus.append(cpu)
-    return Timing(statistics.median(times), min(times), len(times), result, statistics.median(cpus))
+    return _timing(times, result, cpus)
 
 
-def repeated(call: Callable[[], Any], repeats: int) -> Timing:
-    """:func:`measure` of exactly ``repeats`` runs (for calls of a second or more)."""
-    return measure(call, min_repeats=repeats, max_repeats=repeats, min_seconds=0.0)
+def _timing(times: list[float], result: Any, cpus: list[float]) -> Timing:
+    middle = statistics.median(times)
+    spread = (max(times) - min(times)) / middle if middle > 0 else 0.0
+    return Timing(middle, min(times), len(times), result, statistics.median(cpus), spread)
+
+
+def in_turn(timings: Sequence[Callable[[], Timing]], rounds: int) -> list[Timing]:
+    """Each of ``timings`` (a :func:`measure` of something) made once a round for ``rounds``
+    rounds, so that a change in the machine's load hits them alike; per call, the medians (and
+    the spread) of its rounds' medians, its best time and its last result."""
+    per_call: list[list[Timing]] = [[] for _ in timings]
+    for _ in range(rounds):
+        for done, timing in zip(per_call, timings):
+            done.append(timing())
+    out = []
+    for done in per_call:
+        middle = _timing([t.median for t in done], done[-1].result, [t.cpu_median for t in done])
+        out.append(middle._replace(best=min(t.best for t in done)))
+    return out
 
 
 def run_process(argv: list[str], env: dict | None = None) -> tuple[float, float, subprocess.CompletedProcess]:
@@ -70,12 +93,6 @@ def run_process(argv: list[str], env: dict | None = None) -> tuple[float, float,
         lambda: subprocess.run(argv, capture_output=True, text=True, timeout=600, env=env),
         resource.RUSAGE_CHILDREN,
     )
-
-
-def time_once(call: Callable[[], Any]) -> tuple[float, Any]:
-    """``(seconds, result)`` of one call."""
-    wall, _, result = clocked(call)
-    return wall, result
 
 
 def machine() -> dict:

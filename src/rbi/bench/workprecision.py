@@ -84,20 +84,6 @@ def scene_of(case: Case):
     return scene, q0, omega0
 
 
-def timed_run(scene, q0, omega0, case: Case, method: str, rtol: float | None, min_seconds: float):
-    """One trajectory and the median in-process time of the whole :func:`rbi.sim.api.simulate`
-    call over repeats (a run of the compiled method takes about a millisecond, too short to
-    time once on a busy machine)."""
-
-    timing = measure(
-        lambda: simulate(scene, q0, omega0, case.duration, case.samples, method=method, rtol=rtol),
-        min_repeats=1,
-        max_repeats=500,
-        min_seconds=min_seconds,
-    )
-    return timing.result, timing.median, timing.repeats
-
-
 def errors(scene, trajectory, reference) -> dict:
 
     drifts = {
@@ -133,25 +119,45 @@ def reference_of(case: Case, scene, q0, omega0, quick: bool) -> tuple[object, di
     }
 
 
-def run_case(case: Case, quick: bool, progress: Progress) -> dict:
-
+def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | None = None) -> dict:
+    """Each method at each of its ``tolerances`` (default: :func:`sweeps`) and rbi at its
+    default settings on ``case``: errors against the reference, cost, and the median
+    in-process time of the whole :func:`rbi.sim.api.simulate` call over repeats (a run of the
+    compiled method takes about a millisecond, too short to time once on a busy machine)."""
     load_seconds = integrator().load_seconds  # compile or load once, outside every timing
     scene, q0, omega0 = scene_of(case)
     progress(f"{case.name}: reference")
     reference, reference_info = reference_of(case, scene, q0, omega0, quick)
+
+    def row(method: str, rtol: float | None, min_seconds: float, **flags) -> dict:
+        timing = measure(
+            lambda: simulate(scene, q0, omega0, case.duration, case.samples, method=method, rtol=rtol),
+            min_repeats=1,
+            max_repeats=500,
+            min_seconds=min_seconds,
+        )
+        trajectory = timing.result
+        return {
+            "method": method,
+            "rtol": trajectory.rtol,
+            **flags,
+            **errors(scene, trajectory, reference),
+        } | {
+            "steps": trajectory.steps,
+            "rhs_evals": trajectory.rhs_evals,
+            "seconds": timing.median,
+            "repeats": timing.repeats,
+        }
+
     rows = []
-    for method, tolerances in sweeps(quick).items():
-        for rtol in tolerances:
+    for method, rtols in (tolerances or sweeps(quick)).items():
+        for rtol in rtols:
             progress(f"{case.name}: {method} rtol {rtol:g}")
-            compiled = method == "default"
             chapter = (method, rtol) == CHAPTER
-            min_seconds = 0.3 if compiled else (2.0 if chapter and not quick else 0.0)
-            timing = timed_run(scene, q0, omega0, case, method, rtol, min_seconds)
-            rows.append(_row(method, rtol, scene, reference, *timing, chapter_setup=chapter))
+            min_seconds = 0.3 if method == "default" else (2.0 if chapter and not quick else 0.0)
+            rows.append(row(method, rtol, min_seconds, chapter_setup=chapter))
     progress(f"{case.name}: rbi default settings")
-    timing = timed_run(scene, q0, omega0, case, "default", None, 0.3)
-    flags = dict(chapter_setup=False, default_settings=True)
-    default_row = _row("default", timing[0].rtol, scene, reference, *timing, **flags)
+    default_row = row("default", None, 0.3, chapter_setup=False, default_settings=True)
     return {
         "name": case.name,
         "spec": f"bodies/{case.spec}",
@@ -164,17 +170,6 @@ def run_case(case: Case, quick: bool, progress: Progress) -> dict:
         "runs": rows,
         "default": default_row,
         "speedup": _speedup(rows, default_row),
-    }
-
-
-def _row(method: str, rtol, scene, reference, trajectory, seconds: float, repeats: int, **flags) -> dict:
-    """One run of a work-precision case: its method and tolerance, ``flags`` (chapter_setup,
-    default_settings), its errors against ``reference``, its cost and its median time."""
-    return {"method": method, "rtol": rtol, **flags, **errors(scene, trajectory, reference)} | {
-        "steps": trajectory.steps,
-        "rhs_evals": trajectory.rhs_evals,
-        "seconds": seconds,
-        "repeats": repeats,
     }
 
 
@@ -212,10 +207,6 @@ def _speedup(rows: list[dict], default_row: dict) -> dict | None:
         return None
     matching = [r for r in rows if r["method"] == "default" and no_worse(r, chapter)]
     return speedup(chapter, default_row, min(matching, key=lambda r: r["seconds"]) if matching else None)
-
-
-def planned_steps(quick: bool) -> int:
-    return len(cases(quick)) * (2 + sum(len(t) for t in sweeps(quick).values()))
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
