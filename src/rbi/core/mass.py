@@ -123,32 +123,6 @@ class MassProperties:
             frame,
         )
 
-    @classmethod
-    def of_arrays(
-        cls, mass: float, center_of_mass: np.ndarray, inertia_about_com: np.ndarray, frame: str = "body"
-    ) -> MassProperties:
-        """The value ``MassProperties(mass, center_of_mass, inertia_about_com, frame)`` gives,
-        from float arrays of shapes (3,) and (3, 3) that the caller has just made and gives
-        away: they are made read-only in place of being copied (a large robot makes hundreds of
-        thousands). Other arrays go through the copying constructor."""
-        if (
-            type(center_of_mass) is not np.ndarray
-            or type(inertia_about_com) is not np.ndarray
-            or center_of_mass.shape != (3,)
-            or inertia_about_com.shape != (3, 3)
-            or center_of_mass.dtype != np.float64
-            or inertia_about_com.dtype != np.float64
-        ):
-            return cls(mass, center_of_mass, inertia_about_com, frame)
-        center_of_mass.flags.writeable = False
-        inertia_about_com.flags.writeable = False
-        value = object.__new__(cls)
-        object.__setattr__(value, "mass", float(mass))
-        object.__setattr__(value, "center_of_mass", center_of_mass)
-        object.__setattr__(value, "inertia_about_com", inertia_about_com)
-        object.__setattr__(value, "frame", frame)
-        return value
-
     @staticmethod
     def zero(frame: str = "body") -> MassProperties:
         """No mass: zero mass, centre of mass at the origin, zero inertia."""

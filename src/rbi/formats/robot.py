@@ -10,7 +10,6 @@ for prismatic/slide). Geometry poses are in the link frame. SI units throughout 
 
 from __future__ import annotations
 
-import bisect
 import functools
 import math
 import re
@@ -90,8 +89,8 @@ class Inertial:
         """The inertial a file declares: ``mass`` (kg), ``com`` (m, link frame), ``inertia``
         about it in the inertial frame's axes (kg·m²), turned into the link's by ``rotation``."""
         written = np.array(inertia, dtype=float)
-        in_link = written.copy() if rotation is None else re_express(written, rotation)
-        properties = MassProperties.of_arrays(mass, np.array(com, dtype=float), in_link, "link")
+        in_link = written if rotation is None else re_express(written, rotation)
+        properties = MassProperties(mass, com, in_link, "link")
         return Inertial(properties, written, rotation, rpy, quaternion, element, source)
 
     @property
@@ -224,9 +223,10 @@ class LinkColumns:
     :meth:`of_links` lays any links into them. Names, ``parents`` (the parent's row, n for a
     root), ``order`` (the rows parents first, as :func:`depth_first` gives them), origins
     (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame), the declared
-    inertials (``declared`` (n,) which links have one; ``masses`` (n,) kg, ``coms`` (n, 3) m
-    and ``inertias`` (n, 3, 3) kg·m² in the link frame, ``written`` (n, 3, 3) the inertias as
-    written; ``turned``: row → the :class:`Inertial` of a rotated inertial frame), the joints,
+    inertials (``declared`` (n,) which links have one; ``inertials`` their mass properties in
+    the link frame, one :class:`~rbi.core.mass.MassProperties` stack of n, zero where none is
+    declared; ``written`` (n, 3, 3) the inertias as written; ``turned``: row → the
+    :class:`Inertial` of a rotated inertial frame), the joints,
     one entry a joint in file order of their links (``joint_rows`` its link's row; a URDF's:
     one a row, a root's of kind None; names, kinds, unit ``axes`` and ``anchors`` (k, 3) in the
     link frame, effort limits or None) and the geometry. :meth:`link` makes a row's
@@ -238,9 +238,7 @@ class LinkColumns:
     rotations: np.ndarray
     translations: np.ndarray
     declared: np.ndarray
-    masses: np.ndarray
-    coms: np.ndarray
-    inertias: np.ndarray
+    inertials: MassProperties
     written: np.ndarray
     turned: dict[int, Inertial]
     joint_rows: list[int]
@@ -251,6 +249,7 @@ class LinkColumns:
     efforts: list[float | None]
     geoms: list[GeomColumn]
     made: dict[int, Link] = field(default_factory=dict)
+    geoms_at: list[list[tuple[GeomColumn, int]]] | None = field(default=None, repr=False)
 
     @classmethod
     def of_links(cls, path: str, links: list[Link]) -> LinkColumns:
@@ -258,16 +257,9 @@ class LinkColumns:
         its row's :meth:`link`; geoms in one column per tag and kind (kind ``other``, without
         sizes: a mesh, a shell or a kind with no volume). InputError for links that are no
         tree (:func:`tree_rows`)."""
-        n = len(links)
         parents, order = tree_rows(path, links)
-        given = [link.inertial for link in links if link.inertial is not None]
-        declared = np.array([link.inertial is not None for link in links], dtype=bool)
-        masses, coms = np.zeros(n), np.zeros((n, 3))
-        inertias, written = np.zeros((n, 3, 3)), np.zeros((n, 3, 3))
-        masses[declared] = [each.mass for each in given]
-        coms[declared] = stacked([each.properties.center_of_mass for each in given], (3,))
-        inertias[declared] = stacked([each.properties.inertia_about_com for each in given], (3, 3))
-        written[declared] = stacked([each.written_inertia for each in given], (3, 3))
+        none = Inertial(MassProperties.zero("link"), np.zeros((3, 3)))
+        inertials = [none if link.inertial is None else link.inertial for link in links]
         joints = [(row, motion) for row, link in enumerate(links) for motion in link.motions]
         return cls(
             [link.name for link in links],
@@ -275,11 +267,14 @@ class LinkColumns:
             order,
             stacked([link.origin.rotation for link in links], (3, 3)),
             stacked([link.origin.translation for link in links], (3,)),
-            declared,
-            masses,
-            coms,
-            inertias,
-            written,
+            np.array([link.inertial is not None for link in links], dtype=bool),
+            MassProperties(
+                np.array([each.mass for each in inertials], dtype=float),
+                stacked([each.properties.center_of_mass for each in inertials], (3,)),
+                stacked([each.properties.inertia_about_com for each in inertials], (3, 3)),
+                "link",
+            ),
+            stacked([each.written_inertia for each in inertials], (3, 3)),
             {},
             [row for row, _ in joints],
             [motion.name for _, motion in joints],
@@ -298,40 +293,28 @@ class LinkColumns:
         """The :class:`Link` of ``row`` (the same object each time)."""
         found = self.made.get(row)
         if found is None:
-            geoms: dict[str, list[Geom]] = {"collision": [], "visual": []}
-            for column in self.geoms:
-                at = _find(column.rows, row)
-                if at is not None:
-                    geoms[column.tag].append(column.geom(at))
-            found = self.made[row] = self._link(row, geoms["collision"], geoms["visual"])
+            found = self.made[row] = self._link(row)
         return found
 
     def links(self) -> list[Link]:
         """Every row's :class:`Link`, in file order."""
-        if len(self.made) < len(self.names):
-            geoms: dict[str, list[list[Geom]]] = {
-                "collision": [[] for _ in self.names],
-                "visual": [[] for _ in self.names],
-            }
-            for column in self.geoms:
-                lists = geoms[column.tag]
-                for k, row in enumerate(column.rows):
-                    lists[row].append(column.geom(k))
-            for row in range(len(self.names)):
-                if row not in self.made:
-                    self.made[row] = self._link(row, geoms["collision"][row], geoms["visual"][row])
-        return [self.made[row] for row in range(len(self.names))]
+        return [self.link(row) for row in range(len(self.names))]
 
-    def _link(self, row: int, collisions: list[Geom], visuals: list[Geom]) -> Link:
+    def _link(self, row: int) -> Link:
         """A URDF's link of ``row`` (its joint: the row's)."""
+        if self.geoms_at is None:  # row → its geoms' (column, place), made once
+            self.geoms_at = [[] for _ in self.names]
+            for column in self.geoms:
+                for k, each in enumerate(column.rows):
+                    self.geoms_at[each].append((column, k))
+        geoms: dict[str, list[Geom]] = {"collision": [], "visual": []}
+        for column, k in self.geoms_at[row]:
+            geoms[column.tag].append(column.geom(k))
         inertial = self.turned.get(row)
         if inertial is None and self.declared[row]:
-            properties = MassProperties.of_arrays(
-                float(self.masses[row]), self.coms[row], self.inertias[row], "link"
-            )
-            inertial = Inertial(properties, self.written[row])
+            inertial = Inertial(self.inertials[row], self.written[row])
         parent = self.parents[row]
-        link = Link(row, self.names[row], inertial, collisions, visuals)
+        link = Link(row, self.names[row], inertial, geoms["collision"], geoms["visual"])
         if parent == len(self.names):
             return link
         link.parent = self.names[parent]
@@ -439,12 +422,6 @@ def _geom_columns(links: list[Link]) -> list[GeomColumn]:
         )
         for (tag, kind), pairs in found.items()
     ]
-
-
-def _find(rows: list[int], row: int) -> int | None:
-    """Where ``row`` is in the ascending ``rows``, or None."""
-    at = bisect.bisect_left(rows, row)
-    return at if at < len(rows) and rows[at] == row else None
 
 
 @dataclass

@@ -36,6 +36,7 @@ from collections.abc import Callable
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.core.validity import SMALLEST_NORMAL
 from rbi.errors import InputError
 from rbi.formats import robot_xml
@@ -528,7 +529,8 @@ def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
     if not n:
         raise InputError(f"{path}: no <link>: a URDF needs at least one (urdfdom and pybullet refuse it)")
     names: list[str] = [""] * n
-    inertials = _Inertials(n)
+    declared, masses, coms = np.zeros(n, dtype=bool), np.zeros(n), np.zeros((n, 3))
+    written, turned = np.zeros((n, 3, 3)), {}
     geoms: list[GeomColumn] = []
 
     def read(rows: _Rows) -> None:
@@ -544,14 +546,32 @@ def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
         rows.path, rows.label = path, lambda k, rows=rows, words=words: Link(rows.indices[k], words[k]).label
         inertial = rows.top.child("inertial")
         if inertial is not None:
-            inertials.read(rows, inertial)
+            at = rows.indices
+            declared[at] = True
+            masses[at], coms[at], written[at], rpy = _inertials(rows, inertial)
+            for k in np.flatnonzero(np.any(rpy != 0, axis=1)).tolist():
+                turn = tuple(rpy[k].tolist())
+                turned[at[k]] = Inertial.read(
+                    masses[at[k]], coms[at[k]], written[at[k]], rotation=rpy_matrix(turn), rpy=turn
+                )
         if geometry:
             geoms.extend(_geoms(rows, "collision", packages) + _geoms(rows, "visual", packages))
 
     _in_order(chunks, read)
     if len(set(names)) != n:
         refuse_shared_keys(path, [Link(index, name) for index, name in enumerate(names)])
-    return {"names": names, "geoms": geoms, **vars(inertials)}
+    inertias = written.copy()
+    for row, each in turned.items():
+        coms[row], inertias[row] = each.properties.center_of_mass, each.properties.inertia_about_com
+    inertials = MassProperties(masses, coms, inertias, "link")
+    return {
+        "names": names,
+        "geoms": geoms,
+        "declared": declared,
+        "inertials": inertials,
+        "written": written,
+        "turned": turned,
+    }
 
 
 def _poses(rows: _Rows, origin: _Node | None, what: str) -> tuple[np.ndarray, np.ndarray]:
@@ -576,50 +596,28 @@ def _angles(rows: _Rows, rpy: np.ndarray, what: str) -> np.ndarray:
     return rpy
 
 
-class _Inertials:
-    """The links' inertials as :class:`rbi.formats.robot.LinkColumns` holds them, for ``n`` links."""
-
-    def __init__(self, n: int):
-        self.declared = np.zeros(n, dtype=bool)
-        self.masses = np.zeros(n)
-        self.coms = np.zeros((n, 3))
-        self.inertias = np.zeros((n, 3, 3))
-        self.written = np.zeros((n, 3, 3))
-        self.turned: dict[int, Inertial] = {}
-
-    def read(self, rows: _Rows, inertial: _Node) -> None:
-        """Each row's ``<inertial>``, into the columns."""
-        origin = inertial.child("origin")
-        at = {} if origin is None else origin.at
-        com = rows.numbers(at.get("xyz"), b"0 0 0", 3, "inertial/origin: xyz")
-        rpy = _angles(rows, rows.numbers(at.get("rpy"), b"0 0 0", 3, "inertial/origin: rpy"), "inertial rpy")
-        mass, block = inertial.child("mass"), inertial.child("inertia")
-        if mass is None:
-            raise rows.where(0).error("inertial/mass: missing")
-        masses = rows.numbers(mass.at.get("value"), None, 1, "inertial/mass: value")[:, 0]
-        if block is None:
-            raise rows.where(0).error("inertial/inertia: missing")
-        six = {
-            key: rows.numbers(block.at.get(key), None, 1, f"inertial/inertia: {key}")[:, 0]
-            for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
-        }
-        ixx, iyy, izz, ixy, ixz, iyz = six.values()
-        written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
-        for k in np.flatnonzero(np.any(np.abs(written) >= 1e300, axis=(1, 2))).tolist():
-            check_inertia_range(rows.where(k), written[k])  # (a sum of smaller entries cannot overflow)
-        where = np.array(rows.indices, dtype=int)
-        self.declared[where] = True
-        self.masses[where], self.coms[where] = masses, com
-        self.inertias[where] = self.written[where] = written
-        for k in np.flatnonzero(np.any(rpy != 0, axis=1)).tolist():
-            turn = tuple(rpy[k].tolist())
-            found = Inertial.read(
-                float(masses[k]), com[k].tolist(), written[k], rotation=rpy_matrix(turn), rpy=turn
-            )
-            row = rows.indices[k]
-            self.turned[row] = found
-            self.coms[row] = found.properties.center_of_mass
-            self.inertias[row] = found.properties.inertia_about_com
+def _inertials(rows: _Rows, inertial: _Node) -> tuple[np.ndarray, ...]:
+    """Each row's ``<inertial>``: masses (k,) kg, centres of mass (k, 3) m, the inertias as
+    written (k, 3, 3) kg·m² and the inertial frames' roll, pitch, yaw (k, 3) rad."""
+    origin = inertial.child("origin")
+    at = {} if origin is None else origin.at
+    com = rows.numbers(at.get("xyz"), b"0 0 0", 3, "inertial/origin: xyz")
+    rpy = _angles(rows, rows.numbers(at.get("rpy"), b"0 0 0", 3, "inertial/origin: rpy"), "inertial rpy")
+    mass, block = inertial.child("mass"), inertial.child("inertia")
+    if mass is None:
+        raise rows.where(0).error("inertial/mass: missing")
+    masses = rows.numbers(mass.at.get("value"), None, 1, "inertial/mass: value")[:, 0]
+    if block is None:
+        raise rows.where(0).error("inertial/inertia: missing")
+    six = {
+        key: rows.numbers(block.at.get(key), None, 1, f"inertial/inertia: {key}")[:, 0]
+        for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+    }
+    ixx, iyy, izz, ixy, ixz, iyz = six.values()
+    written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
+    for k in np.flatnonzero(np.any(np.abs(written) >= 1e300, axis=(1, 2))).tolist():
+        check_inertia_range(rows.where(k), written[k])  # (a sum of smaller entries cannot overflow)
+    return masses, com, written, rpy
 
 
 def _geoms(rows: _Rows, tag: str, packages) -> list[GeomColumn]:

@@ -514,7 +514,10 @@ def _refuse_overflow(model: RobotModel, audited) -> None:
 def _left_out(model: RobotModel, columns: LinkColumns) -> list[str]:
     """The names of the links of mass 0 that declare moments (the total counts no moment without
     a mass: :func:`rbi.robot.tree.heavy_links`); an unnamed one as ``body[i]``."""
-    rows = columns.declared & (columns.masses == 0.0) & np.any(columns.inertias != 0.0, axis=(1, 2))
+    inertials = columns.inertials
+    rows = (
+        columns.declared & (inertials.mass == 0.0) & np.any(inertials.inertia_about_com != 0.0, axis=(1, 2))
+    )
     names = columns.names
     word = model.link_word
     return [f"{word}[{row}]" if names[row] is None else names[row] for row in np.flatnonzero(rows).tolist()]
@@ -540,7 +543,7 @@ class _ColumnAudit:
         """Each link screened on the arrays; those not cleared audited one by one."""
         model, columns = self.model, self.columns
         n = len(columns)
-        heavy = columns.declared & (columns.masses > 0)
+        heavy = columns.declared & (columns.inertials.mass > 0)
         carried = _carried(columns)
         moving = np.zeros(n, dtype=bool)  # links a joint moves
         kinds = zip(columns.joint_rows, columns.joint_kinds)
@@ -554,7 +557,8 @@ class _ColumnAudit:
         if measured is not None:
             fine[np.asarray(measured.rows)[measured.fine]] = True
         declared = np.flatnonzero(columns.declared).tolist()
-        physical, maybe = _screens(n, declared, columns.inertias[declared], columns.written[declared])
+        inertias = columns.inertials.inertia_about_com[declared]
+        physical, maybe = _screens(n, declared, inertias, columns.written[declared])
         clean = self._compare(heavy & fine)
         simple = heavy & physical & ~maybe & (~shaped | clean)
         simple |= ~columns.declared & ~moving & (~shaped | fine)
@@ -584,8 +588,8 @@ class _ColumnAudit:
         ratios, offsets, inside, near = _compared(
             moments,
             axes,
-            columns.inertias[found],
-            columns.coms[found],
+            columns.inertials.inertia_about_com[found],
+            columns.inertials.center_of_mass[found],
             measured.low[at],
             measured.high[at],
             measured.com[at],
@@ -617,11 +621,13 @@ class _ColumnAudit:
         (audited one by one, or with a turned inertial frame) from their LinkAudit."""
         columns, measured, compared = self.columns, self.measured, self.compared
         own = set(self.audited) | set(columns.turned)
-        declared, masses = columns.declared.tolist(), (columns.masses + 0.0).tolist()  # + 0.0: no -0.0
-        coms, inertias = (columns.coms + 0.0).tolist(), (columns.inertias + 0.0).tolist()
+        inertials = columns.inertials
+        declared, masses = columns.declared.tolist(), (inertials.mass + 0.0).tolist()  # + 0.0: no -0.0
+        coms = (inertials.center_of_mass + 0.0).tolist()
+        inertias = (inertials.inertia_about_com + 0.0).tolist()
         moments = [None] * len(masses)
         rows = np.flatnonzero(columns.declared)
-        for row, each in zip(rows.tolist(), _stack_moments(columns.inertias[rows])):
+        for row, each in zip(rows.tolist(), _stack_moments(inertials.inertia_about_com[rows])):
             moments[row] = each
         shapes = _geometry_dicts(measured) if measured is not None else {}
         found = []
@@ -683,7 +689,7 @@ def _given(ratios: np.ndarray) -> list[float | None]:
 
 def _carried(columns: LinkColumns) -> list[bool]:
     """For each link (by row): does any link below it in the tree have mass?"""
-    parents, heavy = columns.parents, (columns.declared & (columns.masses > 0)).tolist()
+    parents, heavy = columns.parents, (columns.declared & (columns.inertials.mass > 0)).tolist()
     below = [False] * (len(parents) + 1)
     for row in reversed(columns.order):  # every child before its parent
         if below[row] or heavy[row]:
@@ -817,7 +823,7 @@ def _primitives_in_bulk(
     with np.errstate(all="ignore"):
         fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
         fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
-    declared = np.where(links.declared, links.masses, 0.0)[shapes.rows]
+    declared = np.where(links.declared, links.inertials.mass, 0.0)[shapes.rows]
     return _Measured.of(
         shapes, fine, measure, inertia + 0.0, p + 0.0, p - corners, p + corners, declared, density
     )
@@ -851,7 +857,7 @@ class _Measured:
         """The :class:`GeometryProps` of the k-th row (a ``fine`` one)."""
         properties = None
         if self.has_mass[k]:
-            properties = MassProperties.of_arrays(float(self.mass[k]), self.com[k], self.scaled[k], "link")
+            properties = MassProperties(self.mass[k], self.com[k], self.scaled[k], "link")
         return GeometryProps.of(
             properties,
             self.com[k],

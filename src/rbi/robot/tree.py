@@ -255,8 +255,9 @@ def heavy_links(placed: Placement) -> tuple[list[int], np.ndarray, np.ndarray, n
     """The links with a declared mass other than 0: their rows in ``placed``, masses (kg),
     centres of mass (m) and inertias about them (kg·m²) in their own frames."""
     columns = placed.columns
-    rows = np.flatnonzero(columns.declared & (columns.masses != 0.0)).tolist()
-    return rows, columns.masses[rows], columns.coms[rows], columns.inertias[rows]
+    inertials = columns.inertials
+    rows = np.flatnonzero(columns.declared & (inertials.mass != 0.0)).tolist()
+    return rows, inertials.mass[rows], inertials.center_of_mass[rows], inertials.inertia_about_com[rows]
 
 
 def _placed_inertias(placed: Placement, rows: list[int], inertias: np.ndarray) -> np.ndarray:
