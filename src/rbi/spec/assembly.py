@@ -11,6 +11,7 @@ import numpy as np
 from rbi.core.mass import MassProperties
 from rbi.errors import InputError
 from rbi.spec import models
+from rbi.spec.geometry import part_count
 from rbi.spec.pattern import copy_motions
 from rbi.spec.translate import rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M, convert_body
@@ -35,7 +36,7 @@ def expanded(loaded, expand: bool = True, seen: dict | None = None) -> Expanded:
     replaced by its parts when ``expand``, named ``ASSEMBLY/PART`` (``ASSEMBLY[i]/PART`` for the
     copies of a pattern) and placed in the body. InputError past :data:`MAX_EXPANDED` parts.
     ``seen``: the sub-assemblies expanded so far, by file and units (each is listed once)."""
-    if expand and seen is None and _count(loaded) > MAX_EXPANDED:
+    if expand and seen is None and part_count(loaded, MAX_EXPANDED) > MAX_EXPANDED:
         raise InputError(f"{loaded.path}: more than {MAX_EXPANDED:,} parts to list")
     spec = loaded.spec
     parts = list(spec.parts) if spec is not None else []
@@ -68,14 +69,3 @@ def expanded(loaded, expand: bool = True, seen: dict | None = None) -> Expanded:
             rows.lengths.extend(inner.lengths)
             pieces.append(placed.transformed(R, t * ratio))
     return rows._replace(elements=MassProperties.concatenate(pieces))
-
-
-def _count(loaded) -> int:
-    """How many rows :func:`expanded` gives, counted until past :data:`MAX_EXPANDED`."""
-    total = int(loaded.spec is not None and loaded.spec.point_cloud is not None)
-    for part in loaded.spec.parts if loaded.spec is not None else []:
-        copies = 1 if part.pattern is None else int(part.pattern.count)
-        total += copies * (_count(part._loaded) if isinstance(part, models.AssemblyPart) else 1)
-        if total > MAX_EXPANDED:
-            break
-    return total

@@ -3,6 +3,7 @@ the computed value. Numpy only at import (the API imports :class:`Check` at star
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 from typing import Any
 
@@ -11,6 +12,17 @@ import numpy as np
 from rbi.core.inertia import principal_axes
 from rbi.errors import InputError
 from rbi.spec.points import NO_PIVOT
+
+PERCENT = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*%\s*$")
+"""A tolerance written as a percentage (``1%``): its number."""
+
+
+def tolerance_allowed(tol: float | str, reference: float) -> float:
+    """The allowed absolute deviation: ``tol`` itself, or ``tol``% of ``reference`` (the
+    magnitude of the expected value)."""
+    if isinstance(tol, str):
+        return float(PERCENT.match(tol).group(1)) / 100.0 * abs(reference)
+    return float(tol)
 
 
 @dataclass(frozen=True)
@@ -47,9 +59,6 @@ class Check:
 def _compare(
     quantity: str, expected: Any, actual: Any, tol: Any, unit: str, about: str | None = None
 ) -> Check:
-    # not at top level: `rbi audit` would load rbi.spec.fields too
-    from rbi.spec.fields import tolerance_allowed
-
     want = np.asarray(expected, dtype=float)
     got = np.asarray(actual, dtype=float)
     allowed = tolerance_allowed(tol, float(np.max(np.abs(want))))

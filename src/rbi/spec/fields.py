@@ -15,6 +15,7 @@ from pydantic import AfterValidator, BaseModel, ConfigDict, Field, PlainValidato
 
 from rbi.core.validity import subnormal_problem
 from rbi.errors import shown
+from rbi.spec.checks import PERCENT
 from rbi.spec.materials import ALIASES, MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 from rbi.spec.points import REFERENCE_POINTS, reference_choices, reference_name
 
@@ -56,6 +57,14 @@ def _looks_numeric(text: str) -> bool:
     except ValueError:
         return False
     return True
+
+
+def read_by(check: Any, description: str, *forms: dict[str, Any]) -> Any:
+    """A field type read by ``check`` (its ValueError is the message the user sees), which the
+    JSON Schema describes as any of ``forms``."""
+    return Annotated[
+        Any, PlainValidator(check), WithJsonSchema({"anyOf": list(forms), "description": description})
+    ]
 
 
 # --- true or false ---------------------------------------------------------------------------
@@ -121,25 +130,17 @@ def _any_case_pattern(names: list[str]) -> str:
     return "^(?:" + "|".join(one(name) for name in names) + ")$"
 
 
-Density = Annotated[
-    Any,
-    PlainValidator(_density),
-    WithJsonSchema(
-        {
-            "anyOf": [
-                {"type": "number", "exclusiveMinimum": 0},
-                {"type": "string", "enum": _material_names()},
-                {
-                    "type": "string",
-                    "pattern": _any_case_pattern(_material_names()),
-                    "description": "A material name above in any case, with spaces, _ or - alike (e.g. Stainless_Steel).",
-                },
-            ],
-            "description": "Mass per length³ in the file's units, or a built-in material name "
-            "(converted from kg/m³ to the file's units).",
-        }
-    ),
-]
+Density = read_by(
+    _density,
+    "Mass per length³ in the file's units, or a built-in material name (converted from kg/m³ to the file's units).",
+    {"type": "number", "exclusiveMinimum": 0},
+    {"type": "string", "enum": _material_names()},
+    {
+        "type": "string",
+        "pattern": _any_case_pattern(_material_names()),
+        "description": "A material name above in any case, with spaces, _ or - alike (e.g. Stainless_Steel).",
+    },
+)
 
 
 # --- inertia matrix: 3×3 or six components -------------------------------------------------
@@ -186,46 +187,32 @@ def _component(name: str, value: Any) -> float:
 
 _NUMBER_ROW = {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3}
 
-InertiaMatrix = Annotated[
-    Any,
-    PlainValidator(_inertia_matrix),
-    WithJsonSchema(
-        {
-            "anyOf": [
-                {"type": "array", "items": _NUMBER_ROW, "minItems": 3, "maxItems": 3},
-                {
-                    "type": "object",
-                    "properties": {
-                        k: {
-                            "type": "number",
-                            "description": f"I{k[1:]}, mass·length²"
-                            + (
-                                " (product of inertia, with the minus sign inside the matrix)"
-                                if k[1] != k[2]
-                                else ""
-                            ),
-                        }
-                        for k in _COMPONENTS
-                    },
-                    "required": list(_COMPONENTS[:3]),
-                    "additionalProperties": False,
-                },
-            ],
-            "description": "Inertia matrix (mass·length²): products are the matrix entries "
-            "(ixy = −∫xy dm), as in `rbi inertia` and URDF.",
-        }
-    ),
-]
+InertiaMatrix = read_by(
+    _inertia_matrix,
+    "Inertia matrix (mass·length²): products are the matrix entries (ixy = −∫xy dm), as in `rbi inertia` and URDF.",
+    {"type": "array", "items": _NUMBER_ROW, "minItems": 3, "maxItems": 3},
+    {
+        "type": "object",
+        "properties": {
+            k: {
+                "type": "number",
+                "description": f"I{k[1:]}, mass·length²"
+                + (" (product of inertia, with the minus sign inside the matrix)" if k[1] != k[2] else ""),
+            }
+            for k in _COMPONENTS
+        },
+        "required": list(_COMPONENTS[:3]),
+        "additionalProperties": False,
+    },
+)
 
 
 # --- tolerance: a percentage or an absolute number -----------------------------------------
 
-_PERCENT = re.compile(r"^\s*([0-9]*\.?[0-9]+(?:[eE][-+]?[0-9]+)?)\s*%\s*$")
-
 
 def _tolerance(value: Any) -> float | str:
     if isinstance(value, str):
-        match = _PERCENT.match(value)
+        match = PERCENT.match(value)
         if not match or not math.isfinite(float(match.group(1))):
             raise ValueError(
                 f"must be a percentage such as 1% or an absolute number in file units (got {shown(value)})"
@@ -237,27 +224,12 @@ def _tolerance(value: Any) -> float | str:
     return number
 
 
-def tolerance_allowed(tol: float | str, reference: float) -> float:
-    """The allowed absolute deviation: ``tol`` itself, or ``tol``% of ``reference`` (the
-    magnitude of the expected value)."""
-    if isinstance(tol, str):
-        return float(_PERCENT.match(tol).group(1)) / 100.0 * abs(reference)
-    return float(tol)
-
-
-Tolerance = Annotated[
-    Any,
-    PlainValidator(_tolerance),
-    WithJsonSchema(
-        {
-            "anyOf": [
-                {"type": "number", "minimum": 0},
-                {"type": "string", "pattern": r"^\s*[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?\s*%\s*$"},
-            ],
-            "description": "Absolute (file units) or a percentage of the expected value's magnitude, e.g. 1%.",
-        }
-    ),
-]
+Tolerance = read_by(
+    _tolerance,
+    "Absolute (file units) or a percentage of the expected value's magnitude, e.g. 1%.",
+    {"type": "number", "minimum": 0},
+    {"type": "string", "pattern": r"^\s*[0-9]*\.?[0-9]+([eE][-+]?[0-9]+)?\s*%\s*$"},
+)
 
 
 # --- reference point: com, origin, pivot or [x, y, z] ---------------------------------------
@@ -272,16 +244,9 @@ def _about(value: Any) -> str | list[float]:
     raise ValueError(f"must be {reference_choices('[x, y, z]')} (got {shown(value)})")
 
 
-AboutPoint = Annotated[
-    Any,
-    PlainValidator(_about),
-    WithJsonSchema(
-        {
-            "anyOf": [
-                {"type": "string", "enum": list(REFERENCE_POINTS)},
-                {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3},
-            ],
-            "description": "Reference point: com, origin, pivot, or [x, y, z] in body coordinates.",
-        }
-    ),
-]
+AboutPoint = read_by(
+    _about,
+    "Reference point: com, origin, pivot, or [x, y, z] in body coordinates.",
+    {"type": "string", "enum": list(REFERENCE_POINTS)},
+    {"type": "array", "items": {"type": "number"}, "minItems": 3, "maxItems": 3},
+)

@@ -39,6 +39,7 @@ from rbi.core.polygon import trapezoids
 from rbi.core.rotation import unit_vector
 from rbi.core.shapes import prism_frame
 from rbi.formats.paths import spec_relative_file
+from rbi.formats.point_cloud import read_point_cloud
 from rbi.spec import models
 from rbi.spec.pattern import copy_motions
 from rbi.spec.translate import rotation_matrix
@@ -69,7 +70,7 @@ def part_geometry(body) -> list[dict[str, Any]]:
         elif isinstance(part, models.AssemblyPart):
             items = (
                 _assembly(part, body.length_unit)
-                if _drawn(part._loaded) * count <= MAX_DRAWN_COPIES
+                if part_count(part._loaded, MAX_DRAWN_COPIES) * count <= MAX_DRAWN_COPIES
                 else [None]
             )
         else:
@@ -122,14 +123,16 @@ def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray, scale: float = 1.0
     return out
 
 
-def _drawn(body) -> int:
-    """How many primitives :func:`part_geometry` gives for ``body``, counted until it passes
-    :data:`MAX_DRAWN_COPIES` (a tree of sub-assemblies is not walked further)."""
-    total = 0
+def part_count(body, most: int) -> int:
+    """How many parts ``body`` (a :class:`~rbi.spec.translate.LoadedBody`) has once each
+    pattern is copied and each sub-assembly replaced by its parts (the point clouds counted one
+    each), counted until past ``most`` (a tree of sub-assemblies is not walked further): how
+    many primitives :func:`part_geometry` gives, and rows ``rbi parts --expand`` lists."""
+    total = int(body.spec is not None and body.spec.point_cloud is not None)
     for part in body.spec.parts if body.spec is not None else []:
         count = 1 if part.pattern is None else int(part.pattern.count)
-        total += count * (_drawn(part._loaded) if isinstance(part, models.AssemblyPart) else 1)
-        if total > MAX_DRAWN_COPIES:
+        total += count * (part_count(part._loaded, most) if isinstance(part, models.AssemblyPart) else 1)
+        if total > most:
             break
     return total
 
@@ -218,15 +221,13 @@ PRIMITIVES: dict[type, Callable[[Any], dict[str, Any]]] = {
 
 
 def _unit(v) -> list[float]:
-
     return unit_vector(v).tolist()
 
 
 def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     """The mesh's triangles placed in the body as the mass properties place them: ``scale``,
     then ``rotation`` about the mesh origin, then the origin to ``position``."""
-    # not at top level: `rbi show --out F.png` would load rbi.formats.mesh_file too
-    from rbi.formats.mesh_file import read_mesh_solid
+    from rbi.formats.mesh_file import read_mesh_solid  # heavy: scipy (rbi.core.mesh), for meshes only
 
     solid = read_mesh_solid(
         spec_relative_file(spec_path, part.file, f"file: {part.file}"), part.inertia, part.repair
@@ -256,8 +257,7 @@ def _step(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
     """The STEP solids' triangles (BRepMesh, for the picture only) placed as the mass
     properties place them: the file's unit to the spec's, ``rotation`` about the file's
     origin, then the origin to ``position``."""
-    # not at top level: `rbi show --out F.png` would load rbi.formats.step too
-    from rbi.formats.step import read_step, select_solids, step_triangles
+    from rbi.formats.step import read_step, select_solids, step_triangles  # heavy: 10 ms, for STEP only
 
     path = spec_relative_file(spec_path, part.file, f"file: {part.file}")
     chosen = select_solids(read_step(path), part.solid)  # cached: read once for the mass properties
@@ -290,9 +290,6 @@ def _ellipsoid(center, semi_axes, R) -> dict[str, Any]:
 def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
     """The cloud's points (already read once for its mass properties), or None when there are
     too many to draw one by one."""
-    # not at top level: `rbi show --out F.png` would load rbi.formats.point_cloud too
-    from rbi.formats.point_cloud import read_point_cloud
-
     if spec is None or spec.point_cloud is None:
         return None
     label = f"{spec_path}: point_cloud: file: {spec.point_cloud.file}"

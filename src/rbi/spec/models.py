@@ -25,7 +25,8 @@ from pydantic import (
 
 from rbi.core.polygon import MAX_VERTICES, polygon_problem
 from rbi.spec.expect import Expect
-from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, StrictModel, Vector3
+from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, Vector3
+from rbi.spec.fields import StrictModel as _Strict
 from rbi.spec.materials import canonical_name, unknown_material_message
 
 PositiveVector3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
@@ -33,8 +34,6 @@ PositiveVector3 = Annotated[list[Positive], Field(min_length=3, max_length=3)]
 LengthUnit = Literal["m", "cm", "mm", "in", "ft"]
 MassUnit = Literal["kg", "g", "lb"]
 
-
-_Strict = StrictModel
 
 _BUILT_WHEN_USED = ConfigDict(extra="forbid", frozen=True, defer_build=True)
 """Models of the parts (and what only parts hold): pydantic builds a model's validator when it
@@ -56,15 +55,12 @@ class Pattern(_Strict):
 
     model_config = _BUILT_WHEN_USED
 
-    count: Annotated[
-        int,
-        Field(
-            strict=True,
-            ge=1,
-            le=100_000,
-            description="Number of copies, the part as written included (1 to 100000).",
-        ),
-    ]
+    count: int = Field(
+        strict=True,
+        ge=1,
+        le=100_000,
+        description="Number of copies, the part as written included (1 to 100000).",
+    )
     axis: Vector3 | None = Field(
         None, description="Direction of the line the copies turn about (need not be unit length)."
     )
@@ -81,9 +77,7 @@ class Pattern(_Strict):
             )
         if circular and self.axis is None:
             raise ValueError("axis: missing required field (the direction of the line the copies turn about)")
-        if self.axis is not None:
-            _nonzero(self.axis, "axis", "the direction of the line the copies turn about")
-        return self
+        return _nonzero(self, "axis", "the direction of the line the copies turn about")
 
 
 class _Part(_Strict):
@@ -140,16 +134,12 @@ class _Solid(_Part):
         return self
 
 
-def _distinct(a: list[float], b: list[float], names: str) -> None:
-    if np.array_equal(np.asarray(a), np.asarray(b)):
-        raise ValueError(f"{names}: must be different points (the length would be 0)")
-
-
 def _apart(first: str, second: str) -> Any:
     """The model check that the points ``first`` and ``second`` differ (the part has a length)."""
 
     def check(self):
-        _distinct(getattr(self, first), getattr(self, second), f"{first}, {second}")
+        if np.array_equal(np.asarray(getattr(self, first)), np.asarray(getattr(self, second))):
+            raise ValueError(f"{first}, {second}: must be different points (the length would be 0)")
         return self
 
     return model_validator(mode="after")(check)
@@ -157,8 +147,16 @@ def _apart(first: str, second: str) -> Any:
 
 def _without_volume(what: str) -> Any:
     """The check, before the fields', that a part without volume (``what``) has no ``density``
-    and no ``subtract``."""
-    return model_validator(mode="before")(classmethod(lambda cls, data: _mass_only(data, what)))
+    and no ``subtract``: it takes ``mass`` only."""
+
+    def check(cls, data: Any) -> Any:
+        if isinstance(data, dict) and "density" in data:
+            raise ValueError(f"density: {what} takes `mass` only (it has no volume)")
+        if isinstance(data, dict) and "subtract" in data:
+            raise ValueError(f"subtract: only solids with a volume can be subtracted, not {what}")
+        return data
+
+    return model_validator(mode="before")(classmethod(check))
 
 
 class ConePart(_Solid):
@@ -191,15 +189,6 @@ class PointPart(_Part):
     position: Vector3 = Field(description="Where the mass is, body frame.")
 
     _no_density = _without_volume("a point mass")
-
-
-def _mass_only(data: Any, what: str) -> Any:
-    """Refuse ``density`` and ``subtract`` on a part without volume (before field checks)."""
-    if isinstance(data, dict) and "density" in data:
-        raise ValueError(f"density: {what} takes `mass` only (it has no volume)")
-    if isinstance(data, dict) and "subtract" in data:
-        raise ValueError(f"subtract: only solids with a volume can be subtracted, not {what}")
-    return data
 
 
 # --- shapes added for engineering parts (docs/spec.md gives each closed form) ---------------
@@ -250,11 +239,7 @@ class Rotation(_Strict):
         if forms[0] == "axis, angle_deg":
             if self.axis is None or self.angle_deg is None:
                 raise ValueError("axis, angle_deg: give both")
-            if not any(self.axis):
-                raise ValueError(
-                    "axis: must not be the zero vector [0, 0, 0]: give the direction to turn about, "
-                    "e.g. [0, 0, 1] for z (any length)"
-                )
+            _nonzero(self, "axis", "the direction to turn about")
         if forms[0] == "euler_deg, sequence" and (self.euler_deg is None or self.sequence is None):
             raise ValueError("euler_deg, sequence: give both")
         if self.quaternion is not None and not any(self.quaternion):
@@ -397,12 +382,15 @@ class CustomPart(_Part):
     _no_density = _without_volume("a custom part")
 
 
-def _nonzero(vector: list[float], name: str, meaning: str) -> None:
-    if not any(vector):
+def _nonzero(part: Any, name: str, meaning: str) -> Any:
+    """``part`` unless its direction ``name`` (when given) is the zero vector; ``meaning`` says
+    what the direction is."""
+    if getattr(part, name) is not None and not any(getattr(part, name)):
         raise ValueError(
             f"{name}: must not be the zero vector [0, 0, 0]: give {meaning}, e.g. [0, 0, 1] for z "
             "(any length)"
         )
+    return part
 
 
 class TorusPart(_Solid):
@@ -417,7 +405,7 @@ class TorusPart(_Solid):
 
     @model_validator(mode="after")
     def _checks(self):
-        _nonzero(self.axis, "axis", "the direction of the ring's axis of symmetry")
+        _nonzero(self, "axis", "the direction of the ring's axis of symmetry")
         if self.minor_radius > self.major_radius:
             raise ValueError(
                 f"minor_radius: must not exceed major_radius ({self.minor_radius!r} > "
@@ -434,10 +422,9 @@ class HemispherePart(_Solid):
     axis: Vector3 = Field(description="Direction from the flat face into the dome (need not be unit length).")
     radius: Positive = Field(description="Radius of the sphere it is half of.")
 
-    @model_validator(mode="after")
-    def _checks(self):
-        _nonzero(self.axis, "axis", "the direction from the flat face into the dome")
-        return self
+    _has_direction = model_validator(mode="after")(
+        lambda self: _nonzero(self, "axis", "the direction from the flat face into the dome")
+    )
 
 
 class CapsulePart(_Solid):
@@ -460,13 +447,9 @@ class MeshPart(_Solid):
     mesh's own origin, then that origin is put at ``position``."""
 
     shape: Literal["mesh"] = Field(description="The solid a closed triangle mesh encloses.")
-    file: Annotated[
-        str,
-        Field(
-            min_length=1,
-            description=("Mesh file (.stl, .obj, .ply, .dae, .msh), relative to the spec's folder."),
-        ),
-    ]
+    file: str = Field(
+        min_length=1, description="Mesh file (.stl, .obj, .ply, .dae, .msh), relative to the spec's folder."
+    )
     scale: Positive = Field(
         1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m)."
     )
@@ -519,9 +502,7 @@ class StepPart(_Solid):
     ``position``. Needs the optional extra ``cad``."""
 
     shape: Literal["step"] = Field(description="The solid or solids of a STEP file (CAD).")
-    file: Annotated[
-        str, Field(min_length=1, description="STEP file (.step, .stp), relative to the spec's folder.")
-    ]
+    file: str = Field(min_length=1, description="STEP file (.step, .stp), relative to the spec's folder.")
     solid: Annotated[str | int | None, BeforeValidator(_solid_choice)] = Field(
         None,
         description=(
@@ -581,7 +562,7 @@ class AssemblyPart(_Part):
     every part's mass and inertia to that total."""
 
     shape: Literal["assembly"] = Field(description="The parts of another spec file (a sub-assembly).")
-    file: Annotated[str, Field(min_length=1, description="The spec file, relative to this spec's folder.")]
+    file: str = Field(min_length=1, description="The spec file, relative to this spec's folder.")
     position: Vector3 = Field(
         [0.0, 0.0, 0.0], description="Where the sub-assembly's origin goes, body frame."
     )
@@ -649,12 +630,7 @@ def _part_of_its_shape(value: Any) -> _Part:
         raise ValidationError.from_exception_data(
             "Part",
             [
-                {
-                    "type": e["type"],
-                    "loc": (tag, *e["loc"]),
-                    "input": e["input"],
-                    **({"ctx": e["ctx"]} if "ctx" in e else {}),
-                }
+                {key: e[key] for key in ("type", "input", "ctx") if key in e} | {"loc": (tag, *e["loc"])}
                 for e in exc.errors(include_url=False)
             ],
         ) from None
@@ -674,13 +650,10 @@ class PointCloudRef(_Strict):
     """Many point masses from one file (see :mod:`rbi.formats.point_cloud`): a ``.csv`` with the
     columns mass,x,y,z or a ``.npy`` (N, 4) array; path relative to the spec's folder."""
 
-    file: Annotated[
-        str,
-        Field(
-            min_length=1,
-            description="A .csv (columns mass,x,y,z) or .npy (N×4) file, relative to the spec's folder.",
-        ),
-    ]
+    file: str = Field(
+        min_length=1,
+        description="A .csv (columns mass,x,y,z) or .npy (N×4) file, relative to the spec's folder.",
+    )
 
 
 PARTS_DESCRIPTION = "The parts, each placed in the body frame."

@@ -32,6 +32,7 @@ from rbi.core.rotation import (
 )
 from rbi.core.validity import inertia_problem
 from rbi.formats.paths import spec_relative_file
+from rbi.formats.point_cloud import cloud_element
 from rbi.spec import models
 from rbi.spec.errors import InputError, part_label
 from rbi.spec.holes import check_holes
@@ -152,8 +153,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     hull's solid, or the surface): ``scale``, then ``rotation`` about the mesh origin, then the
     origin moved to ``position``. Raises ValueError naming the file (as written in the spec)
     and what is wrong with it."""
-    # not at top level: `rbi inertia` would load rbi.formats.mesh_file too
-    from rbi.formats.mesh_file import read_mesh_solid
+    from rbi.formats.mesh_file import read_mesh_solid  # heavy: scipy (rbi.core.mesh), not for `rbi inertia`
 
     file = _part_file(part, spec_path)
     try:
@@ -207,8 +207,7 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
     boundary representation in metres (:mod:`rbi.formats.step`), converted to the spec's length
     unit, turned by ``rotation`` about the file's origin, that origin moved to ``position``.
     Raises ValueError naming the file (as written in the spec) and what is wrong with it."""
-    # not at top level: `rbi inertia` would load rbi.formats.step too
-    from rbi.formats.step import read_step, require_cad, select_solids
+    from rbi.formats.step import read_step, require_cad, select_solids  # heavy: 10 ms, not for `rbi inertia`
 
     require_cad()
     file = _part_file(part, spec_path)
@@ -235,8 +234,7 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
     pieces that overlap (their shared space counted twice)."""
     notes = []
     if solid.added_faces:
-        # not at top level: `rbi inertia` would load rbi.core.mesh too
-        from rbi.core.mesh import surface_area
+        from rbi.core.mesh import surface_area  # heavy: scipy, not for `rbi inertia`
 
         scale = scalar(part.scale).real
         added = solid.added_area * scale * scale
@@ -313,24 +311,18 @@ GIVEN_MASS: dict[type, Callable[[Any], MassProperties]] = {
 def _densities(parts: list, units: models.Units) -> tuple[np.ndarray, np.ndarray]:
     """``(mass_given, density)`` per part (NaN where not given); ``density`` NaN also where a
     material name cannot be looked up (the per-part path will say why)."""
-    n = len(parts)
-    mass = np.full(n, np.nan)
-    density = np.full(n, np.nan)
-    looked_up: dict[str, float] = {}
-    for i, part in enumerate(parts):
-        if part.mass is not None:
-            mass[i] = part.mass
-            continue
-        d = part.density
-        if isinstance(d, str):
-            if d not in looked_up:
-                try:
-                    looked_up[d] = density_in_units(d, units.length, units.mass)
-                except (ValueError, KeyError):
-                    looked_up[d] = math.nan
-            d = looked_up[d]
-        density[i] = math.nan if d is None else d
-    return mass, density
+    looked_up = {
+        name: _material_density(name, units) for name in {p.density for p in parts} if isinstance(name, str)
+    }
+    density = [looked_up.get(p.density, p.density) if p.mass is None else None for p in parts]
+    return np.array([p.mass for p in parts], dtype=float), np.array(density, dtype=float)
+
+
+def _material_density(name: str, units: models.Units) -> float:
+    try:
+        return density_in_units(name, units.length, units.mass)
+    except (ValueError, KeyError):
+        return math.nan
 
 
 class Columns:
@@ -371,13 +363,8 @@ def _solid_masses(parts: Any, units: models.Units, volume: np.ndarray) -> np.nda
     return np.where(np.isnan(given), density * volume, given)
 
 
-def _vectors(parts: Any, field: str) -> np.ndarray:
-    if isinstance(parts, Columns):
-        return parts.column(field)
-    return np.array([getattr(p, field) for p in parts], dtype=float).reshape(len(parts), 3)
-
-
-def _scalars(parts: Any, field: str) -> np.ndarray:
+def _column(parts: Any, field: str) -> np.ndarray:
+    """The parts' ``field`` as a column: (n,) for a number, (n, 3) for a vector."""
     if isinstance(parts, Columns):
         return parts.column(field)
     return np.array([getattr(p, field) for p in parts], dtype=float)
@@ -395,13 +382,13 @@ def _axes(d: np.ndarray) -> tuple[np.ndarray, Any, np.ndarray]:
 
 
 def _points(parts, units):
-    masses = _scalars(parts, "mass")
-    return masses, _vectors(parts, "position"), np.zeros((len(parts), 3, 3))
+    masses = _column(parts, "mass")
+    return masses, _column(parts, "position"), np.zeros((len(parts), 3, 3))
 
 
 def _cylinders(parts, units):
-    radius = _scalars(parts, "radius")
-    start, end = _vectors(parts, "start"), _vectors(parts, "end")
+    radius = _column(parts, "radius")
+    start, end = _column(parts, "start"), _column(parts, "end")
     u, length, norm = _axes(end - start)
     mass = _solid_masses(parts, units, shapes.cylinder_volume(radius, norm))
     axial, transverse = shapes.cylinder_moments(mass, radius, length)
@@ -409,8 +396,8 @@ def _cylinders(parts, units):
 
 
 def _cones(parts, units):
-    radius = _scalars(parts, "radius")
-    apex, base = _vectors(parts, "apex"), _vectors(parts, "base")
+    radius = _column(parts, "radius")
+    apex, base = _column(parts, "apex"), _column(parts, "base")
     u, height, norm = _axes(base - apex)
     mass = _solid_masses(parts, units, shapes.cone_volume(radius, norm))
     com = shapes.cone_center_of_mass(apex, u, height)
@@ -428,16 +415,16 @@ def _sphere_volume(radius: float) -> float:
 
 
 def _spheres(parts, units):
-    radius = _scalars(parts, "radius")
+    radius = _column(parts, "radius")
     volume = np.array([_sphere_volume(r) for r in radius.tolist()])
     mass = _solid_masses(parts, units, volume)
-    return mass, _vectors(parts, "center"), shapes.sphere_inertia(mass, radius)
+    return mass, _column(parts, "center"), shapes.sphere_inertia(mass, radius)
 
 
 def _boxes(parts, units):
-    size = _vectors(parts, "size")
+    size = _column(parts, "size")
     mass = _solid_masses(parts, units, shapes.box_volume(size))
-    return mass, _vectors(parts, "center"), shapes.box_inertia(mass, size)
+    return mass, _column(parts, "center"), shapes.box_inertia(mass, size)
 
 
 BUILDERS = {
@@ -554,9 +541,6 @@ def body_from_spec(spec: models.BodySpec, path: str):
     elements, holes = stacked_parts(spec, path)
     part_names = [p.name for p in spec.parts]
     if spec.point_cloud is not None:  # the whole cloud enters as one part, reduced vectorised
-        # not at top level: `rbi inertia` would load rbi.formats.point_cloud too
-        from rbi.formats.point_cloud import cloud_element
-
         elements = MassProperties.concatenate([elements, cloud_element(path, spec.point_cloud.file)])
         part_names.append("point_cloud")
     if holes:

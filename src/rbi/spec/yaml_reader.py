@@ -45,30 +45,17 @@ MAX_INTEGER_DIGITS = 4300
 _YAML = "tag:yaml.org,2002:"
 _DECIMAL = re.compile(r"[-+]?(?:\.[0-9]+|[0-9]+(?:\.[0-9]*)?)(?:[eE][-+]?[0-9]+)?")
 _FLOAT_CHARS = frozenset(".eE")
-_WORDS: dict[str, Any] = {
-    "": None,
-    "~": None,
-    "null": None,
-    "Null": None,
-    "NULL": None,
-    "true": True,
-    "True": True,
-    "TRUE": True,
-    "false": False,
-    "False": False,
-    "FALSE": False,
-    ".inf": float("inf"),
-    ".Inf": float("inf"),
-    ".INF": float("inf"),
-    "+.inf": float("inf"),
-    "+.Inf": float("inf"),
-    "+.INF": float("inf"),
-    "-.inf": float("-inf"),
-    "-.Inf": float("-inf"),
-    "-.INF": float("-inf"),
-    ".nan": float("nan"),
-    ".NaN": float("nan"),
-    ".NAN": float("nan"),
+_WORDS: dict[str, Any] = {"": None, "~": None} | {
+    word: value
+    for words, value in (
+        ("null Null NULL", None),
+        ("true True TRUE", True),
+        ("false False FALSE", False),
+        (".inf .Inf .INF +.inf +.Inf +.INF", float("inf")),
+        ("-.inf -.Inf -.INF", float("-inf")),
+        (".nan .NaN .NAN", float("nan")),
+    )
+    for word in words.split()
 }
 _NUMBER_START = frozenset("-+.0123456789")
 # YAML 1.1's own patterns (yaml.org/type/int.html and float.html; the float's digits after
@@ -149,13 +136,11 @@ class _Frame:
     __slots__ = ("value", "is_map", "key", "anchor", "start_total", "height", "merges", "mark")
 
     def __init__(self, value, is_map, anchor, start_total, mark):
-        self.value, self.is_map, self.anchor, self.start_total, self.mark = (
-            value,
-            is_map,
-            anchor,
-            start_total,
-            mark,
-        )
+        self.value = value
+        self.is_map = is_map
+        self.anchor = anchor
+        self.start_total = start_total
+        self.mark = mark
         self.key = _NO_KEY
         self.height = 1
         self.merges = None
@@ -418,12 +403,7 @@ def _tagged_scalar(event, fail) -> Any:
     resolved = (
         _WORDS[value] if value in _WORDS else _number(value, event.start_mark, fail) if value else value
     )
-    expected = {
-        _YAML + "int": int,
-        _YAML + "float": (int, float),
-        _YAML + "bool": bool,
-        _YAML + "null": type(None),
-    }[tag]
+    expected = {"int": int, "float": (int, float), "bool": bool, "null": type(None)}[tag[len(_YAML) :]]
     if not isinstance(resolved, expected) or (isinstance(resolved, bool) and tag != _YAML + "bool"):
         fail(f"{_short(value)} is not a valid {tag[len(_YAML) :]}", event.start_mark)
     return float(resolved) if tag == _YAML + "float" else resolved
