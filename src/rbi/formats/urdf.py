@@ -24,7 +24,7 @@ single-quoted value; attribute values taken out in one pass on arrays, element b
 found from where its ``<``, ``>`` and ``/`` are), or else from the parsed element tree
 (:func:`read_urdf`). A refusal is worded for the first thing wrong in document order (link by
 link, then joint by joint, each field in the order above): a plain text the groups refuse is
-read from its tree, where a chunk of :data:`CHUNK` elements the groups refuse is read again
+read from its tree, where a chunk of :data:`~rbi.formats.xml_columns.CHUNK` elements the groups refuse is read again
 with every element its own group, in document order.
 """
 
@@ -32,12 +32,10 @@ from __future__ import annotations
 
 import dataclasses
 import re
-from collections.abc import Callable
 
 import numpy as np
 
 from rbi.core.mass import MassProperties
-from rbi.core.validity import SMALLEST_NORMAL
 from rbi.errors import InputError
 from rbi.formats import robot_xml
 from rbi.formats.robot import (
@@ -48,12 +46,10 @@ from rbi.formats.robot import (
     LinkColumns,
     Motion,
     RobotModel,
-    Where,
     angles,
     check_inertia_range,
     check_unique_joint_names,
     depth_first,
-    numbers,
     positive,
     refuse_shared_keys,
     rpy_matrix,
@@ -61,6 +57,7 @@ from rbi.formats.robot import (
     unit,
 )
 from rbi.formats.robot_paths import resolve_mesh
+from rbi.formats.xml_columns import Doubt, Node, Rows, Values, in_order, tree_groups
 
 MOVING = {
     "revolute": "revolute",
@@ -85,10 +82,6 @@ _SHAPES = {
 """The primitive shapes and their attributes (a mesh and a shape with no volume apart)."""
 
 
-class _Doubt(Exception):
-    """The text is not plain (:func:`read_urdf_text` leaves it to :func:`read_urdf`)."""
-
-
 def read_urdf_text(path: str, data: bytes, package_paths=None, geometry: bool = True) -> RobotModel | None:
     """The model of the URDF whose bytes are ``data``, read from its plain text; None when the
     text is not plain or the file is refused (:func:`read_urdf` then reads it, or words why not)."""
@@ -105,30 +98,25 @@ def read_urdf_text(path: str, data: bytes, package_paths=None, geometry: bool = 
             package_paths,
             geometry,
         )
-    except (_Doubt, InputError):
+    except (Doubt, InputError):
         return None
 
 
 def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     """The model of the parsed URDF ``document``; InputError, one line naming the file, the link
     or joint and the attribute, for the first thing wrong in document order."""
-    links, joints = (_tree_groups(document.root.all(tag)) for tag in ("link", "joint"))
+    links, joints = (tree_groups(document.root.all(tag)) for tag in ("link", "joint"))
     return _model(document, document.root.get("name"), links, joints, package_paths, geometry)
 
 
 def _model(document, name, links: list, joints: list, packages, geometry: bool) -> RobotModel:
-    """The model of the ``links`` and ``joints`` given as chunks (:func:`_in_order`)."""
+    """The model of the ``links`` and ``joints`` given as chunks (:func:`in_order`)."""
     fields = _links(document.path, links, geometry, packages)
     fields.update(_joints(document.path, fields["names"], joints))
     return RobotModel(document.path, "urdf", name, document=document, columns=LinkColumns(**fields))
 
 
 # --- the groups of a plain text -----------------------------------------------------------------
-
-_PLAIN = re.compile(rb"[0-9eE+\-. \n]*")
-"""The characters of texts of plain decimals apart by spaces, one text a line: with them, a
-token ``float`` reads is one :data:`rbi.formats.robot._NUMBER` matches (``float`` alone would
-also take ``nan``, ``inf``, ``1_0`` and other digits than 0-9)."""
 
 _COMMENT = re.compile(rb"<!--.*?-->", re.S)
 _TEXT = re.compile(rb">\s*[^\s<]")
@@ -157,7 +145,7 @@ def _plain_xml(text: bytes) -> bool:
 
 def _elements(text: bytes) -> tuple[str | None, dict, dict]:
     """The root's name and the top-level links and joints of a URDF :func:`_plain_xml` passed,
-    each grouped by signature (signature → :class:`_Rows`). The values are taken out of the
+    each grouped by signature (signature → :class:`Rows`). The values are taken out of the
     text and the element boundaries found on the arrays of its ``<``, ``>`` and ``=`` (with no
     text, comment or value left, each starts or ends a tag, or gives a value)."""
     if text.startswith(b"<?xml"):
@@ -165,23 +153,23 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
     if b"<!--" in text:
         text = _COMMENT.sub(b"", text)
     if _TEXT.search(text):
-        raise _Doubt
+        raise Doubt
     values, blank = _values(text)
     if _SINGLE_QUOTED.search(blank):
-        raise _Doubt
+        raise Doubt
     codes = np.frombuffer(blank, dtype=np.uint8)
     marks = np.flatnonzero(codes - 60 <= 2)  # where a <, = or > is (bytes below 60 wrap around)
     kinds = codes[marks]
     opens, equals, closes = marks[kinds == 60], marks[kinds == 61], marks[kinds == 62]
     if len(opens) != len(closes) or len(equals) != len(values) or not len(opens):
-        raise _Doubt
+        raise Doubt
     if np.any(closes < opens) or np.any(opens[1:] < closes[:-1]):
-        raise _Doubt
+        raise Doubt
     ending, empty = codes[opens + 1] == 47, codes[closes - 1] == 47
     step = np.where(ending, -1, np.where(empty, 0, 1))
     after = np.cumsum(step)
     if after.max() >= robot_xml.MAX_DEPTH or not _starts(blank, int(opens[0]), b"<robot"):
-        raise _Doubt
+        raise Doubt
     starts = np.flatnonzero((after - step == 1) & ~ending)
     ends = np.flatnonzero((after == 1) & (ending | empty))
     groups = {}
@@ -197,26 +185,26 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
     return name, groups[b"<link"], groups[b"<joint"]
 
 
-def _values(text: bytes) -> tuple[_Values, bytes]:
+def _values(text: bytes) -> tuple[Values, bytes]:
     """The attribute values of ``text`` (in double quotes: with no character data, comment or
     single-quoted value, every double quote opens or closes one) and the text with each value
-    emptied; _Doubt for a value holding a line end or tab, which XML reads as a space."""
+    emptied; Doubt for a value holding a line end or tab, which XML reads as a space."""
     codes = np.frombuffer(text, dtype=np.uint8)
     quotes = np.flatnonzero(codes == 34)
     if len(quotes) % 2:
-        raise _Doubt
+        raise Doubt
     starts, ends = quotes[0::2] + 1, quotes[1::2]
     if np.any(np.searchsorted(quotes, np.flatnonzero(codes < 32)) % 2):  # \t, \n or \r in a value
-        raise _Doubt  # (expat lets no other control character through)
+        raise Doubt  # (expat lets no other control character through)
     bounds = np.empty(2 * len(starts) + 2, dtype=np.int64)  # outside, inside, outside, ...
     bounds[0], bounds[1:-1:2], bounds[2:-1:2], bounds[-1] = 0, starts, ends, len(codes)
     outside = np.ones(len(bounds) - 1, dtype=bool)
     outside[1::2] = False
-    return _Values(codes, starts, ends), codes[np.repeat(outside, np.diff(bounds))].tobytes()
+    return Values(codes, starts, ends), codes[np.repeat(outside, np.diff(bounds))].tobytes()
 
 
-def _grouped(blank: bytes, begins, stops, lows, highs, values: _Values) -> dict[bytes, _Rows]:
-    """Signature → its elements (:class:`_Rows`) of the elements spanning ``begins:stops`` of
+def _grouped(blank: bytes, begins, stops, lows, highs, values: Values) -> dict[bytes, Rows]:
+    """Signature → its elements (:class:`Rows`) of the elements spanning ``begins:stops`` of
     the emptied text, whose values are ``values[lows:highs]``."""
     found: dict[bytes, tuple[list[int], list[int]]] = {}
     spans = zip(begins.tolist(), stops.tolist(), lows.tolist())
@@ -225,12 +213,12 @@ def _grouped(blank: bytes, begins, stops, lows, highs, values: _Values) -> dict[
         indices.append(index)
         firsts.append(low)
     return {
-        signature: _Rows(_tree(signature), indices, np.array(firsts, dtype=np.int64), values)
+        signature: Rows(_tree(signature), indices, np.array(firsts, dtype=np.int64), values)
         for signature, (indices, firsts) in found.items()
     }
 
 
-def _alike(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values) -> dict[bytes, _Rows] | None:
+def _alike(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values) -> dict[bytes, Rows] | None:
     """The one group of :func:`_grouped` when the elements are alike (a generated file): the
     same emptied text at even steps through it, their values at even steps through the values;
     None otherwise. The texts are compared as rows of one strided view of the bytes."""
@@ -252,7 +240,7 @@ def _alike(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values) 
         return None
     signature = blank[int(begins[0]) : int(stops[0])]
     firsts = first + spacing * np.arange(count, dtype=np.int64)
-    return {signature: _Rows(_tree(signature), list(range(count)), firsts, values)}
+    return {signature: Rows(_tree(signature), list(range(count)), firsts, values)}
 
 
 def _named(codes: np.ndarray, at: np.ndarray, opening: bytes) -> np.ndarray:
@@ -275,255 +263,16 @@ def _starts(blank: bytes, at: int, opening: bytes) -> bool:
 _NAME_ENDS = frozenset(b" \t\n\r>/")
 
 
-def _tree(signature: bytes) -> _Node:
+def _tree(signature: bytes) -> Node:
     """The element tree a signature describes (read as the file is: names as written)."""
-    return _Node.of(robot_xml.parse("(signature)", signature), [0])
-
-
-# --- the groups of an element tree --------------------------------------------------------------
-
-
-CHUNK = 1024
-"""Elements of a tree read together: a chunk with a wrong element is read again element by
-element, in document order (about 0.3 s for 1,024 links)."""
-
-
-def _tree_groups(elements: list) -> list[tuple[list[_Rows], Callable[[], list[_Rows]]]]:
-    """The XML ``elements`` (top-level links or joints) as chunks for :func:`_in_order`: each
-    :data:`CHUNK` of them in groups of one signature, and the same elements one a group."""
-    texts: list[bytes] = []
-    shapes, firsts, nodes = [], [], {}
-    for element in elements:
-        firsts.append(len(texts))
-        shape = []
-        for each in element.iter():
-            pairs = each.pairs
-            shape.append((each.tag, tuple(pairs[::2]), len(each.children)))
-            texts.extend(value.encode() for value in pairs[1::2])
-        shapes.append(tuple(shape))
-        if shapes[-1] not in nodes:
-            nodes[shapes[-1]] = _Node.of(element, [0])
-    lengths = np.array([len(text) for text in texts], dtype=np.int64)
-    ends = np.cumsum(lengths)
-    values = _Values(np.frombuffer(b"".join(texts), dtype=np.uint8), ends - lengths, ends)
-
-    def groups(chunk: range, alike: bool) -> list[_Rows]:
-        keyed: dict = {}
-        for index in chunk:
-            keyed.setdefault(shapes[index] if alike else index, []).append(index)
-        return [
-            _Rows(
-                nodes[shapes[rows[0]]],
-                rows,
-                np.array([firsts[row] for row in rows], dtype=np.int64),
-                values,
-                [elements[row] for row in rows],
-            )
-            for rows in keyed.values()
-        ]
-
-    chunks = [range(start, min(start + CHUNK, len(elements))) for start in range(0, len(elements), CHUNK)]
-    return [(groups(chunk, True), lambda chunk=chunk: groups(chunk, False)) for chunk in chunks]
-
-
-def _in_order(chunks: list, read: Callable[[_Rows], None], state: list | None = None) -> None:
-    """``read`` each group of each chunk, chunk by chunk; ``chunks``: (groups, the same elements
-    one a group, or None). A refusal in a chunk is worded for its first wrong element (InputError
-    of the first group of one that ``read`` refuses, ``state`` restored first); a chunk with no
-    groups of one leaves the wording to the caller."""
-    for groups, singly in chunks:
-        saved = None if state is None or singly is None else state[:]
-        try:
-            for rows in groups:
-                read(rows)
-        except InputError:
-            if singly is None:
-                raise
-            if state is not None:
-                state[:] = saved
-            for rows in singly():
-                read(rows)
-            raise
-
-
-# --- columns of values --------------------------------------------------------------------------
-
-
-class _Values:
-    """A document's attribute values, in document order: value k is ``codes[starts[k]:ends[k]]``."""
-
-    def __init__(self, codes: np.ndarray, starts: np.ndarray, ends: np.ndarray):
-        self.codes, self.starts, self.ends = codes, starts, ends
-
-    def __len__(self) -> int:
-        return len(self.starts)
-
-    def one(self, k: int) -> bytes:
-        return self.codes[self.starts[k] : self.ends[k]].tobytes()
-
-    def texts(self, which: np.ndarray) -> list[bytes]:
-        """The values of the indices ``which``."""
-        found = self._rows(which)
-        if found is None:
-            return [b""] * len(which)
-        return found.view(f"S{found.shape[1]}").reshape(-1).tolist()
-
-    def distinct(self, which: np.ndarray) -> tuple[list[bytes], np.ndarray]:
-        """The distinct values of the indices ``which`` (in order of first appearance) and where
-        each index's value is among them."""
-        found = self._rows(which)
-        if found is None:
-            return ([b""] if len(which) else []), np.zeros(len(which), dtype=int)
-        if np.all(found == found[0]):  # one text throughout (a generated file's column)
-            return [found[0].tobytes().rstrip(b"\0")], np.zeros(len(which), dtype=int)
-        texts = found.view(f"S{found.shape[1]}").reshape(-1).tolist()
-        places: dict[bytes, int] = {}
-        inverse = np.array([places.setdefault(text, len(places)) for text in texts], dtype=int)
-        return list(places), inverse
-
-    def _rows(self, which: np.ndarray) -> np.ndarray | None:
-        """The values of the indices ``which`` as rows of a (k, width) array of bytes, each
-        padded with NULs (no value holds one: XML has none); None when all are empty."""
-        starts, lengths = self.starts[which], self.ends[which] - self.starts[which]
-        width = int(lengths.max()) if len(lengths) else 0
-        if width == 0:
-            return None
-        first = int(starts.min())
-        codes, starts = self.codes[first:], starts - first  # (a few values near the end: a short copy)
-        if len(codes) < width + int(starts.max()):
-            codes = np.concatenate([codes, np.zeros(width, dtype=np.uint8)])
-        windows = np.lib.stride_tricks.as_strided(
-            codes, shape=(len(codes) - width + 1, width), strides=(1, 1)
-        )
-        found = windows[starts]
-        found[np.arange(width) >= lengths[:, None]] = 0
-        return found
-
-
-class _Node:
-    """One element of a signature: ``tag``, ``at`` (attribute name → place among the element's
-    values) and its child elements."""
-
-    __slots__ = ("tag", "at", "children")
-
-    def __init__(self, tag: str, at: dict[str, int]):
-        self.tag, self.at, self.children = tag, at, []
-
-    @staticmethod
-    def of(element, count: list[int]) -> _Node:
-        """The signature of an XML ``element``, its values counted from ``count[0]`` on (in
-        document order: each element's attributes as written, then its children's)."""
-        names = element.pairs[::2]
-        node = _Node(element.tag, {name: count[0] + k for k, name in enumerate(names)})
-        count[0] += len(names)
-        node.children = [_Node.of(each, count) for each in element.children]
-        return node
-
-    def child(self, tag: str) -> _Node | None:
-        for each in self.children:
-            if each.tag == tag:
-                return each
-        return None
-
-
-class _Rows:
-    """The elements of one signature (``top``): ``indices`` (each one's place among the links or
-    joints), ``firsts`` (where each one's values start in ``values``), the XML ``elements``
-    when read from a tree, and :meth:`where` each row is in messages."""
-
-    def __init__(self, top: _Node, indices: list[int], firsts: np.ndarray, values: _Values, elements=None):
-        self.top, self.indices, self.firsts, self.values, self.elements = (
-            top,
-            indices,
-            firsts,
-            values,
-            elements,
-        )
-        self.path, self.label = "", lambda k: None
-
-    def __len__(self) -> int:
-        return len(self.indices)
-
-    def where(self, k: int) -> Where:
-        """Where row ``k`` is, for messages (its label worked out only when shown)."""
-        return Where(self.path, lambda: self.label(k))
-
-    def column(self, place: int | None, default: bytes) -> list[bytes]:
-        """The text at ``place`` of each element (``default`` where the attribute is not written)."""
-        if place is None:
-            return [default] * len(self)
-        if len(self) == 1:  # (no arrays to set up for one)
-            return [self.values.one(int(self.firsts[0]) + place)]
-        return self.values.texts(self.firsts + place)
-
-    def words(self, place: int | None) -> list[str]:
-        """The text at ``place`` of each element as str (``""`` where the attribute is not written)."""
-        texts = self.column(place, b"")
-        joined = b"\n".join(texts)
-        if joined.count(b"\n") == len(texts) - 1:  # (one decoding for all)
-            return joined.decode().split("\n")
-        return [text.decode() for text in texts]
-
-    def distinct(self, place: int | None, default: bytes) -> tuple[list[bytes], np.ndarray]:
-        """The distinct texts at ``place`` (``default`` where not written) and where each row's is."""
-        if place is None:
-            return [default], np.zeros(len(self), dtype=int)
-        return self.values.distinct(self.firsts + place)
-
-    def numbers(self, place: int | None, default: bytes | None, count, what: str) -> np.ndarray:
-        """(k, 3 or ``count``) numbers at ``place`` (``default`` where not written; None: the
-        attribute is needed), as :func:`rbi.formats.robot.numbers` reads each text (``count`` (1,
-        3): one number stands for three); InputError, worded for the first wrong row."""
-        if place is None and default is None:
-            raise self.where(0).error(f"{what}: missing")
-        if len(self) == 1:  # one element (a file read again element by element): no arrays to set up
-            return np.array([self._numbers(0, self.column(place, default)[0].decode(), count, what)])
-        distinct, inverse = self.distinct(place, default)
-        for each in (count,) if isinstance(count, int) else (3, 1):
-            try:
-                return np.repeat(_numbers(distinct, each), 3 // each if count == (1, 3) else 1, axis=1)[
-                    inverse
-                ]
-            except _Doubt:
-                pass
-        texts = self.column(place, default)
-        return np.array([self._numbers(k, text.decode(), count, what) for k, text in enumerate(texts)])
-
-    def _numbers(self, k: int, text: str, count, what: str) -> list[float]:
-        found = numbers(self.where(k), text, what, count)
-        return found * 3 if len(found) == 1 and not isinstance(count, int) else found
-
-
-def _numbers(texts: list[bytes], count: int) -> np.ndarray:
-    """(len(texts), count) floats of texts each of ``count`` plain finite decimals (what
-    :func:`rbi.formats.robot.numbers` reads: signs, digits, a point and an exponent, apart by
-    spaces), none subnormal; _Doubt otherwise."""
-    if not texts:
-        return np.empty((0, count))
-    joined = b"\n".join(texts)
-    if _PLAIN.fullmatch(joined) is None:
-        raise _Doubt
-    codes = np.frombuffer(joined, dtype=np.uint8)
-    blank = (codes == 32) | (codes == 10)
-    starts = ~blank
-    starts[1:] &= blank[:-1]
-    per_text = np.bincount(np.cumsum(codes == 10)[starts], minlength=len(texts))
-    if len(per_text) != len(texts) or np.any(per_text != count):
-        raise _Doubt
-    try:
-        values = np.array(list(map(float, joined.split())), dtype=float).reshape(-1, count)
-    except ValueError:  # "1-2", "1e": characters of numbers that make none
-        raise _Doubt from None
-    if not np.all(np.isfinite(values)) or np.any((values != 0) & (np.abs(values) < SMALLEST_NORMAL)):
-        raise _Doubt
-    return values
+    return Node.of(robot_xml.parse("(signature)", signature), [0])
 
 
 # --- links --------------------------------------------------------------------------------------
 
 
 def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
-    """The links of ``chunks`` (:func:`_in_order`) as the :class:`LinkColumns` fields they give:
+    """The links of ``chunks`` (:func:`in_order`) as the :class:`LinkColumns` fields they give:
     names, inertials and geometry."""
     n = sum(len(rows) for groups, _ in chunks for rows in groups)
     if not n:
@@ -533,7 +282,7 @@ def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
     written, turned = np.zeros((n, 3, 3)), {}
     geoms: list[GeomColumn] = []
 
-    def read(rows: _Rows) -> None:
+    def read(rows: Rows) -> None:
         words = rows.words(rows.top.at.get("name"))
         for k, word in enumerate(words):
             if not word:
@@ -557,7 +306,7 @@ def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
         if geometry:
             geoms.extend(_geoms(rows, "collision", packages) + _geoms(rows, "visual", packages))
 
-    _in_order(chunks, read)
+    in_order(chunks, read)
     if len(set(names)) != n:
         refuse_shared_keys(path, [Link(index, name) for index, name in enumerate(names)])
     inertias = written.copy()
@@ -574,7 +323,7 @@ def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
     }
 
 
-def _poses(rows: _Rows, origin: _Node | None, what: str) -> tuple[np.ndarray, np.ndarray]:
+def _poses(rows: Rows, origin: Node | None, what: str) -> tuple[np.ndarray, np.ndarray]:
     """Each row's ``origin`` element (``what``: whose) as rotations (k, 3, 3) and translations
     (k, 3); the identity where there is none."""
     at = {} if origin is None else origin.at
@@ -589,14 +338,14 @@ def _poses(rows: _Rows, origin: _Node | None, what: str) -> tuple[np.ndarray, np
     return R, xyz
 
 
-def _angles(rows: _Rows, rpy: np.ndarray, what: str) -> np.ndarray:
+def _angles(rows: Rows, rpy: np.ndarray, what: str) -> np.ndarray:
     """``rpy`` (k, 3) once :func:`rbi.formats.robot.angles` takes each row."""
     for k in np.flatnonzero(np.any(np.abs(rpy) > MAX_ANGLE_RAD, axis=1)).tolist():
         angles(rows.where(k), rpy[k].tolist(), what)
     return rpy
 
 
-def _inertials(rows: _Rows, inertial: _Node) -> tuple[np.ndarray, ...]:
+def _inertials(rows: Rows, inertial: Node) -> tuple[np.ndarray, ...]:
     """Each row's ``<inertial>``: masses (k,) kg, centres of mass (k, 3) m, the inertias as
     written (k, 3, 3) kg·m² and the inertial frames' roll, pitch, yaw (k, 3) rad."""
     origin = inertial.child("origin")
@@ -620,7 +369,7 @@ def _inertials(rows: _Rows, inertial: _Node) -> tuple[np.ndarray, ...]:
     return masses, com, written, rpy
 
 
-def _geoms(rows: _Rows, tag: str, packages) -> list[GeomColumn]:
+def _geoms(rows: Rows, tag: str, packages) -> list[GeomColumn]:
     """The rows' ``tag`` (collision or visual) geoms, one column per element."""
     found = []
     for number, element in enumerate(each for each in rows.top.children if each.tag == tag):
@@ -642,7 +391,7 @@ def _geoms(rows: _Rows, tag: str, packages) -> list[GeomColumn]:
     return found
 
 
-def _meshes(rows: _Rows, shape: _Node, label: str, packages) -> list[tuple]:
+def _meshes(rows: Rows, shape: Node, label: str, packages) -> list[tuple]:
     """(file, scale) of each row's mesh."""
     filenames = rows.words(shape.at.get("filename"))
     for k, filename in enumerate(filenames):
@@ -657,7 +406,7 @@ def _meshes(rows: _Rows, shape: _Node, label: str, packages) -> list[tuple]:
     return found
 
 
-def _sizes(rows: _Rows, shape: _Node, label: str) -> np.ndarray:
+def _sizes(rows: Rows, shape: Node, label: str) -> np.ndarray:
     """Each row's shape size (k, m) in m; m = 0 for a kind with no volume."""
     names = _SHAPES.get(shape.tag, ())
     if not names:
@@ -677,7 +426,7 @@ def _sizes(rows: _Rows, shape: _Node, label: str) -> np.ndarray:
 
 
 def _joints(path: str, names: list[str], chunks: list) -> dict:
-    """The joints of ``chunks`` (:func:`_in_order`) as the :class:`LinkColumns` fields they
+    """The joints of ``chunks`` (:func:`in_order`) as the :class:`LinkColumns` fields they
     give, each in its child link's row."""
     n = len(names)
     rows_of = {name: row for row, name in enumerate(names)}
@@ -685,7 +434,7 @@ def _joints(path: str, names: list[str], chunks: list) -> dict:
     rotations, translations, axes = np.empty((n, 3, 3)), np.zeros((n, 3)), np.zeros((n, 3))
     rotations[:] = np.eye(3)
 
-    def read(rows: _Rows) -> None:
+    def read(rows: Rows) -> None:
         at, found = _joint_links(path, names, rows_of, parents, rows)
         words = rows.words(rows.top.at.get("type"))
         for k, word in enumerate(words):
@@ -705,7 +454,7 @@ def _joints(path: str, names: list[str], chunks: list) -> dict:
             for row, effort in zip(at, magnitudes):
                 efforts[row] = effort
 
-    _in_order(chunks, read, parents)
+    in_order(chunks, read, parents)
     order = _one_tree(parents)
     if len({name for name in joint_names if name}) != sum(map(bool, joint_names)) or order is None:
         _refuse_tree(path, names, parents, joint_names)
@@ -723,7 +472,7 @@ def _joints(path: str, names: list[str], chunks: list) -> dict:
     }
 
 
-def _joint_links(path: str, names: list[str], rows_of: dict, parents: list[int], rows: _Rows):
+def _joint_links(path: str, names: list[str], rows_of: dict, parents: list[int], rows: Rows):
     """The rows of the joints' child links (each given its parent in ``parents``) and the
     joints' names; InputError for a joint with no name, no parent or child, or a child that
     has a parent already."""
@@ -757,7 +506,7 @@ def _joint_links(path: str, names: list[str], rows_of: dict, parents: list[int],
     return at, words
 
 
-def _axes(rows: _Rows, axis: _Node | None, motions: list[str]) -> np.ndarray:
+def _axes(rows: Rows, axis: Node | None, motions: list[str]) -> np.ndarray:
     """Each joint's axis (k, 3) in its child link's frame: ``xyz`` as written (default 1 0 0),
     a unit vector for revolute and prismatic joints (worked out once per distinct text)."""
     place = None if axis is None else axis.at.get("xyz")
