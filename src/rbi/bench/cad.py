@@ -16,6 +16,7 @@ import tempfile
 from pathlib import Path
 
 import numpy as np
+import trimesh
 
 from rbi.bench import Progress
 from rbi.bench.timing import measure
@@ -92,21 +93,6 @@ def write_plate_step(path: Path) -> None:
             raise RuntimeError("OpenCascade could not write the plate's STEP file")
 
 
-def write_binary_stl(path: Path, vertices: np.ndarray, faces: np.ndarray) -> None:
-    """Triangles as binary STL (80-byte header, count, then normal, corners as float32 and a
-    two-byte attribute per triangle)."""
-    record = np.dtype([("normal", "<f4", (3,)), ("corners", "<f4", (3, 3)), ("attribute", "<u2")])
-    corners = vertices[faces]
-    data = np.zeros(len(faces), dtype=record)
-    normal = np.cross(corners[:, 1] - corners[:, 0], corners[:, 2] - corners[:, 0])
-    data["normal"] = normal / np.maximum(np.linalg.norm(normal, axis=1, keepdims=True), 1e-300)
-    data["corners"] = corners
-    with open(path, "wb") as stream:
-        stream.write(b"rbi bench: plate with 200 holes".ljust(80, b" "))
-        stream.write(np.uint32(len(faces)).tobytes())
-        stream.write(data.tobytes())
-
-
 def _errors(props, volume_mm3: float, closed) -> dict:
     """Relative errors of a loaded body (mm, g) against the closed form at steel's density."""
 
@@ -121,8 +107,9 @@ def _errors(props, volume_mm3: float, closed) -> dict:
     }
 
 
-def _load_cold(spec: Path, repeats: int) -> tuple[float, object]:
-    """Median seconds of the whole load of ``spec`` with the file caches emptied first."""
+def _row(kind: str, path: Path, spec: Path, repeats: int, closed, extra: dict) -> dict:
+    """One file's row: its size, the median seconds of the whole load of ``spec`` with the file
+    caches emptied first, and its errors against the closed form."""
 
     def load():
         step._CACHE.clear()
@@ -130,15 +117,9 @@ def _load_cold(spec: Path, repeats: int) -> tuple[float, object]:
         return load_body(spec)
 
     timing = measure(load, repeats, repeats, 0.0)
-    return timing.median, timing.result
-
-
-def _row(kind: str, path: Path, spec: Path, repeats: int, closed, extra: dict) -> dict:
-
-    seconds, body = _load_cold(spec, repeats)
-    part = body.spec.parts[0]
-    row = {"file": kind, "bytes": path.stat().st_size, "seconds": seconds, "repeats": repeats}
-    row |= _errors(body.props, part_volume(part), closed) | extra
+    part = timing.result.spec.parts[0]
+    row = {"file": kind, "bytes": path.stat().st_size, "seconds": timing.median, "repeats": repeats}
+    row |= _errors(timing.result.props, part_volume(part), closed) | extra
     if kind == "STEP":
         row["integration_error"] = part._integration_error
     return row
@@ -158,7 +139,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         step_path, stl_path = folder / "plate.step", folder / "plate.stl"
         write_plate_step(step_path)
         vertices, faces = step_triangles(step_path, [0], 0.001, STL_ANGLE[quick])
-        write_binary_stl(stl_path, vertices * 1000.0, faces)  # metres -> mm
+        trimesh.Trimesh(vertices * 1000.0, faces, process=False).export(stl_path)  # binary STL, mm
         specs = {name: folder / f"plate-{name}.yaml" for name in ("step", "stl")}  # written here
         for name, shape in (("step", "step"), ("stl", "mesh")):
             specs[name].write_text(

@@ -89,13 +89,14 @@ def spec_text(n_parts: int, shapes: str, seed: int = 0) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _python(code: str, *args: str, timeout: float) -> str:
-    proc = subprocess.run(
-        [sys.executable, "-c", code, *args], capture_output=True, text=True, timeout=timeout
-    )
+def _python(*args: str, timeout: float) -> tuple[float, str]:
+    """``(wall seconds, standard output)`` of this Python run with ``args``; RuntimeError when it
+    fails."""
+    start = time.perf_counter()
+    proc = subprocess.run([sys.executable, *args], capture_output=True, text=True, timeout=timeout)
     if proc.returncode != 0:
         raise RuntimeError(f"benchmark subprocess failed: {proc.stderr.strip()[-500:]}")
-    return proc.stdout.strip()
+    return time.perf_counter() - start, proc.stdout.strip()
 
 
 def yaml_load_ratio(n_parts: int, shape: str, timeout: float = 600.0) -> dict:
@@ -104,18 +105,9 @@ def yaml_load_ratio(n_parts: int, shape: str, timeout: float = 600.0) -> dict:
     with tempfile.TemporaryDirectory(prefix="rbi-yaml-bench-") as folder:
         path = Path(folder) / f"{shape}s.yaml"
         path.write_text(spec_text(n_parts, shape))
-        bare_s = float(_python(_BARE, str(path), timeout=timeout))
-        steps = json.loads(_python(_RBI, str(path), timeout=timeout))
-        start = time.perf_counter()
-        proc = subprocess.run(
-            [sys.executable, "-m", "rbi", "inertia", str(path), "--format", "json"],
-            capture_output=True,
-            text=True,
-            timeout=timeout,
-        )
-        process_s = time.perf_counter() - start
-        if proc.returncode != 0:
-            raise RuntimeError(f"rbi inertia failed on the generated spec: {proc.stderr.strip()[-500:]}")
+        bare_s = float(_python("-c", _BARE, str(path), timeout=timeout)[1])
+        steps = json.loads(_python("-c", _RBI, str(path), timeout=timeout)[1])
+        process_s = _python("-m", "rbi", "inertia", str(path), "--format", "json", timeout=timeout)[0]
         rbi_load_s = steps["read"] + steps["validate"] + steps["translate"]
         return {
             "parts": n_parts,

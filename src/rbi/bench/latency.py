@@ -88,14 +88,10 @@ def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[st
     return out
 
 
-def many_bodies(bodies: Path) -> list[str]:
-    """:data:`MANY_FILES` paths, the bundled YAML bodies in turn."""
-    found = [str(path) for path in sorted(bodies.glob("*.yaml"))]
-    return [found[i % len(found)] for i in range(MANY_FILES)] if found else []
-
-
 def many_files_command(bodies: Path, rbi: list[str]) -> tuple[str, list[str]]:
-    files = many_bodies(bodies)
+    """The bundled YAML bodies in turn, :data:`MANY_FILES` paths, in one ``rbi inertia``."""
+    found = [str(path) for path in sorted(bodies.glob("*.yaml"))]
+    files = [found[i % len(found)] for i in range(MANY_FILES)]
     return (
         f"rbi inertia (the bundled bodies in turn: {len(files)} files) --format json",
         rbi + ["inertia", *files, "--format", "json"],
@@ -270,7 +266,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         "baseline": rows[0]["command"],
         "commands": rows,
         "first_run": first,
-        "per_file": per_file_cost(rows, len(many_bodies(bodies))),
+        "per_file": per_file_cost(rows, MANY_FILES),
         "imports": imports,
         "bytecode_compiled": bytecode,
     }

@@ -166,10 +166,7 @@ def _warm_up_loader(folder: Path) -> None:
     """Import and exercise the loader once, so the timings exclude one-off import costs."""
 
     spec = folder / "warm.yaml"
-    spec.write_text(
-        "parts:\n  - {shape: point, mass: 1.0, position: [0, 0, 0]}\n"
-        "  - {shape: point, mass: 1.0, position: [1, 0, 0]}\n"
-    )
+    spec.write_text(spec_text(2, "point"))
     load_body(spec)
 
 
