@@ -139,7 +139,7 @@ def _latency_targets(lat: dict) -> list[dict]:
     baseline_text = f"{lat['baseline']}: {number(_seconds(lat['commands'][0]), 3)} s"
     return out + [
         _target(
-            f"`{row['command']}` as a whole process, {_clock(row)} time",
+            f"`{row['command']}` as a whole process, {'CPU' if 'cpu_ratio_to_numpy_import' in row else 'wall'} time",
             _ratio(row),
             row["target"],
             False,
@@ -726,11 +726,6 @@ LATENCY_COLUMNS = [
     ("× numpy import (wall)", lambda r: "" if "error" in r else _times(r.get("ratio_to_numpy_import"))),
     ("wall spread", lambda r: r["error"] if "error" in r else f"{100 * r['spread']:.0f}%"),
 ]
-
-
-def _clock(row: dict) -> str:
-    """Which time a latency row's target is judged on: CPU when it was measured, else wall."""
-    return "CPU" if "cpu_ratio_to_numpy_import" in row else "wall"
 
 
 def _ratio(row: dict) -> float | None:

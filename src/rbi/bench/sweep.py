@@ -23,8 +23,6 @@ import tempfile
 import time
 from pathlib import Path
 
-import numpy as np
-
 from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.bench.timing import clocked, run_process
@@ -50,14 +48,9 @@ def _axis_text(axis) -> str:
     return f"{axis[0]:g}:{axis[1]:g}:{axis[2]}"
 
 
-def _values(axis) -> list[float]:
-
-    return [float(v) for v in np.linspace(axis[0], axis[1], axis[2])]
-
-
 def sample_runs(g: dict, count: int) -> list[tuple[float, float]]:
     """``count`` (spin, tilt) points spread evenly over the grid, in run order."""
-    spins, tilts = _values(g["spin"]), _values(g["tilt"])
+    spins, tilts = (Grid(*g[axis]).values().tolist() for axis in ("spin", "tilt"))
     total = len(spins) * len(tilts)
     picks = sorted({int(round(i * (total - 1) / max(count - 1, 1))) for i in range(count)})
     return [(spins[k // len(tilts)], tilts[k % len(tilts)]) for k in picks]

@@ -43,22 +43,19 @@ def random_cloud(n: int, seed: int = 0) -> tuple[np.ndarray, np.ndarray]:
 
 
 def core_timings(masses: np.ndarray, positions: np.ndarray) -> dict:
-    """Median seconds of each step of the in-memory reduction."""
+    """Median seconds of each step of the in-memory reduction (``combine_s``: mass, centre of
+    mass and inertia together; ``total_s``: that and the principal axes)."""
 
     props = combine(masses, positions)
-    mass = measure(lambda: masses.sum())
-    com = measure(lambda: centre_of_mass(masses, positions))
-    inertia = measure(lambda: combine(masses, positions))
-    principal = measure(lambda: principal_axes(props.inertia_about_com))
-    total = measure(lambda: principal_axes(combine(masses, positions).inertia_about_com))
-    return {
-        "mass_s": mass.median,
-        "com_s": com.median,
-        "combine_s": inertia.median,  # mass, centre of mass and inertia together
-        "principal_s": principal.median,
-        "total_s": total.median,
-        "ns_per_point": 1e9 * total.median / masses.size,
+    steps = {
+        "mass_s": lambda: masses.sum(),
+        "com_s": lambda: centre_of_mass(masses, positions),
+        "combine_s": lambda: combine(masses, positions),
+        "principal_s": lambda: principal_axes(props.inertia_about_com),
+        "total_s": lambda: principal_axes(combine(masses, positions).inertia_about_com),
     }
+    out = {key: measure(step).median for key, step in steps.items()}
+    return out | {"ns_per_point": 1e9 * out["total_s"] / masses.size}
 
 
 def write_cloud(folder: Path, masses: np.ndarray, positions: np.ndarray) -> dict[str, Path]:

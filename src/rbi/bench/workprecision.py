@@ -19,7 +19,7 @@ runs for the fast methods). The chapter's set-up is ``rk45`` at rtol 1e-8 (atol 
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import asdict, dataclass
 from pathlib import Path
 
 import numpy as np
@@ -158,13 +158,9 @@ def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | Non
             rows.append(row(method, rtol, min_seconds, chapter_setup=chapter))
     progress(f"{case.name}: rbi default settings")
     default_row = row("default", None, 0.3, chapter_setup=False, default_settings=True)
-    return {
-        "name": case.name,
+    return asdict(case) | {
         "spec": f"bodies/{case.spec}",
         "omega0": list(case.omega0),
-        "tilt_deg": case.tilt_deg,
-        "duration": case.duration,
-        "samples": case.samples,
         "reference": reference_info,
         "kernel_load_seconds": load_seconds,
         "runs": rows,
