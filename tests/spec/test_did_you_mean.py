@@ -3,7 +3,7 @@
 import pytest
 
 from rbi.spec.errors import InputError
-from rbi.spec.load import load_spec
+from rbi.spec.load import read_yaml, spec_from_raw
 
 POINT = "parts: [{shape: point, mass: 1, position: [0, 0, 0]}]\n"
 
@@ -28,8 +28,9 @@ POINT = "parts: [{shape: point, mass: 1, position: [0, 0, 0]}]\n"
     ],
 )
 def test_unknown_field_is_named_with_a_suggestion(write_spec, text, where, suggestion):
+    path = write_spec(text)
     with pytest.raises(InputError) as info:
-        load_spec(write_spec(text))
+        spec_from_raw(str(path), read_yaml(path))
     message = str(info.value)
     assert where in message and "unknown field" in message
     assert f"did you mean '{suggestion}'" in message

@@ -52,6 +52,4 @@ def check_holes(path: str, spec, elements: MassProperties, holes: list[int]) -> 
         problem = body_problem(elements[solid + holes[: k + 1]], spec.units.mass)
         if problem is not None:
             raise InputError(f"{path}: {part_label(i, spec.parts[i])}: subtract: {problem}")
-    raise InputError(
-        f"{path}: the body with its holes is not physical"
-    )  # not reached: the last step is the whole body
+    raise InputError(f"{path}: the body with its holes is not physical")  # not reached: the last is the body

@@ -337,13 +337,6 @@ def _model_inside(annotation: Any) -> Any:
     return None
 
 
-def load_spec(path: str | Path):
-    """Read and validate a spec file (``-``: standard input); raises :class:`InputError` with
-    the first problem."""
-    path = str(path)
-    return spec_from_raw(spec_label(path), read_yaml(path))
-
-
 def spec_from_raw(path: str, raw: Any):
     """Validate already parsed YAML (``raw``) of the spec file ``path``; raises
     :class:`InputError` with the first problem."""
@@ -405,8 +398,7 @@ def load_body(path: str | Path) -> LoadedBody:
     for in the current folder) into core inputs."""
 
     path = str(path)
-    with collector_paused():
-        return body_from_spec(load_spec(path), spec_label(path))
+    return body_from_raw(read_yaml(path), spec_label(path))
 
 
 def body_from_raw(raw: Any, path: str) -> LoadedBody:

@@ -194,6 +194,10 @@ class PointPart(_Part):
 # --- shapes added for engineering parts (docs/spec.md gives each closed form) ---------------
 
 
+_ROTATION_FORMS = (("axis", "angle_deg"), ("quaternion",), ("euler_deg", "sequence"))
+"""The three ways of writing a rotation, by their fields."""
+
+
 class Rotation(_Strict):
     """How the part's own axes are turned into body axes, in one of three forms: ``axis`` and
     ``angle_deg`` (right-hand rule); ``quaternion`` ``[w, x, y, z]`` (normalised); or
@@ -222,32 +226,28 @@ class Rotation(_Strict):
 
     @model_validator(mode="after")
     def _one_form(self):
-        forms = [
-            name
-            for name, given in (
-                ("axis, angle_deg", self.axis is not None or self.angle_deg is not None),
-                ("quaternion", self.quaternion is not None),
-                ("euler_deg, sequence", self.euler_deg is not None or self.sequence is not None),
-            )
-            if given
-        ]
+        forms = [form for form in _ROTATION_FORMS if any(getattr(self, name) is not None for name in form)]
         if len(forms) != 1:
             raise ValueError(
                 "give exactly one form: {axis, angle_deg}, {quaternion} or {euler_deg, sequence}"
-                + (f" (got {' and '.join(forms)})" if forms else " (got none)")
+                + (f" (got {' and '.join(', '.join(form) for form in forms)})" if forms else " (got none)")
             )
-        if forms[0] == "axis, angle_deg":
-            if self.axis is None or self.angle_deg is None:
-                raise ValueError("axis, angle_deg: give both")
+        if any(getattr(self, name) is None for name in forms[0]):
+            raise ValueError(f"{', '.join(forms[0])}: give both")
+        if self.axis is not None:
             _nonzero(self, "axis", "the direction to turn about")
-        if forms[0] == "euler_deg, sequence" and (self.euler_deg is None or self.sequence is None):
-            raise ValueError("euler_deg, sequence: give both")
         if self.quaternion is not None and not any(self.quaternion):
             raise ValueError(
                 "quaternion: must not be zero [0, 0, 0, 0]: the identity (no turn) is [1, 0, 0, 0], "
                 "scalar first; any length"
             )
         return self
+
+
+def _turned_by(whose: str, about: str) -> Any:
+    """The optional ``rotation`` field of a part: how ``whose`` axes are turned into body axes,
+    ``about`` saying about which point (and the default)."""
+    return Field(None, description=f"How the {whose} axes are turned into body axes{about}.")
 
 
 def _hollow(what: str) -> Any:
@@ -274,9 +274,7 @@ class BoxPart(_Solid):
     shape: Literal["box"] = Field(description="A solid rectangular box.")
     center: Vector3 = Field(description="Centre of the box, body frame.")
     size: PositiveVector3 = Field(description="Edge lengths [a, b, c] along the box's own x, y, z axes.")
-    rotation: Rotation | None = Field(
-        None, description="How the box's axes are turned into body axes (about its centre); default: aligned."
-    )
+    rotation: Rotation | None = _turned_by("box's", " (about its centre); default: aligned")
 
 
 class SpherePart(_Solid):
@@ -344,10 +342,7 @@ class EllipsoidPart(_Solid):
     semi_axes: PositiveVector3 = Field(
         description="Semi-axes [a, b, c] along the ellipsoid's own x, y, z axes."
     )
-    rotation: Rotation | None = Field(
-        None,
-        description="How the ellipsoid's axes are turned into body axes (about its centre); default: aligned.",
-    )
+    rotation: Rotation | None = _turned_by("ellipsoid's", " (about its centre); default: aligned")
 
 
 class RodPart(_Part):
@@ -375,9 +370,7 @@ class CustomPart(_Part):
     about: Vector3 | None = Field(
         None, description="Point the inertia is given about, body frame; default: the centre of mass."
     )
-    rotation: Rotation | None = Field(
-        None, description="How the part's axes are turned into body axes; default: aligned."
-    )
+    rotation: Rotation | None = _turned_by("part's", "; default: aligned")
 
     _no_density = _without_volume("a custom part")
 
@@ -454,9 +447,7 @@ class MeshPart(_Solid):
         1.0, description="Mesh units to the spec's length unit (e.g. 0.001 for a mesh in mm in a spec in m)."
     )
     position: Vector3 = Field([0.0, 0.0, 0.0], description="Where the mesh's own origin goes, body frame.")
-    rotation: Rotation | None = Field(
-        None, description="How the mesh's axes are turned into body axes (about its origin)."
-    )
+    rotation: Rotation | None = _turned_by("mesh's", " (about its origin)")
     inertia: Literal["exact", "convex", "shell"] = Field(
         "exact",
         description=(
@@ -511,9 +502,7 @@ class StepPart(_Solid):
         ),
     )
     position: Vector3 = Field([0.0, 0.0, 0.0], description="Where the file's origin goes, body frame.")
-    rotation: Rotation | None = Field(
-        None, description="How the file's axes are turned into body axes (about its origin)."
-    )
+    rotation: Rotation | None = _turned_by("file's", " (about its origin)")
 
     _step_volume: float | None = PrivateAttr(None)  # L³ in the spec's units, set when the file is read
     _integration_error: float | None = PrivateAttr(None)  # relative, set when the file is read
@@ -566,9 +555,7 @@ class AssemblyPart(_Part):
     position: Vector3 = Field(
         [0.0, 0.0, 0.0], description="Where the sub-assembly's origin goes, body frame."
     )
-    rotation: Rotation | None = Field(
-        None, description="How the sub-assembly's axes are turned into body axes (about its origin)."
-    )
+    rotation: Rotation | None = _turned_by("sub-assembly's", " (about its origin)")
     mass: Positive | None = Field(
         None, description="Measured total mass (per copy): every part's mass and inertia scaled to it."
     )

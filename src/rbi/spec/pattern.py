@@ -53,5 +53,4 @@ def patterned(element: MassProperties, pattern) -> MassProperties:
         rotations = copy_rotations(count, pattern.axis)
         coms = through + np.einsum("kij,j->ki", rotations, com - through)
         inertias = np.einsum("kij,jl,kml->kim", rotations, inertia, rotations)
-    props = combine(np.full(count, element.mass), coms, inertias)
-    return props
+    return combine(np.full(count, element.mass), coms, inertias)

@@ -311,18 +311,24 @@ GIVEN_MASS: dict[type, Callable[[Any], MassProperties]] = {
 def _densities(parts: list, units: models.Units) -> tuple[np.ndarray, np.ndarray]:
     """``(mass_given, density)`` per part (NaN where not given); ``density`` NaN also where a
     material name cannot be looked up (the per-part path will say why)."""
-    looked_up = {
-        name: _material_density(name, units) for name in {p.density for p in parts} if isinstance(name, str)
-    }
-    density = [looked_up.get(p.density, p.density) if p.mass is None else None for p in parts]
-    return np.array([p.mass for p in parts], dtype=float), np.array(density, dtype=float)
-
-
-def _material_density(name: str, units: models.Units) -> float:
-    try:
-        return density_in_units(name, units.length, units.mass)
-    except (ValueError, KeyError):
-        return math.nan
+    n = len(parts)
+    mass = np.full(n, np.nan)
+    density = np.full(n, np.nan)
+    looked_up: dict[str, float] = {}
+    for i, part in enumerate(parts):
+        if part.mass is not None:
+            mass[i] = part.mass
+            continue
+        d = part.density
+        if isinstance(d, str):
+            if d not in looked_up:
+                try:
+                    looked_up[d] = density_in_units(d, units.length, units.mass)
+                except (ValueError, KeyError):
+                    looked_up[d] = math.nan
+            d = looked_up[d]
+        density[i] = math.nan if d is None else d
+    return mass, density
 
 
 class Columns:
@@ -575,7 +581,7 @@ def _warnings(spec: models.BodySpec, path: str) -> list[str]:
     notes = [f"{path}: {note}" for note in mesh_notes(spec)]
     inner = [w for part in spec.parts if isinstance(part, models.AssemblyPart) for w in part._loaded.warnings]
     dropped = [  # the sub-file's own ± do not reach this body's propagation
-        f"{path}: parts[{i}]{f' ({part.name})' if part.name else ''}: file: {part.file}: its numbers written"
+        f"{path}: {part_label(i, part)}: file: {part.file}: its numbers written"
         " with ± count as their values here, their uncertainty is not propagated (give the ± in this file)"
         for i, part in enumerate(spec.parts)
         if isinstance(part, models.AssemblyPart) and part._loaded.spec._uncertain

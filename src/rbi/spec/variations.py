@@ -34,6 +34,13 @@ class FieldPath:
     text: str
     steps: tuple[Any, ...]
 
+    def holder(self, raw: Any) -> Any:
+        """The list or mapping of ``raw`` that holds the number (the one its last step names)."""
+        node = raw
+        for step in self.steps[:-1]:
+            node = node[step]
+        return node
+
 
 def parse_path(text: str) -> list[Any]:
     """Split ``parts.bolt.position[0]`` into ``["parts", "bolt", "position", 0]``; ValueError
@@ -145,10 +152,7 @@ def with_values(raw: Any, paths: list[FieldPath], values) -> Any:
     for path, value in zip(paths, values):
         if value is None:
             continue
-        node = changed
-        for step in path.steps[:-1]:
-            node = node[step]
-        node[path.steps[-1]] = float(value)
+        path.holder(changed)[path.steps[-1]] = float(value)
     return changed
 
 
@@ -157,9 +161,7 @@ def current_values(raw: Any, paths: list[FieldPath]) -> list[float | None]:
     (:data:`OPTIONAL_NUMBERS`)."""
     values: list[float | None] = []
     for path in paths:
-        node = raw
-        for step in path.steps[:-1]:
-            node = node[step]
+        node = path.holder(raw)
         written = node[path.steps[-1]] if path.steps[-1] in node else None
         values.append(parse_plus_minus(written)[0] if isinstance(written, str) else _number(written))
     return values
