@@ -1,23 +1,78 @@
-"""A sub-assembly whose file writes numbers with ±: the body reads them as their values and
-says that their uncertainty is not propagated, rather than report u = 0 in silence."""
+"""A sub-assembly whose file writes numbers with ±: they are inputs of the body, named as
+``rbi parts --expand`` names the parts (``parts.ASSEMBLY/PART.field``), and the body's
+uncertainty equals that of the same parts written out flat (units converted, turned, moved,
+patterned), linear and Monte Carlo alike."""
 
 from __future__ import annotations
 
+import numpy as np
+import pytest
+
 import rbi
+from rbi.spec.load import load_body
+from rbi.spec.uncertain import linear, monte_carlo
 
-SUB = 'parts: [{name: blk, shape: box, size: [0.01, "0.02 ± 0.0001", 0.005], mass: "0.01 ± 0.0001", center: [0, 0, 0]}]\n'
+INNER = """units: {length: mm, mass: g}
+parts:
+  - {name: rod, shape: cylinder, density: "0.0078 ± 1%", radius: "2 ± 0.01", start: ["-10 ± 0.1", 0, 0], end: [10, 0, 0]}
+"""
+SUB = """units: {length: mm, mass: g}
+parts:
+  - {name: blk, shape: box, size: ["20 ± 0.1", 10, 5], mass: "10 ± 0.1", center: [5, 0, 0]}
+  - {name: pin, shape: point, mass: 3, position: ["30 ± 0.5", 0, "4 ± 0.2"]}
+  - {name: nest, shape: assembly, file: inner.yaml, position: [0, 0, 10]}
+"""
+TOP = """parts:
+  - {name: base, shape: box, size: [0.1, 0.1, 0.02], mass: "0.5 ± 0.01", center: [0, 0, 0]}
+  - {name: arm, shape: assembly, file: sub.yaml, position: [0.05, 0.02, 0.01], rotation: {axis: [0, 0, 1], angle_deg: 90}PATTERN}
+"""
+FLAT = """parts:
+  - {name: base, shape: box, size: [0.1, 0.1, 0.02], mass: "0.5 ± 0.01", center: [0, 0, 0]}
+  - {name: blk, shape: box, size: [0.01, "0.02 ± 0.0001", 0.005], mass: "0.01 ± 0.0001", center: [0.05, 0.025, 0.01]PATTERN}
+  - {name: pin, shape: point, mass: 0.003, position: [0.05, "0.05 ± 0.0005", "0.014 ± 0.0002"]PATTERN}
+  - {name: rod, shape: cylinder, density: "7800 ± 1%", radius: "0.002 ± 0.00001", start: [0.05, "0.01 ± 0.0001", 0.02], end: [0.05, 0.03, 0.02]PATTERN}
+"""
 
 
-def test_a_sub_assemblys_plus_minus_is_named_in_a_warning(tmp_path):
+@pytest.mark.parametrize("pattern", ["", ", pattern: {count: 3, step: [0, 0, 0.1]}"])
+def test_a_sub_assemblys_plus_minus_is_propagated_as_the_same_parts_written_flat(tmp_path, pattern):
+    for name, text in (("inner", INNER), ("sub", SUB), ("top", TOP), ("flat", FLAT)):
+        (tmp_path / f"{name}.yaml").write_text(text.replace("PATTERN", pattern))
+    top, flat = load_body(str(tmp_path / "top.yaml")), load_body(str(tmp_path / "flat.yaml"))
+    assert [i.path for i in top.spec._uncertain] == [
+        "parts.base.mass",
+        "parts.arm/blk.size[0]",
+        "parts.arm/blk.mass",
+        "parts.arm/pin.position[0]",
+        "parts.arm/pin.position[2]",
+        "parts.arm/nest/rod.density",
+        "parts.arm/nest/rod.radius",
+        "parts.arm/nest/rod.start[0]",
+    ]
+    nested, written = linear(top), linear(flat)
+    assert not nested.estimated.any()
+    np.testing.assert_allclose(nested.values, written.values, rtol=1e-12, atol=1e-15)
+    assert np.all(written.uncertainty[:13] > 0) or pattern  # every number moves (Iyz... of the flat body)
+    np.testing.assert_allclose(nested.uncertainty, written.uncertainty, rtol=1e-12, atol=1e-18)
+    np.testing.assert_allclose(
+        monte_carlo(top, 500, seed=4), monte_carlo(flat, 500, seed=4), rtol=1e-12, atol=1e-15
+    )
+    spread = rbi.load(tmp_path / "top.yaml").standard_uncertainty()
+    assert spread is not None and spread["mass"] == pytest.approx(float(written.uncertainty[0]), rel=1e-12)
+    assert not [w for w in rbi.load(tmp_path / "top.yaml").warnings if "±" in w]
+
+
+def test_a_measured_mass_keeps_the_sub_assemblys_mass_fixed(tmp_path):
+    (tmp_path / "inner.yaml").write_text(INNER)
     (tmp_path / "sub.yaml").write_text(SUB)
-    (tmp_path / "plain.yaml").write_text(
-        SUB.replace('"0.02 ± 0.0001"', "0.02").replace('"0.01 ± 0.0001"', "0.01")
+    (tmp_path / "top.yaml").write_text("parts: [{name: arm, shape: assembly, file: sub.yaml, mass: 0.02}]\n")
+    (tmp_path / "free.yaml").write_text("parts: [{name: arm, shape: assembly, file: sub.yaml}]\n")
+    found, free = (
+        linear(load_body(str(tmp_path / "top.yaml"))),
+        linear(load_body(str(tmp_path / "free.yaml"))),
     )
-    top = tmp_path / "top.yaml"
-    top.write_text(
-        "parts: [{name: s, shape: assembly, file: sub.yaml}, {name: t, shape: assembly, file: plain.yaml}]\n"
-    )
-    body = rbi.load(top)
-    assert body.mass == 0.02  # the values, 0.01 kg each
-    (warning,) = [w for w in body.warnings if "±" in w]
-    assert "parts[0] (s): file: sub.yaml" in warning and "not propagated" in warning
+    assert found.values[0] == pytest.approx(0.02, rel=1e-15)
+    assert found.uncertainty[0] < 1e-15 * 0.02  # the inputs only share the measured total out
+    # every part's mass scaled alike: the centre of mass is the sub-assembly's own
+    np.testing.assert_allclose(found.uncertainty[1:4], free.uncertainty[1:4], rtol=1e-12, atol=1e-18)
+    assert found.uncertainty[1] > 0 and found.uncertainty[3] > 0

@@ -10,13 +10,12 @@ from typing import Any
 import numpy as np
 
 from rbi.core.mass import MassProperties
-from rbi.core.uncertainty import body_stack
 from rbi.errors import ArgumentError, literal
 from rbi.sim.api import DEFAULT_RTOL, sample_times
 from rbi.sim.compiled import STATUS_DONE, integrator
 from rbi.sim.scene import scene_from_properties
 from rbi.sim.summary import sweep_figures_batch
-from rbi.spec.uncertain import drawn_parts, generator
+from rbi.spec.uncertain import drawn, generator
 
 FIGURES = {
     "tilt_min_deg": "min_tilt_deg",
@@ -35,8 +34,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     if isinstance(draws, bool) or not isinstance(draws, int) or not 2 <= draws <= 100_000:
         raise ArgumentError("draws", f"must be a whole number from 2 to 100,000 (got {literal(draws)})")
     body, scene = prepared.body, prepared.scene
-    _, masses, coms, inertias = drawn_parts(body, draws, generator(seed))
-    mass, com, inertia = body_stack(masses, coms, inertias, body.props.center_of_mass)
+    mass, com, inertia = drawn(body, draws, generator(seed))
     scenes = [
         scene_from_properties(
             MassProperties(mass[k], com[k], inertia[k]), body.pivot, scene.gravity, scene.spin_axis

@@ -20,7 +20,7 @@ from rbi.spec.errors import InputError, describe_error, format_location, part_la
 from rbi.spec.expect import Expect
 from rbi.spec.models import SHAPE_MODELS, AssemblyPart, BodySpec
 from rbi.spec.translate import body_from_spec
-from rbi.spec.uncertain import named_plus_minus, split_uncertain
+from rbi.spec.uncertain import named_plus_minus, split_uncertain, with_sub_assemblies
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
 if TYPE_CHECKING:
@@ -391,6 +391,7 @@ def read_assemblies(spec: BodySpec, path: str) -> None:
             finally:
                 _nesting.reset(token)
         part._loaded = read[real]
+    spec._uncertain = with_sub_assemblies(spec)  # a sub-assembly's ± are the body's too
 
 
 def load_body(path: str | Path) -> LoadedBody:

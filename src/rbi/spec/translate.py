@@ -580,13 +580,7 @@ def _warnings(spec: models.BodySpec, path: str) -> list[str]:
     """The spec's unit slips, its mesh notes and every sub-assembly's warnings."""
     notes = [f"{path}: {note}" for note in mesh_notes(spec)]
     inner = [w for part in spec.parts if isinstance(part, models.AssemblyPart) for w in part._loaded.warnings]
-    dropped = [  # the sub-file's own ± do not reach this body's propagation
-        f"{path}: {part_label(i, part)}: file: {part.file}: its numbers written"
-        " with ± count as their values here, their uncertainty is not propagated (give the ± in this file)"
-        for i, part in enumerate(spec.parts)
-        if isinstance(part, models.AssemblyPart) and part._loaded.spec._uncertain
-    ]
-    return unit_warnings(spec, path) + notes + inner + dropped
+    return unit_warnings(spec, path) + notes + inner
 
 
 def files_named(spec: models.BodySpec, path: str) -> tuple[str, ...]:

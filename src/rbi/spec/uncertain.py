@@ -8,14 +8,15 @@ or with a top-level ``uncertainty: tolerance`` the half-width of a uniform distr
 (standard uncertainty U/√3, GUM 4.3.7).
 
 :func:`part_stack` evaluates one part's mass properties for many values of its uncertain inputs
-at once (Monte Carlo draws, or the steps of the sensitivities): the common shapes as whole
-arrays (:data:`rbi.spec.translate.BUILDERS`), the others part by part through the same translation.
+at once (Monte Carlo draws, or the complex steps of the sensitivities): the common shapes as
+whole arrays (:data:`rbi.spec.translate.BUILDERS`), a mesh's or STEP file's solid as scalings
+of one built solid, a sub-assembly as its own body's stack (:func:`body_at`), each turned and
+patterned as a stack; the other shapes part by part through the same translation. A
+sub-assembly's ± are inputs of the body that holds it (:func:`with_sub_assemblies`).
 """
 
 from __future__ import annotations
 
-import copy
-import dataclasses
 import math
 import re
 import warnings
@@ -36,7 +37,8 @@ from rbi.core.uncertainty import (
 )
 from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.spec import models
-from rbi.spec.translate import BUILDERS, Columns, part_element, plain_part
+from rbi.spec.pattern import copy_motions
+from rbi.spec.translate import BUILDERS, Columns, part_element, plain_part, rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
 
 PLUS_MINUS = re.compile(r"±|\+/-|\+-")
@@ -47,6 +49,8 @@ NOT_NUMBERS = frozenset({"name", "shape", "file", "sequence", "repair", "solid",
 """Fields of a part that are not measured numbers: a ± there is refused."""
 KINDS = {"standard": "normal", "tolerance": "uniform"}
 """The top-level ``uncertainty:`` values and the distribution each gives a ±."""
+FIELDS = ("mass", "center_of_mass", "inertia_about_com")
+"""A part's or body's mass properties, as :class:`rbi.MassProperties` names them."""
 
 
 class UncertainInput(NamedTuple):
@@ -204,34 +208,130 @@ def batched(part: Any, inputs: list[UncertainInput]) -> bool:
     return type(part) in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in inputs)
 
 
+PLACED = (models.MeshPart, models.StepPart, models.AssemblyPart)
+"""Parts whose solid is a file's (mesh, STEP, sub-assembly), turned about its origin, moved to
+``position``."""
+
+
+def with_sub_assemblies(spec: models.BodySpec) -> tuple[UncertainInput, ...]:
+    """The spec's own uncertain inputs and, after each sub-assembly's own, the inputs of its
+    file as its body has them (its sub-assemblies' included), named as ``rbi parts --expand``
+    names the parts (``parts.ASSEMBLY/PART.mass``), with steps ``("file", j)``: its j-th."""
+    assemblies = [(i, part) for i, part in enumerate(spec.parts) if isinstance(part, models.AssemblyPart)]
+    if not assemblies:
+        return spec._uncertain
+    found = [each for each in spec._uncertain if each.steps[0] != "file"]
+    for i, part in assemblies:
+        prefix = f"parts.{part.name or i}/"
+        inner = enumerate(part._loaded.spec._uncertain)
+        found += [x._replace(path=prefix + x.path[6:], part=i, steps=("file", j)) for j, x in inner]
+    return tuple(sorted(found, key=lambda each: each.part))
+
+
+def _each_row(part: Any, field: str, inputs: list[UncertainInput], values: np.ndarray, make: Any) -> Any:
+    """``make(part.field)``, or one a row of ``values`` (stacked) when inputs are in the field."""
+    mine = [(k, x.steps[1:]) for k, x in enumerate(inputs) if x.steps[0] == field]
+    if not mine:
+        return make(getattr(part, field, None))
+    rows = []
+    for row in values:
+        node = getattr(part, field)
+        for k, steps in mine:
+            node = _replaced(node, steps, row[k].item())
+        rows.append(make(node))
+    return np.array(rows)
+
+
+def _motions(pattern: Any) -> np.ndarray:
+    """(copies, 3, 4): ``[R | t]`` of each copy of a pattern (:func:`rbi.spec.pattern.copy_motions`)."""
+    return np.array([np.column_stack((R, t)) for R, t in copy_motions(pattern)])
+
+
+def _file_stack(
+    part: Any, inputs: list[UncertainInput], values: np.ndarray, columns: Columns, spec: Any, path: str
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A mesh's, STEP file's or sub-assembly's mass, centre of mass and inertia for each row of
+    ``values``, in its own axes about its origin: a sub-assembly's body from its own inputs
+    (rescaled to its measured ``mass``), a file's solid as the scalings of one built solid
+    (mass ∝ density and scale³, or scale² for a shell; centre ∝ scale; inertia ∝ mass·scale²)."""
+    if isinstance(part, models.AssemblyPart):
+        inner = convert_body(part._loaded, spec.units.length, spec.units.mass)
+        mass, com, inertia = body_at(
+            inner, values[:, [k for k, x in enumerate(inputs) if x.steps[0] == "file"]]
+        )
+        factor = 1.0 if part.mass is None else columns.column("mass") / mass
+        return mass * factor, com, inertia * np.reshape(factor, (-1, 1, 1))
+    unit = (
+        {"mass": 1.0} if part.mass is not None else {} if isinstance(part.density, str) else {"density": 1.0}
+    )
+    base = part_element(
+        part.model_copy(update={"rotation": None, "pattern": None, "position": [0.0] * 3} | unit),
+        spec.units,
+        path,
+    )
+    scale = (
+        columns.column("scale") / part.scale if isinstance(part, models.MeshPart) else np.ones(len(columns))
+    )
+    if part.mass is not None:
+        mass = columns.column("mass")
+    else:
+        power = 2 if getattr(part, "inertia", None) == "shell" else 3
+        mass = base.mass * scale**power * (columns.column("density") if unit else 1.0)
+    per_mass = mass / base.mass * scale * scale
+    return mass, base.center_of_mass * scale[:, None], base.inertia_about_com * per_mass[:, None, None]
+
+
 def part_stack(
     spec: models.BodySpec, index: int, inputs: list[UncertainInput], values: np.ndarray, path: str
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Part ``index``'s mass, centre of mass and inertia about it, ``(n,)``, ``(n, 3)``,
     ``(n, 3, 3)``, file units, with its uncertain ``inputs`` set to each row of ``values``
-    ``(n, len(inputs))`` (a hole's mass and inertia negative, as the body counts it)."""
-    part = spec.parts[index]
-    sign = -1.0 if getattr(part, "subtract", False) else 1.0
-    kind = type(part)
-    if batched(part, inputs):
-        columns = Columns(
-            [part], np.zeros(len(values), int), {i.steps: values[:, k] for k, i in enumerate(inputs)}
-        )
-        with np.errstate(all="ignore"):
-            mass, com, inertia = BUILDERS[kind](columns, spec.units)
-        return sign * mass, com, sign * inertia
-    rows = []
-    for row in values:
-        changed = part
-        for k, each in enumerate(inputs):
-            changed = _replaced(changed, each.steps, float(row[k]))
-        with np.errstate(all="ignore"):
+    ``(n, len(inputs))``, real or complex (a hole's mass and inertia negative, as the body counts
+    it). The shapes of :data:`rbi.spec.translate.BUILDERS` and the files' solids are built for
+    all rows at once, then turned and patterned as one stack; the other shapes row by row."""
+    with np.errstate(all="ignore"):
+        mass, com, inertia = _part_stack(spec.parts[index], inputs, values, spec, path)
+    sign = -1.0 if getattr(spec.parts[index], "subtract", False) else 1.0
+    return sign * mass, com, sign * inertia
+
+
+def _part_stack(
+    part: Any, inputs: list[UncertainInput], values: np.ndarray, spec: models.BodySpec, path: str
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    if type(part) not in BUILDERS and not isinstance(part, PLACED):
+        rows = []
+        for row in values:
+            changed = part
+            for k, each in enumerate(inputs):
+                changed = _replaced(changed, each.steps, row[k].item())
             rows.append(part_element(changed, spec.units, path))
-    return (
-        sign * np.array([e.mass for e in rows]),
-        np.array([e.center_of_mass for e in rows]),
-        sign * np.array([e.inertia_about_com for e in rows]),
-    )
+        mass, com, inertia = (np.array([getattr(e, key) for e in rows]) for key in FIELDS)
+        return mass, com, inertia
+    own = {
+        i.steps: values[:, k]
+        for k, i in enumerate(inputs)
+        if i.steps[0] not in ("rotation", "pattern", "file")
+    }
+    columns = Columns([part], np.zeros(len(values), int), own)
+    n, R = len(values), _each_row(part, "rotation", inputs, values, rotation_matrix)
+    if isinstance(part, PLACED):
+        mass, com, inertia = _file_stack(part, inputs, values, columns, spec, path)
+    else:  # a box turns about its centre
+        mass, com, inertia = BUILDERS[type(part)](columns, spec.units)
+    if R is not None:
+        R = np.broadcast_to(R, (n, 3, 3))
+        inertia = np.einsum("nij,njk,nlk->nil", R, inertia, R)
+        com = np.einsum("nij,nj->ni", R, com) if isinstance(part, PLACED) else com
+    com = com + columns.column("position") if isinstance(part, PLACED) else com
+    if getattr(part, "pattern", None) is not None and part.pattern.count > 1:
+        count = part.pattern.count
+        motion = np.broadcast_to(_each_row(part, "pattern", inputs, values, _motions), (n, count, 3, 4))
+        copies = np.einsum("nkij,nj->nki", motion[..., :3], com) + motion[..., 3]
+        turned = np.einsum("nkij,njl,nkml->nkim", motion[..., :3], inertia, motion[..., :3])
+        mass, com, inertia = body_stack(
+            np.repeat(mass[:, None], count, axis=1), copies, turned, copies[0, 0].real
+        )
+    return mass, com, inertia
 
 
 STEPS = np.array([1.0, 0.5, 0.25])
@@ -257,36 +357,28 @@ def _complex_step(
     spec: models.BodySpec, index: int, group: list[UncertainInput], path: str
 ) -> np.ndarray | None:
     """(len(group), 13): the derivatives of part ``index``'s :func:`_flat` properties by a
-    complex step through its own builder (x + ih gives h ∂f/∂x exactly), or None when that
-    builder cannot carry complex numbers (a mesh or STEP file's properties; any float() on the
-    way)."""
-    part = spec.parts[index]
-    sign = -1.0 if getattr(part, "subtract", False) else 1.0
-    found = np.zeros((len(group), 13))
+    complex step through :func:`part_stack` (x + ih gives h ∂f/∂x exactly), or None when its
+    builder cannot carry complex numbers (any float() on the way)."""
+    h = 1e-20 * np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
+    values = np.array([i.value for i in group]) + np.diag(1j * h)  # row j: input j stepped
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("error", np.exceptions.ComplexWarning)
-        for j, each in enumerate(group):
-            h = 1e-20 * (abs(each.value) or 10.0 * each.u or 1.0)
-            changed = part
-            for k, other in enumerate(group):
-                changed = _replaced(changed, other.steps, other.value + (1j * h if k == j else 0.0))
-            try:
-                e = part_element(changed, spec.units, path)
-            except (TypeError, ValueError, np.exceptions.ComplexWarning):
-                return None
-            if not any(map(np.iscomplexobj, (e.mass, e.center_of_mass, e.inertia_about_com))):
-                return None  # the step was lost on the way
-            stack = (np.array([sign * e.mass]), e.center_of_mass[None], sign * e.inertia_about_com[None])
-            found[j] = _flat(stack)[0].imag / h
-    return found
+        try:
+            stack = part_stack(spec, index, group, values, path)
+        except (TypeError, ValueError, np.exceptions.ComplexWarning):
+            return None
+    if not any(map(np.iscomplexobj, stack)):
+        return None  # the step was lost on the way
+    return _flat(stack).imag / h[:, None]
 
 
-def part_derivatives(loaded: Any) -> tuple[np.ndarray, ...]:
+def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per uncertain input of the body ``loaded`` (a :class:`~rbi.spec.translate.LoadedBody`):
-    the index of its part, the derivatives of that part's mass (k,), centre of mass (k, 3)
-    and inertia about it (k, 3, 3) with respect to the input, each part evaluated with its own
-    inputs stepped (never the whole body), and whether each is only estimated (k,) (finite
-    differences, ~1e-9: a part whose builder cannot carry a complex step)."""
+    the index of its part, the derivatives (k, 13) of that part's mass, centre of mass and
+    inertia about it (:func:`_flat`, in ``loaded``'s units) with respect to the input, each part
+    evaluated with its own inputs stepped (never the whole body), and whether each is only
+    estimated (k,) (finite differences, ~1e-9: a part whose builder cannot carry a complex
+    step)."""
     inputs, spec = loaded.spec._uncertain, loaded.spec
     k = len(inputs)
     derivative, estimated = np.zeros((k, 13)), np.zeros(k, dtype=bool)
@@ -330,26 +422,39 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, ...]:
             mass, com, inertia = BUILDERS[kind](columns, spec.units)
         sign = np.array([-1.0 if getattr(spec.parts[i], "subtract", False) else 1.0 for i in indices])[rows]
         derivative[chosen] = _flat((sign * mass, com, sign[:, None, None] * inertia)).imag / h[:, None]
-    part = np.array([i.part for i in inputs], dtype=int)
-    return part, derivative[:, 0], derivative[:, 1:4], derivative[:, 4:].reshape(k, 3, 3), estimated
+    length, mass = _file_units_per_unit(loaded)
+    units = np.array([mass] + [length] * 3 + [mass * length * length] * 9)
+    return np.array([i.part for i in inputs], dtype=int), derivative / units, estimated
 
 
-def drawn_parts(
-    loaded: Any, n: int, rng: np.random.Generator
-) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
-    """``(draws (n, k), masses (n, P), centres (n, P, 3), inertias (n, P, 3, 3))``: every
-    uncertain input drawn n times (JCGM 101 §6) and each part built for every draw, the
-    parts without uncertain inputs repeated."""
+def body_at(loaded: Any, values: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The body ``loaded`` with its uncertain inputs set to each row of ``values`` (n, k), real
+    or complex: mass (n,), centre of mass (n, 3), inertia about it (n, 3, 3), in its units,
+    the n bodies built as one stack from their parts (those without inputs repeated)."""
+    inputs, elements = loaded.spec._uncertain, loaded.elements
+    length, mass = _file_units_per_unit(loaded)
+    n, kind = len(values), np.result_type(values, float)
+    masses, coms, inertias = (
+        np.repeat(getattr(elements, key)[None], n, axis=0).astype(kind) for key in FIELDS
+    )
+    for index, chosen in by_part(inputs).items():
+        m, c, inertia = part_stack(
+            loaded.spec, index, [inputs[k] for k in chosen], values[:, chosen], loaded.path
+        )
+        masses[:, index], coms[:, index], inertias[:, index] = (
+            m / mass,
+            c / length,
+            inertia / (mass * length**2),
+        )
+    return body_stack(masses, coms, inertias, loaded.props.center_of_mass)
+
+
+def drawn(loaded: Any, n: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """:func:`body_at` of n draws of every uncertain input (JCGM 101 §6)."""
     inputs = loaded.spec._uncertain
     draws = np.stack([i.draws(rng, n) for i in inputs], axis=1) if inputs else np.zeros((n, 0))
-    elements = loaded.elements
-    masses = np.repeat(elements.mass[None], n, axis=0)
-    coms = np.repeat(elements.center_of_mass[None], n, axis=0)
-    inertias = np.repeat(elements.inertia_about_com[None], n, axis=0)
-    for index, chosen in by_part(inputs).items():
-        stack = part_stack(loaded.spec, index, [inputs[k] for k in chosen], draws[:, chosen], loaded.path)
-        masses[:, index], coms[:, index], inertias[:, index] = stack
-    return draws, masses, coms, inertias
+    with np.errstate(all="ignore"):
+        return body_at(loaded, draws)
 
 
 QUANTITIES = (
@@ -384,11 +489,6 @@ class Linear:
         """The combined standard uncertainty of each quantity (GUM 5.1.2)."""
         return combined(self.sensitivities, self.u)
 
-    @property
-    def estimated_paths(self) -> list[str]:
-        """The inputs whose sensitivities are finite differences (~1e-9), not exact."""
-        return [i.path for i, e in zip(self.inputs, self.estimated) if e]
-
     def axes_deg(self) -> list[float | None]:
         """Each principal axis's standard angular uncertainty in degrees (None: undetermined)."""
         return axis_uncertainty_deg(self.values[13:], self.uncertainty[13:], self.turn, self.u)
@@ -404,26 +504,15 @@ def _file_units_per_unit(loaded: Any) -> tuple[float, float]:
 
 def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
     """:class:`Linear` of the body ``loaded``, its inertia and moments about ``point`` (a fixed
-    point of the body frame; default its centre of mass). A body converted to other units
-    (:func:`rbi.spec.units.convert_body`) is worked in its file's units, the results converted."""
-    units = loaded.spec.units
-    length, mass = _file_units_per_unit(loaded)
-    if (length, mass) != (1.0, 1.0):
-        found = linear(
-            convert_body(loaded, units.length, units.mass), None if point is None else point * length
-        )
-        scale = np.array([1 / mass] + [1 / length] * 3 + [1 / (mass * length * length)] * 12)
-        return dataclasses.replace(
-            found, values=found.values * scale, sensitivities=found.sensitivities * scale[:, None]
-        )
+    point of the body frame; default its centre of mass), in ``loaded``'s units."""
     inputs = loaded.spec._uncertain
     elements = loaded.elements
     masses, coms = np.array(elements.mass), np.array(elements.center_of_mass)
     props = loaded.props
     about = props.center_of_mass if point is None else np.asarray(point, dtype=float)
     inertia = props.inertia_about(about)
-    part, dm, dc, dI, estimated = part_derivatives(loaded)
-    dM, dC, dJ = body_derivatives(masses, coms, part, dm, dc, dI, about)
+    part, d, estimated = part_derivatives(loaded)
+    dM, dC, dJ = body_derivatives(masses, coms, part, d[:, 0], d[:, 1:4], d[:, 4:].reshape(-1, 3, 3), about)
     moments, axes, dmoments, turn = principal_derivatives(inertia, dJ)
     values = np.concatenate([[props.mass], props.center_of_mass, inertia.reshape(9), moments])
     sensitivities = np.concatenate([dM[None], dC.T, dJ.reshape(-1, 9).T, dmoments.T])
@@ -441,9 +530,8 @@ def generator(seed: int | None) -> np.random.Generator:
 def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
     """(n, q) samples of :data:`QUANTITIES` (about the centre of mass of each draw) from n draws
     of every uncertain input (JCGM 101), all n bodies computed as one stack."""
-    _, masses, coms, inertias = drawn_parts(loaded, n, generator(seed))
+    mass, com, inertia = drawn(loaded, n, generator(seed))
     with np.errstate(all="ignore"):
-        mass, com, inertia = body_stack(masses, coms, inertias, loaded.props.center_of_mass)
         moments = np.linalg.eigvalsh(inertia)
     return np.concatenate([mass[:, None], com, inertia.reshape(n, 9), moments], axis=1)
 
@@ -525,28 +613,28 @@ def budget(
         "method": method,
         "samples": samples if drawn is not None else None,
         "quantities": quantities,
-    } | ({"estimated_sensitivities": result.estimated_paths} if result.estimated.any() else {})
+    } | (
+        {"estimated_sensitivities": [x.path for x, e in zip(result.inputs, result.estimated) if e]}
+        if result.estimated.any()
+        else {}
+    )
 
 
-def part_uncertainties(loaded: Any) -> list[dict[str, Any] | None]:
+def part_uncertainties(loaded: Any) -> list[dict[str, Any]]:
     """Per element of ``loaded`` (its parts in file order), the standard uncertainty of its
     ``mass``, ``center_of_mass`` and ``inertia_about_com`` from its own inputs (in ``loaded``'s
     units; zeros for a part without ±)."""
-    inputs = loaded.spec._uncertain
-    part, dm, dc, dI, _ = part_derivatives(loaded)
-    u = np.array([i.u for i in inputs])
-    length, mass = _file_units_per_unit(loaded)
-    zero = {"mass": 0.0, "center_of_mass": [0.0] * 3, "inertia_about_com": [[0.0] * 3 for _ in range(3)]}
-    found: list[dict[str, Any] | None] = [copy.deepcopy(zero) for _ in range(len(loaded.elements))]
-    for index, chosen in by_part(inputs).items():
-        found[index] = {
-            "mass": float(combined(dm[chosen], u[chosen])) / mass,
-            "center_of_mass": (combined(dc[chosen].T, u[chosen]) / length).tolist(),
-            "inertia_about_com": (
-                combined(dI[chosen].transpose(1, 2, 0), u[chosen]) / (mass * length**2)
-            ).tolist(),
+    part, d, _ = part_derivatives(loaded)
+    variance = np.zeros((len(loaded.elements), 13))
+    np.add.at(variance, part, (d * np.array([i.u for i in loaded.spec._uncertain])[:, None]) ** 2)
+    return [
+        {
+            "mass": float(u[0]),
+            "center_of_mass": u[1:4].tolist(),
+            "inertia_about_com": u[4:].reshape(3, 3).tolist(),
         }
-    return found
+        for u in np.sqrt(variance)
+    ]
 
 
 def momentum_uncertainty(
