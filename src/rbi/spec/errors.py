@@ -42,6 +42,17 @@ def _part_field(raw: Any, index: int, key: str) -> Any:
     return part.get(key) if isinstance(part, dict) else None
 
 
+_MUST_BE = {
+    "finite_number": "a finite number",
+    **dict.fromkeys(("float_type", "float_parsing"), "a number"),
+    **dict.fromkeys(("int_type", "int_from_float", "int_parsing"), "a whole number"),
+    **dict.fromkeys(("model_type", "model_attributes_type", "dict_type"), "a mapping of fields"),
+    "string_type": "text",
+    "list_type": "a list of 3 numbers [x, y, z]",
+}
+"""What a value of the wrong type must be, by pydantic's error type."""
+
+
 def describe_error(error: dict[str, Any], known_fields: list[str] | None = None) -> str:
     """Plain-words message for one pydantic error dict."""
     kind = error["type"]
@@ -57,17 +68,13 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         return f"must be greater than {ctx.get('gt'):g} (got {shown(value)})"
     if tuple(error["loc"]) == ("parts",) and kind in ("too_short", "list_type"):
         return f"must be a non-empty list of parts (got {shown(value)})"
-    if kind == "finite_number":
-        return f"must be a finite number (got {shown(value)})"
+    if kind in _MUST_BE:
+        return f"must be {_MUST_BE[kind]} (got {shown(value)})"
     if kind in ("greater_than_equal", "less_than_equal"):
         bound = (
             f"at least {ctx.get('ge'):g}" if kind == "greater_than_equal" else f"at most {ctx.get('le'):g}"
         )
         return f"must be {bound} (got {shown(value)})"
-    if kind in ("float_type", "float_parsing"):
-        return f"must be a number (got {shown(value)})"
-    if kind in ("int_type", "int_from_float", "int_parsing"):
-        return f"must be a whole number (got {shown(value)})"
     polygon = next((k for k in ("outline", "holes") if k in error["loc"]), None)
     if kind in ("too_short", "too_long") and polygon is not None:  # a prism's polygons and their points
         loc = tuple(error["loc"])
@@ -79,8 +86,6 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         return f"must have {most} vertices (got {len(value) if isinstance(value, list) else shown(value)})"
     if kind in ("too_short", "too_long"):
         return f"must be a list of {ctx.get('min_length', ctx.get('max_length'))} numbers [x, y, z] (got {shown(value)})"
-    if kind == "list_type":
-        return f"must be a list of 3 numbers [x, y, z] (got {shown(value)})"
     if kind == "literal_error":
         return f"must be one of {ctx.get('expected')} (got {shown(value)})"
     if kind == "union_tag_invalid":
@@ -93,10 +98,6 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         )
     if kind == "union_tag_not_found":
         return "shape: missing required field (which solid is this part?)"
-    if kind in ("model_type", "model_attributes_type", "dict_type"):
-        return f"must be a mapping of fields (got {shown(value)})"
-    if kind == "string_type":
-        return f"must be text (got {shown(value)})"
     if kind == "value_error":
         return str(ctx.get("error", error["msg"]))
     return error["msg"]

@@ -146,6 +146,8 @@ Density = read_by(
 # --- inertia matrix: 3×3 or six components -------------------------------------------------
 
 _COMPONENTS = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+_MATRIX_ROWS = (("ixx", "ixy", "ixz"), ("ixy", "iyy", "iyz"), ("ixz", "iyz", "izz"))
+"""Where each of the six components stands in the symmetric matrix."""
 _MATRIX_FORMS = (
     "a 3×3 matrix [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] or a mapping "
     "{ixx, iyy, izz, ixy, ixz, iyz}"
@@ -161,21 +163,14 @@ def _inertia_matrix(value: Any) -> list[list[float]]:
         if missing:
             raise ValueError(f"{missing[0]}: missing required component")
         c = {k: _component(k, value.get(k, 0.0)) for k in _COMPONENTS}
-        return [
-            [c["ixx"], c["ixy"], c["ixz"]],
-            [c["ixy"], c["iyy"], c["iyz"]],
-            [c["ixz"], c["iyz"], c["izz"]],
-        ]
+        return [[c[k] for k in row] for row in _MATRIX_ROWS]
     if not (
         isinstance(value, list)
         and len(value) == 3
         and all(isinstance(r, list) and len(r) == 3 for r in value)
     ):
         raise ValueError(f"must be {_MATRIX_FORMS} (got {shown(value)})")
-    rows = []
-    for i, row in enumerate(value):
-        rows.append([_component(f"[{i}][{j}]", v) for j, v in enumerate(row)])
-    return rows
+    return [[_component(f"[{i}][{j}]", v) for j, v in enumerate(row)] for i, row in enumerate(value)]
 
 
 def _component(name: str, value: Any) -> float:

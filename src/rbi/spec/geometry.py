@@ -112,11 +112,9 @@ def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray, scale: float = 1.0
     for key in POINT_KEYS:
         if key in out:
             out[key] = (R @ (scale * np.asarray(out[key], dtype=float)) + t).tolist()
-    for key in DIRECTION_KEYS:
+    for key in (*DIRECTION_KEYS, "rotation"):  # directions and the part's axes turn, never move
         if key in out:
             out[key] = (R @ np.asarray(out[key], dtype=float)).tolist()
-    if "rotation" in out:
-        out["rotation"] = (R @ np.asarray(out["rotation"], dtype=float)).tolist()
     for key in ("vertices", "positions"):
         if key in out:
             out[key] = (scale * np.asarray(out[key], dtype=float) @ R.T + t).tolist()
