@@ -448,8 +448,6 @@ def cli_names_outside_all(cli: Path) -> set[tuple[str, str]]:
 
 
 CLI_NAMES_LEFT: set[tuple[str, str]] = {
-    ("animate_command.py", "output_target"),
-    ("animate_command.py", "rbi.api"),
     ("audit_command.py", "collector_paused"),
     ("audit_command.py", "output_target"),
     ("import_command.py", "check_distinct"),
@@ -467,14 +465,6 @@ CLI_NAMES_LEFT: set[tuple[str, str]] = {
     ("render.py", "numpy"),
     ("render.py", "plus_minus"),
     ("render.py", "vector_text"),
-    ("run_options.py", "DEFAULT_MAX_STEPS"),
-    ("show_command.py", "output_target"),
-    ("show_command.py", "rbi.api"),
-    ("simulate_command.py", "check_distinct"),
-    ("simulate_command.py", "numpy"),
-    ("simulate_command.py", "output_target"),
-    ("simulate_command.py", "rbi.api"),
-    ("simulate_command.py", "write_output"),
     ("sweep_command.py", "DEFAULT_MAX_STEPS"),
     ("sweep_command.py", "MAX_ROWS_SHOWN"),
     ("sweep_command.py", "available_cores"),

@@ -37,9 +37,17 @@ def _without(result: dict, keys=TIMINGS) -> dict:
             ["--spin", "200", "--tilt", "0.01"],
         ),
         ("tbar.yaml", {"omega": [0.01, 8.0, 0.01], "duration": 0.3}, ["--omega", "0.01,8,0.01"]),
+        (  # a file written: the JSON is the summary still (it said "out" too)
+            "top_bolted_toleranced.yaml",
+            {"spin": 200.0, "duration": 0.3, "draws": 4, "seed": 1, "out": "OUT"},
+            ["--spin", "200", "--draws", "4", "--seed", "1", "--out", "OUT"],
+        ),
     ],
 )
-def test_to_dict_is_what_simulate_prints_as_json(spec, settings, args):
+def test_to_dict_is_what_simulate_prints_as_json(spec, settings, args, tmp_path):
+    places = {"OUT": str(tmp_path / "run.csv")}
+    settings = {k: places.get(v, v) if isinstance(v, str) else v for k, v in settings.items()}
+    args = [places.get(a, a) for a in args]
     run = rbi.simulate(rbi.load(BODIES / spec), samples=31, **settings)
     printed = _cli_json("simulate", BODIES / spec, *args, "--duration", "0.3", "--samples", "31")
     mine = run.to_dict()

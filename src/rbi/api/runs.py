@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+import contextlib
+from collections.abc import Callable, Iterator, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
@@ -10,12 +11,14 @@ import numpy as np
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output, keywords_checked
-from rbi.errors import ArgumentError
+from rbi.errors import ArgumentError, SpecError, literal
+from rbi.files.output import OutputTarget, check_distinct, write_output
 from rbi.reprs import Result, Rows, pandas_module
 from rbi.runs.draws import input_uncertainty as spread
-from rbi.runs.run import RunSettings, RunSummary, SimulationRun, prepare_run, trajectory_csv
+from rbi.runs.run import RunSettings, RunSummary, prepare_run, trajectory_csv
 from rbi.sim.summary import columns_of
 from rbi.text import number, vector_text
+from rbi.viz.plots import plot_simulation
 
 
 @dataclass(frozen=True, repr=False)
@@ -57,8 +60,6 @@ class Trajectory(Result):
         frame), its tilt against time (a free body: each principal axis's angle to the angular
         momentum), degrees; ω in body axes, rad/s; the energy's drift. The file is replaced
         atomically."""
-        from rbi.viz.plots import plot_simulation  # matplotlib loads only to draw
-
         body, summary = self.body, self.summary
         if body is None or summary is None:
             raise ArgumentError("body", "plot needs the Body of the run: a Trajectory from rbi.simulate")
@@ -68,7 +69,7 @@ class Trajectory(Result):
         given = self.settings is not None and any(self.settings.omega or ())
         plot_simulation(
             self.columns() if self.dense is None else self.dense,
-            checked_output(path, ("png", "svg", "pdf"), body),
+            checked_output(path, PLOT_FORMATS, body),
             name=body.name or body.path,
             omega0=summary.initial["omega"],
             nudge_deg=summary.initial["nudge_deg"],
@@ -131,9 +132,9 @@ class Trajectory(Result):
         body and settings) in its summary, beside the error estimate: ``rbi simulate --draws``."""
         if self.body is None or self.summary is None or self.settings is None:
             raise ArgumentError("body", "needs the Body of the run: a Trajectory from rbi.simulate")
-        run = {k: v for k, v in vars(self.settings).items() if k not in ("samples", "error_estimate")}
-        spread = input_uncertainty(self.body, draws=draws, seed=seed, samples=self.settings.samples, **run)
-        return replace(self, summary=replace(self.summary, input_uncertainty=spread))
+        prepared = prepare_run(loaded_body(self.body, "body"), self.settings)
+        drawn = spread(prepared, prepared.settings.samples, draws, seed)
+        return replace(self, summary=replace(self.summary, input_uncertainty=drawn))
 
     def notes(self) -> list[str]:
         """The sentences under the tables: integrator, stability, closed form."""
@@ -235,6 +236,13 @@ def _accuracy_rows(s: RunSummary, labels: dict[str, str]) -> list[tuple[str, str
     return accuracy
 
 
+PLOT_FORMATS = ("png", "svg", "pdf")
+
+PLOT_SAMPLES = 8001
+"""Samples a plot draws (`simulate`'s ``plot``): enough to show nutation loops and the wobble of
+a fast top."""
+
+
 @keywords_checked
 def simulate(
     body: Body,
@@ -253,19 +261,21 @@ def simulate(
     check_budget: bool = True,
     progress: Callable[[float], None] | None = None,
     spin_axis: str | Sequence[float] | None = None,
-    plot_samples: int = 0,
+    out: Destination | None = None,
+    plot: Destination | None = None,
+    draws: int | None = None,
+    seed: int | None = None,
 ) -> Trajectory:
-    """Simulate the body: a heavy top on its pivot (a spec with ``pivot``) or a torque-free body
-    about its centre of mass — the run ``rbi simulate`` makes with the same settings. Returns
-    the `Trajectory`.
+    """Simulate the body: a heavy top on its pivot (a spec with ``pivot``) or a torque-free body about its
+    centre of mass — the run ``rbi simulate`` makes with the same settings. Returns the `Trajectory`.
 
     Args:
         body: the `Body`.
         spin: initial spin about the spin axis, rad/s.
-        omega: instead of ``spin``, the initial angular velocity (3,), body axes, rad/s,
-            whose direction is then the spin axis (unless ``spin_axis`` is given).
-        tilt_deg: the nudge: the body turned at t = 0 by this angle (degrees) about
-            ``tilt_axis``. The tilt reported is the spin axis's from the vertical.
+        omega: instead of ``spin``, the initial angular velocity (3,), body axes, rad/s, whose direction
+            is then the spin axis (unless ``spin_axis`` is given).
+        tilt_deg: the nudge: the body turned at t = 0 by this angle (degrees) about ``tilt_axis``. The
+            tilt reported is the spin axis's from the vertical.
         tilt_axis: the world axis of the nudge, ``"x"`` or ``"y"``.
         duration: simulated time, s.
         samples: samples, equally spaced from t = 0 (1: only the end).
@@ -277,21 +287,59 @@ def simulate(
         check_budget: refuse a run estimated past ``max_steps`` before it starts.
         error_estimate: estimate the error with a second run 1000× tighter.
         progress: called now and then with the fraction done (0…1).
-        spin_axis: the body-frame axis of ``spin`` and of the reported tilt and precession:
-            ``"x"``, ``"y"``, ``"z"`` (``"-y"``: reversed) or a direction (3,); None for
-            ``omega``'s direction, else the spec's ``spin_axis``, else `Body.spin_axis`'s default.
-        plot_samples: sample the same integration at this many times too, for
-            `Trajectory.plot` (``rbi simulate --plot`` draws 8001; default and exact methods).
+        spin_axis: the body-frame axis of ``spin`` and of the reported tilt and precession: ``"x"``,
+            ``"y"``, ``"z"`` (``"-y"``: reversed) or a direction (3,); None for ``omega``'s direction,
+            else the spec's ``spin_axis``, else `Body.spin_axis`'s default.
+        out: also write the CSV (`Trajectory.to_csv`) at this path: ``rbi simulate --out``.
+        plot: also draw the run at this path (`Trajectory.plot`, from the same integration sampled at
+            8001 times): ``rbi simulate --plot``. Both are checked before the run, written after it.
+        draws: for a spec with ±, the spread of that many runs with the inputs drawn, in the summary
+            (`Trajectory.with_input_uncertainty`; ``seed``: the same draws again): ``rbi simulate --draws``.
 
     Raises:
-        ValueError: a setting is out of range, named as this function's parameter
-            (``duration: must be ...``), or the run is estimated to exceed ``max_steps``.
-        SpecError: the run cannot be made (no mass, too many steps, overflow).
+        ValueError: a setting is out of range, named as this function's parameter (``duration: must
+            be ...``), or the run is estimated to exceed ``max_steps``.
+        SpecError: the run cannot be made (no mass, too many steps, overflow); ``out`` or ``plot`` not writable.
     """
-    settings = RunSettings(spin, omega, tilt_deg, tilt_axis, gravity, duration, samples, method, rtol)
-    settings = replace(settings, max_steps=max_steps, check_budget=check_budget, spin_axis=spin_axis)
-    run = prepare_run(loaded_body(body, "body"), replace(settings, error_estimate=error_estimate))
-    return _trajectory(run.simulate(progress, plot_samples), body)
+    csv_file, picture = _outputs(body, out, plot)
+    run = _simulated(body, RunSettings.of(locals()), progress, 0 if picture is None else PLOT_SAMPLES)
+    return _written(run.with_input_uncertainty(draws, seed) if draws is not None else run, csv_file, picture)
+
+
+def _written(
+    trajectory: Trajectory, csv_file: OutputTarget | None, picture: OutputTarget | None
+) -> Trajectory:
+    """``trajectory``, its CSV written at ``csv_file`` and its plot drawn at ``picture`` (None: not asked for)."""
+    if csv_file is not None:
+        with _as_parameter("out"):
+            write_output(csv_file, trajectory.to_csv())
+    if picture is not None:
+        with _as_parameter("plot"):
+            trajectory.plot(picture)
+    return trajectory
+
+
+def _outputs(body: Body, out: Destination | None, plot: Destination | None) -> list[OutputTarget | None]:
+    """The ``out`` and ``plot`` of `simulate` checked (None where not asked for), before any work."""
+    targets = [
+        None if path is None else checked_output(path, formats, body, name)
+        for path, formats, name in ((out, ("csv",), "out"), (plot, PLOT_FORMATS, "plot"))
+    ]
+    with _as_parameter("plot"):
+        check_distinct(targets)
+    return targets
+
+
+@contextlib.contextmanager
+def _as_parameter(name: str) -> Iterator[None]:
+    """A refusal of rbi's writer, which names an output as it was checked (by parameter: ``plot: ...``),
+    as the `ArgumentError` of ``name`` (a full disk, one file for two outputs)."""
+    try:
+        yield
+    except ArgumentError:
+        raise
+    except SpecError as exc:
+        raise ArgumentError(name, literal(str(exc).removeprefix(f"{name}: "), quoted=False)) from None
 
 
 def input_uncertainty(
@@ -306,8 +354,11 @@ def input_uncertainty(
     return spread(prepared, prepared.settings.samples, draws, seed)
 
 
-def _trajectory(run: SimulationRun, body: Body) -> Trajectory:
-    """The `Trajectory` of a finished run of ``body``."""
+def _simulated(
+    body: Body, settings: RunSettings, progress: Callable[[float], None] | None, dense: int
+) -> Trajectory:
+    """The `Trajectory` of ``body`` run with ``settings`` (sampled at ``dense`` more times for a plot)."""
+    run = prepare_run(loaded_body(body, "body"), settings).simulate(progress, dense)
     columns = run.columns
     return Trajectory(
         t=columns["t"],

@@ -6,22 +6,10 @@ from typing import Annotated
 
 import typer
 
-from rbi import api
-from rbi.cli.option_values import run_settings
+import rbi
 from rbi.cli.options import SpecFile, require_matplotlib
 from rbi.cli.render import progress_bar, say_warnings
-from rbi.cli.run_options import (
-    DurationOption,
-    GravityOption,
-    MaxStepsOption,
-    OmegaOption,
-    RtolOption,
-    SpinAxisOption,
-    SpinOption,
-    TiltAxisOption,
-    TiltOption,
-    YesOption,
-)
+from rbi.cli.run_options import run_options
 from rbi.cli.terminal import terminal_safe
 
 OutOption = Annotated[
@@ -48,21 +36,15 @@ FpsOption = Annotated[
 ]
 
 
+@run_options(
+    "spin", "omega", "tilt", "tilt_axis", "gravity", "duration", "rtol", "max_steps", "yes", "spin_axis"
+)
 def animate(
     file: SpecFile,
     out: OutOption,
-    spin: SpinOption = None,
-    omega: OmegaOption = None,
-    tilt: TiltOption = 0.0,
-    tilt_axis: TiltAxisOption = "y",
-    gravity: GravityOption = None,
-    duration: DurationOption = 4.0,
-    rtol: RtolOption = None,
-    max_steps: MaxStepsOption = None,
-    yes: YesOption = False,
+    settings: dict,
     speed: SpeedOption = 1.0,
     fps: FpsOption = 25,
-    spin_axis: SpinAxisOption = None,
 ) -> None:
     """Animate the body's motion, simulated as `rbi simulate` does.
 
@@ -77,14 +59,14 @@ def animate(
       rbi animate top_bolted.yaml --spin 200 --duration 2 --out top.gif
     """
 
-    settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
-    settings |= dict(duration=duration, rtol=rtol, max_steps=max_steps, speed=speed, fps=fps)
     gif = out.lower().endswith(".gif")  # rbi.animate checks the path (and its format)
     if gif:
         require_matplotlib("--out")
-    body = api.load(file)
+    body = rbi.load(file)
     say_warnings(body.warnings)
     with progress_bar("gif", "frames", show=gif) as progress:
-        made = api.animate(body, out, progress=progress.update if progress else None, **settings)
-    shown = f"{made.frames} {'frames' if gif else 'keyframes'} over {duration:g} s"
+        made = rbi.animate(
+            body, out, speed=speed, fps=fps, progress=progress.update if progress else None, **settings
+        )
+    shown = f"{made.frames} {'frames' if gif else 'keyframes'} over {settings['duration']:g} s"
     print(f"{terminal_safe(out)}: {shown}, largest tilt of the spin axis {made.max_tilt_deg:.3g}°")

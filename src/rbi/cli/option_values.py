@@ -18,7 +18,6 @@ OPTION_NAMES = {
     "package_paths": "--package-path",
     "links": "--link",
     "vary[]": "--vary {}",
-    "out": "--out FILE.csv",
     "path": "--out",
 }
 """The API's parameters whose option is not ``--`` + the name with ``-`` for ``_``."""

@@ -1,15 +1,18 @@
 """The options of the commands that run a simulation (``simulate``, ``animate``, ``sweep``),
-declared once. Kept apart from :mod:`rbi.cli.options` because their help quotes the step
-budget (``rbi.api.DEFAULT_MAX_STEPS``), which imports numpy (every command module that takes them
-imports numpy anyway)."""
+declared once; :func:`run_options` gives a command those of one run as ``rbi.simulate``'s
+keywords, with ``rbi.simulate``'s defaults."""
 
 from __future__ import annotations
 
-from typing import Annotated
+import functools
+import inspect
+from collections.abc import Callable
+from typing import Annotated, Any
 
 import typer
 
-from rbi.api import DEFAULT_MAX_STEPS
+import rbi
+from rbi.cli.option_values import run_settings
 
 SpinOption = Annotated[
     float | None,
@@ -69,9 +72,8 @@ MaxStepsOption = Annotated[
     typer.Option(
         "--max-steps",
         metavar="N",
-        help="Most integration steps this run may take (default "
-        f"{DEFAULT_MAX_STEPS:.0e}); a run estimated to need more is refused "
-        "before it starts.",
+        help="Most integration steps this run may take (default 1e+07, about ten seconds of the compiled "
+        "integrator); a run estimated to need more is refused before it starts.",
     ),
 ]
 YesOption = Annotated[
@@ -93,3 +95,53 @@ SamplesOption = Annotated[
         "summaries are taken over them.",
     ),
 ]
+
+RUN_OPTIONS = {
+    "spin": SpinOption,
+    "omega": OmegaOption,
+    "tilt": TiltOption,
+    "tilt_axis": TiltAxisOption,
+    "gravity": GravityOption,
+    "duration": DurationOption,
+    "samples": SamplesOption,
+    "rtol": RtolOption,
+    "max_steps": MaxStepsOption,
+    "yes": YesOption,
+    "spin_axis": SpinAxisOption,
+}
+"""The options of one run by parameter name; ``rbi.simulate`` names ``tilt`` ``tilt_deg`` and
+takes ``--yes`` as ``check_budget=False`` (:func:`rbi.cli.option_values.run_settings`)."""
+
+
+def run_options(*names: str) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """A command's decorator: the command takes the run options ``names`` (of
+    :data:`RUN_OPTIONS`, after its first parameter, each defaulting to ``rbi.simulate``'s) and
+    is given them as one ``settings``, ``rbi.simulate``'s keywords."""
+    defaults = inspect.signature(rbi.simulate).parameters
+    added = [
+        inspect.Parameter(
+            name,
+            inspect.Parameter.KEYWORD_ONLY,
+            annotation=RUN_OPTIONS[name],
+            default=False if name == "yes" else defaults["tilt_deg" if name == "tilt" else name].default,
+        )
+        for name in names
+    ]
+
+    def decorate(command: Callable[..., Any]) -> Callable[..., Any]:
+        signature = inspect.signature(command, eval_str=True)
+        first, *own = (
+            p.replace(kind=inspect.Parameter.KEYWORD_ONLY)
+            for p in signature.parameters.values()
+            if p.name != "settings"
+        )
+
+        @functools.wraps(command)
+        def with_settings(**given: Any) -> Any:
+            options = {name: given.pop(name) for name in names}
+            return command(settings=run_settings(**options), **given)
+
+        with_settings.__signature__ = signature.replace(parameters=[first, *added, *own])  # type: ignore[attr-defined]
+        return with_settings
+
+    return decorate

@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from rbi import api
+import rbi
 from rbi.cli.options import SpecFile, needs, require_matplotlib
 from rbi.cli.render import say_warnings
 from rbi.cli.terminal import terminal_safe
@@ -40,7 +40,7 @@ def show(
 
     if out.lower().endswith((".png", ".svg")):  # rbi.show checks the path (and its format)
         require_matplotlib("--out")
-    body = api.load(file)
+    body = rbi.load(file)
     say_warnings(body.warnings)
-    count = api.show(body, out, title=body.name or file)
+    count = rbi.show(body, out, title=body.name or file)
     print(f"{terminal_safe(out)}: {count} parts drawn")

@@ -7,29 +7,13 @@ from typing import Annotated
 
 import typer
 
-from rbi import SpecError, api
-from rbi.api import check_distinct, output_target, write_output
-from rbi.cli.option_values import run_settings
+import rbi
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require_matplotlib
-from rbi.cli.render import emit, progress_bar, refuse_non_finite
-from rbi.cli.run_options import (
-    DurationOption,
-    GravityOption,
-    MaxStepsOption,
-    OmegaOption,
-    RtolOption,
-    SamplesOption,
-    SpinAxisOption,
-    SpinOption,
-    TiltAxisOption,
-    TiltOption,
-    YesOption,
-)
+from rbi.cli.render import emit, progress_bar, tables_of
+from rbi.cli.run_options import run_options
 
-PLOT_FORMATS = ("png", "svg", "pdf")
-
-PLOT_SAMPLES = 8001
-"""Samples drawn in a plot: enough to show nutation loops and the wobble of a fast top."""
+STANDARD_OUTPUT = ("-", "/dev/stdout", "/dev/fd/1", "/proc/self/fd/1")
+"""The names of standard output ``--out`` takes (as rbi's writer knows them)."""
 
 METHOD_HELP = (
     "default: compiled adaptive DOP853 (fast, tight); rk45: scipy RK45 at rtol 1e-8 with a Python "
@@ -77,23 +61,26 @@ PlotOption = Annotated[
 ]
 
 
+@run_options(
+    "spin",
+    "omega",
+    "tilt",
+    "tilt_axis",
+    "gravity",
+    "duration",
+    "samples",
+    "rtol",
+    "max_steps",
+    "yes",
+    "spin_axis",
+)
 def simulate(
     file: SpecFile,
-    spin: SpinOption = None,
-    omega: OmegaOption = None,
-    tilt: TiltOption = 0.0,
-    tilt_axis: TiltAxisOption = "y",
-    gravity: GravityOption = None,
-    duration: DurationOption = 4.0,
-    samples: SamplesOption = 481,
+    settings: dict,
     out: OutOption = None,
     method: MethodOption = "default",
-    rtol: RtolOption = None,
     error_estimate: ErrorEstimateOption = True,
-    max_steps: MaxStepsOption = None,
-    yes: YesOption = False,
     plot: PlotOption = None,
-    spin_axis: SpinAxisOption = None,
     draws: DrawsOption = None,
     seed: SeedOption = None,
     format: FormatOption = OutputFormat.table,
@@ -111,71 +98,31 @@ def simulate(
       rbi simulate tbar.yaml --omega 0.01,0.01,3 --duration 20 --plot flip.png
     """
 
-    out_target, plot_target = _targets(file, out, plot)
-    if out_target is not None and out_target.is_stdout:
-        if format == OutputFormat.json:  # one JSON object on stdout, or the trajectory: not both
-            raise SpecError(
-                "--out -: the trajectory goes to standard output, where --format json prints its "
-                "object; write the trajectory to a file (--out FILE.csv) or leave out --format json"
-            )
-        format = OutputFormat.csv  # the trajectory is what goes to standard output
-    settings = run_settings(spin, omega, tilt, yes, spin_axis, tilt_axis=tilt_axis, gravity=gravity)
-    settings |= dict(duration=duration, samples=samples, method=method, rtol=rtol, max_steps=max_steps)
-    run = _run(file, settings | dict(error_estimate=error_estimate), format, (out_target, plot_target))
-    run = run if draws is None else run.with_input_uncertainty(draws, seed)  # beside the error estimate
-    trajectory_csv = run.to_csv() if out is not None or format == OutputFormat.csv else ""
-    result = run.to_dict()
-    if out is not None and not out_target.is_stdout:
-        result["out"] = out
-    if format != OutputFormat.csv:
-        refuse_non_finite(result, file)
-    if out_target is not None and not out_target.is_stdout:
-        write_output(out_target, trajectory_csv)
-    if plot_target is not None:
-        run.plot(plot_target)
-    if format == OutputFormat.csv:
-        sys.stdout.write(trajectory_csv)
-        return
-    emit(format.value, result, lambda: _table(run, result))
-
-
-def _targets(file: str, out: str | None, plot: str | None):
-    """The checked ``--out`` and ``--plot`` targets (None when not asked for); matplotlib is
-    required before any work when a plot is."""
-
-    out_target = (
-        None if out is None else output_target(out, "--out", ("csv",), inputs=[file], stdout_format="csv")
-    )
-    plot_target = None if plot is None else output_target(plot, "--plot", PLOT_FORMATS, inputs=[file])
-    check_distinct([out_target, plot_target])
+    streamed = out in STANDARD_OUTPUT  # the trajectory goes to standard output
+    if streamed and format == OutputFormat.json:  # one JSON object on stdout, or the trajectory: not both
+        raise rbi.SpecError(
+            "--out -: the trajectory goes to standard output, where --format json prints its "
+            "object; write the trajectory to a file (--out FILE.csv) or leave out --format json"
+        )
     if plot is not None:
         require_matplotlib()
-    return out_target, plot_target
-
-
-def _run(file: str, settings: dict, format: OutputFormat, targets):
-    """Load the spec and simulate it (sampled densely too for --plot, in the same integration),
-    with a progress bar on a terminal. Before simulating, the output ``targets`` are checked
-    again, against every file the body was read from (a point cloud, a mesh): rbi never
-    overwrites its input."""
-
-    body = api.load(file)
-    for target in targets:
-        if target is not None and not target.is_stdout:
-            output_target(target.given, target.option, (target.format,), inputs=body.files_read)
-    dense = PLOT_SAMPLES if targets[1] is not None else 0
+    format = OutputFormat.csv if streamed else format
+    body = rbi.load(file)
     with progress_bar("simulating", stdout=True, delay=0.5, show=format == OutputFormat.table) as progress:
-        return api.simulate(body, progress=progress, plot_samples=dense, **settings)
+        outputs = dict(out=None if streamed else out, plot=plot, draws=draws, seed=seed)
+        run = rbi.simulate(
+            body, **settings, method=method, error_estimate=error_estimate, progress=progress, **outputs
+        )
+    if format == OutputFormat.csv:
+        sys.stdout.write(run.to_csv())
+        return
+    written = [] if out is None else [f"Trajectory written to {out}."]
+    emit(format.value, run.to_dict(), lambda: _table(run, run.notes() + written), source=file)
 
 
-def _table(run, result: dict):
-    # not at top level: `rbi simulate --format csv` would load rich.text too
-    from rich.text import Text
+def _table(run, notes: list[str]):
+    """The run's tables (`Trajectory.rows`) and the sentences under them."""
+    from rich.console import Group  # not at top level: `rbi simulate --format csv` would load rich
+    from rich.text import Text  # not at top level: as rich.console
 
-    # not at top level: `rbi simulate --format csv` would load rbi.cli.tables too
-    from rbi.cli import tables
-
-    notes = run.notes() + ([f"Trajectory written to {result['out']}."] if "out" in result else [])
-    return tables.stack(
-        *(tables.quantities(rows.title, rows.cells) for rows in run.rows()), Text("\n".join(notes))
-    )
+    return Group(tables_of(run), Text("\n".join(notes)))

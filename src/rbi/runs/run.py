@@ -142,6 +142,11 @@ class RunSettings:
     spin_axis: str | Sequence[float] | None = None
     error_estimate: bool = True
 
+    @classmethod
+    def of(cls, values: dict[str, Any]) -> RunSettings:
+        """The settings among ``values`` (a function's keywords by name: ``locals()``)."""
+        return cls(**{f.name: values[f.name] for f in fields(cls) if f.name in values})
+
     def checked(self) -> RunSettings:
         """These settings checked (:class:`ArgumentError` naming the parameter, TypeError for
         what is no number), the tilt axis in lower case and omega as three floats."""
