@@ -308,34 +308,12 @@ GIVEN_MASS: dict[type, Callable[[Any], MassProperties]] = {
 # --- the plain parts of the common shapes, a stack per shape ------------------------------
 
 
-def _densities(parts: list, units: models.Units) -> tuple[np.ndarray, np.ndarray]:
-    """``(mass_given, density)`` per part (NaN where not given); ``density`` NaN also where a
-    material name cannot be looked up (the per-part path will say why)."""
-    n = len(parts)
-    mass = np.full(n, np.nan)
-    density = np.full(n, np.nan)
-    looked_up: dict[str, float] = {}
-    for i, part in enumerate(parts):
-        if part.mass is not None:
-            mass[i] = part.mass
-            continue
-        d = part.density
-        if isinstance(d, str):
-            if d not in looked_up:
-                try:
-                    looked_up[d] = density_in_units(d, units.length, units.mass)
-                except (ValueError, KeyError):
-                    looked_up[d] = math.nan
-            d = looked_up[d]
-        density[i] = math.nan if d is None else d
-    return mass, density
-
-
 class Columns:
-    """Parts' fields as columns, for the builders below: row r is part ``parts[index[r]]``, with
-    its own values but where ``values`` (by field, or ``(field, component)``) gives a column
-    (Monte Carlo draws and the steps of sensitivities, :mod:`rbi.spec.uncertain`). The parts
-    are of one shape and give their mass alike (``mass``, a density, or one material)."""
+    """Parts' fields as columns, what the builders below (:data:`BUILDERS`) read: row r is part
+    ``parts[index[r]]``, with its own values but where ``values`` (by field, or ``(field,
+    component)``) gives a column (Monte Carlo draws and the steps of sensitivities,
+    :mod:`rbi.spec.uncertain`). The parts are of one shape and give their mass alike (``mass``,
+    a density, or one material: :func:`_given_by`)."""
 
     def __init__(self, parts: list, index: np.ndarray, values: dict[tuple[Any, ...], np.ndarray]) -> None:
         self.parts, self.index, self.values = parts, np.asarray(index), values
@@ -362,20 +340,6 @@ class Columns:
         return self.column("density") * volume
 
 
-def _solid_masses(parts: Any, units: models.Units, volume: np.ndarray) -> np.ndarray:
-    if isinstance(parts, Columns):
-        return parts.masses(units, volume)
-    given, density = _densities(parts, units)
-    return np.where(np.isnan(given), density * volume, given)
-
-
-def _column(parts: Any, field: str) -> np.ndarray:
-    """The parts' ``field`` as a column: (n,) for a number, (n, 3) for a vector."""
-    if isinstance(parts, Columns):
-        return parts.column(field)
-    return np.array([getattr(p, field) for p in parts], dtype=float)
-
-
 def _axes(d: np.ndarray) -> tuple[np.ndarray, Any, np.ndarray]:
     """Each row's unit vector and length as one part's :func:`rbi.core.shapes.axis_between`
     gives them (``unit_vector``'s arithmetic, without its refusal: a zero or overflowing row
@@ -388,24 +352,24 @@ def _axes(d: np.ndarray) -> tuple[np.ndarray, Any, np.ndarray]:
 
 
 def _points(parts, units):
-    masses = _column(parts, "mass")
-    return masses, _column(parts, "position"), np.zeros((len(parts), 3, 3))
+    masses = parts.column("mass")
+    return masses, parts.column("position"), np.zeros((len(parts), 3, 3))
 
 
 def _cylinders(parts, units):
-    radius = _column(parts, "radius")
-    start, end = _column(parts, "start"), _column(parts, "end")
+    radius = parts.column("radius")
+    start, end = parts.column("start"), parts.column("end")
     u, length, norm = _axes(end - start)
-    mass = _solid_masses(parts, units, shapes.cylinder_volume(radius, norm))
+    mass = parts.masses(units, shapes.cylinder_volume(radius, norm))
     axial, transverse = shapes.cylinder_moments(mass, radius, length)
     return mass, shapes.middle(start, end), shapes.axisymmetric_inertia(axial, transverse, u)
 
 
 def _cones(parts, units):
-    radius = _column(parts, "radius")
-    apex, base = _column(parts, "apex"), _column(parts, "base")
+    radius = parts.column("radius")
+    apex, base = parts.column("apex"), parts.column("base")
     u, height, norm = _axes(base - apex)
-    mass = _solid_masses(parts, units, shapes.cone_volume(radius, norm))
+    mass = parts.masses(units, shapes.cone_volume(radius, norm))
     com = shapes.cone_center_of_mass(apex, u, height)
     axial, transverse = shapes.cone_moments(mass, radius, height)
     return mass, com, shapes.axisymmetric_inertia(axial, transverse, u)
@@ -421,16 +385,16 @@ def _sphere_volume(radius: float) -> float:
 
 
 def _spheres(parts, units):
-    radius = _column(parts, "radius")
+    radius = parts.column("radius")
     volume = np.array([_sphere_volume(r) for r in radius.tolist()])
-    mass = _solid_masses(parts, units, volume)
-    return mass, _column(parts, "center"), shapes.sphere_inertia(mass, radius)
+    mass = parts.masses(units, volume)
+    return mass, parts.column("center"), shapes.sphere_inertia(mass, radius)
 
 
 def _boxes(parts, units):
-    size = _column(parts, "size")
-    mass = _solid_masses(parts, units, shapes.box_volume(size))
-    return mass, _column(parts, "center"), shapes.box_inertia(mass, size)
+    size = parts.column("size")
+    mass = parts.masses(units, shapes.box_volume(size))
+    return mass, parts.column("center"), shapes.box_inertia(mass, size)
 
 
 BUILDERS = {
@@ -509,22 +473,30 @@ def _finite_element(index: int, part, units: models.Units, path: str) -> MassPro
     return element
 
 
+def _given_by(part: Any) -> Any:
+    """How a part gives its mass, alike for the parts of one :class:`Columns`: its ``mass``, a
+    density number, or the density of one material (by name)."""
+    if part.mass is not None:
+        return "mass"
+    return ("material", part.density) if isinstance(part.density, str) else "density"
+
+
 def stacked_parts(spec: models.BodySpec, path: str) -> tuple[MassProperties, list[int]]:
     """Every part's mass element (file units; a hole's mass and inertia negative) as one stack in
     file order, and the holes' indices. The plain parts of the common shapes are built a stack
-    per shape (:data:`BUILDERS`); the other parts, and any whose numbers fail there, one by one
+    per shape and way of giving the mass (:data:`BUILDERS` on :class:`Columns`); the other parts, and any whose numbers fail there, one by one
     (:func:`_finite_element`, which names the part)."""
     parts = spec.parts
     mass, com, inertia = np.zeros(len(parts)), np.zeros((len(parts), 3)), np.zeros((len(parts), 3, 3))
     built = np.zeros(len(parts), dtype=bool)
-    groups: dict[type, list[int]] = {}
+    groups: dict[tuple[type, Any], list[int]] = {}
     for i, part in enumerate(parts):
         if type(part) in BUILDERS and _plain(part, _fields(type(part))):
-            groups.setdefault(type(part), []).append(i)
-    for kind, indices in groups.items():
+            groups.setdefault((type(part), _given_by(part)), []).append(i)
+    for (kind, _), indices in groups.items():
         chosen = [parts[i] for i in indices]
         with np.errstate(all="ignore"):
-            m, c, I = BUILDERS[kind](chosen, spec.units)
+            m, c, I = BUILDERS[kind](Columns(chosen, np.arange(len(chosen)), {}), spec.units)
             ok = (
                 np.isfinite(m)
                 & np.all(np.isfinite(c), axis=1)
