@@ -83,26 +83,7 @@ def principal_axes(inertia: np.ndarray, rtol: float = DEGENERATE_RTOL) -> tuple[
     the axes are the coordinate axes.
     """
     moments, vectors = symmetric_eigen(np.asarray(inertia, dtype=float))
-    scale = float(np.max(np.abs(moments))) or 1.0
-    close = np.diff(moments) <= rtol * scale  # close[i]: moments i and i+1 coincide
-    axes = vectors.T.copy()
-    if close.all():
-        return moments, np.eye(3)
-    if close.any():
-        lone = 2 if close[0] else 0
-        u = _canonical_sign(axes[lone])
-        a = _closest_coordinate_axis_in_plane(u)
-        pair = (a, np.cross(u, a))
-        if lone == 2:
-            axes = np.array([pair[0], pair[1], u])
-        else:
-            axes = np.array([u, pair[0], pair[1]])
-        return moments, axes
-    axes[0] = _canonical_sign(axes[0])
-    axes[1] = _canonical_sign(axes[1])
-    third = np.cross(axes[0], axes[1])
-    axes[2] = third / np.linalg.norm(third)
-    return moments, axes
+    return moments, _chosen_axes(moments[None], vectors.T[None], rtol)[0]
 
 
 def symmetric_eigen(matrix: np.ndarray, max_sweeps: int = 30) -> tuple[np.ndarray, np.ndarray]:
@@ -156,7 +137,12 @@ def principal_axes_of_stack(
     and axes (n, 3, 3), chosen by the same rules, from LAPACK's ``eigh`` of the whole stack
     (the single body's Jacobi rotations keep a little more of the smallest moments' digits)."""
     moments, vectors = np.linalg.eigh(symmetrize(np.asarray(inertias, dtype=float)))
-    axes = np.swapaxes(vectors, -1, -2)
+    return moments, _chosen_axes(moments, np.swapaxes(vectors, -1, -2), rtol)
+
+
+def _chosen_axes(moments: np.ndarray, axes: np.ndarray, rtol: float) -> np.ndarray:
+    """The axes :func:`principal_axes` chooses, for each of a stack of ascending moments (n, 3)
+    and unit eigenvectors (rows, (n, 3, 3))."""
     scale = np.max(np.abs(moments), axis=-1, keepdims=True)
     close: np.ndarray = np.diff(moments, axis=-1) <= rtol * np.where(scale > 0.0, scale, 1.0)
     first, second = _canonical_sign(axes[:, 0]), _canonical_sign(axes[:, 1])
@@ -168,7 +154,7 @@ def principal_axes_of_stack(
     b = np.cross(u, a)
     pair = np.where(lone_last[..., None], np.stack([a, b, u], axis=1), np.stack([u, a, b], axis=1))
     chosen = np.where(np.any(close, axis=-1)[:, None, None], pair, distinct)
-    return moments, np.where(np.all(close, axis=-1)[:, None, None], np.eye(3), chosen)
+    return np.where(np.all(close, axis=-1)[:, None, None], np.eye(3), chosen)
 
 
 def _canonical_sign(v: np.ndarray) -> np.ndarray:

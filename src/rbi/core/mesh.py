@@ -81,13 +81,17 @@ class MeshDistribution(NamedTuple):
     the mass is the volume, L³, in modes ``exact`` and ``convex``, or the area, L², in
     ``shell``; the centre of mass is its centroid, L; the inertia about it is per unit density,
     L⁵ or L⁴, mesh axes). ``vertices`` and ``faces`` are the mesh integrated (the hull's, for
-    ``convex``). ``notes``: what the numbers deserve a word on (overlapping pieces)."""
+    ``convex``). ``notes``: what the numbers deserve a word on (overlapping pieces).
+    ``added_faces`` and ``added_area`` (L²): what :func:`repair_mesh` added to the mesh before
+    (0 when it added nothing, or was not asked)."""
 
     mode: str
     unit: MassProperties
     vertices: np.ndarray
     faces: np.ndarray
     notes: tuple[str, ...] = ()
+    added_faces: int = 0
+    added_area: float = 0.0
 
 
 class RepairedMesh(NamedTuple):
@@ -186,11 +190,14 @@ def _near_groups(points: np.ndarray, rtol: float) -> np.ndarray | None:
             f"({rtol:g} of the mesh's size): a degenerate mesh, not rounding noise"
         )
 
-    rows = np.nonzero(found)[0]
-    cols = neighbour[found]
-    graph = coo_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(len(points), len(points)))
-    _, group = connected_components(graph, directed=False)
-    return group  # labels follow the order of each group's first point
+    return _components(np.nonzero(found)[0], neighbour[found], len(points))  # numbered in the points' order
+
+
+def _components(rows: np.ndarray, cols: np.ndarray, n: int) -> np.ndarray:
+    """The connected component of each of ``n`` nodes joined by the edges ``rows``-``cols``,
+    numbered in the order of each component's first node."""
+    graph = coo_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(n, n))
+    return connected_components(graph, directed=False)[1]
 
 
 def _edge_uses(faces: np.ndarray, n_vertices: int) -> tuple[np.ndarray, np.ndarray]:
@@ -239,37 +246,37 @@ def _face_chunks(n_faces: int) -> Iterator[slice]:
         yield slice(start, min(start + FACE_CHUNK, n_faces))
 
 
-def _volume_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Signed volumes (F,), first moments (3,) summed and second moments ∫ r rᵀ dV (3, 3)
-    summed, of the tetrahedra joining the origin to each triangle ``corners`` (F, 3, 3)."""
+def _signed_volumes(corners: np.ndarray) -> np.ndarray:
+    """Signed volumes (F,) of the tetrahedra joining the origin to each triangle ``corners``
+    (F, 3, 3)."""
+    return np.einsum("ij,ij->i", corners[:, 0], np.cross(corners[:, 1], corners[:, 2])) / 6.0
+
+
+def _areas(corners: np.ndarray) -> np.ndarray:
+    """Areas (F,) of the triangles ``corners`` (F, 3, 3)."""
     a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
-    volume = np.einsum("ij,ij->i", a, np.cross(b, c)) / 6.0
-    total = a + b + c
-    first = (volume[:, None] * total / 4.0).sum(axis=0)
-    # ∫ r rᵀ dV over a tetrahedron with one corner at the origin: V/20 (Σ vᵢvᵢᵀ + s sᵀ), s = Σ vᵢ
-    second = (volume[:, None, None] * _outer_sum(a, b, c, total) / 20.0).sum(axis=0)
-    return volume, first, second
+    return 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
 
 
-def _outer_sum(a: np.ndarray, b: np.ndarray, c: np.ndarray, total: np.ndarray) -> np.ndarray:
-    return (
-        np.einsum("fi,fj->fij", a, a)
-        + np.einsum("fi,fj->fij", b, b)
-        + np.einsum("fi,fj->fij", c, c)
-        + np.einsum("fi,fj->fij", total, total)
-    )
+def _moments(measure: Callable[[np.ndarray], np.ndarray], first_share: float, second_share: float) -> Moments:
+    """Per-triangle measures (``measure`` of the corners (F, 3, 3)), their first moments (3,)
+    summed and second moments ∫ r rᵀ (3, 3) summed. Over a tetrahedron with one corner at the
+    origin (volume V) ∫ r dV = V s/4 and ∫ r rᵀ dV = V/20 (Σ vᵢvᵢᵀ + s sᵀ), s = Σ vᵢ; over a
+    triangle (area A) ∫ r dA = A s/3 and ∫ r rᵀ dA = A/12 (Σ vᵢvᵢᵀ + s sᵀ)."""
+
+    def moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
+        weight = measure(corners)
+        total = a + b + c
+        first = (weight[:, None] * total / first_share).sum(axis=0)
+        outer = sum(np.einsum("fi,fj->fij", v, v) for v in (a, b, c, total))
+        return weight, first, (weight[:, None, None] * outer / second_share).sum(axis=0)
+
+    return moments
 
 
-def _surface_moments(corners: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Areas (F,), first moments (3,) summed and second moments ∫ r rᵀ dA (3, 3) summed, of
-    the triangles ``corners`` (F, 3, 3)."""
-    a, b, c = corners[:, 0], corners[:, 1], corners[:, 2]
-    area = 0.5 * np.linalg.norm(np.cross(b - a, c - a), axis=1)
-    total = a + b + c
-    first = (area[:, None] * total / 3.0).sum(axis=0)
-    # ∫ r rᵀ dA over a triangle: A/12 (Σ vᵢvᵢᵀ + s sᵀ), s = Σ vᵢ
-    second = (area[:, None, None] * _outer_sum(a, b, c, total) / 12.0).sum(axis=0)
-    return area, first, second
+_volume_moments = _moments(_signed_volumes, 4.0, 20.0)
+_surface_moments = _moments(_areas, 3.0, 12.0)
 
 
 def _sums(
@@ -312,36 +319,22 @@ def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MassP
     return MassProperties(*_integrate(vertices, faces, _volume_moments), "mesh")
 
 
+def _total(vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, measure: Callable) -> float:
+    """The sum of ``measure`` over the triangles, their corners taken from ``reference``."""
+    chunks = _face_chunks(len(faces))
+    return sum((float(measure(vertices[faces[chunk]] - reference).sum()) for chunk in chunks), 0.0)
+
+
 def surface_area(vertices: np.ndarray, faces: np.ndarray) -> float:
     """Total area of the triangles (L²)."""
     vertices, faces = _as_arrays(vertices, faces)
-    total = 0.0
-    for chunk in _face_chunks(len(faces)):
-        c = vertices[faces[chunk]]
-        total += float(0.5 * np.linalg.norm(np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0]), axis=1).sum())
-    return total
-
-
-def _face_volumes(vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray) -> np.ndarray:
-    out = np.empty(len(faces))
-    for chunk in _face_chunks(len(faces)):
-        c = vertices[faces[chunk]] - reference
-        out[chunk] = np.einsum("ij,ij->i", c[:, 0], np.cross(c[:, 1], c[:, 2])) / 6.0
-    return out
+    return _total(vertices, faces, np.zeros(3), _areas)
 
 
 def enclosed_volume(vertices: np.ndarray, faces: np.ndarray) -> float:
     """Signed volume the mesh encloses (L³): positive when wound outward, negative inside out."""
     vertices, faces = _as_arrays(vertices, faces)
-    reference = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
-    return float(_face_volumes(vertices, faces, reference).sum())
-
-
-def bounding_box_volume(vertices: np.ndarray) -> float:
-    """Volume of the axis-aligned box around the vertices (L³): the scale against which an
-    enclosed volume counts as none."""
-    vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
-    return float(np.prod(vertices.max(axis=0) - vertices.min(axis=0)))
+    return _total(vertices, faces, 0.5 * (vertices.min(axis=0) + vertices.max(axis=0)), _signed_volumes)
 
 
 VOLUME_RTOL = 1e-12
@@ -410,7 +403,7 @@ def closed_mesh_check(vertices: np.ndarray, faces: np.ndarray) -> tuple[str | No
             f"both of their triangles (some faces point inward)"
         ), ()
     volume = enclosed_volume(vertices, faces)
-    if not abs(volume) > VOLUME_RTOL * bounding_box_volume(vertices):
+    if not abs(volume) > VOLUME_RTOL * float(np.prod(np.ptp(vertices, axis=0))):  # the bounding box's
         return "encloses no volume (the surface is flat or folds onto itself)", ()
     if volume < 0:
         return (
@@ -470,12 +463,9 @@ def _pieces_check(
 def _piece_of_face(n_vertices: int, faces: np.ndarray) -> np.ndarray:
     """For each face, the number of the piece (faces connected through shared vertices) it
     belongs to."""
-
     rows = np.concatenate([faces[:, 0], faces[:, 1]])
     cols = np.concatenate([faces[:, 1], faces[:, 2]])
-    graph = coo_matrix((np.ones(len(rows), dtype=np.int8), (rows, cols)), shape=(n_vertices, n_vertices))
-    _, vertex_piece = connected_components(graph, directed=False)
-    return vertex_piece[faces[:, 0]]
+    return _components(rows, cols, n_vertices)[faces[:, 0]]
 
 
 def _sample_faces(face_piece: np.ndarray, weight: np.ndarray, usable: np.ndarray, count: int) -> np.ndarray:

@@ -20,12 +20,12 @@ import re
 from array import array
 from collections import OrderedDict
 from pathlib import Path
-from typing import NamedTuple
 
 import numpy as np
 
 from rbi.core.mesh import (
     MeshDistribution,
+    RepairedMesh,
     arrays_problem,
     convex_hull_mesh,
     mesh_distribution,
@@ -33,6 +33,7 @@ from rbi.core.mesh import (
     weld_vertices,
 )
 from rbi.files.safe import open_input_file, read_input_file
+from rbi.formats.collada import parse_collada
 from rbi.formats.paths import file_key
 from rbi.memory import cached
 
@@ -52,20 +53,6 @@ MESH_FILE_TYPES = {".stl": "stl", ".obj": "obj", ".ply": "ply", ".dae": "dae", "
 """File extensions rbi reads as meshes, and the format of each."""
 
 
-class MeshSolid(NamedTuple):
-    """A checked mesh file, ready to place: ``distribution`` says where its mass goes per unit
-    density in mode ``mode`` (mesh units and axes); ``vertices`` and ``faces`` are the mesh
-    integrated (welded; repaired when asked; the hull's in mode ``convex``); ``added_faces``
-    and ``added_area`` (mesh units²) what repair added (0 when it added nothing)."""
-
-    mode: str
-    distribution: MeshDistribution
-    vertices: np.ndarray
-    faces: np.ndarray
-    added_faces: int
-    added_area: float
-
-
 _CACHE: OrderedDict[tuple, object] = OrderedDict()
 """Meshes already read in this process, keyed by resolved path, size and modification time
 (a sweep translates the same spec many times); the last few only, so memory stays bounded."""
@@ -73,28 +60,24 @@ _CACHE: OrderedDict[tuple, object] = OrderedDict()
 _CACHE_ENTRIES = 8
 
 
-def read_mesh_solid(path: Path, mode: str = "exact", repair: bool = False) -> MeshSolid:
+def read_mesh_solid(path: Path, mode: str = "exact", repair: bool = False) -> MeshDistribution:
     """Read, weld, optionally repair, check and integrate the mesh at ``path`` in ``mode``
-    (``exact``, ``convex`` or ``shell``; see :mod:`rbi.core.mesh`). Raises ``ValueError``
-    with a message that names what is wrong (never the file's content); the caller adds file
-    and part."""
+    (``exact``, ``convex`` or ``shell``; see :mod:`rbi.core.mesh`): where its mass goes per
+    unit density (mesh units and axes), the mesh integrated (welded; repaired when asked; the
+    hull's in mode ``convex``) and what repair added. Raises ``ValueError`` with a message that
+    names what is wrong (never the file's content); the caller adds file and part."""
     key = _file_key(path)
 
-    def make() -> MeshSolid:
-        vertices, faces = read_mesh_arrays(path)
-        added_faces, added_area = 0, 0.0
+    def make() -> MeshDistribution:
+        repaired = RepairedMesh(*read_mesh_arrays(path), 0, 0.0)
         if repair:
-            repaired = repair_mesh(vertices, faces)
-            vertices, faces = repaired.vertices, repaired.faces
-            added_faces, added_area = repaired.added_faces, repaired.added_area
+            repaired = repair_mesh(repaired.vertices, repaired.faces)
         try:
-            distribution = mesh_distribution(vertices, faces, mode)
+            distribution = mesh_distribution(repaired.vertices, repaired.faces, mode)
         except ValueError as exc:
-            prefix = "after repair, " if added_faces else ""
+            prefix = "after repair, " if repaired.added_faces else ""
             raise ValueError(f"mesh {prefix}{exc}") from None
-        return MeshSolid(
-            mode, distribution, distribution.vertices, distribution.faces, added_faces, added_area
-        )
+        return distribution._replace(added_faces=repaired.added_faces, added_area=repaired.added_area)
 
     return cached(_CACHE, _CACHE_ENTRIES, key + (mode, bool(repair)), make)
 
@@ -366,14 +349,9 @@ def _parse_ply(data: bytes) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _parse_dae(data: bytes) -> tuple[np.ndarray, np.ndarray]:
-    """Collada: every triangle its scene places, in metres (:mod:`rbi.formats.collada`)."""
-    # not at top level: `rbi inertia (mesh part)` would load rbi.formats.collada too
-    from rbi.formats.collada import parse_collada
-
-    vertices, faces = parse_collada(data, max_triangles=MAX_MESH_TRIANGLES)
-    if len(faces) > MAX_MESH_TRIANGLES:
-        raise _too_many(len(faces))
-    return vertices, faces
+    """Collada: every triangle its scene places, in metres (:mod:`rbi.formats.collada`), at most
+    :data:`MAX_MESH_TRIANGLES`."""
+    return parse_collada(data, max_triangles=MAX_MESH_TRIANGLES)
 
 
 # --- MSH --------------------------------------------------------------------------------------

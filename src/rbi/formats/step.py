@@ -94,26 +94,6 @@ STEP_TIME_LIMIT_S = 600.0
 """Wall-clock seconds the child process reading one file may take (a file at
 :data:`MAX_STEP_BYTES` takes some 100 s)."""
 
-_UNIT_METRES = {
-    "metre": 1.0,
-    "meter": 1.0,
-    "millimetre": 1e-3,
-    "millimeter": 1e-3,
-    "centimetre": 1e-2,
-    "centimeter": 1e-2,
-    "micrometre": 1e-6,
-    "micrometer": 1e-6,
-    "kilometre": 1e3,
-    "kilometer": 1e3,
-    "inch": 0.0254,
-    "foot": 0.3048,
-    "mile": 1609.344,
-    "mil": 2.54e-5,
-    "yard": 0.9144,
-    "microinch": 2.54e-8,
-}
-"""Length units as OpenCascade names a STEP file's unit, in metres."""
-
 _UNIT_SYMBOLS = {
     1.0: "m",
     1e-3: "mm",
@@ -312,7 +292,7 @@ def _triangles_here(path: Path, indices: list[int], deflection: float, angle: fl
     parts_v, parts_f, offset = [], [], 0
     for i in indices:
         _, _, solid, location = instances[i]
-        vertices, faces = _tessellate(solid.Moved(location), deflection, angle)
+        vertices, faces = _tessellate(ocp, solid.Moved(location), deflection, angle)
         parts_v.append(vertices * unit_metres)
         parts_f.append(faces + offset)
         offset += len(vertices)
@@ -352,6 +332,9 @@ def _check_text(path: Path) -> None:
 _OCP_NAMES = {
     "OCP.OCP.collections": ("*",),
     "OCP.BRep": ("BRep_Tool",),
+    "OCP.BRepMesh": ("BRepMesh_IncrementalMesh",),
+    "OCP.BRepTools": ("BRepTools",),
+    "OCP.IMeshTools": ("IMeshTools_MeshAlgoType_Delabella", "IMeshTools_Parameters"),
     "OCP.BRepGProp": ("BRepGProp",),
     "OCP.GProp": ("GProp_GProps",),
     "OCP.IFSelect": ("IFSelect_RetDone",),
@@ -362,7 +345,7 @@ _OCP_NAMES = {
     "OCP.TDataStd": ("TDataStd_Name",),
     "OCP.TDF": ("TDF_Label", "TDF_Tool"),
     "OCP.TDocStd": ("TDocStd_Document",),
-    "OCP.TopAbs": ("TopAbs_EDGE", "TopAbs_FACE", "TopAbs_SHELL", "TopAbs_SOLID"),
+    "OCP.TopAbs": ("TopAbs_EDGE", "TopAbs_FACE", "TopAbs_REVERSED", "TopAbs_SHELL", "TopAbs_SOLID"),
     "OCP.TopExp": ("TopExp", "TopExp_Explorer"),
     "OCP.TopLoc": ("TopLoc_Location",),
     "OCP.TopoDS": ("TopoDS",),
@@ -501,26 +484,27 @@ def _label_name(ocp, label) -> str | None:
 def _labelled_solids(ocp, document) -> list[tuple[str, Any, Any, Any]]:
     """(name, key of the distinct solid, the solid as its part holds it, its placement in the
     file's frame) of every solid instance in the product tree, depth first."""
-    tool = ocp.XCAFDoc_DocumentTool.ShapeTool_s(document.Main())
-    free = ocp.collections.Sequence_TDF_Label()
-    tool.GetFreeShapes(free)
     found: list[tuple[str | None, Any, Any, Any]] = []
     nodes = [0]
-    for i in range(1, free.Length() + 1):
-        _walk(ocp, free.Value(i), ocp.TopLoc_Location(), None, found, 0, nodes)
+    for label in _free_labels(ocp, document):
+        _walk(ocp, label, ocp.TopLoc_Location(), None, found, 0, nodes)
     return [
         (name if name else f"solid {i}", key, solid, at) for i, (name, key, solid, at) in enumerate(found)
     ]
 
 
+def _free_labels(ocp, document) -> list:
+    """The labels of the document's free shapes (the roots of its product tree)."""
+    free = ocp.collections.Sequence_TDF_Label()
+    ocp.XCAFDoc_DocumentTool.ShapeTool_s(document.Main()).GetFreeShapes(free)
+    return [free.Value(i) for i in range(1, free.Length() + 1)]
+
+
 def _no_solid(ocp, document) -> str:
     """What a file without a solid holds instead, as the end of its refusal."""
-    tool = ocp.XCAFDoc_DocumentTool.ShapeTool_s(document.Main())
-    free = ocp.collections.Sequence_TDF_Label()
-    tool.GetFreeShapes(free)
     shells = faces = 0
-    for i in range(1, free.Length() + 1):
-        shape = tool.GetShape_s(free.Value(i))
+    for label in _free_labels(ocp, document):
+        shape = ocp.XCAFDoc_ShapeTool.GetShape_s(label)
         for kind in (ocp.TopAbs_SHELL, ocp.TopAbs_FACE):
             explorer = ocp.TopExp_Explorer(shape, kind)
             while explorer.More():
@@ -685,39 +669,29 @@ def _placed(
     return props.transformed(rotation, [trsf.Value(i, 4) for i in (1, 2, 3)]), error
 
 
-def _tessellate(solid, deflection: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
+def _tessellate(ocp, solid, deflection: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
     """Triangles of one solid by BRepMesh (``deflection`` relative to each edge's size), in
     the file's unit, faces turned outwards."""
-    # OCP: optional (the 'cad' extra), imported only when used
-    from OCP.BRep import BRep_Tool
-    from OCP.BRepMesh import BRepMesh_IncrementalMesh
-    from OCP.BRepTools import BRepTools
-    from OCP.IMeshTools import IMeshTools_MeshAlgoType_Delabella, IMeshTools_Parameters
-    from OCP.TopAbs import TopAbs_FACE, TopAbs_REVERSED
-    from OCP.TopExp import TopExp_Explorer
-    from OCP.TopLoc import TopLoc_Location
-    from OCP.TopoDS import TopoDS
-
-    parameters = IMeshTools_Parameters()
+    parameters = ocp.IMeshTools_Parameters()
     parameters.Deflection, parameters.Relative, parameters.Angle = deflection, True, angle
     parameters.MeshAlgo = (
-        IMeshTools_MeshAlgoType_Delabella  # twice as fast as the default on plates with holes
+        ocp.IMeshTools_MeshAlgoType_Delabella  # twice as fast as the default on plates with holes
     )
-    BRepTools.Clean_s(solid)  # a triangulation made earlier at other settings
-    BRepMesh_IncrementalMesh(solid, parameters)
+    ocp.BRepTools.Clean_s(solid)  # a triangulation made earlier at other settings
+    ocp.BRepMesh_IncrementalMesh(solid, parameters)
     vertices, faces, offset = [], [], 0
-    explorer = TopExp_Explorer(solid, TopAbs_FACE)
+    explorer = ocp.TopExp_Explorer(solid, ocp.TopAbs_FACE)
     while explorer.More():
-        face = TopoDS.Face(explorer.Current())
+        face = ocp.TopoDS.Face(explorer.Current())
         explorer.Next()
-        location = TopLoc_Location()
-        mesh = BRep_Tool.Triangulation_s(face, location)
+        location = ocp.TopLoc_Location()
+        mesh = ocp.BRep_Tool.Triangulation_s(face, location)
         if mesh is None:
             continue
         transform = location.Transformation()
         points = np.array([_xyz(mesh.Node(i).Transformed(transform)) for i in range(1, mesh.NbNodes() + 1)])
         triangles = np.array([mesh.Triangle(i).Get() for i in range(1, mesh.NbTriangles() + 1)]) - 1
-        if face.Orientation() == TopAbs_REVERSED:
+        if face.Orientation() == ocp.TopAbs_REVERSED:
             triangles = triangles[:, ::-1]
         vertices.append(points)
         faces.append(triangles + offset)

@@ -160,7 +160,7 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
         solid = read_mesh_solid(file, part.inertia, part.repair)
     except ValueError as exc:
         raise ValueError(f"file: {part.file}: {exc}") from None
-    unit = solid.distribution.unit  # at density 1: the mass is the volume (or area)
+    unit = solid.unit  # at density 1: the mass is the volume (or area)
     scale = scalar(part.scale)  # complex in a complex step (rbi.spec.uncertain)
     measure = unit.mass * scale ** (2 if part.inertia == "shell" else 3)  # area or volume
     part._enclosed_volume = None if part.inertia == "shell" else measure
@@ -243,7 +243,7 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
             f"file: {part.file}: repair added {solid.added_faces} triangle{'s' * (solid.added_faces != 1)} "
             f"closing holes, {added:.6g} {units.length}² ({100 * share:.3g}% of the surface)"
         )
-    notes.extend(f"file: {part.file}: {note}" for note in solid.distribution.notes)
+    notes.extend(f"file: {part.file}: {note}" for note in solid.notes)
     return tuple(notes)
 
 
