@@ -465,12 +465,6 @@ CLI_NAMES_LEFT: set[tuple[str, str]] = {
     ("render.py", "numpy"),
     ("render.py", "plus_minus"),
     ("render.py", "vector_text"),
-    ("sweep_command.py", "DEFAULT_MAX_STEPS"),
-    ("sweep_command.py", "MAX_ROWS_SHOWN"),
-    ("sweep_command.py", "available_cores"),
-    ("sweep_command.py", "check_distinct"),
-    ("sweep_command.py", "output_target"),
-    ("sweep_command.py", "rbi.api"),
     ("uncertainty_command.py", "rbi.api"),
 }
 """What cli/ still imports that is not a name of ``rbi.__all__`` (rbi.names.CLI_TOOLS, the

@@ -19,6 +19,7 @@ import rbi
 from rbi.sweeps import store
 from rbi.sweeps.study import Study
 from tests.conftest import BODIES
+from tests.mesh_builders import box_mesh, write_binary_stl
 
 BOLTED = BODIES / "top_bolted.yaml"
 VARY = {"parts.bolt.mass": [0.01, 0.02]}
@@ -134,3 +135,35 @@ def test_a_spec_given_as_text_a_dict_or_on_stdin_is_hashed_by_its_parsed_form(tm
         monkeypatch.setattr(sys, "stdin", io.StringIO(text))
         source = "-"
     assert recorded_identity(source, tmp_path / "s.csv") == sha(parsed_form(raw))
+
+
+@pytest.mark.parametrize("changed", ["sub-assembly", "mesh"])
+def test_resume_refuses_a_changed_file_the_spec_reads(tmp_path, changed):
+    """rbi 5: the identity held the spec's bytes only, so --resume went on after a sub-assembly
+    or a mesh the spec reads had changed, mixing rows of two bodies. Now the bytes of each file
+    it reads are recorded too (``files_sha256``); the same files resume."""
+    write_binary_stl(tmp_path / "block.stl", *box_mesh((0.1, 0.2, 0.3)))
+    (tmp_path / "sub.yaml").write_text(
+        "parts:\n  - {name: bolt, shape: sphere, radius: 0.01, center: [0, 0, 0], mass: 0.02}\n"
+    )
+    spec = tmp_path / "top.yaml"
+    spec.write_text(
+        "pivot: [0, 0, 0]\nparts:\n  - {name: block, shape: mesh, file: block.stl, mass: 1}\n"
+        "  - {name: s, shape: assembly, file: sub.yaml, position: [0.05, 0, 0.1]}\n"
+    )
+    out = tmp_path / "s.csv"
+    vary = {"parts.block.mass": [1.0, 2.0]}
+    with pytest.raises(Stop):
+        rbi.sweep(spec, mass_properties=True, vary=vary, out=out, progress=stop_before_the_end)
+    recorded = json.loads(store.settings_path(out).read_bytes())
+    edited = tmp_path / ("sub.yaml" if changed == "sub-assembly" else "block.stl")
+    before = edited.read_bytes()
+    assert recorded["files_sha256"] == [sha((tmp_path / n).read_bytes()) for n in ("block.stl", "sub.yaml")]
+    if changed == "sub-assembly":
+        edited.write_text(before.decode().replace("0.02", "0.03"))
+    else:
+        write_binary_stl(edited, *box_mesh((0.1, 0.2, 0.4)))
+    with pytest.raises(rbi.SpecError, match="cannot resume: .*files_sha256"):
+        rbi.sweep(spec, mass_properties=True, vary=vary, out=out, resume=True)
+    edited.write_bytes(before)
+    assert len(rbi.sweep(spec, mass_properties=True, vary=vary, out=out, resume=True)) == 2

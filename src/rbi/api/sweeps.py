@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import importlib.util
 import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from typing import TYPE_CHECKING, Any
@@ -10,18 +11,36 @@ import numpy as np
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output, keywords_checked
-from rbi.errors import ArgumentError
-from rbi.files.output import OutputTarget
-from rbi.reprs import TableRepr, pandas_module
+from rbi.errors import ArgumentError, InputError, literal
+from rbi.files.output import OutputTarget, check_distinct
+from rbi.reprs import Result, Rows, pandas_module
 from rbi.spec.load import read_spec
-from rbi.sweeps.study import Study, SweepSettings, check_settings
+from rbi.sweeps.study import MAX_ROWS_SHOWN, Study, SweepSettings, check_settings
+from rbi.sweeps.tolerance import spread as spread_over
 from rbi.text import number
+from rbi.viz.plots import plot_map
 
 if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the sweep's modules load then)
     from rbi.sweeps.plan import Grid, Normal, Uniform
 
+UNITS = {
+    "spin": "rad/s",
+    "precession_rate_deg_s": "deg/s",
+    "energy_drift": "relative",
+}
+"""The unit of each summary column not named by its field (``..._deg`` is in degrees)."""
 
-class SweepTable(TableRepr):
+_LENGTH_FIELDS = frozenset(
+    "radius inner_radius outer_radius start_radius end_radius major_radius minor_radius length height "
+    "size semi_axes position center start end apex base through step pivot center_of_mass com".split()
+)
+_INERTIA_FIELDS = frozenset("ixx iyy izz ixy ixz iyz inertia moment".split())
+
+SHOWN_ROWS = 40
+"""Most runs a table shows: past them, the first and last half of them."""
+
+
+class SweepTable(Result):
     """The rows of a sweep, one per run in run order: ``len(table)`` runs, each column by name
     as a numpy array (``table["max_tilt_deg"]``; float columns hold NaN where a failed run has
     no value, ``status`` holds text), ``table.columns`` their names, ``table.records()`` the
@@ -36,9 +55,14 @@ class SweepTable(TableRepr):
         failed: how many runs failed (their ``status`` says why).
         spread: with ``mass_properties``, each quantity's percentiles (``p0``, ``p50``,
             ``p100``...) and standard deviation over the ok runs; else None.
+        out: the file the rows were written to (as given), or None.
+        cores: the cores the runs used on this machine (``workers``, at most the machine's;
+            None on a Dask cluster).
     """
 
-    def __init__(self, study: Any, rows: Sequence[Sequence[Any]] | None, body: Body) -> None:
+    def __init__(
+        self, study: Any, rows: Sequence[Sequence[Any]] | None, body: Body, out: OutputTarget | None = None
+    ) -> None:
         nominal = study.nominal
         self._body = body  # the swept Body: no map replaces a file it was read from
         self.columns: list[str] = list(study.columns)
@@ -51,22 +75,23 @@ class SweepTable(TableRepr):
         self.warnings: list[str] = list(nominal.warnings)
         mass_properties = study.settings.mass_properties and self.held
         self.spread: dict[str, dict[str, float]] | None = (
-            study.spread(self._rows) if mass_properties else None
+            spread_over(self.columns, self._rows, 1) if mass_properties else None
         )
         self.failed = sum(1 for row in self._rows if row[-1] != "ok")
+        self.out = None if out is None else out.given
+        self.cores: int | None = study.cores
+        self._drawn: str | None = None  # where plot() drew the map
 
     def plot(self, path: Destination) -> None:
         """Draw the stability map at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib),
         as ``rbi sweep --plot`` does: the largest tilt (degrees) over the first one or two
         swept axes, and the nominal top's sleeping threshold (rad/s) when the first is the spin.
         ValueError for a sweep of mass properties, with nothing swept, or whose rows are not held."""
-        from rbi.viz.plots import plot_map  # matplotlib loads only to draw
-
         if not self.held:
             raise ArgumentError("plot", "the map is drawn from the rows, and this table does not hold them")
-        plot_map(
-            self._study.stability_map(self._rows), checked_output(path, ("png", "svg", "pdf"), self._body)
-        )
+        target = checked_output(path, ("png", "svg", "pdf"), self._body, "plot")
+        plot_map(self._study.stability_map(self._rows), target)
+        self._drawn = target.given
 
     def __len__(self) -> int:
         return len(self._rows)
@@ -93,18 +118,43 @@ class SweepTable(TableRepr):
         """One dict per run, column name → value (None where a failed run has none)."""
         return [dict(zip(self.columns, row)) for row in self._rows]
 
+    def unit(self, column: str) -> str:
+        """The unit of a column or a spread quantity in the body's units: a summary's
+        (``deg``, ``rad/s``...), or a varied spec field's (``parts.bolt.mass`` in the mass unit,
+        ``parts.bolt.position[0]`` in the length unit, ``...angle_deg`` in degrees); empty for
+        a number without one (a run number, a direction, a count)."""
+        if column in UNITS:
+            return UNITS[column]
+        length, mass = self.units["length"], self.units["mass"]
+        field = column.rsplit(".", 1)[-1].split("[", 1)[0]
+        kind = field.split("_")[0] if field.startswith(("com_", "moment_")) else field
+        if kind == "mass":
+            return mass
+        if kind == "density":
+            return f"{mass}/{length}³"
+        if kind in _INERTIA_FIELDS:
+            return f"{mass}·{length}²"
+        if kind in _LENGTH_FIELDS:
+            return length
+        return "deg" if field.endswith("_deg") else ""
+
     def to_dict(self) -> dict[str, Any]:
-        """What ``rbi sweep --format json`` prints (JSON-ready, less the files it wrote): name,
-        units, warnings, count, columns and, when the rows are held, the runs as objects and
-        how many failed; a study of mass properties adds each quantity's ``spread``."""
+        """What ``rbi sweep --format json`` prints (JSON-ready): name, units, warnings, count,
+        columns and, when the rows are held, the runs as objects and how many failed; the
+        ``out`` file; a study of mass properties adds each quantity's ``spread``; the map's
+        file (``plot``) once drawn."""
         result: dict[str, Any] = dict(
             name=self.name, units=self.units, warnings=self.warnings, count=self.count
         )
         result["columns"] = self.columns
         if self.held:
             result |= {"runs": self.records(), "failed": self.failed}
+        if self.out is not None:
+            result["out"] = self.out
         if self.spread is not None:
             result["spread"] = self.spread
+        if self._drawn is not None:
+            result["plot"] = self._drawn
         return result
 
     def csv_rows(self) -> list[dict[str, Any]]:
@@ -118,17 +168,32 @@ class SweepTable(TableRepr):
     def __repr__(self) -> str:
         return f"<rbi.SweepTable {len(self)} runs × {len(self.columns)} columns, {self.failed} failed>"
 
-    def _table(self) -> tuple[str, list[list[str]], list[str]]:
-        shown: list[list[Any] | None] = list(self._rows)
-        if len(shown) > 20:
-            shown = shown[:10] + [None] + shown[-10:]
-        rows = [
-            ["…"] * len(self.columns)
-            if row is None
-            else [v if isinstance(v, str) else number(v) for v in row]
-            for row in shown
-        ]
-        return f"{self.name or 'sweep'} — {len(self)} runs, {self.failed} failed", rows, self.columns
+    def rows(self) -> list[Rows]:
+        """The table ``print()``, a notebook and ``rbi sweep`` show: a study's spread of the
+        mass properties (min, median, max, standard deviation) or the runs (the first and last
+        20 of more than 40)."""
+        if self.spread:
+            stats = ("p0", "p50", "p100", "std")
+            cells = [(k, self.unit(k), *(number(s[q], 4) for q in stats)) for k, s in self.spread.items()]
+            columns = ("quantity", "unit", "min", "median", "max", "std")
+            return [Rows("Spread over the ok runs", columns, cells, left=2)]
+        half = SHOWN_ROWS // 2
+        shown = self._rows if len(self) <= SHOWN_ROWS else [*self._rows[:half], None, *self._rows[-half:]]
+        cells = [("…",) * len(self.columns) if row is None else tuple(map(_cell, row)) for row in shown]
+        title = f"{self.name or 'sweep'} — {len(self)} runs, {self.failed} failed"
+        return [Rows(title, tuple(self.columns), cells)]
+
+    def notes(self) -> list[str]:
+        """The lines ``rbi sweep`` prints under its table: the runs, the files written."""
+        failed = f", {self.failed:,} failed" if self.held else ""
+        notes = [f"{self.count:,} runs{failed}"]
+        notes += [] if self.out is None else [f"Rows written to {self.out}."]
+        return notes + ([] if self._drawn is None else [f"Map drawn in {self._drawn}."])
+
+
+def _cell(value: Any) -> str:
+    """A run's value in a table: text and whole numbers as they are, numbers to 4 digits."""
+    return value if isinstance(value, str) else str(value) if isinstance(value, int) else number(value, 4)
 
 
 if TYPE_CHECKING:
@@ -158,6 +223,7 @@ def sweep(
     check_budget: bool = True,
     out: Destination | None = None,
     resume: bool = False,
+    plot: Destination | None = None,
     progress: Callable[[int, int], None] | None = None,
 ) -> SweepTable:
     """Many simulations of one body — a grid over spin, tilt and numbers of the spec, or Monte
@@ -174,46 +240,83 @@ def sweep(
             ``{"parts.bolt.mass": [0.01, 0.02]}``, ``{"parts.bolt.position[0]": Normal(0.04, 0.001)}``.
         runs: Monte Carlo draws of every `Normal`/`Uniform` per grid point.
         seed: the seed of the draws.
-        workers: cores to use (None: all).
+        workers: cores to use (None: all; more than this machine gives are not used).
         dask: instead, a Dask scheduler's address, or ``"local"``.
         mass_properties: simulate nothing: each row gives the mass properties at the varied values.
         check_budget: refuse a sweep estimated past rbi's step budget (about four core-hours).
         out: stream the rows to this ``.csv`` or ``.parquet`` file (only there past 100,000 runs).
         resume: continue the sweep already in ``out``.
+        plot: draw the stability map there once the runs are done, as `SweepTable.plot` does.
         progress: called with (runs done, runs).
 
     Raises:
         ValueError, TypeError: a setting or a variation is invalid (named as this function's
             parameter), or the sweep has more than 100,000 runs and no ``out``.
     """
-    grid = (spin, tilt_deg, _variations(vary), runs, seed, duration, samples, rtol, gravity, tilt_axis)
-    settings = SweepSettings(*grid, max_steps, workers, dask, mass_properties, check_budget, spin_axis)
+    settings = SweepSettings.of(locals() | {"vary": _variations(vary)})
     check_settings(settings)
+    study, body, (out_target, plot_target) = _study(body, settings, out, plot, resume)
+    table = SweepTable(study, _rows(study, out_target, resume, progress), body, out_target)
+    if plot_target is not None:
+        table.plot(plot_target)
+    return table
+
+
+def _study(
+    body: Any, settings: SweepSettings, out: Destination | None, plot: Destination | None, resume: bool
+) -> tuple[Study, Body, tuple[OutputTarget | None, OutputTarget | None]]:
+    """`sweep`'s planned study, its `Body` and its outputs, checked before any run. For a spec
+    path, the body is the nominal one the study has just translated, whose files are known
+    only now: the outputs are checked against the spec first, then against every file it read."""
     path, raw, spec_bytes = _spec_source(body)
-    target = _target(out, resume, body if isinstance(body, Body) else path)  # a Body: every file it read
+    _targets(out, plot, resume, body if isinstance(body, Body) else path)
     study = Study(path, raw, settings, rows_printed=out is None, spec_bytes=spec_bytes)
-    swept, target = _swept(body, study, out, target)
-    return SweepTable(study, study.run(target, resume, progress), swept)
+    if not isinstance(body, Body):
+        body = Body(study.nominal, study.raw, study.spec_bytes)
+    targets = _targets(out, plot, resume, body)
+    if plot is not None and study.plan.size > MAX_ROWS_SHOWN:
+        raise ArgumentError(
+            "plot",
+            f"the map is drawn from the rows of this run; with more than {MAX_ROWS_SHOWN:,} runs draw it "
+            "from the {out} file",
+        )
+    return study, body, targets
 
 
-def _target(out: Destination | None, resume: bool, read: Body | str) -> OutputTarget | None:
-    """`sweep`'s ``out`` checked (never a file the body is read from: a `Body`'s every file);
-    ``resume`` needs it."""
+def _rows(study: Study, out: OutputTarget | None, resume: bool, progress: Any) -> list[list[Any]] | None:
+    """The study's rows (:meth:`Study.run`); the rows file's messages name it ``out``."""
+    try:
+        return study.run(out, resume, progress)
+    except InputError as exc:
+        if out is None or not str(exc).startswith("out: "):
+            raise
+        raise ArgumentError("out", literal(str(exc).removeprefix("out: "), quoted=False)) from None
+
+
+def _targets(
+    out: Destination | None, plot: Destination | None, resume: bool, read: Body | str
+) -> tuple[OutputTarget | None, OutputTarget | None]:
+    """`sweep`'s ``out`` and ``plot`` checked before any run: never a file the body is read
+    from (a `Body`'s every file), not one file for both; ``resume`` needs ``out``, a Parquet
+    ``out`` pyarrow."""
     if out is None and resume:
         raise ArgumentError("resume", "needs {out}, the file of the interrupted sweep")
-    return None if out is None else checked_output(out, ("csv", "parquet"), read, "out")
-
-
-def _swept(
-    body: Any, study: Any, out: Destination | None, target: OutputTarget | None
-) -> tuple[Body, OutputTarget | None]:
-    """`sweep`'s `Body` and ``out``'s target. For a spec path, the nominal body the study has
-    just translated, whose files are known only now: ``out`` is checked again against each
-    file it was read from (`Body.files_read`), before any run."""
-    if isinstance(body, Body):
-        return body, target
-    nominal = Body(study.nominal, study.raw, study.spec_bytes)
-    return nominal, None if out is None else checked_output(out, ("csv", "parquet"), nominal, "out")
+    out_target = None if out is None else checked_output(out, ("csv", "parquet"), read, "out")
+    plot_target = None if plot is None else checked_output(plot, ("png", "svg", "pdf"), read, "plot")
+    try:
+        check_distinct([out_target, plot_target])
+    except InputError:
+        shown = literal(plot_target.given, quoted=False)  # type: ignore[union-attr]
+        raise ArgumentError(
+            "plot", f"{shown}: is also the {{out}} output of this run; give each output its own file"
+        ) from None
+    if out_target is not None and out_target.format == "parquet" and not importlib.util.find_spec("pyarrow"):
+        raise ArgumentError(
+            "out",
+            "a .parquet file needs the optional package 'pyarrow': pip install '.[parquet]' from rbi's "
+            "source folder, or pip install pyarrow",
+        )
+    return out_target, plot_target
 
 
 def _variations(vary: Any) -> tuple[tuple[str, Any], ...]:

@@ -3,20 +3,16 @@ or, with --mass-properties, the spread of the mass properties alone."""
 
 from __future__ import annotations
 
-import sys
 from typing import Annotated
 
 import typer
-from rich import box
-from rich.table import Table
 from rich.text import Text
 
-from rbi import api
-from rbi.api import DEFAULT_MAX_STEPS, SpecError, check_distinct, output_target
+import rbi
 from rbi.cli import tables
 from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require, require_matplotlib
-from rbi.cli.render import emit, number, progress_bar
+from rbi.cli.render import emit, progress_bar
 from rbi.cli.run_options import (
     DurationOption,
     GravityOption,
@@ -26,7 +22,7 @@ from rbi.cli.run_options import (
     TiltAxisOption,
     YesOption,
 )
-from rbi.cli.terminal import Terminated, say
+from rbi.cli.terminal import Terminated, say, terminal_safe
 
 SpinOption = Annotated[
     str,
@@ -66,8 +62,8 @@ MaxStepsOption = Annotated[
     typer.Option(
         "--max-steps",
         metavar="N",
-        help=f"Most steps one run may take (default {DEFAULT_MAX_STEPS:.0e}); a run "
-        "that needs more is a failed row.",
+        help="Most steps one run may take (default 1e+07, as simulate's); a run that needs more is a "
+        "failed row.",
     ),
 ]
 WorkersOption = Annotated[
@@ -115,44 +111,8 @@ MassPropertiesOption = Annotated[
 ]
 
 
-UNITS = {
-    "spin": "rad/s",
-    "tilt_deg": "deg",
-    "max_tilt_deg": "deg",
-    "final_tilt_deg": "deg",
-    "min_tilt_deg": "deg",
-    "precession_rate_deg_s": "deg/s",
-    "energy_drift": "relative",
-    "axis_1_tilt_deg": "deg",
-    "axis_2_tilt_deg": "deg",
-    "axis_3_tilt_deg": "deg",
-}
-"""The unit shown under each swept or summary column."""
-
-_LENGTH_FIELDS = frozenset(
-    "radius inner_radius outer_radius start_radius end_radius major_radius minor_radius length height "
-    "size semi_axes position center start end apex base through step pivot center_of_mass".split()
-)
-_INERTIA_FIELDS = frozenset("ixx iyy izz ixy ixz iyz inertia".split())
-
-
-def column_unit(name: str, units: dict[str, str]) -> str:
-    """The unit of a sweep column: a summary column's (:data:`UNITS`), or a varied spec field's
-    (``parts.bolt.mass`` in the spec's mass unit, ``parts.bolt.position[0]`` in its length unit,
-    ``...angle_deg`` in degrees); empty for a number without one (a direction, a count)."""
-    if name in UNITS:
-        return UNITS[name]
-    length, mass = units["length"], units["mass"]
-    field = name.rsplit(".", 1)[-1].split("[", 1)[0]
-    if field == "mass":
-        return mass
-    if field == "density":
-        return f"{mass}/{length}³"
-    if field in _INERTIA_FIELDS:
-        return f"{mass}·{length}²"
-    if field in _LENGTH_FIELDS:
-        return length
-    return "deg" if field.endswith("_deg") else ""
+HIDDEN = frozenset({"min_tilt_deg", "precession_rate_deg_s", "steps"})
+"""Columns of --out, json and csv that the table leaves out, to fit 80 columns."""
 
 
 def sweep(
@@ -194,91 +154,24 @@ def sweep(
           --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
 
-    settings = dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
-    settings |= dict(
-        vary=vary_option(vary or []), spin_axis=spin_axis_option(spin_axis), runs=runs, seed=seed
-    )
-    settings |= dict(duration=duration, samples=samples, rtol=rtol, gravity=gravity, tilt_axis=tilt_axis)
-    settings |= dict(max_steps=max_steps, dask=dask, mass_properties=mass_properties, check_budget=not yes)
-    if resume and out is None:
-        raise SpecError("--resume: needs --out, the file of the interrupted sweep")
-    settings["out"], plot_target = _targets(file, out, plot)
-    source = _source(file, plot_target)
-    table = _run(source, settings | {"workers": _workers(workers, dask)}, out, resume)
-    result = _result(table, out, plot, plot_target)
-    if format == OutputFormat.csv:
-        sys.stdout.write(table.to_csv())
-        return
-    emit(format.value, result, lambda: _table(result, table, file))
-
-
-def _result(table, out: str | None, plot: str | None, plot_target) -> dict:
-    """What `rbi sweep --format json` prints: name, units, count, columns and, when the rows
-    were held, the runs as objects and how many failed; the files written, the mass-properties
-    spread (--mass-properties). The map is drawn here."""
-    # looked up per call: tests replace it
-    from rbi.api import MAX_ROWS_SHOWN
-
-    result = table.to_dict()
-    if out is not None:  # before the spread, as it always was
-        result = {k: v for k, v in result.items() if k != "spread"} | {"out": out} | result
-    if plot is not None:
-        if not table.held:
-            raise SpecError(
-                "--plot: the map is drawn from the rows of this run; with more than "
-                f"{MAX_ROWS_SHOWN:,} runs draw it from the --out file"
-            )
-        table.plot(plot_target)
-        result["plot"] = plot
-    return result
-
-
-def _targets(file: str, out: str | None, plot: str | None):
-    """The ``--out`` and ``--plot`` targets, checked before any work (None when not asked
-    for); the optional packages they need are required then too."""
-
-    out_target = None if out is None else output_target(out, "--out", ("csv", "parquet"), inputs=[file])
-    plot_target = (
-        None if plot is None else output_target(plot, "--plot", ("png", "svg", "pdf"), inputs=[file])
-    )
-    check_distinct([out_target, plot_target])
-    if out_target is not None and out_target.format == "parquet":
-        require("pyarrow", "parquet", "--out FILE.parquet")
-    if plot is not None:
-        require_matplotlib()
-    return out_target, plot_target
-
-
-def _source(file: str, plot_target):
-    """What is swept: the spec's path (rbi.sweep checks --out against every file the spec names
-    once it has translated the spec, before any run); with --plot, the loaded body, the map's
-    file checked against the files it was read from now, since the map is drawn after the runs."""
-
-    if plot_target is None:
-        return file
-    body = api.load(file)
-    output_target(plot_target.given, plot_target.option, (plot_target.format,), inputs=body.files_read)
-    return body
-
-
-def _workers(workers: int | None, dask: str | None) -> int | None:
-    """The optional packages --dask needs; --workers above the cores this process may use is
-    said, and the cores are used (a remote cluster has its own; past 1024 rbi.sweep refuses it)."""
-    # looked up per call: tests replace it
-    from rbi.api import available_cores
-
     if dask is not None:
         require("distributed", "dask", "--dask")
     if dask == "local":
         require("cryptography", "dask", "--dask local")  # its private TLS certificates
-    if workers is None or dask not in (None, "local") or not available_cores() < workers <= 1024:
-        return workers
+    if plot is not None:
+        require_matplotlib()
+    settings = dict(runs=runs, seed=seed, duration=duration, samples=samples, rtol=rtol, gravity=gravity)
+    settings |= dict(tilt_axis=tilt_axis, max_steps=max_steps, workers=workers, dask=dask, plot=plot)
+    settings |= dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
+    settings |= dict(vary=vary_option(vary or []), spin_axis=spin_axis_option(spin_axis))
+    settings |= dict(mass_properties=mass_properties, check_budget=not yes, out=out, resume=resume)
+    table = _run(file, settings)
+    if workers is not None and table.cores is not None and table.cores < workers:
+        say(f"--workers {workers}: this machine gives rbi {table.cores} cores; using {table.cores}")
+    emit(format.value, table.to_dict(), lambda: _drawn(table, file), csv_rows=table.csv_rows(), ready=True)
 
-    say(f"--workers {workers}: this machine gives rbi {available_cores()} cores; using {available_cores()}")
-    return available_cores()
 
-
-def _run(source, settings: dict, out: str | None, resume: bool):
+def _run(file: str, settings: dict):
     """Run the sweep with a progress bar on a terminal; on Ctrl-C or SIGTERM say how many runs
     --out kept (exit 130 or 143)."""
 
@@ -291,87 +184,47 @@ def _run(source, settings: dict, out: str | None, resume: bool):
                 bar.update(done, total)
 
         try:
-            return api.sweep(source, resume=resume, progress=progress, **settings)
+            return rbi.sweep(file, progress=progress, **settings)
         except (KeyboardInterrupt, Terminated) as stop:
-            if out is None or not told:
+            if settings["out"] is None or not told:
                 raise
             word, code = ("terminated", 143) if isinstance(stop, Terminated) else ("interrupted", 130)
             say(
-                f"{word}: {told[0]:,} of {told[1]:,} runs kept in {out}; run the same command with "
-                "--resume to compute the rest"
+                f"{word}: {told[0]:,} of {told[1]:,} runs kept in {settings['out']}; run the same command "
+                "with --resume to compute the rest"
             )
             raise SystemExit(code) from None
 
 
-def _table(result, table, file):
-
-    notes = [f"{result['count']:,} runs"]
-    if "failed" in result:
-        notes[0] += f", {result['failed']:,} failed"
-    if "out" in result:
-        notes.append(f"Rows written to {result['out']}.")
-    if "plot" in result:
-        notes.append(f"Map drawn in {result['plot']}.")
-    parts = []
-    if table.held and not result.get("spread"):  # a tolerance study shows its spread instead
-        columns = table.columns
-        rows = [[record[name] for name in columns] for record in table.records()]
-        parts.append(_runs_table(result, columns, rows, file))
-    if result.get("spread"):
-        parts.append(_spread_table(result))
-    parts.append(Text("\n".join(notes)))
-    return tables.stack(*parts)
+def _drawn(table, file: str):
+    """The runs (or a study's spread) of ``table.rows()`` in rbi's table style, then its notes."""
+    drawn = [_spread(rows) if table.spread else _runs(rows, table, file) for rows in table.rows()]
+    return tables.stack(*(drawn if table.held else []), Text("\n".join(table.notes())))
 
 
-def _runs_table(result, columns, rows, file):
-    """One row per run (the first and last 20 of more than 40), in rbi's table style."""
-
-    shown = rows if len(rows) <= 40 else rows[:20] + [None] + rows[-20:]
-    table = Table(
-        title=tables.plain_text(f"{result['name'] or file} — sweep"),
-        box=box.SIMPLE_HEAD,
-        title_justify="left",
-        show_edge=False,
-    )  # rbi's style; headers hold a line break
-    hidden = {"min_tilt_deg", "precession_rate_deg_s", "steps"}  # in --out, json and csv
-    keep = [i for i, name in enumerate(columns) if name not in hidden]
-    columns = [columns[i] for i in keep]
-    shown = [None if row is None else [row[i] for i in keep] for row in shown]
-    for name in columns:
+def _runs(rows, table, file: str):
+    """The runs, in rbi's table style; each header over its unit."""
+    keep = [i for i, name in enumerate(rows.columns) if name not in HIDDEN]
+    drawn = tables.titled(f"{table.name or file} — sweep")
+    for name in (rows.columns[i] for i in keep):
         # words wrap in a narrow terminal and no cell is cut short: a number is never shown truncated
         words = name.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
-        header = tables.plain_text(name if name.startswith("parts.") else words)
-        table.add_column(
-            f"{header}\n{column_unit(name, result['units'])}".rstrip(),
-            overflow="fold",
-            justify="left" if name == "status" else "right",
-        )
-    for row in shown:
-        if row is None:
-            table.add_row(*["…"] * len(columns))
-            continue
-        table.add_row(
-            *[
-                tables.plain_text(str(v))
-                if isinstance(v, str)
-                else ("—" if v is None else (str(v) if isinstance(v, int) else number(v, 4)))
-                for v in row
-            ]
-        )
-    return table
+        header = name if name.startswith("parts.") else words
+        justify = "left" if name == "status" else "right"
+        lines = [Text(terminal_safe(line)) for line in (header, table.unit(name)) if line]
+        drawn.add_column(Text("\n").join(lines), overflow="fold", justify=justify)
+    for row in rows.cells:
+        drawn.add_row(*(row[i] for i in keep))
+    return drawn
 
 
-def _spread_table(result):
+def _spread(rows):
     """min, median, max and standard deviation of each quantity over the ok runs."""
-
-    spread = tables.titled("Spread over the ok runs")
-    spread.add_column("quantity", no_wrap=True)
-    spread.add_column("unit")
-    for name in ("min", "median", "max", "std"):
-        spread.add_column(name, justify="right")
-    length, mass = result["units"]["length"], result["units"]["mass"]
-    prefixed = {"mass": mass, "com": length, "moment": f"{mass}·{length}²"}  # mass, com_x, moment_1 ...
-    for name, stats in result["spread"].items():
-        unit = prefixed.get(name.split("_")[0]) or column_unit(name, result["units"])
-        spread.add_row(name, unit, *[number(stats[k], 4) for k in ("p0", "p50", "p100", "std")])
-    return spread
+    drawn = tables.titled(rows.title)
+    drawn.add_column(rows.columns[0], no_wrap=True)
+    drawn.add_column(rows.columns[1])
+    for name in rows.columns[2:]:
+        drawn.add_column(name, justify="right")
+    for row in rows.cells:
+        drawn.add_row(*row)
+    return drawn

@@ -251,7 +251,9 @@ def run_dask(
     try:
         compute_remote = client.scatter(compute, broadcast=True, hash=False)
         slots = 4 * max(1, sum(client.nthreads().values()))
-        _in_order(lambda a, b: client.submit(_call, compute_remote, a, b, pure=False), ranges, slots, on_rows)
+        _in_order(
+            lambda a, b: client.submit(_timed, compute_remote, a, b, 1, pure=False), ranges, slots, on_rows
+        )
     finally:
         _quietly_close(client, cluster)
         if scratch is not None:
@@ -430,7 +432,3 @@ def _quietly_close(client, cluster) -> None:
                 cluster.close()
     finally:
         quiet.setLevel(level)
-
-
-def _call(compute, a: int, b: int) -> tuple[Rows, float]:
-    return _timed(compute, a, b, 1)

@@ -24,6 +24,12 @@ MAX_RUNS = 10**8
 """Most runs one sweep may plan (a row is about 150 bytes of CSV)."""
 
 
+def _finite(what: str, *values: float) -> None:
+    """ValueError ``WHAT must be finite numbers`` unless every value is one."""
+    if not all(finite(v) for v in values):
+        raise ValueError(f"{what}must be finite numbers (got {', '.join(shown(v) for v in values)})")
+
+
 @dataclass(frozen=True)
 class Grid(Sequence):
     """``count`` evenly spaced values from ``start`` to ``stop``, both included (one value,
@@ -36,10 +42,7 @@ class Grid(Sequence):
     count: int
 
     def __post_init__(self) -> None:
-        if not (finite(self.start) and finite(self.stop)):
-            raise ValueError(
-                f"start and stop must be finite numbers (got {shown(self.start)}, {shown(self.stop)})"
-            )
+        _finite("start and stop ", self.start, self.stop)
         if not (finite(self.count) and float(self.count).is_integer() and self.count >= 1):
             raise ValueError(f"count must be a whole number, at least 1 (got {shown(self.count)})")
         if self.count > MAX_RUNS:
@@ -72,10 +75,7 @@ class Normal:
     sd: float
 
     def __post_init__(self) -> None:
-        if not (finite(self.mean) and finite(self.sd)):
-            raise ValueError(
-                f"normal(mean, sd): must be finite numbers (got {shown(self.mean)}, {shown(self.sd)})"
-            )
+        _finite("normal(mean, sd): ", self.mean, self.sd)
         if self.sd < 0:
             raise ValueError(
                 f"normal(mean, sd): the standard deviation must not be negative (got {self.sd!r})"
@@ -94,10 +94,7 @@ class Uniform:
     high: float
 
     def __post_init__(self) -> None:
-        if not (finite(self.low) and finite(self.high)):
-            raise ValueError(
-                f"uniform(low, high): must be finite numbers (got {shown(self.low)}, {shown(self.high)})"
-            )
+        _finite("uniform(low, high): ", self.low, self.high)
         if self.high < self.low:
             raise ValueError(
                 f"uniform(low, high): needs low <= high (got {shown(self.low)}, {shown(self.high)})"

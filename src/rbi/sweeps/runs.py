@@ -26,14 +26,8 @@ from rbi.spec.units import gravity_in
 from rbi.spec.variations import FieldPath, with_values
 from rbi.sweeps.plan import Plan
 
-RESULT_COLUMNS = (
-    "max_tilt_deg",
-    "final_tilt_deg",
-    "min_tilt_deg",
-    "precession_rate_deg_s",
-    "energy_drift",
-    "steps",
-    "status",
+RESULT_COLUMNS = tuple(
+    "max_tilt_deg final_tilt_deg min_tilt_deg precession_rate_deg_s energy_drift steps status".split()
 )
 """Columns after ``run`` and the swept values, in order."""
 
@@ -180,25 +174,15 @@ def _fill_rows(job: SweepJob, rows: list, ready: list, status, finite, counts, f
     """Complete each integrated run's row with its figures and status, or why it failed."""
 
     for b, i in enumerate(ready):
-        if status[b] == STATUS_DONE:
-            if not finite[b]:
-                rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + ["failed: " + FAILURES[STATUS_NOT_FINITE]]
-                continue
-            figures = figures_of[b]
-            rows[i] += [
-                figures["max_tilt_deg"],
-                figures["final_tilt_deg"],
-                figures["min_tilt_deg"],
-                figures["precession_rate_deg_s"],
-                figures["energy_drift"],
-                int(counts[b, 1]),
-                "ok",
-            ]
-            continue
-        reason = FAILURES.get(int(status[b]), FAILURES[STATUS_NOT_FINITE])
-        if status[b] == STATUS_MORE:
-            reason = f"step budget of {job.max_steps:,} steps reached"
-        rows[i] += [None] * (len(RESULT_COLUMNS) - 2) + [int(counts[b, 1]), "failed: " + reason]
+        if status[b] == STATUS_DONE and finite[b]:
+            rows[i] += [figures_of[b][name] for name in RESULT_COLUMNS[:5]] + [int(counts[b, 1]), "ok"]
+        elif status[b] == STATUS_DONE:
+            rows[i] += [None] * (len(RESULT_COLUMNS) - 1) + ["failed: " + FAILURES[STATUS_NOT_FINITE]]
+        else:
+            reason = FAILURES.get(int(status[b]), FAILURES[STATUS_NOT_FINITE])
+            if status[b] == STATUS_MORE:
+                reason = f"step budget of {job.max_steps:,} steps reached"
+            rows[i] += [None] * (len(RESULT_COLUMNS) - 2) + [int(counts[b, 1]), "failed: " + reason]
 
 
 def _one_line(text: str) -> str:

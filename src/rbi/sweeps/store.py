@@ -179,13 +179,10 @@ class SweepOutput:
                         kept.extend(checker.check(batch, text=True, keep=keep))
                         batch = []
                 kept.extend(checker.check(batch, text=True, keep=keep))
-            if fragment:
+            if fragment:  # a partial last line (a kill during a write): every whole row checked
                 checker.check_fragment(fragment)
+                os.ftruncate(fd, good_end)
             self.done = checker.count
-            if fragment:
-                os.ftruncate(
-                    fd, good_end
-                )  # a partial last line (a kill during a write): every whole row checked
             self._fd, fd = fd, -1
             self._size = good_end
             os.lseek(self._fd, good_end, os.SEEK_SET)

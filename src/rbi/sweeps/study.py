@@ -14,25 +14,28 @@ import dataclasses
 import hashlib
 import json
 import numbers
-from collections.abc import Callable, Sequence
+import os
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
+from rbi.core.inertia import principal_axes
 from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError, literal
+from rbi.files import safe
 from rbi.runs.run import body_spin_axis, check_run_settings, check_tilt, spin_axis_value
 from rbi.sim.api import check_samples
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.units import STANDARD_GRAVITY_SI
 from rbi.spec.variations import current_values, resolve
-from rbi.sweeps import store
+from rbi.sweeps import execute, runs, store
 from rbi.sweeps.execute import Chunks, check_address
 from rbi.sweeps.plan import MAX_RUNS, Draw, Plan, axis_of, axis_record
 from rbi.sweeps.runs import SweepJob
-from rbi.sweeps.tolerance import MASS_COLUMNS, mass_rows, nominal_axes, spread
+from rbi.sweeps.tolerance import MASS_COLUMNS, mass_rows
 
 MAX_ROWS_SHOWN = 100_000
 """Most runs a sweep may print (json/csv/table) or hold in memory instead of writing them with --out."""
@@ -49,6 +52,9 @@ SECONDS_PER_STEP = 4e-7
 sweep run takes on one core (0.22–0.26 µs measured for the textbook top, 100 s at 150 and
 250 rad/s, on the shared 2-core development machine), which sizes the first chunks of a sweep;
 the later ones are sized by how long chunks took."""
+
+RESUME_SETTINGS = ("duration", "samples", "rtol", "gravity_si", "tilt_axis", "max_steps")
+"""The settings of each run that ``--resume`` finds in the settings file as they were."""
 
 MASS_CHUNK = 256
 """Runs per chunk of a study of mass properties (no simulation: each run takes microseconds)."""
@@ -75,6 +81,11 @@ class SweepSettings:
     mass_properties: bool = False
     check_budget: bool = True
     spin_axis: str | Sequence[float] | None = None
+
+    @classmethod
+    def of(cls, given: Mapping[str, Any]) -> SweepSettings:
+        """The settings among ``given``, a caller's arguments by name (its other ones left)."""
+        return cls(**{name: given[name] for name in cls.__dataclass_fields__})
 
 
 def check_settings(settings: SweepSettings) -> None:
@@ -144,12 +155,18 @@ class Study:
         self.nominal = self.job.body(tuple(current_values(raw, varied)))
         if isinstance(self.nominal, str):
             raise InputError(f"{path}: {self.nominal}")
-        self.job = dataclasses.replace(self.job, spin_axis=self._spin_axis())
+        # one spin axis for every run (unit, body frame): spin_axis, else the spec's, else the
+        # nominal body's default, so every row's tilt is of one body axis, whatever a varied value breaks
+        axis = body_spin_axis(self.nominal, settings.spin_axis)
+        self.job = dataclasses.replace(self.job, spin_axis=tuple(float(c) for c in axis))
         if settings.mass_properties:
             self.columns = ["run", *self.plan.names, *MASS_COLUMNS]
         else:
             self._check_budget()
             self.columns = self.job.columns
+        remote = settings.dask not in (None, "local")
+        self.cores = None if remote else execute.usable_workers(settings.workers)
+        """The cores the runs use here (``workers``, at most this machine's), None on a cluster."""
         self.output = None
         """The :class:`~rbi.sweeps.store.SweepOutput` while :meth:`run` writes one (its ``done``
         counts the runs kept there)."""
@@ -209,47 +226,26 @@ class Study:
         except ValueError:
             return None
 
-    def _spin_axis(self) -> tuple[float, float, float]:
-        """The one spin axis of every run (unit, body frame): ``--spin-axis``, else the spec's
-        ``spin_axis``, else the nominal body's default, so that every row's tilt is of the same
-        body axis even where a varied value breaks the body's symmetry."""
-
-        return tuple(float(c) for c in body_spin_axis(self.nominal, self.settings.spin_axis))
-
     def _compute(self):
         """``compute(start, stop, threads) -> rows`` for the executors."""
         job = self.job
         if self.settings.mass_properties:
-            axes_nominal = nominal_axes(job)
-
-            def compute(a, b, threads):
-                return mass_rows(job, axes_nominal, a, b)
-
-            return compute
-        # looked up per call: tests replace it
-        from rbi.sweeps.runs import run_chunk
-
-        def compute(a, b, threads):
-            return run_chunk(job, a, b, threads)
-
-        return compute
+            axes_nominal = principal_axes(self.nominal.props.inertia_about_com)[1]
+            return lambda a, b, threads: mass_rows(job, axes_nominal, a, b)
+        return lambda a, b, threads: runs.run_chunk(job, a, b, threads)
 
     def _chunks(self, start: int) -> Chunks:
         """The chunks of runs ``start ..`` (:class:`~rbi.sweeps.execute.Chunks`): at most
         :meth:`SweepJob.chunk_size <rbi.sweeps.runs.SweepJob.chunk_size>` runs, fewer where runs
         are long, so that each chunk ends within about a second (sized first by the estimated
         steps of a run at the fastest spin, then by how long chunks take)."""
-        # looked up per call: tests replace it
-        from rbi.sweeps.execute import available_cores, usable_workers
-
         if self.settings.mass_properties:
             return Chunks(start, self.plan.size, MASS_CHUNK)
-        threads = self.settings.workers or available_cores()
+        threads = execute.usable_workers(self.settings.workers)
         if self.settings.dask is not None:  # a task runs on one core
             share, least = 1.0, 1
         else:  # the two chunks in flight share the cores
-            cores = usable_workers(threads)
-            share, least = cores / 2, (cores + 1) // 2
+            share, least = threads / 2, (threads + 1) // 2
         steps = self._steps_per_run()
         run_seconds = None if steps is None else steps * SECONDS_PER_STEP / share
         return Chunks(start, self.plan.size, self.job.chunk_size(threads), least, run_seconds)
@@ -257,27 +253,22 @@ class Study:
     def store_settings(self) -> dict:
         """What makes two sweeps the same, for ``--resume``: the spec's bytes, those the rows
         come from (:attr:`spec_bytes`, as the loader read them: the file is not read again), or
-        its parsed form when it was given as text, a dict or on standard input; and every
-        setting."""
+        its parsed form when it was given as text, a dict or on standard input; the bytes of
+        each file it reads (a sub-assembly, a mesh, a STEP file: ``files_sha256``, when there
+        are any); and every setting."""
 
-        s, job = self.settings, self.job
-        spec_bytes = self.spec_bytes
+        job, spec_bytes = self.job, self.spec_bytes
         if spec_bytes is None:
             spec_bytes = json.dumps(self.raw, sort_keys=True, default=str).encode()
-        return {
+        same = {name: getattr(job, name) for name in RESUME_SETTINGS}
+        record = same | {
             "spec_sha256": hashlib.sha256(spec_bytes).hexdigest(),
-            "axes": [[a.name, axis_record(a)] for a in self.plan.axes],
-            "runs": job.plan.runs,
-            "seed": job.plan.seed,
-            "duration": job.duration,
-            "samples": job.samples,
-            "rtol": job.rtol,
-            "gravity_si": job.gravity_si,
-            "tilt_axis": job.tilt_axis,
             "spin_axis": list(job.spin_axis),
-            "max_steps": job.max_steps,
-            "mass_properties": s.mass_properties,
         }
+        record |= {"axes": [[a.name, axis_record(a)] for a in self.plan.axes], "runs": job.plan.runs}
+        record |= {"seed": job.plan.seed, "mass_properties": self.settings.mass_properties}
+        files = [_file_sha256(path) for path in self.nominal.files]
+        return record | ({"files_sha256": files} if files else {})
 
     def run(
         self, out_target=None, resume: bool = False, progress: Callable[[int, int], Any] | None = None
@@ -291,9 +282,6 @@ class Study:
         exception) with the runs the output kept: the output is closed keeping the rows
         written, and :attr:`output` tells how many.
         """
-        # looked up per call: tests replace it
-        from rbi.sweeps.execute import available_cores, run_dask, run_local
-
         compute = self._compute()
         rows: list | None = [] if self.plan.size <= MAX_ROWS_SHOWN else None
         tell = progress or (lambda done, total: None)
@@ -318,9 +306,9 @@ class Study:
             tell(done[0], self.plan.size)
             ranges = self._chunks(done[0])
             if self.settings.dask is not None:
-                run_dask(compute, ranges, self.settings.dask, on_rows, self.settings.workers)
+                execute.run_dask(compute, ranges, self.settings.dask, on_rows, self.settings.workers)
             else:
-                run_local(compute, ranges, self.settings.workers or available_cores(), on_rows)
+                execute.run_local(compute, ranges, execute.usable_workers(self.settings.workers), on_rows)
         except BaseException:
             if self.output is not None:
                 self.output.close()  # what was written is kept (a failed write has said how much)
@@ -329,11 +317,6 @@ class Study:
         if self.output is not None:
             self.output.finish()
         return rows
-
-    def spread(self, rows: list[list[Any]]) -> dict[str, dict[str, float]]:
-        """Percentiles and standard deviation of each mass property over the ok runs."""
-
-        return spread(self.columns, rows, 1)
 
     def stability_map(self, rows: list[list[Any]]) -> dict[str, Any]:
         """The data of the stability map: the largest tilt over the first one or two swept axes,
@@ -382,7 +365,7 @@ def _plan(axes, settings: SweepSettings, rows_printed: bool):
         raise ArgumentError(
             (),
             f"the sweep has {plan.size:,} runs: more than {MAX_ROWS_SHOWN:,} are written to a file "
-            "only: give {out}",
+            "only: give {out} (a .csv or .parquet file)",
         )
     return plan
 
@@ -403,3 +386,10 @@ def _label(name: str) -> str:
     holds each run's nudge at t = 0 (``--tilt``), not the tilt of its spin axis then (90° for
     a gyroscope on its side with no nudge)."""
     return {"spin": "spin [rad/s]", "tilt_deg": "nudge at t = 0 [deg]"}.get(name, name)
+
+
+def _file_sha256(path: str) -> str:
+    """The SHA-256 of a file the spec reads, as it is now (a regular file, never followed
+    through a link nor waited on)."""
+    with os.fdopen(safe.open_regular(path, f"{path}: cannot resume"), "rb") as handle:
+        return hashlib.file_digest(handle, "sha256").hexdigest()

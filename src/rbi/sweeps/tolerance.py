@@ -9,21 +9,10 @@ from typing import Any
 import numpy as np
 
 from rbi.core.inertia import principal_axes
-from rbi.spec.variations import current_values
 from rbi.sweeps.runs import SweepJob
 
-MASS_COLUMNS = (
-    "mass",
-    "com_x",
-    "com_y",
-    "com_z",
-    "moment_1",
-    "moment_2",
-    "moment_3",
-    "axis_1_tilt_deg",
-    "axis_2_tilt_deg",
-    "axis_3_tilt_deg",
-    "status",
+MASS_COLUMNS = tuple(
+    "mass com_x com_y com_z moment_1 moment_2 moment_3 axis_1_tilt_deg axis_2_tilt_deg axis_3_tilt_deg status".split()
 )
 """Columns after ``run`` and the varied values: mass (M), centre of mass (L, body axes),
 principal moments about the centre of mass (M·L², ascending) and the angle of each principal
@@ -32,17 +21,9 @@ axis from the nominal body's (deg, sign-free)."""
 PERCENTILES = (0, 5, 50, 95, 100)
 
 
-def nominal_axes(job: SweepJob) -> np.ndarray:
-    """Principal axes (rows) of the body as written."""
-
-    body = job.body(tuple(current_values(job.raw, list(job.varied))))
-    if isinstance(body, str):
-        raise ValueError(body)
-    return principal_axes(body.props.inertia_about_com)[1]
-
-
-def mass_rows(job: SweepJob, nominal: np.ndarray, start: int, stop: int, threads: int = 0) -> list[list[Any]]:
-    """Rows of runs ``start .. stop-1`` (``threads`` is unused: each row is microseconds)."""
+def mass_rows(job: SweepJob, nominal: np.ndarray, start: int, stop: int) -> list[list[Any]]:
+    """Rows of runs ``start .. stop-1``; ``nominal``: the principal axes (rows) of the body as
+    written, which each run's axes are measured from."""
 
     rows = []
     for i, v in enumerate(job.plan.values(start, stop)):
@@ -53,16 +34,9 @@ def mass_rows(job: SweepJob, nominal: np.ndarray, start: int, stop: int, threads
             continue
         moments, axes = principal_axes(body.props.inertia_about_com)
         tilts = np.degrees(np.arccos(np.clip(np.abs(np.sum(axes * nominal, axis=1)), 0.0, 1.0)))
-        rows.append(
-            row
-            + [
-                float(body.props.mass),
-                *map(float, body.props.center_of_mass),
-                *map(float, moments),
-                *map(float, tilts),
-                "ok",
-            ]
-        )
+        props = body.props
+        figures = [props.mass, *props.center_of_mass, *moments, *tilts]
+        rows.append(row + [*map(float, figures), "ok"])
     return rows
 
 
