@@ -460,11 +460,6 @@ CLI_NAMES_LEFT: set[tuple[str, str]] = {
     ("option_values.py", "reference_choices"),
     ("option_values.py", "reference_name"),
     ("option_values.py", "turn_lost_to_rounding"),
-    ("render.py", "csv_lines"),
-    ("render.py", "number"),
-    ("render.py", "numpy"),
-    ("render.py", "plus_minus"),
-    ("render.py", "vector_text"),
     ("uncertainty_command.py", "rbi.api"),
 }
 """What cli/ still imports that is not a name of ``rbi.__all__`` (rbi.names.CLI_TOOLS, the

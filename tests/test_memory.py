@@ -129,6 +129,29 @@ def test_pauses_in_two_threads_leave_the_collector_on(monkeypatch):
     assert switch.on and not worker.is_alive()
 
 
+def test_a_pause_left_open_in_another_thread_does_not_keep_the_collector_off(collector_on):
+    # A sweep chunk abandoned past its stop keeps its pause in a daemon thread: the pauses
+    # counted across threads left the collector off for the rest of the process.
+    inside, leave = threading.Event(), threading.Event()
+
+    def abandoned() -> None:
+        with collector_paused():
+            inside.set()
+            leave.wait(10.0)
+
+    worker = threading.Thread(target=abandoned, daemon=True)
+    worker.start()
+    try:
+        assert inside.wait(5.0) and not gc.isenabled()
+        with collector_paused():
+            assert not gc.isenabled()
+        assert gc.isenabled()
+    finally:
+        leave.set()
+        worker.join(10.0)
+    assert gc.isenabled() and not worker.is_alive()
+
+
 FREE_THREADED = bool(sysconfig.get_config_var("Py_GIL_DISABLED"))
 """A free-threaded build keeps no generations (gc.get_objects(generation=0) is not the young)."""
 

@@ -73,8 +73,8 @@ def test_csv_lines_is_what_the_csv_module_reads_back():
 
 
 def test_the_cli_and_the_sweep_store_write_the_same_cells():
-    """One rule for both: `rbi ... --format csv` (cli.render.to_csv) and the sweep's rows file."""
-    from rbi.cli.render import to_csv
+    """One rule for both: `rbi ... --format csv` (rbi.reprs.csv_text) and the sweep's rows file."""
+    from rbi.reprs import csv_text as to_csv
     from rbi.sweeps.store import csv_bytes
 
     cells = {"run": 3, "spin": 1 / 3, "tilt": None, "status": "=bad"}

@@ -36,6 +36,7 @@ PUBLIC = (
     "validate",
     "spec_schema",
     "unit_vector",
+    "Result",
 )
 """What ``import rbi`` offers: the API of docs/python-api.md."""
 

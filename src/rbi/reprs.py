@@ -15,10 +15,10 @@ from __future__ import annotations
 
 import functools
 import io
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from html import escape
-from typing import Any
+from typing import Any, TypeVar, overload
 
 from rbi.text import csv_lines
 
@@ -167,11 +167,16 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
     return out
 
 
+def flat_rows(rows: Iterable[dict[str, Any]]) -> list[dict[str, Any]]:
+    """Rows as CSV columns (:func:`flatten`); a row's ``warnings`` are not a column (the CLI
+    says them on stderr)."""
+    return [flatten({k: v for k, v in row.items() if k != "warnings"}) for row in rows]
+
+
 def csv_text(rows: Iterable[dict[str, Any]]) -> str:
     """CSV text: a header from the first row's (flattened) keys, then one line a row, each cell
-    through the one CSV cell rule (:func:`rbi.text.csv_cell`). A row's ``warnings`` are not a
-    column (the CLI says them on stderr)."""
-    flat = [flatten({k: v for k, v in row.items() if k != "warnings"}) for row in rows]
+    through the one CSV cell rule (:func:`rbi.text.csv_cell`)."""
+    flat = flat_rows(rows)
     if not flat:
         return ""
     return csv_lines((row.values() for row in flat), header=flat[0].keys())
@@ -242,9 +247,13 @@ class Result:
         """The CSV the matching command prints with ``--format csv``: a header, then the rows."""
         return csv_text(self.csv_rows())
 
+    def flat_rows(self) -> list[dict[str, Any]]:
+        """The CSV's rows as its columns: vectors as ``_x/_y/_z``, matrices ``_xx … _zz``."""
+        return flat_rows(self.csv_rows())
+
     def to_pandas(self) -> Any:
         """The CSV's rows as a :class:`pandas.DataFrame` (vectors as ``_x/_y/_z`` columns)."""
-        rows = [flatten({k: v for k, v in row.items() if k != "warnings"}) for row in self.csv_rows()]
+        rows = self.flat_rows()
         return pandas_module(self).DataFrame(rows, columns=list(rows[0]) if rows else None)
 
     def __rich__(self) -> Any:
@@ -269,6 +278,33 @@ class Result:
 
 TableRepr = Result
 """The name the results' base had before it gave more than its tables."""
+
+Item = TypeVar("Item")
+
+
+class Results(Result, Sequence[Item]):
+    """A result that is a sequence too (a body's parts, a spec's checks): ``len``, ``[i]`` and
+    slices (a list), iteration, and ``==`` with another of its kind or a list of its items."""
+
+    _items: list[Item]
+
+    @overload
+    def __getitem__(self, index: int) -> Item: ...
+    @overload
+    def __getitem__(self, index: slice) -> list[Item]: ...
+    def __getitem__(self, index: int | slice) -> Item | list[Item]:
+        return self._items[index]
+
+    def __len__(self) -> int:
+        return len(self._items)
+
+    def __iter__(self) -> Iterator[Item]:
+        return iter(self._items)
+
+    def __eq__(self, other: object) -> bool:
+        return list(self) == list(other) if isinstance(other, (type(self), list)) else NotImplemented
+
+    __hash__ = None  # type: ignore[assignment]
 
 
 def _left(columns: Sequence[str]) -> int:

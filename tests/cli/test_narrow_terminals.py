@@ -183,10 +183,11 @@ def test_rounding_noise_prints_as_zero_and_json_keeps_it(monkeypatch):
     monkeypatch.setenv("COLUMNS", "80")
     rows = [line.split() for line in rbi(*args).stdout.splitlines() if line.startswith((" x ", " y "))]
     assert rows[-2][2] == "0" and rows[-1][1] == "0", rows
-    from rbi.cli.render import vector_text
+    from rbi.text import vector_text
 
     assert (
-        vector_text([1.0, 3.6e-37, -2e-13]) == "[1, 0, 0]" and vector_text([1e-20, 0, 0]) == "[1e-20, 0, 0]"
+        vector_text([1.0, 3.6e-37, -2e-13], scale=0.0) == "[1, 0, 0]"
+        and vector_text([1e-20, 0, 0], scale=0.0) == "[1e-20, 0, 0]"
     )
 
 

@@ -123,7 +123,7 @@ def test_csv_cells_from_names_cannot_run_as_formulas(tmp_path, name):
 
 
 def test_csv_numbers_and_plain_names_are_untouched(tmp_path):
-    from rbi.cli.render import to_csv
+    from rbi.reprs import csv_text as to_csv
 
     text = to_csv([{"name": "wheel", "label": "-0.5", "x": -1.5, "note": "a-b"}])
     assert text.splitlines()[1] == "wheel,-0.5,-1.5,a-b"

@@ -63,6 +63,7 @@ if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads 
     from rbi.files.output import write_output as write_output
     from rbi.formats.paths import outside_paths_allowed as outside_paths_allowed
     from rbi.memory import collector_paused as collector_paused
+    from rbi.reprs import Result as Result
     from rbi.robot.audit import AuditReport as AuditReport
     from rbi.sim.budget import DEFAULT_MAX_STEPS as DEFAULT_MAX_STEPS
     from rbi.spec.checks import Check as Check
@@ -100,6 +101,7 @@ _HOME = {
     **dict.fromkeys(("Grid", "Normal", "Uniform"), "rbi.sweeps.plan"),
     "outside_paths_allowed": "rbi.formats.paths",
     "MassProperties": "rbi.core.mass",
+    "Result": "rbi.reprs",
     "Check": "rbi.spec.checks",
     "collector_paused": "rbi.memory",
     "AuditReport": "rbi.robot.audit",

@@ -4,10 +4,9 @@ compared number, its table one line a number with ``ok`` or ``FAIL``."""
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Sequence
-from typing import Any, overload
+from typing import Any
 
-from rbi.reprs import Result, Rows
+from rbi.reprs import Results, Rows
 from rbi.spec.checks import Check
 from rbi.text import number
 
@@ -41,34 +40,16 @@ def _components(check: Check) -> list[tuple[str, Any, Any, Any]]:
     return [(f"{name}{about}", w, g, d) for name, w, g, d in zip(names, want, got, deviation)]
 
 
-class Checks(Result, Sequence[Check]):
+class Checks(Results[Check]):
     """The expectations of a spec's ``expect:`` block against the body, as ``rbi check``
     compares them: a sequence of `Check`, with ``passed`` and ``failed`` counts and ``ok``."""
 
     def __init__(self, body: Any, checks: list[Check]) -> None:
         self._body = body
-        self._checks = checks
+        self._items = checks
         self.failed: int = sum(not c.passed for c in checks)
         self.passed: int = len(checks) - self.failed
         self.ok: bool = self.failed == 0
-
-    @overload
-    def __getitem__(self, index: int) -> Check: ...
-    @overload
-    def __getitem__(self, index: slice) -> list[Check]: ...
-    def __getitem__(self, index: int | slice) -> Check | list[Check]:
-        return self._checks[index]
-
-    def __len__(self) -> int:
-        return len(self._checks)
-
-    def __iter__(self) -> Iterator[Check]:
-        return iter(self._checks)
-
-    def __eq__(self, other: object) -> bool:
-        return list(self) == list(other) if isinstance(other, (Checks, list)) else NotImplemented
-
-    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
         return f"<rbi.Checks {self.passed} passed, {self.failed} failed>"
@@ -82,7 +63,7 @@ class Checks(Result, Sequence[Check]):
             "ok": self.ok,
             "passed": self.passed,
             "failed": self.failed,
-            "checks": [_check_dict(c) for c in self._checks],
+            "checks": [_check_dict(c) for c in self._items],
         }
 
     def csv_rows(self) -> list[dict[str, Any]]:
@@ -99,7 +80,7 @@ class Checks(Result, Sequence[Check]):
                 "tol": str(c.tol),
                 "pass": bool(deviation <= c.allowed),
             }
-            for c in self._checks
+            for c in self._items
             for label, want, got, deviation in _components(c)
         ]
 
@@ -119,7 +100,7 @@ class Checks(Result, Sequence[Check]):
                 number(c.allowed, 3),
                 "ok" if deviation <= c.allowed else "FAIL",
             )
-            for c in self._checks
+            for c in self._items
             for label, want, got, deviation in _components(c)
         ]
         columns = ("quantity", "unit", "expected", "actual", "deviation", "allowed", "")

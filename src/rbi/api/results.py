@@ -11,14 +11,13 @@ matrix's largest, as 0 (rounding noise); JSON and CSV keep every digit.
 from __future__ import annotations
 
 import math
-from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
-from typing import Any, overload
+from typing import Any
 
 import numpy as np
 
 from rbi.core.mass import MassProperties
-from rbi.reprs import Result, Rows
+from rbi.reprs import Result, Results, Rows
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
 from rbi.text import number, plus_minus, vector_text
 
@@ -455,7 +454,7 @@ class Part:
     ``center_of_mass`` and ``inertia_about_com`` from its own inputs; else None."""
 
 
-class Parts(Result, Sequence[Part]):
+class Parts(Results[Part]):
     """A body's parts in file order, as ``rbi parts`` lists them: a sequence of `Part` (``len``,
     ``[i]``, iteration), with the body's totals: ``volume`` (the solids' volume, holes taken
     away; None when no part has one), ``mean_density`` (mass / volume; None unless every part
@@ -463,31 +462,13 @@ class Parts(Result, Sequence[Part]):
 
     def __init__(self, body: Any, parts: list[Part]) -> None:
         self._body = body
-        self._parts = parts
+        self._items = parts
         volumes = [part.volume for part in parts]
         volume = sum(v for v in volumes if v is not None)  # a hole's is negative
         self.volume: float | None = volume if any(v is not None for v in volumes) else None
         every = all(v is not None for v in volumes)
         self.mean_density: float | None = body.mass / volume if every and volume > 0 else None
         self.principal_moments: np.ndarray = body.principal().moments
-
-    @overload
-    def __getitem__(self, index: int) -> Part: ...
-    @overload
-    def __getitem__(self, index: slice) -> list[Part]: ...
-    def __getitem__(self, index: int | slice) -> Part | list[Part]:
-        return self._parts[index]
-
-    def __len__(self) -> int:
-        return len(self._parts)
-
-    def __iter__(self) -> Iterator[Part]:
-        return iter(self._parts)
-
-    def __eq__(self, other: object) -> bool:
-        return list(self) == list(other) if isinstance(other, (Parts, list)) else NotImplemented
-
-    __hash__ = None  # type: ignore[assignment]
 
     def __repr__(self) -> str:
         return f"<rbi.Parts {len(self)} parts of {self._body.name or self._body.path!r}>"
@@ -498,7 +479,7 @@ class Parts(Result, Sequence[Part]):
         units = body.units
         to_si = MASS_UNITS_IN_KG[units["mass"]] / LENGTH_UNITS_IN_M[units["length"]] ** 3
         rows = []
-        for part in self._parts:
+        for part in self._items:
             density = abs(part.mass / part.volume) if part.volume else None
             rows.append(
                 {
@@ -516,11 +497,11 @@ class Parts(Result, Sequence[Part]):
                     "implied_density_si": None if density is None else density * to_si,
                 }
             )
-        for row, part in zip(rows, self._parts):
+        for row, part in zip(rows, self._items):
             if part.uncertainty is not None:
                 row["uncertainty"] = part.uncertainty
-        if any(part.shape == "step" for part in self._parts):  # the error estimate of each STEP part
-            for row, part in zip(rows, self._parts):
+        if any(part.shape == "step" for part in self._items):  # the error estimate of each STEP part
+            for row, part in zip(rows, self._items):
                 row["integration_error"] = part.integration_error
         return rows
 

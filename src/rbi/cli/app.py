@@ -38,70 +38,31 @@ except ImportError:  # typer 0.16 to 0.25 run on click, whose public home these 
 
 __all__ = ["COMMANDS", "app", "main"]
 
-COMMANDS: dict[str, tuple[str, str, str]] = {
-    # name: (module, function, the one-line summary `rbi --help` shows)
-    "inertia": (
-        "rbi.cli.mass_commands",
-        "inertia",
-        "Mass, centre of mass and inertia about a point, in any frame.",
-    ),
-    "principal": (
-        "rbi.cli.mass_commands",
-        "principal",
-        "Principal moments (ascending) and right-handed principal axes.",
-    ),
-    "parts": (
-        "rbi.cli.parts_command",
-        "parts",
-        "Per-part mass, centre of mass, inertia and share of the whole.",
-    ),
-    "momentum": (
-        "rbi.cli.mass_commands",
-        "momentum",
-        "Angular momentum and kinetic energy for a given spin.",
-    ),
-    "dynamics": (
-        "rbi.cli.dynamics_command",
-        "dynamics",
-        "Newton–Euler: the load for a motion, or the motion for a load.",
-    ),
-    "simulate": (
-        "rbi.cli.simulate_command",
-        "simulate",
-        "Motion of a top on its pivot or of a free body, with its error.",
-    ),
-    "sweep": (
-        "rbi.cli.sweep_command",
-        "sweep",
-        "Many simulations at once: stability maps and tolerance studies.",
-    ),
-    "animate": ("rbi.cli.animate_command", "animate", "Animation of the motion: a 3D HTML page or a GIF."),
-    "show": ("rbi.cli.show_command", "show", "Picture of the body as specified: parts, CoM, principal axes."),
-    "export": (
-        "rbi.cli.export_command",
-        "export",
-        "The <inertial> element for URDF, MJCF or SDF (SI units).",
-    ),
-    "import": (
-        "rbi.cli.import_command",
-        "import_robot",
-        "Links of a URDF, SDF or MJCF file as rbi specs (custom parts).",
-    ),
-    "audit": (
-        "rbi.cli.audit_command",
-        "audit",
-        "A robot file's inertials against its geometry; totals; --fix.",
-    ),
-    "uncertainty": (
-        "rbi.cli.uncertainty_command",
-        "uncertainty",
-        "Uncertainty budget of the numbers a spec writes with ±.",
-    ),
-    "check": ("rbi.cli.check_command", "check", "Compare the spec's expect: block with the computed values."),
-    "validate": ("rbi.cli.schema_command", "validate", "Validate many specs at once, one line per problem."),
-    "schema": ("rbi.cli.schema_command", "schema", "JSON Schema of the spec, for editors."),
-    "bench": ("rbi.cli.bench_command", "bench", "Speed against error, throughput and start-up latency."),
+_TABLE = {
+    # name: (module of rbi.cli holding the function of that name, the summary `rbi --help` shows)
+    "inertia": ("mass_commands", "Mass, centre of mass and inertia about a point, in any frame."),
+    "principal": ("mass_commands", "Principal moments (ascending) and right-handed principal axes."),
+    "parts": ("parts_command", "Per-part mass, centre of mass, inertia and share of the whole."),
+    "momentum": ("mass_commands", "Angular momentum and kinetic energy for a given spin."),
+    "dynamics": ("dynamics_command", "Newton–Euler: the load for a motion, or the motion for a load."),
+    "simulate": ("simulate_command", "Motion of a top on its pivot or of a free body, with its error."),
+    "sweep": ("sweep_command", "Many simulations at once: stability maps and tolerance studies."),
+    "animate": ("animate_command", "Animation of the motion: a 3D HTML page or a GIF."),
+    "show": ("show_command", "Picture of the body as specified: parts, CoM, principal axes."),
+    "export": ("export_command", "The <inertial> element for URDF, MJCF or SDF (SI units)."),
+    "import": ("import_command", "Links of a URDF, SDF or MJCF file as rbi specs (custom parts)."),
+    "audit": ("audit_command", "A robot file's inertials against its geometry; totals; --fix."),
+    "uncertainty": ("uncertainty_command", "Uncertainty budget of the numbers a spec writes with ±."),
+    "check": ("check_command", "Compare the spec's expect: block with the computed values."),
+    "validate": ("schema_command", "Validate many specs at once, one line per problem."),
+    "schema": ("schema_command", "JSON Schema of the spec, for editors."),
+    "bench": ("bench_command", "Speed against error, throughput and start-up latency."),
 }
+COMMANDS: dict[str, tuple[str, str, str]] = {
+    name: (f"rbi.cli.{module}", "import_robot" if name == "import" else name, summary)
+    for name, (module, summary) in _TABLE.items()
+}
+"""Each command: its module, its function and its one-line summary (`rbi --help` imports none)."""
 
 
 class _LazyGroup(TyperGroup):
@@ -132,13 +93,8 @@ class _LazyGroup(TyperGroup):
 def build_command(name: str):
     """The click command of ``rbi NAME``, its module imported now."""
     module_name, function_name, summary = COMMANDS[name]
-    collecting = gc.isenabled()
-    gc.disable()  # what the imports (numpy among them) build lives on: passes over it were ~10% of `rbi inertia`
-    try:
-        callback = getattr(importlib.import_module(module_name), function_name)
-    finally:
-        if collecting:
-            gc.enable()
+    # numpy and the API's modules are imported by rbi.api with the collector paused
+    callback = getattr(importlib.import_module(module_name), function_name)
     command = get_command_from_info(
         CommandInfo(name=name, callback=callback, short_help=summary),
         pretty_exceptions_short=True,

@@ -31,4 +31,4 @@ def check_of(file: str) -> FileReport:
     """What `rbi check` gives for one file; among several files, its CSV row is ``name, units,
     ok, passed, failed``."""
     checks = rbi.load(file).check()
-    return FileReport.of(checks, failed=not checks.ok)
+    return FileReport(checks, failed=not checks.ok)

@@ -2,47 +2,43 @@
 
 from __future__ import annotations
 
-from typing import Annotated
-
-import typer
-
 import rbi
 from rbi import SpecError
-from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, parse_about, parse_vector
+from rbi.cli.options import (
+    AboutOption,
+    FormatOption,
+    OutputFormat,
+    SpecFile,
+    option,
+    parse_about,
+    parse_vector,
+)
 from rbi.cli.render import emit_result
 
 _VEC = "X,Y,Z"
 
 
-OmegaOption = Annotated[
-    str, typer.Option("--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity, rad/s.")
-]
-AlphaOption = Annotated[
+OmegaOption = option(str, "--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity, rad/s.")
+AlphaOption = option(
+    str | None, "--alpha", metavar="AX,AY,AZ", help="Angular acceleration, rad/s² (inverse dynamics)."
+)
+AccelOption = option(
     str | None,
-    typer.Option("--alpha", metavar="AX,AY,AZ", help="Angular acceleration, rad/s² (inverse dynamics)."),
-]
-AccelOption = Annotated[
+    "--accel",
+    metavar=_VEC,
+    help="Acceleration of the --about point, length/s² (default 0: a fixed point).",
+)
+ForceOption = option(
+    str | None, "--force", metavar=_VEC, help="Applied force, mass·length/s² (forward dynamics)."
+)
+TorqueOption = option(
     str | None,
-    typer.Option(
-        "--accel",
-        metavar=_VEC,
-        help="Acceleration of the --about point, length/s² (default 0: a fixed point).",
-    ),
-]
-ForceOption = Annotated[
-    str | None,
-    typer.Option("--force", metavar=_VEC, help="Applied force, mass·length/s² (forward dynamics)."),
-]
-TorqueOption = Annotated[
-    str | None,
-    typer.Option(
-        "--torque",
-        metavar=_VEC,
-        help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
-        "Without --force a non-CoM --about point is held (a pivot): "
-        "the force needed to hold it is reported.",
-    ),
-]
+    "--torque",
+    metavar=_VEC,
+    help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
+    "Without --force a non-CoM --about point is held (a pivot): "
+    "the force needed to hold it is reported.",
+)
 
 
 def dynamics(

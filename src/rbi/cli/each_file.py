@@ -15,6 +15,7 @@ failed, else 0. FILE ``-`` (standard input) is called ``<stdin>`` in the output.
 
 from __future__ import annotations
 
+import json
 import sys
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
@@ -23,15 +24,13 @@ from typing import Any
 from rbi.api import SpecError
 from rbi.cli.option_values import error_line
 from rbi.cli.render import (
-    emit,
+    Document,
+    emit_result,
     fitted,
-    flatten,
     refuse_non_finite,
     say_warnings,
     stdout_console,
     tables_of,
-    to_csv,
-    to_json,
 )
 from rbi.cli.terminal import ReaderLeft, say, status_kept
 
@@ -41,31 +40,17 @@ STDIN_LABEL = "<stdin>"
 
 @dataclass
 class FileReport:
-    """What one file gives.
+    """What one file gives: ``result``, a result of the API (:class:`rbi.Result`: its
+    ``to_dict()``, CSV rows, tables' rows, and ``csv_summary()``, its row among several
+    files'); ``failed``: a check failed (exit 1); ``table``: draws its tables, when not its
+    rows drawn as rbi's."""
 
-    result: the one-file JSON object. table: builds the rich renderable (called only for table
-    output). csv_rows: the one-file CSV rows (default ``[result]``). summary: the file's one
-    CSV row among several (default the first of ``csv_rows``). failed: a check failed (exit 1).
-    """
-
-    result: dict[str, Any]
-    table: Callable[[], Any]
-    csv_rows: list[dict[str, Any]] | None = None
-    summary: dict[str, Any] | None = None
+    result: Any
     failed: bool = False
+    table: Callable[[], Any] | None = None
 
-    @classmethod
-    def of(cls, result: Any, failed: bool = False) -> FileReport:
-        """What a result of the API gives (:class:`rbi.reprs.Result`: its ``to_dict()``, its
-        tables' rows, its CSV rows and its row among several files')."""
-        return cls(
-            result.to_dict(), lambda: tables_of(result), result.csv_rows(), result.csv_summary(), failed
-        )
-
-    def summary_row(self) -> dict[str, Any]:
-        if self.summary is not None:
-            return self.summary
-        return (self.csv_rows or [self.result])[0]
+    def shown(self) -> Any:
+        return tables_of(self.result) if self.table is None else self.table()
 
 
 def file_label(file: str) -> str:
@@ -79,8 +64,13 @@ def report_each(files: Sequence[str], report: Callable[[str], FileReport], fmt: 
 
     if len(files) == 1:
         one = report(files[0])
+        result = (
+            one.result
+            if one.table is None
+            else Document(one.result.to_dict(), one.table, one.result.csv_rows())
+        )
         with status_kept(int(one.failed)):
-            emit(fmt, one.result, one.table, csv_rows=one.csv_rows, source=file_label(files[0]))
+            emit_result(fmt, result, source=file_label(files[0]))
         return int(one.failed)
     return _Several(fmt).run(files, report)
 
@@ -100,34 +90,35 @@ class _Several:
             for file in files:
                 try:
                     one = report(file)
-                    refuse_non_finite(one.result, file_label(file))
+                    data = one.result.to_dict()
+                    refuse_non_finite(data, file_label(file))
                 except SpecError as exc:
                     status = 2
                     sys.stdout.flush()  # what earlier files printed comes before this file's error line
                     say(error_line(exc))
                     continue
                 status = max(status, int(one.failed))
-                self.write(file_label(file), one)
+                self.write(file_label(file), one, data)
         except ReaderLeft as exc:  # the reader left: the run ends with the status known by then
             exc.status = max(exc.status, status)
             raise
         return status
 
-    def write(self, label: str, one: FileReport) -> None:
+    def write(self, label: str, one: FileReport, data: dict[str, Any]) -> None:
 
         if self.fmt != "json":
             sys.stdout.flush()  # the warning line follows what earlier files printed
-            say_warnings(one.result.get("warnings", ()))
+            say_warnings(data.get("warnings", ()))
         if self.fmt == "json":
-            sys.stdout.write(to_json({"file": label} | one.result) + "\n")
+            sys.stdout.write(json.dumps({"file": label} | data) + "\n")
         elif self.fmt == "csv":
-            self._csv_row({"file": label} | one.summary_row())
+            self._csv_row({"file": label} | one.result.csv_summary())
         else:
             console = stdout_console()
             if self.sections:
                 console.print()
             console.print(f"==> {label} <==", markup=False, highlight=False)
-            console.print(fitted(one.table(), console))
+            console.print(fitted(one.shown(), console))
             self.sections += 1
         sys.stdout.flush()
 
@@ -135,9 +126,9 @@ class _Several:
         """One CSV row under the first file's header (a column the first file lacked is left
         out, one it had and this file lacks is empty)."""
 
-        flat = flatten(row)
+        flat = Document(row, list).flat_rows()[0]
         first = self.header is None
         if first:
             self.header = list(flat)
-        text = to_csv([{key: flat.get(key) for key in self.header}])
+        text = Document({key: flat.get(key) for key in self.header}, list).to_csv()
         sys.stdout.write(text if first else text.split("\n", 1)[1])

@@ -4,13 +4,10 @@ from __future__ import annotations
 
 import sys
 from enum import Enum
-from typing import Annotated
-
-import typer
 
 import rbi
 from rbi import SpecError
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile
+from rbi.cli.options import FormatOption, OutputFormat, SpecFile, option
 from rbi.cli.render import emit_result, say_warnings
 
 
@@ -20,26 +17,20 @@ class ExportTarget(str, Enum):
     sdf = "sdf"
 
 
-ToOption = Annotated[
-    ExportTarget,
-    typer.Option("--to", "-t", help="Robot description format: urdf, mjcf or sdf.", show_default=False),
-]
-DocumentOption = Annotated[
+ToOption = option(
+    ExportTarget, "--to", "-t", help="Robot description format: urdf, mjcf or sdf.", show_default=False
+)
+DocumentOption = option(
     bool,
-    typer.Option(
-        "--document",
-        help="Print a whole minimal document (robot/link, "
-        "mujoco/worldbody/body, sdf/model/link) instead of the bare element.",
-    ),
-]
-DiagonalOption = Annotated[
+    "--document",
+    help="Print a whole minimal document (robot/link, "
+    "mujoco/worldbody/body, sdf/model/link) instead of the bare element.",
+)
+DiagonalOption = option(
     bool,
-    typer.Option(
-        "--diagonal",
-        help="MJCF only: principal moments (diaginertia) and the "
-        "principal frame (quat) instead of fullinertia.",
-    ),
-]
+    "--diagonal",
+    help="MJCF only: principal moments (diaginertia) and the principal frame (quat) instead of fullinertia.",
+)
 
 
 def export(

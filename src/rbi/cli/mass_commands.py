@@ -4,9 +4,6 @@ in the spec's units unless ``--units`` asks for others."""
 from __future__ import annotations
 
 from enum import Enum
-from typing import Annotated
-
-import typer
 
 import rbi
 from rbi.cli.each_file import FileReport, report_each
@@ -17,6 +14,7 @@ from rbi.cli.options import (
     SpecFile,
     SpecFiles,
     UnitsOption,
+    option,
     parse_about,
     parse_rotation,
     parse_units,
@@ -33,38 +31,48 @@ class ProductsSign(str, Enum):
     cad = "cad"
 
 
+RotateOption = option(
+    list[str] | None,
+    "--rotate",
+    "-r",
+    metavar="AXIS:DEG",
+    help="Turn the body about a world axis (x, y or z) by DEG degrees; repeat to chain, "
+    "applied in order. The inertia is then given in world axes: R I Rᵀ.",
+)
+AxisOption = option(
+    str | None,
+    "--axis",
+    metavar="X,Y,Z",
+    help="Also give the scalar moment of inertia about the line through the --about point along "
+    "this direction (any length; in the axes the matrix is given in: body axes, or world "
+    "axes after --rotate).",
+    show_default=False,
+)
+ProductsOption = option(
+    ProductsSign,
+    "--products",
+    help="Sign of the off-diagonal entries: tensor (the matrix, I_xy = -∫xy dm) or "
+    "cad (the positive integrals +∫xy dm that SolidWorks and CATIA print).",
+)
+OmegaOption = option(
+    str, "--omega", "-w", metavar="WX,WY,WZ", help="Angular velocity in body axes, rad/s.", show_default=False
+)
+VelocityOption = option(
+    str | None,
+    "--velocity",
+    "-v",
+    metavar="VX,VY,VZ",
+    help="Velocity of the centre of mass (body axes, file length unit/s). Without it the "
+    "--about point is taken as fixed, so the body turns about it.",
+)
+
+
 def inertia(
     files: SpecFiles,
     about: AboutOption = "com",
-    rotate: Annotated[
-        list[str] | None,
-        typer.Option(
-            "--rotate",
-            "-r",
-            metavar="AXIS:DEG",
-            help="Turn the body about a world axis (x, y or z) by DEG degrees; repeat to chain, "
-            "applied in order. The inertia is then given in world axes: R I Rᵀ.",
-        ),
-    ] = None,
-    axis: Annotated[
-        str | None,
-        typer.Option(
-            "--axis",
-            metavar="X,Y,Z",
-            help="Also give the scalar moment of inertia about the line through the --about point along "
-            "this direction (any length; in the axes the matrix is given in: body axes, or world "
-            "axes after --rotate).",
-            show_default=False,
-        ),
-    ] = None,
-    products: Annotated[
-        ProductsSign,
-        typer.Option(
-            "--products",
-            help="Sign of the off-diagonal entries: tensor (the matrix, I_xy = -∫xy dm) or "
-            "cad (the positive integrals +∫xy dm that SolidWorks and CATIA print).",
-        ),
-    ] = ProductsSign.tensor,
+    rotate: RotateOption = None,
+    axis: AxisOption = None,
+    products: ProductsOption = ProductsSign.tensor,
     units: UnitsOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> int:
@@ -88,7 +96,7 @@ def inertia(
 
     def one(file: str) -> FileReport:
         body, point, _ = _body_and_point(file, about, units)
-        return FileReport.of(body.inertia_report(point, turns, products=products.value, axis=direction))
+        return FileReport(body.inertia_report(point, turns, products=products.value, axis=direction))
 
     return report_each(files, one, format.value)
 
@@ -108,34 +116,18 @@ def principal(
       rbi principal flywheel.yaml --units SI
     """
 
-    return report_each(
-        files, lambda file: FileReport.of(_principal(*_body_and_point(file, about, units))), format.value
-    )
+    def one(file: str) -> FileReport:
+        body, point, _ = _body_and_point(file, about, units)
+        return FileReport(body.principal(point))
+
+    return report_each(files, one, format.value)
 
 
 def momentum(
     file: SpecFile,
-    omega: Annotated[
-        str,
-        typer.Option(
-            "--omega",
-            "-w",
-            metavar="WX,WY,WZ",
-            help="Angular velocity in body axes, rad/s.",
-            show_default=False,
-        ),
-    ],
+    omega: OmegaOption,
     about: AboutOption = "com",
-    velocity: Annotated[
-        str | None,
-        typer.Option(
-            "--velocity",
-            "-v",
-            metavar="VX,VY,VZ",
-            help="Velocity of the centre of mass (body axes, file length unit/s). Without it the "
-            "--about point is taken as fixed, so the body turns about it.",
-        ),
-    ] = None,
+    velocity: VelocityOption = None,
     units: UnitsOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
@@ -153,10 +145,6 @@ def momentum(
     body, point, velocity_given = _body_and_point(file, about, units, velocity_given)
     # Without a given velocity the reference point is fixed: v_c = ω × r_{c/o} (zero at the CoM).
     emit_result(format.value, body.momentum(w, point, velocity_given))
-
-
-def _principal(body: rbi.Body, about, _velocity=None) -> rbi.Principal:
-    return body.principal(about)
 
 
 def _body_and_point(file: str, about: str, units: str | None, velocity=None):

@@ -8,6 +8,7 @@ import math
 import re
 from typing import Any
 
+import rbi
 from rbi import ArgumentError, SpecError
 
 OPTION_NAMES = {
@@ -84,15 +85,12 @@ def sweep_values(text: str, option: str) -> Any:
     """A sweep axis as ``rbi.sweep`` takes it: ``START:STOP:COUNT`` → ``Grid``, one number,
     ``normal(MEAN,SD)`` → ``Normal``, ``uniform(LOW,HIGH)`` → ``Uniform``; :class:`SpecError`
     naming ``option`` otherwise."""
-    # not at top level: `rbi --help` would load rbi.api too
-    from rbi.api import Grid, Normal, Uniform
-
     text = str(text)
     try:
         if (match := _RANGE.match(text)) is not None:
-            return Grid(float(match[1]), float(match[2]), int(match[3]))
+            return rbi.Grid(float(match[1]), float(match[2]), int(match[3]))
         if (match := _DRAW.match(text)) is not None:
-            kind = Normal if match[1] == "normal" else Uniform
+            kind = rbi.Normal if match[1] == "normal" else rbi.Uniform
             return kind(float(match[2]), float(match[3]))
     except ValueError as exc:
         raise SpecError(f"{option}: {exc}") from None

@@ -7,7 +7,7 @@ from __future__ import annotations
 import importlib.util
 import logging
 from enum import Enum
-from typing import Annotated
+from typing import Annotated, Any
 
 import typer
 from typer.core import TyperArgument
@@ -21,16 +21,27 @@ from rbi.cli.option_values import (  # noqa: F401  (re-exported: the commands pa
 )
 
 
+def option(kind: Any, *names: str, **settings: Any) -> Any:
+    """An option as a command's parameter type, ``Annotated[kind, typer.Option(*names,
+    **settings)]``: declared once here or in a command's module and used as ``name: Option =
+    default`` (typer reads the annotation when the command runs)."""
+    return Annotated[kind, typer.Option(*names, **settings)]
+
+
+def argument(kind: Any, help: str, metavar: str) -> Any:
+    """A positional argument as a command's parameter type (see :func:`option`)."""
+    return Annotated[kind, typer.Argument(help=help, show_default=False, metavar=metavar)]
+
+
 class OutputFormat(str, Enum):
     table = "table"
     json = "json"
     csv = "csv"
 
 
-FormatOption = Annotated[
-    OutputFormat,
-    typer.Option("--format", "-f", help="table (for people), json (one object) or csv (header + rows)."),
-]
+FormatOption = option(
+    OutputFormat, "--format", "-f", help="table (for people), json (one object) or csv (header + rows)."
+)
 
 
 class DocumentFormat(str, Enum):
@@ -40,60 +51,38 @@ class DocumentFormat(str, Enum):
     json = "json"
 
 
-DocumentFormatOption = Annotated[
-    DocumentFormat,
-    typer.Option("--format", "-f", help="table (indented JSON, for people) or json (on one line)."),
-]
-SpecFile = Annotated[
-    str,
-    typer.Argument(
-        help="Body spec (YAML or JSON); - reads it from standard input.", show_default=False, metavar="FILE"
-    ),
-]
-SpecFiles = Annotated[
+DocumentFormatOption = option(
+    DocumentFormat, "--format", "-f", help="table (indented JSON, for people) or json (on one line)."
+)
+SpecFile = argument(str, "Body spec (YAML or JSON); - reads it from standard input.", "FILE")
+SpecFiles = argument(
     list[str],
-    typer.Argument(
-        help="Body specs (YAML or JSON), one or more (shell globs expand to several); - reads one from standard input.",
-        show_default=False,
-        metavar="FILE...",
-    ),
-]
-RobotFile = Annotated[
-    str,
-    typer.Argument(
-        help="Robot description: .urdf, .sdf or MJCF (.xml).", show_default=False, metavar="ROBOT_FILE"
-    ),
-]
-PackagePathOption = Annotated[
+    "Body specs (YAML or JSON), one or more (shell globs expand to several); - reads one from standard input.",
+    "FILE...",
+)
+RobotFile = argument(str, "Robot description: .urdf, .sdf or MJCF (.xml).", "ROBOT_FILE")
+PackagePathOption = option(
     list[str] | None,
-    typer.Option(
-        "--package-path",
-        metavar="NAME=DIR",
-        help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
-        "(ROS_PACKAGE_PATH is searched too).",
-    ),
-]
-AboutOption = Annotated[
+    "--package-path",
+    metavar="NAME=DIR",
+    help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
+    "(ROS_PACKAGE_PATH is searched too).",
+)
+AboutOption = option(
     str,
-    typer.Option(
-        "--about",
-        "-a",
-        metavar="com|origin|pivot|X,Y,Z",
-        help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units).",
-    ),
-]
-
-
-UnitsOption = Annotated[
+    "--about",
+    "-a",
+    metavar="com|origin|pivot|X,Y,Z",
+    help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units).",
+)
+UnitsOption = option(
     str | None,
-    typer.Option(
-        "--units",
-        "-u",
-        metavar="SI|LENGTH,MASS",
-        help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
-        "units. Numbers given on the command line (an --about X,Y,Z point) stay in the file's units.",
-    ),
-]
+    "--units",
+    "-u",
+    metavar="SI|LENGTH,MASS",
+    help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
+    "units. Numbers given on the command line (an --about X,Y,Z point) stay in the file's units.",
+)
 
 
 def plain_argument_help(command) -> None:

@@ -5,22 +5,19 @@ the spec's units) — with a total row for the whole body.
 
 from __future__ import annotations
 
-from typing import Annotated
-
-import typer
-
 import rbi
 from rbi.cli.each_file import FileReport, report_each
-from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
+from rbi.cli.options import FormatOption, OutputFormat, SpecFiles, option
+
+ExpandOption = option(
+    bool, "--expand", help="List each sub-assembly's own parts (ASSEMBLY/PART), not one row."
+)
 
 
 def parts(
     files: SpecFiles,
     format: FormatOption = OutputFormat.table,
-    expand: Annotated[
-        bool,
-        typer.Option("--expand", help="List each sub-assembly's own parts (ASSEMBLY/PART), not one row."),
-    ] = False,
+    expand: ExpandOption = False,
 ) -> int:
     """Per-part breakdown: mass and its share, volume, centre of mass, inertia about the part's
     own centre of mass and its principal moments, share of the body's inertia, implied
@@ -35,4 +32,4 @@ def parts(
     """
 
     # the body's warnings hold the mesh notes (repair, overlaps) too
-    return report_each(files, lambda file: FileReport.of(rbi.load(file).parts(expand)), format.value)
+    return report_each(files, lambda file: FileReport(rbi.load(file).parts(expand)), format.value)

@@ -1,5 +1,5 @@
-"""Rendering: JSON, CSV cells, rich tables fitted to the terminal, progress bars; numbers through
-the one formatter, :func:`rbi.api.number`."""
+"""Rendering: a result of the API (:class:`rbi.Result`) as JSON, CSV or rich tables fitted to
+the terminal; progress bars."""
 
 from __future__ import annotations
 
@@ -12,115 +12,36 @@ import time
 from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
-import numpy as np
-
-from rbi.api import SpecError, csv_lines
-from rbi.api import number as number  # re-exported: the tables and commands format with it
-from rbi.api import plus_minus as plus_minus
-from rbi.api import vector_text as text_vector  # the one vector formatter (rbi.text)
+import rbi
+from rbi import SpecError
 from rbi.cli.terminal import say, terminal_safe
 
 
-def plain(value: Any) -> Any:
-    """Recursively turn numpy arrays and scalars into plain Python lists, floats and ints.
+class Document(rbi.Result):
+    """A command's result given as a dict (``data``, made JSON-ready by :class:`rbi.Result`)
+    with the callable that draws its tables (``table``) and its CSV rows (``csv``, default
+    the one object), for the commands whose API call returns no :class:`rbi.Result`."""
 
-    ``-0.0`` becomes ``0.0``; JSON then carries each float's shortest round-tripping repr.
-    """
-    kind = type(value)  # the common exact types first (an audit's JSON has millions of values)
-    if kind is float:
-        return 0.0 if value == 0.0 else value
-    if kind is dict:
-        return {k: plain(v) for k, v in value.items()}
-    if kind is list:
-        return [plain(v) for v in value]
-    if kind is str or kind is int or kind is bool or value is None:
-        return value
-    if isinstance(value, dict):
-        return {k: plain(v) for k, v in value.items()}
-    if isinstance(value, (list, tuple)):
-        return [plain(v) for v in value]
-    if isinstance(value, np.ndarray):
-        return plain(value.tolist())
-    if isinstance(value, (np.floating, float)):
-        f = float(value)
-        return 0.0 if f == 0.0 else f
-    if isinstance(value, np.integer):
-        return int(value)
-    if isinstance(value, np.bool_):
-        return bool(value)
-    return value
+    def __init__(
+        self, data: dict[str, Any], table: Callable[[], Any], csv: list[dict[str, Any]] | None = None
+    ) -> None:
+        self.data, self.table, self.csv = data, table, csv
+
+    def to_dict(self) -> dict[str, Any]:
+        return self.data
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        return self.csv if self.csv is not None else [self.to_dict()]
 
 
-def to_json(result: dict[str, Any]) -> str:
-    """One JSON object of a result whose floats are all finite (:func:`refuse_non_finite` has
-    refused any other: JSON has no NaN)."""
-    return json.dumps(plain(result))
+class ReadyDocument(Document):
+    """A :class:`Document` whose ``data`` is JSON-ready already (an audit's millions of
+    numbers): not walked again."""
 
+    def to_dict(self) -> dict[str, Any]:
+        return self.data
 
-_XYZ = ("x", "y", "z")
-
-
-def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
-    """Flatten nested results into CSV columns: vectors get ``_x/_y/_z``, 3×3 matrices
-    ``_xx … _zz``, nested mappings ``outer_inner``, other lists ``_1, _2, …``."""
-    out: dict[str, Any] = {}
-    for key, value in plain(result).items():
-        name = f"{prefix}{key}"
-        if isinstance(value, dict):
-            out.update(flatten(value, prefix=f"{name}_"))
-        elif (
-            isinstance(value, list)
-            and len(value) == 3
-            and all(isinstance(r, list) and len(r) == 3 for r in value)
-        ):
-            if key == "axes":
-                for i, row in enumerate(value):
-                    for axis, v in zip(_XYZ, row):
-                        out[f"{name}_{i + 1}_{axis}"] = v
-            else:
-                for i, row in enumerate(value):
-                    for j, v in enumerate(row):
-                        out[f"{name}_{_XYZ[i]}{_XYZ[j]}"] = v
-        elif (
-            isinstance(value, list)
-            and len(value) == 3
-            and not any(isinstance(v, list) for v in value)
-            and not key.endswith(("moments", "axes_deg"))  # numbered like the axes they qualify
-        ):
-            for axis, v in zip(_XYZ, value):
-                out[f"{name}_{axis}"] = v
-        elif isinstance(value, list):
-            for i, v in enumerate(value):
-                out[f"{name}_{i + 1}"] = v
-        else:
-            out[name] = value
-    return out
-
-
-def to_csv(rows: Iterable[dict[str, Any]]) -> str:
-    """CSV text: a header row from the first row's (flattened) keys, then one line a row, each
-    cell through the one CSV cell rule (:func:`rbi.text.csv_cell`). A row's ``warnings`` are not
-    a column: they go to stderr (:func:`say_warnings`)."""
-    rows = [flatten({k: v for k, v in r.items() if k != "warnings"}) for r in rows]
-    if not rows:
-        return ""
-    return csv_lines((row.values() for row in rows), header=rows[0].keys())
-
-
-NOISE_RELATIVE = 1e-12
-"""An entry smaller than this fraction of the largest entry of its matrix or vector is rounding
-noise (a 1e-18 beside a 1e-4) and prints as 0 in tables; JSON and CSV keep every digit."""
-
-
-def without_noise(values, scale: float = 0.0) -> np.ndarray:
-    """``values`` (a vector or matrix) with every entry below :data:`NOISE_RELATIVE` of the
-    largest magnitude among them, or of ``scale`` (a position: the body's size), set to 0, for
-    printing."""
-    values = np.array(values, dtype=float)
-    finite = np.abs(values[np.isfinite(values)])
-    peak = max(float(finite.max()) if finite.size else 0.0, scale if math.isfinite(scale) else 0.0)
-    values[np.abs(values) < NOISE_RELATIVE * peak] = 0.0
-    return values
+    to_dict.json_ready = True  # type: ignore[attr-defined]  # rbi.Result leaves it as it is
 
 
 def _color_system() -> str | None:
@@ -166,36 +87,37 @@ def emit(
     source: str | None = None,
     ready: bool = False,
 ) -> None:
-    """Write ``result`` to stdout in the chosen format. ``table`` builds the rich renderable
-    lazily (rich is imported only for tables); ``csv_rows`` defaults to ``[result]``;
-    ``source`` names the file in an error; ``ready``: ``result`` is JSON-ready already (a
-    result's ``to_dict()``), not walked again."""
-    flat = result if ready else plain(result)
-    if fmt == "json":  # the encoder finds a NaN or inf as it writes (an audit's JSON has millions)
-        try:
-            text = json.dumps(flat, allow_nan=False)
-        except ValueError:
-            _refuse_non_finite_plain(flat, source)
-            raise
-        sys.stdout.write(text + "\n")
-        return
-    _refuse_non_finite_plain(flat, source)
-    say_warnings(result.get("warnings", ()))
-    if fmt == "csv":
-        sys.stdout.write(to_csv(csv_rows if csv_rows is not None else [result]))
-    else:
-        print_table(table())
+    """:func:`emit_result` of a result given as a dict (see :class:`Document`); ``ready``:
+    ``result`` is JSON-ready already."""
+    emit_result(fmt, (ReadyDocument if ready else Document)(result, table, csv_rows), source)
 
 
 def emit_result(fmt: str, result: Any, source: str | None = None) -> None:
-    """Write a result of the API (:class:`rbi.reprs.Result`) as :func:`emit` does: its
-    ``to_dict()``, its CSV rows or its tables."""
-
-    emit(fmt, result.to_dict(), lambda: tables_of(result), csv_rows=result.csv_rows(), source=source)
+    """Write a result of the API (:class:`rbi.Result`) to stdout in the chosen format: its
+    ``to_dict()`` as one JSON object, its CSV or its tables; ``source`` names the file in an
+    error (a non-finite number: JSON has no NaN)."""
+    data = result.to_dict()
+    if fmt == "json":  # the encoder finds a NaN or inf as it writes (an audit's JSON has millions)
+        try:
+            text = json.dumps(data, allow_nan=False)
+        except ValueError:
+            refuse_non_finite(data, source)
+            raise
+        sys.stdout.write(text + "\n")
+        return
+    refuse_non_finite(data, source)
+    say_warnings(data.get("warnings", ()))
+    if fmt == "csv":
+        sys.stdout.write(result.to_csv())
+    else:
+        print_table(tables_of(result))
 
 
 def tables_of(result: Any) -> Any:
-    """A result's rows (``result.rows()``) drawn as rbi's tables."""
+    """A result's tables: a :class:`Document`'s own, else its rows (``result.rows()``) drawn
+    as rbi's tables."""
+    if isinstance(result, Document):
+        return result.table()
     # not at top level: `rbi inertia --format json` would load rich and rbi.cli.tables too
     from rbi.cli.tables import drawn
 
@@ -219,11 +141,6 @@ def print_table(renderable) -> None:
 def refuse_non_finite(result: dict[str, Any], source: str | None = None) -> None:
     """Inputs of absurd size (``--omega 1e200,0,0``) overflow to inf/NaN: refuse them as bad
     input (exit 2, naming the file ``source`` when given) rather than print nulls."""
-    _refuse_non_finite_plain(plain(result), source)
-
-
-def _refuse_non_finite_plain(result: dict[str, Any], source: str | None) -> None:
-    """:func:`refuse_non_finite` of a result :func:`plain` has made plain already."""
     bad = [key for key, value in result.items() if _has_non_finite(value)]
     if bad:
         where = f"{source}: " if source else ""
@@ -241,13 +158,9 @@ def _has_non_finite(value: Any) -> bool:
         return any(map(_has_non_finite, value))
     if isinstance(value, dict):
         return any(_has_non_finite(v) for v in value.values())
+    if hasattr(value, "tolist"):  # a numpy array or scalar (numpy is not imported here)
+        return _has_non_finite(value.tolist())
     return isinstance(value, float) and not math.isfinite(value)
-
-
-def vector_text(v, digits: int = 6, scale: float = 0.0) -> str:
-    """``[x, y, z]`` with noise below :data:`NOISE_RELATIVE` of the vector's largest entry, or
-    of ``scale``, printed as 0."""
-    return text_vector(v, digits, scale=scale)
 
 
 # --- progress (rich is imported when a bar is first drawn) -----------------------------------

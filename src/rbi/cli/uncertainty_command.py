@@ -45,6 +45,6 @@ def uncertainty(
 
     def report(file: str) -> FileReport:
         result = api.load(file).uncertainty(of, method, samples, seed, coverage)
-        return FileReport(result.to_dict(), lambda: result, csv_rows=result.csv_rows())
+        return FileReport(result, table=lambda: result)
 
     return report_each(files, report, format.value)
