@@ -14,10 +14,30 @@ from rbi.core.dynamics import (
     angular_momentum,
     angular_momentum_about_point,
     kinetic_energy,
-    newton_euler_com,
-    newton_euler_point,
-    newton_euler_point_forward,
+    newton_euler_about,
 )
+from rbi.core.mass import MassProperties
+
+
+def newton_euler_com(mass, inertia_com, omega, alpha, com_acceleration):
+    """Inverse dynamics about the centre of mass: the force and the torque about it."""
+    props = MassProperties(mass, np.zeros(3), inertia_com)
+    given = dict(alpha=alpha, point_acceleration=com_acceleration)
+    return newton_euler_about(props, inertia_com, np.zeros(3), omega, about_com=True, **given)[1]
+
+
+def newton_euler_point(mass, inertia_point, com_from_point, omega, alpha, point_acceleration):
+    """Inverse dynamics about a body point o: the force and the torque about o."""
+    props = MassProperties(mass, com_from_point, inertia_point)  # only the mass is read
+    given = dict(alpha=alpha, point_acceleration=point_acceleration)
+    return newton_euler_about(props, inertia_point, com_from_point, omega, about_com=False, **given)[1]
+
+
+def newton_euler_point_forward(mass, inertia_point, com_from_point, omega, force, torque):
+    """Forward dynamics about a body point o given the force: ``a_o`` and ``α``."""
+    props = MassProperties(mass, com_from_point, inertia_point)  # only the mass is read
+    given = dict(force=np.asarray(force, dtype=float), torque=np.asarray(torque, dtype=float))
+    return newton_euler_about(props, inertia_point, com_from_point, omega, about_com=False, **given)[0]
 
 
 class Cloud:

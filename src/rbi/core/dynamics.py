@@ -57,7 +57,7 @@ def angle_between_deg(a: np.ndarray, b: np.ndarray) -> float | None:
     return math.degrees(math.atan2(float(np.linalg.norm(np.cross(a, b))), float(a @ b)))
 
 
-# --- Newton–Euler about the centre of mass -------------------------------------------------
+# --- Newton–Euler ----------------------------------------------------------------------------
 
 
 class Wrench(NamedTuple):
@@ -72,20 +72,6 @@ class Acceleration(NamedTuple):
 
     linear: np.ndarray
     angular: np.ndarray
-
-
-def newton_euler_com(
-    mass: float, inertia_com: np.ndarray, omega: np.ndarray, alpha: np.ndarray, com_acceleration: np.ndarray
-) -> Wrench:
-    """Inverse dynamics about the centre of mass: ``F = m a_c``, ``τ_c = I α + ω × I ω``."""
-    I = np.asarray(inertia_com, dtype=float)
-    w = np.asarray(omega, dtype=float)
-    force = mass * np.asarray(com_acceleration, dtype=float)
-    torque = I @ np.asarray(alpha, dtype=float) + np.cross(w, I @ w)
-    return Wrench(force, torque)
-
-
-# --- Newton–Euler about a point o ----------------------------------------------------------
 
 
 def spatial_inertia_about_point(
@@ -114,42 +100,6 @@ def velocity_terms_about_point(
     return np.concatenate((mass * np.cross(w, np.cross(w, r)), np.cross(w, I @ w)))
 
 
-def newton_euler_point(
-    mass: float,
-    inertia_point: np.ndarray,
-    com_from_point: np.ndarray,
-    omega: np.ndarray,
-    alpha: np.ndarray,
-    point_acceleration: np.ndarray,
-) -> Wrench:
-    """Inverse dynamics about a body point o: force on the body and torque about o.
-
-    ``[F; τ_o] = [[m E, −m[r]×], [m[r]×, I_o]] [a_o; α] + [m ω×(ω×r); ω × I_o ω]``
-    with ``r = r_{c/o}``.
-    """
-    block = spatial_inertia_about_point(mass, inertia_point, com_from_point)
-    acc = np.concatenate((np.asarray(point_acceleration, dtype=float), np.asarray(alpha, dtype=float)))
-    out = block @ acc + velocity_terms_about_point(mass, inertia_point, com_from_point, omega)
-    return Wrench(out[:3], out[3:])
-
-
-def newton_euler_point_forward(
-    mass: float,
-    inertia_point: np.ndarray,
-    com_from_point: np.ndarray,
-    omega: np.ndarray,
-    force: np.ndarray,
-    torque_point: np.ndarray,
-) -> Acceleration:
-    """Forward dynamics about a body point o: ``a_o`` and ``α`` from the force and the torque
-    about o, solving the block system of :func:`newton_euler_point`."""
-    block = spatial_inertia_about_point(mass, inertia_point, com_from_point)
-    rhs = np.concatenate((np.asarray(force, dtype=float), np.asarray(torque_point, dtype=float)))
-    rhs = rhs - velocity_terms_about_point(mass, inertia_point, com_from_point, omega)
-    acc = np.linalg.solve(block, rhs)
-    return Acceleration(acc[:3], acc[3:])
-
-
 def newton_euler_about(
     props: MassProperties,
     inertia_point: np.ndarray,
@@ -167,23 +117,26 @@ def newton_euler_about(
     about o, held)``. Forward without ``force`` about a point other than the centre of mass,
     o is held (a pivot, accelerating at ``point_acceleration``, default 0) and the force
     holding it is found (``held`` True); otherwise ``point_acceleration`` is what the loads
-    give. ``inertia_point``: the inertia about o; ``com_from_point``: ``r_{c/o}``."""
+    give. ``inertia_point``: the inertia about o; ``com_from_point``: ``r_{c/o}``.
+
+    About the centre of mass ``F = m a_c``, ``τ_c = I α + ω × I ω``; about a point o
+    ``[F; τ_o] = [[m E, −m[r]×], [m[r]×, I_o]] [a_o; α] + [m ω×(ω×r); ω × I_o ω]`` with
+    ``r = r_{c/o}``, solved for ``a_o`` and ``α`` when forward."""
     m, w, r = props.mass, omega, com_from_point
     acc = np.zeros(3) if point_acceleration is None else point_acceleration
+    block = spatial_inertia_about_point(m, inertia_point, r)
+    bias = velocity_terms_about_point(m, inertia_point, r, w)
     if alpha is not None:
-        if about_com:
-            return (
-                Acceleration(acc, alpha),
-                newton_euler_com(m, props.inertia_about_com, w, alpha, acc),
-                False,
-            )
-        return Acceleration(acc, alpha), newton_euler_point(m, inertia_point, r, w, alpha, acc), False
+        if about_com:  # F = m a_c, τ_c = I α + ω × I ω
+            I = props.inertia_about_com
+            return Acceleration(acc, alpha), Wrench(m * acc, I @ alpha + np.cross(w, I @ w)), False
+        out = block @ np.concatenate((acc, alpha)) + bias
+        return Acceleration(acc, alpha), Wrench(out[:3], out[3:]), False
     t = np.zeros(3) if torque is None else torque
     if force is None and not about_com:
         a = np.linalg.solve(inertia_point, t - np.cross(w, inertia_point @ w) - m * np.cross(r, acc))
-        held = newton_euler_point(m, inertia_point, r, w, a, acc).force
-        return Acceleration(acc, a), Wrench(held, t), True
-    f = (
-        np.zeros(3) if force is None else force
-    )  # about the centre of mass r is 0: a_c = F/m, I α = τ − ω × I ω
-    return newton_euler_point_forward(m, inertia_point, r, w, f, t), Wrench(f, t), False
+        held = block @ np.concatenate((acc, a)) + bias
+        return Acceleration(acc, a), Wrench(held[:3], t), True
+    f = np.zeros(3) if force is None else force  # about the centre of mass r is 0: a_c = F/m
+    solved = np.linalg.solve(block, np.concatenate((f, t)) - bias)
+    return Acceleration(solved[:3], solved[3:]), Wrench(f, t), False

@@ -67,14 +67,12 @@ class MassProperties:
         object.__setattr__(self, "inertia_about_com", _frozen(self.inertia_about_com, (*n, 3, 3)))
 
     def __repr__(self) -> str:
-        if not self.single:
-            return (
-                f"MassProperties(mass={self.mass!r}, center_of_mass={self.center_of_mass!r}, "
-                f"inertia_about_com={self.inertia_about_com!r}, frame={self.frame!r})"
-            )
+        com, inertia = self.center_of_mass, self.inertia_about_com
+        if self.single:  # one body reads as plain lists of its numbers
+            com, inertia = com.tolist(), inertia.tolist()
         return (
-            f"MassProperties(mass={self.mass!r}, center_of_mass={self.center_of_mass.tolist()!r}, "
-            f"inertia_about_com={self.inertia_about_com.tolist()!r}, frame={self.frame!r})"
+            f"MassProperties(mass={self.mass!r}, center_of_mass={com!r}, "
+            f"inertia_about_com={inertia!r}, frame={self.frame!r})"
         )
 
     @property

@@ -547,17 +547,19 @@ def repair_mesh(vertices: np.ndarray, faces: np.ndarray) -> RepairedMesh:
     return RepairedMesh(vertices, repaired, len(added), surface_area(vertices, added))
 
 
-NOT_CLOSED_HINT = (
-    "; for such a mesh choose inertia: convex (the solid convex hull), inertia: shell (mass on "
-    "the surface), or repair: true (closes holes of three or four edges)"
-)
-"""Added to an ``exact``-mode refusal: the other ways to give the mesh mass properties."""
-
-
-WINDING_HINT = (
-    "; turn those faces around, or choose inertia: convex or inertia: shell (neither depends on the winding)"
-)
-"""Added to an ``exact``-mode refusal for winding: the modes that read such a mesh as it is."""
+EXACT_HINTS = {
+    ("not closed", "not a closed surface"): (
+        "; for such a mesh choose inertia: convex (the solid convex hull), inertia: shell (mass on "
+        "the surface), or repair: true (closes holes of three or four edges)"
+    ),
+    ("not consistently wound", "inside out"): (
+        "; turn those faces around, or choose inertia: convex or inertia: shell (neither depends on the winding)"
+    ),
+    ("encloses no volume",): "; for a flat part choose inertia: shell (the mass spread over the surface)",
+}
+"""Added to an ``exact``-mode refusal, by how the refusal starts: the other ways to give the mesh
+mass properties (for an open mesh), the modes that read a wrongly wound one as it is, and the
+surface for a flat one."""
 
 
 def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exact") -> MeshDistribution:
@@ -578,11 +580,6 @@ def mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str = "exac
         return MeshDistribution(mode, MassProperties(area, centroid, inertia, "mesh"), vertices, faces)
     problem, notes = closed_mesh_check(vertices, faces)
     if problem is not None:
-        if mode == "exact" and problem.startswith(("not closed", "not a closed surface")):
-            problem += NOT_CLOSED_HINT
-        elif mode == "exact" and problem.startswith(("not consistently wound", "inside out")):
-            problem += WINDING_HINT
-        elif mode == "exact" and problem.startswith("encloses no volume"):
-            problem += "; for a flat part choose inertia: shell (the mass spread over the surface)"
-        raise MeshError(problem)
+        hints = [hint for starts, hint in EXACT_HINTS.items() if problem.startswith(starts)]
+        raise MeshError(problem + (hints[0] if hints and mode == "exact" else ""))
     return MeshDistribution(mode, enclosed_volume_properties(vertices, faces), vertices, faces, notes)

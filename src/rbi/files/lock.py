@@ -38,21 +38,10 @@ class OutputLock:
 
         self.path = safe.beside(out, self.SUFFIX)
         label = f"{what}: lock file {safe.shown(self.path.name)}"
-        flags = (
-            os.O_RDWR
-            | os.O_CREAT
-            | getattr(os, "O_NOFOLLOW", 0)
-            | getattr(os, "O_NONBLOCK", 0)
-            | getattr(os, "O_CLOEXEC", 0)
-        )
         safe.existing_regular(self.path, label)
-        try:
-            self._fd = os.open(self.path, flags, 0o600)
-        except OSError as exc:
-            raise InputError(f"{label}: cannot open: {safe.reason(exc)}") from None
+        self._fd = safe.open_regular(self.path, label, os.O_RDWR | os.O_CREAT, 0o600)
         try:
             info = os.fstat(self._fd)
-            safe.check_regular(info, self.path, label)
             try:
                 fcntl.flock(self._fd, fcntl.LOCK_EX | fcntl.LOCK_NB)
             except BlockingIOError:

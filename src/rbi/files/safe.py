@@ -82,12 +82,12 @@ def existing_regular(path: str | os.PathLike, what: str, *, own: bool = True) ->
     return info is not None
 
 
-def open_regular(path: str | os.PathLike, what: str, flags: int = os.O_RDONLY) -> int:
-    """A descriptor of the existing regular file at ``path``, opened with ``flags`` (no
-    creation) without following a link or blocking; InputError for anything else (see
-    :func:`existing_regular`). The caller closes it."""
+def open_regular(path: str | os.PathLike, what: str, flags: int = os.O_RDONLY, mode: int = 0o777) -> int:
+    """A descriptor of the existing regular file at ``path`` (or one created with ``mode``, when
+    ``flags`` has ``O_CREAT``), opened with ``flags`` without following a link or blocking;
+    InputError for anything else (see :func:`existing_regular`). The caller closes it."""
     try:
-        fd = os.open(path, flags | _NOFOLLOW | _NONBLOCK | _CLOEXEC | _NOCTTY)
+        fd = os.open(path, flags | _NOFOLLOW | _NONBLOCK | _CLOEXEC | _NOCTTY, mode)
     except FileNotFoundError:
         raise InputError(f"{what}: does not exist") from None
     except OSError as exc:
