@@ -1,4 +1,4 @@
-"""The URDF reader (rbi.formats.urdf): its groups taken from a plain text (read_urdf_text) and
+"""The URDF reader (rbi.formats.urdf): its groups taken from a plain text (plain_text) and
 from the parsed element tree (read_urdf) give the same audit, number for number; a model's
 columns audit as its links do; a refusal is worded for the first thing wrong in the file, in
 the words urdfdom's readers know (the messages of rbi's reader of one element at a time)."""
@@ -13,7 +13,7 @@ import pytest
 from rbi.errors import InputError
 from rbi.formats import robot_xml
 from rbi.formats.robot_files import read_robot
-from rbi.formats.urdf import attach_elements, read_urdf, read_urdf_text
+from rbi.formats.urdf import attach_elements, plain_text, read_urdf
 from rbi.robot.audit import audit_model
 
 LINK = (
@@ -66,6 +66,17 @@ def _swap(old: str, new: str) -> str:
     text = _urdf()
     assert old in text
     return text.replace(old, new, 1)
+
+
+def read_urdf_text(path: str, data: bytes):
+    """The model read from the plain text of ``data`` (:func:`plain_text`); None when the text
+    is not plain or the file is refused."""
+    document = robot_xml.decoded(path, data)
+    plain = plain_text(document)
+    try:
+        return None if plain is None else read_urdf(document, None, True, plain)
+    except InputError:
+        return None
 
 
 def _careful(path: str, data: bytes):

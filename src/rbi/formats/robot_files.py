@@ -31,7 +31,7 @@ from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot import short as _short
 from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
 from rbi.formats.sdf import read_sdf
-from rbi.formats.urdf import read_urdf, read_urdf_text
+from rbi.formats.urdf import plain_text, read_urdf
 from rbi.formats.xacro_sandbox import expand_xacro
 
 ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf", ".xacro")
@@ -60,12 +60,11 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
         document = robot_xml.read_xml(path, expanded)
         document.includes.extend(includes)
     else:
-        data = robot_xml.read_bytes(path)
-        if b"<robot" in data[:65536]:  # most likely a URDF: first from its plain text, if it is
-            model = read_urdf_text(path, data, package_paths, geometry)
-            if model is not None:
-                return model
-        document = robot_xml.read_xml(path, data)
+        document = robot_xml.decoded(path)
+        plain = plain_text(document) if b"<robot" in document.text[:65536] else None
+        if plain is not None:  # a URDF read from its plain text, not parsed into a tree
+            return read_urdf(document, package_paths, geometry, plain)
+        document.root = robot_xml.parse(path, document.text)
     fmt = FORMAT_BY_ROOT.get(document.root.tag)
     if fmt is None:
         raise InputError(

@@ -18,20 +18,23 @@ same places), so each field (an origin's ``xyz``, a mass, a box's ``size``) is o
 strings, checked and turned into numbers at once; the model holds its links as those columns
 (:class:`rbi.formats.robot.LinkColumns`), its :class:`Link` values made when first asked for.
 
-The groups come from the text itself when it is plain (:func:`read_urdf_text`: UTF-8 with no
-DTD, entity or character reference, CDATA, processing instruction, character data or
-single-quoted value; attribute values taken out in one pass on arrays, element boundaries
-found from where its ``<``, ``>`` and ``/`` are), or else from the parsed element tree
-(:func:`read_urdf`). A refusal is worded for the first thing wrong in document order (link by
-link, then joint by joint, each field in the order above): a plain text the groups refuse is
-read from its tree, where a chunk of :data:`~rbi.formats.xml_columns.CHUNK` elements the groups refuse is read again
-with every element its own group, in document order.
+One path for every file (:func:`read_urdf`): the groups are found on the document's text with
+every attribute value emptied and the values apart, as arrays. A plain text (:func:`plain_text`:
+UTF-8 with no DTD, entity or character reference, CDATA, processing instruction, character
+data or single-quoted value) is taken apart so in one pass on arrays, without an element tree;
+any other file is parsed and its tree written out in that form (:func:`_tree_text`). A refusal
+is worded for the first thing wrong in document order (link by link, then joint by joint, each
+field in the order above): the elements of groups that refuse are read again
+:data:`~rbi.formats.xml_columns.CHUNK` at a time, and a chunk that refuses one element a group.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import functools
 import re
+from collections.abc import Callable
+from typing import NamedTuple
 
 import numpy as np
 
@@ -57,7 +60,7 @@ from rbi.formats.robot import (
     unit,
 )
 from rbi.formats.robot_paths import resolve_mesh
-from rbi.formats.xml_columns import Doubt, Node, Rows, Values, in_order, tree_groups
+from rbi.formats.xml_columns import CHUNK, Doubt, Node, Rows, Values, in_order
 
 MOVING = {
     "revolute": "revolute",
@@ -82,38 +85,26 @@ _SHAPES = {
 """The primitive shapes and their attributes (a mesh and a shape with no volume apart)."""
 
 
-def read_urdf_text(path: str, data: bytes, package_paths=None, geometry: bool = True) -> RobotModel | None:
-    """The model of the URDF whose bytes are ``data``, read from its plain text; None when the
-    text is not plain or the file is refused (:func:`read_urdf` then reads it, or words why not)."""
-    try:
-        document = robot_xml.decoded(path, data)
-        if document.encoding != "utf-8" or not _plain_xml(document.text):
-            return None
-        name, links, joints = _elements(document.text)
-        return _model(
-            document,
-            name,
-            [(list(links.values()), None)],
-            [(list(joints.values()), None)],
-            package_paths,
-            geometry,
-        )
-    except (Doubt, InputError):
-        return None
+def read_urdf(
+    document, package_paths=None, geometry: bool = True, plain: Elements | None = None
+) -> RobotModel:
+    """The model of the URDF ``document``: of its plain text when ``plain`` gives its elements
+    (:func:`plain_text`), else of its parsed tree; InputError, one line naming the file, the
+    link or joint and the attribute, for the first thing wrong in document order."""
+    found = plain if plain is not None else _elements(*_tree_text(document.root))
+    fields = _links(document.path, found.links, geometry, package_paths, found.line)
+    fields.update(_joints(document.path, fields["names"], found.joints))
+    return RobotModel(document.path, "urdf", found.name, document=document, columns=LinkColumns(**fields))
 
 
-def read_urdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
-    """The model of the parsed URDF ``document``; InputError, one line naming the file, the link
-    or joint and the attribute, for the first thing wrong in document order."""
-    links, joints = (tree_groups(document.root.all(tag)) for tag in ("link", "joint"))
-    return _model(document, document.root.get("name"), links, joints, package_paths, geometry)
+class Elements(NamedTuple):
+    """A URDF's root ``name`` and its top-level ``links`` and ``joints`` as chunks for
+    :func:`~rbi.formats.xml_columns.in_order`; ``line`` gives a link's line in the text."""
 
-
-def _model(document, name, links: list, joints: list, packages, geometry: bool) -> RobotModel:
-    """The model of the ``links`` and ``joints`` given as chunks (:func:`in_order`)."""
-    fields = _links(document.path, links, geometry, packages)
-    fields.update(_joints(document.path, fields["names"], joints))
-    return RobotModel(document.path, "urdf", name, document=document, columns=LinkColumns(**fields))
+    name: str | None
+    links: list
+    joints: list
+    line: Callable[[int], int]
 
 
 # --- the groups of a plain text -----------------------------------------------------------------
@@ -143,20 +134,67 @@ def _plain_xml(text: bytes) -> bool:
     return True
 
 
-def _elements(text: bytes) -> tuple[str | None, dict, dict]:
-    """The root's name and the top-level links and joints of a URDF :func:`_plain_xml` passed,
-    each grouped by signature (signature → :class:`Rows`). The values are taken out of the
-    text and the element boundaries found on the arrays of its ``<``, ``>`` and ``=`` (with no
-    text, comment or value left, each starts or ends a tag, or gives a value)."""
-    if text.startswith(b"<?xml"):
-        text = text[text.index(b"?>") + 2 :]
-    if b"<!--" in text:
-        text = _COMMENT.sub(b"", text)
-    if _TEXT.search(text):
-        raise Doubt
-    values, blank = _values(text)
-    if _SINGLE_QUOTED.search(blank):
-        raise Doubt
+def plain_text(document) -> Elements | None:
+    """The elements of a URDF document's text (:func:`_elements`) when it is plain: UTF-8 with
+    no DTD, entity or character reference, CDATA, processing instruction, character data or
+    single-quoted value, well-formed as expat reads it, its values taken out in one pass on
+    arrays; None otherwise (then its tree is read)."""
+    text = document.text
+    try:
+        if document.encoding != "utf-8" or not _plain_xml(text):
+            return None
+        if text.startswith(b"<?xml"):  # (the declaration's line ends kept, so lines count as in the file)
+            end = text.index(b"?>") + 2
+            text = b"\n" * text.count(b"\n", 0, end) + text[end:]
+        if b"<!--" in text:
+            text = _COMMENT.sub(lambda comment: b"\n" * comment.group().count(b"\n"), text)
+        if _TEXT.search(text):
+            return None
+        values, blank = _values(text)
+        if _SINGLE_QUOTED.search(blank):
+            return None
+        return _elements(blank, values)
+    except Doubt:
+        return None
+
+
+def _tree_text(root) -> tuple[bytes, Values]:
+    """A parsed document as :func:`plain_text` takes a text apart: its tags with each value
+    emptied (each top-level element on its own line of the file) and its values in document
+    order."""
+    pieces: list[str] = ["\n" * (root.line - 1)]
+    texts: list[bytes] = []
+    reached = [root.line]  # the line the text has reached
+
+    def write(element, top: bool) -> None:
+        if top:
+            pieces.append("\n" * (element.line - reached[0]))
+            reached[0] = element.line
+        pairs = element.pairs
+        pieces.append("<" + element.tag + "".join(f' {name}=""' for name in pairs[::2]))
+        texts.extend(value.encode() for value in pairs[1::2])
+        if not element.children:
+            pieces.append("/>")
+            return
+        pieces.append(">")
+        for child in element.children:
+            write(child, element is root)
+        pieces.append(f"</{element.tag}>")
+
+    write(root, False)
+    lengths = np.array([len(text) for text in texts], dtype=np.int64)
+    ends = np.cumsum(lengths)
+    return "".join(pieces).encode(), Values(
+        np.frombuffer(b"".join(texts), dtype=np.uint8), ends - lengths, ends
+    )
+
+
+def _elements(blank: bytes, values: Values) -> Elements:
+    """The root's name and the top-level links and joints of a URDF text with every value
+    emptied (``blank``; ``values`` the values), each kind as chunks for
+    :func:`~rbi.formats.xml_columns.in_order` (:func:`_chunks`). The element boundaries are found
+    on the arrays of its ``<``, ``>`` and ``=`` (with no text, comment or value left, each starts
+    or ends a tag, or gives a value); Doubt for a text not so made."""
     codes = np.frombuffer(blank, dtype=np.uint8)
     marks = np.flatnonzero(codes - 60 <= 2)  # where a <, = or > is (bytes below 60 wrap around)
     kinds = codes[marks]
@@ -168,21 +206,43 @@ def _elements(text: bytes) -> tuple[str | None, dict, dict]:
     ending, empty = codes[opens + 1] == 47, codes[closes - 1] == 47
     step = np.where(ending, -1, np.where(empty, 0, 1))
     after = np.cumsum(step)
-    if after.max() >= robot_xml.MAX_DEPTH or not _starts(blank, int(opens[0]), b"<robot"):
+    if after.max() > robot_xml.MAX_DEPTH or not _starts(blank, int(opens[0]), b"<robot"):
         raise Doubt
     starts = np.flatnonzero((after - step == 1) & ~ending)
     ends = np.flatnonzero((after == 1) & (ending | empty))
-    groups = {}
+    groups, firsts = {}, {}
     for opening in (b"<link", b"<joint"):
         chosen = _named(codes, opens[starts], opening)
         begins, stops = opens[starts][chosen], closes[ends][chosen] + 1
-        lows, highs = np.searchsorted(equals, begins), np.searchsorted(equals, stops)
-        groups[opening] = _alike(codes, blank, begins, stops, lows, highs, values) or _grouped(
-            blank, begins, stops, lows, highs, values
-        )
+        lows = np.searchsorted(equals, begins)
+        groups[opening] = _chunks(codes, blank, begins, stops, lows, np.searchsorted(equals, stops), values)
+        firsts[opening] = begins
     root = _NAMES.findall(blank[: closes[0] + 1])
     name = values.one(root.index(b"name")).decode() if b"name" in root else None
-    return name, groups[b"<link"], groups[b"<joint"]
+    links = firsts[b"<link"]
+    return Elements(
+        name, groups[b"<link"], groups[b"<joint"], lambda index: blank.count(b"\n", 0, int(links[index])) + 1
+    )
+
+
+def _chunks(codes: np.ndarray, blank: bytes, begins, stops, lows, highs, values: Values) -> list:
+    """The elements spanning ``begins:stops`` of ``blank`` (their values ``values[lows:highs]``)
+    as chunks for :func:`~rbi.formats.xml_columns.in_order`: all of them in groups of one
+    signature; on a refusal read again :data:`~rbi.formats.xml_columns.CHUNK` at a time, and a
+    chunk refused one element a group, so that the refusal names the first wrong element."""
+
+    def part(low: int, high: int, single: bool) -> list[Rows]:
+        spans = begins[low:high], stops[low:high], lows[low:high]
+        return list(_grouped(blank, *spans, values, low, single).values())
+
+    def chunks() -> list:
+        steps = range(0, len(begins), CHUNK)
+        return [(part(a, a + CHUNK, False), lambda a=a: [(part(a, a + CHUNK, True), None)]) for a in steps]
+
+    whole = _alike(codes, blank, begins, stops, lows, highs, values) or _grouped(
+        blank, begins, stops, lows, values
+    )
+    return [(list(whole.values()), chunks)]
 
 
 def _values(text: bytes) -> tuple[Values, bytes]:
@@ -203,18 +263,20 @@ def _values(text: bytes) -> tuple[Values, bytes]:
     return Values(codes, starts, ends), codes[np.repeat(outside, np.diff(bounds))].tobytes()
 
 
-def _grouped(blank: bytes, begins, stops, lows, highs, values: Values) -> dict[bytes, Rows]:
+def _grouped(blank: bytes, begins, stops, lows, values: Values, first: int = 0, single: bool = False) -> dict:
     """Signature → its elements (:class:`Rows`) of the elements spanning ``begins:stops`` of
-    the emptied text, whose values are ``values[lows:highs]``."""
-    found: dict[bytes, tuple[list[int], list[int]]] = {}
+    the emptied text, whose values start at ``lows``; ``first``: the first one's index;
+    ``single``: each element a group of its own."""
+    found: dict[bytes | int, tuple[bytes, list[int], list[int]]] = {}
     spans = zip(begins.tolist(), stops.tolist(), lows.tolist())
-    for index, (begin, end, low) in enumerate(spans):
-        indices, firsts = found.setdefault(blank[begin:end], ([], []))
+    for index, (begin, end, low) in enumerate(spans, first):
+        signature = blank[begin:end]
+        _, indices, firsts = found.setdefault(index if single else signature, (signature, [], []))
         indices.append(index)
         firsts.append(low)
     return {
-        signature: Rows(_tree(signature), indices, np.array(firsts, dtype=np.int64), values)
-        for signature, (indices, firsts) in found.items()
+        key: Rows(_tree(signature), indices, np.array(firsts, dtype=np.int64), values)
+        for key, (signature, indices, firsts) in found.items()
     }
 
 
@@ -263,6 +325,7 @@ def _starts(blank: bytes, at: int, opening: bytes) -> bool:
 _NAME_ENDS = frozenset(b" \t\n\r>/")
 
 
+@functools.lru_cache(maxsize=4096)
 def _tree(signature: bytes) -> Node:
     """The element tree a signature describes (read as the file is: names as written)."""
     return Node.of(robot_xml.parse("(signature)", signature), [0])
@@ -271,7 +334,7 @@ def _tree(signature: bytes) -> Node:
 # --- links --------------------------------------------------------------------------------------
 
 
-def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
+def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[int], int]) -> dict:
     """The links of ``chunks`` (:func:`in_order`) as the :class:`LinkColumns` fields they give:
     names, inertials and geometry."""
     n = sum(len(rows) for groups, _ in chunks for rows in groups)
@@ -286,9 +349,8 @@ def _links(path: str, chunks: list, geometry: bool, packages) -> dict:
         words = rows.words(rows.top.at.get("name"))
         for k, word in enumerate(words):
             if not word:
-                line = rows.elements[k].line if rows.elements else None
                 raise InputError(
-                    f"{path}: link[{rows.indices[k]}] (line {line}): name: missing; every link needs a "
+                    f"{path}: link[{rows.indices[k]}] (line {line(rows.indices[k])}): name: missing; every link needs a "
                     "name (urdfdom and pybullet refuse it)"
                 )
             names[rows.indices[k]] = word

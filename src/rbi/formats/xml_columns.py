@@ -2,7 +2,7 @@
 names, their values at the same places) read field by field, each field one column of strings
 checked and turned into numbers at once (:class:`Rows`), and a refusal worded for the first
 wrong element in document order (:func:`in_order`). :mod:`rbi.formats.urdf` reads its links and
-joints so, the groups taken from a plain text or from an element tree (:func:`tree_groups`).
+joints so.
 """
 
 from __future__ import annotations
@@ -18,8 +18,8 @@ from rbi.formats.robot import Where, numbers
 
 
 class Doubt(Exception):
-    """The text is not plain (:func:`rbi.formats.urdf.read_urdf_text` leaves it to
-    :func:`rbi.formats.urdf.read_urdf`)."""
+    """The text is not plain (:func:`rbi.formats.urdf.plain_text`: its tree is read), or a
+    column of values is not all plain decimals (read one value at a time)."""
 
 
 _PLAIN = re.compile(rb"[0-9eE+\-. \n]*")
@@ -27,69 +27,27 @@ _PLAIN = re.compile(rb"[0-9eE+\-. \n]*")
 token ``float`` reads is one :data:`rbi.formats.robot._NUMBER` matches (``float`` alone would
 also take ``nan``, ``inf``, ``1_0`` and other digits than 0-9)."""
 
-# --- the groups of an element tree --------------------------------------------------------------
-
-
 CHUNK = 1024
-"""Elements of a tree read together: a chunk with a wrong element is read again element by
-element, in document order (about 0.3 s for 1,024 links)."""
-
-
-def tree_groups(elements: list) -> list[tuple[list[Rows], Callable[[], list[Rows]]]]:
-    """The XML ``elements`` (top-level links or joints) as chunks for :func:`in_order`: each
-    :data:`CHUNK` of them in groups of one signature, and the same elements one a group."""
-    texts: list[bytes] = []
-    shapes, firsts, nodes = [], [], {}
-    for element in elements:
-        firsts.append(len(texts))
-        shape = []
-        for each in element.iter():
-            pairs = each.pairs
-            shape.append((each.tag, tuple(pairs[::2]), len(each.children)))
-            texts.extend(value.encode() for value in pairs[1::2])
-        shapes.append(tuple(shape))
-        if shapes[-1] not in nodes:
-            nodes[shapes[-1]] = Node.of(element, [0])
-    lengths = np.array([len(text) for text in texts], dtype=np.int64)
-    ends = np.cumsum(lengths)
-    values = Values(np.frombuffer(b"".join(texts), dtype=np.uint8), ends - lengths, ends)
-
-    def groups(chunk: range, alike: bool) -> list[Rows]:
-        keyed: dict = {}
-        for index in chunk:
-            keyed.setdefault(shapes[index] if alike else index, []).append(index)
-        return [
-            Rows(
-                nodes[shapes[rows[0]]],
-                rows,
-                np.array([firsts[row] for row in rows], dtype=np.int64),
-                values,
-                [elements[row] for row in rows],
-            )
-            for rows in keyed.values()
-        ]
-
-    chunks = [range(start, min(start + CHUNK, len(elements))) for start in range(0, len(elements), CHUNK)]
-    return [(groups(chunk, True), lambda chunk=chunk: groups(chunk, False)) for chunk in chunks]
+"""Elements read again together when a group of them is refused: a chunk with a wrong element
+is read again element by element, in document order (about 0.3 s for 1,024 links)."""
 
 
 def in_order(chunks: list, read: Callable[[Rows], None], state: list | None = None) -> None:
-    """``read`` each group of each chunk, chunk by chunk; ``chunks``: (groups, the same elements
-    one a group, or None). A refusal in a chunk is worded for its first wrong element (InputError
-    of the first group of one that ``read`` refuses, ``state`` restored first); a chunk with no
-    groups of one leaves the wording to the caller."""
-    for groups, singly in chunks:
-        saved = None if state is None or singly is None else state[:]
+    """``read`` each group of each chunk, chunk by chunk; ``chunks``: (groups, a function giving
+    the same elements as finer chunks, or None). A refusal in a chunk is worded for its first
+    wrong element: its finer chunks are read in turn (``state`` restored first), down to chunks
+    whose groups hold one element each, the first of which to be refused raises."""
+    for groups, finer in chunks:
+        saved = None if state is None or finer is None else state[:]
         try:
             for rows in groups:
                 read(rows)
         except InputError:
-            if singly is None:
+            if finer is None:
                 raise
             if state is not None:
                 state[:] = saved
-            for rows in singly():
-                read(rows)
+            in_order(finer(), read, state)
             raise
 
 
@@ -175,17 +133,11 @@ class Node:
 
 class Rows:
     """The elements of one signature (``top``): ``indices`` (each one's place among the links or
-    joints), ``firsts`` (where each one's values start in ``values``), the XML ``elements``
-    when read from a tree, and :meth:`where` each row is in messages."""
+    joints), ``firsts`` (where each one's values start in ``values``), and :meth:`where` each
+    row is in messages."""
 
-    def __init__(self, top: Node, indices: list[int], firsts: np.ndarray, values: Values, elements=None):
-        self.top, self.indices, self.firsts, self.values, self.elements = (
-            top,
-            indices,
-            firsts,
-            values,
-            elements,
-        )
+    def __init__(self, top: Node, indices: list[int], firsts: np.ndarray, values: Values):
+        self.top, self.indices, self.firsts, self.values = top, indices, firsts, values
         self.path, self.label = "", lambda k: None
 
     def __len__(self) -> int:
