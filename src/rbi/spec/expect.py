@@ -6,57 +6,50 @@ absolute number or a percentage of the expected value's magnitude.
 
 from __future__ import annotations
 
-from pydantic import ConfigDict, Field, model_validator
+from typing import Any
 
-from rbi.spec.fields import AboutPoint, InertiaMatrix, Number, Tolerance, Vector3
-from rbi.spec.fields import StrictModel as _Strict
+from pydantic import Field, model_validator
 
-
-class _BuiltWhenUsed(_Strict):
-    """Built when a spec first has an `expect:` block (start-up time: see docs/performance.md)."""
-
-    model_config = ConfigDict(extra="forbid", frozen=True, defer_build=True)
+from rbi.spec.fields import AboutPoint, BuiltWhenUsed, InertiaMatrix, Number, Tolerance, Vector3
 
 
-class ScalarExpectation(_BuiltWhenUsed):
+def _tolerance(of_what: str) -> Any:
+    """The ``tol`` field: the deviation allowed (``of_what``: of each component, ...)."""
+    return Field(description=f"Allowed deviation{of_what}.")
+
+
+def _about(what: str) -> Any:
+    """The ``about`` field of moments and the inertia: the point ``what`` about (default com)."""
+    return Field("com", description=f"Point the {what} about: com, origin, pivot or [x, y, z].")
+
+
+class ScalarExpectation(BuiltWhenUsed):
     value: Number = Field(description="Expected value, in the file's units.")
-    tol: Tolerance = Field(
-        description="Allowed deviation: an absolute number in file units, or a percentage such as 1%."
-    )
+    tol: Tolerance = _tolerance(": an absolute number in file units, or a percentage such as 1%")
 
 
-class VectorExpectation(_BuiltWhenUsed):
+class VectorExpectation(BuiltWhenUsed):
     value: Vector3 = Field(description="Expected point [x, y, z], body frame, file units.")
-    tol: Tolerance = Field(
-        description="Allowed deviation of each component: an absolute number in file units, or a percentage."
-    )
+    tol: Tolerance = _tolerance(" of each component: an absolute number in file units, or a percentage")
 
 
-class MomentsExpectation(_BuiltWhenUsed):
+class MomentsExpectation(BuiltWhenUsed):
     """Principal moments (compared in ascending order) about ``about``."""
 
     value: Vector3 = Field(description="Expected principal moments, ascending, mass·length².")
-    tol: Tolerance = Field(
-        description="Allowed deviation of each moment: an absolute number, or a percentage."
-    )
-    about: AboutPoint = Field(
-        "com", description="Point the moments are about: com, origin, pivot or [x, y, z]."
-    )
+    tol: Tolerance = _tolerance(" of each moment: an absolute number, or a percentage")
+    about: AboutPoint = _about("moments are")
 
 
-class InertiaExpectation(_BuiltWhenUsed):
+class InertiaExpectation(BuiltWhenUsed):
     """The inertia matrix about ``about``, body axes."""
 
     value: InertiaMatrix = Field(description="Expected inertia matrix, body axes, mass·length².")
-    tol: Tolerance = Field(
-        description="Allowed deviation of each entry: an absolute number, or a percentage."
-    )
-    about: AboutPoint = Field(
-        "com", description="Point the inertia is about: com, origin, pivot or [x, y, z]."
-    )
+    tol: Tolerance = _tolerance(" of each entry: an absolute number, or a percentage")
+    about: AboutPoint = _about("inertia is")
 
 
-class Expect(_BuiltWhenUsed):
+class Expect(BuiltWhenUsed):
     """What ``rbi check`` compares: at least one of the quantities below."""
 
     mass: ScalarExpectation | None = Field(None, description="Expected total mass.")

@@ -39,6 +39,15 @@ class StrictModel(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True)
 
 
+class BuiltWhenUsed(StrictModel):
+    """Base of the models of what a spec may leave out (the parts of each shape, patterns,
+    rotations, the ``expect:`` block): pydantic builds a model's validator when it is first used
+    rather than when the class is defined, so reading a spec builds only what it has (start-up
+    time: see docs/performance.md)."""
+
+    model_config = ConfigDict(extra="forbid", frozen=True, defer_build=True)
+
+
 def _is_number(value: Any) -> bool:
     return isinstance(value, (int, float)) and not isinstance(value, bool)
 

@@ -14,7 +14,6 @@ from typing import Annotated, Any, Literal, Union
 import numpy as np
 from pydantic import (
     BeforeValidator,
-    ConfigDict,
     Field,
     PlainValidator,
     PrivateAttr,
@@ -25,6 +24,7 @@ from pydantic import (
 
 from rbi.core.polygon import MAX_VERTICES, polygon_problem
 from rbi.spec.expect import Expect
+from rbi.spec.fields import BuiltWhenUsed as _BuiltWhenUsed
 from rbi.spec.fields import Density, Flag, InertiaMatrix, NonNegative, Number, Positive, Vector3
 from rbi.spec.fields import StrictModel as _Strict
 from rbi.spec.materials import canonical_name, unknown_material_message
@@ -35,12 +35,6 @@ LengthUnit = Literal["m", "cm", "mm", "in", "ft"]
 MassUnit = Literal["kg", "g", "lb"]
 
 
-_BUILT_WHEN_USED = ConfigDict(extra="forbid", frozen=True, defer_build=True)
-"""Models of the parts (and what only parts hold): pydantic builds a model's validator when it
-is first used rather than when the class is defined, so reading a spec builds only the shapes
-it has (start-up time: see docs/performance.md)."""
-
-
 class Units(_Strict):
     """Units of every number in the file, inputs and outputs alike."""
 
@@ -48,12 +42,10 @@ class Units(_Strict):
     mass: MassUnit = Field("kg", description="Mass unit: kg, g or lb.")
 
 
-class Pattern(_Strict):
+class Pattern(_BuiltWhenUsed):
     """Copies of a part: ``count`` equal copies turned evenly about the line along ``axis``
     through ``through`` (the part as written is the first), or ``count`` copies in a row,
     each ``step`` further on. ``mass`` and ``density`` are per copy."""
-
-    model_config = _BUILT_WHEN_USED
 
     count: int = Field(
         strict=True,
@@ -80,9 +72,7 @@ class Pattern(_Strict):
         return _nonzero(self, "axis", "the direction of the line the copies turn about")
 
 
-class _Part(_Strict):
-    model_config = _BUILT_WHEN_USED
-
+class _Part(_BuiltWhenUsed):
     name: str | None = Field(
         None, description="A name for the part, shown in tables and error messages; unique within the body."
     )
@@ -198,13 +188,11 @@ _ROTATION_FORMS = (("axis", "angle_deg"), ("quaternion",), ("euler_deg", "sequen
 """The three ways of writing a rotation, by their fields."""
 
 
-class Rotation(_Strict):
+class Rotation(_BuiltWhenUsed):
     """How the part's own axes are turned into body axes, in one of three forms: ``axis`` and
     ``angle_deg`` (right-hand rule); ``quaternion`` ``[w, x, y, z]`` (normalised); or
     ``euler_deg`` with a ``sequence`` of three axis letters (lower case: fixed axes, upper
     case: moving axes, as scipy's ``Rotation.from_euler``). The part turns about its own centre."""
-
-    model_config = _BUILT_WHEN_USED
 
     axis: Vector3 | None = Field(
         None, description="Axis of an axis-angle rotation (need not be unit length)."

@@ -352,8 +352,7 @@ def _axes(d: np.ndarray) -> tuple[np.ndarray, Any, np.ndarray]:
 
 
 def _points(parts, units):
-    masses = parts.column("mass")
-    return masses, parts.column("position"), np.zeros((len(parts), 3, 3))
+    return parts.column("mass"), parts.column("position"), np.zeros((len(parts), 3, 3))
 
 
 def _cylinders(parts, units):
