@@ -454,11 +454,7 @@ CLI_NAMES_LEFT: set[tuple[str, str]] = {
     ("import_command.py", "output_target"),
     ("import_command.py", "rbi.api"),
     ("import_command.py", "write_output"),
-    ("option_values.py", "LENGTH_UNITS"),
-    ("option_values.py", "MASS_UNITS"),
     ("option_values.py", "angle_is_kept"),
-    ("option_values.py", "reference_choices"),
-    ("option_values.py", "reference_name"),
     ("option_values.py", "turn_lost_to_rounding"),
     ("uncertainty_command.py", "rbi.api"),
 }

@@ -6,7 +6,7 @@ from __future__ import annotations
 import os
 from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
-from typing import Any
+from typing import Any, ClassVar
 
 import numpy as np
 
@@ -44,7 +44,7 @@ from rbi.spec.assembly import expanded
 from rbi.spec.checks import run_checks
 from rbi.spec.load import file_problems
 from rbi.spec.models import StepPart, body_spec_json_schema
-from rbi.spec.points import NO_PIVOT, reference_choices, reference_name
+from rbi.spec.points import NO_PIVOT, REFERENCE_POINTS, reference_choices, reference_name
 from rbi.spec.uncertain import linear, momentum_uncertainty, part_uncertainties
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
@@ -187,6 +187,13 @@ class Body(TableRepr):
     All numbers are in the spec's own units (`units`) and the body frame (the spec's
     coordinates). A Body does not change; every method returns new arrays.
     """
+
+    length_units: ClassVar[tuple[str, ...]] = tuple(LENGTH_UNITS)
+    """The length units `in_units` takes: ``m``, ``cm``, ``mm``, ``in``, ..."""
+    mass_units: ClassVar[tuple[str, ...]] = tuple(MASS_UNITS)
+    """The mass units `in_units` takes: ``kg``, ``g``, ``lb``, ..."""
+    reference_points: ClassVar[tuple[str, ...]] = REFERENCE_POINTS
+    """The points `point` knows by name (any case, spaces around): ``com``, ``origin``, ``pivot``."""
 
     def __init__(self, loaded: Any, raw: Any = None, spec_bytes: bytes | None = None) -> None:
         self._loaded = loaded

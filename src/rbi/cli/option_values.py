@@ -122,18 +122,18 @@ def vary_option(items: list[str]) -> dict[str, Any]:
 
 def parse_about(text: str, body) -> tuple[str, list[float]]:
     """Resolve ``--about`` against a `rbi.Body`: (label, point in body coordinates); a name
-    by `rbi.Body.point` (its errors say ``--about``)."""
-    # not at top level: `rbi --help` would load rbi.api too
-    from rbi.api import reference_choices, reference_name
-
-    key = reference_name(text)
-    if key is not None:
+    (`rbi.Body.reference_points`) by `rbi.Body.point` (its errors say ``--about``)."""
+    key = text.strip().lower()
+    if key in rbi.Body.reference_points:
         return key, body.point(key).tolist()
     try:
         return "point", parse_vector(text, "--about")
     except SpecError:
-        choices = reference_choices("X,Y,Z (three numbers separated by commas, file units)")
-        raise SpecError(f"--about: expected {choices}, got {text!r}") from None
+        names = ", ".join(rbi.Body.reference_points)
+        raise SpecError(
+            f"--about: expected {names} or a point X,Y,Z (three numbers separated by commas, file "
+            f"units), got {text!r}"
+        ) from None
 
 
 def parse_rotation(text: str) -> tuple[str, float]:
@@ -156,17 +156,14 @@ def parse_rotation(text: str) -> tuple[str, float]:
 
 def parse_units(text: str) -> tuple[str, str]:
     """``--units``: ``SI`` (m, kg) or ``LENGTH,MASS`` such as ``mm,g`` -> (length, mass)."""
-    # not at top level: `rbi --help` would load rbi.api too
-    from rbi.api import LENGTH_UNITS, MASS_UNITS
-
     key = text.strip()
     if key.lower() == "si":
         return "m", "kg"
     length, _, mass = key.partition(",")
     length, mass = length.strip(), mass.strip()
-    if length not in LENGTH_UNITS or mass not in MASS_UNITS:
+    if length not in rbi.Body.length_units or mass not in rbi.Body.mass_units:
         raise SpecError(
-            f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(LENGTH_UNITS)} "
-            f"and MASS one of {', '.join(MASS_UNITS)} (e.g. mm,g), got {text!r}"
+            f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(rbi.Body.length_units)} "
+            f"and MASS one of {', '.join(rbi.Body.mass_units)} (e.g. mm,g), got {text!r}"
         )
     return length, mass
