@@ -4,6 +4,7 @@ way the rows reach ``on_rows`` chunk by chunk in run order."""
 from __future__ import annotations
 
 import contextlib
+import functools
 import logging
 import math
 import os
@@ -142,8 +143,8 @@ class _Workers:
             self._queue.put(None)
 
 
-def _timed(compute: Callable[[int, int, int], Rows], a: int, b: int, threads: int) -> tuple[Rows, float]:
-    """``compute(a, b, threads)`` and the wall time it took."""
+def _timed(compute: Callable[[int, int, int], Rows], a: int, b: int, threads: int = 1) -> tuple[Rows, float]:
+    """``compute(a, b, threads)`` and the wall time it took (a Dask task runs on one core)."""
     started = time.perf_counter()
     rows = compute(a, b, threads)
     return rows, time.perf_counter() - started
@@ -252,7 +253,7 @@ def run_dask(
         compute_remote = client.scatter(compute, broadcast=True, hash=False)
         slots = 4 * max(1, sum(client.nthreads().values()))
         _in_order(
-            lambda a, b: client.submit(_timed, compute_remote, a, b, 1, pure=False), ranges, slots, on_rows
+            functools.partial(client.submit, _timed, compute_remote, pure=False), ranges, slots, on_rows
         )
     finally:
         _quietly_close(client, cluster)
@@ -308,7 +309,7 @@ def local_cluster(workers: int):
             signal.signal(signal.SIGINT, previous)
     client = Client(cluster, security=security, set_as_default=False)
     _stop_http(cluster.scheduler)
-    client.run(_stop_http_of_worker)
+    client.run(_stop_http)
     return cluster, client, scratch
 
 
@@ -407,14 +408,11 @@ def _ignore_sigint():
     return signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
-def _stop_http(server) -> None:
-    http = getattr(server, "http_server", None)
+def _stop_http(dask_worker=None) -> None:
+    """Stop the HTTP server of a scheduler or a worker (``client.run`` passes the worker by this name)."""
+    http = getattr(dask_worker, "http_server", None)
     if http is not None:
         http.stop()
-
-
-def _stop_http_of_worker(dask_worker=None) -> None:
-    _stop_http(dask_worker)
 
 
 def _quietly_close(client, cluster) -> None:

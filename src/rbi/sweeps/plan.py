@@ -12,7 +12,7 @@ from __future__ import annotations
 import math
 import numbers
 from collections.abc import Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -218,22 +218,14 @@ class Plan:
     axes: tuple[GridAxis | Draw, ...]
     runs: int = 1
     seed: int = 0
-    _grids: tuple[GridAxis, ...] = field(init=False, repr=False)
-
-    def __post_init__(self):
-        object.__setattr__(self, "_grids", tuple(a for a in self.axes if isinstance(a, GridAxis)))
 
     @property
     def names(self) -> list[str]:
         return [a.name for a in self.axes]
 
     @property
-    def grid_size(self) -> int:
-        return math.prod(a.count for a in self._grids)
-
-    @property
     def size(self) -> int:
-        return self.grid_size * self.runs
+        return math.prod(a.count for a in self.axes if isinstance(a, GridAxis)) * self.runs
 
     def values(self, start: int, stop: int) -> np.ndarray:
         """The values of runs ``start .. stop-1``: an array (stop - start, len(axes))."""
@@ -256,6 +248,3 @@ class Plan:
         so a value does not depend on which chunk computes it."""
         rng = np.random.default_rng([self.seed, run, column])
         return axis.distribution.draw(rng)
-
-    def is_grid_axis(self, name: str) -> bool:
-        return any(a.name == name and a.count > 1 for a in self._grids)

@@ -61,10 +61,6 @@ class SweepJob:
     _bodies: OrderedDict = field(default_factory=OrderedDict, compare=False, repr=False)
     _scenes: OrderedDict = field(default_factory=OrderedDict, compare=False, repr=False)
 
-    @property
-    def columns(self) -> list[str]:
-        return ["run", *self.plan.names, *RESULT_COLUMNS]
-
     def chunk_size(self, threads: int) -> int:
         """Runs per kernel call: enough to keep every thread busy, bounded in memory."""
         per_run = self.samples * 7 * 8
@@ -111,7 +107,7 @@ def _derive_scene(job: SweepJob, values: tuple[float, ...]):
 
 
 def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[list[Any]]:
-    """Rows of runs ``start .. stop-1`` (each a list in :attr:`SweepJob.columns` order)."""
+    """Rows of runs ``start .. stop-1``: ``run``, the swept values, then :data:`RESULT_COLUMNS`."""
 
     values = job.plan.values(start, stop)
     t = sample_times(job.duration, job.samples)

@@ -34,7 +34,7 @@ from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import execute, runs, store
 from rbi.sweeps.execute import Chunks, check_address
 from rbi.sweeps.plan import MAX_RUNS, Draw, Plan, axis_of, axis_record
-from rbi.sweeps.runs import SweepJob
+from rbi.sweeps.runs import RESULT_COLUMNS, SweepJob
 from rbi.sweeps.tolerance import MASS_COLUMNS, mass_rows
 
 MAX_ROWS_SHOWN = 100_000
@@ -159,11 +159,10 @@ class Study:
         # nominal body's default, so every row's tilt is of one body axis, whatever a varied value breaks
         axis = body_spin_axis(self.nominal, settings.spin_axis)
         self.job = dataclasses.replace(self.job, spin_axis=tuple(float(c) for c in axis))
-        if settings.mass_properties:
-            self.columns = ["run", *self.plan.names, *MASS_COLUMNS]
-        else:
+        results = MASS_COLUMNS if settings.mass_properties else RESULT_COLUMNS
+        self.columns = ["run", *self.plan.names, *results]
+        if not settings.mass_properties:
             self._check_budget()
-            self.columns = self.job.columns
         remote = settings.dask not in (None, "local")
         self.cores = None if remote else execute.usable_workers(settings.workers)
         """The cores the runs use here (``workers``, at most this machine's), None on a cluster."""
@@ -324,11 +323,7 @@ class Study:
         if self.settings.mass_properties:
             raise ArgumentError("plot", "a map needs simulated runs (not {mass_properties})")
         # a grid axis of several values, or a value drawn afresh for each of several runs
-        swept = [
-            a.name
-            for a in self.plan.axes
-            if self.plan.is_grid_axis(a.name) or (isinstance(a, Draw) and self.plan.runs > 1)
-        ]
+        swept = [a.name for a in self.plan.axes if (self.plan.runs if isinstance(a, Draw) else a.count) > 1]
         if not swept:
             raise ArgumentError("plot", "the map needs at least one axis with more than one value")
         threshold = None
