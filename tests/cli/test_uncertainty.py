@@ -183,3 +183,23 @@ def test_of_a_whole_vector_or_matrix_is_its_entries():
     names = [q["quantity"] for q in body.uncertainty(of=["center_of_mass", "moments[1]"]).quantities]
     assert names == ["center_of_mass[0]", "center_of_mass[1]", "center_of_mass[2]", "moments[1]"]
     assert len(body.uncertainty(of="inertia").quantities) == 9
+
+
+def test_the_linear_table_gives_each_quantitys_unit(tmp_path):
+    table = run_rbi_inprocess("uncertainty", TOLERANCED).stdout
+    header = next(line for line in table.splitlines() if "quantity" in line)
+    assert [cell.strip() for cell in header.strip("┃ ").split("┃")] == [
+        "quantity",
+        "unit",
+        "value",
+        "u",
+        "± U",
+    ]
+    first = table.split("└")[0].splitlines()  # the quantities' table
+    units = {line.split("│")[1].strip(): line.split("│")[2].strip() for line in first if "│" in line}
+    assert units["mass"] == "kg" and units["center_of_mass[2]"] == "m" and units["moments[0]"] == "kg·m²"
+    spec = tmp_path / "mm.yaml"  # the file's units
+    spec.write_text(
+        'units: {length: mm, mass: g}\nparts: [{shape: point, mass: "2 ± 0.1", position: [1, 0, 0]}]\n'
+    )
+    assert "g·mm²" in run_rbi_inprocess("uncertainty", spec, "--of", "inertia[1][1]").stdout

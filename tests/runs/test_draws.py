@@ -100,3 +100,13 @@ def test_a_figure_the_run_does_not_define_has_no_spread(tmp_path):
     assert "error_estimate" in out
     table = run_rbi_inprocess("simulate", str(spec), "--spin", "50", "--duration", "0.5", "--draws", "8")
     assert table.returncode == 0, table.stderr
+
+
+def test_draws_of_a_spec_without_plus_minus_are_refused():
+    """Without ± every spread would be 0, which would read as certainty: --draws is refused in
+    one line naming the file (the contract defines --draws on a spec with ±)."""
+    proc = run_rbi_inprocess("simulate", str(BODIES / "top.yaml"), "--spin", "200", "--draws", "20")
+    one_line_exit_2(proc, "--draws")
+    assert "top.yaml has none" in proc.stderr
+    with pytest.raises(rbi.ArgumentError, match="draws: needs a spec that writes numbers with ±"):
+        input_uncertainty(rbi.load(BODIES / "top.yaml"), draws=4, seed=1, **RUN)

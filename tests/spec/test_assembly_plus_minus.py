@@ -76,3 +76,25 @@ def test_a_measured_mass_keeps_the_sub_assemblys_mass_fixed(tmp_path):
     # every part's mass scaled alike: the centre of mass is the sub-assembly's own
     np.testing.assert_allclose(found.uncertainty[1:4], free.uncertainty[1:4], rtol=1e-12, atol=1e-18)
     assert found.uncertainty[1] > 0 and found.uncertainty[3] > 0
+
+
+@pytest.mark.parametrize("pattern", ["", ", pattern: {count: 3, step: [0, 0, 0.1]}"])
+def test_parts_expand_gives_each_part_of_a_sub_assembly_its_uncertainty(tmp_path, pattern):
+    """`rbi parts --expand`: each row of a sub-assembly has the uncertainty of the same part
+    written flat (each copy of a pattern that of the part: a step moves, not scales)."""
+    for name, text in (("inner", INNER), ("sub", SUB), ("top", TOP), ("flat", FLAT)):
+        (tmp_path / f"{name}.yaml").write_text(text.replace("PATTERN", pattern.replace("3", "1")))
+    flat = rbi.load(tmp_path / "flat.yaml").parts()
+    (tmp_path / "top.yaml").write_text(TOP.replace("PATTERN", pattern))
+    nested = rbi.load(tmp_path / "top.yaml").parts(expand=True)
+    copies = 3 if pattern else 1
+    assert [p.name for p in nested] == ["base"] + [
+        f"arm{f'[{k}]' if pattern else ''}/{name}"
+        for k in range(copies)
+        for name in ("blk", "pin", "nest/rod")
+    ]
+    expected = [flat[0]] + [p for _ in range(copies) for p in flat[1:]]
+    for row, alone in zip(nested, expected):
+        for key in ("mass", "center_of_mass", "inertia_about_com"):
+            np.testing.assert_allclose(row.uncertainty[key], alone.uncertainty[key], rtol=1e-12, atol=1e-18)
+    assert nested.to_dict()["parts"][1]["uncertainty"] == nested[1].uncertainty

@@ -84,7 +84,7 @@ def test_draws_of_a_part_are_one_stack_equal_to_the_part_built_alone(tmp_path, m
     draws = np.stack([x.draws(np.random.default_rng(7), 200) for x in inputs], axis=1)
     calls = []
     monkeypatch.setattr(uncertain, "part_element", lambda *a: calls.append(a) or part_element(*a))
-    mass, com, inertia = uncertain.part_stack(loaded.spec, index, inputs, draws, loaded.path)
+    mass, com, inertia = uncertain.part_stack(loaded, index, inputs, draws)
     assert len(calls) == builds
     sign = -1.0 if part.get("subtract") else 1.0
     for row in (0, 199):

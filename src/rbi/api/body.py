@@ -386,8 +386,7 @@ class Body(TableRepr):
         loaded = self._loaded
         rows = expanded(loaded, expand)
         shares = inertia_shares(list(rows.elements), loaded.props)
-        whole = self._uncertain and len(rows.names) == len(loaded.elements)  # not a sub-assembly's parts
-        spreads = part_uncertainties(loaded) if whole else [None] * len(rows.names)
+        spreads = part_uncertainties(loaded, expand) if self._uncertain else [None] * len(rows.names)
         out = []
         for name, part, element, length, share, spread in zip(
             rows.names, rows.parts, rows.elements, rows.lengths, shares, spreads

@@ -11,9 +11,12 @@ from rbi.errors import ArgumentError, literal
 from rbi.memory import collector_paused
 from rbi.reprs import Result, Rows, json_ready, plain
 from rbi.spec.uncertain import QUANTITIES, budget
+from rbi.spec.units import unit_labels
 from rbi.text import number
 
 METHODS = ("linear", "monte-carlo")
+UNITS = {"mass": "mass", "center_of_mass": "length", "inertia": "inertia", "moments": "inertia"}
+"""The unit (a key of :func:`rbi.spec.units.unit_labels`) of each quantity of the budget."""
 
 
 class UncertaintyBudget(Result):
@@ -59,24 +62,24 @@ class UncertaintyBudget(Result):
         coverage = d["quantities"][0]["coverage"] if d["quantities"] else 0.95
         return f"{d['name'] or 'body'} — uncertainty ({method}; {100 * coverage:g}% coverage)"
 
-    def _quantities(self) -> tuple[str, tuple[str, ...], list[list[str]]]:
-        rows = []
+    def _quantities(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
+        rows: list[tuple[str, ...]] = []
         mc = bool(self._data["samples"])
+        labels = unit_labels(self._data["units"]["length"], self._data["units"]["mass"])
         for q in self._data["quantities"]:
-            low, high = q["interval"]
-            row = [q["quantity"], number(q["value"], 5), number(q["u"], 2)]
-            if mc:
+            (low, high), name = q["interval"], q["quantity"]
+            numbers = (number(q["value"], 5), number(q["u"], 2))
+            if mc:  # no unit column: the interval and the validation fill 80 columns
                 ok = "yes" if q["linear"]["validated"] else "NO"
-                row += [f"{number(low, 4)} … {number(high, 4)}", ok]
+                rows.append((name, *numbers, f"{number(low, 4)} … {number(high, 4)}", ok))
             else:
-                row.append(number((high - low) / 2, 2))
-            rows.append(row)
-        columns = ("interval", "linear ok") if mc else ("± U",)
-        return self._title(), ("quantity", "value", "u", *columns), rows
+                rows.append((name, labels[UNITS[name.split("[")[0]]], *numbers, number((high - low) / 2, 2)))
+        head = ("value", "u", "interval", "linear ok") if mc else ("unit", "value", "u", "± U")
+        return self._title(), ("quantity", *head), rows
 
-    def _budget(self) -> tuple[str, tuple[str, ...], list[list[str]]]:
-        rows = [
-            [q["quantity"], c["input"], number(c["sensitivity"], 4), f"{100 * c['share']:.1f}%"]
+    def _budget(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
+        rows: list[tuple[str, ...]] = [
+            (q["quantity"], c["input"], number(c["sensitivity"], 4), f"{100 * c['share']:.1f}%")
             for q in self.quantities
             for c in q["contributions"]
             if c["contribution"] > 0
@@ -91,10 +94,8 @@ class UncertaintyBudget(Result):
 
     def rows(self) -> list[Rows]:
         """The quantities' table, then the contributions'."""
-        return [
-            Rows(title, columns, [tuple(r) for r in cells], left=left)
-            for (title, columns, cells), left in ((self._quantities(), 1), (self._budget(), 2))
-        ]
+        (title, columns, cells), budget = self._quantities(), self._budget()
+        return [Rows(title, columns, cells, left=columns.index("value")), Rows(*budget, left=2)]
 
 
 def budget_of(

@@ -34,6 +34,8 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     if isinstance(draws, bool) or not isinstance(draws, int) or not 2 <= draws <= 100_000:
         raise ArgumentError("draws", f"must be a whole number from 2 to 100,000 (got {literal(draws)})")
     body, scene = prepared.body, prepared.scene
+    if body.spec is None or not body.spec._uncertain:  # every spread would be 0, and say nothing
+        raise ArgumentError("draws", f"needs a spec that writes numbers with ± ({body.path} has none)")
     mass, com, inertia = drawn(body, draws, generator(seed))
     scenes = [
         scene_from_properties(

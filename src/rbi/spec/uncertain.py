@@ -180,11 +180,8 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
             label = f"parts[{index}]" + (f" ({name})" if isinstance(name, str) and name else "")
             raise InputError(f"{path}: {label}: {field}: {exc}", file=path, part=label, field=field) from None
         node[steps[-1]] = value
-        inputs.append(
-            UncertainInput(
-                f"{_part_path(parts, index)}.{field}", index, tuple(steps), value, u / divisor, distribution
-            )
-        )
+        where = f"{_part_path(parts, index)}.{field}"
+        inputs.append(UncertainInput(where, index, tuple(steps), value, u / divisor, distribution))
     return Split(plain, tuple(inputs))
 
 
@@ -192,14 +189,11 @@ def _replaced(node: Any, steps: tuple[Any, ...], value: Any) -> Any:
     """``node`` (a part model, a sub-model or a list of numbers) with the number at ``steps``
     replaced by ``value``; nothing validated again (the value is a nearby or drawn number)."""
     head, rest = steps[0], steps[1:]
-    new = (
-        _replaced(node[head] if isinstance(node, list) else getattr(node, head), rest, value)
-        if rest
-        else value
-    )
+    if rest:
+        value = _replaced(node[head] if isinstance(node, list) else getattr(node, head), rest, value)
     if isinstance(node, list):
-        return [*node[:head], new, *node[head + 1 :]]
-    return node.model_copy(update={head: new})
+        return [*node[:head], value, *node[head + 1 :]]
+    return node.model_copy(update={head: value})
 
 
 def batched(part: Any, inputs: list[UncertainInput]) -> bool:
@@ -228,18 +222,20 @@ def with_sub_assemblies(spec: models.BodySpec) -> tuple[UncertainInput, ...]:
     return tuple(sorted(found, key=lambda each: each.part))
 
 
+def _with(part: Any, inputs: list[UncertainInput], row: np.ndarray) -> Any:
+    """``part`` with each of its ``inputs`` set to its value in ``row``."""
+    for each, value in zip(inputs, row):
+        part = _replaced(part, each.steps, value.item())
+    return part
+
+
 def _each_row(part: Any, field: str, inputs: list[UncertainInput], values: np.ndarray, make: Any) -> Any:
     """``make(part.field)``, or one a row of ``values`` (stacked) when inputs are in the field."""
-    mine = [(k, x.steps[1:]) for k, x in enumerate(inputs) if x.steps[0] == field]
+    mine = [k for k, x in enumerate(inputs) if x.steps[0] == field]
     if not mine:
         return make(getattr(part, field, None))
-    rows = []
-    for row in values:
-        node = getattr(part, field)
-        for k, steps in mine:
-            node = _replaced(node, steps, row[k].item())
-        rows.append(make(node))
-    return np.array(rows)
+    chosen = [inputs[k] for k in mine]
+    return np.array([make(getattr(_with(part, chosen, row[mine]), field)) for row in values])
 
 
 def _motions(pattern: Any) -> np.ndarray:
@@ -247,28 +243,34 @@ def _motions(pattern: Any) -> np.ndarray:
     return np.array([np.column_stack((R, t)) for R, t in copy_motions(pattern)])
 
 
+Stack = tuple[np.ndarray, np.ndarray, np.ndarray]
+"""Masses, centres of mass and inertias about them of a stack of parts or bodies."""
+SEPARATE = ("rotation", "pattern", "file")
+"""Where a part's inputs are not columns of its closed form (:class:`rbi.spec.translate.Columns`)."""
+
+
 def _file_stack(
-    part: Any, inputs: list[UncertainInput], values: np.ndarray, columns: Columns, spec: Any, path: str
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    loaded: Any, part: Any, inputs: list, values: np.ndarray, columns: Columns, expand: bool
+) -> Stack:
     """A mesh's, STEP file's or sub-assembly's mass, centre of mass and inertia for each row of
-    ``values``, in its own axes about its origin: a sub-assembly's body from its own inputs
-    (rescaled to its measured ``mass``), a file's solid as the scalings of one built solid
-    (mass ∝ density and scale³, or scale² for a shell; centre ∝ scale; inertia ∝ mass·scale²)."""
+    ``values``, (n, 1) (a sub-assembly's parts (n, r) when ``expand``), in its own axes about
+    its origin: a sub-assembly's body from its own inputs (rescaled to its measured ``mass``),
+    a file's solid as the scalings of one built solid (mass ∝ density and scale³, or scale² for
+    a shell; centre ∝ scale; inertia ∝ mass·scale²)."""
+    units = loaded.spec.units
     if isinstance(part, models.AssemblyPart):
-        inner = convert_body(part._loaded, spec.units.length, spec.units.mass)
-        mass, com, inertia = body_at(
-            inner, values[:, [k for k, x in enumerate(inputs) if x.steps[0] == "file"]]
+        inner = convert_body(part._loaded, units.length, units.mass)
+        rows = rows_at(inner, values[:, [k for k, x in enumerate(inputs) if x.steps[0] == "file"]], expand)
+        mass, com, inertia = (
+            rows if expand else (x[:, None] for x in body_stack(*rows, inner.props.center_of_mass))
         )
-        factor = 1.0 if part.mass is None else columns.column("mass") / mass
-        return mass * factor, com, inertia * np.reshape(factor, (-1, 1, 1))
+        factor = 1.0 if part.mass is None else columns.column("mass") / mass.sum(axis=1)
+        return mass * np.reshape(factor, (-1, 1)), com, inertia * np.reshape(factor, (-1, 1, 1, 1))
     unit = (
         {"mass": 1.0} if part.mass is not None else {} if isinstance(part.density, str) else {"density": 1.0}
     )
-    base = part_element(
-        part.model_copy(update={"rotation": None, "pattern": None, "position": [0.0] * 3} | unit),
-        spec.units,
-        path,
-    )
+    at_origin = {"rotation": None, "pattern": None, "position": [0.0] * 3}
+    base = part_element(part.model_copy(update=at_origin | unit), units, loaded.path)
     scale = (
         columns.column("scale") / part.scale if isinstance(part, models.MeshPart) else np.ones(len(columns))
     )
@@ -278,60 +280,52 @@ def _file_stack(
         power = 2 if getattr(part, "inertia", None) == "shell" else 3
         mass = base.mass * scale**power * (columns.column("density") if unit else 1.0)
     per_mass = mass / base.mass * scale * scale
-    return mass, base.center_of_mass * scale[:, None], base.inertia_about_com * per_mass[:, None, None]
+    com, inertia = base.center_of_mass * scale[:, None], base.inertia_about_com * per_mass[:, None, None]
+    return mass[:, None], com[:, None], inertia[:, None]
 
 
+@np.errstate(all="ignore")
 def part_stack(
-    spec: models.BodySpec, index: int, inputs: list[UncertainInput], values: np.ndarray, path: str
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """Part ``index``'s mass, centre of mass and inertia about it, ``(n,)``, ``(n, 3)``,
-    ``(n, 3, 3)``, file units, with its uncertain ``inputs`` set to each row of ``values``
-    ``(n, len(inputs))``, real or complex (a hole's mass and inertia negative, as the body counts
-    it). The shapes of :data:`rbi.spec.translate.BUILDERS` and the files' solids are built for
-    all rows at once, then turned and patterned as one stack; the other shapes row by row."""
-    with np.errstate(all="ignore"):
-        mass, com, inertia = _part_stack(spec.parts[index], inputs, values, spec, path)
-    sign = -1.0 if getattr(spec.parts[index], "subtract", False) else 1.0
-    return sign * mass, com, sign * inertia
-
-
-def _part_stack(
-    part: Any, inputs: list[UncertainInput], values: np.ndarray, spec: models.BodySpec, path: str
-) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    loaded: Any, index: int, inputs: list[UncertainInput], values: np.ndarray, expand: bool = False
+) -> Stack:
+    """Part ``index`` of the body ``loaded``: its mass, centre of mass and inertia about it,
+    ``(n,)``, ``(n, 3)``, ``(n, 3, 3)``, file units, with its uncertain ``inputs`` set to each row
+    of ``values`` ``(n, len(inputs))``, real or complex (a hole's mass and inertia negative, as
+    the body counts it); with ``expand``, a sub-assembly's parts in each of its copies,
+    ``(n, r, ...)``, as ``rbi parts --expand`` lists them. The shapes of
+    :data:`rbi.spec.translate.BUILDERS` and the files' solids are built for all rows at once,
+    then turned and patterned as one stack; the other shapes row by row."""
+    part, spec, n = loaded.spec.parts[index], loaded.spec, len(values)
+    sign = -1.0 if getattr(part, "subtract", False) else 1.0
     if type(part) not in BUILDERS and not isinstance(part, PLACED):
-        rows = []
-        for row in values:
-            changed = part
-            for k, each in enumerate(inputs):
-                changed = _replaced(changed, each.steps, row[k].item())
-            rows.append(part_element(changed, spec.units, path))
+        rows = [part_element(_with(part, inputs, row), spec.units, loaded.path) for row in values]
         mass, com, inertia = (np.array([getattr(e, key) for e in rows]) for key in FIELDS)
-        return mass, com, inertia
-    own = {
-        i.steps: values[:, k]
-        for k, i in enumerate(inputs)
-        if i.steps[0] not in ("rotation", "pattern", "file")
-    }
-    columns = Columns([part], np.zeros(len(values), int), own)
-    n, R = len(values), _each_row(part, "rotation", inputs, values, rotation_matrix)
+        return sign * mass, com, sign * inertia
+    own = {i.steps: values[:, k] for k, i in enumerate(inputs) if i.steps[0] not in SEPARATE}
+    columns = Columns([part], np.zeros(n, int), own)
+    R = _each_row(part, "rotation", inputs, values, rotation_matrix)
     if isinstance(part, PLACED):
-        mass, com, inertia = _file_stack(part, inputs, values, columns, spec, path)
+        mass, com, inertia = _file_stack(loaded, part, inputs, values, columns, expand)
     else:  # a box turns about its centre
-        mass, com, inertia = BUILDERS[type(part)](columns, spec.units)
+        mass, com, inertia = (x[:, None] for x in BUILDERS[type(part)](columns, spec.units))
     if R is not None:
         R = np.broadcast_to(R, (n, 3, 3))
-        inertia = np.einsum("nij,njk,nlk->nil", R, inertia, R)
-        com = np.einsum("nij,nj->ni", R, com) if isinstance(part, PLACED) else com
-    com = com + columns.column("position") if isinstance(part, PLACED) else com
+        inertia = np.einsum("nij,nrjk,nlk->nril", R, inertia, R)
+        com = np.einsum("nij,nrj->nri", R, com) if isinstance(part, PLACED) else com
+    com = com + columns.column("position")[:, None] if isinstance(part, PLACED) else com
     if getattr(part, "pattern", None) is not None and part.pattern.count > 1:
         count = part.pattern.count
         motion = np.broadcast_to(_each_row(part, "pattern", inputs, values, _motions), (n, count, 3, 4))
-        copies = np.einsum("nkij,nj->nki", motion[..., :3], com) + motion[..., 3]
-        turned = np.einsum("nkij,njl,nkml->nkim", motion[..., :3], inertia, motion[..., :3])
-        mass, com, inertia = body_stack(
-            np.repeat(mass[:, None], count, axis=1), copies, turned, copies[0, 0].real
+        com = np.einsum("nkij,nrj->nkri", motion[..., :3], com) + motion[:, :, None, :, 3]
+        inertia = np.einsum("nkij,nrjl,nkml->nkrim", motion[..., :3], inertia, motion[..., :3])
+        mass = np.repeat(mass[:, None], count, axis=1)
+    mass, com, inertia = mass.reshape(n, -1), com.reshape(n, -1, 3), inertia.reshape(n, -1, 3, 3)
+    if not (expand and isinstance(part, models.AssemblyPart)):  # a pattern's copies as one part
+        one = mass.shape[1] == 1
+        mass, com, inertia = (
+            (mass[:, 0], com[:, 0], inertia[:, 0]) if one else body_stack(mass, com, inertia, com[0, 0].real)
         )
-    return mass, com, inertia
+    return sign * mass, com, sign * inertia
 
 
 STEPS = np.array([1.0, 0.5, 0.25])
@@ -348,28 +342,29 @@ def by_part(inputs: tuple[UncertainInput, ...]) -> dict[int, list[int]]:
 
 
 def _flat(stack: tuple[np.ndarray, np.ndarray, np.ndarray]) -> np.ndarray:
-    """(n, 13): mass, centre of mass and inertia of a part's stack side by side."""
+    """(n, [r,] 13): mass, centre of mass and inertia of a part's stack side by side."""
     mass, com, inertia = stack
-    return np.concatenate([mass[:, None], com, inertia.reshape(-1, 9)], axis=1)
+    return np.concatenate([mass[..., None], com, inertia.reshape(*mass.shape, 9)], axis=-1)
 
 
 def _complex_step(
-    spec: models.BodySpec, index: int, group: list[UncertainInput], path: str
+    loaded: Any, index: int, group: list[UncertainInput], expand: bool = False
 ) -> np.ndarray | None:
-    """(len(group), 13): the derivatives of part ``index``'s :func:`_flat` properties by a
-    complex step through :func:`part_stack` (x + ih gives h ∂f/∂x exactly), or None when its
-    builder cannot carry complex numbers (any float() on the way)."""
+    """(len(group), [r,] 13): the derivatives of part ``index``'s :func:`_flat` properties (its
+    rows with ``expand``, as :func:`part_stack`) by a complex step through :func:`part_stack`
+    (x + ih gives h ∂f/∂x exactly), or None when its builder cannot carry complex numbers (any
+    float() on the way)."""
     h = 1e-20 * np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
     values = np.array([i.value for i in group]) + np.diag(1j * h)  # row j: input j stepped
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("error", np.exceptions.ComplexWarning)
         try:
-            stack = part_stack(spec, index, group, values, path)
+            stack = part_stack(loaded, index, group, values, expand)
         except (TypeError, ValueError, np.exceptions.ComplexWarning):
             return None
     if not any(map(np.iscomplexobj, stack)):
         return None  # the step was lost on the way
-    return _flat(stack).imag / h[:, None]
+    return _flat(stack).imag / h.reshape(-1, *[1] * (stack[0].ndim))
 
 
 def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -391,24 +386,9 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             key = (type(part), tuple(i.steps for i in group), part.mass is None, density)
             alike.setdefault(key, []).append(index)
             continue
-        exact = _complex_step(spec, index, group, loaded.path)
-        if exact is not None:
-            derivative[chosen] = exact
-            continue
-        estimated[chosen] = True
-        nominal = np.array([i.value for i in group])
-        scale = np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
-        # powers of 2: value ± step is exact, so a part's linear dependence differentiates exactly
-        h = 2.0 ** np.round(np.log2(1e-2 * scale))
-        rows = np.repeat(nominal[None, :], len(group) * 6, axis=0).reshape(len(group), 3, 2, -1)
-        for j in range(len(group)):
-            rows[j, :, 0, j] += STEPS * h[j]
-            rows[j, :, 1, j] -= STEPS * h[j]
-        stack = part_stack(loaded.spec, index, group, rows.reshape(-1, len(group)), loaded.path)
-        f = _flat(stack).reshape(len(group), 3, 2, 13)
-        d = (f[:, :, 0] - f[:, :, 1]) / (2.0 * STEPS[None, :, None] * h[:, None, None])
-        fine, finer = (4.0 * d[:, 1] - d[:, 0]) / 3.0, (4.0 * d[:, 2] - d[:, 1]) / 3.0
-        derivative[chosen] = (16.0 * finer - fine) / 15.0
+        exact = _complex_step(loaded, index, group)
+        estimated[chosen] = exact is None
+        derivative[chosen] = _differences(loaded, index, group) if exact is None else exact
     grouped = by_part(inputs)
     for (kind, steps, _, _), indices in alike.items():  # complex step: x + ih gives h ∂f/∂x exactly
         chosen = [n for index in indices for n in grouped[index]]
@@ -422,31 +402,63 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             mass, com, inertia = BUILDERS[kind](columns, spec.units)
         sign = np.array([-1.0 if getattr(spec.parts[i], "subtract", False) else 1.0 for i in indices])[rows]
         derivative[chosen] = _flat((sign * mass, com, sign[:, None, None] * inertia)).imag / h[:, None]
-    length, mass = _file_units_per_unit(loaded)
-    units = np.array([mass] + [length] * 3 + [mass * length * length] * 9)
-    return np.array([i.part for i in inputs], dtype=int), derivative / units, estimated
+    return np.array([i.part for i in inputs], dtype=int), derivative / _flat_units(loaded), estimated
+
+
+def _differences(loaded: Any, index: int, group: list[UncertainInput], expand: bool = False) -> np.ndarray:
+    """:func:`_complex_step`'s derivatives estimated where a builder cannot carry the step: the
+    part rebuilt with each input stepped by ±h, ±h/2, ±h/4 (:data:`STEPS`)."""
+    nominal = np.array([i.value for i in group])
+    scale = np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
+    # powers of 2: value ± step is exact, so a part's linear dependence differentiates exactly
+    h = 2.0 ** np.round(np.log2(1e-2 * scale))
+    rows = np.repeat(nominal[None, :], len(group) * 6, axis=0).reshape(len(group), 3, 2, -1)
+    for j in range(len(group)):
+        rows[j, :, 0, j] += STEPS * h[j]
+        rows[j, :, 1, j] -= STEPS * h[j]
+    f = _flat(part_stack(loaded, index, group, rows.reshape(-1, len(group)), expand))
+    f = f.reshape(len(group), 3, 2, *f.shape[1:])
+    d = (f[:, :, 0] - f[:, :, 1]) / (2.0 * STEPS[None, :] * h[:, None]).reshape(
+        len(group), 3, *[1] * (f.ndim - 3)
+    )
+    fine, finer = (4.0 * d[:, 1] - d[:, 0]) / 3.0, (4.0 * d[:, 2] - d[:, 1]) / 3.0
+    return (16.0 * finer - fine) / 15.0
+
+
+def _flat_units(loaded: Any) -> np.ndarray:
+    """(13,): how many of the spec file's units make one of ``loaded``'s (1 unless it was
+    converted: :func:`rbi.spec.units.convert_body`), for each of :func:`_flat`'s numbers."""
+    units = loaded.spec.units
+    length = LENGTH_UNITS_IN_M[loaded.length_unit] / LENGTH_UNITS_IN_M[units.length]
+    mass = MASS_UNITS_IN_KG[loaded.mass_unit] / MASS_UNITS_IN_KG[units.mass]
+    return np.array([mass] + [length] * 3 + [mass * length * length] * 9)
+
+
+def rows_at(loaded: Any, values: np.ndarray, expand: bool = False) -> Stack:
+    """The parts of ``loaded`` (its elements; each sub-assembly's parts with ``expand``, as
+    :func:`rbi.spec.assembly.expanded` lists them) with its uncertain inputs set to each row of
+    ``values`` (n, k), real or complex: masses (n, r), centres (n, r, 3), inertias (n, r, 3, 3),
+    in its units (a hole's mass negative); the parts without inputs repeated."""
+    inputs, elements, parts, n = loaded.spec._uncertain, loaded.elements, loaded.spec.parts, len(values)
+    units, groups, pieces = _flat_units(loaded), by_part(inputs), []
+    for index in range(len(elements)):
+        chosen = groups.get(index, [])
+        if chosen or (expand and index < len(parts) and isinstance(parts[index], models.AssemblyPart)):
+            m, c, inertia = part_stack(loaded, index, [inputs[k] for k in chosen], values[:, chosen], expand)
+            rows = (m / units[0], c / units[1], inertia / units[4])
+            pieces.append([x[:, None] for x in rows] if m.ndim == 1 else list(rows))
+        else:
+            pieces.append(
+                [np.repeat(getattr(elements, key)[None, index : index + 1], n, axis=0) for key in FIELDS]
+            )
+    return tuple(np.concatenate([p[j] for p in pieces], axis=1) for j in range(3))  # type: ignore[return-value]
 
 
 def body_at(loaded: Any, values: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The body ``loaded`` with its uncertain inputs set to each row of ``values`` (n, k), real
     or complex: mass (n,), centre of mass (n, 3), inertia about it (n, 3, 3), in its units,
-    the n bodies built as one stack from their parts (those without inputs repeated)."""
-    inputs, elements = loaded.spec._uncertain, loaded.elements
-    length, mass = _file_units_per_unit(loaded)
-    n, kind = len(values), np.result_type(values, float)
-    masses, coms, inertias = (
-        np.repeat(getattr(elements, key)[None], n, axis=0).astype(kind) for key in FIELDS
-    )
-    for index, chosen in by_part(inputs).items():
-        m, c, inertia = part_stack(
-            loaded.spec, index, [inputs[k] for k in chosen], values[:, chosen], loaded.path
-        )
-        masses[:, index], coms[:, index], inertias[:, index] = (
-            m / mass,
-            c / length,
-            inertia / (mass * length**2),
-        )
-    return body_stack(masses, coms, inertias, loaded.props.center_of_mass)
+    the n bodies built as one stack from their parts (:func:`rows_at`)."""
+    return body_stack(*rows_at(loaded, values), loaded.props.center_of_mass)
 
 
 def drawn(loaded: Any, n: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -492,14 +504,6 @@ class Linear:
     def axes_deg(self) -> list[float | None]:
         """Each principal axis's standard angular uncertainty in degrees (None: undetermined)."""
         return axis_uncertainty_deg(self.values[13:], self.uncertainty[13:], self.turn, self.u)
-
-
-def _file_units_per_unit(loaded: Any) -> tuple[float, float]:
-    """How many of the spec file's length and mass units make one of ``loaded``'s (1, 1 unless
-    it was converted)."""
-    units = loaded.spec.units
-    length = LENGTH_UNITS_IN_M[loaded.length_unit] / LENGTH_UNITS_IN_M[units.length]
-    return length, MASS_UNITS_IN_KG[loaded.mass_unit] / MASS_UNITS_IN_KG[units.mass]
 
 
 def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
@@ -620,20 +624,34 @@ def budget(
     )
 
 
-def part_uncertainties(loaded: Any) -> list[dict[str, Any]]:
-    """Per element of ``loaded`` (its parts in file order), the standard uncertainty of its
-    ``mass``, ``center_of_mass`` and ``inertia_about_com`` from its own inputs (in ``loaded``'s
-    units; zeros for a part without ±)."""
+def part_uncertainties(loaded: Any, expand: bool = False) -> list[dict[str, Any]]:
+    """Per row of ``rbi parts`` (the elements of ``loaded`` in file order; with ``expand`` each
+    sub-assembly's parts in each of its copies, as :func:`rbi.spec.assembly.expanded` lists
+    them), the standard uncertainty of its ``mass``, ``center_of_mass`` and
+    ``inertia_about_com`` from the inputs that move it, in ``loaded``'s units (zeros for a part
+    without ±)."""
+    inputs = loaded.spec._uncertain
     part, d, _ = part_derivatives(loaded)
+    u = np.array([i.u for i in inputs])
     variance = np.zeros((len(loaded.elements), 13))
-    np.add.at(variance, part, (d * np.array([i.u for i in loaded.spec._uncertain])[:, None]) ** 2)
+    np.add.at(variance, part, (d * u[:, None]) ** 2)
+    rows = [v[None] for v in variance]
+    for index, each in enumerate(loaded.spec.parts if expand else []):
+        if isinstance(each, models.AssemblyPart):  # its parts, each moved by all its inputs
+            chosen = by_part(inputs).get(index, [])
+            group = [inputs[k] for k in chosen]
+            if not group:  # no ± in it: its rows (as many as one evaluation gives) are exact
+                found = np.zeros((0, part_stack(loaded, index, [], np.zeros((1, 0)), True)[0].shape[1], 13))
+            elif (found := _complex_step(loaded, index, group, True)) is None:
+                found = _differences(loaded, index, group, True)
+            rows[index] = np.sum((found / _flat_units(loaded) * u[chosen, None, None]) ** 2, axis=0)
     return [
         {
             "mass": float(u[0]),
             "center_of_mass": u[1:4].tolist(),
             "inertia_about_com": u[4:].reshape(3, 3).tolist(),
         }
-        for u in np.sqrt(variance)
+        for u in np.sqrt(np.concatenate(rows))
     ]
 
 
