@@ -43,8 +43,6 @@ PUBLIC = (
 CLI_TOOLS = (
     "import_step",
     "DEFAULT_MAX_STEPS",
-    "MAX_ROWS_SHOWN",
-    "available_cores",
     # the checked file writer, the collector's pause, text for people
     "output_target",
     "check_distinct",

@@ -70,11 +70,9 @@ if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads 
     from rbi.spec.from_step import import_step as import_step
     from rbi.spec.points import reference_choices as reference_choices
     from rbi.spec.points import reference_name as reference_name
-    from rbi.sweeps.execute import available_cores as available_cores
     from rbi.sweeps.plan import Grid as Grid
     from rbi.sweeps.plan import Normal as Normal
     from rbi.sweeps.plan import Uniform as Uniform
-    from rbi.sweeps.study import MAX_ROWS_SHOWN as MAX_ROWS_SHOWN
     from rbi.text import csv_lines as csv_lines
     from rbi.text import number as number
     from rbi.text import plus_minus as plus_minus
@@ -107,15 +105,10 @@ _HOME = {
     "AuditReport": "rbi.robot.audit",
     "import_step": "rbi.spec.from_step",  # read a STEP file as `rbi import FILE.step` does
     "DEFAULT_MAX_STEPS": "rbi.sim.budget",  # most integration steps of a run unless max_steps says otherwise
-    "MAX_ROWS_SHOWN": "rbi.sweeps.study",  # most runs a sweep holds in memory (more: in its out file only)
-    "available_cores": "rbi.sweeps.execute",  # the cores this process may use: sweep's default workers
 }
 """Where each name of rbi.api lives: its module is imported when the name is first asked for,
 so `rbi inertia` loads neither the audit's modules nor the sweep's, and `import rbi.api` alone
 loads none."""
-
-_LOOKED_UP_PER_CALL = ("MAX_ROWS_SHOWN", "available_cores")  # tests replace them in their modules
-
 
 def __getattr__(name: str) -> Any:
     home = _HOME.get(name)
@@ -123,8 +116,7 @@ def __getattr__(name: str) -> Any:
         raise AttributeError(f"module 'rbi.api' has no attribute {name!r}")
     with collector_paused():  # what a module builds as it is imported lives on: see _HOME
         value = getattr(import_module(home), name)
-    if name not in _LOOKED_UP_PER_CALL:
-        globals()[name] = value
+    globals()[name] = value
     return value
 
 
