@@ -32,7 +32,7 @@ only by the functions that need them; reading files is done elsewhere.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator
+from collections.abc import Callable
 from typing import NamedTuple
 
 import numpy as np
@@ -241,11 +241,6 @@ def mesh_defects(faces: np.ndarray) -> MeshDefects:
     )
 
 
-def _face_chunks(n_faces: int) -> Iterator[slice]:
-    for start in range(0, n_faces, FACE_CHUNK):
-        yield slice(start, min(start + FACE_CHUNK, n_faces))
-
-
 def _signed_volumes(corners: np.ndarray) -> np.ndarray:
     """Signed volumes (F,) of the tetrahedra joining the origin to each triangle ``corners``
     (F, 3, 3)."""
@@ -283,8 +278,8 @@ def _sums(
     vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, moments: Moments
 ) -> tuple[float, np.ndarray, np.ndarray]:
     measure, first, second = 0.0, np.zeros(3), np.zeros((3, 3))
-    for chunk in _face_chunks(len(faces)):
-        m, f, s = moments(vertices[faces[chunk]] - reference)
+    for start in range(0, len(faces), FACE_CHUNK):
+        m, f, s = moments(vertices[faces[start : start + FACE_CHUNK]] - reference)
         measure += float(m.sum())
         first += f
         second += s
@@ -321,8 +316,8 @@ def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MassP
 
 def _total(vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, measure: Callable) -> float:
     """The sum of ``measure`` over the triangles, their corners taken from ``reference``."""
-    chunks = _face_chunks(len(faces))
-    return sum((float(measure(vertices[faces[chunk]] - reference).sum()) for chunk in chunks), 0.0)
+    chunks = (faces[start : start + FACE_CHUNK] for start in range(0, len(faces), FACE_CHUNK))
+    return sum((float(measure(vertices[chunk] - reference).sum()) for chunk in chunks), 0.0)
 
 
 def surface_area(vertices: np.ndarray, faces: np.ndarray) -> float:

@@ -182,25 +182,21 @@ def _resolved(path: str, option: str) -> str:
         return os.path.abspath(path)
     except OSError as exc:
         raise InputError(f"{option}: {shown}: cannot use this path: {_reason(exc)}") from None
-    if stat.S_ISLNK(info.st_mode):
-        real = os.path.realpath(path)
+    link = stat.S_ISLNK(info.st_mode)
+    real = os.path.realpath(path) if link else os.path.abspath(path)
+    if link:
         try:
             info = os.stat(real)
         except OSError:
             raise InputError(
                 f"{option}: {shown}: is a symbolic link to nothing; rbi writes only to regular files"
             ) from None
-        if not stat.S_ISREG(info.st_mode):
-            raise InputError(
-                f"{option}: {shown}: is a symbolic link to a {_kind(info.st_mode)}, not a "
-                "regular file; rbi will not replace it"
-            )
-        return real
     if not stat.S_ISREG(info.st_mode):
         raise InputError(
-            f"{option}: {shown}: is a {_kind(info.st_mode)}, not a regular file; rbi will not replace it"
+            f"{option}: {shown}: is a {'symbolic link to a ' * link}{_kind(info.st_mode)}, not a regular "
+            "file; rbi will not replace it"
         )
-    return os.path.abspath(path)
+    return real
 
 
 def _probe(folder: str, option: str, shown: str) -> None:

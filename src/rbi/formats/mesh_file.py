@@ -91,7 +91,9 @@ def read_mesh_arrays(path: Path) -> tuple[np.ndarray, np.ndarray]:
     def make():
         if file_type == "stl":
             _binary_stl_cap(path)
-        data = _read_bytes(path)
+        data = read_input_file(path, MAX_MESH_BYTES, "mesh")  # InputFileRefused is a ValueError
+        if not data.strip():
+            raise ValueError("file is empty")
         try:
             vertices, faces = _PARSERS[file_type](data)
             del data
@@ -114,13 +116,6 @@ def _file_key(path: Path) -> tuple:
             f"use one of {', '.join(MESH_FILE_TYPES)}"
         )
     return file_key(path)
-
-
-def _read_bytes(path: Path) -> bytes:
-    data = read_input_file(path, MAX_MESH_BYTES, "mesh")  # InputFileRefused is a ValueError
-    if not data.strip():
-        raise ValueError("file is empty")
-    return data
 
 
 def _too_many(count: int | None) -> ValueError:

@@ -689,7 +689,8 @@ def _tessellate(ocp, solid, deflection: float, angle: float) -> tuple[np.ndarray
         if mesh is None:
             continue
         transform = location.Transformation()
-        points = np.array([_xyz(mesh.Node(i).Transformed(transform)) for i in range(1, mesh.NbNodes() + 1)])
+        nodes = (mesh.Node(i).Transformed(transform) for i in range(1, mesh.NbNodes() + 1))
+        points = np.array([(node.X(), node.Y(), node.Z()) for node in nodes])
         triangles = np.array([mesh.Triangle(i).Get() for i in range(1, mesh.NbTriangles() + 1)]) - 1
         if face.Orientation() == ocp.TopAbs_REVERSED:
             triangles = triangles[:, ::-1]
@@ -699,7 +700,3 @@ def _tessellate(ocp, solid, deflection: float, angle: float) -> tuple[np.ndarray
     if not vertices:
         return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
     return np.concatenate(vertices), np.concatenate(faces).astype(np.int64)
-
-
-def _xyz(point) -> tuple[float, float, float]:
-    return point.X(), point.Y(), point.Z()
