@@ -131,7 +131,7 @@ def test_a_free_body_spinning_about_a_principal_axis_keeps_its_spin(tmp_path):
         load_body(spec), RunSettings(spin=5.0, duration=1.0, samples=11, error_estimate=False)
     ).simulate()
     assert not run.summary.scene.startswith("heavy top")
-    omega = np.column_stack([run.columns[f"w{c}"] for c in "xyz"])
+    omega = np.column_stack([run.columns()[f"w{c}"] for c in "xyz"])
     assert np.abs(omega).max(axis=0) == pytest.approx([0.0, 0.0, 5.0], abs=1e-9)
 
 

@@ -8,6 +8,13 @@ from typing import Any
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import Destination, checked_output
+from rbi.errors import ArgumentError, literal
+from rbi.files.output import write_output
+from rbi.runs.animation import animation
+from rbi.runs.run import RunSettings, prepare_run
+from rbi.viz.frames import MAX_GIF_FRAMES, frame_indices, write_gif
+from rbi.viz.page import html_page
+from rbi.viz.still import draw_body
 
 
 def show(body: Body, path: Destination, *, title: str | None = None) -> int:
@@ -20,8 +27,6 @@ def show(body: Body, path: Destination, *, title: str | None = None) -> int:
 
     Raises:
         SpecError: ``path`` cannot be written, or its extension is none of those."""
-    from rbi.viz.still import draw_body  # matplotlib and the page's template load only to draw
-
     loaded = loaded_body(body, "body")
     return draw_body(loaded, checked_output(path, ("png", "svg", "html"), body), title)
 
@@ -63,11 +68,23 @@ def animate(
         ValueError: a setting is out of range (named as this function's parameter), or the
             motion needs more keyframes (or GIF frames) than a file may hold.
         SpecError: ``path`` cannot be written; the run cannot be made."""
-    from rbi.runs.animation import write_animation  # the integrator loads only to simulate
-    from rbi.runs.run import RunSettings, prepare_run  # the integrator: not for `rbi show`
-
-    loaded = loaded_body(body, "body")
     target = checked_output(path, ("html", "gif"), body)
-    prepared = prepare_run(loaded, RunSettings(**run))
-    frames, tilt = write_animation(prepared, target, speed=speed, fps=fps, progress=progress)
-    return Animation(target.given, frames, tilt)
+    prepared = prepare_run(loaded_body(body, "body"), RunSettings(**run))
+    if not (0.1 <= speed <= 2.0):
+        raise ArgumentError("speed", f"must be between 0.1 and 2 (got {literal(speed)})")
+    if not 1 <= fps <= 60:
+        raise ArgumentError("fps", f"must be between 1 and 60 (got {literal(fps)})")
+    duration = prepared.settings.duration
+    gif_frames = int(duration * fps) + 1 if target.format == "gif" else 0
+    if gif_frames > MAX_GIF_FRAMES:
+        raise ArgumentError(
+            "duration",
+            f"a GIF of {duration:g} s at {fps} frames per second would have {gif_frames:.3g} frames, more "
+            f"than {MAX_GIF_FRAMES}: shorten {{duration}}, lower {{fps}}, or write .html",
+        )
+    data, trajectory, tilts = animation(prepared, gif_frames)
+    if target.format == "html":
+        write_output(target, html_page(data, speed=speed))
+        return Animation(target.given, int(trajectory.t.size), float(tilts.max()))
+    write_output(target, writer=lambda temp: write_gif(data, temp, fps=fps, progress=progress))
+    return Animation(target.given, int(frame_indices(trajectory.t, fps).size), float(tilts.max()))

@@ -15,14 +15,14 @@ from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import OutputTarget, check_distinct, write_output
 from rbi.reprs import Result, Rows, pandas_module
 from rbi.runs.draws import input_uncertainty as spread
-from rbi.runs.run import RunSettings, RunSummary, prepare_run, trajectory_csv
-from rbi.sim.summary import columns_of
+from rbi.runs.run import RunSettings, RunSummary, SimulationRun, prepare_run
 from rbi.text import number, vector_text
-from rbi.viz.plots import plot_simulation
+from rbi.viz.labels import motion_title
+from rbi.viz.plots import plot_trajectory
 
 
 @dataclass(frozen=True, repr=False)
-class Trajectory(Result):
+class Trajectory(SimulationRun, Result):
     """A simulated motion, sampled at equally spaced times (spec units).
 
     Attributes:
@@ -40,19 +40,8 @@ class Trajectory(Result):
             trajectory made by hand.
     """
 
-    t: np.ndarray
-    q: np.ndarray
-    omega: np.ndarray
-    tilt_deg: np.ndarray
-    precession_deg: np.ndarray
-    energy: np.ndarray
-    summary: RunSummary | None = None
     body: Body | None = field(default=None, compare=False)
     """The simulated `Body` (None for a trajectory made by hand)."""
-    settings: RunSettings | None = field(default=None, compare=False)
-    """The settings it was run with (None for a trajectory made by hand)."""
-    dense: dict[str, np.ndarray] | None = field(default=None, compare=False)
-    """The same integration sampled more densely for `plot` (``plot_samples``), as columns."""
 
     def plot(self, path: Destination) -> None:
         """Draw the run at ``path`` (``.png``, ``.svg`` or ``.pdf``; needs matplotlib), as ``rbi
@@ -67,22 +56,17 @@ class Trajectory(Result):
             {"principal_axes": body.principal().axes, "inertia": body.inertia()} if body.pivot is None else {}
         )
         given = self.settings is not None and any(self.settings.omega or ())
-        plot_simulation(
+        initial, axis = summary.initial, summary.spin_axis
+        plot_trajectory(
             self.columns() if self.dense is None else self.dense,
             checked_output(path, PLOT_FORMATS, body),
-            name=body.name or body.path,
-            omega0=summary.initial["omega"],
-            nudge_deg=summary.initial["nudge_deg"],
+            motion_title(
+                body.name or body.path, initial["omega"], None if given else axis, initial["nudge_deg"]
+            ),
             energy_unit=body.unit_labels["energy"],
-            spin_axis=summary.spin_axis,
-            titled_axis=None if given else summary.spin_axis,
+            spin_axis=axis,
             **free,
         )
-
-    def to_csv(self) -> str:
-        """The trajectory as the CSV ``rbi simulate --out`` writes (columns t, qw, qx, qy, qz, wx,
-        wy, wz, tilt_deg, precession_deg, energy; full precision)."""
-        return trajectory_csv(self.columns())
 
     def to_pandas(self) -> Any:
         """The trajectory's columns (``t``, ``qw`` … ``energy``) as a :class:`pandas.DataFrame`,
@@ -94,10 +78,6 @@ class Trajectory(Result):
         if self.summary is None:
             raise ArgumentError("summary", "a Trajectory made by hand has no summary")
         return self.summary.to_dict()
-
-    def columns(self) -> dict[str, np.ndarray]:
-        """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""
-        return columns_of(self.t, self.q, self.omega, self.tilt_deg, self.precession_deg, self.energy)
 
     def __repr__(self) -> str:
         method = "" if self.summary is None else self.summary.method
@@ -359,19 +339,7 @@ def _simulated(
 ) -> Trajectory:
     """The `Trajectory` of ``body`` run with ``settings`` (sampled at ``dense`` more times for a plot)."""
     run = prepare_run(loaded_body(body, "body"), settings).simulate(progress, dense)
-    columns = run.columns
-    return Trajectory(
-        t=columns["t"],
-        q=run.trajectory.q,
-        omega=run.trajectory.omega,
-        tilt_deg=columns["tilt_deg"],
-        precession_deg=columns["precession_deg"],
-        energy=columns["energy"],
-        summary=run.summary,
-        body=body,
-        settings=run.settings,
-        dense=run.dense,
-    )
+    return Trajectory(**vars(run), body=body)
 
 
 def _axis_name(axis: Any) -> str:

@@ -18,7 +18,7 @@ from rbi.spec.load import read_spec
 from rbi.sweeps.study import MAX_ROWS_SHOWN, Study, SweepSettings, check_settings
 from rbi.sweeps.tolerance import spread as spread_over
 from rbi.text import number
-from rbi.viz.plots import plot_map
+from rbi.viz.plots import plot_stability_map
 
 if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the sweep's modules load then)
     from rbi.sweeps.plan import Grid, Normal, Uniform
@@ -90,7 +90,7 @@ class SweepTable(Result):
         if not self.held:
             raise ArgumentError("plot", "the map is drawn from the rows, and this table does not hold them")
         target = checked_output(path, ("png", "svg", "pdf"), self._body, "plot")
-        plot_map(self._study.stability_map(self._rows), target)
+        plot_stability_map(target=target, **self._study.stability_map(self._rows))
         self._drawn = target.given
 
     def __len__(self) -> int:

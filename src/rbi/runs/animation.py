@@ -3,18 +3,16 @@ plain data the page and the GIF are drawn from."""
 
 from __future__ import annotations
 
-from collections.abc import Callable
 from typing import Any
 
 import numpy as np
 
-from rbi.errors import ArgumentError, InputError, literal
-from rbi.files.output import write_output
+from rbi.errors import ArgumentError, InputError
 from rbi.runs.run import PreparedRun
 from rbi.sim.diagnostics import tilt_deg
 from rbi.spec.geometry import part_geometry
 from rbi.viz.labels import motion_title
-from rbi.viz.page import html_page
+from rbi.viz.motion import MAX_KEYFRAMES, MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframes_needed
 from rbi.viz.still import part_count
 
 
@@ -25,9 +23,6 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
 
     :class:`InputError` when the motion would need more keyframes than a page can play, or is
     not finite."""
-    # looked up per call: tests replace it
-    from rbi.viz.motion import MAX_KEYFRAMES, MIN_KEYFRAMES, TRAIL_SECONDS, animation_data, keyframes_needed
-
     body, scene, duration = run.body, run.scene, run.settings.duration
     probe = run.integrate(MIN_KEYFRAMES)
     fastest = float(np.max(np.linalg.norm(probe.omega, axis=1)))
@@ -68,38 +63,3 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
         + (" · on a pivot" if scene.pivoted else " · free body, about its centre of mass")
     )
     return data, trajectory, tilts
-
-
-def write_animation(
-    run: PreparedRun,
-    target: Any,
-    *,
-    speed: float = 1.0,
-    fps: int = 25,
-    progress: Callable[[int, int], None] | None = None,
-) -> tuple[int, float]:
-    """Simulate ``run`` and write its animation at the checked output ``target``: a 3D page
-    (``.html``) that starts playing at ``speed``, or a GIF at ``fps`` frames per second whose
-    ``progress(frames drawn, frames)`` is called after each frame. Returns ``(frames in the
-    file, largest tilt of the spin axis in degrees)``. :class:`ArgumentError` for a ``speed``
-    or ``fps`` out of range, or a GIF longer than :data:`rbi.viz.frames.MAX_GIF_FRAMES`."""
-    # looked up per call: tests replace it
-    from rbi.viz.frames import MAX_GIF_FRAMES, frame_indices, write_gif
-
-    if not (0.1 <= speed <= 2.0):
-        raise ArgumentError("speed", f"must be between 0.1 and 2 (got {literal(speed)})")
-    if not 1 <= fps <= 60:
-        raise ArgumentError("fps", f"must be between 1 and 60 (got {literal(fps)})")
-    gif_frames = int(run.settings.duration * fps) + 1 if target.format == "gif" else 0
-    if gif_frames > MAX_GIF_FRAMES:
-        raise ArgumentError(
-            "duration",
-            f"a GIF of {run.settings.duration:g} s at {fps} frames per second would have {gif_frames:.3g} "
-            f"frames, more than {MAX_GIF_FRAMES}: shorten {{duration}}, lower {{fps}}, or write .html",
-        )
-    data, trajectory, tilts = animation(run, gif_frames)
-    if target.format == "html":
-        write_output(target, html_page(data, speed=speed))
-        return int(trajectory.t.size), float(tilts.max())
-    write_output(target, writer=lambda path: write_gif(data, path, fps=fps, progress=progress))
-    return int(frame_indices(trajectory.t, fps).size), float(tilts.max())

@@ -12,7 +12,7 @@ them (:class:`~rbi.errors.ArgumentError`); a spec that cannot be simulated is an
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass, field, fields, replace
 from typing import Any
 
 import numpy as np
@@ -26,7 +26,7 @@ from rbi.sim.api import SimulationError, check_duration, check_method, check_rto
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import tilt_deg
 from rbi.sim.scene import initial_state, scene_from_properties
-from rbi.sim.summary import CSV_COLUMNS, sample_columns, summarize
+from rbi.sim.summary import CSV_COLUMNS, columns_of, sample_columns, summarize
 from rbi.sim.summary import error_estimate as estimate
 from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
 from rbi.text import csv_cell
@@ -226,16 +226,31 @@ class RunSummary:
 
 @dataclass(frozen=True)
 class SimulationRun:
-    """A finished run: ``trajectory`` (:class:`rbi.sim.api.Trajectory`), ``columns`` (the CSV's
-    columns by name, :data:`rbi.sim.summary.CSV_COLUMNS`), ``summary`` (:class:`RunSummary`),
-    the ``settings`` it was run with and ``dense``: the same integration sampled for a plot
-    (columns as ``columns``), when asked."""
+    """A finished run (spec units): ``t``, ``q`` ([w, x, y, z], body → world), ``omega`` (body
+    frame, rad/s), ``tilt_deg``, ``precession_deg``, ``energy``: the samples, the CSV's columns
+    (:meth:`columns`); ``summary`` (:class:`RunSummary`), the ``settings`` it was run with and
+    ``dense``: the same integration sampled for a plot (as :meth:`columns`), when asked."""
 
-    trajectory: Any
-    columns: dict[str, np.ndarray]
-    summary: RunSummary
-    settings: RunSettings
-    dense: dict[str, np.ndarray] | None = None
+    t: np.ndarray
+    q: np.ndarray
+    omega: np.ndarray
+    tilt_deg: np.ndarray
+    precession_deg: np.ndarray
+    energy: np.ndarray
+    summary: RunSummary | None = None
+    settings: RunSettings | None = field(default=None, compare=False)
+    """The settings it was run with (None for a trajectory made by hand)."""
+    dense: dict[str, np.ndarray] | None = field(default=None, compare=False)
+    """The same integration sampled more densely for a plot, as columns."""
+
+    def columns(self) -> dict[str, np.ndarray]:
+        """The CSV's columns by name (``t``, ``qw`` … ``energy``), each (N,)."""
+        return columns_of(self.t, self.q, self.omega, self.tilt_deg, self.precession_deg, self.energy)
+
+    def to_csv(self) -> str:
+        """The trajectory as the CSV ``rbi simulate --out`` writes (columns t, qw, qx, qy, qz, wx,
+        wy, wz, tilt_deg, precession_deg, energy; full precision)."""
+        return trajectory_csv(self.columns())
 
 
 @dataclass(frozen=True)
@@ -304,7 +319,10 @@ class PreparedRun:
         refuse_non_finite(self.body.path, columns)
         fine = None if trajectory.dense is None else sample_columns(self.scene, trajectory.dense)
         summary = RunSummary(**self._head(trajectory), **figures)
-        return SimulationRun(trajectory, columns, summary, settings, fine)
+        tilt, precession, energy = (columns[name] for name in ("tilt_deg", "precession_deg", "energy"))
+        return SimulationRun(
+            trajectory.t, trajectory.q, trajectory.omega, tilt, precession, energy, summary, settings, fine
+        )
 
     def _head(self, trajectory: Any) -> dict[str, Any]:
         """The summary's first entries: the body, the scene and the initial state."""

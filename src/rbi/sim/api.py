@@ -13,6 +13,7 @@ import numpy as np
 
 from rbi.core.validity import finite
 from rbi.errors import ArgumentError, literal
+from rbi.sim import exact
 from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
 from rbi.sim.scene import Scene
 
@@ -229,8 +230,7 @@ def _run_compiled(
 
 
 def _run_scipy(scene: Scene, q0, omega0, t: np.ndarray, method: str, rtol: float) -> Trajectory:
-    # not at top level: `rbi simulate` would load rbi.sim.baselines too
-    from rbi.sim.baselines import solve_with_scipy
+    from rbi.sim.baselines import solve_with_scipy  # heavy: scipy.integrate, for these methods only
 
     atol = rtol * SCIPY_ATOL_RATIO
     solver = {"rk45": "RK45", "dop853": "DOP853"}[method]
@@ -257,9 +257,6 @@ def _run_scipy(scene: Scene, q0, omega0, t: np.ndarray, method: str, rtol: float
 
 
 def _run_exact(scene: Scene, q0, omega0, t: np.ndarray) -> Trajectory:
-    # not at top level: `rbi sweep` would load rbi.sim.exact too
-    from rbi.sim import exact
-
     start = time.perf_counter()
     try:
         solution = exact.solve(scene, q0, omega0)

@@ -45,8 +45,7 @@ def integrator() -> Loaded:
     if _LOADED is None:
         start = time.perf_counter()
         try:
-            # not at top level: `rbi sweep --mass-properties` would load rbi.sim._dop853 too
-            from rbi.sim import _dop853
+            from rbi.sim import _dop853  # heavy: the compiled kernel, loaded once and timed
         except ImportError as exc:
             raise KernelMissing(
                 "the compiled simulation kernel is missing (rbi.sim._dop853): install rbi with "

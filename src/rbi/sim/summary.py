@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 
-from rbi.sim import diagnostics
+from rbi.sim import diagnostics, exact
 from rbi.sim.api import DEFAULT_RTOL, Trajectory, simulate
 from rbi.sim.scene import Scene
 
@@ -193,9 +193,6 @@ def angle_to_h(scene: Scene, omega: np.ndarray) -> dict[str, float | None]:
 def closed_form_facts(scene: Scene, q0, omega0) -> dict[str, Any] | None:
     """Characteristic numbers of the closed-form solution (nutation bounds and period of a
     Lagrange top, period of ω of a free body ...), or None when the scene has none."""
-    # not at top level: `rbi sweep` would load rbi.sim.exact too
-    from rbi.sim import exact
-
     if (
         scene.pivoted
         and scene.gravity > 0

@@ -11,27 +11,27 @@ import numpy as np
 
 from rbi.core.rotation import rotate
 from rbi.files.output import write_output
-from rbi.viz.labels import MAX_LABEL_CHARS, label, motion_title, plain, pyplot
+from rbi.viz.labels import MAX_LABEL_CHARS, label, plain, pyplot
 
 
 def plot_trajectory(
     columns: dict[str, np.ndarray],
-    path: str,
+    target,
     title: str = "",
-    format: str = "png",
     *,
     principal_axes=None,
     inertia=None,
     energy_unit: str = "J",
     spin_axis=(0.0, 0.0, 1.0),
 ) -> None:
-    """Four panels saved at ``path``: the path of the tip of the spin axis (``spin_axis``, unit,
-    body frame) seen from above,
+    """Four panels written at the checked output ``target`` (its format; replaced atomically): the
+    path of the tip of the spin axis (``spin_axis``, unit, body frame) seen from above,
     coloured by time; the tilt of that axis against time (a top) or, when ``principal_axes``
     (body frame, rows, ascending moments) and the ``inertia`` about the centre of mass (body
     axes) are given (a free body), the angle between each principal axis and the angular
     momentum (fixed in space), where a flip of the intermediate axis shows as a swing from
-    0° to 180°; the body-frame ω components; and the drift of the total energy."""
+    0° to 180°; the body-frame ω components; and the drift of the total energy. ``title``: a
+    run's :func:`rbi.viz.labels.motion_title`."""
     plt = pyplot()
 
     t = np.asarray(columns["t"], dtype=float)
@@ -47,30 +47,8 @@ def plot_trajectory(
     if title:
         plain(fig.suptitle(label(title, 2 * MAX_LABEL_CHARS)))
     fig.tight_layout()
-    fig.savefig(path, format=format, dpi=110)
+    write_output(target, writer=lambda path: fig.savefig(path, format=target.format, dpi=110))
     plt.close(fig)
-
-
-def plot_simulation(
-    columns: dict[str, np.ndarray], target, *, name: str, omega0, nudge_deg: float, titled_axis, **drawn
-) -> None:
-    """:func:`plot_trajectory` written at the checked output ``target``, titled with the body's
-    ``name``, its start ``omega0`` (body axes, rad/s) about ``titled_axis`` (None: an ω given) and
-    the nudge (degrees): :func:`motion_title`; ``drawn``: its
-    keywords (``spin_axis``, ``energy_unit``, a free body's ``principal_axes`` and ``inertia``)."""
-
-    title = motion_title(name, omega0, titled_axis, nudge_deg)
-    write_output(
-        target,
-        writer=lambda path: plot_trajectory(columns, path, title=title, format=target.format, **drawn),
-    )
-
-
-def plot_map(data: dict, target) -> None:
-    """:func:`plot_stability_map` of a sweep's map ``data`` (its keyword arguments,
-    :meth:`rbi.sweeps.study.Study.stability_map`) written at the checked output ``target``."""
-
-    write_output(target, writer=lambda path: plot_stability_map(path=path, format=target.format, **data))
 
 
 def _angle_panel(angle_ax, t: np.ndarray, q: np.ndarray, columns: dict, principal_axes, inertia) -> None:
@@ -157,16 +135,15 @@ def plot_stability_map(
     x,
     y,
     values,
-    path: str,
+    target,
     x_label: str,
     y_label: str | None,
     threshold: float | None = None,
     title: str = "",
-    format: str = "png",
 ) -> None:
-    """The largest tilt of each run (log colour scale) over one or two swept axes, saved at
-    ``path``. With one axis: tilt against it. ``threshold``: the sleeping-top spin (rad/s),
-    drawn as a vertical line on a spin axis."""
+    """The largest tilt of each run (log colour scale) over one or two swept axes, written at the
+    checked output ``target`` (its format; replaced atomically). With one axis: tilt against it.
+    ``threshold``: the sleeping-top spin (rad/s), drawn as a vertical line on a spin axis."""
     plt = pyplot()
 
     xs, ys = np.asarray(x, dtype=float), y
@@ -191,7 +168,7 @@ def plot_stability_map(
     if title:
         plain(ax.set_title(label(title, 2 * MAX_LABEL_CHARS)))
     fig.tight_layout()
-    fig.savefig(path, format=format, dpi=120)
+    write_output(target, writer=lambda path: fig.savefig(path, format=target.format, dpi=120))
     plt.close(fig)
 
 

@@ -20,6 +20,7 @@ from rbi.spec.geometry import part_geometry
 from rbi.viz.frames import HOLE_RGBA, body_mesh, cloud_points, part_colour
 from rbi.viz.labels import label, plain, plain_legend, pyplot
 from rbi.viz.motion import body_size, drawn_points, page_data, shifted
+from rbi.viz.page import html_page
 from rbi.viz.solids import shade
 
 AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
@@ -131,9 +132,6 @@ def draw_body(body: Any, target: Any, title: str | None = None) -> int:
         body.labels["inertia"],
     )
     if target.format == "html":
-        # not at top level: `rbi show --out F.png` would load rbi.viz.page too
-        from rbi.viz.page import html_page
-
         data["legend"] = (
             f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
             f"axes (below) · grey arrows: the spec's x, y, z from its origin · lengths in {body.length_unit}"
