@@ -110,6 +110,7 @@ _HOME = {
 so `rbi inertia` loads neither the audit's modules nor the sweep's, and `import rbi.api` alone
 loads none."""
 
+
 def __getattr__(name: str) -> Any:
     home = _HOME.get(name)
     if home is None:
