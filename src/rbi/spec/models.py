@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import re
 import unicodedata
-from typing import Annotated, Any, Literal, Union
+from typing import Annotated, Any, Literal, Union, get_args
 
 import numpy as np
 from pydantic import (
@@ -72,6 +72,11 @@ class Pattern(_BuiltWhenUsed):
         return _nonzero(self, "axis", "the direction of the line the copies turn about")
 
 
+SHAPE_MODELS: dict[str, type[_Part]] = {}
+"""Every part model by its ``shape`` tag, in the order the models are defined below: each model
+with a ``shape`` field is listed when its class is made (:meth:`_Part.__pydantic_init_subclass__`)."""
+
+
 class _Part(_BuiltWhenUsed):
     name: str | None = Field(
         None, description="A name for the part, shown in tables and error messages; unique within the body."
@@ -79,6 +84,12 @@ class _Part(_BuiltWhenUsed):
     pattern: Pattern | None = Field(
         None, description="Repeat this part: copies about an axis line or in a row."
     )
+
+    @classmethod
+    def __pydantic_init_subclass__(cls, **kwargs: Any) -> None:
+        """A model with a ``shape`` tag (a ``Literal``) goes into :data:`SHAPE_MODELS` under it."""
+        if "shape" in cls.model_fields:
+            SHAPE_MODELS[get_args(cls.model_fields["shape"].annotation)[0]] = cls
 
 
 class _Solid(_Part):
@@ -550,28 +561,6 @@ class AssemblyPart(_Part):
 
     _loaded: Any = PrivateAttr(None)  # the sub-assembly as read, in its own units: set when translated
 
-
-SHAPE_MODELS: dict[str, type[_Part]] = {
-    "cone": ConePart,
-    "cylinder": CylinderPart,
-    "point": PointPart,
-    "box": BoxPart,
-    "sphere": SpherePart,
-    "spherical_shell": SphericalShellPart,
-    "tube": TubePart,
-    "frustum": FrustumPart,
-    "ellipsoid": EllipsoidPart,
-    "rod": RodPart,
-    "custom": CustomPart,
-    "torus": TorusPart,
-    "hemisphere": HemispherePart,
-    "capsule": CapsulePart,
-    "mesh": MeshPart,
-    "step": StepPart,
-    "prism": PrismPart,
-    "assembly": AssemblyPart,
-}
-"""Every part model by its ``shape`` tag; new shapes are added here."""
 
 Part = Annotated[Union[tuple(SHAPE_MODELS.values())], Field(discriminator="shape")]  # noqa: UP007 (a union built at run time)
 """A part of any shape, as one discriminated union (what the JSON Schema describes)."""
