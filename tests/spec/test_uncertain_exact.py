@@ -86,6 +86,21 @@ def test_rotated_box_angle():
     assert_matches(part, m, [0.1, 0.0, 0.2], R.dot(own).dot(R.T))
 
 
+def test_rotated_box_axis_and_angle_as_one_stack():
+    """An axis and an angle both toleranced: the turns of all rows at once (part_stack)."""
+    y_w, y = tagged(2.0, 0.1, "parts.b.rotation.axis[1]")
+    t_w, t = tagged(30.0, 0.5, "parts.b.rotation.angle_deg")
+    length = umath.sqrt(1.0 + y * y + 9.0)
+    axis = [1.0 / length, y / length, 3.0 / length]
+    cos, sin = umath.cos(umath.radians(t)), umath.sin(umath.radians(t))
+    K = np.array([[0, -axis[2], axis[1]], [axis[2], 0, -axis[0]], [-axis[1], axis[0], 0]], dtype=object)
+    R = cos * np.eye(3) + sin * K + (1 - cos) * np.outer(axis, axis)
+    own = np.diag([2.0 * (0.04 + 0.09) / 12, 2.0 * (0.01 + 0.09) / 12, 2.0 * (0.01 + 0.04) / 12])
+    part = {"name": "b", "shape": "box", "mass": 2.0, "size": [0.1, 0.2, 0.3], "center": [0.1, 0.0, 0.2]}
+    part["rotation"] = {"axis": [1, y_w, 3], "angle_deg": t_w}
+    assert_matches(part, 2.0, [0.1, 0.0, 0.2], R.dot(own).dot(R.T))
+
+
 def test_patterned_cylinder_by_density():
     rho_w, rho = tagged(1000.0, 5.0, "parts.c.density")
     r_w, r = tagged(0.05, 0.001, "parts.c.radius")

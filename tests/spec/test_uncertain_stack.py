@@ -25,7 +25,7 @@ PARTS = {
             "size": ["0.1 ± 0.001", 0.2, 0.3],
             "center": [0.1, "0 ± 0.01", 0.2],
         }
-        | {"rotation": {"axis": [1, 2, 3], "angle_deg": "30 ± 0.5"}},
+        | {"rotation": {"axis": [1, "2 ± 0.1", 3], "angle_deg": "30 ± 0.5"}},
         0,
     ),
     "patterned cylinder": (

@@ -25,6 +25,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
+from rbi.core.rotation import radians, unit_vector, without_rounding_noise
 from rbi.core.uncertainty import (
     axis_uncertainty_deg,
     body_derivatives,
@@ -238,6 +239,20 @@ def _each_row(part: Any, field: str, inputs: list[UncertainInput], values: np.nd
     return np.array([make(getattr(_with(part, chosen, row[mine]), field)) for row in values])
 
 
+def _turns(part: Any, inputs: list[UncertainInput], values: np.ndarray) -> np.ndarray | None:
+    """The part's rotation matrix, or one a row of ``values`` (n, 3, 3) when inputs are in it:
+    an axis and angle as one stack (:func:`rbi.core.rotation.axis_angle_matrix`'s arithmetic),
+    the other forms row by row."""
+    mine = {x.steps[1:]: values[:, k] for k, x in enumerate(inputs) if x.steps[0] == "rotation"}
+    if not mine or part.rotation.angle_deg is None:
+        return _each_row(part, "rotation", inputs, values, rotation_matrix)
+    columns = Columns([part.rotation], np.zeros(len(values), int), mine)
+    u, angle = unit_vector(columns.column("axis")), radians(columns.column("angle_deg"))[:, None, None]
+    K = np.cross(u[:, None, :], np.eye(3)).transpose(0, 2, 1)  # u × (each axis): the cross-product matrix
+    c, s = np.cos(angle), np.sin(angle)
+    return without_rounding_noise(c * np.eye(3) + s * K + (1.0 - c) * u[:, :, None] * u[:, None, :])
+
+
 def _motions(pattern: Any) -> np.ndarray:
     """(copies, 3, 4): ``[R | t]`` of each copy of a pattern (:func:`rbi.spec.pattern.copy_motions`)."""
     return np.array([np.column_stack((R, t)) for R, t in copy_motions(pattern)])
@@ -303,7 +318,7 @@ def part_stack(
         return sign * mass, com, sign * inertia
     own = {i.steps: values[:, k] for k, i in enumerate(inputs) if i.steps[0] not in SEPARATE}
     columns = Columns([part], np.zeros(n, int), own)
-    R = _each_row(part, "rotation", inputs, values, rotation_matrix)
+    R = _turns(part, inputs, values)
     if isinstance(part, PLACED):
         mass, com, inertia = _file_stack(loaded, part, inputs, values, columns, expand)
     else:  # a box turns about its centre
