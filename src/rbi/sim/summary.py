@@ -21,6 +21,15 @@ CSV_COLUMNS = ("t", "qw", "qx", "qy", "qz", "wx", "wy", "wz", "tilt_deg", "prece
 vertical (deg), the azimuth of that axis seen from above (the precession angle, deg, unwrapped)
 and the total energy."""
 
+ESTIMATE_FIGURES = (
+    "orientation_deg",
+    "omega_rad_s",
+    "omega_relative",
+    "final_orientation_deg",
+    "final_omega_rad_s",
+)
+"""The numbers of an :func:`error_estimate` after its ``reference`` (None where no tighter run exists)."""
+
 REFERENCE_RTOL_FACTOR = 1e-3
 REFERENCE_RTOL_FLOOR = 1e-15
 """The tightest tolerance the compiled integrator accepts; a run already at it has no
@@ -70,11 +79,7 @@ def error_estimate(
         return {
             "reference": f"not available: rtol {trajectory.rtol:g} is already the tightest the integrator "
             "accepts, so no tighter run can check it",
-            "orientation_deg": None,
-            "omega_rad_s": None,
-            "omega_relative": None,
-            "final_orientation_deg": None,
-            "final_omega_rad_s": None,
+            **dict.fromkeys(ESTIMATE_FIGURES),
         }
     duration = float(trajectory.t[-1])
     reference = simulate(
@@ -90,7 +95,7 @@ def error_estimate(
     angle = np.atleast_1d(diagnostics.orientation_error_deg(trajectory.q, reference.q))
     d_omega = float(np.max(np.abs(trajectory.omega - reference.omega)))
     size = float(np.max(np.linalg.norm(reference.omega, axis=1)))
-    return {
+    return {  # the keys of ESTIMATE_FIGURES
         "reference": f"default method at rtol {rtol:g}",
         "orientation_deg": float(np.max(angle)),
         "omega_rad_s": d_omega,

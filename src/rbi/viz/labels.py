@@ -9,6 +9,7 @@ took minutes to lay out).
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Iterable
 
 from rbi.text import number, visible
@@ -89,18 +90,11 @@ def _characters_of(font) -> frozenset[int]:
     return _charmaps(tuple(paths))
 
 
-_CHARMAPS: dict[tuple[str, ...], frozenset[int]] = {}
-
-
+@functools.cache
 def _charmaps(paths: tuple[str, ...]) -> frozenset[int]:
-    if paths not in _CHARMAPS:
-        from matplotlib.ft2font import FT2Font  # optional extra `plot`, loaded only to draw
+    from matplotlib.ft2font import FT2Font  # optional extra `plot`, loaded only to draw
 
-        codes: set[int] = set()
-        for path in paths:
-            codes.update(FT2Font(str(path)).get_charmap())
-        _CHARMAPS[paths] = frozenset(codes)
-    return _CHARMAPS[paths]
+    return frozenset(code for path in paths for code in FT2Font(str(path)).get_charmap())
 
 
 def plain_legend(legend):
