@@ -98,3 +98,16 @@ def test_parts_expand_gives_each_part_of_a_sub_assembly_its_uncertainty(tmp_path
         for key in ("mass", "center_of_mass", "inertia_about_com"):
             np.testing.assert_allclose(row.uncertainty[key], alone.uncertainty[key], rtol=1e-12, atol=1e-18)
     assert nested.to_dict()["parts"][1]["uncertainty"] == nested[1].uncertainty
+
+
+def test_two_parts_naming_one_file_have_inputs_of_their_own(tmp_path):
+    """Each `shape: assembly` part draws its file's numbers on its own: twice the variance."""
+    (tmp_path / "inner.yaml").write_text(INNER)
+    (tmp_path / "sub.yaml").write_text(SUB)
+    (tmp_path / "one.yaml").write_text("parts: [{name: a, shape: assembly, file: sub.yaml}]\n")
+    (tmp_path / "two.yaml").write_text(
+        "parts: [{name: a, shape: assembly, file: sub.yaml}, {name: b, shape: assembly, file: sub.yaml}]\n"
+    )
+    one, two = (load_body(str(tmp_path / f"{n}.yaml")) for n in ("one", "two"))
+    assert [i.path for i in two.spec._uncertain][7:9] == ["parts.b/blk.size[0]", "parts.b/blk.mass"]
+    assert linear(two).uncertainty[0] == pytest.approx(np.sqrt(2) * linear(one).uncertainty[0], rel=1e-14)
