@@ -55,7 +55,7 @@ from rbi.formats.robot import (
     short,
     unit,
 )
-from rbi.formats.robot_geometry import distribution
+from rbi.formats.robot_geometry import geoms_sum
 from rbi.formats.robot_xml import read_xml
 
 MAX_INCLUDES = 100
@@ -82,10 +82,8 @@ class Compiler:
         self.balanceinertia = False
 
     def read(self, where: Where, element) -> None:
-        angle = element.get("angle")
+        angle = _choice(where, element, "angle", ("degree", "radian"))
         if angle is not None:
-            if angle not in ("degree", "radian"):
-                raise where.error(f"compiler: angle: {short(angle)!r}: must be degree or radian")
             self.degrees = angle == "degree"
         seq = element.get("eulerseq")
         if seq is not None:
@@ -97,25 +95,16 @@ class Compiler:
             self.eulerseq = seq
         self.meshdir = element.get("meshdir", self.meshdir)
         self.assetdir = element.get("assetdir", self.assetdir)
-        value = element.get("inertiafromgeom")
-        if value is not None:
-            if value not in ("true", "false", "auto"):
-                raise where.error(f"compiler: inertiafromgeom: {short(value)!r}: must be true, false or auto")
-            self.inertiafromgeom = value
+        self.inertiafromgeom = (
+            _choice(where, element, "inertiafromgeom", ("true", "false", "auto")) or self.inertiafromgeom
+        )
         if element.get("inertiagrouprange") is not None:
             low, high = numbers(where, element.get("inertiagrouprange"), "compiler: inertiagrouprange", 2)
             self.group_range = (low, high)
-        self.settotalmass = number(
-            where, element.get("settotalmass"), "compiler: settotalmass", self.settotalmass
-        )
-        self.boundmass = number(where, element.get("boundmass"), "compiler: boundmass", self.boundmass)
-        self.boundinertia = number(
-            where, element.get("boundinertia"), "compiler: boundinertia", self.boundinertia
-        )
-        balance = element.get("balanceinertia")
+        for key in ("settotalmass", "boundmass", "boundinertia"):
+            setattr(self, key, number(where, element.get(key), f"compiler: {key}", getattr(self, key)))
+        balance = _choice(where, element, "balanceinertia", ("true", "false"))
         if balance is not None:
-            if balance not in ("true", "false"):
-                raise where.error(f"compiler: balanceinertia: {short(balance)!r}: must be true or false")
             self.balanceinertia = balance == "true"
         if element.get("coordinate") == "global":
             raise where.error(
@@ -125,6 +114,16 @@ class Compiler:
 
     def angle(self, value: float) -> float:
         return math.radians(value) if self.degrees else value
+
+
+def _choice(where: Where, element, name: str, choices: tuple[str, ...]) -> str | None:
+    """The ``<compiler>`` attribute ``name`` (None when not written); InputError when it is not
+    one of ``choices``."""
+    value = element.get(name)
+    if value is not None and value not in choices:
+        allowed = f"{', '.join(choices[:-1])} or {choices[-1]}"
+        raise where.error(f"compiler: {name}: {short(value)!r}: must be {allowed}")
+    return value
 
 
 def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel:
@@ -595,17 +594,14 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
             compiler.inertiafromgeom == "auto" and explicit is None
         )
         if use_geoms:
-            pieces = []
-            for geom, counts in geoms.get(link.index, []):
-                if not counts:
-                    continue
-                found = distribution(geom, "exact", f"{model.path}: {link.label}: ", as_mujoco=True)
-                if found is None or not found.measure > 0:
-                    continue
-                density = geom.mass / found.measure if geom.mass is not None else geom.density
-                pieces.append(found.unit.scaled(density))
-            if pieces:
-                props = _sum(pieces)
+            props = geoms_sum(
+                [geom for geom, counts in geoms.get(link.index, []) if counts],
+                lambda geom, measure: geom.density if geom.mass is None else geom.mass / measure,
+                f"{model.path}: {link.label}: ",
+                "exact",
+                as_mujoco=True,
+            )
+            if props is not None:
                 link.inertial = Inertial(props, props.inertia_about_com, element=None, source="geoms")
                 if explicit is not None:
                     model.notes.append(
@@ -630,14 +626,6 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
                         properties=inertial.properties.scaled(scale),
                         written_inertia=inertial.written_inertia * scale,
                     )
-
-
-def _sum(pieces: list[MassProperties]) -> MassProperties:
-    """The geoms' sum; no mass (zero) when their masses add up to nothing or less."""
-    try:
-        return MassProperties.sum(pieces)
-    except ValueError:
-        return MassProperties.zero("link")
 
 
 def _balance(link: Link) -> None:

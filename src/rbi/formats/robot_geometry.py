@@ -72,6 +72,24 @@ class Distribution(NamedTuple):
         return self.unit.center_of_mass
 
 
+def geoms_sum(geoms, density, where: str, mode: str, as_mujoco: bool = False) -> MassProperties | None:
+    """The mass properties of ``geoms`` in the link frame, each piece of geometry with a volume
+    (:func:`distribution` in ``mode``) at the density ``density(geom, measure)`` gives it (kg/m³;
+    ``measure`` its volume, m³); None when none has a volume, zero mass when their masses add up
+    to nothing or less. ``where``: the file and link, for messages."""
+    pieces = []
+    for geom in geoms:
+        found = distribution(geom, mode, where, as_mujoco=as_mujoco)
+        if found is not None and found.measure > 0:
+            pieces.append(found.unit.scaled(density(geom, found.measure)))
+    if not pieces:
+        return None
+    try:
+        return MassProperties.sum(pieces)
+    except ValueError:
+        return MassProperties.zero("link")
+
+
 def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[float, np.ndarray]:
     """Volume (or area, for ``shell``) and the principal moments per unit density of a centred
     primitive in its own axes (cylinder and capsule along z), from :mod:`rbi.core.shapes`'

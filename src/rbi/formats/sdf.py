@@ -50,7 +50,7 @@ from rbi.formats.robot import (
     short,
     unit,
 )
-from rbi.formats.robot_geometry import distribution
+from rbi.formats.robot_geometry import geoms_sum
 from rbi.formats.robot_paths import resolve_mesh
 
 JOINT_KINDS = {
@@ -154,16 +154,26 @@ def _pose(where: Where, element, what: str, own_name, strict: bool = True) -> Po
             f"{what}: relative_to={short(relative_to)!r}: only poses in the link's own or the "
             "model's frame are read"
         )
+    xyz, rpy, quaternion = _written(where, element, what)
+    if quaternion is not None:
+        return Pose(quaternion_matrix(where, quaternion, what), xyz)
+    return Pose(rpy_matrix(rpy) if any(rpy) else np.eye(3), xyz)
+
+
+def _written(where: Where, element, what: str) -> tuple[np.ndarray, list[float] | None, np.ndarray | None]:
+    """A ``<pose>`` as written: its position (m) and its rotation, either roll, pitch, yaw (rad,
+    read in degrees with ``degrees="true"``) or a quaternion ``w x y z``
+    (``rotation_format="quat_xyzw"``, reordered), the other None."""
     if (element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
         values = numbers(where, element.text, what, 7)
         qx, qy, qz, qw = values[3:]
-        return Pose(quaternion_matrix(where, [qw, qx, qy, qz], what), np.array(values[:3], dtype=float))
+        return np.array(values[:3], dtype=float), None, np.array([qw, qx, qy, qz], dtype=float)
     values = numbers(where, element.text, what, 6)
     rpy = values[3:]
     if (element.get("degrees") or "").strip().lower() in ("true", "1"):
         rpy = [math.radians(a) for a in rpy]
     angles(where, rpy, what)
-    return Pose(rpy_matrix(rpy) if any(rpy) else np.eye(3), np.array(values[:3], dtype=float))
+    return np.array(values[:3], dtype=float), rpy, None
 
 
 def _inertial(where: Where, inertial, own_name) -> Inertial:
@@ -172,15 +182,8 @@ def _inertial(where: Where, inertial, own_name) -> Inertial:
     if pose_element is not None and (pose_element.text or "").strip():
         pose = _pose(where, pose_element, "inertial/pose", own_name)
         moved = pose_element.get("relative_to") not in (None, "")
-        if (pose_element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
-            v = numbers(where, pose_element.text, "inertial/pose", 7)
-            quaternion = np.array([v[6], v[3], v[4], v[5]], dtype=float)
-        else:
-            v = numbers(where, pose_element.text, "inertial/pose", 6)
-            angles_ = v[3:]
-            if (pose_element.get("degrees") or "").strip().lower() in ("true", "1"):
-                angles_ = [math.radians(a) for a in angles_]
-            rpy = tuple(float(a) for a in angles_) if any(angles_) else None
+        _, written, quaternion = _written(where, pose_element, "inertial/pose")
+        rpy = tuple(float(a) for a in written) if written is not None and any(written) else None
         if moved:  # written in another frame: the rotation into the link's is not the one written
             rpy, quaternion = None, None
     else:
@@ -219,16 +222,12 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
     geometry at each collision's ``<density>`` (default 1000 kg/m³), scaled to the inertial's
     ``<mass>`` when it gives one."""
 
-    pieces = []
-    for geom in collisions:
-        found = distribution(geom, "auto", f"{where.path}: {where.label}: ")
-        if found is not None and found.measure > 0:
-            density = geom.density if geom.density is not None else SDF_DENSITY
-            pieces.append(found.unit.scaled(density))
-    try:
-        props = MassProperties.sum(pieces)
-    except ValueError:
-        props = MassProperties.zero("link")
+    props = geoms_sum(
+        collisions,
+        lambda geom, _: SDF_DENSITY if geom.density is None else geom.density,
+        f"{where.path}: {where.label}: ",
+        "auto",
+    ) or MassProperties.zero("link")
     if not props.mass > 0:
         raise where.error(
             'inertial auto="true": the link has no collision geometry with a volume to compute it from'
@@ -266,25 +265,26 @@ def _value(where: Where, shape, tag: str, label: str, count: int = 1) -> list[fl
     return numbers(where, child.text, f"{label}/{tag}", count)
 
 
+SHAPES = {
+    "box": (("size", 3),),
+    "cylinder": (("radius", 1), ("length", 1)),
+    "capsule": (("radius", 1), ("length", 1)),
+    "sphere": (("radius", 1),),
+    "ellipsoid": (("radii", 3),),
+}
+"""SDF's primitive shapes: their child elements and how many numbers each holds (m)."""
+
+
 def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
     kind = shape.tag
-    if kind == "box":
-        size = _value(where, shape, "size", label, 3)
-        positive(where, size, f"{label}/size", allow_zero=True)
-        return Geom("box", tuple(size), pose, label)
-    if kind in ("cylinder", "capsule"):
-        (radius,) = _value(where, shape, "radius", label)
-        (length,) = _value(where, shape, "length", label)
-        positive(where, (radius, length), f"{label}: radius and length", allow_zero=True)
-        return Geom(kind, (radius, length), pose, label)
-    if kind == "sphere":
-        (radius,) = _value(where, shape, "radius", label)
-        positive(where, (radius,), f"{label}/radius", allow_zero=True)
-        return Geom("sphere", (radius,), pose, label)
-    if kind == "ellipsoid":
-        radii = _value(where, shape, "radii", label, 3)
-        positive(where, radii, f"{label}/radii", allow_zero=True)
-        return Geom("ellipsoid", tuple(radii), pose, label)
+    fields = SHAPES.get(kind)
+    if fields is not None:
+        size = [value for tag, count in fields for value in _value(where, shape, tag, label, count)]
+        tags = [tag for tag, _ in fields]
+        positive(
+            where, size, f"{label}/{tags[0]}" if len(tags) == 1 else f"{label}: {' and '.join(tags)}", True
+        )
+        return Geom(kind, tuple(size), pose, label)
     if kind == "mesh":
         uri = shape.child("uri")
         if uri is None or not uri.text:
