@@ -42,24 +42,15 @@ PUBLIC = (
 
 CLI_TOOLS = (
     "import_step",
-    "DEFAULT_MAX_STEPS",
-    # the checked file writer, the collector's pause, text for people
+    # the checked file writer, the collector's pause
     "output_target",
     "check_distinct",
     "write_output",
     "collector_paused",
-    "number",
-    "plus_minus",
     # rbi simulate --draws: the motion's spread from the inputs written with ±
     "input_uncertainty",
-    "csv_lines",
-    # what the commands print besides numbers (rbi dynamics, parts, --rotate)
-    "LENGTH_UNITS",
-    "MASS_UNITS",
+    # a turn of --rotate that rounding loses
     "angle_is_kept",
     "turn_lost_to_rounding",
-    # the reference points by name and what --about may be (rbi inertia, principal, dynamics)
-    "reference_name",
-    "reference_choices",
 )
 """What rbi.api offers the command line besides :data:`PUBLIC` (not names of ``rbi``)."""

@@ -26,60 +26,6 @@ QUANTITY_COLUMNS = ("quantity", "unit", "value")
 """The columns of a summary: what, in which unit, how much."""
 
 
-def rich_table(
-    title: str,
-    rows: Sequence[Sequence[str]],
-    columns: Sequence[str] = QUANTITY_COLUMNS,
-    total: Sequence[str] | None = None,
-    left: int | None = None,
-) -> Any:
-    """A :class:`rich.table.Table` of text cells; the first ``left`` columns are aligned left,
-    the others right (default: a summary's values, and every column after the first of other
-    tables). Titles, headers and cells are text, never read as markup."""
-    # not at top level: `rbi inertia --format json` would load rich.table and rich.text too
-    from rich.table import Table
-    from rich.text import Text
-
-    table = Table(title=Text(title))  # Text: a name holding [brackets] is shown, not read as markup
-    left = _left(columns) if left is None else left
-    for i, name in enumerate(columns):
-        table.add_column(Text(name), justify="left" if i < left else "right")
-    for row in rows:
-        table.add_row(*(Text(str(cell)) for cell in row))
-    if total is not None:
-        table.add_section()
-        table.add_row(*(Text(str(cell)) for cell in total))
-    return table
-
-
-def html_table(
-    title: str,
-    rows: Sequence[Sequence[str]],
-    columns: Sequence[str] = QUANTITY_COLUMNS,
-    total: Sequence[str] | None = None,
-    left: int | None = None,
-) -> str:
-    """The same table as HTML (every cell escaped; ``total`` in the table's foot)."""
-    left = _left(columns) if left is None else left
-    align = ["" if i < left else ' style="text-align:right"' for i in range(len(columns))]
-    head = "".join(f"<th>{escape(name)}</th>" for name in columns)
-    body = "".join(
-        "<tr>" + "".join(f"<td{a}>{escape(str(cell))}</td>" for a, cell in zip(align, row)) + "</tr>"
-        for row in rows
-    )
-    foot = (
-        ""
-        if total is None
-        else "<tfoot><tr>"
-        + "".join(f"<td{a}>{escape(str(c))}</td>" for a, c in zip(align, total))
-        + "</tr></tfoot>"
-    )
-    return (
-        f"<table><caption>{escape(title)}</caption><thead><tr>{head}</tr></thead><tbody>{body}</tbody>"
-        f"{foot}</table>"
-    )
-
-
 @dataclass(frozen=True)
 class Rows:
     """One table of text cells, as every face of a result draws it.
@@ -105,6 +51,38 @@ class Rows:
     def quantities(cls, title: str, cells: Iterable[tuple[str, str, str]]) -> Rows:
         """A table of (quantity, unit, value) rows."""
         return cls(title, QUANTITY_COLUMNS, list(cells), left=2, kind="quantities")
+
+    def rich(self) -> Any:
+        """The table as a :class:`rich.table.Table`: the first ``left`` columns aligned left,
+        the others right; title, headers and cells are text, never read as markup."""
+        # not at top level: `rbi inertia --format json` would load rich.table and rich.text too
+        from rich.table import Table
+        from rich.text import Text
+
+        table = Table(title=Text(self.title))  # Text: a name holding [brackets] is not markup
+        for i, name in enumerate(self.columns):
+            table.add_column(Text(name), justify="left" if i < self.left else "right")
+        for row in self.cells:
+            table.add_row(*(Text(str(cell)) for cell in row))
+        if self.total is not None:
+            table.add_section()
+            table.add_row(*(Text(str(cell)) for cell in self.total))
+        return table
+
+    def html(self) -> str:
+        """The same table as HTML (every cell escaped; ``total`` in the table's foot)."""
+        align = ["" if i < self.left else ' style="text-align:right"' for i in range(len(self.columns))]
+        head = "".join(f"<th>{escape(name)}</th>" for name in self.columns)
+        body = "".join(f"<tr>{_html_cells(align, row)}</tr>" for row in self.cells)
+        foot = "" if self.total is None else f"<tfoot><tr>{_html_cells(align, self.total)}</tr></tfoot>"
+        return (
+            f"<table><caption>{escape(self.title)}</caption><thead><tr>{head}</tr></thead>"
+            f"<tbody>{body}</tbody>{foot}</table>"
+        )
+
+
+def _html_cells(align: list[str], cells: Sequence[str]) -> str:
+    return "".join(f"<td{a}>{escape(str(cell))}</td>" for a, cell in zip(align, cells))
 
 
 def plain(value: Any) -> Any:
@@ -260,11 +238,11 @@ class Result:
         # not at top level: `rbi inertia --format json` would load rich.console too
         from rich.console import Group
 
-        tables = [rich_table(r.title, r.cells, r.columns, r.total, r.left) for r in self.rows()]
+        tables = [rows.rich() for rows in self.rows()]
         return tables[0] if len(tables) == 1 else Group(*tables)
 
     def _repr_html_(self) -> str:
-        return "".join(html_table(r.title, r.cells, r.columns, r.total, r.left) for r in self.rows())
+        return "".join(rows.html() for rows in self.rows())
 
     def __str__(self) -> str:
         """The tables as text, 80 columns wide (``print(result)``)."""

@@ -29,8 +29,6 @@ from rbi.memory import collector_paused
 from rbi.names import CLI_TOOLS, PUBLIC
 
 if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads none of them
-    from rbi.api.body import LENGTH_UNITS as LENGTH_UNITS
-    from rbi.api.body import MASS_UNITS as MASS_UNITS
     from rbi.api.body import Body as Body
     from rbi.api.body import load as load
     from rbi.api.body import loads as loads
@@ -65,37 +63,26 @@ if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads 
     from rbi.memory import collector_paused as collector_paused
     from rbi.reprs import Result as Result
     from rbi.robot.audit import AuditReport as AuditReport
-    from rbi.sim.budget import DEFAULT_MAX_STEPS as DEFAULT_MAX_STEPS
     from rbi.spec.checks import Check as Check
     from rbi.spec.from_step import import_step as import_step
-    from rbi.spec.points import reference_choices as reference_choices
-    from rbi.spec.points import reference_name as reference_name
     from rbi.sweeps.plan import Grid as Grid
     from rbi.sweeps.plan import Normal as Normal
     from rbi.sweeps.plan import Uniform as Uniform
-    from rbi.text import csv_lines as csv_lines
-    from rbi.text import number as number
-    from rbi.text import plus_minus as plus_minus
-    from rbi.text import vector_text as vector_text
     from rbi.text import visible as visible
 
 __all__ = list(PUBLIC + CLI_TOOLS)  # a call: griffe reads no names here
 
 _HOME = {
-    **dict.fromkeys(
-        ("load", "loads", "Body", "validate", "spec_schema", "unit_vector", "LENGTH_UNITS", "MASS_UNITS"),
-        "rbi.api.body",
-    ),
+    **dict.fromkeys(("load", "loads", "Body", "validate", "spec_schema", "unit_vector"), "rbi.api.body"),
     **dict.fromkeys(("Principal", "Part", "Momentum", "Dynamics"), "rbi.api.results"),
     **dict.fromkeys(("simulate", "Trajectory", "input_uncertainty"), "rbi.api.runs"),
     **dict.fromkeys(("sweep", "SweepTable"), "rbi.api.sweeps"),
     **dict.fromkeys(("audit", "import_robot", "RobotImport", "ImportedLink"), "rbi.api.robots"),
     **dict.fromkeys(("show", "animate", "Animation"), "rbi.api.pictures"),
     **dict.fromkeys(("SpecError", "ArgumentError"), "rbi.errors"),
-    **dict.fromkeys(("visible", "number", "plus_minus", "csv_lines", "vector_text"), "rbi.text"),
+    "visible": "rbi.text",
     **dict.fromkeys(("output_target", "check_distinct", "write_output"), "rbi.files.output"),
     **dict.fromkeys(("angle_is_kept", "turn_lost_to_rounding"), "rbi.core.rotation"),
-    **dict.fromkeys(("reference_name", "reference_choices"), "rbi.spec.points"),
     **dict.fromkeys(("Grid", "Normal", "Uniform"), "rbi.sweeps.plan"),
     "outside_paths_allowed": "rbi.formats.paths",
     "MassProperties": "rbi.core.mass",
@@ -104,7 +91,6 @@ _HOME = {
     "collector_paused": "rbi.memory",
     "AuditReport": "rbi.robot.audit",
     "import_step": "rbi.spec.from_step",  # read a STEP file as `rbi import FILE.step` does
-    "DEFAULT_MAX_STEPS": "rbi.sim.budget",  # most integration steps of a run unless max_steps says otherwise
 }
 """Where each name of rbi.api lives: its module is imported when the name is first asked for,
 so `rbi inertia` loads neither the audit's modules nor the sweep's, and `import rbi.api` alone

@@ -443,15 +443,10 @@ class Body(TableRepr):
             angle_deg=angle_between_deg(h, w),
             kinetic_energy=energy,
             place=About(self, _label(about), point),
-            uncertainty=self._uncertain_momentum(point, w, None if velocity is None else v_com),
+            uncertainty=momentum_uncertainty(self._loaded, point, w, None if velocity is None else v_com)
+            if self._uncertain
+            else None,
         )
-
-    def _uncertain_momentum(
-        self, point: np.ndarray, w: np.ndarray, v: np.ndarray | None
-    ) -> dict[str, Any] | None:
-        """`momentum`'s ``uncertainty`` (:func:`rbi.spec.uncertain.momentum_uncertainty`), or
-        None without ±."""
-        return momentum_uncertainty(self._loaded, point, w, v) if self._uncertain else None
 
     @property
     def _uncertain(self) -> bool:

@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from rbi.api.results import named
 from rbi.reprs import Results, Rows
 from rbi.spec.checks import Check
 from rbi.text import number
@@ -55,11 +56,7 @@ class Checks(Results[Check]):
         return f"<rbi.Checks {self.passed} passed, {self.failed} failed>"
 
     def to_dict(self) -> dict[str, Any]:
-        body = self._body
-        return {
-            "name": body.name,
-            "units": body.units,
-            "warnings": list(body.warnings),
+        return named(self._body) | {
             "ok": self.ok,
             "passed": self.passed,
             "failed": self.failed,

@@ -19,11 +19,7 @@ import numpy as np
 from rbi.core.mass import MassProperties
 from rbi.reprs import Result, Results, Rows
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
-from rbi.text import number, plus_minus, vector_text
-
-NOISE_RELATIVE = 1e-12
-"""An entry smaller than this fraction of the largest entry of its matrix or vector (or of the
-body's size, for a position) is rounding noise and prints as 0 in tables."""
+from rbi.text import NOISE_RELATIVE, number, plus_minus, vector_text
 
 PRODUCT_SIGN_TITLES = {"tensor": "products −∫xy dm", "cad": "CAD products +∫xy dm"}
 """Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
@@ -67,7 +63,7 @@ def matrix_digits(matrix: Any) -> tuple[float, str]:
 
 def shown(values: Any, scale: float = 0.0, digits: int = 6) -> str:
     """A vector for a table: ``[x, y, z]`` without rounding noise (see :func:`without_noise`)."""
-    return vector_text(without_noise(values, scale), digits)
+    return vector_text(values, digits, scale=scale)
 
 
 def body_size(props: MassProperties) -> float:
@@ -78,6 +74,12 @@ def body_size(props: MassProperties) -> float:
     except (ValueError, ZeroDivisionError, OverflowError):
         return 0.0
     return size if math.isfinite(size) else 0.0
+
+
+def named(body: Any) -> dict[str, Any]:
+    """The keys a result of a body's ``to_dict()`` starts with: its ``name``, ``units`` and
+    ``warnings``."""
+    return {"name": body.name, "units": body.units, "warnings": list(body.warnings)}
 
 
 @dataclass(frozen=True, repr=False)
@@ -365,10 +367,7 @@ class Dynamics(Result):
 
     def to_dict(self) -> dict[str, Any]:
         body = self.place.body if self.place else None
-        return {
-            "name": body.name if body else None,
-            "units": body.units if body else {},
-            "warnings": list(body.warnings) if body else [],
+        return (named(body) if body else {"name": None, "units": {}, "warnings": []}) | {
             "mode": self.mode,
             "mass": body.mass if body else None,
             "center_of_mass": body.center_of_mass if body else None,
@@ -507,17 +506,18 @@ class Parts(Results[Part]):
 
     def to_dict(self) -> dict[str, Any]:
         body = self._body
-        return {
-            "name": body.name,
-            "units": body.units,
-            "warnings": list(body.warnings),
-            "mass": body.mass,
-            "center_of_mass": body.center_of_mass,
-            "volume": self.volume,
-            "mean_density": self.mean_density,
-            "principal_moments": self.principal_moments,
-            "parts": self.part_rows(),
-        } | self._uncertainty()
+        return (
+            named(body)
+            | {
+                "mass": body.mass,
+                "center_of_mass": body.center_of_mass,
+                "volume": self.volume,
+                "mean_density": self.mean_density,
+                "principal_moments": self.principal_moments,
+                "parts": self.part_rows(),
+            }
+            | self._uncertainty()
+        )
 
     def _uncertainty(self) -> dict[str, Any]:
         """``{"uncertainty": the body's mass, centre of mass and principal moments'}`` for a spec
