@@ -22,7 +22,7 @@ from rbi.bench import Progress
 from rbi.bench.timing import measure
 from rbi.core.inertia import parallel_axis, parallel_axis_to_com
 from rbi.formats import mesh_file, step
-from rbi.formats.step import _ocp, _quiet, step_triangles
+from rbi.formats.step import _ocp, step_triangles
 from rbi.spec.load import load_body
 from rbi.spec.materials import density_in_units
 from rbi.spec.volumes import part_volume
@@ -85,12 +85,11 @@ def write_plate_step(path: Path) -> None:
     plate = BRepAlgoAPI_Cut(
         BRepPrimAPI_MakeBox(gp_Pnt(-a / 2, -b / 2, -c / 2), a, b, c).Shape(), holes
     ).Shape()
-    with _quiet():
-        writer = STEPControl_Writer()
-        Interface_Static.SetCVal_s("write.step.unit", "MM")
-        writer.Transfer(plate, STEPControl_AsIs)
-        if int(writer.Write(str(path))) != 1:
-            raise RuntimeError("OpenCascade could not write the plate's STEP file")
+    writer = STEPControl_Writer()
+    Interface_Static.SetCVal_s("write.step.unit", "MM")
+    writer.Transfer(plate, STEPControl_AsIs)
+    if int(writer.Write(str(path))) != 1:
+        raise RuntimeError("OpenCascade could not write the plate's STEP file")
 
 
 def _errors(props, volume_mm3: float, closed) -> dict:

@@ -386,35 +386,6 @@ def _ocp() -> SimpleNamespace:
     return SimpleNamespace(**names)
 
 
-@contextlib.contextmanager
-def _quiet():
-    """Standard output and error sent to /dev/null at the file-descriptor level while
-    OpenCascade runs: its STEP parser reports some problems with printf."""
-
-    for stream in (sys.stdout, sys.stderr):
-        with contextlib.suppress(Exception):
-            stream.flush()
-    saved = []
-    try:
-        devnull = os.open(os.devnull, os.O_WRONLY)
-    except OSError:
-        yield
-        return
-    try:
-        for fd in (1, 2):
-            try:
-                saved.append((fd, os.dup(fd)))
-                os.dup2(devnull, fd)
-            except OSError:
-                pass
-        yield
-    finally:
-        for fd, copy in saved:
-            os.dup2(copy, fd)
-            os.close(copy)
-        os.close(devnull)
-
-
 def _transfer(ocp, path: Path, unit_metres: float):
     """The XCAF document of the file, read in the file's own length unit (``unit_metres``)."""
     reader = ocp.STEPCAFControl_Reader()
@@ -505,12 +476,8 @@ def _no_solid(ocp, document) -> str:
     shells = faces = 0
     for label in _free_labels(ocp, document):
         shape = ocp.XCAFDoc_ShapeTool.GetShape_s(label)
-        for kind in (ocp.TopAbs_SHELL, ocp.TopAbs_FACE):
-            explorer = ocp.TopExp_Explorer(shape, kind)
-            while explorer.More():
-                shells += kind == ocp.TopAbs_SHELL
-                faces += kind == ocp.TopAbs_FACE
-                explorer.Next()
+        shells += len(_each(ocp, shape, ocp.TopAbs_SHELL, ocp.TopoDS.Shell))
+        faces += len(_each(ocp, shape, ocp.TopAbs_FACE, ocp.TopoDS.Face))
     if shells or faces:
         held = f"{shells} shell{'s' * (shells != 1)}" if shells else f"{faces} face{'s' * (faces != 1)}"
         return (
@@ -544,25 +511,26 @@ def _walk(ocp, label, location, instance_name: str | None, found: list, depth: i
         return
     entry = ocp.TCollection_AsciiString()
     ocp.TDF_Tool.Entry_s(label, entry)
-    solids = []
-    explorer = ocp.TopExp_Explorer(shape_tool.GetShape_s(label), ocp.TopAbs_SOLID)
-    while explorer.More():
-        solids.append(ocp.TopoDS.Solid(explorer.Current()))
-        explorer.Next()
+    solids = _each(ocp, shape_tool.GetShape_s(label), ocp.TopAbs_SOLID, ocp.TopoDS.Solid)
     if len(found) + len(solids) > MAX_STEP_SOLIDS:
         raise ValueError(
             f"holds more than {MAX_STEP_SOLIDS:,} solids (instances of parts in its product tree); "
             f"rbi reads at most {MAX_STEP_SOLIDS:,}"
         )
     for k, solid in enumerate(solids):
-        found.append(
-            (
-                name if len(solids) == 1 or name is None else f"{name}[{k}]",
-                (entry.ToCString(), k),
-                solid,
-                location,
-            )
-        )
+        label_k = name if len(solids) == 1 or name is None else f"{name}[{k}]"
+        found.append((label_k, (entry.ToCString(), k), solid, location))
+
+
+def _each(ocp, shape, kind, cast) -> list:
+    """The sub-shapes of ``kind`` of ``shape`` in OpenCascade's order, each ``cast`` (as
+    ``TopoDS.Face``) as it is met."""
+    explorer = ocp.TopExp_Explorer(shape, kind)
+    found = []
+    while explorer.More():
+        found.append(cast(explorer.Current()))
+        explorer.Next()
+    return found
 
 
 def _unique(names: list[str]) -> list[str]:
@@ -622,12 +590,8 @@ def _analytic(ocp, solid) -> bool:
     """Is every face of the solid a plane, cylinder, cone, sphere or torus (on which the Gauss
     rule is exact)?"""
     kinds = (ocp.GeomAbs_Plane, ocp.GeomAbs_Cylinder, ocp.GeomAbs_Cone, ocp.GeomAbs_Sphere, ocp.GeomAbs_Torus)
-    explorer = ocp.TopExp_Explorer(solid, ocp.TopAbs_FACE)
-    while explorer.More():
-        if ocp.BRepAdaptor_Surface(ocp.TopoDS.Face(explorer.Current())).GetType() not in kinds:
-            return False
-        explorer.Next()
-    return True
+    faces = _each(ocp, solid, ocp.TopAbs_FACE, ocp.TopoDS.Face)
+    return all(ocp.BRepAdaptor_Surface(face).GetType() in kinds for face in faces)
 
 
 def _integrate(ocp, solid, index: int, name: str, eps: float) -> tuple[MassProperties, float]:
@@ -680,10 +644,7 @@ def _tessellate(ocp, solid, deflection: float, angle: float) -> tuple[np.ndarray
     ocp.BRepTools.Clean_s(solid)  # a triangulation made earlier at other settings
     ocp.BRepMesh_IncrementalMesh(solid, parameters)
     vertices, faces, offset = [], [], 0
-    explorer = ocp.TopExp_Explorer(solid, ocp.TopAbs_FACE)
-    while explorer.More():
-        face = ocp.TopoDS.Face(explorer.Current())
-        explorer.Next()
+    for face in _each(ocp, solid, ocp.TopAbs_FACE, ocp.TopoDS.Face):
         location = ocp.TopLoc_Location()
         mesh = ocp.BRep_Tool.Triangulation_s(face, location)
         if mesh is None:
