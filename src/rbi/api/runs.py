@@ -112,8 +112,7 @@ class Trajectory(SimulationRun, Result):
         body and settings) in its summary, beside the error estimate: ``rbi simulate --draws``."""
         if self.body is None or self.summary is None or self.settings is None:
             raise ArgumentError("body", "needs the Body of the run: a Trajectory from rbi.simulate")
-        prepared = prepare_run(loaded_body(self.body, "body"), self.settings)
-        drawn = spread(prepared, prepared.settings.samples, draws, seed)
+        drawn = input_uncertainty(self.body, draws=draws, seed=seed, **vars(self.settings))
         return replace(self, summary=replace(self.summary, input_uncertainty=drawn))
 
     def notes(self) -> list[str]:

@@ -344,10 +344,10 @@ def _free_stability(scene: Scene, omega0) -> dict[str, Any]:
     # share of the kinetic energy carried by each principal axis
     share = h * h / moments
     nearest = int(np.argmax(share))
-    equal_low = moments[1] - moments[0] <= AXISYMMETRY_RTOL * scale
-    equal_high = moments[2] - moments[1] <= AXISYMMETRY_RTOL * scale
     result = {"kind": "free body", "principal_moments": moments, "nearest_axis": nearest + 1}
-    if equal_low or equal_high:
+    if (
+        symmetry_axis(scene) is not None
+    ):  # two equal moments (a free body's centre of mass is its fixed point)
         result["verdict"] = (
             "axisymmetric body: ω precesses steadily about the symmetry axis, the motion is stable"
         )
