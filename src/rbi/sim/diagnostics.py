@@ -345,9 +345,8 @@ def _free_stability(scene: Scene, omega0) -> dict[str, Any]:
     share = h * h / moments
     nearest = int(np.argmax(share))
     result = {"kind": "free body", "principal_moments": moments, "nearest_axis": nearest + 1}
-    if (
-        symmetry_axis(scene) is not None
-    ):  # two equal moments (a free body's centre of mass is its fixed point)
+    # two equal moments: symmetry_axis's test (a free body's centre of mass is its fixed point)
+    if symmetry_axis(scene) is not None:
         result["verdict"] = (
             "axisymmetric body: ω precesses steadily about the symmetry axis, the motion is stable"
         )
