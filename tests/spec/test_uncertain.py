@@ -321,3 +321,25 @@ def test_tolerance_limits_are_drawn_uniform():
     assert result["u"] == pytest.approx(0.3 / math.sqrt(3), rel=0.01)
     low, high = result["interval"]  # 95 % of a uniform on [1.7, 2.3]: width 0.57, inside the limits
     assert 1.7 <= low and high <= 2.3 and high - low == pytest.approx(0.57, abs=0.005)
+
+
+def test_a_spec_whose_first_part_writes_a_plus_minus_is_validated_once(monkeypatch):
+    """Read out of its ± first (validating it as written would fail on each ±, slowly); a ±
+    only in a later part still reads, through the failed first validation."""
+    from rbi.spec import load
+
+    calls, model = [], load.BodySpec
+
+    class Counted:
+        @staticmethod
+        def model_validate(raw):
+            calls.append(raw)
+            return model.model_validate(raw)
+
+    monkeypatch.setattr(load, "BodySpec", Counted)
+    first = [{"shape": "point", "mass": "2 ± 0.1", "position": [0, 0, 0]}]
+    first.append({"shape": "point", "mass": 1, "position": [1, 0, 0]})
+    for parts, validations in ((first, 1), (first[::-1], 2)):
+        calls.clear()
+        assert linear(body(parts)).uncertainty[0] == pytest.approx(0.1)
+        assert len(calls) == validations

@@ -20,7 +20,7 @@ from rbi.spec.errors import InputError, describe_error, format_location, part_la
 from rbi.spec.expect import Expect
 from rbi.spec.models import SHAPE_MODELS, AssemblyPart, BodySpec
 from rbi.spec.translate import body_from_spec
-from rbi.spec.uncertain import named_plus_minus, split_uncertain, with_sub_assemblies
+from rbi.spec.uncertain import first_part_uncertain, named_plus_minus, split_uncertain, with_sub_assemblies
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
 if TYPE_CHECKING:
@@ -271,12 +271,13 @@ def _validated(path: str, raw: Any) -> tuple[Any, list[str], tuple[str | None, s
     if not isinstance(raw, dict):
         message = f"{path}: must be a mapping with a `parts` list at the top level (got {type(raw).__name__})"
         return None, [message], (None, None)
+    spec, failed = None, None
     try:
-        with collector_paused():
-            spec = BodySpec.model_validate(raw)
-        if not named_plus_minus(spec):  # a name is text: a ± there reads without error
-            return spec, [], (None, None)
-        failed = None
+        if not first_part_uncertain(raw):  # else read out of its ± first: each ± would fail here, slowly
+            with collector_paused():
+                spec = BodySpec.model_validate(raw)
+            if not named_plus_minus(spec):  # a name is text: a ± there reads without error
+                return spec, [], (None, None)
     except ValidationError as exc:
         failed = exc
     try:

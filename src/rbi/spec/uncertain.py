@@ -129,6 +129,15 @@ def _read_out(node: Any, steps: tuple[Any, ...], found: list) -> Any:
     return node
 
 
+def first_part_uncertain(raw: Any) -> bool:
+    """Whether the first part of the parsed spec ``raw`` writes a number with ± (a spec is then
+    read out of its ± before it is validated; checked on one part only, at no cost to others)."""
+    parts, found = raw.get("parts") if isinstance(raw, dict) else None, []
+    if isinstance(parts, list) and parts and isinstance(parts[0], dict):
+        _read_out(parts[0], (0,), found)
+    return bool(found)
+
+
 def named_plus_minus(spec: models.BodySpec) -> bool:
     """Whether a part's name holds a ± (which :func:`split_uncertain` refuses)."""
     return any(part.name and ("±" in part.name or "+-" in part.name) for part in spec.parts)
