@@ -454,8 +454,6 @@ CLI_NAMES_LEFT: set[tuple[str, str]] = {
     ("import_command.py", "output_target"),
     ("import_command.py", "rbi.api"),
     ("import_command.py", "write_output"),
-    ("option_values.py", "angle_is_kept"),
-    ("option_values.py", "turn_lost_to_rounding"),
     ("uncertainty_command.py", "rbi.api"),
 }
 """What cli/ still imports that is not a name of ``rbi.__all__`` (rbi.names.CLI_TOOLS, the

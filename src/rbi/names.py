@@ -49,8 +49,5 @@ CLI_TOOLS = (
     "collector_paused",
     # rbi simulate --draws: the motion's spread from the inputs written with ±
     "input_uncertainty",
-    # a turn of --rotate that rounding loses
-    "angle_is_kept",
-    "turn_lost_to_rounding",
 )
 """What rbi.api offers the command line besides :data:`PUBLIC` (not names of ``rbi``)."""

@@ -52,8 +52,6 @@ if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads 
     from rbi.api.sweeps import SweepTable as SweepTable
     from rbi.api.sweeps import sweep as sweep
     from rbi.core.mass import MassProperties as MassProperties
-    from rbi.core.rotation import angle_is_kept as angle_is_kept
-    from rbi.core.rotation import turn_lost_to_rounding as turn_lost_to_rounding
     from rbi.errors import ArgumentError as ArgumentError
     from rbi.errors import SpecError as SpecError
     from rbi.files.output import check_distinct as check_distinct
@@ -82,7 +80,6 @@ _HOME = {
     **dict.fromkeys(("SpecError", "ArgumentError"), "rbi.errors"),
     "visible": "rbi.text",
     **dict.fromkeys(("output_target", "check_distinct", "write_output"), "rbi.files.output"),
-    **dict.fromkeys(("angle_is_kept", "turn_lost_to_rounding"), "rbi.core.rotation"),
     **dict.fromkeys(("Grid", "Normal", "Uniform"), "rbi.sweeps.plan"),
     "outside_paths_allowed": "rbi.formats.paths",
     "MassProperties": "rbi.core.mass",

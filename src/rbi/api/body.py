@@ -366,7 +366,7 @@ class Body(TableRepr):
             About(self, _label(about), self.point(about)),
             matrix,
             "world (rotated)" if turns else "body",
-            tuple(f"{a}:{np.degrees(np.radians(d)):g}" for a, d in turns),
+            tuple(f"{a}:{np.degrees(np.radians(float(d))):g}" for a, d in turns),
             products,
             direction,
             None if direction is None else self.moment_about_axis(direction, about, turns or None),
@@ -725,8 +725,8 @@ def _rotation(axes: Any) -> np.ndarray:
     turns = []
     for turn in axes:
         try:
-            axis, degrees = turn
-            axis, degrees = str(axis).strip().lower(), float(degrees)
+            axis, given = turn
+            axis, degrees = str(axis).strip().lower(), float(given)
         except (TypeError, ValueError, OverflowError):
             axis, degrees = "", float("nan")
         if axis not in ("x", "y", "z") or not np.isfinite(degrees):
@@ -735,7 +735,10 @@ def _rotation(axes: Any) -> np.ndarray:
                 f"expected (axis, degrees) pairs with axis 'x', 'y' or 'z', e.g. [('y', 30)], got {literal(turn)}",
             )
         if not angle_is_kept(degrees):
-            raise ArgumentError("axes", turn_lost_to_rounding(literal(degrees)))
+            # the angle as written when it is text (the CLI's --rotate y:1e300)
+            raise ArgumentError(
+                "axes", turn_lost_to_rounding(literal(given, quoted=not isinstance(given, str)))
+            )
         turns.append((axis, np.radians(degrees)))
     return compose_world_rotations(turns)
 

@@ -136,11 +136,9 @@ def parse_about(text: str, body) -> tuple[str, list[float]]:
         ) from None
 
 
-def parse_rotation(text: str) -> tuple[str, float]:
-    """``"y:30"`` -> ``("y", 30.0)``: a turn as `rbi.Body.inertia`'s ``axes`` takes it."""
-    # not at top level: `rbi --help` would load rbi.api too
-    from rbi.api import angle_is_kept, turn_lost_to_rounding
-
+def parse_rotation(text: str) -> tuple[str, str]:
+    """``"y:30"`` -> ``("y", "30")``: a turn as `rbi.Body.inertia`'s ``axes`` takes it, the
+    angle as written (the API names it so when rounding would lose the turn)."""
     axis, sep, angle = text.partition(":")
     axis = axis.strip().lower()
     try:
@@ -149,9 +147,7 @@ def parse_rotation(text: str) -> tuple[str, float]:
         degrees = math.nan
     if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
         raise SpecError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
-    if not angle_is_kept(degrees):
-        raise SpecError(f"--rotate: {turn_lost_to_rounding(angle.strip())}")
-    return axis, degrees
+    return axis, angle.strip()
 
 
 def parse_units(text: str) -> tuple[str, str]:
