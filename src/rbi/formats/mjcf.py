@@ -149,7 +149,7 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     for world in root.all("worldbody"):
         reader.children(world, Pose.identity(), None, "main")
     refuse_shared_keys(path, model.links)
-    check_unique_joint_names(model, "MuJoCo's compiler")
+    check_unique_joint_names(path, model.links, "MuJoCo's compiler")
     _actuator_limits(model, root, defaults)
     model.options["gravity"] = _gravity(path, root)
     model.options["boundinertia"] = compiler.boundinertia

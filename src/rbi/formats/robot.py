@@ -449,10 +449,6 @@ class RobotModel:
             self._links = [] if self.columns is None else self.columns.links()
         return self._links
 
-    @links.setter
-    def links(self, value: list[Link]) -> None:
-        self._links = value
-
     @property
     def in_columns(self) -> LinkColumns | None:
         """:attr:`columns` while they are all there is of the links (no :class:`Link` made yet,
@@ -628,18 +624,18 @@ def short(text: Any, limit: int = 40) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-def check_unique_joint_names(model: RobotModel, reader: str) -> None:
-    """InputError naming the first joint name two joints of the model share (``reader``: the
+def check_unique_joint_names(path: str, links: list[Link], reader: str) -> None:
+    """InputError naming the first joint name two joints of ``links`` share (``reader``: the
     program that refuses such a file, e.g. urdfdom or MuJoCo's compiler), so that a joint named
     in ``--joints`` and in the report is one joint."""
     seen: dict[str, Link] = {}
-    for link in model.links:
+    for link in links:
         for motion in link.motions:
             if not motion.name:
                 continue
             if motion.name in seen:
                 raise InputError(
-                    f"{model.path}: {link.label}: duplicate joint name {short(motion.name)!r} (also a joint of "
+                    f"{path}: {link.label}: duplicate joint name {short(motion.name)!r} (also a joint of "
                     f"{seen[motion.name].label}); every joint needs its own name ({reader} refuses the file)"
                 )
             seen[motion.name] = link

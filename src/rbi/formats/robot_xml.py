@@ -102,10 +102,6 @@ class XmlElement:
     def text(self) -> str:
         return "".join(self._pieces).strip() if self._pieces else ""
 
-    @text.setter
-    def text(self, value: str) -> None:
-        self._pieces = [value]
-
     @property
     def end(self) -> int:
         """Index just past the element's last ``>`` in the document text."""

@@ -601,12 +601,11 @@ def _one_tree(parents: list[int]) -> list[int] | None:
 def _refuse_tree(path: str, names: list[str], parents: list[int], joint_names: list[str]) -> None:
     """InputError for joints that share a name, links no joint joins to the one root, or
     joints that form a loop (``parents``: each link's parent row, -1 for none)."""
-    model = RobotModel(path, "urdf", None)
-    model.links = [
+    links = [
         Link(row, name, motions=[Motion(joint, "", None, None)])
-        for row, (name, joint) in enumerate(zip(names, joint_names))
+        for row, name, joint in zip(range(len(names)), names, joint_names)
     ]
-    check_unique_joint_names(model, "urdfdom")
+    check_unique_joint_names(path, links, "urdfdom")
     roots = [row for row, parent in enumerate(parents) if parent < 0]
     if len(roots) > 1:
         shown = ", ".join(repr(short(names[row])) for row in roots[:4]) + (", ..." if len(roots) > 4 else "")
@@ -614,7 +613,7 @@ def _refuse_tree(path: str, names: list[str], parents: list[int], joint_names: l
             f"{path}: {len(roots)} root links ({shown}): no joint joins them; a URDF has one root "
             "link that every other hangs from (urdfdom and pybullet refuse it)"
         )
-    for row, link in enumerate(model.links):  # a loop: the first link whose chain of parents runs into it
+    for row, link in enumerate(links):  # a loop: the first link whose chain of parents runs into it
         seen, at = set(), row
         while parents[at] >= 0:
             if at in seen:
