@@ -4,6 +4,8 @@ audit flags, and a long chain is read in one pass (no walk to the root per link)
 
 from __future__ import annotations
 
+import sys
+
 import numpy as np
 import pytest
 
@@ -43,11 +45,13 @@ def test_the_sum_of_one_part_is_the_general_sum_bit_for_bit():
 
 
 def test_moments_without_axes_are_the_principal_moments_bit_for_bit():
-    from rbi.robot.audit import _moments_of
+    from rbi.robot.audit import _stack_moments
 
     for i in range(3000):
         properties = MassProperties(1.0, np.zeros(3), _symmetric(i))
-        assert _same(np.array(_moments_of(properties)), properties.moments + 0.0)
+        assert _same(
+            np.array(_stack_moments(properties.inertia_about_com[None])[0]), properties.moments + 0.0
+        )
 
 
 def test_the_cross_and_dot_products_are_numpys_bit_for_bit():
@@ -151,15 +155,17 @@ def _hostile_inertias(n: int) -> list[tuple[float, np.ndarray]]:
         (False, True, None, True),
     ],
 )
-def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, shapes, density, careful):
+def test_the_bulk_audit_flags_what_the_one_link_audit_flags(
+    tmp_path, monkeypatch, chain, shapes, density, careful
+):
     """Whichever form the audit reads the model in (``careful``: its links, made first and laid
     into the audit's arrays; else the reader's columns, as they are): each link's flags and
-    numbers are those of the careful path, one link at a time (measured, then flagged)."""
+    numbers are those of the careful path, every link's geometry measured one link at a time
+    (none of it on the stacks of links that are one solid primitive)."""
     from rbi.formats import robot_xml
-    from rbi.formats.robot import LinkColumns
     from rbi.formats.robot_files import read_robot
     from rbi.formats.urdf import read_urdf
-    from rbi.robot.audit import _carried, _flags, _measured_link, audit_model
+    from rbi.robot.audit import _one_primitive, audit_model
 
     path = tmp_path / "r.urdf"
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
@@ -168,34 +174,27 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(tmp_path, chain, sha
         assert model.links  # made now: the audit reads them, not the columns
     assert (model.in_columns is None) == careful
     bulk = audit_model(model, density=density)
-    carried = _carried(LinkColumns.of_links(model.path, model.links))
+    monkeypatch.setattr(sys.modules[_one_primitive.__module__], "_one_primitive", lambda *args: None)
+    one_by_one = audit_model(model, density=density)
     codes = set()
-    for link, found in zip(model.links, bulk.links):
-        one = _measured_link(model, link, "collision", density, "auto", False, None)
-        one.flags += _flags(model, link, one, carried[link.index])
+    for found, one in zip(bulk.links, one_by_one.links, strict=True):
         assert [f.as_dict() for f in found.flags] == [f.as_dict() for f in one.flags]
         assert _same(found.ratios, one.ratios) and found.com_offset == one.com_offset
-        _assert_same_geometry(found.geometry, one.geometry)
+        _assert_same_geometry(found, one)
         codes |= {f"{f.level} {f.code}" for f in found.flags}
+    for name in ("com", "low", "high"):  # the centroid where the geometry has no mass, its bounds
+        assert _same(getattr(bulk.audited, name), getattr(one_by_one.audited, name)), name
     assert {"error unphysical", "error placeholder", "warning mismatch", "error mismatch"} <= codes
 
 
 def _assert_same_geometry(bulk, one) -> None:
     """The geometry the bulk audit measured is, bit for bit, what the one-link audit measures."""
-    assert (bulk is None) == (one is None)
-    if one is None:
-        return
-    assert (bulk.properties is None) == (one.properties is None)
-    for name in ("centroid", "low", "high", "center_of_mass"):
-        assert _same(getattr(bulk, name), getattr(one, name)), name
-    assert (bulk.volume, bulk.implied_density, bulk.source, bulk.mass) == (
-        one.volume,
-        one.implied_density,
-        one.source,
-        one.mass,
-    )
-    if one.properties is not None:
-        assert _same(bulk.inertia_about_com, one.inertia_about_com)
+    assert (bulk.source, bulk.volume, bulk.implied_density) == (one.source, one.volume, one.implied_density)
+    assert (bulk.geometry is None) == (one.geometry is None)
+    if one.geometry is not None:
+        assert bulk.geometry.mass == one.geometry.mass
+        assert _same(bulk.geometry.center_of_mass, one.geometry.center_of_mass)
+        assert _same(bulk.geometry.inertia_about_com, one.geometry.inertia_about_com)
 
 
 def test_the_totals_and_torques_of_a_chain_match_a_link_by_link_sum(tmp_path):

@@ -6,7 +6,7 @@ import difflib
 import os
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import Any
 
 import numpy as np
 
@@ -19,13 +19,11 @@ from rbi.formats.robot_files import link_problems, link_spec, read_robot
 from rbi.formats.robot_paths import parse_package_paths
 from rbi.reprs import Result, Rows, plain
 from rbi.robot import audit as run_audit
+from rbi.robot.audit import AuditReport, AuditSettings
 from rbi.robot.fix import check_out_not_read
 from rbi.robot.specs import robot_spec
 from rbi.spec.yaml_writer import comment, dump
 from rbi.text import number, vector_text
-
-if TYPE_CHECKING:  # served by rbi.api's __getattr__ on first use (the audit's modules load then)
-    from rbi.robot.audit import AuditReport
 
 
 def audit(
@@ -77,9 +75,11 @@ def audit(
     path = path_text(robot_file)
     target = None if out is None else checked_output(out, ("urdf", "sdf", "xml"), path, "out")
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
-    settings: dict[str, Any] = dict(package_paths=package_paths, geometry=geometry, material=material)
-    settings |= dict(density=density, mesh_inertia=mesh_inertia, joints=joints, mesh_repair=mesh_repair)
-    report = run_audit(path, fix=fix, allow_outside_paths=allowed, **settings)
+    chosen: dict[str, Any] = dict(
+        package_paths=package_paths, geometry=geometry, density=density, material=material
+    )
+    chosen |= dict(mesh_inertia=mesh_inertia, joints=joints, fix=fix, mesh_repair=mesh_repair)
+    report = run_audit(path, AuditSettings.of(allow_outside_paths=allowed, **chosen))
     if target is not None:
         _write_fixed(target, report)
     return report
@@ -88,8 +88,6 @@ def audit(
 def _write_fixed(target: Any, report: AuditReport) -> None:
     """The fixed copy written at ``target`` (never a file the robot reads: an include, a mesh
     or the robot file itself), and the report's fix told where."""
-    # not at top level: `rbi inertia` would load rbi.robot.fix too
-
     check_out_not_read(target.path, report.model)
     write_output(target, report.fix.content)
     report.fix.out = target.given

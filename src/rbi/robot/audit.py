@@ -12,14 +12,18 @@ over the geometry's size (its bounding box's diagonal). The flags (``unphysical`
 are tabled in docs/audit.md ("What it checks").
 
 Every model is audited one way, on arrays of its links (:class:`~rbi.formats.robot.LinkColumns`:
-a URDF's reader gives them as columns, the SDF and MJCF readers' links are laid into them):
-screens on stacks clear the links with nothing to flag, and only the others are audited one by one.
+a URDF's reader gives them as columns, the SDF and MJCF readers' links are laid into them), into
+one table (:class:`AuditedLinks`): the geometry measured (the links that are one solid primitive
+on stacks, the others one by one), compared with the declared inertials on stacks, and flagged
+where screens on those stacks leave something to say. One link's audit is a row of that table
+(:class:`LinkAudit`).
 """
 
 from __future__ import annotations
 
 import math
 import sys
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
@@ -32,8 +36,11 @@ from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import SOLID_KINDS, Link, LinkColumns, RobotModel, stacked
 from rbi.formats.robot_files import inertia_problem_text
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
+from rbi.formats.robot_paths import parse_package_paths
 from rbi.reprs import Result, Rows, json_ready, plain
-from rbi.robot.tree import placement, stack_apply, totals
+from rbi.robot.statics import joint_torques
+from rbi.robot.tree import parse_joint_values, placement, stack_apply, totals
+from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 from rbi.text import number, vector_text
 
 ERROR_RATIO = 10.0
@@ -71,61 +78,63 @@ class Flag:
 
 
 @dataclass(frozen=True)
-class GeometryProps:
-    """What the link's geometry gives it: ``properties`` (its mass properties in the link frame
-    at the declared mass, else at the given density; None when the link declares no mass and no
-    density was given: a shape with no mass), ``centroid`` (m, link frame), ``volume`` (m³; None
-    when it is all shells), ``implied_density`` (kg/m³), its bounds ``low``/``high`` (m, link
-    frame) and ``source`` (``collision`` or ``visual``)."""
+class AuditSettings:
+    """How a robot file is audited, checked once (:meth:`of`) and passed down: ``package_paths``
+    (NAME → folders, for ``package://NAME/``), ``geometry`` (one of :data:`GEOMETRY_CHOICES`),
+    ``density`` (kg/m³ for the links that declare no mass: the one given, or the material's),
+    ``mesh_inertia`` (auto, exact, convex or shell), ``joints`` (name → coordinate, rad or m, for
+    the totals), ``fix`` (plan the fixed copy), ``allow_outside_paths`` and ``mesh_repair``."""
 
-    properties: MassProperties | None
-    centroid: np.ndarray
-    volume: float | None
-    implied_density: float | None
-    low: np.ndarray
-    high: np.ndarray
-    source: str = "collision"
+    package_paths: dict[str, Any] = field(default_factory=dict)
+    geometry: str = "collision"
+    density: float | None = None
+    mesh_inertia: str = "auto"
+    joints: dict[str, float] = field(default_factory=dict)
+    fix: bool = False
+    allow_outside_paths: bool = False
+    mesh_repair: bool = False
 
     @classmethod
-    def of(cls, properties, centroid, volume, implied_density, low, high, source) -> GeometryProps:
-        """``GeometryProps(...)`` without the frozen dataclass's checks per field (an audit of
-        100,000 links makes one per link)."""
-        value = object.__new__(cls)
-        vars(value).update(
-            properties=properties,
-            centroid=centroid,
-            volume=volume,
-            implied_density=implied_density,
-            low=low,
-            high=high,
-            source=source,
-        )
-        return value
-
-    @property
-    def mass(self) -> float | None:
-        return None if self.properties is None else self.properties.mass
-
-    @property
-    def center_of_mass(self) -> np.ndarray:
-        """The geometry's centre of mass (its centroid when it has no mass), m, link frame."""
-        return self.centroid if self.properties is None else self.properties.center_of_mass
-
-    @property
-    def inertia_about_com(self) -> np.ndarray | None:
-        return None if self.properties is None else self.properties.inertia_about_com
-
-    @property
-    def moments(self) -> np.ndarray | None:
-        """Principal moments (kg·m², ascending), or None when the mass is unknown."""
-        return None if self.properties is None else self.properties.moments
+    def of(
+        cls,
+        *,
+        package_paths: Mapping[str, str] | Sequence[str] | None = None,
+        geometry: str = "collision",
+        density: float | None = None,
+        material: str | None = None,
+        mesh_inertia: str = "auto",
+        joints: Mapping[str, float] | Sequence[str] | None = None,
+        fix: bool = False,
+        allow_outside_paths: bool = False,
+        mesh_repair: bool = False,
+    ) -> AuditSettings:
+        """The settings of :func:`rbi.audit`'s keywords (``material``: a built-in material's
+        density in place of ``density``); ArgumentError naming the keyword of a bad one."""
+        if geometry not in GEOMETRY_CHOICES:
+            raise ArgumentError("geometry", f"{literal(geometry)}: must be collision, visual or none")
+        if mesh_inertia not in MESH_INERTIA_MODES:
+            choices = ", ".join(MESH_INERTIA_MODES)
+            raise ArgumentError("mesh_inertia", f"{literal(mesh_inertia)}: must be one of {choices}")
+        packages, values = parse_package_paths(package_paths), parse_joint_values(joints)
+        rho = material_density(material, density)
+        return cls(packages, geometry, rho, mesh_inertia, values, fix, allow_outside_paths, mesh_repair)
 
 
 @dataclass
 class LinkAudit:
+    """One link's audit, a row of :class:`AuditedLinks`: the ``link``; its ``declared`` mass
+    properties (None: no inertial); its ``geometry``'s at the declared mass, else at the given
+    density (None: no geometry, or no mass to give it); where the geometry came from,
+    ``source`` (``collision`` or ``visual``; None: no geometry measured); its ``volume`` (m³;
+    None when it is all shells) and ``implied_density`` (kg/m³, or None); the moment
+    ``ratios``, the ``com_offset`` and the ``flags``."""
+
     link: Link
     declared: MassProperties | None
-    geometry: GeometryProps | None
+    geometry: MassProperties | None
+    source: str | None = None
+    volume: float | None = None
+    implied_density: float | None = None
     ratios: np.ndarray | None = None
     com_offset: float | None = None
     flags: list[Flag] = field(default_factory=list)
@@ -168,29 +177,29 @@ def ratio_text(ratio: float) -> str:
 
 @dataclass(repr=False)
 class AuditReport(Result):
-    """What ``rbi audit`` found: the model read, one :class:`LinkAudit` per link, the totals,
-    ``notes`` (what was read but not checked, inertials MuJoCo ignores) and the options used.
-    :meth:`as_dict` is the JSON the CLI prints."""
+    """What ``rbi audit`` found: the model read, its links' audit (:class:`AuditedLinks`, one
+    :class:`LinkAudit` a link in :attr:`links`), the totals, ``notes`` (what was read but not
+    checked, inertials MuJoCo ignores) and the settings used. :meth:`as_dict` is the JSON the
+    CLI prints."""
 
     model: RobotModel
-    _links: list[LinkAudit] | None
-    total: Any
+    audited: AuditedLinks
+    total: MassProperties
     notes: list[str]
-    settings: dict[str, Any]
+    settings: AuditSettings
     fix: Any = None
     joints: list = field(default_factory=list)
     """Each joint coordinate's holding torque (:class:`rbi.robot.statics.JointTorque`)."""
-    columns: _ColumnAudit | None = None
-    """The audit on the links' arrays, whose :attr:`links` are made when first asked for."""
     left_out: list[str] = field(default_factory=list)
     """The links whose declared moments the total does not count: mass 0 with moments (each
     flagged ``unphysical``), by name (an unnamed MJCF body as ``body[i]``)."""
+    _links: list[LinkAudit] | None = None
 
     @property
     def links(self) -> list[LinkAudit]:
-        """One :class:`LinkAudit` per link, in file order."""
+        """One :class:`LinkAudit` per link, in file order (made when first asked for)."""
         if self._links is None:
-            self._links = [] if self.columns is None else self.columns.links()
+            self._links = self.audited.rows()
         return self._links
 
     @property
@@ -205,9 +214,7 @@ class AuditReport(Result):
 
     @property
     def has_error(self) -> bool:
-        if self._links is None and self.columns is not None:
-            return self.columns.has_error or bool(self.model.unchecked)
-        return any(link.has_error for link in self.links) or bool(self.model.unchecked)
+        return self.audited.has_error or bool(self.model.unchecked)
 
     @property
     def exit_code(self) -> int:
@@ -263,21 +270,13 @@ class AuditReport(Result):
         copy was planned): JSON-ready, built so (no numpy value, no -0.0) without walking the
         links' millions of numbers again."""
         total = self.total
+        more = {"moments": self.total_moments, "frame": total.frame, "left_out": list(self.left_out)}
         found = {
             "robot": self.model.name,
             "format": self.model.format,
             "units": {"length": "m", "mass": "kg"},
-            "links": [] if self.columns is None else self.columns.link_dicts(),
-            "total": plain(
-                {
-                    "mass": total.mass,
-                    "center_of_mass": total.center_of_mass,
-                    "inertia_about_com": total.inertia_about_com,
-                    "moments": self.total_moments,
-                    "frame": total.frame,
-                    "left_out": list(self.left_out),
-                }
-            ),
+            "links": self.audited.to_dicts(),
+            "total": plain(total.to_dict() | more),
             "joints": [
                 {
                     "name": each.name,
@@ -314,11 +313,11 @@ def _without_noise(values: np.ndarray) -> np.ndarray:
 
 
 def _link_cells(each: LinkAudit) -> tuple[str, ...]:
-    declared, geo = each.declared, each.geometry
+    declared, implied = each.declared, each.implied_density
     return (
         each.link.name if each.link.name is not None else each.link.label,
         "-" if declared is None else number(declared.mass, 6),
-        "-" if geo is None or geo.implied_density is None else number(geo.implied_density, 4),
+        "-" if implied is None else number(implied, 4),
         each.worst_ratio_text,
         "-" if each.com_offset is None else number(each.com_offset, 2),
         " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok",
@@ -344,48 +343,15 @@ def _joint_cells(joints: list) -> list[tuple[str, ...]]:
 
 
 def _csv_row(each: LinkAudit) -> dict[str, Any]:
-    declared, geo, ratios = each.declared, each.geometry, each.given_ratios
+    declared, ratios = each.declared, each.given_ratios
     return {
         "link": each.link.name or each.link.label,
         "mass": declared.mass if declared else None,
-        "geometry_volume": geo.volume if geo else None,
-        "implied_density": geo.implied_density if geo else None,
+        "geometry_volume": each.volume,
+        "implied_density": each.implied_density,
         **{f"ratio_{i + 1}": None if ratios is None else ratios[i] for i in range(3)},
         "com_offset": each.com_offset,
         "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags),
-    }
-
-
-def _link_dict(each: LinkAudit, declared_moments, geometry_moments) -> dict[str, Any]:
-    """One link's JSON (``declared_moments``/``geometry_moments``: the principal moments of its
-    declared and geometry inertias, kg·m², from :func:`_stack_moments`)."""
-    declared = geometry = None
-    if each.declared is not None:
-        declared = {
-            "mass": each.declared.mass,
-            "center_of_mass": each.declared.center_of_mass,
-            "inertia_about_com": each.declared.inertia_about_com,
-            "moments": declared_moments,
-        }
-    if each.geometry is not None:
-        g = each.geometry
-        geometry = {
-            "volume": g.volume,
-            "mass": g.mass,
-            "center_of_mass": g.center_of_mass,
-            "inertia_about_com": g.inertia_about_com,
-            "moments": geometry_moments,
-            "implied_density": g.implied_density,
-            "source": g.source,
-        }
-    return {
-        "name": each.link.name,
-        "index": each.link.index,
-        "declared": declared,
-        "geometry": geometry,
-        "moment_ratios": each.given_ratios,
-        "com_offset": each.com_offset,
-        "flags": [flag.as_dict() for flag in each.flags],
     }
 
 
@@ -406,10 +372,6 @@ def _stack_moments(stack: np.ndarray) -> list[list[float]]:
     return ordered
 
 
-def _moments_of(properties: MassProperties | None) -> list[float] | None:
-    return None if properties is None else _stack_moments(properties.inertia_about_com[None])[0]
-
-
 def material_density(material: str | None, density: float | None) -> float | None:
     """kg/m³ from ``density`` or ``material`` (``--density``, ``--material``); ArgumentError
     (naming the parameters) for both, a bad number or an unknown material."""
@@ -423,9 +385,6 @@ def material_density(material: str | None, density: float | None) -> float | Non
             )
         return value
     if material is not None:
-        # not at top level: `rbi audit` would load rbi.spec.materials too
-        from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
-
         name = canonical_name(material) if isinstance(material, str) else None
         if name is None:
             message = unknown_material_message(str(material), numbers_too=False)
@@ -441,245 +400,308 @@ def _number(value) -> float | None:
     return float(value) if finite(value) else math.nan
 
 
-def check_choices(geometry, mesh_inertia) -> None:
-    """ArgumentError naming ``geometry`` or ``mesh_inertia`` (``--geometry``, ``--mesh-inertia``)
-    when it is not one of the audit's choices."""
-    if geometry not in GEOMETRY_CHOICES:
-        raise ArgumentError("geometry", f"{literal(geometry)}: must be collision, visual or none")
-    if mesh_inertia not in MESH_INERTIA_MODES:
-        choices = ", ".join(MESH_INERTIA_MODES)
-        raise ArgumentError("mesh_inertia", f"{literal(mesh_inertia)}: must be one of {choices}")
-
-
-def audit_model(
-    model: RobotModel,
-    *,
-    geometry: str = "collision",
-    density: float | None = None,
-    mesh_inertia: str = "auto",
-    joints: dict[str, float] | None = None,
-    mesh_repair: bool = False,
-) -> AuditReport:
-    """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`)."""
-    # not at top level: `rbi import` would load rbi.robot.statics too
-    from rbi.robot.statics import joint_torques
-
-    check_choices(geometry, mesh_inertia)
+def audit_model(model: RobotModel, settings: AuditSettings | None = None, **options: Any) -> AuditReport:
+    """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`) as
+    ``settings`` say, or the keywords of :meth:`AuditSettings.of`."""
+    settings = AuditSettings.of(**options) if settings is None else settings
     repairs: list[str] = []
     columns = model.link_columns()
-    audited = _ColumnAudit(model, columns)
-    audited.audit(geometry, density, mesh_inertia, mesh_repair, repairs)
-    _refuse_overflow(model, audited.audited.values())
+    audited = AuditedLinks(model, columns, settings, repairs)
     notes = list(model.unchecked) + list(model.notes) + list(dict.fromkeys(repairs))
-    placed = placement(model, joints, columns)
+    placed = placement(model, settings.joints, columns)
     return AuditReport(
         model,
-        None,
-        totals(model, joints, placed),
+        audited,
+        totals(model, settings.joints, placed),
         notes,
-        {
-            "geometry": geometry,
-            "density": density,
-            "mesh_inertia": mesh_inertia,
-            "joints": dict(joints or {}),
-            "mesh_repair": mesh_repair,
-        },
-        joints=joint_torques(model, joints, placed),
-        columns=audited,
+        settings,
+        joints=joint_torques(model, settings.joints, placed),
         left_out=_left_out(model, columns),
     )
-
-
-def _refuse_overflow(model: RobotModel, audited) -> None:
-    """InputError naming the file and the link when a number its audit gives overflows a
-    double (a centre of mass 1e155 m from a 0.1 m geometry: the offset's square): refused
-    here, once, for every output form and the API. Only links not cleared by the screens can
-    hold one (a cleared link's numbers are finite)."""
-    for each in audited:
-        geo = each.geometry
-        found = {"its centre of mass's offset from its geometry": each.com_offset}
-        if geo is not None:
-            found["its geometry's implied density"] = geo.implied_density
-            found["its geometry's inertia"] = (
-                None if geo.properties is None else np.max(np.abs(geo.inertia_about_com))
-            )
-        for what, value in found.items():
-            if value is not None and not math.isfinite(value):
-                raise InputError(
-                    f"{model.path}: {each.link.label}: {what} overflows a double; give lengths in "
-                    "metres, masses in kg and moments in kg·m²"
-                )
 
 
 def _left_out(model: RobotModel, columns: LinkColumns) -> list[str]:
     """The names of the links of mass 0 that declare moments (the total counts no moment without
     a mass: :func:`rbi.robot.tree.heavy_links`); an unnamed one as ``body[i]``."""
-    inertials = columns.inertials
     rows = (
-        columns.declared & (inertials.mass == 0.0) & np.any(inertials.inertia_about_com != 0.0, axis=(1, 2))
+        columns.declared
+        & (columns.inertials.mass == 0.0)
+        & np.any(columns.inertials.inertia_about_com != 0.0, axis=(1, 2))
     )
     names = columns.names
     word = model.link_word
     return [f"{word}[{row}]" if names[row] is None else names[row] for row in np.flatnonzero(rows).tolist()]
 
 
-class _ColumnAudit:
-    """The audit of a model's links on their :class:`~rbi.formats.robot.LinkColumns`: the links
-    the bulk screens clear (no flag, their numbers worked out on stacks) are kept as rows and
-    made into :class:`LinkAudit` values when asked for (:meth:`links`); the others (``audited``:
-    row → LinkAudit) are made now and audited one by one (:func:`_measured_link`, :func:`_flags`)."""
+class AuditedLinks:
+    """Every link's audit as arrays, one row a link in file order (the rows of its
+    :class:`~rbi.formats.robot.LinkColumns`). The geometry: ``measured`` (n,), the links with
+    some; ``has_mass`` (n,), those whose geometry has a mass (the declared one, else the given
+    density's; MJCF: its geoms'); its ``mass`` (n,), centre of mass ``com`` (n, 3; the centroid
+    when it has no mass) and ``inertia`` (n, 3, 3) about it, kg·m², NaN where it has no mass;
+    ``volume`` (n,) m³, NaN when all shells; ``implied`` density (n,), NaN where none; bounds
+    ``low``/``high`` (n, 3) and ``sources``. The comparison, on the ``compared`` rows (a declared
+    mass other than 0 and a geometry with mass): ``ratios`` (n, 3; NaN where none), ``offsets``
+    (None where none), the geometry's principal ``moments`` and whether the declared centre of
+    mass lies ``inside`` its bounds. ``flags``: row → the link's flags (none when not there).
+    :meth:`row` gives one row as a :class:`LinkAudit`."""
 
-    def __init__(self, model: RobotModel, columns: LinkColumns):
+    def __init__(self, model: RobotModel, columns: LinkColumns, settings: AuditSettings, notes: list[str]):
         self.model, self.columns = model, columns
-        self.audited: dict[int, LinkAudit] = {}
-        self.measured: _Measured | None = None
-        self.compared: dict[int, tuple] = {}  # row → (ratios, com_offset)
+        n = len(columns)
+        self.measured, self.has_mass = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
+        self.mass, self.volume, self.implied = np.full(n, np.nan), np.full(n, np.nan), np.full(n, np.nan)
+        self.com, self.low, self.high = np.zeros((n, 3)), np.zeros((n, 3)), np.zeros((n, 3))
+        self.inertia = np.full((n, 3, 3), np.nan)
+        self.sources: list[str | None] = [None] * n
+        self.flags: dict[int, list[Flag]] = {}
+        if settings.geometry != "none":
+            self._measure_in_bulk(settings)
+            shaped = np.zeros(n, dtype=bool)
+            for column in columns.geoms:
+                shaped[column.rows] = True
+            for row in np.flatnonzero(shaped & ~self.measured).tolist():
+                self._measure_one(row, settings, notes)
+        self._compare()
+        self._flag()
+        self._refuse_overflow()
 
     @property
     def has_error(self) -> bool:
-        return any(each.has_error for each in self.audited.values())
+        return any(flag.level == "error" for flags in self.flags.values() for flag in flags)
 
-    def audit(self, geometry, density, mesh_inertia, mesh_repair, repairs) -> None:
-        """Each link screened on the arrays; those not cleared audited one by one."""
-        model, columns = self.model, self.columns
-        n = len(columns)
-        heavy = columns.declared & (columns.inertials.mass > 0)
-        carried = _carried(columns)
-        moving = np.zeros(n, dtype=bool)  # links a joint moves
-        kinds = zip(columns.joint_rows, columns.joint_kinds)
-        moving[[row for row, kind in kinds if kind != "fixed" and columns.parents[row] != n]] = True
-        measured = self.measured = _primitives_in_bulk(model, geometry, density, columns)
-        shaped = np.zeros(n, dtype=bool)  # links with geometry to measure
-        if geometry != "none":
-            for column in columns.geoms:
-                shaped[column.rows] = True
-        fine = np.zeros(n, dtype=bool)
-        if measured is not None:
-            fine[np.asarray(measured.rows)[measured.fine]] = True
-        declared = np.flatnonzero(columns.declared).tolist()
-        inertias = columns.inertials.inertia_about_com[declared]
-        physical, maybe = _screens(n, declared, inertias, columns.written[declared])
-        clean = self._compare(heavy & fine)
-        simple = heavy & physical & ~maybe & (~shaped | clean)
-        simple |= ~columns.declared & ~moving & (~shaped | fine)
-        for row in np.flatnonzero(~simple).tolist():
-            link = columns.link(row)
-            if fine[row]:
-                declared_props = None if link.inertial is None else link.inertial.properties
-                result = LinkAudit(link, declared_props, measured.props(measured.at[row]))
-            else:
-                result = _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, repairs)
-            result.flags += _flags(model, link, result, carried[row])
-            self.audited[row] = result
+    @property
+    def geometry(self) -> MassProperties:
+        """The geometry's mass properties, a stack of one a link (NaN where it has none)."""
+        return MassProperties(self.mass, self.com, self.inertia, "link")
 
-    def _compare(self, chosen: np.ndarray) -> np.ndarray:
-        """(n,) which of the ``chosen`` links (declared mass, geometry measured) :func:`_compared`
-        finds clean; their ratios and centre-of-mass offsets into :attr:`compared`."""
-        clean = np.zeros(len(chosen), dtype=bool)
-        measured, columns = self.measured, self.columns
-        if measured is None or not np.any(chosen):
-            return clean
-        at = np.array([measured.at[row] for row in np.flatnonzero(chosen).tolist()], dtype=int)
-        at = at[np.all(np.isfinite(measured.scaled[at]), axis=(1, 2))]
-        found = np.asarray(measured.rows)[at]
-        moments, axes = np.linalg.eigh(measured.scaled[at])
-        low_density, high_density = SOLID_DENSITY_RANGE
-        implied = measured.implied[at]
+    def _measure_in_bulk(self, settings: AuditSettings) -> None:
+        """The geometry of the links :func:`_one_primitive` finds, measured on (n, 3, 3) stacks
+        with the operations :func:`distribution`, :func:`_sum` and :meth:`_measure_one` make on
+        one link, element by element (so the same numbers). A link whose numbers would take
+        another branch there (no volume, overflow, an unusual sum) is left to them."""
+        columns = self.columns
+        shapes = _one_primitive(self.model, settings.geometry, columns)
+        if shapes is None:
+            return
+        known = []
+        for key in shapes.distinct:
+            try:
+                known.append((*primitive(*key), half_extent(*key)))
+            except ValueError:
+                known.append((np.nan, np.full(3, np.nan), np.full(3, np.nan)))
+        measure = np.array([found[0] for found in known], dtype=float)[shapes.which]
+        moments = stacked([found[1] for found in known], (3,))[shapes.which]
+        half = stacked([found[2] for found in known], (3,))[shapes.which]
+        R, p = shapes.R, shapes.p
+        turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
+        inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
+        corners = stack_apply(np.abs(R), half)
+        with np.errstate(all="ignore"):
+            fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
+            fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
+        rows, at = np.asarray(shapes.rows)[fine], np.flatnonzero(fine)
+        measure, inertia, p, corners = measure[fine], inertia[fine] + 0.0, p[fine], corners[fine]
+        self.measured[rows], self.volume[rows] = True, measure
+        self.com[rows], self.low[rows], self.high[rows] = p + 0.0, p - corners, p + corners
+        for row, k in zip(rows.tolist(), at.tolist()):
+            self.sources[row] = shapes.sources[k]
+        declared = np.where(columns.declared, columns.inertials.mass, 0.0)[rows]
+        given = declared > 0
+        density = settings.density
+        with np.errstate(all="ignore"):
+            mass = np.where(given, declared, np.nan if density is None else density * measure)
+            implied = mass / measure
+            scaled = inertia * implied[:, None, None]
+        heavy = given | (density is not None)
+        rows = rows[heavy]
+        self.has_mass[rows] = True
+        self.mass[rows], self.implied[rows], self.inertia[rows] = mass[heavy], implied[heavy], scaled[heavy]
+
+    def _measure_one(self, row: int, settings: AuditSettings, notes: list[str]) -> None:
+        """Row ``row``'s geometry measured one piece at a time (:func:`link_geometry`), and a
+        ``mesh`` flag for each mesh ``auto`` could not integrate exactly."""
+        model, link = self.model, self.columns.link(row)
+        fallbacks: list = []
+        source, pieces = link_geometry(
+            model, link, settings.geometry, settings.mesh_inertia, settings.mesh_repair, notes, fallbacks
+        )
+        if fallbacks:
+            self.flags[row] = [
+                Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks
+            ]
+        if model.format == "mjcf":  # each geom at its own mass
+            parts = [d.unit.with_mass(m) for d, m in pieces]
+        else:  # at density 1
+            parts = [d.unit for d, _ in pieces]
+        try:
+            unit = _sum(parts)
+        except ValueError:  # no pieces, or no mass in the geometry
+            return
+        declared = self.columns.inertials.mass[row] if self.columns.declared[row] else 0.0
+        mass = None
+        if declared > 0:
+            mass = declared
+        elif model.format == "mjcf":
+            mass = unit.mass
+        elif settings.density is not None:
+            mass = settings.density * unit.mass
+        solid = [d.measure for d, _ in pieces if not d.shell]
+        self.measured[row], self.sources[row], self.com[row] = True, source, unit.center_of_mass
+        self.low[row] = np.min([d.low for d, _ in pieces], axis=0)
+        self.high[row] = np.max([d.high for d, _ in pieces], axis=0)
+        if solid:
+            self.volume[row] = float(sum(solid))
+        if mass is not None:
+            properties = unit.with_mass(mass)
+            self.has_mass[row], self.mass[row], self.inertia[row] = True, mass, properties.inertia_about_com
+            if len(solid) == len(pieces):
+                self.implied[row] = mass / self.volume[row]
+
+    def _compare(self) -> None:
+        """The declared mass properties against the geometry's, on stacks (:func:`_compared`),
+        of the links that declare a mass other than 0 and whose geometry has mass."""
+        columns, n = self.columns, len(self.columns)
+        self.compared = columns.declared & (columns.inertials.mass != 0) & self.has_mass & (self.mass != 0)
+        rows = np.flatnonzero(self.compared)
+        self.ratios, self.moments = np.full((n, 3), np.nan), np.full((n, 3), np.nan)
+        self.inside, self.clean = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
+        self.offsets: list[float | None] = [None] * n
+        moments, axes = np.linalg.eigh(self.inertia[rows])
         ratios, offsets, inside, near = _compared(
             moments,
             axes,
-            columns.inertials.inertia_about_com[found],
-            columns.inertials.center_of_mass[found],
-            measured.low[at],
-            measured.high[at],
-            measured.com[at],
+            columns.inertials.inertia_about_com[rows],
+            columns.inertials.center_of_mass[rows],
+            self.low[rows],
+            self.high[rows],
+            self.com[rows],
         )
-        clean[found] = near & inside & (implied >= low_density) & (implied <= high_density)
-        self.compared = dict(zip(found.tolist(), zip(ratios, offsets)))
-        return clean
+        self.ratios[rows], self.moments[rows], self.inside[rows] = ratios, moments, inside
+        for row, offset in zip(rows.tolist(), offsets):
+            self.offsets[row] = offset
+        low_density, high_density = SOLID_DENSITY_RANGE
+        implied = self.implied[rows]
+        self.clean[rows] = near & inside & (implied >= low_density) & (implied <= high_density)
 
-    def links(self) -> list[LinkAudit]:
-        """Every link's :class:`LinkAudit`, in file order."""
-        return [self.link_audit(row, link) for row, link in enumerate(self.columns.links())]
+    def _flag(self) -> None:
+        """Each link's flags (:func:`_flags`), asked of the links the screens on the stacks do
+        not clear: a declared inertial certainly physical, no placeholder, a clean comparison
+        (or none); no inertial on a link no joint moves."""
+        columns, n = self.columns, len(self.columns)
+        heavy = columns.declared & (columns.inertials.mass > 0)
+        moving = np.zeros(n, dtype=bool)  # links a joint moves
+        kinds = zip(columns.joint_rows, columns.joint_kinds)
+        moving[[row for row, kind in kinds if kind != "fixed" and columns.parents[row] != n]] = True
+        declared = np.flatnonzero(columns.declared).tolist()
+        physical, maybe = _screens(
+            n, declared, columns.inertials.inertia_about_com[declared], columns.written[declared]
+        )
+        clear = heavy & physical & ~maybe & (~self.compared | self.clean)
+        clear |= ~columns.declared & ~moving
+        carried = _carried(columns)
+        for row in np.flatnonzero(~clear).tolist():
+            found = _flags(self.model, self.row(row), carried[row], self.moments[row], self.inside[row])
+            if found:
+                self.flags[row] = self.flags.get(row, []) + found
 
-    def link_audit(self, row: int, link: Link | None = None) -> LinkAudit:
-        """The :class:`LinkAudit` of ``row``: audited one by one, or made from the arrays."""
-        result = self.audited.get(row)
-        if result is not None:
-            return result
-        link = self.columns.link(row) if link is None else link
-        measured, geometry = self.measured, None
-        if measured is not None and row in measured.at and measured.fine[measured.at[row]]:
-            geometry = measured.props(measured.at[row])
-        declared = None if link.inertial is None else link.inertial.properties
-        return LinkAudit(link, declared, geometry, *self.compared.get(row, (None, None)))
-
-    def link_dicts(self) -> list[dict[str, Any]]:
-        """Each link's JSON object (:func:`_link_dict`), in file order, JSON-ready: a link the
-        screens cleared (no flag) straight from the arrays, the same numbers its
-        :class:`LinkAudit` holds (a 100,000-link report makes no object per link); the others
-        (audited one by one, or with a turned inertial frame) from their LinkAudit."""
-        columns, measured, compared = self.columns, self.measured, self.compared
-        own = set(self.audited) | set(columns.turned)
-        inertials = columns.inertials
-        declared, masses = columns.declared.tolist(), (inertials.mass + 0.0).tolist()  # + 0.0: no -0.0
-        coms = (inertials.center_of_mass + 0.0).tolist()
-        inertias = (inertials.inertia_about_com + 0.0).tolist()
-        moments = [None] * len(masses)
-        rows = np.flatnonzero(columns.declared)
-        for row, each in zip(rows.tolist(), _stack_moments(inertials.inertia_about_com[rows])):
-            moments[row] = each
-        shapes = _geometry_dicts(measured) if measured is not None else {}
-        found = []
-        for row, name in enumerate(columns.names):
-            if row in own:
-                each = self.link_audit(row)
-                geo = None if each.geometry is None else each.geometry.properties
-                found.append(plain(_link_dict(each, _moments_of(each.declared), _moments_of(geo))))
-                continue
-            ratios, offset = compared.get(row, (None, None))
-            found.append(
-                {
-                    "name": name,
-                    "index": row,
-                    "declared": {
-                        "mass": masses[row],
-                        "center_of_mass": coms[row],
-                        "inertia_about_com": inertias[row],
-                        "moments": moments[row],
-                    }
-                    if declared[row]
-                    else None,
-                    "geometry": shapes.get(row),
-                    "moment_ratios": None if ratios is None else _given(ratios),
-                    "com_offset": None if offset is None else offset + 0.0,
-                    "flags": [],
-                }
-            )
-        return found
-
-
-def _geometry_dicts(measured: _Measured) -> dict[int, dict[str, Any]]:
-    """Row → the JSON object of its measured geometry (``fine`` rows): what
-    :meth:`_Measured.props` gives, from the arrays."""
-    fine = np.flatnonzero(measured.fine)
-    heavy = fine[measured.has_mass[fine]]
-    moments = dict(zip(heavy.tolist(), _stack_moments(measured.scaled[heavy])))
-    volume, mass = (measured.measure + 0.0).tolist(), (measured.mass + 0.0).tolist()  # + 0.0: no -0.0
-    implied, com = (measured.implied + 0.0).tolist(), (measured.com + 0.0).tolist()
-    scaled, has_mass = (measured.scaled + 0.0).tolist(), measured.has_mass.tolist()
-    return {
-        measured.rows[k]: {
-            "volume": volume[k],
-            "mass": mass[k] if has_mass[k] else None,
-            "center_of_mass": com[k],
-            "inertia_about_com": scaled[k] if has_mass[k] else None,
-            "moments": moments.get(k),
-            "implied_density": implied[k] if has_mass[k] else None,
-            "source": measured.sources[k],
+    def _refuse_overflow(self) -> None:
+        """InputError naming the file and the link when a number its audit gives overflows a
+        double (a centre of mass 1e155 m from a 0.1 m geometry: the offset's square): refused
+        here, once, for every output form and the API."""
+        offsets = np.array([0.0 if offset is None else offset for offset in self.offsets])
+        with np.errstate(invalid="ignore"):
+            largest = np.where(self.has_mass, np.max(np.abs(self.inertia), axis=(1, 2)), 0.0)
+        found = {
+            "its centre of mass's offset from its geometry": ~np.isfinite(offsets),
+            "its geometry's implied density": np.isinf(self.implied),
+            "its geometry's inertia": ~np.isfinite(largest),
         }
-        for k in fine.tolist()
-    }
+        bad = np.flatnonzero(np.any(list(found.values()), axis=0))
+        if bad.size:
+            row = int(bad[0])
+            what = next(what for what, rows in found.items() if rows[row])
+            raise InputError(
+                f"{self.model.path}: {self.columns.link(row).label}: {what} overflows a double; give "
+                "lengths in metres, masses in kg and moments in kg·m²"
+            )
+
+    def row(self, row: int, link: Link | None = None) -> LinkAudit:
+        """The :class:`LinkAudit` of ``row``."""
+        link = self.columns.link(row) if link is None else link
+        geometry = None
+        if self.has_mass[row]:
+            geometry = MassProperties(self.mass[row], self.com[row], self.inertia[row], "link")
+        volume, implied = float(self.volume[row]), float(self.implied[row])
+        return LinkAudit(
+            link,
+            None if link.inertial is None else link.inertial.properties,
+            geometry,
+            self.sources[row],
+            None if math.isnan(volume) else volume,
+            None if math.isnan(implied) else implied,
+            self.ratios[row].copy() if self.compared[row] else None,
+            self.offsets[row],
+            self.flags.get(row, []),
+        )
+
+    def rows(self) -> list[LinkAudit]:
+        """Every link's :class:`LinkAudit`, in file order."""
+        return [self.row(row, link) for row, link in enumerate(self.columns.links())]
+
+    def to_dicts(self) -> list[dict[str, Any]]:
+        """Each link's JSON object, in file order, JSON-ready, made from the arrays (a
+        100,000-link report makes no object per link but these): the declared and the
+        geometry's mass properties as their stacks' ``to_dict()``."""
+        columns = self.columns
+        declared, geometry = [None] * len(columns), [None] * len(columns)
+        rows = np.flatnonzero(columns.declared)
+        stack = columns.inertials[rows]
+        found = _unsigned(stack).to_dict() | {"moments": _stack_moments(stack.inertia_about_com)}
+        for row, each in zip(rows.tolist(), _each(found)):
+            declared[row] = each
+        rows = np.flatnonzero(self.measured)
+        heavy = self.has_mass[rows].tolist()
+        moments = iter(_stack_moments(self.inertia[rows[self.has_mass[rows]]]))
+        found = {"volume": _nan_none(self.volume[rows] + 0.0)} | _unsigned(self.geometry[rows]).to_dict()
+        found["mass"] = [m if h else None for m, h in zip(found["mass"], heavy)]
+        found["inertia_about_com"] = [m if h else None for m, h in zip(found["inertia_about_com"], heavy)]
+        found["moments"] = [next(moments) if h else None for h in heavy]
+        found["implied_density"] = _nan_none(self.implied[rows] + 0.0)
+        found["source"] = [self.sources[row] for row in rows.tolist()]
+        for row, each in zip(rows.tolist(), _each(found)):
+            geometry[row] = each
+        ratios, offsets, flags = self.ratios, self.offsets, self.flags
+        compared = self.compared.tolist()
+        return [
+            {
+                "name": name,
+                "index": row,
+                "declared": declared[row],
+                "geometry": geometry[row],
+                "moment_ratios": _given(ratios[row]) if compared[row] else None,
+                "com_offset": None if offsets[row] is None else offsets[row] + 0.0,
+                "flags": [flag.as_dict() for flag in flags.get(row, ())],
+            }
+            for row, name in enumerate(columns.names)
+        ]
+
+
+def _nan_none(values: np.ndarray) -> list[float | None]:
+    """``values`` as a list, each NaN (no value) as None."""
+    return [None if value != value else value for value in values.tolist()]
+
+
+def _unsigned(stack: MassProperties) -> MassProperties:
+    """``stack`` with each -0.0 as 0.0 (JSON's numbers)."""
+    return MassProperties(
+        stack.mass + 0.0, stack.center_of_mass + 0.0, stack.inertia_about_com + 0.0, stack.frame
+    )
+
+
+def _each(columns: dict[str, list]) -> list[dict[str, Any]]:
+    """One dict a body of a stack's columns (key → one value a body, a stack's ``to_dict()``)."""
+    return [dict(zip(columns, values)) for values in zip(*columns.values())]
 
 
 def _given(ratios: np.ndarray) -> list[float | None]:
@@ -736,19 +758,6 @@ def link_geometry(
     return source, pieces
 
 
-def _measured_link(model, link, geometry, density, mesh_inertia, mesh_repair, notes) -> LinkAudit:
-    """The link's declared and geometry mass properties, and the ``mesh`` flags of meshes ``auto``
-    could not integrate exactly (the other flags come from :func:`_flags`)."""
-    inertial = link.inertial
-    declared = None if inertial is None else inertial.properties
-    fallbacks: list = []
-    source, pieces = link_geometry(model, link, geometry, mesh_inertia, mesh_repair, notes, fallbacks)
-    geo = _geometry_props(model, pieces, source, declared, density)
-    result = LinkAudit(link, declared, geo)
-    result.flags = [Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks]
-    return result
-
-
 class _Shapes(NamedTuple):
     """The links whose geometry (as :func:`link_geometry` chooses it) is one solid primitive:
     their ``rows``, each one's shape (``distinct[which[k]]``: kind and size in m), pose in the
@@ -795,78 +804,6 @@ def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> _Sha
     if not rows:
         return None
     return _Shapes(rows, list(distinct), np.concatenate(which), np.concatenate(R), np.concatenate(p), sources)
-
-
-def _primitives_in_bulk(
-    model: RobotModel, geometry: str, density: float | None, links: LinkColumns
-) -> _Measured | None:
-    """The geometry of the links :func:`_one_primitive` finds, measured on (n, 3, 3) stacks with
-    the operations :func:`distribution`, :func:`_sum` and :func:`_geometry_props` make on one
-    link, element by element (so the same numbers). A link whose numbers would take another
-    branch there (no volume, overflow, an unusual sum) is left to them (not ``fine``)."""
-    shapes = _one_primitive(model, geometry, links)
-    if shapes is None:
-        return None
-    known = []
-    for key in shapes.distinct:
-        try:
-            known.append((*primitive(*key), half_extent(*key)))
-        except ValueError:
-            known.append((np.nan, np.full(3, np.nan), np.full(3, np.nan)))
-    measure = np.array([found[0] for found in known], dtype=float)[shapes.which]
-    moments = stacked([found[1] for found in known], (3,))[shapes.which]
-    half = stacked([found[2] for found in known], (3,))[shapes.which]
-    R, p = shapes.R, shapes.p
-    turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
-    inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
-    corners = stack_apply(np.abs(R), half)
-    with np.errstate(all="ignore"):
-        fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
-        fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
-    declared = np.where(links.declared, links.inertials.mass, 0.0)[shapes.rows]
-    return _Measured.of(
-        shapes, fine, measure, inertia + 0.0, p + 0.0, p - corners, p + corners, declared, density
-    )
-
-
-class _Measured:
-    """The geometry of :class:`_Shapes` measured: of each ``fine`` row, a piece of ``measure``
-    (m³) with its inertia at density 1 (kg·m²), centroid ``com`` and bounds ``low``/``high``
-    (m, link frame), and its mass (the declared one when positive, else ``density`` times the
-    volume), implied density and scaled inertia (``scaled``), worked out on the arrays (the
-    same IEEE operations as :func:`_geometry_props`, element by element). ``has_mass``: the rows
-    whose geometry has mass properties. :meth:`props` gives one row's :class:`GeometryProps`."""
-
-    @classmethod
-    def of(cls, shapes, fine, measure, inertia, com, low, high, declared, density) -> _Measured:
-        value = cls()
-        given = declared > 0
-        with np.errstate(all="ignore"):
-            mass = np.where(given, declared, np.nan if density is None else density * measure)
-            implied = mass / measure
-            scaled = inertia * implied[:, None, None]
-        given |= density is not None
-        value.rows, value.sources, value.fine = shapes.rows, shapes.sources, fine
-        value.measure, value.com, value.low, value.high = measure, com, low, high
-        value.mass, value.implied, value.scaled = mass, implied, scaled
-        value.has_mass = fine & given
-        value.at = dict(zip(shapes.rows, range(len(shapes.rows))))
-        return value
-
-    def props(self, k: int) -> GeometryProps:
-        """The :class:`GeometryProps` of the k-th row (a ``fine`` one)."""
-        properties = None
-        if self.has_mass[k]:
-            properties = MassProperties(self.mass[k], self.com[k], self.scaled[k], "link")
-        return GeometryProps.of(
-            properties,
-            self.com[k],
-            float(self.measure[k]),
-            None if properties is None else float(self.implied[k]),
-            self.low[k],
-            self.high[k],
-            self.sources[k],
-        )
 
 
 def _screens(n: int, declared: list[int], inertias: np.ndarray, written: np.ndarray) -> tuple:
@@ -937,43 +874,6 @@ def _maybe_placeholder(written: np.ndarray) -> np.ndarray:
     return no_products & (equal | np.all(round_, axis=1))
 
 
-def _geometry_props(
-    model, pieces, source, declared: MassProperties | None, density: float | None
-) -> GeometryProps | None:
-    if not pieces:
-        return None
-    solid = [d for d, _ in pieces if not d.shell]
-    volume = float(sum(d.measure for d in solid)) if solid else None
-    low = np.min([d.low for d, _ in pieces], axis=0)
-    high = np.max([d.high for d, _ in pieces], axis=0)
-    if model.format == "mjcf":  # each geom at its own mass
-        parts = [d.unit.with_mass(m) for d, m in pieces]
-    else:  # at density 1
-        parts = [d.unit for d, _ in pieces]
-    try:
-        unit = _sum(parts)
-    except ValueError:  # no mass in the geometry
-        return None
-    if declared is not None and declared.mass > 0:
-        mass = declared.mass
-    elif density is not None and model.format != "mjcf":
-        mass = density * unit.mass
-    elif model.format == "mjcf":
-        mass = unit.mass
-    else:
-        mass = None
-    implied = mass / volume if mass is not None and volume and len(solid) == len(pieces) else None
-    return GeometryProps(
-        None if mass is None else unit.with_mass(mass),
-        unit.center_of_mass,
-        volume,
-        implied,
-        low,
-        high,
-        source,
-    )
-
-
 def _sum(parts: list[MassProperties]) -> MassProperties:
     """``MassProperties.sum(parts)``; for one part of positive mass, the value that sum gives
     without its arithmetic: the part with each -0.0 made 0.0 (the sum adds a zero offset to the
@@ -993,9 +893,10 @@ def _sum(parts: list[MassProperties]) -> MassProperties:
     return MassProperties.sum(parts)
 
 
-def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool) -> list[Flag]:
-    """The link's flags (other than ``mesh``), one link at a time."""
-    declared, geo = result.declared, result.geometry
+def _flags(model: RobotModel, each: LinkAudit, carries_mass: bool, moments, inside) -> list[Flag]:
+    """The link's flags (other than ``mesh``) from its row (``moments``: its geometry's principal
+    moments; ``inside``: its declared centre of mass within the geometry's bounds)."""
+    declared, link = each.declared, each.link
     if declared is None or declared.mass == 0.0:
         return _zero_mass_flags(link, declared, carries_mass)
     flags: list[Flag] = []
@@ -1005,14 +906,11 @@ def _flags(model: RobotModel, link: Link, result: LinkAudit, carries_mass: bool)
     problem = declared_inertia_problem(declared.mass, I)
     if problem is not None:
         flags.append(Flag("unphysical", "error", inertia_problem_text(problem, I), problem.kind))
-    has_geometry = geo is not None and geo.inertia_about_com is not None and geo.mass
     if link.inertial is not None and link.inertial.source == "default":
-        if has_geometry:
-            _geometry_flags(result, None)  # the ratios only: the default is not the file's claim
         return flags + [Flag("placeholder", "warning", _DEFAULT_TEXT, "SDFormat's default inertial")]
     placeholder = _placeholder(model, link)
-    if has_geometry:
-        flags += _geometry_flags(result, placeholder)
+    if each.ratios is not None:
+        flags += _geometry_flags(each, placeholder, moments, inside)
     elif placeholder:
         flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))
     return flags
@@ -1054,19 +952,11 @@ def _zero_mass_flags(link: Link, declared: MassProperties | None, carries_mass: 
     return flags
 
 
-def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
+def _geometry_flags(each: LinkAudit, placeholder: str | None, moments, inside) -> list[Flag]:
     """``placeholder``/``mismatch`` from the moment ratios, ``mismatch`` for a centre of mass
-    outside the geometry, ``density`` for an implausible implied density; sets the link's
-    ``ratios`` and ``com_offset``."""
-    declared, geo = result.declared, result.geometry
+    outside the geometry, ``density`` for an implausible implied density."""
     flags: list[Flag] = []
-    moments, axes = np.linalg.eigh(geo.inertia_about_com)
-    found = _compared(
-        *(value[None] for value in (moments, axes, declared.inertia_about_com, declared.center_of_mass)),
-        *(value[None] for value in (geo.low, geo.high, geo.center_of_mass)),
-    )
-    (ratios,), (result.com_offset,), (inside,), _ = found
-    result.ratios = ratios
+    ratios, source, implied = each.ratios, each.source, each.implied_density
     worst = _worst_ratio(ratios)
     level = None
     if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
@@ -1078,22 +968,22 @@ def _geometry_flags(result: LinkAudit, placeholder: str | None) -> list[Flag]:
     if level is not None:
         code = "placeholder" if placeholder else "mismatch"
         texts = ", ".join(ratio_text(r) for r in ratios)
-        detail = f"declared moments about the geometry's principal axes are {texts} × the {geo.source} geometry's at the same mass"
+        detail = f"declared moments about the geometry's principal axes are {texts} × the {source} geometry's at the same mass"
         if placeholder:
             detail = f"{placeholder}; {detail}"
-        summary = "" if worst is None else f"a moment {ratio_text(worst)} × the {geo.source} geometry's"
+        summary = "" if worst is None else f"a moment {ratio_text(worst)} × the {source} geometry's"
         flags.append(Flag(code, level, detail, summary))
     if not inside:
         text = (
             "the declared centre of mass lies outside the geometry's bounds (offset "
-            f"{result.com_offset:.3g} of the geometry's size from its centre of mass)"
+            f"{each.com_offset:.3g} of the geometry's size from its centre of mass)"
         )
         flags.append(Flag("mismatch", "warning", text))
     low, high = SOLID_DENSITY_RANGE
-    if geo.implied_density is not None and not low <= geo.implied_density <= high:
+    if implied is not None and not low <= implied <= high:
         text = (
-            f"implied density {geo.implied_density:.4g} kg/m³ (mass {declared.mass:.6g} kg / {geo.source} "
-            f"volume {geo.volume:.4g} m³) is outside what a solid material has ({low:g} to {high:g} kg/m³)"
+            f"implied density {implied:.4g} kg/m³ (mass {each.declared.mass:.6g} kg / {source} "
+            f"volume {each.volume:.4g} m³) is outside what a solid material has ({low:g} to {high:g} kg/m³)"
         )
         flags.append(Flag("density", "warning", text))
     return flags

@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.errors import InputError
 from rbi.files.safe import shown
 from rbi.formats.inertial_xml import inertial_text, xml_comment
@@ -110,20 +111,20 @@ def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
 def _why_not(report: AuditReport, each: LinkAudit, density: float | None) -> str | None:
     geo = each.geometry
     inertial = each.link.inertial
-    if geo is None:
+    if each.source is None:
         return "it has no geometry with a volume to take the mass properties from"
     if inertial is not None and inertial.element is None and inertial.source == "geoms":
         return "MuJoCo's compiler gives it its mass properties from its geoms; change the geoms instead"
     if inertial is not None and getattr(inertial.element, "source", None):
         return "its <inertial> is in an included file"
-    if geo.mass is None or geo.inertia_about_com is None:
+    if geo is None:
         return "it declares no mass; give --density or --material to fix it at a density"
     if inertial is None and each.link.element is None:
         return "its element cannot be edited"
     return _bounded(report, geo)
 
 
-def _bounded(report: AuditReport, geo) -> str | None:
+def _bounded(report: AuditReport, geo: MassProperties) -> str | None:
     """Why the geometry's inertial would still be an error once MuJoCo's compiler has raised
     its principal moments to ``<compiler boundinertia>`` (the audit reads them raised), or
     None. A moment the audit compares with none (below USABLE_MOMENT of the largest) is not
@@ -177,7 +178,7 @@ def _change(
         else f"principal moments {', '.join(f'{m:.4g}' for m in each.declared.moments)} kg·m²"
     )
     comment = xml_comment(
-        f"rbi audit fix: was {was} ({reason}); now its {geo.source} geometry's mass properties {basis}"
+        f"rbi audit fix: was {was} ({reason}); now its {each.source} geometry's mass properties {basis}"
     )
     body = inertial_text(
         report.model.format,
