@@ -448,8 +448,6 @@ def cli_names_outside_all(cli: Path) -> set[tuple[str, str]]:
 
 
 CLI_NAMES_LEFT: set[tuple[str, str]] = {
-    ("audit_command.py", "collector_paused"),
-    ("audit_command.py", "output_target"),
     ("import_command.py", "check_distinct"),
     ("import_command.py", "output_target"),
     ("import_command.py", "rbi.api"),

@@ -61,7 +61,7 @@ def audit(
         joints: ``{NAME: VALUE}`` or ``["NAME=VALUE", ...]``: radians for revolute/hinge joints,
             metres for prismatic/slide; the others at zero (MJCF: ``qpos0``).
         fix: also plan the fixed copy (``report.fix``: ``.content``, bytes; ``.changes``, ``.unfixable``).
-        out: write it there (``.urdf``, ``.sdf`` or ``.xml``; never a file the robot reads), atomically.
+        out: write it there (the robot file's own form; never a file the robot reads), atomically.
         allow_outside_paths: let the file name meshes and includes outside its folder; None:
             as an enclosing `outside_paths_allowed` block says (not allowed outside one).
         mesh_repair: close meshes' holes of three or four edges first (listed in ``report.notes``).
@@ -73,7 +73,7 @@ def audit(
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
     path = path_text(robot_file)
-    target = None if out is None else checked_output(out, ("urdf", "sdf", "xml"), path, "out")
+    target = None if out is None else checked_output(out, _fixed_format(path), path, "out")
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     chosen: dict[str, Any] = dict(
         package_paths=package_paths, geometry=geometry, density=density, material=material
@@ -83,6 +83,13 @@ def audit(
     if target is not None:
         _write_fixed(target, report)
     return report
+
+
+def _fixed_format(path: str) -> tuple[str]:
+    """The one form the fixed copy of ``path`` is written in: its own (a .xacro is never
+    rewritten: its fixed copy is the expanded robot, a .urdf)."""
+    extension = os.path.splitext(path)[1].lower().lstrip(".") or "xml"
+    return ("urdf",) if extension == "xacro" else (extension,)
 
 
 def _write_fixed(target: Any, report: AuditReport) -> None:

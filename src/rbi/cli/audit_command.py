@@ -8,14 +8,12 @@ Exit 0 when no link has an error-level flag, 1 when one has (so it gates CI like
 
 from __future__ import annotations
 
-import os
 import sys
 from typing import Annotated
 
 import typer
 
-from rbi.api import SpecError, collector_paused, output_target
-from rbi.api import audit as run_audit
+import rbi
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile
 from rbi.cli.render import emit, print_table, terminal_safe
 from rbi.cli.terminal import say, status_kept
@@ -110,8 +108,7 @@ def audit(
       rbi audit robot.urdf --fix --out fixed.urdf
     """
 
-    target = _fix_target(file, fix, out)
-    report = run_audit(
+    report = rbi.audit(
         file,
         package_paths=package_path,
         geometry=geometry,
@@ -120,31 +117,14 @@ def audit(
         mesh_inertia=mesh_inertia,
         joints=joints,
         fix=fix,
-        out=target,
+        out=out,
         mesh_repair=mesh_repair,
     )
     code = report.exit_code
-
-    # as while auditing: a large robot's report is millions of new objects; a reader that left
-    # does not clear a flagged link
-    with collector_paused(), status_kept(code):
+    with status_kept(code):  # a reader that left does not clear a flagged link
         _render(report, format, file, out if fix else None, fix)
     if code:
         raise typer.Exit(code)
-
-
-def _fix_target(file: str, fix: bool, out: str | None):
-    """The --out target, checked before the audit runs (it needs --fix and the robot file's
-    extension), or None."""
-
-    if out is None:
-        return None
-    if not fix:
-        raise SpecError("--out: writes the fixed copy, so it needs --fix")
-    extension = os.path.splitext(file)[1].lower().lstrip(".") or "xml"
-    if extension == "xacro":
-        extension = "urdf"  # a .xacro is never rewritten: the fixed copy is the expanded robot
-    return output_target(out, "--out", (extension,), inputs=[file])
 
 
 def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool) -> None:
@@ -159,8 +139,7 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
 
 
 def _table(report) -> None:
-    # not at top level: `rbi audit --format json` would load rbi.cli.tables too
-    from rbi.cli.tables import plain_text, titled
+    from rbi.cli.tables import plain_text, titled  # heavy: rich (not for --format json)
 
     tables = report.rows()
     links, total = tables[0], tables[1].cells
@@ -195,8 +174,7 @@ def _table(report) -> None:
 
 def _joints_table(joints, found) -> None:
     """Each joint's holding torque against gravity, its declared effort limit and the margin."""
-    # not at top level: `rbi audit --format json` would load rbi.cli.tables too
-    from rbi.cli.tables import plain_text, titled
+    from rbi.cli.tables import plain_text, titled  # heavy: rich (not for --format json)
 
     table = titled(joints.title)
     for heading in joints.columns:

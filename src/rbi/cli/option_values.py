@@ -20,6 +20,7 @@ OPTION_NAMES = {
     "links": "--link",
     "vary[]": "--vary {}",
     "path": "--out",
+    "fix=True": "--fix",
 }
 """The API's parameters whose option is not ``--`` + the name with ``-`` for ``_``."""
 

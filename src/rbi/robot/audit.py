@@ -8,8 +8,7 @@ density when the link declares no mass; ``ratios``, each declared moment about t
 principal axes over the geometry's; ``com_offset``, the distance between the two centres of mass
 over the geometry's size (its bounding box's diagonal). The flags (``unphysical``,
 ``placeholder``, ``mismatch``, ``density``, ``massless``, ``mesh``), their levels and limits
-(:data:`ERROR_RATIO`, :data:`WARNING_RATIO`, :data:`SOLID_DENSITY_RANGE`, :data:`COM_MARGIN`)
-are tabled in docs/audit.md ("What it checks").
+(:mod:`rbi.robot.flags`) are tabled in docs/audit.md ("What it checks").
 
 Every model is audited one way, on arrays of its links (:class:`~rbi.formats.robot.LinkColumns`:
 a URDF's reader gives them as columns, the SDF and MJCF readers' links are laid into them), into
@@ -22,7 +21,6 @@ where screens on those stacks leave something to say. One link's audit is a row 
 from __future__ import annotations
 
 import math
-import sys
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple
@@ -31,50 +29,29 @@ import numpy as np
 
 from rbi.core.inertia import symmetric_eigen
 from rbi.core.mass import MassProperties
-from rbi.core.validity import declared_inertia_problem, finite
+from rbi.core.validity import finite
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import SOLID_KINDS, Link, LinkColumns, RobotModel, stacked
-from rbi.formats.robot_files import inertia_problem_text
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
 from rbi.formats.robot_paths import parse_package_paths
+from rbi.memory import collector_paused
 from rbi.reprs import Result, Rows, json_ready, plain
+from rbi.robot.flags import (
+    SOLID_DENSITY_RANGE,
+    Flag,
+    comparison,
+    link_flags,
+    ratio_text,
+    screens,
+    worst_ratio,
+)
 from rbi.robot.statics import joint_torques
 from rbi.robot.tree import parse_joint_values, placement, stack_apply, totals
 from rbi.spec.materials import MATERIAL_DENSITIES_SI, canonical_name, unknown_material_message
 from rbi.text import number, vector_text
 
-ERROR_RATIO = 10.0
-"""A declared moment beyond this factor of the geometry's (either way) is an error."""
-
-USABLE_MOMENT = 1e-9
-"""A geometry's principal moment below this fraction of its largest gives no ratio (``-``,
-null): a rod's moment about its own axis is nothing to divide by."""
-
-WARNING_RATIO = 2.0
-"""A declared moment beyond this factor of the geometry's (either way) is a warning."""
-
-SOLID_DENSITY_RANGE = (50.0, 25000.0)
-"""Densities (kg/m³) a link's material can have: from rigid foam to above osmium (22,590)."""
-
 GEOMETRY_CHOICES = ("collision", "visual", "none")
 """Which geometry gives a link's volume; ``none`` reads none (the declared inertials alone)."""
-
-COM_MARGIN = 0.01
-"""A declared centre of mass may lie this fraction of the geometry's size outside its bounds."""
-
-
-@dataclass
-class Flag:
-    """``code`` (unphysical, placeholder, mismatch, density, massless), ``level`` (error,
-    warning), ``message`` (what is wrong, with the numbers) and ``summary`` (a few words)."""
-
-    code: str
-    level: str
-    message: str
-    summary: str = ""
-
-    def as_dict(self) -> dict[str, str]:
-        return {"code": self.code, "level": self.level, "message": self.message}
 
 
 @dataclass(frozen=True)
@@ -151,7 +128,7 @@ class LinkAudit:
     def worst_ratio(self) -> float | None:
         """The ratio of a declared moment to the geometry's farthest from 1 (by factor), or None
         when there is none (no geometry, no declared inertia)."""
-        return None if self.ratios is None else _worst_ratio(self.ratios)
+        return None if self.ratios is None else worst_ratio(self.ratios)
 
     @property
     def given_ratios(self) -> list[float | None] | None:
@@ -164,15 +141,6 @@ class LinkAudit:
         """:attr:`worst_ratio` as the table shows it (:func:`ratio_text`; ``-`` for none)."""
         worst = self.worst_ratio
         return "-" if worst is None else ratio_text(worst)
-
-
-def ratio_text(ratio: float) -> str:
-    """A moment ratio for people: 3 significant digits, ``-`` for one the geometry cannot give
-    (NaN), ``>1.8e+308`` for one past the largest double (the declared moment is finite, the
-    geometry's too small to divide it by)."""
-    if math.isnan(ratio):
-        return "-"
-    return f">{sys.float_info.max:.2g}" if math.isinf(ratio) else f"{ratio:.3g}"
 
 
 @dataclass(repr=False)
@@ -199,7 +167,8 @@ class AuditReport(Result):
     def links(self) -> list[LinkAudit]:
         """One :class:`LinkAudit` per link, in file order (made when first asked for)."""
         if self._links is None:
-            self._links = self.audited.rows()
+            with collector_paused():  # a large robot's rows are millions of new objects
+                self._links = self.audited.rows()
         return self._links
 
     @property
@@ -271,11 +240,13 @@ class AuditReport(Result):
         links' millions of numbers again."""
         total = self.total
         more = {"moments": self.total_moments, "frame": total.frame, "left_out": list(self.left_out)}
+        with collector_paused():  # a large robot's JSON is millions of new objects
+            links = self.audited.to_dicts()
         found = {
             "robot": self.model.name,
             "format": self.model.format,
             "units": {"length": "m", "mass": "kg"},
-            "links": self.audited.to_dicts(),
+            "links": links,
             "total": plain(total.to_dict() | more),
             "joints": [
                 {
@@ -559,7 +530,7 @@ class AuditedLinks:
                 self.implied[row] = mass / self.volume[row]
 
     def _compare(self) -> None:
-        """The declared mass properties against the geometry's, on stacks (:func:`_compared`),
+        """The declared mass properties against the geometry's, on stacks (:func:`compared`),
         of the links that declare a mass other than 0 and whose geometry has mass."""
         columns, n = self.columns, len(self.columns)
         self.compared = columns.declared & (columns.inertials.mass != 0) & self.has_mass & (self.mass != 0)
@@ -568,7 +539,7 @@ class AuditedLinks:
         self.inside, self.clean = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
         self.offsets: list[float | None] = [None] * n
         moments, axes = np.linalg.eigh(self.inertia[rows])
-        ratios, offsets, inside, near = _compared(
+        ratios, offsets, inside, near = comparison(
             moments,
             axes,
             columns.inertials.inertia_about_com[rows],
@@ -585,7 +556,7 @@ class AuditedLinks:
         self.clean[rows] = near & inside & (implied >= low_density) & (implied <= high_density)
 
     def _flag(self) -> None:
-        """Each link's flags (:func:`_flags`), asked of the links the screens on the stacks do
+        """Each link's flags (:func:`link_flags`), asked of the links the screens on the stacks do
         not clear: a declared inertial certainly physical, no placeholder, a clean comparison
         (or none); no inertial on a link no joint moves."""
         columns, n = self.columns, len(self.columns)
@@ -594,14 +565,14 @@ class AuditedLinks:
         kinds = zip(columns.joint_rows, columns.joint_kinds)
         moving[[row for row, kind in kinds if kind != "fixed" and columns.parents[row] != n]] = True
         declared = np.flatnonzero(columns.declared).tolist()
-        physical, maybe = _screens(
+        physical, maybe = screens(
             n, declared, columns.inertials.inertia_about_com[declared], columns.written[declared]
         )
         clear = heavy & physical & ~maybe & (~self.compared | self.clean)
         clear |= ~columns.declared & ~moving
         carried = _carried(columns)
         for row in np.flatnonzero(~clear).tolist():
-            found = _flags(self.model, self.row(row), carried[row], self.moments[row], self.inside[row])
+            found = link_flags(self.model, self.row(row), carried[row], self.moments[row], self.inside[row])
             if found:
                 self.flags[row] = self.flags.get(row, []) + found
 
@@ -806,74 +777,6 @@ def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> _Sha
     return _Shapes(rows, list(distinct), np.concatenate(which), np.concatenate(R), np.concatenate(p), sources)
 
 
-def _screens(n: int, declared: list[int], inertias: np.ndarray, written: np.ndarray) -> tuple:
-    """(physical, maybe_placeholder), (n,) each, for n links of which the ``declared`` rows
-    declare ``inertias`` (about the centre of mass, link axes) as ``written`` (k, 3, 3):
-    :func:`_certainly_physical` and :func:`_maybe_placeholder` (False and True for the others)."""
-    physical = np.zeros(n, dtype=bool)
-    maybe_placeholder = np.ones(n, dtype=bool)
-    if declared:
-        physical[declared] = _certainly_physical(inertias)
-        maybe_placeholder[declared] = _maybe_placeholder(written)
-    return physical, maybe_placeholder
-
-
-def _compared(moments, axes, inertia, com, low, high, geometry_com) -> tuple:
-    """The declared mass properties against the geometry's for k links on stacks (one link:
-    k = 1, :func:`_geometry_flags`): each link's geometry's principal ``moments`` (k, 3) and
-    ``axes`` (k, 3, 3), the declared ``inertia`` (k, 3, 3, kg·m²) and ``com`` (k, 3, m), the
-    geometry's bounds and centre of mass (k, 3, m), all in the link frame. Returns (ratios
-    (k, 3): each declared moment about the geometry's principal axes over the geometry's, NaN
-    where the geometry's is too small to divide by; com offsets (None where the geometry has
-    no size); inside (k,): the declared centre of mass within the bounds (with the margin);
-    near (k,): every ratio within the warning range)."""
-    along = np.einsum("nji,njk,nki->ni", axes, inertia, axes)
-    usable = moments > USABLE_MOMENT * np.max(moments, axis=1)[:, None]
-    with np.errstate(all="ignore"):
-        ratios = np.where(usable, along / moments, np.nan)
-    size = _norms(high - low)
-    offset = _norms(com - geometry_com)
-    with np.errstate(all="ignore"):
-        offset = offset / size
-    margin = (COM_MARGIN * size)[:, None]
-    inside = ~(np.any(com < low - margin, axis=1) | np.any(com > high + margin, axis=1))
-    near = np.all(np.isnan(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
-    offsets = [value if sized else None for value, sized in zip(offset.tolist(), (size > 0).tolist())]
-    return ratios, offsets, inside, near
-
-
-def _norms(rows: np.ndarray) -> np.ndarray:
-    """``np.linalg.norm`` of each row of a (k, 3) array: the square root of the row's dot product
-    with itself, as a stack of one-row products (the same call as for one vector)."""
-    return np.sqrt(np.matmul(rows[:, None, :], rows[:, :, None])[:, 0, 0])
-
-
-def _certainly_physical(stack: np.ndarray) -> np.ndarray:
-    """Each inertia of the (N, 3, 3) stack that certainly passes :func:`declared_inertia_problem`:
-    entries below 1e300 (no sum of them overflows), exactly symmetric, principal moments not
-    negative and meeting the triangle inequality with no tolerance at all (the function forgives
-    a tolerance, never less)."""
-    ok = np.all(np.abs(stack) < 1e300, axis=(1, 2)) & np.all(stack == np.swapaxes(stack, 1, 2), axis=(1, 2))
-    if np.any(ok):
-        chosen = stack[ok]
-        moments = np.linalg.eigvalsh(0.5 * chosen + 0.5 * np.swapaxes(chosen, 1, 2))
-        ok[ok] = (moments[:, 0] >= 0) & (moments[:, 0] + moments[:, 1] >= moments[:, 2])
-    return ok
-
-
-def _maybe_placeholder(written: np.ndarray) -> np.ndarray:
-    """Each written inertia of the (N, 3, 3) stack :func:`_placeholder` might call a placeholder:
-    no products, and three equal moments or moments within 1e-6 (in log10) of round values (the
-    test itself allows 1e-12)."""
-    diagonal = np.diagonal(written, axis1=1, axis2=2)
-    no_products = np.all(written[:, _OFF_DIAGONAL] == 0, axis=1)
-    equal = np.all(diagonal == diagonal[:, :1], axis=1)
-    with np.errstate(divide="ignore", invalid="ignore"):
-        exponent = np.log10(np.abs(diagonal))
-        round_ = (diagonal == 0) | (np.abs(exponent - np.round(exponent)) < 1e-6)
-    return no_products & (equal | np.all(round_, axis=1))
-
-
 def _sum(parts: list[MassProperties]) -> MassProperties:
     """``MassProperties.sum(parts)``; for one part of positive mass, the value that sum gives
     without its arithmetic: the part with each -0.0 made 0.0 (the sum adds a zero offset to the
@@ -891,140 +794,3 @@ def _sum(parts: list[MassProperties]) -> MassProperties:
         ):
             return MassProperties(part.mass, part.center_of_mass + 0.0, inertia + 0.0, part.frame)
     return MassProperties.sum(parts)
-
-
-def _flags(model: RobotModel, each: LinkAudit, carries_mass: bool, moments, inside) -> list[Flag]:
-    """The link's flags (other than ``mesh``) from its row (``moments``: its geometry's principal
-    moments; ``inside``: its declared centre of mass within the geometry's bounds)."""
-    declared, link = each.declared, each.link
-    if declared is None or declared.mass == 0.0:
-        return _zero_mass_flags(link, declared, carries_mass)
-    flags: list[Flag] = []
-    I = declared.inertia_about_com
-    if declared.mass < 0:
-        flags.append(Flag("unphysical", "error", f"mass {declared.mass:.6g} kg is negative", "negative mass"))
-    problem = declared_inertia_problem(declared.mass, I)
-    if problem is not None:
-        flags.append(Flag("unphysical", "error", inertia_problem_text(problem, I), problem.kind))
-    if link.inertial is not None and link.inertial.source == "default":
-        return flags + [Flag("placeholder", "warning", _DEFAULT_TEXT, "SDFormat's default inertial")]
-    placeholder = _placeholder(model, link)
-    if each.ratios is not None:
-        flags += _geometry_flags(each, placeholder, moments, inside)
-    elif placeholder:
-        flags.append(Flag("placeholder", "warning", f"{placeholder} (no geometry to compare with)"))
-    return flags
-
-
-_DEFAULT_TEXT = (
-    "no <inertial>: SDFormat, Gazebo and Drake give the link mass 1 kg and a unit inertia "
-    "(1 kg·m² about each axis) at its origin; declare its own"
-)
-
-
-def _zero_mass_flags(link: Link, declared: MassProperties | None, carries_mass: bool) -> list[Flag]:
-    """A link without mass: ``unphysical`` when it declares moments anyway; ``massless`` when a
-    joint moves it (an error when nothing it carries has mass either)."""
-    flags = []
-    if declared is not None and np.any(declared.inertia_about_com != 0):
-        moments = ", ".join(f"{m:.4g}" for m in np.linalg.eigvalsh(declared.inertia_about_com))
-        flags.append(
-            Flag(
-                "unphysical",
-                "error",
-                f"mass 0 with principal moments {moments} kg·m²: no body without mass has a moment "
-                "of inertia (simulators disagree on what it means)",
-                "mass 0 with moments",
-            )
-        )
-    if not link.moves:
-        return flags
-    what = "no <inertial>" if declared is None else "mass 0"
-    if carries_mass:
-        text = f"moved by a joint but has {what}; the links it carries have mass, so the joint still moves a mass"
-        flags.append(Flag("massless", "warning", text))
-    else:
-        text = (
-            f"moved by a joint but has {what}, and nothing it carries has mass: a simulator cannot "
-            "integrate that joint"
-        )
-        flags.append(Flag("massless", "error", text))
-    return flags
-
-
-def _geometry_flags(each: LinkAudit, placeholder: str | None, moments, inside) -> list[Flag]:
-    """``placeholder``/``mismatch`` from the moment ratios, ``mismatch`` for a centre of mass
-    outside the geometry, ``density`` for an implausible implied density."""
-    flags: list[Flag] = []
-    ratios, source, implied = each.ratios, each.source, each.implied_density
-    worst = _worst_ratio(ratios)
-    level = None
-    if worst is not None and (worst > ERROR_RATIO or worst < 1 / ERROR_RATIO):
-        level = "error"
-    elif (worst is not None and (worst > WARNING_RATIO or worst < 1 / WARNING_RATIO)) or (
-        placeholder and _spread(moments) > 1.5
-    ):
-        level = "warning"
-    if level is not None:
-        code = "placeholder" if placeholder else "mismatch"
-        texts = ", ".join(ratio_text(r) for r in ratios)
-        detail = f"declared moments about the geometry's principal axes are {texts} × the {source} geometry's at the same mass"
-        if placeholder:
-            detail = f"{placeholder}; {detail}"
-        summary = "" if worst is None else f"a moment {ratio_text(worst)} × the {source} geometry's"
-        flags.append(Flag(code, level, detail, summary))
-    if not inside:
-        text = (
-            "the declared centre of mass lies outside the geometry's bounds (offset "
-            f"{each.com_offset:.3g} of the geometry's size from its centre of mass)"
-        )
-        flags.append(Flag("mismatch", "warning", text))
-    low, high = SOLID_DENSITY_RANGE
-    if implied is not None and not low <= implied <= high:
-        text = (
-            f"implied density {implied:.4g} kg/m³ (mass {each.declared.mass:.6g} kg / {source} "
-            f"volume {each.volume:.4g} m³) is outside what a solid material has ({low:g} to {high:g} kg/m³)"
-        )
-        flags.append(Flag("density", "warning", text))
-    return flags
-
-
-def _spread(moments) -> float:
-    moments = np.asarray(moments, dtype=float)
-    return float(moments.max() / moments.min()) if moments.min() > 0 else float("inf")
-
-
-def _worst_ratio(ratios) -> float | None:
-    """The ratio farthest from 1 (by factor; one past the largest double is inf), or None when
-    there is none."""
-    given = ratios[~np.isnan(ratios)]
-    if given.size == 0:
-        return None
-    extreme = [float(given.max()), float(given.min())]
-    return max(extreme, key=lambda r: abs(np.log(r)) if r > 0 else np.inf)
-
-
-def _round(value: float) -> bool:
-    if value == 0:
-        return True
-    exponent = np.log10(abs(value))
-    return abs(exponent - round(exponent)) < 1e-12
-
-
-def _placeholder(model: RobotModel, link: Link) -> str | None:
-    """Words for a placeholder-looking inertia, or None."""
-    inertial = link.inertial
-    I = inertial.written_inertia
-    if np.any(I[~np.eye(3, dtype=bool)] != 0):
-        return None
-    diagonal = np.diag(I)
-    if model.format == "mjcf" and inertial.source == "geoms":
-        return None
-    if np.all(diagonal == diagonal[0]) and diagonal[0] > 0:
-        return f"three equal moments ({diagonal[0]:.6g} kg·m²) with no products, as exporters write a placeholder"
-    if all(_round(v) for v in diagonal):
-        return (
-            f"moments of round values ({', '.join(f'{v:g}' for v in diagonal)} kg·m²) with no products, as "
-            "exporters write a placeholder"
-        )
-    return None

@@ -22,7 +22,8 @@ from rbi.files.safe import shown
 from rbi.formats.inertial_xml import inertial_text, xml_comment
 from rbi.formats.robot_xml import _tag_end
 from rbi.formats.urdf import attach_elements
-from rbi.robot.audit import ERROR_RATIO, USABLE_MOMENT, AuditReport, LinkAudit
+from rbi.robot.audit import AuditReport, LinkAudit
+from rbi.robot.flags import ERROR_RATIO, USABLE_MOMENT
 
 FIXED_CODES = ("unphysical", "placeholder", "mismatch", "massless")
 
