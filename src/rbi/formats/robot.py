@@ -477,12 +477,6 @@ class RobotModel:
         reason = "no <inertial> element" + (" and no geoms with mass" if self.format == "mjcf" else "")
         return [(each.label, reason) for each in self.links if each.inertial is None]
 
-    def link(self, name: str) -> Link | None:
-        for each in self.links:
-            if each.name == name:
-                return each
-        return None
-
 
 # --- reading numbers ----------------------------------------------------------------------------
 

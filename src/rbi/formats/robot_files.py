@@ -10,9 +10,10 @@ frame. What is read from each format, and the sign of the products (copied uncha
 tabled in docs/import.md ("What is read from each format").
 
 Hostile files are refused as :class:`InputError` (one line; :mod:`rbi.formats.robot_xml`):
-XML entity declarations and external references, files over :data:`MAX_FILE_BYTES`, nesting
-deeper than :data:`MAX_DEPTH`, unknown encodings, duplicate link names, and any number that is
-not a plain finite decimal.
+XML entity declarations and external references, files over
+:data:`~rbi.formats.robot_xml.MAX_FILE_BYTES`, nesting deeper than
+:data:`~rbi.formats.robot_xml.MAX_DEPTH`, unknown encodings, duplicate link names, and any
+number that is not a plain finite decimal.
 """
 
 from __future__ import annotations
@@ -29,7 +30,6 @@ from rbi.formats.mjcf import read_mjcf
 from rbi.formats.paths import _outside_allowed
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot import short as _short
-from rbi.formats.robot_xml import MAX_DEPTH, MAX_FILE_BYTES  # noqa: F401 - the limits, named here too
 from rbi.formats.sdf import read_sdf
 from rbi.formats.urdf import plain_text, read_urdf
 from rbi.formats.xacro_sandbox import expand_xacro
