@@ -345,9 +345,7 @@ def arrays_problem(vertices: np.ndarray, faces: np.ndarray) -> str | None:
     coordinate that is not a finite number or too large to square), or None."""
     vertices = np.asarray(vertices)  # float32 or float64 as read: no copy
     faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
-    if vertices.ndim != 2 or vertices.shape[1] != 3:
-        return "holds no triangles"
-    if faces.shape[0] == 0 or vertices.shape[0] == 0:
+    if vertices.ndim != 2 or vertices.shape[1] != 3 or faces.shape[0] == 0 or vertices.shape[0] == 0:
         return "holds no triangles"
     if faces.min() < 0 or faces.max() >= vertices.shape[0]:
         bad = int(np.flatnonzero((faces < 0).any(axis=1) | (faces >= vertices.shape[0]).any(axis=1))[0])

@@ -309,13 +309,9 @@ def _polygons(primitive, stride: int, limit: int):
     for p in primitive.all("p"):
         corners = _corners(p, stride, limit)
         if kind == "tristrips":
-            n = len(corners) - 2
-            if n > 0:
-                order = np.arange(n)
-                a, b, c = order, order + 1, order + 2
-                odd = order % 2 == 1
-                a[odd], b[odd] = b[odd].copy(), a[odd].copy()
-                yield corners[np.stack([a, b, c], axis=1).ravel()]
+            order = np.arange(max(len(corners) - 2, 0))
+            flip = order % 2  # every other triangle of a strip runs the other way round
+            yield corners[np.stack([order + flip, order + 1 - flip, order + 2], axis=1).ravel()]
         else:
             yield from _fans(corners, np.array([len(corners)]))
 
