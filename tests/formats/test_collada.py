@@ -29,6 +29,10 @@ def cube_dae(unit: str = "1", up: str = "Z_UP", transform: str = "", primitive: 
         tris = np.concatenate([quads[:, [0, 1, 2]], quads[:, [0, 2, 3]]]).ravel()
         pairs = " ".join(f"{i} 0" for i in tris)
         body = f'<triangles count="12"><input semantic="VERTEX" source="#v" offset="0"/><input semantic="NORMAL" source="#v" offset="1"/><p>{pairs}</p></triangles>'
+    elif primitive == "tristrips":  # one strip per face, a b d c: its second triangle runs d b c
+        quads = np.array(CUBE_QUADS.split(), int).reshape(6, 4)
+        strips = "".join("<p>" + " ".join(map(str, q[[0, 1, 3, 2]])) + "</p>" for q in quads)
+        body = f'<tristrips count="6"><input semantic="VERTEX" source="#v" offset="0"/>{strips}</tristrips>'
     else:  # one fan per face
         quads = np.array(CUBE_QUADS.split(), int).reshape(6, 4)
         fans = "".join("<p>" + " ".join(map(str, q)) + "</p>" for q in quads)
@@ -47,7 +51,7 @@ def cube_dae(unit: str = "1", up: str = "Z_UP", transform: str = "", primitive: 
 </COLLADA>"""
 
 
-@pytest.mark.parametrize("primitive", ["polylist", "triangles", "trifans"])
+@pytest.mark.parametrize("primitive", ["polylist", "triangles", "trifans", "tristrips"])
 def test_cube_every_primitive(primitive):
     vertices, faces = parse_collada(cube_dae(primitive=primitive).encode())
     assert faces.shape == (12, 3)
