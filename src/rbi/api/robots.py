@@ -1,11 +1,13 @@
-"""Robot files: `audit` one, `import_robot` its links (`RobotImport`, `ImportedLink`)."""
+"""Robot files: `audit` one, `import_robot` its links (`RobotImport`, `ImportedLink`) or a
+STEP file's solids."""
 
 from __future__ import annotations
 
 import difflib
 import os
+import re
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
@@ -13,7 +15,7 @@ import numpy as np
 from rbi.api.outputs import Destination, checked_output, path_text
 from rbi.core.rotation import matrix_to_quaternion
 from rbi.errors import ArgumentError, SpecError, literal
-from rbi.files.output import write_output
+from rbi.files.output import check_distinct, write_output
 from rbi.formats.paths import outside_paths_are_allowed
 from rbi.formats.robot_files import link_problems, link_spec, read_robot
 from rbi.formats.robot_paths import parse_package_paths
@@ -22,6 +24,7 @@ from rbi.robot import audit as run_audit
 from rbi.robot.audit import AuditReport, AuditSettings
 from rbi.robot.fix import check_out_not_read
 from rbi.robot.specs import robot_spec
+from rbi.spec.from_step import StepImport, import_step
 from rbi.spec.yaml_writer import comment, dump
 from rbi.text import number, vector_text
 
@@ -141,6 +144,8 @@ class RobotImport(Result):
     skipped: list[tuple[str, str]]
     model: Any = field(default=None, repr=False)
     """The file as rbi reads it (its links, with their geometry)."""
+    written: dict[int, str] = field(default_factory=dict)
+    """Where each link's spec was written (link index → the path as given), when it was."""
 
     def robot_yaml(self) -> str:
         """The whole robot as one spec (YAML text under a comment header): one custom part per
@@ -180,9 +185,9 @@ class RobotImport(Result):
         columns = (self.link_word, "mass kg", "centre of mass m", "principal moments kg·m²", "problems")
         return [Rows(f"{self.path}: {len(self.links)} {self.link_word}(s) imported", columns, cells)]
 
-    def to_dict(self, written: dict[int, str] | None = None) -> dict[str, Any]:
+    def to_dict(self) -> dict[str, Any]:
         """What ``rbi import --format json`` prints, less ``"file"``: each link's ``"file"`` is
-        where its spec was written (``written``: link index → path), else None."""
+        where its spec was written (:attr:`written`), else None."""
         links = [
             {
                 "name": each.name,
@@ -192,7 +197,7 @@ class RobotImport(Result):
                 "inertia": each.inertia,
                 "inertial_quaternion": each.inertial_quaternion,
                 "problems": each.problems,
-                "file": (written or {}).get(each.index),
+                "file": self.written.get(each.index),
             }
             for each in self.links
         ]
@@ -206,11 +211,11 @@ class RobotImport(Result):
             }
         )
 
-    def csv_rows(self, written: dict[int, str] | None = None) -> list[dict[str, Any]]:
+    def csv_rows(self) -> list[dict[str, Any]]:
         """``rbi import --format csv``: one row a link, ``ok`` for no problems."""
         return [
             {k: v for k, v in row.items() if k != "problems"} | {"ok": not row["problems"]}
-            for row in self.to_dict(written)["links"]
+            for row in self.to_dict()["links"]
         ]
 
 
@@ -219,21 +224,38 @@ def import_robot(
     *,
     links: Sequence[str] | None = None,
     package_paths: dict[str, str] | Sequence[str] | None = None,
-) -> RobotImport:
+    out: str | os.PathLike[str] | None = None,
+    density: float | None = None,
+    material: str | None = None,
+) -> RobotImport | StepImport:
     """Read the links of a robot file (URDF, SDF, MJCF) that have mass properties, as ``rbi
     import`` does: each one's mass, centre of mass and inertia (SI, link frame) and its spec.
+    A STEP file (``.step``, ``.stp``; needs the extra ``cad``) gives its solids instead: a
+    ``StepImport`` (``.spec``, one ``shape: step`` part per solid; ``.yaml()``, ``.to_dict()``).
 
     Args:
         robot_file: the file's path.
         links: the names of the links to import (MJCF: bodies), in order; None: every one.
         package_paths: as `audit`'s, for ``package://NAME/`` paths.
+        out: write the specs there, every path checked before any is written: a folder
+            (``DIR/``: one ``NAME.yaml`` a link) or one ``.yaml`` file (one link; a STEP file's
+            spec, naming the STEP file relative to it). ``.written``: link index → path.
+        density: a STEP file's solids' density, kg/m³ (default 1000, a placeholder).
+        material: instead of ``density``, a built-in material's.
 
     Raises:
-        SpecError: the file cannot be read or is malformed; no link has mass properties.
-        ValueError: a name in ``links`` names no link with an ``<inertial>``.
+        SpecError: the file cannot be read or is malformed; no link has mass properties;
+            ``out`` cannot be written.
+        ValueError: a name in ``links`` names no link with an ``<inertial>``; ``density`` or
+            ``material`` for a robot file, ``links`` for a STEP file.
     """
+    path = path_text(robot_file)
+    if path.lower().endswith((".step", ".stp")):
+        return _import_step(path, links, out, density, material)
+    if density is not None or material is not None:
+        raise ArgumentError("density" if density is not None else "material", "applies to STEP files only")
     packages = parse_package_paths(package_paths)
-    robot = read_robot(path_text(robot_file), packages)
+    robot = read_robot(path, packages)
     chosen = _chosen_links(robot, _link_names(links))
     if not chosen:
         raise SpecError(f"{robot.path}: no {robot.link_word} with an <inertial> element to import")
@@ -251,7 +273,64 @@ def import_robot(
         )
         for link in chosen
     ]
-    return RobotImport(robot.path, robot.format, robot.name, robot.link_word, imported, robot.skipped, robot)
+    found = RobotImport(robot.path, robot.format, robot.name, robot.link_word, imported, robot.skipped, robot)
+    return found if out is None else _written(found, os.fspath(out))
+
+
+def _import_step(path: str, links: Any, out: Any, density: float | None, material: str | None) -> StepImport:
+    """A STEP file imported as `import_robot` does, its spec written at ``out`` (checked before
+    the file is read)."""
+    if links:
+        raise ArgumentError(
+            "links", "a STEP file has solids, not links: the spec lists them all (pick with solid:)"
+        )
+    target = None if out is None else checked_output(out, ("yaml", "yml"), path, "out")
+    home = None if out is None else os.path.dirname(os.path.abspath(os.fspath(out)))
+    imported = import_step(path, density=density, material=material, relative_to=home)
+    if target is not None:
+        write_output(target, imported.yaml())
+    return imported
+
+
+def _written(robot: RobotImport, out: str) -> RobotImport:
+    """``robot`` with each link's spec written under ``out`` (a folder: one ``NAME.yaml`` a link,
+    :func:`_file_names`; else one link's file), every path checked before any is written."""
+    links = robot.links
+    formats: tuple[str, ...] = ("yaml", "yml")
+    if os.path.isdir(out) or out.endswith(("/", os.sep)):
+        if not os.path.isdir(out):
+            raise ArgumentError("out", f"{literal(out, quoted=False)}: folder does not exist")
+        paths, formats = [os.path.join(out, name) for name in _file_names(links, robot.link_word)], ("yaml",)
+    elif len(links) == 1:
+        paths = [out]
+    else:
+        raise ArgumentError(
+            "out",
+            f"{literal(out, quoted=False)}: {len(links)} {robot.link_word}s to import; name a folder "
+            "or pick one with {links}",
+        )
+    targets = [checked_output(each, formats, robot.path, "out") for each in paths]
+    check_distinct(targets)
+    for target, each in zip(targets, links):
+        write_output(target, each.yaml)
+    return replace(robot, written={each.index: target.given for target, each in zip(targets, links)})
+
+
+_UNSAFE = re.compile(r"[^A-Za-z0-9._-]+")
+
+
+def _file_names(links: list[ImportedLink], word: str) -> list[str]:
+    """A safe, distinct ``NAME.yaml`` for each link (characters other than letters, digits,
+    ``.``, ``_`` and ``-`` become ``_``; a clash gets the link's index appended)."""
+    names, seen = [], set()
+    for each in links:
+        stem = _UNSAFE.sub("_", each.name or "").strip("._") or f"{word}{each.index}"
+        stem = stem[:200]
+        if stem.lower() in seen:
+            stem = f"{stem}_{each.index}"
+        seen.add(stem.lower())
+        names.append(stem + ".yaml")
+    return names
 
 
 def _inertial_quaternion(inertial: Any) -> np.ndarray:

@@ -490,21 +490,14 @@ class AuditedLinks:
         self.mass[rows], self.implied[rows], self.inertia[rows] = mass[heavy], implied[heavy], scaled[heavy]
 
     def _measure_one(self, row: int, settings: AuditSettings, notes: list[str]) -> None:
-        """Row ``row``'s geometry measured one piece at a time (:func:`link_geometry`), and a
-        ``mesh`` flag for each mesh ``auto`` could not integrate exactly."""
-        model, link = self.model, self.columns.link(row)
-        fallbacks: list = []
-        source, pieces = link_geometry(
-            model, link, settings.geometry, settings.mesh_inertia, settings.mesh_repair, notes, fallbacks
-        )
+        """Row ``row``'s geometry measured one piece at a time (:func:`_pieces`), and a ``mesh``
+        flag for each mesh ``auto`` could not integrate exactly."""
+        model, fallbacks = self.model, []
+        source, pieces, parts = _pieces(model, self.columns.link(row), settings, notes, fallbacks)
         if fallbacks:
             self.flags[row] = [
                 Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks
             ]
-        if model.format == "mjcf":  # each geom at its own mass
-            parts = [d.unit.with_mass(m) for d, m in pieces]
-        else:  # at density 1
-            parts = [d.unit for d, _ in pieces]
         try:
             unit = _sum(parts)
         except ValueError:  # no pieces, or no mass in the geometry
@@ -517,10 +510,10 @@ class AuditedLinks:
             mass = unit.mass
         elif settings.density is not None:
             mass = settings.density * unit.mass
-        solid = [d.measure for d, _ in pieces if not d.shell]
+        solid = [d.measure for d in pieces if not d.shell]
         self.measured[row], self.sources[row], self.com[row] = True, source, unit.center_of_mass
-        self.low[row] = np.min([d.low for d, _ in pieces], axis=0)
-        self.high[row] = np.max([d.high for d, _ in pieces], axis=0)
+        self.low[row] = np.min([d.low for d in pieces], axis=0)
+        self.high[row] = np.max([d.high for d in pieces], axis=0)
         if solid:
             self.volume[row] = float(sum(solid))
         if mass is not None:
@@ -690,47 +683,36 @@ def _carried(columns: LinkColumns) -> list[bool]:
     return below[: len(parents)]
 
 
-def chosen_geoms(link: Link, geometry: str) -> tuple[list, str]:
-    """(geoms, source) a link's geometry is measured from: its ``geometry`` ("collision" or
-    "visual") elements, or the other kind when it has none of those."""
+def _pieces(
+    model: RobotModel, link: Link, settings: AuditSettings, notes: list[str], fallbacks: list
+) -> tuple[str, list, list[MassProperties]]:
+    """The link's geometry as :func:`distribution` measures it, piece by piece: (its source,
+    the pieces with a volume, their mass properties: MJCF geoms at their own mass or density,
+    the others at density 1), from its ``settings.geometry`` elements, or the other kind's when
+    it has none of those. ``fallbacks`` collects the meshes ``auto`` could not integrate
+    exactly."""
+    geometry = settings.geometry
+    other = "visual" if geometry == "collision" else "collision"
     first, second = (
         (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
     )
-    if first:
-        return first, geometry
-    return second, "visual" if geometry == "collision" else "collision"
-
-
-def link_geometry(
-    model: RobotModel,
-    link: Link,
-    geometry: str,
-    mesh_inertia: str,
-    mesh_repair: bool = False,
-    notes: list[str] | None = None,
-    fallbacks: list | None = None,
-):
-    """(source, pieces) for the link: each piece (distribution, mass or None); MJCF geoms carry
-    their own mass or density. ``fallbacks`` collects the meshes ``auto`` could not integrate
-    exactly."""
-    if geometry == "none":
-        return None, []
-    geoms, source = chosen_geoms(link, geometry)
     where = f"{model.path}: {link.label}: "
-    pieces = []
-    for geom in geoms:
-        found = distribution(geom, mesh_inertia, where, mesh_repair, notes, fallbacks)
+    pieces, parts = [], []
+    for geom in first or second:
+        found = distribution(geom, settings.mesh_inertia, where, settings.mesh_repair, notes, fallbacks)
         if found is None or not found.measure > 0:
             continue
-        own_mass = None
-        if model.format == "mjcf":
-            own_mass = geom.mass if geom.mass is not None else geom.density * found.measure
-        pieces.append((found, own_mass))
-    return source, pieces
+        pieces.append(found)
+        if model.format == "mjcf":  # each geom at its own mass
+            mass = geom.mass if geom.mass is not None else geom.density * found.measure
+            parts.append(found.unit.with_mass(mass))
+        else:  # at density 1
+            parts.append(found.unit)
+    return geometry if first else other, pieces, parts
 
 
 class _Shapes(NamedTuple):
-    """The links whose geometry (as :func:`link_geometry` chooses it) is one solid primitive:
+    """The links whose geometry (as :func:`_pieces` chooses it) is one solid primitive:
     their ``rows``, each one's shape (``distinct[which[k]]``: kind and size in m), pose in the
     link frame (``R`` (k, 3, 3), ``p`` (k, 3)) and ``sources`` (collision or visual)."""
 
@@ -744,7 +726,7 @@ class _Shapes(NamedTuple):
 
 def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> _Shapes | None:
     """The :class:`_Shapes` of a URDF or SDF model (None: none, or MJCF): each link's ``geometry``
-    elements, or the other kind's when it has none of those (as :func:`chosen_geoms` chooses),
+    elements, or the other kind's when it has none of those (as :func:`_pieces` chooses),
     when they are one solid primitive; what :func:`_primitives_in_bulk` measures."""
     if geometry == "none" or model.format == "mjcf":
         return None
