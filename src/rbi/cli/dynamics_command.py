@@ -69,25 +69,17 @@ def dynamics(
     w = parse_vector(omega, "--omega")
     body = rbi.load(file)
     about_label, point = parse_about(about, body)
-    given = _given(about_label, alpha, accel, force, torque)
-    emit_result(
-        format.value, body.dynamics(w, about=point if about_label == "point" else about_label, **given)
+    # the API decides which apply: forward without --force about a point other than the CoM
+    # holds the point (at --accel); otherwise --accel goes with --alpha only
+    result = body.dynamics(
+        w,
+        about=point if about_label == "point" else about_label,
+        alpha=None if alpha is None else parse_vector(alpha, "--alpha"),
+        point_acceleration=_vector(accel, "--accel"),
+        force=_vector(force, "--force"),
+        torque=_vector(torque, "--torque"),
     )
-
-
-def _given(about_label: str, alpha, accel, force, torque) -> dict:
-    """The vectors the options give, as `rbi.Body.dynamics` takes them (each parsed where the
-    command uses it; the API refuses an inertia about the point that overflows or, for forward
-    dynamics, is singular)."""
-    if alpha is not None:
-        return {
-            "alpha": parse_vector(alpha, "--alpha"),
-            "point_acceleration": _vector(accel, "--accel"),
-        }
-    given = {"torque": _vector(torque, "--torque")}
-    if force is None and about_label != "com":  # the point is held (a pivot)
-        return given | {"point_acceleration": _vector(accel, "--accel")}
-    return given | {"force": _vector(force, "--force")}
+    emit_result(format.value, result)
 
 
 def _vector(text: str | None, option: str):
