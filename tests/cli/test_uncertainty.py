@@ -49,6 +49,18 @@ def test_monte_carlo_is_reproducible_and_says_whether_linear_is_validated():
     assert "linear ok" in table and "Monte Carlo, 20,000 draws" in table
 
 
+@pytest.mark.parametrize("method", ["linear", "monte-carlo"])
+def test_every_quantity_has_its_unit_and_the_tables_fit_80_columns(method, monkeypatch):
+    monkeypatch.setenv("COLUMNS", "80")
+    args = ("uncertainty", TOLERANCED, "--method", method, "--samples", "2000", "--seed", "1")
+    table = run_rbi_inprocess(*args).stdout
+    assert max(len(line) for line in table.splitlines()) <= 80
+    first = table.split("└")[0].splitlines()
+    rows = {line.split("│")[1].strip(): line.split("│")[2].strip() for line in first if "│" in line}
+    assert rows["mass"] == "kg" and rows["center_of_mass[2]"] == "m" and rows["moments[0]"] == "kg·m²"
+    assert "…" not in "".join(line for line in table.splitlines() if line.endswith("┃"))  # no header cut
+
+
 def test_api_gives_the_same():
     body = rbi.load(TOLERANCED)
     result = body.uncertainty(of=["inertia[0][2]"])

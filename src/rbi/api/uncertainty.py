@@ -64,18 +64,25 @@ class UncertaintyBudget(Result):
 
     def _quantities(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
         rows: list[tuple[str, ...]] = []
-        mc = bool(self._data["samples"])
         labels = unit_labels(self._data["units"]["length"], self._data["units"]["mass"])
         for q in self._data["quantities"]:
             (low, high), name = q["interval"], q["quantity"]
-            numbers = (number(q["value"], 5), number(q["u"], 2))
-            if mc:  # no unit column: the interval and the validation fill 80 columns
-                ok = "yes" if q["linear"]["validated"] else "NO"
-                rows.append((name, *numbers, f"{number(low, 4)} … {number(high, 4)}", ok))
+            unit, value, u = labels[UNITS[name.split("[")[0]]], number(q["value"], 5), number(q["u"], 2)
+            if self._data["samples"]:  # the shortest interval: not symmetric about the mean
+                rows.append((name, unit, value, u, f"{number(low, 4)} … {number(high, 4)}"))
             else:
-                rows.append((name, labels[UNITS[name.split("[")[0]]], *numbers, number((high - low) / 2, 2)))
-        head = ("value", "u", "interval", "linear ok") if mc else ("unit", "value", "u", "± U")
-        return self._title(), ("quantity", *head), rows
+                rows.append((name, unit, value, u, number((high - low) / 2, 2)))
+        last = "interval" if self._data["samples"] else "± U"
+        return self._title(), ("quantity", "unit", "value", "u", last), rows
+
+    def _validation(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
+        rows: list[tuple[str, ...]] = [
+            (q["quantity"], " … ".join(number(end, 4) for end in q["linear"]["interval"]))
+            + ("yes" if q["linear"]["validated"] else "NO",)
+            for q in self._data["quantities"]
+        ]
+        title = "Is the linear result validated? (JCGM 101 §8)"
+        return title, ("quantity", "linear interval", "linear ok"), rows
 
     def _budget(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
         rows: list[tuple[str, ...]] = [
@@ -95,7 +102,10 @@ class UncertaintyBudget(Result):
     def rows(self) -> list[Rows]:
         """The quantities' table, then the contributions'."""
         (title, columns, cells), budget = self._quantities(), self._budget()
-        return [Rows(title, columns, cells, left=columns.index("value")), Rows(*budget, left=2)]
+        tables = [Rows(title, columns, cells, left=columns.index("value"))]
+        if self._data["samples"]:
+            tables.append(Rows(*self._validation(), left=1))
+        return [*tables, Rows(*budget, left=2)]
 
 
 def budget_of(
