@@ -5,18 +5,15 @@ from __future__ import annotations
 
 import rbi
 import rbi.api
-from rbi.names import CLI_TOOLS, PUBLIC
+from rbi.names import PUBLIC
 
 
 def test_each_list_is_read_from_the_one_source():
     assert rbi.__all__ == [*PUBLIC, "__version__"]
-    assert rbi.api.__all__ == [*PUBLIC, *CLI_TOOLS]
-    assert len(set(PUBLIC) | set(CLI_TOOLS)) == len(PUBLIC) + len(CLI_TOOLS)  # none twice
+    assert rbi.api.__all__ == list(PUBLIC)
+    assert len(set(PUBLIC)) == len(PUBLIC)  # none twice
 
 
 def test_every_listed_name_is_served_by_the_api_and_the_public_ones_by_rbi():
     for name in PUBLIC:
         assert getattr(rbi, name) is getattr(rbi.api, name), name
-    for name in CLI_TOOLS:
-        assert getattr(rbi.api, name) is not None, name
-        assert not hasattr(rbi, name), name

@@ -1,7 +1,7 @@
 """The public names of rbi, listed once (no imports: ``import rbi`` reads this and stays cheap).
 
-``rbi.__all__`` is :data:`PUBLIC` and ``__version__``; ``rbi.api.__all__`` is :data:`PUBLIC` and
-:data:`CLI_TOOLS`. docs/api.md documents :data:`PUBLIC`.
+``rbi.__all__`` is :data:`PUBLIC` and ``__version__``; ``rbi.api.__all__`` is :data:`PUBLIC`.
+docs/api.md documents :data:`PUBLIC`; the command line imports nothing else of rbi's.
 """
 
 PUBLIC = (
@@ -39,15 +39,3 @@ PUBLIC = (
     "Result",
 )
 """What ``import rbi`` offers: the API of docs/python-api.md."""
-
-CLI_TOOLS = (
-    "import_step",
-    # the checked file writer, the collector's pause
-    "output_target",
-    "check_distinct",
-    "write_output",
-    "collector_paused",
-    # rbi simulate --draws: the motion's spread from the inputs written with ±
-    "input_uncertainty",
-)
-"""What rbi.api offers the command line besides :data:`PUBLIC` (not names of ``rbi``)."""

@@ -112,8 +112,8 @@ def test_bad_options_are_one_line(kit, args, words):
     ],
 )
 def test_the_api_names_its_parameters_with_a_value_error(kit, settings, head):
-    """rbi.api.import_step: a bad density or material is a ValueError naming the parameter."""
-    from rbi.api import import_step
+    """rbi.spec.from_step.import_step: a bad density or material is a ValueError naming the parameter."""
+    from rbi.spec.from_step import import_step
 
     with pytest.raises(ValueError) as caught:
         import_step(kit, **settings)
@@ -142,14 +142,14 @@ def test_show_and_animate_draw_step_parts(tmp_path, kit):
 
 
 def test_the_json_listing_is_the_imports_to_dict_with_the_file(kit, monkeypatch):
-    """`rbi import FILE.step --format json` = `rbi.api.import_step(FILE).to_dict()` with "file"
+    """`rbi import FILE.step --format json` = `import_step(FILE).to_dict()` with "file"
     first; the CSV rows are its csv_rows(): the box of 10 × 20 × 30 mm at 1000 kg/m³ weighs
     6 g, the Ø10 mm ball π/6 g."""
-    from rbi import api
+    from rbi.spec.from_step import import_step
 
     monkeypatch.chdir(kit.parent)
     proc = run_rbi_inprocess("import", "kit.step", "--format", "json")
-    imported = api.import_step("kit.step")
+    imported = import_step("kit.step")
     assert json.loads(proc.stdout) == json.loads(
         json.dumps({"file": "kit.step", **imported.to_dict()}, default=list)
     )

@@ -16,7 +16,7 @@ from pathlib import Path
 
 import pytest
 
-from rbi.api import output_target
+from rbi.files.output import output_target
 from rbi.spec.errors import InputError
 from tests.conftest import BODIES, one_line_exit_2
 from tests.conftest import run_rbi_inprocess as rbi

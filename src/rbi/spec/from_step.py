@@ -95,8 +95,8 @@ def import_step(
     material: str | None = None,
     relative_to: str | os.PathLike | None = None,
 ) -> StepImport:
-    """Read a STEP file as ``rbi import FILE.step`` does (``rbi.api.import_step``; needs the
-    extra ``cad``): its solids integrated on the exact geometry, and a spec with one ``shape:
+    """Read a STEP file as ``rbi import FILE.step`` does (needs the extra
+    ``cad``): its solids integrated on the exact geometry, and a spec with one ``shape:
     step`` part per solid naming the file relative to the folder ``relative_to`` (default: the
     current folder), where the spec will be saved. ``density`` (kg/m³) or ``material`` (a
     built-in name) fills every part (default 1000 kg/m³, a placeholder). Returns a `StepImport`:
