@@ -118,8 +118,7 @@ def tables_of(result: Any) -> Any:
     as rbi's tables."""
     if isinstance(result, Document):
         return result.table()
-    # not at top level: `rbi inertia --format json` would load rich and rbi.cli.tables too
-    from rbi.cli.tables import drawn
+    from rbi.cli.tables import drawn  # heavy: rich (~25 ms), which JSON and CSV never load
 
     return drawn(result.rows())
 
