@@ -207,11 +207,13 @@ class AuditReport(Result):
         the totals, and the joints' holding torques when there are any."""
         word = self.model.link_word
         plural = "bodies" if word == "body" else word + "s"
+        with collector_paused():  # a large robot's rows are millions of new objects
+            cells = [_link_cells(each) for each in self.links]
         links = Rows(
             f"{self.path}: {len(self.links)} {plural} (ratio: the declared moment farthest from the "
             "geometry's, as a multiple of it)",
             (word, "mass kg", "ρ kg/m³", "ratio", "CoM off ÷ size", "flags"),
-            [_link_cells(each) for each in self.links],
+            cells,
         )
         total = self.total
         quantities = [
@@ -241,23 +243,14 @@ class AuditReport(Result):
         total = self.total
         more = {"moments": self.total_moments, "frame": total.frame, "left_out": list(self.left_out)}
         with collector_paused():  # a large robot's JSON is millions of new objects
-            links = self.audited.to_dicts()
+            links, joints = self.audited.to_dicts(), _joint_dicts(self.joints)
         found = {
             "robot": self.model.name,
             "format": self.model.format,
             "units": {"length": "m", "mass": "kg"},
             "links": links,
             "total": plain(total.to_dict() | more),
-            "joints": [
-                {
-                    "name": each.name,
-                    "type": each.type,
-                    "torque": float(each.torque) + 0.0,
-                    "effort_limit": None if each.effort_limit is None else float(each.effort_limit) + 0.0,
-                    "flags": list(each.flags),
-                }
-                for each in self.joints
-            ],
+            "joints": joints,
             "notes": list(self.notes),
             "warnings": list(self.notes),
         }
@@ -310,6 +303,20 @@ def _joint_cells(joints: list) -> list[tuple[str, ...]]:
             " ".join(flag["code"] for flag in each.flags) or "ok",
         )
         for each, torque in zip(joints, torques)
+    ]
+
+
+def _joint_dicts(joints: list) -> list[dict[str, Any]]:
+    """Each joint's JSON object (its torque and declared limit as floats, no -0.0)."""
+    return [
+        {
+            "name": each.name,
+            "type": each.type,
+            "torque": float(each.torque) + 0.0,
+            "effort_limit": None if each.effort_limit is None else float(each.effort_limit) + 0.0,
+            "flags": list(each.flags),
+        }
+        for each in joints
     ]
 
 
