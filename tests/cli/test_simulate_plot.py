@@ -105,3 +105,19 @@ def _json(*args):
     proc = run_rbi_inprocess(*args, "--format", "json")
     assert proc.returncode == 0, proc.stderr
     return json.loads(proc.stdout)
+
+
+def test_a_plot_through_a_link_to_the_out_file_is_refused_naming_both_options(tmp_path, bodies):
+    """`--plot` a symlink to the `--out` file: one file for two outputs, named as options
+    (`rbi sweep` says the same); the CSV already there is left as it was."""
+    out = tmp_path / "run.csv"
+    out.write_text("mine\n")
+    (tmp_path / "run.png").symlink_to(out)
+    proc = run_rbi_inprocess(
+        "simulate", bodies / "top.yaml", "--duration", "0.1", "--out", out, "--plot", tmp_path / "run.png"
+    )
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert proc.stderr.strip().splitlines() == [
+        f"rbi: --plot: {tmp_path / 'run.png'}: is also the --out output of this run; give each output its own file"
+    ]
+    assert out.read_text() == "mine\n"

@@ -9,8 +9,8 @@ import os
 from collections.abc import Callable
 from typing import TYPE_CHECKING, ParamSpec, TypeVar
 
-from rbi.errors import ArgumentError, SpecError, literal
-from rbi.files.output import OutputTarget, output_target
+from rbi.errors import ArgumentError, InputError, SpecError, literal
+from rbi.files.output import OutputTarget, check_distinct, output_target
 
 if TYPE_CHECKING:  # a Body is known by its files_read: `rbi audit` loads no spec modules
     from rbi.api.body import Body
@@ -44,6 +44,17 @@ def checked_output(
         raise
     except SpecError as exc:
         raise ArgumentError(name, literal(str(exc).removeprefix(f"{name}: "), quoted=False)) from None
+
+
+def distinct_out_and_plot(out: OutputTarget | None, plot: OutputTarget | None) -> None:
+    """ArgumentError naming ``plot`` when it is the file ``out`` names too (a link to it)."""
+    try:
+        check_distinct([out, plot])
+    except InputError:
+        shown = literal(plot.given, quoted=False)  # type: ignore[union-attr]
+        raise ArgumentError(
+            "plot", f"{shown}: is also the {{out}} output of this run; give each output its own file"
+        ) from None
 
 
 def path_text(value: object, name: str = "robot_file") -> str:

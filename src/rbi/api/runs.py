@@ -10,9 +10,9 @@ from typing import Any
 import numpy as np
 
 from rbi.api.body import Body, loaded_body
-from rbi.api.outputs import Destination, checked_output, keywords_checked
+from rbi.api.outputs import Destination, checked_output, distinct_out_and_plot, keywords_checked
 from rbi.errors import ArgumentError, SpecError, literal
-from rbi.files.output import OutputTarget, check_distinct, write_output
+from rbi.files.output import OutputTarget, write_output
 from rbi.reprs import Result, Rows, pandas_module
 from rbi.runs.draws import input_uncertainty as spread
 from rbi.runs.run import RunSettings, RunSummary, SimulationRun, prepare_run
@@ -304,8 +304,7 @@ def _outputs(body: Body, out: Destination | None, plot: Destination | None) -> l
         None if path is None else checked_output(path, formats, body, name)
         for path, formats, name in ((out, ("csv",), "out"), (plot, PLOT_FORMATS, "plot"))
     ]
-    with _as_parameter("plot"):
-        check_distinct(targets)
+    distinct_out_and_plot(*targets)
     return targets
 
 

@@ -10,9 +10,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rbi.api.body import Body, loaded_body
-from rbi.api.outputs import Destination, checked_output, keywords_checked
+from rbi.api.outputs import Destination, checked_output, distinct_out_and_plot, keywords_checked
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.files.output import OutputTarget, check_distinct
+from rbi.files.output import OutputTarget
 from rbi.reprs import Result, Rows, pandas_module
 from rbi.spec.load import read_spec
 from rbi.sweeps.study import MAX_ROWS_SHOWN, Study, SweepSettings, check_settings
@@ -303,13 +303,7 @@ def _targets(
         raise ArgumentError("resume", "needs {out}, the file of the interrupted sweep")
     out_target = None if out is None else checked_output(out, ("csv", "parquet"), read, "out")
     plot_target = None if plot is None else checked_output(plot, ("png", "svg", "pdf"), read, "plot")
-    try:
-        check_distinct([out_target, plot_target])
-    except InputError:
-        shown = literal(plot_target.given, quoted=False)  # type: ignore[union-attr]
-        raise ArgumentError(
-            "plot", f"{shown}: is also the {{out}} output of this run; give each output its own file"
-        ) from None
+    distinct_out_and_plot(out_target, plot_target)
     if out_target is not None and out_target.format == "parquet" and not importlib.util.find_spec("pyarrow"):
         raise ArgumentError(
             "out",
