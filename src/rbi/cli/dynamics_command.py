@@ -68,12 +68,11 @@ def dynamics(
         )
     w = parse_vector(omega, "--omega")
     body = rbi.load(file)
-    about_label, point = parse_about(about, body)
     # the API decides which apply: forward without --force about a point other than the CoM
     # holds the point (at --accel); otherwise --accel goes with --alpha only
     result = body.dynamics(
         w,
-        about=point if about_label == "point" else about_label,
+        about=parse_about(about),
         alpha=None if alpha is None else parse_vector(alpha, "--alpha"),
         point_acceleration=_vector(accel, "--accel"),
         force=_vector(force, "--force"),

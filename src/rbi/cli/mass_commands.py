@@ -151,8 +151,9 @@ def _body_and_point(file: str, about: str, units: str | None, velocity=None):
     """The body of ``file`` in ``--units``, the ``--about`` point as the API takes it (its name,
     or X,Y,Z given in the file's length unit, in the body's) and ``velocity`` likewise."""
     body = rbi.load(file)
-    label, point = parse_about(about, body)
+    point = parse_about(about)
     if units is not None:
         body = body.in_units(*parse_units(units))
-        point, velocity = body.from_spec_units(point), body.from_spec_units(velocity)
-    return body, label if label != "point" else point, velocity
+        velocity = body.from_spec_units(velocity)
+        point = point if isinstance(point, str) else body.from_spec_units(point)
+    return body, point, velocity

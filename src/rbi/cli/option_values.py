@@ -121,14 +121,14 @@ def vary_option(items: list[str]) -> dict[str, Any]:
     return vary
 
 
-def parse_about(text: str, body) -> tuple[str, list[float]]:
-    """Resolve ``--about`` against a `rbi.Body`: (label, point in body coordinates); a name
-    (`rbi.Body.reference_points`) by `rbi.Body.point` (its errors say ``--about``)."""
+def parse_about(text: str) -> str | list[float]:
+    """``--about`` as `rbi.Body.point` takes it: a reference point's name
+    (`rbi.Body.reference_points`, any case) or X,Y,Z (three numbers)."""
     key = text.strip().lower()
     if key in rbi.Body.reference_points:
-        return key, body.point(key).tolist()
+        return key
     try:
-        return "point", parse_vector(text, "--about")
+        return parse_vector(text, "--about")
     except SpecError:
         names = ", ".join(rbi.Body.reference_points)
         raise SpecError(
