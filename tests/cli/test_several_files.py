@@ -164,6 +164,22 @@ def test_messages_name_standard_input_stdin(monkeypatch):
 
 
 @pytest.mark.parametrize(
+    "spec, vary, words",
+    [
+        ("parts:\n  - {shape: assembly, file: missing.yaml}\n", [], "parts[0]: file: missing.yaml"),
+        (None, ["--vary", "parts.nope.mass=1:2:2"], "--vary parts.nope.mass"),
+    ],
+)
+def test_sweep_messages_name_standard_input_stdin(monkeypatch, spec, vary, words):
+    """rbi sweep - names standard input as the other commands do, also where the nominal body or a
+    --vary path is refused (they said '-')."""
+    with_stdin(monkeypatch, spec or TOP.read_text())
+    proc = rbi("sweep", "-", "--spin", "1", "--duration", "0.1", *vary)
+    assert proc.returncode == 2 and proc.stdout == ""
+    assert proc.stderr.startswith(f"rbi: <stdin>: {words}") and len(proc.stderr.splitlines()) == 1
+
+
+@pytest.mark.parametrize(
     "command",
     [
         ["check"],

@@ -29,6 +29,7 @@ from rbi.runs.run import body_spin_axis, check_run_settings, check_tilt, spin_ax
 from rbi.sim.api import check_samples
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
+from rbi.spec.load import spec_label
 from rbi.spec.units import STANDARD_GRAVITY_SI
 from rbi.spec.variations import current_values, resolve
 from rbi.sweeps import execute, runs, store
@@ -154,7 +155,7 @@ class Study:
         )
         self.nominal = self.job.body(tuple(current_values(raw, varied)))
         if isinstance(self.nominal, str):
-            raise InputError(f"{path}: {self.nominal}")
+            raise InputError(f"{spec_label(path)}: {self.nominal}")
         # one spin axis for every run (unit, body frame): spin_axis, else the spec's, else the
         # nominal body's default, so every row's tilt is of one body axis, whatever a varied value breaks
         axis = body_spin_axis(self.nominal, settings.spin_axis)
@@ -181,7 +182,9 @@ class Study:
             try:
                 varied.append(resolve(self.raw, path_text))
             except ArgumentError as exc:
-                raise ArgumentError(exc.parameters, exc.detail, item=exc.item, file=self.path) from None
+                raise ArgumentError(
+                    exc.parameters, exc.detail, item=exc.item, file=spec_label(self.path)
+                ) from None
             axes.append(_axis(path_text, value, "vary"))
         names = [a.name for a in axes]
         if len(set(names)) != len(names):
