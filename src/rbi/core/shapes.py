@@ -248,11 +248,15 @@ def _turned(principal_moments: ArrayLike, rotation: np.ndarray | None) -> np.nda
     moments = numbers(principal_moments)
     diagonal = np.zeros((*moments.shape, 3), dtype=moments.dtype)
     diagonal[..., [0, 1, 2], [0, 1, 2]] = moments
-    if rotation is None:
-        return diagonal
+    return diagonal if rotation is None else turned(diagonal, rotation)
+
+
+def turned(inertia: np.ndarray, rotation: ArrayLike) -> np.ndarray:
+    """``R I Rᵀ`` made exactly symmetric: an inertia (or a stack (n, 3, 3)) about a point, in a
+    part's own axes, expressed in body axes (``rotation`` maps part axes to body axes)."""
     R = numbers(rotation)
-    turned = R @ diagonal @ R.T
-    return 0.5 * (turned + np.swapaxes(turned, -1, -2))
+    inertia = R @ inertia @ R.T
+    return 0.5 * (inertia + np.swapaxes(inertia, -1, -2))
 
 
 def _edges(size: ArrayLike) -> tuple[Numbers, Numbers, Numbers]:

@@ -1,10 +1,10 @@
 """The one place where validated spec models become core inputs (plain floats and arrays).
 
 A body's parts become one :class:`~rbi.core.mass.MassProperties` stack (:func:`stacked_parts`):
-the plain parts of the common shapes a stack per shape, whole-array (:data:`BUILDERS`), each
-to the bit what the one-part path (:func:`part_element`) gives it; every other part (files,
-patterns, rotations, the other shapes) and any whose numbers fail there through that path,
-which names the part in its errors."""
+the parts of the common shapes a stack per shape, whole-array (:data:`BUILDERS`; a box then
+turned, a pattern's copies then combined, part by part); every other part (files, the other
+shapes) and any whose numbers fail there one by one (:func:`part_element`, which builds one
+part of a common shape as a stack of one), naming the part in its errors."""
 
 from __future__ import annotations
 
@@ -260,7 +260,11 @@ def mesh_notes(spec: models.BodySpec) -> list[str]:
 
 def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
     """One written part's mass element in file units: built from its fields (a mesh read from
-    its file beside the spec), then, with a ``pattern``, every copy combined into one."""
+    its file beside the spec), then, with a ``pattern``, every copy combined into one. A part of
+    a shape of :data:`BUILDERS` is built as a stack of one."""
+    if type(part) in BUILDERS:
+        one = BUILDERS[type(part)](Columns([part], np.zeros(1, int), {}), units)
+        return _as_written(part, *(x[0] for x in one))
     if isinstance(part, models.MeshPart):
         element = mesh_element(part, units, spec_path)
     elif isinstance(part, models.StepPart):
@@ -277,10 +281,6 @@ def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
 
 
 SOLIDS: dict[type, Callable[[Any, float], MassProperties]] = {
-    models.ConePart: lambda p, m: shapes.cone(m, p.radius, p.apex, p.base),
-    models.CylinderPart: lambda p, m: shapes.cylinder(m, p.radius, p.start, p.end),
-    models.BoxPart: lambda p, m: shapes.box(m, p.size, p.center, rotation_matrix(p.rotation)),
-    models.SpherePart: lambda p, m: shapes.sphere(m, p.radius, p.center),
     models.SphericalShellPart: lambda p, m: shapes.spherical_shell(
         m, p.outer_radius, p.inner_radius, p.center
     ),
@@ -294,18 +294,18 @@ SOLIDS: dict[type, Callable[[Any, float], MassProperties]] = {
     models.CapsulePart: lambda p, m: shapes.capsule(m, p.radius, p.start, p.end),
     models.PrismPart: lambda p, m: shapes.prism(m, p.outline, p.holes, p.start, p.end, p.x_axis),
 }
-"""Each closed-form solid part (:mod:`rbi.core.shapes`) from its fields and the mass ``m`` of one
-copy (its ``mass``, or its density times :func:`rbi.spec.volumes.one_volume`), file units."""
+"""Each other closed-form solid part (:mod:`rbi.core.shapes`) from its fields and the mass ``m``
+of one copy (its ``mass``, or its density times :func:`rbi.spec.volumes.one_volume`), file units
+(the shapes of :data:`BUILDERS` are built by them, one part as a stack of one)."""
 
 GIVEN_MASS: dict[type, Callable[[Any], MassProperties]] = {
-    models.PointPart: lambda p: shapes.point(p.mass, p.position),
     models.RodPart: lambda p: shapes.rod(p.mass, p.start, p.end),
     models.CustomPart: custom_element,
 }
-"""The parts without a volume (their ``mass`` is given), file units."""
+"""The other parts without a volume (their ``mass`` is given), file units."""
 
 
-# --- the plain parts of the common shapes, a stack per shape ------------------------------
+# --- the parts of the common shapes, a stack per shape ----------------------------------
 
 
 class Columns:
@@ -341,9 +341,9 @@ class Columns:
 
 
 def _axes(d: np.ndarray) -> tuple[np.ndarray, Any, np.ndarray]:
-    """Each row's unit vector and length as one part's :func:`rbi.core.shapes.axis_between`
-    gives them (``unit_vector``'s arithmetic, without its refusal: a zero or overflowing row
-    gives NaN, left to the one-part path), and its length as the part's volume takes it
+    """Each row's unit vector and length as :func:`rbi.core.shapes.axis_between` gives them
+    (``unit_vector``'s arithmetic, without its refusal: an overflowing row gives NaN, a part
+    :func:`_finite_element` reports), and its length as the part's volume takes it
     (:func:`rbi.spec.volumes.one_volume`: numpy's norm)."""
     largest = np.max(np.abs(d), axis=-1, keepdims=True)
     scaled = d / largest
@@ -375,8 +375,9 @@ def _cones(parts, units):
 
 
 def _sphere_volume(radius: float) -> float:
-    """One sphere's volume as one part's path takes it (Python's ``r**3``, which numpy's power of
-    an array may round apart); inf where Python's power overflows (the part is then reported)."""
+    """One sphere's volume as :func:`rbi.spec.volumes.one_volume` takes it (Python's ``r**3``,
+    which numpy's power of an array may round apart); inf where Python's power overflows (the
+    part is then reported)."""
     try:
         return shapes.sphere_volume(radius)
     except OverflowError:
@@ -403,8 +404,19 @@ BUILDERS = {
     models.SpherePart: _spheres,
     models.BoxPart: _boxes,
 }
-"""Each stacked part model's ``(parts, units) -> (mass (n,), com (n, 3), inertia (n, 3, 3))``, to
-the bit what :func:`part_element` gives each part alone (``tests/spec/test_translate_batch.py``)."""
+"""Each stacked part model's ``(parts, units) -> (mass (n,), com (n, 3), inertia (n, 3, 3))``: a
+part's own solid, before its ``rotation`` (a box's) and ``pattern`` (:func:`_as_written`)."""
+
+
+def _as_written(part: Any, mass: Any, com: np.ndarray, inertia: np.ndarray) -> MassProperties:
+    """One part of a shape of :data:`BUILDERS` from its built row: a box turned about its centre
+    by its ``rotation``, then, with a ``pattern``, every copy combined into one."""
+    if "rotation" in _fields(type(part)) and part.rotation is not None:
+        inertia = shapes.turned(inertia, rotation_matrix(part.rotation))
+    element = MassProperties(mass, com, inertia)
+    if part.pattern is not None and part.pattern.count > 1:
+        element = patterned(element, part.pattern)
+    return element
 
 
 @functools.cache
@@ -413,7 +425,8 @@ def _fields(kind: type) -> set[str]:
 
 
 def plain_part(part: Any) -> bool:
-    """Whether a part of a batched shape may be built by :data:`BUILDERS` (no pattern, no rotation)."""
+    """Whether a part of a batched shape is its :data:`BUILDERS` row as it stands (no pattern, no
+    rotation to apply after)."""
     return _plain(part, _fields(type(part)))
 
 
@@ -482,20 +495,24 @@ def _given_by(part: Any) -> Any:
 
 def stacked_parts(spec: models.BodySpec, path: str) -> tuple[MassProperties, list[int]]:
     """Every part's mass element (file units; a hole's mass and inertia negative) as one stack in
-    file order, and the holes' indices. The plain parts of the common shapes are built a stack
-    per shape and way of giving the mass (:data:`BUILDERS` on :class:`Columns`); the other parts, and any whose numbers fail there, one by one
-    (:func:`_finite_element`, which names the part)."""
+    file order, and the holes' indices. The parts of the common shapes are built a stack per
+    shape and way of giving the mass (:data:`BUILDERS` on :class:`Columns`), then each turned or
+    patterned part as written (:func:`_as_written`); the other parts, and any whose numbers fail
+    there, one by one (:func:`_finite_element`, which names the part)."""
     parts = spec.parts
     mass, com, inertia = np.zeros(len(parts)), np.zeros((len(parts), 3)), np.zeros((len(parts), 3, 3))
     built = np.zeros(len(parts), dtype=bool)
     groups: dict[tuple[type, Any], list[int]] = {}
     for i, part in enumerate(parts):
-        if type(part) in BUILDERS and _plain(part, _fields(type(part))):
+        if type(part) in BUILDERS:
             groups.setdefault((type(part), _given_by(part)), []).append(i)
     for (kind, _), indices in groups.items():
         chosen = [parts[i] for i in indices]
         with np.errstate(all="ignore"):
             m, c, I = BUILDERS[kind](Columns(chosen, np.arange(len(chosen)), {}), spec.units)
+            for r in [r for r, part in enumerate(chosen) if not _plain(part, _fields(kind))]:
+                element = _as_written(chosen[r], m[r], c[r], I[r])
+                m[r], c[r], I[r] = element.mass, element.center_of_mass, element.inertia_about_com
             ok = (
                 np.isfinite(m)
                 & np.all(np.isfinite(c), axis=1)
