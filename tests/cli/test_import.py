@@ -13,6 +13,7 @@ import yaml
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+import rbi
 from tests.conftest import BODIES, one_line_exit_2, run_rbi, run_rbi_inprocess
 
 
@@ -518,3 +519,15 @@ def test_notes_and_warnings_show_link_names_escaped(tmp_path):
     assert "skipped" in proc.stderr
     assert "\u202e" not in proc.stderr and "\u009b" not in proc.stderr
     assert "\\u202e" in proc.stderr and "\\x9b" in proc.stderr
+
+
+def test_one_file_for_several_links_names_both_ways_out(tmp_path):
+    """The refusal says how to write several links (a folder, --out DIR/) or pick one (--link NAME),
+    as the CLI spells them; the API's message spells its own parameters."""
+    out = tmp_path / "arm.yaml"
+    proc = run_rbi_inprocess("import", BODIES / "two_link_arm.urdf", "--out", out)
+    one_line_exit_2(proc)
+    assert not out.exists()
+    assert "name a folder (--out DIR/) or pick one with --link NAME" in proc.stderr
+    with pytest.raises(rbi.ArgumentError, match=r"\(out=DIR/\) or pick one with links=NAME"):
+        rbi.import_robot(BODIES / "two_link_arm.urdf", out=out)

@@ -307,7 +307,7 @@ def _written(robot: RobotImport, out: str) -> RobotImport:
         raise ArgumentError(
             "out",
             f"{literal(out, quoted=False)}: {len(links)} {robot.link_word}s to import; name a folder "
-            "or pick one with {links}",
+            "({out=DIR/}) or pick one with {links=NAME}",
         )
     targets = [checked_output(each, formats, robot.path, "out") for each in paths]
     check_distinct(targets)

@@ -18,6 +18,8 @@ OPTION_NAMES = {
     "axes": "--rotate",
     "package_paths": "--package-path",
     "links": "--link",
+    "links=NAME": "--link NAME",
+    "out=DIR/": "--out DIR/",
     "vary[]": "--vary {}",
     "path": "--out",
     "fix=True": "--fix",
