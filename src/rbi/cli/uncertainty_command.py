@@ -6,7 +6,7 @@ from typing import Annotated
 
 import typer
 
-from rbi import api
+import rbi
 from rbi.cli.each_file import FileReport, report_each
 from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
 
@@ -44,7 +44,7 @@ def uncertainty(
     """
 
     def report(file: str) -> FileReport:
-        result = api.load(file).uncertainty(of, method, samples, seed, coverage)
+        result = rbi.load(file).uncertainty(of, method, samples, seed, coverage)
         return FileReport(result, table=lambda: result)
 
     return report_each(files, report, format.value)
