@@ -417,8 +417,7 @@ def file_problems(path: str, packages: dict[str, list[Path]] | None = None) -> l
     while building the body (an unphysical custom inertia, a hole removing too much). A robot
     file (URDF, SDF, MJCF) gives every link whose inertia is not physical; ``packages`` (see
     :func:`rbi.formats.robot_paths.parse_package_paths`) finds its ``package://`` meshes."""
-    # not at top level: `rbi inertia` would load rbi.formats.robot_files too
-    from rbi.formats.robot_files import is_robot_file, robot_file_problems
+    from rbi.formats.robot_files import is_robot_file, robot_file_problems  # `rbi inertia` would load it too
 
     if is_robot_file(path):
         return robot_file_problems(path, packages)
