@@ -18,8 +18,6 @@ OPTION_NAMES = {
     "axes": "--rotate",
     "package_paths": "--package-path",
     "links": "--link",
-    "links=NAME": "--link NAME",
-    "out=DIR/": "--out DIR/",
     "vary[]": "--vary {}",
     "path": "--out",
     "fix=True": "--fix",
@@ -28,8 +26,13 @@ OPTION_NAMES = {
 
 
 def option_name(parameter: str) -> str:
-    """The command-line option of an API parameter: ``spin_axis`` → ``--spin-axis``."""
-    return OPTION_NAMES.get(parameter) or "--" + parameter.replace("_", "-")
+    """The command-line option of an API parameter: ``spin_axis`` → ``--spin-axis``; a
+    parameter with a value, ``links=NAME``, as the option with it: ``--link NAME``."""
+    if parameter in OPTION_NAMES:
+        return OPTION_NAMES[parameter]
+    name, given, value = parameter.partition("=")
+    option = OPTION_NAMES.get(name) or "--" + name.replace("_", "-")
+    return f"{option} {value}" if given else option
 
 
 def error_line(error: SpecError) -> str:
