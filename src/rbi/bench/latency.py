@@ -53,6 +53,13 @@ MANY_FILES = 600
 
 ONE_FILE = "rbi inertia bodies/top.yaml --format json"
 
+JSON_UNSAID = ("rbi principal bodies/top_bolted.yaml", "rbi simulate bodies/top_bolted.yaml --spin 200")
+"""Commands timed with ``--format json``, which their labels leave out."""
+
+LABELLED = ("rbi --help", "rbi --version", "rbi inertia bodies/top.yaml", ONE_FILE)
+LABELLED += (JSON_UNSAID[0], SIMULATE_TOP, JSON_UNSAID[1])
+"""The rbi commands timed as their labels spell them, in order (the many-files run goes after ONE_FILE)."""
+
 FIRST_RUN_TARGET = 1.3
 """Issue 9: the first ``rbi simulate`` with a fresh HOME at most this multiple of a later one."""
 
@@ -61,30 +68,14 @@ def commands(bodies: Path, cloud_specs: dict[str, Path] | None) -> list[tuple[st
     """(label, argv) of every timed command; the first is the baseline (this Python, the one rbi
     runs on)."""
     rbi, as_json = rbi_command(), ["--format", "json"]
-    top, bolted = str(bodies / "top.yaml"), str(bodies / "top_bolted.yaml")
-    out = [
-        ('python -c "import numpy"', [sys.executable, "-c", "import numpy"]),
-        ("rbi --help", rbi + ["--help"]),
-        ("rbi --version", rbi + ["--version"]),
-        ("rbi inertia bodies/top.yaml", rbi + ["inertia", top]),
-        (ONE_FILE, rbi + ["inertia", top, *as_json]),
-        many_files_command(bodies, rbi),
-        ("rbi principal bodies/top_bolted.yaml", rbi + ["principal", bolted, *as_json]),
-        (SIMULATE_TOP, rbi + ["simulate", top, "--spin", "200", "--tilt", "10"]),
-        (
-            "rbi simulate bodies/top_bolted.yaml --spin 200",
-            rbi + ["simulate", bolted, "--spin", "200", *as_json],
-        ),
-    ]
-    if cloud_specs:
-        n = cloud_specs["points"]
-        out += [
-            (
-                f"rbi principal (cloud of {n:,} points, {kind})",
-                rbi + ["principal", str(cloud_specs[key]), *as_json],
-            )
-            for kind, key in (("CSV", "csv"), (".npy", "npy"))
-        ]
+    out = [('python -c "import numpy"', [sys.executable, "-c", "import numpy"])]
+    for label in LABELLED:  # its words after "rbi", a body named bodies/NAME the bundled one
+        words = [str(bodies / w[7:]) if w.startswith("bodies/") else w for w in label.split()[1:]]
+        out.append((label, rbi + words + as_json * (label in JSON_UNSAID)))
+    out.insert(5, many_files_command(bodies, rbi))  # after ONE_FILE
+    for kind, key in (("CSV", "csv"), (".npy", "npy")) if cloud_specs else ():
+        label = f"rbi principal (cloud of {cloud_specs['points']:,} points, {kind})"
+        out.append((label, rbi + ["principal", str(cloud_specs[key]), *as_json]))
     return out
 
 
@@ -120,22 +111,20 @@ def per_file_cost(rows: list[dict], files: int) -> dict:
     }
 
 
-IMPORT_GROUPS = (
-    # (group, module prefixes), first match wins; the rest is "the rest of the standard library"
-    ("numpy", ("numpy",)),
-    (
-        "pydantic (and pydantic-core, typing helpers)",
-        ("pydantic", "pydantic_core", "annotated_types", "typing_extensions", "typing_inspection"),
-    ),
-    (
-        "rbi's spec models (built by pydantic as they are defined)",
-        ("rbi.spec.models", "rbi.spec.expect", "rbi.spec.fields"),
-    ),
-    ("PyYAML", ("yaml", "_yaml")),
-    ("rich (tables)", ("rich",)),
-    ("typer and click", ("typer", "click")),
-    ("rbi, other modules", ("rbi",)),
-)
+IMPORT_GROUPS = {
+    "numpy": "numpy",
+    "pydantic (and pydantic-core, typing helpers)": "pydantic pydantic_core annotated_types typing_extensions "
+    "typing_inspection",
+    "rbi's spec models (built by pydantic as they are defined)": "rbi.spec.models rbi.spec.expect rbi.spec.fields",
+    "PyYAML": "yaml _yaml",
+    "rich (tables)": "rich",
+    "typer and click": "typer click",
+    "rbi, other modules": "rbi",
+    "the rest of the standard library": "",
+}
+"""Each group of imported modules and the packages (or modules) in it: a module belongs to the
+group of its longest dotted prefix listed; any other, to the last group."""
+GROUP_OF = {prefix: group for group, prefixes in IMPORT_GROUPS.items() for prefix in prefixes.split()}
 
 
 def import_breakdown(bodies: Path, repeats: int) -> dict:
@@ -151,17 +140,13 @@ def import_breakdown(bodies: Path, repeats: int) -> dict:
             return {"error": f"exit {proc.returncode}"}
         seen = {m[2]: int(m[1]) for m in re.finditer(r"import time:\s+(\d+) \|\s+\d+ \| *(\S+)", proc.stderr)}
         best = seen if not best else {name: min(us, best.get(name, us)) for name, us in seen.items()}
-    groups = {name: 0 for name, _ in IMPORT_GROUPS} | {"the rest of the standard library": 0}
+    groups = dict.fromkeys(IMPORT_GROUPS, 0)
     for module, us in best.items():
-        group = next(
-            (
-                name
-                for name, prefixes in IMPORT_GROUPS
-                if any(module == p or module.startswith(p + ".") for p in prefixes)
-            ),
-            "the rest of the standard library",
-        )
-        groups[group] += us
+        words = module.split(".")
+        prefixes = (".".join(words[:n]) for n in range(len(words), 0, -1))
+        groups[
+            next((GROUP_OF[p] for p in prefixes if p in GROUP_OF), "the rest of the standard library")
+        ] += us
     return {
         "command": "python -X importtime -m rbi inertia bodies/top.yaml",
         "repeats": repeats,
@@ -182,10 +167,7 @@ def first_run(bodies: Path, repeats: int) -> dict:
     for _ in range(repeats):
         with tempfile.TemporaryDirectory(prefix="rbi-bench-home-") as home:
             env = dict(
-                os.environ,
-                HOME=home,
-                XDG_CACHE_HOME=os.path.join(home, ".cache"),
-                XDG_CONFIG_HOME=os.path.join(home, ".config"),
+                os.environ, HOME=home, XDG_CACHE_HOME=f"{home}/.cache", XDG_CONFIG_HOME=f"{home}/.config"
             )
             seconds, _, proc = run_process(argv, env)
             if proc.returncode != 0:
@@ -254,12 +236,13 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         first = first_run(bodies, 3 if quick else 7)
         progress("latency: where rbi inertia's start-up goes (python -X importtime)")
         imports = import_breakdown(bodies, 3 if quick else 7)
-    baseline, cpu_baseline = rows[0].get("median_s"), rows[0].get("cpu_median_s")
     for row in rows:
-        if baseline and "median_s" in row:
-            row["ratio_to_numpy_import"] = row["median_s"] / baseline
-        if cpu_baseline and "cpu_median_s" in row:
-            row["cpu_ratio_to_numpy_import"] = row["cpu_median_s"] / cpu_baseline
+        for key, ratio in (
+            ("median_s", "ratio_to_numpy_import"),
+            ("cpu_median_s", "cpu_ratio_to_numpy_import"),
+        ):
+            if rows[0].get(key) and key in row:
+                row[ratio] = row[key] / rows[0][key]
         if row["command"] in TARGETS:
             row["target"] = TARGETS[row["command"]]
     return {

@@ -33,24 +33,18 @@ def _times(value: float | None) -> str:
 # --- targets (kernel, start-up, large specs, sweep) ------------------------------------------------------------
 
 
-def _target(
-    what: str,
-    measured: float | None,
-    limit: float,
-    at_least: bool,
-    baseline: str,
-    detail: str = "",
-    unit: str | None = None,
-) -> dict:
-    """One target row; ``unit`` names the unit of ``measured`` and ``limit`` when they are a
-    quantity shown with it (``"s"``), None for a ratio or a unit the target's words end in."""
-    met = None if measured is None else (measured >= limit if at_least else measured <= limit)
+def _target(what: str, test: tuple, baseline: str, detail: str = "", unit: str | None = None) -> dict:
+    """One target row; ``test`` is ``(measured, "≥" or "≤", limit)`` (measured None: not
+    measured, neither met nor missed); ``unit`` names the unit of ``measured`` and ``limit`` when
+    they are a quantity shown with it (``"s"``), None for a ratio or a unit the target's words end in."""
+    measured, comparison, limit = test
+    met = None if measured is None else (measured >= limit if comparison == "≥" else measured <= limit)
     return {
         "target": what,
         "measured": measured,
         "limit": limit,
         "unit": unit,
-        "comparison": "≥" if at_least else "≤",
+        "comparison": comparison,
         "baseline": baseline,
         "met": met,
         "detail": detail,
@@ -79,17 +73,13 @@ def _kernel_targets(k: dict) -> list[dict]:
     return [
         _target(
             f"in-process simulate at defaults {case} ÷ the chapter's set-up, speed-up",
-            k["ratio_default"],
-            limit["ratio_default"],
-            True,
+            (k["ratio_default"], "≥", limit["ratio_default"]),
             chapter,
             f"rbi {number(default['seconds'], 3)} s, error {number(default['orientation_error_deg'], 2)}°",
         ),
         _target(
             "the same at equal-or-better error, speed-up",
-            k.get("ratio_best_matching"),
-            limit["ratio_best_matching"],
-            True,
+            (k.get("ratio_best_matching"), "≥", limit["ratio_best_matching"]),
             chapter,
             f"rbi at rtol {best['rtol']:g}: {number(best['seconds'], 3)} s, error "
             f"{number(best['orientation_error_deg'], 2)}°"
@@ -98,9 +88,7 @@ def _kernel_targets(k: dict) -> list[dict]:
         ),
         _target(
             "in-process simulate at defaults ÷ a minimal loop with the same DOP853 steps, time",
-            k["ratio_to_minimal_loop"],
-            limit["ratio_to_minimal_loop"],
-            False,
+            (k["ratio_to_minimal_loop"], "≤", limit["ratio_to_minimal_loop"]),
             f"rbi.sim._dop853.integrate_minimal: {number(m['seconds'], 3)} s ({same})",
             f"simulate {number(default['seconds'], 3)} s, {default['steps']:,} steps",
         ),
@@ -115,9 +103,7 @@ def _latency_targets(lat: dict) -> list[dict]:
         out.append(
             _target(
                 f"first `{first.get('command', 'rbi simulate')}` in a fresh HOME ÷ a later one, time",
-                first.get("ratio"),
-                first.get("target", 1.3),
-                False,
+                (first.get("ratio"), "≤", first.get("target", 1.3)),
                 f"the run after it: {number(first.get('later_median_s'), 3)} s",
                 first.get("error")
                 or f"first {number(first['first_median_s'], 3)} s; median of {first['repeats']} fresh "
@@ -128,9 +114,7 @@ def _latency_targets(lat: dict) -> list[dict]:
         out.append(
             _target(
                 "each additional file in one `rbi inertia` process (the bundled bodies), ms",
-                per_file.get("per_file_ms"),
-                per_file["target_ms"],
-                False,
+                (per_file.get("per_file_ms"), "≤", per_file["target_ms"]),
                 f"one file: {number(per_file.get('one_file_median_s'), 3)} s",
                 per_file.get("error")
                 or f"{per_file['files']} files: {number(per_file['many_files_median_s'], 3)} s",
@@ -140,9 +124,7 @@ def _latency_targets(lat: dict) -> list[dict]:
     return out + [
         _target(
             f"`{row['command']}` as a whole process, {'CPU' if 'cpu_ratio_to_numpy_import' in row else 'wall'} time",
-            _ratio(row),
-            row["target"],
-            False,
+            (_ratio(row), "≤", row["target"]),
             baseline_text,
             row.get("error") or f"{number(_seconds(row), 3)} s median of {row['repeats']}",
         )
@@ -167,9 +149,7 @@ def _largespec_targets(ls: dict) -> list[dict]:
         out.append(
             _target(
                 f"whole load of a YAML spec of {label} ÷ a bare yaml.load (CSafeLoader), time",
-                row.get("ratio"),
-                ls["target"],
-                False,
+                (row.get("ratio"), "≤", ls["target"]),
                 "bare yaml.load(f, Loader=yaml.CSafeLoader) in a plain Python"
                 + (f": {number(base, 3)} s" if isinstance(base, float) else ""),
                 detail,
@@ -180,14 +160,18 @@ def _largespec_targets(ls: dict) -> list[dict]:
 
 def _sweep_targets(sw: dict) -> list[dict]:
     """Sweep throughput against single runs and process loops, and its peak memory."""
-    single, loop, sweep, mem = sw["single_run"], sw["process_loop"], sw["sweep"], sw["memory"]
+    single, loop, sweep, mem, limit = (
+        sw["single_run"],
+        sw["process_loop"],
+        sw["sweep"],
+        sw["memory"],
+        sw["targets"],
+    )
     rate = f"sweep {number(sweep['runs_per_second'], 3)} runs/s"
     return [
         _target(
             f"`rbi sweep` throughput over {sweep['runs']:,} runs ÷ (cores × single-run rate)",
-            sw["ratio_to_cores_x_single"],
-            sw["targets"]["ratio_to_cores_x_single"],
-            True,
+            (sw["ratio_to_cores_x_single"], "≥", limit["ratio_to_cores_x_single"]),
             f"{sw['cores']} cores × {number(single['runs_per_second'], 3)} runs/s (simulate, one run "
             f"after another, {single['runs']} grid points)",
             f"{rate} ({number(sweep['seconds'], 3)} s; "
@@ -195,17 +179,13 @@ def _sweep_targets(sw: dict) -> list[dict]:
         ),
         _target(
             "`rbi sweep` throughput ÷ a loop of `rbi simulate` processes",
-            sw["ratio_to_process_loop"],
-            sw["targets"]["ratio_to_process_loop"],
-            True,
+            (sw["ratio_to_process_loop"], "≥", limit["ratio_to_process_loop"]),
             f"{loop['runs']} processes: {number(loop['runs_per_second'], 3)} runs/s",
             rate,
         ),
         _target(
             f"peak resident memory of a streaming sweep of {mem.get('runs', 0):,} runs, MB",
-            mem.get("peak_rss_mb"),
-            sw["targets"]["peak_rss_mb"],
-            False,
+            (mem.get("peak_rss_mb"), "≤", limit["peak_rss_mb"]),
             "500 MB (absolute)",
             mem.get("error")
             or f"RSS {number(mem['rss_first_quarter_mb'], 3)} MB in the first quarter, "
@@ -228,7 +208,7 @@ def _robotaudit_targets(ra: dict) -> list[dict]:
     )
     what = f"`rbi audit` of a URDF of {ra.get('links', 0):,} links (inertial, box collision, revolute joints)"
     return [
-        _target(f"{what}, wall time", ra.get("seconds"), ra["target_s"], False, "5 s (absolute)", detail, "s")
+        _target(f"{what}, wall time", (ra.get("seconds"), "≤", ra["target_s"]), "5 s (absolute)", detail, "s")
     ]
 
 
@@ -239,9 +219,7 @@ def _uncertainty_targets(u: dict) -> list[dict]:
         _target(
             f"linear uncertainty budget of {u['parts']:,} parts with ± on every number ÷ the plain "
             "computation, CPU time",
-            u["ratio_linear_to_plain"],
-            limit["ratio_linear_to_plain"],
-            False,
+            (u["ratio_linear_to_plain"], "≤", limit["ratio_linear_to_plain"]),
             f"rbi.load(the spec without ±).principal(): CPU {number(u['plain_cpu_s'], 3)} s "
             f"(wall {number(u['plain_s'], 3)} s)",
             f"rbi.load(spec).uncertainty(): CPU {number(u['linear_cpu_s'], 3)} s (wall {number(u['linear_s'], 3)} s), "
@@ -250,9 +228,7 @@ def _uncertainty_targets(u: dict) -> list[dict]:
         ),
         _target(
             f"{u['draws']:,} Monte Carlo draws of bodies/top_bolted_toleranced.yaml, wall time",
-            u["monte_carlo_s"],
-            limit["monte_carlo_s"],
-            False,
+            (u["monte_carlo_s"], "≤", limit["monte_carlo_s"]),
             "1 s (absolute)",
             f"median of {u['monte_carlo_repeats']} (CPU {number(u['monte_carlo_cpu_s'], 3)} s); the first call "
             f"{number(u['monte_carlo_first_s'], 3)} s",
@@ -270,25 +246,6 @@ SECTION_TARGETS = {
     "uncertainty": ("uncertainty", _uncertainty_targets),
 }
 """Each section of a bench result that has speed targets: its area and the function that lists them."""
-
-
-TARGET_COLUMNS = ["area", "target", "measured", "limit", "met", "baseline (same run)", "detail"]
-
-
-def target_rows(rows: list[dict]) -> list[list[str]]:
-    """The Targets table's cells, one row a target (:data:`TARGET_COLUMNS`)."""
-    met = {True: "yes", False: "NO", None: "—"}
-    return [
-        [
-            r["area"],
-            r["target"],
-            _shown(r, "measured"),
-            f"{r['comparison']} {_shown(r, 'limit')}",
-            met[r["met"]],
-        ]
-        + [r["baseline"], r["detail"]]
-        for r in rows
-    ]
 
 
 def _shown(target: dict, key: str) -> str:
@@ -451,8 +408,8 @@ def _targets_sections(result: dict) -> list[Section]:
         "against in this same run."
     )
     left = ("area", "target", "met", "baseline (same run)", "detail")
-    rows = target_rows(result["targets"])
-    return [Section("Targets", notes, TARGET_COLUMNS, rows, left=left, no_wrap=("measured", "limit", "met"))]
+    table = _table(TARGET_COLUMNS, result["targets"])
+    return [Section("Targets", notes, *table, left=left, no_wrap=("measured", "limit", "met"))]
 
 
 def _kernel_sections(k: dict) -> list[Section]:
@@ -588,12 +545,17 @@ def import_rows(imports: dict) -> list[list[str]]:
 
 
 def _cad_sections(cad: dict) -> list[Section]:
-    """CAD solids: the STEP plate against its STL, time and error side by side."""
-    return [
-        Section(
-            "CAD solids: STEP against STL", cad_title(cad) + ".", *_table(CAD_COLUMNS, cad.get("files", []))
+    """CAD solids: the STEP plate against its STL, time and error side by side (or why not measured)."""
+    if cad.get("error"):
+        notes = f"CAD solids: {cad['error']}"
+    else:
+        a, b, c = cad["plate_mm"]
+        notes = (
+            f"CAD solids: a {a:g} × {b:g} × {c:g} mm plate with {cad['holes']} holes of radius "
+            f"{cad['hole_radius_mm']:g} mm, read as STEP (exact geometry) and as STL, whole load cold; "
+            "errors relative, against the closed form"
         )
-    ]
+    return [Section("CAD solids: STEP against STL", notes + ".", *_table(CAD_COLUMNS, cad.get("files", [])))]
 
 
 def _uncertainty_sections(u: dict) -> list[Section]:
@@ -624,16 +586,25 @@ def _num(key: str, digits: int = 3, scale: float = 1.0):
     return lambda r: number(None if r.get(key) is None else scale * r[key], digits)
 
 
+def _text(key: str):
+    return lambda r: r[key]
+
+
 def _count(key: str):
     return lambda r: "—" if r.get(key) is None else f"{r[key]:,}"
 
 
-def _rtol(r: dict) -> str:
-    return f"{r['rtol']:g}"
-
-
+TARGET_COLUMNS = [
+    ("area", _text("area")),
+    ("target", _text("target")),
+    ("measured", lambda r: _shown(r, "measured")),
+    ("limit", lambda r: f"{r['comparison']} {_shown(r, 'limit')}"),
+    ("met", lambda r: {True: "yes", False: "NO", None: "—"}[r["met"]]),
+    ("baseline (same run)", _text("baseline")),
+    ("detail", _text("detail")),
+]
 CAD_COLUMNS = [
-    ("file", lambda r: r["file"]),
+    ("file", _text("file")),
     ("triangles", _count("triangles")),
     ("MB", _num("bytes", scale=1e-6)),
     ("load [s]", _num("seconds")),
@@ -643,17 +614,6 @@ CAD_COLUMNS = [
     ("estimate", _num("integration_error", 2)),
 ]
 """Errors are relative to the closed form; the estimate is the integration's own (STEP only)."""
-
-
-def cad_title(cad: dict) -> str:
-    if cad.get("error"):
-        return f"CAD solids: {cad['error']}"
-    a, b, c = cad["plate_mm"]
-    return (
-        f"CAD solids: a {a:g} × {b:g} × {c:g} mm plate with {cad['holes']} holes of radius "
-        f"{cad['hole_radius_mm']:g} mm, read as STEP (exact geometry) and as STL, whole load cold; "
-        "errors relative, against the closed form"
-    )
 
 
 def reference_text(case: dict) -> str:
@@ -682,7 +642,7 @@ def work_table(case: dict) -> tuple[list, list[list[str]]]:
 
     columns = [
         ("method", _method),
-        ("rtol", _rtol),
+        ("rtol", lambda r: f"{r['rtol']:g}"),
         ("orient. error [deg]", _num("orientation_error_deg", 2)),
         ("ω error [rad/s]", _num("omega_error", 2)),
         ("rel. drift", _num("drift", 2)),
@@ -718,7 +678,7 @@ PARTS_COLUMNS = [
     ("core [s]", _num("core_s", 2)),
 ]
 LATENCY_COLUMNS = [
-    ("command", lambda r: r["command"]),
+    ("command", _text("command")),
     ("CPU median [s]", lambda r: "failed" if "error" in r else _num("cpu_median_s")(r)),
     ("× numpy import (CPU)", lambda r: "" if "error" in r else _times(r.get("cpu_ratio_to_numpy_import"))),
     ("wall median [s]", lambda r: "" if "error" in r else _num("median_s")(r)),

@@ -79,7 +79,11 @@ def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float
     seconds = clocked(
         lambda: [simulate(scene, *initial_state(t, [0.0, 0.0, w]), duration, samples) for w, t in runs]
     )[0]
-    return {"runs": len(runs), "seconds": seconds, "runs_per_second": len(runs) / seconds}
+    return _rate(len(runs), seconds)
+
+
+def _rate(runs: int, seconds: float) -> dict:
+    return {"runs": runs, "seconds": seconds, "runs_per_second": runs / seconds}
 
 
 def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:
@@ -91,7 +95,7 @@ def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: flo
         if proc.returncode != 0:
             raise RuntimeError(f"rbi simulate: exit {proc.returncode}: {proc.stderr.strip()[-200:]}")
         seconds += wall
-    return {"runs": len(runs), "seconds": seconds, "runs_per_second": len(runs) / seconds}
+    return _rate(len(runs), seconds)
 
 
 def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
@@ -133,8 +137,7 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     start = time.perf_counter()
     proc = subprocess.Popen(argv, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     samples = _sample_memory(proc, out, start)
-    stderr = proc.stderr.read()
-    proc.stderr.close()
+    stderr = proc.communicate()[1]
     seconds = time.perf_counter() - start
     if proc.returncode != 0:
         return {"error": f"exit {proc.returncode}: {stderr.strip()[-200:]}"}
@@ -187,25 +190,17 @@ def _sample_memory(proc: subprocess.Popen, out: Path, start: float) -> list[dict
     size of its output ``out``, every 0.1 s until it exits (its return code is set)."""
     samples = []
     status_file = Path(f"/proc/{proc.pid}/status")
-    while True:
-        pid, status = os.waitpid(proc.pid, os.WNOHANG)
-        if pid != 0:
-            proc.returncode = os.waitstatus_to_exitcode(status)
-            break
+    while not (waited := os.waitpid(proc.pid, os.WNOHANG))[0]:
         try:
             fields = dict(line.split(":", 1) for line in status_file.read_text().splitlines() if ":" in line)
-            rss_kb, peak_kb = int(fields["VmRSS"].split()[0]), int(fields["VmHWM"].split()[0])
+            mb = {
+                key: int(fields[name].split()[0]) / 1024
+                for key, name in (("rss_mb", "VmRSS"), ("peak_mb", "VmHWM"))
+            }
             size = out.stat().st_size if out.exists() else 0
+            samples.append({"seconds": round(time.perf_counter() - start, 3)} | mb | {"csv_bytes": size})
         except (OSError, KeyError, ValueError):
-            rss_kb, size = None, 0
-        if rss_kb is not None:
-            samples.append(
-                {
-                    "seconds": round(time.perf_counter() - start, 3),
-                    "rss_mb": rss_kb / 1024,
-                    "peak_mb": peak_kb / 1024,
-                    "csv_bytes": size,
-                }
-            )
+            pass
         time.sleep(0.1)
+    proc.returncode = os.waitstatus_to_exitcode(waited[1])
     return samples

@@ -38,6 +38,9 @@ from rbi.viz.labels import pyplot
 CHAPTER = ("rk45", 1e-8)
 """The seed chapter's set-up: scipy solve_ivp RK45, rtol 1e-8, atol 1e-10, Python right-hand side."""
 
+FINAL_ERRORS = ("orientation_error_deg", "omega_error")
+"""The errors at the last sample that a run must not exceed to be as good as another."""
+
 
 @dataclass(frozen=True)
 class Case:
@@ -172,21 +175,15 @@ def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | Non
 def no_worse(errors: dict, chapter: dict) -> bool:
     """Whether the final orientation error (deg) and ω error (rad/s) of ``errors`` are no
     larger than the chapter's set-up's (``chapter``)."""
-    orientation = errors["orientation_error_deg"] <= chapter["orientation_error_deg"]
-    return orientation and errors["omega_error"] <= chapter["omega_error"]
+    return all(errors[key] <= chapter[key] for key in FINAL_ERRORS)
 
 
 def speedup(chapter: dict, default: dict, best: dict | None) -> dict:
     """The chapter's time over rbi's, (a) with rbi's default settings (``default``), (b) for
     ``best``, the fastest run of rbi's default method whose final errors are no larger than the
     chapter's (None: no run was); each record holds seconds and final errors."""
-    out = {
-        "chapter_seconds": chapter["seconds"],
-        "chapter_orientation_error_deg": chapter["orientation_error_deg"],
-        "chapter_omega_error": chapter["omega_error"],
-        "default_seconds": default["seconds"],
-        "default_orientation_error_deg": default["orientation_error_deg"],
-        "default_omega_error": default["omega_error"],
+    quoted = (("chapter", chapter), ("default", default))
+    out = {f"{who}_{key}": run[key] for who, run in quoted for key in ("seconds", *FINAL_ERRORS)} | {
         "default_no_worse": no_worse(default, chapter),
         "ratio_default": chapter["seconds"] / default["seconds"],
         "ratio_error": chapter["orientation_error_deg"] / max(default["orientation_error_deg"], 1e-300),
