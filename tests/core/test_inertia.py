@@ -10,9 +10,9 @@ import numpy as np
 import pytest
 from scipy.spatial.transform import Rotation
 
-from rbi.core import shapes
 from rbi.core.inertia import parallel_axis, parallel_axis_to_com, principal_axes, re_express, symmetric_eigen
 from rbi.core.mass import MassProperties, combine
+from tests.core import built
 
 
 def direct_inertia(masses, positions, point):
@@ -74,8 +74,8 @@ def test_parallel_axis_round_trip_and_direction_of_offset():
 def test_parts_enter_with_their_own_inertia_plus_transport():
     # A cylinder plus a point: the body about its CoM equals each part's own inertia plus
     # m(|d|²E − d dᵀ), worked here from the closed form independently of combine().
-    cyl = shapes.cylinder(2.0, 0.1, [0.0, 0.0, 0.0], [0.0, 0.0, 0.4])
-    bolt = shapes.point(0.5, [0.1, 0.0, 0.4])
+    cyl = built.cylinder(2.0, 0.1, [0.0, 0.0, 0.0], [0.0, 0.0, 0.4])
+    bolt = built.point(0.5, [0.1, 0.0, 0.4])
     props = MassProperties.sum([cyl, bolt])
     com = (2.0 * np.array([0.0, 0.0, 0.2]) + 0.5 * np.array([0.1, 0.0, 0.4])) / 2.5
     own = np.diag([2.0 * (3 * 0.01 + 0.16) / 12, 2.0 * (3 * 0.01 + 0.16) / 12, 2.0 * 0.01 / 2])
@@ -111,10 +111,10 @@ HUB = (Fraction(1, 4), Fraction(1, 16), Fraction(1, 32), Fraction(5, 32))  # mas
 def rotor_elements(origin):
     o = np.asarray(origin, dtype=float)
     m, r, z0, z1 = map(float, DISC)
-    parts = [shapes.cylinder(m, r, o + [0.0, 0.0, z0], o + [0.0, 0.0, z1])]
+    parts = [built.cylinder(m, r, o + [0.0, 0.0, z0], o + [0.0, 0.0, z1])]
     m, r, za, zb = map(float, HUB)
-    parts.append(shapes.cone(m, r, o + [0.0, 0.0, za], o + [0.0, 0.0, zb]))
-    parts += [shapes.point(float(pm), o + np.array(p, dtype=float)) for pm, p in ROTOR_POINTS]
+    parts.append(built.cone(m, r, o + [0.0, 0.0, za], o + [0.0, 0.0, zb]))
+    parts += [built.point(float(pm), o + np.array(p, dtype=float)) for pm, p in ROTOR_POINTS]
     return parts
 
 
@@ -250,9 +250,9 @@ def test_same_answer_twice_and_under_tiny_perturbations():
 def test_plane_symmetric_body_gets_exact_zeros():
     # The chapter's bolted top: symmetric about the xz plane, so y is exactly a principal axis.
     elements = [
-        shapes.cone(0.4, 0.04, [0, 0, 0], [0, 0, 0.06]),
-        shapes.cylinder(0.1, 0.008, [0, 0, 0.06], [0, 0, 0.10]),
-        shapes.point(0.02, [0.04, 0, 0.06]),
+        built.cone(0.4, 0.04, [0, 0, 0], [0, 0, 0.06]),
+        built.cylinder(0.1, 0.008, [0, 0, 0.06], [0, 0, 0.10]),
+        built.point(0.02, [0.04, 0, 0.06]),
     ]
     moments, axes = principal_axes(MassProperties.sum(elements).inertia_about_com)
     assert_right_handed_orthonormal(axes)
@@ -267,9 +267,9 @@ def test_coaxial_stack_along_any_axis_gives_a_clean_set(seed):
     u = Q[:, 2]
     o = np.array([0.3, -0.2, 1.0])
     stack = [
-        shapes.cone(0.4, 0.04, o, o + 0.06 * u),
-        shapes.cylinder(0.1, 0.008, o + 0.06 * u, o + 0.10 * u),
-        shapes.cylinder(0.05, 0.02, o - 0.03 * u, o),
+        built.cone(0.4, 0.04, o, o + 0.06 * u),
+        built.cylinder(0.1, 0.008, o + 0.06 * u, o + 0.10 * u),
+        built.cylinder(0.05, 0.02, o - 0.03 * u, o),
     ]
     I = MassProperties.sum(stack).inertia_about_com
     moments, axes = principal_axes(I)

@@ -8,9 +8,9 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from rbi.core import shapes
 from rbi.core.inertia import moment_about_axis, parallel_axis, radii_of_gyration, unit_axis
 from rbi.core.mass import combine
+from tests.core import built
 
 
 def test_cylinder_about_a_diameter_through_its_end_face():
@@ -19,7 +19,7 @@ def test_cylinder_about_a_diameter_through_its_end_face():
     m, r, L = 2.5, 0.04, 0.3
     direction = np.array([1.0, 2.0, 2.0]) / 3.0
     start = np.array([0.1, -0.2, 0.3])
-    element = shapes.cylinder(m, r, start, start + L * direction)
+    element = built.cylinder(m, r, start, start + L * direction)
     about_start = parallel_axis(element.inertia_about_com, m, start - element.center_of_mass)
     across = np.cross(direction, [0.0, 0.0, 1.0])  # perpendicular to the cylinder's axis
     assert moment_about_axis(about_start, 7.0 * across) == pytest.approx(m * (r**2 / 4 + L**2 / 3), rel=1e-13)
@@ -62,7 +62,7 @@ def test_an_axis_without_direction_is_refused(axis):
 
 def test_radius_of_gyration_of_a_sphere():
     m, r = 3.0, 0.2
-    element = shapes.sphere(m, r, np.zeros(3))
+    element = built.sphere(m, r, np.zeros(3))
     k = radii_of_gyration(np.diag(element.inertia_about_com), m)
     assert k**2 == pytest.approx([2 * r**2 / 5] * 3, rel=1e-14)
 

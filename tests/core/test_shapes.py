@@ -12,6 +12,7 @@ import sympy as sp
 from scipy.spatial.transform import Rotation
 
 from rbi.core import shapes
+from tests.core import built
 
 rho, phi, z = sp.symbols("rho phi z", real=True)
 a_sym, h_sym = sp.symbols("a h", positive=True)
@@ -62,8 +63,8 @@ DIMENSIONS = [(0.04, 0.06), (1.0, 1.0), (0.3, 7.0), (5.0, 0.01), (2e-3, 3e-1)]
 
 SOLIDS = {
     # name: (closed-form volume, builder from the two axis end points, sympy integrals)
-    "cone": (shapes.cone_volume, shapes.cone, cone_integrals),
-    "cylinder": (shapes.cylinder_volume, shapes.cylinder, cylinder_integrals),
+    "cone": (shapes.cone_volume, built.cone, cone_integrals),
+    "cylinder": (shapes.cylinder_volume, built.cylinder, cylinder_integrals),
 }
 
 
@@ -107,21 +108,21 @@ def test_solid_along_any_axis_is_the_rotated_integral(solid, Q, origin):
 
 
 def test_reversed_cylinder_is_the_same_solid():
-    forward = shapes.cylinder(1.0, 0.1, [1.0, 2.0, 3.0], [1.5, 1.0, 3.2])
-    backward = shapes.cylinder(1.0, 0.1, [1.5, 1.0, 3.2], [1.0, 2.0, 3.0])
+    forward = built.cylinder(1.0, 0.1, [1.0, 2.0, 3.0], [1.5, 1.0, 3.2])
+    backward = built.cylinder(1.0, 0.1, [1.5, 1.0, 3.2], [1.0, 2.0, 3.0])
     np.testing.assert_allclose(forward.center_of_mass, backward.center_of_mass, rtol=0, atol=1e-15)
     assert_inertia_close(forward.inertia_about_com, backward.inertia_about_com, rel=1e-14)
 
 
 def test_thin_rod_along_x_keeps_its_tiny_axial_moment():
     # m r²/2 with r = 1e-6 next to transverse moments ~ m L²/12 = 1/12: 11 orders apart.
-    element = shapes.cylinder(1.0, 1e-6, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0])
+    element = built.cylinder(1.0, 1e-6, [0.0, 0.0, 0.0], [1.0, 0.0, 0.0])
     assert element.inertia_about_com[0, 0] == pytest.approx(0.5e-12, rel=1e-12)
     assert element.inertia_about_com[1, 1] == pytest.approx((3e-12 + 1.0) / 12.0, rel=1e-14)
 
 
 def test_point_mass_sits_at_its_position_with_no_own_inertia():
-    element = shapes.point(0.02, [0.04, 0.0, 0.06])
+    element = built.point(0.02, [0.04, 0.0, 0.06])
     assert element.mass == 0.02
     np.testing.assert_array_equal(element.center_of_mass, [0.04, 0.0, 0.06])
     np.testing.assert_array_equal(element.inertia_about_com, np.zeros((3, 3)))

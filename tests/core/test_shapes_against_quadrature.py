@@ -18,6 +18,7 @@ from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from rbi.core import shapes
+from tests.core import built
 
 RTOL = 1e-11
 
@@ -103,7 +104,7 @@ def test_box_turned_matches_exact_quadrature():
     )
     vols = np.array([wx * wy * wz for wx in grid[0][1] for wy in grid[1][1] for wz in grid[2][1]])
     mass = density * shapes.box_volume(size)
-    assert_matches(shapes.box(mass, size, center, ROT), pts, vols, density)
+    assert_matches(built.box(mass, size, center, ROT), pts, vols, density)
 
 
 def test_ellipsoid_turned_matches_quadrature():
@@ -116,7 +117,7 @@ def test_ellipsoid_turned_matches_quadrature():
 def test_sphere_matches_quadrature():
     center, radius, density = np.array([0.0, 0.5, 0.0]), 0.07, 7850.0
     pts, vols = ball(center, [radius] * 3, np.eye(3))
-    assert_matches(shapes.sphere(density * shapes.sphere_volume(radius), radius, center), pts, vols, density)
+    assert_matches(built.sphere(density * shapes.sphere_volume(radius), radius, center), pts, vols, density)
 
 
 @pytest.mark.parametrize("inner_fraction", [0.0, 0.5, 0.999])
@@ -177,7 +178,7 @@ lengths = st.floats(0.01, 10.0)
 @settings(max_examples=40, deadline=None)
 @given(r=lengths, h=lengths)
 def test_frustum_with_equal_radii_is_the_cylinder(r, h):
-    a, b = shapes.frustum(2.0, r, r, [0, 0, 0], [0, h, 0]), shapes.cylinder(2.0, r, [0, 0, 0], [0, h, 0])
+    a, b = shapes.frustum(2.0, r, r, [0, 0, 0], [0, h, 0]), built.cylinder(2.0, r, [0, 0, 0], [0, h, 0])
     np.testing.assert_allclose(a.center_of_mass, b.center_of_mass, rtol=1e-13)
     np.testing.assert_allclose(a.inertia_about_com, b.inertia_about_com, rtol=1e-13)
 
@@ -185,7 +186,7 @@ def test_frustum_with_equal_radii_is_the_cylinder(r, h):
 @settings(max_examples=40, deadline=None)
 @given(r=lengths, h=lengths)
 def test_frustum_with_a_point_end_is_the_cone(r, h):
-    a, b = shapes.frustum(2.0, 0.0, r, [0, 0, 0], [h, 0, 0]), shapes.cone(2.0, r, [0, 0, 0], [h, 0, 0])
+    a, b = shapes.frustum(2.0, 0.0, r, [0, 0, 0], [h, 0, 0]), built.cone(2.0, r, [0, 0, 0], [h, 0, 0])
     np.testing.assert_allclose(a.center_of_mass, b.center_of_mass, rtol=1e-13)
     np.testing.assert_allclose(a.inertia_about_com, b.inertia_about_com, rtol=1e-13)
 
@@ -195,16 +196,16 @@ def test_frustum_with_a_point_end_is_the_cone(r, h):
 def test_tube_without_bore_is_the_cylinder_and_shell_without_hole_the_sphere(r, h):
     np.testing.assert_allclose(
         shapes.tube(1.5, r, 0.0, [0, 0, 0], [0, 0, h]).inertia_about_com,
-        shapes.cylinder(1.5, r, [0, 0, 0], [0, 0, h]).inertia_about_com,
+        built.cylinder(1.5, r, [0, 0, 0], [0, 0, h]).inertia_about_com,
         rtol=1e-13,
     )
     np.testing.assert_allclose(
         shapes.spherical_shell(1.5, r, 0.0, [0, 0, 0]).inertia_about_com,
-        shapes.sphere(1.5, r, [0, 0, 0]).inertia_about_com,
+        built.sphere(1.5, r, [0, 0, 0]).inertia_about_com,
         rtol=1e-13,
     )
 
 
 def test_box_with_equal_edges_turned_anyhow_stays_isotropic():
-    cube = shapes.box(6.0, [0.2, 0.2, 0.2], [0, 0, 0], ROT)
+    cube = built.box(6.0, [0.2, 0.2, 0.2], [0, 0, 0], ROT)
     np.testing.assert_allclose(cube.inertia_about_com, 6.0 * 0.08 / 12 * np.eye(3), rtol=1e-14, atol=1e-17)

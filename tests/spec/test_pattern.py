@@ -211,8 +211,8 @@ def test_three_or_more_copies_about_an_axis_are_symmetric_about_it(count, axis, 
     mass lies on it and the inertia is axial·uuᵀ + transverse·(E − uuᵀ), whatever the part."""
     from types import SimpleNamespace
 
-    from rbi.core.shapes import box
     from rbi.spec.pattern import patterned
+    from tests.core.built import box
 
     R = Rotation.from_rotvec([0.3, -0.2, 0.5]).as_matrix()
     element = patterned(

@@ -16,6 +16,7 @@ import numpy as np
 from numpy.typing import ArrayLike
 
 from rbi.core import polygon
+from rbi.core.inertia import re_express as turned  # R I Rᵀ, exactly symmetric; rbi.spec.translate's name
 from rbi.core.mass import MassProperties
 from rbi.core.rotation import numbers, scalar, unit_vector, vector_length
 
@@ -180,18 +181,6 @@ def cone_volume(radius: float, height: float) -> float:
     return math.pi * radius * radius * height / 3.0
 
 
-def cone(mass: float, radius: float, apex: np.ndarray, base: np.ndarray) -> MassProperties:
-    """Solid right circular cone from its apex (tip) to the centre of its base disc.
-
-    The centre of mass lies a quarter of the height above the base. About it the axial
-    moment is 3/10 m r² and the transverse one 3/80 m (4 r² + h²).
-    """
-    u, height = axis_between(apex, base)
-    com = cone_center_of_mass(apex, u, height)
-    axial, transverse = cone_moments(mass, radius, height)
-    return MassProperties(mass, com, axisymmetric_inertia(axial, transverse, u))
-
-
 def cone_center_of_mass(apex: ArrayLike, axis: ArrayLike, height: Numbers) -> np.ndarray:
     """``apex + 3/4 h u``: a cone's centre of mass, a quarter of the height ``h`` above the base,
     with ``axis`` the unit vector ``u`` from the apex to the base. Also for many cones at once:
@@ -205,14 +194,6 @@ def cone_center_of_mass(apex: ArrayLike, axis: ArrayLike, height: Numbers) -> np
 def cylinder_volume(radius: float, length: float) -> float:
     """Volume of a solid circular cylinder (L³)."""
     return math.pi * radius * radius * length
-
-
-def cylinder(mass: float, radius: float, start: np.ndarray, end: np.ndarray) -> MassProperties:
-    """Solid circular cylinder between the centres of its end faces ``start`` and ``end``.
-
-    About its centre: axial moment m r²/2, transverse m (3 r² + L²)/12.
-    """
-    return _about_middle(mass, start, end, lambda length: cylinder_moments(mass, radius, length))
 
 
 def _about_middle(
@@ -231,13 +212,6 @@ def middle(start: np.ndarray, end: np.ndarray) -> np.ndarray:
     return 0.5 * (start + end)
 
 
-# --- point mass ----------------------------------------------------------------------------
-
-
-point = MassProperties.point
-"""A point mass: no inertia about its own position."""
-
-
 # --- shapes with an orientation --------------------------------------------------------------
 
 
@@ -249,14 +223,6 @@ def _turned(principal_moments: ArrayLike, rotation: np.ndarray | None) -> np.nda
     diagonal = np.zeros((*moments.shape, 3), dtype=moments.dtype)
     diagonal[..., [0, 1, 2], [0, 1, 2]] = moments
     return diagonal if rotation is None else turned(diagonal, rotation)
-
-
-def turned(inertia: np.ndarray, rotation: ArrayLike) -> np.ndarray:
-    """``R I Rᵀ`` made exactly symmetric: an inertia (or a stack (n, 3, 3)) about a point, in a
-    part's own axes, expressed in body axes (``rotation`` maps part axes to body axes)."""
-    R = numbers(rotation)
-    inertia = R @ inertia @ R.T
-    return 0.5 * (inertia + np.swapaxes(inertia, -1, -2))
 
 
 def _edges(size: ArrayLike) -> tuple[Numbers, Numbers, Numbers]:
@@ -276,17 +242,6 @@ def box_volume(size: ArrayLike) -> Numbers:
     give the n volumes."""
     a, b, c = _edges(size)
     return a * b * c
-
-
-def box(
-    mass: float, size: np.ndarray, center: np.ndarray, rotation: np.ndarray | None = None
-) -> MassProperties:
-    """Solid rectangular box with edges ``size = [a, b, c]`` along its own x, y, z axes.
-
-    About its centre, in its own axes: m (b² + c²)/12, m (a² + c²)/12, m (a² + b²)/12.
-    ``rotation`` maps the box's axes to body axes.
-    """
-    return MassProperties(mass, numbers(center), box_inertia(mass, size, rotation))
 
 
 def box_inertia(mass: Numbers, size: ArrayLike, rotation: np.ndarray | None = None) -> np.ndarray:
@@ -321,11 +276,6 @@ def ellipsoid(
 def sphere_volume(radius: float) -> float:
     """Volume of a solid sphere (L³)."""
     return 4.0 / 3.0 * math.pi * radius**3
-
-
-def sphere(mass: float, radius: float, center: np.ndarray) -> MassProperties:
-    """Solid sphere: 2/5 m r² about every axis through its centre."""
-    return MassProperties(mass, numbers(center), sphere_inertia(mass, radius))
 
 
 def sphere_inertia(mass: Numbers, radius: Numbers) -> np.ndarray:
@@ -539,6 +489,5 @@ def prism(
     extra = length * length / 12.0
     jxx, jyy, jxy = J[0, 0] / area, J[1, 1] / area, J[0, 1] / area  # ∫x'², ∫y'², ∫x'y' per area
     own = mass * np.array([[jyy + extra, -jxy, 0.0], [-jxy, jxx + extra, 0.0], [0.0, 0.0, jxx + jyy]])
-    turned = R @ own @ R.T
     com = numbers(start) + R @ [cx, cy, 0.5 * length]
-    return MassProperties(mass, com, 0.5 * (turned + turned.T))
+    return MassProperties(mass, com, turned(own, R))

@@ -15,7 +15,7 @@ import math
 
 import numpy as np
 
-from rbi.core.inertia import principal_axes
+from rbi.core.inertia import principal_axes, symmetrize
 
 
 def _shift_term(mass: np.ndarray, r: np.ndarray) -> np.ndarray:
@@ -98,8 +98,7 @@ def body_stack(
     first = np.einsum("np,npi->ni", masses, r) / total[:, None]
     about_point = inertias.sum(axis=1) + _shift_term(masses, r).sum(axis=1)
     inertia = about_point - _shift_term(total, first)
-    inertia = 0.5 * (inertia + np.swapaxes(inertia, 1, 2))
-    return total, point + first, inertia
+    return total, point + first, symmetrize(inertia)
 
 
 def coverage_factor(coverage: float) -> float:
