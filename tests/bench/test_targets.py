@@ -147,3 +147,17 @@ def test_robot_audit_target_is_shown_in_seconds_not_as_a_ratio():
         targets({"robotaudit": dict(measured, seconds=12.5, cpu_seconds=3.9, load_average=6.1)})
     )[0]
     assert slow[2:5] == ["12.5 s", "≤ 5 s", "NO"] and slow[6].endswith("; CPU 3.9 s at load 6.1")
+
+
+def test_csv_without_work_precision_is_the_targets():
+    """`rbi bench --only uncertainty --format csv` printed nothing: its CSV rows are its targets."""
+    from rbi.bench.report import csv_rows
+
+    rows = targets({"robotaudit": {"target_s": 5.0, "links": 10**5, "error": "ValueError: x"}})
+    assert csv_rows({"robotaudit": {}, "targets": rows}) == rows and rows[0]["area"] == "robot audit"
+    run = {"method": "default", "rtol": 1e-8, "chapter_setup": False, "seconds": 0.001}
+    case = {"name": "top", "runs": [run], "default": run | {"default_settings": True}}
+    assert [r["case"] for r in csv_rows({"workprecision": {"cases": [case]}, "targets": rows})] == [
+        "top",
+        "top",
+    ]

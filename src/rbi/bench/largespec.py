@@ -108,16 +108,14 @@ def yaml_load_ratio(n_parts: int, shape: str, timeout: float = 600.0) -> dict:
         bare_s = float(_python("-c", _BARE, str(path), timeout=timeout)[1])
         steps = json.loads(_python("-c", _RBI, str(path), timeout=timeout)[1])
         process_s = _python("-m", "rbi", "inertia", str(path), "--format", "json", timeout=timeout)[0]
-        rbi_load_s = steps["read"] + steps["validate"] + steps["translate"]
+        rbi_load_s = sum(steps.values())  # read, validate, translate
         return {
             "parts": n_parts,
             "shape": shape,
             "yaml_megabytes": path.stat().st_size / 1e6,
             "bare_s": bare_s,
             "rbi_load_s": rbi_load_s,
-            "rbi_read_s": steps["read"],
-            "rbi_validate_s": steps["validate"],
-            "rbi_translate_s": steps["translate"],
+            **{f"rbi_{step}_s": seconds for step, seconds in steps.items()},
             "rbi_inertia_process_s": process_s,
             "ratio": rbi_load_s / bare_s,
         }

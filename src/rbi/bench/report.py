@@ -704,9 +704,11 @@ CSV_FIELDS += ("drift", "steps", "rhs_evals", "seconds")
 
 
 def csv_rows(result: dict) -> list[dict]:
-    """One row per work-precision run (the table scripts most often want)."""
-    return [
+    """One row per work-precision run (the table scripts most often want); without that section
+    (``--only``), one row per target, so that a run with targets never prints an empty CSV."""
+    runs = [
         {"case": case["name"]} | {key: r.get(key, False) for key in CSV_FIELDS}
         for case in result.get("workprecision", {}).get("cases", [])
         for r in case["runs"] + [case["default"]]
     ]
+    return runs or result.get("targets", [])

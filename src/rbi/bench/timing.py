@@ -99,7 +99,7 @@ def machine() -> dict:
     """What the numbers were measured on: CPU, core count, load, Python and library versions."""
     import scipy  # loaded only by the commands that need it (start-up cost)
 
-    info = {
+    return {
         "date": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
         "cpu": _cpu_model(),
         "cores": os.cpu_count(),
@@ -109,10 +109,8 @@ def machine() -> dict:
         "numpy": numpy.__version__,
         "scipy": scipy.__version__,
         "executable": sys.executable,
+        "kernel": integrator().how,
     }
-
-    info["kernel"] = integrator().how
-    return info
 
 
 def _cpu_model() -> str:
