@@ -109,7 +109,7 @@ def test_omega_is_taken_as_given_in_body_axes(top):
 def test_settings_out_of_range_are_refused_by_name(settings, parameter):
     values = {"duration": 1.0, "tilt_axis": "y", "gravity": None, "max_steps": None, "rtol": None}
     with pytest.raises(ArgumentError, match=parameter):
-        check_run_settings(**(values | settings))
+        check_run_settings(RunSettings(**(values | settings)))
 
 
 def test_a_run_beyond_the_step_budget_is_refused_unless_asked(top):

@@ -12,7 +12,7 @@ import numpy as np
 from rbi.core.mass import MassProperties
 from rbi.errors import ArgumentError, literal
 from rbi.sim.api import DEFAULT_RTOL, sample_times
-from rbi.sim.compiled import STATUS_DONE, integrator
+from rbi.sim.compiled import STATUS_DONE, integrate_scenes
 from rbi.sim.scene import scene_from_properties
 from rbi.sim.summary import sweep_figures_batch
 from rbi.spec.uncertain import drawn, generator
@@ -44,23 +44,9 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
         for k in range(draws)
     ]
     t = sample_times(prepared.settings.duration, samples)
-    out = np.empty((draws, t.size, 7))
-    counts = np.zeros((draws, 4), dtype=np.int64)
-    status = np.full(draws, -1, dtype=np.int64)
-    integrator().integrate_batch(
-        np.repeat(np.concatenate((prepared.q0, prepared.omega0))[None, :], draws, axis=0),
-        t,
-        np.array([s.inertia for s in scenes]),
-        np.array([s.inertia_inv for s in scenes]),
-        np.array([s.gravity_moment for s in scenes]),
-        np.array([max(s.natural_rate, 0.0) for s in scenes]),
-        float(DEFAULT_RTOL if prepared.settings.rtol is None else prepared.settings.rtol),
-        int(prepared.budget),
-        out,
-        counts,
-        status,
-        0,
-    )
+    start = np.concatenate((prepared.q0, prepared.omega0))[None, :]
+    rtol = DEFAULT_RTOL if prepared.settings.rtol is None else prepared.settings.rtol
+    out, _, status = integrate_scenes(scenes, np.repeat(start, draws, axis=0), t, rtol, prepared.budget)
     done = [k for k in range(draws) if status[k] == STATUS_DONE and np.all(np.isfinite(out[k]))]
     rows = [sweep_figures_batch(scenes[k], t, out[k : k + 1, :, :4], out[k : k + 1, :, 4:])[0] for k in done]
     spread: dict[str, Any] = {name: _sd([row[key] for row in rows]) for name, key in FIGURES.items()}

@@ -36,21 +36,23 @@ SCENE_NAMES = {True: "heavy top on a fixed pivot", False: "free body (torque-fre
 Progress = Callable[[float], None]
 
 
-def check_run_settings(duration: Any, tilt_axis: Any, gravity: Any, max_steps: Any, rtol: Any) -> None:
-    """Refuse the settings that `simulate`, `animate` and `sweep` all take: duration (s, >= 0),
+def check_run_settings(settings: Any) -> None:
+    """Refuse the settings that `simulate`, `animate` and `sweep` all take (``settings``: a
+    :class:`RunSettings` or a :class:`~rbi.sweeps.study.SweepSettings`): duration (s, >= 0),
     tilt axis (world x or y), gravity (m/s², >= 0, or None for 9.81), step budget (>= 1 or
     None) and tolerance (in :data:`rbi.sim.api.RTOL_RANGE`, or None for the method's own)."""
 
-    require_numbers(duration=duration, gravity=gravity, rtol=rtol)
+    tilt_axis, gravity, max_steps = settings.tilt_axis, settings.gravity, settings.max_steps
+    require_numbers(duration=settings.duration, gravity=gravity, rtol=settings.rtol)
     require_numbers(integral=True, max_steps=max_steps)
-    check_duration(duration)
+    check_duration(settings.duration)
     if not isinstance(tilt_axis, str) or tilt_axis.lower() not in ("x", "y"):
         raise ArgumentError("tilt_axis", f"must be x or y (got {literal(tilt_axis)})")
     if gravity is not None and not (finite(gravity) and gravity >= 0.0):
         raise ArgumentError("gravity", f"must be a finite number of m/s² >= 0 (got {literal(gravity)})")
     if max_steps is not None and not (whole(max_steps) and max_steps >= 1):
         raise ArgumentError("max_steps", f"must be at least 1 (got {literal(max_steps)})")
-    check_rtol(rtol)
+    check_rtol(settings.rtol)
 
 
 def check_tilt(tilt_deg: float) -> None:
@@ -160,7 +162,7 @@ class RunSettings:
         if not finite(self.tilt_deg):
             raise ArgumentError("tilt_deg", f"must be a finite number (got {literal(self.tilt_deg)})")
         check_tilt(self.tilt_deg)
-        check_run_settings(self.duration, self.tilt_axis, self.gravity, self.max_steps, self.rtol)
+        check_run_settings(self)
         omega = None if self.omega is None else vector_value(self.omega, "omega")
         return replace(self, omega=omega, samples=samples, tilt_axis=self.tilt_axis.lower())
 

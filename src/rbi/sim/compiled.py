@@ -11,7 +11,9 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from typing import NamedTuple
+from typing import Any, NamedTuple
+
+import numpy as np
 
 STATUS_DONE = 0
 STATUS_MORE = 1  # max_steps reached: call again to continue
@@ -54,3 +56,32 @@ def integrator() -> Loaded:
         how = "Cython, OpenMP" if _dop853.openmp_enabled() else "Cython"
         _LOADED = Loaded(_dop853.integrate, _dop853.integrate_batch, how, time.perf_counter() - start)
     return _LOADED
+
+
+def integrate_scenes(
+    scenes: list[Any], starts: np.ndarray, t: np.ndarray, rtol: float, max_steps: int, threads: int = 0
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Runs of ``scenes`` (:class:`~rbi.sim.scene.Scene`, one a run) from ``starts`` ((B, 7):
+    quaternion, ω) sampled at ``t``, in one call of the batched kernel spread over ``threads``
+    cores (0: every core). Returns ``out`` (B, N, 7), ``counts`` (B, 4) and ``status`` (B,)."""
+    B = len(scenes)
+    out = np.empty((B, t.size, 7))
+    counts = np.zeros((B, 4), dtype=np.int64)
+    status = np.full(B, -1, dtype=np.int64)
+    with np.errstate(all="ignore"):
+        inertia_inv = np.array([s.inertia_inv for s in scenes])
+    integrator().integrate_batch(
+        starts,
+        t,
+        np.array([s.inertia for s in scenes]),
+        inertia_inv,
+        np.array([s.gravity_moment for s in scenes]),
+        np.array([max(s.natural_rate, 0.0) for s in scenes]),
+        float(rtol),
+        int(max_steps),
+        out,
+        counts,
+        status,
+        int(threads),
+    )
+    return out, counts, status

@@ -223,15 +223,10 @@ class EulerPoinsot:
         """The constant turns of q_wb(t) = q_wH ⊗ zxz(φ, θ, ψ) ⊗ q_tb that make t = 0 give ``q0``."""
         # the matrix whose rows are the triad in body coordinates maps body to triad coordinates
         self.q_tb = matrix_to_quaternion(self.axes[list(self.triad)])
-        phi0, theta0, psi0 = self._angles(np.array([0.0]))
+        phi0, theta0, psi0, _ = self._angles(np.array([0.0]))
         self.q_wH = qmul(
             qmul(np.asarray(q0, dtype=float), _conj(self.q_tb)), _conj(_zxz(phi0, theta0, psi0))
         )[0]
-
-    def omega_principal(self, t: np.ndarray) -> np.ndarray:
-        """ω in principal axes (N, 3), rad/s."""
-        sn, cn, dn, _, _ = self.ell.functions(self.lam * np.asarray(t, dtype=float) + self.tau0)
-        return self._omega(sn, cn, dn)
 
     def _psi(self, am: np.ndarray) -> np.ndarray:
         """ψ = atan2(I_a ω_a, I_b ω_b) as a continuous function of the amplitude am(τ), so
@@ -252,6 +247,7 @@ class EulerPoinsot:
         return np.stack((dn, sn, cn), axis=-1) * self.amplitudes
 
     def _angles(self, t: np.ndarray):
+        """The Euler angles φ, θ, ψ at times ``t`` and ω in principal axes (N, 3), rad/s."""
         t = np.asarray(t, dtype=float)
         sn, cn, dn, am, j = self.ell.functions(self.lam * t + self.tau0)
         w = self._omega(sn, cn, dn)
@@ -264,14 +260,13 @@ class EulerPoinsot:
             phi = phi + self.rate_periodic / self.lam * (
                 self.ell.G(self.nu, self.lam * t + self.tau0) - self.G0
             )
-        return phi, theta, psi
+        return phi, theta, psi, w
 
     def state_at(self, t: np.ndarray):
         t = np.atleast_1d(np.asarray(t, dtype=float))
-        phi, theta, psi = self._angles(t)
+        phi, theta, psi, w = self._angles(t)
         q = qmul(qmul(self.q_wH, _zxz(phi, theta, psi)), self.q_tb)
-        omega = self.omega_principal(t) @ self.axes
-        return unit_vector(q), omega
+        return unit_vector(q), w @ self.axes
 
     @property
     def period(self) -> float:

@@ -164,9 +164,6 @@ def initial_state(tilt_deg: float, omega_body, tilt_axis: str = "y") -> tuple[np
     half = 0.5 * np.radians(float(tilt_deg))
     if tilt_axis not in ("x", "y"):
         raise ValueError(f"tilt_axis must be 'x' or 'y' (got {tilt_axis!r})")
-    q0 = (
-        np.array([np.cos(half), np.sin(half), 0.0, 0.0])
-        if tilt_axis == "x"
-        else np.array([np.cos(half), 0.0, np.sin(half), 0.0])
-    )
+    q0 = np.array([np.cos(half), 0.0, 0.0, 0.0])
+    q0["xy".index(tilt_axis) + 1] = np.sin(half)
     return q0, np.array(omega_body, dtype=float).reshape(3)

@@ -38,11 +38,8 @@ strictly tighter reference, and gets no error estimate."""
 
 def sample_columns(scene: Scene, trajectory: Trajectory) -> dict[str, np.ndarray]:
     """The trajectory as named columns (see :data:`CSV_COLUMNS`)."""
-    q, omega = trajectory.q, trajectory.omega
-    tilt, precession = (
-        diagnostics.tilt_deg(q, scene.spin_frame),
-        diagnostics.precession_deg(q, scene.spin_frame),
-    )
+    q, omega, frame = trajectory.q, trajectory.omega, scene.spin_frame
+    tilt, precession = diagnostics.tilt_deg(q, frame), diagnostics.precession_deg(q, frame)
     return columns_of(trajectory.t, q, omega, tilt, precession, diagnostics.energy(scene, q, omega))
 
 
@@ -129,23 +126,16 @@ def tilt_figures(t: np.ndarray, q: np.ndarray, frame: np.ndarray | None = None) 
     defined = np.hypot(axis[..., 0], axis[..., 1]) > diagnostics.VERTICAL_TOLERANCE
     azimuth = np.degrees(np.unwrap(np.arctan2(axis[..., 1], axis[..., 0]), axis=1))
     duration = float(t[-1] - t[0])
-    out = []
-    for b in range(B):
-        if not defined[b].all():
-            rate = None
-        elif duration > 0 and t.size > 1:
-            rate = float((azimuth[b, -1] - azimuth[b, 0]) / duration)
-        else:
-            rate = 0.0
-        out.append(
-            {
-                "min_tilt_deg": float(np.min(tilt[b])),
-                "max_tilt_deg": float(np.max(tilt[b])),
-                "final_tilt_deg": float(tilt[b, -1]),
-                "precession_rate_deg_s": rate,
-            }
-        )
-    return out
+    rates = (azimuth[:, -1] - azimuth[:, 0]) / duration if duration > 0 and t.size > 1 else np.zeros(B)
+    return [
+        {
+            "min_tilt_deg": float(np.min(tilt[b])),
+            "max_tilt_deg": float(np.max(tilt[b])),
+            "final_tilt_deg": float(tilt[b, -1]),
+            "precession_rate_deg_s": float(rates[b]) if defined[b].all() else None,
+        }
+        for b in range(B)
+    ]
 
 
 def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any]:

@@ -16,7 +16,7 @@ import numpy as np
 
 from rbi.memory import cached
 from rbi.sim.api import sample_times
-from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrator
+from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrate_scenes
 from rbi.sim.scene import initial_state, scene_from_properties
 from rbi.sim.summary import sweep_figures_batch
 from rbi.spec.errors import InputError
@@ -124,26 +124,7 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
         ready.append(i)
     if not ready:
         return rows
-    B = len(ready)
-    out = np.empty((B, t.size, 7))
-    counts = np.zeros((B, 4), dtype=np.int64)
-    status = np.full(B, -1, dtype=np.int64)
-    with np.errstate(all="ignore"):
-        inertia_inv = np.array([s.inertia_inv for s in scenes])
-    integrator().integrate_batch(
-        np.array(starts),
-        t,
-        np.array([s.inertia for s in scenes]),
-        inertia_inv,
-        np.array([s.gravity_moment for s in scenes]),
-        np.array([max(s.natural_rate, 0.0) for s in scenes]),
-        float(job.rtol),
-        int(job.max_steps),
-        out,
-        counts,
-        status,
-        int(threads),
-    )
+    out, counts, status = integrate_scenes(scenes, np.array(starts), t, job.rtol, job.max_steps, threads)
     finite = np.all(np.isfinite(out), axis=(1, 2))
     figures_of = _figures(scenes, t, out, status, finite)
     _fill_rows(job, rows, ready, status, finite, counts, figures_of)

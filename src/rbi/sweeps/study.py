@@ -97,9 +97,7 @@ def check_settings(settings: SweepSettings) -> None:
         raise ArgumentError("runs", f"must be a whole number, at least 1 (got {literal(settings.runs)})")
     if not whole(settings.seed) or settings.seed < 0:
         raise ArgumentError("seed", f"must be a whole number 0 or above (got {literal(settings.seed)})")
-    check_run_settings(
-        settings.duration, settings.tilt_axis, settings.gravity, settings.max_steps, settings.rtol
-    )
+    check_run_settings(settings)
     check_samples(settings.samples, MAX_SWEEP_SAMPLES, " for a sweep")
     spin_axis_value(settings.spin_axis)
     if settings.workers is not None and not (whole(settings.workers) and 1 <= settings.workers <= 1024):
