@@ -64,7 +64,7 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         for r in runs.pop("runs")
         if not r["chapter_setup"]
     ]
-    best = min((t for t in trials if t["no_worse"]), key=lambda t: t["seconds"], default=None)
+    best = workprecision.best_matching(trials, chapter)
 
     progress("kernel: rbi at its defaults and the minimal loop")
     scene, q0, omega0 = workprecision.scene_of(case)

@@ -193,13 +193,17 @@ def speedup(chapter: dict, default: dict, best: dict | None) -> dict:
     return out
 
 
+def best_matching(rows: list[dict], chapter: dict) -> dict | None:
+    """The fastest of ``rows`` run with rbi's default method whose final errors are no larger than
+    the chapter's set-up's (None: none is)."""
+    matching = [r for r in rows if r["method"] == "default" and no_worse(r, chapter)]
+    return min(matching, key=lambda r: r["seconds"], default=None)
+
+
 def _speedup(rows: list[dict], default_row: dict) -> dict | None:
     """:func:`speedup` of a case's runs, or None when the chapter's set-up was not among them."""
     chapter = next((r for r in rows if r["chapter_setup"]), None)
-    if chapter is None:
-        return None
-    matching = [r for r in rows if r["method"] == "default" and no_worse(r, chapter)]
-    return speedup(chapter, default_row, min(matching, key=lambda r: r["seconds"]) if matching else None)
+    return speedup(chapter, default_row, best_matching(rows, chapter)) if chapter else None
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
