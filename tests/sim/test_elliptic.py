@@ -75,3 +75,8 @@ def test_simulating_a_symmetric_top_imports_no_scipy(tmp_path):
     facts = json.loads(proc.stdout)
     text = json.dumps(facts)
     assert "nutation_period_s" in text
+    # a heavy asymmetric top has no closed form, and finding that out loads no scipy either
+    bolted = top.with_name("top_bolted.yaml")
+    proc = subprocess.run([sys.executable, "-c", code, str(bolted)], capture_output=True, text=True)
+    assert "SCIPY False" in proc.stderr, proc.stderr
+    assert json.loads(proc.stdout)["closed_form"] is None

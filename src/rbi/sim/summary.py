@@ -188,13 +188,6 @@ def angle_to_h(scene: Scene, omega: np.ndarray) -> dict[str, float | None]:
 def closed_form_facts(scene: Scene, q0, omega0) -> dict[str, Any] | None:
     """Characteristic numbers of the closed-form solution (nutation bounds and period of a
     Lagrange top, period of ω of a free body ...), or None when the scene has none."""
-    if (
-        scene.pivoted
-        and scene.gravity > 0
-        and np.any(scene.com_from_pivot)
-        and diagnostics.symmetry_axis(scene) is None
-    ):
-        return None  # a heavy asymmetric top: no closed form (checked here to avoid importing scipy)
     try:
         return exact.solve(scene, q0, omega0).facts()
     except exact.NotIntegrable:
