@@ -22,6 +22,9 @@ if TYPE_CHECKING:  # imported where an element is made: `rbi inertia` loads no X
 
 FORMATS = ("urdf", "mjcf", "sdf")
 
+_MUJOCO_ORDER = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
+"""MJCF's ``fullinertia`` order."""
+
 _SIX = (("ixx", (0, 0)), ("ixy", (0, 1)), ("ixz", (0, 2)), ("iyy", (1, 1)), ("iyz", (1, 2)), ("izz", (2, 2)))
 
 
@@ -34,65 +37,43 @@ def _numbers(values) -> str:
     return " ".join(xml_number(v) for v in values)
 
 
-def _symmetric(inertia) -> np.ndarray:
+def inertial_element(fmt: str, mass: float, com, inertia, diagonal: bool = False) -> ET.Element:
+    """The ``<inertial>`` element of format ``fmt``. URDF: ``<origin xyz rpy>`` places the
+    inertial frame at the centre of mass, axes parallel to the link's; ``<inertia ixx ixy ixz
+    iyy iyz izz>`` about it. SDF: ``<pose>x y z roll pitch yaw</pose>`` (the same frame),
+    ``<mass>``, and ``<inertia>`` with child elements ixx ixy ixz iyy iyz izz. MJCF:
+    ``<inertial pos mass fullinertia>`` with fullinertia in MuJoCo's order Ixx Iyy Izz Ixy Ixz
+    Iyz; or, with ``diagonal``, the principal moments as ``diaginertia`` and ``quat`` (w x y z)
+    turning the principal frame into the body frame."""
+    import xml.etree.ElementTree as ET
+
+    if fmt not in FORMATS:
+        raise ValueError(f"no inertial writer for {fmt!r}")
     I = np.asarray(inertia, dtype=float)
-    return 0.5 * (I + I.T)
-
-
-def urdf_inertial(mass: float, com, inertia) -> ET.Element:
-    """URDF: ``<origin xyz rpy>`` places the inertial frame at the centre of mass, axes
-    parallel to the link's; ``<inertia ixx ixy ixz iyy iyz izz>`` about it."""
-    import xml.etree.ElementTree as ET
-
-    I = _symmetric(inertia)
+    I = 0.5 * (I + I.T)
+    six = {name: xml_number(I[i, j]) for name, (i, j) in _SIX}
+    if fmt == "mjcf":
+        attributes = {"pos": _numbers(com), "mass": xml_number(mass)}
+        if diagonal:
+            moments, axes = principal_axes(I)
+            # the quaternion of the matrix whose columns are the principal axes in body axes
+            attributes["quat"] = _numbers(matrix_to_quaternion(axes.T))
+            attributes["diaginertia"] = _numbers(moments)
+        else:
+            attributes["fullinertia"] = " ".join(six[key] for key in _MUJOCO_ORDER)
+        return ET.Element("inertial", attributes)
     inertial = ET.Element("inertial")
-    ET.SubElement(inertial, "origin", xyz=_numbers(com), rpy="0 0 0")
-    ET.SubElement(inertial, "mass", value=xml_number(mass))
-    ET.SubElement(inertial, "inertia", {name: xml_number(I[i, j]) for name, (i, j) in _SIX})
-    return inertial
-
-
-def sdf_inertial(mass: float, com, inertia) -> ET.Element:
-    """SDF: ``<pose>x y z roll pitch yaw</pose>`` (the centre of mass, axes parallel to the
-    link's), ``<mass>``, and ``<inertia>`` with child elements ixx ixy ixz iyy iyz izz."""
-    import xml.etree.ElementTree as ET
-
-    I = _symmetric(inertia)
-    inertial = ET.Element("inertial")
+    if fmt == "urdf":
+        ET.SubElement(inertial, "origin", xyz=_numbers(com), rpy="0 0 0")
+        ET.SubElement(inertial, "mass", value=xml_number(mass))
+        ET.SubElement(inertial, "inertia", six)
+        return inertial
     ET.SubElement(inertial, "pose").text = _numbers(list(com) + [0.0, 0.0, 0.0])
     ET.SubElement(inertial, "mass").text = xml_number(mass)
     block = ET.SubElement(inertial, "inertia")
-    for name, (i, j) in _SIX:
-        ET.SubElement(block, name).text = xml_number(I[i, j])
+    for name, text in six.items():
+        ET.SubElement(block, name).text = text
     return inertial
-
-
-def mjcf_inertial(mass: float, com, inertia, diagonal: bool = False) -> ET.Element:
-    """MJCF: ``<inertial pos mass fullinertia>`` with fullinertia in MuJoCo's order
-    Ixx Iyy Izz Ixy Ixz Iyz; or, with ``diagonal``, the principal moments as ``diaginertia``
-    and ``quat`` (w x y z) turning the principal frame into the body frame."""
-    import xml.etree.ElementTree as ET
-
-    I = _symmetric(inertia)
-    attributes = {"pos": _numbers(com), "mass": xml_number(mass)}
-    if diagonal:
-        moments, axes = principal_axes(I)
-        attributes["quat"] = _numbers(matrix_to_quaternion(axes.T))  # columns: principal axes in body axes
-        attributes["diaginertia"] = _numbers(moments)
-    else:
-        attributes["fullinertia"] = _numbers([I[0, 0], I[1, 1], I[2, 2], I[0, 1], I[0, 2], I[1, 2]])
-    return ET.Element("inertial", attributes)
-
-
-def inertial_element(fmt: str, mass: float, com, inertia, diagonal: bool = False) -> ET.Element:
-    """The ``<inertial>`` element of format ``fmt`` (``urdf``, ``sdf`` or ``mjcf``)."""
-    if fmt == "urdf":
-        return urdf_inertial(mass, com, inertia)
-    if fmt == "sdf":
-        return sdf_inertial(mass, com, inertia)
-    if fmt == "mjcf":
-        return mjcf_inertial(mass, com, inertia, diagonal=diagonal)
-    raise ValueError(f"no inertial writer for {fmt!r}")
 
 
 def element_text(element: ET.Element, indent: str = "", step: str = "  ") -> str:
@@ -125,34 +106,24 @@ def xml_comment(text: str) -> str:
 # --- `rbi export`: the element alone or in a minimal document, a comment first ----------------
 
 
-def _urdf_document(name: str, inertial: ET.Element) -> ET.Element:
+def _document(fmt: str, name: str, inertial: ET.Element) -> ET.Element:
+    """A minimal document of ``fmt`` holding ``inertial``: robot/link, sdf/model/link or
+    mujoco/worldbody/body (with a free joint)."""
     import xml.etree.ElementTree as ET
 
-    robot = ET.Element("robot", name=name)
-    ET.SubElement(robot, "link", name=name).append(inertial)
-    return robot
-
-
-def _sdf_document(name: str, inertial: ET.Element) -> ET.Element:
-    import xml.etree.ElementTree as ET
-
-    sdf = ET.Element("sdf", version="1.7")
-    model = ET.SubElement(sdf, "model", name=name)
-    ET.SubElement(model, "link", name=name).append(inertial)
-    return sdf
-
-
-def _mjcf_document(name: str, inertial: ET.Element) -> ET.Element:
-    import xml.etree.ElementTree as ET
-
-    mujoco = ET.Element("mujoco", model=name)
-    body = ET.SubElement(ET.SubElement(mujoco, "worldbody"), "body", name=name)
-    ET.SubElement(body, "freejoint")
-    body.append(inertial)
-    return mujoco
-
-
-_DOCUMENTS = {"urdf": _urdf_document, "mjcf": _mjcf_document, "sdf": _sdf_document}
+    if fmt == "urdf":
+        root = link = ET.Element("robot", name=name)
+    elif fmt == "sdf":
+        root = ET.Element("sdf", version="1.7")
+        link = ET.SubElement(root, "model", name=name)
+    else:
+        root = ET.Element("mujoco", model=name)
+        body = ET.SubElement(ET.SubElement(root, "worldbody"), "body", name=name)
+        ET.SubElement(body, "freejoint")
+        body.append(inertial)
+        return root
+    ET.SubElement(link, "link", name=name).append(inertial)
+    return root
 
 
 def export_xml(
@@ -169,7 +140,7 @@ def export_xml(
         to, props.mass, props.center_of_mass, props.inertia_about_com, diagonal=diagonal
     )
     if document:
-        element = _DOCUMENTS[to](visible(name), element)
+        element = _document(to, visible(name), element)
     ET.indent(element, space="  ")
     text = ET.tostring(element, encoding="unicode")
     if comment:

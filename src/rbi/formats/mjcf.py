@@ -231,20 +231,14 @@ def _check_moving_bodies(model: RobotModel) -> None:
             continue
         inertial = link.inertial
         mass = inertial.mass if inertial is not None else 0.0
+        geoms = inertial is not None and inertial.source == "geoms"
+        source = "its geoms give it" if geoms else "its <inertial> has"
         if inertial is None:
             why = "has no <inertial> and no geom with mass"
-        elif inertial.source == "geoms":
-            why = (
-                f"its geoms give it mass {mass:.6g} kg"
-                if mass < MJ_MINVAL
-                else "its geoms give it no inertia"
-            )
+        elif mass < MJ_MINVAL:
+            why = f"{source} mass {mass:.6g} kg"
         else:
-            why = (
-                f"its <inertial> has mass {mass:.6g} kg"
-                if mass < MJ_MINVAL
-                else "its <inertial> has a zero moment"
-            )
+            why = f"{source} no inertia" if geoms else f"{source} a zero moment"
         raise InputError(
             f"{model.path}: {link.label}: moved by a joint but {why}; MuJoCo's compiler refuses it "
             "(mass and inertia of moving bodies must be larger than 1e-15): give it an <inertial> or a geom with mass"
@@ -471,10 +465,7 @@ class _Bodies:
                 "inertial: an orientation is not allowed with fullinertia (which is in the body frame)"
             )
         rotation = self.orientation(where, attrs) if turned else None
-        quaternion = None
-        if "quat" in attrs:
-            q = np.array(numbers(where, attrs["quat"], "inertial: quat", 4))
-            quaternion = q
+        quaternion = np.array(numbers(where, attrs["quat"], "inertial: quat", 4)) if "quat" in attrs else None
         if rotation is not None and np.allclose(rotation, np.eye(3), rtol=0, atol=0):
             rotation, quaternion = None, None
         elif rotation is not None and quaternion is None:

@@ -550,9 +550,6 @@ def number(where: Where, text: str | None, what: str, default: float | None = No
         if default is None:
             raise where.error(f"{what}: missing")
         return default
-    values = _plain_numbers(text)
-    if values is not None and len(values) == 1:
-        return values[0]
     return numbers(where, text, what, 1)[0]
 
 
@@ -565,8 +562,6 @@ def positive(where: Where, values, what: str, allow_zero: bool = False) -> None:
 
 
 def angles(where: Where, values, what: str) -> list[float]:
-    if not any(values):
-        return list(values)
     for axis, angle in zip(("roll", "pitch", "yaw"), values):
         if abs(angle) > MAX_ANGLE_RAD:
             raise where.error(

@@ -226,35 +226,27 @@ def read_bytes(path: str) -> bytes:
 def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
     """(prefix, document, suffix, codec): the BOM and blank space before the document, and the
     blank space and NULs after it, set aside; the codec from the BOM or the declaration."""
+    data_prefix, decoded_from = b"", None
     for bom, codec in _BOMS:
         if data.startswith(bom):
+            data_prefix, data = bom, data[len(bom) :]
             if codec != "utf-8":
                 try:
-                    text = data[len(bom) :].decode(codec)
+                    data = data.decode(codec).encode("utf-8")
                 except UnicodeError:
                     raise InputError(
                         f"{path}: the text does not decode as {codec} (its byte-order mark says so); "
                         "save it as UTF-8"
                     ) from None
-                # re-split the decoded text; the suffix and prefix are re-encoded on writing
-                inner = text.encode("utf-8")
-                stripped = inner.lstrip(b" \t\r\n")
-                end = len(stripped.rstrip(b" \t\r\n\x00"))
-                lead = inner[: len(inner) - len(stripped)]
-                return (
-                    bom + lead.decode("utf-8").encode(codec),
-                    stripped[:end],
-                    stripped[end:].decode("utf-8").encode(codec),
-                    codec,
-                )
-            data_prefix, data = bom, data[len(bom) :]
+                decoded_from = codec
             break
-    else:
-        data_prefix = b""
     stripped = data.lstrip(b" \t\r\n")
     end = len(stripped.rstrip(b" \t\r\n\x00"))
-    prefix = data_prefix + data[: len(data) - len(stripped)]
-    body, suffix = stripped[:end], stripped[end:]
+    lead, body, suffix = data[: len(data) - len(stripped)], stripped[:end], stripped[end:]
+    if decoded_from is not None:  # the blank space around it in the file's own encoding
+        lead, suffix = lead.decode().encode(decoded_from), suffix.decode().encode(decoded_from)
+        return data_prefix + lead, body, suffix, decoded_from
+    prefix = data_prefix + lead
     if not body:
         raise InputError(f"{path}: not well-formed XML (line 1, column 0): the file is empty")
     match = _DECLARATION.match(body[:512])

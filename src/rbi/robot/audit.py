@@ -37,6 +37,7 @@ from rbi.formats.robot_paths import parse_package_paths
 from rbi.memory import collector_paused
 from rbi.reprs import Result, Rows, json_ready, plain
 from rbi.robot.flags import (
+    _OFF_DIAGONAL,
     SOLID_DENSITY_RANGE,
     Flag,
     comparison,
@@ -129,18 +130,6 @@ class LinkAudit:
         """The ratio of a declared moment to the geometry's farthest from 1 (by factor), or None
         when there is none (no geometry, no declared inertia)."""
         return None if self.ratios is None else worst_ratio(self.ratios)
-
-    @property
-    def given_ratios(self) -> list[float | None] | None:
-        """:attr:`ratios` as JSON and CSV hold them: a ratio the geometry cannot give (NaN,
-        ``-`` in the table) or one past the largest double (``>1.8e+308``) is None."""
-        return None if self.ratios is None else _given(self.ratios)
-
-    @property
-    def worst_ratio_text(self) -> str:
-        """:attr:`worst_ratio` as the table shows it (:func:`ratio_text`; ``-`` for none)."""
-        worst = self.worst_ratio
-        return "-" if worst is None else ratio_text(worst)
 
 
 @dataclass(repr=False)
@@ -282,7 +271,7 @@ def _link_cells(each: LinkAudit) -> tuple[str, ...]:
         each.link.name if each.link.name is not None else each.link.label,
         "-" if declared is None else number(declared.mass, 6),
         "-" if implied is None else number(implied, 4),
-        each.worst_ratio_text,
+        ratio_text(each.worst_ratio),
         "-" if each.com_offset is None else number(each.com_offset, 2),
         " ".join(f.code + ("!" if f.level == "error" else "") for f in each.flags) or "ok",
     )
@@ -321,7 +310,7 @@ def _joint_dicts(joints: list) -> list[dict[str, Any]]:
 
 
 def _csv_row(each: LinkAudit) -> dict[str, Any]:
-    declared, ratios = each.declared, each.given_ratios
+    declared, ratios = each.declared, None if each.ratios is None else _given(each.ratios)
     return {
         "link": each.link.name or each.link.label,
         "mass": declared.mass if declared else None,
@@ -331,9 +320,6 @@ def _csv_row(each: LinkAudit) -> dict[str, Any]:
         "com_offset": each.com_offset,
         "flags": " ".join(f"{f.code}:{f.level}" for f in each.flags),
     }
-
-
-_OFF_DIAGONAL = ~np.eye(3, dtype=bool)
 
 
 def _stack_moments(stack: np.ndarray) -> list[list[float]]:

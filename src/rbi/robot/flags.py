@@ -57,11 +57,11 @@ class Flag:
         return {"code": self.code, "level": self.level, "message": self.message}
 
 
-def ratio_text(ratio: float) -> str:
+def ratio_text(ratio: float | None) -> str:
     """A moment ratio for people: 3 significant digits, ``-`` for one the geometry cannot give
     (NaN), ``>1.8e+308`` for one past the largest double (the declared moment is finite, the
-    geometry's too small to divide it by)."""
-    if math.isnan(ratio):
+    geometry's too small to divide it by; None: no ratio)."""
+    if ratio is None or math.isnan(ratio):
         return "-"
     return f">{sys.float_info.max:.2g}" if math.isinf(ratio) else f"{ratio:.3g}"
 
