@@ -141,16 +141,9 @@ def euler_matrix(angles_rad: ArrayLike, sequence: str) -> np.ndarray:
 
     Lower case (``"xyz"``): about the fixed (extrinsic) axes, first about the first letter, so
     ``R = R3 R2 R1``. Upper case (``"XYZ"``): about the moving (intrinsic) axes, ``R = R1 R2 R3``.
-    This is the convention of scipy's ``Rotation.from_euler``.
+    This is the convention of scipy's ``Rotation.from_euler``. ``sequence`` is taken as given (a
+    spec's is checked when it is read: :class:`rbi.spec.models.Rotation`).
     """
-    if (
-        len(sequence) != 3
-        or not (sequence.islower() or sequence.isupper())
-        or set(sequence.lower()) - set("xyz")
-    ):
-        raise ValueError(
-            f"sequence must be three letters of x, y, z, all lower or all upper case (got {sequence!r})"
-        )
     turns = [
         elementary_rotation(axis, angle)
         for axis, angle in zip(sequence.lower(), numbers(angles_rad).reshape(3))
@@ -202,9 +195,8 @@ def z_axis_in_world(q: ArrayLike) -> np.ndarray:
 
 def up_in_body(q: ArrayLike) -> np.ndarray:
     """``R(q)ᵀ e_z``, the world's up axis in body axes (the matrix's third row), as
-    :func:`z_axis_in_world`."""
-    w, x, y, z = np.moveaxis(np.asarray(q, dtype=float), -1, 0)
-    return np.stack((2 * (x * z - w * y), 2 * (y * z + w * x), 1 - 2 * (x * x + y * y)), axis=-1)
+    :func:`z_axis_in_world` (of the inverse turn, the same arithmetic to the bit)."""
+    return z_axis_in_world(quaternion_conjugate(q))
 
 
 def quaternion_conjugate(q: ArrayLike) -> np.ndarray:

@@ -15,29 +15,23 @@ from rbi.core.rotation import quaternion_to_matrix
 from rbi.viz.labels import label, plain, pyplot
 from rbi.viz.solids import MAX_POINT_SPHERES, part_quads, segments_for, shade
 
-PALETTE = [
-    "#3f7fbf",
-    "#d08a2a",
-    "#4f9f5f",
-    "#9a5fb0",
-    "#6b8e23",
-    "#2aa0a0",
-    "#8c7b4f",
-    "#5a6b8c",
-    "#c9a227",
-    "#d46fa8",
-    "#a0522d",
-    "#7fb8e0",
-]
+PALETTE = (
+    "#3f7fbf #d08a2a #4f9f5f #9a5fb0 #6b8e23 #2aa0a0 #8c7b4f #5a6b8c #c9a227 #d46fa8 #a0522d #7fb8e0"
+).split()
 """Colours of solid parts, by the part's index in the spec (:func:`part_colour`): twelve, so a
 body of up to twelve parts has no two parts of one colour. The HTML page draws with this list
 too (``palette`` in :func:`rbi.viz.motion.page_data`), and the legends name parts in it."""
+AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
+"""Colours of the principal axes of the smallest, middle and largest moment (``rbi show``, and the
+angle panel of a free body's ``simulate --plot``)."""
 HOLE_RGBA = (0.88, 0.19, 0.19, 0.35)
 POINT_RGBA = (0.2, 0.2, 0.2, 1.0)
 VIEW_ELEVATION_DEG = 24.0
 VIEW_AZIMUTH_DEG = -48.0
 GIF_PIXELS = 400
 GIF_COLOURS = 64
+GIF_OPTIONS = {"format": "GIF", "save_all": True, "loop": 0, "optimize": True, "disposal": 1}
+"""How a GIF is written (pillow's options): every frame, looping forever, each frame drawn over the last."""
 MAX_TITLE_CHARS = 60
 """Longest title drawn on a GIF frame (its name part is cut to :data:`rbi.viz.labels.MAX_LABEL_CHARS`)."""
 MAX_GIF_FRAMES = 1500
@@ -66,17 +60,13 @@ def body_mesh(
     all_quads, all_colours = [], []
     for index, item in drawn:
         quads, banded = part_quads(item, size, segments)
-        if item.get("hole"):
-            colours = np.tile(HOLE_RGBA, (len(quads), 1))
-        elif item["kind"] == "point":
-            colours = np.tile(POINT_RGBA, (len(quads), 1))
-        else:
-            base = np.array(
-                to_rgba(part_colour(item.get("part", index)), 0.55 if item.get("stand_in") else 1.0)
-            )
-            colours = np.tile(base, (len(quads), 1))
-            if stripes:
-                colours[banded, :3] *= 0.62
+        solid = not item.get("hole") and not _is_point(item)
+        rgba = HOLE_RGBA if item.get("hole") else POINT_RGBA
+        if solid:
+            rgba = to_rgba(part_colour(item.get("part", index)), 0.55 if item.get("stand_in") else 1.0)
+        colours = np.tile(rgba, (len(quads), 1))
+        if solid and stripes:
+            colours[banded, :3] *= 0.62
         all_quads.append(quads)
         all_colours.append(colours)
     if not all_quads:
@@ -98,9 +88,7 @@ def cloud_points(parts: list[dict[str, Any]]) -> np.ndarray:
     when there are too many to draw as spheres (:func:`body_mesh`)."""
     dots = _points_as_dots(parts)
     clouds = [
-        np.asarray(item["positions"] if item["kind"] == "points" else item["position"], dtype=float).reshape(
-            -1, 3
-        )
+        np.asarray(item["positions" if item["kind"] == "points" else "position"], dtype=float).reshape(-1, 3)
         for item in parts
         if item["kind"] == "points" or (dots and _is_point(item))
     ]
@@ -132,21 +120,10 @@ def _scene_axes(fig, data: dict[str, Any]):
         ax.scatter([0], [0], [0], color="black", s=14, zorder=3)
     else:
         z_low, z_high = -reach, reach
-    ax.set_xlim(-reach, reach)
-    ax.set_ylim(-reach, reach)
-    ax.set_zlim(z_low, z_high)
+    ax.set(xlim=(-reach, reach), ylim=(-reach, reach), zlim=(z_low, z_high))
     ax.set_box_aspect((2 * reach, 2 * reach, z_high - z_low))
     ax.set_axis_off()
     return ax
-
-
-def _draw_body(ax, quads: np.ndarray, colours: np.ndarray, rotation: np.ndarray, zorder: int = 2):
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
-
-    turned = quads @ rotation.T
-    collection = Poly3DCollection(turned, facecolors=shade(turned, colours), edgecolors="none", zorder=zorder)
-    ax.add_collection3d(collection)
-    return collection
 
 
 def frame_indices(times, fps: float) -> np.ndarray:
@@ -160,6 +137,7 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
     """Yield one RGB image (``(pixels, pixels, 3)`` uint8 array) per sample index in ``indices``;
     the trace of the axis tip is drawn through every sample of the last ``data['trail_seconds']``."""
     plt = pyplot()
+    from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
 
     size = float(data["size"])
     quads, colours = body_mesh(data["parts"], size)
@@ -170,25 +148,17 @@ def render_frames(data: dict[str, Any], indices, pixels: int = GIF_PIXELS):
     try:
         ax = _scene_axes(fig, data)
 
-        plain(
-            fig.text(
-                0.02,
-                0.965,
-                label(data.get("title", ""), MAX_TITLE_CHARS),
-                fontsize=8.5,
-                weight="bold",
-                va="top",
-            )
-        )
+        title = label(data.get("title", ""), MAX_TITLE_CHARS)
+        plain(fig.text(0.02, 0.965, title, fontsize=8.5, weight="bold", va="top"))
         readout = fig.text(0.02, 0.915, "", fontsize=8, va="top", family="monospace")
         for index in indices:
             t = data["times"][index]
             rotation = quaternion_to_matrix(np.roll(data["quaternions"][index], 1))  # from [x, y, z, w]
-            body = _draw_body(ax, quads, colours, rotation)
+            faces = quads @ rotation.T
+            body = Poly3DCollection(faces, facecolors=shade(faces, colours), edgecolors="none", zorder=2)
+            ax.add_collection3d(body)
             turned = points @ rotation.T
-            dots = ax.scatter(
-                turned[:, 0], turned[:, 1], turned[:, 2], s=4, color="#333333", depthshade=False, zorder=2
-            )
+            dots = ax.scatter(*turned.T, s=4, color="#333333", depthshade=False, zorder=2)
             first = int(np.searchsorted(data["times"], t - data["trail_seconds"]))
             recent = trace[first : index + 1]
             (path,) = ax.plot(recent[:, 0], recent[:, 1], recent[:, 2], color="#c03030", lw=0.9, zorder=1)
@@ -216,13 +186,4 @@ def write_gif(data: dict[str, Any], path: str, fps: int = 25, progress=None) -> 
         images.append(Image.fromarray(frame).quantize(colors=GIF_COLOURS, method=Image.Quantize.MEDIANCUT))
         if progress is not None:
             progress(len(images), len(indices))
-    images[0].save(
-        path,
-        format="GIF",
-        save_all=True,
-        append_images=images[1:],
-        duration=round(1000 / fps),
-        loop=0,
-        optimize=True,
-        disposal=1,
-    )
+    images[0].save(path, append_images=images[1:], duration=round(1000 / fps), **GIF_OPTIONS)

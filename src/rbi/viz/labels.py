@@ -82,12 +82,7 @@ def _characters_of(font) -> frozenset[int]:
     """Code points the fonts matplotlib would use for ``font`` can draw (with its fallbacks)."""
     from matplotlib.font_manager import fontManager  # optional extra `plot`, loaded only to draw
 
-    paths = (
-        fontManager._find_fonts_by_props(font)
-        if hasattr(fontManager, "_find_fonts_by_props")
-        else [fontManager.findfont(font)]
-    )
-    return _charmaps(tuple(paths))
+    return _charmaps(tuple(fontManager._find_fonts_by_props(font)))
 
 
 @functools.cache

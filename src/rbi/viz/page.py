@@ -18,16 +18,14 @@ def _resource(*parts: str) -> str:
     return resources.files("rbi.viz").joinpath(*parts).read_text(encoding="utf-8")
 
 
+SCRIPT_ESCAPES = str.maketrans({c: f"\\u{ord(c):04x}" for c in "<>&\u2028\u2029"})
+"""The characters JSON may hold but a ``<script>`` element may not, each as its ``\\uXXXX`` escape."""
+
+
 def script_safe_json(data: Any) -> str:
     """JSON text that can sit inside a ``<script>`` element whatever strings it holds."""
     text = json.dumps(data, separators=(",", ":"), allow_nan=False, ensure_ascii=False)
-    return (
-        text.replace("<", "\\u003c")
-        .replace(">", "\\u003e")
-        .replace("&", "\\u0026")
-        .replace("\u2028", "\\u2028")
-        .replace("\u2029", "\\u2029")
-    )
+    return text.translate(SCRIPT_ESCAPES)
 
 
 def html_page(data: dict[str, Any], speed: float = 1.0) -> str:
@@ -43,6 +41,5 @@ def html_page(data: dict[str, Any], speed: float = 1.0) -> str:
         "THREE": three,
     }
     # one pass over the template: text put in is never searched for placeholders again
-    return re.sub(
-        r"__(TITLE|SPEED|DATA|THREE)__", lambda m: fill[m.group(1)], _resource("templates", "page.html")
-    )
+    template = _resource("templates", "page.html")
+    return re.sub(r"__(TITLE|SPEED|DATA|THREE)__", lambda m: fill[m.group(1)], template)

@@ -11,6 +11,7 @@ import numpy as np
 
 from rbi.core.rotation import rotate
 from rbi.files.output import write_output
+from rbi.viz.frames import AXIS_COLOURS
 from rbi.viz.labels import MAX_LABEL_CHARS, label, plain, pyplot
 
 
@@ -44,6 +45,10 @@ def plot_trajectory(
     _above_panel(fig, above, t, tip)
     _omega_panel(omega_ax, t, columns)
     _energy_panel(energy_ax, t, columns, energy_unit)
+    for ax in (angle_ax, omega_ax, energy_ax):
+        ax.set_xlabel("time [s]")
+    for ax in axes.flat:
+        ax.grid(alpha=0.3)
     if title:
         plain(fig.suptitle(label(title, 2 * MAX_LABEL_CHARS)))
     fig.tight_layout()
@@ -56,26 +61,22 @@ def _angle_panel(angle_ax, t: np.ndarray, q: np.ndarray, columns: dict, principa
     momentum (a free body: ``principal_axes`` rows and ``inertia`` about the CoM, body frame)."""
     if principal_axes is None:
         angle_ax.plot(t, columns["tilt_deg"], lw=1.0, color="#1f77b4")
-        angle_ax.set_ylabel("tilt of the spin axis from vertical [deg]")
-        top = float(np.max(columns["tilt_deg"])) if t.size else 0.0
-        angle_ax.set_ylim(-0.05 * max(top, 1.0), 1.1 * max(top, 1.0))
+        top = max(float(np.max(columns["tilt_deg"])) if t.size else 0.0, 1.0)
+        angle_ax.set(ylabel="tilt of the spin axis from vertical [deg]", ylim=(-0.05 * top, 1.1 * top))
     else:
         omega0 = np.array([columns["wx"][0], columns["wy"][0], columns["wz"][0]])
         momentum = rotate(q[0], np.asarray(inertia, dtype=float) @ omega0)
         direction = momentum / (np.linalg.norm(momentum) or 1.0)
-        for k, (axis, colour) in enumerate(
-            zip(np.asarray(principal_axes, dtype=float), ("#d62728", "#2ca02c", "#1f77b4"))
+        axes = np.asarray(principal_axes, dtype=float)
+        for k, (axis, colour, name) in enumerate(
+            zip(axes, AXIS_COLOURS, ("smallest", "intermediate", "largest"))
         ):
-            world = rotate(q, axis)
-            angle = np.degrees(np.arccos(np.clip(world @ direction, -1.0, 1.0)))
-            name = ("smallest", "intermediate", "largest")[k]
+            angle = np.degrees(np.arccos(np.clip(rotate(q, axis) @ direction, -1.0, 1.0)))
             angle_ax.plot(t, angle, lw=1.1, color=colour, label=f"axis of the {name} moment (I{k + 1})")
-        angle_ax.set_ylim(-5, 185)
-        angle_ax.set_yticks([0, 45, 90, 135, 180])
-        angle_ax.set_ylabel("angle to the angular momentum [deg]")
+        angle_ax.set(
+            ylim=(-5, 185), yticks=[0, 45, 90, 135, 180], ylabel="angle to the angular momentum [deg]"
+        )
         angle_ax.legend(loc="upper right", fontsize=8, framealpha=0.9)
-    angle_ax.set_xlabel("time [s]")
-    angle_ax.grid(alpha=0.3)
 
 
 def _above_panel(fig, above, t: np.ndarray, tip: np.ndarray) -> None:
@@ -96,26 +97,20 @@ def _above_panel(fig, above, t: np.ndarray, tip: np.ndarray) -> None:
     above.plot(x[-1:], y[-1:], "s", ms=5, color="#d62728", label=f"end (t = {t[-1]:g} s)")
     if reach < 1e-9:
         above.text(0.5, 0.12, "the axis stays vertical", transform=above.transAxes, ha="center", fontsize=9)
-    above.set_xlim(-extent, extent)
-    above.set_ylim(-extent, extent)
+    above.set(xlim=(-extent, extent), ylim=(-extent, extent), aspect="equal")
     above.xaxis.set_major_locator(MaxNLocator(5))
     above.yaxis.set_major_locator(MaxNLocator(5))
-    above.set_aspect("equal")
-    above.set_xlabel("world x (tip of the unit spin axis)")
-    above.set_ylabel("world y")
+    above.set(xlabel="world x (tip of the unit spin axis)", ylabel="world y")
     above.set_title("spin axis seen from above", fontsize=10)
     above.legend(loc="upper left", fontsize=8, framealpha=0.9)
-    above.grid(alpha=0.3)
 
 
 def _omega_panel(omega_ax, t: np.ndarray, columns: dict) -> None:
     """The body-frame angular velocity components against time."""
     for key, colour in (("wx", "#d62728"), ("wy", "#2ca02c"), ("wz", "#1f77b4")):
         omega_ax.plot(t, columns[key], lw=0.9, color=colour, label=f"ω{key[1]}")
-    omega_ax.set_xlabel("time [s]")
     omega_ax.set_ylabel("ω in body axes [rad/s]")
     omega_ax.legend(loc="upper right", fontsize=8, ncols=3, framealpha=0.9)
-    omega_ax.grid(alpha=0.3)
 
 
 def _energy_panel(energy_ax, t: np.ndarray, columns: dict, energy_unit: str) -> None:
@@ -124,11 +119,9 @@ def _energy_panel(energy_ax, t: np.ndarray, columns: dict, energy_unit: str) -> 
     drift = energy - energy[0]
     scale = float(np.max(np.abs(energy))) or 1.0
     energy_ax.plot(t, drift, lw=0.9, color="#444444")
-    energy_ax.set_xlabel("time [s]")
     energy_ax.set_ylabel(f"energy − initial energy [{energy_unit}]")
     energy_ax.set_title(f"energy drift (largest {np.max(np.abs(drift)) / scale:.1e} of |E|)", fontsize=10)
     energy_ax.ticklabel_format(axis="y", style="sci", scilimits=(-3, 3))
-    energy_ax.grid(alpha=0.3)
 
 
 def plot_stability_map(
@@ -155,13 +148,9 @@ def plot_stability_map(
     else:
         _tilt_over_two_axes(fig, ax, xs, np.asarray(ys, dtype=float), values, finite, y_label)
     if threshold is not None and np.isfinite(threshold):
-        ax.axvline(
-            threshold,
-            color="white" if ys is not None else "black",
-            ls="--",
-            lw=1.2,
-            label=f"sleeping-top threshold {threshold:.4g} rad/s (closed form)",
-        )
+        colour = "white" if ys is not None else "black"
+        name = f"sleeping-top threshold {threshold:.4g} rad/s (closed form)"
+        ax.axvline(threshold, color=colour, ls="--", lw=1.2, label=name)
     plain(ax.set_xlabel(label(x_label, 2 * MAX_LABEL_CHARS)))
     if ax.get_legend_handles_labels()[0]:
         ax.legend(loc="lower left", fontsize=8, framealpha=0.85)
@@ -179,13 +168,8 @@ def _tilt_against_one_axis(ax, xs: np.ndarray, values: np.ndarray, finite: np.nd
     ax.semilogy(xs[finite][order], np.maximum(values[finite], 1e-6)[order], "o-", ms=3, lw=1)
     ax.set_ylabel("largest tilt [deg]")
     if np.any(~finite):
-        ax.plot(
-            xs[~finite],
-            np.full(int(np.sum(~finite)), ax.get_ylim()[0]),
-            "x",
-            color="red",
-            label="failed run",
-        )
+        floor = np.full(int(np.sum(~finite)), ax.get_ylim()[0])
+        ax.plot(xs[~finite], floor, "x", color="red", label="failed run")
 
 
 def _tilt_over_two_axes(
@@ -198,23 +182,17 @@ def _tilt_over_two_axes(
     positive = values[finite & (values > 0)]
     low = max(float(np.min(positive)), 1e-6) if positive.size else 1e-3
     high = max(float(np.max(positive)), low * 10) if positive.size else 1.0
+    norm = LogNorm(low, high)
     x_values, y_values = np.unique(xs), np.unique(ys)
     if x_values.size > 1 and y_values.size > 1 and x_values.size * y_values.size == xs.size:
         grid = np.full((y_values.size, x_values.size), np.nan)
         grid[np.searchsorted(y_values, ys), np.searchsorted(x_values, xs)] = np.where(
             finite, np.maximum(values, low), np.nan
         )
-        mesh = ax.pcolormesh(
-            x_values, y_values, grid, norm=LogNorm(low, high), shading="nearest", cmap="viridis"
-        )
+        mesh = ax.pcolormesh(x_values, y_values, grid, norm=norm, shading="nearest", cmap="viridis")
     else:
         mesh = ax.scatter(
-            xs[finite],
-            ys[finite],
-            c=np.maximum(values[finite], low),
-            norm=LogNorm(low, high),
-            cmap="viridis",
-            s=18,
+            xs[finite], ys[finite], c=np.maximum(values[finite], low), norm=norm, cmap="viridis", s=18
         )
     if np.any(~finite):
         ax.plot(xs[~finite], ys[~finite], "x", color="red", label="failed run")

@@ -76,14 +76,9 @@ def ellipsoid_quads(center, semi_axes, rotation, segments: int = SEGMENTS):
     rows = segments // 2
     polar = np.linspace(0.0, np.pi, rows + 1)[:, None]
     azimuth = np.linspace(0.0, 2 * np.pi, segments + 1)[None, :]
-    local = np.stack(
-        (
-            np.sin(polar) * np.cos(azimuth),
-            np.sin(polar) * np.sin(azimuth),
-            np.cos(polar) * np.ones_like(azimuth),
-        ),
-        axis=-1,
-    ) * np.asarray(semi_axes, dtype=float)
+    sine, cosine = np.sin(polar), np.cos(polar)
+    unit = np.stack((sine * np.cos(azimuth), sine * np.sin(azimuth), cosine * np.ones_like(azimuth)), axis=-1)
+    local = unit * np.asarray(semi_axes, dtype=float)
     points = local @ np.asarray(rotation, dtype=float).T + np.asarray(center, dtype=float)
     return _grid_quads(points), _stripe_flags(rows, segments)
 
@@ -174,27 +169,24 @@ def segments_for(kinds: list[str]) -> int:
     return 4
 
 
+ROUND_SOLIDS = {
+    "frustum": (frustum_quads, ("start", "end", "start_radius", "end_radius", "inner_radius")),
+    "ellipsoid": (ellipsoid_quads, ("center", "semi_axes", "rotation")),
+    "torus": (torus_quads, ("center", "axis", "major_radius", "minor_radius")),
+    "hemisphere": (hemisphere_quads, ("center", "axis", "radius")),
+    "capsule": (capsule_quads, ("start", "end", "radius")),
+}
+"""Each round solid's quads function and the fields of its item it takes, in order (a frustum
+without ``inner_radius`` is solid)."""
+
+
 def part_quads(item: dict[str, Any], size: float, segments: int = SEGMENTS) -> tuple[np.ndarray, np.ndarray]:
     """Quads and stripe flags of one primitive; ``size``: the body's size (for point masses);
     ``segments``: facets around a round solid."""
     kind = item["kind"]
-    if kind == "frustum":
-        return frustum_quads(
-            item["start"],
-            item["end"],
-            item["start_radius"],
-            item["end_radius"],
-            item.get("inner_radius", 0.0),
-            segments,
-        )
-    if kind == "ellipsoid":
-        return ellipsoid_quads(item["center"], item["semi_axes"], item["rotation"], segments)
-    if kind == "torus":
-        return torus_quads(item["center"], item["axis"], item["major_radius"], item["minor_radius"], segments)
-    if kind == "hemisphere":
-        return hemisphere_quads(item["center"], item["axis"], item["radius"], segments)
-    if kind == "capsule":
-        return capsule_quads(item["start"], item["end"], item["radius"], segments)
+    if kind in ROUND_SOLIDS:
+        build, fields = ROUND_SOLIDS[kind]
+        return build(*(item[field] for field in fields if field in item), segments=segments)
     if kind == "mesh":
         return mesh_quads(item["vertices"], item["faces"])
     if kind == "points":  # drawn as dots, not as surfaces

@@ -17,39 +17,42 @@ import numpy as np
 from rbi.core.inertia import principal_axes
 from rbi.files.output import write_output
 from rbi.spec.geometry import part_geometry
-from rbi.viz.frames import HOLE_RGBA, body_mesh, cloud_points, part_colour
+from rbi.viz.frames import AXIS_COLOURS, HOLE_RGBA, body_mesh, cloud_points, part_colour
 from rbi.viz.labels import label, plain, plain_legend, pyplot
 from rbi.viz.motion import body_size, drawn_points, page_data, shifted
 from rbi.viz.page import html_page
 from rbi.viz.solids import shade
 
-AXIS_COLOURS = ["#d62728", "#2ca02c", "#1f77b4"]
-"""Colours of the principal axes of the smallest, middle and largest moment."""
+AXIS_NAME_BOX = {"boxstyle": "round,pad=0.15", "facecolor": "white", "edgecolor": "none", "alpha": 0.8}
+"""The white box behind the name of a principal axis (I1, I2, I3) at its tip."""
 MAX_LEGEND_PARTS = 14
+STILL_SUBTITLE = (
+    "body axes and coordinates as in the spec; principal axes about the centre of mass, lengths in "
+    "proportion to their moments"
+)
+"""The line under a still's title."""
 LONGEST_AXIS_FRACTION = 0.75
 """Half-length of the axis of the largest moment, as a fraction of the body's reach from its
 centre of mass."""
 
 
-def view_data(
-    title: str, geometry: list[dict[str, Any]], com, inertia_com, pivot, length_unit: str, inertia_unit: str
-) -> dict[str, Any]:
-    """What :func:`draw_still` and the page draw, JSON-ready. ``geometry``: from
-    :func:`rbi.spec.geometry.part_geometry`; ``com`` and ``pivot`` (or None) body frame;
-    ``inertia_com`` about the centre of mass in body axes. Every coordinate is the spec's own
-    (body frame, file units, not shifted or turned), so a picture's ticks match the YAML;
-    ``size``, the scale the page's camera and markers are set by, is the body's reach from the
-    pivot (or, without one, from the centre of mass); ``axes_length`` the length of the drawn
-    x, y, z axes from the spec's origin."""
+def view_data(title: str, body: Any) -> dict[str, Any]:
+    """What :func:`draw_still` and the page draw of a loaded ``body`` (its parts from
+    :func:`rbi.spec.geometry.part_geometry`, centre of mass, inertia about it and pivot),
+    JSON-ready. Every coordinate is the spec's own (body frame, file units, not shifted or
+    turned), so a picture's ticks match the YAML; ``size``, the scale the page's camera and
+    markers are set by, is the body's reach from the pivot (or, without one, from the centre of
+    mass); ``axes_length`` the length of the drawn x, y, z axes from the spec's origin."""
 
-    com = np.asarray(com, dtype=float)
+    geometry, pivot, inertia_unit = part_geometry(body), body.pivot, body.labels["inertia"]
+    com = np.asarray(body.props.center_of_mass, dtype=float)
     parts = [dict(item) for item in geometry]
     centre = com if pivot is None else np.asarray(pivot, dtype=float)
     size = body_size(
         [shifted(item, centre) for item in geometry]
         + [{"kind": "point", "position": (com - centre).tolist()}]
     )
-    moments, axes = principal_axes(np.asarray(inertia_com, dtype=float))
+    moments, axes = principal_axes(np.asarray(body.props.inertia_about_com, dtype=float))
     largest = float(np.max(np.abs(moments))) or 1.0
     reach_from_com = body_size([shifted(item, com) for item in geometry])
     axes_length = 1.15 * float(np.max(np.abs(drawn_points(parts, size)))) or size
@@ -63,7 +66,7 @@ def view_data(
         }
         for k, (m, axis) in enumerate(zip(moments, axes))
     ]
-    return page_data(label(title), length_unit, parts, size, com, trace=[com]) | {
+    return page_data(label(title), body.length_unit, parts, size, com, trace=[com]) | {
         "view_center": com.tolist(),
         "pivot": None if pivot is None else np.asarray(pivot, dtype=float).tolist(),
         "principal_axes": principal,
@@ -81,9 +84,8 @@ def part_legend(parts: list[dict[str, Any]]) -> list[dict[str, Any]]:
     for index, item in enumerate(parts):
         part = item.get("part", index)
         if part in entries:  # a sub-assembly's parts are one copy
-            entries[part]["copies"] = max(
-                entries[part]["copies"], item.get("copy", entries[part]["copies"]) + 1
-            )
+            seen = entries[part]["copies"]
+            entries[part]["copies"] = max(seen, item.get("copy", seen) + 1)
             continue
         colour = "#333333" if item["kind"] in ("point", "points") else part_colour(part)
         entries[part] = {
@@ -121,16 +123,7 @@ def draw_body(body: Any, target: Any, title: str | None = None) -> int:
     ``.html``, else a still (:func:`draw_still`); ``title`` defaults to the spec's name, else
     its path. Returns the number of parts drawn."""
 
-    props = body.props
-    data = view_data(
-        title or body.name or body.path,
-        part_geometry(body),
-        props.center_of_mass,
-        props.inertia_about_com,
-        body.pivot,
-        body.length_unit,
-        body.labels["inertia"],
-    )
+    data = view_data(title or body.name or body.path, body)
     if target.format == "html":
         data["legend"] = (
             f"{part_count(data['parts'])} parts · black dot: centre of mass · coloured lines: principal "
@@ -168,16 +161,8 @@ def draw_still(data: dict[str, Any], path: str, format: str = "png") -> None:
     )
     _frame(ax, quads, com, data)
     unit = data["length_unit"]
-    ax.set_xlabel(f"x [{unit}]")
-    ax.set_ylabel(f"y [{unit}]")
-    ax.set_zlabel(f"z [{unit}]")
-    plain(
-        fig.suptitle(
-            f"{label(data['title'])}\nbody axes and coordinates as in the spec; principal axes about the "
-            f"centre of mass, lengths in proportion to their moments",
-            fontsize=10,
-        )
-    )
+    ax.set(xlabel=f"x [{unit}]", ylabel=f"y [{unit}]", zlabel=f"z [{unit}]")
+    plain(fig.suptitle(f"{label(data['title'])}\n{STILL_SUBTITLE}", fontsize=10))
     fig.savefig(path, format=format, dpi=110)
     plt.close(fig)
 
@@ -213,21 +198,13 @@ def _draw_axes_and_points(ax, com: np.ndarray, data: dict[str, Any]) -> list:
     from matplotlib.patches import Patch  # optional extra `plot`, loaded only to draw
 
     handles = []
-    for axis in data["principal_axes"]:
+    for k, axis in enumerate(data["principal_axes"]):
         direction = np.asarray(axis["direction"]) * axis["half_length"]
         ends = np.stack((com - direction, com + direction))
         ax.plot(ends[:, 0], ends[:, 1], ends[:, 2], color=axis["colour"], lw=2.2, zorder=10)
         tip = com + 1.08 * direction
         ax.text(
-            tip[0],
-            tip[1],
-            tip[2],
-            f"I{data['principal_axes'].index(axis) + 1}",
-            color=axis["colour"],
-            fontsize=10,
-            weight="bold",
-            zorder=11,
-            bbox={"boxstyle": "round,pad=0.15", "facecolor": "white", "edgecolor": "none", "alpha": 0.8},
+            *tip, f"I{k + 1}", color=axis["colour"], fontsize=10, weight="bold", zorder=11, bbox=AXIS_NAME_BOX
         )
         handles.append(Line2D([], [], color=axis["colour"], lw=2.2, label=axis["label"]))
     ax.scatter(*com, color="black", s=40, marker="o", depthshade=False, zorder=12)
@@ -240,13 +217,8 @@ def _draw_axes_and_points(ax, com: np.ndarray, data: dict[str, Any]) -> list:
         if entry["hole"]:
             handles.append(Patch(facecolor=HOLE_RGBA, edgecolor="#b02020", label=legend_text(entry)))
         else:
-            handles.append(
-                Patch(
-                    facecolor=entry["colour"],
-                    alpha=0.55 if entry["stand_in"] else 1.0,
-                    label=legend_text(entry),
-                )
-            )
+            alpha = 0.55 if entry["stand_in"] else 1.0
+            handles.append(Patch(facecolor=entry["colour"], alpha=alpha, label=legend_text(entry)))
     if len(entries) > MAX_LEGEND_PARTS:
         handles.append(Patch(facecolor="white", label=f"… {len(entries)} parts in all"))
     return handles
@@ -267,12 +239,10 @@ def _frame(ax, quads: np.ndarray, com: np.ndarray, data: dict[str, Any]) -> None
     low, high = cloud.min(axis=0), cloud.max(axis=0)
     centre = 0.5 * (low + high)
     half = 0.5 * float(np.max(high - low)) or 1.0
-    ax.set_xlim(centre[0] - half, centre[0] + half)
-    ax.set_ylim(centre[1] - half, centre[1] + half)
-    ax.set_zlim(centre[2] - half, centre[2] + half)
+    lower, upper = centre - half, centre + half
+    ax.set(xlim=(lower[0], upper[0]), ylim=(lower[1], upper[1]), zlim=(lower[2], upper[2]))
     ax.set_box_aspect((1, 1, 1))
     # seen from azimuth -55°, x's upper end and y's lower end meet at the front corner: ticks at
     # both would print into one another ('100-100' under a wheel of 100 mm radius), so x keeps
     # its ticks there and y drops the one at its lower limit
-    low_y = centre[1] - half
-    ax.set_yticks([v for v in ax.get_yticks() if v > low_y + 0.02 * half and v <= centre[1] + half])
+    ax.set_yticks([v for v in ax.get_yticks() if v > lower[1] + 0.02 * half and v <= upper[1]])
