@@ -76,6 +76,10 @@ def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
     return ("point" if isinstance(about, list) else about), point
 
 
+UNITS = {"mass": "mass", "center_of_mass": "length", "moments": "inertia", "inertia": "inertia"}
+"""The quantities `rbi check` compares, in its order, and the unit label of each."""
+
+
 def run_checks(body: Any) -> list[Check]:
     """Every comparison the loaded body's `expect:` block asks for, in a fixed order
     (mass, centre of mass, principal moments, inertia); InputError when it has none."""
@@ -86,22 +90,16 @@ def run_checks(body: Any) -> list[Check]:
             f"{body.path}: expect: the spec has no `expect:` block, so there is nothing to check "
             f"(see docs/check.md)"
         )
-    labels, props = body.labels, body.props
-    checks = []
-    if expect.mass is not None:
-        checks.append(_compare("mass", expect.mass.value, props.mass, expect.mass.tol, labels["mass"]))
-    if expect.center_of_mass is not None:
-        e = expect.center_of_mass
-        checks.append(_compare("center_of_mass", e.value, props.center_of_mass, e.tol, labels["length"]))
-    if expect.moments is not None:
-        e = expect.moments
-        label, point = _expected_point(e.about, body)
-        moments, _ = principal_axes(props.inertia_about(point))
-        checks.append(_compare("moments", sorted(e.value), moments, e.tol, labels["inertia"], label))
-    if expect.inertia is not None:
-        e = expect.inertia
-        label, point = _expected_point(e.about, body)
-        checks.append(
-            _compare("inertia", e.value, props.inertia_about(point), e.tol, labels["inertia"], label)
-        )
+    labels, props, checks = body.labels, body.props, []
+    for quantity, unit in UNITS.items():
+        e = getattr(expect, quantity)
+        if e is None:
+            continue
+        label, value, actual = None, e.value, getattr(props, quantity, None)
+        if quantity in ("moments", "inertia"):
+            label, point = _expected_point(e.about, body)
+            actual = props.inertia_about(point)
+            if quantity == "moments":
+                value, actual = sorted(value), principal_axes(actual)[0]
+        checks.append(_compare(quantity, value, actual, e.tol, labels[unit], label))
     return checks

@@ -19,20 +19,20 @@ def format_location(loc: tuple[Any, ...], raw: Any) -> tuple[str, list[str]]:
     part_label = ""
     if len(loc) >= 2 and loc[0] == "parts" and isinstance(loc[1], int):
         index = loc[1]
-        part_label = f"parts[{index}]"
-        name = _part_field(raw, index, "name")
-        if isinstance(name, str):
-            part_label += f" ({name})"
+        part_label = named_part(index, _part_field(raw, index, "name"))
         loc = loc[2:]
         if loc and isinstance(loc[0], str) and _part_field(raw, index, "shape") == loc[0]:
             loc = loc[1:]  # the discriminator tag pydantic inserts for a union member
-    field = ""
-    for item in loc:
-        if isinstance(item, int):
-            field += f"[{item}]"
-        else:
-            field += ("." if field else "") + str(item)
+    field = field_text(loc)
     return part_label, [field] if field else []
+
+
+def field_text(steps: Any) -> str:
+    """The keys and indices ``steps`` written as a field path: ``position[0]``, ``rotation.axis``."""
+    text = ""
+    for step in steps:
+        text += f"[{step}]" if isinstance(step, int) else ("." if text else "") + str(step)
+    return text
 
 
 def _part_field(raw: Any, index: int, key: str) -> Any:
@@ -105,4 +105,9 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
 
 def part_label(index: int, part) -> str:
     """How messages name the part at ``index``: ``parts[2] (bolt)``."""
-    return f"parts[{index}]" + (f" ({part.name})" if part.name else "")
+    return named_part(index, part.name)
+
+
+def named_part(index: int, name: Any) -> str:
+    """``parts[INDEX] (NAME)``; just ``parts[INDEX]`` unless ``name`` is text, not empty."""
+    return f"parts[{index}]" + (f" ({name})" if isinstance(name, str) and name else "")

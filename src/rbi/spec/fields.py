@@ -48,12 +48,8 @@ class BuiltWhenUsed(StrictModel):
     model_config = ConfigDict(extra="forbid", frozen=True, defer_build=True)
 
 
-def _is_number(value: Any) -> bool:
-    return isinstance(value, (int, float)) and not isinstance(value, bool)
-
-
 def _finite_number(value: Any, what: str = "a number") -> float:
-    if not _is_number(value):
+    if not isinstance(value, (int, float)) or isinstance(value, bool):
         raise ValueError(f"must be {what} (got {shown(value)})")
     if not math.isfinite(value):
         raise ValueError(f"must be a finite number (got {value!r})")
@@ -222,10 +218,8 @@ def _tolerance(value: Any) -> float | str:
                 f"must be a percentage such as 1% or an absolute number in file units (got {shown(value)})"
             )
         return value.strip()
-    number = _finite_number(value, "a percentage such as 1% or an absolute number in file units")
-    if number < 0:
-        raise ValueError(f"must not be negative (got {value!r})")
-    return number
+    _finite_number(value, "a percentage such as 1% or an absolute number in file units")
+    return float(_non_negative(value))
 
 
 Tolerance = read_by(

@@ -266,23 +266,14 @@ def _step(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
 
 
 def _frustum(start, end, start_radius, end_radius, inner_radius=0.0) -> dict[str, Any]:
-    return {
-        "kind": "frustum",
-        "start": _vector(start),
-        "end": _vector(end),
-        "start_radius": float(start_radius),
-        "end_radius": float(end_radius),
-        "inner_radius": float(inner_radius),
-    }
+    radii = {"start_radius": start_radius, "end_radius": end_radius, "inner_radius": inner_radius}
+    ends = {"kind": "frustum", "start": _vector(start), "end": _vector(end)}
+    return ends | {key: float(radius) for key, radius in radii.items()}
 
 
 def _ellipsoid(center, semi_axes, R) -> dict[str, Any]:
-    return {
-        "kind": "ellipsoid",
-        "center": _vector(center),
-        "semi_axes": _vector(semi_axes),
-        "rotation": (np.eye(3) if R is None else R).tolist(),
-    }
+    rotation = (np.eye(3) if R is None else R).tolist()
+    return dict(kind="ellipsoid", center=_vector(center), semi_axes=_vector(semi_axes), rotation=rotation)
 
 
 def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:

@@ -171,8 +171,8 @@ def check_plain_data(value: Any, path: str, most: int | None = MAX_VALUES) -> No
 
 
 def _refuse_lone_surrogate(text: str, path: str, at: str) -> None:
-    if any("\ud800" <= c <= "\udfff" for c in text):
-        bad = next(c for c in text if "\ud800" <= c <= "\udfff")
+    bad = next((c for c in text if "\ud800" <= c <= "\udfff"), None)
+    if bad is not None:
         raise InputError(
             f"{path}: {at.encode('ascii', 'backslashreplace').decode() or 'text'}: holds a lone "
             f"surrogate \\u{ord(bad):04x} (half of a UTF-16 pair, not a character); write the "

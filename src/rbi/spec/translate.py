@@ -333,11 +333,9 @@ class Columns:
         return column
 
     def masses(self, units: models.Units, volume: np.ndarray) -> np.ndarray:
-        if self.part.mass is not None:
-            return self.column("mass")
-        if isinstance(self.part.density, str):
-            return density_in_units(self.part.density, units.length, units.mass) * volume
-        return self.column("density") * volume
+        if self.part.mass is None and isinstance(self.part.density, str):  # one material
+            return _solid_mass(self.part, volume, units)
+        return self.column("mass") if self.part.mass is not None else self.column("density") * volume
 
 
 def _axes(d: np.ndarray) -> tuple[np.ndarray, Any, np.ndarray]:
@@ -426,13 +424,9 @@ def _fields(kind: type) -> set[str]:
 
 def plain_part(part: Any) -> bool:
     """Whether a part of a batched shape is its :data:`BUILDERS` row as it stands (no pattern, no
-    rotation to apply after)."""
-    return _plain(part, _fields(type(part)))
-
-
-def _plain(part: Any, fields: set[str]) -> bool:
-    """No pattern of more than one copy, no rotation (fields looked up only where the model has
-    them: a missing attribute on a pydantic model is slow to ask for)."""
+    rotation to apply after; fields looked up only where the model has them: a missing
+    attribute on a pydantic model is slow to ask for)."""
+    fields = _fields(type(part))
     if "pattern" in fields and part.pattern is not None and part.pattern.count > 1:
         return False
     return "rotation" not in fields or part.rotation is None
@@ -467,11 +461,7 @@ def _finite_element(index: int, part, units: models.Units, path: str) -> MassPro
         raise InputError(f"{path}: {part_label(index, part)}: {exc}") from None
     except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
         element = None
-    if element is None or not (
-        np.isfinite(element.mass)
-        and np.all(np.isfinite(element.center_of_mass))
-        and np.all(np.isfinite(element.inertia_about_com))
-    ):
+    if element is None or not _finite(element.mass, element.center_of_mass, element.inertia_about_com):
         raise InputError(
             f"{path}: {part_label(index, part)}: numbers too large: mass or inertia overflows "
             f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?"
@@ -483,6 +473,11 @@ def _finite_element(index: int, part, units: models.Units, path: str) -> MassPro
             "its sizes or mass right?"
         )
     return element
+
+
+def _finite(mass: Any, com: np.ndarray, inertia: np.ndarray) -> Any:
+    """Whether a mass, centre of mass and inertia (or each row of a stack of them) are finite."""
+    return np.isfinite(mass) & np.all(np.isfinite(com), axis=-1) & np.all(np.isfinite(inertia), axis=(-2, -1))
 
 
 def _given_by(part: Any) -> Any:
@@ -510,15 +505,10 @@ def stacked_parts(spec: models.BodySpec, path: str) -> tuple[MassProperties, lis
         chosen = [parts[i] for i in indices]
         with np.errstate(all="ignore"):
             m, c, I = BUILDERS[kind](Columns(chosen, np.arange(len(chosen)), {}), spec.units)
-            for r in [r for r, part in enumerate(chosen) if not _plain(part, _fields(kind))]:
+            for r in [r for r, part in enumerate(chosen) if not plain_part(part)]:
                 element = _as_written(chosen[r], m[r], c[r], I[r])
                 m[r], c[r], I[r] = element.mass, element.center_of_mass, element.inertia_about_com
-            ok = (
-                np.isfinite(m)
-                & np.all(np.isfinite(c), axis=1)
-                & np.all(np.isfinite(I), axis=(1, 2))
-                & ~moments_lost(I, chosen[0].shape)
-            )
+            ok = _finite(m, c, I) & ~moments_lost(I, chosen[0].shape)
         rows = np.asarray(indices)[ok]
         mass[rows], com[rows], inertia[rows], built[rows] = m[ok], c[ok], I[ok], True
     for i in np.flatnonzero(~built).tolist():
@@ -544,7 +534,7 @@ def body_from_spec(spec: models.BodySpec, path: str):
             props = elements.sum()
     except ValueError as exc:
         raise InputError(f"{path}: {exc}") from None
-    if not all(np.all(np.isfinite(x)) for x in (props.mass, props.center_of_mass, props.inertia_about_com)):
+    if not _finite(props.mass, props.center_of_mass, props.inertia_about_com):
         raise InputError(f"{path}: numbers too large: the body's mass, centre of mass or inertia overflows")
     pivot = None if spec.pivot is None else np.asarray(spec.pivot, dtype=float)
     return LoadedBody(

@@ -10,7 +10,7 @@ or with a top-level ``uncertainty: tolerance`` the half-width of a uniform distr
 :func:`part_stack` evaluates one part's mass properties for many values of its uncertain inputs
 at once (Monte Carlo draws, or the complex steps of the sensitivities): the common shapes as
 whole arrays (:data:`rbi.spec.translate.BUILDERS`), a mesh's or STEP file's solid as scalings
-of one built solid, a sub-assembly as its own body's stack (:func:`body_at`), each turned and
+of one built solid, a sub-assembly as its own body's stack (:func:`rows_at`), each turned and
 patterned as a stack; the other shapes part by part through the same translation. A
 sub-assembly's ± are inputs of the body that holds it (:func:`with_sub_assemblies`).
 """
@@ -38,6 +38,7 @@ from rbi.core.uncertainty import (
 )
 from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.spec import models
+from rbi.spec.errors import field_text, named_part
 from rbi.spec.pattern import copy_motions
 from rbi.spec.translate import BUILDERS, Columns, part_element, plain_part, rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
@@ -73,13 +74,6 @@ class UncertainInput(NamedTuple):
             half = math.sqrt(3.0) * self.u
             return rng.uniform(self.value - half, self.value + half, n)
         return rng.normal(self.value, self.u, n)
-
-
-def _field_text(steps: tuple[Any, ...]) -> str:
-    text = ""
-    for step in steps:
-        text += f"[{step}]" if isinstance(step, int) else ("." if text else "") + str(step)
-    return text
 
 
 def parse_plus_minus(text: str) -> tuple[float, float, bool]:
@@ -143,12 +137,6 @@ def named_plus_minus(spec: models.BodySpec) -> bool:
     return any(part.name and ("±" in part.name or "+-" in part.name) for part in spec.parts)
 
 
-def _part_path(parts: list, index: int) -> str:
-    """``parts.NAME`` (``parts.INDEX`` for a part without a name), as sweeps name parts."""
-    name = parts[index].get("name")
-    return f"parts.{name}" if isinstance(name, str) and name else f"parts.{index}"
-
-
 def split_uncertain(raw: Any, path: str) -> Split | None:
     """The spec ``raw`` without its ± strings, or None when it has none and no top-level
     ``uncertainty``. InputError (``file: part: field: what is wrong``) for a ± that cannot be
@@ -179,18 +167,18 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
         node = plain["parts"][index]
         for step in steps[:-1]:
             node = node[step]
-        field = _field_text(tuple(steps))
+        field = field_text(steps)
         try:
             named = [step for step in steps if isinstance(step, str)]
             if named and named[-1] in NOT_NUMBERS:
                 raise ValueError(f"± is for a number of a part, and `{named[-1]}` is not a measured number")
             value, u, _ = parse_plus_minus(node[steps[-1]])
         except ValueError as exc:
-            name = parts[index].get("name")
-            label = f"parts[{index}]" + (f" ({name})" if isinstance(name, str) and name else "")
+            label = named_part(index, parts[index].get("name"))
             raise InputError(f"{path}: {label}: {field}: {exc}", file=path, part=label, field=field) from None
         node[steps[-1]] = value
-        where = f"{_part_path(parts, index)}.{field}"
+        name = parts[index].get("name")  # parts.NAME (parts.INDEX without a name), as sweeps name parts
+        where = f"parts.{name if isinstance(name, str) and name else index}.{field}"
         inputs.append(UncertainInput(where, index, tuple(steps), value, u / divisor, distribution))
     return Split(plain, tuple(inputs))
 
@@ -204,12 +192,6 @@ def _replaced(node: Any, steps: tuple[Any, ...], value: Any) -> Any:
     if isinstance(node, list):
         return [*node[:head], value, *node[head + 1 :]]
     return node.model_copy(update={head: value})
-
-
-def batched(part: Any, inputs: list[UncertainInput]) -> bool:
-    """Whether ``part`` is built by the whole-array closed forms of
-    :data:`rbi.spec.translate.BUILDERS` (which also take complex numbers)."""
-    return type(part) in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in inputs)
 
 
 PLACED = (models.MeshPart, models.StepPart, models.AssemblyPart)
@@ -405,7 +387,8 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     for index, chosen in by_part(inputs).items():
         group = [inputs[n] for n in chosen]
         part = spec.parts[index]
-        if batched(part, group):
+        # built by the whole-array closed forms of BUILDERS, which also take complex numbers
+        if type(part) in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in group):
             density = part.density if part.mass is None and isinstance(part.density, str) else None
             key = (type(part), tuple(i.steps for i in group), part.mass is None, density)
             alike.setdefault(key, []).append(index)
@@ -478,19 +461,14 @@ def rows_at(loaded: Any, values: np.ndarray, expand: bool = False) -> Stack:
     return tuple(np.concatenate([p[j] for p in pieces], axis=1) for j in range(3))  # type: ignore[return-value]
 
 
-def body_at(loaded: Any, values: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The body ``loaded`` with its uncertain inputs set to each row of ``values`` (n, k), real
-    or complex: mass (n,), centre of mass (n, 3), inertia about it (n, 3, 3), in its units,
-    the n bodies built as one stack from their parts (:func:`rows_at`)."""
-    return body_stack(*rows_at(loaded, values), loaded.props.center_of_mass)
-
-
 def drawn(loaded: Any, n: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """:func:`body_at` of n draws of every uncertain input (JCGM 101 §6)."""
+    """The body ``loaded`` for n draws of every uncertain input (JCGM 101 §6): mass (n,), centre
+    of mass (n, 3), inertia about it (n, 3, 3), in its units, the n bodies built as one stack
+    from their parts (:func:`rows_at`)."""
     inputs = loaded.spec._uncertain
     draws = np.stack([i.draws(rng, n) for i in inputs], axis=1) if inputs else np.zeros((n, 0))
     with np.errstate(all="ignore"):
-        return body_at(loaded, draws)
+        return body_stack(*rows_at(loaded, draws), loaded.props.center_of_mass)
 
 
 QUANTITIES = (
@@ -581,17 +559,9 @@ class Contributions(NamedTuple):
         JSON-ready (``-0.0`` written 0.0, as :func:`rbi.reprs.plain` writes it)."""
         inputs = [self.inputs[n] for n in self.order.tolist()]
         numbers = (a + 0.0 for a in (self.sensitivity, self.contribution, self.share))  # -0.0 + 0.0 is 0.0
-        return [
-            {
-                "input": x.path,
-                "value": x.value + 0.0,
-                "u": x.u + 0.0,
-                "sensitivity": s,
-                "contribution": c,
-                "share": f,
-            }
-            for x, s, c, f in zip(inputs, *(a.tolist() for a in numbers))
-        ]
+        keys = ("input", "value", "u", "sensitivity", "contribution", "share")
+        rows = zip(inputs, *(a.tolist() for a in numbers))
+        return [dict(zip(keys, (x.path, x.value + 0.0, x.u + 0.0, s, c, f))) for x, s, c, f in rows]
 
 
 def budget(
@@ -670,11 +640,7 @@ def part_uncertainties(loaded: Any, expand: bool = False) -> list[dict[str, Any]
                 found = _differences(loaded, index, group, True)
             rows[index] = np.sum((found / _flat_units(loaded) * u[chosen, None, None]) ** 2, axis=0)
     return [
-        {
-            "mass": float(u[0]),
-            "center_of_mass": u[1:4].tolist(),
-            "inertia_about_com": u[4:].reshape(3, 3).tolist(),
-        }
+        dict(zip(FIELDS, (float(u[0]), u[1:4].tolist(), u[4:].reshape(3, 3).tolist())))
         for u in np.sqrt(np.concatenate(rows))
     ]
 

@@ -16,6 +16,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from rbi.errors import ArgumentError, literal
+from rbi.spec.errors import field_text
 from rbi.spec.uncertain import PLUS_MINUS, parse_plus_minus
 
 _TOKEN = re.compile(r"([^.\[\]]+)|\[(-?\d+)\]")
@@ -114,10 +115,7 @@ def resolve(raw: Any, text: str) -> FieldPath:
 
 
 def _written(tokens: list[Any]) -> str:
-    text = ""
-    for token in tokens:
-        text += f"[{token}]" if isinstance(token, int) else ("." if text else "") + str(token)
-    return text or "the spec"
+    return field_text(tokens) or "the spec"
 
 
 def _named_entry(items: list, tokens: list[Any], k: int) -> tuple[int | None, int]:

@@ -68,22 +68,19 @@ _YAML11_INT = re.compile(
 _YAML11_FLOAT = re.compile(
     r"[-+]?(?:[0-9][0-9_]*)?\.[0-9_]*(?:[eE][-+][0-9]+)?|[-+]?[0-9][0-9_]*(?::[0-5]?[0-9])+\.[0-9_]*"
 )
-_SEPARATOR = (
-    "digit separator '_' (YAML 1.1 only); write the number without underscores, or quote it if it is text"
-)
-_LEADING_ZERO = "leading zero (YAML 1.1 reads it as octal); write the decimal number without it, or quote it if it is text"
+_SEPARATOR = "digit separator '_' (YAML 1.1 only); write the number without underscores"
+_LEADING_ZERO = "leading zero (YAML 1.1 reads it as octal); write the decimal number without it"
+_OR_QUOTE = ", or quote it if it is text"
 # Plain scalars that are not YAML 1.2 decimals and that YAML 1.1 (or YAML 1.2's core schema)
-# reads as a number: refused, rbi would read them differently from some other reader.
+# reads as a number: refused (what each is, then _OR_QUOTE), rbi would read them differently
+# from some other reader.
 _YAML11_NUMBERS = [
-    (
-        re.compile(r"[-+]?0x[0-9a-fA-F_]+"),
-        "hexadecimal; write the number in decimal, or quote it if it is text",
-    ),
-    (re.compile(r"[-+]?0o[0-7]+"), "octal; write the number in decimal, or quote it if it is text"),
-    (re.compile(r"[-+]?0b[01_]+"), "binary; write the number in decimal, or quote it if it is text"),
+    (re.compile(r"[-+]?0x[0-9a-fA-F_]+"), "hexadecimal; write the number in decimal"),
+    (re.compile(r"[-+]?0o[0-7]+"), "octal; write the number in decimal"),
+    (re.compile(r"[-+]?0b[01_]+"), "binary; write the number in decimal"),
     (
         re.compile(r"[-+]?[1-9][0-9_]*(?::[0-5]?[0-9])+(?:\.[0-9_]*)?"),
-        "base 60 (YAML 1.1 reads 1:30 as 90); write the number in decimal, or quote it if it is text",
+        "base 60 (YAML 1.1 reads 1:30 as 90); write the number in decimal",
     ),
     (re.compile(r"[-+]?0[0-7_]+"), _LEADING_ZERO),
     (_YAML11_INT, _SEPARATOR),  # what is left: 1_000, 1__0
@@ -259,20 +256,24 @@ class _Reading:
     def close(self, event, total: int) -> _Frame | None:
         """The innermost list or mapping ends: it goes into its parent (or is the result);
         the parent, now innermost, is returned."""
-        stack = self.stack
-        frame = stack.pop()
+        frame = self.stack.pop()
         value = frame.value
         if frame.merges:
             _apply_merges(value, frame.merges)
         if frame.anchor is not None:
             self.anchors[frame.anchor] = (value, total - frame.start_total, frame.height)
-        if not stack:
+        return self._put(value, frame.height, event.start_mark)
+
+    def _put(self, value: Any, height: int, mark) -> _Frame | None:
+        """``value`` (lists and mappings ``height`` levels deep) into the innermost open list or
+        mapping, or the result when none is open; the innermost is returned."""
+        if not self.stack:
             self.result = value
             return None
-        parent = stack[-1]
-        if frame.height >= parent.height:
-            parent.height = frame.height + 1
-        _add(parent, value, event.start_mark, self.fail)
+        parent = self.stack[-1]
+        if height >= parent.height:
+            parent.height = height + 1
+        _add(parent, value, mark, self.fail)
         return parent
 
     def alias(self, event, total: int) -> int:
@@ -293,15 +294,10 @@ class _Reading:
             self.fail(f"nested more than {MAX_DEPTH} levels deep (through an alias)", event.start_mark)
         if height:
             value = _fresh_copy(value)  # a tree, not a graph: editing one place never edits another
-        if not self.stack:
-            self.result = value
-            return total
-        parent = self.stack[-1]
-        if parent.is_map and parent.key is _NO_KEY and isinstance(value, (dict, list)):
+        parent = self.stack[-1] if self.stack else None
+        if parent is not None and parent.is_map and parent.key is _NO_KEY and isinstance(value, (dict, list)):
             self.fail(_COMPLEX_KEY, event.start_mark, in_key=True)
-        if height >= parent.height:
-            parent.height = height + 1
-        _add(parent, value, event.start_mark, self.fail)
+        self._put(value, height, event.start_mark)
         return total
 
     def document(self, event) -> None:
@@ -377,16 +373,16 @@ def _number(value: str, mark, fail, text_field: bool = False) -> Any:
             fail(f"integer of {len(digits)} digits is too long (at most {MAX_INTEGER_DIGITS})", mark)
         if len(digits) > 1 and digits[0] == "0":
             if _YAML11_INT.fullmatch(value):
-                fail(f"{_short(value)} is not a decimal number: {_LEADING_ZERO}", mark)
+                fail(f"{_short(value)} is not a decimal number: {_LEADING_ZERO}{_OR_QUOTE}", mark)
             fail(
                 f"{_short(value)} is not a decimal number: leading zero (YAML 1.1 reads it as text, "
-                f"YAML 1.2 as {int(value)}); write {int(value)}, or quote it if it is text",
+                f"YAML 1.2 as {int(value)}); write {int(value)}{_OR_QUOTE}",
                 mark,
             )
         return int(value)
     for pattern, meaning in _YAML11_NUMBERS:
         if pattern.fullmatch(value):
-            fail(f"{_short(value)} is not a decimal number: {meaning}", mark)
+            fail(f"{_short(value)} is not a decimal number: {meaning}{_OR_QUOTE}", mark)
     return value
 
 
