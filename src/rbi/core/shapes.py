@@ -126,9 +126,8 @@ def box_shell_moments(mass: Numbers, a: Numbers, b: Numbers, c: Numbers) -> tupl
     others by symmetry."""
     k = mass / (12.0 * (a * b + b * c + c * a))
 
-    def about(
-        p: Numbers, q: Numbers, r: Numbers
-    ) -> Numbers:  # the moment about the axis of edge p, with q and r across it
+    def about(p: Numbers, q: Numbers, r: Numbers) -> Numbers:
+        """The moment about the axis of edge p, with q and r across it."""
         return k * (q * r * (q * q + r * r) + p * r * (3.0 * q * q + r * r) + p * q * (q * q + 3.0 * r * r))
 
     return about(a, b, c), about(b, a, c), about(c, a, b)

@@ -125,14 +125,7 @@ def _energy_panel(energy_ax, t: np.ndarray, columns: dict, energy_unit: str) -> 
 
 
 def plot_stability_map(
-    x,
-    y,
-    values,
-    target,
-    x_label: str,
-    y_label: str | None,
-    threshold: float | None = None,
-    title: str = "",
+    x, y, values, target, x_label: str, y_label: str | None, threshold: float | None = None, title: str = ""
 ) -> None:
     """The largest tilt of each run (log colour scale) over one or two swept axes, written at the
     checked output ``target`` (its format; replaced atomically). With one axis: tilt against it.

@@ -9,6 +9,7 @@ axis, so a turn about that axis can be seen). Nothing here draws; numpy only.
 from __future__ import annotations
 
 from collections import Counter
+from itertools import product
 from typing import Any
 
 import numpy as np
@@ -86,9 +87,7 @@ def ellipsoid_quads(center, semi_axes, rotation, segments: int = SEGMENTS):
 def box_quads(center, size, rotation):
     """The six faces of a box (no stripes)."""
     half = 0.5 * np.asarray(size, dtype=float)
-    corners = (
-        np.array([[sx, sy, sz] for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)], dtype=float) * half
-    )
+    corners = np.array(list(product((-1, 1), repeat=3)), dtype=float) * half  # x slowest, z fastest
     faces = [(0, 1, 3, 2), (4, 6, 7, 5), (0, 4, 5, 1), (2, 3, 7, 6), (0, 2, 6, 4), (1, 5, 7, 3)]
     quads = corners[np.array(faces)] @ np.asarray(rotation, dtype=float).T + np.asarray(center, dtype=float)
     return quads, np.zeros(6, dtype=bool)
