@@ -230,15 +230,15 @@ def _mesh(part, spec_path: str) -> dict[str, Any] | None:
     solid = read_mesh_solid(
         spec_relative_file(spec_path, part.file, f"file: {part.file}"), part.inertia, part.repair
     )  # cached: read once; convex: the hull is drawn
-    if len(solid.faces) > MAX_DRAWN_TRIANGLES:
-        return None
     return _placed_mesh(part, np.asarray(solid.vertices, dtype=float) * float(part.scale), solid.faces)
 
 
-def _placed_mesh(part, vertices: np.ndarray, faces) -> dict[str, Any]:
+def _placed_mesh(part, vertices: np.ndarray, faces) -> dict[str, Any] | None:
     """A file's triangles (``vertices`` in its own axes, spec length unit) placed as the mass
     properties place them: turned by ``part.rotation`` about the file's origin, that origin
-    moved to ``part.position``."""
+    moved to ``part.position``; None for more than :data:`MAX_DRAWN_TRIANGLES` of them."""
+    if len(faces) > MAX_DRAWN_TRIANGLES:
+        return None
     R = rotation_matrix(part.rotation)
     if R is not None:
         vertices = vertices @ R.T
@@ -260,8 +260,6 @@ def _step(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
     path = spec_relative_file(spec_path, part.file, f"file: {part.file}")
     chosen = select_solids(read_step(path), part.solid)  # cached: read once for the mass properties
     vertices, faces = step_triangles(path, chosen, STEP_DEFLECTION)
-    if len(faces) > MAX_DRAWN_TRIANGLES:
-        return None
     return _placed_mesh(part, vertices / LENGTH_UNITS_IN_M[length_unit], faces)
 
 

@@ -247,17 +247,6 @@ def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str,
     return tuple(notes)
 
 
-def mesh_notes(spec: models.BodySpec) -> list[str]:
-    """One line per note on the spec's mesh parts, each naming the part (after translation:
-    the notes are set when a mesh is read)."""
-    return [
-        f"{part_label(i, part)}: {note}"
-        for i, part in enumerate(spec.parts)
-        if isinstance(part, models.MeshPart)
-        for note in part._mesh_notes
-    ]
-
-
 def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
     """One written part's mass element in file units: built from its fields (a mesh read from
     its file beside the spec), then, with a ``pattern``, every copy combined into one. A part of
@@ -555,8 +544,10 @@ def body_from_spec(spec: models.BodySpec, path: str):
 
 
 def _warnings(spec: models.BodySpec, path: str) -> list[str]:
-    """The spec's unit slips, its mesh notes and every sub-assembly's warnings."""
-    notes = [f"{path}: {note}" for note in mesh_notes(spec)]
+    """The spec's unit slips, its mesh notes (each naming the part; set when a mesh is read) and
+    every sub-assembly's warnings."""
+    meshes = [(i, part) for i, part in enumerate(spec.parts) if isinstance(part, models.MeshPart)]
+    notes = [f"{path}: {part_label(i, part)}: {note}" for i, part in meshes for note in part._mesh_notes]
     inner = [w for part in spec.parts if isinstance(part, models.AssemblyPart) for w in part._loaded.warnings]
     return unit_warnings(spec, path) + notes + inner
 

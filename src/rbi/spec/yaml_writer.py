@@ -58,10 +58,6 @@ def dump(data: Any, *, width: int = 100) -> str:
 def _strings(data: Any):
     if isinstance(data, str):
         yield data
-    elif isinstance(data, dict):
-        for key, value in data.items():
-            yield from _strings(key)
-            yield from _strings(value)
-    elif isinstance(data, (list, tuple)):
-        for item in data:
+    elif isinstance(data, (dict, list, tuple)):
+        for item in data.items() if isinstance(data, dict) else data:  # a mapping's (key, value) pairs
             yield from _strings(item)
