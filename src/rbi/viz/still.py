@@ -171,24 +171,16 @@ def _draw_solids(ax, quads, colours, hole_quads, hole_colours) -> None:
     """The parts' faces, shaded; holes in red, the solids made see-through where there are any."""
     from mpl_toolkits.mplot3d.art3d import Poly3DCollection  # optional extra `plot`, loaded only to draw
 
-    if len(quads):
-        if len(hole_quads):
-            colours[:, 3] = np.minimum(colours[:, 3], 0.75)  # so that holes inside a part show through
-        ax.add_collection3d(
-            Poly3DCollection(
-                quads, facecolors=shade(quads, colours), edgecolors=(0, 0, 0, 0.06), linewidths=0.2, zorder=1
-            )
-        )
-    if len(hole_quads):
-        ax.add_collection3d(
-            Poly3DCollection(
-                hole_quads,
-                facecolors=hole_colours,
-                edgecolors=(0.75, 0.1, 0.1, 0.5),
-                linewidths=0.3,
-                zorder=2,
-            )
-        )
+    if len(quads) and len(hole_quads):
+        colours[:, 3] = np.minimum(colours[:, 3], 0.75)  # so that holes inside a part show through
+    layers = [  # faces, their fill, edges and edge width: the solids shaded, then the holes over them
+        (quads, shade(quads, colours), (0, 0, 0, 0.06), 0.2),
+        (hole_quads, hole_colours, (0.75, 0.1, 0.1, 0.5), 0.3),
+    ]
+    for z, (faces, fill, edges, width) in enumerate(layers, start=1):
+        if len(faces):
+            layer = Poly3DCollection(faces, facecolors=fill, edgecolors=edges, linewidths=width, zorder=z)
+            ax.add_collection3d(layer)
 
 
 def _draw_axes_and_points(ax, com: np.ndarray, data: dict[str, Any]) -> list:
