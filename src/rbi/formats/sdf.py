@@ -69,14 +69,11 @@ JOINT_KINDS = {
 def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     path, root = document.path, document.root
     models = list(_models(root, Pose.identity()))
-    first = root.child("model") or (
-        root.child("world").child("model")
-        if root.child("world") is not None and root.child("world").child("model") is not None
-        else None
-    )
+    world = root.child("world")
+    first = root.child("model") or (world.child("model") if world is not None else None)
     name = first.get("name") if first is not None else None
     robot = RobotModel(path, "sdf", name, document=document)
-    for include in (e for e in root.iter("include")):
+    for include in root.iter("include"):
         uri = include.child("uri")
         robot.unchecked.append(
             f"{path}: include {short(uri.text if uri is not None else '', 80)!r}: not followed; "
@@ -335,15 +332,11 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, fra
         axis = numbers(where, xyz_element.text, "axis/xyz", 3) if xyz_element is not None else [0.0, 0.0, 1.0]
         if kind in ("revolute", "prismatic"):
             axis = unit(where, axis, "axis/xyz")
-            in_model = (
-                axis_element is not None
-                and (
-                    axis_element.child("use_parent_model_frame") is not None
-                    and (axis_element.child("use_parent_model_frame").text or "").strip() in ("true", "1")
-                )
-            ) or (xyz_element is not None and xyz_element.get("expressed_in") == "__model__")
             expressed_in = xyz_element.get("expressed_in") if xyz_element is not None else None
-            if in_model:
+            use_parent = (
+                _text(axis_element.child("use_parent_model_frame")) if axis_element is not None else None
+            )
+            if use_parent in ("true", "1") or expressed_in == "__model__":
                 axis = frames.in_model(child_name, where).rotation.T @ axis
             elif expressed_in not in (None, ""):
                 axis = (

@@ -15,7 +15,7 @@ from rbi.robot.tree import placement
 def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tuple[dict[str, Any], list[str]]:
     """(spec, names of the links left out because they have no mass)."""
 
-    poses = placement(model, joints).placed  # in the frame of the totals
+    at = placement(model, joints)  # in the frame of the totals
     parts, left_out, used = [], [], set()
     for link in model.links:
         inertial = link.inertial
@@ -23,8 +23,8 @@ def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tup
         if inertial is None or inertial.mass == 0.0:
             left_out.append(name)
             continue
-        pose = poses[link.index]
-        placed = inertial.properties.transformed(pose.rotation, pose.translation)
+        row = link.index
+        placed = inertial.properties.transformed(at.placed_rotations[row], at.placed_translations[row])
         unique = name if name not in used else f"{name}_{link.index}"
         used.add(unique)
         parts.append(custom_part(unique, inertial.mass, placed.center_of_mass, placed.inertia_about_com))

@@ -54,8 +54,9 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     axes = np.matmul(to_R, placed.axes[..., None])[..., 0]
     anchors = np.matmul(to_R, placed.anchors[..., None])[..., 0] + to_frame.translation
     chosen = placed.joints
-    if model.format == "sdf":  # only an SDF root link has joints to the world
-        keep = [i for i, joint in enumerate(chosen) if not _world_joint(model, joint[0])]
+    if model.format == "sdf":  # only an SDF root link has joints to the world: SDF reads no axis for them
+        roots = len(placed.columns)  # (a root's parent row)
+        keep = [i for i, joint in enumerate(chosen) if placed.columns.parents[joint[0]] != roots]
         chosen, axes, anchors = [chosen[i] for i in keep], axes[keep], anchors[keep]
     rows = [row for row, *_ in chosen]
     M = mass[rows]  # Σ m of each joint's subtree
@@ -79,12 +80,6 @@ def _effort_flag(kind: str, torque: float, limit: float) -> dict[str, str]:
         "message": f"holding the pose takes {abs(torque):.4g} {unit}, more than the "
         f"declared effort limit {limit:.4g} {unit}",
     }
-
-
-def _world_joint(model: RobotModel, row: int) -> bool:
-    """A joint of an SDF root link (``row`` in ``model.links``): a joint to the world, for which
-    SDF reads no axis here."""
-    return model.format == "sdf" and model.links[row].parent is None
 
 
 def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
@@ -115,7 +110,7 @@ def _subtree_sums(model: RobotModel, placed) -> tuple[np.ndarray, np.ndarray]:
     :func:`rbi.formats.robot.depth_first`'s order: one level of the tree at a time, deepest
     first, each level's links in that reverse order (``np.add.at`` adds in the order given, so
     each parent receives the same sums in the same order as one link at a time)."""
-    n = len(placed.translations)
+    n = len(placed.placed_translations)
     mass = np.zeros(n + 1)  # row n: every root's parent, added to and dropped
     first = np.zeros((n + 1, 3))
     chosen, masses, coms, _ = heavy_links(placed)

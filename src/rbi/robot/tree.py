@@ -61,17 +61,14 @@ def parse_joint_values(values: Mapping[str, float] | Sequence[str] | None) -> di
 
 @dataclass
 class Placement:
-    """The links placed at one configuration, as arrays (one row a link): ``rotations``
-    (n, 3, 3) and ``translations`` (n, 3) each link's frame in the model's frame; ``joints``
+    """The links placed at one configuration, as arrays (one row a link): ``joints``
     [(row, name, kind, effort limit)] of the revolute and prismatic joints in file order of
     their links, with ``axes`` and ``anchors`` (k, 3) in the model's frame where the joints
     before them leave them; ``frame`` the name of the frame totals are given in (``"root link
     NAME"`` for URDF and SDF, ``"world"`` for MJCF), ``to_frame`` model frame → that frame, and
-    ``placed_rotations``/``placed_translations`` each link's frame in that frame, which
-    :attr:`placed` gives as :class:`Pose` values."""
+    ``placed_rotations`` (n, 3, 3) and ``placed_translations`` (n, 3) each link's frame in that
+    frame."""
 
-    rotations: np.ndarray
-    translations: np.ndarray
     joints: list
     axes: np.ndarray
     anchors: np.ndarray
@@ -84,13 +81,6 @@ class Placement:
     :func:`~rbi.formats.robot.depth_first`'s order, with their parents' rows (a root's: n)."""
     columns: LinkColumns
     """The model's links as arrays (:meth:`RobotModel.link_columns`)."""
-
-    @property
-    def placed(self) -> dict[int, Pose]:
-        """Link index → its frame in :attr:`frame`."""
-        return {
-            r: Pose(self.placed_rotations[r], self.placed_translations[r]) for r in range(len(self.rotations))
-        }
 
 
 def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
@@ -133,7 +123,7 @@ def placement(
     to_R = np.broadcast_to(to_frame.rotation, R.shape)
     placed_R = np.matmul(to_R, R)
     placed_t = stack_apply(to_R, t) + to_frame.translation
-    return Placement(R, t, joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, levels, columns)
+    return Placement(joint_list, axes, anchors, frame, to_frame, placed_R, placed_t, levels, columns)
 
 
 def _levels(columns: LinkColumns) -> list[tuple[list[int], list[int]]]:
