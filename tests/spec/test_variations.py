@@ -37,6 +37,8 @@ def test_paths_reach_numbers_by_part_name_index_and_component(raw):
         0.1,
         0.02,
     ]
+    components = [resolve(raw, f"parts.bolt.position[{k}]") for k in range(3)]
+    assert current_values(raw, components) == [0.05, 0.0, 0.01]
 
 
 @pytest.mark.parametrize(

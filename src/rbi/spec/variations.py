@@ -159,8 +159,10 @@ def current_values(raw: Any, paths: list[FieldPath]) -> list[float | None]:
     (:data:`OPTIONAL_NUMBERS`)."""
     values: list[float | None] = []
     for path in paths:
-        node = path.holder(raw)
-        written = node[path.steps[-1]] if path.steps[-1] in node else None
+        node, step = path.holder(raw), path.steps[-1]
+        # a list holds its components by index (``step in node`` would test its values)
+        present = step < len(node) if isinstance(node, list) else step in node
+        written = node[step] if present else None
         values.append(parse_plus_minus(written)[0] if isinstance(written, str) else _number(written))
     return values
 
