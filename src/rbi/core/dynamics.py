@@ -82,12 +82,7 @@ def spatial_inertia_about_point(
     ``inertia_point`` is the inertia about o; ``com_from_point`` is r_{c/o}.
     """
     S = skew(np.asarray(com_from_point, dtype=float))
-    block = np.zeros((6, 6))
-    block[:3, :3] = mass * np.eye(3)
-    block[:3, 3:] = -mass * S
-    block[3:, :3] = mass * S
-    block[3:, 3:] = np.asarray(inertia_point, dtype=float)
-    return block
+    return np.block([[mass * np.eye(3), -mass * S], [mass * S, np.asarray(inertia_point, dtype=float)]])
 
 
 def velocity_terms_about_point(

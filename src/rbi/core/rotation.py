@@ -216,15 +216,11 @@ def quaternion_multiply(p: ArrayLike, r: ArrayLike) -> np.ndarray:
     broadcasting."""
     pw, px, py, pz = np.moveaxis(np.asarray(p, dtype=float), -1, 0)
     rw, rx, ry, rz = np.moveaxis(np.asarray(r, dtype=float), -1, 0)
-    return np.stack(
-        [
-            pw * rw - px * rx - py * ry - pz * rz,
-            pw * rx + px * rw + py * rz - pz * ry,
-            pw * ry - px * rz + py * rw + pz * rx,
-            pw * rz + px * ry - py * rx + pz * rw,
-        ],
-        axis=-1,
-    )
+    w = pw * rw - px * rx - py * ry - pz * rz
+    x = pw * rx + px * rw + py * rz - pz * ry
+    y = pw * ry - px * rz + py * rw + pz * rx
+    z = pw * rz + px * ry - py * rx + pz * rw
+    return np.stack((w, x, y, z), axis=-1)
 
 
 def matrix_to_quaternion(R: np.ndarray) -> np.ndarray:
