@@ -41,13 +41,7 @@ def visible(text: str, keep: str = "") -> str:
         return text
     if not any(is_hidden(c) for c in text):
         return text
-    out = []
-    for char in text:
-        if not is_hidden(char) or char in keep:
-            out.append(char)
-        else:
-            out.append(escaped(char))
-    return "".join(out)
+    return "".join(escaped(c) if is_hidden(c) and c not in keep else c for c in text)
 
 
 def escaped(char: str) -> str:

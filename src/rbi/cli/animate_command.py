@@ -2,43 +2,32 @@
 
 from __future__ import annotations
 
-from typing import Annotated
-
-import typer
-
 import rbi
-from rbi.cli.options import SpecFile, require_matplotlib
+from rbi.cli.options import SpecFile, option, require_matplotlib
 from rbi.cli.render import progress_bar, say_warnings
 from rbi.cli.run_options import run_options
 from rbi.cli.terminal import terminal_safe
 
-OutOption = Annotated[
+OutOption = option(
     str,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="FILE.html|FILE.gif",
-        help="The animation: .html (3D, plays offline in a browser) or .gif.",
-    ),
-]
-SpeedOption = Annotated[
-    float,
-    typer.Option("--speed", metavar="X", help="Playback speed the page starts at (0.1–2; 1 = real time)."),
-]
-FpsOption = Annotated[
-    int,
-    typer.Option(
-        "--fps",
-        metavar="N",
-        help="Frames per second of a GIF, 1–60; it plays in real time, so it has about --duration × N "
-        "frames, at most 1500.",
-    ),
-]
-
-
-@run_options(
-    "spin", "omega", "tilt", "tilt_axis", "gravity", "duration", "rtol", "max_steps", "yes", "spin_axis"
+    "--out",
+    "-o",
+    metavar="FILE.html|FILE.gif",
+    help="The animation: .html (3D, plays offline in a browser) or .gif.",
 )
+SpeedOption = option(
+    float, "--speed", metavar="X", help="Playback speed the page starts at (0.1–2; 1 = real time)."
+)
+FpsOption = option(
+    int,
+    "--fps",
+    metavar="N",
+    help="Frames per second of a GIF, 1–60; it plays in real time, so it has about --duration × N "
+    "frames, at most 1500.",
+)
+
+
+@run_options(without="samples")
 def animate(
     file: SpecFile,
     out: OutOption,

@@ -9,73 +9,61 @@ Exit 0 when no link has an error-level flag, 1 when one has (so it gates CI like
 from __future__ import annotations
 
 import sys
-from typing import Annotated
 
 import typer
 
 import rbi
-from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile
-from rbi.cli.render import emit, print_table, terminal_safe
+from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile, option
+from rbi.cli.render import emit_result, print_table, terminal_safe
 from rbi.cli.terminal import say, status_kept
 
-GeometryOption = Annotated[
+GeometryOption = option(
     str,
-    typer.Option(
-        "--geometry",
-        metavar="collision|visual|none",
-        help="Which geometry gives a link's volume (a link without it falls back to the other); none: "
-        "read no geometry, check the declared inertials and totals only.",
-    ),
-]
-DensityOption = Annotated[
-    float | None,
-    typer.Option("--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³)."),
-]
-MaterialOption = Annotated[
+    "--geometry",
+    metavar="collision|visual|none",
+    help="Which geometry gives a link's volume (a link without it falls back to the other); none: "
+    "read no geometry, check the declared inertials and totals only.",
+)
+DensityOption = option(
+    float | None, "--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³)."
+)
+MaterialOption = option(
     str | None,
-    typer.Option(
-        "--material",
-        metavar="NAME",
-        help="Built-in material for links that declare no mass (steel, aluminium, ...).",
-    ),
-]
-MeshInertiaOption = Annotated[
+    "--material",
+    metavar="NAME",
+    help="Built-in material for links that declare no mass (steel, aluminium, ...).",
+)
+MeshInertiaOption = option(
     str,
-    typer.Option(
-        "--mesh-inertia",
-        metavar="auto|exact|convex|shell",
-        help="Mass of a mesh: auto (the solid a closed mesh encloses, else its convex hull, flagged 'mesh'), "
-        "exact (the mesh must be closed), convex (its hull), or shell (its surface, as MuJoCo).",
-    ),
-]
-MeshRepairOption = Annotated[
+    "--mesh-inertia",
+    metavar="auto|exact|convex|shell",
+    help="Mass of a mesh: auto (the solid a closed mesh encloses, else its convex hull, flagged 'mesh'), "
+    "exact (the mesh must be closed), convex (its hull), or shell (its surface, as MuJoCo).",
+)
+MeshRepairOption = option(
     bool,
-    typer.Option(
-        "--mesh-repair",
-        help="Close meshes' small holes (three or four edges) first; the area added is reported.",
-    ),
-]
-JointsOption = Annotated[
+    "--mesh-repair",
+    help="Close meshes' small holes (three or four edges) first; the area added is reported.",
+)
+JointsOption = option(
     list[str] | None,
-    typer.Option(
-        "--joints",
-        metavar="NAME=VALUE",
-        help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
-        "several after one --joints (--joints a=1 b=2) or the option repeated. Default: zero (MJCF: qpos0).",
-    ),
-]
-FixOption = Annotated[
+    "--joints",
+    metavar="NAME=VALUE",
+    help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
+    "several after one --joints (--joints a=1 b=2) or the option repeated. Default: zero (MJCF: qpos0).",
+)
+FixOption = option(
     bool,
-    typer.Option(
-        "--fix", help="Replace each flagged inertial by its geometry's; without --out, show the changes only."
-    ),
-]
-OutOption = Annotated[
+    "--fix",
+    help="Replace each flagged inertial by its geometry's; without --out, show the changes only.",
+)
+OutOption = option(
     str | None,
-    typer.Option(
-        "--out", "-o", metavar="FILE", help="With --fix: where to write the fixed copy of the robot file."
-    ),
-]
+    "--out",
+    "-o",
+    metavar="FILE",
+    help="With --fix: where to write the fixed copy of the robot file.",
+)
 
 
 def audit(
@@ -128,18 +116,15 @@ def audit(
 
 
 def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool) -> None:
-    if format is OutputFormat.table:
-        _table(report)
-        if fix:
-            _fix_text(report, file, out)
-        return
-    result = report.as_dict()
-    rows = report.csv_rows() if format is OutputFormat.csv else None
-    emit(format.value, result, lambda: None, csv_rows=rows, ready=True)
+    if format is not OutputFormat.table:
+        return emit_result(format.value, report, file=report.model.path)
+    _table(report)
+    if fix:
+        _fix_text(report, file, out)
 
 
 def _table(report) -> None:
-    from rbi.cli.tables import plain_text, titled  # heavy: rich (not for --format json)
+    from rbi.cli.tables import titled  # heavy: rich (not for --format json)
 
     tables = report.rows()
     links, total = tables[0], tables[1].cells
@@ -149,7 +134,7 @@ def _table(report) -> None:
         table.add_column(heading, justify="right", no_wrap=True)
     table.add_column(links.columns[-1], overflow="fold")
     for cells in links.cells:
-        table.add_row(plain_text(cells[0]), *cells[1:])
+        table.add_row(*cells)
     print_table(table)
     for each in report.links:
         for flag in each.flags:
@@ -174,13 +159,13 @@ def _table(report) -> None:
 
 def _joints_table(joints, found) -> None:
     """Each joint's holding torque against gravity, its declared effort limit and the margin."""
-    from rbi.cli.tables import plain_text, titled  # heavy: rich (not for --format json)
+    from rbi.cli.tables import titled  # heavy: rich (not for --format json)
 
     table = titled(joints.title)
     for heading in joints.columns:
         table.add_column(heading, justify="left" if heading in ("joint", "type", "flags") else "right")
     for cells in joints.cells:
-        table.add_row(plain_text(cells[0]), plain_text(cells[1]), *cells[2:])
+        table.add_row(*cells)
     print_table(table)
     for each in found:
         for flag in each.flags:

@@ -4,15 +4,8 @@ from __future__ import annotations
 
 import rbi
 from rbi import SpecError
-from rbi.cli.options import (
-    AboutOption,
-    FormatOption,
-    OutputFormat,
-    SpecFile,
-    option,
-    parse_about,
-    parse_vector,
-)
+from rbi.cli.option_values import parse_about, parse_vector
+from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, option
 from rbi.cli.render import emit_result
 
 _VEC = "X,Y,Z"
@@ -35,9 +28,8 @@ TorqueOption = option(
     str | None,
     "--torque",
     metavar=_VEC,
-    help="Applied torque about the --about point, mass·length²/s² (forward dynamics). "
-    "Without --force a non-CoM --about point is held (a pivot): "
-    "the force needed to hold it is reported.",
+    help="Applied torque about the --about point, mass·length²/s² (forward dynamics). Without --force a "
+    "non-CoM --about point is held (a pivot): the force needed to hold it is reported.",
 )
 
 

@@ -64,13 +64,8 @@ def report_each(files: Sequence[str], report: Callable[[str], FileReport], fmt: 
 
     if len(files) == 1:
         one = report(files[0])
-        result = (
-            one.result
-            if one.table is None
-            else Document(one.result.to_dict(), one.table, one.result.csv_rows())
-        )
         with status_kept(int(one.failed)):
-            emit_result(fmt, result, source=file_label(files[0]))
+            emit_result(fmt, one.result, source=file_label(files[0]), table=one.table)
         return int(one.failed)
     return _Several(fmt).run(files, report)
 
@@ -126,9 +121,9 @@ class _Several:
         """One CSV row under the first file's header (a column the first file lacked is left
         out, one it had and this file lacks is empty)."""
 
-        flat = Document(row, list).flat_rows()[0]
+        flat = Document(row).flat_rows()[0]
         first = self.header is None
         if first:
             self.header = list(flat)
-        text = Document({key: flat.get(key) for key in self.header}, list).to_csv()
+        text = Document({key: flat.get(key) for key in self.header}).to_csv()
         sys.stdout.write(text if first else text.split("\n", 1)[1])

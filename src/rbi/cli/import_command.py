@@ -5,54 +5,41 @@ from __future__ import annotations
 
 import os
 import sys
-from typing import Annotated
-
-import typer
 
 import rbi
-from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption
-from rbi.cli.render import emit
+from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, argument, option
+from rbi.cli.render import emit, emit_result
 from rbi.cli.terminal import say, terminal_safe
 
-ImportFile = Annotated[
-    str,
-    typer.Argument(
-        help="Robot description (.urdf, .sdf, MJCF .xml) or CAD file (.step, .stp).",
-        show_default=False,
-        metavar="FILE",
-    ),
-]
-DensityOption = Annotated[
+ImportFile = argument(str, "Robot description (.urdf, .sdf, MJCF .xml) or CAD file (.step, .stp).", "FILE")
+DensityOption = option(
     float | None,
-    typer.Option(
-        "--density",
-        metavar="D",
-        help="STEP files: density of every solid, kg/m³ (default 1000, a placeholder).",
-    ),
-]
-MaterialOption = Annotated[
+    "--density",
+    metavar="D",
+    help="STEP files: density of every solid, kg/m³ (default 1000, a placeholder).",
+)
+MaterialOption = option(
     str | None,
-    typer.Option(
-        "--material", metavar="NAME", help="STEP files: a built-in material for every solid (e.g. steel)."
-    ),
-]
-LinkOption = Annotated[
+    "--material",
+    metavar="NAME",
+    help="STEP files: a built-in material for every solid (e.g. steel).",
+)
+LinkOption = option(
     list[str] | None,
-    typer.Option(
-        "--link", "-l", metavar="NAME", help="Import only this link (MJCF: body); repeat for several."
-    ),
-]
-OutOption = Annotated[
+    "--link",
+    "-l",
+    metavar="NAME",
+    help="Import only this link (MJCF: body); repeat for several.",
+)
+OutOption = option(
     str | None,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="DIR|FILE.yaml",
-        help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
-        "link is imported. Without it one spec is printed: the link given with --link, or the whole "
-        "robot (one part per link, placed at the zero configuration).",
-    ),
-]
+    "--out",
+    "-o",
+    metavar="DIR|FILE.yaml",
+    help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
+    "link is imported. Without it one spec is printed: the link given with --link, or the whole "
+    "robot (one part per link, placed at the zero configuration).",
+)
 
 
 def import_robot(
@@ -103,7 +90,7 @@ def _robot_output(robot, file: str, link, format: OutputFormat) -> None:
             say(f"warning: {line}")
     if format is not OutputFormat.table:
         # every text cell is escaped by the CSV cell rule (rbi.text.csv_cell): CSV often reaches a terminal
-        emit(format.value, {"file": robot.path, **robot.to_dict()}, lambda: None, csv_rows=robot.csv_rows())
+        emit_result(format.value, robot, file=robot.path)
     elif robot.written:
         for path in robot.written.values():
             print(terminal_safe(str(path)))

@@ -7,19 +7,8 @@ from enum import Enum
 
 import rbi
 from rbi.cli.each_file import FileReport, report_each
-from rbi.cli.options import (
-    AboutOption,
-    FormatOption,
-    OutputFormat,
-    SpecFile,
-    SpecFiles,
-    UnitsOption,
-    option,
-    parse_about,
-    parse_rotation,
-    parse_units,
-    parse_vector,
-)
+from rbi.cli.option_values import parse_about, parse_rotation, parse_units, parse_vector
+from rbi.cli.options import AboutOption, FormatOption, OutputFormat, SpecFile, SpecFiles, UnitsOption, option
 from rbi.cli.render import emit_result
 
 
@@ -43,9 +32,8 @@ AxisOption = option(
     str | None,
     "--axis",
     metavar="X,Y,Z",
-    help="Also give the scalar moment of inertia about the line through the --about point along "
-    "this direction (any length; in the axes the matrix is given in: body axes, or world "
-    "axes after --rotate).",
+    help="Also give the scalar moment of inertia about the line through the --about point along this "
+    "direction (any length; in the axes the matrix is given in: body axes, or world axes after --rotate).",
     show_default=False,
 )
 ProductsOption = option(

@@ -53,11 +53,6 @@ def parse_vector(text: str, option: str, count: int = 3) -> list[float]:
     return values
 
 
-def vector_option(text: str | None, option: str) -> list[float] | None:
-    """An optional ``X,Y,Z`` option as numbers (None stays None)."""
-    return None if text is None else parse_vector(text, option)
-
-
 def spin_axis_option(text: str | None) -> str | list[float] | None:
     """``--spin-axis``: a named axis (``x``, ``-y``) as it is, ``X,Y,Z`` as three numbers."""
     if text is None or "," not in text:
@@ -74,7 +69,7 @@ def run_settings(
     (``duration``, ``rtol`` ...)."""
     return dict(
         spin=spin,
-        omega=vector_option(omega, "--omega"),
+        omega=None if omega is None else parse_vector(omega, "--omega"),
         tilt_deg=tilt,
         check_budget=not yes,
         spin_axis=spin_axis_option(spin_axis),

@@ -13,12 +13,6 @@ import typer
 from typer.core import TyperArgument
 
 from rbi import SpecError
-from rbi.cli.option_values import (  # noqa: F401  (re-exported: the commands parse their values with them)
-    parse_about,
-    parse_rotation,
-    parse_units,
-    parse_vector,
-)
 
 
 def option(kind: Any, *names: str, **settings: Any) -> Any:
@@ -94,20 +88,13 @@ def plain_argument_help(command) -> None:
             param.__class__ = _PlainArgument
 
 
-def _plain_argument_class():
+class _PlainArgument(TyperArgument):
+    def _usage_display_name(self) -> str:
+        name = self.metavar if self.required else f"[{self.metavar}]"
+        return name if self.nargs == 1 or self.metavar.endswith("...") else name + "..."
 
-    class PlainArgument(TyperArgument):
-        def _usage_display_name(self) -> str:
-            name = self.metavar if self.required else f"[{self.metavar}]"
-            return name if self.nargs == 1 or self.metavar.endswith("...") else name + "..."
-
-        def display_type_rich(self, ctx) -> None:
-            return None
-
-    return PlainArgument
-
-
-_PlainArgument = _plain_argument_class()
+    def display_type_rich(self, ctx) -> None:
+        return None
 
 
 def needs(package: str, extra: str) -> str:

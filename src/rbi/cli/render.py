@@ -19,29 +19,17 @@ from rbi.cli.terminal import say, terminal_safe
 
 class Document(rbi.Result):
     """A command's result given as a dict (``data``, made JSON-ready by :class:`rbi.Result`)
-    with the callable that draws its tables (``table``) and its CSV rows (``csv``, default
-    the one object), for the commands whose API call returns no :class:`rbi.Result`."""
+    with its CSV rows (``csv``, default the one object), for the commands whose API call
+    returns no :class:`rbi.Result`."""
 
-    def __init__(
-        self, data: dict[str, Any], table: Callable[[], Any], csv: list[dict[str, Any]] | None = None
-    ) -> None:
-        self.data, self.table, self.csv = data, table, csv
+    def __init__(self, data: dict[str, Any], csv: list[dict[str, Any]] | None = None) -> None:
+        self.data, self.csv = data, csv
 
     def to_dict(self) -> dict[str, Any]:
         return self.data
 
     def csv_rows(self) -> list[dict[str, Any]]:
         return self.csv if self.csv is not None else [self.to_dict()]
-
-
-class ReadyDocument(Document):
-    """A :class:`Document` whose ``data`` is JSON-ready already (an audit's millions of
-    numbers): not walked again."""
-
-    def to_dict(self) -> dict[str, Any]:
-        return self.data
-
-    to_dict.json_ready = True  # type: ignore[attr-defined]  # rbi.Result leaves it as it is
 
 
 def _color_system() -> str | None:
@@ -60,7 +48,7 @@ def stderr_console():
 
 def _safe_console(**options):
     """A rich Console whose printed text never carries a control character from data: the last
-    line of defence behind :func:`rbi.cli.tables.plain_text` (rich's own colour and cursor codes
+    line of defence behind :class:`rbi.cli.tables.SafeTable` (rich's own colour and cursor codes
     are styles and control segments, not text, and pass unchanged)."""
     from rich.console import Console  # rich only when something is drawn: JSON never loads it (~25 ms)
 
@@ -85,18 +73,24 @@ def emit(
     table: Callable[[], Any],
     csv_rows: list[dict[str, Any]] | None = None,
     source: str | None = None,
-    ready: bool = False,
 ) -> None:
-    """:func:`emit_result` of a result given as a dict (see :class:`Document`); ``ready``:
-    ``result`` is JSON-ready already."""
-    emit_result(fmt, (ReadyDocument if ready else Document)(result, table, csv_rows), source)
+    """:func:`emit_result` of a result given as a dict (see :class:`Document`)."""
+    emit_result(fmt, Document(result, csv_rows), source, table=table)
 
 
-def emit_result(fmt: str, result: Any, source: str | None = None) -> None:
+def emit_result(
+    fmt: str,
+    result: Any,
+    source: str | None = None,
+    *,
+    table: Callable[[], Any] | None = None,
+    file: str | None = None,
+) -> None:
     """Write a result of the API (:class:`rbi.Result`) to stdout in the chosen format: its
-    ``to_dict()`` as one JSON object, its CSV or its tables; ``source`` names the file in an
+    ``to_dict()`` as one JSON object (``file`` first when given), its CSV or its tables
+    (``table()`` when given, else its rows drawn as rbi's); ``source`` names the file in an
     error (a non-finite number: JSON has no NaN)."""
-    data = result.to_dict()
+    data = result.to_dict() if file is None else {"file": file, **result.to_dict()}
     if fmt == "json":  # the encoder finds a NaN or inf as it writes (an audit's JSON has millions)
         try:
             text = json.dumps(data, allow_nan=False)
@@ -110,14 +104,11 @@ def emit_result(fmt: str, result: Any, source: str | None = None) -> None:
     if fmt == "csv":
         sys.stdout.write(result.to_csv())
     else:
-        print_table(tables_of(result))
+        print_table(tables_of(result) if table is None else table())
 
 
 def tables_of(result: Any) -> Any:
-    """A result's tables: a :class:`Document`'s own, else its rows (``result.rows()``) drawn
-    as rbi's tables."""
-    if isinstance(result, Document):
-        return result.table()
+    """A result's rows (``result.rows()``) drawn as rbi's tables."""
     from rbi.cli.tables import drawn  # heavy: rich (~25 ms), which JSON and CSV never load
 
     return drawn(result.rows())

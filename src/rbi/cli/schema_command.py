@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import json
 import sys
-from typing import Annotated
 
 import typer
 
@@ -17,6 +16,7 @@ from rbi.cli.options import (
     FormatOption,
     OutputFormat,
     PackagePathOption,
+    argument,
 )
 from rbi.cli.render import emit, terminal_safe
 from rbi.cli.terminal import status_kept
@@ -37,15 +37,12 @@ def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
 
 
 def validate(
-    files: Annotated[
+    files: argument(
         list[str],
-        typer.Argument(
-            help="Body specs (YAML or JSON; - reads one from standard input) or robot files "
-            "(.urdf, .sdf, MJCF .xml, .xacro) to check.",
-            show_default=False,
-            metavar="FILE...",
-        ),
-    ],
+        "Body specs (YAML or JSON; - reads one from standard input) or robot files "
+        "(.urdf, .sdf, MJCF .xml, .xacro) to check.",
+        "FILE...",
+    ),
     package_path: PackagePathOption = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:

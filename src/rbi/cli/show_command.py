@@ -2,24 +2,18 @@
 
 from __future__ import annotations
 
-from typing import Annotated
-
-import typer
-
 import rbi
-from rbi.cli.options import SpecFile, needs, require_matplotlib
+from rbi.cli.options import SpecFile, needs, option, require_matplotlib
 from rbi.cli.render import say_warnings
 from rbi.cli.terminal import terminal_safe
 
-OutOption = Annotated[
+OutOption = option(
     str,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="FILE.png|FILE.svg|FILE.html",
-        help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
-    ),
-]
+    "--out",
+    "-o",
+    metavar="FILE.png|FILE.svg|FILE.html",
+    help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
+)
 
 
 def show(

@@ -3,13 +3,10 @@
 from __future__ import annotations
 
 import sys
-from typing import Annotated
-
-import typer
 
 import rbi
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require_matplotlib
-from rbi.cli.render import emit, progress_bar, tables_of
+from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, option, require_matplotlib
+from rbi.cli.render import emit_result, progress_bar, tables_of
 from rbi.cli.run_options import run_options
 
 STANDARD_OUTPUT = ("-", "/dev/stdout", "/dev/fd/1", "/proc/self/fd/1")
@@ -21,59 +18,39 @@ METHOD_HELP = (
     "form (free body; axisymmetric top with its centre of mass on the axis)."
 )
 
-OutOption = Annotated[
+OutOption = option(
     str | None,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="FILE.csv",
-        help="Write the trajectory as CSV (only if the run succeeds; '-' for standard output).",
-    ),
-]
-DrawsOption = Annotated[
-    int | None,
-    typer.Option(
-        "--draws",
-        metavar="N",
-        help="For a spec with ±: N more runs with the inputs drawn, the summary's spread from them.",
-        show_default=False,
-    ),
-]
-SeedOption = Annotated[int | None, typer.Option("--seed", metavar="S", help="Seed of the --draws.")]
-MethodOption = Annotated[str, typer.Option("--method", "-m", metavar="NAME", help=METHOD_HELP)]
-ErrorEstimateOption = Annotated[
-    bool,
-    typer.Option(
-        "--error-estimate/--no-error-estimate",
-        help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
-        "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).",
-    ),
-]
-PlotOption = Annotated[
-    str | None,
-    typer.Option(
-        "--plot",
-        metavar="FILE.png|.svg|.pdf",
-        help="Plot the path of the spin axis seen from above, its tilt "
-        "(a free body: each principal axis's turn), ω and energy "
-        f"drift against time ({needs('matplotlib', 'plot')}).",
-    ),
-]
-
-
-@run_options(
-    "spin",
-    "omega",
-    "tilt",
-    "tilt_axis",
-    "gravity",
-    "duration",
-    "samples",
-    "rtol",
-    "max_steps",
-    "yes",
-    "spin_axis",
+    "--out",
+    "-o",
+    metavar="FILE.csv",
+    help="Write the trajectory as CSV (only if the run succeeds; '-' for standard output).",
 )
+DrawsOption = option(
+    int | None,
+    "--draws",
+    metavar="N",
+    help="For a spec with ±: N more runs with the inputs drawn, the summary's spread from them.",
+    show_default=False,
+)
+SeedOption = option(int | None, "--seed", metavar="S", help="Seed of the --draws.")
+MethodOption = option(str, "--method", "-m", metavar="NAME", help=METHOD_HELP)
+ErrorEstimateOption = option(
+    bool,
+    "--error-estimate/--no-error-estimate",
+    help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
+    "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).",
+)
+PlotOption = option(
+    str | None,
+    "--plot",
+    metavar="FILE.png|.svg|.pdf",
+    help="Plot the path of the spin axis seen from above, its tilt "
+    "(a free body: each principal axis's turn), ω and energy "
+    f"drift against time ({needs('matplotlib', 'plot')}).",
+)
+
+
+@run_options()
 def simulate(
     file: SpecFile,
     settings: dict,
@@ -117,7 +94,7 @@ def simulate(
         sys.stdout.write(run.to_csv())
         return
     written = [] if out is None else [f"Trajectory written to {out}."]
-    emit(format.value, run.to_dict(), lambda: _table(run, run.notes() + written), source=file)
+    emit_result(format.value, run, source=file, table=lambda: _table(run, run.notes() + written))
 
 
 def _table(run, notes: list[str]):

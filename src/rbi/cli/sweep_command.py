@@ -3,112 +3,74 @@ or, with --mass-properties, the spread of the mass properties alone."""
 
 from __future__ import annotations
 
-from typing import Annotated
-
-import typer
+from rich.console import Group
 from rich.text import Text
 
 import rbi
 from rbi.cli import tables
 from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, require, require_matplotlib
-from rbi.cli.render import emit, progress_bar
-from rbi.cli.run_options import (
-    DurationOption,
-    GravityOption,
-    RtolOption,
-    SamplesOption,
-    SpinAxisOption,
-    TiltAxisOption,
-    YesOption,
-)
+from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, option, require, require_matplotlib
+from rbi.cli.render import emit_result, progress_bar
+from rbi.cli.run_options import RUN
 from rbi.cli.terminal import Terminated, say, terminal_safe
 
-SpinOption = Annotated[
+SpinOption = option(
+    str, "--spin", "-s", metavar="START:STOP:COUNT", help="Spins about the spin axis, rad/s (or one value)."
+)
+TiltOption = option(
     str,
-    typer.Option(
-        "--spin", "-s", metavar="START:STOP:COUNT", help="Spins about the spin axis, rad/s (or one value)."
-    ),
-]
-TiltOption = Annotated[
-    str,
-    typer.Option(
-        "--tilt",
-        metavar="START:STOP:COUNT",
-        help="Nudges at t=0: turns of the body about --tilt-axis, degrees (or one value).",
-    ),
-]
-VaryOption = Annotated[
+    "--tilt",
+    metavar="START:STOP:COUNT",
+    help="Nudges at t=0: turns of the body about --tilt-axis, degrees (or one value).",
+)
+VaryOption = option(
     list[str] | None,
-    typer.Option(
-        "--vary",
-        metavar="PATH=RANGE",
-        help="Vary a number of the spec: PATH is parts.NAME.FIELD or "
-        "parts.NAME.FIELD[i] (e.g. parts.bolt.position[0]); RANGE is START:STOP:COUNT, or normal(MEAN,SD) / "
-        "uniform(LOW,HIGH) with --runs. Repeatable.",
-    ),
-]
-RunsOption = Annotated[
-    int,
-    typer.Option(
-        "--runs", metavar="N", help="Monte Carlo: N draws of every normal()/uniform() --vary per grid point."
-    ),
-]
-SeedOption = Annotated[
-    int, typer.Option("--seed", metavar="S", help="Seed of the draws (same seed, same rows).")
-]
-MaxStepsOption = Annotated[
+    "--vary",
+    metavar="PATH=RANGE",
+    help="Vary a number of the spec: PATH is parts.NAME.FIELD or "
+    "parts.NAME.FIELD[i] (e.g. parts.bolt.position[0]); RANGE is START:STOP:COUNT, or normal(MEAN,SD) / "
+    "uniform(LOW,HIGH) with --runs. Repeatable.",
+)
+RunsOption = option(
+    int, "--runs", metavar="N", help="Monte Carlo: N draws of every normal()/uniform() --vary per grid point."
+)
+SeedOption = option(int, "--seed", metavar="S", help="Seed of the draws (same seed, same rows).")
+MaxStepsOption = option(
     int | None,
-    typer.Option(
-        "--max-steps",
-        metavar="N",
-        help="Most steps one run may take (default 1e+07, as simulate's); a run that needs more is a "
-        "failed row.",
-    ),
-]
-WorkersOption = Annotated[
-    int | None, typer.Option("--workers", "-j", metavar="N", help="Cores to use (default: all).")
-]
-DaskOption = Annotated[
+    "--max-steps",
+    metavar="N",
+    help="Most steps one run may take (default 1e+07, as simulate's); a run that needs more is a failed row.",
+)
+WorkersOption = option(int | None, "--workers", "-j", metavar="N", help="Cores to use (default: all).")
+DaskOption = option(
     str | None,
-    typer.Option(
-        "--dask",
-        metavar="ADDRESS",
-        help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
-        f"for a local cluster ({needs('Dask', 'dask')}).",
-    ),
-]
-OutOption = Annotated[
+    "--dask",
+    metavar="ADDRESS",
+    help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
+    f"for a local cluster ({needs('Dask', 'dask')}).",
+)
+OutOption = option(
     str | None,
-    typer.Option(
-        "--out",
-        "-o",
-        metavar="FILE.csv|FILE.parquet",
-        help=f"Write one row per run, streamed as runs finish (FILE.parquet {needs('pyarrow', 'parquet')}).",
-    ),
-]
-ResumeOption = Annotated[
+    "--out",
+    "-o",
+    metavar="FILE.csv|FILE.parquet",
+    help=f"Write one row per run, streamed as runs finish (FILE.parquet {needs('pyarrow', 'parquet')}).",
+)
+ResumeOption = option(
+    bool, "--resume", help="Continue an interrupted sweep into --out: compute only the runs missing there."
+)
+PlotOption = option(
+    str | None,
+    "--plot",
+    metavar="FILE.png|.svg|.pdf",
+    help=f"Draw the map: largest tilt over the first two swept axes ({needs('matplotlib', 'plot')}).",
+)
+MassPropertiesOption = option(
     bool,
-    typer.Option(
-        "--resume", help="Continue an interrupted sweep into --out: compute only the runs missing there."
-    ),
-]
-PlotOption = Annotated[
-    str | None,
-    typer.Option(
-        "--plot",
-        metavar="FILE.png|.svg|.pdf",
-        help=f"Draw the map: largest tilt over the first two swept axes ({needs('matplotlib', 'plot')}).",
-    ),
-]
-MassPropertiesOption = Annotated[
-    bool,
-    typer.Option(
-        "--mass-properties",
-        help="No simulation: the spread of mass, centre of mass, principal moments and "
-        "principal-axis directions over the --vary values.",
-    ),
-]
+    "--mass-properties",
+    help="No simulation: the spread of mass, centre of mass, principal moments and "
+    "principal-axis directions over the --vary values.",
+)
 
 
 HIDDEN = frozenset({"min_tilt_deg", "precession_rate_deg_s", "steps"})
@@ -122,11 +84,11 @@ def sweep(
     vary: VaryOption = None,
     runs: RunsOption = 1,
     seed: SeedOption = 0,
-    duration: DurationOption = 4.0,
-    samples: SamplesOption = 481,
-    rtol: RtolOption = 1e-12,
-    gravity: GravityOption = None,
-    tilt_axis: TiltAxisOption = "y",
+    duration: RUN.duration = 4.0,
+    samples: RUN.samples = 481,
+    rtol: RUN.rtol = 1e-12,
+    gravity: RUN.gravity = None,
+    tilt_axis: RUN.tilt_axis = "y",
     max_steps: MaxStepsOption = None,
     workers: WorkersOption = None,
     dask: DaskOption = None,
@@ -134,8 +96,8 @@ def sweep(
     resume: ResumeOption = False,
     plot: PlotOption = None,
     mass_properties: MassPropertiesOption = False,
-    yes: YesOption = False,
-    spin_axis: SpinAxisOption = None,
+    yes: RUN.yes = False,
+    spin_axis: RUN.spin_axis = None,
     format: FormatOption = OutputFormat.table,
 ) -> None:
     """Many runs of one spec: a grid over spin, tilt and spec fields, or Monte Carlo draws.
@@ -168,7 +130,7 @@ def sweep(
     table = _run(file, settings)
     if workers is not None and table.cores is not None and table.cores < workers:
         say(f"--workers {workers}: this machine gives rbi {table.cores} cores; using {table.cores}")
-    emit(format.value, table.to_dict(), lambda: _drawn(table, file), csv_rows=table.csv_rows(), ready=True)
+    emit_result(format.value, table, table=lambda: _drawn(table, file))
 
 
 def _run(file: str, settings: dict):
@@ -197,9 +159,10 @@ def _run(file: str, settings: dict):
 
 
 def _drawn(table, file: str):
-    """The runs (or a study's spread) of ``table.rows()`` in rbi's table style, then its notes."""
-    drawn = [_spread(rows) if table.spread else _runs(rows, table, file) for rows in table.rows()]
-    return tables.stack(*(drawn if table.held else []), Text("\n".join(table.notes())))
+    """The runs (or a study's spread, drawn as rbi's tables) of ``table.rows()``, then its notes."""
+    rows = table.rows()
+    drawn = [tables.drawn(rows)] if table.spread else [_runs(each, table, file) for each in rows]
+    return Group(*(drawn if table.held else []), Text("\n".join(table.notes())))
 
 
 def _runs(rows, table, file: str):
@@ -215,16 +178,4 @@ def _runs(rows, table, file: str):
         drawn.add_column(Text("\n").join(lines), overflow="fold", justify=justify)
     for row in rows.cells:
         drawn.add_row(*(row[i] for i in keep))
-    return drawn
-
-
-def _spread(rows):
-    """min, median, max and standard deviation of each quantity over the ok runs."""
-    drawn = tables.titled(rows.title)
-    drawn.add_column(rows.columns[0], no_wrap=True)
-    drawn.add_column(rows.columns[1])
-    for name in rows.columns[2:]:
-        drawn.add_column(name, justify="right")
-    for row in rows.cells:
-        drawn.add_row(*row)
     return drawn

@@ -12,12 +12,6 @@ from rich.text import Text
 from rbi.cli.terminal import ERROR_HANDLER, ascii_only, terminal_safe
 
 
-def plain_text(text: str) -> str:
-    """Text from a spec (a name) as a table takes it: every string a :class:`SafeTable` is given
-    is shown as it is (never read as rich markup) and made safe there, once."""
-    return text
-
-
 class SafeTable(Table):
     """A rich Table whose title, headers and cells are text, never rich markup (a name such as
     ``top [v2]`` or a quantity ``final q [w, x, y, z]`` is shown as written), without a control
@@ -63,14 +57,10 @@ def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
     return table
 
 
-def stack(*renderables) -> Group:
-    return Group(*renderables)
-
-
 def drawn(rows) -> Group:
     """A result's tables (its ``rows()``: :class:`rbi.reprs.Rows`) in rbi's style, stacked.
     Every title, header and cell is text (never read as markup), made safe once here."""
-    return stack(*(_drawn(each) for each in rows))
+    return Group(*(_drawn(each) for each in rows))
 
 
 def _drawn(rows) -> Table:

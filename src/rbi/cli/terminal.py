@@ -40,7 +40,6 @@ ASCII_SPELLINGS = {
     "−": "-",
     "–": "-",
     "—": "-",
-    "…": "...",
     "°": "deg",
     "±": "+/-",
     "µ": "u",
@@ -73,11 +72,7 @@ ASCII_SPELLINGS = {
     "Σ": "Sigma",
     "Π": "Pi",
     "ᵢ": "_i",
-    "₀": "0",
-    "₁": "1",
-    "₂": "2",
-    "₃": "3",
-    # rich's table rules and its ellipsis, should an ASCII box not be chosen
+    # rich's table rules, should an ASCII box not be chosen
     "─": "-",
     "━": "-",
     "│": "|",

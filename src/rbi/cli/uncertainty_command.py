@@ -2,35 +2,29 @@
 
 from __future__ import annotations
 
-from typing import Annotated
-
-import typer
-
 import rbi
 from rbi.cli.each_file import FileReport, report_each
-from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
+from rbi.cli.options import FormatOption, OutputFormat, SpecFiles, option
 
-OfOption = Annotated[
+OfOption = option(
     list[str] | None,
-    typer.Option(
-        "--of",
-        metavar="QUANTITY",
-        help="A quantity as a JSON path of rbi inertia/principal: mass, center_of_mass[0], inertia[0][2], "
-        "moments[1]; center_of_mass alone: its 3 entries (repeat for several). Default: mass, centre of mass, inertia about it, principal moments.",
-        show_default=False,
-    ),
-]
+    "--of",
+    metavar="QUANTITY",
+    help="A quantity as a JSON path of rbi inertia/principal: mass, center_of_mass[0], inertia[0][2], "
+    "moments[1]; center_of_mass alone: its 3 entries (repeat for several). Default: mass, centre of mass, inertia about it, principal moments.",
+    show_default=False,
+)
 
 
 def uncertainty(
     files: SpecFiles,
     of: OfOption = None,
-    method: Annotated[
-        str, typer.Option("--method", metavar="linear|monte-carlo", help="Law of propagation or Monte Carlo.")
-    ] = "linear",
-    samples: Annotated[int, typer.Option("--samples", metavar="N", help="Monte Carlo draws.")] = 100_000,
-    seed: Annotated[int | None, typer.Option("--seed", metavar="S", help="Seed of the draws.")] = None,
-    coverage: Annotated[float, typer.Option("--coverage", metavar="P", help="Coverage probability.")] = 0.95,
+    method: option(
+        str, "--method", metavar="linear|monte-carlo", help="Law of propagation or Monte Carlo."
+    ) = "linear",
+    samples: option(int, "--samples", metavar="N", help="Monte Carlo draws.") = 100_000,
+    seed: option(int | None, "--seed", metavar="S", help="Seed of the draws.") = None,
+    coverage: option(float, "--coverage", metavar="P", help="Coverage probability.") = 0.95,
     format: FormatOption = OutputFormat.table,
 ) -> int:
     """The uncertainty budget: each quantity's value, standard uncertainty and interval, and
