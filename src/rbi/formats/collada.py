@@ -65,12 +65,18 @@ def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int | None
             raise ValueError(f"more than {limit:,} triangles")
         if len(triangles):
             placed.append((points @ transform[:3, :3].T + transform[:3, 3], triangles))
-    if not placed:
+    vertices, faces = _joined(placed)
+    return vertices * meter, faces
+
+
+def _joined(pieces: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+    """One mesh of (vertices, faces) pieces: each piece's faces renumbered past the vertices of
+    the pieces before it."""
+    if not pieces:
         return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
-    offsets = np.cumsum([0] + [len(p) for p, _ in placed[:-1]])
-    vertices = np.concatenate([p for p, _ in placed]) * meter
-    faces = np.concatenate([t + offset for (_, t), offset in zip(placed, offsets)])
-    return vertices, faces
+    offsets = np.cumsum([0] + [len(points) for points, _ in pieces[:-1]])
+    faces = [triangles + offset for (_, triangles), offset in zip(pieces, offsets)]
+    return np.concatenate([points for points, _ in pieces]), np.concatenate(faces)
 
 
 def _unit(root) -> float:
@@ -236,22 +242,15 @@ def _geometry(ids, geometry, limit: int) -> tuple[np.ndarray, np.ndarray]:
         if primitive.tag not in PRIMITIVES:
             continue
         positions, column, stride = _positions(ids, mesh, primitive)
+        triangles = []
         for corners in _polygons(primitive, stride, limit):
             indices = corners[:, column].reshape(-1, 3)
             if indices.size and (indices.min() < 0 or indices.max() >= len(positions)):
                 raise ValueError(f"<{primitive.tag}>: a vertex index is out of range")
-            pieces.append((positions, indices))
-    if not pieces:
-        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
-    bases = {}
-    stacked, offset = [], 0
-    for positions, _ in pieces:
-        if id(positions) not in bases:
-            bases[id(positions)] = offset
-            stacked.append(positions)
-            offset += len(positions)
-    faces = np.concatenate([indices + bases[id(positions)] for positions, indices in pieces])
-    return np.concatenate(stacked), faces
+            triangles.append(indices)
+        if triangles:
+            pieces.append((positions, np.concatenate(triangles)))
+    return _joined(pieces)
 
 
 def _positions(ids, mesh, primitive) -> tuple[np.ndarray, int, int]:

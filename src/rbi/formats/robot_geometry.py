@@ -67,10 +67,6 @@ class Distribution(NamedTuple):
         """Volume (m³), or area (m²) for a shell."""
         return self.unit.mass
 
-    @property
-    def centroid(self) -> np.ndarray:
-        return self.unit.center_of_mass
-
 
 def geoms_sum(geoms, density, where: str, mode: str, as_mujoco: bool = False) -> MassProperties | None:
     """The mass properties of ``geoms`` in the link frame, each piece of geometry with a volume
@@ -185,18 +181,13 @@ def distribution(
                 fallbacks.append(fallback)
             if mode is None:
                 return None
-        measure, centroid, inertia, low, high, added = _mesh(geom, mode, where, repair, as_mujoco)
+        unit, low, high, added = _mesh(geom, mode, where, repair, as_mujoco)
         if added and notes is not None:
             notes.append(
                 f"{where}{geom.label}: {geom.mesh_file.name}: --mesh-repair closed holes with {added[0]} "
                 f"triangle(s), {added[1]:.4g} m² in all"
             )
-        inertia = R @ inertia @ R.T
-        return Distribution(
-            MassProperties(measure, R @ centroid + p, 0.5 * (inertia + inertia.T), "link"),
-            *_turned_bounds(R, p, low, high),
-            mode == "shell",
-        )
+        return Distribution(unit.transformed(R, p, "link"), *_turned_bounds(R, p, low, high), mode == "shell")
     return None
 
 
@@ -241,8 +232,8 @@ class _NotIntegrable(InputError):
 
 
 def _mesh(geom: Geom, mode: str, where: str, repair: bool = False, as_mujoco: bool = False):
-    """(measure, centroid, inertia per density, low, high, (faces added, area added) or None) of
-    the scaled mesh in its own frame. ``as_mujoco``: as MuJoCo's compiler computes it, from the
+    """(mass properties per unit density, low, high, (faces added, area added) or None) of the
+    scaled mesh in its own frame. ``as_mujoco``: as MuJoCo's compiler computes it, from the
     file's vertices stored in single precision (MuJoCo keeps mesh vertices as ``float``) and,
     in modes ``legacy`` and ``exact``, by :func:`mujoco_mesh_distribution`."""
     path = geom.mesh_file
@@ -298,17 +289,10 @@ def _integrated(geom: Geom, path, scale: np.ndarray, mode: str, where: str, repa
             "(the mesh's volume or inertia overflows a double)"
         )
     used = found.vertices[np.unique(found.faces)]
-    inertia = np.asarray(unit.inertia_about_com, float)
     if as_mujoco:  # MuJoCo keeps a mesh's principal moments and axes, found per unit volume
-        inertia = unit.mass * mujoco_principal(inertia / unit.mass)
-    return (
-        unit.mass,
-        np.asarray(unit.center_of_mass, float),
-        inertia,
-        used.min(axis=0),
-        used.max(axis=0),
-        added,
-    )
+        inertia = unit.mass * mujoco_principal(unit.inertia_about_com / unit.mass)
+        unit = MassProperties(unit.mass, unit.center_of_mass, inertia, "mesh")
+    return unit, used.min(axis=0), used.max(axis=0), added
 
 
 def mujoco_mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str) -> MeshDistribution:

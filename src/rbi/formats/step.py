@@ -292,10 +292,10 @@ def _triangles_here(path: Path, indices: list[int], deflection: float, angle: fl
     parts_v, parts_f, offset = [], [], 0
     for i in indices:
         _, _, solid, location = instances[i]
-        vertices, faces = _tessellate(ocp, solid.Moved(location), deflection, angle)
-        parts_v.append(vertices * unit_metres)
-        parts_f.append(faces + offset)
-        offset += len(vertices)
+        for points, triangles in _tessellate(ocp, solid.Moved(location), deflection, angle):
+            parts_v.append(points * unit_metres)
+            parts_f.append(triangles + offset)
+            offset += len(points)
     vertices = np.concatenate(parts_v) if parts_v else np.zeros((0, 3))
     faces = np.concatenate(parts_f) if parts_f else np.zeros((0, 3), dtype=np.int64)
     return {"vertices": vertices.ravel().tolist(), "faces": faces.ravel().tolist()}
@@ -633,9 +633,10 @@ def _placed(
     return props.transformed(rotation, [trsf.Value(i, 4) for i in (1, 2, 3)]), error
 
 
-def _tessellate(ocp, solid, deflection: float, angle: float) -> tuple[np.ndarray, np.ndarray]:
+def _tessellate(ocp, solid, deflection: float, angle: float):
     """Triangles of one solid by BRepMesh (``deflection`` relative to each edge's size), in
-    the file's unit, faces turned outwards."""
+    the file's unit, faces turned outwards: (points (N, 3), triangles (T, 3) indexing them) for
+    each face of the solid."""
     parameters = ocp.IMeshTools_Parameters()
     parameters.Deflection, parameters.Relative, parameters.Angle = deflection, True, angle
     parameters.MeshAlgo = (
@@ -643,7 +644,6 @@ def _tessellate(ocp, solid, deflection: float, angle: float) -> tuple[np.ndarray
     )
     ocp.BRepTools.Clean_s(solid)  # a triangulation made earlier at other settings
     ocp.BRepMesh_IncrementalMesh(solid, parameters)
-    vertices, faces, offset = [], [], 0
     for face in _each(ocp, solid, ocp.TopAbs_FACE, ocp.TopoDS.Face):
         location = ocp.TopLoc_Location()
         mesh = ocp.BRep_Tool.Triangulation_s(face, location)
@@ -655,9 +655,4 @@ def _tessellate(ocp, solid, deflection: float, angle: float) -> tuple[np.ndarray
         triangles = np.array([mesh.Triangle(i).Get() for i in range(1, mesh.NbTriangles() + 1)]) - 1
         if face.Orientation() == ocp.TopAbs_REVERSED:
             triangles = triangles[:, ::-1]
-        vertices.append(points)
-        faces.append(triangles + offset)
-        offset += len(points)
-    if not vertices:
-        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
-    return np.concatenate(vertices), np.concatenate(faces).astype(np.int64)
+        yield points, triangles
