@@ -86,42 +86,36 @@ def geoms_sum(geoms, density, where: str, mode: str, as_mujoco: bool = False) ->
         return MassProperties.zero("link")
 
 
+PRIMITIVES = {
+    ("sphere", False): (shapes.sphere_volume, lambda volume, r: 3 * (shapes.sphere_moment(volume, r),)),
+    ("sphere", True): (shapes.sphere_area, lambda area, r: 3 * (shapes.sphere_shell_moment(area, r),)),
+    ("box", False): (lambda *edges: shapes.box_volume(edges), shapes.box_moments),
+    ("box", True): (shapes.box_area, shapes.box_shell_moments),
+    ("ellipsoid", False): (lambda *semi_axes: shapes.ellipsoid_volume(semi_axes), shapes.ellipsoid_moments),
+    ("cylinder", False): (shapes.cylinder_volume, shapes.cylinder_moments),
+    ("cylinder", True): (shapes.cylinder_area, shapes.cylinder_shell_moments),
+    ("capsule", False): (shapes.capsule_volume, shapes.capsule_moments),
+    ("capsule", True): (shapes.capsule_area, shapes.capsule_shell_moments),
+}
+"""The closed forms of each primitive, solid or shell: its volume (or area) and its principal
+moments at that mass, both of the sizes :class:`Geom` gives; moments (axial, transverse) for a
+primitive along z."""
+
+
 def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[float, np.ndarray]:
     """Volume (or area, for ``shell``) and the principal moments per unit density of a centred
     primitive in its own axes (cylinder and capsule along z), from :mod:`rbi.core.shapes`'
     closed forms at the mass of a unit density. Sizes as :class:`Geom` gives them."""
-    if kind == "sphere":
-        (r,) = size
-        if shell:
-            area = shapes.sphere_area(r)
-            return area, np.full(3, shapes.sphere_shell_moment(area, r))
-        volume = shapes.sphere_volume(r)
-        return volume, np.full(3, shapes.sphere_moment(volume, r))
-    if kind == "box":
-        a, b, c = size
-        if shell:
-            area = shapes.box_area(a, b, c)
-            return area, np.array(shapes.box_shell_moments(area, a, b, c))
-        volume = shapes.box_volume(size)
-        return volume, np.array(shapes.box_moments(volume, a, b, c))
-    if kind == "ellipsoid":
-        if shell:
-            raise ValueError("a shell ellipsoid has no closed form; give it a volume (shellinertia off)")
-        volume = shapes.ellipsoid_volume(size)
-        return volume, np.array(shapes.ellipsoid_moments(volume, *size))
-    if kind in ("cylinder", "capsule"):
-        r, length = size
-        forms = {
-            ("cylinder", False): (shapes.cylinder_volume, shapes.cylinder_moments),
-            ("cylinder", True): (shapes.cylinder_area, shapes.cylinder_shell_moments),
-            ("capsule", False): (shapes.capsule_volume, shapes.capsule_moments),
-            ("capsule", True): (shapes.capsule_area, shapes.capsule_shell_moments),
-        }
-        measure_of, moments_of = forms[(kind, shell)]
-        measure = measure_of(r, length)
-        axial, transverse = moments_of(measure, r, length)
-        return measure, np.array([transverse, transverse, axial])
-    raise ValueError(f"no volume: {kind}")
+    if kind == "ellipsoid" and shell:
+        raise ValueError("a shell ellipsoid has no closed form; give it a volume (shellinertia off)")
+    if (kind, bool(shell)) not in PRIMITIVES:
+        raise ValueError(f"no volume: {kind}")
+    measure_of, moments_of = PRIMITIVES[(kind, bool(shell))]
+    measure = measure_of(*size)
+    moments = moments_of(measure, *size)
+    if len(moments) == 2:  # (axial, transverse) of a primitive along z
+        moments = (moments[1], moments[1], moments[0])
+    return measure, np.array(moments)
 
 
 def half_extent(kind: str, size) -> np.ndarray:

@@ -4,12 +4,12 @@ length unit, so the spec needs no scale)."""
 
 from __future__ import annotations
 
-import math
 import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from rbi.core.validity import finite
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.step import read_step
 from rbi.spec.materials import canonical_name, density_in_units, unknown_material_message
@@ -76,12 +76,7 @@ def _fill(density: float | None, material: str | None) -> float | str:
     ArgumentError naming the parameter when either is wrong or both are given."""
     if density is not None and material is not None:
         raise ArgumentError(("density", "material"), "give one of them, not both")
-    if density is not None and not (
-        isinstance(density, int | float)
-        and not isinstance(density, bool)
-        and math.isfinite(density)
-        and density > 0
-    ):
+    if density is not None and not (finite(density) and density > 0):
         raise ArgumentError("density", f"must be a positive number (kg/m³), got {literal(density)}")
     if material is not None and (not isinstance(material, str) or canonical_name(material) is None):
         raise ArgumentError("material", literal(unknown_material_message(str(material)), quoted=False))
