@@ -70,8 +70,7 @@ class ArgumentError(SpecError, ValueError):
     def named(self, name: Callable[[str], str]) -> str:
         """The message with each parameter spelled ``name(parameter)``; an ``item`` follows its
         parameter as ``name(parameter + "[]")`` formats it (``{}`` stands for the item)."""
-        names = _Names(name)
-        detail = _PLACEHOLDER.sub(lambda m: names[m[1]] if m[1] else m[0][0], self.detail)
+        detail = _PLACEHOLDER.sub(lambda m: name(m[1]) if m[1] else m[0][0], self.detail)
         where = f"{self.where}: " if getattr(self, "where", None) else ""
         if not self.parameters:
             return where + detail
@@ -113,12 +112,3 @@ def literal(value: object, quoted: bool = True) -> str:
 def api_name(parameter: str) -> str:
     """How the Python API spells a parameter in messages (an item as ``vary['PATH']``)."""
     return parameter[:-2] + "[{!r}]" if parameter.endswith("[]") else parameter
-
-
-class _Names(dict):
-    def __init__(self, name: Callable[[str], str]) -> None:
-        super().__init__()
-        self.name = name
-
-    def __missing__(self, key: str) -> str:
-        return self.name(key)

@@ -180,9 +180,8 @@ def json_ready(to_dict: Any) -> Any:
 
 
 class Result:
-    """The base of rbi's results: a subclass gives :meth:`rows` (or the one table of
-    :meth:`_table`), :meth:`to_dict` and, when its CSV has other rows than the one object,
-    :meth:`csv_rows`; the faces follow.
+    """The base of rbi's results: a subclass gives :meth:`rows`, :meth:`to_dict` and, when
+    its CSV has other rows than the one object, :meth:`csv_rows`; the faces follow.
 
     A subclass's ``to_dict`` may build its dict from numpy arrays and scalars: the class wraps
     it in :func:`plain`, so every result's ``to_dict()`` is JSON-ready, as the command prints it.
@@ -202,10 +201,6 @@ class Result:
     def rows(self) -> list[Rows]:
         """The tables the result shows, as text cells: the one set of rows behind ``print()``,
         ``__rich__``, ``_repr_html_`` and the CLI's tables."""
-        title, cells, columns = self._table()
-        return [Rows(title, tuple(columns), [tuple(row) for row in cells], left=_left(columns))]
-
-    def _table(self) -> tuple[str, Sequence[Sequence[str]], Sequence[str]]:
         raise NotImplementedError
 
     def to_dict(self) -> dict[str, Any]:
@@ -254,9 +249,6 @@ class Result:
         return text.getvalue().rstrip("\n")
 
 
-TableRepr = Result
-"""The name the results' base had before it gave more than its tables."""
-
 Item = TypeVar("Item")
 
 
@@ -283,7 +275,3 @@ class Results(Result, Sequence[Item]):
         return list(self) == list(other) if isinstance(other, (type(self), list)) else NotImplemented
 
     __hash__ = None  # type: ignore[assignment]
-
-
-def _left(columns: Sequence[str]) -> int:
-    return 2 if tuple(columns) == QUANTITY_COLUMNS else 1

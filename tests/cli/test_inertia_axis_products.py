@@ -8,7 +8,7 @@ import json
 import numpy as np
 import pytest
 
-from rbi.api.results import with_product_sign
+import rbi
 from tests.conftest import one_line_exit_2, run_rbi_inprocess
 
 CYLINDER = """
@@ -153,14 +153,17 @@ def test_radii_in_csv_are_numbered_like_the_moments(write_spec):
 def test_cad_products_are_the_positive_integrals():
     # One point mass m at (a, b, c) about the origin: ∫xy dm = m a b, and the tensor entry is −m a b.
     m, (a, b, c) = 2.0, (0.3, -0.4, 0.5)
-    r = np.array([a, b, c])
-    I = m * (r @ r * np.eye(3) - np.outer(r, r))
-    cad = with_product_sign(I, "cad")
+    body = rbi.load({"parts": [{"shape": "point", "mass": m, "position": [a, b, c]}]})
+    I = body.inertia_report("origin").matrix
+    cad = body.inertia_report("origin", products="cad").matrix
     assert cad[0, 1] == pytest.approx(m * a * b) and cad[1, 0] == pytest.approx(m * a * b)
     assert cad[0, 2] == pytest.approx(m * a * c) and cad[1, 2] == pytest.approx(m * b * c)
     assert I[0, 1] == pytest.approx(-m * a * b)
     assert np.array_equal(np.diag(cad), np.diag(I))
-    assert np.array_equal(with_product_sign(I, "tensor"), I)
-    assert not np.signbit(with_product_sign(np.eye(3), "cad")).any()  # no −0.0 printed for a zero product
+    assert np.array_equal(body.inertia("origin"), I)  # tensor: the matrix itself
+    box = rbi.load({"parts": [{"shape": "box", "mass": 1.0, "size": [1, 2, 3], "center": [0, 0, 0]}]})
+    assert not np.signbit(
+        box.inertia_report(products="cad").matrix
+    ).any()  # no −0.0 printed for a zero product
     with pytest.raises(ValueError):
-        with_product_sign(I, "solidworks")
+        body.inertia_report(products="solidworks")

@@ -21,7 +21,6 @@ from rbi.api.results import (
     Part,
     Parts,
     Principal,
-    with_product_sign,
 )
 from rbi.api.uncertainty import UncertaintyBudget, budget_of
 from rbi.core.dynamics import (
@@ -37,7 +36,7 @@ from rbi.errors import ArgumentError, SpecError, literal
 from rbi.formats.inertial_xml import FORMATS, export_xml
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
 from rbi.formats.robot_paths import parse_package_paths
-from rbi.reprs import QUANTITY_COLUMNS, TableRepr
+from rbi.reprs import Result, Rows
 from rbi.runs.values import vector_value
 from rbi.spec import load as spec_load
 from rbi.spec.assembly import expanded
@@ -181,7 +180,7 @@ def unit_vector(direction: Sequence[float] | np.ndarray) -> np.ndarray:
         ) from None
 
 
-class Body(TableRepr):
+class Body(Result):
     """A validated rigid body, as `load` returns it (not constructed directly).
 
     All numbers are in the spec's own units (`units`) and the body frame (the spec's
@@ -359,7 +358,10 @@ class Body(TableRepr):
                 "products", f"expected one of {', '.join(PRODUCT_SIGN_TITLES)}, got {literal(products)}"
             )
         turns = list(axes or [])
-        matrix = with_product_sign(self.inertia(about, turns or None), products)
+        matrix = self.inertia(about, turns or None)  # a new array: its products may change sign
+        if products == "cad":
+            off_diagonal = ~np.eye(3, dtype=bool)
+            matrix[off_diagonal] = 0.0 - matrix[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
         direction = None if axis is None else unit_vector(axis)
         spread = self.standard_uncertainty(about, turns or None)
         return Inertia(
@@ -682,7 +684,7 @@ class Body(TableRepr):
             f"{len(self._loaded.elements)} parts, {'pivot' if self._loaded.pivot is not None else 'free'}>"
         )
 
-    def _table(self) -> tuple[str, list[tuple[str, str, str]], tuple[str, ...]]:
+    def rows(self) -> list[Rows]:
         units = self.units
         inertia_unit = f"{units['mass']}·{units['length']}²"
         principal = self.principal()
@@ -696,7 +698,7 @@ class Body(TableRepr):
         for i, axis in enumerate(principal.axes, start=1):
             rows.append((f"principal axis {i}", "", vector_text(axis)))
         rows.append(("parts", "", str(len(self._loaded.elements))))
-        return f"{self.name or self.path}", rows, QUANTITY_COLUMNS
+        return [Rows.quantities(f"{self.name or self.path}", rows)]
 
 
 def _numbers(element: Any) -> dict[str, Any]:

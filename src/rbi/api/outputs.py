@@ -2,22 +2,19 @@
 
 from __future__ import annotations
 
+import contextlib
 import difflib
 import functools
 import inspect
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, ParamSpec, TypeVar
 
 from rbi.errors import ArgumentError, InputError, SpecError, literal
-from rbi.files.output import OutputTarget, check_distinct, output_target
+from rbi.files.output import Destination, OutputTarget, check_distinct, output_target
 
 if TYPE_CHECKING:  # a Body is known by its files_read: `rbi audit` loads no spec modules
     from rbi.api.body import Body
-
-Destination = str | os.PathLike[str] | OutputTarget
-"""Where a picture or a file of rows goes: a path (its extension gives the format), or a target
-`output_target` has already checked (a caller's own messages then name it)."""
 
 
 def checked_output(
@@ -38,23 +35,47 @@ def checked_output(
             output_target(path.given, path.option, (path.format,), inputs=reads)
         return path
     given = path_text(path, name)
-    try:
+    with as_parameter(name):
         return output_target(given, name, formats, inputs=reads)
+
+
+@contextlib.contextmanager
+def as_parameter(name: str) -> Iterator[None]:
+    """A refusal of rbi's checked writer, which names an output as `checked_output` named it
+    (by parameter: ``plot: ...``), as the `ArgumentError` of ``name`` (a caller then spells it
+    as its own: the CLI's ``--plot``); any other error passes as it is."""
+    try:
+        yield
     except ArgumentError:
         raise
     except SpecError as exc:
+        if not str(exc).startswith(f"{name}: "):
+            raise
         raise ArgumentError(name, literal(str(exc).removeprefix(f"{name}: "), quoted=False)) from None
 
 
-def distinct_out_and_plot(out: OutputTarget | None, plot: OutputTarget | None) -> None:
-    """ArgumentError naming ``plot`` when it is the file ``out`` names too (a link to it)."""
+PLOT_FORMATS = ("png", "svg", "pdf")
+"""The forms of a run's or a sweep's plot (its ``plot``)."""
+
+
+def out_and_plot(
+    out: Destination | None, plot: Destination | None, out_formats: tuple[str, ...], read: str | Body
+) -> tuple[OutputTarget | None, OutputTarget | None]:
+    """A run's ``out`` (one of ``out_formats``) and ``plot`` (:data:`PLOT_FORMATS`), each
+    checked by `checked_output` against ``read`` (None where not asked for), before any work;
+    ArgumentError naming ``plot`` when it is the file ``out`` names too (a link to it)."""
+    targets = (
+        None if out is None else checked_output(out, out_formats, read, "out"),
+        None if plot is None else checked_output(plot, PLOT_FORMATS, read, "plot"),
+    )
     try:
-        check_distinct([out, plot])
+        check_distinct(targets)
     except InputError:
-        shown = literal(plot.given, quoted=False)  # type: ignore[union-attr]
+        shown = literal(targets[1].given, quoted=False)  # type: ignore[union-attr]
         raise ArgumentError(
             "plot", f"{shown}: is also the {{out}} output of this run; give each output its own file"
         ) from None
+    return targets
 
 
 def path_text(value: object, name: str = "robot_file") -> str:

@@ -7,9 +7,9 @@ from dataclasses import dataclass
 from typing import Any
 
 from rbi.api.body import Body, loaded_body
-from rbi.api.outputs import Destination, checked_output
+from rbi.api.outputs import checked_output
 from rbi.errors import ArgumentError, literal
-from rbi.files.output import write_output
+from rbi.files.output import Destination, write_output
 from rbi.runs.animation import animation
 from rbi.runs.run import RunSettings, prepare_run
 from rbi.viz.frames import MAX_GIF_FRAMES, frame_indices, write_gif

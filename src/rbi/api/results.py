@@ -30,18 +30,6 @@ MAX_TABLE_PARTS = 200
 out, and a person reads the CSV or JSON of a body that large, which list every part."""
 
 
-def with_product_sign(inertia: Any, sign: str) -> np.ndarray:
-    """The inertia matrix with its off-diagonal entries in convention ``sign`` (see
-    :data:`PRODUCT_SIGN_TITLES`); the moments on the diagonal never change."""
-    matrix = np.array(inertia, dtype=float)
-    if sign not in PRODUCT_SIGN_TITLES:
-        raise ValueError(f"unknown products sign {sign!r} (expected one of {tuple(PRODUCT_SIGN_TITLES)})")
-    if sign == "cad":
-        off_diagonal = ~np.eye(3, dtype=bool)
-        matrix[off_diagonal] = 0.0 - matrix[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
-    return matrix
-
-
 def without_noise(values: Any, scale: float = 0.0) -> np.ndarray:
     """``values`` with every entry below :data:`NOISE_RELATIVE` of their largest magnitude, or
     of ``scale`` (a position: the body's size), set to 0, for printing."""

@@ -12,14 +12,14 @@ from typing import Any
 
 import numpy as np
 
-from rbi.api.outputs import Destination, checked_output, path_text
+from rbi.api.outputs import checked_output, path_text
 from rbi.core.rotation import matrix_to_quaternion
 from rbi.errors import ArgumentError, SpecError, literal
-from rbi.files.output import check_distinct, write_output
+from rbi.files.output import Destination, check_distinct, write_output
 from rbi.formats.paths import outside_paths_are_allowed
 from rbi.formats.robot_files import link_problems, link_spec, read_robot
 from rbi.formats.robot_paths import parse_package_paths
-from rbi.reprs import Result, Rows, plain
+from rbi.reprs import Result, Rows
 from rbi.robot import audit as run_audit
 from rbi.robot.audit import AuditReport, AuditSettings
 from rbi.robot.fix import check_out_not_read
@@ -73,15 +73,12 @@ def audit(
         SpecError: the file cannot be read, is malformed, names a mesh that cannot be found or
             read, or repeats a link name; ``out`` cannot be written.
     """
+    chosen = {k: v for k, v in locals().items() if k not in ("robot_file", "out", "allow_outside_paths")}
     if out is not None and not fix:
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
     path = path_text(robot_file)
     target = None if out is None else checked_output(out, _fixed_format(path), path, "out")
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
-    chosen: dict[str, Any] = dict(
-        package_paths=package_paths, geometry=geometry, density=density, material=material
-    )
-    chosen |= dict(mesh_inertia=mesh_inertia, joints=joints, fix=fix, mesh_repair=mesh_repair)
     report = run_audit(path, AuditSettings.of(allow_outside_paths=allowed, **chosen))
     if target is not None:
         _write_fixed(target, report)
@@ -189,27 +186,17 @@ class RobotImport(Result):
         """What ``rbi import --format json`` prints, less ``"file"``: each link's ``"file"`` is
         where its spec was written (:attr:`written`), else None."""
         links = [
-            {
-                "name": each.name,
-                "index": each.index,
-                "mass": each.mass,
-                "center_of_mass": each.center_of_mass,
-                "inertia": each.inertia,
-                "inertial_quaternion": each.inertial_quaternion,
-                "problems": each.problems,
-                "file": self.written.get(each.index),
-            }
+            {k: v for k, v in vars(each).items() if k not in ("label", "yaml")}
+            | {"file": self.written.get(each.index)}
             for each in self.links
         ]
-        return plain(
-            {
-                "format": self.format,
-                "model": self.name,
-                "units": {"length": "m", "mass": "kg"},
-                "links": links,
-                "skipped": [{"link": label, "reason": reason} for label, reason in self.skipped],
-            }
-        )
+        return {
+            "format": self.format,
+            "model": self.name,
+            "units": {"length": "m", "mass": "kg"},
+            "links": links,
+            "skipped": [{"link": label, "reason": reason} for label, reason in self.skipped],
+        }
 
     def csv_rows(self) -> list[dict[str, Any]]:
         """``rbi import --format csv``: one row a link, ``ok`` for no problems."""

@@ -2,17 +2,16 @@
 
 from __future__ import annotations
 
-import contextlib
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, replace
 from typing import Any
 
 import numpy as np
 
 from rbi.api.body import Body, loaded_body
-from rbi.api.outputs import Destination, checked_output, distinct_out_and_plot, keywords_checked
-from rbi.errors import ArgumentError, SpecError, literal
-from rbi.files.output import OutputTarget, write_output
+from rbi.api.outputs import PLOT_FORMATS, as_parameter, checked_output, keywords_checked, out_and_plot
+from rbi.errors import ArgumentError
+from rbi.files.output import Destination, OutputTarget, write_output
 from rbi.reprs import Result, Rows, pandas_module
 from rbi.runs.draws import input_uncertainty as spread
 from rbi.runs.run import RunSettings, RunSummary, SimulationRun, prepare_run
@@ -215,8 +214,6 @@ def _accuracy_rows(s: RunSummary, labels: dict[str, str]) -> list[tuple[str, str
     return accuracy
 
 
-PLOT_FORMATS = ("png", "svg", "pdf")
-
 PLOT_SAMPLES = 8001
 """Samples a plot draws (`simulate`'s ``plot``): enough to show nutation loops and the wobble of
 a fast top."""
@@ -280,7 +277,7 @@ def simulate(
             be ...``), or the run is estimated to exceed ``max_steps``.
         SpecError: the run cannot be made (no mass, too many steps, overflow); ``out`` or ``plot`` not writable.
     """
-    csv_file, picture = _outputs(body, out, plot)
+    csv_file, picture = out_and_plot(out, plot, ("csv",), body)
     run = _simulated(body, RunSettings.of(locals()), progress, 0 if picture is None else PLOT_SAMPLES)
     return _written(run.with_input_uncertainty(draws, seed) if draws is not None else run, csv_file, picture)
 
@@ -290,34 +287,12 @@ def _written(
 ) -> Trajectory:
     """``trajectory``, its CSV written at ``csv_file`` and its plot drawn at ``picture`` (None: not asked for)."""
     if csv_file is not None:
-        with _as_parameter("out"):
+        with as_parameter("out"):
             write_output(csv_file, trajectory.to_csv())
     if picture is not None:
-        with _as_parameter("plot"):
+        with as_parameter("plot"):
             trajectory.plot(picture)
     return trajectory
-
-
-def _outputs(body: Body, out: Destination | None, plot: Destination | None) -> list[OutputTarget | None]:
-    """The ``out`` and ``plot`` of `simulate` checked (None where not asked for), before any work."""
-    targets = [
-        None if path is None else checked_output(path, formats, body, name)
-        for path, formats, name in ((out, ("csv",), "out"), (plot, PLOT_FORMATS, "plot"))
-    ]
-    distinct_out_and_plot(*targets)
-    return targets
-
-
-@contextlib.contextmanager
-def _as_parameter(name: str) -> Iterator[None]:
-    """A refusal of rbi's writer, which names an output as it was checked (by parameter: ``plot: ...``),
-    as the `ArgumentError` of ``name`` (a full disk, one file for two outputs)."""
-    try:
-        yield
-    except ArgumentError:
-        raise
-    except SpecError as exc:
-        raise ArgumentError(name, literal(str(exc).removeprefix(f"{name}: "), quoted=False)) from None
 
 
 def input_uncertainty(

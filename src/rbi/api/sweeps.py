@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import importlib.util
 import os
 from collections.abc import Callable, Iterator, Mapping, Sequence
@@ -10,9 +11,9 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from rbi.api.body import Body, loaded_body
-from rbi.api.outputs import Destination, checked_output, distinct_out_and_plot, keywords_checked
-from rbi.errors import ArgumentError, InputError, literal
-from rbi.files.output import OutputTarget
+from rbi.api.outputs import PLOT_FORMATS, as_parameter, checked_output, keywords_checked, out_and_plot
+from rbi.errors import ArgumentError
+from rbi.files.output import Destination, OutputTarget
 from rbi.reprs import Result, Rows, pandas_module
 from rbi.spec.load import read_spec
 from rbi.sweeps.study import MAX_ROWS_SHOWN, Study, SweepSettings, check_settings
@@ -89,7 +90,7 @@ class SweepTable(Result):
         ValueError for a sweep of mass properties, with nothing swept, or whose rows are not held."""
         if not self.held:
             raise ArgumentError("plot", "the map is drawn from the rows, and this table does not hold them")
-        target = checked_output(path, ("png", "svg", "pdf"), self._body, "plot")
+        target = checked_output(path, PLOT_FORMATS, self._body, "plot")
         plot_stability_map(target=target, **self._study.stability_map(self._rows))
         self._drawn = target.given
 
@@ -285,12 +286,8 @@ def _study(
 
 def _rows(study: Study, out: OutputTarget | None, resume: bool, progress: Any) -> list[list[Any]] | None:
     """The study's rows (:meth:`Study.run`); the rows file's messages name it ``out``."""
-    try:
+    with contextlib.nullcontext() if out is None else as_parameter("out"):
         return study.run(out, resume, progress)
-    except InputError as exc:
-        if out is None or not str(exc).startswith("out: "):
-            raise
-        raise ArgumentError("out", literal(str(exc).removeprefix("out: "), quoted=False)) from None
 
 
 def _targets(
@@ -301,9 +298,7 @@ def _targets(
     ``out`` pyarrow."""
     if out is None and resume:
         raise ArgumentError("resume", "needs {out}, the file of the interrupted sweep")
-    out_target = None if out is None else checked_output(out, ("csv", "parquet"), read, "out")
-    plot_target = None if plot is None else checked_output(plot, ("png", "svg", "pdf"), read, "plot")
-    distinct_out_and_plot(out_target, plot_target)
+    out_target, plot_target = out_and_plot(out, plot, ("csv", "parquet"), read)
     if out_target is not None and out_target.format == "parquet" and not importlib.util.find_spec("pyarrow"):
         raise ArgumentError(
             "out",

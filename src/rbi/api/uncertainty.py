@@ -56,35 +56,32 @@ class UncertaintyBudget(Result):
                 out.append(head | {f"input_{k}" if k in ("value", "u") else k: v for k, v in c.items()})
         return out
 
-    def _title(self) -> str:
-        d = self._data
+    def _quantities(self) -> Rows:
+        """Each quantity's value, standard uncertainty and interval (Monte Carlo: the shortest,
+        not symmetric about the mean), under the method and coverage."""
+        d, rows = self._data, []
+        labels = unit_labels(d["units"]["length"], d["units"]["mass"])
+        for q in d["quantities"]:
+            (low, high), name = q["interval"], q["quantity"]
+            unit, half = labels[UNITS[name.split("[")[0]]], number((high - low) / 2, 2)
+            interval = f"{number(low, 4)} … {number(high, 4)}" if d["samples"] else half
+            rows.append((name, unit, number(q["value"], 5), number(q["u"], 2), interval))
         method = f"Monte Carlo, {d['samples']:,} draws" if d["samples"] else "linear"
         coverage = d["quantities"][0]["coverage"] if d["quantities"] else 0.95
-        return f"{d['name'] or 'body'} — uncertainty ({method}; {100 * coverage:g}% coverage)"
+        title = f"{d['name'] or 'body'} — uncertainty ({method}; {100 * coverage:g}% coverage)"
+        columns = ("quantity", "unit", "value", "u", "interval" if d["samples"] else "± U")
+        return Rows(title, columns, rows, left=2)
 
-    def _quantities(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
-        rows: list[tuple[str, ...]] = []
-        labels = unit_labels(self._data["units"]["length"], self._data["units"]["mass"])
-        for q in self._data["quantities"]:
-            (low, high), name = q["interval"], q["quantity"]
-            unit, value, u = labels[UNITS[name.split("[")[0]]], number(q["value"], 5), number(q["u"], 2)
-            if self._data["samples"]:  # the shortest interval: not symmetric about the mean
-                rows.append((name, unit, value, u, f"{number(low, 4)} … {number(high, 4)}"))
-            else:
-                rows.append((name, unit, value, u, number((high - low) / 2, 2)))
-        last = "interval" if self._data["samples"] else "± U"
-        return self._title(), ("quantity", "unit", "value", "u", last), rows
-
-    def _validation(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
+    def _validation(self) -> Rows:
         rows: list[tuple[str, ...]] = [
             (q["quantity"], " … ".join(number(end, 4) for end in q["linear"]["interval"]))
             + ("yes" if q["linear"]["validated"] else "NO",)
             for q in self._data["quantities"]
         ]
-        title = "Is the linear result validated? (JCGM 101 §8)"
-        return title, ("quantity", "linear interval", "linear ok"), rows
+        columns = ("quantity", "linear interval", "linear ok")
+        return Rows("Is the linear result validated? (JCGM 101 §8)", columns, rows)
 
-    def _budget(self) -> tuple[str, tuple[str, ...], list[tuple[str, ...]]]:
+    def _budget(self) -> Rows:
         rows: list[tuple[str, ...]] = [
             (q["quantity"], c["input"], number(c["sensitivity"], 4), f"{100 * c['share']:.1f}%")
             for q in self.quantities
@@ -92,20 +89,15 @@ class UncertaintyBudget(Result):
             if c["contribution"] > 0
         ]
         estimated = self._data.get("estimated_sensitivities")
-        return (
-            "Contributions, largest first (share of the variance)"
-            + (f"; ∂y/∂x by finite differences (~1e-9) for {', '.join(estimated)}" if estimated else ""),
-            ("quantity", "input", "∂y/∂x", "share"),
-            rows,
+        title = "Contributions, largest first (share of the variance)" + (
+            f"; ∂y/∂x by finite differences (~1e-9) for {', '.join(estimated)}" if estimated else ""
         )
+        return Rows(title, ("quantity", "input", "∂y/∂x", "share"), rows, left=2)
 
     def rows(self) -> list[Rows]:
         """The quantities' table, then the contributions'."""
-        (title, columns, cells), budget = self._quantities(), self._budget()
-        tables = [Rows(title, columns, cells, left=columns.index("value"))]
-        if self._data["samples"]:
-            tables.append(Rows(*self._validation(), left=1))
-        return [*tables, Rows(*budget, left=2)]
+        validation = [self._validation()] if self._data["samples"] else []
+        return [self._quantities(), *validation, self._budget()]
 
 
 def budget_of(

@@ -61,6 +61,11 @@ class OutputTarget:
         return self.given == STDOUT
 
 
+Destination = str | os.PathLike[str] | OutputTarget
+"""Where a picture or a file of rows goes: a path (its extension gives the format), or a target
+`output_target` has already checked (a caller's own messages then name it)."""
+
+
 def output_target(
     path: str,
     option: str,
