@@ -15,17 +15,10 @@ _MATRIX_ENTRIES = (("xx", 0, 0), ("yy", 1, 1), ("zz", 2, 2), ("xy", 0, 1), ("xz"
 
 
 def _check_dict(check: Check) -> dict[str, Any]:
-    out = {
-        "quantity": check.quantity,
-        "unit": check.unit,
-        "expected": check.expected,
-        "actual": check.actual,
-        "deviation": check.deviation,
-        "tol": check.tol,
-        "allowed": check.allowed,
-        "pass": check.passed,
-    }
-    return out if check.about is None else out | {"about": check.about}
+    """A check as ``rbi check --format json`` lists it: its fields, ``passed`` as ``pass``,
+    without ``component_deviation``, and ``about`` only where there is one."""
+    skip = ("component_deviation", "about") if check.about is None else ("component_deviation",)
+    return {"pass" if k == "passed" else k: v for k, v in vars(check).items() if k not in skip}
 
 
 def _components(check: Check) -> list[tuple[str, Any, Any, Any]]:

@@ -205,8 +205,7 @@ class Principal(Result):
         return f"Principal(moments={self.moments!r}, axes={self.axes!r}, about={self.about!r})"
 
     def to_dict(self) -> dict[str, Any]:
-        values: dict[str, Any] = {"moments": self.moments, "axes": self.axes}
-        values["radii_of_gyration"] = self.radii_of_gyration
+        values = {k: v for k, v in vars(self).items() if k not in ("about", "place", "uncertainty")}
         out = (self.place.header() if self.place else {"about": self.about}) | values
         if self.uncertainty is not None:
             out["uncertainty"] = self.uncertainty
@@ -281,17 +280,8 @@ class Momentum(Result):
 
     def to_dict(self) -> dict[str, Any]:
         head = self.place.header() if self.place else {"about": self.about}
-        return (
-            head
-            | {
-                "omega": self.omega,
-                "com_velocity": self.com_velocity,
-                "angular_momentum": self.angular_momentum,
-                "angle_deg": self.angle_deg,
-                "kinetic_energy": self.kinetic_energy,
-            }
-            | ({} if self.uncertainty is None else {"uncertainty": self.uncertainty})
-        )
+        values = {k: v for k, v in vars(self).items() if k not in ("about", "place", "uncertainty")}
+        return head | values | ({} if self.uncertainty is None else {"uncertainty": self.uncertainty})
 
     def rows(self) -> list[Rows]:
         place = self.place
@@ -355,18 +345,17 @@ class Dynamics(Result):
 
     def to_dict(self) -> dict[str, Any]:
         body = self.place.body if self.place else None
-        return (named(body) if body else {"name": None, "units": {}, "warnings": []}) | {
-            "mode": self.mode,
-            "mass": body.mass if body else None,
-            "center_of_mass": body.center_of_mass if body else None,
-            "about": self.about,
-            "about_label": self.place.label if self.place else "point",
-            "omega": self.omega,
-            "alpha": self.alpha,
-            "point_acceleration": self.point_acceleration,
-            "force": self.force,
-            "torque": self.torque,
-        }
+        return (
+            (named(body) if body else {"name": None, "units": {}, "warnings": []})
+            | {
+                "mode": self.mode,
+                "mass": body.mass if body else None,
+                "center_of_mass": body.center_of_mass if body else None,
+                "about": self.about,
+                "about_label": self.place.label if self.place else "point",
+            }
+            | {k: v for k, v in vars(self).items() if k not in ("mode", "about", "held", "place")}
+        )
 
     def rows(self) -> list[Rows]:
         body = self.place.body if self.place else None
@@ -644,16 +633,9 @@ class Export(Result):
 
     def to_dict(self) -> dict[str, Any]:
         props = self.mass_properties
-        return {
-            "name": self.name,
-            "to": self.to,
-            "units": self.units,
-            "warnings": self.warnings,
-            "mass": props.mass,
-            "center_of_mass": props.center_of_mass,
-            "inertia": props.inertia_about_com,
-            "xml": self.xml,
-        }
+        head = {k: v for k, v in vars(self).items() if k not in ("mass_properties", "xml")}
+        inertial = dict(mass=props.mass, center_of_mass=props.center_of_mass, inertia=props.inertia_about_com)
+        return head | inertial | {"xml": self.xml}
 
     def csv_rows(self) -> list[dict[str, Any]]:
         return [{k: v for k, v in self.to_dict().items() if k != "xml"}]

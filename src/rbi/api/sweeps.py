@@ -144,19 +144,12 @@ class SweepTable(Result):
         columns and, when the rows are held, the runs as objects and how many failed; the
         ``out`` file; a study of mass properties adds each quantity's ``spread``; the map's
         file (``plot``) once drawn."""
-        result: dict[str, Any] = dict(
-            name=self.name, units=self.units, warnings=self.warnings, count=self.count
-        )
+        result = dict(name=self.name, units=self.units, warnings=self.warnings, count=self.count)
         result["columns"] = self.columns
         if self.held:
             result |= {"runs": self.records(), "failed": self.failed}
-        if self.out is not None:
-            result["out"] = self.out
-        if self.spread is not None:
-            result["spread"] = self.spread
-        if self._drawn is not None:
-            result["plot"] = self._drawn
-        return result
+        given = {"out": self.out, "spread": self.spread, "plot": self._drawn}
+        return result | {key: value for key, value in given.items() if value is not None}
 
     def csv_rows(self) -> list[dict[str, Any]]:
         """One row per run (``rbi sweep --format csv``)."""
