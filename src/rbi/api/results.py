@@ -454,31 +454,28 @@ class Parts(Results[Part]):
         body = self._body
         units = body.units
         to_si = MASS_UNITS_IN_KG[units["mass"]] / LENGTH_UNITS_IN_M[units["length"]] ** 3
-        rows = []
+        rows, step = [], any(part.shape == "step" for part in self._items)
         for part in self._items:
             density = abs(part.mass / part.volume) if part.volume else None
-            rows.append(
-                {
-                    "name": part.name,
-                    "shape": part.shape,
-                    "hole": part.hole,
-                    "mass": part.mass,
-                    "mass_share": part.mass / body.mass,
-                    "center_of_mass": part.center_of_mass,
-                    "inertia_about_com": part.inertia_about_com,
-                    "principal_moments": part.principal_moments,
-                    "inertia_share": part.inertia_share,
-                    "volume": part.volume,  # negative for a hole, as the mass: the parts add up
-                    "implied_density": density,
-                    "implied_density_si": None if density is None else density * to_si,
-                }
-            )
-        for row, part in zip(rows, self._items):
+            row = {
+                "name": part.name,
+                "shape": part.shape,
+                "hole": part.hole,
+                "mass": part.mass,
+                "mass_share": part.mass / body.mass,
+                "center_of_mass": part.center_of_mass,
+                "inertia_about_com": part.inertia_about_com,
+                "principal_moments": part.principal_moments,
+                "inertia_share": part.inertia_share,
+                "volume": part.volume,  # negative for a hole, as the mass: the parts add up
+                "implied_density": density,
+                "implied_density_si": None if density is None else density * to_si,
+            }
             if part.uncertainty is not None:
                 row["uncertainty"] = part.uncertainty
-        if any(part.shape == "step" for part in self._items):  # the error estimate of each STEP part
-            for row, part in zip(rows, self._items):
+            if step:  # the error estimate of each STEP part
                 row["integration_error"] = part.integration_error
+            rows.append(row)
         return rows
 
     def to_dict(self) -> dict[str, Any]:

@@ -317,8 +317,4 @@ def _simulated(
 
 def _axis_name(axis: Any) -> str:
     """``body y`` for a coordinate axis of the body frame, else ``the spin axis``."""
-    axis = np.asarray(axis, dtype=float)
-    for index, name in enumerate("xyz"):
-        if axis[index] == 1.0:
-            return f"body {name}"
-    return "the spin axis"
+    return next((f"body {name}" for name, value in zip("xyz", axis) if value == 1.0), "the spin axis")

@@ -144,7 +144,9 @@ class SweepTable(Result):
         columns and, when the rows are held, the runs as objects and how many failed; the
         ``out`` file; a study of mass properties adds each quantity's ``spread``; the map's
         file (``plot``) once drawn."""
-        result = dict(name=self.name, units=self.units, warnings=self.warnings, count=self.count)
+        result: dict[str, Any] = dict(
+            name=self.name, units=self.units, warnings=self.warnings, count=self.count
+        )
         result["columns"] = self.columns
         if self.held:
             result |= {"runs": self.records(), "failed": self.failed}
