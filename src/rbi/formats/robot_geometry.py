@@ -160,12 +160,8 @@ def distribution(
                 f"{where}{geom.label}: size {list(geom.size)}: too large to compute with (its volume or "
                 "inertia overflows a double); give sizes in metres"
             )
-        return Distribution(
-            MassProperties(measure, p, 0.5 * (inertia + inertia.T), "link"),
-            p - corners,
-            p + corners,
-            geom.shell,
-        )
+        unit = MassProperties(measure, p, 0.5 * (inertia + inertia.T), "link")
+        return Distribution(unit, p - corners, p + corners, geom.shell)
     if geom.kind == "mesh":
         if not (mode == "auto" and geom.mesh_inertia == "exact" and not as_mujoco):
             mode = geom.mesh_inertia or ("shell" if geom.shell else mode)

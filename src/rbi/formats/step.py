@@ -161,12 +161,12 @@ def select_solids(step: StepFile, solid: str | int | None) -> list[int]:
         raise ValueError(
             f"solid: {solid} is out of range: the file has {count} solid{'s' * (count != 1)}, 0 to {count - 1}"
         )
-    for i, one in enumerate(step.solids):
-        if one.name == solid:
-            return [i]
-    names = ", ".join(repr(s.name) for s in step.solids[:12]) + (", ..." if count > 12 else "")
+    names = [one.name for one in step.solids]
+    if solid in names:
+        return [names.index(solid)]
+    listed = ", ".join(repr(name) for name in names[:12]) + (", ..." if count > 12 else "")
     raise ValueError(
-        f"solid: no solid named {solid!r} in the file; its solids are {names} (or give a 0-based index)"
+        f"solid: no solid named {solid!r} in the file; its solids are {listed} (or give a 0-based index)"
     )
 
 
