@@ -229,17 +229,11 @@ class Principal(Result):
         spread = self.uncertainty
         columns: tuple[str, ...] = ("#", moment, "axis x", "axis y", "axis z")
         columns += (f"radius of gyration [{labels['length']}]", *(() if spread is None else ("axis ±°",)))
+        u = [None] * 3 if spread is None else [x / scale for x in spread["moments"]]
+        degrees = [()] * 3 if spread is None else [(number(d, 2),) for d in spread["axes_deg"]]
         cells = [
-            (
-                f"I{i}",
-                number(m / scale, 7)
-                if spread is None
-                else plus_minus(m / scale, spread["moments"][i - 1] / scale),
-                *(number(v, 7) for v in a),
-                number(k, 7),
-                *(() if spread is None else (number(spread["axes_deg"][i - 1], 2),)),
-            )
-            for i, (m, a, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration), start=1)
+            (f"I{i + 1}", _with_u(m / scale, u[i], 7), *(number(v, 7) for v in a), number(k, 7), *degrees[i])
+            for i, (m, a, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration))
         ]
         axes = Rows(f"Principal axes about {label} (body frame)", columns, cells)
         if self.place is None:
@@ -284,29 +278,19 @@ class Momentum(Result):
         return head | values | ({} if self.uncertainty is None else {"uncertainty": self.uncertainty})
 
     def rows(self) -> list[Rows]:
-        place = self.place
+        place, u = self.place, self.uncertainty
         labels = place.body.unit_labels if place else {"velocity": "", "angular_momentum": "", "energy": ""}
-        u = self.uncertainty
+        h_unit = labels["angular_momentum"]
+        spread = [] if u is None else [("± its standard uncertainty", h_unit, shown(u["angular_momentum"]))]
+        energy = _with_u(self.kinetic_energy, None if u is None else u["kinetic_energy"], 8)
         cells = [
             *(place.place_rows(u) if place else []),
             ("ω (body axes)", "rad/s", shown(self.omega)),
             ("v of centre of mass", labels["velocity"], shown(self.com_velocity)),
-            ("angular momentum h", labels["angular_momentum"], shown(self.angular_momentum)),
-            *(
-                []
-                if u is None
-                else [
-                    ("± its standard uncertainty", labels["angular_momentum"], shown(u["angular_momentum"]))
-                ]
-            ),
+            ("angular momentum h", h_unit, shown(self.angular_momentum)),
+            *spread,
             ("angle between h and ω", "deg", number(self.angle_deg, 6)),
-            (
-                "kinetic energy",
-                labels["energy"],
-                number(self.kinetic_energy, 8)
-                if u is None
-                else plus_minus(self.kinetic_energy, u["kinetic_energy"]),
-            ),
+            ("kinetic energy", labels["energy"], energy),
         ]
         title = place.title(f"momentum about {place.label}") if place else "momentum"
         return [Rows.quantities(title, cells)]
@@ -363,16 +347,13 @@ class Dynamics(Result):
         label = self.place.label if self.place else "point"
         given, found = ("given", "result") if self.mode == "inverse" else ("result", "given")
         force_note = "needed to hold the point" if self.held else found
+        acceleration = f"a of {label} ({'given' if self.held else given})"
         cells = [
             ("mass", labels["mass"], number(body.mass if body else None, 8)),
             (f"about ({label})", labels["length"], shown(self.about)),
             ("ω", "rad/s", shown(self.omega)),
             (f"α ({given})", "rad/s²", shown(self.alpha)),
-            (
-                f"a of {label} ({'given' if self.held else given})",
-                f"{labels['length']}/s²",
-                shown(self.point_acceleration),
-            ),
+            (acceleration, f"{labels['length']}/s²", shown(self.point_acceleration)),
             (f"force ({force_note})", _load_unit(body, 1), shown(self.force)),
             (f"torque about {label} ({found})", _load_unit(body, 2), shown(self.torque)),
         ]

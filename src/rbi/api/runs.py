@@ -149,6 +149,7 @@ def _motion_rows(s: RunSummary) -> list[tuple[str, str, str]]:
         else [("spin axis to h: min … max", "deg", f"{number(to_h['min'])} … {number(to_h['max'])}")]
     )
     rate = s.mean_precession_rate_deg_s
+    precession = "undefined (the axis was vertical)" if rate is None else number(rate)
     return [
         ("scene", "", s.scene),
         ("method", "", s.method),
@@ -160,11 +161,7 @@ def _motion_rows(s: RunSummary) -> list[tuple[str, str, str]]:
         ("nudge at t=0 (--tilt)", "deg", number(s.initial["nudge_deg"])),
         (f"final tilt of {_axis_name(s.spin_axis)}", "deg", number(s.final["tilt_deg"])),
         ("tilt min … max (nutation)", "deg", f"{number(s.tilt_min_deg)} … {number(s.tilt_max_deg)}"),
-        (
-            "mean precession rate",
-            "deg/s",
-            "undefined (the axis was vertical)" if rate is None else number(rate),
-        ),
+        ("mean precession rate", "deg/s", precession),
         *cone,
     ]
 
