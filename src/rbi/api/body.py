@@ -95,8 +95,7 @@ def load(
         raise TypeError(
             f"source: expected a path (str or os.PathLike) or a dict, got {type(source).__name__}"
         )
-    path = os.fspath(source)
-    path = os.fsdecode(path) if isinstance(path, bytes) else path
+    path = os.fsdecode(os.fspath(source))  # a PathLike may give bytes
     if ("\n" in path or path.lstrip()[:1] in ("{", "[")) and not os.path.lexists(path):
         raise ArgumentError(
             "source", "is text, not a path (a str is always a path): read spec text with rbi.loads"
