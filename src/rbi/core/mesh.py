@@ -510,10 +510,8 @@ def convex_hull_mesh(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
             "the convex hull is flat: the vertices lie in one plane (or on one line) and span "
             "no volume; use inertia: shell for a flat surface"
         ) from None
-    corner_ids = hull.vertices
-    renumber = np.full(len(points), -1, dtype=np.int64)
-    renumber[corner_ids] = np.arange(len(corner_ids))
-    faces = renumber[hull.simplices]
+    corner_ids, faces = np.unique(hull.simplices, return_inverse=True)  # the corners in input order
+    faces = faces.reshape(-1, 3).astype(np.int64)
     hull_points = points[corner_ids]
     c = hull_points[faces] - centre
     outward = np.einsum("ij,ij->i", np.cross(c[:, 1] - c[:, 0], c[:, 2] - c[:, 0]), hull.equations[:, :3])

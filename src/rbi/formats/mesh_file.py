@@ -247,17 +247,15 @@ def _parse_obj(data: bytes) -> tuple[np.ndarray, np.ndarray]:
                 _add_face(line.split()[1:], len(coordinates) // 3, line_number, corners, face_lines)
                 if len(face_lines) > MAX_MESH_TRIANGLES:
                     raise _too_many(None)
-    vertices = np.frombuffer(coordinates, dtype=float).reshape(-1, 3) if coordinates else np.zeros((0, 3))
-    faces = (
-        np.frombuffer(corners, dtype=np.int64).reshape(-1, 3) if corners else np.zeros((0, 3), dtype=np.int64)
-    )
+    vertices = np.array(coordinates, dtype=float).reshape(-1, 3)  # copied out of the growing buffers
+    faces = np.array(corners, dtype=np.int64).reshape(-1, 3)
     if len(faces) and faces.max() >= len(vertices):
         face = int(np.flatnonzero((faces >= len(vertices)).any(axis=1))[0])
         raise ValueError(
             f"mesh face on line {face_lines[face]} names vertex {int(faces[face].max()) + 1}, but the "
             f"file has {len(vertices)} vertices (numbered from 1)"
         )
-    return vertices.copy(), faces.copy()
+    return vertices, faces
 
 
 def _add_face(fields: list, n_vertices: int, line_number: int, corners: array, face_lines: array) -> None:
