@@ -215,3 +215,18 @@ def test_the_linear_table_gives_each_quantitys_unit(tmp_path):
         'units: {length: mm, mass: g}\nparts: [{shape: point, mass: "2 ± 0.1", position: [1, 0, 0]}]\n'
     )
     assert "g·mm²" in run_rbi_inprocess("uncertainty", spec, "--of", "inertia[1][1]").stdout
+
+
+def test_a_spec_without_plus_minus_says_so_once_in_every_form():
+    """A spec with no ± has a budget of zeros: exit 0, and one warning line saying why (stderr for
+    table and CSV, ``"warnings"`` in JSON), never on a spec that does write ±."""
+    plain = BODIES / "top.yaml"
+    for fmt in ("table", "csv"):
+        result = run_rbi("uncertainty", plain, "-f", fmt)
+        assert result.returncode == 0
+        assert result.stderr.splitlines() == [
+            "rbi: warning: the spec writes no number with ± (VALUE ± U): every uncertainty is zero"
+        ]
+    out = json.loads(run_rbi("uncertainty", plain, "-f", "json").stdout)
+    assert all(q["u"] == 0 for q in out["quantities"]) and len(out["warnings"]) == 1
+    assert "warnings" not in json.loads(run_rbi("uncertainty", TOLERANCED, "-f", "json").stdout)

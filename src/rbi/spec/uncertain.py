@@ -53,6 +53,8 @@ KINDS = {"standard": "normal", "tolerance": "uniform"}
 """The top-level ``uncertainty:`` values and the distribution each gives a ±."""
 FIELDS = ("mass", "center_of_mass", "inertia_about_com")
 """A part's or body's mass properties, as :class:`rbi.MassProperties` names them."""
+NO_PLUS_MINUS = "the spec writes no number with ± (VALUE ± U): every uncertainty is zero"
+"""The budget's warning for a spec without ± (its every u is zero, which is not an answer)."""
 
 
 class UncertainInput(NamedTuple):
@@ -605,16 +607,20 @@ def budget(
         ranks = Contributions(result.inputs, ranked, sensitivity[ranked], part[ranked], share[ranked])
         entry.update(coverage=coverage, contributions=ranks)
         quantities.append(entry)
-    return {
-        "name": loaded.name,
-        "units": loaded.units,
-        "method": method,
-        "samples": samples if drawn is not None else None,
-        "quantities": quantities,
-    } | (
-        {"estimated_sensitivities": [x.path for x, e in zip(result.inputs, result.estimated) if e]}
-        if result.estimated.any()
-        else {}
+    return (
+        {
+            "name": loaded.name,
+            "units": loaded.units,
+            "method": method,
+            "samples": samples if drawn is not None else None,
+            "quantities": quantities,
+        }
+        | (
+            {"estimated_sensitivities": [x.path for x, e in zip(result.inputs, result.estimated) if e]}
+            if result.estimated.any()
+            else {}
+        )
+        | ({} if result.inputs else {"warnings": [NO_PLUS_MINUS]})
     )
 
 
