@@ -134,15 +134,12 @@ def export_xml(
     document holding it; ``comment`` goes first as an XML comment. Control
     characters in ``name`` and ``comment`` are written as visible escapes (XML 1.0 cannot hold
     them, and the text may be printed on a terminal)."""
-    import xml.etree.ElementTree as ET
-
     element = inertial_element(
         to, props.mass, props.center_of_mass, props.inertia_about_com, diagonal=diagonal
     )
     if document:
         element = _document(to, visible(name), element)
-    ET.indent(element, space="  ")
-    text = ET.tostring(element, encoding="unicode")
+    text = element_text(element)
     if comment:
         text = f"{xml_comment(visible(comment))}\n{text}"
     return text + "\n"

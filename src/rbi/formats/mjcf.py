@@ -67,19 +67,19 @@ UNSUPPORTED = ("replicate", "attach", "composite", "flexcomp")
 
 
 class Compiler:
-    """The ``<compiler>`` settings that change mass properties or frames."""
+    """The ``<compiler>`` settings that change mass properties or frames (MuJoCo's defaults
+    until :meth:`read` sets them)."""
 
-    def __init__(self):
-        self.degrees = True
-        self.eulerseq = "xyz"
-        self.meshdir = ""
-        self.assetdir = ""
-        self.inertiafromgeom = "auto"
-        self.group_range = (0, 5)
-        self.settotalmass = -1.0
-        self.boundmass = 0.0
-        self.boundinertia = 0.0
-        self.balanceinertia = False
+    degrees = True
+    eulerseq = "xyz"
+    meshdir = ""
+    assetdir = ""
+    inertiafromgeom = "auto"
+    group_range: tuple[float, float] = (0, 5)
+    settotalmass = -1.0
+    boundmass = 0.0
+    boundinertia = 0.0
+    balanceinertia = False
 
     def read(self, where: Where, element) -> None:
         angle = _choice(where, element, "angle", ("degree", "radian"))

@@ -27,7 +27,8 @@ def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dic
     ArgumentError naming ``package_paths`` for a malformed one."""
     if isinstance(values, Mapping):
         values = [
-            f"{name}={os.fspath(folder)}" if _is_path(folder) else folder for name, folder in values.items()
+            f"{name}={os.fspath(folder)}" if isinstance(folder, (str, os.PathLike)) else folder
+            for name, folder in values.items()
         ]
     elif isinstance(values, (str, bytes)):
         values = [values] if isinstance(values, str) else [values.decode(errors="replace")]
@@ -49,10 +50,6 @@ def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dic
             raise ArgumentError("package_paths", f"{literal(value, quoted=False)}: no such folder")
         found.setdefault(name.strip(), []).append(Path(folder))
     return found
-
-
-def _is_path(value: object) -> bool:
-    return isinstance(value, (str, os.PathLike))
 
 
 def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str, list[Path]] | None) -> Path:

@@ -15,6 +15,7 @@ import numpy as np
 from rbi.core.validity import SMALLEST_NORMAL
 from rbi.errors import InputError
 from rbi.formats.robot import Where, numbers
+from rbi.formats.robot_xml import XmlElement
 
 
 class Doubt(Exception):
@@ -124,11 +125,7 @@ class Node:
         node.children = [Node.of(each, count) for each in element.children]
         return node
 
-    def child(self, tag: str) -> Node | None:
-        for each in self.children:
-            if each.tag == tag:
-                return each
-        return None
+    child = XmlElement.child  # (the first child of that tag: the same walk over ``children``)
 
 
 class Rows:
