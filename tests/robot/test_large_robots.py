@@ -55,7 +55,8 @@ def test_moments_without_axes_are_the_principal_moments_bit_for_bit():
 
 
 def test_the_cross_and_dot_products_are_numpys_bit_for_bit():
-    from rbi.robot.statics import _cross, _dot
+    from rbi.robot.statics import _cross
+    from rbi.robot.tree import dot_rows as _dot
 
     a = RNG.normal(size=(3000, 3)) * 10.0 ** RNG.integers(-8, 8, size=(3000, 1))
     b, g = RNG.normal(size=(3000, 3)), RNG.normal(size=3)

@@ -18,6 +18,7 @@ from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_files import inertia_problem_text
+from rbi.robot.tree import dot_rows
 
 _OFF_DIAGONAL = ~np.eye(3, dtype=bool)
 
@@ -91,8 +92,7 @@ def comparison(moments, axes, inertia, com, low, high, geometry_com) -> tuple:
     usable = moments > USABLE_MOMENT * np.max(moments, axis=1)[:, None]
     with np.errstate(all="ignore"):
         ratios = np.where(usable, along / moments, np.nan)
-    size = _norms(high - low)
-    offset = _norms(com - geometry_com)
+    size, offset = (np.sqrt(dot_rows(v, v)) for v in (high - low, com - geometry_com))  # their norms
     with np.errstate(all="ignore"):
         offset = offset / size
     margin = (COM_MARGIN * size)[:, None]
@@ -100,12 +100,6 @@ def comparison(moments, axes, inertia, com, low, high, geometry_com) -> tuple:
     near = np.all(np.isnan(ratios) | ((ratios >= 1 / WARNING_RATIO) & (ratios <= WARNING_RATIO)), axis=1)
     offsets = [value if sized else None for value, sized in zip(offset.tolist(), (size > 0).tolist())]
     return ratios, offsets, inside, near
-
-
-def _norms(rows: np.ndarray) -> np.ndarray:
-    """``np.linalg.norm`` of each row of a (k, 3) array: the square root of the row's dot product
-    with itself, as a stack of one-row products (the same call as for one vector)."""
-    return np.sqrt(np.matmul(rows[:, None, :], rows[:, :, None])[:, 0, 0])
 
 
 def _certainly_physical(stack: np.ndarray) -> np.ndarray:

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbi.formats.robot import RobotModel
-from rbi.robot.tree import heavy_links, placement, stack_apply
+from rbi.robot.tree import dot_rows, heavy_links, placement, stack_apply
 
 STANDARD_GRAVITY = 9.81
 """m/s², along −z of the root link's frame for URDF and SDF."""
@@ -62,7 +62,7 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
     M = mass[rows]  # Σ m of each joint's subtree
     lever = _cross(axes, moment[rows] - M[:, None] * anchors)  # axis × (Σ m c − M p)
     prismatic = np.array([kind == "prismatic" for _, _, kind, _ in chosen], dtype=bool)
-    torques = np.where(prismatic, -M * _dot(axes, gravity), -_dot(lever, gravity)) + 0.0
+    torques = np.where(prismatic, -M * dot_rows(axes, gravity), -dot_rows(lever, gravity)) + 0.0
     found = []
     for (_, name, kind, limit), torque in zip(chosen, torques.tolist()):
         flags = [] if limit is None or not limit - abs(torque) < 0 else [_effort_flag(kind, torque, limit)]
@@ -88,12 +88,6 @@ def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     a0, a1, a2 = a[:, 0], a[:, 1], a[:, 2]
     b0, b1, b2 = b[:, 0], b[:, 1], b[:, 2]
     return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=1).reshape(-1, 3)
-
-
-def _dot(rows: np.ndarray, vector: np.ndarray) -> np.ndarray:
-    """``vector @ row`` for each row of a (k, 3) array, as a stack of one-row products (numpy makes
-    the same BLAS call per row as for two 3-vectors, so each equals the one-vector product)."""
-    return np.matmul(rows[:, None, :], vector[:, None])[:, 0, 0]
 
 
 def _gravity(model: RobotModel) -> np.ndarray:

@@ -89,6 +89,13 @@ def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
     return np.matmul(rotations, vectors[..., None])[..., 0]
 
 
+def dot_rows(rows: np.ndarray, other: np.ndarray) -> np.ndarray:
+    """``row @ other`` (a 3-vector, or the matching row of a (k, 3) array) for each row of a
+    (k, 3) array, as a stack of one-row products (numpy makes the same BLAS call per row as for
+    two 3-vectors, so each equals the one-vector product)."""
+    return np.matmul(rows[:, None, :], other[..., None])[:, 0, 0]
+
+
 def placement(
     model: RobotModel, joints: dict[str, float] | None = None, columns: LinkColumns | None = None
 ) -> Placement:
