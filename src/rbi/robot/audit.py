@@ -207,8 +207,8 @@ class AuditReport(Result):
         total = self.total
         quantities = [
             ("mass", "kg", number(total.mass, 6)),
-            ("centre of mass", "m", vector_text(_without_noise(total.center_of_mass), 6)),
-            ("principal moments", "kg·m²", vector_text(_without_noise(self.total_moments), 6)[1:-1]),
+            ("centre of mass", "m", vector_text(total.center_of_mass, 6, scale=0)),
+            ("principal moments", "kg·m²", vector_text(self.total_moments, 6, scale=0)[1:-1]),
         ]
         if self.left_out:
             quantities.append(("left out (mass 0)", "", ", ".join(self.left_out)))
@@ -254,15 +254,6 @@ class AuditReport(Result):
     def csv_rows(self) -> list[dict[str, Any]]:
         """One row a link (``rbi audit --format csv``)."""
         return [_csv_row(each) for each in self.links]
-
-
-def _without_noise(values: np.ndarray) -> np.ndarray:
-    """``values`` with each entry below 1e-12 of the largest (finite) one set to 0: rounding
-    noise (2.8e-18 m in a symmetric robot's centre of mass) printed as 0."""
-    values = np.array(values, dtype=float)
-    finite = np.abs(values[np.isfinite(values)])
-    values[np.abs(values) < 1e-12 * (float(finite.max()) if finite.size else 0.0)] = 0.0
-    return values
 
 
 def _link_cells(each: LinkAudit) -> tuple[str, ...]:
