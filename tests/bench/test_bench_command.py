@@ -210,3 +210,36 @@ def test_targets_list_each_ratio_with_its_limit(quick_run):
         if t["measured"] is not None:
             expected = t["measured"] >= t["limit"] if t["comparison"] == "≥" else t["measured"] <= t["limit"]
             assert t["met"] is expected
+
+
+def test_csv_of_a_section_without_targets_is_its_records():
+    """`rbi bench --only throughput --format csv` printed nothing (no work-precision runs, no
+    targets): it prints one row per record of the section's tables, the numbers the JSON's."""
+    import csv
+
+    from rbi.bench.report import csv_rows
+    from rbi.reprs import csv_text
+
+    proc = run_rbi("bench", "--only", "throughput", "--quick", "--format", "csv", check=True)
+    lines = list(csv.DictReader(proc.stdout.splitlines()))
+    result = json.loads(
+        run_rbi("bench", "--only", "throughput", "--quick", "--format", "json", check=True).stdout
+    )
+    tp = result["throughput"]
+    header = ["section", "table", *tp["point_clouds"][0], *tp["solid_parts"][0]]
+    assert proc.stdout.splitlines()[0] == ",".join(header)
+    records = [("point_clouds", r) for r in tp["point_clouds"]] + [
+        ("solid_parts", r) for r in tp["solid_parts"]
+    ]
+    assert [(r["section"], r["table"]) for r in lines] == [("throughput", t) for t, _ in records]
+    for row, (_, record) in zip(lines, records):
+        # the sizes are the same in every run; the times differ from run to run but are times
+        assert all(row[k] == "" for k in header[2:] if k not in record)
+        assert row.get("points", "") == str(record.get("points", "")) and row["parts"] == str(
+            record.get("parts", "")
+        )
+        assert all(float(row[k]) >= 0 for k in record)
+    # the JSON's own numbers, written as CSV, read back exactly
+    again = list(csv.DictReader(csv_text(csv_rows(result)).splitlines()))
+    for row, (_, record) in zip(again, records, strict=True):
+        assert {k: float(row[k]) for k in record} == record

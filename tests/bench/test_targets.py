@@ -161,3 +161,12 @@ def test_csv_without_work_precision_is_the_targets():
         "top",
         "top",
     ]
+    # neither (`--only cad`): the section's records, every row with every column; failed, its error
+    files = [{"file": "STEP", "seconds": 1.5, "integration_error": 1e-13}, {"file": "STL", "seconds": 0.1}]
+    assert csv_rows({"machine": {"cores": 2}, "cad": {"holes": 200, "files": files}, "targets": []}) == [
+        {"section": "cad", "table": "files", "file": "STEP", "seconds": 1.5, "integration_error": 1e-13},
+        {"section": "cad", "table": "files", "file": "STL", "seconds": 0.1, "integration_error": None},
+    ]
+    assert csv_rows({"cad": {"error": "no STEP reader"}, "targets": []}) == [
+        {"section": "cad", "error": "no STEP reader"}
+    ]

@@ -705,10 +705,27 @@ CSV_FIELDS += ("drift", "steps", "rhs_evals", "seconds")
 
 def csv_rows(result: dict) -> list[dict]:
     """One row per work-precision run (the table scripts most often want); without that section
-    (``--only``), one row per target, so that a run with targets never prints an empty CSV."""
+    (``--only``), one row per target, so that a run with targets never prints an empty CSV; with
+    neither (``--only throughput``, ``--only cad``), the sections' own records (:func:`_record_rows`)."""
     runs = [
         {"case": case["name"]} | {key: r.get(key, False) for key in CSV_FIELDS}
         for case in result.get("workprecision", {}).get("cases", [])
         for r in case["runs"] + [case["default"]]
     ]
-    return runs or result.get("targets", [])
+    return runs or result.get("targets") or _record_rows(result)
+
+
+def _record_rows(result: dict) -> list[dict]:
+    """One row per record of each measured section's tables (a list of records, such as
+    throughput's ``point_clouds``), its ``section`` and ``table`` first, the numbers as the JSON
+    has them; a section without such a list (one that failed: its ``error``) gives one row of its
+    own values. Every row has every column (empty where its record has none)."""
+    rows = []
+    for name, section in result.items():
+        if name == "machine" or not isinstance(section, dict):
+            continue
+        tables = {k: v for k, v in section.items() if v and isinstance(v, list) and isinstance(v[0], dict)}
+        rows += [{"section": name, "table": k} | r for k, records in tables.items() for r in records]
+        rows += [] if tables else [{"section": name} | section]
+    columns = dict.fromkeys(key for row in rows for key in row)
+    return [{key: row.get(key) for key in columns} for row in rows]
