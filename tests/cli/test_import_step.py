@@ -155,3 +155,16 @@ def test_the_json_listing_is_the_imports_to_dict_with_the_file(kit, monkeypatch)
     )
     masses = sorted(row["mass"] for row in imported.csv_rows())
     assert masses == pytest.approx(sorted([6e-3, math.pi / 6 * 1e-3]), rel=1e-9)
+
+
+def test_the_import_is_a_result_whose_table_lists_the_solids(kit):
+    """The STEP import presents itself as every rbi.Result does: its table, one row a solid,
+    from the same rows as its JSON and CSV."""
+    import rbi
+
+    imported = rbi.import_robot(kit, density=1000)
+    assert isinstance(imported, rbi.Result)
+    (table,) = imported.rows()
+    assert [cells[0] for cells in table.cells] == [AWKWARD, "ball"]
+    assert [cells[2] for cells in table.cells] == ["0.006", "0.000523599"]
+    assert len(imported.to_pandas()) == 2 and "ball" in str(imported)

@@ -8,7 +8,7 @@ import sys
 
 import rbi
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, argument, option
-from rbi.cli.render import emit, emit_result
+from rbi.cli.render import emit_result
 from rbi.cli.terminal import say, terminal_safe
 
 ImportFile = argument(str, "Robot description (.urdf, .sdf, MJCF .xml) or CAD file (.step, .stp).", "FILE")
@@ -109,6 +109,6 @@ def _step_output(imported, file: str, out: str | None, format: OutputFormat) -> 
             "read it back with --allow-outside-paths, or save the spec beside the STEP file"
         )
     if format is not OutputFormat.table:
-        emit(format.value, {"file": file, **imported.to_dict()}, lambda: None, csv_rows=imported.csv_rows())
+        emit_result(format.value, imported, file=file)
     elif out is None:
         sys.stdout.write(imported.yaml())

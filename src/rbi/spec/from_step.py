@@ -12,6 +12,7 @@ from typing import Any
 from rbi.core.validity import finite
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.step import read_step
+from rbi.reprs import Result, Rows
 from rbi.spec.materials import canonical_name, density_in_units, unknown_material_message
 from rbi.spec.yaml_writer import comment, dump
 
@@ -20,11 +21,12 @@ DEFAULT_DENSITY = 1000.0
 
 
 @dataclass(frozen=True)
-class StepImport:
-    """What importing a STEP file gives: ``spec`` (a plain dict, keys in the order YAML prints
-    them, every part filled with ``density`` kg/m³ or the ``material`` name), the file's
-    ``solids`` (:class:`rbi.formats.step.StepSolid`, unit density, metres), its declared
-    length ``unit``, and ``density`` (kg/m³, the material's when one was named)."""
+class StepImport(Result):
+    """What importing a STEP file gives (an :class:`rbi.Result`): ``spec`` (a plain dict, keys
+    in the order YAML prints them, every part filled with ``density`` kg/m³ or the ``material``
+    name), the file's ``solids`` (:class:`rbi.formats.step.StepSolid`, unit density, metres),
+    its declared length ``unit``, and ``density`` (kg/m³, the material's when one was named).
+    Its JSON, CSV and table all come from :meth:`csv_rows`, one row a solid."""
 
     spec: dict[str, Any]
     solids: tuple
@@ -59,6 +61,12 @@ class StepImport:
             }
             for i, solid in enumerate(self.solids)
         ]
+
+    def rows(self) -> list[Rows]:
+        """One table: each solid's volume and mass at the spec's density."""
+        cells = [(row["name"], f"{row['volume']:.6g}", f"{row['mass']:.6g}") for row in self.csv_rows()]
+        title = f"{self.path}: {len(cells)} solid(s) at {self.density:g} kg/m³"
+        return [Rows(title, ("solid", "volume [m³]", "mass [kg]"), cells)]
 
     def to_dict(self) -> dict[str, Any]:
         """What ``rbi import FILE.step --format json`` prints, less ``"file"``."""
