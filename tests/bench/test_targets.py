@@ -88,12 +88,14 @@ def test_start_up_targets_per_file_in_ms_and_whole_process_as_a_ratio():
 
 
 def test_import_breakdown_rows_are_sorted_with_shares_and_a_total():
-    from rbi.bench.report import import_rows
+    from rbi.bench.report import report_sections
 
-    rows = import_rows(
-        {"total_ms": 200.0, "groups_ms": {"numpy": 80.0, "pydantic": 100.0, "rich (tables)": 20.0}}
-    )
-    assert rows == [
+    imports = {"command": "rbi inertia x.yaml", "modules": 400, "repeats": 5, "total_ms": 200.0}
+    imports["groups_ms"] = {"numpy": 80.0, "pydantic": 100.0, "rich (tables)": 20.0}
+    lat = {"baseline": 'python -c "import numpy"', "commands": [], "imports": imports}
+    section = report_sections({"latency": lat})[-1]
+    assert section.title == "Where `rbi inertia`'s start-up goes"
+    assert section.rows == [
         ["pydantic", "100", "50%"],
         ["numpy", "80", "40%"],
         ["rich (tables)", "20", "10%"],

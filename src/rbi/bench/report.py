@@ -124,7 +124,7 @@ def _latency_targets(lat: dict) -> list[dict]:
     return out + [
         _target(
             f"`{row['command']}` as a whole process, {'CPU' if 'cpu_ratio_to_numpy_import' in row else 'wall'} time",
-            (_ratio(row), "≤", row["target"]),
+            (row.get("cpu_ratio_to_numpy_import", row.get("ratio_to_numpy_import")), "≤", row["target"]),
             baseline_text,
             row.get("error") or f"{number(_seconds(row), 3)} s median of {row['repeats']}",
         )
@@ -160,13 +160,8 @@ def _largespec_targets(ls: dict) -> list[dict]:
 
 def _sweep_targets(sw: dict) -> list[dict]:
     """Sweep throughput against single runs and process loops, and its peak memory."""
-    single, loop, sweep, mem, limit = (
-        sw["single_run"],
-        sw["process_loop"],
-        sw["sweep"],
-        sw["memory"],
-        sw["targets"],
-    )
+    single, loop = sw["single_run"], sw["process_loop"]
+    sweep, mem, limit = sw["sweep"], sw["memory"], sw["targets"]
     rate = f"sweep {number(sweep['runs_per_second'], 3)} runs/s"
     return [
         _target(
@@ -427,8 +422,8 @@ def _kernel_sections(k: dict) -> list[Section]:
         f"for bit: {loop['same_samples']}). Errors are against rbi at rtol 1e-14. Each tolerance of rbi's "
         "method against the chapter's set-up (★); the fastest at the chapter's error or better is the target:"
     )
-    table = work_table({"runs": [chapter, *k["trials"]], "default": k["default"]})
-    return [Section("The kernel against its baselines", notes, *table, left=("method",), no_wrap=("method",))]
+    case = {"runs": [chapter, *k["trials"]], "default": k["default"]}
+    return [work_section("The kernel against its baselines", notes, case)]
 
 
 def _sweep_sections(sw: dict) -> list[Section]:
@@ -482,8 +477,7 @@ def _workprecision_sections(wp: dict, plot_link: str | None) -> list[Section]:
             f"Reference: {reference_text(case)}. Loading the compiled kernel cost "
             f"{number(case['kernel_load_seconds'], 3)} s once in this process (not in any time below)."
         )
-        left = ("method",)
-        out.append(Section(title, notes, *work_table(case), level=3, left=left, no_wrap=left))
+        out.append(work_section(title, notes, case, level=3))
     if plot_link:
         out.append(Section("", f"![Final orientation error against in-process time]({plot_link})"))
     return out
@@ -532,16 +526,12 @@ def _latency_sections(lat: dict) -> list[Section]:
         "the interpreter's own start-up and the work itself (reading and validating the spec, about a "
         "millisecond for a small one, then printing)."
     )
-    title = "Where `rbi inertia`'s start-up goes"
-    return out + [Section(title, notes, ["imported", "time [ms]", "share"], import_rows(imports), level=3)]
-
-
-def import_rows(imports: dict) -> list[list[str]]:
     total = imports["total_ms"]
     groups = sorted(imports["groups_ms"].items(), key=lambda item: -item[1])
-    return [[name, number(ms, 3), f"{100 * ms / total:.0f}%"] for name, ms in groups] + [
-        ["all imports", number(total, 3), "100%"]
-    ]
+    rows = [[name, number(ms, 3), f"{100 * ms / total:.0f}%"] for name, ms in groups]
+    rows.append(["all imports", number(total, 3), "100%"])
+    title = "Where `rbi inertia`'s start-up goes"
+    return out + [Section(title, notes, ["imported", "time [ms]", "share"], rows, level=3)]
 
 
 def _cad_sections(cad: dict) -> list[Section]:
@@ -633,8 +623,9 @@ def _method(r: dict) -> str:
     return METHOD_NAMES[r["method"]] + (" ★" if r.get("chapter_setup") else "")
 
 
-def work_table(case: dict) -> tuple[list, list[list[str]]]:
-    """Each run of a work-precision case: its error, drift, cost and speed against the chapter's."""
+def work_section(title: str, notes: str, case: dict, level: int = 2) -> Section:
+    """The table of each run of a work-precision case: its error, drift, cost and speed against
+    the chapter's."""
     chapter = next((r for r in case["runs"] if r["chapter_setup"]), None)
 
     def speedup(r):
@@ -651,7 +642,8 @@ def work_table(case: dict) -> tuple[list, list[list[str]]]:
         ("time [s]", _num("seconds", 2)),
         ("chapter ÷ this", speedup),
     ]
-    return _table(columns, case["runs"] + [case["default"]])
+    table = _table(columns, case["runs"] + [case["default"]])
+    return Section(title, notes, *table, level=level, left=("method",), no_wrap=("method",))
 
 
 CLOUD_COLUMNS = [
@@ -686,10 +678,6 @@ LATENCY_COLUMNS = [
     ("× numpy import (wall)", lambda r: "" if "error" in r else _times(r.get("ratio_to_numpy_import"))),
     ("wall spread", lambda r: r["error"] if "error" in r else f"{100 * r['spread']:.0f}%"),
 ]
-
-
-def _ratio(row: dict) -> float | None:
-    return row.get("cpu_ratio_to_numpy_import", row.get("ratio_to_numpy_import"))
 
 
 def _seconds(row: dict) -> float | None:
