@@ -62,6 +62,9 @@ MAX_INCLUDES = 100
 """Most ``<include>`` elements followed in one model (a loop of includes is refused before)."""
 
 GEOM_KINDS = ("plane", "hfield", "sphere", "capsule", "ellipsoid", "cylinder", "box", "mesh", "sdf")
+SIZES = {"sphere": (1,), "capsule": (1, 2), "cylinder": (1, 2), "box": (2, 2, 2), "ellipsoid": (1, 1, 1)}
+"""The ``size`` numbers each primitive geom reads, and what turns each into the :class:`Geom` size
+(a radius or semi-axis stays, a half-length or half-edge doubles)."""
 ORIENTATIONS = ("quat", "axisangle", "xyaxes", "zaxis", "euler")
 UNSUPPORTED = ("replicate", "attach", "composite", "flexcomp")
 
@@ -70,7 +73,7 @@ class Compiler:
     """The ``<compiler>`` settings that change mass properties or frames (MuJoCo's defaults
     until :meth:`read` sets them)."""
 
-    degrees = True
+    angle = "degree"
     eulerseq = "xyz"
     meshdir = ""
     assetdir = ""
@@ -79,12 +82,10 @@ class Compiler:
     settotalmass = -1.0
     boundmass = 0.0
     boundinertia = 0.0
-    balanceinertia = False
+    balanceinertia = "false"
 
     def read(self, where: Where, element) -> None:
-        angle = _choice(where, element, "angle", ("degree", "radian"))
-        if angle is not None:
-            self.degrees = angle == "degree"
+        self.choose(where, element, "angle", ("degree", "radian"))
         seq = element.get("eulerseq")
         if seq is not None:
             if len(seq) != 3 or any(c not in "xyzXYZ" for c in seq):
@@ -95,35 +96,31 @@ class Compiler:
             self.eulerseq = seq
         self.meshdir = element.get("meshdir", self.meshdir)
         self.assetdir = element.get("assetdir", self.assetdir)
-        self.inertiafromgeom = (
-            _choice(where, element, "inertiafromgeom", ("true", "false", "auto")) or self.inertiafromgeom
-        )
+        self.choose(where, element, "inertiafromgeom", ("true", "false", "auto"))
         if element.get("inertiagrouprange") is not None:
             low, high = numbers(where, element.get("inertiagrouprange"), "compiler: inertiagrouprange", 2)
             self.group_range = (low, high)
         for key in ("settotalmass", "boundmass", "boundinertia"):
             setattr(self, key, number(where, element.get(key), f"compiler: {key}", getattr(self, key)))
-        balance = _choice(where, element, "balanceinertia", ("true", "false"))
-        if balance is not None:
-            self.balanceinertia = balance == "true"
+        self.choose(where, element, "balanceinertia", ("true", "false"))
         if element.get("coordinate") == "global":
             raise where.error(
                 'compiler: coordinate="global": global coordinates are no longer read by MuJoCo; '
                 "load and save the model with MuJoCo 2 to convert it"
             )
 
-    def angle(self, value: float) -> float:
-        return math.radians(value) if self.degrees else value
+    def choose(self, where: Where, element, name: str, choices: tuple[str, ...]) -> None:
+        """The setting ``name`` from the ``<compiler>`` attribute of that name when it is written;
+        InputError when it is not one of ``choices``."""
+        value = element.get(name, getattr(self, name))
+        if value not in choices:
+            allowed = f"{', '.join(choices[:-1])} or {choices[-1]}"
+            raise where.error(f"compiler: {name}: {short(value)!r}: must be {allowed}")
+        setattr(self, name, value)
 
-
-def _choice(where: Where, element, name: str, choices: tuple[str, ...]) -> str | None:
-    """The ``<compiler>`` attribute ``name`` (None when not written); InputError when it is not
-    one of ``choices``."""
-    value = element.get(name)
-    if value is not None and value not in choices:
-        allowed = f"{', '.join(choices[:-1])} or {choices[-1]}"
-        raise where.error(f"compiler: {name}: {short(value)!r}: must be {allowed}")
-    return value
+    def radians(self, value: float) -> float:
+        """An angle as written (degrees unless ``<compiler angle="radian">``), in radians."""
+        return math.radians(value) if self.angle == "degree" else value
 
 
 def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel:
@@ -308,14 +305,11 @@ def _defaults(root) -> dict[str, dict[str, dict[str, str]]]:
 def _attributes(element, defaults, active_class: str) -> dict[str, str]:
     name = element.get("class", active_class)
     if name not in defaults:
-        raise InputError(f"{_where_line(element)}: class {short(name)!r}: no <default class> of that name")
+        where = f"{element.source or ''}line {element.line}".strip()
+        raise InputError(f"{where}: class {short(name)!r}: no <default class> of that name")
     merged = dict(defaults[name].get(element.tag, {}))
     merged.update({k: v for k, v in element.attrib.items() if k != "class"})
     return merged
-
-
-def _where_line(element) -> str:
-    return f"{getattr(element, 'source', None) or ''}line {element.line}".strip()
 
 
 # --- assets -----------------------------------------------------------------------------------
@@ -412,11 +406,11 @@ class _Bodies:
         if key == "axisangle":
             x, y, z, a = numbers(where, value, "axisangle", 4)
             axis = unit(where, [x, y, z], "axisangle: axis")
-            angles(where, [self.compiler.angle(a)], "axisangle")
-
-            return axis_angle_matrix(axis, self.compiler.angle(a))
+            angle = self.compiler.radians(a)
+            angles(where, [angle], "axisangle")
+            return axis_angle_matrix(axis, angle)
         if key == "euler":
-            values = [self.compiler.angle(v) for v in numbers(where, value, "euler", 3)]
+            values = [self.compiler.radians(v) for v in numbers(where, value, "euler", 3)]
             angles(where, values, "euler")
 
             R = np.eye(3)
@@ -442,19 +436,19 @@ class _Bodies:
             raise where.error(f"joint: type {short(kind)!r}: must be free, ball, slide or hinge")
         ref = number(where, attrs.get("ref"), "joint: ref", 0.0)
         if motion == "revolute":
-            ref = self.compiler.angle(ref)
+            ref = self.compiler.radians(ref)
         vector = (
             unit(where, axis, "joint: axis") if motion in ("revolute", "prismatic") else np.array([0, 0, 1.0])
         )
         effort = None
         if attrs.get("actuatorfrcrange") is not None and attrs.get("actuatorfrclimited", "auto") != "false":
             low, high = numbers(where, attrs["actuatorfrcrange"], "joint: actuatorfrcrange", 2)
-            effort = max(abs(low), abs(high)) if (low, high) != (0.0, 0.0) else None
+            effort = max(abs(low), abs(high)) or None
         link.motions.append(Motion(attrs.get("name"), motion, vector, pos, ref, effort_limit=effort))
 
     def inertial(self, where: Where, element) -> Inertial:
         attrs = element.attrib
-        pos = numbers(where, attrs.get("pos"), "inertial: pos", 3)
+        pos = np.array(numbers(where, attrs.get("pos"), "inertial: pos", 3), dtype=float)
         mass = number(where, attrs.get("mass"), "inertial: mass")
         full, diagonal = attrs.get("fullinertia"), attrs.get("diaginertia")
         if (full is None) == (diagonal is None):
@@ -471,19 +465,11 @@ class _Bodies:
         elif rotation is not None and quaternion is None:
             quaternion = matrix_to_quaternion(rotation)
         if full is not None:
-            ixx, iyy, izz, ixy, ixz, iyz = numbers(where, full, "inertial: fullinertia", 6)
-            inertia = from_six(ixx, iyy, izz, ixy, ixz, iyz)
+            inertia = from_six(*numbers(where, full, "inertial: fullinertia", 6))
         else:
             inertia = np.diag(numbers(where, diagonal, "inertial: diaginertia", 3))
         check_inertia_range(where, inertia)
-        return Inertial.read(
-            mass,
-            np.array(pos, dtype=float),
-            inertia,
-            rotation=rotation,
-            quaternion=quaternion,
-            element=element,
-        )
+        return Inertial.read(mass, pos, inertia, rotation=rotation, quaternion=quaternion, element=element)
 
     def geom(self, element, frame: Pose, link: Link, active_class: str) -> None:
         attrs = _attributes(element, self.defaults, active_class)
@@ -505,15 +491,9 @@ class _Bodies:
             raise where.error(f"{what} is negative; MuJoCo's compiler refuses the model")
         shell = (attrs.get("shellinertia") or "false") == "true"
         geom = Geom(kind, (), pose, label, mass=mass, density=density, shell=shell)
-        if kind == "sphere":
-            geom.size = (_size(where, size, 1, kind)[0],)
-        elif kind in ("capsule", "cylinder"):
-            r, half = _size(where, size, 2, kind)
-            geom.size = (r, 2 * half)
-        elif kind == "box":
-            geom.size = tuple(2 * v for v in _size(where, size, 3, kind))
-        elif kind == "ellipsoid":
-            geom.size = tuple(_size(where, size, 3, kind))
+        factors = SIZES.get(kind)
+        if factors is not None:
+            geom.size = tuple(f * v for f, v in zip(factors, _size(where, size, len(factors), kind)))
         elif kind == "mesh":
             mesh_name = attrs.get("mesh")
             asset = self.meshes.get(mesh_name)
@@ -566,12 +546,7 @@ def z_to(direction) -> np.ndarray:
     d = np.asarray(direction, dtype=float)
     axis = np.cross([0.0, 0.0, 1.0], d)
     s = float(np.linalg.norm(axis))
-    if s < 1e-10:
-        axis = np.array([1.0, 0.0, 0.0])
-    else:
-        axis = axis / s
-    angle = math.atan2(s, d[2])
-    return axis_angle_matrix(axis, angle)
+    return axis_angle_matrix(axis / s if s >= 1e-10 else np.array([1.0, 0.0, 0.0]), math.atan2(s, d[2]))
 
 
 # --- compiled mass properties ---------------------------------------------------------------
@@ -603,7 +578,7 @@ def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
                 link.inertial = None
         if link.inertial is not None and (compiler.boundmass > 0 or compiler.boundinertia > 0):
             _bound(link, compiler)
-        if link.inertial is not None and compiler.balanceinertia:
+        if link.inertial is not None and compiler.balanceinertia == "true":
             _balance(link)
     if compiler.settotalmass > 0:
         total = sum(link.inertial.mass for link in model.links if link.inertial is not None)

@@ -53,17 +53,8 @@ from rbi.formats.robot import (
 from rbi.formats.robot_geometry import geoms_sum
 from rbi.formats.robot_paths import resolve_mesh
 
-JOINT_KINDS = {
-    "revolute": "revolute",
-    "continuous": "revolute",
-    "prismatic": "prismatic",
-    "fixed": "fixed",
-    "ball": "ball",
-    "universal": "universal",
-    "revolute2": "revolute2",
-    "screw": "screw",
-    "gearbox": "gearbox",
-}
+JOINT_KINDS = ("revolute", "prismatic", "fixed", "ball", "universal", "revolute2", "screw", "gearbox")
+"""SDF's joint types that are their own motion kind; ``continuous`` is ``revolute``, any other ``other``."""
 
 
 def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
@@ -74,9 +65,8 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     name = first.get("name") if first is not None else None
     robot = RobotModel(path, "sdf", name, document=document)
     for include in root.iter("include"):
-        uri = include.child("uri")
         robot.unchecked.append(
-            f"{path}: include {short(uri.text if uri is not None else '', 80)!r}: not followed; "
+            f"{path}: include {short(_text(include, 'uri'), 80)!r}: not followed; "
             "the links of the included model are not checked"
         )
     prefix = len(models) > 1
@@ -106,7 +96,7 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
             link_poses[own] = model_pose.then(frames.in_model(own, where))
             link.origin = link_poses[own]
             inertial = element.child("inertial")
-            auto = inertial is not None and (inertial.get("auto") or "").strip().lower() in ("true", "1")
+            auto = inertial is not None and _true(inertial.get("auto"))
             if geometry or auto:
                 link.collisions = _geoms(where, element, "collision", package_paths, frames.within(own))
             if geometry:
@@ -141,7 +131,7 @@ def _pose(where: Where, element, what: str, own_name, strict: bool = True) -> Po
     """The pose ``element`` writes, in its own element's frame: ``own_name`` is that frame's
     name, or a function (``_Frames.within``) that turns a pose written ``relative_to`` another
     frame of the model into the own frame."""
-    if element is None or not (element.text or "").strip():
+    if element is None or not element.text:
         return Pose.identity()
     relative_to = element.get("relative_to")
     if callable(own_name):
@@ -167,7 +157,7 @@ def _written(where: Where, element, what: str) -> tuple[np.ndarray, list[float] 
         return np.array(values[:3], dtype=float), None, np.array([qw, qx, qy, qz], dtype=float)
     values = numbers(where, element.text, what, 6)
     rpy = values[3:]
-    if (element.get("degrees") or "").strip().lower() in ("true", "1"):
+    if _true(element.get("degrees")):
         rpy = [math.radians(a) for a in rpy]
     angles(where, rpy, what)
     return np.array(values[:3], dtype=float), rpy, None
@@ -175,16 +165,13 @@ def _written(where: Where, element, what: str) -> tuple[np.ndarray, list[float] 
 
 def _inertial(where: Where, inertial, own_name) -> Inertial:
     pose_element = inertial.child("pose")
+    pose = _pose(where, pose_element, "inertial/pose", own_name)
+    moved = pose_element is not None and pose_element.get("relative_to") not in (None, "")
     rpy, quaternion = None, None
-    if pose_element is not None and (pose_element.text or "").strip():
-        pose = _pose(where, pose_element, "inertial/pose", own_name)
-        moved = pose_element.get("relative_to") not in (None, "")
+    # written in another frame (moved), the rotation into the link's is not the one written
+    if _text(inertial, "pose") and not moved:
         _, written, quaternion = _written(where, pose_element, "inertial/pose")
         rpy = tuple(float(a) for a in written) if written is not None and any(written) else None
-        if moved:  # written in another frame: the rotation into the link's is not the one written
-            rpy, quaternion = None, None
-    else:
-        pose, moved = Pose.identity(), False
     mass_element = inertial.child("mass")
     mass = number(where, None if mass_element is None else mass_element.text, "inertial/mass", default=1.0)
     block = inertial.child("inertia")
@@ -229,9 +216,8 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
         raise where.error(
             'inertial auto="true": the link has no collision geometry with a volume to compute it from'
         )
-    mass_element = inertial.child("mass")
-    if mass_element is not None and (mass_element.text or "").strip():
-        mass = number(where, mass_element.text, "inertial/mass")
+    if (written := _text(inertial, "mass")) is not None:
+        mass = number(where, written, "inertial/mass")
         positive(where, (mass,), "inertial/mass")
         props = props.with_mass(mass)
     return Inertial(props, props.inertia_about_com, element=inertial, source="auto")
@@ -247,9 +233,8 @@ def _geoms(where: Where, link_element, tag: str, package_paths, own_name) -> lis
         if shape is None:
             raise where.error(f"{label}/geometry: missing")
         geom = _geom(where, shape, pose, f"{label}/geometry/{shape.tag}", package_paths)
-        density = element.child("density")
-        if density is not None and (density.text or "").strip():
-            geom.density = number(where, density.text, f"{label}/density")
+        if (density := _text(element, "density")) is not None:
+            geom.density = number(where, density, f"{label}/density")
             positive(where, (geom.density,), f"{label}/density")
         found.append(geom)
     return found
@@ -283,8 +268,8 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
         )
         return Geom(kind, tuple(size), pose, label)
     if kind == "mesh":
-        uri = shape.child("uri")
-        if uri is None or not uri.text:
+        uri = _text(shape, "uri")
+        if uri is None:
             raise where.error(f"{label}/uri: missing")
         scale_element = shape.child("scale")
         scale = (
@@ -294,8 +279,8 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
         )
         mesh = resolve_mesh(
             where.path,
-            uri.text,
-            f"{where.path}: {where.label}: {label}: {short(uri.text, 1000)}",
+            uri,
+            f"{where.path}: {where.label}: {label}: {short(uri, 1000)}",
             package_paths,
         )
         return Geom("mesh", (), pose, label, mesh_file=mesh, mesh_scale=np.array(scale, dtype=float))
@@ -316,11 +301,10 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, fra
         if child_name not in links:
             raise where.error(f"child: no link named {short(child_name)!r} in this model")
         child = links[child_name]
-        kind = JOINT_KINDS.get(element.get("type") or "", "other")
+        kind = element.get("type") or ""
+        kind = "revolute" if kind == "continuous" else kind if kind in JOINT_KINDS else "other"
         if parent_name in ("world", "__world__") or parent_name not in links:
-            child.motions = [
-                Motion(joint_name, "fixed" if kind == "fixed" else kind, np.array([1.0, 0, 0]), np.zeros(3))
-            ]
+            child.motions = [Motion(joint_name, kind, np.array([1.0, 0, 0]), np.zeros(3))]
             continue
         if child.parent is not None:
             raise where.error(f"child: link {short(child_name)!r} already has a parent joint")
@@ -333,10 +317,7 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, fra
         if kind in ("revolute", "prismatic"):
             axis = unit(where, axis, "axis/xyz")
             expressed_in = xyz_element.get("expressed_in") if xyz_element is not None else None
-            use_parent = (
-                _text(axis_element.child("use_parent_model_frame")) if axis_element is not None else None
-            )
-            if use_parent in ("true", "1") or expressed_in == "__model__":
+            if _text(axis_element, "use_parent_model_frame") in ("true", "1") or expressed_in == "__model__":
                 axis = frames.in_model(child_name, where).rotation.T @ axis
             elif expressed_in not in (None, ""):
                 axis = (
@@ -345,11 +326,9 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, fra
                 )
             else:
                 axis = joint_pose.rotation @ axis
-        limit = axis_element.child("limit") if axis_element is not None else None
-        effort_element = limit.child("effort") if limit is not None else None
         effort = None
-        if effort_element is not None and (effort_element.text or "").strip():
-            effort = abs(number(where, effort_element.text, "axis/limit/effort"))
+        if (written := _text(axis_element, "limit", "effort")) is not None:
+            effort = abs(number(where, written, "axis/limit/effort"))
             effort = None if effort == -1 or not math.isfinite(effort) else effort
         child.motions = [
             Motion(
@@ -389,9 +368,7 @@ class _Frames:
             )
         tag, element = self.elements[name]
         pose_element = element.child("pose")
-        default = {"link": None, "joint": _text(element.child("child")), "frame": element.get("attached_to")}[
-            tag
-        ]
+        default = {"link": None, "joint": _text(element, "child"), "frame": element.get("attached_to")}[tag]
         relative_to = (pose_element.get("relative_to") if pose_element is not None else None) or default
         self.open.add(name)
         local = _pose(where, pose_element, "pose", None, strict=False)
@@ -411,5 +388,14 @@ class _Frames:
         return placed
 
 
-def _text(element) -> str | None:
-    return (element.text or "").strip() or None if element is not None else None
+def _text(element, *tags: str) -> str | None:
+    """The text of ``element``'s child ``tags[0]``, that child's child ``tags[1]``, and so on
+    (None when one of them is missing or the text is blank)."""
+    for tag in tags:
+        element = element.child(tag) if element is not None else None
+    return element.text or None if element is not None else None
+
+
+def _true(value: str | None) -> bool:
+    """An SDF boolean attribute (``true`` or ``1``, any case, spaces around) is set."""
+    return (value or "").strip().lower() in ("true", "1")
