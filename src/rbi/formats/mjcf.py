@@ -384,8 +384,6 @@ class _Bodies:
         _check_degrees_of_freedom(where, link, parent)
         self.geoms[link.index] = []
         self.children(element, Pose.identity(), link, inner_class)
-        if parent is None and not link.motions:
-            link.parent = None
 
     def pose(self, element, attrs, where: Where | None = None) -> Pose:
         if where is None:

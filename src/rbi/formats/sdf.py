@@ -122,25 +122,19 @@ def _models(element, pose: Pose, nested: bool = False):
             yield from _models(child, pose)
         elif child.tag == "model":
             where = Where("", "model" if nested else f"model {short(child.get('name'))}")
-            inner = pose.then(_pose(where, child.child("pose"), "pose", None, strict=False))
+            inner = pose.then(_pose(where, child.child("pose"), "pose"))
             yield child, inner
             yield from _models(child, inner, nested=True)
 
 
-def _pose(where: Where, element, what: str, own_name, strict: bool = True) -> Pose:
-    """The pose ``element`` writes, in its own element's frame: ``own_name`` is that frame's
-    name, or a function (``_Frames.within``) that turns a pose written ``relative_to`` another
-    frame of the model into the own frame."""
+def _pose(where: Where, element, what: str, within=None) -> Pose:
+    """The pose ``element`` writes, in its own element's frame: ``within`` (``_Frames.within``),
+    when given, turns a pose written ``relative_to`` another frame of the model into the own
+    frame; without it, ``relative_to`` is not read (the caller places the frame it names)."""
     if element is None or not element.text:
         return Pose.identity()
-    relative_to = element.get("relative_to")
-    if callable(own_name):
-        return own_name(where, relative_to, _pose(where, element, what, None, strict=False))
-    if strict and relative_to not in (None, "", own_name, "__model__"):
-        raise where.error(
-            f"{what}: relative_to={short(relative_to)!r}: only poses in the link's own or the "
-            "model's frame are read"
-        )
+    if within is not None:
+        return within(where, element.get("relative_to"), _pose(where, element, what))
     xyz, rpy, quaternion = _written(where, element, what)
     if quaternion is not None:
         return Pose(quaternion_matrix(where, quaternion, what), xyz)
@@ -163,9 +157,9 @@ def _written(where: Where, element, what: str) -> tuple[np.ndarray, list[float] 
     return np.array(values[:3], dtype=float), rpy, None
 
 
-def _inertial(where: Where, inertial, own_name) -> Inertial:
+def _inertial(where: Where, inertial, within) -> Inertial:
     pose_element = inertial.child("pose")
-    pose = _pose(where, pose_element, "inertial/pose", own_name)
+    pose = _pose(where, pose_element, "inertial/pose", within)
     moved = pose_element is not None and pose_element.get("relative_to") not in (None, "")
     rpy, quaternion = None, None
     # written in another frame (moved), the rotation into the link's is not the one written
@@ -223,11 +217,11 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
     return Inertial(props, props.inertia_about_com, element=inertial, source="auto")
 
 
-def _geoms(where: Where, link_element, tag: str, package_paths, own_name) -> list[Geom]:
+def _geoms(where: Where, link_element, tag: str, package_paths, within) -> list[Geom]:
     found = []
     for index, element in enumerate(link_element.all(tag)):
         label = f"{tag}[{index}]" + (f" ({short(element.get('name'))})" if element.get("name") else "")
-        pose = _pose(where, element.child("pose"), f"{label}/pose", own_name)
+        pose = _pose(where, element.child("pose"), f"{label}/pose", within)
         holder = element.child("geometry")
         shape = next(iter(holder.children), None) if holder is not None else None
         if shape is None:
@@ -371,7 +365,7 @@ class _Frames:
         default = {"link": None, "joint": _text(element, "child"), "frame": element.get("attached_to")}[tag]
         relative_to = (pose_element.get("relative_to") if pose_element is not None else None) or default
         self.open.add(name)
-        local = _pose(where, pose_element, "pose", None, strict=False)
+        local = _pose(where, pose_element, "pose")
         self.placed[name] = self.in_model(relative_to, where).then(local)
         self.open.discard(name)
         return self.placed[name]
