@@ -314,10 +314,7 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, fra
             if _text(axis_element, "use_parent_model_frame") in ("true", "1") or expressed_in == "__model__":
                 axis = frames.in_model(child_name, where).rotation.T @ axis
             elif expressed_in not in (None, ""):
-                axis = (
-                    frames.within(child_name)(where, expressed_in, Pose(np.eye(3), np.zeros(3))).rotation
-                    @ axis
-                )
+                axis = frames.within(child_name)(where, expressed_in, Pose.identity()).rotation @ axis
             else:
                 axis = joint_pose.rotation @ axis
         effort = None
