@@ -29,7 +29,14 @@ from rbi.core.dynamics import (
     kinetic_energy,
     newton_euler_about,
 )
-from rbi.core.inertia import moment_about_axis, principal_axes, radii_of_gyration, re_express, unit_axis
+from rbi.core.inertia import (
+    OFF_DIAGONAL,
+    moment_about_axis,
+    principal_axes,
+    radii_of_gyration,
+    re_express,
+    unit_axis,
+)
 from rbi.core.mass import MassProperties, inertia_shares
 from rbi.core.rotation import angle_is_kept, compose_world_rotations, turn_lost_to_rounding
 from rbi.errors import ArgumentError, SpecError, literal
@@ -359,8 +366,7 @@ class Body(Result):
         turns = list(axes or [])
         matrix = self.inertia(about, turns or None)  # a new array: its products may change sign
         if products == "cad":
-            off_diagonal = ~np.eye(3, dtype=bool)
-            matrix[off_diagonal] = 0.0 - matrix[off_diagonal]  # 0.0 - 0.0 is +0.0, no '-0' printed
+            matrix[OFF_DIAGONAL] = 0.0 - matrix[OFF_DIAGONAL]  # 0.0 - 0.0 is +0.0, no '-0' printed
         direction = None if axis is None else unit_vector(axis)
         spread = self.standard_uncertainty(about, turns or None)
         return Inertia(

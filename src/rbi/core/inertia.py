@@ -14,6 +14,9 @@ from numpy.typing import ArrayLike
 
 from rbi.core.rotation import numbers, unit_vector
 
+OFF_DIAGONAL = ~np.eye(3, dtype=bool)
+"""The mask of a (3, 3) matrix's products of inertia (its off-diagonal entries)."""
+
 
 def point_mass_inertia(mass: ArrayLike, offset: np.ndarray) -> np.ndarray:
     """Inertia ``m (|r|² E − r rᵀ)`` of a point mass at ``offset`` from the reference point

@@ -27,7 +27,7 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from rbi.core.inertia import symmetric_eigen
+from rbi.core.inertia import OFF_DIAGONAL, symmetric_eigen
 from rbi.core.mass import MassProperties
 from rbi.core.validity import finite
 from rbi.errors import ArgumentError, InputError, literal
@@ -37,7 +37,6 @@ from rbi.formats.robot_paths import parse_package_paths
 from rbi.memory import collector_paused
 from rbi.reprs import Result, Rows, json_ready, plain
 from rbi.robot.flags import (
-    _OFF_DIAGONAL,
     SOLID_DENSITY_RANGE,
     Flag,
     comparison,
@@ -319,7 +318,7 @@ def _stack_moments(stack: np.ndarray) -> list[list[float]]:
     stack at once (a million-link report asks for two per link); the others'
     :func:`rbi.core.inertia.symmetric_eigen` eigenvalues."""
     diagonal = np.diagonal(stack, axis1=1, axis2=2)
-    sortable = ~np.any(stack[:, _OFF_DIAGONAL], axis=1) & np.all(np.abs(diagonal) < 1e300, axis=1)
+    sortable = ~np.any(stack[:, OFF_DIAGONAL], axis=1) & np.all(np.abs(diagonal) < 1e300, axis=1)
     ordered = np.take_along_axis(diagonal, np.argsort(diagonal, axis=1, kind="stable"), axis=1)
     ordered = (ordered + 0.0).tolist()  # + 0.0: no -0.0
     for k in np.flatnonzero(~sortable).tolist():

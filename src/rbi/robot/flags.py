@@ -14,14 +14,12 @@ from typing import Any
 
 import numpy as np
 
+from rbi.core.inertia import OFF_DIAGONAL
 from rbi.core.mass import MassProperties
 from rbi.core.validity import declared_inertia_problem
 from rbi.formats.robot import Link, RobotModel
 from rbi.formats.robot_files import inertia_problem_text
 from rbi.robot.tree import dot_rows
-
-_OFF_DIAGONAL = ~np.eye(3, dtype=bool)
-
 
 ERROR_RATIO = 10.0
 """A declared moment beyond this factor of the geometry's (either way) is an error."""
@@ -120,7 +118,7 @@ def _maybe_placeholder(written: np.ndarray) -> np.ndarray:
     no products, and three equal moments or moments within 1e-6 (in log10) of round values (the
     test itself allows 1e-12)."""
     diagonal = np.diagonal(written, axis1=1, axis2=2)
-    no_products = np.all(written[:, _OFF_DIAGONAL] == 0, axis=1)
+    no_products = np.all(written[:, OFF_DIAGONAL] == 0, axis=1)
     equal = np.all(diagonal == diagonal[:, :1], axis=1)
     with np.errstate(divide="ignore", invalid="ignore"):
         exponent = np.log10(np.abs(diagonal))
@@ -251,7 +249,7 @@ def _placeholder(model: RobotModel, link: Link) -> str | None:
     """Words for a placeholder-looking inertia, or None."""
     inertial = link.inertial
     I = inertial.written_inertia
-    if np.any(I[~np.eye(3, dtype=bool)] != 0):
+    if np.any(I[OFF_DIAGONAL] != 0):
         return None
     diagonal = np.diag(I)
     if model.format == "mjcf" and inertial.source == "geoms":
