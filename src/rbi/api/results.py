@@ -611,9 +611,16 @@ class Export(Result):
 
     def to_dict(self) -> dict[str, Any]:
         props = self.mass_properties
-        head = {k: v for k, v in vars(self).items() if k not in ("mass_properties", "xml")}
-        inertial = dict(mass=props.mass, center_of_mass=props.center_of_mass, inertia=props.inertia_about_com)
-        return head | inertial | {"xml": self.xml}
+        return {
+            "name": self.name,
+            "to": self.to,
+            "units": self.units,
+            "warnings": self.warnings,
+            "mass": props.mass,
+            "center_of_mass": props.center_of_mass,
+            "inertia": props.inertia_about_com,
+            "xml": self.xml,
+        }
 
     def csv_rows(self) -> list[dict[str, Any]]:
         return [{k: v for k, v in self.to_dict().items() if k != "xml"}]
