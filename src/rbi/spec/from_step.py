@@ -15,6 +15,7 @@ from rbi.formats.step import read_step
 from rbi.reprs import Result, Rows
 from rbi.spec.materials import canonical_name, density_in_units, unknown_material_message
 from rbi.spec.yaml_writer import comment, dump
+from rbi.text import number
 
 DEFAULT_DENSITY = 1000.0
 """Density (kg/m³) of the imported parts when none is given: water's, a placeholder to replace."""
@@ -64,7 +65,7 @@ class StepImport(Result):
 
     def rows(self) -> list[Rows]:
         """One table: each solid's volume and mass at the spec's density."""
-        cells = [(row["name"], f"{row['volume']:.6g}", f"{row['mass']:.6g}") for row in self.csv_rows()]
+        cells = [(row["name"], number(row["volume"], 6), number(row["mass"], 6)) for row in self.csv_rows()]
         title = f"{self.path}: {len(cells)} solid(s) at {self.density:g} kg/m³"
         return [Rows(title, ("solid", "volume [m³]", "mass [kg]"), cells)]
 
