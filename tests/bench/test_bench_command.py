@@ -217,8 +217,7 @@ def test_csv_of_a_section_without_targets_is_its_records():
     targets): it prints one row per record of the section's tables, the numbers the JSON's."""
     import csv
 
-    from rbi.bench.report import csv_rows
-    from rbi.reprs import csv_text
+    from rbi.bench.report import Report
 
     proc = run_rbi("bench", "--only", "throughput", "--quick", "--format", "csv", check=True)
     lines = list(csv.DictReader(proc.stdout.splitlines()))
@@ -240,6 +239,6 @@ def test_csv_of_a_section_without_targets_is_its_records():
         )
         assert all(float(row[k]) >= 0 for k in record)
     # the JSON's own numbers, written as CSV, read back exactly
-    again = list(csv.DictReader(csv_text(csv_rows(result)).splitlines()))
+    again = list(csv.DictReader(Report(result).to_csv().splitlines()))
     for row, (_, record) in zip(again, records, strict=True):
         assert {k: float(row[k]) for k in record} == record

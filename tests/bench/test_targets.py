@@ -4,12 +4,17 @@ measurements (synthetic numbers: no timing here)."""
 from __future__ import annotations
 
 from rbi.bench import sweep
-from rbi.bench.report import report_sections, targets
+from rbi.bench.report import Report, report_sections, targets
 
 
 def target_rows(rows: list[dict]) -> list[list[str]]:
     """The cells of the report's Targets table of ``rows``."""
     return report_sections({"targets": rows})[0].rows
+
+
+def csv_rows(result: dict) -> list[dict]:
+    """The rows of ``rbi bench --format csv`` of ``result``."""
+    return Report(result).csv_rows()
 
 
 def _kernel(chapter=3.0, default=0.001, minimal=0.0009, best=0.0004):
@@ -153,8 +158,6 @@ def test_robot_audit_target_is_shown_in_seconds_not_as_a_ratio():
 
 def test_csv_without_work_precision_is_the_targets():
     """`rbi bench --only uncertainty --format csv` printed nothing: its CSV rows are its targets."""
-    from rbi.bench.report import csv_rows
-
     rows = targets({"robotaudit": {"target_s": 5.0, "links": 10**5, "error": "ValueError: x"}})
     assert csv_rows({"robotaudit": {}, "targets": rows}) == rows and rows[0]["area"] == "robot audit"
     run = {"method": "default", "rtol": 1e-8, "chapter_setup": False, "seconds": 0.001}
@@ -172,3 +175,18 @@ def test_csv_without_work_precision_is_the_targets():
     assert csv_rows({"cad": {"error": "no STEP reader"}, "targets": []}) == [
         {"section": "cad", "error": "no STEP reader"}
     ]
+
+
+def test_csv_carries_the_rows_of_every_selected_section():
+    """`rbi bench --only throughput,latency --format csv` printed latency's targets alone: the
+    throughput records are there too, in the order the sections ran, each row every column."""
+    lat = {"baseline": "numpy", "commands": [{"command": "numpy", "median_s": 0.1}], "per_file": {}}
+    lat["commands"].append({"command": "rbi --help", "median_s": 0.1, "repeats": 3, "target": 1.3})
+    lat["commands"][1]["ratio_to_numpy_import"] = 1.0
+    clouds = [{"points": 1000, "total_s": 0.001}]
+    result = {"throughput": {"point_clouds": clouds, "csv_format": "%.10g"}, "latency": lat}
+    result["targets"] = targets(result)
+    rows = csv_rows(result)
+    assert [(r["section"], r["area"]) for r in rows] == [("throughput", None), (None, "start-up")]
+    assert rows[0]["points"] == 1000 and rows[1]["measured"] == 1.0 and rows[1]["points"] is None
+    assert rows[1]["target"] == result["targets"][0]["target"] and set(rows[0]) == set(rows[1])

@@ -9,6 +9,7 @@ from dataclasses import dataclass, field
 from functools import partial
 
 from rbi.bench.workprecision import speedup
+from rbi.reprs import Result
 from rbi.text import number, vector_text
 
 METHOD_NAMES = {
@@ -684,36 +685,45 @@ def _seconds(row: dict) -> float | None:
     return row.get("cpu_median_s", row.get("median_s"))
 
 
-# --- CSV -------------------------------------------------------------------------------------
+# --- the result: JSON and CSV ----------------------------------------------------------------
 
 
 CSV_FIELDS = ("method", "rtol", "chapter_setup", "default_settings", "orientation_error_deg", "omega_error")
 CSV_FIELDS += ("drift", "steps", "rhs_evals", "seconds")
 
 
-def csv_rows(result: dict) -> list[dict]:
-    """One row per work-precision run (the table scripts most often want); without that section
-    (``--only``), one row per target, so that a run with targets never prints an empty CSV; with
-    neither (``--only throughput``, ``--only cad``), the sections' own records (:func:`_record_rows`)."""
-    runs = [
-        {"case": case["name"]} | {key: r.get(key, False) for key in CSV_FIELDS}
-        for case in result.get("workprecision", {}).get("cases", [])
-        for r in case["runs"] + [case["default"]]
-    ]
-    return runs or result.get("targets") or _record_rows(result)
+class Report(Result):
+    """A run of ``rbi bench`` (the dict :func:`rbi.bench.suite.run` returns) as rbi's results
+    are: its JSON object and its CSV rows; the CLI draws its tables (:func:`report_sections`)."""
 
+    def __init__(self, result: dict) -> None:
+        self.result = result
 
-def _record_rows(result: dict) -> list[dict]:
-    """One row per record of each measured section's tables (a list of records, such as
-    throughput's ``point_clouds``), its ``section`` and ``table`` first, the numbers as the JSON
-    has them; a section without such a list (one that failed: its ``error``) gives one row of its
-    own values. Every row has every column (empty where its record has none)."""
-    rows = []
-    for name, section in result.items():
-        if name == "machine" or not isinstance(section, dict):
-            continue
-        tables = {k: v for k, v in section.items() if v and isinstance(v, list) and isinstance(v[0], dict)}
-        rows += [{"section": name, "table": k} | r for k, records in tables.items() for r in records]
-        rows += [] if tables else [{"section": name} | section]
-    columns = dict.fromkeys(key for row in rows for key in row)
-    return [{key: row.get(key) for key in columns} for row in rows]
+    def to_dict(self) -> dict:
+        return self.result
+
+    def csv_rows(self) -> list[dict]:
+        """The rows of every measured section, in the order they ran: one row per work-precision
+        run (its ``case`` first), one per target of a section that has targets, and one per
+        record of each other section's tables (a list of records, such as throughput's
+        ``point_clouds``), its ``section`` and ``table`` first, the numbers as the JSON has them;
+        such a section without such a list (one that failed: its ``error``) gives one row of its
+        own values. Every row has every column (empty where it has none)."""
+        rows = []
+        for name, section in self.result.items():
+            if name == "workprecision":
+                rows += [
+                    {"case": case["name"]} | {key: r.get(key, False) for key in CSV_FIELDS}
+                    for case in section["cases"]
+                    for r in case["runs"] + [case["default"]]
+                ]
+            elif name in SECTION_TARGETS:
+                rows += [t for t in self.result.get("targets", []) if t["area"] == SECTION_TARGETS[name][0]]
+            elif name != "machine" and isinstance(section, dict):
+                tables = {
+                    k: v for k, v in section.items() if v and isinstance(v, list) and isinstance(v[0], dict)
+                }
+                rows += [{"section": name, "table": k} | r for k, records in tables.items() for r in records]
+                rows += [] if tables else [{"section": name} | section]
+        columns = dict.fromkeys(key for row in rows for key in row)
+        return [{key: row.get(key) for key in columns} for row in rows]

@@ -14,7 +14,7 @@ from rich.text import Text
 
 from rbi.bench import report, suite
 from rbi.cli.options import FormatOption, OutputFormat, needs, require_matplotlib
-from rbi.cli.render import emit, progress_bar
+from rbi.cli.render import emit_result, progress_bar
 from rbi.cli.terminal import terminal_safe
 
 QuickOption = Annotated[
@@ -74,7 +74,7 @@ def bench(
         result = suite.run(quick, only, plot, write_docs, bar.update if bar else lambda *_: None)
     if write_docs:
         print(f"rbi: wrote {terminal_safe(write_docs)}", file=sys.stderr)
-    emit(format.value, result, lambda: _tables(result), csv_rows=report.csv_rows(result))
+    emit_result(format.value, report.Report(result), table=lambda: _tables(result))
 
 
 def _tables(result: dict) -> Group:
