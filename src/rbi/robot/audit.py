@@ -286,17 +286,9 @@ def _joint_cells(joints: list) -> list[tuple[str, ...]]:
 
 
 def _joint_dicts(joints: list) -> list[dict[str, Any]]:
-    """Each joint's JSON object (its torque and declared limit as floats, no -0.0)."""
-    return [
-        {
-            "name": each.name,
-            "type": each.type,
-            "torque": float(each.torque) + 0.0,
-            "effort_limit": None if each.effort_limit is None else float(each.effort_limit) + 0.0,
-            "flags": list(each.flags),
-        }
-        for each in joints
-    ]
+    """Each joint's JSON object: its :class:`~rbi.robot.statics.JointTorque` fields in order
+    (name, type, torque, effort_limit, flags), JSON-ready (no -0.0)."""
+    return [plain(vars(each)) for each in joints]
 
 
 def _csv_row(each: LinkAudit) -> dict[str, Any]:
@@ -332,12 +324,12 @@ def material_density(material: str | None, density: float | None) -> float | Non
     if material is not None and density is not None:
         raise ArgumentError(("density", "material"), "give one of them")
     if density is not None:
-        value = _number(density)
-        if not (value is not None and np.isfinite(value) and value > 0):
+        real = isinstance(density, (int, float, np.integer, np.floating))  # a bool is none: finite
+        if not (real and finite(density) and density > 0):
             raise ArgumentError(
                 "density", f"{literal(density)}: must be a finite number greater than 0 (kg/m³)"
             )
-        return value
+        return float(density)
     if material is not None:
         name = canonical_name(material) if isinstance(material, str) else None
         if name is None:
@@ -345,13 +337,6 @@ def material_density(material: str | None, density: float | None) -> float | Non
             raise ArgumentError("material", literal(message, quoted=False) + " (or {density} in kg/m³)")
         return MATERIAL_DENSITIES_SI[name]
     return None
-
-
-def _number(value) -> float | None:
-    """``value`` as a float, or None when it is not a real number (a str, a bool, None, ...)."""
-    if isinstance(value, bool) or not isinstance(value, (int, float, np.integer, np.floating)):
-        return None
-    return float(value) if finite(value) else math.nan
 
 
 def audit_model(model: RobotModel, settings: AuditSettings | None = None, **options: Any) -> AuditReport:
@@ -431,7 +416,7 @@ class AuditedLinks:
 
     def _measure_in_bulk(self, settings: AuditSettings) -> None:
         """The geometry of the links :func:`_one_primitive` finds, measured on (n, 3, 3) stacks
-        with the operations :func:`distribution`, :func:`_sum` and :meth:`_measure_one` make on
+        with the operations :func:`distribution`, :meth:`MassProperties.sum` and :meth:`_measure_one` make on
         one link, element by element (so the same numbers). A link whose numbers would take
         another branch there (no volume, overflow, an unusual sum) is left to them."""
         columns = self.columns
@@ -482,7 +467,7 @@ class AuditedLinks:
                 Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks
             ]
         try:
-            unit = _sum(parts)
+            unit = MassProperties.sum(parts)
         except ValueError:  # no pieces, or no mass in the geometry
             return
         declared = self.columns.inertials.mass[row] if self.columns.declared[row] else 0.0
@@ -740,22 +725,3 @@ def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> _Sha
     if not rows:
         return None
     return _Shapes(rows, list(distinct), np.concatenate(which), np.concatenate(R), np.concatenate(p), sources)
-
-
-def _sum(parts: list[MassProperties]) -> MassProperties:
-    """``MassProperties.sum(parts)``; for one part of positive mass, the value that sum gives
-    without its arithmetic: the part with each -0.0 made 0.0 (the sum adds a zero offset to the
-    centre of mass and a zero parallel-axis term to the inertia, then averages the inertia with
-    its transpose, which leaves a symmetric one as it is)."""
-    if len(parts) == 1:
-        (part,) = parts
-        inertia = part.inertia_about_com
-        finite = np.isfinite(part.mass) and np.all(np.isfinite(part.center_of_mass))
-        if (
-            finite
-            and part.mass > 0
-            and np.all(np.abs(inertia) < 1e300)
-            and np.array_equal(inertia, inertia.T)
-        ):
-            return MassProperties(part.mass, part.center_of_mass + 0.0, inertia + 0.0, part.frame)
-    return MassProperties.sum(parts)

@@ -60,7 +60,7 @@ def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=
         chosen, axes, anchors = [chosen[i] for i in keep], axes[keep], anchors[keep]
     rows = [row for row, *_ in chosen]
     M = mass[rows]  # Σ m of each joint's subtree
-    lever = _cross(axes, moment[rows] - M[:, None] * anchors)  # axis × (Σ m c − M p)
+    lever = np.cross(axes, moment[rows] - M[:, None] * anchors)  # axis × (Σ m c − M p)
     prismatic = np.array([kind == "prismatic" for _, _, kind, _ in chosen], dtype=bool)
     torques = np.where(prismatic, -M * dot_rows(axes, gravity), -dot_rows(lever, gravity)) + 0.0
     found = []
@@ -80,14 +80,6 @@ def _effort_flag(kind: str, torque: float, limit: float) -> dict[str, str]:
         "message": f"holding the pose takes {abs(torque):.4g} {unit}, more than the "
         f"declared effort limit {limit:.4g} {unit}",
     }
-
-
-def _cross(a: np.ndarray, b: np.ndarray) -> np.ndarray:
-    """``a × b`` for each row of two (k, 3) arrays: the products and differences of ``np.cross``
-    of two 3-vectors, element by element."""
-    a0, a1, a2 = a[:, 0], a[:, 1], a[:, 2]
-    b0, b1, b2 = b[:, 0], b[:, 1], b[:, 2]
-    return np.stack([a1 * b2 - a2 * b1, a2 * b0 - a0 * b2, a0 * b1 - a1 * b0], axis=1).reshape(-1, 3)
 
 
 def _gravity(model: RobotModel) -> np.ndarray:
