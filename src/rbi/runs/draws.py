@@ -1,7 +1,7 @@
 """The motion's uncertainty from the uncertainty of a spec's inputs (``rbi simulate --draws``):
 the numbers written with ± drawn N times (JCGM 101), the N bodies built as one stack
 (:mod:`rbi.core.uncertainty`), and the N runs integrated in one call of the batched compiled
-kernel that sweeps use, each summarised as a sweep row."""
+kernel that sweeps use, summarised together as sweep rows are."""
 
 from __future__ import annotations
 
@@ -14,7 +14,7 @@ from rbi.errors import ArgumentError, literal
 from rbi.sim.api import DEFAULT_RTOL, sample_times
 from rbi.sim.compiled import STATUS_DONE, integrate_scenes
 from rbi.sim.scene import scene_from_properties
-from rbi.sim.summary import sweep_figures_batch
+from rbi.sim.summary import tilt_figures
 from rbi.spec.uncertain import drawn, generator
 
 FIGURES = {
@@ -48,7 +48,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     rtol = DEFAULT_RTOL if prepared.settings.rtol is None else prepared.settings.rtol
     out, _, status = integrate_scenes(scenes, np.repeat(start, draws, axis=0), t, rtol, prepared.budget)
     done = [k for k in range(draws) if status[k] == STATUS_DONE and np.all(np.isfinite(out[k]))]
-    rows = [sweep_figures_batch(scenes[k], t, out[k : k + 1, :, :4], out[k : k + 1, :, 4:])[0] for k in done]
+    rows = tilt_figures(t, out[done, :, :4], scene.spin_frame)  # every drawn scene spins about scene's axis
     spread: dict[str, Any] = {name: _sd([row[key] for row in rows]) for name, key in FIGURES.items()}
     spread["final_omega"] = [_sd(out[done, -1, 4 + i]) for i in range(3)]
     return {"draws": draws, "seed": seed, "failed": draws - len(done)} | spread

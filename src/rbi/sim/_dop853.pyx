@@ -204,6 +204,49 @@ cdef inline void dense_sample(const double* y, double F[7][7], double x, double*
     normalise_quaternion(out)
 
 
+cdef inline Py_ssize_t samples_up_to(const double* y, double t, const double* t_samples, Py_ssize_t k,
+                                     Py_ssize_t n, double* out) noexcept nogil:
+    """``y`` into the samples from ``k`` on at times <= ``t``; returns the next sample to fill."""
+    cdef int i
+    while k < n and t_samples[k] <= t:
+        for i in range(NSTATE):
+            out[k * NSTATE + i] = y[i]
+        k += 1
+    return k
+
+
+cdef inline double first_step(const double* y, double rtol, double omega_ref, double span) noexcept nogil:
+    """A first step turning the body by about rtol^(1/8) / 4 radians (``span`` if it does not turn)."""
+    cdef double rate = sqrt(y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
+    if omega_ref > rate:
+        rate = omega_ref
+    return 0.25 * pow(rtol, 0.125) / rate if rate > 0.0 else span
+
+
+cdef inline Py_ssize_t accept_step(double* y, const double* y_new, double K[16][7], double F[7][7], double* tmp,
+                                   double t, double t_new, double step, const double* t_samples, Py_ssize_t k,
+                                   Py_ssize_t n, double* out, const double* I, const double* Iinv,
+                                   const double* c, int64_t* rhs_evals) noexcept nogil:
+    """Accept the step from ``y`` (at ``t``) to ``y_new`` (at ``t_new``): samples inside it by dense
+    output (3 evaluations, counted unless ``rhs_evals`` is NULL), ``y`` = ``y_new`` projected to
+    unit |q|, f(y) into ``K[0]``, samples at ``t_new``. Returns the next sample to fill."""
+    cdef int i
+    if k < n and t_samples[k] < t_new:
+        dense_coefficients(y, y_new, K, step, F, tmp, I, Iinv, c)
+        if rhs_evals != NULL:
+            rhs_evals[0] += 3
+        while k < n and t_samples[k] < t_new:
+            dense_sample(y, F, (t_samples[k] - t) / step, &out[k * NSTATE])
+            k += 1
+    # first-same-as-last; the projection moves y by a rounding-sized amount, too little to be
+    # worth a fresh evaluation
+    for i in range(NSTATE):
+        y[i] = y_new[i]
+        K[0][i] = K[12][i]
+    normalise_quaternion(y)
+    return samples_up_to(y, t_new, t_samples, k, n, out)
+
+
 cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n_samples, double* out,
                  const double* I, const double* Iinv, const double* c, double rtol, double omega_ref,
                  int64_t* counts, int64_t max_steps) noexcept nogil:
@@ -213,16 +256,13 @@ cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n
     cdef double y_new[7]
     cdef double tmp[7]
     cdef double t = clock[0], h = clock[1], t_end = t_samples[n_samples - 1]
-    cdef double t_new, step, err, factor, rate, min_step
+    cdef double t_new, step, err, factor, min_step
     cdef Py_ssize_t k = counts[0]
     cdef int i
     cdef bint rejected = False
     cdef int64_t steps_here = 0
 
-    while k < n_samples and t_samples[k] <= t:
-        for i in range(NSTATE):
-            out[k * NSTATE + i] = y[i]
-        k += 1
+    k = samples_up_to(y, t, t_samples, k, n_samples, out)
     counts[0] = k
     if k >= n_samples:
         return DONE
@@ -233,11 +273,7 @@ cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n
     else:
         rhs(y, I, Iinv, c, K[0])
         counts[3] += 1
-        # a first step that turns the body by about rtol^(1/8) / 4 radians
-        rate = sqrt(y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
-        if omega_ref > rate:
-            rate = omega_ref
-        h = 0.25 * pow(rtol, 0.125) / rate if rate > 0.0 else t_end - t
+        h = first_step(y, rtol, omega_ref, t_end - t)
 
     while steps_here < max_steps:
         min_step = 10.0 * fabs(nextafter(t, INFINITY) - t)
@@ -264,28 +300,11 @@ cdef int advance(double* y, double* clock, const double* t_samples, Py_ssize_t n
             continue
         factor = accepted_step_factor(err, rejected)
         rejected = False
-        # samples inside the step: 7th-order dense output
-        if k < n_samples and t_samples[k] < t_new:
-            dense_coefficients(y, y_new, K, step, F, tmp, I, Iinv, c)
-            counts[3] += 3
-            while k < n_samples and t_samples[k] < t_new:
-                dense_sample(y, F, (t_samples[k] - t) / step, &out[k * NSTATE])
-                k += 1
-        for i in range(NSTATE):
-            y[i] = y_new[i]
-        normalise_quaternion(y)
+        k = accept_step(y, y_new, K, F, tmp, t, t_new, step, t_samples, k, n_samples, out, I, Iinv, c, &counts[3])
         t = t_new
         h = step * factor
         counts[1] += 1
         steps_here += 1
-        # first-same-as-last; the projection moved y by a rounding-sized amount, too little
-        # to be worth a fresh evaluation
-        for i in range(NSTATE):
-            K[0][i] = K[12][i]
-        while k < n_samples and t_samples[k] <= t:
-            for i in range(NSTATE):
-                out[k * NSTATE + i] = y[i]
-            k += 1
         counts[0] = k
         if k >= n_samples:
             clock[0] = t
@@ -402,21 +421,14 @@ cdef Py_ssize_t _minimal_loop(double* y, const double* t_samples, Py_ssize_t n, 
     cdef double F[7][7]
     cdef double y_new[7]
     cdef double tmp[7]
-    cdef double t = 0.0, h, t_end = t_samples[n - 1], t_new, step, err, factor, rate
+    cdef double t = 0.0, h, t_end = t_samples[n - 1], t_new, step, err, factor
     cdef Py_ssize_t k = 0, steps = 0
-    cdef int i
     cdef bint rejected = False
-    while k < n and t_samples[k] <= t:
-        for i in range(NSTATE):
-            out[k * NSTATE + i] = y[i]
-        k += 1
+    k = samples_up_to(y, t, t_samples, k, n, out)
     if k >= n:
         return 0
     rhs(y, I, Iinv, c, K[0])
-    rate = sqrt(y[4] * y[4] + y[5] * y[5] + y[6] * y[6])
-    if omega_ref > rate:
-        rate = omega_ref
-    h = 0.25 * pow(rtol, 0.125) / rate if rate > 0.0 else t_end - t
+    h = first_step(y, rtol, omega_ref, t_end - t)
     while k < n:
         t_new = t + h
         if t_new >= t_end:
@@ -433,23 +445,10 @@ cdef Py_ssize_t _minimal_loop(double* y, const double* t_samples, Py_ssize_t n, 
             continue
         factor = accepted_step_factor(err, rejected)
         rejected = False
-        if t_samples[k] < t_new:
-            dense_coefficients(y, y_new, K, step, F, tmp, I, Iinv, c)
-            while k < n and t_samples[k] < t_new:
-                dense_sample(y, F, (t_samples[k] - t) / step, &out[k * NSTATE])
-                k += 1
-        for i in range(NSTATE):
-            y[i] = y_new[i]
-        normalise_quaternion(y)
+        k = accept_step(y, y_new, K, F, tmp, t, t_new, step, t_samples, k, n, out, I, Iinv, c, NULL)
         t = t_new
         h = step * factor
         steps += 1
-        for i in range(NSTATE):
-            K[0][i] = K[12][i]
-        while k < n and t_samples[k] <= t:
-            for i in range(NSTATE):
-                out[k * NSTATE + i] = y[i]
-            k += 1
     return steps
 
 
