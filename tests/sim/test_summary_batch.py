@@ -1,5 +1,6 @@
-"""A sweep summarises the runs of one scene together (summary.sweep_figures_batch): the same
-numbers, bit for bit, as summarising each run alone the way rbi simulate does."""
+"""A sweep summarises the runs of one scene together (summary.tilt_figures and
+diagnostics.energy_drifts on the stack of runs, as sweeps.runs does): the same numbers, bit for
+bit, as summarising each run alone the way rbi simulate does."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ from rbi.core.mass import MassProperties
 from rbi.sim import diagnostics
 from rbi.sim.api import simulate
 from rbi.sim.scene import initial_state, scene_from_properties
-from rbi.sim.summary import summarize, sweep_figures_batch
+from rbi.sim.summary import summarize, tilt_figures
 
 
 def _top_scene(pivoted: bool):
@@ -33,7 +34,9 @@ def test_batch_equals_one_by_one(pivoted):
     runs = [simulate(scene, q0, w0, 1.0, 121) for q0, w0 in starts]
     q = np.array([r.q for r in runs])
     omega = np.array([r.omega for r in runs])
-    batch = sweep_figures_batch(scene, runs[0].t, q, omega)
+    drifts = diagnostics.energy_drifts(scene, q, omega)[1]
+    batch = tilt_figures(runs[0].t, q, scene.spin_frame)
+    batch = [row | {"energy_drift": drift} for row, drift in zip(batch, drifts)]
     for run, (q0, w0), got in zip(runs, starts, batch):
         # the per-run figures are rbi simulate's own
         full = summarize(scene, run, q0, w0)

@@ -347,13 +347,14 @@ def integrate(double[::1] y, double[::1] clock, const double[::1] t_samples, dou
 def integrate_batch(const double[:, ::1] y0, const double[::1] t_samples, const double[:, :, ::1] inertia,
                     const double[:, :, ::1] inertia_inv, const double[:, ::1] c, const double[::1] omega_ref,
                     double rtol, int64_t max_steps, double[:, :, ::1] out, int64_t[:, ::1] counts,
-                    int64_t[::1] status, int threads=0):
+                    int64_t[::1] status, int threads=1):
     """Integrate B independent runs from t = 0, each to the end of ``t_samples``, in parallel.
 
     y0 (B, 7) initial states; t_samples (N,) shared sample times; inertia, inertia_inv (B, 3, 3);
     c (B, 3); omega_ref (B,); out (B, N, 7) filled; counts (B, 4) and status (B,) written per
-    run (a run that needs more than ``max_steps`` steps ends with STATUS_MORE). threads: 0 lets
-    OpenMP choose (every core). Each run takes exactly the steps :func:`integrate` takes for it.
+    run (a run that needs more than ``max_steps`` steps ends with STATUS_MORE). threads: the
+    cores to spread them over, at least 1. Each run takes exactly the steps :func:`integrate`
+    takes for it.
     """
     cdef Py_ssize_t B = y0.shape[0], N = t_samples.shape[0], r
     if y0.shape[1] != NSTATE or N < 1 or inertia.shape[0] != B or inertia_inv.shape[0] != B \
@@ -363,10 +364,10 @@ def integrate_batch(const double[:, ::1] y0, const double[::1] t_samples, const 
     if inertia.shape[1] != 3 or inertia.shape[2] != 3 or inertia_inv.shape[1] != 3 \
             or inertia_inv.shape[2] != 3 or c.shape[1] != 3:
         raise ValueError("integrate_batch: inertia (B, 3, 3) and c (B, 3) expected")
+    if threads < 1:
+        raise ValueError("integrate_batch: threads must be at least 1")
     if B == 0:
         return
-    if threads <= 0:
-        threads = _default_threads()
     for r in prange(B, nogil=True, schedule="dynamic", chunksize=1, num_threads=threads):
         _run_one(&y0[r, 0], &t_samples[0], N, &out[r, 0, 0], &inertia[r, 0, 0], &inertia_inv[r, 0, 0],
                  &c[r, 0], rtol, omega_ref[r], &counts[r, 0], max_steps, &status[r])
@@ -385,15 +386,6 @@ cdef void _run_one(const double* y0, const double* t_samples, Py_ssize_t n, doub
     for i in range(4):
         counts[i] = 0
     status[0] = advance(y, clock, t_samples, n, out, I, Iinv, c, rtol, omega_ref, counts, max_steps)
-
-
-def _default_threads():
-    import os
-
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except AttributeError:
-        return max(1, os.cpu_count() or 1)
 
 
 def openmp_enabled():

@@ -9,6 +9,7 @@ module's source, ``_dop853.pyx``, documents the equations and the integrator.
 
 from __future__ import annotations
 
+import os
 import time
 from collections.abc import Callable
 from typing import Any, NamedTuple
@@ -58,6 +59,14 @@ def integrator() -> Loaded:
     return _LOADED
 
 
+def available_cores() -> int:
+    """The cores this process may run on."""
+    try:
+        return max(1, len(os.sched_getaffinity(0)))
+    except AttributeError:
+        return max(1, os.cpu_count() or 1)
+
+
 def integrate_scenes(
     scenes: list[Any], starts: np.ndarray, t: np.ndarray, rtol: float, max_steps: int, threads: int = 0
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -82,6 +91,6 @@ def integrate_scenes(
         out,
         counts,
         status,
-        int(threads),
+        int(threads) or available_cores(),
     )
     return out, counts, status

@@ -102,18 +102,6 @@ def error_estimate(
     }
 
 
-def sweep_figures_batch(
-    scene: Scene, t: np.ndarray, q: np.ndarray, omega: np.ndarray
-) -> list[dict[str, Any]]:
-    """What a sweep row reports of each of B runs of one scene (q (B, N, 4), omega (B, N, 3)):
-    :func:`tilt_figures` and the energy's relative drift, as :func:`summarize` reports them for
-    one run, computed on all samples together."""
-    figures = tilt_figures(t, q, scene.spin_frame)
-    for row, drift in zip(figures, diagnostics.energy_drifts(scene, q, omega)[1]):
-        row["energy_drift"] = drift
-    return figures
-
-
 def tilt_figures(t: np.ndarray, q: np.ndarray, frame: np.ndarray | None = None) -> list[dict[str, Any]]:
     """For each of B runs (q (B, N, 4)): the smallest, largest and final tilt of the spin axis
     (deg; body z without ``frame``, see :attr:`rbi.sim.scene.Scene.spin_frame`) and the mean

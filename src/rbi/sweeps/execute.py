@@ -7,7 +7,6 @@ import contextlib
 import functools
 import logging
 import math
-import os
 import queue
 import re
 import shutil
@@ -23,6 +22,7 @@ from concurrent.futures import Future
 from typing import Any
 
 from rbi.errors import ArgumentError, InputError, literal, shown
+from rbi.sim.compiled import available_cores
 
 Rows = list[list[Any]]
 
@@ -72,13 +72,6 @@ class Chunks:
         """A chunk of ``runs`` runs took ``seconds`` (wall time, from its start to its rows)."""
         if runs > 0 and math.isfinite(seconds) and seconds >= 0:
             self.run_seconds, self._grown = seconds / runs, 2 * runs
-
-
-def available_cores() -> int:
-    try:
-        return max(1, len(os.sched_getaffinity(0)))
-    except AttributeError:
-        return max(1, os.cpu_count() or 1)
 
 
 def run_local(

@@ -17,8 +17,9 @@ import numpy as np
 from rbi.memory import cached
 from rbi.sim.api import sample_times
 from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrate_scenes
+from rbi.sim.diagnostics import energy_drifts
 from rbi.sim.scene import initial_state, scene_from_properties
-from rbi.sim.summary import sweep_figures_batch
+from rbi.sim.summary import tilt_figures
 from rbi.spec.errors import InputError
 from rbi.spec.load import spec_from_raw
 from rbi.spec.translate import body_from_spec
@@ -132,8 +133,9 @@ def run_chunk(job: SweepJob, start: int, stop: int, threads: int = 0) -> list[li
 
 
 def _figures(scenes: list, t: np.ndarray, out: np.ndarray, status: np.ndarray, finite: np.ndarray) -> dict:
-    """Each finished, finite run's summary figures (tilts, precession, drift) by its batch
-    index; the runs of one scene are summarised together."""
+    """Each finished, finite run's summary figures by its batch index: the tilts and precession
+    rate (:func:`~rbi.sim.summary.tilt_figures`) and the energy's relative drift, as ``rbi
+    simulate`` reports them; the runs of one scene are summarised together."""
 
     figures_of: dict[int, dict] = {}
     by_scene: dict[int, list[int]] = {}
@@ -141,9 +143,10 @@ def _figures(scenes: list, t: np.ndarray, out: np.ndarray, status: np.ndarray, f
         if status[b] == STATUS_DONE and finite[b]:
             by_scene.setdefault(id(scenes[b]), []).append(b)
     for group in by_scene.values():
+        scene, q, omega = scenes[group[0]], out[group, :, :4], out[group, :, 4:]
         with np.errstate(all="ignore"):
-            batch = sweep_figures_batch(scenes[group[0]], t, out[group, :, :4], out[group, :, 4:])
-        figures_of.update(zip(group, batch))
+            batch, drifts = tilt_figures(t, q, scene.spin_frame), energy_drifts(scene, q, omega)[1]
+        figures_of.update((b, row | {"energy_drift": drift}) for b, row, drift in zip(group, batch, drifts))
     return figures_of
 
 
