@@ -121,15 +121,13 @@ def yaml_load_ratio(n_parts: int, shape: str, timeout: float = 600.0) -> dict:
         }
 
 
-def cases(quick: bool) -> list[tuple[int, str]]:
-    if quick:
-        return [(10**4, "point"), (10**3, "cylinder")]
-    return [(10**5, "point"), (10**4, "cylinder")]
+CASES = {True: [(10**4, "point"), (10**3, "cylinder")], False: [(10**5, "point"), (10**4, "cylinder")]}
+"""The specs loaded, (parts, shape): quick run, full run."""
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     specs = []
-    for n, shape in cases(quick):
+    for n, shape in CASES[quick]:
         progress(f"large specs: {n:,} × {shape}")
         try:
             row = dict(yaml_load_ratio(n, shape))

@@ -28,8 +28,8 @@ from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.bench.throughput import random_cloud, write_cloud
 from rbi.bench.timing import in_turn, measure, run_process
 
-QUICK_REPEATS = 3
-FULL_REPEATS = 21
+REPEATS = {True: 3, False: 21}
+"""Rounds of the timed commands: quick run, full run."""
 
 
 SIMULATE_TOP = "rbi simulate bodies/top.yaml --spin 200 --tilt 10"
@@ -209,7 +209,7 @@ def compile_bytecode() -> bool:
 
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    repeats = QUICK_REPEATS if quick else FULL_REPEATS
+    repeats = REPEATS[quick]
     bodies = bodies_folder()
     bytecode = compile_bytecode()
     rows, timed = [], []

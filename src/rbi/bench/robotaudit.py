@@ -18,8 +18,8 @@ TARGET_S = 5.0
 """Seconds the audit of the 10⁵-link URDF may take."""
 
 
-def links(quick: bool) -> int:
-    return 2_000 if quick else 10**5
+LINKS = {True: 2_000, False: 10**5}
+"""Links of the generated URDF: quick run, full run."""
 
 
 def urdf_text(n: int) -> str:
@@ -42,8 +42,9 @@ def urdf_text(n: int) -> str:
 
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
 
-    n = links(quick)
+    n = LINKS[quick]
     progress(f"robot audit: {n:,} links")
+    measured = {"target_s": TARGET_S, "links": n}
     with tempfile.TemporaryDirectory(prefix="rbi-bench-") as folder:
         path = os.path.join(folder, "large.urdf")
         with open(path, "w", encoding="utf-8") as handle:
@@ -52,10 +53,8 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
         try:
             seconds, cpu_seconds, report = clocked(lambda: audit(path))
         except Exception as exc:  # a failed measurement is a row, not the end of the bench
-            return {"target_s": TARGET_S, "links": n, "error": f"{type(exc).__name__}: {exc}"}
-    return {
-        "target_s": TARGET_S,
-        "links": n,
+            return measured | {"error": f"{type(exc).__name__}: {exc}"}
+    return measured | {
         "megabytes": size / 1e6,
         "seconds": seconds,
         "cpu_seconds": cpu_seconds,

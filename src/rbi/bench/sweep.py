@@ -38,10 +38,11 @@ from rbi.sweeps.study import Study, SweepSettings, check_settings
 TARGETS = {"ratio_to_cores_x_single": 0.8, "ratio_to_process_loop": 300.0, "peak_rss_mb": 500.0}
 
 
-def grid(quick: bool) -> dict:
-    if quick:
-        return {"spin": (150.0, 260.0, 20), "tilt": (0.01, 1.0, 10), "duration": 0.5}
-    return {"spin": (150.0, 260.0, 100), "tilt": (0.01, 1.0, 100), "duration": 4.0}
+GRIDS = {
+    True: {"spin": (150.0, 260.0, 20), "tilt": (0.01, 1.0, 10), "duration": 0.5},
+    False: {"spin": (150.0, 260.0, 100), "tilt": (0.01, 1.0, 100), "duration": 4.0},
+}
+"""The grid of the throughput sweep: quick run, full run."""
 
 
 def _axis_text(axis) -> str:
@@ -159,7 +160,7 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
 
     spec = bodies_folder() / "top.yaml"
-    g = grid(quick)
+    g = GRIDS[quick]
     cores = available_cores()
     with tempfile.TemporaryDirectory(prefix="rbi-bench-sweep-") as tmp:
         folder = Path(tmp)

@@ -25,10 +25,10 @@ from rbi.core.mass import combine
 from rbi.spec.load import load_body, read_yaml, validation_messages
 from rbi.spec.translate import body_from_spec
 
-QUICK_CLOUDS = (10**3, 10**4, 10**5)
-FULL_CLOUDS = (10**3, 10**4, 10**5, 10**6)
-QUICK_PARTS = (10**3,)
-FULL_PARTS = (10**4, 10**5)
+CLOUDS = {True: (10**3, 10**4, 10**5), False: (10**3, 10**4, 10**5, 10**6)}
+"""Points in each cloud: quick run, full run."""
+PARTS = {True: (10**3,), False: (10**4, 10**5)}
+"""Parts in each spec of solid parts: quick run, full run."""
 CSV_FORMAT = "%.10g"
 """Digits written to the generated CSV clouds (a scanner or CAD export carries about this many;
 full double precision, %.17g, makes the file about 1.7 times larger and slower to parse)."""
@@ -170,8 +170,8 @@ def _warm_up_loader(folder: Path) -> None:
 def run(quick: bool, progress: Progress = lambda _: None) -> dict:
     with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
         _warm_up_loader(Path(tmp))
-        clouds = point_clouds(QUICK_CLOUDS if quick else FULL_CLOUDS, progress, Path(tmp))
-        parts = solid_parts(QUICK_PARTS if quick else FULL_PARTS, progress, Path(tmp))
+        clouds = point_clouds(CLOUDS[quick], progress, Path(tmp))
+        parts = solid_parts(PARTS[quick], progress, Path(tmp))
     return {
         "point_clouds": clouds,
         "scaling_exponent": scaling_exponent(clouds),

@@ -69,15 +69,15 @@ def cases(quick: bool) -> list[Case]:
     ]
 
 
-def sweeps(quick: bool) -> dict[str, list[float]]:
-    """Tolerances tried for each method."""
-    if quick:
-        return {"default": [1e-8, 1e-11], "rk45": [1e-8], "dop853": [1e-10]}
-    return {
+SWEEPS = {
+    True: {"default": [1e-8, 1e-11], "rk45": [1e-8], "dop853": [1e-10]},
+    False: {
         "default": [1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12, 1e-13],
         "rk45": [1e-6, 1e-7, 1e-8, 1e-9, 1e-10],
         "dop853": [1e-6, 1e-8, 1e-10, 1e-12],
-    }
+    },
+}
+"""Tolerances tried for each method: quick run, full run."""
 
 
 def scene_of(case: Case):
@@ -123,7 +123,7 @@ def reference_of(case: Case, scene, q0, omega0, quick: bool) -> tuple[object, di
 
 
 def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | None = None) -> dict:
-    """Each method at each of its ``tolerances`` (default: :func:`sweeps`) and rbi at its
+    """Each method at each of its ``tolerances`` (default: :data:`SWEEPS`) and rbi at its
     default settings on ``case``: errors against the reference, cost, and the median
     in-process time of the whole :func:`rbi.sim.api.simulate` call over repeats (a run of the
     compiled method takes about a millisecond, too short to time once on a busy machine)."""
@@ -153,7 +153,7 @@ def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | Non
         }
 
     rows = []
-    for method, rtols in (tolerances or sweeps(quick)).items():
+    for method, rtols in (tolerances or SWEEPS[quick]).items():
         for rtol in rtols:
             progress(f"{case.name}: {method} rtol {rtol:g}")
             chapter = (method, rtol) == CHAPTER
