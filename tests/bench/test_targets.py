@@ -190,3 +190,30 @@ def test_csv_carries_the_rows_of_every_selected_section():
     assert [(r["section"], r["area"]) for r in rows] == [("throughput", None), (None, "start-up")]
     assert rows[0]["points"] == 1000 and rows[1]["measured"] == 1.0 and rows[1]["points"] is None
     assert rows[1]["target"] == result["targets"][0]["target"] and set(rows[0]) == set(rows[1])
+
+
+def test_terminal_tables_show_cells_as_written():
+    """`rbi bench`'s tables read no cell as rich markup: a command or its error holding [brackets]
+    is printed as written (`rbi [bold]x` printed as `rbi x`, in bold)."""
+    import io
+
+    from rich.console import Console
+
+    from rbi.cli.bench_command import _tables
+
+    machine = {
+        "date": "d",
+        "cpu": "c",
+        "cores": 2,
+        "platform": "p",
+        "python": "3",
+        "numpy": "2",
+        "scipy": "1",
+    }
+    failed = {"command": "rbi [bold]x", "error": "exit 2: rbi: error: [Errno 2] [red]no file"}
+    lat = {"baseline": "numpy", "commands": [failed]}
+    text = io.StringIO()
+    Console(file=text, width=200, color_system=None).print(
+        _tables({"machine": machine, "quick": True, "latency": lat})
+    )
+    assert "rbi [bold]x" in text.getvalue() and "[Errno 2] [red]no file" in text.getvalue()

@@ -8,13 +8,12 @@ from typing import Annotated
 import typer
 from rich import box
 from rich.console import Group
-from rich.markup import escape
-from rich.table import Table
 from rich.text import Text
 
 from rbi.bench import report, suite
 from rbi.cli.options import FormatOption, OutputFormat, needs, require_matplotlib
 from rbi.cli.render import emit_result, progress_bar
+from rbi.cli.tables import SafeTable
 from rbi.cli.terminal import terminal_safe
 
 QuickOption = Annotated[
@@ -87,10 +86,9 @@ def _tables(result: dict) -> Group:
         parts += [Text(section.title.replace("`", ""))] if section.title else []
         parts += [Text(section.notes.replace("`", ""), style="dim")] if section.notes else []
         if section.rows:
-            table = Table(box=box.SIMPLE_HEAD, show_edge=False)
+            table = SafeTable(box=box.SIMPLE_HEAD, show_edge=False)  # headers and cells are text, not markup
             for header in section.columns:
-                justify = section.justify(header)
-                table.add_column(escape(header), justify=justify, no_wrap=header in section.no_wrap)
+                table.add_column(header, justify=section.justify(header), no_wrap=header in section.no_wrap)
             for row in section.rows:
                 table.add_row(*row)
             parts.append(table)
