@@ -1,4 +1,4 @@
-"""The compiled kernel (rbi.sim._dop853): its right-hand side, agreement with the
+"""The compiled kernel (rbi.sim._dop853): its right-hand side (through integrate), agreement with the
 numba kernel it replaced, and the batch entry against single runs."""
 
 from __future__ import annotations
@@ -23,7 +23,22 @@ from rbi.sim.scene import initial_state
 )
 def test_compiled_rhs_equals_the_python_rhs(bolted_scene, q, w):
     y = np.concatenate((np.asarray(q) / np.linalg.norm(q), w))
-    out = _dop853.derivative(y, bolted_scene.inertia, bolted_scene.inertia_inv, bolted_scene.gravity_moment)
+    # a run asked for no step returns (STATUS_MORE) with the derivative at y in clock[2:]
+    clock, scene = np.zeros(9), bolted_scene
+    status = integrator().integrate(
+        y.copy(),
+        clock,
+        np.array([1.0]),
+        np.empty((1, 7)),
+        np.ascontiguousarray(scene.inertia),
+        np.ascontiguousarray(scene.inertia_inv),
+        np.ascontiguousarray(scene.gravity_moment),
+        np.array([1e-12, scene.natural_rate]),
+        np.zeros(4, dtype=np.int64),
+        0,
+    )
+    out = clock[2:]
+    assert status == STATUS_MORE
     expected = np.asarray(python_rhs(bolted_scene)(0.0, y))
     np.testing.assert_allclose(out, expected, rtol=1e-12, atol=1e-12 * (1 + np.abs(expected).max()))
 

@@ -393,17 +393,6 @@ def openmp_enabled():
     return bool(RBI_OPENMP)
 
 
-def derivative(const double[::1] y, const double[:, ::1] inertia, const double[:, ::1] inertia_inv,
-               const double[::1] c):
-    """The right-hand side at state ``y`` (7,), as a list of 7 floats (for tests and checks)."""
-    cdef double out[7]
-    if y.shape[0] != NSTATE or inertia.shape[0] != 3 or inertia.shape[1] != 3 or inertia_inv.shape[0] != 3 \
-            or inertia_inv.shape[1] != 3 or c.shape[0] != 3:
-        raise ValueError("derivative: y (7,), inertia and inertia_inv (3, 3), c (3,) expected")
-    rhs(&y[0], &inertia[0, 0], &inertia_inv[0, 0], &c[0], out)
-    return [out[i] for i in range(NSTATE)]
-
-
 cdef Py_ssize_t _minimal_loop(double* y, const double* t_samples, Py_ssize_t n, double* out, const double* I,
                               const double* Iinv, const double* c, double rtol, double omega_ref) noexcept nogil:
     """DOP853 from t = 0 to ``t_samples[n - 1]`` in one straight loop: no chunks, no resuming,
