@@ -79,7 +79,7 @@ def audit(
     path = path_text(robot_file)
     target = None if out is None else checked_output(out, _fixed_format(path), path, "out")
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
-    report = run_audit(path, AuditSettings.of(allow_outside_paths=allowed, **chosen))
+    report = run_audit(path, AuditSettings(allow_outside_paths=allowed, **chosen))
     if target is not None:
         _write_fixed(target, report)
     return report

@@ -18,12 +18,12 @@ def audit(
     robot_file: str | os.PathLike, settings: AuditSettings | None = None, **options: Any
 ) -> AuditReport:
     """Audit a URDF, SDF or MJCF file as ``settings`` say (or the keywords of
-    :meth:`AuditSettings.of`, :func:`rbi.audit`'s less ``out``): every link's declared mass
+    :class:`AuditSettings`, :func:`rbi.audit`'s less ``out``): every link's declared mass
     properties against its geometry, with flags, and the whole robot's totals at a
     configuration (SI units); ``fix`` plans the fixed copy (``report.fix``) without writing it.
     Raises :class:`rbi.SpecError` on bad input.
     """
-    settings = AuditSettings.of(**options) if settings is None else settings
+    settings = AuditSettings(**options) if settings is None else settings
     with outside_paths_allowed(settings.allow_outside_paths), collector_paused():
         model = read_robot(
             os.fspath(robot_file), settings.package_paths, geometry=settings.geometry != "none"

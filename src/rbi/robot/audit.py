@@ -21,8 +21,7 @@ where screens on those stacks leave something to say. One link's audit is a row 
 from __future__ import annotations
 
 import math
-from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import InitVar, dataclass, field
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -56,45 +55,35 @@ GEOMETRY_CHOICES = ("collision", "visual", "none")
 
 @dataclass(frozen=True)
 class AuditSettings:
-    """How a robot file is audited, checked once (:meth:`of`) and passed down: ``package_paths``
-    (NAME → folders, for ``package://NAME/``), ``geometry`` (one of :data:`GEOMETRY_CHOICES`),
-    ``density`` (kg/m³ for the links that declare no mass: the one given, or the material's),
-    ``mesh_inertia`` (auto, exact, convex or shell), ``joints`` (name → coordinate, rad or m, for
-    the totals), ``fix`` (plan the fixed copy), ``allow_outside_paths`` and ``mesh_repair``."""
+    """How a robot file is audited, made of :func:`rbi.audit`'s keywords (less ``out``), checked
+    once when made and passed down; ArgumentError naming the keyword of a bad one.
+    ``package_paths`` (given as ``{NAME: DIR}`` or ``NAME=DIR`` texts; kept as NAME → folders,
+    for ``package://NAME/``), ``geometry`` (one of :data:`GEOMETRY_CHOICES`), ``density``
+    (kg/m³ for the links that declare no mass: the one given, or that of ``material``, a built-in
+    material, given in its place), ``mesh_inertia`` (auto, exact, convex or shell), ``joints``
+    (given as ``{NAME: VALUE}`` or ``NAME=VALUE`` texts; kept as name → coordinate, rad or m,
+    for the totals), ``fix`` (plan the fixed copy), ``allow_outside_paths`` and ``mesh_repair``."""
 
-    package_paths: dict[str, Any] = field(default_factory=dict)
+    package_paths: Any = None
     geometry: str = "collision"
     density: float | None = None
+    material: InitVar[str | None] = None
     mesh_inertia: str = "auto"
-    joints: dict[str, float] = field(default_factory=dict)
+    joints: Any = None
     fix: bool = False
     allow_outside_paths: bool = False
     mesh_repair: bool = False
 
-    @classmethod
-    def of(
-        cls,
-        *,
-        package_paths: Mapping[str, str] | Sequence[str] | None = None,
-        geometry: str = "collision",
-        density: float | None = None,
-        material: str | None = None,
-        mesh_inertia: str = "auto",
-        joints: Mapping[str, float] | Sequence[str] | None = None,
-        fix: bool = False,
-        allow_outside_paths: bool = False,
-        mesh_repair: bool = False,
-    ) -> AuditSettings:
-        """The settings of :func:`rbi.audit`'s keywords (``material``: a built-in material's
-        density in place of ``density``); ArgumentError naming the keyword of a bad one."""
-        if geometry not in GEOMETRY_CHOICES:
-            raise ArgumentError("geometry", f"{literal(geometry)}: must be collision, visual or none")
-        if mesh_inertia not in MESH_INERTIA_MODES:
+    def __post_init__(self, material: str | None) -> None:
+        if self.geometry not in GEOMETRY_CHOICES:
+            raise ArgumentError("geometry", f"{literal(self.geometry)}: must be collision, visual or none")
+        if self.mesh_inertia not in MESH_INERTIA_MODES:
             choices = ", ".join(MESH_INERTIA_MODES)
-            raise ArgumentError("mesh_inertia", f"{literal(mesh_inertia)}: must be one of {choices}")
-        packages, values = parse_package_paths(package_paths), parse_joint_values(joints)
-        rho = material_density(material, density)
-        return cls(packages, geometry, rho, mesh_inertia, values, fix, allow_outside_paths, mesh_repair)
+            raise ArgumentError("mesh_inertia", f"{literal(self.mesh_inertia)}: must be one of {choices}")
+        packages, values = parse_package_paths(self.package_paths), parse_joint_values(self.joints)
+        object.__setattr__(self, "package_paths", packages)
+        object.__setattr__(self, "joints", values)
+        object.__setattr__(self, "density", material_density(material, self.density))
 
 
 @dataclass
@@ -341,8 +330,8 @@ def material_density(material: str | None, density: float | None) -> float | Non
 
 def audit_model(model: RobotModel, settings: AuditSettings | None = None, **options: Any) -> AuditReport:
     """Audit a model already read (see :func:`rbi.formats.robot_files.read_robot`) as
-    ``settings`` say, or the keywords of :meth:`AuditSettings.of`."""
-    settings = AuditSettings.of(**options) if settings is None else settings
+    ``settings`` say, or the keywords of :class:`AuditSettings`."""
+    settings = AuditSettings(**options) if settings is None else settings
     repairs: list[str] = []
     columns = model.link_columns()
     audited = AuditedLinks(model, columns, settings, repairs)
