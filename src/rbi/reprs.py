@@ -18,7 +18,7 @@ import io
 from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from html import escape
-from typing import Any, TypeVar, overload
+from typing import Any, ClassVar, TypeVar, overload
 
 from rbi.text import csv_lines
 
@@ -197,6 +197,15 @@ class Result:
                 return plain(own(self, *args, **kw))
 
             cls.to_dict = json_ready(to_dict)  # type: ignore[method-assign]
+
+    json_keys: ClassVar[tuple[str, ...]] = ()
+    """The fields a subclass's ``to_dict()`` lists as they are, by name and in the order the
+    contract gives them (see :meth:`json_fields`); declared once, so a new field is not in the
+    JSON until it is named here."""
+
+    def json_fields(self) -> dict[str, Any]:
+        """The fields :attr:`json_keys` names, with their values, in that order."""
+        return {key: getattr(self, key) for key in self.json_keys}
 
     def rows(self) -> list[Rows]:
         """The tables the result shows, as text cells: the one set of rows behind ``print()``,

@@ -10,7 +10,7 @@ from typing import Any, ClassVar
 
 import numpy as np
 
-from rbi.api.checks import Checks
+from rbi.api.checks import Checks, Validation
 from rbi.api.results import (
     PRODUCT_SIGN_TITLES,
     About,
@@ -154,9 +154,10 @@ def validate(
     paths: str | os.PathLike[str] | Sequence[str | os.PathLike[str]],
     *,
     package_paths: Mapping[str, str] | Sequence[str] | None = None,
-) -> list[list[str]]:
+) -> Validation:
     """Check spec files without computing anything, as ``rbi validate`` does: for each path,
-    the list of its problems, one line each (empty when the file is valid). A robot file (URDF,
+    the list of its problems, one line each (empty when the file is valid), as a `Validation`
+    (its ``to_dict()`` is the command's JSON). A robot file (URDF,
     SDF, MJCF) gives every link whose inertia is not physical; ``package_paths`` (``{NAME:
     DIR}`` or ``["NAME=DIR", ...]``) finds its ``package://`` meshes. SpecError for a bad
     ``package_paths``."""
@@ -165,7 +166,8 @@ def validate(
         paths = [paths]
     if not isinstance(paths, Sequence) or not all(isinstance(p, (str, os.PathLike)) for p in paths):
         raise TypeError(f"paths: expected a path (str or os.PathLike) or a list of them, got {paths!r:.80}")
-    return [file_problems(os.fspath(path), packages) for path in paths]
+    files = [spec_load.spec_label(os.fspath(path)) for path in paths]
+    return Validation(files, [file_problems(os.fspath(path), packages) for path in paths])
 
 
 def spec_schema() -> dict[str, Any]:
@@ -525,11 +527,11 @@ class Body(Result):
         with np.errstate(over="ignore", invalid="ignore"):
             body = Body(convert_body(self._loaded, length, mass), self._raw, self._spec_bytes)
         props, elements, names = body._loaded.props, body._loaded.elements, body._loaded.part_names
-        if not all(np.all(np.isfinite(value)) for value in _numbers(props).values()):
+        if not all(np.all(np.isfinite(value)) for value in props.to_dict().values()):
             for i, element in enumerate(elements):  # the part to blame, when one is
                 part = f"parts[{i}]" + (f" ({names[i]})" if i < len(names) and names[i] else "")
-                body._refuse_non_finite(f"{part}: in {length} and {mass}, ", **_numbers(element))
-            body._refuse_non_finite(f"in {length} and {mass}, ", **_numbers(props))
+                body._refuse_non_finite(f"{part}: in {length} and {mass}, ", **element.to_dict())
+            body._refuse_non_finite(f"in {length} and {mass}, ", **props.to_dict())
         body._file_length = self._file_length
         return body
 
@@ -704,15 +706,6 @@ class Body(Result):
             rows.append((f"principal axis {i}", "", vector_text(axis)))
         rows.append(("parts", "", str(len(self._loaded.elements))))
         return [Rows.quantities(f"{self.name or self.path}", rows)]
-
-
-def _numbers(element: Any) -> dict[str, Any]:
-    """A body's or a part's mass properties by result name (for `Body._refuse_non_finite`)."""
-    return {
-        "mass": element.mass,
-        "center_of_mass": element.center_of_mass,
-        "inertia": element.inertia_about_com,
-    }
 
 
 def _rotation(axes: Any) -> np.ndarray:

@@ -1,6 +1,7 @@
 """The `Checks` of a spec's ``expect:`` block against its body, as ``rbi check`` gives them: a
 result (:class:`rbi.reprs.Result`) whose ``to_dict()`` is the command's JSON, its CSV one row a
-compared number, its table one line a number with ``ok`` or ``FAIL``."""
+compared number, its table one line a number with ``ok`` or ``FAIL``; and the `Validation` of
+spec files, as ``rbi validate`` reports it."""
 
 from __future__ import annotations
 
@@ -95,3 +96,44 @@ class Checks(Results[Check]):
         ]
         columns = ("quantity", "unit", "expected", "actual", "deviation", "allowed", "")
         return [Rows(f"{body.name or body.path} — check: {verdict}", columns, cells, left=2, kind="check")]
+
+
+class Validation(Results[list[str]]):
+    """The problems `rbi.validate` found in spec files, as ``rbi validate`` reports them: a
+    sequence of each file's problems (one line each; empty for a valid file), with ``files``
+    (each as messages name it: ``-`` is ``<stdin>``) and ``ok`` (every file is valid). Its
+    JSON lists each file with its problems; its CSV is one row a problem (a valid file's row
+    has none)."""
+
+    def __init__(self, files: list[str], problems: list[list[str]]) -> None:
+        self.files = files
+        self._items = problems
+        self.ok: bool = not any(problems)
+
+    def __repr__(self) -> str:
+        return f"<rbi.Validation {len(self)} files, {sum(map(bool, self))} invalid>"
+
+    def to_dict(self) -> dict[str, Any]:
+        return {
+            "ok": self.ok,
+            "files": [{"file": f, "problems": found, "ok": not found} for f, found in zip(self.files, self)],
+        }
+
+    def csv_rows(self) -> list[dict[str, Any]]:
+        return [
+            {"file": f, "ok": not found, "problem": line}
+            for f, found in zip(self.files, self)
+            for line in found or [""]
+        ]
+
+    @property
+    def summary(self) -> str:
+        """One line: ``3 file(s) valid``, or ``2 of 3 file(s) invalid, 3 problem(s)``."""
+        bad, count = sum(map(bool, self)), sum(map(len, self))
+        if not bad:
+            return f"{len(self)} file(s) valid"
+        return f"{bad} of {len(self)} file(s) invalid, {count} problem(s)"
+
+    def rows(self) -> list[Rows]:
+        cells = [(row["file"], "ok" if row["ok"] else row["problem"]) for row in self.csv_rows()]
+        return [Rows(f"validate: {self.summary}", ("file", "problem"), cells)]

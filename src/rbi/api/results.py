@@ -111,6 +111,15 @@ class About:
         ]
 
 
+def _placed(result: Any) -> dict[str, Any]:
+    """The JSON of a result about a point (`Principal`, `Momentum`): its place's header (only
+    ``about`` without one), its declared fields (``json_keys``), then ``uncertainty`` for a
+    spec with ±."""
+    head = result.place.header() if result.place else {"about": result.about}
+    spread = {} if result.uncertainty is None else {"uncertainty": result.uncertainty}
+    return head | result.json_fields() | spread
+
+
 def matrix_rows(title: str, values: Any, unit: str) -> Rows:
     """A 3×3 matrix with a common power-of-ten scale written once in its header."""
     values = without_noise(values)
@@ -204,11 +213,11 @@ class Principal(Result):
     def __repr__(self) -> str:
         return f"Principal(moments={self.moments!r}, axes={self.axes!r}, about={self.about!r})"
 
+    json_keys = ("moments", "axes", "radii_of_gyration")
+
     def to_dict(self) -> dict[str, Any]:
-        values = {k: v for k, v in vars(self).items() if k not in ("about", "place", "uncertainty")}
-        out = (self.place.header() if self.place else {"about": self.about}) | values
+        out = _placed(self)
         if self.uncertainty is not None:
-            out["uncertainty"] = self.uncertainty
             out["warnings"] = out.get("warnings", []) + [
                 f"principal axis {i + 1} is not determined: its moment is within 3 standard uncertainties of another's"
                 for i, deg in enumerate(self.uncertainty["axes_deg"])
@@ -272,10 +281,10 @@ class Momentum(Result):
             f"kinetic_energy={self.kinetic_energy!r})"
         )
 
+    json_keys = ("omega", "com_velocity", "angular_momentum", "angle_deg", "kinetic_energy")
+
     def to_dict(self) -> dict[str, Any]:
-        head = self.place.header() if self.place else {"about": self.about}
-        values = {k: v for k, v in vars(self).items() if k not in ("about", "place", "uncertainty")}
-        return head | values | ({} if self.uncertainty is None else {"uncertainty": self.uncertainty})
+        return _placed(self)
 
     def rows(self) -> list[Rows]:
         place, u = self.place, self.uncertainty
@@ -327,6 +336,8 @@ class Dynamics(Result):
     def __repr__(self) -> str:
         return f"Dynamics(mode={self.mode!r}, alpha={self.alpha!r}, force={self.force!r}, torque={self.torque!r})"
 
+    json_keys = ("omega", "alpha", "point_acceleration", "force", "torque")
+
     def to_dict(self) -> dict[str, Any]:
         body = self.place.body if self.place else None
         return (
@@ -338,7 +349,7 @@ class Dynamics(Result):
                 "about": self.about,
                 "about_label": self.place.label if self.place else "point",
             }
-            | {k: v for k, v in vars(self).items() if k not in ("mode", "about", "held", "place")}
+            | self.json_fields()
         )
 
     def rows(self) -> list[Rows]:

@@ -7,9 +7,7 @@ import sys
 
 import typer
 
-from rbi.api import spec_schema
-from rbi.api import validate as problems_of
-from rbi.cli.each_file import file_label
+import rbi
 from rbi.cli.options import (
     DocumentFormat,
     DocumentFormatOption,
@@ -18,8 +16,8 @@ from rbi.cli.options import (
     PackagePathOption,
     argument,
 )
-from rbi.cli.render import emit, terminal_safe
-from rbi.cli.terminal import status_kept
+from rbi.cli.render import emit_result, terminal_safe
+from rbi.cli.terminal import say, status_kept
 
 
 def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
@@ -33,7 +31,7 @@ def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
     """
 
     indent = 2 if format is DocumentFormat.table else None
-    sys.stdout.write(json.dumps(spec_schema(), indent=indent, ensure_ascii=False) + "\n")
+    sys.stdout.write(json.dumps(rbi.spec_schema(), indent=indent, ensure_ascii=False) + "\n")
 
 
 def validate(
@@ -54,28 +52,14 @@ def validate(
       rbi validate top.yaml wheel.yaml --format json
     """
 
-    problems = problems_of(files, package_paths=package_path)
-    reports = [{"file": file_label(path), "problems": found} for path, found in zip(files, problems)]
-    bad = [r for r in reports if r["problems"]]
-    count = sum(len(r["problems"]) for r in reports)
-    with status_kept(2 if bad else 0):  # a reader that left does not make the files valid
-        if format is OutputFormat.table:
-            for report in reports:
-                for line in report["problems"]:
-                    print(terminal_safe(line))
-            summary = (
-                f"{len(files)} file(s) valid"
-                if not bad
-                else f"{len(bad)} of {len(files)} file(s) invalid, {count} problem(s)"
-            )
-            print(f"rbi: {summary}", file=sys.stderr)
+    validation = rbi.validate(files, package_paths=package_path)
+    with status_kept(0 if validation.ok else 2):  # a reader that left does not make the files valid
+        if format is not OutputFormat.table:
+            emit_result(format.value, validation)
         else:
-            result = {"ok": not bad, "files": [r | {"ok": not r["problems"]} for r in reports]}
-            rows = [
-                {"file": r["file"], "ok": not r["problems"], "problem": line}
-                for r in reports
-                for line in (r["problems"] or [""])
-            ]
-            emit(format.value, result, lambda: None, csv_rows=rows)
-    if bad:
+            for problems in validation:
+                for line in problems:
+                    print(terminal_safe(line))
+            say(validation.summary)
+    if not validation.ok:
         raise typer.Exit(2)
