@@ -126,16 +126,6 @@ def check_samples(samples: Any, most: int = MAX_SAMPLES, what: str = "") -> int:
     return int(samples)
 
 
-def validate_run(duration: Any, samples: Any, rtol: Any, method: Any) -> None:
-    """The kernel's guard: ArgumentError (a ValueError) for a run that cannot be made, in the
-    words the API uses (:mod:`rbi.runs.run` checks the same settings with these functions
-    before any work)."""
-    check_duration(duration)
-    check_samples(samples)
-    check_rtol(rtol)
-    check_method(method)
-
-
 def simulate(
     scene: Scene,
     q0,
@@ -160,7 +150,12 @@ def simulate(
     spaced times (a plot's), as the result's ``dense`` (the default and exact methods, whose
     dense output does not change the steps: the ``samples`` are the same bit for bit).
     """
-    validate_run(duration, samples, rtol, method)
+    # the kernel's guard: ArgumentError (a ValueError) for a run that cannot be made, in the words
+    # the API uses (rbi.runs.run checks the same settings with these functions before any work)
+    check_duration(duration)
+    check_samples(samples)
+    check_rtol(rtol)
+    check_method(method)
     q0 = np.asarray(q0, dtype=float)
     q0 = q0 / np.linalg.norm(q0)
     omega0 = np.asarray(omega0, dtype=float).reshape(3)
