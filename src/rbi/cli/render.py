@@ -18,18 +18,14 @@ from rbi.cli.terminal import say, terminal_safe
 
 
 class Document(rbi.Result):
-    """A command's result given as a dict (``data``, made JSON-ready by :class:`rbi.Result`)
-    with its CSV rows (``csv``, default the one object), for the commands whose API call
-    returns no :class:`rbi.Result`."""
+    """A row given as a dict (``data``, made JSON-ready by :class:`rbi.Result`): its CSV is
+    the one object, flattened (several files' rows, :mod:`rbi.cli.each_file`)."""
 
-    def __init__(self, data: dict[str, Any], csv: list[dict[str, Any]] | None = None) -> None:
-        self.data, self.csv = data, csv
+    def __init__(self, data: dict[str, Any]) -> None:
+        self.data = data
 
     def to_dict(self) -> dict[str, Any]:
         return self.data
-
-    def csv_rows(self) -> list[dict[str, Any]]:
-        return self.csv if self.csv is not None else [self.to_dict()]
 
 
 def _color_system() -> str | None:
@@ -65,17 +61,6 @@ def _safe_console(**options):
                     yield segment if text is segment.text else Segment(text, segment.style, segment.control)
 
     return SafeConsole(**options)
-
-
-def emit(
-    fmt: str,
-    result: dict[str, Any],
-    table: Callable[[], Any],
-    csv_rows: list[dict[str, Any]] | None = None,
-    source: str | None = None,
-) -> None:
-    """:func:`emit_result` of a result given as a dict (see :class:`Document`)."""
-    emit_result(fmt, Document(result, csv_rows), source, table=table)
 
 
 def emit_result(
