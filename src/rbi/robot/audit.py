@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import InitVar, dataclass, field
-from typing import Any, NamedTuple
+from typing import Any
 
 import numpy as np
 
@@ -412,28 +412,19 @@ class AuditedLinks:
         shapes = _one_primitive(self.model, settings.geometry, columns)
         if shapes is None:
             return
-        known = []
-        for key in shapes.distinct:
-            try:
-                known.append((*primitive(*key), half_extent(*key)))
-            except ValueError:
-                known.append((np.nan, np.full(3, np.nan), np.full(3, np.nan)))
-        measure = np.array([found[0] for found in known], dtype=float)[shapes.which]
-        moments = stacked([found[1] for found in known], (3,))[shapes.which]
-        half = stacked([found[2] for found in known], (3,))[shapes.which]
-        R, p = shapes.R, shapes.p
+        shape_rows, measure, moments, half, R, p, sources = shapes
         turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
         inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
         corners = stack_apply(np.abs(R), half)
         with np.errstate(all="ignore"):
             fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
             fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
-        rows, at = np.asarray(shapes.rows)[fine], np.flatnonzero(fine)
+        rows, at = np.asarray(shape_rows)[fine], np.flatnonzero(fine)
         measure, inertia, p, corners = measure[fine], inertia[fine] + 0.0, p[fine], corners[fine]
         self.measured[rows], self.volume[rows] = True, measure
         self.com[rows], self.low[rows], self.high[rows] = p + 0.0, p - corners, p + corners
         for row, k in zip(rows.tolist(), at.tolist()):
-            self.sources[row] = shapes.sources[k]
+            self.sources[row] = sources[k]
         declared = np.where(columns.declared, columns.inertials.mass, 0.0)[rows]
         given = declared > 0
         density = settings.density
@@ -668,23 +659,13 @@ def _pieces(
     return geometry if first else other, pieces, parts
 
 
-class _Shapes(NamedTuple):
-    """The links whose geometry (as :func:`_pieces` chooses it) is one solid primitive:
-    their ``rows``, each one's shape (``distinct[which[k]]``: kind and size in m), pose in the
-    link frame (``R`` (k, 3, 3), ``p`` (k, 3)) and ``sources`` (collision or visual)."""
-
-    rows: list[int]
-    distinct: list[tuple[str, tuple]]
-    which: np.ndarray
-    R: np.ndarray
-    p: np.ndarray
-    sources: list[str]
-
-
-def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> _Shapes | None:
-    """The :class:`_Shapes` of a URDF or SDF model (None: none, or MJCF): each link's ``geometry``
-    elements, or the other kind's when it has none of those (as :func:`_pieces` chooses),
-    when they are one solid primitive; what :func:`_primitives_in_bulk` measures."""
+def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> tuple | None:
+    """The links of a URDF or SDF model (None: none, or MJCF) whose geometry (``geometry``
+    elements, or the other kind's when it has none of those, as :func:`_pieces` chooses) is one
+    solid primitive, what :meth:`AuditedLinks._measure_in_bulk` measures: their rows, each
+    one's volume, principal moments at density 1 (k, 3) and half extents (k, 3) in its own axes
+    (:func:`primitive`, :func:`half_extent`; NaN where they refuse its size), its pose in the
+    link frame (``R`` (k, 3, 3), ``p`` (k, 3)) and its source (collision or visual)."""
     if geometry == "none" or model.format == "mjcf":
         return None
     other = "visual" if geometry == "collision" else "collision"
@@ -713,4 +694,13 @@ def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> _Sha
         sources += [column.tag] * len(at)
     if not rows:
         return None
-    return _Shapes(rows, list(distinct), np.concatenate(which), np.concatenate(R), np.concatenate(p), sources)
+    known = []
+    for key in distinct:
+        try:
+            known.append((*primitive(*key), half_extent(*key)))
+        except ValueError:
+            known.append((np.nan, np.full(3, np.nan), np.full(3, np.nan)))
+    pick = np.concatenate(which)
+    measure = np.array([found[0] for found in known], dtype=float)[pick]
+    moments, half = (stacked([found[k] for found in known], (3,))[pick] for k in (1, 2))
+    return rows, measure, moments, half, np.concatenate(R), np.concatenate(p), sources
