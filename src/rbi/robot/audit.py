@@ -343,7 +343,7 @@ def audit_model(model: RobotModel, settings: AuditSettings | None = None, **opti
         totals(model, settings.joints, placed),
         notes,
         settings,
-        joints=joint_torques(model, settings.joints, placed),
+        joints=joint_torques(model, placed),
         left_out=_left_out(model, columns),
     )
 

@@ -19,10 +19,8 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbi.formats.robot import RobotModel
-from rbi.robot.tree import dot_rows, heavy_links, placement, stack_apply
-
-STANDARD_GRAVITY = 9.81
-"""m/s², along −z of the root link's frame for URDF and SDF."""
+from rbi.robot.tree import dot_rows, heavy_links, stack_apply
+from rbi.spec.units import STANDARD_GRAVITY_SI
 
 
 @dataclass
@@ -42,11 +40,9 @@ class JointTorque:
         return None if self.effort_limit is None else self.effort_limit - abs(self.torque)
 
 
-def joint_torques(model: RobotModel, joints: dict[str, float] | None = None, at=None) -> list[JointTorque]:
-    """The holding torque of every revolute and prismatic joint at ``joints`` (name → value;
-    the others at the reference configuration), in file order of their links. ``at``: the links
-    already placed there (:func:`rbi.robot.tree.placement`)."""
-    placed = placement(model, joints) if at is None else at
+def joint_torques(model: RobotModel, placed) -> list[JointTorque]:
+    """The holding torque of every revolute and prismatic joint with the links ``placed`` at a
+    configuration (:func:`rbi.robot.tree.placement`), in file order of their links."""
     gravity = _gravity(model)
     mass, moment = _subtree_sums(model, placed)
     to_frame = placed.to_frame
@@ -86,8 +82,8 @@ def _gravity(model: RobotModel) -> np.ndarray:
     """Gravity (m/s²) in the frame the torques are computed in: MJCF's ``<option gravity>`` in
     the world frame, else −9.81 z of the root link's frame."""
     if model.format == "mjcf":
-        return np.asarray(model.options.get("gravity", [0.0, 0.0, -9.81]), dtype=float)
-    return np.array([0.0, 0.0, -STANDARD_GRAVITY])
+        return np.asarray(model.options.get("gravity", [0.0, 0.0, -STANDARD_GRAVITY_SI]), dtype=float)
+    return np.array([0.0, 0.0, -STANDARD_GRAVITY_SI])
 
 
 def _subtree_sums(model: RobotModel, placed) -> tuple[np.ndarray, np.ndarray]:
