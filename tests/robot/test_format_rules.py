@@ -537,9 +537,9 @@ def test_sdf_joints_that_form_a_loop_are_refused(tmp_path):
 
 def test_a_link_whose_parent_is_no_link_is_refused_by_the_tree():
     from rbi.errors import InputError
-    from rbi.formats.robot import Link, tree_rows
+    from rbi.formats.robot import tree_rows
 
-    assert tree_rows("r.urdf", [Link(0, "a"), Link(1, "b", parent="a")]) == ([2, 0], [0, 1])
+    assert tree_rows("r.urdf", "link", ["a", "b"], [None, "a"]) == ([2, 0], [0, 1])
     with pytest.raises(InputError) as refused:
-        tree_rows("r.urdf", [Link(0, "a"), Link(1, "b", parent="x")])
+        tree_rows("r.urdf", "link", ["a", "b"], [None, "x"])
     assert str(refused.value) == "r.urdf: link[1] (b): parent 'x': no link has that name"

@@ -156,8 +156,7 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
     model = read_urdf(robot_xml.read_xml(str(path))) if careful else read_robot(str(path))
     if careful:
-        assert model.links  # made now: the audit reads them, not the columns
-    assert (model.in_columns is None) == careful
+        assert model.links  # made now: the audit reads the columns all the same
     bulk = audit_model(model, density=density)
     monkeypatch.setattr(sys.modules[_one_primitive.__module__], "_one_primitive", lambda *args: None)
     one_by_one = audit_model(model, density=density)
@@ -250,20 +249,21 @@ def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
     Below the unnamed body are its own children, not the roots (the walk once looked them up by
     the body's name, None, which is what a root's parent is). Two roots sharing a name are no
     tree of the links' keys: refused, in one line."""
-    from rbi.formats.robot import Inertial, Link, LinkColumns
+    from rbi.formats.robot import Inertial, LinkTable
     from rbi.robot.audit import _carried
 
     heavy = Inertial(MassProperties(1.0, np.zeros(3), np.eye(3) * 0.01), np.eye(3) * 0.01)
-    links = [Link(0, "base", heavy, word="body"), Link(1, "a", parent="base", word="body")]
-    links.append(Link(2, None, parent="a", word="body"))
-    links.append(Link(3, "c", parent=links[2].key, word="body"))
+    table = LinkTable("body")
+    for name in ("base", "a", None, "c") + (("d", "d") if shared_name else ()):
+        table.add(name, None)
+    table.inertials[0] = heavy
+    table.parents[1:4] = ["base", "a", table.key(2)]
     if shared_name:
-        links += [Link(4, "d", word="body"), Link(5, "d", word="body")]
         message = (
             "m.xml: body[5] (d): duplicate body name 'd' (also body[4] (d)); every body needs its own name"
         )
         with pytest.raises(InputError) as refused:
-            LinkColumns.of_links("m.xml", links)
+            table.columns("m.xml")
         assert str(refused.value) == message
         return
-    assert _carried(LinkColumns.of_links("m.xml", links)) == [False, False, False, False]
+    assert _carried(table.columns("m.xml")) == [False, False, False, False]

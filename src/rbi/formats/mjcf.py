@@ -38,7 +38,7 @@ from rbi.formats.paths import spec_relative_file
 from rbi.formats.robot import (
     Geom,
     Inertial,
-    Link,
+    LinkTable,
     Motion,
     Pose,
     RobotModel,
@@ -46,6 +46,7 @@ from rbi.formats.robot import (
     angles,
     check_inertia_range,
     check_unique_joint_names,
+    element_label,
     from_six,
     number,
     numbers,
@@ -128,7 +129,6 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     The geoms are always read (they give the bodies their mass); ``geometry`` is ignored."""
     path = document.path
     root = _expanded(document)
-    model = RobotModel(path, "mjcf", root.get("model"), document=document)
     compiler = Compiler()
     for element in root.iter("compiler"):
         compiler.read(Where(path), element)
@@ -142,26 +142,28 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     defaults = _defaults(root)
     meshes = _mesh_assets(path, root, defaults, compiler)
     document.includes.extend(os.path.realpath(m["file"]) for m in meshes.values() if "file" in m)
-    reader = _Bodies(model, compiler, defaults, meshes)
+    table = LinkTable("body")
+    reader = _Bodies(path, table, compiler, defaults, meshes)
     for world in root.all("worldbody"):
         reader.children(world, Pose.identity(), None, "main")
-    refuse_shared_keys(path, model.links)
-    check_unique_joint_names(path, model.links, "MuJoCo's compiler")
-    _actuator_limits(model, root, defaults)
-    model.options["gravity"] = _gravity(path, root)
-    model.options["boundinertia"] = compiler.boundinertia
-    _compile_inertia(model, compiler, reader.geoms)
-    _check_moving_bodies(model)
-    return model
+    refuse_shared_keys(path, "body", table.names)
+    joints = [(table.label(row), m.name) for row, motions in enumerate(table.motions) for m in motions]
+    check_unique_joint_names(path, joints, "MuJoCo's compiler")
+    _actuator_limits(path, table, root, defaults)
+    options = {"gravity": _gravity(path, root), "boundinertia": compiler.boundinertia}
+    notes = _compile_inertia(path, table, compiler, reader.geoms)
+    _check_moving_bodies(path, table)
+    columns = table.columns(path)
+    return RobotModel(path, "mjcf", root.get("model"), columns, notes, document=document, options=options)
 
 
 ACTUATORS = ("general", "motor", "position", "velocity", "intvelocity", "damper", "cylinder", "muscle")
 
 
-def _actuator_limits(model: RobotModel, root, defaults) -> None:
+def _actuator_limits(path: str, table: LinkTable, root, defaults) -> None:
     """A joint without ``actuatorfrcrange`` takes the force ranges of the actuators that drive
     it, each times its gear (the joint's effort is the actuator's force times the gear)."""
-    motions = {m.name: m for link in model.links for m in link.motions if m.name}
+    motions = {m.name: m for each in table.motions for m in each if m.name}
     found: dict[str, float] = {}
     for block in root.all("actuator"):
         for element in block.children:
@@ -175,7 +177,7 @@ def _actuator_limits(model: RobotModel, root, defaults) -> None:
                 or attrs.get("forcelimited") == "false"
             ):
                 continue
-            where = Where(model.path, f"actuator {short(attrs.get('name') or joint)!r}")
+            where = Where(path, f"actuator {short(attrs.get('name') or joint)!r}")
             low, high = numbers(where, attrs["forcerange"], "forcerange", 2)
             gear = numbers(where, attrs.get("gear", "1"), "gear", (1, 2, 3, 4, 5, 6))[0]
             found[joint] = found.get(joint, 0.0) + max(abs(low), abs(high)) * abs(gear)
@@ -201,32 +203,33 @@ MJ_MINVAL = 1e-15
 """MuJoCo's ``mjMINVAL``: a moving body's mass and principal moments must be at least this."""
 
 
-def _heavy_enough(link, welded: dict[str, list]) -> bool:
-    """Whether the body can carry a joint, as MuJoCo's compiler decides it: its compiled mass and
-    every principal moment are at least :data:`MJ_MINVAL` (kg, kg·m²), or so are those of a body
-    welded to it (a child without a joint, or that child's welded children, and so on)."""
-    inertial = link.inertial
+def _heavy_enough(table: LinkTable, row: int, welded: dict[str, list[int]]) -> bool:
+    """Whether the body of ``row`` can carry a joint, as MuJoCo's compiler decides it: its
+    compiled mass and every principal moment are at least :data:`MJ_MINVAL` (kg, kg·m²), or so
+    are those of a body welded to it (a child without a joint, or that child's welded children,
+    and so on)."""
+    inertial = table.inertials[row]
     if (
         inertial is not None
         and inertial.mass >= MJ_MINVAL
         and np.linalg.eigvalsh(inertial.written_inertia).min() >= MJ_MINVAL
     ):
         return True
-    return any(_heavy_enough(child, welded) for child in welded.get(link.key, ()))
+    return any(_heavy_enough(table, child, welded) for child in welded.get(table.key(row), ()))
 
 
-def _check_moving_bodies(model: RobotModel) -> None:
+def _check_moving_bodies(path: str, table: LinkTable) -> None:
     """InputError for a body moved by a joint that cannot carry it (:func:`_heavy_enough`), as
     MuJoCo's compiler refuses it ("mass and inertia of moving bodies must be
     larger than mjMINVAL")."""
-    welded: dict[str, list] = {}
-    for child in model.links:
-        if child.parent is not None and not child.motions:
-            welded.setdefault(child.parent, []).append(child)
-    for link in model.links:
-        if not link.motions or _heavy_enough(link, welded):
+    welded: dict[str, list[int]] = {}
+    for child, parent in enumerate(table.parents):
+        if parent is not None and not table.motions[child]:
+            welded.setdefault(parent, []).append(child)
+    for row, motions in enumerate(table.motions):
+        if not motions or _heavy_enough(table, row, welded):
             continue
-        inertial = link.inertial
+        inertial = table.inertials[row]
         mass = inertial.mass if inertial is not None else 0.0
         geoms = inertial is not None and inertial.source == "geoms"
         source = "its geoms give it" if geoms else "its <inertial> has"
@@ -237,7 +240,7 @@ def _check_moving_bodies(model: RobotModel) -> None:
         else:
             why = f"{source} no inertia" if geoms else f"{source} a zero moment"
         raise InputError(
-            f"{model.path}: {link.label}: moved by a joint but {why}; MuJoCo's compiler refuses it "
+            f"{path}: {table.label(row)}: moved by a joint but {why}; MuJoCo's compiler refuses it "
             "(mass and inertia of moving bodies must be larger than 1e-15): give it an <inertial> or a geom with mass"
         )
 
@@ -347,13 +350,19 @@ def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dic
 
 
 class _Bodies:
-    def __init__(self, model: RobotModel, compiler: Compiler, defaults, meshes):
-        self.model, self.compiler, self.defaults, self.meshes = model, compiler, defaults, meshes
+    def __init__(self, path: str, table: LinkTable, compiler: Compiler, defaults, meshes):
+        self.path, self.table, self.compiler, self.defaults, self.meshes = (
+            path,
+            table,
+            compiler,
+            defaults,
+            meshes,
+        )
         self.geoms: dict[int, list[tuple[Geom, int]]] = {}
 
-    def children(self, element, frame: Pose, link: Link | None, active_class: str) -> None:
+    def children(self, element, frame: Pose, link: int | None, active_class: str) -> None:
         """Read the bodies, geoms and joints inside ``element``, whose children are placed by
-        ``frame`` in the frame of ``link`` (None: the world)."""
+        ``frame`` in the frame of the body of row ``link`` (None: the world)."""
         for child in element.children:
             if child.tag == "body":
                 self.body(child, frame, link, active_class)
@@ -364,13 +373,12 @@ class _Bodies:
             elif child.tag == "geom" and link is not None:
                 self.geom(child, frame, link, active_class)
 
-    def body(self, element, frame: Pose, parent: Link | None, active_class: str) -> None:
-        attrs = dict(element.attrib)
-        link = Link(len(self.model.links), element.get("name"), element=element, word="body")
-        where = Where(self.model.path, link.label)
-        link.parent = parent.key if parent is not None else None
-        link.origin = frame.then(self.pose(element, attrs, where))
-        self.model.links.append(link)
+    def body(self, element, frame: Pose, parent: int | None, active_class: str) -> None:
+        attrs, table = dict(element.attrib), self.table
+        link = table.add(element.get("name"), element)
+        where = Where(self.path, table.label(link))
+        table.parents[link] = table.key(parent) if parent is not None else None
+        table.origins[link] = frame.then(self.pose(element, attrs, where))
         inner_class = element.get("childclass", active_class)
         if inner_class not in self.defaults:
             raise where.error(f"childclass {short(inner_class)!r}: no <default class> of that name")
@@ -378,16 +386,18 @@ class _Bodies:
             if child.tag == "joint":
                 self.joint(where, child, link, inner_class)
             elif child.tag == "freejoint":
-                link.motions.append(Motion(child.get("name"), "free", np.array([1.0, 0, 0]), np.zeros(3)))
+                table.motions[link].append(
+                    Motion(child.get("name"), "free", np.array([1.0, 0, 0]), np.zeros(3))
+                )
             elif child.tag == "inertial":
-                link.inertial = self.inertial(where, child)
-        _check_degrees_of_freedom(where, link, parent)
-        self.geoms[link.index] = []
+                table.inertials[link] = self.inertial(where, child)
+        _check_degrees_of_freedom(where, table.motions[link], parent)
+        self.geoms[link] = []
         self.children(element, Pose.identity(), link, inner_class)
 
     def pose(self, element, attrs, where: Where | None = None) -> Pose:
         if where is None:
-            where = Where(self.model.path, f"<{element.tag}> (line {element.line})")
+            where = Where(self.path, f"<{element.tag}> (line {element.line})")
         pos = numbers(where, attrs.get("pos", "0 0 0"), "pos", 3)
         return Pose(self.orientation(where, attrs), np.array(pos, dtype=float))
 
@@ -424,7 +434,7 @@ class _Bodies:
             return np.column_stack([x, y, np.cross(x, y)])
         return z_to(unit(where, numbers(where, value, "zaxis", 3), "zaxis"))
 
-    def joint(self, where: Where, element, link: Link, active_class: str) -> None:
+    def joint(self, where: Where, element, link: int, active_class: str) -> None:
         attrs = _attributes(element, self.defaults, active_class)
         kind = attrs.get("type", "hinge")
         pos = np.array(numbers(where, attrs.get("pos", "0 0 0"), "joint: pos", 3))
@@ -442,7 +452,9 @@ class _Bodies:
         if attrs.get("actuatorfrcrange") is not None and attrs.get("actuatorfrclimited", "auto") != "false":
             low, high = numbers(where, attrs["actuatorfrcrange"], "joint: actuatorfrcrange", 2)
             effort = max(abs(low), abs(high)) or None
-        link.motions.append(Motion(attrs.get("name"), motion, vector, pos, ref, effort_limit=effort))
+        self.table.motions[link].append(
+            Motion(attrs.get("name"), motion, vector, pos, ref, effort_limit=effort)
+        )
 
     def inertial(self, where: Where, element) -> Inertial:
         attrs = element.attrib
@@ -469,12 +481,10 @@ class _Bodies:
         check_inertia_range(where, inertia)
         return Inertial.read(mass, pos, inertia, rotation=rotation, quaternion=quaternion, element=element)
 
-    def geom(self, element, frame: Pose, link: Link, active_class: str) -> None:
+    def geom(self, element, frame: Pose, link: int, active_class: str) -> None:
         attrs = _attributes(element, self.defaults, active_class)
-        index = len(self.geoms[link.index])
-        name = attrs.get("name")
-        label = f"geom[{index}]" + (f" ({short(name)})" if name else "")
-        where = Where(self.model.path, f"{link.label}: {label}")
+        label = element_label("geom", len(self.geoms[link]), attrs.get("name") or None)
+        where = Where(self.path, f"{self.table.label(link)}: {label}")
         kind = attrs.get("type", "sphere")
         if kind not in GEOM_KINDS:
             raise where.error(f"type: {short(kind)!r}: not a MuJoCo geom type ({', '.join(GEOM_KINDS)})")
@@ -507,9 +517,9 @@ class _Bodies:
             geom.mesh_file, geom.mesh_scale, geom.mesh_inertia = asset["file"], asset["scale"], asset["mode"]
         positive(where, geom.size, "size", allow_zero=True)
         in_group = self.compiler.group_range[0] <= group <= self.compiler.group_range[1]
-        self.geoms[link.index].append((geom, in_group))
+        self.geoms[link].append((geom, in_group))
         if in_group:
-            link.collisions.append(geom)
+            self.table.collisions[link].append(geom)
 
     def geom_frame(self, where: Where, attrs, kind: str, size: list[float]) -> tuple[Pose, list[float]]:
         fromto = attrs.get("fromto")
@@ -550,74 +560,75 @@ def z_to(direction) -> np.ndarray:
 # --- compiled mass properties ---------------------------------------------------------------
 
 
-def _compile_inertia(model: RobotModel, compiler: Compiler, geoms) -> None:
-
-    for link in model.links:
-        explicit = link.inertial
+def _compile_inertia(path: str, table: LinkTable, compiler: Compiler, geoms) -> list[str]:
+    """Each body's compiled mass properties into ``table``; the notes on ``<inertial>`` elements
+    MuJoCo ignores."""
+    notes = []
+    inertials = table.inertials
+    for row, explicit in enumerate(inertials):
         use_geoms = compiler.inertiafromgeom == "true" or (
             compiler.inertiafromgeom == "auto" and explicit is None
         )
         if use_geoms:
             props = geoms_sum(
-                [geom for geom, counts in geoms.get(link.index, []) if counts],
+                [geom for geom, counts in geoms.get(row, []) if counts],
                 lambda geom, measure: geom.density if geom.mass is None else geom.mass / measure,
-                f"{model.path}: {link.label}: ",
+                f"{path}: {table.label(row)}: ",
                 "exact",
                 as_mujoco=True,
             )
             if props is not None:
-                link.inertial = Inertial(props, props.inertia_about_com, element=None, source="geoms")
+                inertials[row] = Inertial(props, props.inertia_about_com, element=None, source="geoms")
                 if explicit is not None:
-                    model.notes.append(
-                        f'{model.path}: {link.label}: <inertial> ignored: inertiafromgeom="true" '
+                    notes.append(
+                        f'{path}: {table.label(row)}: <inertial> ignored: inertiafromgeom="true" '
                         "takes the mass properties from the geoms, as MuJoCo does"
                     )
             elif explicit is not None and compiler.inertiafromgeom == "true":
-                link.inertial = None
-        if link.inertial is not None and (compiler.boundmass > 0 or compiler.boundinertia > 0):
-            _bound(link, compiler)
-        if link.inertial is not None and compiler.balanceinertia == "true":
-            _balance(link)
+                inertials[row] = None
+        inertial = inertials[row]
+        if inertial is not None and (compiler.boundmass > 0 or compiler.boundinertia > 0):
+            inertial = inertials[row] = _bound(inertial, compiler)
+        if inertial is not None and compiler.balanceinertia == "true":
+            inertials[row] = _balance(inertial)
     if compiler.settotalmass > 0:
-        total = sum(link.inertial.mass for link in model.links if link.inertial is not None)
+        total = sum(inertial.mass for inertial in inertials if inertial is not None)
         if total > 0:
             scale = compiler.settotalmass / total
-            for link in model.links:
-                if link.inertial is not None:
-                    inertial = link.inertial
-                    link.inertial = replace(
+            for row, inertial in enumerate(inertials):
+                if inertial is not None:
+                    inertials[row] = replace(
                         inertial,
                         properties=inertial.properties.scaled(scale),
                         written_inertia=inertial.written_inertia * scale,
                     )
+    return notes
 
 
-def _balance(link: Link) -> None:
+def _balance(inertial: Inertial) -> Inertial:
     """``<compiler balanceinertia="true">``: a body whose principal moments break the triangle
     inequality (one larger than the sum of the other two) gets their mean as all three, as
     MuJoCo's compiler does (kg·m², about the body's centre of mass)."""
-    inertial = link.inertial
     a, b, c = np.linalg.eigvalsh(inertial.properties.inertia_about_com)
     if a + b < c or a + c < b or b + c < a:
         mean = (a + b + c) / 3.0
         com = inertial.properties.center_of_mass
-        link.inertial = Inertial.read(
+        return Inertial.read(
             inertial.mass, com, mean * np.eye(3), element=inertial.element, source=inertial.source
         )
+    return inertial
 
 
-def _bound(link: Link, compiler: Compiler) -> None:
-    inertial = link.inertial
+def _bound(inertial: Inertial, compiler: Compiler) -> Inertial:
     mass = max(inertial.mass, compiler.boundmass)
     com = inertial.properties.center_of_mass
     if compiler.boundinertia > 0:
         moments, axes = np.linalg.eigh(inertial.properties.inertia_about_com)
         moments = np.maximum(moments, compiler.boundinertia)
         inertia = (axes * moments) @ axes.T
-        link.inertial = Inertial.read(mass, com, inertia, element=inertial.element, source=inertial.source)
-        return
+        return Inertial.read(mass, com, inertia, element=inertial.element, source=inertial.source)
     properties = MassProperties(mass, com, inertial.properties.inertia_about_com, "link")
-    link.inertial = replace(inertial, properties=properties)
+    return replace(inertial, properties=properties)
 
 
 JOINT_MOTIONS = {"hinge": "revolute", "slide": "prismatic", "ball": "ball", "free": "free"}
@@ -628,11 +639,11 @@ _JOINT_TYPES = {motion: joint_type for joint_type, motion in JOINT_MOTIONS.items
 _DEGREES_OF_FREEDOM = {"free": 6, "ball": 3, "revolute": 1, "prismatic": 1}
 
 
-def _check_degrees_of_freedom(where: Where, link: Link, parent: Link | None) -> None:
+def _check_degrees_of_freedom(where: Where, motions: list[Motion], parent: int | None) -> None:
     """MuJoCo's compiler refuses a free joint below the top level of <worldbody>, a body with
     more than six degrees of freedom, and a ball joint followed by a hinge or ball in the same
     body; so does rbi, in MuJoCo's terms."""
-    kinds = [motion.kind for motion in link.motions]
+    kinds = [motion.kind for motion in motions]
     words = [_JOINT_TYPES.get(kind, kind) for kind in kinds]
     if "free" in kinds and parent is not None:
         raise where.error(

@@ -152,40 +152,67 @@ class Motion:
     """The declared limit of the joint's effort (N·m revolute, N prismatic), or None."""
 
 
-@dataclass
-class Link:
-    """A link (MJCF: body): ``index`` in file order, ``name``, ``inertial`` (None when it
-    declares none), ``collisions`` and ``visuals``, ``parent`` (a link's :attr:`key`, None for a root),
-    ``origin`` (its frame in the parent's at the reference configuration; for a root, in the
-    model frame), ``motions`` (the joints between it and its parent; empty when fixed) and the
-    XML ``element``."""
+def element_label(tag: str, index: int, name: str | None) -> str:
+    """How a message names the ``index``-th element of a kind: ``tag[index]``, then its
+    ``(name)`` when it has one (None: none)."""
+    return f"{tag}[{index}]" + (f" ({short(name)})" if name is not None else "")
 
+
+def link_key(word: str, index: int, name: str | None) -> str:
+    """How other links refer to a link (its parent's key): its name, or for an unnamed MJCF
+    body its place in the file (with a NUL, so no name can equal it)."""
+    return name if name is not None else f"\0{word}[{index}]"
+
+
+@dataclass(frozen=True, eq=False)
+class Link:
+    """One link (MJCF: body) of a model: row ``index`` (file order) of its :class:`LinkColumns`
+    seen alone, each value read from the columns when asked for: ``name``, ``inertial`` (None
+    when it declares none), ``collisions`` and ``visuals``, the XML ``element`` and whether a
+    joint ``moves`` it."""
+
+    columns: LinkColumns
     index: int
-    name: str | None
-    inertial: Inertial | None = None
-    collisions: list[Geom] = field(default_factory=list)
-    visuals: list[Geom] = field(default_factory=list)
-    parent: str | None = None
-    origin: Pose = field(default_factory=Pose.identity)
-    motions: list[Motion] = field(default_factory=list)
-    element: Any = None
-    word: str = "link"
+
+    @property
+    def name(self) -> str | None:
+        return self.columns.names[self.index]
 
     @property
     def label(self) -> str:
-        return f"{self.word}[{self.index}]" + (f" ({short(self.name)})" if self.name is not None else "")
+        return element_label(self.columns.word, self.index, self.name)
 
     @property
-    def key(self) -> str:
-        """How other links refer to this one (``parent``): its name, or for an unnamed MJCF body
-        its place in the file (with a NUL, so no name can equal it)."""
-        return self.name if self.name is not None else f"\0{self.word}[{self.index}]"
+    def element(self) -> Any:
+        elements = self.columns.elements
+        return None if elements is None else elements[self.index]
+
+    @property
+    def inertial(self) -> Inertial | None:
+        columns, row = self.columns, self.index
+        found = columns.records.get(row)
+        if found is not None or not columns.declared[row]:
+            return found
+        element = self.element
+        inertial = None if element is None else element.child("inertial")
+        return Inertial(columns.inertials[row], columns.written[row], element=inertial)
+
+    @functools.cached_property
+    def collisions(self) -> list[Geom]:
+        return self.columns.geoms_of(self.index, "collision")
+
+    @functools.cached_property
+    def visuals(self) -> list[Geom]:
+        return self.columns.geoms_of(self.index, "visual")
 
     @property
     def moves(self) -> bool:
         """Does a joint move this link relative to its parent (a root that is not MJCF's free
         body counts as fixed)?"""
-        return self.parent is not None and any(m.kind not in ("fixed",) for m in self.motions)
+        columns = self.columns
+        return columns.parents[self.index] != len(columns) and any(
+            columns.joint_kinds[k] != "fixed" for k in columns.joints_of(self.index)
+        )
 
 
 @dataclass
@@ -193,8 +220,8 @@ class GeomColumn:
     """One ``<collision>`` or ``<visual>`` element (``tag``, ``label`` as :class:`Geom` gives it)
     of links alike: ``rows`` the links' rows, their shape ``kind``, poses (``rotations`` (k, 3, 3),
     ``translations`` (k, 3), link frame), ``sizes`` ((k, m) in m, a row's the :class:`Geom`'s
-    ``size``) or ``meshes`` ((file,
-    scale) a row)."""
+    ``size``) or ``meshes`` ((file, scale) a row); ``pieces``: the :class:`Geom` of each row,
+    when a reader made them (SDF, MJCF)."""
 
     tag: str
     label: str
@@ -204,9 +231,12 @@ class GeomColumn:
     translations: np.ndarray
     sizes: np.ndarray | None = None
     meshes: list[tuple[Path, np.ndarray]] | None = None
+    pieces: list[Geom] | None = None
 
     def geom(self, k: int) -> Geom:
         """The :class:`Geom` of the k-th row."""
+        if self.pieces is not None:
+            return self.pieces[k]
         pose = Pose(self.rotations[k], self.translations[k])
         if self.meshes is not None:
             mesh, scale = self.meshes[k]
@@ -219,18 +249,20 @@ class GeomColumn:
 @dataclass
 class LinkColumns:
     """A model's links as columns, one row a link in file order (its ``index``): the one form
-    rbi.robot reads them in. :mod:`rbi.formats.urdf` reads a URDF into them;
-    :meth:`of_links` lays any links into them. Names, ``parents`` (the parent's row, n for a
-    root), ``order`` (the rows parents first, as :func:`depth_first` gives them), origins
-    (``rotations`` (n, 3, 3), ``translations`` (n, 3), in the parent's frame), the declared
-    inertials (``declared`` (n,) which links have one; ``inertials`` their mass properties in
-    the link frame, one :class:`~rbi.core.mass.MassProperties` stack of n, zero where none is
-    declared; ``written`` (n, 3, 3) the inertias as written; ``turned``: row → the
-    :class:`Inertial` of a rotated inertial frame), the joints,
-    one entry a joint in file order of their links (``joint_rows`` its link's row; a URDF's:
-    one a row, a root's of kind None; names, kinds, unit ``axes`` and ``anchors`` (k, 3) in the
-    link frame, effort limits or None) and the geometry. :meth:`link` makes a row's
-    :class:`Link` (once; of :meth:`of_links`, the link laid in)."""
+    of a model's links. :mod:`rbi.formats.urdf` reads a URDF into them; the SDF and MJCF
+    readers fill a :class:`LinkTable`, stacked into them once. Names, ``parents`` (the parent's
+    row, n for a root), ``order`` (the rows parents first, as :func:`depth_first` gives them;
+    without the rows on a loop, :meth:`RobotModel.link_columns`), origins (``rotations`` (n, 3,
+    3), ``translations`` (n, 3), in the parent's frame), the declared inertials (``declared``
+    (n,) which links have one; ``inertials`` their mass properties in the link frame, one
+    :class:`~rbi.core.mass.MassProperties` stack of n, zero where none is declared; ``written``
+    (n, 3, 3) the inertias as written; ``records``: row → the :class:`Inertial` as read when it
+    holds more than these arrays: a rotated inertial frame, its element or its source), the
+    joints, one entry a joint in file order of their links (``joint_rows`` its link's row; a
+    URDF's: one a row, a root's of kind None; names, kinds, unit ``axes`` and ``anchors`` (k, 3)
+    in the link frame, effort limits or None, ``references``), the geometry, the ``word`` for a
+    link and the links' XML ``elements`` (None: not at hand). :meth:`link` is a row's
+    :class:`Link`."""
 
     names: list[str | None]
     parents: list[int]
@@ -240,34 +272,97 @@ class LinkColumns:
     declared: np.ndarray
     inertials: MassProperties
     written: np.ndarray
-    turned: dict[int, Inertial]
+    records: dict[int, Inertial]
     joint_rows: list[int]
     joint_names: list[str | None]
     joint_kinds: list[str | None]
     axes: np.ndarray
     anchors: np.ndarray
     efforts: list[float | None]
+    references: list[float]
     geoms: list[GeomColumn]
-    made: dict[int, Link] = field(default_factory=dict)
-    geoms_at: list[list[tuple[GeomColumn, int]]] | None = field(default=None, repr=False)
+    word: str = "link"
+    elements: list | None = None
+    _at: dict[str, list] = field(default_factory=dict, repr=False)
 
-    @classmethod
-    def of_links(cls, path: str, links: list[Link]) -> LinkColumns:
-        """The columns of ``links`` (an SDF or MJCF reader's, a URDF's once made), each link
-        its row's :meth:`link`; geoms in one column per tag and kind (kind ``other``, without
-        sizes: a mesh, a shell or a kind with no volume). InputError for links that are no
-        tree (:func:`tree_rows`)."""
-        parents, order = tree_rows(path, links)
+    def __len__(self) -> int:
+        return len(self.names)
+
+    def link(self, row: int) -> Link:
+        """The :class:`Link` of ``row``."""
+        return Link(self, row)
+
+    def links(self) -> list[Link]:
+        """Every row's :class:`Link`, in file order."""
+        return [Link(self, row) for row in range(len(self.names))]
+
+    def joints_of(self, row: int) -> list[int]:
+        """The joints (their places in the joint columns) of the link of ``row``."""
+        if "joints" not in self._at:  # row → its joints, made once
+            self._at["joints"] = found = [[] for _ in self.names]
+            for k, each in enumerate(self.joint_rows):
+                found[each].append(k)
+        return self._at["joints"][row]
+
+    def geoms_of(self, row: int, tag: str) -> list[Geom]:
+        """The ``tag`` (collision or visual) geoms of the link of ``row``, in file order."""
+        if "geoms" not in self._at:  # row → its geoms' (column, place), made once
+            self._at["geoms"] = found = [[] for _ in self.names]
+            for column in self.geoms:
+                for k, each in enumerate(column.rows):
+                    found[each].append((column, k))
+        return [column.geom(k) for column, k in self._at["geoms"][row] if column.tag == tag]
+
+
+class LinkTable:
+    """The links of an SDF or MJCF file as its reader finds them, one row a link: plain lists
+    (``names``; ``parents``, the parent's key, :func:`link_key`, None for a root; ``origins``,
+    ``inertials``, ``motions``, ``collisions``, ``visuals`` and ``elements``, as
+    :class:`LinkColumns` describes them), stacked into :class:`LinkColumns` once by
+    :meth:`columns`."""
+
+    def __init__(self, word: str):
+        self.word = word
+        self.names: list[str | None] = []
+        self.parents: list[str | None] = []
+        self.origins: list[Pose] = []
+        self.inertials: list[Inertial | None] = []
+        self.motions: list[list[Motion]] = []
+        self.collisions: list[list[Geom]] = []
+        self.visuals: list[list[Geom]] = []
+        self.elements: list[Any] = []
+
+    def add(self, name: str | None, element: Any) -> int:
+        """A new link's row: a root at the origin, with nothing declared."""
+        self.names.append(name)
+        self.elements.append(element)
+        for each in (self.parents, self.inertials):
+            each.append(None)
+        self.origins.append(Pose.identity())
+        for each in (self.motions, self.collisions, self.visuals):
+            each.append([])
+        return len(self.names) - 1
+
+    def label(self, row: int) -> str:
+        return element_label(self.word, row, self.names[row])
+
+    def key(self, row: int) -> str:
+        return link_key(self.word, row, self.names[row])
+
+    def columns(self, path: str) -> LinkColumns:
+        """The rows as :class:`LinkColumns` (geoms in one column per tag, place in the link and
+        kind: kind ``other``, without sizes, for a mesh, a shell or a kind with no volume)."""
+        parents, order = tree_rows(path, self.word, self.names, self.parents)
         none = Inertial(MassProperties.zero("link"), np.zeros((3, 3)))
-        inertials = [none if link.inertial is None else link.inertial for link in links]
-        joints = [(row, motion) for row, link in enumerate(links) for motion in link.motions]
-        return cls(
-            [link.name for link in links],
+        inertials = [none if each is None else each for each in self.inertials]
+        joints = [(row, motion) for row, motions in enumerate(self.motions) for motion in motions]
+        return LinkColumns(
+            self.names,
             parents,
             order,
-            stacked([link.origin.rotation for link in links], (3, 3)),
-            stacked([link.origin.translation for link in links], (3,)),
-            np.array([link.inertial is not None for link in links], dtype=bool),
+            stacked([origin.rotation for origin in self.origins], (3, 3)),
+            stacked([origin.translation for origin in self.origins], (3,)),
+            np.array([each is not None for each in self.inertials], dtype=bool),
             MassProperties(
                 np.array([each.mass for each in inertials], dtype=float),
                 stacked([each.properties.center_of_mass for each in inertials], (3,)),
@@ -275,102 +370,70 @@ class LinkColumns:
                 "link",
             ),
             stacked([each.written_inertia for each in inertials], (3, 3)),
-            {},
+            {row: each for row, each in enumerate(self.inertials) if each is not None},
             [row for row, _ in joints],
             [motion.name for _, motion in joints],
             [motion.kind for _, motion in joints],
             stacked([motion.axis for _, motion in joints], (3,)),
             stacked([motion.anchor for _, motion in joints], (3,)),
             [motion.effort_limit for _, motion in joints],
-            _geom_columns(links),
-            dict(enumerate(links)),
+            [motion.reference for _, motion in joints],
+            self._geom_columns(),
+            self.word,
+            self.elements,
         )
 
-    def __len__(self) -> int:
-        return len(self.names)
-
-    def link(self, row: int) -> Link:
-        """The :class:`Link` of ``row`` (the same object each time)."""
-        found = self.made.get(row)
-        if found is None:
-            found = self.made[row] = self._link(row)
-        return found
-
-    def links(self) -> list[Link]:
-        """Every row's :class:`Link`, in file order."""
-        return [self.link(row) for row in range(len(self.names))]
-
-    def _link(self, row: int) -> Link:
-        """A URDF's link of ``row`` (its joint: the row's)."""
-        if self.geoms_at is None:  # row → its geoms' (column, place), made once
-            self.geoms_at = [[] for _ in self.names]
-            for column in self.geoms:
-                for k, each in enumerate(column.rows):
-                    self.geoms_at[each].append((column, k))
-        geoms: dict[str, list[Geom]] = {"collision": [], "visual": []}
-        for column, k in self.geoms_at[row]:
-            geoms[column.tag].append(column.geom(k))
-        inertial = self.turned.get(row)
-        if inertial is None and self.declared[row]:
-            inertial = Inertial(self.inertials[row], self.written[row])
-        parent = self.parents[row]
-        link = Link(row, self.names[row], inertial, geoms["collision"], geoms["visual"])
-        if parent == len(self.names):
-            return link
-        link.parent = self.names[parent]
-        link.origin = Pose(self.rotations[row], self.translations[row])
-        axis = self.axes[row].copy()
-        link.motions = [
-            Motion(
-                self.joint_names[row],
-                self.joint_kinds[row],
-                axis,
-                np.zeros(3),
-                effort_limit=self.efforts[row],
+    def _geom_columns(self) -> list[GeomColumn]:
+        found: dict[tuple[int, str, str], list] = {}
+        for row, pair in enumerate(zip(self.collisions, self.visuals)):
+            for tag, geoms in zip(("collision", "visual"), pair):
+                for place, geom in enumerate(geoms):
+                    kind = geom.kind if geom.kind in SOLID_KINDS and not geom.shell else "other"
+                    found.setdefault((place, tag, kind), []).append((row, geom))
+        return [
+            GeomColumn(
+                tag,
+                "",
+                kind,
+                [row for row, _ in pairs],
+                stacked([geom.pose.rotation for _, geom in pairs], (3, 3)),
+                stacked([geom.pose.translation for _, geom in pairs], (3,)),
+                None if kind == "other" else stacked([g.size for _, g in pairs], (len(pairs[0][1].size),)),
+                pieces=[geom for _, geom in pairs],
             )
+            for (_, tag, kind), pairs in sorted(found.items(), key=lambda item: item[0][0])
         ]
-        return link
 
 
-def refuse_shared_keys(path: str, links: list[Link]) -> dict[str, int]:
-    """Each link's :attr:`Link.key` → its row; InputError, one line naming the first link whose
-    key an earlier link has. The one check of a model's link names: every reader and the tree
-    (:func:`tree_rows`) go through it, so that a parent names one link."""
-    rows = {link.key: row for row, link in enumerate(links)}
-    if len(rows) == len(links):
-        return rows
-    seen: dict[str, Link] = {}
-    for each in links:
-        first = seen.setdefault(each.key, each)
-        if first is not each:
+def refuse_shared_keys(path: str, word: str, names: list[str | None]) -> dict[str, int]:
+    """Each link's key (:func:`link_key`) → its row; InputError, one line naming the first link
+    whose key an earlier link has. The one check of a model's link names: every reader and the
+    tree (:func:`tree_rows`) go through it, so that a parent names one link."""
+    rows: dict[str, int] = {}
+    for row, name in enumerate(names):
+        first = rows.setdefault(link_key(word, row, name), row)
+        if first != row:
             raise InputError(
-                f"{path}: {each.label}: duplicate {each.word} name {short(each.name)!r} "
-                f"(also {first.label}); every {each.word} needs its own name"
+                f"{path}: {element_label(word, row, name)}: duplicate {word} name {short(name)!r} "
+                f"(also {element_label(word, first, names[first])}); every {word} needs its own name"
             )
-    raise AssertionError("two links share a key")  # the count above says so
+    return rows
 
 
-def tree_rows(path: str, links: list[Link]) -> tuple[list[int], list[int]]:
-    """The links' tree: each one's parent row (``len(links)`` for a root) and the rows parents
-    first (:func:`depth_first`). InputError, one line, when two links share a key
-    (:func:`refuse_shared_keys`), a parent is none of the links, or the joints form a loop."""
-    rows = refuse_shared_keys(path, links)
-    n = len(links)
-    parents = [n if link.parent is None else rows.get(link.parent, -1) for link in links]
-    if -1 in parents:
-        link = links[parents.index(-1)]
-        raise InputError(f"{path}: {link.label}: parent {short(link.parent)!r}: no {link.word} has that name")
-    order = depth_first(parents, n)
-    if len(order) < n:  # a link no root reaches: on a loop, or below one
-        at, seen = min(set(range(n)) - set(order)), set()
-        while at not in seen:
-            seen.add(at)
-            at = parents[at]
+def tree_rows(path: str, word: str, names: list[str | None], parents: list[str | None]) -> tuple:
+    """The links' tree (``parents``: each link's parent key, None for a root): each one's
+    parent row (``len(names)`` for a root) and the rows parents first (:func:`depth_first`;
+    without the links on a loop). InputError, one line, when two links share a key
+    (:func:`refuse_shared_keys`) or a parent is none of the links."""
+    rows = refuse_shared_keys(path, word, names)
+    n = len(names)
+    found = [n if key is None else rows.get(key, -1) for key in parents]
+    if -1 in found:
+        row = found.index(-1)
         raise InputError(
-            f"{path}: {links[at].label}: the joints form a loop through it; the links of a robot "
-            "form a tree (each hangs from one parent, down from a root)"
+            f"{path}: {element_label(word, row, names[row])}: parent {short(parents[row])!r}: no {word} has that name"
         )
-    return parents, order
+    return found, depth_first(found, n)
 
 
 def depth_first(parents: list[int], root: int) -> list[int]:
@@ -401,66 +464,42 @@ SOLID_KINDS = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
 """The kinds of geometry that are one solid primitive."""
 
 
-def _geom_columns(links: list[Link]) -> list[GeomColumn]:
-    """The links' ``<collision>`` and ``<visual>`` geoms as :class:`GeomColumn` values, one per
-    tag and kind (a mesh, a shell or a kind with no volume: kind ``other``, without sizes)."""
-    found: dict[tuple[str, str], list] = {}
-    for row, link in enumerate(links):
-        for tag, geoms in (("collision", link.collisions), ("visual", link.visuals)):
-            for geom in geoms:
-                kind = geom.kind if geom.kind in SOLID_KINDS and not geom.shell else "other"
-                found.setdefault((tag, kind), []).append((row, geom))
-    return [
-        GeomColumn(
-            tag,
-            "",
-            kind,
-            [row for row, _ in pairs],
-            stacked([geom.pose.rotation for _, geom in pairs], (3, 3)),
-            stacked([geom.pose.translation for _, geom in pairs], (3,)),
-            None if kind == "other" else stacked([geom.size for _, geom in pairs], (len(pairs[0][1].size),)),
-        )
-        for (tag, kind), pairs in found.items()
-    ]
-
-
 @dataclass
 class RobotModel:
     """A parsed robot file: ``format`` (``urdf``, ``sdf``, ``mjcf``), ``name``, ``links`` in file
     order, ``notes`` (what was read but not checked: unresolved includes, kinds of geometry
     without volume), and ``document`` (the XML with element spans, for a fixed copy).
-    ``columns``: the links as arrays (:class:`LinkColumns`, a URDF), from which
-    :attr:`links` are made when first asked for."""
+    ``columns``: the links as arrays (:class:`LinkColumns`), whose rows are :attr:`links`."""
 
     path: str
     format: str
     name: str | None
+    columns: LinkColumns = field(repr=False)
     notes: list[str] = field(default_factory=list)
     unchecked: list[str] = field(default_factory=list)
     document: Any = None
     options: dict[str, Any] = field(default_factory=dict)
-    columns: LinkColumns | None = field(default=None, repr=False)
-    _links: list[Link] | None = field(default=None, repr=False)
 
-    @property
+    @functools.cached_property
     def links(self) -> list[Link]:
-        """The links in file order (made from :attr:`columns` the first time, when given)."""
-        if self._links is None:
-            self._links = [] if self.columns is None else self.columns.links()
-        return self._links
-
-    @property
-    def in_columns(self) -> LinkColumns | None:
-        """:attr:`columns` while they are all there is of the links (no :class:`Link` made yet,
-        so none changed): what rbi.robot reads in place of the links; None otherwise."""
-        columns = self.columns
-        return columns if columns is not None and self._links is None and not columns.made else None
+        """The links in file order (:meth:`LinkColumns.links`, made once)."""
+        return self.columns.links()
 
     def link_columns(self) -> LinkColumns:
-        """The links as rbi.robot reads them: :attr:`in_columns`, else laid into columns
-        (:meth:`LinkColumns.of_links`)."""
-        columns = self.in_columns
-        return LinkColumns.of_links(self.path, self.links) if columns is None else columns
+        """:attr:`columns` as rbi.robot reads them: InputError, one line, when the joints form
+        a loop (a link no root reaches: on a loop, or below one)."""
+        columns = self.columns
+        n = len(columns)
+        if len(columns.order) < n:
+            parents, at, seen = columns.parents, min(set(range(n)) - set(columns.order)), set()
+            while at not in seen:
+                seen.add(at)
+                at = parents[at]
+            raise InputError(
+                f"{self.path}: {columns.link(at).label}: the joints form a loop through it; the links "
+                "of a robot form a tree (each hangs from one parent, down from a root)"
+            )
+        return columns
 
     @property
     def link_word(self) -> str:
@@ -613,18 +652,17 @@ def short(text: Any, limit: int = 40) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-def check_unique_joint_names(path: str, links: list[Link], reader: str) -> None:
-    """InputError naming the first joint name two joints of ``links`` share (``reader``: the
-    program that refuses such a file, e.g. urdfdom or MuJoCo's compiler), so that a joint named
-    in ``--joints`` and in the report is one joint."""
-    seen: dict[str, Link] = {}
-    for link in links:
-        for motion in link.motions:
-            if not motion.name:
-                continue
-            if motion.name in seen:
-                raise InputError(
-                    f"{path}: {link.label}: duplicate joint name {short(motion.name)!r} (also a joint of "
-                    f"{seen[motion.name].label}); every joint needs its own name ({reader} refuses the file)"
-                )
-            seen[motion.name] = link
+def check_unique_joint_names(path: str, joints: list[tuple[str, str | None]], reader: str) -> None:
+    """InputError naming the first joint name two of ``joints`` ((its link's label, its name)
+    in file order) share (``reader``: the program that refuses such a file, e.g. urdfdom or
+    MuJoCo's compiler), so that a joint named in ``--joints`` and in the report is one joint."""
+    seen: dict[str, str] = {}
+    for link, name in joints:
+        if not name:
+            continue
+        if name in seen:
+            raise InputError(
+                f"{path}: {link}: duplicate joint name {short(name)!r} (also a joint of "
+                f"{seen[name]}); every joint needs its own name ({reader} refuses the file)"
+            )
+        seen[name] = link

@@ -33,13 +33,14 @@ from rbi.core.mass import MassProperties
 from rbi.formats.robot import (
     Geom,
     Inertial,
-    Link,
+    LinkTable,
     Motion,
     Pose,
     RobotModel,
     Where,
     angles,
     check_inertia_range,
+    element_label,
     from_six,
     number,
     numbers,
@@ -63,14 +64,13 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
     world = root.child("world")
     first = root.child("model") or (world.child("model") if world is not None else None)
     name = first.get("name") if first is not None else None
-    robot = RobotModel(path, "sdf", name, document=document)
-    for include in root.iter("include"):
-        robot.unchecked.append(
-            f"{path}: include {short(_text(include, 'uri'), 80)!r}: not followed; "
-            "the links of the included model are not checked"
-        )
+    unchecked = [
+        f"{path}: include {short(_text(include, 'uri'), 80)!r}: not followed; "
+        "the links of the included model are not checked"
+        for include in root.iter("include")
+    ]
     prefix = len(models) > 1
-    index = 0
+    table = LinkTable("link")
     named: set[str] = set()
     for model_element, model_pose in models:
         model_name = model_element.get("name") or ""
@@ -80,38 +80,33 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
                 "told apart (SDFormat: model names must be unique)"
             )
         named.add(model_name)
-        links: dict[str, Link] = {}
+        links: dict[str, int] = {}
         link_poses: dict[str, Pose] = {}
         frames = _Frames(path, model_element)
         for element in model_element.all("link"):
             own = element.get("name")
-            link = Link(
-                index,
-                f"{model_name}::{own}" if prefix and own is not None else own,
-                element=element,
-                word="link",
-            )
-            index += 1
-            where = Where(path, link.label)
+            row = table.add(f"{model_name}::{own}" if prefix and own is not None else own, element)
+            where = Where(path, table.label(row))
             link_poses[own] = model_pose.then(frames.in_model(own, where))
-            link.origin = link_poses[own]
+            table.origins[row] = link_poses[own]
             inertial = element.child("inertial")
             auto = inertial is not None and _true(inertial.get("auto"))
             if geometry or auto:
-                link.collisions = _geoms(where, element, "collision", package_paths, frames.within(own))
+                table.collisions[row] = _geoms(where, element, "collision", package_paths, frames.within(own))
             if geometry:
-                link.visuals = _geoms(where, element, "visual", package_paths, frames.within(own))
+                table.visuals[row] = _geoms(where, element, "visual", package_paths, frames.within(own))
             if auto:
-                link.inertial = _auto_inertial(where, inertial, link.collisions)
+                table.inertials[row] = _auto_inertial(where, inertial, table.collisions[row])
             elif inertial is not None:
-                link.inertial = _inertial(where, inertial, frames.within(own))
+                table.inertials[row] = _inertial(where, inertial, frames.within(own))
             else:  # SDFormat's default inertial: 1 kg, unit moments, at the link origin
-                link.inertial = Inertial.read(1.0, np.zeros(3), np.eye(3), element=None, source="default")
-            links[own] = link
-            robot.links.append(link)
-        refuse_shared_keys(path, robot.links)  # across models too: "a" + "b::c" is "a::b" + "c"
-        _joints(robot, model_element, links, link_poses, frames, f"{model_name}::" if prefix else "")
-    return robot
+                table.inertials[row] = Inertial.read(
+                    1.0, np.zeros(3), np.eye(3), element=None, source="default"
+                )
+            links[own] = row
+        refuse_shared_keys(path, "link", table.names)  # across models too: "a" + "b::c" is "a::b" + "c"
+        _joints(path, table, model_element, links, link_poses, frames, f"{model_name}::" if prefix else "")
+    return RobotModel(path, "sdf", name, table.columns(path), unchecked=unchecked, document=document)
 
 
 def _models(element, pose: Pose, nested: bool = False):
@@ -220,7 +215,7 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
 def _geoms(where: Where, link_element, tag: str, package_paths, within) -> list[Geom]:
     found = []
     for index, element in enumerate(link_element.all(tag)):
-        label = f"{tag}[{index}]" + (f" ({short(element.get('name'))})" if element.get("name") else "")
+        label = element_label(tag, index, element.get("name") or None)
         pose = _pose(where, element.child("pose"), f"{label}/pose", within)
         holder = element.child("geometry")
         shape = next(iter(holder.children), None) if holder is not None else None
@@ -281,13 +276,15 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
     return Geom(kind, (), pose, label)
 
 
-def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, frames, prefix: str) -> None:
-    """Each joint of the model onto its child link; a joint's name is ``prefix`` and its own."""
-    path = robot.path
+def _joints(
+    path: str, table: LinkTable, model_element, links: dict, link_poses: dict, frames, prefix: str
+) -> None:
+    """Each joint of the model onto its child link (a row of ``table``); a joint's name is
+    ``prefix`` and its own."""
     for index, element in enumerate(model_element.all("joint")):
         name = element.get("name")
         joint_name = prefix + name if prefix and name is not None else name
-        where = Where(path, f"joint[{index}]" + (f" ({short(name)})" if name is not None else ""))
+        where = Where(path, element_label("joint", index, name))
         parent_element, child_element = element.child("parent"), element.child("child")
         if parent_element is None or child_element is None:
             raise where.error("needs <parent> and <child>")
@@ -298,12 +295,12 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, fra
         kind = element.get("type") or ""
         kind = "revolute" if kind == "continuous" else kind if kind in JOINT_KINDS else "other"
         if parent_name in ("world", "__world__") or parent_name not in links:
-            child.motions = [Motion(joint_name, kind, np.array([1.0, 0, 0]), np.zeros(3))]
+            table.motions[child] = [Motion(joint_name, kind, np.array([1.0, 0, 0]), np.zeros(3))]
             continue
-        if child.parent is not None:
+        if table.parents[child] is not None:
             raise where.error(f"child: link {short(child_name)!r} already has a parent joint")
-        child.parent = links[parent_name].name
-        child.origin = link_poses[parent_name].inverse().then(link_poses[child_name])
+        table.parents[child] = table.names[links[parent_name]]
+        table.origins[child] = link_poses[parent_name].inverse().then(link_poses[child_name])
         joint_pose = frames.in_model(child_name, where).inverse().then(frames.in_model(name, where))
         axis_element = element.child("axis")
         xyz_element = axis_element.child("xyz") if axis_element is not None else None
@@ -321,7 +318,7 @@ def _joints(robot: RobotModel, model_element, links: dict, link_poses: dict, fra
         if (written := _text(axis_element, "limit", "effort")) is not None:
             effort = abs(number(where, written, "axis/limit/effort"))
             effort = None if effort == -1 or not math.isfinite(effort) else effort
-        child.motions = [
+        table.motions[child] = [
             Motion(
                 joint_name, kind, np.asarray(axis, dtype=float), joint_pose.translation, effort_limit=effort
             )

@@ -16,7 +16,7 @@ two handler calls per XML element). The top-level ``<link>`` and ``<joint>`` ele
 in groups of the same *signature* (the same elements and attribute names: their values at the
 same places), so each field (an origin's ``xyz``, a mass, a box's ``size``) is one column of
 strings, checked and turned into numbers at once; the model holds its links as those columns
-(:class:`rbi.formats.robot.LinkColumns`), its :class:`Link` values made when first asked for.
+(:class:`rbi.formats.robot.LinkColumns`).
 
 One path for every file (:func:`read_urdf`): the groups are found on the document's text with
 every attribute value emptied and the values apart, as arrays. A plain text (:func:`plain_text`:
@@ -45,14 +45,13 @@ from rbi.formats.robot import (
     MAX_ANGLE_RAD,
     GeomColumn,
     Inertial,
-    Link,
     LinkColumns,
-    Motion,
     RobotModel,
     angles,
     check_inertia_range,
     check_unique_joint_names,
     depth_first,
+    element_label,
     positive,
     refuse_shared_keys,
     rpy_matrix,
@@ -94,7 +93,7 @@ def read_urdf(
     found = plain if plain is not None else _elements(*_tree_text(document.root))
     fields = _links(document.path, found.links, geometry, package_paths, found.line)
     fields.update(_joints(document.path, fields["names"], found.joints))
-    return RobotModel(document.path, "urdf", found.name, document=document, columns=LinkColumns(**fields))
+    return RobotModel(document.path, "urdf", found.name, LinkColumns(**fields), document=document)
 
 
 class Elements(NamedTuple):
@@ -342,7 +341,7 @@ def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[in
         raise InputError(f"{path}: no <link>: a URDF needs at least one (urdfdom and pybullet refuse it)")
     names: list[str] = [""] * n
     declared, masses, coms = np.zeros(n, dtype=bool), np.zeros(n), np.zeros((n, 3))
-    written, turned = np.zeros((n, 3, 3)), {}
+    written, records = np.zeros((n, 3, 3)), {}
     geoms: list[GeomColumn] = []
 
     def read(rows: Rows) -> None:
@@ -354,7 +353,10 @@ def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[in
                     "name (urdfdom and pybullet refuse it)"
                 )
             names[rows.indices[k]] = word
-        rows.path, rows.label = path, lambda k, rows=rows, words=words: Link(rows.indices[k], words[k]).label
+        rows.path, rows.label = (
+            path,
+            lambda k, rows=rows, words=words: element_label("link", rows.indices[k], words[k]),
+        )
         inertial = rows.top.child("inertial")
         if inertial is not None:
             at = rows.indices
@@ -362,7 +364,7 @@ def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[in
             masses[at], coms[at], written[at], rpy = _inertials(rows, inertial)
             for k in np.flatnonzero(np.any(rpy != 0, axis=1)).tolist():
                 turn = tuple(rpy[k].tolist())
-                turned[at[k]] = Inertial.read(
+                records[at[k]] = Inertial.read(
                     masses[at[k]], coms[at[k]], written[at[k]], rotation=rpy_matrix(turn), rpy=turn
                 )
         if geometry:
@@ -370,9 +372,9 @@ def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[in
 
     in_order(chunks, read)
     if len(set(names)) != n:
-        refuse_shared_keys(path, [Link(index, name) for index, name in enumerate(names)])
+        refuse_shared_keys(path, "link", names)
     inertias = written.copy()
-    for row, each in turned.items():
+    for row, each in records.items():
         coms[row], inertias[row] = each.properties.center_of_mass, each.properties.inertia_about_com
     inertials = MassProperties(masses, coms, inertias, "link")
     return {
@@ -381,7 +383,7 @@ def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[in
         "declared": declared,
         "inertials": inertials,
         "written": written,
-        "turned": turned,
+        "records": records,
     }
 
 
@@ -531,6 +533,7 @@ def _joints(path: str, names: list[str], chunks: list) -> dict:
         "axes": axes,
         "anchors": np.zeros((n, 3)),
         "efforts": efforts,
+        "references": [0.0] * n,
     }
 
 
@@ -542,9 +545,7 @@ def _joint_links(path: str, names: list[str], rows_of: dict, parents: list[int],
     words = rows.words(top.at.get("name"))
     shown = words if "name" in top.at else [None] * len(rows)
     rows.path = path
-    rows.label = lambda k: (
-        f"joint[{rows.indices[k]}]" + (f" ({short(shown[k])})" if shown[k] is not None else "")
-    )
+    rows.label = lambda k: element_label("joint", rows.indices[k], shown[k])
     parent, child = top.child("parent"), top.child("child")
     ends = [rows.words(None if node is None else node.at.get("link")) for node in (parent, child)]
     found = [[rows_of.get(name, -1) for name in names_of] for names_of in ends]
@@ -601,11 +602,8 @@ def _one_tree(parents: list[int]) -> list[int] | None:
 def _refuse_tree(path: str, names: list[str], parents: list[int], joint_names: list[str]) -> None:
     """InputError for joints that share a name, links no joint joins to the one root, or
     joints that form a loop (``parents``: each link's parent row, -1 for none)."""
-    links = [
-        Link(row, name, motions=[Motion(joint, "", None, None)])
-        for row, name, joint in zip(range(len(names)), names, joint_names)
-    ]
-    check_unique_joint_names(path, links, "urdfdom")
+    labels = [element_label("link", row, name) for row, name in enumerate(names)]
+    check_unique_joint_names(path, list(zip(labels, joint_names)), "urdfdom")
     roots = [row for row, parent in enumerate(parents) if parent < 0]
     if len(roots) > 1:
         shown = ", ".join(repr(short(names[row])) for row in roots[:4]) + (", ..." if len(roots) > 4 else "")
@@ -613,12 +611,12 @@ def _refuse_tree(path: str, names: list[str], parents: list[int], joint_names: l
             f"{path}: {len(roots)} root links ({shown}): no joint joins them; a URDF has one root "
             "link that every other hangs from (urdfdom and pybullet refuse it)"
         )
-    for row, link in enumerate(links):  # a loop: the first link whose chain of parents runs into it
+    for row, link in enumerate(labels):  # a loop: the first link whose chain of parents runs into it
         seen, at = set(), row
         while parents[at] >= 0:
             if at in seen:
                 raise InputError(
-                    f"{path}: {link.label}: the joints form a loop through link {short(names[at])!r}; a "
+                    f"{path}: {link}: the joints form a loop through link {short(names[at])!r}; a "
                     "URDF's links form a tree"
                 )
             seen.add(at)
@@ -626,7 +624,7 @@ def _refuse_tree(path: str, names: list[str], parents: list[int], joint_names: l
 
 
 def attach_elements(model: RobotModel) -> None:
-    """The XML elements of a URDF model (its links are made from columns, which hold none): the
+    """The XML elements of a URDF model (its links are read from columns, which hold none): the
     document parsed if it was not, each link given its ``<link>`` and its inertial its
     ``<inertial>`` (their spans are where ``rbi audit --fix`` edits)."""
     document = model.document
@@ -634,7 +632,7 @@ def attach_elements(model: RobotModel) -> None:
         return
     if document.root is None:
         document.root = robot_xml.parse(model.path, document.text)
-    for link, element in zip(model.links, document.root.all("link")):
-        link.element = element
-        if link.inertial is not None:
-            link.inertial = dataclasses.replace(link.inertial, element=element.child("inertial"))
+    columns = model.columns
+    columns.elements = document.root.all("link")
+    for row, each in columns.records.items():
+        columns.records[row] = dataclasses.replace(each, element=columns.elements[row].child("inertial"))

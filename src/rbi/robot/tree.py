@@ -119,7 +119,7 @@ def placement(
         R[level] = np.matmul(R[parents], level_R)
         t[level] = stack_apply(R[parents], level_t) + t[parents]
         for row in [row for row in level if row in moving] if moving else ():
-            R[row], t[row] = _moved(columns.link(row), row, Pose(R[row], t[row]), joints, frames)
+            R[row], t[row] = _moved(columns, row, Pose(R[row], t[row]), joints, frames)
     R, t = R[:n], t[:n]
     joint_list, axes, anchors = _joint_frames(columns, R, t, frames)
     frame, to_frame = "world", Pose.identity()
@@ -149,15 +149,18 @@ def _levels(columns: LinkColumns) -> list[tuple[list[int], list[int]]]:
     return groups
 
 
-def _moved(link, row: int, pose: Pose, joints: dict[str, float], frames: dict[int, list]) -> tuple:
-    """A link (of ``row``) whose joints have values: each revolute and prismatic joint's axis and
-    anchor where the joints before it leave them (into ``frames[row]``), and the link's pose after
-    them all."""
-    for motion in link.motions:
-        if motion.kind in ("revolute", "prismatic"):
-            frames.setdefault(row, []).append((pose.rotation @ motion.axis, pose.apply(motion.anchor)))
-        if motion.name in joints:
-            pose = pose.then(_motion(motion, joints[motion.name]))
+def _moved(columns: LinkColumns, row: int, pose: Pose, joints: dict[str, float], frames: dict) -> tuple:
+    """The link of ``row``, whose joints have values: each revolute and prismatic joint's axis
+    and anchor where the joints before it leave them (into ``frames[row]``), and the link's pose
+    after them all."""
+    for k in columns.joints_of(row):
+        kind, axis, anchor = columns.joint_kinds[k], columns.axes[k], columns.anchors[k]
+        if kind in ("revolute", "prismatic"):
+            frames.setdefault(row, []).append((pose.rotation @ axis, pose.apply(anchor)))
+        if columns.joint_names[k] in joints:
+            pose = pose.then(
+                _motion(kind, axis, anchor, joints[columns.joint_names[k]] - columns.references[k])
+            )
     return pose.rotation, pose.translation
 
 
@@ -210,12 +213,13 @@ def _check_joints(model: RobotModel, joints: dict[str, float], columns: LinkColu
             )
 
 
-def _motion(motion, q: float) -> Pose:
-    amount = q - motion.reference
-    if motion.kind == "prismatic":
-        return Pose(np.eye(3), motion.axis * amount)
-    R = axis_angle_matrix(motion.axis, amount)
-    return Pose(R, motion.anchor - R @ motion.anchor)
+def _motion(kind: str | None, axis: np.ndarray, anchor: np.ndarray, amount: float) -> Pose:
+    """A joint's motion by ``amount`` from its reference (radians turning about ``axis``
+    through ``anchor``, metres sliding along it)."""
+    if kind == "prismatic":
+        return Pose(np.eye(3), axis * amount)
+    R = axis_angle_matrix(axis, amount)
+    return Pose(R, anchor - R @ anchor)
 
 
 def totals(
