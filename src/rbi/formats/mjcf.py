@@ -151,7 +151,7 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     check_unique_joint_names(path, joints, "MuJoCo's compiler")
     _actuator_limits(path, table, root, defaults)
     options = {"gravity": _gravity(path, root), "boundinertia": compiler.boundinertia}
-    notes = _compile_inertia(path, table, compiler, reader.geoms)
+    notes = _compile_inertia(path, table, compiler)
     _check_moving_bodies(path, table)
     columns = table.columns(path)
     return RobotModel(path, "mjcf", root.get("model"), columns, notes, document=document, options=options)
@@ -358,7 +358,7 @@ class _Bodies:
             defaults,
             meshes,
         )
-        self.geoms: dict[int, list[tuple[Geom, int]]] = {}
+        self.counts: dict[int, int] = {}  # row → the body's geoms read, in its group range or not
 
     def children(self, element, frame: Pose, link: int | None, active_class: str) -> None:
         """Read the bodies, geoms and joints inside ``element``, whose children are placed by
@@ -392,7 +392,7 @@ class _Bodies:
             elif child.tag == "inertial":
                 table.inertials[link] = self.inertial(where, child)
         _check_degrees_of_freedom(where, table.motions[link], parent)
-        self.geoms[link] = []
+        self.counts[link] = 0
         self.children(element, Pose.identity(), link, inner_class)
 
     def pose(self, element, attrs, where: Where | None = None) -> Pose:
@@ -483,7 +483,7 @@ class _Bodies:
 
     def geom(self, element, frame: Pose, link: int, active_class: str) -> None:
         attrs = _attributes(element, self.defaults, active_class)
-        label = element_label("geom", len(self.geoms[link]), attrs.get("name") or None)
+        label = element_label("geom", self.counts[link], attrs.get("name") or None)
         where = Where(self.path, f"{self.table.label(link)}: {label}")
         kind = attrs.get("type", "sphere")
         if kind not in GEOM_KINDS:
@@ -517,7 +517,7 @@ class _Bodies:
             geom.mesh_file, geom.mesh_scale, geom.mesh_inertia = asset["file"], asset["scale"], asset["mode"]
         positive(where, geom.size, "size", allow_zero=True)
         in_group = self.compiler.group_range[0] <= group <= self.compiler.group_range[1]
-        self.geoms[link].append((geom, in_group))
+        self.counts[link] += 1
         if in_group:
             self.table.collisions[link].append(geom)
 
@@ -560,9 +560,9 @@ def z_to(direction) -> np.ndarray:
 # --- compiled mass properties ---------------------------------------------------------------
 
 
-def _compile_inertia(path: str, table: LinkTable, compiler: Compiler, geoms) -> list[str]:
-    """Each body's compiled mass properties into ``table``; the notes on ``<inertial>`` elements
-    MuJoCo ignores."""
+def _compile_inertia(path: str, table: LinkTable, compiler: Compiler) -> list[str]:
+    """Each body's compiled mass properties into ``table`` (from its geoms in the group range,
+    its collisions); the notes on ``<inertial>`` elements MuJoCo ignores."""
     notes = []
     inertials = table.inertials
     for row, explicit in enumerate(inertials):
@@ -571,7 +571,7 @@ def _compile_inertia(path: str, table: LinkTable, compiler: Compiler, geoms) -> 
         )
         if use_geoms:
             props = geoms_sum(
-                [geom for geom, counts in geoms.get(row, []) if counts],
+                table.collisions[row],
                 lambda geom, measure: geom.density if geom.mass is None else geom.mass / measure,
                 f"{path}: {table.label(row)}: ",
                 "exact",

@@ -522,8 +522,8 @@ class RobotModel:
 
 class Where:
     """Where a value was read, for error messages: ``file: link[i] (name): what``. ``label``
-    may be given as a :class:`Link` or a function returning the text, worked out only when
-    asked for (a large robot file reads a million values and errs on none of them)."""
+    may be given as a function returning the text, worked out only when asked for (a large
+    robot file reads a million values and errs on none of them)."""
 
     def __init__(self, path: str, label: Any = None):
         self.path, self._label = path, label
@@ -531,9 +531,7 @@ class Where:
     @property
     def label(self) -> str | None:
         label = self._label
-        if label is None or isinstance(label, str):
-            return label
-        return label() if callable(label) else label.label
+        return label() if callable(label) else label
 
     def error(self, what: str) -> InputError:
         return InputError(f"{self.path}: {self.label}: {what}" if self.label else f"{self.path}: {what}")
