@@ -43,11 +43,13 @@ import importlib
 import importlib.util
 import json
 import os
+import pickle
 import re
 import signal
 import subprocess
 import sys
 from collections import OrderedDict
+from collections.abc import Callable
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any, NamedTuple
@@ -146,7 +148,7 @@ def read_step(path: Path) -> StepFile:
     crashes OpenCascade; the caller adds the file and part to the message.
     """
     key = file_key(path)
-    return cached(_CACHE, _CACHE_ENTRIES, key, lambda: _read_apart(path))
+    return cached(_CACHE, _CACHE_ENTRIES, key, lambda: _apart(_read_here, path, ADAPTIVE_EPS))
 
 
 def select_solids(step: StepFile, solid: str | int | None) -> list[int]:
@@ -178,11 +180,7 @@ def step_triangles(
     axes and faces (F, 3), wound outwards. ``deflection`` is the largest distance of a facet
     from the surface as a fraction of each edge's size, ``angle`` the largest angle (radians)
     between neighbouring facets."""
-    _check_text(path)
-    answer = _apart("triangles", path, [int(i) for i in indices], deflection, angle)
-    return np.array(answer["vertices"], dtype=float).reshape(-1, 3), np.array(
-        answer["faces"], dtype=np.int64
-    ).reshape(-1, 3)
+    return _apart(_triangles_here, path, [int(i) for i in indices], deflection, angle)
 
 
 # --- reading ----------------------------------------------------------------------------------
@@ -198,20 +196,14 @@ _CHILD = "import sys; from rbi.formats.step import {0}; {0}(sys.argv[1])"
 """What the child process runs (formatted with :func:`_child`'s name)."""
 
 
-def _read_apart(path: Path) -> StepFile:
+def _apart(operation: Callable, path: Path, *arguments) -> Any:
+    """What ``operation`` (a function of this module taking the file's path and ``arguments``)
+    returns in the child process, once the file is checked (:func:`_check_text`); ValueError
+    (CadExtraMissing) for its refusal, its crash or its time limit. The answer comes back
+    pickled: from rbi's own child, built by rbi's code (numbers, names, arrays), never read
+    from the file."""
     _check_text(path)
-    answer = _apart("read", path, ADAPTIVE_EPS)
-    solids = tuple(
-        StepSolid(name, MassProperties(volume, com, inertia, "step file"), error)
-        for name, volume, com, inertia, error in answer["solids"]
-    )
-    return StepFile(solids, answer["unit"], answer["unit_metres"])
-
-
-def _apart(*request) -> dict:
-    """What the child process answers to ``request`` (an operation, the file, its arguments);
-    ValueError (CadExtraMissing) for its refusal, its crash or its time limit."""
-    request = (request[0], os.path.abspath(request[1]), *request[2:])
+    request = (operation.__name__, os.path.abspath(path), *arguments)
     home = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))  # holds rbi/
     env = dict(os.environ, PYTHONPATH=os.pathsep.join(filter(None, [home, os.environ.get("PYTHONPATH")])))
     try:
@@ -236,39 +228,41 @@ def _apart(*request) -> dict:
             "file is damaged (an entity it refers to is missing or of the wrong kind)"
         )
     try:
-        answer = json.loads(done.stdout)
-    except ValueError:
+        answer = pickle.loads(done.stdout)
+    except Exception:  # noqa: BLE001 - a child that ended without a whole answer
         raise ValueError(f"OpenCascade failed reading it (exit status {done.returncode})") from None
-    if "missing" in answer:
-        raise CadExtraMissing(answer["missing"])
-    if "error" in answer:
-        raise ValueError(answer["error"])
+    if isinstance(answer, ValueError):
+        raise answer
     return answer
 
 
 def _child(request: str) -> None:
-    """The child process: answer ``request`` (JSON) on what was standard output, with standard
-    output and error sent to /dev/null (OpenCascade prints)."""
+    """The child process: answer ``request`` (JSON: the operation's name, the file, its
+    arguments) on what was standard output, with standard output and error sent to /dev/null
+    (OpenCascade prints)."""
     answer_fd = os.dup(1)
     devnull = os.open(os.devnull, os.O_WRONLY)
     os.dup2(devnull, 1)
     os.dup2(devnull, 2)
     operation, path, *arguments = json.loads(request)
+    answer: Any
     try:
-        answer = (_read_here if operation == "read" else _triangles_here)(Path(path), *arguments)
+        answer = {"_read_here": _read_here, "_triangles_here": _triangles_here}[operation](
+            Path(path), *arguments
+        )
     except CadExtraMissing as exc:
-        answer = {"missing": str(exc)}
+        answer = CadExtraMissing(str(exc))
     except ValueError as exc:
-        answer = {"error": str(exc)}
+        answer = ValueError(str(exc))
     except MemoryError:
-        answer = {"error": "OpenCascade ran out of memory reading it"}
+        answer = ValueError("OpenCascade ran out of memory reading it")
     except Exception as exc:  # noqa: BLE001 - OpenCascade's own failures: named, never echoed
-        answer = {"error": f"OpenCascade could not read it ({type(exc).__name__})"}
-    with os.fdopen(answer_fd, "w") as stream:
-        json.dump(answer, stream)
+        answer = ValueError(f"OpenCascade could not read it ({type(exc).__name__})")
+    with os.fdopen(answer_fd, "wb") as stream:
+        pickle.dump(answer, stream)
 
 
-def _read_here(path: Path, eps: float) -> dict:
+def _read_here(path: Path, eps: float) -> StepFile:
     """The file read and integrated (in the child): its unit and each solid's name, volume (m³),
     centre of mass (m), inertia (m⁵) and error estimate."""
     ocp, instances, unit_metres = _instances(path)
@@ -281,13 +275,16 @@ def _read_here(path: Path, eps: float) -> dict:
             distinct[key] = _integrate(ocp, solid, index, names[index], eps)
         props, error = _placed(ocp, distinct[key], solid, location, index, names[index], eps)
         s = unit_metres  # the file's unit -> m
-        com, inertia = props.center_of_mass * s, props.inertia_about_com * s**5
-        solids.append((names[index], props.mass * s**3, com.tolist(), inertia.tolist(), error))
-    unit = _UNIT_SYMBOLS.get(unit_metres, f"{unit_metres:g} m")
-    return {"unit": unit, "unit_metres": unit_metres, "solids": solids}
+        metres = MassProperties(
+            props.mass * s**3, props.center_of_mass * s, props.inertia_about_com * s**5, "step file"
+        )
+        solids.append(StepSolid(names[index], metres, float(error)))
+    return StepFile(tuple(solids), _UNIT_SYMBOLS.get(unit_metres, f"{unit_metres:g} m"), unit_metres)
 
 
-def _triangles_here(path: Path, indices: list[int], deflection: float, angle: float) -> dict:
+def _triangles_here(
+    path: Path, indices: list[int], deflection: float, angle: float
+) -> tuple[np.ndarray, np.ndarray]:
     ocp, instances, unit_metres = _instances(path)
     parts_v, parts_f, offset = [], [], 0
     for i in indices:
@@ -298,7 +295,7 @@ def _triangles_here(path: Path, indices: list[int], deflection: float, angle: fl
             offset += len(points)
     vertices = np.concatenate(parts_v) if parts_v else np.zeros((0, 3))
     faces = np.concatenate(parts_f) if parts_f else np.zeros((0, 3), dtype=np.int64)
-    return {"vertices": vertices.ravel().tolist(), "faces": faces.ravel().tolist()}
+    return vertices.reshape(-1, 3), faces.astype(np.int64).reshape(-1, 3)
 
 
 def _instances(path: Path):
