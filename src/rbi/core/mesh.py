@@ -272,6 +272,12 @@ def _moments(measure: Callable[[np.ndarray], np.ndarray], first_share: float, se
 
 _volume_moments = _moments(_signed_volumes, 4.0, 20.0)
 _surface_moments = _moments(_areas, 3.0, 12.0)
+SIZED_VOLUME_MOMENTS = {
+    False: _volume_moments,
+    True: _moments(lambda corners: np.abs(_signed_volumes(corners)), 4.0, 20.0),
+}
+"""The tetrahedra joining the origin to triangles (F, 3, 3): their signed volumes (F,) (by
+their sizes, without the sign, under ``True``), their first and second moments summed."""
 
 
 def _sums(

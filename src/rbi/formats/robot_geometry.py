@@ -239,8 +239,10 @@ def _mesh(geom: Geom, mode: str, where: str, repair: bool = False, as_mujoco: bo
 
 def _integrated(geom: Geom, path, scale: np.ndarray, mode: str, where: str, repair: bool, as_mujoco: bool):
     """:func:`_mesh`'s value, computed (InputError naming the geom when it cannot be)."""
+    from rbi.formats.mesh_file import read_mesh_arrays  # heavy: scipy (rbi.core.mesh)
+
     try:
-        vertices, faces = _mesh_arrays(path)
+        vertices, faces = read_mesh_arrays(path)
     except ValueError as exc:
         raise InputError(f"{where}{geom.label}: {path.name}: {_hinted(str(exc), mode)}") from None
     if as_mujoco:
@@ -298,16 +300,18 @@ def mujoco_mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str)
     where MuJoCo's compiler refuses: no area, no volume or a negative volume. (MuJoCo also
     refuses, in ``exact``, a mesh two of whose triangles run along an edge the same way; that
     depends on how its decoder welds each file format's vertices, and is not checked here.)"""
+    # heavy: scipy, for a link with a mesh only
+    from rbi.core.mesh import SIZED_VOLUME_MOMENTS, MeshDistribution
+
     V = np.asarray(vertices, dtype=float)
     D, E, F = V[faces[:, 0]], V[faces[:, 1]], V[faces[:, 2]]
-    cross = np.cross(E - D, F - D)  # twice the area times the unit normal
-    area = 0.5 * np.linalg.norm(cross, axis=1)
-    signed = np.abs if mode == "legacy" else (lambda values: values)
+    area = 0.5 * np.linalg.norm(np.cross(E - D, F - D), axis=1)
     centre = (D + E + F) / 3
     if not area.sum() >= 1e-15:
         raise ValueError("has no area (MuJoCo: mesh surface area is too small)")
     apex = (area[:, None] * centre).sum(axis=0) / area.sum()
-    volume = signed(np.einsum("ij,ij->i", centre - apex, cross)) / 6
+    moments = SIZED_VOLUME_MOMENTS[mode == "legacy"]  # MuJoCo's legacy counts each volume positive
+    volume = moments(V[faces] - apex)[0]
     if volume.sum() < 0:
         raise ValueError(
             "encloses a negative volume (MuJoCo: mesh volume is negative: misoriented triangles)"
@@ -315,18 +319,8 @@ def mujoco_mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str)
     if not volume.sum() >= 1e-15:
         raise ValueError("encloses no volume (MuJoCo: mesh volume is too small); try inertia: shell")
     com = (volume[:, None] * (0.75 * centre + 0.25 * apex)).sum(axis=0) / volume.sum()
-    D, E, F = D - com, E - com, F - com
-    volume = signed(np.einsum("ij,ij->i", (D + E + F) / 3, cross)) / 6
-    second = np.empty((3, 3))
-    for a in range(3):
-        for b in range(3):
-            terms = 2 * (D[:, a] * D[:, b] + E[:, a] * E[:, b] + F[:, a] * F[:, b])
-            terms += D[:, a] * E[:, b] + D[:, b] * E[:, a] + D[:, a] * F[:, b] + D[:, b] * F[:, a]
-            terms += E[:, a] * F[:, b] + E[:, b] * F[:, a]
-            second[a, b] = float((volume * terms).sum() / 20)
+    volume, _, second = moments(V[faces] - com)
     inertia = np.trace(second) * np.eye(3) - second
-    from rbi.core.mesh import MeshDistribution  # heavy: scipy, for a link with a mesh only
-
     unit = MassProperties(float(volume.sum()), com, 0.5 * (inertia + inertia.T), "mesh")
     return MeshDistribution(mode, unit, V, np.asarray(faces))
 
@@ -385,15 +379,3 @@ def _hinted(message: str, mode: str) -> str:
     ):
         message = message.replace(key, option)
     return message
-
-
-def _mesh_arrays(path):
-    """Welded vertices and faces of the mesh file (ValueError naming what is wrong)."""
-    from rbi.formats.mesh_file import MESH_FILE_TYPES, read_mesh_arrays  # heavy: scipy (rbi.core.mesh)
-
-    suffix = path.suffix.lower()
-    if suffix not in MESH_FILE_TYPES:
-        raise ValueError(
-            f"unknown mesh format {suffix or '(no extension)'!r}: rbi reads {', '.join(MESH_FILE_TYPES)}"
-        )
-    return read_mesh_arrays(path)
