@@ -25,6 +25,7 @@ import warnings
 
 import numpy as np
 
+from rbi.core.rotation import axis_angle_matrix
 from rbi.errors import InputError
 from rbi.formats.robot_xml import read_xml
 
@@ -193,9 +194,12 @@ def _node_transform(node) -> np.ndarray:
         elif child.tag == "scale":
             step = np.diag([*_vector(child, 3), 1.0])
         elif child.tag == "rotate":
-            x, y, z, angle = _vector(child, 4)
+            *axis, angle = _vector(child, 4)
             step = np.eye(4)
-            step[:3, :3] = _rotation([x, y, z], math.radians(angle))
+            if np.all(np.isfinite(axis)) and np.any(axis):  # about no axis: no turn
+                step[:3, :3] = axis_angle_matrix(axis, math.radians(angle))
+            elif np.any(axis):  # an axis that is not finite: refused below, never echoed
+                step[:] = np.nan
         if step is not None:
             result = result @ step
     if not np.all(np.isfinite(result)):
@@ -208,23 +212,6 @@ def _vector(element, count: int) -> np.ndarray:
     if values.size != count:
         raise ValueError(f"<{element.tag}>: needs {count} numbers")
     return values
-
-
-def _rotation(axis, angle: float) -> np.ndarray:
-    axis = np.asarray(axis, dtype=float)
-    length = float(np.linalg.norm(axis))
-    if length == 0.0:
-        return np.eye(3)
-    x, y, z = axis / length
-    c, s = math.cos(angle), math.sin(angle)
-    C = 1 - c
-    return np.array(
-        [
-            [c + x * x * C, x * y * C - z * s, x * z * C + y * s],
-            [y * x * C + z * s, c + y * y * C, y * z * C - x * s],
-            [z * x * C - y * s, z * y * C + x * s, c + z * z * C],
-        ]
-    )
 
 
 # --- geometry ----------------------------------------------------------------------------------
