@@ -49,8 +49,15 @@ _MUST_BE = {
     **dict.fromkeys(("model_type", "model_attributes_type", "dict_type"), "a mapping of fields"),
     "string_type": "text",
     "list_type": "a list of 3 numbers [x, y, z]",
+    "greater_than": "greater than {gt:g}",
+    "greater_than_equal": "at least {ge:g}",
+    "less_than_equal": "at most {le:g}",
+    "too_short": "a list of {min_length} numbers [x, y, z]",
+    "too_long": "a list of {max_length} numbers [x, y, z]",
+    "literal_error": "one of {expected}",
 }
-"""What a value of the wrong type must be, by pydantic's error type."""
+"""What a value the models refuse must be, by pydantic's error type (filled in from the error's
+context)."""
 
 
 def describe_error(error: dict[str, Any], known_fields: list[str] | None = None) -> str:
@@ -64,17 +71,8 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
         field = str(error["loc"][-1]) if error["loc"] else ""
         hint = difflib.get_close_matches(field, known_fields or [], n=1)
         return "unknown field" + (f" (did you mean '{hint[0]}'?)" if hint else "")
-    if kind == "greater_than":
-        return f"must be greater than {ctx.get('gt'):g} (got {shown(value)})"
     if tuple(error["loc"]) == ("parts",) and kind in ("too_short", "list_type"):
         return f"must be a non-empty list of parts (got {shown(value)})"
-    if kind in _MUST_BE:
-        return f"must be {_MUST_BE[kind]} (got {shown(value)})"
-    if kind in ("greater_than_equal", "less_than_equal"):
-        bound = (
-            f"at least {ctx.get('ge'):g}" if kind == "greater_than_equal" else f"at most {ctx.get('le'):g}"
-        )
-        return f"must be {bound} (got {shown(value)})"
     polygon = next((k for k in ("outline", "holes") if k in error["loc"]), None)
     if kind in ("too_short", "too_long") and polygon is not None:  # a prism's polygons and their points
         loc = tuple(error["loc"])
@@ -84,10 +82,8 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
             f"at least {ctx.get('min_length')}" if kind == "too_short" else f"at most {ctx.get('max_length')}"
         )
         return f"must have {most} vertices (got {len(value) if isinstance(value, list) else shown(value)})"
-    if kind in ("too_short", "too_long"):
-        return f"must be a list of {ctx.get('min_length', ctx.get('max_length'))} numbers [x, y, z] (got {shown(value)})"
-    if kind == "literal_error":
-        return f"must be one of {ctx.get('expected')} (got {shown(value)})"
+    if kind in _MUST_BE:
+        return f"must be {_MUST_BE[kind].format(**ctx)} (got {shown(value)})"
     if kind == "union_tag_invalid":
         shapes = re.findall(r"'([^']+)'", str(ctx.get("expected_tags", "")))
         hint = difflib.get_close_matches(str(ctx.get("tag")), shapes, n=1)

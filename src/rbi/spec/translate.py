@@ -254,44 +254,41 @@ def part_element(part, units: models.Units, spec_path: str) -> MassProperties:
     if type(part) in BUILDERS:
         one = BUILDERS[type(part)](Columns([part], np.zeros(1, int), {}), units)
         return _as_written(part, *(x[0] for x in one))
-    if isinstance(part, models.MeshPart):
-        element = mesh_element(part, units, spec_path)
-    elif isinstance(part, models.StepPart):
-        element = step_element(part, units, spec_path)
-    elif isinstance(part, models.AssemblyPart):
-        element = assembly_element(part, units)
-    elif type(part) in SOLIDS:
-        element = SOLIDS[type(part)](part, _solid_mass(part, one_volume(part), units))
-    else:
-        element = GIVEN_MASS[type(part)](part)
+    element = ELEMENTS[type(part)](part, units, spec_path)
     if part.pattern is not None and part.pattern.count > 1:
         element = patterned(element, part.pattern)
     return element
 
 
-SOLIDS: dict[type, Callable[[Any, float], MassProperties]] = {
-    models.SphericalShellPart: lambda p, m: shapes.spherical_shell(
-        m, p.outer_radius, p.inner_radius, p.center
-    ),
-    models.TubePart: lambda p, m: shapes.tube(m, p.outer_radius, p.inner_radius, p.start, p.end),
-    models.FrustumPart: lambda p, m: shapes.frustum(m, p.start_radius, p.end_radius, p.start, p.end),
-    models.EllipsoidPart: lambda p, m: shapes.ellipsoid(
-        m, p.semi_axes, p.center, rotation_matrix(p.rotation)
-    ),
-    models.TorusPart: lambda p, m: shapes.torus(m, p.major_radius, p.minor_radius, p.center, p.axis),
-    models.HemispherePart: lambda p, m: shapes.hemisphere(m, p.radius, p.center, p.axis),
-    models.CapsulePart: lambda p, m: shapes.capsule(m, p.radius, p.start, p.end),
-    models.PrismPart: lambda p, m: shapes.prism(m, p.outline, p.holes, p.start, p.end, p.x_axis),
-}
-"""Each other closed-form solid part (:mod:`rbi.core.shapes`) from its fields and the mass ``m``
-of one copy (its ``mass``, or its density times :func:`rbi.spec.volumes.one_volume`), file units
-(the shapes of :data:`BUILDERS` are built by them, one part as a stack of one)."""
+def _solid(build: Callable[[Any, float], MassProperties]) -> Callable[..., MassProperties]:
+    """A closed-form solid's element from its fields and ``units``: ``build`` given the part and
+    the mass of one copy (its ``mass``, or its density times
+    :func:`rbi.spec.volumes.one_volume`)."""
+    return lambda part, units, _: build(part, _solid_mass(part, one_volume(part), units))
 
-GIVEN_MASS: dict[type, Callable[[Any], MassProperties]] = {
-    models.RodPart: lambda p: shapes.rod(p.mass, p.start, p.end),
-    models.CustomPart: custom_element,
+
+ELEMENTS: dict[type, Callable[[Any, models.Units, str], MassProperties]] = {
+    models.SphericalShellPart: _solid(
+        lambda p, m: shapes.spherical_shell(m, p.outer_radius, p.inner_radius, p.center)
+    ),
+    models.TubePart: _solid(lambda p, m: shapes.tube(m, p.outer_radius, p.inner_radius, p.start, p.end)),
+    models.FrustumPart: _solid(lambda p, m: shapes.frustum(m, p.start_radius, p.end_radius, p.start, p.end)),
+    models.EllipsoidPart: _solid(
+        lambda p, m: shapes.ellipsoid(m, p.semi_axes, p.center, rotation_matrix(p.rotation))
+    ),
+    models.TorusPart: _solid(lambda p, m: shapes.torus(m, p.major_radius, p.minor_radius, p.center, p.axis)),
+    models.HemispherePart: _solid(lambda p, m: shapes.hemisphere(m, p.radius, p.center, p.axis)),
+    models.CapsulePart: _solid(lambda p, m: shapes.capsule(m, p.radius, p.start, p.end)),
+    models.PrismPart: _solid(lambda p, m: shapes.prism(m, p.outline, p.holes, p.start, p.end, p.x_axis)),
+    models.RodPart: lambda p, units, path: shapes.rod(p.mass, p.start, p.end),
+    models.CustomPart: lambda p, units, path: custom_element(p),
+    models.MeshPart: mesh_element,
+    models.StepPart: step_element,
+    models.AssemblyPart: lambda p, units, path: assembly_element(p, units),
 }
-"""The other parts without a volume (their ``mass`` is given), file units."""
+"""Each part not built as a stack (:data:`BUILDERS`) from its fields, ``units`` and the spec's
+path, in file units: the other closed-form solids (:mod:`rbi.core.shapes`), the parts whose
+mass is given (rods, custom parts), and the files' solids (meshes, STEP files, sub-assemblies)."""
 
 
 # --- the parts of the common shapes, a stack per shape ----------------------------------
