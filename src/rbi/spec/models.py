@@ -699,7 +699,7 @@ class BodySpec(_Strict):
 def body_spec_json_schema() -> dict[str, Any]:
     """The JSON Schema (draft 2020-12) of :class:`BodySpec`, each part described as :data:`Part`
     (the union of every shape) rather than as the validator that picks one; descriptions as
-    editors show them (see :func:`_plain_descriptions`)."""
+    editors show them (see :func:`_for_editors`)."""
 
     described = create_model(
         "BodySpec",
@@ -708,9 +708,9 @@ def body_spec_json_schema() -> dict[str, Any]:
         parts=(list[Part], Field(default_factory=list, description=PARTS_DESCRIPTION)),
         expect=(Expect | None, Field(None, description=EXPECT_DESCRIPTION)),
     )
-    schema = _plain_descriptions(described.model_json_schema(mode="validation"))
+    schema = _for_editors(described.model_json_schema(mode="validation"))
     schema["$defs"] = {
-        name: _uncertain_numbers(node) if name.endswith("Part") or name in ("Rotation", "Pattern") else node
+        name: _for_editors(node, True) if name.endswith("Part") or name in ("Rotation", "Pattern") else node
         for name, node in schema["$defs"].items()
     }
     schema["properties"]["uncertainty"] = UNCERTAINTY_KIND
@@ -734,30 +734,27 @@ UNCERTAINTY_KIND = {
 """The top-level ``uncertainty:`` key."""
 
 
-def _uncertain_numbers(node: Any) -> Any:
-    """``node`` with every ``{"type": "number"}`` schema widened to a number or :data:`UNCERTAIN_NUMBER`."""
-    if isinstance(node, dict):
-        if node.get("type") == "number":  # its words stay on the property, as editors look for them
-            said = {key: node[key] for key in ("title", "description", "default") if key in node}
-            return said | {"anyOf": [{k: v for k, v in node.items() if k not in said}, UNCERTAIN_NUMBER]}
-        return {key: _uncertain_numbers(value) for key, value in node.items()}
+def _for_editors(node: Any, uncertain: bool = False) -> Any:
+    """``node`` as editors show it: each description in plain text (:func:`_plain`) and, with
+    ``uncertain``, every ``{"type": "number"}`` schema widened to a number or
+    :data:`UNCERTAIN_NUMBER`."""
     if isinstance(node, list):
-        return [_uncertain_numbers(value) for value in node]
-    return node
+        return [_for_editors(value, uncertain) for value in node]
+    if not isinstance(node, dict):
+        return node
+    if uncertain and node.get("type") == "number":  # its words stay on the property, as editors look for them
+        said = {key: node[key] for key in ("title", "description", "default") if key in node}
+        return said | {"anyOf": [{k: v for k, v in node.items() if k not in said}, UNCERTAIN_NUMBER]}
+    return {
+        key: _plain(value)
+        if key == "description" and isinstance(value, str)
+        else _for_editors(value, uncertain)
+        for key, value in node.items()
+    }
 
 
-def _plain_descriptions(node: Any) -> Any:
-    """Descriptions as editors show them: the docstrings' reStructuredText literals (double
+def _plain(description: str) -> str:
+    """A description as editors show it: the docstrings' reStructuredText literals (double
     backquotes) and Sphinx roles (:mod:`x`) written as plain `x`, line breaks joined."""
-
-    if isinstance(node, dict):
-        out = {}
-        for key, value in node.items():
-            if key == "description" and isinstance(value, str):
-                value = re.sub(r":\w+:`~?([^`]+)`", r"`\1`", value).replace("``", "`")
-                value = re.sub(r"\s*\n\s*", " ", value).strip()
-            out[key] = _plain_descriptions(value)
-        return out
-    if isinstance(node, list):
-        return [_plain_descriptions(v) for v in node]
-    return node
+    description = re.sub(r":\w+:`~?([^`]+)`", r"`\1`", description).replace("``", "`")
+    return re.sub(r"\s*\n\s*", " ", description).strip()
