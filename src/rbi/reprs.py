@@ -15,7 +15,7 @@ from __future__ import annotations
 
 import functools
 import io
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from html import escape
 from typing import Any, ClassVar, TypeVar, overload
@@ -52,21 +52,41 @@ class Rows:
         """A table of (quantity, unit, value) rows."""
         return cls(title, QUANTITY_COLUMNS, list(cells), left=2, kind="quantities")
 
-    def rich(self) -> Any:
-        """The table as a :class:`rich.table.Table`: the first ``left`` columns aligned left,
-        the others right; title, headers and cells are text, never read as markup."""
+    def rich(self, text: Callable[[str], Any] | None = None, **style: Any) -> Any:
+        """The table as a :class:`rich.table.Table` with the table options ``style`` (the CLI's
+        box, edge and title's place): the first ``left`` columns aligned left, the others right;
+        a quantity's unit dim, a matrix's row labels bold, a parts table's numbers never
+        wrapped (its names fold), a check's verdict column left and its FAIL bold red. Title,
+        headers and cells become rich text through ``text`` (default :class:`rich.text.Text`:
+        a name holding [brackets] is text, never read as markup; the CLI's also escapes it)."""
         # not at top level: `rbi inertia --format json` would load rich.table and rich.text too
         from rich.table import Table
         from rich.text import Text
 
-        table = Table(title=Text(self.title))  # Text: a name holding [brackets] is not markup
+        text = text or Text
+
+        def cell_text(cell: str) -> Any:
+            shown = text(str(cell))
+            if cell == "FAIL":  # a check's verdict
+                shown.stylize("bold red")
+            return shown
+
+        table = Table(title=text(self.title), **style)
+        parts = self.kind == "parts"  # its numbers never wrap, its names fold
         for i, name in enumerate(self.columns):
-            table.add_column(Text(name), justify="left" if i < self.left else "right")
+            left = i < self.left or (self.kind == "check" and not name)
+            table.add_column(
+                Text("\n").join(map(text, name.split("\n"))),  # a label over its unit
+                justify="left" if left else "right",
+                style={("quantities", 1): "dim", ("matrix", 0): "bold"}.get((self.kind, i)),
+                no_wrap=parts and not left,
+                overflow="fold" if parts else "ellipsis",
+            )
         for row in self.cells:
-            table.add_row(*(Text(str(cell)) for cell in row))
+            table.add_row(*map(cell_text, row))
         if self.total is not None:
             table.add_section()
-            table.add_row(*(Text(str(cell)) for cell in self.total))
+            table.add_row(*map(cell_text, self.total))
         return table
 
     def html(self) -> str:

@@ -136,4 +136,4 @@ class Validation(Results[list[str]]):
 
     def rows(self) -> list[Rows]:
         cells = [(row["file"], "ok" if row["ok"] else row["problem"]) for row in self.csv_rows()]
-        return [Rows(f"validate: {self.summary}", ("file", "problem"), cells)]
+        return [Rows(f"validate: {self.summary}", ("file", "problem"), cells, left=2)]

@@ -14,8 +14,8 @@ import typer
 
 import rbi
 from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile, option
-from rbi.cli.render import emit_result, print_table, terminal_safe
-from rbi.cli.terminal import say, status_kept
+from rbi.cli.render import emit_result, print_table
+from rbi.cli.terminal import say, status_kept, terminal_safe
 
 GeometryOption = option(
     str,

@@ -8,11 +8,10 @@ from typing import Annotated
 import typer
 from rich import box
 from rich.console import Group
-from rich.text import Text
 
 from rbi.bench import report, suite
 from rbi.cli.options import FormatOption, OutputFormat, needs, require_matplotlib
-from rbi.cli.render import emit_result, progress_bar
+from rbi.cli.render import emit_result, note, progress_bar
 from rbi.cli.tables import SafeTable
 from rbi.cli.terminal import terminal_safe
 
@@ -81,10 +80,10 @@ def _tables(result: dict) -> Group:
     as docs/performance.md has it (its title, notes dim, table; code without backticks), then
     the headline."""
 
-    parts = [Text(" · ".join(report.machine_facts(result)).replace("`", ""), style="dim")]
+    parts = [note(" · ".join(report.machine_facts(result)).replace("`", ""), style="dim")]
     for section in report.report_sections(result):
-        parts += [Text(section.title.replace("`", ""))] if section.title else []
-        parts += [Text(section.notes.replace("`", ""), style="dim")] if section.notes else []
+        parts += [note(section.title.replace("`", ""))] if section.title else []
+        parts += [note(section.notes.replace("`", ""), style="dim")] if section.notes else []
         if section.rows:
             table = SafeTable(box=box.SIMPLE_HEAD, show_edge=False)  # headers and cells are text, not markup
             for header in section.columns:
@@ -93,4 +92,4 @@ def _tables(result: dict) -> Group:
                 table.add_row(*row)
             parts.append(table)
     lines = report.headline(result)
-    return Group(*parts, *([Text("\n".join("• " + line for line in lines))] if lines else []))
+    return Group(*parts, *([note("\n".join("• " + line for line in lines))] if lines else []))

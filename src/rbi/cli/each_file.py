@@ -32,7 +32,7 @@ from rbi.cli.render import (
     stdout_console,
     tables_of,
 )
-from rbi.cli.terminal import ReaderLeft, say, status_kept
+from rbi.cli.terminal import ReaderLeft, say, status_kept, terminal_safe
 
 STDIN = "-"
 STDIN_LABEL = "<stdin>"
@@ -112,7 +112,7 @@ class _Several:
             console = stdout_console()
             if self.sections:
                 console.print()
-            console.print(f"==> {label} <==", markup=False, highlight=False)
+            console.print(f"==> {terminal_safe(label)} <==", markup=False, highlight=False)
             console.print(fitted(one.shown(), console))
             self.sections += 1
         sys.stdout.flush()

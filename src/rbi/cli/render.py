@@ -35,32 +35,20 @@ def _color_system() -> str | None:
 
 
 def stdout_console():
-    return _safe_console(highlight=False, soft_wrap=False, color_system=_color_system())
+    return _console(highlight=False, soft_wrap=False, color_system=_color_system())
 
 
 def stderr_console():
-    return _safe_console(stderr=True, highlight=False, color_system=_color_system())
+    return _console(stderr=True, highlight=False, color_system=_color_system())
 
 
-def _safe_console(**options):
-    """A rich Console whose printed text never carries a control character from data: the last
-    line of defence behind :class:`rbi.cli.tables.SafeTable` (rich's own colour and cursor codes
-    are styles and control segments, not text, and pass unchanged)."""
+def _console(**options):
+    """A rich Console. It prints text as given: text from data is escaped once, where it
+    becomes rich text (:class:`rbi.cli.tables.SafeTable`'s cells and titles,
+    :func:`rbi.cli.tables.note`), before any layout."""
     from rich.console import Console  # rich only when something is drawn: JSON never loads it (~25 ms)
 
-    # not at top level: `rbi inertia --format json` would load rich.segment too
-    from rich.segment import Segment
-
-    class SafeConsole(Console):
-        def render(self, renderable, options=None):
-            for segment in super().render(renderable, options):
-                if segment.control or not segment.text:
-                    yield segment
-                else:
-                    text = terminal_safe(segment.text, keep="\n")
-                    yield segment if text is segment.text else Segment(text, segment.style, segment.control)
-
-    return SafeConsole(**options)
+    return Console(**options)
 
 
 def emit_result(
@@ -90,6 +78,14 @@ def emit_result(
         sys.stdout.write(result.to_csv())
     else:
         print_table(tables_of(result) if table is None else table())
+
+
+def note(text: str, style: str | None = None) -> Any:
+    """Prose under or between tables (a run's notes, the bench's headline) as rich text: escaped
+    once, here (as a cell is in :class:`rbi.cli.tables.SafeTable`), its own line breaks kept."""
+    from rich.text import Text  # not at top level: `rbi inertia --format json` would load rich.text too
+
+    return Text(terminal_safe(text, keep="\n"), style=style)
 
 
 def tables_of(result: Any) -> Any:
@@ -248,13 +244,13 @@ def fitted(renderable, console):
     plain_lines = _long_table_lines(renderable, console) if renderable.row_count > LONG_TABLE_ROWS else None
     if plain_lines is not None:
         body = Segments([segment for line in plain_lines for segment in (Segment(line), Segment.line())])
-        return Group(_line(title), body) if title else body
+        return Group(title, body) if title else body
     lines = _lines_if_intact(renderable, console)
     if lines is None:
         renderable.title = title
         return stacked(renderable, console.width)
     body = Segments([segment for line in lines for segment in (*line, Segment.line())])
-    return Group(_line(title), body) if title else body
+    return Group(title, body) if title else body
 
 
 LONG_TABLE_ROWS = 500
@@ -316,15 +312,12 @@ def _lines_if_intact(table, console):
 
 
 def _cell_text(cell) -> str | None:
-    """The text a cell shows (markup read), or None for a renderable that is not text."""
+    """The text a cell shows, or None for a renderable that is not text (a table rbi prints is
+    a :class:`rbi.cli.tables.SafeTable`, whose strings are rich Text: never markup)."""
     # not at top level: `rbi inertia --format json` would load rich.text too
     from rich.text import Text
 
-    if isinstance(cell, Text):
-        return cell.plain
-    if isinstance(cell, str) and "[" not in cell:  # no markup to read (most cells: numbers, names)
-        return cell
-    return Text.from_markup(cell).plain if isinstance(cell, str) else None
+    return cell.plain if isinstance(cell, Text) else None
 
 
 def _rows_in_order(rows, lines: list[str]) -> bool:
@@ -344,15 +337,8 @@ def _rows_in_order(rows, lines: list[str]) -> bool:
     return True
 
 
-def _line(text):
-    # not at top level: `rbi inertia --format json` would load rich.text too
-    from rich.text import Text
-
-    return text if isinstance(text, Text) else Text.from_markup(text) if isinstance(text, str) else text
-
-
 def _plain(cell) -> str:
-    """A cell or header as the text it shows (markup read, lines joined by a space)."""
+    """A cell or header as the text it shows (lines joined by a space)."""
     text = _cell_text(cell)
     return " ".join((str(cell) if text is None else text).split())
 
@@ -371,7 +357,7 @@ def stacked(table, width: int):
 
     headers = [_plain(column.header) for column in table.columns]
     rows = list(zip(*[[_plain(cell) for cell in column.cells] for column in table.columns]))
-    lines = [_line(table.title)] if table.title else []
+    lines = [table.title] if table.title else []
     if getattr(table, "rbi_layout", None) == "quantities":
         for name, unit, value in rows:
             left = f" {name}" + (f" [{unit}]" if unit else "")

@@ -16,8 +16,8 @@ from rbi.cli.options import (
     PackagePathOption,
     argument,
 )
-from rbi.cli.render import emit_result, terminal_safe
-from rbi.cli.terminal import say, status_kept
+from rbi.cli.render import emit_result
+from rbi.cli.terminal import say, status_kept, terminal_safe
 
 
 def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:

@@ -6,7 +6,7 @@ import sys
 
 import rbi
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, option, require_matplotlib
-from rbi.cli.render import emit_result, progress_bar, tables_of
+from rbi.cli.render import emit_result, note, progress_bar, tables_of
 from rbi.cli.run_options import run_options
 
 STANDARD_OUTPUT = ("-", "/dev/stdout", "/dev/fd/1", "/proc/self/fd/1")
@@ -100,6 +100,5 @@ def simulate(
 def _table(run, notes: list[str]):
     """The run's tables (`Trajectory.rows`) and the sentences under them."""
     from rich.console import Group  # not at top level: `rbi simulate --format csv` would load rich
-    from rich.text import Text  # not at top level: as rich.console
 
-    return Group(tables_of(run), Text("\n".join(notes)))
+    return Group(tables_of(run), note("\n".join(notes)))

@@ -10,7 +10,7 @@ import rbi
 from rbi.cli import tables
 from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
 from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, option, require, require_matplotlib
-from rbi.cli.render import emit_result, progress_bar
+from rbi.cli.render import emit_result, note, progress_bar
 from rbi.cli.run_options import RUN
 from rbi.cli.terminal import Terminated, say, terminal_safe
 
@@ -162,7 +162,7 @@ def _drawn(table, file: str):
     """The runs (or a study's spread, drawn as rbi's tables) of ``table.rows()``, then its notes."""
     rows = table.rows()
     drawn = [tables.drawn(rows)] if table.spread else [_runs(each, table, file) for each in rows]
-    return Group(*(drawn if table.held else []), Text("\n".join(table.notes())))
+    return Group(*(drawn if table.held else []), note("\n".join(table.notes())))
 
 
 def _runs(rows, table, file: str):

@@ -2,8 +2,6 @@
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
 from rich import box
 from rich.console import Group
 from rich.table import Table
@@ -45,18 +43,6 @@ def titled(title: str) -> Table:
     return SafeTable(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
 
 
-def quantities(title: str, rows: Sequence[tuple[str, str, str]]) -> Table:
-    """A table of (quantity, unit, value) rows; ``title`` and every cell are text."""
-    table = titled(title)
-    table.add_column("quantity")
-    table.add_column("unit", style="dim")
-    table.add_column("value", justify="right")
-    for name, unit, value in rows:
-        table.add_row(name, unit, value)
-    table.rbi_layout = "quantities"  # stacked as `quantity [unit]  value` when too wide (see stacked)
-    return table
-
-
 def drawn(rows) -> Group:
     """A result's tables (its ``rows()``: :class:`rbi.reprs.Rows`) in rbi's style, stacked.
     Every title, header and cell is text (never read as markup), made safe once here."""
@@ -64,32 +50,6 @@ def drawn(rows) -> Group:
 
 
 def _drawn(rows) -> Table:
-    cells = [tuple(_text(cell) for cell in row) for row in rows.cells]
-    if rows.kind == "quantities":
-        table = quantities(rows.title, [])
-        for row in cells:
-            table.add_row(*row)
-        return table
-    table = titled(rows.title)
-    for i, header in enumerate(rows.columns):
-        justify = "left" if i < rows.left or (rows.kind == "check" and not header) else "right"
-        if rows.kind == "parts":  # the label over its unit; numbers never wrap, names fold
-            header = Text(header, justify=justify) if i else "part"
-            table.add_column(header, justify=justify, no_wrap=i >= rows.left, overflow="fold")
-            continue
-        style = "bold" if rows.kind == "matrix" and i == 0 else None
-        table.add_column(header, justify=justify, style=style)
-    for row in cells:
-        table.add_row(*row)
-    if rows.total is not None:
-        table.add_section()
-        table.add_row(*(_text(cell) for cell in rows.total))
+    table = rows.rich(_cell, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
+    table.rbi_layout = rows.kind  # quantities are stacked as `quantity [unit]  value` when too wide
     return table
-
-
-def _text(cell: str) -> Text:
-    """A cell as text; a check's ``FAIL`` in bold red."""
-    text = _cell(cell)
-    if cell == "FAIL":
-        text.stylize("bold red")
-    return text
