@@ -84,17 +84,23 @@ NOISE_RELATIVE = 1e-12
 noise (a 1e-18 beside a 1e-4) and prints as 0 in tables; JSON and CSV keep every digit."""
 
 
+def without_noise(values: Iterable[float], scale: float = 0.0) -> list[float]:
+    """``values`` as floats, each entry below :data:`NOISE_RELATIVE` of the largest finite
+    magnitude among them or of ``scale`` (a position: the body's size) set to 0: the one rule
+    for rounding noise in tables (a vector, or a matrix's entries in one row)."""
+    values = [float(x) for x in values]
+    peak = max([abs(x) for x in values if math.isfinite(x)] + [scale if math.isfinite(scale) else 0.0])
+    return [0.0 if abs(x) < NOISE_RELATIVE * peak else x for x in values]
+
+
 def vector_text(values: Any, digits: int = 6, brackets: str = "[]", scale: float | None = None) -> str:
     """A vector for people: its entries as :func:`number` writes them (``digits`` significant
     figures, ``0`` for zero and ``-0``), comma-separated between ``brackets`` (``"[]"``, or
     ``"()"`` for a vector in prose). With ``scale`` (0: the vector's own), an entry below
     :data:`NOISE_RELATIVE` of the largest magnitude among them or of ``scale`` (a position: the
-    body's size) is rounding noise, written 0. The one vector formatter: the reprs of
+    body's size) is rounding noise, written 0 (:func:`without_noise`). The one vector formatter: the reprs of
     :mod:`rbi.api`, the CLI's tables and the bench report use it."""
-    values = [float(x) for x in values]
-    if scale is not None:
-        peak = max([abs(x) for x in values if math.isfinite(x)] + [scale if math.isfinite(scale) else 0.0])
-        values = [0.0 if abs(x) < NOISE_RELATIVE * peak else x for x in values]
+    values = [float(x) for x in values] if scale is None else without_noise(values, scale)
     return brackets[0] + ", ".join(number(x, digits) for x in values) + brackets[1]
 
 

@@ -19,7 +19,7 @@ import numpy as np
 from rbi.core.mass import MassProperties
 from rbi.reprs import Result, Results, Rows
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
-from rbi.text import NOISE_RELATIVE, number, plus_minus, vector_text
+from rbi.text import number, plus_minus, vector_text, without_noise
 
 PRODUCT_SIGN_TITLES = {"tensor": "products −∫xy dm", "cad": "CAD products +∫xy dm"}
 """Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
@@ -28,16 +28,6 @@ PRODUCT_SIGN_TITLES = {"tensor": "products −∫xy dm", "cad": "CAD products +�
 MAX_TABLE_PARTS = 200
 """Most parts a table lists (then a row saying how many more): 10,000 rows took rich 25 s to lay
 out, and a person reads the CSV or JSON of a body that large, which list every part."""
-
-
-def without_noise(values: Any, scale: float = 0.0) -> np.ndarray:
-    """``values`` with every entry below :data:`NOISE_RELATIVE` of their largest magnitude, or
-    of ``scale`` (a position: the body's size), set to 0, for printing."""
-    values = np.array(values, dtype=float)
-    finite = np.abs(values[np.isfinite(values)])
-    peak = max(float(finite.max()) if finite.size else 0.0, scale if math.isfinite(scale) else 0.0)
-    values[np.abs(values) < NOISE_RELATIVE * peak] = 0.0
-    return values
 
 
 def matrix_digits(matrix: Any) -> tuple[float, str]:
@@ -79,7 +69,9 @@ class About:
     label: str
     point: np.ndarray
 
-    def header(self) -> dict[str, Any]:
+    def to_dict(self) -> dict[str, Any]:
+        """The keys a result about the point starts its JSON with (not JSON-ready: a result's
+        ``to_dict()`` makes it so)."""
         body = self.body
         return {
             "name": body.name,
@@ -115,14 +107,14 @@ def _placed(result: Any) -> dict[str, Any]:
     """The JSON of a result about a point (`Principal`, `Momentum`): its place's header (only
     ``about`` without one), its declared fields (``json_keys``), then ``uncertainty`` for a
     spec with ±."""
-    head = result.place.header() if result.place else {"about": result.about}
+    head = result.place.to_dict() if result.place else {"about": result.about}
     spread = {} if result.uncertainty is None else {"uncertainty": result.uncertainty}
     return head | result.json_fields() | spread
 
 
 def matrix_rows(title: str, values: Any, unit: str) -> Rows:
     """A 3×3 matrix with a common power-of-ten scale written once in its header."""
-    values = without_noise(values)
+    values = np.reshape(without_noise(np.ravel(values)), np.shape(values))
     scale, scale_text = matrix_digits(values)
     corner = f"[{unit}]" + (f" {scale_text}" if scale_text else "")
     cells = [(label, *(number(v / scale, 7) for v in row)) for label, row in zip("xyz", values)]
@@ -154,7 +146,7 @@ class Inertia(Result):
     ``center_of_mass`` and ``inertia`` (as `Body.standard_uncertainty` gives them); else None."""
 
     def to_dict(self) -> dict[str, Any]:
-        out = self.about.header() | {
+        out = self.about.to_dict() | {
             "frame": self.frame,
             "rotations": list(self.rotations),
             "products_sign": self.products_sign,
