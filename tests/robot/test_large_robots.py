@@ -253,7 +253,7 @@ def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
     from rbi.robot.audit import _carried
 
     heavy = Inertial(MassProperties(1.0, np.zeros(3), np.eye(3) * 0.01), np.eye(3) * 0.01)
-    table = LinkTable("body")
+    table = LinkTable("m.xml", "body")
     for name in ("base", "a", None, "c") + (("d", "d") if shared_name else ()):
         table.add(name, None)
     table.inertials[0] = heavy
@@ -263,7 +263,7 @@ def test_mass_carried_below_an_unnamed_body_is_looked_for_below_it(shared_name):
             "m.xml: body[5] (d): duplicate body name 'd' (also body[4] (d)); every body needs its own name"
         )
         with pytest.raises(InputError) as refused:
-            table.columns("m.xml")
+            table.columns()
         assert str(refused.value) == message
         return
-    assert _carried(table.columns("m.xml")) == [False, False, False, False]
+    assert _carried(table.columns()) == [False, False, False, False]

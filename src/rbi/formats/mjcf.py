@@ -142,25 +142,26 @@ def read_mjcf(document, package_paths=None, geometry: bool = True) -> RobotModel
     defaults = _defaults(root)
     meshes = _mesh_assets(path, root, defaults, compiler)
     document.includes.extend(os.path.realpath(m["file"]) for m in meshes.values() if "file" in m)
-    table = LinkTable("body")
-    reader = _Bodies(path, table, compiler, defaults, meshes)
+    table = LinkTable(path, "body")
+    reader = _Bodies(table, compiler, defaults, meshes)
     for world in root.all("worldbody"):
         reader.children(world, Pose.identity(), None, "main")
     refuse_shared_keys(path, "body", table.names)
     joints = [(table.label(row), m.name) for row, motions in enumerate(table.motions) for m in motions]
     check_unique_joint_names(path, joints, "MuJoCo's compiler")
-    _actuator_limits(path, table, root, defaults)
+    _actuator_limits(table, root, defaults)
     options = {"gravity": _gravity(path, root), "boundinertia": compiler.boundinertia}
-    notes = _compile_inertia(path, table, compiler)
-    _check_moving_bodies(path, table)
-    columns = table.columns(path)
-    return RobotModel(path, "mjcf", root.get("model"), columns, notes, document=document, options=options)
+    notes = _compile_inertia(table, compiler)
+    _check_moving_bodies(table)
+    return RobotModel(
+        path, "mjcf", root.get("model"), table.columns(), notes, document=document, options=options
+    )
 
 
 ACTUATORS = ("general", "motor", "position", "velocity", "intvelocity", "damper", "cylinder", "muscle")
 
 
-def _actuator_limits(path: str, table: LinkTable, root, defaults) -> None:
+def _actuator_limits(table: LinkTable, root, defaults) -> None:
     """A joint without ``actuatorfrcrange`` takes the force ranges of the actuators that drive
     it, each times its gear (the joint's effort is the actuator's force times the gear)."""
     motions = {m.name: m for each in table.motions for m in each if m.name}
@@ -177,7 +178,7 @@ def _actuator_limits(path: str, table: LinkTable, root, defaults) -> None:
                 or attrs.get("forcelimited") == "false"
             ):
                 continue
-            where = Where(path, f"actuator {short(attrs.get('name') or joint)!r}")
+            where = Where(table.path, f"actuator {short(attrs.get('name') or joint)!r}")
             low, high = numbers(where, attrs["forcerange"], "forcerange", 2)
             gear = numbers(where, attrs.get("gear", "1"), "gear", (1, 2, 3, 4, 5, 6))[0]
             found[joint] = found.get(joint, 0.0) + max(abs(low), abs(high)) * abs(gear)
@@ -218,7 +219,7 @@ def _heavy_enough(table: LinkTable, row: int, welded: dict[str, list[int]]) -> b
     return any(_heavy_enough(table, child, welded) for child in welded.get(table.key(row), ()))
 
 
-def _check_moving_bodies(path: str, table: LinkTable) -> None:
+def _check_moving_bodies(table: LinkTable) -> None:
     """InputError for a body moved by a joint that cannot carry it (:func:`_heavy_enough`), as
     MuJoCo's compiler refuses it ("mass and inertia of moving bodies must be
     larger than mjMINVAL")."""
@@ -240,7 +241,7 @@ def _check_moving_bodies(path: str, table: LinkTable) -> None:
         else:
             why = f"{source} no inertia" if geoms else f"{source} a zero moment"
         raise InputError(
-            f"{path}: {table.label(row)}: moved by a joint but {why}; MuJoCo's compiler refuses it "
+            f"{table.path}: {table.label(row)}: moved by a joint but {why}; MuJoCo's compiler refuses it "
             "(mass and inertia of moving bodies must be larger than 1e-15): give it an <inertial> or a geom with mass"
         )
 
@@ -350,14 +351,8 @@ def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dic
 
 
 class _Bodies:
-    def __init__(self, path: str, table: LinkTable, compiler: Compiler, defaults, meshes):
-        self.path, self.table, self.compiler, self.defaults, self.meshes = (
-            path,
-            table,
-            compiler,
-            defaults,
-            meshes,
-        )
+    def __init__(self, table: LinkTable, compiler: Compiler, defaults, meshes):
+        self.table, self.compiler, self.defaults, self.meshes = table, compiler, defaults, meshes
         self.counts: dict[int, int] = {}  # row → the body's geoms read, in its group range or not
 
     def children(self, element, frame: Pose, link: int | None, active_class: str) -> None:
@@ -376,7 +371,7 @@ class _Bodies:
     def body(self, element, frame: Pose, parent: int | None, active_class: str) -> None:
         attrs, table = dict(element.attrib), self.table
         link = table.add(element.get("name"), element)
-        where = Where(self.path, table.label(link))
+        where = Where(table.path, table.label(link))
         table.parents[link] = table.key(parent) if parent is not None else None
         table.origins[link] = frame.then(self.pose(element, attrs, where))
         inner_class = element.get("childclass", active_class)
@@ -397,7 +392,7 @@ class _Bodies:
 
     def pose(self, element, attrs, where: Where | None = None) -> Pose:
         if where is None:
-            where = Where(self.path, f"<{element.tag}> (line {element.line})")
+            where = Where(self.table.path, f"<{element.tag}> (line {element.line})")
         pos = numbers(where, attrs.get("pos", "0 0 0"), "pos", 3)
         return Pose(self.orientation(where, attrs), np.array(pos, dtype=float))
 
@@ -484,7 +479,7 @@ class _Bodies:
     def geom(self, element, frame: Pose, link: int, active_class: str) -> None:
         attrs = _attributes(element, self.defaults, active_class)
         label = element_label("geom", self.counts[link], attrs.get("name") or None)
-        where = Where(self.path, f"{self.table.label(link)}: {label}")
+        where = Where(self.table.path, f"{self.table.label(link)}: {label}")
         kind = attrs.get("type", "sphere")
         if kind not in GEOM_KINDS:
             raise where.error(f"type: {short(kind)!r}: not a MuJoCo geom type ({', '.join(GEOM_KINDS)})")
@@ -560,7 +555,7 @@ def z_to(direction) -> np.ndarray:
 # --- compiled mass properties ---------------------------------------------------------------
 
 
-def _compile_inertia(path: str, table: LinkTable, compiler: Compiler) -> list[str]:
+def _compile_inertia(table: LinkTable, compiler: Compiler) -> list[str]:
     """Each body's compiled mass properties into ``table`` (from its geoms in the group range,
     its collisions); the notes on ``<inertial>`` elements MuJoCo ignores."""
     notes = []
@@ -573,7 +568,7 @@ def _compile_inertia(path: str, table: LinkTable, compiler: Compiler) -> list[st
             props = geoms_sum(
                 table.collisions[row],
                 lambda geom, measure: geom.density if geom.mass is None else geom.mass / measure,
-                f"{path}: {table.label(row)}: ",
+                f"{table.path}: {table.label(row)}: ",
                 "exact",
                 as_mujoco=True,
             )
@@ -581,7 +576,7 @@ def _compile_inertia(path: str, table: LinkTable, compiler: Compiler) -> list[st
                 inertials[row] = Inertial(props, props.inertia_about_com, element=None, source="geoms")
                 if explicit is not None:
                     notes.append(
-                        f'{path}: {table.label(row)}: <inertial> ignored: inertiafromgeom="true" '
+                        f'{table.path}: {table.label(row)}: <inertial> ignored: inertiafromgeom="true" '
                         "takes the mass properties from the geoms, as MuJoCo does"
                     )
             elif explicit is not None and compiler.inertiafromgeom == "true":

@@ -315,14 +315,14 @@ class LinkColumns:
 
 
 class LinkTable:
-    """The links of an SDF or MJCF file as its reader finds them, one row a link: plain lists
+    """The links of the SDF or MJCF file at ``path`` as its reader finds them, one row a link: plain lists
     (``names``; ``parents``, the parent's key, :func:`link_key`, None for a root; ``origins``,
     ``inertials``, ``motions``, ``collisions``, ``visuals`` and ``elements``, as
     :class:`LinkColumns` describes them), stacked into :class:`LinkColumns` once by
     :meth:`columns`."""
 
-    def __init__(self, word: str):
-        self.word = word
+    def __init__(self, path: str, word: str):
+        self.path, self.word = path, word
         self.names: list[str | None] = []
         self.parents: list[str | None] = []
         self.origins: list[Pose] = []
@@ -349,10 +349,10 @@ class LinkTable:
     def key(self, row: int) -> str:
         return link_key(self.word, row, self.names[row])
 
-    def columns(self, path: str) -> LinkColumns:
+    def columns(self) -> LinkColumns:
         """The rows as :class:`LinkColumns` (geoms in one column per tag, place in the link and
         kind: kind ``other``, without sizes, for a mesh, a shell or a kind with no volume)."""
-        parents, order = tree_rows(path, self.word, self.names, self.parents)
+        parents, order = tree_rows(self.path, self.word, self.names, self.parents)
         none = Inertial(MassProperties.zero("link"), np.zeros((3, 3)))
         inertials = [none if each is None else each for each in self.inertials]
         joints = [(row, motion) for row, motions in enumerate(self.motions) for motion in motions]

@@ -70,7 +70,7 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
         for include in root.iter("include")
     ]
     prefix = len(models) > 1
-    table = LinkTable("link")
+    table = LinkTable(path, "link")
     named: set[str] = set()
     for model_element, model_pose in models:
         model_name = model_element.get("name") or ""
@@ -105,8 +105,8 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
                 )
             links[own] = row
         refuse_shared_keys(path, "link", table.names)  # across models too: "a" + "b::c" is "a::b" + "c"
-        _joints(path, table, model_element, links, link_poses, frames, f"{model_name}::" if prefix else "")
-    return RobotModel(path, "sdf", name, table.columns(path), unchecked=unchecked, document=document)
+        _joints(table, model_element, links, link_poses, frames, f"{model_name}::" if prefix else "")
+    return RobotModel(path, "sdf", name, table.columns(), unchecked=unchecked, document=document)
 
 
 def _models(element, pose: Pose, nested: bool = False):
@@ -276,11 +276,10 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
     return Geom(kind, (), pose, label)
 
 
-def _joints(
-    path: str, table: LinkTable, model_element, links: dict, link_poses: dict, frames, prefix: str
-) -> None:
+def _joints(table: LinkTable, model_element, links: dict, link_poses: dict, frames, prefix: str) -> None:
     """Each joint of the model onto its child link (a row of ``table``); a joint's name is
     ``prefix`` and its own."""
+    path = table.path
     for index, element in enumerate(model_element.all("joint")):
         name = element.get("name")
         joint_name = prefix + name if prefix and name is not None else name
