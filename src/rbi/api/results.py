@@ -433,8 +433,9 @@ class Parts(Results[Part]):
     def __repr__(self) -> str:
         return f"<rbi.Parts {len(self)} parts of {self._body.name or self._body.path!r}>"
 
-    def part_rows(self) -> list[dict[str, Any]]:
-        """One dict a part, as ``rbi parts --format json`` lists them in ``parts``."""
+    def to_dict(self) -> dict[str, Any]:
+        """The body's totals and ``parts``, one object a part: the rows of the CSV and of the
+        tables too."""
         body = self._body
         units = body.units
         to_si = MASS_UNITS_IN_KG[units["mass"]] / LENGTH_UNITS_IN_M[units["length"]] ** 3
@@ -460,10 +461,6 @@ class Parts(Results[Part]):
             if step:  # the error estimate of each STEP part
                 row["integration_error"] = part.integration_error
             rows.append(row)
-        return rows
-
-    def to_dict(self) -> dict[str, Any]:
-        body = self._body
         return (
             named(body)
             | {
@@ -472,7 +469,7 @@ class Parts(Results[Part]):
                 "volume": self.volume,
                 "mean_density": self.mean_density,
                 "principal_moments": self.principal_moments,
-                "parts": self.part_rows(),
+                "parts": rows,
             }
             | self._uncertainty()
         )
@@ -489,7 +486,7 @@ class Parts(Results[Part]):
         }
 
     def csv_rows(self) -> list[dict[str, Any]]:
-        return self.part_rows()
+        return self.to_dict()["parts"]
 
     def csv_summary(self) -> dict[str, Any]:
         return {k: v for k, v in self.to_dict().items() if k != "warnings"} | {"parts": len(self)}
@@ -497,10 +494,10 @@ class Parts(Results[Part]):
     def rows(self) -> list[Rows]:
         """Three tables, each narrow enough for 80 columns: mass and volume; centre of mass and
         share of the inertia; principal moments. Each ends with the whole body's row."""
-        body, rows = self._body, self.part_rows()
+        body, data = self._body, self.to_dict()
         labels, units, name = body.unit_labels, body.units, body.name or body.path
+        rows, total = data["parts"], data.get("uncertainty", {})
         spreads = [row.get("uncertainty", {}) for row in rows]  # a spec with ±: value ± u
-        total = self._uncertainty().get("uncertainty", {})
         names = [row["name"] for row in rows]
         l_unit, m_unit = units["length"], units["mass"]
         masses = _part_table(
