@@ -3,38 +3,41 @@
 from __future__ import annotations
 
 import rbi
-from rbi.cli.options import SpecFile, option, require_matplotlib
+from rbi.cli.options import REQUIRED, SpecFile, command, option, require_matplotlib
 from rbi.cli.render import progress_bar, say_warnings
-from rbi.cli.run_options import run_options
+from rbi.cli.run_options import RUN, budget
 from rbi.cli.terminal import terminal_safe
 
-OutOption = option(
-    str,
-    "--out",
-    "-o",
-    metavar="FILE.html|FILE.gif",
-    help="The animation: .html (3D, plays offline in a browser) or .gif.",
-)
-SpeedOption = option(
-    float, "--speed", metavar="X", help="Playback speed the page starts at (0.1–2; 1 = real time)."
-)
-FpsOption = option(
-    int,
-    "--fps",
-    metavar="N",
-    help="Frames per second of a GIF, 1–60; it plays in real time, so it has about --duration × N "
-    "frames, at most 1500.",
+OPTIONS = (
+    *(each for name, each in RUN.items() if name != "samples"),
+    option(
+        str,
+        "--out",
+        "-o",
+        default=REQUIRED,
+        metavar="FILE.html|FILE.gif",
+        help="The animation: .html (3D, plays offline in a browser) or .gif.",
+    ),
+    option(
+        float,
+        "--speed",
+        default=1.0,
+        metavar="X",
+        help="Playback speed the page starts at (0.1–2; 1 = real time).",
+    ),
+    option(
+        int,
+        "--fps",
+        default=25,
+        metavar="N",
+        help="Frames per second of a GIF, 1–60; it plays in real time, so it has about --duration × N "
+        "frames, at most 1500.",
+    ),
 )
 
 
-@run_options(without="samples")
-def animate(
-    file: SpecFile,
-    out: OutOption,
-    settings: dict,
-    speed: SpeedOption = 1.0,
-    fps: FpsOption = 25,
-) -> None:
+@command(*OPTIONS, api=rbi.simulate)
+def animate(file: SpecFile, *, out: str, **settings) -> None:
     """Animate the body's motion, simulated as `rbi simulate` does.
 
     The HTML page draws the parts as solids, the pivot and the ground, and the path of the tip
@@ -54,8 +57,6 @@ def animate(
     body = rbi.load(file)
     say_warnings(body.warnings)
     with progress_bar("gif", "frames", show=gif) as progress:
-        made = rbi.animate(
-            body, out, speed=speed, fps=fps, progress=progress.update if progress else None, **settings
-        )
+        made = rbi.animate(body, out, progress=progress.update if progress else None, **budget(settings))
     shown = f"{made.frames} {'frames' if gif else 'keyframes'} over {settings['duration']:g} s"
     print(f"{terminal_safe(out)}: {shown}, largest tilt of the spin axis {made.max_tilt_deg:.3g}°")

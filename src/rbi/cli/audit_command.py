@@ -13,72 +13,65 @@ import sys
 import typer
 
 import rbi
-from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, RobotFile, option
+from rbi.cli.options import FORMAT, PACKAGE_PATHS, OutputFormat, RobotFile, command, option
 from rbi.cli.render import emit_result, print_table
 from rbi.cli.terminal import say, status_kept, terminal_safe
 
-GeometryOption = option(
-    str,
-    "--geometry",
-    metavar="collision|visual|none",
-    help="Which geometry gives a link's volume (a link without it falls back to the other); none: "
-    "read no geometry, check the declared inertials and totals only.",
-)
-DensityOption = option(
-    float | None, "--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³)."
-)
-MaterialOption = option(
-    str | None,
-    "--material",
-    metavar="NAME",
-    help="Built-in material for links that declare no mass (steel, aluminium, ...).",
-)
-MeshInertiaOption = option(
-    str,
-    "--mesh-inertia",
-    metavar="auto|exact|convex|shell",
-    help="Mass of a mesh: auto (the solid a closed mesh encloses, else its convex hull, flagged 'mesh'), "
-    "exact (the mesh must be closed), convex (its hull), or shell (its surface, as MuJoCo).",
-)
-MeshRepairOption = option(
-    bool,
-    "--mesh-repair",
-    help="Close meshes' small holes (three or four edges) first; the area added is reported.",
-)
-JointsOption = option(
-    list[str] | None,
-    "--joints",
-    metavar="NAME=VALUE",
-    help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
-    "several after one --joints (--joints a=1 b=2) or the option repeated. Default: zero (MJCF: qpos0).",
-)
-FixOption = option(
-    bool,
-    "--fix",
-    help="Replace each flagged inertial by its geometry's; without --out, show the changes only.",
-)
-OutOption = option(
-    str | None,
-    "--out",
-    "-o",
-    metavar="FILE",
-    help="With --fix: where to write the fixed copy of the robot file.",
+OPTIONS = (
+    PACKAGE_PATHS,
+    option(
+        str,
+        "--geometry",
+        metavar="collision|visual|none",
+        help="Which geometry gives a link's volume (a link without it falls back to the other); none: "
+        "read no geometry, check the declared inertials and totals only.",
+    ),
+    option(
+        float | None, "--density", metavar="KG_PER_M3", help="Density for links that declare no mass (kg/m³)."
+    ),
+    option(
+        str | None,
+        "--material",
+        metavar="NAME",
+        help="Built-in material for links that declare no mass (steel, aluminium, ...).",
+    ),
+    option(
+        str,
+        "--mesh-inertia",
+        metavar="auto|exact|convex|shell",
+        help="Mass of a mesh: auto (the solid a closed mesh encloses, else its convex hull, flagged 'mesh'), "
+        "exact (the mesh must be closed), convex (its hull), or shell (its surface, as MuJoCo).",
+    ),
+    option(
+        bool,
+        "--mesh-repair",
+        help="Close meshes' small holes (three or four edges) first; the area added is reported.",
+    ),
+    option(
+        list[str] | None,
+        "--joints",
+        metavar="NAME=VALUE",
+        help="Joint coordinate for the totals (radians for revolute/hinge, metres for prismatic/slide); "
+        "several after one --joints (--joints a=1 b=2) or the option repeated. Default: zero (MJCF: qpos0).",
+    ),
+    option(
+        bool,
+        "--fix",
+        help="Replace each flagged inertial by its geometry's; without --out, show the changes only.",
+    ),
+    option(
+        str | None,
+        "--out",
+        "-o",
+        metavar="FILE",
+        help="With --fix: where to write the fixed copy of the robot file.",
+    ),
+    FORMAT,
 )
 
 
-def audit(
-    file: RobotFile,
-    package_path: PackagePathOption = None,
-    geometry: GeometryOption = "collision",
-    density: DensityOption = None,
-    material: MaterialOption = None,
-    mesh_inertia: MeshInertiaOption = "auto",
-    mesh_repair: MeshRepairOption = False,
-    joints: JointsOption = None,
-    fix: FixOption = False,
-    out: OutOption = None,
-    format: FormatOption = OutputFormat.table,
-) -> None:
+@command(*OPTIONS, api=rbi.audit)
+def audit(file: RobotFile, *, format: OutputFormat, **settings) -> None:
     """Check each link's mass, centre of mass and inertia against its own geometry.
 
     Per link: the declared mass properties, the geometry's at the same mass (with the density
@@ -96,21 +89,10 @@ def audit(
       rbi audit robot.urdf --fix --out fixed.urdf
     """
 
-    report = rbi.audit(
-        file,
-        package_paths=package_path,
-        geometry=geometry,
-        density=density,
-        material=material,
-        mesh_inertia=mesh_inertia,
-        joints=joints,
-        fix=fix,
-        out=out,
-        mesh_repair=mesh_repair,
-    )
+    report = rbi.audit(file, **settings)
     code = report.exit_code
     with status_kept(code):  # a reader that left does not clear a flagged link
-        _render(report, format, file, out if fix else None, fix)
+        _render(report, format, file, settings["out"] if settings["fix"] else None, settings["fix"])
     if code:
         raise typer.Exit(code)
 

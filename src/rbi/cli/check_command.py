@@ -8,10 +8,11 @@ from __future__ import annotations
 
 import rbi
 from rbi.cli.each_file import FileReport, report_each
-from rbi.cli.options import FormatOption, OutputFormat, SpecFiles
+from rbi.cli.options import FORMAT, OutputFormat, SpecFiles, command
 
 
-def check(files: SpecFiles, format: FormatOption = OutputFormat.table) -> int:
+@command(FORMAT)
+def check(files: SpecFiles, *, format: OutputFormat) -> int:
     """Compare mass, centre of mass, principal moments and inertia with the spec's `expect:` block.
 
     Exit 0 when every expectation holds, 1 when any fails (for CI), 2 on bad input. With

@@ -3,43 +3,37 @@
 from __future__ import annotations
 
 import sys
-from enum import Enum
+from typing import Literal
 
 import rbi
 from rbi import SpecError
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile, option
+from rbi.cli.options import FORMAT, REQUIRED, OutputFormat, SpecFile, command, option
 from rbi.cli.render import emit_result, say_warnings
 
 
-class ExportTarget(str, Enum):
-    urdf = "urdf"
-    mjcf = "mjcf"
-    sdf = "sdf"
-
-
-ToOption = option(
-    ExportTarget, "--to", "-t", help="Robot description format: urdf, mjcf or sdf.", show_default=False
+@command(
+    option(
+        Literal["urdf", "mjcf", "sdf"],
+        "--to",
+        "-t",
+        default=REQUIRED,
+        help="Robot description format: urdf, mjcf or sdf.",
+    ),
+    option(
+        bool,
+        "--document",
+        help="Print a whole minimal document (robot/link, "
+        "mujoco/worldbody/body, sdf/model/link) instead of the bare element.",
+    ),
+    option(
+        bool,
+        "--diagonal",
+        help="MJCF only: principal moments (diaginertia) and the principal frame (quat) instead of fullinertia.",
+    ),
+    FORMAT,
+    api=rbi.Body.export,
 )
-DocumentOption = option(
-    bool,
-    "--document",
-    help="Print a whole minimal document (robot/link, "
-    "mujoco/worldbody/body, sdf/model/link) instead of the bare element.",
-)
-DiagonalOption = option(
-    bool,
-    "--diagonal",
-    help="MJCF only: principal moments (diaginertia) and the principal frame (quat) instead of fullinertia.",
-)
-
-
-def export(
-    file: SpecFile,
-    to: ToOption,
-    document: DocumentOption = False,
-    diagonal: DiagonalOption = False,
-    format: FormatOption = OutputFormat.table,
-) -> None:
+def export(file: SpecFile, *, to, format: OutputFormat, **settings) -> None:
     """The <inertial> element (mass, centre of mass, inertia about it) in SI units: kg, m, kg·m².
 
     \b
@@ -48,12 +42,11 @@ def export(
       rbi export robot_link.yaml --to mjcf --diagonal --document
     """
 
-    if diagonal and to is not ExportTarget.mjcf:
+    if settings["diagonal"] and to != "mjcf":
         raise SpecError(
             "--diagonal: only for --to mjcf (URDF and SDF take the full matrix about the centre of mass)"
         )
-    source = rbi.load(file)
-    result = source.export(to.value, document=document, diagonal=diagonal)
+    result = rbi.load(file).export(to, **settings)
     if format is OutputFormat.table:  # the element itself: no table
         say_warnings(result.warnings)
         sys.stdout.write(result.xml)

@@ -7,50 +7,48 @@ import os
 import sys
 
 import rbi
-from rbi.cli.options import FormatOption, OutputFormat, PackagePathOption, argument, option
+from rbi.cli.options import FORMAT, PACKAGE_PATHS, OutputFormat, argument, command, option
 from rbi.cli.render import emit_result
 from rbi.cli.terminal import say, terminal_safe
 
 ImportFile = argument(str, "Robot description (.urdf, .sdf, MJCF .xml) or CAD file (.step, .stp).", "FILE")
-DensityOption = option(
-    float | None,
-    "--density",
-    metavar="D",
-    help="STEP files: density of every solid, kg/m³ (default 1000, a placeholder).",
-)
-MaterialOption = option(
-    str | None,
-    "--material",
-    metavar="NAME",
-    help="STEP files: a built-in material for every solid (e.g. steel).",
-)
-LinkOption = option(
-    list[str] | None,
-    "--link",
-    "-l",
-    metavar="NAME",
-    help="Import only this link (MJCF: body); repeat for several.",
-)
-OutOption = option(
-    str | None,
-    "--out",
-    "-o",
-    metavar="DIR|FILE.yaml",
-    help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
-    "link is imported. Without it one spec is printed: the link given with --link, or the whole "
-    "robot (one part per link, placed at the zero configuration).",
-)
 
 
-def import_robot(
-    file: ImportFile,
-    link: LinkOption = None,
-    out: OutOption = None,
-    package_path: PackagePathOption = None,
-    format: FormatOption = OutputFormat.table,
-    density: DensityOption = None,
-    material: MaterialOption = None,
-) -> None:
+@command(
+    option(
+        list[str] | None,
+        "--link",
+        "-l",
+        name="links",
+        metavar="NAME",
+        help="Import only this link (MJCF: body); repeat for several.",
+    ),
+    option(
+        str | None,
+        "--out",
+        "-o",
+        metavar="DIR|FILE.yaml",
+        help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
+        "link is imported. Without it one spec is printed: the link given with --link, or the whole "
+        "robot (one part per link, placed at the zero configuration).",
+    ),
+    PACKAGE_PATHS,
+    FORMAT,
+    option(
+        float | None,
+        "--density",
+        metavar="D",
+        help="STEP files: density of every solid, kg/m³ (default 1000, a placeholder).",
+    ),
+    option(
+        str | None,
+        "--material",
+        metavar="NAME",
+        help="STEP files: a built-in material for every solid (e.g. steel).",
+    ),
+    api=rbi.import_robot,
+)
+def import_robot(file: ImportFile, *, format: OutputFormat, **settings) -> None:
     """Turn each link of a robot file into an rbi spec: its mass, centre of mass and inertia as a custom part.
 
     A STEP file (.step, .stp) becomes one spec with a `shape: step` part per solid, named after
@@ -70,13 +68,11 @@ def import_robot(
       rbi import humanoid.xml --format json
       rbi import bracket.step --material aluminium
     """
-    imported = rbi.import_robot(
-        file, links=link, package_paths=package_path, out=out, density=density, material=material
-    )
+    imported = rbi.import_robot(file, **settings)
     if isinstance(imported, rbi.RobotImport):
-        _robot_output(imported, file, link, format)
+        _robot_output(imported, file, settings["links"], format)
     else:
-        _step_output(imported, file, out, format)
+        _step_output(imported, file, settings["out"], format)
 
 
 def _robot_output(robot, file: str, link, format: OutputFormat) -> None:

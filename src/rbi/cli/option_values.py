@@ -4,8 +4,10 @@ errors spelled with the command line's options."""
 
 from __future__ import annotations
 
+import functools
 import math
 import re
+from collections.abc import Callable
 from typing import Any
 
 import rbi
@@ -53,28 +55,16 @@ def parse_vector(text: str, option: str, count: int = 3) -> list[float]:
     return values
 
 
+def vector_parser(option: str) -> Callable[[str], list[float]]:
+    """The parser of an ``X,Y,Z`` option: :func:`parse_vector` naming ``option``."""
+    return functools.partial(parse_vector, option=option)
+
+
 def spin_axis_option(text: str | None) -> str | list[float] | None:
     """``--spin-axis``: a named axis (``x``, ``-y``) as it is, ``X,Y,Z`` as three numbers."""
     if text is None or "," not in text:
         return text
     return parse_vector(text, "--spin-axis")
-
-
-def run_settings(
-    spin: Any, omega: str | None, tilt: Any, yes: bool, spin_axis: str | None, **same: Any
-) -> dict:
-    """The settings of one run as ``rbi.simulate`` takes them, from `simulate`'s and `animate`'s
-    options: ``--omega`` and ``--spin-axis`` text as numbers, ``--tilt`` as ``tilt_deg``,
-    ``--yes`` as ``check_budget=False``; ``same``: the options named as the API's parameters
-    (``duration``, ``rtol`` ...)."""
-    return dict(
-        spin=spin,
-        omega=None if omega is None else parse_vector(omega, "--omega"),
-        tilt_deg=tilt,
-        check_budget=not yes,
-        spin_axis=spin_axis_option(spin_axis),
-        **same,
-    )
 
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
@@ -107,6 +97,11 @@ def sweep_values(text: str, option: str) -> Any:
     return value
 
 
+def axis_parser(option: str) -> Callable[[str], Any]:
+    """The parser of a sweep axis's option: :func:`sweep_values` naming ``option``."""
+    return functools.partial(sweep_values, option=option)
+
+
 def vary_option(items: list[str]) -> dict[str, Any]:
     """``--vary PATH=RANGE`` items as ``rbi.sweep``'s ``vary``: path → values."""
     vary: dict[str, Any] = {}
@@ -135,6 +130,14 @@ def parse_about(text: str) -> str | list[float]:
             f"--about: expected {names} or a point X,Y,Z (three numbers separated by commas, file "
             f"units), got {text!r}"
         ) from None
+
+
+def parse_direction(text: str) -> list[float]:
+    """``--axis``: a direction X,Y,Z, of any length but zero."""
+    direction = parse_vector(text, "--axis")
+    if not any(direction):
+        raise SpecError(f"--axis: must be a non-zero direction X,Y,Z (got {text!r})")
+    return direction
 
 
 def parse_rotation(text: str) -> tuple[str, str]:

@@ -5,7 +5,9 @@ need: how --help says so (:func:`needs`) and the refusal, before any work, when 
 from __future__ import annotations
 
 import importlib.util
+import inspect
 import logging
+from collections.abc import Callable, Mapping
 from enum import Enum
 from typing import Annotated, Any
 
@@ -14,17 +16,50 @@ from typer.core import TyperArgument
 
 from rbi import SpecError
 
+REQUIRED = inspect.Parameter.empty
+"""The default of an option the command cannot run without (``rbi export --to``)."""
+API: Any = object()
+"""The default of an option declared without one: the default of the parameter of that name of
+the API function the command calls (:func:`command`), else None."""
 
-def option(kind: Any, *names: str, **settings: Any) -> Any:
-    """An option as a command's parameter type, ``Annotated[kind, typer.Option(*names,
-    **settings)]``: declared once here or in a command's module and used as ``name: Option =
-    default`` (typer reads the annotation when the command runs)."""
-    return Annotated[kind, typer.Option(*names, **settings)]
+
+def option(kind: Any, *names: str, default: Any = API, name: str | None = None, **settings: Any) -> Any:
+    """One option, declared once: its type, flags, default, metavar and help (``settings``:
+    typer.Option's), as the parameter :func:`command` gives a command. The parameter is named
+    after the first flag (``--mesh-inertia``: ``mesh_inertia``) unless ``name`` names it as the
+    API does (``--tilt``: ``tilt_deg``)."""
+    name = name or names[0].split("/")[0].removeprefix("--").replace("-", "_")
+    annotation = Annotated[kind, typer.Option(*names, **settings)]
+    return inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=default, annotation=annotation)
 
 
 def argument(kind: Any, help: str, metavar: str) -> Any:
-    """A positional argument as a command's parameter type (see :func:`option`)."""
+    """A positional argument as a command's parameter type: ``file: SpecFile``."""
     return Annotated[kind, typer.Argument(help=help, show_default=False, metavar=metavar)]
+
+
+def command(
+    *options: inspect.Parameter, api: Callable[..., Any] | None = None
+) -> Callable[[Callable[..., Any]], Callable[..., Any]]:
+    """A command's decorator: the command takes its own arguments and then ``options``, in the
+    order --help lists them, as keywords (those it does not name, in one ``**settings``); an
+    option declared without a default defaults as the parameter of that name of ``api``."""
+    defaults = {} if api is None else inspect.signature(api).parameters
+
+    def decorate(function: Callable[..., Any]) -> Callable[..., Any]:
+        own = inspect.signature(function, eval_str=True).parameters.values()
+        arguments = [p for p in own if p.kind is inspect.Parameter.POSITIONAL_OR_KEYWORD]
+        taken = [p.replace(default=_default(p, defaults)) for p in options]
+        function.__signature__ = inspect.Signature([*arguments, *taken])  # type: ignore[attr-defined]
+        return function
+
+    return decorate
+
+
+def _default(option: inspect.Parameter, api: Mapping[str, inspect.Parameter]) -> Any:
+    if option.default is not API:
+        return option.default
+    return api[option.name].default if option.name in api else None
 
 
 class OutputFormat(str, Enum):
@@ -33,9 +68,14 @@ class OutputFormat(str, Enum):
     csv = "csv"
 
 
-FormatOption = option(
-    OutputFormat, "--format", "-f", help="table (for people), json (one object) or csv (header + rows)."
+FORMAT = option(
+    OutputFormat,
+    "--format",
+    "-f",
+    default=OutputFormat.table,
+    help="table (for people), json (one object) or csv (header + rows).",
 )
+FormatOption = FORMAT.annotation
 
 
 class DocumentFormat(str, Enum):
@@ -47,7 +87,7 @@ class DocumentFormat(str, Enum):
 
 DocumentFormatOption = option(
     DocumentFormat, "--format", "-f", help="table (indented JSON, for people) or json (on one line)."
-)
+).annotation
 SpecFile = argument(str, "Body spec (YAML or JSON); - reads it from standard input.", "FILE")
 SpecFiles = argument(
     list[str],
@@ -55,21 +95,24 @@ SpecFiles = argument(
     "FILE...",
 )
 RobotFile = argument(str, "Robot description: .urdf, .sdf or MJCF (.xml).", "ROBOT_FILE")
-PackagePathOption = option(
+PACKAGE_PATHS = option(
     list[str] | None,
     "--package-path",
+    name="package_paths",
     metavar="NAME=DIR",
     help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
     "(ROS_PACKAGE_PATH is searched too).",
 )
-AboutOption = option(
+PackagePathOption = PACKAGE_PATHS.annotation
+ABOUT = option(
     str,
     "--about",
     "-a",
+    default="com",
     metavar="com|origin|pivot|X,Y,Z",
     help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units).",
 )
-UnitsOption = option(
+UNITS = option(
     str | None,
     "--units",
     "-u",

@@ -7,18 +7,15 @@ from __future__ import annotations
 
 import rbi
 from rbi.cli.each_file import FileReport, report_each
-from rbi.cli.options import FormatOption, OutputFormat, SpecFiles, option
+from rbi.cli.options import FORMAT, OutputFormat, SpecFiles, command, option
 
-ExpandOption = option(
-    bool, "--expand", help="List each sub-assembly's own parts (ASSEMBLY/PART), not one row."
+
+@command(
+    FORMAT,
+    option(bool, "--expand", help="List each sub-assembly's own parts (ASSEMBLY/PART), not one row."),
+    api=rbi.Body.parts,
 )
-
-
-def parts(
-    files: SpecFiles,
-    format: FormatOption = OutputFormat.table,
-    expand: ExpandOption = False,
-) -> int:
+def parts(files: SpecFiles, *, format: OutputFormat, expand: bool) -> int:
     """Per-part breakdown: mass and its share, volume, centre of mass, inertia about the part's
     own centre of mass and its principal moments, share of the body's inertia, implied
     density; a total row for the body.

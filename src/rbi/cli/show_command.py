@@ -3,23 +3,22 @@
 from __future__ import annotations
 
 import rbi
-from rbi.cli.options import SpecFile, needs, option, require_matplotlib
+from rbi.cli.options import REQUIRED, SpecFile, command, needs, option, require_matplotlib
 from rbi.cli.render import say_warnings
 from rbi.cli.terminal import terminal_safe
 
-OutOption = option(
-    str,
-    "--out",
-    "-o",
-    metavar="FILE.png|FILE.svg|FILE.html",
-    help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
+
+@command(
+    option(
+        str,
+        "--out",
+        "-o",
+        default=REQUIRED,
+        metavar="FILE.png|FILE.svg|FILE.html",
+        help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
+    )
 )
-
-
-def show(
-    file: SpecFile,
-    out: OutOption,
-) -> None:
+def show(file: SpecFile, *, out: str) -> None:
     """Draw the body as specified: every part in place (holes red and translucent), the centre
     of mass, the principal axes about it (lengths in proportion to their moments, labelled
     with them) and the pivot. The commonest spec mistakes, a part in the wrong place or in the

@@ -5,9 +5,9 @@ from __future__ import annotations
 import sys
 
 import rbi
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, option, require_matplotlib
+from rbi.cli.options import FORMAT, OutputFormat, SpecFile, command, needs, option, require_matplotlib
 from rbi.cli.render import emit_result, note, progress_bar, tables_of
-from rbi.cli.run_options import run_options
+from rbi.cli.run_options import RUN, budget
 
 STANDARD_OUTPUT = ("-", "/dev/stdout", "/dev/fd/1", "/proc/self/fd/1")
 """The names of standard output ``--out`` takes (as rbi's writer knows them)."""
@@ -18,50 +18,43 @@ METHOD_HELP = (
     "form (free body; axisymmetric top with its centre of mass on the axis)."
 )
 
-OutOption = option(
-    str | None,
-    "--out",
-    "-o",
-    metavar="FILE.csv",
-    help="Write the trajectory as CSV (only if the run succeeds; '-' for standard output).",
-)
-DrawsOption = option(
-    int | None,
-    "--draws",
-    metavar="N",
-    help="For a spec with ±: N more runs with the inputs drawn, the summary's spread from them.",
-    show_default=False,
-)
-SeedOption = option(int | None, "--seed", metavar="S", help="Seed of the --draws.")
-MethodOption = option(str, "--method", "-m", metavar="NAME", help=METHOD_HELP)
-ErrorEstimateOption = option(
-    bool,
-    "--error-estimate/--no-error-estimate",
-    help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
-    "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).",
-)
-PlotOption = option(
-    str | None,
-    "--plot",
-    metavar="FILE.png|.svg|.pdf",
-    help="Plot the path of the spin axis seen from above, its tilt "
-    "(a free body: each principal axis's turn), ω and energy "
-    f"drift against time ({needs('matplotlib', 'plot')}).",
+OPTIONS = (
+    *RUN.values(),
+    option(
+        str | None,
+        "--out",
+        "-o",
+        metavar="FILE.csv",
+        help="Write the trajectory as CSV (only if the run succeeds; '-' for standard output).",
+    ),
+    option(str, "--method", "-m", metavar="NAME", help=METHOD_HELP),
+    option(
+        bool,
+        "--error-estimate/--no-error-estimate",
+        help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
+        "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).",
+    ),
+    option(
+        str | None,
+        "--plot",
+        metavar="FILE.png|.svg|.pdf",
+        help="Plot the path of the spin axis seen from above, its tilt "
+        "(a free body: each principal axis's turn), ω and energy "
+        f"drift against time ({needs('matplotlib', 'plot')}).",
+    ),
+    option(
+        int | None,
+        "--draws",
+        metavar="N",
+        help="For a spec with ±: N more runs with the inputs drawn, the summary's spread from them.",
+    ),
+    option(int | None, "--seed", metavar="S", help="Seed of the --draws."),
+    FORMAT,
 )
 
 
-@run_options()
-def simulate(
-    file: SpecFile,
-    settings: dict,
-    out: OutOption = None,
-    method: MethodOption = "default",
-    error_estimate: ErrorEstimateOption = True,
-    plot: PlotOption = None,
-    draws: DrawsOption = None,
-    seed: SeedOption = None,
-    format: FormatOption = OutputFormat.table,
-) -> None:
+@command(*OPTIONS, api=rbi.simulate)
+def simulate(file: SpecFile, *, format: OutputFormat, out: str | None, **settings) -> None:
     """Simulate the body: a heavy top on its pivot (spec with `pivot`) or a torque-free body.
 
     Prints the conserved quantities' drift, an error estimate and, for a top, whether it
@@ -81,15 +74,12 @@ def simulate(
             "--out -: the trajectory goes to standard output, where --format json prints its "
             "object; write the trajectory to a file (--out FILE.csv) or leave out --format json"
         )
-    if plot is not None:
+    if settings["plot"] is not None:
         require_matplotlib()
     format = OutputFormat.csv if streamed else format
     body = rbi.load(file)
     with progress_bar("simulating", stdout=True, delay=0.5, show=format == OutputFormat.table) as progress:
-        outputs = dict(out=None if streamed else out, plot=plot, draws=draws, seed=seed)
-        run = rbi.simulate(
-            body, **settings, method=method, error_estimate=error_estimate, progress=progress, **outputs
-        )
+        run = rbi.simulate(body, **budget(settings), out=None if streamed else out, progress=progress)
     if format == OutputFormat.csv:
         sys.stdout.write(run.to_csv())
         return

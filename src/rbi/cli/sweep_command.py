@@ -8,68 +8,101 @@ from rich.text import Text
 
 import rbi
 from rbi.cli import tables
-from rbi.cli.option_values import spin_axis_option, sweep_values, vary_option
-from rbi.cli.options import FormatOption, OutputFormat, SpecFile, needs, option, require, require_matplotlib
+from rbi.cli.option_values import axis_parser, vary_option
+from rbi.cli.options import (
+    FORMAT,
+    OutputFormat,
+    SpecFile,
+    command,
+    needs,
+    option,
+    require,
+    require_matplotlib,
+)
 from rbi.cli.render import emit_result, note, progress_bar
-from rbi.cli.run_options import RUN
+from rbi.cli.run_options import RUN, budget
 from rbi.cli.terminal import Terminated, say, terminal_safe
 
-SpinOption = option(
-    str, "--spin", "-s", metavar="START:STOP:COUNT", help="Spins about the spin axis, rad/s (or one value)."
-)
-TiltOption = option(
-    str,
-    "--tilt",
-    metavar="START:STOP:COUNT",
-    help="Nudges at t=0: turns of the body about --tilt-axis, degrees (or one value).",
-)
-VaryOption = option(
-    list[str] | None,
-    "--vary",
-    metavar="PATH=RANGE",
-    help="Vary a number of the spec: PATH is parts.NAME.FIELD or "
-    "parts.NAME.FIELD[i] (e.g. parts.bolt.position[0]); RANGE is START:STOP:COUNT, or normal(MEAN,SD) / "
-    "uniform(LOW,HIGH) with --runs. Repeatable.",
-)
-RunsOption = option(
-    int, "--runs", metavar="N", help="Monte Carlo: N draws of every normal()/uniform() --vary per grid point."
-)
-SeedOption = option(int, "--seed", metavar="S", help="Seed of the draws (same seed, same rows).")
-MaxStepsOption = option(
-    int | None,
-    "--max-steps",
-    metavar="N",
-    help="Most steps one run may take (default 1e+07, as simulate's); a run that needs more is a failed row.",
-)
-WorkersOption = option(int | None, "--workers", "-j", metavar="N", help="Cores to use (default: all).")
-DaskOption = option(
-    str | None,
-    "--dask",
-    metavar="ADDRESS",
-    help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
-    f"for a local cluster ({needs('Dask', 'dask')}).",
-)
-OutOption = option(
-    str | None,
-    "--out",
-    "-o",
-    metavar="FILE.csv|FILE.parquet",
-    help=f"Write one row per run, streamed as runs finish (FILE.parquet {needs('pyarrow', 'parquet')}).",
-)
-ResumeOption = option(
-    bool, "--resume", help="Continue an interrupted sweep into --out: compute only the runs missing there."
-)
-PlotOption = option(
-    str | None,
-    "--plot",
-    metavar="FILE.png|.svg|.pdf",
-    help=f"Draw the map: largest tilt over the first two swept axes ({needs('matplotlib', 'plot')}).",
-)
-MassPropertiesOption = option(
-    bool,
-    "--mass-properties",
-    help="No simulation: the spread of mass, centre of mass, principal moments and "
-    "principal-axis directions over the --vary values.",
+OPTIONS = (
+    option(
+        str,
+        "--spin",
+        "-s",
+        default="0",
+        metavar="START:STOP:COUNT",
+        parser=axis_parser("--spin"),
+        help="Spins about the spin axis, rad/s (or one value).",
+    ),
+    option(
+        str,
+        "--tilt",
+        default="0",
+        name="tilt_deg",
+        metavar="START:STOP:COUNT",
+        parser=axis_parser("--tilt"),
+        help="Nudges at t=0: turns of the body about --tilt-axis, degrees (or one value).",
+    ),
+    option(
+        list[str] | None,
+        "--vary",
+        metavar="PATH=RANGE",
+        help="Vary a number of the spec: PATH is parts.NAME.FIELD or "
+        "parts.NAME.FIELD[i] (e.g. parts.bolt.position[0]); RANGE is START:STOP:COUNT, or normal(MEAN,SD) / "
+        "uniform(LOW,HIGH) with --runs. Repeatable.",
+    ),
+    option(
+        int,
+        "--runs",
+        metavar="N",
+        help="Monte Carlo: N draws of every normal()/uniform() --vary per grid point.",
+    ),
+    option(int, "--seed", metavar="S", help="Seed of the draws (same seed, same rows)."),
+    RUN["duration"],
+    RUN["samples"],
+    RUN["rtol"],
+    RUN["gravity"],
+    RUN["tilt_axis"],
+    option(
+        int | None,
+        "--max-steps",
+        metavar="N",
+        help="Most steps one run may take (default 1e+07, as simulate's); a run that needs more is a failed row.",
+    ),
+    option(int | None, "--workers", "-j", metavar="N", help="Cores to use (default: all)."),
+    option(
+        str | None,
+        "--dask",
+        metavar="ADDRESS",
+        help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
+        f"for a local cluster ({needs('Dask', 'dask')}).",
+    ),
+    option(
+        str | None,
+        "--out",
+        "-o",
+        metavar="FILE.csv|FILE.parquet",
+        help=f"Write one row per run, streamed as runs finish (FILE.parquet {needs('pyarrow', 'parquet')}).",
+    ),
+    option(
+        bool,
+        "--resume",
+        help="Continue an interrupted sweep into --out: compute only the runs missing there.",
+    ),
+    option(
+        str | None,
+        "--plot",
+        metavar="FILE.png|.svg|.pdf",
+        help=f"Draw the map: largest tilt over the first two swept axes ({needs('matplotlib', 'plot')}).",
+    ),
+    option(
+        bool,
+        "--mass-properties",
+        help="No simulation: the spread of mass, centre of mass, principal moments and "
+        "principal-axis directions over the --vary values.",
+    ),
+    RUN["yes"],
+    RUN["spin_axis"],
+    FORMAT,
 )
 
 
@@ -77,29 +110,8 @@ HIDDEN = frozenset({"min_tilt_deg", "precession_rate_deg_s", "steps"})
 """Columns of --out, json and csv that the table leaves out, to fit 80 columns."""
 
 
-def sweep(
-    file: SpecFile,
-    spin: SpinOption = "0",
-    tilt: TiltOption = "0",
-    vary: VaryOption = None,
-    runs: RunsOption = 1,
-    seed: SeedOption = 0,
-    duration: RUN.duration = 4.0,
-    samples: RUN.samples = 481,
-    rtol: RUN.rtol = 1e-12,
-    gravity: RUN.gravity = None,
-    tilt_axis: RUN.tilt_axis = "y",
-    max_steps: MaxStepsOption = None,
-    workers: WorkersOption = None,
-    dask: DaskOption = None,
-    out: OutOption = None,
-    resume: ResumeOption = False,
-    plot: PlotOption = None,
-    mass_properties: MassPropertiesOption = False,
-    yes: RUN.yes = False,
-    spin_axis: RUN.spin_axis = None,
-    format: FormatOption = OutputFormat.table,
-) -> None:
+@command(*OPTIONS, api=rbi.sweep)
+def sweep(file: SpecFile, *, format: OutputFormat, **settings) -> None:
     """Many runs of one spec: a grid over spin, tilt and spec fields, or Monte Carlo draws.
 
     One row per run: the swept values, the largest, final and smallest tilt of the spin axis,
@@ -116,18 +128,14 @@ def sweep(
           --vary 'parts.bolt.position[0]=uniform(0.039,0.041)' --runs 1000
     """
 
-    if dask is not None:
+    if settings["dask"] is not None:
         require("distributed", "dask", "--dask")
-    if dask == "local":
+    if settings["dask"] == "local":
         require("cryptography", "dask", "--dask local")  # its private TLS certificates
-    if plot is not None:
+    if settings["plot"] is not None:
         require_matplotlib()
-    settings = dict(runs=runs, seed=seed, duration=duration, samples=samples, rtol=rtol, gravity=gravity)
-    settings |= dict(tilt_axis=tilt_axis, max_steps=max_steps, workers=workers, dask=dask, plot=plot)
-    settings |= dict(spin=sweep_values(spin, "--spin"), tilt_deg=sweep_values(tilt, "--tilt"))
-    settings |= dict(vary=vary_option(vary or []), spin_axis=spin_axis_option(spin_axis))
-    settings |= dict(mass_properties=mass_properties, check_budget=not yes, out=out, resume=resume)
-    table = _run(file, settings)
+    table = _run(file, budget(settings) | {"vary": vary_option(settings["vary"] or [])})
+    workers = settings["workers"]
     if workers is not None and table.cores is not None and table.cores < workers:
         say(f"--workers {workers}: this machine gives rbi {table.cores} cores; using {table.cores}")
     emit_result(format.value, table, table=lambda: _drawn(table, file))

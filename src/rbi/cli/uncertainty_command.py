@@ -4,29 +4,25 @@ from __future__ import annotations
 
 import rbi
 from rbi.cli.each_file import FileReport, report_each
-from rbi.cli.options import FormatOption, OutputFormat, SpecFiles, option
+from rbi.cli.options import FORMAT, OutputFormat, SpecFiles, command, option
 
-OfOption = option(
-    list[str] | None,
-    "--of",
-    metavar="QUANTITY",
-    help="A quantity as a JSON path of rbi inertia/principal: mass, center_of_mass[0], inertia[0][2], "
-    "moments[1]; center_of_mass alone: its 3 entries (repeat for several). Default: mass, centre of mass, inertia about it, principal moments.",
-    show_default=False,
+
+@command(
+    option(
+        list[str] | None,
+        "--of",
+        metavar="QUANTITY",
+        help="A quantity as a JSON path of rbi inertia/principal: mass, center_of_mass[0], inertia[0][2], "
+        "moments[1]; center_of_mass alone: its 3 entries (repeat for several). Default: mass, centre of mass, inertia about it, principal moments.",
+    ),
+    option(str, "--method", metavar="linear|monte-carlo", help="Law of propagation or Monte Carlo."),
+    option(int, "--samples", metavar="N", help="Monte Carlo draws."),
+    option(int | None, "--seed", metavar="S", help="Seed of the draws."),
+    option(float, "--coverage", metavar="P", help="Coverage probability."),
+    FORMAT,
+    api=rbi.Body.uncertainty,
 )
-
-
-def uncertainty(
-    files: SpecFiles,
-    of: OfOption = None,
-    method: option(
-        str, "--method", metavar="linear|monte-carlo", help="Law of propagation or Monte Carlo."
-    ) = "linear",
-    samples: option(int, "--samples", metavar="N", help="Monte Carlo draws.") = 100_000,
-    seed: option(int | None, "--seed", metavar="S", help="Seed of the draws.") = None,
-    coverage: option(float, "--coverage", metavar="P", help="Coverage probability.") = 0.95,
-    format: FormatOption = OutputFormat.table,
-) -> int:
+def uncertainty(files: SpecFiles, *, format: OutputFormat, **settings) -> int:
     """The uncertainty budget: each quantity's value, standard uncertainty and interval, and
     every ± input's sensitivity, contribution and share, largest first.
 
@@ -38,7 +34,7 @@ def uncertainty(
     """
 
     def report(file: str) -> FileReport:
-        result = rbi.load(file).uncertainty(of, method, samples, seed, coverage)
+        result = rbi.load(file).uncertainty(**settings)
         return FileReport(result, table=lambda: result)
 
     return report_each(files, report, format.value)
