@@ -15,11 +15,15 @@ from rbi.text import number
 _MATRIX_ENTRIES = (("xx", 0, 0), ("yy", 1, 1), ("zz", 2, 2), ("xy", 0, 1), ("xz", 0, 2), ("yz", 1, 2))
 
 
+CHECK_KEYS = ("quantity", "unit", "expected", "actual", "deviation", "tol", "allowed", "passed", "about")
+"""The fields of a `Check` that ``rbi check --format json`` lists, in its order (``passed`` as
+``pass``; ``about`` only where there is one)."""
+
+
 def _check_dict(check: Check) -> dict[str, Any]:
-    """A check as ``rbi check --format json`` lists it: its fields, ``passed`` as ``pass``,
-    without ``component_deviation``, and ``about`` only where there is one."""
-    skip = ("component_deviation", "about") if check.about is None else ("component_deviation",)
-    return {"pass" if k == "passed" else k: v for k, v in vars(check).items() if k not in skip}
+    """A check as ``rbi check --format json`` lists it (see :data:`CHECK_KEYS`)."""
+    keys = CHECK_KEYS if check.about is not None else CHECK_KEYS[:-1]
+    return {"pass" if k == "passed" else k: getattr(check, k) for k in keys}
 
 
 def _components(check: Check) -> list[tuple[str, Any, Any, Any]]:
