@@ -28,7 +28,7 @@ from typer.models import CommandInfo
 from rbi import SpecError, __version__, outside_paths_allowed
 from rbi.cli import completion, terminal
 from rbi.cli.option_values import error_line
-from rbi.cli.options import plain_argument_help
+from rbi.cli.options import command, option, plain_argument_help
 from rbi.cli.terminal import ReaderLeft, StdoutUnwritable, Terminated, say
 
 try:  # typer 0.26 and later vendor click, and export neither exception publicly
@@ -125,30 +125,29 @@ def _version(value: bool) -> None:
 
 
 @app.callback()
-def _root(
-    version: bool = typer.Option(
-        False, "--version", callback=_version, is_eager=True, help="Print the version and exit."
-    ),
-    install_completion: bool = typer.Option(
-        False,
+@command(
+    option(bool, "--version", callback=_version, is_eager=True, help="Print the version and exit."),
+    option(
+        bool,
         "--install-completion",
         callback=completion.install_option,
         is_eager=True,
         help="Install tab completion of commands, options and files for your shell (bash or zsh, from $SHELL).",
     ),
-    show_completion: bool = typer.Option(
-        False,
+    option(
+        bool,
         "--show-completion",
         callback=completion.show_option,
         is_eager=True,
         help="Print the completion script for your shell, to install it by hand.",
     ),
-    allow_outside_paths: bool = typer.Option(
-        False,
+    option(
+        bool,
         "--allow-outside-paths",
         help="Let a spec name files outside its own folder (point clouds, meshes); also accepted after the command.",
     ),
-) -> None:
+)
+def _root(**options: bool) -> None:
     """Rigid-body calculator."""
 
 
