@@ -1,5 +1,6 @@
 """`rbi bench --quick`: runs as CI would, prints one JSON object, writes the docs page and the
-plot, and its numbers are internally consistent (no timing thresholds: the machine is shared)."""
+plot, and its numbers are internally consistent (no timing thresholds: the machine is shared).
+The run is tests/bench/conftest.py's quick_proc, shared with test_cad."""
 
 from __future__ import annotations
 
@@ -8,23 +9,7 @@ import math
 
 import pytest
 
-from tests.conftest import run_rbi
-
-
-@pytest.fixture(scope="module")
-def quick_proc(tmp_path_factory):
-    folder = tmp_path_factory.mktemp("bench")
-    # the page's name holds an escape sequence: the line naming it must not reach the terminal raw
-    doc, png = folder / "perf\x1b[31m.md", folder / "workprecision.png"
-    proc = run_rbi("bench", "--quick", "--format", "json", "--write-docs", doc, "--plot", png)
-    assert proc.returncode == 0, proc.stderr
-    return proc, doc, png
-
-
-@pytest.fixture(scope="module")
-def quick_run(quick_proc):
-    proc, doc, png = quick_proc
-    return json.loads(proc.stdout), doc, png
+from tests.conftest import run_rbi, run_rbi_inprocess
 
 
 def test_the_written_page_is_named_escaped(quick_proc):
@@ -116,7 +101,7 @@ def test_docs_page_and_plot_are_written(quick_run):
     ],
 )
 def test_bad_options_exit_2_with_one_line(args, message):
-    proc = run_rbi("bench", *args)
+    proc = run_rbi_inprocess("bench", *args)
     assert proc.returncode == 2
     assert message in proc.stderr
     assert len(proc.stderr.strip().splitlines()) == 1
@@ -222,7 +207,7 @@ def test_csv_of_a_section_without_targets_is_its_records():
     proc = run_rbi("bench", "--only", "throughput", "--quick", "--format", "csv", check=True)
     lines = list(csv.DictReader(proc.stdout.splitlines()))
     result = json.loads(
-        run_rbi("bench", "--only", "throughput", "--quick", "--format", "json", check=True).stdout
+        run_rbi_inprocess("bench", "--only", "throughput", "--quick", "--format", "json").stdout
     )
     tp = result["throughput"]
     header = ["section", "table", *tp["point_clouds"][0], *tp["solid_parts"][0]]

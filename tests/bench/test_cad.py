@@ -32,10 +32,11 @@ def test_plate_closed_form_by_a_second_route():
     assert inertia[2, 2] == pytest.approx(izz_origin - volume * (com[0] ** 2 + com[1] ** 2), rel=1e-13)
 
 
-def test_step_is_exact_and_the_stl_is_not():
-    from rbi.bench import cad, report
+def test_step_is_exact_and_the_stl_is_not(quick_run):
+    """The cad section of tests/bench/conftest.py's `rbi bench --quick` (cad.run(quick=True))."""
+    from rbi.bench import report
 
-    result = cad.run(quick=True)
+    result = quick_run[0]["cad"]
     step, stl = result["files"]
     assert step["file"] == "STEP" and stl["file"] == "STL"
     assert max(step["volume_error"], step["com_error"], step["inertia_error"]) < 1e-9
