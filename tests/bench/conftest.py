@@ -1,5 +1,7 @@
 """One `rbi bench --quick` run, as CI would run it, shared by every test that reads its result
-(the run takes most of a minute: its sections are the same whichever test reads them)."""
+(the run takes most of a minute: its sections are the same whichever test reads them). The tests
+that read it are all in test_bench_command.py, so that under pytest-xdist's `--dist loadfile`
+(the README's test command) one worker runs them and the run is made once."""
 
 from __future__ import annotations
 

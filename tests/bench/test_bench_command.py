@@ -1,6 +1,7 @@
 """`rbi bench --quick`: runs as CI would, prints one JSON object, writes the docs page and the
 plot, and its numbers are internally consistent (no timing thresholds: the machine is shared).
-The run is tests/bench/conftest.py's quick_proc, shared with test_cad."""
+The run is made once, by the module's quick_proc (under pytest-xdist's --dist loadfile one worker
+runs this whole file)."""
 
 from __future__ import annotations
 
@@ -227,3 +228,22 @@ def test_csv_of_a_section_without_targets_is_its_records():
     again = list(csv.DictReader(Report(result).to_csv().splitlines()))
     for row, (_, record) in zip(again, records, strict=True):
         assert {k: float(row[k]) for k in record} == record
+
+
+def test_step_is_exact_and_the_stl_is_not(quick_run):
+    """The cad section (cad.run(quick=True)): the 200-hole plate read as STEP is exact to 1e-9 of
+    its closed form (tests/bench/test_cad.py), its STL tessellation is not; both rows reach the
+    report's table."""
+    pytest.importorskip("OCP")
+    from rbi.bench import report
+
+    result = quick_run[0]["cad"]
+    step, stl = result["files"]
+    assert step["file"] == "STEP" and stl["file"] == "STL"
+    assert max(step["volume_error"], step["com_error"], step["inertia_error"]) < 1e-9
+    assert step["integration_error"] < 1e-9
+    assert stl["triangles"] > 10_000 and stl["inertia_error"] > 1e-6 and stl["volume_error"] > 1e-6
+    (section,) = report.report_sections({"cad": result})
+    assert section.title == "CAD solids: STEP against STL" and len(section.columns) == 8
+    assert [row[0] for row in section.rows] == ["STEP", "STL"]
+    assert section.rows[1][1] == f"{stl['triangles']:,}" and section.rows[0][1] == "—"

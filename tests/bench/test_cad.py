@@ -1,6 +1,7 @@
 """rbi bench's cad section: the 200-hole plate read as STEP is exact to 1e-9 of its closed form
 (worked out here again, independently of the bench's own), its STL tessellation is not; both
-rows reach the report's table and Markdown."""
+rows reach the report's table and Markdown (that check reads the quick run's cad section: in
+test_bench_command.py, which makes the run)."""
 
 from __future__ import annotations
 
@@ -30,19 +31,3 @@ def test_plate_closed_form_by_a_second_route():
         r * r / 2 + holes[:, 0] ** 2 + holes[:, 1] ** 2
     )
     assert inertia[2, 2] == pytest.approx(izz_origin - volume * (com[0] ** 2 + com[1] ** 2), rel=1e-13)
-
-
-def test_step_is_exact_and_the_stl_is_not(quick_run):
-    """The cad section of tests/bench/conftest.py's `rbi bench --quick` (cad.run(quick=True))."""
-    from rbi.bench import report
-
-    result = quick_run[0]["cad"]
-    step, stl = result["files"]
-    assert step["file"] == "STEP" and stl["file"] == "STL"
-    assert max(step["volume_error"], step["com_error"], step["inertia_error"]) < 1e-9
-    assert step["integration_error"] < 1e-9
-    assert stl["triangles"] > 10_000 and stl["inertia_error"] > 1e-6 and stl["volume_error"] > 1e-6
-    (section,) = report.report_sections({"cad": result})
-    assert section.title == "CAD solids: STEP against STL" and len(section.columns) == 8
-    assert [row[0] for row in section.rows] == ["STEP", "STL"]
-    assert section.rows[1][1] == f"{stl['triangles']:,}" and section.rows[0][1] == "—"
