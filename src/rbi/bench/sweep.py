@@ -2,7 +2,7 @@
 
 - Throughput: a grid of ``rbi sweep bodies/top.yaml --spin 150:260:100 --tilt 0.01:1:100`` (10⁴
   runs of 4 s at the default rtol; 20 × 10 runs of 0.5 s in a quick run), run in this process
-  as the command runs it (:class:`rbi.sweeps.study.Study`, rows streamed to a CSV), in runs per
+  as the command runs it (:func:`rbi.sweep`, rows streamed to a CSV), in runs per
   second. Baselines: the single-run in-process rate (``rbi.sim.api.simulate`` on one run after
   another, over an evenly spaced sample of the same grid points) times the number of cores
   (target ≥ 0.8), and a loop of ``rbi simulate FILE --spin S --tilt T`` processes over a sample
@@ -23,17 +23,16 @@ import tempfile
 import time
 from pathlib import Path
 
+import rbi
 from rbi.bench import Progress
 from rbi.bench.paths import bodies_folder, rbi_command
 from rbi.bench.timing import clocked, run_process
-from rbi.files.output import output_target
 from rbi.runs.run import scene_of as body_scene
 from rbi.sim.api import simulate
 from rbi.sim.scene import initial_state
-from rbi.spec.load import load_body, read_spec
+from rbi.spec.load import load_body
 from rbi.sweeps.execute import available_cores
 from rbi.sweeps.plan import Grid
-from rbi.sweeps.study import Study, SweepSettings, check_settings
 
 TARGETS = {"ratio_to_cores_x_single": 0.8, "ratio_to_process_loop": 300.0, "peak_rss_mb": 500.0}
 
@@ -55,19 +54,6 @@ def sample_runs(g: dict, count: int) -> list[tuple[float, float]]:
     total = len(spins) * len(tilts)
     picks = sorted({int(round(i * (total - 1) / max(count - 1, 1))) for i in range(count)})
     return [(spins[k // len(tilts)], tilts[k % len(tilts)]) for k in picks]
-
-
-def _in_process_sweep(spec: Path, g: dict, out: Path) -> None:
-    """The sweep `rbi sweep` runs for this grid (:class:`rbi.sweeps.study.Study`), in this process,
-    streaming its rows to the CSV ``out``."""
-
-    settings = SweepSettings(
-        spin=Grid(*g["spin"]), tilt_deg=Grid(*g["tilt"]), duration=g["duration"], check_budget=False
-    )
-    check_settings(settings)
-    raw, spec_bytes = read_spec(spec)
-    study = Study(str(spec), raw, settings, rows_printed=False, spec_bytes=spec_bytes)
-    study.run(output_target(str(out), "--out", ("csv", "parquet"), inputs=[str(spec)]))
 
 
 def single_run_rate(spec: Path, runs: list[tuple[float, float]], duration: float) -> dict:
@@ -102,7 +88,8 @@ def process_loop_rate(spec: Path, runs: list[tuple[float, float]], duration: flo
 def sweep_rate(spec: Path, g: dict, folder: Path) -> dict:
     out = folder / "sweep.csv"
     runs = g["spin"][2] * g["tilt"][2]
-    seconds, cpu, _ = clocked(lambda: _in_process_sweep(spec, g, out))
+    grid = {"spin": Grid(*g["spin"]), "tilt_deg": Grid(*g["tilt"]), "duration": g["duration"]}
+    seconds, cpu, _ = clocked(lambda: rbi.sweep(spec, **grid, check_budget=False, out=out))
     return {
         "command": f"rbi sweep bodies/top.yaml --spin {_axis_text(g['spin'])} --tilt {_axis_text(g['tilt'])} "
         f"--duration {g['duration']:g} --out FILE.csv --yes --format json",
