@@ -18,12 +18,11 @@ from pathlib import Path
 import numpy as np
 
 from rbi.bench import Progress
-from rbi.bench.largespec import spec_text
-from rbi.bench.timing import clocked, measure
+from rbi.bench.largespec import load_steps, spec_text
+from rbi.bench.timing import measure
 from rbi.core.inertia import centre_of_mass, principal_axes
 from rbi.core.mass import combine
-from rbi.spec.load import load_body, read_yaml, validation_messages
-from rbi.spec.translate import body_from_spec
+from rbi.spec.load import load_body
 
 CLOUDS = {True: (10**3, 10**4, 10**5), False: (10**3, 10**4, 10**5, 10**6)}
 """Points in each cloud: quick run, full run."""
@@ -129,27 +128,21 @@ def solid_parts(sizes, progress: Progress, tmp: Path) -> list[dict]:
         progress(f"spec of {n:,} parts in YAML")
         path = tmp / f"parts{n}.yaml"
         path.write_text(spec_text(n, "cone,cylinder,point", seed=1))
-        read_s, _, raw = clocked(lambda: read_yaml(path))
-        validate_s, _, (spec, problems) = clocked(lambda: validation_messages(str(path), raw))
-        if problems:
-            raise RuntimeError(f"generated spec is invalid: {problems[0]}")
-        translate_s, _, body = clocked(lambda: body_from_spec(spec, str(path)))
+        steps, raw, body = load_steps(str(path))
         parts = body.elements  # one stack
         core = measure(lambda: principal_axes(parts.sum().inertia_about_com))
-        total = read_s + validate_s + translate_s
+        total = sum(steps.values())
         # The same spec as one JSON object (also valid YAML), as a generating program would write it.
         as_json = path.with_suffix(".json")
         as_json.write_text(json.dumps(raw))
-        json_s = clocked(
-            lambda: body_from_spec(validation_messages(str(as_json), read_yaml(as_json))[0], str(as_json))
-        )[0]
+        json_s = sum(load_steps(str(as_json))[0].values())
         rows.append(
             {
                 "parts": n,
                 "yaml_megabytes": path.stat().st_size / 1e6,
-                "read_yaml_s": read_s,
-                "validate_s": validate_s,
-                "translate_s": translate_s,
+                "read_yaml_s": steps["read"],
+                "validate_s": steps["validate"],
+                "translate_s": steps["translate"],
                 "load_total_s": total,
                 "us_per_part": 1e6 * total / n,
                 "load_total_json_s": json_s,
