@@ -3,57 +3,48 @@
 from __future__ import annotations
 
 import sys
-from typing import Annotated
 
-import typer
 from rich import box
 from rich.console import Group
 
 from rbi.bench import report, suite
-from rbi.cli.options import FormatOption, OutputFormat, needs, require_matplotlib
+from rbi.cli.options import FORMAT, OutputFormat, command, needs, option, require_matplotlib
 from rbi.cli.render import emit_result, note, progress_bar
 from rbi.cli.tables import SafeTable
 from rbi.cli.terminal import terminal_safe
 
-QuickOption = Annotated[
-    bool,
-    typer.Option(
+OPTIONS = (
+    option(
+        bool,
         "--quick",
+        default=False,
         help="A CI-sized run of a few seconds: shorter cases, fewer tolerances and sizes, fewer repeats.",
     ),
-]
-OnlyOption = Annotated[
-    str | None,
-    typer.Option(
+    option(
+        str | None,
         "--only",
         metavar="SECTIONS",
         help=f"Comma-separated sections to run: {', '.join(suite.NAMES)} (default: all).",
     ),
-]
-PlotOption = Annotated[
-    str | None,
-    typer.Option(
+    option(
+        str | None,
         "--plot",
         metavar="FILE.png",
         help="Write a log–log plot of error against time, .png, .svg or .pdf "
         f"({needs('matplotlib', 'plot')}).",
     ),
-]
-WriteDocsOption = Annotated[
-    str | None,
-    typer.Option(
-        "--write-docs", metavar="FILE.md", help="Write the report as Markdown (docs/performance.md)."
+    option(
+        str | None,
+        "--write-docs",
+        metavar="FILE.md",
+        help="Write the report as Markdown (docs/performance.md).",
     ),
-]
+    FORMAT,
+)
 
 
-def bench(
-    quick: QuickOption = False,
-    only: OnlyOption = None,
-    plot: PlotOption = None,
-    write_docs: WriteDocsOption = None,
-    format: FormatOption = OutputFormat.table,
-) -> None:
+@command(*OPTIONS, api=suite.run)
+def bench(*, format: OutputFormat, **settings) -> None:
     """Measure what accuracy costs and how fast rbi is, each target against its baseline measured in
     the same run: the integrator against the textbook's scipy RK45 set-up and a minimal loop, error against time
     for each integrator, mass properties of 10³…10⁶ point masses, large specs against a bare YAML
@@ -66,12 +57,12 @@ def bench(
       rbi bench --write-docs docs/performance.md \\
           --plot docs/performance-workprecision.png
     """
-    if plot:
+    if settings["plot"]:
         require_matplotlib()
     with progress_bar("rbi bench", "", elapsed=True, show=format == OutputFormat.table) as bar:
-        result = suite.run(quick, only, plot, write_docs, bar.update if bar else lambda *_: None)
-    if write_docs:
-        print(f"rbi: wrote {terminal_safe(write_docs)}", file=sys.stderr)
+        result = suite.run(**settings, progress=bar.update if bar else lambda *_: None)
+    if settings["write_docs"]:
+        print(f"rbi: wrote {terminal_safe(settings['write_docs'])}", file=sys.stderr)
     emit_result(format.value, report.Report(result), table=lambda: _tables(result))
 
 
