@@ -315,6 +315,7 @@ def report_sections(result: dict, plot_link: str | None = None) -> list[Section]
     """Every section of the report that ``result`` measured, in the order of docs/performance.md;
     ``plot_link``: where the work-precision plot is, relative to the page."""
     writers = {
+        "targets": _targets_sections,
         "kernel": _kernel_sections,
         "sweep": _sweep_sections,
         "workprecision": partial(_workprecision_sections, plot_link=plot_link),
@@ -323,8 +324,7 @@ def report_sections(result: dict, plot_link: str | None = None) -> list[Section]
         "cad": _cad_sections,
         "uncertainty": _uncertainty_sections,
     }
-    sections = [s for name, write in writers.items() if result.get(name) for s in write(result[name])]
-    return _targets_sections(result) + sections
+    return [s for name, write in writers.items() if result.get(name) for s in write(result[name])]
 
 
 def markdown(result: dict, command: str, plot_link: str | None) -> str:
@@ -396,15 +396,13 @@ def machine_facts(result: dict) -> list[str]:
 # --- the sections ----------------------------------------------------------------------------
 
 
-def _targets_sections(result: dict) -> list[Section]:
-    if not result.get("targets"):
-        return []
+def _targets_sections(rows: list[dict]) -> list[Section]:
     notes = (
         "Each speed target (kernel, start-up, large specs, sweep) with the baseline it was measured "
         "against in this same run."
     )
     left = ("area", "target", "met", "baseline (same run)", "detail")
-    table = _table(TARGET_COLUMNS, result["targets"])
+    table = _table(TARGET_COLUMNS, rows)
     return [Section("Targets", notes, *table, left=left, no_wrap=("measured", "limit", "met"))]
 
 
