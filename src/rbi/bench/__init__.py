@@ -1,6 +1,7 @@
 """``rbi bench``: what accuracy costs and how fast rbi is, measured in one run.
 
-Each section is a module with ``run(quick, progress)`` returning plain data;
+Each section is a module with ``run(quick, progress, folder)`` returning plain data (``folder``:
+an empty temporary folder for its files, removed after it);
 :data:`rbi.bench.suite.SECTIONS` lists them in the order they run (each
 module's docstring says what it measures and against which baseline). :mod:`rbi.bench.report`
 turns the results into a report (a targets table first, the tables, Markdown for

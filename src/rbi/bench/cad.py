@@ -12,7 +12,6 @@ needs some 10 s to mesh the plate at 10⁵.
 from __future__ import annotations
 
 import math
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -124,7 +123,7 @@ def _row(kind: str, path: Path, spec: Path, repeats: int, closed, extra: dict) -
     return row
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
     progress("CAD: plate with 200 holes, STEP against STL")
     try:
         import OCP  # noqa: F401
@@ -133,22 +132,20 @@ def run(quick: bool, progress: Progress = lambda _: None) -> dict:
 
     closed = closed_form()
     repeats = 1 if quick else 3
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-cad-") as tmp:
-        folder = Path(tmp)
-        step_path, stl_path = folder / "plate.step", folder / "plate.stl"
-        write_plate_step(step_path)
-        vertices, faces = step_triangles(step_path, [0], 0.001, STL_ANGLE[quick])
-        trimesh.Trimesh(vertices * 1000.0, faces, process=False).export(stl_path)  # binary STL, mm
-        specs = {name: folder / f"plate-{name}.yaml" for name in ("step", "stl")}  # written here
-        for name, shape in (("step", "step"), ("stl", "mesh")):
-            specs[name].write_text(
-                "units: {length: mm, mass: g}\n"
-                f"parts:\n  - {{name: plate, shape: {shape}, file: plate.{name}, density: {DENSITY}}}\n"
-            )
-        rows = [
-            _row("STEP", step_path, specs["step"], repeats, closed, {"triangles": None}),
-            _row("STL", stl_path, specs["stl"], repeats, closed, {"triangles": int(len(faces))}),
-        ]
+    step_path, stl_path = folder / "plate.step", folder / "plate.stl"
+    write_plate_step(step_path)
+    vertices, faces = step_triangles(step_path, [0], 0.001, STL_ANGLE[quick])
+    trimesh.Trimesh(vertices * 1000.0, faces, process=False).export(stl_path)  # binary STL, mm
+    specs = {name: folder / f"plate-{name}.yaml" for name in ("step", "stl")}  # written here
+    for name, shape in (("step", "step"), ("stl", "mesh")):
+        specs[name].write_text(
+            "units: {length: mm, mass: g}\n"
+            f"parts:\n  - {{name: plate, shape: {shape}, file: plate.{name}, density: {DENSITY}}}\n"
+        )
+    rows = [
+        _row("STEP", step_path, specs["step"], repeats, closed, {"triangles": None}),
+        _row("STL", stl_path, specs["stl"], repeats, closed, {"triangles": int(len(faces))}),
+    ]
     return {
         "plate_mm": list(PLATE_MM),
         "holes": len(hole_centres()),

@@ -16,6 +16,7 @@ quick run), in this process, with the compiled kernel already loaded:
 from __future__ import annotations
 
 from functools import partial
+from pathlib import Path
 
 import numpy as np
 
@@ -52,7 +53,7 @@ def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: fl
     return call, (y, out, steps)
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
     """The work-precision case of the bolted top, with rbi's method at :data:`TRIAL_RTOLS` and
     the chapter's set-up only, then rbi at its defaults and the minimal loop timed in turn."""
     case = workprecision.cases(quick)[0]

@@ -134,7 +134,7 @@ CASES = {True: [(10**4, "point"), (10**3, "cylinder")], False: [(10**5, "point")
 """The specs loaded, (parts, shape): quick run, full run."""
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
     specs = []
     for n, shape in CASES[quick]:
         progress(f"large specs: {n:,} × {shape}")

@@ -208,34 +208,33 @@ def compile_bytecode() -> bool:
         return False
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
     repeats = REPEATS[quick]
     bodies = bodies_folder()
     bytecode = compile_bytecode()
     rows, timed = [], []
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
-        cloud = None
-        if not quick:
-            n = 10**6
-            masses, positions = random_cloud(n)
-            cloud = dict(write_cloud(Path(tmp), masses, positions), points=n)
-        for label, argv in commands(bodies, cloud):
-            progress(f"latency: {label}")
-            proc = run_process(argv)[2]  # warm-up (and a check that it works)
-            if proc.returncode:
-                rows.append({"command": label, "error": failure(proc)})
-                continue
-            rows.append({"command": label})
-            timed.append(partial(measure, partial(run_process, argv), 1, 1, 0.0, RUSAGE_CHILDREN))
-        # round-robin: each round times every command once, so a change in the machine's load
-        # during the run hits the baseline and the commands alike
-        for row, t in zip([r for r in rows if "error" not in r], in_turn(timed, repeats)):
-            row |= {"median_s": t.median, "best_s": t.best, "spread": t.spread, "cpu_median_s": t.cpu_median}
-            row["repeats"] = t.repeats
-        progress("latency: first rbi simulate in a fresh HOME")
-        first = first_run(bodies, 3 if quick else 7)
-        progress("latency: where rbi inertia's start-up goes (python -X importtime)")
-        imports = import_breakdown(bodies, 3 if quick else 7)
+    cloud = None
+    if not quick:
+        n = 10**6
+        masses, positions = random_cloud(n)
+        cloud = dict(write_cloud(folder, masses, positions), points=n)
+    for label, argv in commands(bodies, cloud):
+        progress(f"latency: {label}")
+        proc = run_process(argv)[2]  # warm-up (and a check that it works)
+        if proc.returncode:
+            rows.append({"command": label, "error": failure(proc)})
+            continue
+        rows.append({"command": label})
+        timed.append(partial(measure, partial(run_process, argv), 1, 1, 0.0, RUSAGE_CHILDREN))
+    # round-robin: each round times every command once, so a change in the machine's load
+    # during the run hits the baseline and the commands alike
+    for row, t in zip([r for r in rows if "error" not in r], in_turn(timed, repeats)):
+        row |= {"median_s": t.median, "best_s": t.best, "spread": t.spread, "cpu_median_s": t.cpu_median}
+        row["repeats"] = t.repeats
+    progress("latency: first rbi simulate in a fresh HOME")
+    first = first_run(bodies, 3 if quick else 7)
+    progress("latency: where rbi inertia's start-up goes (python -X importtime)")
+    imports = import_breakdown(bodies, 3 if quick else 7)
     for row in rows:
         for key, ratio in (
             ("median_s", "ratio_to_numpy_import"),

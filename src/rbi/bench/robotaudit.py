@@ -8,7 +8,7 @@ removed after.
 from __future__ import annotations
 
 import os
-import tempfile
+from pathlib import Path
 
 from rbi.bench import Progress
 from rbi.bench.timing import clocked
@@ -40,20 +40,18 @@ def urdf_text(n: int) -> str:
     return "".join(parts)
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
 
     n = LINKS[quick]
     progress(f"robot audit: {n:,} links")
     measured = {"target_s": TARGET_S, "links": n}
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as folder:
-        path = os.path.join(folder, "large.urdf")
-        with open(path, "w", encoding="utf-8") as handle:
-            handle.write(urdf_text(n))
-        size = os.path.getsize(path)
-        try:
-            seconds, cpu_seconds, report = clocked(lambda: audit(path))
-        except Exception as exc:  # a failed measurement is a row, not the end of the bench
-            return measured | {"error": f"{type(exc).__name__}: {exc}"}
+    path = folder / "large.urdf"
+    path.write_text(urdf_text(n), encoding="utf-8")
+    size = path.stat().st_size
+    try:
+        seconds, cpu_seconds, report = clocked(lambda: audit(path))
+    except Exception as exc:  # a failed measurement is a row, not the end of the bench
+        return measured | {"error": f"{type(exc).__name__}: {exc}"}
     return measured | {
         "megabytes": size / 1e6,
         "seconds": seconds,

@@ -4,6 +4,7 @@ plot and the Markdown page written (what ``rbi bench`` calls; it only parses and
 from __future__ import annotations
 
 import os
+import tempfile
 from collections.abc import Callable
 from functools import partial
 from importlib import import_module
@@ -54,7 +55,8 @@ def run(
     command = " ".join(["rbi", "bench"] + ["--quick"] * quick + [w for o in options if o[1] for w in o])
     result = {"quick": quick, "machine": machine()}
     for done, name in enumerate(n for n in NAMES if n in sections):
-        result[name] = SECTIONS[name].run(quick, partial(progress, done, len(sections)))
+        with tempfile.TemporaryDirectory(prefix=f"rbi-bench-{name}-") as folder:
+            result[name] = SECTIONS[name].run(quick, partial(progress, done, len(sections)), Path(folder))
     result["command"] = command
     result |= {"targets": report.targets(result), "headline": report.headline(result)}
     if plot_target:

@@ -19,7 +19,6 @@ from __future__ import annotations
 
 import os
 import subprocess
-import tempfile
 import time
 from pathlib import Path
 
@@ -144,21 +143,19 @@ def memory_profile(spec: Path, quick: bool, folder: Path) -> dict:
     }
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
 
     spec = bodies_folder() / "top.yaml"
     g = GRIDS[quick]
     cores = available_cores()
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-sweep-") as tmp:
-        folder = Path(tmp)
-        progress("sweep: the single-run in-process rate")
-        single = single_run_rate(spec, sample_runs(g, 50 if quick else 500), g["duration"])
-        progress("sweep: rbi sweep over the grid")
-        sweep = sweep_rate(spec, g, folder)
-        progress("sweep: a loop of rbi simulate processes")
-        loop = process_loop_rate(spec, sample_runs(g, 3 if quick else 10), g["duration"])
-        progress("sweep: memory while streaming")
-        memory = memory_profile(spec, quick, folder)
+    progress("sweep: the single-run in-process rate")
+    single = single_run_rate(spec, sample_runs(g, 50 if quick else 500), g["duration"])
+    progress("sweep: rbi sweep over the grid")
+    sweep = sweep_rate(spec, g, folder)
+    progress("sweep: a loop of rbi simulate processes")
+    loop = process_loop_rate(spec, sample_runs(g, 3 if quick else 10), g["duration"])
+    progress("sweep: memory while streaming")
+    memory = memory_profile(spec, quick, folder)
     return {
         "grid": {"spin": list(g["spin"]), "tilt_deg": list(g["tilt"]), "duration": g["duration"]},
         "cores": cores,

@@ -12,7 +12,6 @@ Every body is random but seeded, so two runs time the same work.
 from __future__ import annotations
 
 import json
-import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -160,11 +159,10 @@ def _warm_up_loader(folder: Path) -> None:
     load_body(spec)
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
-        _warm_up_loader(Path(tmp))
-        clouds = point_clouds(CLOUDS[quick], progress, Path(tmp))
-        parts = solid_parts(PARTS[quick], progress, Path(tmp))
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
+    _warm_up_loader(folder)
+    clouds = point_clouds(CLOUDS[quick], progress, folder)
+    parts = solid_parts(PARTS[quick], progress, folder)
     return {
         "point_clouds": clouds,
         "scaling_exponent": scaling_exponent(clouds),

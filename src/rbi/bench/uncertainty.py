@@ -16,7 +16,6 @@ A quick run uses 200 parts (the same 100,000 draws).
 from __future__ import annotations
 
 import re
-import tempfile
 from functools import partial
 from pathlib import Path
 
@@ -38,17 +37,16 @@ def toleranced(text: str) -> str:
     return "".join(coordinates.sub(r"\1 ± 0.001", scalars.sub(r"\1 ± 1%", line)) for line in lines)
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
     parts, draws = 200 if quick else 1000, 100_000
     progress(f"uncertainty: linear budget of {parts:,} toleranced parts")
-    with tempfile.TemporaryDirectory(prefix="rbi-bench-") as tmp:
-        plain, marked = Path(tmp) / "parts.yaml", Path(tmp) / "parts_toleranced.yaml"
-        plain.write_text(spec_text(parts, "cone,cylinder,point", seed=1))
-        marked.write_text(toleranced(plain.read_text()))
-        plain_call = lambda: rbi.load(plain).principal()  # noqa: E731
-        linear_call = lambda: rbi.load(marked).uncertainty()  # noqa: E731
-        linear_call()  # imports and first calls outside the timings
-        plain_timing, linear = in_turn([partial(measure, plain_call, 1), partial(measure, linear_call, 1)], 5)
+    plain, marked = folder / "parts.yaml", folder / "parts_toleranced.yaml"
+    plain.write_text(spec_text(parts, "cone,cylinder,point", seed=1))
+    marked.write_text(toleranced(plain.read_text()))
+    plain_call = lambda: rbi.load(plain).principal()  # noqa: E731
+    linear_call = lambda: rbi.load(marked).uncertainty()  # noqa: E731
+    linear_call()  # imports and first calls outside the timings
+    plain_timing, linear = in_turn([partial(measure, plain_call, 1), partial(measure, linear_call, 1)], 5)
     progress(f"uncertainty: {draws:,} Monte Carlo draws of the toleranced bolted top")
     top = rbi.load(bodies_folder() / "top_bolted_toleranced.yaml")
 

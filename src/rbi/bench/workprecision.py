@@ -206,7 +206,7 @@ def _speedup(rows: list[dict], default_row: dict) -> dict | None:
     return speedup(chapter, default_row, best_matching(rows, chapter)) if chapter else None
 
 
-def run(quick: bool, progress: Progress = lambda _: None) -> dict:
+def run(quick: bool, progress: Progress, folder: Path) -> dict:
     return {
         "chapter_setup": {"method": CHAPTER[0], "rtol": CHAPTER[1], "atol": CHAPTER[1] / 100},
         "cases": [run_case(case, quick, progress) for case in cases(quick)],
