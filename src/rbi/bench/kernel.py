@@ -32,8 +32,9 @@ TARGETS = {"ratio_default": 3000.0, "ratio_best_matching": 6000.0, "ratio_to_min
 
 
 def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: float):
-    """``(call, result)``: a no-argument call of the minimal loop on arrays prepared once (as a
-    hand-written program would hold them), and where it writes ``(y, out)``."""
+    """``(call, out)``: a no-argument call of the minimal loop on arrays prepared once (as a
+    hand-written program would hold them), which returns its step count, and the samples it
+    writes."""
 
     t = sample_times(duration, samples)
     q0 = np.asarray(q0, dtype=float)
@@ -44,13 +45,12 @@ def minimal_loop_call(scene, q0, omega0, duration: float, samples: int, rtol: fl
     omega_ref = max(scene.natural_rate, 0.0)
     y = start.copy()
     out = np.empty((t.size, 7))
-    steps = [0]
 
     def call():
         y[:] = start
-        steps[0] = integrate_minimal(y, t, inertia, inertia_inv, c, rtol, omega_ref, out)
+        return integrate_minimal(y, t, inertia, inertia_inv, c, rtol, omega_ref, out)
 
-    return call, (y, out, steps)
+    return call, out
 
 
 def run(quick: bool, progress: Progress, folder: Path) -> dict:
@@ -70,8 +70,8 @@ def run(quick: bool, progress: Progress, folder: Path) -> dict:
     progress("kernel: rbi at its defaults and the minimal loop")
     scene, q0, omega0 = workprecision.scene_of(case)
     default = simulate(scene, q0, omega0, case.duration, case.samples)
-    call, (_, out, steps) = minimal_loop_call(scene, q0, omega0, case.duration, case.samples, default.rtol)
-    call()
+    call, out = minimal_loop_call(scene, q0, omega0, case.duration, case.samples, default.rtol)
+    steps = call()
     min_seconds = 0.3 if quick else 1.5
     default_call = partial(simulate, scene, q0, omega0, case.duration, case.samples)
     timings = in_turn([partial(measure, f, 5, 2000, min_seconds / 5) for f in (default_call, call)], 5)
@@ -83,8 +83,8 @@ def run(quick: bool, progress: Progress, folder: Path) -> dict:
         "default": runs["default"] | {"seconds": default_s},
         "minimal_loop": {
             "seconds": minimal_s,
-            "steps": steps[0],
-            "same_steps": steps[0] == default.steps,
+            "steps": steps,
+            "same_steps": steps == default.steps,
             "same_samples": same_samples,
         },
         "trials": trials,

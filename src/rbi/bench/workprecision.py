@@ -145,7 +145,6 @@ def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | Non
             "rtol": trajectory.rtol,
             **flags,
             **errors(scene, trajectory, reference),
-        } | {
             "steps": trajectory.steps,
             "rhs_evals": trajectory.rhs_evals,
             "seconds": timing.median,
