@@ -11,22 +11,18 @@ from __future__ import annotations
 import csv
 import io
 import math
-import unicodedata
 from collections.abc import Iterable
 from typing import Any
-
-_HIDDEN_CATEGORIES = ("Cc", "Cf", "Cs", "Co", "Cn", "Zl", "Zp")
-"""Unicode categories written escaped: controls, format characters (bidirectional overrides,
-zero-width characters, the byte order mark), surrogates, private use, unassigned, line and
-paragraph separators. Spaces other than U+0020 (Zs) are escaped too, so none hides in a name."""
 
 
 def is_hidden(char: str) -> bool:
     """Whether ``char`` would not show as itself on a terminal (or would move the text around
-    it): a control, format, separator, unassigned or private character, or a space other than
-    the plain space."""
-    category = unicodedata.category(char)
-    return category in _HIDDEN_CATEGORIES or (category == "Zs" and char != " ")
+    it): a control, a format character (bidirectional overrides, zero-width characters, the
+    byte order mark), a surrogate, a private use or unassigned character, a line or paragraph
+    separator, or a space other than the plain space U+0020 (so none hides in a name). Those
+    are Unicode's "Other" and "Separator" categories but U+0020: exactly what
+    :meth:`str.isprintable` calls non-printable."""
+    return not char.isprintable()
 
 
 def visible(text: str, keep: str = "") -> str:
@@ -37,22 +33,15 @@ def visible(text: str, keep: str = "") -> str:
     backslash already in ``text`` is kept as it is: this is for the eye, not for reading back
     (data goes through the YAML or JSON writer). The one escaper for terminals, listings, YAML
     comments and picture labels."""
-    if text.isascii() and text.isprintable():  # U+0020 to U+007E: nothing hidden (fast, in C)
-        return text
-    if not any(is_hidden(c) for c in text):
+    if text.isprintable():  # nothing hidden (fast, in C)
         return text
     return "".join(escaped(c) if is_hidden(c) and c not in keep else c for c in text)
 
 
 def escaped(char: str) -> str:
-    """One character as Python writes it escaped: ``\\n``, ``\\x9b``, ``\\u202e``, ``\\U0001f600``."""
-    if char in _SHORT_ESCAPES:
-        return _SHORT_ESCAPES[char]
-    code = ord(char)
-    return f"\\x{code:02x}" if code < 0x100 else f"\\u{code:04x}" if code < 0x10000 else f"\\U{code:08x}"
-
-
-_SHORT_ESCAPES = {"\n": "\\n", "\r": "\\r", "\t": "\\t"}
+    """A hidden character (:func:`is_hidden`) as Python writes it escaped: ``\\n``, ``\\x9b``,
+    ``\\u202e``, ``\\U000e0001`` (its ``repr`` without the quotes: never a quote or a backslash)."""
+    return repr(char)[1:-1]
 
 
 def number(value: float | None, digits: int = 6) -> str:

@@ -66,21 +66,9 @@ if TYPE_CHECKING:  # served by __getattr__ on first use: `import rbi.api` loads 
 __all__ = list(PUBLIC)  # a call: griffe reads no names here
 
 _HOME = {
-    **dict.fromkeys(("load", "loads", "Body", "validate", "spec_schema", "unit_vector"), "rbi.api.body"),
-    **dict.fromkeys(("Principal", "Part", "Momentum", "Dynamics"), "rbi.api.results"),
+    **PUBLIC,
     # input_uncertainty: not a name of rbi, served for docs/uncertainty.md's rbi.api.input_uncertainty
-    **dict.fromkeys(("simulate", "Trajectory", "input_uncertainty"), "rbi.api.runs"),
-    **dict.fromkeys(("sweep", "SweepTable"), "rbi.api.sweeps"),
-    **dict.fromkeys(("audit", "import_robot", "RobotImport", "ImportedLink"), "rbi.api.robots"),
-    **dict.fromkeys(("show", "animate", "Animation"), "rbi.api.pictures"),
-    **dict.fromkeys(("SpecError", "ArgumentError"), "rbi.errors"),
-    "visible": "rbi.text",
-    **dict.fromkeys(("Grid", "Normal", "Uniform"), "rbi.sweeps.plan"),
-    "outside_paths_allowed": "rbi.formats.paths",
-    "MassProperties": "rbi.core.mass",
-    "Result": "rbi.reprs",
-    "Check": "rbi.spec.checks",
-    "AuditReport": "rbi.robot.audit",
+    "input_uncertainty": "rbi.api.runs",
 }
 """Where each name of rbi.api lives: its module is imported when the name is first asked for,
 so `rbi inertia` loads neither the audit's modules nor the sweep's, and `import rbi.api` alone

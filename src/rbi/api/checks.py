@@ -27,16 +27,15 @@ def _check_dict(check: Check) -> dict[str, Any]:
 
 
 def _components(check: Check) -> list[tuple[str, Any, Any, Any]]:
-    """(label, expected, actual, deviation) for each number a check compares; a matrix gives
-    its six distinct entries."""
+    """(component, expected, actual, deviation) for each number a check compares; a matrix
+    gives its six distinct entries."""
     want, got, deviation = check.expected, check.actual, check.component_deviation
-    about = f" @{check.about}" if check.about not in (None, "com") else ""
     if check.quantity == "mass":
         return [("mass", float(want), float(got), float(deviation))]
     if check.quantity == "inertia":
-        return [(f"I{name}{about}", want[i, j], got[i, j], deviation[i, j]) for name, i, j in _MATRIX_ENTRIES]
+        return [(f"I{name}", want[i, j], got[i, j], deviation[i, j]) for name, i, j in _MATRIX_ENTRIES]
     names = ("I1", "I2", "I3") if check.quantity == "moments" else ("com x", "com y", "com z")
-    return [(f"{name}{about}", w, g, d) for name, w, g, d in zip(names, want, got, deviation)]
+    return list(zip(names, want, got, deviation))
 
 
 class Checks(Results[Check]):
@@ -65,7 +64,7 @@ class Checks(Results[Check]):
         return [
             {
                 "quantity": c.quantity,
-                "component": label.split(" @")[0],
+                "component": component,
                 "about": c.about or "",
                 "unit": c.unit,
                 "expected": want,
@@ -76,7 +75,7 @@ class Checks(Results[Check]):
                 "pass": bool(deviation <= c.allowed),
             }
             for c in self._items
-            for label, want, got, deviation in _components(c)
+            for component, want, got, deviation in _components(c)
         ]
 
     def csv_summary(self) -> dict[str, Any]:
@@ -87,16 +86,15 @@ class Checks(Results[Check]):
         verdict = "all expectations hold" if not self.failed else f"{self.failed} of {n} expectations FAIL"
         cells = [
             (
-                label,
-                c.unit,
-                number(want, 6),
-                number(got, 6),
-                number(deviation, 3),
-                number(c.allowed, 3),
-                "ok" if deviation <= c.allowed else "FAIL",
+                row["component"] + (f" @{row['about']}" if row["about"] not in ("", "com") else ""),
+                row["unit"],
+                number(row["expected"], 6),
+                number(row["actual"], 6),
+                number(row["deviation"], 3),
+                number(row["allowed"], 3),
+                "ok" if row["pass"] else "FAIL",
             )
-            for c in self._items
-            for label, want, got, deviation in _components(c)
+            for row in self.csv_rows()
         ]
         columns = ("quantity", "unit", "expected", "actual", "deviation", "allowed", "")
         return [Rows(f"{body.name or body.path} — check: {verdict}", columns, cells, left=2, kind="check")]

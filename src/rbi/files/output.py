@@ -33,9 +33,8 @@ from typing import IO
 
 from rbi.errors import InputError
 from rbi.files import lock
-from rbi.files.safe import NAME_MAX, remove, replacing
+from rbi.files.safe import NAME_MAX, creating, remove, replacing, standing
 from rbi.files.safe import kind as _kind
-from rbi.files.safe import reason as _reason
 from rbi.files.safe import shown as _shown
 
 STDOUT = "-"
@@ -181,12 +180,9 @@ def _resolved(path: str, option: str) -> str:
     """The file the bytes will land in: ``path`` itself, or a symbolic link's final target
     when that is a regular file. Refuses anything else that already stands there."""
     shown = _shown(path)
-    try:
-        info = os.lstat(path)
-    except FileNotFoundError:
+    info = standing(path, f"{option}: {shown}")
+    if info is None:
         return os.path.abspath(path)
-    except OSError as exc:
-        raise InputError(f"{option}: {shown}: cannot use this path: {_reason(exc)}") from None
     link = stat.S_ISLNK(info.st_mode)
     real = os.path.realpath(path) if link else os.path.abspath(path)
     if link:
@@ -208,10 +204,8 @@ def _probe(folder: str, option: str, shown: str) -> None:
     """Create and remove an empty temporary file in ``folder``: proves before any work that the
     output can be written there (``os.access`` says yes to root even on /sys or a read-only
     file system)."""
-    try:
+    with creating(f"{option}: {shown}"):
         fd, temp = tempfile.mkstemp(prefix=".rbi-", suffix=".probe", dir=folder)
-    except OSError as exc:
-        raise InputError(f"{option}: {shown}: cannot write: {_reason(exc)}") from None
     os.close(fd)
     remove(temp)
 

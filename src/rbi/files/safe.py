@@ -24,7 +24,7 @@ import re
 import shutil
 import stat
 import tempfile
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import BinaryIO
 
@@ -36,8 +36,8 @@ NAME_MAX = 255
 
 _NOFOLLOW = getattr(os, "O_NOFOLLOW", 0)
 _NONBLOCK = getattr(os, "O_NONBLOCK", 0)
-_CLOEXEC = getattr(os, "O_CLOEXEC", 0)
-_NOCTTY = getattr(os, "O_NOCTTY", 0)
+_KEPT = getattr(os, "O_CLOEXEC", 0) | getattr(os, "O_NOCTTY", 0)
+"""Flags of every open here: not inherited by child processes, never the controlling terminal."""
 
 
 def shown(path: str | os.PathLike) -> str:
@@ -76,7 +76,7 @@ def existing_regular(path: str | os.PathLike, what: str, *, own: bool = True) ->
     """Whether a regular file (of this user, when ``own``) stands at ``path`` (False: nothing
     there). InputError for anything else there: a symbolic link (never followed), a FIFO, a
     device, a socket, a folder, or a file of another user. ``what`` prefixes the message."""
-    info = _lstat(path, what)
+    info = standing(path, what)
     if info is not None:
         check_regular(info, path, what, own=own)
     return info is not None
@@ -87,7 +87,7 @@ def open_regular(path: str | os.PathLike, what: str, flags: int = os.O_RDONLY, m
     ``flags`` has ``O_CREAT``), opened with ``flags`` without following a link or blocking;
     InputError for anything else (see :func:`existing_regular`). The caller closes it."""
     try:
-        fd = os.open(path, flags | _NOFOLLOW | _NONBLOCK | _CLOEXEC | _NOCTTY, mode)
+        fd = os.open(path, flags | _NOFOLLOW | _NONBLOCK | _KEPT, mode)
     except FileNotFoundError:
         raise InputError(f"{what}: does not exist") from None
     except OSError as exc:
@@ -98,8 +98,14 @@ def open_regular(path: str | os.PathLike, what: str, flags: int = os.O_RDONLY, m
                 f"{what}: is a {kind(stat.S_IFIFO)}, not a regular file; rbi will not use it"
             ) from None
         raise InputError(f"{what}: cannot open: {reason(exc)}") from None
+    return _checked(fd, lambda info: check_regular(info, path, what))
+
+
+def _checked(fd: int, check: Callable[[os.stat_result], None]) -> int:
+    """``fd`` once ``check`` passed its open file's ``fstat`` (else ``fd`` is closed and the
+    error raised), set back to blocking."""
     try:
-        check_regular(os.fstat(fd), path, what)
+        check(os.fstat(fd))
         if _NONBLOCK:
             os.set_blocking(fd, True)
     except BaseException:
@@ -160,29 +166,25 @@ def open_input_file(path: str | os.PathLike, what: str, limit: int | None = None
     file itself: a missing file, a folder, FIFO, device or socket, and a file larger than
     ``limit`` by its size (``hint`` is added to that message). :class:`InputFileRefused` says why."""
     try:
-        fd = os.open(path, os.O_RDONLY | _NONBLOCK | _CLOEXEC | _NOCTTY)
+        fd = os.open(path, os.O_RDONLY | _NONBLOCK | _KEPT)
     except FileNotFoundError:
         raise InputFileRefused("no such file") from None
     except OSError as exc:
         raise InputFileRefused(f"cannot read: {reason(exc)}") from None
     except ValueError:  # os.open's 'embedded null byte'
         raise InputFileRefused("not a usable path (it contains a NUL character)") from None
-    try:
-        info = os.fstat(fd)
+
+    def check(info: os.stat_result) -> None:
         if not stat.S_ISREG(info.st_mode):
             noun = what if what.endswith("file") else f"{what} file"
             raise InputFileRefused(f"not a regular file but a {kind(info.st_mode)}; give a {noun}")
         if limit is not None and info.st_size > limit:
             raise InputFileRefused(_too_large(what, f"{info.st_size:,} bytes", limit, hint))
-        if _NONBLOCK:
-            os.set_blocking(fd, True)
+
+    try:
+        return os.fdopen(_checked(fd, check), "rb")
     except OSError as exc:
-        os.close(fd)
         raise InputFileRefused(f"cannot read: {reason(exc)}") from None
-    except BaseException:
-        os.close(fd)
-        raise
-    return os.fdopen(fd, "rb")
 
 
 def _too_large(what: str, size: str, limit: int, hint: str) -> str:
@@ -193,11 +195,21 @@ def create_exclusive(path: str | os.PathLike, what: str, mode: int = 0o666) -> i
     """A descriptor (read and write) of a new file created at ``path``: ``O_CREAT | O_EXCL |
     O_NOFOLLOW``, so nothing that already stands there (a planted link or file) is ever
     written. ``mode`` is reduced by the umask. InputError when the name is taken."""
+    with creating(what, "not written"):
+        fd = os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL | _NOFOLLOW | _KEPT, mode)
+    return fd
+
+
+@contextlib.contextmanager
+def creating(what: str, unused: str = "not written") -> Iterator[None]:
+    """Make a new file or folder in the block: a name already taken (``FileExistsError``) is an
+    InputError ``what: something appeared at this path ...; unused``, any other OSError one
+    ``what: cannot write: ...``."""
     try:
-        return os.open(path, os.O_RDWR | os.O_CREAT | os.O_EXCL | _NOFOLLOW | _CLOEXEC | _NOCTTY, mode)
+        yield
     except FileExistsError:
         raise InputError(
-            f"{what}: something appeared at this path while rbi was creating it; not written"
+            f"{what}: something appeared at this path while rbi was creating it; {unused}"
         ) from None
     except OSError as exc:
         raise InputError(f"{what}: cannot write: {reason(exc)}") from None
@@ -221,10 +233,8 @@ def replacing(
     given ``mode`` (default ``0666`` less the umask) and renamed over ``path``; otherwise it is
     removed and ``path`` is as it was. An OSError is an InputError ``what: cannot write: ...``."""
     folder = os.path.dirname(os.fspath(path)) or "."
-    try:
+    with creating(what):
         fd, temporary = tempfile.mkstemp(prefix=".rbi-", suffix=suffix, dir=folder)
-    except OSError as exc:
-        raise InputError(f"{what}: cannot write: {reason(exc)}") from None
     try:
         try:
             yield fd, temporary
@@ -258,27 +268,20 @@ def remove(path: str | os.PathLike) -> None:
 def existing_private_folder(path: str | os.PathLike, what: str) -> bool:
     """Whether a folder of this user (not a link to one) stands at ``path``; False when nothing
     does; InputError for anything else."""
-    info = _lstat(path, what)
+    info = standing(path, what)
     if info is None:
         return False
     if not stat.S_ISDIR(info.st_mode):
         raise InputError(f"{what}: is a {kind(info.st_mode)}, not the folder rbi keeps there; not used")
-    if hasattr(os, "geteuid") and info.st_uid != os.geteuid():
-        raise InputError(f"{what}: belongs to another user (rbi created its own); not used")
+    _check_owner(info, what)
     return True
 
 
 def make_private_folder(path: str | os.PathLike, what: str) -> None:
     """Create the folder ``path`` readable by this user only (``mkdir`` is exclusive: a name
     already taken is an InputError, never reused)."""
-    try:
+    with creating(what, "not used"):
         os.mkdir(path, 0o700)
-    except FileExistsError:
-        raise InputError(
-            f"{what}: something appeared at this path while rbi was creating it; not used"
-        ) from None
-    except OSError as exc:
-        raise InputError(f"{what}: cannot write: {reason(exc)}") from None
 
 
 def remove_private_folder(path: str | os.PathLike) -> None:
@@ -313,11 +316,18 @@ def check_regular(info: os.stat_result, path, what: str, *, own: bool = True) ->
         raise InputError(
             f"{what}: is a {kind(info.st_mode)}, not a regular file; rbi will not read or replace it"
         )
-    if own and hasattr(os, "geteuid") and info.st_uid != os.geteuid():
+    if own:
+        _check_owner(info, what)
+
+
+def _check_owner(info: os.stat_result, what: str) -> None:
+    if hasattr(os, "geteuid") and info.st_uid != os.geteuid():
         raise InputError(f"{what}: belongs to another user (rbi created its own); not used")
 
 
-def _lstat(path, what: str) -> os.stat_result | None:
+def standing(path: str | os.PathLike, what: str) -> os.stat_result | None:
+    """What stands at ``path`` (``lstat``: a link is not followed), or None when nothing does;
+    any other OSError is an InputError ``what: cannot use this path: ...``."""
     try:
         return os.lstat(path)
     except FileNotFoundError:
