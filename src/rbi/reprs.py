@@ -112,10 +112,6 @@ def plain(value: Any) -> Any:
     kind = type(value)  # the common exact types first (an audit's JSON has millions of values)
     if kind is float:
         return 0.0 if value == 0.0 else value
-    if kind is dict:
-        return {k: plain(v) for k, v in value.items()}
-    if kind is list:
-        return [plain(v) for v in value]
     if kind is str or kind is int or kind is bool or value is None:
         return value
     if isinstance(value, dict):
@@ -141,27 +137,17 @@ def flatten(result: dict[str, Any], prefix: str = "") -> dict[str, Any]:
         name = f"{prefix}{key}"
         if isinstance(value, dict):
             out.update(flatten(value, prefix=f"{name}_"))
-        elif (
-            isinstance(value, list)
-            and len(value) == 3
-            and all(isinstance(r, list) and len(r) == 3 for r in value)
-        ):
+        elif not isinstance(value, list):
+            out[name] = value
+        elif len(value) == 3 and all(isinstance(r, list) and len(r) == 3 for r in value):
             for i, row in enumerate(value):
                 for j, v in enumerate(row):
                     out[f"{name}_{i + 1}_{_XYZ[j]}" if key == "axes" else f"{name}_{_XYZ[i]}{_XYZ[j]}"] = v
-        elif (
-            isinstance(value, list)
-            and len(value) == 3
-            and not any(isinstance(v, list) for v in value)
-            and not key.endswith(("moments", "axes_deg"))  # numbered like the axes they qualify
-        ):
-            for axis, v in zip(_XYZ, value):
-                out[f"{name}_{axis}"] = v
-        elif isinstance(value, list):
-            for i, v in enumerate(value):
-                out[f"{name}_{i + 1}"] = v
-        else:
-            out[name] = value
+        else:  # a vector's entries _x, _y, _z; other lists' (and the moments, axes_deg) _1, _2, ...
+            vector = len(value) == 3 and not any(isinstance(v, list) for v in value)
+            numbered = not vector or key.endswith(("moments", "axes_deg"))  # as the axes they qualify
+            labels = range(1, len(value) + 1) if numbered else _XYZ
+            out.update((f"{name}_{label}", v) for label, v in zip(labels, value))
     return out
 
 

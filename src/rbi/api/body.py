@@ -282,6 +282,11 @@ class Body(Result):
             raise ArgumentError("about", NO_PIVOT, file=self.path)
         return np.array(point, dtype=float)
 
+    def _place(self, about: Point) -> About:
+        """The point ``about`` as a result names it (`About`: ``com``, ``origin``, ``pivot`` or
+        ``point``) and its body coordinates (`point`)."""
+        return About(self, reference_name(about) or "point", self.point(about))
+
     def _refuse_non_finite(self, where: str = "", **results: Any) -> None:
         """ValueError (an `ArgumentError` naming the file, then ``where``: a part) when a result
         overflowed: inputs of absurd size (``about=(1e200, 0, 0)``, ``omega=(1e200, 0, 0)``,
@@ -330,7 +335,7 @@ class Body(Result):
         """Principal moments (ascending) and axes (rows, body frame, right-handed) about a point
         (default the centre of mass), as ``rbi principal`` prints them."""
 
-        point = self.point(about)
+        place = self._place(about)
         moments, axes = principal_axes(self.inertia(about))
         with np.errstate(over="ignore", invalid="ignore"):
             radii = np.asarray(radii_of_gyration(list(moments), self.mass))
@@ -341,8 +346,8 @@ class Body(Result):
             moments=np.asarray(moments) + 0.0,
             axes=np.asarray(axes) + 0.0,
             radii_of_gyration=radii,
-            about=point,
-            place=About(self, _label(about), point),
+            about=place.point,
+            place=place,
             uncertainty=None
             if spread is None
             else {k: spread[k] for k in ("mass", "center_of_mass", "moments", "axes_deg")},
@@ -372,7 +377,7 @@ class Body(Result):
         direction = None if axis is None else unit_vector(axis)
         spread = self.standard_uncertainty(about, turns or None)
         return Inertia(
-            About(self, _label(about), self.point(about)),
+            self._place(about),
             matrix,
             "world (rotated)" if turns else "body",
             tuple(f"{a}:{np.degrees(np.radians(float(d))):g}" for a, d in turns),
@@ -434,7 +439,8 @@ class Body(Result):
         """
 
         w = np.array(vector_value(omega, "omega"))
-        point = self.point(about)
+        place = self._place(about)
+        point = place.point
         props = self._loaded.props
         com_from_point = props.center_of_mass - point
         v_com = (
@@ -451,7 +457,7 @@ class Body(Result):
             angular_momentum=np.asarray(h),
             angle_deg=angle_between_deg(h, w),
             kinetic_energy=energy,
-            place=About(self, _label(about), point),
+            place=place,
             uncertainty=momentum_uncertainty(self._loaded, point, w, None if velocity is None else v_com)
             if self._uncertain
             else None,
@@ -603,13 +609,12 @@ class Body(Result):
 
         if (alpha is None) == (force is None and torque is None):
             raise ArgumentError(("alpha", "force"), "give either alpha (inverse) or force/torque (forward)")
-        name = reference_name(about)  # None for a point (x, y, z)
-        about_com = name == "com"
-        point = self.point(about)
+        place = self._place(about)
+        point = place.point
         props = self._loaded.props
         inertia = self.inertia(about)
         if alpha is None and np.linalg.matrix_rank(inertia) < 3:
-            where = name or f"point {literal(point.tolist())}"
+            where = f"point {literal(point.tolist())}" if place.label == "point" else place.label
             raise ArgumentError(
                 (),
                 f"the inertia about the {where} is singular: the body cannot be given an angular acceleration",
@@ -620,11 +625,11 @@ class Body(Result):
         w = np.array(vector_value(omega, "omega"))
         with np.errstate(over="ignore", invalid="ignore"):
             (linear, angular), (f, t), held = newton_euler_about(
-                props, inertia, props.center_of_mass - point, w, about_com=about_com, **vectors
+                props, inertia, props.center_of_mass - point, w, about_com=place.label == "com", **vectors
             )
         self._refuse_non_finite(linear_acceleration=linear, angular_acceleration=angular, force=f, torque=t)
         mode = "inverse" if alpha is not None else "forward"
-        return Dynamics(mode, point, w, angular, linear, f, t, held, About(self, name or "point", point))
+        return Dynamics(mode, point, w, angular, linear, f, t, held, place)
 
     def inertial_xml(
         self, to: str, *, name: str | None = None, document: bool = False, diagonal: bool = False
@@ -642,21 +647,7 @@ class Body(Result):
                 (``quat``) instead of ``fullinertia``.
         """
 
-        if to not in FORMATS:
-            raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {literal(to)}")
-        if diagonal and to != "mjcf":
-            raise ArgumentError("diagonal", "only for to='mjcf' (URDF and SDF take the full matrix)")
-        length, mass = self.units["length"], self.units["mass"]
-        spec_units = "" if (length, mass) == ("m", "kg") else f"; spec units were {length}, {mass}"
-        comment = (
-            f"rbi export of {Path(self.path).name}: SI units (kg, m, kg·m²); "
-            f"inertia about the centre of mass, body axes{spec_units}"
-        )
-        if name is None:
-            text = self.path in SPEC_TEXT_LABELS
-            name = self.name or ("body" if text else Path(self.path).stem)
-        si = self.in_units("m", "kg").mass_properties
-        return export_xml(to, si, name=name, document=document, diagonal=diagonal, comment=comment)
+        return self.export(to, name=name, document=document, diagonal=diagonal).xml
 
     def export_warnings(self) -> list[str]:
         """The warnings that go with `inertial_xml`, as ``rbi export`` prints them on stderr and
@@ -680,8 +671,23 @@ class Body(Result):
         """The `Export` ``rbi export`` prints: `inertial_xml` (the same arguments), its
         `export_warnings` and the SI mass properties it holds."""
 
-        xml = self.inertial_xml(to, name=name, document=document, diagonal=diagonal)
+        if to not in FORMATS:
+            raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {literal(to)}")
+        if diagonal and to != "mjcf":
+            raise ArgumentError("diagonal", "only for to='mjcf' (URDF and SDF take the full matrix)")
+        length, mass = self.units["length"], self.units["mass"]
+        spec_units = "" if (length, mass) == ("m", "kg") else f"; spec units were {length}, {mass}"
+        comment = (
+            f"rbi export of {Path(self.path).name}: SI units (kg, m, kg·m²); "
+            f"inertia about the centre of mass, body axes{spec_units}"
+        )
+        if name is None:
+            text = self.path in SPEC_TEXT_LABELS
+            name = self.name or ("body" if text else Path(self.path).stem)
         si = self.in_units("m", "kg")
+        xml = export_xml(
+            to, si.mass_properties, name=name, document=document, diagonal=diagonal, comment=comment
+        )
         return Export(si.name, to, si.units, self.export_warnings(), si.mass_properties, xml)
 
     def __repr__(self) -> str:
@@ -692,16 +698,15 @@ class Body(Result):
         )
 
     def rows(self) -> list[Rows]:
-        units = self.units
-        inertia_unit = f"{units['mass']}·{units['length']}²"
+        labels = self.unit_labels
         principal = self.principal()
         rows = [
-            ("mass", units["mass"], number(self.mass, 8)),
-            ("centre of mass", units["length"], vector_text(self.center_of_mass)),
+            ("mass", labels["mass"], number(self.mass, 8)),
+            ("centre of mass", labels["length"], vector_text(self.center_of_mass)),
         ]
         if self._loaded.pivot is not None:
-            rows.append(("pivot", units["length"], vector_text(self.pivot)))
-        rows.append(("principal moments about CoM", inertia_unit, vector_text(principal.moments)))
+            rows.append(("pivot", labels["length"], vector_text(self.pivot)))
+        rows.append(("principal moments about CoM", labels["inertia"], vector_text(principal.moments)))
         for i, axis in enumerate(principal.axes, start=1):
             rows.append((f"principal axis {i}", "", vector_text(axis)))
         rows.append(("parts", "", str(len(self._loaded.elements))))
@@ -741,11 +746,6 @@ def _rotation(axes: Any) -> np.ndarray:
             )
         turns.append((axis, np.radians(degrees)))
     return compose_world_rotations(turns)
-
-
-def _label(about: Any) -> str:
-    """How a result names the point ``about``: ``com``, ``origin``, ``pivot`` or ``point``."""
-    return (reference_name(about) or "point") if isinstance(about, str) else "point"
 
 
 def loaded_body(body: Any, parameter: str) -> Any:

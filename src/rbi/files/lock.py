@@ -48,10 +48,7 @@ class OutputLock:
                 raise InputError(f"{what}: {BUSY}") from None
             # the name must still be this file: a run that just finished removes it, and a third
             # run could have created a new one that it holds
-            try:
-                current = os.lstat(self.path)
-            except FileNotFoundError:
-                current = None
+            current = safe.standing(self.path, label)
             if current is None or (current.st_dev, current.st_ino) != (info.st_dev, info.st_ino):
                 raise InputError(f"{what}: {BUSY}")
         except BaseException:
