@@ -137,7 +137,7 @@ def atomic_path(target: OutputTarget) -> Iterator[str]:
     otherwise. The target's lock is held throughout (InputError, exit 2, when another run
     holds it; kept as it is when this thread holds it: a sweep writing its own output)."""
     if target.is_stdout:
-        raise ValueError("atomic_path needs a file target")
+        raise ValueError("a path writer cannot write to standard output: atomic_path needs a file target")
     what = f"{target.option}: {_shown(target.given)}"
     with (
         lock.writing(target.path, what),
@@ -167,9 +167,7 @@ def write_output(
     """Write ``content`` (text or bytes), or let ``writer(temp_path)`` write the file, to the
     target atomically."""
     if writer is not None:
-        if target.is_stdout:
-            raise ValueError("a path writer cannot write to standard output")
-        with atomic_path(target) as temp:
+        with atomic_path(target) as temp:  # ValueError for standard output
             writer(temp)
         return
     with open_output(target, binary=isinstance(content, bytes)) as handle:
