@@ -10,7 +10,7 @@ import pytest
 
 from rbi.core.rotation import quaternion_to_matrix, without_rounding_noise
 from rbi.errors import InputError
-from rbi.formats.robot import Where, quaternion_matrix
+from rbi.formats.robot import Where
 from tests.conftest import run_rbi_inprocess
 
 
@@ -26,17 +26,17 @@ def test_a_files_quaternion_is_cores_rotation_bit_for_bit():
     )
     for q in quaternions:
         expected = without_rounding_noise(quaternion_to_matrix(q))
-        assert np.array_equal(quaternion_matrix(Where("m.xml"), q, "quat"), expected)
+        assert np.array_equal(Where("m.xml").quaternion_matrix(q, "quat"), expected)
 
 
 @pytest.mark.parametrize("scale", [1e-300, 1.0, 1e300])
 def test_a_quaternion_of_any_size_is_its_turn(scale):
     half = math.radians(15.0)  # a turn of 30 degrees about z, w x y z
-    R = quaternion_matrix(Where("m.xml"), [scale * math.cos(half), 0.0, 0.0, scale * math.sin(half)], "quat")
+    R = Where("m.xml").quaternion_matrix([scale * math.cos(half), 0.0, 0.0, scale * math.sin(half)], "quat")
     c, s = math.cos(math.radians(30.0)), math.sin(math.radians(30.0))
     np.testing.assert_allclose(R, [[c, -s, 0], [s, c, 0], [0, 0, 1]], rtol=0, atol=4e-16)
     with pytest.raises(InputError) as refused:
-        quaternion_matrix(Where("m.xml", "body[1] (arm)"), [0.0, 0.0, 0.0, 0.0], "quat")
+        Where("m.xml", "body[1] (arm)").quaternion_matrix([0.0, 0.0, 0.0, 0.0], "quat")
     assert str(refused.value) == "m.xml: body[1] (arm): quat: the quaternion must not be zero"
 
 

@@ -43,18 +43,11 @@ from rbi.formats.robot import (
     Pose,
     RobotModel,
     Where,
-    angles,
-    check_inertia_range,
     check_unique_joint_names,
     element_label,
     from_six,
-    number,
-    numbers,
-    positive,
-    quaternion_matrix,
     refuse_shared_keys,
     short,
-    unit,
 )
 from rbi.formats.robot_geometry import geoms_sum
 from rbi.formats.robot_xml import read_xml
@@ -99,10 +92,10 @@ class Compiler:
         self.assetdir = element.get("assetdir", self.assetdir)
         self.choose(where, element, "inertiafromgeom", ("true", "false", "auto"))
         if element.get("inertiagrouprange") is not None:
-            low, high = numbers(where, element.get("inertiagrouprange"), "compiler: inertiagrouprange", 2)
+            low, high = where.numbers(element.get("inertiagrouprange"), "compiler: inertiagrouprange", 2)
             self.group_range = (low, high)
         for key in ("settotalmass", "boundmass", "boundinertia"):
-            setattr(self, key, number(where, element.get(key), f"compiler: {key}", getattr(self, key)))
+            setattr(self, key, where.number(element.get(key), f"compiler: {key}", getattr(self, key)))
         self.choose(where, element, "balanceinertia", ("true", "false"))
         if element.get("coordinate") == "global":
             raise where.error(
@@ -179,8 +172,8 @@ def _actuator_limits(table: LinkTable, root, defaults) -> None:
             ):
                 continue
             where = Where(table.path, f"actuator {short(attrs.get('name') or joint)!r}")
-            low, high = numbers(where, attrs["forcerange"], "forcerange", 2)
-            gear = numbers(where, attrs.get("gear", "1"), "gear", (1, 2, 3, 4, 5, 6))[0]
+            low, high = where.numbers(attrs["forcerange"], "forcerange", 2)
+            gear = where.numbers(attrs.get("gear", "1"), "gear", (1, 2, 3, 4, 5, 6))[0]
             found[joint] = found.get(joint, 0.0) + max(abs(low), abs(high)) * abs(gear)
     for joint, limit in found.items():
         if motions[joint].effort_limit is None and limit > 0:
@@ -193,7 +186,7 @@ def _gravity(path: str, root) -> np.ndarray:
     gravity = [0.0, 0.0, -9.81]
     for option in root.all("option"):
         if option.get("gravity") is not None:
-            gravity = numbers(Where(path), option.get("gravity"), "option: gravity", 3)
+            gravity = Where(path).numbers(option.get("gravity"), "option: gravity", 3)
         flag = option.child("flag")
         if flag is not None and flag.get("gravity") == "disable":
             gravity = [0.0, 0.0, 0.0]
@@ -333,7 +326,7 @@ def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dic
                 continue
             folder = compiler.meshdir or compiler.assetdir
             relative = os.path.join(folder, file) if folder and not os.path.isabs(file) else file
-            scale = numbers(where, attrs.get("scale", "1 1 1"), "scale", 3)
+            scale = where.numbers(attrs.get("scale", "1 1 1"), "scale", 3)
             mode = attrs.get("inertia", "legacy")
             if mode not in ("legacy", "exact", "convex", "shell"):
                 raise where.error(f"inertia: {short(mode)!r}: must be convex, exact, legacy or shell")
@@ -393,7 +386,7 @@ class _Bodies:
     def pose(self, element, attrs, where: Where | None = None) -> Pose:
         if where is None:
             where = Where(self.table.path, f"<{element.tag}> (line {element.line})")
-        pos = numbers(where, attrs.get("pos", "0 0 0"), "pos", 3)
+        pos = where.numbers(attrs.get("pos", "0 0 0"), "pos", 3)
         return Pose(self.orientation(where, attrs), np.array(pos, dtype=float))
 
     def orientation(self, where: Where, attrs) -> np.ndarray:
@@ -405,16 +398,16 @@ class _Bodies:
         key = given[0]
         value = attrs[key]
         if key == "quat":
-            return quaternion_matrix(where, numbers(where, value, "quat", 4), "quat")
+            return where.quaternion_matrix(where.numbers(value, "quat", 4), "quat")
         if key == "axisangle":
-            x, y, z, a = numbers(where, value, "axisangle", 4)
-            axis = unit(where, [x, y, z], "axisangle: axis")
+            x, y, z, a = where.numbers(value, "axisangle", 4)
+            axis = where.unit([x, y, z], "axisangle: axis")
             angle = self.compiler.radians(a)
-            angles(where, [angle], "axisangle")
+            where.angles([angle], "axisangle")
             return axis_angle_matrix(axis, angle)
         if key == "euler":
-            values = [self.compiler.radians(v) for v in numbers(where, value, "euler", 3)]
-            angles(where, values, "euler")
+            values = [self.compiler.radians(v) for v in where.numbers(value, "euler", 3)]
+            where.angles(values, "euler")
 
             R = np.eye(3)
             for letter, angle in zip(self.compiler.eulerseq, values):
@@ -422,30 +415,30 @@ class _Bodies:
                 R = R @ Ri if letter.islower() else Ri @ R
             return R
         if key == "xyaxes":
-            v = numbers(where, value, "xyaxes", 6)
-            x = unit(where, v[:3], "xyaxes: x")
+            v = where.numbers(value, "xyaxes", 6)
+            x = where.unit(v[:3], "xyaxes: x")
             y = np.array(v[3:]) - np.dot(x, v[3:]) * x
-            y = unit(where, y, "xyaxes: y (along x)")
+            y = where.unit(y, "xyaxes: y (along x)")
             return np.column_stack([x, y, np.cross(x, y)])
-        return z_to(unit(where, numbers(where, value, "zaxis", 3), "zaxis"))
+        return z_to(where.unit(where.numbers(value, "zaxis", 3), "zaxis"))
 
     def joint(self, where: Where, element, link: int, active_class: str) -> None:
         attrs = _attributes(element, self.defaults, active_class)
         kind = attrs.get("type", "hinge")
-        pos = np.array(numbers(where, attrs.get("pos", "0 0 0"), "joint: pos", 3))
-        axis = numbers(where, attrs.get("axis", "0 0 1"), "joint: axis", 3)
+        pos = np.array(where.numbers(attrs.get("pos", "0 0 0"), "joint: pos", 3))
+        axis = where.numbers(attrs.get("axis", "0 0 1"), "joint: axis", 3)
         motion = JOINT_MOTIONS.get(kind)
         if motion is None:
             raise where.error(f"joint: type {short(kind)!r}: must be free, ball, slide or hinge")
-        ref = number(where, attrs.get("ref"), "joint: ref", 0.0)
+        ref = where.number(attrs.get("ref"), "joint: ref", 0.0)
         if motion == "revolute":
             ref = self.compiler.radians(ref)
         vector = (
-            unit(where, axis, "joint: axis") if motion in ("revolute", "prismatic") else np.array([0, 0, 1.0])
+            where.unit(axis, "joint: axis") if motion in ("revolute", "prismatic") else np.array([0, 0, 1.0])
         )
         effort = None
         if attrs.get("actuatorfrcrange") is not None and attrs.get("actuatorfrclimited", "auto") != "false":
-            low, high = numbers(where, attrs["actuatorfrcrange"], "joint: actuatorfrcrange", 2)
+            low, high = where.numbers(attrs["actuatorfrcrange"], "joint: actuatorfrcrange", 2)
             effort = max(abs(low), abs(high)) or None
         self.table.motions[link].append(
             Motion(attrs.get("name"), motion, vector, pos, ref, effort_limit=effort)
@@ -453,8 +446,8 @@ class _Bodies:
 
     def inertial(self, where: Where, element) -> Inertial:
         attrs = element.attrib
-        pos = np.array(numbers(where, attrs.get("pos"), "inertial: pos", 3), dtype=float)
-        mass = number(where, attrs.get("mass"), "inertial: mass")
+        pos = np.array(where.numbers(attrs.get("pos"), "inertial: pos", 3), dtype=float)
+        mass = where.number(attrs.get("mass"), "inertial: mass")
         full, diagonal = attrs.get("fullinertia"), attrs.get("diaginertia")
         if (full is None) == (diagonal is None):
             raise where.error("inertial: give exactly one of diaginertia and fullinertia")
@@ -464,16 +457,16 @@ class _Bodies:
                 "inertial: an orientation is not allowed with fullinertia (which is in the body frame)"
             )
         rotation = self.orientation(where, attrs) if turned else None
-        quaternion = np.array(numbers(where, attrs["quat"], "inertial: quat", 4)) if "quat" in attrs else None
+        quaternion = np.array(where.numbers(attrs["quat"], "inertial: quat", 4)) if "quat" in attrs else None
         if rotation is not None and np.allclose(rotation, np.eye(3), rtol=0, atol=0):
             rotation, quaternion = None, None
         elif rotation is not None and quaternion is None:
             quaternion = matrix_to_quaternion(rotation)
         if full is not None:
-            inertia = from_six(*numbers(where, full, "inertial: fullinertia", 6))
+            inertia = from_six(*where.numbers(full, "inertial: fullinertia", 6))
         else:
-            inertia = np.diag(numbers(where, diagonal, "inertial: diaginertia", 3))
-        check_inertia_range(where, inertia)
+            inertia = np.diag(where.numbers(diagonal, "inertial: diaginertia", 3))
+        where.check_inertia_range(inertia)
         return Inertial.read(mass, pos, inertia, rotation=rotation, quaternion=quaternion, element=element)
 
     def geom(self, element, frame: Pose, link: int, active_class: str) -> None:
@@ -483,12 +476,12 @@ class _Bodies:
         kind = attrs.get("type", "sphere")
         if kind not in GEOM_KINDS:
             raise where.error(f"type: {short(kind)!r}: not a MuJoCo geom type ({', '.join(GEOM_KINDS)})")
-        group = number(where, attrs.get("group"), "group", 0.0)
-        size = numbers(where, attrs.get("size", "0 0 0"), "size", (1, 2, 3)) if "size" in attrs else []
+        group = where.number(attrs.get("group"), "group", 0.0)
+        size = where.numbers(attrs.get("size", "0 0 0"), "size", (1, 2, 3)) if "size" in attrs else []
         pose, size = self.geom_frame(where, attrs, kind, size)
         pose = frame.then(pose)
-        mass = number(where, attrs.get("mass"), "mass") if "mass" in attrs else None
-        density = number(where, attrs.get("density"), "density", 1000.0)
+        mass = where.number(attrs.get("mass"), "mass") if "mass" in attrs else None
+        density = where.number(attrs.get("density"), "density", 1000.0)
         if (mass if mass is not None else density) < 0:
             what = f"mass {mass!r}" if mass is not None else f"density {density!r}"
             raise where.error(f"{what} is negative; MuJoCo's compiler refuses the model")
@@ -510,7 +503,7 @@ class _Bodies:
                     " asset, not from shellinertia (MuJoCo's compiler refuses the model)"
                 )
             geom.mesh_file, geom.mesh_scale, geom.mesh_inertia = asset["file"], asset["scale"], asset["mode"]
-        positive(where, geom.size, "size", allow_zero=True)
+        where.positive(geom.size, "size", allow_zero=True)
         in_group = self.compiler.group_range[0] <= group <= self.compiler.group_range[1]
         self.counts[link] += 1
         if in_group:
@@ -520,7 +513,7 @@ class _Bodies:
         fromto = attrs.get("fromto")
         if fromto is None or kind not in ("capsule", "cylinder", "box", "ellipsoid"):
             return self.pose(None, attrs, where), size
-        values = numbers(where, fromto, "fromto", 6)
+        values = where.numbers(fromto, "fromto", 6)
         start, end = np.array(values[:3]), np.array(values[3:])
         direction = end - start
         length = float(np.linalg.norm(direction))

@@ -521,9 +521,10 @@ class RobotModel:
 
 
 class Where:
-    """Where a value was read, for error messages: ``file: link[i] (name): what``. ``label``
-    may be given as a function returning the text, worked out only when asked for (a large
-    robot file reads a million values and errs on none of them)."""
+    """Where a value was read, for error messages: ``file: link[i] (name): what``, and the
+    readers of the values found there, each refusing a bad one with an error naming the place.
+    ``label`` may be given as a function returning the text, worked out only when asked for (a
+    large robot file reads a million values and errs on none of them)."""
 
     def __init__(self, path: str, label: Any = None):
         self.path, self._label = path, label
@@ -536,17 +537,72 @@ class Where:
     def error(self, what: str) -> InputError:
         return InputError(f"{self.path}: {self.label}: {what}" if self.label else f"{self.path}: {what}")
 
+    def numbers(self, text: str | None, what: str, count: int | tuple[int, ...]) -> list[float]:
+        """Whitespace-separated plain finite decimals (no NaN, inf, hex or underscores)."""
+        values = _plain_numbers(text or "")
+        if values is not None and (len(values) == count if isinstance(count, int) else len(values) in count):
+            return list(values)
+        pieces = (text or "").split()
+        if len(pieces) != count if isinstance(count, int) else len(pieces) not in count:
+            expected = " or ".join(str(c) for c in ((count,) if isinstance(count, int) else count))
+            raise self.error(f"{what}: expected {expected} number(s), got {len(pieces)} ({short(text)!r})")
+        raise self._number_error(what, pieces)
 
-def numbers(where: Where, text: str | None, what: str, count: int | tuple[int, ...]) -> list[float]:
-    """Whitespace-separated plain finite decimals (no NaN, inf, hex or underscores)."""
-    values = _plain_numbers(text or "")
-    if values is not None and (len(values) == count if isinstance(count, int) else len(values) in count):
+    def _number_error(self, what: str, pieces: list[str]) -> InputError:
+        """The error for the first of ``pieces`` that is not a plain finite decimal."""
+        for piece in pieces:
+            if not _NUMBER.match(piece):
+                return self.error(f"{what}: must be a finite number (got {short(piece)!r})")
+            value = float(piece)
+            if not math.isfinite(value):
+                return self.error(f"{what}: must be a finite number (got {short(piece)!r}, too large)")
+            if problem := subnormal_problem(value):
+                return self.error(f"{what}: {problem}")
+        raise AssertionError(f"{what}: every number is fine")  # only called when one is not
+
+    def number(self, text: str | None, what: str, default: float | None = None) -> float:
+        if text is None:
+            if default is None:
+                raise self.error(f"{what}: missing")
+            return default
+        return self.numbers(text, what, 1)[0]
+
+    def positive(self, values, what: str, allow_zero: bool = False) -> None:
+        for value in values:
+            if value < 0 or (value == 0 and not allow_zero):
+                raise self.error(
+                    f"{what}: must be {'zero or ' if allow_zero else ''}greater than 0 (got {value!r})"
+                )
+
+    def angles(self, values, what: str) -> list[float]:
+        for axis, angle in zip(("roll", "pitch", "yaw"), values):
+            if abs(angle) > MAX_ANGLE_RAD:
+                raise self.error(
+                    f"{what}: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
+                    f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})"
+                )
         return list(values)
-    pieces = (text or "").split()
-    if len(pieces) != count if isinstance(count, int) else len(pieces) not in count:
-        expected = " or ".join(str(c) for c in ((count,) if isinstance(count, int) else count))
-        raise where.error(f"{what}: expected {expected} number(s), got {len(pieces)} ({short(text)!r})")
-    raise _number_error(where, what, pieces)
+
+    def check_inertia_range(self, inertia: np.ndarray) -> None:
+        too_large = overflowing_sum(inertia)
+        if too_large:
+            raise self.error(f"inertia: {too_large}; give the inertia in kg·m²")
+
+    def quaternion_matrix(self, wxyz, what: str) -> np.ndarray:
+        """Rotation of the quaternion ``w x y z`` (MJCF's order; SDF's ``x y z w`` reordered by its
+        reader) of any finite non-zero size: :func:`~rbi.core.rotation.quaternion_to_matrix`
+        normalises it, once."""
+        if not np.any(wxyz):
+            raise self.error(f"{what}: the quaternion must not be zero")
+        return without_rounding_noise(quaternion_to_matrix(wxyz))
+
+    def unit(self, vector, what: str) -> np.ndarray:
+        v = np.asarray(vector, dtype=float)
+        largest = float(np.abs(v).max())
+        if largest == 0.0:
+            raise self.error(f"{what}: must not be the zero vector")
+        v = v / largest
+        return v / np.sqrt(v.dot(v))  # np.linalg.norm's own arithmetic for a vector
 
 
 def _plain_numbers(text: str) -> tuple[float, ...] | None:
@@ -569,77 +625,14 @@ def _read_numbers(text: str) -> tuple[float, ...] | None:
 _remembered_numbers = functools.lru_cache(maxsize=4096)(_read_numbers)
 
 
-def _number_error(where: Where, what: str, pieces: list[str]) -> InputError:
-    """The error for the first of ``pieces`` that is not a plain finite decimal."""
-    for piece in pieces:
-        if not _NUMBER.match(piece):
-            return where.error(f"{what}: must be a finite number (got {short(piece)!r})")
-        value = float(piece)
-        if not math.isfinite(value):
-            return where.error(f"{what}: must be a finite number (got {short(piece)!r}, too large)")
-        if problem := subnormal_problem(value):
-            return where.error(f"{what}: {problem}")
-    raise AssertionError(f"{what}: every number is fine")  # only called when one is not
-
-
-def number(where: Where, text: str | None, what: str, default: float | None = None) -> float:
-    if text is None:
-        if default is None:
-            raise where.error(f"{what}: missing")
-        return default
-    return numbers(where, text, what, 1)[0]
-
-
-def positive(where: Where, values, what: str, allow_zero: bool = False) -> None:
-    for value in values:
-        if value < 0 or (value == 0 and not allow_zero):
-            raise where.error(
-                f"{what}: must be {'zero or ' if allow_zero else ''}greater than 0 (got {value!r})"
-            )
-
-
-def angles(where: Where, values, what: str) -> list[float]:
-    for axis, angle in zip(("roll", "pitch", "yaw"), values):
-        if abs(angle) > MAX_ANGLE_RAD:
-            raise where.error(
-                f"{what}: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
-                f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})"
-            )
-    return list(values)
-
-
 def from_six(ixx, iyy, izz, ixy, ixz, iyz) -> np.ndarray:
     return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]], dtype=float)
-
-
-def check_inertia_range(where: Where, inertia: np.ndarray) -> None:
-    too_large = overflowing_sum(inertia)
-    if too_large:
-        raise where.error(f"inertia: {too_large}; give the inertia in kg·m²")
 
 
 def rpy_matrix(rpy) -> np.ndarray:
     """URDF/SDF roll, pitch, yaw (rad) about the fixed x, y, z axes: ``Rz(yaw) Ry(pitch) Rx(roll)``."""
 
     return without_rounding_noise(euler_matrix(np.asarray(rpy, dtype=float), "xyz"))
-
-
-def quaternion_matrix(where: Where, wxyz, what: str) -> np.ndarray:
-    """Rotation of the quaternion ``w x y z`` (MJCF's order; SDF's ``x y z w`` reordered by its
-    reader) of any finite non-zero size: :func:`~rbi.core.rotation.quaternion_to_matrix`
-    normalises it, once."""
-    if not np.any(wxyz):
-        raise where.error(f"{what}: the quaternion must not be zero")
-    return without_rounding_noise(quaternion_to_matrix(wxyz))
-
-
-def unit(where: Where, vector, what: str) -> np.ndarray:
-    v = np.asarray(vector, dtype=float)
-    largest = float(np.abs(v).max())
-    if largest == 0.0:
-        raise where.error(f"{what}: must not be the zero vector")
-    v = v / largest
-    return v / np.sqrt(v.dot(v))  # np.linalg.norm's own arithmetic for a vector
 
 
 def short(text: Any, limit: int = 40) -> str:

@@ -38,18 +38,11 @@ from rbi.formats.robot import (
     Pose,
     RobotModel,
     Where,
-    angles,
-    check_inertia_range,
     element_label,
     from_six,
-    number,
-    numbers,
-    positive,
-    quaternion_matrix,
     refuse_shared_keys,
     rpy_matrix,
     short,
-    unit,
 )
 from rbi.formats.robot_geometry import geoms_sum
 from rbi.formats.robot_paths import resolve_mesh
@@ -132,7 +125,7 @@ def _pose(where: Where, element, what: str, within=None) -> Pose:
         return within(where, element.get("relative_to"), _pose(where, element, what))
     xyz, rpy, quaternion = _written(where, element, what)
     if quaternion is not None:
-        return Pose(quaternion_matrix(where, quaternion, what), xyz)
+        return Pose(where.quaternion_matrix(quaternion, what), xyz)
     return Pose(rpy_matrix(rpy) if any(rpy) else np.eye(3), xyz)
 
 
@@ -141,14 +134,14 @@ def _written(where: Where, element, what: str) -> tuple[np.ndarray, list[float] 
     read in degrees with ``degrees="true"``) or a quaternion ``w x y z``
     (``rotation_format="quat_xyzw"``, reordered), the other None."""
     if (element.get("rotation_format") or "euler_rpy") == "quat_xyzw":
-        values = numbers(where, element.text, what, 7)
+        values = where.numbers(element.text, what, 7)
         qx, qy, qz, qw = values[3:]
         return np.array(values[:3], dtype=float), None, np.array([qw, qx, qy, qz], dtype=float)
-    values = numbers(where, element.text, what, 6)
+    values = where.numbers(element.text, what, 6)
     rpy = values[3:]
     if _true(element.get("degrees")):
         rpy = [math.radians(a) for a in rpy]
-    angles(where, rpy, what)
+    where.angles(rpy, what)
     return np.array(values[:3], dtype=float), rpy, None
 
 
@@ -162,16 +155,16 @@ def _inertial(where: Where, inertial, within) -> Inertial:
         _, written, quaternion = _written(where, pose_element, "inertial/pose")
         rpy = tuple(float(a) for a in written) if written is not None and any(written) else None
     mass_element = inertial.child("mass")
-    mass = number(where, None if mass_element is None else mass_element.text, "inertial/mass", default=1.0)
+    mass = where.number(None if mass_element is None else mass_element.text, "inertial/mass", default=1.0)
     block = inertial.child("inertia")
     six = {}
     for key, default in (("ixx", 1.0), ("iyy", 1.0), ("izz", 1.0), ("ixy", 0.0), ("ixz", 0.0), ("iyz", 0.0)):
         entry = None if block is None else block.child(key)
-        six[key] = number(
-            where, None if entry is None else entry.text, f"inertial/inertia/{key}", default=default
+        six[key] = where.number(
+            None if entry is None else entry.text, f"inertial/inertia/{key}", default=default
         )
     inertia = from_six(**six)
-    check_inertia_range(where, inertia)
+    where.check_inertia_range(inertia)
     turned = rpy is not None or (
         (quaternion is not None or moved) and not np.allclose(pose.rotation, np.eye(3), 0, 0)
     )
@@ -206,8 +199,8 @@ def _auto_inertial(where: Where, inertial, collisions: list[Geom]) -> Inertial:
             'inertial auto="true": the link has no collision geometry with a volume to compute it from'
         )
     if (written := _text(inertial, "mass")) is not None:
-        mass = number(where, written, "inertial/mass")
-        positive(where, (mass,), "inertial/mass")
+        mass = where.number(written, "inertial/mass")
+        where.positive((mass,), "inertial/mass")
         props = props.with_mass(mass)
     return Inertial(props, props.inertia_about_com, element=inertial, source="auto")
 
@@ -223,8 +216,8 @@ def _geoms(where: Where, link_element, tag: str, package_paths, within) -> list[
             raise where.error(f"{label}/geometry: missing")
         geom = _geom(where, shape, pose, f"{label}/geometry/{shape.tag}", package_paths)
         if (density := _text(element, "density")) is not None:
-            geom.density = number(where, density, f"{label}/density")
-            positive(where, (geom.density,), f"{label}/density")
+            geom.density = where.number(density, f"{label}/density")
+            where.positive((geom.density,), f"{label}/density")
         found.append(geom)
     return found
 
@@ -233,7 +226,7 @@ def _value(where: Where, shape, tag: str, label: str, count: int = 1) -> list[fl
     child = shape.child(tag)
     if child is None:
         raise where.error(f"{label}/{tag}: missing")
-    return numbers(where, child.text, f"{label}/{tag}", count)
+    return where.numbers(child.text, f"{label}/{tag}", count)
 
 
 SHAPES = {
@@ -252,8 +245,8 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
     if fields is not None:
         size = [value for tag, count in fields for value in _value(where, shape, tag, label, count)]
         tags = [tag for tag, _ in fields]
-        positive(
-            where, size, f"{label}/{tags[0]}" if len(tags) == 1 else f"{label}: {' and '.join(tags)}", True
+        where.positive(
+            size, f"{label}/{tags[0]}" if len(tags) == 1 else f"{label}: {' and '.join(tags)}", True
         )
         return Geom(kind, tuple(size), pose, label)
     if kind == "mesh":
@@ -262,9 +255,7 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
             raise where.error(f"{label}/uri: missing")
         scale_element = shape.child("scale")
         scale = (
-            numbers(where, scale_element.text, f"{label}/scale", 3)
-            if scale_element is not None
-            else [1, 1, 1]
+            where.numbers(scale_element.text, f"{label}/scale", 3) if scale_element is not None else [1, 1, 1]
         )
         mesh = resolve_mesh(
             where.path,
@@ -303,9 +294,9 @@ def _joints(table: LinkTable, model_element, links: dict, link_poses: dict, fram
         joint_pose = frames.in_model(child_name, where).inverse().then(frames.in_model(name, where))
         axis_element = element.child("axis")
         xyz_element = axis_element.child("xyz") if axis_element is not None else None
-        axis = numbers(where, xyz_element.text, "axis/xyz", 3) if xyz_element is not None else [0.0, 0.0, 1.0]
+        axis = where.numbers(xyz_element.text, "axis/xyz", 3) if xyz_element is not None else [0.0, 0.0, 1.0]
         if kind in ("revolute", "prismatic"):
-            axis = unit(where, axis, "axis/xyz")
+            axis = where.unit(axis, "axis/xyz")
             expressed_in = xyz_element.get("expressed_in") if xyz_element is not None else None
             if _text(axis_element, "use_parent_model_frame") in ("true", "1") or expressed_in == "__model__":
                 axis = frames.in_model(child_name, where).rotation.T @ axis
@@ -315,7 +306,7 @@ def _joints(table: LinkTable, model_element, links: dict, link_poses: dict, fram
                 axis = joint_pose.rotation @ axis
         effort = None
         if (written := _text(axis_element, "limit", "effort")) is not None:
-            effort = abs(number(where, written, "axis/limit/effort"))
+            effort = abs(where.number(written, "axis/limit/effort"))
             effort = None if effort == -1 or not math.isfinite(effort) else effort
         table.motions[child] = [
             Motion(

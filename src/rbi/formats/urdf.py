@@ -47,16 +47,12 @@ from rbi.formats.robot import (
     Inertial,
     LinkColumns,
     RobotModel,
-    angles,
-    check_inertia_range,
     check_unique_joint_names,
     depth_first,
     element_label,
-    positive,
     refuse_shared_keys,
     rpy_matrix,
     short,
-    unit,
 )
 from rbi.formats.robot_paths import resolve_mesh
 from rbi.formats.xml_columns import CHUNK, Doubt, Node, Rows, Values, in_order
@@ -405,7 +401,7 @@ def _poses(rows: Rows, origin: Node | None, what: str) -> tuple[np.ndarray, np.n
 def _angles(rows: Rows, rpy: np.ndarray, what: str) -> np.ndarray:
     """``rpy`` (k, 3) once :func:`rbi.formats.robot.angles` takes each row."""
     for k in np.flatnonzero(np.any(np.abs(rpy) > MAX_ANGLE_RAD, axis=1)).tolist():
-        angles(rows.where(k), rpy[k].tolist(), what)
+        rows.where(k).angles(rpy[k].tolist(), what)
     return rpy
 
 
@@ -429,7 +425,7 @@ def _inertials(rows: Rows, inertial: Node) -> tuple[np.ndarray, ...]:
     ixx, iyy, izz, ixy, ixz, iyz = six.values()
     written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
     for k in np.flatnonzero(np.any(np.abs(written) >= 1e300, axis=(1, 2))).tolist():
-        check_inertia_range(rows.where(k), written[k])  # (a sum of smaller entries cannot overflow)
+        rows.where(k).check_inertia_range(written[k])  # (a sum of smaller entries cannot overflow)
     return masses, com, written, rpy
 
 
@@ -482,7 +478,7 @@ def _sizes(rows: Rows, shape: Node, label: str) -> np.ndarray:
     )
     what = f"{label}: {' and '.join(names)}"
     for k in np.flatnonzero(np.any(sizes < 0, axis=1)).tolist():
-        positive(rows.where(k), sizes[k].tolist(), what, allow_zero=True)
+        rows.where(k).positive(sizes[k].tolist(), what, allow_zero=True)
     return sizes
 
 
@@ -583,7 +579,7 @@ def _axes(rows: Rows, axis: Node | None, motions: list[str]) -> np.ndarray:
     first[texts[::-1]] = at[::-1]  # each text's first row (the last assignment stands)
     units = np.empty((len(first), 3))
     for d in np.unique(texts).tolist():  # each distinct text's unit vector worked out once
-        units[d] = unit(rows.where(int(first[d])), values[first[d]], "axis: xyz")
+        units[d] = rows.where(int(first[d])).unit(values[first[d]], "axis: xyz")
     values[at] = units[texts]
     return values
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from rbi.core.validity import SMALLEST_NORMAL
 from rbi.errors import InputError
-from rbi.formats.robot import Where, numbers
+from rbi.formats.robot import Where
 from rbi.formats.robot_xml import XmlElement
 
 
@@ -186,7 +186,7 @@ class Rows:
         return np.array([self._numbers(k, text.decode(), count, what) for k, text in enumerate(texts)])
 
     def _numbers(self, k: int, text: str, count, what: str) -> list[float]:
-        found = numbers(self.where(k), text, what, count)
+        found = self.where(k).numbers(text, what, count)
         return found * 3 if len(found) == 1 and not isinstance(count, int) else found
 
 
