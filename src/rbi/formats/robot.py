@@ -26,8 +26,6 @@ from rbi.core.validity import overflowing_sum, subnormal_problem
 from rbi.errors import InputError
 from rbi.text import visible
 
-LINK_WORD = {"urdf": "link", "sdf": "link", "mjcf": "body"}
-
 _NUMBER = re.compile(r"^[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?$")
 
 MAX_ANGLE_RAD = 1e9
@@ -503,7 +501,7 @@ class RobotModel:
 
     @property
     def link_word(self) -> str:
-        return LINK_WORD[self.format]
+        return self.columns.word
 
     @property
     def inertial_links(self) -> list[Link]:
@@ -626,7 +624,8 @@ _remembered_numbers = functools.lru_cache(maxsize=4096)(_read_numbers)
 
 
 def from_six(ixx, iyy, izz, ixy, ixz, iyz) -> np.ndarray:
-    return np.array([[ixx, ixy, ixz], [ixy, iyy, iyz], [ixz, iyz, izz]], dtype=float)
+    """The symmetric inertia matrix (3, 3) of its six entries; (k, 3, 3) of k of each."""
+    return np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=-1).reshape(*np.shape(ixx), 3, 3)
 
 
 def rpy_matrix(rpy) -> np.ndarray:

@@ -62,14 +62,14 @@ def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str,
             # package:///NAME/REST (an empty authority) names the package after the slash, as
             # Pinocchio and ROS read it
             rest = uri[len(scheme) :].lstrip("/")
-            return _in_package(robot_path, uri, rest, label, package_paths or {}, scheme)
+            return _in_package(robot_path, rest, label, package_paths or {}, scheme)
     if uri.startswith("file://"):
-        return spec_relative_file(robot_path, unquote(uri[len("file://") :]), label, "robot file")
+        uri = unquote(uri[len("file://") :])
     return spec_relative_file(robot_path, uri, label, "robot file")
 
 
 def _in_package(
-    robot_path: str, uri: str, rest: str, label: str, package_paths: dict[str, list[Path]], scheme: str
+    robot_path: str, rest: str, label: str, package_paths: dict[str, list[Path]], scheme: str
 ) -> Path:
     name, _, inner = rest.partition("/")
     trusted = list(package_paths.get(name, []))

@@ -193,10 +193,8 @@ def decoded(path: str, data: bytes | None = None) -> XmlDocument:
     if data is None:
         data = read_bytes(path)
     prefix, body, suffix, encoding = _split(path, data)
-    if encoding in ("utf-16-le", "utf-16-be"):
-        utf8 = body  # decoded from UTF-16 already (_split)
-    elif encoding == "utf-8":
-        utf8 = body
+    utf8 = body  # UTF-8 as it is, or decoded from UTF-16 already (_split)
+    if encoding == "utf-8":
         try:
             utf8.decode("utf-8")
         except UnicodeDecodeError as exc:
@@ -204,7 +202,7 @@ def decoded(path: str, data: bytes | None = None) -> XmlDocument:
                 f"{path}: not valid UTF-8 at byte {len(prefix) + exc.start} (the file declares UTF-8 "
                 "or no encoding); save it as UTF-8"
             ) from None
-    else:
+    elif encoding not in ("utf-16-le", "utf-16-be"):
         try:
             utf8 = body.decode(encoding).encode("utf-8")
         except UnicodeError:

@@ -254,9 +254,7 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
         if uri is None:
             raise where.error(f"{label}/uri: missing")
         scale_element = shape.child("scale")
-        scale = (
-            where.numbers(scale_element.text, f"{label}/scale", 3) if scale_element is not None else [1, 1, 1]
-        )
+        scale = where.numbers("1 1 1" if scale_element is None else scale_element.text, f"{label}/scale", 3)
         mesh = resolve_mesh(
             where.path,
             uri,

@@ -50,6 +50,7 @@ from rbi.formats.robot import (
     check_unique_joint_names,
     depth_first,
     element_label,
+    from_six,
     refuse_shared_keys,
     rpy_matrix,
     short,
@@ -201,7 +202,7 @@ def _elements(blank: bytes, values: Values) -> Elements:
     ending, empty = codes[opens + 1] == 47, codes[closes - 1] == 47
     step = np.where(ending, -1, np.where(empty, 0, 1))
     after = np.cumsum(step)
-    if after.max() > robot_xml.MAX_DEPTH or not _starts(blank, int(opens[0]), b"<robot"):
+    if after.max() > robot_xml.MAX_DEPTH or not _named(codes, opens[:1], b"<robot")[0]:
         raise Doubt
     starts = np.flatnonzero((after - step == 1) & ~ending)
     ends = np.flatnonzero((after == 1) & (ending | empty))
@@ -308,16 +309,11 @@ def _named(codes: np.ndarray, at: np.ndarray, opening: bytes) -> np.ndarray:
     chosen = inside.copy()
     for k, byte in enumerate(opening):
         chosen[inside] &= codes[at[inside] + k] == byte
-    chosen[inside] &= np.isin(codes[at[inside] + size], np.frombuffer(bytes(_NAME_ENDS), dtype=np.uint8))
+    chosen[inside] &= np.isin(codes[at[inside] + size], _NAME_ENDS)
     return chosen
 
 
-def _starts(blank: bytes, at: int, opening: bytes) -> bool:
-    """Does the tag at ``at`` open with ``opening`` (``<`` and a name) and that name alone?"""
-    return blank.startswith(opening, at) and blank[at + len(opening)] in _NAME_ENDS
-
-
-_NAME_ENDS = frozenset(b" \t\n\r>/")
+_NAME_ENDS = np.frombuffer(b" \t\n\r>/", dtype=np.uint8)
 
 
 @functools.lru_cache(maxsize=4096)
@@ -422,8 +418,7 @@ def _inertials(rows: Rows, inertial: Node) -> tuple[np.ndarray, ...]:
         key: rows.numbers(block.at.get(key), None, 1, f"inertial/inertia: {key}")[:, 0]
         for key in ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
     }
-    ixx, iyy, izz, ixy, ixz, iyz = six.values()
-    written = np.stack([ixx, ixy, ixz, ixy, iyy, iyz, ixz, iyz, izz], axis=1).reshape(-1, 3, 3)
+    written = from_six(**six)
     for k in np.flatnonzero(np.any(np.abs(written) >= 1e300, axis=(1, 2))).tolist():
         rows.where(k).check_inertia_range(written[k])  # (a sum of smaller entries cannot overflow)
     return masses, com, written, rpy
