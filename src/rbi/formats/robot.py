@@ -461,6 +461,16 @@ def stacked(arrays: list, shape: tuple[int, ...]) -> np.ndarray:
 SOLID_KINDS = ("box", "sphere", "cylinder", "capsule", "ellipsoid")
 """The kinds of geometry that are one solid primitive."""
 
+SHAPES = {
+    "box": (("size", 3),),
+    "cylinder": (("radius", 1), ("length", 1)),
+    "capsule": (("radius", 1), ("length", 1)),
+    "sphere": (("radius", 1),),
+    "ellipsoid": (("radii", 3),),
+}
+"""URDF's and SDF's primitive shapes: their attributes (URDF) or child elements (SDF) and how
+many numbers each holds (m). URDF has no ellipsoid (one is a shape with no volume)."""
+
 
 @dataclass
 class RobotModel:

@@ -31,6 +31,7 @@ import numpy as np
 
 from rbi.core.mass import MassProperties
 from rbi.formats.robot import (
+    SHAPES,
     Geom,
     Inertial,
     LinkTable,
@@ -93,9 +94,7 @@ def read_sdf(document, package_paths=None, geometry: bool = True) -> RobotModel:
             elif inertial is not None:
                 table.inertials[row] = _inertial(where, inertial, frames.within(own))
             else:  # SDFormat's default inertial: 1 kg, unit moments, at the link origin
-                table.inertials[row] = Inertial.read(
-                    1.0, np.zeros(3), np.eye(3), element=None, source="default"
-                )
+                table.inertials[row] = Inertial.read(1.0, np.zeros(3), np.eye(3), source="default")
             links[own] = row
         refuse_shared_keys(path, "link", table.names)  # across models too: "a" + "b::c" is "a::b" + "c"
         _joints(table, model_element, links, link_poses, frames, f"{model_name}::" if prefix else "")
@@ -227,16 +226,6 @@ def _value(where: Where, shape, tag: str, label: str, count: int = 1) -> list[fl
     if child is None:
         raise where.error(f"{label}/{tag}: missing")
     return where.numbers(child.text, f"{label}/{tag}", count)
-
-
-SHAPES = {
-    "box": (("size", 3),),
-    "cylinder": (("radius", 1), ("length", 1)),
-    "capsule": (("radius", 1), ("length", 1)),
-    "sphere": (("radius", 1),),
-    "ellipsoid": (("radii", 3),),
-}
-"""SDF's primitive shapes: their child elements and how many numbers each holds (m)."""
 
 
 def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:

@@ -43,6 +43,7 @@ from rbi.errors import InputError
 from rbi.formats import robot_xml
 from rbi.formats.robot import (
     MAX_ANGLE_RAD,
+    SHAPES,
     GeomColumn,
     Inertial,
     LinkColumns,
@@ -71,14 +72,6 @@ MOVING = {
 
 UNIT_AXIS_KINDS = ("revolute", "prismatic")
 """The motions whose ``<axis xyz>`` is made a unit vector (the others keep it as written)."""
-
-_SHAPES = {
-    "box": ("size",),
-    "cylinder": ("radius", "length"),
-    "capsule": ("radius", "length"),
-    "sphere": ("radius",),
-}
-"""The primitive shapes and their attributes (a mesh and a shape with no volume apart)."""
 
 
 def read_urdf(
@@ -379,14 +372,22 @@ def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[in
     }
 
 
+def _origins(rows: Rows, origin: Node | None, what: str, turn: str = "") -> tuple[np.ndarray, np.ndarray]:
+    """Each row's ``origin`` element (``what``: whose) as its ``xyz`` (k, 3) and ``rpy`` (k, 3),
+    zero where not written; ``turn`` names the angles when one is refused (:meth:`Where.angles`),
+    else ``what/origin: rpy``."""
+    at = {} if origin is None else origin.at
+    xyz = rows.numbers(at.get("xyz"), b"0 0 0", 3, f"{what}/origin: xyz")
+    rpy = rows.numbers(at.get("rpy"), b"0 0 0", 3, f"{what}/origin: rpy")
+    for k in np.flatnonzero(np.any(np.abs(rpy) > MAX_ANGLE_RAD, axis=1)).tolist():
+        rows.where(k).angles(rpy[k].tolist(), turn or f"{what}/origin: rpy")
+    return xyz, rpy
+
+
 def _poses(rows: Rows, origin: Node | None, what: str) -> tuple[np.ndarray, np.ndarray]:
     """Each row's ``origin`` element (``what``: whose) as rotations (k, 3, 3) and translations
     (k, 3); the identity where there is none."""
-    at = {} if origin is None else origin.at
-    xyz = rows.numbers(at.get("xyz"), b"0 0 0", 3, f"{what}/origin: xyz")
-    rpy = _angles(
-        rows, rows.numbers(at.get("rpy"), b"0 0 0", 3, f"{what}/origin: rpy"), f"{what}/origin: rpy"
-    )
+    xyz, rpy = _origins(rows, origin, what)
     R = np.empty((len(rows), 3, 3))
     R[:] = np.eye(3)
     for k in np.flatnonzero(np.any(rpy != 0, axis=1)).tolist():
@@ -394,20 +395,10 @@ def _poses(rows: Rows, origin: Node | None, what: str) -> tuple[np.ndarray, np.n
     return R, xyz
 
 
-def _angles(rows: Rows, rpy: np.ndarray, what: str) -> np.ndarray:
-    """``rpy`` (k, 3) once :func:`rbi.formats.robot.angles` takes each row."""
-    for k in np.flatnonzero(np.any(np.abs(rpy) > MAX_ANGLE_RAD, axis=1)).tolist():
-        rows.where(k).angles(rpy[k].tolist(), what)
-    return rpy
-
-
 def _inertials(rows: Rows, inertial: Node) -> tuple[np.ndarray, ...]:
     """Each row's ``<inertial>``: masses (k,) kg, centres of mass (k, 3) m, the inertias as
     written (k, 3, 3) kg·m² and the inertial frames' roll, pitch, yaw (k, 3) rad."""
-    origin = inertial.child("origin")
-    at = {} if origin is None else origin.at
-    com = rows.numbers(at.get("xyz"), b"0 0 0", 3, "inertial/origin: xyz")
-    rpy = _angles(rows, rows.numbers(at.get("rpy"), b"0 0 0", 3, "inertial/origin: rpy"), "inertial rpy")
+    com, rpy = _origins(rows, inertial.child("origin"), "inertial", "inertial rpy")
     mass, block = inertial.child("mass"), inertial.child("inertia")
     if mass is None:
         raise rows.where(0).error("inertial/mass: missing")
@@ -463,15 +454,15 @@ def _meshes(rows: Rows, shape: Node, label: str, packages) -> list[tuple]:
 
 def _sizes(rows: Rows, shape: Node, label: str) -> np.ndarray:
     """Each row's shape size (k, m) in m; m = 0 for a kind with no volume."""
-    names = _SHAPES.get(shape.tag, ())
-    if not names:
+    fields = SHAPES.get(shape.tag, ()) if shape.tag != "ellipsoid" else ()
+    if not fields:
         return np.empty((len(rows), 0))
-    count = 3 if shape.tag == "box" else 1
-    default = b"" if count == 3 else None  # (a box's missing size is 0 numbers, not missing)
+    default = b"" if shape.tag == "box" else None  # (a box's missing size is 0 numbers, not missing)
     sizes = np.concatenate(
-        [rows.numbers(shape.at.get(name), default, count, f"{label}: {name}") for name in names], axis=1
+        [rows.numbers(shape.at.get(name), default, count, f"{label}: {name}") for name, count in fields],
+        axis=1,
     )
-    what = f"{label}: {' and '.join(names)}"
+    what = f"{label}: {' and '.join(name for name, _ in fields)}"
     for k in np.flatnonzero(np.any(sizes < 0, axis=1)).tolist():
         rows.where(k).positive(sizes[k].tolist(), what, allow_zero=True)
     return sizes

@@ -172,16 +172,14 @@ class Rows:
         3): one number stands for three); InputError, worded for the first wrong row."""
         if place is None and default is None:
             raise self.where(0).error(f"{what}: missing")
-        if len(self) == 1:  # one element (a file read again element by element): no arrays to set up
-            return np.array([self._numbers(0, self.column(place, default)[0].decode(), count, what)])
-        distinct, inverse = self.distinct(place, default)
-        for each in (count,) if isinstance(count, int) else (3, 1):
-            try:
-                return np.repeat(plain_numbers(distinct, each), 3 // each if count == (1, 3) else 1, axis=1)[
-                    inverse
-                ]
-            except Doubt:
-                pass
+        if len(self) > 1:  # (one element, a file read again element by element: no arrays to set up)
+            distinct, inverse = self.distinct(place, default)
+            for each in (count,) if isinstance(count, int) else (3, 1):
+                try:
+                    found = plain_numbers(distinct, each)
+                except Doubt:
+                    continue
+                return np.repeat(found, 3 // each if count == (1, 3) else 1, axis=1)[inverse]
         texts = self.column(place, default)
         return np.array([self._numbers(k, text.decode(), count, what) for k, text in enumerate(texts)])
 
