@@ -96,16 +96,6 @@ class Inertial:
         """The declared mass, kg."""
         return self.properties.mass
 
-    def spec_rotation(self) -> dict[str, Any] | None:
-        """The rotation (inertial frame → link frame) as a spec ``rotation:`` mapping: URDF/SDF
-        roll, pitch, yaw as Euler angles about the fixed x, y, z axes, a quaternion as the file
-        gave it; None when the frames coincide."""
-        if self.rpy is not None:
-            return {"euler_deg": [math.degrees(a) for a in self.rpy], "sequence": "xyz"}
-        if self.quaternion is not None:
-            return {"quaternion": [float(v) for v in self.quaternion]}
-        return None
-
 
 @dataclass
 class Geom:

@@ -18,6 +18,7 @@ number that is not a plain finite decimal.
 
 from __future__ import annotations
 
+import math
 import os
 from typing import Any
 
@@ -143,13 +144,17 @@ def custom_part(name: str, mass: float, center_of_mass, inertia) -> dict[str, An
 
 def link_spec(robot: RobotModel, link: Link) -> dict[str, Any]:
     """The rbi spec (plain dict, SI) of one link: one custom part with the link's mass, centre
-    of mass, inertia about it in the inertial frame's axes, and the rotation into link axes."""
+    of mass, inertia about it in the inertial frame's axes, and the rotation into link axes (the
+    inertial frame → link frame) as a spec ``rotation:`` mapping: URDF/SDF roll, pitch, yaw as
+    Euler angles about the fixed x, y, z axes, a quaternion as the file gave it; none when the
+    frames coincide."""
     inertial = link.inertial
     name = link.name or f"{robot.link_word}{link.index}"
     part = custom_part(name, inertial.mass, inertial.properties.center_of_mass, inertial.written_inertia)
-    rotation = inertial.spec_rotation()
-    if rotation is not None:
-        part["rotation"] = rotation
+    if inertial.rpy is not None:
+        part["rotation"] = {"euler_deg": [math.degrees(a) for a in inertial.rpy], "sequence": "xyz"}
+    elif inertial.quaternion is not None:
+        part["rotation"] = {"quaternion": [float(v) for v in inertial.quaternion]}
     return {
         "name": part["name"],
         "units": {"length": "m", "mass": "kg"},

@@ -293,8 +293,8 @@ def _joints(table: LinkTable, model_element, links: dict, link_poses: dict, fram
                 axis = joint_pose.rotation @ axis
         effort = None
         if (written := _text(axis_element, "limit", "effort")) is not None:
-            effort = abs(where.number(written, "axis/limit/effort"))
-            effort = None if effort == -1 or not math.isfinite(effort) else effort
+            effort = where.number(written, "axis/limit/effort")
+            effort = None if effort < 0 else abs(effort)  # SDFormat: a negative effort enforces no limit
         table.motions[child] = [
             Motion(
                 joint_name, kind, np.asarray(axis, dtype=float), joint_pose.translation, effort_limit=effort
