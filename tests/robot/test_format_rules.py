@@ -311,6 +311,23 @@ FRAMED_SDF = """<?xml version="1.0"?><sdf version="1.9"><model name="m">
 </model></sdf>"""
 
 
+@pytest.mark.parametrize("effort, limit", [("-1", None), ("-5", None), ("0", 0.0), ("5", 5.0)])
+def test_an_sdf_negative_effort_is_no_limit(tmp_path, effort, limit):
+    """SDFormat's <limit><effort>: "Limit is not enforced if value is negative" (its default is
+    -1); rbi read -1 as a limit of 1 N·m and flagged the holding torque against it."""
+    text = (
+        '<?xml version="1.0"?><sdf version="1.9"><model name="m"><link name="base"/>'
+        '<link name="arm"><inertial><pose>0.5 0 0 0 0 0</pose><mass>2</mass></inertial></link>'
+        '<joint name="j" type="revolute"><parent>base</parent><child>arm</child>'
+        f"<axis><xyz>0 1 0</xyz><limit><effort>{effort}</effort></limit></axis></joint></model></sdf>"
+    )
+    proc, result = audit(tmp_path, "effort.sdf", text)
+    assert proc.returncode == 0, proc.stderr
+    (joint,) = result["joints"]
+    assert joint["effort_limit"] == limit
+    assert [flag["code"] for flag in joint["flags"]] == ([] if limit is None else ["effort"])
+
+
 @pytest.mark.parametrize("values", [{"j1": 0.7, "j2": 0.15}, {"j1": -1.2, "j2": -0.3}])
 def test_sdf_poses_relative_to_other_frames_agree_with_drake(tmp_path, values):
     """SDFormat's pose graph: a link placed relative_to a <frame>, another relative_to a joint, a
