@@ -58,7 +58,7 @@ def test_a_sub_assemblys_plus_minus_is_propagated_as_the_same_parts_written_flat
         monte_carlo(top, 500, seed=4), monte_carlo(flat, 500, seed=4), rtol=1e-12, atol=1e-15
     )
     spread = rbi.load(tmp_path / "top.yaml").standard_uncertainty()
-    assert spread is not None and spread["mass"] == pytest.approx(float(written.uncertainty[0]), rel=1e-12)
+    assert spread is not None and spread.mass == pytest.approx(float(written.uncertainty[0]), rel=1e-12)
     assert not [w for w in rbi.load(tmp_path / "top.yaml").warnings if "±" in w]
 
 
@@ -96,8 +96,10 @@ def test_parts_expand_gives_each_part_of_a_sub_assembly_its_uncertainty(tmp_path
     expected = [flat[0]] + [p for _ in range(copies) for p in flat[1:]]
     for row, alone in zip(nested, expected):
         for key in ("mass", "center_of_mass", "inertia_about_com"):
-            np.testing.assert_allclose(row.uncertainty[key], alone.uncertainty[key], rtol=1e-12, atol=1e-18)
-    assert nested.to_dict()["parts"][1]["uncertainty"] == nested[1].uncertainty
+            np.testing.assert_allclose(
+                getattr(row.uncertainty, key), getattr(alone.uncertainty, key), rtol=1e-12, atol=1e-18
+            )
+    assert nested.to_dict()["parts"][1]["uncertainty"] == nested[1].uncertainty.to_dict()
 
 
 def test_two_parts_naming_one_file_have_inputs_of_their_own(tmp_path):

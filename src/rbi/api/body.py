@@ -22,7 +22,7 @@ from rbi.api.results import (
     Parts,
     Principal,
 )
-from rbi.api.uncertainty import UncertaintyBudget, budget_of
+from rbi.api.uncertainty import UncertaintyBudget
 from rbi.core.dynamics import (
     angle_between_deg,
     angular_momentum_about_point,
@@ -51,7 +51,7 @@ from rbi.spec.checks import run_checks
 from rbi.spec.load import file_problems
 from rbi.spec.models import StepPart, body_spec_json_schema
 from rbi.spec.points import NO_PIVOT, REFERENCE_POINTS, reference_choices, reference_name
-from rbi.spec.uncertain import linear, momentum_uncertainty, part_uncertainties
+from rbi.spec.uncertain import StandardUncertainty, budget, linear, momentum_uncertainty, part_uncertainties
 from rbi.spec.units import LENGTH_UNITS_IN_M as LENGTH_UNITS
 from rbi.spec.units import MASS_UNITS_IN_KG as MASS_UNITS
 from rbi.spec.units import convert_body
@@ -348,9 +348,7 @@ class Body(Result):
             radii_of_gyration=radii,
             about=place.point,
             place=place,
-            uncertainty=None
-            if spread is None
-            else {k: spread[k] for k in ("mass", "center_of_mass", "moments", "axes_deg")},
+            uncertainty=None if spread is None else spread.only("moments", "axes_deg"),
         )
 
     def inertia_report(
@@ -384,7 +382,7 @@ class Body(Result):
             products,
             direction,
             None if direction is None else self.moment_about_axis(direction, about, turns or None),
-            None if spread is None else {k: spread[k] for k in ("mass", "center_of_mass", "inertia")},
+            None if spread is None else spread.only("inertia"),
         )
 
     def to_dict(self) -> dict[str, Any]:
@@ -485,11 +483,11 @@ class Body(Result):
                 (JCGM 101: ``samples`` draws of every input, reproducible with ``seed``).
             coverage: the coverage probability of each interval.
         """
-        return budget_of(self._loaded, of, method, samples, seed, coverage)
+        return UncertaintyBudget(budget(self._loaded, of, method, samples, seed, coverage))
 
     def standard_uncertainty(
         self, about: Point = "com", axes: Sequence[tuple[str, float]] | np.ndarray | None = None
-    ) -> dict[str, Any] | None:
+    ) -> StandardUncertainty | None:
         """The combined standard uncertainty (GUM 5.1.2, first order) of ``mass``,
         ``center_of_mass``, ``inertia`` (about ``about``, in ``axes`` as `inertia` takes them),
         ``moments`` (about ``about``) and ``axes_deg`` (each principal axis's angular
@@ -497,23 +495,7 @@ class Body(Result):
         uncertainties); None when the spec writes no number with ±."""
         if not self._uncertain:
             return None
-        found = linear(self._loaded, self.point(about))
-        u = found.uncertainty
-        rotation = None if axes is None else _rotation(axes)
-        if rotation is None:
-            inertia = u[4:13].reshape(3, 3)
-        else:
-            turned = np.einsum(
-                "ia,qab,jb->qij", rotation, found.sensitivities[4:13].T.reshape(-1, 3, 3), rotation
-            )
-            inertia = np.sqrt(np.einsum("kij,k->ij", turned**2, found.u**2))
-        return {
-            "mass": float(u[0]),
-            "center_of_mass": u[1:4].tolist(),
-            "inertia": inertia.tolist(),
-            "moments": u[13:].tolist(),
-            "axes_deg": found.axes_deg(),
-        }
+        return linear(self._loaded, self.point(about)).standard(None if axes is None else _rotation(axes))
 
     @property
     def mass_properties(self) -> MassProperties:

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -20,6 +20,9 @@ from rbi.core.mass import MassProperties
 from rbi.reprs import Result, Results, Rows
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG
 from rbi.text import number, plus_minus, vector_text, without_noise
+
+if TYPE_CHECKING:
+    from rbi.spec.uncertain import StandardUncertainty
 
 PRODUCT_SIGN_TITLES = {"tensor": "products −∫xy dm", "cad": "CAD products +∫xy dm"}
 """Signs of the off-diagonal entries: ``tensor`` (the matrix, ``I_xy = −∫xy dm``) or ``cad``
@@ -86,7 +89,7 @@ class About:
     def title(self, what: str) -> str:
         return f"{self.body.name or self.body.path} — {what}"
 
-    def place_rows(self, spread: dict[str, Any] | None = None) -> list[tuple[str, str, str]]:
+    def place_rows(self, spread: StandardUncertainty | None = None) -> list[tuple[str, str, str]]:
         """The mass, the centre of mass and the point (a coordinate below 1e-12 of the body's
         size printed 0); with ``spread`` (`Body.standard_uncertainty`), the mass and centre of
         mass ``± u``."""
@@ -94,8 +97,8 @@ class About:
         size = body_size(body.mass_properties)
         mass, com = number(body.mass, 8), shown(body.center_of_mass, size)
         if spread is not None:
-            mass = plus_minus(body.mass, spread["mass"])
-            com = f"{com} ± {shown(spread['center_of_mass'], 0.0, 2)}"
+            mass = plus_minus(body.mass, spread.mass)
+            com = f"{com} ± {shown(spread.center_of_mass, 0.0, 2)}"
         return [
             ("mass", labels["mass"], mass),
             ("centre of mass", labels["length"], com),
@@ -108,7 +111,7 @@ def _placed(result: Any) -> dict[str, Any]:
     ``about`` without one), its declared fields (``json_keys``), then ``uncertainty`` for a
     spec with ±."""
     head = result.place.to_dict() if result.place else {"about": result.about}
-    spread = {} if result.uncertainty is None else {"uncertainty": result.uncertainty}
+    spread = {} if result.uncertainty is None else {"uncertainty": result.uncertainty.to_dict()}
     return head | result.json_fields() | spread
 
 
@@ -141,7 +144,7 @@ class Inertia(Result):
     products_sign: str = "tensor"
     axis: np.ndarray | None = None
     moment_about_axis: float | None = None
-    uncertainty: dict[str, Any] | None = None
+    uncertainty: StandardUncertainty | None = None
     """For a spec that writes numbers with ±: the standard uncertainty of ``mass``,
     ``center_of_mass`` and ``inertia`` (as `Body.standard_uncertainty` gives them); else None."""
 
@@ -155,7 +158,7 @@ class Inertia(Result):
         if self.axis is not None:
             out |= {"axis": self.axis, "moment_about_axis": self.moment_about_axis}
         if self.uncertainty is not None:
-            out["uncertainty"] = self.uncertainty
+            out["uncertainty"] = self.uncertainty.to_dict()
         return out
 
     def rows(self) -> list[Rows]:
@@ -174,7 +177,7 @@ class Inertia(Result):
         ]
         if self.uncertainty is not None:
             tables.append(
-                matrix_rows("± its standard uncertainty", self.uncertainty["inertia"], labels["inertia"])
+                matrix_rows("± its standard uncertainty", self.uncertainty.inertia, labels["inertia"])
             )
         return tables
 
@@ -197,7 +200,7 @@ class Principal(Result):
     about: np.ndarray
     place: About | None = field(default=None, compare=False)
     """The body and the point's name (None for principal axes made by hand)."""
-    uncertainty: dict[str, Any] | None = field(default=None, compare=False)
+    uncertainty: StandardUncertainty | None = field(default=None, compare=False)
     """For a spec that writes numbers with ±: the standard uncertainty of ``mass``,
     ``center_of_mass``, ``moments`` and ``axes_deg`` (each axis's, degrees; None for an axis
     not determined); else None."""
@@ -212,7 +215,7 @@ class Principal(Result):
         if self.uncertainty is not None:
             out["warnings"] = out.get("warnings", []) + [
                 f"principal axis {i + 1} is not determined: its moment is within 3 standard uncertainties of another's"
-                for i, deg in enumerate(self.uncertainty["axes_deg"])
+                for i, deg in enumerate(self.uncertainty.axes_deg)
                 if deg is None
             ]
         return out
@@ -230,8 +233,8 @@ class Principal(Result):
         spread = self.uncertainty
         columns: tuple[str, ...] = ("#", moment, "axis x", "axis y", "axis z")
         columns += (f"radius of gyration [{labels['length']}]", *(() if spread is None else ("axis ±°",)))
-        u = [None] * 3 if spread is None else [x / scale for x in spread["moments"]]
-        degrees = [()] * 3 if spread is None else [(number(d, 2),) for d in spread["axes_deg"]]
+        u = [None] * 3 if spread is None else [x / scale for x in spread.moments]
+        degrees = [()] * 3 if spread is None else [(number(d, 2),) for d in spread.axes_deg]
         cells = [
             (f"I{i + 1}", _with_u(m / scale, u[i], 7), *(number(v, 7) for v in a), number(k, 7), *degrees[i])
             for i, (m, a, k) in enumerate(zip(self.moments, self.axes, self.radii_of_gyration))
@@ -263,7 +266,7 @@ class Momentum(Result):
     kinetic_energy: float
     place: About | None = field(default=None, compare=False)
     """The body and the point's name."""
-    uncertainty: dict[str, Any] | None = field(default=None, compare=False)
+    uncertainty: StandardUncertainty | None = field(default=None, compare=False)
     """For a spec that writes numbers with ±: the standard uncertainty of ``mass``,
     ``center_of_mass``, ``angular_momentum`` and ``kinetic_energy``; else None."""
 
@@ -282,8 +285,8 @@ class Momentum(Result):
         place, u = self.place, self.uncertainty
         labels = place.body.unit_labels if place else {"velocity": "", "angular_momentum": "", "energy": ""}
         h_unit = labels["angular_momentum"]
-        spread = [] if u is None else [("± its standard uncertainty", h_unit, shown(u["angular_momentum"]))]
-        energy = _with_u(self.kinetic_energy, None if u is None else u["kinetic_energy"], 8)
+        spread = [] if u is None else [("± its standard uncertainty", h_unit, shown(u.angular_momentum))]
+        energy = _with_u(self.kinetic_energy, None if u is None else u.kinetic_energy, 8)
         cells = [
             *(place.place_rows(u) if place else []),
             ("ω (body axes)", "rad/s", shown(self.omega)),
@@ -409,7 +412,7 @@ class Part:
     principal_moments: np.ndarray
     inertia_share: float
     integration_error: float | None = None
-    uncertainty: dict[str, Any] | None = field(default=None, compare=False)
+    uncertainty: MassProperties | None = field(default=None, compare=False)
     """For a spec that writes numbers with ±: the standard uncertainty of the part's ``mass``,
     ``center_of_mass`` and ``inertia_about_com`` from its own inputs; else None."""
 
@@ -457,7 +460,7 @@ class Parts(Results[Part]):
                 "implied_density_si": None if density is None else density * to_si,
             }
             if part.uncertainty is not None:
-                row["uncertainty"] = part.uncertainty
+                row["uncertainty"] = part.uncertainty.to_dict()
             if step:  # the error estimate of each STEP part
                 row["integration_error"] = part.integration_error
             rows.append(row)
@@ -480,10 +483,7 @@ class Parts(Results[Part]):
         spread = self._body.standard_uncertainty()
         if spread is None:
             return {}
-        return {
-            "uncertainty": {k: spread[k] for k in ("mass", "center_of_mass")}
-            | {"principal_moments": spread["moments"]}
-        }
+        return {"uncertainty": spread.only().to_dict() | {"principal_moments": spread.moments}}
 
     def csv_rows(self) -> list[dict[str, Any]]:
         return self.to_dict()["parts"]

@@ -7,16 +7,11 @@ from __future__ import annotations
 
 from typing import Any
 
-from rbi.errors import ArgumentError, literal
 from rbi.memory import collector_paused
 from rbi.reprs import Result, Rows, json_ready, plain
-from rbi.spec.uncertain import QUANTITIES, budget
+from rbi.spec.checks import UNITS
 from rbi.spec.units import unit_labels
 from rbi.text import number
-
-METHODS = ("linear", "monte-carlo")
-UNITS = {"mass": "mass", "center_of_mass": "length", "inertia": "inertia", "moments": "inertia"}
-"""The unit (a key of :func:`rbi.spec.units.unit_labels`) of each quantity of the budget."""
 
 
 class UncertaintyBudget(Result):
@@ -98,31 +93,3 @@ class UncertaintyBudget(Result):
         """The quantities' table, then the contributions'."""
         validation = [self._validation()] if self._data["samples"] else []
         return [self._quantities(), *validation, self._budget()]
-
-
-def budget_of(
-    loaded: Any, of: Any, method: str, samples: int, seed: int | None, coverage: float
-) -> UncertaintyBudget:
-    """`Body.uncertainty`'s work: the arguments checked (ArgumentError naming the parameter),
-    then the budget."""
-    names = [of] if isinstance(of, str) else of
-    if names is not None:  # a whole vector or matrix stands for its entries
-        names = [q for name in names for q in ([n for n in QUANTITIES if n.startswith(f"{name}[")] or [name])]
-        unknown = [q for q in names if q not in QUANTITIES]
-        if unknown or not names:
-            raise ArgumentError(
-                "of",
-                "must name quantities such as mass, center_of_mass[0], inertia[0][2], moments[1] "
-                f"(got {literal(unknown[0] if unknown else names)})",
-            )
-    if method not in METHODS:
-        raise ArgumentError("method", f"must be linear or monte-carlo (got {literal(method)})")
-    if isinstance(samples, bool) or not isinstance(samples, int) or not 2 <= samples <= 10_000_000:
-        raise ArgumentError(
-            "samples", f"must be a whole number from 2 to 10,000,000 (got {literal(samples)})"
-        )
-    if isinstance(coverage, bool) or not isinstance(coverage, (int, float)) or not 0 < coverage < 1:
-        raise ArgumentError(
-            "coverage", f"must be a probability between 0 and 1, e.g. 0.95 (got {literal(coverage)})"
-        )
-    return UncertaintyBudget(budget(loaded, names, method, samples, seed, float(coverage)))

@@ -77,7 +77,8 @@ def _expected_point(about: Any, body: Any) -> tuple[str, np.ndarray]:
 
 
 UNITS = {"mass": "mass", "center_of_mass": "length", "moments": "inertia", "inertia": "inertia"}
-"""The quantities `rbi check` compares, in its order, and the unit label of each."""
+"""The quantities `rbi check` compares, in its order, and the unit label of each (a key of
+:func:`rbi.spec.units.unit_labels`; the uncertainty budget's quantities are these too)."""
 
 
 def run_checks(body: Any) -> list[Check]:

@@ -168,8 +168,8 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
     mass = _solid_mass(part, measure, units)
     # inertia per density scales as scale⁵ (scale⁴ for a surface), the density as 1 / measure
     inertia = unit.inertia_about_com * (mass / unit.mass * scale * scale)
-    com = unit.center_of_mass * scale
-    return _placed(part, mass, com, inertia)
+    com = unit.center_of_mass * scale  # file axes about its origin: turned, then moved to position
+    return MassProperties(mass, com, inertia).transformed(rotation_matrix(part.rotation), part.position)
 
 
 def assembly_element(part: models.AssemblyPart, units: models.Units) -> MassProperties:
@@ -189,17 +189,6 @@ def _part_file(part, spec_path: str):
         return spec_relative_file(spec_path, part.file, f"file: {part.file}")
     except InputError as exc:
         raise ValueError(str(exc)) from None
-
-
-def _placed(part, mass: float, com: np.ndarray, inertia: np.ndarray) -> MassProperties:
-    """A file's solid (mesh, STEP) in the body: its centre of mass and inertia (file axes,
-    spec units) turned by ``part.rotation`` about the file's origin, that origin moved to
-    ``part.position``."""
-    R = rotation_matrix(part.rotation)
-    if R is not None:
-        com = R @ com
-        inertia = re_express(inertia, R)
-    return MassProperties(mass, numbers(part.position) + com, 0.5 * (inertia + inertia.T))
 
 
 def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> MassProperties:
@@ -225,8 +214,8 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
     part._integration_error = max(s.integration_error for s in chosen)
     mass = _solid_mass(part, volume, units)
     inertia = props.inertia_about_com * per_metre**5 * (mass / volume)
-    com = props.center_of_mass * per_metre
-    return _placed(part, mass, com, inertia)
+    com = props.center_of_mass * per_metre  # file axes about its origin: turned, then moved to position
+    return MassProperties(mass, com, inertia).transformed(rotation_matrix(part.rotation), part.position)
 
 
 def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str, ...]:

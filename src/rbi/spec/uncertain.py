@@ -20,11 +20,13 @@ from __future__ import annotations
 import math
 import re
 import warnings
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
 import numpy as np
 
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import radians, unit_vector, without_rounding_noise
 from rbi.core.uncertainty import (
     axis_uncertainty_deg,
@@ -509,6 +511,49 @@ class Linear:
         """Each principal axis's standard angular uncertainty in degrees (None: undetermined)."""
         return axis_uncertainty_deg(self.values[13:], self.uncertainty[13:], self.turn, self.u)
 
+    def standard(self, rotation: np.ndarray | None = None) -> StandardUncertainty:
+        """The :class:`StandardUncertainty` of the body's mass, centre of mass, inertia (its
+        sensitivities turned into the axes of ``rotation``, when given), moments and axes."""
+        u = self.uncertainty
+        if rotation is None:
+            inertia = u[4:13].reshape(3, 3)
+        else:
+            turned = np.einsum(
+                "ia,qab,jb->qij", rotation, self.sensitivities[4:13].T.reshape(-1, 3, 3), rotation
+            )
+            inertia = np.sqrt(np.einsum("kij,k->ij", turned**2, self.u**2))
+        return StandardUncertainty(
+            float(u[0]), u[1:4].tolist(), inertia.tolist(), u[13:].tolist(), self.axes_deg()
+        )
+
+
+@dataclass(frozen=True)
+class StandardUncertainty:
+    """The combined standard uncertainty (GUM 5.1.2, first order) of a body's ``mass`` and
+    ``center_of_mass`` and of what a result reports besides (None where it does not, and left
+    out of :meth:`to_dict`): ``inertia`` (about a point), principal ``moments`` (about it),
+    ``axes_deg`` (each principal axis's angular uncertainty, degrees; None for an axis of a
+    pair of moments closer than 3 combined uncertainties), ``angular_momentum`` and
+    ``kinetic_energy``; in the body's units."""
+
+    mass: float
+    center_of_mass: list[float]
+    inertia: Any = None
+    moments: Any = None
+    axes_deg: Any = None
+    angular_momentum: Any = None
+    kinetic_energy: Any = None
+
+    def only(self, *names: str) -> StandardUncertainty:
+        """The same uncertainties, ``mass``, ``center_of_mass`` and ``names`` kept."""
+        return StandardUncertainty(
+            self.mass, self.center_of_mass, **{name: getattr(self, name) for name in names}
+        )
+
+    def to_dict(self) -> dict[str, Any]:
+        """The ``"uncertainty"`` object of a result's JSON: the fields given, in their order."""
+        return {key: value for key, value in vars(self).items() if value is not None}
+
 
 def linear(loaded: Any, point: np.ndarray | None = None) -> Linear:
     """:class:`Linear` of the body ``loaded``, its inertia and moments about ``point`` (a fixed
@@ -566,9 +611,40 @@ class Contributions(NamedTuple):
         return [dict(zip(keys, (x.path, x.value + 0.0, x.u + 0.0, s, c, f))) for x, s, c, f in rows]
 
 
+METHODS = ("linear", "monte-carlo")
+"""The ways :func:`budget` propagates: the law of propagation (JCGM 100) or Monte Carlo (JCGM 101)."""
+
+
+def _quantities(of: str | Sequence[str] | None, method: str, samples: int, coverage: float) -> list[int]:
+    """The positions in :data:`QUANTITIES` of the quantities ``of`` names (a whole vector or
+    matrix stands for its entries; None: :data:`DEFAULT_QUANTITIES`), the other arguments of
+    :func:`budget` checked: ArgumentError naming the parameter for one out of its range."""
+    names = [of] if isinstance(of, str) else of
+    if names is not None:  # a whole vector or matrix stands for its entries
+        names = [q for name in names for q in ([n for n in QUANTITIES if n.startswith(f"{name}[")] or [name])]
+        unknown = [q for q in names if q not in QUANTITIES]
+        if unknown or not names:
+            raise ArgumentError(
+                "of",
+                "must name quantities such as mass, center_of_mass[0], inertia[0][2], moments[1] "
+                f"(got {literal(unknown[0] if unknown else names)})",
+            )
+    if method not in METHODS:
+        raise ArgumentError("method", f"must be linear or monte-carlo (got {literal(method)})")
+    if isinstance(samples, bool) or not isinstance(samples, int) or not 2 <= samples <= 10_000_000:
+        raise ArgumentError(
+            "samples", f"must be a whole number from 2 to 10,000,000 (got {literal(samples)})"
+        )
+    if isinstance(coverage, bool) or not isinstance(coverage, (int, float)) or not 0 < coverage < 1:
+        raise ArgumentError(
+            "coverage", f"must be a probability between 0 and 1, e.g. 0.95 (got {literal(coverage)})"
+        )
+    return [QUANTITIES.index(q) for q in (names or DEFAULT_QUANTITIES)]
+
+
 def budget(
     loaded: Any,
-    of: list[str] | None = None,
+    of: str | Sequence[str] | None = None,
     method: str = "linear",
     samples: int = 100_000,
     seed: int | None = None,
@@ -576,8 +652,9 @@ def budget(
 ) -> dict[str, Any]:
     """The uncertainty budget of ``rbi uncertainty``, as its JSON (the contract's form, each
     quantity's ``contributions`` as :class:`Contributions`; and ``estimated_sensitivities``, the
-    inputs whose ∂y/∂x are not exact, when there are any)."""
-    chosen = [QUANTITIES.index(q) for q in (of or DEFAULT_QUANTITIES)]
+    inputs whose ∂y/∂x are not exact, when there are any), of the quantities ``of`` names
+    (:func:`_quantities`, which checks the arguments)."""
+    chosen = _quantities(of, method, samples, coverage)
     result = linear(loaded)
     u = result.uncertainty
     k = coverage_factor(coverage)
@@ -624,12 +701,12 @@ def budget(
     )
 
 
-def part_uncertainties(loaded: Any, expand: bool = False) -> list[dict[str, Any]]:
+def part_uncertainties(loaded: Any, expand: bool = False) -> MassProperties:
     """Per row of ``rbi parts`` (the elements of ``loaded`` in file order; with ``expand`` each
     sub-assembly's parts in each of its copies, as :func:`rbi.spec.assembly.expanded` lists
     them), the standard uncertainty of its ``mass``, ``center_of_mass`` and
-    ``inertia_about_com`` from the inputs that move it, in ``loaded``'s units (zeros for a part
-    without ±)."""
+    ``inertia_about_com`` from the inputs that move it, as one stack in ``loaded``'s units
+    (zeros for a part without ±)."""
     inputs = loaded.spec._uncertain
     part, d, _ = part_derivatives(loaded)
     u = np.array([i.u for i in inputs])
@@ -645,15 +722,13 @@ def part_uncertainties(loaded: Any, expand: bool = False) -> list[dict[str, Any]
             elif (found := _complex_step(loaded, index, group, True)) is None:
                 found = _differences(loaded, index, group, True)
             rows[index] = np.sum((found / _flat_units(loaded) * u[chosen, None, None]) ** 2, axis=0)
-    return [
-        dict(zip(FIELDS, (float(u[0]), u[1:4].tolist(), u[4:].reshape(3, 3).tolist())))
-        for u in np.sqrt(np.concatenate(rows))
-    ]
+    u = np.sqrt(np.concatenate(rows))
+    return MassProperties(u[:, 0], u[:, 1:4], u[:, 4:].reshape(-1, 3, 3))
 
 
 def momentum_uncertainty(
     loaded: Any, point: np.ndarray, omega: np.ndarray, velocity: np.ndarray | None
-) -> dict[str, Any]:
+) -> StandardUncertainty:
     """The standard uncertainty of ``mass``, ``center_of_mass``, ``angular_momentum`` (about
     ``point``) and ``kinetic_energy`` at angular velocity ``omega``: turning about ``point``
     held fixed (``velocity`` None: h = I_point ω, E = ½ ωᵀ I_point ω), or with the centre of
@@ -667,9 +742,9 @@ def momentum_uncertainty(
         dH = dH + dM[:, None] * np.cross(r, velocity) + loaded.props.mass * np.cross(dC, velocity)
         dE = dE + 0.5 * dM * float(velocity @ velocity)
     u = found.uncertainty
-    return {
-        "mass": float(u[0]),
-        "center_of_mass": u[1:4].tolist(),
-        "angular_momentum": combined(dH.T, found.u).tolist(),
-        "kinetic_energy": float(combined(dE, found.u)),
-    }
+    return StandardUncertainty(
+        float(u[0]),
+        u[1:4].tolist(),
+        angular_momentum=combined(dH.T, found.u).tolist(),
+        kinetic_energy=float(combined(dE, found.u)),
+    )
