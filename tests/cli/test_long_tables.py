@@ -61,7 +61,7 @@ def test_a_long_table_too_wide_for_the_terminal_is_left_to_rich(monkeypatch):
     monkeypatch.setenv("COLUMNS", "30")
     monkeypatch.setattr(render, "LONG_TABLE_ROWS", 10)
     table = _links(40)
-    assert render._long_table_lines(table, render.stdout_console()) is None
+    assert render._long_table_lines(table, render.rich_console()) is None
 
 
 def test_the_audit_of_a_large_robot_prints_the_same_table_either_way(tmp_path, monkeypatch):

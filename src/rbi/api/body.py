@@ -590,7 +590,10 @@ class Body(Result):
         """
 
         if (alpha is None) == (force is None and torque is None):
-            raise ArgumentError(("alpha", "force"), "give either alpha (inverse) or force/torque (forward)")
+            raise ArgumentError(
+                (),
+                "dynamics: give either {alpha} (inverse: force and torque) or {force}/{torque} (forward: accelerations)",
+            )
         place = self._place(about)
         point = place.point
         props = self._loaded.props
@@ -656,7 +659,10 @@ class Body(Result):
         if to not in FORMATS:
             raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {literal(to)}")
         if diagonal and to != "mjcf":
-            raise ArgumentError("diagonal", "only for to='mjcf' (URDF and SDF take the full matrix)")
+            raise ArgumentError(
+                "diagonal",
+                "only for {to='mjcf'} (URDF and SDF take the full matrix about the centre of mass)",
+            )
         length, mass = self.units["length"], self.units["mass"]
         spec_units = "" if (length, mass) == ("m", "kg") else f"; spec units were {length}, {mass}"
         comment = (

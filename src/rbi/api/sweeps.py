@@ -78,6 +78,11 @@ class SweepTable(Result):
         self.spread: dict[str, dict[str, float]] | None = (
             spread_over(self.columns, self._rows, 1) if mass_properties else None
         )
+        if self.spread and not np.all(np.isfinite([list(stats.values()) for stats in self.spread.values()])):
+            # varied values of absurd size (normal(1, 1e308)) overflow the statistics
+            raise ArgumentError(
+                (), "result spread is not finite: the input values are too large for double precision"
+            )
         self.failed = sum(1 for row in self._rows if row[-1] != "ok")
         self.out = None if out is None else out.given
         self.cores: int | None = study.cores

@@ -240,7 +240,7 @@ def main() -> None:
 
 
 def _run() -> None:
-    # numpy's floating-point warnings: non-finite results are refused explicitly (render.emit_result)
+    # numpy's floating-point warnings: non-finite results are refused explicitly, by the API
     warnings.simplefilter("ignore", RuntimeWarning)
     args = sys.argv[1:]
     allow_outside = _take_flag(args, "--allow-outside-paths")

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import rbi
-from rbi import SpecError
 from rbi.cli.option_values import parse_about, vector_parser
 from rbi.cli.options import ABOUT, FORMAT, OutputFormat, SpecFile, command, option
 from rbi.cli.render import emit_result
@@ -70,12 +69,6 @@ def dynamics(file: SpecFile, *, omega, about, format: OutputFormat, **settings) 
       rbi dynamics cubesat.yaml --torque 0,0,1e-3 --format json
     """
 
-    inverse = settings["alpha"] is not None
-    forward = settings["force"] is not None or settings["torque"] is not None
-    if inverse == forward:
-        raise SpecError(
-            "dynamics: give either --alpha (inverse: force and torque) or --force/--torque (forward: accelerations)"
-        )
     # the API decides which apply: forward without --force about a point other than the CoM
     # holds the point (at --accel); otherwise --accel goes with --alpha only
     body = rbi.load(file)

@@ -21,18 +21,17 @@ from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from rbi.api import SpecError
+from rbi import SpecError
 from rbi.cli.option_values import error_line
 from rbi.cli.render import (
     Document,
     emit_result,
     fitted,
-    refuse_non_finite,
+    rich_console,
     say_warnings,
-    stdout_console,
     tables_of,
 )
-from rbi.cli.terminal import ReaderLeft, say, status_kept, terminal_safe
+from rbi.cli.terminal import say, status_kept, terminal_safe
 
 STDIN = "-"
 STDIN_LABEL = "<stdin>"
@@ -49,9 +48,6 @@ class FileReport:
     failed: bool = False
     table: Callable[[], Any] | None = None
 
-    def shown(self) -> Any:
-        return tables_of(self.result) if self.table is None else self.table()
-
 
 def file_label(file: str) -> str:
     """How a FILE argument is named in output and messages (``-`` is ``<stdin>``)."""
@@ -65,7 +61,7 @@ def report_each(files: Sequence[str], report: Callable[[str], FileReport], fmt: 
     if len(files) == 1:
         one = report(files[0])
         with status_kept(int(one.failed)):
-            emit_result(fmt, one.result, source=file_label(files[0]), table=one.table)
+            emit_result(fmt, one.result, table=one.table)
         return int(one.failed)
     return _Several(fmt).run(files, report)
 
@@ -81,22 +77,19 @@ class _Several:
     def run(self, files: Sequence[str], report: Callable[[str], FileReport]) -> int:
 
         status = 0  # the worst so far: 2 once a file was bad input, else 1 once a check failed
-        try:
-            for file in files:
-                try:
-                    one = report(file)
-                    data = one.result.to_dict()
-                    refuse_non_finite(data, file_label(file))
-                except SpecError as exc:
-                    status = 2
+        for file in files:
+            try:
+                one = report(file)
+                data = one.result.to_dict()
+            except SpecError as exc:
+                status = 2
+                with status_kept(status):  # the reader left: the run ends with the status known by then
                     sys.stdout.flush()  # what earlier files printed comes before this file's error line
-                    say(error_line(exc))
-                    continue
-                status = max(status, int(one.failed))
+                say(error_line(exc))
+                continue
+            status = max(status, int(one.failed))
+            with status_kept(status):
                 self.write(file_label(file), one, data)
-        except ReaderLeft as exc:  # the reader left: the run ends with the status known by then
-            exc.status = max(exc.status, status)
-            raise
         return status
 
     def write(self, label: str, one: FileReport, data: dict[str, Any]) -> None:
@@ -109,11 +102,11 @@ class _Several:
         elif self.fmt == "csv":
             self._csv_row({"file": label} | one.result.csv_summary())
         else:
-            console = stdout_console()
+            console = rich_console()
             if self.sections:
                 console.print()
             console.print(f"==> {terminal_safe(label)} <==", markup=False, highlight=False)
-            console.print(fitted(one.shown(), console))
+            console.print(fitted(tables_of(one.result) if one.table is None else one.table(), console))
             self.sections += 1
         sys.stdout.flush()
 

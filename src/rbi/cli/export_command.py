@@ -6,7 +6,6 @@ import sys
 from typing import Literal
 
 import rbi
-from rbi import SpecError
 from rbi.cli.options import FORMAT, REQUIRED, OutputFormat, SpecFile, command, option
 from rbi.cli.render import emit_result, say_warnings
 
@@ -42,10 +41,6 @@ def export(file: SpecFile, *, to, format: OutputFormat, **settings) -> None:
       rbi export robot_link.yaml --to mjcf --diagonal --document
     """
 
-    if settings["diagonal"] and to != "mjcf":
-        raise SpecError(
-            "--diagonal: only for --to mjcf (URDF and SDF take the full matrix about the centre of mass)"
-        )
     result = rbi.load(file).export(to, **settings)
     if format is OutputFormat.table:  # the element itself: no table
         say_warnings(result.warnings)

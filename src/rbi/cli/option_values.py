@@ -23,6 +23,7 @@ OPTION_NAMES = {
     "vary[]": "--vary {}",
     "path": "--out",
     "fix=True": "--fix",
+    "to='mjcf'": "--to mjcf",
 }
 """The API's parameters whose option is not ``--`` + the name with ``-`` for ``_``."""
 

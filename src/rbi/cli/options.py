@@ -78,16 +78,6 @@ FORMAT = option(
 FormatOption = FORMAT.annotation
 
 
-class DocumentFormat(str, Enum):
-    """The forms of a command that prints one JSON document (`rbi schema`): no CSV."""
-
-    table = "table"
-    json = "json"
-
-
-DocumentFormatOption = option(
-    DocumentFormat, "--format", "-f", help="table (indented JSON, for people) or json (on one line)."
-).annotation
 SpecFile = argument(str, "Body spec (YAML or JSON); - reads it from standard input.", "FILE")
 SpecFiles = argument(
     list[str],
@@ -103,7 +93,6 @@ PACKAGE_PATHS = option(
     help="Folder of ROS package NAME, for package://NAME/ mesh paths; repeat for several "
     "(ROS_PACKAGE_PATH is searched too).",
 )
-PackagePathOption = PACKAGE_PATHS.annotation
 ABOUT = option(
     str,
     "--about",

@@ -5,7 +5,6 @@ from __future__ import annotations
 
 import contextlib
 import json
-import math
 import os
 import sys
 import time
@@ -13,7 +12,6 @@ from collections.abc import Callable, Iterable, Iterator
 from typing import Any
 
 import rbi
-from rbi import SpecError
 from rbi.cli.terminal import say, terminal_safe
 
 
@@ -28,51 +26,29 @@ class Document(rbi.Result):
         return self.data
 
 
-def _color_system() -> str | None:
-    # rich's own NO_COLOR handling drops colours but keeps bold, dim and italic escapes;
-    # NO_COLOR users get plain text.
-    return None if os.environ.get("NO_COLOR") else "auto"
-
-
-def stdout_console():
-    return _console(highlight=False, soft_wrap=False, color_system=_color_system())
-
-
-def stderr_console():
-    return _console(stderr=True, highlight=False, color_system=_color_system())
-
-
-def _console(**options):
-    """A rich Console. It prints text as given: text from data is escaped once, where it
-    becomes rich text (:class:`rbi.cli.tables.SafeTable`'s cells and titles,
-    :func:`rbi.cli.tables.note`), before any layout."""
+def rich_console(stderr: bool = False):
+    """A rich Console on stdout (``stderr``: on stderr). It prints text as given: text from data
+    is escaped once, where it becomes rich text (:class:`rbi.cli.tables.SafeTable`'s cells and
+    titles, :func:`note`), before any layout."""
     from rich.console import Console  # rich only when something is drawn: JSON never loads it (~25 ms)
 
-    return Console(**options)
+    # rich's own NO_COLOR handling drops colours but keeps bold, dim and italic escapes;
+    # NO_COLOR users get plain text.
+    color_system = None if os.environ.get("NO_COLOR") else "auto"
+    return Console(stderr=stderr, highlight=False, color_system=color_system)
 
 
 def emit_result(
-    fmt: str,
-    result: Any,
-    source: str | None = None,
-    *,
-    table: Callable[[], Any] | None = None,
-    file: str | None = None,
+    fmt: str, result: Any, *, table: Callable[[], Any] | None = None, file: str | None = None
 ) -> None:
     """Write a result of the API (:class:`rbi.Result`) to stdout in the chosen format: its
     ``to_dict()`` as one JSON object (``file`` first when given), its CSV or its tables
-    (``table()`` when given, else its rows drawn as rbi's); ``source`` names the file in an
-    error (a non-finite number: JSON has no NaN)."""
+    (``table()`` when given, else its rows drawn as rbi's). A result holds finite numbers only:
+    the API refuses one that overflowed (JSON has no NaN)."""
     data = result.to_dict() if file is None else {"file": file, **result.to_dict()}
-    if fmt == "json":  # the encoder finds a NaN or inf as it writes (an audit's JSON has millions)
-        try:
-            text = json.dumps(data, allow_nan=False)
-        except ValueError:
-            refuse_non_finite(data, source)
-            raise
-        sys.stdout.write(text + "\n")
+    if fmt == "json":
+        sys.stdout.write(json.dumps(data, allow_nan=False) + "\n")
         return
-    refuse_non_finite(data, source)
     say_warnings(data.get("warnings", ()))
     if fmt == "csv":
         sys.stdout.write(result.to_csv())
@@ -105,33 +81,8 @@ def say_warnings(warnings: Iterable[str]) -> None:
 def print_table(renderable) -> None:
     """Print a table (or a group of them) on stdout fitted to the terminal's width: no number
     cut, split or shortened (see :func:`fitted`)."""
-    console = stdout_console()
+    console = rich_console()
     console.print(fitted(renderable, console))
-
-
-def refuse_non_finite(result: dict[str, Any], source: str | None = None) -> None:
-    """Inputs of absurd size (``--omega 1e200,0,0``) overflow to inf/NaN: refuse them as bad
-    input (exit 2, naming the file ``source`` when given) rather than print nulls."""
-    bad = [key for key, value in result.items() if _has_non_finite(value)]
-    if bad:
-        where = f"{source}: " if source else ""
-        raise SpecError(
-            f"{where}result {', '.join(bad)} is not finite: the input values are too large for double "
-            "precision"
-        )
-
-
-def _has_non_finite(value: Any) -> bool:
-    kind = type(value)
-    if kind is float:
-        return not math.isfinite(value)
-    if kind is list:
-        return any(map(_has_non_finite, value))
-    if isinstance(value, dict):
-        return any(_has_non_finite(v) for v in value.values())
-    if hasattr(value, "tolist"):  # a numpy array or scalar (numpy is not imported here)
-        return _has_non_finite(value.tolist())
-    return isinstance(value, float) and not math.isfinite(value)
 
 
 # --- progress (rich is imported when a bar is first drawn) -----------------------------------
@@ -152,12 +103,11 @@ class ProgressBar:
         what: str,
         unit: str | None = None,
         *,
-        total: float = 1.0,
         stdout: bool = False,
         delay: float = 0.0,
         elapsed: bool = False,
     ) -> None:
-        self.what, self.unit, self.total = what, unit, total
+        self.what, self.unit, self.total = what, unit, 1.0
         self.stdout, self.delay, self.elapsed = stdout, delay, elapsed
         self.start = time.perf_counter()
         self.bar = self.task = None
@@ -195,7 +145,7 @@ class ProgressBar:
             BarColumn(),
             *count,
             TimeElapsedColumn() if self.elapsed else TimeRemainingColumn(),
-            console=stdout_console() if self.stdout else stderr_console(),
+            console=rich_console(stderr=not self.stdout),
             transient=True,
         )
         self.task = self.bar.add_task(self.what, total=self.total)

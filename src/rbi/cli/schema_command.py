@@ -4,23 +4,26 @@ from __future__ import annotations
 
 import json
 import sys
+from typing import Literal
 
 import typer
 
 import rbi
-from rbi.cli.options import (
-    DocumentFormat,
-    DocumentFormatOption,
-    FormatOption,
-    OutputFormat,
-    PackagePathOption,
-    argument,
-)
+from rbi.cli.options import FORMAT, PACKAGE_PATHS, OutputFormat, argument, command, option
 from rbi.cli.render import emit_result
 from rbi.cli.terminal import say, status_kept, terminal_safe
 
 
-def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
+@command(
+    option(
+        Literal["table", "json"],
+        "--format",
+        "-f",
+        default="table",
+        help="table (indented JSON, for people) or json (on one line).",
+    )
+)
+def schema(*, format: str) -> None:
     """Print the JSON Schema of the YAML spec (for editors: see docs/schema.md).
 
     \b
@@ -30,10 +33,11 @@ def schema(format: DocumentFormatOption = DocumentFormat.table) -> None:
       # yaml-language-server: $schema=rbi-spec.schema.json
     """
 
-    indent = 2 if format is DocumentFormat.table else None
+    indent = 2 if format == "table" else None
     sys.stdout.write(json.dumps(rbi.spec_schema(), indent=indent, ensure_ascii=False) + "\n")
 
 
+@command(PACKAGE_PATHS, FORMAT)
 def validate(
     files: argument(
         list[str],
@@ -41,8 +45,9 @@ def validate(
         "(.urdf, .sdf, MJCF .xml, .xacro) to check.",
         "FILE...",
     ),
-    package_path: PackagePathOption = None,
-    format: FormatOption = OutputFormat.table,
+    *,
+    format: OutputFormat,
+    **settings,
 ) -> None:
     """Check spec files without computing anything: one line per problem; exit 2 if any file fails.
 
@@ -52,7 +57,7 @@ def validate(
       rbi validate top.yaml wheel.yaml --format json
     """
 
-    validation = rbi.validate(files, package_paths=package_path)
+    validation = rbi.validate(files, **settings)
     with status_kept(0 if validation.ok else 2):  # a reader that left does not make the files valid
         if format is not OutputFormat.table:
             emit_result(format.value, validation)

@@ -84,7 +84,7 @@ def simulate(file: SpecFile, *, format: OutputFormat, out: str | None, **setting
         sys.stdout.write(run.to_csv())
         return
     written = [] if out is None else [f"Trajectory written to {out}."]
-    emit_result(format.value, run, source=file, table=lambda: _table(run, run.notes() + written))
+    emit_result(format.value, run, table=lambda: _table(run, run.notes() + written))
 
 
 def _table(run, notes: list[str]):
