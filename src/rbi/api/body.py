@@ -523,11 +523,11 @@ class Body(Result):
         body._file_length = self._file_length
         return body
 
-    def from_spec_units(self, lengths: Sequence[float] | None) -> list[float] | None:
+    def from_spec_units(self, lengths: Point | None) -> Point | None:
         """A point or a velocity given in the spec file's length unit, in this body's (which
-        `in_units` may have changed); None stays None."""
-        if lengths is None:
-            return None
+        `in_units` may have changed); None and a point's name (``"pivot"``) stay as they are."""
+        if lengths is None or isinstance(lengths, str):
+            return lengths
         factor = LENGTH_UNITS[self._file_length] / LENGTH_UNITS[self._loaded.length_unit]
         return [factor * float(x) for x in lengths]
 

@@ -122,6 +122,4 @@ def _body_and_point(file: str, about: str, units: str | None, velocity=None):
     point = parse_about(about)
     if units is not None:
         body = body.in_units(*parse_units(units))
-        velocity = body.from_spec_units(velocity)
-        point = point if isinstance(point, str) else body.from_spec_units(point)
-    return body, point, velocity
+    return body, body.from_spec_units(point), body.from_spec_units(velocity)
