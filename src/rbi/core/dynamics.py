@@ -74,27 +74,6 @@ class Acceleration(NamedTuple):
     angular: np.ndarray
 
 
-def spatial_inertia_about_point(
-    mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray
-) -> np.ndarray:
-    """The 6×6 block matrix ``[[m E, −m[r]×], [m[r]×, I_o]]`` acting on ``[a_o; α]``.
-
-    ``inertia_point`` is the inertia about o; ``com_from_point`` is r_{c/o}.
-    """
-    S = skew(np.asarray(com_from_point, dtype=float))
-    return np.block([[mass * np.eye(3), -mass * S], [mass * S, np.asarray(inertia_point, dtype=float)]])
-
-
-def velocity_terms_about_point(
-    mass: float, inertia_point: np.ndarray, com_from_point: np.ndarray, omega: np.ndarray
-) -> np.ndarray:
-    """The velocity-dependent 6-vector ``[m ω × (ω × r_{c/o}); ω × I_o ω]``."""
-    w = np.asarray(omega, dtype=float)
-    r = np.asarray(com_from_point, dtype=float)
-    I = np.asarray(inertia_point, dtype=float)
-    return np.concatenate((mass * np.cross(w, np.cross(w, r)), np.cross(w, I @ w)))
-
-
 def newton_euler_about(
     props: MassProperties,
     inertia_point: np.ndarray,
@@ -119,8 +98,9 @@ def newton_euler_about(
     ``r = r_{c/o}``, solved for ``a_o`` and ``α`` when forward."""
     m, w, r = props.mass, omega, com_from_point
     acc = np.zeros(3) if point_acceleration is None else point_acceleration
-    block = spatial_inertia_about_point(m, inertia_point, r)
-    bias = velocity_terms_about_point(m, inertia_point, r, w)
+    S = skew(r)
+    block = np.block([[m * np.eye(3), -m * S], [m * S, inertia_point]])  # acting on [a_o; α]
+    bias = np.concatenate((m * np.cross(w, np.cross(w, r)), np.cross(w, inertia_point @ w)))  # velocity terms
     if alpha is not None:
         if about_com:  # F = m a_c, τ_c = I α + ω × I ω
             I = props.inertia_about_com

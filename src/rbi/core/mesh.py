@@ -104,6 +104,16 @@ class RepairedMesh(NamedTuple):
     added_area: float
 
 
+def joined(pieces: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+    """One mesh of (vertices, faces) pieces: each piece's faces renumbered past the vertices of
+    the pieces before it."""
+    if not pieces:
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    offsets = np.cumsum([0] + [len(points) for points, _ in pieces[:-1]])
+    faces = [triangles + offset for (_, triangles), offset in zip(pieces, offsets)]
+    return np.concatenate([points for points, _ in pieces]), np.concatenate(faces)
+
+
 WELD_RTOL = 1e-9
 """Vertices closer than about this fraction of the bounding box's diagonal are one vertex."""
 

@@ -25,6 +25,7 @@ import warnings
 
 import numpy as np
 
+from rbi.core.mesh import joined
 from rbi.core.rotation import axis_angle_matrix
 from rbi.errors import InputError
 from rbi.formats.robot_xml import read_xml
@@ -66,18 +67,8 @@ def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int | None
             raise ValueError(f"more than {limit:,} triangles")
         if len(triangles):
             placed.append((points @ transform[:3, :3].T + transform[:3, 3], triangles))
-    vertices, faces = _joined(placed)
+    vertices, faces = joined(placed)
     return vertices * meter, faces
-
-
-def _joined(pieces: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
-    """One mesh of (vertices, faces) pieces: each piece's faces renumbered past the vertices of
-    the pieces before it."""
-    if not pieces:
-        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
-    offsets = np.cumsum([0] + [len(points) for points, _ in pieces[:-1]])
-    faces = [triangles + offset for (_, triangles), offset in zip(pieces, offsets)]
-    return np.concatenate([points for points, _ in pieces]), np.concatenate(faces)
 
 
 def _unit(root) -> float:
@@ -237,7 +228,7 @@ def _geometry(ids, geometry, limit: int) -> tuple[np.ndarray, np.ndarray]:
             triangles.append(indices)
         if triangles:
             pieces.append((positions, np.concatenate(triangles)))
-    return _joined(pieces)
+    return joined(pieces)
 
 
 def _positions(ids, mesh, primitive) -> tuple[np.ndarray, int, int]:

@@ -51,7 +51,6 @@ import sys
 from collections import OrderedDict
 from collections.abc import Callable
 from pathlib import Path
-from types import SimpleNamespace
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -285,17 +284,17 @@ def _read_here(path: Path, eps: float) -> StepFile:
 def _triangles_here(
     path: Path, indices: list[int], deflection: float, angle: float
 ) -> tuple[np.ndarray, np.ndarray]:
+    from rbi.core.mesh import joined  # in the child only: scipy
+
     ocp, instances, unit_metres = _instances(path)
-    parts_v, parts_f, offset = [], [], 0
-    for i in indices:
-        _, _, solid, location = instances[i]
-        for points, triangles in _tessellate(ocp, solid.Moved(location), deflection, angle):
-            parts_v.append(points * unit_metres)
-            parts_f.append(triangles + offset)
-            offset += len(points)
-    vertices = np.concatenate(parts_v) if parts_v else np.zeros((0, 3))
-    faces = np.concatenate(parts_f) if parts_f else np.zeros((0, 3), dtype=np.int64)
-    return vertices.reshape(-1, 3), faces.astype(np.int64).reshape(-1, 3)
+    vertices, faces = joined(
+        [
+            (points.reshape(-1, 3) * unit_metres, triangles.reshape(-1, 3))
+            for _, _, solid, location in (instances[i] for i in indices)
+            for points, triangles in _tessellate(ocp, solid.Moved(location), deflection, angle)
+        ]
+    )
+    return vertices, faces.astype(np.int64)
 
 
 def _instances(path: Path):
@@ -326,29 +325,19 @@ def _check_text(path: Path) -> None:
         raise ValueError("not a STEP file (ISO 10303-21 text starts with 'ISO-10303-21;')")
 
 
-_OCP_NAMES = {
-    "OCP.OCP.collections": ("*",),
-    "OCP.BRep": ("BRep_Tool",),
-    "OCP.BRepMesh": ("BRepMesh_IncrementalMesh",),
-    "OCP.BRepTools": ("BRepTools",),
-    "OCP.IMeshTools": ("IMeshTools_MeshAlgoType_Delabella", "IMeshTools_Parameters"),
-    "OCP.BRepGProp": ("BRepGProp",),
-    "OCP.GProp": ("GProp_GProps",),
-    "OCP.IFSelect": ("IFSelect_RetDone",),
-    "OCP.STEPCAFControl": ("STEPCAFControl_Reader",),
-    "OCP.TCollection": ("TCollection_AsciiString", "TCollection_ExtendedString"),
-    "OCP.BRepAdaptor": ("BRepAdaptor_Surface",),
-    "OCP.GeomAbs": ("GeomAbs_Plane", "GeomAbs_Cylinder", "GeomAbs_Cone", "GeomAbs_Sphere", "GeomAbs_Torus"),
-    "OCP.TDataStd": ("TDataStd_Name",),
-    "OCP.TDF": ("TDF_Label", "TDF_Tool"),
-    "OCP.TDocStd": ("TDocStd_Document",),
-    "OCP.TopAbs": ("TopAbs_EDGE", "TopAbs_FACE", "TopAbs_REVERSED", "TopAbs_SHELL", "TopAbs_SOLID"),
-    "OCP.TopExp": ("TopExp", "TopExp_Explorer"),
-    "OCP.TopLoc": ("TopLoc_Location",),
-    "OCP.TopoDS": ("TopoDS",),
-    "OCP.XCAFDoc": ("XCAFDoc_DocumentTool", "XCAFDoc_ShapeTool"),
-}
-"""What the reader uses of OpenCascade, by module (``*``: the module itself, as ``collections``)."""
+class _OpenCascade:
+    """OpenCascade's names the reader uses, each imported when first used from its package: the
+    part of the name before its first ``_`` (``BRep_Tool`` from ``OCP.BRep``, ``TopoDS`` from
+    ``OCP.TopoDS``), as OpenCascade names its classes; ``collections`` is OCP's module of
+    collection types."""
+
+    def __getattr__(self, name: str) -> Any:
+        if name == "collections":
+            value = importlib.import_module("OCP.OCP.collections")
+        else:
+            value = getattr(importlib.import_module("OCP." + name.split("_", 1)[0]), name)
+        setattr(self, name, value)
+        return value
 
 
 def require_cad() -> None:
@@ -360,7 +349,7 @@ def require_cad() -> None:
         raise CadExtraMissing(f"reading STEP files needs OpenCascade: {CAD_EXTRA_HINT}")
 
 
-def _ocp() -> SimpleNamespace:
+def _ocp() -> _OpenCascade:
     """OpenCascade's names the reader uses, with its console messages switched off; raises
     :class:`CadExtraMissing` when the extra ``cad`` is not installed."""
 
@@ -369,18 +358,10 @@ def _ocp() -> SimpleNamespace:
         from OCP.Message import Message
     except ImportError:
         raise CadExtraMissing(f"reading STEP files needs OpenCascade: {CAD_EXTRA_HINT}") from None
-    names: dict[str, Any] = {}
-    for module_name, wanted in _OCP_NAMES.items():
-        module = importlib.import_module(module_name)
-        for name in wanted:
-            if name == "*":
-                names[module_name.rsplit(".", 1)[-1]] = module
-            else:
-                names[name] = getattr(module, name)
     messenger = Message.DefaultMessenger_s()
     for printer in list(messenger.Printers()):
         messenger.RemovePrinter(printer)
-    return SimpleNamespace(**names)
+    return _OpenCascade()
 
 
 def _transfer(ocp, path: Path, unit_metres: float):
