@@ -175,10 +175,7 @@ def _node_transform(node) -> np.ndarray:
     for child in node.children:
         step = None
         if child.tag == "matrix":
-            values = _numbers(child)
-            if values.size != 16:
-                raise ValueError("<matrix>: needs 16 numbers")
-            step = values.reshape(4, 4)
+            step = _vector(child, 16).reshape(4, 4)
         elif child.tag == "translate":
             step = np.eye(4)
             step[:3, 3] = _vector(child, 3)
@@ -213,10 +210,8 @@ PRIMITIVES = ("triangles", "polylist", "polygons", "trifans", "tristrips")
 def _geometry(ids, geometry, limit: int) -> tuple[np.ndarray, np.ndarray]:
     """(positions, triangles indexing them) of one ``<geometry>``'s mesh."""
     mesh = geometry.child("mesh")
-    if mesh is None:
-        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)  # a spline or brep: no mesh
     pieces = []
-    for primitive in mesh.children:
+    for primitive in mesh.children if mesh is not None else []:  # a spline or brep: no mesh
         if primitive.tag not in PRIMITIVES:
             continue
         positions, column, stride = _positions(ids, mesh, primitive)

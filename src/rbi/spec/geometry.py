@@ -65,19 +65,18 @@ def part_geometry(body) -> list[dict[str, Any]]:
         shape = part.shape if part is not None else "point_cloud"
         pattern = getattr(part, "pattern", None)
         count = 1 if pattern is None else int(pattern.count)
+        assembly = isinstance(part, models.AssemblyPart)
         if part is None:
             items = [_cloud_points(spec, body.path)]
-        elif isinstance(part, models.AssemblyPart):
-            items = (
-                _assembly(part, body.length_unit)
-                if part_count(part._loaded, MAX_DRAWN_COPIES) * count <= MAX_DRAWN_COPIES
-                else [None]
-            )
+        elif count * (part_count(part._loaded, MAX_DRAWN_COPIES) if assembly else 1) > MAX_DRAWN_COPIES:
+            items = [None]  # too many copies to draw (a sub-assembly's parts counted)
+        elif assembly:
+            items = _assembly(part, body.length_unit)
         else:
-            items = [_primitive(part, body.path, body.length_unit) if count <= MAX_DRAWN_COPIES else None]
+            items = [_primitive(part, body.path, body.length_unit)]
         copies = (
             [_stand_in(element)]
-            if None in items or len(items) * count > MAX_DRAWN_COPIES
+            if None in items
             else [
                 moved(item, R, t) | {"copy": k}
                 for k, (R, t) in enumerate(copy_motions(pattern))
@@ -171,10 +170,8 @@ def _vector(v) -> list[float]:
 def _primitive(part, spec_path: str, length_unit: str = "m") -> dict[str, Any] | None:
     """The drawable primitive of one written part (before its pattern), or None for a shape
     without one (drawn as its stand-in box)."""
-    if isinstance(part, models.MeshPart):
-        return _mesh(part, spec_path)
-    if isinstance(part, models.StepPart):
-        return _step(part, spec_path, length_unit)
+    if isinstance(part, (models.MeshPart, models.StepPart)):
+        return _file_mesh(part, spec_path, length_unit)
     draw = PRIMITIVES.get(type(part))
     return None if draw is None else draw(part)
 
@@ -205,7 +202,7 @@ PRIMITIVES: dict[type, Callable[[Any], dict[str, Any]]] = {
     models.RodPart: _rod,
     models.SpherePart: lambda p: _ellipsoid(p.center, [p.radius] * 3, None),
     models.SphericalShellPart: lambda p: _ellipsoid(p.center, [p.outer_radius] * 3, None),
-    models.EllipsoidPart: lambda p: _ellipsoid(p.center, p.semi_axes, rotation_matrix(p.rotation)),
+    models.EllipsoidPart: lambda p: _ellipsoid(p.center, p.semi_axes, p.rotation),
     models.BoxPart: lambda p: _fields("box", p, center="vector", size="vector", rotation="rotation"),
     models.PointPart: lambda p: _fields("point", p, position="vector"),
     models.TorusPart: lambda p: _fields(
@@ -222,21 +219,29 @@ def _unit(v) -> list[float]:
     return unit_vector(v).tolist()
 
 
-def _mesh(part, spec_path: str) -> dict[str, Any] | None:
-    """The mesh's triangles placed in the body as the mass properties place them: ``scale``,
-    then ``rotation`` about the mesh origin, then the origin to ``position``."""
-    from rbi.formats.mesh_file import read_mesh_solid  # heavy: scipy (rbi.core.mesh), for meshes only
-
-    solid = read_mesh_solid(
-        spec_relative_file(spec_path, part.file, f"file: {part.file}"), part.inertia, part.repair
-    )  # cached: read once; convex: the hull is drawn
-    return _placed_mesh(part, np.asarray(solid.vertices, dtype=float) * float(part.scale), solid.faces)
+STEP_DEFLECTION = 0.01
+"""How far the drawn facets of a STEP solid may stray from its surface, relative to the size of
+each edge (the picture only: the mass properties use the exact geometry)."""
 
 
-def _placed_mesh(part, vertices: np.ndarray, faces) -> dict[str, Any] | None:
-    """A file's triangles (``vertices`` in its own axes, spec length unit) placed as the mass
-    properties place them: turned by ``part.rotation`` about the file's origin, that origin
-    moved to ``part.position``; None for more than :data:`MAX_DRAWN_TRIANGLES` of them."""
+def _file_mesh(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
+    """The triangles of a mesh part (scaled by ``scale``) or of a STEP part's solids (BRepMesh,
+    for the picture only; the file's unit to the spec's), placed in the body as the mass
+    properties place them: turned by ``rotation`` about the file's origin, that origin moved to
+    ``position``; None for more than :data:`MAX_DRAWN_TRIANGLES` of them."""
+    path = spec_relative_file(spec_path, part.file, f"file: {part.file}")
+    if isinstance(part, models.MeshPart):
+        from rbi.formats.mesh_file import read_mesh_solid  # heavy: scipy (rbi.core.mesh), for meshes only
+
+        # cached: read once; convex: the hull is drawn
+        solid = read_mesh_solid(path, part.inertia, part.repair)
+        vertices, faces = np.asarray(solid.vertices, dtype=float) * float(part.scale), solid.faces
+    else:
+        from rbi.formats.step import read_step, select_solids, step_triangles  # heavy: 10 ms, for STEP only
+
+        chosen = select_solids(read_step(path), part.solid)  # cached: read once for the mass properties
+        vertices, faces = step_triangles(path, chosen, STEP_DEFLECTION)
+        vertices = vertices / LENGTH_UNITS_IN_M[length_unit]
     if len(faces) > MAX_DRAWN_TRIANGLES:
         return None
     R = rotation_matrix(part.rotation)
@@ -246,32 +251,15 @@ def _placed_mesh(part, vertices: np.ndarray, faces) -> dict[str, Any] | None:
     return {"kind": "mesh", "vertices": vertices.tolist(), "faces": np.asarray(faces, dtype=int).tolist()}
 
 
-STEP_DEFLECTION = 0.01
-"""How far the drawn facets of a STEP solid may stray from its surface, relative to the size of
-each edge (the picture only: the mass properties use the exact geometry)."""
-
-
-def _step(part, spec_path: str, length_unit: str) -> dict[str, Any] | None:
-    """The STEP solids' triangles (BRepMesh, for the picture only) placed as the mass
-    properties place them: the file's unit to the spec's, ``rotation`` about the file's
-    origin, then the origin to ``position``."""
-    from rbi.formats.step import read_step, select_solids, step_triangles  # heavy: 10 ms, for STEP only
-
-    path = spec_relative_file(spec_path, part.file, f"file: {part.file}")
-    chosen = select_solids(read_step(path), part.solid)  # cached: read once for the mass properties
-    vertices, faces = step_triangles(path, chosen, STEP_DEFLECTION)
-    return _placed_mesh(part, vertices / LENGTH_UNITS_IN_M[length_unit], faces)
-
-
 def _frustum(start, end, start_radius, end_radius, inner_radius=0.0) -> dict[str, Any]:
     radii = {"start_radius": start_radius, "end_radius": end_radius, "inner_radius": inner_radius}
     ends = {"kind": "frustum", "start": _vector(start), "end": _vector(end)}
     return ends | {key: float(radius) for key, radius in radii.items()}
 
 
-def _ellipsoid(center, semi_axes, R) -> dict[str, Any]:
-    rotation = (np.eye(3) if R is None else R).tolist()
-    return dict(kind="ellipsoid", center=_vector(center), semi_axes=_vector(semi_axes), rotation=rotation)
+def _ellipsoid(center, semi_axes, rotation) -> dict[str, Any]:
+    axes = {"center": _vector(center), "semi_axes": _vector(semi_axes), "rotation": _matrix(rotation)}
+    return {"kind": "ellipsoid"} | axes
 
 
 def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
