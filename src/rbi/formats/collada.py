@@ -42,7 +42,7 @@ MAX_INPUT_OFFSET = 64
 """Largest ``offset`` of a primitive's ``<input>`` (a corner has one index per input)."""
 
 
-def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int | None = None):
+def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int = np.iinfo(np.int64).max):
     """(vertices (N, 3), faces (F, 3)) of every triangle the document's scene places, in
     metres (``<unit meter>`` applied), not welded. ``ValueError`` for a malformed document."""
 
@@ -56,15 +56,14 @@ def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int | None
     meter = _unit(root)
     geometries: dict[str, tuple[np.ndarray, np.ndarray]] = {}
     placed: list[tuple[np.ndarray, np.ndarray]] = []
-    limit = max_triangles if max_triangles is not None else np.iinfo(np.int64).max
     total = 0
     for geometry_id, transform in _instances(root, ids):
         if geometry_id not in geometries:
-            geometries[geometry_id] = _geometry(ids, ids[geometry_id], limit)
+            geometries[geometry_id] = _geometry(ids, ids[geometry_id], max_triangles)
         points, triangles = geometries[geometry_id]
         total += len(triangles)
-        if total > limit:
-            raise ValueError(f"more than {limit:,} triangles")
+        if total > max_triangles:
+            raise ValueError(f"more than {max_triangles:,} triangles")
         if len(triangles):
             placed.append((points @ transform[:3, :3].T + transform[:3, 3], triangles))
     vertices, faces = joined(placed)
