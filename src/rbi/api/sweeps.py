@@ -61,6 +61,8 @@ class SweepTable(Result):
             None on a Dask cluster).
     """
 
+    json_keys = ("name", "units", "warnings", "count", "columns")
+
     def __init__(
         self, study: Any, rows: Sequence[Sequence[Any]] | None, body: Body, out: OutputTarget | None = None
     ) -> None:
@@ -149,10 +151,7 @@ class SweepTable(Result):
         columns and, when the rows are held, the runs as objects and how many failed; the
         ``out`` file; a study of mass properties adds each quantity's ``spread``; the map's
         file (``plot``) once drawn."""
-        result: dict[str, Any] = dict(
-            name=self.name, units=self.units, warnings=self.warnings, count=self.count
-        )
-        result["columns"] = self.columns
+        result = self.json_fields()
         if self.held:
             result |= {"runs": self.records(), "failed": self.failed}
         given = {"out": self.out, "spread": self.spread, "plot": self._drawn}
@@ -257,7 +256,9 @@ def sweep(
     settings = SweepSettings.of(locals() | {"vary": _variations(vary)})
     check_settings(settings)
     study, body, (out_target, plot_target) = _study(body, settings, out, plot, resume)
-    table = SweepTable(study, _rows(study, out_target, resume, progress), body, out_target)
+    with contextlib.nullcontext() if out_target is None else as_parameter("out"):  # its messages say out
+        rows = study.run(out_target, resume, progress)
+    table = SweepTable(study, rows, body, out_target)
     if plot_target is not None:
         table.plot(plot_target)
     return table
@@ -282,12 +283,6 @@ def _study(
             "from the {out} file",
         )
     return study, body, targets
-
-
-def _rows(study: Study, out: OutputTarget | None, resume: bool, progress: Any) -> list[list[Any]] | None:
-    """The study's rows (:meth:`Study.run`); the rows file's messages name it ``out``."""
-    with contextlib.nullcontext() if out is None else as_parameter("out"):
-        return study.run(out, resume, progress)
 
 
 def _targets(

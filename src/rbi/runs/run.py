@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field, fields, replace
-from typing import Any
+from typing import Any, Self
 
 import numpy as np
 
@@ -145,7 +145,7 @@ class RunSettings:
     error_estimate: bool = True
 
     @classmethod
-    def of(cls, values: dict[str, Any]) -> RunSettings:
+    def of(cls, values: dict[str, Any]) -> Self:
         """The settings among ``values`` (a function's keywords by name: ``locals()``)."""
         return cls(**{f.name: values[f.name] for f in fields(cls) if f.name in values})
 

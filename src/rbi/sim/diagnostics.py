@@ -145,18 +145,12 @@ def conserved_quantities(scene: Scene, q: np.ndarray, omega: np.ndarray) -> dict
     }
     if scene.pivoted:
         h_vertical = np.einsum("ni,ni->n", up_in_body(q), h_body)
-        out["h_vertical"] = _drift(h_vertical, h_size, "angular_momentum")
+        out["h_vertical"] = _drift(h_vertical, h_size)
         axis = symmetry_axis(scene)
         if axis is not None:
-            out["h_spin"] = _drift(h_body @ axis, h_size, "angular_momentum")
+            out["h_spin"] = _drift(h_body @ axis, h_size)
     else:
-        h_world = angular_momentum_world(scene, q, omega)
-        drift = float(np.max(vector_length(h_world - h_world[0])))
-        out["h_world"] = {
-            "initial": h_world[0],
-            "drift": _relative(drift, h_size),
-            "unit": "angular_momentum",
-        }
+        out["h_world"] = _drift(angular_momentum_world(scene, q, omega), h_size)
     return out
 
 
@@ -173,11 +167,15 @@ def energy_drifts(scene: Scene, q: np.ndarray, omega: np.ndarray) -> tuple[np.nd
     return total[:, 0], [_relative(float(c), float(s)) for c, s in zip(change, size)]
 
 
-def _drift(values: np.ndarray, size: float, unit: str) -> dict[str, Any]:
+def _drift(values: np.ndarray, size: float) -> dict[str, Any]:
+    """The entry of an angular momentum along the samples, (N,) or (N, 3): its first value and
+    its largest change from it (a vector's: in length) relative to ``size``."""
+    change = values - values[0]
+    largest = np.max(np.abs(change) if values.ndim == 1 else vector_length(change))
     return {
-        "initial": float(values[0]),
-        "drift": _relative(float(np.max(np.abs(values - values[0]))), size),
-        "unit": unit,
+        "initial": float(values[0]) if values.ndim == 1 else values[0],
+        "drift": _relative(float(largest), size),
+        "unit": "angular_momentum",
     }
 
 

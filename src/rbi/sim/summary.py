@@ -30,6 +30,10 @@ ESTIMATE_FIGURES = (
 )
 """The numbers of an :func:`error_estimate` after its ``reference`` (None where no tighter run exists)."""
 
+COST_FIELDS = tuple("method integrator rtol steps rejected_steps rhs_evals wall_seconds load_seconds".split())
+"""The fields of a :class:`~rbi.sim.api.Trajectory` its summary reports as they are: how it was
+integrated and what that cost."""
+
 REFERENCE_RTOL_FACTOR = 1e-3
 REFERENCE_RTOL_FLOOR = 1e-15
 """The tightest tolerance the compiled integrator accepts; a run already at it has no
@@ -138,14 +142,7 @@ def summarize(scene: Scene, trajectory: Trajectory, q0, omega0) -> dict[str, Any
     return {
         "spin_axis": np.array(scene.spin_axis, dtype=float),
         "final": {"t": float(t[-1]), "q": q[-1], "omega": omega[-1], "tilt_deg": figures["final_tilt_deg"]},
-        "method": trajectory.method,
-        "integrator": trajectory.integrator,
-        "rtol": trajectory.rtol,
-        "steps": trajectory.steps,
-        "rejected_steps": trajectory.rejected_steps,
-        "rhs_evals": trajectory.rhs_evals,
-        "wall_seconds": trajectory.wall_seconds,
-        "load_seconds": trajectory.load_seconds,
+        **{name: getattr(trajectory, name) for name in COST_FIELDS},
         "tilt_min_deg": figures["min_tilt_deg"],
         "tilt_max_deg": figures["max_tilt_deg"],
         "mean_precession_rate_deg_s": rate_deg,

@@ -406,29 +406,23 @@ _BAD = object()
 
 
 def _cell(name: str, cell: Any, text: bool) -> Any:
-    """A cell read back, typed as the sweep wrote it, or _BAD."""
-    if name in TEXT_COLUMNS:
-        if text:
-            if cell == "":
-                return None
-            read = csv_text_read(cell)
-            return _BAD if read is None else read
-        return cell if isinstance(cell, str) or cell is None else _BAD
-    if text:
-        if cell == "":
-            return None
-        if name in INT_COLUMNS:
-            return int(cell) if cell.isascii() and cell.isdigit() and str(int(cell)) == cell else _BAD
-        try:
-            value = float(cell)
-        except ValueError:
-            return _BAD
-        return value if math.isfinite(value) and repr(value) == cell else _BAD
-    if cell is None:
+    """A cell read back (``text``: a CSV cell, else a Parquet value), typed as the sweep wrote
+    it, or _BAD."""
+    if cell is None or (text and cell == ""):
         return None
+    if name in TEXT_COLUMNS:
+        read = csv_text_read(cell) if text else cell if isinstance(cell, str) else None
+        return _BAD if read is None else read
+    if not text:
+        kind = int if name in INT_COLUMNS else float
+        return cell if type(cell) is kind and (cell >= 0 if kind is int else math.isfinite(cell)) else _BAD
     if name in INT_COLUMNS:
-        return cell if type(cell) is int and cell >= 0 else _BAD
-    return cell if type(cell) is float and math.isfinite(cell) else _BAD
+        return int(cell) if cell.isascii() and cell.isdigit() and str(int(cell)) == cell else _BAD
+    try:
+        value = float(cell)
+    except ValueError:
+        return _BAD
+    return value if math.isfinite(value) and repr(value) == cell else _BAD
 
 
 def _line(handle, what: str, number: int) -> bytes:
@@ -469,5 +463,5 @@ def _arrow_schema(columns: list[str]):
     # pyarrow: optional (the 'parquet' extra), imported only when used
     import pyarrow as pa
 
-    types = {"run": pa.int64(), "steps": pa.int64(), "status": pa.string()}
+    types = dict.fromkeys(INT_COLUMNS, pa.int64()) | dict.fromkeys(TEXT_COLUMNS, pa.string())
     return pa.schema([(name, types.get(name, pa.float64())) for name in columns])

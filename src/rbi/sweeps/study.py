@@ -15,7 +15,7 @@ import hashlib
 import json
 import numbers
 import os
-from collections.abc import Callable, Mapping, Sequence
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Any
 
@@ -25,7 +25,7 @@ from rbi.core.inertia import principal_axes
 from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.files import safe
-from rbi.runs.run import body_spin_axis, check_run_settings, check_tilt, spin_axis_value
+from rbi.runs.run import RunSettings, body_spin_axis, check_run_settings, check_tilt, spin_axis_value
 from rbi.sim.api import check_samples
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
@@ -62,31 +62,21 @@ MASS_CHUNK = 256
 
 
 @dataclass(frozen=True)
-class SweepSettings:
+class SweepSettings(RunSettings):
     """The settings of a sweep, in numbers: :func:`rbi.sweep`'s parameters of the same names,
-    with their units and defaults (``vary`` as ``(PATH, VALUES)`` pairs)."""
+    with their units and defaults (``vary`` as ``(PATH, VALUES)`` pairs). Those of each run
+    are a :class:`~rbi.runs.run.RunSettings`' (a sweep does not take ``omega``, ``method`` or
+    ``error_estimate``), ``spin``, ``tilt_deg`` and ``rtol`` defaulting as a sweep's."""
 
     spin: Any = 0.0
     tilt_deg: Any = 0.0
+    rtol: float = 1e-12
     vary: tuple[tuple[str, Any], ...] = ()
     runs: int = 1
     seed: int = 0
-    duration: float = 4.0
-    samples: int = 481
-    rtol: float = 1e-12
-    gravity: float | None = None
-    tilt_axis: str = "y"
-    max_steps: int | None = None
     workers: int | None = None
     dask: str | None = None
     mass_properties: bool = False
-    check_budget: bool = True
-    spin_axis: str | Sequence[float] | None = None
-
-    @classmethod
-    def of(cls, given: Mapping[str, Any]) -> SweepSettings:
-        """The settings among ``given``, a caller's arguments by name (its other ones left)."""
-        return cls(**{name: given[name] for name in cls.__dataclass_fields__})
 
 
 def check_settings(settings: SweepSettings) -> None:
