@@ -38,6 +38,7 @@ class Rows:
         left: how many leading columns are text, aligned left (the others hold numbers, right).
         kind: ``"quantities"`` (quantity, unit, value rows: stacked as ``quantity [unit]
             value`` where too wide), ``"matrix"`` (row labels then numbers) or ``"table"``.
+        text_last: the last column is text too (an audit's flags), aligned left.
     """
 
     title: str
@@ -46,6 +47,7 @@ class Rows:
     total: tuple[str, ...] | None = None
     left: int = 1
     kind: str = "table"
+    text_last: bool = False
 
     @classmethod
     def quantities(cls, title: str, cells: Iterable[tuple[str, str, str]]) -> Rows:
@@ -74,7 +76,7 @@ class Rows:
         table = Table(title=text(self.title), **style)
         parts = self.kind == "parts"  # its numbers never wrap, its names fold
         for i, name in enumerate(self.columns):
-            left = i < self.left or (self.kind == "check" and not name)
+            left = self._left(i) or (self.kind == "check" and not name)
             table.add_column(
                 Text("\n").join(map(text, name.split("\n"))),  # a label over its unit
                 justify="left" if left else "right",
@@ -89,9 +91,13 @@ class Rows:
             table.add_row(*map(cell_text, self.total))
         return table
 
+    def _left(self, i: int) -> bool:
+        """Whether column ``i`` holds text, aligned left (the others hold numbers)."""
+        return i < self.left or (self.text_last and i == len(self.columns) - 1)
+
     def html(self) -> str:
         """The same table as HTML (every cell escaped; ``total`` in the table's foot)."""
-        align = ["" if i < self.left else ' style="text-align:right"' for i in range(len(self.columns))]
+        align = ["" if self._left(i) else ' style="text-align:right"' for i in range(len(self.columns))]
         head = "".join(f"<th>{escape(name)}</th>" for name in self.columns)
         body = "".join(f"<tr>{_html_cells(align, row)}</tr>" for row in self.cells)
         foot = "" if self.total is None else f"<tfoot><tr>{_html_cells(align, self.total)}</tr></tfoot>"

@@ -106,52 +106,32 @@ def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool)
 
 
 def _table(report) -> None:
-    from rbi.cli.tables import titled  # heavy: rich (not for --format json)
+    from rbi.cli.tables import drawn  # heavy: rich (not for --format json)
 
-    tables = report.rows()
-    links, total = tables[0], tables[1].cells
-    table = titled(links.title)
-    table.add_column(links.columns[0], overflow="fold")
-    for heading in links.columns[1:-1]:
-        table.add_column(heading, justify="right", no_wrap=True)
-    table.add_column(links.columns[-1], overflow="fold")
-    for cells in links.cells:
-        table.add_row(*cells)
-    print_table(table)
+    links, total, *joints = report.rows()
+    print_table(drawn([links]))
     for each in report.links:
         for flag in each.flags:
             print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))
     # three short lines, not one of up to ~100 characters that a terminal of 80 would break
     # inside a number; the moments are a list, shown without the vector's brackets
-    print(terminal_safe(f"{tables[1].title}: mass {total[0][2]} kg"))
-    print(f"  centre of mass [m]: {total[1][2]}")
-    print(f"  principal moments about it [kg·m²]: {total[2][2]}")
+    print(terminal_safe(f"{total.title}: mass {total.cells[0][2]} kg"))
+    print(f"  centre of mass [m]: {total.cells[1][2]}")
+    print(f"  principal moments about it [kg·m²]: {total.cells[2][2]}")
     word = report.model.link_word
     if report.left_out:
-        print(terminal_safe(f"  left out: the moments of mass-0 {word}(s) (unphysical): {total[3][2]}"))
-    if report.joints:
-        _joints_table(tables[-1], report.joints)
+        print(terminal_safe(f"  left out: the moments of mass-0 {word}(s) (unphysical): {total.cells[3][2]}"))
+    if joints:
+        print_table(drawn(joints))
+        for joint in report.joints:
+            for flag in joint.flags:
+                print(terminal_safe(f"{flag['level']}: joint {joint.name}: {flag['code']}: {flag['message']}"))
     for note in report.notes:
         say(f"note: {note}")
     errors = sum(each.has_error for each in report.links)
     warnings = sum(any(f.level == "warning" for f in each.flags) for each in report.links)
     say(f"{errors} {word}(s) with errors (flag!), {warnings} with warnings")
     sys.stdout.flush()
-
-
-def _joints_table(joints, found) -> None:
-    """Each joint's holding torque against gravity, its declared effort limit and the margin."""
-    from rbi.cli.tables import titled  # heavy: rich (not for --format json)
-
-    table = titled(joints.title)
-    for heading in joints.columns:
-        table.add_column(heading, justify="left" if heading in ("joint", "type", "flags") else "right")
-    for cells in joints.cells:
-        table.add_row(*cells)
-    print_table(table)
-    for each in found:
-        for flag in each.flags:
-            print(terminal_safe(f"{flag['level']}: joint {each.name}: {flag['code']}: {flag['message']}"))
 
 
 def _fix_text(report, file: str, out: str | None) -> None:

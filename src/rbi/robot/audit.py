@@ -191,6 +191,8 @@ class AuditReport(Result):
             "geometry's, as a multiple of it)",
             (word, "mass kg", "ρ kg/m³", "ratio", "CoM off ÷ size", "flags"),
             cells,
+            kind="parts",  # names and flags fold, numbers never wrap
+            text_last=True,
         )
         total = self.total
         quantities = [
@@ -208,6 +210,7 @@ class AuditReport(Result):
                     ("joint", "type", "torque", "limit", "margin", "flags"),
                     _joint_cells(self.joints),
                     left=2,
+                    text_last=True,
                 )
             )
         return tables
