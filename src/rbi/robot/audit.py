@@ -353,7 +353,7 @@ def audit_model(model: RobotModel, settings: AuditSettings | None = None, **opti
 
 def _left_out(model: RobotModel, columns: LinkColumns) -> list[str]:
     """The names of the links of mass 0 that declare moments (the total counts no moment without
-    a mass: :func:`rbi.robot.tree.heavy_links`); an unnamed one as ``body[i]``."""
+    a mass: :attr:`rbi.robot.tree.Placement.heavy`); an unnamed one as ``body[i]``."""
     rows = (
         columns.declared
         & (columns.inertials.mass == 0.0)

@@ -15,17 +15,13 @@ from rbi.robot.tree import placement
 def robot_spec(model: RobotModel, joints: dict[str, float] | None = None) -> tuple[dict[str, Any], list[str]]:
     """(spec, names of the links left out because they have no mass)."""
 
-    at = placement(model, joints)  # in the frame of the totals
-    parts, left_out, used = [], [], set()
-    for link in model.links:
-        inertial = link.inertial
-        name = link.name or f"{model.link_word}{link.index}"
-        if inertial is None or inertial.mass == 0.0:
-            left_out.append(name)
-            continue
-        row = link.index
-        placed = inertial.properties.transformed(at.placed_rotations[row], at.placed_translations[row])
-        unique = name if name not in used else f"{name}_{link.index}"
+    rows, placed = placement(model, joints).heavy  # in the frame of the totals
+    names = [link.name or f"{model.link_word}{link.index}" for link in model.links]
+    parts, used = [], set()
+    for row, each in zip(rows, placed):
+        unique = names[row] if names[row] not in used else f"{names[row]}_{row}"
         used.add(unique)
-        parts.append(custom_part(unique, inertial.mass, placed.center_of_mass, placed.inertia_about_com))
+        parts.append(custom_part(unique, each.mass, each.center_of_mass, each.inertia_about_com))
+    kept = set(rows)
+    left_out = [name for row, name in enumerate(names) if row not in kept]
     return {"name": model.name or "robot", "units": {"length": "m", "mass": "kg"}, "parts": parts}, left_out

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbi.formats.robot import RobotModel
-from rbi.robot.tree import dot_rows, heavy_links, stack_apply
+from rbi.robot.tree import dot_rows
 from rbi.spec.units import STANDARD_GRAVITY_SI
 
 
@@ -95,11 +95,10 @@ def _subtree_sums(model: RobotModel, placed) -> tuple[np.ndarray, np.ndarray]:
     n = len(placed.placed_translations)
     mass = np.zeros(n + 1)  # row n: every root's parent, added to and dropped
     first = np.zeros((n + 1, 3))
-    chosen, masses, coms, _ = heavy_links(placed)
+    chosen, heavy = placed.heavy
     if chosen:
-        at = stack_apply(placed.placed_rotations[chosen], coms) + placed.placed_translations[chosen]
-        first[chosen] = masses[:, None] * at
-        mass[chosen] = masses
+        first[chosen] = heavy.mass[:, None] * heavy.center_of_mass
+        mass[chosen] = heavy.mass
     for rows, parents in reversed(placed.levels):
         rows, parents = rows[::-1], parents[::-1]
         np.add.at(mass, parents, mass[rows])

@@ -12,13 +12,14 @@ joint at its ``ref``), so with no values given every link is where the file draw
 from __future__ import annotations
 
 import difflib
+import functools
 import math
 from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 
 import numpy as np
 
-from rbi.core.mass import MassProperties, combine
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import angle_is_kept, axis_angle_matrix, turn_lost_to_rounding
 from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.formats.robot import LinkColumns, Pose, RobotModel
@@ -81,6 +82,16 @@ class Placement:
     :func:`~rbi.formats.robot.depth_first`'s order, with their parents' rows (a root's: n)."""
     columns: LinkColumns
     """The model's links as arrays (:meth:`RobotModel.link_columns`)."""
+
+    @functools.cached_property
+    def heavy(self) -> tuple[list[int], MassProperties]:
+        """The links with a declared mass other than 0: their rows, and their mass properties
+        in :attr:`frame` (made once: the totals and the joint torques both ask)."""
+        inertials = self.columns.inertials
+        rows = np.flatnonzero(self.columns.declared & (inertials.mass != 0.0)).tolist()
+        R, t = self.placed_rotations[rows], self.placed_translations[rows]
+        with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported by totals
+            return rows, inertials[rows].transformed(R, t, self.frame)
 
 
 def stack_apply(rotations: np.ndarray, vectors: np.ndarray) -> np.ndarray:
@@ -230,41 +241,18 @@ def totals(
     (``"world"``). Links without mass add nothing; with no mass left, the zero value. ``at``:
     the links already placed at ``joints`` (:func:`placement`)."""
     placed = placement(model, joints) if at is None else at
-    frame = placed.frame
-    rows, masses, own_coms, own_inertias = heavy_links(placed)
+    rows, heavy = placed.heavy
     try:
-        if not rows:
-            raise ValueError("no link with mass")
         with np.errstate(over="ignore", invalid="ignore"):  # an overflow is reported just below
-            coms = stack_apply(placed.placed_rotations[rows], own_coms) + placed.placed_translations[rows]
-            inertias = _placed_inertias(placed, rows, own_inertias)
-            total = combine(masses, coms, inertias, frame)
+            total = heavy.sum()
     except ValueError:  # no link with mass, or negative masses (flagged unphysical) that leave none
-        return MassProperties.zero(frame)
+        return MassProperties.zero(placed.frame)
     if not (np.all(np.isfinite(total.center_of_mass)) and np.all(np.isfinite(total.inertia_about_com))):
-        far = float(np.max(np.abs(coms)))
-        moment = float(np.max(np.abs(own_inertias)))
+        far = float(np.max(np.abs(heavy.center_of_mass)))
+        moment = float(np.max(np.abs(placed.columns.inertials.inertia_about_com[rows])))
         raise InputError(
             f"{model.path}: the whole robot's mass properties overflow a double (centres of mass "
             f"up to {far:.3g} m from the root, moments up to {moment:.3g} kg·m²); give lengths in "
             "metres and moments in kg·m²"
         )
     return total
-
-
-def heavy_links(placed: Placement) -> tuple[list[int], np.ndarray, np.ndarray, np.ndarray]:
-    """The links with a declared mass other than 0: their rows in ``placed``, masses (kg),
-    centres of mass (m) and inertias about them (kg·m²) in their own frames."""
-    columns = placed.columns
-    inertials = columns.inertials
-    rows = np.flatnonzero(columns.declared & (inertials.mass != 0.0)).tolist()
-    return rows, inertials.mass[rows], inertials.center_of_mass[rows], inertials.inertia_about_com[rows]
-
-
-def _placed_inertias(placed: Placement, rows: list[int], inertias: np.ndarray) -> np.ndarray:
-    """The inertias (kg·m², about their centres of mass, in their links' axes) of the links of
-    ``rows`` in ``placed.frame``'s axes: ``R I Rᵀ`` made symmetric, as
-    :meth:`MassProperties.transformed` gives it."""
-    R = placed.placed_rotations[rows]
-    turned = np.matmul(np.matmul(R, inertias), np.swapaxes(R, 1, 2))
-    return 0.5 * (turned + np.swapaxes(turned, 1, 2))
