@@ -111,8 +111,7 @@ def _table(report) -> None:
     links, total, *joints = report.rows()
     print_table(drawn([links]))
     for each in report.links:
-        for flag in each.flags:
-            print(terminal_safe(f"{flag.level}: {each.link.label}: {flag.code}: {flag.message}"))
+        _say_flags(each.link.label, each.flags)
     # three short lines, not one of up to ~100 characters that a terminal of 80 would break
     # inside a number; the moments are a list, shown without the vector's brackets
     print(terminal_safe(f"{total.title}: mass {total.cells[0][2]} kg"))
@@ -124,14 +123,19 @@ def _table(report) -> None:
     if joints:
         print_table(drawn(joints))
         for joint in report.joints:
-            for flag in joint.flags:
-                print(terminal_safe(f"{flag['level']}: joint {joint.name}: {flag['code']}: {flag['message']}"))
+            _say_flags(f"joint {joint.name}", joint.flags)
     for note in report.notes:
         say(f"note: {note}")
     errors = sum(each.has_error for each in report.links)
     warnings = sum(any(f.level == "warning" for f in each.flags) for each in report.links)
     say(f"{errors} {word}(s) with errors (flag!), {warnings} with warnings")
     sys.stdout.flush()
+
+
+def _say_flags(where: str, flags) -> None:
+    """Each flag of a link or a joint, one line: level, where, code, what is wrong."""
+    for flag in flags:
+        print(terminal_safe(f"{flag.level}: {where}: {flag.code}: {flag.message}"))
 
 
 def _fix_text(report, file: str, out: str | None) -> None:

@@ -271,7 +271,7 @@ def _joint_cells(joints: list) -> list[tuple[str, ...]]:
             number(0.0 if abs(torque) < 1e-12 * largest else torque, 6),
             "-" if each.effort_limit is None else number(each.effort_limit, 6),
             "-" if each.margin is None else number(each.margin, 6),
-            " ".join(flag["code"] for flag in each.flags) or "ok",
+            " ".join(flag.code for flag in each.flags) or "ok",
         )
         for each, torque in zip(joints, torques)
     ]
@@ -280,7 +280,7 @@ def _joint_cells(joints: list) -> list[tuple[str, ...]]:
 def _joint_dicts(joints: list) -> list[dict[str, Any]]:
     """Each joint's JSON object: its :class:`~rbi.robot.statics.JointTorque` fields in order
     (name, type, torque, effort_limit, flags), JSON-ready (no -0.0)."""
-    return [plain(vars(each)) for each in joints]
+    return [plain(vars(each) | {"flags": [flag.as_dict() for flag in each.flags]}) for each in joints]
 
 
 def _csv_row(each: LinkAudit) -> dict[str, Any]:

@@ -120,10 +120,14 @@ def _maybe_placeholder(written: np.ndarray) -> np.ndarray:
     diagonal = np.diagonal(written, axis1=1, axis2=2)
     no_products = np.all(written[:, OFF_DIAGONAL] == 0, axis=1)
     equal = np.all(diagonal == diagonal[:, :1], axis=1)
+    return no_products & (equal | np.all(_round(diagonal, 1e-6), axis=1))
+
+
+def _round(values: np.ndarray, tolerance: float) -> np.ndarray:
+    """Whether each of ``values`` is 0 or a power of ten (within ``tolerance`` in log10)."""
     with np.errstate(divide="ignore", invalid="ignore"):
-        exponent = np.log10(np.abs(diagonal))
-        round_ = (diagonal == 0) | (np.abs(exponent - np.round(exponent)) < 1e-6)
-    return no_products & (equal | np.all(round_, axis=1))
+        exponent = np.log10(np.abs(values))
+        return (values == 0) | (np.abs(exponent - np.round(exponent)) < tolerance)
 
 
 def link_flags(model: RobotModel, each: Any, carries_mass: bool, moments, inside) -> list[Flag]:
@@ -238,13 +242,6 @@ def worst_ratio(ratios) -> float | None:
     return max(extreme, key=lambda r: abs(np.log(r)) if r > 0 else np.inf)
 
 
-def _round(value: float) -> bool:
-    if value == 0:
-        return True
-    exponent = np.log10(abs(value))
-    return abs(exponent - round(exponent)) < 1e-12
-
-
 def _placeholder(model: RobotModel, link: Link) -> str | None:
     """Words for a placeholder-looking inertia, or None."""
     inertial = link.inertial
@@ -256,7 +253,7 @@ def _placeholder(model: RobotModel, link: Link) -> str | None:
         return None
     if np.all(diagonal == diagonal[0]) and diagonal[0] > 0:
         return f"three equal moments ({diagonal[0]:.6g} kg·m²) with no products, as exporters write a placeholder"
-    if all(_round(v) for v in diagonal):
+    if np.all(_round(diagonal, 1e-12)):
         return (
             f"moments of round values ({', '.join(f'{v:g}' for v in diagonal)} kg·m²) with no products, as "
             "exporters write a placeholder"

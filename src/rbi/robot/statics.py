@@ -19,6 +19,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from rbi.formats.robot import RobotModel
+from rbi.robot.flags import Flag
 from rbi.robot.tree import dot_rows
 from rbi.spec.units import STANDARD_GRAVITY_SI
 
@@ -32,7 +33,7 @@ class JointTorque:
     type: str
     torque: float
     effort_limit: float | None
-    flags: list = field(default_factory=list)
+    flags: list[Flag] = field(default_factory=list)
 
     @property
     def margin(self) -> float | None:
@@ -66,16 +67,12 @@ def joint_torques(model: RobotModel, placed) -> list[JointTorque]:
     return found
 
 
-def _effort_flag(kind: str, torque: float, limit: float) -> dict[str, str]:
+def _effort_flag(kind: str, torque: float, limit: float) -> Flag:
     """The warning for a joint whose holding torque exceeds its declared effort limit (a
     negative :attr:`JointTorque.margin`)."""
     unit = "N·m" if kind == "revolute" else "N"
-    return {
-        "code": "effort",
-        "level": "warning",
-        "message": f"holding the pose takes {abs(torque):.4g} {unit}, more than the "
-        f"declared effort limit {limit:.4g} {unit}",
-    }
+    text = f"holding the pose takes {abs(torque):.4g} {unit}, more than the declared effort limit"
+    return Flag("effort", "warning", f"{text} {limit:.4g} {unit}")
 
 
 def _gravity(model: RobotModel) -> np.ndarray:
