@@ -92,17 +92,14 @@ def audit(file: RobotFile, *, format: OutputFormat, **settings) -> None:
     report = rbi.audit(file, **settings)
     code = report.exit_code
     with status_kept(code):  # a reader that left does not clear a flagged link
-        _render(report, format, file, settings["out"] if settings["fix"] else None, settings["fix"])
+        if format is not OutputFormat.table:
+            emit_result(format.value, report, file=report.model.path)
+        else:
+            _table(report)
+            if report.fix is not None:
+                _fix_text(report.fix, file)
     if code:
         raise typer.Exit(code)
-
-
-def _render(report, format: OutputFormat, file: str, out: str | None, fix: bool) -> None:
-    if format is not OutputFormat.table:
-        return emit_result(format.value, report, file=report.model.path)
-    _table(report)
-    if fix:
-        _fix_text(report, file, out)
 
 
 def _table(report) -> None:
@@ -138,14 +135,13 @@ def _say_flags(where: str, flags) -> None:
         print(terminal_safe(f"{flag.level}: {where}: {flag.code}: {flag.message}"))
 
 
-def _fix_text(report, file: str, out: str | None) -> None:
-    plan = report.fix
-    if out is None:
-        diff = plan.diff(file)
-
-        sys.stdout.write(terminal_safe(diff, keep="\n") if diff else "")
+def _fix_text(plan, file: str) -> None:
+    """The fix planned (``report.fix``): the changes as a diff (a dry run), or where the fixed
+    copy was written; then each link that could not be fixed."""
+    if plan.out is None:
+        sys.stdout.write(terminal_safe(plan.diff(file), keep="\n"))
         print(f"--fix: {len(plan.changes)} inertial(s) would change (dry run; --out FILE writes the copy)")
     else:
-        print(f"--fix: {len(plan.changes)} inertial(s) replaced; wrote {terminal_safe(out)}")
+        print(f"--fix: {len(plan.changes)} inertial(s) replaced; wrote {terminal_safe(plan.out)}")
     for label, why in plan.unfixable:
         print(terminal_safe(f"--fix: {label}: not fixed: {why}"))
