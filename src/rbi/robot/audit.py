@@ -441,10 +441,27 @@ class AuditedLinks:
         self.mass[rows], self.implied[rows], self.inertia[rows] = mass[heavy], implied[heavy], scaled[heavy]
 
     def _measure_one(self, row: int, settings: AuditSettings, notes: list[str]) -> None:
-        """Row ``row``'s geometry measured one piece at a time (:func:`_pieces`), and a ``mesh``
-        flag for each mesh ``auto`` could not integrate exactly."""
-        model, fallbacks = self.model, []
-        source, pieces, parts = _pieces(model, self.columns.link(row), settings, notes, fallbacks)
+        """Row ``row``'s geometry measured one piece at a time as :func:`distribution` measures
+        it, from its ``settings.geometry`` elements, or the other kind's when it has none of
+        those: the pieces with a volume, MJCF geoms at their own mass or density, the others at
+        density 1, summed; and a ``mesh`` flag for each mesh ``auto`` could not integrate
+        exactly."""
+        model, columns, fallbacks = self.model, self.columns, []
+        other = "visual" if settings.geometry == "collision" else "collision"
+        source = settings.geometry if columns.geoms_of(row, settings.geometry) else other
+        where = f"{model.path}: {columns.link(row).label}: "
+        pieces, parts = [], []
+        for geom in columns.geoms_of(row, source):
+            found = distribution(geom, settings.mesh_inertia, where, settings.mesh_repair, notes, fallbacks)
+            if found is None or not found.measure > 0:
+                continue
+            pieces.append(found)
+            if model.format == "mjcf":  # each geom at its own mass
+                parts.append(
+                    found.unit.with_mass(geom.mass if geom.mass is not None else geom.density * found.measure)
+                )
+            else:  # at density 1
+                parts.append(found.unit)
         if fallbacks:
             self.flags[row] = [
                 Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks
@@ -453,7 +470,7 @@ class AuditedLinks:
             unit = MassProperties.sum(parts)
         except ValueError:  # no pieces, or no mass in the geometry
             return
-        declared = self.columns.inertials.mass[row] if self.columns.declared[row] else 0.0
+        declared = columns.inertials.mass[row] if columns.declared[row] else 0.0
         mass = None
         if declared > 0:
             mass = declared
@@ -634,37 +651,9 @@ def _carried(columns: LinkColumns) -> list[bool]:
     return below[: len(parents)]
 
 
-def _pieces(
-    model: RobotModel, link: Link, settings: AuditSettings, notes: list[str], fallbacks: list
-) -> tuple[str, list, list[MassProperties]]:
-    """The link's geometry as :func:`distribution` measures it, piece by piece: (its source,
-    the pieces with a volume, their mass properties: MJCF geoms at their own mass or density,
-    the others at density 1), from its ``settings.geometry`` elements, or the other kind's when
-    it has none of those. ``fallbacks`` collects the meshes ``auto`` could not integrate
-    exactly."""
-    geometry = settings.geometry
-    other = "visual" if geometry == "collision" else "collision"
-    first, second = (
-        (link.collisions, link.visuals) if geometry == "collision" else (link.visuals, link.collisions)
-    )
-    where = f"{model.path}: {link.label}: "
-    pieces, parts = [], []
-    for geom in first or second:
-        found = distribution(geom, settings.mesh_inertia, where, settings.mesh_repair, notes, fallbacks)
-        if found is None or not found.measure > 0:
-            continue
-        pieces.append(found)
-        if model.format == "mjcf":  # each geom at its own mass
-            mass = geom.mass if geom.mass is not None else geom.density * found.measure
-            parts.append(found.unit.with_mass(mass))
-        else:  # at density 1
-            parts.append(found.unit)
-    return geometry if first else other, pieces, parts
-
-
 def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> tuple | None:
     """The links of a URDF or SDF model (None: none, or MJCF) whose geometry (``geometry``
-    elements, or the other kind's when it has none of those, as :func:`_pieces` chooses) is one
+    elements, or the other kind's when it has none of those, as :meth:`AuditedLinks._measure_one` chooses) is one
     solid primitive, what :meth:`AuditedLinks._measure_in_bulk` measures: their rows, each
     one's volume, principal moments at density 1 (k, 3) and half extents (k, 3) in its own axes
     (:func:`primitive`, :func:`half_extent`; NaN where they refuse its size), its pose in the
