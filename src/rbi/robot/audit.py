@@ -38,10 +38,11 @@ from rbi.reprs import Result, Rows, json_ready, plain
 from rbi.robot.flags import (
     SOLID_DENSITY_RANGE,
     Flag,
+    certainly_physical,
     comparison,
     link_flags,
+    maybe_placeholder,
     ratio_text,
-    screens,
     worst_ratio,
 )
 from rbi.robot.statics import joint_torques
@@ -525,11 +526,8 @@ class AuditedLinks:
         moving = np.zeros(n, dtype=bool)  # links a joint moves
         kinds = zip(columns.joint_rows, columns.joint_kinds)
         moving[[row for row, kind in kinds if kind != "fixed" and columns.parents[row] != n]] = True
-        declared = np.flatnonzero(columns.declared).tolist()
-        physical, maybe = screens(
-            n, declared, columns.inertials.inertia_about_com[declared], columns.written[declared]
-        )
-        clear = heavy & physical & ~maybe & (~self.compared | self.clean)
+        physical = certainly_physical(columns.inertials.inertia_about_com)  # (zero where none is declared)
+        clear = heavy & physical & ~maybe_placeholder(columns.written) & (~self.compared | self.clean)
         clear |= ~columns.declared & ~moving
         carried = _carried(columns)
         for row in np.flatnonzero(~clear).tolist():

@@ -3,7 +3,8 @@
 (:data:`ERROR_RATIO`, :data:`WARNING_RATIO`, :data:`SOLID_DENSITY_RANGE`, :data:`COM_MARGIN`) and
 wording, and the comparisons on stacks that decide them: the declared mass properties against the
 geometry's (:func:`comparison`) and the screens that clear a link without asking it more
-(:func:`screens`). :func:`link_flags` words one link's flags from its row of the audit."""
+(:func:`certainly_physical`, :func:`maybe_placeholder`). :func:`link_flags` words one link's
+flags from its row of the audit."""
 
 from __future__ import annotations
 
@@ -65,18 +66,6 @@ def ratio_text(ratio: float | None) -> str:
     return f">{sys.float_info.max:.2g}" if math.isinf(ratio) else f"{ratio:.3g}"
 
 
-def screens(n: int, declared: list[int], inertias: np.ndarray, written: np.ndarray) -> tuple:
-    """(physical, maybe_placeholder), (n,) each, for n links of which the ``declared`` rows
-    declare ``inertias`` (about the centre of mass, link axes) as ``written`` (k, 3, 3):
-    :func:`_certainly_physical` and :func:`_maybe_placeholder` (False and True for the others)."""
-    physical = np.zeros(n, dtype=bool)
-    maybe_placeholder = np.ones(n, dtype=bool)
-    if declared:
-        physical[declared] = _certainly_physical(inertias)
-        maybe_placeholder[declared] = _maybe_placeholder(written)
-    return physical, maybe_placeholder
-
-
 def comparison(moments, axes, inertia, com, low, high, geometry_com) -> tuple:
     """The declared mass properties against the geometry's for k links on stacks (one link:
     k = 1, :func:`_geometry_flags`): each link's geometry's principal ``moments`` (k, 3) and
@@ -100,7 +89,7 @@ def comparison(moments, axes, inertia, com, low, high, geometry_com) -> tuple:
     return ratios, offsets, inside, near
 
 
-def _certainly_physical(stack: np.ndarray) -> np.ndarray:
+def certainly_physical(stack: np.ndarray) -> np.ndarray:
     """Each inertia of the (N, 3, 3) stack that certainly passes :func:`declared_inertia_problem`:
     entries below 1e300 (no sum of them overflows), exactly symmetric, principal moments not
     negative and meeting the triangle inequality with no tolerance at all (the function forgives
@@ -113,7 +102,7 @@ def _certainly_physical(stack: np.ndarray) -> np.ndarray:
     return ok
 
 
-def _maybe_placeholder(written: np.ndarray) -> np.ndarray:
+def maybe_placeholder(written: np.ndarray) -> np.ndarray:
     """Each written inertia of the (N, 3, 3) stack :func:`_placeholder` might call a placeholder:
     no products, and three equal moments or moments within 1e-6 (in log10) of round values (the
     test itself allows 1e-12)."""
