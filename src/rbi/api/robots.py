@@ -80,8 +80,10 @@ def audit(
     target = None if out is None else checked_output(out, _fixed_format(path), path, "out")
     allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
     report = run_audit(path, AuditSettings(allow_outside_paths=allowed, **chosen))
-    if target is not None:
-        _write_fixed(target, report)
+    if target is not None:  # never a file the robot reads: an include, a mesh or the robot file itself
+        check_out_not_read(target.path, report.model)
+        write_output(target, report.fix.content)
+        report.fix.out = target.given
     return report
 
 
@@ -90,14 +92,6 @@ def _fixed_format(path: str) -> tuple[str]:
     rewritten: its fixed copy is the expanded robot, a .urdf)."""
     extension = os.path.splitext(path)[1].lower().lstrip(".") or "xml"
     return ("urdf",) if extension == "xacro" else (extension,)
-
-
-def _write_fixed(target: Any, report: AuditReport) -> None:
-    """The fixed copy written at ``target`` (never a file the robot reads: an include, a mesh
-    or the robot file itself), and the report's fix told where."""
-    check_out_not_read(target.path, report.model)
-    write_output(target, report.fix.content)
-    report.fix.out = target.given
 
 
 @dataclass(frozen=True)

@@ -177,15 +177,10 @@ def distribution(
                 f"{where}{geom.label}: {geom.mesh_file.name}: --mesh-repair closed holes with {added[0]} "
                 f"triangle(s), {added[1]:.4g} m² in all"
             )
-        return Distribution(unit.transformed(R, p, "link"), *_turned_bounds(R, p, low, high), mode == "shell")
+        centre, half = (low + high) / 2, (high - low) / 2  # the mesh's bounds, turned and moved
+        middle, extent = R @ centre + p, np.abs(R) @ half
+        return Distribution(unit.transformed(R, p, "link"), middle - extent, middle + extent, mode == "shell")
     return None
-
-
-def _turned_bounds(R, p, low, high):
-    centre, half = (low + high) / 2, (high - low) / 2
-    extent = np.abs(R) @ half
-    middle = R @ centre + p
-    return middle - extent, middle + extent
 
 
 _MESHES: OrderedDict[tuple, tuple] = OrderedDict()
