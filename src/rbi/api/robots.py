@@ -125,7 +125,8 @@ class RobotImport(Result):
     """A robot file read as ``rbi import`` reads it: ``path``; ``format`` (``"urdf"``, ``"sdf"``,
     ``"mjcf"``); ``name`` (the model's); ``link_word`` (``"link"``, or ``"body"`` for MJCF);
     ``links``, the `ImportedLink` s asked for; ``skipped``, ``(label, reason)`` of each link
-    without mass properties; ``robot_yaml()``, the whole robot as one spec."""
+    without mass properties; ``robot_yaml()``, the whole robot as one spec; ``yaml()``, what
+    ``rbi import`` prints."""
 
     path: str
     format: str
@@ -137,6 +138,11 @@ class RobotImport(Result):
     """The file as rbi reads it (its links, with their geometry)."""
     written: dict[int, str] = field(default_factory=dict)
     """Where each link's spec was written (link index → the path as given), when it was."""
+
+    def yaml(self) -> str:
+        """What ``rbi import`` prints: the one link's spec, or with several the whole robot's
+        (:meth:`robot_yaml`)."""
+        return self.robot_yaml() if len(self.links) > 1 else self.links[0].yaml
 
     def robot_yaml(self) -> str:
         """The whole robot as one spec (YAML text under a comment header): one custom part per

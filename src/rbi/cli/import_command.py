@@ -69,42 +69,25 @@ def import_robot(file: ImportFile, *, format: OutputFormat, **settings) -> None:
       rbi import bracket.step --material aluminium
     """
     imported = rbi.import_robot(file, **settings)
-    if isinstance(imported, rbi.RobotImport):
-        _robot_output(imported, file, settings["links"], format)
-    else:
-        _step_output(imported, file, settings["out"], format)
-
-
-def _robot_output(robot, file: str, link, format: OutputFormat) -> None:
-    """`rbi import ROBOT_FILE`: notes and warnings on stderr; the spec printed (one link's, or
-    the whole robot's), the files written, or the listing."""
-    if not link:
-        for label, reason in robot.skipped:
+    out = settings["out"]
+    if isinstance(imported, rbi.RobotImport):  # notes and warnings on stderr
+        for label, reason in [] if settings["links"] else imported.skipped:
             say(f"note: {file}: {label}: skipped: {reason}")
-    for each in robot.links:
-        for line in each.problems:
+        for line in (line for each in imported.links for line in each.problems):
             say(f"warning: {line}")
+    else:  # a STEP file's spec written where it names the STEP file outside its folder: a note
+        named = {str(part.get("file", "")) for part in imported.spec.get("parts", [])}
+        outside = sorted(n for n in named if os.path.isabs(n) or n.split("/")[0] == "..")
+        if out is not None and outside:
+            say(
+                f"note: {terminal_safe(str(out))} names {terminal_safe(outside[0])}, outside its folder: "
+                "read it back with --allow-outside-paths, or save the spec beside the STEP file"
+            )
     if format is not OutputFormat.table:
         # every text cell is escaped by the CSV cell rule (rbi.text.csv_cell): CSV often reaches a terminal
-        emit_result(format.value, robot, file=robot.path)
-    elif robot.written:
-        for path in robot.written.values():
-            print(terminal_safe(str(path)))
-    else:
-        sys.stdout.write(robot.robot_yaml() if len(robot.links) > 1 else robot.links[0].yaml)
-
-
-def _step_output(imported, file: str, out: str | None, format: OutputFormat) -> None:
-    """`rbi import FILE.step`: the spec printed (or written, with a note when it names the STEP
-    file outside its folder), or with --format json/csv the solids and their mass properties."""
-    named = {str(part.get("file", "")) for part in imported.spec.get("parts", [])}
-    outside = sorted(n for n in named if os.path.isabs(n) or n.split("/")[0] == "..")
-    if out is not None and outside:
-        say(
-            f"note: {terminal_safe(str(out))} names {terminal_safe(outside[0])}, outside its folder: "
-            "read it back with --allow-outside-paths, or save the spec beside the STEP file"
-        )
-    if format is not OutputFormat.table:
         emit_result(format.value, imported, file=file)
-    elif out is None:
+    elif out is None:  # the spec printed (a robot's: one link's, or the whole robot's)
         sys.stdout.write(imported.yaml())
+    elif isinstance(imported, rbi.RobotImport):  # the files written
+        for path in imported.written.values():
+            print(terminal_safe(str(path)))
