@@ -360,8 +360,7 @@ def _left_out(model: RobotModel, columns: LinkColumns) -> list[str]:
         & (columns.inertials.mass == 0.0)
         & np.any(columns.inertials.inertia_about_com != 0.0, axis=(1, 2))
     )
-    names = columns.names
-    word = model.link_word
+    names, word = columns.names, model.link_word
     return [f"{word}[{row}]" if names[row] is None else names[row] for row in np.flatnonzero(rows).tolist()]
 
 

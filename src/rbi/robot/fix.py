@@ -80,7 +80,6 @@ def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
     document = report.model.document
     plan = FixPlan()
     text = document.text
-    edits: list[Change] = []
     for each in report.links:
         codes = {flag.code for flag in each.flags if flag.level == "error"}
         if not codes & set(FIXED_CODES):
@@ -96,14 +95,12 @@ def plan_fix(report: AuditReport, density: float | None = None) -> FixPlan:
         if change is None:
             plan.unfixable.append((each.link.label, "its element cannot be edited in place"))
             continue
-        edits.append(change)
+        plan.changes.append(change)
     pieces, at = [], 0
-    for change in sorted(edits, key=lambda c: c.start):
-        pieces.append(text[at : change.start])
-        pieces.append(change.new_text.encode("utf-8"))
+    for change in sorted(plan.changes, key=lambda c: c.start):
+        pieces += [text[at : change.start], change.new_text.encode("utf-8")]
         at = change.end
     pieces.append(text[at:])
-    plan.changes = edits
     plan.original = document.original_bytes(text)
     plan.content = document.original_bytes(b"".join(pieces))
     return plan
