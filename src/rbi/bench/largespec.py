@@ -56,10 +56,9 @@ def load_steps(path: str) -> tuple[dict, Any, Any]:
     """rbi's load of the spec at ``path`` step by step, the garbage collector paused as rbi's
     loader pauses it: the seconds of each step (``read``: the bounded YAML reader, ``validate``,
     ``translate``), the parsed YAML and the body."""
-    # lazy: importing this module must load nothing a baseline would pay for
-    from rbi.memory import collector_paused
-    from rbi.spec.load import read_yaml, validation_messages
-    from rbi.spec.translate import body_from_spec
+    from rbi.memory import collector_paused  # lazy: a baseline importing this module pays for no rbi
+    from rbi.spec.load import read_yaml, validation_messages  # lazy: pydantic, as above
+    from rbi.spec.translate import body_from_spec  # lazy: the translator, as above
 
     start = time.perf_counter()
     with collector_paused():

@@ -295,8 +295,7 @@ def mujoco_mesh_distribution(vertices: np.ndarray, faces: np.ndarray, mode: str)
     where MuJoCo's compiler refuses: no area, no volume or a negative volume. (MuJoCo also
     refuses, in ``exact``, a mesh two of whose triangles run along an edge the same way; that
     depends on how its decoder welds each file format's vertices, and is not checked here.)"""
-    # heavy: scipy, for a link with a mesh only
-    from rbi.core.mesh import SIZED_VOLUME_MOMENTS, MeshDistribution
+    from rbi.core.mesh import SIZED_VOLUME_MOMENTS, MeshDistribution  # heavy: scipy (links with meshes)
 
     V = np.asarray(vertices, dtype=float)
     D, E, F = V[faces[:, 0]], V[faces[:, 1]], V[faces[:, 2]]
