@@ -96,7 +96,6 @@ def part_geometry(body) -> list[dict[str, Any]]:
 
 
 POINT_KEYS = ("start", "end", "center", "position")
-DIRECTION_KEYS = ("axis",)
 LENGTH_KEYS = ("start_radius", "end_radius", "inner_radius", "radius", "major_radius", "minor_radius")
 SIZE_KEYS = ("size", "semi_axes")
 
@@ -111,7 +110,7 @@ def moved(item: dict[str, Any], R: np.ndarray, t: np.ndarray, scale: float = 1.0
     for key in POINT_KEYS:
         if key in out:
             out[key] = (R @ (scale * np.asarray(out[key], dtype=float)) + t).tolist()
-    for key in (*DIRECTION_KEYS, "rotation"):  # directions and the part's axes turn, never move
+    for key in ("axis", "rotation"):  # directions and the part's axes turn, never move
         if key in out:
             out[key] = (R @ np.asarray(out[key], dtype=float)).tolist()
     for key in ("vertices", "positions"):
