@@ -53,8 +53,6 @@ NOT_NUMBERS = frozenset({"name", "shape", "file", "sequence", "repair", "solid",
 """Fields of a part that are not measured numbers: a ± there is refused."""
 KINDS = {"standard": "normal", "tolerance": "uniform"}
 """The top-level ``uncertainty:`` values and the distribution each gives a ±."""
-FIELDS = ("mass", "center_of_mass", "inertia_about_com")
-"""A part's or body's mass properties, as :class:`rbi.MassProperties` names them."""
 NO_PLUS_MINUS = "the spec writes no number with ± (VALUE ± U): every uncertainty is zero"
 """The budget's warning for a spec without ± (its every u is zero, which is not an answer)."""
 
@@ -308,9 +306,10 @@ def part_stack(
     part, spec, n = loaded.spec.parts[index], loaded.spec, len(values)
     sign = -1.0 if getattr(part, "subtract", False) else 1.0
     if type(part) not in BUILDERS and not isinstance(part, PLACED):
-        rows = [part_element(_with(part, inputs, row), spec.units, loaded.path) for row in values]
-        mass, com, inertia = (np.array([getattr(e, key) for e in rows]) for key in FIELDS)
-        return sign * mass, com, sign * inertia
+        rows = MassProperties.concatenate(
+            part_element(_with(part, inputs, row), spec.units, loaded.path) for row in values
+        )
+        return sign * rows.mass, rows.center_of_mass, sign * rows.inertia_about_com
     own = {i.steps: values[:, k] for k, i in enumerate(inputs) if i.steps[0] not in SEPARATE}
     columns = Columns([part], np.zeros(n, int), own)
     R = _turns(part, inputs, values)
@@ -458,10 +457,9 @@ def rows_at(loaded: Any, values: np.ndarray, expand: bool = False) -> Stack:
             m, c, inertia = part_stack(loaded, index, [inputs[k] for k in chosen], values[:, chosen], expand)
             rows = (m / units[0], c / units[1], inertia / units[4])
             pieces.append([x[:, None] for x in rows] if m.ndim == 1 else list(rows))
-        else:
-            pieces.append(
-                [np.repeat(getattr(elements, key)[None, index : index + 1], n, axis=0) for key in FIELDS]
-            )
+        else:  # the part in every row
+            same = elements[np.full(n, index)]
+            pieces.append([same.mass[:, None], same.center_of_mass[:, None], same.inertia_about_com[:, None]])
     return tuple(np.concatenate([p[j] for p in pieces], axis=1) for j in range(3))  # type: ignore[return-value]
 
 
