@@ -9,7 +9,6 @@ from typing import Any
 
 import numpy as np
 
-from rbi.core.mass import MassProperties
 from rbi.errors import ArgumentError, literal
 from rbi.sim.api import DEFAULT_RTOL, sample_times
 from rbi.sim.compiled import STATUS_DONE, integrate_scenes
@@ -36,12 +35,9 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     body, scene = prepared.body, prepared.scene
     if body.spec is None or not body.spec._uncertain:  # every spread would be 0, and say nothing
         raise ArgumentError("draws", f"needs a spec that writes numbers with ± ({body.path} has none)")
-    mass, com, inertia = drawn(body, draws, generator(seed))
     scenes = [
-        scene_from_properties(
-            MassProperties(mass[k], com[k], inertia[k]), body.pivot, scene.gravity, scene.spin_axis
-        )
-        for k in range(draws)
+        scene_from_properties(each, body.pivot, scene.gravity, scene.spin_axis)
+        for each in drawn(body, draws, generator(seed))
     ]
     t = sample_times(prepared.settings.duration, samples)
     start = np.concatenate((prepared.q0, prepared.omega0))[None, :]

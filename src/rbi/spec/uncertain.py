@@ -463,14 +463,14 @@ def rows_at(loaded: Any, values: np.ndarray, expand: bool = False) -> Stack:
     return tuple(np.concatenate([p[j] for p in pieces], axis=1) for j in range(3))  # type: ignore[return-value]
 
 
-def drawn(loaded: Any, n: int, rng: np.random.Generator) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """The body ``loaded`` for n draws of every uncertain input (JCGM 101 §6): mass (n,), centre
-    of mass (n, 3), inertia about it (n, 3, 3), in its units, the n bodies built as one stack
-    from their parts (:func:`rows_at`)."""
+def drawn(loaded: Any, n: int, rng: np.random.Generator) -> MassProperties:
+    """The body ``loaded`` for n draws of every uncertain input (JCGM 101 §6): a stack of n
+    (mass (n,), centre of mass (n, 3), inertia about it (n, 3, 3)), in its units, the n bodies
+    built as one stack from their parts (:func:`rows_at`)."""
     inputs = loaded.spec._uncertain
     draws = np.stack([i.draws(rng, n) for i in inputs], axis=1) if inputs else np.zeros((n, 0))
     with np.errstate(all="ignore"):
-        return body_stack(*rows_at(loaded, draws), loaded.props.center_of_mass)
+        return MassProperties(*body_stack(*rows_at(loaded, draws), loaded.props.center_of_mass))
 
 
 QUANTITIES = (
@@ -581,10 +581,11 @@ def generator(seed: int | None) -> np.random.Generator:
 def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
     """(n, q) samples of :data:`QUANTITIES` (about the centre of mass of each draw) from n draws
     of every uncertain input (JCGM 101), all n bodies computed as one stack."""
-    mass, com, inertia = drawn(loaded, n, generator(seed))
+    body = drawn(loaded, n, generator(seed))
     with np.errstate(all="ignore"):
-        moments = np.linalg.eigvalsh(inertia)
-    return np.concatenate([mass[:, None], com, inertia.reshape(n, 9), moments], axis=1)
+        moments = np.linalg.eigvalsh(body.inertia_about_com)
+    stack = (body.mass, body.center_of_mass, body.inertia_about_com)
+    return np.concatenate([_flat(stack), moments], axis=1)
 
 
 class Contributions(NamedTuple):
