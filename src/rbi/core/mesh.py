@@ -26,8 +26,9 @@ Three ways to put mass on a mesh, named as MuJoCo names them (:data:`MESH_INERTI
 :func:`repair_mesh` (opt-in) closes holes of three or four edges with trimesh's
 ``fill_holes`` and reports the area it added.
 
-Pure numpy, vectorised over faces in chunks (bounded memory); scipy and trimesh are imported
-only by the functions that need them; reading files is done elsewhere.
+numpy, vectorised over faces in chunks (bounded memory); scipy (sparse graphs, Qhull, k-d
+trees) is imported with the module, trimesh only by :func:`repair_mesh`; reading files is done
+elsewhere.
 """
 
 from __future__ import annotations
@@ -102,16 +103,6 @@ class RepairedMesh(NamedTuple):
     faces: np.ndarray
     added_faces: int
     added_area: float
-
-
-def joined(pieces: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
-    """One mesh of (vertices, faces) pieces: each piece's faces renumbered past the vertices of
-    the pieces before it."""
-    if not pieces:
-        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
-    offsets = np.cumsum([0] + [len(points) for points, _ in pieces[:-1]])
-    faces = [triangles + offset for (_, triangles), offset in zip(pieces, offsets)]
-    return np.concatenate([points for points, _ in pieces]), np.concatenate(faces)
 
 
 WELD_RTOL = 1e-9

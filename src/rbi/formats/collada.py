@@ -25,7 +25,6 @@ import warnings
 
 import numpy as np
 
-from rbi.core.mesh import joined
 from rbi.core.rotation import axis_angle_matrix
 from rbi.errors import InputError
 from rbi.formats.robot_xml import read_xml
@@ -68,6 +67,16 @@ def parse_collada(data: bytes, name: str = "mesh.dae", max_triangles: int = np.i
             placed.append((points @ transform[:3, :3].T + transform[:3, 3], triangles))
     vertices, faces = joined(placed)
     return vertices * meter, faces
+
+
+def joined(pieces: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+    """One mesh of (vertices, faces) pieces: each piece's faces renumbered past the vertices of
+    the pieces before it."""
+    if not pieces:
+        return np.zeros((0, 3)), np.zeros((0, 3), dtype=np.int64)
+    offsets = np.cumsum([0] + [len(points) for points, _ in pieces[:-1]])
+    faces = [triangles + offset for (_, triangles), offset in zip(pieces, offsets)]
+    return np.concatenate([points for points, _ in pieces]), np.concatenate(faces)
 
 
 def _unit(root) -> float:

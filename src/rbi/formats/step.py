@@ -57,6 +57,7 @@ import numpy as np
 
 from rbi.core.mass import MassProperties
 from rbi.files.safe import open_input_file
+from rbi.formats.collada import joined
 from rbi.formats.paths import file_key
 from rbi.memory import cached
 
@@ -284,8 +285,6 @@ def _read_here(path: Path, eps: float) -> StepFile:
 def _triangles_here(
     path: Path, indices: list[int], deflection: float, angle: float
 ) -> tuple[np.ndarray, np.ndarray]:
-    from rbi.core.mesh import joined  # in the child only: scipy
-
     ocp, instances, unit_metres = _instances(path)
     vertices, faces = joined(
         [
