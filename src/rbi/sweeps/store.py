@@ -411,11 +411,14 @@ def _cell(name: str, cell: Any, text: bool) -> Any:
     if cell is None or (text and cell == ""):
         return None
     if name in TEXT_COLUMNS:
-        read = csv_text_read(cell) if text else cell if isinstance(cell, str) else None
+        if not text:
+            return cell if isinstance(cell, str) else _BAD
+        read = csv_text_read(cell)
         return _BAD if read is None else read
-    if not text:
-        kind = int if name in INT_COLUMNS else float
-        return cell if type(cell) is kind and (cell >= 0 if kind is int else math.isfinite(cell)) else _BAD
+    if not text:  # a Parquet value: the type the sweep wrote
+        if name in INT_COLUMNS:
+            return cell if type(cell) is int and cell >= 0 else _BAD
+        return cell if type(cell) is float and math.isfinite(cell) else _BAD
     if name in INT_COLUMNS:
         return int(cell) if cell.isascii() and cell.isdigit() and str(int(cell)) == cell else _BAD
     try:
