@@ -84,7 +84,7 @@ class Rows:
                 no_wrap=parts and not left,
                 overflow="fold" if parts else "ellipsis",
             )
-        check = self.kind == "check"  # only a check's verdict is styled: no call more a cell (10⁵ rows)
+        check = self.kind == "check"  # only a check's verdict is styled; other cells skip the test (10⁵ rows)
         for row in self.cells:
             table.add_row(*(map(cell_text, row) if check else map(text, map(str, row))))
         if self.total is not None:

@@ -71,10 +71,12 @@ def import_robot(file: ImportFile, *, format: OutputFormat, **settings) -> None:
     imported = rbi.import_robot(file, **settings)
     out = settings["out"]
     if isinstance(imported, rbi.RobotImport):  # notes and warnings on stderr
-        for label, reason in [] if settings["links"] else imported.skipped:
-            say(f"note: {file}: {label}: skipped: {reason}")
-        for line in (line for each in imported.links for line in each.problems):
-            say(f"warning: {line}")
+        if not settings["links"]:
+            for label, reason in imported.skipped:
+                say(f"note: {file}: {label}: skipped: {reason}")
+        for each in imported.links:
+            for line in each.problems:
+                say(f"warning: {line}")
     else:  # a STEP file's spec written where it names the STEP file outside its folder: a note
         named = {str(part.get("file", "")) for part in imported.spec.get("parts", [])}
         outside = sorted(n for n in named if os.path.isabs(n) or n.split("/")[0] == "..")
