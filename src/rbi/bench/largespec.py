@@ -28,6 +28,7 @@ from pathlib import Path
 from typing import Any
 
 from rbi.bench import Progress
+from rbi.memory import collector_paused
 
 SHAPES = {
     "point": "shape: point, mass: {m:.6g}, position: {a}",
@@ -56,9 +57,8 @@ def load_steps(path: str) -> tuple[dict, Any, Any]:
     """rbi's load of the spec at ``path`` step by step, the garbage collector paused as rbi's
     loader pauses it: the seconds of each step (``read``: the bounded YAML reader, ``validate``,
     ``translate``), the parsed YAML and the body."""
-    from rbi.memory import collector_paused  # lazy: a baseline importing this module pays for no rbi
-    from rbi.spec.load import read_yaml, validation_messages  # lazy: pydantic, as above
-    from rbi.spec.translate import body_from_spec  # lazy: the translator, as above
+    from rbi.spec.load import read_yaml, validation_messages  # lazy: importing this module loads no numpy
+    from rbi.spec.translate import body_from_spec  # lazy: numpy
 
     start = time.perf_counter()
     with collector_paused():
