@@ -105,9 +105,15 @@ def _errors(props, volume_mm3: float, closed) -> dict:
     }
 
 
-def _row(kind: str, path: Path, spec: Path, repeats: int, closed, extra: dict) -> dict:
-    """One file's row: its size, the median seconds of the whole load of ``spec`` with the file
-    caches emptied first, and its errors against the closed form."""
+def _row(kind: str, path: Path, shape: str, repeats: int, closed, extra: dict) -> dict:
+    """One file's row: its size, the median seconds of the whole load of a spec naming it (a
+    ``shape`` part, written next to it) with the file caches emptied first, and its errors
+    against the closed form."""
+    spec = path.with_name(f"plate-{path.suffix[1:]}.yaml")
+    spec.write_text(
+        "units: {length: mm, mass: g}\n"
+        f"parts:\n  - {{name: plate, shape: {shape}, file: {path.name}, density: {DENSITY}}}\n"
+    )
 
     def load():
         step._CACHE.clear()
@@ -136,15 +142,9 @@ def run(quick: bool, progress: Progress, folder: Path) -> dict:
     write_plate_step(step_path)
     vertices, faces = step_triangles(step_path, [0], 0.001, STL_ANGLE[quick])
     trimesh.Trimesh(vertices * 1000.0, faces, process=False).export(stl_path)  # binary STL, mm
-    specs = {name: folder / f"plate-{name}.yaml" for name in ("step", "stl")}  # written here
-    for name, shape in (("step", "step"), ("stl", "mesh")):
-        specs[name].write_text(
-            "units: {length: mm, mass: g}\n"
-            f"parts:\n  - {{name: plate, shape: {shape}, file: plate.{name}, density: {DENSITY}}}\n"
-        )
     rows = [
-        _row("STEP", step_path, specs["step"], repeats, closed, {"triangles": None}),
-        _row("STL", stl_path, specs["stl"], repeats, closed, {"triangles": int(len(faces))}),
+        _row("STEP", step_path, "step", repeats, closed, {"triangles": None}),
+        _row("STL", stl_path, "mesh", repeats, closed, {"triangles": int(len(faces))}),
     ]
     return {
         "plate_mm": list(PLATE_MM),

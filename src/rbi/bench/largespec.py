@@ -20,7 +20,6 @@ then times, each in a fresh Python process so that no import or heap state carri
 from __future__ import annotations
 
 import json
-import subprocess
 import sys
 import tempfile
 import time
@@ -28,6 +27,7 @@ from pathlib import Path
 from typing import Any
 
 from rbi.bench import Progress
+from rbi.bench.timing import run_process
 from rbi.memory import collector_paused
 
 SHAPES = {
@@ -97,25 +97,24 @@ def spec_text(n_parts: int, shapes: str, seed: int = 0) -> str:
     return "\n".join(lines) + "\n"
 
 
-def _python(*args: str, timeout: float) -> tuple[float, str]:
+def _python(*args: str) -> tuple[float, str]:
     """``(wall seconds, standard output)`` of this Python run with ``args``; RuntimeError when it
     fails."""
-    start = time.perf_counter()
-    proc = subprocess.run([sys.executable, *args], capture_output=True, text=True, timeout=timeout)
+    seconds, _, proc = run_process([sys.executable, *args])
     if proc.returncode != 0:
         raise RuntimeError(f"benchmark subprocess failed: {proc.stderr.strip()[-500:]}")
-    return time.perf_counter() - start, proc.stdout.strip()
+    return seconds, proc.stdout.strip()
 
 
-def yaml_load_ratio(n_parts: int, shape: str, timeout: float = 600.0) -> dict:
+def yaml_load_ratio(n_parts: int, shape: str) -> dict:
     """Seconds of PyYAML's bare ``CSafeLoader`` load and of rbi's load of the same spec of
     ``n_parts`` ``shape`` parts, each in a fresh process, and their ratio (see the module)."""
     with tempfile.TemporaryDirectory(prefix="rbi-yaml-bench-") as folder:
         path = Path(folder) / f"{shape}s.yaml"
         path.write_text(spec_text(n_parts, shape))
-        bare_s = float(_python("-c", _BARE, str(path), timeout=timeout)[1])
-        steps = json.loads(_python("-c", _RBI, str(path), timeout=timeout)[1])
-        process_s = _python("-m", "rbi", "inertia", str(path), "--format", "json", timeout=timeout)[0]
+        bare_s = float(_python("-c", _BARE, str(path))[1])
+        steps = json.loads(_python("-c", _RBI, str(path))[1])
+        process_s = _python("-m", "rbi", "inertia", str(path), "--format", "json")[0]
         rbi_load_s = sum(steps.values())  # read, validate, translate
         return {
             "parts": n_parts,
@@ -138,10 +137,8 @@ def run(quick: bool, progress: Progress, folder: Path) -> dict:
     for n, shape in CASES[quick]:
         progress(f"large specs: {n:,} × {shape}")
         try:
-            row = dict(yaml_load_ratio(n, shape))
+            row = yaml_load_ratio(n, shape)
         except Exception as exc:  # a failed measurement is a row, not the end of the bench
             row = {"error": f"{type(exc).__name__}: {exc}"}
-        row.setdefault("n_parts", n)
-        row.setdefault("shape", shape)
-        specs.append(row)
+        specs.append(row | {"n_parts": n, "shape": shape})
     return {"target": TARGET, "specs": specs}

@@ -144,9 +144,8 @@ def import_breakdown(bodies: Path, repeats: int) -> dict:
     for module, us in best.items():
         words = module.split(".")
         prefixes = (".".join(words[:n]) for n in range(len(words), 0, -1))
-        groups[
-            next((GROUP_OF[p] for p in prefixes if p in GROUP_OF), "the rest of the standard library")
-        ] += us
+        group = next((GROUP_OF[p] for p in prefixes if p in GROUP_OF), "the rest of the standard library")
+        groups[group] += us
     return {
         "command": "python -X importtime -m rbi inertia bodies/top.yaml",
         "repeats": repeats,

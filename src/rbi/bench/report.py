@@ -7,6 +7,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import partial
+from operator import itemgetter
 
 from rbi.bench.workprecision import speedup
 from rbi.reprs import Result
@@ -575,25 +576,21 @@ def _num(key: str, digits: int = 3, scale: float = 1.0):
     return lambda r: number(None if r.get(key) is None else scale * r[key], digits)
 
 
-def _text(key: str):
-    return lambda r: r[key]
-
-
 def _count(key: str):
     return lambda r: "—" if r.get(key) is None else f"{r[key]:,}"
 
 
 TARGET_COLUMNS = [
-    ("area", _text("area")),
-    ("target", _text("target")),
+    ("area", itemgetter("area")),
+    ("target", itemgetter("target")),
     ("measured", lambda r: _shown(r, "measured")),
     ("limit", lambda r: f"{r['comparison']} {_shown(r, 'limit')}"),
     ("met", lambda r: {True: "yes", False: "NO", None: "—"}[r["met"]]),
-    ("baseline (same run)", _text("baseline")),
-    ("detail", _text("detail")),
+    ("baseline (same run)", itemgetter("baseline")),
+    ("detail", itemgetter("detail")),
 ]
 CAD_COLUMNS = [
-    ("file", _text("file")),
+    ("file", itemgetter("file")),
     ("triangles", _count("triangles")),
     ("MB", _num("bytes", scale=1e-6)),
     ("load [s]", _num("seconds")),
@@ -669,7 +666,7 @@ PARTS_COLUMNS = [
     ("core [s]", _num("core_s", 2)),
 ]
 LATENCY_COLUMNS = [
-    ("command", _text("command")),
+    ("command", itemgetter("command")),
     ("CPU median [s]", lambda r: "failed" if "error" in r else _num("cpu_median_s")(r)),
     ("× numpy import (CPU)", lambda r: "" if "error" in r else _times(r.get("cpu_ratio_to_numpy_import"))),
     ("wall median [s]", lambda r: "" if "error" in r else _num("median_s")(r)),

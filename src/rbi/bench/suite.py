@@ -1,20 +1,26 @@
 """Running the benchmark: the chosen sections in one process, their results collected, then the
-plot and the Markdown page written (what ``rbi bench`` calls; it only parses and prints)."""
+plot and the Markdown page written (what ``rbi bench`` calls; it only parses and prints); and a
+description of the machine it ran on."""
 
 from __future__ import annotations
 
 import os
+import platform
+import sys
 import tempfile
 from collections.abc import Callable
+from datetime import UTC, datetime
 from functools import partial
 from importlib import import_module
 from pathlib import Path
 
+import numpy
+
 from rbi.bench import report
 from rbi.bench.paths import bodies_folder
-from rbi.bench.timing import machine
 from rbi.errors import SpecError
 from rbi.files.output import check_distinct, output_target, write_output
+from rbi.sim.compiled import integrator
 
 NAMES = ("kernel", "workprecision", "throughput", "largespec", "latency", "sweep", "cad", "robotaudit")
 NAMES += ("uncertainty",)
@@ -67,3 +73,39 @@ def run(
         link = os.path.relpath(Path(plot).resolve(), Path(write_docs).resolve().parent) if plot else None
         write_output(docs_target, report.markdown(result, command, link))
     return result
+
+
+def machine() -> dict:
+    """What the numbers were measured on: CPU, core count, load, Python and library versions."""
+    import scipy  # loaded only by the commands that need it (start-up cost)
+
+    return {
+        "date": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
+        "cpu": _cpu_model(),
+        "cores": os.cpu_count(),
+        "load_average_1min": _load_average(),
+        "platform": platform.platform(),
+        "python": platform.python_version(),
+        "numpy": numpy.__version__,
+        "scipy": scipy.__version__,
+        "executable": sys.executable,
+        "kernel": integrator().how,
+    }
+
+
+def _cpu_model() -> str:
+    try:
+        with open("/proc/cpuinfo", encoding="utf-8") as stream:
+            for line in stream:
+                if line.lower().startswith("model name"):
+                    return line.split(":", 1)[1].strip()
+    except OSError:
+        pass
+    return platform.processor() or platform.machine()
+
+
+def _load_average() -> float | None:
+    try:
+        return round(os.getloadavg()[0], 2)
+    except (OSError, AttributeError):
+        return None

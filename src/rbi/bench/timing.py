@@ -1,21 +1,13 @@
-"""Timing helpers and a description of the machine a benchmark ran on."""
+"""Timing helpers (standard library only: :mod:`rbi.bench.largespec` imports them and loads no numpy)."""
 
 from __future__ import annotations
 
-import os
-import platform
 import resource
 import statistics
 import subprocess
-import sys
 import time
 from collections.abc import Callable, Sequence
-from datetime import UTC, datetime
 from typing import Any, NamedTuple
-
-import numpy
-
-from rbi.sim.compiled import integrator
 
 
 class Timing(NamedTuple):
@@ -93,39 +85,3 @@ def run_process(argv: list[str], env: dict | None = None) -> tuple[float, float,
         lambda: subprocess.run(argv, capture_output=True, text=True, timeout=600, env=env),
         resource.RUSAGE_CHILDREN,
     )
-
-
-def machine() -> dict:
-    """What the numbers were measured on: CPU, core count, load, Python and library versions."""
-    import scipy  # loaded only by the commands that need it (start-up cost)
-
-    return {
-        "date": datetime.now(UTC).strftime("%Y-%m-%d %H:%M UTC"),
-        "cpu": _cpu_model(),
-        "cores": os.cpu_count(),
-        "load_average_1min": _load_average(),
-        "platform": platform.platform(),
-        "python": platform.python_version(),
-        "numpy": numpy.__version__,
-        "scipy": scipy.__version__,
-        "executable": sys.executable,
-        "kernel": integrator().how,
-    }
-
-
-def _cpu_model() -> str:
-    try:
-        with open("/proc/cpuinfo", encoding="utf-8") as stream:
-            for line in stream:
-                if line.lower().startswith("model name"):
-                    return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or platform.machine()
-
-
-def _load_average() -> float | None:
-    try:
-        return round(os.getloadavg()[0], 2)
-    except (OSError, AttributeError):
-        return None

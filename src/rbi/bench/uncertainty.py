@@ -49,10 +49,7 @@ def run(quick: bool, progress: Progress, folder: Path) -> dict:
     plain_timing, linear = in_turn([partial(measure, plain_call, 1), partial(measure, linear_call, 1)], 5)
     progress(f"uncertainty: {draws:,} Monte Carlo draws of the toleranced bolted top")
     top = rbi.load(bodies_folder() / "top_bolted_toleranced.yaml")
-
-    def monte_carlo():
-        return top.uncertainty(method="monte-carlo", samples=draws, seed=1)
-
+    monte_carlo = partial(top.uncertainty, method="monte-carlo", samples=draws, seed=1)
     first_s = clocked(monte_carlo)[0]
     mc = measure(monte_carlo, min_repeats=3)
     return {

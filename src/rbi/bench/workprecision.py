@@ -126,7 +126,8 @@ def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | Non
     """Each method at each of its ``tolerances`` (default: :data:`SWEEPS`) and rbi at its
     default settings on ``case``: errors against the reference, cost, and the median
     in-process time of the whole :func:`rbi.sim.api.simulate` call over repeats (a run of the
-    compiled method takes about a millisecond, too short to time once on a busy machine)."""
+    compiled method takes about a millisecond, too short to time once on a busy machine), and their
+    :func:`speedup` (None when the chapter's set-up was not among ``tolerances``)."""
     load_seconds = integrator().load_seconds  # compile or load once, outside every timing
     scene, q0, omega0 = scene_of(case)
     progress(f"{case.name}: reference")
@@ -155,11 +156,12 @@ def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | Non
     for method, rtols in (tolerances or SWEEPS[quick]).items():
         for rtol in rtols:
             progress(f"{case.name}: {method} rtol {rtol:g}")
-            chapter = (method, rtol) == CHAPTER
-            min_seconds = 0.3 if method == "default" else (2.0 if chapter and not quick else 0.0)
-            rows.append(row(method, rtol, min_seconds, chapter_setup=chapter))
+            is_chapter = (method, rtol) == CHAPTER
+            min_seconds = 0.3 if method == "default" else (2.0 if is_chapter and not quick else 0.0)
+            rows.append(row(method, rtol, min_seconds, chapter_setup=is_chapter))
     progress(f"{case.name}: rbi default settings")
     default_row = row("default", None, 0.3, chapter_setup=False, default_settings=True)
+    chapter = next((r for r in rows if r["chapter_setup"]), None)
     return asdict(case) | {
         "spec": f"bodies/{case.spec}",
         "omega0": list(case.omega0),
@@ -167,7 +169,7 @@ def run_case(case: Case, quick: bool, progress: Progress, tolerances: dict | Non
         "kernel_load_seconds": load_seconds,
         "runs": rows,
         "default": default_row,
-        "speedup": _speedup(rows, default_row),
+        "speedup": speedup(chapter, default_row, best_matching(rows, chapter)) if chapter else None,
     }
 
 
@@ -197,12 +199,6 @@ def best_matching(rows: list[dict], chapter: dict) -> dict | None:
     the chapter's set-up's (None: none is)."""
     matching = [r for r in rows if r["method"] == "default" and no_worse(r, chapter)]
     return min(matching, key=lambda r: r["seconds"], default=None)
-
-
-def _speedup(rows: list[dict], default_row: dict) -> dict | None:
-    """:func:`speedup` of a case's runs, or None when the chapter's set-up was not among them."""
-    chapter = next((r for r in rows if r["chapter_setup"]), None)
-    return speedup(chapter, default_row, best_matching(rows, chapter)) if chapter else None
 
 
 def run(quick: bool, progress: Progress, folder: Path) -> dict:
