@@ -142,13 +142,12 @@ def run(quick: bool, progress: Progress, folder: Path) -> dict:
     write_plate_step(step_path)
     vertices, faces = step_triangles(step_path, [0], 0.001, STL_ANGLE[quick])
     trimesh.Trimesh(vertices * 1000.0, faces, process=False).export(stl_path)  # binary STL, mm
-    rows = [
-        _row("STEP", step_path, "step", repeats, closed, {"triangles": None}),
-        _row("STL", stl_path, "mesh", repeats, closed, {"triangles": int(len(faces))}),
-    ]
     return {
         "plate_mm": list(PLATE_MM),
         "holes": len(hole_centres()),
         "hole_radius_mm": HOLE_RADIUS_MM,
-        "files": rows,
+        "files": [
+            _row("STEP", step_path, "step", repeats, closed, {"triangles": None}),
+            _row("STL", stl_path, "mesh", repeats, closed, {"triangles": int(len(faces))}),
+        ],
     }

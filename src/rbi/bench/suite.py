@@ -39,7 +39,7 @@ def chosen(only: str | None) -> list[str]:
 
 
 def run(
-    quick: bool,
+    quick: bool = False,
     only: str | None = None,
     plot: str | None = None,
     write_docs: str | None = None,

@@ -94,19 +94,18 @@ def check_against_direct_sum(specs: dict[str, Path], masses: np.ndarray, positio
     return float(np.max(np.abs(props.inertia_about_com - direct)) / np.max(np.abs(direct)))
 
 
-def point_clouds(sizes, progress: Progress, tmp: Path) -> list[dict]:
-    rows = []
-    for n in sizes:
-        progress(f"point cloud of {n:,} points")
-        masses, positions = random_cloud(n)
-        row = {"points": n} | core_timings(masses, positions)
-        folder = tmp / f"cloud{n}"
-        folder.mkdir()
-        specs = write_cloud(folder, masses, positions)
-        row |= file_timings(specs, repeats=3)
-        row["relative_difference_to_direct_sum"] = check_against_direct_sum(specs, masses, positions)
-        rows.append(row)
-    return rows
+def point_cloud(n: int, progress: Progress, tmp: Path) -> dict:
+    """The row of a cloud of ``n`` random point masses: the in-memory reduction step by step,
+    then the whole load of a CSV and a ``.npy`` spec naming the cloud."""
+    progress(f"point cloud of {n:,} points")
+    masses, positions = random_cloud(n)
+    row = {"points": n} | core_timings(masses, positions)
+    folder = tmp / f"cloud{n}"
+    folder.mkdir()
+    specs = write_cloud(folder, masses, positions)
+    row |= file_timings(specs, repeats=3)
+    row["relative_difference_to_direct_sum"] = check_against_direct_sum(specs, masses, positions)
+    return row
 
 
 def scaling_exponent(rows: list[dict], key: str = "total_s") -> float | None:
@@ -119,36 +118,31 @@ def scaling_exponent(rows: list[dict], key: str = "total_s") -> float | None:
     return float(np.polyfit(x, y, 1)[0])
 
 
-def solid_parts(sizes, progress: Progress, tmp: Path) -> list[dict]:
-    """Seconds for each step of loading a spec of many parts, once each (these are slow)."""
+def solid_parts(n: int, progress: Progress, tmp: Path) -> dict:
+    """Seconds for each step of loading a spec of ``n`` parts, once each (these are slow)."""
 
-    rows = []
-    for n in sizes:
-        progress(f"spec of {n:,} parts in YAML")
-        path = tmp / f"parts{n}.yaml"
-        path.write_text(spec_text(n, "cone,cylinder,point", seed=1))
-        steps, raw, body = load_steps(str(path))
-        parts = body.elements  # one stack
-        core = measure(lambda: principal_axes(parts.sum().inertia_about_com))
-        total = sum(steps.values())
-        # The same spec as one JSON object (also valid YAML), as a generating program would write it.
-        as_json = path.with_suffix(".json")
-        as_json.write_text(json.dumps(raw))
-        json_s = sum(load_steps(str(as_json))[0].values())
-        rows.append(
-            {
-                "parts": n,
-                "yaml_megabytes": path.stat().st_size / 1e6,
-                "read_yaml_s": steps["read"],
-                "validate_s": steps["validate"],
-                "translate_s": steps["translate"],
-                "load_total_s": total,
-                "us_per_part": 1e6 * total / n,
-                "load_total_json_s": json_s,
-                "core_s": core.median,
-            }
-        )
-    return rows
+    progress(f"spec of {n:,} parts in YAML")
+    path = tmp / f"parts{n}.yaml"
+    path.write_text(spec_text(n, "cone,cylinder,point", seed=1))
+    steps, raw, body = load_steps(str(path))
+    parts = body.elements  # one stack
+    core = measure(lambda: principal_axes(parts.sum().inertia_about_com))
+    total = sum(steps.values())
+    # The same spec as one JSON object (also valid YAML), as a generating program would write it.
+    as_json = path.with_suffix(".json")
+    as_json.write_text(json.dumps(raw))
+    json_s = sum(load_steps(str(as_json))[0].values())
+    return {
+        "parts": n,
+        "yaml_megabytes": path.stat().st_size / 1e6,
+        "read_yaml_s": steps["read"],
+        "validate_s": steps["validate"],
+        "translate_s": steps["translate"],
+        "load_total_s": total,
+        "us_per_part": 1e6 * total / n,
+        "load_total_json_s": json_s,
+        "core_s": core.median,
+    }
 
 
 def _warm_up_loader(folder: Path) -> None:
@@ -161,8 +155,8 @@ def _warm_up_loader(folder: Path) -> None:
 
 def run(quick: bool, progress: Progress, folder: Path) -> dict:
     _warm_up_loader(folder)
-    clouds = point_clouds(CLOUDS[quick], progress, folder)
-    parts = solid_parts(PARTS[quick], progress, folder)
+    clouds = [point_cloud(n, progress, folder) for n in CLOUDS[quick]]
+    parts = [solid_parts(n, progress, folder) for n in PARTS[quick]]
     return {
         "point_clouds": clouds,
         "scaling_exponent": scaling_exponent(clouds),

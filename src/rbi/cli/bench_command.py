@@ -17,7 +17,6 @@ OPTIONS = (
     option(
         bool,
         "--quick",
-        default=False,
         help="A CI-sized run of a few seconds: shorter cases, fewer tolerances and sizes, fewer repeats.",
     ),
     option(
