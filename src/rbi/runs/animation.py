@@ -7,8 +7,8 @@ from typing import Any
 
 import numpy as np
 
-from rbi.errors import ArgumentError, InputError
-from rbi.runs.run import PreparedRun
+from rbi.errors import ArgumentError
+from rbi.runs.run import PreparedRun, refuse_non_finite
 from rbi.sim.diagnostics import tilt_deg
 from rbi.spec.geometry import part_geometry
 from rbi.viz.labels import motion_title
@@ -35,10 +35,7 @@ def animation(run: PreparedRun, gif_frames: int = 0) -> tuple[dict[str, Any], An
         )
     count = max(MIN_KEYFRAMES, needed, gif_frames)
     trajectory = probe if count == MIN_KEYFRAMES else run.integrate(count)
-    if not (np.all(np.isfinite(trajectory.q)) and np.all(np.isfinite(trajectory.omega))):
-        raise InputError(
-            f"{body.path}: the motion is not finite: the input values are too large for double precision"
-        )
+    refuse_non_finite(body.path, {"q": trajectory.q, "omega": trajectory.omega})
     title = motion_title(
         body.name or body.path,
         run.omega0,

@@ -25,7 +25,7 @@ from rbi.runs.values import require_numbers, vector_value
 from rbi.sim.api import SimulationError, check_duration, check_method, check_rtol, check_samples, simulate
 from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import tilt_deg
-from rbi.sim.scene import initial_state, scene_from_properties
+from rbi.sim.scene import Scene, initial_state, scene_from_properties
 from rbi.sim.summary import CSV_COLUMNS, columns_of, sample_columns, summarize
 from rbi.sim.summary import error_estimate as estimate
 from rbi.spec.units import STANDARD_GRAVITY_SI, gravity_in
@@ -96,10 +96,8 @@ def body_spin_axis(body: Any, given: str | Sequence[float] | None = None) -> np.
         return np.array(axis)
     if body.spin_axis is not None:
         return unit_vector(body.spin_axis)
-    fixed = np.asarray(body.props.center_of_mass if body.pivot is None else body.pivot, dtype=float)
-    return default_spin_axis(
-        body.props.inertia_about(fixed), np.asarray(body.props.center_of_mass, dtype=float) - fixed
-    )
+    fixed_point = Scene(body.props, 0.0, body.pivot)  # the inertia about it, before any check
+    return default_spin_axis(fixed_point.inertia, fixed_point.com_from_pivot)
 
 
 def scene_of(body: Any, gravity_si: float | None, spin_axis: str | Sequence[float] | None = None) -> Any:

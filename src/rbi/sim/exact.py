@@ -15,6 +15,7 @@ body), so a pivoted body without gravity torque is a free body about its pivot.
 from __future__ import annotations
 
 import math
+from functools import cached_property
 from typing import Any
 
 import numpy as np
@@ -333,7 +334,8 @@ class LagrangeTop:
                 "the top starts exactly upright with a transverse ω: its axis passes through the "
                 "vertical, where the Euler angles of the closed form break down"
             )
-        self.u1, self.u2, self.u3 = self._roots(-sin_theta0 * theta_dot0)
+        u_dot0 = -sin_theta0 * theta_dot0
+        self.u1, self.u2, self.u3 = self._roots(u_dot0)
         self.delta = self.u2 - self.u1
         if 1.0 - self.u2 <= VERTICAL_MARGIN or 1.0 + self.u1 <= VERTICAL_MARGIN:
             raise NotIntegrable(
@@ -342,7 +344,6 @@ class LagrangeTop:
             )
         self.sigma_rate = 0.5 * math.sqrt(self.beta * (self.u3 - self.u1))
         self.ell = _Elliptic(self.delta / (self.u3 - self.u1))
-        u_dot0 = -sin_theta0 * theta_dot0
         ratio = min(max((self.u0 - self.u1) / self.delta, 0.0), 1.0) if self.delta > 0 else 0.0
         self.sigma0 = math.copysign(
             ellipkinc(math.asin(math.sqrt(ratio)), self.ell.m),
@@ -350,7 +351,6 @@ class LagrangeTop:
         )
         self.n_plus = self.delta / (1.0 - self.u1)
         self.n_minus = -self.delta / (1.0 + self.u1)
-        self._J0: tuple[float, float] | None = None
         self.description = "Lagrange top (Jacobi elliptic functions, elliptic integrals)"
 
     def _roots(self, u_dot0: float) -> tuple[float, float, float]:
@@ -359,20 +359,13 @@ class LagrangeTop:
         beta, alpha, a, b = self.beta, self.alpha, self.a, self.b
         coeffs = np.array([beta, -(alpha + b * b), 2.0 * a * b - beta, alpha - a * a])
         roots = np.sort(np.roots(coeffs).real)
-
-        def f(u):
-            return ((coeffs[0] * u + coeffs[1]) * u + coeffs[2]) * u + coeffs[3]
-
-        def df(u):
-            return (3.0 * coeffs[0] * u + 2.0 * coeffs[1]) * u + coeffs[2]
-
         polished = []
         for u in roots:
             for _ in range(3):
-                slope = df(u)
+                slope = np.polyval(np.polyder(coeffs), u)
                 if slope == 0.0:
                     break
-                u = u - f(u) / slope
+                u = u - np.polyval(coeffs, u) / slope
             polished.append(float(u))
         if u_dot0 == 0.0:
             # u0 is a root: the other two from the deflated quadratic β u² + c1 u + c0
@@ -385,14 +378,12 @@ class LagrangeTop:
         polished.sort()
         return polished[0], polished[1], polished[2]
 
-    @property
+    @cached_property
     def J0(self) -> tuple[float, float]:
         """G(n±; σ₀): the third-kind integrals at the start (computed when a state is asked for,
         so that :meth:`facts` needs no scipy)."""
-        if self._J0 is None:
-            s0 = np.array([self.sigma0])
-            self._J0 = (float(self.ell.G(self.n_plus, s0)[0]), float(self.ell.G(self.n_minus, s0)[0]))
-        return self._J0
+        s0 = np.array([self.sigma0])
+        return float(self.ell.G(self.n_plus, s0)[0]), float(self.ell.G(self.n_minus, s0)[0])
 
     def _angles(self, t: np.ndarray):
         sigma = self.sigma_rate * t + self.sigma0
