@@ -6,14 +6,12 @@ coordinates: ``v_world = quaternion_to_matrix(q) @ v_body``.
 
 from __future__ import annotations
 
+import functools
 import math
 from typing import Any
 
 import numpy as np
 from numpy.typing import ArrayLike
-
-_AXES = {"x": 0, "y": 1, "z": 2}
-
 
 Z_AXIS = np.array([0.0, 0.0, 1.0])
 """The z axis: the world's up (gravity pulls along −z), and the body's spin axis by default."""
@@ -111,7 +109,7 @@ def elementary_rotation(axis: str, angle_rad: float) -> np.ndarray:
 
     Built entry by entry so that the untouched axis stays exactly 0/1.
     """
-    i = _AXES[axis]
+    i = "xyz".index(axis)
     j, k = (i + 1) % 3, (i + 2) % 3
     c, s = np.cos(angle_rad), np.sin(angle_rad)
     R = np.zeros((3, 3), dtype=np.result_type(c, float))
@@ -129,10 +127,8 @@ def compose_world_rotations(rotations: list[tuple[str, float]]) -> np.ndarray:
     ``[(a1, t1), (a2, t2)]`` gives ``R = R2 @ R1``: the body is first turned by ``t1``
     about world axis ``a1``, then by ``t2`` about world axis ``a2``. Angles in radians.
     """
-    R = np.eye(3)
-    for axis, angle in rotations:
-        R = elementary_rotation(axis, angle) @ R
-    return R
+    matrices = [elementary_rotation(axis, angle) for axis, angle in reversed(rotations)]  # last turn first
+    return functools.reduce(np.matmul, matrices) if matrices else np.eye(3)
 
 
 def euler_matrix(angles_rad: ArrayLike, sequence: str) -> np.ndarray:
@@ -144,13 +140,8 @@ def euler_matrix(angles_rad: ArrayLike, sequence: str) -> np.ndarray:
     This is the convention of scipy's ``Rotation.from_euler``. ``sequence`` is taken as given (a
     spec's is checked when it is read: :class:`rbi.spec.models.Rotation`).
     """
-    turns = [
-        elementary_rotation(axis, angle)
-        for axis, angle in zip(sequence.lower(), numbers(angles_rad).reshape(3))
-    ]
-    if sequence.islower():
-        return turns[2] @ turns[1] @ turns[0]
-    return turns[0] @ turns[1] @ turns[2]
+    turns = list(zip(sequence.lower(), numbers(angles_rad).reshape(3)))
+    return compose_world_rotations(turns if sequence.islower() else turns[::-1])
 
 
 def skew(v: np.ndarray) -> np.ndarray:
