@@ -11,9 +11,8 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
-import numpy as np
-
-from rbi.core.inertia import principal_axes
+from rbi.core.inertia import principal_axes, symmetrize
+from rbi.core.mass import MassProperties
 from rbi.core.rotation import matrix_to_quaternion
 from rbi.text import visible
 
@@ -37,23 +36,20 @@ def _numbers(values) -> str:
     return " ".join(xml_number(v) for v in values)
 
 
-def inertial_element(fmt: str, mass: float, com, inertia, diagonal: bool = False) -> ET.Element:
-    """The ``<inertial>`` element of format ``fmt``. URDF: ``<origin xyz rpy>`` places the
-    inertial frame at the centre of mass, axes parallel to the link's; ``<inertia ixx ixy ixz
-    iyy iyz izz>`` about it. SDF: ``<pose>x y z roll pitch yaw</pose>`` (the same frame),
+def inertial_element(fmt: str, props: MassProperties, diagonal: bool = False) -> ET.Element:
+    """The ``<inertial>`` element of format ``fmt`` (one of :data:`FORMATS`) for ``props`` (SI,
+    link axes). URDF: ``<origin xyz rpy>`` places the inertial frame at the centre of mass, axes
+    parallel to the link's; ``<inertia ixx ixy ixz iyy iyz izz>`` about it. SDF: ``<pose>x y z roll pitch yaw</pose>`` (the same frame),
     ``<mass>``, and ``<inertia>`` with child elements ixx ixy ixz iyy iyz izz. MJCF:
     ``<inertial pos mass fullinertia>`` with fullinertia in MuJoCo's order Ixx Iyy Izz Ixy Ixz
     Iyz; or, with ``diagonal``, the principal moments as ``diaginertia`` and ``quat`` (w x y z)
     turning the principal frame into the body frame."""
     import xml.etree.ElementTree as ET
 
-    if fmt not in FORMATS:
-        raise ValueError(f"no inertial writer for {fmt!r}")
-    I = np.asarray(inertia, dtype=float)
-    I = 0.5 * (I + I.T)
+    I = symmetrize(props.inertia_about_com)
     six = {name: xml_number(I[i, j]) for name, (i, j) in _SIX}
     if fmt == "mjcf":
-        attributes = {"pos": _numbers(com), "mass": xml_number(mass)}
+        attributes = {"pos": _numbers(props.center_of_mass), "mass": xml_number(props.mass)}
         if diagonal:
             moments, axes = principal_axes(I)
             # the quaternion of the matrix whose columns are the principal axes in body axes
@@ -64,12 +60,12 @@ def inertial_element(fmt: str, mass: float, com, inertia, diagonal: bool = False
         return ET.Element("inertial", attributes)
     inertial = ET.Element("inertial")
     if fmt == "urdf":
-        ET.SubElement(inertial, "origin", xyz=_numbers(com), rpy="0 0 0")
-        ET.SubElement(inertial, "mass", value=xml_number(mass))
+        ET.SubElement(inertial, "origin", xyz=_numbers(props.center_of_mass), rpy="0 0 0")
+        ET.SubElement(inertial, "mass", value=xml_number(props.mass))
         ET.SubElement(inertial, "inertia", six)
         return inertial
-    ET.SubElement(inertial, "pose").text = _numbers(list(com) + [0.0, 0.0, 0.0])
-    ET.SubElement(inertial, "mass").text = xml_number(mass)
+    ET.SubElement(inertial, "pose").text = _numbers([*props.center_of_mass, 0.0, 0.0, 0.0])
+    ET.SubElement(inertial, "mass").text = xml_number(props.mass)
     block = ET.SubElement(inertial, "inertia")
     for name, text in six.items():
         ET.SubElement(block, name).text = text
@@ -86,12 +82,10 @@ def element_text(element: ET.Element, indent: str = "", step: str = "  ") -> str
     return ("\n" + indent).join(text.split("\n"))
 
 
-def inertial_text(
-    fmt: str, mass: float, com, inertia, *, indent: str = "", step: str = "  ", diagonal: bool = False
-) -> str:
+def inertial_text(fmt: str, props: MassProperties, *, indent: str = "", step: str = "  ") -> str:
     """The ``<inertial>`` element of ``fmt`` as text, for a place in a file whose lines there
     start with ``indent`` and whose nesting steps by ``step``."""
-    return element_text(inertial_element(fmt, mass, com, inertia, diagonal), indent, step)
+    return element_text(inertial_element(fmt, props), indent, step)
 
 
 def xml_comment(text: str) -> str:
@@ -134,9 +128,7 @@ def export_xml(
     document holding it; ``comment`` goes first as an XML comment. Control
     characters in ``name`` and ``comment`` are written as visible escapes (XML 1.0 cannot hold
     them, and the text may be printed on a terminal)."""
-    element = inertial_element(
-        to, props.mass, props.center_of_mass, props.inertia_about_com, diagonal=diagonal
-    )
+    element = inertial_element(to, props, diagonal)
     if document:
         element = _document(to, visible(name), element)
     text = element_text(element)

@@ -178,14 +178,7 @@ def _change(
     comment = xml_comment(
         f"rbi audit fix: was {was} ({reason}); now its {each.source} geometry's mass properties {basis}"
     )
-    body = inertial_text(
-        report.model.format,
-        geo.mass,
-        geo.center_of_mass,
-        geo.inertia_about_com,
-        indent=indent,
-        step=_step(indent),
-    )
+    body = inertial_text(report.model.format, geo, indent=indent, step=_step(indent))
     new = f"{comment}\n{indent}{body}" if old else f"\n{indent}{comment}\n{indent}{body}"
     new = _held(new, report.model.document.encoding)
     if text.count(b"\r\n") * 2 > text.count(b"\n"):  # a file with Windows line ends keeps them
