@@ -44,8 +44,9 @@ from scipy.spatial import ConvexHull, QhullError, cKDTree
 
 from rbi.core.mass import MassProperties
 
-Moments = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray, np.ndarray]]
-"""Per-triangle measures and summed first and second moments of corners (F, 3, 3) about a point."""
+Moments = Callable[[np.ndarray], tuple[np.ndarray, np.ndarray | float, np.ndarray | float]]
+"""Per-triangle measures and summed first and second moments of corners (F, 3, 3) about a point
+(0 for moments not wanted)."""
 
 MESH_INERTIA_MODES = ("exact", "convex", "shell")
 """How a mesh carries its mass: the enclosed solid, the convex hull's solid, or the surface."""
@@ -135,10 +136,7 @@ def weld_vertices(
     result is float64. The vertices must be finite. Raises :class:`MeshError` when more than
     :data:`NEAR_NEIGHBOURS` distinct positions crowd within the tolerance of one.
     """
-    vertices = np.asarray(vertices)
-    if vertices.dtype not in (np.float32, np.float64):
-        vertices = vertices.astype(float)
-    vertices = vertices.reshape(-1, 3)
+    vertices = np.asarray(vertices).reshape(-1, 3)
     faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if vertices.shape[0] == 0:
         return vertices.astype(float), faces
@@ -321,22 +319,17 @@ def enclosed_volume_properties(vertices: np.ndarray, faces: np.ndarray) -> MassP
     return MassProperties(*_integrate(vertices, faces, _volume_moments), "mesh")
 
 
-def _total(vertices: np.ndarray, faces: np.ndarray, reference: np.ndarray, measure: Callable) -> float:
-    """The sum of ``measure`` over the triangles, their corners taken from ``reference``."""
-    chunks = (faces[start : start + FACE_CHUNK] for start in range(0, len(faces), FACE_CHUNK))
-    return sum((float(measure(vertices[chunk] - reference).sum()) for chunk in chunks), 0.0)
-
-
 def surface_area(vertices: np.ndarray, faces: np.ndarray) -> float:
     """Total area of the triangles (L²)."""
     vertices, faces = _as_arrays(vertices, faces)
-    return _total(vertices, faces, np.zeros(3), _areas)
+    return _sums(vertices, faces, np.zeros(3), lambda corners: (_areas(corners), 0.0, 0.0))[0]
 
 
 def enclosed_volume(vertices: np.ndarray, faces: np.ndarray) -> float:
     """Signed volume the mesh encloses (L³): positive when wound outward, negative inside out."""
     vertices, faces = _as_arrays(vertices, faces)
-    return _total(vertices, faces, 0.5 * (vertices.min(axis=0) + vertices.max(axis=0)), _signed_volumes)
+    centre = 0.5 * (vertices.min(axis=0) + vertices.max(axis=0))
+    return _sums(vertices, faces, centre, lambda corners: (_signed_volumes(corners), 0.0, 0.0))[0]
 
 
 VOLUME_RTOL = 1e-12
@@ -507,8 +500,6 @@ def convex_hull_mesh(vertices: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     corner points and faces. Raises :class:`MeshError` when the points span no volume."""
 
     points = np.asarray(vertices, dtype=float).reshape(-1, 3)
-    if len(points) < 4:
-        raise MeshError("the convex hull is flat: fewer than four vertices span no volume")
     centre = 0.5 * (points.min(axis=0) + points.max(axis=0))
     try:
         hull = ConvexHull(points - centre)
