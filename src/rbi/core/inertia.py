@@ -187,9 +187,7 @@ def unit_axis(axis: ArrayLike) -> np.ndarray:
         n = np.asarray(axis, dtype=float).reshape(3)
     except OverflowError:  # an integer no double holds (10**400)
         raise ValueError(f"the axis must be a non-zero finite direction, got {axis!r:.60}") from None
-    if not np.all(np.isfinite(n)) or not np.any(n):
-        raise ValueError(f"the axis must be a non-zero finite direction, got {n.tolist()}")
-    return unit_vector(n)  # any size: 1e200 or 1e-200 components are still a direction
+    return unit_vector(n)  # any size: 1e200 or 1e-200 components are still a direction; refuses 0 and inf
 
 
 def moment_about_axis(inertia_about_point: np.ndarray, axis: Sequence[float]) -> float:

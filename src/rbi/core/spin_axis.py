@@ -55,8 +55,7 @@ def default_spin_axis(inertia: np.ndarray, com_from_fixed_point: ArrayLike) -> n
     along = float(axis @ offset)
     if length > 0.0 and abs(along) > EQUAL_MOMENTS_RTOL * length:
         return axis if along > 0.0 else -axis
-    largest = int(np.argmax(np.abs(axis)))
-    return axis if axis[largest] > 0.0 else -axis
+    return axis  # principal_axes, at these moments' tolerance, made its largest component positive
 
 
 def quaternion_from_z_to(axis: ArrayLike) -> np.ndarray:
