@@ -55,16 +55,9 @@ class Case:
 
 def cases(quick: bool) -> list[Case]:
     top_duration = 0.5 if quick else 4.0
+    top_samples = int(round(120 * top_duration)) + 1  # 120 a second, and the start
     return [
-        Case(
-            "bolted top",
-            "top_bolted.yaml",
-            (0.0, 0.0, 200.0),
-            0.0,
-            top_duration,
-            int(round(120 * top_duration)) + 1,
-            "tight",
-        ),
+        Case("bolted top", "top_bolted.yaml", (0.0, 0.0, 200.0), 0.0, top_duration, top_samples, "tight"),
         Case("free asymmetric body", "tbar.yaml", (12.0, 16.0, 20.0), 0.0, 4.0, 481, "exact"),
     ]
 
