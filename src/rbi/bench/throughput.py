@@ -62,11 +62,9 @@ def write_cloud(folder: Path, masses: np.ndarray, positions: np.ndarray) -> dict
     csv_path = folder / "cloud.csv"
     np.savetxt(csv_path, table, delimiter=",", fmt=CSV_FORMAT, header="mass,x,y,z", comments="")
     np.save(folder / "cloud.npy", table)
-    specs = {}
-    for kind in ("csv", "npy"):
-        spec = folder / f"cloud_{kind}.yaml"
+    specs = {kind: folder / f"cloud_{kind}.yaml" for kind in ("csv", "npy")}
+    for kind, spec in specs.items():
         spec.write_text(f"name: cloud-{masses.size}\npoint_cloud: {{file: cloud.{kind}}}\n")
-        specs[kind] = spec
     return specs
 
 
