@@ -15,7 +15,7 @@ from rbi.api.outputs import PLOT_FORMATS, as_parameter, checked_output, keywords
 from rbi.errors import ArgumentError
 from rbi.files.output import Destination, OutputTarget
 from rbi.reprs import Result, Rows, pandas_module
-from rbi.spec.load import read_spec
+from rbi.spec.load import read_spec, spec_label
 from rbi.sweeps.study import MAX_ROWS_SHOWN, Study, SweepSettings, check_settings
 from rbi.sweeps.tolerance import spread as spread_over
 from rbi.text import number
@@ -80,11 +80,8 @@ class SweepTable(Result):
         self.spread: dict[str, dict[str, float]] | None = (
             spread_over(self.columns, self._rows, 1) if mass_properties else None
         )
-        if self.spread and not np.all(np.isfinite([list(stats.values()) for stats in self.spread.values()])):
-            # varied values of absurd size (normal(1, 1e308)) overflow the statistics
-            raise ArgumentError(
-                (), "result spread is not finite: the input values are too large for double precision"
-            )
+        if self.spread:  # varied values of absurd size (normal(1, 1e308)) overflow the statistics
+            body._refuse_non_finite(spread=[list(stats.values()) for stats in self.spread.values()])
         self.failed = sum(1 for row in self._rows if row[-1] != "ok")
         self.out = None if out is None else out.given
         self.cores: int | None = study.cores
@@ -316,5 +313,5 @@ def _spec_source(body: Any) -> tuple[str, Any, bytes | None]:
     spec, not the file as it stands, and hashes those bytes for ``resume``)."""
     if isinstance(body, (str, os.PathLike)):
         path = os.fsdecode(os.fspath(body))
-        return (path, *read_spec(path))
+        return (spec_label(path), *read_spec(path))  # "-" reads standard input, named <stdin>
     return loaded_body(body, "body").path, body._raw, body._spec_bytes
