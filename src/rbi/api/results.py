@@ -11,6 +11,7 @@ matrix's largest, as 0 (rounding noise); JSON and CSV keep every digit.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
@@ -496,76 +497,51 @@ class Parts(Results[Part]):
         share of the inertia; principal moments. Each ends with the whole body's row."""
         body, data = self._body, self.to_dict()
         labels, units, name = body.unit_labels, body.units, body.name or body.path
-        rows, total = data["parts"], data.get("uncertainty", {})
-        spreads = [row.get("uncertainty", {}) for row in rows]  # a spec with ±: value ± u
-        names = [row["name"] for row in rows]
-        l_unit, m_unit = units["length"], units["mass"]
-        masses = _part_table(
-            f"{name}: parts — mass and volume",
-            names,
-            (
-                "shape",
-                f"mass\n[{labels['mass']}]",
-                "mass\nshare [%]",
-                f"volume\n[{l_unit}³]",
-                f"density\n[{m_unit}/{l_unit}³]",
-            ),
-            [
-                (
-                    row["shape"] + (" (hole)" if row["hole"] else ""),
-                    _with_u(row["mass"], spread.get("mass")),
-                    number(100 * row["mass_share"], 4),
-                    "—" if row["volume"] is None else number(row["volume"]),
-                    number(row["implied_density"], 4),
-                )
-                for row, spread in zip(rows, spreads)
-            ],
-            (
-                "",
-                _with_u(body.mass, total.get("mass")),
-                number(100.0, 4),
-                number(self.volume),
-                number(self.mean_density, 4),
-            ),
-            left=2,
-        )
-        size, length = body_size(body.mass_properties), labels["length"]
-        places = _part_table(
-            f"{name}: parts — centre of mass",
-            names,
-            (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
-            [
-                (
-                    *_place_cells(row["center_of_mass"], size, spread),
-                    number(100 * row["inertia_share"], 4),
-                )
-                for row, spread in zip(rows, spreads)
-            ],
-            (
-                *_place_cells(body.center_of_mass, size, total),
-                number(100.0, 4),
-            ),
-        )
-        return [masses, places, self._moments_table(name, rows, total)]
-
-    def _moments_table(self, name: str, rows: list[dict[str, Any]], total: dict[str, Any]) -> Rows:
-        """The third table of `rows`: each part's principal moments (own CoM), the body's
-        ``± u`` when the spec has a ±."""
-        labels = self._body.unit_labels
-        scale, scale_text = matrix_digits(
-            [self.principal_moments, *(row["principal_moments"] for row in rows)]
-        )
+        # the body's row read as a part's (its ``uncertainty``, with a ±, gives its ``± u``)
+        whole = {"name": "total", "shape": "", "hole": False, "mass_share": 1.0, "inertia_share": 1.0}
+        rows = [*data["parts"], data | whole | {"implied_density": self.mean_density}]
+        l_unit, length, size = units["length"], labels["length"], body_size(body.mass_properties)
+        scale, scale_text = matrix_digits([row["principal_moments"] for row in rows])
         unit = f"[{labels['inertia']}]" + (f" {scale_text}" if scale_text else "")
-        return _part_table(
-            f"{name}: parts — principal moments (own CoM)",
-            [row["name"] for row in rows],
-            (f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
-            [tuple(number(m / scale, 5) for m in row["principal_moments"]) for row in rows],
-            tuple(
-                _with_u(m / scale, None if u is None else u / scale, 5)
-                for m, u in zip(self.principal_moments, total.get("principal_moments", [None] * 3))
+        return [
+            _part_table(
+                f"{name}: parts — mass and volume",
+                rows,
+                (
+                    "shape",
+                    f"mass\n[{labels['mass']}]",
+                    "mass\nshare [%]",
+                    f"volume\n[{l_unit}³]",
+                    f"density\n[{units['mass']}/{l_unit}³]",
+                ),
+                lambda row, u: (
+                    row["shape"] + (" (hole)" if row["hole"] else ""),
+                    _with_u(row["mass"], u.get("mass")),
+                    number(100 * row["mass_share"], 4),
+                    number(row["volume"]),  # — for none
+                    number(row["implied_density"], 4),
+                ),
+                left=2,
             ),
-        )
+            _part_table(
+                f"{name}: parts — centre of mass",
+                rows,
+                (f"centre of\nmass x [{length}]", f"\ny [{length}]", f"\nz [{length}]", "inertia\nshare [%]"),
+                lambda row, u: (
+                    *_place_cells(row["center_of_mass"], size, u),
+                    number(100 * row["inertia_share"], 4),
+                ),
+            ),
+            _part_table(
+                f"{name}: parts — principal moments (own CoM)",
+                rows,
+                (f"I1\n{unit}", f"I2\n{unit}", f"I3\n{unit}"),
+                lambda row, u: tuple(  # only the body's moments have a ± u
+                    _with_u(m / scale, None if s is None else s / scale, 5)
+                    for m, s in zip(row["principal_moments"], u.get("principal_moments", [None] * 3))
+                ),
+            ),
+        ]
 
 
 def _with_u(value: float, u: float | None, digits: int = 6) -> str:
@@ -580,14 +556,20 @@ def _place_cells(point: Any, size: float, spread: dict[str, Any]) -> list[str]:
 
 
 def _part_table(
-    title: str, names: list[str], headers: tuple[str, ...], cells: list, total: tuple, left: int = 1
+    title: str, rows: list[dict[str, Any]], headers: tuple[str, ...], cells: Callable, left: int = 1
 ) -> Rows:
-    """A parts table: at most :data:`MAX_TABLE_PARTS` parts (then how many more), the body's
-    total after a rule."""
-    rows = [(name, *row) for name, row in zip(names[:MAX_TABLE_PARTS], cells)]
-    if len(names) > MAX_TABLE_PARTS:  # CSV and JSON list them all
-        rows.append((f"… {len(names) - MAX_TABLE_PARTS} more parts", *("",) * len(headers)))
-    return Rows(title, ("part", *headers), rows, total=("total", *total), left=left, kind="parts")
+    """A parts table of ``rows`` (each part's JSON object, then the body's), each row's cells
+    ``cells(row, its "uncertainty" or {})``: at most :data:`MAX_TABLE_PARTS` parts (then how many
+    more), the body's total after a rule."""
+
+    def line(row: dict[str, Any]) -> tuple[str, ...]:
+        return (row["name"], *cells(row, row.get("uncertainty", {})))
+
+    *parts, total = rows
+    shown = [line(row) for row in parts[:MAX_TABLE_PARTS]]
+    if len(parts) > MAX_TABLE_PARTS:  # CSV and JSON list them all
+        shown.append((f"… {len(parts) - MAX_TABLE_PARTS} more parts", *("",) * len(headers)))
+    return Rows(title, ("part", *headers), shown, total=line(total), left=left, kind="parts")
 
 
 @dataclass(frozen=True, repr=False)
