@@ -403,18 +403,18 @@ class Body(Result):
         for name, part, element, length, share, spread in zip(
             rows.names, rows.parts, rows.elements, rows.lengths, shares, spreads
         ):
+            hole = bool(getattr(part, "subtract", False))
             volume = None if part is None else part_volume(part)
-            if volume is not None and getattr(part, "subtract", False):
-                volume = -volume  # a hole takes its volume away, as its mass
             out.append(
                 Part(
                     name=name,
                     shape=part.shape if part is not None else "point_cloud",
-                    hole=bool(getattr(part, "subtract", False)),
+                    hole=hole,
                     mass=float(element.mass),
                     center_of_mass=np.array(element.center_of_mass, dtype=float),
                     inertia_about_com=np.array(element.inertia_about_com, dtype=float),
-                    volume=volume if volume is None or length == 1.0 else volume * length**3,
+                    # a hole takes its volume away, as its mass
+                    volume=None if volume is None else (-volume if hole else volume) * length**3,
                     principal_moments=principal_axes(element.inertia_about_com)[0],
                     inertia_share=float(share),
                     integration_error=part._integration_error if isinstance(part, StepPart) else None,
