@@ -16,6 +16,7 @@ from rbi.errors import ArgumentError
 from rbi.files.output import Destination, OutputTarget
 from rbi.reprs import Result, Rows, pandas_module
 from rbi.spec.load import read_spec, spec_label
+from rbi.spec.units import unit_labels
 from rbi.sweeps.study import MAX_ROWS_SHOWN, Study, SweepSettings, check_settings
 from rbi.sweeps.tolerance import spread as spread_over
 from rbi.text import number
@@ -130,17 +131,11 @@ class SweepTable(Result):
         a number without one (a run number, a direction, a count)."""
         if column in UNITS:
             return UNITS[column]
-        length, mass = self.units["length"], self.units["mass"]
         field = column.rsplit(".", 1)[-1].split("[", 1)[0]
         kind = field.split("_")[0] if field.startswith(("com_", "moment_")) else field
-        if kind == "mass":
-            return mass
-        if kind == "density":
-            return f"{mass}/{length}³"
-        if kind in _INERTIA_FIELDS:
-            return f"{mass}·{length}²"
-        if kind in _LENGTH_FIELDS:
-            return length
+        kind = "inertia" if kind in _INERTIA_FIELDS else "length" if kind in _LENGTH_FIELDS else kind
+        if kind in ("mass", "density", "inertia", "length"):  # as the body's unit labels write them
+            return unit_labels(self.units["length"], self.units["mass"])[kind]
         return "deg" if field.endswith("_deg") else ""
 
     def to_dict(self) -> dict[str, Any]:
