@@ -558,10 +558,7 @@ class Body(Result):
         the spec has none."""
 
         loaded, spec = self._loaded, self._loaded.spec
-        if spec is not None and (spec.units.length, spec.units.mass) != (
-            loaded.length_unit,
-            loaded.mass_unit,
-        ):
+        if spec is not None:  # back in the spec's units after `in_units` (else the body as it is)
             loaded = convert_body(loaded, spec.units.length, spec.units.mass)
         return Checks(self, run_checks(loaded))
 
