@@ -335,18 +335,11 @@ class Dynamics(Result):
     json_keys = ("omega", "alpha", "point_acceleration", "force", "torque")
 
     def to_dict(self) -> dict[str, Any]:
-        body = self.place.body if self.place else None
-        return (
-            (named(body) if body else {"name": None, "units": {}, "warnings": []})
-            | {
-                "mode": self.mode,
-                "mass": body.mass if body else None,
-                "center_of_mass": body.center_of_mass if body else None,
-                "about": self.about,
-                "about_label": self.place.label if self.place else "point",
-            }
-            | self.json_fields()
-        )
+        nowhere: dict[str, Any] = {"name": None, "units": {}, "mass": None, "center_of_mass": None}
+        nowhere |= {"about": self.about, "about_label": "point", "warnings": []}  # made by hand: no body
+        head = self.place.to_dict() if self.place else nowhere
+        first = {key: head.pop(key) for key in ("name", "units", "warnings")}  # then the mode
+        return first | {"mode": self.mode} | head | self.json_fields()
 
     def rows(self) -> list[Rows]:
         body = self.place.body if self.place else None
