@@ -142,9 +142,8 @@ def named_plus_minus(spec: models.BodySpec) -> bool:
 def split_uncertain(raw: Any, path: str) -> Split | None:
     """The spec ``raw`` without its ± strings, or None when it has none and no top-level
     ``uncertainty``. InputError (``file: part: field: what is wrong``) for a ± that cannot be
-    read or that stands on something other than a number of a part."""
-    if not isinstance(raw, dict):
-        return None
+    read or that stands on something other than a number of a part. ``raw`` is a mapping (the
+    caller has refused anything else)."""
     parts = raw.get("parts")
     found: list[tuple[Any, ...]] = []
     plain = dict(raw)
@@ -666,38 +665,26 @@ def budget(
         part = np.abs(sensitivity) * result.u
         share = (part / spread) ** 2 if spread > 0 else np.zeros_like(part)
         ranked = np.argsort(-part, kind="stable")
-        entry: dict[str, Any] = {"quantity": QUANTITIES[q]}
-        if drawn is not None:
+        entry: dict[str, Any] = {"quantity": QUANTITIES[q], "value": value, "u": spread}
+        entry["interval"] = list(interval)
+        if drawn is not None:  # Monte Carlo's numbers in their place, the linear ones beside them
             y = drawn[:, q]
             symmetric = tuple(np.quantile(y, [0.5 - coverage / 2, 0.5 + coverage / 2]).tolist())
+            entry["linear"] = {key: entry[key] for key in ("value", "u", "interval")}
+            entry["linear"]["validated"] = validated(spread, interval, symmetric)
             entry.update(value=float(np.mean(y)), u=float(np.std(y - y[0], ddof=1)))
             entry["interval"] = list(shortest_interval(y, coverage))
-            entry["linear"] = {
-                "value": value,
-                "u": spread,
-                "interval": list(interval),
-                "validated": validated(spread, interval, symmetric),
-            }
-        else:
-            entry.update(value=value, u=spread, interval=list(interval))
         ranks = Contributions(result.inputs, ranked, sensitivity[ranked], part[ranked], share[ranked])
         entry.update(coverage=coverage, contributions=ranks)
         quantities.append(entry)
-    return (
-        {
-            "name": loaded.name,
-            "units": loaded.units,
-            "method": method,
-            "samples": samples if drawn is not None else None,
-            "quantities": quantities,
-        }
-        | (
-            {"estimated_sensitivities": [x.path for x, e in zip(result.inputs, result.estimated) if e]}
-            if result.estimated.any()
-            else {}
-        )
-        | ({} if result.inputs else {"warnings": [NO_PLUS_MINUS]})
-    )
+    samples_drawn = samples if drawn is not None else None
+    out: dict[str, Any] = {"name": loaded.name, "units": loaded.units, "method": method, "samples": samples_drawn}
+    out["quantities"] = quantities
+    if result.estimated.any():
+        out["estimated_sensitivities"] = [x.path for x, e in zip(result.inputs, result.estimated) if e]
+    if not result.inputs:
+        out["warnings"] = [NO_PLUS_MINUS]
+    return out
 
 
 def part_uncertainties(loaded: Any, expand: bool = False) -> MassProperties:
