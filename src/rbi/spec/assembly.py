@@ -39,10 +39,8 @@ def expanded(loaded, expand: bool = True, seen: dict | None = None) -> Expanded:
     if expand and seen is None and part_count(loaded, MAX_EXPANDED) > MAX_EXPANDED:
         raise InputError(f"{loaded.path}: more than {MAX_EXPANDED:,} parts to list")
     spec = loaded.spec
-    parts = list(spec.parts) if spec is not None else []
-    ratio = (
-        1.0 if spec is None else LENGTH_UNITS_IN_M[spec.units.length] / LENGTH_UNITS_IN_M[loaded.length_unit]
-    )
+    parts = list(spec.parts)
+    ratio = LENGTH_UNITS_IN_M[spec.units.length] / LENGTH_UNITS_IN_M[loaded.length_unit]
     rows = Expanded([], [], MassProperties.concatenate(list(loaded.elements)), [])
     pieces = []
     for i, element in enumerate(loaded.elements):

@@ -85,7 +85,7 @@ def run_checks(body: Any) -> list[Check]:
     """Every comparison the loaded body's `expect:` block asks for, in a fixed order
     (mass, centre of mass, principal moments, inertia); InputError when it has none."""
 
-    expect = body.spec.expect if body.spec is not None else None
+    expect = body.spec.expect
     if expect is None:
         raise InputError(
             f"{body.path}: expect: the spec has no `expect:` block, so there is nothing to check "

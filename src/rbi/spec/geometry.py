@@ -59,7 +59,7 @@ def part_geometry(body) -> list[dict[str, Any]]:
     part, one per copy of a patterned part, and the point cloud's points."""
     spec = body.spec
     out = []
-    parts = list(spec.parts) if spec is not None else []
+    parts = list(spec.parts)
     for index, element in enumerate(body.elements):
         part = parts[index] if index < len(parts) else None
         shape = part.shape if part is not None else "point_cloud"
@@ -124,8 +124,8 @@ def part_count(body, most: int) -> int:
     pattern is copied and each sub-assembly replaced by its parts (the point clouds counted one
     each), counted until past ``most`` (a tree of sub-assemblies is not walked further): how
     many primitives :func:`part_geometry` gives, and rows ``rbi parts --expand`` lists."""
-    total = int(body.spec is not None and body.spec.point_cloud is not None)
-    for part in body.spec.parts if body.spec is not None else []:
+    total = int(body.spec.point_cloud is not None)
+    for part in body.spec.parts:
         count = 1 if part.pattern is None else int(part.pattern.count)
         total += count * (part_count(part._loaded, most) if isinstance(part, models.AssemblyPart) else 1)
         if total > most:
@@ -264,8 +264,6 @@ def _ellipsoid(center, semi_axes, rotation) -> dict[str, Any]:
 def _cloud_points(spec, spec_path: str) -> dict[str, Any] | None:
     """The cloud's points (already read once for its mass properties), or None when there are
     too many to draw one by one."""
-    if spec is None or spec.point_cloud is None:
-        return None
     label = f"{spec_path}: point_cloud: file: {spec.point_cloud.file}"
     _, positions = read_point_cloud(spec_relative_file(spec_path, spec.point_cloud.file, label), label)
     if len(positions) > MAX_DRAWN_POINTS:

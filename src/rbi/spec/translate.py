@@ -60,9 +60,10 @@ class LoadedBody:
     pivot: np.ndarray | None
     elements: MassProperties
     part_names: list[str | None]
+    spec: Any = field(repr=False)
+    """The validated :class:`~rbi.spec.models.BodySpec` the body was built from."""
     expect: dict[str, Any] | None = None
     spin_axis: np.ndarray | None = None
-    spec: Any = field(default=None, repr=False)
     warnings: list[str] = field(default_factory=list)
     """Lines about the spec a user should see (units that look wrong: :mod:`rbi.spec.plausibility`)."""
     files: tuple[str, ...] = ()
@@ -288,7 +289,7 @@ class Columns:
     ``parts[index[r]]``, with its own values but where ``values`` (by field, or ``(field,
     component)``) gives a column (Monte Carlo draws and the steps of sensitivities,
     :mod:`rbi.spec.uncertain`). The parts are of one shape and give their mass alike (``mass``,
-    a density, or one material: :func:`_given_by`)."""
+    a density, or one material: :func:`given_by`)."""
 
     def __init__(self, parts: list, index: np.ndarray, values: dict[tuple[Any, ...], np.ndarray]) -> None:
         self.parts, self.index, self.values = parts, np.asarray(index), values
@@ -455,7 +456,7 @@ def _finite(mass: Any, com: np.ndarray, inertia: np.ndarray) -> Any:
     return np.isfinite(mass) & np.all(np.isfinite(com), axis=-1) & np.all(np.isfinite(inertia), axis=(-2, -1))
 
 
-def _given_by(part: Any) -> Any:
+def given_by(part: Any) -> Any:
     """How a part gives its mass, alike for the parts of one :class:`Columns`: its ``mass``, a
     density number, or the density of one material (by name)."""
     if part.mass is not None:
@@ -475,7 +476,7 @@ def stacked_parts(spec: models.BodySpec, path: str) -> tuple[MassProperties, lis
     groups: dict[tuple[type, Any], list[int]] = {}
     for i, part in enumerate(parts):
         if type(part) in BUILDERS:
-            groups.setdefault((type(part), _given_by(part)), []).append(i)
+            groups.setdefault((type(part), given_by(part)), []).append(i)
     for (kind, _), indices in groups.items():
         chosen = [parts[i] for i in indices]
         with np.errstate(all="ignore"):

@@ -42,7 +42,7 @@ from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.spec import models
 from rbi.spec.errors import field_text, named_part
 from rbi.spec.pattern import copy_motions
-from rbi.spec.translate import BUILDERS, Columns, part_element, plain_part, rotation_matrix
+from rbi.spec.translate import BUILDERS, Columns, given_by, part_element, plain_part, rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
 
 PLUS_MINUS = re.compile(r"±|\+/-|\+-")
@@ -293,7 +293,7 @@ def _file_stack(
 
 @np.errstate(all="ignore")
 def part_stack(
-    loaded: Any, index: int, inputs: list[UncertainInput], values: np.ndarray, expand: bool = False
+    loaded: Any, index: int | list[int], inputs: list, values: np.ndarray, expand: bool = False
 ) -> Stack:
     """Part ``index`` of the body ``loaded``: its mass, centre of mass and inertia about it,
     ``(n,)``, ``(n, 3)``, ``(n, 3, 3)``, file units, with its uncertain ``inputs`` set to each row
@@ -301,8 +301,12 @@ def part_stack(
     the body counts it); with ``expand``, a sub-assembly's parts in each of its copies,
     ``(n, r, ...)``, as ``rbi parts --expand`` lists them. The shapes of
     :data:`rbi.spec.translate.BUILDERS` and the files' solids are built for all rows at once,
-    then turned and patterned as one stack; the other shapes row by row."""
-    part, spec, n = loaded.spec.parts[index], loaded.spec, len(values)
+    then turned and patterned as one stack; the other shapes row by row. ``index`` may also list
+    parts built together (:func:`part_derivatives`: one shape of ``BUILDERS`` as written, the
+    same inputs, mass given alike and the same sign): each takes its share of the rows in turn,
+    ``inputs`` naming the first's."""
+    indices = [index] if isinstance(index, int) else index
+    part, spec, n = loaded.spec.parts[indices[0]], loaded.spec, len(values)
     sign = -1.0 if getattr(part, "subtract", False) else 1.0
     if type(part) not in BUILDERS and not isinstance(part, PLACED):
         rows = MassProperties.concatenate(
@@ -310,7 +314,8 @@ def part_stack(
         )
         return sign * rows.mass, rows.center_of_mass, sign * rows.inertia_about_com
     own = {i.steps: values[:, k] for k, i in enumerate(inputs) if i.steps[0] not in SEPARATE}
-    columns = Columns([part], np.zeros(n, int), own)
+    rows = np.repeat(np.arange(len(indices)), n // len(indices))  # the part of each row
+    columns = Columns([spec.parts[i] for i in indices], rows, own)
     R = _turns(part, inputs, values)
     if isinstance(part, PLACED):
         mass, com, inertia = _file_stack(loaded, part, inputs, values, columns, expand)
@@ -356,18 +361,22 @@ def _flat(stack: tuple[np.ndarray, np.ndarray, np.ndarray]) -> np.ndarray:
 
 
 def _complex_step(
-    loaded: Any, index: int, group: list[UncertainInput], expand: bool = False
+    loaded: Any, index: int | list[int], group: list[UncertainInput], expand: bool = False
 ) -> np.ndarray | None:
     """(len(group), [r,] 13): the derivatives of part ``index``'s :func:`_flat` properties (its
     rows with ``expand``, as :func:`part_stack`) by a complex step through :func:`part_stack`
     (x + ih gives h ∂f/∂x exactly), or None when its builder cannot carry complex numbers (any
-    float() on the way)."""
+    float() on the way). ``index`` may list parts built together, ``group`` then their inputs
+    in turn."""
+    count = 1 if isinstance(index, int) else len(index)
     h = 1e-20 * np.array([abs(i.value) or 10.0 * i.u or 1.0 for i in group])
-    values = np.array([i.value for i in group]) + np.diag(1j * h)  # row j: input j stepped
+    each = len(group) // count  # inputs of each part
+    values = np.repeat(np.array([i.value for i in group]).reshape(count, each), each, axis=0).astype(complex)
+    values[np.arange(len(group)), np.tile(np.arange(each), count)] += 1j * h  # row j: input j stepped
     with warnings.catch_warnings(), np.errstate(all="ignore"):
         warnings.simplefilter("error", np.exceptions.ComplexWarning)
         try:
-            stack = part_stack(loaded, index, group, values, expand)
+            stack = part_stack(loaded, index, group[:each], values, expand)
         except (TypeError, ValueError, np.exceptions.ComplexWarning):
             return None
     if not any(map(np.iscomplexobj, stack)):
@@ -383,34 +392,21 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     estimated (k,) (finite differences, ~1e-9: a part whose builder cannot carry a complex
     step)."""
     inputs, spec = loaded.spec._uncertain, loaded.spec
-    k = len(inputs)
+    k, grouped = len(inputs), by_part(inputs)
     derivative, estimated = np.zeros((k, 13)), np.zeros(k, dtype=bool)
-    alike: dict[tuple, list[int]] = {}  # parts built together: one shape, inputs and mass kind
-    for index, chosen in by_part(inputs).items():
-        group = [inputs[n] for n in chosen]
-        part = spec.parts[index]
+    together: dict[Any, list[int]] = {}  # parts built together: one shape, inputs, mass kind and sign
+    for index, chosen in grouped.items():
+        part, steps = spec.parts[index], tuple(inputs[n].steps for n in chosen)
         # built by the whole-array closed forms of BUILDERS, which also take complex numbers
-        if type(part) in BUILDERS and plain_part(part) and all(len(i.steps) <= 2 for i in group):
-            density = part.density if part.mass is None and isinstance(part.density, str) else None
-            key = (type(part), tuple(i.steps for i in group), part.mass is None, density)
-            alike.setdefault(key, []).append(index)
-            continue
-        exact = _complex_step(loaded, index, group)
-        estimated[chosen] = exact is None
-        derivative[chosen] = _differences(loaded, index, group) if exact is None else exact
-    grouped = by_part(inputs)
-    for (kind, steps, _, _), indices in alike.items():  # complex step: x + ih gives h ∂f/∂x exactly
+        alike = type(part) in BUILDERS and plain_part(part) and all(len(each) <= 2 for each in steps)
+        key = (type(part), steps, given_by(part), getattr(part, "subtract", False)) if alike else index
+        together.setdefault(key, []).append(index)
+    for indices in together.values():
         chosen = [n for index in indices for n in grouped[index]]
-        nominal = np.array([inputs[n].value for n in chosen]).reshape(len(indices), len(steps))
-        h = 1e-20 * np.array([abs(inputs[n].value) or 10.0 * inputs[n].u or 1.0 for n in chosen])
-        values = np.repeat(nominal, len(steps), axis=0).astype(complex)
-        values[np.arange(len(chosen)), np.tile(np.arange(len(steps)), len(indices))] += 1j * h
-        rows = np.repeat(np.arange(len(indices)), len(steps))
-        columns = Columns([spec.parts[i] for i in indices], rows, dict(zip(steps, values.T)))
-        with np.errstate(all="ignore"):
-            mass, com, inertia = BUILDERS[kind](columns, spec.units)
-        sign = np.array([-1.0 if getattr(spec.parts[i], "subtract", False) else 1.0 for i in indices])[rows]
-        derivative[chosen] = _flat((sign * mass, com, sign[:, None, None] * inertia)).imag / h[:, None]
+        group = [inputs[n] for n in chosen]
+        exact = _complex_step(loaded, indices, group)
+        estimated[chosen] = exact is None  # a part alone (BUILDERS carry the step)
+        derivative[chosen] = _differences(loaded, indices[0], group) if exact is None else exact
     return np.array([i.part for i in inputs], dtype=int), derivative / _flat_units(loaded), estimated
 
 
@@ -677,9 +673,8 @@ def budget(
         ranks = Contributions(result.inputs, ranked, sensitivity[ranked], part[ranked], share[ranked])
         entry.update(coverage=coverage, contributions=ranks)
         quantities.append(entry)
-    samples_drawn = samples if drawn is not None else None
-    out: dict[str, Any] = {"name": loaded.name, "units": loaded.units, "method": method, "samples": samples_drawn}
-    out["quantities"] = quantities
+    out: dict[str, Any] = {"name": loaded.name, "units": loaded.units, "method": method}
+    out.update(samples=samples if drawn is not None else None, quantities=quantities)
     if result.estimated.any():
         out["estimated_sensitivities"] = [x.path for x, e in zip(result.inputs, result.estimated) if e]
     if not result.inputs:
