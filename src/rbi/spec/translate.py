@@ -161,16 +161,24 @@ def mesh_element(part: models.MeshPart, units: models.Units, spec_path: str) -> 
         solid = read_mesh_solid(file, part.inertia, part.repair)
     except ValueError as exc:
         raise ValueError(f"file: {part.file}: {exc}") from None
-    unit = solid.unit  # at density 1: the mass is the volume (or area)
-    scale = scalar(part.scale)  # complex in a complex step (rbi.spec.uncertain)
-    measure = unit.mass * scale ** (2 if part.inertia == "shell" else 3)  # area or volume
-    part._enclosed_volume = None if part.inertia == "shell" else measure
     part._mesh_notes = _mesh_notes(part, solid, units)
+    # scale: complex in a complex step (rbi.spec.uncertain)
+    element, measure = _file_solid(part, solid.unit, scalar(part.scale), units)
+    part._enclosed_volume = None if part.inertia == "shell" else measure
+    return element
+
+
+def _file_solid(part, unit: MassProperties, scale: Any, units: models.Units) -> tuple[MassProperties, Any]:
+    """A mesh's or STEP file's solid in the body, and its measure (its volume, or a shell's
+    area): ``unit``, the solid at density 1 in the file's length unit about the file's origin
+    (its mass the measure), scaled by ``scale`` to the spec's length unit and given the part's
+    mass (or density × measure), turned by ``rotation`` about that origin, moved to ``position``."""
+    measure = unit.mass * scale ** (2 if getattr(part, "inertia", None) == "shell" else 3)
     mass = _solid_mass(part, measure, units)
     # inertia per density scales as scale⁵ (scale⁴ for a surface), the density as 1 / measure
     inertia = unit.inertia_about_com * (mass / unit.mass * scale * scale)
-    com = unit.center_of_mass * scale  # file axes about its origin: turned, then moved to position
-    return MassProperties(mass, com, inertia).transformed(rotation_matrix(part.rotation), part.position)
+    props = MassProperties(mass, unit.center_of_mass * scale, inertia)  # file axes about its origin
+    return props.transformed(rotation_matrix(part.rotation), part.position), measure
 
 
 def assembly_element(part: models.AssemblyPart, units: models.Units) -> MassProperties:
@@ -209,14 +217,10 @@ def step_element(part: models.StepPart, units: models.Units, spec_path: str) -> 
             f"file: {part.file}: {exc}" if not str(exc).startswith("solid:") else str(exc)
         ) from None
     per_metre = 1.0 / LENGTH_UNITS_IN_M[units.length]
-    props = MassProperties.sum(s.props for s in chosen)  # unit density, metres: mass is the volume
-    volume = props.mass * per_metre**3
-    part._step_volume = volume
     part._integration_error = max(s.integration_error for s in chosen)
-    mass = _solid_mass(part, volume, units)
-    inertia = props.inertia_about_com * per_metre**5 * (mass / volume)
-    com = props.center_of_mass * per_metre  # file axes about its origin: turned, then moved to position
-    return MassProperties(mass, com, inertia).transformed(rotation_matrix(part.rotation), part.position)
+    props = MassProperties.sum(s.props for s in chosen)  # unit density, metres: mass is the volume
+    element, part._step_volume = _file_solid(part, props, per_metre, units)
+    return element
 
 
 def _mesh_notes(part: models.MeshPart, solid, units: models.Units) -> tuple[str, ...]:

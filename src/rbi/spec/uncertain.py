@@ -579,8 +579,7 @@ def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
     body = drawn(loaded, n, generator(seed))
     with np.errstate(all="ignore"):
         moments = np.linalg.eigvalsh(body.inertia_about_com)
-    stack = (body.mass, body.center_of_mass, body.inertia_about_com)
-    return np.concatenate([_flat(stack), moments], axis=1)
+    return np.concatenate([_flat((body.mass, body.center_of_mass, body.inertia_about_com)), moments], axis=1)
 
 
 class Contributions(NamedTuple):
