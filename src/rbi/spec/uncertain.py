@@ -403,10 +403,12 @@ def part_derivatives(loaded: Any) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         together.setdefault(key, []).append(index)
     for indices in together.values():
         chosen = [n for index in indices for n in grouped[index]]
-        group = [inputs[n] for n in chosen]
-        exact = _complex_step(loaded, indices, group)
-        estimated[chosen] = exact is None  # a part alone (BUILDERS carry the step)
-        derivative[chosen] = _differences(loaded, indices[0], group) if exact is None else exact
+        exact = _complex_step(loaded, indices, [inputs[n] for n in chosen])
+        estimated[chosen] = exact is None
+        if exact is None:  # part by part (in practice a part alone: BUILDERS carry the step)
+            alone = ([inputs[n] for n in grouped[i]] for i in indices)
+            exact = np.concatenate([_differences(loaded, i, group) for i, group in zip(indices, alone)])
+        derivative[chosen] = exact
     return np.array([i.part for i in inputs], dtype=int), derivative / _flat_units(loaded), estimated
 
 
