@@ -439,6 +439,17 @@ def depth_first(parents: list[int], root: int) -> list[int]:
     return order
 
 
+def on_loop(parents: list[int], order: list[int]) -> tuple[int, int]:
+    """The first row no root reaches (``parents``: each row's parent row; ``order``: the rows
+    reached, :func:`depth_first`) and the first row on the loop its chain of parents runs into."""
+    first = at = min(set(range(len(parents))) - set(order))
+    seen = set()
+    while at not in seen:
+        seen.add(at)
+        at = parents[at]
+    return first, at
+
+
 def stacked(arrays: list, shape: tuple[int, ...]) -> np.ndarray:
     """The float arrays of ``shape`` in ``arrays`` as one (n, *shape) array: the values
     ``np.array(arrays, dtype=float)`` gives, made by one concatenation (numpy's discovery of a
@@ -487,12 +498,8 @@ class RobotModel:
         """:attr:`columns` as rbi.robot reads them: InputError, one line, when the joints form
         a loop (a link no root reaches: on a loop, or below one)."""
         columns = self.columns
-        n = len(columns)
-        if len(columns.order) < n:
-            parents, at, seen = columns.parents, min(set(range(n)) - set(columns.order)), set()
-            while at not in seen:
-                seen.add(at)
-                at = parents[at]
+        if len(columns.order) < len(columns):
+            _, at = on_loop(columns.parents, columns.order)
             raise InputError(
                 f"{self.path}: {columns.link(at).label}: the joints form a loop through it; the links "
                 "of a robot form a tree (each hangs from one parent, down from a root)"

@@ -36,7 +36,7 @@ from rbi.formats.urdf import plain_text, read_urdf
 from rbi.formats.xacro_sandbox import expand_xacro
 
 ROBOT_FILE_EXTENSIONS = (".urdf", ".sdf", ".xml", ".mjcf", ".xacro")
-FORMAT_BY_ROOT = {"robot": "urdf", "sdf": "sdf", "mujoco": "mjcf"}
+READER_BY_ROOT = {"robot": read_urdf, "sdf": read_sdf, "mujoco": read_mjcf}
 
 
 def is_robot_file(path: str) -> bool:
@@ -66,13 +66,12 @@ def read_robot(path: str, package_paths: dict | None = None, geometry: bool = Tr
         if plain is not None:  # a URDF read from its plain text, not parsed into a tree
             return read_urdf(document, package_paths, geometry, plain)
         document.root = robot_xml.parse(path, document.text)
-    fmt = FORMAT_BY_ROOT.get(document.root.tag)
-    if fmt is None:
+    reader = READER_BY_ROOT.get(document.root.tag)
+    if reader is None:
         raise InputError(
             f"{path}: not a URDF, SDF or MJCF document (the root element is "
             f"<{_short(document.root.tag)}>, expected <robot>, <sdf> or <mujoco>)"
         )
-    reader = {"urdf": read_urdf, "sdf": read_sdf, "mjcf": read_mjcf}[fmt]
     return reader(document, package_paths, geometry)
 
 

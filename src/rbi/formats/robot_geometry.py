@@ -108,8 +108,6 @@ def primitive(kind: str, size: tuple[float, ...], shell: bool = False) -> tuple[
     closed forms at the mass of a unit density. Sizes as :class:`Geom` gives them."""
     if kind == "ellipsoid" and shell:
         raise ValueError("a shell ellipsoid has no closed form; give it a volume (shellinertia off)")
-    if (kind, bool(shell)) not in PRIMITIVES:
-        raise ValueError(f"no volume: {kind}")
     measure_of, moments_of = PRIMITIVES[(kind, bool(shell))]
     measure = measure_of(*size)
     moments = moments_of(measure, *size)

@@ -20,6 +20,7 @@ from urllib.parse import unquote
 
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.paths import spec_relative_file
+from rbi.formats.robot import Where, short
 
 
 def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dict[str, list[Path]]:
@@ -52,9 +53,10 @@ def parse_package_paths(values: Mapping[str, str] | Sequence[str] | None) -> dic
     return found
 
 
-def resolve_mesh(robot_path: str, uri: str, label: str, package_paths: dict[str, list[Path]] | None) -> Path:
-    """The mesh file ``uri`` names in the robot file at ``robot_path``; InputError (``label``
-    first) when it cannot be found or may not be read."""
+def resolve_mesh(where: Where, uri: str, what: str, package_paths: dict[str, list[Path]] | None) -> Path:
+    """The mesh file ``uri`` names in the robot file at ``where.path``; InputError (the file,
+    the link, ``what`` and the URI first) when it cannot be found or may not be read."""
+    robot_path, label = where.path, f"{where.path}: {where.label}: {what}: {short(uri, 1000)}"
     if "\x00" in uri:
         raise InputError(f"{label}: not a usable path (it contains a NUL character)")
     for scheme in ("package://", "model://"):

@@ -148,9 +148,6 @@ class XmlElement:
                 yield element
             stack.extend(reversed(element.children))
 
-    def __iter__(self):
-        return iter(self.children)
-
     def __repr__(self) -> str:
         return f"XmlElement({self.tag!r}, line {self.line})"
 

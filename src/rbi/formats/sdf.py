@@ -244,12 +244,7 @@ def _geom(where: Where, shape, pose: Pose, label: str, package_paths) -> Geom:
             raise where.error(f"{label}/uri: missing")
         scale_element = shape.child("scale")
         scale = where.numbers("1 1 1" if scale_element is None else scale_element.text, f"{label}/scale", 3)
-        mesh = resolve_mesh(
-            where.path,
-            uri,
-            f"{where.path}: {where.label}: {label}: {short(uri, 1000)}",
-            package_paths,
-        )
+        mesh = resolve_mesh(where, uri, label, package_paths)
         return Geom("mesh", (), pose, label, mesh_file=mesh, mesh_scale=np.array(scale, dtype=float))
     return Geom(kind, (), pose, label)
 

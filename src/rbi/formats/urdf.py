@@ -52,6 +52,7 @@ from rbi.formats.robot import (
     depth_first,
     element_label,
     from_six,
+    on_loop,
     refuse_shared_keys,
     rpy_matrix,
     short,
@@ -444,12 +445,10 @@ def _meshes(rows: Rows, shape: Node, label: str, packages) -> list[tuple]:
         if not filename:
             raise rows.where(k).error(f"{label}: filename: missing")
     scales = rows.numbers(shape.at.get("scale"), b"1 1 1", (1, 3), f"{label}: scale")
-    found = []
-    for k, filename in enumerate(filenames):
-        where = rows.where(k)
-        shown = f"{where.path}: {where.label}: {label}: {short(filename, 1000)}"
-        found.append((resolve_mesh(where.path, filename, shown, packages), scales[k].copy()))
-    return found
+    return [
+        (resolve_mesh(rows.where(k), filename, label, packages), scales[k].copy())
+        for k, filename in enumerate(filenames)
+    ]
 
 
 def _sizes(rows: Rows, shape: Node, label: str) -> np.ndarray:
@@ -501,11 +500,13 @@ def _joints(path: str, names: list[str], chunks: list) -> dict:
                 efforts[row] = effort
 
     in_order(chunks, read, parents)
-    order = _one_tree(parents)
-    if len({name for name in joint_names if name}) != sum(map(bool, joint_names)) or order is None:
-        _refuse_tree(path, names, parents, joint_names)
+    rows = [n if parent < 0 else parent for parent in parents]  # a root's parent: n
+    order = depth_first(rows, n)
+    unique = len({name for name in joint_names if name}) == sum(map(bool, joint_names))
+    if not unique or parents.count(-1) != 1 or len(order) != n:  # (one tree: one root, reaching every link)
+        _refuse_tree(path, names, rows, order, joint_names)
     return {
-        "parents": [n if parent < 0 else parent for parent in parents],
+        "parents": rows,
         "order": order,
         "rotations": rotations,
         "translations": translations,
@@ -570,39 +571,24 @@ def _axes(rows: Rows, axis: Node | None, motions: list[str]) -> np.ndarray:
     return values
 
 
-def _one_tree(parents: list[int]) -> list[int] | None:
-    """The links' rows parents first, as :func:`rbi.formats.robot.depth_first` orders them, when
-    they form one tree (one root, every link reached from it; ``parents``: each link's parent
-    row, -1 for none); None when they do not."""
-    n = len(parents)
-    if parents.count(-1) != 1:
-        return None
-    order = depth_first([n if parent < 0 else parent for parent in parents], n)
-    return order if len(order) == n else None
-
-
-def _refuse_tree(path: str, names: list[str], parents: list[int], joint_names: list[str]) -> None:
+def _refuse_tree(path: str, names: list[str], parents: list[int], order: list[int], joint_names: list[str]) -> None:
     """InputError for joints that share a name, links no joint joins to the one root, or
-    joints that form a loop (``parents``: each link's parent row, -1 for none)."""
+    joints that form a loop (``parents``: each link's parent row, n for none; ``order``: the
+    rows reached from the roots, :func:`depth_first`)."""
     labels = [element_label("link", row, name) for row, name in enumerate(names)]
     check_unique_joint_names(path, list(zip(labels, joint_names)), "urdfdom")
-    roots = [row for row, parent in enumerate(parents) if parent < 0]
+    roots = [row for row, parent in enumerate(parents) if parent == len(names)]
     if len(roots) > 1:
         shown = ", ".join(repr(short(names[row])) for row in roots[:4]) + (", ..." if len(roots) > 4 else "")
         raise InputError(
             f"{path}: {len(roots)} root links ({shown}): no joint joins them; a URDF has one root "
             "link that every other hangs from (urdfdom and pybullet refuse it)"
         )
-    for row, link in enumerate(labels):  # a loop: the first link whose chain of parents runs into it
-        seen, at = set(), row
-        while parents[at] >= 0:
-            if at in seen:
-                raise InputError(
-                    f"{path}: {link}: the joints form a loop through link {short(names[at])!r}; a "
-                    "URDF's links form a tree"
-                )
-            seen.add(at)
-            at = parents[at]
+    row, at = on_loop(parents, order)
+    raise InputError(
+        f"{path}: {labels[row]}: the joints form a loop through link {short(names[at])!r}; a "
+        "URDF's links form a tree"
+    )
 
 
 def attach_elements(model: RobotModel) -> None:
