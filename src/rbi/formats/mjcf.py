@@ -479,14 +479,13 @@ class _Bodies:
         group = where.number(attrs.get("group"), "group", 0.0)
         size = where.numbers(attrs.get("size", "0 0 0"), "size", (1, 2, 3)) if "size" in attrs else []
         pose, size = self.geom_frame(where, attrs, kind, size)
-        pose = frame.then(pose)
         mass = where.number(attrs.get("mass"), "mass") if "mass" in attrs else None
         density = where.number(attrs.get("density"), "density", 1000.0)
         if (mass if mass is not None else density) < 0:
             what = f"mass {mass!r}" if mass is not None else f"density {density!r}"
             raise where.error(f"{what} is negative; MuJoCo's compiler refuses the model")
         shell = (attrs.get("shellinertia") or "false") == "true"
-        geom = Geom(kind, (), pose, label, mass=mass, density=density, shell=shell)
+        geom = Geom(kind, (), frame.then(pose), label, mass=mass, density=density, shell=shell)
         factors = SIZES.get(kind)
         if factors is not None:
             geom.size = tuple(f * v for f, v in zip(factors, _size(where, size, len(factors), kind)))

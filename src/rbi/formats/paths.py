@@ -54,11 +54,7 @@ def spec_relative_file(spec_path: str | Path, file: str, label: str, owner: str 
     named = Path(file)
     candidate = named if named.is_absolute() else folder / named
     if not _outside_allowed.get():
-        try:
-            inside = candidate.resolve().is_relative_to(folder.resolve())
-        except (OSError, RuntimeError):  # a symlink loop, or a path the OS cannot resolve
-            inside = False
-        if named.is_absolute() or not inside:
+        if named.is_absolute() or not inside(candidate, folder):
             raise InputError(
                 f"{label}: the path leaves the {owner}'s folder (absolute, '..' or a symlink out of it); "
                 f"rbi reads only files beside the {owner} unless given {ALLOW_OUTSIDE_FLAG}"
@@ -71,6 +67,15 @@ def spec_relative_file(spec_path: str | Path, file: str, label: str, owner: str 
     if not is_file:
         raise InputError(f"{label}: " + ("not a regular file" if exists else "no such file"))
     return candidate
+
+
+def inside(path: Path, folder: Path) -> bool:
+    """Does ``path`` resolve to a place inside ``folder`` (False for a symlink loop, or a path
+    the OS cannot resolve)?"""
+    try:
+        return path.resolve().is_relative_to(folder.resolve())
+    except (OSError, RuntimeError):
+        return False
 
 
 def file_key(path: Path) -> tuple:

@@ -19,7 +19,7 @@ from pathlib import Path
 from urllib.parse import unquote
 
 from rbi.errors import ArgumentError, InputError, literal
-from rbi.formats.paths import spec_relative_file
+from rbi.formats.paths import inside, spec_relative_file
 from rbi.formats.robot import Where, short
 
 
@@ -83,11 +83,7 @@ def _in_package(
             trusted.append(Path(folder) / name)
     for folder in trusted:
         candidate = folder / inner
-        try:
-            inside = candidate.resolve().is_relative_to(folder.resolve())
-        except (OSError, RuntimeError):
-            inside = False
-        if inside and candidate.is_file():
+        if inside(candidate, folder) and candidate.is_file():
             return candidate
     here = Path(robot_path).parent
     beside = [f"{name}/{inner}", rest]

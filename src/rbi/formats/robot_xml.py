@@ -188,7 +188,10 @@ def decoded(path: str, data: bytes | None = None) -> XmlDocument:
     parsed (``root`` None): InputError for a file too large, an encoding not read, text that
     does not decode, or a token too long to parse."""
     if data is None:
-        data = read_bytes(path)
+        try:
+            data = read_input_file(path, MAX_FILE_BYTES, "robot file")
+        except InputFileRefused as exc:
+            raise InputError(f"{path}: {exc}") from None
     prefix, body, suffix, encoding = _split(path, data)
     utf8 = body  # UTF-8 as it is, or decoded from UTF-16 already (_split)
     if encoding == "utf-8":
@@ -208,14 +211,6 @@ def decoded(path: str, data: bytes | None = None) -> XmlDocument:
             ) from None
     _refuse_huge_tokens(path, utf8)
     return XmlDocument(path, None, utf8, prefix, suffix, encoding)
-
-
-def read_bytes(path: str) -> bytes:
-    """The bytes of the robot file ``path``; InputError (naming it) for one too large or unreadable."""
-    try:
-        return read_input_file(path, MAX_FILE_BYTES, "robot file")
-    except InputFileRefused as exc:
-        raise InputError(f"{path}: {exc}") from None
 
 
 def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:

@@ -339,10 +339,8 @@ def _links(path: str, chunks: list, geometry: bool, packages, line: Callable[[in
                     "name (urdfdom and pybullet refuse it)"
                 )
             names[rows.indices[k]] = word
-        rows.path, rows.label = (
-            path,
-            lambda k, rows=rows, words=words: element_label("link", rows.indices[k], words[k]),
-        )
+        rows.path = path
+        rows.label = lambda k, rows=rows, words=words: element_label("link", rows.indices[k], words[k])
         inertial = rows.top.child("inertial")
         if inertial is not None:
             at = rows.indices

@@ -229,22 +229,15 @@ def _answer(path: str, done: subprocess.CompletedProcess) -> tuple[bytes, list[s
         answer = json.loads(done.stdout.decode("utf-8"))
     except (UnicodeDecodeError, ValueError):
         answer = {"error": "memory" if b"MemoryError" in done.stderr else "crash"}
+    meanings = {  # the child's error codes; any other error is its own message
+        "missing": "a .xacro file needs the xacro package: pip install '.[xacro]' in rbi's source folder (or "
+        "run `xacro FILE > FILE.urdf` and read that)",
+        "memory": f"xacro ran out of its {MEMORY_LIMIT_BYTES // 2**30} GiB memory limit expanding it; refused "
+        "(a property or expression that builds a huge string or list)",
+        "crash": f"xacro needed more than {MEMORY_LIMIT_BYTES // 2**30} GiB of memory or {TIME_LIMIT_S:g} s "
+        "to expand it; refused",
+    }
     error = answer.get("error")
-    if error == "missing":
-        raise InputError(
-            f"{path}: a .xacro file needs the xacro package: pip install '.[xacro]' in rbi's source folder (or run "
-            "`xacro FILE > FILE.urdf` and read that)"
-        )
-    if error == "memory":
-        raise InputError(
-            f"{path}: xacro ran out of its {MEMORY_LIMIT_BYTES // 2**30} GiB memory limit expanding it; "
-            "refused (a property or expression that builds a huge string or list)"
-        )
-    if error == "crash":
-        raise InputError(
-            f"{path}: xacro needed more than {MEMORY_LIMIT_BYTES // 2**30} GiB of memory or "
-            f"{TIME_LIMIT_S:g} s to expand it; refused"
-        )
     if error:
-        raise InputError(f"{path}: {error}")
+        raise InputError(f"{path}: {meanings.get(error, error)}")
     return answer["xml"].encode("utf-8"), list(answer["includes"])
