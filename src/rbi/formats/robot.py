@@ -579,14 +579,13 @@ class Where:
                     f"{what}: must be {'zero or ' if allow_zero else ''}greater than 0 (got {value!r})"
                 )
 
-    def angles(self, values, what: str) -> list[float]:
+    def angles(self, values, what: str) -> None:
         for axis, angle in zip(("roll", "pitch", "yaw"), values):
             if abs(angle) > MAX_ANGLE_RAD:
                 raise self.error(
                     f"{what}: {axis} = {angle:.6g} rad is not an angle a double can hold to a "
                     f"microradian: give it within one turn (between -{math.pi:.5f} and {math.pi:.5f})"
                 )
-        return list(values)
 
     def check_inertia_range(self, inertia: np.ndarray) -> None:
         too_large = overflowing_sum(inertia)

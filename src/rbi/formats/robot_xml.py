@@ -69,8 +69,8 @@ _NO_CHILDREN: list = []  # the children of every element that has none (never ap
 
 
 class XmlElement:
-    """One element: ``tag`` without namespace, ``attrib`` as written (:meth:`get` one), ``text`` the character data
-    directly inside it (stripped), ``children`` in order, and its span ``start:end`` in
+    """One element: ``tag`` without namespace, ``pairs`` its attributes as written (name, value,
+    name, value, ...; ``attrib`` as a dict, :meth:`get` one), ``text`` the character data directly inside it (stripped), ``children`` in order, and its span ``start:end`` in
     :attr:`XmlDocument.text` (UTF-8 bytes) from ``<`` to the closing ``>``; ``line`` is 1-based.
     ``end`` and ``text`` are worked out when first asked for (a robot file has a million elements
     and most are never asked). An element holds no link to its parent, so a tree has no reference
@@ -79,7 +79,7 @@ class XmlElement:
 
     __slots__ = (
         "tag",
-        "_attributes",
+        "pairs",
         "line",
         "start",
         "children",
@@ -91,7 +91,7 @@ class XmlElement:
 
     def __init__(self, tag: str, attributes: list[str], line: int, start: int, text: bytes = b""):
         self.tag, self.line, self.start = tag, line, start
-        self._attributes = attributes  # name, value, name, value, ... as written (half a dict's memory)
+        self.pairs = attributes  # name, value, name, value, ... as written (half a dict's memory)
         self.children: list[XmlElement] = _NO_CHILDREN  # replaced by a list at the first child
         self.source: str | None = None
         self._pieces: list[str] | None = None  # character data directly inside, as expat gave it
@@ -111,18 +111,13 @@ class XmlElement:
         return _tag_end(self._bytes, self._close)
 
     @property
-    def pairs(self) -> list[str]:
-        """The attributes as written: name, value, name, value, ... (the element's own list)."""
-        return self._attributes
-
-    @property
     def attrib(self) -> dict[str, str]:
         """The attributes as written, name → value (a new dict each time)."""
-        pairs = self._attributes
+        pairs = self.pairs
         return dict(zip(pairs[::2], pairs[1::2]))
 
     def get(self, key: str, default: str | None = None) -> str | None:
-        pairs = self._attributes
+        pairs = self.pairs
         if key not in pairs:  # (a scan in C; index's ValueError costs more where an attribute is absent)
             return default
         at = pairs.index(key)

@@ -560,11 +560,10 @@ def _axes(rows: Rows, axis: Node | None, motions: list[str]) -> np.ndarray:
         return values
     texts = rows.distinct(place, b"1 0 0")[1][turned]
     at = np.flatnonzero(turned)
-    first = np.zeros(int(texts.max()) + 1, dtype=int)
-    first[texts[::-1]] = at[::-1]  # each text's first row (the last assignment stands)
-    units = np.empty((len(first), 3))
-    for d in np.unique(texts).tolist():  # each distinct text's unit vector worked out once
-        units[d] = rows.where(int(first[d])).unit(values[first[d]], "axis: xyz")
+    distinct, firsts = np.unique(texts, return_index=True)  # each text and where it is first
+    units = np.empty((int(texts.max()) + 1, 3))
+    for d, row in zip(distinct.tolist(), at[firsts].tolist()):  # each text's unit vector worked out once
+        units[d] = rows.where(row).unit(values[row], "axis: xyz")
     values[at] = units[texts]
     return values
 
