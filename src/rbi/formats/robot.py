@@ -21,7 +21,7 @@ import numpy as np
 
 from rbi.core.inertia import re_express
 from rbi.core.mass import MassProperties
-from rbi.core.rotation import euler_matrix, quaternion_to_matrix, without_rounding_noise
+from rbi.core.rotation import euler_matrix, quaternion_to_matrix, unit_vector, without_rounding_noise
 from rbi.core.validity import overflowing_sum, subnormal_problem
 from rbi.errors import InputError
 from rbi.text import visible
@@ -601,12 +601,10 @@ class Where:
         return without_rounding_noise(quaternion_to_matrix(wxyz))
 
     def unit(self, vector, what: str) -> np.ndarray:
-        v = np.asarray(vector, dtype=float)
-        largest = float(np.abs(v).max())
-        if largest == 0.0:
-            raise self.error(f"{what}: must not be the zero vector")
-        v = v / largest
-        return v / np.sqrt(v.dot(v))  # np.linalg.norm's own arithmetic for a vector
+        try:
+            return unit_vector(vector)
+        except ValueError:  # (numbers read are finite: only the zero vector is refused)
+            raise self.error(f"{what}: must not be the zero vector") from None
 
 
 def _plain_numbers(text: str) -> tuple[float, ...] | None:

@@ -198,12 +198,7 @@ def decoded(path: str, data: bytes | None = None) -> XmlDocument:
                 "or no encoding); save it as UTF-8"
             ) from None
     elif encoding not in ("utf-16-le", "utf-16-be"):
-        try:
-            utf8 = body.decode(encoding).encode("utf-8")
-        except UnicodeError:
-            raise InputError(
-                f"{path}: the text does not decode as {encoding} (the encoding it declares); save it as UTF-8"
-            ) from None
+        utf8 = _as_utf8(path, body, encoding, "the encoding it declares")
     _refuse_huge_tokens(path, utf8)
     return XmlDocument(path, None, utf8, prefix, suffix, encoding)
 
@@ -216,14 +211,7 @@ def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
         if data.startswith(bom):
             data_prefix, data = bom, data[len(bom) :]
             if codec != "utf-8":
-                try:
-                    data = data.decode(codec).encode("utf-8")
-                except UnicodeError:
-                    raise InputError(
-                        f"{path}: the text does not decode as {codec} (its byte-order mark says so); "
-                        "save it as UTF-8"
-                    ) from None
-                decoded_from = codec
+                data, decoded_from = _as_utf8(path, data, codec, "its byte-order mark says so"), codec
             break
     stripped = data.lstrip(b" \t\r\n")
     end = len(stripped.rstrip(b" \t\r\n\x00"))
@@ -248,6 +236,15 @@ def _split(path: str, data: bytes) -> tuple[bytes, bytes, bytes, str]:
         if codec == "utf-16":
             raise InputError(f"{path}: declares UTF-16 but has no byte-order mark; save it as UTF-8")
     return prefix, body, suffix, codec
+
+
+def _as_utf8(path: str, data: bytes, codec: str, because: str) -> bytes:
+    """``data`` decoded as ``codec`` and written as UTF-8; InputError, saying ``because`` (why
+    that codec), when it does not decode."""
+    try:
+        return data.decode(codec).encode("utf-8")
+    except UnicodeError:
+        raise InputError(f"{path}: the text does not decode as {codec} ({because}); save it as UTF-8") from None
 
 
 def _refuse_huge_tokens(path: str, text: bytes) -> None:
