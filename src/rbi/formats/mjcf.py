@@ -374,9 +374,7 @@ class _Bodies:
             if child.tag == "joint":
                 self.joint(where, child, link, inner_class)
             elif child.tag == "freejoint":
-                table.motions[link].append(
-                    Motion(child.get("name"), "free", np.array([1.0, 0, 0]), np.zeros(3))
-                )
+                table.motions[link].append(Motion(child.get("name"), "free"))
             elif child.tag == "inertial":
                 table.inertials[link] = self.inertial(where, child)
         _check_degrees_of_freedom(where, table.motions[link], parent)

@@ -126,15 +126,16 @@ class Motion:
     """One joint's motion of a link relative to its reference pose: ``kind`` ``revolute``
     (about ``axis`` through ``anchor``, radians) or ``prismatic`` (along ``axis``, metres), or
     ``fixed``/``free``/``ball``/``planar``/``floating`` (left at the reference pose). ``axis`` and
-    ``anchor`` are in the link's frame at the reference pose; ``reference`` the coordinate at
+    ``anchor`` are in the link's frame at the reference pose (default: x through the origin, as a
+    world or free joint has them); ``reference`` the coordinate at
     which the link is at that pose (MJCF ``ref``, else 0); ``effort_limit`` the declared limit on
     the joint's effort (URDF/SDF ``<limit effort>``, MJCF ``actuatorfrcrange`` or its actuators'
     force range times their gear), or None."""
 
     name: str | None
     kind: str
-    axis: np.ndarray
-    anchor: np.ndarray
+    axis: np.ndarray = field(default_factory=lambda: np.array([1.0, 0, 0]))
+    anchor: np.ndarray = field(default_factory=lambda: np.zeros(3))
     reference: float = 0.0
     effort_limit: float | None = None
     """The declared limit of the joint's effort (N·m revolute, N prismatic), or None."""

@@ -267,7 +267,7 @@ def _joints(table: LinkTable, model_element, links: dict, link_poses: dict, fram
         kind = element.get("type") or ""
         kind = "revolute" if kind == "continuous" else kind if kind in JOINT_KINDS else "other"
         if parent_name in ("world", "__world__") or parent_name not in links:
-            table.motions[child] = [Motion(joint_name, kind, np.array([1.0, 0, 0]), np.zeros(3))]
+            table.motions[child] = [Motion(joint_name, kind)]
             continue
         if table.parents[child] is not None:
             raise where.error(f"child: link {short(child_name)!r} already has a parent joint")
