@@ -271,7 +271,6 @@ def parse(path: str, text: bytes) -> XmlElement:
     parser.ordered_attributes = True
     parser.buffer_size = 1 << 20
     builder = _TreeBuilder(path, text, parser)
-    builder.attach(parser)
     try:
         with collector_paused():  # a million new elements, none of them garbage
             for offset in range(0, max(len(text), 1), PARSE_CHUNK_BYTES):
@@ -290,15 +289,13 @@ def parse(path: str, text: bytes) -> XmlElement:
 
 
 class _TreeBuilder:
-    """expat's handlers: build the :class:`XmlElement` tree of one document, refusing what
-    :func:`read_xml` refuses (deep nesting, entities, DTD attribute defaults)."""
+    """expat's handlers, set on ``parser``: build the :class:`XmlElement` tree of one document,
+    refusing what :func:`read_xml` refuses (deep nesting, entities, DTD attribute defaults)."""
 
     def __init__(self, path: str, text: bytes, parser):
         self.path, self.text, self.parser = path, text, parser
         self.stack: list[XmlElement] = []
         self.root: XmlElement | None = None
-
-    def attach(self, parser) -> None:
         parser.AttlistDeclHandler = self.attribute_default
         parser.StartElementHandler = self._start_handler()
         parser.EndElementHandler = self._end_handler()
