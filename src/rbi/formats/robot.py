@@ -73,23 +73,14 @@ class Inertial:
     source: str = "inertial"
 
     @staticmethod
-    def read(
-        mass: float,
-        com,
-        inertia,
-        *,
-        rotation: np.ndarray | None = None,
-        rpy: tuple[float, float, float] | None = None,
-        quaternion: np.ndarray | None = None,
-        element: Any = None,
-        source: str = "inertial",
-    ) -> Inertial:
+    def read(mass: float, com, inertia, *, rotation: np.ndarray | None = None, **record: Any) -> Inertial:
         """The inertial a file declares: ``mass`` (kg), ``com`` (m, link frame), ``inertia``
-        about it in the inertial frame's axes (kg·m²), turned into the link's by ``rotation``."""
+        about it in the inertial frame's axes (kg·m²), turned into the link's by ``rotation``;
+        ``record``: the rest of the file's record (``rpy``, ``quaternion``, ``element``,
+        ``source``), as the fields above."""
         written = np.array(inertia, dtype=float)
         in_link = written if rotation is None else re_express(written, rotation)
-        properties = MassProperties(mass, com, in_link, "link")
-        return Inertial(properties, written, rotation, rpy, quaternion, element, source)
+        return Inertial(MassProperties(mass, com, in_link, "link"), written, rotation, **record)
 
     @property
     def mass(self) -> float:
