@@ -244,7 +244,9 @@ def _as_utf8(path: str, data: bytes, codec: str, because: str) -> bytes:
     try:
         return data.decode(codec).encode("utf-8")
     except UnicodeError:
-        raise InputError(f"{path}: the text does not decode as {codec} ({because}); save it as UTF-8") from None
+        raise InputError(
+            f"{path}: the text does not decode as {codec} ({because}); save it as UTF-8"
+        ) from None
 
 
 def _refuse_huge_tokens(path: str, text: bytes) -> None:

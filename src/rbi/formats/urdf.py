@@ -568,7 +568,9 @@ def _axes(rows: Rows, axis: Node | None, motions: list[str]) -> np.ndarray:
     return values
 
 
-def _refuse_tree(path: str, names: list[str], parents: list[int], order: list[int], joint_names: list[str]) -> None:
+def _refuse_tree(
+    path: str, names: list[str], parents: list[int], order: list[int], joint_names: list[str]
+) -> None:
     """InputError for joints that share a name, links no joint joins to the one root, or
     joints that form a loop (``parents``: each link's parent row, n for none; ``order``: the
     rows reached from the roots, :func:`depth_first`)."""
