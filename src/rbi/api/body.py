@@ -405,6 +405,8 @@ class Body(Result):
         ):
             hole = bool(getattr(part, "subtract", False))
             volume = None if part is None else part_volume(part)
+            if volume is not None:  # a hole takes its volume away, as its mass
+                volume = (-volume if hole else volume) * length**3
             out.append(
                 Part(
                     name=name,
@@ -413,8 +415,7 @@ class Body(Result):
                     mass=float(element.mass),
                     center_of_mass=np.array(element.center_of_mass, dtype=float),
                     inertia_about_com=np.array(element.inertia_about_com, dtype=float),
-                    # a hole takes its volume away, as its mass
-                    volume=None if volume is None else (-volume if hole else volume) * length**3,
+                    volume=volume,
                     principal_moments=principal_axes(element.inertia_about_com)[0],
                     inertia_share=float(share),
                     integration_error=part._integration_error if isinstance(part, StepPart) else None,

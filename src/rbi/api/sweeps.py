@@ -133,7 +133,10 @@ class SweepTable(Result):
             return UNITS[column]
         field = column.rsplit(".", 1)[-1].split("[", 1)[0]
         kind = field.split("_")[0] if field.startswith(("com_", "moment_")) else field
-        kind = "inertia" if kind in _INERTIA_FIELDS else "length" if kind in _LENGTH_FIELDS else kind
+        if kind in _INERTIA_FIELDS:
+            kind = "inertia"
+        elif kind in _LENGTH_FIELDS:
+            kind = "length"
         if kind in ("mass", "density", "inertia", "length"):  # as the body's unit labels write them
             return unit_labels(self.units["length"], self.units["mass"])[kind]
         return "deg" if field.endswith("_deg") else ""

@@ -209,8 +209,10 @@ def run(quick: bool, progress: Progress, folder: Path) -> dict:
     bodies = bodies_folder()
     bytecode = compile_bytecode()
     rows, timed = [], []
-    # a full run also times `rbi principal` of a cloud of 10⁶ points (its CSV and .npy specs)
-    cloud = None if quick else dict(write_cloud(folder, *random_cloud(10**6)), points=10**6)
+    cloud = None
+    if not quick:  # a full run also times `rbi principal` of a cloud of 10⁶ points (its CSV and .npy specs)
+        n = 10**6
+        cloud = dict(write_cloud(folder, *random_cloud(n)), points=n)
     for label, argv in commands(bodies, cloud):
         progress(f"latency: {label}")
         proc = run_process(argv)[2]  # warm-up (and a check that it works)
