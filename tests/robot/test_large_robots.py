@@ -145,12 +145,13 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(
 ):
     """Whichever form the audit reads the model in (``careful``: its links, made first and laid
     into the audit's arrays; else the reader's columns, as they are): each link's flags and
-    numbers are those of the careful path, every link's geometry measured one link at a time
-    (none of it on the stacks of links that are one solid primitive)."""
+    numbers are those of the careful path, every geom measured one at a time and every link's
+    pieces summed (none of it on the stacks of solid primitives, no link's only piece taken as
+    it is)."""
     from rbi.formats import robot_xml
     from rbi.formats.robot_files import read_robot
     from rbi.formats.urdf import read_urdf
-    from rbi.robot.audit import _one_primitive, audit_model
+    from rbi.robot.audit import audit_model
 
     path = tmp_path / "r.urdf"
     path.write_text(_urdf(_hostile_inertias(200), chain=chain, shapes=shapes))
@@ -158,7 +159,9 @@ def test_the_bulk_audit_flags_what_the_one_link_audit_flags(
     if careful:
         assert model.links  # made now: the audit reads the columns all the same
     bulk = audit_model(model, density=density)
-    monkeypatch.setattr(sys.modules[_one_primitive.__module__], "_one_primitive", lambda *args: None)
+    audit = sys.modules[audit_model.__module__]  # (rbi.robot.audit is also the name of a function)
+    monkeypatch.setattr(audit, "SOLID_KINDS", ())  # no geom measured on the stacks
+    monkeypatch.setattr(audit, "_alone", lambda n, rows, *args: np.zeros(len(rows), dtype=bool))
     one_by_one = audit_model(model, density=density)
     codes = set()
     for found, one in zip(bulk.links, one_by_one.links, strict=True):

@@ -12,10 +12,10 @@ over the geometry's size (its bounding box's diagonal). The flags (``unphysical`
 
 Every model is audited one way, on arrays of its links (:class:`~rbi.formats.robot.LinkColumns`:
 a URDF's reader gives them as columns, the SDF and MJCF readers' links are laid into them), into
-one table (:class:`AuditedLinks`): the geometry measured (the links that are one solid primitive
-on stacks, the others one by one), compared with the declared inertials on stacks, and flagged
-where screens on those stacks leave something to say. One link's audit is a row of that table
-(:class:`LinkAudit`).
+one table (:class:`AuditedLinks`): the geometry measured one geom a row (the solid primitives on
+stacks, the others one by one) and summed per link, compared with the declared inertials on
+stacks, and flagged where screens on those stacks leave something to say. One link's audit is a
+row of that table (:class:`LinkAudit`).
 """
 
 from __future__ import annotations
@@ -387,12 +387,7 @@ class AuditedLinks:
         self.sources: list[str | None] = [None] * n
         self.flags: dict[int, list[Flag]] = {}
         if settings.geometry != "none":
-            self._measure_in_bulk(settings)
-            shaped = np.zeros(n, dtype=bool)
-            for column in columns.geoms:
-                shaped[column.rows] = True
-            for row in np.flatnonzero(shaped & ~self.measured).tolist():
-                self._measure_one(row, settings, notes)
+            self._measure(settings, notes)
         self._compare()
         self._flag()
         self._refuse_overflow()
@@ -406,89 +401,101 @@ class AuditedLinks:
         """The geometry's mass properties, a stack of one a link (NaN where it has none)."""
         return MassProperties(self.mass, self.com, self.inertia, "link")
 
-    def _measure_in_bulk(self, settings: AuditSettings) -> None:
-        """The geometry of the links :func:`_one_primitive` finds, measured on (n, 3, 3) stacks
-        with the operations :func:`distribution`, :meth:`MassProperties.sum` and :meth:`_measure_one` make on
-        one link, element by element (so the same numbers). A link whose numbers would take
-        another branch there (no volume, overflow, an unusual sum) is left to them."""
-        columns = self.columns
-        shapes = _one_primitive(self.model, settings.geometry, columns)
-        if shapes is None:
-            return
-        shape_rows, measure, moments, half, R, p, sources = shapes
-        turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
-        inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
-        corners = stack_apply(np.abs(R), half)
-        with np.errstate(all="ignore"):
-            fine = (measure > 0) & np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
-            fine &= np.all(np.isfinite(p), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
-        rows, at = np.asarray(shape_rows)[fine], np.flatnonzero(fine)
-        measure, inertia, p, corners = measure[fine], inertia[fine] + 0.0, p[fine], corners[fine]
-        self.measured[rows], self.volume[rows] = True, measure
-        self.com[rows], self.low[rows], self.high[rows] = p + 0.0, p - corners, p + corners
-        for row, k in zip(rows.tolist(), at.tolist()):
-            self.sources[row] = sources[k]
-        declared = np.where(columns.declared, columns.inertials.mass, 0.0)[rows]
-        given = declared > 0
-        density = settings.density
-        with np.errstate(all="ignore"):
-            mass = np.where(given, declared, np.nan if density is None else density * measure)
-            implied = mass / measure
-            scaled = inertia * implied[:, None, None]
-        heavy = given | (density is not None)
-        rows = rows[heavy]
-        self.has_mass[rows] = True
-        self.mass[rows], self.implied[rows], self.inertia[rows] = mass[heavy], implied[heavy], scaled[heavy]
-
-    def _measure_one(self, row: int, settings: AuditSettings, notes: list[str]) -> None:
-        """Row ``row``'s geometry measured one piece at a time as :func:`distribution` measures
-        it, from its ``settings.geometry`` elements, or the other kind's when it has none of
-        those: the pieces with a volume, MJCF geoms at their own mass or density, the others at
-        density 1, summed; and a ``mesh`` flag for each mesh ``auto`` could not integrate
-        exactly."""
-        model, columns, fallbacks = self.model, self.columns, []
-        other = "visual" if settings.geometry == "collision" else "collision"
-        source = settings.geometry if columns.geoms_of(row, settings.geometry) else other
-        where = f"{model.path}: {columns.link(row).label}: "
-        pieces, parts = [], []
-        for geom in columns.geoms_of(row, source):
-            found = distribution(geom, settings.mesh_inertia, where, settings.mesh_repair, notes, fallbacks)
-            if found is None or not found.measure > 0:
+    def _measure(self, settings: AuditSettings, notes: list[str]) -> None:
+        """Each link's geometry: its pieces (:meth:`_pieces`) summed as :meth:`MassProperties.sum`
+        sums them (a link's only piece, when the sum would give it back as it is: that piece, on
+        the stacks), then at the declared mass where there is one, else at the given density
+        (MJCF: at its geoms' own masses), the inertia scaled as :meth:`MassProperties.with_mass`
+        scales it; its volume that of its solid pieces, its implied density where none is a shell."""
+        n = len(self.columns)
+        first, rows, measure, mass, com, inertia, low, high, shell = self._pieces(settings, notes)
+        kept = measure > 0
+        single = _alone(n, rows, kept, mass, com, inertia)
+        unit_mass, unit_inertia = np.full(n, np.nan), np.full((n, 3, 3), np.nan)
+        solid = np.zeros(n, dtype=bool)
+        at = rows[single]
+        self.measured[at], unit_mass[at], unit_inertia[at] = True, mass[single], inertia[single] + 0.0
+        self.com[at], self.low[at], self.high[at] = com[single] + 0.0, low[single], high[single]
+        self.volume[at], solid[at] = np.where(shell[single], np.nan, measure[single]), ~shell[single]
+        grouped: dict[int, list[int]] = {}
+        for g in np.flatnonzero(kept & ~single).tolist():  # each link's pieces in file order
+            grouped.setdefault(int(rows[g]), []).append(g)
+        for row, each in grouped.items():
+            try:
+                unit = MassProperties(mass[each], com[each], inertia[each], "link").sum()
+            except ValueError:  # no mass in the geometry
                 continue
-            pieces.append(found)
-            if model.format == "mjcf":  # each geom at its own mass
-                parts.append(
-                    found.unit.with_mass(geom.mass if geom.mass is not None else geom.density * found.measure)
-                )
-            else:  # at density 1
-                parts.append(found.unit)
-        if fallbacks:
-            self.flags[row] = [
-                Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks
-            ]
-        try:
-            unit = MassProperties.sum(parts)
-        except ValueError:  # no pieces, or no mass in the geometry
-            return
-        declared = columns.inertials.mass[row] if columns.declared[row] else 0.0
-        mass = None
-        if declared > 0:
-            mass = declared
-        elif model.format == "mjcf":
-            mass = unit.mass
-        elif settings.density is not None:
-            mass = settings.density * unit.mass
-        solid = [d.measure for d in pieces if not d.shell]
-        self.measured[row], self.sources[row], self.com[row] = True, source, unit.center_of_mass
-        self.low[row] = np.min([d.low for d in pieces], axis=0)
-        self.high[row] = np.max([d.high for d in pieces], axis=0)
-        if solid:
-            self.volume[row] = float(sum(solid))
-        if mass is not None:
-            properties = unit.with_mass(mass)
-            self.has_mass[row], self.mass[row], self.inertia[row] = True, mass, properties.inertia_about_com
-            if len(solid) == len(pieces):
-                self.implied[row] = mass / self.volume[row]
+            volumes = measure[each][~shell[each]].tolist()
+            self.measured[row], unit_mass[row], unit_inertia[row] = True, unit.mass, unit.inertia_about_com
+            self.com[row], solid[row] = unit.center_of_mass, len(volumes) == len(each)
+            self.low[row], self.high[row] = np.min(low[each], axis=0), np.max(high[each], axis=0)
+            if volumes:
+                self.volume[row] = float(sum(volumes))
+        kind, other = settings.geometry, "visual" if settings.geometry == "collision" else "collision"
+        pairs = zip(self.measured.tolist(), first.tolist())  # (measured, from settings.geometry) a link
+        self.sources = [(kind if at else other) if measured else None for measured, at in pairs]
+        declared = np.where(self.columns.declared, self.columns.inertials.mass, 0.0)
+        given = self.measured & (declared > 0)
+        mjcf, density = self.model.format == "mjcf", settings.density
+        heavy = self.measured if mjcf or density is not None else given
+        with np.errstate(all="ignore"):
+            otherwise = unit_mass if mjcf else (np.nan if density is None else density) * unit_mass
+            found = np.where(given, declared, otherwise)
+            scaled = unit_inertia * (found / unit_mass)[:, None, None]
+            implied = np.where(solid, found / self.volume, np.nan)
+        self.has_mass[heavy], self.mass[heavy], self.inertia[heavy] = True, found[heavy], scaled[heavy]
+        self.implied[heavy] = implied[heavy]
+
+    def _pieces(self, settings: AuditSettings, notes: list[str]) -> tuple:
+        """Every geom a link's geometry is measured from (its ``settings.geometry`` elements, or
+        the other kind's when it has none of those), as :func:`distribution` measures it:
+        ``first`` (n,), the links measured from ``settings.geometry``; then one entry a geom, in
+        the order of ``columns.geoms``: its link's row, its volume (m³; m² for a shell; NaN:
+        none), its mass at density 1 (MJCF: at its own mass or density), its centre of mass
+        and inertia at that mass, its bounds and whether it is a shell. The solid primitives
+        are measured on stacks (:func:`_on_stacks`); the other geoms, and a primitive whose
+        numbers take another branch there, one at a time, links in file order (a ``mesh``
+        flag for each mesh ``auto`` could not integrate exactly)."""
+        model, columns, geometry = self.model, self.columns, settings.geometry
+        other = "visual" if geometry == "collision" else "collision"
+        counts = {tag: np.zeros(len(columns), dtype=int) for tag in (geometry, other)}
+        for column in columns.geoms:
+            counts[column.tag] += np.bincount(column.rows, minlength=len(columns))
+        first = counts[geometry] > 0
+        chosen = {geometry: first, other: ~first & (counts[other] > 0)}
+        picked = [(column, np.flatnonzero(chosen[column.tag][column.rows])) for column in columns.geoms]
+        rows = np.concatenate([np.zeros(0, dtype=int), *(np.asarray(c.rows)[at] for c, at in picked)])
+        size = len(rows)
+        measure, shell = np.full(size, np.nan), np.zeros(size, dtype=bool)
+        com, low, high = np.zeros((size, 3)), np.zeros((size, 3)), np.zeros((size, 3))
+        inertia = np.full((size, 3, 3), np.nan)
+        one_by_one, start = [], 0
+        for column, at in picked:
+            span, start = np.arange(start, start + len(at)), start + len(at)
+            fine = np.zeros(len(at), dtype=bool)
+            if column.kind in SOLID_KINDS and column.sizes is not None and len(at):
+                fine, *found = _on_stacks(column, at)
+                put = span[fine]
+                measure[put], com[put], inertia[put], low[put], high[put] = found
+            one_by_one += [(int(rows[g]), int(g), column, k) for g, k in zip(span[~fine], at[~fine])]
+        mode, repair = settings.mesh_inertia, settings.mesh_repair
+        for row, g, column, k in sorted(one_by_one, key=lambda each: each[:2]):
+            fallbacks: list = []
+            where = f"{model.path}: {columns.link(row).label}: "
+            found = distribution(column.geom(k), mode, where, repair, notes, fallbacks)
+            if fallbacks:
+                why = [Flag("mesh", "warning", each.message(), "mesh not closed") for each in fallbacks]
+                self.flags[row] = self.flags.get(row, []) + why
+            if found is not None:
+                measure[g], shell[g], low[g], high[g] = found.measure, found.shell, found.low, found.high
+                com[g], inertia[g] = found.unit.center_of_mass, found.unit.inertia_about_com
+        mass = measure.copy()
+        if model.format == "mjcf":  # each geom at its own mass
+            geoms = [column.geom(k) for column, at in picked for k in at.tolist()]
+            mass[:] = [g.density * v if g.mass is None else g.mass for g, v in zip(geoms, measure.tolist())]
+            with np.errstate(all="ignore"):
+                inertia = inertia * (mass / measure)[:, None, None]
+        return first, rows, measure, mass, com, inertia, low, high, shell
 
     def _compare(self) -> None:
         """The declared mass properties against the geometry's, on stacks (:func:`compared`),
@@ -648,48 +655,39 @@ def _carried(columns: LinkColumns) -> list[bool]:
     return below[: len(parents)]
 
 
-def _one_primitive(model: RobotModel, geometry: str, links: LinkColumns) -> tuple | None:
-    """The links of a URDF or SDF model (None: none, or MJCF) whose geometry (``geometry``
-    elements, or the other kind's when it has none of those, as :meth:`AuditedLinks._measure_one` chooses) is one
-    solid primitive, what :meth:`AuditedLinks._measure_in_bulk` measures: their rows, each
-    one's volume, principal moments at density 1 (k, 3) and half extents (k, 3) in its own axes
-    (:func:`primitive`, :func:`half_extent`; NaN where they refuse its size), its pose in the
-    link frame (``R`` (k, 3, 3), ``p`` (k, 3)) and its source (collision or visual)."""
-    if geometry == "none" or model.format == "mjcf":
-        return None
-    other = "visual" if geometry == "collision" else "collision"
-    counts = {tag: np.zeros(len(links.declared), dtype=int) for tag in (geometry, other)}
-    for column in links.geoms:
-        np.add.at(counts[column.tag], column.rows, 1)
-    chosen = {geometry: counts[geometry] == 1, other: (counts[geometry] == 0) & (counts[other] == 1)}
-    rows, distinct, which, R, p, sources = [], {}, [], [], [], []  # type: ignore[var-annotated]
-    for column in links.geoms:
-        if column.kind not in SOLID_KINDS or column.sizes is None:
-            continue
-        at = np.flatnonzero(chosen[column.tag][column.rows])
-        if not len(at):
-            continue
-        sizes = column.sizes[at]
-        if np.all(sizes == sizes[0]):  # one size throughout
-            keys, inverse = [tuple(sizes[0].tolist())], np.zeros(len(at), dtype=int)
-        else:
-            found = {key: k for k, key in enumerate(dict.fromkeys(map(tuple, sizes.tolist())))}
-            keys, inverse = list(found), np.array([found[key] for key in map(tuple, sizes.tolist())])
-        codes = [distinct.setdefault((column.kind, key), len(distinct)) for key in keys]
-        which.append(np.array(codes, dtype=int)[inverse])
-        rows += np.asarray(column.rows)[at].tolist()
-        R.append(column.rotations[at])
-        p.append(column.translations[at])
-        sources += [column.tag] * len(at)
-    if not rows:
-        return None
+def _alone(n: int, rows: np.ndarray, kept: np.ndarray, mass, com, inertia) -> np.ndarray:
+    """The pieces kept (``kept``) alone in their link (``rows``, of ``n``) that
+    :meth:`MassProperties.sum` gives back as they are (each -0.0 as 0.0): a finite positive
+    mass, a finite centre of mass and an inertia whose symmetrizing cannot overflow."""
+    with np.errstate(all="ignore"):
+        alone = kept & (np.bincount(rows[kept], minlength=n)[rows] == 1) & (mass > 0) & np.isfinite(mass)
+        return alone & np.all(np.isfinite(com), axis=1) & np.all(np.abs(inertia) < 1e300, axis=(1, 2))
+
+
+def _on_stacks(column, at: np.ndarray) -> tuple:
+    """The geoms ``at`` of a column of one solid primitive, measured on stacks with the
+    operations :func:`distribution` makes on one, element by element (so the same numbers):
+    ``fine`` (k,), those :func:`distribution` measures so (their size not refused, their
+    numbers finite), and their volume, centre of mass, inertia at density 1 and bounds
+    (:func:`primitive` and :func:`half_extent` once for each size)."""
+    sizes = column.sizes[at]
+    if np.all(sizes == sizes[0]):  # one size throughout
+        keys, inverse = [tuple(sizes[0].tolist())], np.zeros(len(at), dtype=int)
+    else:
+        found = {key: k for k, key in enumerate(dict.fromkeys(map(tuple, sizes.tolist())))}
+        keys, inverse = list(found), np.array([found[key] for key in map(tuple, sizes.tolist())])
     known = []
-    for key in distinct:
+    for key in keys:
         try:
-            known.append((*primitive(*key), half_extent(*key)))
-        except ValueError:
+            known.append((*primitive(column.kind, key), half_extent(column.kind, key)))
+        except (ValueError, OverflowError):  # refused (or overflowing) here, refused there
             known.append((np.nan, np.full(3, np.nan), np.full(3, np.nan)))
-    pick = np.concatenate(which)
-    measure = np.array([found[0] for found in known], dtype=float)[pick]
-    moments, half = (stacked([found[k] for found in known], (3,))[pick] for k in (1, 2))
-    return rows, measure, moments, half, np.concatenate(R), np.concatenate(p), sources
+    measure = np.array([each[0] for each in known], dtype=float)[inverse]
+    moments, half = (stacked([each[k] for each in known], (3,))[inverse] for k in (1, 2))
+    R, p = column.rotations[at], column.translations[at]
+    turned = np.matmul(R * moments[:, None, :], np.swapaxes(R, 1, 2))
+    corners = stack_apply(np.abs(R), half)
+    with np.errstate(all="ignore"):
+        fine = np.isfinite(measure) & np.all(np.isfinite(turned), axis=(1, 2))
+    inertia = 0.5 * (turned + np.swapaxes(turned, 1, 2))
+    return fine, measure[fine], p[fine], inertia[fine], (p - corners)[fine], (p + corners)[fine]
