@@ -280,7 +280,9 @@ def local_cluster(workers: int):
         "distributed.worker.http.routes": [],
         "temporary-directory": scratch,
     }
-    previous = _ignore_sigint()
+    # SIGINT ignored while the worker processes start (they inherit it), where this thread may set it
+    main = threading.current_thread() is threading.main_thread()
+    previous = signal.signal(signal.SIGINT, signal.SIG_IGN) if main else None
     try:
         with dask.config.set(private):
             cluster = LocalCluster(
@@ -390,15 +392,6 @@ def _refuse_a_talker(address: str) -> None:
     if heard and (found.group(1) == "tls" or len(heard) < 8 or struct.unpack("<Q", heard[:8])[0] > 2**26):
         said = heard.decode("ascii", "replace").strip()
         raise InputError(f"--dask {address}: not a Dask scheduler (it speaks first: {shown(said, 60)})")
-
-
-def _ignore_sigint():
-    """Ignore SIGINT while worker processes start (they inherit it); the previous handler, or
-    None when this is not the main thread."""
-
-    if threading.current_thread() is not threading.main_thread():
-        return None
-    return signal.signal(signal.SIGINT, signal.SIG_IGN)
 
 
 def _stop_http(dask_worker=None) -> None:

@@ -230,9 +230,8 @@ class Plan:
     def values(self, start: int, stop: int) -> np.ndarray:
         """The values of runs ``start .. stop-1``: an array (stop - start, len(axes))."""
         index = np.arange(start, stop, dtype=np.int64)
-        grid_index, draw_index = np.divmod(index, self.runs)
         out = np.empty((index.size, len(self.axes)))
-        radix = grid_index.copy()
+        radix = index // self.runs  # the grid point of each run
         grid_columns = [i for i, a in enumerate(self.axes) if isinstance(a, GridAxis)]
         for column in reversed(grid_columns):  # the last grid axis changes fastest
             axis = self.axes[column]

@@ -446,8 +446,7 @@ def _csv_line(line: bytes, what: str, number: int) -> list[str]:
         raise InputError(f"{what}: line {number} is not UTF-8 text; not a file this sweep wrote") from None
     if "\0" in text:
         raise InputError(f"{what}: line {number} holds a NUL byte; not a file this sweep wrote")
-    cells = next(csv.reader([text]), [])
-    return cells
+    return next(csv.reader([text]), [])
 
 
 def _read_piece(path: Path, what: str):
