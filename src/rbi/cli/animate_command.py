@@ -3,20 +3,17 @@
 from __future__ import annotations
 
 import rbi
-from rbi.cli.options import REQUIRED, SpecFile, command, option, require_matplotlib
+from rbi.cli.options import REQUIRED, SpecFile, command, option, out_option, require_matplotlib
 from rbi.cli.render import progress_bar, say_warnings
 from rbi.cli.run_options import RUN, budget
 from rbi.cli.terminal import terminal_safe
 
 OPTIONS = (
     *(each for name, each in RUN.items() if name != "samples"),
-    option(
-        str,
-        "--out",
-        "-o",
+    out_option(
+        "FILE.html|FILE.gif",
+        "The animation: .html (3D, plays offline in a browser) or .gif.",
         default=REQUIRED,
-        metavar="FILE.html|FILE.gif",
-        help="The animation: .html (3D, plays offline in a browser) or .gif.",
     ),
     option(
         float,

@@ -13,7 +13,7 @@ import sys
 import typer
 
 import rbi
-from rbi.cli.options import FORMAT, PACKAGE_PATHS, OutputFormat, RobotFile, command, option
+from rbi.cli.options import FORMAT, PACKAGE_PATHS, OutputFormat, RobotFile, command, option, out_option
 from rbi.cli.render import emit_result, print_table
 from rbi.cli.terminal import say, status_kept, terminal_safe
 
@@ -59,13 +59,7 @@ OPTIONS = (
         "--fix",
         help="Replace each flagged inertial by its geometry's; without --out, show the changes only.",
     ),
-    option(
-        str | None,
-        "--out",
-        "-o",
-        metavar="FILE",
-        help="With --fix: where to write the fixed copy of the robot file.",
-    ),
+    out_option("FILE", "With --fix: where to write the fixed copy of the robot file."),
     FORMAT,
 )
 

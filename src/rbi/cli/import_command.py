@@ -7,7 +7,7 @@ import os
 import sys
 
 import rbi
-from rbi.cli.options import FORMAT, PACKAGE_PATHS, OutputFormat, argument, command, option
+from rbi.cli.options import FORMAT, PACKAGE_PATHS, OutputFormat, argument, command, option, out_option
 from rbi.cli.render import emit_result
 from rbi.cli.terminal import say, terminal_safe
 
@@ -23,12 +23,9 @@ ImportFile = argument(str, "Robot description (.urdf, .sdf, MJCF .xml) or CAD fi
         metavar="NAME",
         help="Import only this link (MJCF: body); repeat for several.",
     ),
-    option(
-        str | None,
-        "--out",
-        "-o",
-        metavar="DIR|FILE.yaml",
-        help="Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
+    out_option(
+        "DIR|FILE.yaml",
+        "Write the specs: into folder DIR as one NAME.yaml per link, or into FILE.yaml when one "
         "link is imported. Without it one spec is printed: the link given with --link, or the whole "
         "robot (one part per link, placed at the zero configuration).",
     ),

@@ -7,7 +7,7 @@ from typing import Literal
 
 import rbi
 from rbi.cli.each_file import FileReport, report_each
-from rbi.cli.option_values import parse_about, parse_direction, parse_rotation, parse_units, vector_parser
+from rbi.cli.option_values import parse_direction, parse_rotation, parse_vector
 from rbi.cli.options import ABOUT, FORMAT, REQUIRED, UNITS, OutputFormat, SpecFile, SpecFiles, command, option
 from rbi.cli.render import emit_result
 
@@ -84,7 +84,7 @@ def principal(files: SpecFiles, *, about, units, format: OutputFormat) -> int:
         "-w",
         default=REQUIRED,
         metavar="WX,WY,WZ",
-        parser=vector_parser("--omega"),
+        parser=parse_vector,
         help="Angular velocity in body axes, rad/s.",
     ),
     ABOUT,
@@ -93,7 +93,7 @@ def principal(files: SpecFiles, *, about, units, format: OutputFormat) -> int:
         "--velocity",
         "-v",
         metavar="VX,VY,VZ",
-        parser=vector_parser("--velocity"),
+        parser=parse_vector,
         help="Velocity of the centre of mass (body axes, file length unit/s). Without it the "
         "--about point is taken as fixed, so the body turns about it.",
     ),
@@ -115,11 +115,11 @@ def momentum(file: SpecFile, *, omega, about, velocity, units, format: OutputFor
     emit_result(format.value, body.momentum(omega, point, velocity))
 
 
-def _body_and_point(file: str, about: str, units: str | None, velocity=None):
-    """The body of ``file`` in ``--units``, the ``--about`` point as the API takes it (its name,
-    or X,Y,Z given in the file's length unit, in the body's) and ``velocity`` likewise."""
+def _body_and_point(file: str, about: str | list[float], units: tuple[str, str] | None, velocity=None):
+    """The body of ``file`` in ``--units`` (length, mass), the ``--about`` point as the API
+    takes it (its name, or X,Y,Z given in the file's length unit, in the body's) and
+    ``velocity`` likewise."""
     body = rbi.load(file)
-    point = parse_about(about)
     if units is not None:
-        body = body.in_units(*parse_units(units))
-    return body, body.from_spec_units(point), body.from_spec_units(velocity)
+        body = body.in_units(*units)
+    return body, body.from_spec_units(about), body.from_spec_units(velocity)

@@ -1,13 +1,12 @@
 """Parsing of command-line values (vectors ``X,Y,Z``, reference points, rotations ``y:30``,
 sweep axes ``START:STOP:COUNT``, output units) into the numbers the API takes, and the API's
-errors spelled with the command line's options."""
+errors spelled with the command line's options. Each parser takes the text and the option it
+was given to (:func:`rbi.cli.options.option` passes it), which its errors name."""
 
 from __future__ import annotations
 
-import functools
 import math
 import re
-from collections.abc import Callable
 from typing import Any
 
 import rbi
@@ -56,16 +55,11 @@ def parse_vector(text: str, option: str, count: int = 3) -> list[float]:
     return values
 
 
-def vector_parser(option: str) -> Callable[[str], list[float]]:
-    """The parser of an ``X,Y,Z`` option: :func:`parse_vector` naming ``option``."""
-    return functools.partial(parse_vector, option=option)
-
-
-def spin_axis_option(text: str | None) -> str | list[float] | None:
+def spin_axis_option(text: str | None, option: str = "--spin-axis") -> str | list[float] | None:
     """``--spin-axis``: a named axis (``x``, ``-y``) as it is, ``X,Y,Z`` as three numbers."""
     if text is None or "," not in text:
         return text
-    return parse_vector(text, "--spin-axis")
+    return parse_vector(text, option)
 
 
 _NUMBER = r"[-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?"
@@ -98,11 +92,6 @@ def sweep_values(text: str, option: str) -> Any:
     return value
 
 
-def axis_parser(option: str) -> Callable[[str], Any]:
-    """The parser of a sweep axis's option: :func:`sweep_values` naming ``option``."""
-    return functools.partial(sweep_values, option=option)
-
-
 def vary_option(items: list[str]) -> dict[str, Any]:
     """``--vary PATH=RANGE`` items as ``rbi.sweep``'s ``vary``: path → values."""
     vary: dict[str, Any] = {}
@@ -117,31 +106,31 @@ def vary_option(items: list[str]) -> dict[str, Any]:
     return vary
 
 
-def parse_about(text: str) -> str | list[float]:
+def parse_about(text: str, option: str = "--about") -> str | list[float]:
     """``--about`` as `rbi.Body.point` takes it: a reference point's name
     (`rbi.Body.reference_points`, any case) or X,Y,Z (three numbers)."""
     key = text.strip().lower()
     if key in rbi.Body.reference_points:
         return key
     try:
-        return parse_vector(text, "--about")
+        return parse_vector(text, option)
     except SpecError:
         names = ", ".join(rbi.Body.reference_points)
         raise SpecError(
-            f"--about: expected {names} or a point X,Y,Z (three numbers separated by commas, file "
+            f"{option}: expected {names} or a point X,Y,Z (three numbers separated by commas, file "
             f"units), got {text!r}"
         ) from None
 
 
-def parse_direction(text: str) -> list[float]:
+def parse_direction(text: str, option: str = "--axis") -> list[float]:
     """``--axis``: a direction X,Y,Z, of any length but zero."""
-    direction = parse_vector(text, "--axis")
+    direction = parse_vector(text, option)
     if not any(direction):
-        raise SpecError(f"--axis: must be a non-zero direction X,Y,Z (got {text!r})")
+        raise SpecError(f"{option}: must be a non-zero direction X,Y,Z (got {text!r})")
     return direction
 
 
-def parse_rotation(text: str) -> tuple[str, str]:
+def parse_rotation(text: str, option: str = "--rotate") -> tuple[str, str]:
     """``"y:30"`` -> ``("y", "30")``: a turn as `rbi.Body.inertia`'s ``axes`` takes it, the
     angle as written (the API names it so when rounding would lose the turn)."""
     axis, sep, angle = text.partition(":")
@@ -151,11 +140,11 @@ def parse_rotation(text: str) -> tuple[str, str]:
     except ValueError:
         degrees = math.nan
     if not sep or axis not in ("x", "y", "z") or not math.isfinite(degrees):
-        raise SpecError(f"--rotate: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
+        raise SpecError(f"{option}: expected AXIS:DEG with AXIS one of x, y, z (e.g. y:30), got {text!r}")
     return axis, angle.strip()
 
 
-def parse_units(text: str) -> tuple[str, str]:
+def parse_units(text: str, option: str = "--units") -> tuple[str, str]:
     """``--units``: ``SI`` (m, kg) or ``LENGTH,MASS`` such as ``mm,g`` -> (length, mass)."""
     key = text.strip()
     if key.lower() == "si":
@@ -164,7 +153,7 @@ def parse_units(text: str) -> tuple[str, str]:
     length, mass = length.strip(), mass.strip()
     if length not in rbi.Body.length_units or mass not in rbi.Body.mass_units:
         raise SpecError(
-            f"--units: expected SI or LENGTH,MASS with LENGTH one of {', '.join(rbi.Body.length_units)} "
+            f"{option}: expected SI or LENGTH,MASS with LENGTH one of {', '.join(rbi.Body.length_units)} "
             f"and MASS one of {', '.join(rbi.Body.mass_units)} (e.g. mm,g), got {text!r}"
         )
     return length, mass

@@ -4,7 +4,7 @@ need: how --help says so (:func:`needs`) and the refusal, before any work, when 
 
 from __future__ import annotations
 
-import importlib.util
+import functools
 import inspect
 import logging
 from collections.abc import Callable, Mapping
@@ -15,6 +15,7 @@ import typer
 from typer.core import TyperArgument
 
 from rbi import SpecError
+from rbi.cli.option_values import parse_about, parse_units
 
 REQUIRED = inspect.Parameter.empty
 """The default of an option the command cannot run without (``rbi export --to``)."""
@@ -27,10 +28,37 @@ def option(kind: Any, *names: str, default: Any = API, name: str | None = None, 
     """One option, declared once: its type, flags, default, metavar and help (``settings``:
     typer.Option's), as the parameter :func:`command` gives a command. The parameter is named
     after the first flag (``--mesh-inertia``: ``mesh_inertia``) unless ``name`` names it as the
-    API does (``--tilt``: ``tilt_deg``)."""
+    API does (``--tilt``: ``tilt_deg``). A ``parser`` (:mod:`rbi.cli.option_values`') is
+    called with the text given and the first flag, which its errors name."""
     name = name or names[0].split("/")[0].removeprefix("--").replace("-", "_")
+    if "parser" in settings:
+        settings["parser"] = functools.partial(settings["parser"], option=names[0])
     annotation = Annotated[kind, typer.Option(*names, **settings)]
     return inspect.Parameter(name, inspect.Parameter.KEYWORD_ONLY, default=default, annotation=annotation)
+
+
+def out_option(metavar: str, help: str, **settings: Any) -> Any:
+    """``--out``/``-o``: the file (or folder) a command writes, as :func:`option` declares it
+    (``settings``: ``default=REQUIRED`` where writing it is the command's whole job)."""
+    return option(str | None, "--out", "-o", metavar=metavar, help=help, **settings)
+
+
+def plot_option(help: str) -> Any:
+    """``--plot FILE``: a picture of the results, ``help`` said of it; the command is refused
+    before any work when matplotlib is missing (:func:`require_matplotlib`)."""
+    return option(
+        str | None,
+        "--plot",
+        metavar="FILE.png|.svg|.pdf",
+        callback=_plot_path,
+        help=f"{help} ({needs('matplotlib', 'plot')}).",
+    )
+
+
+def _plot_path(path: str | None) -> str | None:
+    if path is not None:
+        require_matplotlib()
+    return path
 
 
 def argument(kind: Any, help: str, metavar: str) -> Any:
@@ -75,7 +103,6 @@ FORMAT = option(
     default=OutputFormat.table,
     help="table (for people), json (one object) or csv (header + rows).",
 )
-FormatOption = FORMAT.annotation
 
 
 SpecFile = argument(str, "Body spec (YAML or JSON); - reads it from standard input.", "FILE")
@@ -99,6 +126,7 @@ ABOUT = option(
     "-a",
     default="com",
     metavar="com|origin|pivot|X,Y,Z",
+    parser=parse_about,
     help="Reference point: com, origin, pivot, or X,Y,Z in body coordinates (file units).",
 )
 UNITS = option(
@@ -106,6 +134,7 @@ UNITS = option(
     "--units",
     "-u",
     metavar="SI|LENGTH,MASS",
+    parser=parse_units,
     help="Report results in other units: SI (m, kg) or e.g. mm,g. Default: the spec file's "
     "units. Numbers given on the command line (an --about X,Y,Z point) stay in the file's units.",
 )
@@ -140,18 +169,16 @@ def require_matplotlib(option: str = "--plot") -> None:
     # matplotlib logs two lines on stderr when XDG_CACHE_HOME or MPLCONFIGDIR cannot be written,
     # and then draws all the same in a temporary cache folder: rbi's stderr keeps its own lines
     logging.getLogger("matplotlib").setLevel(logging.ERROR)
-    try:
-        import matplotlib  # noqa: F401  (the optional extra `plot`, loaded only when a picture is asked for)
-    except ImportError:
-        raise SpecError(
-            f"{option}: needs matplotlib, which is not installed: pip install '.[plot]' from rbi's source folder, or pip install matplotlib"
-        ) from None
+    require("matplotlib", "plot", option)
 
 
 def require(module: str, extra: str, option: str) -> None:
-    """Refuse ``option`` with the install command when the optional package ``module`` is missing."""
-    if importlib.util.find_spec(module) is None:
+    """Refuse ``option`` with the install command when the optional package ``module`` is missing
+    (or cannot be imported), loading it otherwise: it is used next."""
+    try:
+        __import__(module)  # the import statement's hook (a test's stand-in for a missing package)
+    except ImportError:
         raise SpecError(
-            f"{option}: needs the optional package {module!r}: pip install '.[{extra}]' from rbi's "
+            f"{option}: needs {module}, which is not installed: pip install '.[{extra}]' from rbi's "
             f"source folder, or pip install {module}"
-        )
+        ) from None

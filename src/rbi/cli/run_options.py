@@ -6,7 +6,7 @@ from __future__ import annotations
 
 from typing import Any
 
-from rbi.cli.option_values import spin_axis_option, vector_parser
+from rbi.cli.option_values import parse_vector, spin_axis_option
 from rbi.cli.options import option
 
 RUN = {
@@ -24,7 +24,7 @@ RUN = {
             "--omega",
             "-w",
             metavar="WX,WY,WZ",
-            parser=vector_parser("--omega"),
+            parser=parse_vector,
             help="Initial angular velocity in body axes, rad/s.",
         ),
         option(

@@ -3,19 +3,16 @@
 from __future__ import annotations
 
 import rbi
-from rbi.cli.options import REQUIRED, SpecFile, command, needs, option, require_matplotlib
+from rbi.cli.options import REQUIRED, SpecFile, command, needs, out_option, require_matplotlib
 from rbi.cli.render import say_warnings
 from rbi.cli.terminal import terminal_safe
 
 
 @command(
-    option(
-        str,
-        "--out",
-        "-o",
+    out_option(
+        "FILE.png|FILE.svg|FILE.html",
+        f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
         default=REQUIRED,
-        metavar="FILE.png|FILE.svg|FILE.html",
-        help=f"The picture: .png or .svg ({needs('matplotlib', 'plot')}), or .html (3D, opens offline).",
     )
 )
 def show(file: SpecFile, *, out: str) -> None:

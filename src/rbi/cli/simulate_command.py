@@ -5,7 +5,7 @@ from __future__ import annotations
 import sys
 
 import rbi
-from rbi.cli.options import FORMAT, OutputFormat, SpecFile, command, needs, option, require_matplotlib
+from rbi.cli.options import FORMAT, OutputFormat, SpecFile, command, option, out_option, plot_option
 from rbi.cli.render import emit_result, note, progress_bar, tables_of
 from rbi.cli.run_options import RUN, budget
 
@@ -20,12 +20,8 @@ METHOD_HELP = (
 
 OPTIONS = (
     *RUN.values(),
-    option(
-        str | None,
-        "--out",
-        "-o",
-        metavar="FILE.csv",
-        help="Write the trajectory as CSV (only if the run succeeds; '-' for standard output).",
+    out_option(
+        "FILE.csv", "Write the trajectory as CSV (only if the run succeeds; '-' for standard output)."
     ),
     option(str, "--method", "-m", metavar="NAME", help=METHOD_HELP),
     option(
@@ -34,13 +30,9 @@ OPTIONS = (
         help="Estimate the trajectory's error with a second run of the compiled integrator at a tolerance "
         "1000x tighter (at most down to 1e-15; not for --method exact, which has no numerical error).",
     ),
-    option(
-        str | None,
-        "--plot",
-        metavar="FILE.png|.svg|.pdf",
-        help="Plot the path of the spin axis seen from above, its tilt "
-        "(a free body: each principal axis's turn), ω and energy "
-        f"drift against time ({needs('matplotlib', 'plot')}).",
+    plot_option(
+        "Plot the path of the spin axis seen from above, its tilt (a free body: each principal axis's "
+        "turn), ω and energy drift against time"
     ),
     option(
         int | None,
@@ -74,8 +66,6 @@ def simulate(file: SpecFile, *, format: OutputFormat, out: str | None, **setting
             "--out -: the trajectory goes to standard output, where --format json prints its "
             "object; write the trajectory to a file (--out FILE.csv) or leave out --format json"
         )
-    if settings["plot"] is not None:
-        require_matplotlib()
     format = OutputFormat.csv if streamed else format
     body = rbi.load(file)
     with progress_bar("simulating", stdout=True, delay=0.5, show=format == OutputFormat.table) as progress:

@@ -8,7 +8,7 @@ from rich.text import Text
 
 import rbi
 from rbi.cli import tables
-from rbi.cli.option_values import axis_parser, vary_option
+from rbi.cli.option_values import sweep_values, vary_option
 from rbi.cli.options import (
     FORMAT,
     OutputFormat,
@@ -16,8 +16,9 @@ from rbi.cli.options import (
     command,
     needs,
     option,
+    out_option,
+    plot_option,
     require,
-    require_matplotlib,
 )
 from rbi.cli.render import emit_result, note, progress_bar
 from rbi.cli.run_options import RUN, budget
@@ -30,7 +31,7 @@ OPTIONS = (
         "-s",
         default="0",
         metavar="START:STOP:COUNT",
-        parser=axis_parser("--spin"),
+        parser=sweep_values,
         help="Spins about the spin axis, rad/s (or one value).",
     ),
     option(
@@ -39,7 +40,7 @@ OPTIONS = (
         default="0",
         name="tilt_deg",
         metavar="START:STOP:COUNT",
-        parser=axis_parser("--tilt"),
+        parser=sweep_values,
         help="Nudges at t=0: turns of the body about --tilt-axis, degrees (or one value).",
     ),
     option(
@@ -76,24 +77,16 @@ OPTIONS = (
         help="Run on the Dask scheduler at ADDRESS (tcp://host:8786), or 'local' "
         f"for a local cluster ({needs('Dask', 'dask')}).",
     ),
-    option(
-        str | None,
-        "--out",
-        "-o",
-        metavar="FILE.csv|FILE.parquet",
-        help=f"Write one row per run, streamed as runs finish (FILE.parquet {needs('pyarrow', 'parquet')}).",
+    out_option(
+        "FILE.csv|FILE.parquet",
+        f"Write one row per run, streamed as runs finish (FILE.parquet {needs('pyarrow', 'parquet')}).",
     ),
     option(
         bool,
         "--resume",
         help="Continue an interrupted sweep into --out: compute only the runs missing there.",
     ),
-    option(
-        str | None,
-        "--plot",
-        metavar="FILE.png|.svg|.pdf",
-        help=f"Draw the map: largest tilt over the first two swept axes ({needs('matplotlib', 'plot')}).",
-    ),
+    plot_option("Draw the map: largest tilt over the first two swept axes"),
     option(
         bool,
         "--mass-properties",
@@ -132,8 +125,6 @@ def sweep(file: SpecFile, *, format: OutputFormat, **settings) -> None:
         require("distributed", "dask", "--dask")
     if settings["dask"] == "local":
         require("cryptography", "dask", "--dask local")  # its private TLS certificates
-    if settings["plot"] is not None:
-        require_matplotlib()
     table = _run(file, budget(settings) | {"vary": vary_option(settings["vary"] or [])})
     workers = settings["workers"]
     if workers is not None and table.cores is not None and table.cores < workers:
