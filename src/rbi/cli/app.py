@@ -15,7 +15,6 @@ import difflib
 import gc
 import importlib
 import os
-import signal
 import sys
 import warnings
 from collections.abc import Iterable
@@ -226,17 +225,8 @@ def main() -> None:
     atexit.register(gc.freeze)
     terminal.prepare_streams()
     terminal.guard_stdout()
-    previous_sigterm = signal.getsignal(signal.SIGTERM)
-    terminal.install_signal_handlers()
-    try:
+    with terminal.sigterm_unwinds():
         _run()
-    finally:
-        try:
-            signal.signal(
-                signal.SIGTERM, previous_sigterm if previous_sigterm is not None else signal.SIG_DFL
-            )
-        except ValueError:  # not the main thread: nothing was installed
-            pass
 
 
 def _run() -> None:

@@ -33,9 +33,6 @@ from rbi.cli.render import (
 )
 from rbi.cli.terminal import say, status_kept, terminal_safe
 
-STDIN = "-"
-STDIN_LABEL = "<stdin>"
-
 
 @dataclass
 class FileReport:
@@ -47,11 +44,6 @@ class FileReport:
     result: Any
     failed: bool = False
     table: Callable[[], Any] | None = None
-
-
-def file_label(file: str) -> str:
-    """How a FILE argument is named in output and messages (``-`` is ``<stdin>``)."""
-    return STDIN_LABEL if file == STDIN else file
 
 
 def report_each(files: Sequence[str], report: Callable[[str], FileReport], fmt: str) -> int:
@@ -89,7 +81,7 @@ class _Several:
                 continue
             status = max(status, int(one.failed))
             with status_kept(status):
-                self.write(file_label(file), one, data)
+                self.write("<stdin>" if file == "-" else file, one, data)  # as messages name it
         return status
 
     def write(self, label: str, one: FileReport, data: dict[str, Any]) -> None:

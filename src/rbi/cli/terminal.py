@@ -248,12 +248,19 @@ def _on_sigterm(signum, frame) -> None:
     raise Terminated()
 
 
-def install_signal_handlers() -> None:
-    """SIGTERM unwinds the run (see :class:`Terminated`) instead of killing the process where it
-    stands, so no temporary output file is left behind. Ctrl-C (SIGINT) already raises
-    KeyboardInterrupt. Only the main thread may install handlers; elsewhere nothing changes."""
-    try:
+@contextlib.contextmanager
+def sigterm_unwinds():
+    """Inside, SIGTERM unwinds the run (see :class:`Terminated`) instead of killing the process
+    where it stands, so no temporary output file is left behind; the default handling is back
+    on leaving. Ctrl-C (SIGINT) already raises KeyboardInterrupt. Only the main thread may
+    install handlers, and only a default one is replaced; elsewhere nothing changes."""
+    installed = False
+    with contextlib.suppress(ValueError):  # not the main thread (an embedding program): its handlers stay
         if signal.getsignal(signal.SIGTERM) in (signal.SIG_DFL, None):
             signal.signal(signal.SIGTERM, _on_sigterm)
-    except ValueError:  # not the main thread (an embedding program): leave its handlers alone
-        pass
+            installed = True
+    try:
+        yield
+    finally:
+        if installed:
+            signal.signal(signal.SIGTERM, signal.SIG_DFL)
