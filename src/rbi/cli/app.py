@@ -159,16 +159,11 @@ def did_you_mean(name: str, valid: Iterable[str]) -> str:
 
 def usage_message(error) -> str:
     """The one-line message for a click usage error: an unknown option names the nearest of the
-    command's own options (``no such option: --abuot (did you mean --about?)``)."""
+    command's own options, as click found it (``no such option: --abuot (did you mean --about?)``)."""
 
-    if isinstance(error, NoSuchOption) and error.ctx is not None:
-        options = [
-            name
-            for param in error.ctx.command.params
-            for name in (*param.opts, *param.secondary_opts)
-            if name.startswith("-")
-        ]
-        return f"no such option: {error.option_name}{did_you_mean(error.option_name, options)}"
+    if isinstance(error, NoSuchOption):
+        near = f" (did you mean {error.possibilities[0]}?)" if error.possibilities else ""
+        return f"no such option: {error.option_name}{near}"
     # click lays a list of choices out one per line ("Choose from:\n\turdf,\n\tmjcf"): one line here
     return error.format_message().replace(":\n\t", ": ").replace(",\n\t", ", ")
 
