@@ -216,3 +216,17 @@ def test_a_xacro_error_never_prints_what_a_data_file_holds(tmp_path, expression,
     assert proc.returncode == 2, proc.stderr
     text = proc.stderr + proc.stdout
     assert "SECRET" not in text and expression in text, text
+
+
+@pytest.mark.parametrize("fmt", ["table", "json", "csv"])
+def test_a_sphere_whose_volume_overflows_is_one_line(tmp_path, fmt):
+    """Found: a collision sphere of radius 1e110 m was an internal error (exit 1): Python's
+    float power (r³) raises OverflowError where a box's product gives inf. Refused as the box
+    is, naming the geometry."""
+    text = (
+        '<robot name="r"><link name="a"><inertial><mass value="1"/><inertia ixx="1" ixy="0" ixz="0" '
+        'iyy="1" iyz="0" izz="1"/></inertial><collision><geometry><sphere radius="1e110"/>'
+        "</geometry></collision></link></robot>"
+    )
+    proc = run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text), "--format", fmt)
+    one_line_exit_2(proc, "sphere", "too large")

@@ -318,3 +318,41 @@ def test_a_pivot_so_far_its_inertia_overflows_says_so(write_spec, tmp_path, comm
     assert sweep.returncode == 0, sweep.stderr
     status = json.loads(sweep.stdout)["runs"][0]["status"]
     assert "inertia about the pivot" in status and "too large" in status and "Eigenvalues" not in status
+
+
+def test_a_sphere_whose_volume_overflows_has_an_inertia_but_no_parts_table(write_spec):
+    """Found: a sphere of radius 1e110 m and mass 1 kg was an internal error (exit 1) in every
+    command: Python's float power (r³ = 1e330) raises OverflowError where numpy gives inf. Its
+    inertia, 2/5 m r² = 4e219 kg·m², is a result; its volume is not a double, so ``rbi parts``
+    refuses it in one line (JSON cannot hold inf) in every output form."""
+    spec = write_spec("parts:\n  - {shape: sphere, mass: 1, radius: 1.0e110, center: [0, 0, 0]}\n")
+    proc = run_rbi_inprocess("inertia", spec, "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    np.testing.assert_allclose(np.diag(json.loads(proc.stdout)["inertia"]), [4e219] * 3, rtol=1e-15)
+    for fmt in ("table", "json", "csv"):
+        one_line_exit_2(run_rbi_inprocess("parts", spec, "--format", fmt), "volume", "not finite")
+
+
+def test_holes_in_a_body_whose_masses_underflow_are_one_line(write_spec):
+    """Found: a disc with a hole, both 1e-110 m across at density 1, has masses that underflow
+    to 0; the holes check summed a massless body and stopped with an internal error (exit 1).
+    It is refused as any massless body is."""
+    spec = write_spec(
+        "parts:\n"
+        "  - {shape: cylinder, density: 1, radius: 1.0e-110, start: [0, 0, 0], end: [0, 0, 1.0e-111]}\n"
+        "  - {shape: cylinder, density: 1, radius: 1.0e-111, start: [0, 0, 0], end: [0, 0, 1.0e-111],"
+        " subtract: true}\n"
+    )
+    one_line_exit_2(run_rbi_inprocess("inertia", spec), "mass")
+
+
+def test_a_part_too_thin_for_any_units_guess_is_still_read(write_spec):
+    """Found: a cone 0.04 long across but 6e-162 high (volume 1e-165) made the units guess
+    take log10 of a probability that underflowed to 0: an internal error (exit 1). The part is
+    read, with the density warning such a part deserves."""
+    spec = write_spec(
+        "parts:\n  - {shape: cone, density: 1, radius: 0.04, apex: [0, 0, 0], base: [0, 0, 6.0e-162]}\n"
+    )
+    proc = run_rbi_inprocess("inertia", spec, "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    assert "internal error" not in proc.stderr

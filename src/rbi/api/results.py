@@ -423,6 +423,7 @@ class Parts(Results[Part]):
         volumes = [part.volume for part in parts]
         volume = sum(v for v in volumes if v is not None)  # a hole's is negative
         self.volume: float | None = volume if any(v is not None for v in volumes) else None
+        body._refuse_non_finite(volume=self.volume)  # sizes whose volume overflows a double
         every = all(v is not None for v in volumes)
         self.mean_density: float | None = body.mass / volume if every and volume > 0 else None
         self.principal_moments: np.ndarray = body.principal().moments

@@ -23,6 +23,8 @@ MASS_RTOL = 1e-9
 def body_problem(elements: MassProperties, mass_unit: str = "") -> str | None:
     """Why the body made of the stack ``elements`` (holes with negative mass) is not physical,
     or None."""
+    if not np.abs(elements.mass).sum() > 0:
+        return None  # no mass at all (sizes that underflow): refused as any massless body is
     sign = np.sign(elements.mass)
     gross = MassProperties(
         np.abs(elements.mass), elements.center_of_mass, sign[:, None, None] * elements.inertia_about_com

@@ -272,7 +272,8 @@ class _Solid:
         size_tail = math.exp(-abs(size_decades - math.log10(BODY_SIZE_M)) / BODY_SIZE_SPREAD_DECADES)
         size_prior = size_tail / (BODY_SIZE_SPREAD_DECADES * (1 + size_tail) ** 2)  # logistic density
         share = material_share(size_decades)
-        return -math.log10((share * spike + (1 - share) * spread) * size_prior)
+        probability = (share * spike + (1 - share) * spread) * size_prior
+        return -math.log10(probability) if probability > 0 else math.inf  # 0: underflow (absurd sizes)
 
     def rare_in_si(self, length: str, mass: str) -> str:
         """What is odd about a part possible in metres and kilograms that ``length`` and

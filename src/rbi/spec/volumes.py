@@ -4,6 +4,7 @@ rule read."""
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 
 import numpy as np
@@ -40,16 +41,20 @@ PART_VOLUMES: dict[type, Callable[[object], float]] = {
 """Volume (L³) of each solid part model; points, rods and custom parts have none."""
 
 
-def one_volume(part) -> float:
-    """The volume of one copy of a solid part (L³)."""
-    return scalar(PART_VOLUMES[type(part)](part))
+def one_volume(part) -> float | None:
+    """The volume of one copy of a solid part (L³); inf when it overflows a double, None for a
+    mesh or STEP part not yet read."""
+    try:
+        one = PART_VOLUMES[type(part)](part)
+    except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
+        return math.inf
+    return one if one is None else scalar(one)
 
 
 def part_volume(part) -> float | None:
     """The part's volume in the file's length unit cubed (all copies of a ``pattern``), or None
     for a part without one (or a mesh not yet read)."""
-    volume = PART_VOLUMES.get(type(part))
-    one = None if volume is None else volume(part)
+    one = one_volume(part) if type(part) in PART_VOLUMES else None
     if one is None:
         return None
     return float(one) * (1 if part.pattern is None else part.pattern.count)
