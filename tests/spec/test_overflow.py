@@ -356,3 +356,16 @@ def test_a_part_too_thin_for_any_units_guess_is_still_read(write_spec):
     proc = run_rbi_inprocess("inertia", spec, "--format", "json")
     assert proc.returncode == 0, proc.stderr
     assert "internal error" not in proc.stderr
+
+
+def test_an_uncertainty_whose_squares_overflow_is_still_its_root_sum_square(write_spec):
+    """Found: a cone of mass 1 kg, radius 1e110 ± 1e108 m: the inertia is 3e219 kg·m² and its
+    uncertainty (∂I/∂r · u(r): 3/10 m r u = 3e217 about x and y, 3/5 m r u = 6e217 about z)
+    squared past a double, so JSON output was an internal error (exit 1)."""
+    spec = write_spec(
+        'parts:\n  - {shape: cone, mass: 1, radius: "1e110 ± 1e108", apex: [0, 0, 0], base: [0, 0, 1]}\n'
+    )
+    proc = run_rbi_inprocess("inertia", spec, "--format", "json")
+    assert proc.returncode == 0, proc.stderr
+    spread = np.diag(json.loads(proc.stdout)["uncertainty"]["inertia"])
+    np.testing.assert_allclose(spread, [3e217, 3e217, 6e217], rtol=1e-12)

@@ -496,7 +496,11 @@ class Body(Result):
         uncertainties); None when the spec writes no number with ±."""
         if not self._uncertain:
             return None
-        return linear(self._loaded, self.point(about)).standard(None if axes is None else _rotation(axes))
+        spread = linear(self._loaded, self.point(about)).standard(None if axes is None else _rotation(axes))
+        self._refuse_non_finite(
+            "uncertainty: ", mass=spread.mass, center_of_mass=spread.center_of_mass, inertia=spread.inertia
+        )
+        return spread
 
     @property
     def mass_properties(self) -> MassProperties:

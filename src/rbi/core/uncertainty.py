@@ -67,8 +67,19 @@ def principal_derivatives(
 
 def combined(sensitivities: np.ndarray, u: np.ndarray) -> np.ndarray:
     """The law of propagation for independent inputs (GUM 5.1.2): ``√Σₖ (∂y/∂xₖ · u(xₖ))²``
-    for each quantity; ``sensitivities`` (..., k), ``u`` (k,)."""
-    return np.sqrt(np.sum((sensitivities * u) ** 2, axis=-1))
+    for each quantity; ``sensitivities`` (..., k), ``u`` (k,). Where the squares overflow or
+    underflow a double (terms past 1e154 or below 1e-154) the sum is taken again scaled by its
+    largest term, so the root is still the true one."""
+    terms = sensitivities * u
+    with np.errstate(over="ignore", under="ignore"):
+        total = np.sqrt(np.sum(terms**2, axis=-1))
+    largest = np.max(np.abs(terms), axis=-1, initial=0.0)
+    lost = np.isfinite(largest) & (largest > 0) & ~((total > 1e-150) & (total < 1e150))
+    if np.any(lost):
+        scale = np.where(lost, largest, 1.0)
+        rescaled = scale * np.sqrt(np.sum((terms / scale[..., None]) ** 2, axis=-1))
+        total = np.where(lost, rescaled, total)
+    return total
 
 
 def axis_uncertainty_deg(moments: np.ndarray, u_moments: np.ndarray, turn: np.ndarray, u: np.ndarray) -> list:
