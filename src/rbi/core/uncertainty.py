@@ -12,6 +12,7 @@ versions of the parts into n bodies at once. Units are the caller's (L, M, M·L�
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 
 import numpy as np
 
@@ -67,18 +68,22 @@ def principal_derivatives(
 
 def combined(sensitivities: np.ndarray, u: np.ndarray) -> np.ndarray:
     """The law of propagation for independent inputs (GUM 5.1.2): ``√Σₖ (∂y/∂xₖ · u(xₖ))²``
-    for each quantity; ``sensitivities`` (..., k), ``u`` (k,). Where the squares overflow or
-    underflow a double (terms past 1e154 or below 1e-154) the sum is taken again scaled by its
-    largest term, so the root is still the true one."""
-    terms = sensitivities * u
+    for each quantity; ``sensitivities`` (..., k), ``u`` (k,)."""
+    return scale_safe(lambda terms: np.sqrt(np.sum(terms**2, axis=-1)), sensitivities * u)
+
+
+def scale_safe(root: Callable[[np.ndarray], np.ndarray], terms: np.ndarray) -> np.ndarray:
+    """``root(terms)``, a root of a sum of squares over the last axis (so ``root(c x) = c
+    root(x)``: a root-sum-square, a standard deviation), taken again on the terms divided by
+    their largest where the squares leave a double (terms past 1e154 or below 1e-154), so it
+    is the true value rather than inf or 0. Ordinary terms get the plain formula, bit for bit."""
     with np.errstate(over="ignore", under="ignore"):
-        total = np.sqrt(np.sum(terms**2, axis=-1))
+        total = root(terms)
     largest = np.max(np.abs(terms), axis=-1, initial=0.0)
     lost = np.isfinite(largest) & (largest > 0) & ~((total > 1e-150) & (total < 1e150))
     if np.any(lost):
         scale = np.where(lost, largest, 1.0)
-        rescaled = scale * np.sqrt(np.sum((terms / scale[..., None]) ** 2, axis=-1))
-        total = np.where(lost, rescaled, total)
+        total = np.where(lost, scale * root(terms / scale[..., None]), total)
     return total
 
 

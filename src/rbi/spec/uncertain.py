@@ -35,6 +35,7 @@ from rbi.core.uncertainty import (
     combined,
     coverage_factor,
     principal_derivatives,
+    scale_safe,
     shortest_interval,
     validated,
 )
@@ -669,7 +670,8 @@ def budget(
             symmetric = tuple(np.quantile(y, [0.5 - coverage / 2, 0.5 + coverage / 2]).tolist())
             entry["linear"] = {key: entry[key] for key in ("value", "u", "interval")}
             entry["linear"]["validated"] = validated(spread, interval, symmetric)
-            entry.update(value=float(np.mean(y)), u=float(np.std(y - y[0], ddof=1)))
+            spread_of_draws = scale_safe(lambda d: np.std(d, ddof=1, axis=-1), y - y[0])
+            entry.update(value=float(np.mean(y)), u=float(spread_of_draws))
             entry["interval"] = list(shortest_interval(y, coverage))
         ranks = Contributions(result.inputs, ranked, sensitivity[ranked], part[ranked], share[ranked])
         entry.update(coverage=coverage, contributions=ranks)
