@@ -384,3 +384,16 @@ def test_a_monte_carlo_spread_whose_squares_overflow_is_still_its_standard_devia
     assert proc.returncode == 0, proc.stderr
     u = {q["quantity"]: q["u"] for q in json.loads(proc.stdout)["quantities"]}
     np.testing.assert_allclose([u["inertia[0][0]"], u["inertia[2][2]"]], [3e217, 6e217], rtol=0.1)
+
+
+@pytest.mark.parametrize("copies", [1, 40])  # 40: the batched path for many parts
+def test_a_pattern_of_massless_copies_is_refused_naming_the_part(write_spec, copies):
+    """Found: a patterned cylinder 1e-110 m across at density 1 has copies whose mass underflows
+    to 0; combining the pattern raised inside the batched builder, an internal error (exit 1).
+    One line naming the part, exit 2."""
+    spec = write_spec(
+        "parts:\n  - {shape: box, mass: 1, size: [1, 1, 1], center: [0, 0, 0]}\n"
+        + "  - {shape: cylinder, density: 1, radius: 1.0e-110, start: [1, 0, 0], end: [1, 0, 1.0e-110],"
+        " pattern: {count: 6, axis: [0, 0, 1], through: [0, 0, 0]}}\n" * copies
+    )
+    one_line_exit_2(run_rbi_inprocess("inertia", spec), "parts[1]", "mass")

@@ -486,7 +486,11 @@ def stacked_parts(spec: models.BodySpec, path: str) -> tuple[MassProperties, lis
         with np.errstate(all="ignore"):
             m, c, I = BUILDERS[kind](Columns(chosen, np.arange(len(chosen)), {}), spec.units)
             for r in [r for r, part in enumerate(chosen) if not plain_part(part)]:
-                element = _as_written(chosen[r], m[r], c[r], I[r])
+                try:
+                    element = _as_written(chosen[r], m[r], c[r], I[r])
+                except ValueError:  # a pattern of massless copies: refused below, the part named
+                    m[r] = np.nan
+                    continue
                 m[r], c[r], I[r] = element.mass, element.center_of_mass, element.inertia_about_com
             ok = _finite(m, c, I) & ~moments_lost(I, chosen[0].shape)
         rows = np.asarray(indices)[ok]
