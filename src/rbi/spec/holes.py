@@ -23,11 +23,12 @@ MASS_RTOL = 1e-9
 def body_problem(elements: MassProperties, mass_unit: str = "") -> str | None:
     """Why the body made of the stack ``elements`` (holes with negative mass) is not physical,
     or None."""
-    if not np.abs(elements.mass).sum() > 0:
+    material = np.abs(elements.mass)  # holes counted as material
+    if not material.sum() > 0:
         return None  # no mass at all (sizes that underflow): refused as any massless body is
     sign = np.sign(elements.mass)
     gross = MassProperties(
-        np.abs(elements.mass), elements.center_of_mass, sign[:, None, None] * elements.inertia_about_com
+        material, elements.center_of_mass, sign[:, None, None] * elements.inertia_about_com
     ).sum()
     net_mass = float(sum(elements.mass.tolist()))
     if not net_mass > MASS_RTOL * gross.mass:
