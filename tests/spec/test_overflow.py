@@ -349,13 +349,14 @@ def test_holes_in_a_body_whose_masses_underflow_are_one_line(write_spec):
 def test_a_part_too_thin_for_any_units_guess_is_still_read(write_spec):
     """Found: a cone 0.04 long across but 6e-162 high (volume 1e-165) made the units guess
     take log10 of a probability that underflowed to 0: an internal error (exit 1). The part is
-    read, with the density warning such a part deserves."""
+    read: its mass is density × π r² h / 3."""
     spec = write_spec(
         "parts:\n  - {shape: cone, density: 1, radius: 0.04, apex: [0, 0, 0], base: [0, 0, 6.0e-162]}\n"
     )
     proc = run_rbi_inprocess("inertia", spec, "--format", "json")
     assert proc.returncode == 0, proc.stderr
     assert "internal error" not in proc.stderr
+    assert json.loads(proc.stdout)["mass"] == pytest.approx(math.pi * 0.04**2 * 6.0e-162 / 3, rel=1e-12)
 
 
 def test_an_uncertainty_whose_squares_overflow_is_still_its_root_sum_square(write_spec):
