@@ -9,6 +9,8 @@ from functools import cache
 import numpy as np
 import pytest
 import sympy as sp
+from hypothesis import given
+from hypothesis import strategies as st
 from scipy.spatial.transform import Rotation
 
 from rbi.core import shapes
@@ -155,3 +157,27 @@ def test_density_gives_mass_equal_to_density_times_integrated_volume(write_spec)
     assert body.elements[0].mass == pytest.approx(cone_mass, rel=1e-13)
     assert body.elements[1].mass == pytest.approx(rod_mass, rel=1e-13)
     assert body.props.mass == pytest.approx(cone_mass + rod_mass, rel=1e-13)
+
+
+@given(
+    st.one_of(
+        st.floats(min_value=-1e70, max_value=1e70),  # x⁴ a number
+        st.complex_numbers(max_magnitude=1e70, allow_nan=False, allow_infinity=False),
+    ),
+    st.integers(min_value=1, max_value=4),
+)
+def test_power_is_pythons_power_wherever_that_is_a_number(x, exponent):
+    """The closed forms' powers are Python's, bit for bit, for real and complex-step inputs
+    alike (numpy's power may round apart)."""
+    got, expected = shapes.power(x, exponent), x**exponent
+    assert got == expected and type(got) is type(expected)
+
+
+@pytest.mark.parametrize("x, exponent", [(1e110, 3), (1e80, 4), (complex(1e110, 1e-20), 3)])
+def test_power_that_leaves_a_double_is_inf_as_numpys(x, exponent):
+    """Python raises OverflowError for 1e110 ** 3 where numpy's float64 gives inf; the closed
+    forms give inf, so callers refuse the part by their one finiteness check."""
+    assert shapes.power(x, exponent) == math.inf
+    with np.errstate(over="ignore"):
+        assert np.isinf(np.power(np.float64(abs(x)), exponent, dtype=float))
+    assert shapes.sphere_volume(1e110) == math.inf and shapes.hemisphere_volume(1e110) == math.inf

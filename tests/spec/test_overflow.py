@@ -115,6 +115,14 @@ def test_huge_and_tiny_directions_turn_the_part_as_unit_ones(write_spec, case, s
     "text, words",
     [
         ("- {shape: sphere, density: 1000, radius: 1.0e+200, center: [0, 0, 0]}", ("parts[0]", "too large")),
+        (  # R⁴ = 1e320 leaves a double inside the thick shell's closed form
+            "- {shape: spherical_shell, mass: 1, outer_radius: 1.0e+80, inner_radius: 1.0e+79, center: [0, 0, 0]}",
+            ("parts[0]", "too large"),
+        ),
+        (
+            "- {shape: hemisphere, density: 1, radius: 1.0e+110, center: [0, 0, 0], axis: [0, 0, 1]}",
+            ("parts[0]", "too large"),
+        ),
         (
             "- {shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1.0e+308, iyy: 1.0e+308, izz: 1.0e+308}}",
             ("parts[0]", "too large"),

@@ -269,12 +269,22 @@ def ellipsoid(
     return MassProperties(mass, numbers(center), _turned(moments, rotation))
 
 
+def power(x: Numbers, exponent: int) -> Numbers:
+    """``x ** exponent``, or inf where a Python number's power leaves a double (Python raises
+    OverflowError there, numpy gives inf), so an oversized part reaches its caller's finiteness
+    check as numpy's arrays do; any other ``x`` is powered as written, bit for bit."""
+    try:
+        return x**exponent
+    except OverflowError:
+        return math.inf
+
+
 # --- spheres -------------------------------------------------------------------------------
 
 
 def sphere_volume(radius: float) -> float:
     """Volume of a solid sphere (L³)."""
-    return 4.0 / 3.0 * math.pi * radius**3
+    return 4.0 / 3.0 * math.pi * power(radius, 3)
 
 
 def sphere_inertia(mass: Numbers, radius: Numbers) -> np.ndarray:
@@ -301,7 +311,8 @@ def spherical_shell(
     (2/3 m R²).
     """
     R, r = outer_radius, inner_radius
-    ratio = (R**4 + R**3 * r + R * R * r * r + R * r**3 + r**4) / (R * R + R * r + r * r)
+    quartic = power(R, 4) + power(R, 3) * r + R * R * r * r + R * power(r, 3) + power(r, 4)
+    ratio = quartic / (R * R + R * r + r * r)
     return MassProperties(mass, numbers(center), 0.4 * mass * ratio * np.eye(3))
 
 
@@ -407,7 +418,7 @@ def torus(
 
 def hemisphere_volume(radius: float) -> float:
     """Volume 2/3 π r³ of a solid hemisphere (L³)."""
-    return 2.0 / 3.0 * math.pi * radius**3
+    return 2.0 / 3.0 * math.pi * power(radius, 3)
 
 
 HEMISPHERE_COM_FRACTION = 3.0 / 8.0

@@ -151,8 +151,6 @@ def distribution(
             measure, moments = primitive(geom.kind, geom.size, geom.shell)
         except ValueError as exc:
             raise InputError(f"{where}{geom.label}: {exc}") from None
-        except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
-            measure, moments = math.inf, np.full(3, math.inf)
         inertia = (R * moments) @ R.T
         corners = np.abs(R) @ half_extent(geom.kind, geom.size)
         if not (np.isfinite(measure) and np.all(np.isfinite(inertia))):

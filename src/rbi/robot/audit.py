@@ -680,7 +680,7 @@ def _on_stacks(column, at: np.ndarray) -> tuple:
     for key in keys:
         try:
             known.append((*primitive(column.kind, key), half_extent(column.kind, key)))
-        except (ValueError, OverflowError):  # refused (or overflowing) here, refused there
+        except ValueError:  # refused here, refused there
             known.append((np.nan, np.full(3, np.nan), np.full(3, np.nan)))
     measure = np.array([each[0] for each in known], dtype=float)[inverse]
     moments, half = (stacked([each[k] for each in known], (3,))[inverse] for k in (1, 2))

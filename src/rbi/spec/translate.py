@@ -9,7 +9,6 @@ part of a common shape as a stack of one), naming the part in its errors."""
 from __future__ import annotations
 
 import functools
-import math
 import os
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -352,19 +351,11 @@ def _cones(parts, units):
     return mass, com, shapes.axisymmetric_inertia(axial, transverse, u)
 
 
-def _sphere_volume(radius: float) -> float:
-    """One sphere's volume as :func:`rbi.spec.volumes.one_volume` takes it (Python's ``r**3``,
-    which numpy's power of an array may round apart); inf where Python's power overflows (the
-    part is then reported)."""
-    try:
-        return shapes.sphere_volume(radius)
-    except OverflowError:
-        return math.inf
-
-
 def _spheres(parts, units):
     radius = parts.column("radius")
-    volume = np.array([_sphere_volume(r) for r in radius.tolist()])
+    # one sphere at a time, as rbi.spec.volumes.one_volume takes it: Python's r ** 3, which numpy's
+    # power of an array may round apart
+    volume = np.array([shapes.sphere_volume(r) for r in radius.tolist()])
     mass = parts.masses(units, volume)
     return mass, parts.column("center"), shapes.sphere_inertia(mass, radius)
 
@@ -439,9 +430,7 @@ def _finite_element(index: int, part, units: models.Units, path: str) -> MassPro
             element = part_element(part, units, path)
     except ValueError as exc:
         raise InputError(f"{path}: {part_label(index, part)}: {exc}") from None
-    except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
-        element = None
-    if element is None or not _finite(element.mass, element.center_of_mass, element.inertia_about_com):
+    if not _finite(element.mass, element.center_of_mass, element.inertia_about_com):
         raise InputError(
             f"{path}: {part_label(index, part)}: numbers too large: mass or inertia overflows "
             f"(beyond {np.finfo(float).max:.3g}); is the unit of its sizes or density right?"

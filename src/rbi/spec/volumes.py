@@ -4,7 +4,6 @@ rule read."""
 
 from __future__ import annotations
 
-import math
 from collections.abc import Callable
 
 import numpy as np
@@ -44,10 +43,7 @@ PART_VOLUMES: dict[type, Callable[[object], float]] = {
 def one_volume(part) -> float | None:
     """The volume of one copy of a solid part (L³); inf when it overflows a double, None for a
     mesh or STEP part not yet read."""
-    try:
-        one = PART_VOLUMES[type(part)](part)
-    except OverflowError:  # Python float arithmetic (r ** 3) raises where numpy gives inf
-        return math.inf
+    one = PART_VOLUMES[type(part)](part)
     return one if one is None else scalar(one)
 
 
