@@ -49,12 +49,13 @@ def assert_matches(part, mass, com, inertia, rel=1e-14):
     model = [mass, *com, *np.asarray(inertia, dtype=object).reshape(9)]
     inputs = [i.path for i in result.inputs]
     for q, (name, y) in enumerate(zip(QUANTITIES, model)):
-        y = y if hasattr(y, "std_dev") else ufloat(float(y), 0.0)
-        scale = abs(y.nominal_value) + max(
-            abs(v.nominal_value if hasattr(v, "std_dev") else v) for v in model[4:]
+        uncertain = hasattr(y, "std_dev")  # else a plain number: no uncertainty, no sensitivities
+        value, u, derivatives = (
+            (y.nominal_value, y.std_dev, y.derivatives) if uncertain else (float(y), 0.0, {})
         )
-        assert result.uncertainty[q] == pytest.approx(y.std_dev, rel=rel, abs=1e-15 * scale), name
-        by_input = {x.tag: d for x, d in y.derivatives.items()}
+        scale = abs(value) + max(abs(v.nominal_value if hasattr(v, "std_dev") else v) for v in model[4:])
+        assert result.uncertainty[q] == pytest.approx(u, rel=rel, abs=1e-15 * scale), name
+        by_input = {x.tag: d for x, d in derivatives.items()}
         for k, path in enumerate(inputs):
             assert result.sensitivities[q, k] == pytest.approx(
                 by_input.get(path, 0.0), rel=rel, abs=1e-14 * scale / result.u[k]
