@@ -4,12 +4,14 @@ written with ±, against the same draws run one by one through the single-run pa
 from __future__ import annotations
 
 import json
+import tracemalloc
 
 import numpy as np
 import pytest
 
 import rbi
 from rbi.api import input_uncertainty
+from rbi.runs import draws
 from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess
 
 TOLERANCED = BODIES / "top_bolted_toleranced.yaml"
@@ -110,3 +112,21 @@ def test_draws_of_a_spec_without_plus_minus_are_refused():
     assert "top.yaml has none" in proc.stderr
     with pytest.raises(rbi.ArgumentError, match="draws: needs a spec that writes numbers with ±"):
         input_uncertainty(rbi.load(BODIES / "top.yaml"), draws=4, seed=1, **RUN)
+
+
+def test_runs_in_chunks_of_bounded_memory_give_the_numbers_of_one_call(monkeypatch):
+    """The drawn runs are integrated and summarised in chunks of at most OUT_BYTES_PER_CHUNK of
+    sampled states: 100 draws of 5,000 samples (28 MB of states in one call) in chunks of 7 runs
+    take a few MB at their peak and give the one call's spread bit for bit."""
+    run = dict(spin=100.0, tilt_deg=10.0, duration=0.1, samples=5000)
+    body = rbi.load(TOLERANCED)
+    whole = input_uncertainty(body, draws=100, seed=2, **run)
+    monkeypatch.setattr(draws, "OUT_BYTES_PER_CHUNK", 7 * 5000 * 7 * 8, raising=False)
+    tracemalloc.start()
+    try:
+        chunked = input_uncertainty(body, draws=100, seed=2, **run)
+        peak = tracemalloc.get_traced_memory()[1]
+    finally:
+        tracemalloc.stop()
+    assert chunked == whole and whole["failed"] == 0
+    assert peak < 12e6, peak

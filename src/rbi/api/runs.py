@@ -297,9 +297,9 @@ def input_uncertainty(
 ) -> dict[str, Any]:
     """The spread of `simulate`'s summary that the inputs written with ± give: the standard
     deviation of the tilt range, final tilt, mean precession rate and final ω over ``draws``
-    runs with the inputs drawn (``seed``: the same draws again), all in one call of the batched
-    kernel; ``run``: `simulate`'s settings (``spin``, ``tilt_deg``, ``duration`` ...). What
-    ``rbi simulate --draws`` adds to its JSON as ``"input_uncertainty"``."""
+    runs with the inputs drawn (``seed``: the same draws again), integrated by the batched
+    kernel in chunks of bounded memory; ``run``: `simulate`'s settings (``spin``, ``tilt_deg``,
+    ``duration`` ...). What ``rbi simulate --draws`` adds to its JSON as ``"input_uncertainty"``."""
     prepared = prepare_run(loaded_body(body, "body"), RunSettings(samples=samples, **run))
     return spread(prepared, prepared.settings.samples, draws, seed)
 

@@ -1,7 +1,8 @@
 """The motion's uncertainty from the uncertainty of a spec's inputs (``rbi simulate --draws``):
-the numbers written with ± drawn N times (JCGM 101), the N bodies built as one stack
-(:mod:`rbi.core.uncertainty`), and the N runs integrated in one call of the batched compiled
-kernel that sweeps use, summarised together as sweep rows are."""
+the numbers written with ± drawn N times (JCGM 101), the N bodies built as stacks
+(:func:`rbi.spec.uncertain.drawn`), and the N runs integrated by the batched compiled kernel
+that sweeps use, in calls of at most :data:`rbi.sim.compiled.OUT_BYTES_PER_CHUNK` of sampled
+states (memory bounded whatever N × samples), summarised together as sweep rows are."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ import numpy as np
 
 from rbi.errors import ArgumentError, literal
 from rbi.sim.api import DEFAULT_RTOL, sample_times
-from rbi.sim.compiled import STATUS_DONE, integrate_scenes
+from rbi.sim.compiled import OUT_BYTES_PER_CHUNK, STATUS_DONE, integrate_scenes
 from rbi.sim.scene import scene_from_properties
 from rbi.sim.summary import tilt_figures
 from rbi.spec.uncertain import drawn, generator
@@ -37,17 +38,24 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
         raise ArgumentError("draws", f"needs a spec that writes numbers with ± ({body.path} has none)")
     scenes = [
         scene_from_properties(each, body.pivot, scene.gravity, scene.spin_axis)
-        for each in drawn(body, draws, generator(seed))
+        for _, bodies in drawn(body, draws, generator(seed))
+        for each in bodies
     ]
     t = sample_times(prepared.settings.duration, samples)
     start = np.concatenate((prepared.q0, prepared.omega0))[None, :]
     rtol = DEFAULT_RTOL if prepared.settings.rtol is None else prepared.settings.rtol
-    out, _, status = integrate_scenes(scenes, np.repeat(start, draws, axis=0), t, rtol, prepared.budget)
-    done = [k for k in range(draws) if status[k] == STATUS_DONE and np.all(np.isfinite(out[k]))]
-    rows = tilt_figures(t, out[done, :, :4], scene.spin_frame)  # every drawn scene spins about scene's axis
+    size, rows, final = max(1, OUT_BYTES_PER_CHUNK // (t.size * 7 * 8)), [], []
+    for first in range(0, draws, size):  # chunks of runs: memory bounded whatever draws × samples
+        batch = scenes[first : first + size]
+        starts = np.repeat(start, len(batch), axis=0)
+        out, _, status = integrate_scenes(batch, starts, t, rtol, prepared.budget)
+        done = [k for k in range(len(batch)) if status[k] == STATUS_DONE and np.all(np.isfinite(out[k]))]
+        # every drawn scene spins about scene's axis
+        rows += tilt_figures(t, out[done, :, :4], scene.spin_frame)
+        final.append(out[done, -1, 4:])
     spread: dict[str, Any] = {name: _sd([row[key] for row in rows]) for name, key in FIGURES.items()}
-    spread["final_omega"] = [_sd(out[done, -1, 4 + i]) for i in range(3)]
-    return {"draws": draws, "seed": seed, "failed": draws - len(done)} | spread
+    spread["final_omega"] = [_sd(omega) for omega in np.concatenate(final).T]
+    return {"draws": draws, "seed": seed, "failed": draws - len(rows)} | spread
 
 
 def _sd(values: Any) -> float | None:

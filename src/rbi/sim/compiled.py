@@ -67,6 +67,11 @@ def available_cores() -> int:
         return max(1, os.cpu_count() or 1)
 
 
+OUT_BYTES_PER_CHUNK = 64 * 2**20
+"""Most memory the sampled states of one call of :func:`integrate_scenes` may take: its
+callers run their runs in chunks of at most this (a sweep's chunk, ``rbi simulate --draws``)."""
+
+
 def integrate_scenes(
     scenes: list[Any], starts: np.ndarray, t: np.ndarray, rtol: float, max_steps: int, threads: int = 0
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 import re
 import warnings
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
@@ -42,6 +42,7 @@ from rbi.core.uncertainty import (
 from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.spec import models
 from rbi.spec.errors import field_text, named_part
+from rbi.spec.geometry import part_count
 from rbi.spec.pattern import copy_motions
 from rbi.spec.translate import BUILDERS, Columns, given_by, part_element, plain_part, rotation_matrix
 from rbi.spec.units import LENGTH_UNITS_IN_M, MASS_UNITS_IN_KG, convert_body
@@ -461,14 +462,33 @@ def rows_at(loaded: Any, values: np.ndarray, expand: bool = False) -> Stack:
     return tuple(np.concatenate([p[j] for p in pieces], axis=1) for j in range(3))  # type: ignore[return-value]
 
 
-def drawn(loaded: Any, n: int, rng: np.random.Generator) -> MassProperties:
-    """The body ``loaded`` for n draws of every uncertain input (JCGM 101 §6): a stack of n
-    (mass (n,), centre of mass (n, 3), inertia about it (n, 3, 3)), in its units, the n bodies
-    built as one stack from their parts (:func:`rows_at`)."""
+MONTE_CARLO_BYTES = 2 * 2**30
+"""What Monte Carlo keeps in memory at most, 2 GiB (a twelfth of a 24 GiB machine, room for
+the rest of it): the n × k draws of the k inputs and the n × 16 quantities drawn
+(:data:`QUANTITIES`), 8 bytes each. More draws are refused before any is drawn
+(:func:`monte_carlo`)."""
+CHUNK_PARTS = 2**18
+"""Parts built at once, draws × the body's parts (patterns copied, sub-assemblies' parts
+counted: :func:`rbi.spec.geometry.part_count`): a few hundred bytes of working arrays each,
+some 100 MB whatever the number of draws."""
+
+
+def drawn(loaded: Any, n: int, rng: np.random.Generator) -> Iterator[tuple[slice, MassProperties]]:
+    """The body ``loaded`` for n draws of every uncertain input (JCGM 101 §6), in its units: the
+    draws made input by input, then the bodies built from their parts (:func:`rows_at`) as
+    stacks of :data:`CHUNK_PARTS` parts at a time, each chunk with its rows. Each chunk is led
+    by draw 0, as one stack of all n is (a pattern's copies are summed about the first row's),
+    so chunks give the numbers one stack gives, bit for bit."""
     inputs = loaded.spec._uncertain
-    draws = np.stack([i.draws(rng, n) for i in inputs], axis=1) if inputs else np.zeros((n, 0))
-    with np.errstate(all="ignore"):
-        return MassProperties(*body_stack(*rows_at(loaded, draws), loaded.props.center_of_mass))
+    draws = np.empty((n, len(inputs)))
+    for j, each in enumerate(inputs):
+        draws[:, j] = each.draws(rng, n)
+    size = max(1, CHUNK_PARTS // part_count(loaded, CHUNK_PARTS))
+    for start in range(0, n, size):
+        with np.errstate(all="ignore"):
+            parts = rows_at(loaded, np.concatenate((draws[:1], draws[start : start + size])))
+            mass, com, inertia = body_stack(*parts, loaded.props.center_of_mass)
+        yield slice(start, start + size), MassProperties(mass[1:], com[1:], inertia[1:])
 
 
 QUANTITIES = (
@@ -578,11 +598,23 @@ def generator(seed: int | None) -> np.random.Generator:
 
 def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
     """(n, q) samples of :data:`QUANTITIES` (about the centre of mass of each draw) from n draws
-    of every uncertain input (JCGM 101), all n bodies computed as one stack."""
-    body = drawn(loaded, n, generator(seed))
-    with np.errstate(all="ignore"):
-        moments = np.linalg.eigvalsh(body.inertia_about_com)
-    return np.concatenate([_flat((body.mass, body.center_of_mass, body.inertia_about_com)), moments], axis=1)
+    of every uncertain input (JCGM 101), the bodies computed chunk by chunk (:func:`drawn`).
+    ArgumentError of ``samples`` for more draws than :data:`MONTE_CARLO_BYTES` holds."""
+    k = len(loaded.spec._uncertain)
+    most = MONTE_CARLO_BYTES // (8 * (k + len(QUANTITIES)))
+    if n > most:
+        raise ArgumentError(
+            "samples",
+            f"must be at most {most:,} for this body: the draws of its {k} inputs with ± and their "
+            f"{len(QUANTITIES)} quantities would take more than {MONTE_CARLO_BYTES // 2**30} GiB "
+            f"(got {literal(n)})",
+        )
+    samples = np.empty((n, len(QUANTITIES)))
+    for rows, body in drawn(loaded, n, generator(seed)):
+        samples[rows, :13] = _flat((body.mass, body.center_of_mass, body.inertia_about_com))
+        with np.errstate(all="ignore"):
+            samples[rows, 13:] = np.linalg.eigvalsh(body.inertia_about_com)
+    return samples
 
 
 class Contributions(NamedTuple):
@@ -651,10 +683,10 @@ def budget(
     inputs whose ∂y/∂x are not exact, when there are any), of the quantities ``of`` names
     (:func:`_quantities`, which checks the arguments)."""
     chosen = _quantities(of, method, samples, coverage)
+    drawn = monte_carlo(loaded, samples, seed) if method == "monte-carlo" else None
     result = linear(loaded)
     u = result.uncertainty
     k = coverage_factor(coverage)
-    drawn = monte_carlo(loaded, samples, seed) if method == "monte-carlo" else None
     quantities = []
     for q in chosen:
         value, spread = float(result.values[q]), float(u[q])

@@ -15,6 +15,7 @@ from typing import Any
 import numpy as np
 
 from rbi.memory import cached
+from rbi.sim import compiled
 from rbi.sim.api import sample_times
 from rbi.sim.compiled import FAILURES, STATUS_DONE, STATUS_MORE, STATUS_NOT_FINITE, integrate_scenes
 from rbi.sim.diagnostics import energy_drifts
@@ -31,9 +32,6 @@ RESULT_COLUMNS = tuple(
     "max_tilt_deg final_tilt_deg min_tilt_deg precession_rate_deg_s energy_drift steps status".split()
 )
 """Columns after ``run`` and the swept values, in order."""
-
-OUT_BYTES_PER_CHUNK = 64 * 2**20
-"""Most memory the sampled states of one chunk may take."""
 
 CACHED_ENTRIES = 4096
 """Bodies and scenes a sweep keeps, each set of values used last (runs repeat values: a grid's
@@ -65,7 +63,7 @@ class SweepJob:
     def chunk_size(self, threads: int) -> int:
         """Runs per kernel call: enough to keep every thread busy, bounded in memory."""
         per_run = self.samples * 7 * 8
-        return int(max(1, min(max(64, 16 * threads), OUT_BYTES_PER_CHUNK // per_run)))
+        return int(max(1, min(max(64, 16 * threads), compiled.OUT_BYTES_PER_CHUNK // per_run)))
 
     def body(self, values: tuple[float, ...]):
         """The body with the varied fields set to ``values`` (cached per distinct values), or the
