@@ -481,7 +481,9 @@ class Body(Result):
                 (``"mass"``, ``"center_of_mass[0]"``, ``"inertia[0][2]"``, ``"moments[1]"``);
                 None: mass, centre of mass, the inertia about it and the principal moments.
             method: ``"linear"`` (the law of propagation, JCGM 100) or ``"monte-carlo"``
-                (JCGM 101: ``samples`` draws of every input, reproducible with ``seed``).
+                (JCGM 101: ``samples`` draws of every input, reproducible with ``seed``; 2 to
+                10,000,000, and no more than 2 GiB holds of the draws and their 16 quantities:
+                an `ArgumentError` of ``samples`` says how many the body allows).
             coverage: the coverage probability of each interval.
         """
         return UncertaintyBudget(budget(self._loaded, of, method, samples, seed, coverage))
