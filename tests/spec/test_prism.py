@@ -213,6 +213,11 @@ def spec_line(**fields) -> str:
         ({"outline": [[0, 0], [1, 0]]}, ["outline", "at least 3 vertices"]),
         ({"outline": [[0, 0], [1, 0], [1, 1, 1]]}, ["outline[2]", "[x, y]"]),
         ({"x_axis": [0, 0, -1]}, ["x_axis", "along the extrusion"]),
+        ({"x_axis": [0, 0, 0]}, ["x_axis: must not be the zero vector"]),
+        ({"outline": [0, 0]}, ["outline[0]: must be a point [x, y] (got 0)"]),
+        ({"outline": "abc"}, ["outline: must be a list of points [[x, y], ...] (got 'abc')"]),
+        ({"holes": 5}, ["holes: must be a list of polygons [[[x, y], ...], ...] (got 5)"]),
+        ({"holes": [5]}, ["holes[0]: must be a list of points [[x, y], ...] (got 5)"]),
         ({"end": [0, 0, 0]}, ["start, end"]),
     ],
 )

@@ -74,10 +74,14 @@ def describe_error(error: dict[str, Any], known_fields: list[str] | None = None)
     if tuple(error["loc"]) == ("parts",) and kind in ("too_short", "list_type"):
         return f"must be a non-empty list of parts (got {shown(value)})"
     polygon = next((k for k in ("outline", "holes") if k in error["loc"]), None)
-    if kind in ("too_short", "too_long") and polygon is not None:  # a prism's polygons and their points
+    if kind in ("too_short", "too_long", "list_type") and polygon is not None:  # a prism's polygons, points
         loc = tuple(error["loc"])
-        if len(loc) - loc.index(polygon) - (polygon == "holes") == 2:
+        depth = len(loc) - loc.index(polygon) - (polygon == "holes")  # 0: the holes, 1: a polygon, 2: a point
+        if depth == 2:
             return f"must be a point [x, y] (got {shown(value)})"
+        if kind == "list_type":
+            listed = "polygons [[[x, y], ...], ...]" if depth == 0 else "points [[x, y], ...]"
+            return f"must be a list of {listed} (got {shown(value)})"
         most = (
             f"at least {ctx.get('min_length')}" if kind == "too_short" else f"at most {ctx.get('max_length')}"
         )

@@ -537,6 +537,7 @@ class PrismPart(_Solid):
 
     @model_validator(mode="after")
     def _simple(self):
+        _nonzero(self, "x_axis", "the direction of the outline's x axis")
         with np.errstate(over="ignore", invalid="ignore"):  # huge numbers: refused once translated
             problem = polygon_problem(self.outline, self.holes)
         if problem is not None:
