@@ -52,6 +52,28 @@ def test_plus_minus_on_text_is_refused(field, value):
         body([part])
 
 
+@pytest.mark.parametrize("kind", [[1], {"a": 1}, None, "gaussian"])
+def test_an_uncertainty_that_is_not_standard_or_tolerance_is_one_line(kind):
+    with pytest.raises(InputError, match=r"^spec.yaml: uncertainty: must be standard .* or tolerance"):
+        body([{"shape": "sphere", "mass": "1 ± 0.1", "radius": 1, "center": [0, 0, 0]}], uncertainty=kind)
+
+
+@pytest.mark.parametrize(
+    "inertia, name",
+    [
+        ({"ixx": 2, "iyy": 2, "izz": 3, "ixy": "0.1 ± 0.01"}, "parts.c.inertia.ixy"),
+        ([[2, "0.1 ± 0.01", 0], [0.1, 2, 0], [0, 0, 3]], "parts.c.inertia[0][1]"),
+    ],
+)
+def test_plus_minus_on_a_custom_inertia_moves_both_places_of_a_product(inertia, name):
+    custom = {"name": "c", "shape": "custom", "mass": 1, "center_of_mass": [0, 0, 0], "inertia": inertia}
+    loaded = body([custom])
+    assert [each.path for each in loaded.spec._uncertain] == [name]
+    assert u_of(loaded, "inertia[0][1]") == pytest.approx(0.01, rel=1e-12)  # one number, written once
+    assert u_of(loaded, "inertia[1][0]") == pytest.approx(0.01, rel=1e-12)
+    assert u_of(loaded, "inertia[0][0]") == 0.0
+
+
 def test_a_spec_without_plus_minus_has_no_inputs():
     plain = body([{"shape": "sphere", "mass": 1, "radius": 1, "center": [0, 0, 0]}])
     assert plain.spec._uncertain == ()

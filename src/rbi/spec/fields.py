@@ -151,7 +151,7 @@ Density = read_by(
 # --- inertia matrix: 3×3 or six components -------------------------------------------------
 
 _COMPONENTS = ("ixx", "iyy", "izz", "ixy", "ixz", "iyz")
-_MATRIX_ROWS = (("ixx", "ixy", "ixz"), ("ixy", "iyy", "iyz"), ("ixz", "iyz", "izz"))
+MATRIX_ROWS = (("ixx", "ixy", "ixz"), ("ixy", "iyy", "iyz"), ("ixz", "iyz", "izz"))
 """Where each of the six components stands in the symmetric matrix."""
 _MATRIX_FORMS = (
     "a 3×3 matrix [[Ixx, Ixy, Ixz], [Ixy, Iyy, Iyz], [Ixz, Iyz, Izz]] or a mapping "
@@ -168,7 +168,7 @@ def _inertia_matrix(value: Any) -> list[list[float]]:
         if missing:
             raise ValueError(f"{missing[0]}: missing required component")
         c = {k: _component(k, value.get(k, 0.0)) for k in _COMPONENTS}
-        return [[c[k] for k in row] for row in _MATRIX_ROWS]
+        return [[c[k] for k in row] for row in MATRIX_ROWS]
     if not (
         isinstance(value, list)
         and len(value) == 3

@@ -42,6 +42,7 @@ from rbi.core.uncertainty import (
 from rbi.errors import ArgumentError, InputError, literal, shown
 from rbi.spec import models
 from rbi.spec.errors import field_text, named_part
+from rbi.spec.fields import MATRIX_ROWS
 from rbi.spec.geometry import part_count
 from rbi.spec.pattern import copy_motions
 from rbi.spec.translate import BUILDERS, Columns, given_by, part_element, plain_part, rotation_matrix
@@ -156,7 +157,7 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
     if not found and "uncertainty" not in raw:
         return None
     kind = plain.pop("uncertainty", "standard")
-    if kind not in KINDS:
+    if not isinstance(kind, str) or kind not in KINDS:
         raise InputError(
             f"{path}: uncertainty: must be standard (± is one standard uncertainty) or tolerance "
             f"(± is a tolerance limit) (got {shown(kind)})",
@@ -190,6 +191,11 @@ def _replaced(node: Any, steps: tuple[Any, ...], value: Any) -> Any:
     """``node`` (a part model, a sub-model or a list of numbers) with the number at ``steps``
     replaced by ``value``; nothing validated again (the value is a nearby or drawn number)."""
     head, rest = steps[0], steps[1:]
+    if head == "inertia" and isinstance(node, models.CustomPart):  # a number of the symmetric matrix: both places
+        i, j = rest if len(rest) == 2 else next((i, r.index(rest[0])) for i, r in enumerate(MATRIX_ROWS) if rest[0] in r)
+        matrix = [list(row) for row in node.inertia]
+        matrix[i][j] = matrix[j][i] = value
+        return node.model_copy(update={"inertia": matrix})
     if rest:
         value = _replaced(node[head] if isinstance(node, list) else getattr(node, head), rest, value)
     if isinstance(node, list):
