@@ -81,3 +81,20 @@ def test_the_cli_and_the_sweep_store_write_the_same_cells():
     cli = to_csv([cells]).splitlines()
     store = csv_bytes([list(cells)] + [list(cells.values())]).decode().splitlines()
     assert cli == store == ["run,spin,tilt,status", "3,0.3333333333333333,,'=bad"]
+
+
+@pytest.mark.parametrize(
+    "value, u, shown",
+    [(1.0, 1e-320, "1 ± 1e-320"), (1e-300, 1e100, "1e-300 ± 1e+100"), (1e300, 1e-300, "1e+300 ± 1e-300")],
+)
+def test_plus_minus_where_value_over_u_leaves_a_double(value, u, shown):
+    from rbi.text import plus_minus
+
+    assert plus_minus(value, u) == shown
+
+
+@given(st.floats(allow_nan=False, allow_infinity=False), st.floats(min_value=0, allow_infinity=False))
+def test_plus_minus_never_fails(value, u):
+    from rbi.text import plus_minus
+
+    assert " ± " in plus_minus(value, u)

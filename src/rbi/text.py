@@ -64,7 +64,8 @@ def plus_minus(value: float, u: float) -> str:
     leaves meaningful (at least 3)."""
     if not u > 0 or not math.isfinite(u):
         return f"{number(value, 8)} ± {number(u, 2)}"
-    digits = int(math.floor(math.log10(abs(value) / u))) + 2 if value else 3
+    ratio = min(max(abs(value) / u, 1.0), 1e13)  # past a double's range (u subnormal or huge): 3 or 12 digits
+    digits = int(math.floor(math.log10(ratio))) + 2 if value else 3
     return f"{number(value, min(max(digits, 3), 12))} ± {number(u, 2)}"
 
 

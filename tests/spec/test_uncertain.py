@@ -14,7 +14,7 @@ from uncertainties import ufloat, umath
 
 from rbi.errors import InputError
 from rbi.spec.load import body_from_raw
-from rbi.spec.uncertain import QUANTITIES, budget, linear, monte_carlo, parse_plus_minus
+from rbi.spec.uncertain import QUANTITIES, budget, linear, monte_carlo, parse_plus_minus, part_uncertainties
 
 BODIES = Path(__file__).resolve().parents[2] / "bodies"
 pytestmark = pytest.mark.filterwarnings("error::numpy.exceptions.ComplexWarning")  # no step dropped
@@ -72,6 +72,14 @@ def test_plus_minus_on_a_custom_inertia_moves_both_places_of_a_product(inertia, 
     assert u_of(loaded, "inertia[0][1]") == pytest.approx(0.01, rel=1e-12)  # one number, written once
     assert u_of(loaded, "inertia[1][0]") == pytest.approx(0.01, rel=1e-12)
     assert u_of(loaded, "inertia[0][0]") == 0.0
+
+
+@pytest.mark.parametrize("u", [1e300, 1e-170])
+def test_part_uncertainties_whose_squares_leave_a_double(u):
+    loaded = body([{"shape": "box", "mass": f"1 ± {u}", "center": [0, 0, 0], "size": [1, 1, 1]}])
+    found = part_uncertainties(loaded)
+    assert found.mass[0] == pytest.approx(u, rel=1e-12)
+    assert found.inertia_about_com[0, 0, 0] == pytest.approx(u / 6, rel=1e-12)  # (1² + 1²)/12 per kg
 
 
 def test_a_spec_without_plus_minus_has_no_inputs():

@@ -732,9 +732,15 @@ def part_uncertainties(loaded: Any, expand: bool = False) -> MassProperties:
     inputs = loaded.spec._uncertain
     part, d, _ = part_derivatives(loaded)
     u = np.array([i.u for i in inputs])
-    variance = np.zeros((len(loaded.elements), 13))
-    np.add.at(variance, part, (d * u[:, None]) ** 2)
-    rows = [v[None] for v in variance]
+    variance, largest = np.zeros((len(loaded.elements), 13)), np.zeros((len(loaded.elements), 13))
+    with np.errstate(over="ignore", under="ignore"):
+        np.add.at(variance, part, (d * u[:, None]) ** 2)
+    np.maximum.at(largest, part, np.abs(d * u[:, None]))
+    spread = np.sqrt(variance)
+    lost = (largest > 0) & ~((spread > 1e-150) & (spread < 1e150))  # squares past a double: as combined takes them
+    for k in np.unique(np.nonzero(lost)[0]):
+        spread[k] = np.where(lost[k], combined(d[part == k].T, u[part == k]), spread[k])
+    rows = [v[None] for v in spread]
     for index, each in enumerate(loaded.spec.parts if expand else []):
         if isinstance(each, models.AssemblyPart):  # its parts, each moved by all its inputs
             chosen = by_part(inputs).get(index, [])
@@ -743,8 +749,8 @@ def part_uncertainties(loaded: Any, expand: bool = False) -> MassProperties:
                 found = np.zeros((0, part_stack(loaded, index, [], np.zeros((1, 0)), True)[0].shape[1], 13))
             elif (found := _complex_step(loaded, index, group, True)) is None:
                 found = _differences(loaded, index, group, True)
-            rows[index] = np.sum((found / _flat_units(loaded) * u[chosen, None, None]) ** 2, axis=0)
-    u = np.sqrt(np.concatenate(rows))
+            rows[index] = combined(np.moveaxis(found / _flat_units(loaded), 0, -1), u[chosen])
+    u = np.concatenate(rows)
     return MassProperties(u[:, 0], u[:, 1:4], u[:, 4:].reshape(-1, 3, 3))
 
 
