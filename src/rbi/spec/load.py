@@ -20,7 +20,14 @@ from rbi.spec.errors import InputError, describe_error, format_location, part_la
 from rbi.spec.expect import Expect
 from rbi.spec.models import SHAPE_MODELS, AssemblyPart, BodySpec
 from rbi.spec.translate import body_from_spec
-from rbi.spec.uncertain import first_part_uncertain, named_plus_minus, split_uncertain, with_sub_assemblies
+from rbi.spec.uncertain import (
+    MAX_STEPPED,
+    first_part_uncertain,
+    named_plus_minus,
+    split_uncertain,
+    stepped_size,
+    with_sub_assemblies,
+)
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
 if TYPE_CHECKING:
@@ -391,7 +398,12 @@ def read_assemblies(spec: BodySpec, path: str) -> None:
                 raise InputError(f"{where}: {str(exc).removeprefix(label + ': ')}") from None
             finally:
                 _nesting.reset(token)
-        part._loaded = read[real]
+        part._loaded, inputs = read[real], len(read[real].spec._uncertain)
+        if inputs and stepped_size(part, MAX_STEPPED // inputs) * inputs > MAX_STEPPED:
+            raise InputError(
+                f"{where}: {inputs:,} numbers with ± inside, each stepped through all its parts: more "
+                f"than {MAX_STEPPED:,} parts to build for their uncertainty"
+            )
     spec._uncertain = with_sub_assemblies(spec)  # a sub-assembly's ± are the body's too
 
 

@@ -208,6 +208,24 @@ PLACED = (models.MeshPart, models.StepPart, models.AssemblyPart)
 ``position``."""
 
 
+MAX_STEPPED = 1_000_000
+"""Most parts the sensitivities to one sub-assembly's ± inputs may build: each input is stepped
+through the whole sub-assembly (about 0.5 kB and 1 µs a part), so this bounds their product."""
+
+
+def stepped_size(part: models.AssemblyPart, most: int) -> int:
+    """How many parts one stepped evaluation of the sub-assembly ``part`` builds (its copies,
+    its parts, and so on for each of its sub-assemblies that has ± inputs), counted until past
+    ``most``."""
+    total = part.pattern.count if part.pattern is not None else 1
+    for each in part._loaded.spec.parts:
+        uncertain = isinstance(each, models.AssemblyPart) and each._loaded.spec._uncertain
+        total += 1 + (stepped_size(each, most) if uncertain else 0)
+        if total > most:
+            break
+    return total
+
+
 def with_sub_assemblies(spec: models.BodySpec) -> tuple[UncertainInput, ...]:
     """The spec's own uncertain inputs and, after each sub-assembly's own, the inputs of its
     file as its body has them (its sub-assemblies' included), named as ``rbi parts --expand``
