@@ -119,13 +119,18 @@ def test_two_parts_naming_one_file_have_inputs_of_their_own(tmp_path):
     "count, pattern",
     [(1001, ""), (100, ", pattern: {count: 10001, step: [0, 1, 0]}")],
 )
-def test_a_sub_assembly_whose_inputs_would_build_too_many_parts_is_refused_in_one_line(tmp_path, count, pattern):
+def test_a_sub_assembly_whose_inputs_would_build_too_many_parts_is_refused_in_one_line(
+    tmp_path, count, pattern
+):
     """Each ± input of a sub-assembly is stepped through all its parts (and copies): 1,001 inputs
     over 1,001 parts, or 100 over 10,001 copies, are more than a million parts to build (before:
     ~0.5 GB and seconds, growing as their product: 8,000 point masses took 23 GB)."""
     (tmp_path / "sub.yaml").write_text(
         "parts:\n"
-        + "".join(f"  - {{name: p{i}, shape: point, mass: '1 ± 0.1', position: [{i}, 0, 0]}}\n" for i in range(count))
+        + "".join(
+            f"  - {{name: p{i}, shape: point, mass: '1 ± 0.1', position: [{i}, 0, 0]}}\n"
+            for i in range(count)
+        )
     )
     (tmp_path / "top.yaml").write_text(f"parts:\n  - {{name: s, shape: assembly, file: sub.yaml{pattern}}}\n")
     with pytest.raises(rbi.SpecError) as caught:

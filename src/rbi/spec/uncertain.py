@@ -191,8 +191,10 @@ def _replaced(node: Any, steps: tuple[Any, ...], value: Any) -> Any:
     """``node`` (a part model, a sub-model or a list of numbers) with the number at ``steps``
     replaced by ``value``; nothing validated again (the value is a nearby or drawn number)."""
     head, rest = steps[0], steps[1:]
-    if head == "inertia" and isinstance(node, models.CustomPart):  # a number of the symmetric matrix: both places
-        i, j = rest if len(rest) == 2 else next((i, r.index(rest[0])) for i, r in enumerate(MATRIX_ROWS) if rest[0] in r)
+    if head == "inertia" and isinstance(node, models.CustomPart):
+        # a number of a custom part's symmetric matrix (a component or an entry): both its places
+        named = ((i, r.index(rest[0])) for i, r in enumerate(MATRIX_ROWS) if rest[0] in r)
+        i, j = rest if len(rest) == 2 else next(named)
         matrix = [list(row) for row in node.inertia]
         matrix[i][j] = matrix[j][i] = value
         return node.model_copy(update={"inertia": matrix})
@@ -755,7 +757,8 @@ def part_uncertainties(loaded: Any, expand: bool = False) -> MassProperties:
         np.add.at(variance, part, (d * u[:, None]) ** 2)
     np.maximum.at(largest, part, np.abs(d * u[:, None]))
     spread = np.sqrt(variance)
-    lost = (largest > 0) & ~((spread > 1e-150) & (spread < 1e150))  # squares past a double: as combined takes them
+    # squares past a double: taken again as combined takes them
+    lost = (largest > 0) & ~((spread > 1e-150) & (spread < 1e150))
     for k in np.unique(np.nonzero(lost)[0]):
         spread[k] = np.where(lost[k], combined(d[part == k].T, u[part == k]), spread[k])
     rows = [v[None] for v in spread]
