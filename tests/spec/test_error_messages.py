@@ -69,6 +69,8 @@ CASES = {
         ["pattern.count", "got 0"],
         ["must be at least 1"],
     ),
+    "assembly file empty": ("{shape: assembly, file: ''}", ["file", "(got '')"], ["a file name, not empty"]),
+    "mesh file empty": ("{shape: mesh, file: '', mass: 1}", ["file", "(got '')"], ["a file name, not empty"]),
     "custom too large": (
         "{shape: custom, mass: 1, center_of_mass: [0, 0, 0], inertia: {ixx: 1.0e+308, iyy: 1.0e+308, izz: 1.0e+308}}",
         ["too large", "1e+308"],

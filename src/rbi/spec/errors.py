@@ -48,6 +48,7 @@ _MUST_BE = {
     **dict.fromkeys(("int_type", "int_from_float", "int_parsing"), "a whole number"),
     **dict.fromkeys(("model_type", "model_attributes_type", "dict_type"), "a mapping of fields"),
     "string_type": "text",
+    "string_too_short": "a file name, not empty",
     "list_type": "a list of 3 numbers [x, y, z]",
     "greater_than": "greater than {gt:g}",
     "greater_than_equal": "at least {ge:g}",
