@@ -13,6 +13,9 @@ from rbi.spec.checks import UNITS
 from rbi.spec.units import unit_labels
 from rbi.text import number
 
+TABLE_INPUTS = 20
+"""Most inputs the table lists for one quantity, largest first (the rest share one row)."""
+
 
 class UncertaintyBudget(Result):
     """The budget as ``rbi uncertainty --format json`` gives it (`to_dict`), its tables
@@ -77,12 +80,18 @@ class UncertaintyBudget(Result):
         return Rows("Is the linear result validated? (JCGM 101 §8)", columns, rows)
 
     def _budget(self) -> Rows:
-        rows: list[tuple[str, ...]] = [
-            (q["quantity"], c["input"], number(c["sensitivity"], 4), f"{100 * c['share']:.1f}%")
-            for q in self.quantities
-            for c in q["contributions"]
-            if c["contribution"] > 0
-        ]
+        rows: list[tuple[str, ...]] = []
+        for q in self._data["quantities"]:  # one quantity's rows at a time
+            found = [c for c in q["contributions"].rows() if c["contribution"] > 0]
+            rows += [
+                (q["quantity"], c["input"], number(c["sensitivity"], 4), f"{100 * c['share']:.1f}%")
+                for c in found[:TABLE_INPUTS]
+            ]
+            if len(found) > TABLE_INPUTS:  # the rest in one row (JSON and CSV give each)
+                rest = sum(c["share"] for c in found[TABLE_INPUTS:])
+                rows.append(
+                    (q["quantity"], f"{len(found) - TABLE_INPUTS:,} more inputs", "", f"{100 * rest:.1f}%")
+                )
         estimated = self._data.get("estimated_sensitivities")
         title = "Contributions, largest first (share of the variance)" + (
             f"; ∂y/∂x by finite differences (~1e-9) for {', '.join(estimated)}" if estimated else ""
