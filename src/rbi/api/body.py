@@ -35,6 +35,7 @@ from rbi.core.inertia import (
     principal_axes,
     radii_of_gyration,
     re_express,
+    symmetric_eigen,
     unit_axis,
 )
 from rbi.core.mass import MassProperties, inertia_shares
@@ -416,7 +417,7 @@ class Body(Result):
                     center_of_mass=np.array(element.center_of_mass, dtype=float),
                     inertia_about_com=np.array(element.inertia_about_com, dtype=float),
                     volume=volume,
-                    principal_moments=principal_axes(element.inertia_about_com)[0],
+                    principal_moments=symmetric_eigen(np.asarray(element.inertia_about_com, dtype=float))[0],
                     inertia_share=float(share),
                     integration_error=part._integration_error if isinstance(part, StepPart) else None,
                     uncertainty=spread,
