@@ -406,3 +406,20 @@ def test_a_pattern_of_massless_copies_is_refused_naming_the_part(write_spec, cop
         " pattern: {count: 6, axis: [0, 0, 1], through: [0, 0, 0]}}\n" * copies
     )
     one_line_exit_2(run_rbi_inprocess("inertia", spec), "parts[1]", "mass")
+
+
+def test_monte_carlo_draws_that_overflow_are_one_line(write_spec):
+    """Found: a point at x = 0 ± 1e300 m drawn by Monte Carlo gives x² = inf in the inertia, and
+    the principal moments of that (numpy's eigvalsh) were an internal error (LinAlgError, exit
+    1). The linear method answers (its sensitivities are finite); Monte Carlo refuses in one line
+    in every output form."""
+    spec = write_spec(
+        "parts:\n  - {shape: point, mass: 1, position: ['0 ± 1e300', 0, 0]}\n"
+        "  - {shape: point, mass: 1, position: [1, 0, 0]}\n"
+    )
+    assert run_rbi_inprocess("uncertainty", spec, "--format", "json").returncode == 0
+    for fmt in ("table", "json", "csv"):
+        proc = run_rbi_inprocess(
+            "uncertainty", spec, "--method", "monte-carlo", "--samples", "100", "-f", fmt
+        )
+        one_line_exit_2(proc, "Monte Carlo", "not finite")

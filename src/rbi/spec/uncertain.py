@@ -638,6 +638,12 @@ def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
     samples = np.empty((n, len(QUANTITIES)))
     for rows, body in drawn(loaded, n, generator(seed)):
         samples[rows, :13] = _flat((body.mass, body.center_of_mass, body.inertia_about_com))
+        if not np.all(np.isfinite(samples[rows, :13])):  # eigvalsh cannot take them
+            raise InputError(
+                f"{loaded.path}: Monte Carlo: a drawn body's mass, centre of mass or inertia is not "
+                "finite: the inputs' ± are too large for double precision",
+                file=loaded.path,
+            )
         with np.errstate(all="ignore"):
             samples[rows, 13:] = np.linalg.eigvalsh(body.inertia_about_com)
     return samples
