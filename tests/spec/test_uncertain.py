@@ -74,6 +74,19 @@ def test_plus_minus_on_a_custom_inertia_moves_both_places_of_a_product(inertia, 
     assert u_of(loaded, "inertia[0][0]") == 0.0
 
 
+def test_plus_minus_on_both_places_of_a_product_is_refused():
+    """[0][1] and [1][0] of a custom inertia are one number: a ± on each would count it as two
+    independent inputs (u √2 too large), so the second is refused in one line naming it."""
+    inertia = [[2, "0.1 ± 0.01", 0], ["0.1 ± 0.01", 2, 0], [0, 0, 3]]
+    custom = {"name": "c", "shape": "custom", "mass": 1, "center_of_mass": [0, 0, 0], "inertia": inertia}
+    with pytest.raises(InputError) as caught:
+        body([custom])
+    assert str(caught.value) == (
+        "spec.yaml: parts[0] (c): inertia[1][0]: ± also on inertia[0][1], the same product of inertia: "
+        "write it once"
+    )
+
+
 @pytest.mark.parametrize("u", [1e300, 1e-170])
 def test_part_uncertainties_whose_squares_leave_a_double(u):
     loaded = body([{"shape": "box", "mass": f"1 ± {u}", "center": [0, 0, 0], "size": [1, 1, 1]}])

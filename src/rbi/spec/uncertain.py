@@ -176,6 +176,11 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
             named = [step for step in steps if isinstance(step, str)]
             if named and named[-1] in NOT_NUMBERS:
                 raise ValueError(f"± is for a number of a part, and `{named[-1]}` is not a measured number")
+            twin = (index, "inertia", *steps[:0:-1])  # [j][i] of a custom part's matrix
+            if steps[0] == "inertia" and len(steps) == 3 and steps[1] > steps[2] and twin in found:
+                raise ValueError(
+                    f"± also on inertia{field_text(twin[2:])}, the same product of inertia: write it once"
+                )
             value, u, _ = parse_plus_minus(node[steps[-1]])
         except ValueError as exc:
             label = named_part(index, parts[index].get("name"))
