@@ -114,6 +114,21 @@ def test_draws_of_a_spec_without_plus_minus_are_refused():
         input_uncertainty(rbi.load(BODIES / "top.yaml"), draws=4, seed=1, **RUN)
 
 
+def test_drawn_runs_past_the_batch_budget_are_refused_before_they_start(monkeypatch):
+    """Each run is within its own step budget (3 steps per radian × 2 headroom × 200 rad/s ×
+    1000 s = 1.2e6 < 1e7), but 100,000 of them, 1.2e11 steps (days of CPU), are refused in one
+    line, as a sweep past the same budget is; check_budget=False (--yes) lets them run."""
+    args = ("simulate", str(TOLERANCED), "--spin", "200", "--duration", "1000", "--draws", "100000")
+    proc = run_rbi_inprocess(*args)
+    one_line_exit_2(proc, "100,000 drawn runs", "1.2e+11 integration steps", "--draws", "--yes")
+    monkeypatch.setattr(draws, "BATCH_STEP_BUDGET", 100.0)  # 4 runs of 50 rad/s for 0.5 s: 4 × 150 steps
+    small = dict(RUN, spin=50.0, duration=0.5)
+    with pytest.raises(rbi.ArgumentError, match="4 drawn runs are estimated to need about 6e\\+02"):
+        input_uncertainty(rbi.load(TOLERANCED), draws=4, seed=1, **small)
+    spread = input_uncertainty(rbi.load(TOLERANCED), draws=4, seed=1, check_budget=False, **small)
+    assert spread["draws"] == 4 and spread["failed"] == 0
+
+
 def test_runs_in_chunks_of_bounded_memory_give_the_numbers_of_one_call(monkeypatch):
     """The drawn runs are integrated and summarised in chunks of at most OUT_BYTES_PER_CHUNK of
     sampled states: 100 draws of 5,000 samples (28 MB of states in one call) in chunks of 7 runs

@@ -70,7 +70,7 @@ RUN = {
             bool,
             "--yes",
             "-y",
-            help="Run even when the run (or sweep) is estimated to exceed the step budget (the budget still "
+            help="Run even when the run (its --draws, or a sweep) is estimated to exceed the step budget (the budget still "
             "stops each run).",
         ),
         option(

@@ -12,6 +12,7 @@ import numpy as np
 
 from rbi.errors import ArgumentError, literal
 from rbi.sim.api import DEFAULT_RTOL, sample_times
+from rbi.sim.budget import BATCH_STEP_BUDGET, estimated_steps
 from rbi.sim.compiled import OUT_BYTES_PER_CHUNK, STATUS_DONE, integrate_scenes
 from rbi.sim.scene import scene_from_properties
 from rbi.sim.summary import tilt_figures
@@ -33,17 +34,25 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     duration and tolerance). Runs the kernel could not finish are counted in ``failed``."""
     if isinstance(draws, bool) or not isinstance(draws, int) or not 2 <= draws <= 100_000:
         raise ArgumentError("draws", f"must be a whole number from 2 to 100,000 (got {literal(draws)})")
-    body, scene = prepared.body, prepared.scene
+    body, scene, settings = prepared.body, prepared.scene, prepared.settings
     if body.spec is None or not body.spec._uncertain:  # every spread would be 0, and say nothing
         raise ArgumentError("draws", f"needs a spec that writes numbers with ± ({body.path} has none)")
+    rtol = DEFAULT_RTOL if settings.rtol is None else settings.rtol
+    total = estimated_steps(scene, prepared.omega0, settings.duration, "default", rtol) * draws
+    if total > BATCH_STEP_BUDGET and settings.check_budget:
+        raise ArgumentError(
+            (),
+            f"{body.path}: {draws:,} drawn runs are estimated to need about {total:.2g} integration steps, "
+            f"more than the budget of {BATCH_STEP_BUDGET:.0e}: fewer {{draws}}, a shorter {{duration}} or a "
+            "looser {rtol}, or {check_budget=False} to run them anyway",
+        )
     scenes = [
         scene_from_properties(each, body.pivot, scene.gravity, scene.spin_axis)
         for _, bodies in drawn(body, draws, generator(seed))
         for each in bodies
     ]
-    t = sample_times(prepared.settings.duration, samples)
+    t = sample_times(settings.duration, samples)
     start = np.concatenate((prepared.q0, prepared.omega0))[None, :]
-    rtol = DEFAULT_RTOL if prepared.settings.rtol is None else prepared.settings.rtol
     size, rows, final = max(1, OUT_BYTES_PER_CHUNK // (t.size * 7 * 8)), [], []
     for first in range(0, draws, size):  # chunks of runs: memory bounded whatever draws × samples
         batch = scenes[first : first + size]

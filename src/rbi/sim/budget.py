@@ -19,6 +19,10 @@ DEFAULT_MAX_STEPS = 10_000_000
 """Steps a run may take unless ``--max-steps`` says otherwise (about 10 s of the compiled
 integrator; the scipy methods are refused far earlier, see :func:`estimated_steps`)."""
 
+BATCH_STEP_BUDGET = 2e10
+"""Most integration steps a batch of runs (a sweep, the drawn runs of ``--draws``) is estimated
+to take before it is refused (about four hours of one core)."""
+
 STEPS_PER_RADIAN = 3.0
 """Accepted steps per radian turned, compiled DOP853 at its default tolerance."""
 

@@ -27,7 +27,7 @@ from rbi.errors import ArgumentError, InputError, literal
 from rbi.files import safe
 from rbi.runs.run import RunSettings, body_spin_axis, check_run_settings, check_tilt, spin_axis_value
 from rbi.sim.api import check_samples
-from rbi.sim.budget import DEFAULT_MAX_STEPS, estimated_steps
+from rbi.sim.budget import BATCH_STEP_BUDGET, DEFAULT_MAX_STEPS, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.load import spec_label
 from rbi.spec.units import STANDARD_GRAVITY_SI
@@ -40,10 +40,6 @@ from rbi.sweeps.tolerance import MASS_COLUMNS, mass_rows
 
 MAX_ROWS_SHOWN = 100_000
 """Most runs a sweep may print (json/csv/table) or hold in memory instead of writing them with --out."""
-
-SWEEP_STEP_BUDGET = 2e10
-"""Most integration steps a whole sweep is estimated to take before --yes is needed (about
-four hours of one core)."""
 
 MAX_SWEEP_SAMPLES = 100_000
 """Most samples per run of a sweep."""
@@ -200,11 +196,11 @@ class Study:
         if per_run is None:
             return
         total = per_run * self.plan.size
-        if total > SWEEP_STEP_BUDGET and self.settings.check_budget:
+        if total > BATCH_STEP_BUDGET and self.settings.check_budget:
             raise ArgumentError(
                 (),
                 f"{self.job.path}: this sweep is estimated to need about {total:.2g} integration steps "
-                f"({self.plan.size:,} runs), more than the budget of {SWEEP_STEP_BUDGET:.0e}: fewer runs, "
+                f"({self.plan.size:,} runs), more than the budget of {BATCH_STEP_BUDGET:.0e}: fewer runs, "
                 "a shorter {duration} or a looser {rtol}, or {check_budget=False} to run it anyway",
             )
 
