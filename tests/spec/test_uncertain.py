@@ -14,7 +14,8 @@ from uncertainties import ufloat, umath
 
 from rbi.errors import InputError
 from rbi.spec.load import body_from_raw
-from rbi.spec.uncertain import QUANTITIES, budget, linear, monte_carlo, parse_plus_minus, part_uncertainties
+from rbi.spec.plus_minus import parse_plus_minus
+from rbi.spec.uncertain import QUANTITIES, budget, linear, monte_carlo, part_uncertainties
 
 BODIES = Path(__file__).resolve().parents[2] / "bodies"
 pytestmark = pytest.mark.filterwarnings("error::numpy.exceptions.ComplexWarning")  # no step dropped

@@ -19,15 +19,9 @@ from rbi.memory import collector_paused
 from rbi.spec.errors import InputError, describe_error, format_location, part_label
 from rbi.spec.expect import Expect
 from rbi.spec.models import SHAPE_MODELS, AssemblyPart, BodySpec
+from rbi.spec.plus_minus import first_part_uncertain, named_plus_minus, split_uncertain, with_sub_assemblies
 from rbi.spec.translate import body_from_spec
-from rbi.spec.uncertain import (
-    MAX_STEPPED,
-    first_part_uncertain,
-    named_plus_minus,
-    split_uncertain,
-    stepped_size,
-    with_sub_assemblies,
-)
+from rbi.spec.uncertain import MAX_STEPPED, stepped_size
 from rbi.spec.yaml_reader import MAX_DEPTH, YamlProblem, read_document
 
 if TYPE_CHECKING:

@@ -651,7 +651,7 @@ class BodySpec(_Strict):
     parts: list[PartOfItsShape] = Field(default_factory=list, description=PARTS_DESCRIPTION)
     point_cloud: PointCloudRef | None = Field(None, description="Many point masses read from one file.")
     expect: ExpectationsWhenGiven = Field(None, description=EXPECT_DESCRIPTION)
-    _uncertain: tuple = PrivateAttr(())  # the numbers written with ±: rbi.spec.uncertain.UncertainInput
+    _uncertain: tuple = PrivateAttr(())  # the numbers written with ±: rbi.spec.plus_minus.UncertainInput
 
     @model_validator(mode="after")
     def _spin_axis_has_a_direction(self):

@@ -17,7 +17,7 @@ from typing import Any
 
 from rbi.errors import ArgumentError, literal
 from rbi.spec.errors import field_text
-from rbi.spec.uncertain import PLUS_MINUS, parse_plus_minus
+from rbi.spec.plus_minus import PLUS_MINUS, parse_plus_minus
 
 _TOKEN = re.compile(r"([^.\[\]]+)|\[(-?\d+)\]")
 
