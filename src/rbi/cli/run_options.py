@@ -70,8 +70,8 @@ RUN = {
             bool,
             "--yes",
             "-y",
-            help="Run even when the run (its --draws, or a sweep) is estimated to exceed the step budget (the budget still "
-            "stops each run).",
+            help="Run even when the estimated integration steps (of the run, of all its --draws, or of "
+            "the whole sweep) exceed the step budget (the budget still stops each run).",
         ),
         option(
             str | None,
