@@ -72,6 +72,13 @@ def combined(sensitivities: np.ndarray, u: np.ndarray) -> np.ndarray:
     return scale_safe(lambda terms: np.sqrt(np.sum(terms**2, axis=-1)), sensitivities * u)
 
 
+def squares_lost(total: np.ndarray, largest: np.ndarray) -> np.ndarray:
+    """Where a root of a sum of squares, ``total``, is not the true value: its largest term
+    ``largest`` is a finite number other than 0, but ``total`` lies outside 1e-150..1e150 (the
+    squares overflowed to inf or underflowed to 0 or subnormal numbers)."""
+    return np.isfinite(largest) & (largest > 0) & ~((total > 1e-150) & (total < 1e150))
+
+
 def scale_safe(root: Callable[[np.ndarray], np.ndarray], terms: np.ndarray) -> np.ndarray:
     """``root(terms)``, a root of a sum of squares over the last axis (so ``root(c x) = c
     root(x)``: a root-sum-square, a standard deviation), taken again on the terms divided by
@@ -80,7 +87,7 @@ def scale_safe(root: Callable[[np.ndarray], np.ndarray], terms: np.ndarray) -> n
     with np.errstate(over="ignore", under="ignore"):
         total = root(terms)
     largest = np.max(np.abs(terms), axis=-1, initial=0.0)
-    lost = np.isfinite(largest) & (largest > 0) & ~((total > 1e-150) & (total < 1e150))
+    lost = squares_lost(total, largest)
     if np.any(lost):
         scale = np.where(lost, largest, 1.0)
         total = np.where(lost, scale * root(terms / scale[..., None]), total)

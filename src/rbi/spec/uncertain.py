@@ -29,6 +29,7 @@ from rbi.core.uncertainty import (
     principal_derivatives,
     scale_safe,
     shortest_interval,
+    squares_lost,
     validated,
 )
 from rbi.errors import ArgumentError, InputError, literal
@@ -605,8 +606,7 @@ def part_uncertainties(loaded: Any, expand: bool = False) -> MassProperties:
         np.add.at(variance, part, (d * u[:, None]) ** 2)
     np.maximum.at(largest, part, np.abs(d * u[:, None]))
     spread = np.sqrt(variance)
-    # squares past a double: taken again as combined takes them
-    lost = (largest > 0) & ~((spread > 1e-150) & (spread < 1e150))
+    lost = squares_lost(spread, largest)  # taken again as combined takes them
     for k in np.unique(np.nonzero(lost)[0]):
         spread[k] = np.where(lost[k], combined(d[part == k].T, u[part == k]), spread[k])
     rows = [v[None] for v in spread]
