@@ -11,7 +11,7 @@ import pytest
 
 import rbi
 from rbi.api import input_uncertainty
-from rbi.runs import draws
+from rbi.sim import compiled
 from tests.conftest import BODIES, one_line_exit_2, run_rbi_inprocess
 
 TOLERANCED = BODIES / "top_bolted_toleranced.yaml"
@@ -121,7 +121,8 @@ def test_drawn_runs_past_the_batch_budget_are_refused_before_they_start(monkeypa
     args = ("simulate", str(TOLERANCED), "--spin", "200", "--duration", "1000", "--draws", "100000")
     proc = run_rbi_inprocess(*args)
     one_line_exit_2(proc, "100,000 drawn runs", "1.2e+11 integration steps", "--draws", "--yes")
-    monkeypatch.setattr(draws, "BATCH_STEP_BUDGET", 100.0)  # 4 runs of 50 rad/s for 0.5 s: 4 × 150 steps
+    # 4 runs of 50 rad/s for 0.5 s: 4 × 150 steps, past a budget of 100
+    monkeypatch.setattr("rbi.sim.budget.BATCH_STEP_BUDGET", 100.0)
     small = dict(RUN, spin=50.0, duration=0.5)
     with pytest.raises(rbi.ArgumentError, match="4 drawn runs are estimated to need about 6e\\+02"):
         input_uncertainty(rbi.load(TOLERANCED), draws=4, seed=1, **small)
@@ -136,7 +137,7 @@ def test_runs_in_chunks_of_bounded_memory_give_the_numbers_of_one_call(monkeypat
     run = dict(spin=100.0, tilt_deg=10.0, duration=0.1, samples=5000)
     body = rbi.load(TOLERANCED)
     whole = input_uncertainty(body, draws=100, seed=2, **run)
-    monkeypatch.setattr(draws, "OUT_BYTES_PER_CHUNK", 7 * 5000 * 7 * 8, raising=False)
+    monkeypatch.setattr(compiled, "OUT_BYTES_PER_CHUNK", 7 * 5000 * 7 * 8)
     tracemalloc.start()
     try:
         chunked = input_uncertainty(body, draws=100, seed=2, **run)

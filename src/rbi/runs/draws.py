@@ -12,8 +12,8 @@ import numpy as np
 
 from rbi.errors import ArgumentError, literal
 from rbi.sim.api import DEFAULT_RTOL, sample_times
-from rbi.sim.budget import BATCH_STEP_BUDGET, estimated_steps
-from rbi.sim.compiled import OUT_BYTES_PER_CHUNK, STATUS_DONE, integrate_scenes
+from rbi.sim.budget import check_batch, estimated_steps
+from rbi.sim.compiled import STATUS_DONE, integrate_scenes, runs_per_call
 from rbi.sim.scene import scene_from_properties
 from rbi.sim.summary import tilt_figures
 from rbi.spec.uncertain import drawn, generator
@@ -39,13 +39,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
         raise ArgumentError("draws", f"needs a spec that writes numbers with ± ({body.path} has none)")
     rtol = DEFAULT_RTOL if settings.rtol is None else settings.rtol
     total = estimated_steps(scene, prepared.omega0, settings.duration, "default", rtol) * draws
-    if total > BATCH_STEP_BUDGET and settings.check_budget:
-        raise ArgumentError(
-            (),
-            f"{body.path}: {draws:,} drawn runs are estimated to need about {total:.2g} integration steps, "
-            f"more than the budget of {BATCH_STEP_BUDGET:.0e}: fewer {{draws}}, a shorter {{duration}} or a "
-            "looser {rtol}, or {check_budget=False} to run them anyway",
-        )
+    check_batch(body.path, f"{draws:,} drawn runs", total, "fewer {draws}", settings.check_budget)
     scenes = [
         scene_from_properties(each, body.pivot, scene.gravity, scene.spin_axis)
         for _, bodies in drawn(body, draws, generator(seed))
@@ -53,7 +47,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     ]
     t = sample_times(settings.duration, samples)
     start = np.concatenate((prepared.q0, prepared.omega0))[None, :]
-    size, rows, final = max(1, OUT_BYTES_PER_CHUNK // (t.size * 7 * 8)), [], []
+    size, rows, final = runs_per_call(t.size), [], []
     for first in range(0, draws, size):  # chunks of runs: memory bounded whatever draws × samples
         batch = scenes[first : first + size]
         starts = np.repeat(start, len(batch), axis=0)

@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 
+from rbi.errors import ArgumentError
 from rbi.sim.api import DEFAULT_RTOL, SCIPY_DEFAULT_RTOL
 
 DEFAULT_MAX_STEPS = 10_000_000
@@ -22,6 +23,21 @@ integrator; the scipy methods are refused far earlier, see :func:`estimated_step
 BATCH_STEP_BUDGET = 2e10
 """Most integration steps a batch of runs (a sweep, the drawn runs of ``--draws``) is estimated
 to take before it is refused (about four hours of one core)."""
+
+
+def check_batch(path: str, runs: str, total: float, fewer: str, check: bool) -> None:
+    """Refuse, before the first of them starts, a batch of runs estimated to need ``total``
+    integration steps together, more than :data:`BATCH_STEP_BUDGET`, unless not ``check``
+    (``--yes``): an `ArgumentError` naming the file, the ``runs`` (``"this sweep's 400 runs"``)
+    and what to give ``fewer`` of."""
+    if check and total > BATCH_STEP_BUDGET:
+        raise ArgumentError(
+            (),
+            f"{path}: {runs} are estimated to need about {total:.2g} integration steps, more than the "
+            f"budget of {BATCH_STEP_BUDGET:.0e}: {fewer}, a shorter {{duration}} or a looser {{rtol}}, or "
+            "{check_budget=False} to run them anyway",
+        )
+
 
 STEPS_PER_RADIAN = 3.0
 """Accepted steps per radian turned, compiled DOP853 at its default tolerance."""

@@ -72,6 +72,12 @@ OUT_BYTES_PER_CHUNK = 64 * 2**20
 callers run their runs in chunks of at most this (a sweep's chunk, ``rbi simulate --draws``)."""
 
 
+def runs_per_call(samples: int) -> int:
+    """Most runs of ``samples`` sampled states (7 doubles each) whose states one call of
+    :func:`integrate_scenes` holds within :data:`OUT_BYTES_PER_CHUNK`; at least one."""
+    return max(1, OUT_BYTES_PER_CHUNK // (samples * 7 * 8))
+
+
 def integrate_scenes(
     scenes: list[Any], starts: np.ndarray, t: np.ndarray, rtol: float, max_steps: int, threads: int = 0
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

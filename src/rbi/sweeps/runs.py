@@ -62,8 +62,7 @@ class SweepJob:
 
     def chunk_size(self, threads: int) -> int:
         """Runs per kernel call: enough to keep every thread busy, bounded in memory."""
-        per_run = self.samples * 7 * 8
-        return int(max(1, min(max(64, 16 * threads), compiled.OUT_BYTES_PER_CHUNK // per_run)))
+        return min(max(64, 16 * threads), compiled.runs_per_call(self.samples))
 
     def body(self, values: tuple[float, ...]):
         """The body with the varied fields set to ``values`` (cached per distinct values), or the

@@ -27,7 +27,7 @@ from rbi.errors import ArgumentError, InputError, literal
 from rbi.files import safe
 from rbi.runs.run import RunSettings, body_spin_axis, check_run_settings, check_tilt, spin_axis_value
 from rbi.sim.api import check_samples
-from rbi.sim.budget import BATCH_STEP_BUDGET, DEFAULT_MAX_STEPS, estimated_steps
+from rbi.sim.budget import DEFAULT_MAX_STEPS, check_batch, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.load import spec_label
 from rbi.spec.units import STANDARD_GRAVITY_SI
@@ -195,14 +195,8 @@ class Study:
         per_run = self._steps_per_run()
         if per_run is None:
             return
-        total = per_run * self.plan.size
-        if total > BATCH_STEP_BUDGET and self.settings.check_budget:
-            raise ArgumentError(
-                (),
-                f"{self.job.path}: this sweep is estimated to need about {total:.2g} integration steps "
-                f"({self.plan.size:,} runs), more than the budget of {BATCH_STEP_BUDGET:.0e}: fewer runs, "
-                "a shorter {duration} or a looser {rtol}, or {check_budget=False} to run it anyway",
-            )
+        runs = f"this sweep's {self.plan.size:,} runs"
+        check_batch(self.job.path, runs, per_run * self.plan.size, "fewer runs", self.settings.check_budget)
 
     def nominal_scene(self):
         """The scene of the nominal body, or None when it cannot be simulated."""
