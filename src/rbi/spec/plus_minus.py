@@ -138,7 +138,7 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
         )
     distribution = KINDS[kind]
     divisor = math.sqrt(3.0) if distribution == "uniform" else 1.0  # GUM 4.3.7
-    inputs = []
+    inputs, written = [], set(found)  # a set: one look-up per product of inertia, not a scan
     for index, *steps in found:
         node = plain["parts"][index]
         for step in steps[:-1]:
@@ -149,7 +149,7 @@ def split_uncertain(raw: Any, path: str) -> Split | None:
             if named and named[-1] in NOT_NUMBERS:
                 raise ValueError(f"± is for a number of a part, and `{named[-1]}` is not a measured number")
             twin = (index, "inertia", *steps[:0:-1])  # [j][i] of a custom part's matrix
-            if steps[0] == "inertia" and len(steps) == 3 and steps[1] > steps[2] and twin in found:
+            if steps[0] == "inertia" and len(steps) == 3 and steps[1] > steps[2] and twin in written:
                 raise ValueError(
                     f"± also on inertia{field_text(twin[2:])}, the same product of inertia: write it once"
                 )
