@@ -34,7 +34,6 @@ def uncertainty(files: SpecFiles, *, format: OutputFormat, **settings) -> int:
     """
 
     def report(file: str) -> FileReport:
-        result = rbi.load(file).uncertainty(**settings)
-        return FileReport(result, table=lambda: result)
+        return FileReport(rbi.load(file).uncertainty(**settings))
 
     return report_each(files, report, format.value)

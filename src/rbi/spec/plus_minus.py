@@ -11,6 +11,7 @@ or with a top-level ``uncertainty: tolerance`` the half-width of a uniform distr
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from dataclasses import dataclass
@@ -51,6 +52,21 @@ class UncertainInput(NamedTuple):
             half = math.sqrt(3.0) * self.u
             return rng.uniform(self.value - half, self.value + half, n)
         return rng.normal(self.value, self.u, n)
+
+    def share_below(self, limit: float) -> float:
+        """The fraction of the input's distribution at or below ``limit`` (under its value)."""
+        if self.u == 0:
+            return 0.0
+        if self.distribution == "uniform":
+            half = math.sqrt(3.0) * self.u
+            return max(0.0, (limit - self.value + half) / (2.0 * half))
+        return 0.5 * math.erfc((self.value - limit) / (self.u * math.sqrt(2.0)))
+
+
+REACH = 1e-3
+"""The share of an input's distribution past the least value its field takes (a size, mass or
+density at or below 0) above which the spec is warned about: a normal distribution within 3.1
+standard uncertainties of that limit."""
 
 
 def parse_plus_minus(text: str) -> tuple[float, float, bool]:
@@ -177,3 +193,47 @@ def with_sub_assemblies(spec: models.BodySpec) -> tuple[UncertainInput, ...]:
         inner = enumerate(part._loaded.spec._uncertain)
         found += [x._replace(path=prefix + x.path[6:], part=i, steps=("file", j)) for j, x in inner]
     return tuple(sorted(found, key=lambda each: each.part))
+
+
+@functools.cache
+def _schema(model: type) -> dict[str, Any]:
+    return model.model_json_schema()
+
+
+def _branches(node: dict[str, Any]) -> Any:
+    """``node`` and, through ``anyOf`` (an optional field, a number or a material name), each
+    schema it allows."""
+    yield node
+    for each in node.get("anyOf", ()):
+        yield from _branches(each)
+
+
+def lower_limit(part: Any, steps: tuple[Any, ...]) -> float | None:
+    """The least value the spec allows at ``steps`` of ``part`` (its schema's ``minimum`` or
+    ``exclusiveMinimum``: 0 for a size, mass or density), or None where there is none."""
+    node = _schema(type(part))["properties"].get(steps[0], {})
+    for step in steps[1:]:  # into a list (a size's components); a nested model has no limits
+        if not isinstance(step, int):
+            return None
+        node = next((b["items"] for b in _branches(node) if "items" in b), {})
+    limits = (
+        b.get("minimum", b.get("exclusiveMinimum")) for b in _branches(node) if b.get("type") == "number"
+    )
+    return next((float(limit) for limit in limits if limit is not None), None)
+
+
+def limit_warnings(spec: models.BodySpec, path: str) -> list[str]:
+    """A warning for each of the spec's own inputs with ± whose distribution reaches past the
+    least value its field takes by more than :data:`REACH` of it: Monte Carlo draws bodies
+    there that no spec could be written for (a negative radius, a negative mass)."""
+    out = []
+    for x in spec._uncertain:
+        limit = None if x.steps[0] == "file" else lower_limit(spec.parts[x.part], x.steps)
+        share = 0.0 if limit is None else x.share_below(limit)
+        if share > REACH:
+            out.append(
+                f"{path}: {x.path}: {100 * share:.2g}% of its {x.distribution} distribution ({x.value:g}, "
+                f"u = {x.u:.3g}) lies at or below {limit:g}, which the spec does not allow there: "
+                "Monte Carlo draws there give bodies no spec could describe"
+            )
+    return out

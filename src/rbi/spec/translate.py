@@ -38,6 +38,7 @@ from rbi.spec.holes import check_holes
 from rbi.spec.materials import density_in_units
 from rbi.spec.pattern import patterned
 from rbi.spec.plausibility import unit_warnings
+from rbi.spec.plus_minus import limit_warnings
 from rbi.spec.units import LENGTH_UNITS_IN_M, convert_body, unit_labels
 from rbi.spec.volumes import one_volume
 
@@ -528,12 +529,12 @@ def body_from_spec(spec: models.BodySpec, path: str):
 
 
 def _warnings(spec: models.BodySpec, path: str) -> list[str]:
-    """The spec's unit slips, its mesh notes (each naming the part; set when a mesh is read) and
-    every sub-assembly's warnings."""
+    """The spec's unit slips, its mesh notes (each naming the part; set when a mesh is read),
+    every sub-assembly's warnings and the ± that reach past their field's least value."""
     meshes = [(i, part) for i, part in enumerate(spec.parts) if isinstance(part, models.MeshPart)]
     notes = [f"{path}: {part_label(i, part)}: {note}" for i, part in meshes for note in part._mesh_notes]
     inner = [w for part in spec.parts if isinstance(part, models.AssemblyPart) for w in part._loaded.warnings]
-    return unit_warnings(spec, path) + notes + inner
+    return unit_warnings(spec, path) + notes + inner + limit_warnings(spec, path)
 
 
 def files_named(spec: models.BodySpec, path: str) -> tuple[str, ...]:

@@ -587,8 +587,7 @@ def budget(
     out.update(samples=samples if drawn is not None else None, quantities=quantities)
     if result.estimated.any():
         out["estimated_sensitivities"] = [x.path for x, e in zip(result.inputs, result.estimated) if e]
-    if not result.inputs:
-        out["warnings"] = [NO_PLUS_MINUS]
+    out["warnings"] = [*loaded.warnings, *([] if result.inputs else [NO_PLUS_MINUS])]
     return out
 
 

@@ -1,0 +1,82 @@
+"""A ± whose distribution reaches past the least value its field takes (a radius, size, mass or
+density at or below 0) is warned about, with the share of the distribution there; and the
+uncertainty budget carries the body's warnings as every body's JSON does."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+from scipy.stats import norm
+
+from rbi.spec.load import body_from_raw
+from rbi.spec.uncertain import budget
+
+ROD = {"name": "rod", "shape": "cylinder", "start": [0, 0, 0], "end": [0, 0, 1]}
+
+
+def warnings_of(parts, **top):
+    return body_from_raw(
+        {"units": {"length": "m", "mass": "kg"}, "parts": parts, **top}, "spec.yaml"
+    ).warnings
+
+
+def test_a_radius_within_one_u_of_zero_is_warned_with_the_normal_share():
+    (line,) = warnings_of([ROD | {"radius": "0.01 ± 0.02", "density": 1000}])
+    share = norm.cdf(0, loc=0.01, scale=0.02)  # 0.3085
+    assert line.startswith("spec.yaml: parts.rod.radius: ")
+    assert f"{100 * share:.2g}% of its normal distribution" in line and "at or below 0" in line
+
+
+def test_a_tolerance_is_a_uniform_share():
+    # uniform on [1 - 2, 1 + 2]: a quarter of it below 0
+    (line,) = warnings_of([ROD | {"radius": 0.1, "density": "1 ± 2"}], uncertainty="tolerance")
+    assert "parts.rod.density: 25% of its uniform distribution" in line
+
+
+@pytest.mark.parametrize(
+    "part",
+    [
+        {"shape": "box", "center": [0, 0, 0], "size": [1, "0.2 ± 0.1", 1], "mass": 1},  # 2.3%
+        {"shape": "point", "position": [0, 0, 0], "mass": "1 ± 0.4"},  # 0.62%
+        ROD | {"radius": 0.1, "mass": "2 ± 50%"},  # 2.3%
+    ],
+)
+def test_sizes_masses_and_components_are_checked(part):
+    (line,) = warnings_of([part])
+    assert "% of its normal distribution" in line
+
+
+@pytest.mark.parametrize(
+    "part",
+    [
+        {"shape": "point", "position": ["0 ± 5", 0, 0], "mass": 1},  # a coordinate has no limit
+        {"shape": "point", "position": [0, 0, 0], "mass": "1 ± 0.3"},  # 3.3 u from 0: 0.04%
+        {
+            "shape": "box",
+            "center": [0, 0, 0],
+            "size": [1, 1, 1],
+            "mass": 1,
+            "rotation": {"axis": [0, 0, 1], "angle_deg": "0 ± 90"},
+        },
+    ],
+)
+def test_inputs_far_from_a_limit_or_without_one_are_not_warned(part):
+    assert warnings_of([part]) == []
+
+
+def test_the_warned_share_is_the_share_of_monte_carlo_draws():
+    loaded = body_from_raw({"parts": [ROD | {"radius": "0.01 ± 0.02", "density": 1000}]}, "spec.yaml")
+    (x,) = loaded.spec._uncertain
+    drawn = x.draws(np.random.default_rng(7), 200_000)
+    assert np.mean(drawn <= 0) == pytest.approx(x.share_below(0.0), abs=0.005)
+
+
+def test_the_budget_carries_the_body_warnings(tmp_path):
+    # no units, a 100 m rod of 0.2 kg: the density says millimetres
+    loaded = body_from_raw(
+        {"parts": [ROD | {"end": [0, 0, 100], "radius": "10 ± 0.1", "mass": 0.2}]}, "s.yaml"
+    )
+    out = budget(loaded, "mass")
+    assert len(out["warnings"]) == 1 and "look like millimetres" in out["warnings"][0]
+    plain = body_from_raw({"units": {"length": "m"}, "parts": [ROD | {"radius": "1 ± 0.01", "mass": 1}]}, "s")
+    assert budget(plain, "mass")["warnings"] == []
