@@ -146,3 +146,15 @@ def test_runs_in_chunks_of_bounded_memory_give_the_numbers_of_one_call(monkeypat
         tracemalloc.stop()
     assert chunked == whole and whole["failed"] == 0
     assert peak < 12e6, peak
+
+
+def test_a_drawn_body_no_run_starts_from_is_a_failed_run_not_a_crash():
+    """A mass drawn at or below 0 (0.4 ± 0.3: 9% of its normal distribution) gives a body whose
+    inertia about the pivot is not positive: that run fails, the others are summarised."""
+    spec = {"pivot": [0, 0, 0], "parts": [{"shape": "cone", "mass": "0.4 ± 0.3", "radius": 0.04}]}
+    spec["parts"][0] |= {"apex": [0, 0, 0], "base": [0, 0, 0.06]}
+    n, seed = 200, 5
+    spread = input_uncertainty(rbi.load(spec), draws=n, seed=seed, spin=100.0, duration=0.05, samples=11)
+    drawn_mass = np.random.default_rng(seed).normal(0.4, 0.3, n)
+    assert spread["failed"] == np.sum(drawn_mass <= 0) > 0
+    assert spread["final_omega"][2] is not None and spread["warnings"] == []

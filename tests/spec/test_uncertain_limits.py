@@ -80,3 +80,53 @@ def test_the_budget_carries_the_body_warnings(tmp_path):
     assert len(out["warnings"]) == 1 and "look like millimetres" in out["warnings"][0]
     plain = body_from_raw({"units": {"length": "m"}, "parts": [ROD | {"radius": "1 ± 0.01", "mass": 1}]}, "s")
     assert budget(plain, "mass")["warnings"] == []
+
+
+PRISM = {
+    "name": "plate",
+    "shape": "prism",
+    "outline": [[0, 0], [1, 0], [0.5, "0.02 ± 0.05"], [0, 1]],  # crosses [0,0]-[1,0] when y <= 0
+    "start": [0, 0, 0],
+    "end": [0, 0, 0.1],
+    "density": 1000,
+}
+
+
+@pytest.mark.parametrize(
+    "part, value, u, refused",
+    [
+        (PRISM | {"name": "tube"}, 0.02, 0.05, lambda y: y <= 0),
+        (  # a bore wider than the tube
+            {
+                "shape": "tube",
+                "start": [0, 0, 0],
+                "end": [0, 0, 1],
+                "outer_radius": 1,
+                "inner_radius": "0.9 ± 0.1",
+            }
+            | {"mass": 1, "name": "tube"},
+            0.9,
+            0.1,
+            lambda r: r > 1,
+        ),
+    ],
+)
+def test_monte_carlo_counts_the_draws_the_spec_refuses(part, value, u, refused):
+    loaded = body_from_raw({"units": {"length": "m", "mass": "kg"}, "parts": [part]}, "spec.yaml")
+    out = budget(loaded, "mass", method="monte-carlo", samples=5000, seed=11)
+    # the one input's draws, as the seed gives them (JCGM 101: drawn from its normal distribution)
+    expected = int(np.sum(refused(np.random.default_rng(11).normal(value, u, 5000))))
+    assert 0 < expected < 5000
+    (line,) = out["warnings"]
+    assert line.startswith(f"spec.yaml: parts[0] (tube): {expected:,} of 5,000 draws")
+    assert "give a part the spec refuses" in line
+    assert budget(loaded, "mass")["warnings"] == []  # the linear method draws nothing
+
+
+def test_draws_of_a_simulation_carry_the_same_warning():
+    import rbi
+
+    spec = {"pivot": [0, 0, 0], "parts": [PRISM | {"start": [0, 0, 0.1], "end": [0, 0, 0.2]}]}
+    run = rbi.simulate(rbi.load(spec), spin=50, duration=0.05, draws=20, seed=2)
+    assert any("draws (" in w and "the spec refuses" in w for w in run.summary.warnings)
+    assert "warnings" not in run.summary.input_uncertainty

@@ -112,7 +112,8 @@ class Trajectory(SimulationRun, Result):
         if self.body is None or self.summary is None or self.settings is None:
             raise ArgumentError("body", "needs the Body of the run: a Trajectory from rbi.simulate")
         drawn = input_uncertainty(self.body, draws=draws, seed=seed, **vars(self.settings))
-        return replace(self, summary=replace(self.summary, input_uncertainty=drawn))
+        warnings = [*self.summary.warnings, *drawn.pop("warnings")]  # with the body's
+        return replace(self, summary=replace(self.summary, input_uncertainty=drawn, warnings=warnings))
 
     def notes(self) -> list[str]:
         """The sentences under the tables: integrator, stability, closed form."""
@@ -299,7 +300,8 @@ def input_uncertainty(
     deviation of the tilt range, final tilt, mean precession rate and final ω over ``draws``
     runs with the inputs drawn (``seed``: the same draws again), integrated by the batched
     kernel in chunks of bounded memory; ``run``: `simulate`'s settings (``spin``, ``tilt_deg``,
-    ``duration`` ...). What ``rbi simulate --draws`` adds to its JSON as ``"input_uncertainty"``."""
+    ``duration`` ...). What ``rbi simulate --draws`` adds to its JSON as ``"input_uncertainty"``,
+    and ``warnings``: drawn parts the spec refuses, which it adds to the run's ``"warnings"``."""
     prepared = prepare_run(loaded_body(body, "body"), RunSettings(samples=samples, **run))
     return spread(prepared, prepared.settings.samples, draws, seed)
 

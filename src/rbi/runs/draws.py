@@ -31,7 +31,8 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     """The standard deviation over ``draws`` runs of the summary's tilt range, final tilt, mean
     precession rate and final ω, every input written with ± drawn (``seed``: reproducible), the
     runs set up as ``prepared`` (a :class:`~rbi.runs.run.PreparedRun`: same start, spin axis,
-    duration and tolerance). Runs the kernel could not finish are counted in ``failed``."""
+    duration and tolerance). Runs the kernel could not finish are counted in ``failed``;
+    ``warnings``: the drawn parts the spec refuses (:func:`rbi.spec.uncertain.refused_draws`)."""
     if isinstance(draws, bool) or not isinstance(draws, int) or not 2 <= draws <= 100_000:
         raise ArgumentError("draws", f"must be a whole number from 2 to 100,000 (got {literal(draws)})")
     body, scene, settings = prepared.body, prepared.scene, prepared.settings
@@ -40,11 +41,14 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
     rtol = DEFAULT_RTOL if settings.rtol is None else settings.rtol
     total = estimated_steps(scene, prepared.omega0, settings.duration, "default", rtol) * draws
     check_batch(body.path, f"{draws:,} drawn runs", total, "fewer {draws}", settings.check_budget)
-    scenes = [
-        scene_from_properties(each, body.pivot, scene.gravity, scene.spin_axis)
-        for _, bodies in drawn(body, draws, generator(seed))
-        for each in bodies
-    ]
+    notes: list[str] = []
+    scenes = []
+    for _, bodies in drawn(body, draws, generator(seed), notes):
+        for each in bodies:
+            try:
+                scenes.append(scene_from_properties(each, body.pivot, scene.gravity, scene.spin_axis))
+            except ValueError:  # a drawn body no run starts from (negative mass, singular inertia): failed
+                continue
     t = sample_times(settings.duration, samples)
     start = np.concatenate((prepared.q0, prepared.omega0))[None, :]
     size, rows, final = runs_per_call(t.size), [], []
@@ -58,7 +62,7 @@ def input_uncertainty(prepared: Any, samples: int, draws: int, seed: int | None)
         final.append(out[done, -1, 4:])
     spread: dict[str, Any] = {name: _sd([row[key] for row in rows]) for name, key in FIGURES.items()}
     spread["final_omega"] = [_sd(omega) for omega in np.concatenate(final).T]
-    return {"draws": draws, "seed": seed, "failed": draws - len(rows)} | spread
+    return {"draws": draws, "seed": seed, "failed": draws - len(rows)} | spread | {"warnings": notes}
 
 
 def _sd(values: Any) -> float | None:

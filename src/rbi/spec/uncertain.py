@@ -34,6 +34,7 @@ from rbi.core.uncertainty import (
 )
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.spec import models
+from rbi.spec.errors import part_label
 from rbi.spec.fields import MATRIX_ROWS
 from rbi.spec.geometry import part_count
 from rbi.spec.pattern import copy_motions
@@ -342,22 +343,52 @@ counted: :func:`rbi.spec.geometry.part_count`): a few hundred bytes of working a
 some 100 MB whatever the number of draws."""
 
 
-def drawn(loaded: Any, n: int, rng: np.random.Generator) -> Iterator[tuple[slice, MassProperties]]:
+def drawn(
+    loaded: Any, n: int, rng: np.random.Generator, notes: list[str] | None = None
+) -> Iterator[tuple[slice, MassProperties]]:
     """The body ``loaded`` for n draws of every uncertain input (JCGM 101 §6), in its units: the
     draws made input by input, then the bodies built from their parts (:func:`rows_at`) as
     stacks of :data:`CHUNK_PARTS` parts at a time, each chunk with its rows. Each chunk is led
     by draw 0, as one stack of all n is (a pattern's copies are summed about the first row's),
-    so chunks give the numbers one stack gives, bit for bit."""
+    so chunks give the numbers one stack gives, bit for bit. ``notes`` (when given) gets the
+    warnings of :func:`refused_draws`, before the first chunk."""
     inputs = loaded.spec._uncertain
     draws = np.empty((n, len(inputs)))
     for j, each in enumerate(inputs):
         draws[:, j] = each.draws(rng, n)
+    if notes is not None:
+        notes += refused_draws(loaded, draws)
     size = max(1, CHUNK_PARTS // part_count(loaded, CHUNK_PARTS))
     for start in range(0, n, size):
         with np.errstate(all="ignore"):
             parts = rows_at(loaded, np.concatenate((draws[:1], draws[start : start + size])))
             mass, com, inertia = body_stack(*parts, loaded.props.center_of_mass)
         yield slice(start, start + size), MassProperties(mass[1:], com[1:], inertia[1:])
+
+
+def refused_draws(loaded: Any, draws: np.ndarray) -> list[str]:
+    """A warning for each part built draw by draw (a shape outside :data:`BUILDERS`, not a
+    file's) that some ``draws`` (n, k) make a part the spec refuses (a prism's outline that
+    crosses itself, a tube's bore wider than the tube, a custom inertia no body has): how many
+    draws, and the first one's reason. Each drawn part is validated as the spec's own are."""
+    out, inputs = [], loaded.spec._uncertain
+    for index, chosen in by_part(inputs).items():
+        part, mine = loaded.spec.parts[index], [inputs[k] for k in chosen]
+        if type(part) in BUILDERS or isinstance(part, PLACED):  # their fields' own limits: limit_warnings
+            continue
+        count, first = 0, None
+        for row in draws[:, chosen]:
+            try:
+                type(part).model_validate(dict(_with(part, mine, row)))
+            except ValueError as error:  # pydantic's ValidationError
+                count, first = count + 1, first or error.errors()[0]["msg"].removeprefix("Value error, ")
+        if count:
+            out.append(
+                f"{loaded.path}: {part_label(index, part)}: {count:,} of {len(draws):,} draws "
+                f"({100 * count / len(draws):.2g}%) give a part the spec refuses (the first: {first}): "
+                "Monte Carlo computes them as the formulas give them"
+            )
+    return out
 
 
 QUANTITIES = (
@@ -465,10 +496,11 @@ def generator(seed: int | None) -> np.random.Generator:
     return np.random.default_rng(seed)
 
 
-def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
+def monte_carlo(loaded: Any, n: int, seed: int | None, notes: list[str] | None = None) -> np.ndarray:
     """(n, q) samples of :data:`QUANTITIES` (about the centre of mass of each draw) from n draws
-    of every uncertain input (JCGM 101), the bodies computed chunk by chunk (:func:`drawn`).
-    ArgumentError of ``samples`` for more draws than :data:`MONTE_CARLO_BYTES` holds."""
+    of every uncertain input (JCGM 101), the bodies computed chunk by chunk (:func:`drawn`,
+    which adds its warnings to ``notes``). ArgumentError of ``samples`` for more draws than
+    :data:`MONTE_CARLO_BYTES` holds."""
     k = len(loaded.spec._uncertain)
     most = MONTE_CARLO_BYTES // (8 * (k + len(QUANTITIES)))
     if n > most:
@@ -479,7 +511,7 @@ def monte_carlo(loaded: Any, n: int, seed: int | None) -> np.ndarray:
             f"(got {literal(n)})",
         )
     samples = np.empty((n, len(QUANTITIES)))
-    for rows, body in drawn(loaded, n, generator(seed)):
+    for rows, body in drawn(loaded, n, generator(seed), notes):
         samples[rows, :13] = _flat((body.mass, body.center_of_mass, body.inertia_about_com))
         if not np.all(np.isfinite(samples[rows, :13])):  # eigvalsh cannot take them
             raise InputError(
@@ -557,8 +589,8 @@ def budget(
     quantity's ``contributions`` as :class:`Contributions`; and ``estimated_sensitivities``, the
     inputs whose ∂y/∂x are not exact, when there are any), of the quantities ``of`` names
     (:func:`_quantities`, which checks the arguments)."""
-    chosen = _quantities(of, method, samples, coverage)
-    drawn = monte_carlo(loaded, samples, seed) if method == "monte-carlo" else None
+    chosen, notes = _quantities(of, method, samples, coverage), [*loaded.warnings]
+    drawn = monte_carlo(loaded, samples, seed, notes) if method == "monte-carlo" else None
     result = linear(loaded)
     u = result.uncertainty
     k = coverage_factor(coverage)
@@ -587,7 +619,7 @@ def budget(
     out.update(samples=samples if drawn is not None else None, quantities=quantities)
     if result.estimated.any():
         out["estimated_sensitivities"] = [x.path for x, e in zip(result.inputs, result.estimated) if e]
-    out["warnings"] = [*loaded.warnings, *([] if result.inputs else [NO_PLUS_MINUS])]
+    out["warnings"] = notes + ([] if result.inputs else [NO_PLUS_MINUS])
     return out
 
 
