@@ -130,3 +130,19 @@ def test_draws_of_a_simulation_carry_the_same_warning():
     run = rbi.simulate(rbi.load(spec), spin=50, duration=0.05, draws=20, seed=2)
     assert any("draws (" in w and "the spec refuses" in w for w in run.summary.warnings)
     assert "warnings" not in run.summary.input_uncertainty
+
+
+def test_a_draw_no_body_has_is_one_line_not_an_internal_error():
+    import rbi
+
+    custom = {"name": "c", "shape": "custom", "mass": 1, "center_of_mass": [0, 0, 0]}
+    custom["inertia"] = [["1 ± 0.5", 0, 0], [0, 1, 0], [0, 0, "1.9 ± 0.2"]]  # I1 + I2 < I3 in some draws
+    loaded = body_from_raw({"units": {"length": "m", "mass": "kg"}, "parts": [custom]}, "spec.yaml")
+    assert budget(loaded, "mass")["quantities"][0]["u"] == 0  # the linear method needs no draw
+    with pytest.raises(rbi.SpecError) as refused:
+        budget(loaded, "mass", method="monte-carlo", samples=2000, seed=1)
+    line = str(refused.value)
+    assert line.startswith(
+        "spec.yaml: parts[0] (c): Monte Carlo: a draw gives a part rbi cannot build (inertia: "
+    )
+    assert "triangle inequality" in line and "\n" not in line

@@ -181,9 +181,16 @@ def part_stack(
     part, spec, n = loaded.spec.parts[indices[0]], loaded.spec, len(values)
     sign = -1.0 if getattr(part, "subtract", False) else 1.0
     if type(part) not in BUILDERS and not isinstance(part, PLACED):
-        rows = MassProperties.concatenate(
-            part_element(_with(part, inputs, row), spec.units, loaded.path) for row in values
-        )
+        try:
+            rows = MassProperties.concatenate(
+                part_element(_with(part, inputs, row), spec.units, loaded.path) for row in values
+            )
+        except ValueError as error:  # a draw its builder refuses (a custom inertia no body has)
+            raise InputError(
+                f"{loaded.path}: {part_label(indices[0], part)}: Monte Carlo: a draw gives a part rbi "
+                f"cannot build ({error}): the ± of its inputs are too large for it",
+                file=loaded.path,
+            ) from None
         return sign * rows.mass, rows.center_of_mass, sign * rows.inertia_about_com
     own = {i.steps: values[:, k] for k, i in enumerate(inputs) if i.steps[0] not in SEPARATE}
     rows = np.repeat(np.arange(len(indices)), n // len(indices))  # the part of each row
