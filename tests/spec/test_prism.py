@@ -206,7 +206,12 @@ def spec_line(**fields) -> str:
             ["holes[1]", "inside holes[0]"],
         ),
         ({"holes": [[[0, 0], [0.5, 0.1], [0.5, 0.5]]]}, ["holes[0]", "touches the outline"]),
-        ({"outline": [[0, 0], [1, 0], [2, 0]]}, ["outline"]),
+        ({"outline": [[0, 0], [1, 0], [2, 0]]}, ["outline: encloses no area (its vertices are on one line"]),
+        (
+            {"outline": [[0, 0], [2, 0], [1, 0], [3, 0]]},
+            ["outline: encloses no area"],
+        ),  # not "crosses itself"
+        ({"holes": [[[0.1, 0.5], [0.2, 0.5], [0.3, 0.5]]]}, ["holes[0]: encloses no area"]),
         ({"outline": [[0, 0], [1e200, 0], [0, 1e200]]}, ["outline", "numbers too large"]),
         ({"outline": [[0, 0], [1e-200, 0], [0, 1e-200]]}, ["outline", "encloses no area"]),
         ({"outline": [[0, 0], [1, 0], [1, 0], [0, 1]]}, ["outline", "repeated"]),

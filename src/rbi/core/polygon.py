@@ -70,6 +70,9 @@ def _cross(o: np.ndarray, p: np.ndarray, q: np.ndarray) -> np.ndarray:
     )
 
 
+NO_AREA = "encloses no area (its vertices are on one line, or too close for a double)"
+
+
 def _ring_name(k: int) -> str:
     return "outline" if k == 0 else f"holes[{k - 1}]"
 
@@ -84,6 +87,8 @@ def polygon_problem(outline: ArrayLike, holes: Sequence[ArrayLike] = ()) -> str 
     for k, r in enumerate(rings):
         if np.any(np.all(r == np.roll(r, -1, axis=0), axis=1)):
             return f"{_ring_name(k)}: a vertex is repeated (an edge of length 0)"
+        if not np.any(_cross(r[0], r[1:-1], r[2:])):  # on one line: its edges overlap, but say why
+            return f"{_ring_name(k)}: {NO_AREA}"
     a, b, ring, place = _edges(rings)
     n = len(a)
     sizes = np.bincount(ring)
@@ -116,9 +121,7 @@ def polygon_problem(outline: ArrayLike, holes: Sequence[ArrayLike] = ()) -> str 
                 f"{_ring_name(k)}: numbers too large: its area overflows (beyond {np.finfo(float).max:.3g})"
             )
         if area <= 1e-12 * size * size:
-            return (
-                f"{_ring_name(k)}: encloses no area (its vertices are on one line, or too close for a double)"
-            )
+            return f"{_ring_name(k)}: {NO_AREA}"
     for k, r in enumerate(rings[1:], 1):
         if not inside(r[0], rings[0]):
             return f"{_ring_name(k)}: lies outside the outline"
