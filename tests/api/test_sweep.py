@@ -114,13 +114,15 @@ def test_the_signature_is_real_and_the_table_shows_itself(bolted):
     assert rbi.sweep.__doc__.startswith("Many simulations of one body")
     table = rbi.sweep(bolted, spin=[150.0, 250.0], duration=0.2, workers=1)
     html = table._repr_html_()
-    assert html.startswith("<table>") and "<th>max_tilt_deg</th>" in html and ">ok<" in html
+    # the table the CLI prints: each header over its unit, the columns --out keeps for want of room left out
+    assert html.startswith("<table>") and "<th>max tilt<br>deg</th>" in html and ">ok<" in html
+    assert "precession" not in html and list(table.to_pandas())[6] == "precession_rate_deg_s"
     from rich.console import Console
 
     console = Console(width=200, record=True, file=io.StringIO())
     console.print(table)
     text = console.export_text()
-    assert "max_tilt_deg" in text and "250" in text and "bolted-top — 2 runs, 0 failed" in text
+    assert "max tilt" in text and "250" in text and "bolted-top — sweep" in text
 
 
 def test_to_pandas_or_a_clear_error(bolted, monkeypatch):

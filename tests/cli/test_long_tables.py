@@ -8,10 +8,11 @@ import contextlib
 import io
 
 import pytest
+from rich import box
 
 import rbi.cli.render as render
 from rbi.bench.robotaudit import urdf_text
-from rbi.cli.tables import titled
+from rbi.cli.tables import SafeTable
 from rbi.text import visible
 from tests.conftest import run_rbi_inprocess
 
@@ -23,6 +24,11 @@ def _printed(table_of, rows: int, width: int, monkeypatch, laid_out_by_rbi: bool
     with contextlib.redirect_stdout(out):
         render.print_table(table_of(rows))
     return out.getvalue()
+
+
+def titled(title: str) -> SafeTable:
+    """An empty table in rbi's style (as rbi.cli.tables.drawn makes them)."""
+    return SafeTable(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
 
 
 def _links(rows: int):

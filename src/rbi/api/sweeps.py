@@ -40,6 +40,8 @@ _INERTIA_FIELDS = frozenset("ixx iyy izz ixy ixz iyz inertia moment".split())
 
 SHOWN_ROWS = 40
 """Most runs a table shows: past them, the first and last half of them."""
+HIDDEN = frozenset({"min_tilt_deg", "precession_rate_deg_s", "steps"})
+"""Columns of --out, json and csv that the table leaves out, to fit 80 columns."""
 
 
 class SweepTable(Result):
@@ -174,9 +176,16 @@ class SweepTable(Result):
             return [Rows("Spread over the ok runs", columns, cells, left=2)]
         half = SHOWN_ROWS // 2
         shown = self._rows if len(self) <= SHOWN_ROWS else [*self._rows[:half], None, *self._rows[-half:]]
-        cells = [("…",) * len(self.columns) if row is None else tuple(map(_cell, row)) for row in shown]
-        title = f"{self.name or 'sweep'} — {len(self)} runs, {self.failed} failed"
-        return [Rows(title, tuple(self.columns), cells)]
+        keep = [i for i, name in enumerate(self.columns) if name not in HIDDEN]
+        cells = [tuple("…" if row is None else _cell(row[i]) for i in keep) for row in shown]
+        headers = tuple(self._header(self.columns[i]) for i in keep)
+        title = f"{self.name or self._body.path} — sweep"
+        return [Rows(title, headers, cells, left=0, kind="parts", text_last=True)]  # numbers never wrap
+
+    def _header(self, column: str) -> str:
+        """A column's header over its unit: ``max tilt`` over ``deg``; a spec field as written."""
+        words = column.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
+        return "\n".join(filter(None, (column if column.startswith("parts.") else words, self.unit(column))))
 
     def notes(self) -> list[str]:
         """The lines ``rbi sweep`` prints under its table: the runs, the files written."""

@@ -209,7 +209,7 @@ when they fit the terminal: rich takes about a millisecond a row, 100 s for such
 
 
 def _long_table_lines(table, console) -> list[str] | None:
-    """The lines rich prints for ``table`` (rbi's style, :func:`rbi.cli.tables.titled`: no edge,
+    """The lines rich prints for ``table`` (rbi's style, :func:`rbi.cli.tables.drawn`: no edge,
     a rule under the header, one space of padding, one between columns; no title), made
     directly, when every cell is plain text on one line and the columns at their natural widths
     fit ``console``; else None (rich lays it out). Plain text: rich's header style is left out,

@@ -4,7 +4,6 @@ or, with --mass-properties, the spread of the mass properties alone."""
 from __future__ import annotations
 
 from rich.console import Group
-from rich.text import Text
 
 import rbi
 from rbi.cli import tables
@@ -22,7 +21,7 @@ from rbi.cli.options import (
 )
 from rbi.cli.render import emit_result, note, progress_bar
 from rbi.cli.run_options import RUN, budget
-from rbi.cli.terminal import Terminated, say, terminal_safe
+from rbi.cli.terminal import Terminated, say
 
 OPTIONS = (
     option(
@@ -99,10 +98,6 @@ OPTIONS = (
 )
 
 
-HIDDEN = frozenset({"min_tilt_deg", "precession_rate_deg_s", "steps"})
-"""Columns of --out, json and csv that the table leaves out, to fit 80 columns."""
-
-
 @command(*OPTIONS, api=rbi.sweep)
 def sweep(file: SpecFile, *, format: OutputFormat, **settings) -> None:
     """Many runs of one spec: a grid over spin, tilt and spec fields, or Monte Carlo draws.
@@ -129,7 +124,7 @@ def sweep(file: SpecFile, *, format: OutputFormat, **settings) -> None:
     workers = settings["workers"]
     if workers is not None and table.cores is not None and table.cores < workers:
         say(f"--workers {workers}: this machine gives rbi {table.cores} cores; using {table.cores}")
-    emit_result(format.value, table, table=lambda: _drawn(table, file))
+    emit_result(format.value, table, table=lambda: _drawn(table))
 
 
 def _run(file: str, settings: dict):
@@ -157,24 +152,6 @@ def _run(file: str, settings: dict):
             raise SystemExit(code) from None
 
 
-def _drawn(table, file: str):
-    """The runs (or a study's spread, drawn as rbi's tables) of ``table.rows()``, then its notes."""
-    rows = table.rows()
-    drawn = [tables.drawn(rows)] if table.spread else [_runs(each, table, file) for each in rows]
-    return Group(*(drawn if table.held else []), note("\n".join(table.notes())))
-
-
-def _runs(rows, table, file: str):
-    """The runs, in rbi's table style; each header over its unit."""
-    keep = [i for i, name in enumerate(rows.columns) if name not in HIDDEN]
-    drawn = tables.titled(f"{table.name or file} — sweep")
-    for name in (rows.columns[i] for i in keep):
-        # words wrap in a narrow terminal and no cell is cut short: a number is never shown truncated
-        words = name.removesuffix("_deg_s").removesuffix("_deg").replace("_", " ")  # the unit is below
-        header = name if name.startswith("parts.") else words
-        justify = "left" if name == "status" else "right"
-        lines = [Text(terminal_safe(line)) for line in (header, table.unit(name)) if line]
-        drawn.add_column(Text("\n").join(lines), overflow="fold", justify=justify)
-    for row in rows.cells:
-        drawn.add_row(*(row[i] for i in keep))
-    return drawn
+def _drawn(table):
+    """The runs (or a study's spread) as rbi's tables, then the table's notes."""
+    return Group(*([tables.drawn(table.rows())] if table.held else []), note("\n".join(table.notes())))

@@ -16,7 +16,7 @@ class SafeTable(Table):
     character (escaped as in :func:`rbi.cli.terminal.terminal_safe`, once, here, before the
     layout so columns stay aligned), and which spells rbi's symbols in ASCII (``kg*m^2``,
     ``deg``) when standard output cannot encode them. Every table rbi prints is built on it
-    (:func:`titled`)."""
+    (:func:`drawn`)."""
 
     def __init__(self, *args, title=None, **kwargs):
         super().__init__(*args, title=_cell(title), **kwargs)
@@ -36,11 +36,6 @@ def _cell(value):
     if ascii_only():
         value = value.encode("ascii", errors=ERROR_HANDLER).decode("ascii")
     return Text(value)
-
-
-def titled(title: str) -> Table:
-    """An empty table in rbi's style; the title is text (see :class:`SafeTable`)."""
-    return SafeTable(title=title, box=box.SIMPLE_HEAD, title_justify="left", show_edge=False)
 
 
 def drawn(rows) -> Group:
