@@ -146,3 +146,20 @@ def test_a_draw_no_body_has_is_one_line_not_an_internal_error():
         "spec.yaml: parts[0] (c): Monte Carlo: a draw gives a part rbi cannot build (inertia: "
     )
     assert "triangle inequality" in line and "\n" not in line
+
+
+def test_a_sub_assemblys_drawn_parts_are_validated_too(tmp_path):
+    import yaml
+
+    (tmp_path / "plate.yaml").write_text(yaml.safe_dump({"parts": [PRISM]}, allow_unicode=True))
+    spec = {
+        "parts": [{"name": "sub", "shape": "assembly", "file": "plate.yaml", "position": ["0 ± 0.1", 0, 0]}]
+    }
+    loaded = body_from_raw(spec, str(tmp_path / "top.yaml"))
+    out = budget(loaded, "mass", method="monte-carlo", samples=5000, seed=11)
+    # the inputs in order: the placement's x, then the sub-assembly's own (the prism's vertex y)
+    rng = np.random.default_rng(11)
+    rng.normal(0, 0.1, 5000)
+    expected = int(np.sum(rng.normal(0.02, 0.05, 5000) <= 0))
+    (line,) = out["warnings"]
+    assert line.startswith(f"{tmp_path / 'plate.yaml'}: parts[0] (plate): {expected:,} of 5,000 draws")

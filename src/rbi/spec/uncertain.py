@@ -375,12 +375,17 @@ def drawn(
 
 def refused_draws(loaded: Any, draws: np.ndarray) -> list[str]:
     """A warning for each part built draw by draw (a shape outside :data:`BUILDERS`, not a
-    file's) that some ``draws`` (n, k) make a part the spec refuses (a prism's outline that
+    file's; a sub-assembly's own parts too) that some ``draws`` (n, k) make a part the spec refuses (a prism's outline that
     crosses itself, a tube's bore wider than the tube, a custom inertia no body has): how many
     draws, and the first one's reason. Each drawn part is validated as the spec's own are."""
     out, inputs = [], loaded.spec._uncertain
     for index, chosen in by_part(inputs).items():
         part, mine = loaded.spec.parts[index], [inputs[k] for k in chosen]
+        if isinstance(part, models.AssemblyPart):  # its parts, each of its inputs drawn as here
+            inner = np.empty((len(draws), len(part._loaded.spec._uncertain)))
+            for k in (k for k in chosen if inputs[k].steps[0] == "file"):
+                inner[:, inputs[k].steps[1]] = draws[:, k]
+            out += refused_draws(part._loaded, inner) if inner.size else []
         if type(part) in BUILDERS or isinstance(part, PLACED):  # their fields' own limits: limit_warnings
             continue
         count, first = 0, None
