@@ -233,7 +233,7 @@ def limit_warnings(spec: models.BodySpec, path: str) -> list[str]:
         if share > REACH:
             out.append(
                 f"{path}: {x.path}: {100 * share:.2g}% of its {x.distribution} distribution ({x.value:g}, "
-                f"u = {x.u:.3g}) lies at or below {limit:g}, which the spec does not allow there: "
+                f"u = {x.u:.3g}) lies below {limit:g}, where the spec allows no value: "
                 "Monte Carlo draws there give bodies no spec could describe"
             )
     return out
