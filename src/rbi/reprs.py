@@ -99,9 +99,8 @@ class Rows:
     def html(self) -> str:
         """The same table as HTML (every cell escaped; ``total`` in the table's foot)."""
         align = ["" if self._left(i) else ' style="text-align:right"' for i in range(len(self.columns))]
-        head = "".join(
-            f"<th>{escape(name).replace(chr(10), '<br>')}</th>" for name in self.columns
-        )  # over its unit
+        names = (escape(name).replace("\n", "<br>") for name in self.columns)  # a label over its unit
+        head = "".join(f"<th>{name}</th>" for name in names)
         body = "".join(f"<tr>{_html_cells(align, row)}</tr>" for row in self.cells)
         foot = "" if self.total is None else f"<tfoot><tr>{_html_cells(align, self.total)}</tr></tfoot>"
         return (
