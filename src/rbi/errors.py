@@ -13,7 +13,7 @@ from __future__ import annotations
 import math
 import re
 import reprlib
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 
@@ -107,6 +107,13 @@ def literal(value: object, quoted: bool = True) -> str:
     name parameters)."""
     text = shown(value, 200) if quoted else str(value)
     return text.replace("{", "{{").replace("}", "}}")
+
+
+def one_of(parameter: str, value: object, choices: Iterable[str]) -> None:
+    """ArgumentError naming ``parameter`` unless ``value`` is one of the strings ``choices``
+    (a list or a dict given instead is refused, not looked up: it is no key of a dict)."""
+    if not (isinstance(value, str) and value in choices):
+        raise ArgumentError(parameter, f"expected one of {', '.join(choices)}, got {literal(value)}")
 
 
 def api_name(parameter: str) -> str:

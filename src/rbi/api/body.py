@@ -40,7 +40,7 @@ from rbi.core.inertia import (
 )
 from rbi.core.mass import MassProperties, inertia_shares
 from rbi.core.rotation import angle_is_kept, compose_world_rotations, turn_lost_to_rounding
-from rbi.errors import ArgumentError, SpecError, literal
+from rbi.errors import ArgumentError, SpecError, literal, one_of
 from rbi.formats.inertial_xml import FORMATS, export_xml
 from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
 from rbi.formats.robot_paths import parse_package_paths
@@ -180,12 +180,16 @@ def spec_schema() -> dict[str, Any]:
 def unit_vector(direction: Sequence[float] | np.ndarray) -> np.ndarray:
     """``direction / |direction|`` as (3,), for any finite non-zero vector however large or
     small its components (1e-300 and 1e300 alike); ArgumentError naming ``direction`` else."""
+    return _unit(direction, "direction")
 
+
+def _unit(value: Sequence[float] | np.ndarray, parameter: str) -> np.ndarray:
+    """`unit_vector` of ``value``, the argument ``parameter`` of a public function or method."""
     try:
-        return unit_axis(direction)
+        return unit_axis(value)
     except (ValueError, TypeError):
         raise ArgumentError(
-            "direction", f"must be a non-zero finite vector (x, y, z), got {literal(direction)}"
+            parameter, f"must be a non-zero finite vector (x, y, z), got {literal(value)}"
         ) from None
 
 
@@ -365,15 +369,12 @@ class Body(Result):
         (``"tensor"``, ``I_xy = −∫xy dm``, or ``"cad"``, ``+∫xy dm``), and with ``axis`` the
         moment about the line through ``about`` along it (`moment_about_axis`)."""
 
-        if products not in PRODUCT_SIGN_TITLES:
-            raise ArgumentError(
-                "products", f"expected one of {', '.join(PRODUCT_SIGN_TITLES)}, got {literal(products)}"
-            )
+        one_of("products", products, PRODUCT_SIGN_TITLES)
+        matrix = self.inertia(about, axes)  # a new array: its products may change sign; axes checked
         turns = list(axes or [])
-        matrix = self.inertia(about, turns or None)  # a new array: its products may change sign
         if products == "cad":
             matrix[OFF_DIAGONAL] = 0.0 - matrix[OFF_DIAGONAL]  # 0.0 - 0.0 is +0.0, no '-0' printed
-        direction = None if axis is None else unit_vector(axis)
+        direction = None if axis is None else _unit(axis, "axis")
         spread = self.standard_uncertainty(about, turns or None)
         return Inertia(
             self._place(about),
@@ -517,9 +518,8 @@ class Body(Result):
         `LENGTH_UNITS`, e.g. ``"mm"``), masses in ``mass`` (a key of `MASS_UNITS`, e.g.
         ``"g"``), inertias in mass·length²; the pivot and each part follow."""
 
-        for parameter, value, known in (("length", length, LENGTH_UNITS), ("mass", mass, MASS_UNITS)):
-            if value not in known:
-                raise ArgumentError(parameter, f"expected one of {', '.join(known)}, got {literal(value)}")
+        one_of("length", length, LENGTH_UNITS)
+        one_of("mass", mass, MASS_UNITS)
         with np.errstate(over="ignore", invalid="ignore"):
             body = Body(convert_body(self._loaded, length, mass), self._raw, self._spec_bytes)
         props, elements, names = body._loaded.props, body._loaded.elements, body._loaded.part_names
@@ -661,8 +661,7 @@ class Body(Result):
         """The `Export` ``rbi export`` prints: `inertial_xml` (the same arguments), its
         `export_warnings` and the SI mass properties it holds."""
 
-        if to not in FORMATS:
-            raise ArgumentError("to", f"expected one of {', '.join(FORMATS)}, got {literal(to)}")
+        one_of("to", to, FORMATS)
         if diagonal and to != "mjcf":
             raise ArgumentError(
                 "diagonal",
@@ -710,7 +709,7 @@ def _rotation(axes: Any) -> np.ndarray:
     """A body → world rotation matrix from ``axes`` (see `Body.inertia`): a (3, 3) rotation
     matrix, or (axis, degrees) pairs applied in order about world axes."""
 
-    if isinstance(axes, str):
+    if isinstance(axes, str) or not bool(np.iterable(axes)):  # bool: axes stays Any for mypy
         raise ArgumentError(
             "axes", f"expected a 3x3 rotation matrix or (axis, degrees) pairs, got {literal(axes)}"
         )

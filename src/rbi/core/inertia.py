@@ -185,7 +185,7 @@ def unit_axis(axis: ArrayLike) -> np.ndarray:
     """``axis`` scaled to unit length; ValueError when it is zero or not finite."""
     try:
         n = np.asarray(axis, dtype=float).reshape(3)
-    except OverflowError:  # an integer no double holds (10**400)
+    except (OverflowError, TypeError):  # an integer no double holds (10**400), no number (None, object())
         raise ValueError(f"the axis must be a non-zero finite direction, got {axis!r:.60}") from None
     return unit_vector(n)  # any size: 1e200 or 1e-200 components are still a direction; refuses 0 and inf
 

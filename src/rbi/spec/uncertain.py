@@ -12,7 +12,7 @@ patterned as a stack; the other shapes part by part through the same translation
 from __future__ import annotations
 
 import warnings
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from dataclasses import dataclass
 from typing import Any, NamedTuple
 
@@ -566,7 +566,7 @@ def _quantities(of: str | Sequence[str] | None, method: str, samples: int, cover
     """The positions in :data:`QUANTITIES` of the quantities ``of`` names (a whole vector or
     matrix stands for its entries; None: :data:`DEFAULT_QUANTITIES`), the other arguments of
     :func:`budget` checked: ArgumentError naming the parameter for one out of its range."""
-    names = [of] if isinstance(of, str) else of
+    names = of if of is None or (isinstance(of, Iterable) and not isinstance(of, str)) else [of]
     if names is not None:  # a whole vector or matrix stands for its entries
         names = [q for name in names for q in ([n for n in QUANTITIES if n.startswith(f"{name}[")] or [name])]
         unknown = [q for q in names if q not in QUANTITIES]
