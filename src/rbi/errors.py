@@ -89,15 +89,15 @@ _PLACEHOLDER = re.compile(r"\{\{|\}\}|\{([A-Za-z_]\w*(?:=[^{}]*)?)\}")
 
 def shown(value: Any, width: int = 40) -> str:
     """``value`` for a message in at most ``width`` characters, built without walking all of a
-    large list or mapping (a value shared through YAML aliases may stand for millions); an
-    integer no double holds is told by its number of digits."""
+    large list or mapping (a value shared through YAML aliases may stand for millions), on one
+    line; an integer no double holds is told by its number of digits."""
 
     if isinstance(value, int) and value.bit_length() > 64:  # too long to print (or to convert)
         return f"an integer of {int(value.bit_length() * math.log10(2)) + 1} digits"
     shorter = reprlib.Repr()
     shorter.maxlevel, shorter.maxlist, shorter.maxdict = 3, 4, 4
     shorter.maxstring = shorter.maxother = max(width, 12)
-    text = shorter.repr(value)
+    text = re.sub(r"\s*\n\s*", " ", shorter.repr(value))  # one line (a numpy array's repr has several)
     return text if len(text) <= width else text[: width - 3] + "..."
 
 

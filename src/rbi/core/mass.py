@@ -27,12 +27,39 @@ from rbi.core.inertia import (
     symmetrize,
 )
 from rbi.core.rotation import numbers, scalar
+from rbi.errors import ArgumentError, literal
 
 
-def _frozen(values: ArrayLike, shape: tuple[int, ...]) -> np.ndarray:
-    array = np.array(values, dtype=complex if np.iscomplexobj(values) else float).reshape(shape)
+def _frozen(values: ArrayLike, shape: tuple[int, ...], name: str) -> np.ndarray:
+    """``values`` as a read-only array of ``shape`` (floats, or complex numbers when they are
+    complex); ArgumentError naming the field ``name`` when they are no numbers of that size."""
+    try:
+        array = np.array(values, dtype=complex if np.iscomplexobj(values) else float).reshape(shape)
+    except (TypeError, ValueError, OverflowError):  # None, text, another size, 10**400
+        raise _refused(name, values, [shape]) from None
     array.flags.writeable = False
     return array
+
+
+def _given(values: ArrayLike, name: str, *shapes: tuple[int, ...]) -> np.ndarray:
+    """``values`` given as the argument ``name`` of a method: numbers (floats, or complex
+    numbers: a complex step) of one of ``shapes``; ArgumentError naming it else (None, text or
+    another shape, which gave NaN or numpy's own message)."""
+    try:
+        array = np.asarray(values)
+    except ValueError:  # a ragged list
+        array = np.asarray(None)
+    if array.dtype.kind not in "iufc" or array.shape not in shapes:
+        raise _refused(name, values, list(shapes))
+    return numbers(array)
+
+
+def _refused(name: str, values: Any, shapes: list[tuple[int, ...]]) -> ArgumentError:
+    """The refusal of ``values`` given as ``name``, which must be numbers of one of ``shapes``
+    (-1: any length)."""
+    arrays = " or ".join(str(shape).replace("-1", "n") for shape in shapes if shape)
+    wanted = ["a number"] * (() in shapes) + [f"numbers of shape {arrays}"] * bool(arrays)
+    return ArgumentError(name, f"expected {' or '.join(wanted)}, got {literal(values)}")
 
 
 @dataclass(frozen=True, eq=False)
@@ -57,14 +84,19 @@ class MassProperties:
         mass = self.mass
         if type(mass) is float or np.ndim(mass) == 0:
             n: tuple[int, ...] = ()
-            object.__setattr__(self, "mass", scalar(mass))
+            try:
+                object.__setattr__(self, "mass", scalar(mass))
+            except (TypeError, ValueError, OverflowError):  # None, text, 10**400
+                raise _refused("mass", mass, [()]) from None
         elif np.ndim(mass) == 1:
-            object.__setattr__(self, "mass", _frozen(mass, (-1,)))
+            object.__setattr__(self, "mass", _frozen(mass, (-1,), "mass"))
             n = (len(self.mass),)
         else:
             raise ValueError(f"mass must be a number or a 1-D array, got shape {np.shape(mass)}")
-        object.__setattr__(self, "center_of_mass", _frozen(self.center_of_mass, (*n, 3)))
-        object.__setattr__(self, "inertia_about_com", _frozen(self.inertia_about_com, (*n, 3, 3)))
+        object.__setattr__(self, "center_of_mass", _frozen(self.center_of_mass, (*n, 3), "center_of_mass"))
+        object.__setattr__(
+            self, "inertia_about_com", _frozen(self.inertia_about_com, (*n, 3, 3), "inertia_about_com")
+        )
 
     def __repr__(self) -> str:
         com, inertia = self.center_of_mass, self.inertia_about_com
@@ -95,6 +127,10 @@ class MassProperties:
         return MassProperties(
             self.mass[index], self.center_of_mass[index], self.inertia_about_com[index], self.frame
         )
+
+    def _argument(self, values: ArrayLike, name: str, shape: tuple[int, ...]) -> np.ndarray:
+        """`_given` ``values`` of ``shape``, or for a stack also one of that shape a body."""
+        return _given(values, name, shape, *([] if np.ndim(self.mass) == 0 else [(len(self.mass), *shape)]))
 
     def __iter__(self) -> Iterator[MassProperties]:
         return (self[i] for i in range(len(self)))
@@ -130,7 +166,8 @@ class MassProperties:
     def point(mass: ArrayLike, position: ArrayLike, frame: str = "body") -> MassProperties:
         """A point mass at ``position`` (or a stack: masses (n,), positions (n, 3)): no
         inertia about itself."""
-        return MassProperties(mass, numbers(position), np.zeros(np.shape(mass) + (3, 3)), frame)
+        position = _given(position, "position", np.shape(mass) + (3,))
+        return MassProperties(mass, position, np.zeros(np.shape(mass) + (3, 3)), frame)
 
     def sum(self: MassProperties | Iterable[MassProperties], frame: str | None = None) -> MassProperties:
         """The one body made of a stack's bodies (``stack.sum()``), or of several mass properties
@@ -148,7 +185,7 @@ class MassProperties:
     def inertia_about(self, point: ArrayLike) -> np.ndarray:
         """Inertia (M·L²) about ``point`` (L, this frame; for a stack (3,) or one a body
         (n, 3)) in this frame's axes (parallel axis): (3, 3), or (n, 3, 3) for a stack."""
-        offset = numbers(point) - self.center_of_mass
+        offset = self._argument(point, "point", (3,)) - self.center_of_mass
         return symmetrize(parallel_axis(self.inertia_about_com, self.mass, offset))
 
     def transformed(
@@ -163,18 +200,18 @@ class MassProperties:
         inertia is re-expressed ``R I Rᵀ``."""
         com, inertia = self.center_of_mass, self.inertia_about_com
         if rotation is not None:
-            R = numbers(rotation)
+            R = self._argument(rotation, "rotation", (3, 3))
             com = R @ com if self.single else (R @ com[..., None])[..., 0]
             inertia = symmetrize(R @ inertia @ np.swapaxes(R, -1, -2))
         if translation is not None:
-            com = com + numbers(translation)
+            com = com + self._argument(translation, "translation", (3,))
         return MassProperties(self.mass, com, inertia, self.frame if frame is None else frame)
 
     def scaled(self, factor: ArrayLike) -> MassProperties:
         """The same shape at ``factor`` times the mass (a density applied to a unit density's
         properties, a measured mass; for a stack one factor or one a body): the centre of mass
         stays, mass and inertia scale."""
-        f = numbers(factor)
+        f = self._argument(factor, "factor", ())
         return MassProperties(
             self.mass * f, self.center_of_mass, self.inertia_about_com * f[..., None, None], self.frame
         )
@@ -182,7 +219,7 @@ class MassProperties:
     def with_mass(self, mass: ArrayLike) -> MassProperties:
         """The same shape at exactly ``mass`` (M; for a stack one a body): the centre of mass
         stays, the inertia scales by ``mass / self.mass``."""
-        ratio = numbers(mass) / self.mass
+        ratio = self._argument(mass, "mass", ()) / self.mass
         return MassProperties(
             mass, self.center_of_mass, self.inertia_about_com * ratio[..., None, None], self.frame
         )
