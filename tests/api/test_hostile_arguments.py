@@ -72,3 +72,72 @@ def test_uncertainty_of_a_value_that_is_no_name_is_refused_naming_of(toleranced,
     """b.uncertainty(of=1.5) raised TypeError "'float' object is not iterable"."""
     with pytest.raises(ValueError, match=r"^of: must name quantities such as mass"):
         toleranced.uncertainty(of=of)
+
+
+@pytest.mark.parametrize("allowed", ["no", 0, 1.0, []])
+def test_allow_outside_paths_is_true_false_or_none(allowed, tmp_path):
+    """rbi.load(spec, allow_outside_paths="no") let the spec read files outside its folder: any
+    truthy value was taken as True. Now TypeError naming allow_outside_paths (load, loads, audit)."""
+    spec = tmp_path / "s.yaml"
+    spec.write_text("parts: [{shape: point, mass: 1, position: [0, 0, 0]}]\n")
+    for call in (
+        lambda: rbi.load(spec, allow_outside_paths=allowed),
+        lambda: rbi.loads(spec.read_text(), allow_outside_paths=allowed),
+        lambda: rbi.audit(BODIES / "two_link_arm.urdf", allow_outside_paths=allowed),
+    ):
+        with pytest.raises(TypeError, match=r"^allow_outside_paths: must be True, False or None \(got "):
+            call()
+    assert (
+        rbi.load(spec, allow_outside_paths=False).mass == rbi.load(spec, allow_outside_paths=None).mass == 1.0
+    )
+
+
+@pytest.mark.parametrize("name", [["link"], 3, {"a": 1}])
+def test_export_name_that_is_no_text_is_refused(top, name):
+    """b.export("urdf", name=["link"]) wrote <link name="['link']">."""
+    with pytest.raises(TypeError, match=r"^name: must be text \(got "):
+        top.export("urdf", name=name)
+    assert '<link name="arm">' in top.inertial_xml("urdf", name="arm", document=True)
+
+
+def test_a_step_budget_past_the_kernels_integers_is_refused_naming_max_steps(top):
+    """rbi.sweep(body, max_steps=10**400) raised the compiled kernel's OverflowError "Python int
+    too large to convert to C long" after the runs were set up."""
+    for run in (rbi.simulate, rbi.sweep):
+        with pytest.raises(ValueError, match=r"^max_steps: must be at least 1 and below 2\*\*63 \(got "):
+            run(top, spin=10.0, duration=0.01, max_steps=10**400)
+    with pytest.raises(ValueError, match=r"^max_steps: must be at least 1"):
+        rbi.simulate(top, spin=10.0, duration=0.01, max_steps=0)
+
+
+@pytest.mark.parametrize("body", [None, [], 1j])
+def test_animate_names_a_body_that_is_no_body(body, tmp_path):
+    """rbi.animate(None, "a.html") raised os.fspath's "expected str, bytes or os.PathLike object,
+    not NoneType" (the output was checked against the body's files first)."""
+    with pytest.raises(TypeError, match=r"^body: expected a Body from rbi.load"):
+        rbi.animate(body, tmp_path / "a.html")
+
+
+@pytest.mark.parametrize(
+    "setting", [{"speed": []}, {"speed": "1"}, {"fps": 1j}, {"fps": None}, {"speed": True}]
+)
+def test_animate_names_a_speed_or_fps_that_is_no_number(top, setting, tmp_path):
+    """rbi.animate(b, "a.gif", fps=1j) raised "'<=' not supported between instances of 'int' and
+    'complex'"."""
+    with pytest.raises(ValueError, match=rf"^{next(iter(setting))}: must be between .* \(got "):
+        rbi.animate(top, tmp_path / "a.gif", spin=10.0, duration=0.01, **setting)
+
+
+@pytest.mark.parametrize("out", [3, ["a.yaml"], True])
+def test_import_robot_names_an_out_that_is_no_path(out):
+    """rbi.import_robot(urdf, out=3) raised "expected str, bytes or os.PathLike object, not int"."""
+    with pytest.raises(TypeError, match=r"^out: expected a path"):
+        rbi.import_robot(BODIES / "two_link_arm.urdf", out=out)
+
+
+def test_the_sweep_tables_plot_names_its_own_parameter(top):
+    """table.plot("map") said "plot: map: cannot write no extension": the name of rbi.sweep's
+    parameter, not the method's ``path``."""
+    table = rbi.sweep(top, spin=[10.0, 20.0], duration=0.01, samples=3)
+    with pytest.raises(ValueError, match=r"^path: map: cannot write no extension"):
+        table.plot("map")

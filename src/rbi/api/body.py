@@ -42,7 +42,7 @@ from rbi.core.mass import MassProperties, inertia_shares
 from rbi.core.rotation import angle_is_kept, compose_world_rotations, turn_lost_to_rounding
 from rbi.errors import ArgumentError, SpecError, literal, one_of
 from rbi.formats.inertial_xml import FORMATS, export_xml
-from rbi.formats.paths import outside_paths_allowed, outside_paths_are_allowed
+from rbi.formats.paths import outside_paths_allowed, outside_paths_setting
 from rbi.formats.robot_paths import parse_package_paths
 from rbi.reprs import Result, Rows
 from rbi.runs.values import vector_value
@@ -140,7 +140,7 @@ def _body(
     """The `Body` ``read()`` gives (loaded body, parsed spec, the bytes of its file or None); a
     `SpecError` whose line starts with ``label`` gets it as its ``file``."""
 
-    allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
+    allowed = outside_paths_setting(allow_outside_paths)
     try:
         with outside_paths_allowed(allowed):
             loaded, raw, data = read()
@@ -676,6 +676,8 @@ class Body(Result):
         if name is None:
             text = self.path in SPEC_TEXT_LABELS
             name = self.name or ("body" if text else Path(self.path).stem)
+        elif not isinstance(name, str):  # not str(name): a list's repr as the link's name
+            raise TypeError(f"name: must be text (got {type(name).__name__} {name!r:.60})")
         si = self.in_units("m", "kg")
         xml = export_xml(
             to, si.mass_properties, name=name, document=document, diagonal=diagonal, comment=comment

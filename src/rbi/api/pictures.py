@@ -8,6 +8,7 @@ from typing import Any
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import checked_output
+from rbi.core.validity import finite
 from rbi.errors import ArgumentError, literal
 from rbi.files.output import Destination, write_output
 from rbi.runs.animation import animation
@@ -68,11 +69,12 @@ def animate(
         ValueError: a setting is out of range (named as this function's parameter), or the
             motion needs more keyframes (or GIF frames) than a file may hold.
         SpecError: ``path`` cannot be written; the run cannot be made."""
+    loaded = loaded_body(body, "body")  # before the path: checked_output reads its files
     target = checked_output(path, ("html", "gif"), body)
-    prepared = prepare_run(loaded_body(body, "body"), RunSettings(**run))
-    if not (0.1 <= speed <= 2.0):
+    prepared = prepare_run(loaded, RunSettings(**run))
+    if not (finite(speed) and 0.1 <= speed <= 2.0):
         raise ArgumentError("speed", f"must be between 0.1 and 2 (got {literal(speed)})")
-    if not 1 <= fps <= 60:
+    if not (finite(fps) and 1 <= fps <= 60):
         raise ArgumentError("fps", f"must be between 1 and 60 (got {literal(fps)})")
     duration = prepared.settings.duration
     gif_frames = int(duration * fps) + 1 if target.format == "gif" else 0

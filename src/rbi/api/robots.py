@@ -16,7 +16,7 @@ from rbi.api.outputs import checked_output, path_text
 from rbi.core.rotation import matrix_to_quaternion
 from rbi.errors import ArgumentError, SpecError, literal
 from rbi.files.output import Destination, check_distinct, write_output
-from rbi.formats.paths import outside_paths_are_allowed
+from rbi.formats.paths import outside_paths_setting
 from rbi.formats.robot_files import link_problems, link_spec, read_robot
 from rbi.formats.robot_paths import parse_package_paths
 from rbi.reprs import Result, Rows
@@ -78,7 +78,7 @@ def audit(
         raise ArgumentError("out", "writes the fixed copy, so it needs {fix=True}")
     path = path_text(robot_file)
     target = None if out is None else checked_output(out, _fixed_format(path), path, "out")
-    allowed = outside_paths_are_allowed() if allow_outside_paths is None else allow_outside_paths
+    allowed = outside_paths_setting(allow_outside_paths)
     report = run_audit(path, AuditSettings(allow_outside_paths=allowed, **chosen))
     if target is not None:  # never a file the robot reads: an include, a mesh or the robot file itself
         check_out_not_read(target.path, report.model)
@@ -261,7 +261,7 @@ def import_robot(
         for link in chosen
     ]
     found = RobotImport(robot.path, robot.format, robot.name, robot.link_word, imported, robot.skipped, robot)
-    return found if out is None else _written(found, os.fspath(out))
+    return found if out is None else _written(found, path_text(out, "out"))
 
 
 def _import_step(path: str, links: Any, out: Any, density: float | None, material: str | None) -> StepImport:

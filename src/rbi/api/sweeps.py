@@ -97,7 +97,7 @@ class SweepTable(Result):
         ValueError for a sweep of mass properties, with nothing swept, or whose rows are not held."""
         if not self.held:
             raise ArgumentError("plot", "the map is drawn from the rows, and this table does not hold them")
-        target = checked_output(path, PLOT_FORMATS, self._body, "plot")
+        target = checked_output(path, PLOT_FORMATS, self._body)
         plot_stability_map(target=target, **self._study.stability_map(self._rows))
         self._drawn = target.given
 

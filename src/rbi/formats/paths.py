@@ -40,6 +40,17 @@ def outside_paths_are_allowed() -> bool:
     return _outside_allowed.get()
 
 
+def outside_paths_setting(allow_outside_paths: bool | None) -> bool:
+    """A public function's ``allow_outside_paths``: True or False, or None for what the enclosing
+    :func:`outside_paths_allowed` block says; TypeError naming it for anything else (the text
+    ``"no"`` is no False that would let a spec read any file)."""
+    if allow_outside_paths is None:
+        return outside_paths_are_allowed()
+    if not isinstance(allow_outside_paths, bool):
+        raise TypeError(f"allow_outside_paths: must be True, False or None (got {allow_outside_paths!r:.60})")
+    return allow_outside_paths
+
+
 def spec_relative_file(spec_path: str | Path, file: str, label: str, owner: str = "spec") -> Path:
     """The file named ``file`` in the spec at ``spec_path``, resolved against the spec's folder.
 

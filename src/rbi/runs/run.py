@@ -39,8 +39,8 @@ Progress = Callable[[float], None]
 def check_run_settings(settings: Any) -> None:
     """Refuse the settings that `simulate`, `animate` and `sweep` all take (``settings``: a
     :class:`RunSettings` or a :class:`~rbi.sweeps.study.SweepSettings`): duration (s, >= 0),
-    tilt axis (world x or y), gravity (m/s², >= 0, or None for 9.81), step budget (>= 1 or
-    None) and tolerance (in :data:`rbi.sim.api.RTOL_RANGE`, or None for the method's own)."""
+    tilt axis (world x or y), gravity (m/s², >= 0, or None for 9.81), step budget (1 to 2**63 - 1,
+    or None) and tolerance (in :data:`rbi.sim.api.RTOL_RANGE`, or None for the method's own)."""
 
     tilt_axis, gravity, max_steps = settings.tilt_axis, settings.gravity, settings.max_steps
     require_numbers(duration=settings.duration, gravity=gravity, rtol=settings.rtol)
@@ -50,8 +50,8 @@ def check_run_settings(settings: Any) -> None:
         raise ArgumentError("tilt_axis", f"must be x or y (got {literal(tilt_axis)})")
     if gravity is not None and not (finite(gravity) and gravity >= 0.0):
         raise ArgumentError("gravity", f"must be a finite number of m/s² >= 0 (got {literal(gravity)})")
-    if max_steps is not None and not (whole(max_steps) and max_steps >= 1):
-        raise ArgumentError("max_steps", f"must be at least 1 (got {literal(max_steps)})")
+    if max_steps is not None and not (whole(max_steps) and 1 <= max_steps < 2**63):  # the kernel's int64
+        raise ArgumentError("max_steps", f"must be at least 1 and below 2**63 (got {literal(max_steps)})")
     check_rtol(settings.rtol)
 
 
