@@ -141,3 +141,18 @@ def test_the_sweep_tables_plot_names_its_own_parameter(top):
     table = rbi.sweep(top, spin=[10.0, 20.0], duration=0.01, samples=3)
     with pytest.raises(ValueError, match=r"^path: map: cannot write no extension"):
         table.plot("map")
+
+
+def test_a_sweeps_rtol_of_none_is_the_default_tolerance_as_simulates(top):
+    """rbi.sweep(b, rtol=None) raised "float() argument must be a string or a real number, not
+    'NoneType'"; rbi.simulate takes None as the method's own tolerance, and rtol is simulate's."""
+    none, default = (rbi.sweep(top, spin=[10.0], duration=0.05, samples=3, rtol=r) for r in (None, 1e-12))
+    np.testing.assert_array_equal(none["max_tilt_deg"], default["max_tilt_deg"])
+
+
+@pytest.mark.parametrize("lengths", [1.5, ["a", "b", "c"], [[1, 0], [0, 1]], object()])
+def test_from_spec_units_names_lengths_that_are_no_point(top, lengths):
+    """b.from_spec_units(1.5) raised "'float' object is not iterable"."""
+    with pytest.raises(ValueError, match=r"^lengths: expected 3 finite numbers, got "):
+        top.from_spec_units(lengths)
+    assert top.in_units("mm", "kg").from_spec_units([0.0, 0.0, 0.5]) == [0.0, 0.0, 500.0]

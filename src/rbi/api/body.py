@@ -537,7 +537,7 @@ class Body(Result):
         if lengths is None or isinstance(lengths, str):
             return lengths
         factor = LENGTH_UNITS[self._file_length] / LENGTH_UNITS[self._loaded.length_unit]
-        return [factor * float(x) for x in lengths]
+        return [factor * x for x in vector_value(lengths, "lengths")]
 
     def moment_about_axis(
         self,

@@ -26,7 +26,7 @@ from rbi.core.validity import whole
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.files import safe
 from rbi.runs.run import RunSettings, body_spin_axis, check_run_settings, check_tilt, spin_axis_value
-from rbi.sim.api import check_samples
+from rbi.sim.api import DEFAULT_RTOL, check_samples
 from rbi.sim.budget import DEFAULT_MAX_STEPS, check_batch, estimated_steps
 from rbi.sim.diagnostics import sleeping_threshold
 from rbi.spec.load import spec_label
@@ -132,7 +132,7 @@ class Study:
             varied=tuple(varied),
             duration=float(settings.duration),
             samples=int(settings.samples),
-            rtol=float(settings.rtol),
+            rtol=DEFAULT_RTOL if settings.rtol is None else float(settings.rtol),  # None: as simulate's
             gravity_si=STANDARD_GRAVITY_SI if settings.gravity is None else float(settings.gravity),
             tilt_axis=settings.tilt_axis.lower(),
             max_steps=DEFAULT_MAX_STEPS if settings.max_steps is None else int(settings.max_steps),
