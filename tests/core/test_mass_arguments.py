@@ -89,3 +89,16 @@ def test_a_point_mass_refuses_a_position_of_no_numbers():
 
 def test_an_array_shown_in_a_message_is_one_line():
     assert shown(np.zeros((3, 3)), 200) == "array([[0., 0., 0.], [0., 0., 0.], [0., 0., 0.]])"
+
+
+def test_one_body_with_a_complex_mass_is_one_body():
+    """MassProperties(1 + 1e-20j, ...) was taken for a stack: its to_dict() raised "'complex'
+    object has no attribute 'tolist'", len() "object of type 'complex' has no len()"."""
+    stepped = MassProperties(1.0 + 1e-20j, [0.0, 0.0, 1e-20j], np.eye(3))
+    assert stepped.single and stepped.to_dict()["mass"] == 1.0 + 1e-20j
+    assert stepped.to_dict()["center_of_mass"] == [0.0, 0.0, 1e-20j]
+    with pytest.raises(TypeError, match="a single MassProperties has no len"):
+        len(stepped)
+    np.testing.assert_array_equal(
+        stepped.transformed(np.eye(3), [1.0, 0.0, 0.0]).center_of_mass, [1.0, 0.0, 1e-20j]
+    )

@@ -109,8 +109,8 @@ class MassProperties:
 
     @property
     def single(self) -> bool:
-        """One body (mass a float), not a stack."""
-        return type(self.mass) is float
+        """One body (mass a float, or a complex number: a complex step), not a stack."""
+        return type(self.mass) in (float, complex)
 
     def __bool__(self) -> bool:
         return True
