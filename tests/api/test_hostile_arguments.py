@@ -156,3 +156,27 @@ def test_from_spec_units_names_lengths_that_are_no_point(top, lengths):
     with pytest.raises(ValueError, match=r"^lengths: expected 3 finite numbers, got "):
         top.from_spec_units(lengths)
     assert top.in_units("mm", "kg").from_spec_units([0.0, 0.0, 0.5]) == [0.0, 0.0, 500.0]
+
+
+@pytest.mark.parametrize(
+    "call, switch",
+    [
+        (lambda b, v: rbi.simulate(b, spin=10.0, duration=0.01, check_budget=v), "check_budget"),
+        (lambda b, v: rbi.simulate(b, spin=10.0, duration=0.01, error_estimate=v), "error_estimate"),
+        (lambda b, v: rbi.sweep(b, spin=10.0, duration=0.01, check_budget=v), "check_budget"),
+        (lambda b, v: rbi.sweep(b, vary={"parts[0].mass": [1.0]}, mass_properties=v), "mass_properties"),
+        (lambda b, v: rbi.sweep(b, spin=10.0, duration=0.01, resume=v), "resume"),
+        (lambda b, v: rbi.audit(BODIES / "two_link_arm.urdf", fix=v), "fix"),
+        (lambda b, v: rbi.audit(BODIES / "two_link_arm.urdf", mesh_repair=v), "mesh_repair"),
+        (lambda b, v: b.export("mjcf", document=v), "document"),
+        (lambda b, v: b.export("mjcf", diagonal=v), "diagonal"),
+        (lambda b, v: b.parts(expand=v), "expand"),
+    ],
+)
+@pytest.mark.parametrize("value", ["no", "false", None, 0])
+def test_a_switch_is_true_or_false(top, call, switch, value):
+    """rbi.audit(urdf, fix="no") planned the fix and b.export("mjcf", diagonal="false") wrote
+    diaginertia: any truthy value was True, None and 0 False."""
+    with pytest.raises(TypeError, match=rf"^{switch}: must be True or False \(got "):
+        call(top, value)
+    call(top, np.False_)

@@ -40,6 +40,7 @@ from rbi.core.inertia import (
 )
 from rbi.core.mass import MassProperties, inertia_shares
 from rbi.core.rotation import angle_is_kept, compose_world_rotations, turn_lost_to_rounding
+from rbi.core.validity import require_flags
 from rbi.errors import ArgumentError, SpecError, literal, one_of
 from rbi.formats.inertial_xml import FORMATS, export_xml
 from rbi.formats.paths import outside_paths_allowed, outside_paths_setting
@@ -398,6 +399,7 @@ class Body(Result):
         sub-assembly (``shape: assembly``) listed as its own parts, named ``ASSEMBLY/PART``
         (``ASSEMBLY[i]/PART`` for the copies of a pattern), placed in the body."""
         loaded = self._loaded
+        require_flags(expand=expand)
         rows = expanded(loaded, expand)
         shares = inertia_shares(list(rows.elements), loaded.props)
         spreads = part_uncertainties(loaded, expand) if self._uncertain else [None] * len(rows.names)
@@ -662,6 +664,7 @@ class Body(Result):
         `export_warnings` and the SI mass properties it holds."""
 
         one_of("to", to, FORMATS)
+        require_flags(document=document, diagonal=diagonal)
         if diagonal and to != "mjcf":
             raise ArgumentError(
                 "diagonal",

@@ -12,6 +12,7 @@ import numpy as np
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import PLOT_FORMATS, as_parameter, checked_output, keywords_checked, out_and_plot
+from rbi.core.validity import require_flags
 from rbi.errors import ArgumentError
 from rbi.files.output import Destination, OutputTarget
 from rbi.reprs import Result, Rows, pandas_module
@@ -295,6 +296,7 @@ def _targets(
     """`sweep`'s ``out`` and ``plot`` checked before any run: never a file the body is read
     from (a `Body`'s every file), not one file for both; ``resume`` needs ``out``, a Parquet
     ``out`` pyarrow."""
+    require_flags(resume=resume)
     if out is None and resume:
         raise ArgumentError("resume", "needs {out}, the file of the interrupted sweep")
     out_target, plot_target = out_and_plot(out, plot, ("csv", "parquet"), read)

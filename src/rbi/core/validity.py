@@ -37,6 +37,14 @@ def finite(value: Any) -> bool:
         return False
 
 
+def require_flags(**values: Any) -> None:
+    """TypeError naming the parameter when one of ``values``, a public function's switch, is not
+    True or False (the text ``"no"`` would be taken as true)."""
+    for name, value in values.items():
+        if not isinstance(value, (bool, np.bool_)):
+            raise TypeError(f"{name}: must be True or False (got {type(value).__name__} {value!r:.60})")
+
+
 def whole(value: Any) -> bool:
     """True for a whole number (a bool is not one)."""
     return isinstance(value, numbers.Integral) and not isinstance(value, bool)

@@ -28,7 +28,7 @@ import numpy as np
 
 from rbi.core.inertia import OFF_DIAGONAL, symmetric_eigen
 from rbi.core.mass import MassProperties
-from rbi.core.validity import finite
+from rbi.core.validity import finite, require_flags
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.formats.robot import SOLID_KINDS, Link, LinkColumns, RobotModel, stacked
 from rbi.formats.robot_geometry import MESH_INERTIA_MODES, distribution, half_extent, primitive
@@ -76,6 +76,7 @@ class AuditSettings:
     mesh_repair: bool = False
 
     def __post_init__(self, material: str | None) -> None:
+        require_flags(fix=self.fix, mesh_repair=self.mesh_repair)
         if self.geometry not in GEOMETRY_CHOICES:
             raise ArgumentError("geometry", f"{literal(self.geometry)}: must be collision, visual or none")
         if self.mesh_inertia not in MESH_INERTIA_MODES:

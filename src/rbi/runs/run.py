@@ -19,7 +19,7 @@ import numpy as np
 
 from rbi.core.rotation import angle_is_kept, turn_lost_to_rounding, unit_vector
 from rbi.core.spin_axis import default_spin_axis
-from rbi.core.validity import finite, whole
+from rbi.core.validity import finite, require_flags, whole
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.runs.values import require_numbers, vector_value
 from rbi.sim.api import SimulationError, check_duration, check_method, check_rtol, check_samples, simulate
@@ -45,6 +45,7 @@ def check_run_settings(settings: Any) -> None:
     tilt_axis, gravity, max_steps = settings.tilt_axis, settings.gravity, settings.max_steps
     require_numbers(duration=settings.duration, gravity=gravity, rtol=settings.rtol)
     require_numbers(integral=True, max_steps=max_steps)
+    require_flags(check_budget=settings.check_budget, error_estimate=settings.error_estimate)
     check_duration(settings.duration)
     if not isinstance(tilt_axis, str) or tilt_axis.lower() not in ("x", "y"):
         raise ArgumentError("tilt_axis", f"must be x or y (got {literal(tilt_axis)})")

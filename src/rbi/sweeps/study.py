@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core.inertia import principal_axes
-from rbi.core.validity import whole
+from rbi.core.validity import require_flags, whole
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.files import safe
 from rbi.runs.run import RunSettings, body_spin_axis, check_run_settings, check_tilt, spin_axis_value
@@ -84,6 +84,7 @@ def check_settings(settings: SweepSettings) -> None:
     if not whole(settings.seed) or settings.seed < 0:
         raise ArgumentError("seed", f"must be a whole number 0 or above (got {literal(settings.seed)})")
     check_run_settings(settings)
+    require_flags(mass_properties=settings.mass_properties)
     check_samples(settings.samples, MAX_SWEEP_SAMPLES, " for a sweep")
     spin_axis_value(settings.spin_axis)
     if settings.workers is not None and not (whole(settings.workers) and 1 <= settings.workers <= 1024):
