@@ -180,3 +180,19 @@ def test_a_switch_is_true_or_false(top, call, switch, value):
     with pytest.raises(TypeError, match=rf"^{switch}: must be True or False \(got "):
         call(top, value)
     call(top, np.False_)
+
+
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda b, p, d: rbi.simulate(b, spin=10.0, duration=0.01, progress=p),
+        lambda b, p, d: rbi.sweep(b, spin=10.0, duration=0.01, progress=p),
+        lambda b, p, d: rbi.animate(b, d / "a.html", spin=10.0, duration=0.01, progress=p),
+    ],
+)
+def test_a_progress_that_is_no_function_is_refused_before_the_run(top, call, tmp_path):
+    """rbi.simulate(b, spin=10, progress="x") ran until its first report, then raised "'str'
+    object is not callable"."""
+    with pytest.raises(TypeError, match=r"^progress: must be a function or None \(got str 'x'\)"):
+        call(top, "x", tmp_path)
+    assert not (tmp_path / "a.html").exists()

@@ -8,7 +8,7 @@ from typing import Any
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import checked_output
-from rbi.core.validity import finite
+from rbi.core.validity import finite, require_callable
 from rbi.errors import ArgumentError, literal
 from rbi.files.output import Destination, write_output
 from rbi.runs.animation import animation
@@ -70,6 +70,7 @@ def animate(
             motion needs more keyframes (or GIF frames) than a file may hold.
         SpecError: ``path`` cannot be written; the run cannot be made."""
     loaded = loaded_body(body, "body")  # before the path: checked_output reads its files
+    require_callable(progress=progress)
     target = checked_output(path, ("html", "gif"), body)
     prepared = prepare_run(loaded, RunSettings(**run))
     if not (finite(speed) and 0.1 <= speed <= 2.0):

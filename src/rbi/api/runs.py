@@ -10,6 +10,7 @@ import numpy as np
 
 from rbi.api.body import Body, loaded_body
 from rbi.api.outputs import PLOT_FORMATS, as_parameter, checked_output, keywords_checked, out_and_plot
+from rbi.core.validity import require_callable
 from rbi.errors import ArgumentError
 from rbi.files.output import Destination, OutputTarget, write_output
 from rbi.reprs import Result, Rows, pandas_module
@@ -310,6 +311,7 @@ def _simulated(
     body: Body, settings: RunSettings, progress: Callable[[float], None] | None, dense: int
 ) -> Trajectory:
     """The `Trajectory` of ``body`` run with ``settings`` (sampled at ``dense`` more times for a plot)."""
+    require_callable(progress=progress)
     run = prepare_run(loaded_body(body, "body"), settings).simulate(progress, dense)
     return Trajectory(**vars(run), body=body)
 

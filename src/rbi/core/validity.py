@@ -45,6 +45,14 @@ def require_flags(**values: Any) -> None:
             raise TypeError(f"{name}: must be True or False (got {type(value).__name__} {value!r:.60})")
 
 
+def require_callable(**values: Any) -> None:
+    """TypeError naming the parameter when one of ``values`` (a callback: ``progress``) is neither
+    None nor callable, before any work (not at its first call)."""
+    for name, value in values.items():
+        if value is not None and not callable(value):
+            raise TypeError(f"{name}: must be a function or None (got {type(value).__name__} {value!r:.60})")
+
+
 def whole(value: Any) -> bool:
     """True for a whole number (a bool is not one)."""
     return isinstance(value, numbers.Integral) and not isinstance(value, bool)

@@ -22,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from rbi.core.inertia import principal_axes
-from rbi.core.validity import require_flags, whole
+from rbi.core.validity import require_callable, require_flags, whole
 from rbi.errors import ArgumentError, InputError, literal
 from rbi.files import safe
 from rbi.runs.run import RunSettings, body_spin_axis, check_run_settings, check_tilt, spin_axis_value
@@ -263,6 +263,7 @@ class Study:
         exception) with the runs the output kept: the output is closed keeping the rows
         written, and :attr:`output` tells how many.
         """
+        require_callable(progress=progress)
         compute = self._compute()
         rows: list | None = [] if self.plan.size <= MAX_ROWS_SHOWN else None
         tell = progress or (lambda done, total: None)
