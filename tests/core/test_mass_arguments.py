@@ -102,3 +102,11 @@ def test_one_body_with_a_complex_mass_is_one_body():
     np.testing.assert_array_equal(
         stepped.transformed(np.eye(3), [1.0, 0.0, 0.0]).center_of_mass, [1.0, 0.0, 1e-20j]
     )
+
+
+def test_parts_that_are_no_mass_properties_are_refused_naming_parts():
+    """MassProperties.sum(["a"]) raised AttributeError "'str' object has no attribute 'frame'"."""
+    for call in (MassProperties.sum, MassProperties.concatenate):
+        with pytest.raises(TypeError, match=r"^parts: expected MassProperties, got str 'a'"):
+            call([ONE, "a"])
+    assert MassProperties.sum([ONE, STACK]).mass == ONE.mass + STACK.sum().mass

@@ -142,6 +142,9 @@ class MassProperties:
         parts = list(parts)
         if not parts:
             raise ValueError("no mass properties to concatenate")
+        stranger = next((p for p in parts if not isinstance(p, MassProperties)), None)
+        if stranger is not None:  # not its AttributeError "'str' object has no attribute 'frame'"
+            raise TypeError(f"parts: expected MassProperties, got {type(stranger).__name__} {stranger!r:.60}")
         frame = parts[0].frame if frame is None else frame
         if all(type(p.mass) is float for p in parts):  # many single bodies: one copy of each
             return cls(
