@@ -85,6 +85,16 @@ def test_a_stack_takes_one_argument_a_body():
 def test_a_point_mass_refuses_a_position_of_no_numbers():
     with pytest.raises(ValueError, match=r"^position: expected numbers of shape \(3,\), got None"):
         MassProperties.point(1.0, None)
+    with pytest.raises(ValueError, match=r"^position: expected numbers of shape \(2, 3\), got \[0, 0, 1\]"):
+        MassProperties.point([1.0, 2.0], [0, 0, 1])
+
+
+@pytest.mark.parametrize("mass", [["a", "b", "c"], None, "heavy", 10**400])
+def test_a_point_mass_of_no_number_is_refused_naming_mass(mass):
+    """MassProperties.point(["a", "b", "c"], [0, 0, 1]) said 'position: expected numbers of shape
+    (3, 3)': the masses' shape was read before they were checked."""
+    with pytest.raises(ValueError, match=r"^mass: expected "):
+        MassProperties.point(mass, [0.0, 0.0, 1.0])
 
 
 def test_an_array_shown_in_a_message_is_one_line():

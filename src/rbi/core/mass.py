@@ -169,8 +169,9 @@ class MassProperties:
     def point(mass: ArrayLike, position: ArrayLike, frame: str = "body") -> MassProperties:
         """A point mass at ``position`` (or a stack: masses (n,), positions (n, 3)): no
         inertia about itself."""
-        position = _given(position, "position", np.shape(mass) + (3,))
-        return MassProperties(mass, position, np.zeros(np.shape(mass) + (3, 3)), frame)
+        shape = _given(mass, "mass", np.shape(mass)).shape  # numbers first: the positions' shape follows
+        position = _given(position, "position", shape + (3,))
+        return MassProperties(mass, position, np.zeros(shape + (3, 3)), frame)
 
     def sum(self: MassProperties | Iterable[MassProperties], frame: str | None = None) -> MassProperties:
         """The one body made of a stack's bodies (``stack.sum()``), or of several mass properties
