@@ -24,7 +24,10 @@ def test_a_radius_within_one_u_of_zero_is_warned_with_the_normal_share():
     (line,) = warnings_of([ROD | {"radius": "0.01 ± 0.02", "density": 1000}])
     share = norm.cdf(0, loc=0.01, scale=0.02)  # 0.3085
     assert line.startswith("spec.yaml: parts.rod.radius: ")
-    assert f"{100 * share:.2g}% of its normal distribution" in line and "lies below 0, where the spec allows no value" in line
+    assert (
+        f"{100 * share:.2g}% of its normal distribution" in line
+        and "lies below 0, where the spec allows no value" in line
+    )
 
 
 def test_a_tolerance_is_a_uniform_share():
