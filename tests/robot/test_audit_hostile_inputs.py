@@ -230,3 +230,25 @@ def test_a_sphere_whose_volume_overflows_is_one_line(tmp_path, fmt):
     )
     proc = run_rbi_inprocess("audit", write(tmp_path, "r.urdf", text), "--format", fmt)
     one_line_exit_2(proc, "sphere", "too large")
+
+
+@pytest.mark.parametrize("fmt", ["table", "json", "csv"])
+@pytest.mark.parametrize(
+    "name, text",
+    [
+        ("r.urdf", f'<robot name="r"><link name="a">{BOX.replace("2", "1e308", 1)}</link></robot>'),
+        (
+            "r.sdf",
+            '<sdf version="1.9"><model name="m"><link name="a"><inertial><mass>1e308</mass><inertia>'
+            "<ixx>1</ixx><iyy>1</iyy><izz>1</izz></inertia></inertial><collision name='c'><geometry>"
+            "<box><size>0.1 0.1 0.1</size></box></geometry></collision></link></model></sdf>",
+        ),
+    ],
+)
+def test_a_mass_whose_geometry_overflows_is_one_line(tmp_path, name, text, fmt):
+    """Found: a declared mass of 1e308 kg on a 0.1 m box (URDF, SDF) was 'rbi: internal error:
+    LinAlgError: Eigenvalues did not converge' (exit 1): the geometry's inertia at that mass
+    overflows, and its principal moments were asked for before the overflow was refused. Now
+    exit 2, one line naming the link and the overflow."""
+    proc = run_rbi_inprocess("audit", write(tmp_path, name, text), "--format", fmt)
+    one_line_exit_2(proc, name, "link[0] (a)", "overflows a double")

@@ -500,9 +500,13 @@ class AuditedLinks:
 
     def _compare(self) -> None:
         """The declared mass properties against the geometry's, on stacks (:func:`compared`),
-        of the links that declare a mass other than 0 and whose geometry has mass."""
+        of the links that declare a mass other than 0 and whose geometry has mass (and a finite
+        inertia: one that overflows is refused by :meth:`_refuse_overflow`)."""
         columns, n = self.columns, len(self.columns)
-        self.compared = columns.declared & (columns.inertials.mass != 0) & self.has_mass & (self.mass != 0)
+        finite = np.all(np.isfinite(self.inertia), axis=(1, 2))
+        self.compared = (
+            columns.declared & (columns.inertials.mass != 0) & self.has_mass & (self.mass != 0) & finite
+        )
         rows = np.flatnonzero(self.compared)
         self.ratios, self.moments = np.full((n, 3), np.nan), np.full((n, 3), np.nan)
         self.inside, self.clean = np.zeros(n, dtype=bool), np.zeros(n, dtype=bool)
