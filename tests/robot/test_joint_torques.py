@@ -170,3 +170,27 @@ def test_a_joint_angle_rounding_would_lose_is_refused_naming_the_file_and_joint(
         rbi.audit(arm, joints={"shoulder": float(value)})
     # 1.7e7 rad is still a turn rounding keeps: accepted
     assert rbi.audit(arm, joints={"shoulder": 1.7e7}).exit_code in (0, 1)
+
+
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+def test_a_torque_that_overflows_is_one_line_naming_the_joint(tmp_path, form):
+    """Found: a body placed 1e308 m up (MJCF) gave the hinge below it a torque of NaN: the table
+    printed 'nan' and --format json was 'rbi: internal error: ValueError: Out of range float
+    values are not JSON compliant' (exit 1). Now exit 2, one line naming the joint, and numpy
+    prints no RuntimeWarning on the way."""
+    import warnings
+
+    text = (
+        '<mujoco><worldbody><body name="a" pos="0 0 1e308"><freejoint/><geom type="box" size="0.1 0.1 0.1"/>'
+        '<body name="b" pos="0 0 0.2"><joint name="h" axis="0 1 0"/><geom size="0.05" pos="0.1 0 0" mass="2"/></body></body>'
+        "</worldbody></mujoco>"
+    )
+    path = tmp_path / "far.xml"
+    path.write_text(text)
+    proc = run_rbi_inprocess("audit", str(path), "--format", form)
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+    assert "far.xml: body[1] (b): joint 'h': the torque that holds the pose overflows" in proc.stderr
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        with pytest.raises(rbi.SpecError, match="joint 'h'"):
+            rbi.audit(path)

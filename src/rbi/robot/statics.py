@@ -18,7 +18,8 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from rbi.formats.robot import RobotModel
+from rbi.errors import InputError
+from rbi.formats.robot import RobotModel, short
 from rbi.robot.flags import Flag
 from rbi.robot.tree import dot_rows
 from rbi.spec.units import STANDARD_GRAVITY_SI
@@ -41,9 +42,11 @@ class JointTorque:
         return None if self.effort_limit is None else self.effort_limit - abs(self.torque)
 
 
+@np.errstate(over="ignore", invalid="ignore")  # an overflow is refused, naming the joint, below
 def joint_torques(model: RobotModel, placed) -> list[JointTorque]:
     """The holding torque of every revolute and prismatic joint with the links ``placed`` at a
-    configuration (:func:`rbi.robot.tree.placement`), in file order of their links."""
+    configuration (:func:`rbi.robot.tree.placement`), in file order of their links; InputError,
+    one line naming the joint, when one overflows a double."""
     gravity = _gravity(model)
     mass, moment = _subtree_sums(model, placed)
     to_frame = placed.to_frame
@@ -60,6 +63,13 @@ def joint_torques(model: RobotModel, placed) -> list[JointTorque]:
     lever = np.cross(axes, moment[rows] - M[:, None] * anchors)  # axis × (Σ m c − M p)
     prismatic = np.array([kind == "prismatic" for _, _, kind, _ in chosen], dtype=bool)
     torques = np.where(prismatic, -M * dot_rows(axes, gravity), -dot_rows(lever, gravity)) + 0.0
+    if not np.all(np.isfinite(torques)):
+        row, name, *_ = chosen[int(np.flatnonzero(~np.isfinite(torques))[0])]
+        joint = f"joint {short(name)!r}" if name else "joint"
+        raise InputError(
+            f"{model.path}: {placed.columns.link(row).label}: {joint}: the torque that holds the pose "
+            "overflows a double; give lengths in metres and masses in kg"
+        )
     found = []
     for (_, name, kind, limit), torque in zip(chosen, torques.tolist()):
         flags = [] if limit is None or not limit - abs(torque) < 0 else [_effort_flag(kind, torque, limit)]
