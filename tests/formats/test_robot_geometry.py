@@ -1,6 +1,6 @@
 """The mesh cache of robot geometry: the meshes integrated for an audit are kept, the last used
 only, each entry a few numbers whatever the size of its mesh (a process that audits robot after
-robot keeps bounded memory)."""
+robot keeps bounded memory); geometry whose mass overflows is refused in one line."""
 
 from __future__ import annotations
 
@@ -58,3 +58,27 @@ def test_an_entry_holds_a_few_numbers_whatever_the_size_of_its_mesh(tmp_path, em
     (entry,) = empty_cache.values()
     held = sum(sys.getsizeof(v) + getattr(v, "nbytes", 0) for v in entry)
     assert held < 2_000  # bytes: the mesh's 2,562 vertices (61 kB) are not kept
+
+
+@pytest.mark.parametrize(
+    "command", [("audit",), ("audit", "--format", "json"), ("import", "--format", "json"), ("validate",)]
+)
+def test_a_geom_mass_that_overflows_is_one_line_naming_the_geom(tmp_path, command):
+    """Found: an MJCF geom of mass 1e308 kg (a 0.2 m box: density 1.25e310 kg/m³, past the
+    largest double) was 'rbi: internal error: LinAlgError: Eigenvalues did not converge' (exit 1)
+    in audit, import and validate alike: the compiled inertia was inf and NaN. Now the sum of a
+    body's geoms (:func:`robot_geometry.geoms_sum`) refuses it: exit 2, one line naming the geom."""
+    from tests.conftest import one_line_exit_2, run_rbi_inprocess
+
+    path = tmp_path / "heavy.xml"
+    path.write_text(
+        '<mujoco><worldbody><body name="a"><freejoint/><geom mass="1e308" type="box" size="0.1 0.1 0.1"/>'
+        "</body></worldbody></mujoco>"
+    )
+    proc = run_rbi_inprocess(command[0], path, *command[1:])
+    assert proc.returncode == 2, proc.stderr
+    assert (
+        "heavy.xml: body[0] (a): geom[0]: its mass or inertia overflows a double" in proc.stderr + proc.stdout
+    )
+    if command[0] != "validate":  # (validate adds its summary line)
+        one_line_exit_2(proc)

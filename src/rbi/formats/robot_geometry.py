@@ -72,12 +72,20 @@ def geoms_sum(geoms, density, where: str, mode: str, as_mujoco: bool = False) ->
     """The mass properties of ``geoms`` in the link frame, each piece of geometry with a volume
     (:func:`distribution` in ``mode``) at the density ``density(geom, measure)`` gives it (kg/m³;
     ``measure`` its volume, m³); None when none has a volume, zero mass when their masses add up
-    to nothing or less. ``where``: the file and link, for messages."""
+    to nothing or less. ``where``: the file and link, for messages (InputError naming the geom
+    when its mass or inertia at that density overflows a double)."""
     pieces = []
     for geom in geoms:
         found = distribution(geom, mode, where, as_mujoco=as_mujoco)
         if found is not None and found.measure > 0:
-            pieces.append(found.unit.scaled(density(geom, found.measure)))
+            with np.errstate(over="ignore", invalid="ignore"):  # an overflow is refused just below
+                piece = found.unit.scaled(density(geom, found.measure))
+            if not (np.isfinite(piece.mass) and np.all(np.isfinite(piece.inertia_about_com))):
+                raise InputError(
+                    f"{where}{geom.label}: its mass or inertia overflows a double; give masses in kg, "
+                    "densities in kg/m³ and sizes in metres"
+                )
+            pieces.append(piece)
     if not pieces:
         return None
     try:
