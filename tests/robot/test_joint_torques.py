@@ -185,12 +185,34 @@ def test_a_torque_that_overflows_is_one_line_naming_the_joint(tmp_path, form):
         '<body name="b" pos="0 0 0.2"><joint name="h" axis="0 1 0"/><geom size="0.05" pos="0.1 0 0" mass="2"/></body></body>'
         "</worldbody></mujoco>"
     )
-    path = tmp_path / "far.xml"
-    path.write_text(text)
-    proc = run_rbi_inprocess("audit", str(path), "--format", form)
-    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
-    assert "far.xml: body[1] (b): joint 'h': the torque that holds the pose overflows" in proc.stderr
+    path, message = _refused_in_one_line(tmp_path / "far.xml", text, form)
+    assert "far.xml: body[1] (b): joint 'h': the torque that holds the pose overflows" in message
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         with pytest.raises(rbi.SpecError, match="joint 'h'"):
             rbi.audit(path)
+
+
+@pytest.mark.parametrize("form", ["table", "json", "csv"])
+def test_an_actuator_force_limit_that_overflows_is_one_line(tmp_path, form):
+    """Found: a motor with forcerange ±1e155 and gear 1e155 gave its joint an effort limit of
+    inf: --format json was 'rbi: internal error: ValueError: Out of range float values are not
+    JSON compliant' (exit 1). Now exit 2, one line naming the actuator."""
+    text = (
+        '<mujoco><worldbody><body name="a"><joint name="h" axis="0 1 0"/><geom size="0.05" pos="0.1 0 0"/>'
+        '</body></worldbody><actuator><motor joint="h" gear="1e155" forcerange="-1e155 1e155" '
+        'forcelimited="true"/></actuator></mujoco>'
+    )
+    _, message = _refused_in_one_line(tmp_path / "geared.xml", text, form)
+    assert (
+        "geared.xml: actuator 'h': forcerange times gear 1e+155: the joint's force limit overflows" in message
+    )
+
+
+def _refused_in_one_line(path, text, form):
+    """``text`` written to ``path`` and audited in ``form``: exit 2 with one line on stderr.
+    Returns the path and that line."""
+    path.write_text(text)
+    proc = run_rbi_inprocess("audit", str(path), "--format", form)
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1, proc.stderr
+    return path, proc.stderr

@@ -175,6 +175,10 @@ def _actuator_limits(table: LinkTable, root, defaults) -> None:
             low, high = where.numbers(attrs["forcerange"], "forcerange", 2)
             gear = where.numbers(attrs.get("gear", "1"), "gear", (1, 2, 3, 4, 5, 6))[0]
             found[joint] = found.get(joint, 0.0) + max(abs(low), abs(high)) * abs(gear)
+            if not math.isfinite(found[joint]):
+                raise where.error(
+                    f"forcerange times gear {gear:g}: the joint's force limit overflows a double"
+                )
     for joint, limit in found.items():
         if motions[joint].effort_limit is None and limit > 0:
             motions[joint].effort_limit = limit
