@@ -163,7 +163,7 @@ def _actuator_limits(table: LinkTable, root, defaults) -> None:
         for element in block.children:
             if element.tag not in ACTUATORS:
                 continue
-            attrs = _attributes(element, defaults, "main")
+            attrs = _attributes(element, defaults, "main", table.path)
             joint = attrs.get("joint")
             if (
                 joint not in motions
@@ -303,10 +303,12 @@ def _defaults(root) -> dict[str, dict[str, dict[str, str]]]:
     return classes
 
 
-def _attributes(element, defaults, active_class: str) -> dict[str, str]:
+def _attributes(element, defaults, active_class: str, path: str) -> dict[str, str]:
+    """The element's attributes over its class's defaults; InputError naming the file (``path``,
+    or the included file the element is in), the element and its line for a missing class."""
     name = element.get("class", active_class)
     if name not in defaults:
-        where = f"{element.source or ''}line {element.line}".strip()
+        where = f"{element.source or path}: <{element.tag}> (line {element.line})"
         raise InputError(f"{where}: class {short(name)!r}: no <default class> of that name")
     merged = dict(defaults[name].get(element.tag, {}))
     merged.update({k: v for k, v in element.attrib.items() if k != "class"})
@@ -321,7 +323,7 @@ def _mesh_assets(path: str, root, defaults, compiler: Compiler) -> dict[str, dic
     meshes = {}
     for asset in root.all("asset"):
         for element in asset.all("mesh"):
-            attrs = _attributes(element, defaults, "main")
+            attrs = _attributes(element, defaults, "main", path)
             file = attrs.get("file")
             name = attrs.get("name") or (Path(file).stem if file else None)
             where = Where(path, f"mesh {short(name)!r}")
@@ -359,7 +361,7 @@ class _Bodies:
             if child.tag == "body":
                 self.body(child, frame, link, active_class)
             elif child.tag == "frame":
-                attrs = _attributes(child, self.defaults, active_class)
+                attrs = _attributes(child, self.defaults, active_class, self.table.path)
                 inner = frame.then(self.pose(child, attrs))
                 self.children(child, inner, link, child.get("childclass", active_class))
             elif child.tag == "geom" and link is not None:
@@ -425,7 +427,7 @@ class _Bodies:
         return z_to(where.unit(where.numbers(value, "zaxis", 3), "zaxis"))
 
     def joint(self, where: Where, element, link: int, active_class: str) -> None:
-        attrs = _attributes(element, self.defaults, active_class)
+        attrs = _attributes(element, self.defaults, active_class, self.table.path)
         kind = attrs.get("type", "hinge")
         pos = np.array(where.numbers(attrs.get("pos", "0 0 0"), "joint: pos", 3))
         axis = where.numbers(attrs.get("axis", "0 0 1"), "joint: axis", 3)
@@ -472,7 +474,7 @@ class _Bodies:
         return Inertial.read(mass, pos, inertia, rotation=rotation, quaternion=quaternion, element=element)
 
     def geom(self, element, frame: Pose, link: int, active_class: str) -> None:
-        attrs = _attributes(element, self.defaults, active_class)
+        attrs = _attributes(element, self.defaults, active_class, self.table.path)
         label = element_label("geom", self.counts[link], attrs.get("name") or None)
         where = Where(self.table.path, f"{self.table.label(link)}: {label}")
         kind = attrs.get("type", "sphere")
