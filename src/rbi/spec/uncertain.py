@@ -386,6 +386,7 @@ def refused_draws(loaded: Any, draws: np.ndarray) -> list[str]:
             for k in (k for k in chosen if inputs[k].steps[0] == "file"):
                 inner[:, inputs[k].steps[1]] = draws[:, k]
             out += refused_draws(part._loaded, inner) if inner.size else []
+            continue
         if type(part) in BUILDERS or isinstance(part, PLACED):  # their fields' own limits: limit_warnings
             continue
         count, first = 0, None
